@@ -1,0 +1,174 @@
+//! The CPU backend: the kernel bodies of `dof-shaders` as plain Rust. Each dispatch runs its workgroups
+//! in parallel on rayon's pool; inside a workgroup the invocations run one after the other between
+//! barriers (see `dof_shaders::exec`). Buffers are `[AtomicU32]`, so parallel workgroups never alias
+//! mutable memory.
+
+use super::{Backend, BackendKind, BufferId, CommandTime, Limits, check_dispatch};
+use crate::error::{Error, Result};
+use dof_shaders::KernelDesc;
+use dof_shaders::exec::CpuDispatch;
+use rayon::prelude::*;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
+use std::time::Instant;
+
+/// Workgroup memory the CPU backend pretends to have. It matches lavapipe's 32 KiB by default so both
+/// backends take the same sort paths; tests lower it to exercise the global-memory path.
+pub const DEFAULT_SHARED_BYTES: u32 = 32 * 1024;
+
+pub struct CpuBackend {
+    limits: Limits,
+    buffers: Vec<Option<Box<[AtomicU32]>>>,
+    times: Vec<CommandTime>,
+}
+
+impl Default for CpuBackend {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl CpuBackend {
+    pub fn new() -> Self {
+        Self::with_shared_bytes(DEFAULT_SHARED_BYTES)
+    }
+
+    /// A CPU backend whose reported workgroup memory is `shared_bytes`.
+    pub fn with_shared_bytes(shared_bytes: u32) -> Self {
+        CpuBackend {
+            limits: Limits {
+                max_shared_bytes: shared_bytes,
+                max_workgroup_invocations: 1024,
+                max_workgroup_count: [65535; 3],
+                subgroup_size: None,
+                max_buffer_bytes: 1 << 34,
+            },
+            buffers: Vec::new(),
+            times: Vec::new(),
+        }
+    }
+
+    fn buffer(&self, id: BufferId) -> Result<&[AtomicU32]> {
+        self.buffers
+            .get(id.0 as usize)
+            .and_then(|b| b.as_deref())
+            .ok_or_else(|| Error::InvalidArgument(format!("unknown buffer {}", id.0)))
+    }
+
+    fn range(&self, id: BufferId, offset: u64, words: u64) -> Result<&[AtomicU32]> {
+        let buffer = self.buffer(id)?;
+        let end = offset.checked_add(words).filter(|&end| end <= buffer.len() as u64).ok_or_else(|| {
+            Error::InvalidArgument(format!(
+                "range {offset}..{offset}+{words} outside buffer {} of {} words",
+                id.0,
+                buffer.len()
+            ))
+        })?;
+        Ok(&buffer[offset as usize..end as usize])
+    }
+
+    fn run(&mut self, kernel: &'static KernelDesc, groups: [u32; 3], buffers: &[BufferId], push: &[u32], label: &str) -> Result<()> {
+        let start = Instant::now();
+        let bound: Vec<&[AtomicU32]> = buffers.iter().map(|&b| self.buffer(b)).collect::<Result<_>>()?;
+        let total = groups[0] as u64 * groups[1] as u64 * groups[2] as u64;
+        let result = catch_unwind(AssertUnwindSafe(|| {
+            (0..total).into_par_iter().for_each(|flat| {
+                let x = (flat % groups[0] as u64) as u32;
+                let y = ((flat / groups[0] as u64) % groups[1] as u64) as u32;
+                let z = (flat / (groups[0] as u64 * groups[1] as u64)) as u32;
+                (kernel.cpu)(&CpuDispatch { workgroup_id: [x, y, z], num_workgroups: groups, buffers: &bound, push });
+            })
+        }));
+        if let Err(panic) = result {
+            let message = panic
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_default();
+            return Err(Error::KernelFault { kernel: kernel.entry, message });
+        }
+        self.times.push(CommandTime { label: label.to_string(), kernel: kernel.entry, ms: start.elapsed().as_secs_f64() * 1e3 });
+        Ok(())
+    }
+}
+
+impl Backend for CpuBackend {
+    fn kind(&self) -> BackendKind {
+        BackendKind::Cpu
+    }
+
+    fn device_name(&self) -> String {
+        format!("CPU ({} threads)", rayon::current_num_threads())
+    }
+
+    fn limits(&self) -> &Limits {
+        &self.limits
+    }
+
+    fn create_buffer(&mut self, words: u64, _label: &str) -> Result<BufferId> {
+        let words = words.max(1);
+        if words * 4 > self.limits.max_buffer_bytes {
+            return Err(Error::TooLarge { what: "buffer".into(), size: words * 4, limit: self.limits.max_buffer_bytes });
+        }
+        let buffer: Box<[AtomicU32]> = (0..words).map(|_| AtomicU32::new(0)).collect();
+        let slot = self.buffers.iter().position(Option::is_none).unwrap_or(self.buffers.len());
+        if slot == self.buffers.len() {
+            self.buffers.push(None);
+        }
+        self.buffers[slot] = Some(buffer);
+        Ok(BufferId(slot as u32))
+    }
+
+    fn destroy_buffer(&mut self, buffer: BufferId) {
+        if let Some(slot) = self.buffers.get_mut(buffer.0 as usize) {
+            *slot = None;
+        }
+    }
+
+    fn buffer_words(&self, buffer: BufferId) -> Result<u64> {
+        Ok(self.buffer(buffer)?.len() as u64)
+    }
+
+    fn write_buffer(&mut self, buffer: BufferId, offset_words: u64, data: &[u32]) -> Result<()> {
+        for (dst, &v) in self.range(buffer, offset_words, data.len() as u64)?.iter().zip(data) {
+            dst.store(v, Relaxed);
+        }
+        Ok(())
+    }
+
+    fn read_buffer(&mut self, buffer: BufferId, offset_words: u64, words: u64) -> Result<Vec<u32>> {
+        Ok(self.range(buffer, offset_words, words)?.iter().map(|w| w.load(Relaxed)).collect())
+    }
+
+    fn fill(&mut self, buffer: BufferId, offset_words: u64, words: u64, value: u32, label: &str) -> Result<()> {
+        let start = Instant::now();
+        self.range(buffer, offset_words, words)?.par_iter().for_each(|w| w.store(value, Relaxed));
+        self.times.push(CommandTime { label: label.to_string(), kernel: "fill", ms: start.elapsed().as_secs_f64() * 1e3 });
+        Ok(())
+    }
+
+    fn dispatch(&mut self, kernel: &'static KernelDesc, groups: [u32; 3], buffers: &[BufferId], push: &[u32], label: &str) -> Result<()> {
+        check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), push.len())?;
+        self.run(kernel, groups, buffers, push, label)
+    }
+
+    fn dispatch_indirect(
+        &mut self,
+        kernel: &'static KernelDesc,
+        args: BufferId,
+        args_offset_words: u64,
+        buffers: &[BufferId],
+        push: &[u32],
+        label: &str,
+    ) -> Result<()> {
+        check_dispatch(&self.limits, kernel, None, buffers.len(), push.len())?;
+        let a = self.read_buffer(args, args_offset_words, 3)?;
+        let groups = [a[0], a[1], a[2]];
+        check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), push.len())?;
+        self.run(kernel, groups, buffers, push, label)
+    }
+
+    fn submit(&mut self) -> Result<Vec<CommandTime>> {
+        Ok(std::mem::take(&mut self.times))
+    }
+}

@@ -1,0 +1,357 @@
+//! Loading Vulkan, the instance (with the validation layer and its message log when asked for),
+//! describing and choosing a physical device, and the logical device.
+
+use super::DeviceInfo;
+use crate::backend::Limits;
+use crate::error::{Error, Result, VkContext};
+use ash::vk;
+use std::ffi::{CStr, c_char, c_void};
+use std::sync::{Arc, Mutex};
+
+const VALIDATION_LAYER: &CStr = c"VK_LAYER_KHRONOS_validation";
+/// Environment variable naming the device when `VulkanOptions::device` is `None`.
+pub const DEVICE_ENV: &str = "DOF_VULKAN_DEVICE";
+
+/// Messages the validation layer reported, shared with the debug callback.
+pub(super) type MessageLog = Arc<Mutex<Vec<String>>>;
+
+/// The loader, the instance and (with validation) the debug messenger. Dropping it destroys the
+/// messenger and the instance; the log outlives both because it is a field dropped after `drop`.
+pub(super) struct InstanceCtx {
+    pub entry: ash::Entry,
+    pub instance: ash::Instance,
+    debug: Option<(ash::ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>,
+    pub messages: MessageLog,
+}
+
+impl InstanceCtx {
+    pub fn new(validation: bool) -> Result<Self> {
+        // SAFETY: loading the system's Vulkan loader; the library stays loaded as long as `entry`.
+        let entry = unsafe { ash::Entry::load() }.map_err(|e| Error::NoVulkan(format!("cannot load the Vulkan loader: {e}")))?;
+        let messages: MessageLog = Arc::default();
+
+        let app = vk::ApplicationInfo::default()
+            .application_name(c"dof")
+            .engine_name(c"dof")
+            .api_version(vk::API_VERSION_1_2);
+        let mut layers: Vec<*const c_char> = Vec::new();
+        let mut extensions: Vec<*const c_char> = Vec::new();
+        let sync_validation = [vk::ValidationFeatureEnableEXT::SYNCHRONIZATION_VALIDATION];
+        let mut features = vk::ValidationFeaturesEXT::default().enabled_validation_features(&sync_validation);
+        let mut messenger_info = messenger_create_info(&messages);
+
+        if validation {
+            // SAFETY: plain enumeration calls on a loaded entry.
+            let available = unsafe { entry.enumerate_instance_layer_properties() }.vk("vkEnumerateInstanceLayerProperties")?;
+            if !available.iter().any(|l| l.layer_name_as_c_str() == Ok(VALIDATION_LAYER)) {
+                return Err(Error::NoValidationLayer);
+            }
+            let mut ext_names = instance_extensions(&entry, None)?;
+            ext_names.extend(instance_extensions(&entry, Some(VALIDATION_LAYER))?);
+            if !ext_names.iter().any(|e| e.as_c_str() == vk::EXT_DEBUG_UTILS_NAME) {
+                return Err(Error::NoVulkan("the validation layer is present but VK_EXT_debug_utils is not".into()));
+            }
+            layers.push(VALIDATION_LAYER.as_ptr());
+            extensions.push(vk::EXT_DEBUG_UTILS_NAME.as_ptr());
+            // Chaining VkValidationFeaturesEXT formally needs its extension, which the layer provides.
+            if ext_names.iter().any(|e| e.as_c_str() == vk::EXT_VALIDATION_FEATURES_NAME) {
+                extensions.push(vk::EXT_VALIDATION_FEATURES_NAME.as_ptr());
+            }
+        }
+
+        let mut create_info =
+            vk::InstanceCreateInfo::default().application_info(&app).enabled_layer_names(&layers).enabled_extension_names(&extensions);
+        if validation {
+            // The messenger in the chain also catches messages from vkCreateInstance/vkDestroyInstance.
+            create_info = create_info.push_next(&mut features).push_next(&mut messenger_info);
+        }
+        // SAFETY: every pointer in `create_info` refers to locals alive for the call.
+        let instance = unsafe { entry.create_instance(&create_info, None) }.map_err(|result| match result {
+            vk::Result::ERROR_INCOMPATIBLE_DRIVER => Error::NoVulkan("no driver supports Vulkan 1.2".into()),
+            result => Error::Vulkan { call: "vkCreateInstance", result },
+        })?;
+        let mut ctx = InstanceCtx { entry, instance, debug: None, messages };
+
+        if validation {
+            let loader = ash::ext::debug_utils::Instance::new(&ctx.entry, &ctx.instance);
+            let info = messenger_create_info(&ctx.messages);
+            // SAFETY: the user data points into `ctx.messages`, which outlives the messenger.
+            let messenger = unsafe { loader.create_debug_utils_messenger(&info, None) }.vk("vkCreateDebugUtilsMessengerEXT")?;
+            ctx.debug = Some((loader, messenger));
+        }
+        Ok(ctx)
+    }
+
+    pub fn validation(&self) -> bool {
+        self.debug.is_some()
+    }
+}
+
+impl Drop for InstanceCtx {
+    fn drop(&mut self) {
+        // SAFETY: every child object was destroyed by the owners dropped before this one.
+        unsafe {
+            if let Some((loader, messenger)) = self.debug.take() {
+                loader.destroy_debug_utils_messenger(messenger, None);
+            }
+            self.instance.destroy_instance(None);
+        }
+    }
+}
+
+fn instance_extensions(entry: &ash::Entry, layer: Option<&CStr>) -> Result<Vec<std::ffi::CString>> {
+    // SAFETY: plain enumeration call on a loaded entry.
+    let props = unsafe { entry.enumerate_instance_extension_properties(layer) }.vk("vkEnumerateInstanceExtensionProperties")?;
+    Ok(props.iter().filter_map(|p| p.extension_name_as_c_str().ok().map(CStr::to_owned)).collect())
+}
+
+fn messenger_create_info(log: &MessageLog) -> vk::DebugUtilsMessengerCreateInfoEXT<'static> {
+    vk::DebugUtilsMessengerCreateInfoEXT::default()
+        .message_severity(vk::DebugUtilsMessageSeverityFlagsEXT::WARNING | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR)
+        .message_type(
+            vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
+                | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
+                | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE,
+        )
+        .pfn_user_callback(Some(on_message))
+        .user_data(Arc::as_ptr(log) as *mut c_void)
+}
+
+/// Records warnings and errors in the backend's log. Must not unwind: it is called from C.
+unsafe extern "system" fn on_message(
+    severity: vk::DebugUtilsMessageSeverityFlagsEXT,
+    types: vk::DebugUtilsMessageTypeFlagsEXT,
+    data: *const vk::DebugUtilsMessengerCallbackDataEXT<'_>,
+    user: *mut c_void,
+) -> vk::Bool32 {
+    use vk::DebugUtilsMessageSeverityFlagsEXT as S;
+    if user.is_null() || data.is_null() || !severity.intersects(S::WARNING | S::ERROR) {
+        return vk::FALSE;
+    }
+    // SAFETY: the layer passes valid callback data for the duration of the call; `user` is the
+    // `Mutex` inside the backend's `Arc`, alive as long as the messenger and the instance.
+    let (data, log) = unsafe { (&*data, &*(user as *const Mutex<Vec<String>>)) };
+    let text = |p: *const c_char| {
+        // SAFETY: non-null strings from the layer are NUL-terminated.
+        if p.is_null() { String::new() } else { unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned() }
+    };
+    let level = if severity.contains(S::ERROR) { "error" } else { "warning" };
+    let line = format!("[{level} {types:?}] {}: {}", text(data.p_message_id_name), text(data.p_message));
+    log::warn!("vulkan validation: {line}");
+    log.lock().unwrap_or_else(|e| e.into_inner()).push(line);
+    vk::FALSE
+}
+
+/// A physical device with what choosing and opening it needs.
+pub(super) struct Candidate {
+    pub physical: vk::PhysicalDevice,
+    pub info: DeviceInfo,
+    pub queue_family: Option<u32>,
+    pub timestamp_bits: u32,
+    /// Why the device cannot run the kernels, if it cannot.
+    pub problem: Option<String>,
+}
+
+pub(super) fn candidates(instance: &ash::Instance) -> Result<Vec<Candidate>> {
+    // SAFETY: plain enumeration call on a live instance.
+    let devices = unsafe { instance.enumerate_physical_devices() }.vk("vkEnumeratePhysicalDevices")?;
+    devices.into_iter().enumerate().map(|(index, pd)| describe(instance, pd, index)).collect()
+}
+
+fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> Result<Candidate> {
+    // SAFETY: queries on a physical device enumerated from this instance; the chained structs are
+    // only those the device's API version (or its extensions) defines.
+    unsafe {
+        let props = instance.get_physical_device_properties(pd);
+        let extensions = instance.enumerate_device_extension_properties(pd).vk("vkEnumerateDeviceExtensionProperties")?;
+        let has_ext = |name: &CStr| extensions.iter().any(|e| e.extension_name_as_c_str() == Ok(name));
+        let api = props.api_version;
+        let at_least = |minor| vk::api_version_major(api) > 1 || vk::api_version_minor(api) >= minor;
+
+        let mut subgroup = vk::PhysicalDeviceSubgroupProperties::default();
+        let mut maintenance3 = vk::PhysicalDeviceMaintenance3Properties::default();
+        let mut driver = vk::PhysicalDeviceDriverProperties::default();
+        let has_driver_props = at_least(2) || has_ext(vk::KHR_DRIVER_PROPERTIES_NAME);
+        if at_least(1) {
+            let mut props2 = vk::PhysicalDeviceProperties2::default().push_next(&mut subgroup).push_next(&mut maintenance3);
+            if has_driver_props {
+                props2 = props2.push_next(&mut driver);
+            }
+            instance.get_physical_device_properties2(pd, &mut props2);
+        }
+
+        let memory = instance.get_physical_device_memory_properties(pd);
+        let largest_local_heap = memory.memory_heaps[..memory.memory_heap_count.min(vk::MAX_MEMORY_HEAPS as u32) as usize]
+            .iter()
+            .filter(|h| h.flags.contains(vk::MemoryHeapFlags::DEVICE_LOCAL))
+            .map(|h| h.size)
+            .max()
+            .unwrap_or(0);
+        let mut max_buffer_bytes = (props.limits.max_storage_buffer_range as u64).min(largest_local_heap);
+        if at_least(1) && maintenance3.max_memory_allocation_size > 0 {
+            // A buffer larger than one allocation can hold cannot be bound either.
+            max_buffer_bytes = max_buffer_bytes.min(maintenance3.max_memory_allocation_size);
+        }
+        let limits = Limits {
+            max_shared_bytes: props.limits.max_compute_shared_memory_size,
+            max_workgroup_invocations: props.limits.max_compute_work_group_invocations,
+            max_workgroup_count: props.limits.max_compute_work_group_count,
+            subgroup_size: (subgroup.subgroup_size > 0).then_some(subgroup.subgroup_size),
+            max_buffer_bytes,
+        };
+
+        // A compute queue, preferring one that can write timestamps.
+        let families = instance.get_physical_device_queue_family_properties(pd);
+        let compute = |f: &vk::QueueFamilyProperties| f.queue_flags.contains(vk::QueueFlags::COMPUTE) && f.queue_count > 0;
+        let queue_family = families
+            .iter()
+            .position(|f| compute(f) && f.timestamp_valid_bits > 0)
+            .or_else(|| families.iter().position(compute))
+            .map(|i| i as u32);
+        let timestamp_bits = queue_family.map_or(0, |i| families[i as usize].timestamp_valid_bits);
+
+        let problem = if !at_least(2) {
+            Some(format!("supports only Vulkan {} (the kernels need 1.2)", version_string(api)))
+        } else if queue_family.is_none() {
+            Some("has no compute queue".to_string())
+        } else if !has_ext(vk::KHR_PUSH_DESCRIPTOR_NAME) {
+            Some("lacks the device extension VK_KHR_push_descriptor".to_string())
+        } else {
+            None
+        };
+
+        let name = props.device_name_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+        let driver = if has_driver_props {
+            let name = driver.driver_name_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+            let info = driver.driver_info_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+            format!("{name} {info}").trim().to_string()
+        } else {
+            format!("driver version {:#x}", props.driver_version)
+        };
+        let info = DeviceInfo {
+            index,
+            name,
+            device_type: type_name(props.device_type).to_string(),
+            api_version: version_string(api),
+            driver,
+            limits,
+            timestamp_period_ns: props.limits.timestamp_period,
+        };
+        Ok(Candidate { physical: pd, info, queue_family, timestamp_bits, problem })
+    }
+}
+
+fn version_string(v: u32) -> String {
+    format!("{}.{}.{}", vk::api_version_major(v), vk::api_version_minor(v), vk::api_version_patch(v))
+}
+
+fn type_name(t: vk::PhysicalDeviceType) -> &'static str {
+    match t {
+        vk::PhysicalDeviceType::DISCRETE_GPU => "discrete GPU",
+        vk::PhysicalDeviceType::INTEGRATED_GPU => "integrated GPU",
+        vk::PhysicalDeviceType::VIRTUAL_GPU => "virtual GPU",
+        vk::PhysicalDeviceType::CPU => "CPU",
+        _ => "other",
+    }
+}
+
+fn type_rank(t: &str) -> u32 {
+    match t {
+        "discrete GPU" => 0,
+        "integrated GPU" => 1,
+        "virtual GPU" => 2,
+        "CPU" => 3,
+        _ => 4,
+    }
+}
+
+/// Picks the device `choice` names (a decimal index or a case-insensitive substring of the name),
+/// or else the best usable one: discrete > integrated > virtual > CPU.
+pub(super) fn select(mut all: Vec<Candidate>, choice: Option<&str>) -> Result<Candidate> {
+    if all.is_empty() {
+        return Err(Error::NoVulkan("the Vulkan loader reports no physical device".into()));
+    }
+    let picked = match choice {
+        Some(choice) => {
+            let lower = choice.to_lowercase();
+            let position = match choice.trim().parse::<usize>() {
+                Ok(index) => all.iter().position(|c| c.info.index == index),
+                Err(_) => all.iter().position(|c| c.info.name.to_lowercase().contains(&lower)),
+            };
+            let Some(position) = position else {
+                return Err(Error::NoVulkan(format!("no Vulkan device matches `{choice}`; devices: {}", all_names(&all))));
+            };
+            position
+        }
+        None => {
+            let best = all
+                .iter()
+                .enumerate()
+                .filter(|(_, c)| c.problem.is_none())
+                .min_by_key(|(_, c)| (type_rank(&c.info.device_type), c.info.index))
+                .map(|(i, _)| i);
+            let Some(best) = best else {
+                let reasons: Vec<String> = all
+                    .iter()
+                    .map(|c| format!("{} ({}) {}", c.info.index, c.info.name, c.problem.as_deref().unwrap_or("")))
+                    .collect();
+                return Err(Error::NoVulkan(format!("no usable Vulkan device: {}", reasons.join("; "))));
+            };
+            best
+        }
+    };
+    let candidate = all.swap_remove(picked);
+    if let Some(problem) = &candidate.problem {
+        return Err(Error::NoVulkan(format!("device {} ({}) {problem}", candidate.info.index, candidate.info.name)));
+    }
+    Ok(candidate)
+}
+
+fn all_names(all: &[Candidate]) -> String {
+    all.iter().map(|c| format!("{}: {}", c.info.index, c.info.name)).collect::<Vec<_>>().join(", ")
+}
+
+/// The logical device and its queue. Dropping it waits for the device and destroys it, so every
+/// object made from it must be gone first.
+pub(super) struct DeviceCtx {
+    pub device: ash::Device,
+    pub queue: vk::Queue,
+    pub push_descriptor: ash::khr::push_descriptor::Device,
+    /// Names objects for validation messages, with validation only.
+    pub debug_utils: Option<ash::ext::debug_utils::Device>,
+}
+
+impl DeviceCtx {
+    pub fn new(instance: &InstanceCtx, candidate: &Candidate) -> Result<Self> {
+        let family = candidate.queue_family.ok_or_else(|| Error::NoVulkan("the device has no compute queue".into()))?;
+        let priorities = [1.0f32];
+        let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
+        let extensions = [vk::KHR_PUSH_DESCRIPTOR_NAME.as_ptr()];
+        let info = vk::DeviceCreateInfo::default().queue_create_infos(&queues).enabled_extension_names(&extensions);
+        // SAFETY: the physical device comes from this instance; `info` points at live locals.
+        let device = unsafe { instance.instance.create_device(candidate.physical, &info, None) }.vk("vkCreateDevice")?;
+        // SAFETY: family `family` was created with one queue.
+        let queue = unsafe { device.get_device_queue(family, 0) };
+        let push_descriptor = ash::khr::push_descriptor::Device::new(&instance.instance, &device);
+        let debug_utils = instance.validation().then(|| ash::ext::debug_utils::Device::new(&instance.instance, &device));
+        Ok(DeviceCtx { device, queue, push_descriptor, debug_utils })
+    }
+
+    /// Gives `object` a name in validation messages (a no-op without validation).
+    pub fn name<H: vk::Handle>(&self, object: H, name: &str) {
+        let (Some(utils), Ok(name)) = (&self.debug_utils, std::ffi::CString::new(name)) else { return };
+        let info = vk::DebugUtilsObjectNameInfoEXT::default().object_handle(object).object_name(&name);
+        // SAFETY: `object` is a live handle of this device; failure only loses a debug name.
+        let _ = unsafe { utils.set_debug_utils_object_name(&info) };
+    }
+}
+
+impl Drop for DeviceCtx {
+    fn drop(&mut self) {
+        // SAFETY: the owners of every object made from the device are dropped before this one.
+        unsafe {
+            let _ = self.device.device_wait_idle();
+            self.device.destroy_device(None);
+        }
+    }
+}

@@ -1,0 +1,30 @@
+pub mod bench;
+pub mod info;
+
+use dof::backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
+
+/// Which backends a command runs on.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum BackendChoice {
+    Cpu,
+    Vulkan,
+    #[default]
+    Both,
+}
+
+/// The backends `choice` names. Vulkan failing to start is an error when asked for alone, and a
+/// printed note (with the reason and the fix) when `both` was asked for.
+pub fn backends(choice: BackendChoice, validation: bool) -> anyhow::Result<Vec<Box<dyn Backend>>> {
+    let mut out: Vec<Box<dyn Backend>> = Vec::new();
+    if choice != BackendChoice::Vulkan {
+        out.push(Box::new(CpuBackend::new()));
+    }
+    if choice != BackendChoice::Cpu {
+        match VulkanBackend::new(&VulkanOptions { validation, ..Default::default() }) {
+            Ok(vk) => out.push(Box::new(vk)),
+            Err(e) if choice == BackendChoice::Both => eprintln!("note: Vulkan backend unavailable, CPU only: {e}"),
+            Err(e) => return Err(e.into()),
+        }
+    }
+    Ok(out)
+}

@@ -1,0 +1,40 @@
+//! Errors of the library. Nothing on a user-reachable path panics: every failure is one of these.
+
+use thiserror::Error;
+
+#[derive(Debug, Error)]
+pub enum Error {
+    #[error(
+        "no usable Vulkan driver: {0}\n  hint: install a Vulkan driver; on Debian/Ubuntu without a GPU, \
+         `apt-get install mesa-vulkan-drivers` provides lavapipe (a CPU Vulkan device). \
+         The CPU backend (`--backend cpu`) works without Vulkan."
+    )]
+    NoVulkan(String),
+    #[error(
+        "the Khronos validation layer was requested but is not installed\n  hint: `apt-get install vulkan-validationlayers`"
+    )]
+    NoValidationLayer,
+    #[error("Vulkan call {call} failed: {result}")]
+    Vulkan { call: &'static str, result: ash::vk::Result },
+    #[error("GPU memory allocation failed: {0}")]
+    Allocation(String),
+    #[error("kernel `{kernel}` faulted on the CPU backend (an out-of-bounds access): {message}")]
+    KernelFault { kernel: &'static str, message: String },
+    #[error("{what} is too large for the device: {size} exceeds the limit {limit}")]
+    TooLarge { what: String, size: u64, limit: u64 },
+    #[error("invalid argument: {0}")]
+    InvalidArgument(String),
+}
+
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// Turns a failed ash call into an [`Error::Vulkan`] naming the call.
+pub(crate) trait VkContext<T> {
+    fn vk(self, call: &'static str) -> Result<T>;
+}
+
+impl<T> VkContext<T> for std::result::Result<T, ash::vk::Result> {
+    fn vk(self, call: &'static str) -> Result<T> {
+        self.map_err(|result| Error::Vulkan { call, result })
+    }
+}

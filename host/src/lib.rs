@@ -1,0 +1,15 @@
+//! Depth of field with order-correct, partial-occlusion-aware splatting: the host library.
+//!
+//! - [`backend`]: the CPU and Vulkan backends that run the kernels of the `dof-shaders` crate;
+//! - [`ops`]: kernel sequences recorded on any backend (segmented sort, prefix scan);
+//! - [`workload`]: synthetic inputs shaped like the pipeline's (tile-list length mixes);
+//! - [`shaders`]: the embedded SPIR-V module.
+
+pub mod backend;
+pub mod error;
+pub mod ops;
+pub mod shaders;
+pub mod source_hash;
+pub mod workload;
+
+pub use error::{Error, Result};

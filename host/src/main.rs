@@ -1,0 +1,36 @@
+//! The `dof` command.
+
+mod cli;
+
+use clap::{Parser, Subcommand};
+
+#[derive(Parser)]
+#[command(name = "dof", version, about = "Multi-layer depth of field with tiled splatting, on Vulkan and the CPU")]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Backends, Vulkan devices and their limits, and a sort and scan self-check on every backend.
+    Info(cli::info::InfoArgs),
+    /// Benchmarks of the kernels on each backend.
+    #[command(subcommand)]
+    Bench(cli::bench::BenchCommand),
+}
+
+fn main() -> std::process::ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command.unwrap_or(Command::Info(Default::default())) {
+        Command::Info(args) => cli::info::run(&args),
+        Command::Bench(cmd) => cli::bench::run(&cmd),
+    };
+    match result {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            std::process::ExitCode::FAILURE
+        }
+    }
+}

@@ -1,0 +1,241 @@
+//! Segmented sort of `(f32 key, u32 payload)` lists on any backend (kernels and the algorithm in
+//! `dof_shaders::sort`). The plan is sized from the device: the largest workgroup-memory class from
+//! its shared-memory limit, the global path recorded only when a list can exceed that class.
+
+use crate::backend::{Backend, BufferId, push_words};
+use crate::error::{Error, Result};
+use dof_shaders::sort::{
+    self, CLASS_CAPS, CLASSIFY, ClassifyParams, GLOBAL_CLASS, GLOBAL_LOCAL, GLOBAL_STEP, GLOBAL_STORE, LOCAL_BLOCK,
+    MAX_GROUPS, NUM_CLASSES, PLAN, PlanParams, SHARED_CLASSES, SortParams, plan, pow2_ceil, top_class_for,
+};
+
+/// Buffers and sizes of a segmented sort, allocated once for a maximum problem size.
+pub struct SegmentedSort {
+    max_segments: u32,
+    max_elements: u32,
+    max_list_len: u32,
+    top_class: u32,
+    plan: BufferId,
+    lists: BufferId,
+    scratch: Option<(BufferId, BufferId)>,
+}
+
+/// What one sort did, read back from the plan buffer (for reports; the GPU path never needs it).
+#[derive(Clone, Debug, Default)]
+pub struct SortStats {
+    /// Lists per workgroup-memory class, indexed like [`CLASS_CAPS`].
+    pub class_counts: Vec<u32>,
+    /// Lists that took the global-memory path, and the longest of them.
+    pub global_lists: u32,
+    pub global_max_len: u32,
+    /// Capacity of the largest class this device runs.
+    pub top_class_cap: u32,
+}
+
+impl SegmentedSort {
+    /// `max_list_len` bounds every list; when it exceeds the largest class the device's workgroup
+    /// memory allows, the global path is recorded (its dispatches are empty in frames without such lists).
+    pub fn new(backend: &mut dyn Backend, max_segments: u32, max_elements: u32, max_list_len: u32) -> Result<Self> {
+        let top_class = top_class_for(backend.limits().max_shared_bytes);
+        if CLASS_CAPS[top_class as usize] * sort::BYTES_PER_ELEMENT > backend.limits().max_shared_bytes {
+            return Err(Error::TooLarge {
+                what: "workgroup memory of the smallest sort class".into(),
+                size: (CLASS_CAPS[0] * sort::BYTES_PER_ELEMENT) as u64,
+                limit: backend.limits().max_shared_bytes as u64,
+            });
+        }
+        let lists_words = (NUM_CLASSES as u64 + 1) * max_segments.max(1) as u64;
+        let plan = backend.create_buffer(plan::WORDS as u64, "sort/plan")?;
+        let lists = backend.create_buffer(lists_words, "sort/lists")?;
+        let scratch = if max_list_len > CLASS_CAPS[top_class as usize] {
+            Some((
+                backend.create_buffer(max_elements as u64, "sort/scratch-keys")?,
+                backend.create_buffer(max_elements as u64, "sort/scratch-positions")?,
+            ))
+        } else {
+            None
+        };
+        Ok(SegmentedSort { max_segments, max_elements, max_list_len, top_class, plan, lists, scratch })
+    }
+
+    pub fn destroy(self, backend: &mut dyn Backend) {
+        backend.destroy_buffer(self.plan);
+        backend.destroy_buffer(self.lists);
+        if let Some((k, p)) = self.scratch {
+            backend.destroy_buffer(k);
+            backend.destroy_buffer(p);
+        }
+    }
+
+    /// Capacity of the largest workgroup-memory class on this device.
+    pub fn top_class_cap(&self) -> u32 {
+        CLASS_CAPS[self.top_class as usize]
+    }
+
+    /// Records the sort of `num_segments` lists described by `segments` (`[offset, len]` pairs) from
+    /// `keys_in`/`values_in` into `keys_out`/`values_out` (distinct buffers). Lists must lie inside the
+    /// buffers and be at most `max_list_len` long: the kernels check bounds, but a violated bound
+    /// leaves that list unsorted.
+    #[allow(clippy::too_many_arguments)]
+    pub fn record(
+        &self,
+        backend: &mut dyn Backend,
+        segments: BufferId,
+        num_segments: u32,
+        keys_in: BufferId,
+        values_in: BufferId,
+        keys_out: BufferId,
+        values_out: BufferId,
+    ) -> Result<()> {
+        if num_segments > self.max_segments {
+            return Err(Error::InvalidArgument(format!(
+                "{num_segments} lists exceed the {} this sort was sized for",
+                self.max_segments
+            )));
+        }
+        let (plan_buf, lists) = (self.plan, self.lists);
+        backend.fill(plan_buf, 0, plan::WORDS as u64, 0, "sort/clear")?;
+        let classify = push_words(&ClassifyParams { num_segments, top_class: self.top_class });
+        let groups = num_segments.div_ceil(256).clamp(1, MAX_GROUPS);
+        backend.dispatch(&CLASSIFY, [groups, 1, 1], &[segments, plan_buf, lists], &classify, "sort/classify")?;
+        backend.dispatch(&PLAN, [1, 1, 1], &[plan_buf], &push_words(&PlanParams::default()), "sort/plan")?;
+
+        let io = [segments, plan_buf, lists, keys_in, values_in, keys_out, values_out];
+        for class in 0..=self.top_class {
+            let params = push_words(&SortParams { num_segments, class, k: 0, j: 0 });
+            let args = (plan::CLASS_ARGS + 3 * class) as u64;
+            let label = format!("sort/shared-{}", CLASS_CAPS[class as usize]);
+            backend.dispatch_indirect(SHARED_CLASSES[class as usize], plan_buf, args, &io, &params, &label)?;
+        }
+
+        let Some((scratch_keys, scratch_pos)) = self.scratch else { return Ok(()) };
+        let params = |k, j| push_words(&SortParams { num_segments, class: GLOBAL_CLASS, k, j });
+        let local = [segments, plan_buf, lists, keys_in, scratch_keys, scratch_pos];
+        let step = [segments, plan_buf, lists, scratch_keys, scratch_pos];
+        let block_args = plan::BLOCK_ARGS as u64;
+        backend.dispatch_indirect(&GLOBAL_LOCAL, plan_buf, block_args, &local, &params(0, 0), "sort/global-blocks")?;
+        let mut k = 2 * LOCAL_BLOCK;
+        while k <= pow2_ceil(self.max_list_len) {
+            let mut j = k / 2;
+            while j >= LOCAL_BLOCK {
+                backend.dispatch_indirect(&GLOBAL_STEP, plan_buf, plan::STEP_ARGS as u64, &step, &params(k, j), "sort/global-step")?;
+                j /= 2;
+            }
+            backend.dispatch_indirect(&GLOBAL_LOCAL, plan_buf, block_args, &local, &params(k, 0), "sort/global-merge")?;
+            k *= 2;
+        }
+        let store = [segments, plan_buf, lists, keys_in, values_in, scratch_pos, keys_out, values_out];
+        backend.dispatch_indirect(&GLOBAL_STORE, plan_buf, plan::ELEMENT_ARGS as u64, &store, &params(0, 0), "sort/global-store")
+    }
+
+    /// Reads what the last recorded sort did (submits pending work).
+    pub fn stats(&self, backend: &mut dyn Backend) -> Result<SortStats> {
+        let words = backend.read_buffer(self.plan, 0, plan::WORDS as u64)?;
+        Ok(SortStats {
+            class_counts: words[..NUM_CLASSES as usize].to_vec(),
+            global_lists: words[GLOBAL_CLASS as usize],
+            global_max_len: words[plan::GLOBAL_MAX_LEN as usize],
+            top_class_cap: self.top_class_cap(),
+        })
+    }
+
+    pub fn max_elements(&self) -> u32 {
+        self.max_elements
+    }
+}
+
+/// A sort problem on the host: keys, payloads and the `(offset, len)` of each list.
+#[derive(Clone, Debug, Default)]
+pub struct SortInput {
+    pub keys: Vec<f32>,
+    pub values: Vec<u32>,
+    pub segments: Vec<(u32, u32)>,
+}
+
+impl SortInput {
+    /// Checks that payloads match keys and every list lies inside them.
+    pub fn validate(&self) -> Result<()> {
+        if self.keys.len() != self.values.len() {
+            return Err(Error::InvalidArgument(format!("{} keys but {} payloads", self.keys.len(), self.values.len())));
+        }
+        if self.keys.len() > u32::MAX as usize || self.segments.len() > u32::MAX as usize / 2 {
+            return Err(Error::TooLarge { what: "sort input".into(), size: self.keys.len() as u64, limit: u32::MAX as u64 });
+        }
+        for (i, &(offset, len)) in self.segments.iter().enumerate() {
+            if offset as u64 + len as u64 > self.keys.len() as u64 {
+                return Err(Error::InvalidArgument(format!("list {i} ({offset}+{len}) runs past the {} keys", self.keys.len())));
+            }
+        }
+        Ok(())
+    }
+
+    pub fn max_list_len(&self) -> u32 {
+        self.segments.iter().map(|s| s.1).max().unwrap_or(0)
+    }
+
+    /// The reference result: every list stable-sorted by [`dof_shaders::keys::sort_key`]. Elements
+    /// outside every list keep their input value (as on the backends, whose outputs start as copies).
+    pub fn reference(&self) -> (Vec<f32>, Vec<u32>) {
+        let mut keys = self.keys.clone();
+        let mut values = self.values.clone();
+        for &(offset, len) in &self.segments {
+            let range = offset as usize..(offset + len) as usize;
+            let mut pairs: Vec<(f32, u32)> = self.keys[range.clone()].iter().copied().zip(self.values[range.clone()].iter().copied()).collect();
+            pairs.sort_by_key(|(k, _)| dof_shaders::keys::sort_key(k.to_bits()));
+            for (i, (k, v)) in pairs.into_iter().enumerate() {
+                keys[range.start + i] = k;
+                values[range.start + i] = v;
+            }
+        }
+        (keys, values)
+    }
+}
+
+/// The result of [`sort_on`].
+pub struct SortOutput {
+    pub keys: Vec<f32>,
+    pub values: Vec<u32>,
+    pub stats: SortStats,
+    pub times: Vec<crate::backend::CommandTime>,
+}
+
+/// Uploads, sorts and reads back `input` on `backend`. Outputs start as copies of the inputs, so words
+/// outside every list come back unchanged.
+pub fn sort_on(backend: &mut dyn Backend, input: &SortInput) -> Result<SortOutput> {
+    input.validate()?;
+    let n = input.keys.len() as u64;
+    let key_bits: Vec<u32> = input.keys.iter().map(|k| k.to_bits()).collect();
+    let seg_words: Vec<u32> = input.segments.iter().flat_map(|&(o, l)| [o, l]).collect();
+    let mut buffers = Vec::new();
+    let result = (|| {
+        let mut make = |backend: &mut dyn Backend, words: u64, label: &str| -> Result<BufferId> {
+            let b = backend.create_buffer(words, label)?;
+            buffers.push(b);
+            Ok(b)
+        };
+        let segments = make(backend, seg_words.len() as u64, "sort/segments")?;
+        let keys_in = make(backend, n, "sort/keys-in")?;
+        let values_in = make(backend, n, "sort/values-in")?;
+        let keys_out = make(backend, n, "sort/keys-out")?;
+        let values_out = make(backend, n, "sort/values-out")?;
+        backend.write_buffer(segments, 0, &seg_words)?;
+        backend.write_buffer(keys_in, 0, &key_bits)?;
+        backend.write_buffer(values_in, 0, &input.values)?;
+        backend.write_buffer(keys_out, 0, &key_bits)?;
+        backend.write_buffer(values_out, 0, &input.values)?;
+        let sort = SegmentedSort::new(backend, input.segments.len() as u32, n as u32, input.max_list_len())?;
+        let recorded = sort.record(backend, segments, input.segments.len() as u32, keys_in, values_in, keys_out, values_out);
+        let done = recorded.and_then(|_| backend.submit()).and_then(|times| {
+            let stats = sort.stats(backend)?;
+            let keys = backend.read_buffer(keys_out, 0, n)?.into_iter().map(f32::from_bits).collect();
+            let values = backend.read_buffer(values_out, 0, n)?;
+            Ok(SortOutput { keys, values, stats, times })
+        });
+        sort.destroy(backend);
+        done
+    })();
+    for b in buffers {
+        backend.destroy_buffer(b);
+    }
+    result
+}

@@ -1,0 +1,103 @@
+//! Declaring a kernel once for both backends.
+//!
+//! `kernel!` takes a body function (see [`crate::exec`]) and generates
+//! - on SPIR-V, the `#[spirv(compute(threads(N)))]` entry point, named after the kernel, that binds the
+//!   storage buffers (descriptor set 0, bindings in the order listed), the push constants and the
+//!   workgroup memory, and calls the body;
+//! - on the CPU, a `KernelDesc` constant with the same entry name, workgroup size and binding count,
+//!   and a CPU entry that runs the body for one workgroup.
+//!
+//! The host refers to kernels only through these constants, so an entry point name is written once.
+
+/// What the host needs to know to run a kernel on either backend.
+#[cfg(not(target_arch = "spirv"))]
+#[derive(Debug)]
+pub struct KernelDesc {
+    /// The SPIR-V entry point name.
+    pub entry: &'static str,
+    /// Invocations per workgroup (one-dimensional for every kernel here).
+    pub workgroup_size: u32,
+    /// Storage buffers at bindings `0..bindings` of descriptor set 0.
+    pub bindings: u32,
+    /// Size of the push constants in bytes.
+    pub push_bytes: u32,
+    /// Workgroup memory the kernel declares, in bytes (checked against the device limit).
+    pub shared_bytes: u32,
+    /// Runs one workgroup on the CPU.
+    pub cpu: fn(&crate::exec::CpuDispatch),
+}
+
+/// `kernel!(NAME = entry_fn [threads] (Params) shared [u32; N] { binding names } => body);`
+/// The body is called as `body(&mut group, &params, &mut shared, buffers...)`; without `shared`, as
+/// `body(&mut group, &params, buffers...)`.
+#[macro_export]
+macro_rules! kernel {
+    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) shared [u32; $n:expr] { $($buf:ident),* } => $body:path) => {
+        $crate::kernel!(@gpu [$threads] $entry ($params) $body
+            [#[spirv(workgroup)] shared: &mut [u32; $n],] [shared,] [] [0 1 2 3 4 5 6 7 8 9 10 11] $($buf)*);
+        $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) ($n) $body [&mut [0u32; $n],] $($buf)*);
+    };
+    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) { $($buf:ident),* } => $body:path) => {
+        $crate::kernel!(@gpu [$threads] $entry ($params) $body [] [] [] [0 1 2 3 4 5 6 7 8 9 10 11] $($buf)*);
+        $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) (0) $body [] $($buf)*);
+    };
+
+    // Accumulates one `#[spirv(storage_buffer)]` parameter per binding, numbered in order.
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:path [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
+        [$n:tt $($ns:tt)*] $b:ident $($rest:ident)*) => {
+        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+            [$($acc)* #[spirv(descriptor_set = 0, binding = $n, storage_buffer)] $b: &mut [u32],]
+            [$($ns)*] $($rest)*);
+    };
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:path [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
+        [$($ns:tt)*] $(,)?) => {
+        #[cfg(target_arch = "spirv")]
+        #[spirv_std::spirv(compute(threads($threads)))]
+        #[allow(clippy::too_many_arguments)]
+        pub fn $entry(
+            #[spirv(local_invocation_index)] local_index: u32,
+            #[spirv(workgroup_id)] workgroup_id: spirv_std::glam::UVec3,
+            #[spirv(num_workgroups)] num_workgroups: spirv_std::glam::UVec3,
+            #[spirv(push_constant)] params: &$params,
+            $($sh)*
+            $($acc)*
+        ) {
+            let mut group = $crate::exec::GpuGroup {
+                size: $threads,
+                local_index,
+                workgroup_id: workgroup_id.to_array(),
+                num_workgroups: num_workgroups.to_array(),
+            };
+            $crate::kernel!(@call $body (&mut group, params, $($sh_arg)*) [] $($acc)*);
+        }
+    };
+    // Turns the accumulated parameter list back into call arguments wrapped in `GpuMem`.
+    (@call $body:path ($($pre:tt)*) [$($args:tt)*] #[$attr:meta] $b:ident: &mut [u32], $($rest:tt)*) => {
+        $crate::kernel!(@call $body ($($pre)*) [$($args)* $crate::exec::GpuMem($b),] $($rest)*)
+    };
+    (@call $body:path ($($pre:tt)*) [$($args:tt)*]) => {
+        $body($($pre)* $($args)*)
+    };
+
+    (@cpu $(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) ($n:expr) $body:path
+        [$($sh_arg:tt)*] $($buf:ident)*) => {
+        $(#[$doc])*
+        #[cfg(not(target_arch = "spirv"))]
+        pub const $desc: $crate::kernel::KernelDesc = {
+            fn cpu(d: &$crate::exec::CpuDispatch) {
+                let params: $params = $crate::exec::params(d.push);
+                let mut _binding = 0usize;
+                $(let $buf = d.mem(_binding); _binding += 1;)*
+                $body(&mut d.group($threads), &params, $($sh_arg)* $($buf),*);
+            }
+            $crate::kernel::KernelDesc {
+                entry: stringify!($entry),
+                workgroup_size: $threads,
+                bindings: [$(stringify!($buf)),*].len() as u32,
+                push_bytes: core::mem::size_of::<$params>() as u32,
+                shared_bytes: 4 * ($n) as u32,
+                cpu,
+            }
+        };
+    };
+}

@@ -1,0 +1,22 @@
+//! The compute kernels of the depth-of-field system.
+//!
+//! Every kernel body here is ordinary Rust that runs twice: compiled to SPIR-V by rust-gpu (the
+//! `#[spirv(compute)]` entry points that [`kernel!`] generates) and linked into the host as the CPU
+//! backend. See [`exec`] for the execution model and [`kernel`] for how entry points are declared.
+#![cfg_attr(target_arch = "spirv", no_std)]
+
+pub mod exec;
+#[macro_use]
+pub mod kernel;
+pub mod keys;
+pub mod scan;
+pub mod sort;
+
+#[cfg(not(target_arch = "spirv"))]
+pub use kernel::KernelDesc;
+
+/// Every kernel, in a stable order: the host builds one pipeline for each.
+#[cfg(not(target_arch = "spirv"))]
+pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
+    scan::KERNELS.iter().chain(sort::KERNELS.iter()).copied()
+}

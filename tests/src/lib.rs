@@ -1,0 +1,38 @@
+//! Helpers shared by the integration suites.
+
+use dof::backend::{VulkanBackend, VulkanOptions};
+use dof::ops::sort::{SortInput, SortOutput};
+
+/// The Vulkan backend with the Khronos validation layer and synchronization validation on.
+///
+/// A missing driver or layer fails the test with the reason: CI must never skip the Vulkan suites
+/// silently. Setting `DOF_SKIP_VULKAN=1` skips them on purpose (the test prints that it did).
+pub fn vulkan() -> Option<VulkanBackend> {
+    if std::env::var_os("DOF_SKIP_VULKAN").is_some_and(|v| v == "1") {
+        eprintln!("DOF_SKIP_VULKAN=1: skipping a Vulkan test on purpose");
+        return None;
+    }
+    match VulkanBackend::new(&VulkanOptions { validation: true, ..Default::default() }) {
+        Ok(vk) => Some(vk),
+        Err(e) => panic!("Vulkan is required for this test (set DOF_SKIP_VULKAN=1 to skip on purpose): {e}"),
+    }
+}
+
+/// Fails if the validation layer reported anything.
+pub fn assert_clean(vk: &mut VulkanBackend) {
+    let messages = vk.take_validation_messages();
+    assert!(messages.is_empty(), "validation layer reported {} message(s):\n{}", messages.len(), messages.join("\n"));
+}
+
+/// Asserts a sort output equals the reference bit for bit (keys compared as bits, so NaN and -0.0
+/// count).
+pub fn assert_sorted_like_reference(input: &SortInput, out: &SortOutput) {
+    let (keys, values) = input.reference();
+    for (s, &(o, l)) in input.segments.iter().enumerate() {
+        let r = o as usize..(o + l) as usize;
+        let got: Vec<u32> = out.keys[r.clone()].iter().map(|k| k.to_bits()).collect();
+        let want: Vec<u32> = keys[r.clone()].iter().map(|k| k.to_bits()).collect();
+        assert_eq!(got, want, "keys of list {s} (offset {o}, length {l}) differ from the reference");
+        assert_eq!(out.values[r.clone()], values[r], "payloads of list {s} (offset {o}, length {l}) differ");
+    }
+}

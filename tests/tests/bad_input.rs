@@ -1,0 +1,63 @@
+//! Misuse gets a clear error, never a panic.
+
+use dof::Error;
+use dof::backend::{Backend, CpuBackend, push_words};
+use dof::ops::sort::{SortInput, sort_on};
+use dof_shaders::scan::{BLOCK_SCAN, ScanParams};
+
+#[test]
+fn payload_count_must_match_keys() {
+    let input = SortInput { keys: vec![1.0, 2.0], values: vec![0], segments: vec![(0, 2)] };
+    assert!(matches!(sort_on(&mut CpuBackend::new(), &input), Err(Error::InvalidArgument(_))));
+}
+
+#[test]
+fn lists_must_lie_inside_the_keys() {
+    let input = SortInput { keys: vec![1.0; 4], values: vec![0; 4], segments: vec![(2, 3)] };
+    let err = sort_on(&mut CpuBackend::new(), &input).unwrap_err();
+    assert!(err.to_string().contains("runs past"), "{err}");
+}
+
+#[test]
+fn out_of_bounds_kernel_access_is_a_fault_not_a_crash() {
+    let mut cpu = CpuBackend::new();
+    let data = cpu.create_buffer(16, "data").unwrap();
+    let sums = cpu.create_buffer(1, "sums").unwrap();
+    // Claims 4096 words in a 16-word buffer.
+    let params = push_words(&ScanParams { len: 4096, data_offset: 0, sums_offset: 0 });
+    let err = cpu.dispatch(&BLOCK_SCAN, [4, 1, 1], &[data, sums], &params, "bad").unwrap_err();
+    assert!(matches!(err, Error::KernelFault { kernel: "scan_block", .. }), "{err}");
+}
+
+#[test]
+fn dispatches_are_checked_against_the_kernel_and_the_limits() {
+    let mut cpu = CpuBackend::new();
+    let data = cpu.create_buffer(16, "data").unwrap();
+    let params = push_words(&ScanParams::default());
+    let wrong_bindings = cpu.dispatch(&BLOCK_SCAN, [1, 1, 1], &[data], &params, "bad").unwrap_err();
+    assert!(matches!(wrong_bindings, Error::InvalidArgument(_)), "{wrong_bindings}");
+    let too_many_groups = cpu.dispatch(&BLOCK_SCAN, [1 << 20, 1, 1], &[data, data], &params, "bad").unwrap_err();
+    assert!(matches!(too_many_groups, Error::TooLarge { .. }), "{too_many_groups}");
+    let short_push = cpu.dispatch(&BLOCK_SCAN, [1, 1, 1], &[data, data], &[], "bad").unwrap_err();
+    assert!(matches!(short_push, Error::InvalidArgument(_)), "{short_push}");
+}
+
+#[test]
+fn buffer_ranges_and_ids_are_checked() {
+    let mut cpu = CpuBackend::new();
+    let b = cpu.create_buffer(4, "b").unwrap();
+    assert!(cpu.write_buffer(b, 2, &[1, 2, 3]).is_err());
+    assert!(cpu.read_buffer(b, u64::MAX, 2).is_err());
+    cpu.destroy_buffer(b);
+    assert!(cpu.read_buffer(b, 0, 1).is_err());
+}
+
+#[test]
+fn kernels_needing_more_workgroup_memory_than_the_device_has_are_refused() {
+    let mut cpu = CpuBackend::with_shared_bytes(1024);
+    let data = cpu.create_buffer(16, "data").unwrap();
+    let params = push_words(&ScanParams::default());
+    // scan_block declares 2 KiB of workgroup memory.
+    let err = cpu.dispatch(&BLOCK_SCAN, [1, 1, 1], &[data, data], &params, "bad").unwrap_err();
+    assert!(matches!(err, Error::TooLarge { .. }), "{err}");
+}

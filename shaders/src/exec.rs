@@ -30,9 +30,9 @@ pub trait Mem {
     fn len(&self) -> u32;
     fn load(&self, i: u32) -> u32;
     fn store(&mut self, i: u32, v: u32);
-    /// Device-scope atomic add; returns the previous value.
+    /// Atomic add (queue-family scope: visible to every workgroup of the dispatch); returns the previous value.
     fn atomic_add(&mut self, i: u32, v: u32) -> u32;
-    /// Device-scope atomic unsigned max; returns the previous value.
+    /// Atomic unsigned max (queue-family scope); returns the previous value.
     fn atomic_max(&mut self, i: u32, v: u32) -> u32;
     #[inline]
     fn is_empty(&self) -> bool {
@@ -190,7 +190,7 @@ mod gpu {
         #[inline]
         fn atomic_add(&mut self, i: u32, v: u32) -> u32 {
             unsafe {
-                atomic_i_add::<u32, { Scope::Device as u32 }, { Semantics::NONE.bits() }>(
+                atomic_i_add::<u32, { Scope::QueueFamily as u32 }, { Semantics::NONE.bits() }>(
                     &mut self.0[i as usize],
                     v,
                 )
@@ -199,7 +199,7 @@ mod gpu {
         #[inline]
         fn atomic_max(&mut self, i: u32, v: u32) -> u32 {
             unsafe {
-                atomic_u_max::<u32, { Scope::Device as u32 }, { Semantics::NONE.bits() }>(
+                atomic_u_max::<u32, { Scope::QueueFamily as u32 }, { Semantics::NONE.bits() }>(
                     &mut self.0[i as usize],
                     v,
                 )

@@ -1,7 +1,7 @@
 //! Declaring a kernel once for both backends.
 //!
 //! `kernel!` takes a body function (see [`crate::exec`]) and generates
-//! - on SPIR-V, the `#[spirv(compute(threads(N)))]` entry point, named after the kernel, that binds the
+//! - on SPIR-V, the `#[spirv(compute(threads(N)))]` entry point (rust-gpu names it `module::function`), which binds the
 //!   storage buffers (descriptor set 0, bindings in the order listed), the push constants and the
 //!   workgroup memory, and calls the body;
 //! - on the CPU, a `KernelDesc` constant with the same entry name, workgroup size and binding count,
@@ -27,29 +27,47 @@ pub struct KernelDesc {
     pub cpu: fn(&crate::exec::CpuDispatch),
 }
 
+/// The SPIR-V entry point name rust-gpu gives a function: its path without the crate name.
+#[cfg(not(target_arch = "spirv"))]
+pub const fn entry_name(path: &'static str) -> &'static str {
+    let bytes = path.as_bytes();
+    let mut i = 0;
+    while i + 1 < bytes.len() {
+        if bytes[i] == b':' && bytes[i + 1] == b':' {
+            let (_, rest) = bytes.split_at(i + 2);
+            return match core::str::from_utf8(rest) {
+                Ok(rest) => rest,
+                Err(_) => path,
+            };
+        }
+        i += 1;
+    }
+    path
+}
+
 /// `kernel!(NAME = entry_fn [threads] (Params) shared [u32; N] { binding names } => body);`
 /// The body is called as `body(&mut group, &params, &mut shared, buffers...)`; without `shared`, as
 /// `body(&mut group, &params, buffers...)`.
 #[macro_export]
 macro_rules! kernel {
-    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) shared [u32; $n:expr] { $($buf:ident),* } => $body:path) => {
+    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) shared [u32; $n:expr] { $($buf:ident),* } => $body:ident) => {
         $crate::kernel!(@gpu [$threads] $entry ($params) $body
             [#[spirv(workgroup)] shared: &mut [u32; $n],] [shared,] [] [0 1 2 3 4 5 6 7 8 9 10 11] $($buf)*);
         $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) ($n) $body [&mut [0u32; $n],] $($buf)*);
     };
-    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) { $($buf:ident),* } => $body:path) => {
+    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) { $($buf:ident),* } => $body:ident) => {
         $crate::kernel!(@gpu [$threads] $entry ($params) $body [] [] [] [0 1 2 3 4 5 6 7 8 9 10 11] $($buf)*);
         $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) (0) $body [] $($buf)*);
     };
 
     // Accumulates one `#[spirv(storage_buffer)]` parameter per binding, numbered in order.
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:path [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
         [$n:tt $($ns:tt)*] $b:ident $($rest:ident)*) => {
         $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
             [$($acc)* #[spirv(descriptor_set = 0, binding = $n, storage_buffer)] $b: &mut [u32],]
             [$($ns)*] $($rest)*);
     };
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:path [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
         [$($ns:tt)*] $(,)?) => {
         #[cfg(target_arch = "spirv")]
         #[spirv_std::spirv(compute(threads($threads)))]
@@ -72,14 +90,14 @@ macro_rules! kernel {
         }
     };
     // Turns the accumulated parameter list back into call arguments wrapped in `GpuMem`.
-    (@call $body:path ($($pre:tt)*) [$($args:tt)*] #[$attr:meta] $b:ident: &mut [u32], $($rest:tt)*) => {
+    (@call $body:ident ($($pre:tt)*) [$($args:tt)*] #[$attr:meta] $b:ident: &mut [u32], $($rest:tt)*) => {
         $crate::kernel!(@call $body ($($pre)*) [$($args)* $crate::exec::GpuMem($b),] $($rest)*)
     };
-    (@call $body:path ($($pre:tt)*) [$($args:tt)*]) => {
+    (@call $body:ident ($($pre:tt)*) [$($args:tt)*]) => {
         $body($($pre)* $($args)*)
     };
 
-    (@cpu $(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) ($n:expr) $body:path
+    (@cpu $(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) ($n:expr) $body:ident
         [$($sh_arg:tt)*] $($buf:ident)*) => {
         $(#[$doc])*
         #[cfg(not(target_arch = "spirv"))]
@@ -91,7 +109,7 @@ macro_rules! kernel {
                 $body(&mut d.group($threads), &params, $($sh_arg)* $($buf),*);
             }
             $crate::kernel::KernelDesc {
-                entry: stringify!($entry),
+                entry: $crate::kernel::entry_name(concat!(module_path!(), "::", stringify!($entry))),
                 workgroup_size: $threads,
                 bindings: [$(stringify!($buf)),*].len() as u32,
                 push_bytes: core::mem::size_of::<$params>() as u32,

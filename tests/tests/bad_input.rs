@@ -26,7 +26,7 @@ fn out_of_bounds_kernel_access_is_a_fault_not_a_crash() {
     // Claims 4096 words in a 16-word buffer.
     let params = push_words(&ScanParams { len: 4096, data_offset: 0, sums_offset: 0 });
     let err = cpu.dispatch(&BLOCK_SCAN, [4, 1, 1], &[data, sums], &params, "bad").unwrap_err();
-    assert!(matches!(err, Error::KernelFault { kernel: "scan_block", .. }), "{err}");
+    assert!(matches!(err, Error::KernelFault { kernel: "scan::scan_block", .. }), "{err}");
 }
 
 #[test]

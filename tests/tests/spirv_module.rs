@@ -1,5 +1,5 @@
-//! The embedded SPIR-V module: built from the current kernel sources, and holding exactly the entry
-//! points the host refers to. Runs without a Vulkan driver.
+//! The embedded SPIR-V modules: built from the current kernel sources, one per entry point the host
+//! refers to. Runs without a Vulkan driver.
 
 use std::collections::BTreeSet;
 use std::path::Path;
@@ -33,8 +33,13 @@ fn entry_points(words: &[u32]) -> BTreeSet<String> {
 }
 
 #[test]
-fn every_kernel_the_host_names_is_in_the_module() {
-    let in_module = entry_points(&dof::shaders::spirv_words());
+fn every_kernel_the_host_names_has_its_own_module() {
     let declared: BTreeSet<String> = dof_shaders::all_kernels().map(|k| k.entry.to_string()).collect();
-    assert_eq!(in_module, declared, "entry points in the module vs kernels declared to the host");
+    let embedded: BTreeSet<String> = dof::shaders::MODULES.iter().map(|(e, _)| e.to_string()).collect();
+    assert_eq!(embedded, declared, "embedded modules vs kernels declared to the host");
+    for entry in &declared {
+        let words = dof::shaders::module_words(entry).expect("module");
+        let points = entry_points(&words);
+        assert_eq!(points, BTreeSet::from([entry.clone()]), "module of {entry} holds other entry points");
+    }
 }

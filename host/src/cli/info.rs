@@ -17,10 +17,10 @@ pub struct InfoArgs {
 }
 
 pub fn run(args: &InfoArgs) -> anyhow::Result<()> {
-    println!("dof {} — kernels: {} entry points, SPIR-V module {} bytes (source hash {})",
+    println!("dof {} — kernels: {} entry points, SPIR-V modules {} bytes (source hash {})",
         env!("CARGO_PKG_VERSION"),
         dof_shaders::all_kernels().count(),
-        dof::shaders::SPIRV.len(),
+        dof::shaders::total_bytes(),
         &dof::shaders::SOURCE_HASH[..12]);
     match vulkan::list_devices() {
         Ok(devices) => {

@@ -192,6 +192,7 @@ impl SortInput {
 }
 
 /// The result of [`sort_on`].
+#[derive(Debug)]
 pub struct SortOutput {
     pub keys: Vec<f32>,
     pub values: Vec<u32>,

@@ -2,6 +2,7 @@
 //! describing and choosing a physical device, and the logical device.
 
 use super::DeviceInfo;
+use super::spirv::{ModuleInfo, cap};
 use crate::backend::Limits;
 use crate::error::{Error, Result, VkContext};
 use ash::vk;
@@ -67,7 +68,9 @@ impl InstanceCtx {
         }
         // SAFETY: every pointer in `create_info` refers to locals alive for the call.
         let instance = unsafe { entry.create_instance(&create_info, None) }.map_err(|result| match result {
-            vk::Result::ERROR_INCOMPATIBLE_DRIVER => Error::NoVulkan("no driver supports Vulkan 1.2".into()),
+            vk::Result::ERROR_INCOMPATIBLE_DRIVER => {
+                Error::NoVulkan("vkCreateInstance found no driver (ICD) supporting Vulkan 1.2".into())
+            }
             result => Error::Vulkan { call: "vkCreateInstance", result },
         })?;
         let mut ctx = InstanceCtx { entry, instance, debug: None, messages };
@@ -148,17 +151,65 @@ pub(super) struct Candidate {
     pub info: DeviceInfo,
     pub queue_family: Option<u32>,
     pub timestamp_bits: u32,
+    /// The features the module's capabilities need.
+    pub features: Features,
     /// Why the device cannot run the kernels, if it cannot.
     pub problem: Option<String>,
 }
 
-pub(super) fn candidates(instance: &ash::Instance) -> Result<Vec<Candidate>> {
-    // SAFETY: plain enumeration call on a live instance.
-    let devices = unsafe { instance.enumerate_physical_devices() }.vk("vkEnumeratePhysicalDevices")?;
-    devices.into_iter().enumerate().map(|(index, pd)| describe(instance, pd, index)).collect()
+/// Device features to enable, from the capabilities the SPIR-V module declares.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Features {
+    pub float64: bool,
+    pub int64: bool,
+    pub int16: bool,
+    pub int8: bool,
+    pub memory_model: bool,
+    pub memory_model_device_scope: bool,
 }
 
-fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> Result<Candidate> {
+impl Features {
+    fn needed_by(module: &ModuleInfo) -> Self {
+        Features {
+            float64: module.has(cap::FLOAT64),
+            int64: module.has(cap::INT64),
+            int16: module.has(cap::INT16),
+            int8: module.has(cap::INT8),
+            memory_model: module.has(cap::VULKAN_MEMORY_MODEL),
+            memory_model_device_scope: module.has(cap::VULKAN_MEMORY_MODEL_DEVICE_SCOPE),
+        }
+    }
+
+    /// The needed features the device lacks, by name.
+    fn missing(&self, core: &vk::PhysicalDeviceFeatures, v12: &vk::PhysicalDeviceVulkan12Features) -> Vec<&'static str> {
+        [
+            (self.float64 && core.shader_float64 == vk::FALSE, "shaderFloat64"),
+            (self.int64 && core.shader_int64 == vk::FALSE, "shaderInt64"),
+            (self.int16 && core.shader_int16 == vk::FALSE, "shaderInt16"),
+            (self.int8 && v12.shader_int8 == vk::FALSE, "shaderInt8"),
+            (self.memory_model && v12.vulkan_memory_model == vk::FALSE, "vulkanMemoryModel"),
+            (
+                self.memory_model_device_scope && v12.vulkan_memory_model_device_scope == vk::FALSE,
+                "vulkanMemoryModelDeviceScope",
+            ),
+        ]
+        .into_iter()
+        .filter_map(|(missing, name)| missing.then_some(name))
+        .collect()
+    }
+}
+
+pub(super) fn candidates(instance: &ash::Instance, module: &ModuleInfo) -> Result<Vec<Candidate>> {
+    // SAFETY: plain enumeration call on a live instance.
+    let devices = unsafe { instance.enumerate_physical_devices() }.map_err(|result| match result {
+        vk::Result::ERROR_INITIALIZATION_FAILED => Error::NoVulkan("the Vulkan loader found no usable driver".into()),
+        result => Error::Vulkan { call: "vkEnumeratePhysicalDevices", result },
+    })?;
+    let features = Features::needed_by(module);
+    devices.into_iter().enumerate().map(|(index, pd)| describe(instance, pd, index, features)).collect()
+}
+
+fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize, features: Features) -> Result<Candidate> {
     // SAFETY: queries on a physical device enumerated from this instance; the chained structs are
     // only those the device's API version (or its extensions) defines.
     unsafe {
@@ -210,12 +261,23 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
             .map(|i| i as u32);
         let timestamp_bits = queue_family.map_or(0, |i| families[i as usize].timestamp_valid_bits);
 
+        let mut missing = Vec::new();
+        if at_least(2) {
+            let mut v12 = vk::PhysicalDeviceVulkan12Features::default();
+            let mut features2 = vk::PhysicalDeviceFeatures2::default().push_next(&mut v12);
+            instance.get_physical_device_features2(pd, &mut features2);
+            let core = features2.features;
+            missing = features.missing(&core, &v12);
+        }
+
         let problem = if !at_least(2) {
             Some(format!("supports only Vulkan {} (the kernels need 1.2)", version_string(api)))
         } else if queue_family.is_none() {
             Some("has no compute queue".to_string())
         } else if !has_ext(vk::KHR_PUSH_DESCRIPTOR_NAME) {
             Some("lacks the device extension VK_KHR_push_descriptor".to_string())
+        } else if !missing.is_empty() {
+            Some(format!("lacks features the kernels use: {}", missing.join(", ")))
         } else {
             None
         };
@@ -237,7 +299,7 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize) -> R
             limits,
             timestamp_period_ns: props.limits.timestamp_period,
         };
-        Ok(Candidate { physical: pd, info, queue_family, timestamp_bits, problem })
+        Ok(Candidate { physical: pd, info, queue_family, timestamp_bits, features, problem })
     }
 }
 
@@ -327,7 +389,20 @@ impl DeviceCtx {
         let priorities = [1.0f32];
         let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
         let extensions = [vk::KHR_PUSH_DESCRIPTOR_NAME.as_ptr()];
-        let info = vk::DeviceCreateInfo::default().queue_create_infos(&queues).enabled_extension_names(&extensions);
+        let f = candidate.features;
+        let core = vk::PhysicalDeviceFeatures::default()
+            .shader_float64(f.float64)
+            .shader_int64(f.int64)
+            .shader_int16(f.int16);
+        let mut v12 = vk::PhysicalDeviceVulkan12Features::default()
+            .shader_int8(f.int8)
+            .vulkan_memory_model(f.memory_model)
+            .vulkan_memory_model_device_scope(f.memory_model_device_scope);
+        let info = vk::DeviceCreateInfo::default()
+            .queue_create_infos(&queues)
+            .enabled_extension_names(&extensions)
+            .enabled_features(&core)
+            .push_next(&mut v12);
         // SAFETY: the physical device comes from this instance; `info` points at live locals.
         let device = unsafe { instance.instance.create_device(candidate.physical, &info, None) }.vk("vkCreateDevice")?;
         // SAFETY: family `family` was created with one queue.

@@ -1,0 +1,103 @@
+//! One compute pipeline per kernel, created on first use from the kernel's own SPIR-V module.
+//! Storage buffers are bound with push descriptors, so there are no descriptor pools or sets.
+
+use super::spirv;
+use crate::error::{Error, Result, VkContext};
+use ash::vk;
+use dof_shaders::KernelDesc;
+use std::collections::HashMap;
+use std::ffi::CString;
+
+#[derive(Clone, Copy, Default)]
+pub(super) struct Pipeline {
+    pub set_layout: vk::DescriptorSetLayout,
+    pub layout: vk::PipelineLayout,
+    pub pipeline: vk::Pipeline,
+}
+
+#[derive(Default)]
+pub(super) struct Pipelines {
+    by_entry: HashMap<&'static str, Pipeline>,
+}
+
+impl Pipelines {
+    /// The pipeline of `kernel`, created and cached on first use.
+    pub fn get(&mut self, device: &ash::Device, kernel: &'static KernelDesc) -> Result<Pipeline> {
+        if let Some(p) = self.by_entry.get(kernel.entry) {
+            return Ok(*p);
+        }
+        let p = create(device, kernel)?;
+        self.by_entry.insert(kernel.entry, p);
+        Ok(p)
+    }
+
+    /// Destroys every pipeline. The GPU must be idle.
+    pub fn destroy(&mut self, device: &ash::Device) {
+        for (_, p) in self.by_entry.drain() {
+            destroy(device, &p);
+        }
+    }
+}
+
+fn create(device: &ash::Device, kernel: &KernelDesc) -> Result<Pipeline> {
+    let (words, name) = spirv::kernel_module(kernel.entry)
+        .ok_or_else(|| Error::InvalidArgument(format!("no SPIR-V module holds the entry point `{}`", kernel.entry)))?;
+    let entry = CString::new(name)
+        .map_err(|_| Error::InvalidArgument(format!("kernel entry `{}` contains a NUL byte", kernel.entry)))?;
+    let bindings: Vec<_> = (0..kernel.bindings)
+        .map(|b| {
+            vk::DescriptorSetLayoutBinding::default()
+                .binding(b)
+                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                .descriptor_count(1)
+                .stage_flags(vk::ShaderStageFlags::COMPUTE)
+        })
+        .collect();
+    let set_info =
+        vk::DescriptorSetLayoutCreateInfo::default().flags(vk::DescriptorSetLayoutCreateFlags::PUSH_DESCRIPTOR_KHR).bindings(&bindings);
+    // Push constant sizes must be multiples of 4; the parameter structs are made of words.
+    let push_size = kernel.push_bytes.div_ceil(4) * 4;
+    let ranges = [vk::PushConstantRange::default().stage_flags(vk::ShaderStageFlags::COMPUTE).size(push_size)];
+
+    let mut p = Pipeline::default();
+    let mut module = vk::ShaderModule::null();
+    // SAFETY: create infos point at live locals; on failure whatever was made is destroyed, and the
+    // module is not needed once the pipeline exists.
+    let result = unsafe {
+        (|| -> Result<()> {
+            module = device.create_shader_module(&vk::ShaderModuleCreateInfo::default().code(&words), None).vk("vkCreateShaderModule")?;
+            p.set_layout = device.create_descriptor_set_layout(&set_info, None).vk("vkCreateDescriptorSetLayout")?;
+            let set_layouts = [p.set_layout];
+            let mut layout_info = vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts);
+            if push_size > 0 {
+                layout_info = layout_info.push_constant_ranges(&ranges);
+            }
+            p.layout = device.create_pipeline_layout(&layout_info, None).vk("vkCreatePipelineLayout")?;
+            let stage = vk::PipelineShaderStageCreateInfo::default().stage(vk::ShaderStageFlags::COMPUTE).module(module).name(&entry);
+            let info = [vk::ComputePipelineCreateInfo::default().stage(stage).layout(p.layout)];
+            let pipelines = device
+                .create_compute_pipelines(vk::PipelineCache::null(), &info, None)
+                .map_err(|(_, result)| Error::Vulkan { call: "vkCreateComputePipelines", result })?;
+            p.pipeline = pipelines.first().copied().unwrap_or_default();
+            Ok(())
+        })()
+    };
+    // SAFETY: the pipeline (if any) no longer needs the module; a null module is ignored.
+    unsafe { device.destroy_shader_module(module, None) };
+    match result {
+        Ok(()) => Ok(p),
+        Err(e) => {
+            destroy(device, &p);
+            Err(e)
+        }
+    }
+}
+
+fn destroy(device: &ash::Device, p: &Pipeline) {
+    // SAFETY: the GPU is done with the pipeline; null handles are ignored by vkDestroy*.
+    unsafe {
+        device.destroy_pipeline(p.pipeline, None);
+        device.destroy_pipeline_layout(p.layout, None);
+        device.destroy_descriptor_set_layout(p.set_layout, None);
+    }
+}

@@ -160,7 +160,9 @@ impl<M: Mem> Pairs for GlobalPairs<'_, M> {
 
 /// Runs the compare-exchange steps `j = j_start, j_start/2, .., 1` of stage `k` over the positions
 /// `[base, base + span)` of a list of length `len`, held in workgroup memory. With `j_start == k / 2`
-/// this includes the flip. One barrier per step.
+/// this includes the flip. Wide steps take one barrier each; once a step only pairs positions inside
+/// aligned chunks of `span / size`, each invocation runs all remaining steps on its own chunk without
+/// barriers (they touch nothing outside it).
 fn local_steps<G: Group, const N: usize>(
     g: &mut G,
     sh: &mut [u32; N],
@@ -171,8 +173,28 @@ fn local_steps<G: Group, const N: usize>(
     j_start: u32,
 ) {
     let size = g.size();
+    let chunk = span / size;
     let mut j = j_start;
     while j > 0 {
+        if 2 * j <= chunk {
+            g.each(|lid| {
+                let mut pairs = SharedPairs { sh: &mut *sh, base };
+                let start = base + lid * chunk;
+                let mut jj = j;
+                while jj > 0 {
+                    let mut t = 0;
+                    while t < chunk / 2 {
+                        let (a, b) = comparator(t, k, jj);
+                        if start + b < len {
+                            pairs.compare_exchange(start + a, start + b);
+                        }
+                        t += 1;
+                    }
+                    jj /= 2;
+                }
+            });
+            return;
+        }
         g.each(|lid| {
             let mut pairs = SharedPairs { sh: &mut *sh, base };
             let mut t = lid;

@@ -95,6 +95,10 @@ pub trait Backend {
         label: &str,
     ) -> Result<()>;
     fn submit(&mut self) -> Result<Vec<CommandTime>>;
+    /// Messages from driver-side checking (the validation layer on Vulkan) since the last call.
+    fn take_diagnostics(&mut self) -> Vec<String> {
+        Vec::new()
+    }
 }
 
 /// Checks a dispatch against the kernel's declaration and the device limits (both backends call it,

@@ -64,6 +64,11 @@ pub fn run(args: &InfoArgs) -> anyhow::Result<()> {
             if scan_ok { "ok" } else { "MISMATCH" }
         );
         failures += (!sort_ok) as u32 + (!scan_ok) as u32;
+        let diagnostics = backend.take_diagnostics();
+        for d in &diagnostics {
+            println!("  validation: {d}");
+        }
+        failures += diagnostics.len() as u32;
     }
     if failures > 0 {
         anyhow::bail!("{failures} self-check(s) failed");

@@ -360,6 +360,10 @@ impl Backend for VulkanBackend {
         self.flush()?;
         Ok(self.recorder.take_times())
     }
+
+    fn take_diagnostics(&mut self) -> Vec<String> {
+        self.take_validation_messages()
+    }
 }
 
 impl Drop for VulkanBackend {

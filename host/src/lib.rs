@@ -3,11 +3,17 @@
 //! - [`backend`]: the CPU and Vulkan backends that run the kernels of the `dof-shaders` crate;
 //! - [`ops`]: kernel sequences recorded on any backend (segmented sort, prefix scan);
 //! - [`workload`]: synthetic inputs shaped like the pipeline's (tile-list length mixes);
-//! - [`shaders`]: the embedded SPIR-V module.
+//! - [`layers`]: colour and multi-layer images, the data every method shares;
+//! - [`io`]: EXR and PNG in and out;
+//! - [`scene`]: lenses, cameras, analytic scenes and their exact references;
+//! - [`shaders`]: the embedded SPIR-V modules.
 
 pub mod backend;
 pub mod error;
+pub mod io;
+pub mod layers;
 pub mod ops;
+pub mod scene;
 pub mod shaders;
 pub mod source_hash;
 pub mod workload;

@@ -1,0 +1,156 @@
+//! The images every method consumes and produces: a linear HDR colour image, and the multi-layer
+//! image (per pixel up to `max_layers` surface fragments, front to back) that partial occlusion needs.
+//!
+//! Conventions (as glTF and path tracers): row-major, top row first, image +x to the right; depth is
+//! planar (distance along the camera's view axis, positive in front of the camera); the sky (no
+//! surface) is `f32::INFINITY`.
+
+use crate::error::{Error, Result};
+
+/// Linear HDR RGB, row-major, top row first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RgbImage {
+    pub width: u32,
+    pub height: u32,
+    pub data: Vec<[f32; 3]>,
+}
+
+impl RgbImage {
+    pub fn new(width: u32, height: u32) -> Self {
+        RgbImage { width, height, data: vec![[0.0; 3]; width as usize * height as usize] }
+    }
+    #[inline]
+    pub fn index(&self, x: u32, y: u32) -> usize {
+        y as usize * self.width as usize + x as usize
+    }
+    #[inline]
+    pub fn get(&self, x: u32, y: u32) -> [f32; 3] {
+        self.data[self.index(x, y)]
+    }
+}
+
+/// One surface sample along a pixel's ray.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fragment {
+    /// Linear HDR radiance (emission included).
+    pub color: [f32; 3],
+    /// Coverage in [0, 1]; 1 for opaque surfaces.
+    pub alpha: f32,
+    /// Planar depth, > 0.
+    pub depth: f32,
+}
+
+/// Per pixel up to `max_layers` fragments sorted front to back. Storage is fixed-size per pixel
+/// (seed 000 §4.3: the arrays are preallocated for the maximum and partially filled).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LayeredImage {
+    pub width: u32,
+    pub height: u32,
+    pub max_layers: u32,
+    /// Fragments stored per pixel, `<= max_layers`.
+    pub counts: Vec<u32>,
+    /// Slot `pixel * max_layers + layer`; slots at or beyond `counts[pixel]` are unused.
+    pub fragments: Vec<Fragment>,
+}
+
+/// What a multi-layer image holds, for reports.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LayerStats {
+    pub pixels: u64,
+    pub fragments: u64,
+    /// Pixels with more than one fragment.
+    pub multi_layer_pixels: u64,
+    /// Pixels with no fragment (sky).
+    pub empty_pixels: u64,
+}
+
+impl LayerStats {
+    pub fn fragments_per_pixel(&self) -> f64 {
+        self.fragments as f64 / self.pixels.max(1) as f64
+    }
+    pub fn multi_layer_share(&self) -> f64 {
+        self.multi_layer_pixels as f64 / self.pixels.max(1) as f64
+    }
+}
+
+const EMPTY: Fragment = Fragment { color: [0.0; 3], alpha: 0.0, depth: f32::INFINITY };
+
+impl LayeredImage {
+    /// An image with no fragments. Errors on a zero size or one too large to address.
+    pub fn new(width: u32, height: u32, max_layers: u32) -> Result<Self> {
+        if width == 0 || height == 0 || max_layers == 0 {
+            return Err(Error::InvalidArgument(format!(
+                "a layered image needs a positive size and layer count, got {width}x{height} with {max_layers} layers"
+            )));
+        }
+        let slots = width as u64 * height as u64 * max_layers as u64;
+        if slots > u32::MAX as u64 {
+            return Err(Error::TooLarge { what: "layered image (pixels x layers)".into(), size: slots, limit: u32::MAX as u64 });
+        }
+        Ok(LayeredImage {
+            width,
+            height,
+            max_layers,
+            counts: vec![0; width as usize * height as usize],
+            fragments: vec![EMPTY; slots as usize],
+        })
+    }
+
+    #[inline]
+    pub fn pixel_index(&self, x: u32, y: u32) -> usize {
+        y as usize * self.width as usize + x as usize
+    }
+
+    /// The fragments of pixel `(x, y)`, front to back.
+    pub fn pixel(&self, x: u32, y: u32) -> &[Fragment] {
+        let p = self.pixel_index(x, y);
+        let start = p * self.max_layers as usize;
+        &self.fragments[start..start + self.counts[p] as usize]
+    }
+
+    /// Appends a fragment behind those already stored at `(x, y)`. Returns `false` (and stores
+    /// nothing) when the pixel is full; errors when the fragment would break the front-to-back order
+    /// or its depth is not a positive number.
+    pub fn push(&mut self, x: u32, y: u32, fragment: Fragment) -> Result<bool> {
+        if !(fragment.depth > 0.0) {
+            return Err(Error::InvalidArgument(format!("fragment depth {} at ({x}, {y}) is not positive", fragment.depth)));
+        }
+        let p = self.pixel_index(x, y);
+        let count = self.counts[p] as usize;
+        if count == self.max_layers as usize {
+            return Ok(false);
+        }
+        let start = p * self.max_layers as usize;
+        if count > 0 && self.fragments[start + count - 1].depth > fragment.depth {
+            return Err(Error::InvalidArgument(format!("fragments at ({x}, {y}) must be pushed front to back")));
+        }
+        self.fragments[start + count] = fragment;
+        self.counts[p] += 1;
+        Ok(true)
+    }
+
+    /// The front fragment of every pixel composited over black (what a pinhole camera sees), and its
+    /// depth (`inf` for the sky).
+    pub fn front(&self) -> (RgbImage, Vec<f32>) {
+        let mut image = RgbImage::new(self.width, self.height);
+        let mut depth = vec![f32::INFINITY; image.data.len()];
+        for p in 0..image.data.len() {
+            if self.counts[p] > 0 {
+                let f = self.fragments[p * self.max_layers as usize];
+                image.data[p] = f.color.map(|c| c * f.alpha);
+                depth[p] = f.depth;
+            }
+        }
+        (image, depth)
+    }
+
+    pub fn stats(&self) -> LayerStats {
+        let mut s = LayerStats { pixels: self.counts.len() as u64, ..Default::default() };
+        for &c in &self.counts {
+            s.fragments += c as u64;
+            s.multi_layer_pixels += (c > 1) as u64;
+            s.empty_pixels += (c == 0) as u64;
+        }
+        s
+    }
+}

@@ -1,0 +1,1 @@
+//! Scenes, cameras and lenses, and the exact references computed from analytic scenes.

@@ -346,11 +346,23 @@ pub fn shared_class_pass<G: Group, M: Mem, const N: usize>(
     }
 }
 
-/// `(offset, len)` of the list in slot `slot` of the global class.
-#[inline]
-fn global_list<M: Mem>(p: &SortParams, lists: &M, segments: &M, slot: u32) -> (u32, u32) {
-    let s = lists.load(GLOBAL_CLASS * p.num_segments + slot);
-    segment(segments, s)
+/// Runs `body(group, offset, len)` for every global-class list this workgroup handles (workgroup row
+/// `y` takes lists `y, y + rows, ..`). Uniform: every invocation sees the same lists.
+fn for_each_global_list<G: Group, M: Mem>(
+    g: &mut G,
+    p: &SortParams,
+    plan: &M,
+    lists: &M,
+    segments: &M,
+    mut body: impl FnMut(&mut G, u32, u32),
+) {
+    let count = plan.load(plan::COUNTS + GLOBAL_CLASS);
+    let mut slot = g.workgroup_id()[1];
+    while slot < count {
+        let (offset, len) = segment(segments, lists.load(GLOBAL_CLASS * p.num_segments + slot));
+        body(g, offset, len);
+        slot += g.num_workgroups()[1];
+    }
 }
 
 /// Global path, workgroup-memory part. With `k == 0`: transform the keys of one [`LOCAL_BLOCK`] of a
@@ -369,10 +381,7 @@ pub fn global_local_pass<G: Group, M: Mem, const N: usize>(
     mut scratch_pos: M,
 ) {
     let size = g.size();
-    let count = plan.load(plan::COUNTS + GLOBAL_CLASS);
-    let mut slot = g.workgroup_id()[1];
-    while slot < count {
-        let (offset, len) = global_list(p, &lists, &segments, slot);
+    for_each_global_list(g, p, &plan, &lists, &segments, |g, offset, len| {
         let mut block = g.workgroup_id()[0];
         // A merge stage wider than the list's padded length has nothing to do for it.
         let active = p.k <= pow2_ceil(len);
@@ -407,8 +416,7 @@ pub fn global_local_pass<G: Group, M: Mem, const N: usize>(
             });
             block += g.num_workgroups()[0];
         }
-        slot += g.num_workgroups()[1];
-    }
+    });
 }
 
 /// Global path: one compare-exchange step `(k, j)` with `j >= LOCAL_BLOCK`, in global memory.
@@ -423,12 +431,9 @@ pub fn global_step_pass<G: Group, M: Mem>(
     mut scratch_pos: M,
 ) {
     let size = g.size();
-    let count = plan.load(plan::COUNTS + GLOBAL_CLASS);
     let first = g.workgroup_id()[0] * size;
     let stride = g.num_workgroups()[0] * size;
-    let mut slot = g.workgroup_id()[1];
-    while slot < count {
-        let (offset, len) = global_list(p, &lists, &segments, slot);
+    for_each_global_list(g, p, &plan, &lists, &segments, |g, offset, len| {
         g.each(|lid| {
             let mut pairs = GlobalPairs { keys: &mut scratch_keys, pos: &mut scratch_pos, offset };
             let mut t = first + lid;
@@ -442,8 +447,7 @@ pub fn global_step_pass<G: Group, M: Mem>(
                 t += stride;
             }
         });
-        slot += g.num_workgroups()[1];
-    }
+    });
 }
 
 /// Global path: write the sorted keys and gather the payloads.
@@ -461,12 +465,9 @@ pub fn global_store_pass<G: Group, M: Mem>(
     mut values_out: M,
 ) {
     let size = g.size();
-    let count = plan.load(plan::COUNTS + GLOBAL_CLASS);
     let first = g.workgroup_id()[0] * size;
     let stride = g.num_workgroups()[0] * size;
-    let mut slot = g.workgroup_id()[1];
-    while slot < count {
-        let (offset, len) = global_list(p, &lists, &segments, slot);
+    for_each_global_list(g, p, &plan, &lists, &segments, |g, offset, len| {
         g.each(|lid| {
             let mut i = first + lid;
             while i < len {
@@ -476,8 +477,7 @@ pub fn global_store_pass<G: Group, M: Mem>(
                 i += stride;
             }
         });
-        slot += g.num_workgroups()[1];
-    }
+    });
 }
 
 kernel!(

@@ -13,6 +13,8 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
+    /// Renders a scene with one method to EXR + PNG (the default command: the `simple` scene's reference).
+    Render(cli::render::RenderArgs),
     /// Backends, Vulkan devices and their limits, and a sort and scan self-check on every backend.
     Info(cli::info::InfoArgs),
     /// Benchmarks of the kernels on each backend.
@@ -22,7 +24,16 @@ enum Command {
 
 fn main() -> std::process::ExitCode {
     let cli = Cli::parse();
-    let result = match cli.command.unwrap_or(Command::Info(Default::default())) {
+    // No subcommand: render the default scene with the default method.
+    let command = match cli.command {
+        Some(command) => command,
+        None => match Cli::parse_from(["dof", "render"]).command {
+            Some(command) => command,
+            None => unreachable!("`dof render` parses to the render command"),
+        },
+    };
+    let result = match command {
+        Command::Render(args) => cli::render::run(&args),
         Command::Info(args) => cli::info::run(&args),
         Command::Bench(cmd) => cli::bench::run(&cmd),
     };

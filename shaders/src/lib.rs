@@ -9,6 +9,7 @@ pub mod exec;
 #[macro_use]
 pub mod kernel;
 pub mod keys;
+pub mod lens;
 pub mod scan;
 pub mod sort;
 

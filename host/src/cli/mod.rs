@@ -1,5 +1,6 @@
 pub mod bench;
 pub mod info;
+pub mod render;
 
 use dof::backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
 

@@ -1,2 +1,123 @@
 //! Reading and writing images: EXR for linear HDR data (colour, depth, CoC, masks, multi-layer
 //! input), PNG previews through a documented tone map.
+//!
+//! - [`write_exr`] / [`write_exr_with`]: an [`RgbImage`] as linear `f32`
+//!   (or half) RGB, plus extra named `f32` planes (`Z`, `coc`, `mask`, …);
+//!   [`write_layered_exr`]: a [`LayeredImage`](crate::layers::LayeredImage) as `layer{i}.R/G/B/A/Z`.
+//! - [`read_layered_exr`]: an RGB+Z or multi-layer EXR to a `LayeredImage`, with an
+//!   [`InputReport`] of what was read and repaired; [`read_rgb_exr`]: the colour of an EXR.
+//! - [`write_png_preview`]: 8-bit sRGB PNG through [`tonemap()`](tonemap::tonemap) (exposure, ACES
+//!   fitted curve, sRGB OETF; formulas in [`tonemap`](mod@tonemap)).
+//!
+//! # Input channels
+//!
+//! A channel name `layer.channel` belongs to the layer before the last `.`; names without a `.` form
+//! the unnamed layer. Within a layer, colour is `R`, `G`, `B`, alpha `A` (optional: 1 when absent),
+//! depth `Z` or `depth` (any letter case; the canonical spelling wins when several are present).
+//! A file with at least one complete named layer (colour + depth) is **multi-layer**; otherwise the
+//! unnamed layer (with Nuke's `depth.Z` accepted as its depth) makes it **RGB+Z**. Colour in EXR is
+//! premultiplied by alpha; [`Fragment`](crate::layers::Fragment) colour is straight, so it is
+//! divided by alpha on reading and multiplied on writing. Depth is planar (distance along the view
+//! axis) as in [`layers`](crate::layers); a renderer writing radial distance or `1/z` must be
+//! converted first. The image is the data window; the display window is ignored.
+//!
+//! # NaN/Inf policy
+//!
+//! Every sample read is checked, repaired or dropped as below, and counted in the
+//! [`InputReport`]'s [`SanitizeCounts`] (colour and alpha per sample, depth per fragment), so that
+//! the CLI can print what was changed. Written files hold the values as given.
+//!
+//! | value                               | becomes                                             | counted in       |
+//! |-------------------------------------|-----------------------------------------------------|------------------|
+//! | colour NaN                          | 0                                                   | `color_nan`      |
+//! | colour `+inf`                       | 65 504 ([`COLOR_INF_REPLACEMENT`], max finite half) | `color_inf`      |
+//! | colour `-inf`                       | 0                                                   | `color_inf`      |
+//! | colour finite (negative included)   | unchanged                                           | —                |
+//! | alpha NaN                           | 0, so the slot is empty                             | `alpha_invalid`  |
+//! | alpha < 0 or > 1 (`±inf` included)  | clamped to [0, 1]                                   | `alpha_invalid`  |
+//! | alpha 0                             | empty slot: no fragment (colour, depth not checked) | `empty_alpha` (info) |
+//! | depth `+inf`                        | the sky: no fragment                                | `sky_with_color` (info) if its colour ≠ 0 |
+//! | depth NaN, `<= 0`, `-inf`           | fragment dropped (that layer of the pixel is empty) | `depth_invalid`  |
+//!
+//! Each layer slot of a pixel is checked in the table's order: alpha, then depth, then colour; the
+//! colour of a slot that is empty or dropped is not checked or counted.
+//! Colour 65 504 (not `f32::MAX`) keeps sums of many clamped pixels finite in `f32`; finite values
+//! above it are kept. A colour that overflows when divided by a tiny alpha also becomes 65 504
+//! (counted in `color_inf`). [`read_rgb_exr`] applies the colour rules only. The PNG preview maps
+//! NaN to black and `+inf` to white (see [`tonemap`](mod@tonemap)).
+//!
+//! # Errors
+//!
+//! A missing or unreadable file, a file that is not an EXR, a truncated or corrupt EXR, a zero
+//! size, missing R/G/B, missing depth ("needs a Z channel"), layers with different data windows,
+//! subsampled channels, deep data: each is an [`Error::InvalidArgument`] naming the file and saying
+//! what to change. Nothing here panics on file contents: a header announcing more than 4096 times
+//! the file's size in pixel data is rejected as corrupt before anything is allocated, and the exr
+//! crate decodes on the calling thread inside `catch_unwind`, so that an assertion it trips on
+//! corrupt data becomes an error (a panic in its thread pool would abort the process; the price is
+//! sequential decompression).
+
+mod channels;
+mod exr_read;
+mod exr_write;
+mod preview;
+pub mod sanitize;
+pub mod tonemap;
+
+use std::path::Path;
+
+pub use channels::natural_cmp;
+pub use exr_read::{ExrLayout, InputReport, read_layered_exr, read_rgb_exr};
+pub use exr_write::{ExrCompression, ExrPrecision, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr};
+pub use preview::write_png_preview;
+pub use sanitize::{COLOR_INF_REPLACEMENT, SanitizeCounts};
+pub use tonemap::tonemap;
+
+/// The codec crates used here, re-exported so that callers and tests can build or inspect files
+/// with exactly the versions this module reads and writes.
+pub mod codecs {
+    pub use ::exr;
+    pub use ::png;
+}
+
+use crate::error::{Error, Result};
+use crate::layers::RgbImage;
+
+/// Errors on a zero-sized image or one whose `data` does not hold `width · height` pixels.
+fn check_rgb_image(image: &RgbImage, what: &str) -> Result<()> {
+    if image.width == 0 || image.height == 0 {
+        return Err(Error::InvalidArgument(format!(
+            "cannot write {what} of zero size ({}x{}): width and height must be positive",
+            image.width, image.height
+        )));
+    }
+    let pixels = image.width as u64 * image.height as u64;
+    if image.data.len() as u64 != pixels {
+        return Err(Error::InvalidArgument(format!(
+            "cannot write {what}: the image is {}x{} = {pixels} pixels but its data holds {}",
+            image.width,
+            image.height,
+            image.data.len()
+        )));
+    }
+    Ok(())
+}
+
+/// A file-system error with the path and, for the usual causes, what to do.
+fn fs_error(action: &str, path: &Path, e: &std::io::Error) -> Error {
+    use std::io::ErrorKind;
+    let path = path.display();
+    Error::InvalidArgument(match (action, e.kind()) {
+        ("open", ErrorKind::NotFound) => format!("cannot open {path}: the file does not exist; check the path"),
+        ("create", ErrorKind::NotFound) => {
+            format!("cannot create {path}: its directory does not exist; create the directory first")
+        }
+        (_, ErrorKind::PermissionDenied) => format!("cannot {action} {path}: permission denied"),
+        _ => format!("cannot {action} {path}: {e}"),
+    })
+}
+
+/// Writes a whole file, with the path in any error.
+fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
+    std::fs::write(path, bytes).map_err(|e| fs_error("create", path, &e))
+}

@@ -1,1 +1,31 @@
 //! Scenes, cameras and lenses, and the exact references computed from analytic scenes.
+//!
+//! - [`camera`]: the pinhole camera (glTF conventions), pixel and lens rays, planar depth;
+//! - [`lens`]: lens settings (photographic or aperture radius) validated into a [`ThinLens`];
+//! - [`analytic`]: spheres, boxes, quads and planes, exact ray intersection, the lighting model;
+//! - [`builtin`]: named scenes with default camera and lens (`simple`, `railing`, `columns`,
+//!   `highlights`);
+//! - [`raycast`]: the exact partial multi-layer image (umbra threshold, disocclusion buffer);
+//! - [`reference`]: thin-lens distributed ray tracing (the ground truth) and the pinhole image;
+//! - [`sampling`]: stratified lens/pixel samples and the concentric disc mapping.
+//!
+//! The lens models themselves live in the kernel crate ([`dof_shaders::lens`]) so the kernels
+//! evaluate the same code per fragment; they are re-exported here.
+
+pub mod analytic;
+pub mod builtin;
+pub mod camera;
+pub mod lens;
+pub mod raycast;
+pub mod reference;
+pub mod sampling;
+
+pub use analytic::{Albedo, Hit, Lighting, Material, Primitive, Scene, Shape};
+pub use builtin::{BuiltinScene, builtin, builtin_names};
+pub use camera::{Camera, CameraFrame, Ray};
+pub use dof_shaders::lens::{ArtistLens, ThinLens};
+/// The vector type of the scene API (so users need not depend on `glam` themselves).
+pub use glam::Vec3;
+pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
+pub use raycast::{LayerOptions, MultiLayerImage, raycast_layers};
+pub use reference::{AutoOptions, Reference, ReferenceOptions, pinhole, psnr, reference, reference_auto, tonemap};

@@ -1,0 +1,207 @@
+//! `dof render`: one scene through one method to an EXR (linear HDR, with depth and CoC planes) and a
+//! PNG preview beside it.
+
+use anyhow::{Context, bail};
+use dof::io::{read_layered_exr, write_exr, write_layered_exr, write_png_preview};
+use dof::layers::RgbImage;
+use dof::scene::{
+    self, Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, ReferenceOptions, Vec3, raycast_layers,
+};
+use std::path::{Path, PathBuf};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Method {
+    /// The pinhole image (no blur): the front layer.
+    Pinhole,
+    /// The partial multi-layer image (umbra threshold, disocclusion buffer) as a multi-layer EXR.
+    Layers,
+    /// The exact reference: thin-lens distributed ray tracing (analytic scenes only).
+    Reference,
+}
+
+#[derive(clap::Args)]
+pub struct RenderArgs {
+    /// A built-in scene name (`simple`, `railing`, `columns`, `highlights`) or an EXR file (RGB+Z or
+    /// multi-layer).
+    #[arg(long, default_value = "simple")]
+    scene: String,
+    #[arg(long, value_enum, default_value = "reference")]
+    method: Method,
+    /// Image size (built-in scenes; an EXR has its own).
+    #[arg(long)]
+    width: Option<u32>,
+    #[arg(long)]
+    height: Option<u32>,
+    /// Focus distance in scene units (planar).
+    #[arg(long)]
+    focus: Option<f32>,
+    /// Aperture as an f-number (focal length from the field of view and sensor height)...
+    #[arg(long, conflicts_with = "aperture_radius")]
+    f_number: Option<f32>,
+    /// ...or as a radius in scene units, as path tracers take it.
+    #[arg(long)]
+    aperture_radius: Option<f32>,
+    /// Focal length in millimetres (default: from the field of view and the sensor height).
+    #[arg(long)]
+    focal_length: Option<f32>,
+    /// Sensor height in millimetres.
+    #[arg(long, default_value_t = 24.0)]
+    sensor_height: f32,
+    /// Camera position, target and vertical field of view in degrees (override the scene's camera).
+    #[arg(long, value_parser = parse_vec3)]
+    eye: Option<Vec3>,
+    #[arg(long, value_parser = parse_vec3)]
+    target: Option<Vec3>,
+    #[arg(long)]
+    yfov: Option<f32>,
+    /// Reference samples per pixel; by default raised until the noise is within 0.5 dB of converged.
+    #[arg(long)]
+    samples: Option<u32>,
+    /// Fragments per pixel in the multi-layer image.
+    #[arg(long, default_value_t = 4)]
+    layers: u32,
+    /// Output EXR; a PNG preview is written beside it. Default `out/<scene>-<method>.exr`.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Exposure multiplier of the PNG preview.
+    #[arg(long, default_value_t = 1.0)]
+    exposure: f32,
+}
+
+fn parse_vec3(s: &str) -> Result<Vec3, String> {
+    let parts: Vec<f32> = s
+        .split(',')
+        .map(|p| p.trim().parse::<f32>().map_err(|e| format!("`{p}`: {e}")))
+        .collect::<Result<_, _>>()?;
+    match parts[..] {
+        [x, y, z] if parts.iter().all(|v| v.is_finite()) => Ok(Vec3::new(x, y, z)),
+        _ => Err(format!("expected three finite numbers `x,y,z`, got `{s}`")),
+    }
+}
+
+fn is_file_scene(scene: &str) -> bool {
+    let lower = scene.to_ascii_lowercase();
+    [".exr", ".gltf", ".glb"].iter().any(|ext| lower.ends_with(ext))
+}
+
+pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
+    let name = Path::new(&args.scene).file_stem().and_then(|s| s.to_str()).unwrap_or("scene").to_string();
+    let method = format!("{:?}", args.method).to_lowercase();
+    let out = args.out.clone().unwrap_or_else(|| PathBuf::from(format!("out/{name}-{method}.exr")));
+    if out.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() != Some("exr") {
+        bail!("--out must name an .exr file (a PNG preview is written beside it), got {}", out.display());
+    }
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
+    }
+    if is_file_scene(&args.scene) {
+        render_file(args, &out)
+    } else {
+        render_builtin(args, &out)
+    }
+}
+
+/// A scene given as a file: EXR input (the methods that need only the image), glTF not yet.
+fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
+    let lower = args.scene.to_ascii_lowercase();
+    if lower.ends_with(".gltf") || lower.ends_with(".glb") {
+        bail!("glTF scenes are not supported yet: their rasterisation and depth peeling on Vulkan are still to come; use a built-in scene or an EXR");
+    }
+    let (layers, report) = read_layered_exr(&args.scene)?;
+    if report.total() > 0 {
+        eprintln!("note: {}: {report}", args.scene);
+    }
+    match args.method {
+        Method::Pinhole => {
+            let (image, depth) = layers.front();
+            write_outputs(out, &image, &[("Z", &depth)], args.exposure)
+        }
+        Method::Layers => {
+            write_layered_exr(out, &layers)?;
+            let stats = layers.stats();
+            println!("{} layers, {:.3} fragments per pixel, {:.1}% of pixels with more than one", layers.max_layers,
+                stats.fragments_per_pixel(), 100.0 * stats.multi_layer_share());
+            Ok(())
+        }
+        Method::Reference => bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)"),
+    }
+}
+
+fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
+    let builtin = scene::builtin(&args.scene)?;
+    let mut camera: Camera = builtin.camera.clone();
+    camera.width = args.width.unwrap_or(camera.width);
+    camera.height = args.height.unwrap_or(camera.height);
+    camera.eye = args.eye.unwrap_or(camera.eye);
+    camera.target = args.target.unwrap_or(camera.target);
+    if let Some(deg) = args.yfov {
+        camera.yfov_radians = deg.to_radians();
+    }
+    let mut settings: LensSettings = builtin.lens;
+    if let Some(d) = args.focus {
+        settings.focus = Focus::Distance(d);
+    }
+    if let Some(n) = args.f_number {
+        settings.aperture = Aperture::FNumber(n);
+    }
+    if let Some(r) = args.aperture_radius {
+        settings.aperture = Aperture::Radius(r);
+    }
+    settings.focal_length_mm = args.focal_length.or(settings.focal_length_mm);
+    settings.sensor_height_mm = args.sensor_height;
+    let lens = settings.thin_lens(&camera)?;
+    println!(
+        "{}: {}x{}, f = {:.1} mm, aperture radius {:.2} mm, focus {:.3}, far-field CoC {:.1} px",
+        builtin.name, camera.width, camera.height, lens.focal_length * 1e3, lens.aperture_radius * 1e3,
+        lens.focus_distance, lens.far_limit_px()
+    );
+    let depth_and_coc = |layers: &dof::layers::LayeredImage| {
+        let (_, depth) = layers.front();
+        let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
+        (depth, coc)
+    };
+    let options = LayerOptions { max_layers: args.layers, ..Default::default() };
+    let layered = raycast_layers(&builtin.scene, &camera, &lens, &options)?;
+    let (depth, coc) = depth_and_coc(&layered.layers);
+    match args.method {
+        Method::Pinhole => {
+            let r = scene::pinhole(&builtin.scene, &camera, &ReferenceOptions { spp: 16, ..Default::default() })?;
+            write_outputs(out, &r.image, &[("Z", &depth), ("coc", &coc)], args.exposure)
+        }
+        Method::Layers => {
+            write_layered_exr(out, &layered.layers)?;
+            let (w, wo) = (layered.with_mask, layered.without_mask);
+            println!(
+                "layers: {:.3} fragments per pixel, {:.1}% of pixels multi-layer (without the disocclusion buffer: {:.3}, {:.1}%); buffer covers {:.1}% of pixels",
+                w.fragments_per_pixel(), 100.0 * w.multi_layer_share(), wo.fragments_per_pixel(),
+                100.0 * wo.multi_layer_share(), 100.0 * layered.mask_share()
+            );
+            let (front, _) = layered.layers.front();
+            write_png_preview(out.with_extension("png"), &front, args.exposure)?;
+            println!("wrote {} and {}", out.display(), out.with_extension("png").display());
+            Ok(())
+        }
+        Method::Reference => {
+            let reference = match args.samples {
+                Some(spp) => scene::reference(&builtin.scene, &camera, &lens, &ReferenceOptions { spp, progress: true, ..Default::default() })?,
+                None => scene::reference_auto(&builtin.scene, &camera, &lens, &AutoOptions { progress: true, ..Default::default() })?,
+            };
+            println!(
+                "reference: {} samples per pixel, estimated noise PSNR {}{}",
+                reference.spp,
+                reference.noise_psnr_db.map_or("n/a".to_string(), |p| format!("{p:.1} dB")),
+                if reference.capped { " (sample cap reached before the target)" } else { "" }
+            );
+            let mask: Vec<f32> = layered.mask.iter().map(|&m| m as u32 as f32).collect();
+            write_outputs(out, &reference.image, &[("Z", &depth), ("coc", &coc), ("mask", &mask)], args.exposure)
+        }
+    }
+}
+
+fn write_outputs(out: &Path, image: &RgbImage, extra: &[(&str, &[f32])], exposure: f32) -> anyhow::Result<()> {
+    write_exr(out, image, extra)?;
+    let png = out.with_extension("png");
+    write_png_preview(&png, image, exposure)?;
+    println!("wrote {} and {}", out.display(), png.display());
+    Ok(())
+}

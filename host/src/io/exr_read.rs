@@ -1,0 +1,584 @@
+//! EXR input: RGB+Z and multi-layer files to a [`LayeredImage`], RGB files to an [`RgbImage`].
+
+use std::borrow::Cow;
+use std::fmt;
+use std::fs::File;
+use std::io::{BufReader, Read, Seek, SeekFrom};
+use std::path::Path;
+
+use ::exr::prelude::*;
+use rayon::prelude::*;
+
+use super::channels::{Group, group_channels};
+use super::fs_error;
+use super::sanitize::SanitizeCounts;
+use crate::error::{Error, Result};
+use crate::layers::{Fragment, LayeredImage, RgbImage};
+
+/// How the channels of a file were interpreted.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ExrLayout {
+    /// Colour only (`R`, `G`, `B`), read by [`read_rgb_exr`].
+    Rgb,
+    /// One colour image with depth: `R`, `G`, `B`, a depth channel, optional `A`; one layer.
+    RgbZ,
+    /// Named layers `<name>.R`, `.G`, `.B`, depth, optional `.A`: one depth layer each.
+    MultiLayer,
+}
+
+/// What reading a file found and what the NaN/Inf policy changed, for the CLI to print.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InputReport {
+    pub layout: ExrLayout,
+    pub width: u32,
+    pub height: u32,
+    /// The layers read, in the order used to break depth ties (natural order of names; `""` is the
+    /// unnamed layer of an RGB or RGB+Z file).
+    pub layers: Vec<String>,
+    /// The channels read, by full name (e.g. `layer0.R`).
+    pub channels: Vec<String>,
+    /// Channels in the file that were not read (other passes, a flattened beauty image next to
+    /// named layers, duplicate spellings such as `depth` next to `Z`).
+    pub ignored_channels: Vec<String>,
+    /// What the NaN/Inf policy repaired or dropped.
+    pub counts: SanitizeCounts,
+}
+
+impl InputReport {
+    /// Values repaired or dropped by the NaN/Inf policy (see [`SanitizeCounts::repaired`]).
+    pub fn repaired(&self) -> u64 {
+        self.counts.repaired()
+    }
+
+    /// Everything worth a note to the user: [`Self::repaired`] plus the sky fragments whose colour
+    /// was discarded (`counts.sky_with_color`). When it is 0 the input was read as it is (apart
+    /// from empty slots and ignored channels, which the `Display` output also lists).
+    pub fn total(&self) -> u64 {
+        self.counts.repaired() + self.counts.sky_with_color
+    }
+}
+
+impl fmt::Display for InputReport {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let layout = match self.layout {
+            ExrLayout::Rgb => "RGB".to_string(),
+            ExrLayout::RgbZ => "RGB+Z".to_string(),
+            ExrLayout::MultiLayer => format!("{} layers ({})", self.layers.len(), self.layers.join(", ")),
+        };
+        write!(f, "{}x{} {layout}", self.width, self.height)?;
+        let c = &self.counts;
+        let items = [
+            (c.color_nan, "NaN colour values set to 0"),
+            (c.color_inf, "infinite colour values clamped (+inf to 65504, -inf to 0)"),
+            (c.alpha_invalid, "alpha values NaN or outside [0, 1] (NaN to 0, others clamped)"),
+            (c.depth_invalid, "fragments with NaN, zero or negative depth dropped"),
+            (c.sky_with_color, "sky fragments (depth +inf) whose colour was discarded"),
+        ];
+        for (n, what) in items {
+            if n > 0 {
+                write!(f, "\n  {n} {what}")?;
+            }
+        }
+        if !self.ignored_channels.is_empty() {
+            write!(f, "\n  channels not used: {}", list(&self.ignored_channels))?;
+        }
+        Ok(())
+    }
+}
+
+/// Reads an RGB+Z or multi-layer EXR into a layered image, detecting which it is (see the [module
+/// documentation](super) for the channel names accepted and the NaN/Inf policy).
+///
+/// - **Multi-layer**: if any named layer (`<name>.R`, `<name>.G`, `<name>.B` and `<name>.Z` or
+///   `<name>.depth`; `<name>.A` optional) exists, every such layer is one depth layer, in the
+///   natural order of the names; `max_layers` is their number and each pixel's fragments are sorted
+///   front to back (stable, so equal depths keep the layer order). Channels outside named layers
+///   are ignored; a named layer with colour channels but no depth, or only some of R, G, B, is an
+///   error. Layers may also be separate parts of a multi-part file (the part name is the layer
+///   name); all must share one data window.
+/// - **RGB+Z**: otherwise the unnamed channels `R`, `G`, `B` and `Z` (or `depth`; or Nuke's
+///   `depth.Z`), `A` optional, give one layer.
+///
+/// Colour is premultiplied by alpha in EXR files and straight in a [`Fragment`], so it is divided
+/// by alpha. Depth is taken as planar depth as written.
+pub fn read_layered_exr(path: impl AsRef<Path>) -> Result<(LayeredImage, InputReport)> {
+    let path = path.as_ref();
+    let file = ExrFile::open(path)?;
+    let (layout, groups) = select_layers(path, &file)?;
+    let (width, height) = file.size_of(path, &groups)?;
+    let mut image = LayeredImage::new(width, height, groups.len() as u32)?;
+    let mut report = file.report(layout, width, height, &groups);
+
+    struct Planes<'a> {
+        rgb: [Cow<'a, [f32]>; 3],
+        alpha: Option<Cow<'a, [f32]>>,
+        depth: Cow<'a, [f32]>,
+    }
+    let mut planes = Vec::with_capacity(groups.len());
+    for g in &groups {
+        let get = |i: Option<usize>| i.map(|i| file.samples(path, i)).transpose();
+        let (Some(r), Some(gr), Some(b), Some(depth)) = (get(g.r)?, get(g.g)?, get(g.b)?, get(g.depth)?) else {
+            return Err(Error::InvalidArgument(format!("internal: layer `{}` selected without its channels", g.name)));
+        };
+        planes.push(Planes { rgb: [r, gr, b], alpha: get(g.a)?, depth });
+    }
+
+    let w = width as usize;
+    let layers = groups.len();
+    report.counts = image
+        .fragments
+        .par_chunks_mut(w * layers)
+        .zip(image.counts.par_chunks_mut(w))
+        .enumerate()
+        .map(|(y, (row_fragments, row_counts))| {
+            let mut counts = SanitizeCounts::default();
+            let mut pixel: Vec<Fragment> = Vec::with_capacity(layers);
+            for x in 0..w {
+                let p = y * w + x;
+                pixel.clear();
+                for plane in &planes {
+                    let rgb = [plane.rgb[0][p], plane.rgb[1][p], plane.rgb[2][p]];
+                    let alpha = plane.alpha.as_ref().map_or(1.0, |a| a[p]);
+                    if let Some(f) = counts.fragment(rgb, alpha, plane.depth[p]) {
+                        pixel.push(f);
+                    }
+                }
+                // Depths are finite and positive here; the sort is stable, so ties keep layer order.
+                pixel.sort_by(|a, b| a.depth.total_cmp(&b.depth));
+                row_fragments[x * layers..x * layers + pixel.len()].copy_from_slice(&pixel);
+                row_counts[x] = pixel.len() as u32;
+            }
+            counts
+        })
+        .reduce(SanitizeCounts::default, |a, b| a + b);
+    Ok((image, report))
+}
+
+/// Reads the colour of an EXR (the unnamed channels `R`, `G`, `B`, as written by
+/// [`write_exr`](super::write_exr)) into an [`RgbImage`], as stored (alpha, if any, is not applied).
+/// Colour samples follow the NaN/Inf policy and are counted in the report.
+pub fn read_rgb_exr(path: impl AsRef<Path>) -> Result<(RgbImage, InputReport)> {
+    let path = path.as_ref();
+    let file = ExrFile::open(path)?;
+    let groups = group_channels(&file.names);
+    let root = match groups.iter().find(|g| g.name.is_empty()) {
+        Some(root) if root.has_rgb() => root.clone(),
+        root => {
+            let missing = root.map_or(vec!["R", "G", "B"], |r| r.missing_colors());
+            return Err(Error::InvalidArgument(format!(
+                "{} needs the colour channels R, G and B (missing {}); it has the channels {}",
+                path.display(),
+                missing.join(", "),
+                list(&file.names)
+            )));
+        }
+    };
+    let colour_only = Group { a: None, depth: None, ..root };
+    let groups = [colour_only];
+    let (width, height) = file.size_of(path, &groups)?;
+    let mut report = file.report(ExrLayout::Rgb, width, height, &groups);
+    let g = &groups[0];
+    let mut planes = Vec::with_capacity(3);
+    for i in [g.r, g.g, g.b].into_iter().flatten() {
+        planes.push(file.samples(path, i)?);
+    }
+    let mut image = RgbImage::new(width, height);
+    report.counts = image
+        .data
+        .par_chunks_mut(width as usize)
+        .enumerate()
+        .map(|(y, row)| {
+            let mut counts = SanitizeCounts::default();
+            for (x, c) in row.iter_mut().enumerate() {
+                let p = y * width as usize + x;
+                *c = [0, 1, 2].map(|k| counts.color(planes[k][p]));
+            }
+            counts
+        })
+        .reduce(SanitizeCounts::default, |a, b| a + b);
+    Ok((image, report))
+}
+
+/// A decoded EXR: every part, every channel, with full names (`part.channel` in multi-part files).
+struct ExrFile {
+    parts: Vec<Layer<AnyChannels<FlatSamples>>>,
+    /// Full channel names, in the order of `index`.
+    names: Vec<String>,
+    /// (part, channel within the part) of each full name.
+    index: Vec<(usize, usize)>,
+}
+
+impl ExrFile {
+    fn open(path: &Path) -> Result<ExrFile> {
+        let mut file = File::open(path).map_err(|e| fs_error("open", path, &e))?;
+        if file.metadata().map(|m| m.is_dir()).unwrap_or(false) {
+            return Err(Error::InvalidArgument(format!("{} is a directory, not an EXR file", path.display())));
+        }
+        let file_len = file.metadata().map(|m| m.len()).unwrap_or(0);
+        let mut magic = Vec::with_capacity(8);
+        (&mut file).take(8).read_to_end(&mut magic).map_err(|e| fs_error("read", path, &e))?;
+        check_magic(path, &magic)?;
+        // The headers first, for clear errors before any pixel is decoded. The exr crate swaps the
+        // corners of an inverted (empty) data window, so that case is looked for in the raw header.
+        file.seek(SeekFrom::Start(0)).map_err(|e| fs_error("read", path, &e))?;
+        if let Some((part, [x0, y0, x1, y1])) = empty_data_window(&mut BufReader::new(&mut file)) {
+            return Err(Error::InvalidArgument(format!(
+                "{}: part {part} has a zero size: its data window runs from ({x0}, {y0}) to ({x1}, {y1}), \
+                 so there are no pixels to read",
+                path.display()
+            )));
+        }
+        let image = guarded(path, || {
+            file.seek(SeekFrom::Start(0)).map_err(|e| fs_error("read", path, &e))?;
+            let meta = MetaData::read_from_buffered(BufReader::new(&mut file), false).map_err(|e| exr_error(path, e))?;
+            let mut announced: u128 = 0;
+            for header in &meta.headers {
+                announced += header.layer_size.area() as u128 * header.channels.bytes_per_pixel as u128;
+            }
+            if announced > MAX_EXPANSION * file_len as u128 + EXPANSION_SLACK {
+                return Err(Error::InvalidArgument(format!(
+                    "{} is corrupt: its header announces {} MiB of pixel data in a file of {file_len} bytes \
+                     (more than {MAX_EXPANSION} times its size); re-export it",
+                    path.display(),
+                    announced >> 20
+                )));
+            }
+            for (i, header) in meta.headers.iter().enumerate() {
+                let part = header.own_attributes.layer_name.as_ref().map_or(format!("part {i}"), |n| format!("part `{n}`"));
+                if header.deep {
+                    return Err(Error::InvalidArgument(format!(
+                        "{}: {part} holds deep data, which this reader does not support; write one flat layer per depth \
+                         layer (`layer0.R`, `layer0.Z`, ...) instead",
+                        path.display()
+                    )));
+                }
+                if header.layer_size.x() == 0 || header.layer_size.y() == 0 {
+                    return Err(Error::InvalidArgument(format!(
+                        "{}: {part} has a zero size ({}x{}): there are no pixels to read",
+                        path.display(),
+                        header.layer_size.x(),
+                        header.layer_size.y()
+                    )));
+                }
+            }
+            file.seek(SeekFrom::Start(0)).map_err(|e| fs_error("read", path, &e))?;
+            read()
+                .no_deep_data()
+                .largest_resolution_level()
+                .all_channels()
+                .all_layers()
+                .all_attributes()
+                .non_parallel()
+                .from_unbuffered(&mut file)
+                .map_err(|e| exr_error(path, e))
+        })?;
+        let parts: Vec<_> = image.layer_data.into_iter().collect();
+        let multi_part = parts.len() > 1;
+        let mut names = Vec::new();
+        let mut index = Vec::new();
+        for (p, part) in parts.iter().enumerate() {
+            let part_name = part.attributes.layer_name.as_ref().map(|t| t.to_string()).unwrap_or_else(|| format!("part{p}"));
+            for (c, channel) in part.channel_data.list.iter().enumerate() {
+                let name = channel.name.to_string();
+                let full = if !multi_part || name.starts_with(&format!("{part_name}.")) {
+                    name
+                } else {
+                    format!("{part_name}.{name}")
+                };
+                names.push(full);
+                index.push((p, c));
+            }
+        }
+        if names.is_empty() {
+            return Err(Error::InvalidArgument(format!("{} has no channels", path.display())));
+        }
+        Ok(ExrFile { parts, names, index })
+    }
+
+    /// The size shared by every used channel of `groups`; errors on a zero size, different data
+    /// windows or subsampled channels.
+    fn size_of(&self, path: &Path, groups: &[Group]) -> Result<(u32, u32)> {
+        let mut first: Option<(&str, Vec2<usize>, Vec2<i32>)> = None;
+        for g in groups {
+            for i in g.used() {
+                let (p, c) = self.index[i];
+                let part = &self.parts[p];
+                let channel = &part.channel_data.list[c];
+                if channel.sampling != Vec2(1, 1) {
+                    return Err(Error::InvalidArgument(format!(
+                        "{}: channel `{}` is subsampled ({}x{}); only full-resolution channels are supported: \
+                         re-export without subsampling",
+                        path.display(),
+                        self.names[i],
+                        channel.sampling.x(),
+                        channel.sampling.y()
+                    )));
+                }
+                let (size, position) = (part.size, part.attributes.layer_position);
+                match first {
+                    None => first = Some((&self.names[i], size, position)),
+                    Some((name, s, pos)) if s != size || pos != position => {
+                        return Err(Error::InvalidArgument(format!(
+                            "{}: layer sizes differ: `{}` is {}x{} at ({}, {}) but `{name}` is {}x{} at ({}, {}); \
+                             all layers must share one data window",
+                            path.display(),
+                            self.names[i],
+                            size.x(),
+                            size.y(),
+                            position.x(),
+                            position.y(),
+                            s.x(),
+                            s.y(),
+                            pos.x(),
+                            pos.y()
+                        )));
+                    }
+                    Some(_) => {}
+                }
+            }
+        }
+        let Some((_, size, _)) = first else {
+            return Err(Error::InvalidArgument(format!("{}: no channels to read", path.display())));
+        };
+        if size.x() == 0 || size.y() == 0 {
+            return Err(Error::InvalidArgument(format!(
+                "{} has a zero size ({}x{}): there are no pixels to read",
+                path.display(),
+                size.x(),
+                size.y()
+            )));
+        }
+        let too_large = || {
+            Error::InvalidArgument(format!("{}: size {}x{} is too large", path.display(), size.x(), size.y()))
+        };
+        Ok((u32::try_from(size.x()).map_err(|_| too_large())?, u32::try_from(size.y()).map_err(|_| too_large())?))
+    }
+
+    /// The samples of channel `i` as `f32` (borrowed when stored as `f32`).
+    fn samples(&self, path: &Path, i: usize) -> Result<Cow<'_, [f32]>> {
+        let (p, c) = self.index[i];
+        let part = &self.parts[p];
+        let expected = part.size.area();
+        let samples: Cow<'_, [f32]> = match &part.channel_data.list[c].sample_data {
+            FlatSamples::F32(v) => Cow::Borrowed(v),
+            FlatSamples::F16(v) => Cow::Owned(v.iter().map(|h| h.to_f32()).collect()),
+            FlatSamples::U32(v) => Cow::Owned(v.iter().map(|&u| u as f32).collect()),
+        };
+        if samples.len() != expected {
+            return Err(Error::InvalidArgument(format!(
+                "{}: channel `{}` holds {} samples, expected {}x{} = {expected}; the file is corrupt",
+                path.display(),
+                self.names[i],
+                samples.len(),
+                part.size.x(),
+                part.size.y()
+            )));
+        }
+        Ok(samples)
+    }
+
+    fn report(&self, layout: ExrLayout, width: u32, height: u32, groups: &[Group]) -> InputReport {
+        let mut used: Vec<usize> = groups.iter().flat_map(|g| g.used()).collect();
+        used.sort_unstable();
+        InputReport {
+            layout,
+            width,
+            height,
+            layers: groups.iter().map(|g| g.name.clone()).collect(),
+            channels: groups.iter().flat_map(|g| g.used()).map(|i| self.names[i].clone()).collect(),
+            ignored_channels: (0..self.names.len())
+                .filter(|i| used.binary_search(i).is_err())
+                .map(|i| self.names[i].clone())
+                .collect(),
+            counts: SanitizeCounts::default(),
+        }
+    }
+}
+
+/// Decides between multi-layer and RGB+Z and picks the layers (see [`read_layered_exr`]).
+fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)> {
+    let groups = group_channels(&file.names);
+    let named: Vec<&Group> = groups.iter().filter(|g| !g.name.is_empty()).collect();
+    if named.iter().any(|g| g.is_complete()) {
+        if let Some(bad) = named.iter().find(|g| g.has_color() && !g.is_complete()) {
+            let problem = if !bad.has_rgb() {
+                format!("has only some colour channels (missing {})", bad.missing_colors().join(", "))
+            } else {
+                "has no depth: it needs a Z channel".to_string()
+            };
+            return Err(Error::InvalidArgument(format!(
+                "{}: layer `{}` {problem}; every layer of a multi-layer EXR needs `<layer>.R`, `.G`, `.B` and `.Z` \
+                 (`.A` optional). Complete the layer or remove its channels. Channels: {}",
+                path.display(),
+                bad.name,
+                list(&file.names)
+            )));
+        }
+        let layers = named.into_iter().filter(|g| g.is_complete()).cloned().collect();
+        return Ok((ExrLayout::MultiLayer, layers));
+    }
+    let Some(root) = groups.iter().find(|g| g.name.is_empty()).filter(|g| g.has_rgb()) else {
+        if let Some(g) = named.iter().find(|g| g.has_rgb()) {
+            return Err(Error::InvalidArgument(format!(
+                "{}: layer `{}` has colour but no depth: it needs a Z channel (`{}.Z`, planar depth). Channels: {}",
+                path.display(),
+                g.name,
+                g.name,
+                list(&file.names)
+            )));
+        }
+        let root = groups.iter().find(|g| g.name.is_empty());
+        let missing = root.map_or(vec!["R", "G", "B"], |r| r.missing_colors());
+        let depth = if root.is_some_and(|r| r.depth.is_some()) { "" } else { " and a Z channel (depth)" };
+        return Err(Error::InvalidArgument(format!(
+            "{} needs the colour channels R, G and B (missing {}){depth}; it has the channels {}",
+            path.display(),
+            missing.join(", "),
+            list(&file.names)
+        )));
+    };
+    let mut root = root.clone();
+    if root.depth.is_none() {
+        // Nuke names depth `depth.Z`: a `depth` layer holding only a Z channel.
+        root.depth = groups
+            .iter()
+            .find(|g| g.name.eq_ignore_ascii_case("depth") && !g.has_color())
+            .and_then(|g| g.depth);
+    }
+    if root.depth.is_none() {
+        return Err(Error::InvalidArgument(format!(
+            "{} has colour but no depth: it needs a Z channel (planar depth; `depth` is accepted too) to be read as a \
+             layered image. Channels: {}. Write the renderer's depth pass into the same file as `Z`",
+            path.display(),
+            list(&file.names)
+        )));
+    }
+    Ok((ExrLayout::RgbZ, vec![root]))
+}
+
+/// A header announcing more pixel data than this many times the file size plus
+/// [`EXPANSION_SLACK`] is corrupt: no EXR compression reaches that ratio on real images, and the
+/// check keeps a few flipped header bytes from asking for gigabytes.
+const MAX_EXPANSION: u128 = 4096;
+const EXPANSION_SLACK: u128 = 256 << 20;
+
+/// Runs the exr crate's decoder, turning a panic inside it into an error: its overflow checks and
+/// index assertions can trip on corrupt data. Decoding runs on this thread (`non_parallel`) so that
+/// such a panic unwinds to here; in the crate's thread pool it would abort the process.
+fn guarded<T>(path: &Path, decode: impl FnOnce() -> Result<T>) -> Result<T> {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(decode)) {
+        Ok(result) => result,
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "no message".to_string());
+            Err(Error::InvalidArgument(format!(
+                "{} is corrupt: the EXR decoder failed on its data ({what}); re-export it",
+                path.display()
+            )))
+        }
+    }
+}
+
+/// Walks the raw header attributes of every part (OpenEXR file layout: magic, version, then per part
+/// `name\0type\0size value` until an empty name; multi-part files end with an empty header) and
+/// returns the first part whose `dataWindow` has a maximum below its minimum, with its
+/// `[xMin, yMin, xMax, yMax]`. Any irregularity ends the walk with `None`, leaving the diagnosis to
+/// the exr crate.
+fn empty_data_window(r: &mut impl Read) -> Option<(usize, [i32; 4])> {
+    fn read_i32(r: &mut impl Read) -> Option<i32> {
+        let mut b = [0; 4];
+        r.read_exact(&mut b).ok()?;
+        Some(i32::from_le_bytes(b))
+    }
+    fn read_name(r: &mut impl Read) -> Option<Vec<u8>> {
+        let mut name = Vec::new();
+        for byte in r.bytes() {
+            match byte.ok()? {
+                0 => return Some(name),
+                b if name.len() < 256 => name.push(b),
+                _ => return None,
+            }
+        }
+        None
+    }
+    let _magic = read_i32(r)?;
+    let flags = read_i32(r)? as u32;
+    let multi_part = flags & 0x1000 != 0;
+    for part in 0.. {
+        let mut attributes = 0;
+        loop {
+            let name = read_name(r)?;
+            if name.is_empty() {
+                break;
+            }
+            attributes += 1;
+            let kind = read_name(r)?;
+            let size = u64::try_from(read_i32(r)?).ok()?;
+            if name == b"dataWindow" && kind == b"box2i" && size == 16 {
+                let b = [read_i32(r)?, read_i32(r)?, read_i32(r)?, read_i32(r)?];
+                if b[2] < b[0] || b[3] < b[1] {
+                    return Some((part, b));
+                }
+            } else if std::io::copy(&mut r.take(size), &mut std::io::sink()).ok()? != size {
+                return None;
+            }
+        }
+        if !multi_part || attributes == 0 {
+            return None;
+        }
+    }
+    None
+}
+
+/// The OpenEXR magic number, with a hint for common non-EXR files.
+fn check_magic(path: &Path, head: &[u8]) -> Result<()> {
+    const EXR: [u8; 4] = [0x76, 0x2f, 0x31, 0x01];
+    if head.len() >= 4 && head[..4] == EXR {
+        return Ok(());
+    }
+    let what = if head.is_empty() {
+        "it is empty".to_string()
+    } else if head.starts_with(b"\x89PNG") {
+        "it is a PNG image".to_string()
+    } else if head.starts_with(&[0xff, 0xd8, 0xff]) {
+        "it is a JPEG image".to_string()
+    } else if head.starts_with(b"II*\0") || head.starts_with(b"MM\0*") {
+        "it is a TIFF image".to_string()
+    } else if head.len() < 4 {
+        format!("it holds only {} bytes", head.len())
+    } else {
+        format!("it starts with the bytes {:02x?}, not the EXR signature 76 2f 31 01", &head[..4])
+    };
+    Err(Error::InvalidArgument(format!("{} is not an OpenEXR file: {what}", path.display())))
+}
+
+fn exr_error(path: &Path, e: ::exr::error::Error) -> Error {
+    use ::exr::error::Error as E;
+    let path = path.display();
+    Error::InvalidArgument(match e {
+        E::Invalid(msg) if msg.contains("missing bytes") => format!(
+            "{path} is truncated: the file ends before all the data its header announces ({msg}); \
+             re-export or copy it again"
+        ),
+        E::Invalid(msg) => format!("{path} is not a valid OpenEXR file ({msg}): it is corrupt or truncated; re-export it"),
+        E::NotSupported(msg) => format!(
+            "{path} is corrupt or uses an OpenEXR feature this reader does not support ({msg}); \
+             flat scan-line or tiled images of half, float or uint channels are supported"
+        ),
+        E::Io(io) => format!("cannot read {path}: {io}"),
+        E::Aborted => format!("reading {path} was aborted"),
+    })
+}
+
+/// At most 24 names, comma-separated.
+fn list(names: &[String]) -> String {
+    const SHOWN: usize = 24;
+    let mut s = names.iter().take(SHOWN).map(String::as_str).collect::<Vec<_>>().join(", ");
+    if names.len() > SHOWN {
+        s += &format!(" and {} more", names.len() - SHOWN);
+    }
+    if s.is_empty() { "(none)".to_string() } else { s }
+}

@@ -1,0 +1,221 @@
+//! Built-in analytic scenes, each with a default camera (640x360, 40° vertical field of view) and a
+//! lens that gives visible blur at that size. Scene units are metres. Every scene has tens of
+//! primitives, so exact ray casting stays cheap.
+//!
+//! | name | what it tests |
+//! |---|---|
+//! | `simple` | seed 000 Fig. 11: far white plane, red sphere in focus, small blue quad near the camera |
+//! | `railing` | out-of-focus railing bars near the camera over a detailed far field (seed 000 Fig. 1) |
+//! | `columns` | a colonnade seen at an angle: many overlapping depth layers |
+//! | `highlights` | small, very bright emissive dots at many depths (bokeh), some above 65504 |
+
+use dof_shaders::lens::ThinLens;
+use glam::Vec3;
+
+use super::analytic::{Albedo, Lighting, Material, Primitive, Scene, Shape};
+use super::camera::Camera;
+use super::lens::LensSettings;
+use crate::error::{Error, Result};
+
+/// A named scene with its default view.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BuiltinScene {
+    pub name: &'static str,
+    pub description: &'static str,
+    pub scene: Scene,
+    pub camera: Camera,
+    pub lens: LensSettings,
+}
+
+impl BuiltinScene {
+    /// The same scene rendered at another size (the field of view stays; the CoC in pixels scales
+    /// with the height).
+    pub fn with_size(mut self, width: u32, height: u32) -> Self {
+        self.camera.width = width;
+        self.camera.height = height;
+        self
+    }
+
+    /// The default lens for the default (or resized) camera.
+    pub fn thin_lens(&self) -> Result<ThinLens> {
+        self.lens.thin_lens(&self.camera)
+    }
+}
+
+const NAMES: [&str; 4] = ["simple", "railing", "columns", "highlights"];
+
+/// Names of the built-in scenes.
+pub fn builtin_names() -> &'static [&'static str] {
+    &NAMES
+}
+
+/// The built-in scene called `name`; an unknown name is an error listing the names.
+pub fn builtin(name: &str) -> Result<BuiltinScene> {
+    match name {
+        "simple" => simple(),
+        "railing" => railing(),
+        "columns" => columns(),
+        "highlights" => highlights(),
+        _ => Err(Error::InvalidArgument(format!(
+            "unknown built-in scene `{name}`; the built-in scenes are: {}",
+            NAMES.join(", ")
+        ))),
+    }
+}
+
+const WIDTH: u32 = 640;
+const HEIGHT: u32 = 360;
+const FOV_DEGREES: f32 = 40.0;
+
+fn camera(eye: Vec3, target: Vec3) -> Camera {
+    Camera::look_at(eye, target, FOV_DEGREES.to_radians(), WIDTH, HEIGHT)
+}
+
+fn diffuse(shape: Shape, rgb: [f32; 3]) -> Primitive {
+    Primitive { shape, material: Material::Diffuse(Albedo::Solid(rgb)) }
+}
+
+fn checker(shape: Shape, a: [f32; 3], b: [f32; 3], cell: f32) -> Primitive {
+    Primitive { shape, material: Material::Diffuse(Albedo::Checker { a, b, cell }) }
+}
+
+fn cuboid(min: [f32; 3], max: [f32; 3]) -> Shape {
+    Shape::Cuboid { min: Vec3::from(min), max: Vec3::from(max) }
+}
+
+fn sphere(center: [f32; 3], radius: f32) -> Shape {
+    Shape::Sphere { center: Vec3::from(center), radius }
+}
+
+fn plane(point: [f32; 3], normal: [f32; 3]) -> Shape {
+    Shape::Plane { point: Vec3::from(point), normal: Vec3::from(normal) }
+}
+
+/// Seed 000 Fig. 11: a white plane far away, a red sphere in focus and a small blue quad close to
+/// the camera, overlapping the sphere's silhouette.
+fn simple() -> Result<BuiltinScene> {
+    let prims = vec![
+        diffuse(plane([0.0, 0.0, -12.0], [0.0, 0.0, 1.0]), [0.9, 0.9, 0.9]),
+        diffuse(sphere([0.35, 0.0, -5.0], 0.8), [0.85, 0.1, 0.08]),
+        diffuse(
+            Shape::Quad { corner: Vec3::new(-0.32, -0.2, -1.3), edge_u: Vec3::new(0.26, 0.0, 0.0), edge_v: Vec3::new(0.0, 0.26, 0.0) },
+            [0.1, 0.2, 0.9],
+        ),
+    ];
+    Ok(BuiltinScene {
+        name: "simple",
+        description: "seed 000 Fig. 11: far white plane, red sphere in focus, small blue quad in the near field",
+        scene: Scene::new(prims, Lighting::default())?,
+        camera: camera(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0)),
+        // Focused on the sphere's front; near quad CoC ~21 px, far plane ~6 px at 640x360.
+        lens: LensSettings::with_aperture_radius(4.2, 0.04),
+    })
+}
+
+/// Railing bars and a top rail 1.2 m in front of the camera, out of focus, over a courtyard: a
+/// checker floor and wall, boxes and spheres between 7 and 16 m, in focus at 10 m.
+fn railing() -> Result<BuiltinScene> {
+    let mut prims = vec![
+        checker(plane([0.0, 0.0, 0.0], [0.0, 1.0, 0.0]), [0.75, 0.72, 0.65], [0.25, 0.25, 0.28], 1.0),
+        checker(plane([0.0, 0.0, -22.0], [0.0, 0.0, 1.0]), [0.8, 0.5, 0.3], [0.9, 0.85, 0.75], 0.5),
+        diffuse(cuboid([-3.5, 0.0, -12.0], [-2.5, 2.4, -11.0]), [0.3, 0.55, 0.8]),
+        diffuse(cuboid([1.6, 0.0, -9.5], [2.4, 1.2, -8.7]), [0.85, 0.8, 0.2]),
+        diffuse(cuboid([-0.8, 0.0, -16.0], [0.6, 3.0, -15.0]), [0.6, 0.6, 0.65]),
+        diffuse(sphere([-1.2, 0.5, -7.5], 0.5), [0.2, 0.75, 0.3]),
+        diffuse(sphere([0.9, 0.35, -10.0], 0.35), [0.9, 0.3, 0.6]),
+        diffuse(sphere([3.5, 1.0, -14.0], 1.0), [0.95, 0.95, 0.95]),
+        // Top rail.
+        diffuse(cuboid([-2.0, 1.18, -1.32], [2.0, 1.24, -1.2]), [0.35, 0.22, 0.12]),
+    ];
+    // Vertical bars every 0.2 m.
+    for i in -5..=5 {
+        let x = i as f32 * 0.2;
+        prims.push(diffuse(cuboid([x - 0.02, 0.0, -1.28], [x + 0.02, 1.18, -1.24]), [0.4, 0.26, 0.14]));
+    }
+    Ok(BuiltinScene {
+        name: "railing",
+        description: "near out-of-focus railing bars over a detailed far field",
+        scene: Scene::new(prims, Lighting::default())?,
+        camera: camera(Vec3::new(0.0, 1.15, 0.0), Vec3::new(0.0, 1.0, -10.0)),
+        // Bars ~21 px CoC (wider than the bars), the far field within ~2 px.
+        lens: LensSettings::with_aperture_radius(10.0, 0.03),
+    })
+}
+
+/// Two rows of square columns on a checker floor, seen at an angle so that columns at many depths
+/// overlap, in focus at 8 m.
+fn columns() -> Result<BuiltinScene> {
+    let mut prims = vec![
+        checker(plane([0.0, 0.0, 0.0], [0.0, 1.0, 0.0]), [0.8, 0.78, 0.7], [0.3, 0.3, 0.32], 1.0),
+        diffuse(plane([0.0, 0.0, -34.0], [0.0, 0.0, 1.0]), [0.55, 0.6, 0.7]),
+        diffuse(cuboid([-2.2, 4.0, -32.0], [2.2, 4.4, -1.0]), [0.7, 0.65, 0.55]),
+    ];
+    for i in 0..12 {
+        let z = -2.0 - 2.5 * i as f32;
+        let colour = if i % 2 == 0 { [0.85, 0.82, 0.75] } else { [0.65, 0.45, 0.35] };
+        prims.push(diffuse(cuboid([-1.9, 0.0, z - 0.2], [-1.5, 4.0, z + 0.2]), colour));
+        prims.push(diffuse(cuboid([1.5, 0.0, z - 0.2], [1.9, 4.0, z + 0.2]), colour));
+    }
+    Ok(BuiltinScene {
+        name: "columns",
+        description: "a colonnade seen at an angle: a row of columns with high depth complexity",
+        scene: Scene::new(prims, Lighting { direction: Vec3::new(0.6, 0.7, 0.3), ..Lighting::default() })?,
+        camera: camera(Vec3::new(0.9, 1.6, 1.0), Vec3::new(-1.6, 1.5, -14.0)),
+        lens: LensSettings::with_aperture_radius(8.0, 0.05),
+    })
+}
+
+/// SplitMix64: a small fixed generator so the scene does not depend on a crate's algorithm.
+struct SplitMix(u64);
+
+impl SplitMix {
+    fn next_f32(&mut self) -> f32 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^= z >> 31;
+        (z >> 40) as f32 / (1u64 << 24) as f32
+    }
+}
+
+/// A dark room with 48 small emissive spheres between 1.5 and 25 m (each about 1-3 px across in
+/// the pinhole image), emission from 200 to 200000 (some above the half-float range, 65504); a dim
+/// floor and two diffuse boxes; in focus at 4 m.
+fn highlights() -> Result<BuiltinScene> {
+    let eye = Vec3::new(0.0, 1.2, 0.0);
+    let cam = camera(eye, Vec3::new(0.0, 1.2, -10.0));
+    let frame = cam.frame()?;
+    let mut prims = vec![
+        checker(plane([0.0, 0.0, 0.0], [0.0, 1.0, 0.0]), [0.06, 0.06, 0.07], [0.12, 0.11, 0.1], 0.5),
+        diffuse(plane([0.0, 0.0, -30.0], [0.0, 0.0, 1.0]), [0.04, 0.04, 0.05]),
+        diffuse(cuboid([-1.6, 0.0, -4.5], [-0.8, 0.9, -3.7]), [0.5, 0.45, 0.4]),
+        diffuse(cuboid([0.9, 0.0, -9.0], [1.9, 1.5, -8.0]), [0.35, 0.4, 0.5]),
+    ];
+    let palette = [[1.0, 0.85, 0.6], [1.0, 0.55, 0.3], [0.6, 0.8, 1.0], [1.0, 1.0, 1.0], [1.0, 0.4, 0.5], [0.5, 1.0, 0.6]];
+    let mut rng = SplitMix(0x5eed_0f_b0ce);
+    let mut placed = 0;
+    while placed < 48 {
+        // Depth log-uniform in [1.5, 25], position uniform over the view.
+        let z = 1.5 * (25.0f32 / 1.5).powf(rng.next_f32());
+        let sx = (2.0 * rng.next_f32() - 1.0) * 0.95;
+        let sy = (2.0 * rng.next_f32() - 1.0) * 0.95;
+        let p = eye + z * (frame.forward + sx * frame.aspect * frame.tan_half_fov * frame.right + sy * frame.tan_half_fov * frame.up);
+        let px_size = frame.pixel_footprint_radius(z) * 2.0;
+        let radius = px_size * (0.6 + 0.9 * rng.next_f32());
+        if p.y - radius <= 0.05 {
+            continue;
+        }
+        let colour = palette[placed % palette.len()];
+        let power = 200.0 * 1000.0f32.powf(rng.next_f32());
+        prims.push(Primitive { shape: sphere(p.to_array(), radius), material: Material::Emissive(colour.map(|c| c * power)) });
+        placed += 1;
+    }
+    Ok(BuiltinScene {
+        name: "highlights",
+        description: "a field of small, very bright emissive dots at various depths, for bokeh",
+        scene: Scene::new(prims, Lighting { color: [0.15, 0.15, 0.18], ambient: [0.05, 0.05, 0.05], ..Lighting::default() })?,
+        camera: cam,
+        lens: LensSettings::with_aperture_radius(4.0, 0.04),
+    })
+}

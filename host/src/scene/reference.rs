@@ -1,0 +1,311 @@
+//! The exact depth-of-field reference of an analytic scene: thin-lens distributed ray tracing.
+//!
+//! Per pixel, `spp` samples jointly stratified over the lens disc (concentric mapping) and the
+//! pixel's area (a box filter, as pbrt and Mitsuba integrate), see [`super::sampling::stratified`].
+//! Each ray leaves its lens point towards the point where the pinhole ray through its pixel
+//! position meets the focus plane ([`CameraFrame::lens_ray`]); its first hit is shaded with the
+//! scene's lighting model; the samples are averaged in `f64` and stored as `f32`.
+//!
+//! **Noise estimate.** The samples are drawn as two independent halves `A` and `B` (each
+//! stratified on its own); the image is their pooled mean. With `σ²` the per-sample variance, `MSE(A,
+//! B) = σ²(1/n_A + 1/n_B)` while the pooled mean's error against the converged image is
+//! `σ²/(n_A + n_B)`, so `PSNR(image, converged) ≈ PSNR(A, B) + 10·log10((1/n_A + 1/n_B)(n_A +
+//! n_B))`, i.e. `+6.02 dB` for equal halves (each half alone would be `+3.01 dB`). PSNR here is on
+//! the tone map [`tonemap`] (Reinhard `x/(1+x)` per channel, peak 1), so highlights far above 1 do
+//! not dominate it.
+//!
+//! **Auto.** A method with true error `PSNR_m`, measured against a reference with noise `PSNR_r`,
+//! reads `PSNR_m − 10·log10(1 + 10^((PSNR_m − PSNR_r)/10))`. [`reference_auto`] doubles the sample
+//! count until that bias is below `tolerance_db` for every method up to `target_psnr_db`, i.e.
+//! until `PSNR_r >= target + 10·log10(1/(10^(tolerance/10) − 1))` (`target + 9.14 dB` for 0.5 dB),
+//! or the cap is reached (reported).
+
+use dof_shaders::lens::ThinLens;
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+
+use super::analytic::Scene;
+use super::camera::{Camera, CameraFrame};
+use super::sampling::{concentric_disc, pixel_rng, stratified};
+use crate::error::{Error, Result};
+use crate::layers::RgbImage;
+
+/// One reference render.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ReferenceOptions {
+    /// Samples per pixel, `>= 1` (default 64).
+    pub spp: u32,
+    /// Jitter samples inside their strata (default on). Off, `spp = 1` traces the centre ray.
+    pub jitter: bool,
+    pub seed: u64,
+    /// Show an `indicatif` progress bar on stderr.
+    pub progress: bool,
+}
+
+impl Default for ReferenceOptions {
+    fn default() -> Self {
+        ReferenceOptions { spp: 64, jitter: true, seed: 0, progress: false }
+    }
+}
+
+/// Settings of [`reference_auto`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AutoOptions {
+    /// Best PSNR (dB, on [`tonemap`]) a compared method may reach and still be measured within
+    /// `tolerance_db` (default 40).
+    pub target_psnr_db: f64,
+    /// Largest bias the reference's noise may put on such a measurement (default 0.5 dB).
+    pub tolerance_db: f64,
+    /// First sample count, `>= 2` (default 16); doubled each round.
+    pub start_spp: u32,
+    /// Cap on the sample count (default 4096).
+    pub max_spp: u32,
+    pub seed: u64,
+    pub progress: bool,
+}
+
+impl Default for AutoOptions {
+    fn default() -> Self {
+        AutoOptions { target_psnr_db: 40.0, tolerance_db: 0.5, start_spp: 16, max_spp: 4096, seed: 0, progress: false }
+    }
+}
+
+impl AutoOptions {
+    /// The reference noise PSNR these settings require.
+    pub fn required_noise_psnr_db(&self) -> f64 {
+        self.target_psnr_db + 10.0 * (1.0 / (10f64.powf(self.tolerance_db / 10.0) - 1.0)).log10()
+    }
+}
+
+/// A reference image and how good it is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Reference {
+    pub image: RgbImage,
+    /// Samples per pixel used.
+    pub spp: u32,
+    /// Estimated PSNR (dB, on [`tonemap`]) of `image` against the converged image; `None` for
+    /// `spp = 1`; `+inf` when the two halves agree exactly (e.g. a constant image).
+    pub noise_psnr_db: Option<f64>,
+    /// What [`reference_auto`] aimed for; `None` for a fixed sample count.
+    pub required_psnr_db: Option<f64>,
+    /// [`reference_auto`] stopped at `max_spp` before reaching `required_psnr_db`.
+    pub capped: bool,
+}
+
+/// The display transform PSNRs here use: Reinhard `x/(1+x)` per channel (negative and NaN → 0).
+pub fn tonemap(x: f32) -> f32 {
+    if x > 0.0 {
+        if x.is_infinite() { 1.0 } else { x / (1.0 + x) }
+    } else {
+        0.0
+    }
+}
+
+/// PSNR (dB) between two images on [`tonemap`], peak 1; `+inf` for identical images. Errors on
+/// different sizes.
+pub fn psnr(a: &RgbImage, b: &RgbImage) -> Result<f64> {
+    if a.width != b.width || a.height != b.height || a.data.len() != b.data.len() {
+        return Err(Error::InvalidArgument(format!(
+            "PSNR needs images of one size, got {}x{} and {}x{}",
+            a.width, a.height, b.width, b.height
+        )));
+    }
+    Ok(psnr_of_mse(tonemapped_mse(a.data.iter().copied(), b.data.iter().copied(), a.data.len())))
+}
+
+fn psnr_of_mse(mse: f64) -> f64 {
+    if mse > 0.0 { -10.0 * mse.log10() } else { f64::INFINITY }
+}
+
+fn tonemapped_mse(a: impl Iterator<Item = [f32; 3]>, b: impl Iterator<Item = [f32; 3]>, n: usize) -> f64 {
+    let mut sum = 0.0f64;
+    for (p, q) in a.zip(b) {
+        for k in 0..3 {
+            let d = tonemap(p[k]) as f64 - tonemap(q[k]) as f64;
+            sum += d * d;
+        }
+    }
+    sum / (3 * n.max(1)) as f64
+}
+
+/// Thin-lens reference with a fixed sample count. Errors on an invalid camera or lens, or
+/// `spp == 0`.
+pub fn reference(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &ReferenceOptions) -> Result<Reference> {
+    let frame = camera.frame()?;
+    check_lens(lens)?;
+    render_fixed(scene, &frame, lens.aperture_radius, lens.focus_distance, options)
+}
+
+/// The pinhole image (aperture 0) with the same sampling: with `spp = 1` and no jitter, the
+/// radiance along each pixel's centre ray.
+pub fn pinhole(scene: &Scene, camera: &Camera, options: &ReferenceOptions) -> Result<Reference> {
+    let frame = camera.frame()?;
+    render_fixed(scene, &frame, 0.0, 1.0, options)
+}
+
+/// Thin-lens reference whose sample count is raised (doubled from `start_spp`) until its noise
+/// estimate reaches [`AutoOptions::required_noise_psnr_db`] or `max_spp` (then `capped`). Errors
+/// on an invalid camera, lens or options.
+pub fn reference_auto(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &AutoOptions) -> Result<Reference> {
+    let frame = camera.frame()?;
+    check_lens(lens)?;
+    let o = options;
+    if !(o.target_psnr_db.is_finite() && o.tolerance_db > 0.0 && o.tolerance_db.is_finite()) {
+        return Err(Error::InvalidArgument(format!(
+            "auto reference: the target PSNR must be finite and the tolerance positive, got {} dB and {} dB",
+            o.target_psnr_db, o.tolerance_db
+        )));
+    }
+    if o.start_spp < 2 || o.max_spp < o.start_spp {
+        return Err(Error::InvalidArgument(format!(
+            "auto reference: need 2 <= start_spp <= max_spp, got {} and {}",
+            o.start_spp, o.max_spp
+        )));
+    }
+    let required = o.required_noise_psnr_db();
+    let pixels = frame.width as usize * frame.height as usize;
+    let mut a = Accum::new(pixels);
+    let mut b = Accum::new(pixels);
+    let mut batch = 0u64;
+    let mut m = o.start_spp / 2;
+    let mut estimate;
+    loop {
+        let bar = progress_bar(o.progress, &frame, 2, &format!("reference: +{} spp", 2 * m));
+        for acc in [&mut a, &mut b] {
+            render_batch(scene, &frame, lens.aperture_radius, lens.focus_distance, m, true, o.seed, batch, bar.as_ref(), acc);
+            batch += 1;
+        }
+        if let Some(bar) = bar {
+            bar.finish_and_clear();
+        }
+        estimate = noise_estimate(&a, &b);
+        let total = a.n + b.n;
+        if estimate >= required || total >= o.max_spp {
+            break;
+        }
+        m = a.n.min((o.max_spp - total) / 2);
+        if m == 0 {
+            break;
+        }
+    }
+    let capped = !(estimate >= required);
+    Ok(Reference { image: pooled(&frame, &a, &b), spp: a.n + b.n, noise_psnr_db: Some(estimate), required_psnr_db: Some(required), capped })
+}
+
+fn check_lens(lens: &ThinLens) -> Result<()> {
+    if lens.is_valid() {
+        Ok(())
+    } else {
+        Err(Error::InvalidArgument(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")))
+    }
+}
+
+fn render_fixed(scene: &Scene, frame: &CameraFrame, radius: f32, focus: f32, options: &ReferenceOptions) -> Result<Reference> {
+    if options.spp == 0 {
+        return Err(Error::InvalidArgument("a reference needs at least one sample per pixel".into()));
+    }
+    let pixels = frame.width as usize * frame.height as usize;
+    let (na, nb) = (options.spp - options.spp / 2, options.spp / 2);
+    let mut a = Accum::new(pixels);
+    let mut b = Accum::new(pixels);
+    let halves = if nb > 0 { 2 } else { 1 };
+    let bar = progress_bar(options.progress, frame, halves, &format!("reference: {} spp", options.spp));
+    render_batch(scene, frame, radius, focus, na, options.jitter, options.seed, 0, bar.as_ref(), &mut a);
+    if nb > 0 {
+        render_batch(scene, frame, radius, focus, nb, options.jitter, options.seed, 1, bar.as_ref(), &mut b);
+    }
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
+    let noise_psnr_db = (nb > 0).then(|| noise_estimate(&a, &b));
+    Ok(Reference { image: pooled(frame, &a, &b), spp: options.spp, noise_psnr_db, required_psnr_db: None, capped: false })
+}
+
+/// Per-pixel radiance sums of one independent half.
+struct Accum {
+    sum: Vec<[f64; 3]>,
+    n: u32,
+}
+
+impl Accum {
+    fn new(pixels: usize) -> Self {
+        Accum { sum: vec![[0.0; 3]; pixels], n: 0 }
+    }
+
+    fn mean(&self) -> impl Iterator<Item = [f32; 3]> + '_ {
+        let n = self.n.max(1) as f64;
+        self.sum.iter().map(move |s| s.map(|v| (v / n) as f32))
+    }
+}
+
+fn pooled(frame: &CameraFrame, a: &Accum, b: &Accum) -> RgbImage {
+    let n = (a.n + b.n).max(1) as f64;
+    let mut image = RgbImage::new(frame.width, frame.height);
+    for ((out, sa), sb) in image.data.iter_mut().zip(&a.sum).zip(&b.sum) {
+        *out = [0, 1, 2].map(|k| ((sa[k] + sb[k]) / n) as f32);
+    }
+    image
+}
+
+/// Estimated PSNR of the pooled mean of `a` and `b` against the converged image (module docs).
+fn noise_estimate(a: &Accum, b: &Accum) -> f64 {
+    let (na, nb) = (a.n as f64, b.n as f64);
+    let mse_ab = tonemapped_mse(a.mean(), b.mean(), a.sum.len());
+    let factor = (1.0 / na + 1.0 / nb) * (na + nb);
+    psnr_of_mse(mse_ab / factor)
+}
+
+fn progress_bar(show: bool, frame: &CameraFrame, passes: u64, message: &str) -> Option<ProgressBar> {
+    if !show {
+        return None;
+    }
+    let bar = ProgressBar::new(frame.height as u64 * passes);
+    if let Ok(style) = ProgressStyle::with_template("{msg} [{elapsed_precise}] {wide_bar} {pos}/{len} rows (eta {eta})") {
+        bar.set_style(style);
+    }
+    bar.set_message(message.to_string());
+    Some(bar)
+}
+
+/// Adds `n` stratified samples per pixel to `acc`, rows in parallel.
+#[allow(clippy::too_many_arguments)]
+fn render_batch(
+    scene: &Scene,
+    frame: &CameraFrame,
+    radius: f32,
+    focus: f32,
+    n: u32,
+    jitter: bool,
+    seed: u64,
+    batch: u64,
+    bar: Option<&ProgressBar>,
+    acc: &mut Accum,
+) {
+    let width = frame.width as usize;
+    acc.sum.par_chunks_mut(width).enumerate().for_each_init(
+        || (Vec::new(), Vec::new()),
+        |(samples, perm), (y, row)| {
+            for (x, out) in row.iter_mut().enumerate() {
+                let pixel = (y * width + x) as u64;
+                let mut rng = pixel_rng(seed, batch, pixel);
+                stratified(n, jitter, &mut rng, samples, perm);
+                let mut sum = [0.0f64; 3];
+                for s in samples.iter() {
+                    let (dx, dy) = concentric_disc(s.lens.0, s.lens.1);
+                    let ray = frame.lens_ray(x as f32 + s.pixel.0, y as f32 + s.pixel.1, radius * dx, radius * dy, focus);
+                    let c = scene.trace(&ray);
+                    for k in 0..3 {
+                        sum[k] += c[k] as f64;
+                    }
+                }
+                for k in 0..3 {
+                    out[k] += sum[k];
+                }
+            }
+            if let Some(bar) = bar {
+                bar.inc(1);
+            }
+        },
+    );
+    acc.n += n;
+}

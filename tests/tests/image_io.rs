@@ -1,0 +1,749 @@
+//! EXR and PNG input/output: round trips, multi-layer input, bad files, the NaN/Inf policy, the tone
+//! map.
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU32, Ordering};
+
+use dof::Error;
+use dof::io::codecs::exr::prelude as exr;
+use dof::io::codecs::png;
+use dof::io::tonemap::{aces_fitted, srgb_eotf, srgb_oetf, to_u8, tonemap, tonemap_to_srgb8};
+use dof::io::{
+    COLOR_INF_REPLACEMENT, ExrCompression, ExrLayout, ExrPrecision, ExrWriteOptions, SanitizeCounts, read_layered_exr,
+    read_rgb_exr, write_exr, write_exr_with, write_layered_exr, write_png_preview,
+};
+use dof::layers::{Fragment, LayeredImage, RgbImage};
+use proptest::prelude::*;
+use rand::{Rng, SeedableRng};
+use rand_pcg::Pcg64;
+
+// ---------------------------------------------------------------------------------------------
+// Helpers
+
+/// A unique path under the system temp directory, removed when dropped.
+struct TempFile(PathBuf);
+
+impl TempFile {
+    fn new(name: &str) -> TempFile {
+        static NEXT: AtomicU32 = AtomicU32::new(0);
+        let n = NEXT.fetch_add(1, Ordering::Relaxed);
+        TempFile(std::env::temp_dir().join(format!("dof-image-io-{}-{n}-{name}", std::process::id())))
+    }
+    fn path(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+fn random_image(rng: &mut Pcg64, width: u32, height: u32) -> RgbImage {
+    let mut image = RgbImage::new(width, height);
+    for c in &mut image.data {
+        *c = [0; 3].map(|_| match rng.random_range(0..4) {
+            0 => rng.random_range(-1.0..1.0f32),
+            1 => rng.random_range(0.0..1e-30f32),
+            2 => rng.random_range(0.0..1e4f32),
+            _ => f32::from_bits(rng.random_range(0..0x7f00_0000u32)), // any positive finite
+        });
+    }
+    image
+}
+
+fn err_message<T: std::fmt::Debug>(r: dof::Result<T>) -> String {
+    let e = r.expect_err("expected an error");
+    assert!(matches!(e, Error::InvalidArgument(_)), "expected InvalidArgument, got {e:?}");
+    eprintln!("expected error: {e}");
+    e.to_string()
+}
+
+fn assert_mentions(message: &str, words: &[&str]) {
+    for w in words {
+        assert!(message.contains(w), "error message should mention `{w}`: {message}");
+    }
+}
+
+fn channel(name: &str, values: Vec<f32>) -> exr::AnyChannel<exr::FlatSamples> {
+    exr::AnyChannel::new(name, exr::FlatSamples::F32(values))
+}
+
+/// Writes a single-part EXR with the given `f32` channels using the exr crate directly.
+fn write_channels(path: &Path, width: usize, height: usize, channels: Vec<exr::AnyChannel<exr::FlatSamples>>) {
+    use exr::WritableImage;
+    let image = exr::Image::from_channels((width, height), exr::AnyChannels::sort(channels.into_iter().collect()));
+    image.write().to_file(path).unwrap();
+}
+
+/// One input layer slot of the multi-layer tests: premultiplied colour, alpha, depth.
+#[derive(Clone, Copy)]
+struct Slot {
+    rgb: [f32; 3],
+    a: f32,
+    z: f32,
+}
+
+// ---------------------------------------------------------------------------------------------
+// Round trips
+
+#[test]
+fn rgbz_round_trip_is_bit_exact_in_f32() {
+    let mut rng = Pcg64::seed_from_u64(1);
+    let (w, h) = (7, 5);
+    let image = random_image(&mut rng, w, h);
+    let depth: Vec<f32> = (0..w * h).map(|_| rng.random_range(0.01..1e3f32)).collect();
+    let coc: Vec<f32> = (0..w * h).map(|_| rng.random_range(-5.0..5.0f32)).collect();
+    let mask: Vec<f32> = (0..w * h).map(|i| (i % 2) as f32).collect();
+    let file = TempFile::new("rgbz.exr");
+    write_exr(file.path(), &image, &[("Z", &depth), ("coc", &coc), ("mask", &mask)]).unwrap();
+
+    let (layered, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(report.layout, ExrLayout::RgbZ);
+    assert_eq!((report.width, report.height), (w, h));
+    assert_eq!(report.layers, [""]);
+    assert_eq!(report.ignored_channels, ["coc", "mask"]);
+    assert_eq!(report.counts, SanitizeCounts::default());
+    assert_eq!((layered.width, layered.height, layered.max_layers), (w, h, 1));
+    for y in 0..h {
+        for x in 0..w {
+            let p = (y * w + x) as usize;
+            let frags = layered.pixel(x, y);
+            assert_eq!(frags.len(), 1, "pixel ({x}, {y})");
+            assert_eq!(frags[0].color.map(f32::to_bits), image.data[p].map(f32::to_bits), "colour at ({x}, {y})");
+            assert_eq!(frags[0].depth.to_bits(), depth[p].to_bits(), "depth at ({x}, {y})");
+            assert_eq!(frags[0].alpha, 1.0);
+        }
+    }
+
+    let (rgb, report) = read_rgb_exr(file.path()).unwrap();
+    assert_eq!(report.layout, ExrLayout::Rgb);
+    assert_eq!(report.ignored_channels, ["Z", "coc", "mask"]);
+    assert_eq!((rgb.width, rgb.height), (w, h));
+    let bits = |i: &RgbImage| i.data.iter().map(|c| c.map(f32::to_bits)).collect::<Vec<_>>();
+    assert_eq!(bits(&rgb), bits(&image));
+}
+
+#[test]
+fn uncompressed_and_zip_read_back_the_same() {
+    let mut rng = Pcg64::seed_from_u64(5);
+    let image = random_image(&mut rng, 5, 6);
+    let depth: Vec<f32> = (0..30).map(|i| 0.5 + i as f32).collect();
+    let zip = TempFile::new("zip.exr");
+    let raw = TempFile::new("raw.exr");
+    write_exr(zip.path(), &image, &[("Z", &depth)]).unwrap();
+    let options = ExrWriteOptions { compression: ExrCompression::None, ..Default::default() };
+    write_exr_with(raw.path(), &image, &[("Z", &depth)], &options).unwrap();
+    let (a, _) = read_layered_exr(zip.path()).unwrap();
+    let (b, _) = read_layered_exr(raw.path()).unwrap();
+    assert_eq!(a, b);
+    assert!(std::fs::metadata(raw.path()).unwrap().len() >= 30 * 4 * 4, "uncompressed holds every sample");
+}
+
+#[test]
+fn extra_planes_are_written_bit_exact() {
+    let (w, h) = (3usize, 2usize);
+    let image = RgbImage::new(w as u32, h as u32);
+    let coc = vec![0.5, -1.25, 3.0e-38, 7.0, f32::NAN, f32::INFINITY];
+    let file = TempFile::new("planes.exr");
+    write_exr(file.path(), &image, &[("coc", &coc)]).unwrap();
+    let read = exr::read_first_flat_layer_from_file(file.path()).unwrap();
+    let plane = read.layer_data.channel_data.list.iter().find(|c| c.name.eq("coc")).unwrap();
+    let exr::FlatSamples::F32(values) = &plane.sample_data else { panic!("coc should be f32") };
+    assert_eq!(values.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), coc.iter().map(|v| v.to_bits()).collect::<Vec<_>>());
+}
+
+#[test]
+fn half_precision_round_trip_is_close() {
+    let mut image = RgbImage::new(4, 2);
+    let values = [0.0, 1.0, 0.5, 3.25, 1000.0, 0.001, 60000.0, -2.0];
+    for (i, c) in image.data.iter_mut().enumerate() {
+        *c = [values[i], values[(i + 1) % 8], values[(i + 3) % 8]];
+    }
+    let depth = vec![1.0f32; 8];
+    let file = TempFile::new("half.exr");
+    let options = ExrWriteOptions { precision: ExrPrecision::Half, ..Default::default() };
+    write_exr_with(file.path(), &image, &[("Z", &depth)], &options).unwrap();
+    let (rgb, _) = read_rgb_exr(file.path()).unwrap();
+    for (got, want) in rgb.data.iter().zip(&image.data) {
+        for k in 0..3 {
+            assert!((got[k] - want[k]).abs() <= want[k].abs() * 1e-3, "{got:?} vs {want:?}");
+        }
+    }
+}
+
+#[test]
+fn layered_image_round_trip() {
+    let mut rng = Pcg64::seed_from_u64(2);
+    let (w, h, layers) = (6, 4, 3);
+    let mut image = LayeredImage::new(w, h, layers).unwrap();
+    for y in 0..h {
+        for x in 0..w {
+            let n = rng.random_range(0..=layers);
+            let mut depth = 0.0;
+            for _ in 0..n {
+                depth += rng.random_range(0.1..10.0f32);
+                let color = [0; 3].map(|_| rng.random_range(0.0..4.0f32));
+                image.push(x, y, Fragment { color, alpha: 1.0, depth }).unwrap();
+            }
+        }
+    }
+    let file = TempFile::new("layered.exr");
+    write_layered_exr(file.path(), &image).unwrap();
+    let (back, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(report.layout, ExrLayout::MultiLayer);
+    assert_eq!(report.layers, ["layer0", "layer1", "layer2"]);
+    assert_eq!(report.counts.repaired(), 0);
+    assert_eq!(back, image, "alpha-1 fragments survive bit for bit");
+}
+
+#[test]
+fn layered_round_trip_with_partial_alpha() {
+    let mut image = LayeredImage::new(2, 1, 2).unwrap();
+    image.push(0, 0, Fragment { color: [0.3, 0.6, 0.9], alpha: 0.25, depth: 1.0 }).unwrap();
+    image.push(0, 0, Fragment { color: [1.0, 2.0, 3.0], alpha: 1.0, depth: 2.0 }).unwrap();
+    image.push(1, 0, Fragment { color: [5.0, 0.0, 0.1], alpha: 0.7, depth: 3.0 }).unwrap();
+    let file = TempFile::new("alpha.exr");
+    write_layered_exr(file.path(), &image).unwrap();
+    let (back, _) = read_layered_exr(file.path()).unwrap();
+    for x in 0..2 {
+        let (a, b) = (image.pixel(x, 0), back.pixel(x, 0));
+        assert_eq!(a.len(), b.len());
+        for (f, g) in a.iter().zip(b) {
+            assert_eq!((f.alpha, f.depth), (g.alpha, g.depth));
+            for k in 0..3 {
+                assert!((f.color[k] - g.color[k]).abs() <= 1e-6 * f.color[k].abs().max(1.0), "{f:?} vs {g:?}");
+            }
+        }
+    }
+}
+
+/// Premultiplied slots of a 4x2 three-layer image, with layer order unrelated to depth order, empty
+/// slots (A = 0 with garbage depth, Z = inf) and partial alpha.
+fn multi_layer_slots() -> Vec<Vec<Slot>> {
+    let s = |rgb: [f32; 3], a: f32, z: f32| Slot { rgb, a, z };
+    let empty = s([0.0; 3], 0.0, 0.0);
+    let sky = s([0.0; 3], 1.0, f32::INFINITY);
+    // slots[layer][pixel]
+    vec![
+        vec![
+            s([1.0, 0.0, 0.0], 1.0, 5.0),
+            s([0.5, 0.5, 0.5], 0.5, 1.0),
+            empty,
+            s([0.1, 0.2, 0.3], 1.0, 2.0),
+            sky,
+            s([2.0, 2.0, 2.0], 1.0, 9.0),
+            empty,
+            s([0.0, 1.0, 0.0], 1.0, 3.0),
+        ],
+        vec![
+            s([0.0, 1.0, 0.0], 1.0, 2.0),
+            s([0.0, 0.0, 1.0], 1.0, 4.0),
+            empty,
+            s([0.4, 0.5, 0.6], 1.0, 2.0), // same depth as layer 0: layer order kept
+            s([0.0, 0.0, 7.0], 1.0, 8.0),
+            empty,
+            empty,
+            s([0.0, 0.0, 1.0], 0.25, 1.5),
+        ],
+        vec![
+            s([0.0, 0.0, 1.0], 1.0, 0.5),
+            empty,
+            s([3.0, 3.0, 3.0], 1.0, 1.0),
+            empty,
+            sky,
+            s([1.0, 1.0, 1.0], 1.0, 4.0),
+            empty,
+            s([1.0, 0.0, 0.0], 1.0, 10.0),
+        ],
+    ]
+}
+
+/// What the reader must produce from `slots`: per pixel, the non-empty slots as straight-colour
+/// fragments, sorted by depth (stable).
+fn expected_pixels(slots: &[Vec<Slot>]) -> Vec<Vec<Fragment>> {
+    (0..slots[0].len())
+        .map(|p| {
+            let mut frags: Vec<Fragment> = slots
+                .iter()
+                .map(|l| l[p])
+                .filter(|s| s.a > 0.0 && s.z.is_finite())
+                .map(|s| Fragment { color: s.rgb.map(|c| c / s.a), alpha: s.a, depth: s.z })
+                .collect();
+            frags.sort_by(|a, b| a.depth.total_cmp(&b.depth));
+            frags
+        })
+        .collect()
+}
+
+fn assert_matches_expected(image: &LayeredImage, slots: &[Vec<Slot>], width: u32) {
+    let expected = expected_pixels(slots);
+    assert_eq!(image.max_layers as usize, slots.len());
+    for (p, want) in expected.iter().enumerate() {
+        let (x, y) = (p as u32 % width, p as u32 / width);
+        assert_eq!(image.pixel(x, y), &want[..], "pixel ({x}, {y})");
+    }
+}
+
+#[test]
+fn multi_layer_exr_written_by_the_exr_crate() {
+    let slots = multi_layer_slots();
+    // Names chosen so that bytewise order (layer10 < layer2) differs from the natural order.
+    let names = ["layer1", "layer2", "layer10"];
+    let mut channels = Vec::new();
+    for (name, layer) in names.iter().zip(&slots) {
+        for (k, c) in ["R", "G", "B"].iter().enumerate() {
+            channels.push(channel(&format!("{name}.{c}"), layer.iter().map(|s| s.rgb[k]).collect()));
+        }
+        channels.push(channel(&format!("{name}.A"), layer.iter().map(|s| s.a).collect()));
+        channels.push(channel(&format!("{name}.Z"), layer.iter().map(|s| s.z).collect()));
+    }
+    // A flattened beauty image next to the layers is ignored.
+    channels.push(channel("R", vec![0.0; 8]));
+    channels.push(channel("G", vec![0.0; 8]));
+    channels.push(channel("B", vec![0.0; 8]));
+    let file = TempFile::new("multi.exr");
+    write_channels(file.path(), 4, 2, channels);
+
+    let (image, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(report.layout, ExrLayout::MultiLayer);
+    assert_eq!(report.layers, names);
+    assert_eq!(report.ignored_channels, ["B", "G", "R"]);
+    assert_eq!(report.counts.repaired(), 0, "{report}");
+    assert_eq!(report.counts.empty_alpha, 8);
+    assert_eq!(report.counts.sky_with_color, 0, "sky slots had no colour");
+    assert_matches_expected(&image, &slots, 4);
+    for p in 0..8 {
+        let (x, y) = (p % 4, p / 4);
+        assert!(image.pixel(x, y).windows(2).all(|f| f[0].depth <= f[1].depth), "front to back at ({x}, {y})");
+    }
+    // Ties keep layer order: pixel 3 has layer1 (0.1..) then layer2 (0.4..) at depth 2.
+    assert_eq!(image.pixel(3, 0)[0].color, [0.1, 0.2, 0.3]);
+}
+
+#[test]
+fn multi_part_exr_one_part_per_layer() {
+    use exr::WritableImage;
+    let slots = multi_layer_slots();
+    let (w, h) = (4usize, 2usize);
+    let parts: Vec<exr::Layer<exr::AnyChannels<exr::FlatSamples>>> = slots
+        .iter()
+        .enumerate()
+        .map(|(i, layer)| {
+            let mut list = exr::SmallVec::new();
+            for (k, c) in ["R", "G", "B"].iter().enumerate() {
+                list.push(channel(c, layer.iter().map(|s| s.rgb[k]).collect()));
+            }
+            list.push(channel("A", layer.iter().map(|s| s.a).collect()));
+            list.push(channel("Z", layer.iter().map(|s| s.z).collect()));
+            exr::Layer::new(
+                (w, h),
+                exr::LayerAttributes::named(format!("layer{i}").as_str()),
+                exr::Encoding::FAST_LOSSLESS,
+                exr::AnyChannels::sort(list),
+            )
+        })
+        .collect();
+    let image = exr::Image::from_layers(exr::ImageAttributes::new(exr::IntegerBounds::from_dimensions((w, h))), parts);
+    let file = TempFile::new("multipart.exr");
+    image.write().to_file(file.path()).unwrap();
+
+    let (layered, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(report.layout, ExrLayout::MultiLayer);
+    assert_eq!(report.layers, ["layer0", "layer1", "layer2"]);
+    assert_matches_expected(&layered, &slots, 4);
+}
+
+#[test]
+fn depth_and_alpha_name_variants() {
+    let file = TempFile::new("variants.exr");
+    // Lower-case channels, `depth` for Z, no alpha; half floats.
+    let half = |v: Vec<f32>| exr::FlatSamples::F16(v.into_iter().map(exr::f16::from_f32).collect());
+    let channels = vec![
+        exr::AnyChannel::new("r", half(vec![1.0, 2.0])),
+        exr::AnyChannel::new("g", half(vec![0.5, 0.25])),
+        exr::AnyChannel::new("b", half(vec![0.0, 4.0])),
+        exr::AnyChannel::new("depth", half(vec![2.0, 3.0])),
+    ];
+    write_channels(file.path(), 2, 1, channels);
+    let (image, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(report.layout, ExrLayout::RgbZ);
+    assert_eq!(report.channels, ["r", "g", "b", "depth"]);
+    assert_eq!(image.pixel(1, 0), [Fragment { color: [2.0, 0.25, 4.0], alpha: 1.0, depth: 3.0 }]);
+
+    // Nuke's `depth.Z` is the depth of an RGB image.
+    let file = TempFile::new("nuke.exr");
+    let channels = vec![
+        channel("R", vec![1.0]),
+        channel("G", vec![1.0]),
+        channel("B", vec![1.0]),
+        channel("A", vec![1.0]),
+        channel("depth.Z", vec![4.0]),
+    ];
+    write_channels(file.path(), 1, 1, channels);
+    let (image, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(report.layout, ExrLayout::RgbZ);
+    assert_eq!(image.pixel(0, 0)[0].depth, 4.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input
+
+#[test]
+fn missing_file_is_an_error() {
+    let file = TempFile::new("does-not-exist.exr");
+    let m = err_message(read_layered_exr(file.path()));
+    assert_mentions(&m, &["does not exist", "does-not-exist.exr"]);
+    let m = err_message(read_rgb_exr(file.path()));
+    assert_mentions(&m, &["does not exist"]);
+}
+
+#[test]
+fn not_an_exr_is_an_error() {
+    let cases: [(&str, &[u8], &str); 4] = [
+        ("garbage.exr", b"this is not an image at all", "not an OpenEXR file"),
+        ("empty.exr", b"", "empty"),
+        ("short.exr", &[0x76, 0x2f], "2 bytes"),
+        ("image.png", b"\x89PNG\r\n\x1a\n rest of a png", "PNG"),
+    ];
+    for (name, bytes, words) in cases {
+        let file = TempFile::new(name);
+        std::fs::write(file.path(), bytes).unwrap();
+        let m = err_message(read_layered_exr(file.path()));
+        assert_mentions(&m, &[words, name]);
+    }
+    // Random bytes after a valid signature.
+    let mut rng = Pcg64::seed_from_u64(3);
+    for i in 0..20 {
+        // Signature, then half the time a plausible version field (2, single part), then noise.
+        let mut bytes = vec![0x76, 0x2f, 0x31, 0x01];
+        if i % 2 == 0 {
+            bytes.extend([2, 0, 0, 0]);
+        }
+        bytes.extend((0..rng.random_range(0..400)).map(|_| rng.random::<u8>()));
+        let file = TempFile::new(&format!("noise{i}.exr"));
+        std::fs::write(file.path(), &bytes).unwrap();
+        err_message(read_layered_exr(file.path()));
+    }
+    let dir = std::env::temp_dir();
+    err_message(read_layered_exr(&dir));
+}
+
+#[test]
+fn truncated_exr_is_an_error() {
+    let image = RgbImage::new(16, 16);
+    let depth = vec![1.0f32; 256];
+    let file = TempFile::new("whole.exr");
+    write_exr(file.path(), &image, &[("Z", &depth)]).unwrap();
+    let bytes = std::fs::read(file.path()).unwrap();
+    assert!(read_layered_exr(file.path()).is_ok());
+    for cut in [8, 40, bytes.len() / 2, bytes.len() - 20, bytes.len() - 1] {
+        let cut_file = TempFile::new(&format!("cut{cut}.exr"));
+        std::fs::write(cut_file.path(), &bytes[..cut]).unwrap();
+        let m = err_message(read_layered_exr(cut_file.path()));
+        assert_mentions(&m, &[&format!("cut{cut}.exr")]);
+        assert!(m.contains("truncated") || m.contains("not a valid"), "cut at {cut} of {}: {m}", bytes.len());
+    }
+}
+
+#[test]
+fn missing_colour_or_depth_is_an_error() {
+    // No colour at all.
+    let file = TempFile::new("only-z.exr");
+    write_channels(file.path(), 2, 2, vec![channel("Z", vec![1.0; 4])]);
+    let m = err_message(read_layered_exr(file.path()));
+    assert_mentions(&m, &["R, G and B", "Z"]);
+    assert_mentions(&err_message(read_rgb_exr(file.path())), &["R, G and B"]);
+
+    // Partial colour.
+    let file = TempFile::new("rg.exr");
+    write_channels(file.path(), 2, 2, vec![channel("R", vec![1.0; 4]), channel("G", vec![1.0; 4]), channel("Z", vec![1.0; 4])]);
+    let m = err_message(read_layered_exr(file.path()));
+    assert_mentions(&m, &["missing B"]);
+    assert!(!m.contains("Z channel"), "the file has a Z channel: {m}");
+
+    // Colour without depth.
+    let file = TempFile::new("rgb.exr");
+    write_exr(file.path(), &RgbImage::new(2, 2), &[("coc", &[0.0; 4])]).unwrap();
+    assert_mentions(&err_message(read_layered_exr(file.path())), &["needs a Z channel", "rgb.exr"]);
+
+    // A named layer without depth next to complete ones.
+    let file = TempFile::new("layer-no-z.exr");
+    let mut channels = Vec::new();
+    for l in ["l0", "l1"] {
+        for c in ["R", "G", "B"] {
+            channels.push(channel(&format!("{l}.{c}"), vec![1.0; 4]));
+        }
+    }
+    channels.push(channel("l0.Z", vec![1.0; 4]));
+    write_channels(file.path(), 2, 2, channels);
+    assert_mentions(&err_message(read_layered_exr(file.path())), &["`l1`", "needs a Z channel"]);
+
+    // Only named layers, none with depth.
+    let file = TempFile::new("passes.exr");
+    let channels = ["R", "G", "B", "A"].iter().map(|c| channel(&format!("ViewLayer.Combined.{c}"), vec![1.0; 4])).collect();
+    write_channels(file.path(), 2, 2, channels);
+    assert_mentions(&err_message(read_layered_exr(file.path())), &["ViewLayer.Combined", "needs a Z channel"]);
+}
+
+#[test]
+fn zero_size_is_an_error() {
+    // A valid 1x1 file whose data window is patched to be empty (xMax = xMin - 1).
+    let file = TempFile::new("one.exr");
+    write_exr(file.path(), &RgbImage::new(1, 1), &[("Z", &[1.0])]).unwrap();
+    let mut bytes = std::fs::read(file.path()).unwrap();
+    let key = b"dataWindow\0box2i\0";
+    let at = bytes.windows(key.len()).position(|w| w == key).unwrap() + key.len() + 4;
+    bytes[at + 8..at + 12].copy_from_slice(&(-1i32).to_le_bytes());
+    let zero = TempFile::new("zero.exr");
+    std::fs::write(zero.path(), &bytes).unwrap();
+    assert_mentions(&err_message(read_layered_exr(zero.path())), &["zero size", "zero.exr"]);
+    assert_mentions(&err_message(read_rgb_exr(zero.path())), &["zero size"]);
+
+    // Writers refuse zero sizes.
+    let empty = RgbImage::new(0, 3);
+    let out = TempFile::new("zero-out.exr");
+    assert_mentions(&err_message(write_exr(out.path(), &empty, &[])), &["zero size"]);
+    assert_mentions(&err_message(write_png_preview(out.path(), &empty, 1.0)), &["zero size"]);
+}
+
+#[test]
+fn mismatched_layer_sizes_are_an_error() {
+    use exr::WritableImage;
+    let layer = |name: &str, w: usize, h: usize| {
+        let mut list = exr::SmallVec::new();
+        for c in ["R", "G", "B", "Z"] {
+            list.push(channel(c, vec![1.0; w * h]));
+        }
+        exr::Layer::new((w, h), exr::LayerAttributes::named(name), exr::Encoding::FAST_LOSSLESS, exr::AnyChannels::sort(list))
+    };
+    let image = exr::Image::from_layers(
+        exr::ImageAttributes::new(exr::IntegerBounds::from_dimensions((4, 4))),
+        vec![layer("layer0", 4, 4), layer("layer1", 3, 4)],
+    );
+    let file = TempFile::new("mismatch.exr");
+    image.write().to_file(file.path()).unwrap();
+    assert_mentions(&err_message(read_layered_exr(file.path())), &["sizes differ", "layer0", "layer1", "3x4", "4x4"]);
+}
+
+#[test]
+fn writer_argument_errors() {
+    let image = RgbImage::new(2, 2);
+    let out = TempFile::new("args.exr");
+    assert_mentions(&err_message(write_exr(out.path(), &image, &[("Z", &[1.0; 3])])), &["`Z`", "3 values", "4 pixels"]);
+    assert_mentions(&err_message(write_exr(out.path(), &image, &[("R", &[1.0; 4])])), &["twice"]);
+    assert_mentions(&err_message(write_exr(out.path(), &image, &[("a", &[1.0; 4]), ("a", &[1.0; 4])])), &["twice"]);
+    for bad in ["", "with space", "naïve"] {
+        err_message(write_exr(out.path(), &image, &[(bad, &[1.0; 4])]));
+    }
+    let inconsistent = RgbImage { width: 2, height: 2, data: vec![[0.0; 3]; 3] };
+    err_message(write_exr(out.path(), &inconsistent, &[]));
+    err_message(write_png_preview(out.path(), &inconsistent, 1.0));
+    for exposure in [0.0, -1.0, f32::NAN, f32::INFINITY] {
+        assert_mentions(&err_message(write_png_preview(out.path(), &image, exposure)), &["exposure"]);
+    }
+    let no_dir = std::env::temp_dir().join("dof-no-such-dir-image-io").join("x.exr");
+    assert_mentions(&err_message(write_exr(&no_dir, &image, &[])), &["directory does not exist"]);
+    assert!(!out.path().exists(), "failed writes leave no file");
+}
+
+// ---------------------------------------------------------------------------------------------
+// NaN/Inf policy
+
+#[test]
+fn nan_inf_policy_and_counts() {
+    let nan = f32::NAN;
+    let inf = f32::INFINITY;
+    // (premultiplied colour, alpha, depth) per pixel.
+    let pixels: [([f32; 3], f32, f32); 10] = [
+        ([nan, 0.5, 0.25], 1.0, 2.0),     // colour NaN -> 0
+        ([inf, -inf, 1.0], 1.0, 2.0),     // +inf -> 65504, -inf -> 0
+        ([1.0, 1.0, 1.0], 1.0, nan),      // depth NaN -> dropped
+        ([1.0, 1.0, 1.0], 1.0, 0.0),      // depth 0 -> dropped
+        ([1.0, 1.0, 1.0], 1.0, -3.0),     // negative depth -> dropped
+        ([1.0, 1.0, 1.0], 1.0, inf),      // sky with colour -> no fragment, informational
+        ([0.0, 0.0, 0.0], 1.0, inf),      // plain sky
+        ([0.5, 0.5, 0.5], 2.0, 1.0),      // alpha > 1 -> 1
+        ([0.5, 0.5, 0.5], nan, 1.0),      // alpha NaN -> 0 -> empty
+        ([-0.5, 0.0, 0.0], 1.0, -inf),    // depth -inf -> dropped (colour not looked at)
+    ];
+    let n = pixels.len();
+    let file = TempFile::new("policy.exr");
+    let mut channels = Vec::new();
+    for (k, c) in ["R", "G", "B"].iter().enumerate() {
+        channels.push(channel(c, pixels.iter().map(|p| p.0[k]).collect()));
+    }
+    channels.push(channel("A", pixels.iter().map(|p| p.1).collect()));
+    channels.push(channel("Z", pixels.iter().map(|p| p.2).collect()));
+    write_channels(file.path(), n, 1, channels);
+
+    let (image, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(
+        report.counts,
+        SanitizeCounts {
+            color_nan: 1,
+            color_inf: 2,
+            alpha_invalid: 2,
+            depth_invalid: 4,
+            sky_with_color: 1,
+            empty_alpha: 1,
+        }
+    );
+    assert_eq!(report.repaired(), 9);
+    assert_eq!(report.total(), 10, "the discarded sky colour is worth a note too");
+    let text = report.to_string();
+    assert_mentions(&text, &["1 NaN colour", "2 infinite colour", "4 fragments with NaN, zero or negative depth"]);
+
+    let frag = |x: u32| image.pixel(x, 0);
+    assert_eq!(frag(0), [Fragment { color: [0.0, 0.5, 0.25], alpha: 1.0, depth: 2.0 }]);
+    assert_eq!(frag(1), [Fragment { color: [COLOR_INF_REPLACEMENT, 0.0, 1.0], alpha: 1.0, depth: 2.0 }]);
+    assert_eq!(COLOR_INF_REPLACEMENT, 65504.0);
+    for x in [2, 3, 4, 5, 6, 8, 9] {
+        assert!(frag(x).is_empty(), "pixel {x} should be empty: {:?}", frag(x));
+    }
+    assert_eq!(frag(7), [Fragment { color: [0.5; 3], alpha: 1.0, depth: 1.0 }]);
+    for p in 0..n as u32 {
+        for f in frag(p) {
+            assert!(f.color.iter().all(|c| c.is_finite()) && f.depth.is_finite() && f.depth > 0.0);
+        }
+    }
+
+    // The RGB reader applies the colour rules.
+    let (rgb, report) = read_rgb_exr(file.path()).unwrap();
+    assert_eq!((report.counts.color_nan, report.counts.color_inf), (1, 2));
+    assert_eq!(rgb.data[0], [0.0, 0.5, 0.25]);
+    assert_eq!(rgb.data[1], [COLOR_INF_REPLACEMENT, 0.0, 1.0]);
+    assert_eq!(rgb.data[9], [-0.5, 0.0, 0.0], "finite negative colour is kept");
+    assert!(rgb.data.iter().flatten().all(|c| c.is_finite()));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tone map and PNG
+
+#[test]
+fn tonemap_fixed_points() {
+    assert_eq!(tonemap([0.0; 3], 1.0), [0.0; 3]);
+    assert_eq!(tonemap([1e6; 3], 1.0), [1.0; 3]);
+    assert_eq!(tonemap([f32::INFINITY; 3], 1.0), [1.0; 3]);
+    assert_eq!(tonemap([f32::NAN, -1.0, f32::NEG_INFINITY], 1.0), [0.0; 3]);
+    // ACES fitted at 1: 2.54 / 3.16.
+    assert!((aces_fitted(1.0) - 2.54 / 3.16).abs() < 1e-6);
+    assert!((aces_fitted(0.18) - 0.18 * (2.51 * 0.18 + 0.03) / (0.18 * (2.43 * 0.18 + 0.59) + 0.14)).abs() < 1e-7);
+    assert!(aces_fitted(7.0) < 1.0 && aces_fitted(7.3) == 1.0, "saturates near x = 7.24");
+    // Exposure scales the input.
+    assert_eq!(tonemap([0.5; 3], 2.0), tonemap([1.0; 3], 1.0));
+    assert_eq!(tonemap([0.3, 0.0, 2.0], 1.0)[0], srgb_oetf(aces_fitted(0.3)));
+    // sRGB at known points.
+    assert_eq!(srgb_oetf(0.0), 0.0);
+    assert_eq!(srgb_oetf(1.0), 1.0);
+    assert!((srgb_oetf(0.0031308) - 0.04045).abs() < 1e-5, "the linear segment meets the curve");
+    assert!((srgb_oetf(0.5) - 0.735_357).abs() < 1e-6);
+    assert!((srgb_oetf(0.18) - 0.461_356).abs() < 1e-5);
+    assert!((srgb_oetf(0.001) - 0.01292).abs() < 1e-7);
+    assert_eq!(to_u8(srgb_oetf(0.5)), 188);
+    assert_eq!(to_u8(srgb_oetf(srgb_eotf(128.0 / 255.0))), 128);
+    for i in 0..=100 {
+        let v = i as f32 / 100.0;
+        assert!((srgb_eotf(srgb_oetf(v)) - v).abs() < 1e-5, "EOTF inverts OETF at {v}");
+    }
+}
+
+#[test]
+fn tonemap_is_monotone_and_approaches_one() {
+    let mut previous = 0.0;
+    let mut x = 1e-6f32;
+    while x < 1e6 {
+        let y = tonemap([x; 3], 1.0)[0];
+        assert!(y >= previous, "tone map decreases at {x}: {y} < {previous}");
+        assert!((0.0..=1.0).contains(&y));
+        if x < 7.0 {
+            assert!(y < 1.0);
+        }
+        previous = y;
+        x *= 1.01;
+    }
+    assert_eq!(previous, 1.0);
+    assert!(tonemap([5.0; 3], 1.0)[0] > 0.99, "bright values come close to white");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+    #[test]
+    fn tonemap_is_total_and_ordered(a in proptest::num::f32::ANY, b in proptest::num::f32::ANY, e in proptest::num::f32::ANY) {
+        let (ta, tb) = (tonemap([a; 3], 1.0)[0], tonemap([b; 3], 1.0)[0]);
+        prop_assert!((0.0..=1.0).contains(&ta) && (0.0..=1.0).contains(&tb));
+        if a <= b {
+            prop_assert!(ta <= tb, "{a} -> {ta}, {b} -> {tb}");
+        }
+        let t = tonemap([a, b, 1.0], e);
+        prop_assert!(t.iter().all(|v| (0.0..=1.0).contains(v)));
+    }
+}
+
+#[test]
+fn png_preview_is_decodable() {
+    let (w, h) = (5u32, 3u32);
+    let mut image = RgbImage::new(w, h);
+    for (i, c) in image.data.iter_mut().enumerate() {
+        *c = [i as f32 * 0.1, (i as f32 * 0.37).sin().abs() * 4.0, 1.0 / (1.0 + i as f32)];
+    }
+    image.data[4] = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY];
+    let exposure = 1.5;
+    let file = TempFile::new("preview.png");
+    write_png_preview(file.path(), &image, exposure).unwrap();
+
+    let reader = std::io::BufReader::new(std::fs::File::open(file.path()).unwrap());
+    let mut reader = png::Decoder::new(reader).read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    assert_eq!((info.width, info.height), (w, h));
+    assert_eq!(info.color_type, png::ColorType::Rgb);
+    assert_eq!(info.bit_depth, png::BitDepth::Eight);
+    let bytes = &buf[..info.buffer_size()];
+    for (p, c) in image.data.iter().enumerate() {
+        assert_eq!(bytes[p * 3..p * 3 + 3], tonemap_to_srgb8(*c, exposure), "pixel {p}");
+    }
+    assert_eq!(bytes[12..15], [0, 255, 0], "NaN -> black, +inf -> white, -inf -> black");
+}
+
+#[test]
+fn corrupted_files_never_panic() {
+    let mut rng = Pcg64::seed_from_u64(4);
+    let mut image = random_image(&mut rng, 9, 7);
+    image.data[3] = [f32::NAN; 3];
+    let depth: Vec<f32> = (0..63).map(|i| 1.0 + i as f32).collect();
+    let mut originals = Vec::new();
+    for (name, precision, compression) in [
+        ("f32", ExrPrecision::Float, ExrCompression::Zip),
+        ("f16", ExrPrecision::Half, ExrCompression::Zip),
+        ("raw", ExrPrecision::Float, ExrCompression::None),
+    ] {
+        let file = TempFile::new(&format!("fuzz-{name}.exr"));
+        write_exr_with(file.path(), &image, &[("Z", &depth)], &ExrWriteOptions { precision, compression }).unwrap();
+        originals.push(std::fs::read(file.path()).unwrap());
+    }
+    let mut layered = LayeredImage::new(3, 2, 2).unwrap();
+    layered.push(1, 1, Fragment { color: [1.0; 3], alpha: 0.5, depth: 2.0 }).unwrap();
+    let file = TempFile::new("fuzz-layered.exr");
+    write_layered_exr(file.path(), &layered).unwrap();
+    originals.push(std::fs::read(file.path()).unwrap());
+
+    let cases: usize = std::env::var("DOF_FUZZ_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(150);
+    let target = TempFile::new("fuzz.exr");
+    for case in 0..cases {
+        let mut bytes = originals[case % originals.len()].clone();
+        for _ in 0..rng.random_range(1..4) {
+            let at = rng.random_range(0..bytes.len());
+            match rng.random_range(0..3) {
+                0 => bytes[at] ^= 1 << rng.random_range(0..8),
+                1 => bytes[at] = rng.random(),
+                _ => bytes.truncate(at.max(4)),
+            }
+        }
+        std::fs::write(target.path(), &bytes).unwrap();
+        // Either outcome is fine; a panic fails the test.
+        let _ = read_layered_exr(target.path());
+        let _ = read_rgb_exr(target.path());
+    }
+}

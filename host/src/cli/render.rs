@@ -33,16 +33,16 @@ pub struct RenderArgs {
     #[arg(long)]
     height: Option<u32>,
     /// Focus distance in scene units (planar).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     focus: Option<f32>,
     /// Aperture as an f-number (focal length from the field of view and sensor height)...
-    #[arg(long, conflicts_with = "aperture_radius")]
+    #[arg(long, conflicts_with = "aperture_radius", allow_negative_numbers = true)]
     f_number: Option<f32>,
     /// ...or as a radius in scene units, as path tracers take it.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     aperture_radius: Option<f32>,
     /// Focal length in millimetres (default: from the field of view and the sensor height).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     focal_length: Option<f32>,
     /// Sensor height in millimetres.
     #[arg(long, default_value_t = 24.0)]
@@ -52,7 +52,7 @@ pub struct RenderArgs {
     eye: Option<Vec3>,
     #[arg(long, value_parser = parse_vec3)]
     target: Option<Vec3>,
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     yfov: Option<f32>,
     /// Reference samples per pixel; by default raised until the noise is within 0.5 dB of converged.
     #[arg(long)]

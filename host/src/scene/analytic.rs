@@ -11,6 +11,7 @@
 
 use glam::Vec3;
 
+use super::bvh::{Aabb, Bvh};
 use super::camera::Ray;
 use crate::error::{Error, Result};
 
@@ -71,6 +72,10 @@ pub struct Scene {
     primitives: Vec<Primitive>,
     lighting: Lighting,
     light_dir: Vec3,
+    /// Hierarchy over the bounded primitives.
+    bvh: Bvh,
+    /// Planes, tested by every ray.
+    unbounded: Vec<u32>,
 }
 
 /// One intersection of a ray with a primitive.
@@ -136,7 +141,15 @@ impl Scene {
         if !l.color.iter().chain(l.ambient.iter()).all(|v| *v >= 0.0 && v.is_finite()) {
             return Err(Error::InvalidArgument("light and ambient colours must be finite and not negative".into()));
         }
-        Ok(Scene { primitives, lighting, light_dir: l.direction.normalize() })
+        let mut boxes = Vec::new();
+        let mut unbounded = Vec::new();
+        for (i, p) in primitives.iter().enumerate() {
+            match bounds(&p.shape) {
+                Some(b) => boxes.push((i as u32, b)),
+                None => unbounded.push(i as u32),
+            }
+        }
+        Ok(Scene { bvh: Bvh::build(&boxes), unbounded, primitives, lighting, light_dir: l.direction.normalize() })
     }
 
     pub fn primitives(&self) -> &[Primitive] {
@@ -153,9 +166,14 @@ impl Scene {
     pub fn all_hits(&self, ray: &Ray, t_min: f32, out: &mut Vec<Hit>) {
         out.clear();
         let Some(ray) = Prepared::new(ray) else { return };
-        for (i, p) in self.primitives.iter().enumerate() {
-            intersect(&p.shape, i as u32, &ray, t_min, &mut |h| out.push(h));
+        let mut emit = |h| out.push(h);
+        for &i in &self.unbounded {
+            intersect(&self.primitives[i as usize].shape, i, &ray, t_min, &mut emit);
         }
+        let mut t_max = f32::INFINITY;
+        self.bvh.traverse(ray.origin, ray.direction, t_min, &mut t_max, |i, _| {
+            intersect(&self.primitives[i as usize].shape, i, &ray, t_min, &mut emit);
+        });
         out.sort_by(|a, b| a.t.total_cmp(&b.t).then(a.primitive.cmp(&b.primitive)).then(a.self_occluded.cmp(&b.self_occluded)));
     }
 
@@ -163,13 +181,21 @@ impl Scene {
     pub fn first_hit(&self, ray: &Ray, t_min: f32) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let ray = Prepared::new(ray)?;
-        for (i, p) in self.primitives.iter().enumerate() {
-            intersect(&p.shape, i as u32, &ray, t_min, &mut |h| {
-                if best.is_none_or(|b| h.t < b.t) {
-                    best = Some(h);
-                }
-            });
+        let consider = |h: Hit, best: &mut Option<Hit>| {
+            if best.is_none_or(|b| h.t < b.t || (h.t == b.t && h.primitive < b.primitive)) {
+                *best = Some(h);
+            }
+        };
+        for &i in &self.unbounded {
+            intersect(&self.primitives[i as usize].shape, i, &ray, t_min, &mut |h| consider(h, &mut best));
         }
+        let mut t_max = best.map_or(f32::INFINITY, |b| b.t);
+        self.bvh.traverse(ray.origin, ray.direction, t_min, &mut t_max, |i, t_max| {
+            intersect(&self.primitives[i as usize].shape, i, &ray, t_min, &mut |h| consider(h, &mut best));
+            if let Some(b) = best {
+                *t_max = b.t;
+            }
+        });
         best
     }
 
@@ -201,6 +227,19 @@ impl Scene {
             Some(h) => self.shade(ray, &h),
             None => [0.0; 3],
         }
+    }
+}
+
+/// Bounds of a primitive; `None` for an unbounded plane.
+fn bounds(shape: &Shape) -> Option<Aabb> {
+    match *shape {
+        Shape::Sphere { center, radius } => Some(Aabb { min: center - Vec3::splat(radius), max: center + Vec3::splat(radius) }),
+        Shape::Cuboid { min, max } => Some(Aabb { min, max }),
+        Shape::Quad { corner, edge_u, edge_v } => {
+            let pts = [corner, corner + edge_u, corner + edge_v, corner + edge_u + edge_v];
+            Some(pts.iter().fold(Aabb::EMPTY, |b, p| b.union(Aabb { min: *p, max: *p })))
+        }
+        Shape::Plane { .. } => None,
     }
 }
 

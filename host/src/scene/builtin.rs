@@ -207,7 +207,7 @@ fn highlights() -> Result<BuiltinScene> {
             continue;
         }
         let colour = palette[placed % palette.len()];
-        let power = 200.0 * 1000.0f32.powf(rng.next_f32());
+        let power = 2000.0 * 100.0f32.powf(rng.next_f32());
         prims.push(Primitive { shape: sphere(p.to_array(), radius), material: Material::Emissive(colour.map(|c| c * power)) });
         placed += 1;
     }

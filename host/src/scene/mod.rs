@@ -7,6 +7,7 @@
 //!   `highlights`);
 //! - [`raycast`]: the exact partial multi-layer image (umbra threshold, disocclusion buffer);
 //! - [`reference`]: thin-lens distributed ray tracing (the ground truth) and the pinhole image;
+//! - [`bvh`]: the bounding-volume hierarchy that keeps ray casts cheap;
 //! - [`sampling`]: stratified lens/pixel samples and the concentric disc mapping.
 //!
 //! The lens models themselves live in the kernel crate ([`dof_shaders::lens`]) so the kernels
@@ -14,6 +15,7 @@
 
 pub mod analytic;
 pub mod builtin;
+pub mod bvh;
 pub mod camera;
 pub mod lens;
 pub mod raycast;
@@ -28,4 +30,4 @@ pub use dof_shaders::lens::{ArtistLens, ThinLens};
 pub use glam::Vec3;
 pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
 pub use raycast::{LayerOptions, MultiLayerImage, raycast_layers};
-pub use reference::{AutoOptions, Reference, ReferenceOptions, pinhole, psnr, reference, reference_auto, tonemap};
+pub use reference::{AutoOptions, Reference, ReferenceOptions, noise_margin_db, pinhole, psnr, reference, reference_auto, tonemap};

@@ -1,0 +1,62 @@
+//! The `dof` command as a user runs it: outputs appear, and bad input gets a clear message and a
+//! non-zero exit (never a panic).
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn dof(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_dof")).args(args).output().expect("the dof binary runs")
+}
+
+fn temp(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("dof-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir.join(name)
+}
+
+/// Fails unless the command exited non-zero with `needle` in its message and without a panic.
+fn assert_fails_with(args: &[&str], needle: &str) {
+    let out = dof(args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "`dof {}` should fail", args.join(" "));
+    assert!(!stderr.contains("panicked"), "`dof {}` panicked:\n{stderr}", args.join(" "));
+    assert!(stderr.contains(needle), "`dof {}` should say `{needle}`, said:\n{stderr}", args.join(" "));
+}
+
+#[test]
+fn renders_a_builtin_scene_to_exr_and_png() {
+    let out = temp("simple.exr");
+    let o = dof(&["render", "--width", "64", "--height", "36", "--samples", "4", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(std::fs::metadata(&out).unwrap().len() > 0);
+    assert!(std::fs::metadata(out.with_extension("png")).unwrap().len() > 0);
+
+    // The written EXR (RGB + Z) is valid input for the image-only methods.
+    let layers = temp("simple-layers.exr");
+    let o = dof(&["render", "--scene", out.to_str().unwrap(), "--method", "layers", "--out", layers.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_fails_with(&["render", "--scene", out.to_str().unwrap(), "--method", "reference"], "needs the scene's geometry");
+}
+
+#[test]
+fn bad_scenes_are_reported() {
+    assert_fails_with(&["render", "--scene", "nope"], "unknown built-in scene");
+    assert_fails_with(&["render", "--scene", "model.gltf"], "glTF scenes are not supported yet");
+    assert_fails_with(&["render", "--scene", "/nonexistent/dir/in.exr"], "in.exr");
+    let garbage = temp("garbage.exr");
+    std::fs::write(&garbage, b"v/1\x01 this is not an EXR file at all").unwrap();
+    assert_fails_with(&["render", "--scene", garbage.to_str().unwrap(), "--method", "pinhole"], "garbage.exr");
+}
+
+#[test]
+fn bad_cameras_and_lenses_are_reported() {
+    assert_fails_with(&["render", "--width", "0", "--samples", "1"], "image size must be positive");
+    assert_fails_with(&["render", "--aperture-radius", "nan", "--samples", "1"], "aperture radius");
+    assert_fails_with(&["render", "--yfov", "180", "--samples", "1"], "field of view");
+    assert_fails_with(&["render", "--yfov", "0", "--samples", "1"], "field of view");
+    assert_fails_with(&["render", "--focus", "-1", "--samples", "1"], "focus distance");
+    assert_fails_with(&["render", "--focus", "0.02", "--focal-length", "50", "--samples", "1"], "shorter than the focus distance");
+    assert_fails_with(&["render", "--f-number", "-2", "--samples", "1"], "f-number");
+    assert_fails_with(&["render", "--eye", "1,2", "--samples", "1"], "three finite numbers");
+    assert_fails_with(&["render", "--out", "image.png", "--samples", "1"], ".exr");
+}

@@ -67,3 +67,28 @@ fn per_dispatch_timestamps_are_reported() {
     assert!(out.times.iter().any(|t| t.label == "sort/classify"));
     assert!(out.times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0), "{:?}", out.times);
 }
+
+mod random_mixes {
+    use super::*;
+    use proptest::prelude::*;
+    use rand::Rng;
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 6, ..ProptestConfig::default() })]
+
+        /// Random mixes of list lengths across every class and the global path, on Vulkan with
+        /// validation, bit-identical to the CPU backend.
+        #[test]
+        fn random_length_mixes_match_cpu(lengths in prop::collection::vec(prop_oneof![0u32..70, 0u32..1500, 4000u32..9000], 1..10), seed: u64) {
+            let Some(mut vk) = vulkan() else { return Ok(()) };
+            let mut rng = Pcg64::seed_from_u64(seed);
+            let input = lists_with(&lengths, |_, _| if rng.random_bool(0.3) { rng.random_range(0..3) as f32 } else { random_key(&mut rng) });
+            let on_vk = sort_on(&mut vk, &input).expect("Vulkan sort");
+            assert_clean(&mut vk);
+            let on_cpu = sort_on(&mut CpuBackend::with_shared_bytes(vk.limits().max_shared_bytes), &input).expect("CPU sort");
+            prop_assert_eq!(on_vk.values, on_cpu.values);
+            let bits = |k: &[f32]| k.iter().map(|k| k.to_bits()).collect::<Vec<_>>();
+            prop_assert_eq!(bits(&on_vk.keys), bits(&on_cpu.keys));
+        }
+    }
+}

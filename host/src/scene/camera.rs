@@ -174,4 +174,18 @@ impl CameraFrame {
     pub fn pixels(&self) -> usize {
         self.width as usize * self.height as usize
     }
+
+    /// Errors (`TooLarge`) when an image of this size with `per_pixel` slots exceeds
+    /// [`MAX_SLOTS`], before anything is allocated.
+    pub fn check_size(&self, what: &str, per_pixel: u64) -> Result<()> {
+        let slots = self.width as u64 * self.height as u64 * per_pixel.max(1);
+        if slots > MAX_SLOTS {
+            return Err(Error::TooLarge { what: format!("{what} ({}x{} pixels x {per_pixel})", self.width, self.height), size: slots, limit: MAX_SLOTS });
+        }
+        Ok(())
+    }
 }
+
+/// Largest number of per-pixel slots (pixels × layers, or pixels) the scene renderers allocate:
+/// 2^28, e.g. 16384x16384 pixels with one slot, a few GiB at most.
+pub const MAX_SLOTS: u64 = 1 << 28;

@@ -77,6 +77,7 @@ pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
     if !(options.edge_depth_ratio >= 0.0) {
         return Err(Error::InvalidArgument(format!("the edge depth ratio must not be negative, got {}", options.edge_depth_ratio)));
     }
+    frame.check_size("multi-layer image", options.max_layers as u64)?;
     let mut full = LayeredImage::new(frame.width, frame.height, options.max_layers)?;
     cast_all(scene, &frame, lens, options, &mut full);
 

@@ -213,6 +213,7 @@ pub fn reference_auto(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
         )));
     }
     check_region(&o.region, &frame)?;
+    frame.check_size("reference image", 1)?;
     let region = o.region.as_deref();
     let required = o.required_noise_psnr_db();
     let pixels = frame.width as usize * frame.height as usize;
@@ -266,6 +267,7 @@ fn render_fixed(scene: &Scene, frame: &CameraFrame, radius: f32, focus: f32, opt
         return Err(Error::InvalidArgument("a reference needs at least one sample per pixel".into()));
     }
     check_region(&options.region, frame)?;
+    frame.check_size("reference image", 1)?;
     let pixels = frame.width as usize * frame.height as usize;
     let (na, nb) = (options.spp - options.spp / 2, options.spp / 2);
     let mut a = Accum::new(pixels);

@@ -199,9 +199,10 @@ impl Scene {
         best
     }
 
-    /// Radiance leaving `hit` towards the origin of `ray` (the lighting model of this module).
+    /// Radiance leaving `hit` towards the origin of `ray` (the lighting model of this module);
+    /// black for a hit naming no primitive of this scene.
     pub fn shade(&self, ray: &Ray, hit: &Hit) -> [f32; 3] {
-        let prim = &self.primitives[hit.primitive as usize];
+        let Some(prim) = self.primitives.get(hit.primitive as usize) else { return [0.0; 3] };
         match prim.material {
             Material::Emissive(c) => c,
             Material::Diffuse(albedo) => {

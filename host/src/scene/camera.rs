@@ -178,7 +178,7 @@ impl CameraFrame {
     /// Errors (`TooLarge`) when an image of this size with `per_pixel` slots exceeds
     /// [`MAX_SLOTS`], before anything is allocated.
     pub fn check_size(&self, what: &str, per_pixel: u64) -> Result<()> {
-        let slots = self.width as u64 * self.height as u64 * per_pixel.max(1);
+        let slots = (self.width as u64 * self.height as u64).saturating_mul(per_pixel.max(1));
         if slots > MAX_SLOTS {
             return Err(Error::TooLarge { what: format!("{what} ({}x{} pixels x {per_pixel})", self.width, self.height), size: slots, limit: MAX_SLOTS });
         }

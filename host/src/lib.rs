@@ -6,12 +6,14 @@
 //! - [`layers`]: colour and multi-layer images, the data every method shares;
 //! - [`io`]: EXR and PNG in and out;
 //! - [`scene`]: lenses, cameras, analytic scenes and their exact references;
+//! - [`metrics`]: PSNR and SSIM against a reference, full-frame and in the partial-occlusion region;
 //! - [`shaders`]: the embedded SPIR-V modules.
 
 pub mod backend;
 pub mod error;
 pub mod io;
 pub mod layers;
+pub mod metrics;
 pub mod ops;
 pub mod scene;
 pub mod shaders;

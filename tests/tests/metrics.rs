@@ -1,0 +1,66 @@
+//! Error metrics against a reference.
+
+use dof::io::tonemap::tonemap;
+use dof::layers::RgbImage;
+use dof::metrics::{compare, psnr};
+
+fn gradient(w: u32, h: u32) -> RgbImage {
+    let mut img = RgbImage::new(w, h);
+    for y in 0..h {
+        for x in 0..w {
+            let i = img.index(x, y);
+            img.data[i] = [x as f32 / w as f32, y as f32 / h as f32, 0.25];
+        }
+    }
+    img
+}
+
+#[test]
+fn identical_images_are_perfect() {
+    let a = gradient(40, 24);
+    let e = compare(&a, &a, Some(&vec![true; 40 * 24])).unwrap();
+    assert_eq!(e.psnr_db, f64::INFINITY);
+    assert!((e.ssim - 1.0).abs() < 1e-9, "{}", e.ssim);
+    assert_eq!(e.psnr_masked_db, Some(f64::INFINITY));
+    assert!((e.ssim_masked.unwrap() - 1.0).abs() < 1e-9);
+}
+
+#[test]
+fn psnr_is_measured_on_the_display_transform() {
+    let a = gradient(32, 16);
+    let mut b = a.clone();
+    b.data[0] = [4.0, 4.0, 4.0];
+    let (p, q) = (tonemap(a.data[0], 1.0), tonemap(b.data[0], 1.0));
+    let sum: f64 = (0..3).map(|c| (p[c] as f64 - q[c] as f64).powi(2)).sum();
+    let expected = -10.0 * (sum / (3.0 * 32.0 * 16.0)).log10();
+    assert!((psnr(&b, &a).unwrap() - expected).abs() < 1e-9);
+}
+
+#[test]
+fn the_mask_selects_the_region() {
+    let a = gradient(32, 32);
+    let mut b = a.clone();
+    // Damage only the left half; a mask on the right half sees a perfect image.
+    for y in 0..32 {
+        for x in 0..16 {
+            let i = b.index(x, y);
+            b.data[i] = [0.9, 0.1, 0.7];
+        }
+    }
+    let right: Vec<bool> = (0..32 * 32).map(|i| i % 32 >= 16).collect();
+    let left: Vec<bool> = right.iter().map(|m| !m).collect();
+    let on_right = compare(&b, &a, Some(&right)).unwrap();
+    let on_left = compare(&b, &a, Some(&left)).unwrap();
+    assert_eq!(on_right.psnr_masked_db, Some(f64::INFINITY));
+    assert!(on_left.psnr_masked_db.unwrap() < on_left.psnr_db, "the damage is concentrated in the left half");
+    assert!(on_left.ssim_masked.unwrap() < on_right.ssim_masked.unwrap());
+    let none = compare(&b, &a, Some(&vec![false; 32 * 32])).unwrap();
+    assert_eq!((none.psnr_masked_db, none.ssim_masked, none.masked_pixels), (None, None, 0));
+}
+
+#[test]
+fn mismatched_inputs_are_errors() {
+    let a = gradient(8, 8);
+    assert!(compare(&a, &gradient(8, 9), None).is_err());
+    assert!(compare(&a, &a, Some(&[true; 3])).is_err());
+}

@@ -73,6 +73,10 @@ impl LayerStats {
     }
 }
 
+/// Most fragment slots a layered image may have (2^28, 5 GiB of fragments): refused before
+/// allocating rather than failing inside the allocator.
+pub const MAX_SLOTS: u64 = 1 << 28;
+
 const EMPTY: Fragment = Fragment { color: [0.0; 3], alpha: 0.0, depth: f32::INFINITY };
 
 impl LayeredImage {
@@ -84,8 +88,8 @@ impl LayeredImage {
             )));
         }
         let slots = width as u64 * height as u64 * max_layers as u64;
-        if slots > u32::MAX as u64 {
-            return Err(Error::TooLarge { what: "layered image (pixels x layers)".into(), size: slots, limit: u32::MAX as u64 });
+        if slots > MAX_SLOTS {
+            return Err(Error::TooLarge { what: "layered image (pixels x layers)".into(), size: slots, limit: MAX_SLOTS });
         }
         Ok(LayeredImage {
             width,

@@ -1,5 +1,5 @@
 //! Error of an image against its reference, measured on the documented display transform
-//! ([`crate::io::tonemap`] at exposure 1: ACES fit, then sRGB), as the evaluation reports it:
+//! ([`crate::io::tonemap::tonemap`] at exposure 1: ACES fit, then sRGB), as the evaluation reports it:
 //! - PSNR in dB over the three display-encoded channels in [0, 1], in floating point; identical
 //!   images give `+inf`;
 //! - SSIM from the `image-compare` crate (its MSSIM: SSIM over 8x8 windows, per channel, averaged) on

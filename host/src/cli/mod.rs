@@ -1,6 +1,7 @@
 pub mod bench;
 pub mod info;
 pub mod render;
+pub mod scenes;
 
 use dof::backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
 

@@ -3,10 +3,10 @@
 //! - [`camera`]: the pinhole camera (glTF conventions), pixel and lens rays, planar depth;
 //! - [`lens`]: lens settings (photographic or aperture radius) validated into a [`ThinLens`];
 //! - [`analytic`]: spheres, boxes, quads and planes, exact ray intersection, the lighting model;
-//! - [`builtin`]: named scenes with default camera and lens (`simple`, `railing`, `columns`,
+//! - [`builtin`](mod@builtin): named scenes with default camera and lens (`simple`, `railing`, `columns`,
 //!   `highlights`);
 //! - [`raycast`]: the exact partial multi-layer image (umbra threshold, disocclusion buffer);
-//! - [`reference`]: thin-lens distributed ray tracing (the ground truth) and the pinhole image;
+//! - [`reference`](mod@reference): thin-lens distributed ray tracing (the ground truth) and the pinhole image;
 //! - [`bvh`]: the bounding-volume hierarchy that keeps ray casts cheap;
 //! - [`sampling`]: stratified lens/pixel samples and the concentric disc mapping.
 //!
@@ -30,4 +30,4 @@ pub use dof_shaders::lens::{ArtistLens, ThinLens};
 pub use glam::Vec3;
 pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
 pub use raycast::{LayerOptions, MultiLayerImage, raycast_layers};
-pub use reference::{AutoOptions, Reference, ReferenceOptions, noise_margin_db, pinhole, psnr, reference, reference_auto, tonemap};
+pub use reference::{AutoOptions, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};

@@ -10,9 +10,10 @@
 //! stratified on its own); the image is their pooled mean. With `σ²` the per-sample variance, `MSE(A,
 //! B) = σ²(1/n_A + 1/n_B)` while the pooled mean's error against the converged image is
 //! `σ²/(n_A + n_B)`, so `PSNR(image, converged) ≈ PSNR(A, B) + 10·log10((1/n_A + 1/n_B)(n_A +
-//! n_B))`, i.e. `+6.02 dB` for equal halves (each half alone would be `+3.01 dB`). PSNR here is on
-//! the tone map [`tonemap`] (Reinhard `x/(1+x)` per channel, peak 1), so highlights far above 1 do
-//! not dominate it.
+//! n_B))`, i.e. `+6.02 dB` for equal halves (each half alone would be `+3.01 dB`). PSNR here is
+//! the evaluation's: on the documented display transform ([`crate::io::tonemap::tonemap`] at
+//! exposure 1, ACES fit then sRGB; see [`crate::metrics`]), so highlights far above 1 do not
+//! dominate it and the estimate speaks about the numbers the comparisons report.
 //!
 //! **Auto.** A method with true error `PSNR_m`, measured against a reference with noise `PSNR_r`,
 //! reads `PSNR_m − 10·log10(1 + 10^((PSNR_m − PSNR_r)/10))`. [`reference_auto`] doubles the sample
@@ -24,7 +25,8 @@
 //!
 //! Scenes with tiny HDR emitters converge slowly on this metric: a pixel that a bokeh disc barely
 //! overlaps is bright after tone mapping but hit by fewer than one sample in `spp`, so the error
-//! concentrates in a band at bokeh rims that shrinks only like `1/spp`. Expect the cap there.
+//! concentrates in a band at bokeh rims that narrows only slowly as `spp` grows. Expect the cap
+//! there, and read [`Reference::valid_up_to_psnr_db`] for what the result can still measure.
 
 use dof_shaders::lens::ThinLens;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -34,6 +36,7 @@ use super::analytic::Scene;
 use super::camera::{Camera, CameraFrame};
 use super::sampling::{concentric_disc, pixel_rng, stratified};
 use crate::error::{Error, Result};
+use crate::io::tonemap::tonemap;
 use crate::layers::RgbImage;
 
 /// One reference render.
@@ -60,7 +63,7 @@ impl Default for ReferenceOptions {
 /// Settings of [`reference_auto`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct AutoOptions {
-    /// Best PSNR (dB, on [`tonemap`]) a compared method may reach and still be measured within
+    /// Best PSNR (dB, on the display transform) a compared method may reach and still be measured within
     /// `tolerance_db` (default 40).
     pub target_psnr_db: f64,
     /// Largest bias the reference's noise may put on such a measurement (default 0.5 dB).
@@ -101,7 +104,7 @@ pub struct Reference {
     pub image: RgbImage,
     /// Samples per pixel used.
     pub spp: u32,
-    /// Estimated PSNR (dB, on [`tonemap`]) of `image` against the converged image; `None` for
+    /// Estimated PSNR (dB, on the display transform) of `image` against the converged image; `None` for
     /// `spp = 1`; `+inf` when the two halves agree exactly (e.g. a constant image).
     pub noise_psnr_db: Option<f64>,
     /// The same estimate over the requested region only (`None` without a region or for `spp = 1`).
@@ -124,27 +127,6 @@ impl Reference {
     }
 }
 
-/// The display transform PSNRs here use: Reinhard `x/(1+x)` per channel (negative and NaN → 0).
-pub fn tonemap(x: f32) -> f32 {
-    if x > 0.0 {
-        if x.is_infinite() { 1.0 } else { x / (1.0 + x) }
-    } else {
-        0.0
-    }
-}
-
-/// PSNR (dB) between two images on [`tonemap`], peak 1; `+inf` for identical images. Errors on
-/// different sizes.
-pub fn psnr(a: &RgbImage, b: &RgbImage) -> Result<f64> {
-    if a.width != b.width || a.height != b.height || a.data.len() != b.data.len() {
-        return Err(Error::InvalidArgument(format!(
-            "PSNR needs images of one size, got {}x{} and {}x{}",
-            a.width, a.height, b.width, b.height
-        )));
-    }
-    Ok(psnr_of_mse(tonemapped_mse(a.data.iter().copied(), b.data.iter().copied(), None)))
-}
-
 fn psnr_of_mse(mse: f64) -> f64 {
     if mse > 0.0 { -10.0 * mse.log10() } else { f64::INFINITY }
 }
@@ -158,8 +140,9 @@ fn tonemapped_mse(a: impl Iterator<Item = [f32; 3]>, b: impl Iterator<Item = [f3
             continue;
         }
         n += 1;
+        let (p, q) = (tonemap(p, 1.0), tonemap(q, 1.0));
         for k in 0..3 {
-            let d = tonemap(p[k]) as f64 - tonemap(q[k]) as f64;
+            let d = p[k] as f64 - q[k] as f64;
             sum += d * d;
         }
     }

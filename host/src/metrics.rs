@@ -41,21 +41,24 @@ fn check_sizes(a: &RgbImage, b: &RgbImage, mask: Option<&[bool]>) -> Result<()> 
     Ok(())
 }
 
-/// Squared display-space error of each pixel, summed over its channels.
+/// Squared display-space error of one pixel, summed over its channels.
+#[inline]
+pub fn squared_error(p: [f32; 3], q: [f32; 3]) -> f64 {
+    let (p, q) = (tonemap(p, 1.0), tonemap(q, 1.0));
+    (0..3).map(|c| (p[c] as f64 - q[c] as f64).powi(2)).sum()
+}
+
+/// PSNR (signal peak 1) of a mean squared error per channel; `+inf` for 0.
+pub fn psnr_of_mse(mse: f64) -> f64 {
+    if mse > 0.0 { -10.0 * mse.log10() } else { f64::INFINITY }
+}
+
 fn squared_errors(a: &RgbImage, b: &RgbImage) -> Vec<f64> {
-    a.data
-        .iter()
-        .zip(&b.data)
-        .map(|(&p, &q)| {
-            let (p, q) = (tonemap(p, 1.0), tonemap(q, 1.0));
-            (0..3).map(|c| (p[c] as f64 - q[c] as f64).powi(2)).sum()
-        })
-        .collect()
+    a.data.iter().zip(&b.data).map(|(&p, &q)| squared_error(p, q)).collect()
 }
 
 fn psnr_from(sum: f64, pixels: u64) -> f64 {
-    let mse = sum / (3 * pixels.max(1)) as f64;
-    if mse == 0.0 { f64::INFINITY } else { -10.0 * mse.log10() }
+    psnr_of_mse(sum / (3 * pixels.max(1)) as f64)
 }
 
 /// PSNR of `image` against `reference` on the display transform.

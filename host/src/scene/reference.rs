@@ -36,7 +36,7 @@ use super::analytic::Scene;
 use super::camera::{Camera, CameraFrame};
 use super::sampling::{concentric_disc, pixel_rng, stratified};
 use crate::error::{Error, Result};
-use crate::io::tonemap::tonemap;
+use crate::metrics::{psnr_of_mse, squared_error};
 use crate::layers::RgbImage;
 
 /// One reference render.
@@ -127,23 +127,14 @@ impl Reference {
     }
 }
 
-fn psnr_of_mse(mse: f64) -> f64 {
-    if mse > 0.0 { -10.0 * mse.log10() } else { f64::INFINITY }
-}
-
 /// Mean squared difference of the tone-mapped channels, over `region` when given.
 fn tonemapped_mse(a: impl Iterator<Item = [f32; 3]>, b: impl Iterator<Item = [f32; 3]>, region: Option<&[bool]>) -> f64 {
     let mut sum = 0.0f64;
     let mut n = 0usize;
     for (i, (p, q)) in a.zip(b).enumerate() {
-        if region.is_some_and(|r| !r.get(i).copied().unwrap_or(false)) {
-            continue;
-        }
-        n += 1;
-        let (p, q) = (tonemap(p, 1.0), tonemap(q, 1.0));
-        for k in 0..3 {
-            let d = p[k] as f64 - q[k] as f64;
-            sum += d * d;
+        if region.is_none_or(|r| r.get(i).copied().unwrap_or(false)) {
+            n += 1;
+            sum += squared_error(p, q);
         }
     }
     sum / (3 * n.max(1)) as f64

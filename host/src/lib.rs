@@ -6,6 +6,7 @@
 //! - [`layers`]: colour and multi-layer images, the data every method shares;
 //! - [`io`]: EXR and PNG in and out;
 //! - [`scene`]: lenses, cameras, analytic scenes and their exact references;
+//! - [`methods`]: the depth-of-field methods (so far the gathering baseline), on any backend;
 //! - [`metrics`]: PSNR and SSIM against a reference, full-frame and in the partial-occlusion region;
 //! - [`shaders`]: the embedded SPIR-V modules.
 
@@ -13,6 +14,7 @@ pub mod backend;
 pub mod error;
 pub mod io;
 pub mod layers;
+pub mod methods;
 pub mod metrics;
 pub mod ops;
 pub mod scene;

@@ -205,7 +205,7 @@ fn abs(x: f32) -> f32 {
 
 /// Neither NaN nor infinite, by comparison.
 #[inline]
-fn is_finite(x: f32) -> bool {
+pub(crate) fn is_finite(x: f32) -> bool {
     x - x == 0.0
 }
 

@@ -8,6 +8,7 @@
 pub mod exec;
 #[macro_use]
 pub mod kernel;
+pub mod gather;
 pub mod keys;
 pub mod lens;
 pub mod scan;
@@ -19,5 +20,5 @@ pub use kernel::KernelDesc;
 /// Every kernel, in a stable order: the host builds one pipeline for each.
 #[cfg(not(target_arch = "spirv"))]
 pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
-    scan::KERNELS.iter().chain(sort::KERNELS.iter()).copied()
+    scan::KERNELS.iter().chain(sort::KERNELS.iter()).chain(gather::KERNELS.iter()).copied()
 }

@@ -152,6 +152,31 @@ pub(crate) fn check_dispatch(
     Ok(())
 }
 
+/// Creates buffers of the given sizes, runs `f` with them, and destroys them whether `f` succeeded
+/// or not (a buffer created before a failing one is destroyed too).
+pub fn with_buffers<T>(
+    backend: &mut dyn Backend,
+    sizes: &[(u64, &str)],
+    f: impl FnOnce(&mut dyn Backend, &[BufferId]) -> Result<T>,
+) -> Result<T> {
+    let mut buffers = Vec::with_capacity(sizes.len());
+    let mut result = Ok(());
+    for &(words, label) in sizes {
+        match backend.create_buffer(words, label) {
+            Ok(b) => buffers.push(b),
+            Err(e) => {
+                result = Err(e);
+                break;
+            }
+        }
+    }
+    let result = result.and_then(|_| f(backend, &buffers));
+    for b in buffers {
+        backend.destroy_buffer(b);
+    }
+    result
+}
+
 /// Push constants as words, from a kernel's `#[repr(C)]` parameter struct.
 pub fn push_words<P: bytemuck::Pod>(params: &P) -> Vec<u32> {
     let bytes = bytemuck::bytes_of(params);

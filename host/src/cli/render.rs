@@ -17,6 +17,14 @@ pub enum Method {
     Layers,
     /// The exact reference: thin-lens distributed ray tracing (analytic scenes only).
     Reference,
+    /// The gathering baseline (single layer, scatter-as-gather) on the chosen backend.
+    Gather,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum BackendArg {
+    Cpu,
+    Vulkan,
 }
 
 #[derive(clap::Args)]
@@ -63,6 +71,13 @@ pub struct RenderArgs {
     /// Output EXR; a PNG preview is written beside it. Default `out/<scene>-<method>.exr`.
     #[arg(long)]
     out: Option<PathBuf>,
+    /// Backend that runs the kernels of the blurring methods.
+    #[arg(long, value_enum, default_value = "cpu")]
+    backend: BackendArg,
+    /// Largest CoC diameter in pixels the blurring methods honour (default: what the scene needs,
+    /// up to the method's limit).
+    #[arg(long)]
+    max_coc: Option<u32>,
     /// Exposure multiplier of the PNG preview.
     #[arg(long, default_value_t = 1.0)]
     exposure: f32,
@@ -124,7 +139,16 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             Ok(())
         }
         Method::Reference => bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)"),
+        Method::Gather => bail!("--method gather needs a lens; EXR input with a lens is not wired yet (use a built-in scene)"),
     }
+}
+
+fn backend(choice: BackendArg) -> anyhow::Result<Box<dyn dof::backend::Backend>> {
+    let choice = match choice {
+        BackendArg::Cpu => super::BackendChoice::Cpu,
+        BackendArg::Vulkan => super::BackendChoice::Vulkan,
+    };
+    super::backends(choice, false)?.pop().context("no backend")
 }
 
 fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
@@ -180,6 +204,14 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             write_png_preview(out.with_extension("png"), &front, args.exposure)?;
             println!("wrote {} and {}", out.display(), out.with_extension("png").display());
             Ok(())
+        }
+        Method::Gather => {
+            let (front, depth) = layered.layers.front();
+            let mut b = backend(args.backend)?;
+            let blurred = dof::methods::gather::gather(b.as_mut(), &front, &depth, &lens, args.max_coc.map(|d| d.div_ceil(2)))?;
+            let ms: f64 = blurred.times.iter().map(|t| t.ms).sum();
+            println!("gather on {}: radius {} px, {ms:.2} ms in kernels", b.device_name(), blurred.radius);
+            write_outputs(out, &blurred.image, &[("Z", &depth), ("coc", &coc)], args.exposure)
         }
         Method::Reference => {
             let reference = match args.samples {

@@ -1,6 +1,6 @@
 //! Exclusive prefix scan of `u32` words in place, on any backend (kernels in `dof_shaders::scan`).
 
-use crate::backend::{Backend, BufferId, push_words};
+use crate::backend::{Backend, BufferId, push_words, with_buffers};
 use crate::error::{Error, Result};
 use dof_shaders::scan::{ADD, BLOCK, BLOCK_SCAN, MAX_GROUPS, ScanParams};
 
@@ -80,18 +80,18 @@ impl ScanScratch {
 /// Exclusive scan of `values` on `backend`: the scanned words and their total.
 pub fn exclusive_scan(backend: &mut dyn Backend, values: &[u32]) -> Result<(Vec<u32>, u32)> {
     let len = values.len() as u64;
-    let data = backend.create_buffer(len, "scan/data")?;
-    let scratch = ScanScratch::new(backend, len)?;
-    let result = (|| {
-        backend.write_buffer(data, 0, values)?;
-        scratch.record(backend, data, 0, len)?;
-        backend.submit()?;
-        let scanned = backend.read_buffer(data, 0, len)?;
-        let (tb, to) = scratch.total(len);
-        let total = backend.read_buffer(tb, to, 1)?[0];
-        Ok((scanned, total))
-    })();
-    scratch.destroy(backend);
-    backend.destroy_buffer(data);
-    result
+    with_buffers(backend, &[(len, "scan/data")], |backend, b| {
+        let data = b[0];
+        let scratch = ScanScratch::new(backend, len)?;
+        let result = (|| {
+            backend.write_buffer(data, 0, values)?;
+            scratch.record(backend, data, 0, len)?;
+            backend.submit()?;
+            let scanned = backend.read_buffer(data, 0, len)?;
+            let (tb, to) = scratch.total(len);
+            Ok((scanned, backend.read_buffer(tb, to, 1)?[0]))
+        })();
+        scratch.destroy(backend);
+        result
+    })
 }

@@ -2,7 +2,7 @@
 //! `dof_shaders::sort`). The plan is sized from the device: the largest workgroup-memory class from
 //! its shared-memory limit, the global path recorded only when a list can exceed that class.
 
-use crate::backend::{Backend, BufferId, push_words};
+use crate::backend::{Backend, BufferId, push_words, with_buffers};
 use crate::error::{Error, Result};
 use dof_shaders::sort::{
     self, CLASS_CAPS, CLASSIFY, ClassifyParams, GLOBAL_CLASS, GLOBAL_LOCAL, GLOBAL_STEP, GLOBAL_STORE, LOCAL_BLOCK,
@@ -207,18 +207,15 @@ pub fn sort_on(backend: &mut dyn Backend, input: &SortInput) -> Result<SortOutpu
     let n = input.keys.len() as u64;
     let key_bits: Vec<u32> = input.keys.iter().map(|k| k.to_bits()).collect();
     let seg_words: Vec<u32> = input.segments.iter().flat_map(|&(o, l)| [o, l]).collect();
-    let mut buffers = Vec::new();
-    let result = (|| {
-        let mut make = |backend: &mut dyn Backend, words: u64, label: &str| -> Result<BufferId> {
-            let b = backend.create_buffer(words, label)?;
-            buffers.push(b);
-            Ok(b)
-        };
-        let segments = make(backend, seg_words.len() as u64, "sort/segments")?;
-        let keys_in = make(backend, n, "sort/keys-in")?;
-        let values_in = make(backend, n, "sort/values-in")?;
-        let keys_out = make(backend, n, "sort/keys-out")?;
-        let values_out = make(backend, n, "sort/values-out")?;
+    let sizes = [
+        (seg_words.len() as u64, "sort/segments"),
+        (n, "sort/keys-in"),
+        (n, "sort/values-in"),
+        (n, "sort/keys-out"),
+        (n, "sort/values-out"),
+    ];
+    with_buffers(backend, &sizes, |backend, b| {
+        let (segments, keys_in, values_in, keys_out, values_out) = (b[0], b[1], b[2], b[3], b[4]);
         backend.write_buffer(segments, 0, &seg_words)?;
         backend.write_buffer(keys_in, 0, &key_bits)?;
         backend.write_buffer(values_in, 0, &input.values)?;
@@ -234,9 +231,5 @@ pub fn sort_on(backend: &mut dyn Backend, input: &SortInput) -> Result<SortOutpu
         });
         sort.destroy(backend);
         done
-    })();
-    for b in buffers {
-        backend.destroy_buffer(b);
-    }
-    result
+    })
 }

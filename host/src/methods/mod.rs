@@ -1,0 +1,4 @@
+//! Depth-of-field methods, each a sequence of kernel dispatches recorded on any
+//! [`crate::backend::Backend`], so it runs on the CPU and on Vulkan from the same kernels.
+
+pub mod gather;

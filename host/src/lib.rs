@@ -7,11 +7,13 @@
 //! - [`io`]: EXR and PNG in and out;
 //! - [`scene`]: lenses, cameras, analytic scenes and their exact references;
 //! - [`methods`]: the depth-of-field methods (so far the gathering baseline), on any backend;
+//! - [`eval`]: every method on every scene and backend, timed and measured (`dof eval`);
 //! - [`metrics`]: PSNR and SSIM against a reference, full-frame and in the partial-occlusion region;
 //! - [`shaders`]: the embedded SPIR-V modules.
 
 pub mod backend;
 pub mod error;
+pub mod eval;
 pub mod io;
 pub mod layers;
 pub mod methods;

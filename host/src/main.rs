@@ -17,6 +17,8 @@ enum Command {
     Render(cli::render::RenderArgs),
     /// Backends, Vulkan devices and their limits, and a sort and scan self-check on every backend.
     Info(cli::info::InfoArgs),
+    /// Error against run time for every method, setting, scene and backend (report.json, report.md).
+    Eval(cli::eval::EvalArgs),
     /// The built-in scenes: lens, multi-layer statistics, reference sample counts.
     Scenes(cli::scenes::ScenesArgs),
     /// Benchmarks of the kernels on each backend.
@@ -38,6 +40,7 @@ fn main() -> std::process::ExitCode {
         Command::Render(args) => cli::render::run(&args),
         Command::Info(args) => cli::info::run(&args),
         Command::Scenes(args) => cli::scenes::run(&args),
+        Command::Eval(args) => cli::eval::run(&args),
         Command::Bench(cmd) => cli::bench::run(&cmd),
     };
     match result {

@@ -1,0 +1,50 @@
+//! `dof eval`: error against run time for every method, setting, scene and backend.
+
+use super::{BackendChoice, backends};
+use anyhow::Context;
+use dof::eval::{EvalOptions, evaluate};
+use std::path::PathBuf;
+
+#[derive(clap::Args)]
+pub struct EvalArgs {
+    /// Scenes (comma-separated); default all built-in scenes.
+    #[arg(long, value_delimiter = ',')]
+    scenes: Vec<String>,
+    /// Methods (comma-separated); default all.
+    #[arg(long, value_delimiter = ',')]
+    methods: Vec<String>,
+    #[arg(long, value_enum, default_value_t)]
+    backend: BackendChoice,
+    /// Small images, a 64-spp reference, fewer settings and runs (what CI runs).
+    #[arg(long)]
+    quick: bool,
+    /// Timed runs per point (default 5, 3 with --quick).
+    #[arg(long)]
+    runs: Option<usize>,
+    #[arg(long, default_value = "out/eval")]
+    out: PathBuf,
+}
+
+pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
+    let scenes = if args.scenes.is_empty() {
+        dof::scene::builtin_names().iter().map(|s| s.to_string()).collect()
+    } else {
+        args.scenes.clone()
+    };
+    let options = EvalOptions {
+        scenes,
+        methods: args.methods.clone(),
+        quick: args.quick,
+        runs: args.runs.unwrap_or(if args.quick { 3 } else { 5 }).max(1),
+        progress: true,
+    };
+    let mut backends = backends(args.backend, false)?;
+    let report = evaluate(&options, &mut backends)?;
+    std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create {}", args.out.display()))?;
+    std::fs::write(args.out.join("report.json"), report.to_json())?;
+    let md = report.to_markdown();
+    std::fs::write(args.out.join("report.md"), &md)?;
+    println!("{md}");
+    println!("wrote {} and {}", args.out.join("report.json").display(), args.out.join("report.md").display());
+    Ok(())
+}

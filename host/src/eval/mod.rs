@@ -1,0 +1,123 @@
+//! The evaluation: every scene × method × quality setting × backend, timed per stage and measured
+//! against the scene's exact reference, full frame and inside the partial-occlusion region.
+//! Methods come from [`methods::registry`], so a new method appears here without changes.
+//!
+//! Timing: one warm-up run, then the median of `runs` runs, per stage (GPU timestamps on Vulkan,
+//! wall time per dispatch on the CPU backend). Error: [`crate::metrics`] against the reference.
+
+pub mod methods;
+pub mod report;
+
+use crate::backend::Backend;
+use crate::error::{Error, Result};
+use crate::metrics::compare;
+use crate::scene::{AutoOptions, LayerOptions, ReferenceOptions, builtin, raycast_layers, reference, reference_auto};
+use methods::{MethodInput, registry};
+use report::{Record, Report, SceneInfo};
+use std::collections::BTreeMap;
+
+pub struct EvalOptions {
+    pub scenes: Vec<String>,
+    /// Method names; empty for all.
+    pub methods: Vec<String>,
+    /// Small images, a fixed 64-spp reference, the quick settings and 3 timed runs.
+    pub quick: bool,
+    /// Timed runs per point after the warm-up (the median is reported).
+    pub runs: usize,
+    pub progress: bool,
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    if v.is_empty() {
+        return 0.0;
+    }
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// Runs the evaluation on `backends` (host-only methods run once, on the first).
+pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Result<Report> {
+    let all = registry();
+    for m in &options.methods {
+        if !all.iter().any(|x| x.name() == m) {
+            let names: Vec<_> = all.iter().map(|x| x.name()).collect();
+            return Err(Error::InvalidArgument(format!("unknown method `{m}`; the methods are: {}", names.join(", "))));
+        }
+    }
+    if backends.is_empty() {
+        return Err(Error::InvalidArgument("the evaluation needs at least one backend".into()));
+    }
+    let mut report = Report::new(options.quick);
+    for name in &options.scenes {
+        let mut scene = builtin(name)?;
+        if options.quick {
+            scene = scene.with_size(160, 90);
+        }
+        let lens = scene.thin_lens()?;
+        let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default())?;
+        let exact = if options.quick {
+            reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: 64, progress: options.progress, ..Default::default() })?
+        } else {
+            let auto = AutoOptions { max_spp: 1024, region: Some(ml.mask.clone()), progress: options.progress, ..Default::default() };
+            reference_auto(&scene.scene, &scene.camera, &lens, &auto)?
+        };
+        let (front, depth) = ml.layers.front();
+        report.scenes.push(SceneInfo {
+            name: name.clone(),
+            width: scene.camera.width,
+            height: scene.camera.height,
+            reference_spp: exact.spp,
+            reference_noise_psnr_db: exact.noise_psnr_db,
+            fragments_per_pixel: ml.with_mask.fragments_per_pixel(),
+            multi_layer_share: ml.with_mask.multi_layer_share(),
+            occlusion_region_share: ml.mask_share(),
+        });
+        let input = MethodInput { front, depth, layers: ml.layers, lens };
+        for method in all.iter().filter(|m| options.methods.is_empty() || options.methods.iter().any(|n| n == m.name())) {
+            let targets = if method.uses_backend() { backends.len() } else { 1 };
+            for setting in method.settings(options.quick) {
+                for backend in backends.iter_mut().take(targets) {
+                    let b = backend.as_mut();
+                    let mut totals = Vec::new();
+                    let mut stages: BTreeMap<String, Vec<f64>> = BTreeMap::new();
+                    let mut output = None;
+                    for run in 0..=options.runs {
+                        let out = method.run(b, &input, &setting)?;
+                        if run > 0 {
+                            let mut per_stage: BTreeMap<String, f64> = BTreeMap::new();
+                            for t in &out.stages {
+                                *per_stage.entry(t.label.clone()).or_default() += t.ms;
+                            }
+                            totals.push(per_stage.values().fold(0.0, |a, b| a + b));
+                            for (k, v) in per_stage {
+                                stages.entry(k).or_default().push(v);
+                            }
+                        }
+                        output = Some(out);
+                    }
+                    let image = output.map(|o| o.image).ok_or_else(|| Error::InvalidArgument("no run".into()))?;
+                    let error = compare(&image, &exact.image, Some(&ml.mask))?;
+                    let record = Record {
+                        scene: name.clone(),
+                        method: method.name().to_string(),
+                        setting: setting.label.clone(),
+                        backend: if method.uses_backend() { b.kind().to_string() } else { "host".into() },
+                        device: if method.uses_backend() { b.device_name() } else { "host".into() },
+                        time_ms: median(totals),
+                        stages_ms: stages.into_iter().map(|(k, v)| (k, median(v))).collect(),
+                        psnr_db: error.psnr_db,
+                        ssim: error.ssim,
+                        psnr_masked_db: error.psnr_masked_db,
+                        ssim_masked: error.ssim_masked,
+                        runs: options.runs,
+                    };
+                    if options.progress {
+                        eprintln!("{}", record.line());
+                    }
+                    report.records.push(record);
+                }
+            }
+        }
+    }
+    Ok(report)
+}

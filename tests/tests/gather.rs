@@ -100,3 +100,24 @@ fn gather_against_the_exact_reference() {
     assert!(gathered.psnr_masked_db.unwrap() > sharp.psnr_masked_db.unwrap() + 2.0);
     assert!(gathered.ssim > sharp.ssim && gathered.ssim_masked.unwrap() > sharp.ssim_masked.unwrap());
 }
+
+/// Extreme sizes and blur: a 1x1 image is returned as is; sizes that are not multiples of the 8x8
+/// tile are covered to the last pixel; a CoC far beyond the window is capped, not an error.
+#[test]
+fn extreme_sizes_and_blur() {
+    let mut cpu = CpuBackend::new();
+    let one = RgbImage { width: 1, height: 1, data: vec![[0.5, 2.0, 7.0]] };
+    let out = gather(&mut cpu, &one, &[3.0], &lens(0.05), None).unwrap();
+    assert_eq!(out.image, one);
+
+    let (img, depth) = noise_image(17, 5);
+    let out = gather(&mut cpu, &img, &depth, &lens(0.0), None).unwrap();
+    assert_eq!(out.image, img, "every pixel of a 17x5 image, including the last column and row");
+
+    // Focus at 2 m, everything at 0.1 m: a CoC of thousands of pixels, capped at the window.
+    let (img, _) = noise_image(24, 24);
+    let near = vec![0.1f32; 24 * 24];
+    let out = gather(&mut cpu, &img, &near, &lens(0.05), Some(6)).unwrap();
+    assert_eq!(out.radius, 6);
+    assert!(out.image.data.iter().all(|p| p.iter().all(|c| c.is_finite())));
+}

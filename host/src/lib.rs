@@ -22,6 +22,7 @@ pub mod ops;
 pub mod scene;
 pub mod shaders;
 pub mod source_hash;
+pub mod timing;
 pub mod workload;
 
 pub use error::{Error, Result};

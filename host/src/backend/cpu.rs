@@ -161,7 +161,6 @@ impl Backend for CpuBackend {
         push: &[u32],
         label: &str,
     ) -> Result<()> {
-        check_dispatch(&self.limits, kernel, None, buffers.len(), push.len())?;
         let a = self.read_buffer(args, args_offset_words, 3)?;
         let groups = [a[0], a[1], a[2]];
         check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), push.len())?;

@@ -1,7 +1,8 @@
 //! `dof bench`: kernel throughput on each backend, as ratios to a CPU reference measured in the same run.
 
 use super::{BackendChoice, backends};
-use dof::backend::Backend;
+use dof::backend::with_buffers;
+use dof::timing::{RunTimes, median};
 use dof::ops::sort::{SegmentedSort, SortInput};
 use dof::workload;
 use std::time::Instant;
@@ -35,11 +36,6 @@ pub fn run(cmd: &BenchCommand) -> anyhow::Result<()> {
     }
 }
 
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
-
 /// The reference every backend is compared with: `slice::sort_unstable_by` on each list, one thread.
 fn std_sort_ms(input: &SortInput, runs: usize) -> f64 {
     let times = (0..runs.max(1))
@@ -67,56 +63,50 @@ fn sort(args: &SortArgs) -> anyhow::Result<()> {
     println!("{} lists, {} keys (mean list {:.0}, longest {}); list lengths by power of four from 1: {:?}",
         input.segments.len(), n, n as f64 / input.segments.len().max(1) as f64, input.max_list_len(), hist);
     println!("std sort_unstable_by (1 thread): {std_ms:.2} ms, {:.1} Mkeys/s", n as f64 / std_ms / 1e3);
+    let key_bits: Vec<u32> = input.keys.iter().map(|k| k.to_bits()).collect();
+    let seg: Vec<u32> = input.segments.iter().flat_map(|&(o, l)| [o, l]).collect();
+    let lists = input.segments.len() as u32;
+    let sizes = [
+        (seg.len() as u64, "bench/segments"),
+        (n as u64, "bench/keys-in"),
+        (n as u64, "bench/values-in"),
+        (n as u64, "bench/keys-out"),
+        (n as u64, "bench/values-out"),
+    ];
     for mut backend in backends(args.backend, false)? {
-        let b: &mut dyn Backend = backend.as_mut();
-        let key_bits: Vec<u32> = input.keys.iter().map(|k| k.to_bits()).collect();
-        let seg: Vec<u32> = input.segments.iter().flat_map(|&(o, l)| [o, l]).collect();
-        let segments = b.create_buffer(seg.len() as u64, "bench/segments")?;
-        let keys_in = b.create_buffer(n as u64, "bench/keys-in")?;
-        let values_in = b.create_buffer(n as u64, "bench/values-in")?;
-        let keys_out = b.create_buffer(n as u64, "bench/keys-out")?;
-        let values_out = b.create_buffer(n as u64, "bench/values-out")?;
-        b.write_buffer(segments, 0, &seg)?;
-        b.write_buffer(keys_in, 0, &key_bits)?;
-        b.write_buffer(values_in, 0, &input.values)?;
-        let sort = SegmentedSort::new(b, input.segments.len() as u32, n as u32, input.max_list_len())?;
-        let mut device_ms = Vec::new();
-        let mut wall_ms = Vec::new();
-        let mut stages: std::collections::BTreeMap<String, Vec<f64>> = Default::default();
-        for run in 0..=args.runs {
-            let start = Instant::now();
-            sort.record(b, segments, input.segments.len() as u32, keys_in, values_in, keys_out, values_out)?;
-            let times = b.submit()?;
-            let wall = start.elapsed().as_secs_f64() * 1e3;
-            if run == 0 {
-                continue; // warm-up: pipeline creation, first touch of memory
+        with_buffers(backend.as_mut(), &sizes, |b, buf| {
+            let (segments, keys_in, values_in, keys_out, values_out) = (buf[0], buf[1], buf[2], buf[3], buf[4]);
+            b.write_buffer(segments, 0, &seg)?;
+            b.write_buffer(keys_in, 0, &key_bits)?;
+            b.write_buffer(values_in, 0, &input.values)?;
+            let sort = SegmentedSort::new(b, lists, n as u32, input.max_list_len())?;
+            let mut times = RunTimes::default();
+            let mut wall_ms = Vec::new();
+            // Run 0 is the warm-up: pipeline creation, first touch of memory.
+            for run in 0..=args.runs {
+                let start = Instant::now();
+                sort.record(b, segments, lists, keys_in, values_in, keys_out, values_out)?;
+                let commands = b.submit()?;
+                if run > 0 {
+                    wall_ms.push(start.elapsed().as_secs_f64() * 1e3);
+                    times.add(&commands);
+                }
             }
-            wall_ms.push(wall);
-            device_ms.push(times.iter().map(|t| t.ms).sum());
-            let mut per_stage: std::collections::BTreeMap<String, f64> = Default::default();
-            for t in &times {
-                *per_stage.entry(t.label.clone()).or_default() += t.ms;
+            let stats = sort.stats(b);
+            sort.destroy(b);
+            let stats = stats?;
+            let device = times.median_total();
+            println!(
+                "{:>6} on {}: {:.2} ms in kernels ({:.2} ms wall), {:.1} Mkeys/s, {:.2}x std sort; lists per class {:?} (largest class {}), {} on the global path",
+                b.kind().to_string(), b.device_name(), device, median(wall_ms), n as f64 / device / 1e3, std_ms / device,
+                dof_shaders::sort::CLASS_CAPS.iter().zip(&stats.class_counts).filter(|(_, c)| **c > 0).collect::<Vec<_>>(),
+                stats.top_class_cap, stats.global_lists
+            );
+            for (stage, ms) in times.median_stages() {
+                println!("         {stage:<22} {ms:8.3} ms");
             }
-            for (k, v) in per_stage {
-                stages.entry(k).or_default().push(v);
-            }
-        }
-        let stats = sort.stats(b)?;
-        let device = median(device_ms);
-        let wall = median(wall_ms);
-        println!(
-            "{:>6} on {}: {:.2} ms in kernels ({:.2} ms wall), {:.1} Mkeys/s, {:.2}x std sort; lists per class {:?} (largest class {}), {} on the global path",
-            b.kind().to_string(), b.device_name(), device, wall, n as f64 / device / 1e3, std_ms / device,
-            dof_shaders::sort::CLASS_CAPS.iter().zip(&stats.class_counts).filter(|(_, c)| **c > 0).collect::<Vec<_>>(),
-            stats.top_class_cap, stats.global_lists
-        );
-        for (stage, v) in stages {
-            println!("         {stage:<22} {:8.3} ms", median(v));
-        }
-        sort.destroy(b);
-        for buf in [segments, keys_in, values_in, keys_out, values_out] {
-            b.destroy_buffer(buf);
-        }
+            Ok(())
+        })?;
     }
     Ok(())
 }

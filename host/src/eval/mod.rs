@@ -14,7 +14,7 @@ use crate::metrics::compare;
 use crate::scene::{AutoOptions, LayerOptions, ReferenceOptions, builtin, raycast_layers, reference, reference_auto};
 use methods::{MethodInput, registry};
 use report::{Record, Report, SceneInfo};
-use std::collections::BTreeMap;
+use crate::timing::RunTimes;
 
 pub struct EvalOptions {
     pub scenes: Vec<String>,
@@ -25,14 +25,6 @@ pub struct EvalOptions {
     /// Timed runs per point after the warm-up (the median is reported).
     pub runs: usize,
     pub progress: bool,
-}
-
-fn median(mut v: Vec<f64>) -> f64 {
-    if v.is_empty() {
-        return 0.0;
-    }
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
 }
 
 /// Runs the evaluation on `backends` (host-only methods run once, on the first).
@@ -78,20 +70,12 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
             for setting in method.settings(options.quick) {
                 for backend in backends.iter_mut().take(targets) {
                     let b = backend.as_mut();
-                    let mut totals = Vec::new();
-                    let mut stages: BTreeMap<String, Vec<f64>> = BTreeMap::new();
+                    let mut times = RunTimes::default();
                     let mut output = None;
                     for run in 0..=options.runs {
                         let out = method.run(b, &input, &setting)?;
                         if run > 0 {
-                            let mut per_stage: BTreeMap<String, f64> = BTreeMap::new();
-                            for t in &out.stages {
-                                *per_stage.entry(t.label.clone()).or_default() += t.ms;
-                            }
-                            totals.push(per_stage.values().fold(0.0, |a, b| a + b));
-                            for (k, v) in per_stage {
-                                stages.entry(k).or_default().push(v);
-                            }
+                            times.add(&out.stages);
                         }
                         output = Some(out);
                     }
@@ -103,8 +87,8 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                         setting: setting.label.clone(),
                         backend: if method.uses_backend() { b.kind().to_string() } else { "host".into() },
                         device: if method.uses_backend() { b.device_name() } else { "host".into() },
-                        time_ms: median(totals),
-                        stages_ms: stages.into_iter().map(|(k, v)| (k, median(v))).collect(),
+                        time_ms: times.median_total(),
+                        stages_ms: times.median_stages(),
                         psnr_db: error.psnr_db,
                         ssim: error.ssim,
                         psnr_masked_db: error.psnr_masked_db,

@@ -12,7 +12,6 @@ use dof_shaders::sort::{
 /// Buffers and sizes of a segmented sort, allocated once for a maximum problem size.
 pub struct SegmentedSort {
     max_segments: u32,
-    max_elements: u32,
     max_list_len: u32,
     top_class: u32,
     plan: BufferId,
@@ -55,7 +54,7 @@ impl SegmentedSort {
         } else {
             None
         };
-        Ok(SegmentedSort { max_segments, max_elements, max_list_len, top_class, plan, lists, scratch })
+        Ok(SegmentedSort { max_segments, max_list_len, top_class, plan, lists, scratch })
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {
@@ -139,9 +138,6 @@ impl SegmentedSort {
         })
     }
 
-    pub fn max_elements(&self) -> u32 {
-        self.max_elements
-    }
 }
 
 /// A sort problem on the host: keys, payloads and the `(offset, len)` of each list.

@@ -148,6 +148,18 @@ impl LayeredImage {
         (image, depth)
     }
 
+    /// The front fragment of every pixel as a one-layer image: the input of single-layer methods.
+    pub fn front_layer(&self) -> LayeredImage {
+        let l = self.max_layers as usize;
+        LayeredImage {
+            width: self.width,
+            height: self.height,
+            max_layers: 1,
+            counts: self.counts.iter().map(|&c| c.min(1)).collect(),
+            fragments: self.fragments.iter().step_by(l).copied().collect(),
+        }
+    }
+
     pub fn stats(&self) -> LayerStats {
         let mut s = LayerStats { pixels: self.counts.len() as u64, ..Default::default() };
         for &c in &self.counts {

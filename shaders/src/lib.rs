@@ -9,10 +9,13 @@ pub mod exec;
 #[macro_use]
 pub mod kernel;
 pub mod gather;
+pub mod half;
 pub mod keys;
 pub mod lens;
+pub mod math;
 pub mod scan;
 pub mod sort;
+pub mod splat;
 
 #[cfg(not(target_arch = "spirv"))]
 pub use kernel::KernelDesc;
@@ -20,5 +23,10 @@ pub use kernel::KernelDesc;
 /// Every kernel, in a stable order: the host builds one pipeline for each.
 #[cfg(not(target_arch = "spirv"))]
 pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
-    scan::KERNELS.iter().chain(sort::KERNELS.iter()).chain(gather::KERNELS.iter()).copied()
+    scan::KERNELS
+        .iter()
+        .chain(sort::KERNELS.iter())
+        .chain(gather::KERNELS.iter())
+        .chain(splat::KERNELS.iter())
+        .copied()
 }

@@ -7,6 +7,9 @@ use dof::layers::RgbImage;
 use dof::scene::{
     self, Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, ReferenceOptions, Vec3, raycast_layers,
 };
+use dof::layers::LayeredImage;
+use dof::methods::splat::{Merge, SplatOptions, splat};
+use dof_shaders::lens::ThinLens;
 use std::path::{Path, PathBuf};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -19,6 +22,10 @@ pub enum Method {
     Reference,
     /// The gathering baseline (single layer, scatter-as-gather) on the chosen backend.
     Gather,
+    /// Single-layer tiled splatting (the front layer only) on the chosen backend.
+    Tiled,
+    /// Multi-layer tiled splatting of the partial multi-layer image on the chosen backend.
+    Multilayer,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -78,6 +85,12 @@ pub struct RenderArgs {
     /// up to the method's limit).
     #[arg(long)]
     max_coc: Option<u32>,
+    /// Fragment merging before tiling (tiled and multilayer).
+    #[arg(long, default_value = "none")]
+    merge: Merge,
+    /// Tile edge in pixels (tiled and multilayer): 16, 24 or 32.
+    #[arg(long, default_value_t = 16)]
+    tile: u32,
     /// Exposure multiplier of the PNG preview.
     #[arg(long, default_value_t = 1.0)]
     exposure: f32,
@@ -139,8 +152,63 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             Ok(())
         }
         Method::Reference => bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)"),
-        Method::Gather => bail!("--method gather needs a lens; EXR input with a lens is not wired yet (use a built-in scene)"),
+        Method::Gather | Method::Tiled | Method::Multilayer => {
+            let lens = exr_lens(args, &layers)?;
+            let (image, depth) = blur(args, &layers, &lens)?;
+            let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
+            write_outputs(out, &image, &[("Z", &depth), ("coc", &coc)], args.exposure)
+        }
     }
+}
+
+/// The lens for an EXR, which carries no camera: `--focus` and `--f-number` or `--aperture-radius`
+/// are required; the field of view (`--yfov`, default 40 degrees) and sensor height give the scale.
+fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens> {
+    let Some(focus) = args.focus else {
+        bail!("an EXR carries no lens: give --focus (planar focus distance, in the units of its Z channel) and --f-number or --aperture-radius")
+    };
+    let aperture = match (args.f_number, args.aperture_radius) {
+        (Some(n), _) => Aperture::FNumber(n),
+        (_, Some(r)) => Aperture::Radius(r),
+        _ => bail!("an EXR carries no lens: give --f-number or --aperture-radius (with --focus)"),
+    };
+    let yfov = args.yfov.unwrap_or(40.0).to_radians();
+    let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), yfov, layers.width, layers.height);
+    let mut settings = LensSettings::photographic(focus, 8.0);
+    settings.aperture = aperture;
+    settings.focal_length_mm = args.focal_length;
+    settings.sensor_height_mm = args.sensor_height;
+    Ok(settings.thin_lens(&camera)?)
+}
+
+/// Runs a blurring method (gather, tiled, multilayer) on the chosen backend and prints what it did.
+/// Returns the image and the front layer's depth.
+fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Result<(RgbImage, Vec<f32>)> {
+    let mut b = backend(args.backend)?;
+    let (front, depth) = layers.front();
+    let image = match args.method {
+        Method::Gather => {
+            let blurred = dof::methods::gather::gather(b.as_mut(), &front, &depth, lens, args.max_coc.map(|d| d.div_ceil(2)))?;
+            let ms: f64 = blurred.times.iter().map(|t| t.ms).sum();
+            println!("gather on {}: radius {} px, {ms:.2} ms in kernels", b.device_name(), blurred.radius);
+            blurred.image
+        }
+        _ => {
+            let options = SplatOptions {
+                tile: args.tile,
+                merge: args.merge,
+                max_radius: args.max_coc.map(|d| d as f32 / 2.0),
+                ..Default::default()
+            };
+            let input = if args.method == Method::Tiled { layers.front_layer() } else { layers.clone() };
+            let out = splat(b.as_mut(), &input, lens, &options)?;
+            let ms: f64 = out.stages.iter().map(|t| t.ms).sum();
+            println!("{:?} splatting on {}: {ms:.2} ms in kernels", args.method, b.device_name());
+            println!("{}", out.report.summary());
+            out.image
+        }
+    };
+    Ok((image, depth))
 }
 
 fn backend(choice: BackendArg) -> anyhow::Result<Box<dyn dof::backend::Backend>> {
@@ -205,13 +273,9 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             println!("wrote {} and {}", out.display(), out.with_extension("png").display());
             Ok(())
         }
-        Method::Gather => {
-            let (front, depth) = layered.layers.front();
-            let mut b = backend(args.backend)?;
-            let blurred = dof::methods::gather::gather(b.as_mut(), &front, &depth, &lens, args.max_coc.map(|d| d.div_ceil(2)))?;
-            let ms: f64 = blurred.times.iter().map(|t| t.ms).sum();
-            println!("gather on {}: radius {} px, {ms:.2} ms in kernels", b.device_name(), blurred.radius);
-            write_outputs(out, &blurred.image, &[("Z", &depth), ("coc", &coc)], args.exposure)
+        Method::Gather | Method::Tiled | Method::Multilayer => {
+            let (image, depth) = blur(args, &layered.layers, &lens)?;
+            write_outputs(out, &image, &[("Z", &depth), ("coc", &coc)], args.exposure)
         }
         Method::Reference => {
             let reference = match args.samples {

@@ -2,3 +2,4 @@
 //! [`crate::backend::Backend`], so it runs on the CPU and on Vulkan from the same kernels.
 
 pub mod gather;
+pub mod splat;

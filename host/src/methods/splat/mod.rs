@@ -1,0 +1,25 @@
+//! Tiled splatting on any backend (kernels and the algorithm in `dof_shaders::splat`): multi-layer
+//! (seed 000) on a partial multi-layer image, single-layer (seed 003) on its front layer.
+//!
+//! [`plan`] decides per frame what the scene needs (rings from the largest CoC present, merging only
+//! where something is blurred enough to merge); [`run`] records the stages and reads back what was
+//! left out, so every result carries a [`SplatReport`].
+
+mod plan;
+mod run;
+
+pub use plan::{Merge, Plan, SplatOptions};
+pub use run::{Intermediates, SplatOutput, SplatReport, splat};
+
+/// The column of seed 000 Table 1 a recorded stage belongs to.
+pub fn table_stage(label: &str) -> &'static str {
+    if label.starts_with("splat/pack") || label.starts_with("splat/merge") {
+        "merge"
+    } else if label.starts_with("sort/") {
+        "sort"
+    } else if label.starts_with("splat/accumulate") {
+        "accumulate"
+    } else {
+        "bin"
+    }
+}

@@ -1,0 +1,333 @@
+//! Records one splatting frame on a backend and reads back the image and what the frame left out.
+//!
+//! Two submissions: the first packs, merges, counts, compacts and allocates the tile lists; the host
+//! then reads one word (the lists' total capacity) and the largest list capacity to size the list
+//! and sort buffers; the second bins, sorts and accumulates.
+
+use super::plan::{Plan, SplatOptions, plan};
+use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
+use crate::error::{Error, Result};
+use crate::layers::{LayeredImage, RgbImage};
+use crate::ops::scan::ScanScratch;
+use crate::ops::sort::{SegmentedSort, SortStats};
+use dof_shaders::lens::ThinLens;
+use dof_shaders::splat::accumulate::ACCUMULATE;
+use dof_shaders::splat::bin::{ALLOC, BIN, COMPACT, TILE_COUNT};
+use dof_shaders::splat::merge::MERGE;
+use dof_shaders::splat::pack::PACK;
+use dof_shaders::splat::{FLAG_UMBRA_MERGE, MAX_GROUPS, SplatParams, THREADS, stats};
+
+/// What a frame did and left out.
+#[derive(Clone, Debug, Default)]
+pub struct SplatReport {
+    pub plan: Option<Plan>,
+    pub pixels: u64,
+    /// Fragments in the input, and slots a full multi-layer image of this many layers would hold.
+    pub input_fragments: u64,
+    pub full_layer_slots: u64,
+    pub dropped: u32,
+    pub clamped: u32,
+    pub sky: u32,
+    /// Fragments entering tiling (after merging) and those merging produced and replaced.
+    pub fragments: u64,
+    pub merged: u32,
+    pub merged_inputs: u32,
+    pub umbra_skipped: u32,
+    pub capped: u32,
+    pub tiles: u32,
+    pub copy_tiles: u32,
+    /// Per tile, the sorted list's length (0 for copied tiles).
+    pub list_lengths: Vec<u32>,
+    /// Allocated list capacity (conservative) and entries actually binned.
+    pub list_capacity: u64,
+    pub list_entries: u64,
+    pub sort: SortStats,
+    pub early_out_pixels: u32,
+    pub skipped_entries: u32,
+    /// Bytes of every buffer the frame created (peak: all live at once).
+    pub buffer_bytes: u64,
+}
+
+impl SplatReport {
+    /// Mean list length over the tiles that were splatted.
+    pub fn mean_list_length(&self) -> f64 {
+        let splatted = (self.tiles - self.copy_tiles).max(1);
+        self.list_entries as f64 / splatted as f64
+    }
+    pub fn max_list_length(&self) -> u32 {
+        self.list_lengths.iter().copied().max().unwrap_or(0)
+    }
+    /// One paragraph for the CLI: what the frame did and what it skipped.
+    pub fn summary(&self) -> String {
+        let mut s = String::new();
+        if let Some(p) = &self.plan {
+            s += &format!(
+                "tiles {}x{} of {} px, {} ring(s) (largest CoC radius present {:.1} px, cap {:.0} px), merge steps {}\n",
+                p.tiles_x, p.tiles_y, p.tile, p.rings, p.max_coc_radius, p.radius_cap, p.merge_steps
+            );
+            if let Some(note) = &p.merge_note {
+                s += &format!("{note}\n");
+            }
+        }
+        s += &format!(
+            "fragments: {} in ({:.2}/px; a full {}-layer image holds {}), {} dropped (non-finite or bad depth), {} clamped to half range, {} sky\n",
+            self.input_fragments,
+            self.input_fragments as f64 / self.pixels.max(1) as f64,
+            self.plan.as_ref().map_or(0, |p| p.layers),
+            self.full_layer_slots,
+            self.dropped,
+            self.clamped,
+            self.sky
+        );
+        s += &format!(
+            "merging: {} merged fragments replaced {}, {} dropped in umbrae; {} fragments tiled, {} radii capped\n",
+            self.merged, self.merged_inputs, self.umbra_skipped, self.fragments, self.capped
+        );
+        s += &format!(
+            "tiles copied through (no blur reaches them): {} of {}; lists: {} entries (mean {:.0}, max {}) in {} allocated\n",
+            self.copy_tiles,
+            self.tiles,
+            self.list_entries,
+            self.mean_list_length(),
+            self.max_list_length(),
+            self.list_capacity
+        );
+        let classes: Vec<String> = dof_shaders::sort::CLASS_CAPS
+            .iter()
+            .zip(&self.sort.class_counts)
+            .filter(|(_, n)| **n > 0)
+            .map(|(cap, n)| format!("{n}x<={cap}"))
+            .collect();
+        s += &format!(
+            "sort classes used: {} (global path: {}); early termination: {} pixels skipped {} list entries",
+            if classes.is_empty() { "none".into() } else { classes.join(", ") },
+            self.sort.global_lists,
+            self.early_out_pixels,
+            self.skipped_entries
+        );
+        s
+    }
+}
+
+/// Every stage's buffers, read back when `keep_intermediates` is set.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Intermediates {
+    /// Packed fragments and counts per cell after packing and after each merging step.
+    pub cells: Vec<(Vec<u32>, Vec<u32>)>,
+    pub tile_count: Vec<u32>,
+    pub dense: Vec<u32>,
+    pub capacity_offsets: Vec<u32>,
+    pub segments: Vec<u32>,
+    /// The binned lists (keys, values) before and after sorting, restricted to the list ranges.
+    pub binned: (Vec<u32>, Vec<u32>),
+    pub sorted: (Vec<u32>, Vec<u32>),
+}
+
+pub struct SplatOutput {
+    pub image: RgbImage,
+    pub report: SplatReport,
+    pub stages: Vec<CommandTime>,
+    pub intermediates: Option<Intermediates>,
+}
+
+fn groups_1d(n: u32) -> [u32; 3] {
+    [n.div_ceil(THREADS).clamp(1, MAX_GROUPS), 1, 1]
+}
+
+/// Only the words inside the lists, so buffers' unused tails do not enter comparisons.
+fn list_words(words: &[u32], segments: &[u32]) -> Vec<u32> {
+    segments.chunks_exact(2).flat_map(|s| words[s[0] as usize..(s[0] + s[1]) as usize].iter().copied()).collect()
+}
+
+/// Renders `image` through `lens` by tiled splatting on `backend`.
+pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions) -> Result<SplatOutput> {
+    let plan = plan(image, lens, options)?;
+    let pixels = plan.width as u64 * plan.height as u64;
+    let slots = pixels * plan.layers as u64;
+    let max_words = backend.limits().max_buffer_bytes / 4;
+    if 4 * slots > max_words {
+        return Err(Error::TooLarge { what: "fragment slots of the input (words)".into(), size: 4 * slots, limit: max_words });
+    }
+    let mut input = Vec::with_capacity(4 * slots as usize);
+    for f in &image.fragments {
+        input.extend_from_slice(&[f.color[0].to_bits(), f.color[1].to_bits(), f.color[2].to_bits(), f.depth.to_bits()]);
+    }
+    let tiles = plan.tiles() as u64;
+    let mut sizes: Vec<(u64, String)> = vec![
+        (4 * slots, "splat/input".into()),
+        (pixels, "splat/input-counts".into()),
+        (stats::WORDS as u64, "splat/stats".into()),
+        (3 * pixels, "splat/out".into()),
+        (tiles, "splat/tile-count".into()),
+        (tiles, "splat/tile-base".into()),
+        (tiles, "splat/tile-radius".into()),
+        (tiles + 1, "splat/capacity".into()),
+        (tiles, "splat/copy".into()),
+        (4 * slots, "splat/dense".into()),
+        (2 * tiles, "splat/segments".into()),
+    ];
+    for step in 0..=plan.merge_steps {
+        let (_, cap, cx, cy) = plan.cells(step);
+        let cells = cx as u64 * cy as u64;
+        sizes.push((4 * cells * cap as u64, format!("splat/cells-{step}")));
+        sizes.push((cells, format!("splat/cell-counts-{step}")));
+    }
+    let (_, _, fx, fy) = plan.cells(plan.merge_steps);
+    sizes.push((fx as u64 * fy as u64, "splat/cell-offsets".into()));
+    let size_refs: Vec<(u64, &str)> = sizes.iter().map(|(w, l)| (*w, l.as_str())).collect();
+    let first_bytes: u64 = sizes.iter().map(|s| 4 * s.0).sum();
+
+    with_buffers(backend, &size_refs, |backend, b| {
+        let [input_buf, counts_buf, st, out, tile_count, tile_base, tile_radius, capacity, copy, dense, segments] =
+            [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], b[8], b[9], b[10]];
+        let cells: Vec<(BufferId, BufferId)> = (0..=plan.merge_steps as usize).map(|s| (b[11 + 2 * s], b[12 + 2 * s])).collect();
+        let cell_off = b[b.len() - 1];
+        backend.write_buffer(input_buf, 0, &input)?;
+        backend.write_buffer(counts_buf, 0, &image.counts)?;
+
+        let params = |step: u32| {
+            let (cell, cell_cap, cells_x, cells_y) = plan.cells(step);
+            SplatParams {
+                width: plan.width,
+                height: plan.height,
+                layers: plan.layers,
+                cell,
+                cell_cap,
+                cells_x,
+                cells_y,
+                tile: plan.tile,
+                tiles_x: plan.tiles_x,
+                tiles_y: plan.tiles_y,
+                rings: plan.rings,
+                block: plan.block,
+                flags: if options.umbra_merge { FLAG_UMBRA_MERGE } else { 0 },
+                max_radius: plan.radius_cap,
+                merge_min_radius: options.merge_min_radius,
+                merge_depth_ratio: options.merge_depth_ratio,
+                merge_color_tol: options.merge_color_tol,
+                slab_ratio: options.slab_ratio,
+                color_scale: plan.color_scale,
+                lens: *lens,
+            }
+        };
+        let last = plan.merge_steps;
+        let fin = push_words(&params(last));
+        let tile_grid = [plan.tiles_x, plan.tiles_y, 1];
+        let (cells0, counts0) = cells[0];
+        backend.dispatch(&PACK, groups_1d(pixels as u32), &[input_buf, counts_buf, cells0, counts0, st], &push_words(&params(0)), "splat/pack")?;
+        for step in 0..last {
+            let (ci, ni) = cells[step as usize];
+            let (co, no) = cells[step as usize + 1];
+            let (_, _, ox, oy) = plan.cells(step + 1);
+            let label = if step == 0 { "splat/merge-2x2" } else { "splat/merge-4x4" };
+            backend.dispatch(&MERGE, groups_1d(ox * oy), &[ci, ni, co, no, st], &push_words(&params(step)), label)?;
+        }
+        let (cells_f, counts_f) = cells[last as usize];
+        let count_bufs = [cells_f, counts_f, cell_off, tile_count, tile_base, tile_radius, st];
+        backend.dispatch(&TILE_COUNT, tile_grid, &count_bufs, &fin, "splat/tile-count")?;
+        let scan = ScanScratch::new(backend, tiles + 1)?;
+        let first = (|| {
+            scan.record(backend, tile_base, 0, tiles)?;
+            backend.dispatch(&COMPACT, tile_grid, &[cells_f, counts_f, cell_off, tile_base, dense], &fin, "splat/compact")?;
+            backend.dispatch(&ALLOC, groups_1d(tiles as u32), &[tile_count, tile_radius, capacity, copy, st], &fin, "splat/alloc")?;
+            scan.record(backend, capacity, 0, tiles + 1)?;
+            backend.submit()
+        })();
+        scan.destroy(backend);
+        let mut stages = first?;
+        let total = backend.read_buffer(capacity, tiles, 1)?[0] as u64;
+        let counters = backend.read_buffer(st, 0, stats::WORDS as u64)?;
+        let max_list = counters[stats::MAX_CAPACITY as usize];
+
+        let mut inter = if options.keep_intermediates {
+            let mut cell_dumps = Vec::new();
+            for &(c, n) in &cells {
+                let words = backend.buffer_words(c)?;
+                cell_dumps.push((backend.read_buffer(c, 0, words)?, backend.read_buffer(n, 0, backend.buffer_words(n)?)?));
+            }
+            Some(Intermediates {
+                cells: cell_dumps,
+                tile_count: backend.read_buffer(tile_count, 0, tiles)?,
+                dense: backend.read_buffer(dense, 0, 4 * slots)?,
+                capacity_offsets: backend.read_buffer(capacity, 0, tiles + 1)?,
+                ..Default::default()
+            })
+        } else {
+            None
+        };
+
+        let list_sizes = [
+            (total.max(1), "splat/keys"),
+            (total.max(1), "splat/values"),
+            (total.max(1), "splat/keys-sorted"),
+            (total.max(1), "splat/values-sorted"),
+        ];
+        let (second, sort_stats) = with_buffers(backend, &list_sizes, |backend, l| {
+            let (keys, values, keys_out, values_out) = (l[0], l[1], l[2], l[3]);
+            let bin_bufs = [dense, tile_count, tile_base, tile_radius, capacity, copy, keys, values, segments];
+            backend.dispatch(&BIN, tile_grid, &bin_bufs, &fin, "splat/bin")?;
+            if let Some(inter) = inter.as_mut() {
+                backend.submit()?.into_iter().for_each(|t| stages.push(t));
+                inter.segments = backend.read_buffer(segments, 0, 2 * tiles)?;
+                let k = backend.read_buffer(keys, 0, total.max(1))?;
+                let v = backend.read_buffer(values, 0, total.max(1))?;
+                inter.binned = (list_words(&k, &inter.segments), list_words(&v, &inter.segments));
+            }
+            let sort = SegmentedSort::new(backend, tiles as u32, total.max(1) as u32, max_list)?;
+            let recorded = sort.record(backend, segments, tiles as u32, keys, values, keys_out, values_out).and_then(|_| {
+                let acc_bufs = [input_buf, counts_buf, dense, values_out, segments, copy, out, st];
+                let sub = plan.tile / plan.block;
+                let grid = [plan.tiles_x * sub, plan.tiles_y * sub, 1];
+                backend.dispatch(&ACCUMULATE, grid, &acc_bufs, &fin, "splat/accumulate")?;
+                let times = backend.submit()?;
+                let sort_stats = sort.stats(backend)?;
+                if let Some(inter) = inter.as_mut() {
+                    let k = backend.read_buffer(keys_out, 0, total.max(1))?;
+                    let v = backend.read_buffer(values_out, 0, total.max(1))?;
+                    inter.sorted = (list_words(&k, &inter.segments), list_words(&v, &inter.segments));
+                }
+                Ok((times, sort_stats))
+            });
+            sort.destroy(backend);
+            recorded
+        })?;
+        stages.extend(second);
+
+        let words = backend.read_buffer(out, 0, 3 * pixels)?;
+        let data = words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
+        let counters = backend.read_buffer(st, 0, stats::WORDS as u64)?;
+        let seg = backend.read_buffer(segments, 0, 2 * tiles)?;
+        let list_lengths: Vec<u32> = seg.chunks_exact(2).map(|s| s[1]).collect();
+        let c = |i: u32| counters[i as usize];
+        let fragments = inter_fragments(backend, counts_f, fx as u64 * fy as u64)?;
+        let report = SplatReport {
+            pixels,
+            input_fragments: image.counts.iter().map(|&n| n.min(plan.layers) as u64).sum(),
+            full_layer_slots: slots,
+            dropped: c(stats::DROPPED),
+            clamped: c(stats::CLAMPED),
+            sky: c(stats::SKY),
+            fragments,
+            merged: c(stats::MERGED),
+            merged_inputs: c(stats::MERGED_INPUTS),
+            umbra_skipped: c(stats::UMBRA_SKIPPED),
+            capped: c(stats::CAPPED),
+            tiles: tiles as u32,
+            copy_tiles: c(stats::COPY_TILES),
+            list_entries: list_lengths.iter().map(|&n| n as u64).sum(),
+            list_lengths,
+            list_capacity: total,
+            sort: sort_stats,
+            early_out_pixels: c(stats::EARLY_OUT),
+            skipped_entries: c(stats::SKIPPED_ENTRIES),
+            buffer_bytes: first_bytes + 16 * total.max(1),
+            plan: Some(plan.clone()),
+        };
+        Ok(SplatOutput { image: RgbImage { width: plan.width, height: plan.height, data }, report, stages, intermediates: inter })
+    })
+}
+
+/// Fragments entering tiling: the sum of the final cells' counts.
+fn inter_fragments(backend: &mut dyn Backend, counts: BufferId, cells: u64) -> Result<u64> {
+    Ok(backend.read_buffer(counts, 0, cells)?.iter().map(|&n| n as u64).sum())
+}

@@ -1,0 +1,320 @@
+//! Stage 3: tile lists (seed 000 §5.1).
+//!
+//! - `splat_tile_count` (one workgroup per tile): fragments per tile, each cell's offset inside its
+//!   tile (a scan of the partially filled cells: the index that lets every thread take fragments of
+//!   any pixel evenly), and the largest fragment radius in the tile.
+//! - `splat_compact` (one workgroup per tile): the fragments into one dense array, tile by tile.
+//! - `splat_alloc` (one invocation per tile): a conservative list capacity, the sum of the counts of
+//!   the tiles within `rings` whose largest radius can reach this tile; a tile no other tile reaches
+//!   and whose own discs cover only their own pixels is copied through (capacity 0). The host scans
+//!   the capacities into list offsets.
+//! - `splat_bin` (one workgroup per tile): every invocation takes four candidates at a time from the
+//!   neighbours' dense fragments, keeps those whose disc reaches a pixel centre of the tile, and a
+//!   workgroup scan places them. The destination tile gathers its list (rather than sources
+//!   scattering with atomics), so every list comes out in the same order on every backend and the
+//!   stable sort that follows is deterministic.
+
+use super::fragment::Fragment;
+use super::wg::{add, inclusive_scan, max};
+use super::{SplatParams, THREADS, stats};
+use crate::exec::{Group, Mem};
+
+/// Cells one invocation of `splat_tile_count`/`splat_compact` handles: (32 px / 1 px)² = 4 · 256.
+pub const CELLS_PER_THREAD: u32 = 4;
+/// Candidates one invocation of `splat_bin` takes at a time.
+pub const CANDIDATES_PER_THREAD: u32 = 4;
+const NONE: u32 = u32::MAX;
+
+/// Index of cell `c` (row-major inside tile `(tx, ty)`), or `NONE` outside the cell grid.
+#[inline]
+fn cell_of(p: &SplatParams, tx: u32, ty: u32, c: u32) -> u32 {
+    let ct = p.tile / p.cell;
+    if c >= ct * ct {
+        return NONE;
+    }
+    let (gx, gy) = (tx * ct + c % ct, ty * ct + c / ct);
+    if gx < p.cells_x && gy < p.cells_y { gy * p.cells_x + gx } else { NONE }
+}
+
+/// Pixel span `[start, end)` of tile `t` along an axis of `size` pixels.
+#[inline]
+fn span(t: u32, tile: u32, size: u32) -> (f32, f32) {
+    let end = if (t + 1) * tile < size { (t + 1) * tile } else { size };
+    ((t * tile) as f32, end as f32)
+}
+
+/// Distance from `v` to the interval `[lo, hi]` (0 inside).
+#[inline]
+fn gap(v_lo: f32, v_hi: f32, lo: f32, hi: f32) -> f32 {
+    let a = lo - v_hi;
+    let b = v_lo - hi;
+    let g = if a > b { a } else { b };
+    if g > 0.0 { g } else { 0.0 }
+}
+
+/// Whether a fragment of radius `r` anywhere inside tile `(sx, sy)` can cover a pixel centre of tile
+/// `(tx, ty)`.
+#[inline]
+pub fn tile_reaches(p: &SplatParams, sx: u32, sy: u32, tx: u32, ty: u32, r: f32) -> bool {
+    let (sx0, sx1) = span(sx, p.tile, p.width);
+    let (sy0, sy1) = span(sy, p.tile, p.height);
+    let (tx0, tx1) = span(tx, p.tile, p.width);
+    let (ty0, ty1) = span(ty, p.tile, p.height);
+    let gx = gap(sx0, sx1, tx0 + 0.5, tx1 - 0.5);
+    let gy = gap(sy0, sy1, ty0 + 0.5, ty1 - 0.5);
+    gx * gx + gy * gy <= r * r
+}
+
+/// Whether fragment `f` covers a pixel centre of tile `(tx, ty)`.
+#[inline]
+pub fn fragment_reaches(p: &SplatParams, f: &Fragment, tx: u32, ty: u32) -> bool {
+    let r = f.radius(&p.lens, p.max_radius);
+    let c = f.centre();
+    let (tx0, tx1) = span(tx, p.tile, p.width);
+    let (ty0, ty1) = span(ty, p.tile, p.height);
+    let gx = gap(c[0], c[0], tx0 + 0.5, tx1 - 0.5);
+    let gy = gap(c[1], c[1], ty0 + 0.5, ty1 - 0.5);
+    gx * gx + gy * gy <= r * r
+}
+
+#[allow(clippy::too_many_arguments)]
+pub fn tile_count_pass<G: Group, M: Mem>(
+    g: &mut G,
+    p: &SplatParams,
+    sh: &mut [u32; 4 * THREADS as usize],
+    cells: M,
+    cell_counts: M,
+    mut cell_off: M,
+    mut tile_count: M,
+    mut tile_base: M,
+    mut tile_radius: M,
+    mut st: M,
+) {
+    let [tx, ty, _] = g.workgroup_id();
+    let t = ty * p.tiles_x + tx;
+    let radii = 2 * THREADS as usize;
+    g.each(|lid| {
+        let (mut total, mut widest, mut capped) = (0u32, 0.0f32, 0u32);
+        let mut i = 0;
+        while i < CELLS_PER_THREAD {
+            let cell = cell_of(p, tx, ty, lid * CELLS_PER_THREAD + i);
+            i += 1;
+            if cell == NONE {
+                continue;
+            }
+            let n = cell_counts.load(cell);
+            total += n;
+            let mut k = 0;
+            while k < n {
+                let f = Fragment::load(&cells, cell * p.cell_cap + k);
+                let r = f.radius(&p.lens, p.max_radius);
+                widest = if r > widest { r } else { widest };
+                capped += f.is_capped(&p.lens, p.max_radius) as u32;
+                k += 1;
+            }
+        }
+        sh[lid as usize] = total;
+        // Radii are positive, so their bits order like the values.
+        sh[radii + lid as usize] = widest.to_bits();
+        if capped > 0 {
+            st.atomic_add(stats::CAPPED, capped);
+        }
+    });
+    let sums = inclusive_scan(g, sh, 0, add);
+    let widest = inclusive_scan(g, sh, radii, max);
+    g.each(|lid| {
+        let mut running = if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
+        let mut i = 0;
+        while i < CELLS_PER_THREAD {
+            let cell = cell_of(p, tx, ty, lid * CELLS_PER_THREAD + i);
+            i += 1;
+            if cell != NONE {
+                cell_off.store(cell, running);
+                running += cell_counts.load(cell);
+            }
+        }
+        if lid == THREADS - 1 {
+            let total = sh[sums + lid as usize];
+            tile_count.store(t, total);
+            tile_base.store(t, total);
+            tile_radius.store(t, sh[widest + lid as usize]);
+        }
+    });
+}
+
+pub fn compact_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells: M, cell_counts: M, cell_off: M, tile_base: M, mut dense: M) {
+    let [tx, ty, _] = g.workgroup_id();
+    let base = tile_base.load(ty * p.tiles_x + tx);
+    g.each(|lid| {
+        let mut i = 0;
+        while i < CELLS_PER_THREAD {
+            let cell = cell_of(p, tx, ty, lid * CELLS_PER_THREAD + i);
+            i += 1;
+            if cell == NONE {
+                continue;
+            }
+            let (n, at) = (cell_counts.load(cell), base + cell_off.load(cell));
+            let mut w = 0;
+            while w < 4 * n {
+                dense.store(4 * at + w, cells.load(4 * cell * p.cell_cap + w));
+                w += 1;
+            }
+        }
+    });
+}
+
+pub fn alloc_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, tile_count: M, tile_radius: M, mut capacity: M, mut copy: M, mut st: M) {
+    let tiles = p.tiles_x * p.tiles_y;
+    let stride = g.num_workgroups()[0] * THREADS;
+    let mut base = g.workgroup_id()[0] * THREADS;
+    while base < tiles {
+        g.each(|lid| {
+            let t = base + lid;
+            if t >= tiles {
+                return;
+            }
+            let (tx, ty) = (t % p.tiles_x, t / p.tiles_x);
+            let rings = p.rings as i32;
+            let (mut cap, mut reached) = (0u32, false);
+            let mut dy = -rings;
+            while dy <= rings {
+                let mut dx = -rings;
+                while dx <= rings {
+                    let (sx, sy) = (tx as i32 + dx, ty as i32 + dy);
+                    dx += 1;
+                    if sx < 0 || sy < 0 || sx >= p.tiles_x as i32 || sy >= p.tiles_y as i32 {
+                        continue;
+                    }
+                    let s = sy as u32 * p.tiles_x + sx as u32;
+                    let n = tile_count.load(s);
+                    if n == 0 {
+                        continue;
+                    }
+                    if s == t {
+                        cap += n;
+                    } else if tile_reaches(p, sx as u32, sy as u32, tx, ty, f32::from_bits(tile_radius.load(s))) {
+                        cap += n;
+                        reached = true;
+                    }
+                }
+                dy += 1;
+            }
+            // A support of at most one pixel reaches only its own pixel centre.
+            let copied = !reached && f32::from_bits(tile_radius.load(t)) <= 1.0;
+            capacity.store(t, if copied { 0 } else { cap });
+            copy.store(t, copied as u32);
+            if copied {
+                st.atomic_add(stats::COPY_TILES, 1);
+            } else {
+                st.atomic_max(stats::MAX_CAPACITY, cap);
+            }
+        });
+        base += stride;
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+pub fn bin_pass<G: Group, M: Mem>(
+    g: &mut G,
+    p: &SplatParams,
+    sh: &mut [u32; 3 * THREADS as usize],
+    dense: M,
+    tile_count: M,
+    tile_base: M,
+    tile_radius: M,
+    list_base: M,
+    copy: M,
+    mut keys: M,
+    mut values: M,
+    mut segments: M,
+) {
+    let [tx, ty, _] = g.workgroup_id();
+    let t = ty * p.tiles_x + tx;
+    let out = list_base.load(t);
+    let masks = 2 * THREADS as usize;
+    let mut running = 0u32;
+    if copy.load(t) == 0 {
+        let rings = p.rings as i32;
+        let mut dy = -rings;
+        while dy <= rings {
+            let mut dx = -rings;
+            while dx <= rings {
+                let (sx, sy) = (tx as i32 + dx, ty as i32 + dy);
+                dx += 1;
+                if sx < 0 || sy < 0 || sx >= p.tiles_x as i32 || sy >= p.tiles_y as i32 {
+                    continue;
+                }
+                let s = sy as u32 * p.tiles_x + sx as u32;
+                let n = tile_count.load(s);
+                let r = f32::from_bits(tile_radius.load(s));
+                if n == 0 || (s != t && !tile_reaches(p, sx as u32, sy as u32, tx, ty, r)) {
+                    continue;
+                }
+                let from = tile_base.load(s);
+                let mut start = 0;
+                while start < n {
+                    g.each(|lid| {
+                        let (mut mask, mut kept) = (0u32, 0u32);
+                        let mut i = 0;
+                        while i < CANDIDATES_PER_THREAD {
+                            let j = start + lid * CANDIDATES_PER_THREAD + i;
+                            if j < n && fragment_reaches(p, &Fragment::load(&dense, from + j), tx, ty) {
+                                mask |= 1 << i;
+                                kept += 1;
+                            }
+                            i += 1;
+                        }
+                        sh[lid as usize] = kept;
+                        sh[masks + lid as usize] = mask;
+                    });
+                    let sums = inclusive_scan(g, sh, 0, add);
+                    let mut chunk_total = 0;
+                    g.each(|lid| {
+                        let mut at = out + running + if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
+                        let mask = sh[masks + lid as usize];
+                        let mut i = 0;
+                        while i < CANDIDATES_PER_THREAD {
+                            if mask & (1 << i) != 0 {
+                                let j = from + start + lid * CANDIDATES_PER_THREAD + i;
+                                keys.store(at, dense.load(4 * j + 2));
+                                values.store(at, j);
+                                at += 1;
+                            }
+                            i += 1;
+                        }
+                        // The same value in every invocation (read before the barrier ends the step).
+                        chunk_total = sh[sums + THREADS as usize - 1];
+                    });
+                    running += chunk_total;
+                    start += THREADS * CANDIDATES_PER_THREAD;
+                }
+            }
+            dy += 1;
+        }
+    }
+    g.each(|lid| {
+        if lid == 0 {
+            segments.store(2 * t, out);
+            segments.store(2 * t + 1, running);
+        }
+    });
+}
+
+kernel!(
+    /// Per-tile fragment counts, cell offsets inside tiles and largest radius.
+    TILE_COUNT = splat_tile_count [256] (SplatParams) shared [u32; 4 * 256]
+        { cells, cell_counts, cell_off, tile_count, tile_base, tile_radius, st } => tile_count_pass
+);
+kernel!(
+    /// Fragments into one dense array, tile by tile.
+    COMPACT = splat_compact [256] (SplatParams) { cells, cell_counts, cell_off, tile_base, dense } => compact_pass
+);
+kernel!(
+    /// Conservative list capacity per tile, and which tiles are copied through.
+    ALLOC = splat_alloc [256] (SplatParams) { tile_count, tile_radius, capacity, copy, st } => alloc_pass
+);
+kernel!(
+    /// The tile lists: depth keys and dense fragment indices.
+    BIN = splat_bin [256] (SplatParams) shared [u32; 3 * 256]
+        { dense, tile_count, tile_base, tile_radius, list_base, copy, keys, values, segments } => bin_pass
+);

@@ -1,0 +1,199 @@
+//! The splatting fragment: 16 bytes, laid out as seed 000 Fig. 7.
+//!
+//! | word | bits 0-15 | bits 16-31 |
+//! |---|---|---|
+//! | 0 | red (f16) | green (f16) |
+//! | 1 | merge level | blue (f16) |
+//! | 2 | depth (f32) | |
+//! | 3 | x (half pixels) | y (half pixels) |
+//!
+//! The position is the centre of the fragment's footprint in half-pixel units of the full-resolution
+//! image (pixel `x` is centred at `2x + 1`; a merged 2x2 or 4x4 block at a pixel corner), so merged
+//! fragments keep an exact position and images up to 32767 pixels wide fit. The merge level (0: one
+//! pixel, 1: a 2x2 block, 2: 4x4) says how many pixels the fragment stands for, and how far its
+//! members' circles reach beyond its own.
+//!
+//! The CoC is derived from depth on demand. A fragment is splatted over the disc of radius
+//! `coc(depth)/2 + extent(level)`: the CoC widened by the pixel's own half-width (see [`extent`]),
+//! with a one-pixel soft edge ([`weight`]). A merged fragment carries the depth of the member with
+//! the largest CoC, so its disc encloses every member's (merging "to the largest circle", §6.1). A
+//! disc of radius below 1 reaches only the fragment's own pixel centre: such a fragment is in focus.
+
+use crate::exec::Mem;
+use crate::half::{HALF_MAX, f16_to_f32, f32_to_f16};
+use crate::lens::ThinLens;
+use crate::math::{ceil, floor, sqrt};
+
+pub const WORDS: u32 = 4;
+/// Position units per pixel.
+pub const POS_UNITS: u32 = 2;
+/// Widest and tallest image the position field holds.
+pub const MAX_EDGE: u32 = 0xffff / POS_UNITS;
+pub const MAX_LEVEL: u32 = 2;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fragment {
+    pub color: [f32; 3],
+    pub depth: f32,
+    pub level: u32,
+    /// Centre in half pixels.
+    pub pos: [u32; 2],
+}
+
+impl Fragment {
+    /// A one-pixel fragment at pixel `(x, y)`.
+    #[inline]
+    pub fn at_pixel(x: u32, y: u32, color: [f32; 3], depth: f32) -> Self {
+        Fragment { color, depth, level: 0, pos: [POS_UNITS * x + 1, POS_UNITS * y + 1] }
+    }
+
+    #[inline]
+    pub fn pack(&self) -> [u32; 4] {
+        let h = |c: f32| f32_to_f16(clamp_half(c));
+        [
+            h(self.color[0]) | (h(self.color[1]) << 16),
+            (self.level & 0xffff) | (h(self.color[2]) << 16),
+            self.depth.to_bits(),
+            (self.pos[0] & 0xffff) | (self.pos[1] << 16),
+        ]
+    }
+
+    #[inline]
+    pub fn unpack(w: [u32; 4]) -> Self {
+        Fragment {
+            color: [f16_to_f32(w[0] & 0xffff), f16_to_f32(w[0] >> 16), f16_to_f32(w[1] >> 16)],
+            depth: f32::from_bits(w[2]),
+            level: w[1] & 0xffff,
+            pos: [w[3] & 0xffff, w[3] >> 16],
+        }
+    }
+
+    /// Fragment `index` of a buffer of packed fragments.
+    #[inline]
+    pub fn load<M: Mem>(m: &M, index: u32) -> Self {
+        let b = WORDS * index;
+        Self::unpack([m.load(b), m.load(b + 1), m.load(b + 2), m.load(b + 3)])
+    }
+
+    #[inline]
+    pub fn store<M: Mem>(&self, m: &mut M, index: u32) {
+        let w = self.pack();
+        let b = WORDS * index;
+        m.store(b, w[0]);
+        m.store(b + 1, w[1]);
+        m.store(b + 2, w[2]);
+        m.store(b + 3, w[3]);
+    }
+
+    /// Centre in pixels (pixel `x` spans `[x, x + 1)`).
+    #[inline]
+    pub fn centre(&self) -> [f32; 2] {
+        [self.pos[0] as f32 * 0.5, self.pos[1] as f32 * 0.5]
+    }
+
+    /// Pixels the fragment stands for.
+    #[inline]
+    pub fn footprint(&self) -> f32 {
+        (1u32 << (2 * self.level)) as f32
+    }
+
+    /// Radius in pixels of the disc the fragment is splatted over: its CoC radius plus its
+    /// [`extent`], capped at `cap`, and at least half a pixel (its own pixel).
+    #[inline]
+    pub fn radius(&self, lens: &ThinLens, cap: f32) -> f32 {
+        let r = coc_radius(lens, self.depth) + extent(self.level);
+        let r = if r < cap { r } else { cap };
+        if r > 0.5 { r } else { 0.5 }
+    }
+
+    /// Whether the radius was capped (for the report).
+    #[inline]
+    pub fn is_capped(&self, lens: &ThinLens, cap: f32) -> bool {
+        coc_radius(lens, self.depth) + extent(self.level) > cap
+    }
+}
+
+/// Depth of packed fragment `index` without decoding the rest.
+#[inline]
+pub fn depth_of<M: Mem>(m: &M, index: u32) -> f32 {
+    f32::from_bits(m.load(WORDS * index + 2))
+}
+
+/// `c` clamped to the finite half-float range.
+#[inline]
+pub fn clamp_half(c: f32) -> f32 {
+    if c > HALF_MAX {
+        HALF_MAX
+    } else if c < -HALF_MAX {
+        -HALF_MAX
+    } else {
+        c
+    }
+}
+
+/// CoC radius in pixels at depth `z`: the sky (`+inf`) takes the far-field limit; an invalid depth 0.
+#[inline]
+pub fn coc_radius(lens: &ThinLens, z: f32) -> f32 {
+    let r = if z == f32::INFINITY { 0.5 * lens.far_limit_px() } else { 0.5 * lens.coc_px(z) };
+    if r == r { r } else { 0.0 }
+}
+
+/// How far a fragment of `level` reaches beyond the CoC circle at its centre: half a pixel for the
+/// pixel's own area (a sensor, and the reference, integrate over it: a CoC of radius `r` seen through a
+/// pixel spreads to about `r + 1/2`), plus for merged fragments the distance to their members'
+/// centres: √2/2 for a 2x2 block, √2 more for a 4x4 block.
+#[inline]
+pub fn extent(level: u32) -> f32 {
+    if level == 0 {
+        0.5
+    } else if level == 1 {
+        0.5 + 0.707_106_8
+    } else {
+        0.5 + 2.121_320_3
+    }
+}
+
+/// Support radius from which [`weight_sum`] switches from the exact lattice sum to its integral.
+pub const EXACT_SUM_LIMIT: f32 = 4.0;
+const PI: f32 = 3.141_592_7;
+
+/// How much of a fragment with support radius `s` a pixel centre at distance `d` receives, before
+/// normalisation: 1 inside `s − 1`, falling linearly to 0 at `s`. This is the CoC disc (radius
+/// `s − 1/2`) seen through a pixel-wide box, to first order: the edge of a disc that covers half a
+/// pixel gives that pixel half a share, as the reference's integral over the pixel area does.
+#[inline]
+pub fn weight(d2: f32, s: f32) -> f32 {
+    let inner = s - 1.0;
+    if inner > 0.0 && d2 <= inner * inner {
+        return 1.0;
+    }
+    let w = s - sqrt(d2);
+    if w > 0.0 { w } else { 0.0 }
+}
+
+/// The sum of [`weight`] over every pixel centre (of an unbounded grid) around `c`: what a fragment's
+/// weights are divided by, so that it spreads exactly its footprint's energy. Summed exactly for
+/// small supports; beyond [`EXACT_SUM_LIMIT`] the integral `π(s − 1/2)² + π/12`, which the lattice
+/// sum matches to well under a percent there.
+#[inline]
+pub fn weight_sum(c: [f32; 2], s: f32) -> f32 {
+    if s >= EXACT_SUM_LIMIT {
+        let r = s - 0.5;
+        return PI * r * r + PI / 12.0;
+    }
+    let mut sum = 0.0;
+    let mut y = ceil(c[1] - s - 0.5);
+    let y_end = floor(c[1] + s - 0.5);
+    while y <= y_end {
+        let dy = y + 0.5 - c[1];
+        let mut x = ceil(c[0] - s - 0.5);
+        let x_end = floor(c[0] + s - 0.5);
+        while x <= x_end {
+            let dx = x + 0.5 - c[0];
+            sum += weight(dx * dx + dy * dy, s);
+            x += 1.0;
+        }
+        y += 1.0;
+    }
+    sum
+}

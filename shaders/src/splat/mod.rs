@@ -1,0 +1,111 @@
+//! Tiled splatting of a multi-layer image (seed 000 §5-6; seed 003 is the same pipeline on the front
+//! layer only). Stages, each a kernel here, recorded by `host/src/methods/splat`:
+//!
+//! 1. [`pack`]: per-pixel layer slots → 16-byte [`fragment::Fragment`]s (seed 000 Fig. 7); non-finite
+//!    colours and invalid depths are dropped, colours clamped to the half-float range, and an empty
+//!    pixel gets the sky (black at infinite depth) so that coverage is complete.
+//! 2. [`merge`] (optional, once for 2x2, twice for 4x4): neighbouring out-of-focus fragments of
+//!    similar depth and colour become one larger fragment; umbra-aware merging drops what the merged
+//!    fragment shadows from every lens point (§6.1-6.2).
+//! 3. [`bin`]: per-tile fragment counts and an index over the partially filled cells (the
+//!    load-balancing structure of §5.1), a dense per-tile fragment array, conservative list
+//!    allocation from the counts of the neighbours that can reach the tile, then the tile lists.
+//! 4. The foundation's segmented sort orders every list by depth.
+//! 5. [`accumulate`]: per pixel, front to back over its tile's list with early termination;
+//!    tiles that no blur reaches copy their input through.
+//!
+//! All kernels share [`SplatParams`]; each documents the fields it reads.
+
+pub mod accumulate;
+pub mod bin;
+pub mod fragment;
+pub mod merge;
+pub mod pack;
+mod wg;
+
+use crate::lens::ThinLens;
+
+/// Invocations per workgroup of every splatting kernel.
+pub const THREADS: u32 = 256;
+/// Tile edges the pipeline supports.
+pub const TILE_SIZES: [u32; 3] = [16, 24, 32];
+/// Most tile rings a fragment may reach (the "more rings" path for large blur; see the README).
+pub const MAX_RINGS: u32 = 6;
+/// Largest workgroup count in one dimension the host dispatches; kernels loop over the rest.
+pub const MAX_GROUPS: u32 = 65535;
+
+/// `flags`: drop fragments inside a merged fragment's umbra (§6.2).
+pub const FLAG_UMBRA_MERGE: u32 = 1;
+
+/// Push constants of every splatting kernel (92 bytes).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct SplatParams {
+    pub width: u32,
+    pub height: u32,
+    /// Input slots per pixel (`pack`, and the copy-through of `accumulate`).
+    pub layers: u32,
+    /// Edge in pixels of the cells a kernel reads (1, 2 or 4), and fragment slots per cell.
+    pub cell: u32,
+    pub cell_cap: u32,
+    pub cells_x: u32,
+    pub cells_y: u32,
+    /// Tile edge in pixels, tile grid, and the rings of neighbours a fragment may reach.
+    pub tile: u32,
+    pub tiles_x: u32,
+    pub tiles_y: u32,
+    pub rings: u32,
+    /// Edge of the pixel block one accumulation workgroup covers (divides `tile`).
+    pub block: u32,
+    pub flags: u32,
+    /// Cap on a fragment's radius in pixels (`rings · tile` at most).
+    pub max_radius: f32,
+    /// Merging: smallest CoC radius (px) that counts as out of focus, largest ratio of depths, and
+    /// largest per-channel colour spread relative to the channel's value.
+    pub merge_min_radius: f32,
+    pub merge_depth_ratio: f32,
+    pub merge_color_tol: f32,
+    /// Accumulation: fragments within this ratio of depth of a slab's front blend as one surface.
+    pub slab_ratio: f32,
+    /// Power of two the colours are scaled by before packing (so HDR values beyond the half-float
+    /// range survive) and divided by after accumulation: 1 for most images.
+    pub color_scale: f32,
+    pub lens: ThinLens,
+}
+
+/// Words of the statistics buffer every run fills (atomic counters, so order-independent).
+pub mod stats {
+    /// Input fragments dropped for a non-finite colour or a depth that is not positive.
+    pub const DROPPED: u32 = 0;
+    /// Colours clamped to the half-float range.
+    pub const CLAMPED: u32 = 1;
+    /// Sky fragments added for empty pixels.
+    pub const SKY: u32 = 2;
+    /// Fragments produced by merging, and the fragments they replaced.
+    pub const MERGED: u32 = 3;
+    pub const MERGED_INPUTS: u32 = 4;
+    /// Fragments dropped inside a merged fragment's umbra.
+    pub const UMBRA_SKIPPED: u32 = 5;
+    /// Fragments whose radius was capped at `max_radius`.
+    pub const CAPPED: u32 = 6;
+    /// Tiles copied through (no blur reaches them).
+    pub const COPY_TILES: u32 = 7;
+    /// Largest list capacity of a tile.
+    pub const MAX_CAPACITY: u32 = 8;
+    /// Pixels that stopped before the end of their list (saturated).
+    pub const EARLY_OUT: u32 = 9;
+    /// List entries those pixels did not visit.
+    pub const SKIPPED_ENTRIES: u32 = 10;
+    pub const WORDS: u32 = 11;
+}
+
+#[cfg(not(target_arch = "spirv"))]
+pub const KERNELS: [&crate::KernelDesc; 7] = [
+    &pack::PACK,
+    &merge::MERGE,
+    &bin::TILE_COUNT,
+    &bin::COMPACT,
+    &bin::ALLOC,
+    &bin::BIN,
+    &accumulate::ACCUMULATE,
+];

@@ -1,0 +1,99 @@
+//! Stage 1: the per-pixel layer slots of the input become packed fragments, one cell per pixel.
+//!
+//! Input: `layers` (per pixel `params.layers` slots of 4 words: red, green, blue, depth as f32 bits,
+//! front to back) and `counts` (slots used per pixel). A slot with a non-finite colour or a depth that
+//! is not positive (NaN, 0, negative) is dropped and counted: it never spreads. Colours are scaled
+//! by `color_scale` (the host picks a power of two that brings the brightest into the half-float
+//! range); what still lies beyond it is clamped and counted. A pixel with no slot at all is the sky: it gets a black
+//! fragment at infinite depth, so a blurred foreground over the sky blends with black as in the
+//! reference (a pixel whose slots were all dropped gets nothing and is filled by its neighbours' blur).
+
+use super::fragment::{Fragment, clamp_half};
+use super::{SplatParams, THREADS, stats};
+use crate::exec::{Group, Mem};
+use crate::lens::is_finite;
+
+/// The slot `(pixel, k)` of the input: colour and depth.
+#[inline]
+pub fn input_slot<M: Mem>(layers: &M, p: &SplatParams, pixel: u32, k: u32) -> ([f32; 3], f32) {
+    let b = 4 * (pixel * p.layers + k);
+    (
+        [f32::from_bits(layers.load(b)), f32::from_bits(layers.load(b + 1)), f32::from_bits(layers.load(b + 2))],
+        f32::from_bits(layers.load(b + 3)),
+    )
+}
+
+/// Whether a slot may become a fragment.
+#[inline]
+pub fn is_valid(color: [f32; 3], depth: f32) -> bool {
+    is_finite(color[0]) && is_finite(color[1]) && is_finite(color[2]) && depth > 0.0
+}
+
+/// The colour of the front valid slot of `pixel` (black when there is none): what a pinhole camera
+/// sees, in full f32 precision.
+#[inline]
+pub fn front_color<M: Mem>(layers: &M, counts: &M, p: &SplatParams, pixel: u32) -> [f32; 3] {
+    let n = counts.load(pixel);
+    let mut k = 0;
+    while k < n && k < p.layers {
+        let (c, z) = input_slot(layers, p, pixel, k);
+        if is_valid(c, z) {
+            return c;
+        }
+        k += 1;
+    }
+    [0.0; 3]
+}
+
+pub fn pack_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, mut cells: M, mut cell_counts: M, mut st: M) {
+    let pixels = p.width * p.height;
+    let stride = g.num_workgroups()[0] * THREADS;
+    let mut base = g.workgroup_id()[0] * THREADS;
+    while base < pixels {
+        g.each(|lid| {
+            let i = base + lid;
+            if i >= pixels {
+                return;
+            }
+            let (x, y) = (i % p.width, i / p.width);
+            let n = counts.load(i);
+            let n = if n < p.layers { n } else { p.layers };
+            let (mut kept, mut dropped, mut clamped) = (0u32, 0u32, 0u32);
+            let mut k = 0;
+            while k < n {
+                let (c, z) = input_slot(&layers, p, i, k);
+                k += 1;
+                if !is_valid(c, z) {
+                    dropped += 1;
+                    continue;
+                }
+                let s = p.color_scale;
+                let c = [s * c[0], s * c[1], s * c[2]];
+                if clamp_half(c[0]) != c[0] || clamp_half(c[1]) != c[1] || clamp_half(c[2]) != c[2] {
+                    clamped += 1;
+                }
+                let c = [clamp_half(c[0]), clamp_half(c[1]), clamp_half(c[2])];
+                Fragment::at_pixel(x, y, c, z).store(&mut cells, i * p.layers + kept);
+                kept += 1;
+            }
+            if n == 0 {
+                Fragment::at_pixel(x, y, [0.0; 3], f32::INFINITY).store(&mut cells, i * p.layers);
+                kept = 1;
+                st.atomic_add(stats::SKY, 1);
+            }
+            cell_counts.store(i, kept);
+            if dropped > 0 {
+                st.atomic_add(stats::DROPPED, dropped);
+            }
+            if clamped > 0 {
+                st.atomic_add(stats::CLAMPED, clamped);
+            }
+        });
+        base += stride;
+    }
+}
+
+kernel!(
+    /// Input slots → packed fragments in cells of one pixel.
+    PACK = splat_pack [256] (SplatParams) { layers, counts, cells, cell_counts, st } => pack_pass
+);

@@ -21,11 +21,12 @@ fn explore() {
         let eg = compare(&g.image, &exact.image, Some(&layers.mask)).unwrap();
         let ep = compare(&front, &exact.image, Some(&layers.mask)).unwrap();
         println!("{name}: pinhole {:.2}/{:.2} gather {:.2}/{:.2}", ep.psnr_db, ep.psnr_masked_db.unwrap(), eg.psnr_db, eg.psnr_masked_db.unwrap());
-        for slab in [1.0f32, 1.01, 1.03, 1.1, 1.3, 2.0, 1e9] {
-            let o = SplatOptions { slab_ratio: slab, ..Default::default() };
+        let base = splat(&mut cpu, &layers.layers, &lens, &SplatOptions::default()).unwrap();
+        for (mr, dr, tol) in [(2.0f32, 1.05f32, 0.1f32), (1.5, 1.1, 0.25), (1.0, 1.2, 0.5), (2.0, 1.2, 0.5), (3.0, 1.3, 1.0)] {
+            let o = SplatOptions { merge: Merge::X4, merge_min_radius: mr, merge_depth_ratio: dr, merge_color_tol: tol, ..Default::default() };
             let multi = splat(&mut cpu, &layers.layers, &lens, &o).unwrap();
             let em = compare(&multi.image, &exact.image, Some(&layers.mask)).unwrap();
-            println!("  slab {slab}: multi {:.2}/{:.2}", em.psnr_db, em.psnr_masked_db.unwrap());
+            println!("  x4 {mr} {dr} {tol}: multi {:.2}/{:.2} lists {:.0} -> {:.0} ({:.1}x)", em.psnr_db, em.psnr_masked_db.unwrap(), base.report.mean_list_length(), multi.report.mean_list_length(), base.report.mean_list_length() / multi.report.mean_list_length());
         }
         for merge in [Merge::None, Merge::X2, Merge::X4] {
             let o = SplatOptions { merge, ..Default::default() };

@@ -5,8 +5,8 @@
 //!   any pixel evenly), and the largest fragment radius in the tile.
 //! - `splat_compact` (one workgroup per tile): the fragments into one dense array, tile by tile.
 //! - `splat_alloc` (one invocation per tile): a conservative list capacity, the sum of the counts of
-//!   the tiles within `rings` whose largest radius can reach this tile; a tile no other tile reaches
-//!   and whose own discs cover only their own pixels is copied through (capacity 0). The host scans
+//!   the tiles within `rings` whose largest radius can reach this tile (the lists hold blurred
+//!   fragments only); a tile no list fragment reaches is copied through (capacity 0). The host scans
 //!   the capacities into list offsets.
 //! - `splat_bin` (one workgroup per tile): every invocation takes four candidates at a time from the
 //!   neighbours' dense fragments, keeps those whose disc reaches a pixel centre of the tile, and a
@@ -175,7 +175,7 @@ pub fn alloc_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, tile_count: M, t
             }
             let (tx, ty) = (t % p.tiles_x, t / p.tiles_x);
             let rings = p.rings as i32;
-            let (mut cap, mut reached) = (0u32, false);
+            let mut cap = 0u32;
             let mut dy = -rings;
             while dy <= rings {
                 let mut dx = -rings;
@@ -190,17 +190,13 @@ pub fn alloc_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, tile_count: M, t
                     if n == 0 {
                         continue;
                     }
-                    if s == t {
+                    if s == t || tile_reaches(p, sx as u32, sy as u32, tx, ty, f32::from_bits(tile_radius.load(s))) {
                         cap += n;
-                    } else if tile_reaches(p, sx as u32, sy as u32, tx, ty, f32::from_bits(tile_radius.load(s))) {
-                        cap += n;
-                        reached = true;
                     }
                 }
                 dy += 1;
             }
-            // A support of at most one pixel reaches only its own pixel centre.
-            let copied = !reached && f32::from_bits(tile_radius.load(t)) <= 1.0;
+            let copied = cap == 0;
             capacity.store(t, if copied { 0 } else { cap });
             copy.store(t, copied as u32);
             if copied {

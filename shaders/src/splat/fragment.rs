@@ -14,10 +14,11 @@
 //! members' circles reach beyond its own.
 //!
 //! The CoC is derived from depth on demand. A fragment is splatted over the disc of radius
-//! `coc(depth)/2 + extent(level)`: the CoC widened by the pixel's own half-width (see [`extent`]),
-//! with a one-pixel soft edge ([`weight`]). A merged fragment carries the depth of the member with
-//! the largest CoC, so its disc encloses every member's (merging "to the largest circle", §6.1). A
-//! disc of radius below 1 reaches only the fragment's own pixel centre: such a fragment is in focus.
+//! `coc(depth)/2 + extent(level)`: the CoC widened by half the width of the block of pixels it stands
+//! for, with a soft rim that wide ([`extent`], [`weight`]). A merged fragment carries the depth of the
+//! member with the largest CoC, so its disc spans its members' (merging "to the largest circle",
+//! §6.1). A disc of radius at most 1 reaches only the fragment's own pixel centre: such a fragment is
+//! in focus.
 
 use crate::exec::Mem;
 use crate::half::{HALF_MAX, f16_to_f32, f32_to_f16};
@@ -91,14 +92,20 @@ impl Fragment {
         [self.pos[0] as f32 * 0.5, self.pos[1] as f32 * 0.5]
     }
 
+    /// Width of its soft rim, [`rim`].
+    #[inline]
+    pub fn rim(&self) -> f32 {
+        rim(self.level)
+    }
+
     /// Pixels the fragment stands for.
     #[inline]
     pub fn footprint(&self) -> f32 {
         (1u32 << (2 * self.level)) as f32
     }
 
-    /// Radius in pixels of the disc the fragment is splatted over: its CoC radius plus its
-    /// [`extent`], capped at `cap`, and at least half a pixel (its own pixel).
+    /// Radius in pixels of the disc the fragment is splatted over (its support): its CoC radius plus
+    /// its [`extent`], capped at `cap`, and at least half a pixel (its own pixel).
     #[inline]
     pub fn radius(&self, lens: &ThinLens, cap: f32) -> f32 {
         let r = coc_radius(lens, self.depth) + extent(self.level);
@@ -138,48 +145,49 @@ pub fn coc_radius(lens: &ThinLens, z: f32) -> f32 {
     if r == r { r } else { 0.0 }
 }
 
-/// How far a fragment of `level` reaches beyond the CoC circle at its centre: half a pixel for the
-/// pixel's own area (a sensor, and the reference, integrate over it: a CoC of radius `r` seen through a
-/// pixel spreads to about `r + 1/2`), plus for merged fragments the distance to their members'
-/// centres: √2/2 for a 2x2 block, √2 more for a 4x4 block.
+/// How far a fragment of `level` reaches beyond the CoC circle at its centre: half the edge of the
+/// block of pixels it stands for (1, 2 or 4 pixels). A sensor, and the reference, integrate over a
+/// pixel's area, so a CoC disc of radius `r` seen through a pixel spreads to `r + 1/2` with a soft
+/// rim one pixel wide; a merged block spreads its members' discs the same way over its own width.
 #[inline]
 pub fn extent(level: u32) -> f32 {
-    if level == 0 {
-        0.5
-    } else if level == 1 {
-        0.5 + 0.707_106_8
-    } else {
-        0.5 + 2.121_320_3
-    }
+    0.5 * (1u32 << level) as f32
+}
+
+/// Width of the soft rim of a fragment of `level`: its block's edge (see [`extent`]).
+#[inline]
+pub fn rim(level: u32) -> f32 {
+    (1u32 << level) as f32
 }
 
 /// Support radius from which [`weight_sum`] switches from the exact lattice sum to its integral.
 pub const EXACT_SUM_LIMIT: f32 = 4.0;
 const PI: f32 = 3.141_592_7;
 
-/// How much of a fragment with support radius `s` a pixel centre at distance `d` receives, before
-/// normalisation: 1 inside `s − 1`, falling linearly to 0 at `s`. This is the CoC disc (radius
-/// `s − 1/2`) seen through a pixel-wide box, to first order: the edge of a disc that covers half a
-/// pixel gives that pixel half a share, as the reference's integral over the pixel area does.
+/// How much of a fragment with support radius `s` and rim width `w` a pixel centre at squared
+/// distance `d2` receives, before normalisation: 1 inside `s − w`, falling linearly to 0 at `s`. This
+/// is the CoC disc (radius `s − w/2`) seen through a box of the fragment's width, to first order: the
+/// edge of a disc that covers half a pixel gives that pixel half a share, as the reference's integral
+/// over the pixel area does.
 #[inline]
-pub fn weight(d2: f32, s: f32) -> f32 {
-    let inner = s - 1.0;
+pub fn weight(d2: f32, s: f32, w: f32) -> f32 {
+    let inner = s - w;
     if inner > 0.0 && d2 <= inner * inner {
         return 1.0;
     }
-    let w = s - sqrt(d2);
-    if w > 0.0 { w } else { 0.0 }
+    let v = (s - sqrt(d2)) / w;
+    if v > 0.0 { if v < 1.0 { v } else { 1.0 } } else { 0.0 }
 }
 
 /// The sum of [`weight`] over every pixel centre (of an unbounded grid) around `c`: what a fragment's
 /// weights are divided by, so that it spreads exactly its footprint's energy. Summed exactly for
-/// small supports; beyond [`EXACT_SUM_LIMIT`] the integral `π(s − 1/2)² + π/12`, which the lattice
-/// sum matches to well under a percent there.
+/// small supports; from [`EXACT_SUM_LIMIT`] beyond the rim on, the integral
+/// `π(s − w)² + π(s − w)w + πw²/3`, which the lattice sum matches to well under a percent there.
 #[inline]
-pub fn weight_sum(c: [f32; 2], s: f32) -> f32 {
-    if s >= EXACT_SUM_LIMIT {
-        let r = s - 0.5;
-        return PI * r * r + PI / 12.0;
+pub fn weight_sum(c: [f32; 2], s: f32, w: f32) -> f32 {
+    if s >= EXACT_SUM_LIMIT + w {
+        let inner = s - w;
+        return PI * inner * inner + PI * inner * w + PI * w * w / 3.0;
     }
     let mut sum = 0.0;
     let mut y = ceil(c[1] - s - 0.5);
@@ -190,7 +198,7 @@ pub fn weight_sum(c: [f32; 2], s: f32) -> f32 {
         let x_end = floor(c[0] + s - 0.5);
         while x <= x_end {
             let dx = x + 0.5 - c[0];
-            sum += weight(dx * dx + dy * dy, s);
+            sum += weight(dx * dx + dy * dy, s, w);
             x += 1.0;
         }
         y += 1.0;

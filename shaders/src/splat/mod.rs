@@ -2,8 +2,9 @@
 //! layer only). Stages, each a kernel here, recorded by `host/src/methods/splat`:
 //!
 //! 1. [`pack`]: per-pixel layer slots → 16-byte [`fragment::Fragment`]s (seed 000 Fig. 7); non-finite
-//!    colours and invalid depths are dropped, colours clamped to the half-float range, and an empty
-//!    pixel gets the sky (black at infinite depth) so that coverage is complete.
+//!    colours and invalid depths are dropped, colours scaled into the half-float range, and an empty
+//!    pixel gets the sky (black at infinite depth) so that coverage is complete. In-focus fragments
+//!    stay out of the lists: a pixel's first one is kept per pixel (its "sharp front").
 //! 2. [`merge`] (optional, once for 2x2, twice for 4x4): neighbouring out-of-focus fragments of
 //!    similar depth and colour become one larger fragment; umbra-aware merging drops what the merged
 //!    fragment shadows from every lens point (§6.1-6.2).
@@ -11,8 +12,8 @@
 //!    load-balancing structure of §5.1), a dense per-tile fragment array, conservative list
 //!    allocation from the counts of the neighbours that can reach the tile, then the tile lists.
 //! 4. The foundation's segmented sort orders every list by depth.
-//! 5. [`accumulate`]: per pixel, front to back over its tile's list with early termination;
-//!    tiles that no blur reaches copy their input through.
+//! 5. [`accumulate`]: per pixel, front to back over its tile's list with early termination, ending
+//!    at the pixel's sharp front; tiles that no blur reaches write their sharp fronts through.
 //!
 //! All kernels share [`SplatParams`]; each documents the fields it reads.
 
@@ -96,7 +97,10 @@ pub mod stats {
     pub const EARLY_OUT: u32 = 9;
     /// List entries those pixels did not visit.
     pub const SKIPPED_ENTRIES: u32 = 10;
-    pub const WORDS: u32 = 11;
+    /// Pixels with a sharp front (kept out of the lists), and in-focus fragments hidden behind one.
+    pub const SHARP: u32 = 11;
+    pub const HIDDEN_SHARP: u32 = 12;
+    pub const WORDS: u32 = 13;
 }
 
 #[cfg(not(target_arch = "spirv"))]

@@ -29,23 +29,36 @@ pub fn is_valid(color: [f32; 3], depth: f32) -> bool {
     is_finite(color[0]) && is_finite(color[1]) && is_finite(color[2]) && depth > 0.0
 }
 
-/// The colour of the front valid slot of `pixel` (black when there is none): what a pinhole camera
-/// sees, in full f32 precision.
+/// The sharp front of `pixel`: colour and depth, or NaN depth when it has none.
 #[inline]
-pub fn front_color<M: Mem>(layers: &M, counts: &M, p: &SplatParams, pixel: u32) -> [f32; 3] {
-    let n = counts.load(pixel);
-    let mut k = 0;
-    while k < n && k < p.layers {
-        let (c, z) = input_slot(layers, p, pixel, k);
-        if is_valid(c, z) {
-            return c;
-        }
-        k += 1;
-    }
-    [0.0; 3]
+pub fn load_sharp<M: Mem>(sharp: &M, pixel: u32) -> ([f32; 3], f32) {
+    let b = 4 * pixel;
+    (
+        [f32::from_bits(sharp.load(b)), f32::from_bits(sharp.load(b + 1)), f32::from_bits(sharp.load(b + 2))],
+        f32::from_bits(sharp.load(b + 3)),
+    )
 }
 
-pub fn pack_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, mut cells: M, mut cell_counts: M, mut st: M) {
+#[inline]
+fn store_sharp<M: Mem>(sharp: &mut M, pixel: u32, c: [f32; 3], z: f32) {
+    let b = 4 * pixel;
+    sharp.store(b, c[0].to_bits());
+    sharp.store(b + 1, c[1].to_bits());
+    sharp.store(b + 2, c[2].to_bits());
+    sharp.store(b + 3, z.to_bits());
+}
+
+#[allow(clippy::too_many_arguments)]
+pub fn pack_pass<G: Group, M: Mem>(
+    g: &mut G,
+    p: &SplatParams,
+    layers: M,
+    counts: M,
+    mut cells: M,
+    mut cell_counts: M,
+    mut sharp: M,
+    mut st: M,
+) {
     let pixels = p.width * p.height;
     let stride = g.num_workgroups()[0] * THREADS;
     let mut base = g.workgroup_id()[0] * THREADS;
@@ -58,13 +71,26 @@ pub fn pack_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts
             let (x, y) = (i % p.width, i / p.width);
             let n = counts.load(i);
             let n = if n < p.layers { n } else { p.layers };
-            let (mut kept, mut dropped, mut clamped) = (0u32, 0u32, 0u32);
+            let (mut kept, mut dropped, mut clamped, mut hidden) = (0u32, 0u32, 0u32, 0u32);
+            let mut front = false;
+            // The sky of an empty pixel is one more slot.
+            let slots = if n == 0 { 1 } else { n };
             let mut k = 0;
-            while k < n {
-                let (c, z) = input_slot(&layers, p, i, k);
+            while k < slots {
+                let (c, z) = if n == 0 { ([0.0; 3], f32::INFINITY) } else { input_slot(&layers, p, i, k) };
                 k += 1;
                 if !is_valid(c, z) {
                     dropped += 1;
+                    continue;
+                }
+                if Fragment::at_pixel(x, y, c, z).radius(&p.lens, p.max_radius) <= 1.0 {
+                    if front {
+                        // Behind the sharp front: invisible here, and it reaches no other pixel.
+                        hidden += 1;
+                    } else {
+                        store_sharp(&mut sharp, i, c, z);
+                        front = true;
+                    }
                     continue;
                 }
                 let s = p.color_scale;
@@ -76,12 +102,19 @@ pub fn pack_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts
                 Fragment::at_pixel(x, y, c, z).store(&mut cells, i * p.layers + kept);
                 kept += 1;
             }
-            if n == 0 {
-                Fragment::at_pixel(x, y, [0.0; 3], f32::INFINITY).store(&mut cells, i * p.layers);
-                kept = 1;
-                st.atomic_add(stats::SKY, 1);
+            if !front {
+                store_sharp(&mut sharp, i, [0.0; 3], f32::NAN);
             }
             cell_counts.store(i, kept);
+            if n == 0 {
+                st.atomic_add(stats::SKY, 1);
+            }
+            if front {
+                st.atomic_add(stats::SHARP, 1);
+            }
+            if hidden > 0 {
+                st.atomic_add(stats::HIDDEN_SHARP, hidden);
+            }
             if dropped > 0 {
                 st.atomic_add(stats::DROPPED, dropped);
             }
@@ -95,5 +128,5 @@ pub fn pack_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts
 
 kernel!(
     /// Input slots → packed fragments in cells of one pixel.
-    PACK = splat_pack [256] (SplatParams) { layers, counts, cells, cell_counts, st } => pack_pass
+    PACK = splat_pack [256] (SplatParams) { layers, counts, cells, cell_counts, sharp, st } => pack_pass
 );

@@ -28,6 +28,9 @@ pub struct SplatReport {
     pub dropped: u32,
     pub clamped: u32,
     pub sky: u32,
+    /// Pixels whose front is in focus (kept out of the lists), and in-focus fragments behind one.
+    pub sharp_pixels: u32,
+    pub hidden_sharp: u32,
     /// Fragments entering tiling (after merging) and those merging produced and replaced.
     pub fragments: u64,
     pub merged: u32,
@@ -78,6 +81,10 @@ impl SplatReport {
             self.dropped,
             self.clamped,
             self.sky
+        );
+        s += &format!(
+            "in focus: {} pixels keep their sharp front out of the lists, {} in-focus fragments behind one left out\n",
+            self.sharp_pixels, self.hidden_sharp
         );
         s += &format!(
             "merging: {} merged fragments replaced {}, {} dropped in umbrae; {} fragments tiled, {} radii capped\n",
@@ -164,6 +171,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
         (tiles + 1, "splat/capacity".into()),
         (tiles, "splat/copy".into()),
         (4 * slots, "splat/dense".into()),
+        (4 * pixels, "splat/sharp".into()),
         (2 * tiles, "splat/segments".into()),
     ];
     for step in 0..=plan.merge_steps {
@@ -178,9 +186,9 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
     let first_bytes: u64 = sizes.iter().map(|s| 4 * s.0).sum();
 
     with_buffers(backend, &size_refs, |backend, b| {
-        let [input_buf, counts_buf, st, out, tile_count, tile_base, tile_radius, capacity, copy, dense, segments] =
-            [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], b[8], b[9], b[10]];
-        let cells: Vec<(BufferId, BufferId)> = (0..=plan.merge_steps as usize).map(|s| (b[11 + 2 * s], b[12 + 2 * s])).collect();
+        let [input_buf, counts_buf, st, out, tile_count, tile_base, tile_radius, capacity, copy, dense, sharp, segments] =
+            [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], b[8], b[9], b[10], b[11]];
+        let cells: Vec<(BufferId, BufferId)> = (0..=plan.merge_steps as usize).map(|s| (b[12 + 2 * s], b[13 + 2 * s])).collect();
         let cell_off = b[b.len() - 1];
         backend.write_buffer(input_buf, 0, &input)?;
         backend.write_buffer(counts_buf, 0, &image.counts)?;
@@ -214,7 +222,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
         let fin = push_words(&params(last));
         let tile_grid = [plan.tiles_x, plan.tiles_y, 1];
         let (cells0, counts0) = cells[0];
-        backend.dispatch(&PACK, groups_1d(pixels as u32), &[input_buf, counts_buf, cells0, counts0, st], &push_words(&params(0)), "splat/pack")?;
+        backend.dispatch(&PACK, groups_1d(pixels as u32), &[input_buf, counts_buf, cells0, counts0, sharp, st], &push_words(&params(0)), "splat/pack")?;
         for step in 0..last {
             let (ci, ni) = cells[step as usize];
             let (co, no) = cells[step as usize + 1];
@@ -275,7 +283,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
             }
             let sort = SegmentedSort::new(backend, tiles as u32, total.max(1) as u32, max_list)?;
             let recorded = sort.record(backend, segments, tiles as u32, keys, values, keys_out, values_out).and_then(|_| {
-                let acc_bufs = [input_buf, counts_buf, dense, values_out, segments, copy, out, st];
+                let acc_bufs = [sharp, dense, values_out, segments, copy, out, st];
                 let sub = plan.tile / plan.block;
                 let grid = [plan.tiles_x * sub, plan.tiles_y * sub, 1];
                 backend.dispatch(&ACCUMULATE, grid, &acc_bufs, &fin, "splat/accumulate")?;
@@ -307,6 +315,8 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
             dropped: c(stats::DROPPED),
             clamped: c(stats::CLAMPED),
             sky: c(stats::SKY),
+            sharp_pixels: c(stats::SHARP),
+            hidden_sharp: c(stats::HIDDEN_SHARP),
             fragments,
             merged: c(stats::MERGED),
             merged_inputs: c(stats::MERGED_INPUTS),

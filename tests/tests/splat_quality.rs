@@ -1,54 +1,88 @@
-//! Tiled splatting against the exact references of the built-in scenes: multi-layer beats
-//! single-layer and the gathering baseline inside the partial-occlusion region, and 4x4 merging
-//! shortens the lists at a bounded cost in error.
+//! Tiled splatting against the exact references of the built-in scenes (640x360, their own size, 256 samples per
+//! pixel): multi-layer beats single-layer and the gathering baseline inside the partial-occlusion
+//! region where the scene has partial occlusion, and 4x4 merging shortens the lists at a bounded
+//! cost in error. The bounds sit just under the margins measured (printed by each test).
 
 use dof::backend::CpuBackend;
+use dof::metrics::{ImageError, compare};
 use dof::methods::gather::gather;
 use dof::methods::splat::{Merge, SplatOptions, splat};
-use dof::metrics::compare;
 use dof::scene::{LayerOptions, ReferenceOptions, builtin, raycast_layers, reference};
 
+struct Measured {
+    gather: ImageError,
+    single: ImageError,
+    multi: ImageError,
+    multi_x4: ImageError,
+    list: f64,
+    list_x4: f64,
+}
+
+fn measure(name: &str) -> Measured {
+    let scene = builtin(name).unwrap().with_size(640, 360);
+    let lens = scene.thin_lens().unwrap();
+    let layers = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default()).unwrap();
+    let (front, depth) = layers.layers.front();
+    let exact = reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: 256, ..Default::default() }).unwrap();
+    let mut cpu = CpuBackend::new();
+    let err = |img| compare(img, &exact.image, Some(&layers.mask)).unwrap();
+    let g = gather(&mut cpu, &front, &depth, &lens, None).unwrap();
+    let single = splat(&mut cpu, &layers.layers.front_layer(), &lens, &SplatOptions::default()).unwrap();
+    let multi = splat(&mut cpu, &layers.layers, &lens, &SplatOptions::default()).unwrap();
+    let x4 = splat(&mut cpu, &layers.layers, &lens, &SplatOptions { merge: Merge::X4, ..Default::default() }).unwrap();
+    let m = Measured {
+        gather: err(&g.image),
+        single: err(&single.image),
+        multi: err(&multi.image),
+        multi_x4: err(&x4.image),
+        list: multi.report.mean_list_length(),
+        list_x4: x4.report.mean_list_length(),
+    };
+    let show = |e: &ImageError| format!("{:.2} dB ({:.2} dB in the region)", e.psnr_db, e.psnr_masked_db.unwrap());
+    eprintln!(
+        "{name}: gather {}, single {}, multi {}, multi 4x4 {}; lists {:.0} -> {:.0} ({:.1}x)",
+        show(&m.gather), show(&m.single), show(&m.multi), show(&m.multi_x4), m.list, m.list_x4, m.list / m.list_x4
+    );
+    m
+}
+
+fn region(e: &ImageError) -> f64 {
+    e.psnr_masked_db.unwrap()
+}
+
+/// Checks the margins: multi-layer over single-layer and over gather in the region (dB), the list
+/// shortening of 4x4 merging, and the most it may cost (dB, full frame and region).
+fn check(m: &Measured, over_single: f64, over_gather: f64, shorter: f64, merge_cost: f64) {
+    assert!(region(&m.multi) >= region(&m.single) + over_single, "multi vs single in the region");
+    assert!(region(&m.multi) >= region(&m.gather) + over_gather, "multi vs gather in the region");
+    assert!(m.multi.psnr_db >= m.single.psnr_db + over_single.min(0.0) && m.multi.psnr_db > m.gather.psnr_db + over_gather.min(0.0));
+    assert!(m.list / m.list_x4 >= shorter, "4x4 merging shortens lists {:.2}x", m.list / m.list_x4);
+    assert!(m.multi_x4.psnr_db >= m.multi.psnr_db - merge_cost && region(&m.multi_x4) >= region(&m.multi) - merge_cost);
+}
+
+/// Measured: in the region multi 34.66 dB, single 22.34, gather 22.17; lists 479 -> 40 (11.9x) at
+/// no cost.
 #[test]
-fn explore() {
-    for name in std::env::var("SCENES").unwrap_or("simple,railing,columns,highlights".into()).split(',').map(String::from).collect::<Vec<_>>().iter().map(|s| s.as_str()) {
-        let scene = builtin(name).unwrap().with_size(std::env::var("W").map_or(320, |w| w.parse().unwrap()), std::env::var("H").map_or(180, |w| w.parse().unwrap()));
-        let lens = scene.thin_lens().unwrap();
-        let layers = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default()).unwrap();
-        let (front, depth) = layers.layers.front();
-        let exact = reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: 256, ..Default::default() }).unwrap();
-        let mut cpu = CpuBackend::new();
-        let g = gather(&mut cpu, &front, &depth, &lens, None).unwrap();
-        let eg = compare(&g.image, &exact.image, Some(&layers.mask)).unwrap();
-        let ep = compare(&front, &exact.image, Some(&layers.mask)).unwrap();
-        println!("{name}: pinhole {:.2}/{:.2} gather {:.2}/{:.2}", ep.psnr_db, ep.psnr_masked_db.unwrap(), eg.psnr_db, eg.psnr_masked_db.unwrap());
-        let base = splat(&mut cpu, &layers.layers, &lens, &SplatOptions::default()).unwrap();
-        for (mr, dr, tol) in [(2.0f32, 1.05f32, 0.1f32), (1.5, 1.1, 0.25), (1.0, 1.2, 0.5), (2.0, 1.2, 0.5), (3.0, 1.3, 1.0)] {
-            let o = SplatOptions { merge: Merge::X4, merge_min_radius: mr, merge_depth_ratio: dr, merge_color_tol: tol, ..Default::default() };
-            let multi = splat(&mut cpu, &layers.layers, &lens, &o).unwrap();
-            let em = compare(&multi.image, &exact.image, Some(&layers.mask)).unwrap();
-            println!("  x4 {mr} {dr} {tol}: multi {:.2}/{:.2} lists {:.0} -> {:.0} ({:.1}x)", em.psnr_db, em.psnr_masked_db.unwrap(), base.report.mean_list_length(), multi.report.mean_list_length(), base.report.mean_list_length() / multi.report.mean_list_length());
-        }
-        for merge in [Merge::None, Merge::X2, Merge::X4] {
-            let o = SplatOptions { merge, ..Default::default() };
-            let single = splat(&mut cpu, &layers.layers.front_layer(), &lens, &o).unwrap();
-            let multi = splat(&mut cpu, &layers.layers, &lens, &o).unwrap();
-            let es = compare(&single.image, &exact.image, Some(&layers.mask)).unwrap();
-            let em = compare(&multi.image, &exact.image, Some(&layers.mask)).unwrap();
-            println!(
-                "  merge {:?}: single {:.2}/{:.2} (mean list {:.0}) multi {:.2}/{:.2} (mean list {:.0})",
-                merge, es.psnr_db, es.psnr_masked_db.unwrap(), single.report.mean_list_length(), em.psnr_db, em.psnr_masked_db.unwrap(), multi.report.mean_list_length()
-            );
-            if merge == Merge::None {
-                let dir = std::path::Path::new("/tmp/splat");
-                std::fs::create_dir_all(dir).unwrap();
-                dof::io::write_png_preview(dir.join(format!("{name}-multi.png")), &multi.image, 1.0).unwrap();
-                dof::io::write_png_preview(dir.join(format!("{name}-gather.png")), &g.image, 1.0).unwrap();
-                dof::io::write_png_preview(dir.join(format!("{name}-ref.png")), &exact.image, 1.0).unwrap();
-                dof::io::write_png_preview(dir.join(format!("{name}-front.png")), &front, 1.0).unwrap();
-            }
-            if merge == Merge::X4 {
-                println!("{}", multi.report.summary());
-            }
-        }
-    }
+fn simple() {
+    check(&measure("simple"), 12.0, 12.2, 10.0, 0.2);
+}
+
+/// Measured: in the region multi 31.84 dB, single 21.81, gather 21.99; lists 628 -> 333 (1.9x, the
+/// detailed far field is blurred too little to merge), 0.07 dB.
+#[test]
+fn railing() {
+    check(&measure("railing"), 9.5, 9.5, 1.8, 0.2);
+}
+
+/// Measured: in the region multi 34.77 dB, single 32.40, gather 32.33; lists 433 -> 141 (3.1x), 0.09 dB.
+#[test]
+fn columns() {
+    check(&measure("columns"), 2.0, 2.0, 2.9, 0.2);
+}
+
+/// Little partial occlusion, and a 256-sample reference of bright dots is noisy: the three methods
+/// agree within 0.03 dB (multi 15.22 dB in the region, single 15.22, gather 15.19); lists 441 -> 67 (6.6x).
+#[test]
+fn highlights() {
+    check(&measure("highlights"), -0.05, -0.05, 6.0, 0.2);
 }

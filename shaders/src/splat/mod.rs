@@ -38,7 +38,7 @@ pub const MAX_GROUPS: u32 = 65535;
 /// `flags`: drop fragments inside a merged fragment's umbra (§6.2).
 pub const FLAG_UMBRA_MERGE: u32 = 1;
 
-/// Push constants of every splatting kernel (92 bytes).
+/// Push constants of every splatting kernel (88 bytes).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct SplatParams {
@@ -66,8 +66,6 @@ pub struct SplatParams {
     pub merge_min_radius: f32,
     pub merge_depth_ratio: f32,
     pub merge_color_tol: f32,
-    /// Accumulation: fragments within this ratio of depth of a slab's front blend as one surface.
-    pub slab_ratio: f32,
     /// Power of two the colours are scaled by before packing (so HDR values beyond the half-float
     /// range survive) and divided by after accumulation: 1 for most images.
     pub color_scale: f32,

@@ -60,8 +60,6 @@ pub struct SplatOptions {
     pub merge_color_tol: f32,
     /// Drop fragments inside a merged fragment's umbra (§6.2).
     pub umbra_merge: bool,
-    /// Fragments within this depth ratio of a slab's front blend as one surface.
-    pub slab_ratio: f32,
     /// Read back every stage's buffers (for tests and debugging).
     pub keep_intermediates: bool,
 }
@@ -76,7 +74,6 @@ impl Default for SplatOptions {
             merge_depth_ratio: 1.1,
             merge_color_tol: 0.25,
             umbra_merge: true,
-            slab_ratio: 1.03,
             keep_intermediates: false,
         }
     }
@@ -125,11 +122,8 @@ pub fn plan(image: &LayeredImage, lens: &ThinLens, o: &SplatOptions) -> Result<P
     if !TILE_SIZES.contains(&o.tile) {
         return bad(format!("tile size {} is not one of {TILE_SIZES:?}", o.tile));
     }
-    let ratios = [("merge depth ratio", o.merge_depth_ratio), ("slab ratio", o.slab_ratio)];
-    for (what, v) in ratios {
-        if !(v.is_finite() && v >= 1.0) {
-            return bad(format!("{what} must be a finite number >= 1, got {v}"));
-        }
+    if !(o.merge_depth_ratio.is_finite() && o.merge_depth_ratio >= 1.0) {
+        return bad(format!("merge depth ratio must be a finite number >= 1, got {}", o.merge_depth_ratio));
     }
     if !(o.merge_color_tol.is_finite() && o.merge_color_tol >= 0.0 && o.merge_min_radius.is_finite() && o.merge_min_radius >= 0.0) {
         return bad(format!("merge tolerances must be finite and >= 0 ({} and {})", o.merge_color_tol, o.merge_min_radius));

@@ -213,7 +213,6 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
                 merge_min_radius: options.merge_min_radius,
                 merge_depth_ratio: options.merge_depth_ratio,
                 merge_color_tol: options.merge_color_tol,
-                slab_ratio: options.slab_ratio,
                 color_scale: plan.color_scale,
                 lens: *lens,
             }

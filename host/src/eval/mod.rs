@@ -71,7 +71,7 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                 for backend in backends.iter_mut().take(targets) {
                     let b = backend.as_mut();
                     let mut times = RunTimes::default();
-                    let mut output = None;
+                    let mut output: Option<methods::MethodOutput> = None;
                     for run in 0..=options.runs {
                         let out = method.run(b, &input, &setting)?;
                         if run > 0 {
@@ -79,7 +79,8 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                         }
                         output = Some(out);
                     }
-                    let image = output.map(|o| o.image).ok_or_else(|| Error::InvalidArgument("no run".into()))?;
+                    let output = output.ok_or_else(|| Error::InvalidArgument("no run".into()))?;
+                    let image = output.image;
                     let error = compare(&image, &exact.image, Some(&ml.mask))?;
                     let record = Record {
                         scene: name.clone(),
@@ -94,6 +95,7 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                         psnr_masked_db: error.psnr_masked_db,
                         ssim_masked: error.ssim_masked,
                         runs: options.runs,
+                        figures: output.figures,
                     };
                     if options.progress {
                         eprintln!("{}", record.line());

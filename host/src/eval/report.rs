@@ -11,7 +11,8 @@
 //!   `backend` (`cpu`, `vulkan`, or `host` for methods without kernels), `device`, `time_ms` (median
 //!   over `runs` of the summed stage times), `stages_ms` (median per stage label), `psnr_db`, `ssim`,
 //!   `psnr_masked_db`, `ssim_masked` (inside the partial-occlusion region; null when it is empty),
-//!   `runs`. PSNR is `null` where it is infinite (identical images).
+//!   `runs`, `figures` (method-specific numbers by name: list lengths, fragments, buffer bytes; see
+//!   [`Record::figures`]). PSNR is `null` where it is infinite (identical images).
 
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -43,6 +44,25 @@ pub struct Record {
     pub psnr_masked_db: Option<f64>,
     pub ssim_masked: Option<f64>,
     pub runs: usize,
+    /// Method-specific figures: `mean_list_length`, `max_list_length`, `fragments` (entering
+    /// tiling), `copied_tiles`, `rings`, `buffer_bytes` for the splatting methods; `radius_px` for
+    /// gather.
+    pub figures: BTreeMap<String, f64>,
+}
+
+/// The column of seed 000 Table 1 a recorded stage belongs to: `merge` (packing and merging),
+/// `splat` (tile counts, compaction, allocation, binning and their scans), `sort`, `apply`
+/// (accumulation, or the gather).
+pub fn table_column(label: &str) -> &'static str {
+    if label.starts_with("splat/pack") || label.starts_with("splat/merge") {
+        "merge"
+    } else if label.starts_with("sort/") {
+        "sort"
+    } else if label.starts_with("splat/accumulate") || label == "gather" {
+        "apply"
+    } else {
+        "splat"
+    }
 }
 
 fn db(v: Option<f64>) -> String {
@@ -80,7 +100,8 @@ impl Report {
         serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
     }
 
-    /// Markdown: per scene, a table of method, setting, backend, per-stage and total time, and error.
+    /// Markdown: per scene, a table of method, setting, backend, total time and error, then the
+    /// per-stage times in the shape of seed 000 Table 1 (every stage label is in `report.json`).
     pub fn to_markdown(&self) -> String {
         let mut md = String::from("# Depth-of-field evaluation\n\n");
         let _ = writeln!(md, "dof {}{}; error against the exact reference on the documented tone map; times are medians of {} runs after a warm-up.\n",
@@ -89,15 +110,34 @@ impl Report {
             let _ = writeln!(md, "## {} ({}x{})\n", s.name, s.width, s.height);
             let _ = writeln!(md, "Reference: {} spp (noise {} dB). Multi-layer image: {:.3} fragments/px, {:.1}% of pixels multi-layer; partial-occlusion region {:.1}% of pixels.\n",
                 s.reference_spp, db(s.reference_noise_psnr_db), s.fragments_per_pixel, 100.0 * s.multi_layer_share, 100.0 * s.occlusion_region_share);
-            md.push_str("| method | setting | backend | stages (ms) | total (ms) | PSNR (dB) | SSIM | PSNR region (dB) | SSIM region |\n|---|---|---|---|---|---|---|---|---|\n");
+            md.push_str("| method | setting | backend | total (ms) | PSNR (dB) | SSIM | PSNR region (dB) | SSIM region |\n|---|---|---|---|---|---|---|---|\n");
             for r in self.records.iter().filter(|r| r.scene == s.name) {
-                let stages: Vec<String> = r.stages_ms.iter().map(|(k, v)| format!("{k} {v:.3}")).collect();
-                let _ = writeln!(md, "| {} | {} | {} | {} | {:.3} | {} | {:.4} | {} | {} |",
-                    r.method, r.setting, r.backend, if stages.is_empty() { "-".into() } else { stages.join(", ") }, r.time_ms,
+                let _ = writeln!(md, "| {} | {} | {} | {:.3} | {} | {:.4} | {} | {} |",
+                    r.method, r.setting, r.backend, r.time_ms,
                     db(Some(r.psnr_db)), r.ssim, db(r.psnr_masked_db), r.ssim_masked.map_or("-".into(), |v| format!("{v:.4}")));
             }
             md.push('\n');
+            md.push_str(&self.table1(&s.name));
         }
+        md
+    }
+
+    /// Seed 000 Table 1 for one scene: per backend and method, the time of each column, the mean list
+    /// length, and the error full-frame and in the partial-occlusion region.
+    fn table1(&self, scene: &str) -> String {
+        let mut md = String::from("Per stage, in the shape of seed 000 Table 1 (ms):\n\n| backend | method | setting | merge | splat | sort | apply | overall | mean list | PSNR (dB) | PSNR region (dB) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+        for r in self.records.iter().filter(|r| r.scene == scene && r.backend != "host") {
+            let mut cols = BTreeMap::new();
+            for (label, ms) in &r.stages_ms {
+                *cols.entry(table_column(label)).or_insert(0.0) += ms;
+            }
+            let col = |c: &str| cols.get(c).map_or("-".into(), |v: &f64| format!("{v:.2}"));
+            let list = r.figures.get("mean_list_length").map_or("-".into(), |v| format!("{v:.0}"));
+            let _ = writeln!(md, "| {} | {} | {} | {} | {} | {} | {} | {:.2} | {} | {} | {} |",
+                r.backend, r.method, r.setting, col("merge"), col("splat"), col("sort"), col("apply"), r.time_ms, list,
+                db(Some(r.psnr_db)), db(r.psnr_masked_db));
+        }
+        md.push('\n');
         md
     }
 }

@@ -10,16 +10,3 @@ mod run;
 
 pub use plan::{Merge, Plan, SplatOptions};
 pub use run::{Intermediates, SplatOutput, SplatReport, splat};
-
-/// The column of seed 000 Table 1 a recorded stage belongs to.
-pub fn table_stage(label: &str) -> &'static str {
-    if label.starts_with("splat/pack") || label.starts_with("splat/merge") {
-        "merge"
-    } else if label.starts_with("sort/") {
-        "sort"
-    } else if label.starts_with("splat/accumulate") {
-        "accumulate"
-    } else {
-        "bin"
-    }
-}

@@ -60,3 +60,30 @@ fn bad_cameras_and_lenses_are_reported() {
     assert_fails_with(&["render", "--eye", "1,2", "--samples", "1"], "three finite numbers");
     assert_fails_with(&["render", "--out", "image.png", "--samples", "1"], ".exr");
 }
+
+#[test]
+fn splatting_methods_render_builtin_and_exr_scenes() {
+    for (method, extra) in [("tiled", &["--merge", "2x2"][..]), ("multilayer", &["--merge", "4x4", "--tile", "24", "--max-coc", "20"][..])] {
+        let out = temp(&format!("simple-{method}.exr"));
+        let mut args = vec!["render", "--method", method, "--width", "96", "--height", "54", "--out", out.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        let o = dof(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let stdout = String::from_utf8_lossy(&o.stdout);
+        assert!(stdout.contains("tiles copied through") && stdout.contains("sort classes used"), "the run reports what it left out:\n{stdout}");
+        assert!(std::fs::metadata(out.with_extension("png")).unwrap().len() > 0);
+    }
+    // An EXR has no lens: the command asks for one, then renders with it.
+    let layers = temp("exr-input.exr");
+    let o = dof(&["render", "--method", "layers", "--width", "64", "--height", "36", "--out", layers.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let input = layers.to_str().unwrap();
+    assert_fails_with(&["render", "--scene", input, "--method", "multilayer"], "--focus");
+    assert_fails_with(&["render", "--scene", input, "--method", "tiled", "--focus", "4"], "--f-number or --aperture-radius");
+    let out = temp("exr-multilayer.exr");
+    let o = dof(&["render", "--scene", input, "--method", "multilayer", "--focus", "4.2", "--f-number", "1.4", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_fails_with(&["render", "--method", "multilayer", "--tile", "20", "--width", "32", "--height", "32"], "tile size 20");
+    assert_fails_with(&["render", "--method", "multilayer", "--merge", "3x3"], "unknown merge level");
+    assert_fails_with(&["render", "--method", "multilayer", "--max-coc", "1000", "--width", "32", "--height", "32"], "use larger tiles");
+}

@@ -132,7 +132,10 @@ pub fn plan(image: &LayeredImage, lens: &ThinLens, o: &SplatOptions) -> Result<P
     let radius_cap = match o.max_radius {
         Some(r) if !(r.is_finite() && r >= 0.5) => return bad(format!("max CoC radius must be at least 0.5 px, got {r}")),
         Some(r) if r > ring_limit => {
-            return Err(Error::TooLarge { what: format!("CoC radius (px) with {}px tiles", o.tile), size: r as u64, limit: ring_limit as u64 });
+            return bad(format!(
+                "a CoC radius cap of {r} px exceeds the {ring_limit} px that {MAX_RINGS} rings of {} px tiles reach: use larger tiles or a smaller cap",
+                o.tile
+            ));
         }
         Some(r) => r,
         None => ring_limit,

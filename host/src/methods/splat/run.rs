@@ -60,6 +60,20 @@ impl SplatReport {
     pub fn max_list_length(&self) -> u32 {
         self.list_lengths.iter().copied().max().unwrap_or(0)
     }
+    /// List-length histogram (seed 000 Fig. 12): `(upper bound, tiles)` for the power-of-two buckets
+    /// `0`, `1`, `2..=2`, `3..=4`, ..., up to the longest list; copied tiles count as length 0.
+    pub fn list_histogram(&self) -> Vec<(u32, u32)> {
+        let mut buckets: Vec<(u32, u32)> = Vec::new();
+        for &n in &self.list_lengths {
+            let bound = if n == 0 { 0 } else { n.next_power_of_two() };
+            match buckets.iter_mut().find(|b| b.0 == bound) {
+                Some(b) => b.1 += 1,
+                None => buckets.push((bound, 1)),
+            }
+        }
+        buckets.sort_unstable();
+        buckets
+    }
     /// One paragraph for the CLI: what the frame did and what it skipped.
     pub fn summary(&self) -> String {
         let mut s = String::new();
@@ -105,6 +119,8 @@ impl SplatReport {
             .filter(|(_, n)| **n > 0)
             .map(|(cap, n)| format!("{n}x<={cap}"))
             .collect();
+        let histogram: Vec<String> = self.list_histogram().iter().map(|(b, n)| format!("<={b}: {n}")).collect();
+        s += &format!("list lengths (tiles per bucket): {}\n", histogram.join(", "));
         s += &format!(
             "sort classes used: {} (global path: {}); early termination: {} pixels skipped {} list entries",
             if classes.is_empty() { "none".into() } else { classes.join(", ") },

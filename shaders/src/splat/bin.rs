@@ -209,11 +209,14 @@ pub fn alloc_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, tile_count: M, t
     }
 }
 
+/// Words of workgroup memory `splat_bin` uses.
+const BIN_SHARED: usize = 6 * THREADS as usize;
+
 #[allow(clippy::too_many_arguments)]
 pub fn bin_pass<G: Group, M: Mem>(
     g: &mut G,
     p: &SplatParams,
-    sh: &mut [u32; 3 * THREADS as usize],
+    sh: &mut [u32; BIN_SHARED],
     dense: M,
     tile_count: M,
     tile_base: M,
@@ -227,66 +230,69 @@ pub fn bin_pass<G: Group, M: Mem>(
     let [tx, ty, _] = g.workgroup_id();
     let t = ty * p.tiles_x + tx;
     let out = list_base.load(t);
-    let masks = 2 * THREADS as usize;
-    let mut running = 0u32;
-    if copy.load(t) == 0 {
-        let rings = p.rings as i32;
-        let mut dy = -rings;
-        while dy <= rings {
-            let mut dx = -rings;
-            while dx <= rings {
-                let (sx, sy) = (tx as i32 + dx, ty as i32 + dy);
-                dx += 1;
-                if sx < 0 || sy < 0 || sx >= p.tiles_x as i32 || sy >= p.tiles_y as i32 {
-                    continue;
-                }
+    let t_usize = THREADS as usize;
+    // Workgroup memory: [0, 2T) scan of candidates per invocation; [2T, 3T) their masks;
+    // [3T, 5T) scan of the neighbours' candidate counts; [5T, 6T) the neighbours' first dense index.
+    let (masks, nb_scan, nb_base) = (2 * t_usize, 3 * t_usize, 5 * t_usize);
+    let side = 2 * p.rings + 1;
+    // One candidate space over the fragments of every neighbour tile (within the rings) that can
+    // reach this tile: each invocation takes four at a time, whatever tile they come from.
+    g.each(|lid| {
+        let mut n = 0;
+        let mut from = 0;
+        if lid < side * side && copy.load(t) == 0 {
+            let (sx, sy) = (tx as i32 + (lid % side) as i32 - p.rings as i32, ty as i32 + (lid / side) as i32 - p.rings as i32);
+            if sx >= 0 && sy >= 0 && sx < p.tiles_x as i32 && sy < p.tiles_y as i32 {
                 let s = sy as u32 * p.tiles_x + sx as u32;
-                let n = tile_count.load(s);
                 let r = f32::from_bits(tile_radius.load(s));
-                if n == 0 || (s != t && !tile_reaches(p, sx as u32, sy as u32, tx, ty, r)) {
-                    continue;
-                }
-                let from = tile_base.load(s);
-                let mut start = 0;
-                while start < n {
-                    g.each(|lid| {
-                        let (mut mask, mut kept) = (0u32, 0u32);
-                        let mut i = 0;
-                        while i < CANDIDATES_PER_THREAD {
-                            let j = start + lid * CANDIDATES_PER_THREAD + i;
-                            if j < n && fragment_reaches(p, &Fragment::load(&dense, from + j), tx, ty) {
-                                mask |= 1 << i;
-                                kept += 1;
-                            }
-                            i += 1;
-                        }
-                        sh[lid as usize] = kept;
-                        sh[masks + lid as usize] = mask;
-                    });
-                    let sums = inclusive_scan(g, sh, 0, add);
-                    let mut chunk_total = 0;
-                    g.each(|lid| {
-                        let mut at = out + running + if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
-                        let mask = sh[masks + lid as usize];
-                        let mut i = 0;
-                        while i < CANDIDATES_PER_THREAD {
-                            if mask & (1 << i) != 0 {
-                                let j = from + start + lid * CANDIDATES_PER_THREAD + i;
-                                keys.store(at, dense.load(4 * j + 2));
-                                values.store(at, j);
-                                at += 1;
-                            }
-                            i += 1;
-                        }
-                        // The same value in every invocation (read before the barrier ends the step).
-                        chunk_total = sh[sums + THREADS as usize - 1];
-                    });
-                    running += chunk_total;
-                    start += THREADS * CANDIDATES_PER_THREAD;
+                if s == t || tile_reaches(p, sx as u32, sy as u32, tx, ty, r) {
+                    n = tile_count.load(s);
+                    from = tile_base.load(s);
                 }
             }
-            dy += 1;
         }
+        sh[nb_scan + lid as usize] = n;
+        sh[nb_base + lid as usize] = from;
+    });
+    let nb = inclusive_scan(g, sh, nb_scan, add);
+    let total = sh[nb + t_usize - 1];
+    let mut running = 0u32;
+    let mut start = 0;
+    while start < total {
+        g.each(|lid| {
+            let (mut mask, mut kept) = (0u32, 0u32);
+            let mut i = 0;
+            while i < CANDIDATES_PER_THREAD {
+                let j = start + lid * CANDIDATES_PER_THREAD + i;
+                if j < total && fragment_reaches(p, &Fragment::load(&dense, candidate(sh, nb, nb_base, j)), tx, ty) {
+                    mask |= 1 << i;
+                    kept += 1;
+                }
+                i += 1;
+            }
+            sh[lid as usize] = kept;
+            sh[masks + lid as usize] = mask;
+        });
+        let sums = inclusive_scan(g, sh, 0, add);
+        let mut chunk_total = 0;
+        g.each(|lid| {
+            let mut at = out + running + if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
+            let mask = sh[masks + lid as usize];
+            let mut i = 0;
+            while i < CANDIDATES_PER_THREAD {
+                if mask & (1 << i) != 0 {
+                    let j = candidate(sh, nb, nb_base, start + lid * CANDIDATES_PER_THREAD + i);
+                    keys.store(at, dense.load(4 * j + 2));
+                    values.store(at, j);
+                    at += 1;
+                }
+                i += 1;
+            }
+            // The same value in every invocation (read before the barrier ends the step).
+            chunk_total = sh[sums + t_usize - 1];
+        });
+        running += chunk_total;
+        start += THREADS * CANDIDATES_PER_THREAD;
     }
     g.each(|lid| {
         if lid == 0 {
@@ -294,6 +300,19 @@ pub fn bin_pass<G: Group, M: Mem>(
             segments.store(2 * t + 1, running);
         }
     });
+}
+
+/// The dense index of candidate `j`: the neighbour whose range of the inclusive scan at `sh[nb..]`
+/// holds it (binary search), plus the offset into that neighbour's fragments.
+#[inline]
+fn candidate<const N: usize>(sh: &[u32; N], nb: usize, nb_base: usize, j: u32) -> u32 {
+    let (mut lo, mut hi) = (0usize, THREADS as usize - 1);
+    while lo < hi {
+        let mid = (lo + hi) / 2;
+        if sh[nb + mid] > j { hi = mid } else { lo = mid + 1 }
+    }
+    let before = if lo == 0 { 0 } else { sh[nb + lo - 1] };
+    sh[nb_base + lo] + (j - before)
 }
 
 kernel!(
@@ -311,6 +330,6 @@ kernel!(
 );
 kernel!(
     /// The tile lists: depth keys and dense fragment indices.
-    BIN = splat_bin [256] (SplatParams) shared [u32; 3 * 256]
+    BIN = splat_bin [256] (SplatParams) shared [u32; 6 * 256]
         { dense, tile_count, tile_base, tile_radius, list_base, copy, keys, values, segments } => bin_pass
 );

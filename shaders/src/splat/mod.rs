@@ -32,6 +32,8 @@ pub const THREADS: u32 = 256;
 pub const TILE_SIZES: [u32; 3] = [16, 24, 32];
 /// Most tile rings a fragment may reach (the "more rings" path for large blur; see the README).
 pub const MAX_RINGS: u32 = 6;
+// `splat_bin` gives every neighbour tile within the rings one invocation.
+const _: () = assert!((2 * MAX_RINGS + 1) * (2 * MAX_RINGS + 1) <= THREADS);
 /// Largest workgroup count in one dimension the host dispatches; kernels loop over the rest.
 pub const MAX_GROUPS: u32 = 65535;
 

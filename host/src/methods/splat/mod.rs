@@ -3,10 +3,12 @@
 //!
 //! [`plan`] decides per frame what the scene needs (rings from the largest CoC present, merging only
 //! where something is blurred enough to merge); [`run`] records the stages and reads back what was
-//! left out, so every result carries a [`SplatReport`].
+//! left out, so every result carries a [`SplatReport`] ([`report`]).
 
 mod plan;
+mod report;
 mod run;
 
 pub use plan::{Merge, Plan, SplatOptions};
-pub use run::{Intermediates, SplatOutput, SplatReport, splat};
+pub use report::SplatReport;
+pub use run::{Intermediates, SplatOutput, splat};

@@ -4,133 +4,19 @@
 //! then reads one word (the lists' total capacity) and the largest list capacity to size the list
 //! and sort buffers; the second bins, sorts and accumulates.
 
-use super::plan::{Plan, SplatOptions, plan};
+use super::plan::{SplatOptions, plan};
+use super::report::SplatReport;
 use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::{LayeredImage, RgbImage};
 use crate::ops::scan::ScanScratch;
-use crate::ops::sort::{SegmentedSort, SortStats};
+use crate::ops::sort::SegmentedSort;
 use dof_shaders::lens::ThinLens;
 use dof_shaders::splat::accumulate::ACCUMULATE;
 use dof_shaders::splat::bin::{ALLOC, BIN, COMPACT, TILE_COUNT};
 use dof_shaders::splat::merge::MERGE;
 use dof_shaders::splat::pack::PACK;
 use dof_shaders::splat::{FLAG_UMBRA_MERGE, MAX_GROUPS, SplatParams, THREADS, stats};
-
-/// What a frame did and left out.
-#[derive(Clone, Debug, Default)]
-pub struct SplatReport {
-    pub plan: Option<Plan>,
-    pub pixels: u64,
-    /// Fragments in the input, and slots a full multi-layer image of this many layers would hold.
-    pub input_fragments: u64,
-    pub full_layer_slots: u64,
-    pub dropped: u32,
-    pub clamped: u32,
-    pub sky: u32,
-    /// Pixels whose front is in focus (kept out of the lists), and in-focus fragments behind one.
-    pub sharp_pixels: u32,
-    pub hidden_sharp: u32,
-    /// Fragments entering tiling (after merging) and those merging produced and replaced.
-    pub fragments: u64,
-    pub merged: u32,
-    pub merged_inputs: u32,
-    pub umbra_skipped: u32,
-    pub capped: u32,
-    pub tiles: u32,
-    pub copy_tiles: u32,
-    /// Per tile, the sorted list's length (0 for copied tiles).
-    pub list_lengths: Vec<u32>,
-    /// Allocated list capacity (conservative) and entries actually binned.
-    pub list_capacity: u64,
-    pub list_entries: u64,
-    pub sort: SortStats,
-    pub early_out_pixels: u32,
-    pub skipped_entries: u32,
-    /// Bytes of every buffer the frame created (peak: all live at once).
-    pub buffer_bytes: u64,
-}
-
-impl SplatReport {
-    /// Mean list length over the tiles that were splatted.
-    pub fn mean_list_length(&self) -> f64 {
-        let splatted = (self.tiles - self.copy_tiles).max(1);
-        self.list_entries as f64 / splatted as f64
-    }
-    pub fn max_list_length(&self) -> u32 {
-        self.list_lengths.iter().copied().max().unwrap_or(0)
-    }
-    /// List-length histogram (seed 000 Fig. 12): `(upper bound, tiles)` for the power-of-two buckets
-    /// `0`, `1`, `2..=2`, `3..=4`, ..., up to the longest list; copied tiles count as length 0.
-    pub fn list_histogram(&self) -> Vec<(u32, u32)> {
-        let mut buckets: Vec<(u32, u32)> = Vec::new();
-        for &n in &self.list_lengths {
-            let bound = if n == 0 { 0 } else { n.next_power_of_two() };
-            match buckets.iter_mut().find(|b| b.0 == bound) {
-                Some(b) => b.1 += 1,
-                None => buckets.push((bound, 1)),
-            }
-        }
-        buckets.sort_unstable();
-        buckets
-    }
-    /// One paragraph for the CLI: what the frame did and what it skipped.
-    pub fn summary(&self) -> String {
-        let mut s = String::new();
-        if let Some(p) = &self.plan {
-            s += &format!(
-                "tiles {}x{} of {} px, {} ring(s) (largest CoC radius present {:.1} px, cap {:.0} px), merge steps {}\n",
-                p.tiles_x, p.tiles_y, p.tile, p.rings, p.max_coc_radius, p.radius_cap, p.merge_steps
-            );
-            if let Some(note) = &p.merge_note {
-                s += &format!("{note}\n");
-            }
-        }
-        s += &format!(
-            "fragments: {} in ({:.2}/px; a full {}-layer image holds {}), {} dropped (non-finite or bad depth), {} clamped to half range, {} sky\n",
-            self.input_fragments,
-            self.input_fragments as f64 / self.pixels.max(1) as f64,
-            self.plan.as_ref().map_or(0, |p| p.layers),
-            self.full_layer_slots,
-            self.dropped,
-            self.clamped,
-            self.sky
-        );
-        s += &format!(
-            "in focus: {} pixels keep their sharp front out of the lists, {} in-focus fragments behind one left out\n",
-            self.sharp_pixels, self.hidden_sharp
-        );
-        s += &format!(
-            "merging: {} merged fragments replaced {}, {} dropped in umbrae; {} fragments tiled, {} radii capped\n",
-            self.merged, self.merged_inputs, self.umbra_skipped, self.fragments, self.capped
-        );
-        s += &format!(
-            "tiles copied through (no blur reaches them): {} of {}; lists: {} entries (mean {:.0}, max {}) in {} allocated\n",
-            self.copy_tiles,
-            self.tiles,
-            self.list_entries,
-            self.mean_list_length(),
-            self.max_list_length(),
-            self.list_capacity
-        );
-        let classes: Vec<String> = dof_shaders::sort::CLASS_CAPS
-            .iter()
-            .zip(&self.sort.class_counts)
-            .filter(|(_, n)| **n > 0)
-            .map(|(cap, n)| format!("{n}x<={cap}"))
-            .collect();
-        let histogram: Vec<String> = self.list_histogram().iter().map(|(b, n)| format!("<={b}: {n}")).collect();
-        s += &format!("list lengths (tiles per bucket): {}\n", histogram.join(", "));
-        s += &format!(
-            "sort classes used: {} (global path: {}); early termination: {} pixels skipped {} list entries",
-            if classes.is_empty() { "none".into() } else { classes.join(", ") },
-            self.sort.global_lists,
-            self.early_out_pixels,
-            self.skipped_entries
-        );
-        s
-    }
-}
 
 /// Every stage's buffers, read back when `keep_intermediates` is set.
 #[derive(Clone, Debug, Default, PartialEq)]

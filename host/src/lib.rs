@@ -6,9 +6,10 @@
 //! - [`layers`]: colour and multi-layer images, the data every method shares;
 //! - [`io`]: EXR and PNG in and out;
 //! - [`scene`]: lenses, cameras, analytic scenes and their exact references;
-//! - [`methods`]: the depth-of-field methods (so far the gathering baseline), on any backend;
+//! - [`methods`]: the depth-of-field methods (gathering baseline, tiled splatting), on any backend;
 //! - [`eval`]: every method on every scene and backend, timed and measured (`dof eval`);
 //! - [`metrics`]: PSNR and SSIM against a reference, full-frame and in the partial-occlusion region;
+//! - [`stress`]: the stiff and extreme cases, each with its expectation, on every method (`dof stress`);
 //! - [`shaders`]: the embedded SPIR-V modules.
 
 pub mod backend;
@@ -22,6 +23,7 @@ pub mod ops;
 pub mod scene;
 pub mod shaders;
 pub mod source_hash;
+pub mod stress;
 pub mod timing;
 pub mod workload;
 

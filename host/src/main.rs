@@ -19,6 +19,8 @@ enum Command {
     Info(cli::info::InfoArgs),
     /// Error against run time for every method, setting, scene and backend (report.json, report.md).
     Eval(cli::eval::EvalArgs),
+    /// The stiff and extreme cases on every method and backend; fails on any failure.
+    Stress(cli::stress::StressArgs),
     /// The built-in scenes: lens, multi-layer statistics, reference sample counts.
     Scenes(cli::scenes::ScenesArgs),
     /// Benchmarks of the kernels on each backend.
@@ -38,6 +40,7 @@ fn main() -> std::process::ExitCode {
     };
     let result = match command {
         Command::Render(args) => cli::render::run(&args),
+        Command::Stress(args) => cli::stress::run(&args),
         Command::Info(args) => cli::info::run(&args),
         Command::Scenes(args) => cli::scenes::run(&args),
         Command::Eval(args) => cli::eval::run(&args),

@@ -12,7 +12,7 @@
 //! that nothing covers comes out black.
 
 use crate::exec::{Group, Mem};
-use crate::lens::{ThinLens, is_finite as finite};
+use crate::lens::{ThinLens, is_finite as finite, is_nan, is_pos_inf, is_positive};
 
 pub const TILE: u32 = 8;
 
@@ -30,8 +30,8 @@ pub struct GatherParams {
 /// CoC radius in pixels of a sample at depth `z`, capped; sky (`+inf`) takes the far-field radius.
 #[inline]
 pub fn radius_px(lens: &ThinLens, z: f32, max_radius: f32) -> f32 {
-    let r = if z == f32::INFINITY { 0.5 * lens.far_limit_px() } else { 0.5 * lens.coc_px(z) };
-    if r == r { r.min(max_radius) } else { 0.0 }
+    let r = if is_pos_inf(z) { 0.5 * lens.far_limit_px() } else { 0.5 * lens.coc_px(z) };
+    if is_nan(r) { 0.0 } else { r.min(max_radius) }
 }
 
 /// Colour of pixel `i`, or `None` when any channel is not finite.
@@ -66,7 +66,7 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &GatherParams, color: M, dept
                 if qx >= 0 && qx < p.width as i32 {
                     let qi = qy as u32 * p.width + qx as u32;
                     let zq = f32::from_bits(depth.load(qi));
-                    if let Some(c) = colour(&color, qi).filter(|_| zq > 0.0) {
+                    if let Some(c) = colour(&color, qi).filter(|_| is_positive(zq)) {
                         let rq = radius_px(&p.lens, zq, max_r);
                         // Background behind the pixel blurs over it by at most the pixel's own CoC.
                         let reach = if zq > zp { rq.min(rp) } else { rq } + 0.5;

@@ -61,7 +61,7 @@ impl ThinLens {
     /// gives 0 for every `z > 0`.
     #[inline]
     pub fn signed_coc_px(&self, z: f32) -> f32 {
-        if !(z > 0.0) {
+        if !is_positive(z) {
             return f32::NAN;
         }
         let k = self.far_limit_px();
@@ -114,7 +114,7 @@ impl ThinLens {
     #[inline]
     pub fn umbra_length(&self, z: f32, footprint_radius: f32) -> f32 {
         let r = footprint_radius;
-        if !(z > 0.0) || !(r >= 0.0) {
+        if !is_positive(z) || !(r >= 0.0) || is_nan(r) {
             return f32::NAN;
         }
         if r == 0.0 {
@@ -170,7 +170,7 @@ impl ArtistLens {
     /// `far_start` is infinite).
     #[inline]
     pub fn signed_coc_px(&self, z: f32) -> f32 {
-        if !(z > 0.0) {
+        if !is_positive(z) {
             return f32::NAN;
         }
         let far = if z <= self.far_start {
@@ -203,10 +203,32 @@ fn abs(x: f32) -> f32 {
     if x < 0.0 { -x } else { x }
 }
 
-/// Neither NaN nor infinite, by comparison.
+// NaN and infinity are tested on the bits: GPU compilers may assume IEEE specials away in float
+// arithmetic and comparisons (Mesa folds `x - x` to 0 and `x == x` to true), never in integer code.
+
+/// Neither NaN nor infinite.
 #[inline]
-pub(crate) fn is_finite(x: f32) -> bool {
-    x - x == 0.0
+pub fn is_finite(x: f32) -> bool {
+    x.to_bits() & 0x7f80_0000 != 0x7f80_0000
+}
+
+/// NaN.
+#[inline]
+pub fn is_nan(x: f32) -> bool {
+    x.to_bits() & 0x7fff_ffff > 0x7f80_0000
+}
+
+/// `+inf`.
+#[inline]
+pub fn is_pos_inf(x: f32) -> bool {
+    x.to_bits() == 0x7f80_0000
+}
+
+/// A valid depth: greater than zero (`+inf` included), not NaN.
+#[inline]
+pub fn is_positive(z: f32) -> bool {
+    let b = z.to_bits();
+    b != 0 && b <= 0x7f80_0000
 }
 
 #[cfg(test)]

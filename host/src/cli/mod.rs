@@ -3,6 +3,7 @@ pub mod eval;
 pub mod info;
 pub mod render;
 pub mod scenes;
+pub mod stress;
 
 use dof::backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
 

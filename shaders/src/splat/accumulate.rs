@@ -23,6 +23,7 @@ use super::pack::load_sharp;
 use super::wg::{inclusive_scan, max};
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Mem};
+use crate::lens::is_nan;
 
 /// Coverage short of full at which a pixel stops.
 pub const SATURATED: f32 = 1.0 / 1024.0;
@@ -105,7 +106,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
             let (ok, x, y) = pixel(lid);
             if ok {
                 let (c, z) = load_sharp(&sharp, y * p.width + x);
-                store(&mut out, x, y, if z == z { c } else { [0.0; 3] });
+                store(&mut out, x, y, if is_nan(z) { [0.0; 3] } else { c });
             }
         });
         return;
@@ -122,7 +123,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
         let (ok, x, y) = pixel(lid);
         let z = if ok { load_sharp(&sharp, y * p.width + x).1 } else { f32::NAN };
         // No sharp front: +inf, never reached.
-        set(sh, SHARP_Z, lid, if z == z { z } else { f32::INFINITY });
+        set(sh, SHARP_Z, lid, if is_nan(z) { f32::INFINITY } else { z });
     });
     let mut start = 0;
     let mut active = 1;
@@ -182,7 +183,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
         }
         let (c, z) = load_sharp(&sharp, y * p.width + x);
         let rest = 1.0 - get(sh, USED, lid);
-        if z == z && rest > 0.0 {
+        if !is_nan(z) && rest > 0.0 {
             let s = p.color_scale;
             blend(sh, lid, rest, [s * c[0], s * c[1], s * c[2]]);
         }

@@ -22,7 +22,7 @@
 
 use crate::exec::Mem;
 use crate::half::{HALF_MAX, f16_to_f32, f32_to_f16};
-use crate::lens::ThinLens;
+use crate::lens::{ThinLens, is_nan, is_pos_inf};
 use crate::math::{ceil, floor, sqrt};
 
 pub const WORDS: u32 = 4;
@@ -141,8 +141,8 @@ pub fn clamp_half(c: f32) -> f32 {
 /// CoC radius in pixels at depth `z`: the sky (`+inf`) takes the far-field limit; an invalid depth 0.
 #[inline]
 pub fn coc_radius(lens: &ThinLens, z: f32) -> f32 {
-    let r = if z == f32::INFINITY { 0.5 * lens.far_limit_px() } else { 0.5 * lens.coc_px(z) };
-    if r == r { r } else { 0.0 }
+    let r = if is_pos_inf(z) { 0.5 * lens.far_limit_px() } else { 0.5 * lens.coc_px(z) };
+    if is_nan(r) { 0.0 } else { r }
 }
 
 /// How far a fragment of `level` reaches beyond the CoC circle at its centre: half the edge of the

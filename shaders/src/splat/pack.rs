@@ -11,7 +11,7 @@
 use super::fragment::{Fragment, clamp_half};
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Mem};
-use crate::lens::is_finite;
+use crate::lens::{is_finite, is_positive};
 
 /// The slot `(pixel, k)` of the input: colour and depth.
 #[inline]
@@ -26,7 +26,7 @@ pub fn input_slot<M: Mem>(layers: &M, p: &SplatParams, pixel: u32, k: u32) -> ([
 /// Whether a slot may become a fragment.
 #[inline]
 pub fn is_valid(color: [f32; 3], depth: f32) -> bool {
-    is_finite(color[0]) && is_finite(color[1]) && is_finite(color[2]) && depth > 0.0
+    is_finite(color[0]) && is_finite(color[1]) && is_finite(color[2]) && is_positive(depth)
 }
 
 /// The sharp front of `pixel`: colour and depth, or NaN depth when it has none.

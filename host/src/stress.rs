@@ -1,0 +1,250 @@
+//! The stiff and extreme cases of the design notes, run on every method of the evaluation's
+//! registry (so a new method is stressed without changes here), each with its stated expectation:
+//! a correct result within a bound, or a clear error. `dof stress` prints one line per case, method
+//! and backend and fails on any failure; `tests/tests/stress.rs` runs every case as a test.
+//!
+//! Methods run at their last quick setting (the heavier one: for splatting, 4x4 merging).
+
+use crate::backend::Backend;
+use crate::error::{Error, Result};
+use crate::eval::methods::{Method, MethodInput};
+use crate::layers::{Fragment, LayeredImage, RgbImage};
+use dof_shaders::lens::ThinLens;
+
+/// What a case expects of a method.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Expect {
+    /// The front layer, bit for bit.
+    Exact,
+    /// The front layer within a relative tolerance.
+    Close(f32),
+    /// Every pixel equal to the input's flat colour within a relative tolerance.
+    Flat(f32),
+    /// Only finite values.
+    Finite,
+    /// Non-finite values only where the input's front was non-finite (nothing spreads).
+    NoSpread,
+    /// Only finite values, and the red channel's sum within a relative tolerance of the input's.
+    Energy(f32),
+    /// Two runs give the same image bit for bit.
+    Deterministic,
+    /// A finite result, or a `TooLarge`/`InvalidArgument` error.
+    ResultOrClearError,
+    /// An `InvalidArgument` error (methods that use the lens).
+    InvalidArgument,
+}
+
+pub struct Case {
+    pub name: &'static str,
+    /// The stated expectation, in words.
+    pub expectation: &'static str,
+    pub expect: Expect,
+    build: fn() -> (LayeredImage, ThinLens),
+}
+
+/// Outcome of one case on one method and backend.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    Pass(String),
+    Fail(String),
+    /// The case does not apply (a host-only method and a lens error, for instance).
+    NotApplicable(&'static str),
+}
+
+/// f = 50 mm focused at 2 m, 8000 px per metre of sensor: the far-field CoC is `410·a` px.
+fn lens(aperture_radius: f32) -> ThinLens {
+    ThinLens { focal_length: 0.05, aperture_radius, focus_distance: 2.0, pixels_per_unit: 8000.0 }
+}
+
+fn hash(i: u32) -> u32 {
+    i.wrapping_mul(2654435761).rotate_left(13).wrapping_mul(0x9E37_79B1)
+}
+
+/// `w`x`h`, up to `layers` fragments per pixel at distinct depths in `[0.5, 15]`, varied colours.
+fn image(w: u32, h: u32, layers: u32, color: impl Fn(u32) -> [f32; 3]) -> LayeredImage {
+    let mut img = LayeredImage::new(w, h, layers).expect("a valid test size");
+    for y in 0..h {
+        for x in 0..w {
+            let i = y * w + x;
+            let v = hash(i);
+            let mut z = 0.5 + (v >> 8) as f32 % 700.0 / 100.0 + i as f32 * 1e-5;
+            for k in 0..1 + v % layers {
+                let _ = img.push(x, y, Fragment { color: color(i * 7 + k), alpha: 1.0, depth: z });
+                z *= 1.3;
+            }
+        }
+    }
+    img
+}
+
+fn varied(i: u32) -> [f32; 3] {
+    let c = hash(i);
+    [(c % 97) as f32 / 97.0, (c % 89) as f32 / 8.9, (c % 83) as f32 * 20.0]
+}
+
+const FLAT: [f32; 3] = [0.25, 3.0, 1200.0];
+
+pub fn cases() -> Vec<Case> {
+    vec![
+        Case { name: "pinhole", expectation: "aperture 0: the front layer, bit for bit", expect: Expect::Exact, build: || (image(37, 29, 3, varied), lens(0.0)) },
+        Case {
+            name: "sub-pixel-coc",
+            expectation: "every CoC under one pixel: the front layer within 1e-5",
+            expect: Expect::Close(1e-5),
+            build: || {
+                let mut img = image(40, 33, 2, varied);
+                img.fragments.iter_mut().for_each(|f| f.depth = f.depth.max(1.2));
+                (img, lens(0.0005))
+            },
+        },
+        Case { name: "flat-field", expectation: "a flat colour stays flat within 1e-3 under blur", expect: Expect::Flat(1e-3), build: || (image(50, 41, 3, |_| FLAT), lens(0.01)) },
+        Case {
+            name: "nan-inf-input",
+            expectation: "NaN/Inf colours and NaN, zero, negative depths: nothing non-finite spreads",
+            expect: Expect::NoSpread,
+            build: || {
+                let mut img = image(33, 33, 2, varied);
+                let bad = [([f32::NAN, 1.0, 1.0], 3.0), ([f32::INFINITY, 1.0, 1.0], 3.0), ([1.0; 3], f32::NAN), ([1.0; 3], -2.0), ([1.0; 3], 0.0)];
+                for (k, (color, depth)) in bad.into_iter().enumerate() {
+                    let p = 100 + 150 * k;
+                    img.counts[p] = 1;
+                    img.fragments[p * 2] = Fragment { color, alpha: 1.0, depth };
+                }
+                (img, lens(0.02))
+            },
+        },
+        Case {
+            name: "hdr-beyond-half",
+            expectation: "a 1e6 highlight (beyond half-float 65504) keeps its energy within 3%",
+            expect: Expect::Energy(0.03),
+            build: || {
+                let mut img = LayeredImage::new(48, 48, 1).expect("size");
+                for y in 0..48 {
+                    for x in 0..48 {
+                        let c = if (x, y) == (24, 24) { [1e6, 2e5, 7.0] } else { [0.0; 3] };
+                        let _ = img.push(x, y, Fragment { color: c, alpha: 1.0, depth: 5.0 });
+                    }
+                }
+                (img, lens(0.05))
+            },
+        },
+        Case {
+            name: "focus-at-focal-length",
+            expectation: "z_f = 1.0001 f (CoC of thousands of pixels): a finite image",
+            expect: Expect::Finite,
+            build: || (image(40, 40, 2, varied), ThinLens { focus_distance: 0.050005, ..lens(0.02) }),
+        },
+        Case { name: "coc-beyond-rings", expectation: "CoC radius ~1000 px, far beyond every window: capped, finite", expect: Expect::Finite, build: || (image(64, 48, 2, varied), lens(1.0)) },
+        Case {
+            name: "sky-at-infinity",
+            expectation: "half the image is sky (no fragment, depth +inf): finite, the sky blends as black",
+            expect: Expect::Finite,
+            build: || {
+                let mut img = image(48, 32, 2, varied);
+                for p in 0..(48 * 16) {
+                    img.counts[p] = 0;
+                }
+                (img, lens(0.02))
+            },
+        },
+        Case {
+            name: "equal-depths",
+            expectation: "every fragment at one depth: ties resolve the same way every run",
+            expect: Expect::Deterministic,
+            build: || {
+                let mut img = image(40, 40, 1, varied);
+                img.fragments.iter_mut().for_each(|f| f.depth = 0.9);
+                (img, lens(0.01))
+            },
+        },
+        Case { name: "one-pixel", expectation: "a 1x1 image: finite, one pixel", expect: Expect::Finite, build: || (image(1, 1, 2, varied), lens(0.02)) },
+        Case { name: "ragged-size", expectation: "17x5 (no multiple of any tile): finite, every pixel", expect: Expect::Finite, build: || (image(17, 5, 2, varied), lens(0.01)) },
+        Case {
+            name: "very-wide-image",
+            expectation: "40000x2: a finite image, or a clear TooLarge error",
+            expect: Expect::ResultOrClearError,
+            build: || (image(40_000, 2, 1, varied), lens(0.01)),
+        },
+        Case {
+            name: "degenerate-lens",
+            expectation: "focus distance below the focal length: an InvalidArgument error",
+            expect: Expect::InvalidArgument,
+            build: || (image(16, 16, 1, varied), ThinLens { focus_distance: 0.01, ..lens(0.01) }),
+        },
+    ]
+}
+
+fn input(img: LayeredImage, lens: ThinLens) -> MethodInput {
+    let (front, depth) = img.front();
+    MethodInput { front, depth, layers: img, lens }
+}
+
+fn finite(img: &RgbImage) -> bool {
+    img.data.iter().all(|p| p.iter().all(|c| c.is_finite()))
+}
+
+fn red_sum(img: &RgbImage) -> f64 {
+    img.data.iter().map(|p| p[0] as f64).sum()
+}
+
+impl Case {
+    /// Runs this case on `method` (at its last quick setting) on `backend`.
+    pub fn run(&self, method: &dyn Method, backend: &mut dyn Backend) -> Outcome {
+        let (img, lens) = (self.build)();
+        let input = input(img, lens);
+        let Some(setting) = method.settings(true).pop() else { return Outcome::NotApplicable("no setting") };
+        let result = method.run(backend, &input, &setting);
+        if !method.uses_backend() && self.expect == Expect::InvalidArgument {
+            return Outcome::NotApplicable("the method ignores the lens");
+        }
+        let out = match (result, self.expect) {
+            (Err(Error::InvalidArgument(m)), Expect::InvalidArgument) => return Outcome::Pass(format!("error: {m}")),
+            (Err(e @ (Error::TooLarge { .. } | Error::InvalidArgument(_))), Expect::ResultOrClearError) => {
+                return Outcome::Pass(format!("error: {e}"));
+            }
+            (Err(e), _) => return Outcome::Fail(format!("error: {e}")),
+            (Ok(_), Expect::InvalidArgument) => return Outcome::Fail("no error for an invalid lens".into()),
+            (Ok(out), _) => out.image,
+        };
+        let front = &input.front;
+        if out.width != front.width || out.height != front.height || out.data.len() != front.data.len() {
+            return Outcome::Fail(format!("{}x{} out for {}x{} in", out.width, out.height, front.width, front.height));
+        }
+        let spread = out.data.iter().zip(&front.data).filter(|(o, f)| !o.iter().all(|c| c.is_finite()) && f.iter().all(|c| c.is_finite())).count();
+        if spread > 0 {
+            return Outcome::Fail(format!("{spread} non-finite pixels where the input was finite"));
+        }
+        if self.expect != Expect::NoSpread && !finite(&out) {
+            return Outcome::Fail("non-finite pixels".into());
+        }
+        let worst = |want: &dyn Fn(usize) -> [f32; 3]| {
+            out.data.iter().enumerate().map(|(i, p)| (0..3).map(|c| (p[c] - want(i)[c]).abs() / want(i)[c].abs().max(1e-3)).fold(0.0f32, f32::max)).fold(0.0f32, f32::max)
+        };
+        match self.expect {
+            Expect::Exact if out == *front => Outcome::Pass("identical".into()),
+            Expect::Exact => Outcome::Fail(format!("differs from the input by up to {:.2e} (relative)", worst(&|i| front.data[i]))),
+            Expect::Close(tol) | Expect::Flat(tol) => {
+                let err = if let Expect::Flat(_) = self.expect { worst(&|_| FLAT) } else { worst(&|i| front.data[i]) };
+                if err <= tol { Outcome::Pass(format!("within {err:.2e}")) } else { Outcome::Fail(format!("off by {err:.2e} > {tol:.0e}")) }
+            }
+            Expect::Energy(tol) => {
+                let (got, want) = (red_sum(&out), red_sum(front));
+                let rel = (got / want - 1.0).abs();
+                if rel <= tol as f64 { Outcome::Pass(format!("energy within {:.2}%", 100.0 * rel)) } else { Outcome::Fail(format!("energy {got:.4e} vs {want:.4e}")) }
+            }
+            Expect::Deterministic => match method.run(backend, &input, &setting) {
+                Ok(again) if again.image == out => Outcome::Pass("two runs identical".into()),
+                Ok(_) => Outcome::Fail("two runs differ".into()),
+                Err(e) => Outcome::Fail(format!("second run: {e}")),
+            },
+            Expect::Finite | Expect::ResultOrClearError => Outcome::Pass("finite".into()),
+            Expect::NoSpread => Outcome::Pass("nothing spread".into()),
+            Expect::InvalidArgument => Outcome::Fail("unreachable".into()),
+        }
+    }
+}
+
+/// Finds a case by name.
+pub fn case(name: &str) -> Result<Case> {
+    cases().into_iter().find(|c| c.name == name).ok_or_else(|| Error::InvalidArgument(format!("no stress case `{name}`")))
+}

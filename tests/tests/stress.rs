@@ -1,0 +1,60 @@
+//! Every stiff and extreme case of `dof::stress` as a test: each method of the registry on the CPU
+//! backend and on Vulkan (lavapipe in CI, validation on) meets the case's stated expectation.
+
+use dof::backend::{Backend, CpuBackend};
+use dof::eval::methods::registry;
+use dof::stress::{Outcome, case};
+use dof_tests::{assert_clean, vulkan};
+
+fn check(name: &str) {
+    let case = case(name).unwrap();
+    let mut vk = vulkan();
+    for method in registry() {
+        let mut backends: Vec<&mut dyn Backend> = Vec::new();
+        let mut cpu = CpuBackend::new();
+        backends.push(&mut cpu);
+        if let (Some(vk), true) = (vk.as_mut(), method.uses_backend()) {
+            backends.push(vk);
+        }
+        for backend in backends {
+            let kind = backend.kind();
+            if let Outcome::Fail(why) = case.run(method.as_ref(), backend) {
+                panic!("{name} on {} ({kind}): {why} (expected: {})", method.name(), case.expectation);
+            }
+        }
+    }
+    if let Some(vk) = vk.as_mut() {
+        assert_clean(vk);
+    }
+}
+
+macro_rules! cases {
+    ($($test:ident => $name:literal),* $(,)?) => {
+        $(#[test] fn $test() { check($name); })*
+
+        /// The list above names every case.
+        #[test]
+        fn every_case_is_a_test() {
+            let listed = [$($name),*];
+            for c in dof::stress::cases() {
+                assert!(listed.contains(&c.name), "stress case {} has no test", c.name);
+            }
+        }
+    };
+}
+
+cases! {
+    pinhole => "pinhole",
+    sub_pixel_coc => "sub-pixel-coc",
+    flat_field => "flat-field",
+    nan_inf_input => "nan-inf-input",
+    hdr_beyond_half => "hdr-beyond-half",
+    focus_at_focal_length => "focus-at-focal-length",
+    coc_beyond_rings => "coc-beyond-rings",
+    sky_at_infinity => "sky-at-infinity",
+    equal_depths => "equal-depths",
+    one_pixel => "one-pixel",
+    ragged_size => "ragged-size",
+    very_wide_image => "very-wide-image",
+    degenerate_lens => "degenerate-lens",
+}

@@ -45,6 +45,12 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     let md = report.to_markdown();
     std::fs::write(args.out.join("report.md"), &md)?;
     println!("{md}");
+    for (scene, reference, rows) in &report.grids {
+        let path = args.out.join(format!("{scene}-grid.png"));
+        dof::eval::grid::write_grid(&path, reference, rows)?;
+        let names: Vec<&str> = rows.iter().map(|r| r.0.as_str()).collect();
+        println!("wrote {} (rows: reference, {}; left the image, right its error x4)", path.display(), names.join(", "));
+    }
     println!("wrote {} and {}", args.out.join("report.json").display(), args.out.join("report.md").display());
     Ok(())
 }

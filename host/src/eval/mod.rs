@@ -5,6 +5,7 @@
 //! Timing: one warm-up run, then the median of `runs` runs, per stage (GPU timestamps on Vulkan,
 //! wall time per dispatch on the CPU backend). Error: [`crate::metrics`] against the reference.
 
+pub mod grid;
 pub mod methods;
 pub mod report;
 
@@ -65,10 +66,12 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
             occlusion_region_share: ml.mask_share(),
         });
         let input = MethodInput { front, depth, layers: ml.layers, lens };
+        // Per method, the best image on the first backend, for the grid.
+        let mut best: Vec<(String, f64, crate::layers::RgbImage)> = Vec::new();
         for method in all.iter().filter(|m| options.methods.is_empty() || options.methods.iter().any(|n| n == m.name())) {
             let targets = if method.uses_backend() { backends.len() } else { 1 };
             for setting in method.settings(options.quick) {
-                for backend in backends.iter_mut().take(targets) {
+                for (backend_index, backend) in backends.iter_mut().take(targets).enumerate() {
                     let b = backend.as_mut();
                     let mut times = RunTimes::default();
                     let mut output: Option<methods::MethodOutput> = None;
@@ -82,6 +85,13 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                     let output = output.ok_or_else(|| Error::InvalidArgument("no run".into()))?;
                     let image = output.image;
                     let error = compare(&image, &exact.image, Some(&ml.mask))?;
+                    if backend_index == 0 {
+                        match best.iter_mut().find(|b| b.0 == method.name()) {
+                            Some(b) if b.1 >= error.psnr_db => {}
+                            Some(b) => *b = (method.name().to_string(), error.psnr_db, image.clone()),
+                            None => best.push((method.name().to_string(), error.psnr_db, image.clone())),
+                        }
+                    }
                     let record = Record {
                         scene: name.clone(),
                         method: method.name().to_string(),
@@ -104,6 +114,8 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                 }
             }
         }
+        let rows = best.into_iter().map(|(name, _, image)| (name, image)).collect();
+        report.grids.push((name.clone(), exact.image.clone(), rows));
     }
     Ok(report)
 }

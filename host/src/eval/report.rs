@@ -2,7 +2,8 @@
 //! seed 000 Table 1).
 //!
 //! `report.json` schema (one object):
-//! - `version`: the `dof` version; `quick`: whether `--quick` was used;
+//! - `version`: the `dof` version; `shaders_hash`: SHA-256 of the kernel sources; `quick`: whether
+//!   `--quick` was used (the device and driver of each record are in its `device`);
 //! - `scenes[]`: `name`, `width`, `height`, `reference_spp`, `reference_noise_psnr_db` (estimated
 //!   noise of the reference, dB), `fragments_per_pixel`, `multi_layer_share`,
 //!   `occlusion_region_share` (share of pixels in the partial-occlusion region, the disocclusion
@@ -14,6 +15,7 @@
 //!   `runs`, `figures` (method-specific numbers by name: list lengths, fragments, buffer bytes; see
 //!   [`Record::figures`]). PSNR is `null` where it is infinite (identical images).
 
+use crate::layers::RgbImage;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -86,14 +88,23 @@ impl Record {
 #[derive(Clone, Debug, Serialize)]
 pub struct Report {
     pub version: String,
+    /// SHA-256 of the kernel sources the SPIR-V modules were built from.
+    pub shaders_hash: String,
     pub quick: bool,
     pub scenes: Vec<SceneInfo>,
     pub records: Vec<Record>,
+    /// Per scene: the reference and each method's best image on the first backend (for the image
+    /// grids; not in the JSON).
+    #[serde(skip)]
+    pub grids: Vec<(String, RgbImage, Vec<(String, RgbImage)>)>,
 }
 
 impl Report {
     pub fn new(quick: bool) -> Self {
-        Report { version: env!("CARGO_PKG_VERSION").to_string(), quick, scenes: Vec::new(), records: Vec::new() }
+        Report {
+            version: env!("CARGO_PKG_VERSION").to_string(),
+            shaders_hash: crate::shaders::SOURCE_HASH.to_string(),
+            quick, scenes: Vec::new(), records: Vec::new(), grids: Vec::new() }
     }
 
     pub fn to_json(&self) -> String {

@@ -69,7 +69,7 @@ use std::path::Path;
 pub use channels::natural_cmp;
 pub use exr_read::{ExrLayout, InputReport, read_layered_exr, read_rgb_exr};
 pub use exr_write::{ExrCompression, ExrPrecision, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr};
-pub use preview::write_png_preview;
+pub use preview::{write_png_display, write_png_preview};
 pub use sanitize::{COLOR_INF_REPLACEMENT, SanitizeCounts};
 pub use tonemap::tonemap;
 

@@ -8,7 +8,7 @@
 //! - [`scene`]: lenses, cameras, analytic scenes and their exact references;
 //! - [`methods`]: the depth-of-field methods (gathering baseline, tiled splatting), on any backend;
 //! - [`eval`]: every method on every scene and backend, timed and measured (`dof eval`);
-//! - [`metrics`]: PSNR and SSIM against a reference, full-frame and in the partial-occlusion region;
+//! - [`metrics`]: PSNR, SSIM and FLIP against a reference, full-frame and in the partial-occlusion region;
 //! - [`stress`]: the stiff and extreme cases, each with its expectation, on every method (`dof stress`);
 //! - [`shaders`]: the embedded SPIR-V modules.
 

@@ -5,9 +5,13 @@
 //! - SSIM from the `image-compare` crate (its MSSIM: SSIM over 8x8 windows, per channel, averaged) on
 //!   the 8-bit display encoding.
 //!
-//! Both come full-frame and, given a mask, inside it (the partial-occlusion region): masked PSNR
+//! - FLIP (LDR-FLIP through the `nv-flip` bindings to NVIDIA's reference implementation) on the
+//!   same 8-bit display encoding, at the crate's default of 67 pixels per degree of visual angle:
+//!   the mean of its per-pixel perceptual error in [0, 1], lower is better.
+//!
+//! All come full-frame and, given a mask, inside it (the partial-occlusion region): masked PSNR
 //! averages the squared error over the masked pixels, masked SSIM averages the crate's SSIM map there
-//! (which it exposes clamped to [0, 1] in 8 bits).
+//! (which it exposes clamped to [0, 1] in 8 bits), masked FLIP averages FLIP's error map there.
 
 use crate::error::{Error, Result};
 use crate::io::tonemap::{tonemap, tonemap_to_srgb8};
@@ -22,6 +26,9 @@ pub struct ImageError {
     /// Inside the mask; `None` without a mask or when it selects no pixel.
     pub psnr_masked_db: Option<f64>,
     pub ssim_masked: Option<f64>,
+    /// Mean FLIP error, full frame and inside the mask.
+    pub flip: f64,
+    pub flip_masked: Option<f64>,
     pub masked_pixels: u64,
 }
 
@@ -73,7 +80,15 @@ fn to_rgb8(image: &RgbImage) -> Rgb8Image {
     Rgb8Image::from_raw(image.width, image.height, bytes).unwrap_or_else(|| Rgb8Image::new(image.width, image.height))
 }
 
-/// PSNR and SSIM of `image` against `reference`, full-frame and inside `mask` (row-major, one entry
+/// FLIP's per-pixel error map of `image` against `reference` (same size, checked by the caller).
+fn flip_map(image: &RgbImage, reference: &RgbImage) -> Vec<f32> {
+    let bytes = |img: &RgbImage| -> Vec<u8> { img.data.iter().flat_map(|&p| tonemap_to_srgb8(p, 1.0)).collect() };
+    let reference = nv_flip::FlipImageRgb8::with_data(reference.width, reference.height, &bytes(reference));
+    let test = nv_flip::FlipImageRgb8::with_data(image.width, image.height, &bytes(image));
+    nv_flip::flip(reference, test, nv_flip::DEFAULT_PIXELS_PER_DEGREE).to_vec()
+}
+
+/// PSNR, SSIM and FLIP of `image` against `reference`, full-frame and inside `mask` (row-major, one entry
 /// per pixel).
 pub fn compare(image: &RgbImage, reference: &RgbImage, mask: Option<&[bool]>) -> Result<ImageError> {
     check_sizes(image, reference, mask)?;
@@ -85,11 +100,14 @@ pub fn compare(image: &RgbImage, reference: &RgbImage, mask: Option<&[bool]>) ->
         &to_rgb8(reference),
     )
     .map_err(|e| Error::InvalidArgument(format!("SSIM failed: {e}")))?;
+    let flip_map = flip_map(image, reference);
     let mut result = ImageError {
         psnr_db: psnr_from(squared.iter().sum(), pixels),
         ssim: similarity.score,
         psnr_masked_db: None,
         ssim_masked: None,
+        flip: flip_map.iter().map(|&e| e as f64).sum::<f64>() / pixels as f64,
+        flip_masked: None,
         masked_pixels: 0,
     };
     if let Some(mask) = mask {
@@ -109,6 +127,7 @@ pub fn compare(image: &RgbImage, reference: &RgbImage, mask: Option<&[bool]>) ->
                 })
                 .sum();
             result.ssim_masked = Some(sum / inside.len() as f64);
+            result.flip_masked = Some(inside.iter().map(|&i| flip_map[i] as f64).sum::<f64>() / inside.len() as f64);
         }
     }
     Ok(result)

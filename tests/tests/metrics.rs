@@ -23,6 +23,7 @@ fn identical_images_are_perfect() {
     assert!((e.ssim - 1.0).abs() < 1e-9, "{}", e.ssim);
     assert_eq!(e.psnr_masked_db, Some(f64::INFINITY));
     assert!((e.ssim_masked.unwrap() - 1.0).abs() < 1e-9);
+    assert_eq!((e.flip, e.flip_masked), (0.0, Some(0.0)));
 }
 
 #[test]
@@ -54,6 +55,9 @@ fn the_mask_selects_the_region() {
     assert_eq!(on_right.psnr_masked_db, Some(f64::INFINITY));
     assert!(on_left.psnr_masked_db.unwrap() < on_left.psnr_db, "the damage is concentrated in the left half");
     assert!(on_left.ssim_masked.unwrap() < on_right.ssim_masked.unwrap());
+    // FLIP: clearly visible damage on the left; the right half is only touched near the seam.
+    assert!(on_left.flip_masked.unwrap() > 0.2 && on_left.flip_masked.unwrap() > 5.0 * on_right.flip_masked.unwrap());
+    assert!((on_left.flip - (on_left.flip_masked.unwrap() + on_right.flip_masked.unwrap()) / 2.0).abs() < 1e-6);
     let none = compare(&b, &a, Some(&vec![false; 32 * 32])).unwrap();
     assert_eq!((none.psnr_masked_db, none.ssim_masked, none.masked_pixels), (None, None, 0));
 }

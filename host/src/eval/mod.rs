@@ -104,6 +104,8 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                         ssim: error.ssim,
                         psnr_masked_db: error.psnr_masked_db,
                         ssim_masked: error.ssim_masked,
+                        flip: error.flip,
+                        flip_masked: error.flip_masked,
                         runs: options.runs,
                         figures: output.figures,
                     };

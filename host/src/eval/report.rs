@@ -12,6 +12,7 @@
 //!   `backend` (`cpu`, `vulkan`, or `host` for methods without kernels), `device`, `time_ms` (median
 //!   over `runs` of the summed stage times), `stages_ms` (median per stage label), `psnr_db`, `ssim`,
 //!   `psnr_masked_db`, `ssim_masked` (inside the partial-occlusion region; null when it is empty),
+//!   `flip`, `flip_masked` (mean LDR-FLIP error, lower is better; see [`crate::metrics`]),
 //!   `runs`, `figures` (method-specific numbers by name: list lengths, fragments, buffer bytes; see
 //!   [`Record::figures`]). PSNR is `null` where it is infinite (identical images).
 
@@ -45,6 +46,9 @@ pub struct Record {
     pub ssim: f64,
     pub psnr_masked_db: Option<f64>,
     pub ssim_masked: Option<f64>,
+    /// Mean FLIP error (lower is better), full frame and in the region.
+    pub flip: f64,
+    pub flip_masked: Option<f64>,
     pub runs: usize,
     /// Method-specific figures: `mean_list_length`, `max_list_length`, `fragments` (entering
     /// tiling), `copied_tiles`, `rings`, `buffer_bytes` for the splatting methods; `radius_px` for
@@ -121,11 +125,12 @@ impl Report {
             let _ = writeln!(md, "## {} ({}x{})\n", s.name, s.width, s.height);
             let _ = writeln!(md, "Reference: {} spp (noise {} dB). Multi-layer image: {:.3} fragments/px, {:.1}% of pixels multi-layer; partial-occlusion region {:.1}% of pixels.\n",
                 s.reference_spp, db(s.reference_noise_psnr_db), s.fragments_per_pixel, 100.0 * s.multi_layer_share, 100.0 * s.occlusion_region_share);
-            md.push_str("| method | setting | backend | total (ms) | PSNR (dB) | SSIM | PSNR region (dB) | SSIM region |\n|---|---|---|---|---|---|---|---|\n");
+            md.push_str("| method | setting | backend | total (ms) | PSNR (dB) | SSIM | FLIP | PSNR region (dB) | SSIM region | FLIP region |\n|---|---|---|---|---|---|---|---|---|---|\n");
             for r in self.records.iter().filter(|r| r.scene == s.name) {
-                let _ = writeln!(md, "| {} | {} | {} | {:.3} | {} | {:.4} | {} | {} |",
+                let opt = |v: Option<f64>| v.map_or("-".into(), |v| format!("{v:.4}"));
+                let _ = writeln!(md, "| {} | {} | {} | {:.3} | {} | {:.4} | {:.4} | {} | {} | {} |",
                     r.method, r.setting, r.backend, r.time_ms,
-                    db(Some(r.psnr_db)), r.ssim, db(r.psnr_masked_db), r.ssim_masked.map_or("-".into(), |v| format!("{v:.4}")));
+                    db(Some(r.psnr_db)), r.ssim, r.flip, db(r.psnr_masked_db), opt(r.ssim_masked), opt(r.flip_masked));
             }
             md.push('\n');
             md.push_str(&self.table1(&s.name));

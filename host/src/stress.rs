@@ -51,17 +51,20 @@ pub enum Outcome {
     NotApplicable(&'static str),
 }
 
-/// f = 50 mm focused at 2 m, 8000 px per metre of sensor: the far-field CoC is `410·a` px.
-fn lens(aperture_radius: f32) -> ThinLens {
+/// f = 50 mm focused at 2 m, 8000 px per metre of sensor: the far-field CoC is `410·a` px. Shared
+/// with the integration tests.
+pub fn test_lens(aperture_radius: f32) -> ThinLens {
     ThinLens { focal_length: 0.05, aperture_radius, focus_distance: 2.0, pixels_per_unit: 8000.0 }
 }
 
-fn hash(i: u32) -> u32 {
+/// A cheap integer hash: the noise images' (and tests') deterministic randomness.
+pub fn hash(i: u32) -> u32 {
     i.wrapping_mul(2654435761).rotate_left(13).wrapping_mul(0x9E37_79B1)
 }
 
-/// `w`x`h`, up to `layers` fragments per pixel at distinct depths in `[0.5, 15]`, varied colours.
-fn image(w: u32, h: u32, layers: u32, color: impl Fn(u32) -> [f32; 3]) -> LayeredImage {
+/// `w`x`h`, 1 to `layers` fragments per pixel at distinct depths in `[0.5, 15]`, front to back, the
+/// colour of slot `i` from `color(i)`. Shared with the integration tests.
+pub fn noise_image(w: u32, h: u32, layers: u32, color: impl Fn(u32) -> [f32; 3]) -> LayeredImage {
     let mut img = LayeredImage::new(w, h, layers).expect("a valid test size");
     for y in 0..h {
         for x in 0..w {
@@ -77,7 +80,8 @@ fn image(w: u32, h: u32, layers: u32, color: impl Fn(u32) -> [f32; 3]) -> Layere
     img
 }
 
-fn varied(i: u32) -> [f32; 3] {
+/// Colours of every scale, some beyond 1000.
+pub fn varied(i: u32) -> [f32; 3] {
     let c = hash(i);
     [(c % 97) as f32 / 97.0, (c % 89) as f32 / 8.9, (c % 83) as f32 * 20.0]
 }
@@ -86,31 +90,31 @@ const FLAT: [f32; 3] = [0.25, 3.0, 1200.0];
 
 pub fn cases() -> Vec<Case> {
     vec![
-        Case { name: "pinhole", expectation: "aperture 0: the front layer, bit for bit", expect: Expect::Exact, build: || (image(37, 29, 3, varied), lens(0.0)) },
+        Case { name: "pinhole", expectation: "aperture 0: the front layer, bit for bit", expect: Expect::Exact, build: || (noise_image(37, 29, 3, varied), test_lens(0.0)) },
         Case {
             name: "sub-pixel-coc",
             expectation: "every CoC under one pixel: the front layer within 1e-5",
             expect: Expect::Close(1e-5),
             build: || {
-                let mut img = image(40, 33, 2, varied);
+                let mut img = noise_image(40, 33, 2, varied);
                 img.fragments.iter_mut().for_each(|f| f.depth = f.depth.max(1.2));
-                (img, lens(0.0005))
+                (img, test_lens(0.0005))
             },
         },
-        Case { name: "flat-field", expectation: "a flat colour stays flat within 1e-3 under blur", expect: Expect::Flat(1e-3), build: || (image(50, 41, 3, |_| FLAT), lens(0.01)) },
+        Case { name: "flat-field", expectation: "a flat colour stays flat within 1e-3 under blur", expect: Expect::Flat(1e-3), build: || (noise_image(50, 41, 3, |_| FLAT), test_lens(0.01)) },
         Case {
             name: "nan-inf-input",
             expectation: "NaN/Inf colours and NaN, zero, negative depths: nothing non-finite spreads",
             expect: Expect::NoSpread,
             build: || {
-                let mut img = image(33, 33, 2, varied);
+                let mut img = noise_image(33, 33, 2, varied);
                 let bad = [([f32::NAN, 1.0, 1.0], 3.0), ([f32::INFINITY, 1.0, 1.0], 3.0), ([1.0; 3], f32::NAN), ([1.0; 3], -2.0), ([1.0; 3], 0.0)];
                 for (k, (color, depth)) in bad.into_iter().enumerate() {
                     let p = 100 + 150 * k;
                     img.counts[p] = 1;
                     img.fragments[p * 2] = Fragment { color, alpha: 1.0, depth };
                 }
-                (img, lens(0.02))
+                (img, test_lens(0.02))
             },
         },
         Case {
@@ -125,26 +129,26 @@ pub fn cases() -> Vec<Case> {
                         let _ = img.push(x, y, Fragment { color: c, alpha: 1.0, depth: 5.0 });
                     }
                 }
-                (img, lens(0.05))
+                (img, test_lens(0.05))
             },
         },
         Case {
             name: "focus-at-focal-length",
             expectation: "z_f = 1.0001 f (CoC of thousands of pixels): a finite image",
             expect: Expect::Finite,
-            build: || (image(40, 40, 2, varied), ThinLens { focus_distance: 0.050005, ..lens(0.02) }),
+            build: || (noise_image(40, 40, 2, varied), ThinLens { focus_distance: 0.050005, ..test_lens(0.02) }),
         },
-        Case { name: "coc-beyond-rings", expectation: "CoC radius ~1000 px, far beyond every window: capped, finite", expect: Expect::Finite, build: || (image(64, 48, 2, varied), lens(1.0)) },
+        Case { name: "coc-beyond-rings", expectation: "CoC radius ~1000 px, far beyond every window: capped, finite", expect: Expect::Finite, build: || (noise_image(64, 48, 2, varied), test_lens(1.0)) },
         Case {
             name: "sky-at-infinity",
             expectation: "half the image is sky (no fragment, depth +inf): finite, the sky blends as black",
             expect: Expect::Finite,
             build: || {
-                let mut img = image(48, 32, 2, varied);
+                let mut img = noise_image(48, 32, 2, varied);
                 for p in 0..(48 * 16) {
                     img.counts[p] = 0;
                 }
-                (img, lens(0.02))
+                (img, test_lens(0.02))
             },
         },
         Case {
@@ -152,24 +156,24 @@ pub fn cases() -> Vec<Case> {
             expectation: "every fragment at one depth: ties resolve the same way every run",
             expect: Expect::Deterministic,
             build: || {
-                let mut img = image(40, 40, 1, varied);
+                let mut img = noise_image(40, 40, 1, varied);
                 img.fragments.iter_mut().for_each(|f| f.depth = 0.9);
-                (img, lens(0.01))
+                (img, test_lens(0.01))
             },
         },
-        Case { name: "one-pixel", expectation: "a 1x1 image: finite, one pixel", expect: Expect::Finite, build: || (image(1, 1, 2, varied), lens(0.02)) },
-        Case { name: "ragged-size", expectation: "17x5 (no multiple of any tile): finite, every pixel", expect: Expect::Finite, build: || (image(17, 5, 2, varied), lens(0.01)) },
+        Case { name: "one-pixel", expectation: "a 1x1 image: finite, one pixel", expect: Expect::Finite, build: || (noise_image(1, 1, 2, varied), test_lens(0.02)) },
+        Case { name: "ragged-size", expectation: "17x5 (no multiple of any tile): finite, every pixel", expect: Expect::Finite, build: || (noise_image(17, 5, 2, varied), test_lens(0.01)) },
         Case {
             name: "very-wide-image",
             expectation: "40000x2: a finite image, or a clear TooLarge error",
             expect: Expect::ResultOrClearError,
-            build: || (image(40_000, 2, 1, varied), lens(0.01)),
+            build: || (noise_image(40_000, 2, 1, varied), test_lens(0.01)),
         },
         Case {
             name: "degenerate-lens",
             expectation: "focus distance below the focal length: an InvalidArgument error",
             expect: Expect::InvalidArgument,
-            build: || (image(16, 16, 1, varied), ThinLens { focus_distance: 0.01, ..lens(0.01) }),
+            build: || (noise_image(16, 16, 1, varied), ThinLens { focus_distance: 0.01, ..test_lens(0.01) }),
         },
     ]
 }

@@ -12,7 +12,7 @@
 //! that nothing covers comes out black.
 
 use crate::exec::{Group, Mem};
-use crate::lens::{ThinLens, is_finite as finite, is_nan, is_pos_inf, is_positive};
+use crate::lens::{ThinLens, is_finite as finite, is_positive};
 
 pub const TILE: u32 = 8;
 
@@ -30,8 +30,7 @@ pub struct GatherParams {
 /// CoC radius in pixels of a sample at depth `z`, capped; sky (`+inf`) takes the far-field radius.
 #[inline]
 pub fn radius_px(lens: &ThinLens, z: f32, max_radius: f32) -> f32 {
-    let r = if is_pos_inf(z) { 0.5 * lens.far_limit_px() } else { 0.5 * lens.coc_px(z) };
-    if is_nan(r) { 0.0 } else { r.min(max_radius) }
+    lens.coc_radius_px(z).min(max_radius)
 }
 
 /// Colour of pixel `i`, or `None` when any channel is not finite.

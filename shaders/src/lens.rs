@@ -78,6 +78,15 @@ impl ThinLens {
         abs(self.signed_coc_px(z))
     }
 
+    /// CoC radius in pixels for the kernels: half of [`Self::coc_px`], the far-field limit for the
+    /// sky (`+inf`, tested on the bits), and 0 for an invalid depth (NaN, `<= 0`), so a bad sample
+    /// never widens a window.
+    #[inline]
+    pub fn coc_radius_px(&self, z: f32) -> f32 {
+        let r = if is_pos_inf(z) { 0.5 * self.far_limit_px() } else { 0.5 * self.coc_px(z) };
+        if is_nan(r) { 0.0 } else { r }
+    }
+
     /// The two depths whose CoC diameter is `c` pixels (seed 002, eq. 5-7): the near depth
     /// `D1 = z_f·K/(K + c)` in front of the focus plane and the far depth `D2 = z_f·K/(K − c)` behind
     /// it, with `K` = [`Self::far_limit_px`]. Equivalently `[D1, D2]` is the depth interval whose CoC

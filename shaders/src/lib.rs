@@ -16,6 +16,7 @@ pub mod math;
 pub mod scan;
 pub mod sort;
 pub mod splat;
+pub mod wg;
 
 #[cfg(not(target_arch = "spirv"))]
 pub use kernel::KernelDesc;

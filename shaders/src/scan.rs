@@ -4,6 +4,7 @@
 //! modulo 2^32 on both backends.
 
 use crate::exec::{Group, Mem};
+use crate::wg::{add, inclusive_scan};
 
 pub const THREADS: u32 = 256;
 pub const ITEMS: u32 = 4;
@@ -23,8 +24,8 @@ pub struct ScanParams {
     pub sums_offset: u32,
 }
 
-/// Exclusive scan of each block of `data`, block totals to `sums`. Workgroup memory holds two
-/// ping-pong arrays of per-invocation totals for a Hillis-Steele scan.
+/// Exclusive scan of each block of `data`, block totals to `sums`. Workgroup memory holds the
+/// per-invocation totals and the ping-pong half of their scan.
 pub fn block_pass<G: Group, M: Mem>(g: &mut G, p: &ScanParams, sh: &mut [u32; 2 * THREADS as usize], mut data: M, mut sums: M) {
     let blocks = p.len.div_ceil(BLOCK);
     let mut block = g.workgroup_id()[0];
@@ -44,19 +45,7 @@ pub fn block_pass<G: Group, M: Mem>(g: &mut G, p: &ScanParams, sh: &mut [u32; 2 
             }
             sh[lid as usize] = total;
         });
-        // Inclusive scan of the totals, reading one half of `sh` and writing the other.
-        let mut src = 0usize;
-        let mut d = 1u32;
-        while d < THREADS {
-            g.each(|lid| {
-                let dst = THREADS as usize - src;
-                let own = sh[src + lid as usize];
-                sh[dst + lid as usize] =
-                    if lid >= d { own.wrapping_add(sh[src + (lid - d) as usize]) } else { own };
-            });
-            src = THREADS as usize - src;
-            d *= 2;
-        }
+        let src = inclusive_scan(g, sh, 0, add);
         g.each(|lid| {
             let inclusive = sh[src + lid as usize];
             let mut running = if lid == 0 { 0 } else { sh[src + lid as usize - 1] };

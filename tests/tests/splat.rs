@@ -8,35 +8,18 @@ use dof::Error;
 use dof_shaders::half::{f16_to_f32, f32_to_f16};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::splat::MAX_RINGS;
+use dof::stress::{hash, noise_image, test_lens, varied};
 use dof_tests::{assert_clean, vulkan};
 
-/// f = 50 mm focused at 2 m; 8000 px per metre of sensor. Far-field CoC 0.2·a·8000/1.95 px.
 fn lens(aperture_radius: f32) -> ThinLens {
-    ThinLens { focal_length: 0.05, aperture_radius, focus_distance: 2.0, pixels_per_unit: 8000.0 }
+    test_lens(aperture_radius)
 }
 
-fn hash(i: u32) -> u32 {
-    i.wrapping_mul(2654435761).rotate_left(13).wrapping_mul(0x9E37_79B1)
-}
-
-/// Up to `layers` fragments per pixel at distinct depths between 0.5 and 15, colours of every scale
-/// (some beyond 1000), a few empty pixels (sky).
+/// The stress suite's noise image (1 to `layers` fragments per pixel at distinct depths, colours of
+/// every scale), with every 23rd pixel left empty (sky).
 fn noise_layers(w: u32, h: u32, layers: u32) -> LayeredImage {
-    let mut img = LayeredImage::new(w, h, layers).unwrap();
-    for y in 0..h {
-        for x in 0..w {
-            let i = y * w + x;
-            let v = hash(i);
-            let n = if v % 23 == 0 { 0 } else { 1 + v % layers };
-            let mut z = 0.5 + (v >> 8) as f32 % 700.0 / 100.0 + i as f32 * 1e-5;
-            for k in 0..n {
-                let c = hash(i * 7 + k);
-                let color = [(c % 97) as f32 / 97.0, (c % 89) as f32 / 8.9, (c % 83) as f32 * 20.0];
-                img.push(x, y, Fragment { color, alpha: 1.0, depth: z }).unwrap();
-                z *= 1.3;
-            }
-        }
-    }
+    let mut img = noise_image(w, h, layers, varied);
+    img.counts.iter_mut().step_by(23).for_each(|n| *n = 0);
     img
 }
 
@@ -99,7 +82,7 @@ fn sub_pixel_coc_is_exact() {
     let mut far = img.clone();
     far.fragments.iter_mut().for_each(|f| f.depth = f.depth.max(1.2));
     let l = lens(0.0005);
-    assert!(dof_shaders::splat::fragment::coc_radius(&l, 1.2) < 0.5);
+    assert!(l.coc_radius_px(1.2) < 0.5);
     let out = run(&far, &l, &SplatOptions::default());
     assert_eq!(out.image.data, front_colors(&far));
     assert_eq!(out.report.list_entries, 0);
@@ -210,7 +193,7 @@ fn rings_follow_the_largest_coc_and_cap_beyond() {
     let mut img = noise_layers(64, 64, 1);
     // Near field only: at 0.5 m the CoC radius is 1.5·K with K = 2·a·f/(z_f − f)·8000 = 410·a.
     img.fragments.iter_mut().for_each(|f| f.depth = 0.5);
-    let r_for = |a: f32| dof_shaders::splat::fragment::coc_radius(&lens(a), 0.5) + 0.5;
+    let r_for = |a: f32| lens(a).coc_radius_px(0.5) + 0.5;
     for (a, rings) in [(0.01, 1), (0.038, 2), (0.065, 3)] {
         let out = run(&img, &lens(a), &SplatOptions::default());
         assert_eq!(out.report.plan.as_ref().unwrap().rings, rings, "aperture {a}: radius {}", r_for(a));

@@ -80,9 +80,13 @@ impl Method for Gather {
     }
 }
 
+/// The splatting settings the evaluation sweeps: merge level and tile size. The tile sweep runs
+/// merged, where lists are short (unmerged 32-pixel tiles take over 10 s a run on lavapipe).
+pub const SPLAT_POINTS: [(Merge, u32); 5] = [(Merge::None, 16), (Merge::X2, 16), (Merge::X4, 16), (Merge::X4, 24), (Merge::X4, 32)];
+
 /// Tiled splatting: single-layer (`tiled`, seed 003) on the front layer or multi-layer
-/// (`multilayer`, seed 000); the knobs are the merge level and the tile size (`value` encodes
-/// `merge steps · 100 + tile`).
+/// (`multilayer`, seed 000); the knobs are the merge level and the tile size, one of
+/// [`SPLAT_POINTS`] (a setting's `value` is its index there).
 pub struct Splat {
     pub multi_layer: bool,
 }
@@ -95,26 +99,18 @@ impl Method for Splat {
         true
     }
     fn settings(&self, quick: bool) -> Vec<Setting> {
-        let points: &[(Merge, u32)] = if quick {
-            &[(Merge::None, 16), (Merge::X4, 16)]
-        } else {
-            // The tile sweep runs merged, where lists are short: unmerged 32-pixel tiles take over 10 s
-            // a run on lavapipe.
-            &[(Merge::None, 16), (Merge::X2, 16), (Merge::X4, 16), (Merge::X4, 24), (Merge::X4, 32)]
-        };
+        let points: &[usize] = if quick { &[0, 2] } else { &[0, 1, 2, 3, 4] };
         points
             .iter()
-            .map(|&(m, tile)| Setting { label: format!("merge={} tile={tile}", m.name()), value: Some(m.steps() * 100 + tile) })
+            .map(|&i| {
+                let (merge, tile) = SPLAT_POINTS[i];
+                Setting { label: format!("merge={} tile={tile}", merge.name()), value: Some(i as u32) }
+            })
             .collect()
     }
     fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput> {
-        let code = setting.value.unwrap_or(16);
-        let merge = match code / 100 {
-            0 => Merge::None,
-            1 => Merge::X2,
-            _ => Merge::X4,
-        };
-        let options = SplatOptions { merge, tile: code % 100, ..Default::default() };
+        let (merge, tile) = SPLAT_POINTS[setting.value.unwrap_or(0) as usize % SPLAT_POINTS.len()];
+        let options = SplatOptions { merge, tile, ..Default::default() };
         let layers = if self.multi_layer { input.layers.clone() } else { input.layers.front_layer() };
         let out = splat(backend, &layers, &input.lens, &options)?;
         let r = &out.report;

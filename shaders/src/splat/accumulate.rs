@@ -20,7 +20,7 @@
 
 use super::fragment::{Fragment, weight, weight_sum};
 use super::pack::load_sharp;
-use super::wg::{inclusive_scan, max};
+use crate::wg::{inclusive_scan, max};
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Mem};
 use crate::lens::is_nan;

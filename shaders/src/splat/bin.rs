@@ -15,7 +15,7 @@
 //!   stable sort that follows is deterministic.
 
 use super::fragment::Fragment;
-use super::wg::{add, inclusive_scan, max};
+use crate::wg::{add, for_each_item, inclusive_scan, max};
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Mem};
 
@@ -34,6 +34,20 @@ fn cell_of(p: &SplatParams, tx: u32, ty: u32, c: u32) -> u32 {
     }
     let (gx, gy) = (tx * ct + c % ct, ty * ct + c / ct);
     if gx < p.cells_x && gy < p.cells_y { gy * p.cells_x + gx } else { NONE }
+}
+
+/// Runs `f(cell)` for each cell invocation `lid` handles in tile `(tx, ty)` (consecutive, so their
+/// order across invocations is the tile's row-major cell order), skipping cells outside the grid.
+#[inline]
+fn each_cell(p: &SplatParams, tx: u32, ty: u32, lid: u32, mut f: impl FnMut(u32)) {
+    let mut i = 0;
+    while i < CELLS_PER_THREAD {
+        let cell = cell_of(p, tx, ty, lid * CELLS_PER_THREAD + i);
+        if cell != NONE {
+            f(cell);
+        }
+        i += 1;
+    }
 }
 
 /// Pixel span `[start, end)` of tile `t` along an axis of `size` pixels.
@@ -95,13 +109,7 @@ pub fn tile_count_pass<G: Group, M: Mem>(
     let radii = 2 * THREADS as usize;
     g.each(|lid| {
         let (mut total, mut widest, mut capped) = (0u32, 0.0f32, 0u32);
-        let mut i = 0;
-        while i < CELLS_PER_THREAD {
-            let cell = cell_of(p, tx, ty, lid * CELLS_PER_THREAD + i);
-            i += 1;
-            if cell == NONE {
-                continue;
-            }
+        each_cell(p, tx, ty, lid, |cell| {
             let n = cell_counts.load(cell);
             total += n;
             let mut k = 0;
@@ -112,7 +120,7 @@ pub fn tile_count_pass<G: Group, M: Mem>(
                 capped += f.is_capped(&p.lens, p.max_radius) as u32;
                 k += 1;
             }
-        }
+        });
         sh[lid as usize] = total;
         // Radii are positive, so their bits order like the values.
         sh[radii + lid as usize] = widest.to_bits();
@@ -124,20 +132,18 @@ pub fn tile_count_pass<G: Group, M: Mem>(
     let widest = inclusive_scan(g, sh, radii, max);
     g.each(|lid| {
         let mut running = if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
-        let mut i = 0;
-        while i < CELLS_PER_THREAD {
-            let cell = cell_of(p, tx, ty, lid * CELLS_PER_THREAD + i);
-            i += 1;
-            if cell != NONE {
-                cell_off.store(cell, running);
-                running += cell_counts.load(cell);
-            }
-        }
+        each_cell(p, tx, ty, lid, |cell| {
+            cell_off.store(cell, running);
+            running += cell_counts.load(cell);
+        });
         if lid == THREADS - 1 {
             let total = sh[sums + lid as usize];
             tile_count.store(t, total);
             tile_base.store(t, total);
             tile_radius.store(t, sh[widest + lid as usize]);
+            if total > 0 {
+                st.atomic_add(stats::TILED, total);
+            }
         }
     });
 }
@@ -146,67 +152,52 @@ pub fn compact_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells: M, cell
     let [tx, ty, _] = g.workgroup_id();
     let base = tile_base.load(ty * p.tiles_x + tx);
     g.each(|lid| {
-        let mut i = 0;
-        while i < CELLS_PER_THREAD {
-            let cell = cell_of(p, tx, ty, lid * CELLS_PER_THREAD + i);
-            i += 1;
-            if cell == NONE {
-                continue;
-            }
+        each_cell(p, tx, ty, lid, |cell| {
             let (n, at) = (cell_counts.load(cell), base + cell_off.load(cell));
             let mut w = 0;
             while w < 4 * n {
                 dense.store(4 * at + w, cells.load(4 * cell * p.cell_cap + w));
                 w += 1;
             }
-        }
+        });
     });
 }
 
 pub fn alloc_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, tile_count: M, tile_radius: M, mut capacity: M, mut copy: M, mut st: M) {
     let tiles = p.tiles_x * p.tiles_y;
-    let stride = g.num_workgroups()[0] * THREADS;
-    let mut base = g.workgroup_id()[0] * THREADS;
-    while base < tiles {
-        g.each(|lid| {
-            let t = base + lid;
-            if t >= tiles {
-                return;
-            }
-            let (tx, ty) = (t % p.tiles_x, t / p.tiles_x);
-            let rings = p.rings as i32;
-            let mut cap = 0u32;
-            let mut dy = -rings;
-            while dy <= rings {
-                let mut dx = -rings;
-                while dx <= rings {
-                    let (sx, sy) = (tx as i32 + dx, ty as i32 + dy);
-                    dx += 1;
-                    if sx < 0 || sy < 0 || sx >= p.tiles_x as i32 || sy >= p.tiles_y as i32 {
-                        continue;
-                    }
-                    let s = sy as u32 * p.tiles_x + sx as u32;
-                    let n = tile_count.load(s);
-                    if n == 0 {
-                        continue;
-                    }
-                    if s == t || tile_reaches(p, sx as u32, sy as u32, tx, ty, f32::from_bits(tile_radius.load(s))) {
-                        cap += n;
-                    }
+    for_each_item(g, tiles, |t| {
+        let (tx, ty) = (t % p.tiles_x, t / p.tiles_x);
+        let rings = p.rings as i32;
+        let mut cap = 0u32;
+        let mut dy = -rings;
+        while dy <= rings {
+            let mut dx = -rings;
+            while dx <= rings {
+                let (sx, sy) = (tx as i32 + dx, ty as i32 + dy);
+                dx += 1;
+                if sx < 0 || sy < 0 || sx >= p.tiles_x as i32 || sy >= p.tiles_y as i32 {
+                    continue;
                 }
-                dy += 1;
+                let s = sy as u32 * p.tiles_x + sx as u32;
+                let n = tile_count.load(s);
+                if n == 0 {
+                    continue;
+                }
+                if s == t || tile_reaches(p, sx as u32, sy as u32, tx, ty, f32::from_bits(tile_radius.load(s))) {
+                    cap += n;
+                }
             }
-            let copied = cap == 0;
-            capacity.store(t, if copied { 0 } else { cap });
-            copy.store(t, copied as u32);
-            if copied {
-                st.atomic_add(stats::COPY_TILES, 1);
-            } else {
-                st.atomic_max(stats::MAX_CAPACITY, cap);
-            }
-        });
-        base += stride;
-    }
+            dy += 1;
+        }
+        let copied = cap == 0;
+        capacity.store(t, if copied { 0 } else { cap });
+        copy.store(t, copied as u32);
+        if copied {
+            st.atomic_add(stats::COPY_TILES, 1);
+        } else {
+            st.atomic_max(stats::MAX_CAPACITY, cap);
+        }
+    });
 }
 
 /// Words of workgroup memory `splat_bin` uses.

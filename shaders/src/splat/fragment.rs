@@ -22,7 +22,7 @@
 
 use crate::exec::Mem;
 use crate::half::{HALF_MAX, f16_to_f32, f32_to_f16};
-use crate::lens::{ThinLens, is_nan, is_pos_inf};
+use crate::lens::ThinLens;
 use crate::math::{ceil, floor, sqrt};
 
 pub const WORDS: u32 = 4;
@@ -108,7 +108,7 @@ impl Fragment {
     /// its [`extent`], capped at `cap`, and at least half a pixel (its own pixel).
     #[inline]
     pub fn radius(&self, lens: &ThinLens, cap: f32) -> f32 {
-        let r = coc_radius(lens, self.depth) + extent(self.level);
+        let r = lens.coc_radius_px(self.depth) + extent(self.level);
         let r = if r < cap { r } else { cap };
         if r > 0.5 { r } else { 0.5 }
     }
@@ -116,7 +116,7 @@ impl Fragment {
     /// Whether the radius was capped (for the report).
     #[inline]
     pub fn is_capped(&self, lens: &ThinLens, cap: f32) -> bool {
-        coc_radius(lens, self.depth) + extent(self.level) > cap
+        lens.coc_radius_px(self.depth) + extent(self.level) > cap
     }
 }
 
@@ -136,13 +136,6 @@ pub fn clamp_half(c: f32) -> f32 {
     } else {
         c
     }
-}
-
-/// CoC radius in pixels at depth `z`: the sky (`+inf`) takes the far-field limit; an invalid depth 0.
-#[inline]
-pub fn coc_radius(lens: &ThinLens, z: f32) -> f32 {
-    let r = if is_pos_inf(z) { 0.5 * lens.far_limit_px() } else { 0.5 * lens.coc_px(z) };
-    if is_nan(r) { 0.0 } else { r }
 }
 
 /// How far a fragment of `level` reaches beyond the CoC circle at its centre: half the edge of the

@@ -16,9 +16,10 @@
 //! Reads the cell layout of `params.cell`/`cell_cap`/`cells_x`/`cells_y`; writes cells of twice the
 //! edge with four times the capacity.
 
-use super::fragment::{Fragment, coc_radius, depth_of};
-use super::{FLAG_UMBRA_MERGE, SplatParams, THREADS, stats};
+use super::fragment::{Fragment, depth_of};
+use super::{FLAG_UMBRA_MERGE, SplatParams, stats};
 use crate::exec::{Group, Mem};
+use crate::wg::for_each_item;
 use crate::lens::ThinLens;
 
 /// 1/√π: the radius of the disc with the area of a unit square.
@@ -42,7 +43,7 @@ pub fn mergeable(f: &[Fragment; 4], level: u32, p: &SplatParams) -> bool {
     let mut m = 0;
     while m < 4 {
         let q = &f[m];
-        if q.level != level || !(coc_radius(&p.lens, q.depth) >= p.merge_min_radius) {
+        if q.level != level || !(p.lens.coc_radius_px(q.depth) >= p.merge_min_radius) {
             return false;
         }
         zmin = if q.depth < zmin { q.depth } else { zmin };
@@ -81,7 +82,7 @@ pub fn merged(f: &[Fragment; 4], lens: &ThinLens, ox: u32, oy: u32, edge: u32) -
         color[0] += 0.25 * f[m].color[0];
         color[1] += 0.25 * f[m].color[1];
         color[2] += 0.25 * f[m].color[2];
-        if coc_radius(lens, f[m].depth) > coc_radius(lens, f[widest].depth) {
+        if lens.coc_radius_px(f[m].depth) > lens.coc_radius_px(f[widest].depth) {
             widest = m;
         }
         m += 1;
@@ -96,85 +97,76 @@ pub fn merge_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells_in: M, cou
     let level = if p.cell == 1 { 0 } else { 1 };
     let cap_out = 4 * p.cell_cap;
     let edge_out = 2 * p.cell;
-    let stride = g.num_workgroups()[0] * THREADS;
-    let mut base = g.workgroup_id()[0] * THREADS;
-    while base < outputs {
-        g.each(|lid| {
-            let o = base + lid;
-            if o >= outputs {
-                return;
+    for_each_item(g, outputs, |o| {
+        let (ox, oy) = (o % out_x, o / out_x);
+        let mut cell = [0u32; 4];
+        let mut count = [0u32; 4];
+        let mut head = [0u32; 4];
+        let mut total = 0;
+        let mut m = 0;
+        while m < 4 {
+            let (cx, cy) = (2 * ox + (m & 1), 2 * oy + (m >> 1));
+            if cx < p.cells_x && cy < p.cells_y {
+                cell[m as usize] = cy * p.cells_x + cx;
+                count[m as usize] = counts_in.load(cell[m as usize]);
+                total += count[m as usize];
             }
-            let (ox, oy) = (o % out_x, o / out_x);
-            let mut cell = [0u32; 4];
-            let mut count = [0u32; 4];
-            let mut head = [0u32; 4];
-            let mut total = 0;
-            let mut m = 0;
+            m += 1;
+        }
+        let (mut emitted, mut merges, mut skipped) = (0u32, 0u32, 0u32);
+        let mut step = 0;
+        // Every step consumes at least one input fragment.
+        while step < total {
+            step += 1;
+            let mut f = [Fragment { color: [0.0; 3], depth: 0.0, level: 0, pos: [0; 2] }; 4];
+            let mut present = 0;
+            let mut front = 4usize;
+            let mut m = 0usize;
             while m < 4 {
-                let (cx, cy) = (2 * ox + (m & 1), 2 * oy + (m >> 1));
-                if cx < p.cells_x && cy < p.cells_y {
-                    cell[m as usize] = cy * p.cells_x + cx;
-                    count[m as usize] = counts_in.load(cell[m as usize]);
-                    total += count[m as usize];
+                if head[m] < count[m] {
+                    f[m] = Fragment::load(&cells_in, cell[m] * p.cell_cap + head[m]);
+                    present += 1;
+                    if front == 4 || f[m].depth < f[front].depth {
+                        front = m;
+                    }
                 }
                 m += 1;
             }
-            let (mut emitted, mut merges, mut skipped) = (0u32, 0u32, 0u32);
-            let mut step = 0;
-            // Every step consumes at least one input fragment.
-            while step < total {
-                step += 1;
-                let mut f = [Fragment { color: [0.0; 3], depth: 0.0, level: 0, pos: [0; 2] }; 4];
-                let mut present = 0;
-                let mut front = 4usize;
+            if present == 0 {
+                break;
+            }
+            if present == 4 && mergeable(&f, level, p) {
+                let out = merged(&f, &p.lens, ox, oy, edge_out);
+                out.store(&mut cells_out, o * cap_out + emitted);
+                emitted += 1;
+                merges += 1;
+                let umbra = p.flags & FLAG_UMBRA_MERGE != 0;
+                let r = footprint_radius(&p.lens, out.depth, edge_out as f32);
+                let shadow = out.depth + p.lens.umbra_length(out.depth, r);
                 let mut m = 0usize;
                 while m < 4 {
-                    if head[m] < count[m] {
-                        f[m] = Fragment::load(&cells_in, cell[m] * p.cell_cap + head[m]);
-                        present += 1;
-                        if front == 4 || f[m].depth < f[front].depth {
-                            front = m;
-                        }
+                    head[m] += 1;
+                    while umbra && head[m] < count[m] && depth_of(&cells_in, cell[m] * p.cell_cap + head[m]) <= shadow {
+                        head[m] += 1;
+                        skipped += 1;
                     }
                     m += 1;
                 }
-                if present == 0 {
-                    break;
-                }
-                if present == 4 && mergeable(&f, level, p) {
-                    let out = merged(&f, &p.lens, ox, oy, edge_out);
-                    out.store(&mut cells_out, o * cap_out + emitted);
-                    emitted += 1;
-                    merges += 1;
-                    let umbra = p.flags & FLAG_UMBRA_MERGE != 0;
-                    let r = footprint_radius(&p.lens, out.depth, edge_out as f32);
-                    let shadow = out.depth + p.lens.umbra_length(out.depth, r);
-                    let mut m = 0usize;
-                    while m < 4 {
-                        head[m] += 1;
-                        while umbra && head[m] < count[m] && depth_of(&cells_in, cell[m] * p.cell_cap + head[m]) <= shadow {
-                            head[m] += 1;
-                            skipped += 1;
-                        }
-                        m += 1;
-                    }
-                } else {
-                    f[front].store(&mut cells_out, o * cap_out + emitted);
-                    emitted += 1;
-                    head[front] += 1;
-                }
+            } else {
+                f[front].store(&mut cells_out, o * cap_out + emitted);
+                emitted += 1;
+                head[front] += 1;
             }
-            counts_out.store(o, emitted);
-            if merges > 0 {
-                st.atomic_add(stats::MERGED, merges);
-                st.atomic_add(stats::MERGED_INPUTS, 4 * merges);
-            }
-            if skipped > 0 {
-                st.atomic_add(stats::UMBRA_SKIPPED, skipped);
-            }
-        });
-        base += stride;
-    }
+        }
+        counts_out.store(o, emitted);
+        if merges > 0 {
+            st.atomic_add(stats::MERGED, merges);
+            st.atomic_add(stats::MERGED_INPUTS, 4 * merges);
+        }
+        if skipped > 0 {
+            st.atomic_add(stats::UMBRA_SKIPPED, skipped);
+        }
+    });
 }
 
 kernel!(

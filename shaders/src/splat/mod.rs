@@ -22,7 +22,6 @@ pub mod bin;
 pub mod fragment;
 pub mod merge;
 pub mod pack;
-mod wg;
 
 use crate::lens::ThinLens;
 
@@ -100,7 +99,9 @@ pub mod stats {
     /// Pixels with a sharp front (kept out of the lists), and in-focus fragments hidden behind one.
     pub const SHARP: u32 = 11;
     pub const HIDDEN_SHARP: u32 = 12;
-    pub const WORDS: u32 = 13;
+    /// Fragments entering tiling (after merging).
+    pub const TILED: u32 = 13;
+    pub const WORDS: u32 = 14;
 }
 
 #[cfg(not(target_arch = "spirv"))]

@@ -9,8 +9,9 @@
 //! reference (a pixel whose slots were all dropped gets nothing and is filled by its neighbours' blur).
 
 use super::fragment::{Fragment, clamp_half};
-use super::{SplatParams, THREADS, stats};
+use super::{SplatParams, stats};
 use crate::exec::{Group, Mem};
+use crate::wg::for_each_item;
 use crate::lens::{is_finite, is_positive};
 
 /// The slot `(pixel, k)` of the input: colour and depth.
@@ -60,70 +61,61 @@ pub fn pack_pass<G: Group, M: Mem>(
     mut st: M,
 ) {
     let pixels = p.width * p.height;
-    let stride = g.num_workgroups()[0] * THREADS;
-    let mut base = g.workgroup_id()[0] * THREADS;
-    while base < pixels {
-        g.each(|lid| {
-            let i = base + lid;
-            if i >= pixels {
-                return;
+    for_each_item(g, pixels, |i| {
+        let (x, y) = (i % p.width, i / p.width);
+        let n = counts.load(i);
+        let n = if n < p.layers { n } else { p.layers };
+        let (mut kept, mut dropped, mut clamped, mut hidden) = (0u32, 0u32, 0u32, 0u32);
+        let mut front = false;
+        // The sky of an empty pixel is one more slot.
+        let slots = if n == 0 { 1 } else { n };
+        let mut k = 0;
+        while k < slots {
+            let (c, z) = if n == 0 { ([0.0; 3], f32::INFINITY) } else { input_slot(&layers, p, i, k) };
+            k += 1;
+            if !is_valid(c, z) {
+                dropped += 1;
+                continue;
             }
-            let (x, y) = (i % p.width, i / p.width);
-            let n = counts.load(i);
-            let n = if n < p.layers { n } else { p.layers };
-            let (mut kept, mut dropped, mut clamped, mut hidden) = (0u32, 0u32, 0u32, 0u32);
-            let mut front = false;
-            // The sky of an empty pixel is one more slot.
-            let slots = if n == 0 { 1 } else { n };
-            let mut k = 0;
-            while k < slots {
-                let (c, z) = if n == 0 { ([0.0; 3], f32::INFINITY) } else { input_slot(&layers, p, i, k) };
-                k += 1;
-                if !is_valid(c, z) {
-                    dropped += 1;
-                    continue;
+            if Fragment::at_pixel(x, y, c, z).radius(&p.lens, p.max_radius) <= 1.0 {
+                if front {
+                    // Behind the sharp front: invisible here, and it reaches no other pixel.
+                    hidden += 1;
+                } else {
+                    store_sharp(&mut sharp, i, c, z);
+                    front = true;
                 }
-                if Fragment::at_pixel(x, y, c, z).radius(&p.lens, p.max_radius) <= 1.0 {
-                    if front {
-                        // Behind the sharp front: invisible here, and it reaches no other pixel.
-                        hidden += 1;
-                    } else {
-                        store_sharp(&mut sharp, i, c, z);
-                        front = true;
-                    }
-                    continue;
-                }
-                let s = p.color_scale;
-                let c = [s * c[0], s * c[1], s * c[2]];
-                if clamp_half(c[0]) != c[0] || clamp_half(c[1]) != c[1] || clamp_half(c[2]) != c[2] {
-                    clamped += 1;
-                }
-                let c = [clamp_half(c[0]), clamp_half(c[1]), clamp_half(c[2])];
-                Fragment::at_pixel(x, y, c, z).store(&mut cells, i * p.layers + kept);
-                kept += 1;
+                continue;
             }
-            if !front {
-                store_sharp(&mut sharp, i, [0.0; 3], f32::NAN);
+            let s = p.color_scale;
+            let c = [s * c[0], s * c[1], s * c[2]];
+            if clamp_half(c[0]) != c[0] || clamp_half(c[1]) != c[1] || clamp_half(c[2]) != c[2] {
+                clamped += 1;
             }
-            cell_counts.store(i, kept);
-            if n == 0 {
-                st.atomic_add(stats::SKY, 1);
-            }
-            if front {
-                st.atomic_add(stats::SHARP, 1);
-            }
-            if hidden > 0 {
-                st.atomic_add(stats::HIDDEN_SHARP, hidden);
-            }
-            if dropped > 0 {
-                st.atomic_add(stats::DROPPED, dropped);
-            }
-            if clamped > 0 {
-                st.atomic_add(stats::CLAMPED, clamped);
-            }
-        });
-        base += stride;
-    }
+            let c = [clamp_half(c[0]), clamp_half(c[1]), clamp_half(c[2])];
+            Fragment::at_pixel(x, y, c, z).store(&mut cells, i * p.layers + kept);
+            kept += 1;
+        }
+        if !front {
+            store_sharp(&mut sharp, i, [0.0; 3], f32::NAN);
+        }
+        cell_counts.store(i, kept);
+        if n == 0 {
+            st.atomic_add(stats::SKY, 1);
+        }
+        if front {
+            st.atomic_add(stats::SHARP, 1);
+        }
+        if hidden > 0 {
+            st.atomic_add(stats::HIDDEN_SHARP, hidden);
+        }
+        if dropped > 0 {
+            st.atomic_add(stats::DROPPED, dropped);
+        }
+        if clamped > 0 {
+            st.atomic_add(stats::CLAMPED, clamped);
+        }
+    });
 }
 
 kernel!(

@@ -4,7 +4,7 @@ use crate::error::{Error, Result};
 use crate::layers::LayeredImage;
 use dof_shaders::lens::ThinLens;
 use dof_shaders::half::HALF_MAX;
-use dof_shaders::splat::fragment::{MAX_EDGE, coc_radius, extent};
+use dof_shaders::splat::fragment::{MAX_EDGE, extent};
 use dof_shaders::splat::{MAX_RINGS, TILE_SIZES};
 
 /// Fragment merging before tiling (seed 000 §6.1).
@@ -153,10 +153,10 @@ pub fn plan(image: &LayeredImage, lens: &ThinLens, o: &SplatOptions) -> Result<P
     for (p, &n) in image.counts.iter().enumerate() {
         let slots = &image.fragments[p * image.max_layers as usize..][..n.min(image.max_layers) as usize];
         if n == 0 {
-            widest = widest.max(coc_radius(lens, f32::INFINITY));
+            widest = widest.max(lens.coc_radius_px(f32::INFINITY));
         }
         for f in slots.iter().filter(|f| f.depth > 0.0 && f.color.iter().all(|c| c.is_finite())) {
-            widest = widest.max(coc_radius(lens, f.depth));
+            widest = widest.max(lens.coc_radius_px(f.depth));
             brightest = f.color.iter().fold(brightest, |m, c| m.max(c.abs()));
         }
     }

@@ -208,7 +208,6 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
         let seg = backend.read_buffer(segments, 0, 2 * tiles)?;
         let list_lengths: Vec<u32> = seg.chunks_exact(2).map(|s| s[1]).collect();
         let c = |i: u32| counters[i as usize];
-        let fragments = inter_fragments(backend, counts_f, fx as u64 * fy as u64)?;
         let report = SplatReport {
             pixels,
             input_fragments: image.counts.iter().map(|&n| n.min(plan.layers) as u64).sum(),
@@ -218,7 +217,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
             sky: c(stats::SKY),
             sharp_pixels: c(stats::SHARP),
             hidden_sharp: c(stats::HIDDEN_SHARP),
-            fragments,
+            fragments: c(stats::TILED) as u64,
             merged: c(stats::MERGED),
             merged_inputs: c(stats::MERGED_INPUTS),
             umbra_skipped: c(stats::UMBRA_SKIPPED),
@@ -236,9 +235,4 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
         };
         Ok(SplatOutput { image: RgbImage { width: plan.width, height: plan.height, data }, report, stages, intermediates: inter })
     })
-}
-
-/// Fragments entering tiling: the sum of the final cells' counts.
-fn inter_fragments(backend: &mut dyn Backend, counts: BufferId, cells: u64) -> Result<u64> {
-    Ok(backend.read_buffer(counts, 0, cells)?.iter().map(|&n| n as u64).sum())
 }

@@ -1,0 +1,55 @@
+//! Workgroup-level building blocks the kernels share: scans over one word per invocation in
+//! workgroup memory, and the grid-stride loop over items.
+
+use crate::exec::Group;
+
+/// Inclusive scan under `op` of `sh[base .. base + n]`, `n` the workgroup size (one word per
+/// invocation, written before the call), ping-ponging with `sh[base + n .. base + 2n]`. Returns the
+/// offset of the half that holds the result. Hillis-Steele: log2(n) barriers.
+pub fn inclusive_scan<G: Group, const N: usize>(
+    g: &mut G,
+    sh: &mut [u32; N],
+    base: usize,
+    op: impl Fn(u32, u32) -> u32,
+) -> usize {
+    let threads = g.size();
+    let t = threads as usize;
+    let mut src = base;
+    let mut d = 1u32;
+    while d < threads {
+        g.each(|lid| {
+            let dst = if src == base { base + t } else { base };
+            let own = sh[src + lid as usize];
+            sh[dst + lid as usize] = if lid >= d { op(sh[src + (lid - d) as usize], own) } else { own };
+        });
+        src = if src == base { base + t } else { base };
+        d *= 2;
+    }
+    src
+}
+
+#[inline]
+pub fn add(a: u32, b: u32) -> u32 {
+    a.wrapping_add(b)
+}
+
+#[inline]
+pub fn max(a: u32, b: u32) -> u32 {
+    if a > b { a } else { b }
+}
+
+/// Runs `f(i)` once for every item `i < n` of a one-dimensional dispatch: one item per invocation,
+/// the workgroups striding over the rest (so any `n` fits the dispatch limit).
+pub fn for_each_item<G: Group>(g: &mut G, n: u32, mut f: impl FnMut(u32)) {
+    let size = g.size();
+    let stride = g.num_workgroups()[0] * size;
+    let mut base = g.workgroup_id()[0] * size;
+    while base < n {
+        g.each(|lid| {
+            if base + lid < n {
+                f(base + lid);
+            }
+        });
+        base += stride;
+    }
+}

@@ -24,6 +24,8 @@ pub enum Error {
     TooLarge { what: String, size: u64, limit: u64 },
     #[error("invalid argument: {0}")]
     InvalidArgument(String),
+    #[error("cannot draw a plot: {0}")]
+    Plot(String),
 }
 
 pub type Result<T> = std::result::Result<T, Error>;

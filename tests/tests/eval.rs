@@ -8,7 +8,7 @@ use dof::eval::{EvalOptions, evaluate};
 #[test]
 fn quick_evaluation_covers_every_method_and_setting() {
     let mut backends: Vec<Box<dyn Backend>> = vec![Box::new(CpuBackend::new())];
-    let options = EvalOptions { scenes: vec!["simple".into()], methods: vec![], quick: true, runs: 1, progress: false };
+    let options = EvalOptions { scenes: vec!["simple".into()], methods: vec![], quick: true, runs: 1, progress: false, coc_sweep: vec![4.0, 16.0] };
     let report = evaluate(&options, &mut backends).unwrap();
     for method in registry() {
         for setting in method.settings(true) {
@@ -25,12 +25,39 @@ fn quick_evaluation_covers_every_method_and_setting() {
         assert!(json["records"][0].get(field).is_some(), "report.json records lack `{field}`");
     }
     assert!(report.to_markdown().contains("| method | setting | backend |"));
+
+    // The max-CoC sweep: every backend method with a sweep setting at every target, the aperture
+    // scaled so the largest CoC present lands on the target.
+    for method in registry().iter().filter(|m| m.uses_backend() && m.sweep_setting().is_some()) {
+        let points: Vec<f64> = report.coc_sweep.iter().filter(|r| r.method == method.name()).map(|r| r.max_coc_px).collect();
+        assert_eq!(points.len(), 2, "{}", method.name());
+        for (got, want) in points.iter().zip([4.0, 16.0]) {
+            assert!((got - want).abs() < 0.01 * want, "{}: largest CoC {got} px for a target of {want}", method.name());
+        }
+    }
+    assert!(json["coc_sweep"][0].get("max_coc_px").is_some());
+    assert!(json["records"].as_array().unwrap().iter().any(|r| r.get("list_histogram").is_some()));
+
+    // Plots: error against time, list lengths and the sweep, each as SVG and PNG.
+    let dir = std::env::temp_dir().join(format!("dof-eval-plots-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let files = dof::eval::figures::write_all(&report, &dir).unwrap();
+    for stem in ["simple-error-vs-time", "simple-list-lengths", "simple-max-coc"] {
+        for ext in ["svg", "png"] {
+            let path = dir.join(format!("{stem}.{ext}"));
+            assert!(files.contains(&path), "{} not written", path.display());
+            assert!(std::fs::metadata(&path).unwrap().len() > 1000, "{} is nearly empty", path.display());
+        }
+    }
+    let svg = std::fs::read_to_string(dir.join("simple-error-vs-time.svg")).unwrap();
+    assert!(svg.contains("Pareto front (cpu)") && svg.contains("multilayer (cpu)"), "the legend names the front and the methods");
+    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
 fn unknown_methods_are_named() {
     let mut backends: Vec<Box<dyn Backend>> = vec![Box::new(CpuBackend::new())];
-    let options = EvalOptions { scenes: vec!["simple".into()], methods: vec!["nope".into()], quick: true, runs: 1, progress: false };
+    let options = EvalOptions { scenes: vec!["simple".into()], methods: vec!["nope".into()], quick: true, runs: 1, progress: false, coc_sweep: vec![] };
     let err = evaluate(&options, &mut backends).err().unwrap();
     assert!(err.to_string().contains("gather"), "{err}");
 }

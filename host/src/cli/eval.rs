@@ -21,8 +21,31 @@ pub struct EvalArgs {
     /// Timed runs per point (default 5, 3 with --quick).
     #[arg(long)]
     runs: Option<usize>,
+    /// Largest CoC radii (px, comma-separated) of the max-CoC sweep on the first scene (seed 000
+    /// Fig. 13); default 4,8,16,32,64 (4,16 with --quick); `none` for no sweep.
+    #[arg(long, value_delimiter = ',')]
+    coc_sweep: Vec<String>,
+    /// Leave out the plots (they need a TrueType font, see `dof::eval::plot`).
+    #[arg(long)]
+    no_plots: bool,
     #[arg(long, default_value = "out/eval")]
     out: PathBuf,
+}
+
+fn sweep_targets(args: &EvalArgs) -> anyhow::Result<Vec<f64>> {
+    if args.coc_sweep.is_empty() {
+        return Ok(dof::eval::default_coc_sweep(args.quick));
+    }
+    if args.coc_sweep.iter().any(|s| s == "none") {
+        return Ok(Vec::new());
+    }
+    args.coc_sweep
+        .iter()
+        .map(|s| match s.parse::<f64>() {
+            Ok(v) if v > 0.0 && v.is_finite() => Ok(v),
+            _ => anyhow::bail!("--coc-sweep takes positive radii in pixels (or `none`), got `{s}`"),
+        })
+        .collect()
 }
 
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
@@ -37,7 +60,12 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         quick: args.quick,
         runs: args.runs.unwrap_or(if args.quick { 3 } else { 5 }).max(1),
         progress: true,
+        coc_sweep: sweep_targets(args)?,
     };
+    if !args.no_plots {
+        // Before the long run, so a missing font is reported at once.
+        dof::eval::plot::ensure_font().context("the plots need a font; pass --no-plots to leave them out")?;
+    }
     let mut backends = backends(args.backend, false)?;
     let report = evaluate(&options, &mut backends)?;
     std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create {}", args.out.display()))?;
@@ -50,6 +78,11 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         dof::eval::grid::write_grid(&path, reference, rows)?;
         let names: Vec<&str> = rows.iter().map(|r| r.0.as_str()).collect();
         println!("wrote {} (rows: reference, {}; left the image, right its error x4)", path.display(), names.join(", "));
+    }
+    if !args.no_plots {
+        let files = dof::eval::figures::write_all(&report, &args.out)?;
+        let names: Vec<String> = files.iter().filter_map(|f| Some(f.file_name()?.to_string_lossy().into_owned())).collect();
+        println!("wrote {} plots in {}: {}", files.len(), args.out.display(), names.join(", "));
     }
     println!("wrote {} and {}", args.out.join("report.json").display(), args.out.join("report.md").display());
     Ok(())

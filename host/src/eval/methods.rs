@@ -30,6 +30,9 @@ pub struct MethodOutput {
     pub stages: Vec<CommandTime>,
     /// Method-specific figures for the report (list lengths, fragments, buffer bytes, ...), by name.
     pub figures: BTreeMap<String, f64>,
+    /// Tiles per list-length bucket `(upper bound, tiles)` (seed 000 Fig. 12); empty for methods
+    /// without tile lists.
+    pub list_histogram: Vec<(u32, u32)>,
 }
 
 pub trait Method {
@@ -38,6 +41,10 @@ pub trait Method {
     fn uses_backend(&self) -> bool;
     /// The quality settings to sweep; `quick` keeps one or two.
     fn settings(&self, quick: bool) -> Vec<Setting>;
+    /// The setting timed in the max-CoC sweep (seed 000 Fig. 13); `None` keeps the method out of it.
+    fn sweep_setting(&self) -> Option<Setting> {
+        None
+    }
     fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput>;
 }
 
@@ -55,8 +62,12 @@ impl Method for Pinhole {
         vec![Setting { label: "-".into(), value: None }]
     }
     fn run(&self, _backend: &mut dyn Backend, input: &MethodInput, _setting: &Setting) -> Result<MethodOutput> {
-        Ok(MethodOutput { image: input.front.clone(), stages: Vec::new(), figures: BTreeMap::new() })
+        Ok(MethodOutput { image: input.front.clone(), stages: Vec::new(), figures: BTreeMap::new(), list_histogram: Vec::new() })
     }
+}
+
+fn radius_setting(r: u32) -> Setting {
+    Setting { label: format!("max-radius={r}"), value: Some(r) }
 }
 
 /// The gathering baseline; its knob is the largest CoC radius honoured.
@@ -71,18 +82,29 @@ impl Method for Gather {
     }
     fn settings(&self, quick: bool) -> Vec<Setting> {
         let radii: &[u32] = if quick { &[1, 4] } else { &[1, 4, 16, MAX_RADIUS] };
-        radii.iter().map(|&r| Setting { label: format!("max-radius={r}"), value: Some(r) }).collect()
+        radii.iter().map(|&r| radius_setting(r)).collect()
+    }
+    fn sweep_setting(&self) -> Option<Setting> {
+        Some(radius_setting(MAX_RADIUS))
     }
     fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput> {
         let out = gather(backend, &input.front, &input.depth, &input.lens, setting.value)?;
-        let figures = BTreeMap::from([("radius_px".to_string(), out.radius as f64)]);
-        Ok(MethodOutput { image: out.image, stages: out.times, figures })
+        let figures = BTreeMap::from([
+            ("radius_px".to_string(), out.radius as f64),
+            ("buffer_bytes".to_string(), out.buffer_bytes as f64),
+        ]);
+        Ok(MethodOutput { image: out.image, stages: out.times, figures, list_histogram: Vec::new() })
     }
 }
 
 /// The splatting settings the evaluation sweeps: merge level and tile size. The tile sweep runs
 /// merged, where lists are short (unmerged 32-pixel tiles take over 10 s a run on lavapipe).
 pub const SPLAT_POINTS: [(Merge, u32); 5] = [(Merge::None, 16), (Merge::X2, 16), (Merge::X4, 16), (Merge::X4, 24), (Merge::X4, 32)];
+
+fn splat_setting(index: usize) -> Setting {
+    let (merge, tile) = SPLAT_POINTS[index];
+    Setting { label: format!("merge={} tile={tile}", merge.name()), value: Some(index as u32) }
+}
 
 /// Tiled splatting: single-layer (`tiled`, seed 003) on the front layer or multi-layer
 /// (`multilayer`, seed 000); the knobs are the merge level and the tile size, one of
@@ -100,13 +122,11 @@ impl Method for Splat {
     }
     fn settings(&self, quick: bool) -> Vec<Setting> {
         let points: &[usize] = if quick { &[0, 2] } else { &[0, 1, 2, 3, 4] };
-        points
-            .iter()
-            .map(|&i| {
-                let (merge, tile) = SPLAT_POINTS[i];
-                Setting { label: format!("merge={} tile={tile}", merge.name()), value: Some(i as u32) }
-            })
-            .collect()
+        points.iter().map(|&i| splat_setting(i)).collect()
+    }
+    /// Merged, as a renderer would run it; unmerged lists grow with the square of the CoC.
+    fn sweep_setting(&self) -> Option<Setting> {
+        Some(splat_setting(2))
     }
     fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput> {
         let (merge, tile) = SPLAT_POINTS[setting.value.unwrap_or(0) as usize % SPLAT_POINTS.len()];
@@ -121,8 +141,10 @@ impl Method for Splat {
             ("copied_tiles".to_string(), r.copy_tiles as f64),
             ("rings".to_string(), r.plan.as_ref().map_or(0.0, |p| p.rings as f64)),
             ("buffer_bytes".to_string(), r.buffer_bytes as f64),
+            ("tile_px".to_string(), tile as f64),
+            ("merge_steps".to_string(), merge.steps() as f64),
         ]);
-        Ok(MethodOutput { image: out.image, stages: out.stages, figures })
+        Ok(MethodOutput { image: out.image, stages: out.stages, figures, list_histogram: r.list_histogram() })
     }
 }
 

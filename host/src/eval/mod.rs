@@ -5,15 +5,18 @@
 //! Timing: one warm-up run, then the median of `runs` runs, per stage (GPU timestamps on Vulkan,
 //! wall time per dispatch on the CPU backend). Error: [`crate::metrics`] against the reference.
 
+pub mod figures;
 pub mod grid;
 pub mod methods;
+pub mod plot;
 pub mod report;
+pub mod sweep;
 
 use crate::backend::Backend;
 use crate::error::{Error, Result};
 use crate::metrics::compare;
 use crate::scene::{AutoOptions, LayerOptions, ReferenceOptions, builtin, raycast_layers, reference, reference_auto};
-use methods::{MethodInput, registry};
+use methods::{Method, MethodInput, MethodOutput, Setting, registry};
 use report::{Record, Report, SceneInfo};
 use crate::timing::RunTimes;
 
@@ -26,6 +29,25 @@ pub struct EvalOptions {
     /// Timed runs per point after the warm-up (the median is reported).
     pub runs: usize,
     pub progress: bool,
+    /// Largest CoC radii (px) of the max-CoC sweep on the first scene; empty for none.
+    pub coc_sweep: Vec<f64>,
+}
+
+/// The default sweep targets: largest CoC radius present, px.
+pub fn default_coc_sweep(quick: bool) -> Vec<f64> {
+    if quick { vec![4.0, 16.0] } else { vec![4.0, 8.0, 16.0, 32.0, 64.0] }
+}
+
+/// One method at one setting on one backend: a warm-up run, then `runs` timed runs. Returns the
+/// times and the last run's output.
+pub fn timed(method: &dyn Method, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting, runs: usize) -> Result<(RunTimes, MethodOutput)> {
+    let mut times = RunTimes::default();
+    let mut output = method.run(backend, input, setting)?;
+    for _ in 0..runs {
+        output = method.run(backend, input, setting)?;
+        times.add(&output.stages);
+    }
+    Ok((times, output))
 }
 
 /// Runs the evaluation on `backends` (host-only methods run once, on the first).
@@ -73,16 +95,7 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
             for setting in method.settings(options.quick) {
                 for (backend_index, backend) in backends.iter_mut().take(targets).enumerate() {
                     let b = backend.as_mut();
-                    let mut times = RunTimes::default();
-                    let mut output: Option<methods::MethodOutput> = None;
-                    for run in 0..=options.runs {
-                        let out = method.run(b, &input, &setting)?;
-                        if run > 0 {
-                            times.add(&out.stages);
-                        }
-                        output = Some(out);
-                    }
-                    let output = output.ok_or_else(|| Error::InvalidArgument("no run".into()))?;
+                    let (times, output) = timed(method.as_ref(), b, &input, &setting, options.runs)?;
                     let image = output.image;
                     let error = compare(&image, &exact.image, Some(&ml.mask))?;
                     if backend_index == 0 {
@@ -108,6 +121,7 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                         flip_masked: error.flip_masked,
                         runs: options.runs,
                         figures: output.figures,
+                        list_histogram: output.list_histogram,
                     };
                     if options.progress {
                         eprintln!("{}", record.line());
@@ -118,6 +132,19 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
         }
         let rows = best.into_iter().map(|(name, _, image)| (name, image)).collect();
         report.grids.push((name.clone(), exact.image.clone(), rows));
+    }
+    if let Some(first) = options.scenes.first().filter(|_| !options.coc_sweep.is_empty()) {
+        let mut scene = builtin(first)?;
+        if options.quick {
+            scene = scene.with_size(160, 90);
+        }
+        let chosen: Vec<&dyn Method> = all
+            .iter()
+            .filter(|m| options.methods.is_empty() || options.methods.iter().any(|n| n == m.name()))
+            .map(|m| m.as_ref())
+            .collect();
+        let sweep_options = sweep::SweepOptions { targets: options.coc_sweep.clone(), runs: options.runs.min(3), progress: options.progress };
+        report.coc_sweep = sweep::coc_sweep(first, &scene, &chosen, backends, &sweep_options)?;
     }
     Ok(report)
 }

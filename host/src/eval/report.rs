@@ -14,7 +14,13 @@
 //!   `psnr_masked_db`, `ssim_masked` (inside the partial-occlusion region; null when it is empty),
 //!   `flip`, `flip_masked` (mean LDR-FLIP error, lower is better; see [`crate::metrics`]),
 //!   `runs`, `figures` (method-specific numbers by name: list lengths, fragments, buffer bytes; see
-//!   [`Record::figures`]). PSNR is `null` where it is infinite (identical images).
+//!   [`Record::figures`]), `list_histogram` (tiles per list-length bucket as `[upper bound, tiles]`,
+//!   buckets by powers of two; only for methods with tile lists). PSNR is `null` where it is
+//!   infinite (identical images);
+//! - `coc_sweep[]` (seed 000 Fig. 13), time against the largest CoC on the sweep scene (the first
+//!   scene), the aperture scaled so the largest CoC radius present takes each value: `scene`,
+//!   `method`, `setting`, `backend`, `device`, `max_coc_px` (largest CoC radius present, px),
+//!   `time_ms`, `stages_ms`, `runs`, `figures`.
 
 use crate::layers::RgbImage;
 use serde::Serialize;
@@ -53,6 +59,24 @@ pub struct Record {
     /// Method-specific figures: `mean_list_length`, `max_list_length`, `fragments` (entering
     /// tiling), `copied_tiles`, `rings`, `buffer_bytes` for the splatting methods; `radius_px` for
     /// gather.
+    pub figures: BTreeMap<String, f64>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub list_histogram: Vec<(u32, u32)>,
+}
+
+/// One point of the max-CoC sweep (seed 000 Fig. 13): time only; the aperture differs from the
+/// scene's, so there is no reference to measure error against.
+#[derive(Clone, Debug, Serialize)]
+pub struct SweepRecord {
+    pub scene: String,
+    pub method: String,
+    pub setting: String,
+    pub backend: String,
+    pub device: String,
+    pub max_coc_px: f64,
+    pub time_ms: f64,
+    pub stages_ms: BTreeMap<String, f64>,
+    pub runs: usize,
     pub figures: BTreeMap<String, f64>,
 }
 
@@ -97,6 +121,7 @@ pub struct Report {
     pub quick: bool,
     pub scenes: Vec<SceneInfo>,
     pub records: Vec<Record>,
+    pub coc_sweep: Vec<SweepRecord>,
     /// Per scene: the reference and each method's best image on the first backend (for the image
     /// grids; not in the JSON).
     #[serde(skip)]
@@ -108,7 +133,7 @@ impl Report {
         Report {
             version: env!("CARGO_PKG_VERSION").to_string(),
             shaders_hash: crate::shaders::SOURCE_HASH.to_string(),
-            quick, scenes: Vec::new(), records: Vec::new(), grids: Vec::new() }
+            quick, scenes: Vec::new(), records: Vec::new(), coc_sweep: Vec::new(), grids: Vec::new() }
     }
 
     pub fn to_json(&self) -> String {
@@ -134,6 +159,15 @@ impl Report {
             }
             md.push('\n');
             md.push_str(&self.table1(&s.name));
+        }
+        if let Some(first) = self.coc_sweep.first() {
+            let _ = writeln!(md, "## Time against the largest CoC ({}, seed 000 Fig. 13)\n", first.scene);
+            md.push_str("The aperture scaled so the largest CoC radius present takes each value; time only.\n\n| method | setting | backend | largest CoC radius (px) | total (ms) | mean list |\n|---|---|---|---|---|---|\n");
+            for r in &self.coc_sweep {
+                let list = r.figures.get("mean_list_length").map_or("-".into(), |v| format!("{v:.0}"));
+                let _ = writeln!(md, "| {} | {} | {} | {:.1} | {:.3} | {} |", r.method, r.setting, r.backend, r.max_coc_px, r.time_ms, list);
+            }
+            md.push('\n');
         }
         md
     }

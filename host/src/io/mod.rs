@@ -70,6 +70,7 @@ pub use channels::natural_cmp;
 pub use exr_read::{ExrLayout, InputReport, read_layered_exr, read_rgb_exr};
 pub use exr_write::{ExrCompression, ExrPrecision, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr};
 pub use preview::{write_png_display, write_png_preview};
+pub(crate) use preview::write_srgb8;
 pub use sanitize::{COLOR_INF_REPLACEMENT, SanitizeCounts};
 pub use tonemap::tonemap;
 

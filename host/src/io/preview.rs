@@ -35,7 +35,8 @@ pub fn write_png_display(path: impl AsRef<Path>, width: u32, height: u32, pixels
     write_srgb8(path.as_ref(), width, height, &bytes)
 }
 
-fn write_srgb8(path: &Path, width: u32, height: u32, bytes: &[u8]) -> Result<()> {
+/// Writes 8-bit sRGB pixels (`width * height * 3` bytes) as a PNG.
+pub(crate) fn write_srgb8(path: &Path, width: u32, height: u32, bytes: &[u8]) -> Result<()> {
     // Encoded in memory, then written in one call, so that every I/O error is reported with the path.
     let mut encoded = Vec::new();
     let png_error = |e: ::png::EncodingError| Error::InvalidArgument(format!("encoding the PNG {}: {e}", path.display()));

@@ -26,6 +26,8 @@ pub struct GatherOutput {
     /// Radius the kernel scanned.
     pub radius: u32,
     pub times: Vec<CommandTime>,
+    /// Device buffer bytes the pass held (colour, depth and output).
+    pub buffer_bytes: u64,
 }
 
 /// Runs the gathering baseline on `backend`. `max_radius` caps the CoC radius (default: what the
@@ -58,6 +60,7 @@ pub fn gather(
     let colour_words: Vec<u32> = image.data.iter().flat_map(|c| c.map(f32::to_bits)).collect();
     let depth_words: Vec<u32> = depth.iter().map(|z| z.to_bits()).collect();
     let sizes = [(3 * pixels, "gather/color"), (pixels, "gather/depth"), (3 * pixels, "gather/out")];
+    let buffer_bytes = 4 * sizes.iter().map(|s| s.0).sum::<u64>();
     with_buffers(backend, &sizes, |backend, b| {
         let (color, depth, out) = (b[0], b[1], b[2]);
         backend.write_buffer(color, 0, &colour_words)?;
@@ -68,6 +71,6 @@ pub fn gather(
         let times = backend.submit()?;
         let words = backend.read_buffer(out, 0, 3 * pixels)?;
         let data = words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
-        Ok(GatherOutput { image: RgbImage { width: image.width, height: image.height, data }, radius, times })
+        Ok(GatherOutput { image: RgbImage { width: image.width, height: image.height, data }, radius, times, buffer_bytes })
     })
 }

@@ -1,0 +1,93 @@
+//! The max-CoC sweep (seed 000 Fig. 13): run time against the largest blur in the frame. The scene
+//! and focus stay fixed; the aperture is scaled so the largest CoC radius present takes each target
+//! value, and the multi-layer image is cast again for that lens (its umbra thinning and disocclusion
+//! buffer depend on the aperture). Time only: the references are for the scene's own aperture.
+
+use super::methods::{Method, MethodInput};
+use super::report::SweepRecord;
+use super::timed;
+use crate::backend::Backend;
+use crate::error::{Error, Result};
+use crate::layers::LayeredImage;
+use crate::scene::{BuiltinScene, LayerOptions, raycast_layers};
+use dof_shaders::lens::ThinLens;
+
+pub struct SweepOptions {
+    /// Largest CoC radii present (px) to time at, each `> 0`.
+    pub targets: Vec<f64>,
+    /// Timed runs per point after a warm-up.
+    pub runs: usize,
+    pub progress: bool,
+}
+
+/// The largest CoC radius (px) of any fragment of `layers` under `lens` (the sky counts at the
+/// far-field limit).
+pub fn max_coc_radius(layers: &LayeredImage, lens: &ThinLens) -> f64 {
+    let mut max = 0.0f32;
+    for y in 0..layers.height {
+        for x in 0..layers.width {
+            for f in layers.pixel(x, y) {
+                max = max.max(lens.coc_radius_px(f.depth));
+            }
+        }
+    }
+    max as f64
+}
+
+/// `lens` with its aperture scaled so that the largest CoC radius of `layers` becomes `target` px.
+/// CoC is proportional to the aperture, so one scale does it.
+pub fn lens_for_max_coc(layers: &LayeredImage, lens: &ThinLens, target: f64) -> Result<ThinLens> {
+    let now = max_coc_radius(layers, lens);
+    if !(target > 0.0 && target.is_finite()) {
+        return Err(Error::InvalidArgument(format!("a max-CoC sweep target must be a positive number of pixels, got {target}")));
+    }
+    if !(now > 0.0) {
+        return Err(Error::InvalidArgument("the sweep scene has no blur to scale (pinhole lens or everything in focus)".into()));
+    }
+    Ok(ThinLens { aperture_radius: (lens.aperture_radius as f64 * target / now) as f32, ..*lens })
+}
+
+/// Times every method that has a sweep setting at every target, on every backend it runs on.
+pub fn coc_sweep(
+    name: &str,
+    scene: &BuiltinScene,
+    methods: &[&dyn Method],
+    backends: &mut [Box<dyn Backend>],
+    options: &SweepOptions,
+) -> Result<Vec<SweepRecord>> {
+    let base = scene.thin_lens()?;
+    let layer_options = LayerOptions::default();
+    let base_layers = raycast_layers(&scene.scene, &scene.camera, &base, &layer_options)?;
+    let mut records = Vec::new();
+    for &target in &options.targets {
+        let lens = lens_for_max_coc(&base_layers.layers, &base, target)?;
+        let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &layer_options)?;
+        let max_coc_px = max_coc_radius(&ml.layers, &lens);
+        let (front, depth) = ml.layers.front();
+        let input = MethodInput { front, depth, layers: ml.layers, lens };
+        for method in methods.iter().filter(|m| m.uses_backend()) {
+            let Some(setting) = method.sweep_setting() else { continue };
+            for backend in backends.iter_mut() {
+                let b = backend.as_mut();
+                let (times, output) = timed(*method, b, &input, &setting, options.runs)?;
+                let record = SweepRecord {
+                    scene: name.to_string(),
+                    method: method.name().to_string(),
+                    setting: setting.label.clone(),
+                    backend: b.kind().to_string(),
+                    device: b.device_name(),
+                    max_coc_px,
+                    time_ms: times.median_total(),
+                    stages_ms: times.median_stages(),
+                    runs: options.runs,
+                    figures: output.figures,
+                };
+                if options.progress {
+                    eprintln!("sweep {name}: {} {} on {} at max CoC {:.1} px: {:.3} ms", record.method, record.setting, record.backend, max_coc_px, record.time_ms);
+                }
+                records.push(record);
+            }
+        }
+    }
+    Ok(records)
+}

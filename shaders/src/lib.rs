@@ -13,6 +13,7 @@ pub mod half;
 pub mod keys;
 pub mod lens;
 pub mod math;
+pub mod raytrace;
 pub mod scan;
 pub mod sort;
 pub mod splat;
@@ -29,5 +30,6 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .chain(sort::KERNELS.iter())
         .chain(gather::KERNELS.iter())
         .chain(splat::KERNELS.iter())
+        .chain(raytrace::KERNELS.iter())
         .copied()
 }

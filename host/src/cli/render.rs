@@ -8,6 +8,7 @@ use dof::scene::{
     self, Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, ReferenceOptions, Vec3, raycast_layers,
 };
 use dof::layers::LayeredImage;
+use dof::methods::raytrace::{RaytraceOptions, raytrace};
 use dof::methods::splat::{Merge, SplatOptions, splat};
 use dof_shaders::lens::ThinLens;
 use std::path::{Path, PathBuf};
@@ -26,6 +27,8 @@ pub enum Method {
     Tiled,
     /// Multi-layer tiled splatting of the partial multi-layer image on the chosen backend.
     Multilayer,
+    /// Thin-lens ray tracing through the partial multi-layer image (`--spp` rays per pixel).
+    Raytrace,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -69,8 +72,9 @@ pub struct RenderArgs {
     target: Option<Vec3>,
     #[arg(long, allow_negative_numbers = true)]
     yfov: Option<f32>,
-    /// Reference samples per pixel; by default raised until the noise is within 0.5 dB of converged.
-    #[arg(long)]
+    /// Samples per pixel: of the reference (default: raised until the noise is within 0.5 dB of
+    /// converged) or rays of `raytrace` (default 16).
+    #[arg(long, visible_alias = "spp")]
     samples: Option<u32>,
     /// Fragments per pixel in the multi-layer image.
     #[arg(long, default_value_t = 4)]
@@ -152,7 +156,7 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             Ok(())
         }
         Method::Reference => bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)"),
-        Method::Gather | Method::Tiled | Method::Multilayer => {
+        Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace => {
             let lens = exr_lens(args, &layers)?;
             let (image, depth) = blur(args, &layers, &lens)?;
             let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
@@ -181,7 +185,7 @@ fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens
     Ok(settings.thin_lens(&camera)?)
 }
 
-/// Runs a blurring method (gather, tiled, multilayer) on the chosen backend and prints what it did.
+/// Runs a blurring method (gather, tiled, multilayer, raytrace) on the chosen backend and prints what it did.
 /// Returns the image and the front layer's depth.
 fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Result<(RgbImage, Vec<f32>)> {
     let mut b = backend(args.backend)?;
@@ -192,6 +196,17 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Re
             let ms: f64 = blurred.times.iter().map(|t| t.ms).sum();
             println!("gather on {}: radius {} px, {ms:.2} ms in kernels", b.device_name(), blurred.radius);
             blurred.image
+        }
+        Method::Raytrace => {
+            let options = RaytraceOptions { spp: args.samples.unwrap_or(16), ..Default::default() };
+            let traced = raytrace(b.as_mut(), layers, lens, &options)?;
+            let ms: f64 = traced.times.iter().map(|t| t.ms).sum();
+            println!(
+                "ray tracing on {}: {} rays per pixel, {}-level hierarchy, {ms:.2} ms in kernels; {} of {} rays ({:.2}%) hit no stored fragment",
+                b.device_name(), options.spp, traced.levels, traced.missed_rays, traced.rays,
+                100.0 * traced.missed_rays as f64 / traced.rays.max(1) as f64
+            );
+            traced.image
         }
         _ => {
             let options = SplatOptions {
@@ -273,7 +288,7 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             println!("wrote {} and {}", out.display(), out.with_extension("png").display());
             Ok(())
         }
-        Method::Gather | Method::Tiled | Method::Multilayer => {
+        Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace => {
             let (image, depth) = blur(args, &layered.layers, &lens)?;
             write_outputs(out, &image, &[("Z", &depth), ("coc", &coc)], args.exposure)
         }

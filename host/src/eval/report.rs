@@ -18,7 +18,7 @@
 //!   buckets by powers of two; only for methods with tile lists). PSNR is `null` where it is
 //!   infinite (identical images);
 //! - `coc_sweep[]` (seed 000 Fig. 13), time against the largest CoC on the sweep scene (the first
-//!   scene), the aperture scaled so the largest CoC radius present takes each value: `scene`,
+//!   scene, at 320x180, or 160x90 with `quick`), the aperture scaled so the largest CoC radius present takes each value: `scene`,
 //!   `method`, `setting`, `backend`, `device`, `max_coc_px` (largest CoC radius present, px),
 //!   `time_ms`, `stages_ms`, `runs`, `figures`.
 
@@ -80,15 +80,15 @@ pub struct SweepRecord {
     pub figures: BTreeMap<String, f64>,
 }
 
-/// The column of seed 000 Table 1 a recorded stage belongs to: `merge` (packing and merging),
-/// `splat` (tile counts, compaction, allocation, binning and their scans), `sort`, `apply`
-/// (accumulation, or the gather).
+/// The column of seed 000 Table 1 a recorded stage belongs to: `merge` (input preparation: packing
+/// and merging, or the ray tracer's min/max hierarchy), `splat` (tile counts, compaction,
+/// allocation, binning and their scans), `sort`, `apply` (accumulation, the gather, or tracing).
 pub fn table_column(label: &str) -> &'static str {
-    if label.starts_with("splat/pack") || label.starts_with("splat/merge") {
+    if label.starts_with("splat/pack") || label.starts_with("splat/merge") || label == "raytrace/hierarchy" {
         "merge"
     } else if label.starts_with("sort/") {
         "sort"
-    } else if label.starts_with("splat/accumulate") || label == "gather" {
+    } else if label.starts_with("splat/accumulate") || label == "gather" || label == "raytrace/trace" {
         "apply"
     } else {
         "splat"

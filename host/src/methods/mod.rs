@@ -2,4 +2,5 @@
 //! [`crate::backend::Backend`], so it runs on the CPU and on Vulkan from the same kernels.
 
 pub mod gather;
+pub mod raytrace;
 pub mod splat;

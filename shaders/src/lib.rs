@@ -11,6 +11,7 @@ pub mod kernel;
 pub mod gather;
 pub mod half;
 pub mod keys;
+pub mod layered;
 pub mod lens;
 pub mod math;
 pub mod raytrace;
@@ -31,5 +32,6 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .chain(gather::KERNELS.iter())
         .chain(splat::KERNELS.iter())
         .chain(raytrace::KERNELS.iter())
+        .chain(layered::KERNELS.iter())
         .copied()
 }

@@ -25,6 +25,7 @@
 use crate::exec::{Group, Mem};
 use crate::lens::{ThinLens, is_finite, is_positive};
 use crate::math::floor;
+use crate::wg::for_each_item;
 
 /// Pixels per side of a trace workgroup.
 pub const TILE: u32 = 8;
@@ -127,56 +128,42 @@ fn fragment<M: Mem>(p: &TraceParams, input: &M, pi: u32, j: u32) -> Option<([f32
 /// Level 0: per pixel, the smallest and largest `r` of its fragments (the sky's for a pixel
 /// without fragments; an empty interval when none is usable).
 pub fn base_pass<G: Group, M: Mem>(g: &mut G, p: &TraceParams, input: M, counts: M, mut hier: M) {
-    let groups = g.num_workgroups()[0];
-    let first = g.workgroup_id()[0] * g.size();
-    let stride = groups * g.size();
-    g.each(|lid| {
-        let mut pi = first + lid;
-        while pi < p.width * p.height {
-            let n = counts.load(pi).min(p.max_layers);
-            let (mut lo, mut hi) = if n == 0 { (sky_r(&p.lens), sky_r(&p.lens)) } else { (f32::INFINITY, f32::NEG_INFINITY) };
-            let mut j = 0;
-            while j < n {
-                if let Some((_, r)) = fragment(p, &input, pi, j) {
-                    lo = lo.min(r);
-                    hi = hi.max(r);
-                }
-                j += 1;
+    for_each_item(g, p.width * p.height, |pi| {
+        let n = counts.load(pi).min(p.max_layers);
+        let (mut lo, mut hi) = if n == 0 { (sky_r(&p.lens), sky_r(&p.lens)) } else { (f32::INFINITY, f32::NEG_INFINITY) };
+        let mut j = 0;
+        while j < n {
+            if let Some((_, r)) = fragment(p, &input, pi, j) {
+                lo = lo.min(r);
+                hi = hi.max(r);
             }
-            hier.store(2 * pi, lo.to_bits());
-            hier.store(2 * pi + 1, hi.to_bits());
-            pi += stride;
+            j += 1;
         }
+        hier.store(2 * pi, lo.to_bits());
+        hier.store(2 * pi + 1, hi.to_bits());
     });
 }
 
 /// Level `p.level` from the level below: min of the mins and max of the maxes of the 2x2 children.
 pub fn reduce_pass<G: Group, M: Mem>(g: &mut G, p: &TraceParams, mut hier: M) {
-    let groups = g.num_workgroups()[0];
-    let first = g.workgroup_id()[0] * g.size();
-    let stride = groups * g.size();
     let (w, h) = level_size(p, p.level);
     let (cw, ch) = level_size(p, p.level - 1);
     let (dst, src) = (level_offset(p, p.level), level_offset(p, p.level - 1));
-    g.each(|lid| {
-        let mut cell = first + lid;
-        while cell < w * h {
-            let (x, y) = (cell % w, cell / w);
-            let (mut lo, mut hi) = (f32::INFINITY, f32::NEG_INFINITY);
-            let mut k = 0;
-            while k < 4 {
-                let (cx, cy) = (2 * x + k % 2, 2 * y + k / 2);
-                if cx < cw && cy < ch {
-                    let at = src + cy * cw + cx;
-                    lo = lo.min(f32::from_bits(hier.load(2 * at)));
-                    hi = hi.max(f32::from_bits(hier.load(2 * at + 1)));
-                }
-                k += 1;
+    for_each_item(g, w * h, |cell| {
+        let (x, y) = (cell % w, cell / w);
+        let (mut lo, mut hi) = (f32::INFINITY, f32::NEG_INFINITY);
+        let mut k = 0;
+        while k < 4 {
+            let (cx, cy) = (2 * x + k % 2, 2 * y + k / 2);
+            if cx < cw && cy < ch {
+                let at = src + cy * cw + cx;
+                lo = lo.min(f32::from_bits(hier.load(2 * at)));
+                hi = hi.max(f32::from_bits(hier.load(2 * at + 1)));
             }
-            hier.store(2 * (dst + cell), lo.to_bits());
-            hier.store(2 * (dst + cell) + 1, hi.to_bits());
-            cell += stride;
+            k += 1;
         }
+        hier.store(2 * (dst + cell), lo.to_bits());
+        hier.store(2 * (dst + cell) + 1, hi.to_bits());
     });
 }
 

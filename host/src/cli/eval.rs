@@ -22,7 +22,7 @@ pub struct EvalArgs {
     #[arg(long)]
     runs: Option<usize>,
     /// Largest CoC radii (px, comma-separated) of the max-CoC sweep on the first scene (seed 000
-    /// Fig. 13), at 320x180 (160x90 with --quick); default 4,8,16,32,48 (4,16 with --quick);
+    /// Fig. 13), at 320x180 (160x90 with --quick); default 4,8,16,32 (4,16 with --quick);
     /// `none` for no sweep.
     #[arg(long, value_delimiter = ',')]
     coc_sweep: Vec<String>,

@@ -8,6 +8,7 @@ use dof::scene::{
     self, Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, ReferenceOptions, Vec3, raycast_layers,
 };
 use dof::layers::LayeredImage;
+use dof::methods::layered::{LayeredOptions, layered};
 use dof::methods::raytrace::{RaytraceOptions, raytrace};
 use dof::methods::splat::{Merge, SplatOptions, splat};
 use dof_shaders::lens::ThinLens;
@@ -29,6 +30,8 @@ pub enum Method {
     Multilayer,
     /// Thin-lens ray tracing through the partial multi-layer image (`--spp` rays per pixel).
     Raytrace,
+    /// Layered DoF with matting (seed 002): depth layers blurred by Gaussians and composited.
+    Layered,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -76,6 +79,12 @@ pub struct RenderArgs {
     /// converged) or rays of `raytrace` (default 16).
     #[arg(long, visible_alias = "spp")]
     samples: Option<u32>,
+    /// Layered DoF: one blur per layer instead of the cascade.
+    #[arg(long)]
+    no_cascade: bool,
+    /// Layered DoF: layers per doubling of the CoC (1 to 4).
+    #[arg(long, default_value_t = 2)]
+    layers_per_doubling: u32,
     /// Fragments per pixel in the multi-layer image.
     #[arg(long, default_value_t = 4)]
     layers: u32,
@@ -156,7 +165,7 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             Ok(())
         }
         Method::Reference => bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)"),
-        Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace => {
+        Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace | Method::Layered => {
             let lens = exr_lens(args, &layers)?;
             let (image, depth) = blur(args, &layers, &lens)?;
             let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
@@ -185,7 +194,7 @@ fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens
     Ok(settings.thin_lens(&camera)?)
 }
 
-/// Runs a blurring method (gather, tiled, multilayer, raytrace) on the chosen backend and prints what it did.
+/// Runs a blurring method (gather, tiled, multilayer, raytrace, layered) on the chosen backend and prints what it did.
 /// Returns the image and the front layer's depth.
 fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Result<(RgbImage, Vec<f32>)> {
     let mut b = backend(args.backend)?;
@@ -196,6 +205,19 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Re
             let ms: f64 = blurred.times.iter().map(|t| t.ms).sum();
             println!("gather on {}: radius {} px, {ms:.2} ms in kernels", b.device_name(), blurred.radius);
             blurred.image
+        }
+        Method::Layered => {
+            let options = LayeredOptions { cascaded: !args.no_cascade, layers_per_doubling: args.layers_per_doubling, ..Default::default() };
+            let out = layered(b.as_mut(), layers, lens, &options)?;
+            let ms: f64 = out.times.iter().map(|t| t.ms).sum();
+            let p = &out.plan;
+            println!(
+                "layered DoF on {}: {} layers for CoC {:.1} to {:.1} px ({} used, {} empty and skipped), {} blurs ({}), widest radius {} px, {ms:.2} ms in kernels{}",
+                b.device_name(), p.cocs.len(), p.coc_range.0, p.coc_range.1, p.used_layers(), p.cocs.len() - p.used_layers(),
+                out.blurs, if options.cascaded { "cascaded" } else { "one per layer" }, out.widest_radius,
+                if p.capped > 0 { format!("; {} fragments beyond the {} px cap", p.capped, options.max_coc) } else { String::new() }
+            );
+            out.image
         }
         Method::Raytrace => {
             let options = RaytraceOptions { spp: args.samples.unwrap_or(16), ..Default::default() };
@@ -288,7 +310,7 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             println!("wrote {} and {}", out.display(), out.with_extension("png").display());
             Ok(())
         }
-        Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace => {
+        Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace | Method::Layered => {
             let (image, depth) = blur(args, &layered.layers, &lens)?;
             write_outputs(out, &image, &[("Z", &depth), ("coc", &coc)], args.exposure)
         }

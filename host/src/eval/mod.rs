@@ -36,7 +36,7 @@ pub struct EvalOptions {
 
 /// The default sweep targets: largest CoC radius present, px.
 pub fn default_coc_sweep(quick: bool) -> Vec<f64> {
-    if quick { vec![4.0, 16.0] } else { vec![4.0, 8.0, 16.0, 32.0, 48.0] }
+    if quick { vec![4.0, 16.0] } else { vec![4.0, 8.0, 16.0, 32.0] }
 }
 
 /// One method at one setting on one backend: a warm-up run, then `runs` timed runs. Returns the

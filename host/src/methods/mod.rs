@@ -2,5 +2,6 @@
 //! [`crate::backend::Backend`], so it runs on the CPU and on Vulkan from the same kernels.
 
 pub mod gather;
+pub mod layered;
 pub mod raytrace;
 pub mod splat;

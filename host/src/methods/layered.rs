@@ -1,0 +1,356 @@
+//! Layered depth of field with matting (seed 002; kernels and the matting rules in
+//! `dof_shaders::layered`), planned per frame on the host:
+//!
+//! - **Layers from the depth range.** A min/max reduction over every fragment's signed CoC (the sky
+//!   at the far limit) gives the blur present on each side of the focus plane. Layer CoCs grow
+//!   geometrically from `first_coc` by `2^(1/layers_per_doubling)` until they reach it (the last
+//!   one clamped to it, at most `max_coc`), so the count follows the scene, not a constant.
+//! - **Anchors by the CoC inverse** (eq. 9): between layers `k` and `k+1` at their mean CoC, `D1`
+//!   in front of the focus layer, `D2` behind it, `+inf` where eq. 8's bound is exceeded.
+//! - **Empty layers are skipped**: a layer no fragment has a non-zero matte for is neither matted,
+//!   blurred nor composited (and its blur is folded into the next one in the cascade).
+//! - **Blur** `σ = |d| / 4` (eq. 10), separable, radius `ceil(3σ)`. Non-cascaded: every layer is
+//!   blurred by its own `σ` and composited back to front. Cascaded (recursive): behind the focus
+//!   the running composite is blurred by `sqrt(σ_k² − σ_{k−1}²)` after layer `k` joins it, from the
+//!   back layer forwards; in front of it, mirrored from the nearest layer backwards; the two are
+//!   joined at the end. Each layer so receives its own `σ` in total, at the price of blurring the
+//!   occlusion edges of the layers it is composited with (the "slight alteration" the paper notes).
+//! - **Normalisation**: the composite is divided by its alpha.
+
+use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
+use crate::error::{Error, Result};
+use crate::layers::{LayeredImage, RgbImage};
+use dof_shaders::layered::{LAYERED_BLUR, LAYERED_COMPOSITE, LAYERED_MATTE, LAYERED_RESOLVE, LayeredParams, OVER, SLOT_WORDS, UNDER, matte_front, matte_hidden};
+use dof_shaders::lens::ThinLens;
+
+const THREADS: u32 = 256;
+const MAX_GROUPS: u32 = 65535;
+/// Blurs narrower than this `σ` (px) are left out: their kernel is almost all centre.
+const MIN_SIGMA: f32 = 0.25;
+
+#[derive(Clone, Debug)]
+pub struct LayeredOptions {
+    /// Recursive (cascaded) blurring instead of one blur per layer.
+    pub cascaded: bool,
+    /// Layers per doubling of the CoC, `1..=4` (default 2).
+    pub layers_per_doubling: u32,
+    /// CoC diameter (px) of the first layer beside the focus layer (default 2).
+    pub first_coc: f32,
+    /// Largest layer CoC diameter (px); larger blur is capped to it and counted (default 256).
+    pub max_coc: f32,
+}
+
+impl Default for LayeredOptions {
+    fn default() -> Self {
+        LayeredOptions { cascaded: true, layers_per_doubling: 2, first_coc: 2.0, max_coc: 256.0 }
+    }
+}
+
+/// The per-frame decomposition.
+#[derive(Clone, Debug)]
+pub struct LayerPlan {
+    /// Signed CoC diameter (px) of each layer, front to back; the focus layer's is 0.
+    pub cocs: Vec<f32>,
+    /// `anchors[k]` separates layer `k` from `k + 1` (depth; `+inf` past eq. 8's bound).
+    pub anchors: Vec<f32>,
+    pub focus_layer: usize,
+    /// Whether a layer holds no fragment with a non-zero matte.
+    pub empty: Vec<bool>,
+    /// Smallest and largest signed CoC present (px).
+    pub coc_range: (f32, f32),
+    /// Fragments whose CoC exceeded `max_coc`.
+    pub capped: u64,
+}
+
+impl LayerPlan {
+    /// `[a[k-2], a[k-1], a[k], a[k+1]]` of layer `k`.
+    pub fn anchors_of(&self, k: usize) -> [f32; 4] {
+        let a = |i: isize| -> f32 {
+            if i < 0 {
+                0.0
+            } else {
+                self.anchors.get(i as usize).copied().unwrap_or(f32::INFINITY)
+            }
+        };
+        let k = k as isize;
+        [a(k - 2), a(k - 1), a(k), a(k + 1)]
+    }
+
+    pub fn used_layers(&self) -> usize {
+        self.empty.iter().filter(|e| !**e).count()
+    }
+}
+
+fn sigma(coc: f32) -> f32 {
+    coc.abs() / 4.0
+}
+
+/// Plans the layers of `image` under `lens`.
+pub fn plan(image: &LayeredImage, lens: &ThinLens, options: &LayeredOptions) -> Result<LayerPlan> {
+    if !lens.is_valid() {
+        return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
+    }
+    if !(1..=4).contains(&options.layers_per_doubling) {
+        return Err(Error::InvalidArgument(format!("layers per doubling must be 1 to 4, got {}", options.layers_per_doubling)));
+    }
+    if !(options.first_coc >= 1.0 && options.first_coc.is_finite() && options.max_coc >= options.first_coc && options.max_coc <= 1024.0) {
+        return Err(Error::InvalidArgument(format!(
+            "need 1 <= first CoC <= max CoC <= 1024 px, got {} and {}",
+            options.first_coc, options.max_coc
+        )));
+    }
+    if image.width == 0 || image.height == 0 || image.max_layers == 0 {
+        return Err(Error::InvalidArgument(format!("layered DoF needs a non-empty image, got {}x{}", image.width, image.height)));
+    }
+    // The min/max reduction over the signed CoC (the sky, a pixel without fragments, at the far limit).
+    let (mut lo, mut hi, mut capped) = (0.0f32, 0.0f32, 0u64);
+    let mut note = |c: f32| {
+        if c.abs() > options.max_coc {
+            capped += 1;
+        }
+        let c = c.clamp(-options.max_coc, options.max_coc);
+        lo = lo.min(c);
+        hi = hi.max(c);
+    };
+    for p in 0..image.counts.len() {
+        let n = image.counts[p].min(image.max_layers) as usize;
+        if n == 0 {
+            note(lens.far_limit_px());
+        }
+        for f in &image.fragments[p * image.max_layers as usize..][..n] {
+            let c = lens.signed_coc_px(f.depth);
+            if c.is_finite() && f.color.iter().all(|v| v.is_finite()) {
+                note(c);
+            }
+        }
+    }
+    let side = |extent: f32| -> Vec<f32> {
+        let mut cocs = Vec::new();
+        let mut j = 0;
+        while extent > options.first_coc * 0.5 && cocs.last().is_none_or(|&c: &f32| c < extent) {
+            cocs.push((options.first_coc * 2f32.powf(j as f32 / options.layers_per_doubling as f32)).min(extent));
+            j += 1;
+        }
+        cocs
+    };
+    let near = side(-lo);
+    let far = side(hi);
+    let cocs: Vec<f32> = near.iter().rev().map(|c| -c).chain(std::iter::once(0.0)).chain(far.iter().copied()).collect();
+    let anchors: Vec<f32> = cocs
+        .windows(2)
+        .map(|w| {
+            let mean = 0.5 * (w[0] + w[1]);
+            let (d1, d2) = lens.inverse_px(mean.abs());
+            if mean < 0.0 { d1 } else { d2 }
+        })
+        .collect();
+    let mut plan = LayerPlan { empty: vec![true; cocs.len()], focus_layer: near.len(), cocs, anchors, coc_range: (lo, hi), capped };
+    // Which layers some fragment reaches: its own and the neighbours its mattes ramp into.
+    let last = plan.cocs.len() - 1;
+    let layer_of = |z: f32| plan.anchors.partition_point(|&a| a < z);
+    for p in 0..image.counts.len() {
+        let n = image.counts[p].min(image.max_layers) as usize;
+        let zs: Vec<f32> = if n == 0 {
+            vec![f32::INFINITY]
+        } else {
+            image.fragments[p * image.max_layers as usize..][..n].iter().filter(|f| f.depth > 0.0 && f.color.iter().all(|v| v.is_finite())).map(|f| f.depth).collect()
+        };
+        for (i, &z) in zs.iter().enumerate() {
+            let k = layer_of(z).min(last);
+            for j in k.saturating_sub(1)..=(k + 1).min(last) {
+                let a = plan.anchors_of(j);
+                let w = if i == 0 && n > 0 { matte_front(&a, z) } else { matte_hidden(&a, z) };
+                if w > 0.0 {
+                    plan.empty[j] = false;
+                }
+            }
+        }
+    }
+    Ok(plan)
+}
+
+/// The blurred image, the plan and what the frame did.
+pub struct LayeredOutput {
+    pub image: RgbImage,
+    pub times: Vec<CommandTime>,
+    pub plan: LayerPlan,
+    /// Blur passes run (each separable pair counts once) and their widest radius (px).
+    pub blurs: u32,
+    pub widest_radius: u32,
+    pub buffer_bytes: u64,
+}
+
+/// Normalised Gaussian weights for `σ`: the centre, then each distance up to `ceil(3σ)`.
+fn gaussian(sigma: f32) -> Vec<f32> {
+    let radius = (3.0 * sigma).ceil() as usize;
+    let w: Vec<f32> = (0..=radius).map(|i| (-((i * i) as f32) / (2.0 * sigma * sigma)).exp()).collect();
+    let total = w[0] + 2.0 * w[1..].iter().sum::<f32>();
+    w.iter().map(|v| v / total).collect()
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Buf {
+    Layer,
+    Far,
+    Near,
+}
+
+enum Op {
+    Matte(usize),
+    Blur(Buf, f32),
+    Composite { layer: Buf, acc: Buf, mode: u32 },
+}
+
+/// The dispatch sequence: non-cascaded, or the two cascades joined.
+fn schedule(plan: &LayerPlan, cascaded: bool) -> Vec<Op> {
+    let mut ops = Vec::new();
+    let s = |k: usize| sigma(plan.cocs[k]);
+    if !cascaded {
+        for k in (0..plan.cocs.len()).rev().filter(|&k| !plan.empty[k]) {
+            ops.push(Op::Matte(k));
+            ops.push(Op::Blur(Buf::Layer, s(k)));
+            ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Far, mode: OVER });
+        }
+        return ops;
+    }
+    // Behind the focus, from the back: join, then blur by the step to the next layer forwards.
+    let (mut pending, mut any) = (0.0f32, false);
+    for k in (plan.focus_layer..plan.cocs.len()).rev() {
+        if !plan.empty[k] {
+            if any && pending > 0.0 {
+                ops.push(Op::Blur(Buf::Far, pending.sqrt()));
+                pending = 0.0;
+            }
+            ops.push(Op::Matte(k));
+            ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Far, mode: OVER });
+            any = true;
+        }
+        if k > plan.focus_layer {
+            pending += s(k).powi(2) - s(k - 1).powi(2);
+        }
+    }
+    // In front, from the nearest: join behind, then blur by the step to the next layer backwards.
+    let (mut pending, mut any_near) = (0.0f32, false);
+    for k in 0..plan.focus_layer {
+        if !plan.empty[k] {
+            if any_near && pending > 0.0 {
+                ops.push(Op::Blur(Buf::Near, pending.sqrt()));
+                pending = 0.0;
+            }
+            ops.push(Op::Matte(k));
+            ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Near, mode: UNDER });
+            any_near = true;
+        }
+        let next = if k + 1 < plan.focus_layer { s(k + 1) } else { 0.0 };
+        pending += s(k).powi(2) - next.powi(2);
+    }
+    if any_near {
+        if pending > 0.0 {
+            ops.push(Op::Blur(Buf::Near, pending.sqrt()));
+        }
+        ops.push(Op::Composite { layer: Buf::Near, acc: Buf::Far, mode: OVER });
+    }
+    ops
+}
+
+/// Renders `image` through `lens` by layered DoF on `backend`.
+pub fn layered(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &LayeredOptions) -> Result<LayeredOutput> {
+    let plan = plan(image, lens, options)?;
+    let (width, height) = (image.width, image.height);
+    let pixels = width as u64 * height as u64;
+    let ops = schedule(&plan, options.cascaded);
+    // Every blur's weights in one buffer.
+    let mut weights: Vec<u32> = Vec::new();
+    let mut blurs: Vec<(u32, u32)> = Vec::new();
+    for op in &ops {
+        if let Op::Blur(_, s) = op {
+            if *s >= MIN_SIGMA {
+                let w = gaussian(*s);
+                blurs.push((weights.len() as u32, (w.len() - 1) as u32));
+                weights.extend(w.iter().map(|v| v.to_bits()));
+            }
+        }
+    }
+    let slots = pixels * image.max_layers as u64;
+    let sizes = [
+        (SLOT_WORDS as u64 * slots, "layered/input"),
+        (pixels, "layered/counts"),
+        (4 * pixels, "layered/layer"),
+        (4 * pixels, "layered/tmp"),
+        (4 * pixels, "layered/far"),
+        (4 * pixels, "layered/near"),
+        (weights.len().max(1) as u64, "layered/weights"),
+        (3 * pixels, "layered/out"),
+    ];
+    let max_words = backend.limits().max_buffer_bytes / 4;
+    if let Some(&(words, what)) = sizes.iter().find(|s| s.0 > max_words) {
+        return Err(Error::TooLarge { what: format!("{what} (words)"), size: words, limit: max_words });
+    }
+    let buffer_bytes = 4 * sizes.iter().map(|s| s.0).sum::<u64>();
+    let mut input = Vec::with_capacity((SLOT_WORDS as u64 * slots) as usize);
+    for f in &image.fragments {
+        input.extend_from_slice(&[f.color[0].to_bits(), f.color[1].to_bits(), f.color[2].to_bits(), f.depth.to_bits()]);
+    }
+    let widest_radius = blurs.iter().map(|b| b.1).max().unwrap_or(0);
+    let blur_count = blurs.len() as u32;
+    with_buffers(backend, &sizes, |backend, b| {
+        let [input_buf, counts, layer, tmp, far, near, weights_buf, out] = [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]];
+        backend.write_buffer(input_buf, 0, &input)?;
+        backend.write_buffer(counts, 0, &image.counts)?;
+        if !weights.is_empty() {
+            backend.write_buffer(weights_buf, 0, &weights)?;
+        }
+        backend.fill(far, 0, 4 * pixels, 0, "layered/clear")?;
+        backend.fill(near, 0, 4 * pixels, 0, "layered/clear")?;
+        let base = LayeredParams { width, height, max_layers: image.max_layers, ..Default::default() };
+        let groups = [(pixels.div_ceil(THREADS as u64) as u32).clamp(1, MAX_GROUPS), 1, 1];
+        let id = |buf: Buf| -> BufferId {
+            match buf {
+                Buf::Layer => layer,
+                Buf::Far => far,
+                Buf::Near => near,
+            }
+        };
+        let mut blur_params = blurs.iter();
+        for op in &ops {
+            match *op {
+                Op::Matte(k) => {
+                    let p = LayeredParams { anchors: plan.anchors_of(k), ..base };
+                    backend.dispatch(&LAYERED_MATTE, groups, &[input_buf, counts, layer], &push_words(&p), "layered/matte")?;
+                }
+                Op::Blur(buf, s) if s >= MIN_SIGMA => {
+                    let Some(&(weights_at, radius)) = blur_params.next() else { continue };
+                    let h = LayeredParams { radius, weights_at, mode: 0, ..base };
+                    let v = LayeredParams { mode: 1, ..h };
+                    backend.dispatch(&LAYERED_BLUR, groups, &[id(buf), weights_buf, tmp], &push_words(&h), "layered/blur")?;
+                    backend.dispatch(&LAYERED_BLUR, groups, &[tmp, weights_buf, id(buf)], &push_words(&v), "layered/blur")?;
+                }
+                Op::Blur(..) => {}
+                Op::Composite { layer: l, acc, mode } => {
+                    let p = LayeredParams { mode, ..base };
+                    backend.dispatch(&LAYERED_COMPOSITE, groups, &[id(l), id(acc)], &push_words(&p), "layered/composite")?;
+                }
+            }
+        }
+        backend.dispatch(&LAYERED_RESOLVE, groups, &[far, out], &push_words(&base), "layered/composite")?;
+        let times = backend.submit()?;
+        let words = backend.read_buffer(out, 0, 3 * pixels)?;
+        let data = words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
+        Ok(LayeredOutput { image: RgbImage { width, height, data }, times, plan: plan.clone(), blurs: blur_count, widest_radius, buffer_bytes })
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn gaussian_weights_sum_to_one() {
+        for s in [0.25f32, 1.0, 7.3, 64.0] {
+            let w = gaussian(s);
+            let total = w[0] + 2.0 * w[1..].iter().sum::<f32>();
+            assert!((total - 1.0).abs() < 1e-5, "{s}: {total}");
+            assert_eq!(w.len(), (3.0 * s).ceil() as usize + 1);
+        }
+    }
+}

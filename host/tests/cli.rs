@@ -87,3 +87,24 @@ fn splatting_methods_render_builtin_and_exr_scenes() {
     assert_fails_with(&["render", "--method", "multilayer", "--merge", "3x3"], "unknown merge level");
     assert_fails_with(&["render", "--method", "multilayer", "--max-coc", "1000", "--width", "32", "--height", "32"], "use larger tiles");
 }
+
+#[test]
+fn raytrace_layered_and_shaped_apertures_render() {
+    let cases: [(&str, &[&str], &str); 3] = [
+        ("raytrace", &["--spp", "4"], "rays per pixel"),
+        ("layered", &["--no-cascade"], "layers for CoC"),
+        ("multilayer", &["--aperture", "blades:6:15:0.2"], "sort classes used"),
+    ];
+    for (method, extra, says) in cases {
+        let out = temp(&format!("simple-{method}-extra.exr"));
+        let mut args = vec!["render", "--method", method, "--width", "96", "--height", "54", "--out", out.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        let o = dof(&args);
+        assert!(o.status.success(), "{method}: {}", String::from_utf8_lossy(&o.stderr));
+        assert!(String::from_utf8_lossy(&o.stdout).contains(says), "{method} reports what it did");
+    }
+    assert_fails_with(&["render", "--method", "gather", "--aperture", "blades:6", "--width", "32", "--height", "32"], "splatting methods");
+    assert_fails_with(&["render", "--method", "multilayer", "--aperture", "hexagon", "--width", "32", "--height", "32"], "blades:N");
+    assert_fails_with(&["render", "--method", "raytrace", "--spp", "0", "--width", "32", "--height", "32"], "rays per pixel");
+    assert_fails_with(&["render", "--method", "layered", "--layers-per-doubling", "9", "--width", "32", "--height", "32"], "layers per doubling");
+}

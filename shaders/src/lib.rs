@@ -5,6 +5,7 @@
 //! backend. See [`exec`] for the execution model and [`kernel`] for how entry points are declared.
 #![cfg_attr(target_arch = "spirv", no_std)]
 
+pub mod aperture;
 pub mod exec;
 #[macro_use]
 pub mod kernel;

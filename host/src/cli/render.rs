@@ -10,7 +10,7 @@ use dof::scene::{
 use dof::layers::LayeredImage;
 use dof::methods::layered::{LayeredOptions, layered};
 use dof::methods::raytrace::{RaytraceOptions, raytrace};
-use dof::methods::splat::{Merge, SplatOptions, splat};
+use dof::methods::splat::{Merge, SplatOptions, parse_aperture, splat};
 use dof_shaders::lens::ThinLens;
 use std::path::{Path, PathBuf};
 
@@ -79,6 +79,9 @@ pub struct RenderArgs {
     /// converged) or rays of `raytrace` (default 16).
     #[arg(long, visible_alias = "spp")]
     samples: Option<u32>,
+    /// Splatting: the aperture shape, `circle` or `blades:N[:ROTATION_DEGREES[:CURVATURE]]`.
+    #[arg(long, default_value = "circle")]
+    aperture: String,
     /// Layered DoF: one blur per layer instead of the cascade.
     #[arg(long)]
     no_cascade: bool,
@@ -197,6 +200,9 @@ fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens
 /// Runs a blurring method (gather, tiled, multilayer, raytrace, layered) on the chosen backend and prints what it did.
 /// Returns the image and the front layer's depth.
 fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Result<(RgbImage, Vec<f32>)> {
+    if args.aperture != "circle" && !matches!(args.method, Method::Tiled | Method::Multilayer) {
+        bail!("--aperture {} is supported by the splatting methods (tiled, multilayer) only; {:?} uses the circle", args.aperture, args.method);
+    }
     let mut b = backend(args.backend)?;
     let (front, depth) = layers.front();
     let image = match args.method {
@@ -235,6 +241,7 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Re
                 tile: args.tile,
                 merge: args.merge,
                 max_radius: args.max_coc.map(|d| d as f32 / 2.0),
+                aperture: parse_aperture(&args.aperture)?,
                 ..Default::default()
             };
             let input = if args.method == Method::Tiled { layers.front_layer() } else { layers.clone() };

@@ -18,7 +18,7 @@
 //! where fragments from outside the image are missing, and holes left by dropped input) and undoes
 //! the colour scale of packing. A tile no list reaches (`copy`) writes its sharp fronts directly.
 
-use super::fragment::{Fragment, weight, weight_sum};
+use super::fragment::{Fragment, shaped_weight, weight_sum};
 use super::pack::load_sharp;
 use crate::wg::{inclusive_scan, max};
 use super::{SplatParams, THREADS, stats};
@@ -47,9 +47,11 @@ const CH_G: usize = 11 * T;
 const CH_B: usize = 12 * T;
 const CH_Z: usize = 13 * T;
 const CH_W: usize = 14 * T;
+/// 1 for a background fragment, −1 for a foreground one (its aperture shape is point-reflected).
+const CH_M: usize = 15 * T;
 /// Two halves for the "any pixel still active" scan.
-const ACTIVE: usize = 15 * T;
-pub const SHARED_WORDS: usize = 17 * T;
+const ACTIVE: usize = 16 * T;
+pub const SHARED_WORDS: usize = 18 * T;
 
 #[inline]
 fn get<const N: usize>(sh: &[u32; N], field: usize, i: u32) -> f32 {
@@ -137,8 +139,10 @@ pub fn accumulate_pass<G: Group, M: Mem>(
                 set(sh, CH_X, lid, c[0]);
                 set(sh, CH_Y, lid, c[1]);
                 set(sh, CH_S, lid, r);
-                set(sh, CH_A, lid, f.footprint() / weight_sum(c, r, f.rim()));
+                let mirror = if f.depth < p.lens.focus_distance { -1.0 } else { 1.0 };
+                set(sh, CH_A, lid, f.footprint() / weight_sum(c, r, f.rim(), &p.aperture, mirror));
                 set(sh, CH_W, lid, f.rim());
+                set(sh, CH_M, lid, mirror);
                 set(sh, CH_R, lid, f.color[0]);
                 set(sh, CH_G, lid, f.color[1]);
                 set(sh, CH_B, lid, f.color[2]);
@@ -158,7 +162,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
                     // The pixel's own sharp front lies in front of the rest of the list.
                     live = false;
                 } else if d2 < s * s {
-                    let a = get(sh, CH_A, k) * weight(d2, s, get(sh, CH_W, k));
+                    let a = get(sh, CH_A, k) * shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k));
                     let rest = 1.0 - get(sh, USED, lid);
                     blend(sh, lid, if a < rest { a } else { rest }, [get(sh, CH_R, k), get(sh, CH_G, k), get(sh, CH_B, k)]);
                     live = get(sh, USED, lid) < 1.0 - SATURATED;
@@ -200,6 +204,6 @@ pub fn accumulate_pass<G: Group, M: Mem>(
 
 kernel!(
     /// Front-to-back accumulation of the sorted tile lists (or copy-through) into `out` (3 words a pixel).
-    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 17 * 256]
+    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 18 * 256]
         { sharp, dense, values, segments, copy, out, st } => accumulate_pass
 );

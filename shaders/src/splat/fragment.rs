@@ -20,6 +20,7 @@
 //! §6.1). A disc of radius at most 1 reaches only the fragment's own pixel centre: such a fragment is
 //! in focus.
 
+use crate::aperture::Aperture;
 use crate::exec::Mem;
 use crate::half::{HALF_MAX, f16_to_f32, f32_to_f16};
 use crate::lens::ThinLens;
@@ -155,7 +156,6 @@ pub fn rim(level: u32) -> f32 {
 
 /// Support radius from which [`weight_sum`] switches from the exact lattice sum to its integral.
 pub const EXACT_SUM_LIMIT: f32 = 4.0;
-const PI: f32 = 3.141_592_7;
 
 /// How much of a fragment with support radius `s` and rim width `w` a pixel centre at squared
 /// distance `d2` receives, before normalisation: 1 inside `s − w`, falling linearly to 0 at `s`. This
@@ -172,15 +172,28 @@ pub fn weight(d2: f32, s: f32, w: f32) -> f32 {
     if v > 0.0 { if v < 1.0 { v } else { 1.0 } } else { 0.0 }
 }
 
-/// The sum of [`weight`] over every pixel centre (of an unbounded grid) around `c`: what a fragment's
-/// weights are divided by, so that it spreads exactly its footprint's energy. Summed exactly for
-/// small supports; from [`EXACT_SUM_LIMIT`] beyond the rim on, the integral
-/// `π(s − w)² + π(s − w)w + πw²/3`, which the lattice sum matches to well under a percent there.
+/// [`weight`] for the aperture shape `ap` at offset `d` (pixel centre minus fragment centre, `d2`
+/// its squared length): the circle's fast path, or the shape's gauge in place of the distance, the
+/// offset point-reflected (`mirror = −1`) for a foreground fragment.
 #[inline]
-pub fn weight_sum(c: [f32; 2], s: f32, w: f32) -> f32 {
+pub fn shaped_weight(d: [f32; 2], d2: f32, s: f32, w: f32, ap: &Aperture, mirror: f32) -> f32 {
+    if ap.is_circle() {
+        return weight(d2, s, w);
+    }
+    let v = (s - ap.gauge([mirror * d[0], mirror * d[1]])) / w;
+    if v > 0.0 { if v < 1.0 { v } else { 1.0 } } else { 0.0 }
+}
+
+/// The sum of [`shaped_weight`] over every pixel centre (of an unbounded grid) around `c`: what a
+/// fragment's weights are divided by, so that it spreads exactly its footprint's energy. Summed
+/// exactly for small supports; from [`EXACT_SUM_LIMIT`] beyond the rim on, the integral
+/// `A/π · (π(s − w)² + π(s − w)w + πw²/3)` with `A` the unit shape's area (π for the circle), which
+/// the lattice sum matches to well under a percent there.
+#[inline]
+pub fn weight_sum(c: [f32; 2], s: f32, w: f32, ap: &Aperture, mirror: f32) -> f32 {
     if s >= EXACT_SUM_LIMIT + w {
         let inner = s - w;
-        return PI * inner * inner + PI * inner * w + PI * w * w / 3.0;
+        return ap.area * (inner * inner + inner * w + w * w / 3.0);
     }
     let mut sum = 0.0;
     let mut y = ceil(c[1] - s - 0.5);
@@ -191,7 +204,7 @@ pub fn weight_sum(c: [f32; 2], s: f32, w: f32) -> f32 {
         let x_end = floor(c[0] + s - 0.5);
         while x <= x_end {
             let dx = x + 0.5 - c[0];
-            sum += weight(dx * dx + dy * dy, s, w);
+            sum += shaped_weight([dx, dy], dx * dx + dy * dy, s, w, ap, mirror);
             x += 1.0;
         }
         y += 1.0;

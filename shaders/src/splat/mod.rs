@@ -23,6 +23,7 @@ pub mod fragment;
 pub mod merge;
 pub mod pack;
 
+use crate::aperture::Aperture;
 use crate::lens::ThinLens;
 
 /// Invocations per workgroup of every splatting kernel.
@@ -39,7 +40,7 @@ pub const MAX_GROUPS: u32 = 65535;
 /// `flags`: drop fragments inside a merged fragment's umbra (§6.2).
 pub const FLAG_UMBRA_MERGE: u32 = 1;
 
-/// Push constants of every splatting kernel (88 bytes).
+/// Push constants of every splatting kernel (120 bytes; at most 128 are guaranteed).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct SplatParams {
@@ -71,7 +72,11 @@ pub struct SplatParams {
     /// range survive) and divided by after accumulation: 1 for most images.
     pub color_scale: f32,
     pub lens: ThinLens,
+    /// The aperture shape `accumulate` tests pixels against (binning uses the enclosing circle).
+    pub aperture: Aperture,
 }
+
+const _: () = assert!(core::mem::size_of::<SplatParams>() <= 128);
 
 /// Words of the statistics buffer every run fills (atomic counters, so order-independent).
 pub mod stats {

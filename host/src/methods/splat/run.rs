@@ -117,6 +117,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
                 merge_color_tol: options.merge_color_tol,
                 color_scale: plan.color_scale,
                 lens: *lens,
+                aperture: options.aperture,
             }
         };
         let last = plan.merge_steps;

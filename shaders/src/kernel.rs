@@ -27,6 +27,23 @@ pub struct KernelDesc {
     pub cpu: fn(&crate::exec::CpuDispatch),
 }
 
+/// A draw through the graphics pipeline: vertex and fragment entry points reading `bindings`
+/// storage buffers (both stages see the push constants), drawn indirectly with `vertices` vertices
+/// an instance into an RGBA32F target with additive blending. Backends without a graphics pipeline
+/// (the CPU backend) run `fallback` instead, a compute kernel over `fallback_tile`-pixel square tiles
+/// from the same sources, bound to the draw's buffers, then the indirect command's buffer, then the
+/// target (4 words a pixel).
+#[cfg(not(target_arch = "spirv"))]
+pub struct DrawDesc {
+    pub vertex: &'static str,
+    pub fragment: &'static str,
+    pub bindings: u32,
+    pub push_bytes: u32,
+    pub vertices: u32,
+    pub fallback: &'static KernelDesc,
+    pub fallback_tile: u32,
+}
+
 /// The SPIR-V entry point name rust-gpu gives a function: its path without the crate name.
 #[cfg(not(target_arch = "spirv"))]
 pub const fn entry_name(path: &'static str) -> &'static str {

@@ -9,6 +9,7 @@ pub mod aperture;
 pub mod exec;
 #[macro_use]
 pub mod kernel;
+pub mod bokeh;
 pub mod gather;
 pub mod half;
 pub mod keys;
@@ -22,7 +23,7 @@ pub mod splat;
 pub mod wg;
 
 #[cfg(not(target_arch = "spirv"))]
-pub use kernel::KernelDesc;
+pub use kernel::{DrawDesc, KernelDesc};
 
 /// Every kernel, in a stable order: the host builds one pipeline for each.
 #[cfg(not(target_arch = "spirv"))]
@@ -34,5 +35,12 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .chain(splat::KERNELS.iter())
         .chain(raytrace::KERNELS.iter())
         .chain(layered::KERNELS.iter())
+        .chain(bokeh::KERNELS.iter())
         .copied()
+}
+
+/// Every draw through the graphics pipeline (its vertex and fragment entry points have modules too).
+#[cfg(not(target_arch = "spirv"))]
+pub fn all_draws() -> [&'static DrawDesc; 1] {
+    [&bokeh::BOKEH_DRAW]
 }

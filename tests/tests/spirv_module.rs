@@ -34,7 +34,10 @@ fn entry_points(words: &[u32]) -> BTreeSet<String> {
 
 #[test]
 fn every_kernel_the_host_names_has_its_own_module() {
-    let declared: BTreeSet<String> = dof_shaders::all_kernels().map(|k| k.entry.to_string()).collect();
+    let mut declared: BTreeSet<String> = dof_shaders::all_kernels().map(|k| k.entry.to_string()).collect();
+    for draw in dof_shaders::all_draws() {
+        declared.extend([draw.vertex.to_string(), draw.fragment.to_string()]);
+    }
     let embedded: BTreeSet<String> = dof::shaders::MODULES.iter().map(|(e, _)| e.to_string()).collect();
     assert_eq!(embedded, declared, "embedded modules vs kernels declared to the host");
     for entry in &declared {

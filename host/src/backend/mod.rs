@@ -8,7 +8,7 @@
 //! `write_buffer` and `read_buffer` act on the host: they first submit anything still recorded.
 
 use crate::error::{Error, Result};
-use dof_shaders::KernelDesc;
+use dof_shaders::{DrawDesc, KernelDesc};
 
 pub mod cpu;
 pub mod vulkan;
@@ -94,11 +94,60 @@ pub trait Backend {
         push: &[u32],
         label: &str,
     ) -> Result<()>;
+    /// Draws `draw` through the graphics pipeline: `args[0..4]` is the indirect draw command (vertex
+    /// count, instance count, first vertex, first instance), read on the device; `buffers` are the
+    /// draw's storage buffers. The sum of every instance's fragments over zero lands in `target`
+    /// (`size[0] · size[1]` pixels of 4 f32 words). The default runs the draw's compute fallback
+    /// from the same sources, for backends without a graphics pipeline.
+    #[allow(clippy::too_many_arguments)]
+    fn draw_indirect(
+        &mut self,
+        draw: &'static DrawDesc,
+        args: BufferId,
+        buffers: &[BufferId],
+        target: BufferId,
+        size: [u32; 2],
+        push: &[u32],
+        label: &str,
+    ) -> Result<()> {
+        check_draw(self, draw, args, buffers, target, size, push)?;
+        self.fill(target, 0, 4 * size[0] as u64 * size[1] as u64, 0, label)?;
+        let mut bound = buffers.to_vec();
+        bound.extend([args, target]);
+        let groups = [size[0].div_ceil(draw.fallback_tile), size[1].div_ceil(draw.fallback_tile), 1];
+        self.dispatch(draw.fallback, groups, &bound, push, label)
+    }
     fn submit(&mut self) -> Result<Vec<CommandTime>>;
     /// Messages from driver-side checking (the validation layer on Vulkan) since the last call.
     fn take_diagnostics(&mut self) -> Vec<String> {
         Vec::new()
     }
+}
+
+/// Checks a draw against its declaration and its buffers' sizes (both backends call it).
+pub(crate) fn check_draw<B: Backend + ?Sized>(
+    backend: &B,
+    draw: &DrawDesc,
+    args: BufferId,
+    buffers: &[BufferId],
+    target: BufferId,
+    size: [u32; 2],
+    push: &[u32],
+) -> Result<()> {
+    if buffers.len() != draw.bindings as usize || (push.len() as u64) * 4 < draw.push_bytes as u64 {
+        return Err(Error::InvalidArgument(format!(
+            "draw `{}` takes {} buffers and {} push bytes, got {} and {}",
+            draw.vertex, draw.bindings, draw.push_bytes, buffers.len(), 4 * push.len()
+        )));
+    }
+    let pixels = size[0] as u64 * size[1] as u64;
+    if pixels == 0 {
+        return Err(Error::InvalidArgument(format!("draw `{}` into an empty {}x{} target", draw.vertex, size[0], size[1])));
+    }
+    if backend.buffer_words(target)? < 4 * pixels || backend.buffer_words(args)? < 4 {
+        return Err(Error::InvalidArgument(format!("draw `{}`: the target needs {} words and the command 4", draw.vertex, 4 * pixels)));
+    }
+    Ok(())
 }
 
 /// Checks a dispatch against the kernel's declaration and the device limits (both backends call it,

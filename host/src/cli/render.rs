@@ -8,6 +8,7 @@ use dof::scene::{
     self, Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, ReferenceOptions, Vec3, raycast_layers,
 };
 use dof::layers::LayeredImage;
+use dof::methods::bokeh::{BokehOptions, bokeh};
 use dof::methods::layered::{LayeredOptions, layered};
 use dof::methods::raytrace::{RaytraceOptions, raytrace};
 use dof::methods::splat::{Merge, SplatOptions, parse_aperture, splat};
@@ -32,6 +33,8 @@ pub enum Method {
     Raytrace,
     /// Layered DoF with matting (seed 002): depth layers blurred by Gaussians and composited.
     Layered,
+    /// Bokeh sprites (seed 001): bright pixels drawn as aperture-shaped quads over a gather.
+    Bokeh,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -82,6 +85,12 @@ pub struct RenderArgs {
     /// Splatting: the aperture shape, `circle` or `blades:N[:ROTATION_DEGREES[:CURVATURE]]`.
     #[arg(long, default_value = "circle")]
     aperture: String,
+    /// Bokeh sprites: luminance above the 5x5 neighbourhood's mean that makes a sprite.
+    #[arg(long, default_value_t = 1.0)]
+    lum_threshold: f32,
+    /// Bokeh sprites: how many the sprite buffer holds.
+    #[arg(long, default_value_t = 4096)]
+    sprites: u32,
     /// Layered DoF: one blur per layer instead of the cascade.
     #[arg(long)]
     no_cascade: bool,
@@ -168,7 +177,7 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             Ok(())
         }
         Method::Reference => bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)"),
-        Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace | Method::Layered => {
+        Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace | Method::Layered | Method::Bokeh => {
             let lens = exr_lens(args, &layers)?;
             let (image, depth) = blur(args, &layers, &lens)?;
             let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
@@ -197,11 +206,11 @@ fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens
     Ok(settings.thin_lens(&camera)?)
 }
 
-/// Runs a blurring method (gather, tiled, multilayer, raytrace, layered) on the chosen backend and prints what it did.
+/// Runs a blurring method (gather, tiled, multilayer, raytrace, layered, bokeh) on the chosen backend and prints what it did.
 /// Returns the image and the front layer's depth.
 fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Result<(RgbImage, Vec<f32>)> {
-    if args.aperture != "circle" && !matches!(args.method, Method::Tiled | Method::Multilayer) {
-        bail!("--aperture {} is supported by the splatting methods (tiled, multilayer) only; {:?} uses the circle", args.aperture, args.method);
+    if args.aperture != "circle" && !matches!(args.method, Method::Tiled | Method::Multilayer | Method::Bokeh) {
+        bail!("--aperture {} is supported by the splatting methods and bokeh sprites only; {:?} uses the circle", args.aperture, args.method);
     }
     let mut b = backend(args.backend)?;
     let (front, depth) = layers.front();
@@ -211,6 +220,18 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Re
             let ms: f64 = blurred.times.iter().map(|t| t.ms).sum();
             println!("gather on {}: radius {} px, {ms:.2} ms in kernels", b.device_name(), blurred.radius);
             blurred.image
+        }
+        Method::Bokeh => {
+            let options = BokehOptions { lum_threshold: args.lum_threshold, capacity: args.sprites, aperture: parse_aperture(&args.aperture)?, ..Default::default() };
+            let out = bokeh(b.as_mut(), &front, &depth, lens, &options)?;
+            let ms: f64 = out.times.iter().map(|t| t.ms).sum();
+            println!(
+                "bokeh sprites on {}: {} bright pixels detected, {} drawn as sprites{}, over a gather of radius {} px; {ms:.2} ms in kernels",
+                b.device_name(), out.detected, out.detected - out.overflow,
+                if out.overflow > 0 { format!(" ({} beyond the capacity of {} left in the blur)", out.overflow, options.capacity) } else { String::new() },
+                out.blur_radius
+            );
+            out.image
         }
         Method::Layered => {
             let options = LayeredOptions { cascaded: !args.no_cascade, layers_per_doubling: args.layers_per_doubling, ..Default::default() };
@@ -317,7 +338,7 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             println!("wrote {} and {}", out.display(), out.with_extension("png").display());
             Ok(())
         }
-        Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace | Method::Layered => {
+        Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace | Method::Layered | Method::Bokeh => {
             let (image, depth) = blur(args, &layered.layers, &lens)?;
             write_outputs(out, &image, &[("Z", &depth), ("coc", &coc)], args.exposure)
         }

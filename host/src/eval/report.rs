@@ -81,15 +81,15 @@ pub struct SweepRecord {
 }
 
 /// The column of seed 000 Table 1 a recorded stage belongs to: `merge` (input preparation: packing
-/// and merging, the ray tracer's min/max hierarchy, or layered DoF's matting), `splat` (tile counts,
-/// compaction, allocation, binning and their scans), `sort`, `apply` (accumulation, the gather,
-/// tracing, or layered DoF's blurs and composition).
+/// and merging, the ray tracer's min/max hierarchy, layered DoF's matting, or bokeh detection),
+/// `splat` (tile counts, compaction, allocation, binning and their scans), `sort`, `apply`
+/// (accumulation, the gather, tracing, layered DoF's blurs and composition, the sprite draw).
 pub fn table_column(label: &str) -> &'static str {
-    if label.starts_with("splat/pack") || label.starts_with("splat/merge") || label == "raytrace/hierarchy" || label == "layered/matte" {
+    if label.starts_with("splat/pack") || label.starts_with("splat/merge") || label == "raytrace/hierarchy" || label == "layered/matte" || label == "bokeh/detect" {
         "merge"
     } else if label.starts_with("sort/") {
         "sort"
-    } else if label.starts_with("splat/accumulate") || label == "gather" || label == "raytrace/trace" || label.starts_with("layered/") {
+    } else if label.starts_with("splat/accumulate") || label == "gather" || label == "raytrace/trace" || label.starts_with("layered/") || label == "bokeh/draw" {
         "apply"
     } else {
         "splat"

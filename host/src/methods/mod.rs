@@ -1,6 +1,7 @@
 //! Depth-of-field methods, each a sequence of kernel dispatches recorded on any
 //! [`crate::backend::Backend`], so it runs on the CPU and on Vulkan from the same kernels.
 
+pub mod bokeh;
 pub mod gather;
 pub mod layered;
 pub mod raytrace;

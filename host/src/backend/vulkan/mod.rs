@@ -4,21 +4,23 @@
 //! - `memory`: storage and staging buffers (gpu-allocator);
 //! - `pipelines`: one pipeline per kernel, from its own SPIR-V module (push descriptors);
 //! - `spirv`: what the backend reads from the modules (capabilities, entry point names);
-//! - `recorder`: the command buffer, barriers, timestamps and submission.
+//! - `recorder`: the command buffer, barriers, timestamps and submission;
+//! - `draw`: draws through the graphics pipeline into an RGBA32F target copied into a buffer.
 //!
 //! Everything is synchronous: every submission is waited for, so between calls the GPU is idle and
 //! buffers can be read, written or freed without further synchronisation.
 
+mod draw;
 mod instance;
 mod memory;
 mod pipelines;
 mod recorder;
 mod spirv;
 
-use super::{Backend, BackendKind, BufferId, CommandTime, Limits, check_dispatch};
+use super::{Backend, BackendKind, BufferId, CommandTime, Limits, check_dispatch, check_draw};
 use crate::error::{Error, Result};
 use ash::vk;
-use dof_shaders::KernelDesc;
+use dof_shaders::{DrawDesc, KernelDesc};
 use gpu_allocator::MemoryLocation;
 use gpu_allocator::vulkan::{Allocator, AllocatorCreateDesc};
 use instance::{DeviceCtx, InstanceCtx};
@@ -69,6 +71,8 @@ pub struct VulkanBackend {
     allocator: Option<Allocator>,
     info: DeviceInfo,
     pipelines: Pipelines,
+    draws: draw::Draws,
+    physical: vk::PhysicalDevice,
     recorder: Recorder,
     buffers: HashMap<u32, StorageBuffer>,
     next_id: u32,
@@ -104,6 +108,8 @@ impl VulkanBackend {
             allocator: Some(allocator),
             info: candidate.info,
             pipelines: Pipelines::default(),
+            draws: draw::Draws::default(),
+            physical: candidate.physical,
             recorder: Recorder::empty(),
             buffers: HashMap::new(),
             next_id: 0,
@@ -356,6 +362,93 @@ impl Backend for VulkanBackend {
         self.record_dispatch(kernel, None, Some((args, args_offset_words)), buffers, push, label)
     }
 
+    fn draw_indirect(
+        &mut self,
+        draw: &'static DrawDesc,
+        args: BufferId,
+        buffers: &[BufferId],
+        target: BufferId,
+        size: [u32; 2],
+        push: &[u32],
+        label: &str,
+    ) -> Result<()> {
+        check_draw(self, draw, args, buffers, target, size, push)?;
+        // SAFETY: a query on the live instance and the device's physical device.
+        let limits = unsafe { self.instance.instance.get_physical_device_properties(self.physical) }.limits;
+        if size[0] > limits.max_framebuffer_width || size[1] > limits.max_framebuffer_height {
+            return Err(Error::TooLarge {
+                what: format!("draw target {}x{} (framebuffer side)", size[0], size[1]),
+                size: size[0].max(size[1]) as u64,
+                limit: limits.max_framebuffer_width.min(limits.max_framebuffer_height) as u64,
+            });
+        }
+        draw::check_format(&self.instance.instance, self.physical)?;
+        let pipeline = self.draws.pipeline(&self.device.device, draw)?;
+        if self.draws.target.as_ref().map(|t| t.size) != Some(size) {
+            // Recorded work may still use the old target.
+            self.flush()?;
+            let device = self.device.device.clone();
+            let allocator = self.allocator.as_mut().ok_or_else(|| Error::Allocation("the allocator is gone".into()))?;
+            if let Some(old) = self.draws.target.take() {
+                old.destroy(&device, allocator);
+            }
+            self.draws.target = Some(draw::Target::new(&device, allocator, pipeline.render_pass, size)?);
+        }
+        let (image, framebuffer) = match &self.draws.target {
+            Some(t) => (t.image, t.framebuffer),
+            None => return Err(Error::InvalidArgument("no draw target".into())),
+        };
+        let pixels = size[0] as u64 * size[1] as u64;
+        let args_buffer = self.range(args, 0, 4)?;
+        let target_buffer = self.range(target, 0, 4 * pixels)?;
+        let bound: Vec<vk::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.gpu.buffer)).collect::<Result<_>>()?;
+        let infos: Vec<vk::DescriptorBufferInfo> =
+            bound.iter().map(|&buffer| vk::DescriptorBufferInfo::default().buffer(buffer).offset(0).range(vk::WHOLE_SIZE)).collect();
+        let writes: Vec<vk::WriteDescriptorSet> = infos
+            .iter()
+            .enumerate()
+            .map(|(i, info)| {
+                vk::WriteDescriptorSet::default().dst_binding(i as u32).descriptor_type(vk::DescriptorType::STORAGE_BUFFER).buffer_info(std::slice::from_ref(info))
+            })
+            .collect();
+        let push_bytes = draw.push_bytes.div_ceil(4) as usize * 4;
+        let push_data: Vec<u8> = bytemuck::cast_slice::<u32, u8>(push)[..push_bytes].to_vec();
+        let push_descriptor = &self.device.push_descriptor;
+        let extent = vk::Extent2D { width: size[0], height: size[1] };
+        let stages = vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT;
+        self.recorder.record(&self.device, Some((label, draw.vertex)), |d, cb| {
+            let clear = [vk::ClearValue { color: vk::ClearColorValue { float32: [0.0; 4] } }];
+            let begin = vk::RenderPassBeginInfo::default()
+                .render_pass(pipeline.render_pass)
+                .framebuffer(framebuffer)
+                .render_area(vk::Rect2D { offset: vk::Offset2D::default(), extent })
+                .clear_values(&clear);
+            let viewport = [vk::Viewport { x: 0.0, y: 0.0, width: size[0] as f32, height: size[1] as f32, min_depth: 0.0, max_depth: 1.0 }];
+            let scissor = [vk::Rect2D { offset: vk::Offset2D::default(), extent }];
+            let region = [vk::BufferImageCopy::default()
+                .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
+                .image_extent(vk::Extent3D { width: size[0], height: size[1], depth: 1 })];
+            // SAFETY: `cb` is recording; pipeline, target and buffers live until the submission ends
+            // (a target is only replaced after a flush); the render pass leaves the image in
+            // TRANSFER_SRC_OPTIMAL, and its external dependency orders the copy after the draw.
+            unsafe {
+                d.cmd_begin_render_pass(cb, &begin, vk::SubpassContents::INLINE);
+                d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, pipeline.pipeline);
+                if !writes.is_empty() {
+                    push_descriptor.cmd_push_descriptor_set(cb, vk::PipelineBindPoint::GRAPHICS, pipeline.layout, 0, &writes);
+                }
+                if !push_data.is_empty() {
+                    d.cmd_push_constants(cb, pipeline.layout, stages, 0, &push_data);
+                }
+                d.cmd_set_viewport(cb, 0, &viewport);
+                d.cmd_set_scissor(cb, 0, &scissor);
+                d.cmd_draw_indirect(cb, args_buffer, 0, 1, 16);
+                d.cmd_end_render_pass(cb);
+                d.cmd_copy_image_to_buffer(cb, image, vk::ImageLayout::TRANSFER_SRC_OPTIMAL, target_buffer, &region);
+            }
+        })
+    }
+
     fn submit(&mut self) -> Result<Vec<CommandTime>> {
         self.flush()?;
         Ok(self.recorder.take_times())
@@ -376,6 +469,7 @@ impl Drop for VulkanBackend {
         self.pipelines.destroy(&d);
         self.recorder.destroy(&d);
         if let Some(mut allocator) = self.allocator.take() {
+            self.draws.destroy(&d, &mut allocator);
             for (_, b) in self.buffers.drain() {
                 b.gpu.destroy(&d, &mut allocator);
             }

@@ -197,15 +197,19 @@ impl Recorder {
     }
 }
 
-/// Makes every earlier compute or transfer write visible to every later compute, indirect or transfer
-/// access (the shared semantics of the backends: each command sees all writes of the ones before).
+/// Makes every earlier compute or transfer write visible to every later compute, indirect, vertex,
+/// fragment or transfer access (the shared semantics of the backends: each command sees all writes of the ones before).
 pub(super) fn full_barrier(d: &ash::Device, cb: vk::CommandBuffer) {
     barrier(
         d,
         cb,
         vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER,
         vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_WRITE,
-        vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::DRAW_INDIRECT | vk::PipelineStageFlags::TRANSFER,
+        vk::PipelineStageFlags::COMPUTE_SHADER
+            | vk::PipelineStageFlags::DRAW_INDIRECT
+            | vk::PipelineStageFlags::VERTEX_SHADER
+            | vk::PipelineStageFlags::FRAGMENT_SHADER
+            | vk::PipelineStageFlags::TRANSFER,
         vk::AccessFlags::SHADER_READ
             | vk::AccessFlags::SHADER_WRITE
             | vk::AccessFlags::INDIRECT_COMMAND_READ

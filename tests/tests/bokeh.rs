@@ -113,3 +113,18 @@ fn bad_options_are_errors() {
     }
     assert!(bokeh(&mut CpuBackend::new(), &img, &depth[1..], &lens, &BokehOptions::default()).is_err());
 }
+
+#[test]
+fn stage_timestamps_survive_a_draw() {
+    // Once a framebuffer is bound, lavapipe takes timestamps when it next flushes its binned scene;
+    // the recorder forces that flush, or every later stage would time as zero. A check of the
+    // instrumentation, not of speed: the bound is a factor of 5 where the fault gave 300.
+    let Some(mut vk) = vulkan() else { return };
+    let (img, depth, lens) = highlights();
+    let ms = |vk: &mut dof::backend::VulkanBackend| -> f64 { gather(vk, &img, &depth, &lens, None).unwrap().times.iter().map(|t| t.ms).sum() };
+    let before = (0..3).map(|_| ms(&mut vk)).fold(f64::INFINITY, f64::min);
+    run(&mut vk, &img, &depth, &lens, &BokehOptions::default());
+    let after = (0..3).map(|_| ms(&mut vk)).fold(f64::INFINITY, f64::min);
+    assert!(after > 0.2 * before, "the gather timed {before:.3} ms before a draw and {after:.3} ms after");
+    assert_clean(&mut vk);
+}

@@ -6,6 +6,7 @@
 //! afterwards, for the report.
 
 use super::gather::{MAX_RADIUS, needed_radius};
+use super::buffers::{groups_for, read_rgb};
 use crate::backend::{Backend, CommandTime, push_words, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::RgbImage;
@@ -15,8 +16,6 @@ use dof_shaders::bokeh::{ARGS_WORDS, BOKEH_ARGS, BOKEH_COMBINE, BOKEH_DETECT, BO
 use dof_shaders::gather::{GATHER, GatherParams, TILE};
 use dof_shaders::lens::ThinLens;
 
-const THREADS: u32 = 256;
-const MAX_GROUPS: u32 = 65535;
 
 #[derive(Clone, Debug)]
 pub struct BokehOptions {
@@ -103,7 +102,7 @@ pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &
         backend.write_buffer(color, 0, &colour_words)?;
         backend.write_buffer(depth_buf, 0, &depth_words)?;
         let push = push_words(&params);
-        let groups = [(pixels.div_ceil(THREADS as u64) as u32).clamp(1, MAX_GROUPS), 1, 1];
+        let groups = groups_for(&BOKEH_DETECT, pixels);
         backend.dispatch(&BOKEH_DETECT, groups, &[color, depth_buf, slots, counters], &push, "bokeh/detect")?;
         let scratch = ScanScratch::new(backend, pixels)?;
         let scanned = scratch.record(backend, slots, 0, pixels);
@@ -118,11 +117,9 @@ pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &
         scratch.destroy(backend);
         scanned?;
         let times = times?;
-        let words = backend.read_buffer(out, 0, 3 * pixels)?;
         let detected = backend.read_buffer(counters, COUNTER as u64, 1)?[0] as u64;
-        let data = words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
         Ok(BokehOutput {
-            image: RgbImage { width, height, data },
+            image: read_rgb(backend, out, width, height)?,
             times,
             detected,
             overflow: detected.saturating_sub(options.capacity as u64),

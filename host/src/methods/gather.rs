@@ -1,5 +1,6 @@
 //! The gathering baseline (kernel and its rules in `dof_shaders::gather`) on a single-layer image.
 
+use super::buffers::read_rgb;
 use crate::backend::{Backend, CommandTime, push_words, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::RgbImage;
@@ -69,8 +70,7 @@ pub fn gather(
         let groups = [image.width.div_ceil(TILE), image.height.div_ceil(TILE), 1];
         backend.dispatch(&GATHER, groups, &[color, depth, out], &push_words(&params), "gather")?;
         let times = backend.submit()?;
-        let words = backend.read_buffer(out, 0, 3 * pixels)?;
-        let data = words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
-        Ok(GatherOutput { image: RgbImage { width: image.width, height: image.height, data }, radius, times, buffer_bytes })
+        let image = read_rgb(backend, out, image.width, image.height)?;
+        Ok(GatherOutput { image, radius, times, buffer_bytes })
     })
 }

@@ -17,14 +17,13 @@
 //!   occlusion edges of the layers it is composited with (the "slight alteration" the paper notes).
 //! - **Normalisation**: the composite is divided by its alpha.
 
+use super::buffers::{groups_for, read_rgb, slot_words};
 use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::{LayeredImage, RgbImage};
 use dof_shaders::layered::{LAYERED_BLUR, LAYERED_COMPOSITE, LAYERED_MATTE, LAYERED_RESOLVE, LayeredParams, OVER, SLOT_WORDS, UNDER, matte_front, matte_hidden};
 use dof_shaders::lens::ThinLens;
 
-const THREADS: u32 = 256;
-const MAX_GROUPS: u32 = 65535;
 /// Blurs narrower than this `σ` (px) are left out: their kernel is almost all centre.
 const MIN_SIGMA: f32 = 0.25;
 
@@ -287,10 +286,7 @@ pub fn layered(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens,
         return Err(Error::TooLarge { what: format!("{what} (words)"), size: words, limit: max_words });
     }
     let buffer_bytes = 4 * sizes.iter().map(|s| s.0).sum::<u64>();
-    let mut input = Vec::with_capacity((SLOT_WORDS as u64 * slots) as usize);
-    for f in &image.fragments {
-        input.extend_from_slice(&[f.color[0].to_bits(), f.color[1].to_bits(), f.color[2].to_bits(), f.depth.to_bits()]);
-    }
+    let input = slot_words(image);
     let widest_radius = blurs.iter().map(|b| b.1).max().unwrap_or(0);
     let blur_count = blurs.len() as u32;
     with_buffers(backend, &sizes, |backend, b| {
@@ -303,7 +299,8 @@ pub fn layered(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens,
         backend.fill(far, 0, 4 * pixels, 0, "layered/clear")?;
         backend.fill(near, 0, 4 * pixels, 0, "layered/clear")?;
         let base = LayeredParams { width, height, max_layers: image.max_layers, ..Default::default() };
-        let groups = [(pixels.div_ceil(THREADS as u64) as u32).clamp(1, MAX_GROUPS), 1, 1];
+        // Every layered kernel runs one item a pixel with the same workgroup size.
+        let groups = groups_for(&LAYERED_MATTE, pixels);
         let id = |buf: Buf| -> BufferId {
             match buf {
                 Buf::Layer => layer,
@@ -334,9 +331,7 @@ pub fn layered(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens,
         }
         backend.dispatch(&LAYERED_RESOLVE, groups, &[far, out], &push_words(&base), "layered/composite")?;
         let times = backend.submit()?;
-        let words = backend.read_buffer(out, 0, 3 * pixels)?;
-        let data = words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
-        Ok(LayeredOutput { image: RgbImage { width, height, data }, times, plan: plan.clone(), blurs: blur_count, widest_radius, buffer_bytes })
+        Ok(LayeredOutput { image: read_rgb(backend, out, width, height)?, times, plan: plan.clone(), blurs: blur_count, widest_radius, buffer_bytes })
     })
 }
 

@@ -2,6 +2,7 @@
 //! [`crate::backend::Backend`], so it runs on the CPU and on Vulkan from the same kernels.
 
 pub mod bokeh;
+pub mod buffers;
 pub mod gather;
 pub mod layered;
 pub mod raytrace;

@@ -6,6 +6,7 @@
 //! pixel picking a set by a hash, so neighbouring pixels do not share one noise pattern. The same
 //! buffer goes to both backends, so both trace the same rays.
 
+use super::buffers::{groups_for, read_rgb, slot_words};
 use crate::backend::{Backend, CommandTime, push_words, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::{LayeredImage, RgbImage};
@@ -15,8 +16,6 @@ use dof_shaders::raytrace::{RT_BASE, RT_REDUCE, RT_TRACE, SLOT_WORDS, STATS_WORD
 
 /// Rays per pixel at most.
 pub const MAX_SPP: u32 = 4096;
-const THREADS: u32 = 256;
-const MAX_GROUPS: u32 = 65535;
 
 #[derive(Clone, Debug)]
 pub struct RaytraceOptions {
@@ -103,10 +102,7 @@ pub fn raytrace(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens
         return Err(Error::TooLarge { what: format!("{what} (words)"), size: words, limit: max_words });
     }
     let buffer_bytes = 4 * sizes.iter().map(|s| s.0).sum::<u64>();
-    let mut input = Vec::with_capacity((SLOT_WORDS as u64 * slots) as usize);
-    for f in &image.fragments {
-        input.extend_from_slice(&[f.color[0].to_bits(), f.color[1].to_bits(), f.color[2].to_bits(), f.depth.to_bits()]);
-    }
+    let input = slot_words(image);
     let samples = lens_samples(options.spp, options.patterns, options.seed);
     with_buffers(backend, &sizes, |backend, b| {
         let [input_buf, counts, hier, samples_buf, out, stats] = [b[0], b[1], b[2], b[3], b[4], b[5]];
@@ -114,21 +110,18 @@ pub fn raytrace(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens
         backend.write_buffer(counts, 0, &image.counts)?;
         backend.write_buffer(samples_buf, 0, &samples)?;
         backend.write_buffer(stats, 0, &[0])?;
-        let groups = |n: u64| [(n.div_ceil(THREADS as u64) as u32).clamp(1, MAX_GROUPS), 1, 1];
-        backend.dispatch(&RT_BASE, groups(pixels), &[input_buf, counts, hier], &push_words(&params), "raytrace/hierarchy")?;
+        backend.dispatch(&RT_BASE, groups_for(&RT_BASE, pixels), &[input_buf, counts, hier], &push_words(&params), "raytrace/hierarchy")?;
         for level in 1..levels {
             let p = TraceParams { level, ..params };
             let (w, h) = dof_shaders::raytrace::level_size(&p, level);
-            backend.dispatch(&RT_REDUCE, groups(w as u64 * h as u64), &[hier], &push_words(&p), "raytrace/hierarchy")?;
+            backend.dispatch(&RT_REDUCE, groups_for(&RT_REDUCE, w as u64 * h as u64), &[hier], &push_words(&p), "raytrace/hierarchy")?;
         }
         let tiles = [width.div_ceil(TILE), height.div_ceil(TILE), 1];
         backend.dispatch(&RT_TRACE, tiles, &[input_buf, counts, hier, samples_buf, out, stats], &push_words(&params), "raytrace/trace")?;
         let times = backend.submit()?;
-        let words = backend.read_buffer(out, 0, 3 * pixels)?;
         let missed = backend.read_buffer(stats, 0, 1)?[0] as u64;
-        let data = words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
         Ok(RaytraceOutput {
-            image: RgbImage { width, height, data },
+            image: read_rgb(backend, out, width, height)?,
             times,
             missed_rays: missed,
             rays: pixels * options.spp as u64,

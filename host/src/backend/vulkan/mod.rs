@@ -188,18 +188,8 @@ impl VulkanBackend {
         };
         let pipeline = self.pipelines.get(&self.device.device, kernel)?;
 
-        let infos: Vec<vk::DescriptorBufferInfo> =
-            bound.iter().map(|&buffer| vk::DescriptorBufferInfo::default().buffer(buffer).offset(0).range(vk::WHOLE_SIZE)).collect();
-        let writes: Vec<vk::WriteDescriptorSet> = infos
-            .iter()
-            .enumerate()
-            .map(|(i, info)| {
-                vk::WriteDescriptorSet::default()
-                    .dst_binding(i as u32)
-                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                    .buffer_info(std::slice::from_ref(info))
-            })
-            .collect();
+        let infos = buffer_infos(&bound);
+        let writes = storage_writes(&infos);
         // Exactly the kernel's push constant bytes (rounded to whole words, as Vulkan requires).
         let push_bytes = kernel.push_bytes.div_ceil(4) as usize * 4;
         let push_data: &[u8] = &bytemuck::cast_slice::<u32, u8>(push)[..push_bytes];
@@ -224,6 +214,22 @@ impl VulkanBackend {
             }
         })
     }
+}
+
+/// Descriptor infos binding each buffer whole.
+fn buffer_infos(bound: &[vk::Buffer]) -> Vec<vk::DescriptorBufferInfo> {
+    bound.iter().map(|&buffer| vk::DescriptorBufferInfo::default().buffer(buffer).offset(0).range(vk::WHOLE_SIZE)).collect()
+}
+
+/// Push-descriptor writes of storage buffers at bindings `0..` in order.
+fn storage_writes(infos: &[vk::DescriptorBufferInfo]) -> Vec<vk::WriteDescriptorSet<'_>> {
+    infos
+        .iter()
+        .enumerate()
+        .map(|(i, info)| {
+            vk::WriteDescriptorSet::default().dst_binding(i as u32).descriptor_type(vk::DescriptorType::STORAGE_BUFFER).buffer_info(std::slice::from_ref(info))
+        })
+        .collect()
 }
 
 impl Backend for VulkanBackend {
@@ -402,15 +408,8 @@ impl Backend for VulkanBackend {
         let args_buffer = self.range(args, 0, 4)?;
         let target_buffer = self.range(target, 0, 4 * pixels)?;
         let bound: Vec<vk::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.gpu.buffer)).collect::<Result<_>>()?;
-        let infos: Vec<vk::DescriptorBufferInfo> =
-            bound.iter().map(|&buffer| vk::DescriptorBufferInfo::default().buffer(buffer).offset(0).range(vk::WHOLE_SIZE)).collect();
-        let writes: Vec<vk::WriteDescriptorSet> = infos
-            .iter()
-            .enumerate()
-            .map(|(i, info)| {
-                vk::WriteDescriptorSet::default().dst_binding(i as u32).descriptor_type(vk::DescriptorType::STORAGE_BUFFER).buffer_info(std::slice::from_ref(info))
-            })
-            .collect();
+        let infos = buffer_infos(&bound);
+        let writes = storage_writes(&infos);
         let push_bytes = draw.push_bytes.div_ceil(4) as usize * 4;
         let push_data: Vec<u8> = bytemuck::cast_slice::<u32, u8>(push)[..push_bytes].to_vec();
         let push_descriptor = &self.device.push_descriptor;
@@ -446,7 +445,8 @@ impl Backend for VulkanBackend {
                 d.cmd_end_render_pass(cb);
                 d.cmd_copy_image_to_buffer(cb, image, vk::ImageLayout::TRANSFER_SRC_OPTIMAL, target_buffer, &region);
             }
-        })
+        })?;
+        self.flush()
     }
 
     fn submit(&mut self) -> Result<Vec<CommandTime>> {

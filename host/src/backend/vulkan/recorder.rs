@@ -10,13 +10,15 @@ use ash::vk;
 /// Timed commands per command buffer; past this the recorded work is submitted and a new command
 /// buffer begun, transparently.
 pub(super) const MAX_TIMED: u32 = 2048;
+/// Timestamp queries per timed command: before, a second before (see `record`), after.
+const QUERIES: u32 = 3;
 
 pub(super) struct Recorder {
     pool: vk::CommandPool,
     main: vk::CommandBuffer,
     once: vk::CommandBuffer,
     fence: vk::Fence,
-    /// Two queries per timed command; null where the queue has no timestamps.
+    /// Three queries per timed command (see `record`); null where the queue has no timestamps.
     queries: vk::QueryPool,
     timestamp_mask: u64,
     period_ns: f64,
@@ -61,7 +63,7 @@ impl Recorder {
             self.once = buffers.get(1).copied().unwrap_or_default();
             self.fence = d.create_fence(&vk::FenceCreateInfo::default(), None).vk("vkCreateFence")?;
             if timestamp_bits > 0 {
-                let info = vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2 * MAX_TIMED);
+                let info = vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(QUERIES * MAX_TIMED);
                 self.queries = d.create_query_pool(&info, None).vk("vkCreateQueryPool")?;
             }
         }
@@ -94,24 +96,29 @@ impl Recorder {
             unsafe {
                 d.begin_command_buffer(self.main, &begin).vk("vkBeginCommandBuffer")?;
                 if self.queries != vk::QueryPool::null() {
-                    d.cmd_reset_query_pool(self.main, self.queries, 0, 2 * MAX_TIMED);
+                    d.cmd_reset_query_pool(self.main, self.queries, 0, QUERIES * MAX_TIMED);
                 }
             }
             self.recording = true;
         }
         let cb = self.main;
-        let query = 2 * self.timed.len() as u32;
+        let query = QUERIES * self.timed.len() as u32;
         let timestamps = timing.is_some() && self.queries != vk::QueryPool::null();
         // SAFETY: `cb` is recording; the queries were reset at begin and each is written once.
         unsafe {
             full_barrier(d, cb);
-            // Bottom of pipe: the first stamp waits for all earlier work, the second for this command.
+            // Bottom of pipe: the first stamp waits for all earlier work, the last for this command.
+            // The middle one is never read: once a framebuffer has been bound, lavapipe takes a
+            // stamp only when its binned scene is next flushed, and it flushes on the next stamp;
+            // without it the first stamp would be taken after the command, and every stage would
+            // time as zero after the first draw.
             if timestamps {
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.queries, query);
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.queries, query + 1);
             }
             record(d, cb);
             if timestamps {
-                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.queries, query + 1);
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.queries, query + 2);
             }
         }
         if let Some((label, kernel)) = timing {
@@ -132,7 +139,7 @@ impl Recorder {
         unsafe { d.end_command_buffer(self.main) }.vk("vkEndCommandBuffer")?;
         self.submit_and_wait(ctx, self.main)?;
 
-        let mut stamps = vec![0u64; 2 * timed.len()];
+        let mut stamps = vec![0u64; QUERIES as usize * timed.len()];
         if self.queries != vk::QueryPool::null() && !timed.is_empty() {
             // SAFETY: the submission finished, so every query in range has been written.
             unsafe {
@@ -144,8 +151,8 @@ impl Recorder {
             let ms = if self.queries == vk::QueryPool::null() {
                 f64::NAN
             } else {
-                let ticks = (stamps[2 * i + 1] & self.timestamp_mask).wrapping_sub(stamps[2 * i] & self.timestamp_mask)
-                    & self.timestamp_mask;
+                let (first, last) = (stamps[QUERIES as usize * i], stamps[QUERIES as usize * i + 2]);
+                let ticks = (last & self.timestamp_mask).wrapping_sub(first & self.timestamp_mask) & self.timestamp_mask;
                 ticks as f64 * self.period_ns / 1e6
             };
             self.done.push(CommandTime { label, kernel, ms });

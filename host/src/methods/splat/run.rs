@@ -7,6 +7,7 @@
 use super::plan::{SplatOptions, plan};
 use super::report::SplatReport;
 use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
+use crate::methods::buffers::{groups_for, read_rgb, slot_words};
 use crate::error::{Error, Result};
 use crate::layers::{LayeredImage, RgbImage};
 use crate::ops::scan::ScanScratch;
@@ -16,7 +17,7 @@ use dof_shaders::splat::accumulate::ACCUMULATE;
 use dof_shaders::splat::bin::{ALLOC, BIN, COMPACT, TILE_COUNT};
 use dof_shaders::splat::merge::MERGE;
 use dof_shaders::splat::pack::PACK;
-use dof_shaders::splat::{FLAG_UMBRA_MERGE, MAX_GROUPS, SplatParams, THREADS, stats};
+use dof_shaders::splat::{FLAG_UMBRA_MERGE, SplatParams, stats};
 
 /// Every stage's buffers, read back when `keep_intermediates` is set.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -40,7 +41,7 @@ pub struct SplatOutput {
 }
 
 fn groups_1d(n: u32) -> [u32; 3] {
-    [n.div_ceil(THREADS).clamp(1, MAX_GROUPS), 1, 1]
+    groups_for(&PACK, n as u64)
 }
 
 /// Only the words inside the lists, so buffers' unused tails do not enter comparisons.
@@ -57,10 +58,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
     if 4 * slots > max_words {
         return Err(Error::TooLarge { what: "fragment slots of the input (words)".into(), size: 4 * slots, limit: max_words });
     }
-    let mut input = Vec::with_capacity(4 * slots as usize);
-    for f in &image.fragments {
-        input.extend_from_slice(&[f.color[0].to_bits(), f.color[1].to_bits(), f.color[2].to_bits(), f.depth.to_bits()]);
-    }
+    let input = slot_words(image);
     let tiles = plan.tiles() as u64;
     let mut sizes: Vec<(u64, String)> = vec![
         (4 * slots, "splat/input".into()),
@@ -203,8 +201,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
         })?;
         stages.extend(second);
 
-        let words = backend.read_buffer(out, 0, 3 * pixels)?;
-        let data = words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
+        let image_out = read_rgb(backend, out, plan.width, plan.height)?;
         let counters = backend.read_buffer(st, 0, stats::WORDS as u64)?;
         let seg = backend.read_buffer(segments, 0, 2 * tiles)?;
         let list_lengths: Vec<u32> = seg.chunks_exact(2).map(|s| s[1]).collect();
@@ -234,6 +231,6 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
             buffer_bytes: first_bytes + 16 * total.max(1),
             plan: Some(plan.clone()),
         };
-        Ok(SplatOutput { image: RgbImage { width: plan.width, height: plan.height, data }, report, stages, intermediates: inter })
+        Ok(SplatOutput { image: image_out, report, stages, intermediates: inter })
     })
 }

@@ -12,6 +12,7 @@
 //! - [`stress`]: the stiff and extreme cases, each with its expectation, on every method (`dof stress`);
 //! - [`shaders`]: the embedded SPIR-V modules.
 
+pub mod aperture;
 pub mod backend;
 pub mod error;
 pub mod eval;

@@ -13,8 +13,14 @@
 //!
 //! The normals are passed in as the first one and the rotation between neighbours, and generated
 //! by repeated rotation, so kernels need no trigonometry and both backends compute the same values.
+//!
+//! Any other shape (a star, a user's image) is a *mask*: `mask` x `mask` coverage texels in a buffer
+//! spanning the square `[-1, 1]²` around the centre, sampled bilinearly at the offset over the CoC
+//! radius. Masks are zero outside the unit disc, so binning by the circle stays conservative here
+//! too, and `area` is the mask's integral over the square.
 
-use crate::math::sqrt;
+use crate::exec::Load;
+use crate::math::{floor, sqrt};
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
@@ -30,18 +36,39 @@ pub struct Aperture {
     pub inv_inradius: f32,
     /// Area of the unit shape (π for the circle): the weight integral of large fragments.
     pub area: f32,
+    /// Side of the coverage mask in texels; 0 for the analytic shapes.
+    pub mask: u32,
 }
 
 pub const PI: f32 = 3.141_592_7;
 
 impl Aperture {
     pub const fn circle() -> Self {
-        Aperture { blades: 0, curvature: 1.0, normal: [1.0, 0.0], step: [1.0, 0.0], inv_inradius: 1.0, area: PI }
+        Aperture { blades: 0, curvature: 1.0, normal: [1.0, 0.0], step: [1.0, 0.0], inv_inradius: 1.0, area: PI, mask: 0 }
     }
 
     #[inline]
     pub fn is_circle(&self) -> bool {
-        self.blades == 0
+        self.blades == 0 && self.mask == 0
+    }
+
+    /// Mask coverage at `u` (offset over the CoC radius, the square `[-1, 1]²`), bilinear between
+    /// texel centres, 0 outside the square.
+    #[inline]
+    pub fn coverage<L: Load>(&self, mask: &L, u: [f32; 2]) -> f32 {
+        let n = self.mask as f32;
+        let (fx, fy) = ((u[0] + 1.0) * 0.5 * n - 0.5, (u[1] + 1.0) * 0.5 * n - 0.5);
+        if !(fx > -1.0 && fy > -1.0 && fx < n && fy < n) {
+            return 0.0;
+        }
+        let (x0, y0) = (floor(fx), floor(fy));
+        let (tx, ty) = (fx - x0, fy - y0);
+        let texel = |x: f32, y: f32| -> f32 {
+            if x < 0.0 || y < 0.0 || x >= n || y >= n { 0.0 } else { f32::from_bits(mask.load_word(y as u32 * self.mask + x as u32)) }
+        };
+        let top = texel(x0, y0) * (1.0 - tx) + texel(x0 + 1.0, y0) * tx;
+        let bottom = texel(x0, y0 + 1.0) * (1.0 - tx) + texel(x0 + 1.0, y0 + 1.0) * tx;
+        top * (1.0 - ty) + bottom * ty
     }
 
     /// The gauge `N(d)` (see the module notes).
@@ -81,6 +108,7 @@ pub fn blades(blades: u32, rotation: f32, curvature: f32) -> Option<Aperture> {
         step: [step.cos() as f32, step.sin() as f32],
         inv_inradius: (1.0 / (0.5 * step).cos()) as f32,
         area: 0.0,
+        mask: 0,
     };
     // Area of {N <= 1}: half the integral of R(φ)² over the angle, R = 1 / N(unit vector).
     let samples = 4096;
@@ -92,6 +120,21 @@ pub fn blades(blades: u32, rotation: f32, curvature: f32) -> Option<Aperture> {
     }
     a.area = area as f32;
     Some(a)
+}
+
+/// Host side: the aperture of a `side` x `side` coverage mask (row-major, y down, values in
+/// `[0, 1]`, zero outside the inscribed circle); `None` for bad values.
+#[cfg(not(target_arch = "spirv"))]
+pub fn masked(side: u32, texels: &[f32]) -> Option<Aperture> {
+    if !(2..=512).contains(&side) || texels.len() != (side * side) as usize || !texels.iter().all(|v| (0.0..=1.0).contains(v)) {
+        return None;
+    }
+    let texel_area = (2.0 / side as f64).powi(2);
+    let area = texels.iter().map(|&v| v as f64).sum::<f64>() * texel_area;
+    if !(area > 0.0) {
+        return None;
+    }
+    Some(Aperture { blades: 0, curvature: 0.0, normal: [1.0, 0.0], step: [1.0, 0.0], inv_inradius: 1.0, area: area as f32, mask: side })
 }
 
 #[cfg(test)]

@@ -20,11 +20,13 @@
 //!    pixel centre.
 //! 5. [`BOKEH_COMBINE`]: blur plus sprites.
 //!
+//! The draw binds the sprites and the aperture mask (one word when the shape is analytic).
+//!
 //! Sprite layout (8 words): centre x, y (pixels), support radius `s` (CoC radius + 1/2), mirror
 //! (−1 in front of the focus plane), colour r, g, b already divided by the shape's weight sum, 0.
 
 use crate::aperture::Aperture;
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::lens::{ThinLens, is_finite, is_positive};
 use crate::splat::fragment::{shaped_weight, weight_sum};
 use crate::wg::for_each_item;
@@ -77,9 +79,9 @@ fn usable(c: [f32; 3]) -> bool {
 /// What sprite `i` adds at offset `d` from its centre (pixel centre minus sprite centre): the
 /// splatting weight of its shape, times its pre-normalised colour.
 #[inline]
-pub fn sprite_weight(d: [f32; 2], s: f32, mirror: f32, ap: &Aperture) -> f32 {
+pub fn sprite_weight<L: Load>(d: [f32; 2], s: f32, mirror: f32, ap: &Aperture, mask: &L) -> f32 {
     let d2 = d[0] * d[0] + d[1] * d[1];
-    if d2 < s * s { shaped_weight(d, d2, s, 1.0, ap, mirror) } else { 0.0 }
+    if d2 < s * s { shaped_weight(d, d2, s, 1.0, ap, mirror, mask) } else { 0.0 }
 }
 
 /// The detection rule at pixel `pi`: for a bright pixel, its colour, the neighbourhood mean, its CoC
@@ -131,7 +133,7 @@ pub fn detect_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, color: M, depth
 
 /// Sprites into their slots (the scanned flags, so the order is the image's, the same every run),
 /// and the blur's input: the neighbourhood mean where a sprite took the excess, else the pixel.
-pub fn emit_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, color: M, depth: M, slots: M, mut sprites: M, mut rest: M) {
+pub fn emit_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, color: M, depth: M, slots: M, mut sprites: M, mut rest: M, mask: M) {
     for_each_item(g, p.width * p.height, |pi| {
         let mut keep = colour(&color, pi);
         if let Some((c, mean, r, z)) = bright(p, &color, &depth, pi) {
@@ -140,7 +142,7 @@ pub fn emit_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, color: M, depth: 
                 let centre = [(pi % p.width) as f32 + 0.5, (pi / p.width) as f32 + 0.5];
                 let s = r + 0.5;
                 let mirror = if z < p.lens.focus_distance { -1.0 } else { 1.0 };
-                let norm = 1.0 / weight_sum(centre, s, 1.0, &p.aperture, mirror);
+                let norm = 1.0 / weight_sum(centre, s, 1.0, &p.aperture, mirror, &mask);
                 let words = [centre[0], centre[1], s, mirror, (c[0] - mean[0]) * norm, (c[1] - mean[1]) * norm, (c[2] - mean[2]) * norm, 0.0];
                 let mut k = 0;
                 while k < SPRITE_WORDS {
@@ -171,7 +173,7 @@ pub fn args_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, mut counters: M) 
 
 /// The CPU backend's draw: every pixel centre of a 16x16 tile against every sprite drawn (RGBA, 4
 /// words a pixel, added to what `target` holds, as additive blending does).
-pub fn splat_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, sprites: M, counters: M, mut target: M) {
+pub fn splat_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, sprites: M, mask: M, counters: M, mut target: M) {
     let [wx, wy, _] = g.workgroup_id();
     let n = counters.load(1);
     g.each(|lid| {
@@ -186,7 +188,7 @@ pub fn splat_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, sprites: M, coun
         while i < n {
             let at = i * SPRITE_WORDS;
             let f = |k: u32| f32::from_bits(sprites.load(at + k));
-            let w = sprite_weight([x as f32 + 0.5 - f(0), y as f32 + 0.5 - f(1)], f(2), f(3), &p.aperture);
+            let w = sprite_weight([x as f32 + 0.5 - f(0), y as f32 + 0.5 - f(1)], f(2), f(3), &p.aperture, &mask);
             if w > 0.0 {
                 acc[0] += w * f(4);
                 acc[1] += w * f(5);
@@ -218,7 +220,7 @@ kernel!(
 );
 kernel!(
     /// Sprites into their scanned slots, and the blur's input.
-    BOKEH_EMIT = bokeh_emit [256] (BokehParams) { color, depth, slots, sprites, rest } => emit_pass
+    BOKEH_EMIT = bokeh_emit [256] (BokehParams) { color, depth, slots, sprites, rest, mask } => emit_pass
 );
 kernel!(
     /// The indirect draw command from the detection counter.
@@ -226,7 +228,7 @@ kernel!(
 );
 kernel!(
     /// The sprites splatted by a compute kernel: the draw's CPU fallback.
-    BOKEH_SPLAT = bokeh_splat [256] (BokehParams) { sprites, counters, target } => splat_pass
+    BOKEH_SPLAT = bokeh_splat [256] (BokehParams) { sprites, mask, counters, target } => splat_pass
 );
 kernel!(
     /// Blur plus sprites.
@@ -272,12 +274,13 @@ pub fn bokeh_vs(
 #[spirv_std::spirv(fragment)]
 pub fn bokeh_fs(
     #[spirv(push_constant)] p: &BokehParams,
+    #[spirv(descriptor_set = 0, binding = 1, storage_buffer)] mask: &[u32],
     offset: spirv_std::glam::Vec2,
     #[spirv(flat)] colour: spirv_std::glam::Vec4,
     #[spirv(flat)] shape: spirv_std::glam::Vec2,
     output: &mut spirv_std::glam::Vec4,
 ) {
-    let w = sprite_weight([offset.x, offset.y], shape.x, shape.y, &p.aperture);
+    let w = sprite_weight([offset.x, offset.y], shape.x, shape.y, &p.aperture, &crate::exec::GpuRead(mask));
     *output = spirv_std::glam::Vec4::new(w * colour.x, w * colour.y, w * colour.z, 0.0);
 }
 
@@ -288,7 +291,7 @@ pub fn bokeh_fs(
 pub const BOKEH_DRAW: crate::DrawDesc = crate::DrawDesc {
     vertex: "bokeh::bokeh_vs",
     fragment: "bokeh::bokeh_fs",
-    bindings: 1,
+    bindings: 2,
     push_bytes: core::mem::size_of::<BokehParams>() as u32,
     vertices: 6,
     fallback: &BOKEH_SPLAT,

@@ -40,6 +40,19 @@ pub trait Mem {
     }
 }
 
+/// Read-only access to words: what a read-only binding (a graphics stage's, which may not write
+/// storage buffers without a device feature) offers; every [`Mem`] is one.
+pub trait Load {
+    fn load_word(&self, i: u32) -> u32;
+}
+
+impl<M: Mem> Load for M {
+    #[inline]
+    fn load_word(&self, i: u32) -> u32 {
+        self.load(i)
+    }
+}
+
 /// Reads the push constants of a kernel from `u32` words (the CPU side of `#[spirv(push_constant)]`).
 #[cfg(not(target_arch = "spirv"))]
 pub fn params<P: bytemuck::Pod>(words: &[u32]) -> P {
@@ -174,6 +187,16 @@ mod gpu {
 
     pub struct GpuMem<'a>(pub &'a mut [u32]);
 
+    /// A read-only storage buffer (declared `&[u32]`, so rust-gpu marks it non-writable).
+    pub struct GpuRead<'a>(pub &'a [u32]);
+
+    impl super::Load for GpuRead<'_> {
+        #[inline]
+        fn load_word(&self, i: u32) -> u32 {
+            self.0[i as usize]
+        }
+    }
+
     impl Mem for GpuMem<'_> {
         #[inline]
         fn len(&self) -> u32 {
@@ -208,4 +231,4 @@ mod gpu {
     }
 }
 #[cfg(target_arch = "spirv")]
-pub use gpu::{GpuGroup, GpuMem};
+pub use gpu::{GpuGroup, GpuMem, GpuRead};

@@ -5,7 +5,7 @@ use dof::backend::{Backend, CpuBackend};
 use dof::layers::RgbImage;
 use dof::methods::bokeh::{BokehOptions, BokehOutput, bokeh};
 use dof::methods::gather::gather;
-use dof::methods::splat::parse_aperture;
+use dof::aperture::parse_aperture;
 use dof::scene::{LayerOptions, builtin, raycast_layers};
 use dof::stress::test_lens;
 use dof::Error;
@@ -33,7 +33,7 @@ fn total(img: &RgbImage) -> f64 {
 fn the_sprite_draw_on_vulkan_matches_its_cpu_fallback() {
     let Some(mut vk) = vulkan() else { return };
     let (img, depth, lens) = highlights();
-    for shape in ["circle", "blades:6:10", "blades:5:0:0.3"] {
+    for shape in ["circle", "blades:6:10", "blades:5:0:0.3", "star:6:0:0.4"] {
         let options = BokehOptions { aperture: parse_aperture(shape).unwrap(), ..Default::default() };
         let cpu = run(&mut CpuBackend::new(), &img, &depth, &lens, &options);
         let gpu = run(&mut vk, &img, &depth, &lens, &options);

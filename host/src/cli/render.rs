@@ -11,7 +11,8 @@ use dof::layers::LayeredImage;
 use dof::methods::bokeh::{BokehOptions, bokeh};
 use dof::methods::layered::{LayeredOptions, layered};
 use dof::methods::raytrace::{RaytraceOptions, raytrace};
-use dof::methods::splat::{Merge, SplatOptions, parse_aperture, splat};
+use dof::aperture::parse_aperture;
+use dof::methods::splat::{Merge, SplatOptions, splat};
 use dof_shaders::lens::ThinLens;
 use std::path::{Path, PathBuf};
 
@@ -82,7 +83,8 @@ pub struct RenderArgs {
     /// converged) or rays of `raytrace` (default 16).
     #[arg(long, visible_alias = "spp")]
     samples: Option<u32>,
-    /// Splatting: the aperture shape, `circle` or `blades:N[:ROTATION_DEGREES[:CURVATURE]]`.
+    /// Splatting and bokeh sprites: the aperture shape, `circle`, `blades:N[:ROTATION_DEGREES[:CURVATURE]]`,
+    /// `star:N[:ROTATION_DEGREES[:INNER]]` or a PNG (its luminance as coverage; see `dof::aperture`).
     #[arg(long, default_value = "circle")]
     aperture: String,
     /// Bokeh sprites: luminance above the 5x5 neighbourhood's mean that makes a sprite.

@@ -10,7 +10,7 @@ use super::buffers::{groups_for, read_rgb};
 use crate::backend::{Backend, CommandTime, push_words, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::RgbImage;
-use dof_shaders::aperture::Aperture;
+use crate::aperture::ApertureShape;
 use crate::ops::scan::ScanScratch;
 use dof_shaders::bokeh::{ARGS_WORDS, BOKEH_ARGS, BOKEH_COMBINE, BOKEH_DETECT, BOKEH_DRAW, BOKEH_EMIT, BokehParams, COUNTER, SPRITE_WORDS};
 use dof_shaders::gather::{GATHER, GatherParams, TILE};
@@ -28,12 +28,12 @@ pub struct BokehOptions {
     pub capacity: u32,
     /// Largest sprite CoC radius (px; default 256).
     pub max_radius: f32,
-    pub aperture: Aperture,
+    pub aperture: ApertureShape,
 }
 
 impl Default for BokehOptions {
     fn default() -> Self {
-        BokehOptions { lum_threshold: 1.0, coc_threshold: 2.0, capacity: 4096, max_radius: 256.0, aperture: Aperture::circle() }
+        BokehOptions { lum_threshold: 1.0, coc_threshold: 2.0, capacity: 4096, max_radius: 256.0, aperture: ApertureShape::circle() }
     }
 }
 
@@ -68,7 +68,9 @@ pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &
         return Err(Error::InvalidArgument(format!("the sprite capacity must be 1 to 1048576, got {}", options.capacity)));
     }
     let blur_radius = needed_radius(lens, depth, MAX_RADIUS);
+    let mask = options.aperture.mask_words();
     let sizes = [
+        (mask.len() as u64, "bokeh/aperture-mask"),
         (pixels, "bokeh/slots"),
         (3 * pixels, "bokeh/color"),
         (pixels, "bokeh/depth"),
@@ -94,11 +96,13 @@ pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &
         coc_threshold: options.coc_threshold,
         max_radius: options.max_radius,
         lens: *lens,
-        aperture: options.aperture,
+        aperture: options.aperture.kernel,
         ..Default::default()
     };
     with_buffers(backend, &sizes, |backend, b| {
-        let [slots, color, depth_buf, rest, sprites, counters, blur, sprite_image, out] = [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], b[8]];
+        let [mask_buf, slots, color, depth_buf, rest, sprites, counters, blur, sprite_image, out] =
+            [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], b[8], b[9]];
+        backend.write_buffer(mask_buf, 0, &mask)?;
         backend.write_buffer(color, 0, &colour_words)?;
         backend.write_buffer(depth_buf, 0, &depth_words)?;
         let push = push_words(&params);
@@ -106,12 +110,12 @@ pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &
         backend.dispatch(&BOKEH_DETECT, groups, &[color, depth_buf, slots, counters], &push, "bokeh/detect")?;
         let scratch = ScanScratch::new(backend, pixels)?;
         let scanned = scratch.record(backend, slots, 0, pixels);
-        backend.dispatch(&BOKEH_EMIT, groups, &[color, depth_buf, slots, sprites, rest], &push, "bokeh/detect")?;
+        backend.dispatch(&BOKEH_EMIT, groups, &[color, depth_buf, slots, sprites, rest, mask_buf], &push, "bokeh/detect")?;
         let gather_params = GatherParams { width, height, max_radius: blur_radius, _pad: 0, lens: *lens };
         let tiles = [width.div_ceil(TILE), height.div_ceil(TILE), 1];
         backend.dispatch(&GATHER, tiles, &[rest, depth_buf, blur], &push_words(&gather_params), "gather")?;
         backend.dispatch(&BOKEH_ARGS, [1, 1, 1], &[counters], &push, "bokeh/draw")?;
-        backend.draw_indirect(&BOKEH_DRAW, counters, &[sprites], sprite_image, [width, height], &push, "bokeh/draw")?;
+        backend.draw_indirect(&BOKEH_DRAW, counters, &[sprites, mask_buf], sprite_image, [width, height], &push, "bokeh/draw")?;
         backend.dispatch(&BOKEH_COMBINE, groups, &[blur, sprite_image, out], &push, "bokeh/draw")?;
         let times = backend.submit();
         scratch.destroy(backend);

@@ -84,6 +84,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
     copy: M,
     mut out: M,
     mut st: M,
+    mask: M,
 ) {
     let [wx, wy, _] = g.workgroup_id();
     let sub = p.tile / p.block;
@@ -140,7 +141,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
                 set(sh, CH_Y, lid, c[1]);
                 set(sh, CH_S, lid, r);
                 let mirror = if f.depth < p.lens.focus_distance { -1.0 } else { 1.0 };
-                set(sh, CH_A, lid, f.footprint() / weight_sum(c, r, f.rim(), &p.aperture, mirror));
+                set(sh, CH_A, lid, f.footprint() / weight_sum(c, r, f.rim(), &p.aperture, mirror, &mask));
                 set(sh, CH_W, lid, f.rim());
                 set(sh, CH_M, lid, mirror);
                 set(sh, CH_R, lid, f.color[0]);
@@ -162,7 +163,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
                     // The pixel's own sharp front lies in front of the rest of the list.
                     live = false;
                 } else if d2 < s * s {
-                    let a = get(sh, CH_A, k) * shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k));
+                    let a = get(sh, CH_A, k) * shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask);
                     let rest = 1.0 - get(sh, USED, lid);
                     blend(sh, lid, if a < rest { a } else { rest }, [get(sh, CH_R, k), get(sh, CH_G, k), get(sh, CH_B, k)]);
                     live = get(sh, USED, lid) < 1.0 - SATURATED;
@@ -205,5 +206,5 @@ pub fn accumulate_pass<G: Group, M: Mem>(
 kernel!(
     /// Front-to-back accumulation of the sorted tile lists (or copy-through) into `out` (3 words a pixel).
     ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 18 * 256]
-        { sharp, dense, values, segments, copy, out, st } => accumulate_pass
+        { sharp, dense, values, segments, copy, out, st, mask } => accumulate_pass
 );

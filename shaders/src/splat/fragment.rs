@@ -21,7 +21,7 @@
 //! in focus.
 
 use crate::aperture::Aperture;
-use crate::exec::Mem;
+use crate::exec::{Load, Mem};
 use crate::half::{HALF_MAX, f16_to_f32, f32_to_f16};
 use crate::lens::ThinLens;
 use crate::math::{ceil, floor, sqrt};
@@ -173,25 +173,36 @@ pub fn weight(d2: f32, s: f32, w: f32) -> f32 {
 }
 
 /// [`weight`] for the aperture shape `ap` at offset `d` (pixel centre minus fragment centre, `d2`
-/// its squared length): the circle's fast path, or the shape's gauge in place of the distance, the
-/// offset point-reflected (`mirror = −1`) for a foreground fragment.
+/// its squared length): the circle's fast path; the shape's gauge in place of the distance; or a
+/// mask's coverage at the offset over the CoC radius `s − w/2`. The offset is point-reflected
+/// (`mirror = −1`) for a foreground fragment.
 #[inline]
-pub fn shaped_weight(d: [f32; 2], d2: f32, s: f32, w: f32, ap: &Aperture, mirror: f32) -> f32 {
+pub fn shaped_weight<L: Load>(d: [f32; 2], d2: f32, s: f32, w: f32, ap: &Aperture, mirror: f32, mask: &L) -> f32 {
     if ap.is_circle() {
         return weight(d2, s, w);
     }
-    let v = (s - ap.gauge([mirror * d[0], mirror * d[1]])) / w;
+    let d = [mirror * d[0], mirror * d[1]];
+    if ap.mask > 0 {
+        let r = s - 0.5 * w;
+        return if r > 0.0 { ap.coverage(mask, [d[0] / r, d[1] / r]) } else { 0.0 };
+    }
+    let v = (s - ap.gauge(d)) / w;
     if v > 0.0 { if v < 1.0 { v } else { 1.0 } } else { 0.0 }
 }
 
 /// The sum of [`shaped_weight`] over every pixel centre (of an unbounded grid) around `c`: what a
 /// fragment's weights are divided by, so that it spreads exactly its footprint's energy. Summed
-/// exactly for small supports; from [`EXACT_SUM_LIMIT`] beyond the rim on, the integral
-/// `A/π · (π(s − w)² + π(s − w)w + πw²/3)` with `A` the unit shape's area (π for the circle), which
-/// the lattice sum matches to well under a percent there.
+/// exactly for small supports; from [`EXACT_SUM_LIMIT`] beyond the rim on, the integral: for the
+/// analytic shapes `A/π · (π(s − w)² + π(s − w)w + πw²/3)` with `A` the unit shape's area (π for
+/// the circle), for a mask `A·r²` with `r = s − w/2`; the lattice sum matches either to well under
+/// a percent there.
 #[inline]
-pub fn weight_sum(c: [f32; 2], s: f32, w: f32, ap: &Aperture, mirror: f32) -> f32 {
+pub fn weight_sum<L: Load>(c: [f32; 2], s: f32, w: f32, ap: &Aperture, mirror: f32, mask: &L) -> f32 {
     if s >= EXACT_SUM_LIMIT + w {
+        if ap.mask > 0 {
+            let r = s - 0.5 * w;
+            return ap.area * r * r;
+        }
         let inner = s - w;
         return ap.area * (inner * inner + inner * w + w * w / 3.0);
     }
@@ -204,7 +215,7 @@ pub fn weight_sum(c: [f32; 2], s: f32, w: f32, ap: &Aperture, mirror: f32) -> f3
         let x_end = floor(c[0] + s - 0.5);
         while x <= x_end {
             let dx = x + 0.5 - c[0];
-            sum += shaped_weight([dx, dy], dx * dx + dy * dy, s, w, ap, mirror);
+            sum += shaped_weight([dx, dy], dx * dx + dy * dy, s, w, ap, mirror, mask);
             x += 1.0;
         }
         y += 1.0;

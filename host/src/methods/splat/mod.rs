@@ -9,6 +9,6 @@ mod plan;
 mod report;
 mod run;
 
-pub use plan::{Merge, Plan, SplatOptions, parse_aperture};
+pub use plan::{Merge, Plan, SplatOptions};
 pub use report::SplatReport;
 pub use run::{Intermediates, SplatOutput, splat};

@@ -2,7 +2,7 @@
 
 use crate::error::{Error, Result};
 use crate::layers::LayeredImage;
-use dof_shaders::aperture::Aperture;
+use crate::aperture::ApertureShape;
 use dof_shaders::lens::ThinLens;
 use dof_shaders::half::HALF_MAX;
 use dof_shaders::splat::fragment::{MAX_EDGE, extent};
@@ -61,8 +61,8 @@ pub struct SplatOptions {
     pub merge_color_tol: f32,
     /// Drop fragments inside a merged fragment's umbra (§6.2).
     pub umbra_merge: bool,
-    /// The aperture shape (default the circle; see [`parse_aperture`]).
-    pub aperture: Aperture,
+    /// The aperture shape (default the circle; see [`crate::aperture`]).
+    pub aperture: ApertureShape,
     /// Read back every stage's buffers (for tests and debugging).
     pub keep_intermediates: bool,
 }
@@ -77,29 +77,10 @@ impl Default for SplatOptions {
             merge_depth_ratio: 1.1,
             merge_color_tol: 0.25,
             umbra_merge: true,
-            aperture: Aperture::circle(),
+            aperture: ApertureShape::circle(),
             keep_intermediates: false,
         }
     }
-}
-
-/// Parses an aperture: `circle`, or `blades:N[:ROTATION_DEGREES[:CURVATURE]]` (3 to 64 blades,
-/// curvature 0 for straight blades to 1 for the circle).
-pub fn parse_aperture(text: &str) -> Result<Aperture> {
-    let bad = || Error::InvalidArgument(format!(
-        "unknown aperture `{text}`: use `circle` or `blades:N[:ROTATION_DEGREES[:CURVATURE]]` (3 to 64 blades, curvature 0 to 1)"
-    ));
-    if text == "circle" {
-        return Ok(Aperture::circle());
-    }
-    let parts: Vec<&str> = text.strip_prefix("blades:").ok_or_else(bad)?.split(':').collect();
-    if parts.len() > 3 {
-        return Err(bad());
-    }
-    let n: u32 = parts[0].parse().map_err(|_| bad())?;
-    let rotation: f32 = parts.get(1).map_or(Ok(0.0), |v| v.parse()).map_err(|_| bad())?;
-    let curvature: f32 = parts.get(2).map_or(Ok(0.0), |v| v.parse()).map_err(|_| bad())?;
-    dof_shaders::aperture::blades(n, rotation.to_radians(), curvature).ok_or_else(bad)
 }
 
 /// The frame's plan.

@@ -59,6 +59,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
         return Err(Error::TooLarge { what: "fragment slots of the input (words)".into(), size: 4 * slots, limit: max_words });
     }
     let input = slot_words(image);
+    let mask = options.aperture.mask_words();
     let tiles = plan.tiles() as u64;
     let mut sizes: Vec<(u64, String)> = vec![
         (4 * slots, "splat/input".into()),
@@ -73,6 +74,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
         (4 * slots, "splat/dense".into()),
         (4 * pixels, "splat/sharp".into()),
         (2 * tiles, "splat/segments".into()),
+        (mask.len() as u64, "splat/aperture-mask".into()),
     ];
     for step in 0..=plan.merge_steps {
         let (_, cap, cx, cy) = plan.cells(step);
@@ -86,12 +88,13 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
     let first_bytes: u64 = sizes.iter().map(|s| 4 * s.0).sum();
 
     with_buffers(backend, &size_refs, |backend, b| {
-        let [input_buf, counts_buf, st, out, tile_count, tile_base, tile_radius, capacity, copy, dense, sharp, segments] =
-            [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], b[8], b[9], b[10], b[11]];
-        let cells: Vec<(BufferId, BufferId)> = (0..=plan.merge_steps as usize).map(|s| (b[12 + 2 * s], b[13 + 2 * s])).collect();
+        let [input_buf, counts_buf, st, out, tile_count, tile_base, tile_radius, capacity, copy, dense, sharp, segments, mask_buf] =
+            [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], b[8], b[9], b[10], b[11], b[12]];
+        let cells: Vec<(BufferId, BufferId)> = (0..=plan.merge_steps as usize).map(|s| (b[13 + 2 * s], b[14 + 2 * s])).collect();
         let cell_off = b[b.len() - 1];
         backend.write_buffer(input_buf, 0, &input)?;
         backend.write_buffer(counts_buf, 0, &image.counts)?;
+        backend.write_buffer(mask_buf, 0, &mask)?;
 
         let params = |step: u32| {
             let (cell, cell_cap, cells_x, cells_y) = plan.cells(step);
@@ -115,7 +118,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
                 merge_color_tol: options.merge_color_tol,
                 color_scale: plan.color_scale,
                 lens: *lens,
-                aperture: options.aperture,
+                aperture: options.aperture.kernel,
             }
         };
         let last = plan.merge_steps;
@@ -183,7 +186,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
             }
             let sort = SegmentedSort::new(backend, tiles as u32, total.max(1) as u32, max_list)?;
             let recorded = sort.record(backend, segments, tiles as u32, keys, values, keys_out, values_out).and_then(|_| {
-                let acc_bufs = [sharp, dense, values_out, segments, copy, out, st];
+                let acc_bufs = [sharp, dense, values_out, segments, copy, out, st, mask_buf];
                 let sub = plan.tile / plan.block;
                 let grid = [plan.tiles_x * sub, plan.tiles_y * sub, 1];
                 backend.dispatch(&ACCUMULATE, grid, &acc_bufs, &fin, "splat/accumulate")?;

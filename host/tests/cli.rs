@@ -90,10 +90,11 @@ fn splatting_methods_render_builtin_and_exr_scenes() {
 
 #[test]
 fn raytrace_layered_and_shaped_apertures_render() {
-    let cases: [(&str, &[&str], &str); 3] = [
+    let cases: [(&str, &[&str], &str); 4] = [
         ("raytrace", &["--spp", "4"], "rays per pixel"),
         ("layered", &["--no-cascade"], "layers for CoC"),
         ("multilayer", &["--aperture", "blades:6:15:0.2"], "sort classes used"),
+        ("bokeh", &["--aperture", "star:5"], "bright pixels detected"),
     ];
     for (method, extra, says) in cases {
         let out = temp(&format!("simple-{method}-extra.exr"));
@@ -102,6 +103,15 @@ fn raytrace_layered_and_shaped_apertures_render() {
         let o = dof(&args);
         assert!(o.status.success(), "{method}: {}", String::from_utf8_lossy(&o.stderr));
         assert!(String::from_utf8_lossy(&o.stdout).contains(says), "{method} reports what it did");
+    }
+    // The same methods on an EXR (a multi-layer EXR written first; it needs a lens).
+    let layers = temp("extra-layers.exr");
+    let o = dof(&["render", "--method", "layers", "--width", "64", "--height", "36", "--out", layers.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for method in ["raytrace", "layered", "bokeh"] {
+        let out = temp(&format!("exr-{method}.exr"));
+        let o = dof(&["render", "--scene", layers.to_str().unwrap(), "--method", method, "--focus", "4.2", "--f-number", "1.4", "--out", out.to_str().unwrap()]);
+        assert!(o.status.success(), "{method} on an EXR: {}", String::from_utf8_lossy(&o.stderr));
     }
     assert_fails_with(&["render", "--method", "gather", "--aperture", "blades:6", "--width", "32", "--height", "32"], "splatting methods");
     assert_fails_with(&["render", "--method", "multilayer", "--aperture", "hexagon", "--width", "32", "--height", "32"], "blades:N");

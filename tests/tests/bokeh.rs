@@ -99,6 +99,25 @@ fn a_highlight_keeps_its_energy() {
 }
 
 #[test]
+fn against_the_exact_reference_it_keeps_the_gathers_error() {
+    // With the gather underneath and a circular aperture, sprites move energy from the blur to
+    // discs of the same size: the error against the exact reference stays the gather's.
+    for name in ["highlights", "simple"] {
+        let scene = builtin(name).unwrap().with_size(320, 180);
+        let lens = scene.thin_lens().unwrap();
+        let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default()).unwrap();
+        let exact = dof::scene::reference(&scene.scene, &scene.camera, &lens, &dof::scene::ReferenceOptions { spp: 256, ..Default::default() }).unwrap();
+        let (front, depth) = ml.layers.front();
+        let mut cpu = CpuBackend::new();
+        let err = |img: &RgbImage| dof::metrics::compare(img, &exact.image, Some(&ml.mask)).unwrap();
+        let b = err(&run(&mut cpu, &front, &depth, &lens, &BokehOptions::default()).image);
+        let g = err(&gather(&mut cpu, &front, &depth, &lens, None).unwrap().image);
+        eprintln!("{name} 320x180: bokeh {:.2} dB ({:?} region), gather {:.2} dB ({:?} region)", b.psnr_db, b.psnr_masked_db, g.psnr_db, g.psnr_masked_db);
+        assert!(b.psnr_db >= g.psnr_db - 0.05, "{name}: {} vs {}", b.psnr_db, g.psnr_db);
+    }
+}
+
+#[test]
 fn bad_options_are_errors() {
     let (img, depth, lens) = highlights();
     let bad = [

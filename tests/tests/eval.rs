@@ -36,6 +36,8 @@ fn quick_evaluation_covers_every_method_and_setting() {
         }
     }
     assert!(json["coc_sweep"][0].get("max_coc_px").is_some());
+    assert!(json["backends"][0]["driver"].as_str().is_some_and(|d| !d.is_empty()), "the report names the driver");
+    assert!(json["scenes"][0]["lens"]["aperture_radius"].as_f64().is_some_and(|a| a > 0.0), "and the lens");
     assert!(json["records"].as_array().unwrap().iter().any(|r| r.get("list_histogram").is_some()));
 
     // Plots: error against time, list lengths and the sweep, each as SVG and PNG.

@@ -101,6 +101,10 @@ impl Backend for CpuBackend {
         format!("CPU ({} threads)", rayon::current_num_threads())
     }
 
+    fn driver(&self) -> String {
+        format!("dof {} CPU backend (kernels as Rust, rayon over workgroups)", env!("CARGO_PKG_VERSION"))
+    }
+
     fn limits(&self) -> &Limits {
         &self.limits
     }

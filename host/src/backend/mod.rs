@@ -65,6 +65,10 @@ pub trait Backend {
     fn kind(&self) -> BackendKind;
     /// The device, as the driver names it (`llvmpipe (LLVM 15.0.6, 256 bits)` for lavapipe).
     fn device_name(&self) -> String;
+    /// The driver and its version, where there is one (`llvmpipe Mesa 22.3.6 (LLVM 15.0.6)`).
+    fn driver(&self) -> String {
+        String::new()
+    }
     fn limits(&self) -> &Limits;
 
     /// A zeroed buffer of `words` u32 words (at least one).

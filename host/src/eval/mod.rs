@@ -17,7 +17,7 @@ use crate::error::{Error, Result};
 use crate::metrics::compare;
 use crate::scene::{AutoOptions, LayerOptions, ReferenceOptions, builtin, raycast_layers, reference, reference_auto};
 use methods::{Method, MethodInput, MethodOutput, Setting, registry};
-use report::{Record, Report, SceneInfo};
+use report::{BackendInfo, Record, Report, SceneInfo};
 use crate::timing::RunTimes;
 
 pub struct EvalOptions {
@@ -63,7 +63,8 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
     if backends.is_empty() {
         return Err(Error::InvalidArgument("the evaluation needs at least one backend".into()));
     }
-    let mut report = Report::new(options.quick);
+    let infos = backends.iter().map(|b| BackendInfo { kind: b.kind().to_string(), device: b.device_name(), driver: b.driver() }).collect();
+    let mut report = Report::new(options.quick, options.runs, infos);
     for name in &options.scenes {
         let mut scene = builtin(name)?;
         if options.quick {
@@ -82,6 +83,7 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
             name: name.clone(),
             width: scene.camera.width,
             height: scene.camera.height,
+            lens: (&lens).into(),
             reference_spp: exact.spp,
             reference_noise_psnr_db: exact.noise_psnr_db,
             fragments_per_pixel: ml.with_mask.fragments_per_pixel(),

@@ -3,9 +3,11 @@
 //!
 //! `report.json` schema (one object):
 //! - `version`: the `dof` version; `shaders_hash`: SHA-256 of the kernel sources; `quick`: whether
-//!   `--quick` was used (the device and driver of each record are in its `device`);
-//! - `scenes[]`: `name`, `width`, `height`, `reference_spp`, `reference_noise_psnr_db` (estimated
-//!   noise of the reference, dB), `fragments_per_pixel`, `multi_layer_share`,
+//!   `--quick` was used; `runs`: timed runs per point after one warm-up;
+//! - `backends[]`: `kind`, `device`, `driver` (name and version, and the Vulkan API version);
+//! - `scenes[]`: `name`, `width`, `height`, `lens` (`focal_length`, `aperture_radius`,
+//!   `focus_distance` in scene units, `pixels_per_unit` on the sensor), `reference_spp`,
+//!   `reference_noise_psnr_db` (estimated noise of the reference, dB), `fragments_per_pixel`, `multi_layer_share`,
 //!   `occlusion_region_share` (share of pixels in the partial-occlusion region, the disocclusion
 //!   buffer);
 //! - `records[]`, one per scene × method × setting × backend: `scene`, `method`, `setting`,
@@ -27,11 +29,35 @@ use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
+/// The thin lens a scene was evaluated with.
+#[derive(Clone, Debug, Serialize)]
+pub struct LensInfo {
+    pub focal_length: f32,
+    pub aperture_radius: f32,
+    pub focus_distance: f32,
+    pub pixels_per_unit: f32,
+}
+
+impl From<&dof_shaders::lens::ThinLens> for LensInfo {
+    fn from(l: &dof_shaders::lens::ThinLens) -> Self {
+        LensInfo { focal_length: l.focal_length, aperture_radius: l.aperture_radius, focus_distance: l.focus_distance, pixels_per_unit: l.pixels_per_unit }
+    }
+}
+
+/// A backend the evaluation ran on.
+#[derive(Clone, Debug, Serialize)]
+pub struct BackendInfo {
+    pub kind: String,
+    pub device: String,
+    pub driver: String,
+}
+
 #[derive(Clone, Debug, Serialize)]
 pub struct SceneInfo {
     pub name: String,
     pub width: u32,
     pub height: u32,
+    pub lens: LensInfo,
     pub reference_spp: u32,
     pub reference_noise_psnr_db: Option<f64>,
     pub fragments_per_pixel: f64,
@@ -120,6 +146,8 @@ pub struct Report {
     /// SHA-256 of the kernel sources the SPIR-V modules were built from.
     pub shaders_hash: String,
     pub quick: bool,
+    pub runs: usize,
+    pub backends: Vec<BackendInfo>,
     pub scenes: Vec<SceneInfo>,
     pub records: Vec<Record>,
     pub coc_sweep: Vec<SweepRecord>,
@@ -130,11 +158,18 @@ pub struct Report {
 }
 
 impl Report {
-    pub fn new(quick: bool) -> Self {
+    pub fn new(quick: bool, runs: usize, backends: Vec<BackendInfo>) -> Self {
         Report {
             version: env!("CARGO_PKG_VERSION").to_string(),
             shaders_hash: crate::shaders::SOURCE_HASH.to_string(),
-            quick, scenes: Vec::new(), records: Vec::new(), coc_sweep: Vec::new(), grids: Vec::new() }
+            quick,
+            runs,
+            backends,
+            scenes: Vec::new(),
+            records: Vec::new(),
+            coc_sweep: Vec::new(),
+            grids: Vec::new(),
+        }
     }
 
     pub fn to_json(&self) -> String {
@@ -146,7 +181,11 @@ impl Report {
     pub fn to_markdown(&self) -> String {
         let mut md = String::from("# Depth-of-field evaluation\n\n");
         let _ = writeln!(md, "dof {}{}; error against the exact reference on the documented tone map; times are medians of {} runs after a warm-up.\n",
-            self.version, if self.quick { " (quick)" } else { "" }, self.records.first().map_or(0, |r| r.runs));
+            self.version, if self.quick { " (quick)" } else { "" }, self.runs);
+        for b in &self.backends {
+            let _ = writeln!(md, "- {}: {} ({})", b.kind, b.device, b.driver);
+        }
+        md.push('\n');
         for s in &self.scenes {
             let _ = writeln!(md, "## {} ({}x{})\n", s.name, s.width, s.height);
             let _ = writeln!(md, "Reference: {} spp (noise {} dB). Multi-layer image: {:.3} fragments/px, {:.1}% of pixels multi-layer; partial-occlusion region {:.1}% of pixels.\n",

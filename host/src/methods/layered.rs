@@ -144,27 +144,30 @@ pub fn plan(image: &LayeredImage, lens: &ThinLens, options: &LayeredOptions) -> 
         })
         .collect();
     let mut plan = LayerPlan { empty: vec![true; cocs.len()], focus_layer: near.len(), cocs, anchors, coc_range: (lo, hi), capped };
-    // Which layers some fragment reaches: its own and the neighbours its mattes ramp into.
+    // Which layers some fragment reaches: its own and the neighbours its mattes ramp into (the
+    // front fragment by `ω`, hidden ones and the sky by `ω̇`, as the matting kernel does).
     let last = plan.cocs.len() - 1;
-    let layer_of = |z: f32| plan.anchors.partition_point(|&a| a < z);
-    for p in 0..image.counts.len() {
-        let n = image.counts[p].min(image.max_layers) as usize;
-        let zs: Vec<f32> = if n == 0 {
-            vec![f32::INFINITY]
-        } else {
-            image.fragments[p * image.max_layers as usize..][..n].iter().filter(|f| f.depth > 0.0 && f.color.iter().all(|v| v.is_finite())).map(|f| f.depth).collect()
-        };
-        for (i, &z) in zs.iter().enumerate() {
-            let k = layer_of(z).min(last);
-            for j in k.saturating_sub(1)..=(k + 1).min(last) {
-                let a = plan.anchors_of(j);
-                let w = if i == 0 && n > 0 { matte_front(&a, z) } else { matte_hidden(&a, z) };
-                if w > 0.0 {
-                    plan.empty[j] = false;
-                }
+    let mut empty = vec![true; plan.cocs.len()];
+    let mut reach = |z: f32, front: bool| {
+        let k = plan.anchors.partition_point(|&a| a < z).min(last);
+        for j in k.saturating_sub(1)..=(k + 1).min(last) {
+            let a = plan.anchors_of(j);
+            if (if front { matte_front(&a, z) } else { matte_hidden(&a, z) }) > 0.0 {
+                empty[j] = false;
             }
         }
+    };
+    for p in 0..image.counts.len() {
+        let n = image.counts[p].min(image.max_layers) as usize;
+        if n == 0 {
+            reach(f32::INFINITY, false);
+        }
+        let usable = image.fragments[p * image.max_layers as usize..][..n].iter().filter(|f| f.depth > 0.0 && f.color.iter().all(|v| v.is_finite()));
+        for (i, f) in usable.enumerate() {
+            reach(f.depth, i == 0);
+        }
     }
+    plan.empty = empty;
     Ok(plan)
 }
 

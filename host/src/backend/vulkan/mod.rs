@@ -241,6 +241,10 @@ impl Backend for VulkanBackend {
         self.info.name.clone()
     }
 
+    fn driver(&self) -> String {
+        format!("{}, Vulkan {}", self.info.driver, self.info.api_version)
+    }
+
     fn limits(&self) -> &Limits {
         &self.info.limits
     }

@@ -62,6 +62,14 @@ pub fn hash(i: u32) -> u32 {
     i.wrapping_mul(2654435761).rotate_left(13).wrapping_mul(0x9E37_79B1)
 }
 
+/// [`noise_image`] with [`varied`] colours and every 23rd pixel left empty (the sky). Shared with
+/// the integration tests.
+pub fn noise_with_sky(w: u32, h: u32, layers: u32) -> LayeredImage {
+    let mut img = noise_image(w, h, layers, varied);
+    img.counts.iter_mut().step_by(23).for_each(|n| *n = 0);
+    img
+}
+
 /// `w`x`h`, 1 to `layers` fragments per pixel at distinct depths in `[0.5, 15]`, front to back, the
 /// colour of slot `i` from `color(i)`. Shared with the integration tests.
 pub fn noise_image(w: u32, h: u32, layers: u32, color: impl Fn(u32) -> [f32; 3]) -> LayeredImage {

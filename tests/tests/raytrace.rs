@@ -8,20 +8,13 @@ use dof::methods::gather::gather;
 use dof::methods::raytrace::{RaytraceOptions, RaytraceOutput, raytrace};
 use dof::metrics::compare;
 use dof::scene::{LayerOptions, ReferenceOptions, builtin, raycast_layers, reference};
-use dof::stress::{noise_image, test_lens, varied};
+use dof::stress::{noise_image, noise_with_sky, test_lens};
 use dof::Error;
 use dof_shaders::lens::ThinLens;
 use dof_tests::{assert_clean, vulkan};
 
 fn trace(backend: &mut dyn Backend, img: &LayeredImage, lens: &ThinLens, spp: u32) -> RaytraceOutput {
     raytrace(backend, img, lens, &RaytraceOptions { spp, ..Default::default() }).unwrap()
-}
-
-/// The stress suite's noise image with every 23rd pixel left empty (sky).
-fn noise_layers(w: u32, h: u32, layers: u32) -> LayeredImage {
-    let mut img = noise_image(w, h, layers, varied);
-    img.counts.iter_mut().step_by(23).for_each(|n| *n = 0);
-    img
 }
 
 /// The front layer as the pinhole sees it (sky black).
@@ -31,7 +24,7 @@ fn front(img: &LayeredImage) -> Vec<[f32; 3]> {
 
 #[test]
 fn pinhole_and_sub_half_pixel_blur_return_the_front_layer_bit_for_bit() {
-    let img = noise_layers(37, 29, 3);
+    let img = noise_with_sky(37, 29, 3);
     // Every ray of a pixel stays inside it while the CoC radius is under half a pixel, and the mean
     // of equal colours is that colour exactly.
     let largest = dof::eval::sweep::max_coc_radius(&img, &test_lens(1.0));
@@ -63,7 +56,7 @@ fn one_colour_stays_one_colour() {
 
 #[test]
 fn non_finite_input_is_never_hit() {
-    let mut img = noise_layers(29, 17, 3);
+    let mut img = noise_with_sky(29, 17, 3);
     for (i, f) in img.fragments.iter_mut().enumerate() {
         match i % 11 {
             0 => f.color[1] = f32::NAN,
@@ -126,7 +119,7 @@ fn converges_towards_the_exact_reference_with_rays_per_pixel() {
 
 #[test]
 fn bad_options_are_errors() {
-    let img = noise_layers(8, 8, 2);
+    let img = noise_with_sky(8, 8, 2);
     let mut cpu = CpuBackend::new();
     let bad = [
         (RaytraceOptions { spp: 0, ..Default::default() }, test_lens(0.01)),

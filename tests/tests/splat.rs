@@ -8,19 +8,11 @@ use dof::Error;
 use dof_shaders::half::{f16_to_f32, f32_to_f16};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::splat::MAX_RINGS;
-use dof::stress::{hash, noise_image, test_lens, varied};
+use dof::stress::{hash, noise_with_sky, test_lens};
 use dof_tests::{assert_clean, vulkan};
 
 fn lens(aperture_radius: f32) -> ThinLens {
     test_lens(aperture_radius)
-}
-
-/// The stress suite's noise image (1 to `layers` fragments per pixel at distinct depths, colours of
-/// every scale), with every 23rd pixel left empty (sky).
-fn noise_layers(w: u32, h: u32, layers: u32) -> LayeredImage {
-    let mut img = noise_image(w, h, layers, varied);
-    img.counts.iter_mut().step_by(23).for_each(|n| *n = 0);
-    img
 }
 
 fn front_colors(img: &LayeredImage) -> Vec<[f32; 3]> {
@@ -66,7 +58,7 @@ fn half_conversion_round_trips_and_rounds_to_nearest() {
 /// A pinhole returns the front layer bit for bit: every tile is copied through, no list is built.
 #[test]
 fn pinhole_returns_the_front_exactly() {
-    let img = noise_layers(45, 30, 3);
+    let img = noise_with_sky(45, 30, 3);
     let out = run(&img, &lens(0.0), &SplatOptions { merge: Merge::X4, ..Default::default() });
     assert_eq!(out.image.data, front_colors(&img));
     assert_eq!(out.report.copy_tiles, out.report.tiles);
@@ -77,7 +69,7 @@ fn pinhole_returns_the_front_exactly() {
 /// CoC diameters below one pixel reproduce the input exactly (every fragment is a sharp front).
 #[test]
 fn sub_pixel_coc_is_exact() {
-    let img = noise_layers(40, 33, 2);
+    let img = noise_with_sky(40, 33, 2);
     // Far-field CoC 0.2 * 0.0005 * 8000 / 1.95 = 0.41 px diameter; near 0.5 m: 1.2 px... keep depths far.
     let mut far = img.clone();
     far.fragments.iter_mut().for_each(|f| f.depth = f.depth.max(1.2));
@@ -92,7 +84,7 @@ fn sub_pixel_coc_is_exact() {
 /// normalisation); the colour is exact in half precision, so only summation rounding remains.
 #[test]
 fn a_flat_field_stays_flat() {
-    let mut img = noise_layers(50, 41, 3);
+    let mut img = noise_with_sky(50, 41, 3);
     let flat = [0.25, 3.0, 1200.0];
     img.fragments.iter_mut().for_each(|f| f.color = flat);
     for (merge, tile) in [(Merge::None, 16), (Merge::X4, 16), (Merge::X2, 24), (Merge::X4, 32)] {
@@ -112,7 +104,7 @@ fn a_flat_field_stays_flat() {
 /// NaN and infinite colours and invalid depths are dropped and counted; nothing non-finite comes out.
 #[test]
 fn nan_and_inf_do_not_spread() {
-    let mut img = noise_layers(33, 33, 2);
+    let mut img = noise_with_sky(33, 33, 2);
     let bad = [(16 * 33 + 16, [f32::NAN, 1.0, 1.0], 3.0), (5 * 33 + 5, [f32::INFINITY, 1.0, 1.0], 3.0), (20 * 33 + 3, [1.0; 3], f32::NAN), (9, [1.0; 3], -2.0), (10, [1.0; 3], 0.0)];
     for &(p, color, depth) in &bad {
         img.counts[p] = 1;
@@ -153,7 +145,7 @@ fn tiny_and_ragged_sizes() {
         assert!((out.image.data[0][c] - one.fragments[0].color[c]).abs() <= 1e-3 * one.fragments[0].color[c]);
     }
     for (w, h) in [(17, 5), (33, 47), (3, 70)] {
-        let img = noise_layers(w, h, 2);
+        let img = noise_with_sky(w, h, 2);
         for tile in [16, 24, 32] {
             let out = run(&img, &lens(0.01), &SplatOptions { tile, ..Default::default() });
             assert!(all_finite(&out) && out.image.data.len() == (w * h) as usize);
@@ -166,7 +158,7 @@ fn tiny_and_ragged_sizes() {
 /// blends the same fragments in the same order, so the images are identical.
 #[test]
 fn tile_sizes_give_the_same_image() {
-    let img = noise_layers(70, 50, 3);
+    let img = noise_with_sky(70, 50, 3);
     let base = run(&img, &lens(0.01), &SplatOptions::default());
     for tile in [24, 32] {
         let other = run(&img, &lens(0.01), &SplatOptions { tile, ..Default::default() });
@@ -178,7 +170,7 @@ fn tile_sizes_give_the_same_image() {
 /// for bit.
 #[test]
 fn equal_depths_are_deterministic() {
-    let mut img = noise_layers(40, 40, 1);
+    let mut img = noise_with_sky(40, 40, 1);
     img.fragments.iter_mut().for_each(|f| f.depth = 0.9);
     let a = run(&img, &lens(0.01), &SplatOptions::default());
     let b = run(&img, &lens(0.01), &SplatOptions::default());
@@ -190,7 +182,7 @@ fn equal_depths_are_deterministic() {
 /// capped (counted), never an error.
 #[test]
 fn rings_follow_the_largest_coc_and_cap_beyond() {
-    let mut img = noise_layers(64, 64, 1);
+    let mut img = noise_with_sky(64, 64, 1);
     // Near field only: at 0.5 m the CoC radius is 1.5·K with K = 2·a·f/(z_f − f)·8000 = 410·a.
     img.fragments.iter_mut().for_each(|f| f.depth = 0.5);
     let r_for = |a: f32| lens(a).coc_radius_px(0.5) + 0.5;
@@ -210,7 +202,7 @@ fn rings_follow_the_largest_coc_and_cap_beyond() {
 /// What the report says adds up: list entries, sort classes and merging counts.
 #[test]
 fn the_report_adds_up() {
-    let mut img = noise_layers(80, 48, 3);
+    let mut img = noise_with_sky(80, 48, 3);
     // Smooth colours, so that blocks merge.
     img.fragments.iter_mut().enumerate().for_each(|(i, f)| {
         f.color = [1.0 + (i / 400) as f32 * 0.01, 0.5, 0.25];
@@ -229,7 +221,7 @@ fn the_report_adds_up() {
 
 #[test]
 fn bad_input_is_an_error() {
-    let img = noise_layers(20, 20, 2);
+    let img = noise_with_sky(20, 20, 2);
     let mut cpu = CpuBackend::new();
     let o = SplatOptions::default();
     assert!(matches!(splat(&mut cpu, &img, &lens(-1.0), &o), Err(Error::InvalidArgument(_))));
@@ -247,7 +239,7 @@ fn bad_input_is_an_error() {
 #[test]
 fn vulkan_matches_cpu_stage_by_stage() {
     let Some(mut vk) = vulkan() else { return };
-    let img = noise_layers(61, 37, 3);
+    let img = noise_with_sky(61, 37, 3);
     for (merge, tile, aperture) in [(Merge::X4, 16, 0.01), (Merge::None, 24, 0.004), (Merge::X2, 32, 0.02)] {
         let o = SplatOptions { merge, tile, keep_intermediates: true, ..Default::default() };
         let on_vk = splat(&mut vk, &img, &lens(aperture), &o).unwrap();

@@ -109,7 +109,10 @@ pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &
         let groups = groups_for(&BOKEH_DETECT, pixels);
         backend.dispatch(&BOKEH_DETECT, groups, &[color, depth_buf, slots, counters], &push, "bokeh/detect")?;
         let scratch = ScanScratch::new(backend, pixels)?;
-        let scanned = scratch.record(backend, slots, 0, pixels);
+        if let Err(e) = scratch.record(backend, slots, 0, pixels) {
+            scratch.destroy(backend);
+            return Err(e);
+        }
         backend.dispatch(&BOKEH_EMIT, groups, &[color, depth_buf, slots, sprites, rest, mask_buf], &push, "bokeh/detect")?;
         let gather_params = GatherParams { width, height, max_radius: blur_radius, _pad: 0, lens: *lens };
         let tiles = [width.div_ceil(TILE), height.div_ceil(TILE), 1];
@@ -119,7 +122,6 @@ pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &
         backend.dispatch(&BOKEH_COMBINE, groups, &[blur, sprite_image, out], &push, "bokeh/draw")?;
         let times = backend.submit();
         scratch.destroy(backend);
-        scanned?;
         let times = times?;
         let detected = backend.read_buffer(counters, COUNTER as u64, 1)?[0] as u64;
         Ok(BokehOutput {

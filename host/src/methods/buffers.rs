@@ -7,7 +7,7 @@ use crate::layers::{LayeredImage, RgbImage};
 use dof_shaders::KernelDesc;
 
 /// Workgroups the host dispatches at most in one dimension; grid-stride kernels loop over the rest.
-pub const MAX_GROUPS: u32 = 65535;
+pub use dof_shaders::splat::MAX_GROUPS;
 
 /// Every fragment slot of `image` as 4 words: r, g, b, depth (the input layout of the splatting,
 /// ray-tracing and layered kernels).

@@ -35,6 +35,8 @@ pub(super) struct Target {
 pub(super) struct Draws {
     pipelines: HashMap<&'static str, GraphicsPipeline>,
     pub target: Option<Target>,
+    /// The largest framebuffer, once the device has been checked for draws (format and limits).
+    pub max_size: Option<[u32; 2]>,
 }
 
 impl Draws {

@@ -383,16 +383,25 @@ impl Backend for VulkanBackend {
         label: &str,
     ) -> Result<()> {
         check_draw(self, draw, args, buffers, target, size, push)?;
-        // SAFETY: a query on the live instance and the device's physical device.
-        let limits = unsafe { self.instance.instance.get_physical_device_properties(self.physical) }.limits;
-        if size[0] > limits.max_framebuffer_width || size[1] > limits.max_framebuffer_height {
+        let max = match self.draws.max_size {
+            Some(max) => max,
+            None => {
+                // Once per backend: the attachment format must blend, and the framebuffer limits.
+                draw::check_format(&self.instance.instance, self.physical)?;
+                // SAFETY: a query on the live instance and the device's physical device.
+                let limits = unsafe { self.instance.instance.get_physical_device_properties(self.physical) }.limits;
+                let max = [limits.max_framebuffer_width, limits.max_framebuffer_height];
+                self.draws.max_size = Some(max);
+                max
+            }
+        };
+        if size[0] > max[0] || size[1] > max[1] {
             return Err(Error::TooLarge {
                 what: format!("draw target {}x{} (framebuffer side)", size[0], size[1]),
                 size: size[0].max(size[1]) as u64,
-                limit: limits.max_framebuffer_width.min(limits.max_framebuffer_height) as u64,
+                limit: max[0].min(max[1]) as u64,
             });
         }
-        draw::check_format(&self.instance.instance, self.physical)?;
         let pipeline = self.draws.pipeline(&self.device.device, draw)?;
         if self.draws.target.as_ref().map(|t| t.size) != Some(size) {
             // Recorded work may still use the old target.
@@ -449,8 +458,7 @@ impl Backend for VulkanBackend {
                 d.cmd_end_render_pass(cb);
                 d.cmd_copy_image_to_buffer(cb, image, vk::ImageLayout::TRANSFER_SRC_OPTIMAL, target_buffer, &region);
             }
-        })?;
-        self.flush()
+        })
     }
 
     fn submit(&mut self) -> Result<Vec<CommandTime>> {

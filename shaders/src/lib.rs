@@ -16,6 +16,7 @@ pub mod keys;
 pub mod layered;
 pub mod lens;
 pub mod math;
+pub mod raster;
 pub mod raytrace;
 pub mod scan;
 pub mod sort;

@@ -21,6 +21,7 @@ pub mod layers;
 pub mod methods;
 pub mod metrics;
 pub mod ops;
+pub mod raster;
 pub mod scene;
 pub mod shaders;
 pub mod source_hash;

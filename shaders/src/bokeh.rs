@@ -296,4 +296,5 @@ pub const BOKEH_DRAW: crate::DrawDesc = crate::DrawDesc {
     vertices: 6,
     fallback: &BOKEH_SPLAT,
     fallback_tile: TILE,
+    depth_test: false,
 };

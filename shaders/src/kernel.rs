@@ -29,7 +29,8 @@ pub struct KernelDesc {
 
 /// A draw through the graphics pipeline: vertex and fragment entry points reading `bindings`
 /// storage buffers (both stages see the push constants), drawn indirectly with `vertices` vertices
-/// an instance into an RGBA32F target with additive blending. Backends without a graphics pipeline
+/// an instance into an RGBA32F target, adding every fragment (blending) or, with `depth_test`,
+/// keeping the nearest. Backends without a graphics pipeline
 /// (the CPU backend) run `fallback` instead, a compute kernel over `fallback_tile`-pixel square tiles
 /// from the same sources, bound to the draw's buffers, then the indirect command's buffer, then the
 /// target (4 words a pixel).
@@ -42,6 +43,9 @@ pub struct DrawDesc {
     pub vertices: u32,
     pub fallback: &'static KernelDesc,
     pub fallback_tile: u32,
+    /// Keep the nearest fragment per pixel (reversed depth test, no blending) instead of adding
+    /// every fragment.
+    pub depth_test: bool,
 }
 
 /// The SPIR-V entry point name rust-gpu gives a function: its path without the crate name.

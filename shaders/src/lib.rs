@@ -37,11 +37,12 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .chain(raytrace::KERNELS.iter())
         .chain(layered::KERNELS.iter())
         .chain(bokeh::KERNELS.iter())
+        .chain(raster::KERNELS.iter())
         .copied()
 }
 
 /// Every draw through the graphics pipeline (its vertex and fragment entry points have modules too).
 #[cfg(not(target_arch = "spirv"))]
-pub fn all_draws() -> [&'static DrawDesc; 1] {
-    [&bokeh::BOKEH_DRAW]
+pub fn all_draws() -> [&'static DrawDesc; 2] {
+    [&bokeh::BOKEH_DRAW, &raster::draw::RASTER_DRAW]
 }

@@ -29,5 +29,5 @@ pub use dof_shaders::lens::{ArtistLens, ThinLens};
 /// The vector type of the scene API (so users need not depend on `glam` themselves).
 pub use glam::Vec3;
 pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
-pub use raycast::{LayerOptions, MultiLayerImage, raycast_layers};
+pub use raycast::{LayerOptions, MultiLayerImage, apply_disocclusion, raycast_layers};
 pub use reference::{AutoOptions, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};

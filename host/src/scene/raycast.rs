@@ -80,11 +80,18 @@ pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
     frame.check_size("multi-layer image", options.max_layers as u64)?;
     let mut full = LayeredImage::new(frame.width, frame.height, options.max_layers)?;
     cast_all(scene, &frame, lens, options, &mut full);
+    Ok(apply_disocclusion(full, &frame, lens, options))
+}
 
+/// Step 3 on a multi-layer image holding every kept fragment (the ray caster's or the
+/// rasteriser's): the disocclusion buffer from its front layer, and the statistics with and without
+/// it. The layers returned are masked when `options.disocclusion` is on.
+pub fn apply_disocclusion(full: LayeredImage, frame: &CameraFrame, lens: &ThinLens, options: &LayerOptions) -> MultiLayerImage {
+    let l = full.max_layers as usize;
     let front: Vec<f32> = (0..full.counts.len())
-        .map(|p| if full.counts[p] > 0 { full.fragments[p * options.max_layers as usize].depth } else { f32::INFINITY })
+        .map(|p| if full.counts[p] > 0 { full.fragments[p * l].depth } else { f32::INFINITY })
         .collect();
-    let mask = disocclusion_mask(&frame, lens, &front, options.edge_depth_ratio);
+    let mask = disocclusion_mask(frame, lens, &front, options.edge_depth_ratio);
 
     let without_mask = full.stats();
     let mut masked = full.clone();
@@ -94,7 +101,6 @@ pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
         }
     }
     // Unused slots are reset so that equal images compare equal whatever was dropped.
-    let l = options.max_layers as usize;
     for (p, &count) in masked.counts.iter().enumerate() {
         for slot in &mut masked.fragments[p * l + count as usize..(p + 1) * l] {
             *slot = Fragment { color: [0.0; 3], alpha: 0.0, depth: f32::INFINITY };
@@ -102,7 +108,7 @@ pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
     }
     let with_mask = masked.stats();
     let layers = if options.disocclusion { masked } else { full };
-    Ok(MultiLayerImage { layers, mask, with_mask, without_mask })
+    MultiLayerImage { layers, mask, with_mask, without_mask }
 }
 
 /// Fills `image` with every pixel's kept hits (steps 1 and 2), rows in parallel.

@@ -14,8 +14,6 @@
 //! surface where it reaches the cutoff (then opaque), `BLEND` keeps it with that coverage, `OPAQUE`
 //! ignores it.
 
-use crate::exec::Load;
-
 pub const VERTEX_WORDS: u32 = 8;
 pub const TRIANGLE_WORDS: u32 = 4;
 pub const MATERIAL_WORDS: u32 = 16;

@@ -1,7 +1,9 @@
 //! Draws through the graphics pipeline (`DrawDesc`): one pipeline per draw from its vertex and
-//! fragment modules, a render pass clearing one RGBA32F attachment with additive blending, and a
-//! colour target per image size. After the draw the attachment is copied into the caller's storage
-//! buffer (4 words a pixel), so later kernels read it like any other buffer.
+//! fragment modules, and one target per image size: an RGBA32F colour attachment and a D32 depth
+//! attachment, both cleared by the render pass. A draw either adds its fragments (blending, no
+//! depth test: sprites) or keeps the nearest (reversed depth, `GREATER`, no blending: the
+//! rasteriser). After the draw the colour attachment is copied into the caller's storage buffer (4
+//! words a pixel), so later kernels read it like any other buffer.
 
 use super::spirv;
 use crate::error::{Error, Result, VkContext};
@@ -13,6 +15,7 @@ use std::collections::HashMap;
 use std::ffi::CString;
 
 pub(super) const FORMAT: vk::Format = vk::Format::R32G32B32A32_SFLOAT;
+pub(super) const DEPTH_FORMAT: vk::Format = vk::Format::D32_SFLOAT;
 
 #[derive(Clone, Copy, Default)]
 pub(super) struct GraphicsPipeline {
@@ -22,13 +25,15 @@ pub(super) struct GraphicsPipeline {
     pub pipeline: vk::Pipeline,
 }
 
-/// A colour attachment of one size and its framebuffer.
+/// The colour and depth attachments of one size and their framebuffer.
 pub(super) struct Target {
     pub size: [u32; 2],
     pub image: vk::Image,
     pub view: vk::ImageView,
+    depth: vk::Image,
+    depth_view: vk::ImageView,
     pub framebuffer: vk::Framebuffer,
-    allocation: Option<Allocation>,
+    allocations: Vec<Allocation>,
 }
 
 #[derive(Default)]
@@ -63,37 +68,23 @@ impl Draws {
 impl Target {
     /// A target of `size` for `render_pass`. Whatever is made before a failure is destroyed.
     pub fn new(device: &ash::Device, allocator: &mut Allocator, render_pass: vk::RenderPass, size: [u32; 2]) -> Result<Self> {
-        let mut t = Target { size, image: vk::Image::null(), view: vk::ImageView::null(), framebuffer: vk::Framebuffer::null(), allocation: None };
-        let info = vk::ImageCreateInfo::default()
-            .image_type(vk::ImageType::TYPE_2D)
-            .format(FORMAT)
-            .extent(vk::Extent3D { width: size[0], height: size[1], depth: 1 })
-            .mip_levels(1)
-            .array_layers(1)
-            .samples(vk::SampleCountFlags::TYPE_1)
-            .tiling(vk::ImageTiling::OPTIMAL)
-            .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC)
-            .initial_layout(vk::ImageLayout::UNDEFINED);
+        let mut t = Target {
+            size,
+            image: vk::Image::null(),
+            view: vk::ImageView::null(),
+            depth: vk::Image::null(),
+            depth_view: vk::ImageView::null(),
+            framebuffer: vk::Framebuffer::null(),
+            allocations: Vec::new(),
+        };
+        let colour_usage = vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC;
         // SAFETY: create infos on a live device; each handle is stored at once so `destroy` frees it.
         let made = unsafe {
             (|| -> Result<()> {
-                t.image = device.create_image(&info, None).vk("vkCreateImage")?;
-                let requirements = device.get_image_memory_requirements(t.image);
-                let allocation = allocator
-                    .allocate(&AllocationCreateDesc {
-                        name: "dof draw target",
-                        requirements,
-                        location: MemoryLocation::GpuOnly,
-                        linear: false,
-                        allocation_scheme: AllocationScheme::GpuAllocatorManaged,
-                    })
-                    .map_err(|e| Error::Allocation(e.to_string()))?;
-                device.bind_image_memory(t.image, allocation.memory(), allocation.offset()).vk("vkBindImageMemory")?;
-                t.allocation = Some(allocation);
-                let range = vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1);
-                let view_info = vk::ImageViewCreateInfo::default().image(t.image).view_type(vk::ImageViewType::TYPE_2D).format(FORMAT).subresource_range(range);
-                t.view = device.create_image_view(&view_info, None).vk("vkCreateImageView")?;
-                let views = [t.view];
+                (t.image, t.view) = t.attachment(device, allocator, FORMAT, colour_usage, vk::ImageAspectFlags::COLOR)?;
+                (t.depth, t.depth_view) =
+                    t.attachment(device, allocator, DEPTH_FORMAT, vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT, vk::ImageAspectFlags::DEPTH)?;
+                let views = [t.view, t.depth_view];
                 let fb = vk::FramebufferCreateInfo::default().render_pass(render_pass).attachments(&views).width(size[0]).height(size[1]).layers(1);
                 t.framebuffer = device.create_framebuffer(&fb, None).vk("vkCreateFramebuffer")?;
                 Ok(())
@@ -108,14 +99,70 @@ impl Target {
         }
     }
 
+    /// One attachment image with its memory and view. On failure the image (if made) is handed back
+    /// through `self.allocations` and a null view so `destroy` frees it.
+    unsafe fn attachment(
+        &mut self,
+        device: &ash::Device,
+        allocator: &mut Allocator,
+        format: vk::Format,
+        usage: vk::ImageUsageFlags,
+        aspect: vk::ImageAspectFlags,
+    ) -> Result<(vk::Image, vk::ImageView)> {
+        let info = vk::ImageCreateInfo::default()
+            .image_type(vk::ImageType::TYPE_2D)
+            .format(format)
+            .extent(vk::Extent3D { width: self.size[0], height: self.size[1], depth: 1 })
+            .mip_levels(1)
+            .array_layers(1)
+            .samples(vk::SampleCountFlags::TYPE_1)
+            .tiling(vk::ImageTiling::OPTIMAL)
+            .usage(usage)
+            .initial_layout(vk::ImageLayout::UNDEFINED);
+        // SAFETY: the caller's device is live; the image is destroyed here if binding fails.
+        unsafe {
+            let image = device.create_image(&info, None).vk("vkCreateImage")?;
+            let requirements = device.get_image_memory_requirements(image);
+            let bound = allocator
+                .allocate(&AllocationCreateDesc {
+                    name: "dof draw target",
+                    requirements,
+                    location: MemoryLocation::GpuOnly,
+                    linear: false,
+                    allocation_scheme: AllocationScheme::GpuAllocatorManaged,
+                })
+                .map_err(|e| Error::Allocation(e.to_string()))
+                .and_then(|a| {
+                    let r = device.bind_image_memory(image, a.memory(), a.offset()).vk("vkBindImageMemory");
+                    self.allocations.push(a);
+                    r
+                });
+            if let Err(e) = bound {
+                device.destroy_image(image, None);
+                return Err(e);
+            }
+            let range = vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1);
+            let view_info = vk::ImageViewCreateInfo::default().image(image).view_type(vk::ImageViewType::TYPE_2D).format(format).subresource_range(range);
+            match device.create_image_view(&view_info, None).vk("vkCreateImageView") {
+                Ok(view) => Ok((image, view)),
+                Err(e) => {
+                    device.destroy_image(image, None);
+                    Err(e)
+                }
+            }
+        }
+    }
+
     pub fn destroy(mut self, device: &ash::Device, allocator: &mut Allocator) {
         // SAFETY: the GPU is done with the target; null handles are ignored.
         unsafe {
             device.destroy_framebuffer(self.framebuffer, None);
             device.destroy_image_view(self.view, None);
             device.destroy_image(self.image, None);
+            device.destroy_image_view(self.depth_view, None);
+            device.destroy_image(self.depth, None);
         }
-        if let Some(a) = self.allocation.take() {
+        for a in self.allocations.drain(..) {
             let _ = allocator.free(a);
         }
     }
@@ -126,11 +173,15 @@ pub(super) fn check_format(instance: &ash::Instance, physical: vk::PhysicalDevic
     // SAFETY: a query on a live instance and one of its physical devices.
     let props = unsafe { instance.get_physical_device_format_properties(physical, FORMAT) };
     let need = vk::FormatFeatureFlags::COLOR_ATTACHMENT | vk::FormatFeatureFlags::COLOR_ATTACHMENT_BLEND;
-    if props.optimal_tiling_features.contains(need) {
-        Ok(())
-    } else {
-        Err(Error::InvalidArgument("the device cannot blend into RGBA32F attachments, which the sprite draw needs; use the CPU backend".into()))
+    if !props.optimal_tiling_features.contains(need) {
+        return Err(Error::InvalidArgument("the device cannot blend into RGBA32F attachments, which the draws need; use the CPU backend".into()));
     }
+    // SAFETY: as above.
+    let depth = unsafe { instance.get_physical_device_format_properties(physical, DEPTH_FORMAT) };
+    if !depth.optimal_tiling_features.contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT) {
+        return Err(Error::InvalidArgument("the device has no D32 depth attachments, which the rasteriser needs; use the CPU backend".into()));
+    }
+    Ok(())
 }
 
 fn create_pipeline(device: &ash::Device, draw: &DrawDesc) -> Result<GraphicsPipeline> {
@@ -148,26 +199,48 @@ fn create_pipeline(device: &ash::Device, draw: &DrawDesc) -> Result<GraphicsPipe
     let set_info = vk::DescriptorSetLayoutCreateInfo::default().flags(vk::DescriptorSetLayoutCreateFlags::PUSH_DESCRIPTOR_KHR).bindings(&bindings);
     let ranges = [vk::PushConstantRange::default().stage_flags(stages).size(draw.push_bytes.div_ceil(4) * 4)];
 
-    let attachment = [vk::AttachmentDescription::default()
-        .format(FORMAT)
-        .samples(vk::SampleCountFlags::TYPE_1)
-        .load_op(vk::AttachmentLoadOp::CLEAR)
-        .store_op(vk::AttachmentStoreOp::STORE)
-        .stencil_load_op(vk::AttachmentLoadOp::DONT_CARE)
-        .stencil_store_op(vk::AttachmentStoreOp::DONT_CARE)
-        .initial_layout(vk::ImageLayout::UNDEFINED)
-        .final_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL)];
+    let attachment = [
+        vk::AttachmentDescription::default()
+            .format(FORMAT)
+            .samples(vk::SampleCountFlags::TYPE_1)
+            .load_op(vk::AttachmentLoadOp::CLEAR)
+            .store_op(vk::AttachmentStoreOp::STORE)
+            .stencil_load_op(vk::AttachmentLoadOp::DONT_CARE)
+            .stencil_store_op(vk::AttachmentStoreOp::DONT_CARE)
+            .initial_layout(vk::ImageLayout::UNDEFINED)
+            .final_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL),
+        vk::AttachmentDescription::default()
+            .format(DEPTH_FORMAT)
+            .samples(vk::SampleCountFlags::TYPE_1)
+            .load_op(vk::AttachmentLoadOp::CLEAR)
+            .store_op(vk::AttachmentStoreOp::DONT_CARE)
+            .stencil_load_op(vk::AttachmentLoadOp::DONT_CARE)
+            .stencil_store_op(vk::AttachmentStoreOp::DONT_CARE)
+            .initial_layout(vk::ImageLayout::UNDEFINED)
+            .final_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL),
+    ];
     let colour_ref = [vk::AttachmentReference::default().attachment(0).layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)];
-    let subpass = [vk::SubpassDescription::default().pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS).color_attachments(&colour_ref)];
-    // Before: the previous draw's copy out of the attachment is done. After: the copy sees the draw.
+    let depth_ref = vk::AttachmentReference::default().attachment(1).layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+    let subpass = [vk::SubpassDescription::default()
+        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+        .color_attachments(&colour_ref)
+        .depth_stencil_attachment(&depth_ref)];
+    let depth_stages = vk::PipelineStageFlags::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags::LATE_FRAGMENT_TESTS;
+    // Before: the previous draw's copy out of the colour attachment and its depth writes are done.
+    // After: the copy sees the draw.
     let dependencies = [
         vk::SubpassDependency::default()
             .src_subpass(vk::SUBPASS_EXTERNAL)
             .dst_subpass(0)
-            .src_stage_mask(vk::PipelineStageFlags::TRANSFER)
-            .src_access_mask(vk::AccessFlags::TRANSFER_READ)
-            .dst_stage_mask(vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT)
-            .dst_access_mask(vk::AccessFlags::COLOR_ATTACHMENT_WRITE | vk::AccessFlags::COLOR_ATTACHMENT_READ),
+            .src_stage_mask(vk::PipelineStageFlags::TRANSFER | depth_stages)
+            .src_access_mask(vk::AccessFlags::TRANSFER_READ | vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_WRITE)
+            .dst_stage_mask(vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT | depth_stages)
+            .dst_access_mask(
+                vk::AccessFlags::COLOR_ATTACHMENT_WRITE
+                    | vk::AccessFlags::COLOR_ATTACHMENT_READ
+                    | vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_READ
+                    | vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_WRITE,
+            ),
         vk::SubpassDependency::default()
             .src_subpass(0)
             .dst_subpass(vk::SUBPASS_EXTERNAL)
@@ -204,8 +277,13 @@ fn create_pipeline(device: &ash::Device, draw: &DrawDesc) -> Result<GraphicsPipe
                 .front_face(vk::FrontFace::COUNTER_CLOCKWISE)
                 .line_width(1.0);
             let multisample = vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(vk::SampleCountFlags::TYPE_1);
+            // Reversed depth: nearer is greater; the attachment clears to 0 (infinitely far).
+            let depth = vk::PipelineDepthStencilStateCreateInfo::default()
+                .depth_test_enable(draw.depth_test)
+                .depth_write_enable(draw.depth_test)
+                .depth_compare_op(vk::CompareOp::GREATER);
             let blend = [vk::PipelineColorBlendAttachmentState::default()
-                .blend_enable(true)
+                .blend_enable(!draw.depth_test)
                 .src_color_blend_factor(vk::BlendFactor::ONE)
                 .dst_color_blend_factor(vk::BlendFactor::ONE)
                 .color_blend_op(vk::BlendOp::ADD)
@@ -224,6 +302,7 @@ fn create_pipeline(device: &ash::Device, draw: &DrawDesc) -> Result<GraphicsPipe
                 .rasterization_state(&raster)
                 .multisample_state(&multisample)
                 .color_blend_state(&blending)
+                .depth_stencil_state(&depth)
                 .dynamic_state(&dynamic)
                 .layout(p.layout)
                 .render_pass(p.render_pass)

@@ -429,7 +429,10 @@ impl Backend for VulkanBackend {
         let extent = vk::Extent2D { width: size[0], height: size[1] };
         let stages = vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT;
         self.recorder.record(&self.device, Some((label, draw.vertex)), |d, cb| {
-            let clear = [vk::ClearValue { color: vk::ClearColorValue { float32: [0.0; 4] } }];
+            let clear = [
+                vk::ClearValue { color: vk::ClearColorValue { float32: [0.0; 4] } },
+                vk::ClearValue { depth_stencil: vk::ClearDepthStencilValue { depth: 0.0, stencil: 0 } },
+            ];
             let begin = vk::RenderPassBeginInfo::default()
                 .render_pass(pipeline.render_pass)
                 .framebuffer(framebuffer)

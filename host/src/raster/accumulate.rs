@@ -1,0 +1,117 @@
+//! The accumulation-buffer reference for mesh scenes: `N` pinhole renders from stratified points of
+//! the lens, each through the sheared frustum that keeps the focus plane fixed ([`View`]) and with a
+//! stratified sub-pixel jitter, shaded and averaged in f32 on the device.
+//!
+//! Every render sees the front surface only; a `BLEND` surface counts with its coverage over black
+//! (nothing behind it is added), so the reference is exact for opaque and masked materials.
+
+use super::mesh::{DeviceMesh, RasterScene};
+use super::peel::{check_view, draw, shade_params};
+use super::view::View;
+use crate::backend::{Backend, CommandTime, push_words, with_buffers};
+use crate::error::{Error, Result};
+use crate::layers::RgbImage;
+use crate::methods::buffers::groups_for;
+use crate::scene::Camera;
+use crate::scene::sampling::{concentric_disc, pixel_rng, stratified};
+use dof_shaders::lens::ThinLens;
+use dof_shaders::raster::draw::VIS_WORDS;
+use dof_shaders::raster::shade::{ACCUMULATE, RASTER_SHADE};
+use indicatif::{ProgressBar, ProgressStyle};
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AccumulateOptions {
+    /// Pinhole renders `N`, `>= 1`.
+    pub samples: u32,
+    pub seed: u64,
+    /// Show a progress bar on the terminal.
+    pub progress: bool,
+    /// Renders recorded per submission (bounds how much work a progress step waits for).
+    pub batch: u32,
+}
+
+impl Default for AccumulateOptions {
+    fn default() -> Self {
+        AccumulateOptions { samples: 256, seed: 1, progress: false, batch: 8 }
+    }
+}
+
+pub struct Accumulated {
+    pub image: RgbImage,
+    pub samples: u32,
+    pub times: Vec<CommandTime>,
+}
+
+/// The `N` views: lens points stratified over the aperture disc (concentric mapping) and jitters
+/// stratified over the pixel, jointly permuted as the exact reference's samples are.
+pub fn views(samples: u32, aperture_radius: f32, seed: u64) -> Vec<View> {
+    let (mut out, mut perm) = (Vec::new(), Vec::new());
+    let mut rng = pixel_rng(seed, u64::MAX, 0);
+    stratified(samples, true, &mut rng, &mut out, &mut perm);
+    out.iter()
+        .map(|s| {
+            let (dx, dy) = concentric_disc(s.lens.0, s.lens.1);
+            View { lens: (aperture_radius * dx, aperture_radius * dy), jitter: (s.pixel.0 - 0.5, s.pixel.1 - 0.5) }
+        })
+        .collect()
+}
+
+/// Renders the accumulation-buffer reference of `scene` (module docs).
+pub fn accumulate(
+    backend: &mut dyn Backend,
+    scene: &RasterScene,
+    camera: &Camera,
+    lens: &ThinLens,
+    near: f32,
+    options: &AccumulateOptions,
+) -> Result<Accumulated> {
+    let frame = check_view(camera, lens, near)?;
+    if options.samples == 0 {
+        return Err(Error::InvalidArgument("the accumulation buffer needs at least one render (--samples)".into()));
+    }
+    frame.check_size("accumulation buffer", 4)?;
+    let pixels = frame.width as u64 * frame.height as u64;
+    let size = [frame.width, frame.height];
+    let views = views(options.samples, lens.aperture_radius, options.seed);
+    let mesh = DeviceMesh::upload(backend, scene)?;
+    let bar = options.progress.then(|| {
+        let bar = ProgressBar::new(views.len() as u64);
+        if let Ok(style) = ProgressStyle::with_template("accumulation buffer [{elapsed_precise}] {wide_bar} {pos}/{len} renders (eta {eta})") {
+            bar.set_style(style);
+        }
+        bar
+    });
+    let sizes = [(4, "accum/args"), (1, "accum/reach"), (VIS_WORDS as u64 * pixels, "accum/vis"), (4 * pixels, "accum/sum")];
+    let result = with_buffers(backend, &sizes, |backend, b| {
+        let (args, reach, vis, sum) = (b[0], b[1], b[2], b[3]);
+        backend.write_buffer(args, 0, &[3 * mesh.triangles, 1, 0, 0])?;
+        backend.fill(reach, 0, 1, 0, "accum/reach")?;
+        backend.fill(sum, 0, 4 * pixels, 0, "accum/sum")?;
+        let [v, t, m, tx, tl] = mesh.buffers;
+        let mut times = Vec::new();
+        for (i, view) in views.iter().enumerate() {
+            let mut params = view.params(&frame, lens.focus_distance, near);
+            params.triangles = mesh.triangles;
+            params.textures = mesh.textures;
+            draw(backend, &mesh, &params, args, reach, vis, size, "accum/draw")?;
+            let shade = shade_params(scene, &mesh, &frame, lens, view, ACCUMULATE);
+            backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &[vis, v, t, m, tx, tl, sum, reach], &push_words(&shade), "accum/shade")?;
+            if (i + 1) % options.batch.max(1) as usize == 0 || i + 1 == views.len() {
+                times.extend(backend.submit()?);
+                if let Some(bar) = &bar {
+                    bar.set_position(i as u64 + 1);
+                }
+            }
+        }
+        let words = backend.read_buffer(sum, 0, 4 * pixels)?;
+        let n = views.len() as f32;
+        let data = words.chunks_exact(4).map(|w| [0, 1, 2].map(|j| f32::from_bits(w[j]) / n)).collect();
+        Ok((RgbImage { width: frame.width, height: frame.height, data }, times))
+    });
+    mesh.destroy(backend);
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
+    let (image, times) = result?;
+    Ok(Accumulated { image, samples: options.samples, times })
+}

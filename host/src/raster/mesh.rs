@@ -1,0 +1,118 @@
+//! The mesh as the rasteriser takes it (borrowed, so any loader can hand it over) and its copy on
+//! the device.
+
+use crate::backend::{Backend, BufferId};
+use crate::error::{Error, Result};
+use crate::scene::Lighting;
+use dof_shaders::raster::mesh::{Light, MATERIAL_WORDS, MeshMaterial, MeshVertex, NO_TEXTURE, TextureInfo};
+
+/// Most triangles a mesh may have: the visibility buffer stores `triangle + 1` as an exact f32.
+pub const MAX_TRIANGLES: u64 = 1 << 24;
+
+/// A triangle mesh in world space with its materials, textures and light.
+#[derive(Clone, Copy, Debug)]
+pub struct RasterScene<'a> {
+    pub vertices: &'a [MeshVertex],
+    /// `[i0, i1, i2, material]`.
+    pub triangles: &'a [[u32; 4]],
+    pub materials: &'a [MeshMaterial],
+    pub textures: &'a [TextureInfo],
+    /// Linear RGBA.
+    pub texels: &'a [[f32; 4]],
+    pub lighting: Lighting,
+}
+
+impl RasterScene<'_> {
+    /// Errors on indices out of range, non-finite vertices, too many triangles, or a texture
+    /// reaching past the texels.
+    pub fn validate(&self) -> Result<()> {
+        let bad = |m: String| Err(Error::InvalidArgument(m));
+        if self.triangles.is_empty() {
+            return bad("the mesh holds no triangles".into());
+        }
+        if self.triangles.len() as u64 > MAX_TRIANGLES {
+            return Err(Error::TooLarge { what: "mesh (triangles)".into(), size: self.triangles.len() as u64, limit: MAX_TRIANGLES });
+        }
+        if let Some(i) = self.vertices.iter().position(|v| !v.position.iter().chain(&v.normal).chain(&[v.u, v.v]).all(|x| x.is_finite())) {
+            return bad(format!("vertex {i} has a non-finite position, normal or texture coordinate"));
+        }
+        let nv = self.vertices.len() as u64;
+        let nm = self.materials.len() as u64;
+        if let Some((t, tri)) = self.triangles.iter().enumerate().find(|(_, t)| t[..3].iter().any(|&i| i as u64 >= nv) || t[3] as u64 >= nm) {
+            return bad(format!("triangle {t} names vertex or material out of range: {tri:?} ({nv} vertices, {nm} materials)"));
+        }
+        let nt = self.textures.len() as u32;
+        for (m, mat) in self.materials.iter().enumerate() {
+            for tex in [mat.base_texture, mat.emissive_texture] {
+                if tex != NO_TEXTURE && tex >= nt {
+                    return bad(format!("material {m} names texture {tex}, but there are {nt}"));
+                }
+            }
+        }
+        for (i, t) in self.textures.iter().enumerate() {
+            let end = t.offset as u64 + t.width as u64 * t.height as u64;
+            if t.width == 0 || t.height == 0 || end > self.texels.len() as u64 {
+                return bad(format!("texture {i} ({}x{} at texel {}) is empty or reaches past the {} texels", t.width, t.height, t.offset, self.texels.len()));
+            }
+        }
+        Ok(())
+    }
+
+    /// The light in the layout the shading kernel reads (direction normalised).
+    pub fn light(&self) -> Light {
+        let d = self.lighting.direction.normalize_or_zero();
+        Light { direction: d.to_array(), color: self.lighting.color, ambient: self.lighting.ambient, ..Light::default() }
+    }
+}
+
+/// The mesh's buffers on a backend: vertices, triangles, materials, textures, texels (the draw's
+/// bindings 0-4). Free them with [`DeviceMesh::destroy`].
+pub struct DeviceMesh {
+    pub buffers: [BufferId; 5],
+    pub triangles: u32,
+    pub textures: u32,
+    pub bytes: u64,
+}
+
+impl DeviceMesh {
+    /// Validates and uploads `scene`. Empty tables get one unused entry (buffers cannot be empty).
+    pub fn upload(backend: &mut dyn Backend, scene: &RasterScene) -> Result<Self> {
+        scene.validate()?;
+        let words: [Vec<u32>; 5] = [
+            bytemuck::cast_slice(scene.vertices).to_vec(),
+            bytemuck::cast_slice(scene.triangles).to_vec(),
+            bytemuck::cast_slice(scene.materials).to_vec(),
+            bytemuck::cast_slice(scene.textures).to_vec(),
+            bytemuck::cast_slice(scene.texels).to_vec(),
+        ];
+        let labels = ["mesh/vertices", "mesh/triangles", "mesh/materials", "mesh/textures", "mesh/texels"];
+        let mut buffers = Vec::with_capacity(5);
+        let mut bytes = 0;
+        for (w, label) in words.iter().zip(labels) {
+            let size = (w.len() as u64).max(MATERIAL_WORDS as u64);
+            let made = backend.create_buffer(size, label).and_then(|b| {
+                buffers.push(b);
+                if w.is_empty() { Ok(()) } else { backend.write_buffer(b, 0, w) }
+            });
+            if let Err(e) = made {
+                for b in buffers {
+                    backend.destroy_buffer(b);
+                }
+                return Err(e);
+            }
+            bytes += 4 * size;
+        }
+        Ok(DeviceMesh {
+            buffers: [buffers[0], buffers[1], buffers[2], buffers[3], buffers[4]],
+            triangles: scene.triangles.len() as u32,
+            textures: scene.textures.len() as u32,
+            bytes,
+        })
+    }
+
+    pub fn destroy(self, backend: &mut dyn Backend) {
+        for b in self.buffers {
+            backend.destroy_buffer(b);
+        }
+    }
+}

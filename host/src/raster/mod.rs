@@ -1,0 +1,21 @@
+//! Triangle-mesh scenes (glTF) on the device: rasterised into the partial multi-layer image by
+//! depth peeling, and into the accumulation-buffer reference (seed 000 §4; kernels and shaders in
+//! `dof_shaders::raster`).
+//!
+//! - [`mesh`]: the mesh as the rasteriser takes it, and its upload;
+//! - [`view`]: the clip transform for a pinhole or for one lens point (sheared frustum);
+//! - [`peel`]: depth peeling with the umbra threshold, then the disocclusion buffer;
+//! - [`accumulate`]: the accumulation-buffer reference.
+//!
+//! Both run on either backend: on Vulkan through the graphics pipeline (rust-gpu vertex and
+//! fragment shaders, a depth attachment), on the CPU through the draw's compute fallback.
+
+pub mod accumulate;
+pub mod mesh;
+pub mod peel;
+pub mod view;
+
+pub use accumulate::{AccumulateOptions, Accumulated, accumulate};
+pub use mesh::{DeviceMesh, RasterScene};
+pub use peel::{Peeled, peel_layers};
+pub use view::{View, default_near};

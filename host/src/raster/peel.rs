@@ -1,0 +1,138 @@
+//! The partial multi-layer image of a mesh by depth peeling (seed 000 §4.1-4.3), the rasterised
+//! counterpart of [`crate::scene::raycast_layers`] with the same rules:
+//!
+//! 1. Pass `k` draws every triangle and keeps, per pixel, the nearest fragment beyond `reach`
+//!    (nothing for `k = 0`); shading it writes layer `k` and the next `reach` — the umbra behind an
+//!    opaque fragment, so everything within it is skipped (the umbra threshold as the minimum
+//!    separation of layers), and infinity where the pass found nothing.
+//! 2. Passes stop after `max_layers`, or as soon as a pass finds nothing anywhere.
+//! 3. The disocclusion buffer from the front layer ([`apply_disocclusion`]): pixels outside it keep
+//!    their front fragment only. This is the two-pass variant of §4.3 (the mask is built from the
+//!    finished front layer rather than during the peel).
+
+use super::mesh::{DeviceMesh, RasterScene};
+use super::view::View;
+use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
+use crate::error::{Error, Result};
+use crate::layers::{Fragment, LayeredImage};
+use crate::methods::buffers::groups_for;
+use crate::scene::{Camera, LayerOptions, MultiLayerImage, apply_disocclusion};
+use dof_shaders::lens::ThinLens;
+use dof_shaders::raster::draw::{RASTER_DRAW, VIS_WORDS};
+use dof_shaders::raster::shade::{LAYER, LAYER_WORDS, RASTER_SHADE, ShadeParams};
+
+/// The peeled image and what it cost.
+pub struct Peeled {
+    pub image: MultiLayerImage,
+    /// Peeling passes run (each a draw and a shading dispatch).
+    pub passes: u32,
+    pub times: Vec<CommandTime>,
+}
+
+/// Checks what every raster pass needs: a valid camera, lens and near plane.
+pub(crate) fn check_view(camera: &Camera, lens: &ThinLens, near: f32) -> Result<crate::scene::CameraFrame> {
+    let frame = camera.frame()?;
+    if !lens.is_valid() {
+        return Err(Error::InvalidArgument(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
+    }
+    if !(near > 0.0 && near.is_finite() && near < lens.focus_distance) {
+        return Err(Error::InvalidArgument(format!(
+            "the near plane must lie between 0 and the focus distance {}, got {near}",
+            lens.focus_distance
+        )));
+    }
+    Ok(frame)
+}
+
+/// The shading pass's constants for a view.
+pub(crate) fn shade_params(scene: &RasterScene, mesh: &DeviceMesh, frame: &crate::scene::CameraFrame, lens: &ThinLens, view: &View, mode: u32) -> ShadeParams {
+    ShadeParams {
+        light: scene.light(),
+        eye: view.eye(frame).to_array(),
+        mode,
+        lens: *lens,
+        footprint_per_depth: frame.tan_half_fov / frame.height as f32,
+        width: frame.width,
+        height: frame.height,
+        textures: mesh.textures,
+    }
+}
+
+/// Draws the mesh once into `vis` (the draw command in `args`).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn draw(
+    backend: &mut dyn Backend,
+    mesh: &DeviceMesh,
+    params: &dof_shaders::raster::project::RasterParams,
+    args: BufferId,
+    reach: BufferId,
+    vis: BufferId,
+    size: [u32; 2],
+    label: &str,
+) -> Result<()> {
+    let [v, t, m, tx, tl] = mesh.buffers;
+    backend.draw_indirect(&RASTER_DRAW, args, &[v, t, m, tx, tl, reach], vis, size, &push_words(params), label)
+}
+
+/// Peels `scene` seen by `camera` through `lens` into a partial multi-layer image (module docs).
+pub fn peel_layers(
+    backend: &mut dyn Backend,
+    scene: &RasterScene,
+    camera: &Camera,
+    lens: &ThinLens,
+    near: f32,
+    options: &LayerOptions,
+) -> Result<Peeled> {
+    let frame = check_view(camera, lens, near)?;
+    if options.max_layers == 0 || !(options.edge_depth_ratio >= 0.0) {
+        return Err(Error::InvalidArgument(format!(
+            "need at least one layer and a non-negative edge ratio, got {} and {}",
+            options.max_layers, options.edge_depth_ratio
+        )));
+    }
+    frame.check_size("multi-layer image", options.max_layers as u64)?;
+    let mut full = LayeredImage::new(frame.width, frame.height, options.max_layers)?;
+    let pixels = frame.width as u64 * frame.height as u64;
+    let size = [frame.width, frame.height];
+    let mesh = DeviceMesh::upload(backend, scene)?;
+    let sizes = [(4, "peel/args"), (pixels, "peel/reach"), (VIS_WORDS as u64 * pixels, "peel/vis"), (LAYER_WORDS as u64 * pixels, "peel/layer")];
+    let result = with_buffers(backend, &sizes, |backend, b| {
+        let (args, reach, vis, layer) = (b[0], b[1], b[2], b[3]);
+        backend.write_buffer(args, 0, &[3 * mesh.triangles, 1, 0, 0])?;
+        backend.fill(reach, 0, pixels, 0, "peel/reach")?;
+        let view = View::default();
+        let mut params = view.params(&frame, lens.focus_distance, near);
+        params.triangles = mesh.triangles;
+        params.textures = mesh.textures;
+        let shade = shade_params(scene, &mesh, &frame, lens, &view, LAYER);
+        let [v, t, m, tx, tl] = mesh.buffers;
+        let mut times = Vec::new();
+        let mut passes = 0;
+        for k in 0..options.max_layers {
+            params.peel = (k > 0) as u32;
+            draw(backend, &mesh, &params, args, reach, vis, size, &format!("peel/draw {k}"))?;
+            backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &[vis, v, t, m, tx, tl, layer, reach], &push_words(&shade), &format!("peel/shade {k}"))?;
+            times.extend(backend.submit()?);
+            passes += 1;
+            let words = backend.read_buffer(layer, 0, LAYER_WORDS as u64 * pixels)?;
+            let mut found = false;
+            for (p, w) in words.chunks_exact(LAYER_WORDS as usize).enumerate() {
+                let depth = f32::from_bits(w[4]);
+                if depth.is_finite() {
+                    // Each pass keeps fragments strictly beyond the last, so layers arrive in order.
+                    let slot = p * options.max_layers as usize + full.counts[p] as usize;
+                    full.fragments[slot] = Fragment { color: [0, 1, 2].map(|j| f32::from_bits(w[j])), alpha: f32::from_bits(w[3]), depth };
+                    full.counts[p] += 1;
+                    found = true;
+                }
+            }
+            if !found {
+                break;
+            }
+        }
+        Ok((passes, times))
+    });
+    mesh.destroy(backend);
+    let (passes, times) = result?;
+    Ok(Peeled { image: apply_disocclusion(full, &frame, lens, options), passes, times })
+}

@@ -1,0 +1,240 @@
+//! The rasterising draw: every triangle of the mesh once, depth-tested, writing per pixel the
+//! nearest kept fragment as `(triangle + 1, planar depth, b0, b1)` (a visibility buffer; `0` in the
+//! first word is "nothing"). Shading happens afterwards in [`super::shade`], once per pixel.
+//!
+//! A fragment is kept when it lies beyond the near plane, beyond `reach[pixel]` while peeling, and
+//! passes its material's alpha test ([`fragment_kept`]). On Vulkan: [`raster_vs`] pulls the
+//! vertices, [`raster_fs`] tests and writes, the depth attachment keeps the nearest. On the CPU:
+//! [`RASTER_FALLBACK`], a compute rasteriser over 16x16 tiles evaluating the same functions.
+//!
+//! Buffers: vertices, triangles, materials, textures, texels, reach (one f32 a pixel).
+
+use super::mesh::{ALPHA_BLEND, ALPHA_MASK, MATERIAL_WORDS, VERTEX_WORDS};
+use super::project::{RasterParams, clip, cover, edges, fetch, pixel_ndc, triangle};
+use super::texture::{load_f32, sample};
+use crate::exec::{Group, Load, Mem};
+
+/// Pixels per side of a [`RASTER_FALLBACK`] workgroup.
+pub const TILE: u32 = 16;
+/// Words a pixel of the visibility target.
+pub const VIS_WORDS: u32 = 4;
+
+/// Interpolated texture coordinates of triangle `t` at barycentrics `(b0, b1)`.
+pub fn interpolate_uv(vertices: &impl Load, tri: [u32; 4], b0: f32, b1: f32) -> (f32, f32) {
+    let b = [b0, b1, 1.0 - b0 - b1];
+    let (mut u, mut v) = (0.0, 0.0);
+    let mut k = 0;
+    while k < 3 {
+        let at = tri[k] * VERTEX_WORDS;
+        u += b[k] * load_f32(vertices, at + 3);
+        v += b[k] * load_f32(vertices, at + 7);
+        k += 1;
+    }
+    (u, v)
+}
+
+/// The material's coverage at a point: base alpha times the base texture's alpha.
+pub fn coverage(p: &RasterParams, material: u32, uv: (f32, f32), materials: &impl Load, textures: &impl Load, texels: &impl Load) -> f32 {
+    let at = material * MATERIAL_WORDS;
+    let base_texture = materials.load_word(at + 8);
+    load_f32(materials, at + 3) * sample(textures, texels, p.textures, base_texture, uv.0, uv.1)[3]
+}
+
+/// Whether a fragment of triangle `t` at planar depth `depth` is kept (module docs).
+#[allow(clippy::too_many_arguments)]
+pub fn fragment_kept(
+    p: &RasterParams,
+    t: u32,
+    b0: f32,
+    b1: f32,
+    depth: f32,
+    pixel: u32,
+    vertices: &impl Load,
+    triangles: &impl Load,
+    materials: &impl Load,
+    textures: &impl Load,
+    texels: &impl Load,
+    reach: &impl Load,
+) -> bool {
+    if !(depth >= p.near) || (p.peel != 0 && !(depth > load_f32(reach, pixel))) {
+        return false;
+    }
+    let tri = triangle(triangles, t);
+    let flags = materials.load_word(tri[3] * MATERIAL_WORDS + 10);
+    if flags & (ALPHA_MASK | ALPHA_BLEND) == 0 {
+        return true;
+    }
+    let alpha = coverage(p, tri[3], interpolate_uv(vertices, tri, b0, b1), materials, textures, texels);
+    if flags & ALPHA_MASK != 0 {
+        alpha >= load_f32(materials, tri[3] * MATERIAL_WORDS + 7)
+    } else {
+        alpha > 0.0
+    }
+}
+
+/// The CPU stand-in for the draw: each workgroup owns a 16x16 tile and walks every triangle (a
+/// uniform loop), testing only those whose screen bounds meet the tile.
+#[allow(clippy::too_many_arguments)]
+pub fn fallback_pass<G: Group, M: Mem>(
+    g: &mut G,
+    p: &RasterParams,
+    vertices: M,
+    triangles: M,
+    materials: M,
+    textures: M,
+    texels: M,
+    reach: M,
+    _args: M,
+    mut target: M,
+) {
+    let [wx, wy, _] = g.workgroup_id();
+    let (x0, y0) = (wx * TILE, wy * TILE);
+    let mut t = 0;
+    while t < p.triangles {
+        let (v, _, drawn) = fetch(p, t, &vertices, &triangles, &materials);
+        let c = [clip(p, v[0]), clip(p, v[1]), clip(p, v[2])];
+        if drawn && meets_tile(p, &c, x0, y0) {
+            let e = edges(&c);
+            g.each(|lid| {
+                let (x, y) = (x0 + lid % TILE, y0 + lid / TILE);
+                if x >= p.width || y >= p.height {
+                    return;
+                }
+                let (qx, qy) = pixel_ndc(p, x, y);
+                let (b0, b1, depth) = cover(&e, qx, qy);
+                if depth <= 0.0 {
+                    return;
+                }
+                let pi = y * p.width + x;
+                let at = pi * VIS_WORDS;
+                if target.load(at) != 0 && !(depth < f32::from_bits(target.load(at + 1))) {
+                    return;
+                }
+                if fragment_kept(p, t, b0, b1, depth, pi, &vertices, &triangles, &materials, &textures, &texels, &reach) {
+                    target.store(at, ((t + 1) as f32).to_bits());
+                    target.store(at + 1, depth.to_bits());
+                    target.store(at + 2, b0.to_bits());
+                    target.store(at + 3, b1.to_bits());
+                }
+            });
+        }
+        t += 1;
+    }
+}
+
+/// Whether the triangle with clip corners `c` may cover a pixel centre of the tile at `(x0, y0)`:
+/// its screen bounds when every corner is in front of the near plane, else conservatively yes
+/// (unless all corners lie behind it).
+fn meets_tile(p: &RasterParams, c: &[[f32; 3]; 3], x0: u32, y0: u32) -> bool {
+    if c[0][2] < p.near && c[1][2] < p.near && c[2][2] < p.near {
+        return false;
+    }
+    if c[0][2] < p.near || c[1][2] < p.near || c[2][2] < p.near {
+        return true;
+    }
+    let (w, h) = (p.width as f32, p.height as f32);
+    let mut lo = [f32::MAX, f32::MAX];
+    let mut hi = [f32::MIN, f32::MIN];
+    let mut k = 0;
+    while k < 3 {
+        let sx = (c[k][0] / c[k][2] + 1.0) * 0.5 * w;
+        let sy = (c[k][1] / c[k][2] + 1.0) * 0.5 * h;
+        lo = [lo[0].min(sx), lo[1].min(sy)];
+        hi = [hi[0].max(sx), hi[1].max(sy)];
+        k += 1;
+    }
+    // Pixel centres of the tile span [x0 + 0.5, x0 + TILE - 0.5].
+    let (tx0, ty0) = (x0 as f32 + 0.5, y0 as f32 + 0.5);
+    let (tx1, ty1) = (tx0 + (TILE - 1) as f32, ty0 + (TILE - 1) as f32);
+    !(hi[0] < tx0 || lo[0] > tx1 || hi[1] < ty0 || lo[1] > ty1)
+}
+
+kernel!(
+    /// The rasterising draw as a compute kernel: the draw's CPU fallback.
+    RASTER_FALLBACK = raster_fallback [256] (RasterParams) { vertices, triangles, materials, textures, texels, reach, args, target } => fallback_pass
+);
+
+/// Vertex stage: vertex `i` is corner `i % 3` of triangle `i / 3`, pulled from the buffers. A
+/// triangle that is not drawn (degenerate, or a culled back face) goes outside the clip volume.
+#[cfg(target_arch = "spirv")]
+#[spirv_std::spirv(vertex)]
+#[allow(clippy::too_many_arguments)]
+pub fn raster_vs(
+    #[spirv(vertex_index)] vertex: i32,
+    #[spirv(push_constant)] p: &RasterParams,
+    #[spirv(descriptor_set = 0, binding = 0, storage_buffer)] vertices: &[u32],
+    #[spirv(descriptor_set = 0, binding = 1, storage_buffer)] triangles: &[u32],
+    #[spirv(descriptor_set = 0, binding = 2, storage_buffer)] materials: &[u32],
+    #[spirv(position)] position: &mut spirv_std::glam::Vec4,
+    bary: &mut spirv_std::glam::Vec2,
+    depth: &mut f32,
+    #[spirv(flat)] tri: &mut u32,
+) {
+    use crate::exec::GpuRead;
+    let t = vertex as u32 / 3;
+    let corner = vertex as u32 % 3;
+    let (v, _, drawn) = fetch(p, t, &GpuRead(vertices), &GpuRead(triangles), &GpuRead(materials));
+    let c = clip(p, v[corner as usize]);
+    *position = if drawn {
+        spirv_std::glam::Vec4::new(c[0], c[1], p.near, c[2])
+    } else {
+        spirv_std::glam::Vec4::new(2.0, 2.0, 0.5, 1.0)
+    };
+    *bary = spirv_std::glam::Vec2::new(if corner == 0 { 1.0 } else { 0.0 }, if corner == 1 { 1.0 } else { 0.0 });
+    *depth = c[2];
+    *tri = t;
+}
+
+/// Fragment stage: the kept fragment's visibility record; the depth test keeps the nearest.
+#[cfg(target_arch = "spirv")]
+#[spirv_std::spirv(fragment)]
+#[allow(clippy::too_many_arguments)]
+pub fn raster_fs(
+    #[spirv(frag_coord)] coord: spirv_std::glam::Vec4,
+    #[spirv(push_constant)] p: &RasterParams,
+    #[spirv(descriptor_set = 0, binding = 0, storage_buffer)] vertices: &[u32],
+    #[spirv(descriptor_set = 0, binding = 1, storage_buffer)] triangles: &[u32],
+    #[spirv(descriptor_set = 0, binding = 2, storage_buffer)] materials: &[u32],
+    #[spirv(descriptor_set = 0, binding = 3, storage_buffer)] textures: &[u32],
+    #[spirv(descriptor_set = 0, binding = 4, storage_buffer)] texels: &[u32],
+    #[spirv(descriptor_set = 0, binding = 5, storage_buffer)] reach: &[u32],
+    bary: spirv_std::glam::Vec2,
+    depth: f32,
+    #[spirv(flat)] tri: u32,
+    output: &mut spirv_std::glam::Vec4,
+) {
+    use crate::exec::GpuRead;
+    let pixel = coord.y as u32 * p.width + coord.x as u32;
+    let kept = fragment_kept(
+        p,
+        tri,
+        bary.x,
+        bary.y,
+        depth,
+        pixel,
+        &GpuRead(vertices),
+        &GpuRead(triangles),
+        &GpuRead(materials),
+        &GpuRead(textures),
+        &GpuRead(texels),
+        &GpuRead(reach),
+    );
+    if !kept {
+        spirv_std::arch::kill();
+    }
+    *output = spirv_std::glam::Vec4::new((tri + 1) as f32, depth, bary.x, bary.y);
+}
+
+/// The rasterising draw: stages, bindings, push constants and the CPU fallback (bindings: the
+/// draw's six buffers, then the draw command, then the visibility target).
+#[cfg(not(target_arch = "spirv"))]
+pub const RASTER_DRAW: crate::DrawDesc = crate::DrawDesc {
+    vertex: "raster::draw::raster_vs",
+    fragment: "raster::draw::raster_fs",
+    bindings: 6,
+    push_bytes: core::mem::size_of::<RasterParams>() as u32,
+    vertices: 3,
+    fallback: &RASTER_FALLBACK,
+    fallback_tile: TILE,
+    depth_test: true,
+};

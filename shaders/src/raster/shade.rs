@@ -1,0 +1,158 @@
+//! Shading the visibility buffer: per pixel, the kept fragment's radiance, coverage and depth from
+//! the mesh (the lighting model of [`super::mesh`]), written as one layer of the multi-layer image
+//! or added into the accumulation buffer.
+//!
+//! Layer mode also writes `reach[pixel]`, the depth the next peel must pass (seed 000 §4.1): behind
+//! an opaque fragment its umbra (`ThinLens::umbra_length` of the pixel's footprint; infinite once
+//! the footprint covers the aperture), behind a partly covering one nothing more than its depth,
+//! and infinity where nothing was found (nothing lies behind the sky).
+
+use super::draw::{VIS_WORDS, interpolate_uv};
+use super::mesh::{ALPHA_BLEND, Light, MATERIAL_WORDS, UNLIT, VERTEX_WORDS};
+use super::project::{cross, dot, sub, triangle, vertex_position};
+use super::texture::{load_f32, sample};
+use crate::exec::{Group, Load, Mem};
+use crate::lens::{ThinLens, is_finite};
+use crate::math::sqrt;
+use crate::wg::for_each_item;
+
+/// [`ShadeParams::mode`]: write layer `(r, g, b, alpha, depth)` and the next reach.
+pub const LAYER: u32 = 0;
+/// Add `alpha · (r, g, b)` into the accumulation buffer (4 words a pixel).
+pub const ACCUMULATE: u32 = 1;
+/// Words a pixel of a layer.
+pub const LAYER_WORDS: u32 = 5;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct ShadeParams {
+    pub light: Light,
+    /// The eye the pass saw from (normals are turned to face it).
+    pub eye: [f32; 3],
+    pub mode: u32,
+    pub lens: ThinLens,
+    /// Pixel footprint radius per unit of depth (`tan(yfov/2) / height`).
+    pub footprint_per_depth: f32,
+    pub width: u32,
+    pub height: u32,
+    pub textures: u32,
+}
+
+const _: () = assert!(core::mem::size_of::<ShadeParams>() <= 128);
+
+fn normalize(v: [f32; 3]) -> [f32; 3] {
+    let l = sqrt(dot(v, v));
+    if l > 0.0 { [v[0] / l, v[1] / l, v[2] / l] } else { v }
+}
+
+/// Radiance and coverage of triangle `t` at barycentrics `(b0, b1)` seen from `eye`.
+#[allow(clippy::too_many_arguments)]
+pub fn shade_point(
+    light: &Light,
+    eye: [f32; 3],
+    texture_count: u32,
+    t: u32,
+    b0: f32,
+    b1: f32,
+    vertices: &impl Load,
+    triangles: &impl Load,
+    materials: &impl Load,
+    textures: &impl Load,
+    texels: &impl Load,
+) -> ([f32; 3], f32) {
+    let tri = triangle(triangles, t);
+    let b = [b0, b1, 1.0 - b0 - b1];
+    let v = [vertex_position(vertices, tri[0]), vertex_position(vertices, tri[1]), vertex_position(vertices, tri[2])];
+    let mut position = [0.0; 3];
+    let mut normal = [0.0; 3];
+    let mut k = 0;
+    while k < 3 {
+        let at = tri[k] * VERTEX_WORDS;
+        let mut j = 0;
+        while j < 3 {
+            position[j] += b[k] * v[k][j];
+            normal[j] += b[k] * load_f32(vertices, at + 4 + j as u32);
+            j += 1;
+        }
+        k += 1;
+    }
+    let face = cross(sub(v[1], v[0]), sub(v[2], v[0]));
+    let mut n = if dot(normal, normal) > 0.0 { normalize(normal) } else { normalize(face) };
+    // Turned to face the viewer, judged by the true surface (the face), as the analytic scenes do.
+    if dot(face, sub(position, eye)) > 0.0 {
+        n = [-n[0], -n[1], -n[2]];
+    }
+    let uv = interpolate_uv(vertices, tri, b0, b1);
+    let at = tri[3] * MATERIAL_WORDS;
+    let base_tex = sample(textures, texels, texture_count, materials.load_word(at + 8), uv.0, uv.1);
+    let emit_tex = sample(textures, texels, texture_count, materials.load_word(at + 9), uv.0, uv.1);
+    let flags = materials.load_word(at + 10);
+    let lambert = dot(n, light.direction).max(0.0);
+    let mut rgb = [0.0; 3];
+    let mut j = 0;
+    while j < 3 {
+        let base = load_f32(materials, at + j as u32) * base_tex[j];
+        let lit = if flags & UNLIT != 0 { base } else { base * (light.ambient[j] + light.color[j] * lambert) };
+        rgb[j] = lit + load_f32(materials, at + 4 + j as u32) * emit_tex[j];
+        j += 1;
+    }
+    let alpha = if flags & ALPHA_BLEND != 0 { (load_f32(materials, at + 3) * base_tex[3]).clamp(0.0, 1.0) } else { 1.0 };
+    (rgb, alpha)
+}
+
+#[allow(clippy::too_many_arguments)]
+pub fn shade_pass<G: Group, M: Mem>(
+    g: &mut G,
+    p: &ShadeParams,
+    vis: M,
+    vertices: M,
+    triangles: M,
+    materials: M,
+    textures: M,
+    texels: M,
+    mut out: M,
+    mut reach: M,
+) {
+    for_each_item(g, p.width * p.height, |pi| {
+        let at = pi * VIS_WORDS;
+        let id = f32::from_bits(vis.load(at)) as u32;
+        let found = id > 0;
+        let (rgb, alpha, depth) = if found {
+            let (b0, b1) = (f32::from_bits(vis.load(at + 2)), f32::from_bits(vis.load(at + 3)));
+            let (rgb, alpha) = shade_point(&p.light, p.eye, p.textures, id - 1, b0, b1, &vertices, &triangles, &materials, &textures, &texels);
+            (rgb, alpha, f32::from_bits(vis.load(at + 1)))
+        } else {
+            ([0.0; 3], 0.0, f32::INFINITY)
+        };
+        if p.mode == ACCUMULATE {
+            let mut j = 0usize;
+            while j < 3 {
+                let i = 4 * pi + j as u32;
+                out.store(i, (f32::from_bits(out.load(i)) + alpha * rgb[j]).to_bits());
+                j += 1;
+            }
+            return;
+        }
+        let o = pi * LAYER_WORDS;
+        out.store(o, rgb[0].to_bits());
+        out.store(o + 1, rgb[1].to_bits());
+        out.store(o + 2, rgb[2].to_bits());
+        out.store(o + 3, alpha.to_bits());
+        out.store(o + 4, depth.to_bits());
+        let next = if !found {
+            f32::INFINITY
+        } else if alpha < 1.0 {
+            depth
+        } else {
+            let umbra = p.lens.umbra_length(depth, depth * p.footprint_per_depth);
+            let r = depth + umbra;
+            if is_finite(r) { r } else { f32::INFINITY }
+        };
+        reach.store(pi, next.to_bits());
+    });
+}
+
+kernel!(
+    /// Shades the visibility buffer into a layer (and the next reach) or the accumulation buffer.
+    RASTER_SHADE = raster_shade [256] (ShadeParams) { vis, vertices, triangles, materials, textures, texels, out, reach } => shade_pass
+);

@@ -6,7 +6,7 @@
 //! (nothing behind it is added), so the reference is exact for opaque and masked materials.
 
 use super::mesh::{DeviceMesh, RasterScene};
-use super::peel::{check_view, draw, shade_params};
+use super::peel::{Pass, check_view, shade_params};
 use super::view::View;
 use crate::backend::{Backend, CommandTime, push_words, with_buffers};
 use crate::error::{Error, Result};
@@ -15,7 +15,6 @@ use crate::methods::buffers::groups_for;
 use crate::scene::Camera;
 use crate::scene::sampling::{concentric_disc, pixel_rng, stratified};
 use dof_shaders::lens::ThinLens;
-use dof_shaders::raster::draw::VIS_WORDS;
 use dof_shaders::raster::shade::{ACCUMULATE, RASTER_SHADE};
 use indicatif::{ProgressBar, ProgressStyle};
 
@@ -81,11 +80,11 @@ pub fn accumulate(
         }
         bar
     });
-    let sizes = [(4, "accum/args"), (1, "accum/reach"), (VIS_WORDS as u64 * pixels, "accum/vis"), (4 * pixels, "accum/sum")];
+    let mut sizes = Pass::sizes(&mesh, pixels, 1).to_vec();
+    sizes.push((4 * pixels, "accum/sum"));
     let result = with_buffers(backend, &sizes, |backend, b| {
-        let (args, reach, vis, sum) = (b[0], b[1], b[2], b[3]);
-        backend.write_buffer(args, 0, &[3 * mesh.triangles, 1, 0, 0])?;
-        backend.fill(reach, 0, 1, 0, "accum/reach")?;
+        let pass = Pass::new(backend, &mesh, b, 1)?;
+        let sum = b[4];
         backend.fill(sum, 0, 4 * pixels, 0, "accum/sum")?;
         let [v, t, m, tx, tl] = mesh.buffers;
         let mut times = Vec::new();
@@ -93,9 +92,10 @@ pub fn accumulate(
             let mut params = view.params(&frame, lens.focus_distance, near);
             params.triangles = mesh.triangles;
             params.textures = mesh.textures;
-            draw(backend, &mesh, &params, args, reach, vis, size, "accum/draw")?;
+            pass.draw(backend, &mesh, &params, size, "accum/draw")?;
             let shade = shade_params(scene, &mesh, &frame, lens, view, ACCUMULATE);
-            backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &[vis, v, t, m, tx, tl, sum, reach], &push_words(&shade), "accum/shade")?;
+            let bound = [pass.vis, v, t, m, tx, tl, sum, pass.reach];
+            backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &bound, &push_words(&shade), "accum/shade")?;
             if (i + 1) % options.batch.max(1) as usize == 0 || i + 1 == views.len() {
                 times.extend(backend.submit()?);
                 if let Some(bar) = &bar {

@@ -18,7 +18,8 @@ use crate::layers::{Fragment, LayeredImage};
 use crate::methods::buffers::groups_for;
 use crate::scene::{Camera, LayerOptions, MultiLayerImage, apply_disocclusion};
 use dof_shaders::lens::ThinLens;
-use dof_shaders::raster::draw::{RASTER_DRAW, VIS_WORDS};
+use dof_shaders::raster::draw::{RASTER_DRAW, RASTER_SETUP, VIS_WORDS};
+use dof_shaders::raster::project::RasterParams;
 use dof_shaders::raster::shade::{LAYER, LAYER_WORDS, RASTER_SHADE, ShadeParams};
 
 /// The peeled image and what it cost.
@@ -58,20 +59,36 @@ pub(crate) fn shade_params(scene: &RasterScene, mesh: &DeviceMesh, frame: &crate
     }
 }
 
-/// Draws the mesh once into `vis` (the draw command in `args`).
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn draw(
-    backend: &mut dyn Backend,
-    mesh: &DeviceMesh,
-    params: &dof_shaders::raster::project::RasterParams,
-    args: BufferId,
-    reach: BufferId,
-    vis: BufferId,
-    size: [u32; 2],
-    label: &str,
-) -> Result<()> {
-    let [v, t, m, tx, tl] = mesh.buffers;
-    backend.draw_indirect(&RASTER_DRAW, args, &[v, t, m, tx, tl, reach], vis, size, &push_words(params), label)
+/// The buffers every raster pass draws with besides the mesh: the draw command, the reach, the
+/// triangles' tile ranges and the visibility target.
+pub(crate) struct Pass {
+    pub args: BufferId,
+    pub reach: BufferId,
+    pub bounds: BufferId,
+    pub vis: BufferId,
+}
+
+impl Pass {
+    /// Sizes for [`with_buffers`]; the reach holds `reach_words` (1 when not peeling).
+    pub fn sizes(mesh: &DeviceMesh, pixels: u64, reach_words: u64) -> [(u64, &'static str); 4] {
+        [(4, "raster/args"), (reach_words, "raster/reach"), (4 * mesh.triangles as u64, "raster/bounds"), (VIS_WORDS as u64 * pixels, "raster/vis")]
+    }
+
+    pub fn new(backend: &mut dyn Backend, mesh: &DeviceMesh, b: &[BufferId], reach_words: u64) -> Result<Self> {
+        let pass = Pass { args: b[0], reach: b[1], bounds: b[2], vis: b[3] };
+        backend.write_buffer(pass.args, 0, &[3 * mesh.triangles, 1, 0, 0])?;
+        backend.fill(pass.reach, 0, reach_words, 0, "raster/reach")?;
+        Ok(pass)
+    }
+
+    /// Draws the mesh once into `vis`: the triangles' tile ranges for this view (which only the
+    /// CPU fallback reads), then the draw.
+    pub fn draw(&self, backend: &mut dyn Backend, mesh: &DeviceMesh, params: &RasterParams, size: [u32; 2], label: &str) -> Result<()> {
+        let [v, t, m, tx, tl] = mesh.buffers;
+        let push = push_words(params);
+        backend.dispatch(&RASTER_SETUP, groups_for(&RASTER_SETUP, mesh.triangles as u64), &[v, t, m, self.bounds], &push, label)?;
+        backend.draw_indirect(&RASTER_DRAW, self.args, &[v, t, m, tx, tl, self.reach, self.bounds], self.vis, size, &push, label)
+    }
 }
 
 /// Peels `scene` seen by `camera` through `lens` into a partial multi-layer image (module docs).
@@ -95,11 +112,11 @@ pub fn peel_layers(
     let pixels = frame.width as u64 * frame.height as u64;
     let size = [frame.width, frame.height];
     let mesh = DeviceMesh::upload(backend, scene)?;
-    let sizes = [(4, "peel/args"), (pixels, "peel/reach"), (VIS_WORDS as u64 * pixels, "peel/vis"), (LAYER_WORDS as u64 * pixels, "peel/layer")];
+    let mut sizes = Pass::sizes(&mesh, pixels, pixels).to_vec();
+    sizes.push((LAYER_WORDS as u64 * pixels, "peel/layer"));
     let result = with_buffers(backend, &sizes, |backend, b| {
-        let (args, reach, vis, layer) = (b[0], b[1], b[2], b[3]);
-        backend.write_buffer(args, 0, &[3 * mesh.triangles, 1, 0, 0])?;
-        backend.fill(reach, 0, pixels, 0, "peel/reach")?;
+        let pass = Pass::new(backend, &mesh, b, pixels)?;
+        let layer = b[4];
         let view = View::default();
         let mut params = view.params(&frame, lens.focus_distance, near);
         params.triangles = mesh.triangles;
@@ -110,8 +127,9 @@ pub fn peel_layers(
         let mut passes = 0;
         for k in 0..options.max_layers {
             params.peel = (k > 0) as u32;
-            draw(backend, &mesh, &params, args, reach, vis, size, &format!("peel/draw {k}"))?;
-            backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &[vis, v, t, m, tx, tl, layer, reach], &push_words(&shade), &format!("peel/shade {k}"))?;
+            pass.draw(backend, &mesh, &params, size, &format!("peel/draw {k}"))?;
+            let bound = [pass.vis, v, t, m, tx, tl, layer, pass.reach];
+            backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &bound, &push_words(&shade), &format!("peel/shade {k}"))?;
             times.extend(backend.submit()?);
             passes += 1;
             let words = backend.read_buffer(layer, 0, LAYER_WORDS as u64 * pixels)?;

@@ -13,6 +13,8 @@ use super::mesh::{ALPHA_BLEND, ALPHA_MASK, MATERIAL_WORDS, VERTEX_WORDS};
 use super::project::{RasterParams, clip, cover, edges, fetch, pixel_ndc, triangle};
 use super::texture::{load_f32, sample};
 use crate::exec::{Group, Load, Mem};
+use crate::math::{ceil, floor};
+use crate::wg::for_each_item;
 
 /// Pixels per side of a [`RASTER_FALLBACK`] workgroup.
 pub const TILE: u32 = 16;
@@ -72,8 +74,23 @@ pub fn fragment_kept(
     }
 }
 
+/// Each triangle's conservative tile range for this view ([`tile_bounds`]): the CPU stand-in reads
+/// it instead of projecting every triangle once per tile. (The graphics pipeline ignores it.)
+pub fn setup_pass<G: Group, M: Mem>(g: &mut G, p: &RasterParams, vertices: M, triangles: M, materials: M, mut bounds: M) {
+    for_each_item(g, p.triangles, |t| {
+        let (v, _, drawn) = fetch(p, t, &vertices, &triangles, &materials);
+        let c = [clip(p, v[0]), clip(p, v[1]), clip(p, v[2])];
+        let b = if drawn { tile_bounds(p, &c) } else { [1, 1, 0, 0] };
+        let mut k = 0;
+        while k < 4 {
+            bounds.store(4 * t + k, b[k as usize]);
+            k += 1;
+        }
+    });
+}
+
 /// The CPU stand-in for the draw: each workgroup owns a 16x16 tile and walks every triangle (a
-/// uniform loop), testing only those whose screen bounds meet the tile.
+/// uniform loop), rasterising those whose tile range holds it.
 #[allow(clippy::too_many_arguments)]
 pub fn fallback_pass<G: Group, M: Mem>(
     g: &mut G,
@@ -84,6 +101,7 @@ pub fn fallback_pass<G: Group, M: Mem>(
     textures: M,
     texels: M,
     reach: M,
+    bounds: M,
     _args: M,
     mut target: M,
 ) {
@@ -91,10 +109,10 @@ pub fn fallback_pass<G: Group, M: Mem>(
     let (x0, y0) = (wx * TILE, wy * TILE);
     let mut t = 0;
     while t < p.triangles {
-        let (v, _, drawn) = fetch(p, t, &vertices, &triangles, &materials);
-        let c = [clip(p, v[0]), clip(p, v[1]), clip(p, v[2])];
-        if drawn && meets_tile(p, &c, x0, y0) {
-            let e = edges(&c);
+        let meets = wx >= bounds.load(4 * t) && wy >= bounds.load(4 * t + 1) && wx <= bounds.load(4 * t + 2) && wy <= bounds.load(4 * t + 3);
+        if meets {
+            let (v, _, _) = fetch(p, t, &vertices, &triangles, &materials);
+            let e = edges(&[clip(p, v[0]), clip(p, v[1]), clip(p, v[2])]);
             g.each(|lid| {
                 let (x, y) = (x0 + lid % TILE, y0 + lid / TILE);
                 if x >= p.width || y >= p.height {
@@ -122,15 +140,17 @@ pub fn fallback_pass<G: Group, M: Mem>(
     }
 }
 
-/// Whether the triangle with clip corners `c` may cover a pixel centre of the tile at `(x0, y0)`:
-/// its screen bounds when every corner is in front of the near plane, else conservatively yes
-/// (unless all corners lie behind it).
-fn meets_tile(p: &RasterParams, c: &[[f32; 3]; 3], x0: u32, y0: u32) -> bool {
-    if c[0][2] < p.near && c[1][2] < p.near && c[2][2] < p.near {
-        return false;
+/// The tiles `[tx0, ty0, tx1, ty1]` (inclusive) whose pixel centres the triangle with clip corners
+/// `c` may cover: from its screen bounds when every corner is in front of the near plane, every
+/// tile when some corner is not, none (`tx0 > tx1`) when all lie behind it or it misses the image.
+fn tile_bounds(p: &RasterParams, c: &[[f32; 3]; 3]) -> [u32; 4] {
+    let tiles = [p.width.div_ceil(TILE), p.height.div_ceil(TILE)];
+    let behind = [c[0][2] < p.near, c[1][2] < p.near, c[2][2] < p.near];
+    if behind[0] && behind[1] && behind[2] {
+        return [1, 1, 0, 0];
     }
-    if c[0][2] < p.near || c[1][2] < p.near || c[2][2] < p.near {
-        return true;
+    if behind[0] || behind[1] || behind[2] {
+        return [0, 0, tiles[0] - 1, tiles[1] - 1];
     }
     let (w, h) = (p.width as f32, p.height as f32);
     let mut lo = [f32::MAX, f32::MAX];
@@ -143,15 +163,28 @@ fn meets_tile(p: &RasterParams, c: &[[f32; 3]; 3], x0: u32, y0: u32) -> bool {
         hi = [hi[0].max(sx), hi[1].max(sy)];
         k += 1;
     }
-    // Pixel centres of the tile span [x0 + 0.5, x0 + TILE - 0.5].
-    let (tx0, ty0) = (x0 as f32 + 0.5, y0 as f32 + 0.5);
-    let (tx1, ty1) = (tx0 + (TILE - 1) as f32, ty0 + (TILE - 1) as f32);
-    !(hi[0] < tx0 || lo[0] > tx1 || hi[1] < ty0 || lo[1] > ty1)
+    // Pixel centres sit at i + 0.5: the first centre at or right of `lo` is ceil(lo - 0.5).
+    if !(hi[0] >= 0.5 && hi[1] >= 0.5 && lo[0] <= w - 0.5 && lo[1] <= h - 0.5) {
+        return [1, 1, 0, 0];
+    }
+    let first = |v: f32| ceil(v - 0.5).max(0.0) as u32;
+    let last = |v: f32, n: u32| (floor(v - 0.5).max(0.0) as u32).min(n - 1);
+    [
+        first(lo[0]) / TILE,
+        first(lo[1]) / TILE,
+        last(hi[0], p.width) / TILE,
+        last(hi[1], p.height) / TILE,
+    ]
 }
 
 kernel!(
+    /// Every triangle's tile range for the view: the draw's CPU fallback reads it.
+    RASTER_SETUP = raster_setup [64] (RasterParams) { vertices, triangles, materials, bounds } => setup_pass
+);
+
+kernel!(
     /// The rasterising draw as a compute kernel: the draw's CPU fallback.
-    RASTER_FALLBACK = raster_fallback [256] (RasterParams) { vertices, triangles, materials, textures, texels, reach, args, target } => fallback_pass
+    RASTER_FALLBACK = raster_fallback [256] (RasterParams) { vertices, triangles, materials, textures, texels, reach, bounds, args, target } => fallback_pass
 );
 
 /// Vertex stage: vertex `i` is corner `i % 3` of triangle `i / 3`, pulled from the buffers. A
@@ -226,12 +259,12 @@ pub fn raster_fs(
 }
 
 /// The rasterising draw: stages, bindings, push constants and the CPU fallback (bindings: the
-/// draw's six buffers, then the draw command, then the visibility target).
+/// draw's seven buffers, then the draw command, then the visibility target).
 #[cfg(not(target_arch = "spirv"))]
 pub const RASTER_DRAW: crate::DrawDesc = crate::DrawDesc {
     vertex: "raster::draw::raster_vs",
     fragment: "raster::draw::raster_fs",
-    bindings: 6,
+    bindings: 7,
     push_bytes: core::mem::size_of::<RasterParams>() as u32,
     vertices: 3,
     fallback: &RASTER_FALLBACK,

@@ -14,4 +14,4 @@ pub mod shade;
 pub mod texture;
 
 #[cfg(not(target_arch = "spirv"))]
-pub const KERNELS: [&crate::KernelDesc; 2] = [&draw::RASTER_FALLBACK, &shade::RASTER_SHADE];
+pub const KERNELS: [&crate::KernelDesc; 3] = [&draw::RASTER_SETUP, &draw::RASTER_FALLBACK, &shade::RASTER_SHADE];

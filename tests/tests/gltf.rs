@@ -448,3 +448,61 @@ fn lights_and_ambient() {
     let err = load_doc(&doc).unwrap_err().to_string();
     assert!(err.contains("dof_ambient"), "{err}");
 }
+
+/// Splits a GLB into its JSON and binary chunk.
+fn split_glb(glb: &[u8]) -> (Value, Vec<u8>) {
+    let word = |at: usize| u32::from_le_bytes(glb[at..at + 4].try_into().unwrap()) as usize;
+    let json_len = word(12);
+    let json = serde_json::from_slice(&glb[20..20 + json_len]).unwrap();
+    let bin_at = 20 + json_len;
+    (json, glb[bin_at + 8..bin_at + 8 + word(bin_at)].to_vec())
+}
+
+/// Joins JSON and a binary chunk into a GLB.
+fn join_glb(json: &Value, bin: &[u8]) -> Vec<u8> {
+    let mut j = serde_json::to_vec(json).unwrap();
+    while j.len() % 4 != 0 {
+        j.push(b' ');
+    }
+    let mut out = b"glTF".to_vec();
+    out.extend(2u32.to_le_bytes());
+    out.extend(((28 + j.len() + bin.len()) as u32).to_le_bytes());
+    out.extend((j.len() as u32).to_le_bytes());
+    out.extend(b"JSON");
+    out.extend(j);
+    out.extend((bin.len() as u32).to_le_bytes());
+    out.extend(b"BIN\0");
+    out.extend(bin);
+    out
+}
+
+/// Expectation: material flags and sampler bits follow the file: unlit, mask with its cutoff,
+/// blend, single-sided; a linear-magnification, clamp/mirror sampler; a texture naming texCoord 1
+/// uses set 0 and is counted; an emissive texture is decoded; the same image used twice with the
+/// same sampler shares one texture.
+#[test]
+fn material_flags_and_samplers_follow_the_file() {
+    use dof_shaders::raster::mesh::{ALPHA_BLEND, ALPHA_MASK, UNLIT, WRAP_CLAMP, WRAP_MIRROR};
+    let (mut doc, bin) = split_glb(&export_builtin_glb("railing", W, H).unwrap());
+    let m0 = &mut doc["materials"][0];
+    m0["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = json!(1);
+    m0["extensions"] = json!({ "KHR_materials_unlit": {} });
+    m0["alphaMode"] = json!("MASK");
+    m0["alphaCutoff"] = json!(0.25);
+    m0["doubleSided"] = json!(false);
+    m0["emissiveTexture"] = json!({ "index": 0 });
+    doc["materials"][2]["alphaMode"] = json!("BLEND");
+    doc["samplers"][0] = json!({ "magFilter": 9729, "wrapS": 33071, "wrapT": 33648 });
+    doc["extensionsUsed"] = json!(["KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_unlit"]);
+    let m = load_gltf_slice(&join_glb(&doc, &bin)).unwrap();
+    assert_eq!(m.report.unsupported_texcoords, 1);
+    let mat = m.materials[0];
+    assert_eq!(mat.flags, UNLIT | ALPHA_MASK);
+    assert_eq!(mat.alpha_cutoff, 0.25);
+    assert_eq!(mat.emissive_texture, mat.base_texture, "same image, same sampler: one texture");
+    assert_eq!(m.materials[2].flags, ALPHA_BLEND | DOUBLE_SIDED);
+    let t = m.textures[mat.base_texture as usize];
+    assert_eq!(t.sampler, (WRAP_CLAMP << WRAP_S_SHIFT) | (WRAP_MIRROR << WRAP_T_SHIFT));
+    // Two checker materials in `railing`, one image each: 8 texels.
+    assert_eq!(m.texels.len(), 8);
+}

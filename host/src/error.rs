@@ -26,6 +26,9 @@ pub enum Error {
     InvalidArgument(String),
     #[error("cannot draw a plot: {0}")]
     Plot(String),
+    /// A scene file that cannot be read or used (malformed, missing parts, out-of-range data).
+    #[error("scene: {0}")]
+    Scene(String),
 }
 
 pub type Result<T> = std::result::Result<T, Error>;

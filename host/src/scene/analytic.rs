@@ -245,7 +245,7 @@ fn bounds(shape: &Shape) -> Option<Aabb> {
 }
 
 /// Two tangent directions of a plane with normal `n`.
-fn tangents(n: Vec3) -> (Vec3, Vec3) {
+pub(crate) fn tangents(n: Vec3) -> (Vec3, Vec3) {
     let n = n.normalize();
     let helper = if n.y.abs() < 0.9 { Vec3::Y } else { Vec3::X };
     let t = helper.cross(n).normalize();
@@ -253,7 +253,7 @@ fn tangents(n: Vec3) -> (Vec3, Vec3) {
 }
 
 /// Surface coordinates in scene units for checker textures.
-fn surface_coords(shape: &Shape, p: Vec3, normal: Vec3) -> (f32, f32) {
+pub(crate) fn surface_coords(shape: &Shape, p: Vec3, normal: Vec3) -> (f32, f32) {
     match *shape {
         Shape::Sphere { center, radius } => {
             let d = (p - center) / radius;

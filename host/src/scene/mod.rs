@@ -8,6 +8,9 @@
 //! - [`raycast`]: the exact partial multi-layer image (umbra threshold, disocclusion buffer);
 //! - [`reference`](mod@reference): thin-lens distributed ray tracing (the ground truth) and the pinhole image;
 //! - [`bvh`]: the bounding-volume hierarchy that keeps ray casts cheap;
+//! - [`mesh`]: triangle scenes ([`MeshScene`]) as the rasteriser draws them;
+//! - [`gltf_load`]: glTF 2.0 files into a [`MeshScene`];
+//! - [`gltf_export`]: analytic scenes out as binary glTF, for rasterising what ray casting renders;
 //! - [`sampling`]: stratified lens/pixel samples and the concentric disc mapping.
 //!
 //! The lens models themselves live in the kernel crate ([`dof_shaders::lens`]) so the kernels
@@ -17,7 +20,10 @@ pub mod analytic;
 pub mod builtin;
 pub mod bvh;
 pub mod camera;
+pub mod gltf_export;
+pub mod gltf_load;
 pub mod lens;
+pub mod mesh;
 pub mod raycast;
 pub mod reference;
 pub mod sampling;
@@ -25,9 +31,12 @@ pub mod sampling;
 pub use analytic::{Albedo, Hit, Lighting, Material, Primitive, Scene, Shape};
 pub use builtin::{BuiltinScene, builtin, builtin_names};
 pub use camera::{Camera, CameraFrame, Ray};
+pub use gltf_export::{ExportOptions, export_builtin_glb, export_glb};
+pub use gltf_load::{load_gltf, load_gltf_slice};
 pub use dof_shaders::lens::{ArtistLens, ThinLens};
 /// The vector type of the scene API (so users need not depend on `glam` themselves).
 pub use glam::Vec3;
+pub use mesh::{LoadReport, MeshCamera, MeshScene};
 pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
 pub use raycast::{LayerOptions, MultiLayerImage, apply_disocclusion, raycast_layers};
 pub use reference::{AutoOptions, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};

@@ -1,0 +1,520 @@
+//! Loads glTF 2.0 files (`.gltf` with external or embedded data, `.glb`) into a [`MeshScene`].
+//!
+//! The `gltf` crate parses and validates the document; buffers and images are resolved here rather
+//! than by its importer, so that every failure is an error naming the file or part at fault (the
+//! importer cannot read embedded images from a slice and can panic on malformed references), and
+//! accessors are checked before they are read.
+//!
+//! What is used:
+//! - the default scene (else the first), its whole node hierarchy with world transforms; normals by
+//!   the inverse transpose, renormalised; a mirroring transform (negative determinant) reverses the
+//!   winding so front faces stay front;
+//! - triangle lists, strips and fans (points and lines are skipped and counted), indexed or not;
+//!   `POSITION` (required), `NORMAL` and `TEXCOORD_0` (zero when absent);
+//! - materials: base colour factor and texture (sRGB), emissive factor × `KHR_materials_emissive_strength`
+//!   and texture (sRGB), `KHR_materials_unlit`, `doubleSided`, alpha mode and cutoff; glTF's default
+//!   material for primitives without one; textures naming a coordinate set other than 0 use set 0
+//!   (counted);
+//! - perspective cameras of the scene's nodes (orthographic ones are skipped and counted);
+//! - lighting: the first `KHR_lights_punctual` directional light met in the scene (depth first)
+//!   gives the direction towards the light (its node's local +Z in world space) and colour ×
+//!   intensity; the scene's extras key `"dof_ambient": [r, g, b]` gives the ambient term, else
+//!   [`Lighting::default`]'s. Without a directional light the lighting is [`Lighting::default`].
+//!   Other lights are counted as ignored.
+//!
+//! Zero-area triangles are dropped and counted (see [`super::mesh`]). Errors, never panics:
+//! malformed JSON or GLB, missing or unreadable files (named), bad accessors, indices out of range,
+//! non-finite data (naming the mesh), no triangles at all, too many triangles or texels.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use dof_shaders::raster::mesh::{
+    ALPHA_BLEND, ALPHA_MASK, DOUBLE_SIDED, MeshMaterial, MeshVertex, NEAREST, TextureInfo, UNLIT, WRAP_CLAMP, WRAP_MIRROR,
+    WRAP_REPEAT, WRAP_S_SHIFT, WRAP_T_SHIFT,
+};
+use glam::{Mat3, Mat4, Vec3};
+use gltf::accessor::{DataType, Dimensions};
+use gltf::mesh::Mode;
+
+use super::analytic::Lighting;
+use super::mesh::{LoadReport, MAX_TEXELS, MAX_TRIANGLES, MeshCamera, MeshScene, zero_area};
+use crate::error::{Error, Result};
+
+fn scene_err(m: impl Into<String>) -> Error {
+    Error::Scene(m.into())
+}
+
+/// Loads a `.gltf` or `.glb` file; external buffers and images are read relative to its folder.
+pub fn load_gltf(path: &Path) -> Result<MeshScene> {
+    let bytes = std::fs::read(path).map_err(|e| scene_err(format!("cannot read the glTF file `{}`: {e}", path.display())))?;
+    let base = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    load(&bytes, Some(&base)).map_err(|e| match e {
+        Error::Scene(m) => Error::Scene(format!("{}: {m}", path.display())),
+        other => other,
+    })
+}
+
+/// Loads glTF from memory (`.glb`, or `.gltf` JSON whose buffers and images are embedded as data
+/// URIs or in the GLB's binary chunk); a reference to an external file is an error.
+pub fn load_gltf_slice(bytes: &[u8]) -> Result<MeshScene> {
+    load(bytes, None)
+}
+
+fn load(bytes: &[u8], base: Option<&Path>) -> Result<MeshScene> {
+    let gltf::Gltf { document, blob } = gltf::Gltf::from_slice(bytes).map_err(|e| {
+        scene_err(format!("not a valid glTF 2.0 file ({e}); expected glTF JSON or a complete binary .glb"))
+    })?;
+    let buffers = read_buffers(&document, base, blob)?;
+    let mut loader = Loader { doc: &document, base, buffers, images: HashMap::new(), textures: HashMap::new(), materials: HashMap::new(), out: empty() };
+    let scene = document.default_scene().or_else(|| document.scenes().next()).ok_or_else(|| {
+        scene_err("the glTF file holds no scene, so no triangles; add a scene whose nodes hold meshes")
+    })?;
+    loader.out.lighting.ambient = ambient(&scene)?;
+    let mut light_found = false;
+    // Depth first with an explicit stack (no recursion limit on deep files); a node reached twice
+    // means the hierarchy is not a tree.
+    let mut seen = vec![false; document.nodes().len()];
+    let mut stack: Vec<(gltf::Node, Mat4)> = scene.nodes().map(|n| (n, Mat4::IDENTITY)).collect();
+    stack.reverse();
+    while let Some((node, parent)) = stack.pop() {
+        if std::mem::replace(&mut seen[node.index()], true) {
+            return Err(scene_err(format!("node {} is reached twice; a glTF node hierarchy must be a tree", node.index())));
+        }
+        let world = parent * Mat4::from_cols_array_2d(&node.transform().matrix());
+        if !world.is_finite() {
+            return Err(scene_err(format!("node {} has a non-finite world transform", node.index())));
+        }
+        if let Some(mesh) = node.mesh() {
+            loader.mesh(&mesh, &world)?;
+        }
+        if let Some(camera) = node.camera() {
+            loader.camera(&camera, &world);
+        }
+        if let Some(light) = node.light() {
+            if !light_found && matches!(light.kind(), gltf::khr_lights_punctual::Kind::Directional) {
+                light_found = true;
+                let direction = world.transform_vector3(Vec3::Z).normalize_or_zero();
+                let color = light.color().map(|c| c * light.intensity());
+                if direction == Vec3::ZERO || !color.iter().all(|c| c.is_finite() && *c >= 0.0) {
+                    return Err(scene_err(format!(
+                        "the directional light of node {} needs a non-degenerate transform and a finite, non-negative colour and intensity",
+                        node.index()
+                    )));
+                }
+                loader.out.lighting.direction = direction;
+                loader.out.lighting.color = color;
+            } else {
+                loader.out.report.ignored_lights += 1;
+            }
+        }
+        let first_child = stack.len();
+        stack.extend(node.children().map(|c| (c, world)));
+        stack[first_child..].reverse();
+    }
+    if loader.out.triangles.is_empty() {
+        return Err(scene_err("the glTF file holds no triangles: its scene has no triangle primitives (or only zero-area ones)"));
+    }
+    loader.out.validate()?;
+    Ok(loader.out)
+}
+
+fn empty() -> MeshScene {
+    MeshScene {
+        vertices: vec![],
+        triangles: vec![],
+        materials: vec![],
+        textures: vec![],
+        texels: vec![],
+        lighting: Lighting::default(),
+        cameras: vec![],
+        report: LoadReport::default(),
+    }
+}
+
+/// The ambient term from the scene's extras (`"dof_ambient": [r, g, b]`), else the default.
+fn ambient(scene: &gltf::Scene) -> Result<[f32; 3]> {
+    let default = Lighting::default().ambient;
+    let Some(raw) = scene.extras() else { return Ok(default) };
+    let value: serde_json::Value = serde_json::from_str(raw.get()).map_err(|e| scene_err(format!("the scene's extras are not valid JSON: {e}")))?;
+    let Some(v) = value.get("dof_ambient") else { return Ok(default) };
+    let parsed = v.as_array().filter(|a| a.len() == 3).and_then(|a| {
+        let c: Vec<f32> = a.iter().filter_map(|x| x.as_f64()).map(|x| x as f32).filter(|x| x.is_finite() && *x >= 0.0).collect();
+        <[f32; 3]>::try_from(c).ok()
+    });
+    parsed.ok_or_else(|| scene_err(format!("the scene's extras key `dof_ambient` must be [r, g, b] with finite, non-negative numbers, got {v}")))
+}
+
+/// Reads a URI's bytes: a base64 data URI, or a file relative to `base` (percent-decoded).
+fn read_uri(uri: &str, base: Option<&Path>, what: &str) -> Result<Vec<u8>> {
+    if let Some(rest) = uri.strip_prefix("data:") {
+        let (_, data) = rest.split_once(";base64,").ok_or_else(|| {
+            scene_err(format!("{what} has a data URI that is not base64 (`data:...;base64,...` is required)"))
+        })?;
+        return base64_decode(data).ok_or_else(|| scene_err(format!("{what} has a data URI with invalid base64")));
+    }
+    let relative = match uri.strip_prefix("file://").or_else(|| uri.strip_prefix("file:")) {
+        Some(p) => PathBuf::from(percent_decode(p, what)?),
+        None if uri.contains(':') => {
+            return Err(scene_err(format!("{what} refers to `{uri}`, whose URI scheme is not supported; use a relative file path or a data URI")));
+        }
+        None => PathBuf::from(percent_decode(uri, what)?),
+    };
+    let Some(base) = base else {
+        return Err(scene_err(format!(
+            "{what} refers to the external file `{uri}`, which cannot be resolved when loading from memory; load the file by path, or embed the data"
+        )));
+    };
+    let path = base.join(relative);
+    std::fs::read(&path).map_err(|e| {
+        scene_err(format!("{what} refers to the file `{uri}` ({}), which cannot be read: {e}; put the file there or fix the URI", path.display()))
+    })
+}
+
+fn percent_decode(s: &str, what: &str) -> Result<String> {
+    let b = s.as_bytes();
+    let mut out = Vec::with_capacity(b.len());
+    let mut i = 0;
+    while i < b.len() {
+        if b[i] == b'%' {
+            let hex = s.get(i + 1..i + 3).and_then(|h| u8::from_str_radix(h, 16).ok());
+            let byte = hex.ok_or_else(|| scene_err(format!("{what} has a URI with a bad percent escape: `{s}`")))?;
+            out.push(byte);
+            i += 3;
+        } else {
+            out.push(b[i]);
+            i += 1;
+        }
+    }
+    String::from_utf8(out).map_err(|_| scene_err(format!("{what} has a URI that does not decode to UTF-8: `{s}`")))
+}
+
+/// Standard base64 (padding optional); `None` on any other character.
+fn base64_decode(s: &str) -> Option<Vec<u8>> {
+    let value = |c: u8| match c {
+        b'A'..=b'Z' => Some(c - b'A'),
+        b'a'..=b'z' => Some(c - b'a' + 26),
+        b'0'..=b'9' => Some(c - b'0' + 52),
+        b'+' => Some(62),
+        b'/' => Some(63),
+        _ => None,
+    };
+    let s = s.trim_end_matches('=').as_bytes();
+    let mut out = Vec::with_capacity(s.len() * 3 / 4);
+    let (mut acc, mut bits) = (0u32, 0u32);
+    for &c in s {
+        acc = (acc << 6) | value(c)? as u32;
+        bits += 6;
+        if bits >= 8 {
+            bits -= 8;
+            out.push((acc >> bits) as u8);
+            acc &= (1 << bits) - 1;
+        }
+    }
+    Some(out)
+}
+
+fn read_buffers(doc: &gltf::Document, base: Option<&Path>, mut blob: Option<Vec<u8>>) -> Result<Vec<Vec<u8>>> {
+    let mut out = Vec::new();
+    for buffer in doc.buffers() {
+        let what = format!("buffer {}", buffer.index());
+        let data = match buffer.source() {
+            gltf::buffer::Source::Bin => {
+                blob.take().ok_or_else(|| scene_err(format!("{what} refers to the binary chunk, but the file has none")))?
+            }
+            gltf::buffer::Source::Uri(uri) => read_uri(uri, base, &what)?,
+        };
+        if data.len() < buffer.length() {
+            return Err(scene_err(format!(
+                "{what} holds {} bytes but declares {}; the file is truncated or its byteLength is wrong",
+                data.len(),
+                buffer.length()
+            )));
+        }
+        out.push(data);
+    }
+    Ok(out)
+}
+
+/// Checks that an accessor can be read as one of `allowed` without running past its data.
+fn check_accessor(acc: &gltf::Accessor, what: &str, allowed: &[(DataType, Dimensions)], buffers: &[Vec<u8>]) -> Result<()> {
+    let bad = |why: String| Err(scene_err(format!("{what} (accessor {}): {why}", acc.index())));
+    if !allowed.iter().any(|&(t, d)| t == acc.data_type() && d == acc.dimensions()) {
+        return bad(format!("has type {:?} {:?}, expected one of {allowed:?}", acc.data_type(), acc.dimensions()));
+    }
+    if acc.sparse().is_some() {
+        return bad("is sparse; sparse accessors are not supported, write the data densely".into());
+    }
+    if acc.count() == 0 {
+        return bad("has count 0; an accessor needs at least one element".into());
+    }
+    let Some(view) = acc.view() else { return bad("has no buffer view (all-zero accessors are not supported)".into()) };
+    let size = acc.size();
+    let stride = view.stride().unwrap_or(size);
+    if stride < size {
+        return bad(format!("has byte stride {stride}, smaller than its element size {size}"));
+    }
+    let end = (acc.count() - 1).checked_mul(stride).and_then(|x| x.checked_add(size)).and_then(|x| x.checked_add(acc.offset()));
+    let view_end = view.offset().checked_add(view.length());
+    let buffer_len = buffers.get(view.buffer().index()).map_or(0, Vec::len);
+    match (end, view_end) {
+        (Some(end), Some(view_end)) if end <= view.length() && view_end <= buffer_len => Ok(()),
+        _ => bad(format!("runs past its buffer view {} or the view past its buffer; the file is truncated or malformed", view.index())),
+    }
+}
+
+struct Loader<'a> {
+    doc: &'a gltf::Document,
+    base: Option<&'a Path>,
+    buffers: Vec<Vec<u8>>,
+    /// (image, sRGB) → offset of its texels, width, height.
+    images: HashMap<(usize, bool), (u32, u32, u32)>,
+    /// (image, sRGB, sampler bits) → texture index.
+    textures: HashMap<(usize, bool, u32), u32>,
+    /// glTF material index (`None`: the default material) → material index.
+    materials: HashMap<Option<usize>, u32>,
+    out: MeshScene,
+}
+
+impl Loader<'_> {
+    fn mesh(&mut self, mesh: &gltf::Mesh, world: &Mat4) -> Result<()> {
+        let name = match mesh.name() {
+            Some(n) => format!("mesh {} (`{n}`)", mesh.index()),
+            None => format!("mesh {}", mesh.index()),
+        };
+        let linear = Mat3::from_mat4(*world);
+        let normal_matrix = linear.inverse().transpose();
+        let mirrored = linear.determinant() < 0.0;
+        for prim in mesh.primitives() {
+            let what = format!("{name} primitive {}", prim.index());
+            let mode = prim.mode();
+            if matches!(mode, Mode::Points | Mode::Lines | Mode::LineLoop | Mode::LineStrip) {
+                self.out.report.skipped_primitives += 1;
+                continue;
+            }
+            let bufs = &self.buffers;
+            let reader = prim.reader(|b| bufs.get(b.index()).map(Vec::as_slice));
+            let pos_acc = prim.get(&gltf::Semantic::Positions).ok_or_else(|| scene_err(format!("{what} has no POSITION attribute")))?;
+            check_accessor(&pos_acc, &format!("{what} POSITION"), &[(DataType::F32, Dimensions::Vec3)], bufs)?;
+            let positions: Vec<[f32; 3]> = reader.read_positions().map(|p| p.collect()).unwrap_or_default();
+            let n = positions.len();
+            let normals: Vec<[f32; 3]> = match prim.get(&gltf::Semantic::Normals) {
+                Some(acc) => {
+                    check_accessor(&acc, &format!("{what} NORMAL"), &[(DataType::F32, Dimensions::Vec3)], bufs)?;
+                    reader.read_normals().map(|p| p.collect()).unwrap_or_default()
+                }
+                None => vec![[0.0; 3]; n],
+            };
+            let uvs: Vec<[f32; 2]> = match prim.get(&gltf::Semantic::TexCoords(0)) {
+                Some(acc) => {
+                    let ok = [(DataType::F32, Dimensions::Vec2), (DataType::U8, Dimensions::Vec2), (DataType::U16, Dimensions::Vec2)];
+                    check_accessor(&acc, &format!("{what} TEXCOORD_0"), &ok, bufs)?;
+                    reader.read_tex_coords(0).map(|t| t.into_f32().collect()).unwrap_or_default()
+                }
+                None => vec![[0.0; 2]; n],
+            };
+            if normals.len() != n || uvs.len() != n {
+                return Err(scene_err(format!("{what}: NORMAL or TEXCOORD_0 has a different count than POSITION ({n})")));
+            }
+            let indices: Vec<u32> = match prim.indices() {
+                Some(acc) => {
+                    let ok = [(DataType::U8, Dimensions::Scalar), (DataType::U16, Dimensions::Scalar), (DataType::U32, Dimensions::Scalar)];
+                    check_accessor(&acc, &format!("{what} indices"), &ok, bufs)?;
+                    reader.read_indices().map(|i| i.into_u32().collect()).unwrap_or_default()
+                }
+                None => (0..n as u32).collect(),
+            };
+            if let Some(&bad) = indices.iter().find(|&&i| i as usize >= n) {
+                return Err(scene_err(format!("{what}: index {bad} is out of range; the primitive has {n} vertices")));
+            }
+            let finite = positions.iter().chain(&normals).flatten().chain(uvs.iter().flatten()).all(|x| x.is_finite());
+            if !finite {
+                return Err(scene_err(format!("{what}: non-finite (NaN or infinite) position, normal or texture coordinate")));
+            }
+            let material = self.material(prim.material())?;
+
+            let first = self.out.vertices.len();
+            if first + n > u32::MAX as usize {
+                return Err(Error::TooLarge { what: "vertices of the scene".into(), size: (first + n) as u64, limit: u32::MAX as u64 });
+            }
+            for k in 0..n {
+                let p = world.transform_point3(Vec3::from(positions[k]));
+                let nrm = (normal_matrix * Vec3::from(normals[k])).normalize_or_zero();
+                if !p.is_finite() {
+                    return Err(scene_err(format!("{what}: a vertex is not finite after its node's transform")));
+                }
+                self.out.vertices.push(MeshVertex { position: p.to_array(), u: uvs[k][0], normal: nrm.to_array(), v: uvs[k][1] });
+            }
+            let mut tris = Vec::new();
+            match mode {
+                Mode::Triangles => {
+                    if indices.len() % 3 != 0 {
+                        return Err(scene_err(format!("{what}: {} indices is not a multiple of 3 for a triangle list", indices.len())));
+                    }
+                    tris.extend(indices.chunks_exact(3).map(|c| [c[0], c[1], c[2]]));
+                }
+                // glTF's strip order: every odd triangle swaps its last two vertices to keep the winding.
+                Mode::TriangleStrip => {
+                    for i in 0..indices.len().saturating_sub(2) {
+                        let (a, b, c) = (indices[i], indices[i + 1], indices[i + 2]);
+                        tris.push(if i % 2 == 0 { [a, b, c] } else { [a, c, b] });
+                    }
+                }
+                Mode::TriangleFan => {
+                    for i in 1..indices.len().saturating_sub(1) {
+                        tris.push([indices[i], indices[i + 1], indices[0]]);
+                    }
+                }
+                _ => {}
+            }
+            for [a, b, c] in tris {
+                let (b, c) = if mirrored { (c, b) } else { (b, c) };
+                let v = |i: u32| Vec3::from(self.out.vertices[first + i as usize].position);
+                if a == b || b == c || a == c || zero_area(v(a), v(b), v(c)) {
+                    self.out.report.degenerate_triangles += 1;
+                    continue;
+                }
+                let f = first as u32;
+                self.out.triangles.push([f + a, f + b, f + c, material]);
+            }
+            if self.out.triangles.len() as u64 > MAX_TRIANGLES {
+                return Err(Error::TooLarge { what: "triangles of the scene".into(), size: self.out.triangles.len() as u64, limit: MAX_TRIANGLES });
+            }
+        }
+        Ok(())
+    }
+
+    fn camera(&mut self, camera: &gltf::Camera, world: &Mat4) {
+        match camera.projection() {
+            gltf::camera::Projection::Perspective(p) => self.out.cameras.push(MeshCamera {
+                name: camera.name().map(str::to_owned),
+                eye: world.transform_point3(Vec3::ZERO),
+                forward: world.transform_vector3(Vec3::NEG_Z).normalize_or_zero(),
+                up: world.transform_vector3(Vec3::Y).normalize_or_zero(),
+                yfov_radians: p.yfov(),
+                aspect_ratio: p.aspect_ratio(),
+                znear: p.znear(),
+            }),
+            gltf::camera::Projection::Orthographic(_) => self.out.report.orthographic_cameras += 1,
+        }
+    }
+
+    /// The index of the material, converting it on first use.
+    fn material(&mut self, m: gltf::Material) -> Result<u32> {
+        if let Some(&i) = self.materials.get(&m.index()) {
+            return Ok(i);
+        }
+        let what = match m.index() {
+            Some(i) => format!("material {i}"),
+            None => "the default material".to_owned(),
+        };
+        let pbr = m.pbr_metallic_roughness();
+        let strength = m.emissive_strength().unwrap_or(1.0);
+        let mut mat = MeshMaterial {
+            base: pbr.base_color_factor(),
+            emissive: m.emissive_factor().map(|e| e * strength),
+            alpha_cutoff: m.alpha_cutoff().unwrap_or(0.5),
+            ..MeshMaterial::default()
+        };
+        if !mat.base.iter().chain(&mat.emissive).all(|x| x.is_finite() && *x >= 0.0) || !mat.alpha_cutoff.is_finite() {
+            return Err(scene_err(format!("{what}: colour factors and emissive strength must be finite and not negative")));
+        }
+        if let Some(info) = pbr.base_color_texture() {
+            mat.base_texture = self.texture(&info, true, &what)?;
+        }
+        if let Some(info) = m.emissive_texture() {
+            mat.emissive_texture = self.texture(&info, true, &what)?;
+        }
+        if m.unlit() {
+            mat.flags |= UNLIT;
+        }
+        if m.double_sided() {
+            mat.flags |= DOUBLE_SIDED;
+        }
+        match m.alpha_mode() {
+            gltf::material::AlphaMode::Mask => mat.flags |= ALPHA_MASK,
+            gltf::material::AlphaMode::Blend => mat.flags |= ALPHA_BLEND,
+            gltf::material::AlphaMode::Opaque => {}
+        }
+        let index = self.out.materials.len() as u32;
+        self.out.materials.push(mat);
+        self.materials.insert(m.index(), index);
+        Ok(index)
+    }
+
+    /// The texture index for a material's texture reference, decoding its image on first use.
+    fn texture(&mut self, info: &gltf::texture::Info, srgb: bool, what: &str) -> Result<u32> {
+        if info.tex_coord() != 0 {
+            self.out.report.unsupported_texcoords += 1;
+        }
+        let texture = info.texture();
+        let sampler = texture.sampler();
+        let wrap = |w: gltf::texture::WrappingMode| match w {
+            gltf::texture::WrappingMode::Repeat => WRAP_REPEAT,
+            gltf::texture::WrappingMode::ClampToEdge => WRAP_CLAMP,
+            gltf::texture::WrappingMode::MirroredRepeat => WRAP_MIRROR,
+        };
+        let mut bits = (wrap(sampler.wrap_s()) << WRAP_S_SHIFT) | (wrap(sampler.wrap_t()) << WRAP_T_SHIFT);
+        if sampler.mag_filter() == Some(gltf::texture::MagFilter::Nearest) {
+            bits |= NEAREST;
+        }
+        let image = texture.source().index();
+        if let Some(&t) = self.textures.get(&(image, srgb, bits)) {
+            return Ok(t);
+        }
+        let (offset, width, height) = match self.images.get(&(image, srgb)) {
+            Some(&found) => found,
+            None => {
+                let found = self.decode_image(image, srgb, &format!("{what} texture {}", texture.index()))?;
+                self.images.insert((image, srgb), found);
+                found
+            }
+        };
+        let index = self.out.textures.len() as u32;
+        self.out.textures.push(TextureInfo { offset, width, height, sampler: bits });
+        self.textures.insert((image, srgb, bits), index);
+        Ok(index)
+    }
+
+    /// Decodes an image to linear RGBA f32 appended to the texels (sRGB colour channels decoded when
+    /// `srgb`; alpha always linear); returns offset, width and height.
+    fn decode_image(&mut self, index: usize, srgb: bool, what: &str) -> Result<(u32, u32, u32)> {
+        let image = self.doc.images().nth(index).ok_or_else(|| scene_err(format!("{what}: image {index} does not exist")))?;
+        let what = format!("{what} image {index}");
+        let (bytes, mime) = match image.source() {
+            gltf::image::Source::View { view, mime_type } => {
+                let data = self.buffers.get(view.buffer().index()).and_then(|b| b.get(view.offset()..view.offset().checked_add(view.length())?));
+                let data = data.ok_or_else(|| scene_err(format!("{what}: its buffer view runs past its buffer")))?;
+                (data.to_vec(), Some(mime_type))
+            }
+            gltf::image::Source::Uri { uri, mime_type } => (read_uri(uri, self.base, &what)?, mime_type),
+        };
+        let format = match mime {
+            Some("image/png") => Some(image::ImageFormat::Png),
+            Some("image/jpeg") => Some(image::ImageFormat::Jpeg),
+            _ => None,
+        };
+        let decoded = match format {
+            Some(f) => image::load_from_memory_with_format(&bytes, f),
+            None => image::load_from_memory(&bytes),
+        }
+        .map_err(|e| scene_err(format!("{what} cannot be decoded ({e}); glTF images must be PNG or JPEG")))?;
+        let rgba = decoded.to_rgba32f();
+        let (width, height) = rgba.dimensions();
+        let offset = self.out.texels.len() as u64;
+        let total = offset + width as u64 * height as u64;
+        if total > MAX_TEXELS {
+            return Err(Error::TooLarge { what: format!("texels of all textures ({what} is {width}x{height})"), size: total, limit: MAX_TEXELS });
+        }
+        self.out.texels.extend(rgba.pixels().map(|p| {
+            let [r, g, b, a] = p.0;
+            if srgb { [srgb_to_linear(r), srgb_to_linear(g), srgb_to_linear(b), a] } else { [r, g, b, a] }
+        }));
+        Ok((offset as u32, width, height))
+    }
+}
+
+/// The sRGB transfer function's inverse.
+fn srgb_to_linear(s: f32) -> f32 {
+    if s <= 0.040_45 { s / 12.92 } else { ((s + 0.055) / 1.055).powf(2.4) }
+}

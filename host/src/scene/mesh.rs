@@ -1,0 +1,171 @@
+//! Triangle scenes: the host-side form of what the rasteriser draws, as the loader of glTF files
+//! ([`load_gltf`](super::gltf_load::load_gltf)) builds it.
+//!
+//! The buffers are the kernel crate's types ([`dof_shaders::raster::mesh`]), in world space, ready
+//! to upload. Cameras and the light come along from the file; [`LoadReport`] counts what the
+//! loader dropped or changed rather than failing on it:
+//! - zero-area triangles (repeated indices, or a cross product of two edges no longer than `1e-12`
+//!   times the longest squared edge) are dropped, since they cover no pixel;
+//! - point and line primitives, orthographic cameras, lights other than the first directional one
+//!   and texture references to a texture coordinate set other than 0 are skipped or changed.
+
+use dof_shaders::raster::mesh::{MeshMaterial, MeshVertex, NO_TEXTURE, TextureInfo};
+use glam::Vec3;
+
+use super::analytic::Lighting;
+use super::camera::Camera;
+use crate::error::{Error, Result};
+
+/// Most triangles a scene may hold (2^24), so triangle ids fit the rasteriser's 24-bit fields.
+pub const MAX_TRIANGLES: u64 = 1 << 24;
+/// Most texels all textures together may hold (2^24, 256 MiB of linear RGBA f32).
+pub const MAX_TEXELS: u64 = 1 << 24;
+
+/// A triangle scene in world space.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshScene {
+    /// World-space vertices (node transforms applied); normals unit length, or zero where the file
+    /// gives none (the rasteriser then uses the face normal).
+    pub vertices: Vec<MeshVertex>,
+    /// `[i0, i1, i2, material]`, counter-clockwise seen from the front.
+    pub triangles: Vec<[u32; 4]>,
+    pub materials: Vec<MeshMaterial>,
+    /// Offset into `texels`, width, height and sampler bits of every texture.
+    pub textures: Vec<TextureInfo>,
+    /// Linear RGBA, row-major, top row first.
+    pub texels: Vec<[f32; 4]>,
+    pub lighting: Lighting,
+    pub cameras: Vec<MeshCamera>,
+    /// What the loader dropped or changed.
+    pub report: LoadReport,
+}
+
+/// A perspective camera placed in the scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshCamera {
+    pub name: Option<String>,
+    pub eye: Vec3,
+    /// Unit view axis: the camera's local −Z in world space.
+    pub forward: Vec3,
+    /// The camera's local +Y in world space.
+    pub up: Vec3,
+    pub yfov_radians: f32,
+    /// Width over height the file asks for, if any (the image size given to [`MeshCamera::camera`]
+    /// decides the aspect ratio actually rendered).
+    pub aspect_ratio: Option<f32>,
+    pub znear: f32,
+}
+
+impl MeshCamera {
+    /// The library camera looking from `eye` along `forward` for an image of `width`x`height`
+    /// pixels; errors (`InvalidArgument`) when [`Camera::frame`] rejects it (zero size, a field of
+    /// view outside (0°, 180°), non-finite or degenerate axes).
+    pub fn camera(&self, width: u32, height: u32) -> Result<Camera> {
+        let camera = Camera { eye: self.eye, target: self.eye + self.forward, up: self.up, yfov_radians: self.yfov_radians, width, height };
+        camera.frame().map_err(|e| match e {
+            Error::InvalidArgument(m) => Error::InvalidArgument(format!("camera {}: {m}", self.name.as_deref().unwrap_or("(unnamed)"))),
+            other => other,
+        })?;
+        Ok(camera)
+    }
+}
+
+/// What loading dropped or changed, counted; all zero for a file used in full.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct LoadReport {
+    /// Zero-area triangles dropped.
+    pub degenerate_triangles: u64,
+    /// Point and line primitives skipped.
+    pub skipped_primitives: u64,
+    /// Orthographic cameras skipped.
+    pub orthographic_cameras: u64,
+    /// Texture references naming a texture coordinate set other than 0 (set 0 is used instead).
+    pub unsupported_texcoords: u64,
+    /// Punctual lights not used: point and spot lights, and directional lights after the first.
+    pub ignored_lights: u64,
+}
+
+impl LoadReport {
+    /// True when nothing was dropped or changed.
+    pub fn is_clean(&self) -> bool {
+        *self == LoadReport::default()
+    }
+}
+
+/// Whether the triangle `p0 p1 p2` has (numerically) zero area: the cross product of two edges no
+/// longer than `1e-12` times the longest squared edge, computed in f64.
+pub(crate) fn zero_area(p0: Vec3, p1: Vec3, p2: Vec3) -> bool {
+    let (a, b, c) = (p0.as_dvec3(), p1.as_dvec3(), p2.as_dvec3());
+    let (e1, e2, e3) = (b - a, c - a, c - b);
+    let longest = e1.length_squared().max(e2.length_squared()).max(e3.length_squared());
+    e1.cross(e2).length() <= 1e-12 * longest
+}
+
+impl MeshScene {
+    /// Axis-aligned bounds of all vertex positions; `None` without vertices.
+    pub fn bounds(&self) -> Option<(Vec3, Vec3)> {
+        let mut it = self.vertices.iter().map(|v| Vec3::from(v.position));
+        let first = it.next()?;
+        Some(it.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p))))
+    }
+
+    /// Checks what the rasteriser relies on: finite vertex data, triangle indices and material
+    /// indices in range, texture references and texel ranges in range, finite material factors,
+    /// at most [`MAX_TRIANGLES`] triangles and [`MAX_TEXELS`] texels, finite lighting.
+    pub fn validate(&self) -> Result<()> {
+        let bad = |m: String| Err(Error::Scene(m));
+        if self.triangles.is_empty() {
+            return bad("the scene holds no triangles; a scene needs at least one".into());
+        }
+        if self.triangles.len() as u64 > MAX_TRIANGLES {
+            return Err(Error::TooLarge { what: "triangles of the scene".into(), size: self.triangles.len() as u64, limit: MAX_TRIANGLES });
+        }
+        if self.texels.len() as u64 > MAX_TEXELS {
+            return Err(Error::TooLarge { what: "texels of all textures".into(), size: self.texels.len() as u64, limit: MAX_TEXELS });
+        }
+        for (i, v) in self.vertices.iter().enumerate() {
+            let finite = v.position.iter().chain(v.normal.iter()).all(|x| x.is_finite()) && v.u.is_finite() && v.v.is_finite();
+            if !finite {
+                return bad(format!("vertex {i} has a non-finite position, normal or texture coordinate"));
+            }
+        }
+        let (nv, nm) = (self.vertices.len() as u64, self.materials.len() as u64);
+        for (i, t) in self.triangles.iter().enumerate() {
+            if t[..3].iter().any(|&k| k as u64 >= nv) {
+                return bad(format!("triangle {i} names vertex {:?}, but there are only {nv} vertices", &t[..3]));
+            }
+            if t[3] as u64 >= nm {
+                return bad(format!("triangle {i} names material {}, but there are only {nm} materials", t[3]));
+            }
+        }
+        let nt = self.textures.len() as u64;
+        for (i, m) in self.materials.iter().enumerate() {
+            for tex in [m.base_texture, m.emissive_texture] {
+                if tex != NO_TEXTURE && tex as u64 >= nt {
+                    return bad(format!("material {i} names texture {tex}, but there are only {nt} textures"));
+                }
+            }
+            if !m.base.iter().chain(m.emissive.iter()).all(|x| x.is_finite() && *x >= 0.0) || !m.alpha_cutoff.is_finite() {
+                return bad(format!("material {i} has a negative or non-finite colour factor or alpha cutoff"));
+            }
+        }
+        for (i, t) in self.textures.iter().enumerate() {
+            let end = t.offset as u64 + t.width as u64 * t.height as u64;
+            if t.width == 0 || t.height == 0 || end > self.texels.len() as u64 {
+                return bad(format!(
+                    "texture {i} ({}x{} at texel {}) is empty or runs past the {} texels",
+                    t.width,
+                    t.height,
+                    t.offset,
+                    self.texels.len()
+                ));
+            }
+        }
+        let l = &self.lighting;
+        let colours_ok = l.color.iter().chain(l.ambient.iter()).all(|x| x.is_finite() && *x >= 0.0);
+        if !l.direction.is_finite() || !(l.direction.length_squared() > 0.0) || !colours_ok {
+            return bad("the light needs a finite, non-zero direction and finite, non-negative colours".into());
+        }
+        Ok(())
+    }
+}

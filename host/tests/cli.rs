@@ -41,7 +41,7 @@ fn renders_a_builtin_scene_to_exr_and_png() {
 #[test]
 fn bad_scenes_are_reported() {
     assert_fails_with(&["render", "--scene", "nope"], "unknown built-in scene");
-    assert_fails_with(&["render", "--scene", "model.gltf"], "glTF scenes are not supported yet");
+    assert_fails_with(&["render", "--scene", "/nonexistent/dir/model.gltf"], "model.gltf");
     assert_fails_with(&["render", "--scene", "/nonexistent/dir/in.exr"], "in.exr");
     let garbage = temp("garbage.exr");
     std::fs::write(&garbage, b"v/1\x01 this is not an EXR file at all").unwrap();
@@ -117,4 +117,53 @@ fn raytrace_layered_and_shaped_apertures_render() {
     assert_fails_with(&["render", "--method", "multilayer", "--aperture", "hexagon", "--width", "32", "--height", "32"], "blades:N");
     assert_fails_with(&["render", "--method", "raytrace", "--spp", "0", "--width", "32", "--height", "32"], "rays per pixel");
     assert_fails_with(&["render", "--method", "layered", "--layers-per-doubling", "9", "--width", "32", "--height", "32"], "layers per doubling");
+}
+
+/// A built-in scene exported to binary glTF in the temp folder.
+fn glb(name: &str, file: &str) -> PathBuf {
+    let path = temp(file);
+    let bytes = dof::scene::export_builtin_glb(name, 96, 54).expect("export");
+    std::fs::write(&path, bytes).expect("write the glb");
+    path
+}
+
+#[test]
+fn renders_a_gltf_scene_on_both_backends() {
+    let scene = glb("simple", "simple.glb");
+    let s = scene.to_str().unwrap();
+    for (method, extra) in [("pinhole", vec![]), ("layers", vec![]), ("reference", vec!["--samples", "4"]), ("multilayer", vec!["--merge", "4x4"])] {
+        let out = temp(&format!("gltf-{method}.exr"));
+        let mut args = vec!["render", "--scene", s, "--method", method, "--width", "96", "--height", "54", "--out", out.to_str().unwrap()];
+        args.extend(extra);
+        let o = dof(&args);
+        assert!(o.status.success(), "{method}: {}", String::from_utf8_lossy(&o.stderr));
+        assert!(std::fs::metadata(&out).unwrap().len() > 0, "{method} wrote no EXR");
+    }
+    // The same scene rasterised by the graphics pipeline on lavapipe.
+    let out = temp("gltf-vulkan.exr");
+    let o = dof(&["render", "--scene", s, "--method", "reference", "--samples", "4", "--backend", "vulkan", "--width", "96", "--height", "54", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "vulkan: {}", String::from_utf8_lossy(&o.stderr));
+    // An explicit camera replaces the file's.
+    let out = temp("gltf-eye.exr");
+    let o = dof(&["render", "--scene", s, "--method", "pinhole", "--eye", "0,1,6", "--target", "0,0.5,0", "--yfov", "50", "--width", "48", "--height", "27", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "eye: {}", String::from_utf8_lossy(&o.stderr));
+}
+
+#[test]
+fn bad_gltf_input_is_reported() {
+    let scene = glb("simple", "whole.glb");
+    let bytes = std::fs::read(&scene).unwrap();
+    let truncated = temp("truncated.glb");
+    std::fs::write(&truncated, &bytes[..bytes.len() / 2]).unwrap();
+    assert_fails_with(&["render", "--scene", truncated.to_str().unwrap(), "--method", "pinhole"], "truncated.glb");
+    let malformed = temp("malformed.gltf");
+    std::fs::write(&malformed, b"{ this is not json").unwrap();
+    assert_fails_with(&["render", "--scene", malformed.to_str().unwrap(), "--method", "pinhole"], "malformed.gltf");
+    let s = scene.to_str().unwrap();
+    assert_fails_with(&["render", "--scene", s, "--eye", "0,1,6"], "--target");
+    assert_fails_with(&["render", "--scene", s, "--yfov", "0", "--method", "pinhole"], "field of view");
+    assert_fails_with(&["render", "--scene", s, "--focus", "-2", "--method", "pinhole"], "focus");
+    assert_fails_with(&["render", "--scene", s, "--focus", "0.01", "--focal-length", "50", "--method", "pinhole"], "focal length");
+    assert_fails_with(&["render", "--scene", s, "--width", "0", "--method", "pinhole"], "image size must be positive");
+    assert_fails_with(&["render", "--scene", s, "--width", "20000", "--height", "2", "--backend", "vulkan", "--method", "pinhole"], "framebuffer");
 }

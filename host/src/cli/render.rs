@@ -4,8 +4,10 @@
 use anyhow::{Context, bail};
 use dof::io::{read_layered_exr, write_exr, write_layered_exr, write_png_preview};
 use dof::layers::RgbImage;
+use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
 use dof::scene::{
-    self, Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, ReferenceOptions, Vec3, raycast_layers,
+    self, Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, MeshScene, MultiLayerImage, ReferenceOptions, Vec3,
+    load_gltf, raycast_layers,
 };
 use dof::layers::LayeredImage;
 use dof::methods::bokeh::{BokehOptions, bokeh};
@@ -22,7 +24,8 @@ pub enum Method {
     Pinhole,
     /// The partial multi-layer image (umbra threshold, disocclusion buffer) as a multi-layer EXR.
     Layers,
-    /// The exact reference: thin-lens distributed ray tracing (analytic scenes only).
+    /// The reference: thin-lens distributed ray tracing (built-in scenes), the accumulation buffer
+    /// (glTF scenes; `--samples` renders, default 256).
     Reference,
     /// The gathering baseline (single layer, scatter-as-gather) on the chosen backend.
     Gather,
@@ -46,13 +49,13 @@ pub enum BackendArg {
 
 #[derive(clap::Args)]
 pub struct RenderArgs {
-    /// A built-in scene name (`simple`, `railing`, `columns`, `highlights`) or an EXR file (RGB+Z or
-    /// multi-layer).
+    /// A built-in scene name (`simple`, `railing`, `columns`, `highlights`), a glTF scene (`.gltf`
+    /// or `.glb`: rasterised and depth-peeled on `--backend`), or an EXR file (RGB+Z or multi-layer).
     #[arg(long, default_value = "simple")]
     scene: String,
     #[arg(long, value_enum, default_value = "reference")]
     method: Method,
-    /// Image size (built-in scenes; an EXR has its own).
+    /// Image size (built-in and glTF scenes; an EXR has its own).
     #[arg(long)]
     width: Option<u32>,
     #[arg(long)]
@@ -105,7 +108,7 @@ pub struct RenderArgs {
     /// Output EXR; a PNG preview is written beside it. Default `out/<scene>-<method>.exr`.
     #[arg(long)]
     out: Option<PathBuf>,
-    /// Backend that runs the kernels of the blurring methods.
+    /// Backend that runs the kernels of the blurring methods and the rasteriser.
     #[arg(long, value_enum, default_value = "cpu")]
     backend: BackendArg,
     /// Largest CoC diameter in pixels the blurring methods honour (default: what the scene needs,
@@ -156,11 +159,12 @@ pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
     }
 }
 
-/// A scene given as a file: EXR input (the methods that need only the image), glTF not yet.
+/// A scene given as a file: a glTF scene (rasterised), or EXR input (the methods that need only the
+/// image).
 fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let lower = args.scene.to_ascii_lowercase();
     if lower.ends_with(".gltf") || lower.ends_with(".glb") {
-        bail!("glTF scenes are not supported yet: their rasterisation and depth peeling on Vulkan are still to come; use a built-in scene or an EXR");
+        return render_gltf(args, out);
     }
     let (layers, report) = read_layered_exr(&args.scene)?;
     if report.total() > 0 {
@@ -278,7 +282,7 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Re
     Ok((image, depth))
 }
 
-fn backend(choice: BackendArg) -> anyhow::Result<Box<dyn dof::backend::Backend>> {
+pub(super) fn backend(choice: BackendArg) -> anyhow::Result<Box<dyn dof::backend::Backend>> {
     let choice = match choice {
         BackendArg::Cpu => super::BackendChoice::Cpu,
         BackendArg::Vulkan => super::BackendChoice::Vulkan,
@@ -296,53 +300,19 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     if let Some(deg) = args.yfov {
         camera.yfov_radians = deg.to_radians();
     }
-    let mut settings: LensSettings = builtin.lens;
-    if let Some(d) = args.focus {
-        settings.focus = Focus::Distance(d);
-    }
-    if let Some(n) = args.f_number {
-        settings.aperture = Aperture::FNumber(n);
-    }
-    if let Some(r) = args.aperture_radius {
-        settings.aperture = Aperture::Radius(r);
-    }
-    settings.focal_length_mm = args.focal_length.or(settings.focal_length_mm);
-    settings.sensor_height_mm = args.sensor_height;
+    let settings = lens_settings(args, builtin.lens);
     let lens = settings.thin_lens(&camera)?;
     println!(
         "{}: {}x{}, f = {:.1} mm, aperture radius {:.2} mm, focus {:.3}, far-field CoC {:.1} px",
         builtin.name, camera.width, camera.height, lens.focal_length * 1e3, lens.aperture_radius * 1e3,
         lens.focus_distance, lens.far_limit_px()
     );
-    let depth_and_coc = |layers: &dof::layers::LayeredImage| {
-        let (_, depth) = layers.front();
-        let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
-        (depth, coc)
-    };
     let options = LayerOptions { max_layers: args.layers, ..Default::default() };
     let layered = raycast_layers(&builtin.scene, &camera, &lens, &options)?;
-    let (depth, coc) = depth_and_coc(&layered.layers);
     match args.method {
         Method::Pinhole => {
             let r = scene::pinhole(&builtin.scene, &camera, &ReferenceOptions { spp: 16, ..Default::default() })?;
-            write_outputs(out, &r.image, &[("Z", &depth), ("coc", &coc)], args.exposure)
-        }
-        Method::Layers => {
-            write_layered_exr(out, &layered.layers)?;
-            let (w, wo) = (layered.with_mask, layered.without_mask);
-            println!(
-                "layers: {:.3} fragments per pixel, {:.1}% of pixels multi-layer (without the disocclusion buffer: {:.3}, {:.1}%); buffer covers {:.1}% of pixels",
-                w.fragments_per_pixel(), 100.0 * w.multi_layer_share(), wo.fragments_per_pixel(),
-                100.0 * wo.multi_layer_share(), 100.0 * layered.mask_share()
-            );
-            let (front, _) = layered.layers.front();
-            write_png_preview(out.with_extension("png"), &front, args.exposure)?;
-            println!("wrote {} and {}", out.display(), out.with_extension("png").display());
-            Ok(())
-        }
-        Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace | Method::Layered | Method::Bokeh => {
-            let (image, depth) = blur(args, &layered.layers, &lens)?;
-            write_outputs(out, &image, &[("Z", &depth), ("coc", &coc)], args.exposure)
+            write_with_planes(args, out, &r.image, &layered, &lens)
         }
         Method::Reference => {
             let reference = match args.samples {
@@ -355,10 +325,118 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
                 reference.noise_psnr_db.map_or("n/a".to_string(), |p| format!("{p:.1} dB")),
                 if reference.capped { " (sample cap reached before the target)" } else { "" }
             );
-            let mask: Vec<f32> = layered.mask.iter().map(|&m| m as u32 as f32).collect();
-            write_outputs(out, &reference.image, &[("Z", &depth), ("coc", &coc), ("mask", &mask)], args.exposure)
+            write_with_planes(args, out, &reference.image, &layered, &lens)
         }
+        _ => render_layers(args, out, &layered, &lens),
     }
+}
+
+/// The lens flags applied over a scene's lens.
+fn lens_settings(args: &RenderArgs, mut settings: LensSettings) -> LensSettings {
+    if let Some(d) = args.focus {
+        settings.focus = Focus::Distance(d);
+    }
+    if let Some(n) = args.f_number {
+        settings.aperture = Aperture::FNumber(n);
+    }
+    if let Some(r) = args.aperture_radius {
+        settings.aperture = Aperture::Radius(r);
+    }
+    settings.focal_length_mm = args.focal_length.or(settings.focal_length_mm);
+    settings.sensor_height_mm = args.sensor_height;
+    settings
+}
+
+/// The methods that start from the multi-layer image, whatever made it: the layers themselves, or
+/// a blur of them.
+fn render_layers(args: &RenderArgs, out: &Path, layered: &MultiLayerImage, lens: &ThinLens) -> anyhow::Result<()> {
+    if args.method == Method::Layers {
+        write_layered_exr(out, &layered.layers)?;
+        let (w, wo) = (layered.with_mask, layered.without_mask);
+        println!(
+            "layers: {:.3} fragments per pixel, {:.1}% of pixels multi-layer (without the disocclusion buffer: {:.3}, {:.1}%); buffer covers {:.1}% of pixels",
+            w.fragments_per_pixel(), 100.0 * w.multi_layer_share(), wo.fragments_per_pixel(),
+            100.0 * wo.multi_layer_share(), 100.0 * layered.mask_share()
+        );
+        let (front, _) = layered.layers.front();
+        write_png_preview(out.with_extension("png"), &front, args.exposure)?;
+        println!("wrote {} and {}", out.display(), out.with_extension("png").display());
+        return Ok(());
+    }
+    let (image, _) = blur(args, &layered.layers, lens)?;
+    write_with_planes(args, out, &image, layered, lens)
+}
+
+/// An image with the front layer's depth, its CoC and the disocclusion buffer as extra planes.
+fn write_with_planes(args: &RenderArgs, out: &Path, image: &RgbImage, layered: &MultiLayerImage, lens: &ThinLens) -> anyhow::Result<()> {
+    let (_, depth) = layered.layers.front();
+    let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
+    let mask: Vec<f32> = layered.mask.iter().map(|&m| m as u32 as f32).collect();
+    write_outputs(out, image, &[("Z", &depth), ("coc", &coc), ("mask", &mask)], args.exposure)
+}
+
+/// A glTF scene: loaded, rasterised and depth-peeled on the chosen backend; its reference is the
+/// accumulation buffer.
+fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
+    let mesh = load_gltf(Path::new(&args.scene))?;
+    let report = mesh.report.to_string();
+    if !report.is_empty() {
+        eprintln!("note: {}: {report}", args.scene);
+    }
+    let camera = gltf_camera(args, &mesh)?;
+    let frame = camera.frame()?;
+    // Default focus: the planar depth of the scene's centre (or the target's), at f/2.8.
+    let centre = mesh.bounds().map(|(lo, hi)| 0.5 * (lo + hi)).unwrap_or(camera.target);
+    let depth = frame.depth_of(centre);
+    let focus = if depth > 0.0 { depth } else { frame.depth_of(camera.target) };
+    let lens = lens_settings(args, LensSettings::photographic(focus, 2.8)).thin_lens(&camera)?;
+    let near = mesh.cameras.first().filter(|_| args.eye.is_none()).map(|c| c.znear).unwrap_or(default_near(lens.focus_distance));
+    println!(
+        "{}: {} triangles, {}x{}, f = {:.1} mm, aperture radius {:.2} mm, focus {:.3}, near plane {near}, far-field CoC {:.1} px",
+        args.scene, mesh.triangles.len(), camera.width, camera.height, lens.focal_length * 1e3, lens.aperture_radius * 1e3,
+        lens.focus_distance, lens.far_limit_px()
+    );
+    let mut b = backend(args.backend)?;
+    let raster = mesh.raster();
+    let options = LayerOptions { max_layers: args.layers, ..Default::default() };
+    let peeled = peel_layers(b.as_mut(), &raster, &camera, &lens, near, &options)?;
+    let ms: f64 = peeled.times.iter().map(|t| t.ms).sum();
+    println!("depth peeling on {}: {} passes, {ms:.2} ms", b.device_name(), peeled.passes);
+    match args.method {
+        Method::Pinhole => write_with_planes(args, out, &peeled.image.layers.front().0, &peeled.image, &lens),
+        Method::Reference => {
+            let samples = args.samples.unwrap_or(256);
+            let acc = accumulate(b.as_mut(), &raster, &camera, &lens, near, &AccumulateOptions { samples, progress: true, ..Default::default() })?;
+            let ms: f64 = acc.times.iter().map(|t| t.ms).sum();
+            println!("accumulation buffer on {}: {samples} renders, {ms:.2} ms", b.device_name());
+            write_with_planes(args, out, &acc.image, &peeled.image, &lens)
+        }
+        _ => render_layers(args, out, &peeled.image, &lens),
+    }
+}
+
+/// The camera of a glTF scene: `--eye` and `--target` (with `--yfov`, default the file's or 40
+/// degrees) when given, else the file's first camera. The size defaults to 640 pixels wide and the
+/// camera's aspect ratio (16:9 when it has none).
+fn gltf_camera(args: &RenderArgs, mesh: &MeshScene) -> anyhow::Result<Camera> {
+    let file = mesh.cameras.first();
+    let aspect = file.and_then(|c| c.aspect_ratio).filter(|a| a.is_finite() && *a > 0.0).unwrap_or(16.0 / 9.0);
+    let width = args.width.unwrap_or(640);
+    let height = args.height.unwrap_or(((width as f32 / aspect).round() as u32).max(1));
+    let mut camera = match (args.eye, args.target, file) {
+        (Some(eye), Some(target), _) => {
+            let yfov = args.yfov.map(f32::to_radians).or(file.map(|c| c.yfov_radians)).unwrap_or(40f32.to_radians());
+            Camera::look_at(eye, target, yfov, width, height)
+        }
+        (Some(_), None, _) | (None, Some(_), _) => bail!("give both --eye X,Y,Z and --target X,Y,Z (or neither, to use the file's camera)"),
+        (None, None, Some(c)) => c.camera(width, height)?,
+        (None, None, None) => bail!("{} has no camera: give --eye X,Y,Z --target X,Y,Z (and --yfov DEGREES, default 40)", args.scene),
+    };
+    if let Some(deg) = args.yfov {
+        camera.yfov_radians = deg.to_radians();
+    }
+    camera.frame()?;
+    Ok(camera)
 }
 
 fn write_outputs(out: &Path, image: &RgbImage, extra: &[(&str, &[f32])], exposure: f32) -> anyhow::Result<()> {

@@ -1,9 +1,17 @@
 //! `dof scenes`: the built-in scenes with their lens, multi-layer statistics (with and without the
-//! disocclusion buffer) and, on request, how many reference samples they need.
+//! disocclusion buffer) and, on request, how many reference samples they need, and the same scenes
+//! exported to glTF: rasterised by depth peeling and rendered by the accumulation buffer, against
+//! the exact ray-cast layers and reference.
 
 use dof::io::write_png_preview;
 use dof::layers::RgbImage;
-use dof::scene::{AutoOptions, LayerOptions, builtin, builtin_names, raycast_layers, reference_auto};
+use dof::metrics::compare;
+use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
+use dof::scene::{
+    AutoOptions, BuiltinScene, ExportOptions, LayerOptions, MultiLayerImage, ReferenceOptions, builtin, builtin_names, export_glb,
+    load_gltf_slice, raycast_layers, reference, reference_auto,
+};
+use dof_shaders::lens::ThinLens;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -23,6 +31,24 @@ pub struct ScenesArgs {
     /// Write PNGs of the pinhole image, the disocclusion buffer and the reference here.
     #[arg(long)]
     dump: Option<PathBuf>,
+    /// Also export each scene to glTF and depth-peel it on `--backend`: the rasterised layers'
+    /// statistics next to the exact ones.
+    #[arg(long)]
+    raster: bool,
+    /// With `--raster`: the accumulation buffer at these render counts (comma-separated), each
+    /// against the exact reference (`--reference-spp` samples per pixel).
+    #[arg(long, value_delimiter = ',')]
+    accumulation: Vec<u32>,
+    /// Samples per pixel of the exact reference the accumulation buffer is measured against.
+    #[arg(long, default_value_t = 1024)]
+    reference_spp: u32,
+    /// Image size (default: each scene's, 640x360).
+    #[arg(long)]
+    width: Option<u32>,
+    #[arg(long)]
+    height: Option<u32>,
+    #[arg(long, value_enum, default_value = "cpu")]
+    backend: super::render::BackendArg,
 }
 
 pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
@@ -33,7 +59,11 @@ pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
         if !args.only.is_empty() && !args.only.iter().any(|o| o == name) {
             continue;
         }
-        let scene = builtin(name)?;
+        let mut scene = builtin(name)?;
+        if args.width.is_some() || args.height.is_some() {
+            let (w, h) = (args.width.unwrap_or(scene.camera.width), args.height.unwrap_or(scene.camera.height));
+            scene = scene.with_size(w, h);
+        }
         let lens = scene.thin_lens()?;
         let start = Instant::now();
         let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default())?;
@@ -68,6 +98,45 @@ pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
                 write_png_preview(dir.join(format!("{name}-reference.png")), &r.image, 1.0)?;
             }
         }
+        if args.raster {
+            raster(args, &scene, &lens, &ml)?;
+        }
+    }
+    Ok(())
+}
+
+/// The scene exported to glTF, loaded back, depth-peeled, and (on request) accumulated.
+fn raster(args: &ScenesArgs, scene: &BuiltinScene, lens: &ThinLens, exact: &MultiLayerImage) -> anyhow::Result<()> {
+    let glb = export_glb(&scene.scene, &scene.camera, &ExportOptions::default())?;
+    let mesh = load_gltf_slice(&glb)?;
+    let raster = mesh.raster();
+    let mut b = super::render::backend(args.backend)?;
+    let near = default_near(lens.focus_distance);
+    let start = Instant::now();
+    let peeled = peel_layers(b.as_mut(), &raster, &scene.camera, lens, near, &LayerOptions::default())?;
+    let (w, wo) = (peeled.image.with_mask, peeled.image.without_mask);
+    let same = exact.layers.counts.iter().zip(&peeled.image.layers.counts).filter(|(a, b)| a == b).count();
+    println!(
+        "  glTF ({} triangles, {:.1} KiB), depth-peeled on {} in {:.2?} ({} passes): {:.3} fragments/px, {:.1}% multi-layer with the buffer, {:.3} and {:.1}% without; {:.2}% of pixels keep as many layers as the exact image",
+        mesh.triangles.len(), glb.len() as f64 / 1024.0, b.device_name(), start.elapsed(), peeled.passes,
+        w.fragments_per_pixel(), 100.0 * w.multi_layer_share(), wo.fragments_per_pixel(), 100.0 * wo.multi_layer_share(),
+        100.0 * same as f64 / exact.layers.counts.len().max(1) as f64
+    );
+    if args.accumulation.is_empty() {
+        return Ok(());
+    }
+    let start = Instant::now();
+    let options = ReferenceOptions { spp: args.reference_spp, progress: true, ..Default::default() };
+    let exact_ref = reference(&scene.scene, &scene.camera, lens, &options)?;
+    println!("  exact reference: {} spp in {:.1?}", exact_ref.spp, start.elapsed());
+    for &n in &args.accumulation {
+        let start = Instant::now();
+        let acc = accumulate(b.as_mut(), &raster, &scene.camera, lens, near, &AccumulateOptions { samples: n, progress: true, ..Default::default() })?;
+        let e = compare(&acc.image, &exact_ref.image, Some(&exact.mask))?;
+        println!(
+            "  accumulation buffer, {n} renders: PSNR {:.2} dB full frame, {:.2} dB in the disocclusion buffer ({:.1?})",
+            e.psnr_db, e.psnr_masked_db.unwrap_or(f64::NAN), start.elapsed()
+        );
     }
     Ok(())
 }

@@ -65,6 +65,20 @@ impl RasterScene<'_> {
     }
 }
 
+impl crate::scene::MeshScene {
+    /// The scene as the rasteriser takes it.
+    pub fn raster(&self) -> RasterScene<'_> {
+        RasterScene {
+            vertices: &self.vertices,
+            triangles: &self.triangles,
+            materials: &self.materials,
+            textures: &self.textures,
+            texels: &self.texels,
+            lighting: self.lighting,
+        }
+    }
+}
+
 /// The mesh's buffers on a backend: vertices, triangles, materials, textures, texels (the draw's
 /// bindings 0-4). Free them with [`DeviceMesh::destroy`].
 pub struct DeviceMesh {

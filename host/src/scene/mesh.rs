@@ -92,6 +92,21 @@ impl LoadReport {
     }
 }
 
+/// The non-zero counts, comma-separated (empty when clean).
+impl std::fmt::Display for LoadReport {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let items = [
+            (self.degenerate_triangles, "zero-area triangles dropped"),
+            (self.skipped_primitives, "point or line primitives skipped"),
+            (self.orthographic_cameras, "orthographic cameras skipped"),
+            (self.unsupported_texcoords, "textures on a texture coordinate set other than 0 (set 0 used)"),
+            (self.ignored_lights, "lights not used (only the first directional light is)"),
+        ];
+        let parts: Vec<String> = items.iter().filter(|(n, _)| *n > 0).map(|(n, what)| format!("{n} {what}")).collect();
+        f.write_str(&parts.join(", "))
+    }
+}
+
 /// Whether the triangle `p0 p1 p2` has (numerically) zero area: the cross product of two edges no
 /// longer than `1e-12` times the longest squared edge, computed in f64.
 pub(crate) fn zero_area(p0: Vec3, p1: Vec3, p2: Vec3) -> bool {

@@ -32,7 +32,7 @@ fn load_builtin(name: &str) -> MeshScene {
 }
 
 /// Expectation: every built-in scene comes back with the expected triangle count, one material
-/// per primitive (double-sided, emission kept even above 65504, checkers as 2x2 nearest/repeat
+/// per primitive (open surfaces double-sided, spheres and boxes single-sided, emission kept even above 65504, checkers as 2x2 nearest/repeat
 /// textures decoding to the albedo within 1e-4), the camera (eye, view axis within 1e-4, field of
 /// view, aspect ratio) and the lighting; nothing dropped.
 #[test]
@@ -65,7 +65,8 @@ fn builtin_scenes_round_trip() {
         }
 
         for (i, (p, mat)) in prims.iter().zip(&m.materials).enumerate() {
-            assert_ne!(mat.flags & DOUBLE_SIDED, 0, "{name}: material {i} single-sided");
+            let closed = matches!(p.shape, Shape::Sphere { .. } | Shape::Cuboid { .. });
+            assert_eq!(mat.flags & DOUBLE_SIDED == 0, closed, "{name}: material {i}: closed shapes single-sided, open ones double-sided");
             match p.material {
                 Material::Emissive(c) => {
                     for k in 0..3 {
@@ -492,6 +493,7 @@ fn material_flags_and_samplers_follow_the_file() {
     m0["doubleSided"] = json!(false);
     m0["emissiveTexture"] = json!({ "index": 0 });
     doc["materials"][2]["alphaMode"] = json!("BLEND");
+    doc["materials"][2]["doubleSided"] = json!(true);
     doc["samplers"][0] = json!({ "magFilter": 9729, "wrapS": 33071, "wrapT": 33648 });
     doc["extensionsUsed"] = json!(["KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_unlit"]);
     let m = load_gltf_slice(&join_glb(&doc, &bin)).unwrap();

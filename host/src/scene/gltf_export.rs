@@ -6,8 +6,10 @@
 //! - spheres become UV spheres (vertices on the surface, outward unit normals, the seam's vertices
 //!   duplicated), boxes 12 triangles with face normals, quads 2 triangles, planes a square of
 //!   [`ExportOptions::plane_half_extent`] centred at the camera eye's projection onto the plane;
-//!   triangles are counter-clockwise seen from outside (or from the normal's side), and every
-//!   material is double-sided, as analytic surfaces are;
+//!   triangles are counter-clockwise seen from outside (or from the normal's side); quads and
+//!   planes are double-sided, as analytic surfaces are, while spheres and boxes are single-sided:
+//!   their inner faces are what the ray caster drops as self-occluded (no viewpoint outside sees
+//!   them), so culling them keeps the rasterised layers the exact ones;
 //! - solid albedo becomes the base colour factor; a checker becomes a 2x2 sRGB texture (16 bits
 //!   per channel, so it decodes to the albedo within 1e-4) with nearest filtering and repeat, and
 //!   texture coordinates are the analytic surface coordinates over twice the cell size, so the
@@ -226,7 +228,8 @@ pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Re
     for prim in scene.primitives() {
         let material_index = materials.len();
         let mut uv_scale = 0.0;
-        let mut material = json!({ "doubleSided": true });
+        let closed = matches!(prim.shape, Shape::Sphere { .. } | Shape::Cuboid { .. });
+        let mut material = json!({ "doubleSided": !closed });
         match prim.material {
             Material::Diffuse(Albedo::Solid(c)) => {
                 material["pbrMetallicRoughness"] = json!({ "baseColorFactor": [c[0], c[1], c[2], 1.0], "metallicFactor": 0.0 });

@@ -112,7 +112,7 @@ pub fn fallback_pass<G: Group, M: Mem>(
         let meets = wx >= bounds.load(4 * t) && wy >= bounds.load(4 * t + 1) && wx <= bounds.load(4 * t + 2) && wy <= bounds.load(4 * t + 3);
         if meets {
             let (v, _, _) = fetch(p, t, &vertices, &triangles, &materials);
-            let e = edges(&[clip(p, v[0]), clip(p, v[1]), clip(p, v[2])]);
+            let e = edges(&[clip(p, v[0]), clip(p, v[1]), clip(p, v[2])], p.near);
             g.each(|lid| {
                 let (x, y) = (x0 + lid % TILE, y0 + lid / TILE);
                 if x >= p.width || y >= p.height {

@@ -93,39 +93,80 @@ pub fn fetch(p: &RasterParams, t: u32, vertices: &impl Load, triangles: &impl Lo
     (v, tri[3], drawn)
 }
 
-/// Homogeneous rasterisation (no clipping needed): for a triangle with clip corners `c`, the
-/// adjugate rows `e` and determinant such that at NDC point `q`, `λ = e·(qx, qy, 1)` has the signs
-/// of `det` inside the triangle, the perspective-correct barycentrics are `λ / Σλ`, and the planar
-/// depth is `det / Σλ`. Corners behind the eye are handled exactly.
+/// How the CPU rasteriser covers one triangle, set up once per triangle.
+///
+/// - Every corner in front of the near plane (the usual case): screen-space edge functions
+///   relative to corner 0, then perspective-correct barycentrics from `1/w`. Well conditioned
+///   however small or far the triangle is.
+/// - Some corner behind it: homogeneous rasterisation (Olano and Greer), which needs no clipping:
+///   at NDC point `q`, `λ = e·(qx, qy, 1)` with `e` the adjugate of the matrix of clip corners
+///   `(x, y, w)` has the signs of its determinant inside the triangle, the barycentrics are
+///   `λ / Σλ` and the planar depth `det / Σλ`. Its cross products lose precision for small, far
+///   triangles, which is why it is kept to triangles reaching behind the near plane (large and
+///   near by nature).
 pub struct Edges {
+    pub homogeneous: bool,
     pub e: [[f32; 3]; 3],
     pub det: f32,
+    pub s0: [f32; 2],
+    pub d1: [f32; 2],
+    pub d2: [f32; 2],
+    pub area: f32,
+    pub inv_w: [f32; 3],
 }
 
-pub fn edges(c: &[[f32; 3]; 3]) -> Edges {
-    // M has columns (x_i, y_i, w_i); row i of adj(M) is the cross product of columns j and k.
-    let e0 = cross(c[1], c[2]);
-    let e1 = cross(c[2], c[0]);
-    let e2 = cross(c[0], c[1]);
-    let det = dot(c[0], e0);
-    Edges { e: [e0, e1, e2], det }
+pub fn edges(c: &[[f32; 3]; 3], near: f32) -> Edges {
+    let homogeneous = c[0][2] < near || c[1][2] < near || c[2][2] < near;
+    if homogeneous {
+        // M has columns (x_i, y_i, w_i); row i of adj(M) is the cross product of columns j and k.
+        let e0 = cross(c[1], c[2]);
+        let e1 = cross(c[2], c[0]);
+        let e2 = cross(c[0], c[1]);
+        let det = dot(c[0], e0);
+        return Edges { homogeneous, e: [e0, e1, e2], det, s0: [0.0; 2], d1: [0.0; 2], d2: [0.0; 2], area: 0.0, inv_w: [0.0; 3] };
+    }
+    let inv_w = [1.0 / c[0][2], 1.0 / c[1][2], 1.0 / c[2][2]];
+    let s = [
+        [c[0][0] * inv_w[0], c[0][1] * inv_w[0]],
+        [c[1][0] * inv_w[1], c[1][1] * inv_w[1]],
+        [c[2][0] * inv_w[2], c[2][1] * inv_w[2]],
+    ];
+    let d1 = [s[1][0] - s[0][0], s[1][1] - s[0][1]];
+    let d2 = [s[2][0] - s[0][0], s[2][1] - s[0][1]];
+    let area = d1[0] * d2[1] - d1[1] * d2[0];
+    Edges { homogeneous, e: [[0.0; 3]; 3], det: 0.0, s0: s[0], d1, d2, area, inv_w }
 }
 
-/// Barycentrics `(b0, b1)` and planar depth of NDC point `(qx, qy)` when it lies inside (edges
-/// included), else `None`-like: depth 0.
+/// Barycentrics `(b0, b1)` and planar depth of NDC point `(qx, qy)` when it lies inside the
+/// triangle (edges included); depth 0 when it does not.
 #[inline]
 pub fn cover(edges: &Edges, qx: f32, qy: f32) -> (f32, f32, f32) {
-    let l = [
-        edges.e[0][0] * qx + edges.e[0][1] * qy + edges.e[0][2],
-        edges.e[1][0] * qx + edges.e[1][1] * qy + edges.e[1][2],
-        edges.e[2][0] * qx + edges.e[2][1] * qy + edges.e[2][2],
-    ];
-    let s = if edges.det > 0.0 { 1.0 } else { -1.0 };
-    let sum = l[0] + l[1] + l[2];
-    if edges.det == 0.0 || l[0] * s < 0.0 || l[1] * s < 0.0 || l[2] * s < 0.0 || sum * s <= 0.0 {
+    if edges.homogeneous {
+        let l = [
+            edges.e[0][0] * qx + edges.e[0][1] * qy + edges.e[0][2],
+            edges.e[1][0] * qx + edges.e[1][1] * qy + edges.e[1][2],
+            edges.e[2][0] * qx + edges.e[2][1] * qy + edges.e[2][2],
+        ];
+        let s = if edges.det > 0.0 { 1.0 } else { -1.0 };
+        let sum = l[0] + l[1] + l[2];
+        if edges.det == 0.0 || l[0] * s < 0.0 || l[1] * s < 0.0 || l[2] * s < 0.0 || sum * s <= 0.0 {
+            return (0.0, 0.0, 0.0);
+        }
+        return (l[0] / sum, l[1] / sum, edges.det / sum);
+    }
+    if edges.area == 0.0 {
         return (0.0, 0.0, 0.0);
     }
-    (l[0] / sum, l[1] / sum, edges.det / sum)
+    let r = [qx - edges.s0[0], qy - edges.s0[1]];
+    let b1 = (r[0] * edges.d2[1] - r[1] * edges.d2[0]) / edges.area;
+    let b2 = (edges.d1[0] * r[1] - edges.d1[1] * r[0]) / edges.area;
+    let b0 = 1.0 - b1 - b2;
+    if b0 < 0.0 || b1 < 0.0 || b2 < 0.0 {
+        return (0.0, 0.0, 0.0);
+    }
+    let p = [b0 * edges.inv_w[0], b1 * edges.inv_w[1], b2 * edges.inv_w[2]];
+    let sum = p[0] + p[1] + p[2];
+    (p[0] / sum, p[1] / sum, 1.0 / sum)
 }
 
 /// NDC of the centre of pixel `(x, y)`.

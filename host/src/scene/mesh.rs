@@ -9,7 +9,7 @@
 //! - point and line primitives, orthographic cameras, lights other than the first directional one
 //!   and texture references to a texture coordinate set other than 0 are skipped or changed.
 
-use dof_shaders::raster::mesh::{MeshMaterial, MeshVertex, NO_TEXTURE, TextureInfo};
+use dof_shaders::raster::mesh::{MeshMaterial, MeshVertex, TextureInfo};
 use glam::Vec3;
 
 use super::analytic::Lighting;
@@ -17,9 +17,7 @@ use super::camera::Camera;
 use crate::error::{Error, Result};
 
 /// Most triangles a scene may hold (2^24), so triangle ids fit the rasteriser's 24-bit fields.
-pub const MAX_TRIANGLES: u64 = 1 << 24;
-/// Most texels all textures together may hold (2^24, 256 MiB of linear RGBA f32).
-pub const MAX_TEXELS: u64 = 1 << 24;
+pub use crate::raster::mesh::{MAX_TEXELS, MAX_TRIANGLES};
 
 /// A triangle scene in world space.
 #[derive(Clone, Debug, PartialEq)]
@@ -124,63 +122,8 @@ impl MeshScene {
         Some(it.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p))))
     }
 
-    /// Checks what the rasteriser relies on: finite vertex data, triangle indices and material
-    /// indices in range, texture references and texel ranges in range, finite material factors,
-    /// at most [`MAX_TRIANGLES`] triangles and [`MAX_TEXELS`] texels, finite lighting.
+    /// Checks what the rasteriser relies on ([`RasterScene::validate`](crate::raster::RasterScene::validate)).
     pub fn validate(&self) -> Result<()> {
-        let bad = |m: String| Err(Error::Scene(m));
-        if self.triangles.is_empty() {
-            return bad("the scene holds no triangles; a scene needs at least one".into());
-        }
-        if self.triangles.len() as u64 > MAX_TRIANGLES {
-            return Err(Error::TooLarge { what: "triangles of the scene".into(), size: self.triangles.len() as u64, limit: MAX_TRIANGLES });
-        }
-        if self.texels.len() as u64 > MAX_TEXELS {
-            return Err(Error::TooLarge { what: "texels of all textures".into(), size: self.texels.len() as u64, limit: MAX_TEXELS });
-        }
-        for (i, v) in self.vertices.iter().enumerate() {
-            let finite = v.position.iter().chain(v.normal.iter()).all(|x| x.is_finite()) && v.u.is_finite() && v.v.is_finite();
-            if !finite {
-                return bad(format!("vertex {i} has a non-finite position, normal or texture coordinate"));
-            }
-        }
-        let (nv, nm) = (self.vertices.len() as u64, self.materials.len() as u64);
-        for (i, t) in self.triangles.iter().enumerate() {
-            if t[..3].iter().any(|&k| k as u64 >= nv) {
-                return bad(format!("triangle {i} names vertex {:?}, but there are only {nv} vertices", &t[..3]));
-            }
-            if t[3] as u64 >= nm {
-                return bad(format!("triangle {i} names material {}, but there are only {nm} materials", t[3]));
-            }
-        }
-        let nt = self.textures.len() as u64;
-        for (i, m) in self.materials.iter().enumerate() {
-            for tex in [m.base_texture, m.emissive_texture] {
-                if tex != NO_TEXTURE && tex as u64 >= nt {
-                    return bad(format!("material {i} names texture {tex}, but there are only {nt} textures"));
-                }
-            }
-            if !m.base.iter().chain(m.emissive.iter()).all(|x| x.is_finite() && *x >= 0.0) || !m.alpha_cutoff.is_finite() {
-                return bad(format!("material {i} has a negative or non-finite colour factor or alpha cutoff"));
-            }
-        }
-        for (i, t) in self.textures.iter().enumerate() {
-            let end = t.offset as u64 + t.width as u64 * t.height as u64;
-            if t.width == 0 || t.height == 0 || end > self.texels.len() as u64 {
-                return bad(format!(
-                    "texture {i} ({}x{} at texel {}) is empty or runs past the {} texels",
-                    t.width,
-                    t.height,
-                    t.offset,
-                    self.texels.len()
-                ));
-            }
-        }
-        let l = &self.lighting;
-        let colours_ok = l.color.iter().chain(l.ambient.iter()).all(|x| x.is_finite() && *x >= 0.0);
-        if !l.direction.is_finite() || !(l.direction.length_squared() > 0.0) || !colours_ok {
-            return bad("the light needs a finite, non-zero direction and finite, non-negative colours".into());
-        }
-        Ok(())
+        self.raster().validate()
     }
 }

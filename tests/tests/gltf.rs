@@ -461,20 +461,7 @@ fn split_glb(glb: &[u8]) -> (Value, Vec<u8>) {
 
 /// Joins JSON and a binary chunk into a GLB.
 fn join_glb(json: &Value, bin: &[u8]) -> Vec<u8> {
-    let mut j = serde_json::to_vec(json).unwrap();
-    while j.len() % 4 != 0 {
-        j.push(b' ');
-    }
-    let mut out = b"glTF".to_vec();
-    out.extend(2u32.to_le_bytes());
-    out.extend(((28 + j.len() + bin.len()) as u32).to_le_bytes());
-    out.extend((j.len() as u32).to_le_bytes());
-    out.extend(b"JSON");
-    out.extend(j);
-    out.extend((bin.len() as u32).to_le_bytes());
-    out.extend(b"BIN\0");
-    out.extend(bin);
-    out
+    dof::scene::gltf_export::glb(serde_json::to_vec(json).unwrap(), bin.to_vec())
 }
 
 /// Expectation: material flags and sampler bits follow the file: unlit, mask with its cutoff,

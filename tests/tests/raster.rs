@@ -2,23 +2,20 @@
 //! accumulation buffer's sheared frustum, and Vulkan's graphics pipeline against the CPU fallback.
 
 use dof::backend::CpuBackend;
-use dof::raster::{AccumulateOptions, RasterScene, accumulate, peel_layers};
-use dof::scene::{Camera, LayerOptions, Lighting, Vec3};
+use dof::raster::{AccumulateOptions, accumulate, peel_layers};
+use dof::scene::{Camera, LayerOptions, MeshScene, Vec3};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::raster::mesh::{ALPHA_MASK, DOUBLE_SIDED, MeshMaterial, MeshVertex, NEAREST, TextureInfo, UNLIT};
 use dof_tests::{assert_clean, vulkan};
 
-/// A hand-built mesh of quads.
-#[derive(Default)]
-struct Mesh {
-    vertices: Vec<MeshVertex>,
-    triangles: Vec<[u32; 4]>,
-    materials: Vec<MeshMaterial>,
-    textures: Vec<TextureInfo>,
-    texels: Vec<[f32; 4]>,
+/// Hand-building meshes of quads.
+trait Build {
+    fn material(&mut self, m: MeshMaterial) -> u32;
+    fn quad(&mut self, corner: Vec3, u: Vec3, v: Vec3, material: u32);
+    fn facing(&mut self, cx: f32, cy: f32, z: f32, h: f32, material: u32);
 }
 
-impl Mesh {
+impl Build for MeshScene {
     fn material(&mut self, m: MeshMaterial) -> u32 {
         self.materials.push(m);
         self.materials.len() as u32 - 1
@@ -38,16 +35,6 @@ impl Mesh {
     fn facing(&mut self, cx: f32, cy: f32, z: f32, h: f32, material: u32) {
         self.quad(Vec3::new(cx - h, cy - h, -z), Vec3::new(2.0 * h, 0.0, 0.0), Vec3::new(0.0, 2.0 * h, 0.0), material);
     }
-    fn scene(&self) -> RasterScene<'_> {
-        RasterScene {
-            vertices: &self.vertices,
-            triangles: &self.triangles,
-            materials: &self.materials,
-            textures: &self.textures,
-            texels: &self.texels,
-            lighting: Lighting::default(),
-        }
-    }
 }
 
 fn unlit(rgb: [f32; 3]) -> MeshMaterial {
@@ -66,8 +53,8 @@ fn lens(aperture_radius: f32, focus: f32) -> ThinLens {
 }
 
 /// Far red wall at 10, green square at 5, blue square at 2 in front of the image centre.
-fn stack() -> Mesh {
-    let mut m = Mesh::default();
+fn stack() -> MeshScene {
+    let mut m = MeshScene::default();
     let (red, green, blue) = (m.material(unlit([1.0, 0.0, 0.0])), m.material(unlit([0.0, 1.0, 0.0])), m.material(unlit([0.0, 0.0, 1.0])));
     m.facing(0.0, 0.0, 10.0, 20.0, red);
     m.facing(0.2, 0.0, 5.0, 1.0, green);
@@ -86,7 +73,7 @@ fn centre(image: &dof::layers::LayeredImage) -> Vec<(f32, [f32; 3])> {
 #[test]
 fn a_pinhole_keeps_only_the_nearest_surface() {
     let m = stack();
-    let out = peel_layers(&mut CpuBackend::new(), &m.scene(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).unwrap();
+    let out = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).unwrap();
     // A pinhole's umbra is infinite: one layer everywhere, and the pass after it finds nothing.
     assert_eq!(out.image.without_mask.fragments, (W * H) as u64);
     assert_eq!(out.passes, 2);
@@ -104,7 +91,7 @@ fn peeling_finds_every_surface_beyond_the_umbra_in_order() {
     m.facing(0.0, 0.0, 2.001, 0.2, grey);
     // Aperture radius 0.2: the umbra behind the green square (pixel footprint 0.028 at 5) ends at
     // 5.8, before the wall; a smaller aperture would (rightly) hide the wall there.
-    let out = peel_layers(&mut CpuBackend::new(), &m.scene(), &camera(), &lens(0.2, 5.0), 0.01, &all_layers()).unwrap();
+    let out = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.2, 5.0), 0.01, &all_layers()).unwrap();
     let c = centre(&out.image.layers);
     let depths: Vec<f32> = c.iter().map(|f| f.0).collect();
     assert_eq!(c.len(), 3, "blue, green and red behind the centre, got depths {depths:?}");
@@ -114,7 +101,7 @@ fn peeling_finds_every_surface_beyond_the_umbra_in_order() {
     assert_eq!(c.iter().map(|f| f.1).collect::<Vec<_>>(), [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]]);
     // The disocclusion buffer keeps hidden layers only near the squares' rims (a smaller aperture,
     // so the rims are a few pixels wide): the centre keeps one.
-    let masked = peel_layers(&mut CpuBackend::new(), &m.scene(), &camera(), &lens(0.05, 5.0), 0.01, &LayerOptions::default()).unwrap();
+    let masked = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.05, 5.0), 0.01, &LayerOptions::default()).unwrap();
     let stats = (masked.image.with_mask, masked.image.without_mask);
     assert!(stats.0.fragments < stats.1.fragments && stats.0.multi_layer_pixels > 0, "{stats:?}");
     assert_eq!(centre(&masked.image.layers).len(), 1);
@@ -123,11 +110,11 @@ fn peeling_finds_every_surface_beyond_the_umbra_in_order() {
 #[test]
 fn back_faces_are_culled_unless_double_sided() {
     for (flags, seen) in [(UNLIT, false), (UNLIT | DOUBLE_SIDED, true)] {
-        let mut m = Mesh::default();
+        let mut m = MeshScene::default();
         let mat = m.material(MeshMaterial { flags, ..unlit([1.0; 3]) });
         // Wound clockwise seen from the camera: its front faces away.
         m.quad(Vec3::new(-1.0, -1.0, -3.0), Vec3::new(0.0, 2.0, 0.0), Vec3::new(2.0, 0.0, 0.0), mat);
-        let out = peel_layers(&mut CpuBackend::new(), &m.scene(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).unwrap();
+        let out = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).unwrap();
         assert_eq!(centre(&out.image.layers).len(), seen as usize, "flags {flags}");
     }
 }
@@ -140,7 +127,7 @@ fn an_alpha_mask_cuts_a_hole_to_what_lies_behind() {
     m.textures = vec![TextureInfo { offset: 0, width: 2, height: 1, sampler: NEAREST }];
     let white = m.material(MeshMaterial { base_texture: 0, flags: UNLIT | ALPHA_MASK, ..unlit([1.0; 3]) });
     m.facing(0.0, 0.0, 1.0, 0.3, white);
-    let out = peel_layers(&mut CpuBackend::new(), &m.scene(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).unwrap();
+    let out = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).unwrap();
     let at = |x: u32| out.image.layers.pixel(x, H / 2)[0];
     // Left of centre the mask is transparent: the blue square at 2 shows; right, the white square.
     assert!((at(W / 2 - 3).depth - 2.0).abs() < 1e-4, "{:?}", at(W / 2 - 3));
@@ -151,9 +138,9 @@ fn an_alpha_mask_cuts_a_hole_to_what_lies_behind() {
 fn the_accumulation_buffer_keeps_the_focus_plane_sharp_and_blurs_the_rest() {
     let m = stack();
     let cam = camera();
-    let pinhole = peel_layers(&mut CpuBackend::new(), &m.scene(), &cam, &lens(0.0, 5.0), 0.01, &all_layers()).unwrap().image.layers.front().0;
+    let pinhole = peel_layers(&mut CpuBackend::new(), &m.raster(), &cam, &lens(0.0, 5.0), 0.01, &all_layers()).unwrap().image.layers.front().0;
     let options = AccumulateOptions { samples: 64, ..AccumulateOptions::default() };
-    let acc = accumulate(&mut CpuBackend::new(), &m.scene(), &cam, &lens(0.1, 5.0), 0.01, &options).unwrap().image;
+    let acc = accumulate(&mut CpuBackend::new(), &m.raster(), &cam, &lens(0.1, 5.0), 0.01, &options).unwrap().image;
     // The green square's right half lies on the focus plane, far from any other edge: as sharp as the pinhole's.
     let green_right_edge = (W as f32 * 0.5 * (1.0 + 1.2 / (5.0 * (20f32.to_radians().tan()) * W as f32 / H as f32))) as u32;
     for x in [green_right_edge - 3, green_right_edge + 3] {
@@ -173,15 +160,15 @@ fn the_accumulation_buffer_keeps_the_focus_plane_sharp_and_blurs_the_rest() {
 fn bad_views_are_refused() {
     let m = stack();
     let mut cpu = CpuBackend::new();
-    let bad_near = peel_layers(&mut cpu, &m.scene(), &camera(), &lens(0.0, 5.0), 0.0, &all_layers());
+    let bad_near = peel_layers(&mut cpu, &m.raster(), &camera(), &lens(0.0, 5.0), 0.0, &all_layers());
     assert!(bad_near.is_err());
-    let bad_lens = peel_layers(&mut cpu, &m.scene(), &camera(), &ThinLens { focal_length: 6.0, ..lens(0.0, 5.0) }, 0.01, &all_layers());
+    let bad_lens = peel_layers(&mut cpu, &m.raster(), &camera(), &ThinLens { focal_length: 6.0, ..lens(0.0, 5.0) }, 0.01, &all_layers());
     assert!(bad_lens.is_err());
-    let zero = accumulate(&mut cpu, &m.scene(), &camera(), &lens(0.1, 5.0), 0.01, &AccumulateOptions { samples: 0, ..Default::default() });
+    let zero = accumulate(&mut cpu, &m.raster(), &camera(), &lens(0.1, 5.0), 0.01, &AccumulateOptions { samples: 0, ..Default::default() });
     assert!(zero.is_err());
     let mut broken = stack();
     broken.triangles[0][1] = 999;
-    let err = peel_layers(&mut cpu, &broken.scene(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).err().unwrap();
+    let err = peel_layers(&mut cpu, &broken.raster(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).err().unwrap();
     assert!(err.to_string().contains("names vertex"), "{err}");
 }
 
@@ -196,8 +183,8 @@ fn vulkan_rasterises_like_the_cpu() {
     m.quad(Vec3::new(-2.0, -1.5, -1.0), Vec3::new(1.5, 0.0, -6.0), Vec3::new(0.0, 1.0, 0.0), tex);
     m.quad(Vec3::new(0.5, 0.6, 1.0), Vec3::new(0.0, 0.0, -4.0), Vec3::new(0.8, 0.0, 0.0), tex);
     let (cam, l) = (camera(), lens(0.08, 5.0));
-    let cpu = peel_layers(&mut CpuBackend::new(), &m.scene(), &cam, &l, 0.01, &all_layers()).unwrap();
-    let gpu = peel_layers(&mut vk, &m.scene(), &cam, &l, 0.01, &all_layers()).unwrap();
+    let cpu = peel_layers(&mut CpuBackend::new(), &m.raster(), &cam, &l, 0.01, &all_layers()).unwrap();
+    let gpu = peel_layers(&mut vk, &m.raster(), &cam, &l, 0.01, &all_layers()).unwrap();
     assert_clean(&mut vk);
     let (a, b) = (&cpu.image.layers, &gpu.image.layers);
     let mut differing = 0;
@@ -213,8 +200,8 @@ fn vulkan_rasterises_like_the_cpu() {
     assert!(cpu.image.without_mask.multi_layer_pixels > 500, "{:?}", cpu.image.without_mask);
 
     let options = AccumulateOptions { samples: 16, ..AccumulateOptions::default() };
-    let acc_cpu = accumulate(&mut CpuBackend::new(), &m.scene(), &cam, &l, 0.01, &options).unwrap().image;
-    let acc_gpu = accumulate(&mut vk, &m.scene(), &cam, &l, 0.01, &options).unwrap().image;
+    let acc_cpu = accumulate(&mut CpuBackend::new(), &m.raster(), &cam, &l, 0.01, &options).unwrap().image;
+    let acc_gpu = accumulate(&mut vk, &m.raster(), &cam, &l, 0.01, &options).unwrap().image;
     assert_clean(&mut vk);
     let mean_diff = acc_cpu.data.iter().flatten().zip(acc_gpu.data.iter().flatten()).map(|(a, b)| (a - b).abs() as f64).sum::<f64>() / (3 * W * H) as f64;
     assert!(mean_diff < 2e-3, "mean |CPU - Vulkan| of the accumulation buffer: {mean_diff}");

@@ -328,7 +328,7 @@ pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Re
 
 /// The GLB container: a 12-byte header, the JSON chunk padded with spaces and the binary chunk
 /// padded with zeros, each to 4 bytes.
-fn glb(mut json: Vec<u8>, mut bin: Vec<u8>) -> Vec<u8> {
+pub fn glb(mut json: Vec<u8>, mut bin: Vec<u8>) -> Vec<u8> {
     while json.len() % 4 != 0 {
         json.push(b' ');
     }

@@ -19,8 +19,8 @@ use crate::error::{Error, Result};
 /// Most triangles a scene may hold (2^24), so triangle ids fit the rasteriser's 24-bit fields.
 pub use crate::raster::mesh::{MAX_TEXELS, MAX_TRIANGLES};
 
-/// A triangle scene in world space.
-#[derive(Clone, Debug, PartialEq)]
+/// A triangle scene in world space (the default is empty, with the default light).
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct MeshScene {
     /// World-space vertices (node transforms applied); normals unit length, or zero where the file
     /// gives none (the rasteriser then uses the face normal).

@@ -7,7 +7,8 @@ use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct EvalArgs {
-    /// Scenes (comma-separated); default all built-in scenes.
+    /// Scenes (comma-separated): built-in names or glTF files (measured against their
+    /// accumulation buffer); default all built-in scenes.
     #[arg(long, value_delimiter = ',')]
     scenes: Vec<String>,
     /// Methods (comma-separated); default all.

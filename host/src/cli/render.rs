@@ -383,14 +383,7 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     if !report.is_empty() {
         eprintln!("note: {}: {report}", args.scene);
     }
-    let camera = gltf_camera(args, &mesh)?;
-    let frame = camera.frame()?;
-    // Default focus: the planar depth of the scene's centre (or the target's), at f/2.8.
-    let centre = mesh.bounds().map(|(lo, hi)| 0.5 * (lo + hi)).unwrap_or(camera.target);
-    let depth = frame.depth_of(centre);
-    let focus = if depth > 0.0 { depth } else { frame.depth_of(camera.target) };
-    let lens = lens_settings(args, LensSettings::photographic(focus, 2.8)).thin_lens(&camera)?;
-    let near = mesh.cameras.first().filter(|_| args.eye.is_none()).map(|c| c.znear).unwrap_or(default_near(lens.focus_distance));
+    let (camera, lens, near) = gltf_view(args, &mesh)?;
     println!(
         "{}: {} triangles, {}x{}, f = {:.1} mm, aperture radius {:.2} mm, focus {:.3}, near plane {near}, far-field CoC {:.1} px",
         args.scene, mesh.triangles.len(), camera.width, camera.height, lens.focal_length * 1e3, lens.aperture_radius * 1e3,
@@ -415,28 +408,32 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     }
 }
 
-/// The camera of a glTF scene: `--eye` and `--target` (with `--yfov`, default the file's or 40
-/// degrees) when given, else the file's first camera. The size defaults to 640 pixels wide and the
-/// camera's aspect ratio (16:9 when it has none).
-fn gltf_camera(args: &RenderArgs, mesh: &MeshScene) -> anyhow::Result<Camera> {
-    let file = mesh.cameras.first();
-    let aspect = file.and_then(|c| c.aspect_ratio).filter(|a| a.is_finite() && *a > 0.0).unwrap_or(16.0 / 9.0);
+/// The view of a glTF scene: `--eye` and `--target` (with `--yfov`, default the file's or 40
+/// degrees) when given, else the file's first camera ([`MeshScene::default_view`]); the lens flags
+/// over the scene's default lens.
+fn gltf_view(args: &RenderArgs, mesh: &MeshScene) -> anyhow::Result<(Camera, ThinLens, f32)> {
     let width = args.width.unwrap_or(640);
-    let height = args.height.unwrap_or(((width as f32 / aspect).round() as u32).max(1));
-    let mut camera = match (args.eye, args.target, file) {
-        (Some(eye), Some(target), _) => {
-            let yfov = args.yfov.map(f32::to_radians).or(file.map(|c| c.yfov_radians)).unwrap_or(40f32.to_radians());
-            Camera::look_at(eye, target, yfov, width, height)
+    let (mut camera, settings, near) = match (args.eye, args.target) {
+        (Some(eye), Some(target)) => {
+            let yfov = args.yfov.map(f32::to_radians).or(mesh.cameras.first().map(|c| c.yfov_radians)).unwrap_or(40f32.to_radians());
+            let camera = Camera::look_at(eye, target, yfov, width, args.height.unwrap_or(width * 9 / 16));
+            let settings = mesh.default_lens(&camera)?;
+            (camera, settings, None)
         }
-        (Some(_), None, _) | (None, Some(_), _) => bail!("give both --eye X,Y,Z and --target X,Y,Z (or neither, to use the file's camera)"),
-        (None, None, Some(c)) => c.camera(width, height)?,
-        (None, None, None) => bail!("{} has no camera: give --eye X,Y,Z --target X,Y,Z (and --yfov DEGREES, default 40)", args.scene),
+        (None, None) if mesh.cameras.is_empty() => {
+            bail!("{} has no camera: give --eye X,Y,Z --target X,Y,Z (and --yfov DEGREES, default 40)", args.scene)
+        }
+        (None, None) => {
+            let (camera, settings, near) = mesh.default_view(width, args.height)?;
+            (camera, settings, Some(near))
+        }
+        _ => bail!("give both --eye X,Y,Z and --target X,Y,Z (or neither, to use the file's camera)"),
     };
     if let Some(deg) = args.yfov {
         camera.yfov_radians = deg.to_radians();
     }
-    camera.frame()?;
-    Ok(camera)
+    let lens = lens_settings(args, settings).thin_lens(&camera)?;
+    Ok((camera, lens, near.unwrap_or(default_near(lens.focus_distance))))
 }
 
 fn write_outputs(out: &Path, image: &RgbImage, extra: &[(&str, &[f32])], exposure: f32) -> anyhow::Result<()> {

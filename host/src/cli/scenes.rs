@@ -49,10 +49,13 @@ pub struct ScenesArgs {
     height: Option<u32>,
     #[arg(long, value_enum, default_value = "cpu")]
     backend: super::render::BackendArg,
+    /// Write each scene as binary glTF (`<name>.glb`, with its camera and light) into this folder.
+    #[arg(long)]
+    export: Option<PathBuf>,
 }
 
 pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
-    if let Some(dir) = &args.dump {
+    for dir in [&args.dump, &args.export].into_iter().flatten() {
         std::fs::create_dir_all(dir)?;
     }
     for &name in builtin_names() {
@@ -100,6 +103,11 @@ pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
         }
         if args.raster {
             raster(args, &scene, &lens, &ml)?;
+        }
+        if let Some(dir) = &args.export {
+            let path = dir.join(format!("{name}.glb"));
+            std::fs::write(&path, export_glb(&scene.scene, &scene.camera, &ExportOptions::default())?)?;
+            println!("  wrote {}", path.display());
         }
     }
     Ok(())

@@ -1,5 +1,7 @@
 //! The evaluation: every scene × method × quality setting × backend, timed per stage and measured
-//! against the scene's exact reference, full frame and inside the partial-occlusion region.
+//! against the scene's reference, full frame and inside the partial-occlusion region. Built-in
+//! scenes bring their exact ray-cast layers and thin-lens reference; glTF files (`.gltf`, `.glb`)
+//! are depth-peeled and measured against their accumulation buffer, both on the first backend.
 //! Methods come from [`methods::registry`], so a new method appears here without changes.
 //!
 //! Timing: one warm-up run, then the median of `runs` runs, per stage (GPU timestamps on Vulkan,
@@ -15,7 +17,12 @@ pub mod sweep;
 use crate::backend::Backend;
 use crate::error::{Error, Result};
 use crate::metrics::compare;
-use crate::scene::{AutoOptions, LayerOptions, ReferenceOptions, builtin, raycast_layers, reference, reference_auto};
+use crate::layers::RgbImage;
+use crate::raster::{AccumulateOptions, accumulate, peel_layers};
+use crate::scene::{
+    AutoOptions, LayerOptions, MultiLayerImage, ReferenceOptions, builtin, load_gltf, raycast_layers, reference, reference_auto,
+};
+use dof_shaders::lens::ThinLens;
 use methods::{Method, MethodInput, MethodOutput, Setting, registry};
 use report::{BackendInfo, Record, Report, SceneInfo};
 use crate::timing::RunTimes;
@@ -65,27 +72,19 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
     }
     let infos = backends.iter().map(|b| BackendInfo { kind: b.kind().to_string(), device: b.device_name(), driver: b.driver() }).collect();
     let mut report = Report::new(options.quick, options.runs, infos);
-    for name in &options.scenes {
-        let mut scene = builtin(name)?;
-        if options.quick {
-            scene = scene.with_size(160, 90);
-        }
-        let lens = scene.thin_lens()?;
-        let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default())?;
-        let exact = if options.quick {
-            reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: 64, progress: options.progress, ..Default::default() })?
-        } else {
-            let auto = AutoOptions { max_spp: 1024, region: Some(ml.mask.clone()), progress: options.progress, ..Default::default() };
-            reference_auto(&scene.scene, &scene.camera, &lens, &auto)?
-        };
+    for scene_arg in &options.scenes {
+        let prepared = if is_gltf(scene_arg) { prepare_gltf(scene_arg, options, backends[0].as_mut())? } else { prepare_builtin(scene_arg, options)? };
+        let gltf = is_gltf(scene_arg);
+        let Prepared { name, width, height, lens, ml, reference: exact, reference_spp, reference_noise_psnr_db } = prepared;
         let (front, depth) = ml.layers.front();
         report.scenes.push(SceneInfo {
             name: name.clone(),
-            width: scene.camera.width,
-            height: scene.camera.height,
+            width,
+            height,
             lens: (&lens).into(),
-            reference_spp: exact.spp,
-            reference_noise_psnr_db: exact.noise_psnr_db,
+            reference: if gltf { "accumulation" } else { "exact" }.into(),
+            reference_spp,
+            reference_noise_psnr_db,
             fragments_per_pixel: ml.with_mask.fragments_per_pixel(),
             multi_layer_share: ml.with_mask.multi_layer_share(),
             occlusion_region_share: ml.mask_share(),
@@ -100,7 +99,7 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                     let b = backend.as_mut();
                     let (times, output) = timed(method.as_ref(), b, &input, &setting, options.runs)?;
                     let image = output.image;
-                    let error = compare(&image, &exact.image, Some(&ml.mask))?;
+                    let error = compare(&image, &exact, Some(&ml.mask))?;
                     if backend_index == 0 {
                         match best.iter_mut().find(|b| b.0 == method.name()) {
                             Some(b) if b.1 >= error.psnr_db => {}
@@ -134,9 +133,9 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
             }
         }
         let rows = best.into_iter().map(|(name, _, image)| (name, image)).collect();
-        report.grids.push((name.clone(), exact.image.clone(), rows));
+        report.grids.push((name.clone(), exact, rows));
     }
-    if let Some(first) = options.scenes.first().filter(|_| !options.coc_sweep.is_empty()) {
+    if let Some(first) = options.scenes.iter().find(|s| !is_gltf(s)).filter(|_| !options.coc_sweep.is_empty()) {
         // Half the evaluation's size (the gather's cost grows with the square of the radius, and
         // the sweep's largest radius takes lavapipe tens of seconds a run at full size).
         let (w, h) = if options.quick { (160, 90) } else { (320, 180) };
@@ -150,4 +149,63 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
         report.coc_sweep = sweep::coc_sweep(first, &scene, &chosen, backends, &sweep_options)?;
     }
     Ok(report)
+}
+
+/// A scene ready to be measured: its multi-layer image and its reference.
+struct Prepared {
+    name: String,
+    width: u32,
+    height: u32,
+    lens: ThinLens,
+    ml: MultiLayerImage,
+    reference: RgbImage,
+    /// Samples per pixel of the exact reference, or renders of the accumulation buffer.
+    reference_spp: u32,
+    reference_noise_psnr_db: Option<f64>,
+}
+
+fn is_gltf(scene: &str) -> bool {
+    let lower = scene.to_ascii_lowercase();
+    lower.ends_with(".gltf") || lower.ends_with(".glb")
+}
+
+/// A built-in scene: the exact ray-cast layers and the thin-lens reference.
+fn prepare_builtin(name: &str, options: &EvalOptions) -> Result<Prepared> {
+    let mut scene = builtin(name)?;
+    if options.quick {
+        scene = scene.with_size(160, 90);
+    }
+    let lens = scene.thin_lens()?;
+    let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default())?;
+    let exact = if options.quick {
+        reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: 64, progress: options.progress, ..Default::default() })?
+    } else {
+        let auto = AutoOptions { max_spp: 1024, region: Some(ml.mask.clone()), progress: options.progress, ..Default::default() };
+        reference_auto(&scene.scene, &scene.camera, &lens, &auto)?
+    };
+    Ok(Prepared {
+        name: name.to_string(),
+        width: scene.camera.width,
+        height: scene.camera.height,
+        lens,
+        ml,
+        reference: exact.image,
+        reference_spp: exact.spp,
+        reference_noise_psnr_db: exact.noise_psnr_db,
+    })
+}
+
+/// A glTF scene with its own camera and the default lens: depth-peeled layers and the
+/// accumulation buffer (64 renders quick, 256 otherwise) as the reference, both on `backend`.
+fn prepare_gltf(path: &str, options: &EvalOptions, backend: &mut dyn Backend) -> Result<Prepared> {
+    let mesh = load_gltf(std::path::Path::new(path))?;
+    let (camera, settings, near) = mesh.default_view(if options.quick { 160 } else { 640 }, None)?;
+    let lens = settings.thin_lens(&camera)?;
+    let raster = mesh.raster();
+    let ml = peel_layers(backend, &raster, &camera, &lens, near, &LayerOptions::default())?.image;
+    let samples = if options.quick { 64 } else { 256 };
+    let acc = accumulate(backend, &raster, &camera, &lens, near, &AccumulateOptions { samples, progress: options.progress, ..Default::default() })?;
+    let stem = std::path::Path::new(path).file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
+    let name = format!("{stem}-gltf");
+    Ok(Prepared { name, width: camera.width, height: camera.height, lens, ml, reference: acc.image, reference_spp: samples, reference_noise_psnr_db: None })
 }

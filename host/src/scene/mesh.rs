@@ -10,6 +10,8 @@
 //!   and texture references to a texture coordinate set other than 0 are skipped or changed.
 
 use dof_shaders::raster::mesh::{MeshMaterial, MeshVertex, TextureInfo};
+
+use super::lens::LensSettings;
 use glam::Vec3;
 
 use super::analytic::Lighting;
@@ -115,6 +117,58 @@ pub(crate) fn zero_area(p0: Vec3, p1: Vec3, p2: Vec3) -> bool {
 }
 
 impl MeshScene {
+    /// The view a file scene is rendered with by default: its first camera, `width` pixels wide
+    /// and `height` high (default: the camera's aspect ratio, 16:9 when it has none), the near plane
+    /// its `znear`, and [`MeshScene::default_lens`]. Errors when the file has no camera.
+    pub fn default_view(&self, width: u32, height: Option<u32>) -> Result<(Camera, LensSettings, f32)> {
+        let Some(c) = self.cameras.first() else {
+            return Err(Error::Scene("the scene has no camera; give one (eye, target and vertical field of view)".into()));
+        };
+        let aspect = c.aspect_ratio.filter(|a| a.is_finite() && *a > 0.0).unwrap_or(16.0 / 9.0);
+        let height = height.unwrap_or(((width as f32 / aspect).round() as u32).max(1));
+        let camera = c.camera(width, height)?;
+        Ok((camera, self.default_lens(&camera)?, c.znear))
+    }
+
+    /// A lens for scenes that carry none: focused on what the image centre sees (the nearest
+    /// triangle on the view axis, else the bounds' centre), with the aperture radius
+    /// `0.02 · z_f · tan(yfov/2)`, which makes the far-field CoC 2% of the image height whatever
+    /// the scene's scale (a physical f/2.8 blurs a room-sized scene by a fraction of a pixel at
+    /// these image sizes, which would leave nothing to compare).
+    pub fn default_lens(&self, camera: &Camera) -> Result<LensSettings> {
+        let frame = camera.frame()?;
+        let centre = self.bounds().map(|(lo, hi)| 0.5 * (lo + hi)).unwrap_or(camera.target);
+        let focus = self.first_hit(frame.eye, frame.forward).unwrap_or_else(|| frame.depth_of(centre));
+        if !(focus > 0.0 && focus.is_finite()) {
+            return Err(Error::Scene("the camera sees nothing to focus on; give the focus distance".into()));
+        }
+        Ok(LensSettings::with_aperture_radius(focus, 0.02 * focus * frame.tan_half_fov))
+    }
+
+    /// Distance along the unit `direction` from `origin` to the nearest triangle (either side).
+    pub fn first_hit(&self, origin: Vec3, direction: Vec3) -> Option<f32> {
+        let at = |i: u32| self.vertices.get(i as usize).map(|v| Vec3::from(v.position));
+        self.triangles
+            .iter()
+            .filter_map(|t| {
+                let (a, b, c) = (at(t[0])?, at(t[1])?, at(t[2])?);
+                // Möller-Trumbore.
+                let (e1, e2) = (b - a, c - a);
+                let p = direction.cross(e2);
+                let det = e1.dot(p);
+                if det.abs() < 1e-12 {
+                    return None;
+                }
+                let s = origin - a;
+                let u = s.dot(p) / det;
+                let q = s.cross(e1);
+                let v = direction.dot(q) / det;
+                let t = e2.dot(q) / det;
+                (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0).then_some(t)
+            })
+            .min_by(f32::total_cmp)
+    }
+
     /// Axis-aligned bounds of all vertex positions; `None` without vertices.
     pub fn bounds(&self) -> Option<(Vec3, Vec3)> {
         let mut it = self.vertices.iter().map(|v| Vec3::from(v.position));

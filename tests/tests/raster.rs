@@ -206,3 +206,66 @@ fn vulkan_rasterises_like_the_cpu() {
     let mean_diff = acc_cpu.data.iter().flatten().zip(acc_gpu.data.iter().flatten()).map(|(a, b)| (a - b).abs() as f64).sum::<f64>() / (3 * W * H) as f64;
     assert!(mean_diff < 2e-3, "mean |CPU - Vulkan| of the accumulation buffer: {mean_diff}");
 }
+
+/// Stiff geometry, each with its stated behaviour, on the CPU rasteriser and on Vulkan alike:
+/// - a triangle wholly behind the eye draws nothing;
+/// - a floor reaching behind the eye (corners behind the near plane) covers exactly the pixels
+///   below the horizon, at the analytic planar depth `h / (tan(yfov/2) · ndc_y)` within 1e-4;
+/// - a zero-area triangle draws nothing and yields no NaN;
+/// - a triangle a thousandth of a pixel wide draws at most the one pixel whose centre it covers
+///   (the CPU draws it; Vulkan's sub-pixel snapping may drop it);
+/// - a triangle 10^4 units away lands at its depth within 1e-4 relative.
+#[test]
+fn stiff_geometry_rasterises_as_stated() {
+    let mut m = MeshScene::default();
+    let white = m.material(MeshMaterial { flags: UNLIT | DOUBLE_SIDED, ..unlit([1.0; 3]) });
+    // Behind the eye.
+    m.quad(Vec3::new(-1.0, -1.0, 2.0), Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 2.0, 0.0), white);
+    // The floor, 1 unit below the eye, from 100 behind to 1000 ahead.
+    m.quad(Vec3::new(-1000.0, -1.0, 100.0), Vec3::new(2000.0, 0.0, 0.0), Vec3::new(0.0, 0.0, -1100.0), white);
+    // Zero area: three corners on one line.
+    let base = m.vertices.len() as u32;
+    for x in [0.0, 0.5, 1.0] {
+        m.vertices.push(MeshVertex { position: [x, 0.2, -3.0], ..MeshVertex::default() });
+    }
+    m.triangles.push([base, base + 1, base + 2, white]);
+    // A sliver a thousandth of a pixel wide around the centre of pixel (10, 10), above the horizon.
+    let frame = camera().frame().unwrap();
+    let dir = frame.direction(10.5, 10.5);
+    let z = 5.0;
+    let px = 2.0 * z * frame.tan_half_fov / H as f32;
+    let c = dir * z;
+    m.quad(c - Vec3::new(0.0005 * px, 0.3 * px, 0.0), Vec3::new(0.001 * px, 0.0, 0.0), Vec3::new(0.0, 0.6 * px, 0.0), white);
+    // Far away: a square of 10^4 units' depth filling the top-right corner.
+    m.facing(4000.0, 2800.0, 1e4, 3000.0, white);
+
+    let run = |b: &mut dyn dof::backend::Backend| peel_layers(b, &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).unwrap().image.layers;
+    let mut outputs = vec![("cpu", run(&mut CpuBackend::new()))];
+    if let Some(mut vk) = vulkan() {
+        outputs.push(("vulkan", run(&mut vk)));
+        assert_clean(&mut vk);
+    }
+    for (name, image) in &outputs {
+        assert!(image.fragments.iter().all(|f| f.color.iter().all(|c| c.is_finite())), "{name}: NaN colour");
+        for y in 0..H {
+            let ndc_y = 2.0 * (y as f32 + 0.5) / H as f32 - 1.0;
+            for x in 0..W {
+                let front = image.pixel(x, y).first().map(|f| f.depth);
+                if ndc_y > 0.0 {
+                    let want = 1.0 / (frame.tan_half_fov * ndc_y);
+                    let got = front.unwrap_or_else(|| panic!("{name}: floor missing at ({x}, {y})"));
+                    assert!((got - want).abs() <= 1e-4 * want, "{name}: floor depth {got} at ({x}, {y}), want {want}");
+                } else if (x, y) == (10, 10) {
+                    // The CPU covers the centre; a GPU's sub-pixel snapping may collapse the sliver.
+                    assert!(front.is_none_or(|d| (d - z).abs() < 1e-3), "{name}: the sliver's pixel: {front:?}");
+                    assert!(*name != "cpu" || front.is_some(), "the CPU rasteriser covers the sliver's pixel centre");
+                } else if x as f32 > 0.75 * W as f32 && (y as f32) < 0.2 * H as f32 {
+                    let d = front.unwrap_or_else(|| panic!("{name}: far square missing at ({x}, {y})"));
+                    assert!((d - 1e4).abs() <= 1e-4 * 1e4, "{name}: far square at depth {d}");
+                } else {
+                    assert!(front.is_none_or(|d| d > 1e3), "{name}: ({x}, {y}) above the horizon drew depth {front:?}");
+                }
+            }
+        }
+    }
+}

@@ -99,8 +99,8 @@ impl Target {
         }
     }
 
-    /// One attachment image with its memory and view. On failure the image (if made) is handed back
-    /// through `self.allocations` and a null view so `destroy` frees it.
+    /// One attachment image with its memory and view. Its allocation joins `self.allocations` (which
+    /// `destroy` frees); on a later failure the image itself is destroyed here.
     unsafe fn attachment(
         &mut self,
         device: &ash::Device,

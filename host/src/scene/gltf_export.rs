@@ -4,7 +4,9 @@
 //! reference converges to the exact analytic reference renders this export.
 //!
 //! - spheres become UV spheres (vertices on the surface, outward unit normals, the seam's vertices
-//!   duplicated), boxes 12 triangles with face normals, quads 2 triangles, planes a square of
+//!   duplicated) with about one longitude segment per pixel of their projected circumference,
+//!   between [`MIN_SEGMENTS`] and [`ExportOptions::sphere_segments`]; boxes 12 triangles with face
+//!   normals, quads 2 triangles, planes a square of
 //!   [`ExportOptions::plane_half_extent`] centred at the camera eye's projection onto the plane;
 //!   triangles are counter-clockwise seen from outside (or from the normal's side); quads and
 //!   planes are double-sided, as analytic surfaces are, while spheres and boxes are single-sided:
@@ -25,14 +27,15 @@ use serde_json::{Value, json};
 
 use super::analytic::{Albedo, Lighting, Material, Scene, Shape, surface_coords, tangents};
 use super::builtin::builtin;
-use super::camera::Camera;
+use super::camera::{Camera, CameraFrame};
 use super::mesh::MAX_TRIANGLES;
 use crate::error::{Error, Result};
 
 /// How finely curved and unbounded shapes are turned into triangles.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ExportOptions {
-    /// Segments around a sphere's longitude (at least 4); latitude gets half as many.
+    /// Most segments around a sphere's longitude (at least 4; a sphere gets about one per pixel of
+    /// its projected circumference, at least [`MIN_SEGMENTS`]); latitude gets half as many.
     pub sphere_segments: u32,
     /// Half the side of the square standing in for an infinite plane, scene units.
     pub plane_half_extent: f32,
@@ -79,8 +82,27 @@ impl Part {
     }
 }
 
+/// Fewest longitude segments of a sphere: its 32-gon outline keeps 99.4% of the disc's area, so a
+/// pixel-sized emitter loses under 1% of its energy to tessellation.
+pub const MIN_SEGMENTS: u32 = 32;
+
+/// Longitude segments for a sphere: about one per pixel of its projected circumference (seen from
+/// its centre's distance; the whole budget when the eye is near or inside it), even, between
+/// [`MIN_SEGMENTS`] and `options.sphere_segments`.
+pub fn sphere_segments(center: Vec3, radius: f32, frame: &CameraFrame, options: &ExportOptions) -> u32 {
+    let distance = (center - frame.eye).length().max(radius);
+    let radius_px = radius / (distance * frame.tan_half_fov) * 0.5 * frame.height as f32;
+    let wanted = (2.0 * PI * radius_px).ceil();
+    let most = options.sphere_segments;
+    if !(wanted < most as f32) {
+        return most;
+    }
+    ((wanted as u32).max(MIN_SEGMENTS).div_ceil(2) * 2).min(most)
+}
+
 /// Triangulates one shape; `uv_scale` multiplies the surface coordinates (0 without a texture).
-fn tessellate(shape: &Shape, camera_eye: Vec3, uv_scale: f32, options: &ExportOptions) -> Part {
+fn tessellate(shape: &Shape, frame: &CameraFrame, uv_scale: f32, options: &ExportOptions) -> Part {
+    let camera_eye = frame.eye;
     let mut part = Part::default();
     let uv = |p: Vec3, n: Vec3| {
         let (u, v) = surface_coords(shape, p, n);
@@ -88,7 +110,7 @@ fn tessellate(shape: &Shape, camera_eye: Vec3, uv_scale: f32, options: &ExportOp
     };
     match *shape {
         Shape::Sphere { center, radius } => {
-            let lon = options.sphere_segments;
+            let lon = sphere_segments(center, radius, frame, options);
             let lat = lon / 2;
             // Longitude φ from −π to π (the seam at ±π, where the analytic coordinates jump),
             // latitude θ from −π/2 to π/2: p = c + r (cos φ cos θ, sin θ, sin φ cos θ), which is what
@@ -216,9 +238,17 @@ pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Re
     if !(options.plane_half_extent > 0.0 && options.plane_half_extent.is_finite()) {
         return Err(Error::InvalidArgument(format!("plane_half_extent must be positive and finite, got {}", options.plane_half_extent)));
     }
-    let lon = options.sphere_segments as u64;
-    let per_sphere = lon * (lon / 2 * 2 - 2);
-    let estimate: u64 = scene.primitives().iter().map(|p| if matches!(p.shape, Shape::Sphere { .. }) { per_sphere } else { 12 }).sum();
+    let estimate: u64 = scene
+        .primitives()
+        .iter()
+        .map(|p| match p.shape {
+            Shape::Sphere { center, radius } => {
+                let lon = sphere_segments(center, radius, &frame, options) as u64;
+                lon * (lon / 2 * 2 - 2)
+            }
+            _ => 12,
+        })
+        .sum();
     if estimate > MAX_TRIANGLES {
         return Err(Error::TooLarge { what: "triangles of the exported scene".into(), size: estimate, limit: MAX_TRIANGLES });
     }
@@ -258,7 +288,7 @@ pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Re
         }
         materials.push(material);
 
-        let part = tessellate(&prim.shape, frame.eye, uv_scale, options);
+        let part = tessellate(&prim.shape, &frame, uv_scale, options);
         let count = part.positions.len();
         let (lo, hi) = part.positions.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
         let first = accessors.len();

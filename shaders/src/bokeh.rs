@@ -296,5 +296,6 @@ pub const BOKEH_DRAW: crate::DrawDesc = crate::DrawDesc {
     vertices: 6,
     fallback: &BOKEH_SPLAT,
     fallback_tile: TILE,
+    fallback_prepass: None,
     depth_test: false,
 };

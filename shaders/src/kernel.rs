@@ -33,7 +33,13 @@ pub struct KernelDesc {
 /// keeping the nearest. Backends without a graphics pipeline
 /// (the CPU backend) run `fallback` instead, a compute kernel over `fallback_tile`-pixel square tiles
 /// from the same sources, bound to the draw's buffers, then the indirect command's buffer, then the
-/// target (4 words a pixel).
+/// target (4 words a pixel); before it, `fallback_prepass` (if any) with the same bindings over
+/// [`PREPASS_GROUPS`] workgroups (a grid-stride kernel: work the fallback needs and the graphics
+/// pipeline does not).
+/// Workgroups of a draw's fallback prepass.
+#[cfg(not(target_arch = "spirv"))]
+pub const PREPASS_GROUPS: u32 = 64;
+
 #[cfg(not(target_arch = "spirv"))]
 pub struct DrawDesc {
     pub vertex: &'static str,
@@ -43,6 +49,7 @@ pub struct DrawDesc {
     pub vertices: u32,
     pub fallback: &'static KernelDesc,
     pub fallback_tile: u32,
+    pub fallback_prepass: Option<&'static KernelDesc>,
     /// Keep the nearest fragment per pixel (reversed depth test, no blending) instead of adding
     /// every fragment.
     pub depth_test: bool,

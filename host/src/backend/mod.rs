@@ -118,6 +118,9 @@ pub trait Backend {
         self.fill(target, 0, 4 * size[0] as u64 * size[1] as u64, 0, label)?;
         let mut bound = buffers.to_vec();
         bound.extend([args, target]);
+        if let Some(prepass) = draw.fallback_prepass {
+            self.dispatch(prepass, [dof_shaders::kernel::PREPASS_GROUPS, 1, 1], &bound, push, label)?;
+        }
         let groups = [size[0].div_ceil(draw.fallback_tile), size[1].div_ceil(draw.fallback_tile), 1];
         self.dispatch(draw.fallback, groups, &bound, push, label)
     }

@@ -8,14 +8,14 @@
 use super::mesh::{DeviceMesh, RasterScene};
 use super::peel::{Pass, check_view, shade_params};
 use super::view::View;
-use crate::backend::{Backend, CommandTime, push_words, with_buffers};
+use crate::backend::{Backend, CommandTime, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::RgbImage;
-use crate::methods::buffers::groups_for;
+use crate::methods::buffers::read_rgb;
 use crate::scene::Camera;
 use crate::scene::sampling::{concentric_disc, pixel_rng, stratified};
 use dof_shaders::lens::ThinLens;
-use dof_shaders::raster::shade::{ACCUMULATE, RASTER_SHADE};
+use dof_shaders::raster::shade::ACCUMULATE;
 use indicatif::{ProgressBar, ProgressStyle};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -68,9 +68,8 @@ pub fn accumulate(
     if options.samples == 0 {
         return Err(Error::InvalidArgument("the accumulation buffer needs at least one render (--samples)".into()));
     }
-    frame.check_size("accumulation buffer", 4)?;
+    frame.check_size("accumulation buffer", 3)?;
     let pixels = frame.width as u64 * frame.height as u64;
-    let size = [frame.width, frame.height];
     let views = views(options.samples, lens.aperture_radius, options.seed);
     let mesh = DeviceMesh::upload(backend, scene)?;
     let bar = options.progress.then(|| {
@@ -81,21 +80,15 @@ pub fn accumulate(
         bar
     });
     let mut sizes = Pass::sizes(&mesh, pixels, 1).to_vec();
-    sizes.push((4 * pixels, "accum/sum"));
+    sizes.push((3 * pixels, "accum/sum"));
     let result = with_buffers(backend, &sizes, |backend, b| {
         let pass = Pass::new(backend, &mesh, b, 1)?;
         let sum = b[4];
-        backend.fill(sum, 0, 4 * pixels, 0, "accum/sum")?;
-        let [v, t, m, tx, tl] = mesh.buffers;
+        backend.fill(sum, 0, 3 * pixels, 0, "accum/sum")?;
         let mut times = Vec::new();
         for (i, view) in views.iter().enumerate() {
-            let mut params = view.params(&frame, lens.focus_distance, near);
-            params.triangles = mesh.triangles;
-            params.textures = mesh.textures;
-            pass.draw(backend, &mesh, &params, size, "accum/draw")?;
-            let shade = shade_params(scene, &mesh, &frame, lens, view, ACCUMULATE);
-            let bound = [pass.vis, v, t, m, tx, tl, sum, pass.reach];
-            backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &bound, &push_words(&shade), "accum/shade")?;
+            pass.draw(backend, &mesh, view, &frame, lens, near, false, "accum/draw")?;
+            pass.shade(backend, &mesh, &shade_params(scene, &mesh, &frame, lens, view, ACCUMULATE), sum, "accum/shade")?;
             if (i + 1) % options.batch.max(1) as usize == 0 || i + 1 == views.len() {
                 times.extend(backend.submit()?);
                 if let Some(bar) = &bar {
@@ -103,10 +96,10 @@ pub fn accumulate(
                 }
             }
         }
-        let words = backend.read_buffer(sum, 0, 4 * pixels)?;
+        let mut image = read_rgb(backend, sum, frame.width, frame.height)?;
         let n = views.len() as f32;
-        let data = words.chunks_exact(4).map(|w| [0, 1, 2].map(|j| f32::from_bits(w[j]) / n)).collect();
-        Ok((RgbImage { width: frame.width, height: frame.height, data }, times))
+        image.data.iter_mut().flatten().for_each(|c| *c /= n);
+        Ok((image, times))
     });
     mesh.destroy(backend);
     if let Some(bar) = bar {

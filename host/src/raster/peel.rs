@@ -16,9 +16,9 @@ use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::{Fragment, LayeredImage};
 use crate::methods::buffers::groups_for;
-use crate::scene::{Camera, LayerOptions, MultiLayerImage, apply_disocclusion};
+use crate::scene::{Camera, CameraFrame, LayerOptions, MultiLayerImage, apply_disocclusion};
 use dof_shaders::lens::ThinLens;
-use dof_shaders::raster::draw::{RASTER_DRAW, RASTER_SETUP, VIS_WORDS};
+use dof_shaders::raster::draw::{RASTER_DRAW, VIS_WORDS};
 use dof_shaders::raster::project::RasterParams;
 use dof_shaders::raster::shade::{LAYER, LAYER_WORDS, RASTER_SHADE, ShadeParams};
 
@@ -81,13 +81,32 @@ impl Pass {
         Ok(pass)
     }
 
-    /// Draws the mesh once into `vis`: the triangles' tile ranges for this view (which only the
-    /// CPU fallback reads), then the draw.
-    pub fn draw(&self, backend: &mut dyn Backend, mesh: &DeviceMesh, params: &RasterParams, size: [u32; 2], label: &str) -> Result<()> {
+    /// Draws the mesh once into `vis` as `view` sees it; `peel` keeps only fragments beyond the
+    /// reach.
+    #[allow(clippy::too_many_arguments)]
+    pub fn draw(
+        &self,
+        backend: &mut dyn Backend,
+        mesh: &DeviceMesh,
+        view: &View,
+        frame: &CameraFrame,
+        lens: &ThinLens,
+        near: f32,
+        peel: bool,
+        label: &str,
+    ) -> Result<()> {
+        let params = RasterParams { triangles: mesh.triangles, textures: mesh.textures, peel: peel as u32, ..view.params(frame, lens.focus_distance, near) };
         let [v, t, m, tx, tl] = mesh.buffers;
-        let push = push_words(params);
-        backend.dispatch(&RASTER_SETUP, groups_for(&RASTER_SETUP, mesh.triangles as u64), &[v, t, m, self.bounds], &push, label)?;
-        backend.draw_indirect(&RASTER_DRAW, self.args, &[v, t, m, tx, tl, self.reach, self.bounds], self.vis, size, &push, label)
+        let size = [frame.width, frame.height];
+        backend.draw_indirect(&RASTER_DRAW, self.args, &[v, t, m, tx, tl, self.reach, self.bounds], self.vis, size, &push_words(&params), label)
+    }
+
+    /// Shades the visibility buffer into `out` (a layer, or the accumulation buffer).
+    pub fn shade(&self, backend: &mut dyn Backend, mesh: &DeviceMesh, params: &ShadeParams, out: BufferId, label: &str) -> Result<()> {
+        let [v, t, m, tx, tl] = mesh.buffers;
+        let pixels = params.width as u64 * params.height as u64;
+        let bound = [self.vis, v, t, m, tx, tl, out, self.reach];
+        backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &bound, &push_words(params), label)
     }
 }
 
@@ -110,7 +129,6 @@ pub fn peel_layers(
     frame.check_size("multi-layer image", options.max_layers as u64)?;
     let mut full = LayeredImage::new(frame.width, frame.height, options.max_layers)?;
     let pixels = frame.width as u64 * frame.height as u64;
-    let size = [frame.width, frame.height];
     let mesh = DeviceMesh::upload(backend, scene)?;
     let mut sizes = Pass::sizes(&mesh, pixels, pixels).to_vec();
     sizes.push((LAYER_WORDS as u64 * pixels, "peel/layer"));
@@ -118,18 +136,12 @@ pub fn peel_layers(
         let pass = Pass::new(backend, &mesh, b, pixels)?;
         let layer = b[4];
         let view = View::default();
-        let mut params = view.params(&frame, lens.focus_distance, near);
-        params.triangles = mesh.triangles;
-        params.textures = mesh.textures;
         let shade = shade_params(scene, &mesh, &frame, lens, &view, LAYER);
-        let [v, t, m, tx, tl] = mesh.buffers;
         let mut times = Vec::new();
         let mut passes = 0;
         for k in 0..options.max_layers {
-            params.peel = (k > 0) as u32;
-            pass.draw(backend, &mesh, &params, size, &format!("peel/draw {k}"))?;
-            let bound = [pass.vis, v, t, m, tx, tl, layer, pass.reach];
-            backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &bound, &push_words(&shade), &format!("peel/shade {k}"))?;
+            pass.draw(backend, &mesh, &view, &frame, lens, near, k > 0, &format!("peel/draw {k}"))?;
+            pass.shade(backend, &mesh, &shade, layer, &format!("peel/shade {k}"))?;
             times.extend(backend.submit()?);
             passes += 1;
             let words = backend.read_buffer(layer, 0, LAYER_WORDS as u64 * pixels)?;

@@ -7,7 +7,9 @@
 //! vertices, [`raster_fs`] tests and writes, the depth attachment keeps the nearest. On the CPU:
 //! [`RASTER_FALLBACK`], a compute rasteriser over 16x16 tiles evaluating the same functions.
 //!
-//! Buffers: vertices, triangles, materials, textures, texels, reach (one f32 a pixel).
+//! Buffers: vertices, triangles, materials, textures, texels, reach (one f32 a pixel), and each
+//! triangle's tile range (4 words), which only the CPU fallback and its prepass [`RASTER_SETUP`]
+//! touch.
 
 use super::mesh::{ALPHA_BLEND, ALPHA_MASK, MATERIAL_WORDS, VERTEX_WORDS};
 use super::project::{RasterParams, clip, cover, edges, fetch, pixel_ndc, triangle};
@@ -74,9 +76,23 @@ pub fn fragment_kept(
     }
 }
 
-/// Each triangle's conservative tile range for this view ([`tile_bounds`]): the CPU stand-in reads
-/// it instead of projecting every triangle once per tile. (The graphics pipeline ignores it.)
-pub fn setup_pass<G: Group, M: Mem>(g: &mut G, p: &RasterParams, vertices: M, triangles: M, materials: M, mut bounds: M) {
+/// Each triangle's conservative tile range for this view ([`tile_bounds`]): the fallback's prepass,
+/// so the CPU stand-in reads it instead of projecting every triangle once per tile. (The graphics
+/// pipeline neither runs nor reads it.)
+#[allow(clippy::too_many_arguments)]
+pub fn setup_pass<G: Group, M: Mem>(
+    g: &mut G,
+    p: &RasterParams,
+    vertices: M,
+    triangles: M,
+    materials: M,
+    _textures: M,
+    _texels: M,
+    _reach: M,
+    mut bounds: M,
+    _args: M,
+    _target: M,
+) {
     for_each_item(g, p.triangles, |t| {
         let (v, _, drawn) = fetch(p, t, &vertices, &triangles, &materials);
         let c = [clip(p, v[0]), clip(p, v[1]), clip(p, v[2])];
@@ -178,8 +194,8 @@ fn tile_bounds(p: &RasterParams, c: &[[f32; 3]; 3]) -> [u32; 4] {
 }
 
 kernel!(
-    /// Every triangle's tile range for the view: the draw's CPU fallback reads it.
-    RASTER_SETUP = raster_setup [64] (RasterParams) { vertices, triangles, materials, bounds } => setup_pass
+    /// Every triangle's tile range for the view: the prepass of the draw's CPU fallback.
+    RASTER_SETUP = raster_setup [64] (RasterParams) { vertices, triangles, materials, textures, texels, reach, bounds, args, target } => setup_pass
 );
 
 kernel!(
@@ -269,5 +285,6 @@ pub const RASTER_DRAW: crate::DrawDesc = crate::DrawDesc {
     vertices: 3,
     fallback: &RASTER_FALLBACK,
     fallback_tile: TILE,
+    fallback_prepass: Some(&RASTER_SETUP),
     depth_test: true,
 };

@@ -18,7 +18,7 @@ use crate::wg::for_each_item;
 
 /// [`ShadeParams::mode`]: write layer `(r, g, b, alpha, depth)` and the next reach.
 pub const LAYER: u32 = 0;
-/// Add `alpha · (r, g, b)` into the accumulation buffer (4 words a pixel).
+/// Add `alpha · (r, g, b)` into the accumulation buffer (3 words a pixel).
 pub const ACCUMULATE: u32 = 1;
 /// Words a pixel of a layer.
 pub const LAYER_WORDS: u32 = 5;
@@ -127,7 +127,7 @@ pub fn shade_pass<G: Group, M: Mem>(
         if p.mode == ACCUMULATE {
             let mut j = 0usize;
             while j < 3 {
-                let i = 4 * pi + j as u32;
+                let i = 3 * pi + j as u32;
                 out.store(i, (f32::from_bits(out.load(i)) + alpha * rgb[j]).to_bits());
                 j += 1;
             }

@@ -9,8 +9,8 @@ use dof::io::codecs::exr::prelude as exr;
 use dof::io::codecs::png;
 use dof::io::tonemap::{aces_fitted, srgb_eotf, srgb_oetf, to_u8, tonemap, tonemap_to_srgb8};
 use dof::io::{
-    COLOR_INF_REPLACEMENT, ExrCompression, ExrLayout, ExrPrecision, ExrWriteOptions, SanitizeCounts, read_layered_exr,
-    read_rgb_exr, write_exr, write_exr_with, write_layered_exr, write_png_preview,
+    BACKGROUND_DEPTH, COLOR_INF_REPLACEMENT, ExrCompression, ExrLayout, ExrPrecision, ExrWriteOptions, SanitizeCounts,
+    read_layered_exr, read_rgb_exr, write_exr, write_exr_with, write_layered_exr, write_png_preview,
 };
 use dof::layers::{Fragment, LayeredImage, RgbImage};
 use proptest::prelude::*;
@@ -75,6 +75,34 @@ fn write_channels(path: &Path, width: usize, height: usize, channels: Vec<exr::A
     use exr::WritableImage;
     let image = exr::Image::from_channels((width, height), exr::AnyChannels::sort(channels.into_iter().collect()));
     image.write().to_file(path).unwrap();
+}
+
+/// Writes a multi-part EXR: one part per `(name, channels)`, all `width x height`.
+fn write_parts(path: &Path, width: usize, height: usize, parts: Vec<(&str, Vec<exr::AnyChannel<exr::FlatSamples>>)>) {
+    use exr::WritableImage;
+    let layers: Vec<exr::Layer<exr::AnyChannels<exr::FlatSamples>>> = parts
+        .into_iter()
+        .map(|(name, channels)| {
+            exr::Layer::new(
+                (width, height),
+                exr::LayerAttributes::named(name),
+                exr::Encoding::FAST_LOSSLESS,
+                exr::AnyChannels::sort(channels.into_iter().collect()),
+            )
+        })
+        .collect();
+    let image =
+        exr::Image::from_layers(exr::ImageAttributes::new(exr::IntegerBounds::from_dimensions((width, height))), layers);
+    image.write().to_file(path).unwrap();
+}
+
+fn half_channel(name: &str, values: Vec<f32>) -> exr::AnyChannel<exr::FlatSamples> {
+    exr::AnyChannel::new(name, exr::FlatSamples::F16(values.into_iter().map(exr::f16::from_f32).collect()))
+}
+
+/// The background fragment the reader makes of a slot at depth `+inf` or beyond the threshold.
+fn background(color: [f32; 3]) -> Fragment {
+    Fragment { color, alpha: 1.0, depth: f32::INFINITY }
 }
 
 /// One input layer slot of the multi-layer tests: premultiplied colour, alpha, depth.
@@ -220,11 +248,13 @@ fn layered_round_trip_with_partial_alpha() {
 }
 
 /// Premultiplied slots of a 4x2 three-layer image, with layer order unrelated to depth order, empty
-/// slots (A = 0 with garbage depth, Z = inf) and partial alpha.
+/// slots (A = 0 with garbage depth), background slots (Z = inf, A = 1; pixel 4 has two) and partial
+/// alpha.
 fn multi_layer_slots() -> Vec<Vec<Slot>> {
     let s = |rgb: [f32; 3], a: f32, z: f32| Slot { rgb, a, z };
     let empty = s([0.0; 3], 0.0, 0.0);
     let sky = s([0.0; 3], 1.0, f32::INFINITY);
+    let blue_sky = s([0.1, 0.2, 0.9], 1.0, f32::INFINITY);
     // slots[layer][pixel]
     vec![
         vec![
@@ -252,7 +282,7 @@ fn multi_layer_slots() -> Vec<Vec<Slot>> {
             empty,
             s([3.0, 3.0, 3.0], 1.0, 1.0),
             empty,
-            sky,
+            blue_sky, // behind the first background of pixel 4 (layer 0's): dropped
             s([1.0, 1.0, 1.0], 1.0, 4.0),
             empty,
             s([1.0, 0.0, 0.0], 1.0, 10.0),
@@ -260,8 +290,9 @@ fn multi_layer_slots() -> Vec<Vec<Slot>> {
     ]
 }
 
-/// What the reader must produce from `slots`: per pixel, the non-empty slots as straight-colour
-/// fragments, sorted by depth (stable).
+/// What the reader must produce from `slots`: per pixel, the non-empty finite slots as
+/// straight-colour fragments, sorted by depth (stable), then the first background slot (in layer
+/// order) as a background fragment with its stored colour.
 fn expected_pixels(slots: &[Vec<Slot>]) -> Vec<Vec<Fragment>> {
     (0..slots[0].len())
         .map(|p| {
@@ -272,6 +303,9 @@ fn expected_pixels(slots: &[Vec<Slot>]) -> Vec<Vec<Fragment>> {
                 .map(|s| Fragment { color: s.rgb.map(|c| c / s.a), alpha: s.a, depth: s.z })
                 .collect();
             frags.sort_by(|a, b| a.depth.total_cmp(&b.depth));
+            if let Some(sky) = slots.iter().map(|l| l[p]).find(|s| s.a > 0.0 && s.z == f32::INFINITY) {
+                frags.push(background(sky.rgb));
+            }
             frags
         })
         .collect()
@@ -310,10 +344,14 @@ fn multi_layer_exr_written_by_the_exr_crate() {
     assert_eq!(report.layout, ExrLayout::MultiLayer);
     assert_eq!(report.layers, names);
     assert_eq!(report.ignored_channels, ["B", "G", "R"]);
-    assert_eq!(report.counts.repaired(), 0, "{report}");
     assert_eq!(report.counts.empty_alpha, 8);
-    assert_eq!(report.counts.sky_with_color, 0, "sky slots had no colour");
+    assert_eq!(report.counts.background, 2, "both sky slots of pixel 4 are backgrounds");
+    assert_eq!(report.counts.behind_background, 1, "the second is dropped");
+    assert_eq!(report.counts.repaired(), 1, "{report}");
+    assert_eq!(report.total(), 4, "the dropped slot and the three unused root channels");
+    assert_mentions(&report.to_string(), &["channels not used: B, G, R", "1 fragments behind the background dropped"]);
     assert_matches_expected(&image, &slots, 4);
+    assert_eq!(image.pixel(0, 1), [Fragment { color: [0.0, 0.0, 7.0], alpha: 1.0, depth: 8.0 }, background([0.0; 3])]);
     for p in 0..8 {
         let (x, y) = (p % 4, p / 4);
         assert!(image.pixel(x, y).windows(2).all(|f| f[0].depth <= f[1].depth), "front to back at ({x}, {y})");
@@ -385,6 +423,327 @@ fn depth_and_alpha_name_variants() {
     let (image, report) = read_layered_exr(file.path()).unwrap();
     assert_eq!(report.layout, ExrLayout::RgbZ);
     assert_eq!(image.pixel(0, 0)[0].depth, 4.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The background, and EXR files as Blender and Nuke write them
+
+/// The colour of a fragment or background stored at pixel `p` of the Blender-like fixtures:
+/// (premultiplied colour, alpha, depth).
+const TOOL_PIXELS: [([f32; 3], f32, f32); 4] = [
+    ([0.5, 0.25, 0.125], 1.0, 3.0),       // opaque surface
+    ([0.2, 0.1, 0.05], 0.5, 7.5),         // antialiased edge: straight colour is twice this
+    ([0.3, 0.6, 0.9], 1.0, 1e10),         // Blender's world background at 1e10, with a colour
+    ([0.0, 0.0, 0.0], 0.0, f32::INFINITY), // transparent film: alpha 0 at +inf
+];
+
+/// What the reader must make of `TOOL_PIXELS` in an RGB+Z image.
+fn tool_pixels_expected() -> [Vec<Fragment>; 4] {
+    [
+        vec![Fragment { color: [0.5, 0.25, 0.125], alpha: 1.0, depth: 3.0 }],
+        vec![Fragment { color: [0.4, 0.2, 0.1], alpha: 0.5, depth: 7.5 }],
+        vec![background([0.3, 0.6, 0.9])],
+        vec![background([0.0; 3])],
+    ]
+}
+
+fn tool_channel(name: &str, f: impl Fn(&([f32; 3], f32, f32)) -> f32) -> exr::AnyChannel<exr::FlatSamples> {
+    channel(name, TOOL_PIXELS.iter().map(f).collect())
+}
+
+/// `<prefix>.R/G/B/A` of `TOOL_PIXELS`.
+fn rgba_channels(prefix: &str) -> Vec<exr::AnyChannel<exr::FlatSamples>> {
+    let mut channels: Vec<_> =
+        (0..3).map(|k| tool_channel(&format!("{prefix}{}", ["R", "G", "B"][k]), |p| p.0[k])).collect();
+    channels.push(tool_channel(&format!("{prefix}A"), |p| p.1));
+    channels
+}
+
+fn assert_tool_pixels(image: &LayeredImage) {
+    assert_eq!((image.width, image.height, image.max_layers), (4, 1, 1));
+    for (x, want) in tool_pixels_expected().iter().enumerate() {
+        assert_eq!(image.pixel(x as u32, 0), &want[..], "pixel {x}");
+    }
+}
+
+#[test]
+fn blender_combined_with_sibling_depth_layer() {
+    for view_layer in ["RenderLayer", "ViewLayer", "My Layer"] {
+        let mut channels = rgba_channels(&format!("{view_layer}.Combined."));
+        channels.push(tool_channel(&format!("{view_layer}.Depth.Z"), |p| p.2));
+        // Passes Blender writes beside them: not the image, each named as unused.
+        for c in ["R", "G", "B"] {
+            channels.push(channel(&format!("{view_layer}.DiffCol.{c}"), vec![0.7; 4]));
+        }
+        for c in ["X", "Y", "Z"] {
+            channels.push(channel(&format!("{view_layer}.Normal.{c}"), vec![0.0; 4]));
+        }
+        channels.push(channel(&format!("{view_layer}.Mist.Z"), vec![0.5; 4]));
+        let file = TempFile::new("blender.exr");
+        write_channels(file.path(), 4, 1, channels);
+
+        let (image, report) = read_layered_exr(file.path()).unwrap();
+        assert_eq!(report.layout, ExrLayout::RgbZ, "{view_layer}");
+        assert_eq!(report.layers, [format!("{view_layer}.Combined")]);
+        let used = ["Combined.R", "Combined.G", "Combined.B", "Combined.A", "Depth.Z"];
+        assert_eq!(report.channels, used.map(|c| format!("{view_layer}.{c}")));
+        let mut unused: Vec<String> =
+            ["DiffCol.B", "DiffCol.G", "DiffCol.R", "Mist.Z", "Normal.X", "Normal.Y", "Normal.Z"]
+                .iter()
+                .map(|c| format!("{view_layer}.{c}"))
+                .collect();
+        unused.sort();
+        assert_eq!(report.ignored_channels, unused);
+        assert_eq!(report.counts, SanitizeCounts { background: 2, ..Default::default() });
+        assert_eq!(report.total(), 7, "the seven unused channels are worth a note");
+        let text = report.to_string();
+        assert_mentions(
+            &text,
+            &[
+                &format!("RGB+Z from {view_layer}.Combined.R"),
+                &format!("{view_layer}.Depth.Z"),
+                &format!("channels not used: {}", unused.join(", ")),
+                "2 background fragments",
+            ],
+        );
+        assert_tool_pixels(&image);
+    }
+}
+
+#[test]
+fn blender_half_float_file_background_is_infinite() {
+    // Blender's default half-float EXR: its background depth 1e10 overflows to +inf.
+    let half_of = |name: &str, f: &dyn Fn(&([f32; 3], f32, f32)) -> f32| {
+        half_channel(name, TOOL_PIXELS.iter().map(f).collect())
+    };
+    let channels = vec![
+        half_of("ViewLayer.Combined.R", &|p| p.0[0]),
+        half_of("ViewLayer.Combined.G", &|p| p.0[1]),
+        half_of("ViewLayer.Combined.B", &|p| p.0[2]),
+        half_of("ViewLayer.Combined.A", &|p| p.1),
+        half_of("ViewLayer.Depth.Z", &|p| p.2),
+    ];
+    let file = TempFile::new("blender-half.exr");
+    write_channels(file.path(), 4, 1, channels);
+    let (image, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(report.layers, ["ViewLayer.Combined"]);
+    assert_eq!(report.counts.background, 2);
+    let h = |v: f32| exr::f16::from_f32(v).to_f32();
+    assert_eq!(image.pixel(0, 0), [Fragment { color: [0.5, 0.25, 0.125], alpha: 1.0, depth: 3.0 }]);
+    assert_eq!(image.pixel(2, 0), [background([h(0.3), h(0.6), h(0.9)])]);
+    assert_eq!(image.pixel(3, 0), [background([0.0; 3])]);
+}
+
+#[test]
+fn nuke_two_part_rgba_and_depth() {
+    // Nuke names the depth channel `depth.Z` inside the part `depth`, or just `Z`; the rgba part's
+    // channels are `R`, `G`, `B`, `A` or `rgba.R`, ...: all four spellings read the same.
+    for (colour_prefix, depth_name) in [("", "depth.Z"), ("", "Z"), ("rgba.", "depth.Z"), ("rgba.", "Z")] {
+        let rgba = rgba_channels(colour_prefix);
+        let depth = vec![tool_channel(depth_name, |p| p.2)];
+        // A further part holding another colour layer (a pass): named as unused.
+        let diffuse = ["R", "G", "B"].iter().map(|c| channel(c, vec![0.25; 4])).collect();
+        let file = TempFile::new("nuke.exr");
+        write_parts(file.path(), 4, 1, vec![("rgba", rgba), ("depth", depth), ("diffuse", diffuse)]);
+
+        let (image, report) = read_layered_exr(file.path()).unwrap();
+        let case = format!("{colour_prefix}R with {depth_name}");
+        assert_eq!(report.layout, ExrLayout::RgbZ, "{case}");
+        assert_eq!(report.layers, ["rgba"], "{case}");
+        assert_eq!(report.channels, ["rgba.R", "rgba.G", "rgba.B", "rgba.A", "depth.Z"], "{case}");
+        assert_eq!(report.ignored_channels, ["diffuse.B", "diffuse.G", "diffuse.R"], "{case}");
+        assert_eq!(report.counts, SanitizeCounts { background: 2, ..Default::default() }, "{case}");
+        assert_tool_pixels(&image);
+    }
+
+    // The single-part Nuke layout: unnamed R, G, B, A with `depth.Z`.
+    let mut channels = rgba_channels("");
+    channels.push(tool_channel("depth.Z", |p| p.2));
+    let file = TempFile::new("nuke-single.exr");
+    write_channels(file.path(), 4, 1, channels);
+    let (image, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(report.layers, [""]);
+    assert_eq!(report.channels, ["R", "G", "B", "A", "depth.Z"]);
+    assert!(report.ignored_channels.is_empty());
+    assert_tool_pixels(&image);
+}
+
+#[test]
+fn sky_colour_is_kept_at_infinity_and_beyond_the_threshold() {
+    let sky = [0.25, 0.5, 1.0];
+    // Where tools put the background: +inf, Blender's 1e10, f32::MAX; just below the threshold the
+    // surface is an ordinary (very far) fragment.
+    assert_eq!(BACKGROUND_DEPTH, 1e10);
+    let below = 1e10f32.next_down();
+    let cases = [(f32::INFINITY, true), (1e10, true), (f32::MAX, true), (below, false), (65504.0, false)];
+    for (sky_depth, is_background) in cases {
+        let mut image = RgbImage::new(2, 1);
+        image.data = vec![[1.0, 0.0, 0.0], sky];
+        let depth = [2.0, sky_depth];
+        let file = TempFile::new("sky.exr");
+        write_exr(file.path(), &image, &[("Z", &depth)]).unwrap();
+        let (layered, report) = read_layered_exr(file.path()).unwrap();
+        assert_eq!(layered.pixel(0, 0), [Fragment { color: [1.0, 0.0, 0.0], alpha: 1.0, depth: 2.0 }]);
+        let want = if is_background { background(sky) } else { Fragment { color: sky, alpha: 1.0, depth: sky_depth } };
+        assert_eq!(layered.pixel(1, 0), [want], "sky at {sky_depth}");
+        assert_eq!(report.counts, SanitizeCounts { background: is_background as u64, ..Default::default() });
+        assert_eq!(report.total(), 0, "nothing was repaired or left out at {sky_depth}");
+    }
+}
+
+#[test]
+fn multi_layer_background_ends_the_pixel() {
+    // Per pixel, three layer slots (premultiplied colour, alpha, depth).
+    let inf = f32::INFINITY;
+    let pixels: [[([f32; 3], f32, f32); 3]; 3] = [
+        // A background in the first layer, a surface in front of it in a later layer, and a
+        // second background (at 1e12) that is dropped.
+        [([0.1, 0.2, 0.3], 1.0, inf), ([1.0, 1.0, 0.0], 0.5, 4.0), ([9.0, 9.0, 9.0], 1.0, 1e12)],
+        // A partly transparent background slot: taken over black (its stored colour), alpha 1.
+        [([2.0, 0.0, 0.0], 1.0, 1.0), ([0.2, 0.4, 0.6], 0.5, 2e10), ([0.0; 3], 0.0, inf)],
+        // Empty slots at +inf (as `write_layered_exr` writes them) are not a background.
+        [([0.0; 3], 0.0, inf), ([0.0, 3.0, 0.0], 1.0, 5.0), ([0.0; 3], 0.0, inf)],
+    ];
+    let mut channels = Vec::new();
+    for layer in 0..3 {
+        for (k, c) in ["R", "G", "B"].iter().enumerate() {
+            channels.push(channel(&format!("layer{layer}.{c}"), pixels.iter().map(|p| p[layer].0[k]).collect()));
+        }
+        channels.push(channel(&format!("layer{layer}.A"), pixels.iter().map(|p| p[layer].1).collect()));
+        channels.push(channel(&format!("layer{layer}.Z"), pixels.iter().map(|p| p[layer].2).collect()));
+    }
+    let file = TempFile::new("multi-sky.exr");
+    write_channels(file.path(), 3, 1, channels);
+    let (image, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(report.layout, ExrLayout::MultiLayer);
+    assert_eq!(
+        image.pixel(0, 0),
+        [Fragment { color: [2.0, 2.0, 0.0], alpha: 0.5, depth: 4.0 }, background([0.1, 0.2, 0.3])]
+    );
+    assert_eq!(
+        image.pixel(1, 0),
+        [Fragment { color: [2.0, 0.0, 0.0], alpha: 1.0, depth: 1.0 }, background([0.2, 0.4, 0.6])]
+    );
+    assert_eq!(image.pixel(2, 0), [Fragment { color: [0.0, 3.0, 0.0], alpha: 1.0, depth: 5.0 }]);
+    assert_eq!(
+        report.counts,
+        SanitizeCounts { background: 3, behind_background: 1, empty_alpha: 3, ..Default::default() }
+    );
+    assert_eq!(report.repaired(), 1, "the dropped second background is a repair");
+    assert_mentions(&report.to_string(), &["1 fragments behind the background dropped", "3 background fragments"]);
+}
+
+#[test]
+fn layered_round_trip_with_background() {
+    let mut image = LayeredImage::new(2, 1, 2).unwrap();
+    image.push(0, 0, Fragment { color: [0.3, 0.6, 0.9], alpha: 0.25, depth: 1.0 }).unwrap();
+    image.push(0, 0, background([0.5, 0.75, 1.0])).unwrap();
+    image.push(1, 0, background([0.0; 3])).unwrap();
+    let file = TempFile::new("layered-sky.exr");
+    write_layered_exr(file.path(), &image).unwrap();
+    let (back, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(back.pixel(0, 0)[1], background([0.5, 0.75, 1.0]));
+    assert_eq!(back.pixel(1, 0), [background([0.0; 3])]);
+    assert_eq!(back.pixel(0, 0).len(), 2);
+    assert_eq!(report.counts.background, 2);
+    assert_eq!(report.counts.repaired(), 0);
+}
+
+#[test]
+fn root_rgbz_next_to_named_layers_is_refused() {
+    // The root image may be the front layer or the flattened image of the named layers: refused,
+    // naming both candidates' channels.
+    let mut channels = vec![channel("R", vec![1.0; 4]), channel("G", vec![1.0; 4]), channel("B", vec![1.0; 4])];
+    channels.push(channel("Z", vec![2.0; 4]));
+    for l in ["layer0", "layer1"] {
+        for c in ["R", "G", "B", "A", "Z"] {
+            channels.push(channel(&format!("{l}.{c}"), vec![1.0; 4]));
+        }
+    }
+    let file = TempFile::new("root-and-layers.exr");
+    write_channels(file.path(), 2, 2, channels);
+    let m = err_message(read_layered_exr(file.path()));
+    assert_mentions(
+        &m,
+        &[
+            "root-and-layers.exr is ambiguous",
+            "2 different images",
+            "(1) RGB+Z from the unnamed channels R, G, B, Z",
+            "(2) a multi-layer image of the layers `layer0`, `layer1`",
+            "layer0.R, layer0.G, layer0.B, layer0.A, layer0.Z",
+            "Keep the channels of the one to use and remove the others",
+        ],
+    );
+
+    // A root RGB+Z next to named layers that are not images (passes without depth): the root is
+    // read, the others named as unused.
+    let mut channels = vec![channel("R", vec![1.0; 4]), channel("G", vec![0.5; 4]), channel("B", vec![0.25; 4])];
+    channels.push(channel("Z", vec![2.0; 4]));
+    for c in ["R", "G", "B"] {
+        channels.push(channel(&format!("diffuse.{c}"), vec![0.0; 4]));
+    }
+    let file = TempFile::new("root-and-passes.exr");
+    write_channels(file.path(), 2, 2, channels);
+    let (image, report) = read_layered_exr(file.path()).unwrap();
+    assert_eq!(report.layout, ExrLayout::RgbZ);
+    assert_eq!(report.ignored_channels, ["diffuse.B", "diffuse.G", "diffuse.R"]);
+    assert_eq!(report.total(), 3);
+    assert_mentions(&report.to_string(), &["channels not used: diffuse.B, diffuse.G, diffuse.R"]);
+    assert_eq!(image.pixel(1, 1), [Fragment { color: [1.0, 0.5, 0.25], alpha: 1.0, depth: 2.0 }]);
+}
+
+#[test]
+fn ambiguous_tool_layouts_are_refused() {
+    // Two Blender view layers, each with Combined and Depth.
+    let mut channels = Vec::new();
+    for view_layer in ["ViewLayer", "Background"] {
+        for c in ["R", "G", "B", "A"] {
+            channels.push(channel(&format!("{view_layer}.Combined.{c}"), vec![1.0; 4]));
+        }
+        channels.push(channel(&format!("{view_layer}.Depth.Z"), vec![3.0; 4]));
+    }
+    let file = TempFile::new("two-view-layers.exr");
+    write_channels(file.path(), 2, 2, channels);
+    let m = err_message(read_layered_exr(file.path()));
+    assert_mentions(
+        &m,
+        &[
+            "is ambiguous",
+            "RGB+Z from `Background.Combined` with the depth of `Background.Depth`",
+            "RGB+Z from `ViewLayer.Combined` with the depth of `ViewLayer.Depth`",
+            "Background.Combined.R, Background.Combined.G, Background.Combined.B, Background.Combined.A, Background.Depth.Z",
+        ],
+    );
+
+    // Nuke's `rgba.*` and an unnamed R, G, B both beside `depth.Z`.
+    let mut channels = rgba_channels("rgba.");
+    channels.extend(["R", "G", "B"].map(|c| channel(c, vec![0.0; 4])));
+    channels.push(tool_channel("depth.Z", |p| p.2));
+    let file = TempFile::new("rgba-and-root.exr");
+    write_channels(file.path(), 4, 1, channels);
+    assert_mentions(
+        &err_message(read_layered_exr(file.path())),
+        &[
+            "is ambiguous",
+            "RGB+Z from the unnamed layer with the depth of `depth`",
+            "RGB+Z from `rgba` with the depth of `depth`",
+        ],
+    );
+
+    // Blender's Combined with a depth layer of another view layer: no image, and the message names
+    // the depth layer that matched nothing.
+    let mut channels = rgba_channels("ViewLayer.Combined.");
+    channels.push(tool_channel("Other.Depth.Z", |p| p.2));
+    let file = TempFile::new("stray-depth.exr");
+    write_channels(file.path(), 4, 1, channels);
+    assert_mentions(
+        &err_message(read_layered_exr(file.path())),
+        &[
+            "layer `ViewLayer.Combined` has colour but no depth",
+            "`<P>.Depth.Z` beside `<P>.Combined`",
+            "(`Other.Depth`) belong to no colour layer",
+        ],
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -562,8 +921,8 @@ fn nan_inf_policy_and_counts() {
         ([1.0, 1.0, 1.0], 1.0, nan),      // depth NaN -> dropped
         ([1.0, 1.0, 1.0], 1.0, 0.0),      // depth 0 -> dropped
         ([1.0, 1.0, 1.0], 1.0, -3.0),     // negative depth -> dropped
-        ([1.0, 1.0, 1.0], 1.0, inf),      // sky with colour -> no fragment, informational
-        ([0.0, 0.0, 0.0], 1.0, inf),      // plain sky
+        ([1.0, 1.0, 1.0], 1.0, inf),      // sky with colour -> background fragment with that colour
+        ([0.0, 0.0, 0.0], 1.0, inf),      // black sky -> black background fragment
         ([0.5, 0.5, 0.5], 2.0, 1.0),      // alpha > 1 -> 1
         ([0.5, 0.5, 0.5], nan, 1.0),      // alpha NaN -> 0 -> empty
         ([-0.5, 0.0, 0.0], 1.0, -inf),    // depth -inf -> dropped (colour not looked at)
@@ -586,26 +945,38 @@ fn nan_inf_policy_and_counts() {
             color_inf: 2,
             alpha_invalid: 2,
             depth_invalid: 4,
-            sky_with_color: 1,
+            behind_background: 0,
+            background: 2,
             empty_alpha: 1,
         }
     );
     assert_eq!(report.repaired(), 9);
-    assert_eq!(report.total(), 10, "the discarded sky colour is worth a note too");
+    assert_eq!(report.total(), 9, "backgrounds are data, not repairs");
     let text = report.to_string();
-    assert_mentions(&text, &["1 NaN colour", "2 infinite colour", "4 fragments with NaN, zero or negative depth"]);
+    assert_mentions(
+        &text,
+        &[
+            "1 NaN colour",
+            "2 infinite colour",
+            "4 fragments with NaN, zero or negative depth",
+            "2 background fragments (depth +inf or >= 1e10)",
+        ],
+    );
 
     let frag = |x: u32| image.pixel(x, 0);
     assert_eq!(frag(0), [Fragment { color: [0.0, 0.5, 0.25], alpha: 1.0, depth: 2.0 }]);
     assert_eq!(frag(1), [Fragment { color: [COLOR_INF_REPLACEMENT, 0.0, 1.0], alpha: 1.0, depth: 2.0 }]);
     assert_eq!(COLOR_INF_REPLACEMENT, 65504.0);
-    for x in [2, 3, 4, 5, 6, 8, 9] {
+    for x in [2, 3, 4, 8, 9] {
         assert!(frag(x).is_empty(), "pixel {x} should be empty: {:?}", frag(x));
     }
+    assert_eq!(frag(5), [background([1.0; 3])], "the sky's colour is kept");
+    assert_eq!(frag(6), [background([0.0; 3])], "a black sky is still a background fragment");
     assert_eq!(frag(7), [Fragment { color: [0.5; 3], alpha: 1.0, depth: 1.0 }]);
     for p in 0..n as u32 {
         for f in frag(p) {
-            assert!(f.color.iter().all(|c| c.is_finite()) && f.depth.is_finite() && f.depth > 0.0);
+            assert!(f.color.iter().all(|c| c.is_finite()) && f.depth > 0.0);
+            assert!(f.depth.is_finite() || f.alpha == 1.0, "a background is opaque");
         }
     }
 

@@ -47,6 +47,28 @@ pub(crate) fn split_name(full: &str) -> (&str, &str) {
     }
 }
 
+/// Whether the depth-only group `depth` holds the depth of the colour group `colour`, as tools
+/// write a colour image and its depth in separate layers. Both must share the parent (the name
+/// before the last `.`), and (any letter case):
+///
+/// - Blender: `<P>.Combined` with `<P>.Depth` (`RenderLayer.Combined.R` and
+///   `RenderLayer.Depth.Z`, `ViewLayer.Combined.R` and `ViewLayer.Depth.Z`);
+/// - Nuke: its main layer `rgba` (or the unnamed root layer) with `depth` (`rgba.R` or `R` and
+///   `depth.Z`, also as parts `rgba` and `depth` of a multi-part file).
+///
+/// Other colour layers (Blender's `DiffCol`, `Emit`, ..., cryptomattes) are passes, not the image.
+pub(crate) fn is_depth_sibling(colour: &str, depth: &str) -> bool {
+    let (colour_parent, colour_leaf) = split_name(colour);
+    let (depth_parent, depth_leaf) = split_name(depth);
+    if colour_parent != depth_parent {
+        return false;
+    }
+    let blender = colour_leaf.eq_ignore_ascii_case("combined") && depth_leaf.eq_ignore_ascii_case("depth");
+    let nuke_main = colour_leaf.is_empty() || colour_leaf.eq_ignore_ascii_case("rgba");
+    let nuke = nuke_main && depth_leaf.eq_ignore_ascii_case("depth");
+    blender || nuke
+}
+
 /// One group of channels sharing a layer name, with the channel chosen for each role (indices into
 /// the caller's channel list) and the others.
 #[derive(Clone, Debug, Default)]
@@ -74,7 +96,11 @@ impl Group {
     pub fn missing_colors(&self) -> Vec<&'static str> {
         [(self.r, "R"), (self.g, "G"), (self.b, "B")].into_iter().filter(|(c, _)| c.is_none()).map(|(_, n)| n).collect()
     }
-    /// Every channel index of the group that is used (roles) or not (others).
+    /// Depth but no colour channel: a depth pass such as Blender's `<P>.Depth.Z` or Nuke's `depth.Z`.
+    pub fn is_depth_only(&self) -> bool {
+        self.depth.is_some() && !self.has_color()
+    }
+    /// Every channel index of the group that is used for a role (the others are not).
     pub fn used(&self) -> impl Iterator<Item = usize> + '_ {
         [self.r, self.g, self.b, self.a, self.depth].into_iter().flatten()
     }
@@ -182,5 +208,29 @@ mod tests {
         assert_eq!(groups[2].r, Some(7));
         assert_eq!(groups[2].depth, Some(6));
         assert_eq!(groups[2].missing_colors(), ["G", "B"]);
+    }
+
+    #[test]
+    fn depth_siblings() {
+        for (colour, depth) in [
+            ("RenderLayer.Combined", "RenderLayer.Depth"),
+            ("ViewLayer.Combined", "ViewLayer.Depth"),
+            ("My Layer.combined", "My Layer.depth"),
+            ("rgba", "depth"),
+            ("", "depth"),
+            ("", "Depth"),
+        ] {
+            assert!(is_depth_sibling(colour, depth), "{colour} / {depth}");
+        }
+        for (colour, depth) in [
+            ("ViewLayer.Combined", "Other.Depth"),
+            ("ViewLayer.DiffCol", "ViewLayer.Depth"),
+            ("ViewLayer.Combined", "ViewLayer.Mist"),
+            ("rgba", "ViewLayer.Depth"),
+            ("diffuse", "depth"),
+            ("Combined", "ViewLayer.Depth"),
+        ] {
+            assert!(!is_depth_sibling(colour, depth), "{colour} / {depth}");
+        }
     }
 }

@@ -9,9 +9,9 @@ use std::path::Path;
 use ::exr::prelude::*;
 use rayon::prelude::*;
 
-use super::channels::{Group, group_channels};
+use super::channels::{Group, group_channels, is_depth_sibling};
 use super::fs_error;
-use super::sanitize::SanitizeCounts;
+use super::sanitize::{BACKGROUND_DEPTH, SanitizeCounts};
 use crate::error::{Error, Result};
 use crate::layers::{Fragment, LayeredImage, RgbImage};
 
@@ -20,7 +20,9 @@ use crate::layers::{Fragment, LayeredImage, RgbImage};
 pub enum ExrLayout {
     /// Colour only (`R`, `G`, `B`), read by [`read_rgb_exr`].
     Rgb,
-    /// One colour image with depth: `R`, `G`, `B`, a depth channel, optional `A`; one layer.
+    /// One colour image with depth, one layer: `R`, `G`, `B`, a depth channel, optional `A`; or a
+    /// colour layer with its depth in a sibling layer as Blender (`<P>.Combined.*` with
+    /// `<P>.Depth.Z`) and Nuke (`rgba.*` or `R`, `G`, `B` with `depth.Z`, also as parts) write it.
     RgbZ,
     /// Named layers `<name>.R`, `.G`, `.B`, depth, optional `.A`: one depth layer each.
     MultiLayer,
@@ -33,12 +35,15 @@ pub struct InputReport {
     pub width: u32,
     pub height: u32,
     /// The layers read, in the order used to break depth ties (natural order of names; `""` is the
-    /// unnamed layer of an RGB or RGB+Z file).
+    /// unnamed layer of an RGB or RGB+Z file; an RGB+Z image read from a colour layer and its
+    /// sibling depth layer is named after the colour layer, e.g. `ViewLayer.Combined`).
     pub layers: Vec<String>,
-    /// The channels read, by full name (e.g. `layer0.R`).
+    /// The channels read, by full name (e.g. `layer0.R`; in a multi-part file the part name is
+    /// prefixed where the channel name lacks it: `rgba.R`).
     pub channels: Vec<String>,
     /// Channels in the file that were not read (other passes, a flattened beauty image next to
-    /// named layers, duplicate spellings such as `depth` next to `Z`).
+    /// named layers, duplicate spellings such as `depth` next to `Z`), each named in the
+    /// `Display` output: nothing is dropped without a note.
     pub ignored_channels: Vec<String>,
     /// What the NaN/Inf policy repaired or dropped.
     pub counts: SanitizeCounts,
@@ -50,11 +55,11 @@ impl InputReport {
         self.counts.repaired()
     }
 
-    /// Everything worth a note to the user: [`Self::repaired`] plus the sky fragments whose colour
-    /// was discarded (`counts.sky_with_color`). When it is 0 the input was read as it is (apart
-    /// from empty slots and ignored channels, which the `Display` output also lists).
+    /// Everything worth a note to the user: [`Self::repaired`] plus the channels not read
+    /// (`ignored_channels`). When it is 0 the whole file was read as it is (apart from empty slots
+    /// and background fragments, which are data, not changes).
     pub fn total(&self) -> u64 {
-        self.counts.repaired() + self.counts.sky_with_color
+        self.counts.repaired() + self.ignored_channels.len() as u64
     }
 }
 
@@ -62,17 +67,25 @@ impl fmt::Display for InputReport {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let layout = match self.layout {
             ExrLayout::Rgb => "RGB".to_string(),
-            ExrLayout::RgbZ => "RGB+Z".to_string(),
+            ExrLayout::RgbZ if self.layers.iter().all(|l| l.is_empty()) => "RGB+Z".to_string(),
+            ExrLayout::RgbZ => format!("RGB+Z from {}", self.channels.join(", ")),
             ExrLayout::MultiLayer => format!("{} layers ({})", self.layers.len(), self.layers.join(", ")),
         };
         write!(f, "{}x{} {layout}", self.width, self.height)?;
         let c = &self.counts;
+        let background =
+            format!("background fragments (depth +inf or >= {BACKGROUND_DEPTH:e}), kept with their colour");
         let items = [
             (c.color_nan, "NaN colour values set to 0"),
             (c.color_inf, "infinite colour values clamped (+inf to 65504, -inf to 0)"),
             (c.alpha_invalid, "alpha values NaN or outside [0, 1] (NaN to 0, others clamped)"),
             (c.depth_invalid, "fragments with NaN, zero or negative depth dropped"),
-            (c.sky_with_color, "sky fragments (depth +inf) whose colour was discarded"),
+            (
+                c.behind_background,
+                "fragments behind the background dropped (a second layer at depth +inf or beyond the background \
+                 threshold in the same pixel: the first background in layer order ends the pixel)",
+            ),
+            (c.background, background.as_str()),
         ];
         for (n, what) in items {
             if n > 0 {
@@ -87,24 +100,39 @@ impl fmt::Display for InputReport {
 }
 
 /// Reads an RGB+Z or multi-layer EXR into a layered image, detecting which it is (see the [module
-/// documentation](super) for the channel names accepted and the NaN/Inf policy).
+/// documentation](super) for the channel names accepted, the rules and the NaN/Inf policy). The
+/// file's channels (of every part) may hold these images:
 ///
-/// - **Multi-layer**: if any named layer (`<name>.R`, `<name>.G`, `<name>.B` and `<name>.Z` or
-///   `<name>.depth`; `<name>.A` optional) exists, every such layer is one depth layer, in the
-///   natural order of the names; `max_layers` is their number and each pixel's fragments are sorted
-///   front to back (stable, so equal depths keep the layer order). Channels outside named layers
-///   are ignored; a named layer with colour channels but no depth, or only some of R, G, B, is an
-///   error. Layers may also be separate parts of a multi-part file (the part name is the layer
-///   name); all must share one data window.
-/// - **RGB+Z**: otherwise the unnamed channels `R`, `G`, `B` and `Z` (or `depth`; or Nuke's
-///   `depth.Z`), `A` optional, give one layer.
+/// - **RGB+Z**: the unnamed channels `R`, `G`, `B` and `Z` (or `depth`), `A` optional;
+/// - **RGB+Z from sibling layers**: a colour layer without depth and the depth-only layer beside
+///   it, as Blender (`<P>.Combined.R/G/B/A` with `<P>.Depth.Z`) and Nuke (`rgba.R/G/B/A`, or the
+///   unnamed `R`, `G`, `B`, `A`, with `depth.Z`; in one part or as parts `rgba` and `depth`) write
+///   them;
+/// - **multi-layer**: every named layer with colour and depth (`<name>.R`, `.G`, `.B` and `.Z` or
+///   `.depth`; `.A` optional), one depth layer each, in the natural order of the names;
+///   `max_layers` is their number. A named layer with colour channels but no depth, or only some of
+///   R, G, B, is then an error. Layers may also be separate parts of a multi-part file (the part
+///   name is the layer name).
 ///
-/// Colour is premultiplied by alpha in EXR files and straight in a [`Fragment`], so it is divided
-/// by alpha. Depth is taken as planar depth as written.
+/// Exactly one of these must be present: none is an error saying what is missing, and more than
+/// one (a root RGB+Z image next to complete named layers, two Blender view layers, ...) is an
+/// error naming each candidate's channels, since nothing says which to read. Channels that no
+/// image uses (other passes, a flattened image next to the layers) are listed in the report's
+/// `ignored_channels`. Everything read must share one data window.
+///
+/// Each pixel's fragments are sorted front to back (stable, so equal depths keep the layer
+/// order). A slot at depth `+inf` or at least [`BACKGROUND_DEPTH`] is the **background**: a
+/// fragment at depth `+inf` with alpha 1 and the stored colour, always the last of its pixel; a
+/// pixel keeps one (the first in layer order), and further background slots are dropped and
+/// counted (`behind_background`). Colour is premultiplied by alpha in EXR files and straight in a
+/// [`Fragment`], so it is divided by alpha (not for the background, which is the stored colour
+/// over black). Depth is taken as planar depth as written.
 pub fn read_layered_exr(path: impl AsRef<Path>) -> Result<(LayeredImage, InputReport)> {
     let path = path.as_ref();
     let file = ExrFile::open(path)?;
     let (layout, groups) = select_layers(path, &file)?;
+    // An RGB+Z image's single layer is the whole pixel (see `SanitizeCounts::sole_fragment`).
+    let sole = layout == ExrLayout::RgbZ;
     let (width, height) = file.size_of(path, &groups)?;
     let mut image = LayeredImage::new(width, height, groups.len() as u32)?;
     let mut report = file.report(layout, width, height, &groups);
@@ -139,12 +167,20 @@ pub fn read_layered_exr(path: impl AsRef<Path>) -> Result<(LayeredImage, InputRe
                 for plane in &planes {
                     let rgb = [plane.rgb[0][p], plane.rgb[1][p], plane.rgb[2][p]];
                     let alpha = plane.alpha.as_ref().map_or(1.0, |a| a[p]);
-                    if let Some(f) = counts.fragment(rgb, alpha, plane.depth[p]) {
+                    let depth = plane.depth[p];
+                    let fragment =
+                        if sole { counts.sole_fragment(rgb, alpha, depth) } else { counts.fragment(rgb, alpha, depth) };
+                    if let Some(f) = fragment {
                         pixel.push(f);
                     }
                 }
-                // Depths are finite and positive here; the sort is stable, so ties keep layer order.
+                // Depths are positive here, finite or +inf (the background); the sort is stable, so
+                // ties keep layer order and the first background in layer order comes first.
                 pixel.sort_by(|a, b| a.depth.total_cmp(&b.depth));
+                if let Some(background) = pixel.iter().position(|f| f.depth == f32::INFINITY) {
+                    counts.behind_background += (pixel.len() - background - 1) as u64;
+                    pixel.truncate(background + 1);
+                }
                 row_fragments[x * layers..x * layers + pixel.len()].copy_from_slice(&pixel);
                 row_counts[x] = pixel.len() as u32;
             }
@@ -395,12 +431,68 @@ impl ExrFile {
     }
 }
 
-/// Decides between multi-layer and RGB+Z and picks the layers (see [`read_layered_exr`]).
+/// One way the channels of a file can be read as a layered image.
+struct Candidate {
+    layout: ExrLayout,
+    groups: Vec<Group>,
+    /// What it is, with its channels, for the error when a file holds several.
+    what: String,
+}
+
+/// Finds every image the file holds (see [`read_layered_exr`]) and picks the only one, or errors.
 fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)> {
     let groups = group_channels(&file.names);
-    let named: Vec<&Group> = groups.iter().filter(|g| !g.name.is_empty()).collect();
-    if named.iter().any(|g| g.is_complete()) {
-        if let Some(bad) = named.iter().find(|g| g.has_color() && !g.is_complete()) {
+    let channels_of = |g: &Group| g.used().map(|i| file.names[i].as_str()).collect::<Vec<_>>().join(", ");
+    let mut candidates = Vec::new();
+
+    // The unnamed layer with colour and depth.
+    if let Some(root) = groups.iter().find(|g| g.name.is_empty() && g.is_complete()) {
+        candidates.push(Candidate {
+            layout: ExrLayout::RgbZ,
+            groups: vec![root.clone()],
+            what: format!("RGB+Z from the unnamed channels {}", channels_of(root)),
+        });
+    }
+    // A colour layer without depth and its sibling depth layer (Blender, Nuke).
+    for colour in groups.iter().filter(|g| g.has_rgb() && g.depth.is_none()) {
+        for depth in groups.iter().filter(|d| d.is_depth_only() && is_depth_sibling(&colour.name, &d.name)) {
+            let pair = Group { depth: depth.depth, ..colour.clone() };
+            let name =
+                if colour.name.is_empty() { "the unnamed layer".to_string() } else { format!("`{}`", colour.name) };
+            candidates.push(Candidate {
+                layout: ExrLayout::RgbZ,
+                what: format!("RGB+Z from {name} with the depth of `{}` ({})", depth.name, channels_of(&pair)),
+                groups: vec![pair],
+            });
+        }
+    }
+    // Every complete named layer.
+    let complete: Vec<Group> = groups.iter().filter(|g| !g.name.is_empty() && g.is_complete()).cloned().collect();
+    if !complete.is_empty() {
+        let names = complete.iter().map(|g| format!("`{}`", g.name)).collect::<Vec<_>>().join(", ");
+        let channels = complete.iter().flat_map(|g| g.used()).map(|i| file.names[i].clone()).collect::<Vec<_>>();
+        candidates.push(Candidate {
+            layout: ExrLayout::MultiLayer,
+            groups: complete,
+            what: format!("a multi-layer image of the layers {names} ({})", list(&channels)),
+        });
+    }
+
+    if candidates.len() > 1 {
+        let each = candidates.iter().enumerate().map(|(i, c)| format!("({}) {}", i + 1, c.what)).collect::<Vec<_>>();
+        return Err(Error::InvalidArgument(format!(
+            "{} is ambiguous: its channels hold {} different images and nothing says which one to read: {}. Keep the \
+             channels of the one to use and remove the others (or export only that layer). Channels: {}",
+            path.display(),
+            candidates.len(),
+            each.join("; "),
+            list(&file.names)
+        )));
+    }
+    if let Some(Candidate { layout, groups: chosen, .. }) = candidates.pop() {
+        if layout == ExrLayout::MultiLayer
+            && let Some(bad) = groups.iter().find(|g| !g.name.is_empty() && g.has_color() && !g.is_complete())
+        {
             let problem = if !bad.has_rgb() {
                 format!("has only some colour channels (missing {})", bad.missing_colors().join(", "))
             } else {
@@ -414,46 +506,46 @@ fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)>
                 list(&file.names)
             )));
         }
-        let layers = named.into_iter().filter(|g| g.is_complete()).cloned().collect();
-        return Ok((ExrLayout::MultiLayer, layers));
+        return Ok((layout, chosen));
     }
-    let Some(root) = groups.iter().find(|g| g.name.is_empty()).filter(|g| g.has_rgb()) else {
-        if let Some(g) = named.iter().find(|g| g.has_rgb()) {
-            return Err(Error::InvalidArgument(format!(
-                "{}: layer `{}` has colour but no depth: it needs a Z channel (`{}.Z`, planar depth). Channels: {}",
-                path.display(),
-                g.name,
-                g.name,
-                list(&file.names)
-            )));
-        }
-        let root = groups.iter().find(|g| g.name.is_empty());
-        let missing = root.map_or(vec!["R", "G", "B"], |r| r.missing_colors());
-        let depth = if root.is_some_and(|r| r.depth.is_some()) { "" } else { " and a Z channel (depth)" };
-        return Err(Error::InvalidArgument(format!(
-            "{} needs the colour channels R, G and B (missing {}){depth}; it has the channels {}",
-            path.display(),
-            missing.join(", "),
-            list(&file.names)
-        )));
+
+    // Nothing to read: say what is missing.
+    const SIBLINGS: &str = "or the depth layer beside it that Blender and Nuke write (`<P>.Depth.Z` beside \
+                            `<P>.Combined`, `depth.Z` beside `rgba` or the unnamed R, G, B)";
+    let depth_layers: Vec<String> =
+        groups.iter().filter(|g| !g.name.is_empty() && g.is_depth_only()).map(|g| format!("`{}`", g.name)).collect();
+    let unmatched = if depth_layers.is_empty() {
+        String::new()
+    } else {
+        format!("; the file's depth layers ({}) belong to no colour layer", depth_layers.join(", "))
     };
-    let mut root = root.clone();
-    if root.depth.is_none() {
-        // Nuke names depth `depth.Z`: a `depth` layer holding only a Z channel.
-        root.depth = groups
-            .iter()
-            .find(|g| g.name.eq_ignore_ascii_case("depth") && !g.has_color())
-            .and_then(|g| g.depth);
-    }
-    if root.depth.is_none() {
+    if groups.iter().any(|g| g.name.is_empty() && g.has_rgb()) {
         return Err(Error::InvalidArgument(format!(
-            "{} has colour but no depth: it needs a Z channel (planar depth; `depth` is accepted too) to be read as a \
-             layered image. Channels: {}. Write the renderer's depth pass into the same file as `Z`",
+            "{} has colour but no depth: it needs a Z channel (planar depth; `depth` is accepted too) {SIBLINGS} to be \
+             read as a layered image{unmatched}. Channels: {}. Write the renderer's depth pass into the same file as `Z`",
             path.display(),
             list(&file.names)
         )));
     }
-    Ok((ExrLayout::RgbZ, vec![root]))
+    if let Some(g) = groups.iter().find(|g| g.has_rgb()) {
+        return Err(Error::InvalidArgument(format!(
+            "{}: layer `{}` has colour but no depth: it needs a Z channel (`{}.Z`, planar depth) {SIBLINGS}{unmatched}. \
+             Channels: {}",
+            path.display(),
+            g.name,
+            g.name,
+            list(&file.names)
+        )));
+    }
+    let root = groups.iter().find(|g| g.name.is_empty());
+    let missing = root.map_or(vec!["R", "G", "B"], |r| r.missing_colors());
+    let depth = if root.is_some_and(|r| r.depth.is_some()) { "" } else { " and a Z channel (depth)" };
+    Err(Error::InvalidArgument(format!(
+        "{} needs the colour channels R, G and B (missing {}){depth}; it has the channels {}",
+        path.display(),
+        missing.join(", "),
+        list(&file.names)
+    )))
 }
 
 /// A header announcing more pixel data than this many times the file size plus

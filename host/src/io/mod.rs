@@ -4,7 +4,8 @@
 //! - [`write_exr`] / [`write_exr_with`]: an [`RgbImage`] as linear `f32`
 //!   (or half) RGB, plus extra named `f32` planes (`Z`, `coc`, `mask`, …);
 //!   [`write_layered_exr`]: a [`LayeredImage`](crate::layers::LayeredImage) as `layer{i}.R/G/B/A/Z`.
-//! - [`read_layered_exr`]: an RGB+Z or multi-layer EXR to a `LayeredImage`, with an
+//! - [`read_layered_exr`]: an RGB+Z (also Blender's and Nuke's layouts) or multi-layer EXR to a
+//!   `LayeredImage` (the background as a fragment at depth `+inf`), with an
 //!   [`InputReport`] of what was read and repaired; [`read_rgb_exr`]: the colour of an EXR.
 //! - [`write_png_preview`]: 8-bit sRGB PNG through [`tonemap()`](tonemap::tonemap) (exposure, ACES
 //!   fitted curve, sRGB OETF; formulas in [`tonemap`](mod@tonemap)).
@@ -12,14 +13,49 @@
 //! # Input channels
 //!
 //! A channel name `layer.channel` belongs to the layer before the last `.`; names without a `.` form
-//! the unnamed layer. Within a layer, colour is `R`, `G`, `B`, alpha `A` (optional: 1 when absent),
-//! depth `Z` or `depth` (any letter case; the canonical spelling wins when several are present).
-//! A file with at least one complete named layer (colour + depth) is **multi-layer**; otherwise the
-//! unnamed layer (with Nuke's `depth.Z` accepted as its depth) makes it **RGB+Z**. Colour in EXR is
-//! premultiplied by alpha; [`Fragment`](crate::layers::Fragment) colour is straight, so it is
-//! divided by alpha on reading and multiplied on writing. Depth is planar (distance along the view
-//! axis) as in [`layers`](crate::layers); a renderer writing radial distance or `1/z` must be
-//! converted first. The image is the data window; the display window is ignored.
+//! the unnamed layer. In a multi-part file every part's channels are read, and the part name is
+//! prefixed to channel names that lack it (`R` in part `rgba` is `rgba.R`; `depth.Z` in part
+//! `depth` stays `depth.Z`). Within a layer, colour is `R`, `G`, `B`, alpha `A` (optional: 1 when
+//! absent), depth `Z` or `depth` (any letter case; the canonical spelling wins when several are
+//! present). The file may hold:
+//!
+//! | image | channels | read as |
+//! |---|---|---|
+//! | RGB+Z | unnamed `R`, `G`, `B`, `Z`, (`A`) | one layer |
+//! | Blender | `<P>.Combined.R/G/B/A` with `<P>.Depth.Z` (`RenderLayer`, `ViewLayer`, any `<P>`) | one layer named `<P>.Combined` |
+//! | Nuke | `rgba.R/G/B/A` or unnamed `R/G/B/A`, with `depth.Z`; one part, or parts `rgba` and `depth` | one layer named `rgba` (or `""`) |
+//! | multi-layer | every named layer with colour and depth, `<name>.R/G/B/Z/(A)`, e.g. `layer0.*` | one depth layer each, natural order of names |
+//!
+//! **Exactly one** of these must be present. None: an error saying what is missing (colour, or the
+//! depth of a named colour layer). More than one is ambiguous and an error naming each candidate's
+//! channels, to keep one and remove the others: a root RGB+Z image next to complete named layers
+//! (it may be the front layer or the flattened image of those layers; nothing says which), two
+//! Blender view layers each with `Combined` and `Depth`, `rgba.*` next to an unnamed `R`, `G`, `B`
+//! both beside `depth.Z`. Channels that the image does not use (other passes such as Blender's
+//! `DiffCol`, a flattened `R`, `G`, `B` without `Z` next to named layers, a `depth.Z` next to a root
+//! `Z`, duplicate spellings) are listed in [`InputReport::ignored_channels`] and printed as a
+//! note; nothing is dropped silently. In a multi-layer file a named layer with colour but no depth,
+//! or only some of R, G, B, is an error.
+//!
+//! Colour in EXR is premultiplied by alpha; [`Fragment`](crate::layers::Fragment) colour is
+//! straight, so it is divided by alpha on reading and multiplied on writing. Depth is planar
+//! (distance along the view axis) as in [`layers`](crate::layers); a renderer writing radial
+//! distance or `1/z` must be converted first. The image is the data window; the display window is
+//! ignored.
+//!
+//! # The background
+//!
+//! The background is data, not a hole: a slot at depth `+inf` or at least [`BACKGROUND_DEPTH`]
+//! (10^10: Blender's background depth; `f32::MAX` and half-float `+inf` are beyond it; 65 504 is
+//! not a threshold, since real scenes in millimetres reach farther) becomes a fragment at depth
+//! `+inf` with alpha 1 and the stored colour (after the colour rules; premultiplied, so a partly
+//! transparent background is taken over black). A black sky is a black background fragment. It
+//! is always the last fragment of its pixel: a pixel keeps one background (the first in layer
+//! order) and further background slots are dropped and counted. In an RGB+Z image the one layer is
+//! the whole pixel, so a pixel at background depth is the background whatever its alpha (a
+//! transparent film's alpha 0 gives the stored, usually black, colour). In a multi-layer image a
+//! slot with alpha 0 is empty whatever its depth ([`write_layered_exr`] writes empty slots as
+//! colour 0, A 0, Z `+inf`), and a background fragment is written as Z `+inf`, A 1.
 //!
 //! # NaN/Inf policy
 //!
@@ -35,12 +71,14 @@
 //! | colour finite (negative included)   | unchanged                                           | —                |
 //! | alpha NaN                           | 0, so the slot is empty                             | `alpha_invalid`  |
 //! | alpha < 0 or > 1 (`±inf` included)  | clamped to [0, 1]                                   | `alpha_invalid`  |
-//! | alpha 0                             | empty slot: no fragment (colour, depth not checked) | `empty_alpha` (info) |
-//! | depth `+inf`                        | the sky: no fragment                                | `sky_with_color` (info) if its colour ≠ 0 |
+//! | alpha 0                             | empty slot: no fragment (colour, depth not checked; but see the RGB+Z background above) | `empty_alpha` (info) |
+//! | depth `+inf` or >= [`BACKGROUND_DEPTH`] | the background: depth `+inf`, alpha 1, its colour | `background` (info) |
+//! | a second background slot in a pixel | dropped (the first background ends the pixel)      | `behind_background` |
 //! | depth NaN, `<= 0`, `-inf`           | fragment dropped (that layer of the pixel is empty) | `depth_invalid`  |
 //!
-//! Each layer slot of a pixel is checked in the table's order: alpha, then depth, then colour; the
-//! colour of a slot that is empty or dropped is not checked or counted.
+//! Each layer slot of a pixel is checked in the table's order: alpha, then depth, then colour (an
+//! RGB+Z pixel at background depth: depth, then colour); the colour of a slot that is empty or
+//! dropped is not checked or counted.
 //! Colour 65 504 (not `f32::MAX`) keeps sums of many clamped pixels finite in `f32`; finite values
 //! above it are kept. A colour that overflows when divided by a tiny alpha also becomes 65 504
 //! (counted in `color_inf`). [`read_rgb_exr`] applies the colour rules only. The PNG preview maps
@@ -49,8 +87,8 @@
 //! # Errors
 //!
 //! A missing or unreadable file, a file that is not an EXR, a truncated or corrupt EXR, a zero
-//! size, missing R/G/B, missing depth ("needs a Z channel"), layers with different data windows,
-//! subsampled channels, deep data: each is an [`Error::InvalidArgument`] naming the file and saying
+//! size, missing R/G/B, missing depth ("needs a Z channel"), several candidate images ("is
+//! ambiguous"), layers with different data windows, subsampled channels, deep data: each is an [`Error::InvalidArgument`] naming the file and saying
 //! what to change. Nothing here panics on file contents: a header announcing more than 4096 times
 //! the file's size in pixel data is rejected as corrupt before anything is allocated, and the exr
 //! crate decodes on the calling thread inside `catch_unwind`, so that an assertion it trips on
@@ -71,7 +109,7 @@ pub use exr_read::{ExrLayout, InputReport, read_layered_exr, read_rgb_exr};
 pub use exr_write::{ExrCompression, ExrPrecision, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr};
 pub use preview::{write_png_display, write_png_preview};
 pub(crate) use preview::write_srgb8;
-pub use sanitize::{COLOR_INF_REPLACEMENT, SanitizeCounts};
+pub use sanitize::{BACKGROUND_DEPTH, COLOR_INF_REPLACEMENT, SanitizeCounts, is_background_depth};
 pub use tonemap::tonemap;
 
 /// The codec crates used here, re-exported so that callers and tests can build or inspect files

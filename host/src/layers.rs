@@ -2,8 +2,9 @@
 //! image (per pixel up to `max_layers` surface fragments, front to back) that partial occlusion needs.
 //!
 //! Conventions (as glTF and path tracers): row-major, top row first, image +x to the right; depth is
-//! planar (distance along the camera's view axis, positive in front of the camera); the sky (no
-//! surface) is `f32::INFINITY`.
+//! planar (distance along the camera's view axis, positive in front of the camera). The background
+//! (what a ray that hits nothing sees: the sky) is a fragment at depth `f32::INFINITY`, the last
+//! of its pixel; a pixel with no fragment at all (no data) is treated as a black background.
 
 use crate::error::{Error, Result};
 
@@ -27,6 +28,21 @@ impl RgbImage {
     pub fn get(&self, x: u32, y: u32) -> [f32; 3] {
         self.data[self.index(x, y)]
     }
+
+    /// The image without `margin` pixels on every side (the frame inside a guard band). A margin
+    /// that leaves nothing gives an empty image.
+    pub fn crop(&self, margin: u32) -> RgbImage {
+        let (w, h) = (self.width.saturating_sub(2 * margin), self.height.saturating_sub(2 * margin));
+        let data = (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).map(|(x, y)| self.get(x + margin, y + margin)).collect();
+        RgbImage { width: w, height: h, data }
+    }
+}
+
+/// A per-pixel plane (depth, mask) without `margin` pixels on every side of a `width`-wide image.
+pub fn crop_plane<T: Copy>(plane: &[T], width: u32, margin: u32) -> Vec<T> {
+    let height = plane.len() / width.max(1) as usize;
+    let (w, m) = (width as usize, margin as usize);
+    (m..height.saturating_sub(m)).flat_map(|y| plane[y * w + m..(y + 1) * w - m].iter().copied()).collect()
 }
 
 /// One surface sample along a pixel's ray.
@@ -60,7 +76,7 @@ pub struct LayerStats {
     pub fragments: u64,
     /// Pixels with more than one fragment.
     pub multi_layer_pixels: u64,
-    /// Pixels with no fragment (sky).
+    /// Pixels with no fragment at all (no data; the background is a fragment).
     pub empty_pixels: u64,
 }
 
@@ -134,7 +150,7 @@ impl LayeredImage {
     }
 
     /// The front fragment of every pixel composited over black (what a pinhole camera sees), and its
-    /// depth (`inf` for the sky).
+    /// depth (`inf` for the background, and for a pixel without fragments, which is black).
     pub fn front(&self) -> (RgbImage, Vec<f32>) {
         let mut image = RgbImage::new(self.width, self.height);
         let mut depth = vec![f32::INFINITY; image.data.len()];
@@ -158,6 +174,42 @@ impl LayeredImage {
             counts: self.counts.iter().map(|&c| c.min(1)).collect(),
             fragments: self.fragments.iter().step_by(l).copied().collect(),
         }
+    }
+
+    /// The image without `margin` pixels on every side.
+    pub fn crop(&self, margin: u32) -> LayeredImage {
+        let (w, h) = (self.width.saturating_sub(2 * margin), self.height.saturating_sub(2 * margin));
+        let l = self.max_layers as usize;
+        let mut counts = Vec::with_capacity(w as usize * h as usize);
+        let mut fragments = Vec::with_capacity(counts.capacity() * l);
+        for y in margin..margin + h {
+            for x in margin..margin + w {
+                let p = self.pixel_index(x, y);
+                counts.push(self.counts[p]);
+                fragments.extend_from_slice(&self.fragments[p * l..(p + 1) * l]);
+            }
+        }
+        LayeredImage { width: w, height: h, max_layers: self.max_layers, counts, fragments }
+    }
+
+    /// The edge policy for images with nothing beyond their frame (EXR input): `margin` pixels on
+    /// every side, each a copy of the nearest edge pixel's fragments (clamp to edge), so a blurred
+    /// object cut by the frame keeps spreading into it as if it went on. Errors like
+    /// [`LayeredImage::new`] when the padded image would be too large.
+    pub fn extend_edges(&self, margin: u32) -> Result<LayeredImage> {
+        let (w, h) = (self.width + 2 * margin, self.height + 2 * margin);
+        let mut out = LayeredImage::new(w, h, self.max_layers)?;
+        let l = self.max_layers as usize;
+        for y in 0..h {
+            let sy = y.saturating_sub(margin).min(self.height - 1);
+            for x in 0..w {
+                let sx = x.saturating_sub(margin).min(self.width - 1);
+                let (p, q) = (out.pixel_index(x, y), self.pixel_index(sx, sy));
+                out.counts[p] = self.counts[q];
+                out.fragments[p * l..(p + 1) * l].copy_from_slice(&self.fragments[q * l..(q + 1) * l]);
+            }
+        }
+        Ok(out)
     }
 
     pub fn stats(&self) -> LayerStats {

@@ -23,6 +23,8 @@ enum Command {
     Stress(cli::stress::StressArgs),
     /// The built-in scenes: lens, multi-layer statistics, reference sample counts.
     Scenes(cli::scenes::ScenesArgs),
+    /// PSNR, SSIM and FLIP of one RGB EXR against another, full frame and inside a mask.
+    Compare(cli::compare::CompareArgs),
     /// Benchmarks of the kernels on each backend.
     #[command(subcommand)]
     Bench(cli::bench::BenchCommand),
@@ -43,6 +45,7 @@ fn main() -> std::process::ExitCode {
         Command::Stress(args) => cli::stress::run(&args),
         Command::Info(args) => cli::info::run(&args),
         Command::Scenes(args) => cli::scenes::run(&args),
+        Command::Compare(args) => cli::compare::run(&args),
         Command::Eval(args) => cli::eval::run(&args),
         Command::Bench(cmd) => cli::bench::run(&cmd),
     };

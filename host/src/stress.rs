@@ -20,6 +20,8 @@ pub enum Expect {
     Close(f32),
     /// Every pixel equal to the input's flat colour within a relative tolerance.
     Flat(f32),
+    /// The 8x8 corners of the image equal to the flat colour within a relative tolerance.
+    FlatCorners(f32),
     /// Only finite values.
     Finite,
     /// Non-finite values only where the input's front was non-finite (nothing spreads).
@@ -86,6 +88,24 @@ pub fn noise_image(w: u32, h: u32, layers: u32, color: impl Fn(u32) -> [f32; 3])
         }
     }
     img
+}
+
+/// `img` with every pixel where `keep(pixel)` is false replaced by the background alone (the
+/// flat colour [`FLAT`] at depth +inf), and the kept pixels moved to depth 0.6 (near, blurred)
+/// with the background behind them.
+fn sky_over(img: LayeredImage, keep: impl Fn(u32) -> bool) -> LayeredImage {
+    let l = img.max_layers as usize;
+    let sky = Fragment { color: FLAT, alpha: 1.0, depth: f32::INFINITY };
+    let mut out = LayeredImage::new(img.width, img.height, 2).expect("a valid test size");
+    for p in 0..img.counts.len() {
+        let (x, y) = (p as u32 % img.width, p as u32 / img.width);
+        if keep(p as u32) && img.counts[p] > 0 {
+            let front = img.fragments[p * l];
+            let _ = out.push(x, y, Fragment { depth: 0.6, ..front });
+        }
+        let _ = out.push(x, y, sky);
+    }
+    out
 }
 
 /// Colours of every scale, some beyond 1000.
@@ -160,6 +180,18 @@ pub fn cases() -> Vec<Case> {
             },
         },
         Case {
+            name: "coloured-sky",
+            expectation: "only the background (depth +inf, a flat HDR colour): every pixel keeps that colour within 1e-3",
+            expect: Expect::Flat(1e-3),
+            build: || (sky_over(noise_image(48, 32, 1, |_| FLAT), |_| false), test_lens(0.03)),
+        },
+        Case {
+            name: "near-object-over-sky",
+            expectation: "a blurred near square over a flat coloured sky at +inf: finite, and the sky keeps its colour within 1e-3 in the image's corners, beyond the blur",
+            expect: Expect::FlatCorners(1e-3),
+            build: || (sky_over(noise_image(48, 48, 1, varied), |i| (16..32).contains(&(i % 48)) && (16..32).contains(&(i / 48))), test_lens(0.04)),
+        },
+        Case {
             name: "equal-depths",
             expectation: "every fragment at one depth: ties resolve the same way every run",
             expect: Expect::Deterministic,
@@ -187,8 +219,7 @@ pub fn cases() -> Vec<Case> {
 }
 
 fn input(img: LayeredImage, lens: ThinLens) -> MethodInput {
-    let (front, depth) = img.front();
-    MethodInput { front, depth, layers: img, lens }
+    MethodInput::new(img, lens, 0)
 }
 
 fn finite(img: &RgbImage) -> bool {
@@ -238,6 +269,12 @@ impl Case {
             Expect::Close(tol) | Expect::Flat(tol) => {
                 let err = if let Expect::Flat(_) = self.expect { worst(&|_| FLAT) } else { worst(&|i| front.data[i]) };
                 if err <= tol { Outcome::Pass(format!("within {err:.2e}")) } else { Outcome::Fail(format!("off by {err:.2e} > {tol:.0e}")) }
+            }
+            Expect::FlatCorners(tol) => {
+                let (w, h) = (out.width as usize, out.height as usize);
+                let corner = |i: usize| (i % w < 8 || i % w >= w - 8) && (i / w < 8 || i / w >= h - 8);
+                let err = out.data.iter().enumerate().filter(|(i, _)| corner(*i)).map(|(_, p)| (0..3).map(|c| (p[c] - FLAT[c]).abs() / FLAT[c]).fold(0.0f32, f32::max)).fold(0.0f32, f32::max);
+                if err <= tol { Outcome::Pass(format!("corners within {err:.2e}")) } else { Outcome::Fail(format!("corners off by {err:.2e} > {tol:.0e}")) }
             }
             Expect::Energy(tol) => {
                 let (got, want) = (red_sum(&out), red_sum(front));

@@ -91,9 +91,9 @@ fn gather_against_the_exact_reference() {
     let layers = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default()).unwrap();
     let (front, depth) = layers.layers.front();
     let exact = reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: 256, ..Default::default() }).unwrap();
-    let blurred = gather(&mut CpuBackend::new(), &front, &depth, &lens, None).unwrap();
-    let sharp = compare(&front, &exact.image, Some(&layers.mask)).unwrap();
-    let gathered = compare(&blurred.image, &exact.image, Some(&layers.mask)).unwrap();
+    let blurred = layers.crop(&gather(&mut CpuBackend::new(), &front, &depth, &lens, None).unwrap().image);
+    let sharp = compare(&layers.front().0, &exact.image, Some(&layers.mask)).unwrap();
+    let gathered = compare(&blurred, &exact.image, Some(&layers.mask)).unwrap();
     eprintln!("pinhole {sharp:?}\ngather  {gathered:?}");
     assert!(gathered.psnr_db > sharp.psnr_db + 2.0, "gather {gathered:?} vs pinhole {sharp:?}");
     assert!(gathered.psnr_masked_db.unwrap() > sharp.psnr_masked_db.unwrap() + 2.0);

@@ -123,10 +123,10 @@ fn beats_the_gather_in_the_partial_occlusion_region() {
     let exact = reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: 256, ..Default::default() }).unwrap();
     let err = |img: &dof::layers::RgbImage| compare(img, &exact.image, Some(&ml.mask)).unwrap();
     let mut cpu = CpuBackend::new();
-    let cascaded = err(&run(&mut cpu, &ml.layers, &lens, true).image);
-    let separate = err(&run(&mut cpu, &ml.layers, &lens, false).image);
+    let cascaded = err(&ml.crop(&run(&mut cpu, &ml.layers, &lens, true).image));
+    let separate = err(&ml.crop(&run(&mut cpu, &ml.layers, &lens, false).image));
     let (front, depth) = ml.layers.front();
-    let g = err(&gather(&mut cpu, &front, &depth, &lens, None).unwrap().image);
+    let g = err(&ml.crop(&gather(&mut cpu, &front, &depth, &lens, None).unwrap().image));
     let region = |e: &dof::metrics::ImageError| e.psnr_masked_db.unwrap();
     eprintln!(
         "simple 320x180: cascaded {:.2} dB ({:.2} region), separate {:.2} dB ({:.2} region), gather {:.2} dB ({:.2} region)",

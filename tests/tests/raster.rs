@@ -62,8 +62,9 @@ fn stack() -> MeshScene {
     m
 }
 
+/// Every layer of the frame's own pixels (no disocclusion buffer, no guard band).
 fn all_layers() -> LayerOptions {
-    LayerOptions { disocclusion: false, ..LayerOptions::default() }
+    LayerOptions { disocclusion: false, guard_band: dof::scene::GuardBand::Off, ..LayerOptions::default() }
 }
 
 fn centre(image: &dof::layers::LayeredImage) -> Vec<(f32, [f32; 3])> {
@@ -101,7 +102,7 @@ fn peeling_finds_every_surface_beyond_the_umbra_in_order() {
     assert_eq!(c.iter().map(|f| f.1).collect::<Vec<_>>(), [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]]);
     // The disocclusion buffer keeps hidden layers only near the squares' rims (a smaller aperture,
     // so the rims are a few pixels wide): the centre keeps one.
-    let masked = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.05, 5.0), 0.01, &LayerOptions::default()).unwrap();
+    let masked = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.05, 5.0), 0.01, &LayerOptions { guard_band: dof::scene::GuardBand::Off, ..LayerOptions::default() }).unwrap();
     let stats = (masked.image.with_mask, masked.image.without_mask);
     assert!(stats.0.fragments < stats.1.fragments && stats.0.multi_layer_pixels > 0, "{stats:?}");
     assert_eq!(centre(&masked.image.layers).len(), 1);

@@ -8,6 +8,11 @@ use dof::scene::{
     Shape, Vec3, builtin, builtin_names, pinhole, raycast_layers, reference, reference_auto,
 };
 
+/// These suites look at the frame's own pixels: no guard band (its tests are in `sky_and_edges.rs`).
+fn frame_only() -> LayerOptions {
+    LayerOptions { guard_band: dof::scene::GuardBand::Off, ..LayerOptions::default() }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Multi-layer images.
 
@@ -48,7 +53,7 @@ fn simple_has_multiple_layers_only_near_silhouettes() {
     let s = builtin("simple").unwrap().with_size(160, 90);
     let lens = s.thin_lens().unwrap();
     let frame = s.camera.frame().unwrap();
-    let ml = raycast_layers(&s.scene, &s.camera, &lens, &LayerOptions::default()).unwrap();
+    let ml = raycast_layers(&s.scene, &s.camera, &lens, &frame_only()).unwrap();
     assert_front_to_back("simple", &ml.layers);
 
     let prims = s.scene.primitives();
@@ -96,7 +101,7 @@ fn simple_has_multiple_layers_only_near_silhouettes() {
     assert_eq!(ml.with_mask, ml.layers.stats());
 
     // Without the buffer the sphere's interior keeps the plane behind it too.
-    let all = raycast_layers(&s.scene, &s.camera, &lens, &LayerOptions { disocclusion: false, ..Default::default() }).unwrap();
+    let all = raycast_layers(&s.scene, &s.camera, &lens, &LayerOptions { disocclusion: false, ..frame_only() }).unwrap();
     assert_eq!(all.without_mask, all.layers.stats());
     assert_eq!(all.without_mask, ml.without_mask);
     assert_eq!(all.mask, ml.mask);
@@ -114,7 +119,7 @@ fn every_builtin_scene_has_fragments_front_to_back() {
         let s = builtin(name).unwrap().with_size(96, 54);
         let lens = s.thin_lens().unwrap();
         for disocclusion in [true, false] {
-            let ml = raycast_layers(&s.scene, &s.camera, &lens, &LayerOptions { disocclusion, ..Default::default() }).unwrap();
+            let ml = raycast_layers(&s.scene, &s.camera, &lens, &LayerOptions { disocclusion, ..frame_only() }).unwrap();
             assert_front_to_back(name, &ml.layers);
             let (_, depth) = ml.layers.front();
             for (p, d) in depth.iter().enumerate() {
@@ -149,7 +154,7 @@ fn umbra_threshold_skips_fragments_in_the_shadow_of_the_one_in_front() {
     let z = 5.0;
     let umbra = lens.umbra_length(z, frame.pixel_footprint_radius(z));
     assert!(umbra > 0.05 && umbra < 15.0, "umbra {umbra}");
-    let options = LayerOptions { disocclusion: false, ..Default::default() };
+    let options = LayerOptions { disocclusion: false, ..frame_only() };
     let with = raycast_layers(&scene, &camera, &lens, &options).unwrap();
     let without = raycast_layers(&scene, &camera, &lens, &LayerOptions { umbra_threshold: false, ..options }).unwrap();
     let depths = |l: &LayeredImage| l.pixel(80, 45).iter().map(|f| f.depth).collect::<Vec<_>>();
@@ -175,7 +180,7 @@ fn pinhole_reference_is_the_front_layer() {
     for name in builtin_names() {
         let s = builtin(name).unwrap().with_size(96, 54);
         let lens = s.thin_lens().unwrap();
-        let ml = raycast_layers(&s.scene, &s.camera, &lens, &LayerOptions::default()).unwrap();
+        let ml = raycast_layers(&s.scene, &s.camera, &lens, &frame_only()).unwrap();
         let (front, _) = ml.layers.front();
         let exact = ReferenceOptions { spp: 1, jitter: false, ..Default::default() };
         let pin = pinhole(&s.scene, &s.camera, &exact).unwrap();
@@ -285,7 +290,7 @@ fn noise_estimate_is_honest_and_auto_reaches_its_target() {
     eprintln!("8 spp: estimated {estimate:.2} dB, actual {actual:.2} dB");
     assert!((estimate - actual).abs() < 2.0, "estimated {estimate:.2} dB, actual {actual:.2} dB");
 
-    let ml = raycast_layers(&s.scene, &s.camera, &lens, &LayerOptions::default()).unwrap();
+    let ml = raycast_layers(&s.scene, &s.camera, &lens, &frame_only()).unwrap();
     let options = AutoOptions { target_psnr_db: 30.0, start_spp: 4, max_spp: 512, region: Some(ml.mask.clone()), ..Default::default() };
     let auto = reference_auto(&s.scene, &s.camera, &lens, &options).unwrap();
     let required = options.required_noise_psnr_db();
@@ -307,7 +312,7 @@ fn every_builtin_scene_renders_small_and_fast() {
         let s = builtin(name).unwrap().with_size(96, 54);
         assert_eq!(s.name, *name);
         let lens = s.thin_lens().unwrap();
-        let ml = raycast_layers(&s.scene, &s.camera, &lens, &LayerOptions::default()).unwrap();
+        let ml = raycast_layers(&s.scene, &s.camera, &lens, &frame_only()).unwrap();
         // Visible blur at the default 640x360: some surface has a CoC of at least 10 px there.
         let (_, depth) = ml.layers.front();
         let max_coc = depth.iter().map(|z| lens.coc_px(*z)).fold(0.0f32, f32::max) * 360.0 / 54.0;
@@ -444,10 +449,10 @@ fn invalid_cameras_lenses_and_scenes_are_errors() {
 
     let s = builtin("simple").unwrap().with_size(16, 9);
     let thin = s.thin_lens().unwrap();
-    is_invalid(raycast_layers(&s.scene, &s.camera, &thin, &LayerOptions { max_layers: 0, ..Default::default() }), "layer");
-    is_invalid(raycast_layers(&s.scene, &s.camera, &thin, &LayerOptions { edge_depth_ratio: f32::NAN, ..Default::default() }), "edge");
+    is_invalid(raycast_layers(&s.scene, &s.camera, &thin, &LayerOptions { max_layers: 0, ..frame_only() }), "layer");
+    is_invalid(raycast_layers(&s.scene, &s.camera, &thin, &LayerOptions { edge_depth_ratio: f32::NAN, ..frame_only() }), "edge");
     let broken = dof::scene::ThinLens { focus_distance: thin.focal_length * 0.5, ..thin };
-    is_invalid(raycast_layers(&s.scene, &s.camera, &broken, &LayerOptions::default()), "lens");
+    is_invalid(raycast_layers(&s.scene, &s.camera, &broken, &frame_only()), "lens");
     is_invalid(reference(&s.scene, &s.camera, &broken, &ReferenceOptions::default()), "lens");
     is_invalid(reference(&s.scene, &s.camera, &thin, &ReferenceOptions { spp: 0, ..Default::default() }), "sample");
     is_invalid(reference(&s.scene, &s.camera, &thin, &ReferenceOptions { region: Some(vec![true; 3]), ..Default::default() }), "region");
@@ -457,7 +462,7 @@ fn invalid_cameras_lenses_and_scenes_are_errors() {
     is_invalid(reference_auto(&s.scene, &s.camera, &thin, &AutoOptions { target_psnr_db: f64::NAN, ..Default::default() }), "target");
     is_invalid(pinhole(&s.scene, &Camera { width: 0, ..s.camera }, &ReferenceOptions::default()), "size");
     let huge = Camera { width: u32::MAX, height: u32::MAX, ..s.camera };
-    assert!(matches!(raycast_layers(&s.scene, &huge, &thin, &LayerOptions::default()), Err(Error::TooLarge { .. })));
+    assert!(matches!(raycast_layers(&s.scene, &huge, &thin, &frame_only()), Err(Error::TooLarge { .. })));
     assert!(matches!(pinhole(&s.scene, &huge, &ReferenceOptions::default()), Err(Error::TooLarge { .. })));
 
     let err = builtin("nope").unwrap_err().to_string();
@@ -528,7 +533,7 @@ mod fuzz {
             };
             if let Ok(lens) = settings.thin_lens(&camera) {
                 prop_assert!(lens.is_valid());
-                let ml = raycast_layers(&s.scene, &camera, &lens, &LayerOptions::default()).unwrap();
+                let ml = raycast_layers(&s.scene, &camera, &lens, &frame_only()).unwrap();
                 for f in &ml.layers.fragments[..] {
                     prop_assert!(!f.depth.is_nan());
                 }

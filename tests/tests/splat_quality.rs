@@ -25,7 +25,7 @@ fn measure(name: &str) -> Measured {
     let (front, depth) = layers.layers.front();
     let exact = reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: 256, ..Default::default() }).unwrap();
     let mut cpu = CpuBackend::new();
-    let err = |img| compare(img, &exact.image, Some(&layers.mask)).unwrap();
+    let err = |img| compare(&layers.crop(img), &exact.image, Some(&layers.mask)).unwrap();
     let g = gather(&mut cpu, &front, &depth, &lens, None).unwrap();
     let single = splat(&mut cpu, &layers.layers.front_layer(), &lens, &SplatOptions::default()).unwrap();
     let multi = splat(&mut cpu, &layers.layers, &lens, &SplatOptions::default()).unwrap();
@@ -102,7 +102,7 @@ fn blur_beyond_three_rings() {
     let mut cpu = CpuBackend::new();
     let multi = splat(&mut cpu, &layers.layers, &lens, &SplatOptions { merge: Merge::X4, ..Default::default() }).unwrap();
     let g = gather(&mut cpu, &front, &depth, &lens, None).unwrap();
-    let e = |img| compare(img, &exact.image, None).unwrap().psnr_db;
+    let e = |img| compare(&layers.crop(img), &exact.image, None).unwrap().psnr_db;
     let (em, eg, ep) = (e(&multi.image), e(&g.image), e(&front));
     let rings = multi.report.plan.as_ref().unwrap().rings;
     eprintln!("large blur: multi {em:.2} dB ({rings} rings, max CoC radius {:.1} px), gather {eg:.2} dB, pinhole {ep:.2} dB", multi.report.plan.as_ref().unwrap().max_coc_radius);

@@ -52,6 +52,8 @@ cases! {
     focus_at_focal_length => "focus-at-focal-length",
     coc_beyond_rings => "coc-beyond-rings",
     sky_at_infinity => "sky-at-infinity",
+    coloured_sky => "coloured-sky",
+    near_object_over_sky => "near-object-over-sky",
     equal_depths => "equal-depths",
     one_pixel => "one-pixel",
     ragged_size => "ragged-size",

@@ -1,4 +1,5 @@
 pub mod bench;
+pub mod compare;
 pub mod eval;
 pub mod info;
 pub mod render;

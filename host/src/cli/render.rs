@@ -7,9 +7,9 @@ use dof::layers::RgbImage;
 use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
 use dof::scene::{
     self, Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, MeshScene, MultiLayerImage, ReferenceOptions, Vec3,
-    load_gltf, raycast_layers,
+    MAX_GUARD_BAND, load_gltf, raycast_layers,
 };
-use dof::layers::LayeredImage;
+use dof::layers::{LayeredImage, crop_plane};
 use dof::methods::bokeh::{BokehOptions, bokeh};
 use dof::methods::layered::{LayeredOptions, layered};
 use dof::methods::raytrace::{RaytraceOptions, raytrace};
@@ -121,6 +121,12 @@ pub struct RenderArgs {
     /// Tile edge in pixels (tiled and multilayer): 16, 24 or 32.
     #[arg(long, default_value_t = 16)]
     tile: u32,
+    /// Background radiance `R,G,B` (linear, finite, not negative): what a ray that hits nothing sees,
+    /// a surface at infinite depth that every method blends like any other. Built-in and glTF
+    /// scenes; default the scene's own (black, or the sky of `fence` and `edges`; a glTF scene's
+    /// extras key `dof_background`). An EXR carries its background as the colour at depth +inf.
+    #[arg(long, value_parser = parse_vec3)]
+    background: Option<Vec3>,
     /// Exposure multiplier of the PNG preview.
     #[arg(long, default_value_t = 1.0)]
     exposure: f32,
@@ -170,6 +176,9 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     if report.total() > 0 {
         eprintln!("note: {}: {report}", args.scene);
     }
+    if args.background.is_some() {
+        bail!("--background applies to built-in and glTF scenes; an EXR carries its background as the colour stored at depth +inf");
+    }
     match args.method {
         Method::Pinhole => {
             let (image, depth) = layers.front();
@@ -185,7 +194,14 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         Method::Reference => bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)"),
         Method::Gather | Method::Tiled | Method::Multilayer | Method::Raytrace | Method::Layered | Method::Bokeh => {
             let lens = exr_lens(args, &layers)?;
-            let (image, depth) = blur(args, &layers, &lens)?;
+            // Nothing lies beyond an EXR's frame: its edge pixels are extended outwards as far as
+            // its largest CoC reaches (the edge policy, the same for every method).
+            let margin = edge_margin(&layers, &lens);
+            let padded = layers.extend_edges(margin)?;
+            if margin > 0 {
+                println!("edge policy: the image's edge pixels extended by {margin} px on every side (its largest CoC radius, at most {MAX_GUARD_BAND})");
+            }
+            let (image, depth) = blur(args, &padded, &lens, margin)?;
             let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
             write_outputs(out, &image, &[("Z", &depth), ("coc", &coc)], args.exposure)
         }
@@ -212,9 +228,21 @@ fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens
     Ok(settings.thin_lens(&camera)?)
 }
 
-/// Runs a blurring method (gather, tiled, multilayer, raytrace, layered, bokeh) on the chosen backend and prints what it did.
-/// Returns the image and the front layer's depth.
-fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Result<(RgbImage, Vec<f32>)> {
+/// How far an EXR's edge pixels are extended: the largest CoC radius among its fragments, at most
+/// [`MAX_GUARD_BAND`] (what the guard band of a rendered scene would be for the frame's content).
+fn edge_margin(layers: &LayeredImage, lens: &ThinLens) -> u32 {
+    let used = layers.counts.iter().enumerate().flat_map(|(p, &n)| {
+        let start = p * layers.max_layers as usize;
+        layers.fragments[start..start + n.min(layers.max_layers) as usize].iter()
+    });
+    let largest = used.map(|f| lens.coc_radius_px(f.depth)).fold(0.0f32, f32::max);
+    (largest.ceil() as u32).min(MAX_GUARD_BAND)
+}
+
+/// Runs a blurring method (gather, tiled, multilayer, raytrace, layered, bokeh) on the chosen
+/// backend and prints what it did; `layers` extend `margin` pixels beyond the frame on every side.
+/// Returns the frame's image and its front layer's depth.
+fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) -> anyhow::Result<(RgbImage, Vec<f32>)> {
     if args.aperture != "circle" && !matches!(args.method, Method::Tiled | Method::Multilayer | Method::Bokeh) {
         bail!("--aperture {} is supported by the splatting methods and bokeh sprites only; {:?} uses the circle", args.aperture, args.method);
     }
@@ -279,7 +307,7 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens) -> anyhow::Re
             out.image
         }
     };
-    Ok((image, depth))
+    Ok((image.crop(margin), crop_plane(&depth, layers.width, margin)))
 }
 
 pub(super) fn backend(choice: BackendArg) -> anyhow::Result<Box<dyn dof::backend::Backend>> {
@@ -291,7 +319,10 @@ pub(super) fn backend(choice: BackendArg) -> anyhow::Result<Box<dyn dof::backend
 }
 
 fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
-    let builtin = scene::builtin(&args.scene)?;
+    let mut builtin = scene::builtin(&args.scene)?;
+    if let Some(rgb) = args.background {
+        builtin.scene = builtin.scene.with_background(rgb.to_array())?;
+    }
     let mut camera: Camera = builtin.camera.clone();
     camera.width = args.width.unwrap_or(camera.width);
     camera.height = args.height.unwrap_or(camera.height);
@@ -351,25 +382,30 @@ fn lens_settings(args: &RenderArgs, mut settings: LensSettings) -> LensSettings 
 /// a blur of them.
 fn render_layers(args: &RenderArgs, out: &Path, layered: &MultiLayerImage, lens: &ThinLens) -> anyhow::Result<()> {
     if args.method == Method::Layers {
-        write_layered_exr(out, &layered.layers)?;
+        write_layered_exr(out, &layered.frame_layers())?;
         let (w, wo) = (layered.with_mask, layered.without_mask);
         println!(
             "layers: {:.3} fragments per pixel, {:.1}% of pixels multi-layer (without the disocclusion buffer: {:.3}, {:.1}%); buffer covers {:.1}% of pixels",
             w.fragments_per_pixel(), 100.0 * w.multi_layer_share(), wo.fragments_per_pixel(),
             100.0 * wo.multi_layer_share(), 100.0 * layered.mask_share()
         );
-        let (front, _) = layered.layers.front();
+        let (front, _) = layered.front();
         write_png_preview(out.with_extension("png"), &front, args.exposure)?;
         println!("wrote {} and {}", out.display(), out.with_extension("png").display());
         return Ok(());
     }
-    let (image, _) = blur(args, &layered.layers, lens)?;
+    if layered.margin > 0 {
+        let (w, h) = (layered.layers.width, layered.layers.height);
+        let frame = (w - 2 * layered.margin) as f64 * (h - 2 * layered.margin) as f64;
+        println!("guard band: {} px beyond every edge, the method runs on {w}x{h} ({:.2}x the frame's pixels)", layered.margin, w as f64 * h as f64 / frame);
+    }
+    let (image, _) = blur(args, &layered.layers, lens, layered.margin)?;
     write_with_planes(args, out, &image, layered, lens)
 }
 
 /// An image with the front layer's depth, its CoC and the disocclusion buffer as extra planes.
 fn write_with_planes(args: &RenderArgs, out: &Path, image: &RgbImage, layered: &MultiLayerImage, lens: &ThinLens) -> anyhow::Result<()> {
-    let (_, depth) = layered.layers.front();
+    let (_, depth) = layered.front();
     let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
     let mask: Vec<f32> = layered.mask.iter().map(|&m| m as u32 as f32).collect();
     write_outputs(out, image, &[("Z", &depth), ("coc", &coc), ("mask", &mask)], args.exposure)
@@ -378,7 +414,11 @@ fn write_with_planes(args: &RenderArgs, out: &Path, image: &RgbImage, layered: &
 /// A glTF scene: loaded, rasterised and depth-peeled on the chosen backend; its reference is the
 /// accumulation buffer.
 fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
-    let mesh = load_gltf(Path::new(&args.scene))?;
+    let mut mesh = load_gltf(Path::new(&args.scene))?;
+    if let Some(rgb) = args.background {
+        scene::analytic::check_background(rgb.to_array())?;
+        mesh.lighting.background = rgb.to_array();
+    }
     let report = mesh.report.to_string();
     if !report.is_empty() {
         eprintln!("note: {}: {report}", args.scene);
@@ -396,7 +436,7 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let ms: f64 = peeled.times.iter().map(|t| t.ms).sum();
     println!("depth peeling on {}: {} passes, {ms:.2} ms", b.device_name(), peeled.passes);
     match args.method {
-        Method::Pinhole => write_with_planes(args, out, &peeled.image.layers.front().0, &peeled.image, &lens),
+        Method::Pinhole => write_with_planes(args, out, &peeled.image.front().0, &peeled.image, &lens),
         Method::Reference => {
             let samples = args.samples.unwrap_or(256);
             let acc = accumulate(b.as_mut(), &raster, &camera, &lens, near, &AccumulateOptions { samples, progress: true, ..Default::default() })?;

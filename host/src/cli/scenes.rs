@@ -7,12 +7,13 @@ use dof::io::write_png_preview;
 use dof::layers::RgbImage;
 use dof::metrics::compare;
 use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
+use anyhow::Context;
 use dof::scene::{
-    AutoOptions, BuiltinScene, ExportOptions, LayerOptions, MultiLayerImage, ReferenceOptions, builtin, builtin_names, export_glb,
-    load_gltf_slice, raycast_layers, reference, reference_auto,
+    AutoOptions, BuiltinScene, ExportOptions, LayerOptions, MitsubaExport, MitsubaOptions, MultiLayerImage, ReferenceOptions, builtin,
+    builtin_names, export_glb, export_metadata, export_mitsuba, load_gltf_slice, raycast_layers, reference, reference_auto,
 };
 use dof_shaders::lens::ThinLens;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 #[derive(clap::Args)]
@@ -52,10 +53,15 @@ pub struct ScenesArgs {
     /// Write each scene as binary glTF (`<name>.glb`, with its camera and light) into this folder.
     #[arg(long)]
     export: Option<PathBuf>,
+    /// Write each scene that Mitsuba 3 can render exactly (emissive-only surfaces, the reference's
+    /// thin lens) as `<name>.xml` into this folder, with `<name>.json` (camera, lens, or why the
+    /// scene was skipped) beside it; see `tools/independent_check.py`.
+    #[arg(long)]
+    export_mitsuba: Option<PathBuf>,
 }
 
 pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
-    for dir in [&args.dump, &args.export].into_iter().flatten() {
+    for dir in [&args.dump, &args.export, &args.export_mitsuba].into_iter().flatten() {
         std::fs::create_dir_all(dir)?;
     }
     for &name in builtin_names() {
@@ -72,17 +78,18 @@ pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
         let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default())?;
         let (w, wo) = (ml.with_mask, ml.without_mask);
         println!(
-            "{name} ({}x{}): {}\n  far-field CoC {:.1} px; layers (L = 4, umbra threshold): {:.3} fragments/px, {:.1}% multi-layer with the disocclusion buffer ({:.1}% of pixels), {:.3} and {:.1}% without; ray cast in {:.2?}",
-            scene.camera.width, scene.camera.height, scene.description, lens.far_limit_px(),
+            "{name} ({}x{}): {}\n  far-field CoC {:.1} px; guard band {} px; layers (L = 4, umbra threshold): {:.3} fragments/px, {:.1}% multi-layer with the disocclusion buffer ({:.1}% of pixels), {:.3} and {:.1}% without; ray cast in {:.2?}",
+            scene.camera.width, scene.camera.height, scene.description, lens.far_limit_px(), ml.margin,
             w.fragments_per_pixel(), 100.0 * w.multi_layer_share(), 100.0 * ml.mask_share(),
             wo.fragments_per_pixel(), 100.0 * wo.multi_layer_share(), start.elapsed()
         );
         if let Some(dir) = &args.dump {
-            let (front, _) = ml.layers.front();
+            let (front, _) = ml.front();
             write_png_preview(dir.join(format!("{name}-pinhole.png")), &front, 1.0)?;
             let mut mask = RgbImage::new(front.width, front.height);
+            let frame = ml.frame_layers();
             for (p, m) in ml.mask.iter().enumerate() {
-                let layers = ml.layers.counts[p] as f32;
+                let layers = frame.counts[p] as f32;
                 mask.data[p] = if *m { [0.25 * layers; 3] } else { [0.0, 0.0, 0.05] };
             }
             write_png_preview(dir.join(format!("{name}-mask.png")), &mask, 1.0)?;
@@ -109,7 +116,37 @@ pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
             std::fs::write(&path, export_glb(&scene.scene, &scene.camera, &ExportOptions::default())?)?;
             println!("  wrote {}", path.display());
         }
+        if let Some(dir) = &args.export_mitsuba {
+            export_mitsuba_files(dir, &scene, &lens)?;
+        }
     }
+    Ok(())
+}
+
+/// `<name>.xml` (when exact) and the `<name>.json` sidecar; a skipped scene says why.
+fn export_mitsuba_files(dir: &Path, scene: &BuiltinScene, lens: &ThinLens) -> anyhow::Result<()> {
+    let name = scene.name;
+    let export = export_mitsuba(&scene.scene, &scene.camera, lens, &MitsubaOptions::default())?;
+    let xml = dir.join(format!("{name}.xml"));
+    match &export {
+        MitsubaExport::Exact(s) => {
+            std::fs::write(&xml, &s.xml).with_context(|| format!("cannot write {}", xml.display()))?;
+            println!("  Mitsuba: wrote {}", xml.display());
+            for note in &s.notes {
+                println!("    {note}");
+            }
+        }
+        MitsubaExport::Skipped(why) => {
+            // A stale file from an earlier export must not be rendered as if it were this one.
+            if xml.exists() {
+                std::fs::remove_file(&xml).with_context(|| format!("cannot remove the stale {}", xml.display()))?;
+            }
+            println!("  Mitsuba: skipped, not exactly exportable: {why}");
+        }
+    }
+    let json = dir.join(format!("{name}.json"));
+    let text = serde_json::to_string_pretty(&export_metadata(name, &scene.camera, lens, &export))?;
+    std::fs::write(&json, text + "\n").with_context(|| format!("cannot write {}", json.display()))?;
     Ok(())
 }
 
@@ -123,12 +160,13 @@ fn raster(args: &ScenesArgs, scene: &BuiltinScene, lens: &ThinLens, exact: &Mult
     let start = Instant::now();
     let peeled = peel_layers(b.as_mut(), &raster, &scene.camera, lens, near, &LayerOptions::default())?;
     let (w, wo) = (peeled.image.with_mask, peeled.image.without_mask);
-    let same = exact.layers.counts.iter().zip(&peeled.image.layers.counts).filter(|(a, b)| a == b).count();
+    let (exact_frame, peeled_frame) = (exact.frame_layers(), peeled.image.frame_layers());
+    let same = exact_frame.counts.iter().zip(&peeled_frame.counts).filter(|(a, b)| a == b).count();
     println!(
         "  glTF ({} triangles, {:.1} KiB), depth-peeled on {} in {:.2?} ({} passes): {:.3} fragments/px, {:.1}% multi-layer with the buffer, {:.3} and {:.1}% without; {:.2}% of pixels keep as many layers as the exact image",
         mesh.triangles.len(), glb.len() as f64 / 1024.0, b.device_name(), start.elapsed(), peeled.passes,
         w.fragments_per_pixel(), 100.0 * w.multi_layer_share(), wo.fragments_per_pixel(), 100.0 * wo.multi_layer_share(),
-        100.0 * same as f64 / exact.layers.counts.len().max(1) as f64
+        100.0 * same as f64 / exact_frame.counts.len().max(1) as f64
     );
     if args.accumulation.is_empty() {
         return Ok(());

@@ -13,11 +13,26 @@ use std::collections::BTreeMap;
 use dof_shaders::lens::ThinLens;
 
 /// What every method may use: the scene's multi-layer image and its front layer, and the lens.
+/// The images cover the frame and `margin` pixels of guard band on every side; a method's output
+/// is cut to the frame with [`MethodInput::crop`].
 pub struct MethodInput {
     pub front: RgbImage,
     pub depth: Vec<f32>,
     pub layers: LayeredImage,
     pub lens: ThinLens,
+    pub margin: u32,
+}
+
+impl MethodInput {
+    pub fn new(layers: LayeredImage, lens: ThinLens, margin: u32) -> Self {
+        let (front, depth) = layers.front();
+        MethodInput { front, depth, layers, lens, margin }
+    }
+
+    /// A method's output cut to the frame.
+    pub fn crop(&self, image: &RgbImage) -> RgbImage {
+        image.crop(self.margin)
+    }
 }
 
 /// One quality setting of a method (its knob and value), as the report names it.

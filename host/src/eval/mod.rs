@@ -76,7 +76,6 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
         let prepared = if is_gltf(scene_arg) { prepare_gltf(scene_arg, options, backends[0].as_mut())? } else { prepare_builtin(scene_arg, options)? };
         let gltf = is_gltf(scene_arg);
         let Prepared { name, width, height, lens, ml, reference: exact, reference_spp, reference_noise_psnr_db } = prepared;
-        let (front, depth) = ml.layers.front();
         report.scenes.push(SceneInfo {
             name: name.clone(),
             width,
@@ -88,8 +87,9 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
             fragments_per_pixel: ml.with_mask.fragments_per_pixel(),
             multi_layer_share: ml.with_mask.multi_layer_share(),
             occlusion_region_share: ml.mask_share(),
+            guard_band_px: ml.margin,
         });
-        let input = MethodInput { front, depth, layers: ml.layers, lens };
+        let input = MethodInput::new(ml.layers, lens, ml.margin);
         // Per method, the best image on the first backend, for the grid.
         let mut best: Vec<(String, f64, crate::layers::RgbImage)> = Vec::new();
         for method in all.iter().filter(|m| options.methods.is_empty() || options.methods.iter().any(|n| n == m.name())) {
@@ -98,7 +98,7 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                 for (backend_index, backend) in backends.iter_mut().take(targets).enumerate() {
                     let b = backend.as_mut();
                     let (times, output) = timed(method.as_ref(), b, &input, &setting, options.runs)?;
-                    let image = output.image;
+                    let image = input.crop(&output.image);
                     let error = compare(&image, &exact, Some(&ml.mask))?;
                     if backend_index == 0 {
                         match best.iter_mut().find(|b| b.0 == method.name()) {

@@ -11,7 +11,8 @@
 //!   scene), `reference_spp` (samples per pixel, or renders of the accumulation buffer),
 //!   `reference_noise_psnr_db` (estimated noise of the reference, dB), `fragments_per_pixel`, `multi_layer_share`,
 //!   `occlusion_region_share` (share of pixels in the partial-occlusion region, the disocclusion
-//!   buffer);
+//!   buffer), `guard_band_px` (the margin rendered beyond the frame on every side; every method
+//!   runs on the larger image, `(w + 2m)(h + 2m)` pixels);
 //! - `records[]`, one per scene × method × setting × backend: `scene`, `method`, `setting`,
 //!   `backend` (`cpu`, `vulkan`, or `host` for methods without kernels), `device`, `time_ms` (median
 //!   over `runs` of the summed stage times), `stages_ms` (median per stage label), `psnr_db`, `ssim`,
@@ -66,6 +67,7 @@ pub struct SceneInfo {
     pub fragments_per_pixel: f64,
     pub multi_layer_share: f64,
     pub occlusion_region_share: f64,
+    pub guard_band_px: u32,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -192,8 +194,9 @@ impl Report {
         for s in &self.scenes {
             let _ = writeln!(md, "## {} ({}x{})\n", s.name, s.width, s.height);
             let unit = if s.reference == "accumulation" { "renders of the accumulation buffer" } else { "spp, exact" };
-            let _ = writeln!(md, "Reference: {} {unit} (noise {} dB). Multi-layer image: {:.3} fragments/px, {:.1}% of pixels multi-layer; partial-occlusion region {:.1}% of pixels.\n",
-                s.reference_spp, db(s.reference_noise_psnr_db), s.fragments_per_pixel, 100.0 * s.multi_layer_share, 100.0 * s.occlusion_region_share);
+            let band = (s.width + 2 * s.guard_band_px) as f64 * (s.height + 2 * s.guard_band_px) as f64 / (s.width as f64 * s.height as f64);
+            let _ = writeln!(md, "Reference: {} {unit} (noise {} dB). Multi-layer image: {:.3} fragments/px, {:.1}% of pixels multi-layer; partial-occlusion region {:.1}% of pixels; guard band {} px ({:.2}x the frame's pixels).\n",
+                s.reference_spp, db(s.reference_noise_psnr_db), s.fragments_per_pixel, 100.0 * s.multi_layer_share, 100.0 * s.occlusion_region_share, s.guard_band_px, band);
             md.push_str("| method | setting | backend | total (ms) | PSNR (dB) | SSIM | FLIP | PSNR region (dB) | SSIM region | FLIP region |\n|---|---|---|---|---|---|---|---|---|---|\n");
             for r in self.records.iter().filter(|r| r.scene == s.name) {
                 let opt = |v: Option<f64>| v.map_or("-".into(), |v| format!("{v:.4}"));

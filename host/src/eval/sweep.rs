@@ -63,8 +63,7 @@ pub fn coc_sweep(
         let lens = lens_for_max_coc(&base_layers.layers, &base, target)?;
         let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &layer_options)?;
         let max_coc_px = max_coc_radius(&ml.layers, &lens);
-        let (front, depth) = ml.layers.front();
-        let input = MethodInput { front, depth, layers: ml.layers, lens };
+        let input = MethodInput::new(ml.layers, lens, ml.margin);
         for method in methods.iter().filter(|m| m.uses_backend()) {
             let Some(setting) = method.sweep_setting() else { continue };
             for backend in backends.iter_mut() {

@@ -78,17 +78,22 @@ impl RasterScene<'_> {
             }
         }
         let l = &self.lighting;
-        let colours_ok = l.color.iter().chain(l.ambient.iter()).all(|x| x.is_finite() && *x >= 0.0);
+        let colours_ok = l.color.iter().chain(&l.ambient).chain(&l.background).all(|x| x.is_finite() && *x >= 0.0);
         if !l.direction.is_finite() || !(l.direction.length_squared() > 0.0) || !colours_ok {
             return bad("the light needs a finite, non-zero direction and finite, non-negative colours".into());
         }
         Ok(())
     }
 
+    /// The corners of every triangle, world space.
+    pub fn triangle_positions(&self) -> impl Iterator<Item = [glam::Vec3; 3]> + '_ {
+        self.triangles.iter().map(|t| [0, 1, 2].map(|k| glam::Vec3::from(self.vertices.get(t[k] as usize).map_or([0.0; 3], |v| v.position))))
+    }
+
     /// The light in the layout the shading kernel reads (direction normalised).
     pub fn light(&self) -> Light {
         let d = self.lighting.direction.normalize_or_zero();
-        Light { direction: d.to_array(), color: self.lighting.color, ambient: self.lighting.ambient, ..Light::default() }
+        Light { direction: d.to_array(), color: self.lighting.color, ambient: self.lighting.ambient, background: self.lighting.background, ..Light::default() }
     }
 }
 

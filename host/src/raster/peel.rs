@@ -4,9 +4,12 @@
 //! 1. Pass `k` draws every triangle and keeps, per pixel, the nearest fragment beyond `reach`
 //!    (nothing for `k = 0`); shading it writes layer `k` and the next `reach` — the umbra behind an
 //!    opaque fragment, so everything within it is skipped (the umbra threshold as the minimum
-//!    separation of layers), and infinity where the pass found nothing.
-//! 2. Passes stop after `max_layers`, or as soon as a pass finds nothing anywhere.
-//! 3. The disocclusion buffer from the front layer ([`apply_disocclusion`]): pixels outside it keep
+//!    separation of layers), and infinity where the pass found nothing. Where a pass first finds
+//!    nothing the pixel's ray escapes: its next layer is the background, at infinite depth.
+//! 2. Passes stop after `max_layers`, or as soon as a pass finds no surface anywhere.
+//! 3. The image covers the frame and its guard band ([`crate::scene::guard_band`]), drawn through
+//!    the overscanned camera.
+//! 4. The disocclusion buffer from the front layer ([`apply_disocclusion`]): pixels outside it keep
 //!    their front fragment only. This is the two-pass variant of §4.3 (the mask is built from the
 //!    finished front layer rather than during the peel).
 
@@ -16,6 +19,7 @@ use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::{Fragment, LayeredImage};
 use crate::methods::buffers::groups_for;
+use crate::scene::guard_band::auto_margin_mesh;
 use crate::scene::{Camera, CameraFrame, LayerOptions, MultiLayerImage, apply_disocclusion};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::raster::draw::{RASTER_DRAW, VIS_WORDS};
@@ -119,7 +123,9 @@ pub fn peel_layers(
     near: f32,
     options: &LayerOptions,
 ) -> Result<Peeled> {
-    let frame = check_view(camera, lens, near)?;
+    check_view(camera, lens, near)?;
+    let margin = options.guard_band.resolve(|| auto_margin_mesh(scene.triangle_positions(), camera, lens, near))?;
+    let frame = camera.overscan(margin).frame()?;
     if options.max_layers == 0 || !(options.edge_depth_ratio >= 0.0) {
         return Err(Error::InvalidArgument(format!(
             "need at least one layer and a non-negative edge ratio, got {} and {}",
@@ -147,13 +153,16 @@ pub fn peel_layers(
             let words = backend.read_buffer(layer, 0, LAYER_WORDS as u64 * pixels)?;
             let mut found = false;
             for (p, w) in words.chunks_exact(LAYER_WORDS as usize).enumerate() {
-                let depth = f32::from_bits(w[4]);
-                if depth.is_finite() {
+                let (alpha, depth) = (f32::from_bits(w[3]), f32::from_bits(w[4]));
+                // A surface, or the background where this pass saw the pixel's ray escape (coverage
+                // 1 at infinite depth; coverage 0 there means the pixel ended in an earlier pass).
+                let surface = depth.is_finite();
+                if surface || alpha > 0.0 {
                     // Each pass keeps fragments strictly beyond the last, so layers arrive in order.
                     let slot = p * options.max_layers as usize + full.counts[p] as usize;
-                    full.fragments[slot] = Fragment { color: [0, 1, 2].map(|j| f32::from_bits(w[j])), alpha: f32::from_bits(w[3]), depth };
+                    full.fragments[slot] = Fragment { color: [0, 1, 2].map(|j| f32::from_bits(w[j])), alpha, depth };
                     full.counts[p] += 1;
-                    found = true;
+                    found |= surface;
                 }
             }
             if !found {
@@ -164,5 +173,5 @@ pub fn peel_layers(
     });
     mesh.destroy(backend);
     let (passes, times) = result?;
-    Ok(Peeled { image: apply_disocclusion(full, &frame, lens, options), passes, times })
+    Ok(Peeled { image: apply_disocclusion(full, &frame, lens, options, margin), passes, times })
 }

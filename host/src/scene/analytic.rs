@@ -7,7 +7,8 @@
 //!   the one directional light; no shadows, no interreflection;
 //! - an emissive surface has radiance equal to its emission, unlit; emission may exceed the
 //!   half-float range (65504), as highlights do;
-//! - no surface (the sky) is black and has no fragment.
+//! - where a ray hits nothing it sees the background ([`Scene::background`], black unless set): a
+//!   surface at infinite depth, the deepest fragment of every pixel whose ray escapes.
 
 use glam::Vec3;
 
@@ -51,18 +52,21 @@ pub struct Primitive {
     pub material: Material,
 }
 
-/// One directional light plus ambient.
+/// One directional light plus ambient, and the background.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Lighting {
     /// Direction *towards* the light (any length, not zero).
     pub direction: Vec3,
     pub color: [f32; 3],
     pub ambient: [f32; 3],
+    /// Radiance of the background, what a ray that hits nothing sees (black by default): a surface
+    /// at infinite depth, the deepest fragment of every pixel whose ray escapes.
+    pub background: [f32; 3],
 }
 
 impl Default for Lighting {
     fn default() -> Self {
-        Lighting { direction: Vec3::new(-0.4, 0.8, 0.45), color: [0.8, 0.8, 0.8], ambient: [0.2, 0.2, 0.2] }
+        Lighting { direction: Vec3::new(-0.4, 0.8, 0.45), color: [0.8, 0.8, 0.8], ambient: [0.2, 0.2, 0.2], background: [0.0; 3] }
     }
 }
 
@@ -141,6 +145,7 @@ impl Scene {
         if !l.color.iter().chain(l.ambient.iter()).all(|v| *v >= 0.0 && v.is_finite()) {
             return Err(Error::InvalidArgument("light and ambient colours must be finite and not negative".into()));
         }
+        check_background(l.background)?;
         let mut boxes = Vec::new();
         let mut unbounded = Vec::new();
         for (i, p) in primitives.iter().enumerate() {
@@ -150,6 +155,18 @@ impl Scene {
             }
         }
         Ok(Scene { bvh: Bvh::build(&boxes), unbounded, primitives, lighting, light_dir: l.direction.normalize() })
+    }
+
+    /// The same scene with another background radiance. Errors on a NaN, negative or infinite value.
+    pub fn with_background(mut self, rgb: [f32; 3]) -> Result<Self> {
+        check_background(rgb)?;
+        self.lighting.background = rgb;
+        Ok(self)
+    }
+
+    /// Radiance of the background: what a ray that hits nothing sees, at infinite depth.
+    pub fn background(&self) -> [f32; 3] {
+        self.lighting.background
     }
 
     pub fn primitives(&self) -> &[Primitive] {
@@ -222,12 +239,22 @@ impl Scene {
         }
     }
 
-    /// The radiance a ray sees: the first hit shaded, black if it hits nothing.
+    /// The radiance a ray sees: the first hit shaded, the background if it hits nothing.
     pub fn trace(&self, ray: &Ray) -> [f32; 3] {
         match self.first_hit(ray, 0.0) {
             Some(h) => self.shade(ray, &h),
-            None => [0.0; 3],
+            None => self.lighting.background,
         }
+    }
+}
+
+/// A background radiance must be finite and not negative (HDR values above the half-float range
+/// are fine: the splatting methods scale them like any colour).
+pub fn check_background(rgb: [f32; 3]) -> Result<()> {
+    if rgb.iter().all(|v| *v >= 0.0 && v.is_finite()) {
+        Ok(())
+    } else {
+        Err(Error::InvalidArgument(format!("the background colour must be finite and not negative, got {rgb:?}")))
     }
 }
 

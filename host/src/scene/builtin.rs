@@ -8,6 +8,12 @@
 //! | `railing` | out-of-focus railing bars near the camera over a detailed far field (seed 000 Fig. 1) |
 //! | `columns` | a colonnade seen at an angle: many overlapping depth layers |
 //! | `highlights` | small, very bright emissive dots at many depths (bokeh), some above 65504 |
+//! | `fence` | out-of-focus fence bars near the camera over a far wall, open sky above and below it |
+//! | `edges` | out-of-focus near objects crossing all four edges of the frame, open sky above |
+//!
+//! `fence` and `edges` are emissive only (every surface unlit, radiance = emission) and have a
+//! coloured sky, so an independent renderer (`tools/independent_check.py`) sees exactly the same
+//! radiance and only the lens integration differs.
 
 use dof_shaders::lens::ThinLens;
 use glam::Vec3;
@@ -42,7 +48,7 @@ impl BuiltinScene {
     }
 }
 
-const NAMES: [&str; 4] = ["simple", "railing", "columns", "highlights"];
+const NAMES: [&str; 6] = ["simple", "railing", "columns", "highlights", "fence", "edges"];
 
 /// Names of the built-in scenes.
 pub fn builtin_names() -> &'static [&'static str] {
@@ -56,6 +62,8 @@ pub fn builtin(name: &str) -> Result<BuiltinScene> {
         "railing" => railing(),
         "columns" => columns(),
         "highlights" => highlights(),
+        "fence" => fence(),
+        "edges" => edges(),
         _ => Err(Error::InvalidArgument(format!(
             "unknown built-in scene `{name}`; the built-in scenes are: {}",
             NAMES.join(", ")
@@ -217,5 +225,81 @@ fn highlights() -> Result<BuiltinScene> {
         scene: Scene::new(prims, Lighting { color: [0.15, 0.15, 0.18], ambient: [0.05, 0.05, 0.05], ..Lighting::default() })?,
         camera: cam,
         lens: LensSettings::with_aperture_radius(4.0, 0.04),
+    })
+}
+
+fn emissive(shape: Shape, rgb: [f32; 3]) -> Primitive {
+    Primitive { shape, material: Material::Emissive(rgb) }
+}
+
+/// An axis-aligned rectangle facing the camera (+Z) at depth `z`, from `(x0, y0)` to `(x1, y1)`.
+fn facing_quad(x0: f32, y0: f32, x1: f32, y1: f32, z: f32) -> Shape {
+    Shape::Quad { corner: Vec3::new(x0, y0, z), edge_u: Vec3::new(x1 - x0, 0.0, 0.0), edge_v: Vec3::new(0.0, y1 - y0, 0.0) }
+}
+
+/// A far wall of emissive tiles in `rows` x `cols` cells, colours cycling through a palette, from
+/// `(x0, y0)` to `(x1, y1)` at depth `z`.
+fn tiled_wall(x0: f32, y0: f32, x1: f32, y1: f32, z: f32, rows: u32, cols: u32) -> Vec<Primitive> {
+    let palette = [[0.9, 0.75, 0.5], [0.35, 0.45, 0.3], [0.8, 0.35, 0.25], [0.25, 0.3, 0.55], [0.95, 0.9, 0.85], [0.5, 0.2, 0.4], [0.15, 0.15, 0.15]];
+    let (w, h) = ((x1 - x0) / cols as f32, (y1 - y0) / rows as f32);
+    let mut prims = Vec::new();
+    for r in 0..rows {
+        for c in 0..cols {
+            let (x, y) = (x0 + c as f32 * w, y0 + r as f32 * h);
+            prims.push(emissive(facing_quad(x, y, x + w, y + h, z), palette[((r * 3 + c * 5) % 7) as usize]));
+        }
+    }
+    prims
+}
+
+/// The sky of the emissive scenes: a pale blue, bright enough that losing it shows.
+const SKY: [f32; 3] = [0.45, 0.6, 0.9];
+
+/// Vertical fence bars 1.5 m in front of the camera, out of focus (CoC about 25 px at 640x360), over
+/// a far wall of emissive tiles at 20 m that fills the middle of the frame, with open sky in strips
+/// above and below it; three small HDR lamps in front of the wall. The bars end inside the sky
+/// strips, so their blurred ends are seen over the sky. In focus at 20 m.
+fn fence() -> Result<BuiltinScene> {
+    let mut prims = tiled_wall(-16.0, -4.0, 16.0, 4.0, -20.0, 4, 16);
+    for (i, x) in [-4.0f32, 1.5, 5.0].iter().enumerate() {
+        let power = [40.0, 300.0, 2000.0][i];
+        prims.push(emissive(sphere([*x, 1.0 - i as f32, -18.0], 0.08), [power, 0.8 * power, 0.6 * power]));
+    }
+    for i in -8..=8 {
+        let x = i as f32 * 0.12;
+        prims.push(emissive(facing_quad(x - 0.016, -0.4, x + 0.016, 0.4, -1.5), [0.55, 0.32, 0.16]));
+    }
+    Ok(BuiltinScene {
+        name: "fence",
+        description: "out-of-focus fence bars over a far wall, open sky above and below it (emissive only)",
+        scene: Scene::new(prims, Lighting::default())?.with_background(SKY)?,
+        camera: camera(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0)),
+        // Far-field CoC 2 px: the bars (z = 1.5) get 2·(20/1.5 − 1) ≈ 25 px.
+        lens: LensSettings::with_aperture_radius(20.0, 0.045),
+    })
+}
+
+/// Out-of-focus objects 1.2 m in front of the camera crossing each edge of the frame: a post on the
+/// left and one on the right, a beam along the bottom and a branch across the top, over a far wall
+/// of emissive tiles at 15 m with open sky above it. In focus at 15 m; the near objects' CoC is
+/// about 30 px at 640x360, so their blur reaches into the frame from beyond its edges.
+fn edges() -> Result<BuiltinScene> {
+    let mut prims = tiled_wall(-12.0, -6.0, 12.0, 1.5, -15.0, 5, 12);
+    let near = -1.2;
+    let post = [0.7, 0.5, 0.3];
+    prims.extend([
+        emissive(facing_quad(-0.9, -1.0, -0.66, 1.0, near), post),
+        emissive(facing_quad(0.68, -1.0, 0.95, 1.0, near), [0.3, 0.55, 0.35]),
+        emissive(facing_quad(-1.0, -0.62, 1.0, -0.4, near), [0.85, 0.8, 0.7]),
+        emissive(facing_quad(-0.3, 0.4, 1.0, 0.6, near - 0.1), [0.2, 0.25, 0.15]),
+        emissive(sphere([-0.15, 0.5, near - 0.3], 0.04), [6.0, 5.0, 3.0]),
+    ]);
+    Ok(BuiltinScene {
+        name: "edges",
+        description: "out-of-focus near objects crossing each edge of the frame, open sky above (emissive only)",
+        scene: Scene::new(prims, Lighting::default())?.with_background(SKY)?,
+        camera: camera(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0)),
+        // Far-field CoC 2.5 px: the near objects (z = 1.2) get 2.5·(15/1.2 − 1) ≈ 29 px.
+        lens: LensSettings::with_aperture_radius(15.0, 0.045),
     })
 }

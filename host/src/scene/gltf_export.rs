@@ -18,7 +18,8 @@
 //!   checker's parity matches the analytic one; emission becomes the emissive factor, with
 //!   `KHR_materials_emissive_strength` carrying a maximum above 1;
 //! - the light becomes a `KHR_lights_punctual` directional light, the ambient term the scene's
-//!   extras key `dof_ambient`; the camera a perspective camera node of the default scene.
+//!   extras key `dof_ambient`, the background radiance the key `dof_background`; the camera a
+//!   perspective camera node of the default scene.
 
 use std::f32::consts::{FRAC_PI_2, PI};
 
@@ -318,7 +319,7 @@ pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Re
         }));
     }
 
-    let Lighting { direction, color, ambient } = *scene.lighting();
+    let Lighting { direction, color, ambient, background } = *scene.lighting();
     let strength = color[0].max(color[1]).max(color[2]);
     let light_colour = if strength > 0.0 { color.map(|c| c / strength) } else { [1.0; 3] };
     // Local −Z is the direction the light travels, so local +Z points towards the light.
@@ -332,7 +333,7 @@ pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Re
             { "type": "directional", "color": light_colour, "intensity": strength }
         ] } },
         "scene": 0,
-        "scenes": [{ "nodes": [0, 1, 2], "extras": { "dof_ambient": ambient } }],
+        "scenes": [{ "nodes": [0, 1, 2], "extras": { "dof_ambient": ambient, "dof_background": background } }],
         "nodes": [
             { "mesh": 0, "name": "analytic scene" },
             { "camera": 0, "name": "camera", "translation": frame.eye.to_array(), "rotation": camera_rotation.to_array() },

@@ -19,7 +19,9 @@
 //! - lighting: the first `KHR_lights_punctual` directional light met in the scene (depth first)
 //!   gives the direction towards the light (its node's local +Z in world space) and colour ×
 //!   intensity; the scene's extras key `"dof_ambient": [r, g, b]` gives the ambient term, else
-//!   [`Lighting::default`]'s. Without a directional light the lighting is [`Lighting::default`].
+//!   [`Lighting::default`]'s, and `"dof_background": [r, g, b]` the background radiance (what a
+//!   ray that hits nothing sees), else black. Without a directional light the lighting is
+//!   [`Lighting::default`].
 //!   Other lights are counted as ignored.
 //!
 //! Zero-area triangles are dropped and counted (see [`super::mesh`]). Errors, never panics:
@@ -70,7 +72,8 @@ fn load(bytes: &[u8], base: Option<&Path>) -> Result<MeshScene> {
     let scene = document.default_scene().or_else(|| document.scenes().next()).ok_or_else(|| {
         scene_err("the glTF file holds no scene, so no triangles; add a scene whose nodes hold meshes")
     })?;
-    loader.out.lighting.ambient = ambient(&scene)?;
+    loader.out.lighting.ambient = extras_colour(&scene, "dof_ambient")?.unwrap_or(Lighting::default().ambient);
+    loader.out.lighting.background = extras_colour(&scene, "dof_background")?.unwrap_or(Lighting::default().background);
     let mut light_found = false;
     // Depth first with an explicit stack (no recursion limit on deep files); a node reached twice
     // means the hierarchy is not a tree.
@@ -132,17 +135,16 @@ fn empty() -> MeshScene {
     }
 }
 
-/// The ambient term from the scene's extras (`"dof_ambient": [r, g, b]`), else the default.
-fn ambient(scene: &gltf::Scene) -> Result<[f32; 3]> {
-    let default = Lighting::default().ambient;
-    let Some(raw) = scene.extras() else { return Ok(default) };
+/// A colour from the scene's extras (`"KEY": [r, g, b]`), `None` when absent.
+fn extras_colour(scene: &gltf::Scene, key: &str) -> Result<Option<[f32; 3]>> {
+    let Some(raw) = scene.extras() else { return Ok(None) };
     let value: serde_json::Value = serde_json::from_str(raw.get()).map_err(|e| scene_err(format!("the scene's extras are not valid JSON: {e}")))?;
-    let Some(v) = value.get("dof_ambient") else { return Ok(default) };
+    let Some(v) = value.get(key) else { return Ok(None) };
     let parsed = v.as_array().filter(|a| a.len() == 3).and_then(|a| {
         let c: Vec<f32> = a.iter().filter_map(|x| x.as_f64()).map(|x| x as f32).filter(|x| x.is_finite() && *x >= 0.0).collect();
         <[f32; 3]>::try_from(c).ok()
     });
-    parsed.ok_or_else(|| scene_err(format!("the scene's extras key `dof_ambient` must be [r, g, b] with finite, non-negative numbers, got {v}")))
+    parsed.map(Some).ok_or_else(|| scene_err(format!("the scene's extras key `{key}` must be [r, g, b] with finite, non-negative numbers, got {v}")))
 }
 
 /// Reads a URI's bytes: a base64 data URI, or a file relative to `base` (percent-decoded).

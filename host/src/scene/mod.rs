@@ -6,6 +6,7 @@
 //! - [`builtin`](mod@builtin): named scenes with default camera and lens (`simple`, `railing`, `columns`,
 //!   `highlights`);
 //! - [`raycast`]: the exact partial multi-layer image (umbra threshold, disocclusion buffer);
+//! - [`guard_band`]: the margin rendered beyond the frame so blur from outside reaches into it;
 //! - [`reference`](mod@reference): thin-lens distributed ray tracing (the ground truth) and the pinhole image;
 //! - [`bvh`]: the bounding-volume hierarchy that keeps ray casts cheap;
 //! - [`mesh`]: triangle scenes ([`MeshScene`]) as the rasteriser draws them;
@@ -22,8 +23,10 @@ pub mod bvh;
 pub mod camera;
 pub mod gltf_export;
 pub mod gltf_load;
+pub mod guard_band;
 pub mod lens;
 pub mod mesh;
+pub mod mitsuba_export;
 pub mod raycast;
 pub mod reference;
 pub mod sampling;
@@ -37,6 +40,8 @@ pub use dof_shaders::lens::{ArtistLens, ThinLens};
 /// The vector type of the scene API (so users need not depend on `glam` themselves).
 pub use glam::Vec3;
 pub use mesh::{LoadReport, MeshCamera, MeshScene};
+pub use mitsuba_export::{MitsubaExport, MitsubaOptions, MitsubaScene, export_metadata, export_mitsuba};
 pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
+pub use guard_band::{GuardBand, MAX_GUARD_BAND};
 pub use raycast::{LayerOptions, MultiLayerImage, apply_disocclusion, raycast_layers};
 pub use reference::{AutoOptions, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};

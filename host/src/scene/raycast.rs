@@ -9,7 +9,8 @@
 //!    while it lies within `ThinLens::umbra_length(z_k, r(z_k))` behind the last kept fragment at
 //!    depth `z_k`, where `r(z)` is the radius of a pixel's footprint facing the camera at depth `z`
 //!    ([`CameraFrame::pixel_footprint_radius`]). A footprint as large as the aperture shadows
-//!    everything behind it, so a pinhole keeps one layer. At most `max_layers` are kept.
+//!    everything behind it, so a pinhole keeps one layer. At most `max_layers` are kept. Where the
+//!    ray escapes, the background ([`Scene::background`], at infinite depth) is its last fragment.
 //! 3. **Disocclusion buffer** (§4.2). On the front layer, two 4-neighbours are a depth
 //!    discontinuity when exactly one is sky or `|z_a − z_b| > edge_depth_ratio · min(z_a, z_b)`.
 //!    Both pixels of such a pair tag every pixel whose centre lies within `ceil(c/2)` pixels of
@@ -23,8 +24,9 @@ use rayon::prelude::*;
 
 use super::analytic::{Hit, Scene};
 use super::camera::{Camera, CameraFrame};
+use super::guard_band::{GuardBand, auto_margin};
 use crate::error::{Error, Result};
-use crate::layers::{Fragment, LayerStats, LayeredImage};
+use crate::layers::{Fragment, LayerStats, LayeredImage, RgbImage, crop_plane};
 
 /// How the multi-layer image is built.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -38,31 +40,56 @@ pub struct LayerOptions {
     pub disocclusion: bool,
     /// Relative depth difference between 4-neighbours that counts as a discontinuity (default 0.05).
     pub edge_depth_ratio: f32,
+    /// The margin rendered beyond the frame (default [`GuardBand::Auto`], see
+    /// [`super::guard_band`]).
+    pub guard_band: GuardBand,
 }
 
 impl Default for LayerOptions {
     fn default() -> Self {
-        LayerOptions { max_layers: 4, umbra_threshold: true, disocclusion: true, edge_depth_ratio: 0.05 }
+        LayerOptions { max_layers: 4, umbra_threshold: true, disocclusion: true, edge_depth_ratio: 0.05, guard_band: GuardBand::Auto }
     }
 }
 
 /// A multi-layer image with what produced it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MultiLayerImage {
-    /// The layers: limited by the mask when `LayerOptions::disocclusion` was on, all kept otherwise.
+    /// The layers, `margin` pixels larger than the frame on every side (the guard band): limited by
+    /// the disocclusion buffer when `LayerOptions::disocclusion` was on, all kept otherwise. Run a
+    /// method on these and crop its result with [`MultiLayerImage::crop`].
     pub layers: LayeredImage,
-    /// The disocclusion buffer, row-major: `true` where a pixel may keep more than one fragment.
+    /// The guard band's width in pixels.
+    pub margin: u32,
+    /// The disocclusion buffer over the frame, row-major: `true` where a pixel may keep more than
+    /// one fragment (the partial-occlusion region the metrics use).
     pub mask: Vec<bool>,
-    /// Statistics with the disocclusion buffer applied.
+    /// Statistics over the frame with the disocclusion buffer applied.
     pub with_mask: LayerStats,
-    /// Statistics with every pixel keeping up to `max_layers` fragments.
+    /// Statistics over the frame with every pixel keeping up to `max_layers` fragments.
     pub without_mask: LayerStats,
 }
 
 impl MultiLayerImage {
-    /// Share of pixels inside the disocclusion buffer.
+    /// Share of the frame's pixels inside the disocclusion buffer.
     pub fn mask_share(&self) -> f64 {
         self.mask.iter().filter(|m| **m).count() as f64 / self.mask.len().max(1) as f64
+    }
+
+    /// A method's result over [`Self::layers`] cut to the frame.
+    pub fn crop(&self, image: &RgbImage) -> RgbImage {
+        image.crop(self.margin)
+    }
+
+    /// The frame's own layers (the guard band cut away): what an RGB+Z or multi-layer EXR of the
+    /// frame would hold.
+    pub fn frame_layers(&self) -> LayeredImage {
+        self.layers.crop(self.margin)
+    }
+
+    /// The front layer of the frame: the pinhole image and its depth.
+    pub fn front(&self) -> (RgbImage, Vec<f32>) {
+        let (image, depth) = self.layers.front();
+        (image.crop(self.margin), crop_plane(&depth, self.layers.width, self.margin))
     }
 }
 
@@ -70,30 +97,34 @@ impl MultiLayerImage {
 /// Errors on an invalid camera or lens, `max_layers == 0`, a NaN or negative edge ratio, or an
 /// image too large to address.
 pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &LayerOptions) -> Result<MultiLayerImage> {
-    let frame = camera.frame()?;
+    camera.frame()?;
     if !lens.is_valid() {
         return Err(Error::InvalidArgument(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
     }
+    // Ray casting has no near plane; a thousandth of the focus distance bounds the band's search.
+    let margin = options.guard_band.resolve(|| auto_margin(scene, camera, lens, 1e-3 * lens.focus_distance))?;
+    let frame = camera.overscan(margin).frame()?;
     if !(options.edge_depth_ratio >= 0.0) {
         return Err(Error::InvalidArgument(format!("the edge depth ratio must not be negative, got {}", options.edge_depth_ratio)));
     }
     frame.check_size("multi-layer image", options.max_layers as u64)?;
     let mut full = LayeredImage::new(frame.width, frame.height, options.max_layers)?;
     cast_all(scene, &frame, lens, options, &mut full);
-    Ok(apply_disocclusion(full, &frame, lens, options))
+    Ok(apply_disocclusion(full, &frame, lens, options, margin))
 }
 
 /// Step 3 on a multi-layer image holding every kept fragment (the ray caster's or the
-/// rasteriser's): the disocclusion buffer from its front layer, and the statistics with and without
-/// it. The layers returned are masked when `options.disocclusion` is on.
-pub fn apply_disocclusion(full: LayeredImage, frame: &CameraFrame, lens: &ThinLens, options: &LayerOptions) -> MultiLayerImage {
+/// rasteriser's, seen by `frame`, `margin` pixels of guard band around the frame): the
+/// disocclusion buffer from its front layer, and the frame's statistics with and without it. The
+/// layers returned are masked when `options.disocclusion` is on.
+pub fn apply_disocclusion(full: LayeredImage, frame: &CameraFrame, lens: &ThinLens, options: &LayerOptions, margin: u32) -> MultiLayerImage {
     let l = full.max_layers as usize;
     let front: Vec<f32> = (0..full.counts.len())
         .map(|p| if full.counts[p] > 0 { full.fragments[p * l].depth } else { f32::INFINITY })
         .collect();
     let mask = disocclusion_mask(frame, lens, &front, options.edge_depth_ratio);
 
-    let without_mask = full.stats();
+    let without_mask = full.crop(margin).stats();
     let mut masked = full.clone();
     for (count, &keep) in masked.counts.iter_mut().zip(&mask) {
         if !keep {
@@ -106,9 +137,10 @@ pub fn apply_disocclusion(full: LayeredImage, frame: &CameraFrame, lens: &ThinLe
             *slot = Fragment { color: [0.0; 3], alpha: 0.0, depth: f32::INFINITY };
         }
     }
-    let with_mask = masked.stats();
+    let with_mask = masked.crop(margin).stats();
     let layers = if options.disocclusion { masked } else { full };
-    MultiLayerImage { layers, mask, with_mask, without_mask }
+    let mask = crop_plane(&mask, frame.width, margin);
+    MultiLayerImage { layers, margin, mask, with_mask, without_mask }
 }
 
 /// Fills `image` with every pixel's kept hits (steps 1 and 2), rows in parallel.
@@ -137,6 +169,12 @@ fn cast_all(scene: &Scene, frame: &CameraFrame, lens: &ThinLens, options: &Layer
                     n += 1;
                     let umbra = lens.umbra_length(hit.t, frame.pixel_footprint_radius(hit.t));
                     reach = if umbra.is_nan() { f32::INFINITY } else { hit.t + umbra };
+                }
+                // The ray escapes: the background is its deepest fragment, unless the pixel is full
+                // or the last surface's umbra reaches infinity.
+                if n < l && (n == 0 || !options.umbra_threshold || reach < f32::INFINITY) {
+                    fragments[x * l + n] = Fragment { color: scene.background(), alpha: 1.0, depth: f32::INFINITY };
+                    n += 1;
                 }
                 counts[x] = n as u32;
             }

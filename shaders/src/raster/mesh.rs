@@ -95,7 +95,7 @@ const _: () = assert!(core::mem::size_of::<MeshVertex>() == 4 * VERTEX_WORDS as 
 const _: () = assert!(core::mem::size_of::<MeshMaterial>() == 4 * MATERIAL_WORDS as usize);
 const _: () = assert!(core::mem::size_of::<TextureInfo>() == 4 * TEXTURE_WORDS as usize);
 
-/// One directional light plus ambient (the analytic scenes' [`Lighting`](../../dof/scene/struct.Lighting.html)).
+/// One directional light plus ambient, and the background radiance (the analytic scenes' [`Lighting`](../../dof/scene/struct.Lighting.html)).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct Light {
@@ -106,4 +106,7 @@ pub struct Light {
     pub _pad1: f32,
     pub ambient: [f32; 3],
     pub _pad2: f32,
+    /// Radiance where no surface is hit (the background at infinite depth).
+    pub background: [f32; 3],
+    pub _pad3: f32,
 }

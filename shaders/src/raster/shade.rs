@@ -5,7 +5,12 @@
 //! Layer mode also writes `reach[pixel]`, the depth the next peel must pass (seed 000 §4.1): behind
 //! an opaque fragment its umbra (`ThinLens::umbra_length` of the pixel's footprint; infinite once
 //! the footprint covers the aperture), behind a partly covering one nothing more than its depth,
-//! and infinity where nothing was found (nothing lies behind the sky).
+//! and infinity where nothing was found (nothing lies behind the background).
+//!
+//! Where nothing is found the pixel sees the background ([`Light::background`]): a fragment of
+//! coverage 1 at infinite depth, written once, in the first pass whose reach was still finite (the
+//! pass that found the pixel's ray escaping). A later pass, whose reach is already infinite, writes
+//! coverage 0 there: nothing.
 
 use super::draw::{VIS_WORDS, interpolate_uv};
 use super::mesh::{ALPHA_BLEND, Light, MATERIAL_WORDS, UNLIT, VERTEX_WORDS};
@@ -121,6 +126,8 @@ pub fn shade_pass<G: Group, M: Mem>(
             let (b0, b1) = (f32::from_bits(vis.load(at + 2)), f32::from_bits(vis.load(at + 3)));
             let (rgb, alpha) = shade_point(&p.light, p.eye, p.textures, id - 1, b0, b1, &vertices, &triangles, &materials, &textures, &texels);
             (rgb, alpha, f32::from_bits(vis.load(at + 1)))
+        } else if p.mode == ACCUMULATE || is_finite(f32::from_bits(reach.load(pi))) {
+            (p.light.background, 1.0, f32::INFINITY)
         } else {
             ([0.0; 3], 0.0, f32::INFINITY)
         };

@@ -30,7 +30,7 @@ pub const SATURATED: f32 = 1.0 / 1024.0;
 
 const T: usize = THREADS as usize;
 // Per-pixel state, one word per invocation each (f32 bits): accumulated colour, coverage used,
-// depth of the pixel's sharp front (+inf: none) and list entries visited (u32).
+// depth of the pixel's sharp front (NaN: none) and list entries visited (u32).
 const ACC_R: usize = 0;
 const ACC_G: usize = T;
 const ACC_B: usize = 2 * T;
@@ -124,9 +124,10 @@ pub fn accumulate_pass<G: Group, M: Mem>(
             f += T;
         }
         let (ok, x, y) = pixel(lid);
+        // No sharp front: NaN, never reached (a comparison with NaN is false), so the background
+        // at +inf still blends.
         let z = if ok { load_sharp(&sharp, y * p.width + x).1 } else { f32::NAN };
-        // No sharp front: +inf, never reached.
-        set(sh, SHARP_Z, lid, if is_nan(z) { f32::INFINITY } else { z });
+        set(sh, SHARP_Z, lid, z);
     });
     let mut start = 0;
     let mut active = 1;

@@ -84,7 +84,7 @@ pub mod stats {
     pub const DROPPED: u32 = 0;
     /// Colours clamped to the half-float range.
     pub const CLAMPED: u32 = 1;
-    /// Sky fragments added for empty pixels.
+    /// Black background fragments added for pixels without data (no slot at all).
     pub const SKY: u32 = 2;
     /// Fragments produced by merging, and the fragments they replaced.
     pub const MERGED: u32 = 3;

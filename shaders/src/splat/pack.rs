@@ -4,9 +4,10 @@
 //! front to back) and `counts` (slots used per pixel). A slot with a non-finite colour or a depth that
 //! is not positive (NaN, 0, negative) is dropped and counted: it never spreads. Colours are scaled
 //! by `color_scale` (the host picks a power of two that brings the brightest into the half-float
-//! range); what still lies beyond it is clamped and counted. A pixel with no slot at all is the sky: it gets a black
-//! fragment at infinite depth, so a blurred foreground over the sky blends with black as in the
-//! reference (a pixel whose slots were all dropped gets nothing and is filled by its neighbours' blur).
+//! range); what still lies beyond it is clamped and counted. The background arrives as a slot at
+//! infinite depth (its CoC the far-field limit) and blends like any surface. A pixel with no slot
+//! at all has no data: it gets a black background fragment, as `LayeredImage::front` reads it (a
+//! pixel whose slots were all dropped gets nothing and is filled by its neighbours' blur).
 
 use super::fragment::{Fragment, clamp_half};
 use super::{SplatParams, stats};
@@ -67,7 +68,7 @@ pub fn pack_pass<G: Group, M: Mem>(
         let n = if n < p.layers { n } else { p.layers };
         let (mut kept, mut dropped, mut clamped, mut hidden) = (0u32, 0u32, 0u32, 0u32);
         let mut front = false;
-        // The sky of an empty pixel is one more slot.
+        // An empty pixel's black background is one more slot.
         let slots = if n == 0 { 1 } else { n };
         let mut k = 0;
         while k < slots {

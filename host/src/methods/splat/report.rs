@@ -13,6 +13,7 @@ pub struct SplatReport {
     pub full_layer_slots: u64,
     pub dropped: u32,
     pub clamped: u32,
+    /// Pixels without data, given a black background fragment.
     pub sky: u32,
     /// Pixels whose front is in focus (kept out of the lists), and in-focus fragments behind one.
     pub sharp_pixels: u32,
@@ -73,7 +74,7 @@ impl SplatReport {
             }
         }
         s += &format!(
-            "fragments: {} in ({:.2}/px; a full {}-layer image holds {}), {} dropped (non-finite or bad depth), {} clamped to half range, {} sky\n",
+            "fragments: {} in ({:.2}/px; a full {}-layer image holds {}), {} dropped (non-finite or bad depth), {} clamped to half range, {} empty pixels given a black background\n",
             self.input_fragments,
             self.input_fragments as f64 / self.pixels.max(1) as f64,
             self.plan.as_ref().map_or(0, |p| p.layers),

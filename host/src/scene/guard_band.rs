@@ -1,0 +1,182 @@
+//! The guard band: a margin rendered beyond the frame so that blur from outside reaches into it.
+//!
+//! A blurred near object that crosses the edge of the frame spreads light into the frame from the
+//! part beyond the edge (Franke et al. 2018, §7, name this a limitation of screen-space methods).
+//! The scenes this system renders itself (analytic ray casting, glTF depth peeling) are therefore
+//! rendered with a margin of `m` pixels on every side: the same pixel pitch and centre
+//! ([`Camera::overscan`]), so the frame is the inner `width x height` pixels. Every method runs on
+//! the larger image and its result is cropped ([`crate::layers::RgbImage::crop`]). The references
+//! need no band: they trace the whole lens.
+//!
+//! The margin is the largest CoC radius that can reach into the frame ([`GuardBand::Auto`]): the
+//! CoC radius at the nearest depth of any geometry within [`MAX_GUARD_BAND`] pixels of the frame
+//! (each surface clipped to that widened view and to the nearest rendered depth), and the
+//! background's (the far-field limit), rounded up and capped at [`MAX_GUARD_BAND`], the splatting
+//! methods' largest honoured radius with 16-pixel tiles. It is conservative: a surface counts with
+//! its nearest depth anywhere in that widened view.
+
+use glam::Vec3;
+
+use super::analytic::{Scene, Shape};
+use super::camera::{Camera, CameraFrame};
+use dof_shaders::lens::ThinLens;
+
+/// Widest guard band, pixels: 6 tile rings of 16 pixels, the largest CoC radius the splatting
+/// methods honour with their default tiles (larger radii are capped there anyway).
+pub const MAX_GUARD_BAND: u32 = 96;
+
+/// How wide a margin the multi-layer image gets beyond the frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GuardBand {
+    /// None: the methods see nothing beyond the frame (what an EXR offers).
+    Off,
+    /// The largest CoC radius that can reach into the frame, up to [`MAX_GUARD_BAND`] (module docs).
+    Auto,
+    /// A fixed margin in pixels (at most [`MAX_GUARD_BAND`]).
+    Pixels(u32),
+}
+
+impl Camera {
+    /// The camera that sees `margin` more pixels on every side with the same pixel pitch and centre:
+    /// its pixel `(x + margin, y + margin)` is this camera's pixel `(x, y)`. A lens computed for
+    /// this camera stays valid for it (same pixels per scene unit).
+    pub fn overscan(&self, margin: u32) -> Camera {
+        if margin == 0 {
+            return *self;
+        }
+        let height = self.height.saturating_add(2 * margin);
+        let scale = height as f64 / self.height.max(1) as f64;
+        let tan = (0.5 * self.yfov_radians as f64).tan() * scale;
+        Camera { width: self.width.saturating_add(2 * margin), height, yfov_radians: (2.0 * tan.atan()) as f32, ..*self }
+    }
+}
+
+/// The view within [`MAX_GUARD_BAND`] pixels of the frame, from `z_min` on: four side planes
+/// through the eye and the near plane, as inward normals with offsets (`n·p >= d` inside).
+struct Reach {
+    planes: [(Vec3, f32); 5],
+}
+
+impl Reach {
+    fn new(camera: &Camera, z_min: f32) -> crate::Result<Self> {
+        let wide = camera.overscan(MAX_GUARD_BAND).frame()?;
+        let (w, h) = (wide.width as f32, wide.height as f32);
+        let [tl, tr, bl, br] = [(0.0, 0.0), (w, 0.0), (0.0, h), (w, h)].map(|(x, y)| wide.direction(x, y));
+        // Inward normals of the sides: left, right, top, bottom.
+        let side = |a: Vec3, b: Vec3| {
+            let n = a.cross(b).normalize_or_zero();
+            let n = if n.dot(wide.forward) < 0.0 { -n } else { n };
+            (n, n.dot(wide.eye))
+        };
+        Ok(Reach {
+            planes: [side(bl, tl), side(tr, br), side(tl, tr), side(br, bl), (wide.forward, wide.forward.dot(wide.eye) + z_min)],
+        })
+    }
+
+    /// Nearest planar depth of the convex polygon `poly` (its corners in order) inside the reach,
+    /// by clipping it against the five planes (Sutherland and Hodgman 1974); `None` if nothing is left.
+    fn nearest(&self, poly: &[Vec3], eye: Vec3, forward: Vec3) -> Option<f32> {
+        let mut cur: Vec<Vec3> = poly.to_vec();
+        for &(n, d) in &self.planes {
+            let mut next = Vec::with_capacity(cur.len() + 2);
+            for (i, &a) in cur.iter().enumerate() {
+                let b = cur[(i + 1) % cur.len()];
+                let (da, db) = (n.dot(a) - d, n.dot(b) - d);
+                if da >= 0.0 {
+                    next.push(a);
+                }
+                if (da >= 0.0) != (db >= 0.0) {
+                    next.push(a + (b - a) * (da / (da - db)));
+                }
+            }
+            cur = next;
+            if cur.is_empty() {
+                return None;
+            }
+        }
+        cur.iter().map(|p| (*p - eye).dot(forward)).reduce(f32::min)
+    }
+}
+
+/// The largest CoC radius (pixels, rounded up, at most [`MAX_GUARD_BAND`]) that can reach into the
+/// frame of `camera` from `scene`'s geometry or its background; `z_min` is the nearest depth
+/// rendered (analytic ray casting has no near plane: give a small positive depth).
+pub fn auto_margin(scene: &Scene, camera: &Camera, lens: &ThinLens, z_min: f32) -> crate::Result<u32> {
+    let frame = camera.frame()?;
+    let reach = Reach::new(camera, z_min)?;
+    let wide = camera.overscan(MAX_GUARD_BAND).frame()?;
+    let (eye, fwd) = (frame.eye, frame.forward);
+    let mut radius = lens.coc_radius_px(f32::INFINITY);
+    for prim in scene.primitives() {
+        let depth = match prim.shape {
+            Shape::Sphere { center, radius } => {
+                // Conservative: the sphere's nearest depth if it meets the reach at all.
+                let inside = reach.planes.iter().all(|(n, d)| n.dot(center) - d >= -radius);
+                inside.then(|| ((center - eye).dot(fwd) - radius).max(z_min))
+            }
+            Shape::Cuboid { min, max } => {
+                let c = |i: u32| Vec3::new(if i & 1 == 0 { min.x } else { max.x }, if i & 2 == 0 { min.y } else { max.y }, if i & 4 == 0 { min.z } else { max.z });
+                const FACES: [[u32; 4]; 6] = [[0, 1, 3, 2], [4, 5, 7, 6], [0, 1, 5, 4], [2, 3, 7, 6], [0, 2, 6, 4], [1, 3, 7, 5]];
+                FACES.iter().filter_map(|f| reach.nearest(&f.map(c), eye, fwd)).reduce(f32::min)
+            }
+            Shape::Quad { corner, edge_u, edge_v } => reach.nearest(&[corner, corner + edge_u, corner + edge_u + edge_v, corner + edge_v], eye, fwd),
+            Shape::Plane { point, normal } => plane_depth(&wide, point, normal, z_min),
+        };
+        if let Some(z) = depth {
+            radius = radius.max(lens.coc_radius_px(z));
+        }
+    }
+    Ok(margin_of(radius))
+}
+
+/// The nearest depth of a plane inside the widened view: the nearest of the view's corner rays'
+/// hits, since depth is linear over the plane and its visible part is convex with corners on
+/// those rays; `z_min` when the plane passes through the eye.
+fn plane_depth(wide: &CameraFrame, point: Vec3, normal: Vec3, z_min: f32) -> Option<f32> {
+    let offset = (point - wide.eye).dot(normal);
+    if offset.abs() <= 1e-6 * normal.length() * (point - wide.eye).length().max(1.0) {
+        return Some(z_min);
+    }
+    let (w, h) = (wide.width as f32, wide.height as f32);
+    [(0.0, 0.0), (w, 0.0), (0.0, h), (w, h)]
+        .iter()
+        .filter_map(|&(px, py)| {
+            let d = wide.direction(px, py);
+            let t = offset / d.dot(normal);
+            (t > 0.0 && t.is_finite()).then_some(t.max(z_min))
+        })
+        .reduce(f32::min)
+}
+
+/// The guard band of a triangle mesh: like [`auto_margin`], triangle by triangle, with the near
+/// plane as the nearest depth.
+pub fn auto_margin_mesh(triangles: impl Iterator<Item = [Vec3; 3]>, camera: &Camera, lens: &ThinLens, near: f32) -> crate::Result<u32> {
+    let frame = camera.frame()?;
+    let reach = Reach::new(camera, near)?;
+    let mut radius = lens.coc_radius_px(f32::INFINITY);
+    for tri in triangles {
+        if let Some(z) = reach.nearest(&tri, frame.eye, frame.forward) {
+            radius = radius.max(lens.coc_radius_px(z));
+            if radius >= MAX_GUARD_BAND as f32 {
+                break;
+            }
+        }
+    }
+    Ok(margin_of(radius))
+}
+
+fn margin_of(radius: f32) -> u32 {
+    if radius.is_nan() { MAX_GUARD_BAND } else { (radius.ceil().max(0.0) as u32).min(MAX_GUARD_BAND) }
+}
+
+impl GuardBand {
+    /// The margin in pixels this choice gives, `auto` computing it when asked.
+    pub fn resolve(self, auto: impl FnOnce() -> crate::Result<u32>) -> crate::Result<u32> {
+        match self {
+            GuardBand::Off => Ok(0),
+            GuardBand::Auto => auto(),
+            GuardBand::Pixels(m) if m <= MAX_GUARD_BAND => Ok(m),
+            GuardBand::Pixels(m) => Err(crate::Error::TooLarge { what: "guard band (px)".into(), size: m as u64, limit: MAX_GUARD_BAND as u64 }),
+        }
+    }
+}

@@ -64,11 +64,15 @@ pub fn hash(i: u32) -> u32 {
     i.wrapping_mul(2654435761).rotate_left(13).wrapping_mul(0x9E37_79B1)
 }
 
-/// [`noise_image`] with [`varied`] colours and every 23rd pixel left empty (the sky). Shared with
-/// the integration tests.
+/// [`noise_image`] with [`varied`] colours and every 23rd pixel the background alone (the sky: one
+/// fragment at depth +inf). Shared with the integration tests.
 pub fn noise_with_sky(w: u32, h: u32, layers: u32) -> LayeredImage {
     let mut img = noise_image(w, h, layers, varied);
-    img.counts.iter_mut().step_by(23).for_each(|n| *n = 0);
+    let l = layers as usize;
+    for p in (0..img.counts.len()).step_by(23) {
+        img.counts[p] = 1;
+        img.fragments[p * l] = Fragment { color: varied(p as u32), alpha: 1.0, depth: f32::INFINITY };
+    }
     img
 }
 
@@ -169,11 +173,15 @@ pub fn cases() -> Vec<Case> {
         Case { name: "coc-beyond-rings", expectation: "CoC radius ~1000 px, far beyond every window: capped, finite", expect: Expect::Finite, build: || (noise_image(64, 48, 2, varied), test_lens(1.0)) },
         Case {
             name: "sky-at-infinity",
-            expectation: "half the image is sky (no fragment, depth +inf): finite, the sky blends as black",
+            expectation: "half the image is a black sky (the background at depth +inf), the other half has no data (no fragment): finite",
             expect: Expect::Finite,
             build: || {
                 let mut img = noise_image(48, 32, 2, varied);
                 for p in 0..(48 * 16) {
+                    img.counts[p] = 1;
+                    img.fragments[2 * p] = Fragment { color: [0.0; 3], alpha: 1.0, depth: f32::INFINITY };
+                }
+                for p in 48 * 16..48 * 24 {
                     img.counts[p] = 0;
                 }
                 (img, test_lens(0.02))
@@ -189,7 +197,8 @@ pub fn cases() -> Vec<Case> {
             name: "near-object-over-sky",
             expectation: "a blurred near square over a flat coloured sky at +inf: finite, and the sky keeps its colour within 1e-3 in the image's corners, beyond the blur",
             expect: Expect::FlatCorners(1e-3),
-            build: || (sky_over(noise_image(48, 48, 1, varied), |i| (16..32).contains(&(i % 48)) && (16..32).contains(&(i / 48))), test_lens(0.04)),
+            // The square's CoC radius is 19 px; the corners lie at least 32 px from it.
+            build: || (sky_over(noise_image(96, 96, 1, varied), |i| (40..56).contains(&(i % 96)) && (40..56).contains(&(i / 96))), test_lens(0.04)),
         },
         Case {
             name: "equal-depths",

@@ -95,11 +95,12 @@ fn peeling_finds_every_surface_beyond_the_umbra_in_order() {
     let out = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.2, 5.0), 0.01, &all_layers()).unwrap();
     let c = centre(&out.image.layers);
     let depths: Vec<f32> = c.iter().map(|f| f.0).collect();
-    assert_eq!(c.len(), 3, "blue, green and red behind the centre, got depths {depths:?}");
-    for (got, want) in depths.iter().zip([2.0, 5.0, 10.0]) {
-        assert!((got - want).abs() < 1e-4 * want, "depths {depths:?}");
+    assert_eq!(c.len(), 4, "blue, green and red behind the centre, then the background, got depths {depths:?}");
+    for (got, want) in depths.iter().zip([2.0, 5.0, 10.0, f32::INFINITY]) {
+        assert!(*got == want || (got - want).abs() < 1e-4 * want, "depths {depths:?}");
     }
-    assert_eq!(c.iter().map(|f| f.1).collect::<Vec<_>>(), [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]]);
+    // The wall's umbra ends before infinity, so the (black) background is the last layer.
+    assert_eq!(c.iter().map(|f| f.1).collect::<Vec<_>>(), [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0; 3]]);
     // The disocclusion buffer keeps hidden layers only near the squares' rims (a smaller aperture,
     // so the rims are a few pixels wide): the centre keeps one.
     let masked = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.05, 5.0), 0.01, &LayerOptions { guard_band: dof::scene::GuardBand::Off, ..LayerOptions::default() }).unwrap();
@@ -116,7 +117,8 @@ fn back_faces_are_culled_unless_double_sided() {
         // Wound clockwise seen from the camera: its front faces away.
         m.quad(Vec3::new(-1.0, -1.0, -3.0), Vec3::new(0.0, 2.0, 0.0), Vec3::new(2.0, 0.0, 0.0), mat);
         let out = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).unwrap();
-        assert_eq!(centre(&out.image.layers).len(), seen as usize, "flags {flags}");
+        let surfaces = centre(&out.image.layers).iter().filter(|f| f.0.is_finite()).count();
+        assert_eq!(surfaces, seen as usize, "flags {flags}");
     }
 }
 
@@ -251,7 +253,8 @@ fn stiff_geometry_rasterises_as_stated() {
         for y in 0..H {
             let ndc_y = 2.0 * (y as f32 + 0.5) / H as f32 - 1.0;
             for x in 0..W {
-                let front = image.pixel(x, y).first().map(|f| f.depth);
+                // The nearest surface (the background, at +inf, is no surface).
+                let front = image.pixel(x, y).first().map(|f| f.depth).filter(|d| d.is_finite());
                 if ndc_y > 0.0 {
                     let want = 1.0 / (frame.tan_half_fov * ndc_y);
                     let got = front.unwrap_or_else(|| panic!("{name}: floor missing at ({x}, {y})"));

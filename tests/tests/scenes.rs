@@ -21,8 +21,9 @@ fn assert_front_to_back(name: &str, layers: &LayeredImage) {
         for x in 0..layers.width {
             let frags = layers.pixel(x, y);
             assert!(frags.len() <= layers.max_layers as usize);
-            for f in frags {
-                assert!(f.depth > 0.0 && f.depth.is_finite(), "{name} ({x}, {y}): depth {}", f.depth);
+            for (i, f) in frags.iter().enumerate() {
+                // The background (+inf) only as the last fragment.
+                assert!(f.depth > 0.0 && (f.depth.is_finite() || i + 1 == frags.len()), "{name} ({x}, {y}): depth {}", f.depth);
                 assert!(f.color.iter().all(|c| c.is_finite() && *c >= 0.0), "{name} ({x}, {y}): colour {:?}", f.color);
                 assert_eq!(f.alpha, 1.0);
             }

@@ -110,18 +110,23 @@ pub fn export_metadata(name: &str, camera: &Camera, lens: &ThinLens, export: &Mi
         "width": camera.width,
         "height": camera.height,
         "yfov_degrees": (camera.yfov_radians as f64).to_degrees(),
-        "eye": camera.eye.to_array(),
-        "target": camera.target.to_array(),
-        "up": camera.up.to_array(),
+        "eye": camera.eye.to_array().map(short),
+        "target": camera.target.to_array().map(short),
+        "up": camera.up.to_array().map(short),
         "lens": {
-            "focal_length": lens.focal_length,
-            "aperture_radius": lens.aperture_radius,
-            "focus_distance": lens.focus_distance,
-            "pixels_per_unit": lens.pixels_per_unit,
+            "focal_length": short(lens.focal_length),
+            "aperture_radius": short(lens.aperture_radius),
+            "focus_distance": short(lens.focus_distance),
+            "pixels_per_unit": short(lens.pixels_per_unit),
             "coc_model": "coc_px(z) = far_limit_px * |1 - focus_distance / z|",
-            "far_limit_px": lens.far_limit_px(),
+            "far_limit_px": short(lens.far_limit_px()),
         },
     })
+}
+
+/// An `f32` as the `f64` with the same shortest decimal text (0.045, not 0.04500000178813934).
+fn short(v: f32) -> f64 {
+    num(v).parse().unwrap_or(v as f64)
 }
 
 /// The camera and lens as the export needs them.
@@ -392,8 +397,8 @@ fn plane_reach(scene: &Scene, view: &View) -> Vec<Reach> {
 fn write_xml(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &MitsubaOptions, shapes: &[Out], far_clip: f32) -> String {
     let mut x = Xml::default();
     x.out.push_str("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n");
-    x.comment("Written by `dof scenes --export-mitsuba`: emissive-only surfaces (black BSDF, area emitter with the");
-    x.comment("analytic model's radiance), the reference's thin lens, box pixel filter. See host/src/scene/mitsuba_export.rs.");
+    x.comment("Exported by dof (host/src/scene/mitsuba_export.rs): emissive-only surfaces (black BSDF, area emitter");
+    x.comment("with the analytic model's radiance), the exact reference's thin lens, a box pixel filter.");
     x.open("scene", &[("version", "3.0.0".into())]);
     x.leaf("default", &[("name", "spp".into()), ("value", options.spp.to_string())]);
     x.open("integrator", &[("type", "path".into())]);

@@ -7,7 +7,7 @@ use dof::layers::RgbImage;
 use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
 use dof::scene::{
     self, Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, MeshScene, MultiLayerImage, ReferenceOptions, Vec3,
-    MAX_GUARD_BAND, load_gltf, raycast_layers,
+    GuardBand, MAX_GUARD_BAND, load_gltf, raycast_layers,
 };
 use dof::layers::{LayeredImage, crop_plane};
 use dof::methods::bokeh::{BokehOptions, bokeh};
@@ -102,6 +102,10 @@ pub struct RenderArgs {
     /// Layered DoF: layers per doubling of the CoC (1 to 4).
     #[arg(long, default_value_t = 2)]
     layers_per_doubling: u32,
+    /// The margin rendered beyond the frame for built-in and glTF scenes: `auto` (the largest CoC
+    /// radius that can reach into the frame, at most 96 px), `off`, or a width in pixels.
+    #[arg(long, default_value = "auto", value_parser = parse_guard_band)]
+    guard_band: GuardBand,
     /// Fragments per pixel in the multi-layer image.
     #[arg(long, default_value_t = 4)]
     layers: u32,
@@ -140,6 +144,18 @@ fn parse_vec3(s: &str) -> Result<Vec3, String> {
     match parts[..] {
         [x, y, z] if parts.iter().all(|v| v.is_finite()) => Ok(Vec3::new(x, y, z)),
         _ => Err(format!("expected three finite numbers `x,y,z`, got `{s}`")),
+    }
+}
+
+fn parse_guard_band(s: &str) -> Result<GuardBand, String> {
+    match s {
+        "auto" => Ok(GuardBand::Auto),
+        "off" => Ok(GuardBand::Off),
+        _ => match s.parse::<u32>() {
+            Ok(px) if px <= MAX_GUARD_BAND => Ok(GuardBand::Pixels(px)),
+            Ok(px) => Err(format!("a guard band of {px} px is beyond the largest, {MAX_GUARD_BAND} px")),
+            Err(_) => Err(format!("expected `auto`, `off` or a width in pixels, got `{s}`")),
+        },
     }
 }
 
@@ -338,7 +354,7 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         builtin.name, camera.width, camera.height, lens.focal_length * 1e3, lens.aperture_radius * 1e3,
         lens.focus_distance, lens.far_limit_px()
     );
-    let options = LayerOptions { max_layers: args.layers, ..Default::default() };
+    let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, ..Default::default() };
     let layered = raycast_layers(&builtin.scene, &camera, &lens, &options)?;
     match args.method {
         Method::Pinhole => {
@@ -431,7 +447,7 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     );
     let mut b = backend(args.backend)?;
     let raster = mesh.raster();
-    let options = LayerOptions { max_layers: args.layers, ..Default::default() };
+    let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, ..Default::default() };
     let peeled = peel_layers(b.as_mut(), &raster, &camera, &lens, near, &options)?;
     let ms: f64 = peeled.times.iter().map(|t| t.ms).sum();
     println!("depth peeling on {}: {} passes, {ms:.2} ms", b.device_name(), peeled.passes);

@@ -14,7 +14,8 @@
 //!   `rectangle`'s `to_world`), while analytic quads and planes are two-sided: each is turned
 //!   towards the side the lens sees. A surface whose plane cuts the lens, or a closed shape the
 //!   lens touches, is seen from both sides: skipped.
-//! - Spheres are `sphere`s, quads and box faces `rectangle`s, an infinite plane a square
+//! - Spheres are `sphere`s, quads and box faces `rectangle`s (an oblique quad as a sheared one,
+//!   which Mitsuba 3.9 intersects exactly; early 3.x releases refuse shear), an infinite plane a square
 //!   `rectangle` centred under the eye and twice as wide as the farthest point of it that any lens
 //!   ray reaches first (sampled at every pixel corner from the lens centre and 8 rim points). A plane
 //!   whose horizon is in view becomes a square [`HORIZON_FACTOR`] times its distance from the eye
@@ -137,11 +138,12 @@ struct View {
 }
 
 /// Emitted radiance over a rectangle: one colour, or a checker of two over its `uv` (Mitsuba's
-/// `checkerboard`: `color0` where the fractional parts of `to_uv(uv)` lie on the same side of 1/2).
+/// `checkerboard`: `color0` where the fractional parts of `uv·scale + offset` lie on the same side
+/// of 1/2).
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Radiance {
     Rgb([f32; 3]),
-    Checker { color0: [f32; 3], color1: [f32; 3], to_uv: [[f32; 3]; 2] },
+    Checker { color0: [f32; 3], color1: [f32; 3], scale: [f32; 2], offset: [f32; 2] },
 }
 
 /// A Mitsuba shape: the sphere, or the rectangle `centre + s·half_u + t·half_v`, `s, t` in
@@ -295,15 +297,20 @@ fn face_radiance(scene: &Scene, prim: &Primitive, normal: Vec3, corner: Vec3, en
     Ok(match albedo {
         Albedo::Solid(a) => Radiance::Rgb(times(a)),
         Albedo::Checker { a, b, cell } => {
-            // Checker coordinates are affine over a flat face: three points fix the map from the
-            // rectangle's uv to them, scaled so that one cell is half a period of Mitsuba's texture.
+            // The checker coordinates at the rectangle's uv origin and at the ends of its two uv
+            // axes, over two cells (one period of Mitsuba's texture). The rectangle's axes are the
+            // face's coordinate axes, so uv maps to them by a scale and an offset.
             let at = |p: Vec3| {
                 let (u, v) = surface_coords(&prim.shape, p, normal);
                 [u as f64 / (2.0 * cell as f64), v as f64 / (2.0 * cell as f64)]
             };
             let (o, eu, ev) = (at(corner), at(ends[0]), at(ends[1]));
-            let row = |k: usize| [(eu[k] - o[k]) as f32, (ev[k] - o[k]) as f32, o[k] as f32];
-            Radiance::Checker { color0: times(a), color1: times(b), to_uv: [row(0), row(1)] }
+            let (su, sv) = (eu[0] - o[0], ev[1] - o[1]);
+            let skew = (eu[1] - o[1]).abs().max((ev[0] - o[0]).abs());
+            if !(skew <= 1e-6 * su.abs().max(sv.abs())) {
+                return Err(Error::InvalidArgument(format!("checker axes not along the face's edges (skew {skew})")));
+            }
+            Radiance::Checker { color0: times(a), color1: times(b), scale: [su as f32, sv as f32], offset: [o[0] as f32, o[1] as f32] }
         }
     })
 }
@@ -473,13 +480,14 @@ fn emitter(x: &mut Xml, radiance: &Radiance) {
     x.open("emitter", &[("type", "area".into())]);
     match *radiance {
         Radiance::Rgb(c) => x.rgb("radiance", c),
-        Radiance::Checker { color0, color1, to_uv } => {
+        Radiance::Checker { color0, color1, scale, offset } => {
             x.open("texture", &[("type", "checkerboard".into()), ("name", "radiance".into())]);
             x.rgb("color0", color0);
             x.rgb("color1", color1);
+            // Scale, then translate: Mitsuba 3.9 drops the translation of a 3x3 `matrix` here.
             x.open("transform", &[("name", "to_uv".into())]);
-            let m: Vec<String> = to_uv.iter().flatten().map(|&v| num(v)).chain(["0", "0", "1"].map(String::from)).collect();
-            x.leaf("matrix", &[("value", m.join(" "))]);
+            x.leaf("scale", &[("x", num(scale[0])), ("y", num(scale[1]))]);
+            x.leaf("translate", &[("x", num(offset[0])), ("y", num(offset[1]))]);
             x.close("transform");
             x.close("texture");
         }
@@ -668,6 +676,40 @@ mod tests {
         assert_eq!(hit.primitive as usize, i);
         let rgb = b.scene.shade(&ray, &hit);
         assert!(s.xml.contains(&format!("value=\"{}, {}, {}\"", rgb[0], rgb[1], rgb[2])), "front face radiance {rgb:?}");
+    }
+
+    #[test]
+    fn checkers_land_on_the_analytic_cells() {
+        // `columns`' floor: Mitsuba's rule (color0 where the fractional parts of uv·scale + offset
+        // lie on the same side of 1/2) on the exported square against `shade` at the same point.
+        let b = builtin("columns").unwrap().with_size(64, 48);
+        let lens = b.thin_lens().unwrap();
+        let view = View { frame: b.camera.frame().unwrap(), radius: lens.aperture_radius, focus: lens.focus_distance };
+        let reach = plane_reach(&b.scene, &view);
+        let prim = b.scene.primitives()[0];
+        let shapes = export_primitive(&b.scene, &view, 0, &prim, reach[0], &mut Vec::new()).unwrap().unwrap();
+        let Out::Rect { center, half_u, half_v, radiance: Radiance::Checker { color0, color1, scale, offset }, .. } = shapes[0] else {
+            panic!("the floor is a checkered rectangle")
+        };
+        let mut checked = 0;
+        for i in 0..400 {
+            let p = Vec3::new(-6.0 + 0.5848 * (i % 20) as f32, 0.0, -0.3 - 1.4672 * (i / 20) as f32);
+            let near_edge = |v: f32| (v - v.round()).abs() < 1e-3;
+            if near_edge(p.x) || near_edge(p.z) {
+                continue; // on a cell boundary, where rounding may pick either side
+            }
+            let ray = Ray { origin: b.camera.eye, direction: (p - b.camera.eye) / (p - b.camera.eye).dot(view.frame.forward) };
+            let Some(hit) = b.scene.first_hit(&ray, 0.0).filter(|h| h.primitive == 0) else { continue };
+            let local = [(p - center).dot(half_u) / half_u.length_squared(), (p - center).dot(half_v) / half_v.length_squared()];
+            let side = |k: usize| {
+                let t = (0.5 * local[k] + 0.5) * scale[k] + offset[k];
+                t - t.floor() > 0.5
+            };
+            let expected = if side(0) == side(1) { color0 } else { color1 };
+            assert_eq!(b.scene.shade(&ray, &hit), expected, "at {p}");
+            checked += 1;
+        }
+        assert!(checked > 100, "{checked} points on the visible floor");
     }
 
     #[test]

@@ -167,3 +167,25 @@ fn bad_gltf_input_is_reported() {
     assert_fails_with(&["render", "--scene", s, "--width", "0", "--method", "pinhole"], "image size must be positive");
     assert_fails_with(&["render", "--scene", s, "--width", "20000", "--height", "2", "--backend", "vulkan", "--method", "pinhole"], "framebuffer");
 }
+
+/// The background and the guard band as a user sets them: a coloured sky renders on every path, a
+/// guard band beyond its bound or a negative background is refused with a message.
+#[test]
+fn background_and_guard_band_flags() {
+    let out = temp("fence-sky.exr");
+    for band in ["auto", "off", "8"] {
+        let o = dof(&["render", "--scene", "fence", "--width", "64", "--height", "36", "--method", "multilayer", "--background", "1,0.5,0",
+            "--guard-band", band, "--out", out.to_str().unwrap()]);
+        assert!(o.status.success(), "--guard-band {band}: {}", String::from_utf8_lossy(&o.stderr));
+    }
+    assert_fails_with(&["render", "--scene", "fence", "--background", "-1,0,0", "--samples", "1"], "background colour");
+    assert_fails_with(&["render", "--scene", "fence", "--guard-band", "500", "--samples", "1"], "guard band");
+    assert_fails_with(&["render", "--scene", "fence", "--guard-band", "wide", "--samples", "1"], "auto");
+    // An EXR carries its own background (its colour at depth +inf).
+    assert_fails_with(&["render", "--scene", out.to_str().unwrap(), "--method", "gather", "--focus", "20", "--aperture-radius", "0.045",
+        "--background", "0,0,0"], "depth +inf");
+    let o = dof(&["render", "--scene", out.to_str().unwrap(), "--method", "gather", "--focus", "20", "--aperture-radius", "0.045", "--out",
+        temp("fence-sky-gather.exr").to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("edge policy"), "the EXR's edges are extended: {}", String::from_utf8_lossy(&o.stdout));
+}

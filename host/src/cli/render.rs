@@ -129,7 +129,7 @@ pub struct RenderArgs {
     /// a surface at infinite depth that every method blends like any other. Built-in and glTF
     /// scenes; default the scene's own (black, or the sky of `fence` and `edges`; a glTF scene's
     /// extras key `dof_background`). An EXR carries its background as the colour at depth +inf.
-    #[arg(long, value_parser = parse_vec3)]
+    #[arg(long, value_parser = parse_vec3, allow_hyphen_values = true)]
     background: Option<Vec3>,
     /// Exposure multiplier of the PNG preview.
     #[arg(long, default_value_t = 1.0)]

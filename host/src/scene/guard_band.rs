@@ -180,3 +180,79 @@ impl GuardBand {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::analytic::{Lighting, Material, Primitive};
+
+    fn camera() -> Camera {
+        Camera::look_at(Vec3::ZERO, -Vec3::Z, 40f32.to_radians(), 160, 90)
+    }
+
+    fn lens() -> ThinLens {
+        // Far-field CoC 2 px; a point at depth 1 gets 2·(10/1 − 1) = 18 px.
+        ThinLens { focal_length: 0.05, aperture_radius: 0.0, focus_distance: 10.0, pixels_per_unit: 1.0 }.with_far_limit(2.0)
+    }
+
+    trait FarLimit {
+        fn with_far_limit(self, px: f32) -> Self;
+    }
+    impl FarLimit for ThinLens {
+        fn with_far_limit(self, px: f32) -> Self {
+            let unit = ThinLens { aperture_radius: 1.0, ..self }.far_limit_px();
+            ThinLens { aperture_radius: px / unit, ..self }
+        }
+    }
+
+    fn square(centre: Vec3, half: f32) -> Primitive {
+        let shape = Shape::Quad { corner: centre - Vec3::new(half, half, 0.0), edge_u: Vec3::X * 2.0 * half, edge_v: Vec3::Y * 2.0 * half };
+        Primitive { shape, material: Material::Emissive([1.0; 3]) }
+    }
+
+    fn margin(prims: Vec<Primitive>) -> u32 {
+        let scene = Scene::new(prims, Lighting::default()).unwrap();
+        auto_margin(&scene, &camera(), &lens(), 1e-3).unwrap()
+    }
+
+    #[test]
+    fn overscan_keeps_the_pixel_pitch_and_centre() {
+        let (frame, wide) = (camera().frame().unwrap(), camera().overscan(7).frame().unwrap());
+        assert_eq!((wide.width, wide.height), (174, 104));
+        for (x, y) in [(0.0, 0.0), (80.5, 45.5), (160.0, 90.0), (3.25, 77.0)] {
+            let (a, b) = (frame.direction(x, y), wide.direction(x + 7.0, y + 7.0));
+            assert!((a - b).length() < 1e-5, "({x}, {y}): {a} vs {b}");
+        }
+        assert_eq!(camera().overscan(0), camera());
+    }
+
+    #[test]
+    fn the_band_is_the_nearest_blur_that_reaches_the_frame() {
+        // Only the background: its radius, 1 px.
+        assert_eq!(margin(vec![]), 1);
+        // A near square in view at depth 1: CoC 18 px, radius 9.
+        assert_eq!(margin(vec![square(Vec3::new(0.0, 0.0, -1.0), 0.1)]), 9);
+        // The same square far beyond the left edge (and beyond the widened view) adds nothing.
+        assert_eq!(margin(vec![square(Vec3::new(-50.0, 0.0, -1.0), 0.1)]), 1);
+        // Behind the camera: nothing.
+        assert_eq!(margin(vec![square(Vec3::new(0.0, 0.0, 1.0), 0.1)]), 1);
+        // A plane through the eye (a floor under the camera's feet would be one) takes the cap.
+        let floor = Primitive { shape: Shape::Plane { point: Vec3::ZERO, normal: Vec3::Y }, material: Material::Emissive([1.0; 3]) };
+        assert_eq!(margin(vec![floor]), MAX_GUARD_BAND);
+        // A floor tile under the eye, reaching behind it: clipped to the widened view it starts
+        // at depth 0.1 / 1.14 (CoC radius 113 px), so the band takes the cap.
+        let tile = Shape::Quad { corner: Vec3::new(-0.5, -0.1, 0.5), edge_u: Vec3::X, edge_v: -Vec3::Z };
+        assert_eq!(margin(vec![Primitive { shape: tile, material: Material::Emissive([1.0; 3]) }]), MAX_GUARD_BAND);
+        // The same tile 1.5 below the eye: nearest in view at depth 1.32, CoC radius 6.6 px.
+        let low = Shape::Quad { corner: Vec3::new(-0.5, -1.5, 0.5), edge_u: Vec3::X, edge_v: -Vec3::Z * 3.0 };
+        assert_eq!(margin(vec![Primitive { shape: low, material: Material::Emissive([1.0; 3]) }]), 7);
+    }
+
+    #[test]
+    fn fixed_bands_are_bounded() {
+        assert_eq!(GuardBand::Off.resolve(|| Ok(5)).unwrap(), 0);
+        assert_eq!(GuardBand::Auto.resolve(|| Ok(5)).unwrap(), 5);
+        assert_eq!(GuardBand::Pixels(12).resolve(|| Ok(5)).unwrap(), 12);
+        assert!(matches!(GuardBand::Pixels(MAX_GUARD_BAND + 1).resolve(|| Ok(5)), Err(crate::Error::TooLarge { .. })));
+    }
+}

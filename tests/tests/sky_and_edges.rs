@@ -64,34 +64,36 @@ fn measure(name: &str, band: GuardBand) -> (Setup, MultiLayerImage, [ImageError;
 /// Out-of-focus fence bars over a far wall with open sky above and below: the sky is a layer at
 /// infinite depth, so the bars' blurred ends show it through them. Expected: multi-layer splatting
 /// beats gather and single-layer splatting in the partial-occlusion region by a wide margin.
+/// Measured in the region: multi 37.05 dB, gather 23.71, single 23.45.
 #[test]
 fn fence_over_open_sky() {
     let (s, ml, [gather, single, multi]) = measure("fence", GuardBand::Auto);
     let bars = s.lens.coc_radius_px(1.5).ceil() as u32;
     assert_eq!(ml.margin, bars, "the bars' CoC radius sets the band");
-    assert!(region(&multi) >= 30.0, "multi-layer in the region: {:.2} dB", region(&multi));
-    assert!(region(&multi) >= region(&gather) + 3.0);
-    assert!(region(&multi) >= region(&single) + 3.0);
+    assert!(region(&multi) >= 36.5, "multi-layer in the region: {:.2} dB", region(&multi));
+    assert!(region(&multi) >= region(&gather) + 13.0);
+    assert!(region(&multi) >= region(&single) + 13.0);
 }
 
 /// Near objects crossing all four edges of the frame: with the guard band their blur reaches into
 /// the frame from beyond it. Expected: multi-layer beats gather and single-layer in the region, and
-/// the guard band is what makes the difference at the edges.
+/// the guard band is what makes the difference at the edges. Measured: in the region multi 32.66 dB,
+/// gather 27.01, single 27.02; full frame 36.54 dB with the band, 32.85 without.
 #[test]
 fn objects_crossing_the_frame_edges() {
     let (s, ml, [gather, single, multi]) = measure("edges", GuardBand::Auto);
     let nearest = s.lens.coc_radius_px(1.2).ceil() as u32;
     assert_eq!(ml.margin, nearest, "the near objects' CoC radius sets the band");
-    assert!(region(&multi) >= 30.0, "multi-layer in the region: {:.2} dB", region(&multi));
-    assert!(region(&multi) >= region(&gather) + 3.0);
-    assert!(region(&multi) >= region(&single) + 3.0);
+    assert!(region(&multi) >= 32.0, "multi-layer in the region: {:.2} dB", region(&multi));
+    assert!(region(&multi) >= region(&gather) + 5.3);
+    assert!(region(&multi) >= region(&single) + 5.3);
     // Without the band the frame's edge loses the blur that comes from beyond it.
     let unbanded = layers("edges", &s.lens, GuardBand::Off);
     assert_eq!(unbanded.margin, 0);
     let [_, _, m0] = run(&mut CpuBackend::new(), &unbanded, s.lens);
     let e0 = compare(&m0, &s.reference, Some(&unbanded.mask)).unwrap();
     eprintln!("edges without the guard band: multi {:.2} dB ({:.2} in the region)", e0.psnr_db, region(&e0));
-    assert!(multi.psnr_db >= e0.psnr_db + 2.0, "the guard band gains {:.2} dB full frame", multi.psnr_db - e0.psnr_db);
+    assert!(multi.psnr_db >= e0.psnr_db + 3.4, "the guard band gains {:.2} dB full frame", multi.psnr_db - e0.psnr_db);
 }
 
 /// The sky's own colour survives every method: far from any object a sky pixel keeps the
@@ -187,5 +189,5 @@ fn the_exr_edge_policy_on_objects_crossing_the_frame_edges() {
     }
     // Here the objects go on beyond the edges as they cross them, so extending the edge pixels is
     // close to the truth: the policy recovers what the band gives multi-layer splatting.
-    assert!(policy[2] >= none[2] + 3.0, "multi-layer: {:.2} dB with the policy, {:.2} without", policy[2], none[2]);
+    assert!(policy[2] >= none[2] + 3.4, "multi-layer: {:.2} dB with the policy, {:.2} without", policy[2], none[2]);
 }

@@ -189,3 +189,45 @@ fn background_and_guard_band_flags() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(String::from_utf8_lossy(&o.stdout).contains("edge policy"), "the EXR's edges are extended: {}", String::from_utf8_lossy(&o.stdout));
 }
+
+/// Bad flags and outputs are refused before any work, naming the flag and the bound: outputs that
+/// would overwrite an input, unwritable places, sizes beyond a documented bound.
+#[test]
+fn flags_and_outputs_are_checked_before_the_work() {
+    // An EXR to read, and an aperture PNG to keep.
+    let input = temp("input.exr");
+    let o = dof(&["render", "--width", "32", "--height", "18", "--method", "pinhole", "--out", input.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let aperture_png = input.with_extension("png");
+    let before = std::fs::read(&input).unwrap();
+    assert_fails_with(&["render", "--scene", input.to_str().unwrap(), "--method", "pinhole", "--out", input.to_str().unwrap()], "would overwrite the input");
+    assert_eq!(std::fs::read(&input).unwrap(), before, "the input is untouched");
+    // The PNG preview of --out would land on the aperture image.
+    assert_fails_with(&["render", "--method", "multilayer", "--aperture", aperture_png.to_str().unwrap(), "--out", input.to_str().unwrap()], "would overwrite the input");
+    assert_fails_with(&["render", "--exposure", "0", "--samples", "1"], "--exposure must be a positive number");
+    assert_fails_with(&["render", "--exposure", "-1", "--samples", "1"], "--exposure must be a positive number");
+    assert_fails_with(&["render", "--samples", "1000000000"], "must lie between 1 and 65536");
+    assert_fails_with(&["render", "--samples", "1", "--out", "/proc/dof-cannot-write-here/x.exr"], "cannot");
+    assert_fails_with(&["bench", "sort", "--tiles", "4000000000"], "--tiles must lie between 1 and 1048576");
+    let file = temp("not-a-folder");
+    std::fs::write(&file, b"x").unwrap();
+    assert_fails_with(&["eval", "--quick", "--out", file.to_str().unwrap()], "is a file");
+    // Negative coordinates need no `=`.
+    let o = dof(&["render", "--width", "32", "--height", "18", "--method", "pinhole", "--eye", "-0.1,0.2,0.5", "--target", "0,0,-1", "--out",
+        temp("negative-eye.exr").to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+/// A glTF view whose centre sees nothing needs `--focus`, and then renders (the background).
+#[test]
+fn focus_is_honoured_when_the_view_centre_sees_nothing() {
+    let scene = glb("fence", "fence-focus.glb");
+    let s = scene.to_str().unwrap();
+    let away = ["render", "--scene", s, "--eye", "0,0,0", "--target", "0,0,1", "--width", "48", "--height", "27", "--method", "multilayer"];
+    assert_fails_with(&away, "--focus");
+    let out = temp("fence-away.exr");
+    let mut args = away.to_vec();
+    args.extend(["--focus", "5", "--out", out.to_str().unwrap()]);
+    let o = dof(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}

@@ -52,7 +52,19 @@ fn std_sort_ms(input: &SortInput, runs: usize) -> f64 {
     median(times)
 }
 
+/// Most tile lists `bench sort` makes: 2^20, a 16384x16384 image in 16x16 tiles (about 2 GiB of
+/// keys at the longest lists).
+const MAX_TILES: usize = 1 << 20;
+/// Longest list it makes: 2^20 entries.
+const MAX_LIST: u32 = 1 << 20;
+
 fn sort(args: &SortArgs) -> anyhow::Result<()> {
+    if args.tiles == 0 || args.tiles > MAX_TILES {
+        anyhow::bail!("--tiles must lie between 1 and {MAX_TILES}, got {}", args.tiles);
+    }
+    if args.max_len == 0 || args.max_len > MAX_LIST {
+        anyhow::bail!("--max-len must lie between 1 and {MAX_LIST}, got {}", args.max_len);
+    }
     let input = workload::tile_lists(args.tiles, args.max_len, args.seed);
     let n = input.keys.len();
     let std_ms = std_sort_ms(&input, args.runs);

@@ -51,6 +51,11 @@ fn sweep_targets(args: &EvalArgs) -> anyhow::Result<Vec<f64>> {
 }
 
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
+    // Before the long run: the output must be a folder that can be made.
+    if args.out.exists() && !args.out.is_dir() {
+        anyhow::bail!("--out {} is a file; name a folder for the report and plots", args.out.display());
+    }
+    std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create {}", args.out.display()))?;
     let scenes = if args.scenes.is_empty() {
         dof::scene::builtin_names().iter().map(|s| s.to_string()).collect()
     } else {

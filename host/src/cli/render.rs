@@ -76,14 +76,15 @@ pub struct RenderArgs {
     #[arg(long, default_value_t = 24.0)]
     sensor_height: f32,
     /// Camera position, target and vertical field of view in degrees (override the scene's camera).
-    #[arg(long, value_parser = parse_vec3)]
+    #[arg(long, value_parser = parse_vec3, allow_hyphen_values = true)]
     eye: Option<Vec3>,
-    #[arg(long, value_parser = parse_vec3)]
+    #[arg(long, value_parser = parse_vec3, allow_hyphen_values = true)]
     target: Option<Vec3>,
     #[arg(long, allow_negative_numbers = true)]
     yfov: Option<f32>,
     /// Samples per pixel: of the reference (default: raised until the noise is within 0.5 dB of
-    /// converged) or rays of `raytrace` (default 16).
+    /// converged), renders of the accumulation buffer (default 256) or rays of `raytrace` (default
+    /// 16); at most 65536.
     #[arg(long, visible_alias = "spp")]
     samples: Option<u32>,
     /// Splatting and bokeh sprites: the aperture shape, `circle`, `blades:N[:ROTATION_DEGREES[:CURVATURE]]`,
@@ -131,8 +132,8 @@ pub struct RenderArgs {
     /// extras key `dof_background`). An EXR carries its background as the colour at depth +inf.
     #[arg(long, value_parser = parse_vec3, allow_hyphen_values = true)]
     background: Option<Vec3>,
-    /// Exposure multiplier of the PNG preview.
-    #[arg(long, default_value_t = 1.0)]
+    /// Exposure multiplier of the PNG preview (positive).
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     exposure: f32,
 }
 
@@ -159,10 +160,56 @@ fn parse_guard_band(s: &str) -> Result<GuardBand, String> {
     }
 }
 
+/// What can be checked before any work: the flags' ranges, and outputs that would overwrite an
+/// input (the scene file, the aperture image).
+fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
+    if !(args.exposure > 0.0 && args.exposure.is_finite()) {
+        bail!("--exposure must be a positive number, got {}", args.exposure);
+    }
+    if let Some(n) = args.samples.filter(|&n| n == 0 || n > MAX_SAMPLES) {
+        bail!("--samples/--spp (samples or rays per pixel) must lie between 1 and {MAX_SAMPLES}, got {n}");
+    }
+    let png = out.with_extension("png");
+    let inputs = [Some(Path::new(&args.scene)), Path::new(&args.aperture).extension().is_some().then(|| Path::new(&args.aperture))];
+    for input in inputs.into_iter().flatten() {
+        for (output, what) in [(out, "--out"), (png.as_path(), "the PNG preview beside --out")] {
+            if same_file(input, output) {
+                bail!("{what} ({}) would overwrite the input {}; choose another --out", output.display(), input.display());
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Whether two paths name the same file (compared canonically when both exist, else as written).
+fn same_file(a: &Path, b: &Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => a == b,
+    }
+}
+
+/// Fails now, not after the render, when `out` cannot be written: a probe file beside it is
+/// created and removed.
+fn check_writable(out: &Path) -> anyhow::Result<()> {
+    if out.is_dir() {
+        bail!("--out {} is a folder; name an .exr file", out.display());
+    }
+    let dir = out.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let probe = dir.join(format!(".dof-write-probe-{}", std::process::id()));
+    std::fs::File::create(&probe).with_context(|| format!("cannot write into {} (for --out {})", dir.display(), out.display()))?;
+    std::fs::remove_file(&probe).ok();
+    Ok(())
+}
+
 fn is_file_scene(scene: &str) -> bool {
     let lower = scene.to_ascii_lowercase();
     [".exr", ".gltf", ".glb"].iter().any(|ext| lower.ends_with(ext))
 }
+
+/// Most samples per pixel (`--samples`) any method takes: 65536 per pixel of a 640x360 reference is
+/// already hours of work on two cores.
+const MAX_SAMPLES: u32 = 1 << 16;
 
 pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
     let name = Path::new(&args.scene).file_stem().and_then(|s| s.to_str()).unwrap_or("scene").to_string();
@@ -171,9 +218,11 @@ pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
     if out.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() != Some("exr") {
         bail!("--out must name an .exr file (a PNG preview is written beside it), got {}", out.display());
     }
+    check_before_work(args, &out)?;
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
     }
+    check_writable(&out)?;
     if is_file_scene(&args.scene) {
         render_file(args, &out)
     } else {
@@ -473,15 +522,15 @@ fn gltf_view(args: &RenderArgs, mesh: &MeshScene) -> anyhow::Result<(Camera, Thi
         (Some(eye), Some(target)) => {
             let yfov = args.yfov.map(f32::to_radians).or(mesh.cameras.first().map(|c| c.yfov_radians)).unwrap_or(40f32.to_radians());
             let camera = Camera::look_at(eye, target, yfov, width, args.height.unwrap_or(width * 9 / 16));
-            let settings = mesh.default_lens(&camera)?;
+            let settings = mesh.lens_focused_at(&camera, args.focus)?;
             (camera, settings, None)
         }
         (None, None) if mesh.cameras.is_empty() => {
             bail!("{} has no camera: give --eye X,Y,Z --target X,Y,Z (and --yfov DEGREES, default 40)", args.scene)
         }
         (None, None) => {
-            let (camera, settings, near) = mesh.default_view(width, args.height)?;
-            (camera, settings, Some(near))
+            let (camera, near) = mesh.default_camera(width, args.height)?;
+            (camera, mesh.lens_focused_at(&camera, args.focus)?, Some(near))
         }
         _ => bail!("give both --eye X,Y,Z and --target X,Y,Z (or neither, to use the file's camera)"),
     };

@@ -121,13 +121,18 @@ impl MeshScene {
     /// and `height` high (default: the camera's aspect ratio, 16:9 when it has none), the near plane
     /// its `znear`, and [`MeshScene::default_lens`]. Errors when the file has no camera.
     pub fn default_view(&self, width: u32, height: Option<u32>) -> Result<(Camera, LensSettings, f32)> {
+        let (camera, near) = self.default_camera(width, height)?;
+        Ok((camera, self.default_lens(&camera)?, near))
+    }
+
+    /// The camera and near plane of [`MeshScene::default_view`], without its lens.
+    pub fn default_camera(&self, width: u32, height: Option<u32>) -> Result<(Camera, f32)> {
         let Some(c) = self.cameras.first() else {
             return Err(Error::Scene("the scene has no camera; give one (eye, target and vertical field of view)".into()));
         };
         let aspect = c.aspect_ratio.filter(|a| a.is_finite() && *a > 0.0).unwrap_or(16.0 / 9.0);
         let height = height.unwrap_or(((width as f32 / aspect).round() as u32).max(1));
-        let camera = c.camera(width, height)?;
-        Ok((camera, self.default_lens(&camera)?, c.znear))
+        Ok((c.camera(width, height)?, c.znear))
     }
 
     /// A lens for scenes that carry none: focused on what the image centre sees (the nearest
@@ -136,11 +141,17 @@ impl MeshScene {
     /// the scene's scale (a physical f/2.8 blurs a room-sized scene by a fraction of a pixel at
     /// these image sizes, which would leave nothing to compare).
     pub fn default_lens(&self, camera: &Camera) -> Result<LensSettings> {
+        self.lens_focused_at(camera, None)
+    }
+
+    /// [`MeshScene::default_lens`] focused at `focus` when given (the image centre need then see
+    /// nothing), else as that function finds it.
+    pub fn lens_focused_at(&self, camera: &Camera, focus: Option<f32>) -> Result<LensSettings> {
         let frame = camera.frame()?;
         let centre = self.bounds().map(|(lo, hi)| 0.5 * (lo + hi)).unwrap_or(camera.target);
-        let focus = self.first_hit(frame.eye, frame.forward).unwrap_or_else(|| frame.depth_of(centre));
+        let focus = focus.unwrap_or_else(|| self.first_hit(frame.eye, frame.forward).unwrap_or_else(|| frame.depth_of(centre)));
         if !(focus > 0.0 && focus.is_finite()) {
-            return Err(Error::Scene("the camera sees nothing to focus on; give the focus distance".into()));
+            return Err(Error::Scene("the camera sees nothing to focus on; give the focus distance (--focus)".into()));
         }
         Ok(LensSettings::with_aperture_radius(focus, 0.02 * focus * frame.tan_half_fov))
     }

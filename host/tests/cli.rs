@@ -212,6 +212,11 @@ fn flags_and_outputs_are_checked_before_the_work() {
     let file = temp("not-a-folder");
     std::fs::write(&file, b"x").unwrap();
     assert_fails_with(&["eval", "--quick", "--out", file.to_str().unwrap()], "is a file");
+    // Options a method would ignore are refused; --max-coc errors quote the diameter given.
+    assert_fails_with(&["render", "--method", "reference", "--aperture", "blades:6", "--samples", "1"], "--aperture blades:6");
+    assert_fails_with(&["render", "--method", "raytrace", "--max-coc", "20"], "--max-coc caps the blur");
+    assert_fails_with(&["render", "--method", "multilayer", "--max-coc", "0"], "got 0");
+    assert_fails_with(&["render", "--method", "gather", "--max-coc", "200"], "got 200");
     // Negative coordinates need no `=`.
     let o = dof(&["render", "--width", "32", "--height", "18", "--method", "pinhole", "--eye", "-0.1,0.2,0.5", "--target", "0,0,-1", "--out",
         temp("negative-eye.exr").to_str().unwrap()]);

@@ -163,6 +163,21 @@ fn parse_guard_band(s: &str) -> Result<GuardBand, String> {
 /// What can be checked before any work: the flags' ranges, and outputs that would overwrite an
 /// input (the scene file, the aperture image).
 fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
+    // Options a method would otherwise ignore.
+    if args.aperture != "circle" && !matches!(args.method, Method::Tiled | Method::Multilayer | Method::Bokeh) {
+        bail!("--aperture {} is supported by the splatting methods and bokeh sprites only; {:?} uses the circle", args.aperture, args.method);
+    }
+    if args.max_coc.is_some() && !matches!(args.method, Method::Gather | Method::Tiled | Method::Multilayer | Method::Layered) {
+        bail!("--max-coc caps the blur of gather, tiled, multilayer and layered only; {:?} does not take it", args.method);
+    }
+    match (args.max_coc, args.method) {
+        (Some(0), _) => bail!("--max-coc is a CoC diameter of at least 1 px, got 0"),
+        (Some(d), Method::Gather) if d.div_ceil(2) > dof::methods::gather::MAX_RADIUS => {
+            bail!("--max-coc for gather is at most {} px (its window of radius {} px), got {d}", 2 * dof::methods::gather::MAX_RADIUS, dof::methods::gather::MAX_RADIUS)
+        }
+        (Some(d), Method::Layered) if d > 1024 => bail!("--max-coc for layered is at most 1024 px, got {d}"),
+        _ => {}
+    }
     if !(args.exposure > 0.0 && args.exposure.is_finite()) {
         bail!("--exposure must be a positive number, got {}", args.exposure);
     }
@@ -308,9 +323,6 @@ fn edge_margin(layers: &LayeredImage, lens: &ThinLens) -> u32 {
 /// backend and prints what it did; `layers` extend `margin` pixels beyond the frame on every side.
 /// Returns the frame's image and its front layer's depth.
 fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) -> anyhow::Result<(RgbImage, Vec<f32>)> {
-    if args.aperture != "circle" && !matches!(args.method, Method::Tiled | Method::Multilayer | Method::Bokeh) {
-        bail!("--aperture {} is supported by the splatting methods and bokeh sprites only; {:?} uses the circle", args.aperture, args.method);
-    }
     let mut b = backend(args.backend)?;
     let (front, depth) = layers.front();
     let image = match args.method {
@@ -333,7 +345,10 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) 
             out.image
         }
         Method::Layered => {
-            let options = LayeredOptions { cascaded: !args.no_cascade, layers_per_doubling: args.layers_per_doubling, ..Default::default() };
+            let mut options = LayeredOptions { cascaded: !args.no_cascade, layers_per_doubling: args.layers_per_doubling, ..Default::default() };
+            if let Some(d) = args.max_coc {
+                options.max_coc = d as f32;
+            }
             let out = layered(b.as_mut(), layers, lens, &options)?;
             let ms: f64 = out.times.iter().map(|t| t.ms).sum();
             let p = &out.plan;

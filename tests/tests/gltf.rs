@@ -504,3 +504,157 @@ fn material_flags_and_samplers_follow_the_file() {
     // Two checker materials in `railing`, one image each: 8 texels.
     assert_eq!(m.texels.len(), 8);
 }
+
+// ---- references outside the .gltf file's folder, special files, lengths ----
+
+/// A fresh temporary folder holding `scene.gltf` (one triangle) whose buffer URI is `uri`;
+/// returns the folder, the .gltf path and the buffer's bytes.
+fn gltf_in_folder(uri: &str) -> (PathBuf, PathBuf, Vec<u8>) {
+    let dir = temp_path("folder");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (mut doc, bin) = document(&TRIANGLE, None, None, 4, json!([{ "mesh": 0 }]));
+    doc["buffers"][0]["uri"] = json!(uri);
+    let path = dir.join("scene.gltf");
+    std::fs::write(&path, serde_json::to_vec(&doc).unwrap()).unwrap();
+    (dir, path, bin)
+}
+
+/// Loads `path` on a thread and fails, rather than hangs, if it takes more than 20 s (a FIFO).
+fn load_with_timeout(path: &std::path::Path) -> dof::error::Result<MeshScene> {
+    let (tx, rx) = std::sync::mpsc::channel();
+    let p = path.to_path_buf();
+    std::thread::spawn(move || {
+        let _ = tx.send(load_gltf(&p));
+    });
+    rx.recv_timeout(std::time::Duration::from_secs(20)).unwrap_or_else(|_| panic!("loading {} hung", path.display()))
+}
+
+const STAY_INSIDE: &str = "must stay inside the folder of the .gltf file";
+
+/// Expectation: a buffer URI that leaves the folder by `..`, an absolute path (to a real file and
+/// to /etc/passwd), a `file://` URI to /etc/passwd, `/dev/zero`, and an image URI leaving the
+/// folder are refused with an error naming the URI and saying references must stay inside the
+/// folder; nothing outside is read.
+#[test]
+fn references_outside_the_folder_are_refused() {
+    let outside_dir = temp_path("outside");
+    std::fs::create_dir_all(&outside_dir).unwrap();
+    let (_, _, bin) = gltf_in_folder("unused.bin");
+    let outside_file = outside_dir.join("buffer.bin");
+    std::fs::write(&outside_file, &bin).unwrap();
+    let outside_abs = outside_file.to_str().unwrap().to_owned();
+    let escape = format!("../{}/buffer.bin", outside_dir.file_name().unwrap().to_str().unwrap());
+    for uri in ["../../../../etc/passwd", "/etc/passwd", outside_abs.as_str(), "file:///etc/passwd", "/dev/zero", "file:///dev/zero", "sub/../../x.bin", escape.as_str(), "%2E%2E/%2E%2E/etc/passwd"] {
+        let (dir, path, _) = gltf_in_folder(uri);
+        let err = load_with_timeout(&path).unwrap_err().to_string();
+        assert!(err.contains(STAY_INSIDE), "{uri}: {err}");
+        assert!(err.contains(uri), "{uri}: the error names the URI: {err}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+    // An image URI is held to the same rule.
+    let (dir, path, bin) = gltf_in_folder("buffer.bin");
+    std::fs::write(dir.join("buffer.bin"), &bin).unwrap();
+    let mut doc: Value = serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
+    doc["images"] = json!([{ "uri": "../../../../etc/passwd" }]);
+    doc["textures"] = json!([{ "source": 0 }]);
+    doc["materials"] = json!([{ "pbrMetallicRoughness": { "baseColorTexture": { "index": 0 } } }]);
+    doc["meshes"][0]["primitives"][0]["material"] = json!(0);
+    std::fs::write(&path, serde_json::to_vec(&doc).unwrap()).unwrap();
+    let err = load_with_timeout(&path).unwrap_err().to_string();
+    assert!(err.contains(STAY_INSIDE) && err.contains("../../../../etc/passwd") && err.contains("image 0"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&outside_dir);
+}
+
+/// Expectation: references that stay inside the folder load: `sub/../buffer.bin`, `./buffer.bin`
+/// and `file:buffer.bin`.
+#[test]
+fn references_inside_the_folder_load() {
+    for uri in ["sub/../buffer.bin", "./buffer.bin", "file:buffer.bin"] {
+        let (dir, path, bin) = gltf_in_folder(uri);
+        std::fs::write(dir.join("buffer.bin"), &bin).unwrap();
+        let m = load_with_timeout(&path).unwrap_or_else(|e| panic!("{uri}: {e}"));
+        assert_eq!(m.triangles.len(), 1, "{uri}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
+
+/// Expectation: a symbolic link inside the folder that points outside it (to a real buffer file)
+/// is refused, naming the URI; one pointing inside loads.
+#[test]
+fn symlinks_cannot_escape_the_folder() {
+    let outside_dir = temp_path("outside");
+    std::fs::create_dir_all(&outside_dir).unwrap();
+    let (dir, path, bin) = gltf_in_folder("link.bin");
+    std::fs::write(outside_dir.join("buffer.bin"), &bin).unwrap();
+    std::os::unix::fs::symlink(outside_dir.join("buffer.bin"), dir.join("link.bin")).unwrap();
+    let err = load_with_timeout(&path).unwrap_err().to_string();
+    assert!(err.contains(STAY_INSIDE) && err.contains("link.bin") && err.contains("symbolic link"), "{err}");
+
+    std::fs::remove_file(dir.join("link.bin")).unwrap();
+    std::fs::write(dir.join("real.bin"), &bin).unwrap();
+    std::os::unix::fs::symlink(dir.join("real.bin"), dir.join("link.bin")).unwrap();
+    assert_eq!(load_with_timeout(&path).unwrap().triangles.len(), 1);
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&outside_dir);
+}
+
+/// Expectation: a FIFO and a directory inside the folder are refused as not regular files, without
+/// blocking on the FIFO; the .gltf path itself being `/dev/zero` or a FIFO is refused the same way.
+#[test]
+fn special_files_are_refused() {
+    let (dir, path, _) = gltf_in_folder("sub");
+    std::fs::create_dir(dir.join("sub")).unwrap();
+    let err = load_with_timeout(&path).unwrap_err().to_string();
+    assert!(err.contains("not a regular file") && err.contains("`sub`"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+
+    let err = load_with_timeout(std::path::Path::new("/dev/zero")).unwrap_err().to_string();
+    assert!(err.contains("not a regular file") && err.contains("/dev/zero"), "{err}");
+
+    let (dir, path, _) = gltf_in_folder("fifo.bin");
+    match std::process::Command::new("mkfifo").arg(dir.join("fifo.bin")).status() {
+        Ok(s) if s.success() => {
+            let err = load_with_timeout(&path).unwrap_err().to_string();
+            assert!(err.contains("not a regular file") && err.contains("fifo.bin"), "{err}");
+            let err = load_with_timeout(&dir.join("fifo.bin")).unwrap_err().to_string();
+            assert!(err.contains("not a regular file"), "{err}");
+        }
+        other => eprintln!("skipping the FIFO case: mkfifo is unavailable or failed ({other:?})"),
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Expectation: a buffer file shorter than its byteLength is an error naming the file and both
+/// lengths; a longer one is read only up to byteLength and the scene loads.
+#[test]
+fn buffer_files_are_read_up_to_their_byte_length() {
+    let (dir, path, bin) = gltf_in_folder("buffer.bin");
+    std::fs::write(dir.join("buffer.bin"), &bin[..bin.len() - 5]).unwrap();
+    let err = load_with_timeout(&path).unwrap_err().to_string();
+    let (short, want) = ((bin.len() - 5).to_string(), bin.len().to_string());
+    assert!(err.contains("buffer.bin") && err.contains(&short) && err.contains(&want) && err.contains("byteLength"), "{err}");
+
+    let mut long = bin.clone();
+    long.extend(std::iter::repeat_n(0xAB, 1 << 20));
+    std::fs::write(dir.join("buffer.bin"), &long).unwrap();
+    let m = load_with_timeout(&path).unwrap();
+    assert_eq!(m.triangles.len(), 1);
+    assert_eq!(m, load_doc(&document(&TRIANGLE, None, None, 4, json!([{ "mesh": 0 }])).0).unwrap());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Expectation: a GLB whose magic is wrong (`glTX`, or zero bytes) is reported as "not a GLB
+/// file (wrong magic …)", not as a JSON error; text garbage still gets the JSON message.
+#[test]
+fn wrong_glb_magic_is_named() {
+    let mut glb = export_builtin_glb("simple", W, H).unwrap();
+    glb[..4].copy_from_slice(b"glTX");
+    let err = load_gltf_slice(&glb).unwrap_err().to_string();
+    assert!(err.contains("not a GLB file (wrong magic `glTX`"), "{err}");
+    glb[..4].copy_from_slice(&[0; 4]);
+    let err = load_gltf_slice(&glb).unwrap_err().to_string();
+    assert!(err.contains("not a GLB file (wrong magic"), "{err}");
+    let err = load_gltf_slice(b"{ not json").unwrap_err().to_string();
+    assert!(err.contains("not a valid glTF 2.0 file"), "{err}");
+}

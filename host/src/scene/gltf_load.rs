@@ -24,6 +24,13 @@
 //!   [`Lighting::default`].
 //!   Other lights are counted as ignored.
 //!
+//! External files: a buffer or image URI (relative path or `file:` URI, percent-decoded) must stay
+//! inside the folder of the .gltf file: absolute paths, `..` leaving the folder (resolved
+//! lexically) and symbolic links whose target lies outside the folder are refused. Only regular
+//! files are read (never directories, FIFOs, devices or sockets); a buffer file must hold at least
+//! its `byteLength` and only that much is read; an image file may hold at most
+//! [`MAX_IMAGE_FILE_BYTES`]. Loading from memory, any external file is an error.
+//!
 //! Zero-area triangles are dropped and counted (see [`super::mesh`]). Errors, never panics:
 //! malformed JSON or GLB, missing or unreadable files (named), bad accessors, indices out of range,
 //! non-finite data (naming the mesh), no triangles at all, too many triangles or texels.
@@ -49,6 +56,15 @@ fn scene_err(m: impl Into<String>) -> Error {
 
 /// Loads a `.gltf` or `.glb` file; external buffers and images are read relative to its folder.
 pub fn load_gltf(path: &Path) -> Result<MeshScene> {
+    // Only a regular file: a FIFO would block and a device (`/dev/zero`) never ends.
+    if let Ok(meta) = std::fs::metadata(path) {
+        if !meta.file_type().is_file() {
+            return Err(scene_err(format!(
+                "cannot read the glTF file `{}`: it is not a regular file (a directory, FIFO, device or socket)",
+                path.display()
+            )));
+        }
+    }
     let bytes = std::fs::read(path).map_err(|e| scene_err(format!("cannot read the glTF file `{}`: {e}", path.display())))?;
     let base = path.parent().map(Path::to_path_buf).unwrap_or_default();
     load(&bytes, Some(&base)).map_err(|e| match e {
@@ -63,7 +79,27 @@ pub fn load_gltf_slice(bytes: &[u8]) -> Result<MeshScene> {
     load(bytes, None)
 }
 
+/// Bytes that start like a binary header (a control or non-ASCII byte in the first 12) but not
+/// with the GLB magic `glTF`, nor with JSON: a wrong GLB magic, reported as such rather than as
+/// the JSON error the parser would give.
+fn wrong_glb_magic(bytes: &[u8]) -> Option<Error> {
+    let text = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+    if bytes.len() < 4 || bytes.starts_with(b"glTF") || text.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'{') {
+        return None;
+    }
+    let binary = bytes[..bytes.len().min(12)].iter().any(|&b| (b < 0x20 && !b.is_ascii_whitespace()) || b >= 0x7f);
+    binary.then(|| {
+        scene_err(format!(
+            "not a GLB file (wrong magic `{}`, expected `glTF`) and not glTF JSON; the file is damaged or not glTF",
+            bytes[..4].escape_ascii()
+        ))
+    })
+}
+
 fn load(bytes: &[u8], base: Option<&Path>) -> Result<MeshScene> {
+    if let Some(e) = wrong_glb_magic(bytes) {
+        return Err(e);
+    }
     let gltf::Gltf { document, blob } = gltf::Gltf::from_slice(bytes).map_err(|e| {
         scene_err(format!("not a valid glTF 2.0 file ({e}); expected glTF JSON or a complete binary .glb"))
     })?;
@@ -147,8 +183,26 @@ fn extras_colour(scene: &gltf::Scene, key: &str) -> Result<Option<[f32; 3]>> {
     parsed.map(Some).ok_or_else(|| scene_err(format!("the scene's extras key `{key}` must be [r, g, b] with finite, non-negative numbers, got {v}")))
 }
 
+/// The most bytes an image file referenced by a glTF URI may hold (256 MiB); a larger file is
+/// refused before it is read.
+pub const MAX_IMAGE_FILE_BYTES: u64 = 256 << 20;
+
+/// How much of a file a URI may read.
+#[derive(Clone, Copy)]
+enum ReadLimit {
+    /// A buffer: exactly its declared `byteLength`, from a file at least that long.
+    Buffer(u64),
+    /// An image: the whole file, at most [`MAX_IMAGE_FILE_BYTES`].
+    Image,
+}
+
 /// Reads a URI's bytes: a base64 data URI, or a file relative to `base` (percent-decoded).
-fn read_uri(uri: &str, base: Option<&Path>, what: &str) -> Result<Vec<u8>> {
+///
+/// A file reference must stay inside `base` (the folder of the .gltf file): absolute paths,
+/// `file://` URIs with an absolute path, `..` components that leave the folder and symbolic links
+/// whose target lies outside it are refused. Only regular files are read (never directories,
+/// FIFOs, devices or sockets), and never more than `limit` allows.
+fn read_uri(uri: &str, base: Option<&Path>, what: &str, limit: ReadLimit) -> Result<Vec<u8>> {
     if let Some(rest) = uri.strip_prefix("data:") {
         let (_, data) = rest.split_once(";base64,").ok_or_else(|| {
             scene_err(format!("{what} has a data URI that is not base64 (`data:...;base64,...` is required)"))
@@ -156,21 +210,119 @@ fn read_uri(uri: &str, base: Option<&Path>, what: &str) -> Result<Vec<u8>> {
         return base64_decode(data).ok_or_else(|| scene_err(format!("{what} has a data URI with invalid base64")));
     }
     let relative = match uri.strip_prefix("file://").or_else(|| uri.strip_prefix("file:")) {
-        Some(p) => PathBuf::from(percent_decode(p, what)?),
+        Some(p) => percent_decode(p, what)?,
         None if uri.contains(':') => {
             return Err(scene_err(format!("{what} refers to `{uri}`, whose URI scheme is not supported; use a relative file path or a data URI")));
         }
-        None => PathBuf::from(percent_decode(uri, what)?),
+        None => percent_decode(uri, what)?,
     };
     let Some(base) = base else {
         return Err(scene_err(format!(
             "{what} refers to the external file `{uri}`, which cannot be resolved when loading from memory; load the file by path, or embed the data"
         )));
     };
-    let path = base.join(relative);
-    std::fs::read(&path).map_err(|e| {
+    let path = resolve_inside(base, &relative, uri, what)?;
+    read_regular_file(&path, uri, what, limit)
+}
+
+/// `relative` joined to `base`, refused unless it stays inside `base`: lexically (no absolute
+/// path, no `..` leaving the folder) and, where the file exists, after resolving symbolic links.
+fn resolve_inside(base: &Path, relative: &str, uri: &str, what: &str) -> Result<PathBuf> {
+    use std::path::Component;
+    let outside = |why: &str| {
+        scene_err(format!(
+            "{what} refers to `{uri}`, {why}; buffer and image references must stay inside the folder of the .gltf file ({})",
+            if base.as_os_str().is_empty() { Path::new(".").display() } else { base.display() }
+        ))
+    };
+    let mut inside = PathBuf::new();
+    for component in Path::new(relative).components() {
+        match component {
+            Component::Normal(c) => inside.push(c),
+            Component::CurDir => {}
+            Component::ParentDir => {
+                if !inside.pop() {
+                    return Err(outside("whose `..` leaves the folder of the .gltf file"));
+                }
+            }
+            Component::RootDir | Component::Prefix(_) => return Err(outside("which is an absolute path")),
+        }
+    }
+    if inside.as_os_str().is_empty() {
+        return Err(outside("which names the folder itself, not a file"));
+    }
+    let base = if base.as_os_str().is_empty() { Path::new(".") } else { base };
+    let path = base.join(&inside);
+    // Symbolic links: the file's real location must lie inside the folder's real location. A file
+    // that does not exist (yet) is reported as unreadable by the read.
+    if let Ok(real) = path.canonicalize() {
+        let real_base = base.canonicalize().map_err(|e| {
+            scene_err(format!("{what}: the folder of the .gltf file ({}) cannot be resolved: {e}", base.display()))
+        })?;
+        if !real.starts_with(&real_base) {
+            return Err(outside(&format!("which resolves (through a symbolic link) to `{}`, outside the folder of the .gltf file", real.display())));
+        }
+    }
+    Ok(path)
+}
+
+/// Reads a regular file within `limit`; directories, FIFOs, devices and sockets are refused by
+/// their metadata before they are opened (so a FIFO cannot block and `/dev/zero` is never read),
+/// and again by the opened file's metadata.
+fn read_regular_file(path: &Path, uri: &str, what: &str, limit: ReadLimit) -> Result<Vec<u8>> {
+    use std::io::Read;
+    let unreadable = |e: std::io::Error| {
         scene_err(format!("{what} refers to the file `{uri}` ({}), which cannot be read: {e}; put the file there or fix the URI", path.display()))
-    })
+    };
+    let not_regular = || {
+        scene_err(format!(
+            "{what} refers to `{uri}` ({}), which is not a regular file (a directory, FIFO, device or socket); only regular files are read",
+            path.display()
+        ))
+    };
+    if !std::fs::metadata(path).map_err(unreadable)?.file_type().is_file() {
+        return Err(not_regular());
+    }
+    let file = std::fs::File::open(path).map_err(unreadable)?;
+    let meta = file.metadata().map_err(unreadable)?;
+    if !meta.file_type().is_file() {
+        return Err(not_regular());
+    }
+    let len = meta.len();
+    // A buffer needs at least its byteLength and reads exactly that; an image reads the whole file,
+    // at most the maximum (one byte more tells a file that grew past it after the check).
+    let (need, take) = match limit {
+        ReadLimit::Buffer(byte_length) => (byte_length, byte_length),
+        ReadLimit::Image => (0, MAX_IMAGE_FILE_BYTES + 1),
+    };
+    let short = |got: u64| {
+        scene_err(format!(
+            "{what} refers to the file `{uri}` ({}), which holds {got} bytes, fewer than the buffer's byteLength of {need}; the file is truncated or its byteLength is wrong",
+            path.display()
+        ))
+    };
+    let too_large = || {
+        scene_err(format!(
+            "{what} refers to the file `{uri}` ({}), which holds more than {MAX_IMAGE_FILE_BYTES} bytes (256 MiB), the largest image file read",
+            path.display()
+        ))
+    };
+    if len < need {
+        return Err(short(len));
+    }
+    if matches!(limit, ReadLimit::Image) && len >= take {
+        return Err(too_large());
+    }
+    let mut data = Vec::with_capacity(len.min(take) as usize);
+    file.take(take).read_to_end(&mut data).map_err(unreadable)?;
+    let got = data.len() as u64;
+    if got < need {
+        return Err(short(got));
+    }
+    if got >= take && matches!(limit, ReadLimit::Image) {
+        return Err(too_large());
+    }
+    Ok(data)
 }
 
 fn percent_decode(s: &str, what: &str) -> Result<String> {
@@ -224,7 +376,7 @@ fn read_buffers(doc: &gltf::Document, base: Option<&Path>, mut blob: Option<Vec<
             gltf::buffer::Source::Bin => {
                 blob.take().ok_or_else(|| scene_err(format!("{what} refers to the binary chunk, but the file has none")))?
             }
-            gltf::buffer::Source::Uri(uri) => read_uri(uri, base, &what)?,
+            gltf::buffer::Source::Uri(uri) => read_uri(uri, base, &what, ReadLimit::Buffer(buffer.length() as u64))?,
         };
         if data.len() < buffer.length() {
             return Err(scene_err(format!(
@@ -489,7 +641,7 @@ impl Loader<'_> {
                 let data = data.ok_or_else(|| scene_err(format!("{what}: its buffer view runs past its buffer")))?;
                 (data.to_vec(), Some(mime_type))
             }
-            gltf::image::Source::Uri { uri, mime_type } => (read_uri(uri, self.base, &what)?, mime_type),
+            gltf::image::Source::Uri { uri, mime_type } => (read_uri(uri, self.base, &what, ReadLimit::Image)?, mime_type),
         };
         let format = match mime {
             Some("image/png") => Some(image::ImageFormat::Png),

@@ -236,3 +236,12 @@ fn focus_is_honoured_when_the_view_centre_sees_nothing() {
     let o = dof(&args);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }
+
+/// A device choice that matches nothing names the variable, not a missing driver.
+#[test]
+fn a_wrong_device_choice_names_the_variable() {
+    let out = Command::new(env!("CARGO_BIN_EXE_dof")).args(["info"]).env("DOF_VULKAN_DEVICE", "99").output().expect("the dof binary runs");
+    let text = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    assert!(text.contains("DOF_VULKAN_DEVICE") && text.contains("`99`"), "{text}");
+    assert!(!text.contains("install a Vulkan driver"), "{text}");
+}

@@ -341,7 +341,12 @@ pub(super) fn select(mut all: Vec<Candidate>, choice: Option<&str>) -> Result<Ca
                 Err(_) => all.iter().position(|c| c.info.name.to_lowercase().contains(&lower)),
             };
             let Some(position) = position else {
-                return Err(Error::NoVulkan(format!("no Vulkan device matches `{choice}`; devices: {}", all_names(&all))));
+                // A wrong choice, not a missing driver: name where choices come from.
+                return Err(Error::InvalidArgument(format!(
+                    "no Vulkan device matches `{choice}` (the device asked for, e.g. by {DEVICE_ENV}); devices: {}; \
+                     give an index or part of a name, or unset {DEVICE_ENV} to take the best",
+                    all_names(&all)
+                )));
             };
             position
         }

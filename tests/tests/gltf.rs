@@ -658,3 +658,39 @@ fn wrong_glb_magic_is_named() {
     let err = load_gltf_slice(b"{ not json").unwrap_err().to_string();
     assert!(err.contains("not a valid glTF 2.0 file"), "{err}");
 }
+
+/// A PNG of `width`x`height` grey pixels without their data: a signature, the header, an empty
+/// compressed stream and the end, enough for the loader to read the size (and no more).
+fn png_header_only(width: u32, height: u32) -> Vec<u8> {
+    fn crc32(bytes: &[u8]) -> u32 {
+        let mut c = !0u32;
+        for &b in bytes {
+            c ^= b as u32;
+            for _ in 0..8 {
+                c = if c & 1 != 0 { 0xEDB8_8320 ^ (c >> 1) } else { c >> 1 };
+            }
+        }
+        !c
+    }
+    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+    let header = [&width.to_be_bytes()[..], &height.to_be_bytes(), &[8, 0, 0, 0, 0]].concat();
+    for (kind, data) in [(&b"IHDR"[..], header), (&b"IDAT"[..], vec![0x78, 0x9c, 0x03, 0x00]), (&b"IEND"[..], vec![])] {
+        png.extend((data.len() as u32).to_be_bytes());
+        let body = [kind, &data[..]].concat();
+        png.extend(&body);
+        png.extend(crc32(&body).to_be_bytes());
+    }
+    png
+}
+
+/// A texture beyond the texel budget is refused from its header, before anything is decoded or
+/// allocated, with its size and a hint.
+#[test]
+fn a_texture_beyond_the_budget_is_refused_before_decoding() {
+    let (mut doc, bin) = split_glb(&export_builtin_glb("railing", W, H).unwrap());
+    doc["images"][0] = json!({ "uri": format!("data:image/png;base64,{}", base64(&png_header_only(8192, 8192))) });
+    let err = load_gltf_slice(&join_glb(&doc, &bin)).err().expect("an 8192x8192 texture is beyond 2^24 texels");
+    let text = err.to_string();
+    assert!(matches!(err, dof::Error::TooLarge { .. }), "{text}");
+    assert!(text.contains("8192x8192") && text.contains("scale the textures down"), "{text}");
+}

@@ -648,18 +648,30 @@ impl Loader<'_> {
             Some("image/jpeg") => Some(image::ImageFormat::Jpeg),
             _ => None,
         };
+        let undecodable = |e: image::ImageError| scene_err(format!("{what} cannot be decoded ({e}); glTF images must be PNG or JPEG"));
+        let mut reader = image::ImageReader::new(std::io::Cursor::new(&bytes));
+        match format {
+            Some(f) => reader.set_format(f),
+            None => reader = reader.with_guessed_format().map_err(|e| scene_err(format!("{what} cannot be read ({e})")))?,
+        }
+        // The size from the header, before decoding anything: a texture beyond the texel budget
+        // is refused without allocating it.
+        let (width, height) = reader.into_dimensions().map_err(undecodable)?;
+        let offset = self.out.texels.len() as u64;
+        let total = offset + width as u64 * height as u64;
+        if total > MAX_TEXELS {
+            return Err(Error::TooLarge {
+                what: format!("texels of all textures ({what} is {width}x{height}; scale the textures down)"),
+                size: total,
+                limit: MAX_TEXELS,
+            });
+        }
         let decoded = match format {
             Some(f) => image::load_from_memory_with_format(&bytes, f),
             None => image::load_from_memory(&bytes),
         }
-        .map_err(|e| scene_err(format!("{what} cannot be decoded ({e}); glTF images must be PNG or JPEG")))?;
+        .map_err(undecodable)?;
         let rgba = decoded.to_rgba32f();
-        let (width, height) = rgba.dimensions();
-        let offset = self.out.texels.len() as u64;
-        let total = offset + width as u64 * height as u64;
-        if total > MAX_TEXELS {
-            return Err(Error::TooLarge { what: format!("texels of all textures ({what} is {width}x{height})"), size: total, limit: MAX_TEXELS });
-        }
         self.out.texels.extend(rgba.pixels().map(|p| {
             let [r, g, b, a] = p.0;
             if srgb { [srgb_to_linear(r), srgb_to_linear(g), srgb_to_linear(b), a] } else { [r, g, b, a] }

@@ -1,5 +1,6 @@
 //! Depth of field with order-correct, partial-occlusion-aware splatting: the host library.
 //!
+//! - [`frame`]: the frame API: a context per device, extent and method that records frames against the caller's buffers;
 //! - [`backend`]: the CPU and Vulkan backends that run the kernels of the `dof-shaders` crate;
 //! - [`ops`]: kernel sequences recorded on any backend (segmented sort, prefix scan);
 //! - [`workload`]: synthetic inputs shaped like the pipeline's (tile-list length mixes);
@@ -16,6 +17,7 @@ pub mod aperture;
 pub mod backend;
 pub mod error;
 pub mod eval;
+pub mod frame;
 pub mod io;
 pub mod layers;
 pub mod methods;

@@ -30,6 +30,19 @@ impl ScanScratch {
         Ok(ScanScratch { capacity, levels })
     }
 
+    /// Device memory the scratch holds, in bytes.
+    pub fn bytes(&self) -> u64 {
+        let (mut len, mut words) = (self.capacity.max(1), 0);
+        loop {
+            let blocks = len.div_ceil(BLOCK as u64);
+            words += blocks;
+            if blocks == 1 {
+                return 4 * words;
+            }
+            len = blocks;
+        }
+    }
+
     pub fn destroy(self, backend: &mut dyn Backend) {
         for b in self.levels {
             backend.destroy_buffer(b);

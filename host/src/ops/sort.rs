@@ -12,6 +12,7 @@ use dof_shaders::sort::{
 /// Buffers and sizes of a segmented sort, allocated once for a maximum problem size.
 pub struct SegmentedSort {
     max_segments: u32,
+    max_elements: u32,
     max_list_len: u32,
     top_class: u32,
     plan: BufferId,
@@ -54,7 +55,7 @@ impl SegmentedSort {
         } else {
             None
         };
-        Ok(SegmentedSort { max_segments, max_list_len, top_class, plan, lists, scratch })
+        Ok(SegmentedSort { max_segments, max_elements, max_list_len, top_class, plan, lists, scratch })
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {
@@ -64,6 +65,13 @@ impl SegmentedSort {
             backend.destroy_buffer(k);
             backend.destroy_buffer(p);
         }
+    }
+
+    /// Device memory the sort holds, in bytes.
+    pub fn bytes(&self) -> u64 {
+        let lists = (NUM_CLASSES as u64 + 1) * self.max_segments.max(1) as u64;
+        let scratch = if self.scratch.is_some() { 2 * self.max_elements as u64 } else { 0 };
+        4 * (plan::WORDS as u64 + lists + scratch)
     }
 
     /// Capacity of the largest workgroup-memory class on this device.

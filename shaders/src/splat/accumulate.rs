@@ -86,16 +86,17 @@ pub fn accumulate_pass<G: Group, M: Mem>(
     mut st: M,
     mask: M,
 ) {
+    let p = &super::plan::planned(p, &st);
     let [wx, wy, _] = g.workgroup_id();
-    let sub = p.tile / p.block;
+    let sub = p.tile / p.block();
     let (tx, ty) = (wx / sub, wy / sub);
     let t = ty * p.tiles_x + tx;
-    let x0 = tx * p.tile + (wx % sub) * p.block;
-    let y0 = ty * p.tile + (wy % sub) * p.block;
+    let x0 = tx * p.tile + (wx % sub) * p.block();
+    let y0 = ty * p.tile + (wy % sub) * p.block();
     // The pixel of invocation `lid`, and whether it lies inside the block and the image.
     let pixel = |lid: u32| -> (bool, u32, u32) {
-        let (x, y) = (x0 + lid % p.block, y0 + lid / p.block);
-        (lid < p.block * p.block && x < p.width && y < p.height, x, y)
+        let (x, y) = (x0 + lid % p.block(), y0 + lid / p.block());
+        (lid < p.block() * p.block() && x < p.width && y < p.height, x, y)
     };
     let store = |out: &mut M, x: u32, y: u32, c: [f32; 3]| {
         let i = 3 * (y * p.width + x);

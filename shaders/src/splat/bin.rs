@@ -4,18 +4,21 @@
 //!   tile (a scan of the partially filled cells: the index that lets every thread take fragments of
 //!   any pixel evenly), and the largest fragment radius in the tile.
 //! - `splat_compact` (one workgroup per tile): the fragments into one dense array, tile by tile.
-//! - `splat_alloc` (one invocation per tile): a conservative list capacity, the sum of the counts of
-//!   the tiles within `rings` whose largest radius can reach this tile (the lists hold blurred
-//!   fragments only); a tile no list fragment reaches is copied through (capacity 0). The host scans
-//!   the capacities into list offsets.
+//! - `splat_alloc` (one invocation per tile): whether any tile within `rings` has fragments whose
+//!   largest radius can reach this tile (the lists hold blurred fragments only); a tile none reaches
+//!   is copied through.
 //! - `splat_bin` (one workgroup per tile): every invocation takes four candidates at a time from the
-//!   neighbours' dense fragments, keeps those whose disc reaches a pixel centre of the tile, and a
-//!   workgroup scan places them. The destination tile gathers its list (rather than sources
+//!   neighbours' dense fragments and keeps those whose disc reaches a pixel centre of the tile. A
+//!   first sweep counts them, one atomic takes exactly that many entries from the list pool (a
+//!   list that does not fit is counted as overflow and its tile copied through: a bounded,
+//!   reported degradation rather than a write out of bounds), and a second sweep writes them in
+//!   place through a workgroup scan. The destination tile gathers its list (rather than sources
 //!   scattering with atomics), so every list comes out in the same order on every backend and the
 //!   stable sort that follows is deterministic.
 
 use super::fragment::Fragment;
 use crate::wg::{add, for_each_item, inclusive_scan, max};
+use super::plan::planned;
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Mem};
 
@@ -104,6 +107,7 @@ pub fn tile_count_pass<G: Group, M: Mem>(
     mut tile_radius: M,
     mut st: M,
 ) {
+    let p = &planned(p, &st);
     let [tx, ty, _] = g.workgroup_id();
     let t = ty * p.tiles_x + tx;
     let radii = 2 * THREADS as usize;
@@ -114,7 +118,7 @@ pub fn tile_count_pass<G: Group, M: Mem>(
             total += n;
             let mut k = 0;
             while k < n {
-                let f = Fragment::load(&cells, cell * p.cell_cap + k);
+                let f = Fragment::load(&cells, cell * p.cell_cap() + k);
                 let r = f.radius(&p.lens, p.max_radius);
                 widest = if r > widest { r } else { widest };
                 capped += f.is_capped(&p.lens, p.max_radius) as u32;
@@ -156,46 +160,38 @@ pub fn compact_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells: M, cell
             let (n, at) = (cell_counts.load(cell), base + cell_off.load(cell));
             let mut w = 0;
             while w < 4 * n {
-                dense.store(4 * at + w, cells.load(4 * cell * p.cell_cap + w));
+                dense.store(4 * at + w, cells.load(4 * cell * p.cell_cap() + w));
                 w += 1;
             }
         });
     });
 }
 
-pub fn alloc_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, tile_count: M, tile_radius: M, mut capacity: M, mut copy: M, mut st: M) {
+pub fn alloc_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, tile_count: M, tile_radius: M, mut copy: M, mut st: M) {
+    let p = &planned(p, &st);
     let tiles = p.tiles_x * p.tiles_y;
     for_each_item(g, tiles, |t| {
         let (tx, ty) = (t % p.tiles_x, t / p.tiles_x);
         let rings = p.rings as i32;
-        let mut cap = 0u32;
+        let mut reached = false;
         let mut dy = -rings;
-        while dy <= rings {
+        while dy <= rings && !reached {
             let mut dx = -rings;
-            while dx <= rings {
+            while dx <= rings && !reached {
                 let (sx, sy) = (tx as i32 + dx, ty as i32 + dy);
                 dx += 1;
                 if sx < 0 || sy < 0 || sx >= p.tiles_x as i32 || sy >= p.tiles_y as i32 {
                     continue;
                 }
                 let s = sy as u32 * p.tiles_x + sx as u32;
-                let n = tile_count.load(s);
-                if n == 0 {
-                    continue;
-                }
-                if s == t || tile_reaches(p, sx as u32, sy as u32, tx, ty, f32::from_bits(tile_radius.load(s))) {
-                    cap += n;
-                }
+                reached = tile_count.load(s) > 0
+                    && (s == t || tile_reaches(p, sx as u32, sy as u32, tx, ty, f32::from_bits(tile_radius.load(s))));
             }
             dy += 1;
         }
-        let copied = cap == 0;
-        capacity.store(t, if copied { 0 } else { cap });
-        copy.store(t, copied as u32);
-        if copied {
+        copy.store(t, !reached as u32);
+        if !reached {
             st.atomic_add(stats::COPY_TILES, 1);
-        } else {
-            st.atomic_max(stats::MAX_CAPACITY, cap);
         }
     });
 }
@@ -212,18 +208,19 @@ pub fn bin_pass<G: Group, M: Mem>(
     tile_count: M,
     tile_base: M,
     tile_radius: M,
-    list_base: M,
-    copy: M,
+    mut copy: M,
     mut keys: M,
     mut values: M,
     mut segments: M,
+    mut st: M,
 ) {
+    let p = &planned(p, &st);
     let [tx, ty, _] = g.workgroup_id();
     let t = ty * p.tiles_x + tx;
-    let out = list_base.load(t);
     let t_usize = THREADS as usize;
-    // Workgroup memory: [0, 2T) scan of candidates per invocation; [2T, 3T) their masks;
-    // [3T, 5T) scan of the neighbours' candidate counts; [5T, 6T) the neighbours' first dense index.
+    // Workgroup memory: [0, 2T) scan of candidates per invocation; [2T, 3T) their masks (word 2T
+    // also passes the list's offset from invocation 0 to all); [3T, 5T) scan of the neighbours'
+    // candidate counts; [5T, 6T) the neighbours' first dense index.
     let (masks, nb_scan, nb_base) = (2 * t_usize, 3 * t_usize, 5 * t_usize);
     let side = 2 * p.rings + 1;
     // One candidate space over the fragments of every neighbour tile (within the rings) that can
@@ -247,6 +244,61 @@ pub fn bin_pass<G: Group, M: Mem>(
     });
     let nb = inclusive_scan(g, sh, nb_scan, add);
     let total = sh[nb + t_usize - 1];
+
+    // Sweep 1 counts the candidates that reach the tile, so that its list is allocated exactly.
+    let mut count = 0u32;
+    let mut start = 0;
+    while start < total {
+        g.each(|lid| {
+            let mut kept = 0u32;
+            let mut i = 0;
+            while i < CANDIDATES_PER_THREAD {
+                let j = start + lid * CANDIDATES_PER_THREAD + i;
+                if j < total && fragment_reaches(p, &Fragment::load(&dense, candidate(sh, nb, nb_base, j)), tx, ty) {
+                    kept += 1;
+                }
+                i += 1;
+            }
+            sh[lid as usize] = kept;
+        });
+        let sums = inclusive_scan(g, sh, 0, add);
+        let mut chunk_total = 0;
+        g.each(|_| chunk_total = sh[sums + t_usize - 1]);
+        count += chunk_total;
+        start += THREADS * CANDIDATES_PER_THREAD;
+    }
+    // One atomic a tile takes its range from the pool. The pointer cannot wrap: the host keeps
+    // tiles · max_list below 2^32, and a longer list never touches it.
+    g.each(|lid| {
+        if lid == 0 {
+            let mut out = NONE;
+            if count > 0 && count <= p.max_list {
+                let at = st.atomic_add(stats::LIST_TOP, count);
+                if at <= p.list_capacity && count <= p.list_capacity - at {
+                    out = at;
+                }
+            }
+            if count > 0 && out == NONE {
+                // Overflow: this tile shows its sharp fronts only, and the frame reports it.
+                copy.store(t, 1);
+                st.atomic_add(stats::OVERFLOW_TILES, 1);
+                st.atomic_add(stats::OVERFLOW_ENTRIES, count);
+            }
+            if out != NONE {
+                st.atomic_max(stats::MAX_CAPACITY, count);
+            }
+            segments.store(2 * t, if out == NONE { 0 } else { out });
+            segments.store(2 * t + 1, if out == NONE { 0 } else { count });
+            sh[masks] = out;
+        }
+    });
+    let mut out = NONE;
+    g.each(|_| out = sh[masks]);
+    if out == NONE {
+        return;
+    }
+
+    // Sweep 2 writes the list, in candidate order (the same on every backend).
     let mut running = 0u32;
     let mut start = 0;
     while start < total {
@@ -285,12 +337,6 @@ pub fn bin_pass<G: Group, M: Mem>(
         running += chunk_total;
         start += THREADS * CANDIDATES_PER_THREAD;
     }
-    g.each(|lid| {
-        if lid == 0 {
-            segments.store(2 * t, out);
-            segments.store(2 * t + 1, running);
-        }
-    });
 }
 
 /// The dense index of candidate `j`: the neighbour whose range of the inclusive scan at `sh[nb..]`
@@ -316,11 +362,11 @@ kernel!(
     COMPACT = splat_compact [256] (SplatParams) { cells, cell_counts, cell_off, tile_base, dense } => compact_pass
 );
 kernel!(
-    /// Conservative list capacity per tile, and which tiles are copied through.
-    ALLOC = splat_alloc [256] (SplatParams) { tile_count, tile_radius, capacity, copy, st } => alloc_pass
+    /// Which tiles no list fragment reaches (copied through).
+    ALLOC = splat_alloc [256] (SplatParams) { tile_count, tile_radius, copy, st } => alloc_pass
 );
 kernel!(
     /// The tile lists: depth keys and dense fragment indices.
     BIN = splat_bin [256] (SplatParams) shared [u32; 6 * 256]
-        { dense, tile_count, tile_base, tile_radius, list_base, copy, keys, values, segments } => bin_pass
+        { dense, tile_count, tile_base, tile_radius, copy, keys, values, segments, st } => bin_pass
 );

@@ -95,7 +95,7 @@ pub fn merge_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells_in: M, cou
     let out_x = p.cells_x.div_ceil(2);
     let outputs = out_x * p.cells_y.div_ceil(2);
     let level = if p.cell == 1 { 0 } else { 1 };
-    let cap_out = 4 * p.cell_cap;
+    let cap_out = 4 * p.cell_cap();
     let edge_out = 2 * p.cell;
     for_each_item(g, outputs, |o| {
         let (ox, oy) = (o % out_x, o / out_x);
@@ -124,7 +124,7 @@ pub fn merge_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells_in: M, cou
             let mut m = 0usize;
             while m < 4 {
                 if head[m] < count[m] {
-                    f[m] = Fragment::load(&cells_in, cell[m] * p.cell_cap + head[m]);
+                    f[m] = Fragment::load(&cells_in, cell[m] * p.cell_cap() + head[m]);
                     present += 1;
                     if front == 4 || f[m].depth < f[front].depth {
                         front = m;
@@ -146,7 +146,7 @@ pub fn merge_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells_in: M, cou
                 let mut m = 0usize;
                 while m < 4 {
                     head[m] += 1;
-                    while umbra && head[m] < count[m] && depth_of(&cells_in, cell[m] * p.cell_cap + head[m]) <= shadow {
+                    while umbra && head[m] < count[m] && depth_of(&cells_in, cell[m] * p.cell_cap() + head[m]) <= shadow {
                         head[m] += 1;
                         skipped += 1;
                     }

@@ -1,6 +1,8 @@
 //! Tiled splatting of a multi-layer image (seed 000 §5-6; seed 003 is the same pipeline on the front
-//! layer only). Stages, each a kernel here, recorded by `host/src/methods/splat`:
+//! layer only). Stages, each a kernel here, recorded by `host/src/frame/splat.rs`:
 //!
+//! 0. [`plan`]: the largest CoC radius and the brightest colour, reduced on the device, give the
+//!    rings, the radius cap and the colour scale (nothing is decided on the host from the image).
 //! 1. [`pack`]: per-pixel layer slots → 16-byte [`fragment::Fragment`]s (seed 000 Fig. 7); non-finite
 //!    colours and invalid depths are dropped, colours scaled into the half-float range, and an empty
 //!    pixel gets the sky (black at infinite depth) so that coverage is complete. In-focus fragments
@@ -9,8 +11,9 @@
 //!    similar depth and colour become one larger fragment; umbra-aware merging drops what the merged
 //!    fragment shadows from every lens point (§6.1-6.2).
 //! 3. [`bin`]: per-tile fragment counts and an index over the partially filled cells (the
-//!    load-balancing structure of §5.1), a dense per-tile fragment array, conservative list
-//!    allocation from the counts of the neighbours that can reach the tile, then the tile lists.
+//!    load-balancing structure of §5.1), a dense per-tile fragment array, which tiles no blur
+//!    reaches, then the tile lists, each allocated exactly from a bounded pool (a tile whose list
+//!    does not fit is counted as overflow and copied through).
 //! 4. The foundation's segmented sort orders every list by depth.
 //! 5. [`accumulate`]: per pixel, front to back over its tile's list with early termination, ending
 //!    at the pixel's sharp front; tiles that no blur reaches write their sharp fronts through.
@@ -22,6 +25,7 @@ pub mod bin;
 pub mod fragment;
 pub mod merge;
 pub mod pack;
+pub mod plan;
 
 use crate::aperture::Aperture;
 use crate::lens::ThinLens;
@@ -40,7 +44,9 @@ pub const MAX_GROUPS: u32 = 65535;
 /// `flags`: drop fragments inside a merged fragment's umbra (§6.2).
 pub const FLAG_UMBRA_MERGE: u32 = 1;
 
-/// Push constants of every splatting kernel (120 bytes; at most 128 are guaranteed).
+/// Push constants of every splatting kernel (128 bytes, all that Vulkan guarantees). `rings`,
+/// `max_radius` and `color_scale` are the configured bounds here; the kernels use the frame's own,
+/// which `plan::splat_plan_finish` writes on the device (see [`plan::planned`]).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct SplatParams {
@@ -48,9 +54,8 @@ pub struct SplatParams {
     pub height: u32,
     /// Input slots per pixel (`pack`, and the copy-through of `accumulate`).
     pub layers: u32,
-    /// Edge in pixels of the cells a kernel reads (1, 2 or 4), and fragment slots per cell.
+    /// Edge in pixels of the cells a kernel reads (1, 2 or 4); see [`SplatParams::cell_cap`].
     pub cell: u32,
-    pub cell_cap: u32,
     pub cells_x: u32,
     pub cells_y: u32,
     /// Tile edge in pixels, tile grid, and the rings of neighbours a fragment may reach.
@@ -58,8 +63,6 @@ pub struct SplatParams {
     pub tiles_x: u32,
     pub tiles_y: u32,
     pub rings: u32,
-    /// Edge of the pixel block one accumulation workgroup covers (divides `tile`).
-    pub block: u32,
     pub flags: u32,
     /// Cap on a fragment's radius in pixels (`rings · tile` at most).
     pub max_radius: f32,
@@ -74,9 +77,32 @@ pub struct SplatParams {
     pub lens: ThinLens,
     /// The aperture shape `accumulate` tests pixels against (binning uses the enclosing circle).
     pub aperture: Aperture,
+    /// Entries the list buffers hold, and the longest list the sort was sized for: a tile whose
+    /// list does not fit either is counted in [`stats::OVERFLOW_TILES`] and copied through.
+    pub list_capacity: u32,
+    pub max_list: u32,
 }
 
 const _: () = assert!(core::mem::size_of::<SplatParams>() <= 128);
+
+impl SplatParams {
+    /// Fragment slots per cell: every slot of the pixels a cell covers.
+    #[inline]
+    pub fn cell_cap(&self) -> u32 {
+        self.layers * self.cell * self.cell
+    }
+    /// Edge of the pixel block one accumulation workgroup covers (divides `tile`).
+    #[inline]
+    pub fn block(&self) -> u32 {
+        block_for(self.tile)
+    }
+}
+
+/// Edge of the pixel block one accumulation workgroup covers for tiles of `tile` pixels.
+#[inline]
+pub const fn block_for(tile: u32) -> u32 {
+    if tile == 24 { 12 } else { 16 }
+}
 
 /// Words of the statistics buffer every run fills (atomic counters, so order-independent).
 pub mod stats {
@@ -95,7 +121,7 @@ pub mod stats {
     pub const CAPPED: u32 = 6;
     /// Tiles copied through (no blur reaches them).
     pub const COPY_TILES: u32 = 7;
-    /// Largest list capacity of a tile.
+    /// Longest tile list (entries) the frame allocated.
     pub const MAX_CAPACITY: u32 = 8;
     /// Pixels that stopped before the end of their list (saturated).
     pub const EARLY_OUT: u32 = 9;
@@ -106,11 +132,26 @@ pub mod stats {
     pub const HIDDEN_SHARP: u32 = 12;
     /// Fragments entering tiling (after merging).
     pub const TILED: u32 = 13;
-    pub const WORDS: u32 = 14;
+    /// Tiles whose list did not fit the list pool (or exceeded the longest list the sort handles),
+    /// and the entries those lists would have held: such tiles are copied through.
+    pub const OVERFLOW_TILES: u32 = 14;
+    pub const OVERFLOW_ENTRIES: u32 = 15;
+    /// List entries allocated so far (the pool's bump pointer; may pass the capacity on overflow).
+    pub const LIST_TOP: u32 = 16;
+    /// The device plan: largest CoC radius present and brightest channel (f32 bits, reduced), then
+    /// the rings, the radius cap (f32 bits) and the colour scale (f32 bits) derived from them.
+    pub const WIDEST: u32 = 17;
+    pub const BRIGHTEST: u32 = 18;
+    pub const RINGS: u32 = 19;
+    pub const RADIUS_CAP: u32 = 20;
+    pub const COLOR_SCALE: u32 = 21;
+    pub const WORDS: u32 = 22;
 }
 
 #[cfg(not(target_arch = "spirv"))]
-pub const KERNELS: [&crate::KernelDesc; 7] = [
+pub const KERNELS: [&crate::KernelDesc; 9] = [
+    &plan::PLAN_REDUCE,
+    &plan::PLAN_FINISH,
     &pack::PACK,
     &merge::MERGE,
     &bin::TILE_COUNT,

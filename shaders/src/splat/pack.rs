@@ -3,7 +3,7 @@
 //! Input: `layers` (per pixel `params.layers` slots of 4 words: red, green, blue, depth as f32 bits,
 //! front to back) and `counts` (slots used per pixel). A slot with a non-finite colour or a depth that
 //! is not positive (NaN, 0, negative) is dropped and counted: it never spreads. Colours are scaled
-//! by `color_scale` (the host picks a power of two that brings the brightest into the half-float
+//! by `color_scale` (the device plan picks a power of two that brings the brightest into the half-float
 //! range); what still lies beyond it is clamped and counted. The background arrives as a slot at
 //! infinite depth (its CoC the far-field limit) and blends like any surface. A pixel with no slot
 //! at all has no data: it gets a black background fragment, as `LayeredImage::front` reads it (a
@@ -61,6 +61,7 @@ pub fn pack_pass<G: Group, M: Mem>(
     mut sharp: M,
     mut st: M,
 ) {
+    let p = &super::plan::planned(p, &st);
     let pixels = p.width * p.height;
     for_each_item(g, pixels, |i| {
         let (x, y) = (i % p.width, i / p.width);

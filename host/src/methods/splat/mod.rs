@@ -1,9 +1,11 @@
 //! Tiled splatting on any backend (kernels and the algorithm in `dof_shaders::splat`): multi-layer
-//! (seed 000) on a partial multi-layer image, single-layer (seed 003) on its front layer.
+//! (Franke, Hofmann, Stamminger, Selgrad 2018) on a partial multi-layer image, single-layer
+//! (Selgrad, Franke, Stamminger 2016) on its front layer.
 //!
-//! [`plan`] decides per frame what the scene needs (rings from the largest CoC present, merging only
-//! where something is blurred enough to merge); [`run`] records the stages and reads back what was
-//! left out, so every result carries a [`SplatReport`] ([`report`]).
+//! The frame is recorded by [`crate::frame::SplatContext`], which plans it on the device (rings
+//! from the largest CoC present, the colour scale from the brightest colour); [`splat`] runs one
+//! frame of a host image through it and reads back the image and what was left out, so every
+//! result carries a [`SplatReport`].
 
 mod plan;
 mod report;

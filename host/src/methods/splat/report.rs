@@ -28,13 +28,20 @@ pub struct SplatReport {
     pub copy_tiles: u32,
     /// Per tile, the sorted list's length (0 for copied tiles).
     pub list_lengths: Vec<u32>,
-    /// Allocated list capacity (conservative) and entries actually binned.
+    /// Entries the list pool holds, and entries binned.
     pub list_capacity: u64,
     pub list_entries: u64,
+    /// Tiles whose list did not fit the pool (or the longest list the sort handles), copied through
+    /// instead, and the entries they would have held. Zero in a whole frame.
+    pub overflow_tiles: u32,
+    pub overflow_entries: u64,
+    /// The longest list any tile wanted, and the pool's bump pointer at the end of the frame.
+    pub longest_list_wanted: u32,
+    pub list_top: u64,
     pub sort: SortStats,
     pub early_out_pixels: u32,
     pub skipped_entries: u32,
-    /// Bytes of every buffer the frame created (peak: all live at once).
+    /// Bytes of every buffer the splatting context holds.
     pub buffer_bytes: u64,
 }
 
@@ -69,9 +76,6 @@ impl SplatReport {
                 "tiles {}x{} of {} px, {} ring(s) (largest CoC radius present {:.1} px, cap {:.0} px), merge steps {}\n",
                 p.tiles_x, p.tiles_y, p.tile, p.rings, p.max_coc_radius, p.radius_cap, p.merge_steps
             );
-            if let Some(note) = &p.merge_note {
-                s += &format!("{note}\n");
-            }
         }
         s += &format!(
             "fragments: {} in ({:.2}/px; a full {}-layer image holds {}), {} dropped (non-finite or bad depth), {} clamped to half range, {} empty pixels given a black background\n",
@@ -92,7 +96,7 @@ impl SplatReport {
             self.merged, self.merged_inputs, self.umbra_skipped, self.fragments, self.capped
         );
         s += &format!(
-            "tiles copied through (no blur reaches them): {} of {}; lists: {} entries (mean {:.0}, max {}) in {} allocated\n",
+            "tiles copied through (no blur reaches them): {} of {}; lists: {} entries (mean {:.0}, max {}) in a pool of {}\n",
             self.copy_tiles,
             self.tiles,
             self.list_entries,
@@ -100,6 +104,12 @@ impl SplatReport {
             self.max_list_length(),
             self.list_capacity
         );
+        if self.overflow_tiles > 0 {
+            s += &format!(
+                "OVERFLOW: {} tiles ({} list entries) did not fit the list pool and show only their in-focus fronts\n",
+                self.overflow_tiles, self.overflow_entries
+            );
+        }
         let classes: Vec<String> = dof_shaders::sort::CLASS_CAPS
             .iter()
             .zip(&self.sort.class_counts)

@@ -1,0 +1,27 @@
+//! The frame API: a context created once per device, maximum extent, method and quality, which
+//! records one depth-of-field frame at a time against buffers the caller owns.
+//!
+//! The shape follows an effect API such as AMD FidelityFX's (create, record, destroy): the context
+//! allocates every transient buffer and builds every plan bound when it is created, so a frame
+//! only records commands. Per frame there is
+//! - no allocation: lists come from a pool whose size is fixed at creation, and a list that does
+//!   not fit is counted on the device and its tile copied through (never written out of bounds);
+//! - no host readback and no pass over the image on the host: the largest CoC, the rings and the
+//!   colour scale are reduced on the device, and the sort's dispatch sizes are written there for
+//!   indirect dispatch;
+//! - no submission: the caller submits (on Vulkan, `VulkanBackend::begin_external` records into
+//!   the caller's own command buffer; standalone, one `submit` runs the frame).
+//!
+//! What the frame did and left out (a [`crate::methods::splat::SplatReport`]) stays on the device
+//! until the caller asks for it, after the frame's work has completed.
+//!
+//! Methods: multi-layer tiled splatting (Franke, Hofmann, Stamminger, Selgrad 2018) and its
+//! single-layer predecessor (Selgrad, Franke, Stamminger 2016, the same pipeline on the front
+//! layer) run through [`SplatContext`]. The gathering baseline (Riguer et al. 2003), bokeh sprites
+//! (de Rousiers, Pettineo), layered DoF with matting (Schedl, Wimmer 2012) and ray tracing through
+//! layers (Lee et al. 2010) still plan on the host from the image and run through their one-shot
+//! functions in [`crate::methods`].
+
+pub mod splat;
+
+pub use splat::{SplatContext, SplatContextDesc, SplatFrame};

@@ -1,0 +1,464 @@
+//! Tiled splatting as a frame context: every buffer and bound fixed at creation, then per frame a
+//! recording of the stages in `dof_shaders::splat` with no allocation, readback or host planning.
+
+use crate::backend::{Backend, BufferId, push_words};
+use crate::error::{Error, Result};
+use crate::methods::buffers::groups_for;
+use crate::methods::splat::{Plan, SplatOptions, SplatReport};
+use crate::ops::scan::ScanScratch;
+use crate::ops::sort::SegmentedSort;
+use dof_shaders::lens::ThinLens;
+use dof_shaders::splat::accumulate::ACCUMULATE;
+use dof_shaders::splat::bin::{ALLOC, BIN, COMPACT, TILE_COUNT};
+use dof_shaders::splat::fragment::MAX_EDGE;
+use dof_shaders::splat::merge::MERGE;
+use dof_shaders::splat::pack::PACK;
+use dof_shaders::splat::plan::{PLAN_FINISH, PLAN_REDUCE};
+use dof_shaders::splat::{FLAG_UMBRA_MERGE, block_for, MAX_RINGS, SplatParams, TILE_SIZES, stats};
+
+/// Most tile-list entries a context may hold: 2^29, so that each list buffer stays within 2 GiB.
+/// Measured on an NVIDIA H100 (driver 580.159.04): a 3840x2160 unmerged frame whose list buffers
+/// held 584 million entries (2.3 GB each, under the device's 4 GiB limit) came back with almost
+/// every list empty and no error, while at 1920x1080 (63 million entries) its lists were whole.
+pub const MAX_LIST_ENTRIES: u64 = 1 << 29;
+/// List entries a context holds per pixel of its maximum extent unless told otherwise, and the
+/// least it holds (so that small frames with strong blur, whose lists are long, still fit).
+pub const DEFAULT_LIST_ENTRIES_PER_PIXEL: u64 = 4;
+pub const MIN_LIST_ENTRIES: u64 = 1 << 20;
+/// Longest list the sort is sized for unless told otherwise (longer lists are counted as overflow).
+pub const DEFAULT_MAX_LIST: u32 = 1 << 16;
+
+/// What a context is created for.
+#[derive(Clone, Debug)]
+pub struct SplatContextDesc {
+    /// Largest frame, in pixels, and most layers (fragment slots) per pixel.
+    pub max_width: u32,
+    pub max_height: u32,
+    pub max_layers: u32,
+    /// Tile size, merging, radius cap, aperture: fixed for the context's life.
+    pub options: SplatOptions,
+    /// Tile-list entries the pool holds (default: [`DEFAULT_LIST_ENTRIES_PER_PIXEL`] per pixel of
+    /// the maximum extent, at least [`MIN_LIST_ENTRIES`]; at most [`MAX_LIST_ENTRIES`]).
+    pub list_entries: Option<u64>,
+    /// Longest list one tile may have (default [`DEFAULT_MAX_LIST`]).
+    pub max_list: Option<u32>,
+    /// Keep each merging step's cells in its own buffer instead of reusing the first one for the
+    /// last step (for tests that compare every stage; costs one more slot buffer).
+    pub distinct_stage_buffers: bool,
+}
+
+impl SplatContextDesc {
+    pub fn new(max_width: u32, max_height: u32, max_layers: u32, options: SplatOptions) -> Self {
+        SplatContextDesc { max_width, max_height, max_layers, options, list_entries: None, max_list: None, distinct_stage_buffers: false }
+    }
+}
+
+/// One frame: its size (within the context's maximum), the lens, and the caller's buffers.
+#[derive(Clone, Copy, Debug)]
+pub struct SplatFrame {
+    pub width: u32,
+    pub height: u32,
+    /// Fragment slots per pixel in `fragments` (at most the context's `max_layers`).
+    pub layers: u32,
+    pub lens: ThinLens,
+    /// Per pixel `layers` slots of 4 words (red, green, blue, depth as f32 bits), front to back;
+    /// read only.
+    pub fragments: BufferId,
+    /// Slots used per pixel, one word each; read only.
+    pub counts: BufferId,
+    /// The result: 3 words (f32 red, green, blue) a pixel, row-major; written whole.
+    pub output: BufferId,
+}
+
+/// The context's own buffers.
+struct Buffers {
+    stats: BufferId,
+    sharp: BufferId,
+    /// Per merging step: cells and counts (steps may share a buffer; see `distinct_stage_buffers`).
+    cells: Vec<(BufferId, BufferId)>,
+    cell_offsets: BufferId,
+    tile_count: BufferId,
+    tile_base: BufferId,
+    tile_radius: BufferId,
+    copy: BufferId,
+    segments: BufferId,
+    dense: BufferId,
+    mask: BufferId,
+    keys: BufferId,
+    values: BufferId,
+    keys_sorted: BufferId,
+    values_sorted: BufferId,
+}
+
+/// A tiled-splatting context (see the [module docs](crate::frame)).
+pub struct SplatContext {
+    desc: SplatContextDesc,
+    /// The configured radius cap (px): the user's, or what `MAX_RINGS` rings reach.
+    radius_cap: f32,
+    merge_steps: u32,
+    list_entries: u64,
+    max_list: u32,
+    owned: Vec<BufferId>,
+    bytes: u64,
+    b: Buffers,
+    scan: ScanScratch,
+    sort: SegmentedSort,
+    /// The last recorded frame, for its report.
+    last: Option<SplatFrame>,
+}
+
+/// Checks the options against what the kernels support; returns the configured radius cap.
+pub fn check_options(o: &SplatOptions) -> Result<f32> {
+    let bad = |m: String| Err(Error::InvalidArgument(m));
+    if !TILE_SIZES.contains(&o.tile) {
+        return bad(format!("tile size {} is not one of {TILE_SIZES:?}", o.tile));
+    }
+    if !(o.merge_depth_ratio.is_finite() && o.merge_depth_ratio >= 1.0) {
+        return bad(format!("merge depth ratio must be a finite number >= 1, got {}", o.merge_depth_ratio));
+    }
+    if !(o.merge_color_tol.is_finite() && o.merge_color_tol >= 0.0 && o.merge_min_radius.is_finite() && o.merge_min_radius >= 0.0) {
+        return bad(format!("merge tolerances must be finite and >= 0 ({} and {})", o.merge_color_tol, o.merge_min_radius));
+    }
+    let ring_limit = (MAX_RINGS * o.tile) as f32;
+    match o.max_radius {
+        Some(r) if !(r.is_finite() && r >= 0.5) => bad(format!("max CoC radius must be at least 0.5 px, got {r}")),
+        Some(r) if r > ring_limit => bad(format!(
+            "a CoC radius cap of {r} px exceeds the {ring_limit} px that {MAX_RINGS} rings of {} px tiles reach: use larger tiles or a smaller cap",
+            o.tile
+        )),
+        Some(r) => Ok(r),
+        None => Ok(ring_limit),
+    }
+}
+
+/// Cells after `steps` merging steps: edge, slots per cell, and the grid.
+fn cells(width: u32, height: u32, layers: u32, steps: u32) -> (u32, u32, u32, u32) {
+    let edge = 1 << steps;
+    (edge, layers << (2 * steps), width.div_ceil(edge), height.div_ceil(edge))
+}
+
+impl SplatContext {
+    /// Creates the context: checks the options and bounds, and allocates every buffer.
+    pub fn new(backend: &mut dyn Backend, desc: &SplatContextDesc) -> Result<Self> {
+        let radius_cap = check_options(&desc.options)?;
+        let (w, h, layers) = (desc.max_width, desc.max_height, desc.max_layers);
+        if w == 0 || h == 0 || layers == 0 {
+            return Err(Error::InvalidArgument(format!("a splatting context for an empty {w}x{h} extent with {layers} layers")));
+        }
+        if w > MAX_EDGE || h > MAX_EDGE {
+            return Err(Error::TooLarge { what: "image edge for splatting (px)".into(), size: w.max(h) as u64, limit: MAX_EDGE as u64 });
+        }
+        let tile = desc.options.tile;
+        let pixels = w as u64 * h as u64;
+        let tiles = w.div_ceil(tile) as u64 * h.div_ceil(tile) as u64;
+        let slots = pixels * layers as u64;
+        let max_words = backend.limits().max_buffer_bytes / 4;
+        if 4 * slots > max_words {
+            return Err(Error::TooLarge { what: "fragment slots of the input (words)".into(), size: 4 * slots, limit: max_words });
+        }
+        let list_entries = desc.list_entries.unwrap_or((DEFAULT_LIST_ENTRIES_PER_PIXEL * pixels).max(MIN_LIST_ENTRIES));
+        if list_entries == 0 || list_entries > MAX_LIST_ENTRIES.min(max_words) {
+            return Err(Error::TooLarge {
+                what: "tile list entries (merge fragments with --merge 2x2 or 4x4, or render smaller)".into(),
+                size: list_entries,
+                limit: MAX_LIST_ENTRIES.min(max_words),
+            });
+        }
+        // The pool's bump pointer must not wrap: every tile adds at most `max_list` to it.
+        let max_list = desc.max_list.unwrap_or(DEFAULT_MAX_LIST).clamp(1, (u32::MAX as u64 / tiles).min(list_entries) as u32);
+        let merge_steps = desc.options.merge.steps();
+
+        let mut owned = Vec::new();
+        let mut bytes = 0u64;
+        let mut made = |backend: &mut dyn Backend, words: u64, label: &str| -> Result<BufferId> {
+            let b = backend.create_buffer(words.max(1), label)?;
+            owned.push(b);
+            bytes += 4 * words.max(1);
+            Ok(b)
+        };
+        let built = (|| {
+            let slot_words = (0..=merge_steps)
+                .map(|s| {
+                    let (_, cap, cx, cy) = cells(w, h, layers, s);
+                    4 * cx as u64 * cy as u64 * cap as u64
+                })
+                .max()
+                .unwrap_or(4 * slots);
+            let mut cell_bufs: Vec<(BufferId, BufferId)> = Vec::new();
+            for s in 0..=merge_steps {
+                let (_, _, cx, cy) = cells(w, h, layers, s);
+                // Step 2 reads step 1's cells and writes over step 0's, which nothing reads again.
+                let cells_buf = if s == 2 && !desc.distinct_stage_buffers {
+                    cell_bufs[0].0
+                } else {
+                    made(backend, slot_words, &format!("splat/cells-{s}"))?
+                };
+                let counts = made(backend, cx as u64 * cy as u64, &format!("splat/cell-counts-{s}"))?;
+                cell_bufs.push((cells_buf, counts));
+            }
+            let (_, _, fx, fy) = cells(w, h, layers, merge_steps);
+            let mask_words = desc.options.aperture.mask_words();
+            let b = Buffers {
+                stats: made(backend, stats::WORDS as u64, "splat/stats")?,
+                sharp: made(backend, 4 * pixels, "splat/sharp")?,
+                cells: cell_bufs,
+                cell_offsets: made(backend, fx as u64 * fy as u64, "splat/cell-offsets")?,
+                tile_count: made(backend, tiles, "splat/tile-count")?,
+                tile_base: made(backend, tiles, "splat/tile-base")?,
+                tile_radius: made(backend, tiles, "splat/tile-radius")?,
+                copy: made(backend, tiles, "splat/copy")?,
+                segments: made(backend, 2 * tiles, "splat/segments")?,
+                dense: made(backend, 4 * slots, "splat/dense")?,
+                mask: made(backend, mask_words.len() as u64, "splat/aperture-mask")?,
+                keys: made(backend, list_entries, "splat/keys")?,
+                values: made(backend, list_entries, "splat/values")?,
+                keys_sorted: made(backend, list_entries, "splat/keys-sorted")?,
+                values_sorted: made(backend, list_entries, "splat/values-sorted")?,
+            };
+            backend.write_buffer(b.mask, 0, &mask_words)?;
+            Ok(b)
+        })();
+        let b = match built {
+            Ok(b) => b,
+            Err(e) => {
+                owned.iter().for_each(|&id| backend.destroy_buffer(id));
+                return Err(e);
+            }
+        };
+        let scan = match ScanScratch::new(backend, tiles) {
+            Ok(s) => s,
+            Err(e) => {
+                owned.iter().for_each(|&id| backend.destroy_buffer(id));
+                return Err(e);
+            }
+        };
+        let sort = match SegmentedSort::new(backend, tiles as u32, list_entries as u32, max_list) {
+            Ok(s) => s,
+            Err(e) => {
+                scan.destroy(backend);
+                owned.iter().for_each(|&id| backend.destroy_buffer(id));
+                return Err(e);
+            }
+        };
+        bytes += scan.bytes() + sort.bytes();
+        Ok(SplatContext { desc: desc.clone(), radius_cap, merge_steps, list_entries, max_list, owned, bytes, b, scan, sort, last: None })
+    }
+
+    /// Frees every buffer. The backend must not be running the context's work.
+    pub fn destroy(self, backend: &mut dyn Backend) {
+        self.sort.destroy(backend);
+        self.scan.destroy(backend);
+        for id in self.owned {
+            backend.destroy_buffer(id);
+        }
+    }
+
+    pub fn desc(&self) -> &SplatContextDesc {
+        &self.desc
+    }
+
+    /// Device memory the context holds, in bytes.
+    pub fn device_bytes(&self) -> u64 {
+        self.bytes
+    }
+
+    /// The list pool's size (entries) and the longest list the sort handles.
+    pub fn list_bounds(&self) -> (u64, u32) {
+        (self.list_entries, self.max_list)
+    }
+
+    fn params(&self, f: &SplatFrame, step: u32) -> SplatParams {
+        let o = &self.desc.options;
+        let (cell, _, cells_x, cells_y) = cells(f.width, f.height, f.layers, step);
+        SplatParams {
+            width: f.width,
+            height: f.height,
+            layers: f.layers,
+            cell,
+            cells_x,
+            cells_y,
+            tile: o.tile,
+            tiles_x: f.width.div_ceil(o.tile),
+            tiles_y: f.height.div_ceil(o.tile),
+            // The device plan replaces these three (`dof_shaders::splat::plan::planned`).
+            rings: MAX_RINGS,
+            flags: if o.umbra_merge { FLAG_UMBRA_MERGE } else { 0 },
+            max_radius: self.radius_cap,
+            merge_min_radius: o.merge_min_radius,
+            merge_depth_ratio: o.merge_depth_ratio,
+            merge_color_tol: o.merge_color_tol,
+            color_scale: 1.0,
+            lens: f.lens,
+            aperture: o.aperture.kernel,
+            list_capacity: self.list_entries as u32,
+            max_list: self.max_list,
+        }
+    }
+
+    /// Checks a frame against the context's bounds and the sizes of the caller's buffers.
+    fn check(&self, backend: &dyn Backend, f: &SplatFrame) -> Result<()> {
+        let d = &self.desc;
+        if f.width == 0 || f.height == 0 || f.layers == 0 {
+            return Err(Error::InvalidArgument(format!("an empty {}x{} frame with {} layers", f.width, f.height, f.layers)));
+        }
+        if f.width > d.max_width || f.height > d.max_height || f.layers > d.max_layers {
+            return Err(Error::InvalidArgument(format!(
+                "a {}x{} frame with {} layers exceeds the context's {}x{} with {} (resize the context)",
+                f.width, f.height, f.layers, d.max_width, d.max_height, d.max_layers
+            )));
+        }
+        if !f.lens.is_valid() {
+            return Err(Error::InvalidArgument(format!("invalid lens: {:?}", f.lens)));
+        }
+        let pixels = f.width as u64 * f.height as u64;
+        for (what, id, words) in
+            [("fragments", f.fragments, 4 * pixels * f.layers as u64), ("counts", f.counts, pixels), ("output", f.output, 3 * pixels)]
+        {
+            let have = backend.buffer_words(id)?;
+            if have < words {
+                return Err(Error::InvalidArgument(format!("the {what} buffer holds {have} words, the frame needs {words}")));
+            }
+        }
+        Ok(())
+    }
+
+    /// Grows (or shrinks) the context to a new maximum extent: frees and reallocates its buffers.
+    /// Frames within the current maximum need no resize.
+    pub fn resize(&mut self, backend: &mut dyn Backend, max_width: u32, max_height: u32, max_layers: u32) -> Result<()> {
+        let desc = SplatContextDesc { max_width, max_height, max_layers, ..self.desc.clone() };
+        let fresh = SplatContext::new(backend, &desc)?;
+        let old = std::mem::replace(self, fresh);
+        old.destroy(backend);
+        Ok(())
+    }
+
+    /// Records one frame. Nothing is allocated, read back or submitted; on Vulkan the commands go
+    /// into the backend's current command buffer (its own, or the caller's between
+    /// `begin_external` and `end_external`).
+    pub fn record(&mut self, backend: &mut dyn Backend, f: &SplatFrame) -> Result<()> {
+        self.check(backend, f)?;
+        let b = &self.b;
+        let pixels = f.width as u64 * f.height as u64;
+        let tiles_x = f.width.div_ceil(self.desc.options.tile);
+        let tiles_y = f.height.div_ceil(self.desc.options.tile);
+        let tiles = tiles_x as u64 * tiles_y as u64;
+        let last = self.merge_steps;
+        let fin = push_words(&self.params(f, last));
+        let first = push_words(&self.params(f, 0));
+        let tile_grid = [tiles_x, tiles_y, 1];
+        let pixel_groups = groups_for(&PACK, pixels);
+
+        backend.fill(b.stats, 0, stats::WORDS as u64, 0, "splat/clear")?;
+        backend.dispatch(&PLAN_REDUCE, pixel_groups, &[f.fragments, f.counts, b.stats], &first, "splat/plan")?;
+        backend.dispatch(&PLAN_FINISH, [1, 1, 1], &[b.stats], &fin, "splat/plan")?;
+        let (cells0, counts0) = b.cells[0];
+        backend.dispatch(&PACK, pixel_groups, &[f.fragments, f.counts, cells0, counts0, b.sharp, b.stats], &first, "splat/pack")?;
+        for step in 0..last {
+            let (ci, ni) = b.cells[step as usize];
+            let (co, no) = b.cells[step as usize + 1];
+            let (_, _, ox, oy) = cells(f.width, f.height, f.layers, step + 1);
+            let label = if step == 0 { "splat/merge-2x2" } else { "splat/merge-4x4" };
+            let groups = groups_for(&MERGE, ox as u64 * oy as u64);
+            backend.dispatch(&MERGE, groups, &[ci, ni, co, no, b.stats], &push_words(&self.params(f, step)), label)?;
+        }
+        let (cells_f, counts_f) = b.cells[last as usize];
+        let count_bufs = [cells_f, counts_f, b.cell_offsets, b.tile_count, b.tile_base, b.tile_radius, b.stats];
+        backend.dispatch(&TILE_COUNT, tile_grid, &count_bufs, &fin, "splat/tile-count")?;
+        self.scan.record(backend, b.tile_base, 0, tiles)?;
+        backend.dispatch(&COMPACT, tile_grid, &[cells_f, counts_f, b.cell_offsets, b.tile_base, b.dense], &fin, "splat/compact")?;
+        backend.dispatch(&ALLOC, groups_for(&ALLOC, tiles), &[b.tile_count, b.tile_radius, b.copy, b.stats], &fin, "splat/alloc")?;
+        let bin_bufs = [b.dense, b.tile_count, b.tile_base, b.tile_radius, b.copy, b.keys, b.values, b.segments, b.stats];
+        backend.dispatch(&BIN, tile_grid, &bin_bufs, &fin, "splat/bin")?;
+        self.sort.record(backend, b.segments, tiles as u32, b.keys, b.values, b.keys_sorted, b.values_sorted)?;
+        let acc_bufs = [b.sharp, b.dense, b.values_sorted, b.segments, b.copy, f.output, b.stats, b.mask];
+        let sub = self.desc.options.tile / block_for(self.desc.options.tile);
+        backend.dispatch(&ACCUMULATE, [tiles_x * sub, tiles_y * sub, 1], &acc_bufs, &fin, "splat/accumulate")?;
+        self.last = Some(*f);
+        Ok(())
+    }
+
+    /// What the last recorded frame did and left out. Reads the context's statistics back, so call
+    /// it only once that frame's work has completed (standalone: after `submit`). The input-side
+    /// counts that need the host image (`input_fragments`) are left at zero.
+    pub fn report(&self, backend: &mut dyn Backend) -> Result<SplatReport> {
+        let f = self.last.ok_or_else(|| Error::InvalidArgument("no frame has been recorded yet".into()))?;
+        let tiles_x = f.width.div_ceil(self.desc.options.tile);
+        let tiles_y = f.height.div_ceil(self.desc.options.tile);
+        let tiles = tiles_x as u64 * tiles_y as u64;
+        let st = backend.read_buffer(self.b.stats, 0, stats::WORDS as u64)?;
+        let seg = backend.read_buffer(self.b.segments, 0, 2 * tiles)?;
+        let list_lengths: Vec<u32> = seg.chunks_exact(2).map(|s| s[1]).collect();
+        let c = |i: u32| st[i as usize];
+        let pixels = f.width as u64 * f.height as u64;
+        let plan = Plan {
+            width: f.width,
+            height: f.height,
+            layers: f.layers,
+            tile: self.desc.options.tile,
+            tiles_x,
+            tiles_y,
+            block: block_for(self.desc.options.tile),
+            max_coc_radius: f32::from_bits(c(stats::WIDEST)),
+            radius_cap: f32::from_bits(c(stats::RADIUS_CAP)),
+            rings: c(stats::RINGS),
+            color_scale: f32::from_bits(c(stats::COLOR_SCALE)),
+            merge_steps: self.merge_steps,
+        };
+        Ok(SplatReport {
+            pixels,
+            input_fragments: 0,
+            full_layer_slots: pixels * f.layers as u64,
+            dropped: c(stats::DROPPED),
+            clamped: c(stats::CLAMPED),
+            sky: c(stats::SKY),
+            sharp_pixels: c(stats::SHARP),
+            hidden_sharp: c(stats::HIDDEN_SHARP),
+            fragments: c(stats::TILED) as u64,
+            merged: c(stats::MERGED),
+            merged_inputs: c(stats::MERGED_INPUTS),
+            umbra_skipped: c(stats::UMBRA_SKIPPED),
+            capped: c(stats::CAPPED),
+            tiles: tiles as u32,
+            copy_tiles: c(stats::COPY_TILES),
+            list_entries: list_lengths.iter().map(|&n| n as u64).sum(),
+            list_lengths,
+            list_capacity: self.list_entries,
+            overflow_tiles: c(stats::OVERFLOW_TILES),
+            overflow_entries: c(stats::OVERFLOW_ENTRIES) as u64,
+            longest_list_wanted: c(stats::MAX_CAPACITY),
+            list_top: c(stats::LIST_TOP) as u64,
+            sort: self.sort.stats(backend)?,
+            early_out_pixels: c(stats::EARLY_OUT),
+            skipped_entries: c(stats::SKIPPED_ENTRIES),
+            buffer_bytes: self.bytes,
+            plan: Some(plan),
+        })
+    }
+
+    /// The context's buffers of each stage, for tests that compare backends stage by stage.
+    pub(crate) fn stage_buffers(&self) -> StageBuffers {
+        let b = &self.b;
+        StageBuffers {
+            cells: b.cells.clone(),
+            tile_count: b.tile_count,
+            dense: b.dense,
+            segments: b.segments,
+            keys: b.keys,
+            values: b.values,
+            keys_sorted: b.keys_sorted,
+            values_sorted: b.values_sorted,
+        }
+    }
+}
+
+/// See [`SplatContext::stage_buffers`].
+pub(crate) struct StageBuffers {
+    pub cells: Vec<(BufferId, BufferId)>,
+    pub tile_count: BufferId,
+    pub dense: BufferId,
+    pub segments: BufferId,
+    pub keys: BufferId,
+    pub values: BufferId,
+    pub keys_sorted: BufferId,
+    pub values_sorted: BufferId,
+}

@@ -3,7 +3,7 @@
 //! barriers (see `dof_shaders::exec`). Buffers are `[AtomicU32]`, so parallel workgroups never alias
 //! mutable memory.
 
-use super::{Backend, BackendKind, BufferId, CommandTime, Limits, check_dispatch};
+use super::{Backend, BackendCounters, BackendKind, BufferId, CommandTime, Limits, check_dispatch};
 use crate::error::{Error, Result};
 use dof_shaders::KernelDesc;
 use dof_shaders::exec::CpuDispatch;
@@ -20,6 +20,7 @@ pub struct CpuBackend {
     limits: Limits,
     buffers: Vec<Option<Box<[AtomicU32]>>>,
     times: Vec<CommandTime>,
+    counters: BackendCounters,
 }
 
 impl Default for CpuBackend {
@@ -45,6 +46,7 @@ impl CpuBackend {
             },
             buffers: Vec::new(),
             times: Vec::new(),
+            counters: BackendCounters::default(),
         }
     }
 
@@ -120,12 +122,15 @@ impl Backend for CpuBackend {
             self.buffers.push(None);
         }
         self.buffers[slot] = Some(buffer);
+        self.counters.add_buffer(words * 4);
         Ok(BufferId(slot as u32))
     }
 
     fn destroy_buffer(&mut self, buffer: BufferId) {
         if let Some(slot) = self.buffers.get_mut(buffer.0 as usize) {
-            *slot = None;
+            if let Some(b) = slot.take() {
+                self.counters.remove_buffer(b.len() as u64 * 4);
+            }
         }
     }
 
@@ -134,14 +139,18 @@ impl Backend for CpuBackend {
     }
 
     fn write_buffer(&mut self, buffer: BufferId, offset_words: u64, data: &[u32]) -> Result<()> {
-        for (dst, &v) in self.range(buffer, offset_words, data.len() as u64)?.iter().zip(data) {
+        let range = self.range(buffer, offset_words, data.len() as u64)?;
+        for (dst, &v) in range.iter().zip(data) {
             dst.store(v, Relaxed);
         }
+        self.counters.uploads += 1;
         Ok(())
     }
 
     fn read_buffer(&mut self, buffer: BufferId, offset_words: u64, words: u64) -> Result<Vec<u32>> {
-        Ok(self.range(buffer, offset_words, words)?.iter().map(|w| w.load(Relaxed)).collect())
+        let words = self.range(buffer, offset_words, words)?.iter().map(|w| w.load(Relaxed)).collect();
+        self.counters.readbacks += 1;
+        Ok(words)
     }
 
     fn fill(&mut self, buffer: BufferId, offset_words: u64, words: u64, value: u32, label: &str) -> Result<()> {
@@ -165,13 +174,19 @@ impl Backend for CpuBackend {
         push: &[u32],
         label: &str,
     ) -> Result<()> {
-        let a = self.read_buffer(args, args_offset_words, 3)?;
-        let groups = [a[0], a[1], a[2]];
+        // Read in place: the device reads its arguments itself, so this is no host readback.
+        let a = self.range(args, args_offset_words, 3)?;
+        let groups = [a[0].load(Relaxed), a[1].load(Relaxed), a[2].load(Relaxed)];
         check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), push.len())?;
         self.run(kernel, groups, buffers, push, label)
     }
 
     fn submit(&mut self) -> Result<Vec<CommandTime>> {
+        self.counters.submissions += 1;
         Ok(std::mem::take(&mut self.times))
+    }
+
+    fn counters(&self) -> BackendCounters {
+        self.counters
     }
 }

@@ -6,6 +6,10 @@
 //! each one seeing every write of the ones before it (the Vulkan backend puts a full memory barrier
 //! between commands); `submit` runs what was recorded, waits, and returns one timing per dispatch.
 //! `write_buffer` and `read_buffer` act on the host: they first submit anything still recorded.
+//!
+//! Images (the caller's own, on Vulkan) are copied into and out of buffers by `copy_image_to_buffer`
+//! and `copy_buffer_to_image`, recorded like any other command; a backend that has no images refuses
+//! them with an error.
 
 use crate::error::{Error, Result};
 use dof_shaders::{DrawDesc, KernelDesc};
@@ -14,7 +18,7 @@ pub mod cpu;
 pub mod vulkan;
 
 pub use cpu::CpuBackend;
-pub use vulkan::{VulkanBackend, VulkanOptions};
+pub use vulkan::{RawDevice, RawOptions, RequiredFeatures, VulkanBackend, VulkanOptions};
 
 /// A buffer of `u32` words owned by a backend.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -48,6 +52,148 @@ impl std::fmt::Display for BackendKind {
             BackendKind::Cpu => "cpu",
             BackendKind::Vulkan => "vulkan",
         })
+    }
+}
+
+/// What a backend has done since it was made: the numbers a frame benchmark reports per frame (the
+/// difference of two snapshots, [`BackendCounters::since`]). Exact on both backends.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct BackendCounters {
+    /// Successful `create_buffer` calls (imported buffers do not count, nor the Vulkan backend's
+    /// internal staging buffers and draw targets).
+    pub allocations: u64,
+    /// Queue submissions, hidden ones included: on Vulkan every `vkQueueSubmit` (by `submit`, by
+    /// `read_buffer`/`write_buffer` transfers, by the flush of pending work before an external
+    /// recording); on the CPU every `submit` call.
+    pub submissions: u64,
+    /// `read_buffer` calls that read something back (past the argument checks).
+    pub readbacks: u64,
+    /// `write_buffer` calls that wrote something (past the argument checks).
+    pub uploads: u64,
+    /// Bytes of the buffers the backend owns now (`4 · words` of each live `create_buffer` buffer;
+    /// imports, staging and draw targets excluded).
+    pub device_bytes: u64,
+    /// The most `device_bytes` has been.
+    pub peak_device_bytes: u64,
+}
+
+impl BackendCounters {
+    /// The counts since `earlier` (an older snapshot of the same backend); `device_bytes` and
+    /// `peak_device_bytes` stay as they are now.
+    pub fn since(&self, earlier: &BackendCounters) -> BackendCounters {
+        BackendCounters {
+            allocations: self.allocations - earlier.allocations,
+            submissions: self.submissions - earlier.submissions,
+            readbacks: self.readbacks - earlier.readbacks,
+            uploads: self.uploads - earlier.uploads,
+            device_bytes: self.device_bytes,
+            peak_device_bytes: self.peak_device_bytes,
+        }
+    }
+
+    /// Books a buffer of `bytes` the backend now owns.
+    pub(crate) fn add_buffer(&mut self, bytes: u64) {
+        self.allocations += 1;
+        self.device_bytes += bytes;
+        self.peak_device_bytes = self.peak_device_bytes.max(self.device_bytes);
+    }
+
+    /// Books a buffer of `bytes` the backend no longer owns.
+    pub(crate) fn remove_buffer(&mut self, bytes: u64) {
+        self.device_bytes = self.device_bytes.saturating_sub(bytes);
+    }
+}
+
+/// Formats an image can be copied in and out of a buffer as. Buffers hold 4-byte words; pixels are
+/// packed row after row, top row first, with no padding:
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ImageFormat {
+    /// `R32G32B32A32_SFLOAT`: 4 words a pixel, the bits of R, G, B, A.
+    Rgba32Float,
+    /// `R32_SFLOAT`: 1 word a pixel.
+    R32Float,
+    /// `R16G16B16A16_SFLOAT`: 2 words a pixel, the IEEE half bits of R in the low and G in the high
+    /// half of the first word, B and A likewise in the second (a kernel converts them).
+    Rgba16Float,
+}
+
+impl ImageFormat {
+    pub fn words_per_pixel(self) -> u64 {
+        match self {
+            ImageFormat::Rgba32Float => 4,
+            ImageFormat::R32Float => 1,
+            ImageFormat::Rgba16Float => 2,
+        }
+    }
+
+    /// The Vulkan format.
+    pub fn vk_format(self) -> ash::vk::Format {
+        use ash::vk::Format;
+        match self {
+            ImageFormat::Rgba32Float => Format::R32G32B32A32_SFLOAT,
+            ImageFormat::R32Float => Format::R32_SFLOAT,
+            ImageFormat::Rgba16Float => Format::R16G16B16A16_SFLOAT,
+        }
+    }
+}
+
+/// A 2D image the caller owns, and the synchronisation state it is in, for `copy_image_to_buffer`
+/// and `copy_buffer_to_image`. The state is in Vulkan terms (the only backend with images); the copy
+/// covers mip level 0, array layer 0, colour aspect, the whole `extent`.
+///
+/// The backend records a barrier from (`layout`, `stage`, `access`) to the transfer layout, the copy,
+/// and a barrier from the transfer to `final_layout` that makes the copy visible to every later
+/// access (all commands, memory read and write). The backend's own earlier copies are covered too, so
+/// an image the backend left in `final_layout` can be declared as `layout = final_layout` with no
+/// stage or access.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ImageRef {
+    /// The raw handle (`vk::Image::as_raw()`); only [`ImageRef::vulkan`] sets it.
+    pub(crate) handle: u64,
+    pub format: ImageFormat,
+    /// Width and height in pixels.
+    pub extent: [u32; 2],
+    /// The layout the image is in when the copy runs. UNDEFINED discards its contents: allowed only
+    /// when copying into it.
+    pub layout: ash::vk::ImageLayout,
+    /// The stages of the caller's last access, which the copy waits for (may be empty).
+    pub stage: ash::vk::PipelineStageFlags,
+    /// The caller's last accesses (its writes must be named here to be made visible to the copy).
+    pub access: ash::vk::AccessFlags,
+    /// The layout to leave the image in (not UNDEFINED or PREINITIALIZED).
+    pub final_layout: ash::vk::ImageLayout,
+}
+
+impl ImageRef {
+    /// A Vulkan image last accessed at `stage` with `access` in `layout`, to be left in `final_layout`.
+    ///
+    /// # Safety
+    ///
+    /// `image` is a live 2D image of the device the backend runs on, with `format`, at least
+    /// `extent`, one sample, TRANSFER_SRC usage if it is copied from and TRANSFER_DST usage if it is
+    /// copied into, and queue family ownership (if exclusive) on the backend's queue family; it is in
+    /// `layout` when the recorded copy runs, and stays alive until the copy completed.
+    pub unsafe fn vulkan(
+        image: ash::vk::Image,
+        format: ImageFormat,
+        extent: [u32; 2],
+        layout: ash::vk::ImageLayout,
+        stage: ash::vk::PipelineStageFlags,
+        access: ash::vk::AccessFlags,
+        final_layout: ash::vk::ImageLayout,
+    ) -> Self {
+        use ash::vk::Handle;
+        ImageRef { handle: image.as_raw(), format, extent, layout, stage, access, final_layout }
+    }
+
+    /// The raw Vulkan handle.
+    pub fn handle(&self) -> u64 {
+        self.handle
+    }
+
+    /// Words the image takes in a buffer.
+    pub fn words(&self) -> u64 {
+        self.format.words_per_pixel() * self.extent[0] as u64 * self.extent[1] as u64
     }
 }
 
@@ -114,21 +260,52 @@ pub trait Backend {
         push: &[u32],
         label: &str,
     ) -> Result<()> {
-        check_draw(self, draw, args, buffers, target, size, push)?;
-        self.fill(target, 0, 4 * size[0] as u64 * size[1] as u64, 0, label)?;
-        let mut bound = buffers.to_vec();
-        bound.extend([args, target]);
-        if let Some(prepass) = draw.fallback_prepass {
-            self.dispatch(prepass, [dof_shaders::kernel::PREPASS_GROUPS, 1, 1], &bound, push, label)?;
-        }
-        let groups = [size[0].div_ceil(draw.fallback_tile), size[1].div_ceil(draw.fallback_tile), 1];
-        self.dispatch(draw.fallback, groups, &bound, push, label)
+        draw_fallback(self, draw, args, buffers, target, size, push, label)
+    }
+    /// Copies the whole of `image` into `buffer[offset_words ..]` (packed as [`ImageFormat`] says);
+    /// recorded like `fill`. `offset_words` must be a multiple of the format's words per pixel.
+    /// Backends without images refuse it.
+    fn copy_image_to_buffer(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, label: &str) -> Result<()> {
+        let _ = (image, buffer, offset_words, label);
+        Err(Error::InvalidArgument(format!("the {} backend has no images: copy_image_to_buffer needs the Vulkan backend", self.kind())))
+    }
+    /// Copies `buffer[offset_words ..]` into the whole of `image`; the reverse of
+    /// `copy_image_to_buffer`. Backends without images refuse it.
+    fn copy_buffer_to_image(&mut self, buffer: BufferId, offset_words: u64, image: ImageRef, label: &str) -> Result<()> {
+        let _ = (image, buffer, offset_words, label);
+        Err(Error::InvalidArgument(format!("the {} backend has no images: copy_buffer_to_image needs the Vulkan backend", self.kind())))
     }
     fn submit(&mut self) -> Result<Vec<CommandTime>>;
+    /// Allocations, submissions, transfers and memory so far (see [`BackendCounters`]).
+    fn counters(&self) -> BackendCounters;
     /// Messages from driver-side checking (the validation layer on Vulkan) since the last call.
     fn take_diagnostics(&mut self) -> Vec<String> {
         Vec::new()
     }
+}
+
+/// A draw through its compute fallback (what `draw_indirect` does on backends without a graphics
+/// pipeline).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn draw_fallback<B: Backend + ?Sized>(
+    backend: &mut B,
+    draw: &'static DrawDesc,
+    args: BufferId,
+    buffers: &[BufferId],
+    target: BufferId,
+    size: [u32; 2],
+    push: &[u32],
+    label: &str,
+) -> Result<()> {
+    check_draw(backend, draw, args, buffers, target, size, push)?;
+    backend.fill(target, 0, 4 * size[0] as u64 * size[1] as u64, 0, label)?;
+    let mut bound = buffers.to_vec();
+    bound.extend([args, target]);
+    if let Some(prepass) = draw.fallback_prepass {
+        backend.dispatch(prepass, [dof_shaders::kernel::PREPASS_GROUPS, 1, 1], &bound, push, label)?;
+    }
+    let groups = [size[0].div_ceil(draw.fallback_tile), size[1].div_ceil(draw.fallback_tile), 1];
+    backend.dispatch(draw.fallback, groups, &bound, push, label)
 }
 
 /// Checks a draw against its declaration and its buffers' sizes (both backends call it).

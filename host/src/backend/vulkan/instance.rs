@@ -16,13 +16,20 @@ pub const DEVICE_ENV: &str = "DOF_VULKAN_DEVICE";
 /// Messages the validation layer reported, shared with the debug callback.
 pub(super) type MessageLog = Arc<Mutex<Vec<String>>>;
 
-/// The loader, the instance and (with validation) the debug messenger. Dropping it destroys the
-/// messenger and the instance; the log outlives both because it is a field dropped after `drop`.
+/// The device extensions the backend uses (the caller's device must enable them, see
+/// `VulkanBackend::from_raw`).
+pub(super) const REQUIRED_EXTENSIONS: [&CStr; 1] = [vk::KHR_PUSH_DESCRIPTOR_NAME];
+
+/// The loader, the instance and (with validation) the debug messenger. Dropping an instance the
+/// backend made destroys the messenger and the instance; the log outlives both because it is a field
+/// dropped after `drop`. A caller's instance (`borrowed`) is left alone.
 pub(super) struct InstanceCtx {
     pub entry: ash::Entry,
     pub instance: ash::Instance,
     debug: Option<(ash::ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>,
     pub messages: MessageLog,
+    /// Whether the backend created the instance (and destroys it).
+    owned: bool,
 }
 
 impl InstanceCtx {
@@ -73,7 +80,7 @@ impl InstanceCtx {
             }
             result => Error::Vulkan { call: "vkCreateInstance", result },
         })?;
-        let mut ctx = InstanceCtx { entry, instance, debug: None, messages };
+        let mut ctx = InstanceCtx { entry, instance, debug: None, messages, owned: true };
 
         if validation {
             let loader = ash::ext::debug_utils::Instance::new(&ctx.entry, &ctx.instance);
@@ -85,6 +92,11 @@ impl InstanceCtx {
         Ok(ctx)
     }
 
+    /// The caller's instance: no messenger (the caller owns its own), never destroyed here.
+    pub fn borrowed(entry: ash::Entry, instance: ash::Instance) -> Self {
+        InstanceCtx { entry, instance, debug: None, messages: Arc::default(), owned: false }
+    }
+
     pub fn validation(&self) -> bool {
         self.debug.is_some()
     }
@@ -92,6 +104,9 @@ impl InstanceCtx {
 
 impl Drop for InstanceCtx {
     fn drop(&mut self) {
+        if !self.owned {
+            return;
+        }
         // SAFETY: every child object was destroyed by the owners dropped before this one.
         unsafe {
             if let Some((loader, messenger)) = self.debug.take() {
@@ -169,7 +184,7 @@ pub(super) struct Features {
 }
 
 impl Features {
-    fn needed_by(module: &ModuleInfo) -> Self {
+    pub fn needed_by(module: &ModuleInfo) -> Self {
         Features {
             float64: module.has(cap::FLOAT64),
             int64: module.has(cap::INT64),
@@ -178,6 +193,20 @@ impl Features {
             memory_model: module.has(cap::VULKAN_MEMORY_MODEL),
             memory_model_device_scope: module.has(cap::VULKAN_MEMORY_MODEL_DEVICE_SCOPE),
         }
+    }
+
+    /// The core and Vulkan 1.2 feature structs enabling exactly these features (to chain into
+    /// `VkDeviceCreateInfo`).
+    pub fn structs(&self) -> (vk::PhysicalDeviceFeatures, vk::PhysicalDeviceVulkan12Features<'static>) {
+        let core = vk::PhysicalDeviceFeatures::default()
+            .shader_float64(self.float64)
+            .shader_int64(self.int64)
+            .shader_int16(self.int16);
+        let v12 = vk::PhysicalDeviceVulkan12Features::default()
+            .shader_int8(self.int8)
+            .vulkan_memory_model(self.memory_model)
+            .vulkan_memory_model_device_scope(self.memory_model_device_scope);
+        (core, v12)
     }
 
     /// The needed features the device lacks, by name.
@@ -209,7 +238,7 @@ pub(super) fn candidates(instance: &ash::Instance, module: &ModuleInfo) -> Resul
     devices.into_iter().enumerate().map(|(index, pd)| describe(instance, pd, index, features)).collect()
 }
 
-fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize, features: Features) -> Result<Candidate> {
+pub(super) fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize, features: Features) -> Result<Candidate> {
     // SAFETY: queries on a physical device enumerated from this instance; the chained structs are
     // only those the device's API version (or its extensions) defines.
     unsafe {
@@ -274,8 +303,8 @@ fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: usize, feat
             Some(format!("supports only Vulkan {} (the kernels need 1.2)", version_string(api)))
         } else if queue_family.is_none() {
             Some("has no compute queue".to_string())
-        } else if !has_ext(vk::KHR_PUSH_DESCRIPTOR_NAME) {
-            Some("lacks the device extension VK_KHR_push_descriptor".to_string())
+        } else if let Some(ext) = REQUIRED_EXTENSIONS.iter().find(|e| !has_ext(e)) {
+            Some(format!("lacks the device extension {}", ext.to_string_lossy()))
         } else if !missing.is_empty() {
             Some(format!("lacks features the kernels use: {}", missing.join(", ")))
         } else {
@@ -378,14 +407,19 @@ fn all_names(all: &[Candidate]) -> String {
     all.iter().map(|c| format!("{}: {}", c.info.index, c.info.name)).collect::<Vec<_>>().join(", ")
 }
 
-/// The logical device and its queue. Dropping it waits for the device and destroys it, so every
-/// object made from it must be gone first.
+/// The logical device and its queue. Dropping a device the backend made waits for it and destroys
+/// it, so every object made from it must be gone first; a caller's device (`borrowed`) is left alone.
 pub(super) struct DeviceCtx {
     pub device: ash::Device,
     pub queue: vk::Queue,
+    pub queue_family: u32,
+    /// Whether the queue family supports graphics (draws, and graphics stages in barriers).
+    pub graphics: bool,
     pub push_descriptor: ash::khr::push_descriptor::Device,
     /// Names objects for validation messages, with validation only.
     pub debug_utils: Option<ash::ext::debug_utils::Device>,
+    /// Whether the backend created the device (and destroys it).
+    owned: bool,
 }
 
 impl DeviceCtx {
@@ -393,16 +427,8 @@ impl DeviceCtx {
         let family = candidate.queue_family.ok_or_else(|| Error::NoVulkan("the device has no compute queue".into()))?;
         let priorities = [1.0f32];
         let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
-        let extensions = [vk::KHR_PUSH_DESCRIPTOR_NAME.as_ptr()];
-        let f = candidate.features;
-        let core = vk::PhysicalDeviceFeatures::default()
-            .shader_float64(f.float64)
-            .shader_int64(f.int64)
-            .shader_int16(f.int16);
-        let mut v12 = vk::PhysicalDeviceVulkan12Features::default()
-            .shader_int8(f.int8)
-            .vulkan_memory_model(f.memory_model)
-            .vulkan_memory_model_device_scope(f.memory_model_device_scope);
+        let extensions = REQUIRED_EXTENSIONS.map(CStr::as_ptr);
+        let (core, mut v12) = candidate.features.structs();
         let info = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
             .enabled_extension_names(&extensions)
@@ -414,7 +440,29 @@ impl DeviceCtx {
         let queue = unsafe { device.get_device_queue(family, 0) };
         let push_descriptor = ash::khr::push_descriptor::Device::new(&instance.instance, &device);
         let debug_utils = instance.validation().then(|| ash::ext::debug_utils::Device::new(&instance.instance, &device));
-        Ok(DeviceCtx { device, queue, push_descriptor, debug_utils })
+        let graphics = queue_flags(&instance.instance, candidate.physical, family).contains(vk::QueueFlags::GRAPHICS);
+        Ok(DeviceCtx { device, queue, queue_family: family, graphics, push_descriptor, debug_utils, owned: true })
+    }
+
+    /// The caller's device and queue, never destroyed here. `debug_names` names the backend's objects
+    /// through VK_EXT_debug_utils (which the caller's instance must have enabled).
+    pub fn borrowed(
+        instance: &InstanceCtx,
+        physical: vk::PhysicalDevice,
+        device: ash::Device,
+        queue_family: u32,
+        queue: vk::Queue,
+        debug_names: bool,
+    ) -> Self {
+        let push_descriptor = ash::khr::push_descriptor::Device::new(&instance.instance, &device);
+        let debug_utils = debug_names.then(|| ash::ext::debug_utils::Device::new(&instance.instance, &device));
+        let graphics = queue_flags(&instance.instance, physical, queue_family).contains(vk::QueueFlags::GRAPHICS);
+        DeviceCtx { device, queue, queue_family, graphics, push_descriptor, debug_utils, owned: false }
+    }
+
+    /// Whether the backend created the device (and destroys it).
+    pub fn owned(&self) -> bool {
+        self.owned
     }
 
     /// Gives `object` a name in validation messages (a no-op without validation).
@@ -428,10 +476,25 @@ impl DeviceCtx {
 
 impl Drop for DeviceCtx {
     fn drop(&mut self) {
+        if !self.owned {
+            return;
+        }
         // SAFETY: the owners of every object made from the device are dropped before this one.
         unsafe {
             let _ = self.device.device_wait_idle();
             self.device.destroy_device(None);
         }
     }
+}
+
+/// The capabilities of queue family `family` (empty if there is no such family).
+pub(super) fn queue_flags(instance: &ash::Instance, physical: vk::PhysicalDevice, family: u32) -> vk::QueueFlags {
+    queue_family(instance, physical, family).map_or(vk::QueueFlags::empty(), |f| f.queue_flags)
+}
+
+/// The properties of queue family `family`, if the device has it.
+pub(super) fn queue_family(instance: &ash::Instance, physical: vk::PhysicalDevice, family: u32) -> Option<vk::QueueFamilyProperties> {
+    // SAFETY: a query on a physical device of this instance.
+    let families = unsafe { instance.get_physical_device_queue_family_properties(physical) };
+    families.get(family as usize).copied()
 }

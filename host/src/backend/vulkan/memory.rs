@@ -1,10 +1,15 @@
 //! Buffers and their memory, through gpu-allocator: the device-local storage buffers the kernels use
-//! and the host-visible staging buffers `write_buffer`/`read_buffer` copy through.
+//! and the host-visible staging buffers `write_buffer`/`read_buffer` copy through. The allocator is
+//! shared (`Arc<Mutex<_>>`) so a caller's own allocator can serve the backend too.
 
 use crate::error::{Error, Result, VkContext};
 use ash::vk;
 use gpu_allocator::MemoryLocation;
 use gpu_allocator::vulkan::{Allocation, AllocationCreateDesc, AllocationScheme, Allocator};
+use std::sync::{Arc, Mutex};
+
+/// The allocator the backend allocates from: its own, or the caller's.
+pub type SharedAllocator = Arc<Mutex<Allocator>>;
 
 /// Largest staging buffer; bigger transfers go through it in pieces.
 pub(super) const STAGING_CHUNK_BYTES: u64 = 64 << 20;
@@ -82,10 +87,13 @@ impl GpuBuffer {
     }
 }
 
-/// A storage buffer as the backend tracks it.
+/// A storage buffer as the backend tracks it: one it made, or one the caller imported.
 pub(super) struct StorageBuffer {
-    pub gpu: GpuBuffer,
+    pub handle: vk::Buffer,
     pub words: u64,
+    /// The buffer and memory the backend owns; `None` for an imported buffer, which it never frees.
+    pub owned: Option<GpuBuffer>,
+    pub label: String,
 }
 
 /// A host-visible buffer kept between transfers and grown on demand.

@@ -7,8 +7,14 @@
 //! - `recorder`: the command buffer, barriers, timestamps and submission;
 //! - `draw`: draws through the graphics pipeline into an RGBA32F target copied into a buffer.
 //!
-//! Everything is synchronous: every submission is waited for, so between calls the GPU is idle and
-//! buffers can be read, written or freed without further synchronisation.
+//! Two ways to run. Standalone ([`VulkanBackend::new`], the CLI and tests): the backend makes its own
+//! instance and device, records into its own command buffer, and every submission is waited for, so
+//! between calls the GPU is idle and buffers can be read, written or freed without further
+//! synchronisation. Inside a renderer ([`VulkanBackend::from_raw`]): the backend runs on the caller's
+//! device and queue, works on the caller's buffers ([`VulkanBackend::import_buffer`]) and images
+//! ([`ImageRef`](super::ImageRef)), and records into the caller's command buffer between
+//! [`VulkanBackend::begin_external`] and [`VulkanBackend::end_external`]; the caller submits and
+//! synchronises that work itself.
 
 mod draw;
 mod instance;
@@ -17,19 +23,27 @@ mod pipelines;
 mod recorder;
 mod spirv;
 
-use super::{Backend, BackendKind, BufferId, CommandTime, Limits, check_dispatch, check_draw};
-use crate::error::{Error, Result};
+use super::{
+    Backend, BackendCounters, BackendKind, BufferId, CommandTime, ImageRef, Limits, check_dispatch, check_draw, draw_fallback,
+};
+use crate::error::{Error, Result, VkContext};
 use ash::vk;
+use ash::vk::Handle;
 use dof_shaders::{DrawDesc, KernelDesc};
 use gpu_allocator::MemoryLocation;
 use gpu_allocator::vulkan::{Allocator, AllocatorCreateDesc};
-use instance::{DeviceCtx, InstanceCtx};
+use instance::{DeviceCtx, Features, InstanceCtx};
 use memory::{GpuBuffer, STAGING_CHUNK_BYTES, STORAGE_USAGE, Staging, StorageBuffer};
 use pipelines::Pipelines;
 use recorder::Recorder;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
+use std::ffi::CStr;
+use std::sync::{Arc, Mutex, MutexGuard};
 
+/// The `ash` and `gpu-allocator` the backend is built with, for callers handing it their handles.
+pub use {ash, gpu_allocator};
 pub use instance::DEVICE_ENV;
+pub use memory::SharedAllocator;
 
 #[derive(Clone, Debug, Default)]
 pub struct VulkanOptions {
@@ -62,13 +76,49 @@ pub fn list_devices() -> Result<Vec<DeviceInfo>> {
     Ok(instance::candidates(&instance.instance, &needed)?.into_iter().map(|c| c.info).collect())
 }
 
+/// The Vulkan objects of a caller's device, for [`VulkanBackend::from_raw`]. The backend clones the
+/// loader tables; it never destroys the instance or the device.
+#[derive(Clone)]
+pub struct RawDevice {
+    pub entry: ash::Entry,
+    pub instance: ash::Instance,
+    pub physical_device: vk::PhysicalDevice,
+    pub device: ash::Device,
+    /// The family of `queue`; it must support compute (and graphics for draws through the graphics
+    /// pipeline: without graphics the backend draws with the draws' compute fallbacks).
+    pub queue_family: u32,
+    /// The queue the backend's own submissions go to (`submit`, `read_buffer`, `write_buffer`).
+    pub queue: vk::Queue,
+}
+
+/// Options of [`VulkanBackend::from_raw`].
+#[derive(Clone, Default)]
+pub struct RawOptions {
+    /// Name the backend's objects (`dof commands`, each buffer's label) through VK_EXT_debug_utils;
+    /// only where the caller's instance enabled that extension.
+    pub debug_names: bool,
+    /// The caller's gpu-allocator to allocate the backend's buffers from (made for the same device);
+    /// `None` makes the backend its own, dropped with the backend.
+    pub allocator: Option<SharedAllocator>,
+}
+
+/// The device features the kernels need, as the structs to chain into `VkDeviceCreateInfo`
+/// (`enabled_features(&core)` and `push_next(&mut vulkan12)`): the same ones the standalone backend
+/// enables on its own device.
+#[derive(Clone, Copy, Debug)]
+pub struct RequiredFeatures {
+    pub core: vk::PhysicalDeviceFeatures,
+    pub vulkan12: vk::PhysicalDeviceVulkan12Features<'static>,
+}
+
 pub struct VulkanBackend {
     // Fields drop in declaration order after `Drop::drop` has destroyed what they made: the device
-    // before the instance (and the message log, inside the instance, last).
+    // before the instance (and the message log, inside the instance, last). A caller's device and
+    // instance are not destroyed.
     device: DeviceCtx,
     instance: InstanceCtx,
     /// `None` only during drop, where it must go before the device.
-    allocator: Option<Allocator>,
+    allocator: Option<SharedAllocator>,
     info: DeviceInfo,
     pipelines: Pipelines,
     draws: draw::Draws,
@@ -80,16 +130,27 @@ pub struct VulkanBackend {
     doomed: Vec<GpuBuffer>,
     upload: Staging,
     readback: Staging,
+    /// Everything but `submissions`, which the recorder counts.
+    counters: BackendCounters,
+    /// Buffers the open external recording uses.
+    external_used: HashSet<u32>,
+    /// `destroy_buffer` calls refused during the open external recording, reported by `end_external`.
+    refused: Vec<String>,
+}
+
+fn lock(allocator: &SharedAllocator) -> MutexGuard<'_, Allocator> {
+    allocator.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 impl VulkanBackend {
+    /// The standalone backend: its own instance (with the validation layer if asked), device, queue
+    /// and allocator.
     pub fn new(opts: &VulkanOptions) -> Result<Self> {
         let choice = opts.device.clone().or_else(|| std::env::var(DEVICE_ENV).ok().filter(|s| !s.trim().is_empty()));
         let instance = InstanceCtx::new(opts.validation)?;
         // Device features follow from the capabilities the kernel modules declare.
         let needed = spirv::all_capabilities();
         let candidate = instance::select(instance::candidates(&instance.instance, &needed)?, choice.as_deref())?;
-        let queue_family = candidate.queue_family.ok_or_else(|| Error::NoVulkan("the device has no compute queue".into()))?;
         let device = DeviceCtx::new(&instance, &candidate)?;
         let allocator = Allocator::new(&AllocatorCreateDesc {
             instance: instance.instance.clone(),
@@ -100,25 +161,118 @@ impl VulkanBackend {
             allocation_sizes: Default::default(),
         })
         .map_err(|e| Error::Allocation(e.to_string()))?;
+        Self::assemble(device, instance, Arc::new(Mutex::new(allocator)), candidate.info, candidate.physical, candidate.timestamp_bits)
+    }
 
+    /// The backend on the caller's device: it creates only its own pipelines, buffers, command pool,
+    /// fence, query pools and (unless `opts` hands it one) allocator, and destroys only those.
+    ///
+    /// What the backend does with the caller's objects: it submits to `queue` in `submit`,
+    /// `read_buffer`, `write_buffer` and `begin_external` (only while it has unsubmitted work of its
+    /// own, e.g. the zeroing of buffers created since the last submission), waiting on its own fence
+    /// each time; it records into the caller's command buffers only between `begin_external` and
+    /// `end_external`. Validation messages go to the caller's debug messenger, if any: this backend's
+    /// `take_diagnostics` and `validation_messages` return nothing.
+    ///
+    /// # Safety
+    ///
+    /// - every handle in `handles` is valid: `instance` was made from `entry`, `physical_device` is
+    ///   one of its physical devices, `device` was made from it, `queue` is a queue of `device` in
+    ///   `queue_family`; all outlive the backend;
+    /// - `device` was created with the API version [`Self::REQUIRED_API_VERSION`] or later, every
+    ///   extension of [`Self::required_device_extensions`] and every feature of
+    ///   [`Self::required_features`] enabled (the backend checks that the physical device supports
+    ///   them, but cannot see what the device enabled);
+    /// - the caller does not use `queue` from another thread during the calls above that submit;
+    /// - an `opts.allocator` was made for this same instance, physical device and device;
+    /// - before dropping the backend, the caller has waited for every command buffer it recorded
+    ///   through the backend (the backend does not wait for the caller's device when dropped).
+    pub unsafe fn from_raw(handles: RawDevice, opts: &RawOptions) -> Result<Self> {
+        let RawDevice { entry, instance, physical_device, device, queue_family, queue } = handles;
+        let instance = InstanceCtx::borrowed(entry, instance);
+        // SAFETY: the instance is live (the caller's contract).
+        let physical = unsafe { instance.instance.enumerate_physical_devices() }.vk("vkEnumeratePhysicalDevices")?;
+        let index = physical.iter().position(|&p| p == physical_device).ok_or_else(|| {
+            Error::InvalidArgument("from_raw: the physical device is not one of the instance's".into())
+        })?;
+        let features = Features::needed_by(&spirv::all_capabilities());
+        let candidate = instance::describe(&instance.instance, physical_device, index, features)?;
+        if let Some(problem) = &candidate.problem {
+            return Err(Error::InvalidArgument(format!("from_raw: the caller's device {} {problem}", candidate.info.name)));
+        }
+        let family = instance::queue_family(&instance.instance, physical_device, queue_family)
+            .ok_or_else(|| Error::InvalidArgument(format!("from_raw: the device has no queue family {queue_family}")))?;
+        if !family.queue_flags.contains(vk::QueueFlags::COMPUTE) {
+            return Err(Error::InvalidArgument(format!(
+                "from_raw: queue family {queue_family} has no compute ({:?}); the kernels need a compute queue",
+                family.queue_flags
+            )));
+        }
+        if queue == vk::Queue::null() {
+            return Err(Error::InvalidArgument("from_raw: the queue is null".into()));
+        }
+        let device = DeviceCtx::borrowed(&instance, physical_device, device, queue_family, queue, opts.debug_names);
+        let allocator = match &opts.allocator {
+            Some(allocator) => allocator.clone(),
+            None => Arc::new(Mutex::new(
+                Allocator::new(&AllocatorCreateDesc {
+                    instance: instance.instance.clone(),
+                    device: device.device.clone(),
+                    physical_device,
+                    debug_settings: Default::default(),
+                    buffer_device_address: false,
+                    allocation_sizes: Default::default(),
+                })
+                .map_err(|e| Error::Allocation(e.to_string()))?,
+            )),
+        };
+        Self::assemble(device, instance, allocator, candidate.info, physical_device, family.timestamp_valid_bits)
+    }
+
+    fn assemble(
+        device: DeviceCtx,
+        instance: InstanceCtx,
+        allocator: SharedAllocator,
+        info: DeviceInfo,
+        physical: vk::PhysicalDevice,
+        timestamp_bits: u32,
+    ) -> Result<Self> {
         // From here on `Drop` cleans up whatever a failing step leaves behind.
         let mut backend = VulkanBackend {
             device,
             instance,
             allocator: Some(allocator),
-            info: candidate.info,
+            info,
             pipelines: Pipelines::default(),
             draws: draw::Draws::default(),
-            physical: candidate.physical,
+            physical,
             recorder: Recorder::empty(),
             buffers: HashMap::new(),
             next_id: 0,
             doomed: Vec::new(),
             upload: Staging::new(MemoryLocation::CpuToGpu),
             readback: Staging::new(MemoryLocation::GpuToCpu),
+            counters: BackendCounters::default(),
+            external_used: HashSet::new(),
+            refused: Vec::new(),
         };
-        backend.recorder.init(&backend.device, queue_family, candidate.timestamp_bits, backend.info.timestamp_period_ns)?;
+        backend.recorder.init(&backend.device, timestamp_bits, backend.info.timestamp_period_ns)?;
         Ok(backend)
+    }
+
+    /// The Vulkan version the backend's device must support and be created for.
+    pub const REQUIRED_API_VERSION: u32 = vk::API_VERSION_1_2;
+
+    /// The device extensions a caller's device must enable for [`Self::from_raw`].
+    pub fn required_device_extensions() -> &'static [&'static CStr] {
+        &instance::REQUIRED_EXTENSIONS
+    }
+
+    /// The device features a caller's device must enable for [`Self::from_raw`], from the
+    /// capabilities the kernel modules declare (the standalone backend enables the same).
+    pub fn required_features() -> RequiredFeatures {
+        let (core, vulkan12) = Features::needed_by(&spirv::all_capabilities()).structs();
+        RequiredFeatures { core, vulkan12 }
     }
 
     /// The chosen device.
@@ -126,7 +280,8 @@ impl VulkanBackend {
         self.info.clone()
     }
 
-    /// Every warning and error the validation layer reported so far (empty without validation).
+    /// Every warning and error the validation layer reported so far (empty without validation, and
+    /// on a caller's device, whose messages go to the caller's messenger).
     pub fn validation_messages(&self) -> Vec<String> {
         self.instance.messages.lock().unwrap_or_else(|e| e.into_inner()).clone()
     }
@@ -136,8 +291,110 @@ impl VulkanBackend {
         std::mem::take(&mut *self.instance.messages.lock().unwrap_or_else(|e| e.into_inner()))
     }
 
-    fn allocator(&mut self) -> Result<&mut Allocator> {
-        self.allocator.as_mut().ok_or_else(|| Error::Allocation("the allocator is gone".into()))
+    /// Makes the caller's buffer `buffer` of `bytes` (a multiple of 4) a backend buffer. The backend
+    /// never frees it: `destroy_buffer` only forgets it. Every command works on it as on the
+    /// backend's own buffers; `read_buffer` and `write_buffer` go through the backend's staging
+    /// buffers (device-local memory is fine) and submit to the queue like on the backend's own
+    /// buffers. `device_bytes` and `allocations` do not count it.
+    ///
+    /// # Safety
+    ///
+    /// `buffer` is a live buffer of the backend's device, at least `bytes` long, bound to memory,
+    /// with STORAGE_BUFFER usage, TRANSFER_DST usage where it is filled, written or copied into,
+    /// TRANSFER_SRC usage where it is read or copied from, and INDIRECT_BUFFER usage where it holds
+    /// indirect arguments; it stays alive until the backend forgot it and the GPU finished every
+    /// command using it. Its exclusive queue family ownership (if any) is the backend's queue family.
+    pub unsafe fn import_buffer(&mut self, buffer: vk::Buffer, bytes: u64, label: &str) -> Result<BufferId> {
+        if buffer == vk::Buffer::null() {
+            return Err(Error::InvalidArgument(format!("import_buffer `{label}`: the buffer is null")));
+        }
+        if bytes == 0 || bytes % 4 != 0 {
+            return Err(Error::InvalidArgument(format!("import_buffer `{label}`: {bytes} bytes is not a positive multiple of 4")));
+        }
+        let limit = self.info.limits.max_buffer_bytes;
+        if bytes > limit {
+            return Err(Error::TooLarge { what: format!("imported buffer `{label}`"), size: bytes, limit });
+        }
+        let id = self.next_id;
+        self.next_id = id.checked_add(1).ok_or_else(|| Error::InvalidArgument("too many buffers created".into()))?;
+        self.buffers.insert(id, StorageBuffer { handle: buffer, words: bytes / 4, owned: None, label: label.to_string() });
+        Ok(BufferId(id))
+    }
+
+    /// Starts recording into the caller's command buffer `cb`: from here to [`Self::end_external`],
+    /// `fill`, `dispatch`, `dispatch_indirect`, `draw_indirect` and the image copies are recorded
+    /// into `cb`, which the caller submits and synchronises itself; `submit`, `read_buffer`,
+    /// `write_buffer` and `create_buffer` are refused, and so is `destroy_buffer` of a buffer the
+    /// recording uses (the buffer stays; `end_external` reports it).
+    ///
+    /// Work the backend recorded in its own command buffer and has not submitted (such as the zeroing
+    /// of buffers created since) is submitted first and waited for: one submission, counted.
+    ///
+    /// Synchronisation: the recording starts with a barrier from the caller's earlier compute,
+    /// transfer, vertex/fragment shader and colour-attachment writes (and accesses at those stages) to
+    /// every access of the backend's commands; inside, the backend orders its commands itself; it ends
+    /// (in `end_external`) with a barrier making the backend's writes visible to later compute,
+    /// indirect, vertex/fragment, colour-attachment and transfer accesses. The caller orders anything
+    /// else (other queues, other submissions: semaphores) itself. Timed commands write timestamps into
+    /// the backend's own query pools, reset inside `cb`; see [`Self::take_external_times`].
+    ///
+    /// # Safety
+    ///
+    /// `cb` is a primary command buffer of the backend's device, allocated from a pool of the
+    /// backend's queue family, in the recording state and outside a render pass; the caller records
+    /// nothing into it until `end_external` (or adds its own barriers against the backend's commands);
+    /// it is submitted only after `end_external`, to a queue of that family; every buffer and image the
+    /// recording uses stays alive until it completed.
+    pub unsafe fn begin_external(&mut self, cb: vk::CommandBuffer) -> Result<()> {
+        if self.recorder.is_external() {
+            return Err(Error::InvalidArgument("begin_external: already recording into a caller's command buffer; call end_external first".into()));
+        }
+        if cb == vk::CommandBuffer::null() {
+            return Err(Error::InvalidArgument("begin_external: the command buffer is null".into()));
+        }
+        self.flush()?;
+        self.recorder.begin_external(&self.device, cb);
+        self.external_used.clear();
+        self.refused.clear();
+        Ok(())
+    }
+
+    /// Ends the recording into the caller's command buffer (with the closing barrier described at
+    /// [`Self::begin_external`]). It fails if `destroy_buffer` calls were refused during the
+    /// recording (the recording itself is complete and valid all the same).
+    pub fn end_external(&mut self) -> Result<()> {
+        if !self.recorder.is_external() {
+            return Err(Error::InvalidArgument("end_external without begin_external".into()));
+        }
+        self.recorder.end_external(&self.device);
+        self.external_used.clear();
+        let refused = std::mem::take(&mut self.refused);
+        if !refused.is_empty() {
+            return Err(Error::InvalidArgument(format!(
+                "refused during the external recording, because the recording uses them (they are still alive; destroy \
+                 them once the caller's command buffer completed): {}",
+                refused.join(", ")
+            )));
+        }
+        Ok(())
+    }
+
+    /// Whether commands go into a caller's command buffer (between `begin_external` and `end_external`).
+    pub fn is_external(&self) -> bool {
+        self.recorder.is_external()
+    }
+
+    /// The timings of the last ended external recording, one per timed command as `submit` returns
+    /// them: `Ok(None)` while the device has not run it all (never blocks: call it after the
+    /// caller's fence signalled); `Ok(Some(times))` once, after which they are gone (an empty list
+    /// when there is nothing to take). A `begin_external` drops times not taken. On a queue without
+    /// timestamps the times are NaN.
+    pub fn take_external_times(&mut self) -> Result<Option<Vec<CommandTime>>> {
+        self.recorder.take_external_times(&self.device)
+    }
+
+    fn allocator(&self) -> Result<SharedAllocator> {
+        self.allocator.clone().ok_or_else(|| Error::Allocation("the allocator is gone".into()))
     }
 
     fn buffer(&self, id: BufferId) -> Result<&StorageBuffer> {
@@ -148,7 +405,7 @@ impl VulkanBackend {
     fn range(&self, id: BufferId, offset: u64, words: u64) -> Result<vk::Buffer> {
         let b = self.buffer(id)?;
         match offset.checked_add(words) {
-            Some(end) if end <= b.words => Ok(b.gpu.buffer),
+            Some(end) if end <= b.words => Ok(b.handle),
             _ => Err(Error::InvalidArgument(format!(
                 "range {offset}..{offset}+{words} outside buffer {} of {} words",
                 id.0, b.words
@@ -156,15 +413,34 @@ impl VulkanBackend {
         }
     }
 
+    /// An error for `what`, which needs the backend's own command buffer, during an external recording.
+    fn refuse_external(&self, what: &str) -> Result<()> {
+        if self.recorder.is_external() {
+            return Err(Error::InvalidArgument(format!(
+                "{what} is not allowed while recording into the caller's command buffer (between begin_external and \
+                 end_external): it would submit or allocate; do it before begin_external or after end_external"
+            )));
+        }
+        Ok(())
+    }
+
+    /// Notes that the open external recording (if any) uses `ids`.
+    fn note_used(&mut self, ids: impl IntoIterator<Item = BufferId>) {
+        if self.recorder.is_external() {
+            self.external_used.extend(ids.into_iter().map(|b| b.0));
+        }
+    }
+
     /// Submits recorded work (keeping its timings for `submit`) and frees buffers it was holding.
     fn flush(&mut self) -> Result<()> {
         let result = self.recorder.flush(&self.device);
         // After a failed submission the device is most likely lost; freeing is still the best move.
-        if !self.recorder.is_recording() {
+        if !self.recorder.is_recording() && !self.doomed.is_empty() {
             let doomed = std::mem::take(&mut self.doomed);
-            if let Some(allocator) = self.allocator.as_mut() {
+            if let Some(allocator) = &self.allocator {
+                let mut allocator = lock(allocator);
                 for b in doomed {
-                    b.destroy(&self.device.device, allocator);
+                    b.destroy(&self.device.device, &mut allocator);
                 }
             }
         }
@@ -181,12 +457,14 @@ impl VulkanBackend {
         label: &str,
     ) -> Result<()> {
         check_dispatch(&self.info.limits, kernel, groups, buffers.len(), push.len())?;
-        let bound: Vec<vk::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.gpu.buffer)).collect::<Result<_>>()?;
+        let bound: Vec<vk::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.handle)).collect::<Result<_>>()?;
         let args = match indirect {
             Some((id, offset)) => Some((self.range(id, offset, 3)?, offset * 4)),
             None => None,
         };
         let pipeline = self.pipelines.get(&self.device.device, kernel)?;
+        self.note_used(buffers.iter().copied().chain(indirect.map(|(id, _)| id)));
+        let accessed: Vec<u64> = bound.iter().chain(args.as_ref().map(|(b, _)| b)).map(|b| b.as_raw()).collect();
 
         let infos = buffer_infos(&bound);
         let writes = storage_writes(&infos);
@@ -195,7 +473,7 @@ impl VulkanBackend {
         let push_data: &[u8] = &bytemuck::cast_slice::<u32, u8>(push)[..push_bytes];
         let push_descriptor = &self.device.push_descriptor;
 
-        self.recorder.record(&self.device, Some((label, kernel.entry)), |d, cb| {
+        self.recorder.record(&self.device, Some((label, kernel.entry)), &accessed, |d, cb| {
             // SAFETY: `cb` is recording; the pipeline, its layout and every bound buffer are alive
             // until the submission finishes (destroyed buffers are kept until then).
             unsafe {
@@ -211,6 +489,90 @@ impl VulkanBackend {
                     (Some([x, y, z]), None) => d.cmd_dispatch(cb, x, y, z),
                     (None, None) => {}
                 }
+            }
+        })
+    }
+
+    /// Records a copy between the whole of `image` and `buffer[offset_words ..]`, with the image's
+    /// barriers into and out of the transfer layout.
+    fn record_image_copy(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, into_image: bool, label: &str) -> Result<()> {
+        let what = if into_image { "copy_buffer_to_image" } else { "copy_image_to_buffer" };
+        let [width, height] = image.extent;
+        if width == 0 || height == 0 || image.handle == 0 {
+            return Err(Error::InvalidArgument(format!("{what} `{label}`: an empty ({width}x{height}) or null image")));
+        }
+        let per_pixel = image.format.words_per_pixel();
+        if offset_words % per_pixel != 0 {
+            return Err(Error::InvalidArgument(format!(
+                "{what} `{label}`: the buffer offset {offset_words} is not a multiple of the {per_pixel} words of a {:?} pixel",
+                image.format
+            )));
+        }
+        let bad_final = [vk::ImageLayout::UNDEFINED, vk::ImageLayout::PREINITIALIZED];
+        if bad_final.contains(&image.final_layout) {
+            return Err(Error::InvalidArgument(format!("{what} `{label}`: the final layout cannot be {:?}", image.final_layout)));
+        }
+        if !into_image && bad_final.contains(&image.layout) {
+            return Err(Error::InvalidArgument(format!(
+                "{what} `{label}`: an image in layout {:?} has no defined contents to copy",
+                image.layout
+            )));
+        }
+        let target = self.range(buffer, offset_words, image.words())?;
+        self.note_used([buffer]);
+        let handle = vk::Image::from_raw(image.handle);
+        let (transfer_layout, transfer_access) = if into_image {
+            (vk::ImageLayout::TRANSFER_DST_OPTIMAL, vk::AccessFlags::TRANSFER_WRITE)
+        } else {
+            (vk::ImageLayout::TRANSFER_SRC_OPTIMAL, vk::AccessFlags::TRANSFER_READ)
+        };
+        let range = vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1);
+        // From the caller's last use, and from the backend's own earlier copies (transfer writes).
+        let acquire = [vk::ImageMemoryBarrier::default()
+            .src_access_mask(image.access | vk::AccessFlags::TRANSFER_WRITE)
+            .dst_access_mask(transfer_access)
+            .old_layout(image.layout)
+            .new_layout(transfer_layout)
+            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .image(handle)
+            .subresource_range(range)];
+        let src_stage = image.stage | vk::PipelineStageFlags::TRANSFER;
+        let written = if into_image { vk::AccessFlags::TRANSFER_WRITE } else { vk::AccessFlags::empty() };
+        let release = [vk::ImageMemoryBarrier::default()
+            .src_access_mask(written)
+            .dst_access_mask(vk::AccessFlags::MEMORY_READ | vk::AccessFlags::MEMORY_WRITE)
+            .old_layout(transfer_layout)
+            .new_layout(image.final_layout)
+            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .image(handle)
+            .subresource_range(range)];
+        let region = [vk::BufferImageCopy::default()
+            .buffer_offset(offset_words * 4)
+            .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
+            .image_extent(vk::Extent3D { width, height, depth: 1 })];
+        let accessed = [target.as_raw(), image.handle];
+        self.recorder.record(&self.device, Some((label, what)), &accessed, |d, cb| {
+            // SAFETY: `cb` is recording outside a render pass; the image is live with the declared
+            // format, extent and layout (`ImageRef::vulkan`'s contract) and the region lies inside
+            // the buffer.
+            unsafe {
+                d.cmd_pipeline_barrier(cb, src_stage, vk::PipelineStageFlags::TRANSFER, vk::DependencyFlags::empty(), &[], &[], &acquire);
+                if into_image {
+                    d.cmd_copy_buffer_to_image(cb, target, handle, transfer_layout, &region);
+                } else {
+                    d.cmd_copy_image_to_buffer(cb, handle, transfer_layout, target, &region);
+                }
+                d.cmd_pipeline_barrier(
+                    cb,
+                    vk::PipelineStageFlags::TRANSFER,
+                    vk::PipelineStageFlags::ALL_COMMANDS,
+                    vk::DependencyFlags::empty(),
+                    &[],
+                    &[],
+                    &release,
+                );
             }
         })
     }
@@ -250,6 +612,7 @@ impl Backend for VulkanBackend {
     }
 
     fn create_buffer(&mut self, words: u64, label: &str) -> Result<BufferId> {
+        self.refuse_external("create_buffer")?;
         let limit = self.info.limits.max_buffer_bytes;
         let bytes = words.max(1).checked_mul(4).filter(|&b| b <= limit).ok_or_else(|| Error::TooLarge {
             what: format!("buffer `{label}`"),
@@ -258,14 +621,15 @@ impl Backend for VulkanBackend {
         })?;
         let id = self.next_id;
         let next = id.checked_add(1).ok_or_else(|| Error::InvalidArgument("too many buffers created".into()))?;
-        let device = self.device.device.clone();
-        let gpu = GpuBuffer::new(&device, self.allocator()?, bytes, STORAGE_USAGE, MemoryLocation::GpuOnly, label)?;
+        let allocator = self.allocator()?;
+        let gpu = GpuBuffer::new(&self.device.device, &mut lock(&allocator), bytes, STORAGE_USAGE, MemoryLocation::GpuOnly, label)?;
         self.device.name(gpu.buffer, label);
         let handle = gpu.buffer;
-        self.buffers.insert(id, StorageBuffer { gpu, words: bytes / 4 });
+        self.buffers.insert(id, StorageBuffer { handle, words: bytes / 4, owned: Some(gpu), label: label.to_string() });
         self.next_id = next;
+        self.counters.add_buffer(bytes);
         // Zeroed on the GPU, ahead of (and ordered by the barrier before) whatever uses it next.
-        let zeroed = self.recorder.record(&self.device, None, |d, cb| {
+        let zeroed = self.recorder.record(&self.device, None, &[handle.as_raw()], |d, cb| {
             // SAFETY: `cb` is recording; the buffer lives until the submission finishes.
             unsafe { d.cmd_fill_buffer(cb, handle, 0, vk::WHOLE_SIZE, 0) }
         });
@@ -277,11 +641,20 @@ impl Backend for VulkanBackend {
     }
 
     fn destroy_buffer(&mut self, buffer: BufferId) {
+        if self.recorder.is_external() && self.external_used.contains(&buffer.0) {
+            let label = self.buffers.get(&buffer.0).map_or("", |b| b.label.as_str());
+            log::error!("destroy_buffer({}) `{label}` refused: the open external recording uses it", buffer.0);
+            self.refused.push(format!("destroy_buffer({}) `{label}`", buffer.0));
+            return;
+        }
         let Some(b) = self.buffers.remove(&buffer.0) else { return };
+        // An imported buffer is only forgotten.
+        let Some(gpu) = b.owned else { return };
+        self.counters.remove_buffer(b.words * 4);
         if self.recorder.is_recording() {
-            self.doomed.push(b.gpu);
-        } else if let Some(allocator) = self.allocator.as_mut() {
-            b.gpu.destroy(&self.device.device, allocator);
+            self.doomed.push(gpu);
+        } else if let Some(allocator) = &self.allocator {
+            gpu.destroy(&self.device.device, &mut lock(allocator));
         }
     }
 
@@ -290,13 +663,15 @@ impl Backend for VulkanBackend {
     }
 
     fn write_buffer(&mut self, buffer: BufferId, offset_words: u64, data: &[u32]) -> Result<()> {
+        self.refuse_external("write_buffer")?;
         let target = self.range(buffer, offset_words, data.len() as u64)?;
+        self.counters.uploads += 1;
         self.flush()?;
-        let device = self.device.device.clone();
+        let allocator = self.allocator()?;
+        let graphics = self.recorder.graphics();
         let bytes: &[u8] = bytemuck::cast_slice(data);
         for (i, chunk) in bytes.chunks(STAGING_CHUNK_BYTES as usize).enumerate() {
-            let allocator = self.allocator.as_mut().ok_or_else(|| Error::Allocation("the allocator is gone".into()))?;
-            let staging = self.upload.get(&device, allocator, chunk.len() as u64)?;
+            let staging = self.upload.get(&self.device.device, &mut lock(&allocator), chunk.len() as u64)?;
             staging.mapped()?[..chunk.len()].copy_from_slice(chunk);
             // Host writes before vkQueueSubmit are visible to the device (the memory is host-coherent).
             let src = staging.buffer;
@@ -305,7 +680,7 @@ impl Backend for VulkanBackend {
                 .size(chunk.len() as u64)];
             self.recorder.run_once(&self.device, |d, cb| {
                 // Earlier submissions' accesses to the target come first.
-                recorder::full_barrier(d, cb);
+                recorder::full_barrier(d, cb, graphics);
                 // SAFETY: `cb` is recording; both buffers are alive and the region lies inside them.
                 unsafe { d.cmd_copy_buffer(cb, src, target, &region) };
             })?;
@@ -314,20 +689,22 @@ impl Backend for VulkanBackend {
     }
 
     fn read_buffer(&mut self, buffer: BufferId, offset_words: u64, words: u64) -> Result<Vec<u32>> {
+        self.refuse_external("read_buffer")?;
         let source = self.range(buffer, offset_words, words)?;
+        self.counters.readbacks += 1;
         self.flush()?;
         let len = usize::try_from(words).map_err(|_| Error::InvalidArgument(format!("cannot read {words} words")))?;
         let mut out = vec![0u32; len];
-        let device = self.device.device.clone();
+        let allocator = self.allocator()?;
+        let graphics = self.recorder.graphics();
         let out_bytes: &mut [u8] = bytemuck::cast_slice_mut(&mut out);
         for (i, chunk) in out_bytes.chunks_mut(STAGING_CHUNK_BYTES as usize).enumerate() {
-            let allocator = self.allocator.as_mut().ok_or_else(|| Error::Allocation("the allocator is gone".into()))?;
-            let dst = self.readback.get(&device, allocator, chunk.len() as u64)?.buffer;
+            let dst = self.readback.get(&self.device.device, &mut lock(&allocator), chunk.len() as u64)?.buffer;
             let region = [vk::BufferCopy::default()
                 .src_offset(offset_words * 4 + (i as u64) * STAGING_CHUNK_BYTES)
                 .size(chunk.len() as u64)];
             self.recorder.run_once(&self.device, |d, cb| {
-                recorder::full_barrier(d, cb);
+                recorder::full_barrier(d, cb, graphics);
                 // SAFETY: `cb` is recording; both buffers are alive and the region lies inside them.
                 unsafe { d.cmd_copy_buffer(cb, source, dst, &region) };
                 // The copy's writes must be made available to the host before it maps them.
@@ -348,7 +725,8 @@ impl Backend for VulkanBackend {
 
     fn fill(&mut self, buffer: BufferId, offset_words: u64, words: u64, value: u32, label: &str) -> Result<()> {
         let target = self.range(buffer, offset_words, words)?;
-        self.recorder.record(&self.device, Some((label, "fill")), |d, cb| {
+        self.note_used([buffer]);
+        self.recorder.record(&self.device, Some((label, "fill")), &[target.as_raw()], |d, cb| {
             if words > 0 {
                 // SAFETY: `cb` is recording; the range lies inside the buffer.
                 unsafe { d.cmd_fill_buffer(cb, target, offset_words * 4, words * 4, value) }
@@ -382,6 +760,10 @@ impl Backend for VulkanBackend {
         push: &[u32],
         label: &str,
     ) -> Result<()> {
+        if !self.device.graphics {
+            // A compute-only queue (a caller's): the draw's compute fallback, as on the CPU.
+            return draw_fallback(self, draw, args, buffers, target, size, push, label);
+        }
         check_draw(self, draw, args, buffers, target, size, push)?;
         let max = match self.draws.max_size {
             Some(max) => max,
@@ -404,14 +786,22 @@ impl Backend for VulkanBackend {
         }
         let pipeline = self.draws.pipeline(&self.device.device, draw)?;
         if self.draws.target.as_ref().map(|t| t.size) != Some(size) {
+            if self.recorder.is_external() && self.draws.target.is_some() {
+                // Earlier external recordings, which may still run, draw into the old target.
+                return Err(Error::InvalidArgument(format!(
+                    "draw `{label}` at {}x{} inside an external recording: the draw target has another size, and replacing it \
+                     needs the GPU idle; draw at one size per backend in external recordings",
+                    size[0], size[1]
+                )));
+            }
             // Recorded work may still use the old target.
             self.flush()?;
-            let device = self.device.device.clone();
-            let allocator = self.allocator.as_mut().ok_or_else(|| Error::Allocation("the allocator is gone".into()))?;
+            let allocator = self.allocator()?;
+            let mut allocator = lock(&allocator);
             if let Some(old) = self.draws.target.take() {
-                old.destroy(&device, allocator);
+                old.destroy(&self.device.device, &mut allocator);
             }
-            self.draws.target = Some(draw::Target::new(&device, allocator, pipeline.render_pass, size)?);
+            self.draws.target = Some(draw::Target::new(&self.device.device, &mut allocator, pipeline.render_pass, size)?);
         }
         let (image, framebuffer) = match &self.draws.target {
             Some(t) => (t.image, t.framebuffer),
@@ -420,7 +810,10 @@ impl Backend for VulkanBackend {
         let pixels = size[0] as u64 * size[1] as u64;
         let args_buffer = self.range(args, 0, 4)?;
         let target_buffer = self.range(target, 0, 4 * pixels)?;
-        let bound: Vec<vk::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.gpu.buffer)).collect::<Result<_>>()?;
+        let bound: Vec<vk::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.handle)).collect::<Result<_>>()?;
+        self.note_used(buffers.iter().copied().chain([args, target]));
+        let accessed: Vec<u64> =
+            bound.iter().chain([&args_buffer, &target_buffer]).map(|b| b.as_raw()).chain([image.as_raw()]).collect();
         let infos = buffer_infos(&bound);
         let writes = storage_writes(&infos);
         let push_bytes = draw.push_bytes.div_ceil(4) as usize * 4;
@@ -428,7 +821,7 @@ impl Backend for VulkanBackend {
         let push_descriptor = &self.device.push_descriptor;
         let extent = vk::Extent2D { width: size[0], height: size[1] };
         let stages = vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT;
-        self.recorder.record(&self.device, Some((label, draw.vertex)), |d, cb| {
+        self.recorder.record(&self.device, Some((label, draw.vertex)), &accessed, |d, cb| {
             let clear = [
                 vk::ClearValue { color: vk::ClearColorValue { float32: [0.0; 4] } },
                 vk::ClearValue { depth_stencil: vk::ClearDepthStencilValue { depth: 0.0, stencil: 0 } },
@@ -464,9 +857,22 @@ impl Backend for VulkanBackend {
         })
     }
 
+    fn copy_image_to_buffer(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, label: &str) -> Result<()> {
+        self.record_image_copy(image, buffer, offset_words, false, label)
+    }
+
+    fn copy_buffer_to_image(&mut self, buffer: BufferId, offset_words: u64, image: ImageRef, label: &str) -> Result<()> {
+        self.record_image_copy(image, buffer, offset_words, true, label)
+    }
+
     fn submit(&mut self) -> Result<Vec<CommandTime>> {
+        self.refuse_external("submit")?;
         self.flush()?;
         Ok(self.recorder.take_times())
+    }
+
+    fn counters(&self) -> BackendCounters {
+        BackendCounters { submissions: self.recorder.submissions(), ..self.counters }
     }
 
     fn take_diagnostics(&mut self) -> Vec<String> {
@@ -477,26 +883,37 @@ impl Backend for VulkanBackend {
 impl Drop for VulkanBackend {
     fn drop(&mut self) {
         let d = self.device.device.clone();
-        // SAFETY: waiting makes every object below unused; nothing is destroyed twice.
-        unsafe {
-            let _ = d.device_wait_idle();
+        if self.device.owned() {
+            // SAFETY: waiting makes every object below unused. On a caller's device the caller has
+            // waited for what it recorded through the backend (`from_raw`'s contract), and every
+            // submission of the backend's own was waited for.
+            unsafe {
+                let _ = d.device_wait_idle();
+            }
         }
+        // SAFETY (of the destruction below): nothing is pending and nothing is destroyed twice.
         self.pipelines.destroy(&d);
         self.recorder.destroy(&d);
-        if let Some(mut allocator) = self.allocator.take() {
+        if let Some(shared) = self.allocator.take() {
+            let mut allocator = lock(&shared);
             self.draws.destroy(&d, &mut allocator);
             for (_, b) in self.buffers.drain() {
-                b.gpu.destroy(&d, &mut allocator);
+                // Imported buffers are the caller's.
+                if let Some(gpu) = b.owned {
+                    gpu.destroy(&d, &mut allocator);
+                }
             }
             for b in self.doomed.drain(..) {
                 b.destroy(&d, &mut allocator);
             }
             self.upload.destroy(&d, &mut allocator);
             self.readback.destroy(&d, &mut allocator);
-            // The allocator frees its memory blocks here, while the device still exists.
             drop(allocator);
+            // The backend's own allocator frees its memory blocks here, while the device still
+            // exists; a caller's lives on with the caller.
+            drop(shared);
         }
-        // `device`, then `instance`, are destroyed as the fields drop.
+        // `device`, then `instance`, are destroyed as the fields drop (when the backend made them).
     }
 }
 

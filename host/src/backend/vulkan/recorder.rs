@@ -1,32 +1,112 @@
-//! Recording: the command buffer that `fill`/`dispatch` append to, the full barrier in front of every
-//! command, GPU timestamps around each timed command, and submission (which waits and harvests the
-//! timings). A second command buffer runs one-off host transfers.
+//! Recording: the command buffer that `fill`/`dispatch` append to (the backend's own, or the caller's
+//! between `begin_external` and `end_external`), the barriers between commands, GPU timestamps around
+//! each timed command, and submission (which waits and harvests the timings). A second command buffer
+//! runs one-off host transfers.
+//!
+//! Timestamps go into query pools of [`TIMED_PER_POOL`] timed commands each; a recording that times
+//! more commands takes (and keeps) another pool, so one `submit` is always one `vkQueueSubmit`.
 
 use super::instance::DeviceCtx;
 use crate::backend::CommandTime;
 use crate::error::{Result, VkContext};
 use ash::vk;
+use std::collections::HashSet;
 
-/// Timed commands per command buffer; past this the recorded work is submitted and a new command
-/// buffer begun, transparently.
-pub(super) const MAX_TIMED: u32 = 2048;
+/// Timed commands per query pool; a recording timing more commands uses more pools.
+pub(super) const TIMED_PER_POOL: u32 = 2048;
 /// Timestamp queries per timed command: before, a second before (see `record`), after.
 const QUERIES: u32 = 3;
+
+/// Query pools for one kind of recording and the timed commands of the recording using them.
+#[derive(Default)]
+struct Queries {
+    pools: Vec<vk::QueryPool>,
+    /// Pools reset so far in the command buffer being recorded (they are reset on first use).
+    reset: usize,
+    /// (label, kernel) of each timed command recorded, in order.
+    timed: Vec<(String, &'static str)>,
+}
+
+impl Queries {
+    /// Starts a recording: pools are reset again as it reaches them.
+    fn begin(&mut self) {
+        self.reset = 0;
+        self.timed.clear();
+    }
+
+    /// The pool and first query of the next timed command, recording the reset of a pool on its
+    /// first use in this command buffer and creating a pool when every one is taken.
+    fn next(&mut self, ctx: &DeviceCtx, cb: vk::CommandBuffer, name: &str) -> Result<(vk::QueryPool, u32)> {
+        let i = self.timed.len() as u32;
+        let (pool, first) = ((i / TIMED_PER_POOL) as usize, (i % TIMED_PER_POOL) * QUERIES);
+        let d = &ctx.device;
+        if pool == self.pools.len() {
+            let info = vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(QUERIES * TIMED_PER_POOL);
+            // SAFETY: a valid create info on a live device; the pool is kept until `destroy`.
+            let made = unsafe { d.create_query_pool(&info, None) }.vk("vkCreateQueryPool")?;
+            ctx.name(made, name);
+            self.pools.push(made);
+        }
+        if pool == self.reset {
+            // SAFETY: `cb` is recording, outside a render pass; no query of the pool is in use by it.
+            unsafe { d.cmd_reset_query_pool(cb, self.pools[pool], 0, QUERIES * TIMED_PER_POOL) };
+            self.reset += 1;
+        }
+        Ok((self.pools[pool], first))
+    }
+
+    /// The stamps of `count` timed commands of the last recording, or `None` where `wait` is off and
+    /// the device has not written them all yet.
+    fn stamps(&self, d: &ash::Device, count: usize, wait: bool) -> Result<Option<Vec<u64>>> {
+        let mut stamps = vec![0u64; QUERIES as usize * count];
+        let per_pool = (QUERIES * TIMED_PER_POOL) as usize;
+        let flags = if wait { vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT } else { vk::QueryResultFlags::TYPE_64 };
+        for (chunk, &pool) in stamps.chunks_mut(per_pool).zip(&self.pools) {
+            // SAFETY: every query in range was reset and written by the recording (or is pending).
+            match unsafe { d.get_query_pool_results(pool, 0, chunk, flags) } {
+                Ok(()) => {}
+                Err(vk::Result::NOT_READY) if !wait => return Ok(None),
+                Err(result) => return Err(crate::error::Error::Vulkan { call: "vkGetQueryPoolResults", result }),
+            }
+        }
+        Ok(Some(stamps))
+    }
+
+    fn destroy(&mut self, d: &ash::Device) {
+        for pool in self.pools.drain(..) {
+            // SAFETY: the GPU is done with the pool.
+            unsafe { d.destroy_query_pool(pool, None) };
+        }
+        *self = Queries::default();
+    }
+}
 
 pub(super) struct Recorder {
     pool: vk::CommandPool,
     main: vk::CommandBuffer,
     once: vk::CommandBuffer,
     fence: vk::Fence,
-    /// Three queries per timed command (see `record`); null where the queue has no timestamps.
-    queries: vk::QueryPool,
+    /// Whether the queue writes timestamps.
+    timestamps: bool,
     timestamp_mask: u64,
     period_ns: f64,
+    /// Whether the queue supports graphics stages (barriers name them only then).
+    graphics: bool,
+    /// Whether `main` is recording.
     recording: bool,
-    /// (label, kernel) of each timed command recorded in `main`, in order.
-    timed: Vec<(String, &'static str)>,
+    main_queries: Queries,
+    /// The caller's command buffer, between `begin_external` and `end_external`.
+    external: Option<vk::CommandBuffer>,
+    external_queries: Queries,
+    /// Timed commands of the last ended external recording whose times were not taken yet.
+    external_pending: Option<Vec<(String, &'static str)>>,
     /// Timings of submitted work not yet returned by `take_times`.
     done: Vec<CommandTime>,
+    /// `vkQueueSubmit` calls so far.
+    submissions: u64,
+    /// Raw handles of the buffers and images the commands since the last barrier accessed; `None`
+    /// at the start of a command buffer, where the first command waits for everything before.
+    touched: Option<HashSet<u64>>,
 }
 
 impl Recorder {
@@ -37,19 +117,25 @@ impl Recorder {
             main: vk::CommandBuffer::null(),
             once: vk::CommandBuffer::null(),
             fence: vk::Fence::null(),
-            queries: vk::QueryPool::null(),
+            timestamps: false,
             timestamp_mask: 0,
             period_ns: 1.0,
+            graphics: false,
             recording: false,
-            timed: Vec::new(),
+            main_queries: Queries::default(),
+            external: None,
+            external_queries: Queries::default(),
+            external_pending: None,
             done: Vec::new(),
+            submissions: 0,
+            touched: None,
         }
     }
 
-    pub fn init(&mut self, ctx: &DeviceCtx, queue_family: u32, timestamp_bits: u32, period_ns: f32) -> Result<()> {
+    pub fn init(&mut self, ctx: &DeviceCtx, timestamp_bits: u32, period_ns: f32) -> Result<()> {
         let d = &ctx.device;
         let pool_info = vk::CommandPoolCreateInfo::default()
-            .queue_family_index(queue_family)
+            .queue_family_index(ctx.queue_family)
             .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
         // SAFETY: create infos on a live device; each handle is stored at once so `destroy` frees it.
         unsafe {
@@ -62,102 +148,131 @@ impl Recorder {
             self.main = buffers.first().copied().unwrap_or_default();
             self.once = buffers.get(1).copied().unwrap_or_default();
             self.fence = d.create_fence(&vk::FenceCreateInfo::default(), None).vk("vkCreateFence")?;
-            if timestamp_bits > 0 {
-                let info = vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(QUERIES * MAX_TIMED);
-                self.queries = d.create_query_pool(&info, None).vk("vkCreateQueryPool")?;
-            }
         }
         ctx.name(self.main, "dof commands");
         ctx.name(self.once, "dof transfers");
+        self.timestamps = timestamp_bits > 0;
         self.timestamp_mask = if timestamp_bits >= 64 { u64::MAX } else { (1u64 << timestamp_bits) - 1 };
         self.period_ns = period_ns as f64;
+        self.graphics = ctx.graphics;
         Ok(())
     }
 
+    /// `vkQueueSubmit` calls so far.
+    pub fn submissions(&self) -> u64 {
+        self.submissions
+    }
+
+    /// Whether the backend's own command buffer holds unsubmitted work.
     pub fn is_recording(&self) -> bool {
         self.recording
     }
 
-    /// Appends one command: a full barrier (so it sees every earlier write, also those of earlier
-    /// submissions), then `record`, bracketed by timestamps when `timing` names it.
+    /// Whether commands go into the caller's command buffer.
+    pub fn is_external(&self) -> bool {
+        self.external.is_some()
+    }
+
+    /// Whether the queue supports graphics stages.
+    pub fn graphics(&self) -> bool {
+        self.graphics
+    }
+
+    /// Appends one command to the caller's command buffer (between `begin_external` and
+    /// `end_external`) or else to the backend's own (begun on first use): a barrier first where it
+    /// is needed (so it sees every earlier write, also those of earlier submissions), then `record`,
+    /// bracketed by timestamps when `timing` names it. `accessed` are the raw handles of the buffers
+    /// (and images) the command reads or writes.
     pub fn record(
         &mut self,
         ctx: &DeviceCtx,
         timing: Option<(&str, &'static str)>,
+        accessed: &[u64],
         record: impl FnOnce(&ash::Device, vk::CommandBuffer),
     ) -> Result<()> {
-        if timing.is_some() && self.timed.len() as u32 >= MAX_TIMED {
-            self.flush(ctx)?;
-        }
         let d = &ctx.device;
-        if !self.recording {
-            let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
-            // SAFETY: `main` is not pending (every submission is waited for) and its pool allows reset.
-            unsafe {
-                d.begin_command_buffer(self.main, &begin).vk("vkBeginCommandBuffer")?;
-                if self.queries != vk::QueryPool::null() {
-                    d.cmd_reset_query_pool(self.main, self.queries, 0, QUERIES * MAX_TIMED);
+        let cb = match self.external {
+            Some(cb) => cb,
+            None => {
+                if !self.recording {
+                    let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
+                    // SAFETY: `main` is not pending (every submission is waited for) and its pool allows reset.
+                    unsafe { d.begin_command_buffer(self.main, &begin) }.vk("vkBeginCommandBuffer")?;
+                    self.recording = true;
+                    self.main_queries.begin();
+                    self.touched = None;
                 }
+                self.main
             }
-            self.recording = true;
-        }
-        let cb = self.main;
-        let query = QUERIES * self.timed.len() as u32;
-        let timestamps = timing.is_some() && self.queries != vk::QueryPool::null();
-        // SAFETY: `cb` is recording; the queries were reset at begin and each is written once.
+        };
+        let stamps = match timing {
+            Some(_) if self.timestamps => {
+                let queries = if self.external.is_some() { &mut self.external_queries } else { &mut self.main_queries };
+                Some(queries.next(ctx, cb, "dof timestamps")?)
+            }
+            _ => None,
+        };
+        let _ = accessed;
+        full_barrier(d, cb, self.graphics);
+        self.touched = Some(HashSet::new());
+        // SAFETY: `cb` is recording; the queries were reset in it and each is written once.
         unsafe {
-            full_barrier(d, cb);
             // Bottom of pipe: the first stamp waits for all earlier work, the last for this command.
             // The middle one is never read: once a framebuffer has been bound, lavapipe takes a
             // stamp only when its binned scene is next flushed, and it flushes on the next stamp;
             // without it the first stamp would be taken after the command, and every stage would
             // time as zero after the first draw.
-            if timestamps {
-                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.queries, query);
-                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.queries, query + 1);
+            if let Some((pool, query)) = stamps {
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, pool, query);
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, pool, query + 1);
             }
             record(d, cb);
-            if timestamps {
-                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, self.queries, query + 2);
+            if let Some((pool, query)) = stamps {
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, pool, query + 2);
             }
         }
         if let Some((label, kernel)) = timing {
-            self.timed.push((label.to_string(), kernel));
+            let queries = if self.external.is_some() { &mut self.external_queries } else { &mut self.main_queries };
+            queries.timed.push((label.to_string(), kernel));
         }
         Ok(())
     }
 
-    /// Submits what is recorded, waits for it, and keeps its timings for `take_times`.
+    /// Submits what is recorded in the backend's own command buffer, waits for it, and keeps its
+    /// timings for `take_times`.
     pub fn flush(&mut self, ctx: &DeviceCtx) -> Result<()> {
         if !self.recording {
             return Ok(());
         }
         self.recording = false;
-        let timed = std::mem::take(&mut self.timed);
+        let timed = std::mem::take(&mut self.main_queries.timed);
         let d = &ctx.device;
         // SAFETY: `main` is recording; the fence is unsignalled (reset after every wait).
         unsafe { d.end_command_buffer(self.main) }.vk("vkEndCommandBuffer")?;
         self.submit_and_wait(ctx, self.main)?;
-
-        let mut stamps = vec![0u64; QUERIES as usize * timed.len()];
-        if self.queries != vk::QueryPool::null() && !timed.is_empty() {
-            // SAFETY: the submission finished, so every query in range has been written.
-            unsafe {
-                d.get_query_pool_results(self.queries, 0, &mut stamps, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
-            }
-            .vk("vkGetQueryPoolResults")?;
-        }
-        for (i, (label, kernel)) in timed.into_iter().enumerate() {
-            let ms = if self.queries == vk::QueryPool::null() {
-                f64::NAN
-            } else {
-                let (first, last) = (stamps[QUERIES as usize * i], stamps[QUERIES as usize * i + 2]);
-                let ticks = (last & self.timestamp_mask).wrapping_sub(first & self.timestamp_mask) & self.timestamp_mask;
-                ticks as f64 * self.period_ns / 1e6
-            };
-            self.done.push(CommandTime { label, kernel, ms });
-        }
+        let stamps = if self.timestamps && !timed.is_empty() { self.main_queries.stamps(d, timed.len(), true)? } else { None };
+        let times = self.times(timed, stamps.as_deref());
+        self.done.extend(times);
         Ok(())
+    }
+
+    /// Timings from `stamps` (three a command), or NaN without timestamps.
+    fn times(&self, timed: Vec<(String, &'static str)>, stamps: Option<&[u64]>) -> Vec<CommandTime> {
+        timed
+            .into_iter()
+            .enumerate()
+            .map(|(i, (label, kernel))| {
+                let ms = match stamps {
+                    Some(stamps) => {
+                        let (first, last) = (stamps[QUERIES as usize * i], stamps[QUERIES as usize * i + 2]);
+                        let ticks = (last & self.timestamp_mask).wrapping_sub(first & self.timestamp_mask) & self.timestamp_mask;
+                        ticks as f64 * self.period_ns / 1e6
+                    }
+                    None => f64::NAN,
+                };
+                CommandTime { label, kernel, ms }
+            })
+            .collect()
     }
 
     /// Timings of everything submitted since the last call, in recording order.
@@ -179,44 +294,138 @@ impl Recorder {
         self.submit_and_wait(ctx, self.once)
     }
 
-    fn submit_and_wait(&self, ctx: &DeviceCtx, cb: vk::CommandBuffer) -> Result<()> {
+    fn submit_and_wait(&mut self, ctx: &DeviceCtx, cb: vk::CommandBuffer) -> Result<()> {
         let d = &ctx.device;
         let cbs = [cb];
         let submit = [vk::SubmitInfo::default().command_buffers(&cbs)];
         // SAFETY: `cb` is executable; the fence is unsignalled and reset again once waited for.
         unsafe {
             d.queue_submit(ctx.queue, &submit, self.fence).vk("vkQueueSubmit")?;
+            self.submissions += 1;
             let waited = d.wait_for_fences(&[self.fence], true, u64::MAX).vk("vkWaitForFences");
             d.reset_fences(&[self.fence]).vk("vkResetFences")?;
             waited
         }
     }
 
-    /// Destroys the pool (and its command buffers), the fence and the query pool. The GPU must be idle.
+    /// Starts recording into the caller's command buffer `cb` (recording, outside a render pass),
+    /// with a barrier ordering the caller's earlier work before the backend's commands. The
+    /// backend's own command buffer must hold nothing (callers flush first). Times of an earlier
+    /// external recording not taken yet are dropped.
+    pub fn begin_external(&mut self, ctx: &DeviceCtx, cb: vk::CommandBuffer) {
+        self.external = Some(cb);
+        self.external_queries.begin();
+        self.external_pending = None;
+        let g = self.graphics;
+        let graphics = |flags: vk::PipelineStageFlags| if g { flags } else { vk::PipelineStageFlags::empty() };
+        let colour = if g { vk::AccessFlags::COLOR_ATTACHMENT_WRITE } else { vk::AccessFlags::empty() };
+        // The caller's compute, transfer, colour-attachment and shader writes (and, by the execution
+        // dependency, its reads at those stages) come before every access of the backend's commands.
+        barrier(
+            &ctx.device,
+            cb,
+            vk::PipelineStageFlags::COMPUTE_SHADER
+                | vk::PipelineStageFlags::TRANSFER
+                | graphics(
+                    vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT
+                        | vk::PipelineStageFlags::VERTEX_SHADER
+                        | vk::PipelineStageFlags::FRAGMENT_SHADER
+                        | vk::PipelineStageFlags::DRAW_INDIRECT,
+                ),
+            vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_WRITE | colour,
+            later_stages(g),
+            later_accesses(g),
+        );
+        self.touched = Some(HashSet::new());
+    }
+
+    /// Ends the external recording with a barrier making the backend's writes visible to whatever
+    /// the caller records next (compute, indirect, vertex, fragment, colour attachment and transfer
+    /// accesses).
+    pub fn end_external(&mut self, ctx: &DeviceCtx) {
+        let Some(cb) = self.external.take() else { return };
+        let g = self.graphics;
+        let src = vk::PipelineStageFlags::COMPUTE_SHADER
+            | vk::PipelineStageFlags::TRANSFER
+            | if g { vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT } else { vk::PipelineStageFlags::empty() };
+        let src_access = vk::AccessFlags::SHADER_WRITE
+            | vk::AccessFlags::TRANSFER_WRITE
+            | if g { vk::AccessFlags::COLOR_ATTACHMENT_WRITE } else { vk::AccessFlags::empty() };
+        barrier(&ctx.device, cb, src, src_access, later_stages(g), later_accesses(g));
+        self.external_pending = Some(std::mem::take(&mut self.external_queries.timed));
+        self.touched = None;
+    }
+
+    /// The timings of the last ended external recording, once the device has written them all:
+    /// `Ok(None)` until then (never blocks); `Ok(Some(..))` once, after which they are gone
+    /// (`Some` of an empty list when there is nothing to take). Without timestamps the times are NaN.
+    pub fn take_external_times(&mut self, ctx: &DeviceCtx) -> Result<Option<Vec<CommandTime>>> {
+        let Some(timed) = self.external_pending.take() else { return Ok(Some(Vec::new())) };
+        if !self.timestamps || timed.is_empty() {
+            return Ok(Some(self.times(timed, None)));
+        }
+        match self.external_queries.stamps(&ctx.device, timed.len(), false)? {
+            Some(stamps) => Ok(Some(self.times(timed, Some(&stamps)))),
+            None => {
+                self.external_pending = Some(timed);
+                Ok(None)
+            }
+        }
+    }
+
+    /// Destroys the pool (and its command buffers), the fence and the query pools. The GPU must be
+    /// done with them.
     pub fn destroy(&mut self, device: &ash::Device) {
+        self.main_queries.destroy(device);
+        self.external_queries.destroy(device);
         // SAFETY: nothing is pending; null handles are ignored.
         unsafe {
-            device.destroy_query_pool(self.queries, None);
             device.destroy_fence(self.fence, None);
             device.destroy_command_pool(self.pool, None);
         }
-        *self = Recorder::empty();
+        *self = Recorder { submissions: self.submissions, ..Recorder::empty() };
     }
 }
 
+/// Every stage a later command may access a buffer or image in (graphics stages only where the
+/// queue has them).
+fn later_stages(graphics: bool) -> vk::PipelineStageFlags {
+    let mut stages = vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER | vk::PipelineStageFlags::DRAW_INDIRECT;
+    if graphics {
+        stages |= vk::PipelineStageFlags::VERTEX_SHADER
+            | vk::PipelineStageFlags::FRAGMENT_SHADER
+            | vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+    }
+    stages
+}
+
+/// Every access a later command may make in [`later_stages`].
+fn later_accesses(graphics: bool) -> vk::AccessFlags {
+    let mut access = vk::AccessFlags::SHADER_READ
+        | vk::AccessFlags::SHADER_WRITE
+        | vk::AccessFlags::INDIRECT_COMMAND_READ
+        | vk::AccessFlags::TRANSFER_READ
+        | vk::AccessFlags::TRANSFER_WRITE;
+    if graphics {
+        access |= vk::AccessFlags::COLOR_ATTACHMENT_READ | vk::AccessFlags::COLOR_ATTACHMENT_WRITE;
+    }
+    access
+}
+
 /// Makes every earlier compute or transfer write visible to every later compute, indirect, vertex,
-/// fragment or transfer access (the shared semantics of the backends: each command sees all writes of the ones before).
-pub(super) fn full_barrier(d: &ash::Device, cb: vk::CommandBuffer) {
+/// fragment or transfer access (the shared semantics of the backends: each command sees all writes
+/// of the ones before). Graphics stages are named only where the queue supports graphics.
+pub(super) fn full_barrier(d: &ash::Device, cb: vk::CommandBuffer, graphics: bool) {
+    let mut dst = vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::DRAW_INDIRECT | vk::PipelineStageFlags::TRANSFER;
+    if graphics {
+        dst |= vk::PipelineStageFlags::VERTEX_SHADER | vk::PipelineStageFlags::FRAGMENT_SHADER;
+    }
     barrier(
         d,
         cb,
         vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER,
         vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_WRITE,
-        vk::PipelineStageFlags::COMPUTE_SHADER
-            | vk::PipelineStageFlags::DRAW_INDIRECT
-            | vk::PipelineStageFlags::VERTEX_SHADER
-            | vk::PipelineStageFlags::FRAGMENT_SHADER
-            | vk::PipelineStageFlags::TRANSFER,
+        dst,
         vk::AccessFlags::SHADER_READ
             | vk::AccessFlags::SHADER_WRITE
             | vk::AccessFlags::INDIRECT_COMMAND_READ

@@ -72,13 +72,24 @@ fn buffers_fill_scan_and_timings_are_clean() -> Result<()> {
     assert_eq!(times.iter().map(|t| t.label.as_str()).collect::<Vec<_>>(), ["again"]);
     assert!(vk.submit()?.is_empty());
 
-    // Past the query pool's capacity the backend submits on its own.
-    let count = recorder::MAX_TIMED as usize + 10;
+    // Past one query pool's capacity the recording takes another pool: still one submission.
+    let count = recorder::TIMED_PER_POOL as usize + 10;
     for i in 0..count {
         vk.fill(a, 0, 1, i as u32, "many")?;
     }
+    let before = vk.counters();
+    let times = vk.submit()?;
+    assert_eq!(times.len(), count);
+    assert!(times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0), "{:?}", &times[..4]);
+    assert_eq!(vk.counters().since(&before).submissions, 1, "one submit is one vkQueueSubmit");
+    // And again, reusing both pools.
+    for i in 0..count {
+        vk.fill(a, 0, 1, i as u32 + 1, "many")?;
+    }
+    let before = vk.counters();
     assert_eq!(vk.submit()?.len(), count);
-    assert_eq!(vk.read_buffer(a, 0, 1)?, vec![count as u32 - 1]);
+    assert_eq!(vk.counters().since(&before).submissions, 1);
+    assert_eq!(vk.read_buffer(a, 0, 1)?, vec![count as u32]);
 
     // Errors, not panics.
     assert!(matches!(vk.read_buffer(a, 999, 2), Err(Error::InvalidArgument(_))));
@@ -105,8 +116,8 @@ fn devices_are_listed() -> Result<()> {
 fn validation_reports_a_hazard() -> Result<()> {
     let Some(mut vk) = backend() else { return Ok(()) };
     let a = vk.create_buffer(16, "a")?;
-    let buffer = vk.buffer(a)?.gpu.buffer;
-    vk.recorder.record(&vk.device, None, |d, cb| {
+    let buffer = vk.buffer(a)?.handle;
+    vk.recorder.record(&vk.device, None, &[], |d, cb| {
         // SAFETY: `cb` is recording and the buffer is alive; the missing barrier is the point.
         unsafe {
             d.cmd_fill_buffer(cb, buffer, 0, 64, 1);
@@ -143,6 +154,39 @@ fn large_transfers_are_chunked() -> Result<()> {
     vk.write_buffer(a, 8, &data)?;
     assert_eq!(vk.read_buffer(a, 8, words)?, data);
     assert_eq!(vk.read_buffer(a, 0, 8)?, vec![0; 8]);
+    assert_eq!(vk.validation_messages(), Vec::<String>::new());
+    Ok(())
+}
+
+/// The counters count exactly what was done: buffers and bytes, submissions (hidden ones included),
+/// readbacks and uploads.
+#[test]
+fn counters_are_exact() -> Result<()> {
+    let Some(mut vk) = backend() else { return Ok(()) };
+    let zero = vk.counters();
+    assert_eq!(zero, BackendCounters::default());
+    let a = vk.create_buffer(100, "a")?;
+    let b = vk.create_buffer(0, "b")?; // one word
+    let c = vk.counters();
+    assert_eq!((c.allocations, c.device_bytes, c.peak_device_bytes, c.submissions), (2, 404, 404, 0));
+    vk.write_buffer(a, 0, &[1, 2, 3])?; // submits the zeroing, then the copy
+    let c = vk.counters();
+    assert_eq!((c.uploads, c.submissions, c.readbacks), (1, 2, 0));
+    assert_eq!(vk.read_buffer(a, 0, 3)?, vec![1, 2, 3]); // nothing recorded: one copy
+    let c = vk.counters();
+    assert_eq!((c.readbacks, c.submissions), (1, 3));
+    assert!(vk.submit()?.is_empty()); // nothing recorded: no submission
+    assert_eq!(vk.counters().submissions, 3);
+    vk.fill(b, 0, 1, 5, "five")?;
+    vk.submit()?;
+    assert_eq!(vk.counters().submissions, 4);
+    vk.destroy_buffer(a);
+    let c = vk.counters();
+    assert_eq!((c.allocations, c.device_bytes, c.peak_device_bytes), (2, 4, 404));
+    // Refused calls count nothing.
+    assert!(vk.read_buffer(b, 1, 1).is_err());
+    assert!(vk.write_buffer(b, 1, &[1]).is_err());
+    assert_eq!(vk.counters(), c);
     assert_eq!(vk.validation_messages(), Vec::<String>::new());
     Ok(())
 }

@@ -9,8 +9,11 @@ use std::time::Instant;
 
 #[derive(clap::Subcommand)]
 pub enum BenchCommand {
-    /// Segmented depth sort of tile lists shaped like seed 000 Fig. 12.
+    /// Segmented depth sort of tile lists shaped like Franke et al. 2018, Fig. 12.
     Sort(SortArgs),
+    /// One splatting frame after another through the frame API: record time, device time per
+    /// stage, context memory, and allocations, submissions and readbacks per frame.
+    Frame(super::bench_frame::FrameArgs),
 }
 
 #[derive(clap::Args)]
@@ -33,6 +36,7 @@ pub struct SortArgs {
 pub fn run(cmd: &BenchCommand) -> anyhow::Result<()> {
     match cmd {
         BenchCommand::Sort(args) => sort(args),
+        BenchCommand::Frame(args) => super::bench_frame::run(args),
     }
 }
 

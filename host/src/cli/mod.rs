@@ -1,4 +1,5 @@
 pub mod bench;
+pub mod bench_frame;
 pub mod compare;
 pub mod eval;
 pub mod info;

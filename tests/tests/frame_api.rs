@@ -1,0 +1,159 @@
+//! The frame API: a splatting context records frame after frame with no allocation, no readback and
+//! one submission; it resizes within its bounds; an overflowing list pool is counted and degrades
+//! to copied-through tiles instead of writing out of bounds; and every result equals the one-shot
+//! path's on both backends.
+
+use dof::Error;
+use dof::backend::{Backend, BufferId, CpuBackend};
+use dof::frame::{SplatContext, SplatContextDesc, SplatFrame};
+use dof::layers::LayeredImage;
+use dof::methods::buffers::{read_rgb, slot_words};
+use dof::methods::splat::{Merge, SplatOptions, splat};
+use dof::stress::{noise_with_sky, test_lens};
+use dof_tests::{assert_clean, vulkan};
+
+/// The caller's buffers for a frame of `image`, sized for `max` (width, height, layers).
+fn caller_buffers(b: &mut dyn Backend, max: (u32, u32, u32)) -> [BufferId; 3] {
+    let pixels = max.0 as u64 * max.1 as u64;
+    [
+        b.create_buffer(4 * pixels * max.2 as u64, "caller/fragments").unwrap(),
+        b.create_buffer(pixels, "caller/counts").unwrap(),
+        b.create_buffer(3 * pixels, "caller/output").unwrap(),
+    ]
+}
+
+fn upload(b: &mut dyn Backend, bufs: &[BufferId; 3], image: &LayeredImage) {
+    b.write_buffer(bufs[0], 0, &slot_words(image)).unwrap();
+    b.write_buffer(bufs[1], 0, &image.counts).unwrap();
+}
+
+fn frame(image: &LayeredImage, aperture: f32, bufs: &[BufferId; 3]) -> SplatFrame {
+    SplatFrame {
+        width: image.width,
+        height: image.height,
+        layers: image.max_layers,
+        lens: test_lens(aperture),
+        fragments: bufs[0],
+        counts: bufs[1],
+        output: bufs[2],
+    }
+}
+
+/// Frames of changing size, layer count and lens through one context: per frame no allocation, no
+/// readback, no upload and exactly one submission, and each image equals the one-shot path's.
+fn frames_through_one_context(b: &mut dyn Backend) {
+    let options = SplatOptions { merge: Merge::X4, ..Default::default() };
+    let max = (70, 45, 3);
+    let bufs = caller_buffers(b, max);
+    let mut ctx = SplatContext::new(b, &SplatContextDesc::new(max.0, max.1, max.2, options.clone())).unwrap();
+    let cases = [((70, 45, 3), 0.02), ((33, 20, 2), 0.01), ((70, 45, 3), 0.0), ((64, 40, 1), 0.03), ((70, 45, 3), 0.02)];
+    for (i, &((w, h, l), aperture)) in cases.iter().enumerate() {
+        let image = noise_with_sky(w, h, l);
+        upload(b, &bufs, &image);
+        let f = frame(&image, aperture, &bufs);
+        let before = b.counters();
+        ctx.record(b, &f).unwrap();
+        b.submit().unwrap();
+        let spent = b.counters().since(&before);
+        assert_eq!((spent.allocations, spent.readbacks, spent.uploads, spent.submissions), (0, 0, 0, 1), "frame {i} ({w}x{h}, {l} layers)");
+        let got = read_rgb(b, bufs[2], w, h).unwrap();
+        let report = ctx.report(b).unwrap();
+        assert_eq!(report.overflow_tiles, 0, "frame {i}");
+        let expected = splat(b, &image, &test_lens(aperture), &options).unwrap();
+        assert!(got.data == expected.image.data, "frame {i} ({w}x{h}, {l} layers, aperture {aperture}) differs from the one-shot path");
+        assert_eq!(report.list_entries, expected.report.list_entries, "frame {i}");
+    }
+    ctx.destroy(b);
+    bufs.iter().for_each(|&id| b.destroy_buffer(id));
+}
+
+#[test]
+fn a_context_records_frames_without_allocating_or_reading_back() {
+    frames_through_one_context(&mut CpuBackend::new());
+}
+
+#[test]
+fn a_context_records_frames_without_allocating_or_reading_back_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    frames_through_one_context(&mut vk);
+    assert_clean(&mut vk);
+}
+
+/// A pool too small for the frame: the tiles that do not fit are counted and copied through (their
+/// sharp fronts), the others are splatted as usual, nothing is written out of bounds (the CPU
+/// backend checks every index), and the one-shot path reruns with the pool the frame wanted.
+#[test]
+fn an_overflowing_list_pool_is_counted_and_degrades_to_copied_tiles() {
+    let mut b = CpuBackend::new();
+    let image = noise_with_sky(64, 48, 3);
+    let options = SplatOptions::default();
+    let bufs = caller_buffers(&mut b, (64, 48, 3));
+    upload(&mut b, &bufs, &image);
+    let mut desc = SplatContextDesc::new(64, 48, 3, options.clone());
+    desc.list_entries = Some(3000);
+    let mut ctx = SplatContext::new(&mut b, &desc).unwrap();
+    ctx.record(&mut b, &frame(&image, 0.02, &bufs)).unwrap();
+    b.submit().unwrap();
+    let report = ctx.report(&mut b).unwrap();
+    let got = read_rgb(&mut b, bufs[2], 64, 48).unwrap();
+    assert!(report.overflow_tiles > 0 && report.overflow_entries > 0, "{report:?}");
+    assert!(report.list_entries <= 3000, "{} entries placed in a pool of 3000", report.list_entries);
+    assert!(report.summary().contains("OVERFLOW"));
+    let front = image.front().0;
+    let whole = splat(&mut b, &image, &test_lens(0.02), &options).unwrap();
+    assert_eq!(whole.report.overflow_tiles, 0, "the one-shot path reruns with a larger pool");
+    // Every tile is either the whole frame's (splatted in the pool) or its sharp fronts (overflow).
+    let tiles_x = 64usize.div_ceil(16);
+    let mut overflowed = 0;
+    for ty in 0..48usize.div_ceil(16) {
+        for tx in 0..tiles_x {
+            let pixels: Vec<usize> = (ty * 16..(ty * 16 + 16).min(48)).flat_map(|y| (tx * 16..(tx * 16 + 16).min(64)).map(move |x| y * 64 + x)).collect();
+            let same = pixels.iter().all(|&p| got.data[p] == whole.image.data[p]);
+            if !same {
+                overflowed += 1;
+                for &p in &pixels {
+                    assert!(got.data[p].iter().all(|c| c.is_finite()), "pixel {p} of an overflowing tile is not finite");
+                }
+            }
+        }
+    }
+    assert!(overflowed > 0 && overflowed <= report.overflow_tiles as usize, "{overflowed} tiles differ, {} overflowed", report.overflow_tiles);
+    assert!(got.data.iter().zip(&front.data).any(|(a, b)| a == b));
+    ctx.destroy(&mut b);
+}
+
+#[test]
+fn frames_beyond_the_context_or_its_buffers_are_refused() {
+    let mut b = CpuBackend::new();
+    let options = SplatOptions::default();
+    let mut ctx = SplatContext::new(&mut b, &SplatContextDesc::new(32, 32, 2, options.clone())).unwrap();
+    let image = noise_with_sky(40, 20, 2);
+    let bufs = caller_buffers(&mut b, (40, 20, 2));
+    upload(&mut b, &bufs, &image);
+    assert!(matches!(ctx.record(&mut b, &frame(&image, 0.01, &bufs)), Err(Error::InvalidArgument(m)) if m.contains("resize")));
+    ctx.resize(&mut b, 40, 20, 2).unwrap();
+    ctx.record(&mut b, &frame(&image, 0.01, &bufs)).unwrap();
+    b.submit().unwrap();
+    let small = caller_buffers(&mut b, (8, 8, 1));
+    let short = SplatFrame { output: small[2], ..frame(&image, 0.01, &bufs) };
+    assert!(matches!(ctx.record(&mut b, &short), Err(Error::InvalidArgument(m)) if m.contains("output")));
+    let nan_lens = SplatFrame { lens: test_lens(f32::NAN), ..frame(&image, 0.01, &bufs) };
+    assert!(matches!(ctx.record(&mut b, &nan_lens), Err(Error::InvalidArgument(_))));
+    assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(0, 10, 1, options.clone())), Err(Error::InvalidArgument(_))));
+    assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(100_000, 10, 1, options.clone())), Err(Error::TooLarge { .. })));
+    let mut huge_pool = SplatContextDesc::new(16, 16, 1, options);
+    huge_pool.list_entries = Some(1 << 40);
+    assert!(matches!(SplatContext::new(&mut b, &huge_pool), Err(Error::TooLarge { .. })));
+    ctx.destroy(&mut b);
+}
+
+/// The context's memory is what it reports, and it does not grow frame after frame.
+#[test]
+fn the_context_holds_its_memory_and_no_more() {
+    let mut b = CpuBackend::new();
+    let start = b.counters().device_bytes;
+    let ctx = SplatContext::new(&mut b, &SplatContextDesc::new(96, 64, 4, SplatOptions { merge: Merge::X4, ..Default::default() })).unwrap();
+    assert_eq!(b.counters().device_bytes - start, ctx.device_bytes());
+    ctx.destroy(&mut b);
+    assert_eq!(b.counters().device_bytes, start);
+}

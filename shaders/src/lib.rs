@@ -10,6 +10,7 @@ pub mod exec;
 #[macro_use]
 pub mod kernel;
 pub mod bokeh;
+pub mod frame_io;
 pub mod gather;
 pub mod half;
 pub mod keys;
@@ -38,6 +39,7 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .chain(layered::KERNELS.iter())
         .chain(bokeh::KERNELS.iter())
         .chain(raster::KERNELS.iter())
+        .chain(frame_io::KERNELS.iter())
         .copied()
 }
 

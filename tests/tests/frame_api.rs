@@ -5,7 +5,7 @@
 
 use dof::Error;
 use dof::backend::{Backend, BufferId, CpuBackend};
-use dof::frame::{SplatContext, SplatContextDesc, SplatFrame};
+use dof::frame::{FrameInput, FrameOutput, SplatContext, SplatContextDesc, SplatFrame};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::splat::{Merge, SplatOptions, splat};
@@ -28,15 +28,7 @@ fn upload(b: &mut dyn Backend, bufs: &[BufferId; 3], image: &LayeredImage) {
 }
 
 fn frame(image: &LayeredImage, aperture: f32, bufs: &[BufferId; 3]) -> SplatFrame {
-    SplatFrame {
-        width: image.width,
-        height: image.height,
-        layers: image.max_layers,
-        lens: test_lens(aperture),
-        fragments: bufs[0],
-        counts: bufs[1],
-        output: bufs[2],
-    }
+    SplatFrame::layers(image.width, image.height, image.max_layers, test_lens(aperture), bufs[0], bufs[1], bufs[2])
 }
 
 /// Frames of changing size, layer count and lens through one context: per frame no allocation, no
@@ -135,7 +127,7 @@ fn frames_beyond_the_context_or_its_buffers_are_refused() {
     ctx.record(&mut b, &frame(&image, 0.01, &bufs)).unwrap();
     b.submit().unwrap();
     let small = caller_buffers(&mut b, (8, 8, 1));
-    let short = SplatFrame { output: small[2], ..frame(&image, 0.01, &bufs) };
+    let short = SplatFrame { output: FrameOutput::Buffer(small[2]), ..frame(&image, 0.01, &bufs) };
     assert!(matches!(ctx.record(&mut b, &short), Err(Error::InvalidArgument(m)) if m.contains("output")));
     let nan_lens = SplatFrame { lens: test_lens(f32::NAN), ..frame(&image, 0.01, &bufs) };
     assert!(matches!(ctx.record(&mut b, &nan_lens), Err(Error::InvalidArgument(_))));
@@ -156,4 +148,67 @@ fn the_context_holds_its_memory_and_no_more() {
     assert_eq!(b.counters().device_bytes - start, ctx.device_bytes());
     ctx.destroy(&mut b);
     assert_eq!(b.counters().device_bytes, start);
+}
+
+/// Image inputs and outputs need a context that holds their buffers, and the CPU backend, which
+/// has no images, refuses them with a clear error rather than running on garbage.
+#[test]
+fn image_frames_need_image_io_and_a_backend_with_images() {
+    use dof::backend::{ImageFormat, ImageRef};
+    use dof::frame::DepthEncoding;
+    let mut b = CpuBackend::new();
+    let options = SplatOptions::default();
+    // SAFETY: the handles are never used: both records are refused before any command.
+    let image = |format| unsafe {
+        ImageRef::vulkan(
+            dof::backend::vulkan::ash::vk::Image::null(),
+            format,
+            [16, 16],
+            dof::backend::vulkan::ash::vk::ImageLayout::GENERAL,
+            dof::backend::vulkan::ash::vk::PipelineStageFlags::empty(),
+            dof::backend::vulkan::ash::vk::AccessFlags::empty(),
+            dof::backend::vulkan::ash::vk::ImageLayout::GENERAL,
+        )
+    };
+    let f = SplatFrame {
+        width: 16,
+        height: 16,
+        lens: test_lens(0.01),
+        input: FrameInput::Images { color: image(ImageFormat::Rgba32Float), depth: image(ImageFormat::R32Float), encoding: DepthEncoding::Linear },
+        output: FrameOutput::Image(image(ImageFormat::Rgba32Float)),
+    };
+    let mut plain = SplatContext::new(&mut b, &SplatContextDesc::new(16, 16, 1, options.clone())).unwrap();
+    assert!(matches!(plain.record(&mut b, &f), Err(Error::InvalidArgument(m)) if m.contains("image_io")));
+    let mut desc = SplatContextDesc::new(16, 16, 1, options);
+    desc.image_io = true;
+    let mut with_io = SplatContext::new(&mut b, &desc).unwrap();
+    let wrong = SplatFrame { input: FrameInput::Images { color: image(ImageFormat::R32Float), depth: image(ImageFormat::R32Float), encoding: DepthEncoding::Linear }, ..f };
+    assert!(matches!(with_io.record(&mut b, &wrong), Err(Error::InvalidArgument(m)) if m.contains("colour")));
+    let planes = SplatFrame { input: FrameInput::Images { color: image(ImageFormat::Rgba32Float), depth: image(ImageFormat::R32Float), encoding: DepthEncoding::Reversed { near: 0.0, far: 10.0 } }, ..f };
+    assert!(matches!(with_io.record(&mut b, &planes), Err(Error::InvalidArgument(m)) if m.contains("near")));
+    assert!(with_io.record(&mut b, &f).is_err(), "the CPU backend has no images");
+    plain.destroy(&mut b);
+    with_io.destroy(&mut b);
+}
+
+/// Depth-buffer values become view depth: both conventions, finite and infinite far planes, and
+/// the background where an infinite projection puts nothing.
+#[test]
+fn depth_buffers_decode_to_view_depth() {
+    use dof_shaders::frame_io::{DEPTH_REVERSED, DEPTH_STANDARD, FrameIoParams, view_depth};
+    let p = |enc, far| FrameIoParams { width: 1, height: 1, color_words: 4, depth_encoding: enc, near: 0.1, far };
+    for (enc, near_value) in [(DEPTH_STANDARD, 0.0), (DEPTH_REVERSED, 1.0)] {
+        for far in [50.0f32, f32::INFINITY] {
+            let q = p(enc, far);
+            assert!((view_depth(&q, near_value) - 0.1).abs() < 1e-6, "near plane ({enc}, far {far})");
+            let at_far = view_depth(&q, 1.0 - near_value);
+            assert!(if far.is_finite() { (at_far - far).abs() < 1e-3 * far } else { at_far == f32::INFINITY }, "far plane ({enc}, far {far}): {at_far}");
+            // A point at view depth 2: its depth value, and back.
+            let z = 2.0f32;
+            let d = if far.is_finite() { (1.0 / 0.1 - 1.0 / z) / (1.0 / 0.1 - 1.0 / far) } else { 1.0 - 0.1 / z };
+            let d = if enc == DEPTH_REVERSED { 1.0 - d } else { d };
+            assert!((view_depth(&q, d) - z).abs() < 1e-4, "{enc}, far {far}: {} for {d}", view_depth(&q, d));
+            assert!(view_depth(&q, 1.5).is_nan() && view_depth(&q, f32::NAN).is_nan() && view_depth(&q, -0.1).is_nan());
+        }
+    }
 }

@@ -168,7 +168,7 @@ fn framed(b: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &
     b.write_buffer(bufs[1], 0, &image.counts)?;
     let desc = SplatContextDesc::new(image.width, image.height, image.max_layers, options.clone());
     let mut ctx = SplatContext::new(b, &desc)?;
-    let frame = SplatFrame { width: image.width, height: image.height, layers: image.max_layers, lens: *lens, fragments: bufs[0], counts: bufs[1], output: bufs[2] };
+    let frame = SplatFrame::layers(image.width, image.height, image.max_layers, *lens, bufs[0], bufs[1], bufs[2]);
     ctx.record(b, &frame)?;
     b.submit()?;
     let before = b.counters();

@@ -24,4 +24,4 @@
 
 pub mod splat;
 
-pub use splat::{SplatContext, SplatContextDesc, SplatFrame};
+pub use splat::{DepthEncoding, FrameInput, FrameOutput, SplatContext, SplatContextDesc, SplatFrame};

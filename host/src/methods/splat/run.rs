@@ -61,7 +61,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
     with_buffers(backend, &sizes, |backend, io| {
         backend.write_buffer(io[0], 0, &input)?;
         backend.write_buffer(io[1], 0, &image.counts)?;
-        let frame = SplatFrame { width: w, height: h, layers, lens: *lens, fragments: io[0], counts: io[1], output: io[2] };
+        let frame = SplatFrame::layers(w, h, layers, *lens, io[0], io[1], io[2]);
         let mut attempt = 0;
         loop {
             let mut ctx = SplatContext::new(backend, &desc)?;

@@ -1,0 +1,106 @@
+//! What a renderer hands the frame API, in the layouts the methods read, and back.
+//!
+//! - `frame_from_images` (one invocation per pixel): a colour image (RGBA32F, or RGBA16F as half
+//!   bits) and a depth image copied into buffers become one fragment slot per pixel. The depth is
+//!   either linear (planar view depth, as the methods take it) or a depth buffer's value, turned
+//!   into view depth from the projection's near and far planes (standard or reversed Z, a far plane
+//!   at infinity allowed). Where reversed or infinite projections put nothing (the far plane at
+//!   infinity), the depth is +inf: the background, which every method blends like a surface.
+//! - `frame_to_rgba` (one invocation per pixel): the methods' RGB result (3 f32 words a pixel) as
+//!   RGBA32F or RGBA16F with alpha 1, ready to copy into the caller's image.
+
+use crate::exec::{Group, Mem};
+use crate::half::{f16_to_f32, f32_to_f16};
+use crate::wg::for_each_item;
+
+/// `depth_encoding`: planar view depth as it is.
+pub const DEPTH_LINEAR: u32 = 0;
+/// `depth_encoding`: a depth buffer, 0 at the near plane and 1 at the far plane.
+pub const DEPTH_STANDARD: u32 = 1;
+/// `depth_encoding`: a reversed depth buffer, 1 at the near plane and 0 at the far plane.
+pub const DEPTH_REVERSED: u32 = 2;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct FrameIoParams {
+    pub width: u32,
+    pub height: u32,
+    /// Words a pixel of the colour buffer: 4 (RGBA32F) or 2 (RGBA16F as half bits).
+    pub color_words: u32,
+    pub depth_encoding: u32,
+    /// The projection's near and far planes (scene units; `far` may be +inf), for encoded depths.
+    pub near: f32,
+    pub far: f32,
+}
+
+/// View depth from a depth-buffer value `d` (NaN outside `[0, 1]`).
+#[inline]
+pub fn view_depth(p: &FrameIoParams, d: f32) -> f32 {
+    if p.depth_encoding == DEPTH_LINEAR {
+        return d;
+    }
+    if !(d >= 0.0 && d <= 1.0) {
+        return f32::NAN;
+    }
+    let infinite_far = p.far == f32::INFINITY;
+    // Standard: z = n·f / (f − d·(f − n)); reversed: z = n·f / (n + d·(f − n)). With the far plane
+    // at infinity they become n / (1 − d) and n / d.
+    let (num, den) = if p.depth_encoding == DEPTH_STANDARD {
+        if infinite_far { (p.near, 1.0 - d) } else { (p.near * p.far, p.far - d * (p.far - p.near)) }
+    } else if infinite_far {
+        (p.near, d)
+    } else {
+        (p.near * p.far, p.near + d * (p.far - p.near))
+    };
+    if den <= 0.0 { f32::INFINITY } else { num / den }
+}
+
+#[inline]
+fn load_rgb<M: Mem>(color: &M, p: &FrameIoParams, i: u32) -> [f32; 3] {
+    if p.color_words == 2 {
+        let (rg, ba) = (color.load(2 * i), color.load(2 * i + 1));
+        [f16_to_f32(rg & 0xffff), f16_to_f32(rg >> 16), f16_to_f32(ba & 0xffff)]
+    } else {
+        [f32::from_bits(color.load(4 * i)), f32::from_bits(color.load(4 * i + 1)), f32::from_bits(color.load(4 * i + 2))]
+    }
+}
+
+pub fn from_images_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, color: M, depth: M, mut fragments: M, mut counts: M) {
+    for_each_item(g, p.width * p.height, |i| {
+        let c = load_rgb(&color, p, i);
+        let z = view_depth(p, f32::from_bits(depth.load(i)));
+        fragments.store(4 * i, c[0].to_bits());
+        fragments.store(4 * i + 1, c[1].to_bits());
+        fragments.store(4 * i + 2, c[2].to_bits());
+        fragments.store(4 * i + 3, z.to_bits());
+        counts.store(i, 1);
+    });
+}
+
+pub fn to_rgba_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, rgb: M, mut rgba: M) {
+    for_each_item(g, p.width * p.height, |i| {
+        let c = [rgb.load(3 * i), rgb.load(3 * i + 1), rgb.load(3 * i + 2)];
+        if p.color_words == 2 {
+            let h = |w: u32| f32_to_f16(f32::from_bits(w));
+            rgba.store(2 * i, h(c[0]) | (h(c[1]) << 16));
+            rgba.store(2 * i + 1, h(c[2]) | (f32_to_f16(1.0) << 16));
+        } else {
+            rgba.store(4 * i, c[0]);
+            rgba.store(4 * i + 1, c[1]);
+            rgba.store(4 * i + 2, c[2]);
+            rgba.store(4 * i + 3, 1.0f32.to_bits());
+        }
+    });
+}
+
+kernel!(
+    /// A colour and a depth image (copied into buffers) as one fragment slot per pixel.
+    FROM_IMAGES = frame_from_images [256] (FrameIoParams) { color, depth, fragments, counts } => from_images_pass
+);
+kernel!(
+    /// The RGB result as RGBA32F or RGBA16F with alpha 1.
+    TO_RGBA = frame_to_rgba [256] (FrameIoParams) { rgb, rgba } => to_rgba_pass
+);
+
+#[cfg(not(target_arch = "spirv"))]
+pub const KERNELS: [&crate::KernelDesc; 2] = [&FROM_IMAGES, &TO_RGBA];

@@ -6,6 +6,9 @@
 //!   into view depth from the projection's near and far planes (standard or reversed Z, a far plane
 //!   at infinity allowed). Where reversed or infinite projections put nothing (the far plane at
 //!   infinity), the depth is +inf: the background, which every method blends like a surface.
+//! - `frame_front` (one invocation per pixel): the front slot of a multi-layer input as a colour
+//!   (3 words) and a depth (1 word) a pixel, black at infinite depth where a pixel has no slot: the
+//!   input of the single-layer gathering methods.
 //! - `frame_to_rgba` (one invocation per pixel): the methods' RGB result (3 f32 words a pixel) as
 //!   RGBA32F or RGBA16F with alpha 1, ready to copy into the caller's image.
 
@@ -31,6 +34,9 @@ pub struct FrameIoParams {
     /// The projection's near and far planes (scene units; `far` may be +inf), for encoded depths.
     pub near: f32,
     pub far: f32,
+    /// Slots per pixel of a multi-layer input (`frame_front`).
+    pub layers: u32,
+    pub _pad: u32,
 }
 
 /// View depth from a depth-buffer value `d` (NaN outside `[0, 1]`).
@@ -77,6 +83,19 @@ pub fn from_images_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, color: M
     });
 }
 
+pub fn front_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, fragments: M, counts: M, mut color: M, mut depth: M) {
+    for_each_item(g, p.width * p.height, |i| {
+        let b = 4 * i * p.layers;
+        let front = counts.load(i) > 0;
+        let mut k = 0;
+        while k < 3 {
+            color.store(3 * i + k, if front { fragments.load(b + k) } else { 0 });
+            k += 1;
+        }
+        depth.store(i, if front { fragments.load(b + 3) } else { f32::INFINITY.to_bits() });
+    });
+}
+
 pub fn to_rgba_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, rgb: M, mut rgba: M) {
     for_each_item(g, p.width * p.height, |i| {
         let c = [rgb.load(3 * i), rgb.load(3 * i + 1), rgb.load(3 * i + 2)];
@@ -98,9 +117,13 @@ kernel!(
     FROM_IMAGES = frame_from_images [256] (FrameIoParams) { color, depth, fragments, counts } => from_images_pass
 );
 kernel!(
+    /// The front slot of a multi-layer input as colour and depth.
+    FRONT = frame_front [256] (FrameIoParams) { fragments, counts, color, depth } => front_pass
+);
+kernel!(
     /// The RGB result as RGBA32F or RGBA16F with alpha 1.
     TO_RGBA = frame_to_rgba [256] (FrameIoParams) { rgb, rgba } => to_rgba_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]
-pub const KERNELS: [&crate::KernelDesc; 2] = [&FROM_IMAGES, &TO_RGBA];
+pub const KERNELS: [&crate::KernelDesc; 3] = [&FROM_IMAGES, &FRONT, &TO_RGBA];

@@ -7,9 +7,10 @@
 //! cannot show what the near field covers (partial occlusion), which is what the multi-layer
 //! methods add.
 //!
-//! Radii are capped at `max_radius` pixels (the window the kernel scans). Non-finite colours and
-//! depths are skipped, so a NaN or Inf pixel never spreads; a pixel whose own value is skipped and
-//! that nothing covers comes out black.
+//! Radii are capped at the window the kernel scans: the largest CoC radius present, which
+//! `gather_plan` reduces on the device into `plan[0]` (whole pixels), at most `max_radius`.
+//! Non-finite colours and depths are skipped, so a NaN or Inf pixel never spreads; a pixel whose
+//! own value is skipped and that nothing covers comes out black.
 
 use crate::exec::{Group, Mem};
 use crate::lens::{ThinLens, is_finite as finite, is_positive};
@@ -40,8 +41,44 @@ fn colour<M: Mem>(color: &M, i: u32) -> Option<[f32; 3]> {
     if finite(c[0]) && finite(c[1]) && finite(c[2]) { Some(c) } else { None }
 }
 
+/// The planned window radius: the reduction's, within the configured cap.
+#[inline]
+pub fn planned_radius<M: Mem>(p: &GatherParams, plan: &M) -> u32 {
+    let r = plan.load(0);
+    if r < p.max_radius { r } else { p.max_radius }
+}
+
+/// Grid-stride over pixels: the largest CoC radius (capped at `max_radius`, rounded up to whole
+/// pixels) of every sample with a positive depth, into `plan[0]` (zeroed before).
+pub fn plan_pass<G: Group, M: Mem>(g: &mut G, p: &GatherParams, sh: &mut [u32; 2 * 256], depth: M, mut plan: M) {
+    let stride = g.num_workgroups()[0] * 256;
+    let base = g.workgroup_id()[0] * 256;
+    let pixels = p.width * p.height;
+    g.each(|lid| {
+        let mut widest = 0u32;
+        let mut i = base + lid;
+        while i < pixels {
+            let z = f32::from_bits(depth.load(i));
+            if is_positive(z) {
+                let r = radius_px(&p.lens, z, p.max_radius as f32);
+                let whole = r as u32 + if (r as u32) as f32 == r { 0 } else { 1 };
+                widest = if whole > widest { whole } else { widest };
+            }
+            i += stride;
+        }
+        sh[lid as usize] = widest;
+    });
+    let m = crate::wg::inclusive_scan(g, sh, 0, crate::wg::max);
+    g.each(|lid| {
+        if lid == 255 {
+            plan.atomic_max(0, sh[m + lid as usize]);
+        }
+    });
+}
+
 /// One invocation per pixel of an 8x8 tile.
-pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &GatherParams, color: M, depth: M, mut out: M) {
+pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &GatherParams, color: M, depth: M, mut out: M, plan: M) {
+    let radius = planned_radius(p, &plan);
     let [wx, wy, _] = g.workgroup_id();
     g.each(|lid| {
         let x = wx * TILE + lid % TILE;
@@ -49,11 +86,11 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &GatherParams, color: M, dept
         if x >= p.width || y >= p.height {
             return;
         }
-        let max_r = p.max_radius as f32;
+        let max_r = radius as f32;
         let pi = y * p.width + x;
         let zp = f32::from_bits(depth.load(pi));
         let rp = radius_px(&p.lens, zp, max_r);
-        let r = p.max_radius as i32;
+        let r = radius as i32;
         let mut acc = [0.0f32; 3];
         let mut weight = 0.0f32;
         let mut dy = -r;
@@ -91,8 +128,12 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &GatherParams, color: M, dept
 
 kernel!(
     /// The gathering baseline over a colour (3 words a pixel) and depth (1 word a pixel) image.
-    GATHER = gather [64] (GatherParams) { color, depth, out } => gather_pass
+    GATHER = gather [64] (GatherParams) { color, depth, out, plan } => gather_pass
+);
+kernel!(
+    /// The largest CoC radius present, into the plan word the gather reads.
+    GATHER_PLAN = gather_plan [256] (GatherParams) shared [u32; 2 * 256] { depth, plan } => plan_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]
-pub const KERNELS: [&crate::KernelDesc; 1] = [&GATHER];
+pub const KERNELS: [&crate::KernelDesc; 2] = [&GATHER, &GATHER_PLAN];

@@ -5,7 +5,7 @@
 
 use dof::Error;
 use dof::backend::{Backend, BufferId, CpuBackend};
-use dof::frame::{FrameInput, FrameOutput, SplatContext, SplatContextDesc, SplatFrame};
+use dof::frame::{FrameInput, FrameOutput, SplatContext, SplatContextDesc, Frame};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::splat::{Merge, SplatOptions, splat};
@@ -27,8 +27,8 @@ fn upload(b: &mut dyn Backend, bufs: &[BufferId; 3], image: &LayeredImage) {
     b.write_buffer(bufs[1], 0, &image.counts).unwrap();
 }
 
-fn frame(image: &LayeredImage, aperture: f32, bufs: &[BufferId; 3]) -> SplatFrame {
-    SplatFrame::layers(image.width, image.height, image.max_layers, test_lens(aperture), bufs[0], bufs[1], bufs[2])
+fn frame(image: &LayeredImage, aperture: f32, bufs: &[BufferId; 3]) -> Frame {
+    Frame::layers(image.width, image.height, image.max_layers, test_lens(aperture), bufs[0], bufs[1], bufs[2])
 }
 
 /// Frames of changing size, layer count and lens through one context: per frame no allocation, no
@@ -127,9 +127,9 @@ fn frames_beyond_the_context_or_its_buffers_are_refused() {
     ctx.record(&mut b, &frame(&image, 0.01, &bufs)).unwrap();
     b.submit().unwrap();
     let small = caller_buffers(&mut b, (8, 8, 1));
-    let short = SplatFrame { output: FrameOutput::Buffer(small[2]), ..frame(&image, 0.01, &bufs) };
+    let short = Frame { output: FrameOutput::Buffer(small[2]), ..frame(&image, 0.01, &bufs) };
     assert!(matches!(ctx.record(&mut b, &short), Err(Error::InvalidArgument(m)) if m.contains("output")));
-    let nan_lens = SplatFrame { lens: test_lens(f32::NAN), ..frame(&image, 0.01, &bufs) };
+    let nan_lens = Frame { lens: test_lens(f32::NAN), ..frame(&image, 0.01, &bufs) };
     assert!(matches!(ctx.record(&mut b, &nan_lens), Err(Error::InvalidArgument(_))));
     assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(0, 10, 1, options.clone())), Err(Error::InvalidArgument(_))));
     assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(100_000, 10, 1, options.clone())), Err(Error::TooLarge { .. })));
@@ -170,7 +170,7 @@ fn image_frames_need_image_io_and_a_backend_with_images() {
             dof::backend::vulkan::ash::vk::ImageLayout::GENERAL,
         )
     };
-    let f = SplatFrame {
+    let f = Frame {
         width: 16,
         height: 16,
         lens: test_lens(0.01),
@@ -182,9 +182,9 @@ fn image_frames_need_image_io_and_a_backend_with_images() {
     let mut desc = SplatContextDesc::new(16, 16, 1, options);
     desc.image_io = true;
     let mut with_io = SplatContext::new(&mut b, &desc).unwrap();
-    let wrong = SplatFrame { input: FrameInput::Images { color: image(ImageFormat::R32Float), depth: image(ImageFormat::R32Float), encoding: DepthEncoding::Linear }, ..f };
+    let wrong = Frame { input: FrameInput::Images { color: image(ImageFormat::R32Float), depth: image(ImageFormat::R32Float), encoding: DepthEncoding::Linear }, ..f };
     assert!(matches!(with_io.record(&mut b, &wrong), Err(Error::InvalidArgument(m)) if m.contains("colour")));
-    let planes = SplatFrame { input: FrameInput::Images { color: image(ImageFormat::Rgba32Float), depth: image(ImageFormat::R32Float), encoding: DepthEncoding::Reversed { near: 0.0, far: 10.0 } }, ..f };
+    let planes = Frame { input: FrameInput::Images { color: image(ImageFormat::Rgba32Float), depth: image(ImageFormat::R32Float), encoding: DepthEncoding::Reversed { near: 0.0, far: 10.0 } }, ..f };
     assert!(matches!(with_io.record(&mut b, &planes), Err(Error::InvalidArgument(m)) if m.contains("near")));
     assert!(with_io.record(&mut b, &f).is_err(), "the CPU backend has no images");
     plain.destroy(&mut b);
@@ -196,7 +196,7 @@ fn image_frames_need_image_io_and_a_backend_with_images() {
 #[test]
 fn depth_buffers_decode_to_view_depth() {
     use dof_shaders::frame_io::{DEPTH_REVERSED, DEPTH_STANDARD, FrameIoParams, view_depth};
-    let p = |enc, far| FrameIoParams { width: 1, height: 1, color_words: 4, depth_encoding: enc, near: 0.1, far };
+    let p = |enc, far| FrameIoParams { width: 1, height: 1, color_words: 4, depth_encoding: enc, near: 0.1, far, layers: 1, _pad: 0 };
     for (enc, near_value) in [(DEPTH_STANDARD, 0.0), (DEPTH_REVERSED, 1.0)] {
         for far in [50.0f32, f32::INFINITY] {
             let q = p(enc, far);
@@ -211,4 +211,31 @@ fn depth_buffers_decode_to_view_depth() {
             assert!(view_depth(&q, 1.5).is_nan() && view_depth(&q, f32::NAN).is_nan() && view_depth(&q, -0.1).is_nan());
         }
     }
+}
+
+/// The gathering baseline through its context: frames of a multi-layer input (it reads the front
+/// slot) with no allocation or readback, each equal to the one-shot gather of the front layer,
+/// with the window radius reduced on the device.
+#[test]
+fn a_gather_context_records_frames_like_the_one_shot_gather() {
+    use dof::frame::{GatherContext, GatherContextDesc};
+    use dof::methods::gather::{MAX_RADIUS, gather, needed_radius};
+    let mut b = CpuBackend::new();
+    let bufs = caller_buffers(&mut b, (50, 30, 3));
+    let mut ctx = GatherContext::new(&mut b, &GatherContextDesc::new(50, 30, 3)).unwrap();
+    for (i, (w, h, l, aperture)) in [(50u32, 30u32, 3u32, 0.02f32), (24, 17, 2, 0.005), (50, 30, 1, 0.0)].into_iter().enumerate() {
+        let image = noise_with_sky(w, h, l);
+        upload(&mut b, &bufs, &image);
+        let before = b.counters();
+        ctx.record(&mut b, &frame(&image, aperture, &bufs)).unwrap();
+        b.submit().unwrap();
+        let spent = b.counters().since(&before);
+        assert_eq!((spent.allocations, spent.readbacks, spent.submissions), (0, 0, 1), "frame {i}");
+        let got = read_rgb(&mut b, bufs[2], w, h).unwrap();
+        let (front, depth) = image.front();
+        let expected = gather(&mut b, &front, &depth, &test_lens(aperture), None).unwrap();
+        assert!(got.data == expected.image.data, "frame {i} differs from the one-shot gather");
+        assert_eq!(ctx.radius(&mut b).unwrap(), needed_radius(&test_lens(aperture), &depth, MAX_RADIUS), "frame {i}");
+    }
+    ctx.destroy(&mut b);
 }

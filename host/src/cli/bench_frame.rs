@@ -5,7 +5,7 @@
 use super::render::BackendArg;
 use anyhow::Context;
 use dof::backend::{Backend, BackendCounters, BufferId};
-use dof::frame::{SplatContext, SplatContextDesc, SplatFrame};
+use dof::frame::{Frame, SplatContext, SplatContextDesc};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::slot_words;
 use dof::methods::splat::{Merge, SplatOptions, splat};
@@ -168,7 +168,7 @@ fn framed(b: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &
     b.write_buffer(bufs[1], 0, &image.counts)?;
     let desc = SplatContextDesc::new(image.width, image.height, image.max_layers, options.clone());
     let mut ctx = SplatContext::new(b, &desc)?;
-    let frame = SplatFrame::layers(image.width, image.height, image.max_layers, *lens, bufs[0], bufs[1], bufs[2]);
+    let frame = Frame::layers(image.width, image.height, image.max_layers, *lens, bufs[0], bufs[1], bufs[2]);
     ctx.record(b, &frame)?;
     b.submit()?;
     let before = b.counters();

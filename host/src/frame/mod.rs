@@ -22,6 +22,10 @@
 //! layers (Lee et al. 2010) still plan on the host from the image and run through their one-shot
 //! functions in [`crate::methods`].
 
+pub mod gather;
+pub mod io;
 pub mod splat;
 
-pub use splat::{DepthEncoding, FrameInput, FrameOutput, SplatContext, SplatContextDesc, SplatFrame};
+pub use gather::{GatherContext, GatherContextDesc};
+pub use io::{DepthEncoding, Frame, FrameInput, FrameOutput};
+pub use splat::{SplatContext, SplatContextDesc};

@@ -1,14 +1,13 @@
 //! Tiled splatting as a frame context: every buffer and bound fixed at creation, then per frame a
 //! recording of the stages in `dof_shaders::splat` with no allocation, readback or host planning.
 
-use crate::backend::{Backend, BufferId, ImageFormat, ImageRef, push_words};
+use super::io::{Frame, ImageIo, check_frame, output_buffer, record_input, record_output};
+use crate::backend::{Backend, BufferId, push_words};
 use crate::error::{Error, Result};
 use crate::methods::buffers::groups_for;
 use crate::methods::splat::{Plan, SplatOptions, SplatReport};
 use crate::ops::scan::ScanScratch;
 use crate::ops::sort::SegmentedSort;
-use dof_shaders::frame_io::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, FROM_IMAGES, FrameIoParams, TO_RGBA};
-use dof_shaders::lens::ThinLens;
 use dof_shaders::splat::accumulate::ACCUMULATE;
 use dof_shaders::splat::bin::{ALLOC, BIN, COMPACT, TILE_COUNT};
 use dof_shaders::splat::fragment::MAX_EDGE;
@@ -65,66 +64,6 @@ impl SplatContextDesc {
     }
 }
 
-/// How a depth image encodes depth.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum DepthEncoding {
-    /// Planar view depth in scene units (what the methods take).
-    Linear,
-    /// A depth buffer: 0 at the near plane, 1 at the far plane (`far` may be infinite).
-    Standard { near: f32, far: f32 },
-    /// A reversed depth buffer: 1 at the near plane, 0 at the far plane (`far` may be infinite;
-    /// then 0 is the background).
-    Reversed { near: f32, far: f32 },
-}
-
-/// What a frame reads.
-#[derive(Clone, Copy, Debug)]
-pub enum FrameInput {
-    /// A multi-layer image in the caller's buffers, read only: `fragments` holds per pixel
-    /// `layers` slots of 4 words (red, green, blue, depth as f32 bits), front to back, and
-    /// `counts` the slots used per pixel (one word each).
-    Layers { fragments: BufferId, counts: BufferId, layers: u32 },
-    /// The caller's colour (RGBA32F or RGBA16F) and depth (R32F) images: one layer. They are
-    /// copied into the context's buffers (needs [`SplatContextDesc::image_io`]) and left in the
-    /// layouts their [`ImageRef`]s name.
-    Images { color: ImageRef, depth: ImageRef, encoding: DepthEncoding },
-}
-
-/// Where a frame writes its result.
-#[derive(Clone, Copy, Debug)]
-pub enum FrameOutput {
-    /// 3 words (f32 red, green, blue) a pixel, row-major; written whole.
-    Buffer(BufferId),
-    /// The caller's RGBA32F or RGBA16F image (alpha 1), left in its `final_layout` (needs
-    /// [`SplatContextDesc::image_io`]).
-    Image(ImageRef),
-}
-
-/// One frame: its size (within the context's maximum), the lens, and the caller's resources.
-#[derive(Clone, Copy, Debug)]
-pub struct SplatFrame {
-    pub width: u32,
-    pub height: u32,
-    pub lens: ThinLens,
-    pub input: FrameInput,
-    pub output: FrameOutput,
-}
-
-impl SplatFrame {
-    /// A frame of a multi-layer image in buffers, into a buffer.
-    pub fn layers(width: u32, height: u32, layers: u32, lens: ThinLens, fragments: BufferId, counts: BufferId, output: BufferId) -> Self {
-        SplatFrame { width, height, lens, input: FrameInput::Layers { fragments, counts, layers }, output: FrameOutput::Buffer(output) }
-    }
-
-    /// Fragment slots per pixel the frame reads.
-    pub fn layer_count(&self) -> u32 {
-        match self.input {
-            FrameInput::Layers { layers, .. } => layers,
-            FrameInput::Images { .. } => 1,
-        }
-    }
-}
-
 /// The context's own buffers.
 struct Buffers {
     stats: BufferId,
@@ -146,16 +85,6 @@ struct Buffers {
     io: Option<ImageIo>,
 }
 
-/// Buffers image inputs and outputs go through: the colour image (later the RGBA result), the
-/// depth image, and the one-layer input made from them (later the RGB result).
-#[derive(Clone, Copy)]
-struct ImageIo {
-    color: BufferId,
-    depth: BufferId,
-    fragments: BufferId,
-    counts: BufferId,
-}
-
 /// A tiled-splatting context (see the [module docs](crate::frame)).
 pub struct SplatContext {
     desc: SplatContextDesc,
@@ -170,7 +99,7 @@ pub struct SplatContext {
     scan: ScanScratch,
     sort: SegmentedSort,
     /// The last recorded frame, for its report.
-    last: Option<SplatFrame>,
+    last: Option<Frame>,
 }
 
 /// Checks the options against what the kernels support; returns the configured radius cap.
@@ -269,16 +198,7 @@ impl SplatContext {
                 1 | 2 if !desc.distinct_stage_buffers => cell_bufs[(merge_steps - 1) as usize].0,
                 _ => made(backend, 4 * slots, "splat/dense")?,
             };
-            let io = if desc.image_io {
-                Some(ImageIo {
-                    color: made(backend, 4 * pixels, "splat/io-color")?,
-                    depth: made(backend, pixels, "splat/io-depth")?,
-                    fragments: made(backend, 4 * pixels, "splat/io-fragments")?,
-                    counts: made(backend, pixels, "splat/io-counts")?,
-                })
-            } else {
-                None
-            };
+            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut made)?) } else { None };
             let mask_words = desc.options.aperture.mask_words();
             let b = Buffers {
                 stats: made(backend, stats::WORDS as u64, "splat/stats")?,
@@ -350,7 +270,7 @@ impl SplatContext {
         (self.list_entries, self.max_list)
     }
 
-    fn params(&self, f: &SplatFrame, step: u32) -> SplatParams {
+    fn params(&self, f: &Frame, step: u32) -> SplatParams {
         let o = &self.desc.options;
         let layers = f.layer_count();
         let (cell, _, cells_x, cells_y) = cells(f.width, f.height, layers, step);
@@ -379,63 +299,6 @@ impl SplatContext {
         }
     }
 
-    /// Checks a frame against the context's bounds and the sizes of the caller's resources.
-    fn check(&self, backend: &dyn Backend, f: &SplatFrame) -> Result<()> {
-        let d = &self.desc;
-        let layers = f.layer_count();
-        if f.width == 0 || f.height == 0 || layers == 0 {
-            return Err(Error::InvalidArgument(format!("an empty {}x{} frame with {layers} layers", f.width, f.height)));
-        }
-        if f.width > d.max_width || f.height > d.max_height || layers > d.max_layers {
-            return Err(Error::InvalidArgument(format!(
-                "a {}x{} frame with {layers} layers exceeds the context's {}x{} with {} (resize the context)",
-                f.width, f.height, d.max_width, d.max_height, d.max_layers
-            )));
-        }
-        if !f.lens.is_valid() {
-            return Err(Error::InvalidArgument(format!("invalid lens: {:?}", f.lens)));
-        }
-        let pixels = f.width as u64 * f.height as u64;
-        let mut buffers = Vec::new();
-        let mut images = Vec::new();
-        match f.input {
-            FrameInput::Layers { fragments, counts, .. } => buffers.extend([("fragments", fragments, 4 * pixels * layers as u64), ("counts", counts, pixels)]),
-            FrameInput::Images { color, depth, encoding } => {
-                images.extend([("colour", color, [ImageFormat::Rgba32Float, ImageFormat::Rgba16Float].as_slice()), ("depth", depth, &[ImageFormat::R32Float])]);
-                if let DepthEncoding::Standard { near, far } | DepthEncoding::Reversed { near, far } = encoding {
-                    if !(near.is_finite() && near > 0.0 && far > near) {
-                        return Err(Error::InvalidArgument(format!("a depth buffer's planes must satisfy 0 < near < far (far may be infinite), got {near} and {far}")));
-                    }
-                }
-            }
-        }
-        match f.output {
-            FrameOutput::Buffer(out) => buffers.push(("output", out, 3 * pixels)),
-            FrameOutput::Image(out) => images.push(("output", out, [ImageFormat::Rgba32Float, ImageFormat::Rgba16Float].as_slice())),
-        }
-        for (what, id, words) in buffers {
-            let have = backend.buffer_words(id)?;
-            if have < words {
-                return Err(Error::InvalidArgument(format!("the {what} buffer holds {have} words, the frame needs {words}")));
-            }
-        }
-        if !images.is_empty() && self.b.io.is_none() {
-            return Err(Error::InvalidArgument("image inputs and outputs need a context created with `image_io`".into()));
-        }
-        for (what, image, formats) in images {
-            if !formats.contains(&image.format) {
-                return Err(Error::InvalidArgument(format!("the {what} image is {:?}; it must be one of {formats:?}", image.format)));
-            }
-            if image.extent != [f.width, f.height] {
-                return Err(Error::InvalidArgument(format!(
-                    "the {what} image is {}x{}, the frame {}x{}",
-                    image.extent[0], image.extent[1], f.width, f.height
-                )));
-            }
-        }
-        Ok(())
-    }
-
     /// Grows (or shrinks) the context to a new maximum extent: frees and reallocates its buffers.
     /// Frames within the current maximum need no resize.
     pub fn resize(&mut self, backend: &mut dyn Backend, max_width: u32, max_height: u32, max_layers: u32) -> Result<()> {
@@ -449,8 +312,9 @@ impl SplatContext {
     /// Records one frame. Nothing is allocated, read back or submitted; on Vulkan the commands go
     /// into the backend's current command buffer (its own, or the caller's between
     /// `begin_external` and `end_external`).
-    pub fn record(&mut self, backend: &mut dyn Backend, f: &SplatFrame) -> Result<()> {
-        self.check(backend, f)?;
+    pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        let d = &self.desc;
+        check_frame(backend, f, (d.max_width, d.max_height, d.max_layers), self.b.io.as_ref())?;
         let b = &self.b;
         let pixels = f.width as u64 * f.height as u64;
         let tiles_x = f.width.div_ceil(self.desc.options.tile);
@@ -461,33 +325,8 @@ impl SplatContext {
         let first = push_words(&self.params(f, 0));
         let tile_grid = [tiles_x, tiles_y, 1];
         let pixel_groups = groups_for(&PACK, pixels);
-        let io_params = |color_words: u32, encoding: DepthEncoding| {
-            let (depth_encoding, near, far) = match encoding {
-                DepthEncoding::Linear => (DEPTH_LINEAR, 0.0, 0.0),
-                DepthEncoding::Standard { near, far } => (DEPTH_STANDARD, near, far),
-                DepthEncoding::Reversed { near, far } => (DEPTH_REVERSED, near, far),
-            };
-            push_words(&FrameIoParams { width: f.width, height: f.height, color_words, depth_encoding, near, far })
-        };
-
-        let (fragments, counts) = match (f.input, b.io) {
-            (FrameInput::Layers { fragments, counts, .. }, _) => (fragments, counts),
-            (FrameInput::Images { color, depth, encoding }, Some(io)) => {
-                backend.copy_image_to_buffer(color, io.color, 0, "splat/input-color")?;
-                backend.copy_image_to_buffer(depth, io.depth, 0, "splat/input-depth")?;
-                let params = io_params(color.format.words_per_pixel() as u32, encoding);
-                backend.dispatch(&FROM_IMAGES, pixel_groups, &[io.color, io.depth, io.fragments, io.counts], &params, "splat/input")?;
-                (io.fragments, io.counts)
-            }
-            (FrameInput::Images { .. }, None) => unreachable!("checked: image input needs image_io"),
-        };
-        // An image output takes the RGB result in the one-layer input's buffer (the input is read
-        // only by the plan and packing, long before).
-        let output = match (f.output, b.io) {
-            (FrameOutput::Buffer(out), _) => out,
-            (FrameOutput::Image(_), Some(io)) => io.fragments,
-            (FrameOutput::Image(_), None) => unreachable!("checked: image output needs image_io"),
-        };
+        let (fragments, counts) = record_input(backend, f, b.io.as_ref())?;
+        let output = output_buffer(f, b.io.as_ref())?;
 
         backend.fill(b.stats, 0, stats::WORDS as u64, 0, "splat/clear")?;
         backend.dispatch(&PLAN_REDUCE, pixel_groups, &[fragments, counts, b.stats], &first, "splat/plan")?;
@@ -514,11 +353,7 @@ impl SplatContext {
         let acc_bufs = [b.sharp, b.dense, b.values_sorted, b.segments, b.copy, output, b.stats, b.mask];
         let sub = self.desc.options.tile / block_for(self.desc.options.tile);
         backend.dispatch(&ACCUMULATE, [tiles_x * sub, tiles_y * sub, 1], &acc_bufs, &fin, "splat/accumulate")?;
-        if let (FrameOutput::Image(image), Some(io)) = (f.output, b.io) {
-            let params = io_params(image.format.words_per_pixel() as u32, DepthEncoding::Linear);
-            backend.dispatch(&TO_RGBA, pixel_groups, &[io.fragments, io.color], &params, "splat/output")?;
-            backend.copy_buffer_to_image(io.color, 0, image, "splat/output")?;
-        }
+        record_output(backend, f, b.io.as_ref())?;
         self.last = Some(*f);
         Ok(())
     }

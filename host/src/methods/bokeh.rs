@@ -80,6 +80,7 @@ pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &
         (3 * pixels, "bokeh/blur"),
         (4 * pixels, "bokeh/sprite-image"),
         (3 * pixels, "bokeh/out"),
+        (1, "bokeh/gather-radius"),
     ];
     let max_words = backend.limits().max_buffer_bytes / 4;
     if let Some(&(words, what)) = sizes.iter().find(|s| s.0 > max_words) {
@@ -100,8 +101,11 @@ pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &
         ..Default::default()
     };
     with_buffers(backend, &sizes, |backend, b| {
-        let [mask_buf, slots, color, depth_buf, rest, sprites, counters, blur, sprite_image, out] =
-            [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], b[8], b[9]];
+        let [mask_buf, slots, color, depth_buf, rest, sprites, counters, blur, sprite_image, out, gather_radius] =
+            [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], b[8], b[9], b[10]];
+        // The blur's window is planned on the host here (bokeh sprites do not run through the
+        // frame API yet): the gather reads it from its plan word.
+        backend.write_buffer(gather_radius, 0, &[blur_radius])?;
         backend.write_buffer(mask_buf, 0, &mask)?;
         backend.write_buffer(color, 0, &colour_words)?;
         backend.write_buffer(depth_buf, 0, &depth_words)?;
@@ -116,7 +120,7 @@ pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &
         backend.dispatch(&BOKEH_EMIT, groups, &[color, depth_buf, slots, sprites, rest, mask_buf], &push, "bokeh/detect")?;
         let gather_params = GatherParams { width, height, max_radius: blur_radius, _pad: 0, lens: *lens };
         let tiles = [width.div_ceil(TILE), height.div_ceil(TILE), 1];
-        backend.dispatch(&GATHER, tiles, &[rest, depth_buf, blur], &push_words(&gather_params), "gather")?;
+        backend.dispatch(&GATHER, tiles, &[rest, depth_buf, blur, gather_radius], &push_words(&gather_params), "gather")?;
         backend.dispatch(&BOKEH_ARGS, [1, 1, 1], &[counters], &push, "bokeh/draw")?;
         backend.draw_indirect(&BOKEH_DRAW, counters, &[sprites, mask_buf], sprite_image, [width, height], &push, "bokeh/draw")?;
         backend.dispatch(&BOKEH_COMBINE, groups, &[blur, sprite_image, out], &push, "bokeh/draw")?;

@@ -1,15 +1,15 @@
-//! The gathering baseline (kernel and its rules in `dof_shaders::gather`) on a single-layer image.
+//! The gathering baseline (kernel and its rules in `dof_shaders::gather`) on a single-layer image,
+//! one frame through [`crate::frame::GatherContext`].
 
 use super::buffers::read_rgb;
-use crate::backend::{Backend, CommandTime, push_words, with_buffers};
+use crate::backend::{Backend, CommandTime, with_buffers};
 use crate::error::{Error, Result};
+use crate::frame::{Frame, GatherContext, GatherContextDesc};
 use crate::layers::RgbImage;
-use dof_shaders::gather::{GATHER, GatherParams, TILE, radius_px};
+use dof_shaders::gather::radius_px;
 use dof_shaders::lens::ThinLens;
 
-/// The scanned window is `2 r + 1` pixels wide: beyond this radius the gather's cost (quadratic in
-/// it) belongs to a reduced-resolution path, which this baseline does not have.
-pub const MAX_RADIUS: u32 = 48;
+pub use crate::frame::gather::MAX_RADIUS;
 
 /// The largest CoC radius actually present in `depth` (whole pixels, rounded up), so the kernel
 /// scans no wider than the scene needs; at most `cap`.
@@ -27,7 +27,7 @@ pub struct GatherOutput {
     /// Radius the kernel scanned.
     pub radius: u32,
     pub times: Vec<CommandTime>,
-    /// Device buffer bytes the pass held (colour, depth and output).
+    /// Device buffer bytes the frame held (the context's, the input's and the output's).
     pub buffer_bytes: u64,
 }
 
@@ -57,20 +57,21 @@ pub fn gather(
     if cap > MAX_RADIUS {
         return Err(Error::TooLarge { what: "gather radius (px)".into(), size: cap as u64, limit: MAX_RADIUS as u64 });
     }
-    let radius = needed_radius(lens, depth, cap);
-    let colour_words: Vec<u32> = image.data.iter().flat_map(|c| c.map(f32::to_bits)).collect();
-    let depth_words: Vec<u32> = depth.iter().map(|z| z.to_bits()).collect();
-    let sizes = [(3 * pixels, "gather/color"), (pixels, "gather/depth"), (3 * pixels, "gather/out")];
-    let buffer_bytes = 4 * sizes.iter().map(|s| s.0).sum::<u64>();
+    let slots: Vec<u32> = image.data.iter().zip(depth).flat_map(|(c, z)| [c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]).collect();
+    let desc = GatherContextDesc { max_radius: Some(cap), ..GatherContextDesc::new(image.width, image.height, 1) };
+    let sizes = [(4 * pixels, "gather/input"), (pixels, "gather/input-counts"), (3 * pixels, "gather/out")];
     with_buffers(backend, &sizes, |backend, b| {
-        let (color, depth, out) = (b[0], b[1], b[2]);
-        backend.write_buffer(color, 0, &colour_words)?;
-        backend.write_buffer(depth, 0, &depth_words)?;
-        let params = GatherParams { width: image.width, height: image.height, max_radius: radius, _pad: 0, lens: *lens };
-        let groups = [image.width.div_ceil(TILE), image.height.div_ceil(TILE), 1];
-        backend.dispatch(&GATHER, groups, &[color, depth, out], &push_words(&params), "gather")?;
-        let times = backend.submit()?;
-        let image = read_rgb(backend, out, image.width, image.height)?;
-        Ok(GatherOutput { image, radius, times, buffer_bytes })
+        backend.write_buffer(b[0], 0, &slots)?;
+        backend.write_buffer(b[1], 0, &vec![1u32; pixels as usize])?;
+        let mut ctx = GatherContext::new(backend, &desc)?;
+        let ran = (|| {
+            ctx.record(backend, &Frame::layers(image.width, image.height, 1, *lens, b[0], b[1], b[2]))?;
+            let times = backend.submit()?;
+            let radius = ctx.radius(backend)?;
+            let image = read_rgb(backend, b[2], image.width, image.height)?;
+            Ok(GatherOutput { image, radius, times, buffer_bytes: ctx.device_bytes() + 4 * 8 * pixels })
+        })();
+        ctx.destroy(backend);
+        ran
     })
 }

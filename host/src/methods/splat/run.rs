@@ -10,7 +10,8 @@ use super::plan::SplatOptions;
 use super::report::SplatReport;
 use crate::backend::{Backend, CommandTime, with_buffers};
 use crate::error::{Error, Result};
-use crate::frame::splat::{MAX_LIST_ENTRIES, SplatContext, SplatContextDesc, SplatFrame};
+use crate::frame::Frame;
+use crate::frame::splat::{MAX_LIST_ENTRIES, SplatContext, SplatContextDesc};
 use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{read_rgb, slot_words};
 use dof_shaders::lens::ThinLens;
@@ -61,7 +62,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
     with_buffers(backend, &sizes, |backend, io| {
         backend.write_buffer(io[0], 0, &input)?;
         backend.write_buffer(io[1], 0, &image.counts)?;
-        let frame = SplatFrame::layers(w, h, layers, *lens, io[0], io[1], io[2]);
+        let frame = Frame::layers(w, h, layers, *lens, io[0], io[1], io[2]);
         let mut attempt = 0;
         loop {
             let mut ctx = SplatContext::new(backend, &desc)?;

@@ -1,0 +1,112 @@
+//! The gathering baseline (Riguer et al. 2003) as a frame context: the window radius reduced on the
+//! device from the frame's depths, so nothing is planned on the host.
+
+use super::io::{Frame, ImageIo, check_frame, output_buffer, record_front, record_input, record_output};
+use crate::backend::{Backend, BufferId, push_words};
+use crate::error::{Error, Result};
+use crate::methods::buffers::groups_for;
+use dof_shaders::gather::{GATHER, GATHER_PLAN, GatherParams, TILE};
+
+/// The scanned window is `2 r + 1` pixels wide: beyond this radius the gather's cost (quadratic in
+/// it) belongs to a reduced-resolution path, which this baseline does not have.
+pub const MAX_RADIUS: u32 = 48;
+
+/// What a gathering context is created for.
+#[derive(Clone, Debug)]
+pub struct GatherContextDesc {
+    pub max_width: u32,
+    pub max_height: u32,
+    /// Most slots per pixel of a multi-layer input (the gather reads the front one).
+    pub max_layers: u32,
+    /// Cap on the CoC radius, whole pixels (default and upper bound [`MAX_RADIUS`]).
+    pub max_radius: Option<u32>,
+    /// Hold the buffers that image inputs and outputs go through.
+    pub image_io: bool,
+}
+
+impl GatherContextDesc {
+    pub fn new(max_width: u32, max_height: u32, max_layers: u32) -> Self {
+        GatherContextDesc { max_width, max_height, max_layers, max_radius: None, image_io: false }
+    }
+}
+
+/// A gathering context (see the [module docs](crate::frame)).
+pub struct GatherContext {
+    desc: GatherContextDesc,
+    cap: u32,
+    color: BufferId,
+    depth: BufferId,
+    plan: BufferId,
+    io: Option<ImageIo>,
+    owned: Vec<BufferId>,
+    bytes: u64,
+}
+
+impl GatherContext {
+    pub fn new(backend: &mut dyn Backend, desc: &GatherContextDesc) -> Result<Self> {
+        let cap = desc.max_radius.unwrap_or(MAX_RADIUS);
+        if cap > MAX_RADIUS {
+            return Err(Error::TooLarge { what: "gather radius (px)".into(), size: cap as u64, limit: MAX_RADIUS as u64 });
+        }
+        let (w, h) = (desc.max_width, desc.max_height);
+        if w == 0 || h == 0 || desc.max_layers == 0 {
+            return Err(Error::InvalidArgument(format!("a gathering context for an empty {w}x{h} extent with {} layers", desc.max_layers)));
+        }
+        let pixels = w as u64 * h as u64;
+        let max_words = backend.limits().max_buffer_bytes / 4;
+        if 4 * pixels * desc.max_layers as u64 > max_words {
+            return Err(Error::TooLarge { what: "input slots (words)".into(), size: 4 * pixels * desc.max_layers as u64, limit: max_words });
+        }
+        let mut owned = Vec::new();
+        let mut bytes = 0;
+        let mut make = |backend: &mut dyn Backend, words: u64, label: &str| -> Result<BufferId> {
+            let id = backend.create_buffer(words.max(1), label)?;
+            owned.push(id);
+            bytes += 4 * words.max(1);
+            Ok(id)
+        };
+        let made = (|| {
+            let color = make(backend, 3 * pixels, "gather/color")?;
+            let depth = make(backend, pixels, "gather/depth")?;
+            let plan = make(backend, 1, "gather/plan")?;
+            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut make)?) } else { None };
+            Ok((color, depth, plan, io))
+        })();
+        match made {
+            Ok((color, depth, plan, io)) => Ok(GatherContext { desc: desc.clone(), cap, color, depth, plan, io, owned, bytes }),
+            Err(e) => {
+                owned.into_iter().for_each(|id| backend.destroy_buffer(id));
+                Err(e)
+            }
+        }
+    }
+
+    pub fn destroy(self, backend: &mut dyn Backend) {
+        self.owned.into_iter().for_each(|id| backend.destroy_buffer(id));
+    }
+
+    pub fn device_bytes(&self) -> u64 {
+        self.bytes
+    }
+
+    /// Records one frame: the front layer of the input, the radius reduction, the gather.
+    pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        let d = &self.desc;
+        check_frame(backend, f, (d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        let slots = record_input(backend, f, self.io.as_ref())?;
+        let output = output_buffer(f, self.io.as_ref())?;
+        record_front(backend, f, slots, self.color, self.depth)?;
+        let params = push_words(&GatherParams { width: f.width, height: f.height, max_radius: self.cap, _pad: 0, lens: f.lens });
+        backend.fill(self.plan, 0, 1, 0, "gather/plan")?;
+        let pixel_groups = groups_for(&GATHER_PLAN, f.width as u64 * f.height as u64);
+        backend.dispatch(&GATHER_PLAN, pixel_groups, &[self.depth, self.plan], &params, "gather/plan")?;
+        let groups = [f.width.div_ceil(TILE), f.height.div_ceil(TILE), 1];
+        backend.dispatch(&GATHER, groups, &[self.color, self.depth, output, self.plan], &params, "gather")?;
+        record_output(backend, f, self.io.as_ref())
+    }
+
+    /// The window radius the last frame scanned (reads it back: call once the frame completed).
+    pub fn radius(&self, backend: &mut dyn Backend) -> Result<u32> {
+        Ok(backend.read_buffer(self.plan, 0, 1)?[0].min(self.cap))
+    }
+}

@@ -1,0 +1,209 @@
+//! What a frame reads and writes, for every context: the caller's buffers or images, how a depth
+//! image encodes depth, and the buffers that image inputs and outputs go through on the device.
+
+use crate::backend::{Backend, BufferId, ImageFormat, ImageRef, push_words};
+use crate::error::{Error, Result};
+use crate::methods::buffers::groups_for;
+use dof_shaders::frame_io::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, FRONT, FROM_IMAGES, FrameIoParams, TO_RGBA};
+use dof_shaders::lens::ThinLens;
+
+/// How a depth image encodes depth.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DepthEncoding {
+    /// Planar view depth in scene units (what the methods take).
+    Linear,
+    /// A depth buffer: 0 at the near plane, 1 at the far plane (`far` may be infinite).
+    Standard { near: f32, far: f32 },
+    /// A reversed depth buffer: 1 at the near plane, 0 at the far plane (`far` may be infinite;
+    /// then 0 is the background).
+    Reversed { near: f32, far: f32 },
+}
+
+/// What a frame reads.
+#[derive(Clone, Copy, Debug)]
+pub enum FrameInput {
+    /// A multi-layer image in the caller's buffers, read only: `fragments` holds per pixel
+    /// `layers` slots of 4 words (red, green, blue, depth as f32 bits), front to back, and
+    /// `counts` the slots used per pixel (one word each).
+    Layers { fragments: BufferId, counts: BufferId, layers: u32 },
+    /// The caller's colour (RGBA32F or RGBA16F) and depth (R32F) images: one layer. They are
+    /// copied into the context's buffers (needs a context created with `image_io`) and left in the
+    /// layouts their [`ImageRef`]s name.
+    Images { color: ImageRef, depth: ImageRef, encoding: DepthEncoding },
+}
+
+/// Where a frame writes its result.
+#[derive(Clone, Copy, Debug)]
+pub enum FrameOutput {
+    /// 3 words (f32 red, green, blue) a pixel, row-major; written whole.
+    Buffer(BufferId),
+    /// The caller's RGBA32F or RGBA16F image (alpha 1), left in its `final_layout` (needs
+    /// [`SplatContextDesc::image_io`]).
+    Image(ImageRef),
+}
+
+/// One frame: its size (within the context's maximum), the lens, and the caller's resources.
+/// Every context records the same description.
+#[derive(Clone, Copy, Debug)]
+pub struct Frame {
+    pub width: u32,
+    pub height: u32,
+    pub lens: ThinLens,
+    pub input: FrameInput,
+    pub output: FrameOutput,
+}
+
+impl Frame {
+    /// A frame of a multi-layer image in buffers, into a buffer.
+    pub fn layers(width: u32, height: u32, layers: u32, lens: ThinLens, fragments: BufferId, counts: BufferId, output: BufferId) -> Self {
+        Frame { width, height, lens, input: FrameInput::Layers { fragments, counts, layers }, output: FrameOutput::Buffer(output) }
+    }
+
+    /// Fragment slots per pixel the frame reads.
+    pub fn layer_count(&self) -> u32 {
+        match self.input {
+            FrameInput::Layers { layers, .. } => layers,
+            FrameInput::Images { .. } => 1,
+        }
+    }
+}
+
+
+/// Colour formats an image input or output may have.
+const COLOR_FORMATS: [ImageFormat; 2] = [ImageFormat::Rgba32Float, ImageFormat::Rgba16Float];
+
+/// Checks what every context checks: a non-empty size within the maximum, a valid lens, buffers
+/// large enough, images of the frame's size and a supported format, sane depth planes.
+pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, max: (u32, u32, u32), io: Option<&ImageIo>) -> Result<()> {
+    let layers = f.layer_count();
+    if f.width == 0 || f.height == 0 || layers == 0 {
+        return Err(Error::InvalidArgument(format!("an empty {}x{} frame with {layers} layers", f.width, f.height)));
+    }
+    if f.width > max.0 || f.height > max.1 || layers > max.2 {
+        return Err(Error::InvalidArgument(format!(
+            "a {}x{} frame with {layers} layers exceeds the context's {}x{} with {} (resize the context)",
+            f.width, f.height, max.0, max.1, max.2
+        )));
+    }
+    if !f.lens.is_valid() {
+        return Err(Error::InvalidArgument(format!("invalid lens: {:?}", f.lens)));
+    }
+    let pixels = f.width as u64 * f.height as u64;
+    let mut buffers = Vec::new();
+    let mut images = Vec::new();
+    match f.input {
+        FrameInput::Layers { fragments, counts, .. } => buffers.extend([("fragments", fragments, 4 * pixels * layers as u64), ("counts", counts, pixels)]),
+        FrameInput::Images { color, depth, encoding } => {
+            images.extend([("colour", color, COLOR_FORMATS.as_slice()), ("depth", depth, &[ImageFormat::R32Float])]);
+            if let DepthEncoding::Standard { near, far } | DepthEncoding::Reversed { near, far } = encoding {
+                if !(near.is_finite() && near > 0.0 && far > near) {
+                    return Err(Error::InvalidArgument(format!(
+                        "a depth buffer's planes must satisfy 0 < near < far (far may be infinite), got {near} and {far}"
+                    )));
+                }
+            }
+        }
+    }
+    match f.output {
+        FrameOutput::Buffer(out) => buffers.push(("output", out, 3 * pixels)),
+        FrameOutput::Image(out) => images.push(("output", out, COLOR_FORMATS.as_slice())),
+    }
+    for (what, id, words) in buffers {
+        let have = backend.buffer_words(id)?;
+        if have < words {
+            return Err(Error::InvalidArgument(format!("the {what} buffer holds {have} words, the frame needs {words}")));
+        }
+    }
+    if !images.is_empty() && io.is_none() {
+        return Err(Error::InvalidArgument("image inputs and outputs need a context created with `image_io`".into()));
+    }
+    for (what, image, formats) in images {
+        if !formats.contains(&image.format) {
+            return Err(Error::InvalidArgument(format!("the {what} image is {:?}; it must be one of {formats:?}", image.format)));
+        }
+        if image.extent != [f.width, f.height] {
+            return Err(Error::InvalidArgument(format!(
+                "the {what} image is {}x{}, the frame {}x{}",
+                image.extent[0], image.extent[1], f.width, f.height
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Buffers image inputs and outputs go through (10 words a pixel): the colour image (later the
+/// RGBA result), the depth image, and the one-layer input made from them (later the RGB result).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ImageIo {
+    color: BufferId,
+    depth: BufferId,
+    fragments: BufferId,
+    counts: BufferId,
+}
+
+impl ImageIo {
+    /// Creates the buffers with `make` (which owns them) for up to `pixels` pixels.
+    pub fn new(backend: &mut dyn Backend, pixels: u64, make: &mut dyn FnMut(&mut dyn Backend, u64, &str) -> Result<BufferId>) -> Result<Self> {
+        Ok(ImageIo {
+            color: make(backend, 4 * pixels, "frame/io-color")?,
+            depth: make(backend, pixels, "frame/io-depth")?,
+            fragments: make(backend, 4 * pixels, "frame/io-fragments")?,
+            counts: make(backend, pixels, "frame/io-counts")?,
+        })
+    }
+}
+
+fn io_params(f: &Frame, color_words: u32, layers: u32, encoding: DepthEncoding) -> Vec<u32> {
+    let (depth_encoding, near, far) = match encoding {
+        DepthEncoding::Linear => (DEPTH_LINEAR, 0.0, 0.0),
+        DepthEncoding::Standard { near, far } => (DEPTH_STANDARD, near, far),
+        DepthEncoding::Reversed { near, far } => (DEPTH_REVERSED, near, far),
+    };
+    push_words(&FrameIoParams { width: f.width, height: f.height, color_words, depth_encoding, near, far, layers, _pad: 0 })
+}
+
+/// Records what brings the frame's input into slot buffers: nothing for buffers, the copies and
+/// the conversion for images. Returns the fragments and counts buffers the method reads.
+pub(crate) fn record_input(backend: &mut dyn Backend, f: &Frame, io: Option<&ImageIo>) -> Result<(BufferId, BufferId)> {
+    match (f.input, io) {
+        (FrameInput::Layers { fragments, counts, .. }, _) => Ok((fragments, counts)),
+        (FrameInput::Images { color, depth, encoding }, Some(io)) => {
+            backend.copy_image_to_buffer(color, io.color, 0, "frame/input-color")?;
+            backend.copy_image_to_buffer(depth, io.depth, 0, "frame/input-depth")?;
+            let params = io_params(f, color.format.words_per_pixel() as u32, 1, encoding);
+            let groups = groups_for(&FROM_IMAGES, f.width as u64 * f.height as u64);
+            backend.dispatch(&FROM_IMAGES, groups, &[io.color, io.depth, io.fragments, io.counts], &params, "frame/input")?;
+            Ok((io.fragments, io.counts))
+        }
+        (FrameInput::Images { .. }, None) => Err(Error::InvalidArgument("image inputs need a context created with `image_io`".into())),
+    }
+}
+
+/// Records the front fragment of every pixel (black at infinite depth where a pixel has none) as
+/// 3 colour words and one depth word a pixel: the input of the single-layer gathering methods.
+pub(crate) fn record_front(backend: &mut dyn Backend, f: &Frame, slots: (BufferId, BufferId), color: BufferId, depth: BufferId) -> Result<()> {
+    let params = io_params(f, 0, f.layer_count(), DepthEncoding::Linear);
+    let groups = groups_for(&FRONT, f.width as u64 * f.height as u64);
+    backend.dispatch(&FRONT, groups, &[slots.0, slots.1, color, depth], &params, "frame/front")
+}
+
+/// The buffer the method writes its RGB result into: the caller's, or for an image output the
+/// one-layer input's (read only by the stages before).
+pub(crate) fn output_buffer(f: &Frame, io: Option<&ImageIo>) -> Result<BufferId> {
+    match (f.output, io) {
+        (FrameOutput::Buffer(out), _) => Ok(out),
+        (FrameOutput::Image(_), Some(io)) => Ok(io.fragments),
+        (FrameOutput::Image(_), None) => Err(Error::InvalidArgument("image outputs need a context created with `image_io`".into())),
+    }
+}
+
+/// Records what brings an RGB result into an image output: the conversion and the copy.
+pub(crate) fn record_output(backend: &mut dyn Backend, f: &Frame, io: Option<&ImageIo>) -> Result<()> {
+    if let (FrameOutput::Image(image), Some(io)) = (f.output, io) {
+        let params = io_params(f, image.format.words_per_pixel() as u32, 1, DepthEncoding::Linear);
+        let groups = groups_for(&TO_RGBA, f.width as u64 * f.height as u64);
+        backend.dispatch(&TO_RGBA, groups, &[io.fragments, io.color], &params, "frame/output")?;
+        backend.copy_buffer_to_image(io.color, 0, image, "frame/output")?;
+    }
+    Ok(())
+}

@@ -239,3 +239,50 @@ fn a_gather_context_records_frames_like_the_one_shot_gather() {
     }
     ctx.destroy(&mut b);
 }
+
+/// Bokeh sprites through their context, on both backends: after the first frame, frames with no
+/// allocation or readback and one submission, each equal to the one-shot path (the sprite draw is
+/// the graphics pipeline on Vulkan).
+fn bokeh_frames(b: &mut dyn Backend) {
+    use dof::frame::{BokehContext, BokehContextDesc};
+    use dof::methods::bokeh::{BokehOptions, bokeh};
+    let options = BokehOptions { lum_threshold: 0.2, coc_threshold: 1.0, ..Default::default() };
+    let bufs = caller_buffers(b, (48, 32, 2));
+    let mut ctx = BokehContext::new(b, &BokehContextDesc::new(48, 32, 2, options.clone())).unwrap();
+    for (i, aperture) in [0.02f32, 0.01, 0.03].into_iter().enumerate() {
+        let mut image = noise_with_sky(48, 32, 2);
+        // A few highlights, so that sprites are drawn.
+        for p in [100usize, 700, 1200] {
+            image.fragments[p * 2].color = [40.0, 30.0, 20.0];
+        }
+        upload(b, &bufs, &image);
+        let before = b.counters();
+        ctx.record(b, &frame(&image, aperture, &bufs)).unwrap();
+        b.submit().unwrap();
+        let spent = b.counters().since(&before);
+        // The first frame may submit once more: Vulkan creates its draw target at the first draw
+        // of a size (and must flush before replacing one).
+        if i > 0 {
+            assert_eq!((spent.allocations, spent.readbacks, spent.submissions), (0, 0, 1), "frame {i}");
+        }
+        let got = read_rgb(b, bufs[2], 48, 32).unwrap();
+        let (detected, _) = ctx.detected_and_radius(b).unwrap();
+        assert!(detected > 0, "frame {i}: no sprite");
+        let (front, depth) = image.front();
+        let expected = bokeh(b, &front, &depth, &test_lens(aperture), &options).unwrap();
+        assert!(got.data == expected.image.data, "frame {i} differs from the one-shot path");
+    }
+    ctx.destroy(b);
+}
+
+#[test]
+fn a_bokeh_context_records_frames_like_the_one_shot_path() {
+    bokeh_frames(&mut CpuBackend::new());
+}
+
+#[test]
+fn a_bokeh_context_records_frames_like_the_one_shot_path_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    bokeh_frames(&mut vk);
+    assert_clean(&mut vk);
+}

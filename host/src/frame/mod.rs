@@ -17,15 +17,22 @@
 //!
 //! Methods: multi-layer tiled splatting (Franke, Hofmann, Stamminger, Selgrad 2018) and its
 //! single-layer predecessor (Selgrad, Franke, Stamminger 2016, the same pipeline on the front
-//! layer) run through [`SplatContext`]. The gathering baseline (Riguer et al. 2003), bokeh sprites
-//! (de Rousiers, Pettineo), layered DoF with matting (Schedl, Wimmer 2012) and ray tracing through
-//! layers (Lee et al. 2010) still plan on the host from the image and run through their one-shot
-//! functions in [`crate::methods`].
+//! layer) run through [`SplatContext`], the gathering baseline (Riguer et al. 2003) through
+//! [`GatherContext`] and bokeh sprites (de Rousiers, Pettineo) through [`BokehContext`]. Every
+//! context records the same [`Frame`] description. The one-shot functions in [`crate::methods`]
+//! (what the CLI, the evaluation and the tests call) run one frame through these contexts.
+//!
+//! Not through the frame API yet: layered DoF with matting (Schedl, Wimmer 2012), which plans its
+//! depth layers on the host from the image's CoC range and allocates per layer, and ray tracing
+//! through layers (Lee et al. 2010), whose one-shot path still uploads and plans per call. Both
+//! would need the same treatment (a device reduction for their plan, buffers bound at creation).
 
+pub mod bokeh;
 pub mod gather;
 pub mod io;
 pub mod splat;
 
+pub use bokeh::{BokehContext, BokehContextDesc};
 pub use gather::{GatherContext, GatherContextDesc};
 pub use io::{DepthEncoding, Frame, FrameInput, FrameOutput};
 pub use splat::{SplatContext, SplatContextDesc};

@@ -1,0 +1,198 @@
+//! Bokeh sprites over a gathering blur (de Rousiers, Pettineo) as a frame context: detection, the
+//! sprite slots (a scan on the device), the sprites and what the blur gathers, the gather's window
+//! reduced on the device, the draw command written on the device, the sprite draw (the graphics
+//! pipeline on Vulkan, its compute fallback on the CPU) and the sum. Nothing is planned or read
+//! back on the host.
+
+use super::gather::MAX_RADIUS;
+use super::io::{Frame, ImageIo, check_frame, output_buffer, record_front, record_input, record_output};
+use crate::backend::{Backend, BufferId, push_words};
+use crate::error::{Error, Result};
+use crate::methods::bokeh::BokehOptions;
+use crate::methods::buffers::groups_for;
+use crate::ops::scan::ScanScratch;
+use dof_shaders::bokeh::{ARGS_WORDS, BOKEH_ARGS, BOKEH_COMBINE, BOKEH_DETECT, BOKEH_DRAW, BOKEH_EMIT, BokehParams, COUNTER, SPRITE_WORDS};
+use dof_shaders::gather::{GATHER, GATHER_PLAN, GatherParams, TILE};
+
+/// What a bokeh context is created for.
+#[derive(Clone, Debug)]
+pub struct BokehContextDesc {
+    pub max_width: u32,
+    pub max_height: u32,
+    /// Most slots per pixel of a multi-layer input (the method reads the front one).
+    pub max_layers: u32,
+    pub options: BokehOptions,
+    /// Hold the buffers that image inputs and outputs go through.
+    pub image_io: bool,
+}
+
+impl BokehContextDesc {
+    pub fn new(max_width: u32, max_height: u32, max_layers: u32, options: BokehOptions) -> Self {
+        BokehContextDesc { max_width, max_height, max_layers, options, image_io: false }
+    }
+}
+
+struct Buffers {
+    mask: BufferId,
+    slots: BufferId,
+    color: BufferId,
+    depth: BufferId,
+    rest: BufferId,
+    sprites: BufferId,
+    counters: BufferId,
+    blur: BufferId,
+    sprite_image: BufferId,
+    radius: BufferId,
+}
+
+/// A bokeh-sprite context (see the [module docs](crate::frame)).
+pub struct BokehContext {
+    desc: BokehContextDesc,
+    b: Buffers,
+    io: Option<ImageIo>,
+    scan: ScanScratch,
+    owned: Vec<BufferId>,
+    bytes: u64,
+}
+
+/// Checks the options: finite thresholds, a sprite radius cap in (0, 4096] px, a capacity of 1 to
+/// 2^20 sprites.
+pub fn check_options(o: &BokehOptions) -> Result<()> {
+    let finite = |v: f32| v.is_finite() && v >= 0.0;
+    if !(finite(o.lum_threshold) && finite(o.coc_threshold) && o.max_radius > 0.0 && o.max_radius <= 4096.0) {
+        return Err(Error::InvalidArgument(format!(
+            "bokeh thresholds must be finite and non-negative and the sprite radius cap in (0, 4096] px, got {}, {} and {}",
+            o.lum_threshold, o.coc_threshold, o.max_radius
+        )));
+    }
+    if !(1..=1 << 20).contains(&o.capacity) {
+        return Err(Error::InvalidArgument(format!("the sprite capacity must be 1 to 1048576, got {}", o.capacity)));
+    }
+    Ok(())
+}
+
+impl BokehContext {
+    pub fn new(backend: &mut dyn Backend, desc: &BokehContextDesc) -> Result<Self> {
+        check_options(&desc.options)?;
+        let (w, h) = (desc.max_width, desc.max_height);
+        if w == 0 || h == 0 || desc.max_layers == 0 {
+            return Err(Error::InvalidArgument(format!("a bokeh context for an empty {w}x{h} extent with {} layers", desc.max_layers)));
+        }
+        let pixels = w as u64 * h as u64;
+        let mask_words = desc.options.aperture.mask_words();
+        let sizes = [
+            (mask_words.len() as u64, "bokeh/aperture-mask"),
+            (pixels, "bokeh/slots"),
+            (3 * pixels, "bokeh/color"),
+            (pixels, "bokeh/depth"),
+            (3 * pixels, "bokeh/rest"),
+            (SPRITE_WORDS as u64 * desc.options.capacity as u64, "bokeh/sprites"),
+            (ARGS_WORDS as u64 + 1, "bokeh/counters"),
+            (3 * pixels, "bokeh/blur"),
+            (4 * pixels, "bokeh/sprite-image"),
+            (1, "bokeh/gather-radius"),
+        ];
+        let max_words = backend.limits().max_buffer_bytes / 4;
+        let widest = sizes.iter().map(|s| (s.0, s.1)).chain([(4 * pixels * desc.max_layers as u64, "input slots")]).max_by_key(|s| s.0);
+        if let Some((words, what)) = widest.filter(|s| s.0 > max_words) {
+            return Err(Error::TooLarge { what: format!("{what} (words)"), size: words, limit: max_words });
+        }
+        let mut owned = Vec::new();
+        let mut bytes = 0;
+        let mut make = |backend: &mut dyn Backend, words: u64, label: &str| -> Result<BufferId> {
+            let id = backend.create_buffer(words.max(1), label)?;
+            owned.push(id);
+            bytes += 4 * words.max(1);
+            Ok(id)
+        };
+        let made = (|| {
+            let ids = sizes.iter().map(|&(words, label)| make(backend, words, label)).collect::<Result<Vec<_>>>()?;
+            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut make)?) } else { None };
+            backend.write_buffer(ids[0], 0, &mask_words)?;
+            Ok((ids, io))
+        })();
+        let (ids, io) = match made {
+            Ok(m) => m,
+            Err(e) => {
+                owned.into_iter().for_each(|id| backend.destroy_buffer(id));
+                return Err(e);
+            }
+        };
+        let scan = match ScanScratch::new(backend, pixels) {
+            Ok(s) => s,
+            Err(e) => {
+                owned.into_iter().for_each(|id| backend.destroy_buffer(id));
+                return Err(e);
+            }
+        };
+        bytes += scan.bytes();
+        let b = Buffers {
+            mask: ids[0],
+            slots: ids[1],
+            color: ids[2],
+            depth: ids[3],
+            rest: ids[4],
+            sprites: ids[5],
+            counters: ids[6],
+            blur: ids[7],
+            sprite_image: ids[8],
+            radius: ids[9],
+        };
+        Ok(BokehContext { desc: desc.clone(), b, io, scan, owned, bytes })
+    }
+
+    pub fn destroy(self, backend: &mut dyn Backend) {
+        self.scan.destroy(backend);
+        self.owned.into_iter().for_each(|id| backend.destroy_buffer(id));
+    }
+
+    pub fn device_bytes(&self) -> u64 {
+        self.bytes
+    }
+
+    pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        let d = &self.desc;
+        check_frame(backend, f, (d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        let b = &self.b;
+        let (width, height) = (f.width, f.height);
+        let pixels = width as u64 * height as u64;
+        let slots = record_input(backend, f, self.io.as_ref())?;
+        let out = output_buffer(f, self.io.as_ref())?;
+        record_front(backend, f, slots, b.color, b.depth)?;
+        let o = &d.options;
+        let params = BokehParams {
+            width,
+            height,
+            capacity: o.capacity,
+            lum_threshold: o.lum_threshold,
+            coc_threshold: o.coc_threshold,
+            max_radius: o.max_radius,
+            lens: f.lens,
+            aperture: o.aperture.kernel,
+            ..Default::default()
+        };
+        let push = push_words(&params);
+        let gather = push_words(&GatherParams { width, height, max_radius: MAX_RADIUS, _pad: 0, lens: f.lens });
+        let groups = groups_for(&BOKEH_DETECT, pixels);
+        backend.fill(b.counters, 0, ARGS_WORDS as u64 + 1, 0, "bokeh/detect")?;
+        backend.fill(b.radius, 0, 1, 0, "gather/plan")?;
+        backend.dispatch(&GATHER_PLAN, groups_for(&GATHER_PLAN, pixels), &[b.depth, b.radius], &gather, "gather/plan")?;
+        backend.dispatch(&BOKEH_DETECT, groups, &[b.color, b.depth, b.slots, b.counters], &push, "bokeh/detect")?;
+        self.scan.record(backend, b.slots, 0, pixels)?;
+        backend.dispatch(&BOKEH_EMIT, groups, &[b.color, b.depth, b.slots, b.sprites, b.rest, b.mask], &push, "bokeh/detect")?;
+        let tiles = [width.div_ceil(TILE), height.div_ceil(TILE), 1];
+        backend.dispatch(&GATHER, tiles, &[b.rest, b.depth, b.blur, b.radius], &gather, "gather")?;
+        backend.dispatch(&BOKEH_ARGS, [1, 1, 1], &[b.counters], &push, "bokeh/draw")?;
+        backend.draw_indirect(&BOKEH_DRAW, b.counters, &[b.sprites, b.mask], b.sprite_image, [width, height], &push, "bokeh/draw")?;
+        backend.dispatch(&BOKEH_COMBINE, groups, &[b.blur, b.sprite_image, out], &push, "bokeh/draw")?;
+        record_output(backend, f, self.io.as_ref())
+    }
+
+    /// Bright pixels the last frame detected and the gather's window radius (reads them back:
+    /// call once the frame completed).
+    pub fn detected_and_radius(&self, backend: &mut dyn Backend) -> Result<(u64, u32)> {
+        let detected = backend.read_buffer(self.b.counters, COUNTER as u64, 1)?[0] as u64;
+        let radius = backend.read_buffer(self.b.radius, 0, 1)?[0].min(MAX_RADIUS);
+        Ok((detected, radius))
+    }
+}

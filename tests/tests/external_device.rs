@@ -393,7 +393,8 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
 
     let pixels_staging = r.buffer(bytes(pixel_words.len()), vk::BufferUsageFlags::TRANSFER_SRC, true);
     let upload = r.buffer(bytes(2 * n + seg_words.len()), vk::BufferUsageFlags::TRANSFER_SRC, true);
-    let readback = r.buffer(bytes(pixel_words.len() + 2 * n), vk::BufferUsageFlags::TRANSFER_DST, true);
+    let readback = r.buffer(bytes(pixel_words.len() + 2 * n + 64), vk::BufferUsageFlags::TRANSFER_DST, true);
+    let flags = r.buffer(bytes(64), storage, false);
     let segments = r.buffer(bytes(seg_words.len()), storage, false);
     let keys_in = r.buffer(bytes(n), storage, false);
     let values_in = r.buffer(bytes(n), storage, false);
@@ -429,6 +430,7 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
     };
     let (segments_id, keys_in_id, values_in_id) = (import(&mut vk, &segments, "segments"), import(&mut vk, &keys_in, "keys"), import(&mut vk, &values_in, "values"));
     let (keys_out_id, values_out_id) = (import(&mut vk, &keys_out, "keys-out"), import(&mut vk, &values_out, "values-out"));
+    let flags_id = import(&mut vk, &flags, "flags");
     assert_eq!(vk.buffer_words(keys_in_id).unwrap(), n as u64);
     let after_imports = vk.counters();
     assert_eq!(after_imports, BackendCounters::default(), "imports allocate nothing");
@@ -474,6 +476,8 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
         };
         r.copy(&keys_in, &keys_out, bytes(n));
         r.copy(&values_in, &values_out, bytes(n));
+        // SAFETY: the command buffer is recording; the buffer holds 64 words.
+        unsafe { r.device.cmd_fill_buffer(r.cb, flags.buffer, 0, bytes(64), 1) };
 
         // The backend's part, recorded into the renderer's command buffer.
         let before = vk.counters();
@@ -495,6 +499,8 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
                 vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL,
             )
         };
+        // First: a fill over the renderer's fill (ordered by the barrier opening the recording).
+        vk.fill(flags_id, 0, 32, 5, "flags").expect("fill");
         vk.copy_image_to_buffer(written, pixels, 0, "image-in").expect("copy_image_to_buffer");
         scan.record(&mut vk, pixels, 0, words).expect("scan");
         sort.record(&mut vk, segments_id, input.segments.len() as u32, keys_in_id, values_in_id, keys_out_id, values_out_id).expect("sort");
@@ -530,13 +536,15 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
             let at = bytes(pixel_words.len());
             d.cmd_copy_buffer(r.cb, keys_out.buffer, readback.buffer, &[vk::BufferCopy::default().dst_offset(at).size(bytes(n))]);
             d.cmd_copy_buffer(r.cb, values_out.buffer, readback.buffer, &[vk::BufferCopy::default().dst_offset(at + bytes(n)).size(bytes(n))]);
+            let flags_at = vk::BufferCopy::default().dst_offset(at + bytes(2 * n)).size(bytes(64));
+            d.cmd_copy_buffer(r.cb, flags.buffer, readback.buffer, &[flags_at]);
         }
         r.barrier(vk::PipelineStageFlags::TRANSFER, vk::AccessFlags::TRANSFER_WRITE, vk::PipelineStageFlags::HOST, vk::AccessFlags::HOST_READ);
         r.submit_and_wait();
 
         let times = vk.take_external_times().expect("take_external_times").expect("the work completed, so its times are there");
         let labels: Vec<&str> = times.iter().map(|t| t.label.as_str()).collect();
-        assert_eq!(labels.first(), Some(&"image-in"));
+        assert_eq!(labels[..2], ["flags", "image-in"]);
         assert_eq!(labels.last(), Some(&"image-out"));
         assert!(labels.contains(&"scan/block") && labels.contains(&"sort/classify") && labels.contains(&"sort/global-store"), "{labels:?}");
         assert!(times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0), "{times:?}");
@@ -548,6 +556,8 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
         let got_values = Renderer::read(&readback, pixel_words.len() + n, n);
         assert_eq!(got_keys, bits(&want_sort.keys), "frame {frame}: sorted keys differ from the CPU backend's");
         assert_eq!(got_values, want_sort.values, "frame {frame}: sorted payloads differ from the CPU backend's");
+        let got_flags = Renderer::read(&readback, pixel_words.len() + 2 * n, 64);
+        assert_eq!(got_flags, [[5; 32], [1; 32]].concat(), "frame {frame}: the backend's fill and the renderer's");
         assert_no_messages(r.messages(), &format!("in frame {frame}"));
     }
 
@@ -556,7 +566,7 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
     assert_eq!(vk.read_buffer(total_buffer, total_offset, 1).unwrap(), vec![want_total]);
 
     // Imports are only forgotten; the backend's own buffers are freed with it.
-    for id in [segments_id, keys_in_id, values_in_id, keys_out_id, values_out_id] {
+    for id in [segments_id, keys_in_id, values_in_id, keys_out_id, values_out_id, flags_id] {
         vk.destroy_buffer(id);
     }
     assert!(vk.buffer_words(keys_in_id).is_err());
@@ -598,8 +608,8 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
     let mine = vk.create_buffer(16, "mine").expect("create_buffer");
     let spare = vk.create_buffer(16, "spare").expect("create_buffer");
     // Outside a recording, imported buffers read and write like any other.
-    vk.write_buffer(imported, 2, &[7, 8]).expect("write into an imported buffer");
-    assert_eq!(vk.read_buffer(imported, 0, 4).unwrap(), vec![0, 0, 7, 8]);
+    vk.write_buffer(imported, 0, &[5, 6, 7, 8]).expect("write into an imported buffer");
+    assert_eq!(vk.read_buffer(imported, 1, 3).unwrap(), vec![6, 7, 8]);
 
     assert!(vk.end_external().is_err(), "end without begin");
     r.begin();

@@ -3,8 +3,10 @@
 //! a sequence of [`Backend`] calls and runs on either.
 //!
 //! Semantics shared by both: `fill`, `dispatch` and `dispatch_indirect` are recorded and run in order,
-//! each one seeing every write of the ones before it (the Vulkan backend puts a full memory barrier
-//! between commands); `submit` runs what was recorded, waits, and returns one timing per dispatch.
+//! each one seeing every write of the ones before it (the Vulkan backend puts a memory barrier before
+//! a command that accesses a buffer an earlier command accessed since the last barrier; commands on
+//! disjoint buffers may overlap); `submit` runs what was recorded, waits, and returns one timing per
+//! dispatch.
 //! `write_buffer` and `read_buffer` act on the host: they first submit anything still recorded.
 //!
 //! Images (the caller's own, on Vulkan) are copied into and out of buffers by `copy_image_to_buffer`

@@ -3,6 +3,12 @@
 //! each timed command, and submission (which waits and harvests the timings). A second command buffer
 //! runs one-off host transfers.
 //!
+//! Barriers follow from what each command accesses: the recorder remembers the buffers (and images)
+//! the commands since the last barrier accessed, and puts a full memory barrier before a command that
+//! accesses one of them again (every access counts as a write for now: kernels do not declare
+//! read-only bindings; fills and copies write), and before the first command of a command buffer.
+//! Commands on disjoint buffers run without barriers between them.
+//!
 //! Timestamps go into query pools of [`TIMED_PER_POOL`] timed commands each; a recording that times
 //! more commands takes (and keeps) another pool, so one `submit` is always one `vkQueueSubmit`.
 
@@ -107,6 +113,8 @@ pub(super) struct Recorder {
     /// Raw handles of the buffers and images the commands since the last barrier accessed; `None`
     /// at the start of a command buffer, where the first command waits for everything before.
     touched: Option<HashSet<u64>>,
+    /// Barriers `record` put between commands so far (for tests).
+    barriers: u64,
 }
 
 impl Recorder {
@@ -129,6 +137,7 @@ impl Recorder {
             done: Vec::new(),
             submissions: 0,
             touched: None,
+            barriers: 0,
         }
     }
 
@@ -163,6 +172,12 @@ impl Recorder {
         self.submissions
     }
 
+    /// Barriers put between commands so far.
+    #[cfg(test)]
+    pub fn barriers(&self) -> u64 {
+        self.barriers
+    }
+
     /// Whether the backend's own command buffer holds unsubmitted work.
     pub fn is_recording(&self) -> bool {
         self.recording
@@ -182,7 +197,8 @@ impl Recorder {
     /// `end_external`) or else to the backend's own (begun on first use): a barrier first where it
     /// is needed (so it sees every earlier write, also those of earlier submissions), then `record`,
     /// bracketed by timestamps when `timing` names it. `accessed` are the raw handles of the buffers
-    /// (and images) the command reads or writes.
+    /// (and images) the command reads or writes: it must name every one, since commands that share
+    /// none run without a barrier between them.
     pub fn record(
         &mut self,
         ctx: &DeviceCtx,
@@ -212,9 +228,19 @@ impl Recorder {
             }
             _ => None,
         };
-        let _ = accessed;
-        full_barrier(d, cb, self.graphics);
-        self.touched = Some(HashSet::new());
+        // A barrier only where this command accesses something an earlier command since the last
+        // barrier accessed (every access counts as a write: kernels do not declare read-only
+        // bindings), and before the first command of a command buffer.
+        let hazard = match &self.touched {
+            None => true,
+            Some(touched) => accessed.iter().any(|h| touched.contains(h)),
+        };
+        if hazard {
+            self.barriers += 1;
+            full_barrier(d, cb, self.graphics);
+            self.touched = Some(HashSet::new());
+        }
+        self.touched.get_or_insert_with(HashSet::new).extend(accessed.iter().copied());
         // SAFETY: `cb` is recording; the queries were reset in it and each is written once.
         unsafe {
             // Bottom of pipe: the first stamp waits for all earlier work, the last for this command.
@@ -412,18 +438,22 @@ fn later_accesses(graphics: bool) -> vk::AccessFlags {
     access
 }
 
-/// Makes every earlier compute or transfer write visible to every later compute, indirect, vertex,
-/// fragment or transfer access (the shared semantics of the backends: each command sees all writes
-/// of the ones before). Graphics stages are named only where the queue supports graphics.
+/// Makes every earlier compute, shader or transfer write visible to every later compute, indirect,
+/// vertex, fragment or transfer access, and orders every earlier access (indirect reads included)
+/// before them (the shared semantics of the backends: each command sees all writes of the ones
+/// before). Graphics stages are named only where the queue supports graphics.
 pub(super) fn full_barrier(d: &ash::Device, cb: vk::CommandBuffer, graphics: bool) {
+    let mut src = vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER;
     let mut dst = vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::DRAW_INDIRECT | vk::PipelineStageFlags::TRANSFER;
     if graphics {
+        // The draws' shaders read (and may write) storage buffers.
+        src |= vk::PipelineStageFlags::VERTEX_SHADER | vk::PipelineStageFlags::FRAGMENT_SHADER;
         dst |= vk::PipelineStageFlags::VERTEX_SHADER | vk::PipelineStageFlags::FRAGMENT_SHADER;
     }
     barrier(
         d,
         cb,
-        vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER,
+        src,
         vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_WRITE,
         dst,
         vk::AccessFlags::SHADER_READ

@@ -190,3 +190,34 @@ fn counters_are_exact() -> Result<()> {
     assert_eq!(vk.validation_messages(), Vec::<String>::new());
     Ok(())
 }
+
+/// Barriers go only where a command accesses a buffer an earlier one accessed since the last
+/// barrier, and synchronization validation finds nothing missing.
+#[test]
+fn barriers_only_where_commands_share_buffers() -> Result<()> {
+    let Some(mut vk) = backend() else { return Ok(()) };
+    let a = vk.create_buffer(1024, "a")?;
+    let b = vk.create_buffer(1024, "b")?;
+    let c = vk.create_buffer(4, "c")?;
+    vk.submit()?;
+    let barriers = |vk: &VulkanBackend| vk.recorder.barriers();
+    let start = barriers(&vk);
+    vk.fill(a, 0, 1024, 1, "a")?; // first of the command buffer: a barrier
+    vk.fill(b, 0, 1024, 2, "b")?; // disjoint: none
+    vk.fill(c, 0, 4, 0, "c")?; // disjoint: none
+    assert_eq!(barriers(&vk) - start, 1);
+    vk.fill(a, 0, 1024, 3, "a again")?; // a again: one
+    assert_eq!(barriers(&vk) - start, 2);
+    let push = push_words(&ScanParams { len: 1024, data_offset: 0, sums_offset: 0 });
+    vk.dispatch(&BLOCK_SCAN, [1, 1, 1], &[b, c], &push, "scan b")?; // only a since the last barrier: none
+    assert_eq!(barriers(&vk) - start, 2);
+    vk.dispatch(&BLOCK_SCAN, [1, 1, 1], &[a, c], &push, "scan a")?; // a and c again: one
+    assert_eq!(barriers(&vk) - start, 3);
+    vk.submit()?;
+    let want = |v: u32| (0..1024).map(|i| i * v).collect::<Vec<u32>>();
+    assert_eq!(vk.read_buffer(a, 0, 1024)?, want(3));
+    assert_eq!(vk.read_buffer(b, 0, 1024)?, want(2));
+    assert_eq!(vk.read_buffer(c, 0, 1)?, vec![3 * 1024]);
+    assert_eq!(vk.validation_messages(), Vec::<String>::new());
+    Ok(())
+}

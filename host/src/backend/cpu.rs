@@ -190,3 +190,31 @@ impl Backend for CpuBackend {
         self.counters
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::backend::push_words;
+    use dof_shaders::scan::{ADD, ScanParams};
+
+    /// A submission is a `submit` call; the arguments of an indirect dispatch are no host readback.
+    #[test]
+    fn counters_are_exact() -> Result<()> {
+        let mut cpu = CpuBackend::new();
+        let a = cpu.create_buffer(10, "a")?;
+        let args = cpu.create_buffer(3, "args")?;
+        cpu.write_buffer(args, 0, &[1, 1, 1])?;
+        let sums = cpu.create_buffer(0, "sums")?;
+        let push = push_words(&ScanParams { len: 10, data_offset: 0, sums_offset: 0 });
+        cpu.dispatch_indirect(&ADD, args, 0, &[a, sums], &push, "add")?;
+        cpu.submit()?;
+        assert!(cpu.read_buffer(a, 10, 1).is_err());
+        assert_eq!(cpu.read_buffer(a, 0, 10)?, vec![0; 10]);
+        cpu.destroy_buffer(args);
+        cpu.destroy_buffer(args);
+        let c = cpu.counters();
+        let want = BackendCounters { allocations: 3, submissions: 1, readbacks: 1, uploads: 1, device_bytes: 44, peak_device_bytes: 56 };
+        assert_eq!(c, want);
+        Ok(())
+    }
+}

@@ -1,9 +1,13 @@
 //! The embedded SPIR-V modules: built from the current kernel sources, one per entry point the host
-//! refers to. Runs without a Vulkan driver.
+//! refers to, and the same as the prebuilt artifact `host/spirv/` that crates depending on `dof`
+//! without the `rebuild-spirv` feature embed. Runs without a Vulkan driver.
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
+/// Without `rebuild-spirv` the hash comes from `host/spirv/manifest.txt`: this fails when a kernel
+/// source changed and the artifact was not regenerated. With it (the workspace) the hash is taken
+/// when the build script compiles the kernels.
 #[test]
 fn embedded_module_was_built_from_the_current_sources() {
     let shaders = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shaders");
@@ -12,6 +16,39 @@ fn embedded_module_was_built_from_the_current_sources() {
         dof::shaders::SOURCE_HASH,
         "the embedded SPIR-V was built from other kernel sources than those on disk"
     );
+}
+
+/// `host/spirv/` holds exactly the embedded modules (byte for byte, no other `.spv`) and the
+/// embedded source hash: the build script rewrites it whenever the kernels compile to something
+/// else, so in the workspace this fails only if that did not happen; CI's `git diff --exit-code --
+/// host/spirv` then proves the committed artifact is this one.
+#[test]
+fn the_prebuilt_artifact_is_what_is_embedded() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../host/spirv");
+    let text = std::fs::read_to_string(dir.join("manifest.txt")).expect("host/spirv/manifest.txt");
+    let mut hash = None;
+    let mut files = BTreeMap::new();
+    for line in text.lines().filter(|l| !l.trim().is_empty() && !l.starts_with('#')) {
+        match line.split_whitespace().collect::<Vec<_>>().as_slice() {
+            ["source-hash", h] => hash = Some(h.to_string()),
+            ["module", entry, file] => {
+                files.insert(entry.to_string(), file.to_string());
+            }
+            _ => panic!("manifest line {line:?}"),
+        }
+    }
+    assert_eq!(hash.as_deref(), Some(dof::shaders::SOURCE_HASH), "source hash in host/spirv/manifest.txt");
+    let embedded: BTreeSet<&str> = dof::shaders::MODULES.iter().map(|(e, _)| *e).collect();
+    assert_eq!(files.keys().map(String::as_str).collect::<BTreeSet<_>>(), embedded, "entry points in the manifest");
+    for (entry, bytes) in dof::shaders::MODULES {
+        let on_disk = std::fs::read(dir.join(&files[*entry])).expect("module file");
+        assert!(on_disk == *bytes, "host/spirv/{} differs from the embedded module of {entry}", files[*entry]);
+    }
+    let named: BTreeSet<&str> = files.values().map(String::as_str).collect();
+    for file in std::fs::read_dir(&dir).expect("host/spirv") {
+        let name = file.expect("entry").file_name().to_string_lossy().into_owned();
+        assert!(!name.ends_with(".spv") || named.contains(name.as_str()), "host/spirv/{name} is named by no entry point");
+    }
 }
 
 /// The names of the module's `OpEntryPoint`s.

@@ -5,7 +5,9 @@
 use super::render::BackendArg;
 use anyhow::Context;
 use dof::backend::{Backend, BackendCounters, BufferId};
-use dof::frame::{Frame, SplatContext, SplatContextDesc};
+use dof::frame::{BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, SplatContext, SplatContextDesc};
+use dof::methods::bokeh::{BokehOptions, bokeh};
+use dof::methods::gather::gather;
 use dof::layers::LayeredImage;
 use dof::methods::buffers::slot_words;
 use dof::methods::splat::{Merge, SplatOptions, splat};
@@ -20,6 +22,10 @@ pub enum FrameMethod {
     Multilayer,
     /// Single-layer tiled splatting (Selgrad, Franke, Stamminger 2016): the front layer only.
     Tiled,
+    /// The gathering baseline (Riguer et al. 2003) on the front layer.
+    Gather,
+    /// Bokeh sprites (de Rousiers, Pettineo) over the gathering baseline.
+    Bokeh,
 }
 
 #[derive(clap::Args)]
@@ -41,8 +47,9 @@ pub struct FrameArgs {
     /// Timed frames after one warm-up frame.
     #[arg(long, default_value_t = 10)]
     frames: u32,
-    /// Run each frame through the one-shot `splat` function instead (a context, its buffers and
-    /// the input's per frame, and the result read back): what the frame API saves.
+    /// Run each frame through the one-shot function instead (a context, its buffers and the
+    /// input's per frame, and the result read back): what the frame API saves. The "record" time
+    /// is then the whole call.
     #[arg(long)]
     one_shot: bool,
     /// Print one JSON object instead of the table.
@@ -66,12 +73,16 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     let layered = raycast_layers(&builtin.scene, &camera, &lens, &layer_options)?;
     let image = match args.method {
         FrameMethod::Multilayer => layered.layers,
-        FrameMethod::Tiled => layered.layers.front_layer(),
+        _ => layered.layers.front_layer(),
     };
     let options = SplatOptions { merge: args.merge, ..Default::default() };
     let mut backend = super::render::backend(args.backend)?;
     let b = backend.as_mut();
-    let measured = if args.one_shot { one_shot(b, &image, &lens, &options, args.frames)? } else { framed(b, &image, &lens, &options, args.frames)? };
+    let measured = if args.one_shot {
+        one_shot(b, args.method, &image, &lens, &options, args.frames)?
+    } else {
+        framed(b, args.method, &image, &lens, &options, args.frames)?
+    };
     let per_frame = |n: u64| n as f64 / args.frames as f64;
     let c = measured.counters;
     if args.json {
@@ -155,9 +166,55 @@ fn add_stages(into: &mut BTreeMap<String, f64>, times: &[dof::backend::CommandTi
     total / frames as f64
 }
 
+/// A context of any method, as the benchmark drives it.
+enum AnyContext {
+    Splat(SplatContext),
+    Gather(GatherContext),
+    Bokeh(BokehContext),
+}
+
+impl AnyContext {
+    fn new(b: &mut dyn Backend, method: FrameMethod, image: &LayeredImage, options: &SplatOptions) -> dof::Result<Self> {
+        let (w, h, l) = (image.width, image.height, image.max_layers);
+        Ok(match method {
+            FrameMethod::Multilayer | FrameMethod::Tiled => AnyContext::Splat(SplatContext::new(b, &SplatContextDesc::new(w, h, l, options.clone()))?),
+            FrameMethod::Gather => AnyContext::Gather(GatherContext::new(b, &GatherContextDesc::new(w, h, l))?),
+            FrameMethod::Bokeh => AnyContext::Bokeh(BokehContext::new(b, &BokehContextDesc::new(w, h, l, BokehOptions::default()))?),
+        })
+    }
+    fn record(&mut self, b: &mut dyn Backend, f: &Frame) -> dof::Result<()> {
+        match self {
+            AnyContext::Splat(c) => c.record(b, f),
+            AnyContext::Gather(c) => c.record(b, f),
+            AnyContext::Bokeh(c) => c.record(b, f),
+        }
+    }
+    fn device_bytes(&self) -> u64 {
+        match self {
+            AnyContext::Splat(c) => c.device_bytes(),
+            AnyContext::Gather(c) => c.device_bytes(),
+            AnyContext::Bokeh(c) => c.device_bytes(),
+        }
+    }
+    /// Overflowing tiles, list entries and the list pool (splatting only).
+    fn lists(&self, b: &mut dyn Backend) -> dof::Result<(u32, u64, u64)> {
+        match self {
+            AnyContext::Splat(c) => c.report(b).map(|r| (r.overflow_tiles, r.list_entries, r.list_capacity)),
+            _ => Ok((0, 0, 0)),
+        }
+    }
+    fn destroy(self, b: &mut dyn Backend) {
+        match self {
+            AnyContext::Splat(c) => c.destroy(b),
+            AnyContext::Gather(c) => c.destroy(b),
+            AnyContext::Bokeh(c) => c.destroy(b),
+        }
+    }
+}
+
 /// The frame API: one context and the input's buffers, made and filled once; then per frame a
 /// recording and one submission.
-fn framed(b: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions, frames: u32) -> anyhow::Result<Measured> {
+fn framed(b: &mut dyn Backend, method: FrameMethod, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions, frames: u32) -> anyhow::Result<Measured> {
     let pixels = image.width as u64 * image.height as u64;
     let input = slot_words(image);
     let bufs: Vec<BufferId> = [(input.len() as u64, "bench/fragments"), (pixels, "bench/counts"), (3 * pixels, "bench/output")]
@@ -166,8 +223,7 @@ fn framed(b: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &
         .collect::<dof::Result<_>>()?;
     b.write_buffer(bufs[0], 0, &input)?;
     b.write_buffer(bufs[1], 0, &image.counts)?;
-    let desc = SplatContextDesc::new(image.width, image.height, image.max_layers, options.clone());
-    let mut ctx = SplatContext::new(b, &desc)?;
+    let mut ctx = AnyContext::new(b, method, image, options)?;
     let frame = Frame::layers(image.width, image.height, image.max_layers, *lens, bufs[0], bufs[1], bufs[2]);
     ctx.record(b, &frame)?;
     b.submit()?;
@@ -180,45 +236,45 @@ fn framed(b: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &
         gpu_ms += add_stages(&mut stages, &b.submit()?, frames);
     }
     let counters = b.counters().since(&before);
-    let report = ctx.report(b).context("reading the last frame's report")?;
+    let (overflow_tiles, list_entries, list_pool) = ctx.lists(b).context("reading the last frame's report")?;
     let device_bytes = ctx.device_bytes();
     ctx.destroy(b);
     bufs.into_iter().for_each(|id| b.destroy_buffer(id));
-    Ok(Measured {
-        counters,
-        record_ms,
-        gpu_ms,
-        stages,
-        device_bytes,
-        overflow_tiles: report.overflow_tiles,
-        list_entries: report.list_entries,
-        list_pool: report.list_capacity,
-    })
+    Ok(Measured { counters, record_ms, gpu_ms, stages, device_bytes, overflow_tiles, list_entries, list_pool })
 }
 
 /// The one-shot path, frame after frame.
-fn one_shot(b: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions, frames: u32) -> anyhow::Result<Measured> {
-    splat(b, image, lens, options)?;
+fn one_shot(b: &mut dyn Backend, method: FrameMethod, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions, frames: u32) -> anyhow::Result<Measured> {
+    let (front, depth) = image.front();
+    let run = |b: &mut dyn Backend| -> dof::Result<(Vec<dof::backend::CommandTime>, u64, (u32, u64, u64))> {
+        Ok(match method {
+            FrameMethod::Multilayer | FrameMethod::Tiled => {
+                let out = splat(b, image, lens, options)?;
+                let r = out.report;
+                (out.stages, r.buffer_bytes, (r.overflow_tiles, r.list_entries, r.list_capacity))
+            }
+            FrameMethod::Gather => {
+                let out = gather(b, &front, &depth, lens, None)?;
+                (out.times, out.buffer_bytes, (0, 0, 0))
+            }
+            FrameMethod::Bokeh => {
+                let out = bokeh(b, &front, &depth, lens, &BokehOptions::default())?;
+                (out.times, out.buffer_bytes, (0, 0, 0))
+            }
+        })
+    };
+    run(b)?;
     let before = b.counters();
     let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());
-    let mut last = None;
+    let mut last = (0, (0, 0, 0));
     for _ in 0..frames {
         let start = Instant::now();
-        let out = splat(b, image, lens, options)?;
+        let (times, bytes, lists) = run(b)?;
         record_ms += start.elapsed().as_secs_f64() * 1e3 / frames as f64;
-        gpu_ms += add_stages(&mut stages, &out.stages, frames);
-        last = Some(out.report);
+        gpu_ms += add_stages(&mut stages, &times, frames);
+        last = (bytes, lists);
     }
     let counters = b.counters().since(&before);
-    let report = last.context("no frame ran")?;
-    Ok(Measured {
-        counters,
-        record_ms,
-        gpu_ms,
-        stages,
-        device_bytes: report.buffer_bytes,
-        overflow_tiles: report.overflow_tiles,
-        list_entries: report.list_entries,
-        list_pool: report.list_capacity,
-    })
+    let (device_bytes, (overflow_tiles, list_entries, list_pool)) = last;
+    Ok(Measured { counters, record_ms, gpu_ms, stages, device_bytes, overflow_tiles, list_entries, list_pool })
 }

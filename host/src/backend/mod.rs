@@ -280,6 +280,12 @@ pub trait Backend {
     fn submit(&mut self) -> Result<Vec<CommandTime>>;
     /// Allocations, submissions, transfers and memory so far (see [`BackendCounters`]).
     fn counters(&self) -> BackendCounters;
+    /// Builds what running `kernels` and `draws` needs (pipelines on Vulkan) now, so that the
+    /// first frame that records them does not pay for it. Nothing on the CPU backend.
+    fn prepare(&mut self, kernels: &[&'static KernelDesc], draws: &[&'static DrawDesc]) -> Result<()> {
+        let _ = (kernels, draws);
+        Ok(())
+    }
     /// Messages from driver-side checking (the validation layer on Vulkan) since the last call.
     fn take_diagnostics(&mut self) -> Vec<String> {
         Vec::new()

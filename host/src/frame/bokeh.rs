@@ -138,7 +138,18 @@ impl BokehContext {
             sprite_image: ids[8],
             radius: ids[9],
         };
-        Ok(BokehContext { desc: desc.clone(), b, io, scan, owned, bytes })
+        let ctx = BokehContext { desc: desc.clone(), b, io, scan, owned, bytes };
+        // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own
+        // work (Vulkan still makes its draw target at the first draw of a size).
+        let mut kernels: Vec<&'static dof_shaders::KernelDesc> = dof_shaders::bokeh::KERNELS.to_vec();
+        kernels.extend([&GATHER, &GATHER_PLAN]);
+        kernels.extend(dof_shaders::scan::KERNELS);
+        kernels.extend(dof_shaders::frame_io::KERNELS);
+        if let Err(e) = backend.prepare(&kernels, &[&BOKEH_DRAW]).and_then(|_| backend.submit().map(drop)) {
+            ctx.destroy(backend);
+            return Err(e);
+        }
+        Ok(ctx)
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {

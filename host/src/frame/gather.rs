@@ -72,13 +72,21 @@ impl GatherContext {
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut make)?) } else { None };
             Ok((color, depth, plan, io))
         })();
-        match made {
-            Ok((color, depth, plan, io)) => Ok(GatherContext { desc: desc.clone(), cap, color, depth, plan, io, owned, bytes }),
+        let ctx = match made {
+            Ok((color, depth, plan, io)) => GatherContext { desc: desc.clone(), cap, color, depth, plan, io, owned, bytes },
             Err(e) => {
                 owned.into_iter().for_each(|id| backend.destroy_buffer(id));
-                Err(e)
+                return Err(e);
             }
+        };
+        // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own work.
+        let mut kernels = vec![&GATHER, &GATHER_PLAN];
+        kernels.extend(dof_shaders::frame_io::KERNELS);
+        if let Err(e) = backend.prepare(&kernels, &[]).and_then(|_| backend.submit().map(drop)) {
+            ctx.destroy(backend);
+            return Err(e);
         }
+        Ok(ctx)
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {

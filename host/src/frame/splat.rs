@@ -3,6 +3,7 @@
 
 use super::io::{Frame, ImageIo, check_frame, output_buffer, record_input, record_output};
 use crate::backend::{Backend, BufferId, push_words};
+use dof_shaders::KernelDesc;
 use crate::error::{Error, Result};
 use crate::methods::buffers::groups_for;
 use crate::methods::splat::{Plan, SplatOptions, SplatReport};
@@ -244,7 +245,19 @@ impl SplatContext {
             }
         };
         bytes += scan.bytes() + sort.bytes();
-        Ok(SplatContext { desc: desc.clone(), radius_cap, merge_steps, list_entries, max_list, owned, bytes, b, scan, sort, last: None })
+        let mut kernels: Vec<&'static KernelDesc> = dof_shaders::splat::KERNELS.to_vec();
+        kernels.extend(dof_shaders::scan::KERNELS);
+        kernels.extend(sort.kernels());
+        if desc.image_io {
+            kernels.extend(dof_shaders::frame_io::KERNELS);
+        }
+        let ctx = SplatContext { desc: desc.clone(), radius_cap, merge_steps, list_entries, max_list, owned, bytes, b, scan, sort, last: None };
+        // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own work.
+        if let Err(e) = backend.prepare(&kernels, &[]).and_then(|_| backend.submit().map(drop)) {
+            ctx.destroy(backend);
+            return Err(e);
+        }
+        Ok(ctx)
     }
 
     /// Frees every buffer. The backend must not be running the context's work.

@@ -67,6 +67,16 @@ impl SegmentedSort {
         }
     }
 
+    /// The kernels [`Self::record`] may dispatch on this device.
+    pub fn kernels(&self) -> Vec<&'static dof_shaders::KernelDesc> {
+        let mut k: Vec<_> = SHARED_CLASSES[..=self.top_class as usize].to_vec();
+        k.extend([&CLASSIFY, &PLAN]);
+        if self.scratch.is_some() {
+            k.extend([&GLOBAL_LOCAL, &GLOBAL_STEP, &GLOBAL_STORE]);
+        }
+        k
+    }
+
     /// Device memory the sort holds, in bytes.
     pub fn bytes(&self) -> u64 {
         let lists = (NUM_CLASSES as u64 + 1) * self.max_segments.max(1) as u64;

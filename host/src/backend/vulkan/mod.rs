@@ -875,6 +875,16 @@ impl Backend for VulkanBackend {
         BackendCounters { submissions: self.recorder.submissions(), ..self.counters }
     }
 
+    fn prepare(&mut self, kernels: &[&'static KernelDesc], draws: &[&'static DrawDesc]) -> Result<()> {
+        for &kernel in kernels {
+            self.pipelines.get(&self.device.device, kernel)?;
+        }
+        for &draw in draws {
+            self.draws.pipeline(&self.device.device, draw)?;
+        }
+        Ok(())
+    }
+
     fn take_diagnostics(&mut self) -> Vec<String> {
         self.take_validation_messages()
     }

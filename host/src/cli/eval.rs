@@ -22,9 +22,9 @@ pub struct EvalArgs {
     /// Timed runs per point (default 5, 3 with --quick).
     #[arg(long)]
     runs: Option<usize>,
-    /// Largest CoC radii (px, comma-separated) of the max-CoC sweep on the first scene (seed 000
-    /// Fig. 13), at 320x180 (160x90 with --quick); default 4,8,16,32 (4,16 with --quick);
-    /// `none` for no sweep.
+    /// Largest CoC radii (px, comma-separated) of the max-CoC sweep on the first scene (as in
+    /// Franke et al. 2018, Fig. 13), at 320x180 (160x90 with --quick); default 4,8,16,32 (4,16
+    /// with --quick); `none` for no sweep.
     #[arg(long, value_delimiter = ',')]
     coc_sweep: Vec<String>,
     /// Leave out the plots (they need a TrueType font, see `dof::eval::plot`).

@@ -25,19 +25,25 @@ pub enum Method {
     /// The partial multi-layer image (umbra threshold, disocclusion buffer) as a multi-layer EXR.
     Layers,
     /// The reference: thin-lens distributed ray tracing (built-in scenes), the accumulation buffer
-    /// (glTF scenes; `--samples` renders, default 256).
+    /// (Haeberli and Akeley 1990; glTF scenes; `--samples` renders, default 256).
     Reference,
-    /// The gathering baseline (single layer, scatter-as-gather) on the chosen backend.
+    /// The gathering baseline (Riguer et al. 2003; single layer, scatter-as-gather) on the chosen
+    /// backend.
     Gather,
-    /// Single-layer tiled splatting (the front layer only) on the chosen backend.
+    /// Single-layer tiled splatting (Selgrad, Franke, Stamminger 2016: the front layer only) on the
+    /// chosen backend.
     Tiled,
-    /// Multi-layer tiled splatting of the partial multi-layer image on the chosen backend.
+    /// Multi-layer tiled splatting (Franke, Hofmann, Stamminger, Selgrad 2018) of the partial
+    /// multi-layer image on the chosen backend.
     Multilayer,
-    /// Thin-lens ray tracing through the partial multi-layer image (`--spp` rays per pixel).
+    /// Thin-lens ray tracing through the partial multi-layer image (after Lee et al. 2010; `--spp`
+    /// rays per pixel).
     Raytrace,
-    /// Layered DoF with matting (seed 002): depth layers blurred by Gaussians and composited.
+    /// Layered DoF with matting (Schedl, Wimmer 2012): depth layers blurred by Gaussians and
+    /// composited.
     Layered,
-    /// Bokeh sprites (seed 001): bright pixels drawn as aperture-shaped quads over a gather.
+    /// Bokeh sprites (de Rousiers, Pettineo 2012): bright pixels drawn as aperture-shaped quads over
+    /// a gather.
     Bokeh,
 }
 
@@ -49,8 +55,9 @@ pub enum BackendArg {
 
 #[derive(clap::Args)]
 pub struct RenderArgs {
-    /// A built-in scene name (`simple`, `railing`, `columns`, `highlights`), a glTF scene (`.gltf`
-    /// or `.glb`: rasterised and depth-peeled on `--backend`), or an EXR file (RGB+Z or multi-layer).
+    /// A built-in scene name (`simple`, `railing`, `columns`, `highlights`, `fence`, `edges`; `dof
+    /// scenes` describes them), a glTF scene (`.gltf` or `.glb`: rasterised and depth-peeled on
+    /// `--backend`), or an EXR file (RGB+Z or multi-layer).
     #[arg(long, default_value = "simple")]
     scene: String,
     #[arg(long, value_enum, default_value = "reference")]

@@ -5,7 +5,7 @@
 //!   region) against median time, log scale, one colour per method, circles for the CPU backend and
 //!   triangles for Vulkan, with each backend's Pareto front dashed. Host-only methods take no time
 //!   and are drawn as a horizontal line (the pinhole is the floor every method must beat).
-//! - `<scene>-tile-size` (seed 000 Fig. 14): time against tile size for the splatting methods at the
+//! - `<scene>-tile-size` (Franke et al. 2018, Fig. 14): time against tile size for the splatting methods at the
 //!   merge level the tile sweep uses.
 //! - `<scene>-list-lengths` (Fig. 12): tiles per list-length bucket, one bar per merge level, from
 //!   the multi-layer method on the first backend at its smallest tile size (lists are identical on

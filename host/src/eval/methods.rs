@@ -48,7 +48,7 @@ pub struct MethodOutput {
     pub stages: Vec<CommandTime>,
     /// Method-specific figures for the report (list lengths, fragments, buffer bytes, ...), by name.
     pub figures: BTreeMap<String, f64>,
-    /// Tiles per list-length bucket `(upper bound, tiles)` (seed 000 Fig. 12); empty for methods
+    /// Tiles per list-length bucket `(upper bound, tiles)` (Franke et al. 2018, Fig. 12); empty for methods
     /// without tile lists.
     pub list_histogram: Vec<(u32, u32)>,
 }
@@ -59,7 +59,7 @@ pub trait Method {
     fn uses_backend(&self) -> bool;
     /// The quality settings to sweep; `quick` keeps one or two.
     fn settings(&self, quick: bool) -> Vec<Setting>;
-    /// The setting timed in the max-CoC sweep (seed 000 Fig. 13); `None` keeps the method out of it.
+    /// The setting timed in the max-CoC sweep (Franke et al. 2018, Fig. 13); `None` keeps the method out of it.
     fn sweep_setting(&self) -> Option<Setting> {
         None
     }
@@ -125,8 +125,8 @@ fn splat_setting(index: usize) -> Setting {
     Setting { label: format!("merge={} tile={tile}", merge.name()), value: Some(index as u32) }
 }
 
-/// Tiled splatting: single-layer (`tiled`, seed 003) on the front layer or multi-layer
-/// (`multilayer`, seed 000); the knobs are the merge level and the tile size, one of
+/// Tiled splatting: single-layer (`tiled`, Selgrad, Franke, Stamminger 2016) on the front layer or
+/// multi-layer (`multilayer`, Franke, Hofmann, Stamminger, Selgrad 2018); the knobs are the merge level and the tile size, one of
 /// [`SPLAT_POINTS`] (a setting's `value` is its index there).
 pub struct Splat {
     pub multi_layer: bool,
@@ -199,7 +199,7 @@ impl Method for Raytrace {
     }
 }
 
-/// Layered DoF with matting (seed 002); the knobs are the blur (cascaded or one per layer) and the
+/// Layered DoF with matting (Schedl, Wimmer 2012); the knobs are the blur (cascaded or one per layer) and the
 /// layers per doubling of the CoC.
 pub struct Layered;
 
@@ -241,7 +241,7 @@ impl Method for Layered {
     }
 }
 
-/// Bokeh sprites over a gather (seed 001); the knob is the luminance threshold.
+/// Bokeh sprites over a gather (de Rousiers, Pettineo 2012); the knob is the luminance threshold.
 pub struct Bokeh;
 
 impl Method for Bokeh {

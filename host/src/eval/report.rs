@@ -1,5 +1,5 @@
 //! The evaluation's outputs: `report.json` (schema below) and `report.md` (tables in the shape of
-//! seed 000 Table 1).
+//! Franke et al. 2018, Table 1).
 //!
 //! `report.json` schema (one object):
 //! - `version`: the `dof` version; `shaders_hash`: SHA-256 of the kernel sources; `quick`: whether
@@ -22,7 +22,7 @@
 //!   [`Record::figures`]), `list_histogram` (tiles per list-length bucket as `[upper bound, tiles]`,
 //!   buckets by powers of two; only for methods with tile lists). PSNR is `null` where it is
 //!   infinite (identical images);
-//! - `coc_sweep[]` (seed 000 Fig. 13), time against the largest CoC on the sweep scene (the first
+//! - `coc_sweep[]` (Franke et al. 2018, Fig. 13), time against the largest CoC on the sweep scene (the first
 //!   scene, at 320x180, or 160x90 with `quick`), the aperture scaled so the largest CoC radius present takes each value: `scene`,
 //!   `method`, `setting`, `backend`, `device`, `max_coc_px` (largest CoC radius present, px),
 //!   `time_ms`, `stages_ms`, `runs`, `figures`.
@@ -95,7 +95,7 @@ pub struct Record {
     pub list_histogram: Vec<(u32, u32)>,
 }
 
-/// One point of the max-CoC sweep (seed 000 Fig. 13): time only; the aperture differs from the
+/// One point of the max-CoC sweep (Franke et al. 2018, Fig. 13): time only; the aperture differs from the
 /// scene's, so there is no reference to measure error against.
 #[derive(Clone, Debug, Serialize)]
 pub struct SweepRecord {
@@ -111,7 +111,7 @@ pub struct SweepRecord {
     pub figures: BTreeMap<String, f64>,
 }
 
-/// The column of seed 000 Table 1 a recorded stage belongs to: `merge` (input preparation: packing
+/// The column of Franke et al. 2018, Table 1, a recorded stage belongs to: `merge` (input preparation: packing
 /// and merging, the ray tracer's min/max hierarchy, layered DoF's matting, or bokeh detection),
 /// `splat` (tile counts, compaction, allocation, binning and their scans), `sort`, `apply`
 /// (accumulation, the gather, tracing, layered DoF's blurs and composition, the sprite draw).
@@ -182,7 +182,7 @@ impl Report {
     }
 
     /// Markdown: per scene, a table of method, setting, backend, total time and error, then the
-    /// per-stage times in the shape of seed 000 Table 1 (every stage label is in `report.json`).
+    /// per-stage times in the shape of Franke et al. 2018, Table 1 (every stage label is in `report.json`).
     pub fn to_markdown(&self) -> String {
         let mut md = String::from("# Depth-of-field evaluation\n\n");
         let _ = writeln!(md, "dof {}{}; error against each scene's reference on the documented tone map; times are medians of {} runs after a warm-up.\n",
@@ -208,7 +208,7 @@ impl Report {
             md.push_str(&self.table1(&s.name));
         }
         if let Some(first) = self.coc_sweep.first() {
-            let _ = writeln!(md, "## Time against the largest CoC ({}, seed 000 Fig. 13)\n", first.scene);
+            let _ = writeln!(md, "## Time against the largest CoC ({}; Franke et al. 2018, Fig. 13)\n", first.scene);
             md.push_str("The aperture scaled so the largest CoC radius present takes each value; time only.\n\n| method | setting | backend | largest CoC radius (px) | total (ms) | mean list |\n|---|---|---|---|---|---|\n");
             for r in &self.coc_sweep {
                 let list = r.figures.get("mean_list_length").map_or("-".into(), |v| format!("{v:.0}"));
@@ -219,10 +219,10 @@ impl Report {
         md
     }
 
-    /// Seed 000 Table 1 for one scene: per backend and method, the time of each column, the mean list
+    /// Franke et al. 2018, Table 1, for one scene: per backend and method, the time of each column, the mean list
     /// length, and the error full-frame and in the partial-occlusion region.
     fn table1(&self, scene: &str) -> String {
-        let mut md = String::from("Per stage, in the shape of seed 000 Table 1 (ms):\n\n| backend | method | setting | merge | splat | sort | apply | overall | mean list | PSNR (dB) | PSNR region (dB) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+        let mut md = String::from("Per stage, in the shape of Table 1 of Franke et al. 2018 (ms):\n\n| backend | method | setting | merge | splat | sort | apply | overall | mean list | PSNR (dB) | PSNR region (dB) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
         for r in self.records.iter().filter(|r| r.scene == scene && r.backend != "host") {
             let mut cols = BTreeMap::new();
             for (label, ms) in &r.stages_ms {

@@ -1,4 +1,4 @@
-//! The max-CoC sweep (seed 000 Fig. 13): run time against the largest blur in the frame. The scene
+//! The max-CoC sweep (Franke et al. 2018, Fig. 13): run time against the largest blur in the frame. The scene
 //! and focus stay fixed; the aperture is scaled so the largest CoC radius present takes each target
 //! value, and the multi-layer image is cast again for that lens (its umbra thinning and disocclusion
 //! buffer depend on the aperture). Time only: the references are for the scene's own aperture.

@@ -24,7 +24,7 @@ pub enum FrameMethod {
     Tiled,
     /// The gathering baseline (Riguer et al. 2003) on the front layer.
     Gather,
-    /// Bokeh sprites (de Rousiers, Pettineo) over the gathering baseline.
+    /// Bokeh sprites (de Rousiers, Pettineo 2012) over the gathering baseline.
     Bokeh,
 }
 

@@ -52,20 +52,22 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
     }
     let mut desc = SplatContextDesc::new(w, h, layers, options.clone());
     desc.distinct_stage_buffers = options.keep_intermediates;
-    // Bounds are checked (and refused) by the context before the input is uploaded.
-    let probe = SplatContext::new(backend, &desc)?;
-    probe.destroy(backend);
-
+    // The context checks the bounds (and refuses) before the input is uploaded.
+    let first = SplatContext::new(backend, &desc)?;
     let pixels = w as u64 * h as u64;
     let input = slot_words(image);
     let sizes = [(input.len() as u64, "splat/input"), (pixels, "splat/input-counts"), (3 * pixels, "splat/out")];
-    with_buffers(backend, &sizes, |backend, io| {
+    let mut first = Some(first);
+    let result = with_buffers(backend, &sizes, |backend, io| {
         backend.write_buffer(io[0], 0, &input)?;
         backend.write_buffer(io[1], 0, &image.counts)?;
         let frame = Frame::layers(w, h, layers, *lens, io[0], io[1], io[2]);
         let mut attempt = 0;
         loop {
-            let mut ctx = SplatContext::new(backend, &desc)?;
+            let mut ctx = match first.take() {
+                Some(ctx) => ctx,
+                None => SplatContext::new(backend, &desc)?,
+            };
             let ran = (|| {
                 ctx.record(backend, &frame)?;
                 let stages = backend.submit()?;
@@ -105,7 +107,12 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
             ctx.destroy(backend);
             return done;
         }
-    })
+    });
+    // If the input buffers could not be made, the first context is still here.
+    if let Some(ctx) = first {
+        ctx.destroy(backend);
+    }
+    result
 }
 
 fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatReport) -> Result<Intermediates> {

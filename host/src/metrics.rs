@@ -12,13 +12,20 @@
 //! All come full-frame and, given a mask, inside it (the partial-occlusion region): masked PSNR
 //! averages the squared error over the masked pixels, masked SSIM averages the crate's SSIM map there
 //! (which it exposes clamped to [0, 1] in 8 bits), masked FLIP averages FLIP's error map there.
+//!
+//! SSIM and FLIP ([`compare`], [`ImageError`]) need the `eval` feature; PSNR is always here.
+#![cfg_attr(not(feature = "eval"), allow(rustdoc::broken_intra_doc_links))]
 
 use crate::error::{Error, Result};
-use crate::io::tonemap::{tonemap, tonemap_to_srgb8};
+use crate::io::tonemap::tonemap;
+#[cfg(feature = "eval")]
+use crate::io::tonemap::tonemap_to_srgb8;
 use crate::layers::RgbImage;
+#[cfg(feature = "eval")]
 use image_compare::prelude::RgbImage as Rgb8Image;
 
 /// The error of one image against a reference.
+#[cfg(feature = "eval")]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ImageError {
     pub psnr_db: f64,
@@ -74,6 +81,7 @@ pub fn psnr(image: &RgbImage, reference: &RgbImage) -> Result<f64> {
     Ok(psnr_from(squared_errors(image, reference).iter().sum(), image.data.len() as u64))
 }
 
+#[cfg(feature = "eval")]
 fn to_rgb8(image: &RgbImage) -> Rgb8Image {
     let bytes: Vec<u8> = image.data.iter().flat_map(|&p| tonemap_to_srgb8(p, 1.0)).collect();
     // The buffer has exactly width * height * 3 bytes, so construction cannot fail.
@@ -81,6 +89,7 @@ fn to_rgb8(image: &RgbImage) -> Rgb8Image {
 }
 
 /// FLIP's per-pixel error map of `image` against `reference` (same size, checked by the caller).
+#[cfg(feature = "eval")]
 fn flip_map(image: &RgbImage, reference: &RgbImage) -> Vec<f32> {
     let bytes = |img: &RgbImage| -> Vec<u8> { img.data.iter().flat_map(|&p| tonemap_to_srgb8(p, 1.0)).collect() };
     let reference = nv_flip::FlipImageRgb8::with_data(reference.width, reference.height, &bytes(reference));
@@ -89,7 +98,8 @@ fn flip_map(image: &RgbImage, reference: &RgbImage) -> Vec<f32> {
 }
 
 /// PSNR, SSIM and FLIP of `image` against `reference`, full-frame and inside `mask` (row-major, one entry
-/// per pixel).
+/// per pixel). Feature `eval`.
+#[cfg(feature = "eval")]
 pub fn compare(image: &RgbImage, reference: &RgbImage, mask: Option<&[bool]>) -> Result<ImageError> {
     check_sizes(image, reference, mask)?;
     let squared = squared_errors(image, reference);

@@ -95,34 +95,55 @@
 //! corrupt data becomes an error (a panic in its thread pool would abort the process; the price is
 //! sequential decompression).
 
+//!
+//! # Features
+//!
+//! The files need the `exr` feature (the `exr` and `png` crates); without it only the tone map and
+//! the sanitising rules ([`tonemap`](mod@tonemap), [`sanitize`]) are here.
+#![cfg_attr(not(feature = "exr"), allow(rustdoc::broken_intra_doc_links))]
+
+#[cfg(feature = "exr")]
 mod channels;
+#[cfg(feature = "exr")]
 mod exr_read;
+#[cfg(feature = "exr")]
 mod exr_write;
+#[cfg(feature = "exr")]
 mod preview;
 pub mod sanitize;
 pub mod tonemap;
 
+#[cfg(feature = "exr")]
 use std::path::Path;
 
+#[cfg(feature = "exr")]
 pub use channels::natural_cmp;
+#[cfg(feature = "exr")]
 pub use exr_read::{ExrLayout, InputReport, read_layered_exr, read_rgb_exr};
+#[cfg(feature = "exr")]
 pub use exr_write::{ExrCompression, ExrPrecision, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr};
+#[cfg(feature = "exr")]
 pub use preview::{write_png_display, write_png_preview};
+#[cfg(feature = "eval")]
 pub(crate) use preview::write_srgb8;
 pub use sanitize::{BACKGROUND_DEPTH, COLOR_INF_REPLACEMENT, SanitizeCounts, is_background_depth};
 pub use tonemap::tonemap;
 
 /// The codec crates used here, re-exported so that callers and tests can build or inspect files
 /// with exactly the versions this module reads and writes.
+#[cfg(feature = "exr")]
 pub mod codecs {
     pub use ::exr;
     pub use ::png;
 }
 
+#[cfg(feature = "exr")]
 use crate::error::{Error, Result};
+#[cfg(feature = "exr")]
 use crate::layers::RgbImage;
 
 /// Errors on a zero-sized image or one whose `data` does not hold `width · height` pixels.
+#[cfg(feature = "exr")]
 fn check_rgb_image(image: &RgbImage, what: &str) -> Result<()> {
     if image.width == 0 || image.height == 0 {
         return Err(Error::InvalidArgument(format!(
@@ -143,6 +164,7 @@ fn check_rgb_image(image: &RgbImage, what: &str) -> Result<()> {
 }
 
 /// A file-system error with the path and, for the usual causes, what to do.
+#[cfg(feature = "exr")]
 fn fs_error(action: &str, path: &Path, e: &std::io::Error) -> Error {
     use std::io::ErrorKind;
     let path = path.display();
@@ -157,6 +179,7 @@ fn fs_error(action: &str, path: &Path, e: &std::io::Error) -> Error {
 }
 
 /// Writes a whole file, with the path in any error.
+#[cfg(feature = "exr")]
 fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
     std::fs::write(path, bytes).map_err(|e| fs_error("create", path, &e))
 }

@@ -12,18 +12,18 @@ use crate::backend::{Backend, CommandTime, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::RgbImage;
 use crate::methods::buffers::read_rgb;
+use crate::progress::Progress;
 use crate::scene::Camera;
 use crate::scene::sampling::{concentric_disc, pixel_rng, stratified};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::raster::shade::ACCUMULATE;
-use indicatif::{ProgressBar, ProgressStyle};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AccumulateOptions {
     /// Pinhole renders `N`, `>= 1`.
     pub samples: u32,
     pub seed: u64,
-    /// Show a progress bar on the terminal.
+    /// Show a progress bar on the terminal (feature `progress`; ignored without it).
     pub progress: bool,
     /// Renders recorded per submission (bounds how much work a progress step waits for).
     pub batch: u32,
@@ -72,13 +72,8 @@ pub fn accumulate(
     let pixels = frame.width as u64 * frame.height as u64;
     let views = views(options.samples, lens.aperture_radius, options.seed);
     let mesh = DeviceMesh::upload(backend, scene)?;
-    let bar = options.progress.then(|| {
-        let bar = ProgressBar::new(views.len() as u64);
-        if let Ok(style) = ProgressStyle::with_template("accumulation buffer [{elapsed_precise}] {wide_bar} {pos}/{len} renders (eta {eta})") {
-            bar.set_style(style);
-        }
-        bar
-    });
+    let template = "accumulation buffer [{elapsed_precise}] {wide_bar} {pos}/{len} renders (eta {eta})";
+    let bar = Progress::new(options.progress, views.len() as u64, template, "");
     let mut sizes = Pass::sizes(&mesh, pixels, 1).to_vec();
     sizes.push((3 * pixels, "accum/sum"));
     let result = with_buffers(backend, &sizes, |backend, b| {

@@ -1,5 +1,5 @@
 //! Triangle scenes: the host-side form of what the rasteriser draws, as the loader of glTF files
-//! ([`load_gltf`](super::gltf_load::load_gltf)) builds it.
+//! (`load_gltf`, feature `gltf`) builds it.
 //!
 //! The buffers are the kernel crate's types ([`dof_shaders::raster::mesh`]), in world space, ready
 //! to upload. Cameras and the light come along from the file; [`LoadReport`] counts what the
@@ -109,6 +109,7 @@ impl std::fmt::Display for LoadReport {
 
 /// Whether the triangle `p0 p1 p2` has (numerically) zero area: the cross product of two edges no
 /// longer than `1e-12` times the longest squared edge, computed in f64.
+#[cfg_attr(not(feature = "gltf"), allow(dead_code))]
 pub(crate) fn zero_area(p0: Vec3, p1: Vec3, p2: Vec3) -> bool {
     let (a, b, c) = (p0.as_dvec3(), p1.as_dvec3(), p2.as_dvec3());
     let (e1, e2, e3) = (b - a, c - a, c - b);

@@ -10,8 +10,11 @@
 //! - [`reference`](mod@reference): thin-lens distributed ray tracing (the ground truth) and the pinhole image;
 //! - [`bvh`]: the bounding-volume hierarchy that keeps ray casts cheap;
 //! - [`mesh`]: triangle scenes ([`MeshScene`]) as the rasteriser draws them;
-//! - [`gltf_load`]: glTF 2.0 files into a [`MeshScene`];
-//! - [`gltf_export`]: analytic scenes out as binary glTF, for rasterising what ray casting renders;
+//! - `gltf_load` (feature `gltf`): glTF 2.0 files into a [`MeshScene`];
+//! - `gltf_export` (feature `gltf`): analytic scenes out as binary glTF, for rasterising what ray
+//!   casting renders;
+//! - `mitsuba_export` (feature `eval`): analytic scenes as Mitsuba 3 scenes, for an independent
+//!   check of the references;
 //! - [`sampling`]: stratified lens/pixel samples and the concentric disc mapping.
 //!
 //! The lens models themselves live in the kernel crate ([`dof_shaders::lens`]) so the kernels
@@ -21,11 +24,14 @@ pub mod analytic;
 pub mod builtin;
 pub mod bvh;
 pub mod camera;
+#[cfg(feature = "gltf")]
 pub mod gltf_export;
+#[cfg(feature = "gltf")]
 pub mod gltf_load;
 pub mod guard_band;
 pub mod lens;
 pub mod mesh;
+#[cfg(feature = "eval")]
 pub mod mitsuba_export;
 pub mod raycast;
 pub mod reference;
@@ -34,12 +40,15 @@ pub mod sampling;
 pub use analytic::{Albedo, Hit, Lighting, Material, Primitive, Scene, Shape};
 pub use builtin::{BuiltinScene, builtin, builtin_names};
 pub use camera::{Camera, CameraFrame, Ray};
+#[cfg(feature = "gltf")]
 pub use gltf_export::{ExportOptions, export_builtin_glb, export_glb};
+#[cfg(feature = "gltf")]
 pub use gltf_load::{load_gltf, load_gltf_slice};
 pub use dof_shaders::lens::{ArtistLens, ThinLens};
 /// The vector type of the scene API (so users need not depend on `glam` themselves).
 pub use glam::Vec3;
 pub use mesh::{LoadReport, MeshCamera, MeshScene};
+#[cfg(feature = "eval")]
 pub use mitsuba_export::{MitsubaExport, MitsubaOptions, MitsubaScene, export_metadata, export_mitsuba};
 pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
 pub use guard_band::{GuardBand, MAX_GUARD_BAND};

@@ -29,13 +29,13 @@
 //! there, and read [`Reference::valid_up_to_psnr_db`] for what the result can still measure.
 
 use dof_shaders::lens::ThinLens;
-use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 
 use super::analytic::Scene;
 use super::camera::{Camera, CameraFrame};
 use super::sampling::{concentric_disc, pixel_rng, stratified};
 use crate::error::{Error, Result};
+use crate::progress::Progress;
 use crate::metrics::{psnr_of_mse, squared_error};
 use crate::layers::RgbImage;
 
@@ -47,7 +47,7 @@ pub struct ReferenceOptions {
     /// Jitter samples inside their strata (default on). Off, `spp = 1` traces the centre ray.
     pub jitter: bool,
     pub seed: u64,
-    /// Show an `indicatif` progress bar on stderr.
+    /// Show an `indicatif` progress bar on stderr (feature `progress`; ignored without it).
     pub progress: bool,
     /// Pixels (row-major, `true` = inside) over which a second noise estimate is made, e.g. the
     /// partial-occlusion region where methods are also compared.
@@ -301,16 +301,9 @@ fn noise_estimate(a: &Accum, b: &Accum, region: Option<&[bool]>) -> f64 {
     psnr_of_mse(mse_ab / factor)
 }
 
-fn progress_bar(show: bool, frame: &CameraFrame, passes: u64, message: &str) -> Option<ProgressBar> {
-    if !show {
-        return None;
-    }
-    let bar = ProgressBar::new(frame.height as u64 * passes);
-    if let Ok(style) = ProgressStyle::with_template("{msg} [{elapsed_precise}] {wide_bar} {pos}/{len} rows (eta {eta})") {
-        bar.set_style(style);
-    }
-    bar.set_message(message.to_string());
-    Some(bar)
+fn progress_bar(show: bool, frame: &CameraFrame, passes: u64, message: &str) -> Option<Progress> {
+    let template = "{msg} [{elapsed_precise}] {wide_bar} {pos}/{len} rows (eta {eta})";
+    Progress::new(show, frame.height as u64 * passes, template, message)
 }
 
 /// Adds `n` stratified samples per pixel to `acc`, rows in parallel.
@@ -324,7 +317,7 @@ fn render_batch(
     jitter: bool,
     seed: u64,
     batch: u64,
-    bar: Option<&ProgressBar>,
+    bar: Option<&Progress>,
     acc: &mut Accum,
 ) {
     let width = frame.width as usize;

@@ -2,6 +2,9 @@
 
 mod cli;
 
+#[global_allocator]
+static HEAP: cli::heap::CountingHeap = cli::heap::CountingHeap;
+
 use clap::{Parser, Subcommand};
 
 #[derive(Parser)]
@@ -28,6 +31,9 @@ enum Command {
     /// Benchmarks of the kernels on each backend.
     #[command(subcommand)]
     Bench(cli::bench::BenchCommand),
+    /// Many frames through the frame API with the method, size, aperture and lens changing at
+    /// random: memory must stay flat and the validation layer silent.
+    Soak(cli::soak::SoakArgs),
 }
 
 fn main() -> std::process::ExitCode {
@@ -48,6 +54,7 @@ fn main() -> std::process::ExitCode {
         Command::Compare(args) => cli::compare::run(&args),
         Command::Eval(args) => cli::eval::run(&args),
         Command::Bench(cmd) => cli::bench::run(&cmd),
+        Command::Soak(args) => cli::soak::run(&args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

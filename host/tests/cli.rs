@@ -245,3 +245,25 @@ fn a_wrong_device_choice_names_the_variable() {
     assert!(text.contains("DOF_VULKAN_DEVICE") && text.contains("`99`"), "{text}");
     assert!(!text.contains("install a Vulkan driver"), "{text}");
 }
+
+/// `dof soak` records frames with changing method, size, aperture and lens through the frame API,
+/// and reports flat memory as JSON; `dof bench frame --json` reports no allocation, readback or
+/// extra submission per frame.
+#[test]
+fn soak_and_frame_bench_report_flat_memory_and_no_per_frame_work() {
+    let o = dof(&["soak", "--frames", "40", "--backend", "cpu", "--max-size", "48", "--json"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).expect("one JSON object");
+    assert_eq!(j["frames"], 40);
+    assert_eq!(j["validation_messages"], 0);
+    assert_eq!(j["device_bytes_growth"], 0);
+    assert!(j["host_bytes_growth"].as_i64().unwrap() <= 1 << 20, "{j}");
+    assert_eq!(j["ok"], true);
+    let o = dof(&["bench", "frame", "--backend", "cpu", "--scene", "simple", "--width", "64", "--height", "36", "--frames", "2", "--json"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).expect("one JSON object");
+    assert_eq!((j["allocations_per_frame"].as_f64(), j["readbacks_per_frame"].as_f64(), j["submits_per_frame"].as_f64()), (Some(0.0), Some(0.0), Some(1.0)), "{j}");
+    assert!(j["device_bytes"].as_u64().unwrap() > 0 && j["gpu_ms"].as_f64().unwrap() > 0.0, "{j}");
+    assert_fails_with(&["soak", "--frames", "0"], "--frames");
+    assert_fails_with(&["bench", "frame", "--frames", "0"], "--frames");
+}

@@ -2,9 +2,11 @@ pub mod bench;
 pub mod bench_frame;
 pub mod compare;
 pub mod eval;
+pub mod heap;
 pub mod info;
 pub mod render;
 pub mod scenes;
+pub mod soak;
 pub mod stress;
 
 use dof::backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};

@@ -20,6 +20,10 @@ pub enum Error {
     Allocation(String),
     #[error("kernel `{kernel}` faulted on the CPU backend (an out-of-bounds access): {message}")]
     KernelFault { kernel: &'static str, message: String },
+    /// A buffer the backend's memory budget ([`crate::backend::Backend::set_memory_budget`]) has
+    /// no room for: nothing was allocated.
+    #[error("out of device memory: `{what}` needs {requested} bytes with {held} held, beyond the budget of {budget} bytes")]
+    OutOfMemory { what: String, requested: u64, held: u64, budget: u64 },
     #[error("{what} is too large for the device: {size} exceeds the limit {limit}")]
     TooLarge { what: String, size: u64, limit: u64 },
     #[error("invalid argument: {0}")]

@@ -21,6 +21,7 @@ pub struct CpuBackend {
     buffers: Vec<Option<Box<[AtomicU32]>>>,
     times: Vec<CommandTime>,
     counters: BackendCounters,
+    budget: Option<u64>,
 }
 
 impl Default for CpuBackend {
@@ -47,6 +48,7 @@ impl CpuBackend {
             buffers: Vec::new(),
             times: Vec::new(),
             counters: BackendCounters::default(),
+            budget: None,
         }
     }
 
@@ -111,11 +113,16 @@ impl Backend for CpuBackend {
         &self.limits
     }
 
-    fn create_buffer(&mut self, words: u64, _label: &str) -> Result<BufferId> {
+    fn set_memory_budget(&mut self, budget: Option<u64>) {
+        self.budget = budget;
+    }
+
+    fn create_buffer(&mut self, words: u64, label: &str) -> Result<BufferId> {
         let words = words.max(1);
         if words * 4 > self.limits.max_buffer_bytes {
             return Err(Error::TooLarge { what: "buffer".into(), size: words * 4, limit: self.limits.max_buffer_bytes });
         }
+        self.counters.check_budget(self.budget, words * 4, label)?;
         let buffer: Box<[AtomicU32]> = (0..words).map(|_| AtomicU32::new(0)).collect();
         let slot = self.buffers.iter().position(Option::is_none).unwrap_or(self.buffers.len());
         if slot == self.buffers.len() {

@@ -80,6 +80,16 @@ pub struct BackendCounters {
 }
 
 impl BackendCounters {
+    /// Whether a buffer of `bytes` fits `budget` next to what is held now.
+    pub(crate) fn check_budget(&self, budget: Option<u64>, bytes: u64, label: &str) -> Result<()> {
+        match budget {
+            Some(budget) if self.device_bytes.saturating_add(bytes) > budget => {
+                Err(Error::OutOfMemory { what: label.to_string(), requested: bytes, held: self.device_bytes, budget })
+            }
+            _ => Ok(()),
+        }
+    }
+
     /// The counts since `earlier` (an older snapshot of the same backend); `device_bytes` and
     /// `peak_device_bytes` stay as they are now.
     pub fn since(&self, earlier: &BackendCounters) -> BackendCounters {
@@ -280,6 +290,11 @@ pub trait Backend {
     fn submit(&mut self) -> Result<Vec<CommandTime>>;
     /// Allocations, submissions, transfers and memory so far (see [`BackendCounters`]).
     fn counters(&self) -> BackendCounters;
+    /// Caps the bytes of buffers the backend may hold at once (`None`: only the device's own
+    /// limits). A `create_buffer` beyond it fails with [`Error::OutOfMemory`] and allocates
+    /// nothing: how device memory running out is tested, and how a renderer keeps the library
+    /// within its share.
+    fn set_memory_budget(&mut self, budget: Option<u64>);
     /// Builds what running `kernels` and `draws` needs (pipelines on Vulkan) now, so that the
     /// first frame that records them does not pay for it. Nothing on the CPU backend.
     fn prepare(&mut self, kernels: &[&'static KernelDesc], draws: &[&'static DrawDesc]) -> Result<()> {

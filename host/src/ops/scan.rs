@@ -17,11 +17,18 @@ impl ScanScratch {
         if capacity > u32::MAX as u64 {
             return Err(Error::TooLarge { what: "scan length".into(), size: capacity, limit: u32::MAX as u64 });
         }
-        let mut levels = Vec::new();
+        let mut levels: Vec<BufferId> = Vec::new();
         let mut len = capacity.max(1);
         loop {
             let blocks = len.div_ceil(BLOCK as u64);
-            levels.push(backend.create_buffer(blocks, "scan/sums")?);
+            match backend.create_buffer(blocks, "scan/sums") {
+                Ok(id) => levels.push(id),
+                // A failure part way (device memory running out) frees what was made.
+                Err(e) => {
+                    levels.into_iter().for_each(|id| backend.destroy_buffer(id));
+                    return Err(e);
+                }
+            }
             if blocks == 1 {
                 break;
             }

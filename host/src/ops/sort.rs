@@ -45,17 +45,23 @@ impl SegmentedSort {
             });
         }
         let lists_words = (NUM_CLASSES as u64 + 1) * max_segments.max(1) as u64;
-        let plan = backend.create_buffer(plan::WORDS as u64, "sort/plan")?;
-        let lists = backend.create_buffer(lists_words, "sort/lists")?;
-        let scratch = if max_list_len > CLASS_CAPS[top_class as usize] {
-            Some((
-                backend.create_buffer(max_elements as u64, "sort/scratch-keys")?,
-                backend.create_buffer(max_elements as u64, "sort/scratch-positions")?,
-            ))
-        } else {
-            None
-        };
-        Ok(SegmentedSort { max_segments, max_elements, max_list_len, top_class, plan, lists, scratch })
+        let mut sizes = vec![(plan::WORDS as u64, "sort/plan"), (lists_words, "sort/lists")];
+        if max_list_len > CLASS_CAPS[top_class as usize] {
+            sizes.extend([(max_elements as u64, "sort/scratch-keys"), (max_elements as u64, "sort/scratch-positions")]);
+        }
+        // A failure part way (device memory running out) frees what was made.
+        let mut made = Vec::new();
+        for &(words, label) in &sizes {
+            match backend.create_buffer(words, label) {
+                Ok(id) => made.push(id),
+                Err(e) => {
+                    made.into_iter().for_each(|id| backend.destroy_buffer(id));
+                    return Err(e);
+                }
+            }
+        }
+        let scratch = (made.len() == 4).then(|| (made[2], made[3]));
+        Ok(SegmentedSort { max_segments, max_elements, max_list_len, top_class, plan: made[0], lists: made[1], scratch })
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {

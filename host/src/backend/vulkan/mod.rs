@@ -112,6 +112,8 @@ pub struct RequiredFeatures {
 }
 
 pub struct VulkanBackend {
+    /// See [`Backend::set_memory_budget`].
+    budget: Option<u64>,
     // Fields drop in declaration order after `Drop::drop` has destroyed what they made: the device
     // before the instance (and the message log, inside the instance, last). A caller's device and
     // instance are not destroyed.
@@ -253,6 +255,7 @@ impl VulkanBackend {
             upload: Staging::new(MemoryLocation::CpuToGpu),
             readback: Staging::new(MemoryLocation::GpuToCpu),
             counters: BackendCounters::default(),
+            budget: None,
             external_used: HashSet::new(),
             refused: Vec::new(),
         };
@@ -611,6 +614,10 @@ impl Backend for VulkanBackend {
         &self.info.limits
     }
 
+    fn set_memory_budget(&mut self, budget: Option<u64>) {
+        self.budget = budget;
+    }
+
     fn create_buffer(&mut self, words: u64, label: &str) -> Result<BufferId> {
         self.refuse_external("create_buffer")?;
         let limit = self.info.limits.max_buffer_bytes;
@@ -619,6 +626,7 @@ impl Backend for VulkanBackend {
             size: words.saturating_mul(4),
             limit,
         })?;
+        self.counters.check_budget(self.budget, bytes, label)?;
         let id = self.next_id;
         let next = id.checked_add(1).ok_or_else(|| Error::InvalidArgument("too many buffers created".into()))?;
         let allocator = self.allocator()?;

@@ -112,7 +112,7 @@ fn simple() -> Result<BuiltinScene> {
     ];
     Ok(BuiltinScene {
         name: "simple",
-        description: "seed 000 Fig. 11: far white plane, red sphere in focus, small blue quad in the near field",
+        description: "Franke et al. 2018, Fig. 11: far white plane, red sphere in focus, small blue quad in the near field",
         scene: Scene::new(prims, Lighting::default())?,
         camera: camera(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0)),
         // Focused on the sphere's front; near quad CoC ~21 px, far plane ~6 px at 640x360.

@@ -4,15 +4,15 @@
 //! pipeline on Vulkan, its compute fallback on the CPU) and the sum. Nothing is planned or read
 //! back on the host.
 
-use super::gather::MAX_RADIUS;
-use super::io::{Frame, ImageIo, check_frame, output_buffer, record_front, record_input, record_output};
+use super::gather::{MAX_RADIUS, record_gather};
+use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, push_words};
 use crate::error::{Error, Result};
 use crate::methods::bokeh::BokehOptions;
 use crate::methods::buffers::groups_for;
 use crate::ops::scan::ScanScratch;
 use dof_shaders::bokeh::{ARGS_WORDS, BOKEH_ARGS, BOKEH_COMBINE, BOKEH_DETECT, BOKEH_DRAW, BOKEH_EMIT, BokehParams, COUNTER, SPRITE_WORDS};
-use dof_shaders::gather::{GATHER, GATHER_PLAN, GatherParams, TILE};
+use dof_shaders::gather::{GATHER, GATHER_PLAN};
 
 /// What a bokeh context is created for.
 #[derive(Clone, Debug)]
@@ -51,8 +51,7 @@ pub struct BokehContext {
     b: Buffers,
     io: Option<ImageIo>,
     scan: ScanScratch,
-    owned: Vec<BufferId>,
-    bytes: u64,
+    owned: Owned,
 }
 
 /// Checks the options: finite thresholds, a sprite radius cap in (0, 4096] px, a capacity of 1 to
@@ -97,35 +96,15 @@ impl BokehContext {
         if let Some((words, what)) = widest.filter(|s| s.0 > max_words) {
             return Err(Error::TooLarge { what: format!("{what} (words)"), size: words, limit: max_words });
         }
-        let mut owned = Vec::new();
-        let mut bytes = 0;
-        let mut make = |backend: &mut dyn Backend, words: u64, label: &str| -> Result<BufferId> {
-            let id = backend.create_buffer(words.max(1), label)?;
-            owned.push(id);
-            bytes += 4 * words.max(1);
-            Ok(id)
-        };
+        let mut owned = Owned::default();
         let made = (|| {
-            let ids = sizes.iter().map(|&(words, label)| make(backend, words, label)).collect::<Result<Vec<_>>>()?;
-            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut make)?) } else { None };
+            let ids = sizes.iter().map(|&(words, label)| owned.make(backend, words, label)).collect::<Result<Vec<_>>>()?;
+            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             backend.write_buffer(ids[0], 0, &mask_words)?;
-            Ok((ids, io))
+            let scan = ScanScratch::new(backend, pixels)?;
+            Ok((ids, io, scan))
         })();
-        let (ids, io) = match made {
-            Ok(m) => m,
-            Err(e) => {
-                owned.into_iter().for_each(|id| backend.destroy_buffer(id));
-                return Err(e);
-            }
-        };
-        let scan = match ScanScratch::new(backend, pixels) {
-            Ok(s) => s,
-            Err(e) => {
-                owned.into_iter().for_each(|id| backend.destroy_buffer(id));
-                return Err(e);
-            }
-        };
-        bytes += scan.bytes();
+        let ((ids, io, scan), owned) = owned.or_free(backend, made)?;
         let b = Buffers {
             mask: ids[0],
             slots: ids[1],
@@ -138,7 +117,7 @@ impl BokehContext {
             sprite_image: ids[8],
             radius: ids[9],
         };
-        let ctx = BokehContext { desc: desc.clone(), b, io, scan, owned, bytes };
+        let ctx = BokehContext { desc: desc.clone(), b, io, scan, owned };
         // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own
         // work (Vulkan still makes its draw target at the first draw of a size).
         let mut kernels: Vec<&'static dof_shaders::KernelDesc> = dof_shaders::bokeh::KERNELS.to_vec();
@@ -154,11 +133,11 @@ impl BokehContext {
 
     pub fn destroy(self, backend: &mut dyn Backend) {
         self.scan.destroy(backend);
-        self.owned.into_iter().for_each(|id| backend.destroy_buffer(id));
+        self.owned.free(backend);
     }
 
     pub fn device_bytes(&self) -> u64 {
-        self.bytes
+        self.owned.bytes() + self.scan.bytes()
     }
 
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
@@ -183,16 +162,12 @@ impl BokehContext {
             ..Default::default()
         };
         let push = push_words(&params);
-        let gather = push_words(&GatherParams { width, height, max_radius: MAX_RADIUS, _pad: 0, lens: f.lens });
         let groups = groups_for(&BOKEH_DETECT, pixels);
         backend.fill(b.counters, 0, ARGS_WORDS as u64 + 1, 0, "bokeh/detect")?;
-        backend.fill(b.radius, 0, 1, 0, "gather/plan")?;
-        backend.dispatch(&GATHER_PLAN, groups_for(&GATHER_PLAN, pixels), &[b.depth, b.radius], &gather, "gather/plan")?;
         backend.dispatch(&BOKEH_DETECT, groups, &[b.color, b.depth, b.slots, b.counters], &push, "bokeh/detect")?;
         self.scan.record(backend, b.slots, 0, pixels)?;
         backend.dispatch(&BOKEH_EMIT, groups, &[b.color, b.depth, b.slots, b.sprites, b.rest, b.mask], &push, "bokeh/detect")?;
-        let tiles = [width.div_ceil(TILE), height.div_ceil(TILE), 1];
-        backend.dispatch(&GATHER, tiles, &[b.rest, b.depth, b.blur, b.radius], &gather, "gather")?;
+        record_gather(backend, f, MAX_RADIUS, [b.rest, b.depth, b.blur, b.radius])?;
         backend.dispatch(&BOKEH_ARGS, [1, 1, 1], &[b.counters], &push, "bokeh/draw")?;
         backend.draw_indirect(&BOKEH_DRAW, b.counters, &[b.sprites, b.mask], b.sprite_image, [width, height], &push, "bokeh/draw")?;
         backend.dispatch(&BOKEH_COMBINE, groups, &[b.blur, b.sprite_image, out], &push, "bokeh/draw")?;

@@ -1,7 +1,7 @@
 //! The gathering baseline (Riguer et al. 2003) as a frame context: the window radius reduced on the
 //! device from the frame's depths, so nothing is planned on the host.
 
-use super::io::{Frame, ImageIo, check_frame, output_buffer, record_front, record_input, record_output};
+use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, push_words};
 use crate::error::{Error, Result};
 use crate::methods::buffers::groups_for;
@@ -30,6 +30,18 @@ impl GatherContextDesc {
     }
 }
 
+/// Records the window radius's reduction over `depth` into `plan` (zeroed first), then the gather
+/// of `[color, depth, output, plan]` with radii capped at `cap`.
+pub(crate) fn record_gather(backend: &mut dyn Backend, f: &Frame, cap: u32, bufs: [BufferId; 4]) -> Result<()> {
+    let [_, depth, _, plan] = bufs;
+    let params = push_words(&GatherParams { width: f.width, height: f.height, max_radius: cap, _pad: 0, lens: f.lens });
+    backend.fill(plan, 0, 1, 0, "gather/plan")?;
+    let pixel_groups = groups_for(&GATHER_PLAN, f.width as u64 * f.height as u64);
+    backend.dispatch(&GATHER_PLAN, pixel_groups, &[depth, plan], &params, "gather/plan")?;
+    let groups = [f.width.div_ceil(TILE), f.height.div_ceil(TILE), 1];
+    backend.dispatch(&GATHER, groups, &bufs, &params, "gather")
+}
+
 /// A gathering context (see the [module docs](crate::frame)).
 pub struct GatherContext {
     desc: GatherContextDesc,
@@ -38,8 +50,7 @@ pub struct GatherContext {
     depth: BufferId,
     plan: BufferId,
     io: Option<ImageIo>,
-    owned: Vec<BufferId>,
-    bytes: u64,
+    owned: Owned,
 }
 
 impl GatherContext {
@@ -57,28 +68,16 @@ impl GatherContext {
         if 4 * pixels * desc.max_layers as u64 > max_words {
             return Err(Error::TooLarge { what: "input slots (words)".into(), size: 4 * pixels * desc.max_layers as u64, limit: max_words });
         }
-        let mut owned = Vec::new();
-        let mut bytes = 0;
-        let mut make = |backend: &mut dyn Backend, words: u64, label: &str| -> Result<BufferId> {
-            let id = backend.create_buffer(words.max(1), label)?;
-            owned.push(id);
-            bytes += 4 * words.max(1);
-            Ok(id)
-        };
+        let mut owned = Owned::default();
         let made = (|| {
-            let color = make(backend, 3 * pixels, "gather/color")?;
-            let depth = make(backend, pixels, "gather/depth")?;
-            let plan = make(backend, 1, "gather/plan")?;
-            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut make)?) } else { None };
+            let color = owned.make(backend, 3 * pixels, "gather/color")?;
+            let depth = owned.make(backend, pixels, "gather/depth")?;
+            let plan = owned.make(backend, 1, "gather/plan")?;
+            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             Ok((color, depth, plan, io))
         })();
-        let ctx = match made {
-            Ok((color, depth, plan, io)) => GatherContext { desc: desc.clone(), cap, color, depth, plan, io, owned, bytes },
-            Err(e) => {
-                owned.into_iter().for_each(|id| backend.destroy_buffer(id));
-                return Err(e);
-            }
-        };
+        let ((color, depth, plan, io), owned) = owned.or_free(backend, made)?;
+        let ctx = GatherContext { desc: desc.clone(), cap, color, depth, plan, io, owned };
         // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own work.
         let mut kernels = vec![&GATHER, &GATHER_PLAN];
         kernels.extend(dof_shaders::frame_io::KERNELS);
@@ -90,11 +89,11 @@ impl GatherContext {
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {
-        self.owned.into_iter().for_each(|id| backend.destroy_buffer(id));
+        self.owned.free(backend);
     }
 
     pub fn device_bytes(&self) -> u64 {
-        self.bytes
+        self.owned.bytes()
     }
 
     /// Records one frame: the front layer of the input, the radius reduction, the gather.
@@ -104,12 +103,7 @@ impl GatherContext {
         let slots = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         record_front(backend, f, slots, self.color, self.depth)?;
-        let params = push_words(&GatherParams { width: f.width, height: f.height, max_radius: self.cap, _pad: 0, lens: f.lens });
-        backend.fill(self.plan, 0, 1, 0, "gather/plan")?;
-        let pixel_groups = groups_for(&GATHER_PLAN, f.width as u64 * f.height as u64);
-        backend.dispatch(&GATHER_PLAN, pixel_groups, &[self.depth, self.plan], &params, "gather/plan")?;
-        let groups = [f.width.div_ceil(TILE), f.height.div_ceil(TILE), 1];
-        backend.dispatch(&GATHER, groups, &[self.color, self.depth, output, self.plan], &params, "gather")?;
+        record_gather(backend, f, self.cap, [self.color, self.depth, output, self.plan])?;
         record_output(backend, f, self.io.as_ref())
     }
 

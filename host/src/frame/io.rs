@@ -131,6 +131,43 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, max: (u32, u32, u32)
     Ok(())
 }
 
+/// The buffers a context owns: made one by one, counted, and freed together (also when making a
+/// later one fails part way).
+#[derive(Default)]
+pub(crate) struct Owned {
+    ids: Vec<BufferId>,
+    bytes: u64,
+}
+
+impl Owned {
+    pub fn make(&mut self, backend: &mut dyn Backend, words: u64, label: &str) -> Result<BufferId> {
+        let id = backend.create_buffer(words.max(1), label)?;
+        self.ids.push(id);
+        self.bytes += 4 * words.max(1);
+        Ok(id)
+    }
+
+    /// Bytes of every buffer made.
+    pub fn bytes(&self) -> u64 {
+        self.bytes
+    }
+
+    pub fn free(self, backend: &mut dyn Backend) {
+        self.ids.into_iter().for_each(|id| backend.destroy_buffer(id));
+    }
+
+    /// `made` when it is `Ok`; otherwise frees everything and passes the error on.
+    pub fn or_free<T>(self, backend: &mut dyn Backend, made: Result<T>) -> Result<(T, Owned)> {
+        match made {
+            Ok(t) => Ok((t, self)),
+            Err(e) => {
+                self.free(backend);
+                Err(e)
+            }
+        }
+    }
+}
+
 /// Buffers image inputs and outputs go through (10 words a pixel): the colour image (later the
 /// RGBA result), the depth image, and the one-layer input made from them (later the RGB result).
 #[derive(Clone, Copy, Debug)]
@@ -142,13 +179,13 @@ pub(crate) struct ImageIo {
 }
 
 impl ImageIo {
-    /// Creates the buffers with `make` (which owns them) for up to `pixels` pixels.
-    pub fn new(backend: &mut dyn Backend, pixels: u64, make: &mut dyn FnMut(&mut dyn Backend, u64, &str) -> Result<BufferId>) -> Result<Self> {
+    /// Creates the buffers (owned by `owned`) for up to `pixels` pixels.
+    pub fn new(backend: &mut dyn Backend, pixels: u64, owned: &mut Owned) -> Result<Self> {
         Ok(ImageIo {
-            color: make(backend, 4 * pixels, "frame/io-color")?,
-            depth: make(backend, pixels, "frame/io-depth")?,
-            fragments: make(backend, 4 * pixels, "frame/io-fragments")?,
-            counts: make(backend, pixels, "frame/io-counts")?,
+            color: owned.make(backend, 4 * pixels, "frame/io-color")?,
+            depth: owned.make(backend, pixels, "frame/io-depth")?,
+            fragments: owned.make(backend, 4 * pixels, "frame/io-fragments")?,
+            counts: owned.make(backend, pixels, "frame/io-counts")?,
         })
     }
 }

@@ -1,7 +1,7 @@
 //! Tiled splatting as a frame context: every buffer and bound fixed at creation, then per frame a
 //! recording of the stages in `dof_shaders::splat` with no allocation, readback or host planning.
 
-use super::io::{Frame, ImageIo, check_frame, output_buffer, record_input, record_output};
+use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_input, record_output};
 use crate::backend::{Backend, BufferId, push_words};
 use dof_shaders::KernelDesc;
 use crate::error::{Error, Result};
@@ -95,7 +95,7 @@ pub struct SplatContext {
     merge_steps: u32,
     list_entries: u64,
     max_list: u32,
-    owned: Vec<BufferId>,
+    owned: Owned,
     bytes: u64,
     b: Buffers,
     scan: ScanScratch,
@@ -165,14 +165,7 @@ impl SplatContext {
         let max_list = desc.max_list.unwrap_or(DEFAULT_MAX_LIST).clamp(1, (u32::MAX as u64 / tiles).min(list_entries) as u32);
         let merge_steps = desc.options.merge.steps();
 
-        let mut owned = Vec::new();
-        let mut bytes = 0u64;
-        let mut made = |backend: &mut dyn Backend, words: u64, label: &str| -> Result<BufferId> {
-            let b = backend.create_buffer(words.max(1), label)?;
-            owned.push(b);
-            bytes += 4 * words.max(1);
-            Ok(b)
-        };
+        let mut owned = Owned::default();
         let built = (|| {
             let slot_words = (0..=merge_steps)
                 .map(|s| {
@@ -188,9 +181,9 @@ impl SplatContext {
                 let cells_buf = if s == 2 && !desc.distinct_stage_buffers {
                     cell_bufs[0].0
                 } else {
-                    made(backend, slot_words, &format!("splat/cells-{s}"))?
+                    owned.make(backend, slot_words, &format!("splat/cells-{s}"))?
                 };
-                let counts = made(backend, cx as u64 * cy as u64, &format!("splat/cell-counts-{s}"))?;
+                let counts = owned.make(backend, cx as u64 * cy as u64, &format!("splat/cell-counts-{s}"))?;
                 cell_bufs.push((cells_buf, counts));
             }
             let (_, _, fx, fy) = cells(w, h, layers, merge_steps);
@@ -198,54 +191,43 @@ impl SplatContext {
             // after one step, step 1's after two): nothing reads it again.
             let dense = match merge_steps {
                 1 | 2 if !desc.distinct_stage_buffers => cell_bufs[(merge_steps - 1) as usize].0,
-                _ => made(backend, 4 * slots, "splat/dense")?,
+                _ => owned.make(backend, 4 * slots, "splat/dense")?,
             };
-            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut made)?) } else { None };
+            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             let mask_words = desc.options.aperture.mask_words();
             let b = Buffers {
-                stats: made(backend, stats::WORDS as u64, "splat/stats")?,
-                sharp: made(backend, 4 * pixels, "splat/sharp")?,
+                stats: owned.make(backend, stats::WORDS as u64, "splat/stats")?,
+                sharp: owned.make(backend, 4 * pixels, "splat/sharp")?,
                 cells: cell_bufs,
-                cell_offsets: made(backend, fx as u64 * fy as u64, "splat/cell-offsets")?,
-                tile_count: made(backend, tiles, "splat/tile-count")?,
-                tile_base: made(backend, tiles, "splat/tile-base")?,
-                tile_radius: made(backend, tiles, "splat/tile-radius")?,
-                copy: made(backend, tiles, "splat/copy")?,
-                segments: made(backend, 2 * tiles, "splat/segments")?,
+                cell_offsets: owned.make(backend, fx as u64 * fy as u64, "splat/cell-offsets")?,
+                tile_count: owned.make(backend, tiles, "splat/tile-count")?,
+                tile_base: owned.make(backend, tiles, "splat/tile-base")?,
+                tile_radius: owned.make(backend, tiles, "splat/tile-radius")?,
+                copy: owned.make(backend, tiles, "splat/copy")?,
+                segments: owned.make(backend, 2 * tiles, "splat/segments")?,
                 dense,
-                mask: made(backend, mask_words.len() as u64, "splat/aperture-mask")?,
-                keys: made(backend, list_entries, "splat/keys")?,
-                values: made(backend, list_entries, "splat/values")?,
-                keys_sorted: made(backend, list_entries, "splat/keys-sorted")?,
-                values_sorted: made(backend, list_entries, "splat/values-sorted")?,
+                mask: owned.make(backend, mask_words.len() as u64, "splat/aperture-mask")?,
+                keys: owned.make(backend, list_entries, "splat/keys")?,
+                values: owned.make(backend, list_entries, "splat/values")?,
+                keys_sorted: owned.make(backend, list_entries, "splat/keys-sorted")?,
+                values_sorted: owned.make(backend, list_entries, "splat/values-sorted")?,
                 io,
             };
             backend.write_buffer(b.mask, 0, &mask_words)?;
             Ok(b)
         })();
-        let b = match built {
-            Ok(b) => b,
-            Err(e) => {
-                owned.iter().for_each(|&id| backend.destroy_buffer(id));
-                return Err(e);
-            }
-        };
-        let scan = match ScanScratch::new(backend, tiles) {
-            Ok(s) => s,
-            Err(e) => {
-                owned.iter().for_each(|&id| backend.destroy_buffer(id));
-                return Err(e);
-            }
-        };
+        let (b, owned) = owned.or_free(backend, built)?;
+        let scan = ScanScratch::new(backend, tiles);
+        let (scan, owned) = owned.or_free(backend, scan)?;
         let sort = match SegmentedSort::new(backend, tiles as u32, list_entries as u32, max_list) {
             Ok(s) => s,
             Err(e) => {
                 scan.destroy(backend);
-                owned.iter().for_each(|&id| backend.destroy_buffer(id));
+                owned.free(backend);
                 return Err(e);
             }
         };
-        bytes += scan.bytes() + sort.bytes();
+        let bytes = owned.bytes() + scan.bytes() + sort.bytes();
         let mut kernels: Vec<&'static KernelDesc> = dof_shaders::splat::KERNELS.to_vec();
         kernels.extend(dof_shaders::scan::KERNELS);
         kernels.extend(sort.kernels());
@@ -265,9 +247,7 @@ impl SplatContext {
     pub fn destroy(self, backend: &mut dyn Backend) {
         self.sort.destroy(backend);
         self.scan.destroy(backend);
-        for id in self.owned {
-            backend.destroy_buffer(id);
-        }
+        self.owned.free(backend);
     }
 
     pub fn desc(&self) -> &SplatContextDesc {

@@ -216,11 +216,11 @@ pub fn combine_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, blur: M, sprit
 
 kernel!(
     /// Bright-pixel detection: flags and the append counter.
-    BOKEH_DETECT = bokeh_detect [256] (BokehParams) { color, depth, flags, counters } => detect_pass
+    BOKEH_DETECT = bokeh_detect [256] (BokehParams) { color, depth, flags, counters } reads { color, depth } => detect_pass
 );
 kernel!(
     /// Sprites into their scanned slots, and the blur's input.
-    BOKEH_EMIT = bokeh_emit [256] (BokehParams) { color, depth, slots, sprites, rest, mask } => emit_pass
+    BOKEH_EMIT = bokeh_emit [256] (BokehParams) { color, depth, slots, sprites, rest, mask } reads { color, depth, slots, mask } => emit_pass
 );
 kernel!(
     /// The indirect draw command from the detection counter.
@@ -228,11 +228,11 @@ kernel!(
 );
 kernel!(
     /// The sprites splatted by a compute kernel: the draw's CPU fallback.
-    BOKEH_SPLAT = bokeh_splat [256] (BokehParams) { sprites, mask, counters, target } => splat_pass
+    BOKEH_SPLAT = bokeh_splat [256] (BokehParams) { sprites, mask, counters, target } reads { sprites, mask, counters } => splat_pass
 );
 kernel!(
     /// Blur plus sprites.
-    BOKEH_COMBINE = bokeh_combine [256] (BokehParams) { blur, sprites, out } => combine_pass
+    BOKEH_COMBINE = bokeh_combine [256] (BokehParams) { blur, sprites, out } reads { blur, sprites } => combine_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

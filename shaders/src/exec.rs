@@ -95,29 +95,41 @@ mod cpu {
 
     /// A storage buffer on the CPU backend. Out-of-bounds accesses panic, as rust-gpu's bounds
     /// checks abort the invocation on the GPU: the CPU backend catches them and reports a kernel fault.
+    /// So does a write to a binding the kernel declared read-only.
     #[derive(Clone, Copy)]
-    pub struct CpuMem<'a>(pub &'a [AtomicU32]);
+    pub struct CpuMem<'a> {
+        pub words: &'a [AtomicU32],
+        pub writable: bool,
+    }
+
+    impl CpuMem<'_> {
+        #[inline]
+        fn writable(&self, i: u32) -> usize {
+            assert!(self.writable, "a write (word {i}) to a binding the kernel declares read-only");
+            i as usize
+        }
+    }
 
     impl Mem for CpuMem<'_> {
         #[inline]
         fn len(&self) -> u32 {
-            self.0.len() as u32
+            self.words.len() as u32
         }
         #[inline]
         fn load(&self, i: u32) -> u32 {
-            self.0[i as usize].load(Relaxed)
+            self.words[i as usize].load(Relaxed)
         }
         #[inline]
         fn store(&mut self, i: u32, v: u32) {
-            self.0[i as usize].store(v, Relaxed)
+            self.words[self.writable(i)].store(v, Relaxed)
         }
         #[inline]
         fn atomic_add(&mut self, i: u32, v: u32) -> u32 {
-            self.0[i as usize].fetch_add(v, Relaxed)
+            self.words[self.writable(i)].fetch_add(v, Relaxed)
         }
         #[inline]
         fn atomic_max(&mut self, i: u32, v: u32) -> u32 {
-            self.0[i as usize].fetch_max(v, Relaxed)
+            self.words[self.writable(i)].fetch_max(v, Relaxed)
         }
     }
 
@@ -127,6 +139,8 @@ mod cpu {
         pub num_workgroups: [u32; 3],
         pub buffers: &'a [&'a [AtomicU32]],
         pub push: &'a [u32],
+        /// The kernel's read-only bindings (`KernelDesc::read_only`).
+        pub read_only: u32,
     }
 
     impl<'a> CpuDispatch<'a> {
@@ -136,7 +150,7 @@ mod cpu {
         }
         #[inline]
         pub fn mem(&self, binding: usize) -> CpuMem<'a> {
-            CpuMem(self.buffers[binding])
+            CpuMem { words: self.buffers[binding], writable: self.read_only & (1 << binding) == 0 }
         }
     }
 }

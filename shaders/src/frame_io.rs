@@ -114,15 +114,15 @@ pub fn to_rgba_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, rgb: M, mut 
 
 kernel!(
     /// A colour and a depth image (copied into buffers) as one fragment slot per pixel.
-    FROM_IMAGES = frame_from_images [256] (FrameIoParams) { color, depth, fragments, counts } => from_images_pass
+    FROM_IMAGES = frame_from_images [256] (FrameIoParams) { color, depth, fragments, counts } reads { color, depth } => from_images_pass
 );
 kernel!(
     /// The front slot of a multi-layer input as colour and depth.
-    FRONT = frame_front [256] (FrameIoParams) { fragments, counts, color, depth } => front_pass
+    FRONT = frame_front [256] (FrameIoParams) { fragments, counts, color, depth } reads { fragments, counts } => front_pass
 );
 kernel!(
     /// The RGB result as RGBA32F or RGBA16F with alpha 1.
-    TO_RGBA = frame_to_rgba [256] (FrameIoParams) { rgb, rgba } => to_rgba_pass
+    TO_RGBA = frame_to_rgba [256] (FrameIoParams) { rgb, rgba } reads { rgb } => to_rgba_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

@@ -128,11 +128,11 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &GatherParams, color: M, dept
 
 kernel!(
     /// The gathering baseline over a colour (3 words a pixel) and depth (1 word a pixel) image.
-    GATHER = gather [64] (GatherParams) { color, depth, out, plan } => gather_pass
+    GATHER = gather [64] (GatherParams) { color, depth, out, plan } reads { color, depth, plan } => gather_pass
 );
 kernel!(
     /// The largest CoC radius present, into the plan word the gather reads.
-    GATHER_PLAN = gather_plan [256] (GatherParams) shared [u32; 2 * 256] { depth, plan } => plan_pass
+    GATHER_PLAN = gather_plan [256] (GatherParams) shared [u32; 2 * 256] { depth, plan } reads { depth } => plan_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

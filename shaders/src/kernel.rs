@@ -19,6 +19,10 @@ pub struct KernelDesc {
     pub workgroup_size: u32,
     /// Storage buffers at bindings `0..bindings` of descriptor set 0.
     pub bindings: u32,
+    /// The bindings the kernel only reads, as a mask (bit `i`: binding `i`), from its declaration's
+    /// `reads { .. }`. The CPU backend faults on a write to one (so every CPU test checks the
+    /// declaration); the Vulkan backend's barriers count them as reads, not writes.
+    pub read_only: u32,
     /// Size of the push constants in bytes.
     pub push_bytes: u32,
     /// Workgroup memory the kernel declares, in bytes (checked against the device limit).
@@ -73,19 +77,61 @@ pub const fn entry_name(path: &'static str) -> &'static str {
     path
 }
 
-/// `kernel!(NAME = entry_fn [threads] (Params) shared [u32; N] { binding names } => body);`
+/// The mask of `reads` among `bindings` (a compile-time error names a read that is no binding).
+#[cfg(not(target_arch = "spirv"))]
+pub const fn read_mask(bindings: &[&str], reads: &[&str]) -> u32 {
+    let mut mask = 0u32;
+    let mut r = 0;
+    while r < reads.len() {
+        let mut b = 0;
+        let mut found = false;
+        while b < bindings.len() {
+            if str_eq(bindings[b], reads[r]) {
+                mask |= 1 << b;
+                found = true;
+            }
+            b += 1;
+        }
+        if !found {
+            panic!("a kernel declares a read-only binding that is not among its bindings");
+        }
+        r += 1;
+    }
+    mask
+}
+
+#[cfg(not(target_arch = "spirv"))]
+const fn str_eq(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// `kernel!(NAME = entry_fn [threads] (Params) shared [u32; N] { binding names } reads { names } => body);`
+/// (`reads { .. }`, the bindings the kernel never writes, is optional.)
 /// The body is called as `body(&mut group, &params, &mut shared, buffers...)`; without `shared`, as
 /// `body(&mut group, &params, buffers...)`.
 #[macro_export]
 macro_rules! kernel {
-    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) shared [u32; $n:expr] { $($buf:ident),* } => $body:ident) => {
+    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) shared [u32; $n:expr] { $($buf:ident),* }
+        $(reads { $($ro:ident),* })? => $body:ident) => {
         $crate::kernel!(@gpu [$threads] $entry ($params) $body
             [#[spirv(workgroup)] shared: &mut [u32; $n],] [shared,] [] [0 1 2 3 4 5 6 7 8 9 10 11] $($buf)*);
-        $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) ($n) $body [&mut [0u32; $n],] $($buf)*);
+        $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) ($n) $body [&mut [0u32; $n],] [$($($ro)*)?] $($buf)*);
     };
-    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) { $($buf:ident),* } => $body:ident) => {
+    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) { $($buf:ident),* }
+        $(reads { $($ro:ident),* })? => $body:ident) => {
         $crate::kernel!(@gpu [$threads] $entry ($params) $body [] [] [] [0 1 2 3 4 5 6 7 8 9 10 11] $($buf)*);
-        $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) (0) $body [] $($buf)*);
+        $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) (0) $body [] [$($($ro)*)?] $($buf)*);
     };
 
     // Accumulates one `#[spirv(storage_buffer)]` parameter per binding, numbered in order.
@@ -126,7 +172,7 @@ macro_rules! kernel {
     };
 
     (@cpu $(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) ($n:expr) $body:ident
-        [$($sh_arg:tt)*] $($buf:ident)*) => {
+        [$($sh_arg:tt)*] [$($ro:ident)*] $($buf:ident)*) => {
         $(#[$doc])*
         #[cfg(not(target_arch = "spirv"))]
         pub const $desc: $crate::kernel::KernelDesc = {
@@ -140,6 +186,7 @@ macro_rules! kernel {
                 entry: $crate::kernel::entry_name(concat!(module_path!(), "::", stringify!($entry))),
                 workgroup_size: $threads,
                 bindings: [$(stringify!($buf)),*].len() as u32,
+                read_only: $crate::kernel::read_mask(&[$(stringify!($buf)),*], &[$(stringify!($ro)),*]),
                 push_bytes: core::mem::size_of::<$params>() as u32,
                 shared_bytes: 4 * ($n) as u32,
                 cpu,

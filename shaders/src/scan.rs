@@ -95,7 +95,7 @@ kernel!(
 );
 kernel!(
     /// Adds each block's scanned offset to its words.
-    ADD = scan_add [256] (ScanParams) { data, sums } => add_pass
+    ADD = scan_add [256] (ScanParams) { data, sums } reads { sums } => add_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

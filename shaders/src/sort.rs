@@ -482,44 +482,55 @@ pub fn global_store_pass<G: Group, M: Mem>(
 
 kernel!(
     /// Appends every non-empty list to its length class.
-    CLASSIFY = sort_classify [256] (ClassifyParams) { segments, plan, lists } => classify
+    CLASSIFY = sort_classify [256] (ClassifyParams) { segments, plan, lists } reads { segments } => classify
 );
 kernel!(
     /// Indirect dispatch arguments from the class counts.
     PLAN = sort_plan [64] (PlanParams) { plan } => write_plan
 );
 kernel!(SHARED_64 = sort_shared_64 [32] (SortParams) shared [u32; 2 * 64]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out } => shared_class_pass);
+    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
+    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
 kernel!(SHARED_128 = sort_shared_128 [64] (SortParams) shared [u32; 2 * 128]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out } => shared_class_pass);
+    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
+    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
 kernel!(SHARED_256 = sort_shared_256 [128] (SortParams) shared [u32; 2 * 256]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out } => shared_class_pass);
+    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
+    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
 kernel!(SHARED_512 = sort_shared_512 [256] (SortParams) shared [u32; 2 * 512]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out } => shared_class_pass);
+    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
+    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
 kernel!(SHARED_1024 = sort_shared_1024 [256] (SortParams) shared [u32; 2 * 1024]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out } => shared_class_pass);
+    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
+    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
 kernel!(SHARED_2048 = sort_shared_2048 [256] (SortParams) shared [u32; 2 * 2048]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out } => shared_class_pass);
+    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
+    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
 kernel!(SHARED_4096 = sort_shared_4096 [256] (SortParams) shared [u32; 2 * 4096]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out } => shared_class_pass);
+    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
+    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
 kernel!(SHARED_6144 = sort_shared_6144 [256] (SortParams) shared [u32; 2 * 6144]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out } => shared_class_pass);
+    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
+    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
 kernel!(SHARED_8192 = sort_shared_8192 [256] (SortParams) shared [u32; 2 * 8192]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out } => shared_class_pass);
+    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
+    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
 kernel!(
     /// Global path: transform and sort blocks (`k == 0`), or finish the narrow steps of stage `k`.
     GLOBAL_LOCAL = sort_global_local [256] (SortParams) shared [u32; 2 * 2048]
-    { segments, plan, lists, keys_in, scratch_keys, scratch_pos } => global_local_pass
+    { segments, plan, lists, keys_in, scratch_keys, scratch_pos }
+        reads { segments, plan, lists, keys_in } => global_local_pass
 );
 kernel!(
     /// Global path: one wide compare-exchange step in global memory.
     GLOBAL_STEP = sort_global_step [256] (SortParams)
-    { segments, plan, lists, scratch_keys, scratch_pos } => global_step_pass
+    { segments, plan, lists, scratch_keys, scratch_pos } reads { segments, plan, lists } => global_step_pass
 );
 kernel!(
     /// Global path: sorted keys and payloads to the outputs.
     GLOBAL_STORE = sort_global_store [256] (SortParams)
-    { segments, plan, lists, keys_in, values_in, scratch_pos, keys_out, values_out } => global_store_pass
+    { segments, plan, lists, keys_in, values_in, scratch_pos, keys_out, values_out }
+        reads { segments, plan, lists, keys_in, values_in, scratch_pos } => global_store_pass
 );
 
 /// The workgroup-memory class kernels, by class index.

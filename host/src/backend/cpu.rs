@@ -80,7 +80,7 @@ impl CpuBackend {
                 let x = (flat % groups[0] as u64) as u32;
                 let y = ((flat / groups[0] as u64) % groups[1] as u64) as u32;
                 let z = (flat / (groups[0] as u64 * groups[1] as u64)) as u32;
-                (kernel.cpu)(&CpuDispatch { workgroup_id: [x, y, z], num_workgroups: groups, buffers: &bound, push });
+                (kernel.cpu)(&CpuDispatch { workgroup_id: [x, y, z], num_workgroups: groups, buffers: &bound, push, read_only: kernel.read_only });
             })
         }));
         if let Err(panic) = result {

@@ -208,5 +208,6 @@ pub fn accumulate_pass<G: Group, M: Mem>(
 kernel!(
     /// Front-to-back accumulation of the sorted tile lists (or copy-through) into `out` (3 words a pixel).
     ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 18 * 256]
-        { sharp, dense, values, segments, copy, out, st, mask } => accumulate_pass
+        { sharp, dense, values, segments, copy, out, st, mask }
+        reads { sharp, dense, values, segments, copy, mask } => accumulate_pass
 );

@@ -355,18 +355,19 @@ fn candidate<const N: usize>(sh: &[u32; N], nb: usize, nb_base: usize, j: u32) -
 kernel!(
     /// Per-tile fragment counts, cell offsets inside tiles and largest radius.
     TILE_COUNT = splat_tile_count [256] (SplatParams) shared [u32; 4 * 256]
-        { cells, cell_counts, cell_off, tile_count, tile_base, tile_radius, st } => tile_count_pass
+        { cells, cell_counts, cell_off, tile_count, tile_base, tile_radius, st } reads { cells, cell_counts } => tile_count_pass
 );
 kernel!(
     /// Fragments into one dense array, tile by tile.
-    COMPACT = splat_compact [256] (SplatParams) { cells, cell_counts, cell_off, tile_base, dense } => compact_pass
+    COMPACT = splat_compact [256] (SplatParams) { cells, cell_counts, cell_off, tile_base, dense } reads { cells, cell_counts, cell_off, tile_base } => compact_pass
 );
 kernel!(
     /// Which tiles no list fragment reaches (copied through).
-    ALLOC = splat_alloc [256] (SplatParams) { tile_count, tile_radius, copy, st } => alloc_pass
+    ALLOC = splat_alloc [256] (SplatParams) { tile_count, tile_radius, copy, st } reads { tile_count, tile_radius } => alloc_pass
 );
 kernel!(
     /// The tile lists: depth keys and dense fragment indices.
     BIN = splat_bin [256] (SplatParams) shared [u32; 6 * 256]
-        { dense, tile_count, tile_base, tile_radius, copy, keys, values, segments, st } => bin_pass
+        { dense, tile_count, tile_base, tile_radius, copy, keys, values, segments, st }
+        reads { dense, tile_count, tile_base, tile_radius } => bin_pass
 );

@@ -171,5 +171,5 @@ pub fn merge_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells_in: M, cou
 
 kernel!(
     /// One 2x2 merging step over cells of `params.cell` pixels.
-    MERGE = splat_merge [256] (SplatParams) { cells_in, counts_in, cells_out, counts_out, st } => merge_pass
+    MERGE = splat_merge [256] (SplatParams) { cells_in, counts_in, cells_out, counts_out, st } reads { cells_in, counts_in } => merge_pass
 );

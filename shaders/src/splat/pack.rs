@@ -122,5 +122,5 @@ pub fn pack_pass<G: Group, M: Mem>(
 
 kernel!(
     /// Input slots → packed fragments in cells of one pixel.
-    PACK = splat_pack [256] (SplatParams) { layers, counts, cells, cell_counts, sharp, st } => pack_pass
+    PACK = splat_pack [256] (SplatParams) { layers, counts, cells, cell_counts, sharp, st } reads { layers, counts } => pack_pass
 );

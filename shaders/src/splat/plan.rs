@@ -114,7 +114,7 @@ pub fn finish_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, mut st: M) {
 
 kernel!(
     /// The largest CoC radius and the brightest channel of the input, into the frame words.
-    PLAN_REDUCE = splat_plan_reduce [256] (SplatParams) shared [u32; 4 * 256] { layers, counts, st } => reduce_pass
+    PLAN_REDUCE = splat_plan_reduce [256] (SplatParams) shared [u32; 4 * 256] { layers, counts, st } reads { layers, counts } => reduce_pass
 );
 kernel!(
     /// Rings, radius cap and colour scale from the reduction.

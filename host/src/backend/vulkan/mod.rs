@@ -467,7 +467,13 @@ impl VulkanBackend {
         };
         let pipeline = self.pipelines.get(&self.device.device, kernel)?;
         self.note_used(buffers.iter().copied().chain(indirect.map(|(id, _)| id)));
-        let accessed: Vec<u64> = bound.iter().chain(args.as_ref().map(|(b, _)| b)).map(|b| b.as_raw()).collect();
+        // What the kernel declares read-only is read; the indirect arguments are read.
+        let accessed: Vec<(u64, bool)> = bound
+            .iter()
+            .enumerate()
+            .map(|(i, b)| (b.as_raw(), kernel.read_only & (1 << i) == 0))
+            .chain(args.as_ref().map(|(b, _)| (b.as_raw(), false)))
+            .collect();
 
         let infos = buffer_infos(&bound);
         let writes = storage_writes(&infos);
@@ -555,7 +561,7 @@ impl VulkanBackend {
             .buffer_offset(offset_words * 4)
             .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
             .image_extent(vk::Extent3D { width, height, depth: 1 })];
-        let accessed = [target.as_raw(), image.handle];
+        let accessed = [(target.as_raw(), !into_image), (image.handle, into_image)];
         self.recorder.record(&self.device, Some((label, what)), &accessed, |d, cb| {
             // SAFETY: `cb` is recording outside a render pass; the image is live with the declared
             // format, extent and layout (`ImageRef::vulkan`'s contract) and the region lies inside
@@ -637,7 +643,7 @@ impl Backend for VulkanBackend {
         self.next_id = next;
         self.counters.add_buffer(bytes);
         // Zeroed on the GPU, ahead of (and ordered by the barrier before) whatever uses it next.
-        let zeroed = self.recorder.record(&self.device, None, &[handle.as_raw()], |d, cb| {
+        let zeroed = self.recorder.record(&self.device, None, &[(handle.as_raw(), true)], |d, cb| {
             // SAFETY: `cb` is recording; the buffer lives until the submission finishes.
             unsafe { d.cmd_fill_buffer(cb, handle, 0, vk::WHOLE_SIZE, 0) }
         });
@@ -734,7 +740,7 @@ impl Backend for VulkanBackend {
     fn fill(&mut self, buffer: BufferId, offset_words: u64, words: u64, value: u32, label: &str) -> Result<()> {
         let target = self.range(buffer, offset_words, words)?;
         self.note_used([buffer]);
-        self.recorder.record(&self.device, Some((label, "fill")), &[target.as_raw()], |d, cb| {
+        self.recorder.record(&self.device, Some((label, "fill")), &[(target.as_raw(), true)], |d, cb| {
             if words > 0 {
                 // SAFETY: `cb` is recording; the range lies inside the buffer.
                 unsafe { d.cmd_fill_buffer(cb, target, offset_words * 4, words * 4, value) }
@@ -820,8 +826,14 @@ impl Backend for VulkanBackend {
         let target_buffer = self.range(target, 0, 4 * pixels)?;
         let bound: Vec<vk::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.handle)).collect::<Result<_>>()?;
         self.note_used(buffers.iter().copied().chain([args, target]));
-        let accessed: Vec<u64> =
-            bound.iter().chain([&args_buffer, &target_buffer]).map(|b| b.as_raw()).chain([image.as_raw()]).collect();
+        // The draw reads its storage buffers and the indirect command, and writes its image and
+        // (copied from it) the target.
+        let accessed: Vec<(u64, bool)> = bound
+            .iter()
+            .chain([&args_buffer])
+            .map(|b| (b.as_raw(), false))
+            .chain([(target_buffer.as_raw(), true), (image.as_raw(), true)])
+            .collect();
         let infos = buffer_infos(&bound);
         let writes = storage_writes(&infos);
         let push_bytes = draw.push_bytes.div_ceil(4) as usize * 4;

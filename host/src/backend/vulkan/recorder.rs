@@ -3,11 +3,12 @@
 //! each timed command, and submission (which waits and harvests the timings). A second command buffer
 //! runs one-off host transfers.
 //!
-//! Barriers follow from what each command accesses: the recorder remembers the buffers (and images)
-//! the commands since the last barrier accessed, and puts a full memory barrier before a command that
-//! accesses one of them again (every access counts as a write for now: kernels do not declare
-//! read-only bindings; fills and copies write), and before the first command of a command buffer.
-//! Commands on disjoint buffers run without barriers between them.
+//! Barriers follow from what each command declares it reads and writes: the recorder remembers the
+//! buffers (and images) the commands since the last barrier read and wrote, and puts a full memory
+//! barrier before a command that reads what one of them wrote or writes what one of them read or
+//! wrote (a kernel's `reads { .. }` bindings are reads, its others writes; fills write; copies
+//! read their source and write their destination), and before the first command of a command
+//! buffer. Commands that share nothing, or only read what they share, run without barriers.
 //!
 //! Timestamps go into query pools of [`TIMED_PER_POOL`] timed commands each; a recording that times
 //! more commands takes (and keeps) another pool, so one `submit` is always one `vkQueueSubmit`.
@@ -87,6 +88,13 @@ impl Queries {
     }
 }
 
+/// The buffers and images commands since the last barrier read and wrote (raw handles).
+#[derive(Default)]
+struct Touched {
+    read: HashSet<u64>,
+    written: HashSet<u64>,
+}
+
 pub(super) struct Recorder {
     pool: vk::CommandPool,
     main: vk::CommandBuffer,
@@ -110,9 +118,9 @@ pub(super) struct Recorder {
     done: Vec<CommandTime>,
     /// `vkQueueSubmit` calls so far.
     submissions: u64,
-    /// Raw handles of the buffers and images the commands since the last barrier accessed; `None`
-    /// at the start of a command buffer, where the first command waits for everything before.
-    touched: Option<HashSet<u64>>,
+    /// What the commands since the last barrier accessed; `None` at the start of a command buffer,
+    /// where the first command waits for everything before.
+    touched: Option<Touched>,
     /// Barriers `record` put between commands so far (for tests).
     barriers: u64,
 }
@@ -197,13 +205,14 @@ impl Recorder {
     /// `end_external`) or else to the backend's own (begun on first use): a barrier first where it
     /// is needed (so it sees every earlier write, also those of earlier submissions), then `record`,
     /// bracketed by timestamps when `timing` names it. `accessed` are the raw handles of the buffers
-    /// (and images) the command reads or writes: it must name every one, since commands that share
-    /// none run without a barrier between them.
+    /// (and images) the command reads or writes, each with whether it writes it: it must name every
+    /// one, since commands that share none, or only read what they share, run without a barrier
+    /// between them.
     pub fn record(
         &mut self,
         ctx: &DeviceCtx,
         timing: Option<(&str, &'static str)>,
-        accessed: &[u64],
+        accessed: &[(u64, bool)],
         record: impl FnOnce(&ash::Device, vk::CommandBuffer),
     ) -> Result<()> {
         let d = &ctx.device;
@@ -228,19 +237,22 @@ impl Recorder {
             }
             _ => None,
         };
-        // A barrier only where this command accesses something an earlier command since the last
-        // barrier accessed (every access counts as a write: kernels do not declare read-only
-        // bindings), and before the first command of a command buffer.
+        // A barrier only where this command reads something an earlier command since the last
+        // barrier wrote, or writes something one read or wrote (kernels declare the bindings they
+        // only read), and before the first command of a command buffer.
         let hazard = match &self.touched {
             None => true,
-            Some(touched) => accessed.iter().any(|h| touched.contains(h)),
+            Some(t) => accessed.iter().any(|&(h, writes)| t.written.contains(&h) || (writes && t.read.contains(&h))),
         };
         if hazard {
             self.barriers += 1;
             full_barrier(d, cb, self.graphics);
-            self.touched = Some(HashSet::new());
+            self.touched = Some(Touched::default());
         }
-        self.touched.get_or_insert_with(HashSet::new).extend(accessed.iter().copied());
+        let touched = self.touched.get_or_insert_with(Touched::default);
+        for &(h, writes) in accessed {
+            if writes { touched.written.insert(h) } else { touched.read.insert(h) };
+        }
         // SAFETY: `cb` is recording; the queries were reset in it and each is written once.
         unsafe {
             // Bottom of pipe: the first stamp waits for all earlier work, the last for this command.
@@ -362,7 +374,7 @@ impl Recorder {
             later_stages(g),
             later_accesses(g),
         );
-        self.touched = Some(HashSet::new());
+        self.touched = Some(Touched::default());
     }
 
     /// Ends the external recording with a barrier making the backend's writes visible to whatever

@@ -37,8 +37,8 @@ pub enum FrameInput {
 pub enum FrameOutput {
     /// 3 words (f32 red, green, blue) a pixel, row-major; written whole.
     Buffer(BufferId),
-    /// The caller's RGBA32F or RGBA16F image (alpha 1), left in its `final_layout` (needs
-    /// [`SplatContextDesc::image_io`]).
+    /// The caller's RGBA32F or RGBA16F image (alpha 1), left in its `final_layout` (needs a
+    /// context created with `image_io`).
     Image(ImageRef),
 }
 

@@ -5,7 +5,7 @@
 //! - [`mesh`]: the mesh as the rasteriser takes it, and its upload;
 //! - [`view`]: the clip transform for a pinhole or for one lens point (sheared frustum);
 //! - [`peel`]: depth peeling with the umbra threshold, then the disocclusion buffer;
-//! - [`accumulate`]: the accumulation-buffer reference.
+//! - [`mod@accumulate`]: the accumulation-buffer reference.
 //!
 //! Both run on either backend: on Vulkan through the graphics pipeline (rust-gpu vertex and
 //! fragment shaders, a depth attachment), on the CPU through the draw's compute fallback.

@@ -21,7 +21,7 @@
 //!   whose horizon is in view becomes a square [`HORIZON_FACTOR`] times its distance from the eye
 //!   (solid colour: the gap below the horizon is far below a pixel), and is skipped when it carries
 //!   a checker (whose cells float precision would shift on such a square).
-//! - The camera is a `thinlens` sensor with the thin lens of the reference ([`super::reference`]):
+//! - The camera is a `thinlens` sensor with the thin lens of the reference ([`mod@super::reference`]):
 //!   the same aperture radius, [`ThinLens::aperture_radius`] in scene units, and the same planar
 //!   focus distance, which [`CameraFrame::lens_ray`] takes; with them a point at depth `z` blurs to
 //!   `K·|1 − z_f/z|` pixels ([`ThinLens::coc_px`]). `fov` is the vertical field of view with

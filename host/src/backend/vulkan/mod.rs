@@ -12,7 +12,7 @@
 //! between calls the GPU is idle and buffers can be read, written or freed without further
 //! synchronisation. Inside a renderer ([`VulkanBackend::from_raw`]): the backend runs on the caller's
 //! device and queue, works on the caller's buffers ([`VulkanBackend::import_buffer`]) and images
-//! ([`ImageRef`](super::ImageRef)), and records into the caller's command buffer between
+//! ([`super::ImageRef`]), and records into the caller's command buffer between
 //! [`VulkanBackend::begin_external`] and [`VulkanBackend::end_external`]; the caller submits and
 //! synchronises that work itself.
 

@@ -34,6 +34,36 @@ impl ApertureShape {
         ApertureShape { kernel: Aperture::circle(), mask: Vec::new() }
     }
 
+    /// Checks that the description is one the kernels can run (its fields are public, so a shape
+    /// built by hand may not be): the circle, 3 to 64 blades with a curvature in [0, 1], or a mask
+    /// of 2 to 512 texels a side holding `side²` coverages in [0, 1]; every number finite.
+    pub fn check(&self) -> Result<()> {
+        let k = &self.kernel;
+        let finite = [k.curvature, k.normal[0], k.normal[1], k.step[0], k.step[1], k.inv_inradius, k.area].iter().all(|v| v.is_finite());
+        let analytic = k.mask == 0
+            && self.mask.is_empty()
+            && (k.blades == 0 || (3..=64).contains(&k.blades))
+            && (0.0..=1.0).contains(&k.curvature)
+            && k.inv_inradius >= 1.0;
+        let side = k.mask as u64;
+        let masked = k.blades == 0
+            && (2..=512).contains(&k.mask)
+            && self.mask.len() as u64 == side * side
+            && self.mask.iter().all(|v| (0.0..=1.0).contains(v));
+        if finite && k.area > 0.0 && (analytic || masked) {
+            Ok(())
+        } else {
+            Err(Error::InvalidArgument(format!(
+                "an aperture the kernels cannot run: {} blades, a mask of side {} with {} texels, curvature {}, area {}                  (use ApertureShape::circle, parse_aperture or image_aperture)",
+                k.blades,
+                k.mask,
+                self.mask.len(),
+                k.curvature,
+                k.area
+            )))
+        }
+    }
+
     /// The mask as buffer words (one zero word for the analytic shapes, so there is always a buffer
     /// to bind).
     pub fn mask_words(&self) -> Vec<u32> {
@@ -143,11 +173,17 @@ pub fn image_aperture(path: &Path) -> Result<ApertureShape> {
     let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
     decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
     let mut reader = decoder.read_info().map_err(|e| bad(format!("not a readable PNG ({e})")))?;
+    // The size from the header, before the pixels are allocated.
+    let usable = |w: u32, h: u32| (1..=8192).contains(&w) && (1..=8192).contains(&h);
+    let (w, h) = reader.info().size();
+    if !usable(w, h) {
+        return Err(bad(format!("{w}x{h} is not a usable size (1 to 8192 a side)")));
+    }
     let mut buf = vec![0u8; reader.output_buffer_size().ok_or_else(|| bad("too large".into()))?];
     let info = reader.next_frame(&mut buf).map_err(|e| bad(format!("not a readable PNG ({e})")))?;
     let (w, h) = (info.width, info.height);
     let channels = info.color_type.samples();
-    if w == 0 || h == 0 || w > 8192 || h > 8192 {
+    if !usable(w, h) {
         return Err(bad(format!("{w}x{h} is not a usable size (1 to 8192 a side)")));
     }
     let luminance = |x: u32, y: u32| -> f32 {

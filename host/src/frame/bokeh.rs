@@ -57,6 +57,7 @@ pub struct BokehContext {
 /// Checks the options: finite thresholds, a sprite radius cap in (0, 4096] px, a capacity of 1 to
 /// 2^20 sprites.
 pub fn check_options(o: &BokehOptions) -> Result<()> {
+    o.aperture.check()?;
     let finite = |v: f32| v.is_finite() && v >= 0.0;
     if !(finite(o.lum_threshold) && finite(o.coc_threshold) && o.max_radius > 0.0 && o.max_radius <= 4096.0) {
         return Err(Error::InvalidArgument(format!(

@@ -107,6 +107,7 @@ pub struct SplatContext {
 /// Checks the options against what the kernels support; returns the configured radius cap.
 pub fn check_options(o: &SplatOptions) -> Result<f32> {
     let bad = |m: String| Err(Error::InvalidArgument(m));
+    o.aperture.check()?;
     if !TILE_SIZES.contains(&o.tile) {
         return bad(format!("tile size {} is not one of {TILE_SIZES:?}", o.tile));
     }

@@ -57,6 +57,17 @@ impl Ray {
     }
 }
 
+/// `v` at unit length, also when its components are so small that their squares underflow (it is
+/// scaled by its largest component first); `None` for zero or non-finite vectors.
+fn unit(v: Vec3) -> Option<Vec3> {
+    let largest = v.abs().max_element();
+    if !(largest > 0.0 && largest.is_finite()) {
+        return None;
+    }
+    let u = (v / largest).normalize();
+    (u.is_finite() && (u.length() - 1.0).abs() < 1e-4).then_some(u)
+}
+
 impl Camera {
     /// A camera at `eye` looking at `target` with +Y up.
     pub fn look_at(eye: Vec3, target: Vec3, yfov_radians: f32, width: u32, height: u32) -> Self {
@@ -83,16 +94,13 @@ impl Camera {
         if !(self.eye.is_finite() && self.target.is_finite() && self.up.is_finite()) {
             return Err(Error::InvalidArgument("camera eye, target and up must be finite".into()));
         }
-        let axis = self.target - self.eye;
-        if !(axis.length() > 0.0) {
-            return Err(Error::InvalidArgument("the camera's target must differ from its eye".into()));
-        }
-        let forward = axis.normalize();
-        let right = forward.cross(self.up);
-        if !(right.length() > 1e-6 * self.up.length()) || !right.is_finite() {
-            return Err(Error::InvalidArgument("the camera's up vector must not be zero or parallel to its view axis".into()));
-        }
-        let right = right.normalize();
+        let forward = unit(self.target - self.eye)
+            .ok_or_else(|| Error::InvalidArgument("the camera's target must differ from its eye".into()))?;
+        let right = unit(self.up)
+            .map(|up| forward.cross(up))
+            .filter(|r| r.length() > 1e-6)
+            .and_then(unit)
+            .ok_or_else(|| Error::InvalidArgument("the camera's up vector must not be zero or parallel to its view axis".into()))?;
         let up = right.cross(forward);
         let tan_half_fov = (0.5 * fov).tan();
         if !(tan_half_fov.is_finite() && tan_half_fov > 0.0) {

@@ -100,9 +100,14 @@ fn load(bytes: &[u8], base: Option<&Path>) -> Result<MeshScene> {
     if let Some(e) = wrong_glb_magic(bytes) {
         return Err(e);
     }
-    let gltf::Gltf { document, blob } = gltf::Gltf::from_slice(bytes).map_err(|e| {
+    let invalid = |e: &dyn std::fmt::Display| {
         scene_err(format!("not a valid glTF 2.0 file ({e}); expected glTF JSON or a complete binary .glb"))
-    })?;
+    };
+    // Parsed, then validated once the references its validation trusts are checked.
+    let gltf::Gltf { document, blob } = gltf::Gltf::from_slice_without_validation(bytes).map_err(|e| invalid(&e))?;
+    let json = document.into_json();
+    check_unvalidated(&json).map_err(|e| invalid(&e))?;
+    let document = gltf::Document::from_json(json).map_err(|e| invalid(&e))?;
     let buffers = read_buffers(&document, base, blob)?;
     let mut loader = Loader { doc: &document, base, buffers, images: HashMap::new(), textures: HashMap::new(), materials: HashMap::new(), out: empty() };
     let scene = document.default_scene().or_else(|| document.scenes().next()).ok_or_else(|| {
@@ -156,6 +161,46 @@ fn load(bytes: &[u8], base: Option<&Path>) -> Result<MeshScene> {
     }
     loader.out.validate()?;
     Ok(loader.out)
+}
+
+/// Errors on what the gltf crate (1.4) trusts without validating, and would panic on: a primitive
+/// whose `POSITION` names an accessor that does not exist (its validation indexes the accessors
+/// with it), an image with neither `uri` nor `bufferView` or a `bufferView` without `mimeType`, a
+/// camera without the projection its `type` names (`Image::source` and `Camera::projection`
+/// unwrap them).
+fn check_unvalidated(json: &gltf::json::Root) -> std::result::Result<(), String> {
+    use gltf::json::camera::Type;
+    use gltf::json::mesh::Semantic;
+    use gltf::json::validation::Checked;
+    for (m, mesh) in json.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            if let Some(index) = primitive.attributes.get(&Checked::Valid(Semantic::Positions)) {
+                if index.value() >= json.accessors.len() {
+                    return Err(format!(
+                        "meshes[{m}].primitives[{p}].attributes[\"POSITION\"]: accessor {} does not exist; the file has {}",
+                        index.value(),
+                        json.accessors.len()
+                    ));
+                }
+            }
+        }
+    }
+    for (i, image) in json.images.iter().enumerate() {
+        match (&image.buffer_view, &image.uri, &image.mime_type) {
+            (None, None, _) => return Err(format!("images[{i}] has neither a uri nor a bufferView")),
+            (Some(_), _, None) => return Err(format!("images[{i}] has a bufferView but no mimeType")),
+            _ => {}
+        }
+    }
+    for (i, camera) in json.cameras.iter().enumerate() {
+        let missing = match camera.type_ {
+            Checked::Valid(Type::Perspective) if camera.perspective.is_none() => "perspective",
+            Checked::Valid(Type::Orthographic) if camera.orthographic.is_none() => "orthographic",
+            _ => continue,
+        };
+        return Err(format!("cameras[{i}] is of type {missing} but has no `{missing}` object"));
+    }
+    Ok(())
 }
 
 fn empty() -> MeshScene {

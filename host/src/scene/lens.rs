@@ -155,14 +155,16 @@ impl LensSettings {
 }
 
 /// Checks an [`ArtistLens`] (seed 001's linear model): `near_end <= near_start <= far_start <=
-/// far_end`, values finite (`far_end` may be `+inf`), `max_radius_px >= 0`.
+/// far_end`, values finite (`far_end` may be `+inf`), `max_radius_px >= 0` with a finite diameter
+/// (`2 · max_radius_px`: beyond it the CoC is `inf · 0`, NaN, in the sharp zone).
 pub fn validate_artist_lens(lens: &ArtistLens) -> Result<()> {
-    if lens.is_valid() {
+    if lens.is_valid() && (2.0 * lens.max_radius_px).is_finite() {
         Ok(())
     } else {
         Err(Error::InvalidArgument(format!(
             "an artist lens needs near_end <= near_start <= far_start <= far_end and max_radius_px >= 0, \
-             all finite (far_end may be infinite); got {lens:?}"
+             all finite (far_end may be infinite) and max_radius_px below {:e}; got {lens:?}",
+            f32::MAX / 2.0
         )))
     }
 }

@@ -1,0 +1,608 @@
+//! The frame API on the CPU backend: context descriptions (extents, layer counts, tile sizes,
+//! merging, radius caps, list pools, apertures, bokeh options, image I/O), then a few operations
+//! (record and submit a frame, read its report, resize) with arbitrary frame sizes, layer counts,
+//! lenses (NaN, ±inf, negative), buffers that may be too small, unknown or shared, their contents
+//! (well-formed, or raw words: NaN depths, counts beyond the layers), and images of any format and
+//! extent (the CPU backend has none: an error).
+//!
+//! Every call must return `Ok` or `Err`, never panic; a kernel fault (an out-of-bounds index the
+//! CPU backend catches) is a failure too, since on a GPU it would be a stray access. Extents are
+//! small (at most 64x64 pixels and 4 layers) or arbitrary; an arbitrary description is only tried
+//! where the library must refuse it (a zero size, an edge beyond the splatting limit, input slots
+//! beyond the largest buffer, a list pool beyond its limit), and must be refused without
+//! allocating it (libFuzzer's malloc limit catches that). Well-formed input through a sane lens
+//! must give a finite image. Every buffer is freed at the end: nothing leaks on any error path.
+#![no_main]
+
+use arbitrary::Arbitrary;
+use ash::vk;
+use dof::Error;
+use dof::ThinLens;
+use dof::aperture::{ApertureShape, star};
+use dof::backend::{Backend, BufferId, CpuBackend, ImageFormat, ImageRef};
+use dof::dof_shaders::aperture::{Aperture, blades, masked};
+use dof::dof_shaders::splat::fragment::MAX_EDGE;
+use dof::frame::splat::MAX_LIST_ENTRIES;
+use dof::frame::{
+    BokehContext, BokehContextDesc, DepthEncoding, Frame, FrameInput, FrameOutput, GatherContext, GatherContextDesc,
+    SplatContext, SplatContextDesc,
+};
+use dof::methods::bokeh::BokehOptions;
+use dof::methods::splat::{Merge, SplatOptions};
+use libfuzzer_sys::fuzz_target;
+
+/// Whether inconsistent aperture descriptions are tried (see `ApertureIn::Raw`).
+const TRY_RAW_APERTURES: bool = false;
+
+/// Largest extent and layer count actually allocated.
+const SMALL_EDGE: u32 = 64;
+const SMALL_LAYERS: u32 = 4;
+/// Largest list pool actually allocated (the default is 2^20 entries).
+const SMALL_LIST: u64 = 1 << 20;
+
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum Dim {
+    /// 0 to 64.
+    Small(u8),
+    Any(u32),
+}
+
+impl Dim {
+    fn get(self) -> u32 {
+        match self {
+            Dim::Small(v) => v as u32 % (SMALL_EDGE + 1),
+            Dim::Any(v) => v,
+        }
+    }
+}
+
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum Layers {
+    /// 0 to 4.
+    Small(u8),
+    Any(u32),
+}
+
+impl Layers {
+    fn get(self) -> u32 {
+        match self {
+            Layers::Small(v) => v as u32 % (SMALL_LAYERS + 1),
+            Layers::Any(v) => v,
+        }
+    }
+}
+
+#[derive(Arbitrary, Debug)]
+enum ApertureIn {
+    Circle,
+    Blades(u32, f32, f32),
+    Star(u32, f32, f32),
+    /// A mask of `side²` texels from a seed.
+    Masked(u8, u64),
+    /// Any kernel description with any mask: inconsistent shapes are possible through the public
+    /// fields.
+    Raw { blades: u32, curvature: f32, normal: [f32; 2], step: [f32; 2], inv_inradius: f32, area: f32, mask_side: u8, texels: u16 },
+}
+
+impl ApertureIn {
+    fn shape(&self) -> Option<ApertureShape> {
+        match *self {
+            ApertureIn::Circle => Some(ApertureShape::circle()),
+            ApertureIn::Blades(n, rotation, curvature) => {
+                blades(n, rotation, curvature).map(|kernel| ApertureShape { kernel, mask: Vec::new() })
+            }
+            ApertureIn::Star(n, rotation, inner) => star(n, rotation, inner),
+            ApertureIn::Masked(side, seed) => {
+                let side = side as u32 % 40;
+                let mut rng = Rng(seed);
+                let mask: Vec<f32> = (0..side * side).map(|_| (rng.next() % 5) as f32 / 4.0).collect();
+                masked(side, &mask).map(|kernel| ApertureShape { kernel, mask })
+            }
+            ApertureIn::Raw { blades, curvature, normal, step, inv_inradius, area, mask_side, texels } => {
+                // Not tried: the contexts take an aperture's description on trust (finding 6 in
+                // fuzz/README.md: 2^32 - 1 blades loop for ever, a mask shorter than its side is
+                // read out of bounds). Kept so that the corpus keeps its meaning once they check it.
+                let kernel = Aperture { blades, curvature, normal, step, inv_inradius, area, mask: mask_side as u32 };
+                let shape = ApertureShape { kernel, mask: vec![1.0; texels as usize % 4096] };
+                if !TRY_RAW_APERTURES {
+                    return None;
+                }
+                Some(shape)
+            }
+        }
+    }
+}
+
+/// A float: usually a plausible value, sometimes any.
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum F {
+    Default,
+    Small(u8),
+    Any(f32),
+}
+
+impl F {
+    fn get(self, default: f32, scale: f32) -> f32 {
+        match self {
+            F::Default => default,
+            F::Small(v) => v as f32 * scale,
+            F::Any(v) => v,
+        }
+    }
+}
+
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum Entries {
+    Small(u16),
+    Any(u64),
+}
+
+#[derive(Arbitrary, Debug)]
+enum Method {
+    Splat {
+        tile: u8,
+        any_tile: Option<u32>,
+        merge: u8,
+        max_radius: Option<F>,
+        merge_min_radius: F,
+        merge_depth_ratio: F,
+        merge_color_tol: F,
+        umbra_merge: bool,
+        list_entries: Option<Entries>,
+        max_list: Option<u32>,
+        distinct_stage_buffers: bool,
+    },
+    Gather {
+        max_radius: Option<u32>,
+    },
+    Bokeh {
+        lum_threshold: F,
+        coc_threshold: F,
+        capacity: Option<u32>,
+        max_radius: F,
+    },
+}
+
+#[derive(Arbitrary, Debug)]
+struct ContextIn {
+    method: Method,
+    width: Dim,
+    height: Dim,
+    layers: Layers,
+    aperture: ApertureIn,
+    image_io: bool,
+}
+
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum LensIn {
+    /// Focal length 5 cm, 2000 px a unit: CoC up to about 100 px.
+    Sane { aperture: u8, focus: u8 },
+    Raw([f32; 4]),
+}
+
+impl LensIn {
+    fn get(self) -> ThinLens {
+        match self {
+            LensIn::Sane { aperture, focus } => ThinLens {
+                focal_length: 0.05,
+                aperture_radius: aperture as f32 * 0.0005,
+                focus_distance: 0.5 + focus as f32 * 0.05,
+                pixels_per_unit: 2000.0,
+            },
+            LensIn::Raw([focal_length, aperture_radius, focus_distance, pixels_per_unit]) => {
+                ThinLens { focal_length, aperture_radius, focus_distance, pixels_per_unit }
+            }
+        }
+    }
+}
+
+#[derive(Arbitrary, Debug, Clone, Copy)]
+struct ImageIn {
+    format: u8,
+    /// `None`: the frame's size.
+    extent: Option<(Dim, Dim)>,
+    layouts: u8,
+}
+
+impl ImageIn {
+    fn get(self, frame: (u32, u32)) -> ImageRef {
+        let format = [ImageFormat::Rgba32Float, ImageFormat::Rgba16Float, ImageFormat::R32Float][self.format as usize % 3];
+        let layouts = [vk::ImageLayout::UNDEFINED, vk::ImageLayout::GENERAL, vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL];
+        let layout = layouts[self.layouts as usize % 3];
+        let final_layout = layouts[(self.layouts as usize / 3) % 3];
+        // SAFETY: the CPU backend never uses the handle (it has no images and refuses every copy).
+        unsafe {
+            ImageRef::vulkan(
+                vk::Image::null(),
+                format,
+                self.extent.map_or([frame.0, frame.1], |(w, h)| [w.get(), h.get()]),
+                layout,
+                vk::PipelineStageFlags::ALL_COMMANDS,
+                vk::AccessFlags::MEMORY_WRITE,
+                final_layout,
+            )
+        }
+    }
+}
+
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum EncodingIn {
+    Linear,
+    Standard(f32, f32),
+    Reversed(f32, f32),
+}
+
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum InputIn {
+    /// The caller's fragments and counts buffers (0 and 1), or any buffer ids.
+    Buffers { fragments: u8, counts: u8 },
+    Images { color: ImageIn, depth: ImageIn, encoding: EncodingIn },
+}
+
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum OutputIn {
+    /// A caller's buffer (2 is the output buffer; 0 and 1 alias the input).
+    Buffer(u8),
+    Image(ImageIn),
+}
+
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum Content {
+    /// Counts within the layers, depths positive and sorted (the last sometimes the sky at `+inf`),
+    /// colours in [0, 4].
+    WellFormed(u64),
+    /// Words from the input, as they come.
+    Raw,
+}
+
+/// A frame's size or layer count: usually within the context's maximum, sometimes anything.
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum Within {
+    /// 1 to the maximum.
+    Max(u8),
+    Dim(Dim),
+    Layers(Layers),
+}
+
+impl Within {
+    fn get(self, max: u32) -> u32 {
+        match self {
+            Within::Max(v) => 1 + v as u32 % max.max(1),
+            Within::Dim(d) => d.get(),
+            Within::Layers(l) => l.get(),
+        }
+    }
+}
+
+#[derive(Arbitrary, Debug, Clone, Copy)]
+struct FrameIn {
+    width: Within,
+    height: Within,
+    layers: Within,
+    lens: LensIn,
+    input: InputIn,
+    output: OutputIn,
+    content: Content,
+}
+
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum Op {
+    Record(FrameIn),
+    Resize(Dim, Dim, Layers),
+}
+
+/// The caller's buffer sizes, relative to what a frame of the context's maximum needs.
+#[derive(Arbitrary, Debug, Clone, Copy)]
+enum SizeIn {
+    Exact,
+    Short(u16),
+    Long(u8),
+}
+
+#[derive(Arbitrary, Debug)]
+struct Input {
+    context: ContextIn,
+    sizes: [SizeIn; 3],
+    ops: Vec<Op>,
+    words: Vec<u32>,
+}
+
+/// splitmix64.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+    fn unit(&mut self) -> f32 {
+        (self.next() >> 40) as f32 / (1u64 << 24) as f32
+    }
+}
+
+enum Context {
+    Splat(SplatContext),
+    Gather(GatherContext),
+    Bokeh(BokehContext),
+}
+
+/// Whether the library must refuse an extent, and whether it is small enough to allocate.
+fn judge(width: u32, height: u32, layers: u32, splat: bool) -> (bool, bool) {
+    let slot_bytes = 16 * width as u128 * height as u128 * layers as u128;
+    let must_refuse = width == 0
+        || height == 0
+        || layers == 0
+        || slot_bytes > 1 << 34
+        || (splat && (width > MAX_EDGE || height > MAX_EDGE));
+    let small = width <= SMALL_EDGE && height <= SMALL_EDGE && layers <= SMALL_LAYERS;
+    (must_refuse, small)
+}
+
+/// With `DOF_FUZZ_STATS` set, prints how far each input got (for checking what the corpus reaches).
+fn stat(what: &str) {
+    static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    if *ON.get_or_init(|| std::env::var_os("DOF_FUZZ_STATS").is_some()) {
+        eprintln!("stat: {what}");
+    }
+}
+
+/// `Ok` or a clean `Err`; a kernel fault is a failure.
+fn clean<T>(what: &str, r: dof::Result<T>) -> Option<T> {
+    match r {
+        Ok(v) => Some(v),
+        Err(e @ Error::KernelFault { .. }) => panic!("{what}: {e}"),
+        Err(_) => None,
+    }
+}
+
+fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Context, (u32, u32, u32))> {
+    let (w, h, layers) = (c.width.get(), c.height.get(), c.layers.get());
+    let splat = matches!(c.method, Method::Splat { .. });
+    let (mut must_refuse, small) = judge(w, h, layers, splat);
+    let context = match &c.method {
+        Method::Splat {
+            tile,
+            any_tile,
+            merge,
+            max_radius,
+            merge_min_radius,
+            merge_depth_ratio,
+            merge_color_tol,
+            umbra_merge,
+            list_entries,
+            max_list,
+            distinct_stage_buffers,
+        } => {
+            let aperture = c.aperture.shape()?;
+            let options = SplatOptions {
+                tile: any_tile.unwrap_or([16, 24, 32][*tile as usize % 3]),
+                merge: [Merge::None, Merge::X2, Merge::X4][*merge as usize % 3],
+                max_radius: max_radius.map(|r| r.get(96.0, 1.0)),
+                merge_min_radius: merge_min_radius.get(1.5, 0.25),
+                merge_depth_ratio: merge_depth_ratio.get(1.1, 0.05),
+                merge_color_tol: merge_color_tol.get(0.25, 0.05),
+                umbra_merge: *umbra_merge,
+                aperture,
+                keep_intermediates: false,
+            };
+            let list_entries = match list_entries {
+                None => None,
+                Some(Entries::Small(n)) => Some(*n as u64),
+                Some(Entries::Any(n)) => Some(*n),
+            };
+            if let Some(n) = list_entries {
+                if n == 0 || n > MAX_LIST_ENTRIES {
+                    must_refuse = true;
+                } else if n > SMALL_LIST && !must_refuse {
+                    return None;
+                }
+            }
+            if !small && !must_refuse {
+                return None;
+            }
+            let desc = SplatContextDesc {
+                max_width: w,
+                max_height: h,
+                max_layers: layers,
+                options,
+                list_entries,
+                max_list: *max_list,
+                distinct_stage_buffers: *distinct_stage_buffers,
+                image_io: c.image_io,
+            };
+            SplatContext::new(b, &desc).map(Context::Splat)
+        }
+        Method::Gather { max_radius } => {
+            if !small && !must_refuse {
+                return None;
+            }
+            let desc = GatherContextDesc { max_width: w, max_height: h, max_layers: layers, max_radius: *max_radius, image_io: c.image_io };
+            GatherContext::new(b, &desc).map(Context::Gather)
+        }
+        Method::Bokeh { lum_threshold, coc_threshold, capacity, max_radius } => {
+            if !small && !must_refuse {
+                return None;
+            }
+            let aperture = c.aperture.shape()?;
+            let options = BokehOptions {
+                lum_threshold: lum_threshold.get(1.0, 0.1),
+                coc_threshold: coc_threshold.get(2.0, 0.25),
+                capacity: capacity.unwrap_or(4096),
+                max_radius: max_radius.get(256.0, 1.0),
+                aperture,
+            };
+            let desc = BokehContextDesc { max_width: w, max_height: h, max_layers: layers, options, image_io: c.image_io };
+            BokehContext::new(b, &desc).map(Context::Bokeh)
+        }
+    };
+    let context = clean("creating the context", context);
+    stat(&format!("context {}: {}", if context.is_some() { "created" } else { "refused" }, match c.method { Method::Splat { .. } => "splat", Method::Gather { .. } => "gather", Method::Bokeh { .. } => "bokeh" }));
+    let context = context?;
+    assert!(!must_refuse, "a {w}x{h} context with {layers} layers was accepted: it must be refused");
+    Some((context, (w, h, layers)))
+}
+
+/// Writes the frame's input into the caller's buffers (as much as fits).
+fn fill(b: &mut CpuBackend, bufs: &[BufferId; 3], f: &FrameIn, size: (u32, u32, u32), words: &[u32]) {
+    let (w, h, layers) = (size.0 as u64, size.1 as u64, size.2 as u64);
+    let cap = |id: BufferId, b: &CpuBackend| b.buffer_words(id).unwrap_or(0);
+    let (frag_cap, count_cap) = (cap(bufs[0], b), cap(bufs[1], b));
+    match f.content {
+        Content::WellFormed(seed) => {
+            let mut rng = Rng(seed);
+            let pixels = (w * h).min(count_cap);
+            let mut counts = Vec::with_capacity(pixels as usize);
+            let mut slots = vec![0u32; (4 * pixels * layers).min(frag_cap) as usize];
+            for p in 0..pixels {
+                let n = rng.next() % (layers.min(SMALL_LAYERS as u64) + 1);
+                counts.push(n as u32);
+                let mut depth = 0.2 + 2.0 * rng.unit();
+                for k in 0..n {
+                    let sky = k + 1 == n && rng.next() % 4 == 0;
+                    let d = if sky { f32::INFINITY } else { depth };
+                    depth += 0.01 + 3.0 * rng.unit();
+                    let base = (4 * (p * layers + k)) as usize;
+                    if base + 4 <= slots.len() {
+                        let rgb = [4.0 * rng.unit(), rng.unit(), rng.unit()];
+                        slots[base..base + 4].copy_from_slice(&[rgb[0].to_bits(), rgb[1].to_bits(), rgb[2].to_bits(), d.to_bits()]);
+                    }
+                }
+            }
+            let _ = b.write_buffer(bufs[0], 0, &slots);
+            let _ = b.write_buffer(bufs[1], 0, &counts);
+        }
+        Content::Raw => {
+            if words.is_empty() {
+                return;
+            }
+            let cycle = |n: u64| -> Vec<u32> { words.iter().copied().cycle().take(n as usize).collect() };
+            let _ = b.write_buffer(bufs[0], 0, &cycle(frag_cap.min(4 * SMALL_EDGE as u64 * SMALL_EDGE as u64 * SMALL_LAYERS as u64)));
+            let counts: Vec<u32> = cycle(count_cap.min(SMALL_EDGE as u64 * SMALL_EDGE as u64)).into_iter().map(|c| c.rotate_left(16)).collect();
+            let _ = b.write_buffer(bufs[1], 0, &counts);
+        }
+    }
+}
+
+fn buffer(id: u8, bufs: &[BufferId; 3]) -> BufferId {
+    bufs.get(id as usize).copied().unwrap_or(BufferId(id as u32 * 1000))
+}
+
+fn run(input: &Input) {
+    let mut b = CpuBackend::new();
+    let Some((mut ctx, mut max)) = create(&mut b, &input.context) else {
+        assert_eq!(b.counters().device_bytes, 0, "a refused context left buffers behind");
+        return;
+    };
+    // The caller's buffers: fragments, counts and output for the context's maximum, or a little
+    // less or more.
+    let pixels = max.0 as u64 * max.1 as u64;
+    let needs = [4 * pixels * max.2 as u64, pixels, 3 * pixels];
+    let mut bufs = [BufferId(0); 3];
+    for (i, (&need, size)) in needs.iter().zip(input.sizes).enumerate() {
+        let words = match size {
+            SizeIn::Exact => need,
+            SizeIn::Short(d) => need.saturating_sub(d as u64 % (need + 1)),
+            SizeIn::Long(d) => need + d as u64,
+        };
+        bufs[i] = b.create_buffer(words, "caller").expect("a small caller buffer");
+    }
+    for op in input.ops.iter().take(4) {
+        match *op {
+            Op::Record(f) => {
+                let size = (f.width.get(max.0), f.height.get(max.1), f.layers.get(max.2));
+                fill(&mut b, &bufs, &f, size, &input.words);
+                let frame = Frame {
+                    width: size.0,
+                    height: size.1,
+                    lens: f.lens.get(),
+                    input: match f.input {
+                        InputIn::Buffers { fragments, counts } => FrameInput::Layers {
+                            fragments: buffer(fragments, &bufs),
+                            counts: buffer(counts, &bufs),
+                            layers: size.2,
+                        },
+                        InputIn::Images { color, depth, encoding } => FrameInput::Images {
+                            color: color.get((size.0, size.1)),
+                            depth: depth.get((size.0, size.1)),
+                            encoding: match encoding {
+                                EncodingIn::Linear => DepthEncoding::Linear,
+                                EncodingIn::Standard(near, far) => DepthEncoding::Standard { near, far },
+                                EncodingIn::Reversed(near, far) => DepthEncoding::Reversed { near, far },
+                            },
+                        },
+                    },
+                    output: match f.output {
+                        OutputIn::Buffer(id) => FrameOutput::Buffer(buffer(id, &bufs)),
+                        OutputIn::Image(image) => FrameOutput::Image(image.get((size.0, size.1))),
+                    },
+                };
+                let recorded = match &mut ctx {
+                    Context::Splat(c) => c.record(&mut b, &frame),
+                    Context::Gather(c) => c.record(&mut b, &frame),
+                    Context::Bokeh(c) => c.record(&mut b, &frame),
+                };
+                if let Err(e) = &recorded {
+                    stat(&format!("record refused: {}", e.to_string().chars().take(60).collect::<String>()));
+                }
+                if clean("recording", recorded).is_none() {
+                    // A refused frame records nothing; drop whatever an error left half recorded.
+                    let _ = clean("submitting after an error", b.submit());
+                    continue;
+                }
+                if clean("running the frame", b.submit()).is_none() {
+                    stat("frame failed on submit");
+                    continue;
+                }
+                stat(match &ctx {
+                    Context::Splat(_) => "frame ran: splat",
+                    Context::Gather(_) => "frame ran: gather",
+                    Context::Bokeh(_) => "frame ran: bokeh",
+                });
+                match &ctx {
+                    Context::Splat(c) => {
+                        clean("the report", c.report(&mut b));
+                    }
+                    Context::Gather(c) => {
+                        clean("the radius", c.radius(&mut b));
+                    }
+                    Context::Bokeh(c) => {
+                        clean("the sprites and radius", c.detected_and_radius(&mut b));
+                    }
+                }
+                let sane = matches!((f.content, f.lens, f.input, f.output), (Content::WellFormed(_), LensIn::Sane { .. }, InputIn::Buffers { fragments: 0, counts: 1 }, OutputIn::Buffer(2)));
+                if sane {
+                    stat("sane frame checked");
+                    let words = 3 * frame.width as u64 * frame.height as u64;
+                    let out = b.read_buffer(bufs[2], 0, words).expect("the output of a recorded frame");
+                    if let Some(bad) = out.iter().position(|w| !f32::from_bits(*w).is_finite()) {
+                        panic!("well-formed input through a sane lens gave a non-finite output at word {bad}: {}", f32::from_bits(out[bad]));
+                    }
+                }
+            }
+            Op::Resize(w, h, l) => {
+                let Context::Splat(c) = &mut ctx else { continue };
+                let (w, h, l) = (w.get(), h.get(), l.get());
+                let (must_refuse, small) = judge(w, h, l, true);
+                if !small && !must_refuse {
+                    continue;
+                }
+                if clean("resizing", c.resize(&mut b, w, h, l)).is_some() {
+                    assert!(!must_refuse, "a resize to {w}x{h} with {l} layers was accepted: it must be refused");
+                    max = (w, h, l);
+                }
+            }
+        }
+    }
+    match ctx {
+        Context::Splat(c) => c.destroy(&mut b),
+        Context::Gather(c) => c.destroy(&mut b),
+        Context::Bokeh(c) => c.destroy(&mut b),
+    }
+    bufs.iter().for_each(|&id| b.destroy_buffer(id));
+    assert_eq!(b.counters().device_bytes, 0, "buffers leaked");
+}
+
+fuzz_target!(|input: Input| run(&input));

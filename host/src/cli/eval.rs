@@ -80,10 +80,13 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     let md = report.to_markdown();
     std::fs::write(args.out.join("report.md"), &md)?;
     println!("{md}");
+    if !report.grids.is_empty() && dof::eval::plot::ensure_font().is_err() {
+        eprintln!("note: no TrueType font found, so the image grids are written without their labels (install fonts-dejavu-core or set DOF_PLOT_FONT)");
+    }
     for (scene, reference, rows) in &report.grids {
         let path = args.out.join(format!("{scene}-grid.png"));
         dof::eval::grid::write_grid(&path, reference, rows)?;
-        let names: Vec<&str> = rows.iter().map(|r| r.0.as_str()).collect();
+        let names: Vec<&str> = rows.iter().map(|r| r.0.lines().next().unwrap_or("")).collect();
         println!("wrote {} (rows: reference, {}; left the image, right its error x4)", path.display(), names.join(", "));
     }
     if !args.no_plots {

@@ -90,8 +90,8 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
             guard_band_px: ml.margin,
         });
         let input = MethodInput::new(ml.layers, lens, ml.margin);
-        // Per method, the best image on the first backend, for the grid.
-        let mut best: Vec<(String, f64, crate::layers::RgbImage)> = Vec::new();
+        // Per method, the best image on the first backend and its setting, for the grid.
+        let mut best: Vec<(String, f64, String, crate::layers::RgbImage)> = Vec::new();
         for method in all.iter().filter(|m| options.methods.is_empty() || options.methods.iter().any(|n| n == m.name())) {
             let targets = if method.uses_backend() { backends.len() } else { 1 };
             for setting in method.settings(options.quick) {
@@ -101,10 +101,11 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                     let image = input.crop(&output.image);
                     let error = compare(&image, &exact, Some(&ml.mask))?;
                     if backend_index == 0 {
+                        let entry = (method.name().to_string(), error.psnr_db, setting.label.clone(), image.clone());
                         match best.iter_mut().find(|b| b.0 == method.name()) {
                             Some(b) if b.1 >= error.psnr_db => {}
-                            Some(b) => *b = (method.name().to_string(), error.psnr_db, image.clone()),
-                            None => best.push((method.name().to_string(), error.psnr_db, image.clone())),
+                            Some(b) => *b = entry,
+                            None => best.push(entry),
                         }
                     }
                     let record = Record {
@@ -132,7 +133,7 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
                 }
             }
         }
-        let rows = best.into_iter().map(|(name, _, image)| (name, image)).collect();
+        let rows = best.into_iter().map(|(name, psnr, setting, image)| (grid_label(&name, &setting, psnr), image)).collect();
         report.grids.push((name.clone(), exact, rows));
     }
     if let Some(first) = options.scenes.iter().find(|s| !is_gltf(s)).filter(|_| !options.coc_sweep.is_empty()) {
@@ -149,6 +150,12 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
         report.coc_sweep = sweep::coc_sweep(first, &scene, &chosen, backends, &sweep_options)?;
     }
     Ok(report)
+}
+
+/// A grid row's label: the method, its setting (where it has one) and its PSNR, one a line.
+pub fn grid_label(method: &str, setting: &str, psnr_db: f64) -> String {
+    let psnr = if psnr_db.is_finite() { format!("PSNR {psnr_db:.2} dB") } else { "PSNR inf (identical)".into() };
+    if setting == "-" { format!("{method}\n{psnr}") } else { format!("{method}\n{setting}\n{psnr}") }
 }
 
 /// A scene ready to be measured: its multi-layer image and its reference.

@@ -62,7 +62,8 @@ pub struct Figure {
 const SIZE: (u32, u32) = (1100, 560);
 /// Width of the legend column right of the chart.
 const LEGEND_WIDTH: u32 = 330;
-const FONT: &str = "sans-serif";
+/// The family the plot font is registered as (the grids' labels use it too).
+pub(crate) const FONT: &str = "sans-serif";
 
 /// Distinct colours for series, by index.
 pub fn palette(i: usize) -> [u8; 3] {

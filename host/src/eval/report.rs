@@ -156,8 +156,8 @@ pub struct Report {
     pub scenes: Vec<SceneInfo>,
     pub records: Vec<Record>,
     pub coc_sweep: Vec<SweepRecord>,
-    /// Per scene: the reference and each method's best image on the first backend (for the image
-    /// grids; not in the JSON).
+    /// Per scene: the reference and each method's best image on the first backend, labelled with
+    /// the method, setting and PSNR ([`super::grid_label`]; for the image grids, not in the JSON).
     #[serde(skip)]
     pub grids: Vec<(String, RgbImage, Vec<(String, RgbImage)>)>,
 }

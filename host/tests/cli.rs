@@ -267,3 +267,51 @@ fn soak_and_frame_bench_report_flat_memory_and_no_per_frame_work() {
     assert_fails_with(&["soak", "--frames", "0"], "--frames");
     assert_fails_with(&["bench", "frame", "--frames", "0"], "--frames");
 }
+
+/// `dof bench scaling` runs every point asked for, writes JSON, markdown and each plot, and reports
+/// the points a budget skipped (never leaves them out silently); bad sizes are refused.
+#[test]
+fn scaling_bench_writes_points_and_plots_and_reports_skips() {
+    let out = temp("scaling");
+    let dir = out.to_str().unwrap();
+    let args = ["bench", "scaling", "--backend", "cpu", "--sizes", "64x36,96x54", "--cocs", "2,4", "--coc-size", "64x36", "--methods", "gather,multilayer", "--runs", "1", "--json", "--out", dir];
+    let o = dof(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).expect("one JSON object");
+    let points = j["points"].as_array().unwrap();
+    assert_eq!(points.len(), 2 * (2 + 2), "{j}");
+    for method in ["gather", "multilayer"] {
+        let series: Vec<&serde_json::Value> = points.iter().filter(|p| p["method"] == method && p["axis"] == "resolution").collect();
+        assert_eq!(series.iter().map(|p| p["pixels"].as_u64().unwrap()).collect::<Vec<_>>(), vec![64 * 36, 96 * 54]);
+        let blur: Vec<f64> = points.iter().filter(|p| p["method"] == method && p["axis"] == "max_coc").map(|p| p["max_coc_px"].as_f64().unwrap()).collect();
+        assert!(blur.len() == 2 && (blur[0] - 2.0).abs() < 0.05 && (blur[1] - 4.0).abs() < 0.05, "{blur:?}");
+    }
+    for p in points {
+        assert!(p["time_ms"].as_f64().is_some_and(|t| t > 0.0) && p["peak_device_bytes"].as_u64().is_some_and(|b| b > 0), "{p}");
+        assert!(p.get("skipped").is_none(), "{p}");
+    }
+    // More pixels hold more device memory.
+    let mem = |px: u64| points.iter().find(|p| p["method"] == "gather" && p["pixels"] == px && p["axis"] == "resolution").unwrap()["peak_device_bytes"].as_u64().unwrap();
+    assert!(mem(96 * 54) > mem(64 * 36));
+    for stem in ["scaling-time-vs-pixels-cpu", "scaling-time-vs-coc-cpu", "scaling-memory-vs-pixels-cpu"] {
+        for ext in ["svg", "png"] {
+            let path = out.join(format!("{stem}.{ext}"));
+            assert!(std::fs::metadata(&path).is_ok_and(|m| m.len() > 1000), "{} not written", path.display());
+        }
+    }
+    assert!(std::fs::read_to_string(out.join("scaling.md")).unwrap().contains("| gather | max-radius=48 | cpu |"));
+
+    // A budget every run exceeds: each series runs its first point and reports the rest as skipped.
+    let o = dof(&["bench", "scaling", "--backend", "cpu", "--sizes", "64x36,96x54", "--cocs", "none", "--methods", "gather", "--runs", "1", "--budget-s", "1e-9", "--no-plots", "--json", "--out", dir]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let points = j["points"].as_array().unwrap();
+    assert_eq!(points.len(), 2);
+    assert!(points[0]["time_ms"].as_f64().is_some() && points[0]["runs"] == 0, "{j}");
+    assert!(points[1]["time_ms"].is_null() && points[1]["skipped"].as_str().is_some_and(|s| s.contains("budget")), "{j}");
+
+    assert_fails_with(&["bench", "scaling", "--sizes", "64by36"], "WIDTHxHEIGHT");
+    assert_fails_with(&["bench", "scaling", "--backend", "cpu", "--sizes", "4x4", "--cocs", "none"], "between 8x8");
+    assert_fails_with(&["bench", "scaling", "--backend", "cpu", "--methods", "pinhole"], "runs no kernels");
+    std::fs::remove_dir_all(&out).ok();
+}

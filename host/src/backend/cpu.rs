@@ -117,6 +117,10 @@ impl Backend for CpuBackend {
         self.budget = budget;
     }
 
+    fn reset_peak_device_bytes(&mut self) {
+        self.counters.reset_peak();
+    }
+
     fn create_buffer(&mut self, words: u64, label: &str) -> Result<BufferId> {
         let words = words.max(1);
         if words * 4 > self.limits.max_buffer_bytes {
@@ -222,6 +226,12 @@ mod tests {
         let c = cpu.counters();
         let want = BackendCounters { allocations: 3, submissions: 1, readbacks: 1, uploads: 1, device_bytes: 44, peak_device_bytes: 56 };
         assert_eq!(c, want);
+        // After a reset the peak is what is held, and grows again from there.
+        cpu.reset_peak_device_bytes();
+        assert_eq!(cpu.counters().peak_device_bytes, 44);
+        let b = cpu.create_buffer(2, "b")?;
+        cpu.destroy_buffer(b);
+        assert_eq!((cpu.counters().device_bytes, cpu.counters().peak_device_bytes), (44, 52));
         Ok(())
     }
 }

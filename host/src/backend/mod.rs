@@ -110,6 +110,11 @@ impl BackendCounters {
         self.peak_device_bytes = self.peak_device_bytes.max(self.device_bytes);
     }
 
+    /// Forgets the peak: it becomes what is held now.
+    pub(crate) fn reset_peak(&mut self) {
+        self.peak_device_bytes = self.device_bytes;
+    }
+
     /// Books a buffer of `bytes` the backend no longer owns.
     pub(crate) fn remove_buffer(&mut self, bytes: u64) {
         self.device_bytes = self.device_bytes.saturating_sub(bytes);
@@ -290,6 +295,9 @@ pub trait Backend {
     fn submit(&mut self) -> Result<Vec<CommandTime>>;
     /// Allocations, submissions, transfers and memory so far (see [`BackendCounters`]).
     fn counters(&self) -> BackendCounters;
+    /// Starts [`BackendCounters::peak_device_bytes`] over from the bytes held now, so that the peak
+    /// read after a piece of work is that work's own (the scaling sweep measures each run this way).
+    fn reset_peak_device_bytes(&mut self);
     /// Caps the bytes of buffers the backend may hold at once (`None`: only the device's own
     /// limits). A `create_buffer` beyond it fails with [`Error::OutOfMemory`] and allocates
     /// nothing: how device memory running out is tested, and how a renderer keeps the library

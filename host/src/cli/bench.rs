@@ -14,6 +14,9 @@ pub enum BenchCommand {
     /// One splatting frame after another through the frame API: record time, device time per
     /// stage, context memory, and allocations, submissions and readbacks per frame.
     Frame(super::bench_frame::FrameArgs),
+    /// Time and peak memory of every method against resolution and against the largest CoC, on
+    /// `railing` with the blur scaled with the image: JSON, markdown and plots.
+    Scaling(super::bench_scaling::ScalingArgs),
 }
 
 #[derive(clap::Args)]
@@ -37,6 +40,7 @@ pub fn run(cmd: &BenchCommand) -> anyhow::Result<()> {
     match cmd {
         BenchCommand::Sort(args) => sort(args),
         BenchCommand::Frame(args) => super::bench_frame::run(args),
+        BenchCommand::Scaling(args) => super::bench_scaling::run(args),
     }
 }
 

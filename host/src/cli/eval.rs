@@ -27,6 +27,15 @@ pub struct EvalArgs {
     /// with --quick); `none` for no sweep.
     #[arg(long, value_delimiter = ',')]
     coc_sweep: Vec<String>,
+    /// Also run the scaling sweep (time and peak memory against resolution, 640x360 to 1920x1080,
+    /// and against the largest CoC, 4 to 96 px, on `railing`; 160x90 to 320x180 with --quick) and
+    /// write it as scaling.json, scaling.md, plots and a section of report.md. Slow: see
+    /// `dof bench scaling` for a sweep on its own.
+    #[arg(long)]
+    scaling: bool,
+    /// With --scaling: seconds a run may take before the larger points of its series are skipped.
+    #[arg(long, default_value_t = dof::eval::scaling::DEFAULT_BUDGET_S)]
+    scaling_budget_s: f64,
     /// Leave out the plots (they need a TrueType font, see `dof::eval::plot`).
     #[arg(long)]
     no_plots: bool,
@@ -74,7 +83,28 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         dof::eval::plot::ensure_font().context("the plots need a font; pass --no-plots to leave them out")?;
     }
     let mut backends = backends(args.backend, false)?;
-    let report = evaluate(&options, &mut backends)?;
+    let mut report = evaluate(&options, &mut backends)?;
+    // Host-only methods take no device time; the sweep leaves them out.
+    let kernel_methods: Vec<String> = args
+        .methods
+        .iter()
+        .filter(|n| dof::eval::methods::registry().iter().any(|m| m.name() == n.as_str() && m.uses_backend()))
+        .cloned()
+        .collect();
+    if args.scaling && !args.methods.is_empty() && kernel_methods.is_empty() {
+        eprintln!("note: no scaling sweep: none of the methods asked for runs kernels");
+    } else if args.scaling {
+        let scaling = dof::eval::scaling::ScalingOptions {
+            methods: kernel_methods,
+            runs: options.runs.min(3),
+            budget_s: args.scaling_budget_s,
+            progress: true,
+            ..dof::eval::scaling::ScalingOptions::new(args.quick)
+        };
+        let sweep = dof::eval::scaling::scaling(&scaling, &mut backends)?;
+        std::fs::write(args.out.join("scaling.json"), sweep.to_json())?;
+        report.scaling = Some(sweep);
+    }
     std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create {}", args.out.display()))?;
     std::fs::write(args.out.join("report.json"), report.to_json())?;
     let md = report.to_markdown();

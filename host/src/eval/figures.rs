@@ -11,6 +11,8 @@
 //!   the multi-layer method on the first backend at its smallest tile size (lists are identical on
 //!   both backends).
 //! - `<sweep scene>-max-coc` (Fig. 13): time against the largest CoC radius present, log time.
+//! - `scaling-*-<backend>` (with `dof eval --scaling`): time and peak device memory against
+//!   resolution and time against the largest CoC, see [`super::scaling::ScalingReport::figures`].
 
 use super::plot::{Axis, Figure, Mark, Series, Shape, palette};
 use super::report::{Record, Report};
@@ -201,6 +203,9 @@ pub fn write_all(report: &Report, dir: &Path) -> Result<Vec<PathBuf>> {
     }
     if let Some((scene, f)) = max_coc(report) {
         figures.push((format!("{scene}-max-coc"), f));
+    }
+    if let Some(scaling) = &report.scaling {
+        figures.extend(scaling.figures());
     }
     let mut written = Vec::new();
     for (stem, f) in figures {

@@ -12,6 +12,7 @@ pub mod grid;
 pub mod methods;
 pub mod plot;
 pub mod report;
+pub mod scaling;
 pub mod sweep;
 
 use crate::backend::Backend;

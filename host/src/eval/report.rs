@@ -25,7 +25,13 @@
 //! - `coc_sweep[]` (Franke et al. 2018, Fig. 13), time against the largest CoC on the sweep scene (the first
 //!   scene, at 320x180, or 160x90 with `quick`), the aperture scaled so the largest CoC radius present takes each value: `scene`,
 //!   `method`, `setting`, `backend`, `device`, `max_coc_px` (largest CoC radius present, px),
-//!   `time_ms`, `stages_ms`, `runs`, `figures`.
+//!   `time_ms`, `stages_ms`, `runs`, `figures`;
+//! - `scaling` (only with `dof eval --scaling`): the scaling sweep, as `scaling.json` holds it (see
+//!   [`super::scaling::ScalingReport`]): `scene`, `runs`, `budget_s`, `coc_size`, `backends`, and
+//!   `points[]`, each `axis` (`resolution` or `max_coc`), `method`, `setting`, `backend`, `device`,
+//!   `width`, `height`, `pixels`, `input_pixels` (with the guard band), `max_coc_px`, `time_ms`,
+//!   `stages_ms`, `wall_ms`, `runs` (0: the warm-up alone, over the budget), `peak_device_bytes`,
+//!   `peak_rss_bytes`, `skipped` (why, where the point was not run), `figures`.
 
 use crate::layers::RgbImage;
 use serde::Serialize;
@@ -156,6 +162,9 @@ pub struct Report {
     pub scenes: Vec<SceneInfo>,
     pub records: Vec<Record>,
     pub coc_sweep: Vec<SweepRecord>,
+    /// The scaling sweep (`dof eval --scaling`; schema in [`super::scaling`]), absent without it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scaling: Option<super::scaling::ScalingReport>,
     /// Per scene: the reference and each method's best image on the first backend, labelled with
     /// the method, setting and PSNR ([`super::grid_label`]; for the image grids, not in the JSON).
     #[serde(skip)]
@@ -173,6 +182,7 @@ impl Report {
             scenes: Vec::new(),
             records: Vec::new(),
             coc_sweep: Vec::new(),
+            scaling: None,
             grids: Vec::new(),
         }
     }
@@ -215,6 +225,9 @@ impl Report {
                 let _ = writeln!(md, "| {} | {} | {} | {:.1} | {:.3} | {} |", r.method, r.setting, r.backend, r.max_coc_px, r.time_ms, list);
             }
             md.push('\n');
+        }
+        if let Some(scaling) = &self.scaling {
+            md.push_str(&scaling.to_markdown());
         }
         md
     }

@@ -47,6 +47,16 @@ pub fn lens_for_max_coc(layers: &LayeredImage, lens: &ThinLens, target: f64) -> 
     Ok(ThinLens { aperture_radius: (lens.aperture_radius as f64 * target / now) as f32, ..*lens })
 }
 
+/// The input at one sweep target: `base` scaled so the largest CoC radius of `base_layers` (cast
+/// with `base`) becomes `target`, the multi-layer image cast again for that lens, and the largest
+/// CoC radius (px) then present.
+pub fn input_at_max_coc(scene: &BuiltinScene, base: &ThinLens, base_layers: &LayeredImage, target: f64) -> Result<(MethodInput, f64)> {
+    let lens = lens_for_max_coc(base_layers, base, target)?;
+    let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default())?;
+    let max_coc_px = max_coc_radius(&ml.layers, &lens);
+    Ok((MethodInput::new(ml.layers, lens, ml.margin), max_coc_px))
+}
+
 /// Times every method that has a sweep setting at every target, on every backend it runs on.
 pub fn coc_sweep(
     name: &str,
@@ -56,14 +66,10 @@ pub fn coc_sweep(
     options: &SweepOptions,
 ) -> Result<Vec<SweepRecord>> {
     let base = scene.thin_lens()?;
-    let layer_options = LayerOptions::default();
-    let base_layers = raycast_layers(&scene.scene, &scene.camera, &base, &layer_options)?;
+    let base_layers = raycast_layers(&scene.scene, &scene.camera, &base, &LayerOptions::default())?;
     let mut records = Vec::new();
     for &target in &options.targets {
-        let lens = lens_for_max_coc(&base_layers.layers, &base, target)?;
-        let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &layer_options)?;
-        let max_coc_px = max_coc_radius(&ml.layers, &lens);
-        let input = MethodInput::new(ml.layers, lens, ml.margin);
+        let (input, max_coc_px) = input_at_max_coc(scene, &base, &base_layers.layers, target)?;
         for method in methods.iter().filter(|m| m.uses_backend()) {
             let Some(setting) = method.sweep_setting() else { continue };
             for backend in backends.iter_mut() {

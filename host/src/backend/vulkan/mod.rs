@@ -624,6 +624,10 @@ impl Backend for VulkanBackend {
         self.budget = budget;
     }
 
+    fn reset_peak_device_bytes(&mut self) {
+        self.counters.reset_peak();
+    }
+
     fn create_buffer(&mut self, words: u64, label: &str) -> Result<BufferId> {
         self.refuse_external("create_buffer")?;
         let limit = self.info.limits.max_buffer_bytes;

@@ -19,6 +19,7 @@ pub mod lens;
 pub mod math;
 pub mod raster;
 pub mod raytrace;
+pub mod ring_gather;
 pub mod scan;
 pub mod sort;
 pub mod splat;
@@ -34,6 +35,7 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .iter()
         .chain(sort::KERNELS.iter())
         .chain(gather::KERNELS.iter())
+        .chain(ring_gather::KERNELS.iter())
         .chain(splat::KERNELS.iter())
         .chain(raytrace::KERNELS.iter())
         .chain(layered::KERNELS.iter())

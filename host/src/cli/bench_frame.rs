@@ -5,9 +5,10 @@
 use super::render::BackendArg;
 use anyhow::Context;
 use dof::backend::{Backend, BackendCounters, BufferId};
-use dof::frame::{BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, SplatContext, SplatContextDesc};
+use dof::frame::{BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, SplatContext, SplatContextDesc};
 use dof::methods::bokeh::{BokehOptions, bokeh};
 use dof::methods::gather::gather;
+use dof::methods::ring_gather::{RingGatherOptions, ring_gather};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::slot_words;
 use dof::methods::splat::{Merge, SplatOptions, splat};
@@ -24,6 +25,9 @@ pub enum FrameMethod {
     Tiled,
     /// The gathering baseline (Riguer et al. 2003) on the front layer.
     Gather,
+    /// The engine-grade gather (after AMD FidelityFX DoF, Unreal Engine's Diaphragm DoF and
+    /// Jimenez 2014) at its default of 5 rings.
+    RingGather,
     /// Bokeh sprites (de Rousiers, Pettineo 2012) over the gathering baseline.
     Bokeh,
 }
@@ -170,6 +174,7 @@ fn add_stages(into: &mut BTreeMap<String, f64>, times: &[dof::backend::CommandTi
 enum AnyContext {
     Splat(SplatContext),
     Gather(GatherContext),
+    RingGather(RingGatherContext),
     Bokeh(BokehContext),
 }
 
@@ -179,6 +184,7 @@ impl AnyContext {
         Ok(match method {
             FrameMethod::Multilayer | FrameMethod::Tiled => AnyContext::Splat(SplatContext::new(b, &SplatContextDesc::new(w, h, l, options.clone()))?),
             FrameMethod::Gather => AnyContext::Gather(GatherContext::new(b, &GatherContextDesc::new(w, h, l))?),
+            FrameMethod::RingGather => AnyContext::RingGather(RingGatherContext::new(b, &RingGatherContextDesc::new(w, h, l))?),
             FrameMethod::Bokeh => AnyContext::Bokeh(BokehContext::new(b, &BokehContextDesc::new(w, h, l, BokehOptions::default()))?),
         })
     }
@@ -186,6 +192,7 @@ impl AnyContext {
         match self {
             AnyContext::Splat(c) => c.record(b, f),
             AnyContext::Gather(c) => c.record(b, f),
+            AnyContext::RingGather(c) => c.record(b, f),
             AnyContext::Bokeh(c) => c.record(b, f),
         }
     }
@@ -193,6 +200,7 @@ impl AnyContext {
         match self {
             AnyContext::Splat(c) => c.device_bytes(),
             AnyContext::Gather(c) => c.device_bytes(),
+            AnyContext::RingGather(c) => c.device_bytes(),
             AnyContext::Bokeh(c) => c.device_bytes(),
         }
     }
@@ -207,6 +215,7 @@ impl AnyContext {
         match self {
             AnyContext::Splat(c) => c.destroy(b),
             AnyContext::Gather(c) => c.destroy(b),
+            AnyContext::RingGather(c) => c.destroy(b),
             AnyContext::Bokeh(c) => c.destroy(b),
         }
     }
@@ -255,6 +264,10 @@ fn one_shot(b: &mut dyn Backend, method: FrameMethod, image: &LayeredImage, lens
             }
             FrameMethod::Gather => {
                 let out = gather(b, &front, &depth, lens, None)?;
+                (out.times, out.buffer_bytes, (0, 0, 0))
+            }
+            FrameMethod::RingGather => {
+                let out = ring_gather(b, &front, &depth, lens, &RingGatherOptions::default())?;
                 (out.times, out.buffer_bytes, (0, 0, 0))
             }
             FrameMethod::Bokeh => {

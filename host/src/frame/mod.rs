@@ -18,7 +18,8 @@
 //! Methods: multi-layer tiled splatting (Franke, Hofmann, Stamminger, Selgrad 2018) and its
 //! single-layer predecessor (Selgrad, Franke, Stamminger 2016, the same pipeline on the front
 //! layer) run through [`SplatContext`], the gathering baseline (Riguer et al. 2003) through
-//! [`GatherContext`] and bokeh sprites (de Rousiers, Pettineo) through [`BokehContext`]. Every
+//! [`GatherContext`], the engine-grade gather (after AMD FidelityFX DoF, Unreal Engine's Diaphragm
+//! DoF and Jimenez 2014) through [`RingGatherContext`] and bokeh sprites (de Rousiers, Pettineo) through [`BokehContext`]. Every
 //! context records the same [`Frame`] description. The one-shot functions in [`crate::methods`]
 //! (what the CLI, the evaluation and the tests call) run one frame through these contexts.
 //!
@@ -30,9 +31,11 @@
 pub mod bokeh;
 pub mod gather;
 pub mod io;
+pub mod ring_gather;
 pub mod splat;
 
 pub use bokeh::{BokehContext, BokehContextDesc};
 pub use gather::{GatherContext, GatherContextDesc};
 pub use io::{DepthEncoding, Frame, FrameInput, FrameOutput};
+pub use ring_gather::{RingGatherContext, RingGatherContextDesc, RingGatherOptions};
 pub use splat::{SplatContext, SplatContextDesc};

@@ -1,10 +1,12 @@
 //! What every method does with its buffers the same way: the layered input's slot words, the size
 //! of a one-dimensional grid-stride dispatch, and reading an RGB result back.
 
-use crate::backend::{Backend, BufferId};
-use crate::error::Result;
+use crate::backend::{Backend, BufferId, with_buffers};
+use crate::error::{Error, Result};
+use crate::frame::Frame;
 use crate::layers::{LayeredImage, RgbImage};
 use dof_shaders::KernelDesc;
+use dof_shaders::lens::ThinLens;
 
 /// Workgroups the host dispatches at most in one dimension; grid-stride kernels loop over the rest.
 pub use dof_shaders::splat::MAX_GROUPS;
@@ -25,4 +27,38 @@ pub fn read_rgb(backend: &mut dyn Backend, buffer: BufferId, width: u32, height:
     let words = backend.read_buffer(buffer, 0, 3 * width as u64 * height as u64)?;
     let data = words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
     Ok(RgbImage { width, height, data })
+}
+
+/// One frame of a single-layer method (`what`, for errors) over `image` and its `depth`: checks
+/// them and the lens, uploads them as a one-slot layered input, and hands `run` the frame to record
+/// and submit through its context. Returns the output image with what `run` returned.
+pub fn one_layer_frame<T>(
+    backend: &mut dyn Backend,
+    what: &str,
+    image: &RgbImage,
+    depth: &[f32],
+    lens: &ThinLens,
+    run: impl FnOnce(&mut dyn Backend, &Frame) -> Result<T>,
+) -> Result<(RgbImage, T)> {
+    let pixels = image.width as u64 * image.height as u64;
+    if pixels == 0 || image.data.len() as u64 != pixels || depth.len() as u64 != pixels {
+        return Err(Error::InvalidArgument(format!(
+            "{what} needs a non-empty {}x{} image with one depth per pixel ({} colours, {} depths)",
+            image.width,
+            image.height,
+            image.data.len(),
+            depth.len()
+        )));
+    }
+    if !lens.is_valid() {
+        return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
+    }
+    let slots: Vec<u32> = image.data.iter().zip(depth).flat_map(|(c, z)| [c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]).collect();
+    let sizes = [(4 * pixels, "one-layer/input"), (pixels, "one-layer/input-counts"), (3 * pixels, "one-layer/out")];
+    with_buffers(backend, &sizes, |backend, b| {
+        backend.write_buffer(b[0], 0, &slots)?;
+        backend.write_buffer(b[1], 0, &vec![1u32; pixels as usize])?;
+        let ran = run(backend, &Frame::layers(image.width, image.height, 1, *lens, b[0], b[1], b[2]))?;
+        Ok((read_rgb(backend, b[2], image.width, image.height)?, ran))
+    })
 }

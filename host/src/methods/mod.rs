@@ -6,4 +6,5 @@ pub mod buffers;
 pub mod gather;
 pub mod layered;
 pub mod raytrace;
+pub mod ring_gather;
 pub mod splat;

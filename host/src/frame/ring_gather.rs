@@ -1,0 +1,175 @@
+//! The engine-grade gather (kernels and their rules in `dof_shaders::ring_gather`) as a frame
+//! context: half-resolution fields over a fixed budget of sample rings, every buffer bound at
+//! creation and nothing planned on the host, so its cost is fixed by the frame's size and the ring
+//! count, not by the blur.
+
+use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_front, record_input, record_output};
+use crate::backend::{Backend, BufferId, push_words};
+use crate::error::{Error, Result};
+use crate::methods::buffers::groups_for;
+use dof_shaders::ring_gather::{
+    FIELD_WORDS, HALF_WORDS, RING_GATHER, RING_GATHER_COMPOSITE, RING_GATHER_DILATE, RING_GATHER_DOWNSAMPLE, RingGatherParams,
+};
+
+/// What engines ship by default: about five rings (Unreal Engine's Diaphragm DoF), 91 samples a
+/// half-resolution pixel. Fixed before anything was compared with it.
+pub const DEFAULT_RINGS: u32 = 5;
+/// The quality knob's range: 1 ring (7 samples) to 8 rings (217 samples).
+pub const MAX_RINGS: u32 = 8;
+/// Default cap on the CoC radius, pixels of the frame (32 half-resolution pixels).
+pub const DEFAULT_MAX_RADIUS: u32 = 64;
+/// Largest cap accepted: the tile dilation's neighbourhood grows with it (17x17 tiles at 128 px).
+pub const MAX_RADIUS: u32 = 128;
+
+/// The engine-grade gather's settings.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RingGatherOptions {
+    /// Sample rings at half resolution, 1 to [`MAX_RINGS`].
+    pub rings: u32,
+    /// Cap on the CoC radius, pixels, 1 to [`MAX_RADIUS`].
+    pub max_radius: u32,
+}
+
+impl Default for RingGatherOptions {
+    fn default() -> Self {
+        RingGatherOptions { rings: DEFAULT_RINGS, max_radius: DEFAULT_MAX_RADIUS }
+    }
+}
+
+impl RingGatherOptions {
+    /// Refuses a ring count or radius cap out of range.
+    pub fn check(&self) -> Result<()> {
+        if !(1..=MAX_RINGS).contains(&self.rings) {
+            return Err(Error::InvalidArgument(format!("the ring gather takes 1 to {MAX_RINGS} rings, got {}", self.rings)));
+        }
+        if !(1..=MAX_RADIUS).contains(&self.max_radius) {
+            return Err(Error::InvalidArgument(format!(
+                "the ring gather's CoC radius cap is 1 to {MAX_RADIUS} px, got {}",
+                self.max_radius
+            )));
+        }
+        Ok(())
+    }
+}
+
+/// What a ring-gather context is created for.
+#[derive(Clone, Debug)]
+pub struct RingGatherContextDesc {
+    pub max_width: u32,
+    pub max_height: u32,
+    /// Most slots per pixel of a multi-layer input (the gather reads the front one).
+    pub max_layers: u32,
+    pub options: RingGatherOptions,
+    /// Hold the buffers that image inputs and outputs go through.
+    pub image_io: bool,
+}
+
+impl RingGatherContextDesc {
+    pub fn new(max_width: u32, max_height: u32, max_layers: u32) -> Self {
+        RingGatherContextDesc { max_width, max_height, max_layers, options: RingGatherOptions::default(), image_io: false }
+    }
+}
+
+/// The buffers one frame's passes read and write.
+struct Passes {
+    /// The front layer: 3 words a pixel, and its depth.
+    color: BufferId,
+    depth: BufferId,
+    /// Half-resolution colour and signed CoC ([`HALF_WORDS`] a half-resolution pixel).
+    half: BufferId,
+    /// Each tile's largest near-field radius, then dilated.
+    tiles: BufferId,
+    dilated: BufferId,
+    /// The background and near fields ([`FIELD_WORDS`] a half-resolution pixel).
+    fields: BufferId,
+}
+
+/// A ring-gather context (see the [module docs](crate::frame)).
+pub struct RingGatherContext {
+    desc: RingGatherContextDesc,
+    passes: Passes,
+    io: Option<ImageIo>,
+    owned: Owned,
+}
+
+impl RingGatherContext {
+    pub fn new(backend: &mut dyn Backend, desc: &RingGatherContextDesc) -> Result<Self> {
+        desc.options.check()?;
+        let (w, h) = (desc.max_width, desc.max_height);
+        if w == 0 || h == 0 || desc.max_layers == 0 {
+            return Err(Error::InvalidArgument(format!("a ring-gather context for an empty {w}x{h} extent with {} layers", desc.max_layers)));
+        }
+        let pixels = w as u64 * h as u64;
+        let max_words = backend.limits().max_buffer_bytes / 4;
+        if 4 * pixels * desc.max_layers as u64 > max_words {
+            return Err(Error::TooLarge { what: "input slots (words)".into(), size: 4 * pixels * desc.max_layers as u64, limit: max_words });
+        }
+        let shape = RingGatherParams { width: w, height: h, ..Default::default() };
+        let half = shape.half_width() as u64 * shape.half_height() as u64;
+        let tiles = shape.tiles_x() as u64 * shape.tiles_y() as u64;
+        let mut owned = Owned::default();
+        let made = (|| {
+            let passes = Passes {
+                color: owned.make(backend, 3 * pixels, "ring-gather/color")?,
+                depth: owned.make(backend, pixels, "ring-gather/depth")?,
+                half: owned.make(backend, HALF_WORDS as u64 * half, "ring-gather/half")?,
+                tiles: owned.make(backend, tiles, "ring-gather/tiles")?,
+                dilated: owned.make(backend, tiles, "ring-gather/dilated")?,
+                fields: owned.make(backend, FIELD_WORDS as u64 * half, "ring-gather/fields")?,
+            };
+            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
+            Ok((passes, io))
+        })();
+        let ((passes, io), owned) = owned.or_free(backend, made)?;
+        let ctx = RingGatherContext { desc: desc.clone(), passes, io, owned };
+        // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own work.
+        let mut kernels = dof_shaders::ring_gather::KERNELS.to_vec();
+        kernels.extend(dof_shaders::frame_io::KERNELS);
+        if let Err(e) = backend.prepare(&kernels, &[]).and_then(|_| backend.submit().map(drop)) {
+            ctx.destroy(backend);
+            return Err(e);
+        }
+        Ok(ctx)
+    }
+
+    pub fn destroy(self, backend: &mut dyn Backend) {
+        self.owned.free(backend);
+    }
+
+    pub fn device_bytes(&self) -> u64 {
+        self.owned.bytes()
+    }
+
+    pub fn options(&self) -> RingGatherOptions {
+        self.desc.options
+    }
+
+    /// Changes the ring count or the radius cap for the frames recorded next (no allocation: the
+    /// buffers do not depend on them).
+    pub fn set_options(&mut self, options: RingGatherOptions) -> Result<()> {
+        options.check()?;
+        self.desc.options = options;
+        Ok(())
+    }
+
+    /// Records one frame: the front layer of the input, then downsampling, tile dilation, the
+    /// gather over rings and the composite.
+    pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        let d = &self.desc;
+        check_frame(backend, f, (d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        let slots = record_input(backend, f, self.io.as_ref())?;
+        let output = output_buffer(f, self.io.as_ref())?;
+        let b = &self.passes;
+        record_front(backend, f, slots, b.color, b.depth)?;
+        let p = RingGatherParams { width: f.width, height: f.height, rings: d.options.rings, max_radius: d.options.max_radius, lens: f.lens };
+        let params = push_words(&p);
+        let tile_groups = [p.tiles_x(), p.tiles_y(), 1];
+        backend.dispatch(&RING_GATHER_DOWNSAMPLE, tile_groups, &[b.color, b.depth, b.half, b.tiles], &params, "ring-gather/downsample")?;
+        let tiles = p.tiles_x() as u64 * p.tiles_y() as u64;
+        backend.dispatch(&RING_GATHER_DILATE, groups_for(&RING_GATHER_DILATE, tiles), &[b.tiles, b.dilated], &params, "ring-gather/dilate")?;
+        backend.dispatch(&RING_GATHER, tile_groups, &[b.half, b.dilated, b.fields], &params, "ring-gather")?;
+        let pixel_groups = [f.width.div_ceil(8), f.height.div_ceil(8), 1];
+        backend.dispatch(&RING_GATHER_COMPOSITE, pixel_groups, &[b.color, b.depth, b.fields, output], &params, "ring-gather/composite")?;
+        record_output(backend, f, self.io.as_ref())
+    }
+}

@@ -32,6 +32,11 @@ pub enum FrameMethod {
     Bokeh,
 }
 
+/// The method's name as the command line spells it.
+fn method_name(method: FrameMethod) -> String {
+    clap::ValueEnum::to_possible_value(&method).map_or_else(|| format!("{method:?}"), |v| v.get_name().to_string())
+}
+
 #[derive(clap::Args)]
 pub struct FrameArgs {
     #[arg(long, value_enum, default_value_t = FrameMethod::Multilayer)]
@@ -91,7 +96,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     let c = measured.counters;
     if args.json {
         let json = serde_json::json!({
-            "method": format!("{:?}", args.method).to_lowercase(),
+            "method": method_name(args.method),
             "merge": args.merge.name(),
             "path": if args.one_shot { "one-shot" } else { "frame-api" },
             "scene": args.scene,
@@ -120,7 +125,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     println!(
         "{} {} merge {} on {} ({}), {}x{} with {} layers, {} frames after a warm-up ({})",
         args.scene,
-        format!("{:?}", args.method).to_lowercase(),
+        method_name(args.method),
         args.merge.name(),
         b.kind(),
         b.device_name(),

@@ -155,23 +155,35 @@ pub fn accumulate_pass<G: Group, M: Mem>(
         let n = if len - start < THREADS { len - start } else { THREADS };
         g.each(|lid| {
             let (ok, x, y) = pixel(lid);
-            let mut live = ok && get(sh, USED, lid) < 1.0 - SATURATED;
+            // The pixel's state in registers for the walk: workgroup memory indexed by the
+            // invocation is a gather or scatter per access on a SIMD implementation (lavapipe).
+            let sharp_z = get(sh, SHARP_Z, lid);
+            let mut used = get(sh, USED, lid);
+            let mut acc = [get(sh, ACC_R, lid), get(sh, ACC_G, lid), get(sh, ACC_B, lid)];
+            let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
+            let mut live = ok && used < 1.0 - SATURATED;
             let mut k = 0;
             while live && k < n {
-                let (dx, dy) = (x as f32 + 0.5 - get(sh, CH_X, k), y as f32 + 0.5 - get(sh, CH_Y, k));
+                let (dx, dy) = (px - get(sh, CH_X, k), py - get(sh, CH_Y, k));
                 let s = get(sh, CH_S, k);
                 let d2 = dx * dx + dy * dy;
-                if get(sh, CH_Z, k) >= get(sh, SHARP_Z, lid) {
+                if get(sh, CH_Z, k) >= sharp_z {
                     // The pixel's own sharp front lies in front of the rest of the list.
                     live = false;
                 } else if d2 < s * s {
                     let a = get(sh, CH_A, k) * shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask);
-                    let rest = 1.0 - get(sh, USED, lid);
-                    blend(sh, lid, if a < rest { a } else { rest }, [get(sh, CH_R, k), get(sh, CH_G, k), get(sh, CH_B, k)]);
-                    live = get(sh, USED, lid) < 1.0 - SATURATED;
+                    let rest = 1.0 - used;
+                    let a = if a < rest { a } else { rest };
+                    acc = [acc[0] + a * get(sh, CH_R, k), acc[1] + a * get(sh, CH_G, k), acc[2] + a * get(sh, CH_B, k)];
+                    used += a;
+                    live = used < 1.0 - SATURATED;
                 }
                 k += 1;
             }
+            set(sh, ACC_R, lid, acc[0]);
+            set(sh, ACC_G, lid, acc[1]);
+            set(sh, ACC_B, lid, acc[2]);
+            set(sh, USED, lid, used);
             if ok {
                 sh[VISITED + lid as usize] += k;
             }

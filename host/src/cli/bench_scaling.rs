@@ -31,7 +31,8 @@ pub struct ScalingArgs {
     #[arg(long, default_value_t = 3)]
     runs: usize,
     /// Seconds a run may take; once a point is over it, the larger points of that method's series
-    /// on that backend are skipped (and reported as skipped).
+    /// on that backend are skipped (and reported as skipped), as is a point whose time,
+    /// extrapolated from the smaller ones, is over 3 budgets.
     #[arg(long, default_value_t = DEFAULT_BUDGET_S)]
     budget_s: f64,
     /// Folder for scaling.json, scaling.md and the plots.

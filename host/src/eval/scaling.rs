@@ -14,8 +14,9 @@
 //!
 //! The budget: once a point of a series (one method on one backend along one axis) takes longer
 //! than `budget_s` a run, the larger points of that series are not run, and are reported as skipped
-//! with the reason. A warm-up over the budget is the point's only run. A run that fails skips the
-//! rest of its series the same way.
+//! with the reason; so is a point whose time, extrapolated from the smaller points of its series, is
+//! over [`PREDICTED_BUDGETS`] budgets. A warm-up over the budget is the point's only run. A run that
+//! fails skips the rest of its series the same way.
 
 use super::methods::{Method, MethodInput, Setting, registry};
 use super::plot::{Axis, Figure, Mark, Series, Shape, palette};
@@ -37,6 +38,9 @@ pub const DEFAULT_SIZES: [(u32, u32); 3] = [(640, 360), (1280, 720), (1920, 1080
 pub const DEFAULT_COCS: [f64; 6] = [4.0, 8.0, 16.0, 32.0, 64.0, 96.0];
 /// Seconds a run may take before the larger points of its series are skipped, by default.
 pub const DEFAULT_BUDGET_S: f64 = 20.0;
+/// A point whose run time, extrapolated from the smaller points of its series, exceeds this many
+/// budgets is not run: one run far over the budget would cost more than the rest of the sweep.
+pub const PREDICTED_BUDGETS: f64 = 3.0;
 /// Largest side the sweep accepts (a 4K frame is 3840 wide).
 const MAX_SIDE: u32 = 8192;
 
@@ -281,6 +285,8 @@ pub fn scaling(options: &ScalingOptions, backends: &mut [Box<dyn Backend>]) -> R
     };
     // Per (axis, method, backend): why the rest of the series is skipped.
     let mut stopped: BTreeMap<(usize, usize, usize), String> = BTreeMap::new();
+    // Per series: (x, wall ms) of the points measured so far.
+    let mut history: BTreeMap<(usize, usize, usize), Vec<(f64, f64)>> = BTreeMap::new();
     let mut cocs = options.cocs.clone();
     cocs.sort_by(f64::total_cmp);
     cocs.dedup();
@@ -335,6 +341,22 @@ pub fn scaling(options: &ScalingOptions, backends: &mut [Box<dyn Backend>]) -> R
                     SweepAxis::Resolution => format!("{w}x{h}"),
                     SweepAxis::MaxCoc => format!("max CoC {max_coc_px:.0} px"),
                 };
+                let key = (axis_index, mi, bi);
+                let x = match axis {
+                    SweepAxis::Resolution => point.pixels as f64,
+                    SweepAxis::MaxCoc => max_coc_px,
+                };
+                if let Some(predicted) = history.get(&key).and_then(|h| predict(h, x)) {
+                    if point.skipped.is_none() && predicted > PREDICTED_BUDGETS * options.budget_s * 1e3 {
+                        let why = format!(
+                            "at {at} a run would take about {:.0} s (extrapolated from the smaller points), over {PREDICTED_BUDGETS} times the budget of {} s",
+                            predicted / 1e3,
+                            options.budget_s
+                        );
+                        point.skipped = Some(why.clone());
+                        stopped.insert(key, why);
+                    }
+                }
                 if point.skipped.is_none() {
                     match measure(method.as_ref(), b, &input, setting, options.runs, options.budget_s) {
                         Ok(m) => {
@@ -345,6 +367,7 @@ pub fn scaling(options: &ScalingOptions, backends: &mut [Box<dyn Backend>]) -> R
                             point.peak_device_bytes = Some(m.peak_device_bytes);
                             point.peak_rss_bytes = m.peak_rss_bytes;
                             point.figures = m.figures;
+                            history.entry(key).or_default().push((x, m.wall_ms));
                             if m.wall_ms > options.budget_s * 1e3 {
                                 let why = format!("at {at} a run took {:.1} s, over the budget of {} s", m.wall_ms / 1e3, options.budget_s);
                                 stopped.insert((axis_index, mi, bi), why);
@@ -374,6 +397,17 @@ pub fn scaling(options: &ScalingOptions, backends: &mut [Box<dyn Backend>]) -> R
         }
     }
     Ok(report)
+}
+
+/// The run time (ms) at `x` extrapolated from the series' measured `(x, ms)`: from the last point,
+/// growing as the last two points did, and at least linearly.
+fn predict(measured: &[(f64, f64)], x: f64) -> Option<f64> {
+    let &(x1, t1) = measured.last()?;
+    let k = match measured {
+        [.., a, b] => growth_exponent(&[*a, *b]).unwrap_or(1.0).max(1.0),
+        _ => 1.0,
+    };
+    (x > x1 && x1 > 0.0).then(|| t1 * (x / x1).powf(k))
 }
 
 /// The exponent `k` of `y ∝ x^k`, least squares in log-log over the points (at least two distinct x).
@@ -595,6 +629,17 @@ mod tests {
         assert!((growth_exponent(&[(100.0, 5.0), (400.0, 20.0)]).unwrap() - 1.0).abs() < 1e-9);
         assert_eq!(growth_exponent(&[(1.0, 1.0)]), None);
         assert_eq!(growth_exponent(&[(2.0, 1.0), (2.0, 3.0)]), None);
+    }
+
+    #[test]
+    fn extrapolation_is_at_least_linear() {
+        let near = |got: Option<f64>, want: f64| got.is_some_and(|g| (g - want).abs() < 1e-9 * want);
+        assert_eq!(predict(&[], 2.0), None);
+        assert_eq!(predict(&[(4.0, 10.0)], 2.0), None);
+        assert!(near(predict(&[(1.0, 10.0)], 4.0), 40.0));
+        // Quadratic growth between the last two points carries on; slower growth counts as linear.
+        assert!(near(predict(&[(1.0, 10.0), (2.0, 40.0)], 4.0), 160.0));
+        assert!(near(predict(&[(1.0, 10.0), (2.0, 11.0)], 4.0), 22.0));
     }
 
     #[test]

@@ -315,3 +315,33 @@ fn scaling_bench_writes_points_and_plots_and_reports_skips() {
     assert_fails_with(&["bench", "scaling", "--backend", "cpu", "--methods", "pinhole"], "runs no kernels");
     std::fs::remove_dir_all(&out).ok();
 }
+
+/// The engine-grade gather renders with its knob, refuses a ring count out of range or given to
+/// another method; `dof bench ratios` measures both methods per scene and backend and writes them.
+#[test]
+fn ring_gather_renders_and_cost_ratios_are_measured() {
+    let exr = temp("ring.exr");
+    let o = dof(&["render", "--scene", "simple", "--method", "ring-gather", "--rings", "3", "--width", "64", "--height", "36", "--out", exr.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("3 rings, 37 samples"), "{}", String::from_utf8_lossy(&o.stdout));
+    assert!(exr.exists() && exr.with_extension("png").exists());
+    assert_fails_with(&["render", "--scene", "simple", "--method", "ring-gather", "--rings", "0", "--width", "64", "--height", "36"], "1 to 8 rings");
+    assert_fails_with(&["render", "--scene", "simple", "--method", "gather", "--rings", "3"], "--rings is the ring gather's knob");
+
+    let out = temp("ratios");
+    let dir = out.to_str().unwrap();
+    let o = dof(&["bench", "ratios", "--backend", "cpu", "--scenes", "simple,fence", "--width", "64", "--height", "36", "--spp", "4", "--runs", "1", "--json", "--out", dir]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let rows: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON on stdout");
+    let rows = rows.as_array().expect("an array of rows");
+    assert_eq!(rows.len(), 2);
+    for r in rows {
+        let ratio = r["ratio"].as_f64().unwrap();
+        assert!(ratio.is_finite() && ratio > 0.0, "{r}");
+        assert_eq!(r["multilayer"]["setting"], "merge=4x4 tile=16");
+        assert_eq!(r["ring_gather"]["setting"], "rings=5");
+        assert!(r["ring_gather"]["psnr_db"].as_f64().unwrap() > 10.0, "{r}");
+    }
+    assert!(std::fs::read_to_string(out.join("ratios.md")).unwrap().contains("| fence | cpu |"));
+    assert_fails_with(&["bench", "ratios", "--backend", "cpu", "--scenes", "nowhere", "--width", "64", "--height", "36"], "nowhere");
+}

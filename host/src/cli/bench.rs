@@ -17,6 +17,9 @@ pub enum BenchCommand {
     /// Time and peak memory of every method against resolution and against the largest CoC, on
     /// `railing` with the blur scaled with the image: JSON, markdown and plots.
     Scaling(super::bench_scaling::ScalingArgs),
+    /// Multi-layer tiled splatting (merged 4x4) over the engine-grade gather (5 rings), per
+    /// built-in scene and backend, with each one's error against the exact reference.
+    Ratios(super::bench_ratios::RatiosArgs),
 }
 
 #[derive(clap::Args)]
@@ -41,6 +44,7 @@ pub fn run(cmd: &BenchCommand) -> anyhow::Result<()> {
         BenchCommand::Sort(args) => sort(args),
         BenchCommand::Frame(args) => super::bench_frame::run(args),
         BenchCommand::Scaling(args) => super::bench_scaling::run(args),
+        BenchCommand::Ratios(args) => super::bench_ratios::run(args),
     }
 }
 

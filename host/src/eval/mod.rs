@@ -11,6 +11,7 @@ pub mod figures;
 pub mod grid;
 pub mod methods;
 pub mod plot;
+pub mod ratios;
 pub mod report;
 pub mod scaling;
 pub mod sweep;

@@ -7,7 +7,8 @@
 
 use super::render::BackendArg;
 use dof::backend::{Backend, BufferId, CpuBackend, VulkanBackend, VulkanOptions};
-use dof::frame::{BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, SplatContext, SplatContextDesc};
+use dof::frame::{BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, SplatContext, SplatContextDesc};
+use dof::methods::ring_gather::{MAX_RINGS, RingGatherOptions};
 use dof::methods::bokeh::BokehOptions;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::splat::{Merge, SplatOptions};
@@ -57,16 +58,18 @@ enum Method {
     Multilayer,
     Tiled,
     Gather,
+    RingGather,
     Bokeh,
 }
 
-const METHODS: [Method; 4] = [Method::Multilayer, Method::Tiled, Method::Gather, Method::Bokeh];
+const METHODS: [Method; 5] = [Method::Multilayer, Method::Tiled, Method::Gather, Method::RingGather, Method::Bokeh];
 
 /// The contexts, one per method, all for the same maximum extent.
 struct Contexts {
     multilayer: SplatContext,
     tiled: SplatContext,
     gather: GatherContext,
+    ring_gather: RingGatherContext,
     bokeh: BokehContext,
 }
 
@@ -98,6 +101,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
         multilayer: SplatContext::new(b, &splat(Merge::X4))?,
         tiled: SplatContext::new(b, &splat(Merge::X2))?,
         gather: GatherContext::new(b, &GatherContextDesc::new(max, max, MAX_LAYERS))?,
+        ring_gather: RingGatherContext::new(b, &RingGatherContextDesc::new(max, max, MAX_LAYERS))?,
         bokeh: BokehContext::new(b, &BokehContextDesc::new(max, max, MAX_LAYERS, BokehOptions { lum_threshold: 0.5, ..Default::default() }))?,
     };
     let mut rng = Pcg64::seed_from_u64(args.seed);
@@ -108,7 +112,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
     let mut messages = Vec::new();
     let mut checked = 0u32;
     let mut resizes = 0u32;
-    let mut per_method = [0u32; 4];
+    let mut per_method = [0u32; METHODS.len()];
     let start = Instant::now();
     for frame in 0..total {
         if frame % args.every == 0 {
@@ -116,6 +120,11 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
             w = rng.random_range(1..=max);
             h = rng.random_range(1..=max);
             layers = if method == Method::Multilayer { rng.random_range(1..=MAX_LAYERS) } else { 1 };
+            if method == Method::RingGather {
+                // Its knob changes between frames without reallocating.
+                let options = RingGatherOptions { rings: rng.random_range(1..=MAX_RINGS), ..Default::default() };
+                ctx.ring_gather.set_options(options)?;
+            }
             // Pinhole to strong blur (up to about 40 px of CoC radius with the test lens).
             aperture = if rng.random_bool(0.1) { 0.0 } else { rng.random_range(0.0005f32..0.03) };
             let image = noise_with_sky(w, h, layers);
@@ -137,6 +146,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
             Method::Multilayer => ctx.multilayer.record(b, &f)?,
             Method::Tiled => ctx.tiled.record(b, &f)?,
             Method::Gather => ctx.gather.record(b, &f)?,
+            Method::RingGather => ctx.ring_gather.record(b, &f)?,
             Method::Bokeh => ctx.bokeh.record(b, &f)?,
         }
         b.submit()?;
@@ -163,10 +173,11 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
     let device_growth = b.counters().device_bytes as i64 - device_after_warm_up as i64;
     let seconds = start.elapsed().as_secs_f64();
     let device_bytes = b.counters().device_bytes;
-    let Contexts { multilayer, tiled, gather, bokeh } = ctx;
+    let Contexts { multilayer, tiled, gather, ring_gather, bokeh } = ctx;
     multilayer.destroy(b);
     tiled.destroy(b);
     gather.destroy(b);
+    ring_gather.destroy(b);
     bokeh.destroy(b);
     bufs.into_iter().for_each(|id| b.destroy_buffer(id));
     let left = b.counters().device_bytes;
@@ -179,7 +190,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
             "validation": validation,
             "frames": args.frames,
             "warm_up_frames": warm_up,
-            "frames_per_method": { "multilayer": per_method[0], "tiled": per_method[1], "gather": per_method[2], "bokeh": per_method[3] },
+            "frames_per_method": { "multilayer": per_method[0], "tiled": per_method[1], "gather": per_method[2], "ring_gather": per_method[3], "bokeh": per_method[4] },
             "resizes": resizes,
             "checked_frames": checked,
             "validation_messages": messages.len(),
@@ -194,7 +205,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
         println!("{json}");
     } else {
         println!(
-            "{} frames (+{warm_up} warm-up) on {} ({}), validation {}: {} multi-layer, {} single-layer, {} gather, {} bokeh; {resizes} resizes; {checked} results checked finite; {seconds:.1} s",
+            "{} frames (+{warm_up} warm-up) on {} ({}), validation {}: {} multi-layer, {} single-layer, {} gather, {} ring gather, {} bokeh; {resizes} resizes; {checked} results checked finite; {seconds:.1} s",
             args.frames,
             b.kind(),
             b.device_name(),
@@ -202,7 +213,8 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
             per_method[0],
             per_method[1],
             per_method[2],
-            per_method[3]
+            per_method[3],
+            per_method[4]
         );
         println!(
             "after the warm-up: heap {:+} bytes (slack {} MB), resident set {:+.1} MB (with the driver's memory), device memory {:+} bytes (held {:.1} MB, {left} left after destroying everything); validation messages: {}",

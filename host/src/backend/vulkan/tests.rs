@@ -187,6 +187,9 @@ fn counters_are_exact() -> Result<()> {
     assert!(vk.read_buffer(b, 1, 1).is_err());
     assert!(vk.write_buffer(b, 1, &[1]).is_err());
     assert_eq!(vk.counters(), c);
+    // A reset peak is what is held now.
+    vk.reset_peak_device_bytes();
+    assert_eq!(vk.counters().peak_device_bytes, 4);
     assert_eq!(vk.validation_messages(), Vec::<String>::new());
     Ok(())
 }

@@ -317,7 +317,7 @@ fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens
 
 /// How far an EXR's edge pixels are extended: the largest CoC radius among its fragments, at most
 /// [`MAX_GUARD_BAND`] (what the guard band of a rendered scene would be for the frame's content).
-fn edge_margin(layers: &LayeredImage, lens: &ThinLens) -> u32 {
+pub(crate) fn edge_margin(layers: &LayeredImage, lens: &ThinLens) -> u32 {
     let used = layers.counts.iter().enumerate().flat_map(|(p, &n)| {
         let start = p * layers.max_layers as usize;
         layers.fragments[start..start + n.min(layers.max_layers) as usize].iter()

@@ -50,7 +50,6 @@ pub struct Device {
     pub cb: vk::CommandBuffer,
     /// Signalled when the frame's submission completes: the one host wait per frame.
     pub fence: vk::Fence,
-    pub name: String,
 }
 
 impl Device {
@@ -120,7 +119,7 @@ impl Device {
                     break;
                 }
             }
-            let (physical, queue_family, name) =
+            let (physical, queue_family, _name) =
                 chosen.context("no Vulkan 1.2 device that presents to this window with the extensions the library needs (--device filters by name)")?;
             let priorities = [1.0];
             let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(queue_family).queue_priorities(&priorities)];
@@ -139,7 +138,7 @@ impl Device {
             let cb = device.allocate_command_buffers(&alloc)?[0];
             // Created signalled: the first frame's wait returns at once.
             let fence = device.create_fence(&vk::FenceCreateInfo::default().flags(vk::FenceCreateFlags::SIGNALED), None)?;
-            Ok(Device { entry, instance, messenger, log, physical, device, queue_family, queue, pool, cb, fence, name })
+            Ok(Device { entry, instance, messenger, log, physical, device, queue_family, queue, pool, cb, fence })
         }
     }
 

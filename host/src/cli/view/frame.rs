@@ -119,6 +119,9 @@ struct App<'a> {
     last_frame: Option<Instant>,
     last_report: Instant,
     closed: bool,
+    /// Wall time between frames and GPU time, summed over every frame but the first (which makes
+    /// the pipelines): for the summary at exit.
+    timed: (u32, f64, u32, f64),
 }
 
 pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result<()> {
@@ -145,6 +148,7 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
         last_frame: None,
         last_report: Instant::now(),
         closed: false,
+        timed: (0, 0.0, 0, 0.0),
     };
     event_loop.run_app(&mut app).map_err(|e| anyhow!("the event loop failed: {e}"))?;
     let messages = app.finish();
@@ -156,6 +160,15 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
         if !messages.is_empty() {
             bail!("the validation layer reported {} message(s)", messages.len());
         }
+    }
+    let (n, wall, gn, gpu) = app.timed;
+    if n > 0 && gn > 0 {
+        println!(
+            "frame times after the first frame: {:.1} ms a frame ({:.2} FPS) over {n} frames, GPU {:.1} ms over {gn}",
+            wall / n as f64,
+            1e3 * n as f64 / wall,
+            gpu / gn as f64
+        );
     }
     println!("exited cleanly after {} frames", app.frames_recorded);
     Ok(())
@@ -241,6 +254,8 @@ impl App<'_> {
         let renderer = egui_ash_renderer::Renderer::with_default_allocator(&d.instance, d.physical, d.device.clone(), sc.render_pass, options)
             .map_err(|e| anyhow!("the UI renderer: {e}"))?;
         let egui_ctx = egui::Context::default();
+        // Smaller than egui's default: the windows that stay usable on lavapipe are small.
+        egui_ctx.set_zoom_factor(0.8);
         let egui_state = egui_winit::State::new(egui_ctx.clone(), egui::ViewportId::ROOT, &window, Some(window.scale_factor() as f32), None, None);
         self.stats.device = backend.device_name();
         self.stats.has_reference = self.source.has_reference();
@@ -292,6 +307,10 @@ impl App<'_> {
             let (stages, total) = stage_times(&times);
             self.stats.stages = stages;
             self.stats.gpu_ms = total;
+            if self.frames_recorded > 1 {
+                self.timed.2 += 1;
+                self.timed.3 += total;
+            }
         }
         if pending.report {
             if let Some(c) = &r.contexts {
@@ -324,7 +343,11 @@ impl App<'_> {
             if let Some((camera, lens, reference)) = &r.reference {
                 if *camera == self.camera && *lens == self.lens && reference.width == w && reference.height == h {
                     let psnr = dof::metrics::psnr(&image, reference)?;
-                    self.stats.error = Some(format!("PSNR {psnr:.2} dB against the reference ({REFERENCE_SAMPLES} samples a pixel); error x8 below"));
+                    let text = format!("PSNR {psnr:.2} dB against the reference ({REFERENCE_SAMPLES} samples a pixel); error x8 below");
+                    if self.stats.error.as_ref() != Some(&text) {
+                        println!("error vs reference: {text}");
+                    }
+                    self.stats.error = Some(text);
                     let rgba: Vec<u8> = image
                         .data
                         .iter()
@@ -355,6 +378,10 @@ impl App<'_> {
         self.last_frame = Some(now);
         if dt > 0.0 {
             self.stats.frame_ms = 1e3 * dt;
+            if self.frames_recorded > 1 {
+                self.timed.0 += 1;
+                self.timed.1 += 1e3 * dt;
+            }
             self.stats.fps = if self.stats.fps == 0.0 { 1.0 / dt } else { 0.8 * self.stats.fps + 0.2 / dt };
         }
 
@@ -402,7 +429,10 @@ impl App<'_> {
         let output = r.egui_ctx.run(raw, |ctx| {
             panel.draw(ctx, stats, &lens_now);
             if let (true, Some(t)) = (panel.show_error && panel.visible, error_texture) {
-                egui::Window::new("error vs reference").default_pos([4.0, 200.0]).show(ctx, |ui| ui.image((t.id(), t.size_vec2())));
+                // Half the window wide, at its right.
+                let screen = ctx.content_rect();
+                let size = t.size_vec2() * (0.5 * screen.width() / t.size_vec2().x);
+                egui::Window::new("error vs reference").default_pos([screen.width() / 2.0, 4.0]).show(ctx, |ui| ui.image((t.id(), size)));
             }
         });
         r.egui_state.handle_platform_output(&r.window, output.platform_output);

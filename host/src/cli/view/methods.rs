@@ -184,15 +184,15 @@ impl Contexts {
     }
 }
 
-/// GPU time per stage (the label before the `/`: `splat`, `sort`, `gather`...), in first-seen
-/// order, and the total.
+/// GPU time per stage, in first-seen order, and the total.
 pub fn stage_times(times: &[CommandTime]) -> (Vec<(String, f64)>, f64) {
     let mut stages: Vec<(String, f64)> = Vec::new();
     for t in times {
-        let stage = t.label.split('/').next().unwrap_or(&t.label);
+        // Splatting's stages by name (plan, pack, merge, bin, accumulate...), the others by kind.
+        let top = t.label.split('/').next().unwrap_or(&t.label);
         let stage = match t.label.split('/').nth(1) {
-            Some(sub) if stage == "splat" => format!("splat/{sub}"),
-            _ => stage.to_string(),
+            Some(sub) if top == "splat" => sub.to_string(),
+            _ => top.to_string(),
         };
         match stages.iter_mut().find(|(l, _)| *l == stage) {
             Some((_, ms)) => *ms += t.ms,

@@ -35,9 +35,9 @@ pub struct ViewArgs {
     pub method: ViewMethod,
     /// Window size in pixels (an EXR is shown scaled to it). Small by default: on lavapipe (Mesa's
     /// CPU Vulkan) every pixel costs.
-    #[arg(long, default_value_t = 480)]
+    #[arg(long, default_value_t = 320)]
     pub width: u32,
-    #[arg(long, default_value_t = 270)]
+    #[arg(long, default_value_t = 180)]
     pub height: u32,
     /// Focus distance in scene units (planar); default the scene's.
     #[arg(long, allow_negative_numbers = true)]

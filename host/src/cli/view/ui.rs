@@ -59,7 +59,7 @@ impl Panel {
         if !self.visible {
             return;
         }
-        egui::Window::new("dof view").default_pos([4.0, 4.0]).default_open(true).resizable(false).show(ctx, |ui| {
+        egui::Window::new("dof view").default_pos([4.0, 4.0]).default_width(300.0).default_open(true).resizable(false).show(ctx, |ui| {
             ui.style_mut().spacing.slider_width = 110.0;
             ui.label(format!("{} | {}x{} | {}", stats.device, stats.frame[0], stats.frame[1], stats.present_mode));
             ui.label(format!("{:.1} FPS ({:.1} ms a frame), GPU {:.2} ms", stats.fps, stats.frame_ms, stats.gpu_ms));
@@ -100,13 +100,12 @@ impl Panel {
                 });
             });
             ui.label(format!("lens: f = {:.3}, aperture radius {:.4}, focus {:.3}", lens.focal_length, lens.aperture_radius, lens.focus_distance));
-            ui.collapsing("GPU time per stage", |ui| {
-                for (stage, ms) in &stats.stages {
-                    ui.label(format!("{stage}: {ms:.2} ms"));
-                }
-                ui.label(format!("layers re-peeled in {:.1} ms when the view changes", stats.layers_ms));
+            egui::CollapsingHeader::new("GPU time per stage (ms)").default_open(true).show(ui, |ui| {
+                let stages: Vec<String> = stats.stages.iter().map(|(stage, ms)| format!("{stage} {ms:.1}")).collect();
+                ui.label(stages.join(", "));
+                ui.label(format!("layers: peeled in {:.0} ms (when the view or lens changes)", stats.layers_ms));
             });
-            ui.collapsing("what the frame left out", |ui| {
+            egui::CollapsingHeader::new("what the frame left out").default_open(true).show(ui, |ui| {
                 for line in &stats.report {
                     ui.label(line);
                 }

@@ -65,43 +65,50 @@ fn the_viewer_screenshot_matches_dof_render() {
     let glb = dir.join("simple.glb");
     run(dof().args(["scenes", "--only", "simple", "--width", "256", "--height", "144", "--export"]).arg(&dir));
     assert!(glb.exists());
-    let exr = dir.join("render.exr");
-    run(dof()
-        .args(["render", "--scene"])
-        .arg(&glb)
-        .args(["--method", "multilayer", "--merge", "none", "--backend", "vulkan", "--width", "256", "--height", "144", "--out"])
-        .arg(&exr));
-    let shot = dir.join("view.png");
     let g = glb.to_str().unwrap();
-    let s = shot.to_str().unwrap();
-    let out = view(&["--scene", g, "--method", "multilayer", "--merge", "none", "--width", "256", "--height", "144", "--frames", "2", "--screenshot", s, "--hide-ui"]);
-    assert!(out.status.success(), "dof view failed");
-    let (w, h, pixels) = read_png(&shot);
-    let (want, _) = dof::io::read_rgb_exr(&exr).unwrap();
-    assert_eq!((w, h), (want.width, want.height));
-    let mut worst = 0u8;
-    let mut sum = 0u64;
-    for (got, want) in pixels.chunks_exact(3).zip(&want.data) {
-        for c in 0..3 {
-            let d = got[c].abs_diff(to_u8(srgb_oetf(want[c])));
-            worst = worst.max(d);
-            sum += d as u64;
+    let mut failures = Vec::new();
+    // Each method through its own context; multi-layer without merging, the others as the viewer
+    // starts them (single-layer splatting merges 4x4).
+    for (method, merge) in [("multilayer", "none"), ("tiled", "4x4"), ("gather", "4x4"), ("bokeh", "4x4")] {
+        let exr = dir.join(format!("render-{method}.exr"));
+        run(dof()
+            .args(["render", "--scene", g, "--method", method, "--merge", merge, "--backend", "vulkan", "--width", "256", "--height", "144", "--out"])
+            .arg(&exr));
+        let shot = dir.join(format!("view-{method}.png"));
+        let s = shot.to_str().unwrap();
+        let out = view(&["--scene", g, "--method", method, "--merge", merge, "--width", "256", "--height", "144", "--frames", "2", "--screenshot", s, "--hide-ui"]);
+        assert!(out.status.success(), "dof view --method {method} failed");
+        let (w, h, pixels) = read_png(&shot);
+        let (want, _) = dof::io::read_rgb_exr(&exr).unwrap();
+        assert_eq!((w, h), (want.width, want.height));
+        let mut worst = 0u8;
+        let mut sum = 0u64;
+        for (got, want) in pixels.chunks_exact(3).zip(&want.data) {
+            for c in 0..3 {
+                let d = got[c].abs_diff(to_u8(srgb_oetf(want[c])));
+                worst = worst.max(d);
+                sum += d as u64;
+            }
         }
+        let mean = sum as f64 / pixels.len() as f64;
+        println!("{method}: screenshot vs dof render: largest difference {worst}/255, mean {mean:.4}");
+        if !(worst <= 2 && mean <= 0.1) {
+            failures.push(format!("{method}: largest {worst}/255, mean {mean:.4}"));
+        }
+        // Not a blank frame: the render has structure, and so must the screenshot.
+        let distinct: std::collections::HashSet<&[u8]> = pixels.chunks_exact(3).collect();
+        assert!(distinct.len() > 100, "{method}: the screenshot has only {} colours", distinct.len());
     }
-    let mean = sum as f64 / pixels.len() as f64;
-    println!("screenshot vs dof render: largest difference {worst}/255, mean {mean:.4}");
-    assert!(worst <= 2 && mean <= 0.1, "the screenshot differs from dof render: largest {worst}/255, mean {mean:.4}");
-    // Not a blank or unblurred frame: the render has structure, and so must the screenshot.
-    let distinct: std::collections::HashSet<&[u8]> = pixels.chunks_exact(3).collect();
-    assert!(distinct.len() > 100, "the screenshot has only {} colours", distinct.len());
+    assert!(failures.is_empty(), "screenshots differ from dof render: {failures:?}");
 }
 
-/// A resize and every method (and merge level, tile size and a bladed aperture) switched on the
-/// way, with the validation layer and synchronization validation on: it must say nothing.
+/// A resize and every method (and merge level, tile size, a bladed aperture, a click to focus, an
+/// orbit and the error against the reference) switched on the way, with the validation layer and
+/// synchronization validation on: it must say nothing.
 #[test]
 fn scripted_resize_and_method_switches_leave_validation_silent() {
-    let script = "method=tiled,method=gather,resize=320x176,method=bokeh,blades=6,method=multilayer,merge=2x2,tile=32,focus=3";
-    let out = view(&["--scene", "simple", "--width", "256", "--height", "144", "--validation", "--frames", "10", "--script", script]);
+    let script = "method=tiled,click=128:72,method=gather,resize=320x176,method=bokeh,blades=6,method=multilayer,merge=2x2,tile=32,orbit=15,error";
+    let out = view(&["--scene", "simple", "--width", "256", "--height", "144", "--validation", "--frames", "12", "--script", script]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "dof view failed");
     assert!(text.contains("validation: 0 message(s)"), "validation did not report silence");
@@ -109,7 +116,9 @@ fn scripted_resize_and_method_switches_leave_validation_silent() {
     for m in ["Tiled", "Gather", "Bokeh", "Multilayer"] {
         assert!(text.contains(&format!("Method({m})")), "method {m} was not switched to");
     }
-    assert!(text.contains("exited cleanly after 10 frames"));
+    assert!(text.contains("focus: "), "the click did not focus");
+    assert!(text.contains("error vs reference: PSNR"), "the error against the reference was not computed");
+    assert!(text.contains("exited cleanly after 12 frames"));
 }
 
 /// Closing the window (the scripted close goes through the same path as the window manager's close

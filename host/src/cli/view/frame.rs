@@ -457,6 +457,7 @@ impl App<'_> {
                 if focused.thin_lens(&self.camera).is_ok() {
                     self.lens = focused;
                     self.panel.focus = depth;
+                    println!("focus: {depth:.4} (the depth under the cursor at {x:.0},{y:.0})");
                 }
             }
         }
@@ -660,6 +661,7 @@ impl App<'_> {
             Step::Merge(m) => self.panel.settings.merge = m,
             Step::Tile(t) => self.panel.settings.tile = t,
             Step::Orbit(deg) => orbit(&mut self.camera, deg.to_radians(), 0.0),
+            Step::Click(x, y) => self.controls.focus_click = Some((x, y)),
             Step::Error => self.panel.show_error = !self.panel.show_error,
             Step::Close => self.close(el),
         }

@@ -76,7 +76,8 @@ pub struct ViewArgs {
     pub hide_ui: bool,
     /// Changes applied one a frame, for tests: `method=NAME`, `resize=WxH`, `focus=D`,
     /// `f-number=N`, `radius=R`, `blades=N`, `merge=none|2x2|4x4`, `tile=N`, `orbit=DEGREES`,
-    /// `error` (toggle the error against the reference), `close` (as closing the window).
+    /// `click=X:Y` (focus on what is under window pixel X,Y), `error` (toggle the error against
+    /// the reference), `close` (as closing the window).
     #[arg(long, value_delimiter = ',')]
     pub script: Vec<String>,
     /// Pick the Vulkan device whose name contains this.

@@ -16,6 +16,8 @@ pub enum Step {
     Merge(Merge),
     Tile(u32),
     Orbit(f32),
+    /// A click at window pixel (x, y): focus on what is under it.
+    Click(f64, f64),
     Error,
     Close,
 }
@@ -70,8 +72,12 @@ fn step(s: &str) -> Result<Step> {
             _ => bail!("--script {s}: the tile edge is 16, 24 or 32"),
         },
         "orbit" => Step::Orbit(number(value)?),
+        "click" => match value.split_once(':').map(|(x, y)| (number(x), number(y))) {
+            Some((Ok(x), Ok(y))) if x >= 0.0 && y >= 0.0 => Step::Click(x as f64, y as f64),
+            _ => bail!("--script {s}: expected click=X:Y in window pixels"),
+        },
         "error" => Step::Error,
         "close" => Step::Close,
-        _ => bail!("--script {s}: unknown step (method=, resize=, focus=, f-number=, radius=, blades=, merge=, tile=, orbit=, error, close)"),
+        _ => bail!("--script {s}: unknown step (method=, resize=, focus=, f-number=, radius=, blades=, merge=, tile=, orbit=, click=, error, close)"),
     })
 }

@@ -78,28 +78,44 @@ fn the_viewer_screenshot_matches_dof_render() {
         let s = shot.to_str().unwrap();
         let out = view(&["--scene", g, "--method", method, "--merge", merge, "--width", "256", "--height", "144", "--frames", "2", "--screenshot", s, "--hide-ui"]);
         assert!(out.status.success(), "dof view --method {method} failed");
-        let (w, h, pixels) = read_png(&shot);
-        let (want, _) = dof::io::read_rgb_exr(&exr).unwrap();
-        assert_eq!((w, h), (want.width, want.height));
-        let mut worst = 0u8;
-        let mut sum = 0u64;
-        for (got, want) in pixels.chunks_exact(3).zip(&want.data) {
-            for c in 0..3 {
-                let d = got[c].abs_diff(to_u8(srgb_oetf(want[c])));
-                worst = worst.max(d);
-                sum += d as u64;
-            }
-        }
-        let mean = sum as f64 / pixels.len() as f64;
-        println!("{method}: screenshot vs dof render: largest difference {worst}/255, mean {mean:.4}");
-        if !(worst <= 2 && mean <= 0.1) {
-            failures.push(format!("{method}: largest {worst}/255, mean {mean:.4}"));
-        }
-        // Not a blank frame: the render has structure, and so must the screenshot.
-        let distinct: std::collections::HashSet<&[u8]> = pixels.chunks_exact(3).collect();
-        assert!(distinct.len() > 100, "{method}: the screenshot has only {} colours", distinct.len());
+        compare(method, &shot, &exr, &mut failures);
     }
+    // An EXR (the multi-layer image `dof render --method layers` writes): a still image with its
+    // edges extended, shown at its own size.
+    let layers = dir.join("layers.exr");
+    run(dof().args(["render", "--scene", "simple", "--method", "layers", "--width", "160", "--height", "90", "--out"]).arg(&layers));
+    let l = layers.to_str().unwrap();
+    let exr = dir.join("render-exr.exr");
+    run(dof().args(["render", "--scene", l, "--method", "multilayer", "--focus", "3", "--f-number", "2", "--backend", "vulkan", "--out"]).arg(&exr));
+    let shot = dir.join("view-exr.png");
+    let out = view(&["--scene", l, "--method", "multilayer", "--merge", "none", "--focus", "3", "--f-number", "2", "--frames", "2", "--screenshot", shot.to_str().unwrap(), "--hide-ui"]);
+    assert!(out.status.success(), "dof view of an EXR failed");
+    compare("exr multilayer", &shot, &exr, &mut failures);
     assert!(failures.is_empty(), "screenshots differ from dof render: {failures:?}");
+}
+
+/// The screenshot against the render's EXR, encoded as the viewer's swapchain encodes (see above).
+fn compare(what: &str, shot: &Path, exr: &Path, failures: &mut Vec<String>) {
+    let (w, h, pixels) = read_png(shot);
+    let (want, _) = dof::io::read_rgb_exr(exr).unwrap();
+    assert_eq!((w, h), (want.width, want.height), "{what}: size");
+    let mut worst = 0u8;
+    let mut sum = 0u64;
+    for (got, want) in pixels.chunks_exact(3).zip(&want.data) {
+        for c in 0..3 {
+            let d = got[c].abs_diff(to_u8(srgb_oetf(want[c])));
+            worst = worst.max(d);
+            sum += d as u64;
+        }
+    }
+    let mean = sum as f64 / pixels.len() as f64;
+    println!("{what}: screenshot vs dof render: largest difference {worst}/255, mean {mean:.4}");
+    if !(worst <= 2 && mean <= 0.1) {
+        failures.push(format!("{what}: largest {worst}/255, mean {mean:.4}"));
+    }
+    // Not a blank frame: the render has structure, and so must the screenshot.
+    let distinct: std::collections::HashSet<&[u8]> = pixels.chunks_exact(3).collect();
+    assert!(distinct.len() > 100, "{what}: the screenshot has only {} colours", distinct.len());
 }
 
 /// A resize and every method (and merge level, tile size, a bladed aperture, a click to focus, an
@@ -145,6 +161,9 @@ fn the_viewer_refuses_bad_input_clearly() {
         (vec!["--screenshot", "x.png"], "--screenshot needs --frames"),
         (vec!["--script", "method=raytrace"], "the methods are multilayer, tiled, gather and bokeh"),
         (vec!["--blades", "2"], "--blades must be 0"),
+        (vec!["--width", "100000"], "--width must lie between"),
+        (vec!["--scene", "x.exr", "--f-number", "NaN"], "--f-number must be a positive finite number"),
+        (vec!["--screenshot", "x.jpg", "--frames", "1"], "--screenshot must name a .png file"),
     ] {
         let out = dof().arg("view").args(&args).env_remove("DISPLAY").output().unwrap();
         let err = String::from_utf8_lossy(&out.stderr);

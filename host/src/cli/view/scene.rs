@@ -9,7 +9,7 @@ use dof::io::read_layered_exr;
 use dof::layers::{LayeredImage, RgbImage};
 use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
 use dof::scene::{
-    self, Camera, GuardBand, LayerOptions, LensSettings, MeshScene, ReferenceOptions, Scene, ThinLens, Vec3, builtin, export_builtin_glb,
+    self, Camera, GuardBand, LayerOptions, LensSettings, MeshScene, ReferenceOptions, Scene, ThinLens, builtin, export_builtin_glb,
     load_gltf, load_gltf_slice,
 };
 use std::path::Path;
@@ -54,12 +54,7 @@ impl SceneSource {
             if report.total() > 0 {
                 eprintln!("note: {spec}: {report}");
             }
-            let (Some(focus), Some(aperture)) = (focus, aperture) else {
-                bail!("an EXR carries no lens: give --focus (planar focus distance, in the units of its Z channel) and --f-number or --aperture-radius")
-            };
-            let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), 40f32.to_radians(), layers.width, layers.height);
-            let mut lens = LensSettings::photographic(focus, 8.0);
-            lens.aperture = aperture;
+            let (camera, lens) = crate::cli::render::exr_view(&layers, focus, aperture, None)?;
             lens.thin_lens(&camera)?;
             return Ok(SceneSource { name, content: Content::Exr(layers), camera, lens });
         }

@@ -128,8 +128,10 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
     let event_loop = EventLoop::new().map_err(|e| anyhow!("cannot open the display (is DISPLAY set? under CI run with xvfb-run): {e}"))?;
     event_loop.set_control_flow(ControlFlow::Poll);
     let camera = source.camera;
-    let lens = source.lens;
-    let focus = lens.thin_lens(&camera)?.focus_distance;
+    // The focus as a distance from here on (a scene may focus on a point, which the camera could
+    // move past).
+    let focus = source.lens.thin_lens(&camera)?.focus_distance;
+    let lens = LensSettings { focus: Focus::Distance(focus), ..source.lens };
     let settings = MethodSettings { method: args.method, merge: args.merge, tile: args.tile, aperture: String::new() };
     let mut panel = Panel { visible: !args.hide_ui, settings, focus, aperture: lens.aperture, blades: args.blades, show_error: false };
     panel.settings.aperture = panel.shape();

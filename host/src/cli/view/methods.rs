@@ -72,7 +72,8 @@ impl Contexts {
     /// Makes sure the context for `s.method` exists with these settings and holds frames up to
     /// `max`. Only between frames (the last one completed): it may allocate and submit.
     pub fn prepare(&mut self, backend: &mut dyn Backend, s: &MethodSettings, max: [u32; 3]) -> Result<()> {
-        if max.iter().zip(self.max).any(|(a, b)| *a > b) {
+        let grew = max.iter().zip(self.max).any(|(a, b)| *a > b);
+        if grew {
             let grown = [max[0].max(self.max[0]), max[1].max(self.max[1]), max[2].max(self.max[2])];
             // The splatting context resizes itself; the others are made again on use.
             if let Some((_, ctx)) = &mut self.splat {
@@ -87,6 +88,7 @@ impl Contexts {
             self.max = grown;
         }
         let [w, h, l] = self.max;
+        let mut made = true;
         match s.method {
             ViewMethod::Multilayer | ViewMethod::Tiled => {
                 let key = MethodSettings { method: ViewMethod::Multilayer, ..s.clone() };
@@ -98,6 +100,8 @@ impl Contexts {
                     if let Some((_, old)) = self.splat.replace((key, ctx)) {
                         old.destroy(backend);
                     }
+                } else {
+                    made = false;
                 }
             }
             ViewMethod::Gather => {
@@ -105,6 +109,8 @@ impl Contexts {
                     let mut desc = GatherContextDesc::new(w, h, l);
                     desc.image_io = true;
                     self.gather = Some(GatherContext::new(backend, &desc)?);
+                } else {
+                    made = false;
                 }
             }
             ViewMethod::Bokeh => {
@@ -116,12 +122,16 @@ impl Contexts {
                     if let Some((_, old)) = self.bokeh.replace((s.aperture.clone(), ctx)) {
                         old.destroy(backend);
                     }
+                } else {
+                    made = false;
                 }
             }
         }
         // Creation recorded the zeroing of the new buffers in the backend's own command buffer:
         // run it now, so that no frame's begin_external has anything to flush.
-        backend.submit()?;
+        if made || grew {
+            backend.submit()?;
+        }
         Ok(())
     }
 

@@ -149,6 +149,42 @@ fn closing_the_viewer_exits_cleanly_without_leaks() {
     assert!(text.contains("exited cleanly after 1 frames"), "the close did not end the loop");
 }
 
+/// Real input through the X server (XTEST, with `xdotool`): a click focuses on the depth under the
+/// cursor and a drag orbits the camera.
+#[test]
+fn a_click_focuses_and_a_drag_orbits() {
+    let bin = env!("CARGO_BIN_EXE_dof");
+    let log = scratch("input").join("log.txt");
+    // The viewer in the background; once its first frame is up, a click at the window's centre
+    // (the scene's near box), then a drag to the right.
+    let script = format!(
+        r#"set -e
+"{bin}" view --scene simple --width 256 --height 144 --hide-ui --frames 14 > "{log}" 2>&1 &
+pid=$!
+for i in $(seq 600); do grep -q "first frame presented" "{log}" && break; kill -0 $pid || break; sleep 0.1; done
+wid=$(xdotool search --name "dof view" | head -n 1)
+xdotool mousemove --window "$wid" 100 72 click 1
+sleep 1
+xdotool mousemove --window "$wid" 60 72 mousedown 1 mousemove --window "$wid" 90 72 mousemove --window "$wid" 140 76 mouseup 1
+wait $pid"#,
+        log = log.display()
+    );
+    let display = std::env::var("DISPLAY").is_ok_and(|d| !d.is_empty());
+    let status = if display {
+        Command::new("sh").args(["-c", &script]).status()
+    } else {
+        Command::new("xvfb-run").args(["-a", "-s", "-screen 0 1024x768x24", "sh", "-c", &script]).status()
+    }
+    .expect("run xvfb-run and sh (apt-get install xvfb xdotool)");
+    let text = std::fs::read_to_string(&log).unwrap_or_default();
+    println!("{text}");
+    assert!(status.success(), "the viewer or xdotool failed (is xdotool installed?)");
+    assert!(text.contains("focus: "), "the click did not focus");
+    let view = |prefix: &str| text.lines().find_map(|l| l.strip_prefix(prefix)).map(|l| l.split(" --focus").next().unwrap().to_string());
+    let (start, end) = (view("view at the start: ").unwrap(), view("view at the end: ").unwrap());
+    assert_ne!(start, end, "the drag did not move the camera");
+}
+
 /// Bad input is a clear error before any window opens.
 #[test]
 fn the_viewer_refuses_bad_input_clearly() {

@@ -22,8 +22,9 @@ pub struct Controls {
 const ORBIT_PER_PIXEL: f32 = 0.006;
 
 impl Controls {
-    /// Applies one window event the UI did not take to `camera` (when it can move).
-    pub fn event(&mut self, event: &WindowEvent, camera: &mut Camera, movable: bool) {
+    /// Applies one window event the UI did not take to `camera` (when it can move). Orbit and zoom
+    /// turn about the point in focus on the view axis (`pivot`: the focus distance).
+    pub fn event(&mut self, event: &WindowEvent, camera: &mut Camera, movable: bool, pivot: f32) {
         match event {
             WindowEvent::CursorMoved { position, .. } => {
                 let now = (position.x, position.y);
@@ -41,6 +42,9 @@ impl Controls {
                 ElementState::Pressed => {
                     self.pressed_at = self.cursor;
                     self.dragged = false;
+                    if movable {
+                        pivot_at(camera, pivot);
+                    }
                 }
                 ElementState::Released => {
                     if !self.dragged {
@@ -55,6 +59,7 @@ impl Controls {
                     MouseScrollDelta::LineDelta(_, y) => *y,
                     MouseScrollDelta::PixelDelta(p) => p.y as f32 / 40.0,
                 };
+                pivot_at(camera, pivot);
                 zoom(camera, 0.9f32.powf(lines));
             }
             WindowEvent::KeyboardInput { event, .. } => {
@@ -95,6 +100,15 @@ impl Controls {
         let step = step * (0.5 * distance * dt.min(0.25));
         camera.eye += step;
         camera.target += step;
+    }
+}
+
+/// Moves the target along the view axis to `distance` from the eye (the view does not change: the
+/// target only sets the axis), so that orbit and zoom turn about that point.
+fn pivot_at(camera: &mut Camera, distance: f32) {
+    let axis = (camera.target - camera.eye).normalize_or_zero();
+    if axis != Vec3::ZERO && distance > 0.0 && distance.is_finite() {
+        camera.target = camera.eye + axis * distance;
     }
 }
 

@@ -152,7 +152,9 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
         closed: false,
         timed: (0, 0.0, 0, 0.0),
     };
+    println!("view at the start: {}", view_flags(&app.camera, &app.lens));
     event_loop.run_app(&mut app).map_err(|e| anyhow!("the event loop failed: {e}"))?;
+    println!("view at the end: {}", view_flags(&app.camera, &app.lens));
     let messages = app.finish();
     if let Some(e) = app.error {
         return Err(e);
@@ -198,7 +200,11 @@ impl ApplicationHandler for App<'_> {
             }
             other => {
                 if !response.consumed {
-                    self.controls.event(&other, &mut self.camera, self.source.movable());
+                    let pivot = match self.lens.focus {
+                        Focus::Distance(d) => d,
+                        Focus::Point(_) => 0.0,
+                    };
+                    self.controls.event(&other, &mut self.camera, self.source.movable(), pivot);
                 }
             }
         }
@@ -629,6 +635,9 @@ impl App<'_> {
             report: report_due,
         };
         self.frames_recorded += 1;
+        if self.frames_recorded == 1 {
+            println!("first frame presented");
+        }
         let (swapchains, indices) = ([sc.handle], [index]);
         let present = vk::PresentInfoKHR::default().wait_semaphores(&signals).swapchains(&swapchains).image_indices(&indices);
         // SAFETY: the image was acquired and its rendering signals the semaphore waited on.
@@ -716,6 +725,20 @@ impl App<'_> {
         r.pending = Pending::default();
         Ok(())
     }
+}
+
+/// The view as `dof render` flags, to render it again (or compare it) from the command line.
+fn view_flags(camera: &Camera, lens: &LensSettings) -> String {
+    let v = |p: dof::scene::Vec3| format!("{},{},{}", p.x, p.y, p.z);
+    let focus = match lens.focus {
+        Focus::Distance(d) => d,
+        Focus::Point(_) => lens.thin_lens(camera).map_or(f32::NAN, |l| l.focus_distance),
+    };
+    let aperture = match lens.aperture {
+        dof::scene::Aperture::FNumber(n) => format!("--f-number {n}"),
+        dof::scene::Aperture::Radius(r) => format!("--aperture-radius {r}"),
+    };
+    format!("--eye {} --target {} --yfov {} --focus {focus} {aperture}", v(camera.eye), v(camera.target), camera.yfov_radians.to_degrees())
 }
 
 fn contexts_record(contexts: Option<&mut Contexts>, backend: &mut VulkanBackend, method: super::methods::ViewMethod, frame: &Frame) -> Result<()> {

@@ -334,38 +334,22 @@ impl App<'_> {
                 // SAFETY: the mapping covers w*h*4 bytes, written by the completed copy and made
                 // visible to the host by its barrier.
                 let bytes = unsafe { std::slice::from_raw_parts(buf.mapped, (w * h * 4) as usize) };
-                let bgra = sc.format == vk::Format::B8G8R8A8_SRGB;
-                let pixels: Vec<[f32; 3]> = bytes
-                    .chunks_exact(4)
-                    .map(|p| if bgra { [p[2], p[1], p[0]] } else { [p[0], p[1], p[2]] })
-                    .map(|p| p.map(|c| c as f32 / 255.0))
-                    .collect();
-                dof::io::write_png_display(path, w, h, &pixels)?;
+                super::readback::write_screenshot(path, w, h, bytes, sc.format == vk::Format::B8G8R8A8_SRGB)?;
                 println!("wrote {} ({w}x{h}, the last presented image)", path.display());
             }
         }
         if let (Some([w, h]), Some(buf)) = (pending.linear, &r.linear) {
             // SAFETY: as above, w*h RGBA32F pixels.
             let words = unsafe { std::slice::from_raw_parts(buf.mapped as *const f32, (w * h * 4) as usize) };
-            let image = RgbImage { width: w, height: h, data: words.chunks_exact(4).map(|p| [p[0], p[1], p[2]]).collect() };
+            let image = super::readback::rgb_of_rgba32f(w, h, words);
             if let Some((camera, lens, reference)) = &r.reference {
                 if *camera == self.camera && *lens == self.lens && reference.width == w && reference.height == h {
-                    let psnr = dof::metrics::psnr(&image, reference)?;
+                    let (psnr, picture) = super::readback::error_view(&image, reference)?;
                     let text = format!("PSNR {psnr:.2} dB against the reference ({REFERENCE_SAMPLES} samples a pixel); error x8 below");
                     if self.stats.error.as_ref() != Some(&text) {
                         println!("error vs reference: {text}");
                     }
                     self.stats.error = Some(text);
-                    let rgba: Vec<u8> = image
-                        .data
-                        .iter()
-                        .zip(&reference.data)
-                        .flat_map(|(a, b)| {
-                            let e = |c: usize| dof::io::tonemap::to_u8(8.0 * (a[c] - b[c]).abs().min(1.0));
-                            [e(0), e(1), e(2), 255]
-                        })
-                        .collect();
-                    let picture = egui::ColorImage::from_rgba_unmultiplied([w as usize, h as usize], &rgba);
                     r.error_texture = Some(r.egui_ctx.load_texture("error", picture, egui::TextureOptions::NEAREST));
                 }
             }

@@ -7,13 +7,15 @@
 //!
 //! Modules: [`device`] (instance, device, validation), [`swapchain`] (surface, swapchain, render
 //! pass), [`scene`] (the scene source and its multi-layer image), [`methods`] (the frame API's
-//! contexts), [`controls`] (camera), [`ui`] (the egui panel), [`frame`] (the per-frame recording,
-//! screenshot and readbacks), [`script`] (scripted changes for tests).
+//! contexts), [`controls`] (camera), [`ui`] (the egui panel), [`frame`] (the event loop and the
+//! per-frame recording), [`readback`] (screenshot, error against the reference), [`script`]
+//! (scripted changes for tests).
 
 mod controls;
 mod device;
 mod frame;
 mod methods;
+mod readback;
 mod scene;
 mod script;
 mod swapchain;

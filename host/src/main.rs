@@ -34,6 +34,10 @@ enum Command {
     /// Many frames through the frame API with the method, size, aperture and lens changing at
     /// random: memory must stay flat and the validation layer silent.
     Soak(cli::soak::SoakArgs),
+    /// An interactive viewer: a window with the depth of field recorded every frame through the
+    /// frame API, an orbit camera, click to focus, the lens and method on a panel, GPU times.
+    #[cfg(feature = "view")]
+    View(cli::view::ViewArgs),
 }
 
 fn main() -> std::process::ExitCode {
@@ -55,6 +59,8 @@ fn main() -> std::process::ExitCode {
         Command::Eval(args) => cli::eval::run(&args),
         Command::Bench(cmd) => cli::bench::run(&cmd),
         Command::Soak(args) => cli::soak::run(&args),
+        #[cfg(feature = "view")]
+        Command::View(args) => cli::view::run(&args),
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

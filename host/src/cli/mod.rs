@@ -10,6 +10,8 @@ pub mod render;
 pub mod scenes;
 pub mod soak;
 pub mod stress;
+#[cfg(feature = "view")]
+pub mod view;
 
 use dof::backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
 

@@ -310,26 +310,36 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
 /// The lens for an EXR, which carries no camera: `--focus` and `--f-number` or `--aperture-radius`
 /// are required; the field of view (`--yfov`, default 40 degrees) and sensor height give the scale.
 fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens> {
-    let Some(focus) = args.focus else {
-        bail!("an EXR carries no lens: give --focus (planar focus distance, in the units of its Z channel) and --f-number or --aperture-radius")
-    };
     let aperture = match (args.f_number, args.aperture_radius) {
-        (Some(n), _) => Aperture::FNumber(n),
-        (_, Some(r)) => Aperture::Radius(r),
-        _ => bail!("an EXR carries no lens: give --f-number or --aperture-radius (with --focus)"),
+        (Some(n), _) => Some(Aperture::FNumber(n)),
+        (_, Some(r)) => Some(Aperture::Radius(r)),
+        _ => None,
     };
-    let yfov = args.yfov.unwrap_or(40.0).to_radians();
-    let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), yfov, layers.width, layers.height);
-    let mut settings = LensSettings::photographic(focus, 8.0);
-    settings.aperture = aperture;
+    let (camera, mut settings) = exr_view(layers, args.focus, aperture, args.yfov)?;
     settings.focal_length_mm = args.focal_length;
     settings.sensor_height_mm = args.sensor_height;
     Ok(settings.thin_lens(&camera)?)
 }
 
+/// The camera and lens settings of an EXR (it has neither): at the origin looking down -Z with
+/// `yfov` degrees (default 40), the focus and aperture as given (both required).
+pub(crate) fn exr_view(layers: &LayeredImage, focus: Option<f32>, aperture: Option<Aperture>, yfov: Option<f32>) -> anyhow::Result<(Camera, LensSettings)> {
+    let Some(focus) = focus else {
+        bail!("an EXR carries no lens: give --focus (planar focus distance, in the units of its Z channel) and --f-number or --aperture-radius")
+    };
+    let Some(aperture) = aperture else {
+        bail!("an EXR carries no lens: give --f-number or --aperture-radius (with --focus)")
+    };
+    let yfov = yfov.unwrap_or(40.0).to_radians();
+    let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), yfov, layers.width, layers.height);
+    let mut settings = LensSettings::photographic(focus, 8.0);
+    settings.aperture = aperture;
+    Ok((camera, settings))
+}
+
 /// How far an EXR's edge pixels are extended: the largest CoC radius among its fragments, at most
 /// [`MAX_GUARD_BAND`] (what the guard band of a rendered scene would be for the frame's content).
-fn edge_margin(layers: &LayeredImage, lens: &ThinLens) -> u32 {
+pub(crate) fn edge_margin(layers: &LayeredImage, lens: &ThinLens) -> u32 {
     let used = layers.counts.iter().enumerate().flat_map(|(p, &n)| {
         let start = p * layers.max_layers as usize;
         layers.fragments[start..start + n.min(layers.max_layers) as usize].iter()

@@ -1,0 +1,125 @@
+//! The on-screen panel (egui, immediate mode): the lens, the method and its settings, and what the
+//! frame cost and left out.
+
+use super::methods::{MethodSettings, ViewMethod};
+use dof::methods::splat::Merge;
+use dof::scene::{Aperture, ThinLens};
+
+/// What the panel edits.
+pub struct Panel {
+    pub visible: bool,
+    pub settings: MethodSettings,
+    pub focus: f32,
+    pub aperture: Aperture,
+    /// Aperture shape: 0 circle, else this many blades.
+    pub blades: u32,
+    /// Show the error against the reference (computed on demand for the current view).
+    pub show_error: bool,
+}
+
+/// What the panel shows.
+#[derive(Default)]
+pub struct Stats {
+    pub device: String,
+    pub present_mode: String,
+    pub frame: [u32; 2],
+    pub fps: f64,
+    pub frame_ms: f64,
+    /// GPU time per stage of the last timed frame, and their sum.
+    pub stages: Vec<(String, f64)>,
+    pub gpu_ms: f64,
+    /// What the last reported frame left out (from the context's report, read a frame or more late).
+    pub report: Vec<String>,
+    /// How long the last re-peel of the layers took (they are made again when the view changes).
+    pub layers_ms: f64,
+    pub has_reference: bool,
+    /// PSNR of the shown frame against the reference, when computed.
+    pub error: Option<String>,
+    pub problem: Option<String>,
+}
+
+impl Panel {
+    /// The aperture shape text `dof::aperture::parse_aperture` takes.
+    pub fn shape(&self) -> String {
+        if self.blades == 0 { "circle".to_string() } else { format!("blades:{}", self.blades) }
+    }
+
+    /// Switches the aperture between an f-number and a radius, keeping the same opening.
+    fn convert_aperture(&mut self, lens: &ThinLens, to_f_number: bool) {
+        let (f, r) = (lens.focal_length, lens.aperture_radius);
+        self.aperture = match (to_f_number, self.aperture) {
+            (true, Aperture::Radius(_)) if r > 0.0 => Aperture::FNumber(f / (2.0 * r)),
+            (true, Aperture::Radius(_)) => Aperture::FNumber(f32::INFINITY),
+            (false, Aperture::FNumber(_)) => Aperture::Radius(r),
+            (_, a) => a,
+        };
+    }
+
+    pub fn draw(&mut self, ctx: &egui::Context, stats: &Stats, lens: &ThinLens) {
+        if !self.visible {
+            return;
+        }
+        egui::Window::new("dof view").default_pos([4.0, 4.0]).default_width(300.0).default_open(true).resizable(false).show(ctx, |ui| {
+            ui.style_mut().spacing.slider_width = 110.0;
+            ui.label(format!("{} | {}x{} | {}", stats.device, stats.frame[0], stats.frame[1], stats.present_mode));
+            ui.label(format!("{:.1} FPS ({:.1} ms a frame), GPU {:.2} ms", stats.fps, stats.frame_ms, stats.gpu_ms));
+            egui::ComboBox::from_label("method").selected_text(format!("{:?}", self.settings.method).to_lowercase()).show_ui(ui, |ui| {
+                for m in ViewMethod::ALL {
+                    ui.selectable_value(&mut self.settings.method, m, m.label());
+                }
+            });
+            ui.add(egui::Slider::new(&mut self.focus, 0.05..=1000.0).logarithmic(true).text("focus distance"));
+            let mut f_number = matches!(self.aperture, Aperture::FNumber(_));
+            if ui.checkbox(&mut f_number, "as f-number").changed() {
+                self.convert_aperture(lens, f_number);
+            }
+            match &mut self.aperture {
+                Aperture::FNumber(n) => ui.add(egui::Slider::new(n, 0.5..=64.0).logarithmic(true).text("f-number")),
+                Aperture::Radius(r) => ui.add(egui::Slider::new(r, 0.0..=10.0).logarithmic(true).text("aperture radius")),
+            };
+            let splat_or_bokeh = matches!(self.settings.method, ViewMethod::Multilayer | ViewMethod::Tiled | ViewMethod::Bokeh);
+            ui.add_enabled_ui(splat_or_bokeh, |ui| {
+                ui.add(egui::Slider::new(&mut self.blades, 0..=12).text("blades (0: circle)"));
+            });
+            if self.blades > 0 && self.blades < 3 {
+                self.blades = 3;
+            }
+            let splat = matches!(self.settings.method, ViewMethod::Multilayer | ViewMethod::Tiled);
+            ui.add_enabled_ui(splat, |ui| {
+                ui.horizontal(|ui| {
+                    ui.label("merge");
+                    ui.selectable_value(&mut self.settings.merge, Merge::None, "none");
+                    ui.selectable_value(&mut self.settings.merge, Merge::X2, "2x2");
+                    ui.selectable_value(&mut self.settings.merge, Merge::X4, "4x4");
+                });
+                ui.horizontal(|ui| {
+                    ui.label("tile");
+                    for t in [16, 24, 32] {
+                        ui.selectable_value(&mut self.settings.tile, t, t.to_string());
+                    }
+                });
+            });
+            ui.label(format!("lens: f = {:.3}, aperture radius {:.4}, focus {:.3}", lens.focal_length, lens.aperture_radius, lens.focus_distance));
+            egui::CollapsingHeader::new("GPU time per stage (ms)").default_open(true).show(ui, |ui| {
+                let stages: Vec<String> = stats.stages.iter().map(|(stage, ms)| format!("{stage} {ms:.1}")).collect();
+                ui.label(stages.join(", "));
+                ui.label(format!("layers: peeled in {:.0} ms (when the view or lens changes)", stats.layers_ms));
+            });
+            egui::CollapsingHeader::new("what the frame left out").default_open(true).show(ui, |ui| {
+                for line in &stats.report {
+                    ui.label(line);
+                }
+            });
+            if stats.has_reference {
+                ui.checkbox(&mut self.show_error, "error vs reference (slow: computed on demand)");
+                if let Some(e) = &stats.error {
+                    ui.label(e);
+                }
+            }
+            if let Some(p) = &stats.problem {
+                ui.colored_label(egui::Color32::LIGHT_RED, p);
+            }
+            ui.label("drag: orbit, wheel: zoom, WASD/QE: fly, click: focus, H: hide panel");
+        });
+    }
+}

@@ -1,0 +1,210 @@
+//! `dof view` driven the way CI drives it: under Xvfb (launched here through `xvfb-run` when no
+//! display is set) on whatever Vulkan device there is (lavapipe in CI). A missing display, X server
+//! or Vulkan device makes these tests fail, never skip.
+
+use dof::io::tonemap::{srgb_oetf, to_u8};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn dof() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_dof"))
+}
+
+/// `dof view ARGS`, on the display when one is set, else in a fresh Xvfb through `xvfb-run`.
+fn view(args: &[&str]) -> Output {
+    let bin = env!("CARGO_BIN_EXE_dof");
+    let display = std::env::var("DISPLAY").is_ok_and(|d| !d.is_empty());
+    let mut cmd = if display {
+        Command::new(bin)
+    } else {
+        let mut c = Command::new("xvfb-run");
+        c.args(["-a", "-s", "-screen 0 1024x768x24", bin]);
+        c
+    };
+    cmd.arg("view").args(args);
+    let out = cmd.output().unwrap_or_else(|e| panic!("cannot run {} (without DISPLAY the test needs xvfb-run: apt-get install xvfb): {e}", if display { bin } else { "xvfb-run" }));
+    println!("--- dof view {}\n{}{}", args.join(" "), String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    out
+}
+
+fn run(cmd: &mut Command) -> String {
+    let out = cmd.output().expect("run dof");
+    let text = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    assert!(out.status.success(), "{cmd:?} failed:\n{text}");
+    text
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("view").join(name);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// The 8-bit RGB pixels of a PNG.
+fn read_png(path: &Path) -> (u32, u32, Vec<u8>) {
+    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    assert_eq!((info.color_type, info.bit_depth), (png::ColorType::Rgb, png::BitDepth::Eight));
+    buf.truncate(info.buffer_size());
+    (info.width, info.height, buf)
+}
+
+/// The viewer's screenshot against `dof render` of the same scene file, view, lens and method.
+/// The viewer shows linear radiance clamped to [0, 1] and sRGB-encoded by the blit into its sRGB
+/// swapchain image (no tone curve), so the render's EXR is encoded the same way here and compared
+/// code value by code value. Tolerance: every channel within 2 of 255 and a mean within 0.1. The
+/// frame API's result differs from the one-shot path's by float rounding (ash_host checks 1e-3 of
+/// the peak), and the device's float-to-sRGB conversion in the blit may round differently from
+/// ours by a code value; anything the viewer got wrong (a shifted crop, the guard band, a wrong
+/// lens, a missing blur, the UI) moves many pixels by far more.
+#[test]
+fn the_viewer_screenshot_matches_dof_render() {
+    let dir = scratch("screenshot");
+    let glb = dir.join("simple.glb");
+    run(dof().args(["scenes", "--only", "simple", "--width", "256", "--height", "144", "--export"]).arg(&dir));
+    assert!(glb.exists());
+    let g = glb.to_str().unwrap();
+    let mut failures = Vec::new();
+    // Each method through its own context; multi-layer without merging, the others as the viewer
+    // starts them (single-layer splatting merges 4x4).
+    for (method, merge) in [("multilayer", "none"), ("tiled", "4x4"), ("gather", "4x4"), ("bokeh", "4x4")] {
+        let exr = dir.join(format!("render-{method}.exr"));
+        run(dof()
+            .args(["render", "--scene", g, "--method", method, "--merge", merge, "--backend", "vulkan", "--width", "256", "--height", "144", "--out"])
+            .arg(&exr));
+        let shot = dir.join(format!("view-{method}.png"));
+        let s = shot.to_str().unwrap();
+        let out = view(&["--scene", g, "--method", method, "--merge", merge, "--width", "256", "--height", "144", "--frames", "2", "--screenshot", s, "--hide-ui"]);
+        assert!(out.status.success(), "dof view --method {method} failed");
+        compare(method, &shot, &exr, &mut failures);
+    }
+    // An EXR (the multi-layer image `dof render --method layers` writes): a still image with its
+    // edges extended, shown at its own size.
+    let layers = dir.join("layers.exr");
+    run(dof().args(["render", "--scene", "simple", "--method", "layers", "--width", "160", "--height", "90", "--out"]).arg(&layers));
+    let l = layers.to_str().unwrap();
+    let exr = dir.join("render-exr.exr");
+    run(dof().args(["render", "--scene", l, "--method", "multilayer", "--focus", "3", "--f-number", "2", "--backend", "vulkan", "--out"]).arg(&exr));
+    let shot = dir.join("view-exr.png");
+    let out = view(&["--scene", l, "--method", "multilayer", "--merge", "none", "--focus", "3", "--f-number", "2", "--frames", "2", "--screenshot", shot.to_str().unwrap(), "--hide-ui"]);
+    assert!(out.status.success(), "dof view of an EXR failed");
+    compare("exr multilayer", &shot, &exr, &mut failures);
+    assert!(failures.is_empty(), "screenshots differ from dof render: {failures:?}");
+}
+
+/// The screenshot against the render's EXR, encoded as the viewer's swapchain encodes (see above).
+fn compare(what: &str, shot: &Path, exr: &Path, failures: &mut Vec<String>) {
+    let (w, h, pixels) = read_png(shot);
+    let (want, _) = dof::io::read_rgb_exr(exr).unwrap();
+    assert_eq!((w, h), (want.width, want.height), "{what}: size");
+    let mut worst = 0u8;
+    let mut sum = 0u64;
+    for (got, want) in pixels.chunks_exact(3).zip(&want.data) {
+        for c in 0..3 {
+            let d = got[c].abs_diff(to_u8(srgb_oetf(want[c])));
+            worst = worst.max(d);
+            sum += d as u64;
+        }
+    }
+    let mean = sum as f64 / pixels.len() as f64;
+    println!("{what}: screenshot vs dof render: largest difference {worst}/255, mean {mean:.4}");
+    if !(worst <= 2 && mean <= 0.1) {
+        failures.push(format!("{what}: largest {worst}/255, mean {mean:.4}"));
+    }
+    // Not a blank frame: the render has structure, and so must the screenshot.
+    let distinct: std::collections::HashSet<&[u8]> = pixels.chunks_exact(3).collect();
+    assert!(distinct.len() > 100, "{what}: the screenshot has only {} colours", distinct.len());
+}
+
+/// A resize and every method (and merge level, tile size, a bladed aperture, a click to focus, an
+/// orbit and the error against the reference) switched on the way, with the validation layer and
+/// synchronization validation on: it must say nothing.
+#[test]
+fn scripted_resize_and_method_switches_leave_validation_silent() {
+    let script = "method=tiled,click=128:72,method=gather,resize=320x176,method=bokeh,blades=6,method=multilayer,merge=2x2,tile=32,orbit=15,error";
+    let out = view(&["--scene", "simple", "--width", "256", "--height", "144", "--validation", "--frames", "12", "--script", script]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "dof view failed");
+    assert!(text.contains("validation: 0 message(s)"), "validation did not report silence");
+    assert!(text.contains("swapchain: 320x176"), "the window was not resized");
+    for m in ["Tiled", "Gather", "Bokeh", "Multilayer"] {
+        assert!(text.contains(&format!("Method({m})")), "method {m} was not switched to");
+    }
+    assert!(text.contains("focus: "), "the click did not focus");
+    assert!(text.contains("error vs reference: PSNR"), "the error against the reference was not computed");
+    assert!(text.contains("exited cleanly after 12 frames"));
+}
+
+/// Closing the window (the scripted close goes through the same path as the window manager's close
+/// request) ends the loop early, tears everything down, and the validation layer, which reports
+/// every object left alive at vkDestroyDevice and vkDestroyInstance, says nothing.
+#[test]
+fn closing_the_viewer_exits_cleanly_without_leaks() {
+    let out = view(&["--scene", "simple", "--width", "256", "--height", "144", "--validation", "--frames", "100", "--script", "method=gather,close"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "dof view failed");
+    assert!(text.contains("validation: 0 message(s)"));
+    assert!(text.contains("exited cleanly after 1 frames"), "the close did not end the loop");
+}
+
+/// Real input through the X server (XTEST, with `xdotool`): a click focuses on the depth under the
+/// cursor and a drag orbits the camera.
+#[test]
+fn a_click_focuses_and_a_drag_orbits() {
+    let bin = env!("CARGO_BIN_EXE_dof");
+    let log = scratch("input").join("log.txt");
+    // The viewer in the background; once its first frame is up, a click at the window's centre
+    // (the scene's near box), then a drag to the right.
+    let script = format!(
+        r#"set -e
+"{bin}" view --scene simple --width 256 --height 144 --hide-ui --frames 14 > "{log}" 2>&1 &
+pid=$!
+for i in $(seq 600); do grep -q "first frame presented" "{log}" && break; kill -0 $pid || break; sleep 0.1; done
+wid=$(xdotool search --name "dof view" | head -n 1)
+xdotool mousemove --window "$wid" 100 72 click 1
+sleep 1
+xdotool mousemove --window "$wid" 60 72 mousedown 1 mousemove --window "$wid" 90 72 mousemove --window "$wid" 140 76 mouseup 1
+wait $pid"#,
+        log = log.display()
+    );
+    let display = std::env::var("DISPLAY").is_ok_and(|d| !d.is_empty());
+    let status = if display {
+        Command::new("sh").args(["-c", &script]).status()
+    } else {
+        Command::new("xvfb-run").args(["-a", "-s", "-screen 0 1024x768x24", "sh", "-c", &script]).status()
+    }
+    .expect("run xvfb-run and sh (apt-get install xvfb xdotool)");
+    let text = std::fs::read_to_string(&log).unwrap_or_default();
+    println!("{text}");
+    assert!(status.success(), "the viewer or xdotool failed (is xdotool installed?)");
+    assert!(text.contains("focus: "), "the click did not focus");
+    let view = |prefix: &str| text.lines().find_map(|l| l.strip_prefix(prefix)).map(|l| l.split(" --focus").next().unwrap().to_string());
+    let (start, end) = (view("view at the start: ").unwrap(), view("view at the end: ").unwrap());
+    assert_ne!(start, end, "the drag did not move the camera");
+}
+
+/// Bad input is a clear error before any window opens.
+#[test]
+fn the_viewer_refuses_bad_input_clearly() {
+    for (args, expect) in [
+        (vec!["--width", "0"], "--width must lie between"),
+        (vec!["--focus", "NaN"], "--focus must be a positive finite distance"),
+        (vec!["--f-number", "-2"], "--f-number must be a positive finite number"),
+        (vec!["--scene", "no/such/file.glb"], "no/such/file.glb"),
+        (vec!["--scene", "nosuchscene"], "nosuchscene"),
+        (vec!["--screenshot", "x.png"], "--screenshot needs --frames"),
+        (vec!["--script", "method=raytrace"], "the methods are multilayer, tiled, gather and bokeh"),
+        (vec!["--blades", "2"], "--blades must be 0"),
+        (vec!["--width", "100000"], "--width must lie between"),
+        (vec!["--scene", "x.exr", "--f-number", "NaN"], "--f-number must be a positive finite number"),
+        (vec!["--screenshot", "x.jpg", "--frames", "1"], "--screenshot must name a .png file"),
+    ] {
+        let out = dof().arg("view").args(&args).env_remove("DISPLAY").output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success(), "{args:?} was accepted");
+        assert!(err.contains(expect), "{args:?}: expected `{expect}` in: {err}");
+        assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    }
+}

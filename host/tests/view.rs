@@ -69,7 +69,7 @@ fn the_viewer_screenshot_matches_dof_render() {
     let mut failures = Vec::new();
     // Each method through its own context; multi-layer without merging, the others as the viewer
     // starts them (single-layer splatting merges 4x4).
-    for (method, merge) in [("multilayer", "none"), ("tiled", "4x4"), ("gather", "4x4"), ("bokeh", "4x4")] {
+    for (method, merge) in [("multilayer", "none"), ("tiled", "4x4"), ("gather", "4x4"), ("ring-gather", "4x4"), ("bokeh", "4x4")] {
         let exr = dir.join(format!("render-{method}.exr"));
         run(dof()
             .args(["render", "--scene", g, "--method", method, "--merge", merge, "--backend", "vulkan", "--width", "256", "--height", "144", "--out"])
@@ -123,18 +123,18 @@ fn compare(what: &str, shot: &Path, exr: &Path, failures: &mut Vec<String>) {
 /// synchronization validation on: it must say nothing.
 #[test]
 fn scripted_resize_and_method_switches_leave_validation_silent() {
-    let script = "method=tiled,click=128:72,method=gather,resize=320x176,method=bokeh,blades=6,method=multilayer,merge=2x2,tile=32,orbit=15,error";
-    let out = view(&["--scene", "simple", "--width", "256", "--height", "144", "--validation", "--frames", "12", "--script", script]);
+    let script = "method=tiled,click=128:72,method=gather,resize=320x176,method=ring-gather,rings=2,method=bokeh,blades=6,method=multilayer,merge=2x2,tile=32,orbit=15,error";
+    let out = view(&["--scene", "simple", "--width", "256", "--height", "144", "--validation", "--frames", "16", "--script", script]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "dof view failed");
     assert!(text.contains("validation: 0 message(s)"), "validation did not report silence");
     assert!(text.contains("swapchain: 320x176"), "the window was not resized");
-    for m in ["Tiled", "Gather", "Bokeh", "Multilayer"] {
+    for m in ["Tiled", "Gather", "RingGather", "Bokeh", "Multilayer"] {
         assert!(text.contains(&format!("Method({m})")), "method {m} was not switched to");
     }
     assert!(text.contains("focus: "), "the click did not focus");
     assert!(text.contains("error vs reference: PSNR"), "the error against the reference was not computed");
-    assert!(text.contains("exited cleanly after 12 frames"));
+    assert!(text.contains("exited cleanly after 16 frames"));
 }
 
 /// Closing the window (the scripted close goes through the same path as the window manager's close
@@ -195,7 +195,7 @@ fn the_viewer_refuses_bad_input_clearly() {
         (vec!["--scene", "no/such/file.glb"], "no/such/file.glb"),
         (vec!["--scene", "nosuchscene"], "nosuchscene"),
         (vec!["--screenshot", "x.png"], "--screenshot needs --frames"),
-        (vec!["--script", "method=raytrace"], "the methods are multilayer, tiled, gather and bokeh"),
+        (vec!["--script", "method=raytrace"], "the methods are multilayer, tiled, gather, ring-gather and bokeh"),
         (vec!["--blades", "2"], "--blades must be 0"),
         (vec!["--width", "100000"], "--width must lie between"),
         (vec!["--scene", "x.exr", "--f-number", "NaN"], "--f-number must be a positive finite number"),

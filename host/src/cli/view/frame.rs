@@ -132,7 +132,7 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
     // move past).
     let focus = source.lens.thin_lens(&camera)?.focus_distance;
     let lens = LensSettings { focus: Focus::Distance(focus), ..source.lens };
-    let settings = MethodSettings { method: args.method, merge: args.merge, tile: args.tile, aperture: String::new() };
+    let settings = MethodSettings { method: args.method, merge: args.merge, tile: args.tile, aperture: String::new(), rings: args.rings };
     let mut panel = Panel { visible: !args.hide_ui, settings, focus, aperture: lens.aperture, blades: args.blades, show_error: false };
     panel.settings.aperture = panel.shape();
     let mut app = App {
@@ -655,6 +655,7 @@ impl App<'_> {
             Step::Blades(n) => self.panel.blades = n,
             Step::Merge(m) => self.panel.settings.merge = m,
             Step::Tile(t) => self.panel.settings.tile = t,
+            Step::Rings(n) => self.panel.settings.rings = n,
             Step::Orbit(deg) => orbit(&mut self.camera, deg.to_radians(), 0.0),
             Step::Click(x, y) => self.controls.focus_click = Some((x, y)),
             Step::Error => self.panel.show_error = !self.panel.show_error,

@@ -4,7 +4,10 @@
 use anyhow::Result;
 use dof::aperture::parse_aperture;
 use dof::backend::{Backend, CommandTime};
-use dof::frame::{BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, SplatContext, SplatContextDesc};
+use dof::frame::{
+    BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, RingGatherOptions, SplatContext,
+    SplatContextDesc,
+};
 use dof::methods::bokeh::BokehOptions;
 use dof::methods::splat::{Merge, SplatOptions};
 
@@ -16,20 +19,29 @@ pub enum ViewMethod {
     Tiled,
     /// The gathering baseline (Riguer et al. 2003) on the front layer.
     Gather,
+    /// The engine-grade gather (after AMD FidelityFX DoF, Unreal Engine's Diaphragm DoF and
+    /// Jimenez 2014) on the front layer: half resolution, `--rings` sample rings.
+    RingGather,
     /// Bokeh sprites (de Rousiers, Pettineo 2012) over the gathering baseline.
     Bokeh,
 }
 
 impl ViewMethod {
-    pub const ALL: [ViewMethod; 4] = [ViewMethod::Multilayer, ViewMethod::Tiled, ViewMethod::Gather, ViewMethod::Bokeh];
+    pub const ALL: [ViewMethod; 5] = [ViewMethod::Multilayer, ViewMethod::Tiled, ViewMethod::Gather, ViewMethod::RingGather, ViewMethod::Bokeh];
 
     pub fn label(self) -> &'static str {
         match self {
             ViewMethod::Multilayer => "multi-layer tiled splatting (Franke et al. 2018)",
             ViewMethod::Tiled => "single-layer tiled splatting (Selgrad et al. 2016)",
             ViewMethod::Gather => "gather (Riguer et al. 2003)",
+            ViewMethod::RingGather => "ring gather (engine-grade, after FidelityFX, Unreal, Jimenez 2014)",
             ViewMethod::Bokeh => "bokeh sprites (de Rousiers, Pettineo 2012)",
         }
+    }
+
+    /// The name the command line and scripts use.
+    pub fn name(self) -> String {
+        clap::ValueEnum::to_possible_value(&self).map_or_else(|| format!("{self:?}"), |v| v.get_name().to_string())
     }
 
     pub fn parse(s: &str) -> Option<ViewMethod> {
@@ -50,6 +62,8 @@ pub struct MethodSettings {
     pub tile: u32,
     /// `circle`, `blades:N[:ROT]` or `star:N` (see `dof::aperture`); splatting and bokeh only.
     pub aperture: String,
+    /// Sample rings of the ring gather (1 to 8); changed between frames without a new context.
+    pub rings: u32,
 }
 
 /// The contexts, made on first use of their method, for frames up to `max` (width, height, layers).
@@ -57,12 +71,13 @@ pub struct Contexts {
     max: [u32; 3],
     splat: Option<(MethodSettings, SplatContext)>,
     gather: Option<GatherContext>,
+    ring_gather: Option<RingGatherContext>,
     bokeh: Option<(String, BokehContext)>,
 }
 
 impl Contexts {
     pub fn new(max: [u32; 3]) -> Contexts {
-        Contexts { max, splat: None, gather: None, bokeh: None }
+        Contexts { max, splat: None, gather: None, ring_gather: None, bokeh: None }
     }
 
     pub fn max(&self) -> [u32; 3] {
@@ -80,6 +95,9 @@ impl Contexts {
                 ctx.resize(backend, grown[0], grown[1], grown[2])?;
             }
             if let Some(g) = self.gather.take() {
+                g.destroy(backend);
+            }
+            if let Some(g) = self.ring_gather.take() {
                 g.destroy(backend);
             }
             if let Some((_, b)) = self.bokeh.take() {
@@ -113,6 +131,21 @@ impl Contexts {
                     made = false;
                 }
             }
+            ViewMethod::RingGather => {
+                let options = RingGatherOptions { rings: s.rings, ..Default::default() };
+                match &mut self.ring_gather {
+                    Some(ctx) => {
+                        ctx.set_options(options)?;
+                        made = false;
+                    }
+                    None => {
+                        let mut desc = RingGatherContextDesc::new(w, h, l);
+                        desc.options = options;
+                        desc.image_io = true;
+                        self.ring_gather = Some(RingGatherContext::new(backend, &desc)?);
+                    }
+                }
+            }
             ViewMethod::Bokeh => {
                 if self.bokeh.as_ref().is_none_or(|(k, _)| *k != s.aperture) {
                     let options = BokehOptions { aperture: parse_aperture(&s.aperture)?, ..Default::default() };
@@ -141,6 +174,7 @@ impl Contexts {
         match method {
             ViewMethod::Multilayer | ViewMethod::Tiled => self.splat.as_mut().ok_or_else(missing)?.1.record(backend, frame)?,
             ViewMethod::Gather => self.gather.as_mut().ok_or_else(missing)?.record(backend, frame)?,
+            ViewMethod::RingGather => self.ring_gather.as_mut().ok_or_else(missing)?.record(backend, frame)?,
             ViewMethod::Bokeh => self.bokeh.as_mut().ok_or_else(missing)?.1.record(backend, frame)?,
         }
         Ok(())
@@ -170,6 +204,18 @@ impl Contexts {
                 Some(ctx) => vec![format!("gather window radius {} px", ctx.radius(backend)?)],
                 None => Vec::new(),
             },
+            ViewMethod::RingGather => match &self.ring_gather {
+                Some(ctx) => {
+                    let o = ctx.options();
+                    vec![format!(
+                        "{} rings, {} samples a half-resolution pixel, CoC radius capped at {} px",
+                        o.rings,
+                        dof_shaders::ring_gather::samples(o.rings),
+                        o.max_radius
+                    )]
+                }
+                None => Vec::new(),
+            },
             ViewMethod::Bokeh => match &self.bokeh {
                 Some((_, ctx)) => {
                     let (detected, radius) = ctx.detected_and_radius(backend)?;
@@ -186,6 +232,9 @@ impl Contexts {
             c.destroy(backend);
         }
         if let Some(c) = self.gather {
+            c.destroy(backend);
+        }
+        if let Some(c) = self.ring_gather {
             c.destroy(backend);
         }
         if let Some((_, c)) = self.bokeh {

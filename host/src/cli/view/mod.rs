@@ -59,6 +59,9 @@ pub struct ViewArgs {
     /// Tile edge in pixels (multilayer and tiled): 16, 24 or 32.
     #[arg(long, default_value_t = 16)]
     pub tile: u32,
+    /// Sample rings of the ring gather at half resolution (1 to 8; 5 is what engines ship).
+    #[arg(long, default_value_t = dof::methods::ring_gather::DEFAULT_RINGS)]
+    pub rings: u32,
     /// Render this many frames, then exit (with --screenshot: after writing the last one).
     #[arg(long)]
     pub frames: Option<u32>,
@@ -110,6 +113,9 @@ fn check(args: &ViewArgs) -> Result<()> {
     }
     if ![16, 24, 32].contains(&args.tile) {
         bail!("--tile must be 16, 24 or 32, got {}", args.tile);
+    }
+    if !(1..=dof::methods::ring_gather::MAX_RINGS).contains(&args.rings) {
+        bail!("--rings must be 1 to {}, got {}", dof::methods::ring_gather::MAX_RINGS, args.rings);
     }
     if args.frames == Some(0) {
         bail!("--frames must be at least 1");

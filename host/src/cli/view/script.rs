@@ -15,6 +15,7 @@ pub enum Step {
     Blades(u32),
     Merge(Merge),
     Tile(u32),
+    Rings(u32),
     Orbit(f32),
     /// A click at window pixel (x, y): focus on what is under it.
     Click(f64, f64),
@@ -38,7 +39,7 @@ fn step(s: &str) -> Result<Step> {
     Ok(match key {
         "method" => match ViewMethod::parse(value) {
             Some(m) => Step::Method(m),
-            None => bail!("--script {s}: the methods are multilayer, tiled, gather and bokeh"),
+            None => bail!("--script {s}: the methods are multilayer, tiled, gather, ring-gather and bokeh"),
         },
         "resize" => {
             let parsed = value.split_once('x').and_then(|(w, h)| Some((w.parse::<u32>().ok()?, h.parse::<u32>().ok()?)));
@@ -71,6 +72,10 @@ fn step(s: &str) -> Result<Step> {
             Ok(t) if [16, 24, 32].contains(&t) => Step::Tile(t),
             _ => bail!("--script {s}: the tile edge is 16, 24 or 32"),
         },
+        "rings" => match value.parse::<u32>() {
+            Ok(n) if (1..=dof::methods::ring_gather::MAX_RINGS).contains(&n) => Step::Rings(n),
+            _ => bail!("--script {s}: the ring gather takes 1 to {} rings", dof::methods::ring_gather::MAX_RINGS),
+        },
         "orbit" => Step::Orbit(number(value)?),
         "click" => match value.split_once(':').map(|(x, y)| (number(x), number(y))) {
             Some((Ok(x), Ok(y))) if x >= 0.0 && y >= 0.0 => Step::Click(x as f64, y as f64),
@@ -78,6 +83,6 @@ fn step(s: &str) -> Result<Step> {
         },
         "error" => Step::Error,
         "close" => Step::Close,
-        _ => bail!("--script {s}: unknown step (method=, resize=, focus=, f-number=, radius=, blades=, merge=, tile=, orbit=, click=, error, close)"),
+        _ => bail!("--script {s}: unknown step (method=, resize=, focus=, f-number=, radius=, blades=, merge=, tile=, rings=, orbit=, click=, error, close)"),
     })
 }

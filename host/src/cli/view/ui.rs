@@ -63,7 +63,7 @@ impl Panel {
             ui.style_mut().spacing.slider_width = 110.0;
             ui.label(format!("{} | {}x{} | {}", stats.device, stats.frame[0], stats.frame[1], stats.present_mode));
             ui.label(format!("{:.1} FPS ({:.1} ms a frame), GPU {:.2} ms", stats.fps, stats.frame_ms, stats.gpu_ms));
-            egui::ComboBox::from_label("method").selected_text(format!("{:?}", self.settings.method).to_lowercase()).show_ui(ui, |ui| {
+            egui::ComboBox::from_label("method").selected_text(self.settings.method.name()).show_ui(ui, |ui| {
                 for m in ViewMethod::ALL {
                     ui.selectable_value(&mut self.settings.method, m, m.label());
                 }
@@ -98,6 +98,9 @@ impl Panel {
                         ui.selectable_value(&mut self.settings.tile, t, t.to_string());
                     }
                 });
+            });
+            ui.add_enabled_ui(self.settings.method == ViewMethod::RingGather, |ui| {
+                ui.add(egui::Slider::new(&mut self.settings.rings, 1..=dof::methods::ring_gather::MAX_RINGS).text("rings (ring gather)"));
             });
             ui.label(format!("lens: f = {:.3}, aperture radius {:.4}, focus {:.3}", lens.focal_length, lens.aperture_radius, lens.focus_distance));
             egui::CollapsingHeader::new("GPU time per stage (ms)").default_open(true).show(ui, |ui| {

@@ -5,7 +5,7 @@
 //! back on the host.
 
 use super::gather::{MAX_RADIUS, record_gather};
-use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_front, record_input, record_output};
+use super::io::{Frame, ImageIo, Owned, check_frame, ready, output_buffer, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, push_words};
 use crate::error::{Error, Result};
 use crate::methods::bokeh::BokehOptions;
@@ -125,11 +125,7 @@ impl BokehContext {
         kernels.extend([&GATHER, &GATHER_PLAN]);
         kernels.extend(dof_shaders::scan::KERNELS);
         kernels.extend(dof_shaders::frame_io::KERNELS);
-        if let Err(e) = backend.prepare(&kernels, &[&BOKEH_DRAW]).and_then(|_| backend.submit().map(drop)) {
-            ctx.destroy(backend);
-            return Err(e);
-        }
-        Ok(ctx)
+        ready(backend, ctx, &kernels, &[&BOKEH_DRAW], Self::destroy)
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {

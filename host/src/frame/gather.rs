@@ -1,7 +1,7 @@
 //! The gathering baseline (Riguer et al. 2003) as a frame context: the window radius reduced on the
 //! device from the frame's depths, so nothing is planned on the host.
 
-use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_front, record_input, record_output};
+use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, ready, output_buffer, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, push_words};
 use crate::error::{Error, Result};
 use crate::methods::buffers::groups_for;
@@ -59,15 +59,7 @@ impl GatherContext {
         if cap > MAX_RADIUS {
             return Err(Error::TooLarge { what: "gather radius (px)".into(), size: cap as u64, limit: MAX_RADIUS as u64 });
         }
-        let (w, h) = (desc.max_width, desc.max_height);
-        if w == 0 || h == 0 || desc.max_layers == 0 {
-            return Err(Error::InvalidArgument(format!("a gathering context for an empty {w}x{h} extent with {} layers", desc.max_layers)));
-        }
-        let pixels = w as u64 * h as u64;
-        let max_words = backend.limits().max_buffer_bytes / 4;
-        if 4 * pixels * desc.max_layers as u64 > max_words {
-            return Err(Error::TooLarge { what: "input slots (words)".into(), size: 4 * pixels * desc.max_layers as u64, limit: max_words });
-        }
+        let pixels = context_pixels(backend, "gathering", desc.max_width, desc.max_height, desc.max_layers)?;
         let mut owned = Owned::default();
         let made = (|| {
             let color = owned.make(backend, 3 * pixels, "gather/color")?;
@@ -78,14 +70,9 @@ impl GatherContext {
         })();
         let ((color, depth, plan, io), owned) = owned.or_free(backend, made)?;
         let ctx = GatherContext { desc: desc.clone(), cap, color, depth, plan, io, owned };
-        // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own work.
         let mut kernels = vec![&GATHER, &GATHER_PLAN];
         kernels.extend(dof_shaders::frame_io::KERNELS);
-        if let Err(e) = backend.prepare(&kernels, &[]).and_then(|_| backend.submit().map(drop)) {
-            ctx.destroy(backend);
-            return Err(e);
-        }
-        Ok(ctx)
+        ready(backend, ctx, &kernels, &[], Self::destroy)
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {

@@ -132,6 +132,38 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, max: (u32, u32, u32)
 }
 
 /// The buffers a context owns: made one by one, counted, and freed together (also when making a
+
+/// The pixels of a single-layer context's largest frame (`what` names it in errors), refusing an
+/// empty extent and an input whose slots could not fit one buffer of `backend`.
+pub(crate) fn context_pixels(backend: &dyn Backend, what: &str, width: u32, height: u32, layers: u32) -> Result<u64> {
+    if width == 0 || height == 0 || layers == 0 {
+        return Err(Error::InvalidArgument(format!("a {what} context for an empty {width}x{height} extent with {layers} layers")));
+    }
+    let pixels = width as u64 * height as u64;
+    let max_words = backend.limits().max_buffer_bytes / 4;
+    if 4 * pixels * layers as u64 > max_words {
+        return Err(Error::TooLarge { what: "input slots (words)".into(), size: 4 * pixels * layers as u64, limit: max_words });
+    }
+    Ok(pixels)
+}
+
+/// Builds a new context's pipelines and submits its buffers' zeroing now, so that its first frame
+/// records only its own work; a failure destroys the context.
+pub(crate) fn ready<C>(
+    backend: &mut dyn Backend,
+    ctx: C,
+    kernels: &[&'static dof_shaders::KernelDesc],
+    draws: &[&'static dof_shaders::DrawDesc],
+    destroy: impl FnOnce(C, &mut dyn Backend),
+) -> Result<C> {
+    match backend.prepare(kernels, draws).and_then(|_| backend.submit().map(drop)) {
+        Ok(()) => Ok(ctx),
+        Err(e) => {
+            destroy(ctx, backend);
+            Err(e)
+        }
+    }
+}
 /// later one fails part way).
 #[derive(Default)]
 pub(crate) struct Owned {

@@ -3,7 +3,7 @@
 //! creation and nothing planned on the host, so its cost is fixed by the frame's size and the ring
 //! count, not by the blur.
 
-use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_front, record_input, record_output};
+use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, ready, output_buffer, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, push_words};
 use crate::error::{Error, Result};
 use crate::methods::buffers::groups_for;
@@ -95,16 +95,8 @@ pub struct RingGatherContext {
 impl RingGatherContext {
     pub fn new(backend: &mut dyn Backend, desc: &RingGatherContextDesc) -> Result<Self> {
         desc.options.check()?;
-        let (w, h) = (desc.max_width, desc.max_height);
-        if w == 0 || h == 0 || desc.max_layers == 0 {
-            return Err(Error::InvalidArgument(format!("a ring-gather context for an empty {w}x{h} extent with {} layers", desc.max_layers)));
-        }
-        let pixels = w as u64 * h as u64;
-        let max_words = backend.limits().max_buffer_bytes / 4;
-        if 4 * pixels * desc.max_layers as u64 > max_words {
-            return Err(Error::TooLarge { what: "input slots (words)".into(), size: 4 * pixels * desc.max_layers as u64, limit: max_words });
-        }
-        let shape = RingGatherParams { width: w, height: h, ..Default::default() };
+        let pixels = context_pixels(backend, "ring-gather", desc.max_width, desc.max_height, desc.max_layers)?;
+        let shape = RingGatherParams { width: desc.max_width, height: desc.max_height, ..Default::default() };
         let half = shape.half_width() as u64 * shape.half_height() as u64;
         let tiles = shape.tiles_x() as u64 * shape.tiles_y() as u64;
         let mut owned = Owned::default();
@@ -122,14 +114,9 @@ impl RingGatherContext {
         })();
         let ((passes, io), owned) = owned.or_free(backend, made)?;
         let ctx = RingGatherContext { desc: desc.clone(), passes, io, owned };
-        // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own work.
         let mut kernels = dof_shaders::ring_gather::KERNELS.to_vec();
         kernels.extend(dof_shaders::frame_io::KERNELS);
-        if let Err(e) = backend.prepare(&kernels, &[]).and_then(|_| backend.submit().map(drop)) {
-            ctx.destroy(backend);
-            return Err(e);
-        }
-        Ok(ctx)
+        ready(backend, ctx, &kernels, &[], Self::destroy)
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {

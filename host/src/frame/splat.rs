@@ -236,12 +236,7 @@ impl SplatContext {
             kernels.extend(dof_shaders::frame_io::KERNELS);
         }
         let ctx = SplatContext { desc: desc.clone(), radius_cap, merge_steps, list_entries, max_list, owned, bytes, b, scan, sort, last: None };
-        // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own work.
-        if let Err(e) = backend.prepare(&kernels, &[]).and_then(|_| backend.submit().map(drop)) {
-            ctx.destroy(backend);
-            return Err(e);
-        }
-        Ok(ctx)
+        super::io::ready(backend, ctx, &kernels, &[], Self::destroy)
     }
 
     /// Frees every buffer. The backend must not be running the context's work.

@@ -32,7 +32,7 @@ use dof::methods::splat::{Merge, SplatOptions};
 use libfuzzer_sys::fuzz_target;
 
 /// Whether inconsistent aperture descriptions are tried (see `ApertureIn::Raw`).
-const TRY_RAW_APERTURES: bool = false;
+const TRY_RAW_APERTURES: bool = true;
 
 /// Largest extent and layer count actually allocated.
 const SMALL_EDGE: u32 = 64;
@@ -99,9 +99,9 @@ impl ApertureIn {
                 masked(side, &mask).map(|kernel| ApertureShape { kernel, mask })
             }
             ApertureIn::Raw { blades, curvature, normal, step, inv_inradius, area, mask_side, texels } => {
-                // Not tried: the contexts take an aperture's description on trust (finding 6 in
-                // fuzz/README.md: 2^32 - 1 blades loop for ever, a mask shorter than its side is
-                // read out of bounds). Kept so that the corpus keeps its meaning once they check it.
+                // The contexts must refuse what the kernels cannot run (finding 6 in
+                // fuzz/README.md: 2^32 - 1 blades looped for ever, a mask shorter than its side
+                // was read out of bounds).
                 let kernel = Aperture { blades, curvature, normal, step, inv_inradius, area, mask: mask_side as u32 };
                 let shape = ApertureShape { kernel, mask: vec![1.0; texels as usize % 4096] };
                 if !TRY_RAW_APERTURES {

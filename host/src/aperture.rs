@@ -173,6 +173,18 @@ pub fn image_aperture(path: &Path) -> Result<ApertureShape> {
     let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
     decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
     let mut reader = decoder.read_info().map_err(|e| bad(format!("not a readable PNG ({e})")))?;
+    // A palette the png crate (0.18) expands without checking: its length must be whole RGB
+    // entries, at most 256 of them, with at most one alpha per entry (a 14-byte palette panicked
+    // inside its expansion; found by the aperture_png fuzz target).
+    if let Some(palette) = &reader.info().palette {
+        let entries = palette.len() / 3;
+        if palette.is_empty() || palette.len() % 3 != 0 || entries > 256 {
+            return Err(bad(format!("its palette of {} bytes is not 1 to 256 RGB entries", palette.len())));
+        }
+        if let Some(trns) = reader.info().trns.as_ref().filter(|t| t.len() > entries) {
+            return Err(bad(format!("its transparency chunk has {} entries for a palette of {entries}", trns.len())));
+        }
+    }
     // The size from the header, before the pixels are allocated.
     let usable = |w: u32, h: u32| (1..=8192).contains(&w) && (1..=8192).contains(&h);
     let (w, h) = reader.info().size();

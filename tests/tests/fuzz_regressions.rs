@@ -116,6 +116,17 @@ fn aperture_png_of_a_huge_size_is_refused_before_its_pixels_are_allocated() {
     assert!(err.to_string().contains("not a usable size"), "{err}");
 }
 
+/// A palette PNG whose PLTE chunk is 14 bytes (not whole RGB entries): png 0.18's palette
+/// expansion indexed past it and panicked. Found by the `aperture_png` target; fixed in
+/// `aperture.rs` by checking the palette (and its transparency chunk) before decoding.
+#[test]
+fn aperture_png_with_a_partial_palette_entry_is_refused() {
+    let path = regression("aperture_png", "palette-of-14-bytes.png");
+    let err = dof::aperture::image_aperture(&path).unwrap_err();
+    assert!(matches!(err, Error::InvalidArgument(_)), "{err}");
+    assert!(err.to_string().contains("palette of 14 bytes"), "{err}");
+}
+
 /// An artist lens with `max_radius_px` 3.4e38: valid by `ArtistLens::is_valid`, but its CoC
 /// diameter `2 · max_radius_px` overflows and the sharp zone's CoC is `inf · 0` = NaN. Found by the
 /// `lens` target (`fuzz/regressions/lens/artist-lens-diameter-overflows`); fixed in

@@ -55,7 +55,6 @@ pub fn ratios(options: &RatioOptions, backends: &mut [Box<dyn Backend>]) -> Resu
     if backends.is_empty() || options.scenes.is_empty() || options.runs == 0 || options.spp == 0 {
         return Err(Error::InvalidArgument("cost ratios need a backend, a scene, a timed run and a reference sample".into()));
     }
-    let methods: [Box<dyn Method>; 2] = [Box::new(Splat { multi_layer: true }), Box::new(RingGather)];
     let mut rows = Vec::new();
     for name in &options.scenes {
         let scene = builtin(name)?.with_size(options.width, options.height);
@@ -65,10 +64,10 @@ pub fn ratios(options: &RatioOptions, backends: &mut [Box<dyn Backend>]) -> Resu
         let input = MethodInput::new(ml.layers.clone(), lens, ml.margin);
         for b in backends.iter_mut() {
             let b = b.as_mut();
-            let mut measured = Vec::new();
-            for method in &methods {
+            // One method at its sweep setting: time and error.
+            let mut measure = |method: &dyn Method| -> Result<Timed> {
                 let setting = method.sweep_setting().ok_or_else(|| Error::InvalidArgument(format!("{} has no sweep setting", method.name())))?;
-                let (times, output) = timed(method.as_ref(), b, &input, &setting, options.runs)?;
+                let (times, output) = timed(method, b, &input, &setting, options.runs)?;
                 let error = compare(&input.crop(&output.image), &exact.image, Some(&ml.mask))?;
                 let t = Timed {
                     setting: setting.label.clone(),
@@ -80,10 +79,10 @@ pub fn ratios(options: &RatioOptions, backends: &mut [Box<dyn Backend>]) -> Resu
                 if options.progress {
                     eprintln!("{name} {} {} ({}): {:.1} ms, {:.2} dB ({:.2} dB in the region)", b.kind(), method.name(), t.setting, t.time_ms, t.psnr_db, t.psnr_masked_db.unwrap_or(f64::NAN));
                 }
-                measured.push(t);
-            }
-            let ring_gather = measured.pop().expect("two methods measured");
-            let multilayer = measured.pop().expect("two methods measured");
+                Ok(t)
+            };
+            let multilayer = measure(&Splat { multi_layer: true })?;
+            let ring_gather = measure(&RingGather)?;
             let ratio = multilayer.time_ms / ring_gather.time_ms;
             rows.push(RatioRow { scene: name.clone(), backend: b.kind().to_string(), device: b.device_name(), multilayer, ring_gather, ratio });
         }

@@ -1,6 +1,7 @@
 //! Helpers shared by the integration suites.
 
 use dof::backend::{VulkanBackend, VulkanOptions};
+use dof::layers::RgbImage;
 use dof::ops::sort::{SortInput, SortOutput};
 
 /// The Vulkan backend with the Khronos validation layer and synchronization validation on.
@@ -35,4 +36,17 @@ pub fn assert_sorted_like_reference(input: &SortInput, out: &SortOutput) {
         assert_eq!(got, want, "keys of list {s} (offset {o}, length {l}) differ from the reference");
         assert_eq!(out.values[r.clone()], values[r], "payloads of list {s} (offset {o}, length {l}) differ");
     }
+}
+
+/// A `w` x `h` single-layer image of hashed HDR colours (up to 83 000) and depths (0.5 to 15.5),
+/// for the single-layer methods' stiff cases.
+pub fn noise_image(w: u32, h: u32) -> (RgbImage, Vec<f32>) {
+    let mut img = RgbImage::new(w, h);
+    let mut depth = Vec::new();
+    for (i, p) in img.data.iter_mut().enumerate() {
+        let v = (i as u32).wrapping_mul(2654435761) >> 8;
+        *p = [(v % 97) as f32 / 97.0, (v % 89) as f32 / 8.9, (v % 83) as f32 * 1000.0];
+        depth.push(0.5 + (v % 300) as f32 / 20.0);
+    }
+    (img, depth)
 }

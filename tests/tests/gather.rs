@@ -7,21 +7,10 @@ use dof::methods::gather::{MAX_RADIUS, gather};
 use dof::metrics::compare;
 use dof::scene::{LayerOptions, ReferenceOptions, builtin, raycast_layers, reference};
 use dof_shaders::lens::ThinLens;
-use dof_tests::{assert_clean, vulkan};
+use dof_tests::{assert_clean, noise_image, vulkan};
 
 fn lens(aperture_radius: f32) -> ThinLens {
     ThinLens { focal_length: 0.05, aperture_radius, focus_distance: 2.0, pixels_per_unit: 8000.0 }
-}
-
-fn noise_image(w: u32, h: u32) -> (RgbImage, Vec<f32>) {
-    let mut img = RgbImage::new(w, h);
-    let mut depth = Vec::new();
-    for (i, p) in img.data.iter_mut().enumerate() {
-        let v = (i as u32).wrapping_mul(2654435761) >> 8;
-        *p = [(v % 97) as f32 / 97.0, (v % 89) as f32 / 8.9, (v % 83) as f32 * 1000.0];
-        depth.push(0.5 + (v % 300) as f32 / 20.0);
-    }
-    (img, depth)
 }
 
 #[test]

@@ -9,7 +9,7 @@ use dof::methods::ring_gather::{DEFAULT_RINGS, MAX_RADIUS, MAX_RINGS, RingGather
 use dof::metrics::compare;
 use dof::scene::{LayerOptions, ReferenceOptions, builtin, raycast_layers, reference};
 use dof_shaders::lens::ThinLens;
-use dof_tests::{assert_clean, vulkan};
+use dof_tests::{assert_clean, noise_image, vulkan};
 
 /// Focus at 2 m; at 8000 px a unit and f = 50 mm an aperture radius of 0.02 gives a far-field CoC
 /// radius of about 8 px and a CoC radius of about 25 px at 0.5 m.
@@ -19,17 +19,6 @@ fn lens(aperture_radius: f32) -> ThinLens {
 
 fn options(rings: u32) -> RingGatherOptions {
     RingGatherOptions { rings, ..Default::default() }
-}
-
-fn noise_image(w: u32, h: u32) -> (RgbImage, Vec<f32>) {
-    let mut img = RgbImage::new(w, h);
-    let mut depth = Vec::new();
-    for (i, p) in img.data.iter_mut().enumerate() {
-        let v = (i as u32).wrapping_mul(2654435761) >> 8;
-        *p = [(v % 97) as f32 / 97.0, (v % 89) as f32 / 8.9, (v % 83) as f32 * 1000.0];
-        depth.push(0.5 + (v % 300) as f32 / 20.0);
-    }
-    (img, depth)
 }
 
 #[test]

@@ -3,10 +3,10 @@
 //! [`crate::frame::BokehContext`], one submission, and the detection count read back afterwards
 //! for the report.
 
-use super::buffers::read_rgb;
-use crate::backend::{Backend, CommandTime, with_buffers};
-use crate::error::{Error, Result};
-use crate::frame::{BokehContext, BokehContextDesc, Frame};
+use super::buffers::one_layer_frame;
+use crate::backend::{Backend, CommandTime};
+use crate::error::Result;
+use crate::frame::{BokehContext, BokehContextDesc};
 use crate::layers::RgbImage;
 use crate::aperture::ApertureShape;
 use dof_shaders::lens::ThinLens;
@@ -44,36 +44,25 @@ pub struct BokehOutput {
 }
 
 pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &ThinLens, options: &BokehOptions) -> Result<BokehOutput> {
-    let (width, height) = (image.width, image.height);
-    let pixels = width as u64 * height as u64;
-    if pixels == 0 || image.data.len() as u64 != pixels || depth.len() as u64 != pixels {
-        return Err(Error::InvalidArgument(format!("bokeh sprites need a non-empty {width}x{height} image with one depth per pixel")));
-    }
-    if !lens.is_valid() {
-        return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
-    }
     crate::frame::bokeh::check_options(options)?;
-    let slots: Vec<u32> = image.data.iter().zip(depth).flat_map(|(c, z)| [c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]).collect();
-    let desc = BokehContextDesc::new(width, height, 1, options.clone());
-    let sizes = [(4 * pixels, "bokeh/input"), (pixels, "bokeh/input-counts"), (3 * pixels, "bokeh/out")];
-    with_buffers(backend, &sizes, |backend, b| {
-        backend.write_buffer(b[0], 0, &slots)?;
-        backend.write_buffer(b[1], 0, &vec![1u32; pixels as usize])?;
+    let desc = BokehContextDesc::new(image.width, image.height, 1, options.clone());
+    let (out, (times, (detected, blur_radius), context_bytes)) = one_layer_frame(backend, "bokeh sprites", image, depth, lens, |backend, frame| {
         let mut ctx = BokehContext::new(backend, &desc)?;
         let ran = (|| {
-            ctx.record(backend, &Frame::layers(width, height, 1, *lens, b[0], b[1], b[2]))?;
+            ctx.record(backend, frame)?;
             let times = backend.submit()?;
-            let (detected, blur_radius) = ctx.detected_and_radius(backend)?;
-            Ok(BokehOutput {
-                image: read_rgb(backend, b[2], width, height)?,
-                times,
-                detected,
-                overflow: detected.saturating_sub(options.capacity as u64),
-                blur_radius,
-                buffer_bytes: ctx.device_bytes() + 4 * 8 * pixels,
-            })
+            Ok((times, ctx.detected_and_radius(backend)?, ctx.device_bytes()))
         })();
         ctx.destroy(backend);
         ran
+    })?;
+    let pixels = image.width as u64 * image.height as u64;
+    Ok(BokehOutput {
+        image: out,
+        times,
+        detected,
+        overflow: detected.saturating_sub(options.capacity as u64),
+        blur_radius,
+        buffer_bytes: context_bytes + 4 * 8 * pixels,
     })
 }

@@ -24,8 +24,8 @@ use dof::dof_shaders::aperture::{Aperture, blades, masked};
 use dof::dof_shaders::splat::fragment::MAX_EDGE;
 use dof::frame::splat::MAX_LIST_ENTRIES;
 use dof::frame::{
-    BokehContext, BokehContextDesc, DepthEncoding, Frame, FrameInput, FrameOutput, GatherContext, GatherContextDesc,
-    SplatContext, SplatContextDesc,
+    BokehContext, BokehContextDesc, DepthEncoding, Frame, FrameInput, FrameOutput, GatherContext, GatherContextDesc, SplatContext,
+    SplatContextDesc,
 };
 use dof::methods::bokeh::BokehOptions;
 use dof::methods::splat::{Merge, SplatOptions};
@@ -81,7 +81,16 @@ enum ApertureIn {
     Masked(u8, u64),
     /// Any kernel description with any mask: inconsistent shapes are possible through the public
     /// fields.
-    Raw { blades: u32, curvature: f32, normal: [f32; 2], step: [f32; 2], inv_inradius: f32, area: f32, mask_side: u8, texels: u16 },
+    Raw {
+        blades: u32,
+        curvature: f32,
+        normal: [f32; 2],
+        step: [f32; 2],
+        inv_inradius: f32,
+        area: f32,
+        mask_side: u8,
+        texels: u16,
+    },
 }
 
 impl ApertureIn {
@@ -176,7 +185,10 @@ struct ContextIn {
 #[derive(Arbitrary, Debug, Clone, Copy)]
 enum LensIn {
     /// Focal length 5 cm, 2000 px a unit: CoC up to about 100 px.
-    Sane { aperture: u8, focus: u8 },
+    Sane {
+        aperture: u8,
+        focus: u8,
+    },
     Raw([f32; 4]),
 }
 
@@ -235,8 +247,15 @@ enum EncodingIn {
 #[derive(Arbitrary, Debug, Clone, Copy)]
 enum InputIn {
     /// The caller's fragments and counts buffers (0 and 1), or any buffer ids.
-    Buffers { fragments: u8, counts: u8 },
-    Images { color: ImageIn, depth: ImageIn, encoding: EncodingIn },
+    Buffers {
+        fragments: u8,
+        counts: u8,
+    },
+    Images {
+        color: ImageIn,
+        depth: ImageIn,
+        encoding: EncodingIn,
+    },
 }
 
 #[derive(Arbitrary, Debug, Clone, Copy)]
@@ -332,11 +351,8 @@ enum Context {
 /// Whether the library must refuse an extent, and whether it is small enough to allocate.
 fn judge(width: u32, height: u32, layers: u32, splat: bool) -> (bool, bool) {
     let slot_bytes = 16 * width as u128 * height as u128 * layers as u128;
-    let must_refuse = width == 0
-        || height == 0
-        || layers == 0
-        || slot_bytes > 1 << 34
-        || (splat && (width > MAX_EDGE || height > MAX_EDGE));
+    let must_refuse =
+        width == 0 || height == 0 || layers == 0 || slot_bytes > 1 << 34 || (splat && (width > MAX_EDGE || height > MAX_EDGE));
     let small = width <= SMALL_EDGE && height <= SMALL_EDGE && layers <= SMALL_LAYERS;
     (must_refuse, small)
 }
@@ -439,7 +455,15 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Context, (u32, u32, u32)
         }
     };
     let context = clean("creating the context", context);
-    stat(&format!("context {}: {}", if context.is_some() { "created" } else { "refused" }, match c.method { Method::Splat { .. } => "splat", Method::Gather { .. } => "gather", Method::Bokeh { .. } => "bokeh" }));
+    stat(&format!(
+        "context {}: {}",
+        if context.is_some() { "created" } else { "refused" },
+        match c.method {
+            Method::Splat { .. } => "splat",
+            Method::Gather { .. } => "gather",
+            Method::Bokeh { .. } => "bokeh",
+        }
+    ));
     let context = context?;
     assert!(!must_refuse, "a {w}x{h} context with {layers} layers was accepted: it must be refused");
     Some((context, (w, h, layers)))
@@ -480,7 +504,8 @@ fn fill(b: &mut CpuBackend, bufs: &[BufferId; 3], f: &FrameIn, size: (u32, u32, 
             }
             let cycle = |n: u64| -> Vec<u32> { words.iter().copied().cycle().take(n as usize).collect() };
             let _ = b.write_buffer(bufs[0], 0, &cycle(frag_cap.min(4 * SMALL_EDGE as u64 * SMALL_EDGE as u64 * SMALL_LAYERS as u64)));
-            let counts: Vec<u32> = cycle(count_cap.min(SMALL_EDGE as u64 * SMALL_EDGE as u64)).into_iter().map(|c| c.rotate_left(16)).collect();
+            let counts: Vec<u32> =
+                cycle(count_cap.min(SMALL_EDGE as u64 * SMALL_EDGE as u64)).into_iter().map(|c| c.rotate_left(16)).collect();
             let _ = b.write_buffer(bufs[1], 0, &counts);
         }
     }
@@ -519,11 +544,9 @@ fn run(input: &Input) {
                     height: size.1,
                     lens: f.lens.get(),
                     input: match f.input {
-                        InputIn::Buffers { fragments, counts } => FrameInput::Layers {
-                            fragments: buffer(fragments, &bufs),
-                            counts: buffer(counts, &bufs),
-                            layers: size.2,
-                        },
+                        InputIn::Buffers { fragments, counts } => {
+                            FrameInput::Layers { fragments: buffer(fragments, &bufs), counts: buffer(counts, &bufs), layers: size.2 }
+                        }
                         InputIn::Images { color, depth, encoding } => FrameInput::Images {
                             color: color.get((size.0, size.1)),
                             depth: depth.get((size.0, size.1)),
@@ -572,13 +595,19 @@ fn run(input: &Input) {
                         clean("the sprites and radius", c.detected_and_radius(&mut b));
                     }
                 }
-                let sane = matches!((f.content, f.lens, f.input, f.output), (Content::WellFormed(_), LensIn::Sane { .. }, InputIn::Buffers { fragments: 0, counts: 1 }, OutputIn::Buffer(2)));
+                let sane = matches!(
+                    (f.content, f.lens, f.input, f.output),
+                    (Content::WellFormed(_), LensIn::Sane { .. }, InputIn::Buffers { fragments: 0, counts: 1 }, OutputIn::Buffer(2))
+                );
                 if sane {
                     stat("sane frame checked");
                     let words = 3 * frame.width as u64 * frame.height as u64;
                     let out = b.read_buffer(bufs[2], 0, words).expect("the output of a recorded frame");
                     if let Some(bad) = out.iter().position(|w| !f32::from_bits(*w).is_finite()) {
-                        panic!("well-formed input through a sane lens gave a non-finite output at word {bad}: {}", f32::from_bits(out[bad]));
+                        panic!(
+                            "well-formed input through a sane lens gave a non-finite output at word {bad}: {}",
+                            f32::from_bits(out[bad])
+                        );
                     }
                 }
             }

@@ -91,7 +91,11 @@ unsafe extern "system" fn collect(
     // `main` keeps alive until after the instance is destroyed.
     let (data, log) = unsafe { (&*data, &*(log as *const Log)) };
     let text = |p: *const c_char| if p.is_null() { String::new() } else { unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned() };
-    log.lock().unwrap_or_else(|e| e.into_inner()).push(format!("[{severity:?}] {}: {}", text(data.p_message_id_name), text(data.p_message)));
+    log.lock().unwrap_or_else(|e| e.into_inner()).push(format!(
+        "[{severity:?}] {}: {}",
+        text(data.p_message_id_name),
+        text(data.p_message)
+    ));
     vk::FALSE
 }
 
@@ -144,9 +148,12 @@ impl Renderer {
             let mut chained = messenger_info(log);
             let mut info = vk::InstanceCreateInfo::default().application_info(&app);
             if validation {
-                info = info.enabled_layer_names(&layers).enabled_extension_names(&extensions).push_next(&mut features).push_next(&mut chained);
+                info =
+                    info.enabled_layer_names(&layers).enabled_extension_names(&extensions).push_next(&mut features).push_next(&mut chained);
             }
-            let instance = entry.create_instance(&info, None).context("vkCreateInstance (with --validation: is vulkan-validationlayers installed?)")?;
+            let instance = entry
+                .create_instance(&info, None)
+                .context("vkCreateInstance (with --validation: is vulkan-validationlayers installed?)")?;
             let messenger = if validation {
                 let debug = ash::ext::debug_utils::Instance::new(&entry, &instance);
                 let messenger = debug.create_debug_utils_messenger(&messenger_info(log), None)?;
@@ -170,7 +177,9 @@ impl Renderer {
                     .position(|f| f.queue_flags.contains(vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE))
                     .or_else(|| families.iter().position(|f| f.queue_flags.contains(vk::QueueFlags::COMPUTE)));
                 let named = device_name.is_none_or(|n| name.to_lowercase().contains(&n.to_lowercase()));
-                if let (true, true, true, Some(family)) = (named, supported, props.api_version >= VulkanBackend::REQUIRED_API_VERSION, family) {
+                if let (true, true, true, Some(family)) =
+                    (named, supported, props.api_version >= VulkanBackend::REQUIRED_API_VERSION, family)
+                {
                     let graphics = families[family].queue_flags.contains(vk::QueueFlags::GRAPHICS);
                     chosen = Some((pd, family as u32, graphics, name));
                     break;
@@ -196,7 +205,8 @@ impl Renderer {
                 .queue_family_index(queue_family)
                 .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
             let pool = device.create_command_pool(&pool_info, None)?;
-            let alloc = vk::CommandBufferAllocateInfo::default().command_pool(pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
+            let alloc =
+                vk::CommandBufferAllocateInfo::default().command_pool(pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
             let cb = device.allocate_command_buffers(&alloc)?[0];
             let fence = device.create_fence(&vk::FenceCreateInfo::default(), None)?;
             let (buffers, images) = (Vec::new(), Vec::new());
@@ -261,7 +271,10 @@ impl Renderer {
         // SAFETY: the command buffer is not pending.
         unsafe {
             self.device.reset_command_buffer(self.cb, vk::CommandBufferResetFlags::empty())?;
-            self.device.begin_command_buffer(self.cb, &vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT))?;
+            self.device.begin_command_buffer(
+                self.cb,
+                &vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
+            )?;
         }
         Ok(())
     }
@@ -289,7 +302,9 @@ impl Renderer {
             .dst_access_mask(dst.1)
             .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-            .subresource_range(vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1))];
+            .subresource_range(
+                vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1),
+            )];
         // SAFETY: the command buffer is recording, outside a render pass; the image is live.
         unsafe { self.device.cmd_pipeline_barrier(self.cb, src.0, dst.0, vk::DependencyFlags::empty(), &[], &[], &barrier) };
     }
@@ -371,7 +386,13 @@ fn run_frame(
     // The pass before: here a clear of the output image (magenta, so a pixel the frame did not write
     // would show, and fail the comparison). The previous frame's readback copy read the image, so
     // the transition waits for transfers; its contents are discarded (UNDEFINED).
-    r.image_barrier(output, Layout::UNDEFINED, Layout::TRANSFER_DST_OPTIMAL, (TRANSFER, Access::empty()), (TRANSFER, Access::TRANSFER_WRITE));
+    r.image_barrier(
+        output,
+        Layout::UNDEFINED,
+        Layout::TRANSFER_DST_OPTIMAL,
+        (TRANSFER, Access::empty()),
+        (TRANSFER, Access::TRANSFER_WRITE),
+    );
     let range = [vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1)];
     let magenta = vk::ClearColorValue { float32: [1.0, 0.0, 1.0, 1.0] };
     // SAFETY: recording, outside a render pass; the image has TRANSFER_DST usage and is in that layout.
@@ -404,7 +425,13 @@ fn run_frame(
     // leaves the output in: `final_layout`, last written by a transfer (its copy) whose writes it made
     // visible to every later command. Our barrier names that transfer write as its source and moves
     // the image to the layout our copy needs.
-    r.image_barrier(output, shader_read, Layout::TRANSFER_SRC_OPTIMAL, (TRANSFER, Access::TRANSFER_WRITE), (TRANSFER, Access::TRANSFER_READ));
+    r.image_barrier(
+        output,
+        shader_read,
+        Layout::TRANSFER_SRC_OPTIMAL,
+        (TRANSFER, Access::TRANSFER_WRITE),
+        (TRANSFER, Access::TRANSFER_READ),
+    );
     // SAFETY: recording; the image is in TRANSFER_SRC_OPTIMAL and the buffer holds 16 bytes a pixel.
     unsafe { r.device.cmd_copy_image_to_buffer(r.cb, output, Layout::TRANSFER_SRC_OPTIMAL, out.readback.buffer, &region(extent, 0)) };
     r.memory_barrier((TRANSFER, Access::TRANSFER_WRITE), (vk::PipelineStageFlags::HOST, Access::HOST_READ));
@@ -499,12 +526,23 @@ fn main() -> Result<ExitCode> {
     r.begin()?;
     let to_dst = (TRANSFER, Access::TRANSFER_WRITE);
     for image in [colour_image, depth_image] {
-        r.image_barrier(image, Layout::UNDEFINED, Layout::TRANSFER_DST_OPTIMAL, (vk::PipelineStageFlags::TOP_OF_PIPE, Access::empty()), to_dst);
+        r.image_barrier(
+            image,
+            Layout::UNDEFINED,
+            Layout::TRANSFER_DST_OPTIMAL,
+            (vk::PipelineStageFlags::TOP_OF_PIPE, Access::empty()),
+            to_dst,
+        );
     }
     // SAFETY: recording; the regions lie inside the buffers, the images are in TRANSFER_DST_OPTIMAL.
     unsafe {
         let d = &r.device;
-        d.cmd_copy_buffer(r.cb, staging.buffer, fragments.buffer, &[vk::BufferCopy::default().src_offset(at_fragments).size(fragments.bytes)]);
+        d.cmd_copy_buffer(
+            r.cb,
+            staging.buffer,
+            fragments.buffer,
+            &[vk::BufferCopy::default().src_offset(at_fragments).size(fragments.bytes)],
+        );
         d.cmd_copy_buffer(r.cb, staging.buffer, counts.buffer, &[vk::BufferCopy::default().src_offset(at_counts).size(counts.bytes)]);
         d.cmd_copy_buffer_to_image(r.cb, staging.buffer, colour_image, Layout::TRANSFER_DST_OPTIMAL, &region(extent, 0));
         d.cmd_copy_buffer_to_image(r.cb, staging.buffer, depth_image, Layout::TRANSFER_DST_OPTIMAL, &region(extent, at_depth));
@@ -546,7 +584,11 @@ fn main() -> Result<ExitCode> {
     // running it now (one submission to our queue, waited for) leaves nothing for the first frame's
     // begin_external to flush, so that every frame submits nothing.
     backend.submit()?;
-    println!("context: {:.1} MiB of device memory, {} allocations", ctx.device_bytes() as f64 / (1 << 20) as f64, backend.counters().allocations);
+    println!(
+        "context: {:.1} MiB of device memory, {} allocations",
+        ctx.device_bytes() as f64 / (1 << 20) as f64,
+        backend.counters().allocations
+    );
 
     // The reference: the one-shot path on the CPU backend, with the device's workgroup memory so
     // both plan the same sort.

@@ -112,9 +112,7 @@ pub fn parse_aperture(text: &str) -> Result<ApertureShape> {
         #[cfg(feature = "exr")]
         return image_aperture(Path::new(text));
         #[cfg(not(feature = "exr"))]
-        return Err(Error::InvalidArgument(format!(
-            "aperture image {text}: reading PNG files needs the `exr` feature of the dof crate"
-        )));
+        return Err(Error::InvalidArgument(format!("aperture image {text}: reading PNG files needs the `exr` feature of the dof crate")));
     }
     Err(syntax(text))
 }

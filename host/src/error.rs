@@ -10,9 +10,7 @@ pub enum Error {
          The CPU backend (`--backend cpu`) works without Vulkan."
     )]
     NoVulkan(String),
-    #[error(
-        "the Khronos validation layer was requested but is not installed\n  hint: `apt-get install vulkan-validationlayers`"
-    )]
+    #[error("the Khronos validation layer was requested but is not installed\n  hint: `apt-get install vulkan-validationlayers`")]
     NoValidationLayer,
     #[error("Vulkan call {call} failed: {result}")]
     Vulkan { call: &'static str, result: ash::vk::Result },

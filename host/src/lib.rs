@@ -49,8 +49,8 @@ pub mod workload;
 
 pub use error::{Error, Result};
 
+pub use backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
 /// The kernel crate, so that integrators use the kernel types of the version this crate was built with.
 pub use dof_shaders;
-pub use backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
 pub use layers::{Fragment, LayeredImage, RgbImage};
 pub use scene::ThinLens;

@@ -104,12 +104,8 @@ pub fn compare(image: &RgbImage, reference: &RgbImage, mask: Option<&[bool]>) ->
     check_sizes(image, reference, mask)?;
     let squared = squared_errors(image, reference);
     let pixels = squared.len() as u64;
-    let similarity = image_compare::rgb_similarity_structure(
-        &image_compare::Algorithm::MSSIMSimple,
-        &to_rgb8(image),
-        &to_rgb8(reference),
-    )
-    .map_err(|e| Error::InvalidArgument(format!("SSIM failed: {e}")))?;
+    let similarity = image_compare::rgb_similarity_structure(&image_compare::Algorithm::MSSIMSimple, &to_rgb8(image), &to_rgb8(reference))
+        .map_err(|e| Error::InvalidArgument(format!("SSIM failed: {e}")))?;
     let flip_map = flip_map(image, reference);
     let mut result = ImageError {
         psnr_db: psnr_from(squared.iter().sum(), pixels),

@@ -9,9 +9,10 @@ pub const SOURCE_HASH: &str = env!("DOF_SHADERS_SOURCE_HASH");
 
 /// The module holding `entry` as words, as `vkCreateShaderModule` wants them.
 pub fn module_words(entry: &str) -> Option<Vec<u32>> {
-    MODULES.iter().find(|(name, _)| *name == entry).map(|(_, bytes)| {
-        bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect()
-    })
+    MODULES
+        .iter()
+        .find(|(name, _)| *name == entry)
+        .map(|(_, bytes)| bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect())
 }
 
 /// Total size of the embedded modules in bytes.

@@ -122,7 +122,12 @@ const FLAT: [f32; 3] = [0.25, 3.0, 1200.0];
 
 pub fn cases() -> Vec<Case> {
     vec![
-        Case { name: "pinhole", expectation: "aperture 0: the front layer, bit for bit", expect: Expect::Exact, build: || (noise_image(37, 29, 3, varied), test_lens(0.0)) },
+        Case {
+            name: "pinhole",
+            expectation: "aperture 0: the front layer, bit for bit",
+            expect: Expect::Exact,
+            build: || (noise_image(37, 29, 3, varied), test_lens(0.0)),
+        },
         Case {
             name: "sub-pixel-coc",
             expectation: "every CoC under one pixel: the front layer within 1e-5",
@@ -133,14 +138,25 @@ pub fn cases() -> Vec<Case> {
                 (img, test_lens(0.0005))
             },
         },
-        Case { name: "flat-field", expectation: "a flat colour stays flat within 1e-3 under blur", expect: Expect::Flat(1e-3), build: || (noise_image(50, 41, 3, |_| FLAT), test_lens(0.01)) },
+        Case {
+            name: "flat-field",
+            expectation: "a flat colour stays flat within 1e-3 under blur",
+            expect: Expect::Flat(1e-3),
+            build: || (noise_image(50, 41, 3, |_| FLAT), test_lens(0.01)),
+        },
         Case {
             name: "nan-inf-input",
             expectation: "NaN/Inf colours and NaN, zero, negative depths: nothing non-finite spreads",
             expect: Expect::NoSpread,
             build: || {
                 let mut img = noise_image(33, 33, 2, varied);
-                let bad = [([f32::NAN, 1.0, 1.0], 3.0), ([f32::INFINITY, 1.0, 1.0], 3.0), ([1.0; 3], f32::NAN), ([1.0; 3], -2.0), ([1.0; 3], 0.0)];
+                let bad = [
+                    ([f32::NAN, 1.0, 1.0], 3.0),
+                    ([f32::INFINITY, 1.0, 1.0], 3.0),
+                    ([1.0; 3], f32::NAN),
+                    ([1.0; 3], -2.0),
+                    ([1.0; 3], 0.0),
+                ];
                 for (k, (color, depth)) in bad.into_iter().enumerate() {
                     let p = 100 + 150 * k;
                     img.counts[p] = 1;
@@ -170,7 +186,12 @@ pub fn cases() -> Vec<Case> {
             expect: Expect::Finite,
             build: || (noise_image(40, 40, 2, varied), ThinLens { focus_distance: 0.050005, ..test_lens(0.02) }),
         },
-        Case { name: "coc-beyond-rings", expectation: "CoC radius ~1000 px, far beyond every window: capped, finite", expect: Expect::Finite, build: || (noise_image(64, 48, 2, varied), test_lens(1.0)) },
+        Case {
+            name: "coc-beyond-rings",
+            expectation: "CoC radius ~1000 px, far beyond every window: capped, finite",
+            expect: Expect::Finite,
+            build: || (noise_image(64, 48, 2, varied), test_lens(1.0)),
+        },
         Case {
             name: "sky-at-infinity",
             expectation: "half the image is a black sky (the background at depth +inf), the other half has no data (no fragment): finite",
@@ -198,7 +219,12 @@ pub fn cases() -> Vec<Case> {
             expectation: "a blurred near square over a flat coloured sky at +inf: finite, and the sky keeps its colour within 1e-3 in the image's corners, beyond the blur",
             expect: Expect::FlatCorners(1e-3),
             // The square's CoC radius is 19 px; the corners lie at least 32 px from it.
-            build: || (sky_over(noise_image(96, 96, 1, varied), |i| (40..56).contains(&(i % 96)) && (40..56).contains(&(i / 96))), test_lens(0.04)),
+            build: || {
+                (
+                    sky_over(noise_image(96, 96, 1, varied), |i| (40..56).contains(&(i % 96)) && (40..56).contains(&(i / 96))),
+                    test_lens(0.04),
+                )
+            },
         },
         Case {
             name: "equal-depths",
@@ -210,8 +236,18 @@ pub fn cases() -> Vec<Case> {
                 (img, test_lens(0.01))
             },
         },
-        Case { name: "one-pixel", expectation: "a 1x1 image: finite, one pixel", expect: Expect::Finite, build: || (noise_image(1, 1, 2, varied), test_lens(0.02)) },
-        Case { name: "ragged-size", expectation: "17x5 (no multiple of any tile): finite, every pixel", expect: Expect::Finite, build: || (noise_image(17, 5, 2, varied), test_lens(0.01)) },
+        Case {
+            name: "one-pixel",
+            expectation: "a 1x1 image: finite, one pixel",
+            expect: Expect::Finite,
+            build: || (noise_image(1, 1, 2, varied), test_lens(0.02)),
+        },
+        Case {
+            name: "ragged-size",
+            expectation: "17x5 (no multiple of any tile): finite, every pixel",
+            expect: Expect::Finite,
+            build: || (noise_image(17, 5, 2, varied), test_lens(0.01)),
+        },
         Case {
             name: "very-wide-image",
             expectation: "40000x2: a finite image, or a clear TooLarge error",
@@ -262,7 +298,8 @@ impl Case {
         if out.width != front.width || out.height != front.height || out.data.len() != front.data.len() {
             return Outcome::Fail(format!("{}x{} out for {}x{} in", out.width, out.height, front.width, front.height));
         }
-        let spread = out.data.iter().zip(&front.data).filter(|(o, f)| !o.iter().all(|c| c.is_finite()) && f.iter().all(|c| c.is_finite())).count();
+        let spread =
+            out.data.iter().zip(&front.data).filter(|(o, f)| !o.iter().all(|c| c.is_finite()) && f.iter().all(|c| c.is_finite())).count();
         if spread > 0 {
             return Outcome::Fail(format!("{spread} non-finite pixels where the input was finite"));
         }
@@ -270,7 +307,11 @@ impl Case {
             return Outcome::Fail("non-finite pixels".into());
         }
         let worst = |want: &dyn Fn(usize) -> [f32; 3]| {
-            out.data.iter().enumerate().map(|(i, p)| (0..3).map(|c| (p[c] - want(i)[c]).abs() / want(i)[c].abs().max(1e-3)).fold(0.0f32, f32::max)).fold(0.0f32, f32::max)
+            out.data
+                .iter()
+                .enumerate()
+                .map(|(i, p)| (0..3).map(|c| (p[c] - want(i)[c]).abs() / want(i)[c].abs().max(1e-3)).fold(0.0f32, f32::max))
+                .fold(0.0f32, f32::max)
         };
         match self.expect {
             Expect::Exact if out == *front => Outcome::Pass("identical".into()),
@@ -282,13 +323,27 @@ impl Case {
             Expect::FlatCorners(tol) => {
                 let (w, h) = (out.width as usize, out.height as usize);
                 let corner = |i: usize| (i % w < 8 || i % w >= w - 8) && (i / w < 8 || i / w >= h - 8);
-                let err = out.data.iter().enumerate().filter(|(i, _)| corner(*i)).map(|(_, p)| (0..3).map(|c| (p[c] - FLAT[c]).abs() / FLAT[c]).fold(0.0f32, f32::max)).fold(0.0f32, f32::max);
-                if err <= tol { Outcome::Pass(format!("corners within {err:.2e}")) } else { Outcome::Fail(format!("corners off by {err:.2e} > {tol:.0e}")) }
+                let err = out
+                    .data
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| corner(*i))
+                    .map(|(_, p)| (0..3).map(|c| (p[c] - FLAT[c]).abs() / FLAT[c]).fold(0.0f32, f32::max))
+                    .fold(0.0f32, f32::max);
+                if err <= tol {
+                    Outcome::Pass(format!("corners within {err:.2e}"))
+                } else {
+                    Outcome::Fail(format!("corners off by {err:.2e} > {tol:.0e}"))
+                }
             }
             Expect::Energy(tol) => {
                 let (got, want) = (red_sum(&out), red_sum(front));
                 let rel = (got / want - 1.0).abs();
-                if rel <= tol as f64 { Outcome::Pass(format!("energy within {:.2}%", 100.0 * rel)) } else { Outcome::Fail(format!("energy {got:.4e} vs {want:.4e}")) }
+                if rel <= tol as f64 {
+                    Outcome::Pass(format!("energy within {:.2}%", 100.0 * rel))
+                } else {
+                    Outcome::Fail(format!("energy {got:.4e} vs {want:.4e}"))
+                }
             }
             Expect::Deterministic => match method.run(backend, &input, &setting) {
                 Ok(again) if again.image == out => Outcome::Pass("two runs identical".into()),

@@ -63,14 +63,18 @@ fn bad_cameras_and_lenses_are_reported() {
 
 #[test]
 fn splatting_methods_render_builtin_and_exr_scenes() {
-    for (method, extra) in [("tiled", &["--merge", "2x2"][..]), ("multilayer", &["--merge", "4x4", "--tile", "24", "--max-coc", "20"][..])] {
+    for (method, extra) in [("tiled", &["--merge", "2x2"][..]), ("multilayer", &["--merge", "4x4", "--tile", "24", "--max-coc", "20"][..])]
+    {
         let out = temp(&format!("simple-{method}.exr"));
         let mut args = vec!["render", "--method", method, "--width", "96", "--height", "54", "--out", out.to_str().unwrap()];
         args.extend_from_slice(extra);
         let o = dof(&args);
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         let stdout = String::from_utf8_lossy(&o.stdout);
-        assert!(stdout.contains("tiles copied through") && stdout.contains("sort classes used"), "the run reports what it left out:\n{stdout}");
+        assert!(
+            stdout.contains("tiles copied through") && stdout.contains("sort classes used"),
+            "the run reports what it left out:\n{stdout}"
+        );
         assert!(std::fs::metadata(out.with_extension("png")).unwrap().len() > 0);
     }
     // An EXR has no lens: the command asks for one, then renders with it.
@@ -81,7 +85,8 @@ fn splatting_methods_render_builtin_and_exr_scenes() {
     assert_fails_with(&["render", "--scene", input, "--method", "multilayer"], "--focus");
     assert_fails_with(&["render", "--scene", input, "--method", "tiled", "--focus", "4"], "--f-number or --aperture-radius");
     let out = temp("exr-multilayer.exr");
-    let o = dof(&["render", "--scene", input, "--method", "multilayer", "--focus", "4.2", "--f-number", "1.4", "--out", out.to_str().unwrap()]);
+    let o =
+        dof(&["render", "--scene", input, "--method", "multilayer", "--focus", "4.2", "--f-number", "1.4", "--out", out.to_str().unwrap()]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert_fails_with(&["render", "--method", "multilayer", "--tile", "20", "--width", "32", "--height", "32"], "tile size 20");
     assert_fails_with(&["render", "--method", "multilayer", "--merge", "3x3"], "unknown merge level");
@@ -110,13 +115,28 @@ fn raytrace_layered_and_shaped_apertures_render() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     for method in ["raytrace", "layered", "bokeh"] {
         let out = temp(&format!("exr-{method}.exr"));
-        let o = dof(&["render", "--scene", layers.to_str().unwrap(), "--method", method, "--focus", "4.2", "--f-number", "1.4", "--out", out.to_str().unwrap()]);
+        let o = dof(&[
+            "render",
+            "--scene",
+            layers.to_str().unwrap(),
+            "--method",
+            method,
+            "--focus",
+            "4.2",
+            "--f-number",
+            "1.4",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
         assert!(o.status.success(), "{method} on an EXR: {}", String::from_utf8_lossy(&o.stderr));
     }
     assert_fails_with(&["render", "--method", "gather", "--aperture", "blades:6", "--width", "32", "--height", "32"], "splatting methods");
     assert_fails_with(&["render", "--method", "multilayer", "--aperture", "hexagon", "--width", "32", "--height", "32"], "blades:N");
     assert_fails_with(&["render", "--method", "raytrace", "--spp", "0", "--width", "32", "--height", "32"], "rays per pixel");
-    assert_fails_with(&["render", "--method", "layered", "--layers-per-doubling", "9", "--width", "32", "--height", "32"], "layers per doubling");
+    assert_fails_with(
+        &["render", "--method", "layered", "--layers-per-doubling", "9", "--width", "32", "--height", "32"],
+        "layers per doubling",
+    );
 }
 
 /// A built-in scene exported to binary glTF in the temp folder.
@@ -131,7 +151,9 @@ fn glb(name: &str, file: &str) -> PathBuf {
 fn renders_a_gltf_scene_on_both_backends() {
     let scene = glb("simple", "simple.glb");
     let s = scene.to_str().unwrap();
-    for (method, extra) in [("pinhole", vec![]), ("layers", vec![]), ("reference", vec!["--samples", "4"]), ("multilayer", vec!["--merge", "4x4"])] {
+    for (method, extra) in
+        [("pinhole", vec![]), ("layers", vec![]), ("reference", vec!["--samples", "4"]), ("multilayer", vec!["--merge", "4x4"])]
+    {
         let out = temp(&format!("gltf-{method}.exr"));
         let mut args = vec!["render", "--scene", s, "--method", method, "--width", "96", "--height", "54", "--out", out.to_str().unwrap()];
         args.extend(extra);
@@ -141,11 +163,45 @@ fn renders_a_gltf_scene_on_both_backends() {
     }
     // The same scene rasterised by the graphics pipeline on lavapipe.
     let out = temp("gltf-vulkan.exr");
-    let o = dof(&["render", "--scene", s, "--method", "reference", "--samples", "4", "--backend", "vulkan", "--width", "96", "--height", "54", "--out", out.to_str().unwrap()]);
+    let o = dof(&[
+        "render",
+        "--scene",
+        s,
+        "--method",
+        "reference",
+        "--samples",
+        "4",
+        "--backend",
+        "vulkan",
+        "--width",
+        "96",
+        "--height",
+        "54",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "vulkan: {}", String::from_utf8_lossy(&o.stderr));
     // An explicit camera replaces the file's.
     let out = temp("gltf-eye.exr");
-    let o = dof(&["render", "--scene", s, "--method", "pinhole", "--eye", "0,1,6", "--target", "0,0.5,0", "--yfov", "50", "--width", "48", "--height", "27", "--out", out.to_str().unwrap()]);
+    let o = dof(&[
+        "render",
+        "--scene",
+        s,
+        "--method",
+        "pinhole",
+        "--eye",
+        "0,1,6",
+        "--target",
+        "0,0.5,0",
+        "--yfov",
+        "50",
+        "--width",
+        "48",
+        "--height",
+        "27",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "eye: {}", String::from_utf8_lossy(&o.stderr));
 }
 
@@ -165,7 +221,10 @@ fn bad_gltf_input_is_reported() {
     assert_fails_with(&["render", "--scene", s, "--focus", "-2", "--method", "pinhole"], "focus");
     assert_fails_with(&["render", "--scene", s, "--focus", "0.01", "--focal-length", "50", "--method", "pinhole"], "focal length");
     assert_fails_with(&["render", "--scene", s, "--width", "0", "--method", "pinhole"], "image size must be positive");
-    assert_fails_with(&["render", "--scene", s, "--width", "20000", "--height", "2", "--backend", "vulkan", "--method", "pinhole"], "framebuffer");
+    assert_fails_with(
+        &["render", "--scene", s, "--width", "20000", "--height", "2", "--backend", "vulkan", "--method", "pinhole"],
+        "framebuffer",
+    );
 }
 
 /// The background and the guard band as a user sets them: a coloured sky renders on every path, a
@@ -174,20 +233,64 @@ fn bad_gltf_input_is_reported() {
 fn background_and_guard_band_flags() {
     let out = temp("fence-sky.exr");
     for band in ["auto", "off", "8"] {
-        let o = dof(&["render", "--scene", "fence", "--width", "64", "--height", "36", "--method", "multilayer", "--background", "1,0.5,0",
-            "--guard-band", band, "--out", out.to_str().unwrap()]);
+        let o = dof(&[
+            "render",
+            "--scene",
+            "fence",
+            "--width",
+            "64",
+            "--height",
+            "36",
+            "--method",
+            "multilayer",
+            "--background",
+            "1,0.5,0",
+            "--guard-band",
+            band,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
         assert!(o.status.success(), "--guard-band {band}: {}", String::from_utf8_lossy(&o.stderr));
     }
     assert_fails_with(&["render", "--scene", "fence", "--background", "-1,0,0", "--samples", "1"], "background colour");
     assert_fails_with(&["render", "--scene", "fence", "--guard-band", "500", "--samples", "1"], "guard band");
     assert_fails_with(&["render", "--scene", "fence", "--guard-band", "wide", "--samples", "1"], "auto");
     // An EXR carries its own background (its colour at depth +inf).
-    assert_fails_with(&["render", "--scene", out.to_str().unwrap(), "--method", "gather", "--focus", "20", "--aperture-radius", "0.045",
-        "--background", "0,0,0"], "depth +inf");
-    let o = dof(&["render", "--scene", out.to_str().unwrap(), "--method", "gather", "--focus", "20", "--aperture-radius", "0.045", "--out",
-        temp("fence-sky-gather.exr").to_str().unwrap()]);
+    assert_fails_with(
+        &[
+            "render",
+            "--scene",
+            out.to_str().unwrap(),
+            "--method",
+            "gather",
+            "--focus",
+            "20",
+            "--aperture-radius",
+            "0.045",
+            "--background",
+            "0,0,0",
+        ],
+        "depth +inf",
+    );
+    let o = dof(&[
+        "render",
+        "--scene",
+        out.to_str().unwrap(),
+        "--method",
+        "gather",
+        "--focus",
+        "20",
+        "--aperture-radius",
+        "0.045",
+        "--out",
+        temp("fence-sky-gather.exr").to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    assert!(String::from_utf8_lossy(&o.stdout).contains("edge policy"), "the EXR's edges are extended: {}", String::from_utf8_lossy(&o.stdout));
+    assert!(
+        String::from_utf8_lossy(&o.stdout).contains("edge policy"),
+        "the EXR's edges are extended: {}",
+        String::from_utf8_lossy(&o.stdout)
+    );
 }
 
 /// Bad flags and outputs are refused before any work, naming the flag and the bound: outputs that
@@ -200,10 +303,16 @@ fn flags_and_outputs_are_checked_before_the_work() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let aperture_png = input.with_extension("png");
     let before = std::fs::read(&input).unwrap();
-    assert_fails_with(&["render", "--scene", input.to_str().unwrap(), "--method", "pinhole", "--out", input.to_str().unwrap()], "would overwrite the input");
+    assert_fails_with(
+        &["render", "--scene", input.to_str().unwrap(), "--method", "pinhole", "--out", input.to_str().unwrap()],
+        "would overwrite the input",
+    );
     assert_eq!(std::fs::read(&input).unwrap(), before, "the input is untouched");
     // The PNG preview of --out would land on the aperture image.
-    assert_fails_with(&["render", "--method", "multilayer", "--aperture", aperture_png.to_str().unwrap(), "--out", input.to_str().unwrap()], "would overwrite the input");
+    assert_fails_with(
+        &["render", "--method", "multilayer", "--aperture", aperture_png.to_str().unwrap(), "--out", input.to_str().unwrap()],
+        "would overwrite the input",
+    );
     assert_fails_with(&["render", "--exposure", "0", "--samples", "1"], "--exposure must be a positive number");
     assert_fails_with(&["render", "--exposure", "-1", "--samples", "1"], "--exposure must be a positive number");
     assert_fails_with(&["render", "--samples", "1000000000"], "must lie between 1 and 65536");
@@ -218,8 +327,21 @@ fn flags_and_outputs_are_checked_before_the_work() {
     assert_fails_with(&["render", "--method", "multilayer", "--max-coc", "0"], "got 0");
     assert_fails_with(&["render", "--method", "gather", "--max-coc", "200"], "got 200");
     // Negative coordinates need no `=`.
-    let o = dof(&["render", "--width", "32", "--height", "18", "--method", "pinhole", "--eye", "-0.1,0.2,0.5", "--target", "0,0,-1", "--out",
-        temp("negative-eye.exr").to_str().unwrap()]);
+    let o = dof(&[
+        "render",
+        "--width",
+        "32",
+        "--height",
+        "18",
+        "--method",
+        "pinhole",
+        "--eye",
+        "-0.1,0.2,0.5",
+        "--target",
+        "0,0,-1",
+        "--out",
+        temp("negative-eye.exr").to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }
 
@@ -262,7 +384,11 @@ fn soak_and_frame_bench_report_flat_memory_and_no_per_frame_work() {
     let o = dof(&["bench", "frame", "--backend", "cpu", "--scene", "simple", "--width", "64", "--height", "36", "--frames", "2", "--json"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let j: serde_json::Value = serde_json::from_slice(&o.stdout).expect("one JSON object");
-    assert_eq!((j["allocations_per_frame"].as_f64(), j["readbacks_per_frame"].as_f64(), j["submits_per_frame"].as_f64()), (Some(0.0), Some(0.0), Some(1.0)), "{j}");
+    assert_eq!(
+        (j["allocations_per_frame"].as_f64(), j["readbacks_per_frame"].as_f64(), j["submits_per_frame"].as_f64()),
+        (Some(0.0), Some(0.0), Some(1.0)),
+        "{j}"
+    );
     assert!(j["device_bytes"].as_u64().unwrap() > 0 && j["gpu_ms"].as_f64().unwrap() > 0.0, "{j}");
     assert_fails_with(&["soak", "--frames", "0"], "--frames");
     assert_fails_with(&["bench", "frame", "--frames", "0"], "--frames");
@@ -274,7 +400,25 @@ fn soak_and_frame_bench_report_flat_memory_and_no_per_frame_work() {
 fn scaling_bench_writes_points_and_plots_and_reports_skips() {
     let out = temp("scaling");
     let dir = out.to_str().unwrap();
-    let args = ["bench", "scaling", "--backend", "cpu", "--sizes", "64x36,96x54", "--cocs", "2,4", "--coc-size", "64x36", "--methods", "gather,multilayer", "--runs", "1", "--json", "--out", dir];
+    let args = [
+        "bench",
+        "scaling",
+        "--backend",
+        "cpu",
+        "--sizes",
+        "64x36,96x54",
+        "--cocs",
+        "2,4",
+        "--coc-size",
+        "64x36",
+        "--methods",
+        "gather,multilayer",
+        "--runs",
+        "1",
+        "--json",
+        "--out",
+        dir,
+    ];
     let o = dof(&args);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let j: serde_json::Value = serde_json::from_slice(&o.stdout).expect("one JSON object");
@@ -283,7 +427,8 @@ fn scaling_bench_writes_points_and_plots_and_reports_skips() {
     for method in ["gather", "multilayer"] {
         let series: Vec<&serde_json::Value> = points.iter().filter(|p| p["method"] == method && p["axis"] == "resolution").collect();
         assert_eq!(series.iter().map(|p| p["pixels"].as_u64().unwrap()).collect::<Vec<_>>(), vec![64 * 36, 96 * 54]);
-        let blur: Vec<f64> = points.iter().filter(|p| p["method"] == method && p["axis"] == "max_coc").map(|p| p["max_coc_px"].as_f64().unwrap()).collect();
+        let blur: Vec<f64> =
+            points.iter().filter(|p| p["method"] == method && p["axis"] == "max_coc").map(|p| p["max_coc_px"].as_f64().unwrap()).collect();
         assert!(blur.len() == 2 && (blur[0] - 2.0).abs() < 0.05 && (blur[1] - 4.0).abs() < 0.05, "{blur:?}");
     }
     for p in points {
@@ -291,7 +436,11 @@ fn scaling_bench_writes_points_and_plots_and_reports_skips() {
         assert!(p.get("skipped").is_none(), "{p}");
     }
     // More pixels hold more device memory.
-    let mem = |px: u64| points.iter().find(|p| p["method"] == "gather" && p["pixels"] == px && p["axis"] == "resolution").unwrap()["peak_device_bytes"].as_u64().unwrap();
+    let mem = |px: u64| {
+        points.iter().find(|p| p["method"] == "gather" && p["pixels"] == px && p["axis"] == "resolution").unwrap()["peak_device_bytes"]
+            .as_u64()
+            .unwrap()
+    };
     assert!(mem(96 * 54) > mem(64 * 36));
     for stem in ["scaling-time-vs-pixels-cpu", "scaling-time-vs-coc-cpu", "scaling-memory-vs-pixels-cpu"] {
         for ext in ["svg", "png"] {
@@ -302,7 +451,26 @@ fn scaling_bench_writes_points_and_plots_and_reports_skips() {
     assert!(std::fs::read_to_string(out.join("scaling.md")).unwrap().contains("| gather | max-radius=48 | cpu |"));
 
     // A budget every run exceeds: each series runs its first point and reports the rest as skipped.
-    let o = dof(&["bench", "scaling", "--backend", "cpu", "--sizes", "64x36,96x54", "--cocs", "none", "--methods", "gather", "--runs", "1", "--budget-s", "1e-9", "--no-plots", "--json", "--out", dir]);
+    let o = dof(&[
+        "bench",
+        "scaling",
+        "--backend",
+        "cpu",
+        "--sizes",
+        "64x36,96x54",
+        "--cocs",
+        "none",
+        "--methods",
+        "gather",
+        "--runs",
+        "1",
+        "--budget-s",
+        "1e-9",
+        "--no-plots",
+        "--json",
+        "--out",
+        dir,
+    ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let points = j["points"].as_array().unwrap();
@@ -321,16 +489,51 @@ fn scaling_bench_writes_points_and_plots_and_reports_skips() {
 #[test]
 fn ring_gather_renders_and_cost_ratios_are_measured() {
     let exr = temp("ring.exr");
-    let o = dof(&["render", "--scene", "simple", "--method", "ring-gather", "--rings", "3", "--width", "64", "--height", "36", "--out", exr.to_str().unwrap()]);
+    let o = dof(&[
+        "render",
+        "--scene",
+        "simple",
+        "--method",
+        "ring-gather",
+        "--rings",
+        "3",
+        "--width",
+        "64",
+        "--height",
+        "36",
+        "--out",
+        exr.to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(String::from_utf8_lossy(&o.stdout).contains("3 rings, 37 samples"), "{}", String::from_utf8_lossy(&o.stdout));
     assert!(exr.exists() && exr.with_extension("png").exists());
-    assert_fails_with(&["render", "--scene", "simple", "--method", "ring-gather", "--rings", "0", "--width", "64", "--height", "36"], "1 to 8 rings");
+    assert_fails_with(
+        &["render", "--scene", "simple", "--method", "ring-gather", "--rings", "0", "--width", "64", "--height", "36"],
+        "1 to 8 rings",
+    );
     assert_fails_with(&["render", "--scene", "simple", "--method", "gather", "--rings", "3"], "--rings is the ring gather's knob");
 
     let out = temp("ratios");
     let dir = out.to_str().unwrap();
-    let o = dof(&["bench", "ratios", "--backend", "cpu", "--scenes", "simple,fence", "--width", "64", "--height", "36", "--spp", "4", "--runs", "1", "--json", "--out", dir]);
+    let o = dof(&[
+        "bench",
+        "ratios",
+        "--backend",
+        "cpu",
+        "--scenes",
+        "simple,fence",
+        "--width",
+        "64",
+        "--height",
+        "36",
+        "--spp",
+        "4",
+        "--runs",
+        "1",
+        "--json",
+        "--out",
+        dir,
+    ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let rows: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON on stdout");
     let rows = rows.as_array().expect("an array of rows");

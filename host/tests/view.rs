@@ -22,7 +22,9 @@ fn view(args: &[&str]) -> Output {
         c
     };
     cmd.arg("view").args(args);
-    let out = cmd.output().unwrap_or_else(|e| panic!("cannot run {} (without DISPLAY the test needs xvfb-run: apt-get install xvfb): {e}", if display { bin } else { "xvfb-run" }));
+    let out = cmd.output().unwrap_or_else(|e| {
+        panic!("cannot run {} (without DISPLAY the test needs xvfb-run: apt-get install xvfb): {e}", if display { bin } else { "xvfb-run" })
+    });
     println!("--- dof view {}\n{}{}", args.join(" "), String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
     out
 }
@@ -72,11 +74,42 @@ fn the_viewer_screenshot_matches_dof_render() {
     for (method, merge) in [("multilayer", "none"), ("tiled", "4x4"), ("gather", "4x4"), ("ring-gather", "4x4"), ("bokeh", "4x4")] {
         let exr = dir.join(format!("render-{method}.exr"));
         run(dof()
-            .args(["render", "--scene", g, "--method", method, "--merge", merge, "--backend", "vulkan", "--width", "256", "--height", "144", "--out"])
+            .args([
+                "render",
+                "--scene",
+                g,
+                "--method",
+                method,
+                "--merge",
+                merge,
+                "--backend",
+                "vulkan",
+                "--width",
+                "256",
+                "--height",
+                "144",
+                "--out",
+            ])
             .arg(&exr));
         let shot = dir.join(format!("view-{method}.png"));
         let s = shot.to_str().unwrap();
-        let out = view(&["--scene", g, "--method", method, "--merge", merge, "--width", "256", "--height", "144", "--frames", "2", "--screenshot", s, "--hide-ui"]);
+        let out = view(&[
+            "--scene",
+            g,
+            "--method",
+            method,
+            "--merge",
+            merge,
+            "--width",
+            "256",
+            "--height",
+            "144",
+            "--frames",
+            "2",
+            "--screenshot",
+            s,
+            "--hide-ui",
+        ]);
         assert!(out.status.success(), "dof view --method {method} failed");
         compare(method, &shot, &exr, &mut failures);
     }
@@ -86,9 +119,27 @@ fn the_viewer_screenshot_matches_dof_render() {
     run(dof().args(["render", "--scene", "simple", "--method", "layers", "--width", "160", "--height", "90", "--out"]).arg(&layers));
     let l = layers.to_str().unwrap();
     let exr = dir.join("render-exr.exr");
-    run(dof().args(["render", "--scene", l, "--method", "multilayer", "--focus", "3", "--f-number", "2", "--backend", "vulkan", "--out"]).arg(&exr));
+    run(dof()
+        .args(["render", "--scene", l, "--method", "multilayer", "--focus", "3", "--f-number", "2", "--backend", "vulkan", "--out"])
+        .arg(&exr));
     let shot = dir.join("view-exr.png");
-    let out = view(&["--scene", l, "--method", "multilayer", "--merge", "none", "--focus", "3", "--f-number", "2", "--frames", "2", "--screenshot", shot.to_str().unwrap(), "--hide-ui"]);
+    let out = view(&[
+        "--scene",
+        l,
+        "--method",
+        "multilayer",
+        "--merge",
+        "none",
+        "--focus",
+        "3",
+        "--f-number",
+        "2",
+        "--frames",
+        "2",
+        "--screenshot",
+        shot.to_str().unwrap(),
+        "--hide-ui",
+    ]);
     assert!(out.status.success(), "dof view of an EXR failed");
     compare("exr multilayer", &shot, &exr, &mut failures);
     assert!(failures.is_empty(), "screenshots differ from dof render: {failures:?}");
@@ -142,7 +193,19 @@ fn scripted_resize_and_method_switches_leave_validation_silent() {
 /// every object left alive at vkDestroyDevice and vkDestroyInstance, says nothing.
 #[test]
 fn closing_the_viewer_exits_cleanly_without_leaks() {
-    let out = view(&["--scene", "simple", "--width", "256", "--height", "144", "--validation", "--frames", "100", "--script", "method=gather,close"]);
+    let out = view(&[
+        "--scene",
+        "simple",
+        "--width",
+        "256",
+        "--height",
+        "144",
+        "--validation",
+        "--frames",
+        "100",
+        "--script",
+        "method=gather,close",
+    ]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "dof view failed");
     assert!(text.contains("validation: 0 message(s)"));

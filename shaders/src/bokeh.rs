@@ -143,7 +143,8 @@ pub fn emit_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, color: M, depth: 
                 let s = r + 0.5;
                 let mirror = if z < p.lens.focus_distance { -1.0 } else { 1.0 };
                 let norm = 1.0 / weight_sum(centre, s, 1.0, &p.aperture, mirror, &mask);
-                let words = [centre[0], centre[1], s, mirror, (c[0] - mean[0]) * norm, (c[1] - mean[1]) * norm, (c[2] - mean[2]) * norm, 0.0];
+                let words =
+                    [centre[0], centre[1], s, mirror, (c[0] - mean[0]) * norm, (c[1] - mean[1]) * norm, (c[2] - mean[2]) * norm, 0.0];
                 let mut k = 0;
                 while k < SPRITE_WORDS {
                     sprites.store(i * SPRITE_WORDS + k, words[k as usize].to_bits());
@@ -183,7 +184,8 @@ pub fn splat_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, sprites: M, mask
             return;
         }
         let pi = y * p.width + x;
-        let mut acc = [f32::from_bits(target.load(4 * pi)), f32::from_bits(target.load(4 * pi + 1)), f32::from_bits(target.load(4 * pi + 2))];
+        let mut acc =
+            [f32::from_bits(target.load(4 * pi)), f32::from_bits(target.load(4 * pi + 1)), f32::from_bits(target.load(4 * pi + 2))];
         let mut i = 0;
         while i < n {
             let at = i * SPRITE_WORDS;

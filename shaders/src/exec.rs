@@ -190,11 +190,7 @@ mod gpu {
             control_barrier::<
                 { Scope::Workgroup as u32 },
                 { Scope::Workgroup as u32 },
-                {
-                    Semantics::WORKGROUP_MEMORY.bits()
-                        | Semantics::UNIFORM_MEMORY.bits()
-                        | Semantics::ACQUIRE_RELEASE.bits()
-                },
+                { Semantics::WORKGROUP_MEMORY.bits() | Semantics::UNIFORM_MEMORY.bits() | Semantics::ACQUIRE_RELEASE.bits() },
             >();
         }
     }
@@ -226,21 +222,11 @@ mod gpu {
         }
         #[inline]
         fn atomic_add(&mut self, i: u32, v: u32) -> u32 {
-            unsafe {
-                atomic_i_add::<u32, { Scope::QueueFamily as u32 }, { Semantics::NONE.bits() }>(
-                    &mut self.0[i as usize],
-                    v,
-                )
-            }
+            unsafe { atomic_i_add::<u32, { Scope::QueueFamily as u32 }, { Semantics::NONE.bits() }>(&mut self.0[i as usize], v) }
         }
         #[inline]
         fn atomic_max(&mut self, i: u32, v: u32) -> u32 {
-            unsafe {
-                atomic_u_max::<u32, { Scope::QueueFamily as u32 }, { Semantics::NONE.bits() }>(
-                    &mut self.0[i as usize],
-                    v,
-                )
-            }
+            unsafe { atomic_u_max::<u32, { Scope::QueueFamily as u32 }, { Semantics::NONE.bits() }>(&mut self.0[i as usize], v) }
         }
     }
 }

@@ -64,11 +64,7 @@ pub fn matte_hidden(a: &[f32; 4], z: f32) -> f32 {
 /// `ω_k(z)`: the matte of the front fragment.
 #[inline]
 pub fn matte_front(a: &[f32; 4], z: f32) -> f32 {
-    if z > a[2] && z < a[3] && is_finite(a[3]) {
-        (a[3] - z) / (a[3] - a[2])
-    } else {
-        matte_hidden(a, z)
-    }
+    if z > a[2] && z < a[3] && is_finite(a[3]) { (a[3] - z) / (a[3] - a[2]) } else { matte_hidden(a, z) }
 }
 
 #[inline]

@@ -255,9 +255,7 @@ mod tests {
         assert!(l.is_valid());
         let a = 2.0 * l.aperture_radius;
         for z in [0.3f32, 1.0, 1.9, 2.0, 2.5, 10.0, 1000.0] {
-            let want = a * l.focal_length * (z - l.focus_distance).abs()
-                / (z * (l.focus_distance - l.focal_length))
-                * l.pixels_per_unit;
+            let want = a * l.focal_length * (z - l.focus_distance).abs() / (z * (l.focus_distance - l.focal_length)) * l.pixels_per_unit;
             let got = l.coc_px(z);
             assert!((got - want).abs() <= 1e-4 * want.max(1.0), "z={z}: {got} vs {want}");
             assert_eq!(l.signed_coc_px(z) < 0.0, z < l.focus_distance && got > 0.0);

@@ -161,7 +161,15 @@ pub fn hex_point(ring: u32, j: u32) -> [f32; 2] {
 
 /// One workgroup a tile (8x8 half-resolution pixels): the 2x2 reduction into `half`, and the tile's
 /// largest near-field radius (half-resolution pixels) into `tiles`.
-pub fn downsample_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, sh: &mut [u32; 2 * 64], color: M, depth: M, mut half: M, mut tiles: M) {
+pub fn downsample_pass<G: Group, M: Mem>(
+    g: &mut G,
+    p: &RingGatherParams,
+    sh: &mut [u32; 2 * 64],
+    color: M,
+    depth: M,
+    mut half: M,
+    mut tiles: M,
+) {
     let [tx, ty, _] = g.workgroup_id();
     let (hw, hh) = (p.half_width(), p.half_height());
     let cap = p.max_radius as f32;

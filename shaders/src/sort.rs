@@ -163,15 +163,7 @@ impl<M: Mem> Pairs for GlobalPairs<'_, M> {
 /// this includes the flip. Wide steps take one barrier each; once a step only pairs positions inside
 /// aligned chunks of `span / size`, each invocation runs all remaining steps on its own chunk without
 /// barriers (they touch nothing outside it).
-fn local_steps<G: Group, const N: usize>(
-    g: &mut G,
-    sh: &mut [u32; N],
-    base: u32,
-    span: u32,
-    len: u32,
-    k: u32,
-    j_start: u32,
-) {
+fn local_steps<G: Group, const N: usize>(g: &mut G, sh: &mut [u32; N], base: u32, span: u32, len: u32, k: u32, j_start: u32) {
     let size = g.size();
     let chunk = span / size;
     let mut j = j_start;
@@ -535,15 +527,25 @@ kernel!(
 
 /// The workgroup-memory class kernels, by class index.
 #[cfg(not(target_arch = "spirv"))]
-pub const SHARED_CLASSES: [&crate::KernelDesc; NUM_CLASSES as usize] = [
-    &SHARED_64, &SHARED_128, &SHARED_256, &SHARED_512, &SHARED_1024, &SHARED_2048, &SHARED_4096,
-    &SHARED_6144, &SHARED_8192,
-];
+pub const SHARED_CLASSES: [&crate::KernelDesc; NUM_CLASSES as usize] =
+    [&SHARED_64, &SHARED_128, &SHARED_256, &SHARED_512, &SHARED_1024, &SHARED_2048, &SHARED_4096, &SHARED_6144, &SHARED_8192];
 
 #[cfg(not(target_arch = "spirv"))]
 pub const KERNELS: [&crate::KernelDesc; 14] = [
-    &CLASSIFY, &PLAN, &SHARED_64, &SHARED_128, &SHARED_256, &SHARED_512, &SHARED_1024, &SHARED_2048,
-    &SHARED_4096, &SHARED_6144, &SHARED_8192, &GLOBAL_LOCAL, &GLOBAL_STEP, &GLOBAL_STORE,
+    &CLASSIFY,
+    &PLAN,
+    &SHARED_64,
+    &SHARED_128,
+    &SHARED_256,
+    &SHARED_512,
+    &SHARED_1024,
+    &SHARED_2048,
+    &SHARED_4096,
+    &SHARED_6144,
+    &SHARED_8192,
+    &GLOBAL_LOCAL,
+    &GLOBAL_STEP,
+    &GLOBAL_STORE,
 ];
 
 #[cfg(test)]

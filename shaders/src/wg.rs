@@ -6,12 +6,7 @@ use crate::exec::Group;
 /// Inclusive scan under `op` of `sh[base .. base + n]`, `n` the workgroup size (one word per
 /// invocation, written before the call), ping-ponging with `sh[base + n .. base + 2n]`. Returns the
 /// offset of the half that holds the result. Hillis-Steele: log2(n) barriers.
-pub fn inclusive_scan<G: Group, const N: usize>(
-    g: &mut G,
-    sh: &mut [u32; N],
-    base: usize,
-    op: impl Fn(u32, u32) -> u32,
-) -> usize {
+pub fn inclusive_scan<G: Group, const N: usize>(g: &mut G, sh: &mut [u32; N], base: usize, op: impl Fn(u32, u32) -> u32) -> usize {
     let threads = g.size();
     let t = threads as usize;
     let mut src = base;

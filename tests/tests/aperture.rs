@@ -3,9 +3,9 @@
 //! point-in-polygon tests independent of the kernels' gauge and of the host's mask drawing), for
 //! polygons, a star and an image, on both backends.
 
+use dof::aperture::{ApertureShape, parse_aperture};
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::{Fragment, LayeredImage};
-use dof::aperture::{ApertureShape, parse_aperture};
 use dof::methods::splat::{SplatOptions, splat};
 use dof::stress::test_lens;
 use dof_shaders::lens::ThinLens;
@@ -145,7 +145,13 @@ fn foreground_shapes_are_point_reflected() {
         }
     }
     let triangle = parse_aperture("blades:3:0").unwrap();
-    let got: Vec<f32> = splat(&mut CpuBackend::new(), &img, &lens, &SplatOptions { aperture: triangle, ..Default::default() }).unwrap().image.data.iter().map(|p| p[0]).collect();
+    let got: Vec<f32> = splat(&mut CpuBackend::new(), &img, &lens, &SplatOptions { aperture: triangle, ..Default::default() })
+        .unwrap()
+        .image
+        .data
+        .iter()
+        .map(|p| p[0])
+        .collect();
     // (The same holds for masks: the offset is reflected before the lookup.)
     let (upright, reflected) = (brute_force(3, 0.0), brute_force(3, std::f32::consts::PI));
     assert!(l1(&got, &reflected) < 0.5 * l1(&got, &upright), "{} vs {}", l1(&got, &reflected), l1(&got, &upright));
@@ -226,7 +232,9 @@ fn bad_aperture_images_are_named() {
         encoder.write_header().unwrap().write_image_data(&[0u8; 64]).unwrap();
     }
     std::fs::write(&black, encoded).unwrap();
-    for (path, says) in [(dir.join("dof-no-such-aperture.png"), "cannot read"), (not_png.clone(), "not a readable PNG"), (black.clone(), "black")] {
+    for (path, says) in
+        [(dir.join("dof-no-such-aperture.png"), "cannot read"), (not_png.clone(), "not a readable PNG"), (black.clone(), "black")]
+    {
         let err = parse_aperture(path.to_str().unwrap()).err().expect("an error").to_string();
         assert!(err.contains("aperture image") && err.contains(says), "{err}");
     }

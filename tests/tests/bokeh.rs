@@ -1,14 +1,14 @@
 //! Bokeh sprites (seed 001): the graphics pipeline on Vulkan against its compute fallback on the
 //! CPU, no highlights, more highlights than the buffer holds, energy kept, bad options refused.
 
+use dof::Error;
+use dof::aperture::parse_aperture;
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::RgbImage;
 use dof::methods::bokeh::{BokehOptions, BokehOutput, bokeh};
 use dof::methods::gather::gather;
-use dof::aperture::parse_aperture;
 use dof::scene::{LayerOptions, builtin, raycast_layers};
 use dof::stress::test_lens;
-use dof::Error;
 use dof_shaders::lens::ThinLens;
 use dof_tests::{assert_clean, vulkan};
 
@@ -106,13 +106,18 @@ fn against_the_exact_reference_it_keeps_the_gathers_error() {
         let scene = builtin(name).unwrap().with_size(320, 180);
         let lens = scene.thin_lens().unwrap();
         let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default()).unwrap();
-        let exact = dof::scene::reference(&scene.scene, &scene.camera, &lens, &dof::scene::ReferenceOptions { spp: 256, ..Default::default() }).unwrap();
+        let exact =
+            dof::scene::reference(&scene.scene, &scene.camera, &lens, &dof::scene::ReferenceOptions { spp: 256, ..Default::default() })
+                .unwrap();
         let (front, depth) = ml.layers.front();
         let mut cpu = CpuBackend::new();
         let err = |img: &RgbImage| dof::metrics::compare(&ml.crop(img), &exact.image, Some(&ml.mask)).unwrap();
         let b = err(&run(&mut cpu, &front, &depth, &lens, &BokehOptions::default()).image);
         let g = err(&gather(&mut cpu, &front, &depth, &lens, None).unwrap().image);
-        eprintln!("{name} 320x180: bokeh {:.2} dB ({:?} region), gather {:.2} dB ({:?} region)", b.psnr_db, b.psnr_masked_db, g.psnr_db, g.psnr_masked_db);
+        eprintln!(
+            "{name} 320x180: bokeh {:.2} dB ({:?} region), gather {:.2} dB ({:?} region)",
+            b.psnr_db, b.psnr_masked_db, g.psnr_db, g.psnr_masked_db
+        );
         assert!(b.psnr_db >= g.psnr_db - 0.05, "{name}: {} vs {}", b.psnr_db, g.psnr_db);
     }
 }
@@ -140,7 +145,8 @@ fn stage_timestamps_survive_a_draw() {
     // instrumentation, not of speed: the bound is a factor of 5 where the fault gave 300.
     let Some(mut vk) = vulkan() else { return };
     let (img, depth, lens) = highlights();
-    let ms = |vk: &mut dof::backend::VulkanBackend| -> f64 { gather(vk, &img, &depth, &lens, None).unwrap().times.iter().map(|t| t.ms).sum() };
+    let ms =
+        |vk: &mut dof::backend::VulkanBackend| -> f64 { gather(vk, &img, &depth, &lens, None).unwrap().times.iter().map(|t| t.ms).sum() };
     let before = (0..3).map(|_| ms(&mut vk)).fold(f64::INFINITY, f64::min);
     run(&mut vk, &img, &depth, &lens, &BokehOptions::default());
     let after = (0..3).map(|_| ms(&mut vk)).fold(f64::INFINITY, f64::min);

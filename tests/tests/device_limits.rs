@@ -32,7 +32,10 @@ fn memory_runs_out(b: &mut dyn Backend) {
             Ok(_) => panic!("budget {budget} of {need} bytes: the context was created"),
         }
         assert_eq!(b.counters().device_bytes, held, "budget {budget}: buffers left behind");
-        assert!(matches!(GatherContext::new(b, &GatherContextDesc::new(4096, 4096, 4)), Err(Error::OutOfMemory { .. }) | Err(Error::TooLarge { .. })));
+        assert!(matches!(
+            GatherContext::new(b, &GatherContextDesc::new(4096, 4096, 4)),
+            Err(Error::OutOfMemory { .. }) | Err(Error::TooLarge { .. })
+        ));
         assert!(matches!(
             BokehContext::new(b, &BokehContextDesc::new(2048, 2048, 1, BokehOptions::default())),
             Err(Error::OutOfMemory { .. }) | Err(Error::TooLarge { .. })

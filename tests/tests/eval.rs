@@ -8,7 +8,8 @@ use dof::eval::{EvalOptions, evaluate};
 #[test]
 fn quick_evaluation_covers_every_method_and_setting() {
     let mut backends: Vec<Box<dyn Backend>> = vec![Box::new(CpuBackend::new())];
-    let options = EvalOptions { scenes: vec!["simple".into()], methods: vec![], quick: true, runs: 1, progress: false, coc_sweep: vec![4.0, 16.0] };
+    let options =
+        EvalOptions { scenes: vec!["simple".into()], methods: vec![], quick: true, runs: 1, progress: false, coc_sweep: vec![4.0, 16.0] };
     let report = evaluate(&options, &mut backends).unwrap();
     for method in registry() {
         for setting in method.settings(true) {
@@ -21,7 +22,9 @@ fn quick_evaluation_covers_every_method_and_setting() {
     assert!(best_gather > pinhole.psnr_db, "the gather beats the unblurred image");
 
     let json: serde_json::Value = serde_json::from_str(&report.to_json()).unwrap();
-    for field in ["scene", "method", "setting", "backend", "device", "time_ms", "stages_ms", "psnr_db", "ssim", "psnr_masked_db", "ssim_masked"] {
+    for field in
+        ["scene", "method", "setting", "backend", "device", "time_ms", "stages_ms", "psnr_db", "ssim", "psnr_masked_db", "ssim_masked"]
+    {
         assert!(json["records"][0].get(field).is_some(), "report.json records lack `{field}`");
     }
     assert!(report.to_markdown().contains("| method | setting | backend |"));
@@ -59,7 +62,14 @@ fn quick_evaluation_covers_every_method_and_setting() {
 #[test]
 fn unknown_methods_are_named() {
     let mut backends: Vec<Box<dyn Backend>> = vec![Box::new(CpuBackend::new())];
-    let options = EvalOptions { scenes: vec!["simple".into()], methods: vec!["nope".into()], quick: true, runs: 1, progress: false, coc_sweep: vec![] };
+    let options = EvalOptions {
+        scenes: vec!["simple".into()],
+        methods: vec!["nope".into()],
+        quick: true,
+        runs: 1,
+        progress: false,
+        coc_sweep: vec![],
+    };
     let err = evaluate(&options, &mut backends).err().unwrap();
     assert!(err.to_string().contains("gather"), "{err}");
 }
@@ -70,7 +80,14 @@ fn a_gltf_scene_is_measured_against_its_accumulation_buffer() {
     std::fs::write(&path, dof::scene::export_builtin_glb("simple", 160, 90).unwrap()).unwrap();
     let mut backends: Vec<Box<dyn Backend>> = vec![Box::new(CpuBackend::new())];
     let scenes = vec![path.to_str().unwrap().to_string()];
-    let options = EvalOptions { scenes, methods: vec!["gather".into(), "multilayer".into()], quick: true, runs: 1, progress: false, coc_sweep: vec![4.0] };
+    let options = EvalOptions {
+        scenes,
+        methods: vec!["gather".into(), "multilayer".into()],
+        quick: true,
+        runs: 1,
+        progress: false,
+        coc_sweep: vec![4.0],
+    };
     let report = evaluate(&options, &mut backends).unwrap();
     std::fs::remove_file(&path).unwrap();
     let scene = &report.scenes[0];

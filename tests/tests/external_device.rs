@@ -12,9 +12,7 @@
 
 use dof::backend::vulkan::ash::{self, vk};
 use dof::backend::vulkan::gpu_allocator;
-use dof::backend::{
-    Backend, BackendCounters, BufferId, CpuBackend, ImageFormat, ImageRef, RawDevice, RawOptions, VulkanBackend,
-};
+use dof::backend::{Backend, BackendCounters, BufferId, CpuBackend, ImageFormat, ImageRef, RawDevice, RawOptions, VulkanBackend};
 use dof::ops::scan::{ScanScratch, exclusive_scan};
 use dof::ops::sort::{SegmentedSort, SortInput, sort_on};
 use dof::workload::{lists_with, random_key};
@@ -130,7 +128,11 @@ impl Renderer {
         let physical = unsafe {
             let all = instance.enumerate_physical_devices().expect("vkEnumeratePhysicalDevices");
             let name = |&pd: &vk::PhysicalDevice| {
-                instance.get_physical_device_properties(pd).device_name_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default()
+                instance
+                    .get_physical_device_properties(pd)
+                    .device_name_as_c_str()
+                    .map(|s| s.to_string_lossy().into_owned())
+                    .unwrap_or_default()
             };
             all.iter().copied().find(|pd| name(pd).contains("llvmpipe")).or(all.first().copied()).expect("a Vulkan device")
         };
@@ -161,7 +163,8 @@ impl Renderer {
                 .queue_family_index(queue_family)
                 .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
             let pool = device.create_command_pool(&pool_info, None).expect("vkCreateCommandPool");
-            let alloc = vk::CommandBufferAllocateInfo::default().command_pool(pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
+            let alloc =
+                vk::CommandBufferAllocateInfo::default().command_pool(pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
             let cb = device.allocate_command_buffers(&alloc).expect("vkAllocateCommandBuffers")[0];
             let fence = device.create_fence(&vk::FenceCreateInfo::default(), None).expect("vkCreateFence");
             (queue, pool, cb, fence)
@@ -215,7 +218,9 @@ impl Renderer {
             } else {
                 vk::MemoryPropertyFlags::DEVICE_LOCAL
             };
-            let info = vk::MemoryAllocateInfo::default().allocation_size(req.size).memory_type_index(self.memory_type(req.memory_type_bits, flags));
+            let info = vk::MemoryAllocateInfo::default()
+                .allocation_size(req.size)
+                .memory_type_index(self.memory_type(req.memory_type_bits, flags));
             let memory = d.allocate_memory(&info, None).expect("vkAllocateMemory");
             d.bind_buffer_memory(buffer, memory, 0).expect("vkBindBufferMemory");
             let mapped = if host {
@@ -317,7 +322,9 @@ impl Renderer {
             .dst_access_mask(dst_access)
             .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-            .subresource_range(vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1))];
+            .subresource_range(
+                vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1),
+            )];
         // SAFETY: the command buffer is recording; the image is live.
         unsafe { self.device.cmd_pipeline_barrier(self.cb, src, dst, vk::DependencyFlags::empty(), &[], &[], &b) };
     }
@@ -428,7 +435,8 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
         // SAFETY: a live storage buffer of the device with transfer usage, alive until the backend is dropped.
         unsafe { vk.import_buffer(b.buffer, b.bytes, label) }.expect("import_buffer")
     };
-    let (segments_id, keys_in_id, values_in_id) = (import(&mut vk, &segments, "segments"), import(&mut vk, &keys_in, "keys"), import(&mut vk, &values_in, "values"));
+    let (segments_id, keys_in_id, values_in_id) =
+        (import(&mut vk, &segments, "segments"), import(&mut vk, &keys_in, "keys"), import(&mut vk, &values_in, "values"));
     let (keys_out_id, values_out_id) = (import(&mut vk, &keys_out, "keys-out"), import(&mut vk, &values_out, "values-out"));
     let flags_id = import(&mut vk, &flags, "flags");
     assert_eq!(vk.buffer_words(keys_in_id).unwrap(), n as u64);
@@ -472,7 +480,13 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
         );
         // SAFETY: the command buffer is recording; the image is in TRANSFER_DST_OPTIMAL.
         unsafe {
-            r.device.cmd_copy_buffer_to_image(r.cb, pixels_staging.buffer, image, vk::ImageLayout::TRANSFER_DST_OPTIMAL, &Renderer::image_region())
+            r.device.cmd_copy_buffer_to_image(
+                r.cb,
+                pixels_staging.buffer,
+                image,
+                vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+                &Renderer::image_region(),
+            )
         };
         r.copy(&keys_in, &keys_out, bytes(n));
         r.copy(&values_in, &values_out, bytes(n));
@@ -535,11 +549,21 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
             d.cmd_copy_image_to_buffer(r.cb, image, vk::ImageLayout::TRANSFER_SRC_OPTIMAL, readback.buffer, &Renderer::image_region());
             let at = bytes(pixel_words.len());
             d.cmd_copy_buffer(r.cb, keys_out.buffer, readback.buffer, &[vk::BufferCopy::default().dst_offset(at).size(bytes(n))]);
-            d.cmd_copy_buffer(r.cb, values_out.buffer, readback.buffer, &[vk::BufferCopy::default().dst_offset(at + bytes(n)).size(bytes(n))]);
+            d.cmd_copy_buffer(
+                r.cb,
+                values_out.buffer,
+                readback.buffer,
+                &[vk::BufferCopy::default().dst_offset(at + bytes(n)).size(bytes(n))],
+            );
             let flags_at = vk::BufferCopy::default().dst_offset(at + bytes(2 * n)).size(bytes(64));
             d.cmd_copy_buffer(r.cb, flags.buffer, readback.buffer, &[flags_at]);
         }
-        r.barrier(vk::PipelineStageFlags::TRANSFER, vk::AccessFlags::TRANSFER_WRITE, vk::PipelineStageFlags::HOST, vk::AccessFlags::HOST_READ);
+        r.barrier(
+            vk::PipelineStageFlags::TRANSFER,
+            vk::AccessFlags::TRANSFER_WRITE,
+            vk::PipelineStageFlags::HOST,
+            vk::AccessFlags::HOST_READ,
+        );
         r.submit_and_wait();
 
         let times = vk.take_external_times().expect("take_external_times").expect("the work completed, so its times are there");

@@ -5,7 +5,7 @@
 
 use dof::Error;
 use dof::backend::{Backend, BufferId, CpuBackend};
-use dof::frame::{FrameInput, FrameOutput, SplatContext, SplatContextDesc, Frame};
+use dof::frame::{Frame, FrameInput, FrameOutput, SplatContext, SplatContextDesc};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::splat::{Merge, SplatOptions, splat};
@@ -99,7 +99,8 @@ fn an_overflowing_list_pool_is_counted_and_degrades_to_copied_tiles() {
     let mut overflowed = 0;
     for ty in 0..48usize.div_ceil(16) {
         for tx in 0..tiles_x {
-            let pixels: Vec<usize> = (ty * 16..(ty * 16 + 16).min(48)).flat_map(|y| (tx * 16..(tx * 16 + 16).min(64)).map(move |x| y * 64 + x)).collect();
+            let pixels: Vec<usize> =
+                (ty * 16..(ty * 16 + 16).min(48)).flat_map(|y| (tx * 16..(tx * 16 + 16).min(64)).map(move |x| y * 64 + x)).collect();
             let same = pixels.iter().all(|&p| got.data[p] == whole.image.data[p]);
             if !same {
                 overflowed += 1;
@@ -109,7 +110,11 @@ fn an_overflowing_list_pool_is_counted_and_degrades_to_copied_tiles() {
             }
         }
     }
-    assert!(overflowed > 0 && overflowed <= report.overflow_tiles as usize, "{overflowed} tiles differ, {} overflowed", report.overflow_tiles);
+    assert!(
+        overflowed > 0 && overflowed <= report.overflow_tiles as usize,
+        "{overflowed} tiles differ, {} overflowed",
+        report.overflow_tiles
+    );
     assert!(got.data.iter().zip(&front.data).any(|(a, b)| a == b));
     ctx.destroy(&mut b);
 }
@@ -144,7 +149,8 @@ fn frames_beyond_the_context_or_its_buffers_are_refused() {
 fn the_context_holds_its_memory_and_no_more() {
     let mut b = CpuBackend::new();
     let start = b.counters().device_bytes;
-    let ctx = SplatContext::new(&mut b, &SplatContextDesc::new(96, 64, 4, SplatOptions { merge: Merge::X4, ..Default::default() })).unwrap();
+    let ctx =
+        SplatContext::new(&mut b, &SplatContextDesc::new(96, 64, 4, SplatOptions { merge: Merge::X4, ..Default::default() })).unwrap();
     assert_eq!(b.counters().device_bytes - start, ctx.device_bytes());
     ctx.destroy(&mut b);
     assert_eq!(b.counters().device_bytes, start);
@@ -174,7 +180,11 @@ fn image_frames_need_image_io_and_a_backend_with_images() {
         width: 16,
         height: 16,
         lens: test_lens(0.01),
-        input: FrameInput::Images { color: image(ImageFormat::Rgba32Float), depth: image(ImageFormat::R32Float), encoding: DepthEncoding::Linear },
+        input: FrameInput::Images {
+            color: image(ImageFormat::Rgba32Float),
+            depth: image(ImageFormat::R32Float),
+            encoding: DepthEncoding::Linear,
+        },
         output: FrameOutput::Image(image(ImageFormat::Rgba32Float)),
     };
     let mut plain = SplatContext::new(&mut b, &SplatContextDesc::new(16, 16, 1, options.clone())).unwrap();
@@ -182,9 +192,23 @@ fn image_frames_need_image_io_and_a_backend_with_images() {
     let mut desc = SplatContextDesc::new(16, 16, 1, options);
     desc.image_io = true;
     let mut with_io = SplatContext::new(&mut b, &desc).unwrap();
-    let wrong = Frame { input: FrameInput::Images { color: image(ImageFormat::R32Float), depth: image(ImageFormat::R32Float), encoding: DepthEncoding::Linear }, ..f };
+    let wrong = Frame {
+        input: FrameInput::Images {
+            color: image(ImageFormat::R32Float),
+            depth: image(ImageFormat::R32Float),
+            encoding: DepthEncoding::Linear,
+        },
+        ..f
+    };
     assert!(matches!(with_io.record(&mut b, &wrong), Err(Error::InvalidArgument(m)) if m.contains("colour")));
-    let planes = Frame { input: FrameInput::Images { color: image(ImageFormat::Rgba32Float), depth: image(ImageFormat::R32Float), encoding: DepthEncoding::Reversed { near: 0.0, far: 10.0 } }, ..f };
+    let planes = Frame {
+        input: FrameInput::Images {
+            color: image(ImageFormat::Rgba32Float),
+            depth: image(ImageFormat::R32Float),
+            encoding: DepthEncoding::Reversed { near: 0.0, far: 10.0 },
+        },
+        ..f
+    };
     assert!(matches!(with_io.record(&mut b, &planes), Err(Error::InvalidArgument(m)) if m.contains("near")));
     assert!(with_io.record(&mut b, &f).is_err(), "the CPU backend has no images");
     plain.destroy(&mut b);
@@ -202,7 +226,10 @@ fn depth_buffers_decode_to_view_depth() {
             let q = p(enc, far);
             assert!((view_depth(&q, near_value) - 0.1).abs() < 1e-6, "near plane ({enc}, far {far})");
             let at_far = view_depth(&q, 1.0 - near_value);
-            assert!(if far.is_finite() { (at_far - far).abs() < 1e-3 * far } else { at_far == f32::INFINITY }, "far plane ({enc}, far {far}): {at_far}");
+            assert!(
+                if far.is_finite() { (at_far - far).abs() < 1e-3 * far } else { at_far == f32::INFINITY },
+                "far plane ({enc}, far {far}): {at_far}"
+            );
             // A point at view depth 2: its depth value, and back.
             let z = 2.0f32;
             let d = if far.is_finite() { (1.0 / 0.1 - 1.0 / z) / (1.0 / 0.1 - 1.0 / far) } else { 1.0 - 0.1 / z };

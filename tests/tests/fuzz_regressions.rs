@@ -60,7 +60,10 @@ fn gltf_position_naming_a_missing_accessor_is_an_error() {
     let err = dof::scene::load_gltf_slice(&bytes).unwrap_err();
     assert!(matches!(err, Error::Scene(_)), "{err}");
     let message = err.to_string();
-    assert!(message.contains("not a valid glTF 2.0 file") && message.contains("POSITION") && message.contains("accessor 0 does not exist"), "{message}");
+    assert!(
+        message.contains("not a valid glTF 2.0 file") && message.contains("POSITION") && message.contains("accessor 0 does not exist"),
+        "{message}"
+    );
     let err = dof::scene::load_gltf(&path).unwrap_err();
     assert!(err.to_string().contains("position-accessor-out-of-range.gltf"), "{err}");
 
@@ -215,9 +218,7 @@ fn frame_contexts_refuse_inconsistent_apertures() {
 #[test]
 fn every_file_reproducer_gives_a_result() {
     let dir = |t: &str| Path::new(env!("CARGO_MANIFEST_DIR")).join("../fuzz/regressions").join(t);
-    let files = |t: &str| -> Vec<PathBuf> {
-        std::fs::read_dir(dir(t)).map(|d| d.map(|e| e.unwrap().path()).collect()).unwrap_or_default()
-    };
+    let files = |t: &str| -> Vec<PathBuf> { std::fs::read_dir(dir(t)).map(|d| d.map(|e| e.unwrap().path()).collect()).unwrap_or_default() };
     for path in files("gltf") {
         let _ = dof::scene::load_gltf_slice(&std::fs::read(&path).unwrap());
         let _ = dof::scene::load_gltf(&path);

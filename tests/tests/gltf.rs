@@ -7,7 +7,10 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use dof::Error;
 use dof::scene::gltf_export::sphere_segments;
-use dof::scene::{Albedo, CameraFrame, ExportOptions, Material, MeshCamera, MeshScene, Shape, Vec3, builtin, builtin_names, export_builtin_glb, export_glb, load_gltf, load_gltf_slice};
+use dof::scene::{
+    Albedo, CameraFrame, ExportOptions, Material, MeshCamera, MeshScene, Shape, Vec3, builtin, builtin_names, export_builtin_glb,
+    export_glb, load_gltf, load_gltf_slice,
+};
 use dof_shaders::raster::mesh::{DOUBLE_SIDED, NEAREST, NO_TEXTURE, WRAP_S_SHIFT, WRAP_T_SHIFT};
 use serde_json::{Value, json};
 
@@ -135,7 +138,8 @@ fn checker_parity_matches_the_analytic_scene() {
                 let w1 = (p - p0).cross(p2 - p0).dot(n) / area;
                 let w2 = (p1 - p0).cross(p - p0).dot(n) / area;
                 let w0 = 1.0 - w1 - w2;
-                (w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0).then(|| (w0 * v[0].u + w1 * v[1].u + w2 * v[2].u, w0 * v[0].v + w1 * v[1].v + w2 * v[2].v))
+                (w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0)
+                    .then(|| (w0 * v[0].u + w1 * v[1].u + w2 * v[2].u, w0 * v[0].v + w1 * v[1].v + w2 * v[2].v))
             });
             let (u, v) = uv.expect("the hit lies on the exported floor");
             let (tx, ty) = (((u - u.floor()) * 2.0) as u32 % 2, ((v - v.floor()) * 2.0) as u32 % 2);
@@ -175,7 +179,11 @@ fn export_options_are_checked() {
     // The plane's square is centred at the eye's projection with the given half-extent.
     let (lo, hi) = m.bounds().unwrap();
     assert!(lo.x <= -10.0 + 1e-4 && hi.x >= 10.0 - 1e-4 && hi.x <= 10.0 + 1e-4);
-    for bad in [ExportOptions { sphere_segments: 3, ..opts }, ExportOptions { plane_half_extent: 0.0, ..opts }, ExportOptions { plane_half_extent: f32::NAN, ..opts }] {
+    for bad in [
+        ExportOptions { sphere_segments: 3, ..opts },
+        ExportOptions { plane_half_extent: 0.0, ..opts },
+        ExportOptions { plane_half_extent: f32::NAN, ..opts },
+    ] {
         assert!(matches!(export_glb(&b.scene, &b.camera, &bad), Err(Error::InvalidArgument(_))));
     }
 }
@@ -410,7 +418,15 @@ fn missing_external_files_are_named() {
 /// an orthographic camera is skipped and counted; a perspective one sits at its node.
 #[test]
 fn cameras_are_checked() {
-    let cam = MeshCamera { name: Some("flat".into()), eye: Vec3::ZERO, forward: Vec3::NEG_Z, up: Vec3::Y, yfov_radians: 0.0, aspect_ratio: None, znear: 0.1 };
+    let cam = MeshCamera {
+        name: Some("flat".into()),
+        eye: Vec3::ZERO,
+        forward: Vec3::NEG_Z,
+        up: Vec3::Y,
+        yfov_radians: 0.0,
+        aspect_ratio: None,
+        znear: 0.1,
+    };
     let err = cam.camera(64, 64).unwrap_err().to_string();
     assert!(err.contains("field of view") && err.contains("flat"), "{err}");
     assert!(MeshCamera { yfov_radians: 0.7, ..cam.clone() }.camera(64, 64).is_ok());
@@ -429,7 +445,12 @@ fn cameras_are_checked() {
     assert_eq!(m.cameras.len(), 1);
     assert_eq!(m.report.orthographic_cameras, 1);
     let c = &m.cameras[0];
-    assert!(close(c.eye, Vec3::new(1.0, 2.0, 3.0), 1e-6) && close(c.forward, Vec3::NEG_Z, 1e-6) && c.yfov_radians == 0.5 && c.aspect_ratio.is_none());
+    assert!(
+        close(c.eye, Vec3::new(1.0, 2.0, 3.0), 1e-6)
+            && close(c.forward, Vec3::NEG_Z, 1e-6)
+            && c.yfov_radians == 0.5
+            && c.aspect_ratio.is_none()
+    );
 }
 
 /// Expectation: lights after the first directional one are counted as ignored, and a malformed
@@ -544,7 +565,17 @@ fn references_outside_the_folder_are_refused() {
     std::fs::write(&outside_file, &bin).unwrap();
     let outside_abs = outside_file.to_str().unwrap().to_owned();
     let escape = format!("../{}/buffer.bin", outside_dir.file_name().unwrap().to_str().unwrap());
-    for uri in ["../../../../etc/passwd", "/etc/passwd", outside_abs.as_str(), "file:///etc/passwd", "/dev/zero", "file:///dev/zero", "sub/../../x.bin", escape.as_str(), "%2E%2E/%2E%2E/etc/passwd"] {
+    for uri in [
+        "../../../../etc/passwd",
+        "/etc/passwd",
+        outside_abs.as_str(),
+        "file:///etc/passwd",
+        "/dev/zero",
+        "file:///dev/zero",
+        "sub/../../x.bin",
+        escape.as_str(),
+        "%2E%2E/%2E%2E/etc/passwd",
+    ] {
         let (dir, path, _) = gltf_in_folder(uri);
         let err = load_with_timeout(&path).unwrap_err().to_string();
         assert!(err.contains(STAY_INSIDE), "{uri}: {err}");

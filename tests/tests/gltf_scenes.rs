@@ -5,7 +5,9 @@
 use dof::backend::{Backend, CpuBackend};
 use dof::metrics::psnr;
 use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
-use dof::scene::{ExportOptions, GuardBand, LayerOptions, ReferenceOptions, builtin, export_glb, load_gltf_slice, raycast_layers, reference};
+use dof::scene::{
+    ExportOptions, GuardBand, LayerOptions, ReferenceOptions, builtin, export_glb, load_gltf_slice, raycast_layers, reference,
+};
 
 #[test]
 fn exported_scenes_peel_like_the_ray_caster() {
@@ -19,18 +21,22 @@ fn exported_scenes_peel_like_the_ray_caster() {
         // planes and their exported 1000-unit squares).
         let options = LayerOptions { guard_band: GuardBand::Off, ..Default::default() };
         let exact = raycast_layers(&scene.scene, &scene.camera, &lens, &options).unwrap();
-        let peeled = peel_layers(&mut CpuBackend::new(), &mesh.raster(), &scene.camera, &lens, default_near(lens.focus_distance), &options).unwrap();
+        let peeled =
+            peel_layers(&mut CpuBackend::new(), &mesh.raster(), &scene.camera, &lens, default_near(lens.focus_distance), &options).unwrap();
         let (a, b) = (&exact.layers, &peeled.image.layers);
         let pixels = a.counts.len();
         let same_count = a.counts.iter().zip(&b.counts).filter(|(x, y)| x == y).count();
         let (fa, za) = a.front();
         let (fb, zb) = b.front();
         let close_depth = za.iter().zip(&zb).filter(|(x, y)| (*x == *y) || (*x - *y).abs() <= 0.01 * x.min(**y)).count();
-        let colour_diff = fa.data.iter().flatten().zip(fb.data.iter().flatten()).map(|(x, y)| (x - y).abs() as f64).sum::<f64>() / (3 * pixels) as f64;
+        let colour_diff =
+            fa.data.iter().flatten().zip(fb.data.iter().flatten()).map(|(x, y)| (x - y).abs() as f64).sum::<f64>() / (3 * pixels) as f64;
         eprintln!(
             "{name}: layer counts equal at {:.2}% of pixels, front depth within 1% at {:.2}%, mean front colour difference {colour_diff:.4}; fragments/px exact {:.3} raster {:.3}",
-            100.0 * same_count as f64 / pixels as f64, 100.0 * close_depth as f64 / pixels as f64,
-            exact.with_mask.fragments_per_pixel(), peeled.image.with_mask.fragments_per_pixel()
+            100.0 * same_count as f64 / pixels as f64,
+            100.0 * close_depth as f64 / pixels as f64,
+            exact.with_mask.fragments_per_pixel(),
+            peeled.image.with_mask.fragments_per_pixel()
         );
         // Tessellation and pixel-centre ties move silhouettes by a fraction of a pixel.
         assert!(close_depth as f64 >= 0.995 * pixels as f64, "{name}: front depths differ at {} of {pixels} pixels", pixels - close_depth);
@@ -49,7 +55,8 @@ fn the_accumulation_buffer_converges_to_the_exact_reference() {
     let mut seen = Vec::new();
     for n in [4, 16, 64, 256] {
         let options = AccumulateOptions { samples: n, ..Default::default() };
-        let acc = accumulate(&mut CpuBackend::new(), &mesh.raster(), &scene.camera, &lens, default_near(lens.focus_distance), &options).unwrap();
+        let acc =
+            accumulate(&mut CpuBackend::new(), &mesh.raster(), &scene.camera, &lens, default_near(lens.focus_distance), &options).unwrap();
         let db = psnr(&acc.image, &exact.image).unwrap();
         seen.push((n, db));
         assert!(db > last, "PSNR must grow with the render count: {seen:?}");
@@ -74,9 +81,17 @@ fn vulkan_peels_exported_scenes_like_the_cpu() {
         let same = cpu.layers.counts.iter().zip(&gpu.layers.counts).filter(|(a, b)| a == b).count();
         let (fa, _) = cpu.layers.front();
         let (fb, _) = gpu.layers.front();
-        let diff = fa.data.iter().flatten().zip(fb.data.iter().flatten()).map(|(x, y)| (x - y).abs() as f64).sum::<f64>() / fa.data.len() as f64;
+        let diff =
+            fa.data.iter().flatten().zip(fb.data.iter().flatten()).map(|(x, y)| (x - y).abs() as f64).sum::<f64>() / fa.data.len() as f64;
         eprintln!("{name}: layer counts equal at {same} of {} pixels, mean front colour difference {diff:.5}", cpu.layers.counts.len());
-        assert!(same as f64 >= 0.995 * cpu.layers.counts.len() as f64, "{name}: layer counts differ at {} pixels", cpu.layers.counts.len() - same);
-        assert!(diff < 0.01 * fa.data.iter().flatten().map(|&v| v as f64).sum::<f64>() / fa.data.len() as f64 + 1e-3, "{name}: front colours differ by {diff}");
+        assert!(
+            same as f64 >= 0.995 * cpu.layers.counts.len() as f64,
+            "{name}: layer counts differ at {} pixels",
+            cpu.layers.counts.len() - same
+        );
+        assert!(
+            diff < 0.01 * fa.data.iter().flatten().map(|&v| v as f64).sum::<f64>() / fa.data.len() as f64 + 1e-3,
+            "{name}: front colours differ by {diff}"
+        );
     }
 }

@@ -9,8 +9,8 @@ use dof::io::codecs::exr::prelude as exr;
 use dof::io::codecs::png;
 use dof::io::tonemap::{aces_fitted, srgb_eotf, srgb_oetf, to_u8, tonemap, tonemap_to_srgb8};
 use dof::io::{
-    BACKGROUND_DEPTH, COLOR_INF_REPLACEMENT, ExrCompression, ExrLayout, ExrPrecision, ExrWriteOptions, SanitizeCounts,
-    read_layered_exr, read_rgb_exr, write_exr, write_exr_with, write_layered_exr, write_png_preview,
+    BACKGROUND_DEPTH, COLOR_INF_REPLACEMENT, ExrCompression, ExrLayout, ExrPrecision, ExrWriteOptions, SanitizeCounts, read_layered_exr,
+    read_rgb_exr, write_exr, write_exr_with, write_layered_exr, write_png_preview,
 };
 use dof::layers::{Fragment, LayeredImage, RgbImage};
 use proptest::prelude::*;
@@ -91,8 +91,7 @@ fn write_parts(path: &Path, width: usize, height: usize, parts: Vec<(&str, Vec<e
             )
         })
         .collect();
-    let image =
-        exr::Image::from_layers(exr::ImageAttributes::new(exr::IntegerBounds::from_dimensions((width, height))), layers);
+    let image = exr::Image::from_layers(exr::ImageAttributes::new(exr::IntegerBounds::from_dimensions((width, height))), layers);
     image.write().to_file(path).unwrap();
 }
 
@@ -431,9 +430,9 @@ fn depth_and_alpha_name_variants() {
 /// The colour of a fragment or background stored at pixel `p` of the Blender-like fixtures:
 /// (premultiplied colour, alpha, depth).
 const TOOL_PIXELS: [([f32; 3], f32, f32); 4] = [
-    ([0.5, 0.25, 0.125], 1.0, 3.0),       // opaque surface
-    ([0.2, 0.1, 0.05], 0.5, 7.5),         // antialiased edge: straight colour is twice this
-    ([0.3, 0.6, 0.9], 1.0, 1e10),         // Blender's world background at 1e10, with a colour
+    ([0.5, 0.25, 0.125], 1.0, 3.0),        // opaque surface
+    ([0.2, 0.1, 0.05], 0.5, 7.5),          // antialiased edge: straight colour is twice this
+    ([0.3, 0.6, 0.9], 1.0, 1e10),          // Blender's world background at 1e10, with a colour
     ([0.0, 0.0, 0.0], 0.0, f32::INFINITY), // transparent film: alpha 0 at +inf
 ];
 
@@ -453,8 +452,7 @@ fn tool_channel(name: &str, f: impl Fn(&([f32; 3], f32, f32)) -> f32) -> exr::An
 
 /// `<prefix>.R/G/B/A` of `TOOL_PIXELS`.
 fn rgba_channels(prefix: &str) -> Vec<exr::AnyChannel<exr::FlatSamples>> {
-    let mut channels: Vec<_> =
-        (0..3).map(|k| tool_channel(&format!("{prefix}{}", ["R", "G", "B"][k]), |p| p.0[k])).collect();
+    let mut channels: Vec<_> = (0..3).map(|k| tool_channel(&format!("{prefix}{}", ["R", "G", "B"][k]), |p| p.0[k])).collect();
     channels.push(tool_channel(&format!("{prefix}A"), |p| p.1));
     channels
 }
@@ -487,11 +485,10 @@ fn blender_combined_with_sibling_depth_layer() {
         assert_eq!(report.layers, [format!("{view_layer}.Combined")]);
         let used = ["Combined.R", "Combined.G", "Combined.B", "Combined.A", "Depth.Z"];
         assert_eq!(report.channels, used.map(|c| format!("{view_layer}.{c}")));
-        let mut unused: Vec<String> =
-            ["DiffCol.B", "DiffCol.G", "DiffCol.R", "Mist.Z", "Normal.X", "Normal.Y", "Normal.Z"]
-                .iter()
-                .map(|c| format!("{view_layer}.{c}"))
-                .collect();
+        let mut unused: Vec<String> = ["DiffCol.B", "DiffCol.G", "DiffCol.R", "Mist.Z", "Normal.X", "Normal.Y", "Normal.Z"]
+            .iter()
+            .map(|c| format!("{view_layer}.{c}"))
+            .collect();
         unused.sort();
         assert_eq!(report.ignored_channels, unused);
         assert_eq!(report.counts, SanitizeCounts { background: 2, ..Default::default() });
@@ -513,9 +510,7 @@ fn blender_combined_with_sibling_depth_layer() {
 #[test]
 fn blender_half_float_file_background_is_infinite() {
     // Blender's default half-float EXR: its background depth 1e10 overflows to +inf.
-    let half_of = |name: &str, f: &dyn Fn(&([f32; 3], f32, f32)) -> f32| {
-        half_channel(name, TOOL_PIXELS.iter().map(f).collect())
-    };
+    let half_of = |name: &str, f: &dyn Fn(&([f32; 3], f32, f32)) -> f32| half_channel(name, TOOL_PIXELS.iter().map(f).collect());
     let channels = vec![
         half_of("ViewLayer.Combined.R", &|p| p.0[0]),
         half_of("ViewLayer.Combined.G", &|p| p.0[1]),
@@ -616,19 +611,10 @@ fn multi_layer_background_ends_the_pixel() {
     write_channels(file.path(), 3, 1, channels);
     let (image, report) = read_layered_exr(file.path()).unwrap();
     assert_eq!(report.layout, ExrLayout::MultiLayer);
-    assert_eq!(
-        image.pixel(0, 0),
-        [Fragment { color: [2.0, 2.0, 0.0], alpha: 0.5, depth: 4.0 }, background([0.1, 0.2, 0.3])]
-    );
-    assert_eq!(
-        image.pixel(1, 0),
-        [Fragment { color: [2.0, 0.0, 0.0], alpha: 1.0, depth: 1.0 }, background([0.2, 0.4, 0.6])]
-    );
+    assert_eq!(image.pixel(0, 0), [Fragment { color: [2.0, 2.0, 0.0], alpha: 0.5, depth: 4.0 }, background([0.1, 0.2, 0.3])]);
+    assert_eq!(image.pixel(1, 0), [Fragment { color: [2.0, 0.0, 0.0], alpha: 1.0, depth: 1.0 }, background([0.2, 0.4, 0.6])]);
     assert_eq!(image.pixel(2, 0), [Fragment { color: [0.0, 3.0, 0.0], alpha: 1.0, depth: 5.0 }]);
-    assert_eq!(
-        report.counts,
-        SanitizeCounts { background: 3, behind_background: 1, empty_alpha: 3, ..Default::default() }
-    );
+    assert_eq!(report.counts, SanitizeCounts { background: 3, behind_background: 1, empty_alpha: 3, ..Default::default() });
     assert_eq!(report.repaired(), 1, "the dropped second background is a repair");
     assert_mentions(&report.to_string(), &["1 fragments behind the background dropped", "3 background fragments"]);
 }
@@ -723,11 +709,7 @@ fn ambiguous_tool_layouts_are_refused() {
     write_channels(file.path(), 4, 1, channels);
     assert_mentions(
         &err_message(read_layered_exr(file.path())),
-        &[
-            "is ambiguous",
-            "RGB+Z from the unnamed layer with the depth of `depth`",
-            "RGB+Z from `rgba` with the depth of `depth`",
-        ],
+        &["is ambiguous", "RGB+Z from the unnamed layer with the depth of `depth`", "RGB+Z from `rgba` with the depth of `depth`"],
     );
 
     // Blender's Combined with a depth layer of another view layer: no image, and the message names
@@ -916,16 +898,16 @@ fn nan_inf_policy_and_counts() {
     let inf = f32::INFINITY;
     // (premultiplied colour, alpha, depth) per pixel.
     let pixels: [([f32; 3], f32, f32); 10] = [
-        ([nan, 0.5, 0.25], 1.0, 2.0),     // colour NaN -> 0
-        ([inf, -inf, 1.0], 1.0, 2.0),     // +inf -> 65504, -inf -> 0
-        ([1.0, 1.0, 1.0], 1.0, nan),      // depth NaN -> dropped
-        ([1.0, 1.0, 1.0], 1.0, 0.0),      // depth 0 -> dropped
-        ([1.0, 1.0, 1.0], 1.0, -3.0),     // negative depth -> dropped
-        ([1.0, 1.0, 1.0], 1.0, inf),      // sky with colour -> background fragment with that colour
-        ([0.0, 0.0, 0.0], 1.0, inf),      // black sky -> black background fragment
-        ([0.5, 0.5, 0.5], 2.0, 1.0),      // alpha > 1 -> 1
-        ([0.5, 0.5, 0.5], nan, 1.0),      // alpha NaN -> 0 -> empty
-        ([-0.5, 0.0, 0.0], 1.0, -inf),    // depth -inf -> dropped (colour not looked at)
+        ([nan, 0.5, 0.25], 1.0, 2.0),  // colour NaN -> 0
+        ([inf, -inf, 1.0], 1.0, 2.0),  // +inf -> 65504, -inf -> 0
+        ([1.0, 1.0, 1.0], 1.0, nan),   // depth NaN -> dropped
+        ([1.0, 1.0, 1.0], 1.0, 0.0),   // depth 0 -> dropped
+        ([1.0, 1.0, 1.0], 1.0, -3.0),  // negative depth -> dropped
+        ([1.0, 1.0, 1.0], 1.0, inf),   // sky with colour -> background fragment with that colour
+        ([0.0, 0.0, 0.0], 1.0, inf),   // black sky -> black background fragment
+        ([0.5, 0.5, 0.5], 2.0, 1.0),   // alpha > 1 -> 1
+        ([0.5, 0.5, 0.5], nan, 1.0),   // alpha NaN -> 0 -> empty
+        ([-0.5, 0.0, 0.0], 1.0, -inf), // depth -inf -> dropped (colour not looked at)
     ];
     let n = pixels.len();
     let file = TempFile::new("policy.exr");

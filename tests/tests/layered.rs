@@ -2,6 +2,7 @@
 //! anchors by the CoC inverse within eq. 8's bound, empty layers skipped), exact and flat cases,
 //! Vulkan against the CPU, the exact reference, and bad options.
 
+use dof::Error;
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::{Fragment, LayeredImage};
 use dof::methods::gather::gather;
@@ -9,7 +10,6 @@ use dof::methods::layered::{LayeredOptions, LayeredOutput, layered, plan};
 use dof::metrics::compare;
 use dof::scene::{LayerOptions, ReferenceOptions, builtin, raycast_layers, reference};
 use dof::stress::{noise_image, test_lens, varied};
-use dof::Error;
 use dof_shaders::lens::ThinLens;
 use dof_tests::{assert_clean, vulkan};
 
@@ -32,7 +32,8 @@ fn two_depths(w: u32, h: u32, near: f32, far: f32) -> LayeredImage {
 #[test]
 fn the_layer_count_follows_the_depth_range() {
     let img = noise_image(40, 30, 3, varied);
-    let counts: Vec<usize> = [0.0f32, 0.002, 0.01, 0.05].iter().map(|&a| plan(&img, &test_lens(a), &LayeredOptions::default()).unwrap().cocs.len()).collect();
+    let counts: Vec<usize> =
+        [0.0f32, 0.002, 0.01, 0.05].iter().map(|&a| plan(&img, &test_lens(a), &LayeredOptions::default()).unwrap().cocs.len()).collect();
     assert_eq!(counts[0], 1, "a pinhole needs the focus layer only");
     assert!(counts.windows(2).all(|w| w[0] < w[1]), "a wider aperture, more layers: {counts:?}");
     let p = plan(&img, &test_lens(0.01), &LayeredOptions { layers_per_doubling: 1, ..Default::default() }).unwrap();
@@ -130,7 +131,12 @@ fn beats_the_gather_in_the_partial_occlusion_region() {
     let region = |e: &dof::metrics::ImageError| e.psnr_masked_db.unwrap();
     eprintln!(
         "simple 320x180: cascaded {:.2} dB ({:.2} region), separate {:.2} dB ({:.2} region), gather {:.2} dB ({:.2} region)",
-        cascaded.psnr_db, region(&cascaded), separate.psnr_db, region(&separate), g.psnr_db, region(&g)
+        cascaded.psnr_db,
+        region(&cascaded),
+        separate.psnr_db,
+        region(&separate),
+        g.psnr_db,
+        region(&g)
     );
     assert!(region(&cascaded) >= region(&g) + BOUND_CASCADED && region(&separate) >= region(&g) + BOUND_SEPARATE);
 }

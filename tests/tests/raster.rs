@@ -103,7 +103,15 @@ fn peeling_finds_every_surface_beyond_the_umbra_in_order() {
     assert_eq!(c.iter().map(|f| f.1).collect::<Vec<_>>(), [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0; 3]]);
     // The disocclusion buffer keeps hidden layers only near the squares' rims (a smaller aperture,
     // so the rims are a few pixels wide): the centre keeps one.
-    let masked = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.05, 5.0), 0.01, &LayerOptions { guard_band: dof::scene::GuardBand::Off, ..LayerOptions::default() }).unwrap();
+    let masked = peel_layers(
+        &mut CpuBackend::new(),
+        &m.raster(),
+        &camera(),
+        &lens(0.05, 5.0),
+        0.01,
+        &LayerOptions { guard_band: dof::scene::GuardBand::Off, ..LayerOptions::default() },
+    )
+    .unwrap();
     let stats = (masked.image.with_mask, masked.image.without_mask);
     assert!(stats.0.fragments < stats.1.fragments && stats.0.multi_layer_pixels > 0, "{stats:?}");
     assert_eq!(centre(&masked.image.layers).len(), 1);
@@ -141,7 +149,8 @@ fn an_alpha_mask_cuts_a_hole_to_what_lies_behind() {
 fn the_accumulation_buffer_keeps_the_focus_plane_sharp_and_blurs_the_rest() {
     let m = stack();
     let cam = camera();
-    let pinhole = peel_layers(&mut CpuBackend::new(), &m.raster(), &cam, &lens(0.0, 5.0), 0.01, &all_layers()).unwrap().image.layers.front().0;
+    let pinhole =
+        peel_layers(&mut CpuBackend::new(), &m.raster(), &cam, &lens(0.0, 5.0), 0.01, &all_layers()).unwrap().image.layers.front().0;
     let options = AccumulateOptions { samples: 64, ..AccumulateOptions::default() };
     let acc = accumulate(&mut CpuBackend::new(), &m.raster(), &cam, &lens(0.1, 5.0), 0.01, &options).unwrap().image;
     // The green square's right half lies on the focus plane, far from any other edge: as sharp as the pinhole's.
@@ -194,7 +203,12 @@ fn vulkan_rasterises_like_the_cpu() {
     for p in 0..a.counts.len() {
         let (x, y) = ((p as u32) % W, (p as u32) / W);
         let (fa, fb) = (a.pixel(x, y), b.pixel(x, y));
-        if fa.len() != fb.len() || fa.iter().zip(fb).any(|(f, g)| (f.depth - g.depth).abs() > 1e-4 * f.depth || (0..3).any(|k| (f.color[k] - g.color[k]).abs() > 1e-3)) {
+        if fa.len() != fb.len()
+            || fa
+                .iter()
+                .zip(fb)
+                .any(|(f, g)| (f.depth - g.depth).abs() > 1e-4 * f.depth || (0..3).any(|k| (f.color[k] - g.color[k]).abs() > 1e-3))
+        {
             differing += 1;
         }
     }
@@ -206,7 +220,8 @@ fn vulkan_rasterises_like_the_cpu() {
     let acc_cpu = accumulate(&mut CpuBackend::new(), &m.raster(), &cam, &l, 0.01, &options).unwrap().image;
     let acc_gpu = accumulate(&mut vk, &m.raster(), &cam, &l, 0.01, &options).unwrap().image;
     assert_clean(&mut vk);
-    let mean_diff = acc_cpu.data.iter().flatten().zip(acc_gpu.data.iter().flatten()).map(|(a, b)| (a - b).abs() as f64).sum::<f64>() / (3 * W * H) as f64;
+    let mean_diff = acc_cpu.data.iter().flatten().zip(acc_gpu.data.iter().flatten()).map(|(a, b)| (a - b).abs() as f64).sum::<f64>()
+        / (3 * W * H) as f64;
     assert!(mean_diff < 2e-3, "mean |CPU - Vulkan| of the accumulation buffer: {mean_diff}");
 }
 
@@ -242,7 +257,9 @@ fn stiff_geometry_rasterises_as_stated() {
     // Far away: a square of 10^4 units' depth filling the top-right corner.
     m.facing(4000.0, 2800.0, 1e4, 3000.0, white);
 
-    let run = |b: &mut dyn dof::backend::Backend| peel_layers(b, &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).unwrap().image.layers;
+    let run = |b: &mut dyn dof::backend::Backend| {
+        peel_layers(b, &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &all_layers()).unwrap().image.layers
+    };
     let mut outputs = vec![("cpu", run(&mut CpuBackend::new()))];
     if let Some(mut vk) = vulkan() {
         outputs.push(("vulkan", run(&mut vk)));

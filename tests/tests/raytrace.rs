@@ -2,6 +2,7 @@
 //! Vulkan against the CPU backend, convergence with rays per pixel against the exact reference, and
 //! bad options refused.
 
+use dof::Error;
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::LayeredImage;
 use dof::methods::gather::gather;
@@ -9,7 +10,6 @@ use dof::methods::raytrace::{RaytraceOptions, RaytraceOutput, raytrace};
 use dof::metrics::compare;
 use dof::scene::{LayerOptions, ReferenceOptions, builtin, raycast_layers, reference};
 use dof::stress::{noise_image, noise_with_sky, test_lens};
-use dof::Error;
 use dof_shaders::lens::ThinLens;
 use dof_tests::{assert_clean, vulkan};
 
@@ -86,7 +86,8 @@ fn vulkan_traces_the_same_rays_as_the_cpu() {
     assert_clean(&mut vk);
     // The same rays and the same arithmetic; a ray grazing a pixel corner may still go either way
     // where the two backends round a division differently.
-    let differing = cpu.image.data.iter().zip(&gpu.image.data).filter(|(a, b)| (0..3).any(|c| (a[c] - b[c]).abs() > 1e-5 * (1.0 + a[c].abs()))).count();
+    let differing =
+        cpu.image.data.iter().zip(&gpu.image.data).filter(|(a, b)| (0..3).any(|c| (a[c] - b[c]).abs() > 1e-5 * (1.0 + a[c].abs()))).count();
     eprintln!("pixels differing: {differing} of {}; missed rays {} / {}", cpu.image.data.len(), cpu.missed_rays, gpu.missed_rays);
     assert!(differing * 200 <= cpu.image.data.len(), "{differing} pixels differ");
     assert!(cpu.missed_rays.abs_diff(gpu.missed_rays) * 1000 <= cpu.rays);
@@ -110,7 +111,12 @@ fn converges_towards_the_exact_reference_with_rays_per_pixel() {
     let region = |e: &dof::metrics::ImageError| e.psnr_masked_db.unwrap();
     eprintln!(
         "simple 320x180: raytrace 4 spp {:.2} dB ({:.2} region), 64 spp {:.2} dB ({:.2} region); gather {:.2} dB ({:.2} region)",
-        e4.psnr_db, region(&e4), e64.psnr_db, region(&e64), g.psnr_db, region(&g)
+        e4.psnr_db,
+        region(&e4),
+        e64.psnr_db,
+        region(&e64),
+        g.psnr_db,
+        region(&g)
     );
     // Measured: +3.2 dB full frame, and +4.2 dB over the gather in the region.
     assert!(e64.psnr_db >= e4.psnr_db + 2.5, "16x the rays gains at least 2.5 dB");
@@ -132,5 +138,8 @@ fn bad_options_are_errors() {
         let err = raytrace(&mut cpu, &img, &lens, &options).err().expect("an error");
         assert!(matches!(err, Error::InvalidArgument(_)), "{err}");
     }
-    assert!(LayeredImage::new(0, 4, 1).is_err() || raytrace(&mut cpu, &LayeredImage::new(0, 4, 1).unwrap(), &test_lens(0.01), &RaytraceOptions::default()).is_err());
+    assert!(
+        LayeredImage::new(0, 4, 1).is_err()
+            || raytrace(&mut cpu, &LayeredImage::new(0, 4, 1).unwrap(), &test_lens(0.01), &RaytraceOptions::default()).is_err()
+    );
 }

@@ -68,7 +68,12 @@ fn bad_input_is_an_error() {
     assert!(ring_gather(&mut cpu, &img, &depth[1..], &lens(0.01), &ok).is_err());
     assert!(ring_gather(&mut cpu, &img, &depth, &lens(-1.0), &ok).is_err());
     assert!(ring_gather(&mut cpu, &img, &depth, &lens(f32::NAN), &ok).is_err());
-    for bad in [options(0), options(MAX_RINGS + 1), RingGatherOptions { max_radius: 0, ..ok }, RingGatherOptions { max_radius: MAX_RADIUS + 1, ..ok }] {
+    for bad in [
+        options(0),
+        options(MAX_RINGS + 1),
+        RingGatherOptions { max_radius: 0, ..ok },
+        RingGatherOptions { max_radius: MAX_RADIUS + 1, ..ok },
+    ] {
         assert!(ring_gather(&mut cpu, &img, &depth, &lens(0.01), &bad).is_err(), "{bad:?}");
     }
     let empty = RgbImage::new(0, 0);
@@ -169,7 +174,8 @@ fn a_context_records_frames_without_allocating() {
     let output = cpu.create_buffer(3 * (w * h) as u64, "output").unwrap();
     for (fw, fh, rings) in [(40u32, 24u32, 5u32), (17, 9, 2), (40, 24, 8)] {
         let (img, depth) = noise_image(fw, fh);
-        let slots: Vec<u32> = img.data.iter().zip(&depth).flat_map(|(c, z)| [c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]).collect();
+        let slots: Vec<u32> =
+            img.data.iter().zip(&depth).flat_map(|(c, z)| [c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]).collect();
         cpu.write_buffer(input, 0, &slots).unwrap();
         cpu.write_buffer(counts, 0, &vec![1u32; (fw * fh) as usize]).unwrap();
         ctx.set_options(options(rings)).unwrap();
@@ -179,7 +185,8 @@ fn a_context_records_frames_without_allocating() {
         let spent = cpu.counters().since(&before);
         assert_eq!((spent.allocations, spent.readbacks, spent.uploads, spent.submissions), (0, 0, 0, 1), "{fw}x{fh}");
         let words = cpu.read_buffer(output, 0, 3 * (fw * fh) as u64).unwrap();
-        let framed: Vec<[f32; 3]> = words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
+        let framed: Vec<[f32; 3]> =
+            words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
         let one_shot = ring_gather(&mut CpuBackend::new(), &img, &depth, &lens(0.02), &options(rings)).unwrap();
         assert_eq!(framed, one_shot.image.data, "{fw}x{fh}, {rings} rings");
     }
@@ -217,4 +224,3 @@ fn ring_gather_against_the_exact_reference() {
     assert!(psnr[1].psnr_db > psnr[0].psnr_db + 1.0, "5 rings {} dB, 1 ring {} dB", psnr[1].psnr_db, psnr[0].psnr_db);
     assert!(psnr[1].ssim_masked.unwrap() > sharp.ssim_masked.unwrap() + 0.1);
 }
-

@@ -6,11 +6,14 @@ use proptest::prelude::*;
 
 fn sequential(values: &[u32]) -> (Vec<u32>, u32) {
     let mut acc = 0u32;
-    let out = values.iter().map(|&v| {
-        let before = acc;
-        acc = acc.wrapping_add(v);
-        before
-    }).collect();
+    let out = values
+        .iter()
+        .map(|&v| {
+            let before = acc;
+            acc = acc.wrapping_add(v);
+            before
+        })
+        .collect();
     (out, acc)
 }
 

@@ -4,8 +4,8 @@ use dof::Error;
 use dof::layers::LayeredImage;
 use dof::metrics::psnr;
 use dof::scene::{
-    Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, Lighting, Material, Primitive, ReferenceOptions, Scene,
-    Shape, Vec3, builtin, builtin_names, pinhole, raycast_layers, reference, reference_auto,
+    Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, Lighting, Material, Primitive, ReferenceOptions, Scene, Shape, Vec3,
+    builtin, builtin_names, pinhole, raycast_layers, reference, reference_auto,
 };
 
 /// These suites look at the frame's own pixels: no guard band (its tests are in `sky_and_edges.rs`).
@@ -147,7 +147,10 @@ fn umbra_threshold_skips_fragments_in_the_shadow_of_the_one_in_front() {
             material: Material::Emissive([0.1 * i as f32, 0.5, 0.5]),
         })
         .collect();
-    prims.push(Primitive { shape: Shape::Plane { point: Vec3::new(0.0, 0.0, -20.0), normal: Vec3::Z }, material: Material::Emissive([1.0; 3]) });
+    prims.push(Primitive {
+        shape: Shape::Plane { point: Vec3::new(0.0, 0.0, -20.0), normal: Vec3::Z },
+        material: Material::Emissive([1.0; 3]),
+    });
     let scene = Scene::new(prims, Lighting::default()).unwrap();
     let camera = Camera::look_at(Vec3::ZERO, -Vec3::Z, 40f32.to_radians(), 160, 90);
     let lens = LensSettings::with_aperture_radius(3.0, 0.04).thin_lens(&camera).unwrap();
@@ -196,7 +199,13 @@ fn pinhole_reference_is_the_front_layer() {
             continue; // textures vary inside pixels elsewhere
         }
         // Away from edges the pixel is constant over its area; most pixels agree closely.
-        let close = jittered.image.data.iter().zip(&front.data).filter(|(a, b)| (0..3).all(|k| (a[k] - b[k]).abs() <= 0.02 * b[k].max(0.1))).count();
+        let close = jittered
+            .image
+            .data
+            .iter()
+            .zip(&front.data)
+            .filter(|(a, b)| (0..3).all(|k| (a[k] - b[k]).abs() <= 0.02 * b[k].max(0.1)))
+            .count();
         assert!(close as f64 > 0.9 * front.data.len() as f64, "{name}: only {close} of {} pixels agree", front.data.len());
     }
 }
@@ -267,7 +276,12 @@ fn reference_bokeh_has_the_predicted_size_and_energy() {
         };
         let (e_blur, cx, cy, var) = moments(&blurred.image);
         let (e_sharp, ..) = moments(&sharp.image);
-        eprintln!("focus {focus}: energy ratio {:.4}, bokeh radius {rho_dbg:.3} px vs CoC radius {:.3} px", e_blur / e_sharp, coc / 2.0, rho_dbg = (2.0 * (var - 1.0 / 6.0)).sqrt());
+        eprintln!(
+            "focus {focus}: energy ratio {:.4}, bokeh radius {rho_dbg:.3} px vs CoC radius {:.3} px",
+            e_blur / e_sharp,
+            coc / 2.0,
+            rho_dbg = (2.0 * (var - 1.0 / 6.0)).sqrt()
+        );
         assert!((e_blur / e_sharp - 1.0).abs() < 0.05, "energy {e_blur} blurred vs {e_sharp} sharp");
         let (px, py) = frame.project(dot).unwrap();
         assert!((cx - px as f64).abs() < 0.3 && (cy - py as f64).abs() < 0.3, "centroid ({cx}, {cy}) vs ({px}, {py})");
@@ -302,7 +316,9 @@ fn noise_estimate_is_honest_and_auto_reaches_its_target() {
     assert!(auto.region_noise_psnr_db.unwrap() < auto.noise_psnr_db.unwrap(), "the blurred silhouettes are the noisy part");
     assert!(auto.valid_up_to_psnr_db(0.5).unwrap() >= 30.0);
     assert!(psnr(&auto.image, &converged.image).unwrap() > required - 2.0);
-    let capped = reference_auto(&s.scene, &s.camera, &lens, &AutoOptions { target_psnr_db: 80.0, start_spp: 2, max_spp: 8, ..Default::default() }).unwrap();
+    let capped =
+        reference_auto(&s.scene, &s.camera, &lens, &AutoOptions { target_psnr_db: 80.0, start_spp: 2, max_spp: 8, ..Default::default() })
+            .unwrap();
     assert!(capped.capped && capped.spp == 8, "{capped:?}");
 }
 
@@ -337,7 +353,12 @@ fn every_builtin_scene_renders_small_and_fast() {
         assert!(lens.far_limit_px() >= 2.0, "{name}: far limit {} px", lens.far_limit_px());
     }
     let highlights = builtin("highlights").unwrap();
-    let hdr = highlights.scene.primitives().iter().filter(|p| matches!(p.material, Material::Emissive(c) if c.iter().any(|v| *v > 65504.0))).count();
+    let hdr = highlights
+        .scene
+        .primitives()
+        .iter()
+        .filter(|p| matches!(p.material, Material::Emissive(c) if c.iter().any(|v| *v > 65504.0)))
+        .count();
     assert!(hdr > 0, "some highlights exceed the half-float range");
 }
 
@@ -480,8 +501,17 @@ fn invalid_cameras_lenses_and_scenes_are_errors() {
         (prim(Shape::Cuboid { min: Vec3::ONE, max: Vec3::ZERO }), "min <= max"),
         (prim(Shape::Quad { corner: Vec3::ZERO, edge_u: Vec3::X, edge_v: Vec3::X * 2.0 }), "parallel"),
         (prim(Shape::Plane { point: Vec3::ZERO, normal: Vec3::ZERO }), "normal"),
-        (vec![Primitive { shape: Shape::Plane { point: Vec3::ZERO, normal: Vec3::Z }, material: Material::Emissive([f32::NAN, 0.0, 0.0]) }], "colours"),
-        (vec![Primitive { shape: Shape::Plane { point: Vec3::ZERO, normal: Vec3::Z }, material: Material::Emissive([-1.0, 0.0, 0.0]) }], "colours"),
+        (
+            vec![Primitive {
+                shape: Shape::Plane { point: Vec3::ZERO, normal: Vec3::Z },
+                material: Material::Emissive([f32::NAN, 0.0, 0.0]),
+            }],
+            "colours",
+        ),
+        (
+            vec![Primitive { shape: Shape::Plane { point: Vec3::ZERO, normal: Vec3::Z }, material: Material::Emissive([-1.0, 0.0, 0.0]) }],
+            "colours",
+        ),
         (
             vec![Primitive {
                 shape: Shape::Plane { point: Vec3::ZERO, normal: Vec3::Z },
@@ -493,7 +523,16 @@ fn invalid_cameras_lenses_and_scenes_are_errors() {
         is_invalid(Scene::new(prims, Lighting::default()), needle);
     }
     is_invalid(Scene::new(vec![], Lighting { direction: Vec3::ZERO, ..Lighting::default() }), "light direction");
-    assert!(dof::scene::validate_artist_lens(&dof::scene::ArtistLens { near_start: 1.0, near_end: 2.0, far_start: 3.0, far_end: 4.0, max_radius_px: 4.0 }).is_err());
+    assert!(
+        dof::scene::validate_artist_lens(&dof::scene::ArtistLens {
+            near_start: 1.0,
+            near_end: 2.0,
+            far_start: 3.0,
+            far_end: 4.0,
+            max_radius_px: 4.0
+        })
+        .is_err()
+    );
 }
 
 mod fuzz {

@@ -7,8 +7,8 @@ use dof::backend::{Backend, CpuBackend};
 use dof::eval::methods::{Gather, Method, MethodInput, Setting, Splat};
 use dof::io::{read_layered_exr, write_exr};
 use dof::layers::{LayeredImage, RgbImage};
-use dof::metrics::{ImageError, compare};
 use dof::methods::splat::{SplatOptions, splat};
+use dof::metrics::{ImageError, compare};
 use dof::scene::{GuardBand, LayerOptions, MultiLayerImage, ReferenceOptions, builtin, raycast_layers, reference};
 use dof_shaders::lens::ThinLens;
 
@@ -56,7 +56,13 @@ fn measure(name: &str, band: GuardBand) -> (Setup, MultiLayerImage, [ImageError;
     let errors = images.map(|i| compare(&i, &s.reference, Some(&ml.mask)).unwrap());
     eprintln!(
         "{name} (guard band {} px): gather {:.2} dB ({:.2} in the region), single {:.2} ({:.2}), multi {:.2} ({:.2})",
-        ml.margin, errors[0].psnr_db, region(&errors[0]), errors[1].psnr_db, region(&errors[1]), errors[2].psnr_db, region(&errors[2])
+        ml.margin,
+        errors[0].psnr_db,
+        region(&errors[0]),
+        errors[1].psnr_db,
+        region(&errors[1]),
+        errors[2].psnr_db,
+        region(&errors[2])
     );
     (s, ml, errors)
 }
@@ -122,7 +128,13 @@ fn vulkan_renders_sky_and_edges_like_the_cpu() {
         let cpu = splat(&mut CpuBackend::new(), &input.layers, &s.lens, &SplatOptions::default()).unwrap().image;
         let gpu = splat(&mut vk, &input.layers, &s.lens, &SplatOptions::default()).unwrap().image;
         // The same fragments and lists; the final normalisation may round differently (an ulp).
-        let relative = |a: &RgbImage, b: &RgbImage| a.data.iter().zip(&b.data).flat_map(|(a, b)| (0..3).map(move |k| (a[k] - b[k]).abs() / a[k].abs().max(1e-3))).fold(0.0f32, f32::max);
+        let relative = |a: &RgbImage, b: &RgbImage| {
+            a.data
+                .iter()
+                .zip(&b.data)
+                .flat_map(|(a, b)| (0..3).map(move |k| (a[k] - b[k]).abs() / a[k].abs().max(1e-3)))
+                .fold(0.0f32, f32::max)
+        };
         let worst = relative(&cpu, &gpu);
         assert!(worst < 1e-5, "{name}: multi-layer splatting differs between the backends by {worst} (relative)");
         let gathered = |b: &mut dyn Backend| Gather.run(b, &input, &Setting { label: String::new(), value: Some(48) }).unwrap().image;
@@ -182,7 +194,9 @@ fn the_exr_edge_policy_on_objects_crossing_the_frame_edges() {
     let extended = MultiLayerImage { layers: frame.layers.extend_edges(banded.margin).unwrap(), margin: banded.margin, ..frame.clone() };
     let full = |ml: &MultiLayerImage| run(&mut CpuBackend::new(), ml, s.lens).map(|i| compare(&i, &s.reference, None).unwrap().psnr_db);
     let (band, policy, none) = (full(&banded), full(&extended), full(&frame));
-    eprintln!("edges, full-frame PSNR (gather, single, multi): guard band {band:.3?}, edges extended {policy:.3?}, nothing beyond the frame {none:.3?}");
+    eprintln!(
+        "edges, full-frame PSNR (gather, single, multi): guard band {band:.3?}, edges extended {policy:.3?}, nothing beyond the frame {none:.3?}"
+    );
     for k in 0..3 {
         assert!(policy[k] >= none[k] - 0.01, "method {k}: extending the edges must not lose to leaving them");
         assert!(band[k] >= policy[k] - 0.05, "method {k}: the guard band sees what lies beyond the frame");

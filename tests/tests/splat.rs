@@ -1,14 +1,14 @@
 //! Tiled splatting: the stiff and extreme cases on the CPU backend, each with its stated behaviour,
 //! and the Vulkan backend against the CPU stage by stage.
 
+use dof::Error;
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::{Fragment, LayeredImage};
 use dof::methods::splat::{Merge, SplatOptions, SplatOutput, splat};
-use dof::Error;
+use dof::stress::{hash, noise_with_sky, test_lens};
 use dof_shaders::half::{f16_to_f32, f32_to_f16};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::splat::MAX_RINGS;
-use dof::stress::{hash, noise_with_sky, test_lens};
 use dof_tests::{assert_clean, vulkan};
 
 fn lens(aperture_radius: f32) -> ThinLens {
@@ -105,7 +105,13 @@ fn a_flat_field_stays_flat() {
 #[test]
 fn nan_and_inf_do_not_spread() {
     let mut img = noise_with_sky(33, 33, 2);
-    let bad = [(16 * 33 + 16, [f32::NAN, 1.0, 1.0], 3.0), (5 * 33 + 5, [f32::INFINITY, 1.0, 1.0], 3.0), (20 * 33 + 3, [1.0; 3], f32::NAN), (9, [1.0; 3], -2.0), (10, [1.0; 3], 0.0)];
+    let bad = [
+        (16 * 33 + 16, [f32::NAN, 1.0, 1.0], 3.0),
+        (5 * 33 + 5, [f32::INFINITY, 1.0, 1.0], 3.0),
+        (20 * 33 + 3, [1.0; 3], f32::NAN),
+        (9, [1.0; 3], -2.0),
+        (10, [1.0; 3], 0.0),
+    ];
     for &(p, color, depth) in &bad {
         img.counts[p] = 1;
         img.fragments[p * 2] = Fragment { color, alpha: 1.0, depth };
@@ -230,9 +236,18 @@ fn bad_input_is_an_error() {
     assert!(matches!(splat(&mut cpu, &img, &lens(-1.0), &o), Err(Error::InvalidArgument(_))));
     assert!(matches!(splat(&mut cpu, &img, &ThinLens { focus_distance: 0.01, ..lens(0.01) }, &o), Err(Error::InvalidArgument(_))));
     assert!(matches!(splat(&mut cpu, &img, &lens(0.01), &SplatOptions { tile: 20, ..o.clone() }), Err(Error::InvalidArgument(_))));
-    assert!(matches!(splat(&mut cpu, &img, &lens(0.01), &SplatOptions { max_radius: Some(1000.0), ..o.clone() }), Err(Error::InvalidArgument(_))));
-    assert!(matches!(splat(&mut cpu, &img, &lens(0.01), &SplatOptions { max_radius: Some(f32::NAN), ..o.clone() }), Err(Error::InvalidArgument(_))));
-    assert!(matches!(splat(&mut cpu, &img, &lens(0.01), &SplatOptions { merge_depth_ratio: 0.5, ..o.clone() }), Err(Error::InvalidArgument(_))));
+    assert!(matches!(
+        splat(&mut cpu, &img, &lens(0.01), &SplatOptions { max_radius: Some(1000.0), ..o.clone() }),
+        Err(Error::InvalidArgument(_))
+    ));
+    assert!(matches!(
+        splat(&mut cpu, &img, &lens(0.01), &SplatOptions { max_radius: Some(f32::NAN), ..o.clone() }),
+        Err(Error::InvalidArgument(_))
+    ));
+    assert!(matches!(
+        splat(&mut cpu, &img, &lens(0.01), &SplatOptions { merge_depth_ratio: 0.5, ..o.clone() }),
+        Err(Error::InvalidArgument(_))
+    ));
     let wide = LayeredImage::new(40_000, 1, 1).unwrap();
     assert!(matches!(splat(&mut cpu, &wide, &lens(0.01), &o), Err(Error::TooLarge { .. })));
 }

@@ -4,9 +4,9 @@
 //! cost in error. The bounds sit just under the margins measured (printed by each test).
 
 use dof::backend::CpuBackend;
-use dof::metrics::{ImageError, compare};
 use dof::methods::gather::gather;
 use dof::methods::splat::{Merge, SplatOptions, splat};
+use dof::metrics::{ImageError, compare};
 use dof::scene::{LayerOptions, ReferenceOptions, builtin, raycast_layers, reference};
 
 struct Measured {
@@ -41,7 +41,13 @@ fn measure(name: &str) -> Measured {
     let show = |e: &ImageError| format!("{:.2} dB ({:.2} dB in the region)", e.psnr_db, e.psnr_masked_db.unwrap());
     eprintln!(
         "{name}: gather {}, single {}, multi {}, multi 4x4 {}; lists {:.0} -> {:.0} ({:.1}x)",
-        show(&m.gather), show(&m.single), show(&m.multi), show(&m.multi_x4), m.list, m.list_x4, m.list / m.list_x4
+        show(&m.gather),
+        show(&m.single),
+        show(&m.multi),
+        show(&m.multi_x4),
+        m.list,
+        m.list_x4,
+        m.list / m.list_x4
     );
     m
 }
@@ -106,7 +112,10 @@ fn blur_beyond_three_rings() {
     let e = |img| compare(&layers.crop(img), &exact.image, None).unwrap().psnr_db;
     let (em, eg, ep) = (e(&multi.image), e(&g.image), e(&front));
     let rings = multi.report.plan.as_ref().unwrap().rings;
-    eprintln!("large blur: multi {em:.2} dB ({rings} rings, max CoC radius {:.1} px), gather {eg:.2} dB, pinhole {ep:.2} dB", multi.report.plan.as_ref().unwrap().max_coc_radius);
+    eprintln!(
+        "large blur: multi {em:.2} dB ({rings} rings, max CoC radius {:.1} px), gather {eg:.2} dB, pinhole {ep:.2} dB",
+        multi.report.plan.as_ref().unwrap().max_coc_radius
+    );
     assert!(rings > 3);
     assert!(em > eg + 10.0 && em > ep + 15.0);
 }

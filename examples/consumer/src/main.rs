@@ -40,7 +40,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = splat(&mut cpu, &image, &lens, &SplatOptions::default())?;
     let input_mean = [0.2 + 0.0625 * 0.8, 0.2 + 0.0625 * 0.3, 0.2 - 0.0625 * 0.1];
     let m = mean(&out.image);
-    println!("hand-built 64x64, 2 layers: mean colour {:.4} {:.4} {:.4} (input {:.4} {:.4} {:.4})", m[0], m[1], m[2], input_mean[0], input_mean[1], input_mean[2]);
+    println!(
+        "hand-built 64x64, 2 layers: mean colour {:.4} {:.4} {:.4} (input {:.4} {:.4} {:.4})",
+        m[0], m[1], m[2], input_mean[0], input_mean[1], input_mean[2]
+    );
     for c in 0..3 {
         if (m[c] - input_mean[c]).abs() > 0.01 {
             return Err(format!("channel {c}: mean {} is not the input's {}", m[c], input_mean[c]).into());
@@ -61,6 +64,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if !(psnr > 30.0) {
         return Err(format!("multi-layer splatting is only {psnr:.1} dB from the reference").into());
     }
-    println!("ok: {} SPIR-V modules embedded ({} bytes), kernel sources {}", dof::shaders::MODULES.len(), dof::shaders::total_bytes(), &dof::shaders::SOURCE_HASH[..12]);
+    println!(
+        "ok: {} SPIR-V modules embedded ({} bytes), kernel sources {}",
+        dof::shaders::MODULES.len(),
+        dof::shaders::total_bytes(),
+        &dof::shaders::SOURCE_HASH[..12]
+    );
     Ok(())
 }

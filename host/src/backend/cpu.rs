@@ -53,20 +53,13 @@ impl CpuBackend {
     }
 
     fn buffer(&self, id: BufferId) -> Result<&[AtomicU32]> {
-        self.buffers
-            .get(id.0 as usize)
-            .and_then(|b| b.as_deref())
-            .ok_or_else(|| Error::InvalidArgument(format!("unknown buffer {}", id.0)))
+        self.buffers.get(id.0 as usize).and_then(|b| b.as_deref()).ok_or_else(|| Error::InvalidArgument(format!("unknown buffer {}", id.0)))
     }
 
     fn range(&self, id: BufferId, offset: u64, words: u64) -> Result<&[AtomicU32]> {
         let buffer = self.buffer(id)?;
         let end = offset.checked_add(words).filter(|&end| end <= buffer.len() as u64).ok_or_else(|| {
-            Error::InvalidArgument(format!(
-                "range {offset}..{offset}+{words} outside buffer {} of {} words",
-                id.0,
-                buffer.len()
-            ))
+            Error::InvalidArgument(format!("range {offset}..{offset}+{words} outside buffer {} of {} words", id.0, buffer.len()))
         })?;
         Ok(&buffer[offset as usize..end as usize])
     }
@@ -80,15 +73,18 @@ impl CpuBackend {
                 let x = (flat % groups[0] as u64) as u32;
                 let y = ((flat / groups[0] as u64) % groups[1] as u64) as u32;
                 let z = (flat / (groups[0] as u64 * groups[1] as u64)) as u32;
-                (kernel.cpu)(&CpuDispatch { workgroup_id: [x, y, z], num_workgroups: groups, buffers: &bound, push, read_only: kernel.read_only });
+                (kernel.cpu)(&CpuDispatch {
+                    workgroup_id: [x, y, z],
+                    num_workgroups: groups,
+                    buffers: &bound,
+                    push,
+                    read_only: kernel.read_only,
+                });
             })
         }));
         if let Err(panic) = result {
-            let message = panic
-                .downcast_ref::<String>()
-                .cloned()
-                .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
-                .unwrap_or_default();
+            let message =
+                panic.downcast_ref::<String>().cloned().or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string())).unwrap_or_default();
             return Err(Error::KernelFault { kernel: kernel.entry, message });
         }
         self.times.push(CommandTime { label: label.to_string(), kernel: kernel.entry, ms: start.elapsed().as_secs_f64() * 1e3 });

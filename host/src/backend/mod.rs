@@ -243,14 +243,7 @@ pub trait Backend {
     fn read_buffer(&mut self, buffer: BufferId, offset_words: u64, words: u64) -> Result<Vec<u32>>;
 
     fn fill(&mut self, buffer: BufferId, offset_words: u64, words: u64, value: u32, label: &str) -> Result<()>;
-    fn dispatch(
-        &mut self,
-        kernel: &'static KernelDesc,
-        groups: [u32; 3],
-        buffers: &[BufferId],
-        push: &[u32],
-        label: &str,
-    ) -> Result<()>;
+    fn dispatch(&mut self, kernel: &'static KernelDesc, groups: [u32; 3], buffers: &[BufferId], push: &[u32], label: &str) -> Result<()>;
     /// Like `dispatch`, with the workgroup counts read at run time from `args[offset .. offset + 3]`.
     fn dispatch_indirect(
         &mut self,
@@ -352,7 +345,11 @@ pub(crate) fn check_draw<B: Backend + ?Sized>(
     if buffers.len() != draw.bindings as usize || (push.len() as u64) * 4 < draw.push_bytes as u64 {
         return Err(Error::InvalidArgument(format!(
             "draw `{}` takes {} buffers and {} push bytes, got {} and {}",
-            draw.vertex, draw.bindings, draw.push_bytes, buffers.len(), 4 * push.len()
+            draw.vertex,
+            draw.bindings,
+            draw.push_bytes,
+            buffers.len(),
+            4 * push.len()
         )));
     }
     let pixels = size[0] as u64 * size[1] as u64;
@@ -375,10 +372,7 @@ pub(crate) fn check_dispatch(
     push_words: usize,
 ) -> Result<()> {
     if buffers != kernel.bindings as usize {
-        return Err(Error::InvalidArgument(format!(
-            "kernel {} takes {} buffers, {} given",
-            kernel.entry, kernel.bindings, buffers
-        )));
+        return Err(Error::InvalidArgument(format!("kernel {} takes {} buffers, {} given", kernel.entry, kernel.bindings, buffers)));
     }
     if push_words * 4 < kernel.push_bytes as usize {
         return Err(Error::InvalidArgument(format!(

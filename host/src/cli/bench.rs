@@ -2,8 +2,8 @@
 
 use super::{BackendChoice, backends};
 use dof::backend::with_buffers;
-use dof::timing::{RunTimes, median};
 use dof::ops::sort::{SegmentedSort, SortInput};
+use dof::timing::{RunTimes, median};
 use dof::workload;
 use std::time::Instant;
 
@@ -84,8 +84,14 @@ fn sort(args: &SortArgs) -> anyhow::Result<()> {
     for &(_, l) in &input.segments {
         hist[(l.max(1).ilog2() as usize / 2).min(7)] += 1;
     }
-    println!("{} lists, {} keys (mean list {:.0}, longest {}); list lengths by power of four from 1: {:?}",
-        input.segments.len(), n, n as f64 / input.segments.len().max(1) as f64, input.max_list_len(), hist);
+    println!(
+        "{} lists, {} keys (mean list {:.0}, longest {}); list lengths by power of four from 1: {:?}",
+        input.segments.len(),
+        n,
+        n as f64 / input.segments.len().max(1) as f64,
+        input.max_list_len(),
+        hist
+    );
     println!("std sort_unstable_by (1 thread): {std_ms:.2} ms, {:.1} Mkeys/s", n as f64 / std_ms / 1e3);
     let key_bits: Vec<u32> = input.keys.iter().map(|k| k.to_bits()).collect();
     let seg: Vec<u32> = input.segments.iter().flat_map(|&(o, l)| [o, l]).collect();
@@ -122,9 +128,15 @@ fn sort(args: &SortArgs) -> anyhow::Result<()> {
             let device = times.median_total();
             println!(
                 "{:>6} on {}: {:.2} ms in kernels ({:.2} ms wall), {:.1} Mkeys/s, {:.2}x std sort; lists per class {:?} (largest class {}), {} on the global path",
-                b.kind().to_string(), b.device_name(), device, median(wall_ms), n as f64 / device / 1e3, std_ms / device,
+                b.kind().to_string(),
+                b.device_name(),
+                device,
+                median(wall_ms),
+                n as f64 / device / 1e3,
+                std_ms / device,
                 dof_shaders::sort::CLASS_CAPS.iter().zip(&stats.class_counts).filter(|(_, c)| **c > 0).collect::<Vec<_>>(),
-                stats.top_class_cap, stats.global_lists
+                stats.top_class_cap,
+                stats.global_lists
             );
             for (stage, ms) in times.median_stages() {
                 println!("         {stage:<22} {ms:8.3} ms");

@@ -5,12 +5,15 @@
 use super::render::BackendArg;
 use anyhow::Context;
 use dof::backend::{Backend, BackendCounters, BufferId};
-use dof::frame::{BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, SplatContext, SplatContextDesc};
+use dof::frame::{
+    BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, SplatContext,
+    SplatContextDesc,
+};
+use dof::layers::LayeredImage;
 use dof::methods::bokeh::{BokehOptions, bokeh};
+use dof::methods::buffers::slot_words;
 use dof::methods::gather::gather;
 use dof::methods::ring_gather::{RingGatherOptions, ring_gather};
-use dof::layers::LayeredImage;
-use dof::methods::buffers::slot_words;
 use dof::methods::splat::{Merge, SplatOptions, splat};
 use dof::scene::{self, GuardBand, LayerOptions, raycast_layers};
 use dof_shaders::lens::ThinLens;
@@ -135,8 +138,18 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         args.frames,
         if args.one_shot { "one-shot path" } else { "frame API" }
     );
-    println!("per frame: {:.2} allocations, {:.2} submissions, {:.2} readbacks, {:.2} uploads", per_frame(c.allocations), per_frame(c.submissions), per_frame(c.readbacks), per_frame(c.uploads));
-    println!("CPU time to record a frame: {:.3} ms{}", measured.record_ms, if b.kind() == dof::backend::BackendKind::Cpu { " (the CPU backend runs the kernels as it records)" } else { "" });
+    println!(
+        "per frame: {:.2} allocations, {:.2} submissions, {:.2} readbacks, {:.2} uploads",
+        per_frame(c.allocations),
+        per_frame(c.submissions),
+        per_frame(c.readbacks),
+        per_frame(c.uploads)
+    );
+    println!(
+        "CPU time to record a frame: {:.3} ms{}",
+        measured.record_ms,
+        if b.kind() == dof::backend::BackendKind::Cpu { " (the CPU backend runs the kernels as it records)" } else { "" }
+    );
     println!("device time per frame: {:.3} ms", measured.gpu_ms);
     for (stage, ms) in &measured.stages {
         println!("  {stage:<22} {ms:>9.3} ms");
@@ -187,7 +200,9 @@ impl AnyContext {
     fn new(b: &mut dyn Backend, method: FrameMethod, image: &LayeredImage, options: &SplatOptions) -> dof::Result<Self> {
         let (w, h, l) = (image.width, image.height, image.max_layers);
         Ok(match method {
-            FrameMethod::Multilayer | FrameMethod::Tiled => AnyContext::Splat(SplatContext::new(b, &SplatContextDesc::new(w, h, l, options.clone()))?),
+            FrameMethod::Multilayer | FrameMethod::Tiled => {
+                AnyContext::Splat(SplatContext::new(b, &SplatContextDesc::new(w, h, l, options.clone()))?)
+            }
             FrameMethod::Gather => AnyContext::Gather(GatherContext::new(b, &GatherContextDesc::new(w, h, l))?),
             FrameMethod::RingGather => AnyContext::RingGather(RingGatherContext::new(b, &RingGatherContextDesc::new(w, h, l))?),
             FrameMethod::Bokeh => AnyContext::Bokeh(BokehContext::new(b, &BokehContextDesc::new(w, h, l, BokehOptions::default()))?),
@@ -228,7 +243,14 @@ impl AnyContext {
 
 /// The frame API: one context and the input's buffers, made and filled once; then per frame a
 /// recording and one submission.
-fn framed(b: &mut dyn Backend, method: FrameMethod, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions, frames: u32) -> anyhow::Result<Measured> {
+fn framed(
+    b: &mut dyn Backend,
+    method: FrameMethod,
+    image: &LayeredImage,
+    lens: &ThinLens,
+    options: &SplatOptions,
+    frames: u32,
+) -> anyhow::Result<Measured> {
     let pixels = image.width as u64 * image.height as u64;
     let input = slot_words(image);
     let bufs: Vec<BufferId> = [(input.len() as u64, "bench/fragments"), (pixels, "bench/counts"), (3 * pixels, "bench/output")]
@@ -258,7 +280,14 @@ fn framed(b: &mut dyn Backend, method: FrameMethod, image: &LayeredImage, lens: 
 }
 
 /// The one-shot path, frame after frame.
-fn one_shot(b: &mut dyn Backend, method: FrameMethod, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions, frames: u32) -> anyhow::Result<Measured> {
+fn one_shot(
+    b: &mut dyn Backend,
+    method: FrameMethod,
+    image: &LayeredImage,
+    lens: &ThinLens,
+    options: &SplatOptions,
+    frames: u32,
+) -> anyhow::Result<Measured> {
     let (front, depth) = image.front();
     let run = |b: &mut dyn Backend| -> dof::Result<(Vec<dof::backend::CommandTime>, u64, (u32, u64, u64))> {
         Ok(match method {

@@ -49,6 +49,10 @@ pub fn run(args: &RatiosArgs) -> anyhow::Result<()> {
     std::fs::create_dir_all(&args.out).with_context(|| format!("creating {}", args.out.display()))?;
     std::fs::write(args.out.join("ratios.json"), &json)?;
     std::fs::write(args.out.join("ratios.md"), &md)?;
-    if args.json { println!("{json}") } else { println!("{md}") }
+    if args.json {
+        println!("{json}")
+    } else {
+        println!("{md}")
+    }
     Ok(())
 }

@@ -33,7 +33,12 @@ pub fn run(args: &CompareArgs) -> anyhow::Result<()> {
     if (image.width, image.height) != (reference.width, reference.height) {
         bail!(
             "{} is {}x{} but the reference {} is {}x{}: compare images of one size",
-            args.image.display(), image.width, image.height, args.reference.display(), reference.width, reference.height
+            args.image.display(),
+            image.width,
+            image.height,
+            args.reference.display(),
+            reference.width,
+            reference.height
         );
     }
     let mask = match (&args.mask, &args.mask_from) {
@@ -47,14 +52,22 @@ pub fn run(args: &CompareArgs) -> anyhow::Result<()> {
     } else {
         println!(
             "{} against {} ({}x{}):\n  full frame: PSNR {} dB, SSIM {:.4}, FLIP {:.4}",
-            args.image.display(), args.reference.display(), image.width, image.height, db(e.psnr_db), e.ssim, e.flip
+            args.image.display(),
+            args.reference.display(),
+            image.width,
+            image.height,
+            db(e.psnr_db),
+            e.ssim,
+            e.flip
         );
         if let Some((path, _)) = &mask {
             let share = 100.0 * e.masked_pixels as f64 / image.data.len() as f64;
             match (e.psnr_masked_db, e.ssim_masked, e.flip_masked) {
                 (Some(p), Some(s), Some(f)) => println!(
                     "  in the mask ({} pixels, {share:.1}%, from {}): PSNR {} dB, SSIM {s:.4}, FLIP {f:.4}",
-                    e.masked_pixels, path.display(), db(p)
+                    e.masked_pixels,
+                    path.display(),
+                    db(p)
                 ),
                 _ => println!("  the mask from {} selects no pixel", path.display()),
             }
@@ -97,7 +110,8 @@ fn read(path: &Path) -> anyhow::Result<RgbImage> {
 /// The first of the channels `names` found in the EXR at `path` (any layer or part) as a mask
 /// (`> 0.5` is inside), checked against the size of `like`.
 fn read_plane(path: &Path, names: &[&str], like: &RgbImage) -> anyhow::Result<Vec<bool>> {
-    let file = exr::prelude::read_all_flat_layers_from_file(path).with_context(|| format!("cannot read the mask EXR {}", path.display()))?;
+    let file =
+        exr::prelude::read_all_flat_layers_from_file(path).with_context(|| format!("cannot read the mask EXR {}", path.display()))?;
     let mut found = Vec::new();
     for want in names {
         for layer in &file.layer_data {

@@ -65,11 +65,8 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         anyhow::bail!("--out {} is a file; name a folder for the report and plots", args.out.display());
     }
     std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create {}", args.out.display()))?;
-    let scenes = if args.scenes.is_empty() {
-        dof::scene::builtin_names().iter().map(|s| s.to_string()).collect()
-    } else {
-        args.scenes.clone()
-    };
+    let scenes =
+        if args.scenes.is_empty() { dof::scene::builtin_names().iter().map(|s| s.to_string()).collect() } else { args.scenes.clone() };
     let options = EvalOptions {
         scenes,
         methods: args.methods.clone(),
@@ -111,7 +108,9 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     std::fs::write(args.out.join("report.md"), &md)?;
     println!("{md}");
     if !report.grids.is_empty() && dof::eval::plot::ensure_font().is_err() {
-        eprintln!("note: no TrueType font found, so the image grids are written without their labels (install fonts-dejavu-core or set DOF_PLOT_FONT)");
+        eprintln!(
+            "note: no TrueType font found, so the image grids are written without their labels (install fonts-dejavu-core or set DOF_PLOT_FONT)"
+        );
     }
     for (scene, reference, rows) in &report.grids {
         let path = args.out.join(format!("{scene}-grid.png"));

@@ -17,19 +17,29 @@ pub struct InfoArgs {
 }
 
 pub fn run(args: &InfoArgs) -> anyhow::Result<()> {
-    println!("dof {} — kernels: {} entry points, SPIR-V modules {} bytes (source hash {})",
+    println!(
+        "dof {} — kernels: {} entry points, SPIR-V modules {} bytes (source hash {})",
         env!("CARGO_PKG_VERSION"),
         dof_shaders::all_kernels().count(),
         dof::shaders::total_bytes(),
-        &dof::shaders::SOURCE_HASH[..12]);
+        &dof::shaders::SOURCE_HASH[..12]
+    );
     match vulkan::list_devices() {
         Ok(devices) => {
             for d in devices {
                 println!(
                     "vulkan device {}: {} ({}), Vulkan {}, driver {}\n  shared memory {} B, workgroup {} invocations, groups {:?}, subgroup {:?}, max buffer {} MiB, timestamp period {} ns",
-                    d.index, d.name, d.device_type, d.api_version, d.driver,
-                    d.limits.max_shared_bytes, d.limits.max_workgroup_invocations, d.limits.max_workgroup_count,
-                    d.limits.subgroup_size, d.limits.max_buffer_bytes >> 20, d.timestamp_period_ns
+                    d.index,
+                    d.name,
+                    d.device_type,
+                    d.api_version,
+                    d.driver,
+                    d.limits.max_shared_bytes,
+                    d.limits.max_workgroup_invocations,
+                    d.limits.max_workgroup_count,
+                    d.limits.subgroup_size,
+                    d.limits.max_buffer_bytes >> 20,
+                    d.timestamp_period_ns
                 );
             }
         }

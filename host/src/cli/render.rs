@@ -2,19 +2,19 @@
 //! PNG preview beside it.
 
 use anyhow::{Context, bail};
+use dof::aperture::parse_aperture;
 use dof::io::{read_layered_exr, write_exr, write_layered_exr, write_png_preview};
 use dof::layers::RgbImage;
-use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
-use dof::scene::{
-    self, Aperture, AutoOptions, Camera, Focus, LayerOptions, LensSettings, MeshScene, MultiLayerImage, ReferenceOptions, Vec3,
-    GuardBand, MAX_GUARD_BAND, load_gltf, raycast_layers,
-};
 use dof::layers::{LayeredImage, crop_plane};
 use dof::methods::bokeh::{BokehOptions, bokeh};
 use dof::methods::layered::{LayeredOptions, layered};
 use dof::methods::raytrace::{RaytraceOptions, raytrace};
-use dof::aperture::parse_aperture;
 use dof::methods::splat::{Merge, SplatOptions, splat};
+use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
+use dof::scene::{
+    self, Aperture, AutoOptions, Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, MeshScene, MultiLayerImage,
+    ReferenceOptions, Vec3, load_gltf, raycast_layers,
+};
 use dof_shaders::lens::ThinLens;
 use std::path::{Path, PathBuf};
 
@@ -151,10 +151,7 @@ pub struct RenderArgs {
 }
 
 fn parse_vec3(s: &str) -> Result<Vec3, String> {
-    let parts: Vec<f32> = s
-        .split(',')
-        .map(|p| p.trim().parse::<f32>().map_err(|e| format!("`{p}`: {e}")))
-        .collect::<Result<_, _>>()?;
+    let parts: Vec<f32> = s.split(',').map(|p| p.trim().parse::<f32>().map_err(|e| format!("`{p}`: {e}"))).collect::<Result<_, _>>()?;
     match parts[..] {
         [x, y, z] if parts.iter().all(|v| v.is_finite()) => Ok(Vec3::new(x, y, z)),
         _ => Err(format!("expected three finite numbers `x,y,z`, got `{s}`")),
@@ -178,9 +175,15 @@ fn parse_guard_band(s: &str) -> Result<GuardBand, String> {
 fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     // Options a method would otherwise ignore.
     if args.aperture != "circle" && !matches!(args.method, Method::Tiled | Method::Multilayer | Method::Bokeh) {
-        bail!("--aperture {} is supported by the splatting methods and bokeh sprites only; {:?} uses the circle", args.aperture, args.method);
+        bail!(
+            "--aperture {} is supported by the splatting methods and bokeh sprites only; {:?} uses the circle",
+            args.aperture,
+            args.method
+        );
     }
-    if args.max_coc.is_some() && !matches!(args.method, Method::Gather | Method::RingGather | Method::Tiled | Method::Multilayer | Method::Layered) {
+    if args.max_coc.is_some()
+        && !matches!(args.method, Method::Gather | Method::RingGather | Method::Tiled | Method::Multilayer | Method::Layered)
+    {
         bail!("--max-coc caps the blur of gather, ring-gather, tiled, multilayer and layered only; {:?} does not take it", args.method);
     }
     if args.rings != dof::methods::ring_gather::DEFAULT_RINGS && args.method != Method::RingGather {
@@ -189,7 +192,11 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     match (args.max_coc, args.method) {
         (Some(0), _) => bail!("--max-coc is a CoC diameter of at least 1 px, got 0"),
         (Some(d), Method::Gather) if d.div_ceil(2) > dof::methods::gather::MAX_RADIUS => {
-            bail!("--max-coc for gather is at most {} px (its window of radius {} px), got {d}", 2 * dof::methods::gather::MAX_RADIUS, dof::methods::gather::MAX_RADIUS)
+            bail!(
+                "--max-coc for gather is at most {} px (its window of radius {} px), got {d}",
+                2 * dof::methods::gather::MAX_RADIUS,
+                dof::methods::gather::MAX_RADIUS
+            )
         }
         (Some(d), Method::RingGather) if d.div_ceil(2) > dof::methods::ring_gather::MAX_RADIUS => {
             bail!("--max-coc for ring-gather is at most {} px, got {d}", 2 * dof::methods::ring_gather::MAX_RADIUS)
@@ -257,11 +264,7 @@ pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
     }
     check_writable(&out)?;
-    if is_file_scene(&args.scene) {
-        render_file(args, &out)
-    } else {
-        render_builtin(args, &out)
-    }
+    if is_file_scene(&args.scene) { render_file(args, &out) } else { render_builtin(args, &out) }
 }
 
 /// A scene given as a file: a glTF scene (rasterised), or EXR input (the methods that need only the
@@ -286,8 +289,12 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         Method::Layers => {
             write_layered_exr(out, &layers)?;
             let stats = layers.stats();
-            println!("{} layers, {:.3} fragments per pixel, {:.1}% of pixels with more than one", layers.max_layers,
-                stats.fragments_per_pixel(), 100.0 * stats.multi_layer_share());
+            println!(
+                "{} layers, {:.3} fragments per pixel, {:.1}% of pixels with more than one",
+                layers.max_layers,
+                stats.fragments_per_pixel(),
+                100.0 * stats.multi_layer_share()
+            );
             Ok(())
         }
         Method::Reference => bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)"),
@@ -298,7 +305,9 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             let margin = edge_margin(&layers, &lens);
             let padded = layers.extend_edges(margin)?;
             if margin > 0 {
-                println!("edge policy: the image's edge pixels extended by {margin} px on every side (its largest CoC radius, at most {MAX_GUARD_BAND})");
+                println!(
+                    "edge policy: the image's edge pixels extended by {margin} px on every side (its largest CoC radius, at most {MAX_GUARD_BAND})"
+                );
             }
             let (image, depth) = blur(args, &padded, &lens, margin)?;
             let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
@@ -323,13 +332,18 @@ fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens
 
 /// The camera and lens settings of an EXR (it has neither): at the origin looking down -Z with
 /// `yfov` degrees (default 40), the focus and aperture as given (both required).
-pub(crate) fn exr_view(layers: &LayeredImage, focus: Option<f32>, aperture: Option<Aperture>, yfov: Option<f32>) -> anyhow::Result<(Camera, LensSettings)> {
+pub(crate) fn exr_view(
+    layers: &LayeredImage,
+    focus: Option<f32>,
+    aperture: Option<Aperture>,
+    yfov: Option<f32>,
+) -> anyhow::Result<(Camera, LensSettings)> {
     let Some(focus) = focus else {
-        bail!("an EXR carries no lens: give --focus (planar focus distance, in the units of its Z channel) and --f-number or --aperture-radius")
+        bail!(
+            "an EXR carries no lens: give --focus (planar focus distance, in the units of its Z channel) and --f-number or --aperture-radius"
+        )
     };
-    let Some(aperture) = aperture else {
-        bail!("an EXR carries no lens: give --f-number or --aperture-radius (with --focus)")
-    };
+    let Some(aperture) = aperture else { bail!("an EXR carries no lens: give --f-number or --aperture-radius (with --focus)") };
     let yfov = yfov.unwrap_or(40.0).to_radians();
     let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), yfov, layers.width, layers.height);
     let mut settings = LensSettings::photographic(focus, 8.0);
@@ -371,24 +385,39 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) 
             let ms: f64 = out.times.iter().map(|t| t.ms).sum();
             println!(
                 "ring gather on {}: {} rings, {} samples a half-resolution pixel, radius cap {} px; {ms:.2} ms in kernels",
-                b.device_name(), options.rings, out.samples, options.max_radius
+                b.device_name(),
+                options.rings,
+                out.samples,
+                options.max_radius
             );
             out.image
         }
         Method::Bokeh => {
-            let options = BokehOptions { lum_threshold: args.lum_threshold, capacity: args.sprites, aperture: parse_aperture(&args.aperture)?, ..Default::default() };
+            let options = BokehOptions {
+                lum_threshold: args.lum_threshold,
+                capacity: args.sprites,
+                aperture: parse_aperture(&args.aperture)?,
+                ..Default::default()
+            };
             let out = bokeh(b.as_mut(), &front, &depth, lens, &options)?;
             let ms: f64 = out.times.iter().map(|t| t.ms).sum();
             println!(
                 "bokeh sprites on {}: {} bright pixels detected, {} drawn as sprites{}, over a gather of radius {} px; {ms:.2} ms in kernels",
-                b.device_name(), out.detected, out.detected - out.overflow,
-                if out.overflow > 0 { format!(" ({} beyond the capacity of {} left in the blur)", out.overflow, options.capacity) } else { String::new() },
+                b.device_name(),
+                out.detected,
+                out.detected - out.overflow,
+                if out.overflow > 0 {
+                    format!(" ({} beyond the capacity of {} left in the blur)", out.overflow, options.capacity)
+                } else {
+                    String::new()
+                },
                 out.blur_radius
             );
             out.image
         }
         Method::Layered => {
-            let mut options = LayeredOptions { cascaded: !args.no_cascade, layers_per_doubling: args.layers_per_doubling, ..Default::default() };
+            let mut options =
+                LayeredOptions { cascaded: !args.no_cascade, layers_per_doubling: args.layers_per_doubling, ..Default::default() };
             if let Some(d) = args.max_coc {
                 options.max_coc = d as f32;
             }
@@ -397,8 +426,15 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) 
             let p = &out.plan;
             println!(
                 "layered DoF on {}: {} layers for CoC {:.1} to {:.1} px ({} used, {} empty and skipped), {} blurs ({}), widest radius {} px, {ms:.2} ms in kernels{}",
-                b.device_name(), p.cocs.len(), p.coc_range.0, p.coc_range.1, p.used_layers(), p.cocs.len() - p.used_layers(),
-                out.blurs, if options.cascaded { "cascaded" } else { "one per layer" }, out.widest_radius,
+                b.device_name(),
+                p.cocs.len(),
+                p.coc_range.0,
+                p.coc_range.1,
+                p.used_layers(),
+                p.cocs.len() - p.used_layers(),
+                out.blurs,
+                if options.cascaded { "cascaded" } else { "one per layer" },
+                out.widest_radius,
                 if p.capped > 0 { format!("; {} fragments beyond the {} px cap", p.capped, options.max_coc) } else { String::new() }
             );
             out.image
@@ -409,7 +445,11 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) 
             let ms: f64 = traced.times.iter().map(|t| t.ms).sum();
             println!(
                 "ray tracing on {}: {} rays per pixel, {}-level hierarchy, {ms:.2} ms in kernels; {} of {} rays ({:.2}%) hit no stored fragment",
-                b.device_name(), options.spp, traced.levels, traced.missed_rays, traced.rays,
+                b.device_name(),
+                options.spp,
+                traced.levels,
+                traced.missed_rays,
+                traced.rays,
                 100.0 * traced.missed_rays as f64 / traced.rays.max(1) as f64
             );
             traced.image
@@ -458,8 +498,13 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let lens = settings.thin_lens(&camera)?;
     println!(
         "{}: {}x{}, f = {:.1} mm, aperture radius {:.2} mm, focus {:.3}, far-field CoC {:.1} px",
-        builtin.name, camera.width, camera.height, lens.focal_length * 1e3, lens.aperture_radius * 1e3,
-        lens.focus_distance, lens.far_limit_px()
+        builtin.name,
+        camera.width,
+        camera.height,
+        lens.focal_length * 1e3,
+        lens.aperture_radius * 1e3,
+        lens.focus_distance,
+        lens.far_limit_px()
     );
     let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, ..Default::default() };
     let layered = raycast_layers(&builtin.scene, &camera, &lens, &options)?;
@@ -470,7 +515,9 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         }
         Method::Reference => {
             let reference = match args.samples {
-                Some(spp) => scene::reference(&builtin.scene, &camera, &lens, &ReferenceOptions { spp, progress: true, ..Default::default() })?,
+                Some(spp) => {
+                    scene::reference(&builtin.scene, &camera, &lens, &ReferenceOptions { spp, progress: true, ..Default::default() })?
+                }
                 None => scene::reference_auto(&builtin.scene, &camera, &lens, &AutoOptions { progress: true, ..Default::default() })?,
             };
             println!(
@@ -509,8 +556,11 @@ fn render_layers(args: &RenderArgs, out: &Path, layered: &MultiLayerImage, lens:
         let (w, wo) = (layered.with_mask, layered.without_mask);
         println!(
             "layers: {:.3} fragments per pixel, {:.1}% of pixels multi-layer (without the disocclusion buffer: {:.3}, {:.1}%); buffer covers {:.1}% of pixels",
-            w.fragments_per_pixel(), 100.0 * w.multi_layer_share(), wo.fragments_per_pixel(),
-            100.0 * wo.multi_layer_share(), 100.0 * layered.mask_share()
+            w.fragments_per_pixel(),
+            100.0 * w.multi_layer_share(),
+            wo.fragments_per_pixel(),
+            100.0 * wo.multi_layer_share(),
+            100.0 * layered.mask_share()
         );
         let (front, _) = layered.front();
         write_png_preview(out.with_extension("png"), &front, args.exposure)?;
@@ -520,7 +570,11 @@ fn render_layers(args: &RenderArgs, out: &Path, layered: &MultiLayerImage, lens:
     if layered.margin > 0 {
         let (w, h) = (layered.layers.width, layered.layers.height);
         let frame = (w - 2 * layered.margin) as f64 * (h - 2 * layered.margin) as f64;
-        println!("guard band: {} px beyond every edge, the method runs on {w}x{h} ({:.2}x the frame's pixels)", layered.margin, w as f64 * h as f64 / frame);
+        println!(
+            "guard band: {} px beyond every edge, the method runs on {w}x{h} ({:.2}x the frame's pixels)",
+            layered.margin,
+            w as f64 * h as f64 / frame
+        );
     }
     let (image, _) = blur(args, &layered.layers, lens, layered.margin)?;
     write_with_planes(args, out, &image, layered, lens)
@@ -549,8 +603,14 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let (camera, lens, near) = gltf_view(args, &mesh)?;
     println!(
         "{}: {} triangles, {}x{}, f = {:.1} mm, aperture radius {:.2} mm, focus {:.3}, near plane {near}, far-field CoC {:.1} px",
-        args.scene, mesh.triangles.len(), camera.width, camera.height, lens.focal_length * 1e3, lens.aperture_radius * 1e3,
-        lens.focus_distance, lens.far_limit_px()
+        args.scene,
+        mesh.triangles.len(),
+        camera.width,
+        camera.height,
+        lens.focal_length * 1e3,
+        lens.aperture_radius * 1e3,
+        lens.focus_distance,
+        lens.far_limit_px()
     );
     let mut b = backend(args.backend)?;
     let raster = mesh.raster();
@@ -562,7 +622,14 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         Method::Pinhole => write_with_planes(args, out, &peeled.image.front().0, &peeled.image, &lens),
         Method::Reference => {
             let samples = args.samples.unwrap_or(256);
-            let acc = accumulate(b.as_mut(), &raster, &camera, &lens, near, &AccumulateOptions { samples, progress: true, ..Default::default() })?;
+            let acc = accumulate(
+                b.as_mut(),
+                &raster,
+                &camera,
+                &lens,
+                near,
+                &AccumulateOptions { samples, progress: true, ..Default::default() },
+            )?;
             let ms: f64 = acc.times.iter().map(|t| t.ms).sum();
             println!("accumulation buffer on {}: {samples} renders, {ms:.2} ms", b.device_name());
             write_with_planes(args, out, &acc.image, &peeled.image, &lens)

@@ -3,11 +3,11 @@
 //! exported to glTF: rasterised by depth peeling and rendered by the accumulation buffer, against
 //! the exact ray-cast layers and reference.
 
+use anyhow::Context;
 use dof::io::write_png_preview;
 use dof::layers::RgbImage;
 use dof::metrics::compare;
 use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
-use anyhow::Context;
 use dof::scene::{
     AutoOptions, BuiltinScene, ExportOptions, LayerOptions, MitsubaExport, MitsubaOptions, MultiLayerImage, ReferenceOptions, builtin,
     builtin_names, export_glb, export_metadata, export_mitsuba, load_gltf_slice, raycast_layers, reference, reference_auto,
@@ -79,9 +79,17 @@ pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
         let (w, wo) = (ml.with_mask, ml.without_mask);
         println!(
             "{name} ({}x{}): {}\n  far-field CoC {:.1} px; guard band {} px; layers (L = 4, umbra threshold): {:.3} fragments/px, {:.1}% multi-layer with the disocclusion buffer ({:.1}% of pixels), {:.3} and {:.1}% without; ray cast in {:.2?}",
-            scene.camera.width, scene.camera.height, scene.description, lens.far_limit_px(), ml.margin,
-            w.fragments_per_pixel(), 100.0 * w.multi_layer_share(), 100.0 * ml.mask_share(),
-            wo.fragments_per_pixel(), 100.0 * wo.multi_layer_share(), start.elapsed()
+            scene.camera.width,
+            scene.camera.height,
+            scene.description,
+            lens.far_limit_px(),
+            ml.margin,
+            w.fragments_per_pixel(),
+            100.0 * w.multi_layer_share(),
+            100.0 * ml.mask_share(),
+            wo.fragments_per_pixel(),
+            100.0 * wo.multi_layer_share(),
+            start.elapsed()
         );
         if let Some(dir) = &args.dump {
             let (front, _) = ml.front();
@@ -101,8 +109,12 @@ pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
             let db = |v: Option<f64>| v.map_or("n/a".into(), |v| format!("{v:.2} dB"));
             println!(
                 "  reference: {} spp, noise {} full frame, {} inside the buffer (required {}){}, {:.1?}",
-                r.spp, db(r.noise_psnr_db), db(r.region_noise_psnr_db), db(r.required_psnr_db),
-                if r.capped { ", sample cap reached" } else { "" }, start.elapsed()
+                r.spp,
+                db(r.noise_psnr_db),
+                db(r.region_noise_psnr_db),
+                db(r.required_psnr_db),
+                if r.capped { ", sample cap reached" } else { "" },
+                start.elapsed()
             );
             if let Some(dir) = &args.dump {
                 write_png_preview(dir.join(format!("{name}-reference.png")), &r.image, 1.0)?;
@@ -164,8 +176,15 @@ fn raster(args: &ScenesArgs, scene: &BuiltinScene, lens: &ThinLens, exact: &Mult
     let same = exact_frame.counts.iter().zip(&peeled_frame.counts).filter(|(a, b)| a == b).count();
     println!(
         "  glTF ({} triangles, {:.1} KiB), depth-peeled on {} in {:.2?} ({} passes): {:.3} fragments/px, {:.1}% multi-layer with the buffer, {:.3} and {:.1}% without; {:.2}% of pixels keep as many layers as the exact image",
-        mesh.triangles.len(), glb.len() as f64 / 1024.0, b.device_name(), start.elapsed(), peeled.passes,
-        w.fragments_per_pixel(), 100.0 * w.multi_layer_share(), wo.fragments_per_pixel(), 100.0 * wo.multi_layer_share(),
+        mesh.triangles.len(),
+        glb.len() as f64 / 1024.0,
+        b.device_name(),
+        start.elapsed(),
+        peeled.passes,
+        w.fragments_per_pixel(),
+        100.0 * w.multi_layer_share(),
+        wo.fragments_per_pixel(),
+        100.0 * wo.multi_layer_share(),
         100.0 * same as f64 / exact_frame.counts.len().max(1) as f64
     );
     if args.accumulation.is_empty() {
@@ -177,11 +196,20 @@ fn raster(args: &ScenesArgs, scene: &BuiltinScene, lens: &ThinLens, exact: &Mult
     println!("  exact reference: {} spp in {:.1?}", exact_ref.spp, start.elapsed());
     for &n in &args.accumulation {
         let start = Instant::now();
-        let acc = accumulate(b.as_mut(), &raster, &scene.camera, lens, near, &AccumulateOptions { samples: n, progress: true, ..Default::default() })?;
+        let acc = accumulate(
+            b.as_mut(),
+            &raster,
+            &scene.camera,
+            lens,
+            near,
+            &AccumulateOptions { samples: n, progress: true, ..Default::default() },
+        )?;
         let e = compare(&acc.image, &exact_ref.image, Some(&exact.mask))?;
         println!(
             "  accumulation buffer, {n} renders: PSNR {:.2} dB full frame, {:.2} dB in the disocclusion buffer ({:.1?})",
-            e.psnr_db, e.psnr_masked_db.unwrap_or(f64::NAN), start.elapsed()
+            e.psnr_db,
+            e.psnr_masked_db.unwrap_or(f64::NAN),
+            start.elapsed()
         );
     }
     Ok(())

@@ -7,10 +7,13 @@
 
 use super::render::BackendArg;
 use dof::backend::{Backend, BufferId, CpuBackend, VulkanBackend, VulkanOptions};
-use dof::frame::{BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, SplatContext, SplatContextDesc};
-use dof::methods::ring_gather::{MAX_RINGS, RingGatherOptions};
+use dof::frame::{
+    BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, SplatContext,
+    SplatContextDesc,
+};
 use dof::methods::bokeh::BokehOptions;
 use dof::methods::buffers::{read_rgb, slot_words};
+use dof::methods::ring_gather::{MAX_RINGS, RingGatherOptions};
 use dof::methods::splat::{Merge, SplatOptions};
 use dof::stress::{noise_with_sky, test_lens};
 use rand::{Rng, SeedableRng};
@@ -102,7 +105,10 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
         tiled: SplatContext::new(b, &splat(Merge::X2))?,
         gather: GatherContext::new(b, &GatherContextDesc::new(max, max, MAX_LAYERS))?,
         ring_gather: RingGatherContext::new(b, &RingGatherContextDesc::new(max, max, MAX_LAYERS))?,
-        bokeh: BokehContext::new(b, &BokehContextDesc::new(max, max, MAX_LAYERS, BokehOptions { lum_threshold: 0.5, ..Default::default() }))?,
+        bokeh: BokehContext::new(
+            b,
+            &BokehContextDesc::new(max, max, MAX_LAYERS, BokehOptions { lum_threshold: 0.5, ..Default::default() }),
+        )?,
     };
     let mut rng = Pcg64::seed_from_u64(args.seed);
     let warm_up = (args.frames / 10).max(8);
@@ -156,7 +162,10 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
         if frame % 16 == 0 {
             let out = read_rgb(b, bufs[2], w, h)?;
             if let Some(p) = out.data.iter().position(|c| c.iter().any(|v| !v.is_finite())) {
-                anyhow::bail!("frame {frame} ({method:?}, {w}x{h}, {layers} layers, aperture {aperture}): pixel {p} is not finite: {:?}", out.data[p]);
+                anyhow::bail!(
+                    "frame {frame} ({method:?}, {w}x{h}, {layers} layers, aperture {aperture}): pixel {p} is not finite: {:?}",
+                    out.data[p]
+                );
             }
             checked += 1;
         }

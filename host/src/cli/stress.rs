@@ -15,7 +15,8 @@ pub struct StressArgs {
 
 pub fn run(args: &StressArgs) -> anyhow::Result<()> {
     let mut backends = backends(args.backend, false)?;
-    let methods: Vec<_> = registry().into_iter().filter(|m| args.methods.is_empty() || args.methods.iter().any(|n| n == m.name())).collect();
+    let methods: Vec<_> =
+        registry().into_iter().filter(|m| args.methods.is_empty() || args.methods.iter().any(|n| n == m.name())).collect();
     if methods.is_empty() {
         anyhow::bail!("no method matches {:?}", args.methods);
     }

@@ -75,16 +75,31 @@ pub fn error_vs_time(report: &Report, scene: &str) -> Option<Figure> {
     let mut series = Vec::new();
     for (method, backend) in groups(timed.iter().map(|r| (r.method.as_str(), r.backend.as_str()))) {
         let points = timed.iter().filter(|r| r.method == method && r.backend == backend).map(|r| (r.time_ms, error(r))).collect();
-        series.push(Series { name: format!("{method} ({backend})"), colour: method_colour(report, method), mark: Mark::Points(shape(backend)), points });
+        series.push(Series {
+            name: format!("{method} ({backend})"),
+            colour: method_colour(report, method),
+            mark: Mark::Points(shape(backend)),
+            points,
+        });
     }
     let (fastest, slowest) = timed.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), r| (lo.min(r.time_ms), hi.max(r.time_ms)));
     for r in records.iter().filter(|r| r.time_ms <= 0.0 && error(r).is_finite()) {
         let name = format!("{} {} (no device time)", r.method, r.setting).replace(" - ", " ");
-        series.push(Series { name, colour: method_colour(report, &r.method), mark: Mark::Dashed, points: vec![(fastest, error(r)), (slowest, error(r))] });
+        series.push(Series {
+            name,
+            colour: method_colour(report, &r.method),
+            mark: Mark::Dashed,
+            points: vec![(fastest, error(r)), (slowest, error(r))],
+        });
     }
     for (i, backend) in groups(timed.iter().map(|r| ("", r.backend.as_str()))).into_iter().map(|g| g.1).enumerate() {
         let points: Vec<(f64, f64)> = timed.iter().filter(|r| r.backend == backend).map(|r| (r.time_ms, error(r))).collect();
-        series.push(Series { name: format!("Pareto front ({backend})"), colour: if i == 0 { [60, 60, 60] } else { [150, 150, 150] }, mark: Mark::Dashed, points: pareto_front(&points) });
+        series.push(Series {
+            name: format!("Pareto front ({backend})"),
+            colour: if i == 0 { [60, 60, 60] } else { [150, 150, 150] },
+            mark: Mark::Dashed,
+            points: pareto_front(&points),
+        });
     }
     Some(Figure {
         title: format!("{scene}: error against time"),
@@ -106,7 +121,8 @@ pub fn tile_size(report: &Report, scene: &str) -> Option<Figure> {
     // The merge level with the most distinct tile sizes is the tile sweep.
     let steps_of = |r: &Record| figure(r, "merge_steps").unwrap_or(0.0);
     let distinct_tiles = |steps: f64| {
-        let mut tiles: Vec<u64> = tiled.iter().filter(|r| steps_of(r) == steps).filter_map(|r| figure(r, "tile_px")).map(|t| t as u64).collect();
+        let mut tiles: Vec<u64> =
+            tiled.iter().filter(|r| steps_of(r) == steps).filter_map(|r| figure(r, "tile_px")).map(|t| t as u64).collect();
         tiles.sort_unstable();
         tiles.dedup();
         tiles.len()
@@ -119,10 +135,18 @@ pub fn tile_size(report: &Report, scene: &str) -> Option<Figure> {
     let series = groups(swept.iter().map(|r| (r.method.as_str(), r.backend.as_str())))
         .into_iter()
         .map(|(method, backend)| {
-            let mut points: Vec<(f64, f64)> =
-                swept.iter().filter(|r| r.method == method && r.backend == backend).filter_map(|r| Some((figure(r, "tile_px")?, r.time_ms))).collect();
+            let mut points: Vec<(f64, f64)> = swept
+                .iter()
+                .filter(|r| r.method == method && r.backend == backend)
+                .filter_map(|r| Some((figure(r, "tile_px")?, r.time_ms)))
+                .collect();
             points.sort_by(|a, b| a.0.total_cmp(&b.0));
-            Series { name: format!("{method} ({backend})"), colour: method_colour(report, method), mark: Mark::Line(shape(backend)), points }
+            Series {
+                name: format!("{method} ({backend})"),
+                colour: method_colour(report, method),
+                mark: Mark::Line(shape(backend)),
+                points,
+            }
         })
         .collect();
     let merge = match steps as u32 {
@@ -179,7 +203,12 @@ pub fn max_coc(report: &Report) -> Option<(String, Figure)> {
         .map(|(method, backend)| {
             let points = sweep.iter().filter(|r| r.method == method && r.backend == backend).map(|r| (r.max_coc_px, r.time_ms)).collect();
             let setting = sweep.iter().find(|r| r.method == method).map_or("", |r| r.setting.as_str());
-            Series { name: format!("{method} {setting} ({backend})"), colour: method_colour(report, method), mark: Mark::Line(shape(backend)), points }
+            Series {
+                name: format!("{method} {setting} ({backend})"),
+                colour: method_colour(report, method),
+                mark: Mark::Line(shape(backend)),
+                points,
+            }
         })
         .collect();
     let figure = Figure {
@@ -198,7 +227,11 @@ pub fn max_coc(report: &Report) -> Option<(String, Figure)> {
 pub fn write_all(report: &Report, dir: &Path) -> Result<Vec<PathBuf>> {
     let mut figures: Vec<(String, Figure)> = Vec::new();
     for s in &report.scenes {
-        let named = [("error-vs-time", error_vs_time(report, &s.name)), ("tile-size", tile_size(report, &s.name)), ("list-lengths", list_lengths(report, &s.name))];
+        let named = [
+            ("error-vs-time", error_vs_time(report, &s.name)),
+            ("tile-size", tile_size(report, &s.name)),
+            ("list-lengths", list_lengths(report, &s.name)),
+        ];
         figures.extend(named.into_iter().filter_map(|(kind, f)| Some((format!("{}-{kind}", s.name), f?))));
     }
     if let Some((scene, f)) = max_coc(report) {

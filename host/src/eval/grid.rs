@@ -13,7 +13,7 @@
 
 use super::plot::{FONT, ensure_font};
 use crate::error::{Error, Result};
-use crate::io::tonemap::{tonemap_image, to_u8};
+use crate::io::tonemap::{to_u8, tonemap_image};
 use crate::layers::RgbImage;
 use plotters::prelude::*;
 use std::path::Path;
@@ -55,7 +55,11 @@ pub fn compose(reference: &RgbImage, rows: &[(String, RgbImage)]) -> Result<Grid
     if let Some((label, image)) = rows.iter().find(|(_, i)| (i.width, i.height) != (reference.width, reference.height)) {
         return Err(Error::InvalidArgument(format!(
             "grid row `{}` is {}x{}, the reference {}x{}",
-            label.replace('\n', " "), image.width, image.height, w, h
+            label.replace('\n', " "),
+            image.width,
+            image.height,
+            w,
+            h
         )));
     }
     let labelled = ensure_font().is_ok();
@@ -78,11 +82,8 @@ pub fn compose(reference: &RgbImage, rows: &[(String, RgbImage)]) -> Result<Grid
     blit(0, 1, &vec![[0.0; 3]; w * h]);
     for (i, (_, image)) in rows.iter().enumerate() {
         let got = tonemap_image(image, 1.0);
-        let errors: Vec<[f32; 3]> = got
-            .iter()
-            .zip(&want)
-            .map(|(g, r)| heat(4.0 * (0..3).map(|c| (g[c] - r[c]).abs()).sum::<f32>() / 3.0))
-            .collect();
+        let errors: Vec<[f32; 3]> =
+            got.iter().zip(&want).map(|(g, r)| heat(4.0 * (0..3).map(|c| (g[c] - r[c]).abs()).sum::<f32>() / 3.0)).collect();
         blit(i + 1, 0, &got);
         blit(i + 1, 1, &errors);
     }
@@ -97,10 +98,20 @@ pub fn compose(reference: &RgbImage, rows: &[(String, RgbImage)]) -> Result<Grid
 
 /// The largest size up to `size` at which `text` fits `width` px (at least 8).
 fn fitting<DB: DrawingBackend>(area: &DrawingArea<DB, plotters::coord::Shift>, text: &str, size: u32, width: usize) -> u32 {
-    (8..=size).rev().find(|&s| area.estimate_text_size(text, &TextStyle::from((FONT, s).into_font())).is_ok_and(|(tw, _)| tw as usize <= width)).unwrap_or(8)
+    (8..=size)
+        .rev()
+        .find(|&s| area.estimate_text_size(text, &TextStyle::from((FONT, s).into_font())).is_ok_and(|(tw, _)| tw as usize <= width))
+        .unwrap_or(8)
 }
 
-fn draw_labels(rgb: &mut [u8], size: (usize, usize), labels: &[String], row_tops: &[usize], column_lefts: [usize; 2], w: usize) -> std::result::Result<(), String> {
+fn draw_labels(
+    rgb: &mut [u8],
+    size: (usize, usize),
+    labels: &[String],
+    row_tops: &[usize],
+    column_lefts: [usize; 2],
+    w: usize,
+) -> std::result::Result<(), String> {
     let root = BitMapBackend::with_buffer(rgb, (size.0 as u32, size.1 as u32)).into_drawing_area();
     let fail = |e: DrawingAreaErrorKind<_>| e.to_string();
     let ink = RGBColor(235, 235, 235);

@@ -10,8 +10,8 @@ use crate::methods::layered::{LayeredOptions, layered};
 use crate::methods::raytrace::{RaytraceOptions, raytrace};
 use crate::methods::ring_gather::{DEFAULT_RINGS, RingGatherOptions, ring_gather};
 use crate::methods::splat::{Merge, SplatOptions, splat};
-use std::collections::BTreeMap;
 use dof_shaders::lens::ThinLens;
+use std::collections::BTreeMap;
 
 /// What every method may use: the scene's multi-layer image and its front layer, and the lens.
 /// The images cover the frame and `margin` pixels of guard band on every side; a method's output
@@ -108,10 +108,7 @@ impl Method for Gather {
     }
     fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput> {
         let out = gather(backend, &input.front, &input.depth, &input.lens, setting.value)?;
-        let figures = BTreeMap::from([
-            ("radius_px".to_string(), out.radius as f64),
-            ("buffer_bytes".to_string(), out.buffer_bytes as f64),
-        ]);
+        let figures = BTreeMap::from([("radius_px".to_string(), out.radius as f64), ("buffer_bytes".to_string(), out.buffer_bytes as f64)]);
         Ok(MethodOutput { image: out.image, stages: out.times, figures, list_histogram: Vec::new() })
     }
 }
@@ -177,7 +174,13 @@ impl Method for Splat {
         // Single-layer splatting shares the pipeline; it runs merged only (its unmerged lists cost
         // lavapipe 5.8 s a run on `simple`, like the multi-layer method's, and three minutes of the
         // full evaluation), the merge and tile sweeps are the multi-layer method's.
-        let points: &[usize] = if !self.multi_layer { &[2] } else if quick { &[0, 2] } else { &[0, 1, 2, 3, 4] };
+        let points: &[usize] = if !self.multi_layer {
+            &[2]
+        } else if quick {
+            &[0, 2]
+        } else {
+            &[0, 1, 2, 3, 4]
+        };
         points.iter().map(|&i| splat_setting(i)).collect()
     }
     /// The multi-layer method, merged as a renderer would run it (unmerged lists grow with the
@@ -309,5 +312,10 @@ pub fn registry() -> Vec<Box<dyn Method>> {
         Box::new(Pinhole),
         Box::new(Gather),
         Box::new(RingGather),
-        Box::new(Bokeh), Box::new(Splat { multi_layer: false }), Box::new(Splat { multi_layer: true }), Box::new(Layered), Box::new(Raytrace)]
+        Box::new(Bokeh),
+        Box::new(Splat { multi_layer: false }),
+        Box::new(Splat { multi_layer: true }),
+        Box::new(Layered),
+        Box::new(Raytrace),
+    ]
 }

@@ -18,16 +18,16 @@ pub mod sweep;
 
 use crate::backend::Backend;
 use crate::error::{Error, Result};
-use crate::metrics::compare;
 use crate::layers::RgbImage;
+use crate::metrics::compare;
 use crate::raster::{AccumulateOptions, accumulate, peel_layers};
 use crate::scene::{
     AutoOptions, LayerOptions, MultiLayerImage, ReferenceOptions, builtin, load_gltf, raycast_layers, reference, reference_auto,
 };
+use crate::timing::RunTimes;
 use dof_shaders::lens::ThinLens;
 use methods::{Method, MethodInput, MethodOutput, Setting, registry};
 use report::{BackendInfo, Record, Report, SceneInfo};
-use crate::timing::RunTimes;
 
 pub struct EvalOptions {
     pub scenes: Vec<String>,
@@ -50,7 +50,13 @@ pub fn default_coc_sweep(quick: bool) -> Vec<f64> {
 
 /// One method at one setting on one backend: a warm-up run, then `runs` timed runs. Returns the
 /// times and the last run's output.
-pub fn timed(method: &dyn Method, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting, runs: usize) -> Result<(RunTimes, MethodOutput)> {
+pub fn timed(
+    method: &dyn Method,
+    backend: &mut dyn Backend,
+    input: &MethodInput,
+    setting: &Setting,
+    runs: usize,
+) -> Result<(RunTimes, MethodOutput)> {
     let mut times = RunTimes::default();
     let mut output = method.run(backend, input, setting)?;
     for _ in 0..runs {
@@ -75,7 +81,8 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
     let infos = backends.iter().map(|b| BackendInfo { kind: b.kind().to_string(), device: b.device_name(), driver: b.driver() }).collect();
     let mut report = Report::new(options.quick, options.runs, infos);
     for scene_arg in &options.scenes {
-        let prepared = if is_gltf(scene_arg) { prepare_gltf(scene_arg, options, backends[0].as_mut())? } else { prepare_builtin(scene_arg, options)? };
+        let prepared =
+            if is_gltf(scene_arg) { prepare_gltf(scene_arg, options, backends[0].as_mut())? } else { prepare_builtin(scene_arg, options)? };
         let gltf = is_gltf(scene_arg);
         let Prepared { name, width, height, lens, ml, reference: exact, reference_spp, reference_noise_psnr_db } = prepared;
         report.scenes.push(SceneInfo {
@@ -148,7 +155,8 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
             .filter(|m| options.methods.is_empty() || options.methods.iter().any(|n| n == m.name()))
             .map(|m| m.as_ref())
             .collect();
-        let sweep_options = sweep::SweepOptions { targets: options.coc_sweep.clone(), runs: options.runs.min(3), progress: options.progress };
+        let sweep_options =
+            sweep::SweepOptions { targets: options.coc_sweep.clone(), runs: options.runs.min(3), progress: options.progress };
         report.coc_sweep = sweep::coc_sweep(first, &scene, &chosen, backends, &sweep_options)?;
     }
     Ok(report)
@@ -213,8 +221,24 @@ fn prepare_gltf(path: &str, options: &EvalOptions, backend: &mut dyn Backend) ->
     let raster = mesh.raster();
     let ml = peel_layers(backend, &raster, &camera, &lens, near, &LayerOptions::default())?.image;
     let samples = if options.quick { 64 } else { 256 };
-    let acc = accumulate(backend, &raster, &camera, &lens, near, &AccumulateOptions { samples, progress: options.progress, ..Default::default() })?;
+    let acc = accumulate(
+        backend,
+        &raster,
+        &camera,
+        &lens,
+        near,
+        &AccumulateOptions { samples, progress: options.progress, ..Default::default() },
+    )?;
     let stem = std::path::Path::new(path).file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
     let name = format!("{stem}-gltf");
-    Ok(Prepared { name, width: camera.width, height: camera.height, lens, ml, reference: acc.image, reference_spp: samples, reference_noise_psnr_db: None })
+    Ok(Prepared {
+        name,
+        width: camera.width,
+        height: camera.height,
+        lens,
+        ml,
+        reference: acc.image,
+        reference_spp: samples,
+        reference_noise_psnr_db: None,
+    })
 }

@@ -26,7 +26,10 @@ pub enum Mark {
     /// A dashed line without markers (the Pareto front).
     Dashed,
     /// Bars of width 1/`of` at offset `slot` inside each unit of x (grouped histogram bars).
-    Bars { slot: usize, of: usize },
+    Bars {
+        slot: usize,
+        of: usize,
+    },
 }
 
 #[derive(Clone, Debug)]
@@ -153,7 +156,11 @@ fn tick(v: f64, axis: Axis, categories: &[String]) -> String {
         Axis::Log => 10f64.powf(v),
         Axis::Categories => {
             // Label the slot centres' integer part; the mesh puts ticks at integers and half-integers.
-            return if (v - v.floor() - 0.5).abs() < 1e-6 { categories.get(v.floor() as usize).cloned().unwrap_or_default() } else { String::new() };
+            return if (v - v.floor() - 0.5).abs() < 1e-6 {
+                categories.get(v.floor() as usize).cloned().unwrap_or_default()
+            } else {
+                String::new()
+            };
         }
         Axis::Linear => v,
     };

@@ -60,13 +60,19 @@ pub fn ratios(options: &RatioOptions, backends: &mut [Box<dyn Backend>]) -> Resu
         let scene = builtin(name)?.with_size(options.width, options.height);
         let lens = scene.thin_lens()?;
         let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default())?;
-        let exact = reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: options.spp, progress: options.progress, ..Default::default() })?;
+        let exact = reference(
+            &scene.scene,
+            &scene.camera,
+            &lens,
+            &ReferenceOptions { spp: options.spp, progress: options.progress, ..Default::default() },
+        )?;
         let input = MethodInput::new(ml.layers.clone(), lens, ml.margin);
         for b in backends.iter_mut() {
             let b = b.as_mut();
             // One method at its sweep setting: time and error.
             let mut measure = |method: &dyn Method| -> Result<Timed> {
-                let setting = method.sweep_setting().ok_or_else(|| Error::InvalidArgument(format!("{} has no sweep setting", method.name())))?;
+                let setting =
+                    method.sweep_setting().ok_or_else(|| Error::InvalidArgument(format!("{} has no sweep setting", method.name())))?;
                 let (times, output) = timed(method, b, &input, &setting, options.runs)?;
                 let error = compare(&input.crop(&output.image), &exact.image, Some(&ml.mask))?;
                 let t = Timed {
@@ -77,14 +83,29 @@ pub fn ratios(options: &RatioOptions, backends: &mut [Box<dyn Backend>]) -> Resu
                     psnr_masked_db: error.psnr_masked_db,
                 };
                 if options.progress {
-                    eprintln!("{name} {} {} ({}): {:.1} ms, {:.2} dB ({:.2} dB in the region)", b.kind(), method.name(), t.setting, t.time_ms, t.psnr_db, t.psnr_masked_db.unwrap_or(f64::NAN));
+                    eprintln!(
+                        "{name} {} {} ({}): {:.1} ms, {:.2} dB ({:.2} dB in the region)",
+                        b.kind(),
+                        method.name(),
+                        t.setting,
+                        t.time_ms,
+                        t.psnr_db,
+                        t.psnr_masked_db.unwrap_or(f64::NAN)
+                    );
                 }
                 Ok(t)
             };
             let multilayer = measure(&Splat { multi_layer: true })?;
             let ring_gather = measure(&RingGather)?;
             let ratio = multilayer.time_ms / ring_gather.time_ms;
-            rows.push(RatioRow { scene: name.clone(), backend: b.kind().to_string(), device: b.device_name(), multilayer, ring_gather, ratio });
+            rows.push(RatioRow {
+                scene: name.clone(),
+                backend: b.kind().to_string(),
+                device: b.device_name(),
+                multilayer,
+                ring_gather,
+                ratio,
+            });
         }
     }
     Ok(rows)
@@ -114,7 +135,9 @@ pub fn to_markdown(rows: &[RatioRow], width: u32, height: u32) -> String {
     }
     let above: Vec<&RatioRow> = rows.iter().filter(|r| r.ratio > GOAL).collect();
     if !above.is_empty() {
-        md.push_str("\nWhere the multi-layer frame's time goes, in the rows above the goal (three costliest stages, share of the frame):\n\n");
+        md.push_str(
+            "\nWhere the multi-layer frame's time goes, in the rows above the goal (three costliest stages, share of the frame):\n\n",
+        );
         for r in above {
             let mut stages: Vec<(&String, &f64)> = r.multilayer.stages_ms.iter().collect();
             stages.sort_by(|a, b| b.1.total_cmp(a.1));

@@ -49,7 +49,12 @@ pub struct LensInfo {
 
 impl From<&dof_shaders::lens::ThinLens> for LensInfo {
     fn from(l: &dof_shaders::lens::ThinLens) -> Self {
-        LensInfo { focal_length: l.focal_length, aperture_radius: l.aperture_radius, focus_distance: l.focus_distance, pixels_per_unit: l.pixels_per_unit }
+        LensInfo {
+            focal_length: l.focal_length,
+            aperture_radius: l.aperture_radius,
+            focus_distance: l.focus_distance,
+            pixels_per_unit: l.pixels_per_unit,
+        }
     }
 }
 
@@ -122,11 +127,21 @@ pub struct SweepRecord {
 /// `splat` (tile counts, compaction, allocation, binning and their scans), `sort`, `apply`
 /// (accumulation, the gather, tracing, layered DoF's blurs and composition, the sprite draw).
 pub fn table_column(label: &str) -> &'static str {
-    if label.starts_with("splat/pack") || label.starts_with("splat/merge") || label == "raytrace/hierarchy" || label == "layered/matte" || label == "bokeh/detect" {
+    if label.starts_with("splat/pack")
+        || label.starts_with("splat/merge")
+        || label == "raytrace/hierarchy"
+        || label == "layered/matte"
+        || label == "bokeh/detect"
+    {
         "merge"
     } else if label.starts_with("sort/") {
         "sort"
-    } else if label.starts_with("splat/accumulate") || label == "gather" || label == "raytrace/trace" || label.starts_with("layered/") || label == "bokeh/draw" {
+    } else if label.starts_with("splat/accumulate")
+        || label == "gather"
+        || label == "raytrace/trace"
+        || label.starts_with("layered/")
+        || label == "bokeh/draw"
+    {
         "apply"
     } else {
         "splat"
@@ -146,7 +161,13 @@ impl Record {
     pub fn line(&self) -> String {
         format!(
             "{} / {} {} on {}: {:.3} ms, {} dB ({} dB in the occlusion region)",
-            self.scene, self.method, self.setting, self.backend, self.time_ms, db(Some(self.psnr_db)), db(self.psnr_masked_db)
+            self.scene,
+            self.method,
+            self.setting,
+            self.backend,
+            self.time_ms,
+            db(Some(self.psnr_db)),
+            db(self.psnr_masked_db)
         )
     }
 }
@@ -195,8 +216,13 @@ impl Report {
     /// per-stage times in the shape of Franke et al. 2018, Table 1 (every stage label is in `report.json`).
     pub fn to_markdown(&self) -> String {
         let mut md = String::from("# Depth-of-field evaluation\n\n");
-        let _ = writeln!(md, "dof {}{}; error against each scene's reference on the documented tone map; times are medians of {} runs after a warm-up.\n",
-            self.version, if self.quick { " (quick)" } else { "" }, self.runs);
+        let _ = writeln!(
+            md,
+            "dof {}{}; error against each scene's reference on the documented tone map; times are medians of {} runs after a warm-up.\n",
+            self.version,
+            if self.quick { " (quick)" } else { "" },
+            self.runs
+        );
         for b in &self.backends {
             let _ = writeln!(md, "- {}: {} ({})", b.kind, b.device, b.driver);
         }
@@ -204,15 +230,36 @@ impl Report {
         for s in &self.scenes {
             let _ = writeln!(md, "## {} ({}x{})\n", s.name, s.width, s.height);
             let unit = if s.reference == "accumulation" { "renders of the accumulation buffer" } else { "spp, exact" };
-            let band = (s.width + 2 * s.guard_band_px) as f64 * (s.height + 2 * s.guard_band_px) as f64 / (s.width as f64 * s.height as f64);
-            let _ = writeln!(md, "Reference: {} {unit} (noise {} dB). Multi-layer image: {:.3} fragments/px, {:.1}% of pixels multi-layer; partial-occlusion region {:.1}% of pixels; guard band {} px ({:.2}x the frame's pixels).\n",
-                s.reference_spp, db(s.reference_noise_psnr_db), s.fragments_per_pixel, 100.0 * s.multi_layer_share, 100.0 * s.occlusion_region_share, s.guard_band_px, band);
+            let band =
+                (s.width + 2 * s.guard_band_px) as f64 * (s.height + 2 * s.guard_band_px) as f64 / (s.width as f64 * s.height as f64);
+            let _ = writeln!(
+                md,
+                "Reference: {} {unit} (noise {} dB). Multi-layer image: {:.3} fragments/px, {:.1}% of pixels multi-layer; partial-occlusion region {:.1}% of pixels; guard band {} px ({:.2}x the frame's pixels).\n",
+                s.reference_spp,
+                db(s.reference_noise_psnr_db),
+                s.fragments_per_pixel,
+                100.0 * s.multi_layer_share,
+                100.0 * s.occlusion_region_share,
+                s.guard_band_px,
+                band
+            );
             md.push_str("| method | setting | backend | total (ms) | PSNR (dB) | SSIM | FLIP | PSNR region (dB) | SSIM region | FLIP region |\n|---|---|---|---|---|---|---|---|---|---|\n");
             for r in self.records.iter().filter(|r| r.scene == s.name) {
                 let opt = |v: Option<f64>| v.map_or("-".into(), |v| format!("{v:.4}"));
-                let _ = writeln!(md, "| {} | {} | {} | {:.3} | {} | {:.4} | {:.4} | {} | {} | {} |",
-                    r.method, r.setting, r.backend, r.time_ms,
-                    db(Some(r.psnr_db)), r.ssim, r.flip, db(r.psnr_masked_db), opt(r.ssim_masked), opt(r.flip_masked));
+                let _ = writeln!(
+                    md,
+                    "| {} | {} | {} | {:.3} | {} | {:.4} | {:.4} | {} | {} | {} |",
+                    r.method,
+                    r.setting,
+                    r.backend,
+                    r.time_ms,
+                    db(Some(r.psnr_db)),
+                    r.ssim,
+                    r.flip,
+                    db(r.psnr_masked_db),
+                    opt(r.ssim_masked),
+                    opt(r.flip_masked)
+                );
             }
             md.push('\n');
             md.push_str(&self.table1(&s.name));
@@ -222,7 +269,8 @@ impl Report {
             md.push_str("The aperture scaled so the largest CoC radius present takes each value; time only.\n\n| method | setting | backend | largest CoC radius (px) | total (ms) | mean list |\n|---|---|---|---|---|---|\n");
             for r in &self.coc_sweep {
                 let list = r.figures.get("mean_list_length").map_or("-".into(), |v| format!("{v:.0}"));
-                let _ = writeln!(md, "| {} | {} | {} | {:.1} | {:.3} | {} |", r.method, r.setting, r.backend, r.max_coc_px, r.time_ms, list);
+                let _ =
+                    writeln!(md, "| {} | {} | {} | {:.1} | {:.3} | {} |", r.method, r.setting, r.backend, r.max_coc_px, r.time_ms, list);
             }
             md.push('\n');
         }
@@ -235,7 +283,9 @@ impl Report {
     /// Franke et al. 2018, Table 1, for one scene: per backend and method, the time of each column, the mean list
     /// length, and the error full-frame and in the partial-occlusion region.
     fn table1(&self, scene: &str) -> String {
-        let mut md = String::from("Per stage, in the shape of Table 1 of Franke et al. 2018 (ms):\n\n| backend | method | setting | merge | splat | sort | apply | overall | mean list | PSNR (dB) | PSNR region (dB) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+        let mut md = String::from(
+            "Per stage, in the shape of Table 1 of Franke et al. 2018 (ms):\n\n| backend | method | setting | merge | splat | sort | apply | overall | mean list | PSNR (dB) | PSNR region (dB) |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+        );
         for r in self.records.iter().filter(|r| r.scene == scene && r.backend != "host") {
             let mut cols = BTreeMap::new();
             for (label, ms) in &r.stages_ms {
@@ -243,9 +293,21 @@ impl Report {
             }
             let col = |c: &str| cols.get(c).map_or("-".into(), |v: &f64| format!("{v:.2}"));
             let list = r.figures.get("mean_list_length").map_or("-".into(), |v| format!("{v:.0}"));
-            let _ = writeln!(md, "| {} | {} | {} | {} | {} | {} | {} | {:.2} | {} | {} | {} |",
-                r.backend, r.method, r.setting, col("merge"), col("splat"), col("sort"), col("apply"), r.time_ms, list,
-                db(Some(r.psnr_db)), db(r.psnr_masked_db));
+            let _ = writeln!(
+                md,
+                "| {} | {} | {} | {} | {} | {} | {} | {:.2} | {} | {} | {} |",
+                r.backend,
+                r.method,
+                r.setting,
+                col("merge"),
+                col("splat"),
+                col("sort"),
+                col("apply"),
+                r.time_ms,
+                list,
+                db(Some(r.psnr_db)),
+                db(r.psnr_masked_db)
+            );
         }
         md.push('\n');
         md

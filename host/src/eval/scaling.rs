@@ -226,7 +226,14 @@ struct Measured {
 }
 
 /// A warm-up, then `runs` timed runs unless the warm-up alone was over the budget.
-fn measure(method: &dyn Method, b: &mut dyn Backend, input: &MethodInput, setting: &Setting, runs: usize, budget_s: f64) -> Result<Measured> {
+fn measure(
+    method: &dyn Method,
+    b: &mut dyn Backend,
+    input: &MethodInput,
+    setting: &Setting,
+    runs: usize,
+    budget_s: f64,
+) -> Result<Measured> {
     let held = b.counters().device_bytes;
     b.reset_peak_device_bytes();
     let rss_reset = rss::reset_peak();
@@ -291,7 +298,8 @@ pub fn scaling(options: &ScalingOptions, backends: &mut [Box<dyn Backend>]) -> R
     cocs.sort_by(f64::total_cmp);
     cocs.dedup();
     // Inputs are cast one at a time, just before they are run, so only one is held.
-    let mut plan: Vec<(SweepAxis, (u32, u32), Option<f64>)> = ordered_sizes(&options.sizes).into_iter().map(|s| (SweepAxis::Resolution, s, None)).collect();
+    let mut plan: Vec<(SweepAxis, (u32, u32), Option<f64>)> =
+        ordered_sizes(&options.sizes).into_iter().map(|s| (SweepAxis::Resolution, s, None)).collect();
     plan.extend(cocs.iter().map(|&c| (SweepAxis::MaxCoc, options.coc_size, Some(c))));
     let coc_scene = scene.clone().with_size(options.coc_size.0, options.coc_size.1);
     let coc_base = if cocs.is_empty() {
@@ -457,9 +465,13 @@ impl ScalingReport {
     /// with the growth exponent; then every skipped point and why.
     pub fn to_markdown(&self) -> String {
         let mut md = format!("## Scaling with resolution and blur ({})\n\n", self.scene);
-        let _ = writeln!(md, "Time: median of {} runs after a warm-up, summed stage times (ms); a point whose warm-up was over the budget of {} s reports that run alone. \
+        let _ = writeln!(
+            md,
+            "Time: median of {} runs after a warm-up, summed stage times (ms); a point whose warm-up was over the budget of {} s reports that run alone. \
             Memory: the backend's peak device bytes during the point (MB). `k`: the exponent of time ∝ x^k, least squares over the measured points; \
-            k > 1 against pixels grows faster than the pixel count.\n", self.runs, self.budget_s);
+            k > 1 against pixels grows faster than the pixel count.\n",
+            self.runs, self.budget_s
+        );
         let mut methods: Vec<&str> = Vec::new();
         for (m, _, _) in self.series_keys() {
             if !methods.contains(&m) {
@@ -470,7 +482,11 @@ impl ScalingReport {
             let columns: Vec<&ScalingPoint> = {
                 let mut seen: Vec<&ScalingPoint> = Vec::new();
                 for p in self.points.iter().filter(|p| p.axis == axis) {
-                    if !seen.iter().any(|s| s.width == p.width && s.height == p.height && (axis == SweepAxis::Resolution || (s.max_coc_px - p.max_coc_px).abs() < 0.5)) {
+                    if !seen.iter().any(|s| {
+                        s.width == p.width
+                            && s.height == p.height
+                            && (axis == SweepAxis::Resolution || (s.max_coc_px - p.max_coc_px).abs() < 0.5)
+                    }) {
                         seen.push(p);
                     }
                 }
@@ -557,7 +573,8 @@ impl ScalingReport {
                     if points.is_empty() {
                         continue;
                     }
-                    let measured: Vec<(f64, f64)> = points.iter().filter_map(|p| Some((Self::x(axis, p), value(p)?))).filter(|p| p.1 > 0.0).collect();
+                    let measured: Vec<(f64, f64)> =
+                        points.iter().filter_map(|p| Some((Self::x(axis, p), value(p)?))).filter(|p| p.1 > 0.0).collect();
                     let skipped = points.iter().filter(|p| p.skipped.is_some()).count();
                     let mut name = format!("{method} {}", points[0].setting);
                     if skipped > 0 {
@@ -575,11 +592,26 @@ impl ScalingReport {
                 let at_x0: Vec<f64> = all.iter().filter(|p| p.0 == x0).map(|p| p.1.ln()).collect();
                 let y0 = (at_x0.iter().sum::<f64>() / at_x0.len() as f64).exp();
                 if x1 > x0 {
-                    series.push(Series { name: reference.into(), colour: [120, 120, 120], mark: Mark::Dashed, points: vec![(x0, y0), (x1, y0 * (x1 / x0).powf(slope))] });
+                    series.push(Series {
+                        name: reference.into(),
+                        colour: [120, 120, 120],
+                        mark: Mark::Dashed,
+                        points: vec![(x0, y0), (x1, y0 * (x1 / x0).powf(slope))],
+                    });
                 }
                 let (x_label, title) = match axis {
-                    SweepAxis::Resolution => ("frame pixels (log)", format!("{}: {} against resolution", self.scene, if stem.starts_with("time") { "time" } else { "peak device memory" })),
-                    SweepAxis::MaxCoc => ("largest CoC radius (px, log)", format!("{}: time against the largest CoC ({}x{})", self.scene, self.coc_size[0], self.coc_size[1])),
+                    SweepAxis::Resolution => (
+                        "frame pixels (log)",
+                        format!(
+                            "{}: {} against resolution",
+                            self.scene,
+                            if stem.starts_with("time") { "time" } else { "peak device memory" }
+                        ),
+                    ),
+                    SweepAxis::MaxCoc => (
+                        "largest CoC radius (px, log)",
+                        format!("{}: time against the largest CoC ({}x{})", self.scene, self.coc_size[0], self.coc_size[1]),
+                    ),
                 };
                 out.push((
                     format!("scaling-{stem}-{backend}"),

@@ -88,7 +88,10 @@ pub fn coc_sweep(
                     figures: output.figures,
                 };
                 if options.progress {
-                    eprintln!("sweep {name}: {} {} on {} at max CoC {:.1} px: {:.3} ms", record.method, record.setting, record.backend, max_coc_px, record.time_ms);
+                    eprintln!(
+                        "sweep {name}: {} {} on {} at max CoC {:.1} px: {:.3} ms",
+                        record.method, record.setting, record.backend, max_coc_px, record.time_ms
+                    );
                 }
                 records.push(record);
             }

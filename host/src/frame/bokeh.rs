@@ -5,7 +5,7 @@
 //! back on the host.
 
 use super::gather::{MAX_RADIUS, record_gather};
-use super::io::{Frame, ImageIo, Owned, check_frame, ready, output_buffer, record_front, record_input, record_output};
+use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, ready, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, push_words};
 use crate::error::{Error, Result};
 use crate::methods::bokeh::BokehOptions;

@@ -1,7 +1,7 @@
 //! The gathering baseline (Riguer et al. 2003) as a frame context: the window radius reduced on the
 //! device from the frame's depths, so nothing is planned on the host.
 
-use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, ready, output_buffer, record_front, record_input, record_output};
+use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, push_words};
 use crate::error::{Error, Result};
 use crate::methods::buffers::groups_for;

@@ -4,7 +4,7 @@
 use crate::backend::{Backend, BufferId, ImageFormat, ImageRef, push_words};
 use crate::error::{Error, Result};
 use crate::methods::buffers::groups_for;
-use dof_shaders::frame_io::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, FRONT, FROM_IMAGES, FrameIoParams, TO_RGBA};
+use dof_shaders::frame_io::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, FROM_IMAGES, FRONT, FrameIoParams, TO_RGBA};
 use dof_shaders::lens::ThinLens;
 
 /// How a depth image encodes depth.
@@ -68,7 +68,6 @@ impl Frame {
     }
 }
 
-
 /// Colour formats an image input or output may have.
 const COLOR_FORMATS: [ImageFormat; 2] = [ImageFormat::Rgba32Float, ImageFormat::Rgba16Float];
 
@@ -92,7 +91,9 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, max: (u32, u32, u32)
     let mut buffers = Vec::new();
     let mut images = Vec::new();
     match f.input {
-        FrameInput::Layers { fragments, counts, .. } => buffers.extend([("fragments", fragments, 4 * pixels * layers as u64), ("counts", counts, pixels)]),
+        FrameInput::Layers { fragments, counts, .. } => {
+            buffers.extend([("fragments", fragments, 4 * pixels * layers as u64), ("counts", counts, pixels)])
+        }
         FrameInput::Images { color, depth, encoding } => {
             images.extend([("colour", color, COLOR_FORMATS.as_slice()), ("depth", depth, &[ImageFormat::R32Float])]);
             if let DepthEncoding::Standard { near, far } | DepthEncoding::Reversed { near, far } = encoding {
@@ -250,7 +251,13 @@ pub(crate) fn record_input(backend: &mut dyn Backend, f: &Frame, io: Option<&Ima
 
 /// Records the front fragment of every pixel (black at infinite depth where a pixel has none) as
 /// 3 colour words and one depth word a pixel: the input of the single-layer gathering methods.
-pub(crate) fn record_front(backend: &mut dyn Backend, f: &Frame, slots: (BufferId, BufferId), color: BufferId, depth: BufferId) -> Result<()> {
+pub(crate) fn record_front(
+    backend: &mut dyn Backend,
+    f: &Frame,
+    slots: (BufferId, BufferId),
+    color: BufferId,
+    depth: BufferId,
+) -> Result<()> {
     let params = io_params(f, 0, f.layer_count(), DepthEncoding::Linear);
     let groups = groups_for(&FRONT, f.width as u64 * f.height as u64);
     backend.dispatch(&FRONT, groups, &[slots.0, slots.1, color, depth], &params, "frame/front")

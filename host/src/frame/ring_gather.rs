@@ -3,7 +3,7 @@
 //! creation and nothing planned on the host, so its cost is fixed by the frame's size and the ring
 //! count, not by the blur.
 
-use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, ready, output_buffer, record_front, record_input, record_output};
+use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, push_words};
 use crate::error::{Error, Result};
 use crate::methods::buffers::groups_for;
@@ -148,12 +148,19 @@ impl RingGatherContext {
         let output = output_buffer(f, self.io.as_ref())?;
         let b = &self.passes;
         record_front(backend, f, slots, b.color, b.depth)?;
-        let p = RingGatherParams { width: f.width, height: f.height, rings: d.options.rings, max_radius: d.options.max_radius, lens: f.lens };
+        let p =
+            RingGatherParams { width: f.width, height: f.height, rings: d.options.rings, max_radius: d.options.max_radius, lens: f.lens };
         let params = push_words(&p);
         let tile_groups = [p.tiles_x(), p.tiles_y(), 1];
         backend.dispatch(&RING_GATHER_DOWNSAMPLE, tile_groups, &[b.color, b.depth, b.half, b.tiles], &params, "ring-gather/downsample")?;
         let tiles = p.tiles_x() as u64 * p.tiles_y() as u64;
-        backend.dispatch(&RING_GATHER_DILATE, groups_for(&RING_GATHER_DILATE, tiles), &[b.tiles, b.dilated], &params, "ring-gather/dilate")?;
+        backend.dispatch(
+            &RING_GATHER_DILATE,
+            groups_for(&RING_GATHER_DILATE, tiles),
+            &[b.tiles, b.dilated],
+            &params,
+            "ring-gather/dilate",
+        )?;
         backend.dispatch(&RING_GATHER, tile_groups, &[b.half, b.dilated, b.fields], &params, "ring-gather")?;
         let pixel_groups = [f.width.div_ceil(8), f.height.div_ceil(8), 1];
         backend.dispatch(&RING_GATHER_COMPOSITE, pixel_groups, &[b.color, b.depth, b.fields, output], &params, "ring-gather/composite")?;

@@ -3,19 +3,19 @@
 
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_input, record_output};
 use crate::backend::{Backend, BufferId, push_words};
-use dof_shaders::KernelDesc;
 use crate::error::{Error, Result};
 use crate::methods::buffers::groups_for;
 use crate::methods::splat::{Plan, SplatOptions, SplatReport};
 use crate::ops::scan::ScanScratch;
 use crate::ops::sort::SegmentedSort;
+use dof_shaders::KernelDesc;
 use dof_shaders::splat::accumulate::ACCUMULATE;
 use dof_shaders::splat::bin::{ALLOC, BIN, COMPACT, TILE_COUNT};
 use dof_shaders::splat::fragment::MAX_EDGE;
 use dof_shaders::splat::merge::MERGE;
 use dof_shaders::splat::pack::PACK;
 use dof_shaders::splat::plan::{PLAN_FINISH, PLAN_REDUCE};
-use dof_shaders::splat::{FLAG_UMBRA_MERGE, block_for, MAX_RINGS, SplatParams, TILE_SIZES, stats};
+use dof_shaders::splat::{FLAG_UMBRA_MERGE, MAX_RINGS, SplatParams, TILE_SIZES, block_for, stats};
 
 /// Most tile-list entries a context may hold: 2^29, so that each list buffer stays within 2 GiB.
 /// Measured on an NVIDIA H100 (driver 580.159.04): a 3840x2160 unmerged frame whose list buffers
@@ -235,7 +235,8 @@ impl SplatContext {
         if desc.image_io {
             kernels.extend(dof_shaders::frame_io::KERNELS);
         }
-        let ctx = SplatContext { desc: desc.clone(), radius_cap, merge_steps, list_entries, max_list, owned, bytes, b, scan, sort, last: None };
+        let ctx =
+            SplatContext { desc: desc.clone(), radius_cap, merge_steps, list_entries, max_list, owned, bytes, b, scan, sort, last: None };
         super::io::ready(backend, ctx, &kernels, &[], Self::destroy)
     }
 

@@ -73,8 +73,7 @@ impl fmt::Display for InputReport {
         };
         write!(f, "{}x{} {layout}", self.width, self.height)?;
         let c = &self.counts;
-        let background =
-            format!("background fragments (depth +inf or >= {BACKGROUND_DEPTH:e}), kept with their colour");
+        let background = format!("background fragments (depth +inf or >= {BACKGROUND_DEPTH:e}), kept with their colour");
         let items = [
             (c.color_nan, "NaN colour values set to 0"),
             (c.color_inf, "infinite colour values clamped (+inf to 65504, -inf to 0)"),
@@ -168,8 +167,7 @@ pub fn read_layered_exr(path: impl AsRef<Path>) -> Result<(LayeredImage, InputRe
                     let rgb = [plane.rgb[0][p], plane.rgb[1][p], plane.rgb[2][p]];
                     let alpha = plane.alpha.as_ref().map_or(1.0, |a| a[p]);
                     let depth = plane.depth[p];
-                    let fragment =
-                        if sole { counts.sole_fragment(rgb, alpha, depth) } else { counts.fragment(rgb, alpha, depth) };
+                    let fragment = if sole { counts.sole_fragment(rgb, alpha, depth) } else { counts.fragment(rgb, alpha, depth) };
                     if let Some(f) = fragment {
                         pixel.push(f);
                     }
@@ -316,11 +314,7 @@ impl ExrFile {
             let part_name = part.attributes.layer_name.as_ref().map(|t| t.to_string()).unwrap_or_else(|| format!("part{p}"));
             for (c, channel) in part.channel_data.list.iter().enumerate() {
                 let name = channel.name.to_string();
-                let full = if !multi_part || name.starts_with(&format!("{part_name}.")) {
-                    name
-                } else {
-                    format!("{part_name}.{name}")
-                };
+                let full = if !multi_part || name.starts_with(&format!("{part_name}.")) { name } else { format!("{part_name}.{name}") };
                 names.push(full);
                 index.push((p, c));
             }
@@ -384,9 +378,7 @@ impl ExrFile {
                 size.y()
             )));
         }
-        let too_large = || {
-            Error::InvalidArgument(format!("{}: size {}x{} is too large", path.display(), size.x(), size.y()))
-        };
+        let too_large = || Error::InvalidArgument(format!("{}: size {}x{} is too large", path.display(), size.x(), size.y()));
         Ok((u32::try_from(size.x()).map_err(|_| too_large())?, u32::try_from(size.y()).map_err(|_| too_large())?))
     }
 
@@ -422,10 +414,7 @@ impl ExrFile {
             height,
             layers: groups.iter().map(|g| g.name.clone()).collect(),
             channels: groups.iter().flat_map(|g| g.used()).map(|i| self.names[i].clone()).collect(),
-            ignored_channels: (0..self.names.len())
-                .filter(|i| used.binary_search(i).is_err())
-                .map(|i| self.names[i].clone())
-                .collect(),
+            ignored_channels: (0..self.names.len()).filter(|i| used.binary_search(i).is_err()).map(|i| self.names[i].clone()).collect(),
             counts: SanitizeCounts::default(),
         }
     }
@@ -457,8 +446,7 @@ fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)>
     for colour in groups.iter().filter(|g| g.has_rgb() && g.depth.is_none()) {
         for depth in groups.iter().filter(|d| d.is_depth_only() && is_depth_sibling(&colour.name, &d.name)) {
             let pair = Group { depth: depth.depth, ..colour.clone() };
-            let name =
-                if colour.name.is_empty() { "the unnamed layer".to_string() } else { format!("`{}`", colour.name) };
+            let name = if colour.name.is_empty() { "the unnamed layer".to_string() } else { format!("`{}`", colour.name) };
             candidates.push(Candidate {
                 layout: ExrLayout::RgbZ,
                 what: format!("RGB+Z from {name} with the depth of `{}` ({})", depth.name, channels_of(&pair)),
@@ -566,10 +554,7 @@ fn guarded<T>(path: &Path, decode: impl FnOnce() -> Result<T>) -> Result<T> {
                 .map(|s| s.to_string())
                 .or_else(|| payload.downcast_ref::<String>().cloned())
                 .unwrap_or_else(|| "no message".to_string());
-            Err(Error::InvalidArgument(format!(
-                "{} is corrupt: the EXR decoder failed on its data ({what}); re-export it",
-                path.display()
-            )))
+            Err(Error::InvalidArgument(format!("{} is corrupt: the EXR decoder failed on its data ({what}); re-export it", path.display())))
         }
     }
 }

@@ -62,12 +62,7 @@ pub fn write_exr(path: impl AsRef<Path>, image: &RgbImage, extra: &[(&str, &[f32
 /// Errors: a zero-sized image; `image.data` or an extra plane not holding `width · height` values;
 /// an extra plane name that is empty, longer than 255 bytes, not printable ASCII, repeated, or one
 /// of the colour channels `R`, `G`, `B`; a file that cannot be written.
-pub fn write_exr_with(
-    path: impl AsRef<Path>,
-    image: &RgbImage,
-    extra: &[(&str, &[f32])],
-    options: &ExrWriteOptions,
-) -> Result<()> {
+pub fn write_exr_with(path: impl AsRef<Path>, image: &RgbImage, extra: &[(&str, &[f32])], options: &ExrWriteOptions) -> Result<()> {
     let path = path.as_ref();
     check_rgb_image(image, "an EXR image")?;
     let pixels = image.data.len();
@@ -138,9 +133,7 @@ pub fn write_layered_exr(path: impl AsRef<Path>, image: &LayeredImage) -> Result
     }
     let mut channels: SmallVec<[AnyChannel<FlatSamples>; 4]> = SmallVec::new();
     for layer in 0..layers {
-        let slot = |p: usize| {
-            (layer < image.counts[p] as usize).then(|| image.fragments[p * layers + layer])
-        };
+        let slot = |p: usize| (layer < image.counts[p] as usize).then(|| image.fragments[p * layers + layer]);
         for (k, c) in ["R", "G", "B"].into_iter().enumerate() {
             let values = (0..pixels).map(|p| slot(p).map_or(0.0, |f| f.color[k] * f.alpha)).collect();
             channels.push(AnyChannel::new(text(&format!("layer{layer}.{c}"))?, FlatSamples::F32(values)));
@@ -165,16 +158,12 @@ fn check_channel_name(name: &str) -> Result<()> {
 }
 
 fn text(name: &str) -> Result<Text> {
-    Text::new_or_none(name)
-        .ok_or_else(|| Error::InvalidArgument(format!("`{name}` cannot be an EXR channel name: use printable ASCII")))
+    Text::new_or_none(name).ok_or_else(|| Error::InvalidArgument(format!("`{name}` cannot be an EXR channel name: use printable ASCII")))
 }
 
 fn encode_and_write(path: &Path, image: &Image<Layer<AnyChannels<FlatSamples>>>) -> Result<()> {
     // Encoded in memory, then written in one call, so that every I/O error is reported with the path.
     let mut encoded = std::io::Cursor::new(Vec::new());
-    image
-        .write()
-        .to_buffered(&mut encoded)
-        .map_err(|e| Error::InvalidArgument(format!("encoding the EXR {}: {e}", path.display())))?;
+    image.write().to_buffered(&mut encoded).map_err(|e| Error::InvalidArgument(format!("encoding the EXR {}: {e}", path.display())))?;
     write_file(path, encoded.get_ref())
 }

@@ -122,10 +122,10 @@ pub use channels::natural_cmp;
 pub use exr_read::{ExrLayout, InputReport, read_layered_exr, read_rgb_exr};
 #[cfg(feature = "exr")]
 pub use exr_write::{ExrCompression, ExrPrecision, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr};
-#[cfg(feature = "exr")]
-pub use preview::{write_png_display, write_png_preview};
 #[cfg(feature = "eval")]
 pub(crate) use preview::write_srgb8;
+#[cfg(feature = "exr")]
+pub use preview::{write_png_display, write_png_preview};
 pub use sanitize::{BACKGROUND_DEPTH, COLOR_INF_REPLACEMENT, SanitizeCounts, is_background_depth};
 pub use tonemap::tonemap;
 

@@ -4,13 +4,12 @@
 //! for the report.
 
 use super::buffers::one_layer_frame;
+use crate::aperture::ApertureShape;
 use crate::backend::{Backend, CommandTime};
 use crate::error::Result;
 use crate::frame::{BokehContext, BokehContextDesc};
 use crate::layers::RgbImage;
-use crate::aperture::ApertureShape;
 use dof_shaders::lens::ThinLens;
-
 
 #[derive(Clone, Debug)]
 pub struct BokehOptions {
@@ -46,16 +45,17 @@ pub struct BokehOutput {
 pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &ThinLens, options: &BokehOptions) -> Result<BokehOutput> {
     crate::frame::bokeh::check_options(options)?;
     let desc = BokehContextDesc::new(image.width, image.height, 1, options.clone());
-    let (out, (times, (detected, blur_radius), context_bytes)) = one_layer_frame(backend, "bokeh sprites", image, depth, lens, |backend, frame| {
-        let mut ctx = BokehContext::new(backend, &desc)?;
-        let ran = (|| {
-            ctx.record(backend, frame)?;
-            let times = backend.submit()?;
-            Ok((times, ctx.detected_and_radius(backend)?, ctx.device_bytes()))
-        })();
-        ctx.destroy(backend);
-        ran
-    })?;
+    let (out, (times, (detected, blur_radius), context_bytes)) =
+        one_layer_frame(backend, "bokeh sprites", image, depth, lens, |backend, frame| {
+            let mut ctx = BokehContext::new(backend, &desc)?;
+            let ran = (|| {
+                ctx.record(backend, frame)?;
+                let times = backend.submit()?;
+                Ok((times, ctx.detected_and_radius(backend)?, ctx.device_bytes()))
+            })();
+            ctx.destroy(backend);
+            ran
+        })?;
     let pixels = image.width as u64 * image.height as u64;
     Ok(BokehOutput {
         image: out,

@@ -53,7 +53,8 @@ pub fn one_layer_frame<T>(
     if !lens.is_valid() {
         return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
     }
-    let slots: Vec<u32> = image.data.iter().zip(depth).flat_map(|(c, z)| [c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]).collect();
+    let slots: Vec<u32> =
+        image.data.iter().zip(depth).flat_map(|(c, z)| [c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]).collect();
     let sizes = [(4 * pixels, "one-layer/input"), (pixels, "one-layer/input-counts"), (3 * pixels, "one-layer/out")];
     with_buffers(backend, &sizes, |backend, b| {
         backend.write_buffer(b[0], 0, &slots)?;

@@ -14,10 +14,7 @@ pub use crate::frame::gather::MAX_RADIUS;
 /// The largest CoC radius actually present in `depth` (whole pixels, rounded up), so the kernel
 /// scans no wider than the scene needs; at most `cap`.
 pub fn needed_radius(lens: &ThinLens, depth: &[f32], cap: u32) -> u32 {
-    let largest = depth
-        .iter()
-        .map(|&z| radius_px(lens, z, cap as f32))
-        .fold(0.0f32, f32::max);
+    let largest = depth.iter().map(|&z| radius_px(lens, z, cap as f32)).fold(0.0f32, f32::max);
     (largest.ceil() as u32).min(cap)
 }
 

@@ -21,7 +21,9 @@ use super::buffers::{groups_for, read_rgb, slot_words};
 use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::{LayeredImage, RgbImage};
-use dof_shaders::layered::{LAYERED_BLUR, LAYERED_COMPOSITE, LAYERED_MATTE, LAYERED_RESOLVE, LayeredParams, OVER, SLOT_WORDS, UNDER, matte_front, matte_hidden};
+use dof_shaders::layered::{
+    LAYERED_BLUR, LAYERED_COMPOSITE, LAYERED_MATTE, LAYERED_RESOLVE, LayeredParams, OVER, SLOT_WORDS, UNDER, matte_front, matte_hidden,
+};
 use dof_shaders::lens::ThinLens;
 
 /// Blurs narrower than this `σ` (px) are left out: their kernel is almost all centre.
@@ -64,13 +66,7 @@ pub struct LayerPlan {
 impl LayerPlan {
     /// `[a[k-2], a[k-1], a[k], a[k+1]]` of layer `k`.
     pub fn anchors_of(&self, k: usize) -> [f32; 4] {
-        let a = |i: isize| -> f32 {
-            if i < 0 {
-                0.0
-            } else {
-                self.anchors.get(i as usize).copied().unwrap_or(f32::INFINITY)
-            }
-        };
+        let a = |i: isize| -> f32 { if i < 0 { 0.0 } else { self.anchors.get(i as usize).copied().unwrap_or(f32::INFINITY) } };
         let k = k as isize;
         [a(k - 2), a(k - 1), a(k), a(k + 1)]
     }
@@ -162,7 +158,8 @@ pub fn plan(image: &LayeredImage, lens: &ThinLens, options: &LayeredOptions) -> 
         if n == 0 {
             reach(f32::INFINITY, false);
         }
-        let usable = image.fragments[p * image.max_layers as usize..][..n].iter().filter(|f| f.depth > 0.0 && f.color.iter().all(|v| v.is_finite()));
+        let usable =
+            image.fragments[p * image.max_layers as usize..][..n].iter().filter(|f| f.depth > 0.0 && f.color.iter().all(|v| v.is_finite()));
         for (i, f) in usable.enumerate() {
             reach(f.depth, i == 0);
         }
@@ -334,7 +331,14 @@ pub fn layered(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens,
         }
         backend.dispatch(&LAYERED_RESOLVE, groups, &[far, out], &push_words(&base), "layered/composite")?;
         let times = backend.submit()?;
-        Ok(LayeredOutput { image: read_rgb(backend, out, width, height)?, times, plan: plan.clone(), blurs: blur_count, widest_radius, buffer_bytes })
+        Ok(LayeredOutput {
+            image: read_rgb(backend, out, width, height)?,
+            times,
+            plan: plan.clone(),
+            blurs: blur_count,
+            widest_radius,
+            buffer_bytes,
+        })
     })
 }
 

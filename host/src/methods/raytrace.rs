@@ -73,7 +73,10 @@ pub fn raytrace(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens
     let (width, height) = (image.width, image.height);
     let pixels = width as u64 * height as u64;
     if pixels == 0 || image.max_layers == 0 {
-        return Err(Error::InvalidArgument(format!("ray tracing needs a non-empty image, got {width}x{height} with {} layers", image.max_layers)));
+        return Err(Error::InvalidArgument(format!(
+            "ray tracing needs a non-empty image, got {width}x{height} with {} layers",
+            image.max_layers
+        )));
     }
     let levels = levels_for(width, height);
     let mut params = TraceParams {

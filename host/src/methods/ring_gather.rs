@@ -21,7 +21,13 @@ pub struct RingGatherOutput {
 }
 
 /// Runs the engine-grade gather on `backend`.
-pub fn ring_gather(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &ThinLens, options: &RingGatherOptions) -> Result<RingGatherOutput> {
+pub fn ring_gather(
+    backend: &mut dyn Backend,
+    image: &RgbImage,
+    depth: &[f32],
+    lens: &ThinLens,
+    options: &RingGatherOptions,
+) -> Result<RingGatherOutput> {
     options.check()?;
     let desc = RingGatherContextDesc { options: *options, ..RingGatherContextDesc::new(image.width, image.height, 1) };
     let (out, (times, context_bytes)) = one_layer_frame(backend, "the ring gather", image, depth, lens, |backend, frame| {

@@ -5,8 +5,8 @@
 use crate::backend::{Backend, BufferId, push_words, with_buffers};
 use crate::error::{Error, Result};
 use dof_shaders::sort::{
-    self, CLASS_CAPS, CLASSIFY, ClassifyParams, GLOBAL_CLASS, GLOBAL_LOCAL, GLOBAL_STEP, GLOBAL_STORE, LOCAL_BLOCK,
-    MAX_GROUPS, NUM_CLASSES, PLAN, PlanParams, SHARED_CLASSES, SortParams, plan, pow2_ceil, top_class_for,
+    self, CLASS_CAPS, CLASSIFY, ClassifyParams, GLOBAL_CLASS, GLOBAL_LOCAL, GLOBAL_STEP, GLOBAL_STORE, LOCAL_BLOCK, MAX_GROUPS,
+    NUM_CLASSES, PLAN, PlanParams, SHARED_CLASSES, SortParams, plan, pow2_ceil, top_class_for,
 };
 
 /// Buffers and sizes of a segmented sort, allocated once for a maximum problem size.
@@ -111,10 +111,7 @@ impl SegmentedSort {
         values_out: BufferId,
     ) -> Result<()> {
         if num_segments > self.max_segments {
-            return Err(Error::InvalidArgument(format!(
-                "{num_segments} lists exceed the {} this sort was sized for",
-                self.max_segments
-            )));
+            return Err(Error::InvalidArgument(format!("{num_segments} lists exceed the {} this sort was sized for", self.max_segments)));
         }
         let (plan_buf, lists) = (self.plan, self.lists);
         backend.fill(plan_buf, 0, plan::WORDS as u64, 0, "sort/clear")?;
@@ -161,7 +158,6 @@ impl SegmentedSort {
             top_class_cap: self.top_class_cap(),
         })
     }
-
 }
 
 /// A sort problem on the host: keys, payloads and the `(offset, len)` of each list.
@@ -200,7 +196,8 @@ impl SortInput {
         let mut values = self.values.clone();
         for &(offset, len) in &self.segments {
             let range = offset as usize..(offset + len) as usize;
-            let mut pairs: Vec<(f32, u32)> = self.keys[range.clone()].iter().copied().zip(self.values[range.clone()].iter().copied()).collect();
+            let mut pairs: Vec<(f32, u32)> =
+                self.keys[range.clone()].iter().copied().zip(self.values[range.clone()].iter().copied()).collect();
             pairs.sort_by_key(|(k, _)| dof_shaders::keys::sort_key(k.to_bits()));
             for (i, (k, v)) in pairs.into_iter().enumerate() {
                 keys[range.start + i] = k;

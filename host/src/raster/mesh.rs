@@ -87,13 +87,21 @@ impl RasterScene<'_> {
 
     /// The corners of every triangle, world space.
     pub fn triangle_positions(&self) -> impl Iterator<Item = [glam::Vec3; 3]> + '_ {
-        self.triangles.iter().map(|t| [0, 1, 2].map(|k| glam::Vec3::from(self.vertices.get(t[k] as usize).map_or([0.0; 3], |v| v.position))))
+        self.triangles
+            .iter()
+            .map(|t| [0, 1, 2].map(|k| glam::Vec3::from(self.vertices.get(t[k] as usize).map_or([0.0; 3], |v| v.position))))
     }
 
     /// The light in the layout the shading kernel reads (direction normalised).
     pub fn light(&self) -> Light {
         let d = self.lighting.direction.normalize_or_zero();
-        Light { direction: d.to_array(), color: self.lighting.color, ambient: self.lighting.ambient, background: self.lighting.background, ..Light::default() }
+        Light {
+            direction: d.to_array(),
+            color: self.lighting.color,
+            ambient: self.lighting.ambient,
+            background: self.lighting.background,
+            ..Light::default()
+        }
     }
 }
 

@@ -50,7 +50,14 @@ pub(crate) fn check_view(camera: &Camera, lens: &ThinLens, near: f32) -> Result<
 }
 
 /// The shading pass's constants for a view.
-pub(crate) fn shade_params(scene: &RasterScene, mesh: &DeviceMesh, frame: &crate::scene::CameraFrame, lens: &ThinLens, view: &View, mode: u32) -> ShadeParams {
+pub(crate) fn shade_params(
+    scene: &RasterScene,
+    mesh: &DeviceMesh,
+    frame: &crate::scene::CameraFrame,
+    lens: &ThinLens,
+    view: &View,
+    mode: u32,
+) -> ShadeParams {
     ShadeParams {
         light: scene.light(),
         eye: view.eye(frame).to_array(),
@@ -75,7 +82,12 @@ pub(crate) struct Pass {
 impl Pass {
     /// Sizes for [`with_buffers`]; the reach holds `reach_words` (1 when not peeling).
     pub fn sizes(mesh: &DeviceMesh, pixels: u64, reach_words: u64) -> [(u64, &'static str); 4] {
-        [(4, "raster/args"), (reach_words, "raster/reach"), (4 * mesh.triangles as u64, "raster/bounds"), (VIS_WORDS as u64 * pixels, "raster/vis")]
+        [
+            (4, "raster/args"),
+            (reach_words, "raster/reach"),
+            (4 * mesh.triangles as u64, "raster/bounds"),
+            (VIS_WORDS as u64 * pixels, "raster/vis"),
+        ]
     }
 
     pub fn new(backend: &mut dyn Backend, mesh: &DeviceMesh, b: &[BufferId], reach_words: u64) -> Result<Self> {
@@ -99,10 +111,23 @@ impl Pass {
         peel: bool,
         label: &str,
     ) -> Result<()> {
-        let params = RasterParams { triangles: mesh.triangles, textures: mesh.textures, peel: peel as u32, ..view.params(frame, lens.focus_distance, near) };
+        let params = RasterParams {
+            triangles: mesh.triangles,
+            textures: mesh.textures,
+            peel: peel as u32,
+            ..view.params(frame, lens.focus_distance, near)
+        };
         let [v, t, m, tx, tl] = mesh.buffers;
         let size = [frame.width, frame.height];
-        backend.draw_indirect(&RASTER_DRAW, self.args, &[v, t, m, tx, tl, self.reach, self.bounds], self.vis, size, &push_words(&params), label)
+        backend.draw_indirect(
+            &RASTER_DRAW,
+            self.args,
+            &[v, t, m, tx, tl, self.reach, self.bounds],
+            self.vis,
+            size,
+            &push_words(&params),
+            label,
+        )
     }
 
     /// Shades the visibility buffer into `out` (a layer, or the accumulation buffer).

@@ -19,13 +19,26 @@ use crate::error::{Error, Result};
 /// The geometry of one primitive.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Shape {
-    Sphere { center: Vec3, radius: f32 },
+    Sphere {
+        center: Vec3,
+        radius: f32,
+    },
     /// Axis-aligned box, `min <= max` on every axis.
-    Cuboid { min: Vec3, max: Vec3 },
+    Cuboid {
+        min: Vec3,
+        max: Vec3,
+    },
     /// Parallelogram `corner + a·edge_u + b·edge_v`, `a, b` in [0, 1]; two-sided.
-    Quad { corner: Vec3, edge_u: Vec3, edge_v: Vec3 },
+    Quad {
+        corner: Vec3,
+        edge_u: Vec3,
+        edge_v: Vec3,
+    },
     /// Infinite plane through `point` with normal `normal` (any length); two-sided.
-    Plane { point: Vec3, normal: Vec3 },
+    Plane {
+        point: Vec3,
+        normal: Vec3,
+    },
 }
 
 /// Diffuse reflectance.
@@ -35,7 +48,11 @@ pub enum Albedo {
     /// Alternating squares of side `cell` (scene units) in the surface's own coordinates (quads:
     /// along the edges from the corner; planes: two fixed tangents; boxes: the face's two axes;
     /// spheres: longitude and latitude arc lengths).
-    Checker { a: [f32; 3], b: [f32; 3], cell: f32 },
+    Checker {
+        a: [f32; 3],
+        b: [f32; 3],
+        cell: f32,
+    },
 }
 
 /// How a surface looks.

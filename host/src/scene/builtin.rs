@@ -64,10 +64,7 @@ pub fn builtin(name: &str) -> Result<BuiltinScene> {
         "highlights" => highlights(),
         "fence" => fence(),
         "edges" => edges(),
-        _ => Err(Error::InvalidArgument(format!(
-            "unknown built-in scene `{name}`; the built-in scenes are: {}",
-            NAMES.join(", ")
-        ))),
+        _ => Err(Error::InvalidArgument(format!("unknown built-in scene `{name}`; the built-in scenes are: {}", NAMES.join(", ")))),
     }
 }
 
@@ -240,7 +237,8 @@ fn facing_quad(x0: f32, y0: f32, x1: f32, y1: f32, z: f32) -> Shape {
 /// A far wall of emissive tiles in `rows` x `cols` cells, colours cycling through a palette, from
 /// `(x0, y0)` to `(x1, y1)` at depth `z`.
 fn tiled_wall(x0: f32, y0: f32, x1: f32, y1: f32, z: f32, rows: u32, cols: u32) -> Vec<Primitive> {
-    let palette = [[0.9, 0.75, 0.5], [0.35, 0.45, 0.3], [0.8, 0.35, 0.25], [0.25, 0.3, 0.55], [0.95, 0.9, 0.85], [0.5, 0.2, 0.4], [0.15, 0.15, 0.15]];
+    let palette =
+        [[0.9, 0.75, 0.5], [0.35, 0.45, 0.3], [0.8, 0.35, 0.25], [0.25, 0.3, 0.55], [0.95, 0.9, 0.85], [0.5, 0.2, 0.4], [0.15, 0.15, 0.15]];
     let (w, h) = ((x1 - x0) / cols as f32, (y1 - y0) / rows as f32);
     let mut prims = Vec::new();
     for r in 0..rows {

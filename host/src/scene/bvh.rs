@@ -84,7 +84,13 @@ impl Bvh {
         }
         let centres = work.iter().fold(Aabb::EMPTY, |acc, (_, b)| acc.union(Aabb { min: b.centre(), max: b.centre() }));
         let extent = centres.max - centres.min;
-        let axis = if extent.x >= extent.y && extent.x >= extent.z { 0 } else if extent.y >= extent.z { 1 } else { 2 };
+        let axis = if extent.x >= extent.y && extent.x >= extent.z {
+            0
+        } else if extent.y >= extent.z {
+            1
+        } else {
+            2
+        };
         work.sort_by(|a, b| a.1.centre()[axis].total_cmp(&b.1.centre()[axis]).then(a.0.cmp(&b.0)));
         let mid = work.len() / 2;
         let left = self.nodes.len();

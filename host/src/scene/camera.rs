@@ -79,10 +79,7 @@ impl Camera {
     /// parallel to the view axis.
     pub fn frame(&self) -> Result<CameraFrame> {
         if self.width == 0 || self.height == 0 {
-            return Err(Error::InvalidArgument(format!(
-                "the image size must be positive, got {}x{}",
-                self.width, self.height
-            )));
+            return Err(Error::InvalidArgument(format!("the image size must be positive, got {}x{}", self.width, self.height)));
         }
         let fov = self.yfov_radians;
         if !(fov > 0.0 && fov < std::f32::consts::PI) {
@@ -94,8 +91,8 @@ impl Camera {
         if !(self.eye.is_finite() && self.target.is_finite() && self.up.is_finite()) {
             return Err(Error::InvalidArgument("camera eye, target and up must be finite".into()));
         }
-        let forward = unit(self.target - self.eye)
-            .ok_or_else(|| Error::InvalidArgument("the camera's target must differ from its eye".into()))?;
+        let forward =
+            unit(self.target - self.eye).ok_or_else(|| Error::InvalidArgument("the camera's target must differ from its eye".into()))?;
         let right = unit(self.up)
             .map(|up| forward.cross(up))
             .filter(|r| r.length() > 1e-6)
@@ -188,7 +185,11 @@ impl CameraFrame {
     pub fn check_size(&self, what: &str, per_pixel: u64) -> Result<()> {
         let slots = (self.width as u64 * self.height as u64).saturating_mul(per_pixel.max(1));
         if slots > MAX_SLOTS {
-            return Err(Error::TooLarge { what: format!("{what} ({}x{} pixels x {per_pixel})", self.width, self.height), size: slots, limit: MAX_SLOTS });
+            return Err(Error::TooLarge {
+                what: format!("{what} ({}x{} pixels x {per_pixel})", self.width, self.height),
+                size: slots,
+                limit: MAX_SLOTS,
+            });
         }
         Ok(())
     }

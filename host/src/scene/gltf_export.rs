@@ -304,7 +304,9 @@ pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Re
         }
         let idx: Vec<u8> = part.indices.iter().flat_map(|i| i.to_le_bytes()).collect();
         let pv = bin.view(&pos, Some(ARRAY_BUFFER));
-        accessors.push(json!({ "bufferView": pv, "componentType": FLOAT, "count": count, "type": "VEC3", "min": lo.to_array(), "max": hi.to_array() }));
+        accessors.push(
+            json!({ "bufferView": pv, "componentType": FLOAT, "count": count, "type": "VEC3", "min": lo.to_array(), "max": hi.to_array() }),
+        );
         let nv = bin.view(&nrm, Some(ARRAY_BUFFER));
         accessors.push(json!({ "bufferView": nv, "componentType": FLOAT, "count": count, "type": "VEC3" }));
         let tv = bin.view(&tex, Some(ARRAY_BUFFER));

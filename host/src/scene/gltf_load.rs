@@ -39,8 +39,8 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use dof_shaders::raster::mesh::{
-    ALPHA_BLEND, ALPHA_MASK, DOUBLE_SIDED, MeshMaterial, MeshVertex, NEAREST, TextureInfo, UNLIT, WRAP_CLAMP, WRAP_MIRROR,
-    WRAP_REPEAT, WRAP_S_SHIFT, WRAP_T_SHIFT,
+    ALPHA_BLEND, ALPHA_MASK, DOUBLE_SIDED, MeshMaterial, MeshVertex, NEAREST, TextureInfo, UNLIT, WRAP_CLAMP, WRAP_MIRROR, WRAP_REPEAT,
+    WRAP_S_SHIFT, WRAP_T_SHIFT,
 };
 use glam::{Mat3, Mat4, Vec3};
 use gltf::accessor::{DataType, Dimensions};
@@ -100,19 +100,20 @@ fn load(bytes: &[u8], base: Option<&Path>) -> Result<MeshScene> {
     if let Some(e) = wrong_glb_magic(bytes) {
         return Err(e);
     }
-    let invalid = |e: &dyn std::fmt::Display| {
-        scene_err(format!("not a valid glTF 2.0 file ({e}); expected glTF JSON or a complete binary .glb"))
-    };
+    let invalid =
+        |e: &dyn std::fmt::Display| scene_err(format!("not a valid glTF 2.0 file ({e}); expected glTF JSON or a complete binary .glb"));
     // Parsed, then validated once the references its validation trusts are checked.
     let gltf::Gltf { document, blob } = gltf::Gltf::from_slice_without_validation(bytes).map_err(|e| invalid(&e))?;
     let json = document.into_json();
     check_unvalidated(&json).map_err(|e| invalid(&e))?;
     let document = gltf::Document::from_json(json).map_err(|e| invalid(&e))?;
     let buffers = read_buffers(&document, base, blob)?;
-    let mut loader = Loader { doc: &document, base, buffers, images: HashMap::new(), textures: HashMap::new(), materials: HashMap::new(), out: empty() };
-    let scene = document.default_scene().or_else(|| document.scenes().next()).ok_or_else(|| {
-        scene_err("the glTF file holds no scene, so no triangles; add a scene whose nodes hold meshes")
-    })?;
+    let mut loader =
+        Loader { doc: &document, base, buffers, images: HashMap::new(), textures: HashMap::new(), materials: HashMap::new(), out: empty() };
+    let scene = document
+        .default_scene()
+        .or_else(|| document.scenes().next())
+        .ok_or_else(|| scene_err("the glTF file holds no scene, so no triangles; add a scene whose nodes hold meshes"))?;
     loader.out.lighting.ambient = extras_colour(&scene, "dof_ambient")?.unwrap_or(Lighting::default().ambient);
     loader.out.lighting.background = extras_colour(&scene, "dof_background")?.unwrap_or(Lighting::default().background);
     let mut light_found = false;
@@ -219,13 +220,16 @@ fn empty() -> MeshScene {
 /// A colour from the scene's extras (`"KEY": [r, g, b]`), `None` when absent.
 fn extras_colour(scene: &gltf::Scene, key: &str) -> Result<Option<[f32; 3]>> {
     let Some(raw) = scene.extras() else { return Ok(None) };
-    let value: serde_json::Value = serde_json::from_str(raw.get()).map_err(|e| scene_err(format!("the scene's extras are not valid JSON: {e}")))?;
+    let value: serde_json::Value =
+        serde_json::from_str(raw.get()).map_err(|e| scene_err(format!("the scene's extras are not valid JSON: {e}")))?;
     let Some(v) = value.get(key) else { return Ok(None) };
     let parsed = v.as_array().filter(|a| a.len() == 3).and_then(|a| {
         let c: Vec<f32> = a.iter().filter_map(|x| x.as_f64()).map(|x| x as f32).filter(|x| x.is_finite() && *x >= 0.0).collect();
         <[f32; 3]>::try_from(c).ok()
     });
-    parsed.map(Some).ok_or_else(|| scene_err(format!("the scene's extras key `{key}` must be [r, g, b] with finite, non-negative numbers, got {v}")))
+    parsed
+        .map(Some)
+        .ok_or_else(|| scene_err(format!("the scene's extras key `{key}` must be [r, g, b] with finite, non-negative numbers, got {v}")))
 }
 
 /// The most bytes an image file referenced by a glTF URI may hold (256 MiB); a larger file is
@@ -249,15 +253,17 @@ enum ReadLimit {
 /// FIFOs, devices or sockets), and never more than `limit` allows.
 fn read_uri(uri: &str, base: Option<&Path>, what: &str, limit: ReadLimit) -> Result<Vec<u8>> {
     if let Some(rest) = uri.strip_prefix("data:") {
-        let (_, data) = rest.split_once(";base64,").ok_or_else(|| {
-            scene_err(format!("{what} has a data URI that is not base64 (`data:...;base64,...` is required)"))
-        })?;
+        let (_, data) = rest
+            .split_once(";base64,")
+            .ok_or_else(|| scene_err(format!("{what} has a data URI that is not base64 (`data:...;base64,...` is required)")))?;
         return base64_decode(data).ok_or_else(|| scene_err(format!("{what} has a data URI with invalid base64")));
     }
     let relative = match uri.strip_prefix("file://").or_else(|| uri.strip_prefix("file:")) {
         Some(p) => percent_decode(p, what)?,
         None if uri.contains(':') => {
-            return Err(scene_err(format!("{what} refers to `{uri}`, whose URI scheme is not supported; use a relative file path or a data URI")));
+            return Err(scene_err(format!(
+                "{what} refers to `{uri}`, whose URI scheme is not supported; use a relative file path or a data URI"
+            )));
         }
         None => percent_decode(uri, what)?,
     };
@@ -301,11 +307,14 @@ fn resolve_inside(base: &Path, relative: &str, uri: &str, what: &str) -> Result<
     // Symbolic links: the file's real location must lie inside the folder's real location. A file
     // that does not exist (yet) is reported as unreadable by the read.
     if let Ok(real) = path.canonicalize() {
-        let real_base = base.canonicalize().map_err(|e| {
-            scene_err(format!("{what}: the folder of the .gltf file ({}) cannot be resolved: {e}", base.display()))
-        })?;
+        let real_base = base
+            .canonicalize()
+            .map_err(|e| scene_err(format!("{what}: the folder of the .gltf file ({}) cannot be resolved: {e}", base.display())))?;
         if !real.starts_with(&real_base) {
-            return Err(outside(&format!("which resolves (through a symbolic link) to `{}`, outside the folder of the .gltf file", real.display())));
+            return Err(outside(&format!(
+                "which resolves (through a symbolic link) to `{}`, outside the folder of the .gltf file",
+                real.display()
+            )));
         }
     }
     Ok(path)
@@ -317,7 +326,10 @@ fn resolve_inside(base: &Path, relative: &str, uri: &str, what: &str) -> Result<
 fn read_regular_file(path: &Path, uri: &str, what: &str, limit: ReadLimit) -> Result<Vec<u8>> {
     use std::io::Read;
     let unreadable = |e: std::io::Error| {
-        scene_err(format!("{what} refers to the file `{uri}` ({}), which cannot be read: {e}; put the file there or fix the URI", path.display()))
+        scene_err(format!(
+            "{what} refers to the file `{uri}` ({}), which cannot be read: {e}; put the file there or fix the URI",
+            path.display()
+        ))
     };
     let not_regular = || {
         scene_err(format!(
@@ -577,7 +589,11 @@ impl Loader<'_> {
                 self.out.triangles.push([f + a, f + b, f + c, material]);
             }
             if self.out.triangles.len() as u64 > MAX_TRIANGLES {
-                return Err(Error::TooLarge { what: "triangles of the scene".into(), size: self.out.triangles.len() as u64, limit: MAX_TRIANGLES });
+                return Err(Error::TooLarge {
+                    what: "triangles of the scene".into(),
+                    size: self.out.triangles.len() as u64,
+                    limit: MAX_TRIANGLES,
+                });
             }
         }
         Ok(())
@@ -682,7 +698,8 @@ impl Loader<'_> {
         let what = format!("{what} image {index}");
         let (bytes, mime) = match image.source() {
             gltf::image::Source::View { view, mime_type } => {
-                let data = self.buffers.get(view.buffer().index()).and_then(|b| b.get(view.offset()..view.offset().checked_add(view.length())?));
+                let data =
+                    self.buffers.get(view.buffer().index()).and_then(|b| b.get(view.offset()..view.offset().checked_add(view.length())?));
                 let data = data.ok_or_else(|| scene_err(format!("{what}: its buffer view runs past its buffer")))?;
                 (data.to_vec(), Some(mime_type))
             }

@@ -68,9 +68,7 @@ impl Reach {
             let n = if n.dot(wide.forward) < 0.0 { -n } else { n };
             (n, n.dot(wide.eye))
         };
-        Ok(Reach {
-            planes: [side(bl, tl), side(tr, br), side(tl, tr), side(br, bl), (wide.forward, wide.forward.dot(wide.eye) + z_min)],
-        })
+        Ok(Reach { planes: [side(bl, tl), side(tr, br), side(tl, tr), side(br, bl), (wide.forward, wide.forward.dot(wide.eye) + z_min)] })
     }
 
     /// Nearest planar depth of the convex polygon `poly` (its corners in order) inside the reach,
@@ -115,11 +113,19 @@ pub fn auto_margin(scene: &Scene, camera: &Camera, lens: &ThinLens, z_min: f32) 
                 inside.then(|| ((center - eye).dot(fwd) - radius).max(z_min))
             }
             Shape::Cuboid { min, max } => {
-                let c = |i: u32| Vec3::new(if i & 1 == 0 { min.x } else { max.x }, if i & 2 == 0 { min.y } else { max.y }, if i & 4 == 0 { min.z } else { max.z });
+                let c = |i: u32| {
+                    Vec3::new(
+                        if i & 1 == 0 { min.x } else { max.x },
+                        if i & 2 == 0 { min.y } else { max.y },
+                        if i & 4 == 0 { min.z } else { max.z },
+                    )
+                };
                 const FACES: [[u32; 4]; 6] = [[0, 1, 3, 2], [4, 5, 7, 6], [0, 1, 5, 4], [2, 3, 7, 6], [0, 2, 6, 4], [1, 3, 7, 5]];
                 FACES.iter().filter_map(|f| reach.nearest(&f.map(c), eye, fwd)).reduce(f32::min)
             }
-            Shape::Quad { corner, edge_u, edge_v } => reach.nearest(&[corner, corner + edge_u, corner + edge_u + edge_v, corner + edge_v], eye, fwd),
+            Shape::Quad { corner, edge_u, edge_v } => {
+                reach.nearest(&[corner, corner + edge_u, corner + edge_u + edge_v, corner + edge_v], eye, fwd)
+            }
             Shape::Plane { point, normal } => plane_depth(&wide, point, normal, z_min),
         };
         if let Some(z) = depth {
@@ -176,7 +182,9 @@ impl GuardBand {
             GuardBand::Off => Ok(0),
             GuardBand::Auto => auto(),
             GuardBand::Pixels(m) if m <= MAX_GUARD_BAND => Ok(m),
-            GuardBand::Pixels(m) => Err(crate::Error::TooLarge { what: "guard band (px)".into(), size: m as u64, limit: MAX_GUARD_BAND as u64 }),
+            GuardBand::Pixels(m) => {
+                Err(crate::Error::TooLarge { what: "guard band (px)".into(), size: m as u64, limit: MAX_GUARD_BAND as u64 })
+            }
         }
     }
 }

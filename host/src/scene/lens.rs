@@ -83,9 +83,7 @@ impl LensSettings {
         let zf = match self.focus {
             Focus::Distance(d) => {
                 if !(d > 0.0 && d.is_finite()) {
-                    return Err(Error::InvalidArgument(format!(
-                        "the focus distance must be positive and finite, got {d}"
-                    )));
+                    return Err(Error::InvalidArgument(format!("the focus distance must be positive and finite, got {d}")));
                 }
                 d
             }
@@ -137,9 +135,7 @@ impl LensSettings {
             }
             Aperture::Radius(r) => {
                 if !(r >= 0.0 && r.is_finite()) {
-                    return Err(Error::InvalidArgument(format!(
-                        "the aperture radius must be finite and not negative, got {r}"
-                    )));
+                    return Err(Error::InvalidArgument(format!("the aperture radius must be finite and not negative, got {r}")));
                 }
                 r
             }

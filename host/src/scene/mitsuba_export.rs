@@ -193,7 +193,9 @@ fn export_primitive(
     Ok(Ok(match prim.shape {
         Shape::Sphere { center, radius } => {
             let Material::Emissive(radiance) = prim.material else {
-                return Ok(Err("the lighting model shades a diffuse sphere differently at every point; only emissive spheres export exactly".into()));
+                return Ok(Err(
+                    "the lighting model shades a diffuse sphere differently at every point; only emissive spheres export exactly".into(),
+                ));
             };
             if (center - eye).length() <= radius + view.radius {
                 return Ok(Err("the lens touches or lies inside the sphere".into()));
@@ -224,7 +226,9 @@ fn export_primitive(
                 Reach::Horizon => {
                     let half = HORIZON_FACTOR * height;
                     let gap_px = view.frame.height as f32 / (2.0 * view.frame.tan_half_fov) / HORIZON_FACTOR;
-                    notes.push(format!("plane {index}: horizon in view, a square of half-side {half} (gap below the horizon {gap_px:.1e} px)"));
+                    notes.push(format!(
+                        "plane {index}: horizon in view, a square of half-side {half} (gap below the horizon {gap_px:.1e} px)"
+                    ));
                     half
                 }
                 Reach::Within(d) => {
@@ -466,7 +470,8 @@ fn write_shape(x: &mut Xml, shape: &Out) {
             x.open("transform", &[("name", "to_world".into())]);
             // Columns: local x, y, z (the emitting side) and the centre.
             let cols = [half_u, half_v, normal, center];
-            let m: Vec<String> = (0..3).flat_map(|r| cols.iter().map(move |c| num(c[r]))).chain(["0", "0", "0", "1"].map(String::from)).collect();
+            let m: Vec<String> =
+                (0..3).flat_map(|r| cols.iter().map(move |c| num(c[r]))).chain(["0", "0", "0", "1"].map(String::from)).collect();
             x.leaf("matrix", &[("value", m.join(" "))]);
             x.close("transform");
             x.leaf("ref", &[("id", "black".into())]);

@@ -40,17 +40,17 @@ pub mod sampling;
 pub use analytic::{Albedo, Hit, Lighting, Material, Primitive, Scene, Shape};
 pub use builtin::{BuiltinScene, builtin, builtin_names};
 pub use camera::{Camera, CameraFrame, Ray};
+pub use dof_shaders::lens::{ArtistLens, ThinLens};
+/// The vector type of the scene API (so users need not depend on `glam` themselves).
+pub use glam::Vec3;
 #[cfg(feature = "gltf")]
 pub use gltf_export::{ExportOptions, export_builtin_glb, export_glb};
 #[cfg(feature = "gltf")]
 pub use gltf_load::{load_gltf, load_gltf_slice};
-pub use dof_shaders::lens::{ArtistLens, ThinLens};
-/// The vector type of the scene API (so users need not depend on `glam` themselves).
-pub use glam::Vec3;
+pub use guard_band::{GuardBand, MAX_GUARD_BAND};
+pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
 pub use mesh::{LoadReport, MeshCamera, MeshScene};
 #[cfg(feature = "eval")]
 pub use mitsuba_export::{MitsubaExport, MitsubaOptions, MitsubaScene, export_metadata, export_mitsuba};
-pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
-pub use guard_band::{GuardBand, MAX_GUARD_BAND};
 pub use raycast::{LayerOptions, MultiLayerImage, apply_disocclusion, raycast_layers};
 pub use reference::{AutoOptions, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};

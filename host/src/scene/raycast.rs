@@ -117,11 +117,16 @@ pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
 /// rasteriser's, seen by `frame`, `margin` pixels of guard band around the frame): the
 /// disocclusion buffer from its front layer, and the frame's statistics with and without it. The
 /// layers returned are masked when `options.disocclusion` is on.
-pub fn apply_disocclusion(full: LayeredImage, frame: &CameraFrame, lens: &ThinLens, options: &LayerOptions, margin: u32) -> MultiLayerImage {
+pub fn apply_disocclusion(
+    full: LayeredImage,
+    frame: &CameraFrame,
+    lens: &ThinLens,
+    options: &LayerOptions,
+    margin: u32,
+) -> MultiLayerImage {
     let l = full.max_layers as usize;
-    let front: Vec<f32> = (0..full.counts.len())
-        .map(|p| if full.counts[p] > 0 { full.fragments[p * l].depth } else { f32::INFINITY })
-        .collect();
+    let front: Vec<f32> =
+        (0..full.counts.len()).map(|p| if full.counts[p] > 0 { full.fragments[p * l].depth } else { f32::INFINITY }).collect();
     let mask = disocclusion_mask(frame, lens, &front, options.edge_depth_ratio);
 
     let without_mask = full.crop(margin).stats();
@@ -147,12 +152,9 @@ pub fn apply_disocclusion(full: LayeredImage, frame: &CameraFrame, lens: &ThinLe
 fn cast_all(scene: &Scene, frame: &CameraFrame, lens: &ThinLens, options: &LayerOptions, image: &mut LayeredImage) {
     let width = frame.width as usize;
     let l = options.max_layers as usize;
-    image
-        .fragments
-        .par_chunks_mut(width * l)
-        .zip(image.counts.par_chunks_mut(width))
-        .enumerate()
-        .for_each_init(Vec::<Hit>::new, |hits, (y, (fragments, counts))| {
+    image.fragments.par_chunks_mut(width * l).zip(image.counts.par_chunks_mut(width)).enumerate().for_each_init(
+        Vec::<Hit>::new,
+        |hits, (y, (fragments, counts))| {
             for x in 0..width {
                 let ray = frame.pixel_ray(x as u32, y as u32);
                 scene.all_hits(&ray, 0.0, hits);
@@ -178,7 +180,8 @@ fn cast_all(scene: &Scene, frame: &CameraFrame, lens: &ThinLens, options: &Layer
                 }
                 counts[x] = n as u32;
             }
-        });
+        },
+    );
 }
 
 /// Whether two front-layer depths form a discontinuity.

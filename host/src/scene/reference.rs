@@ -35,9 +35,9 @@ use super::analytic::Scene;
 use super::camera::{Camera, CameraFrame};
 use super::sampling::{concentric_disc, pixel_rng, stratified};
 use crate::error::{Error, Result};
-use crate::progress::Progress;
-use crate::metrics::{psnr_of_mse, squared_error};
 use crate::layers::RgbImage;
+use crate::metrics::{psnr_of_mse, squared_error};
+use crate::progress::Progress;
 
 /// One reference render.
 #[derive(Clone, Debug, PartialEq)]
@@ -142,12 +142,9 @@ fn tonemapped_mse(a: impl Iterator<Item = [f32; 3]>, b: impl Iterator<Item = [f3
 
 fn check_region(region: &Option<Vec<bool>>, frame: &CameraFrame) -> Result<()> {
     match region {
-        Some(r) if r.len() != frame.width as usize * frame.height as usize => Err(Error::InvalidArgument(format!(
-            "the noise region has {} entries for a {}x{} image",
-            r.len(),
-            frame.width,
-            frame.height
-        ))),
+        Some(r) if r.len() != frame.width as usize * frame.height as usize => {
+            Err(Error::InvalidArgument(format!("the noise region has {} entries for a {}x{} image", r.len(), frame.width, frame.height)))
+        }
         _ => Ok(()),
     }
 }

@@ -69,11 +69,7 @@ pub fn fragment_kept(
         return true;
     }
     let alpha = coverage(p, tri[3], interpolate_uv(vertices, tri, b0, b1), materials, textures, texels);
-    if flags & ALPHA_MASK != 0 {
-        alpha >= load_f32(materials, tri[3] * MATERIAL_WORDS + 7)
-    } else {
-        alpha > 0.0
-    }
+    if flags & ALPHA_MASK != 0 { alpha >= load_f32(materials, tri[3] * MATERIAL_WORDS + 7) } else { alpha > 0.0 }
 }
 
 /// Each triangle's conservative tile range for this view ([`tile_bounds`]): the fallback's prepass,
@@ -125,7 +121,8 @@ pub fn fallback_pass<G: Group, M: Mem>(
     let (x0, y0) = (wx * TILE, wy * TILE);
     let mut t = 0;
     while t < p.triangles {
-        let meets = wx >= bounds.load(4 * t) && wy >= bounds.load(4 * t + 1) && wx <= bounds.load(4 * t + 2) && wy <= bounds.load(4 * t + 3);
+        let meets =
+            wx >= bounds.load(4 * t) && wy >= bounds.load(4 * t + 1) && wx <= bounds.load(4 * t + 2) && wy <= bounds.load(4 * t + 3);
         if meets {
             let (v, _, _) = fetch(p, t, &vertices, &triangles, &materials);
             let e = edges(&[clip(p, v[0]), clip(p, v[1]), clip(p, v[2])], p.near);
@@ -185,12 +182,7 @@ fn tile_bounds(p: &RasterParams, c: &[[f32; 3]; 3]) -> [u32; 4] {
     }
     let first = |v: f32| ceil(v - 0.5).max(0.0) as u32;
     let last = |v: f32, n: u32| (floor(v - 0.5).max(0.0) as u32).min(n - 1);
-    [
-        first(lo[0]) / TILE,
-        first(lo[1]) / TILE,
-        last(hi[0], p.width) / TILE,
-        last(hi[1], p.height) / TILE,
-    ]
+    [first(lo[0]) / TILE, first(lo[1]) / TILE, last(hi[0], p.width) / TILE, last(hi[1], p.height) / TILE]
 }
 
 kernel!(
@@ -224,11 +216,7 @@ pub fn raster_vs(
     let corner = vertex as u32 % 3;
     let (v, _, drawn) = fetch(p, t, &GpuRead(vertices), &GpuRead(triangles), &GpuRead(materials));
     let c = clip(p, v[corner as usize]);
-    *position = if drawn {
-        spirv_std::glam::Vec4::new(c[0], c[1], p.near, c[2])
-    } else {
-        spirv_std::glam::Vec4::new(2.0, 2.0, 0.5, 1.0)
-    };
+    *position = if drawn { spirv_std::glam::Vec4::new(c[0], c[1], p.near, c[2]) } else { spirv_std::glam::Vec4::new(2.0, 2.0, 0.5, 1.0) };
     *bary = spirv_std::glam::Vec2::new(if corner == 0 { 1.0 } else { 0.0 }, if corner == 1 { 1.0 } else { 0.0 });
     *depth = c[2];
     *tri = t;

@@ -7,8 +7,8 @@
 //! - [`draw`]: the depth-tested draw into a visibility buffer (graphics stages and CPU fallback);
 //! - [`shade`]: the visibility buffer shaded into a layer or the accumulation buffer.
 
-pub mod mesh;
 pub mod draw;
+pub mod mesh;
 pub mod project;
 pub mod shade;
 pub mod texture;

@@ -126,11 +126,7 @@ pub fn edges(c: &[[f32; 3]; 3], near: f32) -> Edges {
         return Edges { homogeneous, e: [e0, e1, e2], det, s0: [0.0; 2], d1: [0.0; 2], d2: [0.0; 2], area: 0.0, inv_w: [0.0; 3] };
     }
     let inv_w = [1.0 / c[0][2], 1.0 / c[1][2], 1.0 / c[2][2]];
-    let s = [
-        [c[0][0] * inv_w[0], c[0][1] * inv_w[0]],
-        [c[1][0] * inv_w[1], c[1][1] * inv_w[1]],
-        [c[2][0] * inv_w[2], c[2][1] * inv_w[2]],
-    ];
+    let s = [[c[0][0] * inv_w[0], c[0][1] * inv_w[0]], [c[1][0] * inv_w[1], c[1][1] * inv_w[1]], [c[2][0] * inv_w[2], c[2][1] * inv_w[2]]];
     let d1 = [s[1][0] - s[0][0], s[1][1] - s[0][1]];
     let d2 = [s[2][0] - s[0][0], s[2][1] - s[0][1]];
     let area = d1[0] * d2[1] - d1[1] * d2[0];

@@ -124,7 +124,8 @@ pub fn shade_pass<G: Group, M: Mem>(
         let found = id > 0;
         let (rgb, alpha, depth) = if found {
             let (b0, b1) = (f32::from_bits(vis.load(at + 2)), f32::from_bits(vis.load(at + 3)));
-            let (rgb, alpha) = shade_point(&p.light, p.eye, p.textures, id - 1, b0, b1, &vertices, &triangles, &materials, &textures, &texels);
+            let (rgb, alpha) =
+                shade_point(&p.light, p.eye, p.textures, id - 1, b0, b1, &vertices, &triangles, &materials, &textures, &texels);
             (rgb, alpha, f32::from_bits(vis.load(at + 1)))
         } else if p.mode == ACCUMULATE || is_finite(f32::from_bits(reach.load(pi))) {
             (p.light.background, 1.0, f32::INFINITY)

@@ -16,7 +16,13 @@ pub fn load_f32(m: &impl Load, i: u32) -> f32 {
 fn wrap_index(i: i32, size: u32, wrap: u32) -> u32 {
     let n = size as i32;
     let r = if wrap == WRAP_CLAMP {
-        if i < 0 { 0 } else if i >= n { n - 1 } else { i }
+        if i < 0 {
+            0
+        } else if i >= n {
+            n - 1
+        } else {
+            i
+        }
     } else if wrap == WRAP_MIRROR {
         let period = 2 * n;
         let m = ((i % period) + period) % period;
@@ -40,7 +46,8 @@ pub fn sample(textures: &impl Load, texels: &impl Load, texture_count: u32, inde
         return [1.0; 4];
     }
     let at = index * TEXTURE_WORDS;
-    let (offset, width, height, sampler) = (textures.load_word(at), textures.load_word(at + 1), textures.load_word(at + 2), textures.load_word(at + 3));
+    let (offset, width, height, sampler) =
+        (textures.load_word(at), textures.load_word(at + 1), textures.load_word(at + 2), textures.load_word(at + 3));
     if width == 0 || height == 0 {
         return [1.0; 4];
     }

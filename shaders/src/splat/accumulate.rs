@@ -20,10 +20,10 @@
 
 use super::fragment::{Fragment, shaped_weight, weight_sum};
 use super::pack::load_sharp;
-use crate::wg::{inclusive_scan, max};
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Mem};
 use crate::lens::is_nan;
+use crate::wg::{inclusive_scan, max};
 
 /// Coverage short of full at which a pixel stops.
 pub const SATURATED: f32 = 1.0 / 1024.0;

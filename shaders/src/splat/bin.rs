@@ -17,10 +17,10 @@
 //!   stable sort that follows is deterministic.
 
 use super::fragment::Fragment;
-use crate::wg::{add, for_each_item, inclusive_scan, max};
 use super::plan::planned;
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Mem};
+use crate::wg::{add, for_each_item, inclusive_scan, max};
 
 /// Cells one invocation of `splat_tile_count`/`splat_compact` handles: (32 px / 1 px)² = 4 · 256.
 pub const CELLS_PER_THREAD: u32 = 4;

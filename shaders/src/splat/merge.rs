@@ -19,8 +19,8 @@
 use super::fragment::{Fragment, depth_of};
 use super::{FLAG_UMBRA_MERGE, SplatParams, stats};
 use crate::exec::{Group, Mem};
-use crate::wg::for_each_item;
 use crate::lens::ThinLens;
+use crate::wg::for_each_item;
 
 /// 1/√π: the radius of the disc with the area of a unit square.
 const INV_SQRT_PI: f32 = 0.564_189_6;

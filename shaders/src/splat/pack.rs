@@ -12,8 +12,8 @@
 use super::fragment::{Fragment, clamp_half};
 use super::{SplatParams, stats};
 use crate::exec::{Group, Mem};
-use crate::wg::for_each_item;
 use crate::lens::{is_finite, is_positive};
+use crate::wg::for_each_item;
 
 /// The slot `(pixel, k)` of the input: colour and depth.
 #[inline]

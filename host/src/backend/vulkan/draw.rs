@@ -82,10 +82,20 @@ impl Target {
         let made = unsafe {
             (|| -> Result<()> {
                 (t.image, t.view) = t.attachment(device, allocator, FORMAT, colour_usage, vk::ImageAspectFlags::COLOR)?;
-                (t.depth, t.depth_view) =
-                    t.attachment(device, allocator, DEPTH_FORMAT, vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT, vk::ImageAspectFlags::DEPTH)?;
+                (t.depth, t.depth_view) = t.attachment(
+                    device,
+                    allocator,
+                    DEPTH_FORMAT,
+                    vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
+                    vk::ImageAspectFlags::DEPTH,
+                )?;
                 let views = [t.view, t.depth_view];
-                let fb = vk::FramebufferCreateInfo::default().render_pass(render_pass).attachments(&views).width(size[0]).height(size[1]).layers(1);
+                let fb = vk::FramebufferCreateInfo::default()
+                    .render_pass(render_pass)
+                    .attachments(&views)
+                    .width(size[0])
+                    .height(size[1])
+                    .layers(1);
                 t.framebuffer = device.create_framebuffer(&fb, None).vk("vkCreateFramebuffer")?;
                 Ok(())
             })()
@@ -142,7 +152,11 @@ impl Target {
                 return Err(e);
             }
             let range = vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1);
-            let view_info = vk::ImageViewCreateInfo::default().image(image).view_type(vk::ImageViewType::TYPE_2D).format(format).subresource_range(range);
+            let view_info = vk::ImageViewCreateInfo::default()
+                .image(image)
+                .view_type(vk::ImageViewType::TYPE_2D)
+                .format(format)
+                .subresource_range(range);
             match device.create_image_view(&view_info, None).vk("vkCreateImageView") {
                 Ok(view) => Ok((image, view)),
                 Err(e) => {
@@ -174,12 +188,16 @@ pub(super) fn check_format(instance: &ash::Instance, physical: vk::PhysicalDevic
     let props = unsafe { instance.get_physical_device_format_properties(physical, FORMAT) };
     let need = vk::FormatFeatureFlags::COLOR_ATTACHMENT | vk::FormatFeatureFlags::COLOR_ATTACHMENT_BLEND;
     if !props.optimal_tiling_features.contains(need) {
-        return Err(Error::InvalidArgument("the device cannot blend into RGBA32F attachments, which the draws need; use the CPU backend".into()));
+        return Err(Error::InvalidArgument(
+            "the device cannot blend into RGBA32F attachments, which the draws need; use the CPU backend".into(),
+        ));
     }
     // SAFETY: as above.
     let depth = unsafe { instance.get_physical_device_format_properties(physical, DEPTH_FORMAT) };
     if !depth.optimal_tiling_features.contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT) {
-        return Err(Error::InvalidArgument("the device has no D32 depth attachments, which the rasteriser needs; use the CPU backend".into()));
+        return Err(Error::InvalidArgument(
+            "the device has no D32 depth attachments, which the rasteriser needs; use the CPU backend".into(),
+        ));
     }
     Ok(())
 }
@@ -194,9 +212,16 @@ fn create_pipeline(device: &ash::Device, draw: &DrawDesc) -> Result<GraphicsPipe
     let (vs_name, fs_name) = (CString::new(vs_name).map_err(nul)?, CString::new(fs_name).map_err(nul)?);
     let stages = vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT;
     let bindings: Vec<_> = (0..draw.bindings)
-        .map(|b| vk::DescriptorSetLayoutBinding::default().binding(b).descriptor_type(vk::DescriptorType::STORAGE_BUFFER).descriptor_count(1).stage_flags(stages))
+        .map(|b| {
+            vk::DescriptorSetLayoutBinding::default()
+                .binding(b)
+                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                .descriptor_count(1)
+                .stage_flags(stages)
+        })
         .collect();
-    let set_info = vk::DescriptorSetLayoutCreateInfo::default().flags(vk::DescriptorSetLayoutCreateFlags::PUSH_DESCRIPTOR_KHR).bindings(&bindings);
+    let set_info =
+        vk::DescriptorSetLayoutCreateInfo::default().flags(vk::DescriptorSetLayoutCreateFlags::PUSH_DESCRIPTOR_KHR).bindings(&bindings);
     let ranges = [vk::PushConstantRange::default().stage_flags(stages).size(draw.push_bytes.div_ceil(4) * 4)];
 
     let attachment = [

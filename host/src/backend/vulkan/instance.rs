@@ -38,10 +38,7 @@ impl InstanceCtx {
         let entry = unsafe { ash::Entry::load() }.map_err(|e| Error::NoVulkan(format!("cannot load the Vulkan loader: {e}")))?;
         let messages: MessageLog = Arc::default();
 
-        let app = vk::ApplicationInfo::default()
-            .application_name(c"dof")
-            .engine_name(c"dof")
-            .api_version(vk::API_VERSION_1_2);
+        let app = vk::ApplicationInfo::default().application_name(c"dof").engine_name(c"dof").api_version(vk::API_VERSION_1_2);
         let mut layers: Vec<*const c_char> = Vec::new();
         let mut extensions: Vec<*const c_char> = Vec::new();
         let sync_validation = [vk::ValidationFeatureEnableEXT::SYNCHRONIZATION_VALIDATION];
@@ -75,9 +72,7 @@ impl InstanceCtx {
         }
         // SAFETY: every pointer in `create_info` refers to locals alive for the call.
         let instance = unsafe { entry.create_instance(&create_info, None) }.map_err(|result| match result {
-            vk::Result::ERROR_INCOMPATIBLE_DRIVER => {
-                Error::NoVulkan("vkCreateInstance found no driver (ICD) supporting Vulkan 1.2".into())
-            }
+            vk::Result::ERROR_INCOMPATIBLE_DRIVER => Error::NoVulkan("vkCreateInstance found no driver (ICD) supporting Vulkan 1.2".into()),
             result => Error::Vulkan { call: "vkCreateInstance", result },
         })?;
         let mut ctx = InstanceCtx { entry, instance, debug: None, messages, owned: true };
@@ -198,10 +193,7 @@ impl Features {
     /// The core and Vulkan 1.2 feature structs enabling exactly these features (to chain into
     /// `VkDeviceCreateInfo`).
     pub fn structs(&self) -> (vk::PhysicalDeviceFeatures, vk::PhysicalDeviceVulkan12Features<'static>) {
-        let core = vk::PhysicalDeviceFeatures::default()
-            .shader_float64(self.float64)
-            .shader_int64(self.int64)
-            .shader_int16(self.int16);
+        let core = vk::PhysicalDeviceFeatures::default().shader_float64(self.float64).shader_int64(self.int64).shader_int16(self.int16);
         let v12 = vk::PhysicalDeviceVulkan12Features::default()
             .shader_int8(self.int8)
             .vulkan_memory_model(self.memory_model)
@@ -217,10 +209,7 @@ impl Features {
             (self.int16 && core.shader_int16 == vk::FALSE, "shaderInt16"),
             (self.int8 && v12.shader_int8 == vk::FALSE, "shaderInt8"),
             (self.memory_model && v12.vulkan_memory_model == vk::FALSE, "vulkanMemoryModel"),
-            (
-                self.memory_model_device_scope && v12.vulkan_memory_model_device_scope == vk::FALSE,
-                "vulkanMemoryModelDeviceScope",
-            ),
+            (self.memory_model_device_scope && v12.vulkan_memory_model_device_scope == vk::FALSE, "vulkanMemoryModelDeviceScope"),
         ]
         .into_iter()
         .filter_map(|(missing, name)| missing.then_some(name))
@@ -387,10 +376,8 @@ pub(super) fn select(mut all: Vec<Candidate>, choice: Option<&str>) -> Result<Ca
                 .min_by_key(|(_, c)| (type_rank(&c.info.device_type), c.info.index))
                 .map(|(i, _)| i);
             let Some(best) = best else {
-                let reasons: Vec<String> = all
-                    .iter()
-                    .map(|c| format!("{} ({}) {}", c.info.index, c.info.name, c.problem.as_deref().unwrap_or("")))
-                    .collect();
+                let reasons: Vec<String> =
+                    all.iter().map(|c| format!("{} ({}) {}", c.info.index, c.info.name, c.problem.as_deref().unwrap_or(""))).collect();
                 return Err(Error::NoVulkan(format!("no usable Vulkan device: {}", reasons.join("; "))));
             };
             best

@@ -23,9 +23,7 @@ mod pipelines;
 mod recorder;
 mod spirv;
 
-use super::{
-    Backend, BackendCounters, BackendKind, BufferId, CommandTime, ImageRef, Limits, check_dispatch, check_draw, draw_fallback,
-};
+use super::{Backend, BackendCounters, BackendKind, BufferId, CommandTime, ImageRef, Limits, check_dispatch, check_draw, draw_fallback};
 use crate::error::{Error, Result, VkContext};
 use ash::vk;
 use ash::vk::Handle;
@@ -40,10 +38,10 @@ use std::collections::{HashMap, HashSet};
 use std::ffi::CStr;
 use std::sync::{Arc, Mutex, MutexGuard};
 
-/// The `ash` and `gpu-allocator` the backend is built with, for callers handing it their handles.
-pub use {ash, gpu_allocator};
 pub use instance::DEVICE_ENV;
 pub use memory::SharedAllocator;
+/// The `ash` and `gpu-allocator` the backend is built with, for callers handing it their handles.
+pub use {ash, gpu_allocator};
 
 #[derive(Clone, Debug, Default)]
 pub struct VulkanOptions {
@@ -194,9 +192,10 @@ impl VulkanBackend {
         let instance = InstanceCtx::borrowed(entry, instance);
         // SAFETY: the instance is live (the caller's contract).
         let physical = unsafe { instance.instance.enumerate_physical_devices() }.vk("vkEnumeratePhysicalDevices")?;
-        let index = physical.iter().position(|&p| p == physical_device).ok_or_else(|| {
-            Error::InvalidArgument("from_raw: the physical device is not one of the instance's".into())
-        })?;
+        let index = physical
+            .iter()
+            .position(|&p| p == physical_device)
+            .ok_or_else(|| Error::InvalidArgument("from_raw: the physical device is not one of the instance's".into()))?;
         let features = Features::needed_by(&spirv::all_capabilities());
         let candidate = instance::describe(&instance.instance, physical_device, index, features)?;
         if let Some(problem) = &candidate.problem {
@@ -350,7 +349,9 @@ impl VulkanBackend {
     /// recording uses stays alive until it completed.
     pub unsafe fn begin_external(&mut self, cb: vk::CommandBuffer) -> Result<()> {
         if self.recorder.is_external() {
-            return Err(Error::InvalidArgument("begin_external: already recording into a caller's command buffer; call end_external first".into()));
+            return Err(Error::InvalidArgument(
+                "begin_external: already recording into a caller's command buffer; call end_external first".into(),
+            ));
         }
         if cb == vk::CommandBuffer::null() {
             return Err(Error::InvalidArgument("begin_external: the command buffer is null".into()));
@@ -409,10 +410,7 @@ impl VulkanBackend {
         let b = self.buffer(id)?;
         match offset.checked_add(words) {
             Some(end) if end <= b.words => Ok(b.handle),
-            _ => Err(Error::InvalidArgument(format!(
-                "range {offset}..{offset}+{words} outside buffer {} of {} words",
-                id.0, b.words
-            ))),
+            _ => Err(Error::InvalidArgument(format!("range {offset}..{offset}+{words} outside buffer {} of {} words", id.0, b.words))),
         }
     }
 
@@ -598,7 +596,10 @@ fn storage_writes(infos: &[vk::DescriptorBufferInfo]) -> Vec<vk::WriteDescriptor
         .iter()
         .enumerate()
         .map(|(i, info)| {
-            vk::WriteDescriptorSet::default().dst_binding(i as u32).descriptor_type(vk::DescriptorType::STORAGE_BUFFER).buffer_info(std::slice::from_ref(info))
+            vk::WriteDescriptorSet::default()
+                .dst_binding(i as u32)
+                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                .buffer_info(std::slice::from_ref(info))
         })
         .collect()
 }
@@ -693,9 +694,8 @@ impl Backend for VulkanBackend {
             staging.mapped()?[..chunk.len()].copy_from_slice(chunk);
             // Host writes before vkQueueSubmit are visible to the device (the memory is host-coherent).
             let src = staging.buffer;
-            let region = [vk::BufferCopy::default()
-                .dst_offset(offset_words * 4 + (i as u64) * STAGING_CHUNK_BYTES)
-                .size(chunk.len() as u64)];
+            let region =
+                [vk::BufferCopy::default().dst_offset(offset_words * 4 + (i as u64) * STAGING_CHUNK_BYTES).size(chunk.len() as u64)];
             self.recorder.run_once(&self.device, |d, cb| {
                 // Earlier submissions' accesses to the target come first.
                 recorder::full_barrier(d, cb, graphics);
@@ -718,9 +718,8 @@ impl Backend for VulkanBackend {
         let out_bytes: &mut [u8] = bytemuck::cast_slice_mut(&mut out);
         for (i, chunk) in out_bytes.chunks_mut(STAGING_CHUNK_BYTES as usize).enumerate() {
             let dst = self.readback.get(&self.device.device, &mut lock(&allocator), chunk.len() as u64)?.buffer;
-            let region = [vk::BufferCopy::default()
-                .src_offset(offset_words * 4 + (i as u64) * STAGING_CHUNK_BYTES)
-                .size(chunk.len() as u64)];
+            let region =
+                [vk::BufferCopy::default().src_offset(offset_words * 4 + (i as u64) * STAGING_CHUNK_BYTES).size(chunk.len() as u64)];
             self.recorder.run_once(&self.device, |d, cb| {
                 recorder::full_barrier(d, cb, graphics);
                 // SAFETY: `cb` is recording; both buffers are alive and the region lies inside them.

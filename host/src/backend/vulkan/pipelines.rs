@@ -42,8 +42,7 @@ impl Pipelines {
 fn create(device: &ash::Device, kernel: &KernelDesc) -> Result<Pipeline> {
     let (words, name) = spirv::kernel_module(kernel.entry)
         .ok_or_else(|| Error::InvalidArgument(format!("no SPIR-V module holds the entry point `{}`", kernel.entry)))?;
-    let entry = CString::new(name)
-        .map_err(|_| Error::InvalidArgument(format!("kernel entry `{}` contains a NUL byte", kernel.entry)))?;
+    let entry = CString::new(name).map_err(|_| Error::InvalidArgument(format!("kernel entry `{}` contains a NUL byte", kernel.entry)))?;
     let bindings: Vec<_> = (0..kernel.bindings)
         .map(|b| {
             vk::DescriptorSetLayoutBinding::default()

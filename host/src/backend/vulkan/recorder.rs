@@ -251,7 +251,11 @@ impl Recorder {
         }
         let touched = self.touched.get_or_insert_with(Touched::default);
         for &(h, writes) in accessed {
-            if writes { touched.written.insert(h) } else { touched.read.insert(h) };
+            if writes {
+                touched.written.insert(h)
+            } else {
+                touched.read.insert(h)
+            };
         }
         // SAFETY: `cb` is recording; the queries were reset in it and each is written once.
         unsafe {

@@ -92,7 +92,14 @@ impl Controls {
         let right = forward.cross(camera.up).normalize_or_zero();
         let up = camera.up.normalize_or_zero();
         let mut step = Vec3::ZERO;
-        for (key, dir) in [(KeyCode::KeyW, forward), (KeyCode::KeyS, -forward), (KeyCode::KeyD, right), (KeyCode::KeyA, -right), (KeyCode::KeyE, up), (KeyCode::KeyQ, -up)] {
+        for (key, dir) in [
+            (KeyCode::KeyW, forward),
+            (KeyCode::KeyS, -forward),
+            (KeyCode::KeyD, right),
+            (KeyCode::KeyA, -right),
+            (KeyCode::KeyE, up),
+            (KeyCode::KeyQ, -up),
+        ] {
             if self.held.contains(&key) {
                 step += dir;
             }

@@ -54,15 +54,17 @@ pub struct Device {
 
 impl Device {
     /// The instance (with the surface extensions `display` needs) and the instance-level loaders.
-    pub fn instance(display: RawDisplayHandle, validation: bool) -> Result<(ash::Entry, ash::Instance, Option<(ash::ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>, Arc<Log>)> {
+    pub fn instance(
+        display: RawDisplayHandle,
+        validation: bool,
+    ) -> Result<(ash::Entry, ash::Instance, Option<(ash::ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>, Arc<Log>)> {
         let log: Arc<Log> = Arc::default();
         // SAFETY: loading the system's Vulkan loader; the create infos point at live locals.
         unsafe {
             let entry = ash::Entry::load().context("no Vulkan loader (install a Vulkan driver, e.g. mesa-vulkan-drivers)")?;
             let app = vk::ApplicationInfo::default().application_name(c"dof view").api_version(VulkanBackend::REQUIRED_API_VERSION);
-            let mut extensions: Vec<*const c_char> = ash_window::enumerate_required_extensions(display)
-                .context("this display has no Vulkan surface support")?
-                .to_vec();
+            let mut extensions: Vec<*const c_char> =
+                ash_window::enumerate_required_extensions(display).context("this display has no Vulkan surface support")?.to_vec();
             let layers = [c"VK_LAYER_KHRONOS_validation".as_ptr()];
             let sync = [vk::ValidationFeatureEnableEXT::SYNCHRONIZATION_VALIDATION];
             let mut features = vk::ValidationFeaturesEXT::default().enabled_validation_features(&sync);
@@ -93,7 +95,12 @@ impl Device {
     /// Picks a device that can present to `surface` with a graphics and compute queue and the
     /// library's extensions (`name` filters by device name), and makes it.
     pub fn new(
-        (entry, instance, messenger, log): (ash::Entry, ash::Instance, Option<(ash::ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>, Arc<Log>),
+        (entry, instance, messenger, log): (
+            ash::Entry,
+            ash::Instance,
+            Option<(ash::ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>,
+            Arc<Log>,
+        ),
         surface_fn: &ash::khr::surface::Instance,
         surface: vk::SurfaceKHR,
         name: Option<&str>,
@@ -114,13 +121,16 @@ impl Device {
                         && surface_fn.get_physical_device_surface_support(pd, i, surface).unwrap_or(false)
                 });
                 let named = name.is_none_or(|n| device_name.to_lowercase().contains(&n.to_lowercase()));
-                if let (true, true, true, Some(family)) = (named, supported, props.api_version >= VulkanBackend::REQUIRED_API_VERSION, family) {
+                if let (true, true, true, Some(family)) =
+                    (named, supported, props.api_version >= VulkanBackend::REQUIRED_API_VERSION, family)
+                {
                     chosen = Some((pd, family, device_name));
                     break;
                 }
             }
-            let (physical, queue_family, _name) =
-                chosen.context("no Vulkan 1.2 device that presents to this window with the extensions the library needs (--device filters by name)")?;
+            let (physical, queue_family, _name) = chosen.context(
+                "no Vulkan 1.2 device that presents to this window with the extensions the library needs (--device filters by name)",
+            )?;
             let priorities = [1.0];
             let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(queue_family).queue_priorities(&priorities)];
             let extensions: Vec<*const c_char> = wanted.iter().map(|e| e.as_ptr()).collect();
@@ -132,9 +142,12 @@ impl Device {
                 .push_next(&mut required.vulkan12);
             let device = instance.create_device(physical, &info, None)?;
             let queue = device.get_device_queue(queue_family, 0);
-            let pool_info = vk::CommandPoolCreateInfo::default().queue_family_index(queue_family).flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
+            let pool_info = vk::CommandPoolCreateInfo::default()
+                .queue_family_index(queue_family)
+                .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
             let pool = device.create_command_pool(&pool_info, None)?;
-            let alloc = vk::CommandBufferAllocateInfo::default().command_pool(pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
+            let alloc =
+                vk::CommandBufferAllocateInfo::default().command_pool(pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
             let cb = device.allocate_command_buffers(&alloc)?[0];
             // Created signalled: the first frame's wait returns at once.
             let fence = device.create_fence(&vk::FenceCreateInfo::default().flags(vk::FenceCreateFlags::SIGNALED), None)?;
@@ -165,7 +178,9 @@ impl Device {
             .dst_access_mask(dst.1)
             .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-            .subresource_range(vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1))];
+            .subresource_range(
+                vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1),
+            )];
         // SAFETY: the command buffer is recording, outside a render pass; the image is live.
         unsafe { self.device.cmd_pipeline_barrier(self.cb, src.0, dst.0, vk::DependencyFlags::empty(), &[], &[], &barrier) };
     }

@@ -2,6 +2,7 @@
 //! through the frame API into the viewer's command buffer, the blit to the swapchain image, the UI,
 //! present; after the fence, a frame later, what the frame cost and left out.
 
+use super::ViewArgs;
 use super::controls::{Controls, orbit};
 use super::device::{Device, Owned, TRANSFER};
 use super::methods::{Contexts, MethodSettings, stage_times};
@@ -9,7 +10,6 @@ use super::scene::{LAYERS, Layers, SceneSource};
 use super::script::Step;
 use super::swapchain::Swapchain;
 use super::ui::{Panel, Stats};
-use super::ViewArgs;
 use anyhow::{Context, Result, anyhow, bail};
 use dof::backend::vulkan::ash::vk::{self, AccessFlags as Access, ImageLayout as Layout};
 use dof::backend::{Backend, BufferId, ImageFormat, ImageRef, RawDevice, RawOptions, VulkanBackend};
@@ -259,12 +259,14 @@ impl App<'_> {
         // device was made with the required version, extensions and features; one thread.
         let backend = unsafe { VulkanBackend::from_raw(raw, &RawOptions { debug_names: self.args.validation, allocator: None })? };
         let options = egui_ash_renderer::Options { in_flight_frames: 1, srgb_framebuffer: true, ..Default::default() };
-        let renderer = egui_ash_renderer::Renderer::with_default_allocator(&d.instance, d.physical, d.device.clone(), sc.render_pass, options)
-            .map_err(|e| anyhow!("the UI renderer: {e}"))?;
+        let renderer =
+            egui_ash_renderer::Renderer::with_default_allocator(&d.instance, d.physical, d.device.clone(), sc.render_pass, options)
+                .map_err(|e| anyhow!("the UI renderer: {e}"))?;
         let egui_ctx = egui::Context::default();
         // Smaller than egui's default: the windows that stay usable on lavapipe are small.
         egui_ctx.set_zoom_factor(0.8);
-        let egui_state = egui_winit::State::new(egui_ctx.clone(), egui::ViewportId::ROOT, &window, Some(window.scale_factor() as f32), None, None);
+        let egui_state =
+            egui_winit::State::new(egui_ctx.clone(), egui::ViewportId::ROOT, &window, Some(window.scale_factor() as f32), None, None);
         self.stats.device = backend.device_name();
         self.stats.has_reference = self.source.has_reference();
         println!(
@@ -528,23 +530,46 @@ impl App<'_> {
         // SAFETY: the command buffer's last submission completed (the fence).
         unsafe {
             d.device.reset_command_buffer(cb, vk::CommandBufferResetFlags::empty())?;
-            d.device.begin_command_buffer(cb, &vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT))?;
+            d.device
+                .begin_command_buffer(cb, &vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT))?;
         }
         let (target, _, fresh) = r.target.as_mut().context("no target")?;
         let (target_image, was_fresh) = (target.handle, *fresh);
         *fresh = false;
         if was_fresh {
-            d.image_barrier(target_image, Layout::UNDEFINED, Layout::TRANSFER_SRC_OPTIMAL, (vk::PipelineStageFlags::TOP_OF_PIPE, Access::empty()), (TRANSFER, Access::empty()));
+            d.image_barrier(
+                target_image,
+                Layout::UNDEFINED,
+                Layout::TRANSFER_SRC_OPTIMAL,
+                (vk::PipelineStageFlags::TOP_OF_PIPE, Access::empty()),
+                (TRANSFER, Access::empty()),
+            );
         }
         // The output as the library sees it: in TRANSFER_SRC_OPTIMAL, last read by the blit of the
         // frame before (a read: the library's barrier only has to wait for it), left there.
         // SAFETY: our live RGBA32F image, at least the frame's size, TRANSFER_SRC|DST usage, on the
         // backend's queue family, in that layout when the copy runs; alive until the fence.
-        let out = unsafe { ImageRef::vulkan(target_image, ImageFormat::Rgba32Float, [fw, fh], Layout::TRANSFER_SRC_OPTIMAL, TRANSFER, Access::empty(), Layout::TRANSFER_SRC_OPTIMAL) };
+        let out = unsafe {
+            ImageRef::vulkan(
+                target_image,
+                ImageFormat::Rgba32Float,
+                [fw, fh],
+                Layout::TRANSFER_SRC_OPTIMAL,
+                TRANSFER,
+                Access::empty(),
+                Layout::TRANSFER_SRC_OPTIMAL,
+            )
+        };
         let inputs = r.inputs.as_ref().context("no inputs")?;
         let method = self.panel.settings.method;
         let ((fragments, counts), slots) = if method.front_only() { (inputs.front, 1) } else { (inputs.all, layers.image.max_layers) };
-        let frame = Frame { width: fw, height: fh, lens: layers.lens, input: FrameInput::Layers { fragments, counts, layers: slots }, output: FrameOutput::Image(out) };
+        let frame = Frame {
+            width: fw,
+            height: fh,
+            lens: layers.lens,
+            input: FrameInput::Layers { fragments, counts, layers: slots },
+            output: FrameOutput::Image(out),
+        };
         // SAFETY: our command buffer is recording, outside a render pass, from a pool of the
         // backend's queue family; every resource it names outlives the fence wait.
         unsafe { backend.begin_external(cb)? };
@@ -555,7 +580,13 @@ impl App<'_> {
         // The frame, cut to the window (the guard band is beyond it), into the swapchain image.
         let m = layers.margin as i32;
         let (sw, sh) = (size[0] as i32, size[1] as i32);
-        d.image_barrier(image, Layout::UNDEFINED, Layout::TRANSFER_DST_OPTIMAL, (TRANSFER, Access::empty()), (TRANSFER, Access::TRANSFER_WRITE));
+        d.image_barrier(
+            image,
+            Layout::UNDEFINED,
+            Layout::TRANSFER_DST_OPTIMAL,
+            (TRANSFER, Access::empty()),
+            (TRANSFER, Access::TRANSFER_WRITE),
+        );
         let blit = vk::ImageBlit::default()
             .src_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
             .src_offsets([vk::Offset3D { x: m, y: m, z: 0 }, vk::Offset3D { x: m + sw, y: m + sh, z: 1 }])
@@ -565,7 +596,9 @@ impl App<'_> {
         // format conversion); an EXR is scaled to the window.
         let filter = if fixed.is_some() { vk::Filter::LINEAR } else { vk::Filter::NEAREST };
         // SAFETY: recording; both images are in the layouts named, the regions inside them.
-        unsafe { d.device.cmd_blit_image(cb, target_image, Layout::TRANSFER_SRC_OPTIMAL, image, Layout::TRANSFER_DST_OPTIMAL, &[blit], filter) };
+        unsafe {
+            d.device.cmd_blit_image(cb, target_image, Layout::TRANSFER_SRC_OPTIMAL, image, Layout::TRANSFER_DST_OPTIMAL, &[blit], filter)
+        };
         if let (true, Some(buf)) = (want_linear, &r.linear) {
             let region = vk::BufferImageCopy::default()
                 .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
@@ -595,11 +628,21 @@ impl App<'_> {
             unsafe { d.device.cmd_copy_image_to_buffer(cb, image, Layout::TRANSFER_SRC_OPTIMAL, buf.handle, &[region]) };
             d.memory_barrier((TRANSFER, Access::TRANSFER_WRITE), (vk::PipelineStageFlags::HOST, Access::HOST_READ));
         }
-        d.image_barrier(image, Layout::TRANSFER_SRC_OPTIMAL, Layout::PRESENT_SRC_KHR, (TRANSFER, Access::empty()), (vk::PipelineStageFlags::BOTTOM_OF_PIPE, Access::empty()));
+        d.image_barrier(
+            image,
+            Layout::TRANSFER_SRC_OPTIMAL,
+            Layout::PRESENT_SRC_KHR,
+            (TRANSFER, Access::empty()),
+            (vk::PipelineStageFlags::BOTTOM_OF_PIPE, Access::empty()),
+        );
 
         // Submit and present.
         let (waits, stages, cbs, signals) = ([sc.acquired], [TRANSFER], [cb], [sc.rendered[index as usize]]);
-        let submit = vk::SubmitInfo::default().wait_semaphores(&waits).wait_dst_stage_mask(&stages).command_buffers(&cbs).signal_semaphores(&signals);
+        let submit = vk::SubmitInfo::default()
+            .wait_semaphores(&waits)
+            .wait_dst_stage_mask(&stages)
+            .command_buffers(&cbs)
+            .signal_semaphores(&signals);
         // SAFETY: recorded commands; the fence was waited for above and is reset only now that a
         // submission will signal it.
         unsafe {
@@ -726,6 +769,11 @@ fn view_flags(camera: &Camera, lens: &LensSettings) -> String {
     format!("--eye {} --target {} --yfov {} --focus {focus} {aperture}", v(camera.eye), v(camera.target), camera.yfov_radians.to_degrees())
 }
 
-fn contexts_record(contexts: Option<&mut Contexts>, backend: &mut VulkanBackend, method: super::methods::ViewMethod, frame: &Frame) -> Result<()> {
+fn contexts_record(
+    contexts: Option<&mut Contexts>,
+    backend: &mut VulkanBackend,
+    method: super::methods::ViewMethod,
+    frame: &Frame,
+) -> Result<()> {
     contexts.context("no contexts")?.record(backend, method, frame)
 }

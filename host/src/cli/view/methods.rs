@@ -5,8 +5,8 @@ use anyhow::Result;
 use dof::aperture::parse_aperture;
 use dof::backend::{Backend, CommandTime};
 use dof::frame::{
-    BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, RingGatherOptions, SplatContext,
-    SplatContextDesc,
+    BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, RingGatherOptions,
+    SplatContext, SplatContextDesc,
 };
 use dof::methods::bokeh::BokehOptions;
 use dof::methods::splat::{Merge, SplatOptions};
@@ -27,7 +27,8 @@ pub enum ViewMethod {
 }
 
 impl ViewMethod {
-    pub const ALL: [ViewMethod; 5] = [ViewMethod::Multilayer, ViewMethod::Tiled, ViewMethod::Gather, ViewMethod::RingGather, ViewMethod::Bokeh];
+    pub const ALL: [ViewMethod; 5] =
+        [ViewMethod::Multilayer, ViewMethod::Tiled, ViewMethod::Gather, ViewMethod::RingGather, ViewMethod::Bokeh];
 
     pub fn label(self) -> &'static str {
         match self {
@@ -111,7 +112,8 @@ impl Contexts {
             ViewMethod::Multilayer | ViewMethod::Tiled => {
                 let key = MethodSettings { method: ViewMethod::Multilayer, ..s.clone() };
                 if self.splat.as_ref().is_none_or(|(k, _)| *k != key) {
-                    let options = SplatOptions { tile: s.tile, merge: s.merge, aperture: parse_aperture(&s.aperture)?, ..Default::default() };
+                    let options =
+                        SplatOptions { tile: s.tile, merge: s.merge, aperture: parse_aperture(&s.aperture)?, ..Default::default() };
                     let mut desc = SplatContextDesc::new(w, h, l, options);
                     desc.image_io = true;
                     let ctx = SplatContext::new(backend, &desc)?;
@@ -220,7 +222,10 @@ impl Contexts {
                 Some((_, ctx)) => {
                     let (detected, radius) = ctx.detected_and_radius(backend)?;
                     let capacity = BokehOptions::default().capacity as u64;
-                    vec![format!("{detected} bright pixels as sprites ({} beyond the capacity), gather radius {radius} px", detected.saturating_sub(capacity))]
+                    vec![format!(
+                        "{detected} bright pixels as sprites ({} beyond the capacity), gather radius {radius} px",
+                        detected.saturating_sub(capacity)
+                    )]
                 }
                 None => Vec::new(),
             },

@@ -65,9 +65,8 @@ impl SceneSource {
                 eprintln!("note: {spec}: {report}");
             }
             // The file's camera and the lens `dof render` gives it (`MeshScene::default_view`).
-            let (camera, near) = mesh
-                .default_camera(size[0], Some(size[1]))
-                .with_context(|| format!("{spec}: the viewer starts from the file's camera"))?;
+            let (camera, near) =
+                mesh.default_camera(size[0], Some(size[1])).with_context(|| format!("{spec}: the viewer starts from the file's camera"))?;
             let lens = mesh.lens_focused_at(&camera, focus)?;
             (mesh, None, camera, lens, Some(near))
         } else {
@@ -133,7 +132,9 @@ impl SceneSource {
     pub fn reference(&self, backend: &mut dyn Backend, camera: &Camera, settings: &LensSettings, samples: u32) -> Result<RgbImage> {
         let lens = settings.thin_lens(camera)?;
         match &self.content {
-            Content::Mesh { analytic: Some(scene), .. } => Ok(scene::reference(scene, camera, &lens, &ReferenceOptions { spp: samples, ..Default::default() })?.image),
+            Content::Mesh { analytic: Some(scene), .. } => {
+                Ok(scene::reference(scene, camera, &lens, &ReferenceOptions { spp: samples, ..Default::default() })?.image)
+            }
             Content::Mesh { mesh, near, .. } => {
                 let near = near.unwrap_or_else(|| default_near(lens.focus_distance));
                 let options = AccumulateOptions { samples, ..Default::default() };
@@ -153,6 +154,8 @@ impl Layers {
             return None;
         }
         let p = (y * self.image.width + x) as usize;
-        (self.image.counts[p] > 0).then(|| self.image.fragments[p * self.image.max_layers as usize].depth).filter(|d| d.is_finite() && *d > 0.0)
+        (self.image.counts[p] > 0)
+            .then(|| self.image.fragments[p * self.image.max_layers as usize].depth)
+            .filter(|d| d.is_finite() && *d > 0.0)
     }
 }

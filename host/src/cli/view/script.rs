@@ -83,6 +83,8 @@ fn step(s: &str) -> Result<Step> {
         },
         "error" => Step::Error,
         "close" => Step::Close,
-        _ => bail!("--script {s}: unknown step (method=, resize=, focus=, f-number=, radius=, blades=, merge=, tile=, rings=, orbit=, click=, error, close)"),
+        _ => bail!(
+            "--script {s}: unknown step (method=, resize=, focus=, f-number=, radius=, blades=, merge=, tile=, rings=, orbit=, click=, error, close)"
+        ),
     })
 }

@@ -30,7 +30,14 @@ const FORMATS: [vk::Format; 2] = [vk::Format::B8G8R8A8_SRGB, vk::Format::R8G8B8A
 impl Swapchain {
     /// `vsync`: FIFO; otherwise MAILBOX or IMMEDIATE where the surface offers one (frame times are
     /// then the renderer's, not the display's), FIFO where it does not.
-    pub fn new(d: &Device, surface_fn: &ash::khr::surface::Instance, surface: vk::SurfaceKHR, size: [u32; 2], vsync: bool, old: Option<Swapchain>) -> Result<Swapchain> {
+    pub fn new(
+        d: &Device,
+        surface_fn: &ash::khr::surface::Instance,
+        surface: vk::SurfaceKHR,
+        size: [u32; 2],
+        vsync: bool,
+        old: Option<Swapchain>,
+    ) -> Result<Swapchain> {
         // SAFETY: queries and creation on live objects; the old swapchain is retired here and
         // destroyed once the device is idle (the caller waited).
         unsafe {
@@ -45,7 +52,10 @@ impl Swapchain {
             let present_mode = if vsync {
                 vk::PresentModeKHR::FIFO
             } else {
-                [vk::PresentModeKHR::MAILBOX, vk::PresentModeKHR::IMMEDIATE].into_iter().find(|m| modes.contains(m)).unwrap_or(vk::PresentModeKHR::FIFO)
+                [vk::PresentModeKHR::MAILBOX, vk::PresentModeKHR::IMMEDIATE]
+                    .into_iter()
+                    .find(|m| modes.contains(m))
+                    .unwrap_or(vk::PresentModeKHR::FIFO)
             };
             let extent = if caps.current_extent.width != u32::MAX {
                 caps.current_extent
@@ -102,7 +112,9 @@ impl Swapchain {
                     .image(image)
                     .view_type(vk::ImageViewType::TYPE_2D)
                     .format(format.format)
-                    .subresource_range(vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1));
+                    .subresource_range(
+                        vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1),
+                    );
                 let view = d.device.create_image_view(&view_info, None)?;
                 views.push(view);
                 let attachments = [view];
@@ -116,7 +128,19 @@ impl Swapchain {
                 rendered.push(d.device.create_semaphore(&vk::SemaphoreCreateInfo::default(), None)?);
             }
             let acquired = d.device.create_semaphore(&vk::SemaphoreCreateInfo::default(), None)?;
-            Ok(Swapchain { loader, handle, format: format.format, extent, present_mode, images, views, framebuffers, rendered, acquired, render_pass })
+            Ok(Swapchain {
+                loader,
+                handle,
+                format: format.format,
+                extent,
+                present_mode,
+                images,
+                views,
+                framebuffers,
+                rendered,
+                acquired,
+                render_pass,
+            })
         }
     }
 

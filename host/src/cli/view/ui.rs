@@ -102,7 +102,10 @@ impl Panel {
             ui.add_enabled_ui(self.settings.method == ViewMethod::RingGather, |ui| {
                 ui.add(egui::Slider::new(&mut self.settings.rings, 1..=dof::methods::ring_gather::MAX_RINGS).text("rings (ring gather)"));
             });
-            ui.label(format!("lens: f = {:.3}, aperture radius {:.4}, focus {:.3}", lens.focal_length, lens.aperture_radius, lens.focus_distance));
+            ui.label(format!(
+                "lens: f = {:.3}, aperture radius {:.4}, focus {:.3}",
+                lens.focal_length, lens.aperture_radius, lens.focus_distance
+            ));
             egui::CollapsingHeader::new("GPU time per stage (ms)").default_open(true).show(ui, |ui| {
                 let stages: Vec<String> = stats.stages.iter().map(|(stage, ms)| format!("{stage} {ms:.1}")).collect();
                 ui.label(stages.join(", "));

@@ -130,8 +130,10 @@ fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatRe
     let dense = backend.read_buffer(s.dense, 0, backend.buffer_words(s.dense)?)?;
     let segments = backend.read_buffer(s.segments, 0, 2 * tiles)?;
     let mut lists = |keys, values| -> Result<(Vec<u32>, Vec<u32>)> {
-        let (all_k, all_v) = (backend.read_buffer(keys, 0, backend.buffer_words(keys)?)?, backend.read_buffer(values, 0, backend.buffer_words(values)?)?);
-        let pick = |all: &[u32]| segments.chunks_exact(2).flat_map(|s| all[s[0] as usize..(s[0] + s[1]) as usize].iter().copied()).collect();
+        let (all_k, all_v) =
+            (backend.read_buffer(keys, 0, backend.buffer_words(keys)?)?, backend.read_buffer(values, 0, backend.buffer_words(values)?)?);
+        let pick =
+            |all: &[u32]| segments.chunks_exact(2).flat_map(|s| all[s[0] as usize..(s[0] + s[1]) as usize].iter().copied()).collect();
         Ok((pick(&all_k), pick(&all_v)))
     };
     let binned = lists(s.keys, s.values)?;

@@ -24,8 +24,9 @@ use dof::dof_shaders::aperture::{Aperture, blades, masked};
 use dof::dof_shaders::splat::fragment::MAX_EDGE;
 use dof::frame::splat::MAX_LIST_ENTRIES;
 use dof::frame::{
-    BokehContext, BokehContextDesc, DepthEncoding, Frame, FrameInput, FrameOutput, GatherContext, GatherContextDesc, SplatContext,
-    SplatContextDesc,
+    BokehContext, BokehContextDesc, ContextDesc, DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput, GatherContext,
+    GatherContextDesc, METHODS, MethodOptions, RingGatherContext, RingGatherContextDesc, RingGatherOptions, SplatContext, SplatContextDesc,
+    ring_gather,
 };
 use dof::methods::bokeh::BokehOptions;
 use dof::methods::splat::{Merge, SplatOptions};
@@ -170,6 +171,13 @@ enum Method {
         capacity: Option<u32>,
         max_radius: F,
     },
+    RingGather {
+        rings: u32,
+        max_radius: u32,
+    },
+    /// Any method of the frame API's registry with its default options, so that a method added
+    /// there is fuzzed without a change here.
+    Registry(u8),
 }
 
 #[derive(Arbitrary, Debug)]
@@ -342,12 +350,6 @@ impl Rng {
     }
 }
 
-enum Context {
-    Splat(SplatContext),
-    Gather(GatherContext),
-    Bokeh(BokehContext),
-}
-
 /// Whether the library must refuse an extent, and whether it is small enough to allocate.
 fn judge(width: u32, height: u32, layers: u32, splat: bool) -> (bool, bool) {
     let slot_bytes = 16 * width as u128 * height as u128 * layers as u128;
@@ -374,9 +376,13 @@ fn clean<T>(what: &str, r: dof::Result<T>) -> Option<T> {
     }
 }
 
-fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Context, (u32, u32, u32))> {
+fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u32, u32, u32))> {
     let (w, h, layers) = (c.width.get(), c.height.get(), c.layers.get());
-    let splat = matches!(c.method, Method::Splat { .. });
+    let registry = match c.method {
+        Method::Registry(i) => Some(&METHODS[i as usize % METHODS.len()]),
+        _ => None,
+    };
+    let splat = matches!(c.method, Method::Splat { .. }) || registry.is_some_and(|m| m.name == "multilayer" || m.name == "tiled");
     let (mut must_refuse, small) = judge(w, h, layers, splat);
     let context = match &c.method {
         Method::Splat {
@@ -429,14 +435,14 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Context, (u32, u32, u32)
                 distinct_stage_buffers: *distinct_stage_buffers,
                 image_io: c.image_io,
             };
-            SplatContext::new(b, &desc).map(Context::Splat)
+            SplatContext::new(b, &desc).map(|c| Box::new(c) as Box<dyn DofContext>)
         }
         Method::Gather { max_radius } => {
             if !small && !must_refuse {
                 return None;
             }
             let desc = GatherContextDesc { max_width: w, max_height: h, max_layers: layers, max_radius: *max_radius, image_io: c.image_io };
-            GatherContext::new(b, &desc).map(Context::Gather)
+            GatherContext::new(b, &desc).map(|c| Box::new(c) as Box<dyn DofContext>)
         }
         Method::Bokeh { lum_threshold, coc_threshold, capacity, max_radius } => {
             if !small && !must_refuse {
@@ -451,7 +457,25 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Context, (u32, u32, u32)
                 aperture,
             };
             let desc = BokehContextDesc { max_width: w, max_height: h, max_layers: layers, options, image_io: c.image_io };
-            BokehContext::new(b, &desc).map(Context::Bokeh)
+            BokehContext::new(b, &desc).map(|c| Box::new(c) as Box<dyn DofContext>)
+        }
+        Method::RingGather { rings, max_radius } => {
+            if !small && !must_refuse {
+                return None;
+            }
+            let options = RingGatherOptions { rings, max_radius };
+            // Out-of-range options must be refused too.
+            must_refuse |= !(1..=ring_gather::MAX_SAMPLE_RINGS).contains(&rings) || !(1..=ring_gather::MAX_RADIUS).contains(&max_radius);
+            let desc = RingGatherContextDesc { max_width: w, max_height: h, max_layers: layers, options, image_io: c.image_io };
+            RingGatherContext::new(b, &desc).map(|c| Box::new(c) as Box<dyn DofContext>)
+        }
+        Method::Registry(_) => {
+            if !small && !must_refuse {
+                return None;
+            }
+            let method = registry?;
+            let desc = ContextDesc { image_io: c.image_io, ..ContextDesc::new(Extent::new(w, h, layers), MethodOptions::default()) };
+            (method.create)(b, &desc)
         }
     };
     let context = clean("creating the context", context);
@@ -462,6 +486,8 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Context, (u32, u32, u32)
             Method::Splat { .. } => "splat",
             Method::Gather { .. } => "gather",
             Method::Bokeh { .. } => "bokeh",
+            Method::RingGather { .. } => "ring-gather",
+            Method::Registry(_) => registry.map_or("registry", |m| m.name),
         }
     ));
     let context = context?;
@@ -562,11 +588,7 @@ fn run(input: &Input) {
                         OutputIn::Image(image) => FrameOutput::Image(image.get((size.0, size.1))),
                     },
                 };
-                let recorded = match &mut ctx {
-                    Context::Splat(c) => c.record(&mut b, &frame),
-                    Context::Gather(c) => c.record(&mut b, &frame),
-                    Context::Bokeh(c) => c.record(&mut b, &frame),
-                };
+                let recorded = ctx.record(&mut b, &frame);
                 if let Err(e) = &recorded {
                     stat(&format!("record refused: {}", e.to_string().chars().take(60).collect::<String>()));
                 }
@@ -579,22 +601,8 @@ fn run(input: &Input) {
                     stat("frame failed on submit");
                     continue;
                 }
-                stat(match &ctx {
-                    Context::Splat(_) => "frame ran: splat",
-                    Context::Gather(_) => "frame ran: gather",
-                    Context::Bokeh(_) => "frame ran: bokeh",
-                });
-                match &ctx {
-                    Context::Splat(c) => {
-                        clean("the report", c.report(&mut b));
-                    }
-                    Context::Gather(c) => {
-                        clean("the radius", c.radius(&mut b));
-                    }
-                    Context::Bokeh(c) => {
-                        clean("the sprites and radius", c.detected_and_radius(&mut b));
-                    }
-                }
+                stat(&format!("frame ran: {}", ctx.method()));
+                clean("the report", ctx.report(&mut b));
                 let sane = matches!(
                     (f.content, f.lens, f.input, f.output),
                     (Content::WellFormed(_), LensIn::Sane { .. }, InputIn::Buffers { fragments: 0, counts: 1 }, OutputIn::Buffer(2))
@@ -612,24 +620,20 @@ fn run(input: &Input) {
                 }
             }
             Op::Resize(w, h, l) => {
-                let Context::Splat(c) = &mut ctx else { continue };
                 let (w, h, l) = (w.get(), h.get(), l.get());
-                let (must_refuse, small) = judge(w, h, l, true);
+                let splat = ctx.method() == "multilayer" || ctx.method() == "tiled";
+                let (must_refuse, small) = judge(w, h, l, splat);
                 if !small && !must_refuse {
                     continue;
                 }
-                if clean("resizing", c.resize(&mut b, w, h, l)).is_some() {
+                if clean("resizing", ctx.resize(&mut b, Extent::new(w, h, l))).is_some() {
                     assert!(!must_refuse, "a resize to {w}x{h} with {l} layers was accepted: it must be refused");
                     max = (w, h, l);
                 }
             }
         }
     }
-    match ctx {
-        Context::Splat(c) => c.destroy(&mut b),
-        Context::Gather(c) => c.destroy(&mut b),
-        Context::Bokeh(c) => c.destroy(&mut b),
-    }
+    ctx.destroy(&mut b);
     bufs.iter().for_each(|&id| b.destroy_buffer(id));
     assert_eq!(b.counters().device_bytes, 0, "buffers leaked");
 }

@@ -57,7 +57,7 @@ pub struct Fragment {
 }
 
 /// Per pixel up to `max_layers` fragments sorted front to back. Storage is fixed-size per pixel
-/// (seed 000 §4.3: the arrays are preallocated for the maximum and partially filled).
+/// (Franke et al. 2018, §4.3: the arrays are preallocated for the maximum and partially filled).
 #[derive(Clone, Debug, PartialEq)]
 pub struct LayeredImage {
     pub width: u32,

@@ -5,7 +5,7 @@ use crate::ops::sort::SortInput;
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 
-/// Tile lists shaped like seed 000's Fig. 12: 3600 tiles (1280x720 in 16x16 tiles), list lengths
+/// Tile lists shaped like Franke et al. 2018's Fig. 12: 3600 tiles (1280x720 in 16x16 tiles), list lengths
 /// log-normally distributed around a median of 700 fragments with a tail to `max_len`, a few empty
 /// (sky) tiles, depths in [0.5, 100] with repeated values (coplanar fragments tie).
 pub fn tile_lists(tiles: usize, max_len: u32, seed: u64) -> SortInput {

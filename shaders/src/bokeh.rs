@@ -1,4 +1,4 @@
-//! Bokeh sprites (seed 001, de Rousiers and Pettineo): pixels much brighter than their 5x5
+//! Bokeh sprites (de Rousiers and Pettineo): pixels much brighter than their 5x5
 //! neighbourhood are appended to a sprite buffer and drawn as aperture-shaped quads over a
 //! blur-based DoF of the rest.
 //!

@@ -1,4 +1,4 @@
-//! Layered depth of field with matting (seed 002, Schedl and Wimmer 2012): the multi-layer image is
+//! Layered depth of field with matting (Schedl and Wimmer 2012): the multi-layer image is
 //! decomposed into K depth layers by matting functions, each layer is blurred by a Gaussian of its
 //! CoC (`d = 4σ`), and the layers are composited back to front and normalised.
 //!

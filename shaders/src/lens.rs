@@ -5,7 +5,7 @@
 //!   length, z_f the focus distance), times `pixels_per_unit` in pixels. Written as
 //!   `c(z) = K·|1 − z_f/z|` with `K = A·f/(z_f − f)·pixels_per_unit` ([`ThinLens::far_limit_px`],
 //!   the z → ∞ asymptote; `f²/(N·(z_f − f))` for A = f/N) it needs one division per fragment.
-//! - [`ArtistLens`]: the linear near/far model of seed 001 (de Rousiers and Pettineo).
+//! - [`ArtistLens`]: the linear near/far model of de Rousiers and Pettineo (de Rousiers and Pettineo).
 //!
 //! Sign convention everywhere: a *signed* CoC is negative in front of the focus plane (near field)
 //! and positive behind it (far field); unsigned CoCs are diameters in pixels.
@@ -87,7 +87,7 @@ impl ThinLens {
         if is_nan(r) { 0.0 } else { r }
     }
 
-    /// The two depths whose CoC diameter is `c` pixels (seed 002, eq. 5-7): the near depth
+    /// The two depths whose CoC diameter is `c` pixels (Schedl and Wimmer 2012, eq. 5-7): the near depth
     /// `D1 = z_f·K/(K + c)` in front of the focus plane and the far depth `D2 = z_f·K/(K − c)` behind
     /// it, with `K` = [`Self::far_limit_px`]. Equivalently `[D1, D2]` is the depth interval whose CoC
     /// is at most `c`, so:
@@ -112,7 +112,7 @@ impl ThinLens {
 
     /// Length (scene units, along the view axis) of the umbra behind a fragment at depth `z` whose
     /// world-space footprint is a disc of radius `footprint_radius` facing the lens: the region no
-    /// lens ray reaches (seed 000 §4.1 and §6.2 after Lee et al. 2010, with the lens as a disc light
+    /// lens ray reaches (Franke et al. 2018, §4.1 and §6.2 after Lee et al. 2010, with the lens as a disc light
     /// source and the fragment as the occluder). The umbra cone's apex lies where the lines through
     /// the rims of lens and footprint meet: length `r·z/(R − r)` for footprint radius `r` and aperture
     /// radius `R`.
@@ -137,7 +137,7 @@ impl ThinLens {
     }
 }
 
-/// The linear near/far CoC model of seed 001: blur grows linearly from 0 at a region's *start*
+/// The linear near/far CoC model of de Rousiers and Pettineo: blur grows linearly from 0 at a region's *start*
 /// depth to `max_radius_px` at its *end* depth, clamped beyond (`CoC = (z − z_start)/(z_end −
 /// z_start)` normalised to [0, 1], then scaled by MaxRadius).
 ///

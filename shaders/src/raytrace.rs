@@ -1,5 +1,5 @@
 //! Thin-lens ray tracing through the multi-layer image (in the spirit of Lee et al. 2010, the
-//! high-quality comparison of seed 000): every pixel shoots `spp` rays from stratified points on
+//! high-quality comparison of Franke et al. 2018): every pixel shoots `spp` rays from stratified points on
 //! the lens through its point on the focus plane and returns the mean colour of the first fragments
 //! they hit.
 //!

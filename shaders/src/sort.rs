@@ -1,5 +1,5 @@
 //! Segmented bitonic sort: many independent lists of `(f32 key, u32 payload)` of different lengths
-//! sorted in one pass (the per-tile depth sort of seed 000 §5.2).
+//! sorted in one pass (the per-tile depth sort of Franke et al. 2018, §5.2).
 //!
 //! Pipeline (the host records it; see `host/src/ops/sort.rs`):
 //! 1. `sort_classify`: every non-empty list goes to the smallest length class whose capacity holds

@@ -1,4 +1,4 @@
-//! Bokeh sprites (seed 001): the graphics pipeline on Vulkan against its compute fallback on the
+//! Bokeh sprites (de Rousiers and Pettineo): the graphics pipeline on Vulkan against its compute fallback on the
 //! CPU, no highlights, more highlights than the buffer holds, energy kept, bad options refused.
 
 use dof::Error;

@@ -1,4 +1,4 @@
-//! Layered DoF with matting (seed 002): the per-frame plan (layer count from the depth range, the
+//! Layered DoF with matting (Schedl and Wimmer 2012): the per-frame plan (layer count from the depth range, the
 //! anchors by the CoC inverse within eq. 8's bound, empty layers skipped), exact and flat cases,
 //! Vulkan against the CPU, the exact reference, and bad options.
 

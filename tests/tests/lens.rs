@@ -1,5 +1,5 @@
-//! The lens models of `dof_shaders::lens`: thin-lens CoC, its inverse (seed 002 eq. 5-8), the umbra
-//! length (seed 000 §4.1) and the artist model (seed 001).
+//! The lens models of `dof_shaders::lens`: thin-lens CoC, its inverse (Schedl and Wimmer 2012, eq. 5-8), the umbra
+//! length (Franke et al. 2018, §4.1) and the artist model (de Rousiers and Pettineo).
 
 use dof_shaders::lens::{ArtistLens, ThinLens};
 use proptest::prelude::*;

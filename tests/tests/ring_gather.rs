@@ -5,7 +5,7 @@
 use dof::backend::{Backend, CpuBackend};
 use dof::frame::{Frame, RingGatherContext, RingGatherContextDesc};
 use dof::layers::RgbImage;
-use dof::methods::ring_gather::{DEFAULT_RINGS, MAX_RADIUS, MAX_RINGS, RingGatherOptions, ring_gather};
+use dof::methods::ring_gather::{DEFAULT_RINGS, MAX_RADIUS, MAX_SAMPLE_RINGS, RingGatherOptions, ring_gather};
 use dof::metrics::compare;
 use dof::scene::{LayerOptions, ReferenceOptions, builtin, raycast_layers, reference};
 use dof_shaders::lens::ThinLens;
@@ -24,7 +24,7 @@ fn options(rings: u32) -> RingGatherOptions {
 #[test]
 fn pinhole_returns_the_input_exactly() {
     let (img, depth) = noise_image(37, 21);
-    for rings in [1, DEFAULT_RINGS, MAX_RINGS] {
+    for rings in [1, DEFAULT_RINGS, MAX_SAMPLE_RINGS] {
         let out = ring_gather(&mut CpuBackend::new(), &img, &depth, &lens(0.0), &options(rings)).unwrap();
         assert_eq!(out.image, img, "{rings} rings");
     }
@@ -70,7 +70,7 @@ fn bad_input_is_an_error() {
     assert!(ring_gather(&mut cpu, &img, &depth, &lens(f32::NAN), &ok).is_err());
     for bad in [
         options(0),
-        options(MAX_RINGS + 1),
+        options(MAX_SAMPLE_RINGS + 1),
         RingGatherOptions { max_radius: 0, ..ok },
         RingGatherOptions { max_radius: MAX_RADIUS + 1, ..ok },
     ] {

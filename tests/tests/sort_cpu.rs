@@ -63,7 +63,7 @@ fn special_values_have_a_defined_order() {
 }
 
 #[test]
-fn seed_000_shaped_tile_lists() {
+fn tile_lists_shaped_like_franke_2018_fig_12() {
     let input = tile_lists(400, 8192, 3);
     run(&input, 32 * 1024);
 }

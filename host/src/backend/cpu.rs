@@ -3,7 +3,7 @@
 //! barriers (see `dof_shaders::exec`). Buffers are `[AtomicU32]`, so parallel workgroups never alias
 //! mutable memory.
 
-use super::{Backend, BackendCounters, BackendKind, BufferId, CommandTime, Limits, check_dispatch};
+use super::{Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, Limits, check_dispatch};
 use crate::error::{Error, Result};
 use dof_shaders::KernelDesc;
 use dof_shaders::exec::CpuDispatch;
@@ -17,6 +17,7 @@ use std::time::Instant;
 pub const DEFAULT_SHARED_BYTES: u32 = 32 * 1024;
 
 pub struct CpuBackend {
+    id: BackendId,
     limits: Limits,
     buffers: Vec<Option<Box<[AtomicU32]>>>,
     times: Vec<CommandTime>,
@@ -48,6 +49,7 @@ impl CpuBackend {
             buffers: Vec::new(),
             times: Vec::new(),
             counters: BackendCounters::default(),
+            id: BackendId::fresh(),
             budget: None,
         }
     }
@@ -93,6 +95,9 @@ impl CpuBackend {
 }
 
 impl Backend for CpuBackend {
+    fn id(&self) -> BackendId {
+        self.id
+    }
     fn kind(&self) -> BackendKind {
         BackendKind::Cpu
     }

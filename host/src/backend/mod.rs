@@ -26,6 +26,20 @@ pub use vulkan::{RawDevice, RawOptions, RequiredFeatures, VulkanBackend, VulkanO
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct BufferId(pub u32);
 
+/// Which backend object made a resource: every backend gets its own when it is made, so a context
+/// recorded or destroyed on another backend than its own is refused instead of touching that
+/// backend's buffers (whose ids may well exist there too).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct BackendId(u64);
+
+impl BackendId {
+    /// A new identity, never handed out before in this process.
+    pub(crate) fn fresh() -> BackendId {
+        static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+        BackendId(NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
+    }
+}
+
 /// What a backend can do; the kernels' plans are sized from these (for instance the largest sort class
 /// from `max_shared_bytes`).
 #[derive(Clone, Debug)]
@@ -226,6 +240,8 @@ pub struct CommandTime {
 
 pub trait Backend {
     fn kind(&self) -> BackendKind;
+    /// This backend object's identity (see [`BackendId`]).
+    fn id(&self) -> BackendId;
     /// The device, as the driver names it (`llvmpipe (LLVM 15.0.6, 256 bits)` for lavapipe).
     fn device_name(&self) -> String;
     /// The driver and its version, where there is one (`llvmpipe Mesa 22.3.6 (LLVM 15.0.6)`).
@@ -436,6 +452,14 @@ pub fn with_buffers<T>(
 }
 
 /// Push constants as words, from a kernel's `#[repr(C)]` parameter struct.
+/// Workgroups the host dispatches at most in one dimension; grid-stride kernels loop over the rest.
+pub use dof_shaders::splat::MAX_GROUPS;
+
+/// Workgroups of `kernel` for `items` one-dimensional items (at least one, at most [`MAX_GROUPS`]).
+pub fn groups_for(kernel: &KernelDesc, items: u64) -> [u32; 3] {
+    [(items.div_ceil(kernel.workgroup_size as u64)).clamp(1, MAX_GROUPS as u64) as u32, 1, 1]
+}
+
 pub fn push_words<P: bytemuck::Pod>(params: &P) -> Vec<u32> {
     let bytes = bytemuck::bytes_of(params);
     let mut words = vec![0u32; bytes.len().div_ceil(4)];

@@ -5,45 +5,21 @@
 use super::render::BackendArg;
 use anyhow::Context;
 use dof::backend::{Backend, BackendCounters, BufferId};
-use dof::frame::{
-    BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, SplatContext,
-    SplatContextDesc,
-};
+use dof::frame::{ContextDesc, ContextReport, Extent, Frame, MethodInfo, MethodOptions, Reads, SplatOptions};
 use dof::layers::LayeredImage;
-use dof::methods::bokeh::{BokehOptions, bokeh};
 use dof::methods::buffers::slot_words;
-use dof::methods::gather::gather;
-use dof::methods::ring_gather::{RingGatherOptions, ring_gather};
-use dof::methods::splat::{Merge, SplatOptions, splat};
+use dof::methods::one_shot;
+use dof::methods::splat::Merge;
 use dof::scene::{self, GuardBand, LayerOptions, raycast_layers};
 use dof_shaders::lens::ThinLens;
 use std::collections::BTreeMap;
 use std::time::Instant;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum FrameMethod {
-    /// Multi-layer tiled splatting (Franke, Hofmann, Stamminger, Selgrad 2018).
-    Multilayer,
-    /// Single-layer tiled splatting (Selgrad, Franke, Stamminger 2016): the front layer only.
-    Tiled,
-    /// The gathering baseline (Riguer et al. 2003) on the front layer.
-    Gather,
-    /// The engine-grade gather (after AMD FidelityFX DoF, Unreal Engine's Diaphragm DoF and
-    /// Jimenez 2014) at its default of 5 rings.
-    RingGather,
-    /// Bokeh sprites (de Rousiers, Pettineo 2012) over the gathering baseline.
-    Bokeh,
-}
-
-/// The method's name as the command line spells it.
-fn method_name(method: FrameMethod) -> String {
-    clap::ValueEnum::to_possible_value(&method).map_or_else(|| format!("{method:?}"), |v| v.get_name().to_string())
-}
-
 #[derive(clap::Args)]
 pub struct FrameArgs {
-    #[arg(long, value_enum, default_value_t = FrameMethod::Multilayer)]
-    method: FrameMethod,
+    /// A method of the frame API (its registry name).
+    #[arg(long, default_value = "multilayer", value_parser = super::method_names())]
+    method: String,
     /// Fragment merging before tiling.
     #[arg(long, default_value = "4x4")]
     merge: Merge,
@@ -83,23 +59,24 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     let lens = builtin.lens.thin_lens(&camera)?;
     let layer_options = LayerOptions { guard_band: GuardBand::Off, ..Default::default() };
     let layered = raycast_layers(&builtin.scene, &camera, &lens, &layer_options)?;
-    let image = match args.method {
-        FrameMethod::Multilayer => layered.layers,
-        _ => layered.layers.front_layer(),
+    let method = dof::frame::registry::method(&args.method)?;
+    let image = match method.reads {
+        Reads::AllLayers => layered.layers,
+        Reads::FrontLayer => layered.layers.front_layer(),
     };
-    let options = SplatOptions { merge: args.merge, ..Default::default() };
+    let options = MethodOptions { splat: SplatOptions { merge: args.merge, ..Default::default() }, ..Default::default() };
     let mut backend = super::render::backend(args.backend)?;
     let b = backend.as_mut();
     let measured = if args.one_shot {
-        one_shot(b, args.method, &image, &lens, &options, args.frames)?
+        one_shot(b, method, &image, &lens, &options, args.frames)?
     } else {
-        framed(b, args.method, &image, &lens, &options, args.frames)?
+        framed(b, method, &image, &lens, &options, args.frames)?
     };
     let per_frame = |n: u64| n as f64 / args.frames as f64;
     let c = measured.counters;
     if args.json {
         let json = serde_json::json!({
-            "method": method_name(args.method),
+            "method": method.name,
             "merge": args.merge.name(),
             "path": if args.one_shot { "one-shot" } else { "frame-api" },
             "scene": args.scene,
@@ -128,7 +105,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     println!(
         "{} {} merge {} on {} ({}), {}x{} with {} layers, {} frames after a warm-up ({})",
         args.scene,
-        method_name(args.method),
+        method.name,
         args.merge.name(),
         b.kind(),
         b.device_name(),
@@ -172,9 +149,32 @@ struct Measured {
     gpu_ms: f64,
     stages: BTreeMap<String, f64>,
     device_bytes: u64,
-    overflow_tiles: u32,
+    overflow_tiles: u64,
     list_entries: u64,
     list_pool: u64,
+}
+
+impl Measured {
+    fn new(
+        counters: BackendCounters,
+        record_ms: f64,
+        gpu_ms: f64,
+        stages: BTreeMap<String, f64>,
+        bytes: u64,
+        report: &ContextReport,
+    ) -> Self {
+        let figure = |name: &str| report.figures.get(name).copied().unwrap_or(0.0) as u64;
+        Measured {
+            counters,
+            record_ms,
+            gpu_ms,
+            stages,
+            device_bytes: bytes,
+            overflow_tiles: report.overflow,
+            list_entries: figure("list_entries"),
+            list_pool: figure("list_pool"),
+        }
+    }
 }
 
 /// Mean time per stage label over `frames` frames of command times.
@@ -188,67 +188,14 @@ fn add_stages(into: &mut BTreeMap<String, f64>, times: &[dof::backend::CommandTi
     total / frames as f64
 }
 
-/// A context of any method, as the benchmark drives it.
-enum AnyContext {
-    Splat(SplatContext),
-    Gather(GatherContext),
-    RingGather(RingGatherContext),
-    Bokeh(BokehContext),
-}
-
-impl AnyContext {
-    fn new(b: &mut dyn Backend, method: FrameMethod, image: &LayeredImage, options: &SplatOptions) -> dof::Result<Self> {
-        let (w, h, l) = (image.width, image.height, image.max_layers);
-        Ok(match method {
-            FrameMethod::Multilayer | FrameMethod::Tiled => {
-                AnyContext::Splat(SplatContext::new(b, &SplatContextDesc::new(w, h, l, options.clone()))?)
-            }
-            FrameMethod::Gather => AnyContext::Gather(GatherContext::new(b, &GatherContextDesc::new(w, h, l))?),
-            FrameMethod::RingGather => AnyContext::RingGather(RingGatherContext::new(b, &RingGatherContextDesc::new(w, h, l))?),
-            FrameMethod::Bokeh => AnyContext::Bokeh(BokehContext::new(b, &BokehContextDesc::new(w, h, l, BokehOptions::default()))?),
-        })
-    }
-    fn record(&mut self, b: &mut dyn Backend, f: &Frame) -> dof::Result<()> {
-        match self {
-            AnyContext::Splat(c) => c.record(b, f),
-            AnyContext::Gather(c) => c.record(b, f),
-            AnyContext::RingGather(c) => c.record(b, f),
-            AnyContext::Bokeh(c) => c.record(b, f),
-        }
-    }
-    fn device_bytes(&self) -> u64 {
-        match self {
-            AnyContext::Splat(c) => c.device_bytes(),
-            AnyContext::Gather(c) => c.device_bytes(),
-            AnyContext::RingGather(c) => c.device_bytes(),
-            AnyContext::Bokeh(c) => c.device_bytes(),
-        }
-    }
-    /// Overflowing tiles, list entries and the list pool (splatting only).
-    fn lists(&self, b: &mut dyn Backend) -> dof::Result<(u32, u64, u64)> {
-        match self {
-            AnyContext::Splat(c) => c.report(b).map(|r| (r.overflow_tiles, r.list_entries, r.list_capacity)),
-            _ => Ok((0, 0, 0)),
-        }
-    }
-    fn destroy(self, b: &mut dyn Backend) {
-        match self {
-            AnyContext::Splat(c) => c.destroy(b),
-            AnyContext::Gather(c) => c.destroy(b),
-            AnyContext::RingGather(c) => c.destroy(b),
-            AnyContext::Bokeh(c) => c.destroy(b),
-        }
-    }
-}
-
 /// The frame API: one context and the input's buffers, made and filled once; then per frame a
 /// recording and one submission.
 fn framed(
     b: &mut dyn Backend,
-    method: FrameMethod,
+    method: &MethodInfo,
     image: &LayeredImage,
     lens: &ThinLens,
-    options: &SplatOptions,
+    options: &MethodOptions,
     frames: u32,
 ) -> anyhow::Result<Measured> {
     let pixels = image.width as u64 * image.height as u64;
@@ -259,7 +206,8 @@ fn framed(
         .collect::<dof::Result<_>>()?;
     b.write_buffer(bufs[0], 0, &input)?;
     b.write_buffer(bufs[1], 0, &image.counts)?;
-    let mut ctx = AnyContext::new(b, method, image, options)?;
+    let extent = Extent::new(image.width, image.height, image.max_layers);
+    let mut ctx = (method.create)(b, &ContextDesc::new(extent, options.clone()))?;
     let frame = Frame::layers(image.width, image.height, image.max_layers, *lens, bufs[0], bufs[1], bufs[2]);
     ctx.record(b, &frame)?;
     b.submit()?;
@@ -272,56 +220,34 @@ fn framed(
         gpu_ms += add_stages(&mut stages, &b.submit()?, frames);
     }
     let counters = b.counters().since(&before);
-    let (overflow_tiles, list_entries, list_pool) = ctx.lists(b).context("reading the last frame's report")?;
+    let report = ctx.report(b).context("reading the last frame's report")?;
     let device_bytes = ctx.device_bytes();
     ctx.destroy(b);
     bufs.into_iter().for_each(|id| b.destroy_buffer(id));
-    Ok(Measured { counters, record_ms, gpu_ms, stages, device_bytes, overflow_tiles, list_entries, list_pool })
+    Ok(Measured::new(counters, record_ms, gpu_ms, stages, device_bytes, &report))
 }
 
 /// The one-shot path, frame after frame.
 fn one_shot(
     b: &mut dyn Backend,
-    method: FrameMethod,
+    method: &MethodInfo,
     image: &LayeredImage,
     lens: &ThinLens,
-    options: &SplatOptions,
+    options: &MethodOptions,
     frames: u32,
 ) -> anyhow::Result<Measured> {
-    let (front, depth) = image.front();
-    let run = |b: &mut dyn Backend| -> dof::Result<(Vec<dof::backend::CommandTime>, u64, (u32, u64, u64))> {
-        Ok(match method {
-            FrameMethod::Multilayer | FrameMethod::Tiled => {
-                let out = splat(b, image, lens, options)?;
-                let r = out.report;
-                (out.stages, r.buffer_bytes, (r.overflow_tiles, r.list_entries, r.list_capacity))
-            }
-            FrameMethod::Gather => {
-                let out = gather(b, &front, &depth, lens, None)?;
-                (out.times, out.buffer_bytes, (0, 0, 0))
-            }
-            FrameMethod::RingGather => {
-                let out = ring_gather(b, &front, &depth, lens, &RingGatherOptions::default())?;
-                (out.times, out.buffer_bytes, (0, 0, 0))
-            }
-            FrameMethod::Bokeh => {
-                let out = bokeh(b, &front, &depth, lens, &BokehOptions::default())?;
-                (out.times, out.buffer_bytes, (0, 0, 0))
-            }
-        })
-    };
-    run(b)?;
+    one_shot::one_shot(b, method, options, image, lens)?;
     let before = b.counters();
     let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());
-    let mut last = (0, (0, 0, 0));
+    let mut last = None;
     for _ in 0..frames {
         let start = Instant::now();
-        let (times, bytes, lists) = run(b)?;
+        let out = one_shot::one_shot(b, method, options, image, lens)?;
         record_ms += start.elapsed().as_secs_f64() * 1e3 / frames as f64;
-        gpu_ms += add_stages(&mut stages, &times, frames);
-        last = (bytes, lists);
+        gpu_ms += add_stages(&mut stages, &out.stages, frames);
+        last = Some(out);
     }
     let counters = b.counters().since(&before);
-    let (device_bytes, (overflow_tiles, list_entries, list_pool)) = last;
-    Ok(Measured { counters, record_ms, gpu_ms, stages, device_bytes, overflow_tiles, list_entries, list_pool })
+    let last = last.context("no frame ran")?;
+    Ok(Measured::new(counters, record_ms, gpu_ms, stages, last.buffer_bytes, &last.report))
 }

@@ -15,6 +15,11 @@ pub mod view;
 
 use dof::backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
 
+/// The names of the frame API's methods (its registry), as a flag's possible values.
+pub fn method_names() -> clap::builder::PossibleValuesParser {
+    clap::builder::PossibleValuesParser::new(dof::frame::METHODS.iter().map(|m| clap::builder::PossibleValue::new(m.name).help(m.title)))
+}
+
 /// Which backends a command runs on.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
 pub enum BackendChoice {

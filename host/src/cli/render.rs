@@ -3,13 +3,14 @@
 
 use anyhow::{Context, bail};
 use dof::aperture::parse_aperture;
+use dof::frame::{BokehOptions, MethodOptions, RingGatherOptions, SplatOptions};
 use dof::io::{read_layered_exr, write_exr, write_layered_exr, write_png_preview};
 use dof::layers::RgbImage;
 use dof::layers::{LayeredImage, crop_plane};
-use dof::methods::bokeh::{BokehOptions, bokeh};
 use dof::methods::layered::{LayeredOptions, layered};
+use dof::methods::one_shot::one_shot;
 use dof::methods::raytrace::{RaytraceOptions, raytrace};
-use dof::methods::splat::{Merge, SplatOptions, splat};
+use dof::methods::splat::Merge;
 use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
 use dof::scene::{
     self, Aperture, AutoOptions, Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, MeshScene, MultiLayerImage,
@@ -367,54 +368,8 @@ pub(crate) fn edge_margin(layers: &LayeredImage, lens: &ThinLens) -> u32 {
 /// Returns the frame's image and its front layer's depth.
 fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) -> anyhow::Result<(RgbImage, Vec<f32>)> {
     let mut b = backend(args.backend)?;
-    let (front, depth) = layers.front();
+    let (_, depth) = layers.front();
     let image = match args.method {
-        Method::Gather => {
-            let blurred = dof::methods::gather::gather(b.as_mut(), &front, &depth, lens, args.max_coc.map(|d| d.div_ceil(2)))?;
-            let ms: f64 = blurred.times.iter().map(|t| t.ms).sum();
-            println!("gather on {}: radius {} px, {ms:.2} ms in kernels", b.device_name(), blurred.radius);
-            blurred.image
-        }
-        Method::RingGather => {
-            let defaults = dof::methods::ring_gather::RingGatherOptions::default();
-            let options = dof::methods::ring_gather::RingGatherOptions {
-                rings: args.rings,
-                max_radius: args.max_coc.map_or(defaults.max_radius, |d| d.div_ceil(2)),
-            };
-            let out = dof::methods::ring_gather::ring_gather(b.as_mut(), &front, &depth, lens, &options)?;
-            let ms: f64 = out.times.iter().map(|t| t.ms).sum();
-            println!(
-                "ring gather on {}: {} rings, {} samples a half-resolution pixel, radius cap {} px; {ms:.2} ms in kernels",
-                b.device_name(),
-                options.rings,
-                out.samples,
-                options.max_radius
-            );
-            out.image
-        }
-        Method::Bokeh => {
-            let options = BokehOptions {
-                lum_threshold: args.lum_threshold,
-                capacity: args.sprites,
-                aperture: parse_aperture(&args.aperture)?,
-                ..Default::default()
-            };
-            let out = bokeh(b.as_mut(), &front, &depth, lens, &options)?;
-            let ms: f64 = out.times.iter().map(|t| t.ms).sum();
-            println!(
-                "bokeh sprites on {}: {} bright pixels detected, {} drawn as sprites{}, over a gather of radius {} px; {ms:.2} ms in kernels",
-                b.device_name(),
-                out.detected,
-                out.detected - out.overflow,
-                if out.overflow > 0 {
-                    format!(" ({} beyond the capacity of {} left in the blur)", out.overflow, options.capacity)
-                } else {
-                    String::new()
-                },
-                out.blur_radius
-            );
-            out.image
-        }
         Method::Layered => {
             let mut options =
                 LayeredOptions { cascaded: !args.no_cascade, layers_per_doubling: args.layers_per_doubling, ..Default::default() };
@@ -455,22 +410,35 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) 
             traced.image
         }
         _ => {
-            let options = SplatOptions {
-                tile: args.tile,
-                merge: args.merge,
-                max_radius: args.max_coc.map(|d| d as f32 / 2.0),
-                aperture: parse_aperture(&args.aperture)?,
-                ..Default::default()
-            };
-            let input = if args.method == Method::Tiled { layers.front_layer() } else { layers.clone() };
-            let out = splat(b.as_mut(), &input, lens, &options)?;
+            // A method of the frame API, through its registry entry.
+            let name = clap::ValueEnum::to_possible_value(&args.method).map(|v| v.get_name().to_string()).unwrap_or_default();
+            let method = dof::frame::registry::method(&name)?;
+            let out = one_shot(b.as_mut(), method, &method_options(args)?, layers, lens)?;
             let ms: f64 = out.stages.iter().map(|t| t.ms).sum();
-            println!("{:?} splatting on {}: {ms:.2} ms in kernels", args.method, b.device_name());
-            println!("{}", out.report.summary());
+            println!("{} ({}) on {}: {ms:.2} ms in kernels", method.title, method.paper, b.device_name());
+            println!("{}", out.report.summary);
             out.image
         }
     };
     Ok((image.crop(margin), crop_plane(&depth, layers.width, margin)))
+}
+
+/// The frame API's options from the command line (each method reads its own).
+fn method_options(args: &RenderArgs) -> anyhow::Result<MethodOptions> {
+    let aperture = parse_aperture(&args.aperture)?;
+    let ring_defaults = RingGatherOptions::default();
+    Ok(MethodOptions {
+        splat: SplatOptions {
+            tile: args.tile,
+            merge: args.merge,
+            max_radius: args.max_coc.map(|d| d as f32 / 2.0),
+            aperture: aperture.clone(),
+            ..Default::default()
+        },
+        gather_max_radius: args.max_coc.map(|d| d.div_ceil(2)),
+        ring_gather: RingGatherOptions { rings: args.rings, max_radius: args.max_coc.map_or(ring_defaults.max_radius, |d| d.div_ceil(2)) },
+        bokeh: BokehOptions { lum_threshold: args.lum_threshold, capacity: args.sprites, aperture, ..Default::default() },
+    })
 }
 
 pub(super) fn backend(choice: BackendArg) -> anyhow::Result<Box<dyn dof::backend::Backend>> {

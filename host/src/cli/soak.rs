@@ -7,14 +7,8 @@
 
 use super::render::BackendArg;
 use dof::backend::{Backend, BufferId, CpuBackend, VulkanBackend, VulkanOptions};
-use dof::frame::{
-    BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, SplatContext,
-    SplatContextDesc,
-};
-use dof::methods::bokeh::BokehOptions;
+use dof::frame::{BokehOptions, ContextDesc, DofContext, Extent, Frame, METHODS, Merge, MethodInfo, MethodOptions, Reads, SplatOptions};
 use dof::methods::buffers::{read_rgb, slot_words};
-use dof::methods::ring_gather::{MAX_RINGS, RingGatherOptions};
-use dof::methods::splat::{Merge, SplatOptions};
 use dof::stress::{noise_with_sky, test_lens};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
@@ -56,24 +50,15 @@ fn resident_bytes() -> i64 {
     statm.split_whitespace().nth(1).and_then(|p| p.parse::<i64>().ok()).map_or(0, |pages| pages * 4096)
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Method {
-    Multilayer,
-    Tiled,
-    Gather,
-    RingGather,
-    Bokeh,
-}
-
-const METHODS: [Method; 5] = [Method::Multilayer, Method::Tiled, Method::Gather, Method::RingGather, Method::Bokeh];
-
-/// The contexts, one per method, all for the same maximum extent.
-struct Contexts {
-    multilayer: SplatContext,
-    tiled: SplatContext,
-    gather: GatherContext,
-    ring_gather: RingGatherContext,
-    bokeh: BokehContext,
+/// Options for every method: multi-layer splatting merged 4x4, single-layer 2x2 (so both merging
+/// paths run), bokeh sprites from a low threshold (the noise makes highlights).
+fn options_for(method: &MethodInfo) -> MethodOptions {
+    let merge = if method.reads == Reads::AllLayers { Merge::X4 } else { Merge::X2 };
+    MethodOptions {
+        splat: SplatOptions { merge, ..Default::default() },
+        bokeh: BokehOptions { lum_threshold: 0.5, ..Default::default() },
+        ..Default::default()
+    }
 }
 
 pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
@@ -99,71 +84,60 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
         .iter()
         .map(|&(w, l)| b.create_buffer(w, l))
         .collect::<dof::Result<_>>()?;
-    let splat = |merge| SplatContextDesc::new(max, max, MAX_LAYERS, SplatOptions { merge, ..Default::default() });
-    let mut ctx = Contexts {
-        multilayer: SplatContext::new(b, &splat(Merge::X4))?,
-        tiled: SplatContext::new(b, &splat(Merge::X2))?,
-        gather: GatherContext::new(b, &GatherContextDesc::new(max, max, MAX_LAYERS))?,
-        ring_gather: RingGatherContext::new(b, &RingGatherContextDesc::new(max, max, MAX_LAYERS))?,
-        bokeh: BokehContext::new(
-            b,
-            &BokehContextDesc::new(max, max, MAX_LAYERS, BokehOptions { lum_threshold: 0.5, ..Default::default() }),
-        )?,
-    };
+    // One context per method of the registry, all for the same largest frame.
+    let extent = Extent::new(max, max, MAX_LAYERS);
+    let mut contexts: Vec<Box<dyn DofContext>> = Vec::new();
+    for m in METHODS {
+        contexts.push((m.create)(b, &ContextDesc::new(extent, options_for(m)))?);
+    }
     let mut rng = Pcg64::seed_from_u64(args.seed);
     let warm_up = (args.frames / 10).max(8);
     let total = warm_up + args.frames;
-    let (mut method, mut w, mut h, mut layers, mut aperture) = (Method::Multilayer, max, max, MAX_LAYERS, 0.01f32);
+    let (mut method, mut w, mut h, mut layers, mut aperture) = (0usize, max, max, MAX_LAYERS, 0.01f32);
     let (mut host_after_warm_up, mut rss_after_warm_up, mut device_after_warm_up) = (0i64, 0i64, 0u64);
     let mut messages = Vec::new();
     let mut checked = 0u32;
     let mut resizes = 0u32;
-    let mut per_method = [0u32; METHODS.len()];
+    let mut per_method = vec![0u32; METHODS.len()];
     let start = Instant::now();
     for frame in 0..total {
         if frame % args.every == 0 {
-            method = METHODS[rng.random_range(0..METHODS.len())];
+            method = rng.random_range(0..METHODS.len());
             w = rng.random_range(1..=max);
             h = rng.random_range(1..=max);
-            layers = if method == Method::Multilayer { rng.random_range(1..=MAX_LAYERS) } else { 1 };
-            if method == Method::RingGather {
-                // Its knob changes between frames without reallocating.
-                let options = RingGatherOptions { rings: rng.random_range(1..=MAX_RINGS), ..Default::default() };
-                ctx.ring_gather.set_options(options)?;
+            layers = if METHODS[method].reads == Reads::AllLayers { rng.random_range(1..=MAX_LAYERS) } else { 1 };
+            if let Some(knob) = METHODS[method].knob {
+                // A knob changes between frames without reallocating.
+                contexts[method].set_knob(rng.random_range(knob.min..=knob.max))?;
             }
             // Pinhole to strong blur (up to about 40 px of CoC radius with the test lens).
             aperture = if rng.random_bool(0.1) { 0.0 } else { rng.random_range(0.0005f32..0.03) };
             let image = noise_with_sky(w, h, layers);
             b.write_buffer(bufs[0], 0, &slot_words(&image))?;
             b.write_buffer(bufs[1], 0, &image.counts)?;
-            // Now and then the multi-layer context is resized (shrunk, then grown back): the path
-            // a renderer takes when its window changes.
+            // Now and then the context is resized (shrunk, then grown back): the path a renderer
+            // takes when its window changes.
             if frame > 0 && rng.random_bool(0.05) {
                 let smaller = rng.random_range(16..=max);
-                ctx.multilayer.resize(b, smaller, smaller, MAX_LAYERS)?;
-                ctx.multilayer.resize(b, max, max, MAX_LAYERS)?;
+                contexts[method].resize(b, Extent::new(smaller, smaller, MAX_LAYERS))?;
+                contexts[method].resize(b, extent)?;
                 resizes += 1;
             }
         }
         let mut lens = test_lens(aperture);
         lens.focus_distance = 1.0 + (frame % 7) as f32 * 0.5;
         let f = Frame::layers(w, h, layers, lens, bufs[0], bufs[1], bufs[2]);
-        match method {
-            Method::Multilayer => ctx.multilayer.record(b, &f)?,
-            Method::Tiled => ctx.tiled.record(b, &f)?,
-            Method::Gather => ctx.gather.record(b, &f)?,
-            Method::RingGather => ctx.ring_gather.record(b, &f)?,
-            Method::Bokeh => ctx.bokeh.record(b, &f)?,
-        }
+        contexts[method].record(b, &f)?;
         b.submit()?;
-        per_method[METHODS.iter().position(|&m| m == method).unwrap_or(0)] += 1;
+        per_method[method] += 1;
         messages.extend(b.take_diagnostics());
         // Now and then the result is read back and checked: finite everywhere (the input is).
         if frame % 16 == 0 {
             let out = read_rgb(b, bufs[2], w, h)?;
             if let Some(p) = out.data.iter().position(|c| c.iter().any(|v| !v.is_finite())) {
                 anyhow::bail!(
-                    "frame {frame} ({method:?}, {w}x{h}, {layers} layers, aperture {aperture}): pixel {p} is not finite: {:?}",
+                    "frame {frame} ({}, {w}x{h}, {layers} layers, aperture {aperture}): pixel {p} is not finite: {:?}",
+                    METHODS[method].name,
                     out.data[p]
                 );
             }
@@ -182,12 +156,10 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
     let device_growth = b.counters().device_bytes as i64 - device_after_warm_up as i64;
     let seconds = start.elapsed().as_secs_f64();
     let device_bytes = b.counters().device_bytes;
-    let Contexts { multilayer, tiled, gather, ring_gather, bokeh } = ctx;
-    multilayer.destroy(b);
-    tiled.destroy(b);
-    gather.destroy(b);
-    ring_gather.destroy(b);
-    bokeh.destroy(b);
+    contexts.into_iter().for_each(|c| c.destroy(b));
+    let frames_per_method: serde_json::Map<String, serde_json::Value> =
+        METHODS.iter().zip(&per_method).map(|(m, n)| (m.name.to_string(), (*n).into())).collect();
+    let counts: Vec<String> = METHODS.iter().zip(&per_method).map(|(m, n)| format!("{n} {}", m.name)).collect();
     bufs.into_iter().for_each(|id| b.destroy_buffer(id));
     let left = b.counters().device_bytes;
     messages.extend(b.take_diagnostics());
@@ -199,7 +171,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
             "validation": validation,
             "frames": args.frames,
             "warm_up_frames": warm_up,
-            "frames_per_method": { "multilayer": per_method[0], "tiled": per_method[1], "gather": per_method[2], "ring_gather": per_method[3], "bokeh": per_method[4] },
+            "frames_per_method": frames_per_method,
             "resizes": resizes,
             "checked_frames": checked,
             "validation_messages": messages.len(),
@@ -214,16 +186,12 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
         println!("{json}");
     } else {
         println!(
-            "{} frames (+{warm_up} warm-up) on {} ({}), validation {}: {} multi-layer, {} single-layer, {} gather, {} ring gather, {} bokeh; {resizes} resizes; {checked} results checked finite; {seconds:.1} s",
+            "{} frames (+{warm_up} warm-up) on {} ({}), validation {}: {}; {resizes} resizes; {checked} results checked finite; {seconds:.1} s",
             args.frames,
             b.kind(),
             b.device_name(),
             if validation { "on" } else { "off" },
-            per_method[0],
-            per_method[1],
-            per_method[2],
-            per_method[3],
-            per_method[4]
+            counts.join(", ")
         );
         println!(
             "after the warm-up: heap {:+} bytes (slack {} MB), resident set {:+.1} MB (with the driver's memory), device memory {:+} bytes (held {:.1} MB, {left} left after destroying everything); validation messages: {}",

@@ -1,7 +1,7 @@
 //! Cost ratios: multi-layer tiled splatting (Franke et al. 2018) at its renderer setting (merged
 //! 4x4, 16 px tiles) against the engine-grade gather at what engines ship (5 rings), per scene and
 //! backend in one run, with each one's error against the exact reference beside its time. The
-//! seed reports multi-layer 2.4-2.6x slower than its gather on a GTX 1070; the goal here is 1.8x.
+//! paper (Franke et al. 2018) reports multi-layer 2.4-2.6x slower than its gather on a GTX 1070; the goal here is 1.8x.
 //!
 //! Both methods run at their sweep setting from [`super::methods`], through the same one-shot path
 //! as `dof eval` (a warm-up run, then the median of the timed runs of the kernels' times).

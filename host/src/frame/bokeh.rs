@@ -4,15 +4,35 @@
 //! pipeline on Vulkan, its compute fallback on the CPU) and the sum. Nothing is planned or read
 //! back on the host.
 
+use super::context::{ContextReport, DofContext, Extent};
 use super::gather::{MAX_RADIUS, record_gather};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, ready, record_front, record_input, record_output};
-use crate::backend::{Backend, BufferId, push_words};
+use crate::aperture::ApertureShape;
+use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
-use crate::methods::bokeh::BokehOptions;
-use crate::methods::buffers::groups_for;
 use crate::ops::scan::ScanScratch;
 use dof_shaders::bokeh::{ARGS_WORDS, BOKEH_ARGS, BOKEH_COMBINE, BOKEH_DETECT, BOKEH_DRAW, BOKEH_EMIT, BokehParams, COUNTER, SPRITE_WORDS};
 use dof_shaders::gather::{GATHER, GATHER_PLAN};
+
+#[derive(Clone, Debug)]
+pub struct BokehOptions {
+    /// Luminance above the 5x5 neighbourhood's mean that makes a sprite (`LumThreshold`, linear
+    /// units; default 1, a diffuse white).
+    pub lum_threshold: f32,
+    /// Smallest CoC radius (px) that makes a sprite (`CoCThreshold`; default 2).
+    pub coc_threshold: f32,
+    /// Sprites the buffer holds (default 4096); more are counted and left in the blur.
+    pub capacity: u32,
+    /// Largest sprite CoC radius (px; default 256).
+    pub max_radius: f32,
+    pub aperture: ApertureShape,
+}
+
+impl Default for BokehOptions {
+    fn default() -> Self {
+        BokehOptions { lum_threshold: 1.0, coc_threshold: 2.0, capacity: 4096, max_radius: 256.0, aperture: ApertureShape::circle() }
+    }
+}
 
 /// What a bokeh context is created for.
 #[derive(Clone, Debug)]
@@ -129,6 +149,10 @@ impl BokehContext {
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {
+        if let Err(e) = self.owned.check(backend) {
+            log::error!("{e}: nothing freed");
+            return;
+        }
         self.scan.destroy(backend);
         self.owned.free(backend);
     }
@@ -139,7 +163,7 @@ impl BokehContext {
 
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, (d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        check_frame(backend, f, &self.owned, Extent::new(d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
         let b = &self.b;
         let (width, height) = (f.width, f.height);
         let pixels = width as u64 * height as u64;
@@ -177,5 +201,44 @@ impl BokehContext {
         let detected = backend.read_buffer(self.b.counters, COUNTER as u64, 1)?[0] as u64;
         let radius = backend.read_buffer(self.b.radius, 0, 1)?[0].min(MAX_RADIUS);
         Ok((detected, radius))
+    }
+}
+
+impl DofContext for BokehContext {
+    fn method(&self) -> &'static str {
+        "bokeh"
+    }
+    fn extent(&self) -> Extent {
+        Extent::new(self.desc.max_width, self.desc.max_height, self.desc.max_layers)
+    }
+    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
+        BokehContext::record(self, backend, frame)
+    }
+    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
+        let (detected, radius) = self.detected_and_radius(backend)?;
+        let overflow = detected.saturating_sub(self.desc.options.capacity as u64);
+        let mut summary = format!("{detected} bright pixels detected, {} drawn as sprites", detected - overflow);
+        if overflow > 0 {
+            summary += &format!(" ({overflow} beyond the capacity of {} left in the blur)", self.desc.options.capacity);
+        }
+        summary += &format!(", over a gather of radius {radius} px");
+        Ok(ContextReport {
+            summary,
+            figures: [("sprites".to_string(), detected as f64), ("radius_px".to_string(), radius as f64)].into(),
+            overflow,
+            ..Default::default()
+        })
+    }
+    fn device_bytes(&self) -> u64 {
+        BokehContext::device_bytes(self)
+    }
+    fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
+        let desc = BokehContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
+        let old = std::mem::replace(self, BokehContext::new(backend, &desc)?);
+        old.destroy(backend);
+        Ok(())
+    }
+    fn destroy(self: Box<Self>, backend: &mut dyn Backend) {
+        BokehContext::destroy(*self, backend)
     }
 }

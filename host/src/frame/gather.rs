@@ -1,10 +1,10 @@
 //! The gathering baseline (Riguer et al. 2003) as a frame context: the window radius reduced on the
 //! device from the frame's depths, so nothing is planned on the host.
 
+use super::context::{ContextReport, DofContext, Extent};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
-use crate::backend::{Backend, BufferId, push_words};
+use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
-use crate::methods::buffers::groups_for;
 use dof_shaders::gather::{GATHER, GATHER_PLAN, GatherParams, TILE};
 
 /// The scanned window is `2 r + 1` pixels wide: beyond this radius the gather's cost (quadratic in
@@ -86,7 +86,7 @@ impl GatherContext {
     /// Records one frame: the front layer of the input, the radius reduction, the gather.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, (d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        check_frame(backend, f, &self.owned, Extent::new(d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
         let slots = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         record_front(backend, f, slots, self.color, self.depth)?;
@@ -97,5 +97,37 @@ impl GatherContext {
     /// The window radius the last frame scanned (reads it back: call once the frame completed).
     pub fn radius(&self, backend: &mut dyn Backend) -> Result<u32> {
         Ok(backend.read_buffer(self.plan, 0, 1)?[0].min(self.cap))
+    }
+}
+
+impl DofContext for GatherContext {
+    fn method(&self) -> &'static str {
+        "gather"
+    }
+    fn extent(&self) -> Extent {
+        Extent::new(self.desc.max_width, self.desc.max_height, self.desc.max_layers)
+    }
+    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
+        GatherContext::record(self, backend, frame)
+    }
+    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
+        let radius = self.radius(backend)?;
+        Ok(ContextReport {
+            summary: format!("gathered over a window of radius {radius} px (cap {} px)", self.cap),
+            figures: [("radius_px".to_string(), radius as f64)].into(),
+            ..Default::default()
+        })
+    }
+    fn device_bytes(&self) -> u64 {
+        GatherContext::device_bytes(self)
+    }
+    fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
+        let desc = GatherContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
+        let old = std::mem::replace(self, GatherContext::new(backend, &desc)?);
+        old.destroy(backend);
+        Ok(())
+    }
+    fn destroy(self: Box<Self>, backend: &mut dyn Backend) {
+        GatherContext::destroy(*self, backend)
     }
 }

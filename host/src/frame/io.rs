@@ -1,9 +1,9 @@
 //! What a frame reads and writes, for every context: the caller's buffers or images, how a depth
 //! image encodes depth, and the buffers that image inputs and outputs go through on the device.
 
-use crate::backend::{Backend, BufferId, ImageFormat, ImageRef, push_words};
+use super::context::Extent;
+use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, groups_for, push_words};
 use crate::error::{Error, Result};
-use crate::methods::buffers::groups_for;
 use dof_shaders::frame_io::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, FROM_IMAGES, FRONT, FrameIoParams, TO_RGBA};
 use dof_shaders::lens::ThinLens;
 
@@ -73,15 +73,16 @@ const COLOR_FORMATS: [ImageFormat; 2] = [ImageFormat::Rgba32Float, ImageFormat::
 
 /// Checks what every context checks: a non-empty size within the maximum, a valid lens, buffers
 /// large enough, images of the frame's size and a supported format, sane depth planes.
-pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, max: (u32, u32, u32), io: Option<&ImageIo>) -> Result<()> {
+pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: Extent, io: Option<&ImageIo>) -> Result<()> {
+    owned.check(backend)?;
     let layers = f.layer_count();
     if f.width == 0 || f.height == 0 || layers == 0 {
         return Err(Error::InvalidArgument(format!("an empty {}x{} frame with {layers} layers", f.width, f.height)));
     }
-    if f.width > max.0 || f.height > max.1 || layers > max.2 {
+    if !max.holds(f.width, f.height, layers) {
         return Err(Error::InvalidArgument(format!(
             "a {}x{} frame with {layers} layers exceeds the context's {}x{} with {} (resize the context)",
-            f.width, f.height, max.0, max.1, max.2
+            f.width, f.height, max.width, max.height, max.layers
         )));
     }
     if !f.lens.is_valid() {
@@ -132,8 +133,6 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, max: (u32, u32, u32)
     Ok(())
 }
 
-/// The buffers a context owns: made one by one, counted, and freed together (also when making a
-
 /// The pixels of a single-layer context's largest frame (`what` names it in errors), refusing an
 /// empty extent and an input whose slots could not fit one buffer of `backend`.
 pub(crate) fn context_pixels(backend: &dyn Backend, what: &str, width: u32, height: u32, layers: u32) -> Result<u64> {
@@ -165,19 +164,36 @@ pub(crate) fn ready<C>(
         }
     }
 }
+/// The buffers a context owns: made one by one, counted, and freed together (also when making a
 /// later one fails part way).
 #[derive(Default)]
 pub(crate) struct Owned {
     ids: Vec<BufferId>,
     bytes: u64,
+    /// The backend the buffers were made on (set by the first one).
+    owner: Option<BackendId>,
 }
 
 impl Owned {
     pub fn make(&mut self, backend: &mut dyn Backend, words: u64, label: &str) -> Result<BufferId> {
+        self.check(backend)?;
         let id = backend.create_buffer(words.max(1), label)?;
+        self.owner = Some(backend.id());
         self.ids.push(id);
         self.bytes += 4 * words.max(1);
         Ok(id)
+    }
+
+    /// Refuses a backend other than the one the buffers were made on: its buffers of the same ids
+    /// belong to someone else.
+    pub fn check(&self, backend: &dyn Backend) -> Result<()> {
+        match self.owner {
+            Some(owner) if owner != backend.id() => Err(Error::InvalidArgument(format!(
+                "this context was made on another backend than the {} backend it was handed (contexts are tied to the backend that made them)",
+                backend.kind()
+            ))),
+            _ => Ok(()),
+        }
     }
 
     /// Bytes of every buffer made.
@@ -185,7 +201,13 @@ impl Owned {
         self.bytes
     }
 
+    /// Frees every buffer, on the backend that made them only: handed another backend it frees
+    /// nothing there and says so in the log (the buffers go with their own backend).
     pub fn free(self, backend: &mut dyn Backend) {
+        if let Err(e) = self.check(backend) {
+            log::error!("{e}: nothing freed");
+            return;
+        }
         self.ids.into_iter().for_each(|id| backend.destroy_buffer(id));
     }
 

@@ -12,8 +12,11 @@
 //! - no submission: the caller submits (on Vulkan, `VulkanBackend::begin_external` records into
 //!   the caller's own command buffer; standalone, one `submit` runs the frame).
 //!
-//! What the frame did and left out (a [`crate::methods::splat::SplatReport`]) stays on the device
-//! until the caller asks for it, after the frame's work has completed.
+//! Every context implements [`DofContext`] (record, report, device bytes, resize, destroy), and
+//! [`registry::METHODS`] lists them with their names, papers, knobs and constructors: callers that
+//! drive several methods hold `Box<dyn DofContext>` and never match on a method. What a frame did
+//! and left out stays on the device until the caller asks for it ([`DofContext::report`]), after
+//! the frame's work has completed.
 //!
 //! Methods: multi-layer tiled splatting (Franke, Hofmann, Stamminger, Selgrad 2018) and its
 //! single-layer predecessor (Selgrad, Franke, Stamminger 2016, the same pipeline on the front
@@ -29,13 +32,17 @@
 //! would need the same treatment (a device reduction for their plan, buffers bound at creation).
 
 pub mod bokeh;
+pub mod context;
 pub mod gather;
 pub mod io;
+pub mod registry;
 pub mod ring_gather;
 pub mod splat;
 
-pub use bokeh::{BokehContext, BokehContextDesc};
+pub use bokeh::{BokehContext, BokehContextDesc, BokehOptions};
+pub use context::{ContextReport, DofContext, Extent};
 pub use gather::{GatherContext, GatherContextDesc};
 pub use io::{DepthEncoding, Frame, FrameInput, FrameOutput};
+pub use registry::{ContextDesc, METHODS, MethodInfo, MethodOptions, Reads};
 pub use ring_gather::{RingGatherContext, RingGatherContextDesc, RingGatherOptions};
-pub use splat::{SplatContext, SplatContextDesc};
+pub use splat::{Merge, SplatContext, SplatContextDesc, SplatOptions};

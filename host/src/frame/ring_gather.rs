@@ -3,10 +3,10 @@
 //! creation and nothing planned on the host, so its cost is fixed by the frame's size and the ring
 //! count, not by the blur.
 
+use super::context::{ContextReport, DofContext, Extent};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
-use crate::backend::{Backend, BufferId, push_words};
+use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
-use crate::methods::buffers::groups_for;
 use dof_shaders::ring_gather::{
     FIELD_WORDS, HALF_WORDS, RING_GATHER, RING_GATHER_COMPOSITE, RING_GATHER_DILATE, RING_GATHER_DOWNSAMPLE, RingGatherParams,
 };
@@ -15,7 +15,7 @@ use dof_shaders::ring_gather::{
 /// half-resolution pixel. Fixed before anything was compared with it.
 pub const DEFAULT_RINGS: u32 = 5;
 /// The quality knob's range: 1 ring (7 samples) to 8 rings (217 samples).
-pub const MAX_RINGS: u32 = 8;
+pub const MAX_SAMPLE_RINGS: u32 = 8;
 /// Default cap on the CoC radius, pixels of the frame (32 half-resolution pixels).
 pub const DEFAULT_MAX_RADIUS: u32 = 64;
 /// Largest cap accepted: the tile dilation's neighbourhood grows with it (17x17 tiles at 128 px).
@@ -24,7 +24,7 @@ pub const MAX_RADIUS: u32 = 128;
 /// The engine-grade gather's settings.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct RingGatherOptions {
-    /// Sample rings at half resolution, 1 to [`MAX_RINGS`].
+    /// Sample rings at half resolution, 1 to [`MAX_SAMPLE_RINGS`].
     pub rings: u32,
     /// Cap on the CoC radius, pixels, 1 to [`MAX_RADIUS`].
     pub max_radius: u32,
@@ -39,8 +39,8 @@ impl Default for RingGatherOptions {
 impl RingGatherOptions {
     /// Refuses a ring count or radius cap out of range.
     pub fn check(&self) -> Result<()> {
-        if !(1..=MAX_RINGS).contains(&self.rings) {
-            return Err(Error::InvalidArgument(format!("the ring gather takes 1 to {MAX_RINGS} rings, got {}", self.rings)));
+        if !(1..=MAX_SAMPLE_RINGS).contains(&self.rings) {
+            return Err(Error::InvalidArgument(format!("the ring gather takes 1 to {MAX_SAMPLE_RINGS} rings, got {}", self.rings)));
         }
         if !(1..=MAX_RADIUS).contains(&self.max_radius) {
             return Err(Error::InvalidArgument(format!(
@@ -143,7 +143,7 @@ impl RingGatherContext {
     /// gather over rings and the composite.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, (d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        check_frame(backend, f, &self.owned, Extent::new(d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
         let slots = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         let b = &self.passes;
@@ -165,5 +165,45 @@ impl RingGatherContext {
         let pixel_groups = [f.width.div_ceil(8), f.height.div_ceil(8), 1];
         backend.dispatch(&RING_GATHER_COMPOSITE, pixel_groups, &[b.color, b.depth, b.fields, output], &params, "ring-gather/composite")?;
         record_output(backend, f, self.io.as_ref())
+    }
+}
+
+impl DofContext for RingGatherContext {
+    fn method(&self) -> &'static str {
+        "ring-gather"
+    }
+    fn extent(&self) -> Extent {
+        Extent::new(self.desc.max_width, self.desc.max_height, self.desc.max_layers)
+    }
+    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
+        RingGatherContext::record(self, backend, frame)
+    }
+    fn report(&self, _backend: &mut dyn Backend) -> Result<ContextReport> {
+        let o = self.desc.options;
+        let samples = dof_shaders::ring_gather::samples(o.rings);
+        Ok(ContextReport {
+            summary: format!("{} rings, {samples} samples a half-resolution pixel, CoC radius cap {} px", o.rings, o.max_radius),
+            figures: [("rings".to_string(), o.rings as f64), ("samples_per_half_pixel".to_string(), samples as f64)].into(),
+            ..Default::default()
+        })
+    }
+    fn device_bytes(&self) -> u64 {
+        RingGatherContext::device_bytes(self)
+    }
+    fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
+        let desc =
+            RingGatherContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
+        let old = std::mem::replace(self, RingGatherContext::new(backend, &desc)?);
+        old.destroy(backend);
+        Ok(())
+    }
+    fn knob(&self) -> Option<u32> {
+        Some(self.desc.options.rings)
+    }
+    fn set_knob(&mut self, rings: u32) -> Result<()> {
+        self.set_options(RingGatherOptions { rings, ..self.desc.options })
+    }
+    fn destroy(self: Box<Self>, backend: &mut dyn Backend) {
+        RingGatherContext::destroy(*self, backend)
     }
 }

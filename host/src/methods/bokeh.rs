@@ -4,32 +4,12 @@
 //! for the report.
 
 use super::buffers::one_layer_frame;
-use crate::aperture::ApertureShape;
 use crate::backend::{Backend, CommandTime};
 use crate::error::Result;
+pub use crate::frame::bokeh::BokehOptions;
 use crate::frame::{BokehContext, BokehContextDesc};
 use crate::layers::RgbImage;
 use dof_shaders::lens::ThinLens;
-
-#[derive(Clone, Debug)]
-pub struct BokehOptions {
-    /// Luminance above the 5x5 neighbourhood's mean that makes a sprite (`LumThreshold`, linear
-    /// units; default 1, a diffuse white).
-    pub lum_threshold: f32,
-    /// Smallest CoC radius (px) that makes a sprite (`CoCThreshold`; default 2).
-    pub coc_threshold: f32,
-    /// Sprites the buffer holds (default 4096); more are counted and left in the blur.
-    pub capacity: u32,
-    /// Largest sprite CoC radius (px; default 256).
-    pub max_radius: f32,
-    pub aperture: ApertureShape,
-}
-
-impl Default for BokehOptions {
-    fn default() -> Self {
-        BokehOptions { lum_threshold: 1.0, coc_threshold: 2.0, capacity: 4096, max_radius: 256.0, aperture: ApertureShape::circle() }
-    }
-}
 
 pub struct BokehOutput {
     pub image: RgbImage,

@@ -5,21 +5,14 @@ use crate::backend::{Backend, BufferId, with_buffers};
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::layers::{LayeredImage, RgbImage};
-use dof_shaders::KernelDesc;
 use dof_shaders::lens::ThinLens;
 
-/// Workgroups the host dispatches at most in one dimension; grid-stride kernels loop over the rest.
-pub use dof_shaders::splat::MAX_GROUPS;
+pub use crate::backend::{MAX_GROUPS, groups_for};
 
 /// Every fragment slot of `image` as 4 words: r, g, b, depth (the input layout of the splatting,
 /// ray-tracing and layered kernels).
 pub fn slot_words(image: &LayeredImage) -> Vec<u32> {
     image.fragments.iter().flat_map(|f| [f.color[0].to_bits(), f.color[1].to_bits(), f.color[2].to_bits(), f.depth.to_bits()]).collect()
-}
-
-/// Workgroups of `kernel` for `items` one-dimensional items (at least one, at most [`MAX_GROUPS`]).
-pub fn groups_for(kernel: &KernelDesc, items: u64) -> [u32; 3] {
-    [(items.div_ceil(kernel.workgroup_size as u64)).clamp(1, MAX_GROUPS as u64) as u32, 1, 1]
 }
 
 /// A `width` x `height` RGB image from 3 words a pixel of `buffer`.

@@ -1,4 +1,4 @@
-//! Layered depth of field with matting (seed 002; kernels and the matting rules in
+//! Layered depth of field with matting (Schedl and Wimmer 2012; kernels and the matting rules in
 //! `dof_shaders::layered`), planned per frame on the host:
 //!
 //! - **Layers from the depth range.** A min/max reduction over every fragment's signed CoC (the sky

@@ -5,6 +5,7 @@ pub mod bokeh;
 pub mod buffers;
 pub mod gather;
 pub mod layered;
+pub mod one_shot;
 pub mod raytrace;
 pub mod ring_gather;
 pub mod splat;

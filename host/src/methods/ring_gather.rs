@@ -8,7 +8,7 @@ use crate::frame::{RingGatherContext, RingGatherContextDesc};
 use crate::layers::RgbImage;
 use dof_shaders::lens::ThinLens;
 
-pub use crate::frame::ring_gather::{DEFAULT_MAX_RADIUS, DEFAULT_RINGS, MAX_RADIUS, MAX_RINGS, RingGatherOptions};
+pub use crate::frame::ring_gather::{DEFAULT_MAX_RADIUS, DEFAULT_RINGS, MAX_RADIUS, MAX_SAMPLE_RINGS, RingGatherOptions};
 
 /// The blurred image and the time of each dispatch.
 pub struct RingGatherOutput {

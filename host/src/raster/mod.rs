@@ -1,5 +1,5 @@
 //! Triangle-mesh scenes (glTF) on the device: rasterised into the partial multi-layer image by
-//! depth peeling, and into the accumulation-buffer reference (seed 000 §4; kernels and shaders in
+//! depth peeling, and into the accumulation-buffer reference (Franke et al. 2018, §4; kernels and shaders in
 //! `dof_shaders::raster`).
 //!
 //! - [`mesh`]: the mesh as the rasteriser takes it, and its upload;

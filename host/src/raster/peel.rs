@@ -1,4 +1,4 @@
-//! The partial multi-layer image of a mesh by depth peeling (seed 000 §4.1-4.3), the rasterised
+//! The partial multi-layer image of a mesh by depth peeling (Franke et al. 2018, §4.1-4.3), the rasterised
 //! counterpart of [`crate::scene::raycast_layers`] with the same rules:
 //!
 //! 1. Pass `k` draws every triangle and keeps, per pixel, the nearest fragment beyond `reach`
@@ -15,10 +15,9 @@
 
 use super::mesh::{DeviceMesh, RasterScene};
 use super::view::View;
-use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
+use crate::backend::{Backend, BufferId, CommandTime, groups_for, push_words, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::{Fragment, LayeredImage};
-use crate::methods::buffers::groups_for;
 use crate::scene::guard_band::auto_margin_mesh;
 use crate::scene::{Camera, CameraFrame, LayerOptions, MultiLayerImage, apply_disocclusion};
 use dof_shaders::lens::ThinLens;

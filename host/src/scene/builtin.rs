@@ -4,8 +4,8 @@
 //!
 //! | name | what it tests |
 //! |---|---|
-//! | `simple` | seed 000 Fig. 11: far white plane, red sphere in focus, small blue quad near the camera |
-//! | `railing` | out-of-focus railing bars near the camera over a detailed far field (seed 000 Fig. 1) |
+//! | `simple` | Franke et al. 2018, Fig. 11: far white plane, red sphere in focus, small blue quad near the camera |
+//! | `railing` | out-of-focus railing bars near the camera over a detailed far field (Franke et al. 2018, Fig. 1) |
 //! | `columns` | a colonnade seen at an angle: many overlapping depth layers |
 //! | `highlights` | small, very bright emissive dots at many depths (bokeh), some above 65504 |
 //! | `fence` | out-of-focus fence bars near the camera over a far wall, open sky above and below it |

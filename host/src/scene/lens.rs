@@ -150,7 +150,7 @@ impl LensSettings {
     }
 }
 
-/// Checks an [`ArtistLens`] (seed 001's linear model): `near_end <= near_start <= far_start <=
+/// Checks an [`ArtistLens`] (de Rousiers and Pettineo's linear model): `near_end <= near_start <= far_start <=
 /// far_end`, values finite (`far_end` may be `+inf`), `max_radius_px >= 0` with a finite diameter
 /// (`2 · max_radius_px`: beyond it the CoC is `inf · 0`, NaN, in the sharp zone).
 pub fn validate_artist_lens(lens: &ArtistLens) -> Result<()> {

@@ -1,4 +1,4 @@
-//! The exact partial multi-layer image of an analytic scene (seed 000 §4): every surface along each
+//! The exact partial multi-layer image of an analytic scene (Franke et al. 2018, §4): every surface along each
 //! pixel's centre ray, front to back, thinned by the umbra threshold and kept beyond the front layer
 //! only inside the disocclusion buffer.
 //!

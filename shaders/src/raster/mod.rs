@@ -1,5 +1,5 @@
 //! Rasterising triangle meshes (glTF scenes) into the multi-layer image and the
-//! accumulation-buffer reference (seed 000 §4).
+//! accumulation-buffer reference (Franke et al. 2018, §4).
 //!
 //! - [`mesh`]: the scene's buffers and the lighting model;
 //! - [`project`]: the clip transform, culling and homogeneous rasterisation;

@@ -2,7 +2,7 @@
 //! the mesh (the lighting model of [`super::mesh`]), written as one layer of the multi-layer image
 //! or added into the accumulation buffer.
 //!
-//! Layer mode also writes `reach[pixel]`, the depth the next peel must pass (seed 000 §4.1): behind
+//! Layer mode also writes `reach[pixel]`, the depth the next peel must pass (Franke et al. 2018, §4.1): behind
 //! an opaque fragment its umbra (`ThinLens::umbra_length` of the pixel's footprint; infinite once
 //! the footprint covers the aperture), behind a partly covering one nothing more than its depth,
 //! and infinity where nothing was found (nothing lies behind the background).

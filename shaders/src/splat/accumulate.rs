@@ -1,4 +1,4 @@
-//! Stage 5: order-correct accumulation (seed 000 §5.3). One workgroup covers a block of pixels of a
+//! Stage 5: order-correct accumulation (Franke et al. 2018, §5.3). One workgroup covers a block of pixels of a
 //! tile and walks the tile's depth-sorted list in chunks of 256 fragments staged in workgroup memory;
 //! every pixel blends the fragments whose disc covers its centre, front to back.
 //!

@@ -1,4 +1,4 @@
-//! Stage 3: tile lists (seed 000 §5.1).
+//! Stage 3: tile lists (Franke et al. 2018, §5.1).
 //!
 //! - `splat_tile_count` (one workgroup per tile): fragments per tile, each cell's offset inside its
 //!   tile (a scan of the partially filled cells: the index that lets every thread take fragments of

@@ -1,4 +1,4 @@
-//! The splatting fragment: 16 bytes, laid out as seed 000 Fig. 7.
+//! The splatting fragment: 16 bytes, laid out as Franke et al. 2018, Fig. 7.
 //!
 //! | word | bits 0-15 | bits 16-31 |
 //! |---|---|---|

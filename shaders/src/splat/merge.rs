@@ -1,4 +1,4 @@
-//! Stage 2 (optional): hierarchical fragment merging (seed 000 §6.1-6.2), one 2x2 step per dispatch.
+//! Stage 2 (optional): hierarchical fragment merging (Franke et al. 2018, §6.1-6.2), one 2x2 step per dispatch.
 //!
 //! One invocation per output cell walks the four member cells' lists front to back (each list is in
 //! depth order). While all four heads are mergeable (same merge level as this step's input, all out of

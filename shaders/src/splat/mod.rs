@@ -1,9 +1,9 @@
-//! Tiled splatting of a multi-layer image (seed 000 §5-6; seed 003 is the same pipeline on the front
+//! Tiled splatting of a multi-layer image (Franke et al. 2018, §5-6; Selgrad et al. 2016 is the same pipeline on the front
 //! layer only). Stages, each a kernel here, recorded by `host/src/frame/splat.rs`:
 //!
 //! 0. [`plan`]: the largest CoC radius and the brightest colour, reduced on the device, give the
 //!    rings, the radius cap and the colour scale (nothing is decided on the host from the image).
-//! 1. [`pack`]: per-pixel layer slots → 16-byte [`fragment::Fragment`]s (seed 000 Fig. 7); non-finite
+//! 1. [`pack`]: per-pixel layer slots → 16-byte [`fragment::Fragment`]s (Franke et al. 2018, Fig. 7); non-finite
 //!    colours and invalid depths are dropped, colours scaled into the half-float range, and an empty
 //!    pixel gets the sky (black at infinite depth) so that coverage is complete. In-focus fragments
 //!    stay out of the lists: a pixel's first one is kept per pixel (its "sharp front").

@@ -23,7 +23,9 @@ mod pipelines;
 mod recorder;
 mod spirv;
 
-use super::{Backend, BackendCounters, BackendKind, BufferId, CommandTime, ImageRef, Limits, check_dispatch, check_draw, draw_fallback};
+use super::{
+    Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageRef, Limits, check_dispatch, check_draw, draw_fallback,
+};
 use crate::error::{Error, Result, VkContext};
 use ash::vk;
 use ash::vk::Handle;
@@ -110,6 +112,7 @@ pub struct RequiredFeatures {
 }
 
 pub struct VulkanBackend {
+    id: BackendId,
     /// See [`Backend::set_memory_budget`].
     budget: Option<u64>,
     // Fields drop in declaration order after `Drop::drop` has destroyed what they made: the device
@@ -254,6 +257,7 @@ impl VulkanBackend {
             upload: Staging::new(MemoryLocation::CpuToGpu),
             readback: Staging::new(MemoryLocation::GpuToCpu),
             counters: BackendCounters::default(),
+            id: BackendId::fresh(),
             budget: None,
             external_used: HashSet::new(),
             refused: Vec::new(),
@@ -605,6 +609,9 @@ fn storage_writes(infos: &[vk::DescriptorBufferInfo]) -> Vec<vk::WriteDescriptor
 }
 
 impl Backend for VulkanBackend {
+    fn id(&self) -> BackendId {
+        self.id
+    }
     fn kind(&self) -> BackendKind {
         BackendKind::Vulkan
     }

@@ -114,8 +114,8 @@ fn check(args: &ViewArgs) -> Result<()> {
     if ![16, 24, 32].contains(&args.tile) {
         bail!("--tile must be 16, 24 or 32, got {}", args.tile);
     }
-    if !(1..=dof::methods::ring_gather::MAX_RINGS).contains(&args.rings) {
-        bail!("--rings must be 1 to {}, got {}", dof::methods::ring_gather::MAX_RINGS, args.rings);
+    if !(1..=dof::methods::ring_gather::MAX_SAMPLE_RINGS).contains(&args.rings) {
+        bail!("--rings must be 1 to {}, got {}", dof::methods::ring_gather::MAX_SAMPLE_RINGS, args.rings);
     }
     if args.frames == Some(0) {
         bail!("--frames must be at least 1");

@@ -73,8 +73,8 @@ fn step(s: &str) -> Result<Step> {
             _ => bail!("--script {s}: the tile edge is 16, 24 or 32"),
         },
         "rings" => match value.parse::<u32>() {
-            Ok(n) if (1..=dof::methods::ring_gather::MAX_RINGS).contains(&n) => Step::Rings(n),
-            _ => bail!("--script {s}: the ring gather takes 1 to {} rings", dof::methods::ring_gather::MAX_RINGS),
+            Ok(n) if (1..=dof::methods::ring_gather::MAX_SAMPLE_RINGS).contains(&n) => Step::Rings(n),
+            _ => bail!("--script {s}: the ring gather takes 1 to {} rings", dof::methods::ring_gather::MAX_SAMPLE_RINGS),
         },
         "orbit" => Step::Orbit(number(value)?),
         "click" => match value.split_once(':').map(|(x, y)| (number(x), number(y))) {

@@ -100,7 +100,10 @@ impl Panel {
                 });
             });
             ui.add_enabled_ui(self.settings.method == ViewMethod::RingGather, |ui| {
-                ui.add(egui::Slider::new(&mut self.settings.rings, 1..=dof::methods::ring_gather::MAX_RINGS).text("rings (ring gather)"));
+                ui.add(
+                    egui::Slider::new(&mut self.settings.rings, 1..=dof::methods::ring_gather::MAX_SAMPLE_RINGS)
+                        .text("rings (ring gather)"),
+                );
             });
             ui.label(format!(
                 "lens: f = {:.3}, aperture radius {:.4}, focus {:.3}",

@@ -7,10 +7,7 @@
 //! frame of a host image through it and reads back the image and what was left out, so every
 //! result carries a [`SplatReport`].
 
-mod plan;
-mod report;
 mod run;
 
-pub use plan::{Merge, Plan, SplatOptions};
-pub use report::SplatReport;
+pub use crate::frame::splat::{Merge, Plan, SplatOptions, SplatReport};
 pub use run::{Intermediates, SplatOutput, splat};

@@ -6,12 +6,11 @@
 //! lists overflow the default pool, this path runs it again with a pool as large as the frame
 //! wanted, so its result is always whole.
 
-use super::plan::SplatOptions;
-use super::report::SplatReport;
 use crate::backend::{Backend, CommandTime, with_buffers};
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::frame::splat::{MAX_LIST_ENTRIES, SplatContext, SplatContextDesc};
+use crate::frame::splat::{SplatOptions, SplatReport};
 use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{read_rgb, slot_words};
 use dof_shaders::lens::ThinLens;

@@ -1,11 +1,13 @@
 //! Tiled splatting as a frame context: every buffer and bound fixed at creation, then per frame a
 //! recording of the stages in `dof_shaders::splat` with no allocation, readback or host planning.
 
+use super::context::{ContextReport, DofContext, Extent};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_input, record_output};
-use crate::backend::{Backend, BufferId, push_words};
+use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
-use crate::methods::buffers::groups_for;
-use crate::methods::splat::{Plan, SplatOptions, SplatReport};
+mod options;
+mod report;
+
 use crate::ops::scan::ScanScratch;
 use crate::ops::sort::SegmentedSort;
 use dof_shaders::KernelDesc;
@@ -16,6 +18,8 @@ use dof_shaders::splat::merge::MERGE;
 use dof_shaders::splat::pack::PACK;
 use dof_shaders::splat::plan::{PLAN_FINISH, PLAN_REDUCE};
 use dof_shaders::splat::{FLAG_UMBRA_MERGE, MAX_RINGS, SplatParams, TILE_SIZES, block_for, stats};
+pub use options::{Merge, Plan, SplatOptions};
+pub use report::SplatReport;
 
 /// Most tile-list entries a context may hold: 2^29, so that each list buffer stays within 2 GiB.
 /// Measured on an NVIDIA H100 (driver 580.159.04): a 3840x2160 unmerged frame whose list buffers
@@ -102,6 +106,8 @@ pub struct SplatContext {
     sort: SegmentedSort,
     /// The last recorded frame, for its report.
     last: Option<Frame>,
+    /// The registry name it records as (`multilayer`, or `tiled` when handed front layers).
+    name: &'static str,
 }
 
 /// Checks the options against what the kernels support; returns the configured radius cap.
@@ -235,16 +241,38 @@ impl SplatContext {
         if desc.image_io {
             kernels.extend(dof_shaders::frame_io::KERNELS);
         }
-        let ctx =
-            SplatContext { desc: desc.clone(), radius_cap, merge_steps, list_entries, max_list, owned, bytes, b, scan, sort, last: None };
+        let ctx = SplatContext {
+            desc: desc.clone(),
+            radius_cap,
+            merge_steps,
+            list_entries,
+            max_list,
+            owned,
+            bytes,
+            b,
+            scan,
+            sort,
+            last: None,
+            name: "multilayer",
+        };
         super::io::ready(backend, ctx, &kernels, &[], Self::destroy)
     }
 
     /// Frees every buffer. The backend must not be running the context's work.
     pub fn destroy(self, backend: &mut dyn Backend) {
+        if let Err(e) = self.owned.check(backend) {
+            log::error!("{e}: nothing freed");
+            return;
+        }
         self.sort.destroy(backend);
         self.scan.destroy(backend);
         self.owned.free(backend);
+    }
+
+    /// The same context under another registry name (`tiled` for single-layer splatting).
+    pub fn named(mut self, name: &'static str) -> Self {
+        self.name = name;
+        self
     }
 
     pub fn desc(&self) -> &SplatContextDesc {
@@ -294,7 +322,7 @@ impl SplatContext {
     /// Frames within the current maximum need no resize.
     pub fn resize(&mut self, backend: &mut dyn Backend, max_width: u32, max_height: u32, max_layers: u32) -> Result<()> {
         let desc = SplatContextDesc { max_width, max_height, max_layers, ..self.desc.clone() };
-        let fresh = SplatContext::new(backend, &desc)?;
+        let fresh = SplatContext::new(backend, &desc)?.named(self.name);
         let old = std::mem::replace(self, fresh);
         old.destroy(backend);
         Ok(())
@@ -305,7 +333,7 @@ impl SplatContext {
     /// `begin_external` and `end_external`).
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, (d.max_width, d.max_height, d.max_layers), self.b.io.as_ref())?;
+        check_frame(backend, f, &self.owned, Extent::new(d.max_width, d.max_height, d.max_layers), self.b.io.as_ref())?;
         let b = &self.b;
         let pixels = f.width as u64 * f.height as u64;
         let tiles_x = f.width.div_ceil(self.desc.options.tile);
@@ -433,4 +461,64 @@ pub(crate) struct StageBuffers {
     pub values: BufferId,
     pub keys_sorted: BufferId,
     pub values_sorted: BufferId,
+}
+
+impl DofContext for SplatContext {
+    fn method(&self) -> &'static str {
+        self.name
+    }
+    fn extent(&self) -> Extent {
+        Extent::new(self.desc.max_width, self.desc.max_height, self.desc.max_layers)
+    }
+    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
+        SplatContext::record(self, backend, frame)
+    }
+    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
+        let r = SplatContext::report(self, backend)?;
+        let figures = [
+            ("list_entries", r.list_entries as f64),
+            ("mean_list_length", r.mean_list_length()),
+            ("max_list_length", r.max_list_length() as f64),
+            ("copy_tiles", r.copy_tiles as f64),
+            ("merged", r.merged as f64),
+            ("overflow_tiles", r.overflow_tiles as f64),
+            ("list_pool", r.list_capacity as f64),
+        ];
+        Ok(ContextReport {
+            summary: r.summary(),
+            figures: figures.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
+            list_histogram: r.list_histogram(),
+            overflow: r.overflow_tiles as u64,
+        })
+    }
+    fn device_bytes(&self) -> u64 {
+        SplatContext::device_bytes(self)
+    }
+    fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
+        SplatContext::resize(self, backend, extent.width, extent.height, extent.layers)
+    }
+    fn grow_to_fit(&mut self, backend: &mut dyn Backend) -> Result<bool> {
+        let report = SplatContext::report(self, backend)?;
+        if report.overflow_tiles == 0 {
+            return Ok(false);
+        }
+        // The pool the frame wanted: every list that was placed or tried, at least double.
+        let (entries, max_list) = self.list_bounds();
+        if entries >= MAX_LIST_ENTRIES {
+            return Err(Error::TooLarge {
+                what: "tile list entries (merge fragments with --merge 2x2 or 4x4, or render smaller)".into(),
+                size: report.list_top + report.overflow_entries,
+                limit: MAX_LIST_ENTRIES,
+            });
+        }
+        let wanted = (report.list_top + report.overflow_entries).max(2 * entries).min(MAX_LIST_ENTRIES);
+        let desc =
+            SplatContextDesc { list_entries: Some(wanted), max_list: Some(max_list.max(report.longest_list_wanted)), ..self.desc.clone() };
+        let grown = SplatContext::new(backend, &desc)?.named(self.name);
+        std::mem::replace(self, grown).destroy(backend);
+        Ok(true)
+    }
+    fn destroy(self: Box<Self>, backend: &mut dyn Backend) {
+        SplatContext::destroy(*self, backend)
+    }
 }

@@ -2,7 +2,7 @@
 
 use crate::aperture::ApertureShape;
 
-/// Fragment merging before tiling (seed 000 §6.1).
+/// Fragment merging before tiling (Franke et al. 2018, §6.1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Merge {
     None,

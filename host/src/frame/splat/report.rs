@@ -1,6 +1,6 @@
 //! What a splatting frame did and what it left out, for the CLI and the evaluation.
 
-use super::plan::Plan;
+use super::options::Plan;
 use crate::ops::sort::SortStats;
 
 /// What a frame did and left out.
@@ -54,7 +54,7 @@ impl SplatReport {
     pub fn max_list_length(&self) -> u32 {
         self.list_lengths.iter().copied().max().unwrap_or(0)
     }
-    /// List-length histogram (seed 000 Fig. 12): `(upper bound, tiles)` for the power-of-two buckets
+    /// List-length histogram (Franke et al. 2018, Fig. 12): `(upper bound, tiles)` for the power-of-two buckets
     /// `0`, `1`, `2..=2`, `3..=4`, ..., up to the longest list; copied tiles count as length 0.
     pub fn list_histogram(&self) -> Vec<(u32, u32)> {
         let mut buckets: Vec<(u32, u32)> = Vec::new();

@@ -1,0 +1,90 @@
+//! The one shape every method's frame context has: [`DofContext`]. A context is made once for a
+//! backend and a largest frame ([`Extent`]), records any frame within it, reports what its last
+//! frame did, resizes, and is destroyed on the backend that made it. Callers that drive several
+//! methods (the CLI, the viewer, the benchmarks, the fuzz target) hold `Box<dyn DofContext>` made
+//! through the [registry](super::registry) and never name a concrete context.
+
+use super::io::Frame;
+use crate::backend::Backend;
+use crate::error::Result;
+use std::collections::BTreeMap;
+
+/// The largest frame a context records: pixels, and fragment slots per pixel of a multi-layer
+/// input.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Extent {
+    pub width: u32,
+    pub height: u32,
+    pub layers: u32,
+}
+
+impl Extent {
+    pub fn new(width: u32, height: u32, layers: u32) -> Self {
+        Extent { width, height, layers }
+    }
+
+    /// Whether a frame of this size and layer count fits.
+    pub fn holds(&self, width: u32, height: u32, layers: u32) -> bool {
+        width <= self.width && height <= self.height && layers <= self.layers
+    }
+
+    /// The smallest extent holding both.
+    pub fn union(&self, other: Extent) -> Extent {
+        Extent::new(self.width.max(other.width), self.height.max(other.height), self.layers.max(other.layers))
+    }
+}
+
+/// What a context's last frame did and left out, in a form every method shares. Read from the
+/// device, so only once that frame's work has completed.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ContextReport {
+    /// One line for people: what the frame did and what it left out.
+    pub summary: String,
+    /// Method-specific figures by name (list lengths, detected highlights, the scanned radius, ...).
+    pub figures: BTreeMap<String, f64>,
+    /// Tiles per list-length bucket `(upper bound, tiles)` (Franke et al. 2018, Fig. 12); empty for
+    /// methods without tile lists.
+    pub list_histogram: Vec<(u32, u32)>,
+    /// Work the frame could not hold and cut short (tiles whose lists overflowed, highlights beyond
+    /// the sprite capacity): 0 when the frame is whole.
+    pub overflow: u64,
+}
+
+/// A method's frame context (see the [module docs](crate::frame) for what a frame may and may not
+/// do). Every method implements it; nothing outside a method's own module names its concrete type.
+pub trait DofContext {
+    /// The registry name of the method (`multilayer`, `ring-gather`, ...).
+    fn method(&self) -> &'static str;
+    /// The largest frame it records.
+    fn extent(&self) -> Extent;
+    /// Records one frame of any size within [`DofContext::extent`] into the backend's current
+    /// command buffer: no allocation, readback or submission. Refused on another backend than the
+    /// one that made the context.
+    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()>;
+    /// What the last recorded frame did and left out (reads the device: call once it completed).
+    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport>;
+    /// Device bytes the context holds.
+    fn device_bytes(&self) -> u64;
+    /// Makes the context hold frames up to `extent` (frees and reallocates; between frames only).
+    fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()>;
+    /// The method's quality knob (see [`super::registry::Knob`]), where it has one that changes
+    /// between frames without reallocating.
+    fn knob(&self) -> Option<u32> {
+        None
+    }
+    /// Changes the quality knob for the frames recorded next; refused where the method has none
+    /// or the value is out of its range.
+    fn set_knob(&mut self, value: u32) -> Result<()> {
+        Err(crate::error::Error::InvalidArgument(format!("the {} method has no knob to set to {value}", self.method())))
+    }
+    /// After a frame that overflowed (its report's `overflow` is not 0), grows what overflowed to
+    /// what that frame wanted, so that the same frame recorded again is whole. Returns whether it
+    /// grew; `false` where the method has nothing to grow or is at its limit. Allocates: between
+    /// frames only, never in a renderer's frame loop.
+    fn grow_to_fit(&mut self, _backend: &mut dyn Backend) -> Result<bool> {
+        Ok(false)
+    }
+    /// Frees every buffer on the backend that made the context (handed another, it frees nothing
+    /// there; see [`crate::backend::BackendId`]).
+    fn destroy(self: Box<Self>, backend: &mut dyn Backend);
+}

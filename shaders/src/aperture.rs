@@ -40,7 +40,7 @@ pub struct Aperture {
     pub mask: u32,
 }
 
-pub const PI: f32 = 3.141_592_7;
+pub const PI: f32 = core::f32::consts::PI;
 
 impl Aperture {
     pub const fn circle() -> Self {

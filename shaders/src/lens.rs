@@ -166,7 +166,7 @@ impl ArtistLens {
         is_finite(self.near_start)
             && is_finite(self.near_end)
             && is_finite(self.far_start)
-            && !(self.far_end != self.far_end)
+            && !is_nan(self.far_end)
             && is_finite(self.max_radius_px)
             && self.near_end <= self.near_start
             && self.near_start <= self.far_start

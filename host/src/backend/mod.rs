@@ -302,6 +302,19 @@ pub trait Backend {
         Err(Error::InvalidArgument(format!("the {} backend has no images: copy_buffer_to_image needs the Vulkan backend", self.kind())))
     }
     fn submit(&mut self) -> Result<Vec<CommandTime>>;
+    /// Whether a frame may be recorded now. A backend on a caller's device records frames only into
+    /// the caller's command buffer (Vulkan: between `begin_external` and `end_external`); recorded
+    /// into its own, the frame would run at its next submission, after the caller may have changed
+    /// or freed what the frame reads. Contexts check this before recording anything.
+    fn check_frame_recording(&self) -> Result<()> {
+        Ok(())
+    }
+    /// Makes sure draws of `draw` up to `size` need nothing made at draw time (Vulkan: the draw
+    /// target, grown to cover `size` and kept). Contexts that draw call it when they are made, so
+    /// that a frame of any size within their extent records no allocation or submission.
+    fn reserve_draw_target(&mut self, _draw: &'static DrawDesc, _size: [u32; 2]) -> Result<()> {
+        Ok(())
+    }
     /// Allocations, submissions, transfers and memory so far (see [`BackendCounters`]).
     fn counters(&self) -> BackendCounters;
     /// Starts [`BackendCounters::peak_device_bytes`] over from the bytes held now, so that the peak

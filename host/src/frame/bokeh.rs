@@ -122,6 +122,8 @@ impl BokehContext {
             let ids = sizes.iter().map(|&(words, label)| owned.make(backend, words, label)).collect::<Result<Vec<_>>>()?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             backend.write_buffer(ids[0], 0, &mask_words)?;
+            // The sprite draw's target for the largest frame, so that no frame makes one.
+            backend.reserve_draw_target(&BOKEH_DRAW, [w, h])?;
             let scan = ScanScratch::new(backend, pixels)?;
             Ok((ids, io, scan))
         })();
@@ -233,6 +235,7 @@ impl DofContext for BokehContext {
         BokehContext::device_bytes(self)
     }
     fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
+        self.owned.check(backend)?;
         let desc = BokehContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
         let old = std::mem::replace(self, BokehContext::new(backend, &desc)?);
         old.destroy(backend);

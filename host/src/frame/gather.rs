@@ -122,6 +122,7 @@ impl DofContext for GatherContext {
         GatherContext::device_bytes(self)
     }
     fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
+        self.owned.check(backend)?;
         let desc = GatherContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
         let old = std::mem::replace(self, GatherContext::new(backend, &desc)?);
         old.destroy(backend);

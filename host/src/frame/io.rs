@@ -75,6 +75,7 @@ const COLOR_FORMATS: [ImageFormat; 2] = [ImageFormat::Rgba32Float, ImageFormat::
 /// large enough, images of the frame's size and a supported format, sane depth planes.
 pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: Extent, io: Option<&ImageIo>) -> Result<()> {
     owned.check(backend)?;
+    backend.check_frame_recording()?;
     let layers = f.layer_count();
     if f.width == 0 || f.height == 0 || layers == 0 {
         return Err(Error::InvalidArgument(format!("an empty {}x{} frame with {layers} layers", f.width, f.height)));

@@ -191,6 +191,7 @@ impl DofContext for RingGatherContext {
         RingGatherContext::device_bytes(self)
     }
     fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
+        self.owned.check(backend)?;
         let desc =
             RingGatherContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
         let old = std::mem::replace(self, RingGatherContext::new(backend, &desc)?);

@@ -447,6 +447,11 @@ impl DeviceCtx {
         DeviceCtx { device, queue, queue_family, graphics, push_descriptor, debug_utils, owned: false }
     }
 
+    /// Whether the device is the caller's (made by [`Self::borrowed`]).
+    pub fn is_borrowed(&self) -> bool {
+        !self.owned
+    }
+
     /// Whether the backend created the device (and destroys it).
     pub fn owned(&self) -> bool {
         self.owned

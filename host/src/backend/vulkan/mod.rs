@@ -418,6 +418,55 @@ impl VulkanBackend {
         }
     }
 
+    /// Makes the draw target cover `size`: grown, never shrunk (a draw renders into its top-left
+    /// corner), within the framebuffer limits. Growing replaces the target, which needs the GPU done
+    /// with the old one: refused inside an external recording, so contexts reserve their largest
+    /// frame when they are made ([`Backend::reserve_draw_target`]).
+    fn ensure_draw_target(&mut self, draw: &'static DrawDesc, size: [u32; 2], label: &str) -> Result<()> {
+        let max = match self.draws.max_size {
+            Some(max) => max,
+            None => {
+                // Once per backend: the attachment format must blend, and the framebuffer limits.
+                draw::check_format(&self.instance.instance, self.physical)?;
+                // SAFETY: a query on the live instance and the device's physical device.
+                let limits = unsafe { self.instance.instance.get_physical_device_properties(self.physical) }.limits;
+                let max = [limits.max_framebuffer_width, limits.max_framebuffer_height];
+                self.draws.max_size = Some(max);
+                max
+            }
+        };
+        if size[0] > max[0] || size[1] > max[1] {
+            return Err(Error::TooLarge {
+                what: format!("draw target {}x{} (framebuffer side)", size[0], size[1]),
+                size: size[0].max(size[1]) as u64,
+                limit: max[0].min(max[1]) as u64,
+            });
+        }
+        let pipeline = self.draws.pipeline(&self.device.device, draw)?;
+        let have = self.draws.target.as_ref().map(|t| t.size);
+        if have.is_some_and(|t| t[0] >= size[0] && t[1] >= size[1]) {
+            return Ok(());
+        }
+        let grown = have.map_or(size, |t| [t[0].max(size[0]), t[1].max(size[1])]);
+        if self.recorder.is_external() && have.is_some() {
+            // Earlier external recordings, which may still run, draw into the old target.
+            return Err(Error::InvalidArgument(format!(
+                "draw `{label}` at {}x{} inside an external recording: the draw target is smaller, and growing it needs the \
+                 GPU idle; make the context for the largest frame before begin_external",
+                size[0], size[1]
+            )));
+        }
+        // Recorded work may still use the old target.
+        self.flush()?;
+        let allocator = self.allocator()?;
+        let mut allocator = lock(&allocator);
+        if let Some(old) = self.draws.target.take() {
+            old.destroy(&self.device.device, &mut allocator);
+        }
+        self.draws.target = Some(draw::Target::new(&self.device.device, &mut allocator, pipeline.render_pass, grown)?);
+        Ok(())
+    }
+
     /// An error for `what`, which needs the backend's own command buffer, during an external recording.
     fn refuse_external(&self, what: &str) -> Result<()> {
         if self.recorder.is_external() {
@@ -609,6 +658,22 @@ fn storage_writes(infos: &[vk::DescriptorBufferInfo]) -> Vec<vk::WriteDescriptor
 }
 
 impl Backend for VulkanBackend {
+    fn reserve_draw_target(&mut self, draw: &'static DrawDesc, size: [u32; 2]) -> Result<()> {
+        if !self.device.graphics {
+            return Ok(());
+        }
+        self.ensure_draw_target(draw, size, "reserve")
+    }
+    fn check_frame_recording(&self) -> Result<()> {
+        if self.device.is_borrowed() && !self.recorder.is_external() {
+            return Err(Error::InvalidArgument(
+                "a frame on a backend wrapping the caller's device must be recorded into the caller's command buffer: \
+                 call begin_external first (and end_external after)"
+                    .into(),
+            ));
+        }
+        Ok(())
+    }
     fn id(&self) -> BackendId {
         self.id
     }
@@ -789,44 +854,8 @@ impl Backend for VulkanBackend {
             return draw_fallback(self, draw, args, buffers, target, size, push, label);
         }
         check_draw(self, draw, args, buffers, target, size, push)?;
-        let max = match self.draws.max_size {
-            Some(max) => max,
-            None => {
-                // Once per backend: the attachment format must blend, and the framebuffer limits.
-                draw::check_format(&self.instance.instance, self.physical)?;
-                // SAFETY: a query on the live instance and the device's physical device.
-                let limits = unsafe { self.instance.instance.get_physical_device_properties(self.physical) }.limits;
-                let max = [limits.max_framebuffer_width, limits.max_framebuffer_height];
-                self.draws.max_size = Some(max);
-                max
-            }
-        };
-        if size[0] > max[0] || size[1] > max[1] {
-            return Err(Error::TooLarge {
-                what: format!("draw target {}x{} (framebuffer side)", size[0], size[1]),
-                size: size[0].max(size[1]) as u64,
-                limit: max[0].min(max[1]) as u64,
-            });
-        }
+        self.ensure_draw_target(draw, size, label)?;
         let pipeline = self.draws.pipeline(&self.device.device, draw)?;
-        if self.draws.target.as_ref().map(|t| t.size) != Some(size) {
-            if self.recorder.is_external() && self.draws.target.is_some() {
-                // Earlier external recordings, which may still run, draw into the old target.
-                return Err(Error::InvalidArgument(format!(
-                    "draw `{label}` at {}x{} inside an external recording: the draw target has another size, and replacing it \
-                     needs the GPU idle; draw at one size per backend in external recordings",
-                    size[0], size[1]
-                )));
-            }
-            // Recorded work may still use the old target.
-            self.flush()?;
-            let allocator = self.allocator()?;
-            let mut allocator = lock(&allocator);
-            if let Some(old) = self.draws.target.take() {
-                old.destroy(&self.device.device, &mut allocator);
-            }
-            self.draws.target = Some(draw::Target::new(&self.device.device, &mut allocator, pipeline.render_pass, size)?);
-        }
         let (image, framebuffer) = match &self.draws.target {
             Some(t) => (t.image, t.framebuffer),
             None => return Err(Error::InvalidArgument("no draw target".into())),

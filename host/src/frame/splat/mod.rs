@@ -321,6 +321,7 @@ impl SplatContext {
     /// Grows (or shrinks) the context to a new maximum extent: frees and reallocates its buffers.
     /// Frames within the current maximum need no resize.
     pub fn resize(&mut self, backend: &mut dyn Backend, max_width: u32, max_height: u32, max_layers: u32) -> Result<()> {
+        self.owned.check(backend)?;
         let desc = SplatContextDesc { max_width, max_height, max_layers, ..self.desc.clone() };
         let fresh = SplatContext::new(backend, &desc)?.named(self.name);
         let old = std::mem::replace(self, fresh);

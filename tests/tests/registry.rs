@@ -1,0 +1,114 @@
+//! Every method of the frame API's registry, through `dyn DofContext` only: it records any frame
+//! within its extent with no allocation, readback or upload and one submission, resizes, equals the
+//! one-shot path, is tied to the backend that made it, and reports. Nothing here names a concrete
+//! context, so a method added to the registry is covered without a change.
+
+use dof::backend::{Backend, BufferId, CpuBackend};
+use dof::frame::{ContextDesc, DofContext, Extent, Frame, METHODS, MethodInfo, MethodOptions, Reads};
+use dof::layers::LayeredImage;
+use dof::methods::buffers::{read_rgb, slot_words};
+use dof::methods::one_shot::one_shot;
+use dof::stress::{noise_with_sky, test_lens};
+use dof_tests::{assert_clean, vulkan};
+
+fn create(b: &mut dyn Backend, m: &MethodInfo, extent: Extent) -> Box<dyn DofContext> {
+    (m.create)(b, &ContextDesc::new(extent, MethodOptions::default())).unwrap_or_else(|e| panic!("{}: {e}", m.name))
+}
+
+/// The input a method reads: every layer, or the front one.
+fn input_for(m: &MethodInfo, w: u32, h: u32, layers: u32) -> LayeredImage {
+    let image = noise_with_sky(w, h, layers);
+    if m.reads == Reads::FrontLayer { image.front_layer() } else { image }
+}
+
+fn caller_buffers(b: &mut dyn Backend, e: Extent) -> [BufferId; 3] {
+    let pixels = e.width as u64 * e.height as u64;
+    [4 * pixels * e.layers as u64, pixels, 3 * pixels].map(|words| b.create_buffer(words, "caller").unwrap())
+}
+
+/// Frames of several sizes within the extent, then a resize to a larger one and a frame there:
+/// per frame 0 allocations, readbacks and uploads and 1 submission, finite output, and the same
+/// image as the one-shot path.
+fn frames_resizes_and_one_shot(b: &mut dyn Backend) {
+    for m in METHODS {
+        let extent = Extent::new(48, 32, 3);
+        let mut ctx = create(b, m, extent);
+        assert_eq!((ctx.method(), ctx.extent()), (m.name, extent));
+        let grown = Extent::new(64, 40, 3);
+        let bufs = caller_buffers(b, grown);
+        for (i, &(w, h, l, aperture)) in [(48, 32, 3, 0.02f32), (17, 9, 2, 0.01), (48, 32, 1, 0.0), (64, 40, 3, 0.02)].iter().enumerate() {
+            if i == 3 {
+                assert!(
+                    ctx.record(b, &Frame::layers(w, h, l, test_lens(aperture), bufs[0], bufs[1], bufs[2])).is_err(),
+                    "{}: beyond",
+                    m.name
+                );
+                ctx.resize(b, grown).unwrap_or_else(|e| panic!("{}: resize: {e}", m.name));
+                assert_eq!(ctx.extent(), grown);
+            }
+            let image = input_for(m, w, h, l);
+            b.write_buffer(bufs[0], 0, &slot_words(&image)).unwrap();
+            b.write_buffer(bufs[1], 0, &image.counts).unwrap();
+            let frame = Frame::layers(w, h, image.max_layers, test_lens(aperture), bufs[0], bufs[1], bufs[2]);
+            let before = b.counters();
+            ctx.record(b, &frame).unwrap_or_else(|e| panic!("{} frame {i}: {e}", m.name));
+            b.submit().unwrap();
+            let spent = b.counters().since(&before);
+            assert_eq!((spent.allocations, spent.readbacks, spent.uploads, spent.submissions), (0, 0, 0, 1), "{} frame {i}", m.name);
+            let got = read_rgb(b, bufs[2], w, h).unwrap();
+            assert!(got.data.iter().flatten().all(|v| v.is_finite() && *v >= 0.0), "{} frame {i}: not finite and non-negative", m.name);
+            let report = ctx.report(b).unwrap();
+            assert!(!report.summary.is_empty() && report.overflow == 0, "{} frame {i}: {report:?}", m.name);
+            let once = one_shot(b, m, &MethodOptions::default(), &image, &test_lens(aperture)).unwrap();
+            assert!(once.image.data == got.data, "{} frame {i} ({w}x{h}, {l} layers): the one-shot path differs", m.name);
+        }
+        ctx.destroy(b);
+        bufs.iter().for_each(|&id| b.destroy_buffer(id));
+    }
+    assert_eq!(b.counters().device_bytes, 0, "every context and buffer freed");
+}
+
+#[test]
+fn every_registered_method_records_resizes_and_matches_the_one_shot_path_on_the_cpu() {
+    frames_resizes_and_one_shot(&mut CpuBackend::new());
+}
+
+#[test]
+fn every_registered_method_records_resizes_and_matches_the_one_shot_path_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    frames_resizes_and_one_shot(&mut vk);
+    assert_clean(&mut vk);
+}
+
+/// A context refuses a backend other than the one that made it: recording, resizing and
+/// destroying there touch none of that backend's buffers (whose ids may well be the same).
+#[test]
+fn a_context_is_tied_to_its_backend() {
+    let (mut mine, mut other) = (CpuBackend::new(), CpuBackend::new());
+    let extent = Extent::new(16, 16, 2);
+    for m in METHODS {
+        let mut ctx = create(&mut mine, m, extent);
+        // The other backend holds buffers of the same ids as the context's.
+        let theirs: Vec<BufferId> = (0..64).map(|_| other.create_buffer(8, "theirs").unwrap()).collect();
+        let bufs = caller_buffers(&mut other, extent);
+        let frame = Frame::layers(16, 16, 1, test_lens(0.01), bufs[0], bufs[1], bufs[2]);
+        let refused = ctx.record(&mut other, &frame).expect_err("recording on another backend");
+        assert!(refused.to_string().contains("another backend"), "{}: {refused}", m.name);
+        assert!(ctx.resize(&mut other, Extent::new(8, 8, 1)).is_err(), "{}: resize on another backend", m.name);
+        let before = other.counters();
+        ctx.destroy(&mut other);
+        assert_eq!(other.counters().device_bytes, before.device_bytes, "{}: destroy on another backend freed its buffers", m.name);
+        assert!(theirs.iter().all(|&id| other.buffer_words(id).is_ok()), "{}: another backend's buffer was freed", m.name);
+        // The context's buffers stay with their own backend, which frees them when dropped.
+        theirs.iter().chain(&bufs).for_each(|&id| other.destroy_buffer(id));
+        assert_eq!(other.counters().device_bytes, 0);
+    }
+}
+
+#[test]
+fn unknown_method_names_list_the_registry() {
+    let e = dof::frame::registry::method("nosuch").unwrap_err().to_string();
+    for m in METHODS {
+        assert!(e.contains(m.name), "{e}");
+    }
+}

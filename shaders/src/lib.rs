@@ -26,6 +26,7 @@ pub mod ring_gather;
 pub mod scan;
 pub mod sort;
 pub mod splat;
+pub mod tonemap;
 pub mod wg;
 
 #[cfg(not(target_arch = "spirv"))]
@@ -45,6 +46,7 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .chain(bokeh::KERNELS.iter())
         .chain(raster::KERNELS.iter())
         .chain(frame_io::KERNELS.iter())
+        .chain(tonemap::KERNELS.iter())
         .copied()
 }
 

@@ -18,3 +18,8 @@ pub fn floor(x: f32) -> f32 {
 pub fn ceil(x: f32) -> f32 {
     x.ceil()
 }
+
+#[inline]
+pub fn powf(x: f32, y: f32) -> f32 {
+    x.powf(y)
+}

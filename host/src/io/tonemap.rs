@@ -18,55 +18,33 @@
 //!    `v = 1.055·y^(1/2.4) − 0.055`.
 //!
 //! 8-bit output is `round(255 · v)` ([`to_u8`]).
+//!
+//! The per-channel map (exposure, curve, OETF) lives in the kernels crate
+//! ([`dof_shaders::tonemap`]), so that the CPU here and the viewer's display pass on the GPU run the
+//! same source.
 
 use rayon::prelude::*;
 
 use crate::layers::RgbImage;
 
 /// Input cap before the curve (the largest finite half float); the curve is already 1 far below.
-const CURVE_INPUT_CAP: f32 = 65504.0;
-
+pub use dof_shaders::tonemap::CURVE_INPUT_CAP;
 /// Narkowicz's fit of the ACES filmic curve, clamped to [0, 1]. NaN and `x <= 0` give 0.
-#[inline]
-pub fn aces_fitted(x: f32) -> f32 {
-    if !(x > 0.0) {
-        return 0.0;
-    }
-    let x = x.min(CURVE_INPUT_CAP);
-    let y = x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14);
-    y.clamp(0.0, 1.0)
-}
-
-/// The sRGB opto-electronic transfer function (linear [0, 1] → encoded [0, 1]). Inputs are clamped
-/// to [0, 1] first; NaN gives 0; 1 gives exactly 1 (the formula gives 1 − 2⁻²⁴ in `f32`).
-#[inline]
-pub fn srgb_oetf(linear: f32) -> f32 {
-    if !(linear > 0.0) {
-        return 0.0;
-    }
-    if linear >= 1.0 {
-        return 1.0;
-    }
-    let l = linear;
-    if l <= 0.0031308 { 12.92 * l } else { 1.055 * l.powf(1.0 / 2.4) - 0.055 }
-}
-
+pub use dof_shaders::tonemap::aces_fitted;
 /// The inverse of [`srgb_oetf`] (encoded [0, 1] → linear [0, 1]), for tests and metrics in linear
 /// display space. Inputs are clamped to [0, 1]; NaN gives 0.
-#[inline]
-pub fn srgb_eotf(encoded: f32) -> f32 {
-    if !(encoded > 0.0) {
-        return 0.0;
-    }
-    let v = encoded.min(1.0);
-    if v <= 0.04045 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
-}
+pub use dof_shaders::tonemap::srgb_eotf;
+/// The sRGB opto-electronic transfer function (linear [0, 1] → encoded [0, 1]). Inputs are clamped
+/// to [0, 1] first; NaN gives 0; 1 gives exactly 1 (the formula gives 1 − 2⁻²⁴ in `f32`).
+pub use dof_shaders::tonemap::srgb_oetf;
+/// One channel of [`tonemap`]: exposure, ACES fitted curve, sRGB OETF.
+pub use dof_shaders::tonemap::tonemap_channel;
 
 /// The documented tone map of one linear HDR colour: exposure, ACES fitted curve, sRGB OETF (see the
 /// module documentation). The result is display-encoded sRGB in [0, 1], never NaN.
 #[inline]
 pub fn tonemap(rgb: [f32; 3], exposure: f32) -> [f32; 3] {
-    rgb.map(|c| srgb_oetf(aces_fitted(c * exposure)))
+    rgb.map(|c| tonemap_channel(c, exposure))
 }
 
 /// A display-encoded value in [0, 1] to 8 bits: `round(255 · v)`, clamped; NaN gives 0.
@@ -102,5 +80,34 @@ mod tests {
         assert!(aces_fitted(7.0) < 1.0 && aces_fitted(7.5) == 1.0);
         assert_eq!(tonemap([f32::NAN, f32::INFINITY, f32::NEG_INFINITY], 1.0), [0.0, 1.0, 0.0]);
         assert_eq!(tonemap([1.0; 3], f32::NAN), [0.0; 3]);
+    }
+
+    /// The viewer's display pass (the kernel, run here on the CPU backend) is this tone map, bit for
+    /// bit, NaN, infinities and negatives included; in raw linear mode it is the OETF of the
+    /// clamped values.
+    #[test]
+    fn the_display_kernel_is_the_tone_map() {
+        use crate::backend::{Backend, CpuBackend, push_words};
+        use dof_shaders::tonemap::{DISPLAY, DisplayParams, MODE_LINEAR, MODE_TONEMAP};
+        let values = [0.0, 1e-6, 0.002, 0.18, 0.5, 1.0, 2.0, 7.3, 1e5, f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -0.5, -0.0];
+        let pixels: Vec<[f32; 3]> = values.iter().map(|&v| [v, v * 0.5, -v]).collect();
+        let words: Vec<u32> = pixels.iter().flat_map(|p| p.map(f32::to_bits)).collect();
+        let n = pixels.len() as u32;
+        let mut b = CpuBackend::new();
+        let rgb = b.create_buffer(words.len() as u64, "rgb").unwrap();
+        let rgba = b.create_buffer(4 * n as u64, "rgba").unwrap();
+        b.write_buffer(rgb, 0, &words).unwrap();
+        for (mode, exposure) in [(MODE_TONEMAP, 1.0), (MODE_TONEMAP, 2.5), (MODE_LINEAR, 1.0)] {
+            let params = DisplayParams { width: n, height: 1, mode, exposure };
+            b.dispatch(&DISPLAY, [1, 1, 1], &[rgb, rgba], &push_words(&params), "display").unwrap();
+            b.submit().unwrap();
+            let got = b.read_buffer(rgba, 0, 4 * n as u64).unwrap();
+            for (p, out) in pixels.iter().zip(got.chunks_exact(4)) {
+                let want = if mode == MODE_LINEAR { p.map(srgb_oetf) } else { tonemap(*p, exposure) };
+                let got = [out[0], out[1], out[2]].map(f32::from_bits);
+                assert_eq!(got.map(f32::to_bits), want.map(f32::to_bits), "{p:?}, mode {mode}, exposure {exposure}");
+                assert_eq!(f32::from_bits(out[3]), 1.0);
+            }
+        }
     }
 }

@@ -2,7 +2,7 @@
 //! integrator makes them (as `host/examples/ash_host.rs` does): with the extensions and features
 //! `VulkanBackend` asks for, plus what a window needs (surface and swapchain extensions).
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
 use dof::backend::VulkanBackend;
 use dof::backend::vulkan::ash::{self, vk};
 use raw_window_handle::RawDisplayHandle;
@@ -279,5 +279,77 @@ impl Device {
             self.device.destroy_image(i.handle, None);
             self.device.free_memory(i.memory, None);
         }
+    }
+}
+
+/// What a window of `window` pixels needs of the device: the swapchain image, the frames the
+/// contexts are made for (`frame` pixels: the window and the guard band beyond it, `layers`
+/// fragment slots a pixel) as the largest single buffer and a lower bound of the memory the viewer
+/// and a context hold, and the output image. `flags` names what set the size, for the error.
+pub struct Fit<'a> {
+    pub flags: &'a str,
+    pub window: [u32; 2],
+    pub frame: [u32; 2],
+    pub layers: u32,
+}
+
+impl Device {
+    /// Refuses sizes the device cannot hold, before anything is made for them.
+    pub fn check_fits(
+        &self,
+        surface_fn: &ash::khr::surface::Instance,
+        surface: vk::SurfaceKHR,
+        limits: &dof::backend::Limits,
+        fit: &Fit,
+    ) -> Result<()> {
+        // SAFETY: queries on the live instance, physical device and surface.
+        let (caps, props, memory) = unsafe {
+            (
+                surface_fn.get_physical_device_surface_capabilities(self.physical, surface)?,
+                self.instance.get_physical_device_properties(self.physical),
+                self.instance.get_physical_device_memory_properties(self.physical),
+            )
+        };
+        let name = props.device_name_as_c_str().unwrap_or_default().to_string_lossy().into_owned();
+        let Fit { flags, window: [ww, wh], frame: [fw, fh], layers } = *fit;
+        let edge = props.limits.max_image_dimension2_d;
+        let (mw, mh) = (caps.max_image_extent.width.min(edge), caps.max_image_extent.height.min(edge));
+        if ww > mw || wh > mh {
+            bail!("{flags}: a window of {ww}x{wh} pixels is larger than the largest swapchain image {name} makes for it, {mw}x{mh}");
+        }
+        if fw > edge || fh > edge {
+            bail!(
+                "{flags}: frames of {fw}x{fh} pixels (the window and the guard band beyond it) exceed the largest image edge of {name}, {edge} pixels"
+            );
+        }
+        let gb = |b: u64| b as f64 / 1e9;
+        let pixels = fw as u64 * fh as u64;
+        // Fragment slots of 4 words: the viewer's input and each context's largest buffer.
+        let slots = 16 * pixels * layers as u64;
+        if slots > limits.max_buffer_bytes {
+            bail!(
+                "{flags}: frames of {fw}x{fh} pixels (the window and the guard band beyond it) with {layers} layers need buffers of {:.2} GB; \
+                 the largest buffer {name} holds is {:.2} GB",
+                gb(slots),
+                gb(limits.max_buffer_bytes)
+            );
+        }
+        // At least: the input and a context's copy of it, the output image, the result and its
+        // display form.
+        let least = 2 * slots + (16 + 12 + 16) * pixels;
+        let heap = memory.memory_heaps[..memory.memory_heap_count as usize]
+            .iter()
+            .filter(|h| h.flags.contains(vk::MemoryHeapFlags::DEVICE_LOCAL))
+            .map(|h| h.size)
+            .max()
+            .unwrap_or(u64::MAX);
+        if least > heap {
+            bail!(
+                "{flags}: frames of {fw}x{fh} pixels with {layers} layers need more than {:.2} GB of device memory; {name} has {:.2} GB",
+                gb(least),
+                gb(heap)
+            );
+        }
+        Ok(())
     }
 }

@@ -4,7 +4,7 @@
 
 use super::ViewArgs;
 use super::controls::{Controls, orbit};
-use super::device::{Device, Owned, TRANSFER};
+use super::device::{Device, Fit, Owned, TRANSFER};
 use super::methods::{Contexts, MethodSettings, stage_times};
 use super::scene::{LAYERS, Layers, SceneSource};
 use super::script::Step;
@@ -12,10 +12,12 @@ use super::swapchain::Swapchain;
 use super::ui::{Panel, Stats};
 use anyhow::{Context, Result, anyhow, bail};
 use dof::backend::vulkan::ash::vk::{self, AccessFlags as Access, ImageLayout as Layout};
-use dof::backend::{Backend, BufferId, ImageFormat, ImageRef, RawDevice, RawOptions, VulkanBackend};
+use dof::backend::{Backend, BufferId, ImageFormat, ImageRef, RawDevice, RawOptions, VulkanBackend, push_words};
 use dof::frame::{Frame, FrameInput, FrameOutput};
 use dof::layers::{LayeredImage, RgbImage};
+use dof::methods::buffers::groups_for;
 use dof::scene::{Camera, Focus, LensSettings, MAX_GUARD_BAND};
+use dof_shaders::tonemap::{DISPLAY, DisplayParams, MODE_LINEAR, MODE_TONEMAP};
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle};
 use std::time::Instant;
 use winit::application::ApplicationHandler;
@@ -69,12 +71,38 @@ impl Inputs {
     }
 }
 
+/// The frame's result on the device, in the library's buffers (as large as the contexts' frames):
+/// the linear RGB the frame API writes (3 words a pixel), and what the display pass makes of it,
+/// sRGB-encoded RGBA32F (4 words a pixel), which is copied into the target image and blitted into
+/// the swapchain image.
+struct Display {
+    rgb: BufferId,
+    rgba: BufferId,
+    pixels: u64,
+}
+
+impl Display {
+    fn destroy(self, backend: &mut dyn Backend) {
+        backend.destroy_buffer(self.rgb);
+        backend.destroy_buffer(self.rgba);
+    }
+}
+
+/// The window's part of a frame's linear result, for the error against the reference: the frame's
+/// width, the guard band's margin and the window's size.
+#[derive(Clone, Copy)]
+struct LinearRead {
+    frame_width: u32,
+    margin: u32,
+    size: [u32; 2],
+}
+
 /// What a submitted frame asked to be done once it completed.
 #[derive(Default)]
 struct Pending {
     submitted: bool,
     screenshot: bool,
-    linear: Option<[u32; 2]>,
+    linear: Option<LinearRead>,
     free: Vec<egui::TextureId>,
     report: bool,
 }
@@ -89,11 +117,16 @@ struct Running {
     backend: Option<VulkanBackend>,
     contexts: Option<Contexts>,
     inputs: Option<Inputs>,
-    /// The blurred frame (RGBA32F, the frame API's output image), as large as the contexts' frames.
+    /// The blurred frame for display (RGBA32F, sRGB-encoded by the display pass), as large as the
+    /// contexts' frames.
     target: Option<(Owned<vk::Image>, [u32; 2], bool)>,
-    /// Host-visible buffers for the screenshot (8-bit swapchain pixels) and the linear result.
+    display: Option<Display>,
+    /// A host-visible buffer for the screenshot (8-bit swapchain pixels), written by every frame
+    /// when --screenshot is given, so that a window closed early still leaves its last image.
     readback: Option<Owned<vk::Buffer>>,
-    linear: Option<Owned<vk::Buffer>>,
+    /// What `readback` holds once its frame completed: the swapchain image's size and whether its
+    /// pixels are BGRA.
+    shot: Option<([u32; 2], bool)>,
     egui_ctx: egui::Context,
     egui_state: egui_winit::State,
     renderer: Option<egui_ash_renderer::Renderer>,
@@ -119,6 +152,8 @@ struct App<'a> {
     last_frame: Option<Instant>,
     last_report: Instant,
     closed: bool,
+    /// Whether the screenshot (--screenshot) was written.
+    screenshot_written: bool,
     /// Wall time between frames and GPU time, summed over every frame but the first (which makes
     /// the pipelines): for the summary at exit.
     timed: (u32, f64, u32, f64),
@@ -133,7 +168,16 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
     let focus = source.lens.thin_lens(&camera)?.focus_distance;
     let lens = LensSettings { focus: Focus::Distance(focus), ..source.lens };
     let settings = MethodSettings { method: args.method, merge: args.merge, tile: args.tile, aperture: String::new(), rings: args.rings };
-    let mut panel = Panel { visible: !args.hide_ui, settings, focus, aperture: lens.aperture, blades: args.blades, show_error: false };
+    let mut panel = Panel {
+        visible: !args.hide_ui,
+        settings,
+        focus,
+        aperture: lens.aperture,
+        blades: args.blades,
+        show_error: false,
+        exposure: args.exposure,
+        raw_linear: false,
+    };
     panel.settings.aperture = panel.shape();
     let mut app = App {
         args,
@@ -150,6 +194,7 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
         last_frame: None,
         last_report: Instant::now(),
         closed: false,
+        screenshot_written: false,
         timed: (0, 0.0, 0, 0.0),
     };
     println!("view at the start: {}", view_flags(&app.camera, &app.lens));
@@ -245,8 +290,6 @@ impl App<'_> {
         // SAFETY: the window outlives the surface (destroyed in `finish` before the window drops).
         let surface = unsafe { ash_window::create_surface(&entry, &instance, display, handle, None)? };
         let d = Device::new((entry, instance, messenger, log), &surface_fn, surface, self.args.device.as_deref())?;
-        let inner = window.inner_size();
-        let sc = Swapchain::new(&d, &surface_fn, surface, [inner.width, inner.height], self.args.vsync, None)?;
         let raw = RawDevice {
             entry: d.entry.clone(),
             instance: d.instance.clone(),
@@ -258,7 +301,21 @@ impl App<'_> {
         // SAFETY: the handles are live and outlive the backend (dropped in `finish` first); the
         // device was made with the required version, extensions and features; one thread.
         let backend = unsafe { VulkanBackend::from_raw(raw, &RawOptions { debug_names: self.args.validation, allocator: None })? };
-        let options = egui_ash_renderer::Options { in_flight_frames: 1, srgb_framebuffer: true, ..Default::default() };
+        // The size against what the device holds, before anything is made for it.
+        let flags = match self.source.fixed_size() {
+            Some([w, h]) => format!("--scene {} ({w}x{h} pixels, shown at its own size)", self.args.scene),
+            None => format!("--width {} --height {}", self.args.width, self.args.height),
+        };
+        let frame = size.map(|e| e.saturating_add(2 * MAX_GUARD_BAND));
+        let fit = Fit { flags: &flags, window: size, frame, layers: self.source.max_layers() };
+        if let Err(e) = d.check_fits(&surface_fn, surface, backend.limits(), &fit) {
+            drop(backend);
+            d.destroy(Some((&surface_fn, surface)));
+            return Err(e);
+        }
+        let inner = window.inner_size();
+        let sc = Swapchain::new(&d, &surface_fn, surface, [inner.width, inner.height], self.args.vsync, None)?;
+        let options = egui_ash_renderer::Options { in_flight_frames: 1, srgb_framebuffer: false, ..Default::default() };
         let renderer =
             egui_ash_renderer::Renderer::with_default_allocator(&d.instance, d.physical, d.device.clone(), sc.render_pass, options)
                 .map_err(|e| anyhow!("the UI renderer: {e}"))?;
@@ -288,8 +345,9 @@ impl App<'_> {
             contexts: None,
             inputs: None,
             target: None,
+            display: None,
             readback: None,
-            linear: None,
+            shot: None,
             egui_ctx,
             egui_state,
             renderer: Some(renderer),
@@ -331,19 +389,13 @@ impl App<'_> {
             renderer.free_textures(&pending.free).map_err(|e| anyhow!("the UI renderer: {e}"))?;
         }
         if pending.screenshot {
-            if let (Some(path), Some(buf), Some(sc)) = (&self.args.screenshot, &r.readback, &r.sc) {
-                let (w, h) = (sc.extent.width, sc.extent.height);
-                // SAFETY: the mapping covers w*h*4 bytes, written by the completed copy and made
-                // visible to the host by its barrier.
-                let bytes = unsafe { std::slice::from_raw_parts(buf.mapped, (w * h * 4) as usize) };
-                super::readback::write_screenshot(path, w, h, bytes, sc.format == vk::Format::B8G8R8A8_SRGB)?;
-                println!("wrote {} ({w}x{h}, the last presented image)", path.display());
-            }
+            write_shot(self.args, &r.readback, r.shot, "the last presented image")?;
+            self.screenshot_written = true;
         }
-        if let (Some([w, h]), Some(buf)) = (pending.linear, &r.linear) {
-            // SAFETY: as above, w*h RGBA32F pixels.
-            let words = unsafe { std::slice::from_raw_parts(buf.mapped as *const f32, (w * h * 4) as usize) };
-            let image = super::readback::rgb_of_rgba32f(w, h, words);
+        if let (Some(read), Some(display)) = (pending.linear, &r.display) {
+            // The frame completed and nothing writes the buffer until the next one is recorded.
+            let [w, h] = read.size;
+            let image = super::readback::window_of_rgb(backend, display.rgb, read.frame_width, read.margin, [w, h])?;
             if let Some((camera, lens, reference)) = &r.reference {
                 if *camera == self.camera && *lens == self.lens && reference.width == w && reference.height == h {
                     let (psnr, picture) = super::readback::error_view(&image, reference)?;
@@ -484,8 +536,24 @@ impl App<'_> {
             let usage = vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST;
             r.target = Some((r.d.image(vk::Format::R32G32B32A32_SFLOAT, [max[0], max[1]], usage)?, [max[0], max[1]], true));
         }
+        let pixels = max[0] as u64 * max[1] as u64;
+        if r.display.as_ref().is_none_or(|b| b.pixels < pixels) {
+            if let Some(old) = r.display.take() {
+                old.destroy(backend);
+            }
+            let rgb = backend.create_buffer(3 * pixels, "view/rgb")?;
+            let rgba = match backend.create_buffer(4 * pixels, "view/display") {
+                Ok(b) => b,
+                Err(e) => {
+                    backend.destroy_buffer(rgb);
+                    return Err(e.into());
+                }
+            };
+            r.display = Some(Display { rgb, rgba, pixels });
+        }
         let last = frames.is_some_and(|n| self.frames_recorded + 1 == n);
-        let screenshot = last && self.args.screenshot.is_some();
+        // The swapchain image is copied for the screenshot every frame (written after the last).
+        let copy_shot = self.args.screenshot.is_some();
         let want_linear = self.panel.show_error && fixed.is_none() && self.source.has_reference();
         if want_linear && r.reference.as_ref().is_none_or(|(c, l, _)| *c != self.camera || *l != self.lens) {
             println!("computing the reference for this view ({REFERENCE_SAMPLES} samples a pixel)...");
@@ -493,17 +561,12 @@ impl App<'_> {
             r.reference = Some((self.camera, self.lens, image));
         }
         let (w, h) = (extent.width, extent.height);
-        if screenshot && r.readback.as_ref().is_none_or(|b| b.bytes < (w * h * 4) as u64) {
+        if copy_shot && r.readback.as_ref().is_none_or(|b| b.bytes < (w * h * 4) as u64) {
+            r.shot = None;
             if let Some(old) = r.readback.take() {
                 r.d.destroy_buffer(old);
             }
             r.readback = Some(r.d.host_buffer((w * h * 4) as u64, vk::BufferUsageFlags::TRANSFER_DST)?);
-        }
-        if want_linear && r.linear.as_ref().is_none_or(|b| b.bytes < (size[0] * size[1] * 16) as u64) {
-            if let Some(old) = r.linear.take() {
-                r.d.destroy_buffer(old);
-            }
-            r.linear = Some(r.d.host_buffer((size[0] * size[1] * 16) as u64, vk::BufferUsageFlags::TRANSFER_DST)?);
         }
         let renderer = r.renderer.as_mut().context("no UI renderer")?;
         renderer.set_textures(r.d.queue, r.d.pool, &output.textures_delta.set).map_err(|e| anyhow!("the UI renderer: {e}"))?;
@@ -545,8 +608,9 @@ impl App<'_> {
                 (TRANSFER, Access::empty()),
             );
         }
-        // The output as the library sees it: in TRANSFER_SRC_OPTIMAL, last read by the blit of the
-        // frame before (a read: the library's barrier only has to wait for it), left there.
+        // The display pass's result goes into the target image as the library sees it: in
+        // TRANSFER_SRC_OPTIMAL, last read by the blit of the frame before (a read: the library's
+        // barrier only has to wait for it), left there.
         // SAFETY: our live RGBA32F image, at least the frame's size, TRANSFER_SRC|DST usage, on the
         // backend's queue family, in that layout when the copy runs; alive until the fence.
         let out = unsafe {
@@ -561,6 +625,7 @@ impl App<'_> {
             )
         };
         let inputs = r.inputs.as_ref().context("no inputs")?;
+        let display = r.display.as_ref().context("no display buffers")?;
         let method = self.panel.settings.method;
         let ((fragments, counts), slots) = if method.front_only() { (inputs.front, 1) } else { (inputs.all, layers.image.max_layers) };
         let frame = Frame {
@@ -568,12 +633,21 @@ impl App<'_> {
             height: fh,
             lens: layers.lens,
             input: FrameInput::Layers { fragments, counts, layers: slots },
-            output: FrameOutput::Image(out),
+            output: FrameOutput::Buffer(display.rgb),
         };
+        // The display pass: the documented tone map (the one PNG previews use, from the same
+        // source) at the panel's exposure, or the raw linear values clamped, sRGB-encoded.
+        let mode = if self.panel.raw_linear { MODE_LINEAR } else { MODE_TONEMAP };
+        let params = DisplayParams { width: fw, height: fh, mode, exposure: self.panel.exposure };
         // SAFETY: our command buffer is recording, outside a render pass, from a pool of the
         // backend's queue family; every resource it names outlives the fence wait.
         unsafe { backend.begin_external(cb)? };
-        let recorded = contexts_record(r.contexts.as_mut(), backend, method, &frame);
+        let recorded = contexts_record(r.contexts.as_mut(), backend, method, &frame).and_then(|()| {
+            let groups = groups_for(&DISPLAY, fw as u64 * fh as u64);
+            backend.dispatch(&DISPLAY, groups, &[display.rgb, display.rgba], &push_words(&params), "view/display")?;
+            backend.copy_buffer_to_image(display.rgba, 0, out, "view/display-to-image")?;
+            Ok(())
+        });
         backend.end_external()?;
         recorded?;
 
@@ -592,22 +666,13 @@ impl App<'_> {
             .src_offsets([vk::Offset3D { x: m, y: m, z: 0 }, vk::Offset3D { x: m + sw, y: m + sh, z: 1 }])
             .dst_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
             .dst_offsets([vk::Offset3D { x: 0, y: 0, z: 0 }, vk::Offset3D { x: w as i32, y: h as i32, z: 1 }]);
-        // Same size for rendered scenes (each pixel copied, its linear value encoded to sRGB by the
-        // format conversion); an EXR is scaled to the window.
+        // Same size for rendered scenes (each pixel copied; its value, sRGB-encoded by the display
+        // pass, stored as it is in the UNORM swapchain image); an EXR is scaled to the window.
         let filter = if fixed.is_some() { vk::Filter::LINEAR } else { vk::Filter::NEAREST };
         // SAFETY: recording; both images are in the layouts named, the regions inside them.
         unsafe {
             d.device.cmd_blit_image(cb, target_image, Layout::TRANSFER_SRC_OPTIMAL, image, Layout::TRANSFER_DST_OPTIMAL, &[blit], filter)
         };
-        if let (true, Some(buf)) = (want_linear, &r.linear) {
-            let region = vk::BufferImageCopy::default()
-                .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
-                .image_offset(vk::Offset3D { x: m, y: m, z: 0 })
-                .image_extent(vk::Extent3D { width: size[0], height: size[1], depth: 1 });
-            // SAFETY: recording; the image is in TRANSFER_SRC_OPTIMAL, the buffer large enough.
-            unsafe { d.device.cmd_copy_image_to_buffer(cb, target_image, Layout::TRANSFER_SRC_OPTIMAL, buf.handle, &[region]) };
-            d.memory_barrier((TRANSFER, Access::TRANSFER_WRITE), (vk::PipelineStageFlags::HOST, Access::HOST_READ));
-        }
 
         // The UI over it, in the render pass (which leaves the image in TRANSFER_SRC_OPTIMAL).
         let pass = vk::RenderPassBeginInfo::default()
@@ -619,7 +684,8 @@ impl App<'_> {
         renderer.cmd_draw(cb, extent, output.pixels_per_point, &primitives).map_err(|e| anyhow!("the UI renderer: {e}"))?;
         // SAFETY: recording, inside the render pass begun above.
         unsafe { d.device.cmd_end_render_pass(cb) };
-        if let (true, Some(buf)) = (screenshot, &r.readback) {
+        if let (true, Some(buf)) = (copy_shot, &r.readback) {
+            r.shot = Some(([w, h], sc.format == vk::Format::B8G8R8A8_UNORM));
             let region = vk::BufferImageCopy::default()
                 .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
                 .image_extent(vk::Extent3D { width: w, height: h, depth: 1 });
@@ -656,8 +722,8 @@ impl App<'_> {
         }
         r.pending = Pending {
             submitted: true,
-            screenshot,
-            linear: want_linear.then_some([size[0], size[1]]),
+            screenshot: last && copy_shot,
+            linear: want_linear.then_some(LinearRead { frame_width: fw, margin: layers.margin, size: [size[0], size[1]] }),
             free: output.textures_delta.free,
             report: report_due,
         };
@@ -700,6 +766,8 @@ impl App<'_> {
             Step::Tile(t) => self.panel.settings.tile = t,
             Step::Rings(n) => self.panel.settings.rings = n,
             Step::Orbit(deg) => orbit(&mut self.camera, deg.to_radians(), 0.0),
+            Step::Exposure(e) => self.panel.exposure = e,
+            Step::RawLinear => self.panel.raw_linear = !self.panel.raw_linear,
             Step::Click(x, y) => self.controls.focus_click = Some((x, y)),
             Step::Error => self.panel.show_error = !self.panel.show_error,
             Step::Close => self.close(el),
@@ -723,6 +791,9 @@ impl App<'_> {
             if let Some(i) = r.inputs.take() {
                 i.destroy(&mut backend);
             }
+            if let Some(b) = r.display.take() {
+                b.destroy(&mut backend);
+            }
             drop(backend);
         }
         r.error_texture = None;
@@ -730,7 +801,7 @@ impl App<'_> {
         if let Some((t, _, _)) = r.target.take() {
             r.d.destroy_image(t);
         }
-        for b in [r.readback.take(), r.linear.take()].into_iter().flatten() {
+        if let Some(b) = r.readback.take() {
             r.d.destroy_buffer(b);
         }
         if let Some(sc) = r.sc.take() {
@@ -746,13 +817,40 @@ impl App<'_> {
         all
     }
 
-    /// The frame in flight, completed (its screenshot and report read) before teardown.
+    /// The frame in flight, completed before teardown. A screenshot that was asked for and not yet
+    /// written (the window closed before the last of --frames) is written now, from the last
+    /// presented image; where no frame was presented the run fails saying so.
     fn complete_running(&mut self, r: &mut Running) -> Result<()> {
         // SAFETY: the fence is live.
         unsafe { r.d.device.wait_for_fences(&[r.d.fence], true, u64::MAX)? };
         r.pending = Pending::default();
+        if let (Some(path), false, None) = (&self.args.screenshot, self.screenshot_written, &self.error) {
+            if r.shot.is_none() {
+                bail!("the window closed before a frame was presented: no screenshot was written to {}", path.display());
+            }
+            let how = format!(
+                "the last presented image: the window closed after {} of {} frames",
+                self.frames_recorded,
+                self.args.frames.unwrap_or(0)
+            );
+            write_shot(self.args, &r.readback, r.shot, &how)?;
+            self.screenshot_written = true;
+        }
         Ok(())
     }
+}
+
+/// Writes the screenshot from the read-back swapchain pixels of a completed frame (`how`: which).
+fn write_shot(args: &ViewArgs, readback: &Option<Owned<vk::Buffer>>, shot: Option<([u32; 2], bool)>, how: &str) -> Result<()> {
+    let (Some(path), Some(buf), Some(([w, h], bgra))) = (&args.screenshot, readback, shot) else {
+        bail!("no presented image was read back for the screenshot");
+    };
+    // SAFETY: the mapping covers w*h*4 bytes (the buffer is made again, and `shot` cleared, when it
+    // is smaller), written by the completed copy and made visible to the host by its barrier.
+    let bytes = unsafe { std::slice::from_raw_parts(buf.mapped, (w * h * 4) as usize) };
+    super::readback::write_screenshot(path, w, h, bytes, bgra)?;
+    println!("wrote {} ({w}x{h}, {how})", path.display());
+    Ok(())
 }
 
 /// The view as `dof render` flags, to render it again (or compare it) from the command line.

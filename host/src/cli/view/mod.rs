@@ -76,11 +76,16 @@ pub struct ViewArgs {
     /// times are the renderer's.
     #[arg(long)]
     pub vsync: bool,
+    /// Exposure multiplier before the tone map (positive): the same tone map, meaning and default
+    /// as the PNG preview `dof render` writes (`--exposure` there). The panel has a slider for it
+    /// and a switch to the raw linear values, clamped.
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
+    pub exposure: f32,
     /// Start with the panel hidden (H toggles it).
     #[arg(long)]
     pub hide_ui: bool,
     /// Changes applied one a frame, for tests: `method=NAME`, `resize=WxH`, `focus=D`,
-    /// `f-number=N`, `radius=R`, `blades=N`, `merge=none|2x2|4x4`, `tile=N`, `orbit=DEGREES`,
+    /// `f-number=N`, `radius=R`, `exposure=E`, `raw-linear` (toggle the tone map off and on), `blades=N`, `merge=none|2x2|4x4`, `tile=N`, `orbit=DEGREES`,
     /// `click=X:Y` (focus on what is under window pixel X,Y), `error` (toggle the error against
     /// the reference), `close` (as closing the window).
     #[arg(long, value_delimiter = ',')]
@@ -107,6 +112,9 @@ fn check(args: &ViewArgs) -> Result<()> {
     }
     if let Some(r) = args.aperture_radius.filter(|r| !(*r >= 0.0 && r.is_finite())) {
         bail!("--aperture-radius must be a finite radius of 0 or more, got {r}");
+    }
+    if !(args.exposure > 0.0 && args.exposure.is_finite()) {
+        bail!("--exposure must be a positive number, got {}", args.exposure);
     }
     if args.blades != 0 && !(3..=64).contains(&args.blades) {
         bail!("--blades must be 0 (a circle) or 3 to 64, got {}", args.blades);
@@ -143,5 +151,14 @@ pub fn run(args: &ViewArgs) -> Result<()> {
         _ => None,
     };
     let source = scene::SceneSource::load(&args.scene, [args.width, args.height], args.focus, aperture)?;
+    if let Some([w, h]) = source.fixed_size() {
+        if !(16..=MAX_EDGE).contains(&w) || !(16..=MAX_EDGE).contains(&h) {
+            bail!(
+                "--scene {}: the image is {w}x{h} pixels; the viewer shows an EXR at its own size, in a window of 16 to {MAX_EDGE} \
+                 pixels an edge (crop or scale the image, or blur it with dof render)",
+                args.scene
+            );
+        }
+    }
     frame::run_app(args, source, steps)
 }

@@ -2,6 +2,7 @@
 //! swapchain pixels, written as they are) and the linear result compared with the reference.
 
 use anyhow::Result;
+use dof::backend::{Backend, BufferId};
 use dof::layers::RgbImage;
 use std::path::Path;
 
@@ -17,9 +18,21 @@ pub fn write_screenshot(path: &Path, width: u32, height: u32, bytes: &[u8], bgra
     Ok(())
 }
 
-/// The RGB image in RGBA32F pixels (the frame API's output format).
-pub fn rgb_of_rgba32f(width: u32, height: u32, words: &[f32]) -> RgbImage {
-    RgbImage { width, height, data: words.chunks_exact(4).map(|p| [p[0], p[1], p[2]]).collect() }
+/// The window's part of a frame's linear RGB result (3 words a pixel, `frame_width` wide, the
+/// window at `margin` pixels from its top left corner), read back from the library's buffer.
+pub fn window_of_rgb(backend: &mut dyn Backend, rgb: BufferId, frame_width: u32, margin: u32, size: [u32; 2]) -> Result<RgbImage> {
+    let [w, h] = size;
+    if margin as u64 + w as u64 > frame_width as u64 {
+        anyhow::bail!("the window ({w} px wide at {margin} px) is not inside the frame ({frame_width} px wide)");
+    }
+    let row = 3 * frame_width as u64;
+    let words = backend.read_buffer(rgb, row * margin as u64, row * h as u64)?;
+    let data = words
+        .chunks_exact(row as usize)
+        .flat_map(|r| r[3 * margin as usize..3 * (margin + w) as usize].chunks_exact(3))
+        .map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])])
+        .collect();
+    Ok(RgbImage { width: w, height: h, data })
 }
 
 /// The PSNR of `image` against `reference` (the project's PSNR, on the tone map) and the absolute

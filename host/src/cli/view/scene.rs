@@ -101,6 +101,14 @@ impl SceneSource {
         }
     }
 
+    /// Fragment slots a pixel the contexts are made for (the peeled layers, or the EXR's).
+    pub fn max_layers(&self) -> u32 {
+        match &self.content {
+            Content::Exr(l) => l.max_layers.max(LAYERS),
+            Content::Mesh { .. } => LAYERS,
+        }
+    }
+
     /// Whether the scene has a reference for the "error vs reference" view.
     pub fn has_reference(&self) -> bool {
         matches!(self.content, Content::Mesh { .. })

@@ -17,6 +17,9 @@ pub enum Step {
     Tile(u32),
     Rings(u32),
     Orbit(f32),
+    Exposure(f32),
+    /// Toggle between the tone map and the raw linear values (clamped).
+    RawLinear,
     /// A click at window pixel (x, y): focus on what is under it.
     Click(f64, f64),
     Error,
@@ -77,6 +80,11 @@ fn step(s: &str) -> Result<Step> {
             _ => bail!("--script {s}: the ring gather takes 1 to {} rings", dof::methods::ring_gather::MAX_SAMPLE_RINGS),
         },
         "orbit" => Step::Orbit(number(value)?),
+        "exposure" => match number(value)? {
+            e if e > 0.0 => Step::Exposure(e),
+            _ => bail!("--script {s}: the exposure must be positive"),
+        },
+        "raw-linear" => Step::RawLinear,
         "click" => match value.split_once(':').map(|(x, y)| (number(x), number(y))) {
             Some((Ok(x), Ok(y))) if x >= 0.0 && y >= 0.0 => Step::Click(x as f64, y as f64),
             _ => bail!("--script {s}: expected click=X:Y in window pixels"),
@@ -84,7 +92,7 @@ fn step(s: &str) -> Result<Step> {
         "error" => Step::Error,
         "close" => Step::Close,
         _ => bail!(
-            "--script {s}: unknown step (method=, resize=, focus=, f-number=, radius=, blades=, merge=, tile=, rings=, orbit=, click=, error, close)"
+            "--script {s}: unknown step (method=, resize=, focus=, f-number=, radius=, blades=, merge=, tile=, rings=, orbit=, exposure=, raw-linear, click=, error, close)"
         ),
     })
 }

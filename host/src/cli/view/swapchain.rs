@@ -24,8 +24,12 @@ pub struct Swapchain {
     pub render_pass: vk::RenderPass,
 }
 
-/// The sRGB formats the blit from the linear RGBA32F result encodes into.
-const FORMATS: [vk::Format; 2] = [vk::Format::B8G8R8A8_SRGB, vk::Format::R8G8B8A8_SRGB];
+/// The 8-bit UNORM formats (with the sRGB colour space) the viewer presents in. The display pass
+/// (`dof_shaders::tonemap::display_tonemap`) writes values that are already sRGB-encoded (the tone
+/// map's OETF, or the OETF of the clamped linear values), so the blit into the swapchain image must
+/// store them as they are: a UNORM image does, where an `*_SRGB` one would encode them a second
+/// time. The UI renderer is told the framebuffer is not sRGB for the same reason.
+const FORMATS: [vk::Format; 2] = [vk::Format::B8G8R8A8_UNORM, vk::Format::R8G8B8A8_UNORM];
 
 impl Swapchain {
     /// `vsync`: FIFO; otherwise MAILBOX or IMMEDIATE where the surface offers one (frame times are
@@ -47,7 +51,7 @@ impl Swapchain {
                 .iter()
                 .find_map(|f| formats.iter().find(|s| s.format == *f && s.color_space == vk::ColorSpaceKHR::SRGB_NONLINEAR))
                 .copied()
-                .context("the surface offers no 8-bit sRGB format (B8G8R8A8_SRGB or R8G8B8A8_SRGB)")?;
+                .context("the surface offers no 8-bit UNORM format in the sRGB colour space (B8G8R8A8_UNORM or R8G8B8A8_UNORM)")?;
             let modes = surface_fn.get_physical_device_surface_present_modes(d.physical, surface)?;
             let present_mode = if vsync {
                 vk::PresentModeKHR::FIFO

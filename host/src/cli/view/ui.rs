@@ -15,6 +15,10 @@ pub struct Panel {
     pub blades: u32,
     /// Show the error against the reference (computed on demand for the current view).
     pub show_error: bool,
+    /// Exposure multiplier before the tone map (`--exposure`; as `dof render`'s PNG preview).
+    pub exposure: f32,
+    /// Show the raw linear values clamped to [0, 1] instead of the tone map.
+    pub raw_linear: bool,
 }
 
 /// What the panel shows.
@@ -77,6 +81,13 @@ impl Panel {
                 Aperture::FNumber(n) => ui.add(egui::Slider::new(n, 0.5..=64.0).logarithmic(true).text("f-number")),
                 Aperture::Radius(r) => ui.add(egui::Slider::new(r, 0.0..=10.0).logarithmic(true).text("aperture radius")),
             };
+            ui.add_enabled_ui(!self.raw_linear, |ui| {
+                ui.add(egui::Slider::new(&mut self.exposure, 0.01..=100.0).logarithmic(true).text("exposure (tone map)"));
+            });
+            ui.checkbox(&mut self.raw_linear, "raw linear, clamped to [0, 1] (no tone map)");
+            if !(self.exposure > 0.0 && self.exposure.is_finite()) {
+                self.exposure = 1.0;
+            }
             let splat_or_bokeh = matches!(self.settings.method, ViewMethod::Multilayer | ViewMethod::Tiled | ViewMethod::Bokeh);
             ui.add_enabled_ui(splat_or_bokeh, |ui| {
                 ui.add(egui::Slider::new(&mut self.blades, 0..=12).text("blades (0: circle)"));

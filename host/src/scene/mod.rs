@@ -46,7 +46,7 @@ pub use glam::Vec3;
 #[cfg(feature = "gltf")]
 pub use gltf_export::{ExportOptions, export_builtin_glb, export_glb};
 #[cfg(feature = "gltf")]
-pub use gltf_load::{load_gltf, load_gltf_slice};
+pub use gltf_load::{gltf_external_files, load_gltf, load_gltf_slice};
 pub use guard_band::{GuardBand, MAX_GUARD_BAND};
 pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
 pub use mesh::{LoadReport, MeshCamera, MeshScene};

@@ -50,7 +50,7 @@ fn bad_scenes_are_reported() {
 
 #[test]
 fn bad_cameras_and_lenses_are_reported() {
-    assert_fails_with(&["render", "--width", "0", "--samples", "1"], "image size must be positive");
+    assert_fails_with(&["render", "--width", "0", "--samples", "1"], "--width must lie between 1 and");
     assert_fails_with(&["render", "--aperture-radius", "nan", "--samples", "1"], "aperture radius");
     assert_fails_with(&["render", "--yfov", "180", "--samples", "1"], "field of view");
     assert_fails_with(&["render", "--yfov", "0", "--samples", "1"], "field of view");
@@ -220,7 +220,7 @@ fn bad_gltf_input_is_reported() {
     assert_fails_with(&["render", "--scene", s, "--yfov", "0", "--method", "pinhole"], "field of view");
     assert_fails_with(&["render", "--scene", s, "--focus", "-2", "--method", "pinhole"], "focus");
     assert_fails_with(&["render", "--scene", s, "--focus", "0.01", "--focal-length", "50", "--method", "pinhole"], "focal length");
-    assert_fails_with(&["render", "--scene", s, "--width", "0", "--method", "pinhole"], "image size must be positive");
+    assert_fails_with(&["render", "--scene", s, "--width", "0", "--method", "pinhole"], "--width must lie between 1 and");
     assert_fails_with(
         &["render", "--scene", s, "--width", "20000", "--height", "2", "--backend", "vulkan", "--method", "pinhole"],
         "framebuffer",
@@ -719,15 +719,27 @@ fn exr_input_refuses_size_view_and_layer_flags_and_tiny_apertures_say_why() {
 
 /// Cheap base arguments per subcommand, so that an accepted value finishes in a moment: tiny
 /// sizes, one run, one sample, the CPU backend, outputs in a temp folder.
-fn flag_table_base(sub: &str, dir: &std::path::Path) -> Vec<(String, Option<String>)> {
+/// A render flag that one method takes runs with that method (the others refuse or ignore it).
+fn flag_table_base(sub: &str, flag: &str, dir: &std::path::Path) -> Vec<(String, Option<String>)> {
     let d = |name: &str| dir.join(name).to_str().unwrap().to_string();
     let pairs: Vec<(&str, Option<String>)> = match sub {
-        "render" => vec![
-            ("--width", Some("32".into())),
-            ("--height", Some("18".into())),
-            ("--samples", Some("1".into())),
-            ("--out", Some(d("render.exr"))),
-        ],
+        "render" => {
+            let method = match flag {
+                "--rings" => "ring-gather",
+                "--lum-threshold" | "--sprites" => "bokeh",
+                "--layers-per-doubling" => "layered",
+                "--tile" => "multilayer",
+                "--max-coc" => "gather",
+                _ => "reference",
+            };
+            vec![
+                ("--method", Some(method.into())),
+                ("--width", Some("32".into())),
+                ("--height", Some("18".into())),
+                ("--samples", Some("1".into())),
+                ("--out", Some(d("render.exr"))),
+            ]
+        }
         "eval" => vec![
             ("--quick", None),
             ("--backend", Some("cpu".into())),
@@ -778,7 +790,20 @@ fn flag_table_base(sub: &str, dir: &std::path::Path) -> Vec<(String, Option<Stri
 
 /// Flag values that are still accepted or refused without naming the flag, each with the reason
 /// it is not fixed here.
-const FLAG_TABLE_PENDING: &[(&str, &str, &str, &str)] = &[];
+const FLAG_TABLE_PENDING: &[(&str, &str, &str, &str)] = &[
+    (
+        "bench frame",
+        "--width",
+        "0",
+        "the library's `the image size must be positive`; host/src/cli/bench_frame.rs is being restructured elsewhere",
+    ),
+    (
+        "bench frame",
+        "--height",
+        "0",
+        "the library's `the image size must be positive`; host/src/cli/bench_frame.rs is being restructured elsewhere",
+    ),
+];
 
 /// Every numeric option of every subcommand (from the command's own definition, so a new flag
 /// cannot be missed; `view` opens a window and is left out) with 0, -1, huge values and NaN: each
@@ -806,7 +831,7 @@ fn every_numeric_flag_survives_zero_negative_huge_and_nan() {
                 continue;
             }
             let mut args: Vec<String> = sub.split(' ').map(str::to_string).collect();
-            for (f, v) in flag_table_base(sub, &dir) {
+            for (f, v) in flag_table_base(sub, flag, &dir) {
                 if f != flag {
                     args.push(f);
                     args.extend(v);
@@ -838,7 +863,7 @@ fn every_numeric_flag_survives_zero_negative_huge_and_nan() {
             match status {
                 None => failures.push(format!("{run} ran past 20 s")),
                 Some(s) if stderr.contains("panicked") => failures.push(format!("{run} panicked ({s}):\n{stderr}")),
-                Some(s) if s.success() => {}
+                Some(s) if s.success() => eprintln!("accepted: {run}"),
                 Some(s) if s.code().is_none() => failures.push(format!("{run} was killed ({s}):\n{stderr}")),
                 Some(_) if !stderr.contains(flag) => failures.push(format!("{run} was refused without naming {flag}:\n{stderr}")),
                 Some(_) => {}

@@ -277,8 +277,22 @@ fn check_ranges(args: &RenderArgs) -> anyhow::Result<()> {
     if let Some(deg) = args.yfov.filter(|d| !(*d > 0.0 && *d < 180.0)) {
         bail!("--yfov (the vertical field of view) must lie strictly between 0 and 180 degrees, got {deg}");
     }
-    if !args.lum_threshold.is_finite() {
-        bail!("--lum-threshold must be a finite number, got {}", args.lum_threshold);
+    if !(args.lum_threshold >= 0.0 && args.lum_threshold.is_finite()) {
+        bail!("--lum-threshold must be a finite number, not negative, got {}", args.lum_threshold);
+    }
+    let max_rings = dof::methods::ring_gather::MAX_RINGS;
+    if !(1..=max_rings).contains(&args.rings) {
+        bail!("--rings: the ring gather takes 1 to {max_rings} rings, got {}", args.rings);
+    }
+    if !(1..=MAX_SPRITES).contains(&args.sprites) {
+        bail!("--sprites (the sprite capacity) must lie between 1 and {MAX_SPRITES}, got {}", args.sprites);
+    }
+    if !(1..=4).contains(&args.layers_per_doubling) {
+        bail!("--layers-per-doubling (layers per doubling of the CoC) must be 1 to 4, got {}", args.layers_per_doubling);
+    }
+    let tiles = dof_shaders::splat::TILE_SIZES;
+    if !tiles.contains(&args.tile) {
+        bail!("--tile: tile size {} is not one of {tiles:?}", args.tile);
     }
     Ok(())
 }
@@ -323,6 +337,9 @@ fn is_file_scene(scene: &str) -> bool {
     let lower = scene.to_ascii_lowercase();
     [".exr", ".gltf", ".glb"].iter().any(|ext| lower.ends_with(ext))
 }
+
+/// Most sprites `--sprites` may ask for (the bokeh sprite buffer's limit).
+const MAX_SPRITES: u32 = 1 << 20;
 
 /// Default and largest `--layers`.
 const DEFAULT_LAYERS: u32 = 4;

@@ -872,3 +872,29 @@ fn every_numeric_flag_survives_zero_negative_huge_and_nan() {
     }
     assert!(failures.is_empty(), "{} flag values misbehave:\n{}", failures.len(), failures.join("\n"));
 }
+
+/// An EXR whose header declares 20000x20000 pixels in a 3 MB file is refused from the header,
+/// quickly and without talk of a device on a CPU run: as a scene, and as a `compare` mask.
+#[test]
+fn huge_exr_headers_are_refused_before_decoding() {
+    let small = temp("header-small.exr");
+    let o = dof(&["render", "--width", "8", "--height", "8", "--method", "pinhole", "--out", small.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut bytes = std::fs::read(&small).unwrap();
+    let key = b"dataWindow\0box2i\0";
+    let at = bytes.windows(key.len()).position(|w| w == key).expect("a data window") + key.len() + 4;
+    bytes[at + 8..at + 16].copy_from_slice(&[19999i32.to_le_bytes(), 19999i32.to_le_bytes()].concat());
+    bytes.resize(3 << 20, 0);
+    let huge = temp("header-huge.exr");
+    std::fs::write(&huge, &bytes).unwrap();
+    let (s, h) = (small.to_str().unwrap(), huge.to_str().unwrap());
+    let out = temp("header-huge-out.exr");
+    let render = ["render", "--scene", h, "--method", "gather", "--focus", "4", "--f-number", "2", "--backend", "cpu"];
+    let mut args = render.to_vec();
+    args.extend(["--out", out.to_str().unwrap()]);
+    assert_fails_fast_with(&args, "20000x20000", 5);
+    assert_fails_with(&args, "header-huge.exr");
+    let stderr = String::from_utf8_lossy(&dof(&args).stderr).into_owned();
+    assert!(!stderr.contains("device"), "{stderr}");
+    assert_fails_fast_with(&["compare", s, s, "--mask", h], "20000x20000", 5);
+}

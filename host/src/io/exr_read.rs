@@ -534,6 +534,16 @@ fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)>
     )))
 }
 
+/// Checks an EXR file's headers alone against the limits on EXR input ([`MAX_EXR_EDGE`] pixels a
+/// side, [`MAX_EXR_SLOTS`] pixels x depth layers), before anything is decoded: for a caller that
+/// decodes the file itself (a mask plane, say).
+pub fn check_exr_header(path: impl AsRef<Path>) -> Result<()> {
+    let path = path.as_ref();
+    let file = File::open(path).map_err(|e| fs_error("open", path, &e))?;
+    let meta = guarded(path, || MetaData::read_from_buffered(BufReader::new(file), false).map_err(|e| exr_error(path, e)))?;
+    check_declared_size(path, &meta)
+}
+
 /// The name a channel is known by: in a multi-part file the part name (or `part<index>`) is
 /// prefixed where the channel name lacks it.
 fn full_channel_name(multi_part: bool, part: usize, part_name: Option<&Text>, channel: &Text) -> String {

@@ -44,7 +44,7 @@ pub fn backends(choice: BackendChoice, validation: bool) -> anyhow::Result<Vec<B
 /// Most samples per pixel any command takes (`--samples`, `--spp`, `--reference-spp`,
 /// `--max-spp`, `--accumulation`): 65536 per pixel of a 640x360 reference is already hours of work
 /// on two cores.
-pub const MAX_SAMPLES: u32 = 1 << 16;
+pub const MAX_SAMPLES: u32 = dof::scene::MAX_SPP;
 /// Most timed runs any command takes (`--runs`).
 pub const MAX_RUNS: usize = 1000;
 

@@ -53,4 +53,4 @@ pub use mesh::{LoadReport, MeshCamera, MeshScene};
 #[cfg(feature = "eval")]
 pub use mitsuba_export::{MitsubaExport, MitsubaOptions, MitsubaScene, export_metadata, export_mitsuba};
 pub use raycast::{LayerOptions, MultiLayerImage, apply_disocclusion, raycast_layers};
-pub use reference::{AutoOptions, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};
+pub use reference::{AutoOptions, MAX_SPP, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};

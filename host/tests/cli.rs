@@ -898,3 +898,13 @@ fn huge_exr_headers_are_refused_before_decoding() {
     assert!(!stderr.contains("device"), "{stderr}");
     assert_fails_fast_with(&["compare", s, s, "--mask", h], "20000x20000", 5);
 }
+
+/// A size beyond the host's limits on a CPU run is refused quickly, without talk of a device.
+#[test]
+fn host_size_limits_on_a_cpu_run_do_not_blame_a_device() {
+    let out = temp("too-large.exr");
+    let args = ["render", "--width", "65536", "--height", "65536", "--samples", "1", "--backend", "cpu", "--out", out.to_str().unwrap()];
+    assert_fails_fast_with(&args, "too large", 10);
+    let stderr = String::from_utf8_lossy(&dof(&args).stderr).into_owned();
+    assert!(!stderr.contains("device"), "{stderr}");
+}

@@ -28,6 +28,9 @@ const STAR_SAMPLES: u32 = 4;
 /// Largest side of an image mask.
 #[cfg(feature = "exr")]
 const MAX_IMAGE_SIDE: u32 = 128;
+/// Shortest longer side of an aperture image: the mask needs at least 2x2 texels.
+#[cfg(feature = "exr")]
+const MIN_IMAGE_SIDE: u32 = 2;
 
 impl ApertureShape {
     pub fn circle() -> Self {
@@ -207,6 +210,12 @@ pub fn image_aperture(path: &Path) -> Result<ApertureShape> {
     };
     // Letterbox into a square, then box-filter down to at most MAX_IMAGE_SIDE.
     let square = w.max(h);
+    if square < MIN_IMAGE_SIDE {
+        return Err(bad(format!(
+            "{w}x{h} is below the minimum size: its longer side must be at least {MIN_IMAGE_SIDE} pixels \
+             (the mask is sampled as a square of {MIN_IMAGE_SIDE} to {MAX_IMAGE_SIDE} texels a side)"
+        )));
+    }
     let side = square.min(MAX_IMAGE_SIDE);
     let (ox, oy) = ((square - w) / 2, (square - h) / 2);
     let mut mask = vec![0.0f32; (side * side) as usize];
@@ -230,7 +239,8 @@ pub fn image_aperture(path: &Path) -> Result<ApertureShape> {
         return Err(bad("it is black inside its inscribed circle: nothing would pass the aperture".into()));
     }
     mask.iter_mut().for_each(|v| *v = (*v / peak).clamp(0.0, 1.0));
-    let kernel = masked(side, &mask).ok_or_else(|| bad("not a usable mask".into()))?;
+    let kernel = masked(side, &mask)
+        .ok_or_else(|| bad(format!("not a usable mask: its {side}x{side} coverage has no area or values outside [0, 1]")))?;
     Ok(ApertureShape { kernel, mask })
 }
 

@@ -22,7 +22,7 @@ pub enum Error {
     /// no room for: nothing was allocated.
     #[error("out of device memory: `{what}` needs {requested} bytes with {held} held, beyond the budget of {budget} bytes")]
     OutOfMemory { what: String, requested: u64, held: u64, budget: u64 },
-    #[error("{what} is too large for the device: {size} exceeds the limit {limit}")]
+    #[error("{what} is too large: {size} exceeds the limit {limit}")]
     TooLarge { what: String, size: u64, limit: u64 },
     #[error("invalid argument: {0}")]
     InvalidArgument(String),

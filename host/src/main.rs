@@ -38,6 +38,36 @@ enum Command {
     /// frame API, an orbit camera, click to focus, the lens and method on a panel, GPU times.
     #[cfg(feature = "view")]
     View(cli::view::ViewArgs),
+    /// Lists every numeric option of every subcommand, one a line: the subcommand, the flag and
+    /// its type, tab-separated (what the flag-table test walks).
+    #[command(hide = true)]
+    FlagTable,
+}
+
+/// The numeric options of `command` and its subcommands, as `(subcommand path, --flag, type)`.
+fn numeric_flags(command: &clap::Command, path: &str, out: &mut Vec<(String, String, &'static str)>) {
+    use std::any::TypeId;
+    let types: [(TypeId, &'static str); 8] = [
+        (TypeId::of::<u8>(), "u8"),
+        (TypeId::of::<u16>(), "u16"),
+        (TypeId::of::<u32>(), "u32"),
+        (TypeId::of::<u64>(), "u64"),
+        (TypeId::of::<usize>(), "usize"),
+        (TypeId::of::<i32>(), "i32"),
+        (TypeId::of::<f32>(), "f32"),
+        (TypeId::of::<f64>(), "f64"),
+    ];
+    for arg in command.get_arguments() {
+        let (Some(long), true) = (arg.get_long(), arg.get_action().takes_values()) else { continue };
+        let id = arg.get_value_parser().type_id();
+        if let Some((_, name)) = types.iter().find(|(t, _)| id == *t) {
+            out.push((path.to_string(), format!("--{long}"), name));
+        }
+    }
+    for sub in command.get_subcommands().filter(|s| !s.is_hide_set()) {
+        let path = if path.is_empty() { sub.get_name().to_string() } else { format!("{path} {}", sub.get_name()) };
+        numeric_flags(sub, &path, out);
+    }
 }
 
 fn main() -> std::process::ExitCode {
@@ -61,6 +91,14 @@ fn main() -> std::process::ExitCode {
         Command::Soak(args) => cli::soak::run(&args),
         #[cfg(feature = "view")]
         Command::View(args) => cli::view::run(&args),
+        Command::FlagTable => {
+            let mut flags = Vec::new();
+            numeric_flags(&<Cli as clap::CommandFactory>::command(), "", &mut flags);
+            for (sub, flag, ty) in flags {
+                println!("{sub}\t{flag}\t{ty}");
+            }
+            Ok(())
+        }
     };
     match result {
         Ok(()) => std::process::ExitCode::SUCCESS,

@@ -50,7 +50,7 @@ fn bad_scenes_are_reported() {
 
 #[test]
 fn bad_cameras_and_lenses_are_reported() {
-    assert_fails_with(&["render", "--width", "0", "--samples", "1"], "image size must be positive");
+    assert_fails_with(&["render", "--width", "0", "--samples", "1"], "--width must lie between 1 and");
     assert_fails_with(&["render", "--aperture-radius", "nan", "--samples", "1"], "aperture radius");
     assert_fails_with(&["render", "--yfov", "180", "--samples", "1"], "field of view");
     assert_fails_with(&["render", "--yfov", "0", "--samples", "1"], "field of view");
@@ -220,7 +220,7 @@ fn bad_gltf_input_is_reported() {
     assert_fails_with(&["render", "--scene", s, "--yfov", "0", "--method", "pinhole"], "field of view");
     assert_fails_with(&["render", "--scene", s, "--focus", "-2", "--method", "pinhole"], "focus");
     assert_fails_with(&["render", "--scene", s, "--focus", "0.01", "--focal-length", "50", "--method", "pinhole"], "focal length");
-    assert_fails_with(&["render", "--scene", s, "--width", "0", "--method", "pinhole"], "image size must be positive");
+    assert_fails_with(&["render", "--scene", s, "--width", "0", "--method", "pinhole"], "--width must lie between 1 and");
     assert_fails_with(
         &["render", "--scene", s, "--width", "20000", "--height", "2", "--backend", "vulkan", "--method", "pinhole"],
         "framebuffer",
@@ -547,4 +547,364 @@ fn ring_gather_renders_and_cost_ratios_are_measured() {
     }
     assert!(std::fs::read_to_string(out.join("ratios.md")).unwrap().contains("| fence | cpu |"));
     assert_fails_with(&["bench", "ratios", "--backend", "cpu", "--scenes", "nowhere", "--width", "64", "--height", "36"], "nowhere");
+}
+
+/// Fails unless the command failed naming `needle` within `seconds` (refused before any work).
+fn assert_fails_fast_with(args: &[&str], needle: &str, seconds: u64) {
+    let start = std::time::Instant::now();
+    assert_fails_with(args, needle);
+    assert!(start.elapsed() < std::time::Duration::from_secs(seconds), "`dof {}` took {:?}", args.join(" "), start.elapsed());
+}
+
+/// Every sample count has a stated bound, refused up front naming the flag; runs and counts of
+/// zero are refused naming the flag, and messages name the flag the user typed.
+#[test]
+fn sample_counts_and_runs_are_bounded_naming_the_flag() {
+    let out = temp("bounded");
+    let o = out.to_str().unwrap();
+    let ratios = ["bench", "ratios", "--backend", "cpu", "--scenes", "simple", "--width", "32", "--height", "18", "--out", o];
+    for (flag, value, says) in
+        [("--spp", "4000000000", "65536"), ("--spp", "100000000", "65536"), ("--spp", "0", "--spp"), ("--runs", "0", "--runs")]
+    {
+        let mut args = ratios.to_vec();
+        args.extend([flag, value]);
+        assert_fails_fast_with(&args, flag, 10);
+        assert_fails_with(&args, says);
+    }
+    let scenes = ["scenes", "--only", "simple", "--width", "32", "--height", "18", "--raster"];
+    for (extra, flag) in [
+        (&["--accumulation", "4", "--reference-spp", "4000000000"][..], "--reference-spp"),
+        (&["--accumulation", "4000000000"][..], "--accumulation"),
+        (&["--accumulation", "0"][..], "--accumulation"),
+        (&["--accumulation", "4,4"][..], "twice"),
+        (&["--max-spp", "0"][..], "--max-spp"),
+        (&["--max-spp", "4000000000"][..], "--max-spp"),
+    ] {
+        let mut args = scenes.to_vec();
+        args.extend(extra);
+        assert_fails_fast_with(&args, flag, 10);
+        let stderr = String::from_utf8_lossy(&dof(&args).stderr).into_owned();
+        assert!(!stderr.contains("start_spp") && !stderr.contains("--samples"), "names another flag: {stderr}");
+    }
+    assert_fails_fast_with(&["bench", "sort", "--backend", "cpu", "--tiles", "16", "--runs", "0"], "--runs", 10);
+    assert_fails_fast_with(&["bench", "sort", "--backend", "cpu", "--tiles", "16", "--runs", "99999999999"], "--runs", 10);
+    assert_fails_fast_with(&["eval", "--quick", "--backend", "cpu", "--runs", "0", "--out", o], "--runs", 10);
+    assert_fails_fast_with(
+        &["bench", "scaling", "--backend", "cpu", "--sizes", "32x18", "--cocs", "none", "--runs", "0", "--out", o],
+        "--runs",
+        10,
+    );
+}
+
+/// A scene, method or radius named twice, or a name that does not exist, is refused before any
+/// work, naming the flag (and the valid names).
+#[test]
+fn duplicates_and_unknown_names_are_refused_up_front() {
+    let out = temp("names");
+    let o = out.to_str().unwrap();
+    let eval = ["eval", "--quick", "--backend", "cpu", "--no-plots", "--coc-sweep", "none", "--out", o];
+    for (extra, says) in [
+        (&["--scenes", "simple,simple"][..], "--scenes names `simple` twice"),
+        (&["--methods", "gather,gather"][..], "--methods names `gather` twice"),
+        (&["--scenes", "simple,nosuch"][..], "railing"),
+        (&["--methods", "gather,nosuch"][..], "nosuch"),
+    ] {
+        let mut args = eval.to_vec();
+        args.extend(extra);
+        assert_fails_fast_with(&args, says, 10);
+    }
+    assert_fails_fast_with(&["eval", "--quick", "--backend", "cpu", "--coc-sweep", "4,4", "--out", o], "--coc-sweep", 10);
+    assert!(!out.join("report.json").exists(), "no work was done");
+    let ratios = ["bench", "ratios", "--backend", "cpu", "--width", "32", "--height", "18", "--spp", "1", "--runs", "1", "--out", o];
+    for (scenes, says) in [("simple,simple", "--scenes names `simple` twice"), ("simple,nosuch", "railing")] {
+        let mut args = ratios.to_vec();
+        args.extend(["--scenes", scenes]);
+        assert_fails_fast_with(&args, says, 10);
+    }
+    let dir = temp("mitsuba-nosuch");
+    assert_fails_fast_with(&["scenes", "--only", "nosuch", "--export-mitsuba", dir.to_str().unwrap()], "nosuch", 10);
+    assert_fails_fast_with(&["scenes", "--only", "simple,simple"], "twice", 10);
+}
+
+/// An export never deletes or overwrites a file dof did not write; a file given as the folder is
+/// named with its flag.
+#[test]
+fn exports_keep_the_users_files() {
+    let dir = temp("mitsuba-user");
+    std::fs::create_dir_all(&dir).unwrap();
+    let mine = dir.join("simple.xml");
+    std::fs::write(&mine, b"<my own scene/>").unwrap();
+    let d = dir.to_str().unwrap();
+    assert_fails_with(&["scenes", "--only", "simple", "--width", "32", "--height", "18", "--export-mitsuba", d], "simple.xml");
+    assert_eq!(std::fs::read(&mine).unwrap(), b"<my own scene/>", "the user's file is kept");
+    // The same for the glTF export.
+    std::fs::write(dir.join("fence.glb"), b"mine").unwrap();
+    assert_fails_with(&["scenes", "--only", "fence", "--width", "32", "--height", "18", "--export", d], "fence.glb");
+    assert_eq!(std::fs::read(dir.join("fence.glb")).unwrap(), b"mine");
+    // Into a folder of its own, an export runs twice (replacing what it wrote) and keeps other files.
+    let fresh = temp("mitsuba-fresh");
+    std::fs::create_dir_all(&fresh).unwrap();
+    std::fs::write(fresh.join("notes.txt"), b"notes").unwrap();
+    for _ in 0..2 {
+        let o = dof(&["scenes", "--only", "simple,fence", "--width", "32", "--height", "18", "--export-mitsuba", fresh.to_str().unwrap()]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    assert!(fresh.join("simple.json").exists() && fresh.join("fence.json").exists());
+    assert_eq!(std::fs::read(fresh.join("notes.txt")).unwrap(), b"notes");
+    // A file where a folder is wanted: the flag and the path are named.
+    let file = temp("export-here-is-a-file");
+    std::fs::write(&file, b"x").unwrap();
+    for flag in ["--export-mitsuba", "--export", "--dump"] {
+        assert_fails_with(&["scenes", "--only", "simple", flag, file.to_str().unwrap()], flag);
+        assert_fails_with(&["scenes", "--only", "simple", flag, file.to_str().unwrap()], "export-here-is-a-file");
+    }
+}
+
+/// The files a glTF scene reads (its buffers and textures) are inputs too: an output over one is
+/// refused before any work, naming both.
+#[test]
+fn outputs_never_overwrite_a_scenes_textures() {
+    let dir = temp("gltf-texture");
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("scene.gltf");
+    std::fs::write(&scene, br#"{"asset":{"version":"2.0"},"buffers":[{"uri":"scene.bin","byteLength":4}],"images":[{"uri":"scene.png"}]}"#)
+        .unwrap();
+    std::fs::write(dir.join("scene.bin"), [0u8; 4]).unwrap();
+    let texture = dir.join("scene.png");
+    std::fs::write(&texture, b"the user's texture").unwrap();
+    let out = dir.join("scene.exr");
+    let args = ["render", "--scene", scene.to_str().unwrap(), "--method", "pinhole", "--out", out.to_str().unwrap()];
+    assert_fails_fast_with(&args, "would overwrite the input", 10);
+    assert_fails_with(&args, texture.to_str().unwrap());
+    assert_eq!(std::fs::read(&texture).unwrap(), b"the user's texture");
+    assert!(!out.exists());
+}
+
+/// An EXR fixes its own size, view and layers: the flags that would change them are refused, not
+/// ignored; a 1x1 aperture image is refused saying why.
+#[test]
+fn exr_input_refuses_size_view_and_layer_flags_and_tiny_apertures_say_why() {
+    let input = temp("fixed.exr");
+    let o = dof(&["render", "--width", "32", "--height", "18", "--method", "pinhole", "--out", input.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let base = ["render", "--scene", input.to_str().unwrap(), "--method", "gather", "--focus", "4", "--f-number", "2"];
+    for extra in [
+        &["--width", "64"][..],
+        &["--height", "64"],
+        &["--guard-band", "8"],
+        &["--eye", "0,0,1"],
+        &["--target", "0,0,-1"],
+        &["--layers", "2"],
+    ] {
+        let mut args = base.to_vec();
+        args.extend(extra);
+        assert_fails_fast_with(&args, extra[0], 10);
+        assert_fails_with(&args, "an EXR fixes its own size, view and layers");
+    }
+    let tiny = temp("tiny-aperture.png");
+    let mut encoded = Vec::new();
+    {
+        let mut encoder = dof::io::codecs::png::Encoder::new(&mut encoded, 1, 1);
+        encoder.set_color(dof::io::codecs::png::ColorType::Grayscale);
+        encoder.write_header().unwrap().write_image_data(&[255]).unwrap();
+    }
+    std::fs::write(&tiny, encoded).unwrap();
+    let args = ["render", "--method", "multilayer", "--width", "32", "--height", "18", "--aperture", tiny.to_str().unwrap(), "--out"];
+    let out = temp("tiny-aperture-out.exr");
+    let mut args = args.to_vec();
+    args.push(out.to_str().unwrap());
+    assert_fails_with(&args, "1x1 is below the minimum size");
+    assert_fails_with(&args, "at least 2 pixels");
+}
+
+/// Cheap base arguments per subcommand, so that an accepted value finishes in a moment: tiny
+/// sizes, one run, one sample, the CPU backend, outputs in a temp folder.
+/// A render flag that one method takes runs with that method (the others refuse or ignore it).
+fn flag_table_base(sub: &str, flag: &str, dir: &std::path::Path) -> Vec<(String, Option<String>)> {
+    let d = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    let pairs: Vec<(&str, Option<String>)> = match sub {
+        "render" => {
+            let method = match flag {
+                "--rings" => "ring-gather",
+                "--lum-threshold" | "--sprites" => "bokeh",
+                "--layers-per-doubling" => "layered",
+                "--tile" => "multilayer",
+                "--max-coc" => "gather",
+                _ => "reference",
+            };
+            vec![
+                ("--method", Some(method.into())),
+                ("--width", Some("32".into())),
+                ("--height", Some("18".into())),
+                ("--samples", Some("1".into())),
+                ("--out", Some(d("render.exr"))),
+            ]
+        }
+        "eval" => vec![
+            ("--quick", None),
+            ("--backend", Some("cpu".into())),
+            ("--scenes", Some("simple".into())),
+            ("--methods", Some("pinhole".into())),
+            ("--runs", Some("1".into())),
+            ("--coc-sweep", Some("none".into())),
+            ("--no-plots", None),
+            ("--out", Some(d("eval"))),
+        ],
+        "scenes" => vec![("--only", Some("simple".into())), ("--width", Some("32".into())), ("--height", Some("18".into()))],
+        "bench sort" => vec![
+            ("--backend", Some("cpu".into())),
+            ("--tiles", Some("16".into())),
+            ("--max-len", Some("64".into())),
+            ("--runs", Some("1".into())),
+        ],
+        "bench frame" => vec![
+            ("--backend", Some("cpu".into())),
+            ("--scene", Some("simple".into())),
+            ("--width", Some("32".into())),
+            ("--height", Some("18".into())),
+            ("--frames", Some("1".into())),
+        ],
+        "bench scaling" => vec![
+            ("--backend", Some("cpu".into())),
+            ("--sizes", Some("32x18".into())),
+            ("--cocs", Some("none".into())),
+            ("--methods", Some("gather".into())),
+            ("--runs", Some("1".into())),
+            ("--no-plots", None),
+            ("--out", Some(d("scaling"))),
+        ],
+        "bench ratios" => vec![
+            ("--backend", Some("cpu".into())),
+            ("--scenes", Some("simple".into())),
+            ("--width", Some("32".into())),
+            ("--height", Some("18".into())),
+            ("--spp", Some("1".into())),
+            ("--runs", Some("1".into())),
+            ("--out", Some(d("ratios"))),
+        ],
+        "soak" => vec![("--frames", Some("2".into())), ("--backend", Some("cpu".into())), ("--max-size", Some("16".into()))],
+        other => panic!("no base arguments for `dof {other}`: add cheap ones here"),
+    };
+    pairs.into_iter().map(|(f, v)| (f.to_string(), v)).collect()
+}
+
+/// Flag values that are still accepted or refused without naming the flag, each with the reason
+/// it is not fixed here.
+const FLAG_TABLE_PENDING: &[(&str, &str, &str, &str)] = &[
+    (
+        "bench frame",
+        "--width",
+        "0",
+        "the library's `the image size must be positive`; host/src/cli/bench_frame.rs is being restructured elsewhere",
+    ),
+    (
+        "bench frame",
+        "--height",
+        "0",
+        "the library's `the image size must be positive`; host/src/cli/bench_frame.rs is being restructured elsewhere",
+    ),
+];
+
+/// Every numeric option of every subcommand (from the command's own definition, so a new flag
+/// cannot be missed; `view` opens a window and is left out) with 0, -1, huge values and NaN: each
+/// is refused with a message naming the flag (and no panic), or succeeds, within 20 s.
+#[test]
+fn every_numeric_flag_survives_zero_negative_huge_and_nan() {
+    let table = dof(&["flag-table"]);
+    assert!(table.status.success(), "{}", String::from_utf8_lossy(&table.stderr));
+    let table = String::from_utf8_lossy(&table.stdout).into_owned();
+    let rows: Vec<(&str, &str)> = table
+        .lines()
+        .filter_map(|l| {
+            let mut parts = l.split('\t');
+            Some((parts.next()?, parts.next()?))
+        })
+        .filter(|(sub, _)| *sub != "view")
+        .collect();
+    assert!(rows.len() > 20 && rows.contains(&("bench ratios", "--spp")), "{table}");
+    let dir = temp("flag-table");
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut failures = Vec::new();
+    for (sub, flag) in rows {
+        for value in ["0", "-1", "1e30", "99999999999", "nan"] {
+            if FLAG_TABLE_PENDING.iter().any(|p| (p.0, p.1, p.2) == (sub, flag, value)) {
+                continue;
+            }
+            let mut args: Vec<String> = sub.split(' ').map(str::to_string).collect();
+            for (f, v) in flag_table_base(sub, flag, &dir) {
+                if f != flag {
+                    args.push(f);
+                    args.extend(v);
+                }
+            }
+            args.push(format!("{flag}={value}"));
+            // Into a file, not a pipe: a child writing more than a pipe holds would block.
+            let log = dir.join("stderr.txt");
+            let mut child = Command::new(env!("CARGO_BIN_EXE_dof"))
+                .args(&args)
+                .stdout(std::process::Stdio::null())
+                .stderr(std::fs::File::create(&log).expect("the log file"))
+                .spawn()
+                .expect("the dof binary runs");
+            let start = std::time::Instant::now();
+            let status = loop {
+                if let Some(status) = child.try_wait().expect("wait") {
+                    break Some(status);
+                }
+                if start.elapsed() > std::time::Duration::from_secs(20) {
+                    child.kill().ok();
+                    child.wait().ok();
+                    break None;
+                }
+                std::thread::sleep(std::time::Duration::from_millis(20));
+            };
+            let stderr = String::from_utf8_lossy(&std::fs::read(&log).unwrap_or_default()).into_owned();
+            let run = format!("`dof {}`", args.join(" "));
+            match status {
+                None => failures.push(format!("{run} ran past 20 s")),
+                Some(s) if stderr.contains("panicked") => failures.push(format!("{run} panicked ({s}):\n{stderr}")),
+                Some(s) if s.success() => eprintln!("accepted: {run}"),
+                Some(s) if s.code().is_none() => failures.push(format!("{run} was killed ({s}):\n{stderr}")),
+                Some(_) if !stderr.contains(flag) => failures.push(format!("{run} was refused without naming {flag}:\n{stderr}")),
+                Some(_) => {}
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{} flag values misbehave:\n{}", failures.len(), failures.join("\n"));
+}
+
+/// An EXR whose header declares 20000x20000 pixels in a 3 MB file is refused from the header,
+/// quickly and without talk of a device on a CPU run: as a scene, and as a `compare` mask.
+#[test]
+fn huge_exr_headers_are_refused_before_decoding() {
+    let small = temp("header-small.exr");
+    let o = dof(&["render", "--width", "8", "--height", "8", "--method", "pinhole", "--out", small.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut bytes = std::fs::read(&small).unwrap();
+    let key = b"dataWindow\0box2i\0";
+    let at = bytes.windows(key.len()).position(|w| w == key).expect("a data window") + key.len() + 4;
+    bytes[at + 8..at + 16].copy_from_slice(&[19999i32.to_le_bytes(), 19999i32.to_le_bytes()].concat());
+    bytes.resize(3 << 20, 0);
+    let huge = temp("header-huge.exr");
+    std::fs::write(&huge, &bytes).unwrap();
+    let (s, h) = (small.to_str().unwrap(), huge.to_str().unwrap());
+    let out = temp("header-huge-out.exr");
+    let render = ["render", "--scene", h, "--method", "gather", "--focus", "4", "--f-number", "2", "--backend", "cpu"];
+    let mut args = render.to_vec();
+    args.extend(["--out", out.to_str().unwrap()]);
+    assert_fails_fast_with(&args, "20000x20000", 5);
+    assert_fails_with(&args, "header-huge.exr");
+    let stderr = String::from_utf8_lossy(&dof(&args).stderr).into_owned();
+    assert!(!stderr.contains("device"), "{stderr}");
+    assert_fails_fast_with(&["compare", s, s, "--mask", h], "20000x20000", 5);
+}
+
+/// A size beyond the host's limits on a CPU run is refused quickly, without talk of a device.
+#[test]
+fn host_size_limits_on_a_cpu_run_do_not_blame_a_device() {
+    let out = temp("too-large.exr");
+    let args = ["render", "--width", "65536", "--height", "65536", "--samples", "1", "--backend", "cpu", "--out", out.to_str().unwrap()];
+    assert_fails_fast_with(&args, "too large", 10);
+    let stderr = String::from_utf8_lossy(&dof(&args).stderr).into_owned();
+    assert!(!stderr.contains("device"), "{stderr}");
 }

@@ -61,3 +61,21 @@ fn kernels_needing_more_workgroup_memory_than_the_device_has_are_refused() {
     let err = cpu.dispatch(&BLOCK_SCAN, [1, 1, 1], &[data, data], &params, "bad").unwrap_err();
     assert!(matches!(err, Error::TooLarge { .. }), "{err}");
 }
+
+/// Sample counts beyond the stated bound are refused before anything proportional to them is
+/// allocated (4e9 samples per pixel once meant an 80 GB allocation), without naming a CLI flag.
+#[test]
+fn sample_counts_beyond_the_bound_are_refused() {
+    use dof::scene::{AutoOptions, MAX_SPP, ReferenceOptions, builtin, reference, reference_auto};
+    let s = builtin("simple").unwrap().with_size(16, 9);
+    let lens = s.thin_lens().unwrap();
+    let start = std::time::Instant::now();
+    for spp in [0, MAX_SPP + 1, 4_000_000_000] {
+        let err = reference(&s.scene, &s.camera, &lens, &ReferenceOptions { spp, ..Default::default() }).unwrap_err();
+        assert!(matches!(err, Error::InvalidArgument(_)) && err.to_string().contains(&MAX_SPP.to_string()), "{err}");
+        assert!(!err.to_string().contains("--"), "a library message names no flag: {err}");
+    }
+    let err = reference_auto(&s.scene, &s.camera, &lens, &AutoOptions { max_spp: 4_000_000_000, ..Default::default() }).unwrap_err();
+    assert!(err.to_string().contains(&MAX_SPP.to_string()), "{err}");
+    assert!(start.elapsed() < std::time::Duration::from_secs(2), "{:?}", start.elapsed());
+}

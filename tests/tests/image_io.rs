@@ -849,6 +849,32 @@ fn zero_size_is_an_error() {
     assert_mentions(&err_message(write_png_preview(out.path(), &empty, 1.0)), &["zero size"]);
 }
 
+/// A header that declares a huge image in a file of a few megabytes is refused from the header
+/// alone, before anything is decoded or allocated, naming the file, the declared size and the
+/// limit (and not "the device": no device is involved in reading a file).
+#[test]
+fn huge_declared_size_is_refused_from_the_header() {
+    let file = TempFile::new("small.exr");
+    write_exr(file.path(), &RgbImage::new(2, 2), &[("Z", &[1.0; 4])]).unwrap();
+    let mut bytes = std::fs::read(file.path()).unwrap();
+    let key = b"dataWindow\0box2i\0";
+    let at = bytes.windows(key.len()).position(|w| w == key).unwrap() + key.len() + 4;
+    bytes[at + 8..at + 12].copy_from_slice(&19999i32.to_le_bytes());
+    bytes[at + 12..at + 16].copy_from_slice(&19999i32.to_le_bytes());
+    // Padded to 3 MB: small enough, against 6.4 GB of declared pixel data, to pass the
+    // expansion check, so only the size limit stands between the header and the allocation.
+    bytes.resize(3 << 20, 0);
+    let huge = TempFile::new("huge-header.exr");
+    std::fs::write(huge.path(), &bytes).unwrap();
+    for rgb in [false, true] {
+        let start = std::time::Instant::now();
+        let message = if rgb { err_message(read_rgb_exr(huge.path())) } else { err_message(read_layered_exr(huge.path())) };
+        assert_mentions(&message, &["huge-header.exr", "20000x20000", &dof::io::MAX_EXR_EDGE.to_string(), "before decoding"]);
+        assert!(!message.contains("device"), "{message}");
+        assert!(start.elapsed() < std::time::Duration::from_secs(2), "refused after {:?}", start.elapsed());
+    }
+}
+
 #[test]
 fn mismatched_layer_sizes_are_an_error() {
     use exr::WritableImage;

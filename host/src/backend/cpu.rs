@@ -125,7 +125,7 @@ impl Backend for CpuBackend {
     fn create_buffer(&mut self, words: u64, label: &str) -> Result<BufferId> {
         let words = words.max(1);
         if words * 4 > self.limits.max_buffer_bytes {
-            return Err(Error::TooLarge { what: "buffer".into(), size: words * 4, limit: self.limits.max_buffer_bytes });
+            return Err(Error::TooLarge { what: "buffer on the CPU backend".into(), size: words * 4, limit: self.limits.max_buffer_bytes });
         }
         self.counters.check_budget(self.budget, words * 4, label)?;
         let buffer: Box<[AtomicU32]> = (0..words).map(|_| AtomicU32::new(0)).collect();

@@ -1,6 +1,6 @@
 //! `dof bench`: kernel throughput on each backend, as ratios to a CPU reference measured in the same run.
 
-use super::{BackendChoice, backends};
+use super::{BackendChoice, MAX_RUNS, backends, check_count};
 use dof::backend::with_buffers;
 use dof::ops::sort::{SegmentedSort, SortInput};
 use dof::timing::{RunTimes, median};
@@ -50,7 +50,7 @@ pub fn run(cmd: &BenchCommand) -> anyhow::Result<()> {
 
 /// The reference every backend is compared with: `slice::sort_unstable_by` on each list, one thread.
 fn std_sort_ms(input: &SortInput, runs: usize) -> f64 {
-    let times = (0..runs.max(1))
+    let times = (0..runs)
         .map(|_| {
             let mut keys = input.keys.clone();
             let start = Instant::now();
@@ -77,6 +77,7 @@ fn sort(args: &SortArgs) -> anyhow::Result<()> {
     if args.max_len == 0 || args.max_len > MAX_LIST {
         anyhow::bail!("--max-len must lie between 1 and {MAX_LIST}, got {}", args.max_len);
     }
+    check_count("--runs", "timed runs", args.runs, 1, MAX_RUNS)?;
     let input = workload::tile_lists(args.tiles, args.max_len, args.seed);
     let n = input.keys.len();
     let std_ms = std_sort_ms(&input, args.runs);

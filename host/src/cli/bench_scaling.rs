@@ -1,7 +1,7 @@
 //! `dof bench scaling`: time and peak memory of every method against resolution and against the
 //! largest CoC (see `dof::eval::scaling`), written as JSON, markdown and plots.
 
-use super::{BackendChoice, backends};
+use super::{BackendChoice, MAX_RUNS, backends, check_count};
 use anyhow::Context;
 use dof::eval::scaling::{DEFAULT_BUDGET_S, ScalingOptions, scaling};
 use std::path::PathBuf;
@@ -58,6 +58,10 @@ fn is_none(values: &[String]) -> bool {
 pub fn run(args: &ScalingArgs) -> anyhow::Result<()> {
     if args.out.exists() && !args.out.is_dir() {
         anyhow::bail!("--out {} is a file; name a folder for the results", args.out.display());
+    }
+    check_count("--runs", "timed runs", args.runs, 1, MAX_RUNS)?;
+    if !(args.budget_s > 0.0 && args.budget_s.is_finite()) {
+        anyhow::bail!("--budget-s must be a positive number of seconds, got {}", args.budget_s);
     }
     let defaults = ScalingOptions::new(false);
     let sizes = match &args.sizes {

@@ -110,6 +110,7 @@ fn read(path: &Path) -> anyhow::Result<RgbImage> {
 /// The first of the channels `names` found in the EXR at `path` (any layer or part) as a mask
 /// (`> 0.5` is inside), checked against the size of `like`.
 fn read_plane(path: &Path, names: &[&str], like: &RgbImage) -> anyhow::Result<Vec<bool>> {
+    dof::io::check_exr_header(path)?;
     let file =
         exr::prelude::read_all_flat_layers_from_file(path).with_context(|| format!("cannot read the mask EXR {}", path.display()))?;
     let mut found = Vec::new();

@@ -1,6 +1,6 @@
 //! `dof eval`: error against run time for every method, setting, scene and backend.
 
-use super::{BackendChoice, backends};
+use super::{BackendChoice, MAX_RUNS, backends, check_count, check_no_duplicates};
 use anyhow::Context;
 use dof::eval::{EvalOptions, evaluate};
 use std::path::PathBuf;
@@ -50,30 +50,71 @@ fn sweep_targets(args: &EvalArgs) -> anyhow::Result<Vec<f64>> {
     if args.coc_sweep.iter().any(|s| s == "none") {
         return Ok(Vec::new());
     }
-    args.coc_sweep
+    let radii: Vec<f64> = args
+        .coc_sweep
         .iter()
         .map(|s| match s.parse::<f64>() {
             Ok(v) if v > 0.0 && v.is_finite() => Ok(v),
             _ => anyhow::bail!("--coc-sweep takes positive radii in pixels (or `none`), got `{s}`"),
         })
-        .collect()
+        .collect::<anyhow::Result<_>>()?;
+    for (i, r) in radii.iter().enumerate() {
+        if radii[..i].contains(r) {
+            anyhow::bail!("--coc-sweep names the radius {r} twice (`{}`); give each once", args.coc_sweep[i]);
+        }
+    }
+    Ok(radii)
+}
+
+/// Every flag checked before any work: counts in range, no scene or method named twice, every
+/// scene a built-in name or a glTF file that exists.
+fn check_before_work(args: &EvalArgs) -> anyhow::Result<()> {
+    if let Some(runs) = args.runs {
+        check_count("--runs", "timed runs a point", runs, 1, MAX_RUNS)?;
+    }
+    if !(args.scaling_budget_s > 0.0 && args.scaling_budget_s.is_finite()) {
+        anyhow::bail!("--scaling-budget-s must be a positive number of seconds, got {}", args.scaling_budget_s);
+    }
+    if !args.scaling && args.scaling_budget_s != dof::eval::scaling::DEFAULT_BUDGET_S {
+        anyhow::bail!("--scaling-budget-s applies to the scaling sweep only; add --scaling");
+    }
+    check_no_duplicates("--scenes", &args.scenes)?;
+    check_no_duplicates("--methods", &args.methods)?;
+    let known = dof::scene::builtin_names();
+    for scene in &args.scenes {
+        let lower = scene.to_ascii_lowercase();
+        if lower.ends_with(".gltf") || lower.ends_with(".glb") {
+            if !std::path::Path::new(scene).is_file() {
+                anyhow::bail!("--scenes: the glTF file {scene} does not exist (or is not a file)");
+            }
+        } else if !known.contains(&scene.as_str()) {
+            anyhow::bail!("--scenes: unknown scene `{scene}`; give a built-in scene ({}) or a .gltf/.glb file", known.join(", "));
+        }
+    }
+    let methods: Vec<&str> = dof::eval::methods::registry().iter().map(|m| m.name()).collect();
+    if let Some(unknown) = args.methods.iter().find(|m| !methods.contains(&m.as_str())) {
+        anyhow::bail!("--methods: unknown method `{unknown}`; the methods are: {}", methods.join(", "));
+    }
+    Ok(())
 }
 
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
+    check_before_work(args)?;
+    let coc_sweep = sweep_targets(args)?;
     // Before the long run: the output must be a folder that can be made.
     if args.out.exists() && !args.out.is_dir() {
         anyhow::bail!("--out {} is a file; name a folder for the report and plots", args.out.display());
     }
-    std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create {}", args.out.display()))?;
+    std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create --out {}", args.out.display()))?;
     let scenes =
         if args.scenes.is_empty() { dof::scene::builtin_names().iter().map(|s| s.to_string()).collect() } else { args.scenes.clone() };
     let options = EvalOptions {
         scenes,
         methods: args.methods.clone(),
         quick: args.quick,
-        runs: args.runs.unwrap_or(if args.quick { 3 } else { 5 }).max(1),
+        runs: args.runs.unwrap_or(if args.quick { 3 } else { 5 }),
         progress: true,
-        coc_sweep: sweep_targets(args)?,
+        coc_sweep,
     };
     if !args.no_plots {
         // Before the long run, so a missing font is reported at once.
@@ -99,13 +140,16 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
             ..dof::eval::scaling::ScalingOptions::new(args.quick)
         };
         let sweep = dof::eval::scaling::scaling(&scaling, &mut backends)?;
-        std::fs::write(args.out.join("scaling.json"), sweep.to_json())?;
+        let path = args.out.join("scaling.json");
+        std::fs::write(&path, sweep.to_json()).with_context(|| format!("cannot write {} (in --out)", path.display()))?;
         report.scaling = Some(sweep);
     }
-    std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create {}", args.out.display()))?;
-    std::fs::write(args.out.join("report.json"), report.to_json())?;
+    std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create --out {}", args.out.display()))?;
     let md = report.to_markdown();
-    std::fs::write(args.out.join("report.md"), &md)?;
+    for (name, text) in [("report.json", report.to_json()), ("report.md", md.clone())] {
+        let path = args.out.join(name);
+        std::fs::write(&path, text).with_context(|| format!("cannot write {} (in --out)", path.display()))?;
+    }
     println!("{md}");
     if !report.grids.is_empty() && dof::eval::plot::ensure_font().is_err() {
         eprintln!(

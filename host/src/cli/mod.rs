@@ -45,3 +45,38 @@ pub fn backends(choice: BackendChoice, validation: bool) -> anyhow::Result<Vec<B
     }
     Ok(out)
 }
+
+/// Most samples per pixel any command takes (`--samples`, `--spp`, `--reference-spp`,
+/// `--max-spp`, `--accumulation`): 65536 per pixel of a 640x360 reference is already hours of work
+/// on two cores.
+pub const MAX_SAMPLES: u32 = dof::scene::MAX_SPP;
+/// Most timed runs any command takes (`--runs`).
+pub const MAX_RUNS: usize = 1000;
+
+/// Refuses a count outside `min..=max`, naming the flag and the bounds.
+pub fn check_count<T: PartialOrd + std::fmt::Display>(flag: &str, what: &str, value: T, min: T, max: T) -> anyhow::Result<()> {
+    if value < min || value > max {
+        anyhow::bail!("{flag} ({what}) must lie between {min} and {max}, got {value}");
+    }
+    Ok(())
+}
+
+/// Refuses a list naming one thing twice (the work would be repeated), naming the flag and the
+/// duplicate.
+pub fn check_no_duplicates(flag: &str, values: &[String]) -> anyhow::Result<()> {
+    for (i, v) in values.iter().enumerate() {
+        if values[..i].contains(v) {
+            anyhow::bail!("{flag} names `{v}` twice; give each once");
+        }
+    }
+    Ok(())
+}
+
+/// Refuses, before any work, a name that is not a built-in scene (with the list of them).
+pub fn check_builtin_scenes(flag: &str, names: &[String]) -> anyhow::Result<()> {
+    let known = dof::scene::builtin_names();
+    if let Some(unknown) = names.iter().find(|n| !known.contains(&n.as_str())) {
+        anyhow::bail!("{flag}: unknown built-in scene `{unknown}`; the built-in scenes are: {}", known.join(", "));
+    }
+    Ok(())
+}

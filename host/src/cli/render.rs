@@ -121,8 +121,8 @@ pub struct RenderArgs {
     /// radius that can reach into the frame, at most 96 px), `off`, or a width in pixels.
     #[arg(long, default_value = "auto", value_parser = parse_guard_band)]
     guard_band: GuardBand,
-    /// Fragments per pixel in the multi-layer image.
-    #[arg(long, default_value_t = 4)]
+    /// Fragments per pixel in the multi-layer image (built-in and glTF scenes; 1 to 64).
+    #[arg(long, default_value_t = DEFAULT_LAYERS)]
     layers: u32,
     /// Output EXR; a PNG preview is written beside it. Default `out/<scene>-<method>.exr`.
     #[arg(long)]
@@ -171,9 +171,28 @@ fn parse_guard_band(s: &str) -> Result<GuardBand, String> {
     }
 }
 
-/// What can be checked before any work: the flags' ranges, and outputs that would overwrite an
-/// input (the scene file, the aperture image).
+/// What can be checked before any work: the flags' ranges, flags an EXR input would ignore, and
+/// outputs that would overwrite an input (the scene file, the buffers and textures of a glTF
+/// scene, the aperture image).
 fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
+    check_ranges(args)?;
+    if args.scene.to_ascii_lowercase().ends_with(".exr") {
+        let fixed = [
+            (args.width.is_some(), "--width"),
+            (args.height.is_some(), "--height"),
+            (args.guard_band != GuardBand::Auto, "--guard-band"),
+            (args.eye.is_some(), "--eye"),
+            (args.target.is_some(), "--target"),
+            (args.layers != DEFAULT_LAYERS, "--layers"),
+        ];
+        if let Some((_, flag)) = fixed.iter().find(|(given, _)| *given) {
+            bail!(
+                "{flag} does not apply to an EXR input ({}): an EXR fixes its own size, view and layers \
+                 (its edges are extended by the edge policy instead of a guard band)",
+                args.scene
+            );
+        }
+    }
     // Options a method would otherwise ignore.
     if args.aperture != "circle" && !matches!(args.method, Method::Tiled | Method::Multilayer | Method::Bokeh) {
         bail!(
@@ -212,8 +231,16 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         bail!("--samples/--spp (samples or rays per pixel) must lie between 1 and {MAX_SAMPLES}, got {n}");
     }
     let png = out.with_extension("png");
-    let inputs = [Some(Path::new(&args.scene)), Path::new(&args.aperture).extension().is_some().then(|| Path::new(&args.aperture))];
-    for input in inputs.into_iter().flatten() {
+    // Every file the run reads.
+    let mut inputs = vec![PathBuf::from(&args.scene)];
+    let lower = args.scene.to_ascii_lowercase();
+    if lower.ends_with(".gltf") || lower.ends_with(".glb") {
+        inputs.extend(scene::gltf_external_files(Path::new(&args.scene)));
+    }
+    if Path::new(&args.aperture).extension().is_some() {
+        inputs.push(PathBuf::from(&args.aperture));
+    }
+    for input in &inputs {
         for (output, what) in [(out, "--out"), (png.as_path(), "the PNG preview beside --out")] {
             if same_file(input, output) {
                 bail!("{what} ({}) would overwrite the input {}; choose another --out", output.display(), input.display());
@@ -221,6 +248,69 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         }
     }
     Ok(())
+}
+
+/// The flags' own ranges, each refused naming the flag (the lens flags' relations, such as a focal
+/// length shorter than the focus distance, are checked with the lens).
+fn check_ranges(args: &RenderArgs) -> anyhow::Result<()> {
+    for (value, flag) in [(args.width, "--width"), (args.height, "--height")] {
+        if let Some(v) = value.filter(|&v| v == 0 || v > MAX_EDGE) {
+            bail!("{flag} must lie between 1 and {MAX_EDGE} px, got {v}");
+        }
+    }
+    if args.layers == 0 || args.layers > MAX_LAYERS {
+        bail!("--layers (fragments per pixel) must lie between 1 and {MAX_LAYERS}, got {}", args.layers);
+    }
+    let positive = [
+        (args.focus, "--focus (the focus distance)"),
+        (args.f_number, "--f-number"),
+        (args.focal_length, "--focal-length (the focal length, mm)"),
+        (Some(args.sensor_height), "--sensor-height (the sensor height, mm)"),
+    ];
+    for (value, flag) in positive {
+        if let Some(v) = value.filter(|v| !(*v > 0.0 && v.is_finite())) {
+            bail!("{flag} must be a positive finite number, got {v}");
+        }
+    }
+    if let Some(r) = args.aperture_radius.filter(|r| !(*r >= 0.0 && r.is_finite())) {
+        bail!("--aperture-radius (the aperture radius) must be a finite number, not negative, got {r}");
+    }
+    if let Some(deg) = args.yfov.filter(|d| !(*d > 0.0 && *d < 180.0)) {
+        bail!("--yfov (the vertical field of view) must lie strictly between 0 and 180 degrees, got {deg}");
+    }
+    if !(args.lum_threshold >= 0.0 && args.lum_threshold.is_finite()) {
+        bail!("--lum-threshold must be a finite number, not negative, got {}", args.lum_threshold);
+    }
+    let max_rings = dof::methods::ring_gather::MAX_RINGS;
+    if !(1..=max_rings).contains(&args.rings) {
+        bail!("--rings: the ring gather takes 1 to {max_rings} rings, got {}", args.rings);
+    }
+    if !(1..=MAX_SPRITES).contains(&args.sprites) {
+        bail!("--sprites (the sprite capacity) must lie between 1 and {MAX_SPRITES}, got {}", args.sprites);
+    }
+    if !(1..=4).contains(&args.layers_per_doubling) {
+        bail!("--layers-per-doubling (layers per doubling of the CoC) must be 1 to 4, got {}", args.layers_per_doubling);
+    }
+    let tiles = dof_shaders::splat::TILE_SIZES;
+    if !tiles.contains(&args.tile) {
+        bail!("--tile: tile size {} is not one of {tiles:?}", args.tile);
+    }
+    Ok(())
+}
+
+/// The lens flags given, for the context of a lens the library refuses (their relations, e.g. a
+/// focal length not shorter than the focus distance).
+fn lens_flags(args: &RenderArgs) -> String {
+    let given = [
+        (args.focus, "--focus"),
+        (args.f_number, "--f-number"),
+        (args.aperture_radius, "--aperture-radius"),
+        (args.focal_length, "--focal-length"),
+        (Some(args.sensor_height), "--sensor-height"),
+        (args.yfov, "--yfov"),
+    ];
+    let flags: Vec<String> = given.iter().filter_map(|(v, flag)| v.map(|v| format!("{flag} {v}"))).collect();
+    format!("the lens from {}", flags.join(", "))
 }
 
 /// Whether two paths name the same file (compared canonically when both exist, else as written).
@@ -249,9 +339,17 @@ fn is_file_scene(scene: &str) -> bool {
     [".exr", ".gltf", ".glb"].iter().any(|ext| lower.ends_with(ext))
 }
 
-/// Most samples per pixel (`--samples`) any method takes: 65536 per pixel of a 640x360 reference is
-/// already hours of work on two cores.
-const MAX_SAMPLES: u32 = 1 << 16;
+/// Most sprites `--sprites` may ask for (the bokeh sprite buffer's limit).
+const MAX_SPRITES: u32 = 1 << 20;
+
+/// Default and largest `--layers`.
+const DEFAULT_LAYERS: u32 = 4;
+const MAX_LAYERS: u32 = 64;
+/// Largest `--width` and `--height`.
+const MAX_EDGE: u32 = 65536;
+
+/// Most samples per pixel (`--samples`) any method takes.
+use super::MAX_SAMPLES;
 
 pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
     let name = Path::new(&args.scene).file_stem().and_then(|s| s.to_str()).unwrap_or("scene").to_string();
@@ -328,7 +426,7 @@ fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens
     let (camera, mut settings) = exr_view(layers, args.focus, aperture, args.yfov)?;
     settings.focal_length_mm = args.focal_length;
     settings.sensor_height_mm = args.sensor_height;
-    Ok(settings.thin_lens(&camera)?)
+    settings.thin_lens(&camera).with_context(|| lens_flags(args))
 }
 
 /// The camera and lens settings of an EXR (it has neither): at the origin looking down -Z with
@@ -463,7 +561,7 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         camera.yfov_radians = deg.to_radians();
     }
     let settings = lens_settings(args, builtin.lens);
-    let lens = settings.thin_lens(&camera)?;
+    let lens = settings.thin_lens(&camera).with_context(|| lens_flags(args))?;
     println!(
         "{}: {}x{}, f = {:.1} mm, aperture radius {:.2} mm, focus {:.3}, far-field CoC {:.1} px",
         builtin.name,
@@ -630,7 +728,7 @@ fn gltf_view(args: &RenderArgs, mesh: &MeshScene) -> anyhow::Result<(Camera, Thi
     if let Some(deg) = args.yfov {
         camera.yfov_radians = deg.to_radians();
     }
-    let lens = lens_settings(args, settings).thin_lens(&camera)?;
+    let lens = lens_settings(args, settings).thin_lens(&camera).with_context(|| lens_flags(args))?;
     Ok((camera, lens, near.unwrap_or(default_near(lens.focus_distance))))
 }
 

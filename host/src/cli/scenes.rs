@@ -3,6 +3,7 @@
 //! exported to glTF: rasterised by depth peeling and rendered by the accumulation buffer, against
 //! the exact ray-cast layers and reference.
 
+use super::{MAX_SAMPLES, check_builtin_scenes, check_count, check_no_duplicates};
 use anyhow::Context;
 use dof::io::write_png_preview;
 use dof::layers::RgbImage;
@@ -60,14 +61,126 @@ pub struct ScenesArgs {
     export_mitsuba: Option<PathBuf>,
 }
 
-pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
-    for dir in [&args.dump, &args.export, &args.export_mitsuba].into_iter().flatten() {
-        std::fs::create_dir_all(dir)?;
+/// Largest `--width` and `--height`.
+const MAX_EDGE: u32 = 16384;
+
+/// The flags' ranges and names, checked before any work.
+fn check_flags(args: &ScenesArgs) -> anyhow::Result<()> {
+    check_no_duplicates("--only", &args.only)?;
+    check_builtin_scenes("--only", &args.only)?;
+    let start = AutoOptions::default().start_spp;
+    check_count("--max-spp", "the sample cap of the automatic reference", args.max_spp, start, MAX_SAMPLES)?;
+    check_count("--reference-spp", "samples per pixel of the exact reference", args.reference_spp, 1, MAX_SAMPLES)?;
+    for &n in &args.accumulation {
+        check_count("--accumulation", "renders of the accumulation buffer", n, 1, MAX_SAMPLES)?;
     }
-    for &name in builtin_names() {
-        if !args.only.is_empty() && !args.only.iter().any(|o| o == name) {
-            continue;
+    let counts: Vec<String> = args.accumulation.iter().map(|n| n.to_string()).collect();
+    check_no_duplicates("--accumulation", &counts)?;
+    if !args.accumulation.is_empty() && !args.raster {
+        anyhow::bail!("--accumulation renders the exported glTF scene: it needs --raster");
+    }
+    for (value, flag) in [(args.width, "--width"), (args.height, "--height")] {
+        if let Some(v) = value {
+            check_count(flag, "pixels", v, 1, MAX_EDGE)?;
         }
+    }
+    Ok(())
+}
+
+/// A folder a command writes into on request (`--dump`, `--export`, `--export-mitsuba`). It may
+/// hold the user's own files: one is never overwritten or removed. What dof wrote there is listed
+/// in the folder's manifest, [`MANIFEST`] (one file name a line, added before the file is
+/// written), and only those files are replaced or removed by a later run.
+struct OutputDir {
+    dir: PathBuf,
+    flag: &'static str,
+    written: Vec<String>,
+}
+
+/// The manifest of the files dof wrote into an output folder.
+const MANIFEST: &str = ".dof-written";
+
+impl OutputDir {
+    /// The folder (made if missing) and its manifest.
+    fn open(flag: &'static str, dir: &Path) -> anyhow::Result<OutputDir> {
+        if dir.exists() && !dir.is_dir() {
+            anyhow::bail!("{flag} {} is not a folder; name a folder for the files", dir.display());
+        }
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create the folder {} (for {flag})", dir.display()))?;
+        let manifest = dir.join(MANIFEST);
+        let written = match std::fs::read_to_string(&manifest) {
+            Ok(text) => text.lines().filter(|l| !l.is_empty()).map(str::to_string).collect(),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => Vec::new(),
+            Err(e) => return Err(e).with_context(|| format!("cannot read {} (for {flag})", manifest.display())),
+        };
+        Ok(OutputDir { dir: dir.to_path_buf(), flag, written })
+    }
+
+    /// Refuses a file of this name that dof did not write.
+    fn check(&self, name: &str) -> anyhow::Result<()> {
+        let path = self.dir.join(name);
+        if path.symlink_metadata().is_ok() && !self.written.iter().any(|w| w == name) {
+            anyhow::bail!(
+                "{} {}: {} already exists and was not written by dof (it is not listed in {}); \
+                 dof does not overwrite or remove it: move it away or choose another folder",
+                self.flag,
+                self.dir.display(),
+                path.display(),
+                MANIFEST
+            );
+        }
+        Ok(())
+    }
+
+    /// The path to write `name` to, recorded in the manifest first.
+    fn claim(&mut self, name: &str) -> anyhow::Result<PathBuf> {
+        self.check(name)?;
+        if !self.written.iter().any(|w| w == name) {
+            self.written.push(name.to_string());
+            let manifest = self.dir.join(MANIFEST);
+            std::fs::write(&manifest, self.written.join("\n") + "\n")
+                .with_context(|| format!("cannot write {} (for {})", manifest.display(), self.flag))?;
+        }
+        Ok(self.dir.join(name))
+    }
+
+    /// Removes `name` if dof wrote it (a stale file from an earlier run); a user's file is refused
+    /// by [`Self::check`].
+    fn remove_stale(&self, name: &str) -> anyhow::Result<()> {
+        self.check(name)?;
+        let path = self.dir.join(name);
+        if path.symlink_metadata().is_ok() {
+            std::fs::remove_file(&path).with_context(|| format!("cannot remove the stale {} (for {})", path.display(), self.flag))?;
+        }
+        Ok(())
+    }
+}
+
+pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
+    check_flags(args)?;
+    let names: Vec<&str> = builtin_names().iter().copied().filter(|n| args.only.is_empty() || args.only.iter().any(|o| o == n)).collect();
+    let open = |flag, dir: &Option<PathBuf>| dir.as_deref().map(|d| OutputDir::open(flag, d)).transpose();
+    let mut dump = open("--dump", &args.dump)?;
+    let mut export = open("--export", &args.export)?;
+    let mut mitsuba = open("--export-mitsuba", &args.export_mitsuba)?;
+    // Every file the run would write, checked before any work.
+    for name in &names {
+        if let Some(d) = &dump {
+            let mut files = vec![format!("{name}-pinhole.png"), format!("{name}-mask.png")];
+            if args.reference {
+                files.push(format!("{name}-reference.png"));
+            }
+            files.iter().try_for_each(|f| d.check(f))?;
+        }
+        if let Some(d) = &export {
+            d.check(&format!("{name}.glb"))?;
+        }
+        if let Some(d) = &mitsuba {
+            d.check(&format!("{name}.xml"))?;
+            d.check(&format!("{name}.json"))?;
+        }
+    }
+    for name in names {
         let mut scene = builtin(name)?;
         if args.width.is_some() || args.height.is_some() {
             let (w, h) = (args.width.unwrap_or(scene.camera.width), args.height.unwrap_or(scene.camera.height));
@@ -91,16 +204,16 @@ pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
             100.0 * wo.multi_layer_share(),
             start.elapsed()
         );
-        if let Some(dir) = &args.dump {
+        if let Some(dir) = dump.as_mut() {
             let (front, _) = ml.front();
-            write_png_preview(dir.join(format!("{name}-pinhole.png")), &front, 1.0)?;
+            write_png_preview(dir.claim(&format!("{name}-pinhole.png"))?, &front, 1.0)?;
             let mut mask = RgbImage::new(front.width, front.height);
             let frame = ml.frame_layers();
             for (p, m) in ml.mask.iter().enumerate() {
                 let layers = frame.counts[p] as f32;
                 mask.data[p] = if *m { [0.25 * layers; 3] } else { [0.0, 0.0, 0.05] };
             }
-            write_png_preview(dir.join(format!("{name}-mask.png")), &mask, 1.0)?;
+            write_png_preview(dir.claim(&format!("{name}-mask.png"))?, &mask, 1.0)?;
         }
         if args.reference {
             let start = Instant::now();
@@ -116,19 +229,20 @@ pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
                 if r.capped { ", sample cap reached" } else { "" },
                 start.elapsed()
             );
-            if let Some(dir) = &args.dump {
-                write_png_preview(dir.join(format!("{name}-reference.png")), &r.image, 1.0)?;
+            if let Some(dir) = dump.as_mut() {
+                write_png_preview(dir.claim(&format!("{name}-reference.png"))?, &r.image, 1.0)?;
             }
         }
         if args.raster {
             raster(args, &scene, &lens, &ml)?;
         }
-        if let Some(dir) = &args.export {
-            let path = dir.join(format!("{name}.glb"));
-            std::fs::write(&path, export_glb(&scene.scene, &scene.camera, &ExportOptions::default())?)?;
+        if let Some(dir) = export.as_mut() {
+            let bytes = export_glb(&scene.scene, &scene.camera, &ExportOptions::default())?;
+            let path = dir.claim(&format!("{name}.glb"))?;
+            std::fs::write(&path, bytes).with_context(|| format!("cannot write {} (for --export)", path.display()))?;
             println!("  wrote {}", path.display());
         }
-        if let Some(dir) = &args.export_mitsuba {
+        if let Some(dir) = mitsuba.as_mut() {
             export_mitsuba_files(dir, &scene, &lens)?;
         }
     }
@@ -136,29 +250,29 @@ pub fn run(args: &ScenesArgs) -> anyhow::Result<()> {
 }
 
 /// `<name>.xml` (when exact) and the `<name>.json` sidecar; a skipped scene says why.
-fn export_mitsuba_files(dir: &Path, scene: &BuiltinScene, lens: &ThinLens) -> anyhow::Result<()> {
+fn export_mitsuba_files(dir: &mut OutputDir, scene: &BuiltinScene, lens: &ThinLens) -> anyhow::Result<()> {
     let name = scene.name;
     let export = export_mitsuba(&scene.scene, &scene.camera, lens, &MitsubaOptions::default())?;
-    let xml = dir.join(format!("{name}.xml"));
+    let xml_name = format!("{name}.xml");
     match &export {
         MitsubaExport::Exact(s) => {
-            std::fs::write(&xml, &s.xml).with_context(|| format!("cannot write {}", xml.display()))?;
+            let xml = dir.claim(&xml_name)?;
+            std::fs::write(&xml, &s.xml).with_context(|| format!("cannot write {} (for --export-mitsuba)", xml.display()))?;
             println!("  Mitsuba: wrote {}", xml.display());
             for note in &s.notes {
                 println!("    {note}");
             }
         }
         MitsubaExport::Skipped(why) => {
-            // A stale file from an earlier export must not be rendered as if it were this one.
-            if xml.exists() {
-                std::fs::remove_file(&xml).with_context(|| format!("cannot remove the stale {}", xml.display()))?;
-            }
+            // A stale file from an earlier export must not be rendered as if it were this one (a
+            // file dof did not write is refused before any work instead).
+            dir.remove_stale(&xml_name)?;
             println!("  Mitsuba: skipped, not exactly exportable: {why}");
         }
     }
-    let json = dir.join(format!("{name}.json"));
     let text = serde_json::to_string_pretty(&export_metadata(name, &scene.camera, lens, &export))?;
-    std::fs::write(&json, text + "\n").with_context(|| format!("cannot write {}", json.display()))?;
+    let json = dir.claim(&format!("{name}.json"))?;
+    std::fs::write(&json, text + "\n").with_context(|| format!("cannot write {} (for --export-mitsuba)", json.display()))?;
     Ok(())
 }
 

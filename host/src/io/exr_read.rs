@@ -265,6 +265,7 @@ impl ExrFile {
         let image = guarded(path, || {
             file.seek(SeekFrom::Start(0)).map_err(|e| fs_error("read", path, &e))?;
             let meta = MetaData::read_from_buffered(BufReader::new(&mut file), false).map_err(|e| exr_error(path, e))?;
+            check_declared_size(path, &meta)?;
             let mut announced: u128 = 0;
             for header in &meta.headers {
                 announced += header.layer_size.area() as u128 * header.channels.bytes_per_pixel as u128;
@@ -311,11 +312,8 @@ impl ExrFile {
         let mut names = Vec::new();
         let mut index = Vec::new();
         for (p, part) in parts.iter().enumerate() {
-            let part_name = part.attributes.layer_name.as_ref().map(|t| t.to_string()).unwrap_or_else(|| format!("part{p}"));
             for (c, channel) in part.channel_data.list.iter().enumerate() {
-                let name = channel.name.to_string();
-                let full = if !multi_part || name.starts_with(&format!("{part_name}.")) { name } else { format!("{part_name}.{name}") };
-                names.push(full);
+                names.push(full_channel_name(multi_part, p, part.attributes.layer_name.as_ref(), &channel.name));
                 index.push((p, c));
             }
         }
@@ -534,6 +532,60 @@ fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)>
         missing.join(", "),
         list(&file.names)
     )))
+}
+
+/// Checks an EXR file's headers alone against the limits on EXR input ([`MAX_EXR_EDGE`] pixels a
+/// side, [`MAX_EXR_SLOTS`] pixels x depth layers), before anything is decoded: for a caller that
+/// decodes the file itself (a mask plane, say).
+pub fn check_exr_header(path: impl AsRef<Path>) -> Result<()> {
+    let path = path.as_ref();
+    let file = File::open(path).map_err(|e| fs_error("open", path, &e))?;
+    let meta = guarded(path, || MetaData::read_from_buffered(BufReader::new(file), false).map_err(|e| exr_error(path, e)))?;
+    check_declared_size(path, &meta)
+}
+
+/// The name a channel is known by: in a multi-part file the part name (or `part<index>`) is
+/// prefixed where the channel name lacks it.
+fn full_channel_name(multi_part: bool, part: usize, part_name: Option<&Text>, channel: &Text) -> String {
+    let part_name = part_name.map(|t| t.to_string()).unwrap_or_else(|| format!("part{part}"));
+    let name = channel.to_string();
+    if !multi_part || name.starts_with(&format!("{part_name}.")) { name } else { format!("{part_name}.{name}") }
+}
+
+/// Largest width and height of an EXR input, in pixels.
+pub const MAX_EXR_EDGE: usize = 16384;
+/// Most pixels x depth layers an EXR input may declare: the slots of a [`LayeredImage`]
+/// ([`crate::layers::MAX_SLOTS`], 2^28).
+pub const MAX_EXR_SLOTS: u64 = crate::layers::MAX_SLOTS;
+
+/// Refuses, from the headers alone (before any pixel is decoded or allocated), a file whose data
+/// window is wider or taller than [`MAX_EXR_EDGE`], or whose pixels times depth layers (the
+/// complete colour-and-depth layers its channel names announce, at least one) exceed
+/// [`MAX_EXR_SLOTS`].
+fn check_declared_size(path: &Path, meta: &MetaData) -> Result<()> {
+    let multi_part = meta.headers.len() > 1;
+    let names: Vec<String> = meta
+        .headers
+        .iter()
+        .enumerate()
+        .flat_map(|(p, h)| {
+            h.channels.list.iter().map(move |c| full_channel_name(multi_part, p, h.own_attributes.layer_name.as_ref(), &c.name))
+        })
+        .collect();
+    let layers = group_channels(&names).iter().filter(|g| g.is_complete()).count().max(1) as u64;
+    for (i, header) in meta.headers.iter().enumerate() {
+        let (w, h) = (header.layer_size.x(), header.layer_size.y());
+        let slots = (w as u64).saturating_mul(h as u64).saturating_mul(layers);
+        if w > MAX_EXR_EDGE || h > MAX_EXR_EDGE || slots > MAX_EXR_SLOTS {
+            let part = header.own_attributes.layer_name.as_ref().map_or(format!("part {i}"), |n| format!("part `{n}`"));
+            return Err(Error::InvalidArgument(format!(
+                "{}: the header of {part} declares {w}x{h} pixels with {layers} depth layer(s), beyond the limit on EXR input \
+                 of {MAX_EXR_EDGE} pixels a side and {MAX_EXR_SLOTS} pixels x layers; refused before decoding",
+                path.display()
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// A header announcing more pixel data than this many times the file size plus

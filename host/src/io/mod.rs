@@ -119,7 +119,7 @@ use std::path::Path;
 #[cfg(feature = "exr")]
 pub use channels::natural_cmp;
 #[cfg(feature = "exr")]
-pub use exr_read::{ExrLayout, InputReport, read_layered_exr, read_rgb_exr};
+pub use exr_read::{ExrLayout, InputReport, MAX_EXR_EDGE, MAX_EXR_SLOTS, check_exr_header, read_layered_exr, read_rgb_exr};
 #[cfg(feature = "exr")]
 pub use exr_write::{ExrCompression, ExrPrecision, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr};
 #[cfg(feature = "eval")]

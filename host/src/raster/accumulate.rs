@@ -65,8 +65,12 @@ pub fn accumulate(
     options: &AccumulateOptions,
 ) -> Result<Accumulated> {
     let frame = check_view(camera, lens, near)?;
-    if options.samples == 0 {
-        return Err(Error::InvalidArgument("the accumulation buffer needs at least one render (--samples)".into()));
+    if options.samples == 0 || options.samples > crate::scene::MAX_SPP {
+        return Err(Error::InvalidArgument(format!(
+            "the accumulation buffer takes 1 to {} renders, got {}",
+            crate::scene::MAX_SPP,
+            options.samples
+        )));
     }
     frame.check_size("accumulation buffer", 3)?;
     let pixels = frame.width as u64 * frame.height as u64;

@@ -73,6 +73,30 @@ pub fn load_gltf(path: &Path) -> Result<MeshScene> {
     })
 }
 
+/// The external files a `.gltf` or `.glb` file refers to (its buffers and images given by a
+/// relative path or `file:` URI, not data URIs), as paths beside it, without reading them: what
+/// a command must not overwrite. Best effort: a file that cannot be read or parsed lists none
+/// (loading it reports why); a reference that would be refused when loading is listed as it
+/// resolves lexically.
+pub fn gltf_external_files(path: &Path) -> Vec<PathBuf> {
+    // Only a regular file is read (a FIFO would block).
+    if !std::fs::metadata(path).is_ok_and(|m| m.file_type().is_file()) {
+        return Vec::new();
+    }
+    let Ok(bytes) = std::fs::read(path) else { return Vec::new() };
+    let Ok(gltf) = gltf::Gltf::from_slice_without_validation(&bytes) else { return Vec::new() };
+    let json = gltf.document.into_json();
+    let base = path.parent().unwrap_or(Path::new(""));
+    let uris = json.buffers.iter().filter_map(|b| b.uri.as_deref()).chain(json.images.iter().filter_map(|i| i.uri.as_deref()));
+    uris.filter(|uri| !uri.starts_with("data:"))
+        .filter_map(|uri| {
+            let relative = uri.strip_prefix("file://").or_else(|| uri.strip_prefix("file:")).unwrap_or(uri);
+            let relative = percent_decode(relative, "a reference").ok()?;
+            Some(base.join(relative))
+        })
+        .collect()
+}
+
 /// Loads glTF from memory (`.glb`, or `.gltf` JSON whose buffers and images are embedded as data
 /// URIs or in the GLB's binary chunk); a reference to an external file is an error.
 pub fn load_gltf_slice(bytes: &[u8]) -> Result<MeshScene> {

@@ -46,11 +46,11 @@ pub use glam::Vec3;
 #[cfg(feature = "gltf")]
 pub use gltf_export::{ExportOptions, export_builtin_glb, export_glb};
 #[cfg(feature = "gltf")]
-pub use gltf_load::{load_gltf, load_gltf_slice};
+pub use gltf_load::{gltf_external_files, load_gltf, load_gltf_slice};
 pub use guard_band::{GuardBand, MAX_GUARD_BAND};
 pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
 pub use mesh::{LoadReport, MeshCamera, MeshScene};
 #[cfg(feature = "eval")]
 pub use mitsuba_export::{MitsubaExport, MitsubaOptions, MitsubaScene, export_metadata, export_mitsuba};
 pub use raycast::{LayerOptions, MultiLayerImage, apply_disocclusion, raycast_layers};
-pub use reference::{AutoOptions, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};
+pub use reference::{AutoOptions, MAX_SPP, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};

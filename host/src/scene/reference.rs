@@ -177,9 +177,9 @@ pub fn reference_auto(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
             o.target_psnr_db, o.tolerance_db
         )));
     }
-    if o.start_spp < 2 || o.max_spp < o.start_spp {
+    if o.start_spp < 2 || o.max_spp < o.start_spp || o.max_spp > MAX_SPP {
         return Err(Error::InvalidArgument(format!(
-            "auto reference: need 2 <= start_spp <= max_spp, got {} and {}",
+            "auto reference: need 2 <= start_spp <= max_spp <= {MAX_SPP}, got {} and {}",
             o.start_spp, o.max_spp
         )));
     }
@@ -225,6 +225,10 @@ pub fn reference_auto(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
     })
 }
 
+/// Most samples per pixel a reference (and renders an accumulation buffer) takes: refused beyond,
+/// before anything proportional to the count is allocated.
+pub const MAX_SPP: u32 = 1 << 16;
+
 fn check_lens(lens: &ThinLens) -> Result<()> {
     if lens.is_valid() {
         Ok(())
@@ -234,8 +238,8 @@ fn check_lens(lens: &ThinLens) -> Result<()> {
 }
 
 fn render_fixed(scene: &Scene, frame: &CameraFrame, radius: f32, focus: f32, options: &ReferenceOptions) -> Result<Reference> {
-    if options.spp == 0 {
-        return Err(Error::InvalidArgument("a reference needs at least one sample per pixel".into()));
+    if options.spp == 0 || options.spp > MAX_SPP {
+        return Err(Error::InvalidArgument(format!("a reference takes 1 to {MAX_SPP} samples per pixel, got {}", options.spp)));
     }
     check_region(&options.region, frame)?;
     frame.check_size("reference image", 1)?;

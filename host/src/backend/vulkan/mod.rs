@@ -319,7 +319,7 @@ impl VulkanBackend {
         }
         let limit = self.info.limits.max_buffer_bytes;
         if bytes > limit {
-            return Err(Error::TooLarge { what: format!("imported buffer `{label}`"), size: bytes, limit });
+            return Err(Error::TooLarge { what: format!("imported buffer `{label}` on this device"), size: bytes, limit });
         }
         let id = self.next_id;
         self.next_id = id.checked_add(1).ok_or_else(|| Error::InvalidArgument("too many buffers created".into()))?;
@@ -437,7 +437,7 @@ impl VulkanBackend {
         };
         if size[0] > max[0] || size[1] > max[1] {
             return Err(Error::TooLarge {
-                what: format!("draw target {}x{} (framebuffer side)", size[0], size[1]),
+                what: format!("draw target {}x{} (framebuffer side on this device)", size[0], size[1]),
                 size: size[0].max(size[1]) as u64,
                 limit: max[0].min(max[1]) as u64,
             });
@@ -705,7 +705,7 @@ impl Backend for VulkanBackend {
         self.refuse_external("create_buffer")?;
         let limit = self.info.limits.max_buffer_bytes;
         let bytes = words.max(1).checked_mul(4).filter(|&b| b <= limit).ok_or_else(|| Error::TooLarge {
-            what: format!("buffer `{label}`"),
+            what: format!("buffer `{label}` on this device"),
             size: words.saturating_mul(4),
             limit,
         })?;

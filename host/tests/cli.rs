@@ -790,20 +790,7 @@ fn flag_table_base(sub: &str, flag: &str, dir: &std::path::Path) -> Vec<(String,
 
 /// Flag values that are still accepted or refused without naming the flag, each with the reason
 /// it is not fixed here.
-const FLAG_TABLE_PENDING: &[(&str, &str, &str, &str)] = &[
-    (
-        "bench frame",
-        "--width",
-        "0",
-        "the library's `the image size must be positive`; host/src/cli/bench_frame.rs is being restructured elsewhere",
-    ),
-    (
-        "bench frame",
-        "--height",
-        "0",
-        "the library's `the image size must be positive`; host/src/cli/bench_frame.rs is being restructured elsewhere",
-    ),
-];
+const FLAG_TABLE_PENDING: &[(&str, &str, &str, &str)] = &[];
 
 /// Every numeric option of every subcommand (from the command's own definition, so a new flag
 /// cannot be missed; `view` opens a window and is left out) with 0, -1, huge values and NaN: each

@@ -45,12 +45,20 @@ pub struct FrameArgs {
     json: bool,
 }
 
+/// The largest frame edge `bench frame` takes (that of 4K and beyond; the contexts check the
+/// device's own limits).
+const MAX_EDGE: u32 = 16384;
 /// Most frames `bench frame` runs.
 const MAX_FRAMES: u32 = 100_000;
 
 pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     if args.frames == 0 || args.frames > MAX_FRAMES {
         anyhow::bail!("--frames must be between 1 and {MAX_FRAMES}, got {}", args.frames);
+    }
+    for (flag, v) in [("--width", args.width), ("--height", args.height)] {
+        if !(1..=MAX_EDGE).contains(&v) {
+            anyhow::bail!("{flag} must be between 1 and {MAX_EDGE} px, got {v}");
+        }
     }
     let builtin = scene::builtin(&args.scene)?;
     let mut camera = builtin.camera.clone();

@@ -281,7 +281,7 @@ fn check_ranges(args: &RenderArgs) -> anyhow::Result<()> {
     if !(args.lum_threshold >= 0.0 && args.lum_threshold.is_finite()) {
         bail!("--lum-threshold must be a finite number, not negative, got {}", args.lum_threshold);
     }
-    let max_rings = dof::methods::ring_gather::MAX_RINGS;
+    let max_rings = dof::methods::ring_gather::MAX_SAMPLE_RINGS;
     if !(1..=max_rings).contains(&args.rings) {
         bail!("--rings: the ring gather takes 1 to {max_rings} rings, got {}", args.rings);
     }

@@ -300,7 +300,7 @@ fn the_viewer_refuses_bad_input_clearly() {
         (vec!["--exposure", "0"], "--exposure must be a positive number"),
         (vec!["--exposure", "inf"], "--exposure must be a positive number"),
         (vec!["--script", "exposure=-1"], "the exposure must be positive"),
-        (vec!["--scene", wide_exr.to_str().unwrap(), "--focus", "3", "--f-number", "2"], "the image is 100000x1 pixels"),
+        (vec!["--scene", wide_exr.to_str().unwrap(), "--focus", "3", "--f-number", "2"], "declares 100000x1 pixels"),
     ] {
         let out = dof().arg("view").args(&args).env_remove("DISPLAY").output().unwrap();
         let err = String::from_utf8_lossy(&out.stderr);

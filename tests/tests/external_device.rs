@@ -13,6 +13,7 @@
 use dof::backend::vulkan::ash::{self, vk};
 use dof::backend::vulkan::gpu_allocator;
 use dof::backend::{Backend, BackendCounters, BufferId, CpuBackend, ImageFormat, ImageRef, RawDevice, RawOptions, VulkanBackend};
+use dof::frame::{Frame, GatherContext, GatherContextDesc};
 use dof::ops::scan::{ScanScratch, exclusive_scan};
 use dof::ops::sort::{SegmentedSort, SortInput, sort_on};
 use dof::workload::{lists_with, random_key};
@@ -634,6 +635,19 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
     // Outside a recording, imported buffers read and write like any other.
     vk.write_buffer(imported, 0, &[5, 6, 7, 8]).expect("write into an imported buffer");
     assert_eq!(vk.read_buffer(imported, 1, 3).unwrap(), vec![6, 7, 8]);
+
+    // A frame recorded outside begin_external would go into the backend's own command buffer and
+    // run at its next submission, after the renderer may have changed what it reads: refused, with
+    // nothing recorded. Making the context (its one-time zeroing) may submit.
+    let mut ctx = GatherContext::new(&mut vk, &GatherContextDesc::new(4, 4, 1)).expect("a context on the renderer's device");
+    let bufs = [16u64, 4, 12].map(|w| vk.create_buffer(w, "frame").expect("create_buffer"));
+    let before = vk.counters();
+    let outside = ctx.record(&mut vk, &Frame::layers(4, 4, 1, dof::stress::test_lens(0.01), bufs[0], bufs[1], bufs[2]));
+    assert!(matches!(&outside, Err(dof::Error::InvalidArgument(m)) if m.contains("begin_external")), "{outside:?}");
+    assert_eq!(vk.counters(), before, "the refused frame recorded nothing");
+    assert!(vk.submit().unwrap().is_empty(), "nothing was left recorded");
+    ctx.destroy(&mut vk);
+    bufs.into_iter().for_each(|id| vk.destroy_buffer(id));
 
     assert!(vk.end_external().is_err(), "end without begin");
     r.begin();

@@ -444,7 +444,7 @@ fn run_frame(
     let mut rgba = vec![0f32; 4 * pixels];
     // SAFETY: the mapping covers the buffer; the copy completed and was made visible to the host.
     unsafe { std::ptr::copy_nonoverlapping(out.readback.mapped as *const f32, rgba.as_mut_ptr(), 4 * pixels) };
-    let data = rgba.chunks_exact(4).map(|p| [p[0], p[1], p[2]]).collect();
+    let data = rgba.as_chunks::<4>().0.iter().map(|p| [p[0], p[1], p[2]]).collect();
     Ok(FrameResult { image: RgbImage { width: extent[0], height: extent[1], data }, counters, times, record_ms })
 }
 

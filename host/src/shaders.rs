@@ -12,7 +12,7 @@ pub fn module_words(entry: &str) -> Option<Vec<u32>> {
     MODULES
         .iter()
         .find(|(name, _)| *name == entry)
-        .map(|(_, bytes)| bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect())
+        .map(|(_, bytes)| bytes.as_chunks::<4>().0.iter().map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect())
 }
 
 /// Total size of the embedded modules in bytes.

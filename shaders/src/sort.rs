@@ -598,12 +598,12 @@ mod tests {
     #[test]
     fn the_global_path_block_fits_the_vulkan_minimum() {
         assert_eq!(GLOBAL_LOCAL.shared_bytes, LOCAL_BLOCK * BYTES_PER_ELEMENT);
-        assert!(GLOBAL_LOCAL.shared_bytes <= 16 * 1024);
+        const { assert!(GLOBAL_LOCAL.shared_bytes <= 16 * 1024) };
     }
 
     #[test]
     fn plan_layout_does_not_overlap() {
-        assert!(plan::GLOBAL_MAX_LEN < plan::CLASS_ARGS);
+        const { assert!(plan::GLOBAL_MAX_LEN < plan::CLASS_ARGS) };
         assert_eq!(plan::WORDS, plan::ELEMENT_ARGS + 3);
     }
 }

@@ -235,7 +235,7 @@ fn bad_aperture_images_are_named() {
     for (path, says) in
         [(dir.join("dof-no-such-aperture.png"), "cannot read"), (not_png.clone(), "not a readable PNG"), (black.clone(), "black")]
     {
-        let err = parse_aperture(path.to_str().unwrap()).err().expect("an error").to_string();
+        let err = parse_aperture(path.to_str().unwrap()).expect_err("an error").to_string();
         assert!(err.contains("aperture image") && err.contains(says), "{err}");
     }
     std::fs::remove_file(not_png).unwrap();
@@ -245,7 +245,7 @@ fn bad_aperture_images_are_named() {
 #[test]
 fn bad_apertures_are_named() {
     for text in ["hexagon", "blades:2", "blades:6:x", "blades:6:0:2", "blades:65", "blades:6:0:0:1", "star:2", "star:5:0:1.5"] {
-        let err = parse_aperture(text).err().expect("an error").to_string();
+        let err = parse_aperture(text).expect_err("an error").to_string();
         assert!(err.contains("blades:N") && err.contains("star:N"), "{text}: {err}");
     }
     assert_eq!(parse_aperture("circle").unwrap(), ApertureShape::circle());

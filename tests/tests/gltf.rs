@@ -29,7 +29,7 @@ fn expected_triangles(shape: &Shape, frame: &CameraFrame) -> usize {
     match *shape {
         Shape::Sphere { center, radius } => {
             let n = sphere_segments(center, radius, frame, &ExportOptions::default()) as usize;
-            assert!((32..=96).contains(&n) && n % 2 == 0, "{n} segments");
+            assert!((32..=96).contains(&n) && n.is_multiple_of(2), "{n} segments");
             n * (n - 2)
         }
         Shape::Cuboid { .. } => 12,
@@ -720,7 +720,7 @@ fn png_header_only(width: u32, height: u32) -> Vec<u8> {
 fn a_texture_beyond_the_budget_is_refused_before_decoding() {
     let (mut doc, bin) = split_glb(&export_builtin_glb("railing", W, H).unwrap());
     doc["images"][0] = json!({ "uri": format!("data:image/png;base64,{}", base64(&png_header_only(8192, 8192))) });
-    let err = load_gltf_slice(&join_glb(&doc, &bin)).err().expect("an 8192x8192 texture is beyond 2^24 texels");
+    let err = load_gltf_slice(&join_glb(&doc, &bin)).expect_err("an 8192x8192 texture is beyond 2^24 texels");
     let text = err.to_string();
     assert!(matches!(err, dof::Error::TooLarge { .. }), "{text}");
     assert!(text.contains("8192x8192") && text.contains("scale the textures down"), "{text}");

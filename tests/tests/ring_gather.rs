@@ -186,7 +186,7 @@ fn a_context_records_frames_without_allocating() {
         assert_eq!((spent.allocations, spent.readbacks, spent.uploads, spent.submissions), (0, 0, 0, 1), "{fw}x{fh}");
         let words = cpu.read_buffer(output, 0, 3 * (fw * fh) as u64).unwrap();
         let framed: Vec<[f32; 3]> =
-            words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
+            words.as_chunks::<3>().0.iter().map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
         let one_shot = ring_gather(&mut CpuBackend::new(), &img, &depth, &lens(0.02), &options(rings)).unwrap();
         assert_eq!(framed, one_shot.image.data, "{fw}x{fh}, {rings} rings");
     }

@@ -139,10 +139,10 @@ impl Backend for CpuBackend {
     }
 
     fn destroy_buffer(&mut self, buffer: BufferId) {
-        if let Some(slot) = self.buffers.get_mut(buffer.0 as usize) {
-            if let Some(b) = slot.take() {
-                self.counters.remove_buffer(b.len() as u64 * 4);
-            }
+        if let Some(slot) = self.buffers.get_mut(buffer.0 as usize)
+            && let Some(b) = slot.take()
+        {
+            self.counters.remove_buffer(b.len() as u64 * 4);
         }
     }
 

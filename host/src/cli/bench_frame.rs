@@ -61,7 +61,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         }
     }
     let builtin = scene::builtin(&args.scene)?;
-    let mut camera = builtin.camera.clone();
+    let mut camera = builtin.camera;
     camera.width = args.width;
     camera.height = args.height;
     let lens = builtin.lens.thin_lens(&camera)?;

@@ -552,7 +552,7 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     if let Some(rgb) = args.background {
         builtin.scene = builtin.scene.with_background(rgb.to_array())?;
     }
-    let mut camera: Camera = builtin.camera.clone();
+    let mut camera: Camera = builtin.camera;
     camera.width = args.width.unwrap_or(camera.width);
     camera.height = args.height.unwrap_or(camera.height);
     camera.eye = args.eye.unwrap_or(camera.eye);

@@ -354,16 +354,17 @@ pub fn scaling(options: &ScalingOptions, backends: &mut [Box<dyn Backend>]) -> R
                     SweepAxis::Resolution => point.pixels as f64,
                     SweepAxis::MaxCoc => max_coc_px,
                 };
-                if let Some(predicted) = history.get(&key).and_then(|h| predict(h, x)) {
-                    if point.skipped.is_none() && predicted > PREDICTED_BUDGETS * options.budget_s * 1e3 {
-                        let why = format!(
-                            "at {at} a run would take about {:.0} s (extrapolated from the smaller points), over {PREDICTED_BUDGETS} times the budget of {} s",
-                            predicted / 1e3,
-                            options.budget_s
-                        );
-                        point.skipped = Some(why.clone());
-                        stopped.insert(key, why);
-                    }
+                if let Some(predicted) = history.get(&key).and_then(|h| predict(h, x))
+                    && point.skipped.is_none()
+                    && predicted > PREDICTED_BUDGETS * options.budget_s * 1e3
+                {
+                    let why = format!(
+                        "at {at} a run would take about {:.0} s (extrapolated from the smaller points), over {PREDICTED_BUDGETS} times the budget of {} s",
+                        predicted / 1e3,
+                        options.budget_s
+                    );
+                    point.skipped = Some(why.clone());
+                    stopped.insert(key, why);
                 }
                 if point.skipped.is_none() {
                     match measure(method.as_ref(), b, &input, setting, options.runs, options.budget_s) {

@@ -98,12 +98,12 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
         }
         FrameInput::Images { color, depth, encoding } => {
             images.extend([("colour", color, COLOR_FORMATS.as_slice()), ("depth", depth, &[ImageFormat::R32Float])]);
-            if let DepthEncoding::Standard { near, far } | DepthEncoding::Reversed { near, far } = encoding {
-                if !(near.is_finite() && near > 0.0 && far > near) {
-                    return Err(Error::InvalidArgument(format!(
-                        "a depth buffer's planes must satisfy 0 < near < far (far may be infinite), got {near} and {far}"
-                    )));
-                }
+            if let DepthEncoding::Standard { near, far } | DepthEncoding::Reversed { near, far } = encoding
+                && !(near.is_finite() && near > 0.0 && far > near)
+            {
+                return Err(Error::InvalidArgument(format!(
+                    "a depth buffer's planes must satisfy 0 < near < far (far may be infinite), got {near} and {far}"
+                )));
             }
         }
     }

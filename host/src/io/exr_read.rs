@@ -622,6 +622,8 @@ fn empty_data_window(r: &mut impl Read) -> Option<(usize, [i32; 4])> {
         r.read_exact(&mut b).ok()?;
         Some(i32::from_le_bytes(b))
     }
+    // Callers hand a `BufReader`: byte by byte is cheap here.
+    #[allow(clippy::unbuffered_bytes)]
     fn read_name(r: &mut impl Read) -> Option<Vec<u8>> {
         let mut name = Vec::new();
         for byte in r.bytes() {

@@ -112,10 +112,7 @@ impl SanitizeCounts {
     /// One alpha sample under the policy: NaN → 0, below 0 → 0, above 1 → 1 (infinities included).
     #[inline]
     pub fn alpha(&mut self, a: f32) -> f32 {
-        if a.is_nan() {
-            self.alpha_invalid += 1;
-            0.0
-        } else if a < 0.0 {
+        if a.is_nan() || a < 0.0 {
             self.alpha_invalid += 1;
             0.0
         } else if a > 1.0 {

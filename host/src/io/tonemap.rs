@@ -102,7 +102,7 @@ mod tests {
             b.dispatch(&DISPLAY, [1, 1, 1], &[rgb, rgba], &push_words(&params), "display").unwrap();
             b.submit().unwrap();
             let got = b.read_buffer(rgba, 0, 4 * n as u64).unwrap();
-            for (p, out) in pixels.iter().zip(got.chunks_exact(4)) {
+            for (p, out) in pixels.iter().zip(got.as_chunks::<4>().0) {
                 let want = if mode == MODE_LINEAR { p.map(srgb_oetf) } else { tonemap(*p, exposure) };
                 let got = [out[0], out[1], out[2]].map(f32::from_bits);
                 assert_eq!(got.map(f32::to_bits), want.map(f32::to_bits), "{p:?}, mode {mode}, exposure {exposure}");

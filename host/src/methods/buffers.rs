@@ -18,7 +18,7 @@ pub fn slot_words(image: &LayeredImage) -> Vec<u32> {
 /// A `width` x `height` RGB image from 3 words a pixel of `buffer`.
 pub fn read_rgb(backend: &mut dyn Backend, buffer: BufferId, width: u32, height: u32) -> Result<RgbImage> {
     let words = backend.read_buffer(buffer, 0, 3 * width as u64 * height as u64)?;
-    let data = words.chunks_exact(3).map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
+    let data = words.as_chunks::<3>().0.iter().map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])]).collect();
     Ok(RgbImage { width, height, data })
 }
 

@@ -176,7 +176,7 @@ pub fn peel_layers(
             passes += 1;
             let words = backend.read_buffer(layer, 0, LAYER_WORDS as u64 * pixels)?;
             let mut found = false;
-            for (p, w) in words.chunks_exact(LAYER_WORDS as usize).enumerate() {
+            for (p, w) in words.as_chunks::<{ LAYER_WORDS as usize }>().0.iter().enumerate() {
                 let (alpha, depth) = (f32::from_bits(w[3]), f32::from_bits(w[4]));
                 // A surface, or the background where this pass saw the pixel's ray escape (coverage
                 // 1 at infinite depth; coverage 0 there means the pixel ended in an earlier pass).

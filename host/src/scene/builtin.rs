@@ -198,7 +198,7 @@ fn highlights() -> Result<BuiltinScene> {
         diffuse(cuboid([0.9, 0.0, -9.0], [1.9, 1.5, -8.0]), [0.35, 0.4, 0.5]),
     ];
     let palette = [[1.0, 0.85, 0.6], [1.0, 0.55, 0.3], [0.6, 0.8, 1.0], [1.0, 1.0, 1.0], [1.0, 0.4, 0.5], [0.5, 1.0, 0.6]];
-    let mut rng = SplitMix(0x5eed_0f_b0ce);
+    let mut rng = SplitMix(0x005e_ed0f_b0ce);
     let mut placed = 0;
     while placed < 48 {
         // Depth log-uniform in [1.5, 25], position uniform over the view.

@@ -209,7 +209,7 @@ impl Bin {
     fn view(&mut self, data: &[u8], target: Option<u32>) -> usize {
         let offset = self.bytes.len();
         self.bytes.extend_from_slice(data);
-        while self.bytes.len() % 4 != 0 {
+        while !self.bytes.len().is_multiple_of(4) {
             self.bytes.push(0);
         }
         let mut v = json!({ "buffer": 0, "byteOffset": offset, "byteLength": data.len() });
@@ -362,10 +362,10 @@ pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Re
 /// The GLB container: a 12-byte header, the JSON chunk padded with spaces and the binary chunk
 /// padded with zeros, each to 4 bytes.
 pub fn glb(mut json: Vec<u8>, mut bin: Vec<u8>) -> Vec<u8> {
-    while json.len() % 4 != 0 {
+    while !json.len().is_multiple_of(4) {
         json.push(b' ');
     }
-    while bin.len() % 4 != 0 {
+    while !bin.len().is_multiple_of(4) {
         bin.push(0);
     }
     let total = 12 + 8 + json.len() + 8 + bin.len();

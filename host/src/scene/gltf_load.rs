@@ -57,13 +57,13 @@ fn scene_err(m: impl Into<String>) -> Error {
 /// Loads a `.gltf` or `.glb` file; external buffers and images are read relative to its folder.
 pub fn load_gltf(path: &Path) -> Result<MeshScene> {
     // Only a regular file: a FIFO would block and a device (`/dev/zero`) never ends.
-    if let Ok(meta) = std::fs::metadata(path) {
-        if !meta.file_type().is_file() {
-            return Err(scene_err(format!(
-                "cannot read the glTF file `{}`: it is not a regular file (a directory, FIFO, device or socket)",
-                path.display()
-            )));
-        }
+    if let Ok(meta) = std::fs::metadata(path)
+        && !meta.file_type().is_file()
+    {
+        return Err(scene_err(format!(
+            "cannot read the glTF file `{}`: it is not a regular file (a directory, FIFO, device or socket)",
+            path.display()
+        )));
     }
     let bytes = std::fs::read(path).map_err(|e| scene_err(format!("cannot read the glTF file `{}`: {e}", path.display())))?;
     let base = path.parent().map(Path::to_path_buf).unwrap_or_default();
@@ -199,14 +199,14 @@ fn check_unvalidated(json: &gltf::json::Root) -> std::result::Result<(), String>
     use gltf::json::validation::Checked;
     for (m, mesh) in json.meshes.iter().enumerate() {
         for (p, primitive) in mesh.primitives.iter().enumerate() {
-            if let Some(index) = primitive.attributes.get(&Checked::Valid(Semantic::Positions)) {
-                if index.value() >= json.accessors.len() {
-                    return Err(format!(
-                        "meshes[{m}].primitives[{p}].attributes[\"POSITION\"]: accessor {} does not exist; the file has {}",
-                        index.value(),
-                        json.accessors.len()
-                    ));
-                }
+            if let Some(index) = primitive.attributes.get(&Checked::Valid(Semantic::Positions))
+                && index.value() >= json.accessors.len()
+            {
+                return Err(format!(
+                    "meshes[{m}].primitives[{p}].attributes[\"POSITION\"]: accessor {} does not exist; the file has {}",
+                    index.value(),
+                    json.accessors.len()
+                ));
             }
         }
     }
@@ -583,10 +583,10 @@ impl Loader<'_> {
             let mut tris = Vec::new();
             match mode {
                 Mode::Triangles => {
-                    if indices.len() % 3 != 0 {
+                    if !indices.len().is_multiple_of(3) {
                         return Err(scene_err(format!("{what}: {} indices is not a multiple of 3 for a triangle list", indices.len())));
                     }
-                    tris.extend(indices.chunks_exact(3).map(|c| [c[0], c[1], c[2]]));
+                    tris.extend(indices.as_chunks::<3>().0.iter().map(|c| [c[0], c[1], c[2]]));
                 }
                 // glTF's strip order: every odd triangle swaps its last two vertices to keep the winding.
                 Mode::TriangleStrip => {

@@ -109,10 +109,10 @@ impl Staging {
 
     /// A staging buffer of at least `bytes` (at most [`STAGING_CHUNK_BYTES`] is ever asked for).
     pub fn get(&mut self, device: &ash::Device, allocator: &mut Allocator, bytes: u64) -> Result<&mut GpuBuffer> {
-        if self.buffer.as_ref().is_some_and(|b| b.bytes < bytes) {
-            if let Some(old) = self.buffer.take() {
-                old.destroy(device, allocator);
-            }
+        if self.buffer.as_ref().is_some_and(|b| b.bytes < bytes)
+            && let Some(old) = self.buffer.take()
+        {
+            old.destroy(device, allocator);
         }
         if self.buffer.is_none() {
             // Powers of two from 64 KiB, so a run of growing transfers reallocates only a few times.

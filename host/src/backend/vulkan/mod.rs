@@ -314,7 +314,7 @@ impl VulkanBackend {
         if buffer == vk::Buffer::null() {
             return Err(Error::InvalidArgument(format!("import_buffer `{label}`: the buffer is null")));
         }
-        if bytes == 0 || bytes % 4 != 0 {
+        if bytes == 0 || !bytes.is_multiple_of(4) {
             return Err(Error::InvalidArgument(format!("import_buffer `{label}`: {bytes} bytes is not a positive multiple of 4")));
         }
         let limit = self.info.limits.max_buffer_bytes;
@@ -562,7 +562,7 @@ impl VulkanBackend {
             return Err(Error::InvalidArgument(format!("{what} `{label}`: an empty ({width}x{height}) or null image")));
         }
         let per_pixel = image.format.words_per_pixel();
-        if offset_words % per_pixel != 0 {
+        if !offset_words.is_multiple_of(per_pixel) {
             return Err(Error::InvalidArgument(format!(
                 "{what} `{label}`: the buffer offset {offset_words} is not a multiple of the {per_pixel} words of a {:?} pixel",
                 image.format

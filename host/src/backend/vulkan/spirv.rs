@@ -68,7 +68,7 @@ impl ModuleInfo {
 fn modules() -> impl Iterator<Item = (&'static str, Vec<u32>)> {
     crate::shaders::MODULES
         .iter()
-        .map(|(name, bytes)| (*name, bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect()))
+        .map(|(name, bytes)| (*name, bytes.as_chunks::<4>().0.iter().map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect()))
 }
 
 /// The capabilities of all kernel modules together (what the device must support).

@@ -225,10 +225,10 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
 
 impl ApplicationHandler for App<'_> {
     fn resumed(&mut self, el: &ActiveEventLoop) {
-        if self.running.is_none() {
-            if let Err(e) = self.open(el) {
-                self.fail(el, e);
-            }
+        if self.running.is_none()
+            && let Err(e) = self.open(el)
+        {
+            self.fail(el, e);
         }
     }
 
@@ -380,10 +380,10 @@ impl App<'_> {
                 self.timed.3 += total;
             }
         }
-        if pending.report {
-            if let Some(c) = &r.contexts {
-                self.stats.report = c.report(backend, self.panel.settings.method)?;
-            }
+        if pending.report
+            && let Some(c) = &r.contexts
+        {
+            self.stats.report = c.report(backend, self.panel.settings.method)?;
         }
         if let Some(renderer) = r.renderer.as_mut() {
             renderer.free_textures(&pending.free).map_err(|e| anyhow!("the UI renderer: {e}"))?;
@@ -396,16 +396,19 @@ impl App<'_> {
             // The frame completed and nothing writes the buffer until the next one is recorded.
             let [w, h] = read.size;
             let image = super::readback::window_of_rgb(backend, display.rgb, read.frame_width, read.margin, [w, h])?;
-            if let Some((camera, lens, reference)) = &r.reference {
-                if *camera == self.camera && *lens == self.lens && reference.width == w && reference.height == h {
-                    let (psnr, picture) = super::readback::error_view(&image, reference)?;
-                    let text = format!("PSNR {psnr:.2} dB against the reference ({REFERENCE_SAMPLES} samples a pixel); error x8 below");
-                    if self.stats.error.as_ref() != Some(&text) {
-                        println!("error vs reference: {text}");
-                    }
-                    self.stats.error = Some(text);
-                    r.error_texture = Some(r.egui_ctx.load_texture("error", picture, egui::TextureOptions::NEAREST));
+            if let Some((camera, lens, reference)) = &r.reference
+                && *camera == self.camera
+                && *lens == self.lens
+                && reference.width == w
+                && reference.height == h
+            {
+                let (psnr, picture) = super::readback::error_view(&image, reference)?;
+                let text = format!("PSNR {psnr:.2} dB against the reference ({REFERENCE_SAMPLES} samples a pixel); error x8 below");
+                if self.stats.error.as_ref() != Some(&text) {
+                    println!("error vs reference: {text}");
                 }
+                self.stats.error = Some(text);
+                r.error_texture = Some(r.egui_ctx.load_texture("error", picture, egui::TextureOptions::NEAREST));
             }
         }
         Ok(())

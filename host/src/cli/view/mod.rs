@@ -151,14 +151,14 @@ pub fn run(args: &ViewArgs) -> Result<()> {
         _ => None,
     };
     let source = scene::SceneSource::load(&args.scene, [args.width, args.height], args.focus, aperture)?;
-    if let Some([w, h]) = source.fixed_size() {
-        if !(16..=MAX_EDGE).contains(&w) || !(16..=MAX_EDGE).contains(&h) {
-            bail!(
-                "--scene {}: the image is {w}x{h} pixels; the viewer shows an EXR at its own size, in a window of 16 to {MAX_EDGE} \
+    if let Some([w, h]) = source.fixed_size()
+        && (!(16..=MAX_EDGE).contains(&w) || !(16..=MAX_EDGE).contains(&h))
+    {
+        bail!(
+            "--scene {}: the image is {w}x{h} pixels; the viewer shows an EXR at its own size, in a window of 16 to {MAX_EDGE} \
                  pixels an edge (crop or scale the image, or blur it with dof render)",
-                args.scene
-            );
-        }
+            args.scene
+        );
     }
     frame::run_app(args, source, steps)
 }

@@ -9,7 +9,9 @@ use std::path::Path;
 /// Writes 8-bit sRGB swapchain pixels (BGRA when `bgra`, else RGBA) as an RGB PNG, unchanged.
 pub fn write_screenshot(path: &Path, width: u32, height: u32, bytes: &[u8], bgra: bool) -> Result<()> {
     let pixels: Vec<[f32; 3]> = bytes
-        .chunks_exact(4)
+        .as_chunks::<4>()
+        .0
+        .iter()
         .map(|p| if bgra { [p[2], p[1], p[0]] } else { [p[0], p[1], p[2]] })
         // write_png_display stores round(255 v): each code value comes back exactly.
         .map(|p| p.map(|c| c as f32 / 255.0))
@@ -29,7 +31,7 @@ pub fn window_of_rgb(backend: &mut dyn Backend, rgb: BufferId, frame_width: u32,
     let words = backend.read_buffer(rgb, row * margin as u64, row * h as u64)?;
     let data = words
         .chunks_exact(row as usize)
-        .flat_map(|r| r[3 * margin as usize..3 * (margin + w) as usize].chunks_exact(3))
+        .flat_map(|r| r[3 * margin as usize..3 * (margin + w) as usize].as_chunks::<3>().0)
         .map(|c| [f32::from_bits(c[0]), f32::from_bits(c[1]), f32::from_bits(c[2])])
         .collect();
     Ok(RgbImage { width: w, height: h, data })

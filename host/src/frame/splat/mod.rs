@@ -388,7 +388,7 @@ impl SplatContext {
         let tiles = tiles_x as u64 * tiles_y as u64;
         let st = backend.read_buffer(self.b.stats, 0, stats::WORDS as u64)?;
         let seg = backend.read_buffer(self.b.segments, 0, 2 * tiles)?;
-        let list_lengths: Vec<u32> = seg.chunks_exact(2).map(|s| s[1]).collect();
+        let list_lengths: Vec<u32> = seg.as_chunks::<2>().0.iter().map(|s| s[1]).collect();
         let c = |i: u32| st[i as usize];
         let pixels = f.width as u64 * f.height as u64;
         let plan = Plan {

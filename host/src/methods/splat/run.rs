@@ -131,11 +131,12 @@ fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatRe
     let mut lists = |keys, values| -> Result<(Vec<u32>, Vec<u32>)> {
         let (all_k, all_v) =
             (backend.read_buffer(keys, 0, backend.buffer_words(keys)?)?, backend.read_buffer(values, 0, backend.buffer_words(values)?)?);
-        let pick =
-            |all: &[u32]| segments.chunks_exact(2).flat_map(|s| all[s[0] as usize..(s[0] + s[1]) as usize].iter().copied()).collect();
+        let pick = |all: &[u32]| {
+            segments.as_chunks::<2>().0.iter().flat_map(|s| all[s[0] as usize..(s[0] + s[1]) as usize].iter().copied()).collect()
+        };
         Ok((pick(&all_k), pick(&all_v)))
     };
     let binned = lists(s.keys, s.values)?;
     let sorted = lists(s.keys_sorted, s.values_sorted)?;
-    Ok(Intermediates { cells, tile_count, dense, list_lengths: segments.chunks_exact(2).map(|s| s[1]).collect(), binned, sorted })
+    Ok(Intermediates { cells, tile_count, dense, list_lengths: segments.as_chunks::<2>().0.iter().map(|s| s[1]).collect(), binned, sorted })
 }

@@ -72,6 +72,10 @@ pub struct MethodInfo {
     pub paper: &'static str,
     pub reads: Reads,
     pub knob: Option<Knob>,
+    /// Whether it draws the aperture's shape (`--aperture`: blades, stars, masks).
+    pub shaped_aperture: bool,
+    /// Whether it reads the tile size and merging of [`SplatOptions`].
+    pub tiles: bool,
     /// Makes its context: checks the options and the extent, allocates every buffer.
     pub create: fn(&mut dyn Backend, &ContextDesc) -> Result<Box<dyn DofContext>>,
 }
@@ -102,6 +106,8 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "Franke, Hofmann, Stamminger, Selgrad 2018",
         reads: Reads::AllLayers,
         knob: None,
+        shaped_aperture: true,
+        tiles: true,
         create: |b, d| create_splat(b, d, "multilayer"),
     },
     MethodInfo {
@@ -110,6 +116,8 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "Selgrad, Franke, Stamminger 2016",
         reads: Reads::FrontLayer,
         knob: None,
+        shaped_aperture: true,
+        tiles: true,
         create: |b, d| create_splat(b, d, "tiled"),
     },
     MethodInfo {
@@ -118,6 +126,8 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "Riguer, Tatarchuk, Isidoro 2003",
         reads: Reads::FrontLayer,
         knob: None,
+        shaped_aperture: false,
+        tiles: false,
         create: |b, d| {
             let desc = GatherContextDesc {
                 max_radius: d.options.gather_max_radius,
@@ -133,6 +143,8 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "after AMD FidelityFX DoF, Unreal Engine's Diaphragm DoF and Jimenez 2014",
         reads: Reads::FrontLayer,
         knob: Some(Knob { name: "rings", min: 1, max: MAX_SAMPLE_RINGS, default: DEFAULT_RINGS }),
+        shaped_aperture: false,
+        tiles: false,
         create: |b, d| {
             let desc = RingGatherContextDesc {
                 options: d.options.ring_gather,
@@ -148,6 +160,8 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "de Rousiers 2012; Pettineo 2012",
         reads: Reads::FrontLayer,
         knob: None,
+        shaped_aperture: true,
+        tiles: false,
         create: |b, d| {
             let desc = BokehContextDesc {
                 image_io: d.image_io,

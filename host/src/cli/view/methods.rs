@@ -5,53 +5,53 @@ use anyhow::Result;
 use dof::aperture::parse_aperture;
 use dof::backend::{Backend, CommandTime};
 use dof::frame::{
-    BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, RingGatherContext, RingGatherContextDesc, RingGatherOptions,
-    SplatContext, SplatContextDesc,
+    BokehOptions, ContextDesc, DofContext, Extent, Frame, METHODS, Merge, MethodInfo, MethodOptions, Reads, RingGatherOptions, SplatOptions,
 };
-use dof::methods::bokeh::BokehOptions;
-use dof::methods::splat::{Merge, SplatOptions};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum ViewMethod {
-    /// Multi-layer tiled splatting (Franke, Hofmann, Stamminger, Selgrad 2018).
-    Multilayer,
-    /// Single-layer tiled splatting (Selgrad, Franke, Stamminger 2016): the front layer only.
-    Tiled,
-    /// The gathering baseline (Riguer et al. 2003) on the front layer.
-    Gather,
-    /// The engine-grade gather (after AMD FidelityFX DoF, Unreal Engine's Diaphragm DoF and
-    /// Jimenez 2014) on the front layer: half resolution, `--rings` sample rings.
-    RingGather,
-    /// Bokeh sprites (de Rousiers, Pettineo 2012) over the gathering baseline.
-    Bokeh,
+/// A method of the frame API's registry, as the viewer offers it.
+#[derive(Clone, Copy, PartialEq)]
+pub struct ViewMethod(pub &'static MethodInfo);
+
+impl std::fmt::Debug for ViewMethod {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
 }
 
 impl ViewMethod {
-    pub const ALL: [ViewMethod; 5] =
-        [ViewMethod::Multilayer, ViewMethod::Tiled, ViewMethod::Gather, ViewMethod::RingGather, ViewMethod::Bokeh];
+    /// Every method of the registry, in its order.
+    pub fn all() -> impl Iterator<Item = ViewMethod> {
+        METHODS.iter().map(ViewMethod)
+    }
 
-    pub fn label(self) -> &'static str {
-        match self {
-            ViewMethod::Multilayer => "multi-layer tiled splatting (Franke et al. 2018)",
-            ViewMethod::Tiled => "single-layer tiled splatting (Selgrad et al. 2016)",
-            ViewMethod::Gather => "gather (Riguer et al. 2003)",
-            ViewMethod::RingGather => "ring gather (engine-grade, after FidelityFX, Unreal, Jimenez 2014)",
-            ViewMethod::Bokeh => "bokeh sprites (de Rousiers, Pettineo 2012)",
-        }
+    pub fn label(self) -> String {
+        format!("{} ({})", self.0.title, self.0.paper)
     }
 
     /// The name the command line and scripts use.
-    pub fn name(self) -> String {
-        clap::ValueEnum::to_possible_value(&self).map_or_else(|| format!("{self:?}"), |v| v.get_name().to_string())
+    pub fn name(self) -> &'static str {
+        self.0.name
     }
 
     pub fn parse(s: &str) -> Option<ViewMethod> {
-        <ViewMethod as clap::ValueEnum>::from_str(s, true).ok()
+        Self::all().find(|m| m.name().eq_ignore_ascii_case(s))
+    }
+
+    /// The registry's names, for messages.
+    pub fn names() -> String {
+        Self::all().map(|m| m.name()).collect::<Vec<_>>().join(", ")
     }
 
     /// Whether the method reads only the front layer.
     pub fn front_only(self) -> bool {
-        self != ViewMethod::Multilayer
+        self.0.reads == Reads::FrontLayer
+    }
+}
+
+impl std::str::FromStr for ViewMethod {
+    type Err = String;
+    fn from_str(s: &str) -> std::result::Result<Self, String> {
+        ViewMethod::parse(s).ok_or_else(|| format!("unknown method '{s}': the methods are {}", ViewMethod::names()))
     }
 }
 
@@ -61,28 +61,49 @@ pub struct MethodSettings {
     pub method: ViewMethod,
     pub merge: Merge,
     pub tile: u32,
-    /// `circle`, `blades:N[:ROT]` or `star:N` (see `dof::aperture`); splatting and bokeh only.
+    /// `circle`, `blades:N[:ROT]` or `star:N` (see `dof::aperture`); methods with a shaped
+    /// aperture only.
     pub aperture: String,
-    /// Sample rings of the ring gather (1 to 8); changed between frames without a new context.
+    /// The ring gather's knob (1 to 8 sample rings); changed between frames without a new context.
     pub rings: u32,
 }
 
-/// The contexts, made on first use of their method, for frames up to `max` (width, height, layers).
+impl MethodSettings {
+    /// The frame API's options these settings make (each method reads its own).
+    fn options(&self) -> Result<MethodOptions> {
+        let aperture = parse_aperture(&self.aperture)?;
+        Ok(MethodOptions {
+            splat: SplatOptions { tile: self.tile, merge: self.merge, aperture: aperture.clone(), ..Default::default() },
+            ring_gather: RingGatherOptions { rings: self.rings, ..Default::default() },
+            bokeh: BokehOptions { aperture, ..Default::default() },
+            ..Default::default()
+        })
+    }
+
+    /// What a context of any method is made from: everything but the method and its knob.
+    fn key(&self) -> (Merge, u32, String) {
+        (self.merge, self.tile, self.aperture.clone())
+    }
+}
+
+/// The contexts, one slot per registry method, each made on first use for frames up to `max`
+/// (width, height, layers).
 pub struct Contexts {
     max: [u32; 3],
-    splat: Option<(MethodSettings, SplatContext)>,
-    gather: Option<GatherContext>,
-    ring_gather: Option<RingGatherContext>,
-    bokeh: Option<(String, BokehContext)>,
+    slots: Vec<Option<((Merge, u32, String), Box<dyn DofContext>)>>,
 }
 
 impl Contexts {
     pub fn new(max: [u32; 3]) -> Contexts {
-        Contexts { max, splat: None, gather: None, ring_gather: None, bokeh: None }
+        Contexts { max, slots: METHODS.iter().map(|_| None).collect() }
     }
 
     pub fn max(&self) -> [u32; 3] {
         self.max
+    }
+
+    fn slot(method: ViewMethod) -> usize {
+        METHODS.iter().position(|m| m.name == method.name()).unwrap_or(0)
     }
 
     /// Makes sure the context for `s.method` exists with these settings and holds frames up to
@@ -91,75 +112,27 @@ impl Contexts {
         let grew = max.iter().zip(self.max).any(|(a, b)| *a > b);
         if grew {
             let grown = [max[0].max(self.max[0]), max[1].max(self.max[1]), max[2].max(self.max[2])];
-            // The splatting context resizes itself; the others are made again on use.
-            if let Some((_, ctx)) = &mut self.splat {
-                ctx.resize(backend, grown[0], grown[1], grown[2])?;
-            }
-            if let Some(g) = self.gather.take() {
-                g.destroy(backend);
-            }
-            if let Some(g) = self.ring_gather.take() {
-                g.destroy(backend);
-            }
-            if let Some((_, b)) = self.bokeh.take() {
-                b.destroy(backend);
+            for (_, ctx) in self.slots.iter_mut().flatten() {
+                ctx.resize(backend, Extent::new(grown[0], grown[1], grown[2]))?;
             }
             self.max = grown;
         }
         let [w, h, l] = self.max;
-        let mut made = true;
-        match s.method {
-            ViewMethod::Multilayer | ViewMethod::Tiled => {
-                let key = MethodSettings { method: ViewMethod::Multilayer, ..s.clone() };
-                if self.splat.as_ref().is_none_or(|(k, _)| *k != key) {
-                    let options =
-                        SplatOptions { tile: s.tile, merge: s.merge, aperture: parse_aperture(&s.aperture)?, ..Default::default() };
-                    let mut desc = SplatContextDesc::new(w, h, l, options);
-                    desc.image_io = true;
-                    let ctx = SplatContext::new(backend, &desc)?;
-                    if let Some((_, old)) = self.splat.replace((key, ctx)) {
-                        old.destroy(backend);
-                    }
-                } else {
-                    made = false;
-                }
+        let slot = &mut self.slots[Self::slot(s.method)];
+        let mut made = false;
+        if slot.as_ref().is_none_or(|(key, _)| *key != s.key()) {
+            let desc = ContextDesc { image_io: true, ..ContextDesc::new(Extent::new(w, h, l), s.options()?) };
+            let ctx = (s.method.0.create)(backend, &desc)?;
+            if let Some((_, old)) = slot.replace((s.key(), ctx)) {
+                old.destroy(backend);
             }
-            ViewMethod::Gather => {
-                if self.gather.is_none() {
-                    let mut desc = GatherContextDesc::new(w, h, l);
-                    desc.image_io = true;
-                    self.gather = Some(GatherContext::new(backend, &desc)?);
-                } else {
-                    made = false;
-                }
-            }
-            ViewMethod::RingGather => {
-                let options = RingGatherOptions { rings: s.rings, ..Default::default() };
-                match &mut self.ring_gather {
-                    Some(ctx) => {
-                        ctx.set_options(options)?;
-                        made = false;
-                    }
-                    None => {
-                        let mut desc = RingGatherContextDesc::new(w, h, l);
-                        desc.options = options;
-                        desc.image_io = true;
-                        self.ring_gather = Some(RingGatherContext::new(backend, &desc)?);
-                    }
-                }
-            }
-            ViewMethod::Bokeh => {
-                if self.bokeh.as_ref().is_none_or(|(k, _)| *k != s.aperture) {
-                    let options = BokehOptions { aperture: parse_aperture(&s.aperture)?, ..Default::default() };
-                    let mut desc = BokehContextDesc::new(w, h, l, options);
-                    desc.image_io = true;
-                    let ctx = BokehContext::new(backend, &desc)?;
-                    if let Some((_, old)) = self.bokeh.replace((s.aperture.clone(), ctx)) {
-                        old.destroy(backend);
-                    }
-                } else {
-                    made = false;
-                }
+            made = true;
+        }
+        if let (Some(knob), Some((_, ctx))) = (s.method.0.knob, slot.as_mut()) {
+            // The ring count is the only knob today; a method's knob changes without a new context.
+            let value = if knob.name == "rings" { s.rings } else { knob.default };
+            if ctx.knob() != Some(value) {
+                ctx.set_knob(value)?;
             }
         }
         // Creation recorded the zeroing of the new buffers in the backend's own command buffer:
@@ -172,78 +145,24 @@ impl Contexts {
 
     /// Records `frame` with the method's context (prepared by [`Contexts::prepare`]).
     pub fn record(&mut self, backend: &mut dyn Backend, method: ViewMethod, frame: &Frame) -> Result<()> {
-        let missing = || anyhow::anyhow!("the context for {method:?} was not prepared");
-        match method {
-            ViewMethod::Multilayer | ViewMethod::Tiled => self.splat.as_mut().ok_or_else(missing)?.1.record(backend, frame)?,
-            ViewMethod::Gather => self.gather.as_mut().ok_or_else(missing)?.record(backend, frame)?,
-            ViewMethod::RingGather => self.ring_gather.as_mut().ok_or_else(missing)?.record(backend, frame)?,
-            ViewMethod::Bokeh => self.bokeh.as_mut().ok_or_else(missing)?.1.record(backend, frame)?,
-        }
-        Ok(())
+        let (_, ctx) =
+            self.slots[Self::slot(method)].as_mut().ok_or_else(|| anyhow::anyhow!("the context for {} was not prepared", method.name()))?;
+        Ok(ctx.record(backend, frame)?)
     }
 
     /// What the last frame of `method` left out or did, as lines for the screen. Reads the
     /// context's statistics back: call only once that frame completed (the viewer does it after
     /// its fence, for the frame before, a few times a second).
     pub fn report(&self, backend: &mut dyn Backend, method: ViewMethod) -> Result<Vec<String>> {
-        Ok(match method {
-            ViewMethod::Multilayer | ViewMethod::Tiled => match &self.splat {
-                Some((_, ctx)) => {
-                    let r = ctx.report(backend)?;
-                    let rings = r.plan.as_ref().map_or(0, |p| p.rings);
-                    let radius = r.plan.as_ref().map_or(0.0, |p| p.max_coc_radius);
-                    vec![
-                        format!("largest CoC radius {radius:.1} px, {rings} tile rings"),
-                        format!("{} fragments tiled; merging replaced {} by {}", r.fragments, r.merged_inputs, r.merged),
-                        format!("{} of {} tiles copied unblurred (in focus)", r.copy_tiles, r.tiles),
-                        format!("list overflow: {} tiles, {} entries (pool {})", r.overflow_tiles, r.overflow_entries, r.list_capacity),
-                        format!("dropped {} fragments, radius capped {}", r.dropped, r.capped),
-                    ]
-                }
-                None => Vec::new(),
-            },
-            ViewMethod::Gather => match &self.gather {
-                Some(ctx) => vec![format!("gather window radius {} px", ctx.radius(backend)?)],
-                None => Vec::new(),
-            },
-            ViewMethod::RingGather => match &self.ring_gather {
-                Some(ctx) => {
-                    let o = ctx.options();
-                    vec![format!(
-                        "{} rings, {} samples a half-resolution pixel, CoC radius capped at {} px",
-                        o.rings,
-                        dof_shaders::ring_gather::samples(o.rings),
-                        o.max_radius
-                    )]
-                }
-                None => Vec::new(),
-            },
-            ViewMethod::Bokeh => match &self.bokeh {
-                Some((_, ctx)) => {
-                    let (detected, radius) = ctx.detected_and_radius(backend)?;
-                    let capacity = BokehOptions::default().capacity as u64;
-                    vec![format!(
-                        "{detected} bright pixels as sprites ({} beyond the capacity), gather radius {radius} px",
-                        detected.saturating_sub(capacity)
-                    )]
-                }
-                None => Vec::new(),
-            },
+        Ok(match &self.slots[Self::slot(method)] {
+            Some((_, ctx)) => ctx.report(backend)?.summary.lines().map(str::to_string).collect(),
+            None => Vec::new(),
         })
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {
-        if let Some((_, c)) = self.splat {
-            c.destroy(backend);
-        }
-        if let Some(c) = self.gather {
-            c.destroy(backend);
-        }
-        if let Some(c) = self.ring_gather {
-            c.destroy(backend);
-        }
-        if let Some((_, c)) = self.bokeh {
-            c.destroy(backend);
+        for (_, ctx) in self.slots.into_iter().flatten() {
+            ctx.destroy(backend);
         }
     }
 }

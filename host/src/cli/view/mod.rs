@@ -33,7 +33,8 @@ pub struct ViewArgs {
     /// multi-layer; a still image: needs --focus and --f-number or --aperture-radius).
     #[arg(long, default_value = "simple")]
     pub scene: String,
-    #[arg(long, value_enum, default_value = "multilayer")]
+    /// A method of the frame API (its registry name: multilayer, tiled, gather, ring-gather, bokeh, ...).
+    #[arg(long, default_value = "multilayer")]
     pub method: ViewMethod,
     /// Window size in pixels (an EXR is shown scaled to it). Small by default: on lavapipe (Mesa's
     /// CPU Vulkan) every pixel costs.

@@ -42,7 +42,7 @@ fn step(s: &str) -> Result<Step> {
     Ok(match key {
         "method" => match ViewMethod::parse(value) {
             Some(m) => Step::Method(m),
-            None => bail!("--script {s}: the methods are multilayer, tiled, gather, ring-gather and bokeh"),
+            None => bail!("--script {s}: the methods are {}", ViewMethod::names()),
         },
         "resize" => {
             let parsed = value.split_once('x').and_then(|(w, h)| Some((w.parse::<u32>().ok()?, h.parse::<u32>().ok()?)));

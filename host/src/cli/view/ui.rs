@@ -68,7 +68,7 @@ impl Panel {
             ui.label(format!("{} | {}x{} | {}", stats.device, stats.frame[0], stats.frame[1], stats.present_mode));
             ui.label(format!("{:.1} FPS ({:.1} ms a frame), GPU {:.2} ms", stats.fps, stats.frame_ms, stats.gpu_ms));
             egui::ComboBox::from_label("method").selected_text(self.settings.method.name()).show_ui(ui, |ui| {
-                for m in ViewMethod::ALL {
+                for m in ViewMethod::all() {
                     ui.selectable_value(&mut self.settings.method, m, m.label());
                 }
             });
@@ -88,15 +88,13 @@ impl Panel {
             if !(self.exposure > 0.0 && self.exposure.is_finite()) {
                 self.exposure = 1.0;
             }
-            let splat_or_bokeh = matches!(self.settings.method, ViewMethod::Multilayer | ViewMethod::Tiled | ViewMethod::Bokeh);
-            ui.add_enabled_ui(splat_or_bokeh, |ui| {
+            ui.add_enabled_ui(self.settings.method.0.shaped_aperture, |ui| {
                 ui.add(egui::Slider::new(&mut self.blades, 0..=12).text("blades (0: circle)"));
             });
             if self.blades > 0 && self.blades < 3 {
                 self.blades = 3;
             }
-            let splat = matches!(self.settings.method, ViewMethod::Multilayer | ViewMethod::Tiled);
-            ui.add_enabled_ui(splat, |ui| {
+            ui.add_enabled_ui(self.settings.method.0.tiles, |ui| {
                 ui.horizontal(|ui| {
                     ui.label("merge");
                     ui.selectable_value(&mut self.settings.merge, Merge::None, "none");
@@ -110,7 +108,7 @@ impl Panel {
                     }
                 });
             });
-            ui.add_enabled_ui(self.settings.method == ViewMethod::RingGather, |ui| {
+            ui.add_enabled_ui(self.settings.method.0.knob.is_some_and(|k| k.name == "rings"), |ui| {
                 ui.add(
                     egui::Slider::new(&mut self.settings.rings, 1..=dof::methods::ring_gather::MAX_SAMPLE_RINGS)
                         .text("rings (ring gather)"),

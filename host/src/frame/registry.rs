@@ -6,6 +6,7 @@
 use super::bokeh::{BokehContext, BokehContextDesc, BokehOptions};
 use super::context::{DofContext, Extent};
 use super::gather::{GatherContext, GatherContextDesc};
+use super::layered::{LayeredContext, LayeredContextDesc, LayeredOptions};
 use super::raytrace::{RaytraceContext, RaytraceContextDesc, RaytraceOptions};
 use super::ring_gather::{DEFAULT_RINGS, MAX_SAMPLE_RINGS, RingGatherContext, RingGatherContextDesc, RingGatherOptions};
 use super::splat::{SplatContext, SplatContextDesc, SplatOptions};
@@ -47,6 +48,8 @@ pub struct MethodOptions {
     pub bokeh: BokehOptions,
     /// Ray tracing through the layers (rays per pixel, sample patterns, seed).
     pub raytrace: RaytraceOptions,
+    /// Layered DoF (cascading, layers per doubling, first and largest layer CoC).
+    pub layered: LayeredOptions,
 }
 
 /// What a context is created for, whatever its method.
@@ -171,6 +174,20 @@ pub static METHODS: &[MethodInfo] = &[
                 ..RaytraceContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.raytrace.clone())
             };
             Ok(Box::new(RaytraceContext::new(b, &desc)?))
+        },
+    },
+    MethodInfo {
+        name: "layered",
+        title: "layered DoF with matting",
+        paper: "Schedl, Wimmer 2012",
+        reads: Reads::AllLayers,
+        knob: None,
+        create: |b, d| {
+            let desc = LayeredContextDesc {
+                image_io: d.image_io,
+                ..LayeredContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.layered.clone())
+            };
+            Ok(Box::new(LayeredContext::new(b, &desc)?))
         },
     },
 ];

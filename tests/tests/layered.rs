@@ -278,3 +278,24 @@ fn the_device_plan_stays_close_to_the_host_path_on_builtin_scenes() {
         }
     }
 }
+
+/// The context refuses the options the one-shot path refuses, before allocating anything.
+#[test]
+fn a_context_with_bad_options_is_refused() {
+    use dof::frame::{ContextDesc, Extent, MethodOptions, registry};
+    let mut b = CpuBackend::new();
+    let method = registry::method("layered").unwrap();
+    for layered in [
+        LayeredOptions { layers_per_doubling: 0, ..Default::default() },
+        LayeredOptions { first_coc: f32::NAN, ..Default::default() },
+        LayeredOptions { max_coc: 5000.0, ..Default::default() },
+    ] {
+        let desc = ContextDesc::new(Extent::new(8, 8, 2), MethodOptions { layered, ..Default::default() });
+        assert!(matches!((method.create)(&mut b, &desc), Err(Error::InvalidArgument(_))));
+    }
+    assert!(matches!(
+        (method.create)(&mut b, &ContextDesc::new(Extent::new(0, 8, 2), MethodOptions::default())),
+        Err(Error::InvalidArgument(_))
+    ));
+    assert_eq!(b.counters().device_bytes, 0);
+}

@@ -215,3 +215,18 @@ fn the_registry_one_shot_path_equals_the_one_shot_function() {
         assert_eq!(b.take_diagnostics(), Vec::<String>::new(), "{}", b.kind());
     }
 }
+
+/// The context refuses the options the one-shot function refuses, before allocating anything.
+#[test]
+fn a_context_with_bad_options_is_refused() {
+    use dof::frame::{ContextDesc, Extent, MethodOptions, registry};
+    let mut b = CpuBackend::new();
+    let method = registry::method("raytrace").unwrap();
+    for raytrace in [RaytraceOptions { spp: 0, ..Default::default() }, RaytraceOptions { patterns: 0, ..Default::default() }] {
+        let desc = ContextDesc::new(Extent::new(8, 8, 2), MethodOptions { raytrace, ..Default::default() });
+        assert!(matches!((method.create)(&mut b, &desc), Err(Error::InvalidArgument(_))));
+    }
+    let huge = ContextDesc::new(Extent::new(10_000, 1, 1), MethodOptions::default());
+    assert!(matches!((method.create)(&mut b, &huge), Err(Error::InvalidArgument(_))));
+    assert_eq!(b.counters().device_bytes, 0);
+}

@@ -50,3 +50,66 @@ pub fn noise_image(w: u32, h: u32) -> (RgbImage, Vec<f32>) {
     }
     (img, depth)
 }
+
+/// One frame of a registry method's context: its input, lens and size.
+pub struct ContextFrame<'a> {
+    pub image: &'a dof::layers::LayeredImage,
+    pub lens: dof_shaders::lens::ThinLens,
+    /// Resize the context to this extent before the frame (between frames, so allowed to allocate).
+    pub resize: Option<dof::frame::Extent>,
+}
+
+/// Frames through one context of the registry's `method` made for `extent` with `options`, from
+/// caller buffers sized for `extent`: asserts that recording and submitting each frame allocates,
+/// reads back and uploads nothing and submits once, and returns each frame's image and report.
+pub fn context_frames(
+    b: &mut dyn dof::backend::Backend,
+    method: &str,
+    options: &dof::frame::MethodOptions,
+    extent: dof::frame::Extent,
+    frames: &[ContextFrame],
+) -> Vec<(RgbImage, dof::frame::ContextReport)> {
+    use dof::frame::{ContextDesc, Frame, registry};
+    use dof::methods::buffers::{read_rgb, slot_words};
+    let method = registry::method(method).unwrap();
+    let mut max = extent;
+    for f in frames {
+        max = max.union(f.resize.unwrap_or(extent));
+    }
+    let pixels = max.width as u64 * max.height as u64;
+    let bufs = [
+        b.create_buffer(4 * pixels * max.layers as u64, "caller/fragments").unwrap(),
+        b.create_buffer(pixels, "caller/counts").unwrap(),
+        b.create_buffer(3 * pixels, "caller/output").unwrap(),
+    ];
+    let mut ctx = (method.create)(b, &ContextDesc::new(extent, options.clone())).unwrap();
+    let mut out = Vec::new();
+    for (i, f) in frames.iter().enumerate() {
+        if let Some(e) = f.resize {
+            ctx.resize(b, e).unwrap();
+            assert_eq!(ctx.extent(), e);
+        }
+        let img = f.image;
+        b.write_buffer(bufs[0], 0, &slot_words(img)).unwrap();
+        b.write_buffer(bufs[1], 0, &img.counts).unwrap();
+        let frame = Frame::layers(img.width, img.height, img.max_layers, f.lens, bufs[0], bufs[1], bufs[2]);
+        let before = b.counters();
+        ctx.record(b, &frame).unwrap();
+        b.submit().unwrap();
+        let spent = b.counters().since(&before);
+        assert_eq!(
+            (spent.allocations, spent.readbacks, spent.uploads, spent.submissions),
+            (0, 0, 0, 1),
+            "{} frame {i} ({}x{}, {} layers)",
+            method.name,
+            img.width,
+            img.height,
+            img.max_layers
+        );
+        let image = read_rgb(b, bufs[2], img.width, img.height).unwrap();
+        out.push((image, ctx.report(b).unwrap()));
+    }
+    ctx.destroy(b);
+    bufs.iter().for_each(|&id| b.destroy_buffer(id));
+    out
+}

@@ -143,3 +143,90 @@ fn bad_options_are_errors() {
             || raytrace(&mut cpu, &LayeredImage::new(0, 4, 1).unwrap(), &test_lens(0.01), &RaytraceOptions::default()).is_err()
     );
 }
+
+/// Frames of changing size, layer count and lens through one ray-tracing context of the registry
+/// (resized once between frames), each equal bit for bit to the one-shot function (the same
+/// kernels in the same order) with the same missed-ray count; returns the images.
+fn context_frames_equal_the_one_shot_function(b: &mut dyn Backend) -> Vec<dof::layers::RgbImage> {
+    use dof::frame::{Extent, MethodOptions};
+    use dof_tests::{ContextFrame, context_frames};
+    let options = RaytraceOptions { spp: 8, ..Default::default() };
+    let images = [noise_with_sky(60, 40, 3), noise_with_sky(33, 21, 2), noise_with_sky(60, 40, 1), noise_with_sky(80, 50, 4)];
+    let apertures = [0.02f32, 0.01, 0.0, 0.03];
+    let resizes = [None, None, None, Some(Extent::new(80, 50, 4))];
+    let frames: Vec<ContextFrame> =
+        (0..4).map(|i| ContextFrame { image: &images[i], lens: test_lens(apertures[i]), resize: resizes[i] }).collect();
+    let method_options = MethodOptions { raytrace: options.clone(), ..Default::default() };
+    let got = context_frames(b, "raytrace", &method_options, Extent::new(60, 40, 3), &frames);
+    for (i, (image, report)) in got.iter().enumerate() {
+        let expected = raytrace(b, &images[i], &frames[i].lens, &options).unwrap();
+        assert!(image.data == expected.image.data, "frame {i} differs from the one-shot function");
+        assert_eq!(report.figures["missed_rays"], expected.missed_rays as f64, "frame {i}");
+        assert_eq!(report.figures["levels"], expected.levels as f64, "frame {i}");
+    }
+    got.into_iter().map(|g| g.0).collect()
+}
+
+#[test]
+fn a_context_records_frames_without_allocating_or_reading_back() {
+    context_frames_equal_the_one_shot_function(&mut CpuBackend::new());
+}
+
+/// The same frames on Vulkan (validation on), and against the CPU's within the tolerance of
+/// `vulkan_traces_the_same_rays_as_the_cpu`.
+#[test]
+fn a_context_records_frames_without_allocating_or_reading_back_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    let gpu = context_frames_equal_the_one_shot_function(&mut vk);
+    assert_clean(&mut vk);
+    let cpu = context_frames_equal_the_one_shot_function(&mut CpuBackend::new());
+    for (i, (a, b)) in cpu.iter().zip(&gpu).enumerate() {
+        let differing = a.data.iter().zip(&b.data).filter(|(a, b)| (0..3).any(|c| (a[c] - b[c]).abs() > 1e-5 * (1.0 + a[c].abs()))).count();
+        assert!(differing * 200 <= a.data.len(), "frame {i}: {differing} pixels differ");
+    }
+}
+
+/// The registry's one-shot path (a context sized to the image) equals the one-shot function bit
+/// for bit on a built-in scene, and a context too small for a frame refuses it.
+#[test]
+fn the_registry_one_shot_path_equals_the_one_shot_function() {
+    use dof::frame::{ContextDesc, Extent, Frame, MethodOptions, registry};
+    use dof::methods::one_shot::one_shot;
+    let scene = builtin("railing").unwrap().with_size(96, 54);
+    let lens = scene.thin_lens().unwrap();
+    let layers = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default()).unwrap().layers;
+    let method = registry::method("raytrace").unwrap();
+    let mut backends: Vec<Box<dyn Backend>> = vec![Box::new(CpuBackend::new())];
+    if let Some(vk) = vulkan() {
+        backends.push(Box::new(vk));
+    }
+    for b in &mut backends {
+        let options = MethodOptions { raytrace: RaytraceOptions { spp: 12, ..Default::default() }, ..Default::default() };
+        let shot = one_shot(b.as_mut(), method, &options, &layers, &lens).unwrap();
+        let expected = raytrace(b.as_mut(), &layers, &lens, &options.raytrace).unwrap();
+        assert!(shot.image.data == expected.image.data, "{}", b.kind());
+        assert_eq!(shot.report.figures["missed_rays"], expected.missed_rays as f64);
+        let mut ctx = (method.create)(b.as_mut(), &ContextDesc::new(Extent::new(16, 16, 1), options)).unwrap();
+        let out = b.create_buffer(3 * 96 * 54, "out").unwrap();
+        let f = Frame::layers(96, 54, 1, lens, out, out, out);
+        assert!(matches!(ctx.record(b.as_mut(), &f), Err(Error::InvalidArgument(_))));
+        ctx.destroy(b.as_mut());
+        b.destroy_buffer(out);
+        assert_eq!(b.take_diagnostics(), Vec::<String>::new(), "{}", b.kind());
+    }
+}
+
+/// The context refuses the options the one-shot function refuses, before allocating anything.
+#[test]
+fn a_context_with_bad_options_is_refused() {
+    use dof::frame::{ContextDesc, Extent, MethodOptions, registry};
+    let mut b = CpuBackend::new();
+    let method = registry::method("raytrace").unwrap();
+    for raytrace in [RaytraceOptions { spp: 0, ..Default::default() }, RaytraceOptions { patterns: 0, ..Default::default() }] {
+        let desc = ContextDesc::new(Extent::new(8, 8, 2), MethodOptions { raytrace, ..Default::default() });
+        assert!(matches!((method.create)(&mut b, &desc), Err(Error::InvalidArgument(_))));
+    }
+    let huge = ContextDesc::new(Extent::new(10_000, 1, 1), MethodOptions::default());
+    assert!(matches!((method.create)(&mut b, &huge), Err(Error::InvalidArgument(_))));
+    assert_eq!(b.counters().device_bytes, 0);
+}

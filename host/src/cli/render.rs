@@ -536,6 +536,8 @@ fn method_options(args: &RenderArgs) -> anyhow::Result<MethodOptions> {
         gather_max_radius: args.max_coc.map(|d| d.div_ceil(2)),
         ring_gather: RingGatherOptions { rings: args.rings, max_radius: args.max_coc.map_or(ring_defaults.max_radius, |d| d.div_ceil(2)) },
         bokeh: BokehOptions { lum_threshold: args.lum_threshold, capacity: args.sprites, aperture, ..Default::default() },
+        // Ray tracing and layered DoF run through their own branches of `blur`.
+        ..Default::default()
     })
 }
 

@@ -22,19 +22,23 @@
 //! single-layer predecessor (Selgrad, Franke, Stamminger 2016, the same pipeline on the front
 //! layer) run through [`SplatContext`], the gathering baseline (Riguer et al. 2003) through
 //! [`GatherContext`], the engine-grade gather (after AMD FidelityFX DoF, Unreal Engine's Diaphragm
-//! DoF and Jimenez 2014) through [`RingGatherContext`] and bokeh sprites (de Rousiers, Pettineo) through [`BokehContext`]. Every
-//! context records the same [`Frame`] description. The one-shot functions in [`crate::methods`]
-//! (what the CLI, the evaluation and the tests call) run one frame through these contexts.
-//!
-//! Not through the frame API yet: layered DoF with matting (Schedl, Wimmer 2012), which plans its
-//! depth layers on the host from the image's CoC range and allocates per layer, and ray tracing
-//! through layers (Lee et al. 2010), whose one-shot path still uploads and plans per call. Both
-//! would need the same treatment (a device reduction for their plan, buffers bound at creation).
+//! DoF and Jimenez 2014) through [`RingGatherContext`], bokeh sprites (de Rousiers, Pettineo)
+//! through [`BokehContext`], ray tracing through layers (Lee et al. 2010) through
+//! [`RaytraceContext`] (hierarchy sized for the largest frame, lens samples written at creation)
+//! and layered DoF with matting (Schedl, Wimmer 2012) through [`LayeredContext`], whose layer plan
+//! (the signed-CoC range and which candidate layers are used) is a device reduction over layers
+//! fixed at creation. Every context records the same [`Frame`] description. The one-shot functions
+//! in [`crate::methods`] (what the CLI, the evaluation and the tests call) run one frame through
+//! these contexts, except ray tracing's and layered DoF's, which keep their own per-call paths
+//! (ray tracing's records the context's kernels; layered DoF's plans on the host and is the
+//! oracle the context is tested against).
 
 pub mod bokeh;
 pub mod context;
 pub mod gather;
 pub mod io;
+pub mod layered;
+pub mod raytrace;
 pub mod registry;
 pub mod ring_gather;
 pub mod splat;
@@ -43,6 +47,8 @@ pub use bokeh::{BokehContext, BokehContextDesc, BokehOptions};
 pub use context::{ContextReport, DofContext, Extent};
 pub use gather::{GatherContext, GatherContextDesc};
 pub use io::{DepthEncoding, Frame, FrameInput, FrameOutput};
+pub use layered::{LayeredContext, LayeredContextDesc, LayeredOptions, LayeredPlanReport};
+pub use raytrace::{RaytraceContext, RaytraceContextDesc, RaytraceOptions};
 pub use registry::{ContextDesc, METHODS, MethodInfo, MethodOptions, Reads};
 pub use ring_gather::{RingGatherContext, RingGatherContextDesc, RingGatherOptions};
 pub use splat::{Merge, SplatContext, SplatContextDesc, SplatOptions};

@@ -6,6 +6,8 @@
 use super::bokeh::{BokehContext, BokehContextDesc, BokehOptions};
 use super::context::{DofContext, Extent};
 use super::gather::{GatherContext, GatherContextDesc};
+use super::layered::{LayeredContext, LayeredContextDesc, LayeredOptions};
+use super::raytrace::{RaytraceContext, RaytraceContextDesc, RaytraceOptions};
 use super::ring_gather::{DEFAULT_RINGS, MAX_SAMPLE_RINGS, RingGatherContext, RingGatherContextDesc, RingGatherOptions};
 use super::splat::{SplatContext, SplatContextDesc, SplatOptions};
 use crate::backend::Backend;
@@ -44,6 +46,10 @@ pub struct MethodOptions {
     pub gather_max_radius: Option<u32>,
     pub ring_gather: RingGatherOptions,
     pub bokeh: BokehOptions,
+    /// Ray tracing through the layers (rays per pixel, sample patterns, seed).
+    pub raytrace: RaytraceOptions,
+    /// Layered DoF (cascading, layers per doubling, first and largest layer CoC).
+    pub layered: LayeredOptions,
 }
 
 /// What a context is created for, whatever its method.
@@ -168,6 +174,38 @@ pub static METHODS: &[MethodInfo] = &[
                 ..BokehContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.bokeh.clone())
             };
             Ok(Box::new(BokehContext::new(b, &desc)?))
+        },
+    },
+    MethodInfo {
+        name: "raytrace",
+        title: "ray tracing through the layers",
+        paper: "Lee, Eisemann, Seidel 2010",
+        reads: Reads::AllLayers,
+        knob: None,
+        shaped_aperture: false,
+        tiles: false,
+        create: |b, d| {
+            let desc = RaytraceContextDesc {
+                image_io: d.image_io,
+                ..RaytraceContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.raytrace.clone())
+            };
+            Ok(Box::new(RaytraceContext::new(b, &desc)?))
+        },
+    },
+    MethodInfo {
+        name: "layered",
+        title: "layered DoF with matting",
+        paper: "Schedl, Wimmer 2012",
+        reads: Reads::AllLayers,
+        knob: None,
+        shaped_aperture: false,
+        tiles: false,
+        create: |b, d| {
+            let desc = LayeredContextDesc {
+                image_io: d.image_io,
+                ..LayeredContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.layered.clone())
+            };
+            Ok(Box::new(LayeredContext::new(b, &desc)?))
         },
     },
 ];

@@ -1,5 +1,7 @@
 //! Layered depth of field with matting (Schedl and Wimmer 2012; kernels and the matting rules in
-//! `dof_shaders::layered`), planned per frame on the host:
+//! `dof_shaders::layered`), planned per frame on the host: the one-shot function, which allocates,
+//! uploads and reads back per call. The frame API's [`crate::frame::LayeredContext`] plans on the
+//! device over candidate layers fixed at creation; this path stays as its oracle:
 //!
 //! - **Layers from the depth range.** A min/max reduction over every fragment's signed CoC (the sky
 //!   at the far limit) gives the blur present on each side of the focus plane. Layer CoCs grow
@@ -20,6 +22,7 @@
 use super::buffers::{groups_for, read_rgb, slot_words};
 use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
 use crate::error::{Error, Result};
+use crate::frame::layered::{gaussian, sigma};
 use crate::layers::{LayeredImage, RgbImage};
 use dof_shaders::layered::{
     LAYERED_BLUR, LAYERED_COMPOSITE, LAYERED_MATTE, LAYERED_RESOLVE, LayeredParams, OVER, SLOT_WORDS, UNDER, matte_front, matte_hidden,
@@ -29,23 +32,7 @@ use dof_shaders::lens::ThinLens;
 /// Blurs narrower than this `σ` (px) are left out: their kernel is almost all centre.
 const MIN_SIGMA: f32 = 0.25;
 
-#[derive(Clone, Debug)]
-pub struct LayeredOptions {
-    /// Recursive (cascaded) blurring instead of one blur per layer.
-    pub cascaded: bool,
-    /// Layers per doubling of the CoC, `1..=4` (default 2).
-    pub layers_per_doubling: u32,
-    /// CoC diameter (px) of the first layer beside the focus layer (default 2).
-    pub first_coc: f32,
-    /// Largest layer CoC diameter (px); larger blur is capped to it and counted (default 256).
-    pub max_coc: f32,
-}
-
-impl Default for LayeredOptions {
-    fn default() -> Self {
-        LayeredOptions { cascaded: true, layers_per_doubling: 2, first_coc: 2.0, max_coc: 256.0 }
-    }
-}
+pub use crate::frame::layered::LayeredOptions;
 
 /// The per-frame decomposition.
 #[derive(Clone, Debug)]
@@ -76,24 +63,12 @@ impl LayerPlan {
     }
 }
 
-fn sigma(coc: f32) -> f32 {
-    coc.abs() / 4.0
-}
-
 /// Plans the layers of `image` under `lens`.
 pub fn plan(image: &LayeredImage, lens: &ThinLens, options: &LayeredOptions) -> Result<LayerPlan> {
     if !lens.is_valid() {
         return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
     }
-    if !(1..=4).contains(&options.layers_per_doubling) {
-        return Err(Error::InvalidArgument(format!("layers per doubling must be 1 to 4, got {}", options.layers_per_doubling)));
-    }
-    if !(options.first_coc >= 1.0 && options.first_coc.is_finite() && options.max_coc >= options.first_coc && options.max_coc <= 1024.0) {
-        return Err(Error::InvalidArgument(format!(
-            "need 1 <= first CoC <= max CoC <= 1024 px, got {} and {}",
-            options.first_coc, options.max_coc
-        )));
-    }
+    options.check()?;
     if image.width == 0 || image.height == 0 || image.max_layers == 0 {
         return Err(Error::InvalidArgument(format!("layered DoF needs a non-empty image, got {}x{}", image.width, image.height)));
     }
@@ -119,15 +94,7 @@ pub fn plan(image: &LayeredImage, lens: &ThinLens, options: &LayeredOptions) -> 
             }
         }
     }
-    let side = |extent: f32| -> Vec<f32> {
-        let mut cocs = Vec::new();
-        let mut j = 0;
-        while extent > options.first_coc * 0.5 && cocs.last().is_none_or(|&c: &f32| c < extent) {
-            cocs.push((options.first_coc * 2f32.powf(j as f32 / options.layers_per_doubling as f32)).min(extent));
-            j += 1;
-        }
-        cocs
-    };
+    let side = |extent: f32| options.side(extent);
     let near = side(-lo);
     let far = side(hi);
     let cocs: Vec<f32> = near.iter().rev().map(|c| -c).chain(std::iter::once(0.0)).chain(far.iter().copied()).collect();
@@ -179,14 +146,6 @@ pub struct LayeredOutput {
     pub buffer_bytes: u64,
 }
 
-/// Normalised Gaussian weights for `σ`: the centre, then each distance up to `ceil(3σ)`.
-fn gaussian(sigma: f32) -> Vec<f32> {
-    let radius = (3.0 * sigma).ceil() as usize;
-    let w: Vec<f32> = (0..=radius).map(|i| (-((i * i) as f32) / (2.0 * sigma * sigma)).exp()).collect();
-    let total = w[0] + 2.0 * w[1..].iter().sum::<f32>();
-    w.iter().map(|v| v / total).collect()
-}
-
 #[derive(Clone, Copy, PartialEq)]
 enum Buf {
     Layer,
@@ -227,6 +186,10 @@ fn schedule(plan: &LayerPlan, cascaded: bool) -> Vec<Op> {
         if k > plan.focus_layer {
             pending += s(k).powi(2) - s(k - 1).powi(2);
         }
+    }
+    // The steps down to the focus layer that no used layer in front took (an empty focus layer).
+    if any && pending > 0.0 {
+        ops.push(Op::Blur(Buf::Far, pending.sqrt()));
     }
     // In front, from the nearest: join behind, then blur by the step to the next layer backwards.
     let (mut pending, mut any_near) = (0.0f32, false);
@@ -340,19 +303,4 @@ pub fn layered(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens,
             buffer_bytes,
         })
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn gaussian_weights_sum_to_one() {
-        for s in [0.25f32, 1.0, 7.3, 64.0] {
-            let w = gaussian(s);
-            let total = w[0] + 2.0 * w[1..].iter().sum::<f32>();
-            assert!((total - 1.0).abs() < 1e-5, "{s}: {total}");
-            assert_eq!(w.len(), (3.0 * s).ceil() as usize + 1);
-        }
-    }
 }

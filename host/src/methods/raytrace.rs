@@ -1,36 +1,20 @@
 //! Thin-lens ray tracing through the multi-layer image (kernels and their rules in
 //! `dof_shaders::raytrace`): a min/max hierarchy of the signed CoC, then `spp` rays per pixel.
 //!
-//! Lens samples are made here, once per frame: `patterns` independent sets of `spp` points
-//! stratified over the lens disc (the reference renderer's sampler and concentric mapping), each
-//! pixel picking a set by a hash, so neighbouring pixels do not share one noise pattern. The same
-//! buffer goes to both backends, so both trace the same rays.
+//! This is the one-shot function: it allocates, uploads and reads back per call, and records the
+//! same kernels in the same order as [`crate::frame::RaytraceContext`] (through
+//! [`crate::frame::raytrace::record_trace`]), whose module makes the lens samples and holds the
+//! options.
 
-use super::buffers::{groups_for, read_rgb, slot_words};
-use crate::backend::{Backend, CommandTime, push_words, with_buffers};
+use super::buffers::{read_rgb, slot_words};
+use crate::backend::{Backend, CommandTime, with_buffers};
 use crate::error::{Error, Result};
+use crate::frame::raytrace::{record_trace, trace_params};
 use crate::layers::{LayeredImage, RgbImage};
-use crate::scene::sampling::{concentric_disc, pixel_rng, stratified};
 use dof_shaders::lens::ThinLens;
-use dof_shaders::raytrace::{RT_BASE, RT_REDUCE, RT_TRACE, SLOT_WORDS, STATS_WORDS, TILE, TraceParams, level_offsets, levels_for};
+use dof_shaders::raytrace::{SLOT_WORDS, STATS_WORDS};
 
-/// Rays per pixel at most.
-pub const MAX_SPP: u32 = 4096;
-
-#[derive(Clone, Debug)]
-pub struct RaytraceOptions {
-    /// Rays per pixel, `1..=MAX_SPP`.
-    pub spp: u32,
-    /// Independent sample sets pixels choose from (default 16).
-    pub patterns: u32,
-    pub seed: u64,
-}
-
-impl Default for RaytraceOptions {
-    fn default() -> Self {
-        RaytraceOptions { spp: 16, patterns: 16, seed: 0x5eed }
-    }
-}
+pub use crate::frame::raytrace::{MAX_PATTERNS, MAX_SPP, RaytraceOptions, lens_samples};
 
 pub struct RaytraceOutput {
     pub image: RgbImage,
@@ -44,32 +28,12 @@ pub struct RaytraceOutput {
     pub buffer_bytes: u64,
 }
 
-/// `patterns` sets of `spp` lens points in the unit disc, stratified, as `[x, y]` word pairs.
-pub fn lens_samples(spp: u32, patterns: u32, seed: u64) -> Vec<u32> {
-    let mut words = Vec::with_capacity(2 * (spp * patterns) as usize);
-    let (mut samples, mut perm) = (Vec::new(), Vec::new());
-    for pattern in 0..patterns {
-        let mut rng = pixel_rng(seed, 0, pattern as u64);
-        stratified(spp, true, &mut rng, &mut samples, &mut perm);
-        for s in &samples {
-            let (x, y) = concentric_disc(s.lens.0, s.lens.1);
-            words.extend_from_slice(&[x.to_bits(), y.to_bits()]);
-        }
-    }
-    words
-}
-
 /// Renders `image` through `lens` by ray tracing the layers on `backend`.
 pub fn raytrace(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &RaytraceOptions) -> Result<RaytraceOutput> {
     if !lens.is_valid() {
         return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
     }
-    if !(1..=MAX_SPP).contains(&options.spp) {
-        return Err(Error::InvalidArgument(format!("rays per pixel must be 1 to {MAX_SPP}, got {}", options.spp)));
-    }
-    if !(1..=256).contains(&options.patterns) {
-        return Err(Error::InvalidArgument(format!("sample patterns must be 1 to 256, got {}", options.patterns)));
-    }
+    options.check()?;
     let (width, height) = (image.width, image.height);
     let pixels = width as u64 * height as u64;
     if pixels == 0 || image.max_layers == 0 {
@@ -78,19 +42,8 @@ pub fn raytrace(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens
             image.max_layers
         )));
     }
-    let levels = levels_for(width, height);
-    let mut params = TraceParams {
-        width,
-        height,
-        max_layers: image.max_layers,
-        levels,
-        spp: options.spp,
-        patterns: options.patterns,
-        lens: *lens,
-        ..Default::default()
-    };
-    let (offsets, hier_cells) = level_offsets(&params);
-    params.offsets = offsets;
+    let (params, hier_cells) = trace_params(width, height, image.max_layers, options, *lens);
+    let levels = params.levels;
     let slots = pixels * image.max_layers as u64;
     let sizes = [
         (SLOT_WORDS as u64 * slots, "raytrace/input"),
@@ -112,15 +65,7 @@ pub fn raytrace(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens
         backend.write_buffer(input_buf, 0, &input)?;
         backend.write_buffer(counts, 0, &image.counts)?;
         backend.write_buffer(samples_buf, 0, &samples)?;
-        backend.write_buffer(stats, 0, &[0])?;
-        backend.dispatch(&RT_BASE, groups_for(&RT_BASE, pixels), &[input_buf, counts, hier], &push_words(&params), "raytrace/hierarchy")?;
-        for level in 1..levels {
-            let p = TraceParams { level, ..params };
-            let (w, h) = dof_shaders::raytrace::level_size(&p, level);
-            backend.dispatch(&RT_REDUCE, groups_for(&RT_REDUCE, w as u64 * h as u64), &[hier], &push_words(&p), "raytrace/hierarchy")?;
-        }
-        let tiles = [width.div_ceil(TILE), height.div_ceil(TILE), 1];
-        backend.dispatch(&RT_TRACE, tiles, &[input_buf, counts, hier, samples_buf, out, stats], &push_words(&params), "raytrace/trace")?;
+        record_trace(backend, &params, [input_buf, counts, hier, samples_buf, out, stats])?;
         let times = backend.submit()?;
         let missed = backend.read_buffer(stats, 0, 1)?[0] as u64;
         Ok(RaytraceOutput {

@@ -1,0 +1,450 @@
+//! Layered depth of field with matting (Schedl and Wimmer 2012; kernels and the matting rules in
+//! `dof_shaders::layered`) as a frame context, planned on the device:
+//!
+//! - **Candidate layers fixed at creation.** Layer CoCs grow geometrically from `first_coc` by
+//!   `2^(1/layers_per_doubling)` on each side of the focus layer up to `max_coc` (the last one
+//!   clamped to it): what the one-shot path ([`crate::methods::layered`]) plans for a frame whose
+//!   blur reaches the cap. Every blur's Gaussian weights are computed then and written once.
+//! - **The plan on the device, per frame.** One workgroup places the anchors from the frame's lens
+//!   (eq. 9); a reduction over every fragment finds the signed-CoC range (capped at `max_coc`,
+//!   the fragments beyond counted) and marks the layers some fragment's matte reaches; one
+//!   invocation derives which of the cascade's blurs have anything to blur. Layers no fragment
+//!   reaches, and layers behind an infinite anchor (past eq. 8's bound), are left out: their
+//!   matte, blur and composite dispatches are recorded but return at once (a gate word of the
+//!   plan).
+//! - **Blur.** Non-cascaded: each used layer by its own `σ = |d|/4`, composited back to front.
+//!   Cascaded: behind the focus the running composite is blurred by the step
+//!   `sqrt(σ_{k+1}² − σ_k²)` before layer `k` joins it, in front mirrored, the two joined at the
+//!   end (the one-shot path merges the steps across empty layers into one Gaussian; here each step
+//!   runs, so the Gaussians are composed).
+//!
+//! So a frame records a fixed sequence of dispatches: no allocation, upload, readback or host pass
+//! over the image. It differs from the one-shot path's result where the frame's blur stops short of
+//! a candidate layer (the one-shot path clamps its outermost layer's CoC to the frame's range) and
+//! by composing the cascade's Gaussians (each truncated at 3σ) instead of merging them; the
+//! layered suite measures how much.
+
+use super::context::{ContextReport, DofContext, Extent};
+use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_input, record_output};
+use crate::backend::{Backend, BufferId, groups_for, push_words};
+use crate::error::{Error, Result};
+use dof_shaders::layered::{
+    ALWAYS, LAYERED_BLUR_GATED, LAYERED_COMPOSITE_GATED, LAYERED_MATTE_AT, LAYERED_PLAN_BEGIN, LAYERED_PLAN_END, LAYERED_PLAN_REACH,
+    LAYERED_RESOLVE, LayeredParams, LayeredPlanParams, OVER, PLAN_COCS, PLAN_FAR_GATE, PLAN_LAYERS, PLAN_NEAR_GATE, PLAN_STATS, PLAN_USED,
+    PLAN_WORDS, UNDER,
+};
+
+/// Layered DoF's settings; all fixed at creation (the candidate layers and blur weights follow
+/// from them).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LayeredOptions {
+    /// Recursive (cascaded) blurring instead of one blur per layer.
+    pub cascaded: bool,
+    /// Layers per doubling of the CoC, `1..=4` (default 2).
+    pub layers_per_doubling: u32,
+    /// CoC diameter (px) of the first layer beside the focus layer (default 2).
+    pub first_coc: f32,
+    /// Largest layer CoC diameter (px); larger blur is capped to it and counted (default 256).
+    pub max_coc: f32,
+}
+
+impl Default for LayeredOptions {
+    fn default() -> Self {
+        LayeredOptions { cascaded: true, layers_per_doubling: 2, first_coc: 2.0, max_coc: 256.0 }
+    }
+}
+
+impl LayeredOptions {
+    /// Refuses layers per doubling out of `1..=4` and CoCs outside `1 <= first <= max <= 1024`.
+    pub fn check(&self) -> Result<()> {
+        if !(1..=4).contains(&self.layers_per_doubling) {
+            return Err(Error::InvalidArgument(format!("layers per doubling must be 1 to 4, got {}", self.layers_per_doubling)));
+        }
+        if !(self.first_coc >= 1.0 && self.first_coc.is_finite() && self.max_coc >= self.first_coc && self.max_coc <= 1024.0) {
+            return Err(Error::InvalidArgument(format!(
+                "need 1 <= first CoC <= max CoC <= 1024 px, got {} and {}",
+                self.first_coc, self.max_coc
+            )));
+        }
+        Ok(())
+    }
+
+    /// The layer CoC diameters (px) on one side of the focus layer reaching `extent`: from
+    /// `first_coc`, growing by `2^(1/layers_per_doubling)`, the last clamped to `extent`; none
+    /// where `extent` is under half the first.
+    pub fn side(&self, extent: f32) -> Vec<f32> {
+        let mut cocs = Vec::new();
+        let mut j = 0;
+        while extent > self.first_coc * 0.5 && cocs.last().is_none_or(|&c: &f32| c < extent) {
+            cocs.push((self.first_coc * 2f32.powf(j as f32 / self.layers_per_doubling as f32)).min(extent));
+            j += 1;
+        }
+        cocs
+    }
+
+    /// Every candidate layer's signed CoC (px), front to back, reaching `max_coc` on both sides,
+    /// and the focus layer's index.
+    pub fn candidates(&self) -> (Vec<f32>, usize) {
+        let side = self.side(self.max_coc);
+        let cocs = side.iter().rev().map(|c| -c).chain(std::iter::once(0.0)).chain(side.iter().copied()).collect();
+        (cocs, side.len())
+    }
+}
+
+/// The Gaussian `σ` of a layer of CoC diameter `coc` (eq. 10: `d = 4σ`).
+pub fn sigma(coc: f32) -> f32 {
+    coc.abs() / 4.0
+}
+
+/// Normalised Gaussian weights for `σ`: the centre, then each distance up to `ceil(3σ)`.
+pub fn gaussian(sigma: f32) -> Vec<f32> {
+    let radius = (3.0 * sigma).ceil() as usize;
+    let w: Vec<f32> = (0..=radius).map(|i| (-((i * i) as f32) / (2.0 * sigma * sigma)).exp()).collect();
+    let total = w[0] + 2.0 * w[1..].iter().sum::<f32>();
+    w.iter().map(|v| v / total).collect()
+}
+
+/// What a layered context is created for.
+#[derive(Clone, Debug)]
+pub struct LayeredContextDesc {
+    pub max_width: u32,
+    pub max_height: u32,
+    /// Most fragment slots per pixel of the input.
+    pub max_layers: u32,
+    pub options: LayeredOptions,
+    /// Hold the buffers that image inputs and outputs go through.
+    pub image_io: bool,
+}
+
+impl LayeredContextDesc {
+    pub fn new(max_width: u32, max_height: u32, max_layers: u32, options: LayeredOptions) -> Self {
+        LayeredContextDesc { max_width, max_height, max_layers, options, image_io: false }
+    }
+}
+
+/// The premultiplied RGBA buffers the passes write.
+#[derive(Clone, Copy, PartialEq)]
+enum Buf {
+    Layer,
+    Far,
+    Near,
+}
+
+/// One step of the fixed schedule; every one is gated by a word of the device plan.
+enum Op {
+    Matte(u32),
+    Blur { buf: Buf, weights_at: u32, radius: u32, gate: u32 },
+    Composite { layer: Buf, acc: Buf, mode: u32, gate: u32 },
+}
+
+/// The dispatch sequence over the candidate layers, with every blur's weights.
+fn schedule(cocs: &[f32], focus: usize, cascaded: bool) -> (Vec<Op>, Vec<u32>) {
+    let mut ops = Vec::new();
+    let mut weights = Vec::new();
+    let mut blur = |ops: &mut Vec<Op>, buf: Buf, s: f32, gate: u32| {
+        if s > 0.0 {
+            let w = gaussian(s);
+            ops.push(Op::Blur { buf, weights_at: weights.len() as u32, radius: (w.len() - 1) as u32, gate });
+            weights.extend(w.iter().map(|v| v.to_bits()));
+        }
+    };
+    let s = |k: usize| sigma(cocs[k]);
+    let used = |k: usize| PLAN_USED + k as u32;
+    let n = cocs.len();
+    if !cascaded {
+        for k in (0..n).rev() {
+            ops.push(Op::Matte(k as u32));
+            blur(&mut ops, Buf::Layer, s(k), used(k));
+            ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Far, mode: OVER, gate: used(k) });
+        }
+        return (ops, weights);
+    }
+    // Behind the focus, from the back: blur by the step to layer k, then join layer k.
+    for k in (focus..n).rev() {
+        if k + 1 < n {
+            blur(&mut ops, Buf::Far, (s(k + 1).powi(2) - s(k).powi(2)).max(0.0).sqrt(), PLAN_FAR_GATE + k as u32);
+        }
+        ops.push(Op::Matte(k as u32));
+        ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Far, mode: OVER, gate: used(k) });
+    }
+    // In front, from the nearest: blur by the step to layer k, then join layer k behind.
+    for k in 0..focus {
+        if k > 0 {
+            blur(&mut ops, Buf::Near, (s(k - 1).powi(2) - s(k).powi(2)).max(0.0).sqrt(), PLAN_NEAR_GATE + k as u32);
+        }
+        ops.push(Op::Matte(k as u32));
+        ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Near, mode: UNDER, gate: used(k) });
+    }
+    if focus > 0 {
+        let gate = PLAN_NEAR_GATE + focus as u32;
+        blur(&mut ops, Buf::Near, s(focus - 1), gate);
+        ops.push(Op::Composite { layer: Buf::Near, acc: Buf::Far, mode: OVER, gate });
+    }
+    (ops, weights)
+}
+
+/// An `f32` from its [`dof_shaders::keys::sort_key`].
+fn from_key(key: u32) -> f32 {
+    if key >= 0x8000_0000 { f32::from_bits(key & 0x7fff_ffff) } else { f32::from_bits(!key) }
+}
+
+/// The buffers one frame's passes read and write.
+struct Passes {
+    /// The device plan ([`PLAN_WORDS`]): candidate CoCs, anchors, used flags, gates, range.
+    plan: BufferId,
+    /// Every blur's weights.
+    weights: BufferId,
+    /// Premultiplied RGBA, 4 words a pixel: the layer matted, the blur's intermediate, the far
+    /// and near composites.
+    layer: BufferId,
+    tmp: BufferId,
+    far: BufferId,
+    near: BufferId,
+}
+
+/// A layered-DoF context (see the [module docs](crate::frame)).
+pub struct LayeredContext {
+    desc: LayeredContextDesc,
+    cocs: Vec<f32>,
+    focus: usize,
+    ops: Vec<Op>,
+    passes: Passes,
+    io: Option<ImageIo>,
+    owned: Owned,
+}
+
+impl LayeredContext {
+    pub fn new(backend: &mut dyn Backend, desc: &LayeredContextDesc) -> Result<Self> {
+        desc.options.check()?;
+        let pixels = context_pixels(backend, "layered", desc.max_width, desc.max_height, desc.max_layers)?;
+        let (cocs, focus) = desc.options.candidates();
+        if cocs.len() > PLAN_LAYERS as usize {
+            return Err(Error::InvalidArgument(format!("{} candidate layers, the device plan holds {PLAN_LAYERS}", cocs.len())));
+        }
+        let (ops, weights) = schedule(&cocs, focus, desc.options.cascaded);
+        let max_words = backend.limits().max_buffer_bytes / 4;
+        if 4 * pixels > max_words {
+            return Err(Error::TooLarge { what: "layered/layer (words)".into(), size: 4 * pixels, limit: max_words });
+        }
+        let mut owned = Owned::default();
+        let made = (|| {
+            let passes = Passes {
+                plan: owned.make(backend, PLAN_WORDS as u64, "layered/plan")?,
+                weights: owned.make(backend, weights.len() as u64, "layered/weights")?,
+                layer: owned.make(backend, 4 * pixels, "layered/layer")?,
+                tmp: owned.make(backend, 4 * pixels, "layered/tmp")?,
+                far: owned.make(backend, 4 * pixels, "layered/far")?,
+                near: owned.make(backend, 4 * pixels, "layered/near")?,
+            };
+            backend.write_buffer(passes.plan, PLAN_COCS as u64, &cocs.iter().map(|c| c.to_bits()).collect::<Vec<_>>())?;
+            if !weights.is_empty() {
+                backend.write_buffer(passes.weights, 0, &weights)?;
+            }
+            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
+            Ok((passes, io))
+        })();
+        let ((passes, io), owned) = owned.or_free(backend, made)?;
+        let ctx = LayeredContext { desc: desc.clone(), cocs, focus, ops, passes, io, owned };
+        let mut kernels = dof_shaders::layered::KERNELS.to_vec();
+        kernels.extend(dof_shaders::frame_io::KERNELS);
+        ready(backend, ctx, &kernels, &[], Self::destroy)
+    }
+
+    pub fn destroy(self, backend: &mut dyn Backend) {
+        self.owned.free(backend);
+    }
+
+    pub fn device_bytes(&self) -> u64 {
+        self.owned.bytes()
+    }
+
+    pub fn options(&self) -> &LayeredOptions {
+        &self.desc.options
+    }
+
+    /// The candidate layers' signed CoC diameters (px), front to back, and the focus layer.
+    pub fn candidates(&self) -> (&[f32], usize) {
+        (&self.cocs, self.focus)
+    }
+
+    /// Records one frame: the composites cleared, the device plan, the fixed schedule of gated
+    /// mattes, blurs and composites, the normalisation.
+    pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        let d = &self.desc;
+        check_frame(backend, f, &self.owned, Extent::new(d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        let (input, counts) = record_input(backend, f, self.io.as_ref())?;
+        let output = output_buffer(f, self.io.as_ref())?;
+        let b = &self.passes;
+        let pixels = f.width as u64 * f.height as u64;
+        backend.fill(b.far, 0, 4 * pixels, 0, "layered/clear")?;
+        backend.fill(b.near, 0, 4 * pixels, 0, "layered/clear")?;
+        let layers = self.cocs.len() as u32;
+        let plan = LayeredPlanParams {
+            width: f.width,
+            height: f.height,
+            max_layers: f.layer_count(),
+            layers,
+            focus: self.focus as u32,
+            max_coc: d.options.max_coc,
+            lens: f.lens,
+            ..Default::default()
+        };
+        let plan_params = push_words(&plan);
+        backend.dispatch(&LAYERED_PLAN_BEGIN, [1, 1, 1], &[b.plan], &plan_params, "layered/plan")?;
+        backend.dispatch(
+            &LAYERED_PLAN_REACH,
+            groups_for(&LAYERED_PLAN_REACH, pixels),
+            &[input, counts, b.plan],
+            &plan_params,
+            "layered/plan",
+        )?;
+        backend.dispatch(&LAYERED_PLAN_END, [1, 1, 1], &[b.plan], &plan_params, "layered/plan")?;
+        let base =
+            LayeredParams { width: f.width, height: f.height, max_layers: f.layer_count(), layers, gate: ALWAYS, ..Default::default() };
+        // Every layered kernel runs one item a pixel with the same workgroup size.
+        let groups = groups_for(&LAYERED_MATTE_AT, pixels);
+        let id = |buf: Buf| match buf {
+            Buf::Layer => b.layer,
+            Buf::Far => b.far,
+            Buf::Near => b.near,
+        };
+        for op in &self.ops {
+            match *op {
+                Op::Matte(k) => {
+                    let p = LayeredParams { layer: k, gate: PLAN_USED + k, ..base };
+                    backend.dispatch(&LAYERED_MATTE_AT, groups, &[input, counts, b.plan, b.layer], &push_words(&p), "layered/matte")?;
+                }
+                Op::Blur { buf, weights_at, radius, gate } => {
+                    let h = LayeredParams { radius, weights_at, mode: 0, gate, ..base };
+                    let v = LayeredParams { mode: 1, ..h };
+                    backend.dispatch(&LAYERED_BLUR_GATED, groups, &[id(buf), b.weights, b.tmp, b.plan], &push_words(&h), "layered/blur")?;
+                    backend.dispatch(&LAYERED_BLUR_GATED, groups, &[b.tmp, b.weights, id(buf), b.plan], &push_words(&v), "layered/blur")?;
+                }
+                Op::Composite { layer, acc, mode, gate } => {
+                    let p = LayeredParams { mode, gate, ..base };
+                    backend.dispatch(
+                        &LAYERED_COMPOSITE_GATED,
+                        groups,
+                        &[id(layer), id(acc), b.plan],
+                        &push_words(&p),
+                        "layered/composite",
+                    )?;
+                }
+            }
+        }
+        backend.dispatch(&LAYERED_RESOLVE, groups, &[b.far, output], &push_words(&base), "layered/composite")?;
+        record_output(backend, f, self.io.as_ref())
+    }
+
+    /// The last frame's device plan: the signed-CoC range (px), the fragments beyond the cap, and
+    /// which candidate layers were used (reads the device: call once the frame completed).
+    pub fn plan(&self, backend: &mut dyn Backend) -> Result<LayeredPlanReport> {
+        self.owned.check(backend)?;
+        let words = backend.read_buffer(self.passes.plan, 0, PLAN_WORDS as u64)?;
+        let s = PLAN_STATS as usize;
+        let used = (0..self.cocs.len()).map(|k| words[PLAN_USED as usize + k] != 0).collect();
+        Ok(LayeredPlanReport { coc_range: (-from_key(words[s]), from_key(words[s + 1])), capped: words[s + 2] as u64, used })
+    }
+}
+
+/// What the device planned for a frame.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LayeredPlanReport {
+    /// Smallest and largest signed CoC present (px, capped at `max_coc`; 0 included).
+    pub coc_range: (f32, f32),
+    /// Fragments whose CoC exceeded `max_coc`.
+    pub capped: u64,
+    /// Per candidate layer, front to back: whether some fragment reached it.
+    pub used: Vec<bool>,
+}
+
+impl LayeredPlanReport {
+    pub fn used_layers(&self) -> usize {
+        self.used.iter().filter(|u| **u).count()
+    }
+}
+
+impl DofContext for LayeredContext {
+    fn method(&self) -> &'static str {
+        "layered"
+    }
+    fn extent(&self) -> Extent {
+        Extent::new(self.desc.max_width, self.desc.max_height, self.desc.max_layers)
+    }
+    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
+        LayeredContext::record(self, backend, frame)
+    }
+    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
+        let p = self.plan(backend)?;
+        let o = &self.desc.options;
+        let mut summary = format!(
+            "{} of {} candidate layers used for CoC {:.1} to {:.1} px, {}",
+            p.used_layers(),
+            self.cocs.len(),
+            p.coc_range.0,
+            p.coc_range.1,
+            if o.cascaded { "cascaded blurs" } else { "one blur per layer" }
+        );
+        if p.capped > 0 {
+            summary += &format!("; {} fragments beyond the {} px cap", p.capped, o.max_coc);
+        }
+        Ok(ContextReport {
+            summary,
+            figures: [
+                ("layers".to_string(), self.cocs.len() as f64),
+                ("used_layers".to_string(), p.used_layers() as f64),
+                ("coc_min".to_string(), p.coc_range.0 as f64),
+                ("coc_max".to_string(), p.coc_range.1 as f64),
+                ("capped".to_string(), p.capped as f64),
+            ]
+            .into(),
+            ..Default::default()
+        })
+    }
+    fn device_bytes(&self) -> u64 {
+        LayeredContext::device_bytes(self)
+    }
+    fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
+        let desc =
+            LayeredContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
+        let old = std::mem::replace(self, LayeredContext::new(backend, &desc)?);
+        old.destroy(backend);
+        Ok(())
+    }
+    fn destroy(self: Box<Self>, backend: &mut dyn Backend) {
+        LayeredContext::destroy(*self, backend)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn gaussian_weights_sum_to_one() {
+        for s in [0.25f32, 1.0, 7.3, 64.0] {
+            let w = gaussian(s);
+            let total = w[0] + 2.0 * w[1..].iter().sum::<f32>();
+            assert!((total - 1.0).abs() < 1e-5, "{s}: {total}");
+            assert_eq!(w.len(), (3.0 * s).ceil() as usize + 1);
+        }
+    }
+
+    #[test]
+    fn candidates_reach_the_cap_on_both_sides() {
+        let (cocs, focus) = LayeredOptions::default().candidates();
+        assert_eq!(cocs[focus], 0.0);
+        assert_eq!((cocs[0], cocs[cocs.len() - 1]), (-256.0, 256.0));
+        assert!(cocs.windows(2).all(|w| w[0] < w[1]));
+        let most = LayeredOptions { layers_per_doubling: 4, first_coc: 1.0, max_coc: 1024.0, ..Default::default() };
+        assert!(most.candidates().0.len() <= PLAN_LAYERS as usize);
+    }
+
+    #[test]
+    fn keys_decode_to_their_floats() {
+        use dof_shaders::keys::sort_key;
+        for v in [0.0f32, 1.5, -2.25, 256.0, -1e-3] {
+            assert_eq!(from_key(sort_key(v.to_bits())), v);
+        }
+    }
+}

@@ -97,7 +97,7 @@ fn splatting_methods_render_builtin_and_exr_scenes() {
 fn raytrace_layered_and_shaped_apertures_render() {
     let cases: [(&str, &[&str], &str); 4] = [
         ("raytrace", &["--spp", "4"], "rays per pixel"),
-        ("layered", &["--no-cascade"], "layers for CoC"),
+        ("layered", &["--no-cascade"], "layers used for CoC"),
         ("multilayer", &["--aperture", "blades:6:15:0.2"], "sort classes used"),
         ("bokeh", &["--aperture", "star:5"], "bright pixels detected"),
     ];
@@ -130,7 +130,10 @@ fn raytrace_layered_and_shaped_apertures_render() {
         ]);
         assert!(o.status.success(), "{method} on an EXR: {}", String::from_utf8_lossy(&o.stderr));
     }
-    assert_fails_with(&["render", "--method", "gather", "--aperture", "blades:6", "--width", "32", "--height", "32"], "splatting methods");
+    assert_fails_with(
+        &["render", "--method", "gather", "--aperture", "blades:6", "--width", "32", "--height", "32"],
+        "is supported by multilayer, tiled, bokeh only",
+    );
     assert_fails_with(&["render", "--method", "multilayer", "--aperture", "hexagon", "--width", "32", "--height", "32"], "blades:N");
     assert_fails_with(&["render", "--method", "raytrace", "--spp", "0", "--width", "32", "--height", "32"], "rays per pixel");
     assert_fails_with(

@@ -3,13 +3,11 @@
 
 use anyhow::{Context, bail};
 use dof::aperture::parse_aperture;
-use dof::frame::{BokehOptions, MethodOptions, RingGatherOptions, SplatOptions};
+use dof::frame::{BokehOptions, LayeredOptions, METHODS, MethodInfo, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
 use dof::io::{read_layered_exr, write_exr, write_layered_exr, write_png_preview};
 use dof::layers::RgbImage;
 use dof::layers::{LayeredImage, crop_plane};
-use dof::methods::layered::{LayeredOptions, layered};
 use dof::methods::one_shot::one_shot;
-use dof::methods::raytrace::{RaytraceOptions, raytrace};
 use dof::methods::splat::Merge;
 use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
 use dof::scene::{
@@ -19,7 +17,9 @@ use dof::scene::{
 use dof_shaders::lens::ThinLens;
 use std::path::{Path, PathBuf};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+/// What `dof render` makes: the pinhole image, the multi-layer image, a reference, or a frame
+/// through any method of the frame API's registry.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Method {
     /// The pinhole image (no blur): the front layer.
     Pinhole,
@@ -28,27 +28,44 @@ pub enum Method {
     /// The reference: thin-lens distributed ray tracing (built-in scenes), the accumulation buffer
     /// (Haeberli and Akeley 1990; glTF scenes; `--samples` renders, default 256).
     Reference,
-    /// The gathering baseline (Riguer et al. 2003; single layer, scatter-as-gather) on the chosen
-    /// backend.
-    Gather,
-    /// The engine-grade gather (after AMD FidelityFX DoF, Unreal Engine's Diaphragm DoF and Jimenez
-    /// 2014): half resolution, near and background fields over `--rings` sample rings.
-    RingGather,
-    /// Single-layer tiled splatting (Selgrad, Franke, Stamminger 2016: the front layer only) on the
-    /// chosen backend.
-    Tiled,
-    /// Multi-layer tiled splatting (Franke, Hofmann, Stamminger, Selgrad 2018) of the partial
-    /// multi-layer image on the chosen backend.
-    Multilayer,
-    /// Thin-lens ray tracing through the partial multi-layer image (after Lee et al. 2010; `--spp`
-    /// rays per pixel).
-    Raytrace,
-    /// Layered DoF with matting (Schedl, Wimmer 2012): depth layers blurred by Gaussians and
-    /// composited.
-    Layered,
-    /// Bokeh sprites (de Rousiers, Pettineo 2012): bright pixels drawn as aperture-shaped quads over
-    /// a gather.
-    Bokeh,
+    /// A method of the frame API (`dof::frame::METHODS`) on the chosen backend.
+    Frame(&'static MethodInfo),
+}
+
+impl Method {
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Pinhole => "pinhole",
+            Method::Layers => "layers",
+            Method::Reference => "reference",
+            Method::Frame(m) => m.name,
+        }
+    }
+
+    /// The registry method, where it is one.
+    fn frame(self) -> Option<&'static MethodInfo> {
+        match self {
+            Method::Frame(m) => Some(m),
+            _ => None,
+        }
+    }
+
+    /// `--method`'s values: the three of render's own, then the registry's, each with its help.
+    fn parser() -> impl clap::builder::TypedValueParser<Value = Method> {
+        use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+        let own = [
+            PossibleValue::new("pinhole").help("the pinhole image (no blur): the front layer"),
+            PossibleValue::new("layers").help("the partial multi-layer image as a multi-layer EXR"),
+            PossibleValue::new("reference").help("the exact reference (thin-lens ray tracing; the accumulation buffer for glTF)"),
+        ];
+        let registry = METHODS.iter().map(|m| PossibleValue::new(m.name).help(format!("{} ({})", m.title, m.paper)));
+        PossibleValuesParser::new(own.into_iter().chain(registry)).map(|name| match name.as_str() {
+            "pinhole" => Method::Pinhole,
+            "layers" => Method::Layers,
+            "reference" => Method::Reference,
+            other => Method::Frame(METHODS.iter().find(|m| m.name == other).unwrap_or(&METHODS[0])),
+        })
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -64,7 +81,7 @@ pub struct RenderArgs {
     /// `--backend`), or an EXR file (RGB+Z or multi-layer).
     #[arg(long, default_value = "simple")]
     scene: String,
-    #[arg(long, value_enum, default_value = "reference")]
+    #[arg(long, default_value = "reference", value_parser = Method::parser())]
     method: Method,
     /// Image size (built-in and glTF scenes; an EXR has its own).
     #[arg(long)]
@@ -194,34 +211,30 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         }
     }
     // Options a method would otherwise ignore.
-    if args.aperture != "circle" && !matches!(args.method, Method::Tiled | Method::Multilayer | Method::Bokeh) {
-        bail!(
-            "--aperture {} is supported by the splatting methods and bokeh sprites only; {:?} uses the circle",
-            args.aperture,
-            args.method
-        );
+    let which = |pick: fn(&MethodInfo) -> bool| METHODS.iter().filter(|m| pick(m)).map(|m| m.name).collect::<Vec<_>>().join(", ");
+    let method = args.method.frame();
+    if args.aperture != "circle" && !method.is_some_and(|m| m.shaped_aperture) {
+        bail!("--aperture {} is supported by {} only; {} uses the circle", args.aperture, which(|m| m.shaped_aperture), args.method.name());
     }
-    if args.max_coc.is_some()
-        && !matches!(args.method, Method::Gather | Method::RingGather | Method::Tiled | Method::Multilayer | Method::Layered)
-    {
-        bail!("--max-coc caps the blur of gather, ring-gather, tiled, multilayer and layered only; {:?} does not take it", args.method);
+    if args.max_coc.is_some() && !method.is_some_and(|m| m.caps_coc) {
+        bail!("--max-coc caps the blur of {} only; {} does not take it", which(|m| m.caps_coc), args.method.name());
     }
-    if args.rings != dof::methods::ring_gather::DEFAULT_RINGS && args.method != Method::RingGather {
-        bail!("--rings is the ring gather's knob; {:?} does not take it", args.method);
+    if args.rings != dof::methods::ring_gather::DEFAULT_RINGS && !method.is_some_and(|m| m.knob.is_some_and(|k| k.name == "rings")) {
+        bail!("--rings is the ring gather's knob; {} does not take it", args.method.name());
     }
-    match (args.max_coc, args.method) {
+    match (args.max_coc, args.method.name()) {
         (Some(0), _) => bail!("--max-coc is a CoC diameter of at least 1 px, got 0"),
-        (Some(d), Method::Gather) if d.div_ceil(2) > dof::methods::gather::MAX_RADIUS => {
+        (Some(d), "gather") if d.div_ceil(2) > dof::methods::gather::MAX_RADIUS => {
             bail!(
                 "--max-coc for gather is at most {} px (its window of radius {} px), got {d}",
                 2 * dof::methods::gather::MAX_RADIUS,
                 dof::methods::gather::MAX_RADIUS
             )
         }
-        (Some(d), Method::RingGather) if d.div_ceil(2) > dof::methods::ring_gather::MAX_RADIUS => {
+        (Some(d), "ring-gather") if d.div_ceil(2) > dof::methods::ring_gather::MAX_RADIUS => {
             bail!("--max-coc for ring-gather is at most {} px, got {d}", 2 * dof::methods::ring_gather::MAX_RADIUS)
         }
-        (Some(d), Method::Layered) if d > 1024 => bail!("--max-coc for layered is at most 1024 px, got {d}"),
+        (Some(d), "layered") if d > 1024 => bail!("--max-coc for layered is at most 1024 px, got {d}"),
         _ => {}
     }
     if !(args.exposure > 0.0 && args.exposure.is_finite()) {
@@ -353,7 +366,7 @@ use super::MAX_SAMPLES;
 
 pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
     let name = Path::new(&args.scene).file_stem().and_then(|s| s.to_str()).unwrap_or("scene").to_string();
-    let method = format!("{:?}", args.method).to_lowercase();
+    let method = args.method.name();
     let out = args.out.clone().unwrap_or_else(|| PathBuf::from(format!("out/{name}-{method}.exr")));
     if out.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() != Some("exr") {
         bail!("--out must name an .exr file (a PNG preview is written beside it), got {}", out.display());
@@ -397,7 +410,7 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             Ok(())
         }
         Method::Reference => bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)"),
-        Method::Gather | Method::RingGather | Method::Tiled | Method::Multilayer | Method::Raytrace | Method::Layered | Method::Bokeh => {
+        Method::Frame(_) => {
             let lens = exr_lens(args, &layers)?;
             // Nothing lies beyond an EXR's frame: its edge pixels are extended outwards as far as
             // its largest CoC reaches (the edge policy, the same for every method).
@@ -467,57 +480,12 @@ pub(crate) fn edge_margin(layers: &LayeredImage, lens: &ThinLens) -> u32 {
 fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) -> anyhow::Result<(RgbImage, Vec<f32>)> {
     let mut b = backend(args.backend)?;
     let (_, depth) = layers.front();
-    let image = match args.method {
-        Method::Layered => {
-            let mut options =
-                LayeredOptions { cascaded: !args.no_cascade, layers_per_doubling: args.layers_per_doubling, ..Default::default() };
-            if let Some(d) = args.max_coc {
-                options.max_coc = d as f32;
-            }
-            let out = layered(b.as_mut(), layers, lens, &options)?;
-            let ms: f64 = out.times.iter().map(|t| t.ms).sum();
-            let p = &out.plan;
-            println!(
-                "layered DoF on {}: {} layers for CoC {:.1} to {:.1} px ({} used, {} empty and skipped), {} blurs ({}), widest radius {} px, {ms:.2} ms in kernels{}",
-                b.device_name(),
-                p.cocs.len(),
-                p.coc_range.0,
-                p.coc_range.1,
-                p.used_layers(),
-                p.cocs.len() - p.used_layers(),
-                out.blurs,
-                if options.cascaded { "cascaded" } else { "one per layer" },
-                out.widest_radius,
-                if p.capped > 0 { format!("; {} fragments beyond the {} px cap", p.capped, options.max_coc) } else { String::new() }
-            );
-            out.image
-        }
-        Method::Raytrace => {
-            let options = RaytraceOptions { spp: args.samples.unwrap_or(16), ..Default::default() };
-            let traced = raytrace(b.as_mut(), layers, lens, &options)?;
-            let ms: f64 = traced.times.iter().map(|t| t.ms).sum();
-            println!(
-                "ray tracing on {}: {} rays per pixel, {}-level hierarchy, {ms:.2} ms in kernels; {} of {} rays ({:.2}%) hit no stored fragment",
-                b.device_name(),
-                options.spp,
-                traced.levels,
-                traced.missed_rays,
-                traced.rays,
-                100.0 * traced.missed_rays as f64 / traced.rays.max(1) as f64
-            );
-            traced.image
-        }
-        _ => {
-            // A method of the frame API, through its registry entry.
-            let name = clap::ValueEnum::to_possible_value(&args.method).map(|v| v.get_name().to_string()).unwrap_or_default();
-            let method = dof::frame::registry::method(&name)?;
-            let out = one_shot(b.as_mut(), method, &method_options(args)?, layers, lens)?;
-            let ms: f64 = out.stages.iter().map(|t| t.ms).sum();
-            println!("{} ({}) on {}: {ms:.2} ms in kernels", method.title, method.paper, b.device_name());
-            println!("{}", out.report.summary);
-            out.image
-        }
-    };
+    let Method::Frame(method) = args.method else { bail!("{} is not a blurring method", args.method.name()) };
+    let out = one_shot(b.as_mut(), method, &method_options(args)?, layers, lens)?;
+    let ms: f64 = out.stages.iter().map(|t| t.ms).sum();
+    println!("{} ({}) on {}: {ms:.2} ms in kernels", method.title, method.paper, b.device_name());
+    println!("{}", out.report.summary);
+    let image = out.image;
     Ok((image.crop(margin), crop_plane(&depth, layers.width, margin)))
 }
 
@@ -536,8 +504,13 @@ fn method_options(args: &RenderArgs) -> anyhow::Result<MethodOptions> {
         gather_max_radius: args.max_coc.map(|d| d.div_ceil(2)),
         ring_gather: RingGatherOptions { rings: args.rings, max_radius: args.max_coc.map_or(ring_defaults.max_radius, |d| d.div_ceil(2)) },
         bokeh: BokehOptions { lum_threshold: args.lum_threshold, capacity: args.sprites, aperture, ..Default::default() },
-        // Ray tracing and layered DoF run through their own branches of `blur`.
-        ..Default::default()
+        raytrace: RaytraceOptions { spp: args.samples.unwrap_or(16), ..Default::default() },
+        layered: LayeredOptions {
+            cascaded: !args.no_cascade,
+            layers_per_doubling: args.layers_per_doubling,
+            max_coc: args.max_coc.map_or(LayeredOptions::default().max_coc, |d| d as f32),
+            ..Default::default()
+        },
     })
 }
 

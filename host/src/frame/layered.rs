@@ -405,6 +405,7 @@ impl DofContext for LayeredContext {
         LayeredContext::device_bytes(self)
     }
     fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
+        self.owned.check(backend)?;
         let desc =
             LayeredContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
         let old = std::mem::replace(self, LayeredContext::new(backend, &desc)?);

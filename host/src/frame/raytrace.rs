@@ -249,6 +249,7 @@ impl DofContext for RaytraceContext {
         RaytraceContext::device_bytes(self)
     }
     fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
+        self.owned.check(backend)?;
         let desc =
             RaytraceContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
         let old = std::mem::replace(self, RaytraceContext::new(backend, &desc)?);

@@ -82,6 +82,8 @@ pub struct MethodInfo {
     pub shaped_aperture: bool,
     /// Whether it reads the tile size and merging of [`SplatOptions`].
     pub tiles: bool,
+    /// Whether it takes a cap on the CoC (`--max-coc`: each method's own radius or diameter cap).
+    pub caps_coc: bool,
     /// Makes its context: checks the options and the extent, allocates every buffer.
     pub create: fn(&mut dyn Backend, &ContextDesc) -> Result<Box<dyn DofContext>>,
 }
@@ -114,6 +116,7 @@ pub static METHODS: &[MethodInfo] = &[
         knob: None,
         shaped_aperture: true,
         tiles: true,
+        caps_coc: true,
         create: |b, d| create_splat(b, d, "multilayer"),
     },
     MethodInfo {
@@ -124,6 +127,7 @@ pub static METHODS: &[MethodInfo] = &[
         knob: None,
         shaped_aperture: true,
         tiles: true,
+        caps_coc: true,
         create: |b, d| create_splat(b, d, "tiled"),
     },
     MethodInfo {
@@ -134,6 +138,7 @@ pub static METHODS: &[MethodInfo] = &[
         knob: None,
         shaped_aperture: false,
         tiles: false,
+        caps_coc: true,
         create: |b, d| {
             let desc = GatherContextDesc {
                 max_radius: d.options.gather_max_radius,
@@ -151,6 +156,7 @@ pub static METHODS: &[MethodInfo] = &[
         knob: Some(Knob { name: "rings", min: 1, max: MAX_SAMPLE_RINGS, default: DEFAULT_RINGS }),
         shaped_aperture: false,
         tiles: false,
+        caps_coc: true,
         create: |b, d| {
             let desc = RingGatherContextDesc {
                 options: d.options.ring_gather,
@@ -168,6 +174,7 @@ pub static METHODS: &[MethodInfo] = &[
         knob: None,
         shaped_aperture: true,
         tiles: false,
+        caps_coc: false,
         create: |b, d| {
             let desc = BokehContextDesc {
                 image_io: d.image_io,
@@ -184,6 +191,7 @@ pub static METHODS: &[MethodInfo] = &[
         knob: None,
         shaped_aperture: false,
         tiles: false,
+        caps_coc: false,
         create: |b, d| {
             let desc = RaytraceContextDesc {
                 image_io: d.image_io,
@@ -200,6 +208,7 @@ pub static METHODS: &[MethodInfo] = &[
         knob: None,
         shaped_aperture: false,
         tiles: false,
+        caps_coc: true,
         create: |b, d| {
             let desc = LayeredContextDesc {
                 image_io: d.image_io,

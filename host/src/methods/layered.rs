@@ -225,12 +225,12 @@ pub fn layered(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens,
     let mut weights: Vec<u32> = Vec::new();
     let mut blurs: Vec<(u32, u32)> = Vec::new();
     for op in &ops {
-        if let Op::Blur(_, s) = op {
-            if *s >= MIN_SIGMA {
-                let w = gaussian(*s);
-                blurs.push((weights.len() as u32, (w.len() - 1) as u32));
-                weights.extend(w.iter().map(|v| v.to_bits()));
-            }
+        if let Op::Blur(_, s) = op
+            && *s >= MIN_SIGMA
+        {
+            let w = gaussian(*s);
+            blurs.push((weights.len() as u32, (w.len() - 1) as u32));
+            weights.extend(w.iter().map(|v| v.to_bits()));
         }
     }
     let slots = pixels * image.max_layers as u64;

@@ -463,9 +463,9 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
             if !small && !must_refuse {
                 return None;
             }
-            let options = RingGatherOptions { rings, max_radius };
+            let options = RingGatherOptions { rings: *rings, max_radius: *max_radius };
             // Out-of-range options must be refused too.
-            must_refuse |= !(1..=ring_gather::MAX_SAMPLE_RINGS).contains(&rings) || !(1..=ring_gather::MAX_RADIUS).contains(&max_radius);
+            must_refuse |= !(1..=ring_gather::MAX_SAMPLE_RINGS).contains(rings) || !(1..=ring_gather::MAX_RADIUS).contains(max_radius);
             let desc = RingGatherContextDesc { max_width: w, max_height: h, max_layers: layers, options, image_io: c.image_io };
             RingGatherContext::new(b, &desc).map(|c| Box::new(c) as Box<dyn DofContext>)
         }

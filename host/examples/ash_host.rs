@@ -28,7 +28,7 @@
 use anyhow::{Context, Result, bail, ensure};
 use dof::backend::vulkan::ash::vk::{AccessFlags as Access, ImageLayout as Layout};
 use dof::backend::vulkan::ash::{self, vk};
-use dof::backend::{Backend, BackendCounters, CommandTime, CpuBackend, ImageFormat, ImageRef, RawDevice, RawOptions, VulkanBackend};
+use dof::backend::{Backend, BackendCounters, CommandTime, CpuBackend, ImageRef, RawDevice, RawOptions, VulkanBackend};
 use dof::frame::{DepthEncoding, Frame, FrameInput, FrameOutput, SplatContext, SplatContextDesc};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::splat::{Merge, SplatOptions, splat};
@@ -403,8 +403,11 @@ fn run_frame(
     // a renderer's next pass (tone mapping, UI) would sample it.
     // SAFETY: our live RGBA32F image of this extent, TRANSFER_DST|TRANSFER_SRC|SAMPLED usage, on the
     // backend's queue family, in the declared layout when the copy runs; alive until the fence.
-    let (layout, written) = (Layout::TRANSFER_DST_OPTIMAL, Access::TRANSFER_WRITE);
-    let out_ref = unsafe { ImageRef::vulkan(output, ImageFormat::Rgba32Float, extent, layout, TRANSFER, written, shader_read) };
+    let out_ref = ImageRef::describe(output, vk::Format::R32G32B32A32_SFLOAT, extent)?
+        .in_layout(Layout::TRANSFER_DST_OPTIMAL)
+        .after(TRANSFER, Access::TRANSFER_WRITE)
+        .leave_in(shader_read);
+    let out_ref = unsafe { out_ref.build() };
     let frame = Frame { width: extent[0], height: extent[1], lens, input, output: FrameOutput::Image(out_ref) };
 
     // The library's part, recorded into our command buffer. Between begin_external and end_external
@@ -610,11 +613,12 @@ fn main() -> Result<ExitCode> {
             // has written them since, so there is no write to name. They stay in that layout.
             // SAFETY: our live RGBA32F and R32F images of this extent with TRANSFER_SRC usage, on the
             // backend's queue family, in the declared layout; alive until the fence.
-            let image = |image: vk::Image, format: ImageFormat| unsafe {
-                let layout = Layout::SHADER_READ_ONLY_OPTIMAL;
-                ImageRef::vulkan(image, format, extent, layout, COMPUTE, Access::empty(), layout)
+            let image = |image: vk::Image, format: vk::Format| -> dof::Result<ImageRef> {
+                let desc =
+                    ImageRef::describe(image, format, extent)?.in_layout(Layout::SHADER_READ_ONLY_OPTIMAL).after(COMPUTE, Access::empty());
+                Ok(unsafe { desc.build() })
             };
-            let (color, depth) = (image(colour_image, ImageFormat::Rgba32Float), image(depth_image, ImageFormat::R32Float));
+            let (color, depth) = (image(colour_image, vk::Format::R32G32B32A32_SFLOAT)?, image(depth_image, vk::Format::R32_SFLOAT)?);
             let input = FrameInput::Images { color, depth, encoding: DepthEncoding::Linear };
             (default_lens, input, "single-layer")
         };

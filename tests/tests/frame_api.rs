@@ -313,3 +313,36 @@ fn a_bokeh_context_records_frames_like_the_one_shot_path_on_vulkan() {
     bokeh_frames(&mut vk);
     assert_clean(&mut vk);
 }
+
+/// Images are described by name, and their formats come from Vulkan's: the three the frame API
+/// copies are accepted, anything else is refused naming the ones there are.
+#[test]
+fn images_are_described_by_name_with_formats_from_vulkan() {
+    use dof::backend::ImageFormat;
+    use dof::backend::vulkan::ash::vk::{self, Handle};
+    assert_eq!(ImageFormat::try_from(vk::Format::R16G16B16A16_SFLOAT).unwrap(), ImageFormat::Rgba16Float);
+    assert_eq!(ImageFormat::try_from(vk::Format::R32_SFLOAT).unwrap(), ImageFormat::R32Float);
+    let refused = ImageFormat::try_from(vk::Format::D32_SFLOAT).unwrap_err().to_string();
+    assert!(refused.contains("D32_SFLOAT") && refused.contains("R32G32B32A32_SFLOAT"), "{refused}");
+    assert!(dof::backend::ImageRef::describe(vk::Image::null(), vk::Format::B8G8R8A8_UNORM, [4, 4]).is_err());
+    let image = vk::Image::from_raw(7);
+    let desc = dof::backend::ImageRef::describe(image, vk::Format::R32G32B32A32_SFLOAT, [640, 360]).unwrap();
+    // SAFETY: never recorded; only the description is compared.
+    let kept = unsafe { desc.in_layout(vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL).build() };
+    assert_eq!((kept.handle(), kept.extent, kept.format), (7, [640, 360], ImageFormat::Rgba32Float));
+    assert_eq!(kept.final_layout, vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL, "left in the layout it was in");
+    // SAFETY: as above.
+    let written = unsafe {
+        desc.in_layout(vk::ImageLayout::UNDEFINED)
+            .after(vk::PipelineStageFlags::TRANSFER, vk::AccessFlags::TRANSFER_WRITE)
+            .leave_in(vk::ImageLayout::TRANSFER_SRC_OPTIMAL)
+            .build()
+    };
+    assert_eq!(
+        (written.layout, written.stage, written.access),
+        (vk::ImageLayout::UNDEFINED, vk::PipelineStageFlags::TRANSFER, vk::AccessFlags::TRANSFER_WRITE)
+    );
+    assert_eq!(written.final_layout, vk::ImageLayout::TRANSFER_SRC_OPTIMAL);
+    // SAFETY: as above.
+    assert_eq!(unsafe { desc.in_layout(vk::ImageLayout::UNDEFINED).build() }.final_layout, vk::ImageLayout::GENERAL);
+}

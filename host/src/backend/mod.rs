@@ -168,6 +168,21 @@ impl ImageFormat {
     }
 }
 
+impl TryFrom<ash::vk::Format> for ImageFormat {
+    type Error = Error;
+    /// The image format of a Vulkan format, or an error naming the formats there are.
+    fn try_from(format: ash::vk::Format) -> Result<Self> {
+        [ImageFormat::Rgba32Float, ImageFormat::R32Float, ImageFormat::Rgba16Float]
+            .into_iter()
+            .find(|f| f.vk_format() == format)
+            .ok_or_else(|| {
+                Error::InvalidArgument(format!(
+                    "images of {format:?} cannot be copied; the formats are R32G32B32A32_SFLOAT, R16G16B16A16_SFLOAT and R32_SFLOAT"
+                ))
+            })
+    }
+}
+
 /// A 2D image the caller owns, and the synchronisation state it is in, for `copy_image_to_buffer`
 /// and `copy_buffer_to_image`. The state is in Vulkan terms (the only backend with images); the copy
 /// covers mip level 0, array layer 0, colour aspect, the whole `extent`.
@@ -217,6 +232,22 @@ impl ImageRef {
         ImageRef { handle: image.as_raw(), format, extent, layout, stage, access, final_layout }
     }
 
+    /// Starts describing a caller's Vulkan image of `format` and `extent` (see [`ImageDesc`]):
+    /// the format is checked now, the state is named with the builder's methods.
+    pub fn describe(image: ash::vk::Image, format: ash::vk::Format, extent: [u32; 2]) -> Result<ImageDesc> {
+        let format = ImageFormat::try_from(format)?;
+        let layout = ash::vk::ImageLayout::GENERAL;
+        Ok(ImageDesc {
+            image,
+            format,
+            extent,
+            layout,
+            stage: ash::vk::PipelineStageFlags::empty(),
+            access: ash::vk::AccessFlags::empty(),
+            final_layout: None,
+        })
+    }
+
     /// The raw Vulkan handle.
     pub fn handle(&self) -> u64 {
         self.handle
@@ -225,6 +256,66 @@ impl ImageRef {
     /// Words the image takes in a buffer.
     pub fn words(&self) -> u64 {
         self.format.words_per_pixel() * self.extent[0] as u64 * self.extent[1] as u64
+    }
+}
+
+/// An [`ImageRef`] being described, by name rather than by position: the image is in GENERAL with
+/// nothing to wait for and is left in the layout it was in, unless told otherwise.
+///
+/// ```no_run
+/// # use dof::backend::ImageRef;
+/// # use dof::backend::vulkan::ash::vk;
+/// # fn f(image: vk::Image) -> dof::Result<ImageRef> {
+/// let colour = ImageRef::describe(image, vk::Format::R16G16B16A16_SFLOAT, [1920, 1080])?
+///     .in_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+///     .after(vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT, vk::AccessFlags::COLOR_ATTACHMENT_WRITE)
+///     .leave_in(vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL);
+/// // SAFETY: the caller's image, as `ImageRef::vulkan` requires.
+/// Ok(unsafe { colour.build() })
+/// # }
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct ImageDesc {
+    image: ash::vk::Image,
+    format: ImageFormat,
+    extent: [u32; 2],
+    layout: ash::vk::ImageLayout,
+    stage: ash::vk::PipelineStageFlags,
+    access: ash::vk::AccessFlags,
+    final_layout: Option<ash::vk::ImageLayout>,
+}
+
+impl ImageDesc {
+    /// The layout the image is in when the frame's copy runs (UNDEFINED discards its contents:
+    /// allowed only for an image the frame writes).
+    pub fn in_layout(self, layout: ash::vk::ImageLayout) -> Self {
+        ImageDesc { layout, ..self }
+    }
+
+    /// The caller's last access of the image, which the frame waits for and makes visible.
+    pub fn after(self, stage: ash::vk::PipelineStageFlags, access: ash::vk::AccessFlags) -> Self {
+        ImageDesc { stage, access, ..self }
+    }
+
+    /// The layout to leave the image in (default: the layout it was in; GENERAL after UNDEFINED).
+    pub fn leave_in(self, final_layout: ash::vk::ImageLayout) -> Self {
+        ImageDesc { final_layout: Some(final_layout), ..self }
+    }
+
+    /// The description.
+    ///
+    /// # Safety
+    ///
+    /// As for [`ImageRef::vulkan`]: a live 2D image of the backend's device with this format and
+    /// at least this extent, the usages the copies need, in the named layout when the frame runs.
+    pub unsafe fn build(self) -> ImageRef {
+        use ash::vk::ImageLayout;
+        let final_layout = self.final_layout.unwrap_or(match self.layout {
+            ImageLayout::UNDEFINED | ImageLayout::PREINITIALIZED => ImageLayout::GENERAL,
+            other => other,
+        });
+        // SAFETY: the caller's contract, passed on.
+        unsafe { ImageRef::vulkan(self.image, self.format, self.extent, self.layout, self.stage, self.access, final_layout) }
     }
 }
 

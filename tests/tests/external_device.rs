@@ -701,6 +701,22 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
     assert_eq!(vk.read_buffer(imported, 0, 16).unwrap(), vec![3; 16]);
     assert_eq!(vk.read_buffer(mine, 0, 4).unwrap(), vec![4; 4]);
     assert_eq!(vk.take_external_times().unwrap().map(|t| t.len()), Some(2));
+    assert_eq!(vk.take_external_times().unwrap().map(|t| t.len()), Some(0), "taken once");
+
+    // Two recordings in one submission keep their own times, taken oldest first.
+    r.begin();
+    for fills in [1u64, 3] {
+        // SAFETY: the renderer's command buffer is recording, outside a render pass.
+        unsafe { vk.begin_external(r.cb) }.expect("begin_external");
+        for i in 0..fills {
+            vk.fill(imported, i, 1, 9, "per-recording").expect("fill");
+        }
+        vk.end_external().expect("end_external");
+    }
+    r.submit_and_wait();
+    assert_eq!(vk.take_external_times().unwrap().map(|t| t.len()), Some(1), "the first recording's times");
+    assert_eq!(vk.take_external_times().unwrap().map(|t| t.len()), Some(3), "the second recording's times");
+    assert_eq!(vk.take_external_times().unwrap().map(|t| t.len()), Some(0));
 
     // The CPU backend has no images.
     let mut cpu = CpuBackend::new();

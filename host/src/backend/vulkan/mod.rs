@@ -392,11 +392,12 @@ impl VulkanBackend {
         self.recorder.is_external()
     }
 
-    /// The timings of the last ended external recording, one per timed command as `submit` returns
-    /// them: `Ok(None)` while the device has not run it all (never blocks: call it after the
-    /// caller's fence signalled); `Ok(Some(times))` once, after which they are gone (an empty list
-    /// when there is nothing to take). A `begin_external` drops times not taken. On a queue without
-    /// timestamps the times are NaN.
+    /// The timings of the oldest ended external recording whose times were not taken, one per
+    /// timed command as `submit` returns them: `Ok(None)` while the device has not run it all (never
+    /// blocks: call it after the caller's fence signalled); `Ok(Some(times))` once, after which they
+    /// are gone (an empty list when there is nothing to take). Every recording keeps its own times,
+    /// also several in one submission or frames in flight; past eight recordings not taken, the
+    /// oldest one's are dropped. On a queue without timestamps the times are NaN.
     pub fn take_external_times(&mut self) -> Result<Option<Vec<CommandTime>>> {
         self.recorder.take_external_times(&self.device)
     }

@@ -17,12 +17,15 @@ use super::instance::DeviceCtx;
 use crate::backend::CommandTime;
 use crate::error::{Result, VkContext};
 use ash::vk;
-use std::collections::HashSet;
+use std::collections::{HashSet, VecDeque};
 
 /// Timed commands per query pool; a recording timing more commands uses more pools.
 pub(super) const TIMED_PER_POOL: u32 = 2048;
 /// Timestamp queries per timed command: before, a second before (see `record`), after.
 const QUERIES: u32 = 3;
+/// External recordings whose times wait to be taken at most (a caller that never takes them
+/// keeps this many sets of query pools).
+pub(super) const MAX_PENDING_RECORDINGS: usize = 8;
 
 /// Query pools for one kind of recording and the timed commands of the recording using them.
 #[derive(Default)]
@@ -111,9 +114,13 @@ pub(super) struct Recorder {
     main_queries: Queries,
     /// The caller's command buffer, between `begin_external` and `end_external`.
     external: Option<vk::CommandBuffer>,
+    /// The open external recording's query pools and timed commands.
     external_queries: Queries,
-    /// Timed commands of the last ended external recording whose times were not taken yet.
-    external_pending: Option<Vec<(String, &'static str)>>,
+    /// Ended external recordings whose times were not taken yet, oldest first, each with its own
+    /// query pools (so two recordings in one submission, or frames in flight, keep their times).
+    external_pending: VecDeque<Queries>,
+    /// Query pools of recordings whose times were taken, to be used again.
+    external_spare: Vec<Queries>,
     /// Timings of submitted work not yet returned by `take_times`.
     done: Vec<CommandTime>,
     /// `vkQueueSubmit` calls so far.
@@ -141,7 +148,8 @@ impl Recorder {
             main_queries: Queries::default(),
             external: None,
             external_queries: Queries::default(),
-            external_pending: None,
+            external_pending: VecDeque::new(),
+            external_spare: Vec::new(),
             done: Vec::new(),
             submissions: 0,
             touched: None,
@@ -352,12 +360,19 @@ impl Recorder {
 
     /// Starts recording into the caller's command buffer `cb` (recording, outside a render pass),
     /// with a barrier ordering the caller's earlier work before the backend's commands. The
-    /// backend's own command buffer must hold nothing (callers flush first). Times of an earlier
-    /// external recording not taken yet are dropped.
+    /// backend's own command buffer must hold nothing (callers flush first). Each recording times
+    /// its commands with query pools of its own; past [`MAX_PENDING_RECORDINGS`] recordings whose
+    /// times were not taken, the oldest one's are dropped.
     pub fn begin_external(&mut self, ctx: &DeviceCtx, cb: vk::CommandBuffer) {
         self.external = Some(cb);
+        if self.external_pending.len() >= MAX_PENDING_RECORDINGS {
+            // Its pools are reset by this recording's commands, after its own on the queue.
+            if let Some(oldest) = self.external_pending.pop_front() {
+                self.external_spare.push(oldest);
+            }
+        }
+        self.external_queries = self.external_spare.pop().unwrap_or_default();
         self.external_queries.begin();
-        self.external_pending = None;
         let g = self.graphics;
         let graphics = |flags: vk::PipelineStageFlags| if g { flags } else { vk::PipelineStageFlags::empty() };
         let colour = if g { vk::AccessFlags::COLOR_ATTACHMENT_WRITE } else { vk::AccessFlags::empty() };
@@ -394,25 +409,28 @@ impl Recorder {
             | vk::AccessFlags::TRANSFER_WRITE
             | if g { vk::AccessFlags::COLOR_ATTACHMENT_WRITE } else { vk::AccessFlags::empty() };
         barrier(&ctx.device, cb, src, src_access, later_stages(g), later_accesses(g));
-        self.external_pending = Some(std::mem::take(&mut self.external_queries.timed));
+        self.external_pending.push_back(std::mem::take(&mut self.external_queries));
         self.touched = None;
     }
 
-    /// The timings of the last ended external recording, once the device has written them all:
-    /// `Ok(None)` until then (never blocks); `Ok(Some(..))` once, after which they are gone
-    /// (`Some` of an empty list when there is nothing to take). Without timestamps the times are NaN.
+    /// The timings of the oldest ended external recording whose times were not taken, once the
+    /// device has written them all: `Ok(None)` until then (never blocks); `Ok(Some(..))` once, after
+    /// which they are gone (`Some` of an empty list when there is nothing to take). Without
+    /// timestamps the times are NaN.
     pub fn take_external_times(&mut self, ctx: &DeviceCtx) -> Result<Option<Vec<CommandTime>>> {
-        let Some(timed) = self.external_pending.take() else { return Ok(Some(Vec::new())) };
-        if !self.timestamps || timed.is_empty() {
-            return Ok(Some(self.times(timed, None)));
-        }
-        match self.external_queries.stamps(&ctx.device, timed.len(), false)? {
-            Some(stamps) => Ok(Some(self.times(timed, Some(&stamps)))),
-            None => {
-                self.external_pending = Some(timed);
-                Ok(None)
+        let Some(oldest) = self.external_pending.front() else { return Ok(Some(Vec::new())) };
+        let stamps = if !self.timestamps || oldest.timed.is_empty() {
+            None
+        } else {
+            match oldest.stamps(&ctx.device, oldest.timed.len(), false)? {
+                Some(stamps) => Some(stamps),
+                None => return Ok(None),
             }
-        }
+        };
+        let Some(mut done) = self.external_pending.pop_front() else { return Ok(Some(Vec::new())) };
+        let times = self.times(std::mem::take(&mut done.timed), stamps.as_deref());
+        self.external_spare.push(done);
+        Ok(Some(times))
     }
 
     /// Destroys the pool (and its command buffers), the fence and the query pools. The GPU must be
@@ -420,6 +438,9 @@ impl Recorder {
     pub fn destroy(&mut self, device: &ash::Device) {
         self.main_queries.destroy(device);
         self.external_queries.destroy(device);
+        for mut q in self.external_pending.drain(..).chain(self.external_spare.drain(..)) {
+            q.destroy(device);
+        }
         // SAFETY: nothing is pending; null handles are ignored.
         unsafe {
             device.destroy_fence(self.fence, None);

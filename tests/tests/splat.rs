@@ -4,7 +4,7 @@
 use dof::Error;
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::{Fragment, LayeredImage};
-use dof::methods::splat::{Merge, SplatOptions, SplatOutput, splat};
+use dof::methods::splat::{Merge, SplatOptions, SplatOutput, splat, splat_with_stages};
 use dof::stress::{hash, noise_with_sky, test_lens};
 use dof_shaders::half::{f16_to_f32, f32_to_f16};
 use dof_shaders::lens::ThinLens;
@@ -259,10 +259,10 @@ fn vulkan_matches_cpu_stage_by_stage() {
     let Some(mut vk) = vulkan() else { return };
     let img = noise_with_sky(61, 37, 3);
     for (merge, tile, aperture) in [(Merge::X4, 16, 0.01), (Merge::None, 24, 0.004), (Merge::X2, 32, 0.02)] {
-        let o = SplatOptions { merge, tile, keep_intermediates: true, ..Default::default() };
-        let on_vk = splat(&mut vk, &img, &lens(aperture), &o).unwrap();
+        let o = SplatOptions { merge, tile, ..Default::default() };
+        let on_vk = splat_with_stages(&mut vk, &img, &lens(aperture), &o).unwrap();
         assert_clean(&mut vk);
-        let on_cpu = splat(&mut CpuBackend::new(), &img, &lens(aperture), &o).unwrap();
+        let on_cpu = splat_with_stages(&mut CpuBackend::new(), &img, &lens(aperture), &o).unwrap();
         let (a, b) = (on_vk.intermediates.as_ref().unwrap(), on_cpu.intermediates.as_ref().unwrap());
         let what = format!("{merge:?}, tile {tile}");
         for (step, (x, y)) in a.cells.iter().zip(&b.cells).enumerate() {

@@ -50,7 +50,7 @@ pub struct SplatContextDesc {
     pub max_list: Option<u32>,
     /// Keep each stage's buffers apart instead of reusing one stage's for a later one (for tests
     /// that compare every stage; costs up to two more slot buffers).
-    pub distinct_stage_buffers: bool,
+    pub(crate) distinct_stage_buffers: bool,
     /// Hold the buffers that image inputs and outputs go through (10 words a pixel).
     pub image_io: bool,
 }

@@ -57,8 +57,6 @@ pub struct SplatOptions {
     pub umbra_merge: bool,
     /// The aperture shape (default the circle; see [`crate::aperture`]).
     pub aperture: ApertureShape,
-    /// Read back every stage's buffers (for tests and debugging).
-    pub keep_intermediates: bool,
 }
 
 impl Default for SplatOptions {
@@ -72,7 +70,6 @@ impl Default for SplatOptions {
             merge_color_tol: 0.25,
             umbra_merge: true,
             aperture: ApertureShape::circle(),
-            keep_intermediates: false,
         }
     }
 }

@@ -10,4 +10,4 @@
 mod run;
 
 pub use crate::frame::splat::{Merge, Plan, SplatOptions, SplatReport};
-pub use run::{Intermediates, SplatOutput, splat};
+pub use run::{Intermediates, SplatOutput, splat, splat_with_stages};

@@ -15,7 +15,7 @@ use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{read_rgb, slot_words};
 use dof_shaders::lens::ThinLens;
 
-/// Every stage's buffers, read back when `keep_intermediates` is set.
+/// Every stage's buffers, read back by [`splat_with_stages`].
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Intermediates {
     /// Packed fragments and counts per cell after packing and after each merging step.
@@ -41,6 +41,16 @@ const RETRIES: u32 = 3;
 
 /// Renders `image` through `lens` by tiled splatting on `backend`.
 pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions) -> Result<SplatOutput> {
+    run(backend, image, lens, options, false)
+}
+
+/// [`splat`], keeping every stage's buffers apart (up to two more slot buffers) and reading them
+/// back as the output's `intermediates`: for comparing backends stage by stage.
+pub fn splat_with_stages(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions) -> Result<SplatOutput> {
+    run(backend, image, lens, options, true)
+}
+
+fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions, keep_stages: bool) -> Result<SplatOutput> {
     if !lens.is_valid() {
         return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
     }
@@ -50,7 +60,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
         return Err(Error::InvalidArgument(format!("an empty {w}x{h} image with {layers} layers")));
     }
     let mut desc = SplatContextDesc::new(w, h, layers, options.clone());
-    desc.distinct_stage_buffers = options.keep_intermediates;
+    desc.distinct_stage_buffers = keep_stages;
     // The context checks the bounds (and refuses) before the input is uploaded.
     let first = SplatContext::new(backend, &desc)?;
     let pixels = w as u64 * h as u64;
@@ -100,7 +110,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
             let done = (|| {
                 report.input_fragments = image.counts.iter().map(|&n| n.min(layers) as u64).sum();
                 let out = read_rgb(backend, io[2], w, h)?;
-                let inter = if options.keep_intermediates { Some(intermediates(backend, &ctx, &report)?) } else { None };
+                let inter = if keep_stages { Some(intermediates(backend, &ctx, &report)?) } else { None };
                 Ok(SplatOutput { image: out, report, stages, intermediates: inter })
             })();
             ctx.destroy(backend);

@@ -1003,3 +1003,24 @@ fn sequence_flags_are_refused_naming_the_flag() {
     assert_fails_with(&with(&["--frames", "2", "--aperture-radius-to", "-0.1"]), "--aperture-radius-to");
     assert_fails_with(&with(&["--focus-to", "2"]), "--frames");
 }
+
+/// `dof eval --temporal --quick`: a report with a per-frame PSNR and a temporal PSNR for every
+/// method of the frame API, each through one context (no allocation after the first frame).
+#[test]
+fn eval_temporal_writes_a_temporal_psnr_per_method() {
+    let out = temp("eval-temporal");
+    let o = dof(&["eval", "--temporal", "--quick", "--backend", "cpu", "--no-plots", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("temporal.json")).unwrap()).unwrap();
+    let rows = json["methods"].as_array().expect("methods");
+    assert_eq!(rows.len(), dof::frame::METHODS.len());
+    for row in rows {
+        let frames = row["psnr_db"].as_array().unwrap().len();
+        assert_eq!(frames, json["frames"].as_u64().unwrap() as usize, "{row}");
+        assert_eq!(row["temporal_psnr_db"].as_array().unwrap().len(), frames - 1, "{row}");
+        assert!(row["mean_temporal_psnr_db"].as_f64().is_some_and(|p| p > 10.0), "{row}");
+        assert_eq!(row["allocations_after_first_frame"], 0, "{row}");
+    }
+    let md = std::fs::read_to_string(out.join("temporal.md")).unwrap();
+    assert!(md.contains("| ring-gather |"), "{md}");
+}

@@ -727,6 +727,7 @@ fn flag_table_base(sub: &str, flag: &str, dir: &std::path::Path) -> Vec<(String,
     let d = |name: &str| dir.join(name).to_str().unwrap().to_string();
     let pairs: Vec<(&str, Option<String>)> = match sub {
         "render" => {
+            let sequence = ["--frames", "--focus-to", "--orbit", "--aperture-radius-to", "--f-number-to"].contains(&flag);
             let method = match flag {
                 "--rings" => "ring-gather",
                 "--lum-threshold" | "--sprites" => "bokeh",
@@ -742,6 +743,9 @@ fn flag_table_base(sub: &str, flag: &str, dir: &std::path::Path) -> Vec<(String,
                 ("--samples", Some("1".into())),
                 ("--out", Some(d("render.exr"))),
             ]
+            .into_iter()
+            .chain(sequence.then(|| ("--frames", Some("2".into()))))
+            .collect()
         }
         "eval" => vec![
             ("--quick", None),
@@ -897,4 +901,126 @@ fn host_size_limits_on_a_cpu_run_do_not_blame_a_device() {
     assert_fails_fast_with(&args, "too large", 10);
     let stderr = String::from_utf8_lossy(&dof(&args).stderr).into_owned();
     assert!(!stderr.contains("device"), "{stderr}");
+}
+
+/// The frames of an animated GIF.
+fn gif_frames(path: &std::path::Path) -> usize {
+    let file = std::fs::File::open(path).expect("the GIF");
+    let mut decoder = dof::io::codecs::gif::DecodeOptions::new().read_info(file).expect("a GIF");
+    let mut frames = 0;
+    while decoder.read_next_frame().expect("a GIF frame").is_some() {
+        frames += 1;
+    }
+    frames
+}
+
+/// `--frames 4` with a focus pull: four EXRs beside `--out`, an animated GIF of four frames, frames
+/// that differ, and one context for the sequence (no allocation after the first frame).
+#[test]
+fn sequence_writes_frames_and_an_animated_preview() {
+    let out = temp("seq/pull.exr");
+    let o = dof(&[
+        "render",
+        "--method",
+        "ring-gather",
+        "--width",
+        "48",
+        "--height",
+        "27",
+        "--aperture-radius",
+        "0.2",
+        "--frames",
+        "4",
+        "--focus-to",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(stdout.contains("context made once for 4 frames: 0 allocations in the frames after the first"), "{stdout}");
+    let frames: Vec<_> = (0..4)
+        .map(|i| {
+            let path = temp(&format!("seq/pull-{i:04}.exr"));
+            dof::io::read_rgb_exr(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display())).0
+        })
+        .collect();
+    assert!(!temp("seq/pull-0004.exr").exists());
+    assert_eq!(gif_frames(&temp("seq/pull.gif")), 4);
+    for (i, pair) in frames.windows(2).enumerate() {
+        assert!(pair[0].data != pair[1].data, "a focus pull's frames {i} and {} are the same", i + 1);
+    }
+}
+
+/// Every registry method, the references and the pinhole image render a short sequence (an orbit
+/// and an aperture ramp); a registry method through one context.
+#[test]
+fn every_method_renders_a_sequence() {
+    let methods = dof::frame::METHODS.iter().map(|m| m.name).chain(["pinhole", "reference", "layers"]);
+    for method in methods {
+        let out = temp(&format!("seq-all/{method}.exr"));
+        let o = dof(&[
+            "render",
+            "--method",
+            method,
+            "--width",
+            "24",
+            "--height",
+            "16",
+            "--samples",
+            "2",
+            "--frames",
+            "2",
+            "--orbit",
+            "3",
+            "--f-number-to",
+            "4",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let stdout = String::from_utf8_lossy(&o.stdout);
+        assert!(o.status.success(), "{method}: {}", String::from_utf8_lossy(&o.stderr));
+        assert!(temp(&format!("seq-all/{method}-0001.exr")).exists(), "{method}: {stdout}");
+        assert_eq!(gif_frames(&temp(&format!("seq-all/{method}.gif"))), 2, "{method}");
+        if dof::frame::METHODS.iter().any(|m| m.name == method) {
+            assert!(stdout.contains("0 allocations in the frames after the first"), "{method}: {stdout}");
+        }
+    }
+}
+
+#[test]
+fn sequence_flags_are_refused_naming_the_flag() {
+    let out = temp("seq-bad/x.exr");
+    let o = out.to_str().unwrap();
+    let base = ["render", "--method", "pinhole", "--width", "16", "--height", "16", "--out", o];
+    let with = |extra: &[&'static str]| base.iter().copied().chain(extra.iter().copied()).collect::<Vec<_>>();
+    assert_fails_with(&with(&["--frames", "0"]), "--frames");
+    assert_fails_with(&with(&["--frames", "100000"]), "--frames");
+    assert_fails_with(&with(&["--frames", "2", "--focus-to", "-1"]), "--focus-to");
+    assert_fails_with(&with(&["--frames", "2", "--focus-to", "nan"]), "--focus-to");
+    assert_fails_with(&with(&["--frames", "2", "--orbit", "1000"]), "--orbit");
+    assert_fails_with(&with(&["--frames", "2", "--f-number-to", "0"]), "--f-number-to");
+    assert_fails_with(&with(&["--frames", "2", "--aperture-radius-to", "-0.1"]), "--aperture-radius-to");
+    assert_fails_with(&with(&["--focus-to", "2"]), "--frames");
+}
+
+/// `dof eval --temporal --quick`: a report with a per-frame PSNR and a temporal PSNR for every
+/// method of the frame API, each through one context (no allocation after the first frame).
+#[test]
+fn eval_temporal_writes_a_temporal_psnr_per_method() {
+    let out = temp("eval-temporal");
+    let o = dof(&["eval", "--temporal", "--quick", "--backend", "cpu", "--no-plots", "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("temporal.json")).unwrap()).unwrap();
+    let rows = json["methods"].as_array().expect("methods");
+    assert_eq!(rows.len(), dof::frame::METHODS.len());
+    for row in rows {
+        let frames = row["psnr_db"].as_array().unwrap().len();
+        assert_eq!(frames, json["frames"].as_u64().unwrap() as usize, "{row}");
+        assert_eq!(row["temporal_psnr_db"].as_array().unwrap().len(), frames - 1, "{row}");
+        assert!(row["mean_temporal_psnr_db"].as_f64().is_some_and(|p| p > 10.0), "{row}");
+        assert_eq!(row["allocations_after_first_frame"], 0, "{row}");
+    }
+    let md = std::fs::read_to_string(out.join("temporal.md")).unwrap();
+    assert!(md.contains("| ring-gather |"), "{md}");
 }

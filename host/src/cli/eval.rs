@@ -39,6 +39,12 @@ pub struct EvalArgs {
     /// Leave out the plots (they need a TrueType font, see `dof::eval::plot`).
     #[arg(long)]
     no_plots: bool,
+    /// Temporal stability instead: a focus pull on the first of --scenes (default `simple`; 64x36
+    /// and 6 frames with --quick, else 160x90 and 12) through every method of the frame API (or
+    /// those of --methods), one context each; per-frame PSNR and temporal PSNR (each frame-to-frame
+    /// change against the reference's) in temporal.json, temporal.md and plots.
+    #[arg(long)]
+    temporal: bool,
     #[arg(long, default_value = "out/eval")]
     out: PathBuf,
 }
@@ -99,6 +105,9 @@ fn check_before_work(args: &EvalArgs) -> anyhow::Result<()> {
 }
 
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
+    if args.temporal {
+        return run_temporal(args);
+    }
     check_before_work(args)?;
     let coc_sweep = sweep_targets(args)?;
     // Before the long run: the output must be a folder that can be made.
@@ -168,5 +177,42 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         println!("wrote {} plots in {}: {}", files.len(), args.out.display(), names.join(", "));
     }
     println!("wrote {} and {}", args.out.join("report.json").display(), args.out.join("report.md").display());
+    Ok(())
+}
+
+/// `dof eval --temporal`: the focus pull of [`dof::eval::temporal`].
+fn run_temporal(args: &EvalArgs) -> anyhow::Result<()> {
+    if args.out.exists() && !args.out.is_dir() {
+        anyhow::bail!("--out {} is a file; name a folder for the report and plots", args.out.display());
+    }
+    let mut options = dof::eval::temporal::TemporalOptions::new(args.quick);
+    if let Some(scene) = args.scenes.first() {
+        options.scene = scene.clone();
+    }
+    let registry: Vec<String> = args.methods.iter().filter(|n| dof::frame::METHODS.iter().any(|m| m.name == n.as_str())).cloned().collect();
+    if !args.methods.is_empty() && registry.is_empty() {
+        anyhow::bail!("--temporal compares methods of the frame API; none of --methods {} is one", args.methods.join(","));
+    }
+    options.methods = registry;
+    if !args.no_plots {
+        dof::eval::plot::ensure_font().context("the plots need a font; pass --no-plots to leave them out")?;
+    }
+    std::fs::create_dir_all(&args.out).with_context(|| format!("cannot create --out {}", args.out.display()))?;
+    let mut backends = backends(args.backend, false)?;
+    let backend = backends.first_mut().context("no backend")?;
+    let report = dof::eval::temporal::temporal(&options, backend.as_mut(), true)?;
+    let md = report.to_markdown();
+    for (name, text) in [("temporal.json", report.to_json()), ("temporal.md", md.clone())] {
+        let path = args.out.join(name);
+        std::fs::write(&path, text).with_context(|| format!("cannot write {} (in --out)", path.display()))?;
+    }
+    println!("{md}");
+    if !args.no_plots {
+        for (stem, figure) in report.figures() {
+            let [svg, png] = dof::eval::plot::write(&figure, &args.out.join(stem))?;
+            println!("wrote {} and {}", svg.display(), png.display());
+        }
+    }
+    println!("wrote {} and {}", args.out.join("temporal.json").display(), args.out.join("temporal.md").display());
     Ok(())
 }

@@ -17,6 +17,8 @@ use dof::scene::{
 use dof_shaders::lens::ThinLens;
 use std::path::{Path, PathBuf};
 
+mod sequence;
+
 /// What `dof render` makes: the pinhole image, the multi-layer image, a reference, or a frame
 /// through any method of the frame API's registry.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -166,6 +168,25 @@ pub struct RenderArgs {
     /// Exposure multiplier of the PNG preview (positive).
     #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     exposure: f32,
+    /// Render a sequence of N frames in one process (one context for a registry method):
+    /// `OUT-0000.exr`, ... beside `--out` and an animated preview `OUT.gif`. Built-in and glTF
+    /// scenes; at most 10000.
+    #[arg(long, allow_negative_numbers = true)]
+    frames: Option<u32>,
+    /// Sequences: a focus pull, the focus distance going linearly from the start's to this one.
+    #[arg(long, allow_negative_numbers = true)]
+    focus_to: Option<f32>,
+    /// Sequences: a camera orbit, degrees per frame about the vertical axis through the start's
+    /// point in focus on the view axis (-360 to 360).
+    #[arg(long, allow_negative_numbers = true)]
+    orbit: Option<f32>,
+    /// Sequences: an aperture ramp, the aperture radius going linearly from the start's to this
+    /// one (scene units)...
+    #[arg(long, conflicts_with = "f_number_to", allow_negative_numbers = true)]
+    aperture_radius_to: Option<f32>,
+    /// ...or to the radius of this f-number.
+    #[arg(long, allow_negative_numbers = true)]
+    f_number_to: Option<f32>,
 }
 
 fn parse_vec3(s: &str) -> Result<Vec3, String> {
@@ -304,9 +325,43 @@ fn check_ranges(args: &RenderArgs) -> anyhow::Result<()> {
     if !(1..=4).contains(&args.layers_per_doubling) {
         bail!("--layers-per-doubling (layers per doubling of the CoC) must be 1 to 4, got {}", args.layers_per_doubling);
     }
+    check_sequence(args)?;
     let tiles = dof_shaders::splat::TILE_SIZES;
     if !tiles.contains(&args.tile) {
         bail!("--tile: tile size {} is not one of {tiles:?}", args.tile);
+    }
+    Ok(())
+}
+
+/// The sequence flags' ranges, and that they come with `--frames`.
+fn check_sequence(args: &RenderArgs) -> anyhow::Result<()> {
+    if let Some(n) = args.frames.filter(|n| !(1..=sequence::MAX_FRAMES).contains(n)) {
+        bail!("--frames (frames of the sequence) must lie between 1 and {}, got {n}", sequence::MAX_FRAMES);
+    }
+    for (value, flag) in
+        [(args.focus_to, "--focus-to (the end's focus distance)"), (args.f_number_to, "--f-number-to (the end's f-number)")]
+    {
+        if let Some(v) = value.filter(|v| !(*v > 0.0 && v.is_finite())) {
+            bail!("{flag} must be a positive finite number, got {v}");
+        }
+    }
+    if let Some(r) = args.aperture_radius_to.filter(|r| !(*r >= 0.0 && r.is_finite())) {
+        bail!("--aperture-radius-to (the end's aperture radius) must be a finite number, not negative, got {r}");
+    }
+    if let Some(d) = args.orbit.filter(|d| !(d.abs() <= 360.0)) {
+        bail!("--orbit (degrees per frame) must lie between -360 and 360, got {d}");
+    }
+    let moves = [
+        (args.focus_to.is_some(), "--focus-to"),
+        (args.orbit.is_some(), "--orbit"),
+        (args.aperture_radius_to.is_some(), "--aperture-radius-to"),
+        (args.f_number_to.is_some(), "--f-number-to"),
+    ];
+    if let Some((_, flag)) = moves.iter().find(|(given, _)| *given).filter(|_| args.frames.is_none()) {
+        bail!("{flag} moves the shot over a sequence: give --frames N");
+    }
+    if args.frames.is_some() && args.scene.to_ascii_lowercase().ends_with(".exr") {
+        bail!("--frames renders built-in and glTF scenes; an EXR sequence is named by a pattern such as shot-####.exr");
     }
     Ok(())
 }
@@ -547,6 +602,10 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         lens.focus_distance,
         lens.far_limit_px()
     );
+    if args.frames.is_some() {
+        let shots = sequence::shots(args, &camera, &settings, &lens)?;
+        return sequence::render_sequence(args, out, sequence::Source::Builtin(&builtin.scene), &shots);
+    }
     let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, ..Default::default() };
     let layered = raycast_layers(&builtin.scene, &camera, &lens, &options)?;
     match args.method {
@@ -653,6 +712,11 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         lens.focus_distance,
         lens.far_limit_px()
     );
+    if args.frames.is_some() {
+        let settings = lens_settings(args, mesh.lens_focused_at(&camera, args.focus)?);
+        let shots = sequence::shots(args, &camera, &settings, &lens)?;
+        return sequence::render_sequence(args, out, sequence::Source::Gltf { mesh: &mesh, near }, &shots);
+    }
     let mut b = backend(args.backend)?;
     let raster = mesh.raster();
     let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, ..Default::default() };

@@ -15,6 +15,7 @@ pub mod ratios;
 pub mod report;
 pub mod scaling;
 pub mod sweep;
+pub mod temporal;
 
 use crate::backend::Backend;
 use crate::error::{Error, Result};

@@ -109,6 +109,8 @@ mod exr_read;
 #[cfg(feature = "exr")]
 mod exr_write;
 #[cfg(feature = "exr")]
+mod gif_preview;
+#[cfg(feature = "exr")]
 mod preview;
 pub mod sanitize;
 pub mod tonemap;
@@ -122,6 +124,8 @@ pub use channels::natural_cmp;
 pub use exr_read::{ExrLayout, InputReport, MAX_EXR_EDGE, MAX_EXR_SLOTS, check_exr_header, read_layered_exr, read_rgb_exr};
 #[cfg(feature = "exr")]
 pub use exr_write::{ExrCompression, ExrPrecision, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr};
+#[cfg(feature = "exr")]
+pub use gif_preview::{MAX_GIF_EDGE, write_gif_preview};
 #[cfg(feature = "eval")]
 pub(crate) use preview::write_srgb8;
 #[cfg(feature = "exr")]
@@ -134,6 +138,7 @@ pub use tonemap::tonemap;
 #[cfg(feature = "exr")]
 pub mod codecs {
     pub use ::exr;
+    pub use ::gif;
     pub use ::png;
 }
 

@@ -139,7 +139,9 @@ fn lens(
     let mut lens = settings.thin_lens(&camera).map_err(py_err)?;
     if let Some(ppu) = pixels_per_unit {
         if !(ppu > 0.0 && ppu.is_finite()) {
-            return Err(value_error(format!("pixels_per_unit (pixels per scene unit on the sensor) must be positive and finite, got {ppu}")));
+            return Err(value_error(format!(
+                "pixels_per_unit (pixels per scene unit on the sensor) must be positive and finite, got {ppu}"
+            )));
         }
         lens.pixels_per_unit = ppu;
         if !lens.is_valid() || !lens.far_limit_px().is_finite() {

@@ -168,3 +168,52 @@ def test_options_reach_the_method():
     assert np.abs(a - b).max() > 1e-3
     merged = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5, merge="4x4", tile=32, aperture="blades:6")
     assert merged.shape == rgb.shape
+
+
+def test_readme_example(tmp_path, monkeypatch):
+    """The README's five lines, on a file written here."""
+    monkeypatch.chdir(tmp_path)
+    dof.write_exr("in.exr", *scene())
+    rgb, depth = dof.read_exr("in.exr")
+    out = dof.blur(rgb, depth, focus=2.0, f_number=2.8)
+    dof.write_exr("out.exr", out, depth)
+    assert "multilayer" in [m["name"] for m in dof.methods()]
+    np.testing.assert_array_equal(dof.read_exr("out.exr")[0], out)
+
+
+def test_multilayer_exr_file():
+    """A multi-layer EXR from the repository's corpus: read as layers and blurred."""
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "fuzz", "corpus", "exr", "dof-layers.exr")
+    with pytest.raises(ValueError, match="multi-layer EXR.*layers=True"):
+        dof.read_exr(path)
+    frags, counts = dof.read_exr(path, layers=True)
+    assert frags.shape == (16, 16, 4, 5) and counts.dtype == np.uint32 and counts.max() == 2
+    out = dof.blur(frags, counts, focus=2.0, f_number=2.0)
+    assert out.shape == (16, 16, 3) and np.isfinite(out).all()
+
+
+@pytest.mark.cli
+@pytest.mark.parametrize(
+    "method, flags, lens",
+    [
+        ("multilayer", ["--aperture-radius", "0.5", "--merge", "2x2"], dict(aperture_radius=0.5, merge="2x2")),
+        ("gather", ["--f-number", "1.4", "--yfov", "10"], dict(f_number=1.4, yfov=10.0)),
+        ("layered", ["--f-number", "2", "--focal-length", "80"], dict(f_number=2.0, focal_length=80.0)),
+    ],
+)
+def test_same_as_the_cli(tmp_path, method, flags, lens):
+    """blur gives exactly what `dof render --scene FILE.exr` gives (DOF_CLI: the `dof` binary)."""
+    import subprocess
+
+    cli = os.environ.get("DOF_CLI")
+    if not cli:
+        pytest.skip("DOF_CLI (the dof binary) is not set")
+    rgb, depth = scene()
+    dof.write_exr(tmp_path / "in.exr", rgb, depth)
+    out = tmp_path / "out.exr"
+    args = [cli, "render", "--scene", str(tmp_path / "in.exr"), "--method", method, "--focus", "4", *flags, "--out", str(out)]
+    subprocess.run(args, check=True, capture_output=True)
+    expected, _ = dof.read_exr(out)
+    got = dof.blur(rgb, depth, focus=4.0, method=method, **lens)
+    assert np.abs(got - rgb).max() > 0.05  # the comparison is of a real blur
+    np.testing.assert_array_equal(got, expected)

@@ -1,0 +1,459 @@
+//! The Python module `dof`: numpy arrays in and out of every method of the frame registry
+//! (`dof::frame::registry::METHODS`), through the library's one-shot path
+//! (`dof::methods::one_shot::one_shot`), with the lens built by the library's own lens types
+//! (`LensSettings::thin_lens`) as `dof render` builds it for an EXR, and the library's EXR I/O.
+
+use std::path::PathBuf;
+
+use dof::backend::Backend;
+use dof::frame::{BokehOptions, LayeredOptions, METHODS, Merge, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
+use dof::layers::{Fragment, LayeredImage, RgbImage};
+use dof::methods::one_shot::one_shot;
+use dof::scene::{Aperture, Camera, LensSettings, MAX_GUARD_BAND, ThinLens, Vec3};
+use dof::{CpuBackend, Error, VulkanBackend, VulkanOptions};
+use numpy::ndarray::{Array2, Array3, Array4, ArrayViewD, Axis};
+use numpy::{AllowTypeChange, IntoPyArray, PyArray3, PyArrayLike2, PyArrayLikeDyn, PyUntypedArrayMethods};
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+
+/// A library error as a Python exception: bad input (`InvalidArgument`, `TooLarge`) is a
+/// `ValueError`, anything else (no Vulkan driver, a device failure) a `RuntimeError`; the message
+/// is the library's, as the CLI prints it.
+fn py_err(e: Error) -> PyErr {
+    match e {
+        Error::InvalidArgument(_) | Error::TooLarge { .. } | Error::Scene(_) => PyValueError::new_err(e.to_string()),
+        _ => PyRuntimeError::new_err(e.to_string()),
+    }
+}
+
+fn value_error(msg: impl Into<String>) -> PyErr {
+    PyValueError::new_err(msg.into())
+}
+
+/// The options `blur` takes besides the lens, with the CLI flag each one is.
+const OPTIONS: &[(&str, &str)] = &[
+    ("tile", "--tile: tile edge in pixels, 16, 24 or 32 (tiled, multilayer)"),
+    ("merge", "--merge: fragment merging, 'none', '2x2' or '4x4' (tiled, multilayer)"),
+    ("max_coc", "--max-coc: largest CoC diameter in pixels the method honours"),
+    ("aperture", "--aperture: 'circle', 'blades:N[:ROT[:CURV]]', 'star:N[:ROT[:INNER]]' or a PNG (splatting, bokeh)"),
+    ("rings", "--rings: sample rings of the ring gather, 1 to 8"),
+    ("lum_threshold", "--lum-threshold: luminance that makes a bokeh sprite"),
+    ("sprites", "--sprites: bokeh sprite capacity"),
+    ("spp", "--samples: rays per pixel of raytrace (default 16)"),
+    ("no_cascade", "--no-cascade: layered DoF, one blur per layer"),
+    ("layers_per_doubling", "--layers-per-doubling: layered DoF, 1 to 4"),
+];
+
+/// The frame API's options from `blur`'s keyword options, as `dof render` makes them from its flags.
+fn method_options(options: Option<&Bound<'_, PyDict>>) -> PyResult<MethodOptions> {
+    let mut tile = 16u32;
+    let mut merge = Merge::None;
+    let mut max_coc: Option<u32> = None;
+    let mut aperture = "circle".to_string();
+    let mut rings = RingGatherOptions::default().rings;
+    let mut lum_threshold = 1.0f32;
+    let mut sprites = 4096u32;
+    let mut spp = 16u32;
+    let mut no_cascade = false;
+    let mut layers_per_doubling = 2u32;
+    if let Some(options) = options {
+        for (key, value) in options.iter() {
+            let key: String = key.extract()?;
+            let bad = |e: PyErr| value_error(format!("option {key}: {e}"));
+            match key.as_str() {
+                "tile" => tile = value.extract().map_err(bad)?,
+                "merge" => {
+                    let s: String = value.extract().map_err(bad)?;
+                    merge = s.parse().map_err(value_error)?;
+                }
+                "max_coc" => max_coc = value.extract().map_err(bad)?,
+                "aperture" => aperture = value.extract().map_err(bad)?,
+                "rings" => rings = value.extract().map_err(bad)?,
+                "lum_threshold" => lum_threshold = value.extract().map_err(bad)?,
+                "sprites" => sprites = value.extract().map_err(bad)?,
+                "spp" | "samples" => spp = value.extract().map_err(bad)?,
+                "no_cascade" => no_cascade = value.extract().map_err(bad)?,
+                "layers_per_doubling" => layers_per_doubling = value.extract().map_err(bad)?,
+                _ => {
+                    let known: Vec<&str> = OPTIONS.iter().map(|o| o.0).collect();
+                    return Err(value_error(format!("unknown option '{key}': blur takes {}", known.join(", "))));
+                }
+            }
+        }
+    }
+    if max_coc == Some(0) {
+        return Err(value_error("max_coc (the largest CoC diameter, px) must be positive, got 0"));
+    }
+    let aperture = dof::aperture::parse_aperture(&aperture).map_err(py_err)?;
+    let ring_defaults = RingGatherOptions::default();
+    Ok(MethodOptions {
+        splat: SplatOptions { tile, merge, max_radius: max_coc.map(|d| d as f32 / 2.0), aperture: aperture.clone(), ..Default::default() },
+        gather_max_radius: max_coc.map(|d| d.div_ceil(2)),
+        ring_gather: RingGatherOptions { rings, max_radius: max_coc.map_or(ring_defaults.max_radius, |d| d.div_ceil(2)) },
+        bokeh: BokehOptions { lum_threshold, capacity: sprites, aperture, ..Default::default() },
+        raytrace: RaytraceOptions { spp, ..Default::default() },
+        layered: LayeredOptions {
+            cascaded: !no_cascade,
+            layers_per_doubling,
+            max_coc: max_coc.map_or(LayeredOptions::default().max_coc, |d| d as f32),
+            ..Default::default()
+        },
+    })
+}
+
+/// The lens as `dof render` builds it for an EXR (which carries no camera): a camera at the origin
+/// with `yfov` degrees, the focus and aperture as given, the focal length in mm (default: from the
+/// sensor height and the field of view). `pixels_per_unit`, when given, replaces the pixel scale
+/// the field of view gives.
+#[allow(clippy::too_many_arguments)]
+fn lens(
+    width: u32,
+    height: u32,
+    focus: f32,
+    aperture_radius: Option<f32>,
+    f_number: Option<f32>,
+    focal_length: Option<f32>,
+    sensor_height: f32,
+    yfov: f32,
+    pixels_per_unit: Option<f32>,
+    metres_per_unit: f32,
+) -> PyResult<ThinLens> {
+    let aperture = match (aperture_radius, f_number) {
+        (Some(_), Some(_)) => return Err(value_error("give the aperture as aperture_radius or f_number, not both")),
+        (Some(r), None) => Aperture::Radius(r),
+        (None, Some(n)) => Aperture::FNumber(n),
+        (None, None) => {
+            return Err(value_error("the lens needs an aperture: give aperture_radius (scene units) or f_number (with focus)"));
+        }
+    };
+    if !(yfov > 0.0 && yfov < 180.0) {
+        return Err(value_error(format!("yfov (the vertical field of view) must lie strictly between 0 and 180 degrees, got {yfov}")));
+    }
+    let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), yfov.to_radians(), width, height);
+    let mut settings = LensSettings::photographic(focus, 8.0);
+    settings.aperture = aperture;
+    settings.focal_length_mm = focal_length;
+    settings.sensor_height_mm = sensor_height;
+    settings.metres_per_unit = metres_per_unit;
+    let mut lens = settings.thin_lens(&camera).map_err(py_err)?;
+    if let Some(ppu) = pixels_per_unit {
+        if !(ppu > 0.0 && ppu.is_finite()) {
+            return Err(value_error(format!(
+                "pixels_per_unit (pixels per scene unit on the sensor) must be positive and finite, got {ppu}"
+            )));
+        }
+        lens.pixels_per_unit = ppu;
+        if !lens.is_valid() || !lens.far_limit_px().is_finite() {
+            return Err(value_error(format!("the lens settings give an unusable lens: {lens:?}")));
+        }
+    }
+    Ok(lens)
+}
+
+/// How far the image's edge pixels are extended (the CLI's edge policy for EXR input): the largest
+/// CoC radius among its fragments, at most `MAX_GUARD_BAND`.
+fn edge_margin(layers: &LayeredImage, lens: &ThinLens) -> u32 {
+    let used = layers.counts.iter().enumerate().flat_map(|(p, &n)| {
+        let start = p * layers.max_layers as usize;
+        layers.fragments[start..start + n.min(layers.max_layers) as usize].iter()
+    });
+    let largest = used.map(|f| lens.coc_radius_px(f.depth)).fold(0.0f32, f32::max);
+    (largest.ceil() as u32).min(MAX_GUARD_BAND)
+}
+
+/// Most pixels along one edge (as `dof render`'s `--width`).
+const MAX_EDGE: usize = 65536;
+
+fn check_size(h: usize, w: usize) -> PyResult<(u32, u32)> {
+    if h == 0 || w == 0 || h > MAX_EDGE || w > MAX_EDGE {
+        return Err(value_error(format!("the image must be 1 to {MAX_EDGE} pixels on each side, got {h}x{w} (height x width)")));
+    }
+    Ok((w as u32, h as u32))
+}
+
+/// An RGB image (H, W, 3) and its depth (H, W) as a one-layer image.
+fn rgbz_image(rgb: ArrayViewD<'_, f32>, depth: ArrayViewD<'_, f32>) -> PyResult<LayeredImage> {
+    let (h, w) = (rgb.shape()[0], rgb.shape()[1]);
+    if rgb.shape()[2] != 3 {
+        return Err(value_error(format!("rgb must have shape (H, W, 3), got {:?}", rgb.shape())));
+    }
+    if depth.shape() != [h, w] {
+        return Err(value_error(format!("depth must have shape (H, W) = ({h}, {w}) like rgb, got {:?}", depth.shape())));
+    }
+    let (width, height) = check_size(h, w)?;
+    let mut image = LayeredImage::new(width, height, 1).map_err(py_err)?;
+    for y in 0..h {
+        for x in 0..w {
+            let color = [rgb[[y, x, 0]], rgb[[y, x, 1]], rgb[[y, x, 2]]];
+            image.push(x as u32, y as u32, Fragment { color, alpha: 1.0, depth: depth[[y, x]] }).map_err(py_err)?;
+        }
+    }
+    Ok(image)
+}
+
+/// A multi-layer array (H, W, L, 4: r, g, b, depth; or 5 with alpha last) and its counts (H, W).
+fn layered_image(frags: ArrayViewD<'_, f32>, counts: ArrayViewD<'_, i64>) -> PyResult<LayeredImage> {
+    let s = frags.shape();
+    let (h, w, l, c) = (s[0], s[1], s[2], s[3]);
+    if c != 4 && c != 5 {
+        return Err(value_error(format!(
+            "a multi-layer image must have shape (H, W, L, 4) (r, g, b, depth) or (H, W, L, 5) (r, g, b, depth, alpha), got {s:?}"
+        )));
+    }
+    if counts.shape() != [h, w] {
+        return Err(value_error(format!("counts must have shape (H, W) = ({h}, {w}), got {:?}", counts.shape())));
+    }
+    let (width, height) = check_size(h, w)?;
+    if l == 0 || l > u32::MAX as usize {
+        return Err(value_error(format!("a multi-layer image needs at least one layer, got {l}")));
+    }
+    let mut image = LayeredImage::new(width, height, l as u32).map_err(py_err)?;
+    for y in 0..h {
+        for x in 0..w {
+            let n = counts[[y, x]];
+            if n < 0 || n as usize > l {
+                return Err(value_error(format!("counts[{y}, {x}] = {n} must lie between 0 and the {l} layers")));
+            }
+            for k in 0..n as usize {
+                let f = |i: usize| frags[[y, x, k, i]];
+                let alpha = if c == 5 { f(4) } else { 1.0 };
+                if !(0.0..=1.0).contains(&alpha) {
+                    return Err(value_error(format!("alpha {alpha} of layer {k} at ({x}, {y}) must lie in [0, 1]")));
+                }
+                image.push(x as u32, y as u32, Fragment { color: [f(0), f(1), f(2)], alpha, depth: f(3) }).map_err(py_err)?;
+            }
+        }
+    }
+    Ok(image)
+}
+
+fn make_backend(name: &str) -> PyResult<Box<dyn Backend>> {
+    match name {
+        "cpu" => Ok(Box::new(CpuBackend::new())),
+        "vulkan" => Ok(Box::new(VulkanBackend::new(&VulkanOptions::default()).map_err(py_err)?)),
+        _ => Err(value_error(format!("unknown backend '{name}': use 'cpu' or 'vulkan'"))),
+    }
+}
+
+fn to_rgb_array(image: &RgbImage) -> Array3<f32> {
+    let (w, h) = (image.width as usize, image.height as usize);
+    Array3::from_shape_vec((h, w, 3), image.data.iter().flatten().copied().collect()).expect("an RgbImage holds width x height pixels")
+}
+
+/// Blurs an image with depth of field and returns the result as a (H, W, 3) float32 array.
+///
+/// Input, either
+///   - `image` RGB (H, W, 3) and `depth` (H, W): linear colour and planar depth in scene units
+///     (> 0; +inf is the background), or
+///   - `image` a multi-layer array (H, W, L, 4) of fragments (r, g, b, depth), front to back, or
+///     (H, W, L, 5) with a straight alpha last, and `depth` the fragment counts per pixel (H, W).
+/// Arrays of other float types are converted to float32.
+///
+/// The lens, as `dof render` takes it for an EXR: `focus` (planar focus distance, scene units)
+/// and the aperture as `aperture_radius` (scene units) or `f_number`; the focal length in mm
+/// (default: from `sensor_height` mm and the vertical field of view `yfov` degrees of a camera
+/// with the image's height), and `pixels_per_unit` (pixels per scene unit on the sensor) to set
+/// the pixel scale directly instead of through `yfov`. `metres_per_unit` is the scene unit's
+/// length (it only matters for the millimetre values).
+///
+/// `method` is a name from `methods()` (default "multilayer", multi-layer tiled splatting);
+/// `backend` is "cpu" (default) or "vulkan". `options` are the CLI's method flags: tile, merge
+/// ("none", "2x2", "4x4"), max_coc, aperture (shape), rings, lum_threshold, sprites, spp,
+/// no_cascade, layers_per_doubling. As in the CLI, the image's edge pixels are extended outwards
+/// as far as its largest CoC reaches, so blur does not darken at the frame.
+///
+/// Raises ValueError on bad input (shapes, depths, lens, options) and RuntimeError otherwise (no
+/// Vulkan driver, a device failure), with the library's messages.
+#[pyfunction]
+#[pyo3(signature = (image, depth, *, focus, aperture_radius=None, f_number=None, focal_length=None, sensor_height=24.0, yfov=40.0, pixels_per_unit=None, metres_per_unit=1.0, method="multilayer", backend="cpu", **options))]
+#[allow(clippy::too_many_arguments)]
+fn blur<'py>(
+    py: Python<'py>,
+    image: PyArrayLikeDyn<'py, f32, AllowTypeChange>,
+    depth: &Bound<'py, PyAny>,
+    focus: f32,
+    aperture_radius: Option<f32>,
+    f_number: Option<f32>,
+    focal_length: Option<f32>,
+    sensor_height: f32,
+    yfov: f32,
+    pixels_per_unit: Option<f32>,
+    metres_per_unit: f32,
+    method: &str,
+    backend: &str,
+    options: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyArray3<f32>>> {
+    let info = dof::frame::registry::method(method).map_err(py_err)?;
+    let options = method_options(options)?;
+    let layers = match image.ndim() {
+        3 => {
+            let depth: PyArrayLikeDyn<'py, f32, AllowTypeChange> = depth.extract()?;
+            rgbz_image(image.as_array(), depth.as_array())?
+        }
+        4 => {
+            let counts: PyArrayLikeDyn<'py, i64, AllowTypeChange> = depth.extract()?;
+            layered_image(image.as_array(), counts.as_array())?
+        }
+        n => {
+            return Err(value_error(format!(
+                "image must be RGB (H, W, 3) with a depth (H, W), or multi-layer (H, W, L, 4) with counts (H, W); got {n} dimensions"
+            )));
+        }
+    };
+    let lens = lens(
+        layers.width,
+        layers.height,
+        focus,
+        aperture_radius,
+        f_number,
+        focal_length,
+        sensor_height,
+        yfov,
+        pixels_per_unit,
+        metres_per_unit,
+    )?;
+    let backend = backend.to_string();
+    let result = py.detach(move || -> PyResult<RgbImage> {
+        let mut b = make_backend(&backend)?;
+        let margin = edge_margin(&layers, &lens);
+        let padded = layers.extend_edges(margin).map_err(py_err)?;
+        let out = one_shot(b.as_mut(), info, &options, &padded, &lens).map_err(py_err)?;
+        Ok(out.image.crop(margin))
+    })?;
+    Ok(to_rgb_array(&result).into_pyarray(py))
+}
+
+/// Whether an EXR file has a depth channel (`Z` or `depth`, any case, in any layer or part).
+fn has_depth_channel(path: &std::path::Path) -> bool {
+    use dof::io::codecs::exr::meta::MetaData;
+    let Ok(meta) = MetaData::read_from_file(path, false) else { return false };
+    meta.headers.iter().flat_map(|h| h.channels.list.iter()).any(|c| {
+        let name = c.name.to_string();
+        let last = name.rsplit('.').next().unwrap_or("").to_ascii_lowercase();
+        last == "z" || last == "depth"
+    })
+}
+
+/// Reads an EXR with the library's reader (the rules and NaN/Inf policy of `dof render`).
+///
+/// With `layers=False` (default) returns `(rgb, depth)`: the colour (H, W, 3) float32 and the
+/// planar depth (H, W) float32 of an RGB+Z file (Blender's and Nuke's layouts included; +inf is
+/// the background), or `depth=None` for a file with colour only. A multi-layer file raises
+/// ValueError: read it with `layers=True`.
+///
+/// With `layers=True` returns `(fragments, counts)`: (H, W, L, 5) float32 fragments (r, g, b,
+/// depth, alpha; colour straight, front to back) and (H, W) uint32 counts, which `blur` takes.
+///
+/// Raises ValueError naming the file and the problem on a missing, unreadable or unusable file.
+#[pyfunction]
+#[pyo3(signature = (path, *, layers=false))]
+fn read_exr<'py>(py: Python<'py>, path: PathBuf, layers: bool) -> PyResult<Bound<'py, PyTuple>> {
+    let read = py.detach(|| -> PyResult<Result<LayeredImage, RgbImage>> {
+        match dof::io::read_layered_exr(&path) {
+            Ok((image, report)) => {
+                if !layers && image.max_layers > 1 {
+                    return Err(value_error(format!(
+                        "{} is a multi-layer EXR ({}): read it with read_exr(path, layers=True)",
+                        path.display(),
+                        report.layers.join(", ")
+                    )));
+                }
+                Ok(Ok(image))
+            }
+            Err(e) if !layers && path.is_file() && !has_depth_channel(&path) => match dof::io::read_rgb_exr(&path) {
+                Ok((rgb, _)) => Ok(Err(rgb)),
+                Err(_) => Err(py_err(e)),
+            },
+            Err(e) => Err(py_err(e)),
+        }
+    })?;
+    match read {
+        Err(rgb) => (to_rgb_array(&rgb).into_pyarray(py), py.None()).into_pyobject(py),
+        Ok(image) if !layers => {
+            let (rgb, depth) = image.front();
+            let depth = Array2::from_shape_vec((image.height as usize, image.width as usize), depth).expect("a plane per pixel");
+            (to_rgb_array(&rgb).into_pyarray(py), depth.into_pyarray(py)).into_pyobject(py)
+        }
+        Ok(image) => {
+            let (h, w, l) = (image.height as usize, image.width as usize, image.max_layers as usize);
+            let flat: Vec<f32> = image.fragments.iter().flat_map(|f| [f.color[0], f.color[1], f.color[2], f.depth, f.alpha]).collect();
+            let frags = Array4::from_shape_vec((h, w, l, 5), flat).expect("max_layers slots per pixel");
+            let counts = Array2::from_shape_vec((h, w), image.counts.clone()).expect("a count per pixel");
+            (frags.into_pyarray(py), counts.into_pyarray(py)).into_pyobject(py)
+        }
+    }
+}
+
+/// Writes a linear float32 RGB EXR (ZIP-compressed, lossless) with the library's writer; with
+/// `depth` (H, W) also a `Z` channel, which makes the file an RGB+Z image that `read_exr` (and
+/// `dof render --scene FILE.exr`) reads back. Values are written as they are.
+///
+/// Raises ValueError on bad shapes or a file that cannot be written.
+#[pyfunction]
+#[pyo3(signature = (path, rgb, depth=None))]
+fn write_exr(
+    py: Python<'_>,
+    path: PathBuf,
+    rgb: PyArrayLikeDyn<'_, f32, AllowTypeChange>,
+    depth: Option<PyArrayLike2<'_, f32, AllowTypeChange>>,
+) -> PyResult<()> {
+    let view = rgb.as_array();
+    if view.ndim() != 3 || view.shape()[2] != 3 {
+        return Err(value_error(format!("rgb must have shape (H, W, 3), got {:?}", view.shape())));
+    }
+    let (h, w) = (view.shape()[0], view.shape()[1]);
+    let (width, height) = check_size(h, w)?;
+    let data: Vec<[f32; 3]> = view.lanes(Axis(2)).into_iter().map(|c| [c[0], c[1], c[2]]).collect();
+    let image = RgbImage { width, height, data };
+    let depth: Option<Vec<f32>> = match &depth {
+        Some(d) => {
+            let d = d.as_array();
+            if d.shape() != [h, w] {
+                return Err(value_error(format!("depth must have shape (H, W) = ({h}, {w}) like rgb, got {:?}", d.shape())));
+            }
+            Some(d.iter().copied().collect())
+        }
+        None => None,
+    };
+    py.detach(|| {
+        let extra: Vec<(&str, &[f32])> = depth.as_deref().map(|d| ("Z", d)).into_iter().collect();
+        dof::io::write_exr(&path, &image, &extra).map_err(py_err)
+    })
+}
+
+/// The methods `blur` takes, from the library's registry: a list of dicts with `name` (what
+/// `method=` takes), `title`, `paper`, `reads` ("all layers" or "front layer") and `knob` (the
+/// name of its quality option, or None).
+#[pyfunction]
+fn methods(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
+    METHODS
+        .iter()
+        .map(|m| {
+            let d = PyDict::new(py);
+            d.set_item("name", m.name)?;
+            d.set_item("title", m.title)?;
+            d.set_item("paper", m.paper)?;
+            let reads = match m.reads {
+                dof::frame::Reads::AllLayers => "all layers",
+                dof::frame::Reads::FrontLayer => "front layer",
+            };
+            d.set_item("reads", reads)?;
+            d.set_item("knob", m.knob.map(|k| k.name))?;
+            Ok(d)
+        })
+        .collect()
+}
+
+/// Depth of field on numpy arrays: multi-layer tiled splatting (Franke et al. 2018) and the other
+/// methods of the `dof` library, on the CPU or Vulkan. `blur` blurs, `methods` lists the methods,
+/// `read_exr` and `write_exr` read and write EXR files with the library's reader and writer.
+#[pymodule]
+#[pyo3(name = "dof")]
+fn dof_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(blur, m)?)?;
+    m.add_function(wrap_pyfunction!(read_exr, m)?)?;
+    m.add_function(wrap_pyfunction!(write_exr, m)?)?;
+    m.add_function(wrap_pyfunction!(methods, m)?)?;
+    Ok(())
+}

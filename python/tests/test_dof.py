@@ -1,0 +1,219 @@
+"""Tests of the Python package `dof`: the CPU backend and Vulkan (lavapipe in CI).
+
+The Vulkan tests fail without a Vulkan driver, as the Rust suites do; DOF_SKIP_VULKAN=1 skips them
+(reported as skipped, and CI refuses a run with skips).
+"""
+
+import os
+
+import numpy as np
+import pytest
+
+import dof
+
+BACKENDS = [
+    "cpu",
+    pytest.param(
+        "vulkan",
+        marks=pytest.mark.skipif(os.environ.get("DOF_SKIP_VULKAN") == "1", reason="DOF_SKIP_VULKAN=1"),
+    ),
+]
+
+
+def scene(h=32, w=48):
+    """A bright square in front of (z=1) a textured wall (z=4), a strip of sky (+inf) on top."""
+    rng = np.random.default_rng(7)
+    rgb = rng.random((h, w, 3), dtype=np.float32)
+    depth = np.full((h, w), 4.0, np.float32)
+    depth[h // 4 : 3 * h // 4, w // 4 : w // 2] = 1.0
+    rgb[h // 4 : 3 * h // 4, w // 4 : w // 2] = [3.0, 2.0, 1.0]
+    depth[:3] = np.inf
+    return rgb, depth
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_five_line_script_multilayer(backend):
+    rgb, depth = scene()
+    out = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5, method="multilayer", backend=backend)
+    assert out.shape == rgb.shape and out.dtype == np.float32
+    assert np.isfinite(out).all()
+    # The near square is blurred: its edge spreads over the wall, the wall far from it stays sharp.
+    assert np.abs(out - rgb).max() > 0.1
+    np.testing.assert_allclose(out[20:, 40:], rgb[20:, 40:], atol=1e-5)
+
+
+def test_cpu_and_vulkan_agree():
+    if os.environ.get("DOF_SKIP_VULKAN") == "1":
+        pytest.skip("DOF_SKIP_VULKAN=1")
+    rgb, depth = scene()
+    cpu = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5, backend="cpu")
+    vk = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5, backend="vulkan")
+    np.testing.assert_allclose(cpu, vk, atol=2e-3, rtol=2e-3)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("aperture_radius", [0.0, 1e-4])
+def test_in_focus_is_identity(backend, aperture_radius):
+    rgb, depth = scene()
+    out = dof.blur(rgb, depth, focus=4.0, aperture_radius=aperture_radius, backend=backend)
+    np.testing.assert_allclose(out, rgb, rtol=1e-5, atol=1e-6)
+
+
+def test_multilayer_input_and_counts():
+    rgb, depth = scene()
+    h, w, _ = rgb.shape
+    frags = np.zeros((h, w, 2, 4), np.float32)
+    frags[:, :, 0, :3], frags[:, :, 0, 3] = rgb, depth
+    frags[:, :, 1, :3], frags[:, :, 1, 3] = 0.5, np.inf
+    counts = np.where(np.isinf(depth), 1, 2)
+    one = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.0)
+    two = dof.blur(frags, counts, focus=4.0, aperture_radius=0.0)
+    np.testing.assert_allclose(one, two, atol=1e-6)
+    assert dof.blur(frags, counts, focus=4.0, aperture_radius=0.5).shape == (h, w, 3)
+    with pytest.raises(ValueError, match=r"counts\[0, 0\] = 3"):
+        dof.blur(frags, np.full((h, w), 3), focus=4.0, aperture_radius=0.5)
+
+
+@pytest.mark.parametrize(
+    "lens, message",
+    [
+        (dict(focus=-1.0, aperture_radius=0.1), "focus distance must be positive"),
+        (dict(focus=2.0, aperture_radius=-0.1), "aperture radius must be finite and not negative"),
+        (dict(focus=2.0, f_number=0.0), "f-number must be positive"),
+        (dict(focus=2.0, f_number=2.0, focal_length=5000.0), "must be shorter than the focus distance"),
+        (dict(focus=2.0), "needs an aperture"),
+        (dict(focus=2.0, f_number=2.0, aperture_radius=0.1), "not both"),
+        (dict(focus=2.0, f_number=2.0, sensor_height=0.0), "sensor height must be positive"),
+        (dict(focus=2.0, f_number=2.0, yfov=180.0), "yfov"),
+    ],
+)
+def test_bad_lens_raises_value_error(lens, message):
+    rgb, depth = scene()
+    with pytest.raises(ValueError, match=message):
+        dof.blur(rgb, depth, **lens)
+
+
+def test_bad_input_raises_value_error():
+    rgb, depth = scene()
+    with pytest.raises(ValueError, match="depth must have shape"):
+        dof.blur(rgb, depth[:-1], focus=2.0, f_number=2.0)
+    bad = depth.copy()
+    bad[5, 6] = -1.0
+    with pytest.raises(ValueError, match=r"depth -1 at \(6, 5\) is not positive"):
+        dof.blur(rgb, bad, focus=2.0, f_number=2.0)
+    with pytest.raises(ValueError, match="unknown method 'nope'.*multilayer"):
+        dof.blur(rgb, depth, focus=2.0, f_number=2.0, method="nope")
+    with pytest.raises(ValueError, match="unknown option 'tiles'"):
+        dof.blur(rgb, depth, focus=2.0, f_number=2.0, tiles=16)
+    with pytest.raises(ValueError, match="tile size 17"):
+        dof.blur(rgb, depth, focus=2.0, aperture_radius=0.5, tile=17)
+    with pytest.raises(ValueError, match="unknown merge level"):
+        dof.blur(rgb, depth, focus=2.0, aperture_radius=0.5, merge="3x3")
+    with pytest.raises(ValueError, match="unknown backend"):
+        dof.blur(rgb, depth, focus=2.0, aperture_radius=0.5, backend="metal")
+
+
+def test_exr_round_trip(tmp_path):
+    rgb, depth = scene()
+    path = tmp_path / "in.exr"
+    dof.write_exr(path, rgb, depth)
+    rgb2, depth2 = dof.read_exr(path)
+    np.testing.assert_array_equal(rgb2, rgb)
+    np.testing.assert_array_equal(depth2, depth)
+    frags, counts = dof.read_exr(str(path), layers=True)
+    assert frags.shape == rgb.shape[:2] + (1, 5) and counts.shape == depth.shape
+    np.testing.assert_array_equal(frags[:, :, 0, 3], depth)
+    out = dof.blur(frags, counts, focus=4.0, aperture_radius=0.5)
+    np.testing.assert_array_equal(out, dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5))
+    dof.write_exr(tmp_path / "rgb.exr", out)
+    back, none = dof.read_exr(tmp_path / "rgb.exr")
+    assert none is None
+    np.testing.assert_array_equal(back, out)
+    with pytest.raises(ValueError, match="does not exist"):
+        dof.read_exr(tmp_path / "missing.exr")
+    with pytest.raises(ValueError, match=r"rgb must have shape \(H, W, 3\)"):
+        dof.write_exr(tmp_path / "x.exr", depth)
+
+
+def test_methods_lists_the_registry():
+    names = [m["name"] for m in dof.methods()]
+    assert names[0] == "multilayer" and len(names) == len(set(names)) >= 7
+    for m in dof.methods():
+        assert m["title"] and m["paper"]
+
+
+@pytest.mark.parametrize("method", [m["name"] for m in dof.methods()])
+def test_every_method_runs(method):
+    rgb, depth = scene(24, 32)
+    out = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.3, method=method, spp=4)
+    assert out.shape == rgb.shape and np.isfinite(out).all()
+    assert np.abs(out - rgb).max() > 0.01  # something was blurred
+    sharp = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.0, method=method, spp=4)
+    np.testing.assert_allclose(sharp, rgb, rtol=1e-4, atol=1e-4)
+
+
+@pytest.mark.parametrize("method", [m["name"] for m in dof.methods()])
+def test_every_method_runs_on_vulkan(method):
+    if os.environ.get("DOF_SKIP_VULKAN") == "1":
+        pytest.skip("DOF_SKIP_VULKAN=1")
+    rgb, depth = scene(24, 32)
+    out = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.3, method=method, backend="vulkan", spp=4)
+    assert out.shape == rgb.shape and np.isfinite(out).all()
+
+
+def test_options_reach_the_method():
+    rgb, depth = scene()
+    a = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5, method="ring-gather", rings=1)
+    b = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5, method="ring-gather", rings=5)
+    assert np.abs(a - b).max() > 1e-3
+    merged = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5, merge="4x4", tile=32, aperture="blades:6")
+    assert merged.shape == rgb.shape
+
+
+def test_readme_example(tmp_path, monkeypatch):
+    """The README's five lines, on a file written here."""
+    monkeypatch.chdir(tmp_path)
+    dof.write_exr("in.exr", *scene())
+    rgb, depth = dof.read_exr("in.exr")
+    out = dof.blur(rgb, depth, focus=2.0, f_number=2.8)
+    dof.write_exr("out.exr", out, depth)
+    assert "multilayer" in [m["name"] for m in dof.methods()]
+    np.testing.assert_array_equal(dof.read_exr("out.exr")[0], out)
+
+
+def test_multilayer_exr_file():
+    """A multi-layer EXR from the repository's corpus: read as layers and blurred."""
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "fuzz", "corpus", "exr", "dof-layers.exr")
+    with pytest.raises(ValueError, match="multi-layer EXR.*layers=True"):
+        dof.read_exr(path)
+    frags, counts = dof.read_exr(path, layers=True)
+    assert frags.shape == (16, 16, 4, 5) and counts.dtype == np.uint32 and counts.max() == 2
+    out = dof.blur(frags, counts, focus=2.0, f_number=2.0)
+    assert out.shape == (16, 16, 3) and np.isfinite(out).all()
+
+
+@pytest.mark.cli
+@pytest.mark.parametrize(
+    "method, flags, lens",
+    [
+        ("multilayer", ["--aperture-radius", "0.5", "--merge", "2x2"], dict(aperture_radius=0.5, merge="2x2")),
+        ("gather", ["--f-number", "1.4", "--yfov", "10"], dict(f_number=1.4, yfov=10.0)),
+        ("layered", ["--f-number", "2", "--focal-length", "80"], dict(f_number=2.0, focal_length=80.0)),
+    ],
+)
+def test_same_as_the_cli(tmp_path, method, flags, lens):
+    """blur gives exactly what `dof render --scene FILE.exr` gives (DOF_CLI: the `dof` binary)."""
+    import subprocess
+
+    cli = os.environ.get("DOF_CLI")
+    if not cli:
+        pytest.skip("DOF_CLI (the dof binary) is not set")
+    rgb, depth = scene()
+    dof.write_exr(tmp_path / "in.exr", rgb, depth)
+    out = tmp_path / "out.exr"
+    args = [cli, "render", "--scene", str(tmp_path / "in.exr"), "--method", method, "--focus", "4", *flags, "--out", str(out)]
+    subprocess.run(args, check=True, capture_output=True)
+    expected, _ = dof.read_exr(out)
+    got = dof.blur(rgb, depth, focus=4.0, method=method, **lens)
+    assert np.abs(got - rgb).max() > 0.05  # the comparison is of a real blur
+    np.testing.assert_array_equal(got, expected)

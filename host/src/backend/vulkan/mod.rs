@@ -2,7 +2,8 @@
 //!
 //! - `instance`: loading, the instance and validation layer, device choice, the logical device;
 //! - `memory`: storage and staging buffers (gpu-allocator);
-//! - `pipelines`: one pipeline per kernel, from its own SPIR-V module (push descriptors);
+//! - `pipelines`: one pipeline per kernel, from its own SPIR-V module (push descriptors): the project's
+//!   embedded ones, and a caller's own added with [`VulkanBackend::add_modules`];
 //! - `spirv`: what the backend reads from the modules (capabilities, entry point names);
 //! - `recorder`: the command buffer, barriers, timestamps and submission;
 //! - `draw`: draws through the graphics pipeline into an RGBA32F target copied into a buffer.
@@ -279,6 +280,21 @@ impl VulkanBackend {
     pub fn required_features() -> RequiredFeatures {
         let (core, vulkan12) = Features::needed_by(&spirv::all_capabilities()).structs();
         RequiredFeatures { core, vulkan12 }
+    }
+
+    /// Adds SPIR-V modules of the caller's own kernels, `(entry point, module bytes)`: kernels
+    /// declared with `dof_shaders::kernel!` in the caller's rust-gpu crate and compiled by its own
+    /// build (spirv-builder, one module per entry point or one module holding them all; the entry is
+    /// the `KernelDesc::entry` of the kernel). From then on [`Backend::dispatch`] runs those kernels
+    /// like the project's, whose embedded modules stay the default and are never replaced.
+    ///
+    /// All or nothing, refused with [`Error::InvalidArgument`] naming the entry when an entry point
+    /// is one of the project's or was added before (or is twice in `modules`), when a module is not
+    /// SPIR-V or lacks its entry point, or when it declares a capability whose device feature the
+    /// backend's device does not enable (those the project's kernels need: see
+    /// [`Self::required_features`]). See `examples/own-kernel`.
+    pub fn add_modules(&mut self, modules: &[(&str, &[u8])]) -> Result<()> {
+        self.pipelines.add(modules, &spirv::all_capabilities())
     }
 
     /// The chosen device.

@@ -1,5 +1,7 @@
-//! One compute pipeline per kernel, created on first use from the kernel's own SPIR-V module.
-//! Storage buffers are bound with push descriptors, so there are no descriptor pools or sets.
+//! One compute pipeline per kernel, created on first use from the kernel's own SPIR-V module: the
+//! project's (embedded, `crate::shaders::MODULES`) or one a caller added with
+//! [`super::VulkanBackend::add_modules`] (its own rust-gpu kernels). Storage buffers are bound with
+//! push descriptors, so there are no descriptor pools or sets.
 
 use super::spirv;
 use crate::error::{Error, Result, VkContext};
@@ -18,15 +20,67 @@ pub(super) struct Pipeline {
 #[derive(Default)]
 pub(super) struct Pipelines {
     by_entry: HashMap<&'static str, Pipeline>,
+    /// The caller's modules (`VulkanBackend::add_modules`): entry -> (words, the entry point's name
+    /// inside the module). No entry here is one of the project's.
+    added: HashMap<String, (Vec<u32>, String)>,
 }
 
 impl Pipelines {
+    /// Adds a caller's modules, all or none: every entry must be new (neither the project's nor
+    /// added before, nor twice in `modules`), every module SPIR-V holding that entry point, and its
+    /// capabilities within `enabled` (what the device was created with).
+    pub fn add(&mut self, modules: &[(&str, &[u8])], enabled: &spirv::ModuleInfo) -> Result<()> {
+        let mut new: HashMap<String, (Vec<u32>, String)> = HashMap::new();
+        for &(entry, bytes) in modules {
+            let refuse = |why: String| Err(Error::InvalidArgument(format!("add_modules: entry point `{entry}`: {why}")));
+            if entry.is_empty() || entry.contains('\0') {
+                return refuse("not a valid entry point name".into());
+            }
+            if spirv::kernel_module(entry).is_some() {
+                return refuse("the project's kernels already have an entry point of that name (rename the kernel or its module)".into());
+            }
+            if self.added.contains_key(entry) || new.contains_key(entry) {
+                return refuse("a module of that entry point was already added (entry point names must be unique)".into());
+            }
+            if bytes.len() % 4 != 0 || bytes.len() < 20 || bytes[..4] != 0x0723_0203u32.to_le_bytes() {
+                return refuse(format!("its module ({} bytes) is not little-endian SPIR-V", bytes.len()));
+            }
+            let words: Vec<u32> = bytes.as_chunks::<4>().0.iter().map(|c| u32::from_le_bytes(*c)).collect();
+            let info = spirv::ModuleInfo::parse(&words);
+            let Some(name) = info.resolve(entry).map(str::to_string) else {
+                return refuse(format!("its module has no such entry point (it has {:?})", info.entry_points));
+            };
+            let missing: Vec<u32> =
+                info.capabilities.iter().copied().filter(|c| spirv::cap::NEEDS_FEATURE.contains(c) && !enabled.has(*c)).collect();
+            if !missing.is_empty() {
+                return refuse(format!(
+                    "its module declares SPIR-V capabilities {missing:?} whose device features the project's kernels do not need, \
+                     so the backend's device does not enable them"
+                ));
+            }
+            new.insert(entry.to_string(), (words, name));
+        }
+        self.added.extend(new);
+        Ok(())
+    }
+
+    /// The module holding `entry` (a caller's, else the project's) and the entry point's name in it.
+    fn module(&self, entry: &str) -> Option<(Vec<u32>, String)> {
+        self.added.get(entry).cloned().or_else(|| spirv::kernel_module(entry))
+    }
+
     /// The pipeline of `kernel`, created and cached on first use.
     pub fn get(&mut self, device: &ash::Device, kernel: &'static KernelDesc) -> Result<Pipeline> {
         if let Some(p) = self.by_entry.get(kernel.entry) {
             return Ok(*p);
         }
-        let p = create(device, kernel)?;
+        let (words, name) = self.module(kernel.entry).ok_or_else(|| {
+            Error::InvalidArgument(format!(
+                "no SPIR-V module holds the entry point `{}` (a kernel of your own needs `VulkanBackend::add_modules`)",
+                kernel.entry
+            ))
+        })?;
+        let p = create(device, kernel, &words, &name)?;
         self.by_entry.insert(kernel.entry, p);
         Ok(p)
     }
@@ -39,9 +93,7 @@ impl Pipelines {
     }
 }
 
-fn create(device: &ash::Device, kernel: &KernelDesc) -> Result<Pipeline> {
-    let (words, name) = spirv::kernel_module(kernel.entry)
-        .ok_or_else(|| Error::InvalidArgument(format!("no SPIR-V module holds the entry point `{}`", kernel.entry)))?;
+fn create(device: &ash::Device, kernel: &KernelDesc, words: &[u32], name: &str) -> Result<Pipeline> {
     let entry = CString::new(name).map_err(|_| Error::InvalidArgument(format!("kernel entry `{}` contains a NUL byte", kernel.entry)))?;
     let bindings: Vec<_> = (0..kernel.bindings)
         .map(|b| {
@@ -64,7 +116,7 @@ fn create(device: &ash::Device, kernel: &KernelDesc) -> Result<Pipeline> {
     // module is not needed once the pipeline exists.
     let result = unsafe {
         (|| -> Result<()> {
-            module = device.create_shader_module(&vk::ShaderModuleCreateInfo::default().code(&words), None).vk("vkCreateShaderModule")?;
+            module = device.create_shader_module(&vk::ShaderModuleCreateInfo::default().code(words), None).vk("vkCreateShaderModule")?;
             p.set_layout = device.create_descriptor_set_layout(&set_info, None).vk("vkCreateDescriptorSetLayout")?;
             let set_layouts = [p.set_layout];
             let mut layout_info = vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts);

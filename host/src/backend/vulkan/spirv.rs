@@ -9,6 +9,8 @@ pub(super) mod cap {
     pub const INT8: u32 = 39;
     pub const VULKAN_MEMORY_MODEL: u32 = 5345;
     pub const VULKAN_MEMORY_MODEL_DEVICE_SCOPE: u32 = 5346;
+    /// The capabilities above: each needs a device feature enabled at device creation.
+    pub const NEEDS_FEATURE: [u32; 6] = [FLOAT64, INT64, INT16, INT8, VULKAN_MEMORY_MODEL, VULKAN_MEMORY_MODEL_DEVICE_SCOPE];
 }
 
 const OP_CAPABILITY: u32 = 17;

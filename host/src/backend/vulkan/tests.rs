@@ -224,3 +224,59 @@ fn barriers_only_where_commands_share_buffers() -> Result<()> {
     assert_eq!(vk.validation_messages(), Vec::<String>::new());
     Ok(())
 }
+
+/// A caller's module under its own entry point: here the project's `scan::scan_add` with its entry
+/// point renamed (same length) to `mine::scan_add`, run through a descriptor naming that entry.
+fn renamed_add_module() -> Vec<u8> {
+    let (_, bytes) = crate::shaders::MODULES.iter().find(|(e, _)| *e == "scan::scan_add").expect("the scan_add module");
+    let (from, to) = (b"scan::scan_add\0", b"mine::scan_add\0");
+    let mut bytes = bytes.to_vec();
+    let at = bytes.windows(from.len()).position(|w| w == from).expect("the entry point name in the module");
+    bytes[at..at + to.len()].copy_from_slice(to);
+    bytes
+}
+
+static MINE_ADD: KernelDesc = KernelDesc { entry: "mine::scan_add", ..ADD };
+
+#[test]
+fn added_modules_run_and_collisions_are_refused() -> Result<()> {
+    let Some(mut vk) = backend() else { return Ok(()) };
+    let module = renamed_add_module();
+    let project = crate::shaders::MODULES.iter().find(|(e, _)| *e == "scan::scan_add").map(|(_, m)| *m).unwrap();
+
+    // Before it is added, the kernel has no module.
+    let a = vk.create_buffer(300, "a")?;
+    let sums = vk.create_buffer(2, "sums")?;
+    let push = push_words(&ScanParams { len: 300, data_offset: 0, sums_offset: 0 });
+    let err = vk.dispatch(&MINE_ADD, [2, 1, 1], &[a, sums], &push, "mine").unwrap_err();
+    assert!(err.to_string().contains("add_modules"), "{err}");
+
+    // Refused, all or nothing: a project entry (exactly, or by its unqualified name), a module
+    // without the entry point, bytes that are not SPIR-V, the same entry twice.
+    let refused = |vk: &mut VulkanBackend, modules: &[(&str, &[u8])], says: &str| {
+        let err = vk.add_modules(modules).expect_err("refused");
+        assert!(matches!(err, Error::InvalidArgument(_)) && err.to_string().contains(says), "{err}");
+    };
+    refused(&mut vk, &[("mine::scan_add", &module), ("scan::scan_add", project)], "the project's kernels already have");
+    refused(&mut vk, &[("scan_add", project)], "the project's kernels already have");
+    refused(&mut vk, &[("mine::other", &module)], "no such entry point");
+    refused(&mut vk, &[("mine::scan_add", b"not spir-v")], "not little-endian SPIR-V");
+    refused(&mut vk, &[("mine::scan_add", &module), ("mine::scan_add", &module)], "already added");
+
+    // Added, it runs like the project's kernel; adding it again is refused.
+    vk.add_modules(&[("mine::scan_add", &module)])?;
+    refused(&mut vk, &[("mine::scan_add", &module)], "already added");
+    let values: Vec<u32> = (0..300).map(|i| i % 7).collect();
+    vk.write_buffer(a, 0, &values)?;
+    vk.write_buffer(sums, 0, &[5, 11])?;
+    vk.dispatch(&MINE_ADD, [2, 1, 1], &[a, sums], &push, "mine")?;
+    vk.submit()?;
+    let mine = vk.read_buffer(a, 0, 300)?;
+    vk.write_buffer(a, 0, &values)?;
+    vk.dispatch(&ADD, [2, 1, 1], &[a, sums], &push, "project")?;
+    vk.submit()?;
+    assert_eq!(mine, vk.read_buffer(a, 0, 300)?);
+    assert_ne!(mine, values);
+    assert_eq!(vk.validation_messages(), Vec::<String>::new());
+    Ok(())
+}

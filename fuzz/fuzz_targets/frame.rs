@@ -11,7 +11,8 @@
 //! where the library must refuse it (a zero size, an edge beyond the splatting limit, input slots
 //! beyond the largest buffer, a list pool beyond its limit), and must be refused without
 //! allocating it (libFuzzer's malloc limit catches that). Well-formed input through a sane lens
-//! must give a finite image. Every buffer is freed at the end: nothing leaks on any error path.
+//! must give a finite, non-negative image, and through a pinhole-sized aperture (radius 0 or 1e-7)
+//! the input's front composite. Every buffer is freed at the end: nothing leaks on any error path.
 #![no_main]
 
 use arbitrary::Arbitrary;
@@ -34,6 +35,15 @@ use libfuzzer_sys::fuzz_target;
 
 /// Whether inconsistent aperture descriptions are tried (see `ApertureIn::Raw`).
 const TRY_RAW_APERTURES: bool = true;
+
+/// The pinhole-sized aperture radius of a sane lens (see `LensIn::Sane`).
+const PINHOLE: f32 = 1e-7;
+/// How far a method's in-focus frame may be from the front composite, relative: the gathers give
+/// the pixel's own sample the weight `w = 1 / (r + 1/2)²` and return `(w·c)·(1/w)`, two roundings
+/// (2 ulp) when `w` is not a power of two (a CoC of 1e-7 px; at radius 0 it is 4 and the result
+/// exact). Every other method copies the front fragment through bit for bit
+/// (`tests/tests/oracles.rs` states it per method).
+const IN_FOCUS_TOLERANCE: f32 = 2.4e-7;
 
 /// Largest extent and layer count actually allocated.
 const SMALL_EDGE: u32 = 64;
@@ -192,7 +202,8 @@ struct ContextIn {
 
 #[derive(Arbitrary, Debug, Clone, Copy)]
 enum LensIn {
-    /// Focal length 5 cm, 2000 px a unit: CoC up to about 100 px.
+    /// Focal length 5 cm, 2000 px a unit: CoC up to about 100 px. `aperture` 0 is a pinhole: radius
+    /// 0 where `focus` is even, 1e-7 (every CoC under 1e-5 px) where it is odd.
     Sane {
         aperture: u8,
         focus: u8,
@@ -205,7 +216,7 @@ impl LensIn {
         match self {
             LensIn::Sane { aperture, focus } => ThinLens {
                 focal_length: 0.05,
-                aperture_radius: aperture as f32 * 0.0005,
+                aperture_radius: if aperture == 0 && focus % 2 == 1 { PINHOLE } else { aperture as f32 * 0.0005 },
                 focus_distance: 0.5 + focus as f32 * 0.05,
                 pixels_per_unit: 2000.0,
             },
@@ -495,8 +506,10 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
     Some((context, (w, h, layers)))
 }
 
-/// Writes the frame's input into the caller's buffers (as much as fits).
-fn fill(b: &mut CpuBackend, bufs: &[BufferId; 3], f: &FrameIn, size: (u32, u32, u32), words: &[u32]) {
+/// Writes the frame's input into the caller's buffers (as much as fits). Returns the input's front
+/// composite (the front fragment's colour, black where a pixel has none) when well-formed input
+/// was written whole.
+fn fill(b: &mut CpuBackend, bufs: &[BufferId; 3], f: &FrameIn, size: (u32, u32, u32), words: &[u32]) -> Option<Vec<[f32; 3]>> {
     let (w, h, layers) = (size.0 as u64, size.1 as u64, size.2 as u64);
     let cap = |id: BufferId, b: &CpuBackend| b.buffer_words(id).unwrap_or(0);
     let (frag_cap, count_cap) = (cap(bufs[0], b), cap(bufs[1], b));
@@ -506,6 +519,8 @@ fn fill(b: &mut CpuBackend, bufs: &[BufferId; 3], f: &FrameIn, size: (u32, u32, 
             let pixels = (w * h).min(count_cap);
             let mut counts = Vec::with_capacity(pixels as usize);
             let mut slots = vec![0u32; (4 * pixels * layers).min(frag_cap) as usize];
+            let whole = pixels == w * h && slots.len() as u64 == 4 * pixels * layers;
+            let mut front = vec![[0.0f32; 3]; pixels as usize];
             for p in 0..pixels {
                 let n = rng.next() % (layers.min(SMALL_LAYERS as u64) + 1);
                 counts.push(n as u32);
@@ -517,22 +532,26 @@ fn fill(b: &mut CpuBackend, bufs: &[BufferId; 3], f: &FrameIn, size: (u32, u32, 
                     let base = (4 * (p * layers + k)) as usize;
                     if base + 4 <= slots.len() {
                         let rgb = [4.0 * rng.unit(), rng.unit(), rng.unit()];
+                        if k == 0 {
+                            front[p as usize] = rgb;
+                        }
                         slots[base..base + 4].copy_from_slice(&[rgb[0].to_bits(), rgb[1].to_bits(), rgb[2].to_bits(), d.to_bits()]);
                     }
                 }
             }
-            let _ = b.write_buffer(bufs[0], 0, &slots);
-            let _ = b.write_buffer(bufs[1], 0, &counts);
+            let written = b.write_buffer(bufs[0], 0, &slots).is_ok() && b.write_buffer(bufs[1], 0, &counts).is_ok();
+            (whole && written).then_some(front)
         }
         Content::Raw => {
             if words.is_empty() {
-                return;
+                return None;
             }
             let cycle = |n: u64| -> Vec<u32> { words.iter().copied().cycle().take(n as usize).collect() };
             let _ = b.write_buffer(bufs[0], 0, &cycle(frag_cap.min(4 * SMALL_EDGE as u64 * SMALL_EDGE as u64 * SMALL_LAYERS as u64)));
             let counts: Vec<u32> =
                 cycle(count_cap.min(SMALL_EDGE as u64 * SMALL_EDGE as u64)).into_iter().map(|c| c.rotate_left(16)).collect();
             let _ = b.write_buffer(bufs[1], 0, &counts);
+            None
         }
     }
 }
@@ -564,7 +583,7 @@ fn run(input: &Input) {
         match *op {
             Op::Record(f) => {
                 let size = (f.width.get(max.0), f.height.get(max.1), f.layers.get(max.2));
-                fill(&mut b, &bufs, &f, size, &input.words);
+                let front = fill(&mut b, &bufs, &f, size, &input.words);
                 let frame = Frame {
                     width: size.0,
                     height: size.1,
@@ -611,11 +630,27 @@ fn run(input: &Input) {
                     stat("sane frame checked");
                     let words = 3 * frame.width as u64 * frame.height as u64;
                     let out = b.read_buffer(bufs[2], 0, words).expect("the output of a recorded frame");
-                    if let Some(bad) = out.iter().position(|w| !f32::from_bits(*w).is_finite()) {
+                    if let Some(bad) = out.iter().position(|w| !(f32::from_bits(*w).is_finite() && f32::from_bits(*w) >= 0.0)) {
                         panic!(
-                            "well-formed input through a sane lens gave a non-finite output at word {bad}: {}",
+                            "{}: well-formed input through a sane lens gave an output that is not finite and non-negative at word {bad}: {}",
+                            ctx.method(),
                             f32::from_bits(out[bad])
                         );
+                    }
+                    // In focus: the front composite.
+                    let lens = frame.lens;
+                    if let (Some(front), true) = (front, lens.aperture_radius <= PINHOLE) {
+                        stat("pinhole frame checked");
+                        let tolerance = if lens.aperture_radius == 0.0 { 0.0 } else { IN_FOCUS_TOLERANCE };
+                        for (i, (&got, want)) in out.iter().zip(front.iter().flatten()).enumerate() {
+                            let got = f32::from_bits(got);
+                            assert!(
+                                got.to_bits() == want.to_bits() || (got - want).abs() <= tolerance * want.abs(),
+                                "{}: in focus (aperture radius {}), word {i} is {got}, the front composite {want}",
+                                ctx.method(),
+                                lens.aperture_radius
+                            );
+                        }
                     }
                 }
             }

@@ -8,7 +8,9 @@
 //!    slot from a scan of the flags: the chapter's append order is whatever the GPU's atomics give,
 //!    which would make the draw's blending order, and so the image's last bits, differ run to run.
 //!    The sprite carries the pixel's *excess* over the neighbourhood mean and the pixel enters the
-//!    blur as that mean, so the two together keep the pixel's energy (the chapter leaves the pixel
+//!    blur as that mean (per channel: where the pixel is darker than the mean in a channel, that
+//!    channel stays whole in the blur and the sprite carries none of it, so neither is negative),
+//!    so the two together keep the pixel's energy (the chapter leaves the pixel
 //!    in the blur as well, which counts it twice). Beyond the buffer's capacity the pixel stays in
 //!    the blur whole: counted, never written out of bounds.
 //! 2. The blur of the rest: the gathering baseline ([`crate::gather`]) over the detection's output.
@@ -132,7 +134,8 @@ pub fn detect_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, color: M, depth
 }
 
 /// Sprites into their slots (the scanned flags, so the order is the image's, the same every run),
-/// and the blur's input: the neighbourhood mean where a sprite took the excess, else the pixel.
+/// and the blur's input: per channel the smaller of the pixel and the neighbourhood mean where a
+/// sprite took the excess, else the pixel.
 pub fn emit_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, color: M, depth: M, slots: M, mut sprites: M, mut rest: M, mask: M) {
     for_each_item(g, p.width * p.height, |pi| {
         let mut keep = colour(&color, pi);
@@ -143,14 +146,18 @@ pub fn emit_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, color: M, depth: 
                 let s = r + 0.5;
                 let mirror = if z < p.lens.focus_distance { -1.0 } else { 1.0 };
                 let norm = 1.0 / weight_sum(centre, s, 1.0, &p.aperture, mirror, &mask);
+                // Per channel: the blur keeps the smaller of the pixel and the mean, the sprite the
+                // rest. Both are non-negative, and together they are the pixel: a bright pixel
+                // darker than its neighbourhood in one channel (a red light among blue) gave that
+                // channel a negative sprite and a negative image (found by `tests/oracles.rs`).
+                keep = [c[0].min(mean[0]), c[1].min(mean[1]), c[2].min(mean[2])];
                 let words =
-                    [centre[0], centre[1], s, mirror, (c[0] - mean[0]) * norm, (c[1] - mean[1]) * norm, (c[2] - mean[2]) * norm, 0.0];
+                    [centre[0], centre[1], s, mirror, (c[0] - keep[0]) * norm, (c[1] - keep[1]) * norm, (c[2] - keep[2]) * norm, 0.0];
                 let mut k = 0;
                 while k < SPRITE_WORDS {
                     sprites.store(i * SPRITE_WORDS + k, words[k as usize].to_bits());
                     k += 1;
                 }
-                keep = mean;
             }
         }
         rest.store(3 * pi, keep[0].to_bits());

@@ -170,7 +170,9 @@ enum Method {
         umbra_merge: bool,
         list_entries: Option<Entries>,
         max_list: Option<u32>,
-        distinct_stage_buffers: bool,
+        /// Once a test switch of the library (each stage in buffers of its own); no longer
+        /// public, kept so that the corpus decodes as before.
+        _distinct_stage_buffers: bool,
     },
     Gather {
         max_radius: Option<u32>,
@@ -407,7 +409,7 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
             umbra_merge,
             list_entries,
             max_list,
-            distinct_stage_buffers,
+            _distinct_stage_buffers: _,
         } => {
             let aperture = c.aperture.shape()?;
             let options = SplatOptions {
@@ -419,7 +421,6 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
                 merge_color_tol: merge_color_tol.get(0.25, 0.05),
                 umbra_merge: *umbra_merge,
                 aperture,
-                keep_intermediates: false,
             };
             let list_entries = match list_entries {
                 None => None,
@@ -436,16 +437,10 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
             if !small && !must_refuse {
                 return None;
             }
-            let desc = SplatContextDesc {
-                max_width: w,
-                max_height: h,
-                max_layers: layers,
-                options,
-                list_entries,
-                max_list: *max_list,
-                distinct_stage_buffers: *distinct_stage_buffers,
-                image_io: c.image_io,
-            };
+            let mut desc = SplatContextDesc::new(w, h, layers, options);
+            desc.list_entries = list_entries;
+            desc.max_list = *max_list;
+            desc.image_io = c.image_io;
             SplatContext::new(b, &desc).map(|c| Box::new(c) as Box<dyn DofContext>)
         }
         Method::Gather { max_radius } => {

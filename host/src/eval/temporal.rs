@@ -5,12 +5,12 @@
 //! method's frame-to-frame change against the reference's, both on the tone-mapped images
 //! ([`crate::io::tonemap`], exposure 1; peak 1). Flicker that the reference has not lowers it.
 
-use crate::backend::{Backend, BufferId};
+use crate::backend::Backend;
 use crate::error::{Error, Result};
-use crate::frame::{ContextDesc, DofContext, Extent, Frame, METHODS, MethodInfo, MethodOptions, Reads};
+use crate::frame::{METHODS, MethodInfo, MethodOptions};
 use crate::io::tonemap::tonemap_image;
-use crate::layers::{LayeredImage, RgbImage};
-use crate::methods::buffers::{read_rgb, slot_words};
+use crate::layers::RgbImage;
+use crate::methods::one_shot::{Runner, method_input};
 use crate::metrics::{psnr, psnr_of_mse};
 use crate::scene::guard_band::auto_margin;
 use crate::scene::{self, Focus, GuardBand, LayerOptions, ReferenceOptions, raycast_layers};
@@ -93,90 +93,6 @@ pub fn temporal_psnr(a0: &RgbImage, a1: &RgbImage, r0: &RgbImage, r1: &RgbImage)
     Ok(psnr_of_mse(sum / (3 * n) as f64))
 }
 
-/// One context and the buffers its frames go through, made once for a sequence.
-pub struct SequenceRunner {
-    ctx: Box<dyn DofContext>,
-    io: Vec<BufferId>,
-    words: usize,
-    pixels: u64,
-    /// Allocations (backend counters) during the frames after the first.
-    pub later_allocations: u64,
-    pub frames: u32,
-}
-
-impl SequenceRunner {
-    /// A context of `method` for frames the size and layer count of `image`.
-    pub fn new(b: &mut dyn Backend, method: &MethodInfo, options: &MethodOptions, image: &LayeredImage) -> Result<Self> {
-        let pixels = image.width as u64 * image.height as u64;
-        let words = image.fragments.len() * 4;
-        let mut io = Vec::new();
-        for (len, label) in [(words as u64, "sequence/input"), (pixels, "sequence/counts"), (3 * pixels, "sequence/out")] {
-            match b.create_buffer(len, label) {
-                Ok(id) => io.push(id),
-                Err(e) => {
-                    io.into_iter().for_each(|id| b.destroy_buffer(id));
-                    return Err(e);
-                }
-            }
-        }
-        match (method.create)(b, &ContextDesc::new(Extent::new(image.width, image.height, image.max_layers), options.clone())) {
-            Ok(ctx) => Ok(SequenceRunner { ctx, io, words, pixels, later_allocations: 0, frames: 0 }),
-            Err(e) => {
-                io.into_iter().for_each(|id| b.destroy_buffer(id));
-                Err(e)
-            }
-        }
-    }
-
-    pub fn device_bytes(&self) -> u64 {
-        self.ctx.device_bytes()
-    }
-
-    /// One frame (of the size the runner was made for): upload, record, submit, read back. Returns
-    /// the image and the device time in ms. An overflowing frame is run again with the context grown.
-    pub fn frame(&mut self, b: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens) -> Result<(RgbImage, f64)> {
-        let pixels = image.width as u64 * image.height as u64;
-        if image.fragments.len() * 4 != self.words || pixels != self.pixels {
-            return Err(Error::InvalidArgument(format!(
-                "a frame of {}x{} with {} layers differs from the sequence's first",
-                image.width, image.height, image.max_layers
-            )));
-        }
-        let before = b.counters();
-        b.write_buffer(self.io[0], 0, &slot_words(image))?;
-        b.write_buffer(self.io[1], 0, &image.counts)?;
-        let frame = Frame::layers(image.width, image.height, image.max_layers, *lens, self.io[0], self.io[1], self.io[2]);
-        let mut ms = 0.0;
-        for attempt in 0.. {
-            self.ctx.record(b, &frame)?;
-            ms += b.submit()?.iter().map(|t| t.ms).filter(|m| m.is_finite()).sum::<f64>();
-            let report = self.ctx.report(b)?;
-            if report.overflow == 0 || attempt == 3 || !self.ctx.grow_to_fit(b)? {
-                break;
-            }
-        }
-        let out = read_rgb(b, self.io[2], image.width, image.height)?;
-        if self.frames > 0 {
-            self.later_allocations += b.counters().since(&before).allocations;
-        }
-        self.frames += 1;
-        Ok((out, ms))
-    }
-
-    pub fn destroy(mut self, b: &mut dyn Backend) {
-        self.ctx.destroy(b);
-        self.io.drain(..).for_each(|id| b.destroy_buffer(id));
-    }
-}
-
-/// The input a method reads of `image` (the front layer for [`Reads::FrontLayer`]).
-pub fn method_input<'a>(method: &MethodInfo, image: &'a LayeredImage) -> std::borrow::Cow<'a, LayeredImage> {
-    match method.reads {
-        Reads::FrontLayer if image.max_layers > 1 => std::borrow::Cow::Owned(image.front_layer()),
-        _ => std::borrow::Cow::Borrowed(image),
-    }
-}
-
 /// Runs the focus pull for every chosen method on `backend`.
 pub fn temporal(options: &TemporalOptions, backend: &mut dyn Backend, progress: bool) -> Result<TemporalReport> {
     if options.frames < 2 {
@@ -217,16 +133,16 @@ pub fn temporal(options: &TemporalOptions, backend: &mut dyn Backend, progress: 
     }
     let mut rows = Vec::new();
     for method in methods {
-        let mut runner: Option<SequenceRunner> = None;
+        let mut runner: Option<Runner> = None;
         let mut images = Vec::new();
         let ran = (|| -> Result<()> {
             for (layered, lens) in layers.iter().zip(&lenses) {
                 let input = method_input(method, &layered.layers);
                 if runner.is_none() {
-                    runner = Some(SequenceRunner::new(backend, method, &MethodOptions::default(), &input)?);
+                    runner = Some(Runner::new(backend, method, &MethodOptions::default(), &input)?);
                 }
                 let r = runner.as_mut().ok_or_else(|| Error::InvalidArgument("no context".into()))?;
-                images.push(layered.crop(&r.frame(backend, &input, lens)?.0));
+                images.push(layered.crop(&r.frame(backend, &input, lens)?.image));
             }
             Ok(())
         })();

@@ -1,16 +1,17 @@
-//! One frame of a host image through any method of the frame API: a context sized to the image,
-//! the input uploaded, one recording, one submission, the result and the report read back, the
-//! context destroyed. The convenience path for the CLI, the evaluation and the tests; it allocates
-//! per call, where a renderer keeps one context ([`crate::frame`]). A frame whose context
-//! overflowed is run again with the context grown ([`DofContext::grow_to_fit`]), so the result is
-//! whole.
+//! Frames of host images through any method of the frame API: a [`Runner`] holds one context of a
+//! registry method and the buffers its frames go through, made once, and runs frame after frame
+//! (upload, record, submit, read back); [`one_shot`] is one frame through a runner made for it.
+//! The convenience path for the CLI, the evaluation, sequences and the tests; a renderer records
+//! into its own command buffer instead ([`crate::frame`]). A frame whose context overflowed is run
+//! again with the context grown ([`DofContext::grow_to_fit`]), so every result is whole.
 
-use crate::backend::{Backend, CommandTime, with_buffers};
+use crate::backend::{Backend, BufferId, CommandTime};
 use crate::error::{Error, Result};
 use crate::frame::{ContextDesc, ContextReport, DofContext, Extent, Frame, MethodInfo, MethodOptions, Reads};
 use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{read_rgb, slot_words};
 use dof_shaders::lens::ThinLens;
+use std::borrow::Cow;
 
 /// What one frame gave.
 pub struct OneShot {
@@ -22,8 +23,110 @@ pub struct OneShot {
     pub buffer_bytes: u64,
 }
 
-/// Renders `image` through `lens` with `method` on `backend`. A method that reads the front layer
-/// is handed only that ([`Reads::FrontLayer`]).
+/// Runs a frame again with a grown context at most this many times after an overflow.
+const RETRIES: u32 = 3;
+
+/// The input `method` reads of `image`: the front layer for [`Reads::FrontLayer`], else all of it.
+pub fn method_input<'a>(method: &MethodInfo, image: &'a LayeredImage) -> Cow<'a, LayeredImage> {
+    match method.reads {
+        Reads::FrontLayer if image.max_layers > 1 => Cow::Owned(image.front_layer()),
+        _ => Cow::Borrowed(image),
+    }
+}
+
+/// One context of a registry method and the buffers its frames go through, made once for frames
+/// of one size and layer count (a sequence).
+pub struct Runner {
+    ctx: Box<dyn DofContext>,
+    io: [BufferId; 3],
+    extent: Extent,
+    /// Allocations (backend counters) during the frames after the first: 0 unless a frame
+    /// overflowed and its context grew.
+    pub later_allocations: u64,
+    pub frames: u32,
+}
+
+impl Runner {
+    /// A context of `method` for frames the size and layer count of `image` (already the input
+    /// the method reads: see [`method_input`]), and the buffers they go through.
+    pub fn new(backend: &mut dyn Backend, method: &MethodInfo, options: &MethodOptions, image: &LayeredImage) -> Result<Self> {
+        let (w, h, layers) = (image.width, image.height, image.max_layers);
+        if w == 0 || h == 0 || layers == 0 {
+            return Err(Error::InvalidArgument(format!("{} needs a non-empty image, got {w}x{h} with {layers} layers", method.name)));
+        }
+        let extent = Extent::new(w, h, layers);
+        // The context checks the extent (and refuses) before any buffer of the input is made.
+        let ctx = (method.create)(backend, &ContextDesc::new(extent, options.clone()))?;
+        let pixels = w as u64 * h as u64;
+        let sizes = [(4 * pixels * layers as u64, "frames/input"), (pixels, "frames/input-counts"), (3 * pixels, "frames/out")];
+        let mut io = Vec::new();
+        for (words, label) in sizes {
+            match backend.create_buffer(words, label) {
+                Ok(id) => io.push(id),
+                Err(e) => {
+                    io.into_iter().for_each(|id| backend.destroy_buffer(id));
+                    ctx.destroy(backend);
+                    return Err(e);
+                }
+            }
+        }
+        Ok(Runner { ctx, io: [io[0], io[1], io[2]], extent, later_allocations: 0, frames: 0 })
+    }
+
+    /// Device bytes of the context, the input and the output.
+    pub fn buffer_bytes(&self) -> u64 {
+        let pixels = self.extent.width as u64 * self.extent.height as u64;
+        self.ctx.device_bytes() + 4 * (4 * pixels * self.extent.layers as u64 + pixels + 3 * pixels)
+    }
+
+    /// One frame of `image` (of the runner's size and layer count) through `lens`: upload, record,
+    /// submit, read back.
+    pub fn frame(&mut self, backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens) -> Result<OneShot> {
+        let e = self.extent;
+        if (image.width, image.height, image.max_layers) != (e.width, e.height, e.layers) {
+            return Err(Error::InvalidArgument(format!(
+                "a frame of {}x{} with {} layers differs from the {}x{} with {} its runner was made for",
+                image.width, image.height, image.max_layers, e.width, e.height, e.layers
+            )));
+        }
+        if !lens.is_valid() {
+            return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
+        }
+        let before = backend.counters();
+        backend.write_buffer(self.io[0], 0, &slot_words(image))?;
+        backend.write_buffer(self.io[1], 0, &image.counts)?;
+        let frame = Frame::layers(e.width, e.height, e.layers, *lens, self.io[0], self.io[1], self.io[2]);
+        let mut attempt = 0;
+        let (stages, report) = loop {
+            self.ctx.record(backend, &frame)?;
+            let stages = backend.submit()?;
+            let report = self.ctx.report(backend)?;
+            if report.overflow == 0 || attempt == RETRIES || !self.ctx.grow_to_fit(backend)? {
+                break (stages, report);
+            }
+            attempt += 1;
+        };
+        let image = read_rgb(backend, self.io[2], e.width, e.height)?;
+        if self.frames > 0 {
+            self.later_allocations += backend.counters().since(&before).allocations;
+        }
+        self.frames += 1;
+        Ok(OneShot { image, report, stages, buffer_bytes: self.buffer_bytes() })
+    }
+
+    /// Device bytes of the context alone.
+    pub fn device_bytes(&self) -> u64 {
+        self.ctx.device_bytes()
+    }
+
+    pub fn destroy(self, backend: &mut dyn Backend) {
+        self.ctx.destroy(backend);
+        self.io.into_iter().for_each(|id| backend.destroy_buffer(id));
+    }
+}
+
+/// Renders `image` through `lens` with `method` on `backend`: one frame through a [`Runner`] made
+/// for it. A method that reads the front layer is handed only that ([`Reads::FrontLayer`]).
 pub fn one_shot(
     backend: &mut dyn Backend,
     method: &MethodInfo,
@@ -34,50 +137,9 @@ pub fn one_shot(
     if !lens.is_valid() {
         return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
     }
-    let front;
-    let image = match method.reads {
-        Reads::FrontLayer if image.max_layers > 1 => {
-            front = image.front_layer();
-            &front
-        }
-        _ => image,
-    };
-    let (w, h, layers) = (image.width, image.height, image.max_layers);
-    if w == 0 || h == 0 || layers == 0 {
-        return Err(Error::InvalidArgument(format!("{} needs a non-empty image, got {w}x{h} with {layers} layers", method.name)));
-    }
-    // The context checks the extent (and refuses) before the input is uploaded.
-    let mut ctx = (method.create)(backend, &ContextDesc::new(Extent::new(w, h, layers), options.clone()))?;
-    let ran = run(backend, ctx.as_mut(), image, lens);
-    ctx.destroy(backend);
+    let input = method_input(method, image);
+    let mut runner = Runner::new(backend, method, options, &input)?;
+    let ran = runner.frame(backend, &input, lens);
+    runner.destroy(backend);
     ran
-}
-
-/// Runs a frame again with a grown context at most this many times after an overflow.
-const RETRIES: u32 = 3;
-
-fn run(backend: &mut dyn Backend, ctx: &mut dyn DofContext, image: &LayeredImage, lens: &ThinLens) -> Result<OneShot> {
-    let (w, h, layers) = (image.width, image.height, image.max_layers);
-    let pixels = w as u64 * h as u64;
-    let input = slot_words(image);
-    let sizes = [(input.len() as u64, "one-shot/input"), (pixels, "one-shot/input-counts"), (3 * pixels, "one-shot/out")];
-    let io_bytes = 4 * sizes.iter().map(|s| s.0).sum::<u64>();
-    with_buffers(backend, &sizes, |backend, io| {
-        backend.write_buffer(io[0], 0, &input)?;
-        backend.write_buffer(io[1], 0, &image.counts)?;
-        let frame = Frame::layers(w, h, layers, *lens, io[0], io[1], io[2]);
-        let mut attempt = 0;
-        let (stages, report) = loop {
-            ctx.record(backend, &frame)?;
-            let stages = backend.submit()?;
-            let report = ctx.report(backend)?;
-            // A one-shot result is whole: what overflowed is grown and the frame run again.
-            if report.overflow == 0 || attempt == RETRIES || !ctx.grow_to_fit(backend)? {
-                break (stages, report);
-            }
-            attempt += 1;
-        };
-        let image = read_rgb(backend, io[2], w, h)?;
-        Ok(OneShot { image, report, stages, buffer_bytes: ctx.device_bytes() + io_bytes })
-    })
 }

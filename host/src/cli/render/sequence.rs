@@ -10,10 +10,8 @@
 //! animated preview `OUT.gif` through the PNG previews' tone map.
 
 use super::*;
-use dof::backend::{Backend, BufferId};
-use dof::frame::{ContextDesc, DofContext, Extent, Frame, Reads};
 use dof::io::write_gif_preview;
-use dof::methods::buffers::{read_rgb, slot_words};
+use dof::methods::one_shot::{Runner, method_input};
 use dof::scene::guard_band::{auto_margin, auto_margin_mesh};
 
 /// Most frames of a sequence.
@@ -81,86 +79,6 @@ pub(super) fn frame_path(out: &Path, i: u32, frames: u32) -> PathBuf {
     out.with_file_name(format!("{stem}-{i:0digits$}.exr"))
 }
 
-/// One context of a registry method and the buffers its frames go through, made once.
-struct Runner {
-    ctx: Box<dyn DofContext>,
-    io: Vec<BufferId>,
-    words: usize,
-    pixels: u64,
-    /// Allocations (backend counters) during the frames after the first.
-    later_allocations: u64,
-    frames: u32,
-}
-
-impl Runner {
-    fn new(b: &mut dyn Backend, method: &MethodInfo, options: &MethodOptions, image: &LayeredImage) -> anyhow::Result<Self> {
-        let pixels = image.width as u64 * image.height as u64;
-        let words = image.fragments.len() * 4;
-        let mut io = Vec::new();
-        for (len, label) in [(words as u64, "sequence/input"), (pixels, "sequence/counts"), (3 * pixels, "sequence/out")] {
-            match b.create_buffer(len, label) {
-                Ok(id) => io.push(id),
-                Err(e) => {
-                    io.into_iter().for_each(|id| b.destroy_buffer(id));
-                    return Err(e.into());
-                }
-            }
-        }
-        let extent = Extent::new(image.width, image.height, image.max_layers);
-        match (method.create)(b, &ContextDesc::new(extent, options.clone())) {
-            Ok(ctx) => {
-                println!(
-                    "{} ({}): one context for the sequence, {}x{} with {} layers, {:.1} MB on the device",
-                    method.title,
-                    method.paper,
-                    image.width,
-                    image.height,
-                    image.max_layers,
-                    ctx.device_bytes() as f64 / 1e6
-                );
-                Ok(Runner { ctx, io, words, pixels, later_allocations: 0, frames: 0 })
-            }
-            Err(e) => {
-                io.into_iter().for_each(|id| b.destroy_buffer(id));
-                Err(e.into())
-            }
-        }
-    }
-
-    /// One frame: upload, record, submit, read back. Returns the image and the device time.
-    fn frame(&mut self, b: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens) -> anyhow::Result<(RgbImage, f64)> {
-        let pixels = image.width as u64 * image.height as u64;
-        if image.fragments.len() * 4 != self.words || pixels != self.pixels {
-            bail!("a frame of {}x{} with {} layers differs from the sequence's first", image.width, image.height, image.max_layers);
-        }
-        let before = b.counters();
-        b.write_buffer(self.io[0], 0, &slot_words(image))?;
-        b.write_buffer(self.io[1], 0, &image.counts)?;
-        let frame = Frame::layers(image.width, image.height, image.max_layers, *lens, self.io[0], self.io[1], self.io[2]);
-        let mut ms = 0.0;
-        for attempt in 0.. {
-            self.ctx.record(b, &frame)?;
-            ms += b.submit()?.iter().map(|t| t.ms).filter(|m| m.is_finite()).sum::<f64>();
-            let report = self.ctx.report(b)?;
-            // A frame is whole: what overflowed is grown (allocations counted) and the frame run again.
-            if report.overflow == 0 || attempt == 3 || !self.ctx.grow_to_fit(b)? {
-                break;
-            }
-        }
-        let out = read_rgb(b, self.io[2], image.width, image.height)?;
-        if self.frames > 0 {
-            self.later_allocations += b.counters().since(&before).allocations;
-        }
-        self.frames += 1;
-        Ok((out, ms))
-    }
-
-    fn destroy(self, b: &mut dyn Backend) {
-        self.ctx.destroy(b);
-        self.io.into_iter().for_each(|id| b.destroy_buffer(id));
-    }
-}
-
 /// Renders the sequence of `shots` from `source` and writes its frames and preview.
 pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, shots: &[(Camera, ThinLens)]) -> anyhow::Result<()> {
     let n = shots.len() as u32;
@@ -217,21 +135,24 @@ pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, sho
                     }
                 },
                 Method::Frame(method) => {
-                    let front;
-                    let input = match method.reads {
-                        Reads::FrontLayer if layered.layers.max_layers > 1 => {
-                            front = layered.layers.front_layer();
-                            &front
-                        }
-                        _ => &layered.layers,
-                    };
+                    let input = method_input(method, &layered.layers);
                     if runner.is_none() {
-                        runner = Some(Runner::new(b.as_mut(), method, &method_options, input)?);
+                        let r = Runner::new(b.as_mut(), method, &method_options, &input)?;
+                        println!(
+                            "{} ({}): one context for the sequence, {}x{} with {} layers, {:.1} MB on the device",
+                            method.title,
+                            method.paper,
+                            input.width,
+                            input.height,
+                            input.max_layers,
+                            r.device_bytes() as f64 / 1e6
+                        );
+                        runner = Some(r);
                     }
                     let r = runner.as_mut().context("the context")?;
-                    let (image, ms) = r.frame(b.as_mut(), input, lens)?;
-                    kernel_ms = Some(ms);
-                    image.crop(margin)
+                    let out = r.frame(b.as_mut(), &input, lens)?;
+                    kernel_ms = Some(out.stages.iter().map(|t| t.ms).filter(|m| m.is_finite()).sum::<f64>());
+                    out.image.crop(margin)
                 }
             };
             if args.method != Method::Layers {

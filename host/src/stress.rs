@@ -7,7 +7,7 @@
 
 use crate::backend::Backend;
 use crate::error::{Error, Result};
-use crate::eval::methods::{Method, MethodInput};
+use crate::eval::methods::{EvaluatedMethod, MethodInput};
 use crate::layers::{Fragment, LayeredImage, RgbImage};
 use dof_shaders::lens::ThinLens;
 
@@ -277,7 +277,7 @@ fn red_sum(img: &RgbImage) -> f64 {
 
 impl Case {
     /// Runs this case on `method` (at its last quick setting) on `backend`.
-    pub fn run(&self, method: &dyn Method, backend: &mut dyn Backend) -> Outcome {
+    pub fn run(&self, method: &dyn EvaluatedMethod, backend: &mut dyn Backend) -> Outcome {
         let (img, lens) = (self.build)();
         let input = input(img, lens);
         let Some(setting) = method.settings(true).pop() else { return Outcome::NotApplicable("no setting") };

@@ -2,7 +2,7 @@
 //! report carries the documented fields.
 
 use dof::backend::{Backend, CpuBackend};
-use dof::eval::methods::registry;
+use dof::eval::methods::evaluated_methods;
 use dof::eval::{EvalOptions, evaluate};
 
 #[test]
@@ -11,7 +11,7 @@ fn quick_evaluation_covers_every_method_and_setting() {
     let options =
         EvalOptions { scenes: vec!["simple".into()], methods: vec![], quick: true, runs: 1, progress: false, coc_sweep: vec![4.0, 16.0] };
     let report = evaluate(&options, &mut backends).unwrap();
-    for method in registry() {
+    for method in evaluated_methods() {
         for setting in method.settings(true) {
             let found = report.records.iter().filter(|r| r.method == method.name() && r.setting == setting.label).count();
             assert_eq!(found, 1, "{} {}", method.name(), setting.label);
@@ -31,7 +31,7 @@ fn quick_evaluation_covers_every_method_and_setting() {
 
     // The max-CoC sweep: every backend method with a sweep setting at every target, the aperture
     // scaled so the largest CoC present lands on the target.
-    for method in registry().iter().filter(|m| m.uses_backend() && m.sweep_setting().is_some()) {
+    for method in evaluated_methods().iter().filter(|m| m.uses_backend() && m.sweep_setting().is_some()) {
         let points: Vec<f64> = report.coc_sweep.iter().filter(|r| r.method == method.name()).map(|r| r.max_coc_px).collect();
         assert_eq!(points.len(), 2, "{}", method.name());
         for (got, want) in points.iter().zip([4.0, 16.0]) {

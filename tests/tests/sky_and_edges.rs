@@ -4,7 +4,7 @@
 //! just under the margins measured (printed by each test).
 
 use dof::backend::{Backend, CpuBackend};
-use dof::eval::methods::{Gather, Method, MethodInput, Setting, Splat};
+use dof::eval::methods::{EvaluatedMethod, Gather, MethodInput, Setting, Splat};
 use dof::io::{read_layered_exr, write_exr};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::splat::{SplatOptions, splat};
@@ -36,7 +36,7 @@ fn layers(name: &str, lens: &ThinLens, guard_band: GuardBand) -> MultiLayerImage
 /// Gather, single-layer and multi-layer splatting (unmerged) on `backend`, cut to the frame.
 fn run(backend: &mut dyn Backend, ml: &MultiLayerImage, lens: ThinLens) -> [RgbImage; 3] {
     let input = MethodInput::new(ml.layers.clone(), lens, ml.margin);
-    let first = |m: &dyn Method| -> Setting { m.settings(false).into_iter().next().unwrap() };
+    let first = |m: &dyn EvaluatedMethod| -> Setting { m.settings(false).into_iter().next().unwrap() };
     let g = Gather.run(backend, &input, &Setting { label: "max-radius=48".into(), value: Some(48) }).unwrap();
     let single = Splat { multi_layer: false };
     let multi = Splat { multi_layer: true };

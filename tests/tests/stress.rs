@@ -2,14 +2,14 @@
 //! backend and on Vulkan (lavapipe in CI, validation on) meets the case's stated expectation.
 
 use dof::backend::{Backend, CpuBackend};
-use dof::eval::methods::registry;
+use dof::eval::methods::evaluated_methods;
 use dof::stress::{Outcome, case};
 use dof_tests::{assert_clean, vulkan};
 
 fn check(name: &str) {
     let case = case(name).unwrap();
     let mut vk = vulkan();
-    for method in registry() {
+    for method in evaluated_methods() {
         let mut backends: Vec<&mut dyn Backend> = Vec::new();
         let mut cpu = CpuBackend::new();
         backends.push(&mut cpu);

@@ -97,7 +97,7 @@ fn check_before_work(args: &EvalArgs) -> anyhow::Result<()> {
             anyhow::bail!("--scenes: unknown scene `{scene}`; give a built-in scene ({}) or a .gltf/.glb file", known.join(", "));
         }
     }
-    let methods: Vec<&str> = dof::eval::methods::registry().iter().map(|m| m.name()).collect();
+    let methods: Vec<&str> = dof::eval::methods::evaluated_methods().iter().map(|m| m.name()).collect();
     if let Some(unknown) = args.methods.iter().find(|m| !methods.contains(&m.as_str())) {
         anyhow::bail!("--methods: unknown method `{unknown}`; the methods are: {}", methods.join(", "));
     }
@@ -135,7 +135,7 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     let kernel_methods: Vec<String> = args
         .methods
         .iter()
-        .filter(|n| dof::eval::methods::registry().iter().any(|m| m.name() == n.as_str() && m.uses_backend()))
+        .filter(|n| dof::eval::methods::evaluated_methods().iter().any(|m| m.name() == n.as_str() && m.uses_backend()))
         .cloned()
         .collect();
     if args.scaling && !args.methods.is_empty() && kernel_methods.is_empty() {

@@ -1,7 +1,7 @@
 //! `dof stress`: every stiff and extreme case on every method and backend, pass or fail.
 
 use super::{BackendChoice, backends};
-use dof::eval::methods::registry;
+use dof::eval::methods::evaluated_methods;
 use dof::stress::{Outcome, cases};
 
 #[derive(clap::Args)]
@@ -16,7 +16,7 @@ pub struct StressArgs {
 pub fn run(args: &StressArgs) -> anyhow::Result<()> {
     let mut backends = backends(args.backend, false)?;
     let methods: Vec<_> =
-        registry().into_iter().filter(|m| args.methods.is_empty() || args.methods.iter().any(|n| n == m.name())).collect();
+        evaluated_methods().into_iter().filter(|m| args.methods.is_empty() || args.methods.iter().any(|n| n == m.name())).collect();
     if methods.is_empty() {
         anyhow::bail!("no method matches {:?}", args.methods);
     }

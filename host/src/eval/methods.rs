@@ -1,5 +1,6 @@
-//! The methods the evaluation knows, behind one trait: adding a method means adding it to
-//! [`registry`]; the evaluation code itself does not change.
+//! The methods the evaluation knows (each with its sweep of settings), behind one trait
+//! ([`EvaluatedMethod`], not to be confused with the frame API's `frame::MethodInfo`): adding one means adding it to
+//! [`evaluated_methods`]; the evaluation code itself does not change.
 
 use crate::backend::{Backend, CommandTime};
 use crate::error::Result;
@@ -54,7 +55,7 @@ pub struct MethodOutput {
     pub list_histogram: Vec<(u32, u32)>,
 }
 
-pub trait Method {
+pub trait EvaluatedMethod {
     fn name(&self) -> &'static str;
     /// Whether the method runs kernels (and so is timed per backend) or is host-only.
     fn uses_backend(&self) -> bool;
@@ -70,7 +71,7 @@ pub trait Method {
 /// The unblurred image: the front layer (what a pinhole camera sees). The floor every method must beat.
 pub struct Pinhole;
 
-impl Method for Pinhole {
+impl EvaluatedMethod for Pinhole {
     fn name(&self) -> &'static str {
         "pinhole"
     }
@@ -92,7 +93,7 @@ fn radius_setting(r: u32) -> Setting {
 /// The gathering baseline; its knob is the largest CoC radius honoured.
 pub struct Gather;
 
-impl Method for Gather {
+impl EvaluatedMethod for Gather {
     fn name(&self) -> &'static str {
         "gather"
     }
@@ -121,7 +122,7 @@ fn rings_setting(rings: u32) -> Setting {
 /// 2014); its knob is the ring count, its default what engines ship ([`DEFAULT_RINGS`]).
 pub struct RingGather;
 
-impl Method for RingGather {
+impl EvaluatedMethod for RingGather {
     fn name(&self) -> &'static str {
         "ring-gather"
     }
@@ -163,7 +164,7 @@ pub struct Splat {
     pub multi_layer: bool,
 }
 
-impl Method for Splat {
+impl EvaluatedMethod for Splat {
     fn name(&self) -> &'static str {
         if self.multi_layer { "multilayer" } else { "tiled" }
     }
@@ -211,7 +212,7 @@ impl Method for Splat {
 /// Thin-lens ray tracing through the multi-layer image; the knob is rays per pixel.
 pub struct Raytrace;
 
-impl Method for Raytrace {
+impl EvaluatedMethod for Raytrace {
     fn name(&self) -> &'static str {
         "raytrace"
     }
@@ -248,7 +249,7 @@ fn layered_setting(index: usize) -> Setting {
     Setting { label: format!("{} layers/doubling={per}", if cascaded { "cascaded" } else { "separate" }), value: Some(index as u32) }
 }
 
-impl Method for Layered {
+impl EvaluatedMethod for Layered {
     fn name(&self) -> &'static str {
         "layered"
     }
@@ -281,7 +282,7 @@ impl Method for Layered {
 /// Bokeh sprites over a gather (de Rousiers, Pettineo 2012); the knob is the luminance threshold.
 pub struct Bokeh;
 
-impl Method for Bokeh {
+impl EvaluatedMethod for Bokeh {
     fn name(&self) -> &'static str {
         "bokeh"
     }
@@ -307,7 +308,7 @@ impl Method for Bokeh {
 }
 
 /// Every method the evaluation runs, in report order.
-pub fn registry() -> Vec<Box<dyn Method>> {
+pub fn evaluated_methods() -> Vec<Box<dyn EvaluatedMethod>> {
     vec![
         Box::new(Pinhole),
         Box::new(Gather),

@@ -2,7 +2,7 @@
 //! against the scene's reference, full frame and inside the partial-occlusion region. Built-in
 //! scenes bring their exact ray-cast layers and thin-lens reference; glTF files (`.gltf`, `.glb`)
 //! are depth-peeled and measured against their accumulation buffer, both on the first backend.
-//! Methods come from [`methods::registry`], so a new method appears here without changes.
+//! Methods come from [`methods::evaluated_methods`], so a new method appears here without changes.
 //!
 //! Timing: one warm-up run, then the median of `runs` runs, per stage (GPU timestamps on Vulkan,
 //! wall time per dispatch on the CPU backend). Error: [`crate::metrics`] against the reference.
@@ -27,7 +27,7 @@ use crate::scene::{
 };
 use crate::timing::RunTimes;
 use dof_shaders::lens::ThinLens;
-use methods::{Method, MethodInput, MethodOutput, Setting, registry};
+use methods::{EvaluatedMethod, MethodInput, MethodOutput, Setting, evaluated_methods};
 use report::{BackendInfo, Record, Report, SceneInfo};
 
 pub struct EvalOptions {
@@ -52,7 +52,7 @@ pub fn default_coc_sweep(quick: bool) -> Vec<f64> {
 /// One method at one setting on one backend: a warm-up run, then `runs` timed runs. Returns the
 /// times and the last run's output.
 pub fn timed(
-    method: &dyn Method,
+    method: &dyn EvaluatedMethod,
     backend: &mut dyn Backend,
     input: &MethodInput,
     setting: &Setting,
@@ -69,7 +69,7 @@ pub fn timed(
 
 /// Runs the evaluation on `backends` (host-only methods run once, on the first).
 pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Result<Report> {
-    let all = registry();
+    let all = evaluated_methods();
     for m in &options.methods {
         if !all.iter().any(|x| x.name() == m) {
             let names: Vec<_> = all.iter().map(|x| x.name()).collect();
@@ -151,7 +151,7 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
         // the sweep's largest radius takes lavapipe tens of seconds a run at full size).
         let (w, h) = if options.quick { (160, 90) } else { (320, 180) };
         let scene = builtin(first)?.with_size(w, h);
-        let chosen: Vec<&dyn Method> = all
+        let chosen: Vec<&dyn EvaluatedMethod> = all
             .iter()
             .filter(|m| options.methods.is_empty() || options.methods.iter().any(|n| n == m.name()))
             .map(|m| m.as_ref())

@@ -6,7 +6,7 @@
 //! Both methods run at their sweep setting from [`super::methods`], through the same one-shot path
 //! as `dof eval` (a warm-up run, then the median of the timed runs of the kernels' times).
 
-use super::methods::{Method, MethodInput, RingGather, Splat};
+use super::methods::{EvaluatedMethod, MethodInput, RingGather, Splat};
 use super::timed;
 use crate::backend::Backend;
 use crate::error::{Error, Result};
@@ -70,7 +70,7 @@ pub fn ratios(options: &RatioOptions, backends: &mut [Box<dyn Backend>]) -> Resu
         for b in backends.iter_mut() {
             let b = b.as_mut();
             // One method at its sweep setting: time and error.
-            let mut measure = |method: &dyn Method| -> Result<Timed> {
+            let mut measure = |method: &dyn EvaluatedMethod| -> Result<Timed> {
                 let setting =
                     method.sweep_setting().ok_or_else(|| Error::InvalidArgument(format!("{} has no sweep setting", method.name())))?;
                 let (times, output) = timed(method, b, &input, &setting, options.runs)?;

@@ -1,7 +1,7 @@
 //! Scaling with resolution and blur: the run time and peak memory of every method that runs kernels,
 //! on every backend, against the image size (the blur scaled with the image, as a built-in scene's
 //! lens does at any size) and against the largest CoC radius at a fixed size (the aperture scaled as
-//! in the max-CoC sweep of [`super::sweep`]). Methods come from [`super::methods::registry`], each at
+//! in the max-CoC sweep of [`super::sweep`]). Methods come from [`super::methods::evaluated_methods`], each at
 //! its sweep setting or else its first setting; host-only methods take no device time and are left
 //! out.
 //!
@@ -18,7 +18,7 @@
 //! over [`PREDICTED_BUDGETS`] budgets. A warm-up over the budget is the point's only run. A run that
 //! fails skips the rest of its series the same way.
 
-use super::methods::{Method, MethodInput, Setting, registry};
+use super::methods::{EvaluatedMethod, MethodInput, Setting, evaluated_methods};
 use super::plot::{Axis, Figure, Mark, Series, Shape, palette};
 use super::report::BackendInfo;
 use super::sweep::{input_at_max_coc, max_coc_radius};
@@ -192,8 +192,8 @@ mod rss {
 }
 
 /// The methods the sweep runs, each with its setting.
-fn chosen(names: &[String]) -> Result<Vec<(Box<dyn Method>, Setting)>> {
-    let all = registry();
+fn chosen(names: &[String]) -> Result<Vec<(Box<dyn EvaluatedMethod>, Setting)>> {
+    let all = evaluated_methods();
     for n in names {
         match all.iter().find(|m| m.name() == n) {
             None => {
@@ -227,7 +227,7 @@ struct Measured {
 
 /// A warm-up, then `runs` timed runs unless the warm-up alone was over the budget.
 fn measure(
-    method: &dyn Method,
+    method: &dyn EvaluatedMethod,
     b: &mut dyn Backend,
     input: &MethodInput,
     setting: &Setting,

@@ -3,7 +3,7 @@
 //! value, and the multi-layer image is cast again for that lens (its umbra thinning and disocclusion
 //! buffer depend on the aperture). Time only: the references are for the scene's own aperture.
 
-use super::methods::{Method, MethodInput};
+use super::methods::{EvaluatedMethod, MethodInput};
 use super::report::SweepRecord;
 use super::timed;
 use crate::backend::Backend;
@@ -61,7 +61,7 @@ pub fn input_at_max_coc(scene: &BuiltinScene, base: &ThinLens, base_layers: &Lay
 pub fn coc_sweep(
     name: &str,
     scene: &BuiltinScene,
-    methods: &[&dyn Method],
+    methods: &[&dyn EvaluatedMethod],
     backends: &mut [Box<dyn Backend>],
     options: &SweepOptions,
 ) -> Result<Vec<SweepRecord>> {

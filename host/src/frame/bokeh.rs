@@ -4,7 +4,7 @@
 //! pipeline on Vulkan, its compute fallback on the CPU) and the sum. Nothing is planned or read
 //! back on the host.
 
-use super::context::{ContextReport, DofContext, Extent};
+use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::gather::{MAX_RADIUS, record_gather};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, ready, record_front, record_input, record_output};
 use crate::aperture::ApertureShape;
@@ -165,7 +165,7 @@ impl BokehContext {
 
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, Extent::new(d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
         let b = &self.b;
         let (width, height) = (f.width, f.height);
         let pixels = width as u64 * height as u64;
@@ -211,7 +211,7 @@ impl DofContext for BokehContext {
         "bokeh"
     }
     fn extent(&self) -> Extent {
-        Extent::new(self.desc.max_width, self.desc.max_height, self.desc.max_layers)
+        self.desc.extent()
     }
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
         BokehContext::record(self, backend, frame)
@@ -236,10 +236,8 @@ impl DofContext for BokehContext {
     }
     fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
         self.owned.check(backend)?;
-        let desc = BokehContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
-        let old = std::mem::replace(self, BokehContext::new(backend, &desc)?);
-        old.destroy(backend);
-        Ok(())
+        let desc = self.desc.clone();
+        remake(self, backend, &desc, extent, BokehContext::new, BokehContext::destroy)
     }
     fn destroy(self: Box<Self>, backend: &mut dyn Backend) {
         BokehContext::destroy(*self, backend)

@@ -34,6 +34,52 @@ impl Extent {
     }
 }
 
+/// What every context's description holds: its largest frame, as `max_width`, `max_height` and
+/// `max_layers`.
+pub(crate) trait Described: Clone {
+    fn extent(&self) -> Extent;
+    /// The same description for another largest frame.
+    fn at(&self, extent: Extent) -> Self;
+}
+
+macro_rules! described {
+    ($($desc:ty),* $(,)?) => {$(
+        impl Described for $desc {
+            fn extent(&self) -> Extent {
+                Extent::new(self.max_width, self.max_height, self.max_layers)
+            }
+            fn at(&self, e: Extent) -> Self {
+                Self { max_width: e.width, max_height: e.height, max_layers: e.layers, ..self.clone() }
+            }
+        }
+    )*};
+}
+
+described!(
+    super::splat::SplatContextDesc,
+    super::gather::GatherContextDesc,
+    super::ring_gather::RingGatherContextDesc,
+    super::bokeh::BokehContextDesc,
+    super::raytrace::RaytraceContextDesc,
+    super::layered::LayeredContextDesc,
+);
+
+/// How every context resizes: one made by `make` from its description at `extent` replaces it,
+/// and the old one is freed after, so a failure keeps the old one. Callers check first that
+/// `backend` is the context's own.
+pub(crate) fn remake<C, D: Described>(
+    ctx: &mut C,
+    backend: &mut dyn Backend,
+    desc: &D,
+    extent: Extent,
+    make: fn(&mut dyn Backend, &D) -> Result<C>,
+    destroy: fn(C, &mut dyn Backend),
+) -> Result<()> {
+    let fresh = make(backend, &desc.at(extent))?;
+    destroy(std::mem::replace(ctx, fresh), backend);
+    Ok(())
+}
+
 /// What a context's last frame did and left out, in a form every method shares. Read from the
 /// device, so only once that frame's work has completed.
 #[derive(Clone, Debug, Default, PartialEq)]

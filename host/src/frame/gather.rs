@@ -1,7 +1,7 @@
 //! The gathering baseline (Riguer et al. 2003) as a frame context: the window radius reduced on the
 //! device from the frame's depths, so nothing is planned on the host.
 
-use super::context::{ContextReport, DofContext, Extent};
+use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
@@ -86,7 +86,7 @@ impl GatherContext {
     /// Records one frame: the front layer of the input, the radius reduction, the gather.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, Extent::new(d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
         let slots = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         record_front(backend, f, slots, self.color, self.depth)?;
@@ -105,7 +105,7 @@ impl DofContext for GatherContext {
         "gather"
     }
     fn extent(&self) -> Extent {
-        Extent::new(self.desc.max_width, self.desc.max_height, self.desc.max_layers)
+        self.desc.extent()
     }
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
         GatherContext::record(self, backend, frame)
@@ -123,10 +123,8 @@ impl DofContext for GatherContext {
     }
     fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
         self.owned.check(backend)?;
-        let desc = GatherContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
-        let old = std::mem::replace(self, GatherContext::new(backend, &desc)?);
-        old.destroy(backend);
-        Ok(())
+        let desc = self.desc.clone();
+        remake(self, backend, &desc, extent, GatherContext::new, GatherContext::destroy)
     }
     fn destroy(self: Box<Self>, backend: &mut dyn Backend) {
         GatherContext::destroy(*self, backend)

@@ -24,7 +24,7 @@
 //! by composing the cascade's Gaussians (each truncated at 3σ) instead of merging them; the
 //! layered suite measures how much.
 
-use super::context::{ContextReport, DofContext, Extent};
+use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_input, record_output};
 use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
@@ -271,7 +271,7 @@ impl LayeredContext {
     /// mattes, blurs and composites, the normalisation.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, Extent::new(d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
         let (input, counts) = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         let b = &self.passes;
@@ -369,7 +369,7 @@ impl DofContext for LayeredContext {
         "layered"
     }
     fn extent(&self) -> Extent {
-        Extent::new(self.desc.max_width, self.desc.max_height, self.desc.max_layers)
+        self.desc.extent()
     }
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
         LayeredContext::record(self, backend, frame)
@@ -406,11 +406,8 @@ impl DofContext for LayeredContext {
     }
     fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
         self.owned.check(backend)?;
-        let desc =
-            LayeredContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
-        let old = std::mem::replace(self, LayeredContext::new(backend, &desc)?);
-        old.destroy(backend);
-        Ok(())
+        let desc = self.desc.clone();
+        remake(self, backend, &desc, extent, LayeredContext::new, LayeredContext::destroy)
     }
     fn destroy(self: Box<Self>, backend: &mut dyn Backend) {
         LayeredContext::destroy(*self, backend)

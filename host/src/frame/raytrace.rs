@@ -10,7 +10,7 @@
 //! neighbouring pixels do not share one noise pattern. Both backends get the same buffer, so both
 //! trace the same rays.
 
-use super::context::{ContextReport, DofContext, Extent};
+use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_input, record_output};
 use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
@@ -198,7 +198,7 @@ impl RaytraceContext {
     /// Records one frame: the missed-ray count cleared, the hierarchy, the trace.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, Extent::new(d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
         let (input, counts) = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         let (params, _) = trace_params(f.width, f.height, f.layer_count(), &d.options, f.lens);
@@ -220,7 +220,7 @@ impl DofContext for RaytraceContext {
         "raytrace"
     }
     fn extent(&self) -> Extent {
-        Extent::new(self.desc.max_width, self.desc.max_height, self.desc.max_layers)
+        self.desc.extent()
     }
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
         RaytraceContext::record(self, backend, frame)
@@ -250,11 +250,8 @@ impl DofContext for RaytraceContext {
     }
     fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
         self.owned.check(backend)?;
-        let desc =
-            RaytraceContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
-        let old = std::mem::replace(self, RaytraceContext::new(backend, &desc)?);
-        old.destroy(backend);
-        Ok(())
+        let desc = self.desc.clone();
+        remake(self, backend, &desc, extent, RaytraceContext::new, RaytraceContext::destroy)
     }
     fn destroy(self: Box<Self>, backend: &mut dyn Backend) {
         RaytraceContext::destroy(*self, backend)

@@ -3,7 +3,7 @@
 //! creation and nothing planned on the host, so its cost is fixed by the frame's size and the ring
 //! count, not by the blur.
 
-use super::context::{ContextReport, DofContext, Extent};
+use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
@@ -143,7 +143,7 @@ impl RingGatherContext {
     /// gather over rings and the composite.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, Extent::new(d.max_width, d.max_height, d.max_layers), self.io.as_ref())?;
+        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
         let slots = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         let b = &self.passes;
@@ -173,7 +173,7 @@ impl DofContext for RingGatherContext {
         "ring-gather"
     }
     fn extent(&self) -> Extent {
-        Extent::new(self.desc.max_width, self.desc.max_height, self.desc.max_layers)
+        self.desc.extent()
     }
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
         RingGatherContext::record(self, backend, frame)
@@ -192,11 +192,8 @@ impl DofContext for RingGatherContext {
     }
     fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
         self.owned.check(backend)?;
-        let desc =
-            RingGatherContextDesc { max_width: extent.width, max_height: extent.height, max_layers: extent.layers, ..self.desc.clone() };
-        let old = std::mem::replace(self, RingGatherContext::new(backend, &desc)?);
-        old.destroy(backend);
-        Ok(())
+        let desc = self.desc.clone();
+        remake(self, backend, &desc, extent, RingGatherContext::new, RingGatherContext::destroy)
     }
     fn knob(&self) -> Option<u32> {
         Some(self.desc.options.rings)

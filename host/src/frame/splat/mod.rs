@@ -1,7 +1,7 @@
 //! Tiled splatting as a frame context: every buffer and bound fixed at creation, then per frame a
 //! recording of the stages in `dof_shaders::splat` with no allocation, readback or host planning.
 
-use super::context::{ContextReport, DofContext, Extent};
+use super::context::{ContextReport, Described, DofContext, Extent};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_input, record_output};
 use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
@@ -322,7 +322,7 @@ impl SplatContext {
     /// Frames within the current maximum need no resize.
     pub fn resize(&mut self, backend: &mut dyn Backend, max_width: u32, max_height: u32, max_layers: u32) -> Result<()> {
         self.owned.check(backend)?;
-        let desc = SplatContextDesc { max_width, max_height, max_layers, ..self.desc.clone() };
+        let desc = self.desc.at(Extent::new(max_width, max_height, max_layers));
         let fresh = SplatContext::new(backend, &desc)?.named(self.name);
         let old = std::mem::replace(self, fresh);
         old.destroy(backend);
@@ -334,7 +334,7 @@ impl SplatContext {
     /// `begin_external` and `end_external`).
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, Extent::new(d.max_width, d.max_height, d.max_layers), self.b.io.as_ref())?;
+        check_frame(backend, f, &self.owned, d.extent(), self.b.io.as_ref())?;
         let b = &self.b;
         let pixels = f.width as u64 * f.height as u64;
         let tiles_x = f.width.div_ceil(self.desc.options.tile);
@@ -469,7 +469,7 @@ impl DofContext for SplatContext {
         self.name
     }
     fn extent(&self) -> Extent {
-        Extent::new(self.desc.max_width, self.desc.max_height, self.desc.max_layers)
+        self.desc.extent()
     }
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
         SplatContext::record(self, backend, frame)

@@ -17,9 +17,11 @@ use crate::error::{Error, Result};
 use dof_shaders::{DrawDesc, KernelDesc};
 
 pub mod cpu;
+mod run;
 pub mod vulkan;
 
 pub use cpu::CpuBackend;
+pub use run::RunKernel;
 pub use vulkan::{RawDevice, RawOptions, RequiredFeatures, VulkanBackend, VulkanOptions};
 
 /// A buffer of `u32` words owned by a backend.

@@ -80,6 +80,6 @@ mod tests {
 
     #[test]
     fn the_table_holds_the_kernel() {
-        assert_eq!(own_modules().iter().map(|(e, _)| *e).collect::<Vec<_>>(), [HISTOGRAM.entry]);
+        assert_eq!(own_modules().iter().map(|(e, _)| *e).collect::<Vec<_>>(), [own_kernel_shaders::HISTOGRAM.entry]);
     }
 }

@@ -199,6 +199,11 @@ impl Recorder {
         self.recording
     }
 
+    /// The caller's command buffer, between `begin_external` and `end_external`.
+    pub fn external_command_buffer(&self) -> Option<vk::CommandBuffer> {
+        self.external
+    }
+
     /// Whether commands go into the caller's command buffer.
     pub fn is_external(&self) -> bool {
         self.external.is_some()

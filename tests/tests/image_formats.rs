@@ -308,6 +308,11 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
     let mut ctx = context(&mut vk);
     let [fragments, counts, from_images, from_buffers] = buffers(&mut vk);
     let mut unsupported = Vec::new();
+    for format in ImageFormat::ALL {
+        let f = r.format_features(format.vk_format());
+        let copies = [vk::FormatFeatureFlags::TRANSFER_SRC, vk::FormatFeatureFlags::TRANSFER_DST].map(|t| f.contains(t));
+        eprintln!("{format}: transfer source {}, destination {}", copies[0], copies[1]);
+    }
     for case in cases() {
         let src = vk::FormatFeatureFlags::TRANSFER_SRC;
         let missing: Vec<ImageFormat> =

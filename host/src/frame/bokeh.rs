@@ -4,6 +4,7 @@
 //! pipeline on Vulkan, its compute fallback on the CPU) and the sum. Nothing is planned or read
 //! back on the host.
 
+use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::gather::{MAX_RADIUS, record_gather};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, ready, record_front, record_input, record_output};
@@ -166,8 +167,13 @@ impl BokehContext {
     }
 
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
+        record_checked(self, backend, f, Self::commands)
+    }
+
+    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
         let b = &self.b;
         let (width, height) = (f.width, f.height);
         let pixels = width as u64 * height as u64;

@@ -1,6 +1,7 @@
 //! The gathering baseline (Riguer et al. 2003) as a frame context: the window radius reduced on the
 //! device from the frame's depths, so nothing is planned on the host.
 
+use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
@@ -84,8 +85,12 @@ impl GatherContext {
 
     /// Records one frame: the front layer of the input, the radius reduction, the gather.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
-        let d = &self.desc;
-        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
+        check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
+        record_checked(self, backend, f, Self::commands)
+    }
+
+    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let slots = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         record_front(backend, f, slots, self.color, self.depth)?;

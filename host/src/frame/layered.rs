@@ -24,6 +24,7 @@
 //! by composing the cascade's Gaussians (each truncated at 3σ) instead of merging them; the
 //! layered suite measures how much.
 
+use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_input, record_output};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
@@ -270,8 +271,13 @@ impl LayeredContext {
     /// Records one frame: the composites cleared, the device plan, the fixed schedule of gated
     /// mattes, blurs and composites, the normalisation.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
+        record_checked(self, backend, f, Self::commands)
+    }
+
+    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
         let (input, counts) = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         let b = &self.passes;

@@ -10,6 +10,7 @@
 //! neighbouring pixels do not share one noise pattern. Both backends get the same buffer, so both
 //! trace the same rays.
 
+use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_input, record_output};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
@@ -198,8 +199,13 @@ impl RaytraceContext {
 
     /// Records one frame: the missed-ray count cleared, the hierarchy, the trace.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
+        record_checked(self, backend, f, Self::commands)
+    }
+
+    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
         let (input, counts) = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         let (params, _) = trace_params(f.width, f.height, f.layer_count(), &d.options, f.lens);

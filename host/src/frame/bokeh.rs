@@ -7,6 +7,7 @@
 use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::gather::{MAX_RADIUS, record_gather};
+use super::in_flight::{InFlight, per_frame};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, ready, record_front, record_input, record_output};
 use crate::aperture::ApertureShape;
 use crate::backend::{Backend, BufferId, RunKernel, groups_for, push_words};
@@ -47,11 +48,13 @@ pub struct BokehContextDesc {
     pub options: BokehOptions,
     /// Hold the buffers that image inputs and outputs go through.
     pub image_io: bool,
+    /// Frames in flight (default 1): copies kept of what the report reads.
+    pub frames_in_flight: u32,
 }
 
 impl BokehContextDesc {
     pub fn new(max_width: u32, max_height: u32, max_layers: u32, options: BokehOptions) -> Self {
-        BokehContextDesc { max_width, max_height, max_layers, options, image_io: false }
+        BokehContextDesc { max_width, max_height, max_layers, options, image_io: false, frames_in_flight: 1 }
     }
 }
 
@@ -62,16 +65,19 @@ struct Buffers {
     depth: BufferId,
     rest: BufferId,
     sprites: BufferId,
-    counters: BufferId,
     blur: BufferId,
     sprite_image: BufferId,
-    radius: BufferId,
+    /// Per frame in flight, what its report reads: the detection counter (beside the draw's
+    /// arguments) and the gather's window radius.
+    counters: Vec<BufferId>,
+    radius: Vec<BufferId>,
 }
 
 /// A bokeh-sprite context (see the [module docs](crate::frame)).
 pub struct BokehContext {
     desc: BokehContextDesc,
     b: Buffers,
+    in_flight: InFlight<()>,
     io: Option<ImageIo>,
     scan: ScanScratch,
     owned: Owned,
@@ -110,19 +116,21 @@ impl BokehContext {
             (pixels, "bokeh/depth"),
             (3 * pixels, "bokeh/rest"),
             (SPRITE_WORDS as u64 * desc.options.capacity as u64, "bokeh/sprites"),
-            (ARGS_WORDS as u64 + 1, "bokeh/counters"),
             (3 * pixels, "bokeh/blur"),
             (4 * pixels, "bokeh/sprite-image"),
-            (1, "bokeh/gather-radius"),
         ];
         let max_words = backend.limits().max_buffer_bytes / 4;
         let widest = sizes.iter().map(|s| (s.0, s.1)).chain([(4 * pixels * desc.max_layers as u64, "input slots")]).max_by_key(|s| s.0);
         if let Some((words, what)) = widest.filter(|s| s.0 > max_words) {
             return Err(Error::TooLarge { what: format!("{what} (words)"), size: words, limit: max_words });
         }
+        let in_flight = InFlight::new(desc.frames_in_flight)?;
         let mut owned = Owned::default();
         let made = (|| {
-            let ids = sizes.iter().map(|&(words, label)| owned.make(backend, words, label)).collect::<Result<Vec<_>>>()?;
+            let mut ids = sizes.iter().map(|&(words, label)| owned.make(backend, words, label)).collect::<Result<Vec<_>>>()?;
+            let frames = desc.frames_in_flight;
+            ids.extend(per_frame(&mut owned, backend, frames, ARGS_WORDS as u64 + 1, "bokeh/counters")?);
+            ids.extend(per_frame(&mut owned, backend, frames, 1, "bokeh/gather-radius")?);
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             backend.write_buffer(ids[0], 0, &mask_words)?;
             // The sprite draw's target for the largest frame, so that no frame makes one.
@@ -131,6 +139,7 @@ impl BokehContext {
             Ok((ids, io, scan))
         })();
         let ((ids, io, scan), owned) = owned.or_free(backend, made)?;
+        let frames = desc.frames_in_flight as usize;
         let b = Buffers {
             mask: ids[0],
             slots: ids[1],
@@ -138,12 +147,12 @@ impl BokehContext {
             depth: ids[3],
             rest: ids[4],
             sprites: ids[5],
-            counters: ids[6],
-            blur: ids[7],
-            sprite_image: ids[8],
-            radius: ids[9],
+            blur: ids[6],
+            sprite_image: ids[7],
+            counters: ids[8..8 + frames].to_vec(),
+            radius: ids[8 + frames..].to_vec(),
         };
-        let ctx = BokehContext { desc: desc.clone(), b, io, scan, owned };
+        let ctx = BokehContext { desc: desc.clone(), b, in_flight, io, scan, owned };
         // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own
         // work (Vulkan still makes its draw target at the first draw of a size).
         let mut kernels: Vec<&'static dof_shaders::KernelDesc> = dof_shaders::bokeh::KERNELS.to_vec();
@@ -168,13 +177,17 @@ impl BokehContext {
 
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
-        record_checked(self, backend, f, Self::commands)
+        record_checked(self, backend, f, Self::commands)?;
+        self.in_flight.recorded(());
+        Ok(())
     }
 
     /// The frame's commands (checked by [`record_checked`] before they are recorded).
     fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
         let b = &self.b;
+        let slot = self.in_flight.next();
+        let (counters, radius) = (b.counters[slot], b.radius[slot]);
         let (width, height) = (f.width, f.height);
         let pixels = width as u64 * height as u64;
         let slots = record_input(backend, f, self.io.as_ref())?;
@@ -194,15 +207,15 @@ impl BokehContext {
         };
         let push = push_words(&params);
         let groups = groups_for(&BOKEH_DETECT, pixels);
-        backend.fill(b.counters, 0, ARGS_WORDS as u64 + 1, 0, "bokeh/detect")?;
-        let detect = bokeh_detect::Bindings { color: b.color, depth: b.depth, flags: b.slots, counters: b.counters };
+        backend.fill(counters, 0, ARGS_WORDS as u64 + 1, 0, "bokeh/detect")?;
+        let detect = bokeh_detect::Bindings { color: b.color, depth: b.depth, flags: b.slots, counters };
         backend.run(detect, groups, &params, "bokeh/detect")?;
         self.scan.record(backend, b.slots, 0, pixels)?;
         let emit = bokeh_emit::Bindings { color: b.color, depth: b.depth, slots: b.slots, sprites: b.sprites, rest: b.rest, mask: b.mask };
         backend.run(emit, groups, &params, "bokeh/detect")?;
-        record_gather(backend, f, MAX_RADIUS, gather::Bindings { color: b.rest, depth: b.depth, out: b.blur, plan: b.radius })?;
-        backend.run(bokeh_args::Bindings { counters: b.counters }, [1, 1, 1], &params, "bokeh/draw")?;
-        backend.draw_indirect(&BOKEH_DRAW, b.counters, &[b.sprites, b.mask], b.sprite_image, [width, height], &push, "bokeh/draw")?;
+        record_gather(backend, f, MAX_RADIUS, gather::Bindings { color: b.rest, depth: b.depth, out: b.blur, plan: radius })?;
+        backend.run(bokeh_args::Bindings { counters }, [1, 1, 1], &params, "bokeh/draw")?;
+        backend.draw_indirect(&BOKEH_DRAW, counters, &[b.sprites, b.mask], b.sprite_image, [width, height], &push, "bokeh/draw")?;
         backend.run(bokeh_combine::Bindings { blur: b.blur, sprites: b.sprite_image, out }, groups, &params, "bokeh/draw")?;
         record_output(backend, f, self.io.as_ref())
     }
@@ -210,8 +223,16 @@ impl BokehContext {
     /// Bright pixels the last frame detected and the gather's window radius (reads them back:
     /// call once the frame completed).
     pub fn detected_and_radius(&self, backend: &mut dyn Backend) -> Result<(u64, u32)> {
-        let detected = backend.read_buffer(self.b.counters, COUNTER as u64, 1)?[0] as u64;
-        let radius = backend.read_buffer(self.b.radius, 0, 1)?[0].min(MAX_RADIUS);
+        self.detected_and_radius_of(backend, 0)
+    }
+
+    /// The same for the frame recorded `frames_ago` recordings before the last (see
+    /// [`DofContext::report_frame`]).
+    pub fn detected_and_radius_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<(u64, u32)> {
+        self.owned.check(backend)?;
+        let (slot, ()) = self.in_flight.slot(frames_ago)?;
+        let detected = backend.read_buffer(self.b.counters[slot], COUNTER as u64, 1)?[0] as u64;
+        let radius = backend.read_buffer(self.b.radius[slot], 0, 1)?[0].min(MAX_RADIUS);
         Ok((detected, radius))
     }
 }
@@ -227,7 +248,13 @@ impl DofContext for BokehContext {
         BokehContext::record(self, backend, frame)
     }
     fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
-        let (detected, radius) = self.detected_and_radius(backend)?;
+        self.report_frame(backend, 0)
+    }
+    fn frames_in_flight(&self) -> u32 {
+        self.in_flight.frames()
+    }
+    fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
+        let (detected, radius) = self.detected_and_radius_of(backend, frames_ago)?;
         let overflow = detected.saturating_sub(self.desc.options.capacity as u64);
         let mut summary = format!("{detected} bright pixels detected, {} drawn as sprites", detected - overflow);
         if overflow > 0 {

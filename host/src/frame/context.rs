@@ -111,6 +111,26 @@ pub trait DofContext {
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()>;
     /// What the last recorded frame did and left out (reads the device: call once it completed).
     fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport>;
+    /// Frames in flight the context serves (chosen at creation, `frames_in_flight` of its
+    /// description): each recording writes the next of that many report slots, round robin.
+    fn frames_in_flight(&self) -> u32 {
+        1
+    }
+    /// What the frame recorded `frames_ago` recordings before the last did (0: the last, as
+    /// [`DofContext::report`]). Read a frame's report after its fence and before recording
+    /// [`DofContext::frames_in_flight`] more frames, which reuse its slot: with `N` frames in
+    /// flight, after waiting on the fence of the frame about to be reused and before recording
+    /// into it, that frame's report is `report_frame(backend, N - 1)`. Refused for a frame whose
+    /// slot was reused or that was never recorded.
+    fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
+        match frames_ago {
+            0 => self.report(backend),
+            _ => Err(crate::error::Error::InvalidArgument(format!(
+                "the {} context keeps one frame's report; asked for the frame {frames_ago} recordings before the last",
+                self.method()
+            ))),
+        }
+    }
     /// Device bytes the context holds.
     fn device_bytes(&self) -> u64;
     /// Makes the context hold frames up to `extent` (frees and reallocates; between frames only).

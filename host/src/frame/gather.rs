@@ -3,6 +3,7 @@
 
 use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
+use super::in_flight::{InFlight, per_frame};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
@@ -23,11 +24,13 @@ pub struct GatherContextDesc {
     pub max_radius: Option<u32>,
     /// Hold the buffers that image inputs and outputs go through.
     pub image_io: bool,
+    /// Frames in flight (default 1): copies kept of what the report reads.
+    pub frames_in_flight: u32,
 }
 
 impl GatherContextDesc {
     pub fn new(max_width: u32, max_height: u32, max_layers: u32) -> Self {
-        GatherContextDesc { max_width, max_height, max_layers, max_radius: None, image_io: false }
+        GatherContextDesc { max_width, max_height, max_layers, max_radius: None, image_io: false, frames_in_flight: 1 }
     }
 }
 
@@ -48,7 +51,9 @@ pub struct GatherContext {
     cap: u32,
     color: BufferId,
     depth: BufferId,
-    plan: BufferId,
+    /// Per frame in flight: the window radius its report reads.
+    plans: Vec<BufferId>,
+    in_flight: InFlight<()>,
     io: Option<ImageIo>,
     owned: Owned,
 }
@@ -60,16 +65,17 @@ impl GatherContext {
             return Err(Error::TooLarge { what: "gather radius (px)".into(), size: cap as u64, limit: MAX_RADIUS as u64 });
         }
         let pixels = context_pixels(backend, "gathering", desc.max_width, desc.max_height, desc.max_layers)?;
+        let in_flight = InFlight::new(desc.frames_in_flight)?;
         let mut owned = Owned::default();
         let made = (|| {
             let color = owned.make(backend, 3 * pixels, "gather/color")?;
             let depth = owned.make(backend, pixels, "gather/depth")?;
-            let plan = owned.make(backend, 1, "gather/plan")?;
+            let plans = per_frame(&mut owned, backend, desc.frames_in_flight, 1, "gather/plan")?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
-            Ok((color, depth, plan, io))
+            Ok((color, depth, plans, io))
         })();
-        let ((color, depth, plan, io), owned) = owned.or_free(backend, made)?;
-        let ctx = GatherContext { desc: desc.clone(), cap, color, depth, plan, io, owned };
+        let ((color, depth, plans, io), owned) = owned.or_free(backend, made)?;
+        let ctx = GatherContext { desc: desc.clone(), cap, color, depth, plans, in_flight, io, owned };
         let mut kernels = vec![&GATHER, &GATHER_PLAN];
         kernels.extend(dof_shaders::frame_io::KERNELS);
         ready(backend, ctx, &kernels, &[], Self::destroy)
@@ -86,7 +92,9 @@ impl GatherContext {
     /// Records one frame: the front layer of the input, the radius reduction, the gather.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
-        record_checked(self, backend, f, Self::commands)
+        record_checked(self, backend, f, Self::commands)?;
+        self.in_flight.recorded(());
+        Ok(())
     }
 
     /// The frame's commands (checked by [`record_checked`] before they are recorded).
@@ -94,14 +102,23 @@ impl GatherContext {
         let slots = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         record_front(backend, f, slots, self.color, self.depth)?;
-        let bindings = gather::Bindings { color: self.color, depth: self.depth, out: output, plan: self.plan };
+        let plan = self.plans[self.in_flight.next()];
+        let bindings = gather::Bindings { color: self.color, depth: self.depth, out: output, plan };
         record_gather(backend, f, self.cap, bindings)?;
         record_output(backend, f, self.io.as_ref())
     }
 
     /// The window radius the last frame scanned (reads it back: call once the frame completed).
     pub fn radius(&self, backend: &mut dyn Backend) -> Result<u32> {
-        Ok(backend.read_buffer(self.plan, 0, 1)?[0].min(self.cap))
+        self.radius_of(backend, 0)
+    }
+
+    /// The window radius the frame recorded `frames_ago` recordings before the last scanned (see
+    /// [`DofContext::report_frame`]).
+    pub fn radius_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<u32> {
+        self.owned.check(backend)?;
+        let (slot, ()) = self.in_flight.slot(frames_ago)?;
+        Ok(backend.read_buffer(self.plans[slot], 0, 1)?[0].min(self.cap))
     }
 }
 
@@ -116,7 +133,13 @@ impl DofContext for GatherContext {
         GatherContext::record(self, backend, frame)
     }
     fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
-        let radius = self.radius(backend)?;
+        self.report_frame(backend, 0)
+    }
+    fn frames_in_flight(&self) -> u32 {
+        self.in_flight.frames()
+    }
+    fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
+        let radius = self.radius_of(backend, frames_ago)?;
         Ok(ContextReport {
             summary: format!("gathered over a window of radius {radius} px (cap {} px)", self.cap),
             figures: [("radius_px".to_string(), radius as f64)].into(),

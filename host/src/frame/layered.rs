@@ -26,6 +26,7 @@
 
 use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
+use super::in_flight::{InFlight, per_frame};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_input, record_output};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
@@ -115,11 +116,13 @@ pub struct LayeredContextDesc {
     pub options: LayeredOptions,
     /// Hold the buffers that image inputs and outputs go through.
     pub image_io: bool,
+    /// Frames in flight (default 1): copies kept of what the report reads.
+    pub frames_in_flight: u32,
 }
 
 impl LayeredContextDesc {
     pub fn new(max_width: u32, max_height: u32, max_layers: u32, options: LayeredOptions) -> Self {
-        LayeredContextDesc { max_width, max_height, max_layers, options, image_io: false }
+        LayeredContextDesc { max_width, max_height, max_layers, options, image_io: false, frames_in_flight: 1 }
     }
 }
 
@@ -191,8 +194,9 @@ fn from_key(key: u32) -> f32 {
 
 /// The buffers one frame's passes read and write.
 struct Passes {
-    /// The device plan ([`PLAN_WORDS`]): candidate CoCs, anchors, used flags, gates, range.
-    plan: BufferId,
+    /// The device plan ([`PLAN_WORDS`]): candidate CoCs, anchors, used flags, gates, range; one
+    /// per frame in flight (the report reads it).
+    plans: Vec<BufferId>,
     /// Every blur's weights.
     weights: BufferId,
     /// Premultiplied RGBA, 4 words a pixel: the layer matted, the blur's intermediate, the far
@@ -210,6 +214,7 @@ pub struct LayeredContext {
     focus: usize,
     ops: Vec<Op>,
     passes: Passes,
+    in_flight: InFlight<()>,
     io: Option<ImageIo>,
     owned: Owned,
 }
@@ -227,17 +232,21 @@ impl LayeredContext {
         if 4 * pixels > max_words {
             return Err(Error::TooLarge { what: "layered/layer (words)".into(), size: 4 * pixels, limit: max_words });
         }
+        let in_flight = InFlight::new(desc.frames_in_flight)?;
         let mut owned = Owned::default();
         let made = (|| {
             let passes = Passes {
-                plan: owned.make(backend, PLAN_WORDS as u64, "layered/plan")?,
+                plans: per_frame(&mut owned, backend, desc.frames_in_flight, PLAN_WORDS as u64, "layered/plan")?,
                 weights: owned.make(backend, weights.len() as u64, "layered/weights")?,
                 layer: owned.make(backend, 4 * pixels, "layered/layer")?,
                 tmp: owned.make(backend, 4 * pixels, "layered/tmp")?,
                 far: owned.make(backend, 4 * pixels, "layered/far")?,
                 near: owned.make(backend, 4 * pixels, "layered/near")?,
             };
-            backend.write_buffer(passes.plan, PLAN_COCS as u64, &cocs.iter().map(|c| c.to_bits()).collect::<Vec<_>>())?;
+            let coc_words: Vec<u32> = cocs.iter().map(|c| c.to_bits()).collect();
+            for &plan in &passes.plans {
+                backend.write_buffer(plan, PLAN_COCS as u64, &coc_words)?;
+            }
             if !weights.is_empty() {
                 backend.write_buffer(passes.weights, 0, &weights)?;
             }
@@ -245,7 +254,7 @@ impl LayeredContext {
             Ok((passes, io))
         })();
         let ((passes, io), owned) = owned.or_free(backend, made)?;
-        let ctx = LayeredContext { desc: desc.clone(), cocs, focus, ops, passes, io, owned };
+        let ctx = LayeredContext { desc: desc.clone(), cocs, focus, ops, passes, in_flight, io, owned };
         let mut kernels = dof_shaders::layered::KERNELS.to_vec();
         kernels.extend(dof_shaders::frame_io::KERNELS);
         ready(backend, ctx, &kernels, &[], Self::destroy)
@@ -272,7 +281,9 @@ impl LayeredContext {
     /// mattes, blurs and composites, the normalisation.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
-        record_checked(self, backend, f, Self::commands)
+        record_checked(self, backend, f, Self::commands)?;
+        self.in_flight.recorded(());
+        Ok(())
     }
 
     /// The frame's commands (checked by [`record_checked`] before they are recorded).
@@ -281,6 +292,7 @@ impl LayeredContext {
         let (input, counts) = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         let b = &self.passes;
+        let plan_buf = b.plans[self.in_flight.next()];
         let pixels = f.width as u64 * f.height as u64;
         backend.fill(b.far, 0, 4 * pixels, 0, "layered/clear")?;
         backend.fill(b.near, 0, 4 * pixels, 0, "layered/clear")?;
@@ -295,10 +307,10 @@ impl LayeredContext {
             lens: f.lens,
             ..Default::default()
         };
-        backend.run(layered_plan_begin::Bindings { plan: b.plan }, [1, 1, 1], &plan, "layered/plan")?;
-        let reach = layered_plan_reach::Bindings { input, counts, plan: b.plan };
+        backend.run(layered_plan_begin::Bindings { plan: plan_buf }, [1, 1, 1], &plan, "layered/plan")?;
+        let reach = layered_plan_reach::Bindings { input, counts, plan: plan_buf };
         backend.run(reach, groups_for(&LAYERED_PLAN_REACH, pixels), &plan, "layered/plan")?;
-        backend.run(layered_plan_end::Bindings { plan: b.plan }, [1, 1, 1], &plan, "layered/plan")?;
+        backend.run(layered_plan_end::Bindings { plan: plan_buf }, [1, 1, 1], &plan, "layered/plan")?;
         let base =
             LayeredParams { width: f.width, height: f.height, max_layers: f.layer_count(), layers, gate: ALWAYS, ..Default::default() };
         // Every layered kernel runs one item a pixel with the same workgroup size.
@@ -312,19 +324,19 @@ impl LayeredContext {
             match *op {
                 Op::Matte(k) => {
                     let p = LayeredParams { layer: k, gate: PLAN_USED + k, ..base };
-                    let matte = layered_matte_at::Bindings { input, counts, plan: b.plan, layer: b.layer };
+                    let matte = layered_matte_at::Bindings { input, counts, plan: plan_buf, layer: b.layer };
                     backend.run(matte, groups, &p, "layered/matte")?;
                 }
                 Op::Blur { buf, weights_at, radius, gate } => {
                     let h = LayeredParams { radius, weights_at, mode: 0, gate, ..base };
                     let v = LayeredParams { mode: 1, ..h };
-                    let across = layered_blur_gated::Bindings { src: id(buf), weights: b.weights, dst: b.tmp, plan: b.plan };
+                    let across = layered_blur_gated::Bindings { src: id(buf), weights: b.weights, dst: b.tmp, plan: plan_buf };
                     backend.run(across, groups, &h, "layered/blur")?;
                     backend.run(layered_blur_gated::Bindings { src: b.tmp, dst: id(buf), ..across }, groups, &v, "layered/blur")?;
                 }
                 Op::Composite { layer, acc, mode, gate } => {
                     let p = LayeredParams { mode, gate, ..base };
-                    let composite = layered_composite_gated::Bindings { layer: id(layer), acc: id(acc), plan: b.plan };
+                    let composite = layered_composite_gated::Bindings { layer: id(layer), acc: id(acc), plan: plan_buf };
                     backend.run(composite, groups, &p, "layered/composite")?;
                 }
             }
@@ -336,8 +348,15 @@ impl LayeredContext {
     /// The last frame's device plan: the signed-CoC range (px), the fragments beyond the cap, and
     /// which candidate layers were used (reads the device: call once the frame completed).
     pub fn plan(&self, backend: &mut dyn Backend) -> Result<LayeredPlanReport> {
+        self.plan_of(backend, 0)
+    }
+
+    /// The device plan of the frame recorded `frames_ago` recordings before the last (see
+    /// [`DofContext::report_frame`]).
+    pub fn plan_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<LayeredPlanReport> {
         self.owned.check(backend)?;
-        let words = backend.read_buffer(self.passes.plan, 0, PLAN_WORDS as u64)?;
+        let (slot, ()) = self.in_flight.slot(frames_ago)?;
+        let words = backend.read_buffer(self.passes.plans[slot], 0, PLAN_WORDS as u64)?;
         let s = PLAN_STATS as usize;
         let used = (0..self.cocs.len()).map(|k| words[PLAN_USED as usize + k] != 0).collect();
         Ok(LayeredPlanReport { coc_range: (-from_key(words[s]), from_key(words[s + 1])), capped: words[s + 2] as u64, used })
@@ -372,7 +391,13 @@ impl DofContext for LayeredContext {
         LayeredContext::record(self, backend, frame)
     }
     fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
-        let p = self.plan(backend)?;
+        self.report_frame(backend, 0)
+    }
+    fn frames_in_flight(&self) -> u32 {
+        self.in_flight.frames()
+    }
+    fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
+        let p = self.plan_of(backend, frames_ago)?;
         let o = &self.desc.options;
         let mut summary = format!(
             "{} of {} candidate layers used for CoC {:.1} to {:.1} px, {}",

@@ -12,6 +12,7 @@
 
 use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
+use super::in_flight::{InFlight, per_frame};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_input, record_output};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
@@ -125,11 +126,13 @@ pub struct RaytraceContextDesc {
     pub options: RaytraceOptions,
     /// Hold the buffers that image inputs and outputs go through.
     pub image_io: bool,
+    /// Frames in flight (default 1): copies kept of what the report reads.
+    pub frames_in_flight: u32,
 }
 
 impl RaytraceContextDesc {
     pub fn new(max_width: u32, max_height: u32, max_layers: u32, options: RaytraceOptions) -> Self {
-        RaytraceContextDesc { max_width, max_height, max_layers, options, image_io: false }
+        RaytraceContextDesc { max_width, max_height, max_layers, options, image_io: false, frames_in_flight: 1 }
     }
 }
 
@@ -140,12 +143,12 @@ pub struct RaytraceContext {
     hier: BufferId,
     /// The lens samples, written at creation.
     samples: BufferId,
-    /// [`STATS_WORDS`]: the missed rays of the last frame.
-    stats: BufferId,
+    /// Per frame in flight, [`STATS_WORDS`]: the missed rays of its frame.
+    stats: Vec<BufferId>,
     io: Option<ImageIo>,
     owned: Owned,
-    /// Pixels and hierarchy levels of the last frame recorded (for its report).
-    last: (u64, u32),
+    /// Per frame in flight, the pixels and hierarchy levels of its frame (for its report).
+    in_flight: InFlight<(u64, u32)>,
 }
 
 impl RaytraceContext {
@@ -169,17 +172,18 @@ impl RaytraceContext {
                 return Err(Error::TooLarge { what: format!("{what} (words)"), size: words, limit: max_words });
             }
         }
+        let in_flight = InFlight::new(desc.frames_in_flight)?;
         let mut owned = Owned::default();
         let made = (|| {
             let hier = owned.make(backend, 2 * cells, "raytrace/hierarchy")?;
             let samples = owned.make(backend, sample_words.len() as u64, "raytrace/samples")?;
-            let stats = owned.make(backend, STATS_WORDS as u64, "raytrace/stats")?;
+            let stats = per_frame(&mut owned, backend, desc.frames_in_flight, STATS_WORDS as u64, "raytrace/stats")?;
             backend.write_buffer(samples, 0, &sample_words)?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             Ok((hier, samples, stats, io))
         })();
         let ((hier, samples, stats, io), owned) = owned.or_free(backend, made)?;
-        let ctx = RaytraceContext { desc: desc.clone(), hier, samples, stats, io, owned, last: (0, 0) };
+        let ctx = RaytraceContext { desc: desc.clone(), hier, samples, stats, io, owned, in_flight };
         let mut kernels = dof_shaders::raytrace::KERNELS.to_vec();
         kernels.extend(dof_shaders::frame_io::KERNELS);
         ready(backend, ctx, &kernels, &[], Self::destroy)
@@ -200,7 +204,10 @@ impl RaytraceContext {
     /// Records one frame: the missed-ray count cleared, the hierarchy, the trace.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
-        record_checked(self, backend, f, Self::commands)
+        record_checked(self, backend, f, Self::commands)?;
+        let levels = trace_params(f.width, f.height, f.layer_count(), &self.desc.options, f.lens).0.levels;
+        self.in_flight.recorded((f.width as u64 * f.height as u64, levels));
+        Ok(())
     }
 
     /// The frame's commands (checked by [`record_checked`] before they are recorded).
@@ -209,17 +216,24 @@ impl RaytraceContext {
         let (input, counts) = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         let (params, _) = trace_params(f.width, f.height, f.layer_count(), &d.options, f.lens);
-        let trace = raytrace_trace::Bindings { input, counts, hier: self.hier, samples: self.samples, out: output, stats: self.stats };
+        let stats = self.stats[self.in_flight.next()];
+        let trace = raytrace_trace::Bindings { input, counts, hier: self.hier, samples: self.samples, out: output, stats };
         record_trace(backend, &params, trace)?;
-        self.last = (f.width as u64 * f.height as u64, params.levels);
         record_output(backend, f, self.io.as_ref())
     }
 
     /// Rays of the last frame that hit no stored fragment (reads the device: call once the frame
     /// completed).
     pub fn missed_rays(&self, backend: &mut dyn Backend) -> Result<u64> {
+        Ok(self.missed_rays_of(backend, 0)?.0)
+    }
+
+    /// The missed rays of the frame recorded `frames_ago` recordings before the last (see
+    /// [`DofContext::report_frame`]), with that frame's pixels and hierarchy levels.
+    fn missed_rays_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<(u64, (u64, u32))> {
         self.owned.check(backend)?;
-        Ok(backend.read_buffer(self.stats, 0, 1)?[0] as u64)
+        let (slot, kept) = self.in_flight.slot(frames_ago)?;
+        Ok((backend.read_buffer(self.stats[slot], 0, 1)?[0] as u64, kept))
     }
 }
 
@@ -234,8 +248,13 @@ impl DofContext for RaytraceContext {
         RaytraceContext::record(self, backend, frame)
     }
     fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
-        let missed = self.missed_rays(backend)?;
-        let (pixels, levels) = self.last;
+        self.report_frame(backend, 0)
+    }
+    fn frames_in_flight(&self) -> u32 {
+        self.in_flight.frames()
+    }
+    fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
+        let (missed, (pixels, levels)) = self.missed_rays_of(backend, frames_ago)?;
         let spp = self.desc.options.spp;
         let rays = pixels * spp as u64;
         Ok(ContextReport {

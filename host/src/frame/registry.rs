@@ -60,11 +60,14 @@ pub struct ContextDesc {
     /// Hold the buffers that image inputs and outputs go through ([`super::FrameInput::Images`],
     /// [`super::FrameOutput::Image`]).
     pub image_io: bool,
+    /// Frames in flight the context serves, 1 to [`super::MAX_FRAMES_IN_FLIGHT`] (default 1): it
+    /// keeps that many copies of what its report reads ([`DofContext::report_frame`]).
+    pub frames_in_flight: u32,
 }
 
 impl ContextDesc {
     pub fn new(extent: Extent, options: MethodOptions) -> Self {
-        ContextDesc { extent, options, image_io: false }
+        ContextDesc { extent, options, image_io: false, frames_in_flight: 1 }
     }
 }
 
@@ -103,6 +106,7 @@ impl PartialEq for MethodInfo {
 fn create_splat(b: &mut dyn Backend, d: &ContextDesc, name: &'static str) -> Result<Box<dyn DofContext>> {
     let mut desc = SplatContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.splat.clone());
     desc.image_io = d.image_io;
+    desc.frames_in_flight = d.frames_in_flight;
     Ok(Box::new(SplatContext::new(b, &desc)?.named(name)))
 }
 
@@ -143,6 +147,7 @@ pub static METHODS: &[MethodInfo] = &[
             let desc = GatherContextDesc {
                 max_radius: d.options.gather_max_radius,
                 image_io: d.image_io,
+                frames_in_flight: d.frames_in_flight,
                 ..GatherContextDesc::new(d.extent.width, d.extent.height, d.extent.layers)
             };
             Ok(Box::new(GatherContext::new(b, &desc)?))
@@ -161,6 +166,7 @@ pub static METHODS: &[MethodInfo] = &[
             let desc = RingGatherContextDesc {
                 options: d.options.ring_gather,
                 image_io: d.image_io,
+                frames_in_flight: d.frames_in_flight,
                 ..RingGatherContextDesc::new(d.extent.width, d.extent.height, d.extent.layers)
             };
             Ok(Box::new(RingGatherContext::new(b, &desc)?))
@@ -178,6 +184,7 @@ pub static METHODS: &[MethodInfo] = &[
         create: |b, d| {
             let desc = BokehContextDesc {
                 image_io: d.image_io,
+                frames_in_flight: d.frames_in_flight,
                 ..BokehContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.bokeh.clone())
             };
             Ok(Box::new(BokehContext::new(b, &desc)?))
@@ -195,6 +202,7 @@ pub static METHODS: &[MethodInfo] = &[
         create: |b, d| {
             let desc = RaytraceContextDesc {
                 image_io: d.image_io,
+                frames_in_flight: d.frames_in_flight,
                 ..RaytraceContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.raytrace.clone())
             };
             Ok(Box::new(RaytraceContext::new(b, &desc)?))
@@ -212,6 +220,7 @@ pub static METHODS: &[MethodInfo] = &[
         create: |b, d| {
             let desc = LayeredContextDesc {
                 image_io: d.image_io,
+                frames_in_flight: d.frames_in_flight,
                 ..LayeredContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.layered.clone())
             };
             Ok(Box::new(LayeredContext::new(b, &desc)?))

@@ -5,6 +5,7 @@
 
 use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
+use super::in_flight::InFlight;
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
 use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
@@ -63,11 +64,13 @@ pub struct RingGatherContextDesc {
     pub options: RingGatherOptions,
     /// Hold the buffers that image inputs and outputs go through.
     pub image_io: bool,
+    /// Frames in flight (default 1): copies kept of what the report reads.
+    pub frames_in_flight: u32,
 }
 
 impl RingGatherContextDesc {
     pub fn new(max_width: u32, max_height: u32, max_layers: u32) -> Self {
-        RingGatherContextDesc { max_width, max_height, max_layers, options: RingGatherOptions::default(), image_io: false }
+        RingGatherContextDesc { max_width, max_height, max_layers, options: RingGatherOptions::default(), image_io: false, frames_in_flight: 1 }
     }
 }
 
@@ -89,6 +92,8 @@ struct Passes {
 pub struct RingGatherContext {
     desc: RingGatherContextDesc,
     passes: Passes,
+    /// Per frame in flight, the options its frame ran with (its report; nothing on the device).
+    in_flight: InFlight<RingGatherOptions>,
     io: Option<ImageIo>,
     owned: Owned,
 }
@@ -100,6 +105,7 @@ impl RingGatherContext {
         let shape = RingGatherParams { width: desc.max_width, height: desc.max_height, ..Default::default() };
         let half = shape.half_width() as u64 * shape.half_height() as u64;
         let tiles = shape.tiles_x() as u64 * shape.tiles_y() as u64;
+        let in_flight = InFlight::new(desc.frames_in_flight)?;
         let mut owned = Owned::default();
         let made = (|| {
             let passes = Passes {
@@ -114,7 +120,7 @@ impl RingGatherContext {
             Ok((passes, io))
         })();
         let ((passes, io), owned) = owned.or_free(backend, made)?;
-        let ctx = RingGatherContext { desc: desc.clone(), passes, io, owned };
+        let ctx = RingGatherContext { desc: desc.clone(), passes, in_flight, io, owned };
         let mut kernels = dof_shaders::ring_gather::KERNELS.to_vec();
         kernels.extend(dof_shaders::frame_io::KERNELS);
         ready(backend, ctx, &kernels, &[], Self::destroy)
@@ -144,7 +150,9 @@ impl RingGatherContext {
     /// gather over rings and the composite.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
-        record_checked(self, backend, f, Self::commands)
+        record_checked(self, backend, f, Self::commands)?;
+        self.in_flight.recorded(self.desc.options);
+        Ok(())
     }
 
     /// The frame's commands (checked by [`record_checked`] before they are recorded).
@@ -184,8 +192,15 @@ impl DofContext for RingGatherContext {
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
         RingGatherContext::record(self, backend, frame)
     }
-    fn report(&self, _backend: &mut dyn Backend) -> Result<ContextReport> {
-        let o = self.desc.options;
+    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
+        self.report_frame(backend, 0)
+    }
+    fn frames_in_flight(&self) -> u32 {
+        self.in_flight.frames()
+    }
+    fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
+        self.owned.check(backend)?;
+        let (_, o) = self.in_flight.slot(frames_ago)?;
         let samples = dof_shaders::ring_gather::samples(o.rings);
         Ok(ContextReport {
             summary: format!("{} rings, {samples} samples a half-resolution pixel, CoC radius cap {} px", o.rings, o.max_radius),

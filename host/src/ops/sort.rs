@@ -16,7 +16,10 @@ pub struct SegmentedSort {
     max_elements: u32,
     max_list_len: u32,
     top_class: u32,
-    plan: BufferId,
+    /// One plan per frame in flight (reports read it after the frame), and the one that
+    /// [`Self::record`] writes and [`Self::stats`] reads.
+    plans: Vec<BufferId>,
+    slot: usize,
     lists: BufferId,
     scratch: Option<(BufferId, BufferId)>,
 }
@@ -37,6 +40,12 @@ impl SegmentedSort {
     /// `max_list_len` bounds every list; when it exceeds the largest class the device's workgroup
     /// memory allows, the global path is recorded (its dispatches are empty in frames without such lists).
     pub fn new(backend: &mut dyn Backend, max_segments: u32, max_elements: u32, max_list_len: u32) -> Result<Self> {
+        Self::in_flight(backend, max_segments, max_elements, max_list_len, 1)
+    }
+
+    /// The same for `frames` frames in flight: a plan for each (see [`Self::use_slot`]), the rest
+    /// shared.
+    pub fn in_flight(backend: &mut dyn Backend, max_segments: u32, max_elements: u32, max_list_len: u32, frames: u32) -> Result<Self> {
         let top_class = top_class_for(backend.limits().max_shared_bytes);
         if CLASS_CAPS[top_class as usize] * sort::BYTES_PER_ELEMENT > backend.limits().max_shared_bytes {
             return Err(Error::TooLarge {
@@ -46,10 +55,11 @@ impl SegmentedSort {
             });
         }
         let lists_words = (NUM_CLASSES as u64 + 1) * max_segments.max(1) as u64;
-        let mut sizes = vec![(plan::WORDS as u64, "sort/plan"), (lists_words, "sort/lists")];
+        let mut sizes = vec![(lists_words, "sort/lists")];
         if max_list_len > CLASS_CAPS[top_class as usize] {
             sizes.extend([(max_elements as u64, "sort/scratch-keys"), (max_elements as u64, "sort/scratch-positions")]);
         }
+        sizes.extend((0..frames.max(1)).map(|_| (plan::WORDS as u64, "sort/plan")));
         // A failure part way (device memory running out) frees what was made.
         let mut made = Vec::new();
         for &(words, label) in &sizes {
@@ -61,12 +71,20 @@ impl SegmentedSort {
                 }
             }
         }
-        let scratch = (made.len() == 4).then(|| (made[2], made[3]));
-        Ok(SegmentedSort { max_segments, max_elements, max_list_len, top_class, plan: made[0], lists: made[1], scratch })
+        let shared = made.len() - frames.max(1) as usize;
+        let scratch = (shared == 3).then(|| (made[1], made[2]));
+        let plans = made[shared..].to_vec();
+        Ok(SegmentedSort { max_segments, max_elements, max_list_len, top_class, plans, slot: 0, lists: made[0], scratch })
+    }
+
+    /// Makes [`Self::record`] write, and [`Self::stats`] read, the plan of frame-in-flight `slot`.
+    pub fn use_slot(&mut self, slot: usize) {
+        assert!(slot < self.plans.len(), "sort plan {slot} of {}", self.plans.len());
+        self.slot = slot;
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {
-        backend.destroy_buffer(self.plan);
+        self.plans.iter().for_each(|&p| backend.destroy_buffer(p));
         backend.destroy_buffer(self.lists);
         if let Some((k, p)) = self.scratch {
             backend.destroy_buffer(k);
@@ -88,7 +106,7 @@ impl SegmentedSort {
     pub fn bytes(&self) -> u64 {
         let lists = (NUM_CLASSES as u64 + 1) * self.max_segments.max(1) as u64;
         let scratch = if self.scratch.is_some() { 2 * self.max_elements as u64 } else { 0 };
-        4 * (plan::WORDS as u64 + lists + scratch)
+        4 * (plan::WORDS as u64 * self.plans.len() as u64 + lists + scratch)
     }
 
     /// Capacity of the largest workgroup-memory class on this device.
@@ -114,7 +132,7 @@ impl SegmentedSort {
         if num_segments > self.max_segments {
             return Err(Error::InvalidArgument(format!("{num_segments} lists exceed the {} this sort was sized for", self.max_segments)));
         }
-        let (plan_buf, lists) = (self.plan, self.lists);
+        let (plan_buf, lists) = (self.plans[self.slot], self.lists);
         backend.fill(plan_buf, 0, plan::WORDS as u64, 0, "sort/clear")?;
         let classify = ClassifyParams { num_segments, top_class: self.top_class };
         let groups = num_segments.div_ceil(256).clamp(1, MAX_GROUPS);
@@ -153,7 +171,13 @@ impl SegmentedSort {
 
     /// Reads what the last recorded sort did (submits pending work).
     pub fn stats(&self, backend: &mut dyn Backend) -> Result<SortStats> {
-        let words = backend.read_buffer(self.plan, 0, plan::WORDS as u64)?;
+        self.stats_of(backend, self.slot)
+    }
+
+    /// Reads what the sort last recorded into frame-in-flight `slot` did.
+    pub fn stats_of(&self, backend: &mut dyn Backend, slot: usize) -> Result<SortStats> {
+        let buf = *self.plans.get(slot).ok_or_else(|| Error::InvalidArgument(format!("no sort plan {slot}")))?;
+        let words = backend.read_buffer(buf, 0, plan::WORDS as u64)?;
         Ok(SortStats {
             class_counts: words[..NUM_CLASSES as usize].to_vec(),
             global_lists: words[GLOBAL_CLASS as usize],

@@ -3,6 +3,7 @@
 
 use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent};
+use super::in_flight::{InFlight, per_frame};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_input, record_output};
 use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
@@ -54,6 +55,8 @@ pub struct SplatContextDesc {
     pub(crate) distinct_stage_buffers: bool,
     /// Hold the buffers that image inputs and outputs go through (10 words a pixel).
     pub image_io: bool,
+    /// Frames in flight (default 1): copies kept of the statistics and lists' lengths reports read.
+    pub frames_in_flight: u32,
 }
 
 impl SplatContextDesc {
@@ -67,6 +70,7 @@ impl SplatContextDesc {
             max_list: None,
             distinct_stage_buffers: false,
             image_io: false,
+            frames_in_flight: 1,
         }
     }
 }
@@ -105,8 +109,10 @@ pub struct SplatContext {
     b: Buffers,
     scan: ScanScratch,
     sort: SegmentedSort,
-    /// The last recorded frame, for its report.
-    last: Option<Frame>,
+    /// Per frame in flight, the statistics and segments its report reads (the recording writes
+    /// them through `b.stats` and `b.segments`), and its frame.
+    reports: Vec<(BufferId, BufferId)>,
+    in_flight: InFlight<Frame>,
     /// The registry name it records as (`multilayer`, or `tiled` when handed front layers).
     name: &'static str,
 }
@@ -172,6 +178,7 @@ impl SplatContext {
         // The pool's bump pointer must not wrap: every tile adds at most `max_list` to it.
         let max_list = desc.max_list.unwrap_or(DEFAULT_MAX_LIST).clamp(1, (u32::MAX as u64 / tiles).min(list_entries) as u32);
         let merge_steps = desc.options.merge.steps();
+        let in_flight = InFlight::new(desc.frames_in_flight)?;
 
         let mut owned = Owned::default();
         let built = (|| {
@@ -203,8 +210,10 @@ impl SplatContext {
             };
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             let mask_words = desc.options.aperture.mask_words();
+            let stats = per_frame(&mut owned, backend, desc.frames_in_flight, stats::WORDS as u64, "splat/stats")?;
+            let segments = per_frame(&mut owned, backend, desc.frames_in_flight, 2 * tiles, "splat/segments")?;
             let b = Buffers {
-                stats: owned.make(backend, stats::WORDS as u64, "splat/stats")?,
+                stats: stats[0],
                 sharp: owned.make(backend, 4 * pixels, "splat/sharp")?,
                 cells: cell_bufs,
                 cell_offsets: owned.make(backend, fx as u64 * fy as u64, "splat/cell-offsets")?,
@@ -212,7 +221,7 @@ impl SplatContext {
                 tile_base: owned.make(backend, tiles, "splat/tile-base")?,
                 tile_radius: owned.make(backend, tiles, "splat/tile-radius")?,
                 copy: owned.make(backend, tiles, "splat/copy")?,
-                segments: owned.make(backend, 2 * tiles, "splat/segments")?,
+                segments: segments[0],
                 dense,
                 mask: owned.make(backend, mask_words.len() as u64, "splat/aperture-mask")?,
                 keys: owned.make(backend, list_entries, "splat/keys")?,
@@ -222,12 +231,12 @@ impl SplatContext {
                 io,
             };
             backend.write_buffer(b.mask, 0, &mask_words)?;
-            Ok(b)
+            Ok((b, stats.into_iter().zip(segments).collect()))
         })();
-        let (b, owned) = owned.or_free(backend, built)?;
+        let ((b, reports), owned) = owned.or_free(backend, built)?;
         let scan = ScanScratch::new(backend, tiles);
         let (scan, owned) = owned.or_free(backend, scan)?;
-        let sort = match SegmentedSort::new(backend, tiles as u32, list_entries as u32, max_list) {
+        let sort = match SegmentedSort::in_flight(backend, tiles as u32, list_entries as u32, max_list, desc.frames_in_flight) {
             Ok(s) => s,
             Err(e) => {
                 scan.destroy(backend);
@@ -253,7 +262,8 @@ impl SplatContext {
             b,
             scan,
             sort,
-            last: None,
+            reports,
+            in_flight,
             name: "multilayer",
         };
         super::io::ready(backend, ctx, &kernels, &[], Self::destroy)
@@ -335,7 +345,13 @@ impl SplatContext {
     /// `begin_external` and `end_external`).
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.b.io.as_ref())?;
-        record_checked(self, backend, f, Self::commands)
+        // This frame's slot of what reports read; every other buffer is shared between frames.
+        let slot = self.in_flight.next();
+        (self.b.stats, self.b.segments) = self.reports[slot];
+        self.sort.use_slot(slot);
+        record_checked(self, backend, f, Self::commands)?;
+        self.in_flight.recorded(*f);
+        Ok(())
     }
 
     /// The frame's commands (checked by [`record_checked`] before they are recorded).
@@ -378,21 +394,27 @@ impl SplatContext {
         let acc_bufs = [b.sharp, b.dense, b.values_sorted, b.segments, b.copy, output, b.stats, b.mask];
         let sub = self.desc.options.tile / block_for(self.desc.options.tile);
         backend.dispatch(&ACCUMULATE, [tiles_x * sub, tiles_y * sub, 1], &acc_bufs, &fin, "splat/accumulate")?;
-        record_output(backend, f, b.io.as_ref())?;
-        self.last = Some(*f);
-        Ok(())
+        record_output(backend, f, b.io.as_ref())
     }
 
     /// What the last recorded frame did and left out. Reads the context's statistics back, so call
     /// it only once that frame's work has completed (standalone: after `submit`). The input-side
     /// counts that need the host image (`input_fragments`) are left at zero.
     pub fn report(&self, backend: &mut dyn Backend) -> Result<SplatReport> {
-        let f = self.last.ok_or_else(|| Error::InvalidArgument("no frame has been recorded yet".into()))?;
+        self.report_of(backend, 0)
+    }
+
+    /// What the frame recorded `frames_ago` recordings before the last did (see
+    /// [`DofContext::report_frame`]).
+    pub fn report_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<SplatReport> {
+        self.owned.check(backend)?;
+        let (slot, f) = self.in_flight.slot(frames_ago)?;
+        let (stats_buf, segments) = self.reports[slot];
         let tiles_x = f.width.div_ceil(self.desc.options.tile);
         let tiles_y = f.height.div_ceil(self.desc.options.tile);
         let tiles = tiles_x as u64 * tiles_y as u64;
-        let st = backend.read_buffer(self.b.stats, 0, stats::WORDS as u64)?;
-        let seg = backend.read_buffer(self.b.segments, 0, 2 * tiles)?;
+        let st = backend.read_buffer(stats_buf, 0, stats::WORDS as u64)?;
+        let seg = backend.read_buffer(segments, 0, 2 * tiles)?;
         let list_lengths: Vec<u32> = seg.as_chunks::<2>().0.iter().map(|s| s[1]).collect();
         let c = |i: u32| st[i as usize];
         let pixels = f.width as u64 * f.height as u64;
@@ -433,7 +455,7 @@ impl SplatContext {
             overflow_entries: c(stats::OVERFLOW_ENTRIES) as u64,
             longest_list_wanted: c(stats::MAX_CAPACITY),
             list_top: c(stats::LIST_TOP) as u64,
-            sort: self.sort.stats(backend)?,
+            sort: self.sort.stats_of(backend, slot)?,
             early_out_pixels: c(stats::EARLY_OUT),
             skipped_entries: c(stats::SKIPPED_ENTRIES),
             buffer_bytes: self.bytes,
@@ -480,7 +502,13 @@ impl DofContext for SplatContext {
         SplatContext::record(self, backend, frame)
     }
     fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
-        let r = SplatContext::report(self, backend)?;
+        self.report_frame(backend, 0)
+    }
+    fn frames_in_flight(&self) -> u32 {
+        self.in_flight.frames()
+    }
+    fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
+        let r = SplatContext::report_of(self, backend, frames_ago)?;
         let figures = [
             ("list_entries", r.list_entries as f64),
             ("mean_list_length", r.mean_list_length()),

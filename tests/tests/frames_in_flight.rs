@@ -1,0 +1,236 @@
+//! Frames in flight, for every method of the registry through `dyn DofContext`: a context made for
+//! N frames keeps each of its last N frames' reports apart, and holds only the report buffers
+//! more per extra frame.
+//! - Two frames that differ (size, lens and, where the method has one, its knob) recorded back to
+//!   back into one submission (standalone, and on Vulkan inside one external recording of a
+//!   renderer's command buffer with synchronization validation on) each report what the same frame
+//!   reports alone through a one-frame context, and write the same image.
+//! - A frame's report is refused once a later recording has taken its slot, and where no such
+//!   frame was recorded; a one-frame context keeps only the last.
+//! - Device bytes for 1, 2 and 3 frames in flight at 1920x1080 with 4 layers grow by the same
+//!   step, under 1% of the context (printed for `docs/measurements.md`).
+
+use dof::backend::{Backend, BufferId, CpuBackend, RawOptions, VulkanBackend};
+use dof::frame::{ContextDesc, ContextReport, DofContext, Extent, Frame, MAX_FRAMES_IN_FLIGHT, METHODS, MethodInfo, MethodOptions, Reads};
+use dof::methods::buffers::{read_rgb, slot_words};
+use dof::stress::{noise_with_sky, test_lens};
+use dof_tests::renderer::{Renderer, assert_no_messages};
+use dof_tests::{assert_clean, vulkan};
+
+const EXTENT: Extent = Extent { width: 48, height: 32, layers: 3 };
+
+fn create(b: &mut dyn Backend, m: &MethodInfo, extent: Extent, frames: u32) -> Box<dyn DofContext> {
+    let desc = ContextDesc { frames_in_flight: frames, ..ContextDesc::new(extent, MethodOptions::default()) };
+    let ctx = (m.create)(b, &desc).unwrap_or_else(|e| panic!("{} with {frames} frames in flight: {e}", m.name));
+    assert_eq!(ctx.frames_in_flight(), frames, "{}", m.name);
+    ctx
+}
+
+/// Two frames that differ in size, lens and knob, each with its own input and output buffers
+/// (frames in flight read and write the caller's buffers of their own frame).
+struct TwoFrames {
+    frames: [Frame; 2],
+    buffers: Vec<BufferId>,
+}
+
+impl TwoFrames {
+    fn new(b: &mut dyn Backend, m: &MethodInfo) -> Self {
+        let mut buffers = Vec::new();
+        let frames = [(48, 32, 0.01f32), (40, 24, 0.03)].map(|(w, h, aperture)| {
+            let image = noise_with_sky(w, h, EXTENT.layers);
+            let image = if m.reads == Reads::FrontLayer { image.front_layer() } else { image };
+            let pixels = (w * h) as u64;
+            let [fragments, counts, out] =
+                [4 * pixels * image.max_layers as u64, pixels, 3 * pixels].map(|words| b.create_buffer(words, "caller").unwrap());
+            b.write_buffer(fragments, 0, &slot_words(&image)).unwrap();
+            b.write_buffer(counts, 0, &image.counts).unwrap();
+            buffers.extend([fragments, counts, out]);
+            Frame::layers(w, h, image.max_layers, test_lens(aperture), fragments, counts, out)
+        });
+        TwoFrames { frames, buffers }
+    }
+
+    /// Records frame `i` (its knob set first, where the method has one).
+    fn record(&self, b: &mut dyn Backend, m: &MethodInfo, ctx: &mut dyn DofContext, i: usize) {
+        if let Some(knob) = m.knob {
+            ctx.set_knob(if i == 0 { knob.default } else { knob.min }).unwrap();
+        }
+        ctx.record(b, &self.frames[i]).unwrap_or_else(|e| panic!("{} frame {i}: {e}", m.name));
+    }
+
+    fn image(&self, b: &mut dyn Backend, i: usize) -> Vec<[f32; 3]> {
+        let f = &self.frames[i];
+        let dof::frame::FrameOutput::Buffer(out) = f.output else { unreachable!() };
+        read_rgb(b, out, f.width, f.height).unwrap().data
+    }
+
+    fn free(self, b: &mut dyn Backend) {
+        self.buffers.into_iter().for_each(|id| b.destroy_buffer(id));
+    }
+}
+
+/// Each frame alone through a one-frame context, submitted on its own: its report and image.
+fn alone(b: &mut dyn Backend, m: &MethodInfo, two: &TwoFrames) -> Vec<(ContextReport, Vec<[f32; 3]>)> {
+    let mut ctx = create(b, m, EXTENT, 1);
+    let out = (0..2)
+        .map(|i| {
+            two.record(b, m, ctx.as_mut(), i);
+            b.submit().unwrap();
+            (ctx.report(b).unwrap(), two.image(b, i))
+        })
+        .collect::<Vec<_>>();
+    ctx.destroy(b);
+    assert!(out[0].0 != out[1].0, "{}: the two frames report the same, so the test could not tell them apart: {:?}", m.name, out[0].0);
+    out
+}
+
+fn two_frames_keep_their_reports(b: &mut dyn Backend) {
+    for m in METHODS {
+        let two = TwoFrames::new(b, m);
+        let reference = alone(b, m, &two);
+        let mut ctx = create(b, m, EXTENT, 2);
+        assert!(ctx.report_frame(b, 0).is_err(), "{}: a report before any frame", m.name);
+        let before = b.counters();
+        two.record(b, m, ctx.as_mut(), 0);
+        two.record(b, m, ctx.as_mut(), 1);
+        b.submit().unwrap();
+        let spent = b.counters().since(&before);
+        assert_eq!((spent.allocations, spent.readbacks, spent.uploads, spent.submissions), (0, 0, 0, 1), "{}", m.name);
+        for (ago, i) in [(0, 1), (1, 0)] {
+            assert_eq!(ctx.report_frame(b, ago).unwrap(), reference[i].0, "{}: the report of frame {i}, {ago} frames ago", m.name);
+            assert!(two.image(b, i) == reference[i].1, "{}: frame {i}'s image differs from the frame alone", m.name);
+        }
+        assert_eq!(ctx.report(b).unwrap(), reference[1].0, "{}: report() is the last frame's", m.name);
+        let gone = ctx.report_frame(b, 2).expect_err("a third frame back with two in flight").to_string();
+        assert!(gone.contains("gone"), "{}: {gone}", m.name);
+        // A third recording, in a submission of its own, takes the first frame's slot.
+        two.record(b, m, ctx.as_mut(), 0);
+        b.submit().unwrap();
+        assert_eq!(ctx.report_frame(b, 0).unwrap(), reference[0].0, "{}: the third frame", m.name);
+        assert_eq!(ctx.report_frame(b, 1).unwrap(), reference[1].0, "{}: the second frame after a third", m.name);
+        ctx.destroy(b);
+        // A one-frame context recording both keeps the last one's report only.
+        let mut one = create(b, m, EXTENT, 1);
+        two.record(b, m, one.as_mut(), 0);
+        two.record(b, m, one.as_mut(), 1);
+        b.submit().unwrap();
+        assert_eq!(one.report(b).unwrap(), reference[1].0, "{}: one frame in flight", m.name);
+        assert!(one.report_frame(b, 1).is_err(), "{}: one frame in flight keeps one report", m.name);
+        one.destroy(b);
+        two.free(b);
+    }
+    assert_eq!(b.counters().device_bytes, 0, "every context and buffer freed");
+}
+
+#[test]
+fn two_frames_in_flight_keep_their_own_reports_on_the_cpu() {
+    two_frames_keep_their_reports(&mut CpuBackend::new());
+}
+
+#[test]
+fn two_frames_in_flight_keep_their_own_reports_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    two_frames_keep_their_reports(&mut vk);
+    assert_clean(&mut vk);
+}
+
+/// Records `record` into one external recording of the renderer's command buffer, submits it and
+/// waits.
+fn recorded(vk: &mut VulkanBackend, r: &Renderer, record: &mut dyn FnMut(&mut VulkanBackend)) {
+    r.begin();
+    // SAFETY: the renderer's command buffer is recording, outside a render pass.
+    unsafe { vk.begin_external(r.cb) }.expect("begin_external");
+    record(vk);
+    vk.end_external().expect("end_external");
+    r.submit_and_wait();
+}
+
+/// Inside a renderer's command buffer: the two frames recorded back to back into one external
+/// recording, one submission, each frame's report as when it runs alone in a recording of its own;
+/// synchronization validation silent.
+#[test]
+fn two_frames_in_one_external_recording_keep_their_own_reports() {
+    let Some(r) = Renderer::new() else { return };
+    // SAFETY: the renderer's live handles outlive the backend, dropped after its work completed.
+    let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
+    for m in METHODS {
+        let two = TwoFrames::new(&mut vk, m);
+        let mut one = create(&mut vk, m, EXTENT, 1);
+        let mut reference = Vec::new();
+        for i in 0..2 {
+            recorded(&mut vk, &r, &mut |vk| two.record(vk, m, one.as_mut(), i));
+            reference.push((one.report(&mut vk).unwrap(), two.image(&mut vk, i)));
+        }
+        one.destroy(&mut vk);
+        let mut ctx = create(&mut vk, m, EXTENT, 2);
+        recorded(&mut vk, &r, &mut |vk| {
+            two.record(vk, m, ctx.as_mut(), 0);
+            two.record(vk, m, ctx.as_mut(), 1);
+        });
+        for (ago, i) in [(0, 1), (1, 0)] {
+            assert_eq!(ctx.report_frame(&mut vk, ago).unwrap(), reference[i].0, "{}: frame {i} of one recording", m.name);
+            assert!(two.image(&mut vk, i) == reference[i].1, "{}: frame {i}'s image of one recording", m.name);
+        }
+        assert_no_messages(r.messages(), &format!("{}: two frames in one recording", m.name));
+        ctx.destroy(&mut vk);
+        two.free(&mut vk);
+    }
+    drop(vk);
+    assert_no_messages(r.finish(), "the end");
+}
+
+#[test]
+fn frames_in_flight_out_of_range_are_refused_before_anything_is_allocated() {
+    let mut b = CpuBackend::new();
+    for m in METHODS {
+        for frames in [0, MAX_FRAMES_IN_FLIGHT + 1] {
+            let desc = ContextDesc { frames_in_flight: frames, ..ContextDesc::new(EXTENT, MethodOptions::default()) };
+            let e = (m.create)(&mut b, &desc).err().unwrap_or_else(|| panic!("{}: {frames} frames in flight", m.name)).to_string();
+            assert!(e.contains("frames in flight"), "{}: {e}", m.name);
+            assert_eq!(b.counters().allocations, 0, "{}: allocated before refusing", m.name);
+        }
+    }
+}
+
+/// Device bytes of each method's context for 1, 2 and 3 frames in flight at `extent`: what the
+/// backend holds for it, growing by one step of report buffers per frame, under 1% of the context
+/// (and nothing for the ring gather, whose report reads nothing on the device).
+fn bytes_per_frame_in_flight(b: &mut dyn Backend, extent: Extent) {
+    for m in METHODS {
+        let bytes = [1, 2, 3].map(|frames| {
+            let before = b.counters().device_bytes;
+            let ctx = create(b, m, extent, frames);
+            let held = b.counters().device_bytes - before;
+            assert_eq!(ctx.device_bytes(), held, "{} with {frames} frames in flight: the bytes it reports", m.name);
+            ctx.destroy(b);
+            held
+        });
+        let step = bytes[1] - bytes[0];
+        assert_eq!(bytes[2] - bytes[1], step, "{}: {bytes:?}", m.name);
+        assert!(step * 100 < bytes[0], "{}: a frame in flight adds {step} bytes to {}", m.name, bytes[0]);
+        assert_eq!(step == 0, m.name == "ring-gather", "{}: {step} bytes a frame in flight", m.name);
+        eprintln!(
+            "{} {}x{}x{} {}: device bytes for 1, 2, 3 frames in flight: {} {} {} (+{step} a frame)",
+            b.kind(),
+            extent.width,
+            extent.height,
+            extent.layers,
+            m.name,
+            bytes[0],
+            bytes[1],
+            bytes[2]
+        );
+    }
+}
+
+#[test]
+fn a_frame_in_flight_adds_only_its_report_buffers_at_1080p_on_the_cpu() {
+    bytes_per_frame_in_flight(&mut CpuBackend::new(), Extent::new(1920, 1080, 4));
+}
+
+#[test]
+fn a_frame_in_flight_adds_only_its_report_buffers_at_1080p_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    bytes_per_frame_in_flight(&mut vk, Extent::new(1920, 1080, 4));
+    assert_clean(&mut vk);
+}

@@ -70,7 +70,14 @@ pub struct RingGatherContextDesc {
 
 impl RingGatherContextDesc {
     pub fn new(max_width: u32, max_height: u32, max_layers: u32) -> Self {
-        RingGatherContextDesc { max_width, max_height, max_layers, options: RingGatherOptions::default(), image_io: false, frames_in_flight: 1 }
+        RingGatherContextDesc {
+            max_width,
+            max_height,
+            max_layers,
+            options: RingGatherOptions::default(),
+            image_io: false,
+            frames_in_flight: 1,
+        }
     }
 }
 

@@ -38,6 +38,7 @@ pub mod context;
 pub mod gather;
 pub mod io;
 pub mod layered;
+pub mod peel;
 pub mod raytrace;
 pub mod registry;
 pub mod ring_gather;

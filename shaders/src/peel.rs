@@ -184,7 +184,11 @@ pub fn edges_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, fragments: M, cou
         let r = |q: u32, first: bool| {
             let b = front(&fragments, &counts, q, p.layers);
             // Ordered as the host's pass over pairs (left or upper pixel first).
-            if first { pair_radius(&p.lens, a, b, p.edge_depth_ratio, limit) } else { pair_radius(&p.lens, b, a, p.edge_depth_ratio, limit) }
+            if first {
+                pair_radius(&p.lens, a, b, p.edge_depth_ratio, limit)
+            } else {
+                pair_radius(&p.lens, b, a, p.edge_depth_ratio, limit)
+            }
         };
         let mut best = -1;
         if x + 1 < w {

@@ -132,6 +132,8 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "gpu_ms": measured.gpu_ms,
             "peel_passes_per_frame": measured.peel_passes as f64 / args.frames as f64,
             "peel_ms": measured.peel_ms,
+            "peel_passes_drawn_last_frame": measured.peel_drawn.map(|d| d.0),
+            "peel_passes_with_surface_last_frame": measured.peel_drawn.map(|d| d.1),
             "dof_ms": measured.gpu_ms - measured.peel_ms,
             "stage_ms": measured.stages,
             "device_bytes": measured.device_bytes,
@@ -177,9 +179,10 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     println!("device time per frame: {:.3} ms", measured.gpu_ms);
     if args.orbit.is_some() {
         println!(
-            "  peeling {:.3} ms ({:.1} passes recorded a frame, guard band {} px), depth of field {:.3} ms",
+            "  peeling {:.3} ms ({:.1} passes recorded a frame; the last frame's drawn and with a surface: {:?}; guard band {} px), depth of field {:.3} ms",
             measured.peel_ms,
             measured.peel_passes as f64 / args.frames as f64,
+            measured.peel_drawn.unwrap_or_default(),
             measured.margin,
             measured.gpu_ms - measured.peel_ms
         );
@@ -214,6 +217,8 @@ struct Measured {
     peel_passes: u64,
     /// The guard band of the device peel's image (0 without `--orbit`).
     margin: u32,
+    /// The last frame's peel passes that drew and that found a surface (`--orbit`).
+    peel_drawn: Option<(u32, u32)>,
 }
 
 impl Measured {
@@ -239,6 +244,7 @@ impl Measured {
             peel_ms,
             peel_passes: 0,
             margin: 0,
+            peel_drawn: None,
         }
     }
 }
@@ -469,6 +475,8 @@ fn orbiting(
         let mut m = Measured::new(counters, record_ms, gpu_ms, stages, ctx.device_bytes() + peel.device_bytes(), &report);
         m.peel_passes = passes;
         m.margin = peel.margin();
+        let last = peel.peel_report(b).context("reading the last frame's peel report")?;
+        m.peel_drawn = Some((last.drawn, last.with_surface));
         if let Some(out) = out {
             write_last(b, output, [w, h], peel.margin(), out)?;
         }

@@ -88,7 +88,11 @@ impl PeelSlots {
     pub(crate) fn new(backend: &mut dyn Backend, owned: &mut Owned, width: u32, height: u32, layers: u32) -> Result<Self> {
         let pixels = super::io::context_pixels(backend, "peel", width, height, layers)?;
         if width > i32::MAX as u32 / 2 || height > i32::MAX as u32 / 2 {
-            return Err(Error::TooLarge { what: "peel image side (px)".into(), size: width.max(height) as u64, limit: i32::MAX as u64 / 2 });
+            return Err(Error::TooLarge {
+                what: "peel image side (px)".into(),
+                size: width.max(height) as u64,
+                limit: i32::MAX as u64 / 2,
+            });
         }
         Ok(PeelSlots {
             width,

@@ -37,9 +37,11 @@ fn quad(m: &mut MeshScene, corner: Vec3, u: Vec3, v: Vec3, material: u32) {
 /// Open sky behind a lit wall at 8 and a ground, and near bars through an alpha-masked texture (a
 /// 4x1 texture, every other texel transparent) at 1.2, out of focus.
 fn masked_bars() -> (MeshScene, Camera, ThinLens) {
-    let mut m = MeshScene::default();
-    m.texels = vec![[0.9, 0.8, 0.7, 1.0], [1.0, 1.0, 1.0, 0.0], [0.9, 0.8, 0.7, 1.0], [1.0, 1.0, 1.0, 0.0]];
-    m.textures = vec![TextureInfo { offset: 0, width: 4, height: 1, sampler: NEAREST }];
+    let mut m = MeshScene {
+        texels: vec![[0.9, 0.8, 0.7, 1.0], [1.0, 1.0, 1.0, 0.0], [0.9, 0.8, 0.7, 1.0], [1.0, 1.0, 1.0, 0.0]],
+        textures: vec![TextureInfo { offset: 0, width: 4, height: 1, sampler: NEAREST }],
+        ..MeshScene::default()
+    };
     m.materials.push(MeshMaterial { base: [0.2, 0.5, 0.9, 1.0], ..MeshMaterial::default() });
     m.materials.push(MeshMaterial { base: [1.0; 4], base_texture: 0, flags: UNLIT | ALPHA_MASK, ..MeshMaterial::default() });
     m.materials.push(MeshMaterial { base: [0.4, 0.6, 0.3, 1.0], ..MeshMaterial::default() });

@@ -1,5 +1,5 @@
-//! The window's event loop and the frame: layers when the view changed, the depth of field
-//! through the frame API into the viewer's command buffer, the blit to the swapchain image, the UI,
+//! The window's event loop and the frame: the layers (a mesh's peeled on the device every frame, an
+//! EXR's uploaded once), the depth of field through the frame API into the viewer's command buffer, the blit to the swapchain image, the UI,
 //! present; after the fence, a frame later, what the frame cost and left out.
 
 use super::ViewArgs;
@@ -16,7 +16,8 @@ use dof::backend::{Backend, BufferId, ImageFormat, ImageRef, RawDevice, RawOptio
 use dof::frame::{Frame, FrameInput, FrameOutput};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::buffers::groups_for;
-use dof::scene::{Camera, Focus, LensSettings, MAX_GUARD_BAND};
+use dof::raster::{MeshPeelContext, MeshPeelDesc, default_near};
+use dof::scene::{Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, ThinLens};
 use dof_shaders::tonemap::{DISPLAY, DisplayParams, MODE_LINEAR, MODE_TONEMAP};
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle};
 use std::time::Instant;
@@ -71,6 +72,43 @@ impl Inputs {
     }
 }
 
+/// A mesh scene's layers, peeled on the device every frame into the frame's command buffer. Made
+/// again (between frames) when the frame size or the lens changes: its guard band is the automatic
+/// one of the view it was made from (Franke et al. 2018, §4; `dof render`'s), fixed while the
+/// camera moves, which goes in through push constants.
+struct DevicePeel {
+    ctx: MeshPeelContext,
+    size: [u32; 2],
+    lens: LensSettings,
+}
+
+impl DevicePeel {
+    /// The front depth at frame pixel `(x, y)` of the last peeled frame (one readback, on a click).
+    fn front_depth(&self, backend: &mut dyn Backend, x: u32, y: u32) -> Result<Option<f32>> {
+        let s = self.ctx.slots();
+        let (x, y) = (x + self.ctx.margin(), y + self.ctx.margin());
+        if x >= s.width || y >= s.height {
+            return Ok(None);
+        }
+        let p = y as u64 * s.width as u64 + x as u64;
+        if backend.read_buffer(s.counts, p, 1)?[0] == 0 {
+            return Ok(None);
+        }
+        let depth = f32::from_bits(backend.read_buffer(s.fragments, 4 * p * s.layers as u64 + 3, 1)?[0]);
+        Ok(Some(depth).filter(|d| d.is_finite() && *d > 0.0))
+    }
+}
+
+/// What the frame reads: its size (frame and guard band), slots a pixel, guard band, lens.
+#[derive(Clone, Copy)]
+struct Shape {
+    width: u32,
+    height: u32,
+    layers: u32,
+    margin: u32,
+    lens: ThinLens,
+}
+
 /// The frame's result on the device, in the library's buffers (as large as the contexts' frames):
 /// the linear RGB the frame API writes (3 words a pixel), and what the display pass makes of it,
 /// sRGB-encoded RGBA32F (4 words a pixel), which is copied into the target image and blitted into
@@ -117,6 +155,7 @@ struct Running {
     backend: Option<VulkanBackend>,
     contexts: Option<Contexts>,
     inputs: Option<Inputs>,
+    peel: Option<DevicePeel>,
     /// The blurred frame for display (RGBA32F, sRGB-encoded by the display pass), as large as the
     /// contexts' frames.
     target: Option<(Owned<vk::Image>, [u32; 2], bool)>,
@@ -344,6 +383,7 @@ impl App<'_> {
             backend: Some(backend),
             contexts: None,
             inputs: None,
+            peel: None,
             target: None,
             display: None,
             readback: None,
@@ -498,10 +538,17 @@ impl App<'_> {
             Err(e) => self.stats.problem = Some(format!("lens not taken: {e}")),
         }
 
-        // Click to focus: the front depth under the cursor, from the host's copy of the layers.
-        if let (Some((x, y)), Some((_, _, layers))) = (self.controls.focus_click.take(), &r.layers) {
+        // Click to focus: the front depth under the cursor, from the host's copy of an EXR's layers
+        // or read from the device peel's last frame.
+        let backend = r.backend.as_mut().context("no backend")?;
+        if let Some((x, y)) = self.controls.focus_click.take() {
             let (fx, fy) = ((x / extent.width as f64 * size[0] as f64) as u32, (y / extent.height as f64 * size[1] as f64) as u32);
-            if let Some(depth) = layers.front_depth(fx, fy) {
+            let depth = match (&r.peel, &r.layers) {
+                (Some(peel), _) => peel.front_depth(backend, fx, fy)?,
+                (None, Some((_, _, layers))) => layers.front_depth(fx, fy),
+                (None, None) => None,
+            };
+            if let Some(depth) = depth {
                 let focused = LensSettings { focus: Focus::Distance(depth), ..self.lens };
                 if focused.thin_lens(&self.camera).is_ok() {
                     self.lens = focused;
@@ -511,22 +558,47 @@ impl App<'_> {
             }
         }
 
-        // The layers, made again when the view or the lens changed.
-        let backend = r.backend.as_mut().context("no backend")?;
-        if r.layers.as_ref().is_none_or(|(c, l, _)| *c != self.camera || *l != self.lens) {
-            let layers = self.source.layers(backend, &self.camera, &self.lens)?;
-            Inputs::upload(&mut r.inputs, backend, &layers.image)?;
-            self.stats.layers_ms = layers.ms;
-            r.layers = Some((self.camera, self.lens, layers));
-        }
-        let (_, _, layers) = r.layers.as_ref().context("no layers")?;
-        let fw = layers.image.width;
-        let fh = layers.image.height;
+        // The layers: a mesh's peel context, made again when the frame size or the lens changed (it
+        // peels every frame); an EXR's layers, uploaded again when the lens changed (its edges).
+        let lens = self.lens.thin_lens(&self.camera)?;
+        let shape = match self.source.mesh() {
+            Some((mesh, near)) => {
+                let camera_size = [self.camera.width, self.camera.height];
+                if r.peel.as_ref().is_none_or(|p| p.size != camera_size || p.lens != self.lens) {
+                    if let Some(old) = r.peel.take() {
+                        old.ctx.destroy(backend);
+                    }
+                    let start = Instant::now();
+                    let near = near.unwrap_or_else(|| default_near(lens.focus_distance));
+                    let options = LayerOptions { max_layers: LAYERS, guard_band: GuardBand::Auto, ..Default::default() };
+                    let ctx = MeshPeelContext::new(backend, &mesh.raster(), &self.camera, &lens, &MeshPeelDesc::new(&options, near))?;
+                    self.stats.layers_ms = start.elapsed().as_secs_f64() * 1e3;
+                    self.stats.device_peel = Some(ctx.margin());
+                    r.peel = Some(DevicePeel { ctx, size: camera_size, lens: self.lens });
+                }
+                let ctx = &r.peel.as_ref().context("no peel context")?.ctx;
+                let [width, height] = ctx.size();
+                Shape { width, height, layers: ctx.layers(), margin: ctx.margin(), lens }
+            }
+            None => {
+                if r.layers.as_ref().is_none_or(|(c, l, _)| *c != self.camera || *l != self.lens) {
+                    let layers = self.source.layers(backend, &self.camera, &self.lens)?;
+                    Inputs::upload(&mut r.inputs, backend, &layers.image)?;
+                    self.stats.layers_ms = layers.ms;
+                    r.layers = Some((self.camera, self.lens, layers));
+                }
+                let (_, _, layers) = r.layers.as_ref().context("no layers")?;
+                let i = &layers.image;
+                Shape { width: i.width, height: i.height, layers: i.max_layers, margin: layers.margin, lens: layers.lens }
+            }
+        };
+        let fw = shape.width;
+        let fh = shape.height;
         self.stats.frame = [size[0], size[1]];
 
         // The contexts and the output image, for frames up to the window's size plus the widest
         // guard band (grown, never shrunk, when the window grows).
-        let want = [fw.max(size[0] + 2 * MAX_GUARD_BAND), fh.max(size[1] + 2 * MAX_GUARD_BAND), layers.image.max_layers.max(LAYERS)];
+        let want = [fw.max(size[0] + 2 * MAX_GUARD_BAND), fh.max(size[1] + 2 * MAX_GUARD_BAND), shape.layers.max(LAYERS)];
         let contexts = r.contexts.get_or_insert_with(|| Contexts::new(want));
         contexts.prepare(backend, &self.panel.settings, want)?;
         let max = contexts.max();
@@ -627,14 +699,19 @@ impl App<'_> {
                 Layout::TRANSFER_SRC_OPTIMAL,
             )
         };
-        let inputs = r.inputs.as_ref().context("no inputs")?;
         let display = r.display.as_ref().context("no display buffers")?;
         let method = self.panel.settings.method;
-        let ((fragments, counts), slots) = if method.front_only() { (inputs.front, 1) } else { (inputs.all, layers.image.max_layers) };
+        // The peel's slots (a single-layer method reads their front slot), or the uploaded ones.
+        let ((fragments, counts), slots) = match (&r.peel, &r.inputs) {
+            (Some(p), _) => ((p.ctx.slots().fragments, p.ctx.slots().counts), shape.layers),
+            (None, Some(inputs)) if method.front_only() => (inputs.front, 1),
+            (None, Some(inputs)) => (inputs.all, shape.layers),
+            (None, None) => bail!("no inputs"),
+        };
         let frame = Frame {
             width: fw,
             height: fh,
-            lens: layers.lens,
+            lens: shape.lens,
             input: FrameInput::Layers { fragments, counts, layers: slots },
             output: FrameOutput::Buffer(display.rgb),
         };
@@ -645,7 +722,11 @@ impl App<'_> {
         // SAFETY: our command buffer is recording, outside a render pass, from a pool of the
         // backend's queue family; every resource it names outlives the fence wait.
         unsafe { backend.begin_external(cb)? };
-        let recorded = contexts_record(r.contexts.as_mut(), backend, method, &frame).and_then(|()| {
+        let peeled = match r.peel.as_mut() {
+            Some(p) => p.ctx.record(backend, &self.camera, &lens).map_err(anyhow::Error::from),
+            None => Ok(()),
+        };
+        let recorded = peeled.and_then(|()| contexts_record(r.contexts.as_mut(), backend, method, &frame)).and_then(|()| {
             let groups = groups_for(&DISPLAY, fw as u64 * fh as u64);
             backend.dispatch(&DISPLAY, groups, &[display.rgb, display.rgba], &push_words(&params), "view/display")?;
             backend.copy_buffer_to_image(display.rgba, 0, out, "view/display-to-image")?;
@@ -655,7 +736,7 @@ impl App<'_> {
         recorded?;
 
         // The frame, cut to the window (the guard band is beyond it), into the swapchain image.
-        let m = layers.margin as i32;
+        let m = shape.margin as i32;
         let (sw, sh) = (size[0] as i32, size[1] as i32);
         d.image_barrier(
             image,
@@ -726,7 +807,7 @@ impl App<'_> {
         r.pending = Pending {
             submitted: true,
             screenshot: last && copy_shot,
-            linear: want_linear.then_some(LinearRead { frame_width: fw, margin: layers.margin, size: [size[0], size[1]] }),
+            linear: want_linear.then_some(LinearRead { frame_width: fw, margin: shape.margin, size: [size[0], size[1]] }),
             free: output.textures_delta.free,
             report: report_due,
         };
@@ -793,6 +874,9 @@ impl App<'_> {
             }
             if let Some(i) = r.inputs.take() {
                 i.destroy(&mut backend);
+            }
+            if let Some(p) = r.peel.take() {
+                p.ctx.destroy(&mut backend);
             }
             if let Some(b) = r.display.take() {
                 b.destroy(&mut backend);

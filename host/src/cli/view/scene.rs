@@ -1,7 +1,7 @@
 //! What the viewer shows: a built-in analytic scene or a glTF file, rasterised into a multi-layer
-//! image by depth peeling on the viewer's device whenever the view or the lens changes (the layers
-//! depend on the lens: the umbra threshold and the disocclusion buffer), or an EXR, a still
-//! multi-layer image whose edges are extended as `dof render` extends them.
+//! image by depth peeling on the viewer's device every frame (`raster::MeshPeelContext`, recorded
+//! into the frame's command buffer; see `frame.rs`), or an EXR, a still multi-layer image whose
+//! edges are extended as `dof render` extends them.
 
 use anyhow::{Context, Result, bail};
 use dof::backend::Backend;
@@ -85,6 +85,15 @@ impl SceneSource {
         }
         lens.thin_lens(&camera)?;
         Ok(SceneSource { name, content: Content::Mesh { mesh: Box::new(mesh), analytic, near }, camera, lens })
+    }
+
+    /// The mesh of a built-in or glTF scene and its near plane (`None`: from the focus distance);
+    /// `None` for an EXR.
+    pub fn mesh(&self) -> Option<(&MeshScene, Option<f32>)> {
+        match &self.content {
+            Content::Mesh { mesh, near, .. } => Some((mesh, *near)),
+            Content::Exr(_) => None,
+        }
     }
 
     /// Whether the camera can move (not for an EXR).

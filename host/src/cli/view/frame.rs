@@ -196,6 +196,9 @@ struct App<'a> {
     /// Wall time between frames and GPU time, summed over every frame but the first (which makes
     /// the pipelines): for the summary at exit.
     timed: (u32, f64, u32, f64),
+    /// The library's own work over the frames that remade nothing (no context, peel, input or
+    /// buffer made, the camera free to move): frames, and the backend's counters summed.
+    steady: (u32, dof::backend::BackendCounters),
 }
 
 pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result<()> {
@@ -235,6 +238,7 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
         closed: false,
         screenshot_written: false,
         timed: (0, 0.0, 0, 0.0),
+        steady: (0, Default::default()),
     };
     println!("view at the start: {}", view_flags(&app.camera, &app.lens));
     event_loop.run_app(&mut app).map_err(|e| anyhow!("the event loop failed: {e}"))?;
@@ -256,6 +260,16 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
             wall / n as f64,
             1e3 * n as f64 / wall,
             gpu / gn as f64
+        );
+    }
+    let (steady, c) = app.steady;
+    if steady > 0 {
+        println!(
+            "library work per frame over {steady} frames that remade nothing: {} allocations, {} uploads, {} readbacks, {} submissions of its own (the frame is the viewer's one submission)",
+            c.allocations as f64 / steady as f64,
+            c.uploads as f64 / steady as f64,
+            c.readbacks as f64 / steady as f64,
+            c.submissions as f64 / steady as f64
         );
     }
     println!("exited cleanly after {} frames", app.frames_recorded);
@@ -561,6 +575,9 @@ impl App<'_> {
         // The layers: a mesh's peel context, made again when the frame size or the lens changed (it
         // peels every frame); an EXR's layers, uploaded again when the lens changed (its edges).
         let lens = self.lens.thin_lens(&self.camera)?;
+        // The library's counters over the rest of the frame; `remade` when anything is made.
+        let before = backend.counters();
+        let mut remade = false;
         let shape = match self.source.mesh() {
             Some((mesh, near)) => {
                 let camera_size = [self.camera.width, self.camera.height];
@@ -575,6 +592,7 @@ impl App<'_> {
                     self.stats.layers_ms = start.elapsed().as_secs_f64() * 1e3;
                     self.stats.device_peel = Some(ctx.margin());
                     r.peel = Some(DevicePeel { ctx, size: camera_size, lens: self.lens });
+                    remade = true;
                 }
                 let ctx = &r.peel.as_ref().context("no peel context")?.ctx;
                 let [width, height] = ctx.size();
@@ -584,6 +602,7 @@ impl App<'_> {
                 if r.layers.as_ref().is_none_or(|(c, l, _)| *c != self.camera || *l != self.lens) {
                     let layers = self.source.layers(backend, &self.camera, &self.lens)?;
                     Inputs::upload(&mut r.inputs, backend, &layers.image)?;
+                    remade = true;
                     self.stats.layers_ms = layers.ms;
                     r.layers = Some((self.camera, self.lens, layers));
                 }
@@ -600,9 +619,12 @@ impl App<'_> {
         // guard band (grown, never shrunk, when the window grows).
         let want = [fw.max(size[0] + 2 * MAX_GUARD_BAND), fh.max(size[1] + 2 * MAX_GUARD_BAND), shape.layers.max(LAYERS)];
         let contexts = r.contexts.get_or_insert_with(|| Contexts::new(want));
+        let made_before = backend.counters().allocations;
         contexts.prepare(backend, &self.panel.settings, want)?;
+        remade |= backend.counters().allocations != made_before;
         let max = contexts.max();
         if r.target.as_ref().is_none_or(|(_, e, _)| e[0] < max[0] || e[1] < max[1]) {
+            remade = true;
             // SAFETY: the image may be in use by nothing (the frame before completed).
             unsafe { r.d.device.device_wait_idle()? };
             if let Some((old, _, _)) = r.target.take() {
@@ -613,6 +635,7 @@ impl App<'_> {
         }
         let pixels = max[0] as u64 * max[1] as u64;
         if r.display.as_ref().is_none_or(|b| b.pixels < pixels) {
+            remade = true;
             if let Some(old) = r.display.take() {
                 old.destroy(backend);
             }
@@ -634,6 +657,7 @@ impl App<'_> {
             println!("computing the reference for this view ({REFERENCE_SAMPLES} samples a pixel)...");
             let image = self.source.reference(backend, &self.camera, &self.lens, REFERENCE_SAMPLES)?;
             r.reference = Some((self.camera, self.lens, image));
+            remade = true;
         }
         let (w, h) = (extent.width, extent.height);
         if copy_shot && r.readback.as_ref().is_none_or(|b| b.bytes < (w * h * 4) as u64) {
@@ -799,6 +823,15 @@ impl App<'_> {
             d.device.end_command_buffer(cb)?;
             d.device.reset_fences(&[d.fence])?;
             d.device.queue_submit(d.queue, &[submit], d.fence)?;
+        }
+        if let (false, Some(b)) = (remade, r.backend.as_ref()) {
+            let c = b.counters().since(&before);
+            let s = &mut self.steady.1;
+            self.steady.0 += 1;
+            s.allocations += c.allocations;
+            s.uploads += c.uploads;
+            s.readbacks += c.readbacks;
+            s.submissions += c.submissions;
         }
         let report_due = self.last_report.elapsed().as_secs_f64() > 0.5 || last;
         if report_due {

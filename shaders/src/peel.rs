@@ -14,11 +14,17 @@
 //!   ([`pair_radius`]), `peel_span` and `peel_mask` find the pixels within that radius of an edge
 //!   pixel (the disk `dx² + dy² <= r²`, split into a row pass and a column pass: [`disk_budget`],
 //!   [`covers`]), and `peel_mask` then keeps only the front slot outside the buffer and resets every
-//!   unused slot to `(0, 0, 0, +inf)`.
+//!   unused slot to `(0, 0, 0, +inf)`;
+//! - `peel_band` (one invocation per triangle) and `peel_band_end` (one invocation): the guard band
+//!   this frame's view would need (the largest CoC radius of geometry within [`MAX_GUARD_BAND`]
+//!   pixels of the frame, [`nearest_in_reach`] and [`margin_of`], the rules of the host's
+//!   `scene::guard_band::auto_margin_mesh`), and a count of the frames whose band exceeded the one
+//!   the image was made with.
 
 use crate::exec::{Group, Mem};
 use crate::lens::{ThinLens, is_finite, is_nan};
 use crate::math::ceil;
+use crate::raster::project::{triangle, vertex_position};
 use crate::wg::for_each_item;
 
 /// Words a slot: red, green, blue, depth.
@@ -55,6 +61,98 @@ pub struct PeelParams {
 }
 
 const _: () = assert!(core::mem::size_of::<PeelParams>() <= 128);
+
+/// Widest guard band, pixels: 6 tile rings of 16 pixels, the largest CoC radius the splatting
+/// methods honour with their default tiles (larger radii are capped there anyway).
+pub const MAX_GUARD_BAND: u32 = 96;
+
+/// What the band kernels take: the view within [`MAX_GUARD_BAND`] pixels of the frame from the
+/// near plane on, as five inward planes `(n, d)` (`n·p >= d` inside), the eye and view axis, the
+/// lens and the band the image has.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct BandParams {
+    pub planes: [[f32; 4]; 5],
+    pub eye: [f32; 3],
+    pub triangles: u32,
+    pub forward: [f32; 3],
+    /// The guard band the peeled image has, pixels.
+    pub margin: u32,
+    pub lens: ThinLens,
+}
+
+const _: () = assert!(core::mem::size_of::<BandParams>() <= 128);
+
+#[inline]
+fn dot3(a: [f32; 3], b: [f32; 3]) -> f32 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// Most corners a quadrilateral clipped by five planes has.
+const CLIP_CORNERS: usize = 9;
+
+/// Nearest planar depth (along `forward` from `eye`) of the convex polygon of the first `corners`
+/// (3 or 4) points of `poly` inside the five `planes`, by clipping it against each (Sutherland and
+/// Hodgman 1974); `+inf` where nothing is left.
+pub fn nearest_in_reach(planes: &[[f32; 4]; 5], poly: [[f32; 3]; 4], corners: usize, eye: [f32; 3], forward: [f32; 3]) -> f32 {
+    let mut cur = [[0.0f32; 3]; CLIP_CORNERS];
+    cur[0] = poly[0];
+    cur[1] = poly[1];
+    cur[2] = poly[2];
+    cur[3] = poly[3];
+    let mut n = if corners < 4 { corners } else { 4 };
+    let mut k = 0;
+    while k < 5 {
+        let pl = planes[k];
+        let normal = [pl[0], pl[1], pl[2]];
+        let mut next = [[0.0f32; 3]; CLIP_CORNERS];
+        let mut m = 0usize;
+        let mut i = 0;
+        while i < n {
+            let a = cur[i];
+            let b = cur[if i + 1 == n { 0 } else { i + 1 }];
+            let (da, db) = (dot3(normal, a) - pl[3], dot3(normal, b) - pl[3]);
+            if da >= 0.0 && m < CLIP_CORNERS {
+                next[m] = a;
+                m += 1;
+            }
+            if (da >= 0.0) != (db >= 0.0) && m < CLIP_CORNERS {
+                let t = da / (da - db);
+                next[m] = [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t];
+                m += 1;
+            }
+            i += 1;
+        }
+        cur = next;
+        n = m;
+        if n == 0 {
+            return f32::INFINITY;
+        }
+        k += 1;
+    }
+    let mut best = f32::INFINITY;
+    let mut i = 0;
+    while i < n {
+        let p = cur[i];
+        let z = dot3([p[0] - eye[0], p[1] - eye[1], p[2] - eye[2]], forward);
+        if z < best {
+            best = z;
+        }
+        i += 1;
+    }
+    best
+}
+
+/// The guard band (pixels) for the largest CoC radius `radius` reaching into the frame: rounded
+/// up, at most [`MAX_GUARD_BAND`] (also for NaN).
+#[inline]
+pub fn margin_of(radius: f32) -> u32 {
+    if is_nan(radius) {
+        return MAX_GUARD_BAND;
+    }
+    let r = ceil(if radius > 0.0 { radius } else { 0.0 });
+    if r >= MAX_GUARD_BAND as f32 { MAX_GUARD_BAND } else { r as u32 }
+}
 
 /// Whether a pixel of a shaded peel layer (coverage `alpha`, depth `depth`) becomes a slot: a
 /// surface, or the background where this pass saw the pixel's ray escape (coverage 1 at infinite
@@ -264,6 +362,35 @@ pub fn mask_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, span: M, widest: M
     });
 }
 
+pub fn band_pass<G: Group, M: Mem>(g: &mut G, p: &BandParams, vertices: M, triangles: M, mut band: M) {
+    for_each_item(g, p.triangles, |t| {
+        let tri = triangle(&triangles, t);
+        let a = vertex_position(&vertices, tri[0]);
+        let corners = [a, vertex_position(&vertices, tri[1]), vertex_position(&vertices, tri[2]), a];
+        let z = nearest_in_reach(&p.planes, corners, 3, p.eye, p.forward);
+        if is_finite(z) {
+            let r = p.lens.coc_radius_px(z);
+            // Non-negative floats order as their bits.
+            if r > 0.0 {
+                band.atomic_max(0, r.to_bits());
+            }
+        }
+    });
+}
+
+pub fn band_end_pass<G: Group, M: Mem>(g: &mut G, p: &BandParams, mut band: M) {
+    for_each_item(g, 1, |_| {
+        let geometry = f32::from_bits(band.load(0));
+        let background = p.lens.coc_radius_px(f32::INFINITY);
+        let needed = margin_of(if geometry > background { geometry } else { background });
+        band.store(1, needed);
+        if needed > p.margin {
+            band.store(2, band.load(2) + 1);
+        }
+        band.store(0, 0);
+    });
+}
+
 kernel!(
     /// Plans the next peel pass from the last one's found flag (indirect arguments).
     PEEL_PLAN = peel_plan [64] (PeelParams) { found, args, passes } => plan_pass
@@ -285,5 +412,14 @@ kernel!(
     PEEL_MASK = peel_mask [256] (PeelParams) { span, widest, mask, fragments, counts } reads { span, widest } => mask_pass
 );
 
+kernel!(
+    /// The largest CoC radius of the triangles within the widest guard band of this view.
+    PEEL_BAND = peel_band [64] (BandParams) { vertices, triangles, band } reads { vertices, triangles } => band_pass
+);
+kernel!(
+    /// The band this view needs, and whether it exceeds the image's.
+    PEEL_BAND_END = peel_band_end [64] (BandParams) { band } => band_end_pass
+);
+
 #[cfg(not(target_arch = "spirv"))]
-pub const KERNELS: [&crate::KernelDesc; 5] = [&PEEL_PLAN, &PEEL_APPEND, &PEEL_EDGES, &PEEL_SPAN, &PEEL_MASK];
+pub const KERNELS: [&crate::KernelDesc; 7] = [&PEEL_PLAN, &PEEL_APPEND, &PEEL_EDGES, &PEEL_SPAN, &PEEL_MASK, &PEEL_BAND, &PEEL_BAND_END];

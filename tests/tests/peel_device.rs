@@ -228,3 +228,35 @@ fn a_peel_context_refuses_bad_views_and_another_backend() {
     ctx.destroy(&mut b);
     assert_eq!(b.counters().device_bytes, 0, "everything freed");
 }
+
+/// The band each frame's view needs is computed on the device with the host's rule
+/// (`auto_margin_mesh`) and counted when it exceeds the band the context was made with.
+fn band_per_view_on(b: &mut dyn Backend) {
+    let (fence, camera, lens) = builtin_mesh("fence", 80, 45);
+    let near = default_near(lens.focus_distance);
+    let host = dof::scene::guard_band::auto_margin_mesh(fence.raster().triangle_positions(), &camera, &lens, near).unwrap();
+    assert!(host > 1, "the fence needs a band: {host}");
+    for (band, exceeded) in [(GuardBand::Auto, 0), (GuardBand::Pixels(host - 1), 2)] {
+        let desc = MeshPeelDesc::new(&options(band, 2, true), near);
+        let mut ctx = MeshPeelContext::new(b, &fence.raster(), &camera, &lens, &desc).unwrap();
+        for _ in 0..2 {
+            ctx.record(b, &camera, &lens).unwrap();
+            b.submit().unwrap();
+        }
+        let report = ctx.peel_report(b).unwrap();
+        assert_eq!((report.band_needed, report.band_exceeded_frames), (host, exceeded), "{band:?}: {report:?}");
+        ctx.destroy(b);
+    }
+}
+
+#[test]
+fn the_band_a_view_needs_is_found_on_the_device_on_the_cpu() {
+    band_per_view_on(&mut CpuBackend::new());
+}
+
+#[test]
+fn the_band_a_view_needs_is_found_on_the_device_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    band_per_view_on(&mut vk);
+    assert_clean(&mut vk);
+}

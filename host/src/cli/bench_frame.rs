@@ -123,6 +123,8 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "height": size[1],
             "layers": layers,
             "guard_band_px": measured.margin,
+            "guard_band_needed_px_last_frame": measured.band.map(|b| b.0),
+            "guard_band_exceeded_frames": measured.band.map(|b| b.1),
             "frames": args.frames,
             "allocations_per_frame": per_frame(c.allocations),
             "submits_per_frame": per_frame(c.submissions),
@@ -219,6 +221,8 @@ struct Measured {
     margin: u32,
     /// The last frame's peel passes that drew and that found a surface (`--orbit`).
     peel_drawn: Option<(u32, u32)>,
+    /// The band the last frame's view needed, and the frames that needed more than the image has.
+    band: Option<(u32, u32)>,
 }
 
 impl Measured {
@@ -245,6 +249,7 @@ impl Measured {
             peel_passes: 0,
             margin: 0,
             peel_drawn: None,
+            band: None,
         }
     }
 }
@@ -477,6 +482,7 @@ fn orbiting(
         m.margin = peel.margin();
         let last = peel.peel_report(b).context("reading the last frame's peel report")?;
         m.peel_drawn = Some((last.drawn, last.with_surface));
+        m.band = Some((last.band_needed, last.band_exceeded_frames));
         if let Some(out) = out {
             write_last(b, output, [w, h], peel.margin(), out)?;
         }

@@ -19,12 +19,14 @@ use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{
-    APPEND_ARGS, ARGS_WORDS, PEEL_APPEND, PEEL_EDGES, PEEL_MASK, PEEL_PLAN, PEEL_SPAN, PeelParams, SHADE_ARGS, SLOT_WORDS,
+    APPEND_ARGS, ARGS_WORDS, BandParams, PEEL_APPEND, PEEL_BAND, PEEL_BAND_END, PEEL_EDGES, PEEL_MASK, PEEL_PLAN, PEEL_SPAN, PeelParams,
+    SHADE_ARGS, SLOT_WORDS,
 };
 use dof_shaders::raster::shade::{LAYER_WORDS, RASTER_SHADE};
 
 /// The kernels a peel records.
-pub(crate) const KERNELS: [&dof_shaders::KernelDesc; 5] = [&PEEL_PLAN, &PEEL_APPEND, &PEEL_EDGES, &PEEL_SPAN, &PEEL_MASK];
+pub(crate) const KERNELS: [&dof_shaders::KernelDesc; 7] =
+    [&PEEL_PLAN, &PEEL_APPEND, &PEEL_EDGES, &PEEL_SPAN, &PEEL_MASK, &PEEL_BAND, &PEEL_BAND_END];
 
 /// The peel's buffers on the device for a `width` x `height` image with `layers` slots a pixel
 /// (owned by the context that made them).
@@ -51,6 +53,9 @@ pub struct PeelSlots {
     edge: BufferId,
     widest: BufferId,
     span: BufferId,
+    /// The guard band a view needs: the widest CoC radius found (f32 bits, per frame), the last
+    /// frame's band, and the frames whose band exceeded the image's.
+    band: BufferId,
 }
 
 /// What a frame's peel did, from the device.
@@ -62,20 +67,28 @@ pub struct PeelReport {
     pub drawn: u32,
     /// Passes that found a surface somewhere.
     pub with_surface: u32,
+    /// The guard band (pixels) the last frame's view needed (`scene::guard_band`'s rule, computed
+    /// on the device), where the image has the band fixed at creation.
+    pub band_needed: u32,
+    /// Frames since the context was made whose view needed a wider band than the image has (their
+    /// edges miss some blur from beyond the band).
+    pub band_exceeded_frames: u32,
 }
 
 impl PeelReport {
     pub fn context_report(&self, margin: u32) -> ContextReport {
         ContextReport {
             summary: format!(
-                "peeled {} passes: {} drawn, {} found a surface (guard band {margin} px)",
-                self.recorded, self.drawn, self.with_surface
+                "peeled {} passes: {} drawn, {} found a surface (guard band {margin} px; this view needs {} px; {} frames needed more)",
+                self.recorded, self.drawn, self.with_surface, self.band_needed, self.band_exceeded_frames
             ),
             figures: [
                 ("peel_passes_recorded".to_string(), self.recorded as f64),
                 ("peel_passes_drawn".to_string(), self.drawn as f64),
                 ("peel_passes_with_surface".to_string(), self.with_surface as f64),
                 ("guard_band_px".to_string(), margin as f64),
+                ("guard_band_needed_px".to_string(), self.band_needed as f64),
+                ("guard_band_exceeded_frames".to_string(), self.band_exceeded_frames as f64),
             ]
             .into(),
             ..Default::default()
@@ -109,6 +122,7 @@ impl PeelSlots {
             edge: owned.make(backend, pixels, "peel/edge")?,
             widest: owned.make(backend, 1, "peel/widest")?,
             span: owned.make(backend, pixels, "peel/span")?,
+            band: owned.make(backend, 3, "peel/band")?,
         })
     }
 
@@ -172,11 +186,27 @@ impl PeelSlots {
         backend.dispatch(&PEEL_MASK, groups, &bound, &params, "peel/mask")
     }
 
+    /// Records the guard band the view of `params` needs, from `triangles` triangles of a mesh
+    /// (its vertex and triangle buffers), and counts the frame when it exceeds `params.margin`.
+    pub fn band(&self, backend: &mut dyn Backend, vertices: BufferId, triangles: BufferId, params: &BandParams) -> Result<()> {
+        let words = push_words(params);
+        let groups = groups_for(&PEEL_BAND, params.triangles as u64);
+        backend.dispatch(&PEEL_BAND, groups, &[vertices, triangles, self.band], &words, "peel/band")?;
+        backend.dispatch(&PEEL_BAND_END, [1, 1, 1], &[self.band], &words, "peel/band")
+    }
+
     /// What the last frame's passes did (reads the device: once the frame completed).
     pub fn report(&self, backend: &mut dyn Backend) -> Result<PeelReport> {
         let words = backend.read_buffer(self.passes, 0, 2 * self.layers as u64)?;
+        let band = backend.read_buffer(self.band, 0, 3)?;
         let (drawn, found) = words.split_at(self.layers as usize);
         let count = |w: &[u32]| w.iter().filter(|&&v| v != 0).count() as u32;
-        Ok(PeelReport { recorded: self.layers, drawn: count(drawn), with_surface: count(found) })
+        Ok(PeelReport {
+            recorded: self.layers,
+            drawn: count(drawn),
+            with_surface: count(found),
+            band_needed: band[1],
+            band_exceeded_frames: band[2],
+        })
     }
 }

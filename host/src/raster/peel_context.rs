@@ -6,7 +6,8 @@
 //! draw target sized for the frame and its guard band, the pipelines built. The guard band is fixed
 //! at creation (a margin in pixels, or [`GuardBand::Auto`] resolved once from the creation view),
 //! so the draw keeps one size whatever the camera does later; a view that would need a wider band
-//! gets this one. Per frame: the camera and lens through push constants only, `max_layers` passes
+//! gets this one, and the band each frame's view needs is computed on the device and reported
+//! (`PeelReport::band_needed`, `band_exceeded_frames`). Per frame: the camera and lens through push constants only, `max_layers` passes
 //! always recorded (the ones past the last useful pass draw nothing, decided on the device), the
 //! disocclusion buffer applied on the device. No allocation, upload, readback or submission.
 
@@ -19,9 +20,10 @@ use crate::frame::context::ContextReport;
 use crate::frame::io::{Owned, ready};
 use crate::frame::peel::{KERNELS, PeelReport, PeelSlots};
 use crate::frame::{Frame, FrameInput, FrameOutput};
-use crate::scene::guard_band::auto_margin_mesh;
+use crate::scene::guard_band::{auto_margin_mesh, reach_planes};
 use crate::scene::{Camera, GuardBand, LayerOptions};
 use dof_shaders::lens::ThinLens;
+use dof_shaders::peel::BandParams;
 use dof_shaders::raster::draw::{RASTER_DRAW, RASTER_FALLBACK, RASTER_SETUP, VIS_WORDS};
 use dof_shaders::raster::mesh::Light;
 use dof_shaders::raster::shade::{LAYER, RASTER_SHADE, ShadeParams};
@@ -182,6 +184,16 @@ impl MeshPeelContext {
             return Err(Error::InvalidArgument("the camera's guard band does not match the context's".into()));
         }
         let (mesh, slots, pass) = (&self.mesh, &self.slots, &self.pass);
+        // The band this view needs (the image keeps the one it was made with), checked before
+        // anything is recorded.
+        let band = BandParams {
+            planes: reach_planes(camera, self.desc.near)?,
+            eye: frame.eye.to_array(),
+            triangles: mesh.triangles,
+            forward: frame.forward.to_array(),
+            margin: self.margin,
+            lens: *lens,
+        };
         let view = View::default();
         let shade = push_words(&ShadeParams {
             light: self.light,
@@ -202,7 +214,8 @@ impl MeshPeelContext {
             slots.append(backend, k)?;
         }
         slots.plan(backend, self.desc.max_layers, vertices)?;
-        slots.finish(backend, *lens, self.desc.edge_depth_ratio, self.desc.disocclusion)
+        slots.finish(backend, *lens, self.desc.edge_depth_ratio, self.desc.disocclusion)?;
+        slots.band(backend, mesh.buffers[0], mesh.buffers[1], &band)
     }
 
     /// What the last frame's passes did (reads the device: once the frame completed).

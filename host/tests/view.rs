@@ -353,7 +353,7 @@ fn the_viewer_refuses_bad_input_clearly() {
 /// own in a frame that remade nothing, and validation stays silent.
 #[test]
 fn an_orbiting_mesh_scene_peels_on_the_device_with_no_transfers() {
-    let script = vec!["orbit=4"; 8].join(",");
+    let script = ["orbit=4"; 8].join(",");
     let out = view(&[
         "--scene",
         "fence",

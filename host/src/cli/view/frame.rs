@@ -600,7 +600,7 @@ impl App<'_> {
             }
             None => {
                 if r.layers.as_ref().is_none_or(|(c, l, _)| *c != self.camera || *l != self.lens) {
-                    let layers = self.source.layers(backend, &self.camera, &self.lens)?;
+                    let layers = self.source.exr_layers(&self.camera, &self.lens)?;
                     Inputs::upload(&mut r.inputs, backend, &layers.image)?;
                     remade = true;
                     self.stats.layers_ms = layers.ms;

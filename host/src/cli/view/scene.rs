@@ -7,10 +7,9 @@ use anyhow::{Context, Result, bail};
 use dof::backend::Backend;
 use dof::io::read_layered_exr;
 use dof::layers::{LayeredImage, RgbImage};
-use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
+use dof::raster::{AccumulateOptions, accumulate, default_near};
 use dof::scene::{
-    self, Camera, GuardBand, LayerOptions, LensSettings, MeshScene, ReferenceOptions, Scene, ThinLens, builtin, export_builtin_glb,
-    load_gltf, load_gltf_slice,
+    self, Camera, LensSettings, MeshScene, ReferenceOptions, Scene, ThinLens, builtin, export_builtin_glb, load_gltf, load_gltf_slice,
 };
 use std::path::Path;
 use std::time::Instant;
@@ -123,18 +122,13 @@ impl SceneSource {
         matches!(self.content, Content::Mesh { .. })
     }
 
-    /// The multi-layer image for `camera` and `lens`: peeled on `backend` (with the guard band
-    /// `dof render` uses), or the EXR with its edges extended by its largest CoC.
-    pub fn layers(&self, backend: &mut dyn Backend, camera: &Camera, settings: &LensSettings) -> Result<Layers> {
+    /// An EXR's multi-layer image for the lens of `settings`, its edges extended by its largest CoC
+    /// (a mesh scene's layers are peeled on the device every frame instead: see `frame.rs`).
+    pub fn exr_layers(&self, camera: &Camera, settings: &LensSettings) -> Result<Layers> {
         let lens = settings.thin_lens(camera)?;
         let start = Instant::now();
         let (image, margin) = match &self.content {
-            Content::Mesh { mesh, near, .. } => {
-                let near = near.unwrap_or_else(|| default_near(lens.focus_distance));
-                let options = LayerOptions { max_layers: LAYERS, guard_band: GuardBand::Auto, ..Default::default() };
-                let peeled = peel_layers(backend, &mesh.raster(), camera, &lens, near, &options)?;
-                (peeled.image.layers, peeled.image.margin)
-            }
+            Content::Mesh { .. } => bail!("a mesh scene's layers are peeled on the device every frame, not made on the host"),
             Content::Exr(layers) => {
                 let margin = crate::cli::render::edge_margin(layers, &lens);
                 (layers.extend_edges(margin)?, margin)

@@ -1,5 +1,5 @@
-//! The window's event loop and the frame: the layers (a mesh's peeled on the device every frame, an
-//! EXR's uploaded once), the depth of field through the frame API into the viewer's command buffer, the blit to the swapchain image, the UI,
+//! The window's event loop and the frame: the layers (a mesh's peeled on the device in the frame's
+//! command buffer whenever the camera moved, an EXR's uploaded once), the depth of field through the frame API into the viewer's command buffer, the blit to the swapchain image, the UI,
 //! present; after the fence, a frame later, what the frame cost and left out.
 
 use super::ViewArgs;
@@ -72,7 +72,7 @@ impl Inputs {
     }
 }
 
-/// A mesh scene's layers, peeled on the device every frame into the frame's command buffer. Made
+/// A mesh scene's layers, peeled on the device into the frame's command buffer when the camera moved. Made
 /// again (between frames) when the frame size or the lens changes: its guard band is the automatic
 /// one of the view it was made from (Franke et al. 2018, §4; `dof render`'s), fixed while the
 /// camera moves, which goes in through push constants.
@@ -80,6 +80,9 @@ struct DevicePeel {
     ctx: MeshPeelContext,
     size: [u32; 2],
     lens: LensSettings,
+    /// The camera the slots were last peeled for: a still camera keeps them (nothing else writes
+    /// them), a moving one peels again in the frame's command buffer.
+    peeled: Option<Camera>,
 }
 
 impl DevicePeel {
@@ -573,7 +576,7 @@ impl App<'_> {
         }
 
         // The layers: a mesh's peel context, made again when the frame size or the lens changed (it
-        // peels every frame); an EXR's layers, uploaded again when the lens changed (its edges).
+        // peels whenever the camera moved); an EXR's layers, uploaded again when the lens changed (its edges).
         let lens = self.lens.thin_lens(&self.camera)?;
         // The library's counters over the rest of the frame; `remade` when anything is made.
         let before = backend.counters();
@@ -591,7 +594,7 @@ impl App<'_> {
                     let ctx = MeshPeelContext::new(backend, &mesh.raster(), &self.camera, &lens, &MeshPeelDesc::new(&options, near))?;
                     self.stats.layers_ms = start.elapsed().as_secs_f64() * 1e3;
                     self.stats.device_peel = Some(ctx.margin());
-                    r.peel = Some(DevicePeel { ctx, size: camera_size, lens: self.lens });
+                    r.peel = Some(DevicePeel { ctx, size: camera_size, lens: self.lens, peeled: None });
                     remade = true;
                 }
                 let ctx = &r.peel.as_ref().context("no peel context")?.ctx;
@@ -747,8 +750,12 @@ impl App<'_> {
         // backend's queue family; every resource it names outlives the fence wait.
         unsafe { backend.begin_external(cb)? };
         let peeled = match r.peel.as_mut() {
-            Some(p) => p.ctx.record(backend, &self.camera, &lens).map_err(anyhow::Error::from),
-            None => Ok(()),
+            Some(p) if p.peeled != Some(self.camera) => {
+                let recorded = p.ctx.record(backend, &self.camera, &lens);
+                p.peeled = recorded.is_ok().then_some(self.camera);
+                recorded.map_err(anyhow::Error::from)
+            }
+            _ => Ok(()),
         };
         let recorded = peeled.and_then(|()| contexts_record(r.contexts.as_mut(), backend, method, &frame)).and_then(|()| {
             let groups = groups_for(&DISPLAY, fw as u64 * fh as u64);

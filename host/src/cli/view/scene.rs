@@ -1,6 +1,6 @@
 //! What the viewer shows: a built-in analytic scene or a glTF file, rasterised into a multi-layer
-//! image by depth peeling on the viewer's device every frame (`raster::MeshPeelContext`, recorded
-//! into the frame's command buffer; see `frame.rs`), or an EXR, a still multi-layer image whose
+//! image by depth peeling on the viewer's device (`raster::MeshPeelContext`, recorded into the
+//! frame's command buffer whenever the camera moved; see `frame.rs`), or an EXR, a still multi-layer image whose
 //! edges are extended as `dof render` extends them.
 
 use anyhow::{Context, Result, bail};
@@ -123,12 +123,12 @@ impl SceneSource {
     }
 
     /// An EXR's multi-layer image for the lens of `settings`, its edges extended by its largest CoC
-    /// (a mesh scene's layers are peeled on the device every frame instead: see `frame.rs`).
+    /// (a mesh scene's layers are peeled on the device instead: see `frame.rs`).
     pub fn exr_layers(&self, camera: &Camera, settings: &LensSettings) -> Result<Layers> {
         let lens = settings.thin_lens(camera)?;
         let start = Instant::now();
         let (image, margin) = match &self.content {
-            Content::Mesh { .. } => bail!("a mesh scene's layers are peeled on the device every frame, not made on the host"),
+            Content::Mesh { .. } => bail!("a mesh scene's layers are peeled on the device, not made on the host"),
             Content::Exr(layers) => {
                 let margin = crate::cli::render::edge_margin(layers, &lens);
                 (layers.extend_edges(margin)?, margin)

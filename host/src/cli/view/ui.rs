@@ -35,9 +35,10 @@ pub struct Stats {
     /// What the last reported frame left out (from the context's report, read a frame or more late).
     pub report: Vec<String>,
     /// How long making the layers took: the EXR's edges extended, or for a mesh the device peel's
-    /// context made (again when the frame size or the lens changes; it peels every frame).
+    /// context made (again when the frame size or the lens changes; it peels whenever the camera moves).
     pub layers_ms: f64,
-    /// The layers are peeled on the device every frame, with this guard band (pixels).
+    /// The layers are peeled on the device in the frame whenever the camera moves, with this guard
+    /// band (pixels).
     pub device_peel: Option<u32>,
     pub has_reference: bool,
     /// PSNR of the shown frame against the reference, when computed.
@@ -126,7 +127,7 @@ impl Panel {
                 ui.label(stages.join(", "));
                 match stats.device_peel {
                     Some(margin) => ui.label(format!(
-                        "layers: peeled on the device every frame, guard band {margin} px (context made in {:.0} ms when the size or lens changed)",
+                        "layers: peeled on the device in the frame when the camera moves, guard band {margin} px (context made in {:.0} ms when the size or lens changed)",
                         stats.layers_ms
                     )),
                     None => ui.label(format!("layers: made in {:.0} ms", stats.layers_ms)),

@@ -988,6 +988,94 @@ fn every_method_renders_a_sequence() {
     }
 }
 
+/// An EXR sequence in (`--scene shot-####.exr`): every matching file in frame order through one
+/// context, a focus pull over them, gaps reported, outputs that would overwrite a frame refused.
+#[test]
+fn exr_sequences_render_in_frame_order_through_one_context() {
+    // Three RGB+Z frames of an orbit, written as a compositor would hand them over.
+    let src = temp("exr-seq/src/shot.exr");
+    let o = dof(&[
+        "render",
+        "--method",
+        "pinhole",
+        "--width",
+        "40",
+        "--height",
+        "24",
+        "--frames",
+        "3",
+        "--orbit",
+        "4",
+        "--out",
+        src.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let pattern = temp("exr-seq/src/shot-####.exr");
+    let pattern = pattern.to_str().unwrap();
+    let out = temp("exr-seq/out/blur.exr");
+    let lens = ["--focus", "4", "--aperture-radius", "0.1", "--focus-to", "8"];
+    let args = |extra: &[&'static str], out: &str| {
+        ["render", "--scene", pattern, "--method", "multilayer"]
+            .iter()
+            .copied()
+            .chain(lens)
+            .chain(extra.iter().copied())
+            .chain(["--out"])
+            .chain([out])
+            .map(str::to_string)
+            .collect::<Vec<_>>()
+    };
+    let run = |a: Vec<String>| dof(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    let o = run(args(&[], out.to_str().unwrap()));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(stdout.contains("3 frames"), "{stdout}");
+    assert!(stdout.contains("context made once for 3 frames: 0 allocations in the frames after the first"), "{stdout}");
+    let frames: Vec<_> = (0..3).map(|i| dof::io::read_rgb_exr(temp(&format!("exr-seq/out/blur-{i:04}.exr"))).unwrap().0).collect();
+    assert_eq!(gif_frames(&temp("exr-seq/out/blur.gif")), 3);
+    assert!(frames[0].data != frames[1].data && frames[1].data != frames[2].data, "the frames of an orbit and a focus pull differ");
+
+    // `--frames 2` renders the first two; more than there are is refused.
+    let o = run(args(&["--frames", "2"], temp("exr-seq/two/t.exr").to_str().unwrap()));
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(temp("exr-seq/two/t-0001.exr").exists() && !temp("exr-seq/two/t-0002.exr").exists());
+    let too_many = args(&["--frames", "5"], temp("exr-seq/x/t.exr").to_str().unwrap());
+    assert_fails_with(&too_many.iter().map(String::as_str).collect::<Vec<_>>(), "has 3 frames");
+
+    // Outputs named like the input frames would overwrite them: refused before any work.
+    let clash = args(&[], temp("exr-seq/src/shot.exr").to_str().unwrap());
+    assert_fails_with(&clash.iter().map(String::as_str).collect::<Vec<_>>(), "would overwrite the input");
+    assert!(dof::io::read_rgb_exr(temp("exr-seq/src/shot-0000.exr")).is_ok());
+
+    // A gap is reported, and the sequence goes on; a frame of another size is refused by name.
+    std::fs::rename(temp("exr-seq/src/shot-0001.exr"), temp("exr-seq/src/shot-0007.exr")).unwrap();
+    let o = run(args(&[], temp("exr-seq/gap/g.exr").to_str().unwrap()));
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(stderr.contains("frame 1 is missing") && stderr.contains("frames 3 to 6 are missing"), "{stderr}");
+    let small = temp("exr-seq/src/small.exr");
+    let o = dof(&["render", "--method", "pinhole", "--width", "20", "--height", "24", "--out", small.to_str().unwrap()]);
+    assert!(o.status.success());
+    std::fs::rename(&small, temp("exr-seq/src/shot-0009.exr")).unwrap();
+    let mixed = args(&[], temp("exr-seq/mixed/m.exr").to_str().unwrap());
+    assert_fails_with(&mixed.iter().map(String::as_str).collect::<Vec<_>>(), "shot-0009.exr is 20x24");
+
+    // Flags that need geometry, or one file, say so.
+    assert_fails_with(
+        &["render", "--scene", pattern, "--focus", "4", "--aperture-radius", "0.1", "--frames", "2", "--orbit", "1"],
+        "no geometry",
+    );
+    let one = temp("exr-seq/src/shot-0000.exr");
+    assert_fails_with(
+        &["render", "--scene", one.to_str().unwrap(), "--focus", "4", "--aperture-radius", "0.1", "--frames", "2"],
+        "pattern",
+    );
+    assert_fails_with(
+        &["render", "--scene", temp("exr-seq/none-####.exr").to_str().unwrap(), "--focus", "4", "--aperture-radius", "0.1"],
+        "no file",
+    );
+}
+
 #[test]
 fn sequence_flags_are_refused_naming_the_flag() {
     let out = temp("seq-bad/x.exr");

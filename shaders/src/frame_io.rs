@@ -1,10 +1,11 @@
 //! What a renderer hands the frame API, in the layouts the methods read, and back.
 //!
-//! - `frame_from_images` (one invocation per pixel): a colour image (RGBA32F, or RGBA16F as half
-//!   bits) and a depth image copied into buffers become one fragment slot per pixel. The depth is
-//!   either linear (planar view depth, as the methods take it) or a depth buffer's value, turned
-//!   into view depth from the projection's near and far planes (standard or reversed Z, a far plane
-//!   at infinity allowed). Where reversed or infinite projections put nothing (the far plane at
+//! - `frame_from_images` (one invocation per pixel): a colour image (RGBA32F, RGBA16F as half bits,
+//!   or B10G11R11 packed floats) and a depth image copied into buffers become one fragment slot per
+//!   pixel. The depth word is an f32 (R32F, D32) or a 24-bit unorm in the low bits (D24 through its
+//!   depth aspect; the high 8 bits are undefined and ignored). It is either linear (planar view
+//!   depth, as the methods take it) or a depth buffer's value, turned into view depth from the
+//!   projection's near and far planes (standard or reversed Z, a far plane at infinity allowed). Where reversed or infinite projections put nothing (the far plane at
 //!   infinity), the depth is +inf: the background, which every method blends like a surface.
 //! - `frame_front` (one invocation per pixel): the front slot of a multi-layer input as a colour
 //!   (3 words) and a depth (1 word) a pixel, black at infinite depth where a pixel has no slot: the
@@ -13,7 +14,7 @@
 //!   RGBA32F or RGBA16F with alpha 1, ready to copy into the caller's image.
 
 use crate::exec::{Group, Mem};
-use crate::half::{f16_to_f32, f32_to_f16};
+use crate::half::{b10g11r11_to_f32, f16_to_f32, f32_to_f16};
 use crate::wg::for_each_item;
 
 /// `depth_encoding`: planar view depth as it is.
@@ -23,12 +24,19 @@ pub const DEPTH_STANDARD: u32 = 1;
 /// `depth_encoding`: a reversed depth buffer, 1 at the near plane and 0 at the far plane.
 pub const DEPTH_REVERSED: u32 = 2;
 
+/// `depth_format`: the depth word is an f32 (R32F, or D32 through its depth aspect).
+pub const DEPTH_F32: u32 = 0;
+/// `depth_format`: the depth word holds a 24-bit unorm in its low bits (D24 through its depth
+/// aspect, as Vulkan copies it: the high 8 bits undefined).
+pub const DEPTH_UNORM24: u32 = 1;
+
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct FrameIoParams {
     pub width: u32,
     pub height: u32,
-    /// Words a pixel of the colour buffer: 4 (RGBA32F) or 2 (RGBA16F as half bits).
+    /// Words a pixel of the colour buffer: 4 (RGBA32F), 2 (RGBA16F as half bits) or 1 (B10G11R11
+    /// packed floats).
     pub color_words: u32,
     pub depth_encoding: u32,
     /// The projection's near and far planes (scene units; `far` may be +inf), for encoded depths.
@@ -36,7 +44,14 @@ pub struct FrameIoParams {
     pub far: f32,
     /// Slots per pixel of a multi-layer input (`frame_front`).
     pub layers: u32,
-    pub _pad: u32,
+    /// How a depth word holds its value: [`DEPTH_F32`] or [`DEPTH_UNORM24`].
+    pub depth_format: u32,
+}
+
+/// The depth-buffer (or linear) value a depth word holds.
+#[inline]
+pub fn depth_value(p: &FrameIoParams, word: u32) -> f32 {
+    if p.depth_format == DEPTH_UNORM24 { (word & 0xff_ffff) as f32 / 16_777_215.0 } else { f32::from_bits(word) }
 }
 
 /// View depth from a depth-buffer value `d` (NaN outside `[0, 1]`).
@@ -63,7 +78,9 @@ pub fn view_depth(p: &FrameIoParams, d: f32) -> f32 {
 
 #[inline]
 fn load_rgb<M: Mem>(color: &M, p: &FrameIoParams, i: u32) -> [f32; 3] {
-    if p.color_words == 2 {
+    if p.color_words == 1 {
+        b10g11r11_to_f32(color.load(i))
+    } else if p.color_words == 2 {
         let (rg, ba) = (color.load(2 * i), color.load(2 * i + 1));
         [f16_to_f32(rg & 0xffff), f16_to_f32(rg >> 16), f16_to_f32(ba & 0xffff)]
     } else {
@@ -74,7 +91,7 @@ fn load_rgb<M: Mem>(color: &M, p: &FrameIoParams, i: u32) -> [f32; 3] {
 pub fn from_images_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, color: M, depth: M, mut fragments: M, mut counts: M) {
     for_each_item(g, p.width * p.height, |i| {
         let c = load_rgb(&color, p, i);
-        let z = view_depth(p, f32::from_bits(depth.load(i)));
+        let z = view_depth(p, depth_value(p, depth.load(i)));
         fragments.store(4 * i, c[0].to_bits());
         fragments.store(4 * i + 1, c[1].to_bits());
         fragments.store(4 * i + 2, c[2].to_bits());

@@ -5,7 +5,12 @@
 //!   storage buffers (descriptor set 0, bindings in the order listed), the push constants and the
 //!   workgroup memory, and calls the body;
 //! - on the CPU, a `KernelDesc` constant with the same entry name, workgroup size and binding count,
-//!   and a CPU entry that runs the body for one workgroup.
+//!   and a CPU entry that runs the body for one workgroup;
+//! - on the CPU, a module named like the entry point holding `Bindings<B>`: one field per storage
+//!   buffer, named as the kernel declares it. It implements [`KernelBindings`], which names the
+//!   kernel and its push-constant type, so the host dispatches with the bindings by name and typed
+//!   parameters (`dof::backend::RunKernel::run`): a missing, extra or misnamed binding, or the
+//!   parameters of another kernel, is a compile error.
 //!
 //! The host refers to kernels only through these constants, so an entry point name is written once.
 
@@ -29,6 +34,20 @@ pub struct KernelDesc {
     pub shared_bytes: u32,
     /// Runs one workgroup on the CPU.
     pub cpu: fn(&crate::exec::CpuDispatch),
+}
+
+/// A kernel's bindings by name (the `Bindings<B>` that [`kernel!`] generates in the module named
+/// like the entry point): which kernel they belong to, its push constants, and the bindings in
+/// declaration order (binding `i` of descriptor set 0).
+#[cfg(not(target_arch = "spirv"))]
+pub trait KernelBindings<B: Copy> {
+    /// The kernel these bindings belong to.
+    const KERNEL: &'static KernelDesc;
+    /// Its push constants.
+    type Params: bytemuck::Pod;
+    /// The bindings in order, as an array.
+    type InOrder: AsRef<[B]>;
+    fn in_order(&self) -> Self::InOrder;
 }
 
 /// A draw through the graphics pipeline: vertex and fragment entry points reading `bindings`
@@ -173,6 +192,25 @@ macro_rules! kernel {
 
     (@cpu $(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) ($n:expr) $body:ident
         [$($sh_arg:tt)*] [$($ro:ident)*] $($buf:ident)*) => {
+        /// The bindings of the kernel of this name, by name (see [`kernel!`](crate::kernel!)).
+        #[cfg(not(target_arch = "spirv"))]
+        pub mod $entry {
+            #[allow(unused_imports)]
+            use super::*;
+            /// One storage buffer per field, named as the kernel declares it.
+            #[derive(Clone, Copy, Debug, PartialEq)]
+            pub struct Bindings<B> {
+                $(pub $buf: B,)*
+            }
+            impl<B: Copy> $crate::kernel::KernelBindings<B> for Bindings<B> {
+                const KERNEL: &'static $crate::kernel::KernelDesc = &super::$desc;
+                type Params = $params;
+                type InOrder = [B; [$(stringify!($buf)),*].len()];
+                fn in_order(&self) -> Self::InOrder {
+                    [$(self.$buf),*]
+                }
+            }
+        }
         $(#[$doc])*
         #[cfg(not(target_arch = "spirv"))]
         pub const $desc: $crate::kernel::KernelDesc = {

@@ -31,7 +31,7 @@ pub mod tonemap;
 pub mod wg;
 
 #[cfg(not(target_arch = "spirv"))]
-pub use kernel::{DrawDesc, KernelDesc};
+pub use kernel::{DrawDesc, KernelBindings, KernelDesc};
 
 /// Every kernel, in a stable order: the host builds one pipeline for each.
 #[cfg(not(target_arch = "spirv"))]

@@ -1,5 +1,7 @@
 //! Helpers shared by the integration suites.
 
+pub mod renderer;
+
 use dof::backend::{VulkanBackend, VulkanOptions};
 use dof::layers::RgbImage;
 use dof::ops::sort::{SortInput, SortOutput};

@@ -100,3 +100,76 @@ fn a_gltf_scene_is_measured_against_its_accumulation_buffer() {
     let region = |m: &str| report.records.iter().filter(|r| r.method == m).filter_map(|r| r.psnr_masked_db).fold(f64::MIN, f64::max);
     assert!(region("multilayer") > region("gather"), "multilayer {} dB, gather {} dB", region("multilayer"), region("gather"));
 }
+
+/// The evaluation runs every registry method through the generic one-shot path: it gives the
+/// images each method's own one-shot function gives (bit for bit; layered DoF, whose function
+/// plans on the host and whose context plans on the device, to 40 dB), so moving the evaluation
+/// onto the registry changed no figure.
+#[test]
+fn the_generic_path_gives_each_methods_own_image() {
+    use dof::eval::methods::{EvaluatedMethod, MethodInput, Registered, Setting};
+    use dof::layers::RgbImage;
+    use dof::methods::{bokeh, gather, layered, raytrace, ring_gather, splat};
+    use dof::scene::{LayerOptions, builtin, raycast_layers};
+
+    let scene = builtin("simple").unwrap().with_size(96, 54);
+    let lens = scene.lens.thin_lens(&scene.camera).unwrap();
+    let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default()).unwrap();
+    let input = MethodInput::new(ml.layers.clone(), lens, ml.margin);
+    let b = &mut CpuBackend::new();
+    let (front, depth) = (&input.front, &input.depth);
+    let generic =
+        |b: &mut CpuBackend, name: &str, setting: Setting| Registered::named(name).unwrap().run(b, &input, &setting).unwrap().image;
+    let first = |name: &str| Registered::named(name).unwrap().settings(true).remove(0);
+
+    let own: Vec<(&str, Setting, RgbImage)> = vec![
+        ("gather", first("gather"), gather::gather(b, front, depth, &lens, first("gather").value).unwrap().image),
+        (
+            "ring-gather",
+            first("ring-gather"),
+            ring_gather::ring_gather(
+                b,
+                front,
+                depth,
+                &lens,
+                &ring_gather::RingGatherOptions { rings: first("ring-gather").value.unwrap(), ..Default::default() },
+            )
+            .unwrap()
+            .image,
+        ),
+        ("bokeh", first("bokeh"), bokeh::bokeh(b, front, depth, &lens, &Default::default()).unwrap().image),
+        (
+            "multilayer",
+            first("multilayer"),
+            splat::splat(b, &input.layers, &lens, &splat::SplatOptions { merge: splat::Merge::None, ..Default::default() }).unwrap().image,
+        ),
+        (
+            "tiled",
+            first("tiled"),
+            splat::splat(b, &input.layers.front_layer(), &lens, &splat::SplatOptions { merge: splat::Merge::X4, ..Default::default() })
+                .unwrap()
+                .image,
+        ),
+        (
+            "raytrace",
+            first("raytrace"),
+            raytrace::raytrace(
+                b,
+                &input.layers,
+                &lens,
+                &raytrace::RaytraceOptions { spp: first("raytrace").value.unwrap(), ..Default::default() },
+            )
+            .unwrap()
+            .image,
+        ),
+    ];
+    for (name, setting, image) in own {
+        assert!(generic(b, name, setting) == image, "{name}: the evaluation's image differs from the method's own function's");
+    }
+    let setting = first("layered");
+    let options = layered::LayeredOptions { cascaded: true, layers_per_doubling: 2, ..Default::default() };
+    let own = layered::layered(b, &input.layers, &lens, &options).unwrap().image;
+    assert_eq!(setting.label, "cascaded layers/doubling=2");
+    let psnr = dof::metrics::compare(&generic(b, "layered", setting), &own, None).unwrap().psnr_db;
+    assert!(psnr >= 40.0, "layered DoF: the device plan's image is {psnr:.1} dB from the host plan's");
+}

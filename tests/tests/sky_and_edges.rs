@@ -4,7 +4,7 @@
 //! just under the margins measured (printed by each test).
 
 use dof::backend::{Backend, CpuBackend};
-use dof::eval::methods::{EvaluatedMethod, Gather, MethodInput, Setting, Splat};
+use dof::eval::methods::{EvaluatedMethod, MethodInput, Registered, Setting};
 use dof::io::{read_layered_exr, write_exr};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::splat::{SplatOptions, splat};
@@ -37,9 +37,9 @@ fn layers(name: &str, lens: &ThinLens, guard_band: GuardBand) -> MultiLayerImage
 fn run(backend: &mut dyn Backend, ml: &MultiLayerImage, lens: ThinLens) -> [RgbImage; 3] {
     let input = MethodInput::new(ml.layers.clone(), lens, ml.margin);
     let first = |m: &dyn EvaluatedMethod| -> Setting { m.settings(false).into_iter().next().unwrap() };
-    let g = Gather.run(backend, &input, &Setting { label: "max-radius=48".into(), value: Some(48) }).unwrap();
-    let single = Splat { multi_layer: false };
-    let multi = Splat { multi_layer: true };
+    let g = Registered::named("gather").unwrap().run(backend, &input, &Setting { label: "max-radius=48".into(), value: Some(48) }).unwrap();
+    let single = Registered::named("tiled").unwrap();
+    let multi = Registered::named("multilayer").unwrap();
     let s = single.run(backend, &input, &Setting { value: Some(0), ..first(&single) }).unwrap();
     let m = multi.run(backend, &input, &first(&multi)).unwrap();
     [g.image, s.image, m.image].map(|i| input.crop(&i))
@@ -137,7 +137,8 @@ fn vulkan_renders_sky_and_edges_like_the_cpu() {
         };
         let worst = relative(&cpu, &gpu);
         assert!(worst < 1e-5, "{name}: multi-layer splatting differs between the backends by {worst} (relative)");
-        let gathered = |b: &mut dyn Backend| Gather.run(b, &input, &Setting { label: String::new(), value: Some(48) }).unwrap().image;
+        let gather = Registered::named("gather").unwrap();
+        let gathered = |b: &mut dyn Backend| gather.run(b, &input, &Setting { label: String::new(), value: Some(48) }).unwrap().image;
         let worst = relative(&gathered(&mut CpuBackend::new()), &gathered(&mut vk));
         assert!(worst < 1e-4, "{name}: gather differs by {worst} (relative)");
         dof_tests::assert_clean(&mut vk);

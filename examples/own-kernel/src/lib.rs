@@ -5,8 +5,8 @@
 //! - Vulkan: [`add_to`] hands this crate's SPIR-V ([`MODULES`], compiled by build.rs) to
 //!   [`dof::VulkanBackend::add_modules`]; from then on the backend dispatches the kernel like its own.
 
-use dof::backend::{Backend, push_words};
-use own_kernel_shaders::{HISTOGRAM, HistogramParams};
+use dof::backend::{Backend, RunKernel};
+use own_kernel_shaders::{HistogramParams, histogram as histogram_kernel};
 
 include!(concat!(env!("OUT_DIR"), "/own_modules.rs"));
 
@@ -31,7 +31,8 @@ pub fn histogram(backend: &mut dyn Backend, values: &[u32], bins: u32) -> dof::R
         // New buffers start zeroed on both backends: the kernel adds into `counts`.
         let params = HistogramParams { len: values.len() as u32, bins };
         let groups = (values.len() as u32).div_ceil(own_kernel_shaders::THREADS).clamp(1, 256);
-        backend.dispatch(&HISTOGRAM, [groups, 1, 1], &[input, counts], &push_words(&params), "histogram")?;
+        // The bindings by the names the kernel declares (`kernel!` generates `Bindings`).
+        backend.run(histogram_kernel::Bindings { values: input, counts }, [groups, 1, 1], &params, "histogram")?;
         backend.submit()?;
         backend.read_buffer(counts, 0, bins as u64)
     })();
@@ -79,6 +80,6 @@ mod tests {
 
     #[test]
     fn the_table_holds_the_kernel() {
-        assert_eq!(own_modules().iter().map(|(e, _)| *e).collect::<Vec<_>>(), [HISTOGRAM.entry]);
+        assert_eq!(own_modules().iter().map(|(e, _)| *e).collect::<Vec<_>>(), [own_kernel_shaders::HISTOGRAM.entry]);
     }
 }

@@ -3,7 +3,7 @@
 //! barriers (see `dof_shaders::exec`). Buffers are `[AtomicU32]`, so parallel workgroups never alias
 //! mutable memory.
 
-use super::{Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, Limits, check_dispatch};
+use super::{Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageFormat, ImageRef, Limits, check_dispatch};
 use crate::error::{Error, Result};
 use dof_shaders::KernelDesc;
 use dof_shaders::exec::CpuDispatch;
@@ -23,6 +23,17 @@ pub struct CpuBackend {
     times: Vec<CommandTime>,
     counters: BackendCounters,
     budget: Option<u64>,
+    /// The stand-ins for a renderer's images ([`CpuBackend::create_image`]), by handle − 1.
+    images: Vec<Option<CpuImage>>,
+}
+
+/// An image stand-in: its format, full extent and texels, packed as its copies pack them (for a
+/// D24 format the word holds the stencil, or junk, in its high 8 bits, as Vulkan's copy through the
+/// depth aspect may).
+struct CpuImage {
+    format: ImageFormat,
+    extent: [u32; 2],
+    texels: Vec<u32>,
 }
 
 impl Default for CpuBackend {
@@ -51,7 +62,91 @@ impl CpuBackend {
             counters: BackendCounters::default(),
             id: BackendId::fresh(),
             budget: None,
+            images: Vec::new(),
         }
+    }
+
+    /// A stand-in for a renderer's image of `format` and `extent`, zeroed: what image inputs and
+    /// outputs of the frame API are tested with on the CPU. Its [`ImageRef`] is in GENERAL (the
+    /// CPU backend ignores layouts and stages); it holds no device bytes of the backend's.
+    pub fn create_image(&mut self, format: ImageFormat, extent: [u32; 2]) -> Result<ImageRef> {
+        if extent[0] == 0 || extent[1] == 0 {
+            return Err(Error::InvalidArgument(format!("an empty {}x{} image", extent[0], extent[1])));
+        }
+        let words = format.words_per_pixel() * extent[0] as u64 * extent[1] as u64;
+        let slot = self.images.iter().position(Option::is_none).unwrap_or(self.images.len());
+        if slot == self.images.len() {
+            self.images.push(None);
+        }
+        self.images[slot] = Some(CpuImage { format, extent, texels: vec![0; words as usize] });
+        let general = ash::vk::ImageLayout::GENERAL;
+        let (stage, access) = (ash::vk::PipelineStageFlags::empty(), ash::vk::AccessFlags::empty());
+        Ok(ImageRef { handle: slot as u64 + 1, format, extent, layout: general, stage, access, final_layout: general })
+    }
+
+    /// Writes every texel of a stand-in image, packed as its copies pack them (row after row).
+    pub fn write_image(&mut self, image: &ImageRef, texels: &[u32]) -> Result<()> {
+        let img = self.image_mut(image)?;
+        if texels.len() != img.texels.len() {
+            return Err(Error::InvalidArgument(format!("the image holds {} words, {} given", img.texels.len(), texels.len())));
+        }
+        img.texels.copy_from_slice(texels);
+        Ok(())
+    }
+
+    /// Every texel of a stand-in image.
+    pub fn read_image(&self, image: &ImageRef) -> Result<Vec<u32>> {
+        Ok(self.image(image)?.texels.clone())
+    }
+
+    /// Forgets a stand-in image.
+    pub fn destroy_image(&mut self, image: &ImageRef) {
+        if self.image(image).is_ok() {
+            self.images[image.handle as usize - 1] = None;
+        }
+    }
+
+    fn image(&self, image: &ImageRef) -> Result<&CpuImage> {
+        let found = (image.handle as usize).checked_sub(1).and_then(|i| self.images.get(i)).and_then(Option::as_ref);
+        match found {
+            Some(img) if img.format == image.format => Ok(img),
+            Some(img) => Err(Error::InvalidArgument(format!("image {} is {}, described as {}", image.handle, img.format, image.format))),
+            None => {
+                Err(Error::InvalidArgument(format!("unknown image {} (the CPU backend's images come from create_image)", image.handle)))
+            }
+        }
+    }
+
+    fn image_mut(&mut self, image: &ImageRef) -> Result<&mut CpuImage> {
+        self.image(image)?;
+        self.images[image.handle as usize - 1].as_mut().ok_or_else(|| Error::InvalidArgument("unknown image".into()))
+    }
+
+    /// Copies the top-left `image.extent` between a stand-in image and `buffer[offset..]`.
+    fn copy_image(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, into_image: bool, label: &str) -> Result<()> {
+        let what = if into_image { "copy_buffer_to_image" } else { "copy_image_to_buffer" };
+        self.check_image_copy(&image, into_image)?;
+        let start = Instant::now();
+        let per_pixel = image.format.words_per_pixel() as usize;
+        let [w, h] = image.extent;
+        self.range(buffer, offset_words, image.words()).map_err(|e| Error::InvalidArgument(format!("{what} `{label}`: {e}")))?;
+        // Out of its slot while the buffer is borrowed; put back below.
+        let slot = image.handle as usize - 1;
+        let mut img = self.images[slot].take().ok_or_else(|| Error::InvalidArgument("unknown image".into()))?;
+        let range = self.range(buffer, offset_words, image.words())?;
+        let row = img.extent[0] as usize * per_pixel;
+        let span = w as usize * per_pixel;
+        for y in 0..h as usize {
+            let texels = &mut img.texels[y * row..y * row + span];
+            let words = &range[y * span..(y + 1) * span];
+            for (t, b) in texels.iter_mut().zip(words) {
+                if into_image { *t = b.load(Relaxed) } else { b.store(*t, Relaxed) }
+            }
+        }
+        self.images[slot] = Some(img);
+        self.counters.commands += 1;
+        self.times.push(CommandTime { label: label.to_string(), kernel: what, ms: start.elapsed().as_secs_f64() * 1e3 });
+        Ok(())
     }
 
     fn buffer(&self, id: BufferId) -> Result<&[AtomicU32]> {
@@ -89,6 +184,7 @@ impl CpuBackend {
                 panic.downcast_ref::<String>().cloned().or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string())).unwrap_or_default();
             return Err(Error::KernelFault { kernel: kernel.entry, message });
         }
+        self.counters.commands += 1;
         self.times.push(CommandTime { label: label.to_string(), kernel: kernel.entry, ms: start.elapsed().as_secs_f64() * 1e3 });
         Ok(())
     }
@@ -168,6 +264,7 @@ impl Backend for CpuBackend {
     fn fill(&mut self, buffer: BufferId, offset_words: u64, words: u64, value: u32, label: &str) -> Result<()> {
         let start = Instant::now();
         self.range(buffer, offset_words, words)?.par_iter().for_each(|w| w.store(value, Relaxed));
+        self.counters.commands += 1;
         self.times.push(CommandTime { label: label.to_string(), kernel: "fill", ms: start.elapsed().as_secs_f64() * 1e3 });
         Ok(())
     }
@@ -191,6 +288,27 @@ impl Backend for CpuBackend {
         let groups = [a[0].load(Relaxed), a[1].load(Relaxed), a[2].load(Relaxed)];
         check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), push.len())?;
         self.run(kernel, groups, buffers, push, label)
+    }
+
+    fn copy_image_to_buffer(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, label: &str) -> Result<()> {
+        self.copy_image(image, buffer, offset_words, false, label)
+    }
+
+    fn copy_buffer_to_image(&mut self, buffer: BufferId, offset_words: u64, image: ImageRef, label: &str) -> Result<()> {
+        self.copy_image(image, buffer, offset_words, true, label)
+    }
+
+    fn check_image_copy(&self, image: &ImageRef, into_image: bool) -> Result<()> {
+        let what = if into_image { "copy_buffer_to_image" } else { "copy_image_to_buffer" };
+        image.check_copy(into_image, what)?;
+        let have = self.image(image)?.extent;
+        if image.extent[0] > have[0] || image.extent[1] > have[1] {
+            return Err(Error::InvalidArgument(format!(
+                "{what}: the image is {}x{}, described as {}x{}",
+                have[0], have[1], image.extent[0], image.extent[1]
+            )));
+        }
+        Ok(())
     }
 
     fn submit(&mut self) -> Result<Vec<CommandTime>> {
@@ -225,7 +343,15 @@ mod tests {
         cpu.destroy_buffer(args);
         cpu.destroy_buffer(args);
         let c = cpu.counters();
-        let want = BackendCounters { allocations: 3, submissions: 1, readbacks: 1, uploads: 1, device_bytes: 44, peak_device_bytes: 56 };
+        let want = BackendCounters {
+            allocations: 3,
+            submissions: 1,
+            readbacks: 1,
+            uploads: 1,
+            commands: 1,
+            device_bytes: 44,
+            peak_device_bytes: 56,
+        };
         assert_eq!(c, want);
         // After a reset the peak is what is held, and grows again from there.
         cpu.reset_peak_device_bytes();

@@ -9,17 +9,20 @@
 //! dispatch.
 //! `write_buffer` and `read_buffer` act on the host: they first submit anything still recorded.
 //!
-//! Images (the caller's own, on Vulkan) are copied into and out of buffers by `copy_image_to_buffer`
-//! and `copy_buffer_to_image`, recorded like any other command; a backend that has no images refuses
+//! Images (the caller's own on Vulkan; stand-ins made by the CPU backend, [`CpuBackend::create_image`])
+//! are copied into and out of buffers by `copy_image_to_buffer` and `copy_buffer_to_image`, recorded
+//! like any other command; a backend that has no images refuses
 //! them with an error.
 
 use crate::error::{Error, Result};
 use dof_shaders::{DrawDesc, KernelDesc};
 
 pub mod cpu;
+mod run;
 pub mod vulkan;
 
 pub use cpu::CpuBackend;
+pub use run::RunKernel;
 pub use vulkan::{RawDevice, RawOptions, RequiredFeatures, VulkanBackend, VulkanOptions};
 
 /// A buffer of `u32` words owned by a backend.
@@ -86,6 +89,9 @@ pub struct BackendCounters {
     pub readbacks: u64,
     /// `write_buffer` calls that wrote something (past the argument checks).
     pub uploads: u64,
+    /// Commands recorded: `fill`, `dispatch`, `dispatch_indirect`, `draw_indirect` and image
+    /// copies (on Vulkan into the backend's command buffer or the caller's; on the CPU, run).
+    pub commands: u64,
     /// Bytes of the buffers the backend owns now (`4 · words` of each live `create_buffer` buffer;
     /// imports, staging and draw targets excluded).
     pub device_bytes: u64,
@@ -112,6 +118,7 @@ impl BackendCounters {
             submissions: self.submissions - earlier.submissions,
             readbacks: self.readbacks - earlier.readbacks,
             uploads: self.uploads - earlier.uploads,
+            commands: self.commands - earlier.commands,
             device_bytes: self.device_bytes,
             peak_device_bytes: self.peak_device_bytes,
         }
@@ -146,14 +153,39 @@ pub enum ImageFormat {
     /// `R16G16B16A16_SFLOAT`: 2 words a pixel, the IEEE half bits of R in the low and G in the high
     /// half of the first word, B and A likewise in the second (a kernel converts them).
     Rgba16Float,
+    /// `B10G11R11_UFLOAT_PACK32`: 1 word a pixel, R an 11-bit float in bits 0–10, G one in bits
+    /// 11–21, B a 10-bit float in bits 22–31 (a kernel converts them).
+    B10G11R11Ufloat,
+    /// `D32_SFLOAT`, a depth attachment, copied through its depth aspect: 1 word a pixel, f32 bits.
+    D32Float,
+    /// `D24_UNORM_S8_UINT`, copied through its depth aspect: 1 word a pixel, the 24-bit unorm depth
+    /// in the low bits, the high 8 bits undefined (Vulkan leaves them so; the kernel ignores them).
+    D24UnormS8Uint,
+    /// `X8_D24_UNORM_PACK32`, copied through its depth aspect: as [`ImageFormat::D24UnormS8Uint`].
+    X8D24UnormPack32,
 }
 
 impl ImageFormat {
+    /// Every format, for look-ups and error messages.
+    pub const ALL: [ImageFormat; 7] = [
+        ImageFormat::Rgba32Float,
+        ImageFormat::R32Float,
+        ImageFormat::Rgba16Float,
+        ImageFormat::B10G11R11Ufloat,
+        ImageFormat::D32Float,
+        ImageFormat::D24UnormS8Uint,
+        ImageFormat::X8D24UnormPack32,
+    ];
+
     pub fn words_per_pixel(self) -> u64 {
         match self {
             ImageFormat::Rgba32Float => 4,
-            ImageFormat::R32Float => 1,
             ImageFormat::Rgba16Float => 2,
+            ImageFormat::R32Float
+            | ImageFormat::B10G11R11Ufloat
+            | ImageFormat::D32Float
+            | ImageFormat::D24UnormS8Uint
+            | ImageFormat::X8D24UnormPack32 => 1,
         }
     }
 
@@ -164,28 +196,64 @@ impl ImageFormat {
             ImageFormat::Rgba32Float => Format::R32G32B32A32_SFLOAT,
             ImageFormat::R32Float => Format::R32_SFLOAT,
             ImageFormat::Rgba16Float => Format::R16G16B16A16_SFLOAT,
+            ImageFormat::B10G11R11Ufloat => Format::B10G11R11_UFLOAT_PACK32,
+            ImageFormat::D32Float => Format::D32_SFLOAT,
+            ImageFormat::D24UnormS8Uint => Format::D24_UNORM_S8_UINT,
+            ImageFormat::X8D24UnormPack32 => Format::X8_D24_UNORM_PACK32,
         }
     }
+
+    /// Whether it is a depth attachment's format (copied through the depth aspect).
+    pub fn is_depth(self) -> bool {
+        matches!(self, ImageFormat::D32Float | ImageFormat::D24UnormS8Uint | ImageFormat::X8D24UnormPack32)
+    }
+
+    /// Whether a depth word holds a 24-bit unorm in its low bits (else an f32).
+    pub fn is_unorm24(self) -> bool {
+        matches!(self, ImageFormat::D24UnormS8Uint | ImageFormat::X8D24UnormPack32)
+    }
+
+    /// The aspect a copy reads or writes.
+    pub fn copy_aspect(self) -> ash::vk::ImageAspectFlags {
+        if self.is_depth() { ash::vk::ImageAspectFlags::DEPTH } else { ash::vk::ImageAspectFlags::COLOR }
+    }
+
+    /// The aspects a layout transition names: depth and stencil together for a format with both
+    /// (required without `separateDepthStencilLayouts`).
+    pub fn layout_aspects(self) -> ash::vk::ImageAspectFlags {
+        match self {
+            ImageFormat::D24UnormS8Uint => ash::vk::ImageAspectFlags::DEPTH | ash::vk::ImageAspectFlags::STENCIL,
+            other => other.copy_aspect(),
+        }
+    }
+}
+
+impl std::fmt::Display for ImageFormat {
+    /// The Vulkan name (`D32_SFLOAT`).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{:?}", self.vk_format())
+    }
+}
+
+/// `formats` as Vulkan names, for error messages.
+pub(crate) fn format_names(formats: &[ImageFormat]) -> String {
+    formats.iter().map(|f| f.to_string()).collect::<Vec<_>>().join(", ")
 }
 
 impl TryFrom<ash::vk::Format> for ImageFormat {
     type Error = Error;
     /// The image format of a Vulkan format, or an error naming the formats there are.
     fn try_from(format: ash::vk::Format) -> Result<Self> {
-        [ImageFormat::Rgba32Float, ImageFormat::R32Float, ImageFormat::Rgba16Float]
-            .into_iter()
-            .find(|f| f.vk_format() == format)
-            .ok_or_else(|| {
-                Error::InvalidArgument(format!(
-                    "images of {format:?} cannot be copied; the formats are R32G32B32A32_SFLOAT, R16G16B16A16_SFLOAT and R32_SFLOAT"
-                ))
-            })
+        ImageFormat::ALL.into_iter().find(|f| f.vk_format() == format).ok_or_else(|| {
+            Error::InvalidArgument(format!("images of {format:?} cannot be copied; the formats are {}", format_names(&ImageFormat::ALL)))
+        })
     }
 }
 
 /// A 2D image the caller owns, and the synchronisation state it is in, for `copy_image_to_buffer`
-/// and `copy_buffer_to_image`. The state is in Vulkan terms (the only backend with images); the copy
-/// covers mip level 0, array layer 0, colour aspect, the whole `extent`.
+/// and `copy_buffer_to_image`. The state is in Vulkan terms (the CPU backend's stand-ins ignore it); the copy
+/// covers mip level 0, array layer 0, the colour aspect (the depth aspect of a depth format), and
+/// the top-left `extent` of the image, which may be larger.
 ///
 /// The backend records a barrier from (`layout`, `stage`, `access`) to the transfer layout, the copy,
 /// and a barrier from the transfer to `final_layout` that makes the copy visible to every later
@@ -194,7 +262,8 @@ impl TryFrom<ash::vk::Format> for ImageFormat {
 /// stage or access.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ImageRef {
-    /// The raw handle (`vk::Image::as_raw()`); only [`ImageRef::vulkan`] sets it.
+    /// The raw handle (`vk::Image::as_raw()`, set by [`ImageRef::vulkan`]), or the CPU backend's
+    /// stand-in's number.
     pub(crate) handle: u64,
     pub format: ImageFormat,
     /// Width and height in pixels.
@@ -256,6 +325,29 @@ impl ImageRef {
     /// Words the image takes in a buffer.
     pub fn words(&self) -> u64 {
         self.format.words_per_pixel() * self.extent[0] as u64 * self.extent[1] as u64
+    }
+
+    /// The same image, its copies covering only its top-left `width` x `height`.
+    pub fn top_left(self, width: u32, height: u32) -> ImageRef {
+        ImageRef { extent: [width, height], ..self }
+    }
+
+    /// What every backend checks before recording a copy of the image: a non-empty extent and a
+    /// handle, layouts a copy can start from (`into_image`: one may discard the contents) and end
+    /// in. `what` names the copy in the error.
+    pub(crate) fn check_copy(&self, into_image: bool, what: &str) -> Result<()> {
+        let [width, height] = self.extent;
+        if width == 0 || height == 0 || self.handle == 0 {
+            return Err(Error::InvalidArgument(format!("{what}: an empty ({width}x{height}) or null {} image", self.format)));
+        }
+        let bad_final = [ash::vk::ImageLayout::UNDEFINED, ash::vk::ImageLayout::PREINITIALIZED];
+        if bad_final.contains(&self.final_layout) {
+            return Err(Error::InvalidArgument(format!("{what}: the final layout cannot be {:?}", self.final_layout)));
+        }
+        if !into_image && bad_final.contains(&self.layout) {
+            return Err(Error::InvalidArgument(format!("{what}: an image in layout {:?} has no defined contents to copy", self.layout)));
+        }
+        Ok(())
     }
 }
 
@@ -384,13 +476,26 @@ pub trait Backend {
     /// Backends without images refuse it.
     fn copy_image_to_buffer(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, label: &str) -> Result<()> {
         let _ = (image, buffer, offset_words, label);
-        Err(Error::InvalidArgument(format!("the {} backend has no images: copy_image_to_buffer needs the Vulkan backend", self.kind())))
+        Err(Error::InvalidArgument(format!("the {} backend has no images: copy_image_to_buffer needs images of the backend", self.kind())))
     }
     /// Copies `buffer[offset_words ..]` into the whole of `image`; the reverse of
     /// `copy_image_to_buffer`. Backends without images refuse it.
     fn copy_buffer_to_image(&mut self, buffer: BufferId, offset_words: u64, image: ImageRef, label: &str) -> Result<()> {
         let _ = (image, buffer, offset_words, label);
-        Err(Error::InvalidArgument(format!("the {} backend has no images: copy_buffer_to_image needs the Vulkan backend", self.kind())))
+        Err(Error::InvalidArgument(format!("the {} backend has no images: copy_buffer_to_image needs images of the backend", self.kind())))
+    }
+    /// Whether a copy of `image` (into it where `into_image`) would be recorded: the checks of
+    /// [`Backend::copy_image_to_buffer`] and [`Backend::copy_buffer_to_image`] that do not depend on
+    /// the buffer, made before a frame records anything. Backends without images refuse.
+    fn check_image_copy(&self, image: &ImageRef, into_image: bool) -> Result<()> {
+        let _ = (image, into_image);
+        Err(Error::InvalidArgument(format!("the {} backend has no images", self.kind())))
+    }
+    /// Whether a draw of `draw` at `size` would be recorded without making anything: the check of
+    /// [`Backend::draw_indirect`] that does not depend on its buffers (Vulkan: inside a caller's
+    /// recording, the draw target must already cover `size`).
+    fn check_draw_target(&self, _draw: &'static DrawDesc, _size: [u32; 2]) -> Result<()> {
+        Ok(())
     }
     fn submit(&mut self) -> Result<Vec<CommandTime>>;
     /// Whether a frame may be recorded now. A backend on a caller's device records frames only into

@@ -17,6 +17,7 @@ use dof::scene::{
 use dof_shaders::lens::ThinLens;
 use std::path::{Path, PathBuf};
 
+mod exr_pattern;
 mod sequence;
 
 /// What `dof render` makes: the pinhole image, the multi-layer image, a reference, or a frame
@@ -264,9 +265,17 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     if let Some(n) = args.samples.filter(|&n| n == 0 || n > MAX_SAMPLES) {
         bail!("--samples/--spp (samples or rays per pixel) must lie between 1 and {MAX_SAMPLES}, got {n}");
     }
-    let png = out.with_extension("png");
-    // Every file the run reads.
+    // Every file the run reads, and every file it writes.
+    let mut outputs =
+        vec![(out.to_path_buf(), "--out".to_string()), (out.with_extension("png"), "the PNG preview beside --out".to_string())];
     let mut inputs = vec![PathBuf::from(&args.scene)];
+    if exr_pattern::is_pattern(&args.scene) {
+        let files = sequence::exr_frames(args)?;
+        let n = files.len() as u32;
+        outputs.extend((0..n).map(|i| (sequence::frame_path(out, i, n), format!("frame {i} of the sequence (from --out)"))));
+        outputs.push((out.with_extension("gif"), "the GIF preview beside --out".to_string()));
+        inputs = files;
+    }
     let lower = args.scene.to_ascii_lowercase();
     if lower.ends_with(".gltf") || lower.ends_with(".glb") {
         inputs.extend(scene::gltf_external_files(Path::new(&args.scene)));
@@ -275,7 +284,7 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         inputs.push(PathBuf::from(&args.aperture));
     }
     for input in &inputs {
-        for (output, what) in [(out, "--out"), (png.as_path(), "the PNG preview beside --out")] {
+        for (output, what) in &outputs {
             if same_file(input, output) {
                 bail!("{what} ({}) would overwrite the input {}; choose another --out", output.display(), input.display());
             }
@@ -357,11 +366,16 @@ fn check_sequence(args: &RenderArgs) -> anyhow::Result<()> {
         (args.aperture_radius_to.is_some(), "--aperture-radius-to"),
         (args.f_number_to.is_some(), "--f-number-to"),
     ];
-    if let Some((_, flag)) = moves.iter().find(|(given, _)| *given).filter(|_| args.frames.is_none()) {
-        bail!("{flag} moves the shot over a sequence: give --frames N");
+    let sequence = args.frames.is_some() || exr_pattern::is_pattern(&args.scene);
+    if let Some((_, flag)) = moves.iter().find(|(given, _)| *given).filter(|_| !sequence) {
+        bail!("{flag} moves the shot over a sequence: give --frames N (or an EXR sequence such as shot-####.exr)");
     }
-    if args.frames.is_some() && args.scene.to_ascii_lowercase().ends_with(".exr") {
-        bail!("--frames renders built-in and glTF scenes; an EXR sequence is named by a pattern such as shot-####.exr");
+    let exr = args.scene.to_ascii_lowercase().ends_with(".exr");
+    if args.frames.is_some() && exr && !exr_pattern::is_pattern(&args.scene) {
+        bail!("--frames on one EXR: name an EXR sequence by a pattern such as shot-####.exr (its frames are the files that match)");
+    }
+    if args.orbit.is_some() && exr {
+        bail!("--orbit turns the camera of a built-in or glTF scene; an EXR has no geometry to turn");
     }
     Ok(())
 }
@@ -420,7 +434,11 @@ const MAX_EDGE: u32 = 65536;
 use super::MAX_SAMPLES;
 
 pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
-    let name = Path::new(&args.scene).file_stem().and_then(|s| s.to_str()).unwrap_or("scene").to_string();
+    let name = if exr_pattern::is_pattern(&args.scene) {
+        exr_pattern::stem(&args.scene)
+    } else {
+        Path::new(&args.scene).file_stem().and_then(|s| s.to_str()).unwrap_or("scene").to_string()
+    };
     let method = args.method.name();
     let out = args.out.clone().unwrap_or_else(|| PathBuf::from(format!("out/{name}-{method}.exr")));
     if out.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() != Some("exr") {
@@ -440,6 +458,9 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let lower = args.scene.to_ascii_lowercase();
     if lower.ends_with(".gltf") || lower.ends_with(".glb") {
         return render_gltf(args, out);
+    }
+    if exr_pattern::is_pattern(&args.scene) {
+        return sequence::render_exr_sequence(args, out);
     }
     let (layers, report) = read_layered_exr(&args.scene)?;
     if report.total() > 0 {
@@ -486,6 +507,12 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
 /// The lens for an EXR, which carries no camera: `--focus` and `--f-number` or `--aperture-radius`
 /// are required; the field of view (`--yfov`, default 40 degrees) and sensor height give the scale.
 fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens> {
+    let (camera, settings) = exr_camera(args, layers)?;
+    settings.thin_lens(&camera).with_context(|| lens_flags(args))
+}
+
+/// The camera and lens settings of an EXR from the lens flags (see [`exr_lens`]).
+fn exr_camera(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<(Camera, LensSettings)> {
     let aperture = match (args.f_number, args.aperture_radius) {
         (Some(n), _) => Some(Aperture::FNumber(n)),
         (_, Some(r)) => Some(Aperture::Radius(r)),
@@ -494,7 +521,7 @@ fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens
     let (camera, mut settings) = exr_view(layers, args.focus, aperture, args.yfov)?;
     settings.focal_length_mm = args.focal_length;
     settings.sensor_height_mm = args.sensor_height;
-    settings.thin_lens(&camera).with_context(|| lens_flags(args))
+    Ok((camera, settings))
 }
 
 /// The camera and lens settings of an EXR (it has neither): at the origin looking down -Z with
@@ -603,7 +630,7 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         lens.far_limit_px()
     );
     if args.frames.is_some() {
-        let shots = sequence::shots(args, &camera, &settings, &lens)?;
+        let shots = sequence::shots(args, args.frames.unwrap_or(1), &camera, &settings, &lens)?;
         return sequence::render_sequence(args, out, sequence::Source::Builtin(&builtin.scene), &shots);
     }
     let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, ..Default::default() };
@@ -714,7 +741,7 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     );
     if args.frames.is_some() {
         let settings = lens_settings(args, mesh.lens_focused_at(&camera, args.focus)?);
-        let shots = sequence::shots(args, &camera, &settings, &lens)?;
+        let shots = sequence::shots(args, args.frames.unwrap_or(1), &camera, &settings, &lens)?;
         return sequence::render_sequence(args, out, sequence::Source::Gltf { mesh: &mesh, near }, &shots);
     }
     let mut b = backend(args.backend)?;

@@ -1,16 +1,18 @@
-//! The methods the evaluation knows (each with its sweep of settings), behind one trait
-//! ([`EvaluatedMethod`], not to be confused with the frame API's `frame::MethodInfo`): adding one means adding it to
-//! [`evaluated_methods`]; the evaluation code itself does not change.
+//! The methods the evaluation (and `dof stress`) runs: the pinhole image, then every method of the
+//! frame API's registry ([`crate::frame::METHODS`]) through the one generic one-shot path, each
+//! with the settings the evaluation sweeps ([`sweep_points`]). A method added to the registry is
+//! evaluated with its default options without any change here; an entry in [`sweep_points`] adds
+//! a sweep of its knobs.
 
 use crate::backend::{Backend, CommandTime};
 use crate::error::Result;
+use crate::frame::registry::{self, METHODS};
+use crate::frame::{LayeredOptions, MethodInfo, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
 use crate::layers::{LayeredImage, RgbImage};
-use crate::methods::bokeh::{BokehOptions, bokeh};
-use crate::methods::gather::{MAX_RADIUS, gather};
-use crate::methods::layered::{LayeredOptions, layered};
-use crate::methods::raytrace::{RaytraceOptions, raytrace};
-use crate::methods::ring_gather::{DEFAULT_RINGS, RingGatherOptions, ring_gather};
-use crate::methods::splat::{Merge, SplatOptions, splat};
+use crate::methods::gather::MAX_RADIUS;
+use crate::methods::one_shot::one_shot;
+use crate::methods::ring_gather::DEFAULT_RINGS;
+use crate::methods::splat::Merge;
 use dof_shaders::lens::ThinLens;
 use std::collections::BTreeMap;
 
@@ -86,237 +88,160 @@ impl EvaluatedMethod for Pinhole {
     }
 }
 
-fn radius_setting(r: u32) -> Setting {
-    Setting { label: format!("max-radius={r}"), value: Some(r) }
-}
-
-/// The gathering baseline; its knob is the largest CoC radius honoured.
-pub struct Gather;
-
-impl EvaluatedMethod for Gather {
-    fn name(&self) -> &'static str {
-        "gather"
-    }
-    fn uses_backend(&self) -> bool {
-        true
-    }
-    fn settings(&self, quick: bool) -> Vec<Setting> {
-        let radii: &[u32] = if quick { &[1, 4] } else { &[1, 4, MAX_RADIUS] };
-        radii.iter().map(|&r| radius_setting(r)).collect()
-    }
-    fn sweep_setting(&self) -> Option<Setting> {
-        Some(radius_setting(MAX_RADIUS))
-    }
-    fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput> {
-        let out = gather(backend, &input.front, &input.depth, &input.lens, setting.value)?;
-        let figures = BTreeMap::from([("radius_px".to_string(), out.radius as f64), ("buffer_bytes".to_string(), out.buffer_bytes as f64)]);
-        Ok(MethodOutput { image: out.image, stages: out.times, figures, list_histogram: Vec::new() })
-    }
-}
-
-fn rings_setting(rings: u32) -> Setting {
-    Setting { label: format!("rings={rings}"), value: Some(rings) }
-}
-
-/// The engine-grade gather (after AMD FidelityFX DoF, Unreal Engine's Diaphragm DoF and Jimenez
-/// 2014); its knob is the ring count, its default what engines ship ([`DEFAULT_RINGS`]).
-pub struct RingGather;
-
-impl EvaluatedMethod for RingGather {
-    fn name(&self) -> &'static str {
-        "ring-gather"
-    }
-    fn uses_backend(&self) -> bool {
-        true
-    }
-    fn settings(&self, quick: bool) -> Vec<Setting> {
-        let rings: &[u32] = if quick { &[2, DEFAULT_RINGS] } else { &[1, 2, 3, DEFAULT_RINGS, 8] };
-        rings.iter().map(|&r| rings_setting(r)).collect()
-    }
-    fn sweep_setting(&self) -> Option<Setting> {
-        Some(rings_setting(DEFAULT_RINGS))
-    }
-    fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput> {
-        let options = RingGatherOptions { rings: setting.value.unwrap_or(DEFAULT_RINGS), ..Default::default() };
-        let out = ring_gather(backend, &input.front, &input.depth, &input.lens, &options)?;
-        let figures = BTreeMap::from([
-            ("samples_per_half_pixel".to_string(), out.samples as f64),
-            ("buffer_bytes".to_string(), out.buffer_bytes as f64),
-        ]);
-        Ok(MethodOutput { image: out.image, stages: out.times, figures, list_histogram: Vec::new() })
-    }
-}
-
 /// The splatting settings the evaluation sweeps: merge level and tile size. The tile sweep runs
 /// merged, where lists are short (unmerged 32-pixel tiles take over 10 s a run on lavapipe), and
 /// for the multi-layer method only.
 pub const SPLAT_POINTS: [(Merge, u32); 5] = [(Merge::None, 16), (Merge::X2, 16), (Merge::X4, 16), (Merge::X4, 24), (Merge::X4, 32)];
 
-fn splat_setting(index: usize) -> Setting {
-    let (merge, tile) = SPLAT_POINTS[index];
-    Setting { label: format!("merge={} tile={tile}", merge.name()), value: Some(index as u32) }
-}
-
-/// Tiled splatting: single-layer (`tiled`, Selgrad, Franke, Stamminger 2016) on the front layer or
-/// multi-layer (`multilayer`, Franke, Hofmann, Stamminger, Selgrad 2018); the knobs are the merge level and the tile size, one of
-/// [`SPLAT_POINTS`] (a setting's `value` is its index there).
-pub struct Splat {
-    pub multi_layer: bool,
-}
-
-impl EvaluatedMethod for Splat {
-    fn name(&self) -> &'static str {
-        if self.multi_layer { "multilayer" } else { "tiled" }
-    }
-    fn uses_backend(&self) -> bool {
-        true
-    }
-    fn settings(&self, quick: bool) -> Vec<Setting> {
-        // Single-layer splatting shares the pipeline; it runs merged only (its unmerged lists cost
-        // lavapipe 5.8 s a run on `simple`, like the multi-layer method's, and three minutes of the
-        // full evaluation), the merge and tile sweeps are the multi-layer method's.
-        let points: &[usize] = if !self.multi_layer {
-            &[2]
-        } else if quick {
-            &[0, 2]
-        } else {
-            &[0, 1, 2, 3, 4]
-        };
-        points.iter().map(|&i| splat_setting(i)).collect()
-    }
-    /// The multi-layer method, merged as a renderer would run it (unmerged lists grow with the
-    /// square of the CoC); single-layer splatting costs the same pipeline and is left out.
-    fn sweep_setting(&self) -> Option<Setting> {
-        self.multi_layer.then(|| splat_setting(2))
-    }
-    fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput> {
-        let (merge, tile) = SPLAT_POINTS[setting.value.unwrap_or(0) as usize % SPLAT_POINTS.len()];
-        let options = SplatOptions { merge, tile, ..Default::default() };
-        let layers = if self.multi_layer { input.layers.clone() } else { input.layers.front_layer() };
-        let out = splat(backend, &layers, &input.lens, &options)?;
-        let r = &out.report;
-        let figures = BTreeMap::from([
-            ("mean_list_length".to_string(), r.mean_list_length()),
-            ("max_list_length".to_string(), r.max_list_length() as f64),
-            ("fragments".to_string(), r.fragments as f64),
-            ("copied_tiles".to_string(), r.copy_tiles as f64),
-            ("rings".to_string(), r.plan.as_ref().map_or(0.0, |p| p.rings as f64)),
-            ("buffer_bytes".to_string(), r.buffer_bytes as f64),
-            ("tile_px".to_string(), tile as f64),
-            ("merge_steps".to_string(), merge.steps() as f64),
-        ]);
-        Ok(MethodOutput { image: out.image, stages: out.stages, figures, list_histogram: r.list_histogram() })
-    }
-}
-
-/// Thin-lens ray tracing through the multi-layer image; the knob is rays per pixel.
-pub struct Raytrace;
-
-impl EvaluatedMethod for Raytrace {
-    fn name(&self) -> &'static str {
-        "raytrace"
-    }
-    fn uses_backend(&self) -> bool {
-        true
-    }
-    fn settings(&self, quick: bool) -> Vec<Setting> {
-        // 64 spp (another 1.5 dB on `simple`, 5 s a run on lavapipe) is left out to keep the full
-        // evaluation within 20 minutes on lavapipe.
-        let spp: &[u32] = if quick { &[4, 16] } else { &[16, 32] };
-        spp.iter().map(|&n| Setting { label: format!("spp={n}"), value: Some(n) }).collect()
-    }
-    fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput> {
-        let options = RaytraceOptions { spp: setting.value.unwrap_or(16), ..Default::default() };
-        let out = raytrace(backend, &input.layers, &input.lens, &options)?;
-        let figures = BTreeMap::from([
-            ("missed_ray_share".to_string(), out.missed_rays as f64 / out.rays.max(1) as f64),
-            ("hierarchy_levels".to_string(), out.levels as f64),
-            ("buffer_bytes".to_string(), out.buffer_bytes as f64),
-        ]);
-        Ok(MethodOutput { image: out.image, stages: out.times, figures, list_histogram: Vec::new() })
-    }
-}
-
-/// Layered DoF with matting (Schedl, Wimmer 2012); the knobs are the blur (cascaded or one per layer) and the
-/// layers per doubling of the CoC.
-pub struct Layered;
-
 /// The layered settings: (cascaded, layers per doubling).
 const LAYERED_POINTS: [(bool, u32); 4] = [(true, 1), (true, 2), (false, 1), (false, 2)];
 
+fn setting(label: String, value: u32) -> Setting {
+    Setting { label, value: Some(value) }
+}
+
+fn splat_setting(index: usize) -> Setting {
+    let (merge, tile) = SPLAT_POINTS[index];
+    setting(format!("merge={} tile={tile}", merge.name()), index as u32)
+}
+
 fn layered_setting(index: usize) -> Setting {
     let (cascaded, per) = LAYERED_POINTS[index];
-    Setting { label: format!("{} layers/doubling={per}", if cascaded { "cascaded" } else { "separate" }), value: Some(index as u32) }
+    setting(format!("{} layers/doubling={per}", if cascaded { "cascaded" } else { "separate" }), index as u32)
 }
 
-impl EvaluatedMethod for Layered {
+/// What the evaluation sweeps of one registry method: its settings (`quick` keeps one or two), the
+/// one timed in the max-CoC sweep (Franke et al. 2018, Fig. 13), and the options a setting means.
+pub struct SweepPoints {
+    pub settings: fn(quick: bool) -> Vec<Setting>,
+    pub sweep: Option<fn() -> Setting>,
+    pub options: fn(&Setting) -> MethodOptions,
+}
+
+/// The sweep of the registry method `name`; `None` for a method the evaluation runs once with its
+/// defaults. Each entry says why its points were chosen.
+pub fn sweep_points(name: &str) -> Option<SweepPoints> {
+    let points = match name {
+        // The gathering baseline; its knob is the largest CoC radius honoured.
+        "gather" => SweepPoints {
+            settings: |quick| {
+                let radii: &[u32] = if quick { &[1, 4] } else { &[1, 4, MAX_RADIUS] };
+                radii.iter().map(|&r| setting(format!("max-radius={r}"), r)).collect()
+            },
+            sweep: Some(|| setting(format!("max-radius={MAX_RADIUS}"), MAX_RADIUS)),
+            options: |s| MethodOptions { gather_max_radius: s.value, ..Default::default() },
+        },
+        // The engine-grade gather: its knob is the ring count, its default what engines ship.
+        "ring-gather" => SweepPoints {
+            settings: |quick| {
+                let rings: &[u32] = if quick { &[2, DEFAULT_RINGS] } else { &[1, 2, 3, DEFAULT_RINGS, 8] };
+                rings.iter().map(|&r| setting(format!("rings={r}"), r)).collect()
+            },
+            sweep: Some(|| setting(format!("rings={DEFAULT_RINGS}"), DEFAULT_RINGS)),
+            options: |s| MethodOptions {
+                ring_gather: RingGatherOptions { rings: s.value.unwrap_or(DEFAULT_RINGS), ..Default::default() },
+                ..Default::default()
+            },
+        },
+        // Multi-layer splatting: the merge level and the tile size, one of [`SPLAT_POINTS`] (a
+        // setting's `value` is its index there), timed merged as a renderer would run it (unmerged
+        // lists grow with the square of the CoC).
+        "multilayer" => SweepPoints {
+            settings: |quick| {
+                let points: &[usize] = if quick { &[0, 2] } else { &[0, 1, 2, 3, 4] };
+                points.iter().map(|&i| splat_setting(i)).collect()
+            },
+            sweep: Some(|| splat_setting(2)),
+            options: splat_options,
+        },
+        // Single-layer splatting shares the pipeline; it runs merged only (its unmerged lists cost
+        // lavapipe 5.8 s a run on `simple`, like the multi-layer method's, and three minutes of the
+        // full evaluation), and stays out of the max-CoC sweep, which times the same pipeline.
+        "tiled" => SweepPoints { settings: |_| vec![splat_setting(2)], sweep: None, options: splat_options },
+        // Rays per pixel. 64 spp (another 1.5 dB on `simple`, 5 s a run on lavapipe) is left out to
+        // keep the full evaluation within 20 minutes on lavapipe.
+        "raytrace" => SweepPoints {
+            settings: |quick| {
+                let spp: &[u32] = if quick { &[4, 16] } else { &[16, 32] };
+                spp.iter().map(|&n| setting(format!("spp={n}"), n)).collect()
+            },
+            sweep: None,
+            options: |s| MethodOptions {
+                raytrace: RaytraceOptions { spp: s.value.unwrap_or(16), ..Default::default() },
+                ..Default::default()
+            },
+        },
+        // Cascaded or one blur per layer, and layers per doubling of the CoC. One layer per
+        // doubling costs about as much on these scenes and loses up to 1.3 dB (`columns`); left out
+        // to keep the evaluation within 20 minutes on lavapipe.
+        "layered" => SweepPoints {
+            settings: |_| [1, 3].iter().map(|&i| layered_setting(i)).collect(),
+            sweep: Some(|| layered_setting(1)),
+            options: |s| {
+                let (cascaded, layers_per_doubling) = LAYERED_POINTS[s.value.unwrap_or(1) as usize % LAYERED_POINTS.len()];
+                MethodOptions { layered: LayeredOptions { cascaded, layers_per_doubling, ..Default::default() }, ..Default::default() }
+            },
+        },
+        // Bokeh sprites: thresholds of 1 and 8 measured the same on every built-in scene; one
+        // keeps the evaluation within 20 minutes. (The default threshold is 1.)
+        "bokeh" => {
+            SweepPoints { settings: |_| vec![setting("lum-threshold=1".into(), 1)], sweep: None, options: |_| MethodOptions::default() }
+        }
+        _ => return None,
+    };
+    Some(points)
+}
+
+fn splat_options(s: &Setting) -> MethodOptions {
+    let (merge, tile) = SPLAT_POINTS[s.value.unwrap_or(0) as usize % SPLAT_POINTS.len()];
+    MethodOptions { splat: SplatOptions { merge, tile, ..Default::default() }, ..Default::default() }
+}
+
+/// A registry method, evaluated through the one-shot path ([`one_shot`]) with the settings of
+/// [`sweep_points`]. Its figures are its context's report figures, plus `buffer_bytes` (the
+/// context's device bytes with its frame's buffers) and, for the splatting methods, `tile_px` and
+/// `merge_steps`.
+pub struct Registered(pub &'static MethodInfo);
+
+impl Registered {
+    /// The registry method called `name`.
+    pub fn named(name: &str) -> Result<Self> {
+        Ok(Registered(registry::method(name)?))
+    }
+
+    fn options(&self, setting: &Setting) -> MethodOptions {
+        sweep_points(self.0.name).map_or_else(MethodOptions::default, |p| (p.options)(setting))
+    }
+}
+
+impl EvaluatedMethod for Registered {
     fn name(&self) -> &'static str {
-        "layered"
+        self.0.name
     }
     fn uses_backend(&self) -> bool {
         true
     }
-    fn settings(&self, _quick: bool) -> Vec<Setting> {
-        // One layer per doubling costs about as much on these scenes and loses up to 1.3 dB
-        // (`columns`); left out of the evaluation to keep it within 20 minutes on lavapipe.
-        [1, 3].iter().map(|&i| layered_setting(i)).collect()
+    fn settings(&self, quick: bool) -> Vec<Setting> {
+        sweep_points(self.0.name).map_or_else(|| vec![Setting { label: "default".into(), value: None }], |p| (p.settings)(quick))
     }
     fn sweep_setting(&self) -> Option<Setting> {
-        Some(layered_setting(1))
+        sweep_points(self.0.name).and_then(|p| p.sweep).map(|s| s())
     }
     fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput> {
-        let (cascaded, layers_per_doubling) = LAYERED_POINTS[setting.value.unwrap_or(1) as usize % LAYERED_POINTS.len()];
-        let options = LayeredOptions { cascaded, layers_per_doubling, ..Default::default() };
-        let out = layered(backend, &input.layers, &input.lens, &options)?;
-        let figures = BTreeMap::from([
-            ("layers".to_string(), out.plan.cocs.len() as f64),
-            ("layers_used".to_string(), out.plan.used_layers() as f64),
-            ("blurs".to_string(), out.blurs as f64),
-            ("widest_blur_radius".to_string(), out.widest_radius as f64),
-            ("buffer_bytes".to_string(), out.buffer_bytes as f64),
-        ]);
-        Ok(MethodOutput { image: out.image, stages: out.times, figures, list_histogram: Vec::new() })
+        let options = self.options(setting);
+        let out = one_shot(backend, self.0, &options, &input.layers, &input.lens)?;
+        let mut figures = out.report.figures;
+        figures.insert("buffer_bytes".into(), out.buffer_bytes as f64);
+        if self.0.tiles {
+            figures.insert("tile_px".into(), options.splat.tile as f64);
+            figures.insert("merge_steps".into(), options.splat.merge.steps() as f64);
+        }
+        Ok(MethodOutput { image: out.image, stages: out.stages, figures, list_histogram: out.report.list_histogram })
     }
 }
 
-/// Bokeh sprites over a gather (de Rousiers, Pettineo 2012); the knob is the luminance threshold.
-pub struct Bokeh;
-
-impl EvaluatedMethod for Bokeh {
-    fn name(&self) -> &'static str {
-        "bokeh"
-    }
-    fn uses_backend(&self) -> bool {
-        true
-    }
-    fn settings(&self, _quick: bool) -> Vec<Setting> {
-        // Thresholds of 1 and 8 measured the same on every built-in scene; one keeps the evaluation
-        // within 20 minutes.
-        vec![Setting { label: "lum-threshold=1".into(), value: Some(1) }]
-    }
-    fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput> {
-        let options = BokehOptions { lum_threshold: setting.value.unwrap_or(1) as f32, ..Default::default() };
-        let out = bokeh(backend, &input.front, &input.depth, &input.lens, &options)?;
-        let figures = BTreeMap::from([
-            ("sprites".to_string(), (out.detected - out.overflow) as f64),
-            ("sprites_over_capacity".to_string(), out.overflow as f64),
-            ("radius_px".to_string(), out.blur_radius as f64),
-            ("buffer_bytes".to_string(), out.buffer_bytes as f64),
-        ]);
-        Ok(MethodOutput { image: out.image, stages: out.times, figures, list_histogram: Vec::new() })
-    }
-}
-
-/// Every method the evaluation runs, in report order.
+/// Every method the evaluation runs, in report order: the pinhole image, then the registry's.
 pub fn evaluated_methods() -> Vec<Box<dyn EvaluatedMethod>> {
-    vec![
-        Box::new(Pinhole),
-        Box::new(Gather),
-        Box::new(RingGather),
-        Box::new(Bokeh),
-        Box::new(Splat { multi_layer: false }),
-        Box::new(Splat { multi_layer: true }),
-        Box::new(Layered),
-        Box::new(Raytrace),
-    ]
+    let registered = METHODS.iter().map(|m| Box::new(Registered(m)) as Box<dyn EvaluatedMethod>);
+    std::iter::once(Box::new(Pinhole) as Box<dyn EvaluatedMethod>).chain(registered).collect()
 }

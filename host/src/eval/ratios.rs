@@ -6,7 +6,7 @@
 //! Both methods run at their sweep setting from [`super::methods`], through the same one-shot path
 //! as `dof eval` (a warm-up run, then the median of the timed runs of the kernels' times).
 
-use super::methods::{EvaluatedMethod, MethodInput, RingGather, Splat};
+use super::methods::{EvaluatedMethod, MethodInput, Registered};
 use super::timed;
 use crate::backend::Backend;
 use crate::error::{Error, Result};
@@ -95,8 +95,8 @@ pub fn ratios(options: &RatioOptions, backends: &mut [Box<dyn Backend>]) -> Resu
                 }
                 Ok(t)
             };
-            let multilayer = measure(&Splat { multi_layer: true })?;
-            let ring_gather = measure(&RingGather)?;
+            let multilayer = measure(&Registered::named("multilayer")?)?;
+            let ring_gather = measure(&Registered::named("ring-gather")?)?;
             let ratio = multilayer.time_ms / ring_gather.time_ms;
             rows.push(RatioRow {
                 scene: name.clone(),

@@ -98,9 +98,10 @@ pub struct Record {
     pub flip: f64,
     pub flip_masked: Option<f64>,
     pub runs: usize,
-    /// Method-specific figures: `mean_list_length`, `max_list_length`, `fragments` (entering
-    /// tiling), `copied_tiles`, `rings`, `buffer_bytes` for the splatting methods; `radius_px` for
-    /// gather.
+    /// Method-specific figures: its context's report figures (`mean_list_length`,
+    /// `max_list_length`, `copy_tiles`, ... for the splatting methods, `radius_px` for the gathers),
+    /// `buffer_bytes` (the context and its frame's buffers), and `tile_px` and `merge_steps` for
+    /// the splatting methods.
     pub figures: BTreeMap<String, f64>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub list_histogram: Vec<(u32, u32)>,

@@ -4,15 +4,18 @@
 //! pipeline on Vulkan, its compute fallback on the CPU) and the sum. Nothing is planned or read
 //! back on the host.
 
+use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::gather::{MAX_RADIUS, record_gather};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, ready, record_front, record_input, record_output};
 use crate::aperture::ApertureShape;
-use crate::backend::{Backend, BufferId, groups_for, push_words};
+use crate::backend::{Backend, BufferId, RunKernel, groups_for, push_words};
 use crate::error::{Error, Result};
 use crate::ops::scan::ScanScratch;
-use dof_shaders::bokeh::{ARGS_WORDS, BOKEH_ARGS, BOKEH_COMBINE, BOKEH_DETECT, BOKEH_DRAW, BOKEH_EMIT, BokehParams, COUNTER, SPRITE_WORDS};
-use dof_shaders::gather::{GATHER, GATHER_PLAN};
+use dof_shaders::bokeh::{
+    ARGS_WORDS, BOKEH_DETECT, BOKEH_DRAW, BokehParams, COUNTER, SPRITE_WORDS, bokeh_args, bokeh_combine, bokeh_detect, bokeh_emit,
+};
+use dof_shaders::gather::{GATHER, GATHER_PLAN, gather};
 
 #[derive(Clone, Debug)]
 pub struct BokehOptions {
@@ -164,8 +167,13 @@ impl BokehContext {
     }
 
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
+        record_checked(self, backend, f, Self::commands)
+    }
+
+    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
         let b = &self.b;
         let (width, height) = (f.width, f.height);
         let pixels = width as u64 * height as u64;
@@ -187,13 +195,15 @@ impl BokehContext {
         let push = push_words(&params);
         let groups = groups_for(&BOKEH_DETECT, pixels);
         backend.fill(b.counters, 0, ARGS_WORDS as u64 + 1, 0, "bokeh/detect")?;
-        backend.dispatch(&BOKEH_DETECT, groups, &[b.color, b.depth, b.slots, b.counters], &push, "bokeh/detect")?;
+        let detect = bokeh_detect::Bindings { color: b.color, depth: b.depth, flags: b.slots, counters: b.counters };
+        backend.run(detect, groups, &params, "bokeh/detect")?;
         self.scan.record(backend, b.slots, 0, pixels)?;
-        backend.dispatch(&BOKEH_EMIT, groups, &[b.color, b.depth, b.slots, b.sprites, b.rest, b.mask], &push, "bokeh/detect")?;
-        record_gather(backend, f, MAX_RADIUS, [b.rest, b.depth, b.blur, b.radius])?;
-        backend.dispatch(&BOKEH_ARGS, [1, 1, 1], &[b.counters], &push, "bokeh/draw")?;
+        let emit = bokeh_emit::Bindings { color: b.color, depth: b.depth, slots: b.slots, sprites: b.sprites, rest: b.rest, mask: b.mask };
+        backend.run(emit, groups, &params, "bokeh/detect")?;
+        record_gather(backend, f, MAX_RADIUS, gather::Bindings { color: b.rest, depth: b.depth, out: b.blur, plan: b.radius })?;
+        backend.run(bokeh_args::Bindings { counters: b.counters }, [1, 1, 1], &params, "bokeh/draw")?;
         backend.draw_indirect(&BOKEH_DRAW, b.counters, &[b.sprites, b.mask], b.sprite_image, [width, height], &push, "bokeh/draw")?;
-        backend.dispatch(&BOKEH_COMBINE, groups, &[b.blur, b.sprite_image, out], &push, "bokeh/draw")?;
+        backend.run(bokeh_combine::Bindings { blur: b.blur, sprites: b.sprite_image, out }, groups, &params, "bokeh/draw")?;
         record_output(backend, f, self.io.as_ref())
     }
 

@@ -105,7 +105,9 @@ pub trait DofContext {
     fn extent(&self) -> Extent;
     /// Records one frame of any size within [`DofContext::extent`] into the backend's current
     /// command buffer: no allocation, readback or submission. Refused on another backend than the
-    /// one that made the context.
+    /// one that made the context. Every check runs before the first command is recorded (each
+    /// command is checked first by a dry run, `frame::checked`): a refused frame leaves the
+    /// command buffer as it was.
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()>;
     /// What the last recorded frame did and left out (reads the device: call once it completed).
     fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport>;

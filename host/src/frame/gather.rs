@@ -1,11 +1,12 @@
 //! The gathering baseline (Riguer et al. 2003) as a frame context: the window radius reduced on the
 //! device from the frame's depths, so nothing is planned on the host.
 
+use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
-use crate::backend::{Backend, BufferId, groups_for, push_words};
+use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
-use dof_shaders::gather::{GATHER, GATHER_PLAN, GatherParams, TILE};
+use dof_shaders::gather::{GATHER, GATHER_PLAN, GatherParams, TILE, gather, gather_plan};
 
 /// The scanned window is `2 r + 1` pixels wide: beyond this radius the gather's cost (quadratic in
 /// it) belongs to a reduced-resolution path, which this baseline does not have.
@@ -30,16 +31,15 @@ impl GatherContextDesc {
     }
 }
 
-/// Records the window radius's reduction over `depth` into `plan` (zeroed first), then the gather
-/// of `[color, depth, output, plan]` with radii capped at `cap`.
-pub(crate) fn record_gather(backend: &mut dyn Backend, f: &Frame, cap: u32, bufs: [BufferId; 4]) -> Result<()> {
-    let [_, depth, _, plan] = bufs;
-    let params = push_words(&GatherParams { width: f.width, height: f.height, max_radius: cap, _pad: 0, lens: f.lens });
-    backend.fill(plan, 0, 1, 0, "gather/plan")?;
+/// Records the window radius's reduction over `b.depth` into `b.plan` (zeroed first), then the
+/// gather with radii capped at `cap`.
+pub(crate) fn record_gather(backend: &mut dyn Backend, f: &Frame, cap: u32, b: gather::Bindings<BufferId>) -> Result<()> {
+    let params = GatherParams { width: f.width, height: f.height, max_radius: cap, _pad: 0, lens: f.lens };
+    backend.fill(b.plan, 0, 1, 0, "gather/plan")?;
     let pixel_groups = groups_for(&GATHER_PLAN, f.width as u64 * f.height as u64);
-    backend.dispatch(&GATHER_PLAN, pixel_groups, &[depth, plan], &params, "gather/plan")?;
+    backend.run(gather_plan::Bindings { depth: b.depth, plan: b.plan }, pixel_groups, &params, "gather/plan")?;
     let groups = [f.width.div_ceil(TILE), f.height.div_ceil(TILE), 1];
-    backend.dispatch(&GATHER, groups, &bufs, &params, "gather")
+    backend.run(b, groups, &params, "gather")
 }
 
 /// A gathering context (see the [module docs](crate::frame)).
@@ -85,12 +85,17 @@ impl GatherContext {
 
     /// Records one frame: the front layer of the input, the radius reduction, the gather.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
-        let d = &self.desc;
-        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
+        check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
+        record_checked(self, backend, f, Self::commands)
+    }
+
+    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let slots = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         record_front(backend, f, slots, self.color, self.depth)?;
-        record_gather(backend, f, self.cap, [self.color, self.depth, output, self.plan])?;
+        let bindings = gather::Bindings { color: self.color, depth: self.depth, out: output, plan: self.plan };
+        record_gather(backend, f, self.cap, bindings)?;
         record_output(backend, f, self.io.as_ref())
     }
 

@@ -4,7 +4,9 @@
 use super::context::Extent;
 use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, groups_for, push_words};
 use crate::error::{Error, Result};
-use dof_shaders::frame_io::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, FROM_IMAGES, FRONT, FrameIoParams, TO_RGBA};
+use dof_shaders::frame_io::{
+    DEPTH_F32, DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FROM_IMAGES, FRONT, FrameIoParams, TO_RGBA,
+};
 use dof_shaders::lens::ThinLens;
 
 /// How a depth image encodes depth.
@@ -26,9 +28,11 @@ pub enum FrameInput {
     /// `layers` slots of 4 words (red, green, blue, depth as f32 bits), front to back, and
     /// `counts` the slots used per pixel (one word each).
     Layers { fragments: BufferId, counts: BufferId, layers: u32 },
-    /// The caller's colour (RGBA32F or RGBA16F) and depth (R32F) images: one layer. They are
-    /// copied into the context's buffers (needs a context created with `image_io`) and left in the
-    /// layouts their [`ImageRef`]s name.
+    /// The caller's colour and depth images, one layer: colour RGBA32F, RGBA16F or B10G11R11, depth
+    /// a depth attachment as it is (D32, D24 with stencil, X8_D24; read through its depth aspect,
+    /// with a `Standard` or `Reversed` encoding) or R32F (any encoding). They are copied into the
+    /// context's buffers (needs a context created with `image_io`), the top-left frame-sized part of
+    /// images that may be larger, and left in the layouts their [`ImageRef`]s name.
     Images { color: ImageRef, depth: ImageRef, encoding: DepthEncoding },
 }
 
@@ -37,8 +41,8 @@ pub enum FrameInput {
 pub enum FrameOutput {
     /// 3 words (f32 red, green, blue) a pixel, row-major; written whole.
     Buffer(BufferId),
-    /// The caller's RGBA32F or RGBA16F image (alpha 1), left in its `final_layout` (needs a
-    /// context created with `image_io`).
+    /// The caller's RGBA32F or RGBA16F image (alpha 1), its top-left frame-sized part written, left
+    /// in its `final_layout` (needs a context created with `image_io`).
     Image(ImageRef),
 }
 
@@ -68,11 +72,17 @@ impl Frame {
     }
 }
 
-/// Colour formats an image input or output may have.
-const COLOR_FORMATS: [ImageFormat; 2] = [ImageFormat::Rgba32Float, ImageFormat::Rgba16Float];
+/// Formats a colour input may have.
+const COLOR_FORMATS: [ImageFormat; 3] = [ImageFormat::Rgba32Float, ImageFormat::Rgba16Float, ImageFormat::B10G11R11Ufloat];
+/// Formats a depth input may have.
+const DEPTH_FORMATS: [ImageFormat; 4] =
+    [ImageFormat::D32Float, ImageFormat::D24UnormS8Uint, ImageFormat::X8D24UnormPack32, ImageFormat::R32Float];
+/// Formats an image output may have.
+const OUTPUT_FORMATS: [ImageFormat; 2] = [ImageFormat::Rgba32Float, ImageFormat::Rgba16Float];
 
 /// Checks what every context checks: a non-empty size within the maximum, a valid lens, buffers
-/// large enough, images of the frame's size and a supported format, sane depth planes.
+/// large enough, images at least of the frame's size, of a supported format, that the backend can
+/// copy, sane depth planes. (The commands themselves are checked by [`super::checked`].)
 pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: Extent, io: Option<&ImageIo>) -> Result<()> {
     owned.check(backend)?;
     backend.check_frame_recording()?;
@@ -97,7 +107,14 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
             buffers.extend([("fragments", fragments, 4 * pixels * layers as u64), ("counts", counts, pixels)])
         }
         FrameInput::Images { color, depth, encoding } => {
-            images.extend([("colour", color, COLOR_FORMATS.as_slice()), ("depth", depth, &[ImageFormat::R32Float])]);
+            images.extend([("colour", color, COLOR_FORMATS.as_slice(), false), ("depth", depth, DEPTH_FORMATS.as_slice(), false)]);
+            if depth.format.is_depth() && encoding == DepthEncoding::Linear {
+                return Err(Error::InvalidArgument(format!(
+                    "a {} depth attachment holds depth-buffer values in [0, 1]: give its planes with DepthEncoding::Standard \
+                     or Reversed (Linear is for R32F images of view depth)",
+                    depth.format
+                )));
+            }
             if let DepthEncoding::Standard { near, far } | DepthEncoding::Reversed { near, far } = encoding
                 && !(near.is_finite() && near > 0.0 && far > near)
             {
@@ -109,7 +126,7 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
     }
     match f.output {
         FrameOutput::Buffer(out) => buffers.push(("output", out, 3 * pixels)),
-        FrameOutput::Image(out) => images.push(("output", out, COLOR_FORMATS.as_slice())),
+        FrameOutput::Image(out) => images.push(("output", out, OUTPUT_FORMATS.as_slice(), true)),
     }
     for (what, id, words) in buffers {
         let have = backend.buffer_words(id)?;
@@ -120,16 +137,21 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
     if !images.is_empty() && io.is_none() {
         return Err(Error::InvalidArgument("image inputs and outputs need a context created with `image_io`".into()));
     }
-    for (what, image, formats) in images {
+    for (what, image, formats, into_image) in images {
         if !formats.contains(&image.format) {
-            return Err(Error::InvalidArgument(format!("the {what} image is {:?}; it must be one of {formats:?}", image.format)));
-        }
-        if image.extent != [f.width, f.height] {
             return Err(Error::InvalidArgument(format!(
-                "the {what} image is {}x{}, the frame {}x{}",
+                "the {what} image is {}; it must be one of {}",
+                image.format,
+                crate::backend::format_names(formats)
+            )));
+        }
+        if image.extent[0] < f.width || image.extent[1] < f.height {
+            return Err(Error::InvalidArgument(format!(
+                "the {what} image is {}x{}, smaller than the {}x{} frame",
                 image.extent[0], image.extent[1], f.width, f.height
             )));
         }
+        backend.check_image_copy(&image.top_left(f.width, f.height), into_image)?;
     }
     Ok(())
 }
@@ -246,13 +268,17 @@ impl ImageIo {
     }
 }
 
-fn io_params(f: &Frame, color_words: u32, layers: u32, encoding: DepthEncoding) -> Vec<u32> {
+/// The parameters of the frame I/O kernels: `color` and `depth` are the images' formats, where
+/// the frame has them.
+fn io_params(f: &Frame, color: Option<ImageFormat>, depth: Option<ImageFormat>, layers: u32, encoding: DepthEncoding) -> Vec<u32> {
     let (depth_encoding, near, far) = match encoding {
         DepthEncoding::Linear => (DEPTH_LINEAR, 0.0, 0.0),
         DepthEncoding::Standard { near, far } => (DEPTH_STANDARD, near, far),
         DepthEncoding::Reversed { near, far } => (DEPTH_REVERSED, near, far),
     };
-    push_words(&FrameIoParams { width: f.width, height: f.height, color_words, depth_encoding, near, far, layers, _pad: 0 })
+    let color_words = color.map_or(0, |c| c.words_per_pixel() as u32);
+    let depth_format = if depth.is_some_and(ImageFormat::is_unorm24) { DEPTH_UNORM24 } else { DEPTH_F32 };
+    push_words(&FrameIoParams { width: f.width, height: f.height, color_words, depth_encoding, near, far, layers, depth_format })
 }
 
 /// Records what brings the frame's input into slot buffers: nothing for buffers, the copies and
@@ -261,9 +287,11 @@ pub(crate) fn record_input(backend: &mut dyn Backend, f: &Frame, io: Option<&Ima
     match (f.input, io) {
         (FrameInput::Layers { fragments, counts, .. }, _) => Ok((fragments, counts)),
         (FrameInput::Images { color, depth, encoding }, Some(io)) => {
-            backend.copy_image_to_buffer(color, io.color, 0, "frame/input-color")?;
-            backend.copy_image_to_buffer(depth, io.depth, 0, "frame/input-depth")?;
-            let params = io_params(f, color.format.words_per_pixel() as u32, 1, encoding);
+            // Copies through the context's buffers: depth formats are rarely storage images, and
+            // the kernels read buffers on both backends (docs/integration.md has the cost).
+            backend.copy_image_to_buffer(color.top_left(f.width, f.height), io.color, 0, "frame/input-color")?;
+            backend.copy_image_to_buffer(depth.top_left(f.width, f.height), io.depth, 0, "frame/input-depth")?;
+            let params = io_params(f, Some(color.format), Some(depth.format), 1, encoding);
             let groups = groups_for(&FROM_IMAGES, f.width as u64 * f.height as u64);
             backend.dispatch(&FROM_IMAGES, groups, &[io.color, io.depth, io.fragments, io.counts], &params, "frame/input")?;
             Ok((io.fragments, io.counts))
@@ -281,7 +309,7 @@ pub(crate) fn record_front(
     color: BufferId,
     depth: BufferId,
 ) -> Result<()> {
-    let params = io_params(f, 0, f.layer_count(), DepthEncoding::Linear);
+    let params = io_params(f, None, None, f.layer_count(), DepthEncoding::Linear);
     let groups = groups_for(&FRONT, f.width as u64 * f.height as u64);
     backend.dispatch(&FRONT, groups, &[slots.0, slots.1, color, depth], &params, "frame/front")
 }
@@ -299,10 +327,10 @@ pub(crate) fn output_buffer(f: &Frame, io: Option<&ImageIo>) -> Result<BufferId>
 /// Records what brings an RGB result into an image output: the conversion and the copy.
 pub(crate) fn record_output(backend: &mut dyn Backend, f: &Frame, io: Option<&ImageIo>) -> Result<()> {
     if let (FrameOutput::Image(image), Some(io)) = (f.output, io) {
-        let params = io_params(f, image.format.words_per_pixel() as u32, 1, DepthEncoding::Linear);
+        let params = io_params(f, Some(image.format), None, 1, DepthEncoding::Linear);
         let groups = groups_for(&TO_RGBA, f.width as u64 * f.height as u64);
         backend.dispatch(&TO_RGBA, groups, &[io.fragments, io.color], &params, "frame/output")?;
-        backend.copy_buffer_to_image(io.color, 0, image, "frame/output")?;
+        backend.copy_buffer_to_image(io.color, 0, image.top_left(f.width, f.height), "frame/output")?;
     }
     Ok(())
 }

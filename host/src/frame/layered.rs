@@ -24,14 +24,15 @@
 //! by composing the cascade's Gaussians (each truncated at 3σ) instead of merging them; the
 //! layered suite measures how much.
 
+use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_input, record_output};
-use crate::backend::{Backend, BufferId, groups_for, push_words};
+use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::layered::{
-    ALWAYS, LAYERED_BLUR_GATED, LAYERED_COMPOSITE_GATED, LAYERED_MATTE_AT, LAYERED_PLAN_BEGIN, LAYERED_PLAN_END, LAYERED_PLAN_REACH,
-    LAYERED_RESOLVE, LayeredParams, LayeredPlanParams, OVER, PLAN_COCS, PLAN_FAR_GATE, PLAN_LAYERS, PLAN_NEAR_GATE, PLAN_STATS, PLAN_USED,
-    PLAN_WORDS, UNDER,
+    ALWAYS, LAYERED_MATTE_AT, LAYERED_PLAN_REACH, LayeredParams, LayeredPlanParams, OVER, PLAN_COCS, PLAN_FAR_GATE, PLAN_LAYERS,
+    PLAN_NEAR_GATE, PLAN_STATS, PLAN_USED, PLAN_WORDS, UNDER, layered_blur_gated, layered_composite_gated, layered_matte_at,
+    layered_plan_begin, layered_plan_end, layered_plan_reach, layered_resolve,
 };
 
 /// Layered DoF's settings; all fixed at creation (the candidate layers and blur weights follow
@@ -270,8 +271,13 @@ impl LayeredContext {
     /// Records one frame: the composites cleared, the device plan, the fixed schedule of gated
     /// mattes, blurs and composites, the normalisation.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
+        record_checked(self, backend, f, Self::commands)
+    }
+
+    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
         let (input, counts) = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         let b = &self.passes;
@@ -289,16 +295,10 @@ impl LayeredContext {
             lens: f.lens,
             ..Default::default()
         };
-        let plan_params = push_words(&plan);
-        backend.dispatch(&LAYERED_PLAN_BEGIN, [1, 1, 1], &[b.plan], &plan_params, "layered/plan")?;
-        backend.dispatch(
-            &LAYERED_PLAN_REACH,
-            groups_for(&LAYERED_PLAN_REACH, pixels),
-            &[input, counts, b.plan],
-            &plan_params,
-            "layered/plan",
-        )?;
-        backend.dispatch(&LAYERED_PLAN_END, [1, 1, 1], &[b.plan], &plan_params, "layered/plan")?;
+        backend.run(layered_plan_begin::Bindings { plan: b.plan }, [1, 1, 1], &plan, "layered/plan")?;
+        let reach = layered_plan_reach::Bindings { input, counts, plan: b.plan };
+        backend.run(reach, groups_for(&LAYERED_PLAN_REACH, pixels), &plan, "layered/plan")?;
+        backend.run(layered_plan_end::Bindings { plan: b.plan }, [1, 1, 1], &plan, "layered/plan")?;
         let base =
             LayeredParams { width: f.width, height: f.height, max_layers: f.layer_count(), layers, gate: ALWAYS, ..Default::default() };
         // Every layered kernel runs one item a pixel with the same workgroup size.
@@ -312,27 +312,24 @@ impl LayeredContext {
             match *op {
                 Op::Matte(k) => {
                     let p = LayeredParams { layer: k, gate: PLAN_USED + k, ..base };
-                    backend.dispatch(&LAYERED_MATTE_AT, groups, &[input, counts, b.plan, b.layer], &push_words(&p), "layered/matte")?;
+                    let matte = layered_matte_at::Bindings { input, counts, plan: b.plan, layer: b.layer };
+                    backend.run(matte, groups, &p, "layered/matte")?;
                 }
                 Op::Blur { buf, weights_at, radius, gate } => {
                     let h = LayeredParams { radius, weights_at, mode: 0, gate, ..base };
                     let v = LayeredParams { mode: 1, ..h };
-                    backend.dispatch(&LAYERED_BLUR_GATED, groups, &[id(buf), b.weights, b.tmp, b.plan], &push_words(&h), "layered/blur")?;
-                    backend.dispatch(&LAYERED_BLUR_GATED, groups, &[b.tmp, b.weights, id(buf), b.plan], &push_words(&v), "layered/blur")?;
+                    let across = layered_blur_gated::Bindings { src: id(buf), weights: b.weights, dst: b.tmp, plan: b.plan };
+                    backend.run(across, groups, &h, "layered/blur")?;
+                    backend.run(layered_blur_gated::Bindings { src: b.tmp, dst: id(buf), ..across }, groups, &v, "layered/blur")?;
                 }
                 Op::Composite { layer, acc, mode, gate } => {
                     let p = LayeredParams { mode, gate, ..base };
-                    backend.dispatch(
-                        &LAYERED_COMPOSITE_GATED,
-                        groups,
-                        &[id(layer), id(acc), b.plan],
-                        &push_words(&p),
-                        "layered/composite",
-                    )?;
+                    let composite = layered_composite_gated::Bindings { layer: id(layer), acc: id(acc), plan: b.plan };
+                    backend.run(composite, groups, &p, "layered/composite")?;
                 }
             }
         }
-        backend.dispatch(&LAYERED_RESOLVE, groups, &[b.far, output], &push_words(&base), "layered/composite")?;
+        backend.run(layered_resolve::Bindings { acc: b.far, out: output }, groups, &base, "layered/composite")?;
         record_output(backend, f, self.io.as_ref())
     }
 

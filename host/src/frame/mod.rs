@@ -34,6 +34,7 @@
 //! oracle the context is tested against).
 
 pub mod bokeh;
+mod checked;
 pub mod context;
 pub mod gather;
 pub mod io;

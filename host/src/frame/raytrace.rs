@@ -10,14 +10,18 @@
 //! neighbouring pixels do not share one noise pattern. Both backends get the same buffer, so both
 //! trace the same rays.
 
+use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_input, record_output};
-use crate::backend::{Backend, BufferId, groups_for, push_words};
+use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 // The sampler is a leaf module of pure functions (the reference renderer's), shared so that the
 // traced rays are stratified the same way.
 use crate::scene::sampling::{concentric_disc, pixel_rng, stratified};
-use dof_shaders::raytrace::{MAX_LEVELS, RT_BASE, RT_REDUCE, RT_TRACE, STATS_WORDS, TILE, TraceParams, level_offsets, levels_for};
+use dof_shaders::raytrace::{
+    MAX_LEVELS, RT_BASE, RT_REDUCE, STATS_WORDS, TILE, TraceParams, level_offsets, levels_for, raytrace_base, raytrace_reduce,
+    raytrace_trace,
+};
 
 /// Rays per pixel at most.
 pub const MAX_SPP: u32 = 4096;
@@ -94,23 +98,21 @@ pub fn trace_params(
     (params, cells)
 }
 
-/// Records the hierarchy and the trace of one frame over `input` and `counts` into `out`, counting
-/// missed rays into `stats` (cleared first): what the one-shot function and the context both run.
-pub(crate) fn record_trace(
-    backend: &mut dyn Backend,
-    params: &TraceParams,
-    [input, counts, hier, samples, out, stats]: [BufferId; 6],
-) -> Result<()> {
+/// Records the hierarchy and the trace of one frame over `b.input` and `b.counts` into `b.out`,
+/// counting missed rays into `b.stats` (cleared first): what the one-shot function and the context
+/// both run.
+pub(crate) fn record_trace(backend: &mut dyn Backend, params: &TraceParams, b: raytrace_trace::Bindings<BufferId>) -> Result<()> {
     let pixels = params.width as u64 * params.height as u64;
-    backend.fill(stats, 0, STATS_WORDS as u64, 0, "raytrace/stats")?;
-    backend.dispatch(&RT_BASE, groups_for(&RT_BASE, pixels), &[input, counts, hier], &push_words(params), "raytrace/hierarchy")?;
+    backend.fill(b.stats, 0, STATS_WORDS as u64, 0, "raytrace/stats")?;
+    let base = raytrace_base::Bindings { input: b.input, counts: b.counts, hier: b.hier };
+    backend.run(base, groups_for(&RT_BASE, pixels), params, "raytrace/hierarchy")?;
     for level in 1..params.levels {
         let p = TraceParams { level, ..*params };
         let (w, h) = dof_shaders::raytrace::level_size(&p, level);
-        backend.dispatch(&RT_REDUCE, groups_for(&RT_REDUCE, w as u64 * h as u64), &[hier], &push_words(&p), "raytrace/hierarchy")?;
+        backend.run(raytrace_reduce::Bindings { hier: b.hier }, groups_for(&RT_REDUCE, w as u64 * h as u64), &p, "raytrace/hierarchy")?;
     }
     let tiles = [params.width.div_ceil(TILE), params.height.div_ceil(TILE), 1];
-    backend.dispatch(&RT_TRACE, tiles, &[input, counts, hier, samples, out, stats], &push_words(params), "raytrace/trace")
+    backend.run(b, tiles, params, "raytrace/trace")
 }
 
 /// What a ray-tracing context is created for.
@@ -197,12 +199,18 @@ impl RaytraceContext {
 
     /// Records one frame: the missed-ray count cleared, the hierarchy, the trace.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
+        record_checked(self, backend, f, Self::commands)
+    }
+
+    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
-        check_frame(backend, f, &self.owned, d.extent(), self.io.as_ref())?;
         let (input, counts) = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
         let (params, _) = trace_params(f.width, f.height, f.layer_count(), &d.options, f.lens);
-        record_trace(backend, &params, [input, counts, self.hier, self.samples, output, self.stats])?;
+        let trace = raytrace_trace::Bindings { input, counts, hier: self.hier, samples: self.samples, out: output, stats: self.stats };
+        record_trace(backend, &params, trace)?;
         self.last = (f.width as u64 * f.height as u64, params.levels);
         record_output(backend, f, self.io.as_ref())
     }

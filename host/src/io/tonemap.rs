@@ -87,8 +87,8 @@ mod tests {
     /// clamped values.
     #[test]
     fn the_display_kernel_is_the_tone_map() {
-        use crate::backend::{Backend, CpuBackend, push_words};
-        use dof_shaders::tonemap::{DISPLAY, DisplayParams, MODE_LINEAR, MODE_TONEMAP};
+        use crate::backend::{Backend, CpuBackend, RunKernel};
+        use dof_shaders::tonemap::{DisplayParams, MODE_LINEAR, MODE_TONEMAP, display_tonemap};
         let values = [0.0, 1e-6, 0.002, 0.18, 0.5, 1.0, 2.0, 7.3, 1e5, f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -0.5, -0.0];
         let pixels: Vec<[f32; 3]> = values.iter().map(|&v| [v, v * 0.5, -v]).collect();
         let words: Vec<u32> = pixels.iter().flat_map(|p| p.map(f32::to_bits)).collect();
@@ -99,7 +99,7 @@ mod tests {
         b.write_buffer(rgb, 0, &words).unwrap();
         for (mode, exposure) in [(MODE_TONEMAP, 1.0), (MODE_TONEMAP, 2.5), (MODE_LINEAR, 1.0)] {
             let params = DisplayParams { width: n, height: 1, mode, exposure };
-            b.dispatch(&DISPLAY, [1, 1, 1], &[rgb, rgba], &push_words(&params), "display").unwrap();
+            b.run(display_tonemap::Bindings { rgb, rgba }, [1, 1, 1], &params, "display").unwrap();
             b.submit().unwrap();
             let got = b.read_buffer(rgba, 0, 4 * n as u64).unwrap();
             for (p, out) in pixels.iter().zip(got.as_chunks::<4>().0) {

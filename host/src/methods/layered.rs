@@ -20,12 +20,13 @@
 //! - **Normalisation**: the composite is divided by its alpha.
 
 use super::buffers::{groups_for, read_rgb, slot_words};
-use crate::backend::{Backend, BufferId, CommandTime, push_words, with_buffers};
+use crate::backend::{Backend, BufferId, CommandTime, RunKernel, with_buffers};
 use crate::error::{Error, Result};
 use crate::frame::layered::{gaussian, sigma};
 use crate::layers::{LayeredImage, RgbImage};
 use dof_shaders::layered::{
-    LAYERED_BLUR, LAYERED_COMPOSITE, LAYERED_MATTE, LAYERED_RESOLVE, LayeredParams, OVER, SLOT_WORDS, UNDER, matte_front, matte_hidden,
+    LAYERED_MATTE, LayeredParams, OVER, SLOT_WORDS, UNDER, layered_blur, layered_composite, layered_matte, layered_resolve, matte_front,
+    matte_hidden,
 };
 use dof_shaders::lens::ThinLens;
 
@@ -276,23 +277,23 @@ pub fn layered(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens,
             match *op {
                 Op::Matte(k) => {
                     let p = LayeredParams { anchors: plan.anchors_of(k), ..base };
-                    backend.dispatch(&LAYERED_MATTE, groups, &[input_buf, counts, layer], &push_words(&p), "layered/matte")?;
+                    backend.run(layered_matte::Bindings { input: input_buf, counts, layer }, groups, &p, "layered/matte")?;
                 }
                 Op::Blur(buf, s) if s >= MIN_SIGMA => {
                     let Some(&(weights_at, radius)) = blur_params.next() else { continue };
                     let h = LayeredParams { radius, weights_at, mode: 0, ..base };
                     let v = LayeredParams { mode: 1, ..h };
-                    backend.dispatch(&LAYERED_BLUR, groups, &[id(buf), weights_buf, tmp], &push_words(&h), "layered/blur")?;
-                    backend.dispatch(&LAYERED_BLUR, groups, &[tmp, weights_buf, id(buf)], &push_words(&v), "layered/blur")?;
+                    backend.run(layered_blur::Bindings { src: id(buf), weights: weights_buf, dst: tmp }, groups, &h, "layered/blur")?;
+                    backend.run(layered_blur::Bindings { src: tmp, weights: weights_buf, dst: id(buf) }, groups, &v, "layered/blur")?;
                 }
                 Op::Blur(..) => {}
                 Op::Composite { layer: l, acc, mode } => {
                     let p = LayeredParams { mode, ..base };
-                    backend.dispatch(&LAYERED_COMPOSITE, groups, &[id(l), id(acc)], &push_words(&p), "layered/composite")?;
+                    backend.run(layered_composite::Bindings { layer: id(l), acc: id(acc) }, groups, &p, "layered/composite")?;
                 }
             }
         }
-        backend.dispatch(&LAYERED_RESOLVE, groups, &[far, out], &push_words(&base), "layered/composite")?;
+        backend.run(layered_resolve::Bindings { acc: far, out }, groups, &base, "layered/composite")?;
         let times = backend.submit()?;
         Ok(LayeredOutput {
             image: read_rgb(backend, out, width, height)?,

@@ -12,6 +12,7 @@ use crate::error::{Error, Result};
 use crate::frame::raytrace::{record_trace, trace_params};
 use crate::layers::{LayeredImage, RgbImage};
 use dof_shaders::lens::ThinLens;
+use dof_shaders::raytrace::raytrace_trace;
 use dof_shaders::raytrace::{SLOT_WORDS, STATS_WORDS};
 
 pub use crate::frame::raytrace::{MAX_PATTERNS, MAX_SPP, RaytraceOptions, lens_samples};
@@ -65,7 +66,8 @@ pub fn raytrace(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens
         backend.write_buffer(input_buf, 0, &input)?;
         backend.write_buffer(counts, 0, &image.counts)?;
         backend.write_buffer(samples_buf, 0, &samples)?;
-        record_trace(backend, &params, [input_buf, counts, hier, samples_buf, out, stats])?;
+        let trace = raytrace_trace::Bindings { input: input_buf, counts, hier, samples: samples_buf, out, stats };
+        record_trace(backend, &params, trace)?;
         let times = backend.submit()?;
         let missed = backend.read_buffer(stats, 0, 1)?[0] as u64;
         Ok(RaytraceOutput {

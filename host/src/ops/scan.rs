@@ -1,8 +1,8 @@
 //! Exclusive prefix scan of `u32` words in place, on any backend (kernels in `dof_shaders::scan`).
 
-use crate::backend::{Backend, BufferId, push_words, with_buffers};
+use crate::backend::{Backend, BufferId, RunKernel, with_buffers};
 use crate::error::{Error, Result};
-use dof_shaders::scan::{ADD, BLOCK, BLOCK_SCAN, MAX_GROUPS, ScanParams};
+use dof_shaders::scan::{BLOCK, MAX_GROUPS, ScanParams, scan_add, scan_block};
 
 /// Block-sum buffers for every level of a scan of up to `capacity` words, allocated once and reused
 /// frame after frame.
@@ -86,12 +86,12 @@ impl ScanScratch {
     fn record_level(&self, backend: &mut dyn Backend, data: BufferId, offset: u32, len: u32, level: usize) -> Result<()> {
         let sums = self.levels[level];
         let blocks = len.div_ceil(BLOCK);
-        let params = push_words(&ScanParams { len, data_offset: offset, sums_offset: 0 });
+        let params = ScanParams { len, data_offset: offset, sums_offset: 0 };
         let groups = [blocks.min(MAX_GROUPS), 1, 1];
-        backend.dispatch(&BLOCK_SCAN, groups, &[data, sums], &params, "scan/block")?;
+        backend.run(scan_block::Bindings { data, sums }, groups, &params, "scan/block")?;
         if blocks > 1 {
             self.record_level(backend, sums, 0, blocks, level + 1)?;
-            backend.dispatch(&ADD, groups, &[data, sums], &params, "scan/add")?;
+            backend.run(scan_add::Bindings { data, sums }, groups, &params, "scan/add")?;
         }
         Ok(())
     }

@@ -2,11 +2,12 @@
 //! `dof_shaders::sort`). The plan is sized from the device: the largest workgroup-memory class from
 //! its shared-memory limit, the global path recorded only when a list can exceed that class.
 
-use crate::backend::{Backend, BufferId, push_words, with_buffers};
+use crate::backend::{Backend, BufferId, RunKernel, push_words, with_buffers};
 use crate::error::{Error, Result};
 use dof_shaders::sort::{
     self, CLASS_CAPS, CLASSIFY, ClassifyParams, GLOBAL_CLASS, GLOBAL_LOCAL, GLOBAL_STEP, GLOBAL_STORE, LOCAL_BLOCK, MAX_GROUPS,
-    NUM_CLASSES, PLAN, PlanParams, SHARED_CLASSES, SortParams, plan, pow2_ceil, top_class_for,
+    NUM_CLASSES, PLAN, PlanParams, SHARED_CLASSES, SortParams, plan, pow2_ceil, sort_classify, sort_global_local, sort_global_step,
+    sort_global_store, sort_plan, top_class_for,
 };
 
 /// Buffers and sizes of a segmented sort, allocated once for a maximum problem size.
@@ -115,11 +116,13 @@ impl SegmentedSort {
         }
         let (plan_buf, lists) = (self.plan, self.lists);
         backend.fill(plan_buf, 0, plan::WORDS as u64, 0, "sort/clear")?;
-        let classify = push_words(&ClassifyParams { num_segments, top_class: self.top_class });
+        let classify = ClassifyParams { num_segments, top_class: self.top_class };
         let groups = num_segments.div_ceil(256).clamp(1, MAX_GROUPS);
-        backend.dispatch(&CLASSIFY, [groups, 1, 1], &[segments, plan_buf, lists], &classify, "sort/classify")?;
-        backend.dispatch(&PLAN, [1, 1, 1], &[plan_buf], &push_words(&PlanParams::default()), "sort/plan")?;
+        backend.run(sort_classify::Bindings { segments, plan: plan_buf, lists }, [groups, 1, 1], &classify, "sort/classify")?;
+        backend.run(sort_plan::Bindings { plan: plan_buf }, [1, 1, 1], &PlanParams::default(), "sort/plan")?;
 
+        // The class kernels are chosen at run time from the table, so they are bound by position
+        // (their bindings, one list for every class, are those of `sort_shared_64::Bindings`).
         let io = [segments, plan_buf, lists, keys_in, values_in, keys_out, values_out];
         for class in 0..=self.top_class {
             let params = push_words(&SortParams { num_segments, class, k: 0, j: 0 });
@@ -129,23 +132,23 @@ impl SegmentedSort {
         }
 
         let Some((scratch_keys, scratch_pos)) = self.scratch else { return Ok(()) };
-        let params = |k, j| push_words(&SortParams { num_segments, class: GLOBAL_CLASS, k, j });
-        let local = [segments, plan_buf, lists, keys_in, scratch_keys, scratch_pos];
-        let step = [segments, plan_buf, lists, scratch_keys, scratch_pos];
+        let params = |k, j| SortParams { num_segments, class: GLOBAL_CLASS, k, j };
+        let local = sort_global_local::Bindings { segments, plan: plan_buf, lists, keys_in, scratch_keys, scratch_pos };
+        let step = sort_global_step::Bindings { segments, plan: plan_buf, lists, scratch_keys, scratch_pos };
         let block_args = plan::BLOCK_ARGS as u64;
-        backend.dispatch_indirect(&GLOBAL_LOCAL, plan_buf, block_args, &local, &params(0, 0), "sort/global-blocks")?;
+        backend.run_indirect(local, plan_buf, block_args, &params(0, 0), "sort/global-blocks")?;
         let mut k = 2 * LOCAL_BLOCK;
         while k <= pow2_ceil(self.max_list_len) {
             let mut j = k / 2;
             while j >= LOCAL_BLOCK {
-                backend.dispatch_indirect(&GLOBAL_STEP, plan_buf, plan::STEP_ARGS as u64, &step, &params(k, j), "sort/global-step")?;
+                backend.run_indirect(step, plan_buf, plan::STEP_ARGS as u64, &params(k, j), "sort/global-step")?;
                 j /= 2;
             }
-            backend.dispatch_indirect(&GLOBAL_LOCAL, plan_buf, block_args, &local, &params(k, 0), "sort/global-merge")?;
+            backend.run_indirect(local, plan_buf, block_args, &params(k, 0), "sort/global-merge")?;
             k *= 2;
         }
-        let store = [segments, plan_buf, lists, keys_in, values_in, scratch_pos, keys_out, values_out];
-        backend.dispatch_indirect(&GLOBAL_STORE, plan_buf, plan::ELEMENT_ARGS as u64, &store, &params(0, 0), "sort/global-store")
+        let store = sort_global_store::Bindings { segments, plan: plan_buf, lists, keys_in, values_in, scratch_pos, keys_out, values_out };
+        backend.run_indirect(store, plan_buf, plan::ELEMENT_ARGS as u64, &params(0, 0), "sort/global-store")
     }
 
     /// Reads what the last recorded sort did (submits pending work).

@@ -138,8 +138,14 @@ pub struct VulkanBackend {
     counters: BackendCounters,
     /// Buffers the open external recording uses.
     external_used: HashSet<u32>,
-    /// `destroy_buffer` calls refused during the open external recording, reported by `end_external`.
-    refused: Vec<String>,
+    /// Buffers destroyed during the open external recording that it uses, with their bytes: they
+    /// go with the recording into `retired` at `end_external`.
+    retiring: Vec<(GpuBuffer, u64)>,
+    /// Buffers destroyed during ended external recordings, each batch with the event its recording
+    /// sets at its end: freed by `release_finished` once the event is set.
+    retired: Vec<(vk::Event, Vec<(GpuBuffer, u64)>)>,
+    /// Events of released batches, reset, to be used again.
+    spare_events: Vec<vk::Event>,
 }
 
 fn lock(allocator: &SharedAllocator) -> MutexGuard<'_, Allocator> {
@@ -261,7 +267,9 @@ impl VulkanBackend {
             id: BackendId::fresh(),
             budget: None,
             external_used: HashSet::new(),
-            refused: Vec::new(),
+            retiring: Vec::new(),
+            retired: Vec::new(),
+            spare_events: Vec::new(),
         };
         backend.recorder.init(&backend.device, timestamp_bits, backend.info.timestamp_period_ns)?;
         Ok(backend)
@@ -346,8 +354,9 @@ impl VulkanBackend {
     /// Starts recording into the caller's command buffer `cb`: from here to [`Self::end_external`],
     /// `fill`, `dispatch`, `dispatch_indirect`, `draw_indirect` and the image copies are recorded
     /// into `cb`, which the caller submits and synchronises itself; `submit`, `read_buffer`,
-    /// `write_buffer` and `create_buffer` are refused, and so is `destroy_buffer` of a buffer the
-    /// recording uses (the buffer stays; `end_external` reports it).
+    /// `write_buffer` and `create_buffer` are refused. `destroy_buffer` of a buffer the recording
+    /// uses (a context destroyed mid-recording) forgets its id at once and frees its memory once the
+    /// caller's command buffer has completed: see [`Self::release_finished`].
     ///
     /// Work the backend recorded in its own command buffer and has not submitted (such as the zeroing
     /// of buffers created since) is submitted first and waited for: one submission, counted.
@@ -377,30 +386,68 @@ impl VulkanBackend {
             return Err(Error::InvalidArgument("begin_external: the command buffer is null".into()));
         }
         self.flush()?;
+        self.release_finished()?;
         self.recorder.begin_external(&self.device, cb);
         self.external_used.clear();
-        self.refused.clear();
         Ok(())
     }
 
     /// Ends the recording into the caller's command buffer (with the closing barrier described at
-    /// [`Self::begin_external`]). It fails if `destroy_buffer` calls were refused during the
-    /// recording (the recording itself is complete and valid all the same).
+    /// [`Self::begin_external`]). Where buffers the recording uses were destroyed during it, it also
+    /// records the setting of an event of the backend's, by which [`Self::release_finished`] knows
+    /// that the command buffer has completed.
     pub fn end_external(&mut self) -> Result<()> {
-        if !self.recorder.is_external() {
+        let Some(cb) = self.recorder.external_command_buffer() else {
             return Err(Error::InvalidArgument("end_external without begin_external".into()));
-        }
+        };
+        let retiring = if self.retiring.is_empty() {
+            Ok(())
+        } else {
+            let event = match self.spare_events.pop() {
+                Some(event) => Ok(event),
+                // SAFETY: a plain creation on the live device; destroyed in `drop`.
+                None => unsafe { self.device.device.create_event(&vk::EventCreateInfo::default(), None) }.vk("vkCreateEvent"),
+            };
+            event.map(|event| {
+                // SAFETY: `cb` is recording, outside a render pass; the event is the backend's and
+                // unset (new, or reset once its last batch was released).
+                unsafe { self.device.device.cmd_set_event(cb, event, vk::PipelineStageFlags::ALL_COMMANDS) };
+                self.retired.push((event, std::mem::take(&mut self.retiring)));
+            })
+        };
         self.recorder.end_external(&self.device);
         self.external_used.clear();
-        let refused = std::mem::take(&mut self.refused);
-        if !refused.is_empty() {
-            return Err(Error::InvalidArgument(format!(
-                "refused during the external recording, because the recording uses them (they are still alive; destroy \
-                 them once the caller's command buffer completed): {}",
-                refused.join(", ")
-            )));
+        // Without an event the destroyed buffers wait for the next recording's end (or the drop).
+        retiring
+    }
+
+    /// Frees the buffers destroyed during external recordings whose command buffers have completed
+    /// (never blocks: a recording still running keeps its buffers until a later call; one whose
+    /// command buffer was never submitted keeps them until the backend is dropped). Returns the
+    /// bytes freed. `begin_external` calls it too.
+    pub fn release_finished(&mut self) -> Result<u64> {
+        let mut freed = 0;
+        let mut i = 0;
+        while i < self.retired.len() {
+            // SAFETY: the event is the backend's and alive.
+            if !unsafe { self.device.device.get_event_status(self.retired[i].0) }.vk("vkGetEventStatus")? {
+                i += 1;
+                continue;
+            }
+            let (event, buffers) = self.retired.swap_remove(i);
+            let allocator = self.allocator()?;
+            let mut allocator = lock(&allocator);
+            for (gpu, bytes) in buffers {
+                // SAFETY (of the destruction): the event is set after every command of the recording.
+                gpu.destroy(&self.device.device, &mut allocator);
+                self.counters.remove_buffer(bytes);
+                freed += bytes;
+            }
+            // SAFETY: the command that set it has executed; nothing else uses it.
+            unsafe { self.device.device.reset_event(event) }.vk("vkResetEvent")?;
+            self.spare_events.push(event);
         }
-        Ok(())
+        Ok(freed)
     }
 
     /// Whether commands go into a caller's command buffer (between `begin_external` and `end_external`).
@@ -549,6 +596,7 @@ impl VulkanBackend {
         let push_bytes = kernel.push_bytes.div_ceil(4) as usize * 4;
         let push_data: &[u8] = &bytemuck::cast_slice::<u32, u8>(push)[..push_bytes];
         let push_descriptor = &self.device.push_descriptor;
+        self.counters.commands += 1;
 
         self.recorder.record(&self.device, Some((label, kernel.entry)), &accessed, |d, cb| {
             // SAFETY: `cb` is recording; the pipeline, its layout and every bound buffer are alive
@@ -574,25 +622,13 @@ impl VulkanBackend {
     /// barriers into and out of the transfer layout.
     fn record_image_copy(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, into_image: bool, label: &str) -> Result<()> {
         let what = if into_image { "copy_buffer_to_image" } else { "copy_image_to_buffer" };
+        self.check_image_copy(&image, into_image)?;
         let [width, height] = image.extent;
-        if width == 0 || height == 0 || image.handle == 0 {
-            return Err(Error::InvalidArgument(format!("{what} `{label}`: an empty ({width}x{height}) or null image")));
-        }
         let per_pixel = image.format.words_per_pixel();
         if !offset_words.is_multiple_of(per_pixel) {
             return Err(Error::InvalidArgument(format!(
-                "{what} `{label}`: the buffer offset {offset_words} is not a multiple of the {per_pixel} words of a {:?} pixel",
+                "{what} `{label}`: the buffer offset {offset_words} is not a multiple of the {per_pixel} words of a {} pixel",
                 image.format
-            )));
-        }
-        let bad_final = [vk::ImageLayout::UNDEFINED, vk::ImageLayout::PREINITIALIZED];
-        if bad_final.contains(&image.final_layout) {
-            return Err(Error::InvalidArgument(format!("{what} `{label}`: the final layout cannot be {:?}", image.final_layout)));
-        }
-        if !into_image && bad_final.contains(&image.layout) {
-            return Err(Error::InvalidArgument(format!(
-                "{what} `{label}`: an image in layout {:?} has no defined contents to copy",
-                image.layout
             )));
         }
         let target = self.range(buffer, offset_words, image.words())?;
@@ -603,7 +639,7 @@ impl VulkanBackend {
         } else {
             (vk::ImageLayout::TRANSFER_SRC_OPTIMAL, vk::AccessFlags::TRANSFER_READ)
         };
-        let range = vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1);
+        let range = vk::ImageSubresourceRange::default().aspect_mask(image.format.layout_aspects()).level_count(1).layer_count(1);
         // From the caller's last use, and from the backend's own earlier copies (transfer writes).
         let acquire = [vk::ImageMemoryBarrier::default()
             .src_access_mask(image.access | vk::AccessFlags::TRANSFER_WRITE)
@@ -625,11 +661,13 @@ impl VulkanBackend {
             .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
             .image(handle)
             .subresource_range(range)];
+        // A depth format goes through its depth aspect (D24 as 32-bit words, depth in the low 24 bits).
         let region = [vk::BufferImageCopy::default()
             .buffer_offset(offset_words * 4)
-            .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
+            .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(image.format.copy_aspect()).layer_count(1))
             .image_extent(vk::Extent3D { width, height, depth: 1 })];
         let accessed = [(target.as_raw(), !into_image), (image.handle, into_image)];
+        self.counters.commands += 1;
         self.recorder.record(&self.device, Some((label, what)), &accessed, |d, cb| {
             // SAFETY: `cb` is recording outside a render pass; the image is live with the declared
             // format, extent and layout (`ImageRef::vulkan`'s contract) and the region lies inside
@@ -675,6 +713,35 @@ fn storage_writes(infos: &[vk::DescriptorBufferInfo]) -> Vec<vk::WriteDescriptor
 }
 
 impl Backend for VulkanBackend {
+    fn check_image_copy(&self, image: &ImageRef, into_image: bool) -> Result<()> {
+        let what = if into_image { "copy_buffer_to_image" } else { "copy_image_to_buffer" };
+        image.check_copy(into_image, what)?;
+        // Images are assumed optimally tiled (what renderers' attachments are).
+        // SAFETY: a query on the live instance and the device's physical device.
+        let features = unsafe { self.instance.instance.get_physical_device_format_properties(self.physical, image.format.vk_format()) }
+            .optimal_tiling_features;
+        let needed = if into_image { vk::FormatFeatureFlags::TRANSFER_DST } else { vk::FormatFeatureFlags::TRANSFER_SRC };
+        if !features.contains(needed) {
+            return Err(Error::InvalidArgument(format!(
+                "{what}: {} images cannot be a transfer {} on {} (optimal tiling features {features:?})",
+                image.format,
+                if into_image { "destination" } else { "source" },
+                self.info.name
+            )));
+        }
+        Ok(())
+    }
+    fn check_draw_target(&self, _draw: &'static DrawDesc, size: [u32; 2]) -> Result<()> {
+        let covered = self.draws.target.as_ref().is_some_and(|t| t.size[0] >= size[0] && t.size[1] >= size[1]);
+        if self.device.graphics && self.recorder.is_external() && !covered {
+            return Err(Error::InvalidArgument(format!(
+                "a draw at {}x{} inside an external recording: the draw target is smaller, and growing it needs the GPU idle; \
+                 make the context for the largest frame before begin_external",
+                size[0], size[1]
+            )));
+        }
+        Ok(())
+    }
     fn reserve_draw_target(&mut self, draw: &'static DrawDesc, size: [u32; 2]) -> Result<()> {
         if !self.device.graphics {
             return Ok(());
@@ -750,9 +817,11 @@ impl Backend for VulkanBackend {
 
     fn destroy_buffer(&mut self, buffer: BufferId) {
         if self.recorder.is_external() && self.external_used.contains(&buffer.0) {
-            let label = self.buffers.get(&buffer.0).map_or("", |b| b.label.as_str());
-            log::error!("destroy_buffer({}) `{label}` refused: the open external recording uses it", buffer.0);
-            self.refused.push(format!("destroy_buffer({}) `{label}`", buffer.0));
+            // The caller's command buffer uses it: freed once that completed (`release_finished`).
+            if let Some(StorageBuffer { owned: Some(gpu), words, label, .. }) = self.buffers.remove(&buffer.0) {
+                log::debug!("destroy_buffer `{label}` inside an external recording that uses it: freed once it completed");
+                self.retiring.push((gpu, words * 4));
+            }
             return;
         }
         let Some(b) = self.buffers.remove(&buffer.0) else { return };
@@ -832,6 +901,7 @@ impl Backend for VulkanBackend {
     fn fill(&mut self, buffer: BufferId, offset_words: u64, words: u64, value: u32, label: &str) -> Result<()> {
         let target = self.range(buffer, offset_words, words)?;
         self.note_used([buffer]);
+        self.counters.commands += 1;
         self.recorder.record(&self.device, Some((label, "fill")), &[(target.as_raw(), true)], |d, cb| {
             if words > 0 {
                 // SAFETY: `cb` is recording; the range lies inside the buffer.
@@ -897,6 +967,7 @@ impl Backend for VulkanBackend {
         let push_descriptor = &self.device.push_descriptor;
         let extent = vk::Extent2D { width: size[0], height: size[1] };
         let stages = vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT;
+        self.counters.commands += 1;
         self.recorder.record(&self.device, Some((label, draw.vertex)), &accessed, |d, cb| {
             let clear = [
                 vk::ClearValue { color: vk::ClearColorValue { float32: [0.0; 4] } },
@@ -980,6 +1051,10 @@ impl Drop for VulkanBackend {
         // SAFETY (of the destruction below): nothing is pending and nothing is destroyed twice.
         self.pipelines.destroy(&d);
         self.recorder.destroy(&d);
+        for event in self.spare_events.drain(..).chain(self.retired.iter().map(|(e, _)| *e)) {
+            // SAFETY: nothing pending uses it.
+            unsafe { d.destroy_event(event, None) };
+        }
         if let Some(shared) = self.allocator.take() {
             let mut allocator = lock(&shared);
             self.draws.destroy(&d, &mut allocator);
@@ -990,6 +1065,11 @@ impl Drop for VulkanBackend {
                 }
             }
             for b in self.doomed.drain(..) {
+                b.destroy(&d, &mut allocator);
+            }
+            // The caller waited for its command buffers (`from_raw`'s contract).
+            let retired = self.retired.drain(..).flat_map(|(_, batch)| batch);
+            for (b, _) in self.retiring.drain(..).chain(retired) {
                 b.destroy(&d, &mut allocator);
             }
             self.upload.destroy(&d, &mut allocator);

@@ -199,6 +199,11 @@ impl Recorder {
         self.recording
     }
 
+    /// The caller's command buffer, between `begin_external` and `end_external`.
+    pub fn external_command_buffer(&self) -> Option<vk::CommandBuffer> {
+        self.external
+    }
+
     /// Whether commands go into the caller's command buffer.
     pub fn is_external(&self) -> bool {
         self.external.is_some()
@@ -381,13 +386,15 @@ impl Recorder {
         barrier(
             &ctx.device,
             cb,
+            // DRAW_INDIRECT on every queue: an earlier recording's indirect dispatches read their
+            // arguments there (compute queues have the stage too), before this one rewrites them.
             vk::PipelineStageFlags::COMPUTE_SHADER
                 | vk::PipelineStageFlags::TRANSFER
+                | vk::PipelineStageFlags::DRAW_INDIRECT
                 | graphics(
                     vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT
                         | vk::PipelineStageFlags::VERTEX_SHADER
-                        | vk::PipelineStageFlags::FRAGMENT_SHADER
-                        | vk::PipelineStageFlags::DRAW_INDIRECT,
+                        | vk::PipelineStageFlags::FRAGMENT_SHADER,
                 ),
             vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_WRITE | colour,
             later_stages(g),

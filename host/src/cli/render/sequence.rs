@@ -8,6 +8,11 @@
 //! of the frames' own), so every frame has the same extent. The references and the pinhole image
 //! render per frame with their own functions. Output: `OUT-0000.exr`, … beside `--out` and an
 //! animated preview `OUT.gif` through the PNG previews' tone map.
+//!
+//! An EXR sequence (`--scene shot-####.exr`, see [`super::exr_pattern`]) renders every file that
+//! matches, in frame order (the first `--frames N` of them when given): the lens as for one EXR,
+//! moved by the sequence flags, every frame's edges extended by the largest CoC any frame reaches,
+//! so that one context serves them all. Every file must have the first's size and layer count.
 
 use super::*;
 use dof::io::write_gif_preview;
@@ -22,7 +27,82 @@ const GIF_DELAY_MS: u32 = 80;
 /// Where the frames come from.
 pub(super) enum Source<'a> {
     Builtin(&'a scene::Scene),
-    Gltf { mesh: &'a MeshScene, near: f32 },
+    Gltf {
+        mesh: &'a MeshScene,
+        near: f32,
+    },
+    /// The files of an EXR sequence, in frame order.
+    Exr(&'a [PathBuf]),
+}
+
+/// The files of the EXR sequence `--scene` names, the first `--frames N` of them when given.
+pub(super) fn exr_frames(args: &RenderArgs) -> anyhow::Result<Vec<PathBuf>> {
+    let (found, _) = super::exr_pattern::frames(&args.scene)?;
+    let n = args.frames.map_or(found.len(), |n| n as usize);
+    if n > found.len() {
+        bail!("--frames {n}: the EXR sequence {} has {} frames", args.scene, found.len());
+    }
+    if found.len() > MAX_FRAMES as usize && args.frames.is_none() {
+        bail!("the EXR sequence {} has {} frames, more than {MAX_FRAMES}: render a part with --frames N", args.scene, found.len());
+    }
+    Ok(found.into_iter().take(n).map(|(_, path)| path).collect())
+}
+
+/// `dof render --scene shot-####.exr`: the sequence's frames through one context (module docs).
+pub(super) fn render_exr_sequence(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
+    if args.method == Method::Reference {
+        bail!("the exact reference needs the scene's geometry; an EXR sequence has none (use a built-in scene)");
+    }
+    if args.background.is_some() {
+        bail!("--background applies to built-in and glTF scenes; an EXR carries its background as the colour stored at depth +inf");
+    }
+    let (found, gaps) = super::exr_pattern::frames(&args.scene)?;
+    for (first, last) in gaps {
+        let which = if first == last { format!("frame {first} is") } else { format!("frames {first} to {last} are") };
+        eprintln!("note: {which} missing from {}; the sequence goes on with the next file", args.scene);
+    }
+    let files = exr_frames(args)?;
+    println!("{}: {} frames, {} … {}", args.scene, files.len(), found[0].0, found[files.len() - 1].0);
+    let (first, _) = read_layered_exr(&files[0])?;
+    let (camera, settings) = exr_camera(args, &first)?;
+    let lens = settings.thin_lens(&camera).with_context(|| lens_flags(args))?;
+    let shots = shots(args, files.len() as u32, &camera, &settings, &lens)?;
+    render_sequence(args, out, Source::Exr(&files), &shots)
+}
+
+/// One frame of an EXR sequence, checked against the first's size and layer count; what the reader
+/// left out is noted when `notes` (the first of the two reads of every file).
+fn read_exr_frame(path: &Path, first: Option<&LayeredImage>, notes: bool) -> anyhow::Result<LayeredImage> {
+    let (layers, report) = read_layered_exr(path)?;
+    if notes && report.total() > 0 {
+        eprintln!("note: {}: {report}", path.display());
+    }
+    if let Some(f) = first.filter(|f| (f.width, f.height, f.max_layers) != (layers.width, layers.height, layers.max_layers)) {
+        bail!(
+            "{} is {}x{} with {} layers, the sequence's first frame {}x{} with {}: every frame of a sequence has one size",
+            path.display(),
+            layers.width,
+            layers.height,
+            layers.max_layers,
+            f.width,
+            f.height,
+            f.max_layers
+        );
+    }
+    Ok(layers)
+}
+
+/// An EXR frame as the sequence's loop takes a rendered one: its edges extended by `margin`, no
+/// disocclusion buffer (an EXR carries none; its mask channel is not written).
+fn exr_as_layers(frame: &LayeredImage, margin: u32) -> anyhow::Result<MultiLayerImage> {
+    let stats = frame.stats();
+    Ok(MultiLayerImage {
+        layers: frame.extend_edges(margin)?,
+        margin,
+        mask: vec![false; frame.width as usize * frame.height as usize],
+        with_mask: stats,
+        without_mask: stats,
+    })
 }
 
 /// The sequence's flags given, for errors about a frame's lens.
@@ -39,11 +119,11 @@ fn sequence_flags(args: &RenderArgs) -> String {
 /// The frames' cameras and lenses: linear from the start's to the end's.
 pub(super) fn shots(
     args: &RenderArgs,
+    n: u32,
     camera: &Camera,
     settings: &LensSettings,
     start: &ThinLens,
 ) -> anyhow::Result<Vec<(Camera, ThinLens)>> {
-    let n = args.frames.unwrap_or(1);
     let f0 = start.focus_distance;
     let r0 = start.aperture_radius;
     let r1 = match (args.aperture_radius_to, args.f_number_to) {
@@ -83,23 +163,39 @@ pub(super) fn frame_path(out: &Path, i: u32, frames: u32) -> PathBuf {
 pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, shots: &[(Camera, ThinLens)]) -> anyhow::Result<()> {
     let n = shots.len() as u32;
     let mut b = backend(args.backend)?;
-    let margin = match args.guard_band {
-        GuardBand::Off => 0,
-        GuardBand::Pixels(p) => p,
-        GuardBand::Auto => {
+    let margin = match (&source, args.guard_band) {
+        // An EXR's edges are extended as far as the largest CoC of any frame reaches.
+        (Source::Exr(files), _) => {
+            let mut largest = 0;
+            let mut first = None;
+            for (path, (_, lens)) in files.iter().zip(shots) {
+                let frame = read_exr_frame(path, first.as_ref(), true)?;
+                largest = largest.max(edge_margin(&frame, lens));
+                first.get_or_insert(frame);
+            }
+            largest
+        }
+        (_, GuardBand::Off) => 0,
+        (_, GuardBand::Pixels(p)) => p,
+        (_, GuardBand::Auto) => {
             let mut largest = 0;
             for (camera, lens) in shots {
                 let m = match &source {
                     Source::Builtin(s) => auto_margin(s, camera, lens, 1e-3 * lens.focus_distance)?,
                     Source::Gltf { mesh, near } => auto_margin_mesh(mesh.raster().triangle_positions(), camera, lens, *near)?,
+                    Source::Exr(_) => unreachable!("an EXR sequence's margin is its edge policy's"),
                 };
                 largest = largest.max(m);
             }
             largest
         }
     };
-    if margin > 0 {
-        println!("guard band: {margin} px beyond every edge for every frame (the largest the frames need)");
+    match (&source, margin) {
+        (_, 0) => {}
+        (Source::Exr(_), _) => {
+            println!("edge policy: every frame's edge pixels extended by {margin} px (the largest CoC radius of any frame)")
+        }
+        _ => println!("guard band: {margin} px beyond every edge for every frame (the largest the frames need)"),
     }
     let options = LayerOptions { max_layers: args.layers, guard_band: GuardBand::Pixels(margin), ..Default::default() };
     let method_options = method_options(args)?;
@@ -111,6 +207,7 @@ pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, sho
             let layered = match &source {
                 Source::Builtin(s) => raycast_layers(s, camera, lens, &options)?,
                 Source::Gltf { mesh, near } => peel_layers(b.as_mut(), &mesh.raster(), camera, lens, *near, &options)?.image,
+                Source::Exr(files) => exr_as_layers(&read_exr_frame(&files[i as usize], None, false)?, margin)?,
             };
             let path = frame_path(out, i, n);
             let mut kernel_ms = None;
@@ -121,13 +218,14 @@ pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, sho
                 }
                 Method::Pinhole => match &source {
                     Source::Builtin(s) => scene::pinhole(s, camera, &ReferenceOptions { spp: 16, ..Default::default() })?.image,
-                    Source::Gltf { .. } => layered.front().0,
+                    Source::Gltf { .. } | Source::Exr(_) => layered.front().0,
                 },
                 Method::Reference => match &source {
                     Source::Builtin(s) => match args.samples {
                         Some(spp) => scene::reference(s, camera, lens, &ReferenceOptions { spp, ..Default::default() })?.image,
                         None => scene::reference_auto(s, camera, lens, &AutoOptions::default())?.image,
                     },
+                    Source::Exr(_) => bail!("the exact reference needs the scene's geometry"),
                     Source::Gltf { mesh, near } => {
                         let samples = args.samples.unwrap_or(256);
                         let opts = AccumulateOptions { samples, ..Default::default() };
@@ -159,7 +257,10 @@ pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, sho
                 let (_, depth) = layered.front();
                 let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
                 let mask: Vec<f32> = layered.mask.iter().map(|&m| m as u32 as f32).collect();
-                write_exr(&path, &image, &[("Z", &depth), ("coc", &coc), ("mask", &mask)])?;
+                match &source {
+                    Source::Exr(_) => write_exr(&path, &image, &[("Z", &depth), ("coc", &coc)])?,
+                    _ => write_exr(&path, &image, &[("Z", &depth), ("coc", &coc), ("mask", &mask)])?,
+                }
             }
             println!(
                 "frame {i}: focus {:.3}, aperture radius {:.2} mm, eye {:.3},{:.3},{:.3}{} -> {}",

@@ -12,13 +12,13 @@ use super::swapchain::Swapchain;
 use super::ui::{Panel, Stats};
 use anyhow::{Context, Result, anyhow, bail};
 use dof::backend::vulkan::ash::vk::{self, AccessFlags as Access, ImageLayout as Layout};
-use dof::backend::{Backend, BufferId, ImageFormat, ImageRef, RawDevice, RawOptions, VulkanBackend, push_words};
+use dof::backend::{Backend, BufferId, ImageFormat, ImageRef, RawDevice, RawOptions, RunKernel, VulkanBackend};
 use dof::frame::{Frame, FrameInput, FrameOutput};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::buffers::groups_for;
 use dof::raster::{MeshPeelContext, MeshPeelDesc, default_near};
 use dof::scene::{Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, ThinLens};
-use dof_shaders::tonemap::{DISPLAY, DisplayParams, MODE_LINEAR, MODE_TONEMAP};
+use dof_shaders::tonemap::{DISPLAY, DisplayParams, MODE_LINEAR, MODE_TONEMAP, display_tonemap};
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle};
 use std::time::Instant;
 use winit::application::ApplicationHandler;
@@ -759,7 +759,7 @@ impl App<'_> {
         };
         let recorded = peeled.and_then(|()| contexts_record(r.contexts.as_mut(), backend, method, &frame)).and_then(|()| {
             let groups = groups_for(&DISPLAY, fw as u64 * fh as u64);
-            backend.dispatch(&DISPLAY, groups, &[display.rgb, display.rgba], &push_words(&params), "view/display")?;
+            backend.run(display_tonemap::Bindings { rgb: display.rgb, rgba: display.rgba }, groups, &params, "view/display")?;
             backend.copy_buffer_to_image(display.rgba, 0, out, "view/display-to-image")?;
             Ok(())
         });

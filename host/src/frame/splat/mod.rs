@@ -1,6 +1,7 @@
 //! Tiled splatting as a frame context: every buffer and bound fixed at creation, then per frame a
 //! recording of the stages in `dof_shaders::splat` with no allocation, readback or host planning.
 
+use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_input, record_output};
 use crate::backend::{Backend, BufferId, groups_for, push_words};
@@ -333,8 +334,12 @@ impl SplatContext {
     /// into the backend's current command buffer (its own, or the caller's between
     /// `begin_external` and `end_external`).
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
-        let d = &self.desc;
-        check_frame(backend, f, &self.owned, d.extent(), self.b.io.as_ref())?;
+        check_frame(backend, f, &self.owned, self.desc.extent(), self.b.io.as_ref())?;
+        record_checked(self, backend, f, Self::commands)
+    }
+
+    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let b = &self.b;
         let pixels = f.width as u64 * f.height as u64;
         let tiles_x = f.width.div_ceil(self.desc.options.tile);

@@ -1,0 +1,484 @@
+//! Depth and colour as renderers have them, through the frame API on both backends: each depth
+//! format (D32, D24 with stencil, X8_D24, R32F) under each encoding (standard and reversed Z, each
+//! with a finite and an infinite far plane; R32F also linear) and each colour format (RGBA32F,
+//! RGBA16F, B10G11R11), from images larger than the frame (the top-left part is used) as often as
+//! from images of its size.
+//!
+//! What is asserted, per case:
+//! - the decoded input is within the format's precision of the scene it encodes: colour within
+//!   half a unit in the last place (RGBA16F 2^-11 relative, B10G11R11 2^-7 for red and green and
+//!   2^-6 for blue), view depth within z·(z/near)·2^-22 (half a step of a 24-bit unorm and the f32
+//!   arithmetic, through the derivative of the projection; the f32 formats are finer);
+//! - the frame from images equals the frame from buffers holding that decoded input: bit for bit
+//!   on the CPU, within 1e-4 relative on Vulkan (where the device does the decoding's arithmetic).
+//!
+//! On Vulkan the images are a renderer's own (`dof_tests::renderer`), left by its passes in their
+//! attachment layouts, and the frames are recorded into its command buffer; the validation layer
+//! must stay silent. Formats the device cannot copy from are reported and refused by name.
+
+use dof::backend::vulkan::ash::vk;
+use dof::backend::{Backend, BufferId, CpuBackend, ImageFormat, ImageRef, RawOptions, VulkanBackend};
+use dof::frame::{ContextDesc, DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput, MethodOptions, registry};
+use dof_shaders::frame_io::{
+    DEPTH_F32, DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FrameIoParams, depth_value, view_depth,
+};
+use dof_shaders::half::{b10g11r11_to_f32, f16_to_f32, f32_to_f16};
+use dof_tests::renderer::{Renderer, assert_no_messages};
+
+const W: u32 = 48;
+const H: u32 = 32;
+const NEAR: f32 = 0.1;
+const FAR: f32 = 100.0;
+/// The method the frames go through (the input path is the same for every context).
+const METHOD: &str = "multilayer";
+
+#[derive(Clone, Copy, Debug)]
+struct Case {
+    color: ImageFormat,
+    depth: ImageFormat,
+    encoding: DepthEncoding,
+    /// The images' extent (at least the frame's).
+    image: [u32; 2],
+}
+
+fn cases() -> Vec<Case> {
+    let encodings = [
+        DepthEncoding::Standard { near: NEAR, far: FAR },
+        DepthEncoding::Reversed { near: NEAR, far: FAR },
+        DepthEncoding::Standard { near: NEAR, far: f32::INFINITY },
+        DepthEncoding::Reversed { near: NEAR, far: f32::INFINITY },
+    ];
+    let mut cases = Vec::new();
+    let depths = [ImageFormat::D32Float, ImageFormat::D24UnormS8Uint, ImageFormat::X8D24UnormPack32, ImageFormat::R32Float];
+    for depth in depths {
+        for encoding in encodings {
+            cases.push((ImageFormat::Rgba16Float, depth, encoding));
+        }
+    }
+    cases.push((ImageFormat::Rgba32Float, ImageFormat::R32Float, DepthEncoding::Linear));
+    cases.push((ImageFormat::Rgba32Float, ImageFormat::D32Float, encodings[1]));
+    cases.push((ImageFormat::B10G11R11Ufloat, ImageFormat::D24UnormS8Uint, encodings[3]));
+    cases.push((ImageFormat::B10G11R11Ufloat, ImageFormat::R32Float, DepthEncoding::Linear));
+    // Every other case reads the top-left of larger images.
+    cases
+        .into_iter()
+        .enumerate()
+        .map(|(i, (color, depth, encoding))| Case { color, depth, encoding, image: if i % 2 == 1 { [W + 7, H + 5] } else { [W, H] } })
+        .collect()
+}
+
+/// The scene: smooth HDR colours and view depths from 0.5 to 20, with background pixels (at the
+/// far plane, or at infinity where the encoding has one).
+fn scene(encoding: DepthEncoding) -> (Vec<[f32; 3]>, Vec<f32>) {
+    let background = match encoding {
+        DepthEncoding::Standard { far, .. } | DepthEncoding::Reversed { far, .. } => far,
+        DepthEncoding::Linear => f32::INFINITY,
+    };
+    let mut colors = Vec::new();
+    let mut depths = Vec::new();
+    for y in 0..H {
+        for x in 0..W {
+            let v = dof::stress::hash(y * W + x);
+            colors.push([0.05 + x as f32 / W as f32, 3.0 * (v % 1000) as f32 / 1000.0, 0.25 + (y as f32 / H as f32).powi(2) * 40.0]);
+            depths.push(if x + y < 6 { background } else { 0.5 + 19.5 * ((x * 7 + y * 3) % 61) as f32 / 60.0 });
+        }
+    }
+    (colors, depths)
+}
+
+/// The depth-buffer value of view depth `z` (in f64), as a projection would write it.
+fn depth_buffer_value(encoding: DepthEncoding, z: f32) -> f64 {
+    let z = z as f64;
+    match encoding {
+        DepthEncoding::Linear => z,
+        DepthEncoding::Standard { near, far } if far.is_infinite() => 1.0 - near as f64 / z,
+        DepthEncoding::Reversed { near, far } if far.is_infinite() => near as f64 / z,
+        DepthEncoding::Standard { near, far } => far as f64 * (z - near as f64) / (z * (far as f64 - near as f64)),
+        DepthEncoding::Reversed { near, far } => near as f64 * (far as f64 - z) / (z * (far as f64 - near as f64)),
+    }
+}
+
+/// A small unsigned float of `mbits` mantissa bits nearest to `v` (0 ≤ v, normal range), written
+/// here independently of the decoder under test.
+fn small_float(v: f32, mbits: u32) -> u32 {
+    if v <= 0.0 {
+        return 0;
+    }
+    let e = v.log2().floor() as i32;
+    let mut m = ((v as f64 / 2f64.powi(e) - 1.0) * (1u32 << mbits) as f64).round() as u32;
+    let mut e = e + 15;
+    if m == 1 << mbits {
+        m = 0;
+        e += 1;
+    }
+    assert!((1..31).contains(&e), "{v} outside the normal range of the test's encoder");
+    ((e as u32) << mbits) | m
+}
+
+/// The images' texels (packed as the copies pack them) for `case`, over the images' whole extent:
+/// outside the frame they hold junk that must never be read (NaN colour, the near plane).
+fn texels(case: &Case) -> (Vec<u32>, Vec<u32>) {
+    let (colors, depths) = scene(case.encoding);
+    let [iw, ih] = case.image;
+    let mut color = Vec::new();
+    let mut depth = Vec::new();
+    for y in 0..ih {
+        for x in 0..iw {
+            let inside = x < W && y < H;
+            let c = if inside { colors[(y * W + x) as usize] } else { [f32::NAN; 3] };
+            let z = if inside { depths[(y * W + x) as usize] } else { NEAR };
+            match case.color {
+                ImageFormat::Rgba32Float => color.extend([c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), 1f32.to_bits()]),
+                ImageFormat::Rgba16Float => {
+                    color.extend([f32_to_f16(c[0]) | (f32_to_f16(c[1]) << 16), f32_to_f16(c[2]) | (f32_to_f16(1.0) << 16)])
+                }
+                ImageFormat::B10G11R11Ufloat if inside => {
+                    color.push(small_float(c[0], 6) | (small_float(c[1], 6) << 11) | (small_float(c[2], 5) << 22))
+                }
+                ImageFormat::B10G11R11Ufloat => color.push(0xffff_ffff),
+                other => panic!("{other} is no colour format"),
+            }
+            let d = if z.is_infinite() && case.encoding == DepthEncoding::Linear {
+                f64::INFINITY
+            } else {
+                depth_buffer_value(case.encoding, z)
+            };
+            depth.push(if case.depth.is_unorm24() {
+                // The stencil (or X8 junk) in the high byte, which the depth aspect's copy leaves undefined.
+                (d * 16_777_215.0).round() as u32 | 0xa5 << 24
+            } else {
+                (d as f32).to_bits()
+            });
+        }
+    }
+    (color, depth)
+}
+
+/// The kernels' parameters for decoding `case`'s images.
+fn io_params(case: &Case) -> FrameIoParams {
+    let (depth_encoding, near, far) = match case.encoding {
+        DepthEncoding::Linear => (DEPTH_LINEAR, 0.0, 0.0),
+        DepthEncoding::Standard { near, far } => (DEPTH_STANDARD, near, far),
+        DepthEncoding::Reversed { near, far } => (DEPTH_REVERSED, near, far),
+    };
+    let depth_format = if case.depth.is_unorm24() { DEPTH_UNORM24 } else { DEPTH_F32 };
+    FrameIoParams {
+        width: W,
+        height: H,
+        color_words: case.color.words_per_pixel() as u32,
+        depth_encoding,
+        near,
+        far,
+        layers: 1,
+        depth_format,
+    }
+}
+
+/// The frame's input decoded on the host with the shader crate's functions (one slot a pixel: red,
+/// green, blue, view depth), after checking it against the scene to the format's precision.
+fn decoded_input(case: &Case) -> Vec<u32> {
+    let (color, depth) = texels(case);
+    let (colors, depths) = scene(case.encoding);
+    let p = io_params(case);
+    let wpp = case.color.words_per_pixel() as usize;
+    let mut slots = Vec::new();
+    for y in 0..H as usize {
+        for x in 0..W as usize {
+            let t = y * case.image[0] as usize + x;
+            let c = match case.color {
+                ImageFormat::Rgba32Float => [0, 1, 2].map(|k| f32::from_bits(color[wpp * t + k])),
+                ImageFormat::Rgba16Float => {
+                    let (rg, ba) = (color[wpp * t], color[wpp * t + 1]);
+                    [f16_to_f32(rg & 0xffff), f16_to_f32(rg >> 16), f16_to_f32(ba & 0xffff)]
+                }
+                _ => b10g11r11_to_f32(color[t]),
+            };
+            let z = view_depth(&p, depth_value(&p, depth[t]));
+            let (want_c, want_z) = (colors[y * W as usize + x], depths[y * W as usize + x]);
+            let ulp = match case.color {
+                ImageFormat::Rgba32Float => [0.0; 3],
+                ImageFormat::Rgba16Float => [2f32.powi(-11); 3],
+                _ => [2f32.powi(-7), 2f32.powi(-7), 2f32.powi(-6)],
+            };
+            for k in 0..3 {
+                assert!(
+                    (c[k] - want_c[k]).abs() <= want_c[k] * ulp[k] * 1.0001,
+                    "{case:?} pixel ({x}, {y}) channel {k}: {} for {}",
+                    c[k],
+                    want_c[k]
+                );
+            }
+            let tolerance = want_z * (want_z / NEAR) * 2f32.powi(-22);
+            assert!(
+                z == want_z || (z - want_z).abs() <= tolerance,
+                "{case:?} pixel ({x}, {y}): view depth {z} for {want_z} (tolerance {tolerance})"
+            );
+            slots.extend([c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]);
+        }
+    }
+    slots
+}
+
+fn context(b: &mut dyn Backend) -> Box<dyn DofContext> {
+    let mut desc = ContextDesc::new(Extent::new(W, H, 1), MethodOptions::default());
+    desc.image_io = true;
+    (registry::method(METHOD).unwrap().create)(b, &desc).unwrap()
+}
+
+fn frame(input: FrameInput, output: BufferId) -> Frame {
+    Frame { width: W, height: H, lens: dof::stress::test_lens(0.01), input, output: FrameOutput::Buffer(output) }
+}
+
+/// Buffers of the reference frame: its decoded input, its counts, and two outputs.
+fn buffers(b: &mut dyn Backend) -> [BufferId; 4] {
+    let pixels = (W * H) as u64;
+    let bufs = [4 * pixels, pixels, 3 * pixels, 3 * pixels].map(|w| b.create_buffer(w, "test").unwrap());
+    b.write_buffer(bufs[1], 0, &vec![1; pixels as usize]).unwrap();
+    bufs
+}
+
+fn floats(words: &[u32]) -> Vec<f32> {
+    words.iter().map(|&w| f32::from_bits(w)).collect()
+}
+
+#[test]
+fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_the_cpu() {
+    let mut cpu = CpuBackend::new();
+    let mut ctx = context(&mut cpu);
+    let [fragments, counts, from_images, from_buffers] = buffers(&mut cpu);
+    for case in cases() {
+        let (color_texels, depth_texels) = texels(&case);
+        let color = cpu.create_image(case.color, case.image).unwrap();
+        let depth = cpu.create_image(case.depth, case.image).unwrap();
+        cpu.write_image(&color, &color_texels).unwrap();
+        cpu.write_image(&depth, &depth_texels).unwrap();
+        cpu.write_buffer(fragments, 0, &decoded_input(&case)).unwrap();
+        ctx.record(&mut cpu, &frame(FrameInput::Images { color, depth, encoding: case.encoding }, from_images)).unwrap();
+        ctx.record(&mut cpu, &frame(FrameInput::Layers { fragments, counts, layers: 1 }, from_buffers)).unwrap();
+        cpu.submit().unwrap();
+        let (a, b) =
+            (cpu.read_buffer(from_images, 0, 3 * (W * H) as u64).unwrap(), cpu.read_buffer(from_buffers, 0, 3 * (W * H) as u64).unwrap());
+        assert!(a == b, "{case:?}: the frame from images differs from the frame of its decoded input");
+        assert!(floats(&a).iter().all(|v| v.is_finite()) && floats(&a).iter().any(|&v| v > 0.0), "{case:?}: an empty frame");
+        cpu.destroy_image(&color);
+        cpu.destroy_image(&depth);
+    }
+    ctx.destroy(&mut cpu);
+}
+
+/// Refusals name the format: a depth format given as colour, a colour format as depth, a depth
+/// attachment read as linear depth, a Vulkan format the frame API does not copy.
+#[test]
+fn refused_formats_name_themselves() {
+    let mut cpu = CpuBackend::new();
+    let mut ctx = context(&mut cpu);
+    let [.., out, _] = buffers(&mut cpu);
+    let image = |cpu: &mut CpuBackend, f| cpu.create_image(f, [W, H]).unwrap();
+    let (rgba, d32, d24) =
+        (image(&mut cpu, ImageFormat::Rgba16Float), image(&mut cpu, ImageFormat::D32Float), image(&mut cpu, ImageFormat::D24UnormS8Uint));
+    let reversed = DepthEncoding::Reversed { near: NEAR, far: FAR };
+    let refused = |ctx: &mut Box<dyn DofContext>, cpu: &mut CpuBackend, color, depth, encoding| -> String {
+        let before = cpu.counters();
+        let e = ctx.record(cpu, &frame(FrameInput::Images { color, depth, encoding }, out)).unwrap_err().to_string();
+        assert_eq!(cpu.counters().since(&before).commands, 0, "refused before any command: {e}");
+        e
+    };
+    let e = refused(&mut ctx, &mut cpu, d32, d24, reversed);
+    assert!(e.contains("colour") && e.contains("D32_SFLOAT"), "{e}");
+    let e = refused(&mut ctx, &mut cpu, rgba, rgba, reversed);
+    assert!(e.contains("depth") && e.contains("R16G16B16A16_SFLOAT"), "{e}");
+    let e = refused(&mut ctx, &mut cpu, rgba, d24, DepthEncoding::Linear);
+    assert!(e.contains("D24_UNORM_S8_UINT") && e.contains("Standard"), "{e}");
+    let small = cpu.create_image(ImageFormat::D32Float, [W, H - 1]).unwrap();
+    let e = refused(&mut ctx, &mut cpu, rgba, small, reversed);
+    assert!(e.contains("smaller"), "{e}");
+    let e = ImageRef::describe(vk::Image::null(), vk::Format::B8G8R8A8_UNORM, [W, H]).unwrap_err().to_string();
+    assert!(e.contains("B8G8R8A8_UNORM") && e.contains("D24_UNORM_S8_UINT") && e.contains("B10G11R11_UFLOAT_PACK32"), "{e}");
+    // The same frame with its formats in their places is recorded.
+    ctx.record(&mut cpu, &frame(FrameInput::Images { color: rgba, depth: d32, encoding: reversed }, out)).unwrap();
+    ctx.destroy(&mut cpu);
+}
+
+#[test]
+fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
+    let Some(mut r) = Renderer::new() else { return };
+    // SAFETY: the renderer's live handles outlive the backend, which is dropped (after its work
+    // completed) before the renderer destroys anything; the device enables what the backend needs.
+    let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
+    let mut ctx = context(&mut vk);
+    let [fragments, counts, from_images, from_buffers] = buffers(&mut vk);
+    let mut unsupported = Vec::new();
+    for format in ImageFormat::ALL {
+        let f = r.format_features(format.vk_format());
+        let copies = [vk::FormatFeatureFlags::TRANSFER_SRC, vk::FormatFeatureFlags::TRANSFER_DST].map(|t| f.contains(t));
+        eprintln!("{format}: transfer source {}, destination {}", copies[0], copies[1]);
+    }
+    for case in cases() {
+        let src = vk::FormatFeatureFlags::TRANSFER_SRC;
+        let missing: Vec<ImageFormat> =
+            [case.color, case.depth].into_iter().filter(|f| !r.format_features(f.vk_format()).contains(src)).collect();
+        let (color_texels, depth_texels) = texels(&case);
+        let color_image = r.image(case.color, case.image);
+        let depth_image = r.image(case.depth, case.image);
+        let color_staging = r.host_buffer(4 * color_texels.len() as u64);
+        let depth_staging = r.host_buffer(4 * depth_texels.len() as u64);
+        Renderer::write(&color_staging, &color_texels);
+        Renderer::write(&depth_staging, &depth_texels);
+        vk.write_buffer(fragments, 0, &decoded_input(&case)).unwrap();
+        // The renderer's passes leave colour sampled-from and depth as a depth attachment.
+        let (color_layout, color_stage, color_access) =
+            (vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL, vk::PipelineStageFlags::FRAGMENT_SHADER, vk::AccessFlags::SHADER_READ);
+        let (depth_layout, depth_stage, depth_access) = if case.depth.is_depth() {
+            (
+                vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                vk::PipelineStageFlags::LATE_FRAGMENT_TESTS,
+                vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_WRITE,
+            )
+        } else {
+            (color_layout, color_stage, color_access)
+        };
+        r.begin();
+        r.upload_image(&color_staging, color_image, case.color, case.image, color_layout, color_stage, color_access);
+        r.upload_image(&depth_staging, depth_image, case.depth, case.image, depth_layout, depth_stage, depth_access);
+        let describe = |image, format: ImageFormat, layout, stage, access| {
+            let desc = ImageRef::describe(image, format.vk_format(), case.image).unwrap().in_layout(layout).after(stage, access);
+            // SAFETY: the renderer's live image of this format and extent, with transfer usage, in
+            // `layout` when the frame runs (its upload's barrier leaves it there).
+            unsafe { desc.build() }
+        };
+        let color = describe(color_image, case.color, color_layout, color_stage, color_access);
+        let depth = describe(depth_image, case.depth, depth_layout, depth_stage, depth_access);
+        // SAFETY: the renderer's command buffer is recording, outside a render pass.
+        unsafe { vk.begin_external(r.cb) }.expect("begin_external");
+        let recorded = ctx.record(&mut vk, &frame(FrameInput::Images { color, depth, encoding: case.encoding }, from_images));
+        if !missing.is_empty() {
+            let e = recorded.unwrap_err().to_string();
+            assert!(missing.iter().all(|f| e.contains(&f.to_string())), "{case:?}: {e}");
+            unsupported.push(format!("{case:?}: {e}"));
+            vk.end_external().unwrap();
+            r.submit_and_wait();
+            continue;
+        }
+        recorded.unwrap_or_else(|e| panic!("{case:?}: {e}"));
+        ctx.record(&mut vk, &frame(FrameInput::Layers { fragments, counts, layers: 1 }, from_buffers)).unwrap();
+        vk.end_external().unwrap();
+        r.submit_and_wait();
+        let a = floats(&vk.read_buffer(from_images, 0, 3 * (W * H) as u64).unwrap());
+        let b = floats(&vk.read_buffer(from_buffers, 0, 3 * (W * H) as u64).unwrap());
+        let worst = a.iter().zip(&b).map(|(x, y)| (x - y).abs() / y.abs().max(1.0)).fold(0.0f32, f32::max);
+        assert!(worst <= 1e-4, "{case:?}: the frame from images differs from the frame of its decoded input by {worst} (relative)");
+        assert!(a.iter().all(|v| v.is_finite()) && a.iter().any(|&v| v > 0.0), "{case:?}: an empty frame");
+        assert_no_messages(r.messages(), &format!("in {case:?}"));
+    }
+    for line in &unsupported {
+        eprintln!("not copyable on this device, refused by name: {line}");
+    }
+    ctx.destroy(&mut vk);
+    [fragments, counts, from_images, from_buffers].into_iter().for_each(|id| vk.destroy_buffer(id));
+    drop(vk);
+    assert_no_messages(r.finish(), "when the renderer destroyed its device");
+}
+
+/// The share of a 1280x720 multi-layer frame that bringing an RGBA16F colour and a D32 depth image
+/// in takes (the two copies and the conversion kernel), from the frame's own per-command times.
+fn input_share(times: &[dof::backend::CommandTime]) -> (f64, f64) {
+    let input: f64 = times.iter().filter(|t| t.label.starts_with("frame/input")).map(|t| t.ms).sum();
+    let total: f64 = times.iter().map(|t| t.ms).sum();
+    for stage in ["frame/input-color", "frame/input-depth", "frame/input"] {
+        assert!(times.iter().any(|t| t.label == stage && t.ms.is_finite() && t.ms >= 0.0), "{stage} not timed: {times:?}");
+    }
+    (input, total)
+}
+
+const COST: [u32; 2] = [1280, 720];
+
+fn cost_context(b: &mut dyn Backend) -> Box<dyn DofContext> {
+    let mut desc = ContextDesc::new(Extent::new(COST[0], COST[1], 1), MethodOptions::default());
+    desc.image_io = true;
+    (registry::method(METHOD).unwrap().create)(b, &desc).unwrap()
+}
+
+fn cost_texels() -> (Vec<u32>, Vec<u32>) {
+    let pixels = (COST[0] * COST[1]) as usize;
+    let color = (0..pixels).flat_map(|i| [f32_to_f16(0.5 + (i % 7) as f32) | (f32_to_f16(1.0) << 16), f32_to_f16(2.0)]).collect();
+    let depth = (0..pixels).map(|i| (0.005 + 0.2 * (i % 97) as f32 / 97.0).to_bits()).collect();
+    (color, depth)
+}
+
+/// A measurement (run with `--ignored --nocapture`): prints the input's share of the frame.
+#[test]
+#[ignore]
+fn image_input_cost_at_720p_on_the_cpu() {
+    let mut cpu = CpuBackend::new();
+    let mut ctx = cost_context(&mut cpu);
+    let out = cpu.create_buffer(3 * (COST[0] * COST[1]) as u64, "out").unwrap();
+    let (color_texels, depth_texels) = cost_texels();
+    let color = cpu.create_image(ImageFormat::Rgba16Float, COST).unwrap();
+    let depth = cpu.create_image(ImageFormat::D32Float, COST).unwrap();
+    cpu.write_image(&color, &color_texels).unwrap();
+    cpu.write_image(&depth, &depth_texels).unwrap();
+    let f = Frame {
+        width: COST[0],
+        height: COST[1],
+        lens: dof::stress::test_lens(0.01),
+        input: FrameInput::Images { color, depth, encoding: DepthEncoding::Reversed { near: 0.1, far: f32::INFINITY } },
+        output: FrameOutput::Buffer(out),
+    };
+    for run in 0..3 {
+        ctx.record(&mut cpu, &f).unwrap();
+        let (input, total) = input_share(&cpu.submit().unwrap());
+        println!("cpu 1280x720 run {run}: image input {input:.2} ms of {total:.2} ms ({:.1}%)", 100.0 * input / total);
+    }
+    ctx.destroy(&mut cpu);
+}
+
+/// As above on the Vulkan device (lavapipe here), recorded into a renderer's command buffer.
+#[test]
+#[ignore]
+fn image_input_cost_at_720p_on_vulkan() {
+    let Some(mut r) = Renderer::new() else { return };
+    // SAFETY: as in the tests above.
+    let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
+    let mut ctx = cost_context(&mut vk);
+    let out = vk.create_buffer(3 * (COST[0] * COST[1]) as u64, "out").unwrap();
+    let (color_texels, depth_texels) = cost_texels();
+    let (color_image, depth_image) = (r.image(ImageFormat::Rgba16Float, COST), r.image(ImageFormat::D32Float, COST));
+    let (color_staging, depth_staging) = (r.host_buffer(4 * color_texels.len() as u64), r.host_buffer(4 * depth_texels.len() as u64));
+    Renderer::write(&color_staging, &color_texels);
+    Renderer::write(&depth_staging, &depth_texels);
+    let ro = (vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL, vk::PipelineStageFlags::FRAGMENT_SHADER, vk::AccessFlags::SHADER_READ);
+    r.begin();
+    r.upload_image(&color_staging, color_image, ImageFormat::Rgba16Float, COST, ro.0, ro.1, ro.2);
+    r.upload_image(&depth_staging, depth_image, ImageFormat::D32Float, COST, ro.0, ro.1, ro.2);
+    r.submit_and_wait();
+    let describe = |image, format: vk::Format| {
+        // SAFETY: the renderer's live images, with transfer usage, in SHADER_READ_ONLY_OPTIMAL.
+        unsafe { ImageRef::describe(image, format, COST).unwrap().in_layout(ro.0).build() }
+    };
+    let f = Frame {
+        width: COST[0],
+        height: COST[1],
+        lens: dof::stress::test_lens(0.01),
+        input: FrameInput::Images {
+            color: describe(color_image, vk::Format::R16G16B16A16_SFLOAT),
+            depth: describe(depth_image, vk::Format::D32_SFLOAT),
+            encoding: DepthEncoding::Reversed { near: 0.1, far: f32::INFINITY },
+        },
+        output: FrameOutput::Buffer(out),
+    };
+    for run in 0..3 {
+        r.begin();
+        // SAFETY: the renderer's command buffer is recording, outside a render pass.
+        unsafe { vk.begin_external(r.cb) }.unwrap();
+        ctx.record(&mut vk, &f).unwrap();
+        vk.end_external().unwrap();
+        r.submit_and_wait();
+        let times = vk.take_external_times().unwrap().expect("the frame completed");
+        let (input, total) = input_share(&times);
+        println!("{} 1280x720 run {run}: image input {input:.2} ms of {total:.2} ms ({:.1}%)", vk.device_name(), 100.0 * input / total);
+    }
+    ctx.destroy(&mut vk);
+    vk.destroy_buffer(out);
+    drop(vk);
+    assert_no_messages(r.finish(), "in the measurement");
+}

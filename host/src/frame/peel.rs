@@ -15,12 +15,12 @@
 
 use super::context::ContextReport;
 use super::io::Owned;
-use crate::backend::{Backend, BufferId, groups_for, push_words};
+use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{
     APPEND_ARGS, ARGS_WORDS, BandParams, PEEL_APPEND, PEEL_BAND, PEEL_BAND_END, PEEL_EDGES, PEEL_MASK, PEEL_PLAN, PEEL_SPAN, PeelParams,
-    SHADE_ARGS, SLOT_WORDS,
+    SHADE_ARGS, SLOT_WORDS, peel_append, peel_band, peel_band_end, peel_edges, peel_mask, peel_plan, peel_span,
 };
 use dof_shaders::raster::shade::{LAYER_WORDS, RASTER_SHADE};
 
@@ -130,8 +130,8 @@ impl PeelSlots {
         self.width as u64 * self.height as u64
     }
 
-    fn params(&self, pass: u32, draw_vertices: u32, lens: ThinLens, edge_depth_ratio: f32, disocclusion: bool) -> Vec<u32> {
-        push_words(&PeelParams {
+    fn params(&self, pass: u32, draw_vertices: u32, lens: ThinLens, edge_depth_ratio: f32, disocclusion: bool) -> PeelParams {
+        PeelParams {
             lens,
             width: self.width,
             height: self.height,
@@ -143,7 +143,7 @@ impl PeelSlots {
             shade_groups: groups_for(&RASTER_SHADE, self.pixels())[0],
             append_groups: groups_for(&PEEL_APPEND, self.pixels())[0],
             _pad: [0; 3],
-        })
+        }
     }
 
     /// Where the shading pass's indirect dispatch arguments lie in [`Self::args`].
@@ -164,15 +164,15 @@ impl PeelSlots {
     /// `draw_vertices` vertices.
     pub fn plan(&self, backend: &mut dyn Backend, pass: u32, draw_vertices: u32) -> Result<()> {
         let params = self.params(pass, draw_vertices, ThinLens::default(), 0.0, false);
-        backend.dispatch(&PEEL_PLAN, [1, 1, 1], &[self.found, self.args, self.passes], &params, "peel/plan")
+        backend.run(peel_plan::Bindings { found: self.found, args: self.args, passes: self.passes }, [1, 1, 1], &params, "peel/plan")
     }
 
     /// Appends pass `pass`'s shaded layer ([`Self::layer`]) into the slots (indirect: nothing when
     /// the pass was not drawn).
     pub fn append(&self, backend: &mut dyn Backend, pass: u32) -> Result<()> {
         let params = self.params(pass, 0, ThinLens::default(), 0.0, false);
-        let bound = [self.layer, self.fragments, self.counts, self.found];
-        backend.dispatch_indirect(&PEEL_APPEND, self.args, APPEND_ARGS as u64, &bound, &params, "peel/append")
+        let bound = peel_append::Bindings { layer: self.layer, fragments: self.fragments, counts: self.counts, found: self.found };
+        backend.run_indirect(bound, self.args, APPEND_ARGS as u64, &params, "peel/append")
     }
 
     /// Ends a frame: the disocclusion buffer from the front slots and `lens`, applied when
@@ -180,19 +180,20 @@ impl PeelSlots {
     pub fn finish(&self, backend: &mut dyn Backend, lens: ThinLens, edge_depth_ratio: f32, disocclusion: bool) -> Result<()> {
         let params = self.params(self.layers, 0, lens, edge_depth_ratio, disocclusion);
         let groups = groups_for(&PEEL_EDGES, self.pixels());
-        backend.dispatch(&PEEL_EDGES, groups, &[self.fragments, self.counts, self.edge, self.widest], &params, "peel/mask")?;
-        backend.dispatch(&PEEL_SPAN, groups, &[self.edge, self.widest, self.span], &params, "peel/mask")?;
-        let bound = [self.span, self.widest, self.mask, self.fragments, self.counts];
-        backend.dispatch(&PEEL_MASK, groups, &bound, &params, "peel/mask")
+        let edges = peel_edges::Bindings { fragments: self.fragments, counts: self.counts, edge: self.edge, widest: self.widest };
+        backend.run(edges, groups, &params, "peel/mask")?;
+        backend.run(peel_span::Bindings { edge: self.edge, widest: self.widest, span: self.span }, groups, &params, "peel/mask")?;
+        let mask =
+            peel_mask::Bindings { span: self.span, widest: self.widest, mask: self.mask, fragments: self.fragments, counts: self.counts };
+        backend.run(mask, groups, &params, "peel/mask")
     }
 
     /// Records the guard band the view of `params` needs, from `triangles` triangles of a mesh
     /// (its vertex and triangle buffers), and counts the frame when it exceeds `params.margin`.
     pub fn band(&self, backend: &mut dyn Backend, vertices: BufferId, triangles: BufferId, params: &BandParams) -> Result<()> {
-        let words = push_words(params);
         let groups = groups_for(&PEEL_BAND, params.triangles as u64);
-        backend.dispatch(&PEEL_BAND, groups, &[vertices, triangles, self.band], &words, "peel/band")?;
-        backend.dispatch(&PEEL_BAND_END, [1, 1, 1], &[self.band], &words, "peel/band")
+        backend.run(peel_band::Bindings { vertices, triangles, band: self.band }, groups, params, "peel/band")?;
+        backend.run(peel_band_end::Bindings { band: self.band }, [1, 1, 1], params, "peel/band")
     }
 
     /// What the last frame's passes did (reads the device: once the frame completed).

@@ -347,3 +347,32 @@ fn the_viewer_refuses_bad_input_clearly() {
     assert!(err.contains("no screenshot was written"), "the failure does not say why: {err}");
     assert!(!never.exists());
 }
+
+/// With the camera orbiting every frame, a mesh scene's layers are peeled on the device in the
+/// frame's command buffer: the library allocates, uploads, reads back and submits nothing of its
+/// own in a frame that remade nothing, and validation stays silent.
+#[test]
+fn an_orbiting_mesh_scene_peels_on_the_device_with_no_transfers() {
+    let script = ["orbit=4"; 8].join(",");
+    let out = view(&[
+        "--scene",
+        "fence",
+        "--width",
+        "192",
+        "--height",
+        "108",
+        "--validation",
+        "--hide-ui",
+        "--frames",
+        "10",
+        "--script",
+        &script,
+    ]);
+    let text = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    assert!(out.status.success(), "{text}");
+    assert!(text.contains("validation: 0 message(s)"), "{text}");
+    let line = text.lines().find(|l| l.starts_with("library work per frame over")).expect("the steady frames' counters");
+    let frames: u32 = line.split_whitespace().nth(5).and_then(|n| n.parse().ok()).expect("a frame count");
+    assert!(frames >= 8, "{line}");
+    assert!(line.contains(": 0 allocations, 0 uploads, 0 readbacks, 0 submissions of its own"), "{line}");
+}

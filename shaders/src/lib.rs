@@ -20,6 +20,7 @@ pub mod keys;
 pub mod layered;
 pub mod lens;
 pub mod math;
+pub mod peel;
 pub mod raster;
 pub mod raytrace;
 pub mod ring_gather;
@@ -45,6 +46,7 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .chain(layered::KERNELS.iter())
         .chain(bokeh::KERNELS.iter())
         .chain(raster::KERNELS.iter())
+        .chain(peel::KERNELS.iter())
         .chain(frame_io::KERNELS.iter())
         .chain(tonemap::KERNELS.iter())
         .copied()

@@ -1,6 +1,10 @@
 //! `dof bench frame`: what a frame of the frame API costs, frame after frame: CPU time to record,
 //! device time per stage, the context's device memory, and per frame the allocations, submissions
 //! and host readbacks (from the backend's counters, so hidden ones count too).
+//!
+//! With `--orbit DEG` the multi-layer input is made anew every frame by depth peeling on the device
+//! (`raster::MeshPeelContext`, Franke et al. 2018, §4.1-4.3), recorded into the same submission as
+//! the depth of field, the camera turning DEG degrees a frame about the point in focus.
 
 use super::render::BackendArg;
 use anyhow::Context;
@@ -10,9 +14,11 @@ use dof::layers::LayeredImage;
 use dof::methods::buffers::slot_words;
 use dof::methods::one_shot;
 use dof::methods::splat::Merge;
-use dof::scene::{self, GuardBand, LayerOptions, raycast_layers};
+use dof::raster::{MeshPeelContext, MeshPeelDesc, default_near, peel_layers};
+use dof::scene::{self, Aperture, Camera, Focus, GuardBand, LayerOptions, LensSettings, MeshScene, raycast_layers};
 use dof_shaders::lens::ThinLens;
 use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 #[derive(clap::Args)]
@@ -25,9 +31,26 @@ pub struct FrameArgs {
     merge: Merge,
     #[arg(long, value_enum, default_value_t = BackendArg::Cpu)]
     backend: BackendArg,
-    /// A built-in scene, ray cast once into the multi-layer input (no guard band: a renderer's frame).
+    /// A built-in scene or a glTF file (`.gltf`, `.glb`, seen by its first camera). Without
+    /// `--orbit`, made once into the multi-layer input (ray cast, or depth-peeled on the host; no
+    /// guard band: a renderer's frame).
     #[arg(long, default_value = "railing")]
     scene: String,
+    /// Make the layers anew every frame by depth peeling on the device, in the frame's submission,
+    /// the camera turning this many degrees a frame about the point in focus (-360 to 360; 0: a
+    /// still camera, layers still made every frame). The guard band is the automatic one of the
+    /// first view, fixed for the run.
+    #[arg(long, allow_negative_numbers = true)]
+    orbit: Option<f32>,
+    /// The focus distance (planar, scene units), as in `dof render`.
+    #[arg(long, allow_negative_numbers = true)]
+    focus: Option<f32>,
+    /// The aperture radius (scene units), as in `dof render`.
+    #[arg(long, allow_negative_numbers = true)]
+    aperture_radius: Option<f32>,
+    /// Write the last frame, cut to the frame, to this EXR file.
+    #[arg(long)]
+    out: Option<PathBuf>,
     #[arg(long, default_value_t = 1280)]
     width: u32,
     #[arg(long, default_value_t = 720)]
@@ -60,25 +83,30 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             anyhow::bail!("{flag} must be between 1 and {MAX_EDGE} px, got {v}");
         }
     }
-    let builtin = scene::builtin(&args.scene)?;
-    let mut camera = builtin.camera;
-    camera.width = args.width;
-    camera.height = args.height;
-    let lens = builtin.lens.thin_lens(&camera)?;
-    let layer_options = LayerOptions { guard_band: GuardBand::Off, ..Default::default() };
-    let layered = raycast_layers(&builtin.scene, &camera, &lens, &layer_options)?;
+    check_view_flags(args)?;
     let method = dof::frame::registry::method(&args.method)?;
-    let image = match method.reads {
-        Reads::AllLayers => layered.layers,
-        Reads::FrontLayer => layered.layers.front_layer(),
-    };
     let options = MethodOptions { splat: SplatOptions { merge: args.merge, ..Default::default() }, ..Default::default() };
+    let view = SceneView::new(args)?;
     let mut backend = super::render::backend(args.backend)?;
     let b = backend.as_mut();
-    let measured = if args.one_shot {
-        one_shot(b, method, &image, &lens, &options, args.frames)?
-    } else {
-        framed(b, method, &image, &lens, &options, args.frames)?
+    let (measured, size, layers) = match args.orbit {
+        Some(deg) => {
+            let m = orbiting(b, method, &view, &options, args.frames, deg, args.out.as_deref())?;
+            (m, [view.camera.width, view.camera.height], LayerOptions::default().max_layers)
+        }
+        None => {
+            let layered = view.layers(b)?;
+            let image = match method.reads {
+                Reads::AllLayers => layered,
+                Reads::FrontLayer => layered.front_layer(),
+            };
+            let m = if args.one_shot {
+                one_shot(b, method, &image, &view.lens, &options, args.frames)?
+            } else {
+                framed(b, method, &image, &view.lens, &options, args.frames, args.out.as_deref())?
+            };
+            (m, [image.width, image.height], image.max_layers)
+        }
     };
     let per_frame = |n: u64| n as f64 / args.frames as f64;
     let c = measured.counters;
@@ -86,13 +114,17 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         let json = serde_json::json!({
             "method": method.name,
             "merge": args.merge.name(),
-            "path": if args.one_shot { "one-shot" } else { "frame-api" },
+            "path": if args.one_shot { "one-shot" } else if args.orbit.is_some() { "frame-api+device-peel" } else { "frame-api" },
+            "orbit_deg": args.orbit,
             "scene": args.scene,
             "backend": b.kind().to_string(),
             "device": b.device_name(),
-            "width": image.width,
-            "height": image.height,
-            "layers": image.max_layers,
+            "width": size[0],
+            "height": size[1],
+            "layers": layers,
+            "guard_band_px": measured.margin,
+            "guard_band_needed_px_last_frame": measured.band.map(|b| b.0),
+            "guard_band_exceeded_frames": measured.band.map(|b| b.1),
             "frames": args.frames,
             "allocations_per_frame": per_frame(c.allocations),
             "submits_per_frame": per_frame(c.submissions),
@@ -100,6 +132,11 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "uploads_per_frame": per_frame(c.uploads),
             "cpu_record_ms": measured.record_ms,
             "gpu_ms": measured.gpu_ms,
+            "peel_passes_per_frame": measured.peel_passes as f64 / args.frames as f64,
+            "peel_ms": measured.peel_ms,
+            "peel_passes_drawn_last_frame": measured.peel_drawn.map(|d| d.0),
+            "peel_passes_with_surface_last_frame": measured.peel_drawn.map(|d| d.1),
+            "dof_ms": measured.gpu_ms - measured.peel_ms,
             "stage_ms": measured.stages,
             "device_bytes": measured.device_bytes,
             "peak_device_bytes": c.peak_device_bytes,
@@ -117,11 +154,17 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         args.merge.name(),
         b.kind(),
         b.device_name(),
-        image.width,
-        image.height,
-        image.max_layers,
+        size[0],
+        size[1],
+        layers,
         args.frames,
-        if args.one_shot { "one-shot path" } else { "frame API" }
+        if args.one_shot {
+            "one-shot path"
+        } else if args.orbit.is_some() {
+            "frame API, layers peeled on the device every frame"
+        } else {
+            "frame API"
+        }
     );
     println!(
         "per frame: {:.2} allocations, {:.2} submissions, {:.2} readbacks, {:.2} uploads",
@@ -136,6 +179,16 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         if b.kind() == dof::backend::BackendKind::Cpu { " (the CPU backend runs the kernels as it records)" } else { "" }
     );
     println!("device time per frame: {:.3} ms", measured.gpu_ms);
+    if args.orbit.is_some() {
+        println!(
+            "  peeling {:.3} ms ({:.1} passes recorded a frame; the last frame's drawn and with a surface: {:?}; guard band {} px), depth of field {:.3} ms",
+            measured.peel_ms,
+            measured.peel_passes as f64 / args.frames as f64,
+            measured.peel_drawn.unwrap_or_default(),
+            measured.margin,
+            measured.gpu_ms - measured.peel_ms
+        );
+    }
     for (stage, ms) in &measured.stages {
         println!("  {stage:<22} {ms:>9.3} ms");
     }
@@ -160,6 +213,16 @@ struct Measured {
     overflow_tiles: u64,
     list_entries: u64,
     list_pool: u64,
+    /// Device time of the peel's commands per frame (labels `peel/...`), part of `gpu_ms`.
+    peel_ms: f64,
+    /// Peel passes recorded over all timed frames.
+    peel_passes: u64,
+    /// The guard band of the device peel's image (0 without `--orbit`).
+    margin: u32,
+    /// The last frame's peel passes that drew and that found a surface (`--orbit`).
+    peel_drawn: Option<(u32, u32)>,
+    /// The band the last frame's view needed, and the frames that needed more than the image has.
+    band: Option<(u32, u32)>,
 }
 
 impl Measured {
@@ -172,6 +235,7 @@ impl Measured {
         report: &ContextReport,
     ) -> Self {
         let figure = |name: &str| report.figures.get(name).copied().unwrap_or(0.0) as u64;
+        let peel_ms = stages.iter().filter(|(l, _)| l.starts_with("peel/")).map(|(_, ms)| ms).sum();
         Measured {
             counters,
             record_ms,
@@ -181,6 +245,11 @@ impl Measured {
             overflow_tiles: report.overflow,
             list_entries: figure("list_entries"),
             list_pool: figure("list_pool"),
+            peel_ms,
+            peel_passes: 0,
+            margin: 0,
+            peel_drawn: None,
+            band: None,
         }
     }
 }
@@ -205,6 +274,7 @@ fn framed(
     lens: &ThinLens,
     options: &MethodOptions,
     frames: u32,
+    out: Option<&Path>,
 ) -> anyhow::Result<Measured> {
     let pixels = image.width as u64 * image.height as u64;
     let input = slot_words(image);
@@ -231,7 +301,9 @@ fn framed(
     let report = ctx.report(b).context("reading the last frame's report")?;
     let device_bytes = ctx.device_bytes();
     ctx.destroy(b);
+    let written = out.map(|out| write_last(b, bufs[2], [image.width, image.height], 0, out)).transpose();
     bufs.into_iter().for_each(|id| b.destroy_buffer(id));
+    written?;
     Ok(Measured::new(counters, record_ms, gpu_ms, stages, device_bytes, &report))
 }
 
@@ -258,4 +330,176 @@ fn one_shot(
     let counters = b.counters().since(&before);
     let last = last.context("no frame ran")?;
     Ok(Measured::new(counters, record_ms, gpu_ms, stages, last.buffer_bytes, &last.report))
+}
+
+/// Checks the view flags before anything is loaded or made.
+fn check_view_flags(args: &FrameArgs) -> anyhow::Result<()> {
+    if let Some(d) = args.orbit.filter(|d| !(d.abs() <= 360.0)) {
+        anyhow::bail!("--orbit (degrees per frame) must lie between -360 and 360, got {d}");
+    }
+    if let Some(f) = args.focus.filter(|f| !(f.is_finite() && *f > 0.0)) {
+        anyhow::bail!("--focus (the focus distance) must be a positive finite number, got {f}");
+    }
+    if let Some(r) = args.aperture_radius.filter(|r| !(r.is_finite() && *r >= 0.0)) {
+        anyhow::bail!("--aperture-radius must be a finite number >= 0, got {r}");
+    }
+    if args.orbit.is_some() && args.one_shot {
+        anyhow::bail!("--orbit peels on the device inside the frame API; it does not combine with --one-shot");
+    }
+    if args.one_shot && args.out.is_some() {
+        anyhow::bail!("--out writes a frame of the frame API; it does not combine with --one-shot");
+    }
+    if let Some(out) = &args.out
+        && !out.to_string_lossy().to_lowercase().ends_with(".exr")
+    {
+        anyhow::bail!("--out must name an .exr file, got {}", out.display());
+    }
+    Ok(())
+}
+
+/// The scene of `--scene` as a mesh (a built-in one exported to glTF, as `dof scenes --raster`
+/// does) with its view and lens, and for built-ins the analytic scene too.
+struct SceneView {
+    mesh: MeshScene,
+    analytic: Option<scene::Scene>,
+    camera: Camera,
+    lens: ThinLens,
+    near: f32,
+}
+
+impl SceneView {
+    fn new(args: &FrameArgs) -> anyhow::Result<Self> {
+        let lower = args.scene.to_lowercase();
+        let lens_flags = "the lens of --focus and --aperture-radius";
+        let with_flags = |mut settings: LensSettings| {
+            if let Some(d) = args.focus {
+                settings.focus = Focus::Distance(d);
+            }
+            if let Some(r) = args.aperture_radius {
+                settings.aperture = Aperture::Radius(r);
+            }
+            settings
+        };
+        let (mesh, analytic, camera, lens, near) = if lower.ends_with(".gltf") || lower.ends_with(".glb") {
+            let mesh = scene::load_gltf(Path::new(&args.scene))?;
+            let (camera, near) = mesh.default_camera(args.width, Some(args.height)).with_context(|| args.scene.clone())?;
+            let settings = with_flags(mesh.lens_focused_at(&camera, args.focus)?);
+            let lens = settings.thin_lens(&camera).context(lens_flags)?;
+            (mesh, None, camera, lens, Some(near))
+        } else {
+            let builtin = scene::builtin(&args.scene)?;
+            let mut camera = builtin.camera;
+            camera.width = args.width;
+            camera.height = args.height;
+            let lens = with_flags(builtin.lens).thin_lens(&camera).context(lens_flags)?;
+            let mesh = if args.orbit.is_some() {
+                let glb = scene::export_glb(&builtin.scene, &builtin.camera, &scene::ExportOptions::default())?;
+                scene::load_gltf_slice(&glb)?
+            } else {
+                MeshScene::default()
+            };
+            (mesh, Some(builtin.scene), camera, lens, None)
+        };
+        let near = near.unwrap_or(default_near(lens.focus_distance));
+        Ok(SceneView { mesh, analytic, camera, lens, near })
+    }
+
+    /// The multi-layer input made once (no guard band): ray cast for a built-in scene, peeled on
+    /// the host for a glTF one.
+    fn layers(&self, b: &mut dyn Backend) -> anyhow::Result<LayeredImage> {
+        let options = LayerOptions { guard_band: GuardBand::Off, ..Default::default() };
+        Ok(match &self.analytic {
+            Some(analytic) => raycast_layers(analytic, &self.camera, &self.lens, &options)?.layers,
+            None => peel_layers(b, &self.mesh.raster(), &self.camera, &self.lens, self.near, &options)?.image.layers,
+        })
+    }
+}
+
+/// `camera` turned `deg` degrees about the vertical axis through the point `focus` ahead on its
+/// view axis (as `dof render --orbit` turns it).
+fn orbit(camera: &Camera, focus: f32, deg: f32) -> Camera {
+    let forward = (camera.target - camera.eye).normalize_or_zero();
+    let pivot = camera.eye + forward * focus;
+    let turn = glam::Quat::from_rotation_y(deg.to_radians());
+    Camera { eye: pivot + turn * (camera.eye - pivot), target: pivot + turn * (camera.target - pivot), up: turn * camera.up, ..*camera }
+}
+
+/// The device peel and the method's context, made once; then per frame the camera turned, the
+/// peel and the depth of field recorded, and one submission.
+fn orbiting(
+    b: &mut dyn Backend,
+    method: &MethodInfo,
+    view: &SceneView,
+    options: &MethodOptions,
+    frames: u32,
+    deg: f32,
+    out: Option<&Path>,
+) -> anyhow::Result<Measured> {
+    let layer_options = LayerOptions::default();
+    let desc = MeshPeelDesc::new(&layer_options, view.near);
+    let lens = view.lens;
+    let mut peel = MeshPeelContext::new(b, &view.mesh.raster(), &view.camera, &lens, &desc)?;
+    let [w, h] = peel.size();
+    let made = (|| {
+        let output = b.create_buffer(3 * w as u64 * h as u64, "bench/output")?;
+        match (method.create)(b, &ContextDesc::new(Extent::new(w, h, peel.layers()), options.clone())) {
+            Ok(ctx) => Ok((output, ctx)),
+            Err(e) => {
+                b.destroy_buffer(output);
+                Err(e)
+            }
+        }
+    })();
+    let (output, mut ctx) = match made {
+        Ok(made) => made,
+        Err(e) => {
+            peel.destroy(b);
+            return Err(e.into());
+        }
+    };
+    let frame = peel.frame(lens, dof::frame::FrameOutput::Buffer(output));
+    let run = (|| -> anyhow::Result<Measured> {
+        // A warm-up frame from the first view, then one frame per turn.
+        peel.record(b, &view.camera, &lens)?;
+        ctx.record(b, &frame)?;
+        b.submit()?;
+        let before = b.counters();
+        let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());
+        let mut passes = 0;
+        for i in 1..=frames {
+            let camera = orbit(&view.camera, lens.focus_distance, deg * i as f32);
+            let start = Instant::now();
+            peel.record(b, &camera, &lens)?;
+            ctx.record(b, &frame)?;
+            record_ms += start.elapsed().as_secs_f64() * 1e3 / frames as f64;
+            let times = b.submit()?;
+            // One shading dispatch a pass recorded, whether or not the pass drew.
+            passes += times.iter().filter(|t| t.label == "peel/shade").count() as u64;
+            gpu_ms += add_stages(&mut stages, &times, frames);
+        }
+        let counters = b.counters().since(&before);
+        let report = ctx.report(b).context("reading the last frame's report")?;
+        let mut m = Measured::new(counters, record_ms, gpu_ms, stages, ctx.device_bytes() + peel.device_bytes(), &report);
+        m.peel_passes = passes;
+        m.margin = peel.margin();
+        let last = peel.peel_report(b).context("reading the last frame's peel report")?;
+        m.peel_drawn = Some((last.drawn, last.with_surface));
+        m.band = Some((last.band_needed, last.band_exceeded_frames));
+        if let Some(out) = out {
+            write_last(b, output, [w, h], peel.margin(), out)?;
+        }
+        Ok(m)
+    })();
+    ctx.destroy(b);
+    peel.destroy(b);
+    b.destroy_buffer(output);
+    run
+}
+
+/// Reads the RGB result of the last frame, cuts `margin` pixels off every side and writes it.
+fn write_last(b: &mut dyn Backend, output: BufferId, size: [u32; 2], margin: u32, out: &Path) -> anyhow::Result<()> {
+    let image = dof::methods::buffers::read_rgb(b, output, size[0], size[1])?.crop(margin);
+    dof::io::write_exr(out, &image, &[]).with_context(|| format!("--out {}", out.display()))?;
+    eprintln!("wrote {}", out.display());
+    Ok(())
 }

@@ -40,6 +40,7 @@ pub mod gather;
 mod in_flight;
 pub mod io;
 pub mod layered;
+pub mod peel;
 pub mod raytrace;
 pub mod registry;
 pub mod ring_gather;

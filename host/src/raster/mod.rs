@@ -4,7 +4,9 @@
 //!
 //! - [`mesh`]: the mesh as the rasteriser takes it, and its upload;
 //! - [`view`]: the clip transform for a pinhole or for one lens point (sheared frustum);
-//! - [`peel`]: depth peeling with the umbra threshold, then the disocclusion buffer;
+//! - [`peel`]: depth peeling with the umbra threshold, then the disocclusion buffer (the host
+//!   oracle, reading each pass back);
+//! - [`peel_context`]: the same peel recorded on the device, frame after frame, without readback;
 //! - [`mod@accumulate`]: the accumulation-buffer reference.
 //!
 //! Both run on either backend: on Vulkan through the graphics pipeline (rust-gpu vertex and
@@ -13,9 +15,11 @@
 pub mod accumulate;
 pub mod mesh;
 pub mod peel;
+pub mod peel_context;
 pub mod view;
 
 pub use accumulate::{AccumulateOptions, Accumulated, accumulate};
 pub use mesh::{DeviceMesh, RasterScene};
 pub use peel::{Peeled, peel_layers};
+pub use peel_context::{MeshPeelContext, MeshPeelDesc};
 pub use view::{View, default_near};

@@ -12,6 +12,10 @@
 //! 4. The disocclusion buffer from the front layer ([`apply_disocclusion`]): pixels outside it keep
 //!    their front fragment only. This is the two-pass variant of §4.3 (the mask is built from the
 //!    finished front layer rather than during the peel).
+//!
+//! This is the oracle of the device path [`super::MeshPeelContext`], which records the same passes
+//! with no readback and is tested equal to it slot for slot; the per-pixel rules both apply live in
+//! `dof_shaders::peel`.
 
 use super::mesh::{DeviceMesh, RasterScene};
 use super::view::View;
@@ -21,6 +25,7 @@ use crate::layers::{Fragment, LayeredImage};
 use crate::scene::guard_band::auto_margin_mesh;
 use crate::scene::{Camera, CameraFrame, LayerOptions, MultiLayerImage, apply_disocclusion};
 use dof_shaders::lens::ThinLens;
+use dof_shaders::peel::{is_surface, slot_kept};
 use dof_shaders::raster::draw::{RASTER_DRAW, VIS_WORDS};
 use dof_shaders::raster::project::RasterParams;
 use dof_shaders::raster::shade::{LAYER, LAYER_WORDS, RASTER_SHADE, ShadeParams};
@@ -131,10 +136,30 @@ impl Pass {
 
     /// Shades the visibility buffer into `out` (a layer, or the accumulation buffer).
     pub fn shade(&self, backend: &mut dyn Backend, mesh: &DeviceMesh, params: &ShadeParams, out: BufferId, label: &str) -> Result<()> {
+        self.shade_words(backend, mesh, &push_words(params), out, None, label)
+    }
+
+    /// [`Self::shade`] from push words, over every pixel or with the workgroups read on the device
+    /// from `indirect` (buffer, word offset).
+    pub fn shade_words(
+        &self,
+        backend: &mut dyn Backend,
+        mesh: &DeviceMesh,
+        params: &[u32],
+        out: BufferId,
+        indirect: Option<(BufferId, u64)>,
+        label: &str,
+    ) -> Result<()> {
         let [v, t, m, tx, tl] = mesh.buffers;
-        let pixels = params.width as u64 * params.height as u64;
         let bound = [self.vis, v, t, m, tx, tl, out, self.reach];
-        backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &bound, &push_words(params), label)
+        match indirect {
+            Some((args, offset)) => backend.dispatch_indirect(&RASTER_SHADE, args, offset, &bound, params, label),
+            None => {
+                let p: ShadeParams = dof_shaders::exec::params(params);
+                let pixels = p.width as u64 * p.height as u64;
+                backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &bound, params, label)
+            }
+        }
     }
 }
 
@@ -178,15 +203,13 @@ pub fn peel_layers(
             let mut found = false;
             for (p, w) in words.as_chunks::<{ LAYER_WORDS as usize }>().0.iter().enumerate() {
                 let (alpha, depth) = (f32::from_bits(w[3]), f32::from_bits(w[4]));
-                // A surface, or the background where this pass saw the pixel's ray escape (coverage
-                // 1 at infinite depth; coverage 0 there means the pixel ended in an earlier pass).
-                let surface = depth.is_finite();
-                if surface || alpha > 0.0 {
+                // The device peel's rules (`dof_shaders::peel`), so both keep the same slots.
+                if slot_kept(alpha, depth) {
                     // Each pass keeps fragments strictly beyond the last, so layers arrive in order.
                     let slot = p * options.max_layers as usize + full.counts[p] as usize;
                     full.fragments[slot] = Fragment { color: [0, 1, 2].map(|j| f32::from_bits(w[j])), alpha, depth };
                     full.counts[p] += 1;
-                    found |= surface;
+                    found |= is_surface(depth);
                 }
             }
             if !found {

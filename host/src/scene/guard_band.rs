@@ -20,10 +20,9 @@ use glam::Vec3;
 use super::analytic::{Scene, Shape};
 use super::camera::{Camera, CameraFrame};
 use dof_shaders::lens::ThinLens;
+use dof_shaders::peel::nearest_in_reach;
 
-/// Widest guard band, pixels: 6 tile rings of 16 pixels, the largest CoC radius the splatting
-/// methods honour with their default tiles (larger radii are capped there anyway).
-pub const MAX_GUARD_BAND: u32 = 96;
+pub use dof_shaders::peel::MAX_GUARD_BAND;
 
 /// How wide a margin the multi-layer image gets beyond the frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -71,29 +70,27 @@ impl Reach {
         Ok(Reach { planes: [side(bl, tl), side(tr, br), side(tl, tr), side(br, bl), (wide.forward, wide.forward.dot(wide.eye) + z_min)] })
     }
 
-    /// Nearest planar depth of the convex polygon `poly` (its corners in order) inside the reach,
-    /// by clipping it against the five planes (Sutherland and Hodgman 1974); `None` if nothing is left.
-    fn nearest(&self, poly: &[Vec3], eye: Vec3, forward: Vec3) -> Option<f32> {
-        let mut cur: Vec<Vec3> = poly.to_vec();
-        for &(n, d) in &self.planes {
-            let mut next = Vec::with_capacity(cur.len() + 2);
-            for (i, &a) in cur.iter().enumerate() {
-                let b = cur[(i + 1) % cur.len()];
-                let (da, db) = (n.dot(a) - d, n.dot(b) - d);
-                if da >= 0.0 {
-                    next.push(a);
-                }
-                if (da >= 0.0) != (db >= 0.0) {
-                    next.push(a + (b - a) * (da / (da - db)));
-                }
-            }
-            cur = next;
-            if cur.is_empty() {
-                return None;
-            }
-        }
-        cur.iter().map(|p| (*p - eye).dot(forward)).reduce(f32::min)
+    /// The planes as the device takes them: `[n.x, n.y, n.z, d]`.
+    fn words(&self) -> [[f32; 4]; 5] {
+        self.planes.map(|(n, d)| [n.x, n.y, n.z, d])
     }
+
+    /// Nearest planar depth of the convex polygon `poly` (3 or 4 corners in order) inside the
+    /// reach ([`nearest_in_reach`], the device peel's rule); `None` if nothing is left.
+    fn nearest(&self, poly: &[Vec3], eye: Vec3, forward: Vec3) -> Option<f32> {
+        let mut corners = [[0.0; 3]; 4];
+        for (c, p) in corners.iter_mut().zip(poly) {
+            *c = p.to_array();
+        }
+        let z = nearest_in_reach(&self.words(), corners, poly.len().min(4), eye.to_array(), forward.to_array());
+        z.is_finite().then_some(z)
+    }
+}
+
+/// The widest guard band's view of `camera` from the near plane `near` on, as the device's band
+/// kernels take it (`dof_shaders::peel::BandParams::planes`).
+pub fn reach_planes(camera: &Camera, near: f32) -> crate::Result<[[f32; 4]; 5]> {
+    Ok(Reach::new(camera, near)?.words())
 }
 
 /// The largest CoC radius (pixels, rounded up, at most [`MAX_GUARD_BAND`]) that can reach into the
@@ -171,9 +168,7 @@ pub fn auto_margin_mesh(triangles: impl Iterator<Item = [Vec3; 3]>, camera: &Cam
     Ok(margin_of(radius))
 }
 
-fn margin_of(radius: f32) -> u32 {
-    if radius.is_nan() { MAX_GUARD_BAND } else { (radius.ceil().max(0.0) as u32).min(MAX_GUARD_BAND) }
-}
+pub use dof_shaders::peel::margin_of;
 
 impl GuardBand {
     /// The margin in pixels this choice gives, `auto` computing it when asked.

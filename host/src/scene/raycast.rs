@@ -20,6 +20,7 @@
 //!    pixels keep their front fragment only.
 
 use dof_shaders::lens::ThinLens;
+use dof_shaders::peel::{covers, disk_budget, pair_radius};
 use rayon::prelude::*;
 
 use super::analytic::{Hit, Scene};
@@ -184,31 +185,19 @@ fn cast_all(scene: &Scene, frame: &CameraFrame, lens: &ThinLens, options: &Layer
     );
 }
 
-/// Whether two front-layer depths form a discontinuity.
-fn discontinuous(a: f32, b: f32, ratio: f32) -> bool {
-    match (a.is_finite(), b.is_finite()) {
-        (false, false) => false,
-        (true, true) => (a - b).abs() > ratio * a.min(b),
-        _ => true,
-    }
-}
-
-/// The disocclusion buffer from the front-layer depths (step 3).
-fn disocclusion_mask(frame: &CameraFrame, lens: &ThinLens, front: &[f32], ratio: f32) -> Vec<bool> {
+/// The disocclusion buffer from the front-layer depths (step 3), with the device peel's rules
+/// (`dof_shaders::peel`: [`pair_radius`], [`disk_budget`], [`covers`]).
+pub(crate) fn disocclusion_mask(frame: &CameraFrame, lens: &ThinLens, front: &[f32], ratio: f32) -> Vec<bool> {
     let (w, h) = (frame.width as usize, frame.height as usize);
-    let limit = w.max(h) as i64;
-    let radius_of = |a: f32, b: f32| -> i64 {
-        let c = lens.coc_px(a).max(lens.coc_px(b));
-        if c.is_nan() { limit } else { ((c * 0.5).ceil() as i64).clamp(0, limit) }
-    };
+    let limit = w.max(h).min(i32::MAX as usize) as i32;
     // Largest tag radius per edge pixel (-1: not an edge).
-    let mut edge = vec![-1i64; w * h];
+    let mut edge = vec![-1i32; w * h];
     for y in 0..h {
         for x in 0..w {
             let p = y * w + x;
             for (q, ok) in [(p + 1, x + 1 < w), (p + w, y + 1 < h)] {
-                if ok && discontinuous(front[p], front[q], ratio) {
-                    let r = radius_of(front[p], front[q]);
+                if ok {
+                    let r = pair_radius(lens, front[p], front[q], ratio, limit);
                     edge[p] = edge[p].max(r);
                     edge[q] = edge[q].max(r);
                 }
@@ -216,29 +205,32 @@ fn disocclusion_mask(frame: &CameraFrame, lens: &ThinLens, front: &[f32], ratio:
         }
     }
     // Edges bucketed by row, then each output row scans the rows within the largest radius.
-    let mut by_row: Vec<Vec<(i64, i64)>> = vec![Vec::new(); h];
-    let mut max_r = 0i64;
+    let mut by_row: Vec<Vec<(i32, i32)>> = vec![Vec::new(); h];
+    let mut max_r = 0i32;
     for (p, &r) in edge.iter().enumerate() {
         if r >= 0 {
-            by_row[p / w].push(((p % w) as i64, r));
+            by_row[p / w].push(((p % w) as i32, r));
             max_r = max_r.max(r);
         }
     }
     let mut mask = vec![false; w * h];
     mask.par_chunks_mut(w).enumerate().for_each(|(y, row)| {
-        let y = y as i64;
+        let y = y as i32;
         let lo = (y - max_r).max(0);
-        let hi = (y + max_r).min(h as i64 - 1);
+        let hi = (y + max_r).min(h as i32 - 1);
         for ey in lo..=hi {
-            let dy = (ey - y).abs();
+            let dy = ey - y;
             for &(ex, r) in &by_row[ey as usize] {
-                if dy > r {
+                if dy.abs() > r {
                     continue;
                 }
-                let half = (((r * r - dy * dy) as f64).sqrt()).floor() as i64;
-                let x0 = (ex - half).max(0) as usize;
-                let x1 = (ex + half).min(w as i64 - 1) as usize;
-                row[x0..=x1].fill(true);
+                let x0 = (ex - r).max(0);
+                let x1 = (ex + r).min(w as i32 - 1);
+                for x in x0..=x1 {
+                    if covers(disk_budget(x - ex, r), dy) {
+                        row[x as usize] = true;
+                    }
+                }
             }
         }
     });

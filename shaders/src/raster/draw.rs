@@ -72,6 +72,14 @@ pub fn fragment_kept(
     if flags & ALPHA_MASK != 0 { alpha >= load_f32(materials, tri[3] * MATERIAL_WORDS + 7) } else { alpha > 0.0 }
 }
 
+/// The triangles the indirect draw command `args` draws (its vertex count over 3, at most the
+/// mesh's): what the graphics pipeline draws, so a command of zero vertices costs the fallback no
+/// rasterising either.
+pub fn drawn_triangles(p: &RasterParams, args: &impl Load) -> u32 {
+    let n = args.load_word(0) / 3;
+    if n < p.triangles { n } else { p.triangles }
+}
+
 /// Each triangle's conservative tile range for this view ([`tile_bounds`]): the fallback's prepass,
 /// so the CPU stand-in reads it instead of projecting every triangle once per tile. (The graphics
 /// pipeline neither runs nor reads it.)
@@ -86,10 +94,10 @@ pub fn setup_pass<G: Group, M: Mem>(
     _texels: M,
     _reach: M,
     mut bounds: M,
-    _args: M,
+    args: M,
     _target: M,
 ) {
-    for_each_item(g, p.triangles, |t| {
+    for_each_item(g, drawn_triangles(p, &args), |t| {
         let (v, _, drawn) = fetch(p, t, &vertices, &triangles, &materials);
         let c = [clip(p, v[0]), clip(p, v[1]), clip(p, v[2])];
         let b = if drawn { tile_bounds(p, &c) } else { [1, 1, 0, 0] };
@@ -114,13 +122,14 @@ pub fn fallback_pass<G: Group, M: Mem>(
     texels: M,
     reach: M,
     bounds: M,
-    _args: M,
+    args: M,
     mut target: M,
 ) {
     let [wx, wy, _] = g.workgroup_id();
     let (x0, y0) = (wx * TILE, wy * TILE);
+    let count = drawn_triangles(p, &args);
     let mut t = 0;
-    while t < p.triangles {
+    while t < count {
         let meets =
             wx >= bounds.load(4 * t) && wy >= bounds.load(4 * t + 1) && wx <= bounds.load(4 * t + 2) && wy <= bounds.load(4 * t + 3);
         if meets {

@@ -1,5 +1,5 @@
-//! The window's event loop and the frame: layers when the view changed, the depth of field
-//! through the frame API into the viewer's command buffer, the blit to the swapchain image, the UI,
+//! The window's event loop and the frame: the layers (a mesh's peeled on the device in the frame's
+//! command buffer whenever the camera moved, an EXR's uploaded once), the depth of field through the frame API into the viewer's command buffer, the blit to the swapchain image, the UI,
 //! present; after the fence, a frame later, what the frame cost and left out.
 
 use super::ViewArgs;
@@ -16,7 +16,8 @@ use dof::backend::{Backend, BufferId, ImageFormat, ImageRef, RawDevice, RawOptio
 use dof::frame::{Frame, FrameInput, FrameOutput};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::buffers::groups_for;
-use dof::scene::{Camera, Focus, LensSettings, MAX_GUARD_BAND};
+use dof::raster::{MeshPeelContext, MeshPeelDesc, default_near};
+use dof::scene::{Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, ThinLens};
 use dof_shaders::tonemap::{DISPLAY, DisplayParams, MODE_LINEAR, MODE_TONEMAP, display_tonemap};
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle};
 use std::time::Instant;
@@ -71,6 +72,46 @@ impl Inputs {
     }
 }
 
+/// A mesh scene's layers, peeled on the device into the frame's command buffer when the camera moved. Made
+/// again (between frames) when the frame size or the lens changes: its guard band is the automatic
+/// one of the view it was made from (Franke et al. 2018, §4; `dof render`'s), fixed while the
+/// camera moves, which goes in through push constants.
+struct DevicePeel {
+    ctx: MeshPeelContext,
+    size: [u32; 2],
+    lens: LensSettings,
+    /// The camera the slots were last peeled for: a still camera keeps them (nothing else writes
+    /// them), a moving one peels again in the frame's command buffer.
+    peeled: Option<Camera>,
+}
+
+impl DevicePeel {
+    /// The front depth at frame pixel `(x, y)` of the last peeled frame (one readback, on a click).
+    fn front_depth(&self, backend: &mut dyn Backend, x: u32, y: u32) -> Result<Option<f32>> {
+        let s = self.ctx.slots();
+        let (x, y) = (x + self.ctx.margin(), y + self.ctx.margin());
+        if x >= s.width || y >= s.height {
+            return Ok(None);
+        }
+        let p = y as u64 * s.width as u64 + x as u64;
+        if backend.read_buffer(s.counts, p, 1)?[0] == 0 {
+            return Ok(None);
+        }
+        let depth = f32::from_bits(backend.read_buffer(s.fragments, 4 * p * s.layers as u64 + 3, 1)?[0]);
+        Ok(Some(depth).filter(|d| d.is_finite() && *d > 0.0))
+    }
+}
+
+/// What the frame reads: its size (frame and guard band), slots a pixel, guard band, lens.
+#[derive(Clone, Copy)]
+struct Shape {
+    width: u32,
+    height: u32,
+    layers: u32,
+    margin: u32,
+    lens: ThinLens,
+}
+
 /// The frame's result on the device, in the library's buffers (as large as the contexts' frames):
 /// the linear RGB the frame API writes (3 words a pixel), and what the display pass makes of it,
 /// sRGB-encoded RGBA32F (4 words a pixel), which is copied into the target image and blitted into
@@ -117,6 +158,7 @@ struct Running {
     backend: Option<VulkanBackend>,
     contexts: Option<Contexts>,
     inputs: Option<Inputs>,
+    peel: Option<DevicePeel>,
     /// The blurred frame for display (RGBA32F, sRGB-encoded by the display pass), as large as the
     /// contexts' frames.
     target: Option<(Owned<vk::Image>, [u32; 2], bool)>,
@@ -157,6 +199,9 @@ struct App<'a> {
     /// Wall time between frames and GPU time, summed over every frame but the first (which makes
     /// the pipelines): for the summary at exit.
     timed: (u32, f64, u32, f64),
+    /// The library's own work over the frames that remade nothing (no context, peel, input or
+    /// buffer made, the camera free to move): frames, and the backend's counters summed.
+    steady: (u32, dof::backend::BackendCounters),
 }
 
 pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result<()> {
@@ -196,6 +241,7 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
         closed: false,
         screenshot_written: false,
         timed: (0, 0.0, 0, 0.0),
+        steady: (0, Default::default()),
     };
     println!("view at the start: {}", view_flags(&app.camera, &app.lens));
     event_loop.run_app(&mut app).map_err(|e| anyhow!("the event loop failed: {e}"))?;
@@ -217,6 +263,16 @@ pub fn run_app(args: &ViewArgs, source: SceneSource, steps: Vec<Step>) -> Result
             wall / n as f64,
             1e3 * n as f64 / wall,
             gpu / gn as f64
+        );
+    }
+    let (steady, c) = app.steady;
+    if steady > 0 {
+        println!(
+            "library work per frame over {steady} frames that remade nothing: {} allocations, {} uploads, {} readbacks, {} submissions of its own (the frame is the viewer's one submission)",
+            c.allocations as f64 / steady as f64,
+            c.uploads as f64 / steady as f64,
+            c.readbacks as f64 / steady as f64,
+            c.submissions as f64 / steady as f64
         );
     }
     println!("exited cleanly after {} frames", app.frames_recorded);
@@ -344,6 +400,7 @@ impl App<'_> {
             backend: Some(backend),
             contexts: None,
             inputs: None,
+            peel: None,
             target: None,
             display: None,
             readback: None,
@@ -498,10 +555,17 @@ impl App<'_> {
             Err(e) => self.stats.problem = Some(format!("lens not taken: {e}")),
         }
 
-        // Click to focus: the front depth under the cursor, from the host's copy of the layers.
-        if let (Some((x, y)), Some((_, _, layers))) = (self.controls.focus_click.take(), &r.layers) {
+        // Click to focus: the front depth under the cursor, from the host's copy of an EXR's layers
+        // or read from the device peel's last frame.
+        let backend = r.backend.as_mut().context("no backend")?;
+        if let Some((x, y)) = self.controls.focus_click.take() {
             let (fx, fy) = ((x / extent.width as f64 * size[0] as f64) as u32, (y / extent.height as f64 * size[1] as f64) as u32);
-            if let Some(depth) = layers.front_depth(fx, fy) {
+            let depth = match (&r.peel, &r.layers) {
+                (Some(peel), _) => peel.front_depth(backend, fx, fy)?,
+                (None, Some((_, _, layers))) => layers.front_depth(fx, fy),
+                (None, None) => None,
+            };
+            if let Some(depth) = depth {
                 let focused = LensSettings { focus: Focus::Distance(depth), ..self.lens };
                 if focused.thin_lens(&self.camera).is_ok() {
                     self.lens = focused;
@@ -511,26 +575,59 @@ impl App<'_> {
             }
         }
 
-        // The layers, made again when the view or the lens changed.
-        let backend = r.backend.as_mut().context("no backend")?;
-        if r.layers.as_ref().is_none_or(|(c, l, _)| *c != self.camera || *l != self.lens) {
-            let layers = self.source.layers(backend, &self.camera, &self.lens)?;
-            Inputs::upload(&mut r.inputs, backend, &layers.image)?;
-            self.stats.layers_ms = layers.ms;
-            r.layers = Some((self.camera, self.lens, layers));
-        }
-        let (_, _, layers) = r.layers.as_ref().context("no layers")?;
-        let fw = layers.image.width;
-        let fh = layers.image.height;
+        // The layers: a mesh's peel context, made again when the frame size or the lens changed (it
+        // peels whenever the camera moved); an EXR's layers, uploaded again when the lens changed (its edges).
+        let lens = self.lens.thin_lens(&self.camera)?;
+        // The library's counters over the rest of the frame; `remade` when anything is made.
+        let before = backend.counters();
+        let mut remade = false;
+        let shape = match self.source.mesh() {
+            Some((mesh, near)) => {
+                let camera_size = [self.camera.width, self.camera.height];
+                if r.peel.as_ref().is_none_or(|p| p.size != camera_size || p.lens != self.lens) {
+                    if let Some(old) = r.peel.take() {
+                        old.ctx.destroy(backend);
+                    }
+                    let start = Instant::now();
+                    let near = near.unwrap_or_else(|| default_near(lens.focus_distance));
+                    let options = LayerOptions { max_layers: LAYERS, guard_band: GuardBand::Auto, ..Default::default() };
+                    let ctx = MeshPeelContext::new(backend, &mesh.raster(), &self.camera, &lens, &MeshPeelDesc::new(&options, near))?;
+                    self.stats.layers_ms = start.elapsed().as_secs_f64() * 1e3;
+                    self.stats.device_peel = Some(ctx.margin());
+                    r.peel = Some(DevicePeel { ctx, size: camera_size, lens: self.lens, peeled: None });
+                    remade = true;
+                }
+                let ctx = &r.peel.as_ref().context("no peel context")?.ctx;
+                let [width, height] = ctx.size();
+                Shape { width, height, layers: ctx.layers(), margin: ctx.margin(), lens }
+            }
+            None => {
+                if r.layers.as_ref().is_none_or(|(c, l, _)| *c != self.camera || *l != self.lens) {
+                    let layers = self.source.exr_layers(&self.camera, &self.lens)?;
+                    Inputs::upload(&mut r.inputs, backend, &layers.image)?;
+                    remade = true;
+                    self.stats.layers_ms = layers.ms;
+                    r.layers = Some((self.camera, self.lens, layers));
+                }
+                let (_, _, layers) = r.layers.as_ref().context("no layers")?;
+                let i = &layers.image;
+                Shape { width: i.width, height: i.height, layers: i.max_layers, margin: layers.margin, lens: layers.lens }
+            }
+        };
+        let fw = shape.width;
+        let fh = shape.height;
         self.stats.frame = [size[0], size[1]];
 
         // The contexts and the output image, for frames up to the window's size plus the widest
         // guard band (grown, never shrunk, when the window grows).
-        let want = [fw.max(size[0] + 2 * MAX_GUARD_BAND), fh.max(size[1] + 2 * MAX_GUARD_BAND), layers.image.max_layers.max(LAYERS)];
+        let want = [fw.max(size[0] + 2 * MAX_GUARD_BAND), fh.max(size[1] + 2 * MAX_GUARD_BAND), shape.layers.max(LAYERS)];
         let contexts = r.contexts.get_or_insert_with(|| Contexts::new(want));
+        let made_before = backend.counters().allocations;
         contexts.prepare(backend, &self.panel.settings, want)?;
+        remade |= backend.counters().allocations != made_before;
         let max = contexts.max();
         if r.target.as_ref().is_none_or(|(_, e, _)| e[0] < max[0] || e[1] < max[1]) {
+            remade = true;
             // SAFETY: the image may be in use by nothing (the frame before completed).
             unsafe { r.d.device.device_wait_idle()? };
             if let Some((old, _, _)) = r.target.take() {
@@ -541,6 +638,7 @@ impl App<'_> {
         }
         let pixels = max[0] as u64 * max[1] as u64;
         if r.display.as_ref().is_none_or(|b| b.pixels < pixels) {
+            remade = true;
             if let Some(old) = r.display.take() {
                 old.destroy(backend);
             }
@@ -562,6 +660,7 @@ impl App<'_> {
             println!("computing the reference for this view ({REFERENCE_SAMPLES} samples a pixel)...");
             let image = self.source.reference(backend, &self.camera, &self.lens, REFERENCE_SAMPLES)?;
             r.reference = Some((self.camera, self.lens, image));
+            remade = true;
         }
         let (w, h) = (extent.width, extent.height);
         if copy_shot && r.readback.as_ref().is_none_or(|b| b.bytes < (w * h * 4) as u64) {
@@ -627,14 +726,19 @@ impl App<'_> {
                 Layout::TRANSFER_SRC_OPTIMAL,
             )
         };
-        let inputs = r.inputs.as_ref().context("no inputs")?;
         let display = r.display.as_ref().context("no display buffers")?;
         let method = self.panel.settings.method;
-        let ((fragments, counts), slots) = if method.front_only() { (inputs.front, 1) } else { (inputs.all, layers.image.max_layers) };
+        // The peel's slots (a single-layer method reads their front slot), or the uploaded ones.
+        let ((fragments, counts), slots) = match (&r.peel, &r.inputs) {
+            (Some(p), _) => ((p.ctx.slots().fragments, p.ctx.slots().counts), shape.layers),
+            (None, Some(inputs)) if method.front_only() => (inputs.front, 1),
+            (None, Some(inputs)) => (inputs.all, shape.layers),
+            (None, None) => bail!("no inputs"),
+        };
         let frame = Frame {
             width: fw,
             height: fh,
-            lens: layers.lens,
+            lens: shape.lens,
             input: FrameInput::Layers { fragments, counts, layers: slots },
             output: FrameOutput::Buffer(display.rgb),
         };
@@ -645,7 +749,15 @@ impl App<'_> {
         // SAFETY: our command buffer is recording, outside a render pass, from a pool of the
         // backend's queue family; every resource it names outlives the fence wait.
         unsafe { backend.begin_external(cb)? };
-        let recorded = contexts_record(r.contexts.as_mut(), backend, method, &frame).and_then(|()| {
+        let peeled = match r.peel.as_mut() {
+            Some(p) if p.peeled != Some(self.camera) => {
+                let recorded = p.ctx.record(backend, &self.camera, &lens);
+                p.peeled = recorded.is_ok().then_some(self.camera);
+                recorded.map_err(anyhow::Error::from)
+            }
+            _ => Ok(()),
+        };
+        let recorded = peeled.and_then(|()| contexts_record(r.contexts.as_mut(), backend, method, &frame)).and_then(|()| {
             let groups = groups_for(&DISPLAY, fw as u64 * fh as u64);
             backend.run(display_tonemap::Bindings { rgb: display.rgb, rgba: display.rgba }, groups, &params, "view/display")?;
             backend.copy_buffer_to_image(display.rgba, 0, out, "view/display-to-image")?;
@@ -655,7 +767,7 @@ impl App<'_> {
         recorded?;
 
         // The frame, cut to the window (the guard band is beyond it), into the swapchain image.
-        let m = layers.margin as i32;
+        let m = shape.margin as i32;
         let (sw, sh) = (size[0] as i32, size[1] as i32);
         d.image_barrier(
             image,
@@ -719,6 +831,15 @@ impl App<'_> {
             d.device.reset_fences(&[d.fence])?;
             d.device.queue_submit(d.queue, &[submit], d.fence)?;
         }
+        if let (false, Some(b)) = (remade, r.backend.as_ref()) {
+            let c = b.counters().since(&before);
+            let s = &mut self.steady.1;
+            self.steady.0 += 1;
+            s.allocations += c.allocations;
+            s.uploads += c.uploads;
+            s.readbacks += c.readbacks;
+            s.submissions += c.submissions;
+        }
         let report_due = self.last_report.elapsed().as_secs_f64() > 0.5 || last;
         if report_due {
             self.last_report = Instant::now();
@@ -726,7 +847,7 @@ impl App<'_> {
         r.pending = Pending {
             submitted: true,
             screenshot: last && copy_shot,
-            linear: want_linear.then_some(LinearRead { frame_width: fw, margin: layers.margin, size: [size[0], size[1]] }),
+            linear: want_linear.then_some(LinearRead { frame_width: fw, margin: shape.margin, size: [size[0], size[1]] }),
             free: output.textures_delta.free,
             report: report_due,
         };
@@ -793,6 +914,9 @@ impl App<'_> {
             }
             if let Some(i) = r.inputs.take() {
                 i.destroy(&mut backend);
+            }
+            if let Some(p) = r.peel.take() {
+                p.ctx.destroy(&mut backend);
             }
             if let Some(b) = r.display.take() {
                 b.destroy(&mut backend);

@@ -1,16 +1,15 @@
 //! What the viewer shows: a built-in analytic scene or a glTF file, rasterised into a multi-layer
-//! image by depth peeling on the viewer's device whenever the view or the lens changes (the layers
-//! depend on the lens: the umbra threshold and the disocclusion buffer), or an EXR, a still
-//! multi-layer image whose edges are extended as `dof render` extends them.
+//! image by depth peeling on the viewer's device (`raster::MeshPeelContext`, recorded into the
+//! frame's command buffer whenever the camera moved; see `frame.rs`), or an EXR, a still multi-layer image whose
+//! edges are extended as `dof render` extends them.
 
 use anyhow::{Context, Result, bail};
 use dof::backend::Backend;
 use dof::io::read_layered_exr;
 use dof::layers::{LayeredImage, RgbImage};
-use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
+use dof::raster::{AccumulateOptions, accumulate, default_near};
 use dof::scene::{
-    self, Camera, GuardBand, LayerOptions, LensSettings, MeshScene, ReferenceOptions, Scene, ThinLens, builtin, export_builtin_glb,
-    load_gltf, load_gltf_slice,
+    self, Camera, LensSettings, MeshScene, ReferenceOptions, Scene, ThinLens, builtin, export_builtin_glb, load_gltf, load_gltf_slice,
 };
 use std::path::Path;
 use std::time::Instant;
@@ -87,6 +86,15 @@ impl SceneSource {
         Ok(SceneSource { name, content: Content::Mesh { mesh: Box::new(mesh), analytic, near }, camera, lens })
     }
 
+    /// The mesh of a built-in or glTF scene and its near plane (`None`: from the focus distance);
+    /// `None` for an EXR.
+    pub fn mesh(&self) -> Option<(&MeshScene, Option<f32>)> {
+        match &self.content {
+            Content::Mesh { mesh, near, .. } => Some((mesh, *near)),
+            Content::Exr(_) => None,
+        }
+    }
+
     /// Whether the camera can move (not for an EXR).
     pub fn movable(&self) -> bool {
         matches!(self.content, Content::Mesh { .. })
@@ -114,18 +122,13 @@ impl SceneSource {
         matches!(self.content, Content::Mesh { .. })
     }
 
-    /// The multi-layer image for `camera` and `lens`: peeled on `backend` (with the guard band
-    /// `dof render` uses), or the EXR with its edges extended by its largest CoC.
-    pub fn layers(&self, backend: &mut dyn Backend, camera: &Camera, settings: &LensSettings) -> Result<Layers> {
+    /// An EXR's multi-layer image for the lens of `settings`, its edges extended by its largest CoC
+    /// (a mesh scene's layers are peeled on the device instead: see `frame.rs`).
+    pub fn exr_layers(&self, camera: &Camera, settings: &LensSettings) -> Result<Layers> {
         let lens = settings.thin_lens(camera)?;
         let start = Instant::now();
         let (image, margin) = match &self.content {
-            Content::Mesh { mesh, near, .. } => {
-                let near = near.unwrap_or_else(|| default_near(lens.focus_distance));
-                let options = LayerOptions { max_layers: LAYERS, guard_band: GuardBand::Auto, ..Default::default() };
-                let peeled = peel_layers(backend, &mesh.raster(), camera, &lens, near, &options)?;
-                (peeled.image.layers, peeled.image.margin)
-            }
+            Content::Mesh { .. } => bail!("a mesh scene's layers are peeled on the device, not made on the host"),
             Content::Exr(layers) => {
                 let margin = crate::cli::render::edge_margin(layers, &lens);
                 (layers.extend_edges(margin)?, margin)

@@ -34,8 +34,12 @@ pub struct Stats {
     pub gpu_ms: f64,
     /// What the last reported frame left out (from the context's report, read a frame or more late).
     pub report: Vec<String>,
-    /// How long the last re-peel of the layers took (they are made again when the view changes).
+    /// How long making the layers took: the EXR's edges extended, or for a mesh the device peel's
+    /// context made (again when the frame size or the lens changes; it peels whenever the camera moves).
     pub layers_ms: f64,
+    /// The layers are peeled on the device in the frame whenever the camera moves, with this guard
+    /// band (pixels).
+    pub device_peel: Option<u32>,
     pub has_reference: bool,
     /// PSNR of the shown frame against the reference, when computed.
     pub error: Option<String>,
@@ -121,7 +125,13 @@ impl Panel {
             egui::CollapsingHeader::new("GPU time per stage (ms)").default_open(true).show(ui, |ui| {
                 let stages: Vec<String> = stats.stages.iter().map(|(stage, ms)| format!("{stage} {ms:.1}")).collect();
                 ui.label(stages.join(", "));
-                ui.label(format!("layers: peeled in {:.0} ms (when the view or lens changes)", stats.layers_ms));
+                match stats.device_peel {
+                    Some(margin) => ui.label(format!(
+                        "layers: peeled on the device in the frame when the camera moves, guard band {margin} px (context made in {:.0} ms when the size or lens changed)",
+                        stats.layers_ms
+                    )),
+                    None => ui.label(format!("layers: made in {:.0} ms", stats.layers_ms)),
+                };
             });
             egui::CollapsingHeader::new("what the frame left out").default_open(true).show(ui, |ui| {
                 for line in &stats.report {

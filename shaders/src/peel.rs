@@ -1,0 +1,425 @@
+//! Depth peeling into the partial multi-layer image on the device (Franke et al. 2018, §4.1-4.3),
+//! and the per-pixel rules the host's peel and ray caster share with it.
+//!
+//! A frame of peeling is a fixed sequence of passes; between them these kernels run:
+//! - `peel_plan` (one invocation) before pass `k` and once after the last: writes pass `k`'s
+//!   indirect draw and dispatch arguments, all zero when pass `k - 1` found no surface anywhere (so
+//!   passes past the last useful one cost almost nothing), notes which passes ran and found a
+//!   surface, and clears the found flag;
+//! - `peel_append` (one invocation per pixel) after each pass: the pass's shaded layer becomes the
+//!   pixel's next slot where [`slot_kept`] says so (4 words r, g, b, depth, the frame API's
+//!   `FrameInput::Layers` layout), and a kept surface sets the found flag;
+//! - after the last pass the disocclusion buffer (§4.3, two-pass variant: built from the finished
+//!   front layer): `peel_edges` gives every pixel of a depth discontinuity its tag radius
+//!   ([`pair_radius`]), `peel_span` and `peel_mask` find the pixels within that radius of an edge
+//!   pixel (the disk `dx² + dy² <= r²`, split into a row pass and a column pass: [`disk_budget`],
+//!   [`covers`]), and `peel_mask` then keeps only the front slot outside the buffer and resets every
+//!   unused slot to `(0, 0, 0, +inf)`;
+//! - `peel_band` (one invocation per triangle) and `peel_band_end` (one invocation): the guard band
+//!   this frame's view would need (the largest CoC radius of geometry within [`MAX_GUARD_BAND`]
+//!   pixels of the frame, [`nearest_in_reach`] and [`margin_of`], the rules of the host's
+//!   `scene::guard_band::auto_margin_mesh`), and a count of the frames whose band exceeded the one
+//!   the image was made with.
+
+use crate::exec::{Group, Mem};
+use crate::lens::{ThinLens, is_finite, is_nan};
+use crate::math::ceil;
+use crate::raster::project::{triangle, vertex_position};
+use crate::wg::for_each_item;
+
+/// Words a slot: red, green, blue, depth.
+pub const SLOT_WORDS: u32 = 4;
+/// Words of the indirect arguments: the draw command (4), the shading dispatch (3 and a pad), the
+/// append dispatch (3 and a pad).
+pub const ARGS_WORDS: u32 = 12;
+/// Where the shading pass's dispatch arguments start.
+pub const SHADE_ARGS: u32 = 4;
+/// Where the append's dispatch arguments start.
+pub const APPEND_ARGS: u32 = 8;
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct PeelParams {
+    pub lens: ThinLens,
+    /// The peeled image (frame and guard band), pixels.
+    pub width: u32,
+    pub height: u32,
+    /// Slots a pixel (the most passes).
+    pub layers: u32,
+    /// The pass `peel_plan` plans (`layers`: the call after the last pass) and `peel_append` appends.
+    pub pass: u32,
+    /// Relative depth difference between 4-neighbours that counts as a discontinuity.
+    pub edge_depth_ratio: f32,
+    /// 1: keep more than the front slot only inside the disocclusion buffer.
+    pub disocclusion: u32,
+    /// A useful pass's draw: vertices (3 per triangle).
+    pub draw_vertices: u32,
+    /// A useful pass's shading and append workgroups.
+    pub shade_groups: u32,
+    pub append_groups: u32,
+    pub _pad: [u32; 3],
+}
+
+const _: () = assert!(core::mem::size_of::<PeelParams>() <= 128);
+
+/// Widest guard band, pixels: 6 tile rings of 16 pixels, the largest CoC radius the splatting
+/// methods honour with their default tiles (larger radii are capped there anyway).
+pub const MAX_GUARD_BAND: u32 = 96;
+
+/// What the band kernels take: the view within [`MAX_GUARD_BAND`] pixels of the frame from the
+/// near plane on, as five inward planes `(n, d)` (`n·p >= d` inside), the eye and view axis, the
+/// lens and the band the image has.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct BandParams {
+    pub planes: [[f32; 4]; 5],
+    pub eye: [f32; 3],
+    pub triangles: u32,
+    pub forward: [f32; 3],
+    /// The guard band the peeled image has, pixels.
+    pub margin: u32,
+    pub lens: ThinLens,
+}
+
+const _: () = assert!(core::mem::size_of::<BandParams>() <= 128);
+
+#[inline]
+fn dot3(a: [f32; 3], b: [f32; 3]) -> f32 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// Most corners a quadrilateral clipped by five planes has.
+const CLIP_CORNERS: usize = 9;
+
+/// Nearest planar depth (along `forward` from `eye`) of the convex polygon of the first `corners`
+/// (3 or 4) points of `poly` inside the five `planes`, by clipping it against each (Sutherland and
+/// Hodgman 1974); `+inf` where nothing is left.
+pub fn nearest_in_reach(planes: &[[f32; 4]; 5], poly: [[f32; 3]; 4], corners: usize, eye: [f32; 3], forward: [f32; 3]) -> f32 {
+    let mut cur = [[0.0f32; 3]; CLIP_CORNERS];
+    cur[0] = poly[0];
+    cur[1] = poly[1];
+    cur[2] = poly[2];
+    cur[3] = poly[3];
+    let mut n = if corners < 4 { corners } else { 4 };
+    let mut k = 0;
+    while k < 5 {
+        let pl = planes[k];
+        let normal = [pl[0], pl[1], pl[2]];
+        let mut next = [[0.0f32; 3]; CLIP_CORNERS];
+        let mut m = 0usize;
+        let mut i = 0;
+        while i < n {
+            let a = cur[i];
+            let b = cur[if i + 1 == n { 0 } else { i + 1 }];
+            let (da, db) = (dot3(normal, a) - pl[3], dot3(normal, b) - pl[3]);
+            if da >= 0.0 && m < CLIP_CORNERS {
+                next[m] = a;
+                m += 1;
+            }
+            if (da >= 0.0) != (db >= 0.0) && m < CLIP_CORNERS {
+                let t = da / (da - db);
+                next[m] = [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t];
+                m += 1;
+            }
+            i += 1;
+        }
+        cur = next;
+        n = m;
+        if n == 0 {
+            return f32::INFINITY;
+        }
+        k += 1;
+    }
+    let mut best = f32::INFINITY;
+    let mut i = 0;
+    while i < n {
+        let p = cur[i];
+        let z = dot3([p[0] - eye[0], p[1] - eye[1], p[2] - eye[2]], forward);
+        if z < best {
+            best = z;
+        }
+        i += 1;
+    }
+    best
+}
+
+/// The guard band (pixels) for the largest CoC radius `radius` reaching into the frame: rounded
+/// up, at most [`MAX_GUARD_BAND`] (also for NaN).
+#[inline]
+pub fn margin_of(radius: f32) -> u32 {
+    if is_nan(radius) {
+        return MAX_GUARD_BAND;
+    }
+    let r = ceil(if radius > 0.0 { radius } else { 0.0 });
+    if r >= MAX_GUARD_BAND as f32 { MAX_GUARD_BAND } else { r as u32 }
+}
+
+/// Whether a pixel of a shaded peel layer (coverage `alpha`, depth `depth`) becomes a slot: a
+/// surface, or the background where this pass saw the pixel's ray escape (coverage 1 at infinite
+/// depth; coverage 0 there means the pixel ended in an earlier pass).
+#[inline]
+pub fn slot_kept(alpha: f32, depth: f32) -> bool {
+    is_surface(depth) || alpha > 0.0
+}
+
+/// Whether a layer's depth is a surface (finite), not the background.
+#[inline]
+pub fn is_surface(depth: f32) -> bool {
+    is_finite(depth)
+}
+
+/// Whether two front-layer depths form a discontinuity: exactly one is the background, or
+/// `|a − b| > ratio · min(a, b)`.
+#[inline]
+pub fn discontinuous(a: f32, b: f32, ratio: f32) -> bool {
+    match (is_finite(a), is_finite(b)) {
+        (false, false) => false,
+        (true, true) => {
+            let d = a - b;
+            let d = if d < 0.0 { -d } else { d };
+            d > ratio * if a < b { a } else { b }
+        }
+        _ => true,
+    }
+}
+
+/// The tag radius (pixels) of the discontinuity between front depths `a` and `b`: `ceil(c / 2)` for
+/// the larger CoC `c` of the two (NaN ignored, as `f32::max` does), clamped to `0..=limit`
+/// (`limit` where both CoCs are NaN or the radius is not finite); -1 where they are no
+/// discontinuity.
+#[inline]
+pub fn pair_radius(lens: &ThinLens, a: f32, b: f32, ratio: f32, limit: i32) -> i32 {
+    if !discontinuous(a, b, ratio) {
+        return -1;
+    }
+    let (ca, cb) = (lens.coc_px(a), lens.coc_px(b));
+    let c = if is_nan(ca) {
+        cb
+    } else if is_nan(cb) || ca > cb {
+        ca
+    } else {
+        cb
+    };
+    let h = ceil(c * 0.5);
+    if !is_finite(h) || !(h < limit as f32) {
+        limit
+    } else if h < 0.0 {
+        0
+    } else {
+        h as i32
+    }
+}
+
+/// What is left of the disk of radius `r` along a column `dx` pixels from its centre: `r² − dx²`
+/// (negative: the column misses it).
+#[inline]
+pub fn disk_budget(dx: i32, r: i32) -> i32 {
+    r * r - dx * dx
+}
+
+/// Whether a pixel `dy` rows from the centre lies in the disk, given that column's budget.
+#[inline]
+pub fn covers(budget: i32, dy: i32) -> bool {
+    budget >= dy * dy
+}
+
+/// The front slot's depth of pixel `p`, `+inf` where it has none.
+#[inline]
+fn front<M: Mem>(fragments: &M, counts: &M, p: u32, layers: u32) -> f32 {
+    if counts.load(p) > 0 { f32::from_bits(fragments.load(SLOT_WORDS * p * layers + 3)) } else { f32::INFINITY }
+}
+
+pub fn plan_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, mut found: M, mut args: M, mut passes: M) {
+    for_each_item(g, 1, |_| {
+        let f = found.load(0);
+        if p.pass > 0 {
+            passes.store(p.layers + p.pass - 1, f);
+        }
+        if p.pass < p.layers {
+            let go = f != 0;
+            let pick = |v: u32| if go { v } else { 0 };
+            let words = [pick(p.draw_vertices), 1, 0, 0, pick(p.shade_groups), 1, 1, 0, pick(p.append_groups), 1, 1, 0];
+            let mut i = 0;
+            while i < ARGS_WORDS as usize {
+                args.store(i as u32, words[i]);
+                i += 1;
+            }
+            passes.store(p.pass, go as u32);
+        }
+        found.store(0, 0);
+    });
+}
+
+pub fn append_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, layer: M, mut fragments: M, mut counts: M, mut found: M) {
+    for_each_item(g, p.width * p.height, |i| {
+        // The layer's words: r, g, b, alpha, depth (the shading pass's LAYER mode).
+        let o = 5 * i;
+        let (alpha, depth) = (f32::from_bits(layer.load(o + 3)), f32::from_bits(layer.load(o + 4)));
+        if !slot_kept(alpha, depth) {
+            return;
+        }
+        let n = counts.load(i);
+        if n < p.layers {
+            let s = SLOT_WORDS * (i * p.layers + n);
+            fragments.store(s, layer.load(o));
+            fragments.store(s + 1, layer.load(o + 1));
+            fragments.store(s + 2, layer.load(o + 2));
+            fragments.store(s + 3, depth.to_bits());
+            counts.store(i, n + 1);
+        }
+        if is_surface(depth) && found.load(0) == 0 {
+            found.atomic_max(0, 1);
+        }
+    });
+}
+
+pub fn edges_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, fragments: M, counts: M, mut edge: M, mut widest: M) {
+    let (w, h) = (p.width, p.height);
+    let limit = (if w > h { w } else { h }) as i32;
+    for_each_item(g, w * h, |i| {
+        let (x, y) = (i % w, i / w);
+        let a = front(&fragments, &counts, i, p.layers);
+        let r = |q: u32, first: bool| {
+            let b = front(&fragments, &counts, q, p.layers);
+            // Ordered as the host's pass over pairs (left or upper pixel first).
+            if first {
+                pair_radius(&p.lens, a, b, p.edge_depth_ratio, limit)
+            } else {
+                pair_radius(&p.lens, b, a, p.edge_depth_ratio, limit)
+            }
+        };
+        let mut best = -1;
+        if x + 1 < w {
+            best = best.max(r(i + 1, true));
+        }
+        if x > 0 {
+            best = best.max(r(i - 1, false));
+        }
+        if y + 1 < h {
+            best = best.max(r(i + w, true));
+        }
+        if y > 0 {
+            best = best.max(r(i - w, false));
+        }
+        // Stored as radius + 1 (0: no edge).
+        let e = (best + 1) as u32;
+        edge.store(i, e);
+        if e > 0 {
+            widest.atomic_max(0, e);
+        }
+    });
+}
+
+pub fn span_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, edge: M, widest: M, mut span: M) {
+    let (w, h) = (p.width, p.height);
+    let reach = widest.load(0) as i32 - 1;
+    for_each_item(g, w * h, |i| {
+        let (x, y) = ((i % w) as i32, i / w);
+        let lo = if x - reach > 0 { x - reach } else { 0 };
+        let hi = if x + reach < w as i32 - 1 { x + reach } else { w as i32 - 1 };
+        let mut best = -1;
+        let mut ex = lo;
+        while ex <= hi {
+            let e = edge.load(y * w + ex as u32);
+            if e > 0 {
+                best = best.max(disk_budget(ex - x, e as i32 - 1));
+            }
+            ex += 1;
+        }
+        // Stored as budget + 1 (0: no disk reaches this column of the row).
+        span.store(i, (best + 1) as u32);
+    });
+}
+
+pub fn mask_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, span: M, widest: M, mut mask: M, mut fragments: M, mut counts: M) {
+    let (w, h) = (p.width, p.height);
+    let reach = widest.load(0) as i32 - 1;
+    for_each_item(g, w * h, |i| {
+        let (x, y) = (i % w, (i / w) as i32);
+        let lo = if y - reach > 0 { y - reach } else { 0 };
+        let hi = if y + reach < h as i32 - 1 { y + reach } else { h as i32 - 1 };
+        let mut tagged = false;
+        let mut ey = lo;
+        while ey <= hi && !tagged {
+            let s = span.load(ey as u32 * w + x);
+            tagged = s > 0 && covers(s as i32 - 1, ey - y);
+            ey += 1;
+        }
+        mask.store(i, tagged as u32);
+        let mut n = counts.load(i);
+        if p.disocclusion != 0 && !tagged && n > 1 {
+            n = 1;
+            counts.store(i, 1);
+        }
+        while n < p.layers {
+            let s = SLOT_WORDS * (i * p.layers + n);
+            fragments.store(s, 0);
+            fragments.store(s + 1, 0);
+            fragments.store(s + 2, 0);
+            fragments.store(s + 3, f32::INFINITY.to_bits());
+            n += 1;
+        }
+    });
+}
+
+pub fn band_pass<G: Group, M: Mem>(g: &mut G, p: &BandParams, vertices: M, triangles: M, mut band: M) {
+    for_each_item(g, p.triangles, |t| {
+        let tri = triangle(&triangles, t);
+        let a = vertex_position(&vertices, tri[0]);
+        let corners = [a, vertex_position(&vertices, tri[1]), vertex_position(&vertices, tri[2]), a];
+        let z = nearest_in_reach(&p.planes, corners, 3, p.eye, p.forward);
+        if is_finite(z) {
+            let r = p.lens.coc_radius_px(z);
+            // Non-negative floats order as their bits.
+            if r > 0.0 {
+                band.atomic_max(0, r.to_bits());
+            }
+        }
+    });
+}
+
+pub fn band_end_pass<G: Group, M: Mem>(g: &mut G, p: &BandParams, mut band: M) {
+    for_each_item(g, 1, |_| {
+        let geometry = f32::from_bits(band.load(0));
+        let background = p.lens.coc_radius_px(f32::INFINITY);
+        let needed = margin_of(if geometry > background { geometry } else { background });
+        band.store(1, needed);
+        if needed > p.margin {
+            band.store(2, band.load(2) + 1);
+        }
+        band.store(0, 0);
+    });
+}
+
+kernel!(
+    /// Plans the next peel pass from the last one's found flag (indirect arguments).
+    PEEL_PLAN = peel_plan [64] (PeelParams) { found, args, passes } => plan_pass
+);
+kernel!(
+    /// Appends a shaded peel layer into the slots.
+    PEEL_APPEND = peel_append [256] (PeelParams) { layer, fragments, counts, found } reads { layer } => append_pass
+);
+kernel!(
+    /// The disocclusion buffer's edge pixels and their tag radii.
+    PEEL_EDGES = peel_edges [256] (PeelParams) { fragments, counts, edge, widest } reads { fragments, counts } => edges_pass
+);
+kernel!(
+    /// The disocclusion buffer's row pass: per pixel, the widest disk budget of its row's edges.
+    PEEL_SPAN = peel_span [256] (PeelParams) { edge, widest, span } reads { edge, widest } => span_pass
+);
+kernel!(
+    /// The disocclusion buffer's column pass, applied to the slots.
+    PEEL_MASK = peel_mask [256] (PeelParams) { span, widest, mask, fragments, counts } reads { span, widest } => mask_pass
+);
+
+kernel!(
+    /// The largest CoC radius of the triangles within the widest guard band of this view.
+    PEEL_BAND = peel_band [64] (BandParams) { vertices, triangles, band } reads { vertices, triangles } => band_pass
+);
+kernel!(
+    /// The band this view needs, and whether it exceeds the image's.
+    PEEL_BAND_END = peel_band_end [64] (BandParams) { band } => band_end_pass
+);
+
+#[cfg(not(target_arch = "spirv"))]
+pub const KERNELS: [&crate::KernelDesc; 7] = [&PEEL_PLAN, &PEEL_APPEND, &PEEL_EDGES, &PEEL_SPAN, &PEEL_MASK, &PEEL_BAND, &PEEL_BAND_END];

@@ -16,7 +16,9 @@
 //! [`registry::METHODS`] lists them with their names, papers, knobs and constructors: callers that
 //! drive several methods hold `Box<dyn DofContext>` and never match on a method. What a frame did
 //! and left out stays on the device until the caller asks for it ([`DofContext::report`]), after
-//! the frame's work has completed.
+//! the frame's work has completed. A context made for N frames in flight keeps N copies of that
+//! and nothing else ([`DofContext::report_frame`]; the transient buffers are shared, ordered on
+//! one queue by barriers).
 //!
 //! Methods: multi-layer tiled splatting (Franke, Hofmann, Stamminger, Selgrad 2018) and its
 //! single-layer predecessor (Selgrad, Franke, Stamminger 2016, the same pipeline on the front

@@ -133,7 +133,8 @@ pub trait DofContext {
     }
     /// Device bytes the context holds.
     fn device_bytes(&self) -> u64;
-    /// Makes the context hold frames up to `extent` (frees and reallocates; between frames only).
+    /// Makes the context hold frames up to `extent` (frees and reallocates; between frames only,
+    /// once every frame in flight has completed: their reports go with the old buffers).
     fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()>;
     /// The method's quality knob (see [`super::registry::Knob`]), where it has one that changes
     /// between frames without reallocating.

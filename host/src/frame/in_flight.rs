@@ -61,6 +61,9 @@ impl<T: Clone> InFlight<T> {
                  reports of its last {n} (read a frame's report after its fence, before recording {n} more)"
             )));
         }
+        if self.recorded == 0 {
+            return Err(Error::InvalidArgument("no frame has been recorded yet".into()));
+        }
         if frames_ago as u64 >= self.recorded {
             return Err(Error::InvalidArgument(format!(
                 "no frame recorded {frames_ago} recordings before the last: {} recorded so far",
@@ -87,7 +90,7 @@ mod tests {
     #[test]
     fn slots_go_round_robin_and_reports_stay_until_their_slot_is_reused() {
         let mut f = InFlight::<u32>::new(3).unwrap();
-        assert!(f.slot(0).is_err(), "nothing recorded");
+        assert!(f.slot(0).unwrap_err().to_string().contains("no frame has been recorded"));
         for frame in 0..7 {
             assert_eq!(f.next(), frame as usize % 3);
             f.recorded(frame);

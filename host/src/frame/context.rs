@@ -122,6 +122,39 @@ pub trait DofContext {
     /// flight, after waiting on the fence of the frame about to be reused and before recording
     /// into it, that frame's report is `report_frame(backend, N - 1)`. Refused for a frame whose
     /// slot was reused or that was never recorded.
+    ///
+    /// A renderer's loop with `N` fences, on the CPU backend (where `submit` stands for the
+    /// renderer's submission with fence `frame % N`, and the wait on it is implied):
+    ///
+    /// ```
+    /// use dof::backend::{Backend, CpuBackend};
+    /// use dof::frame::{ContextDesc, Extent, Frame, MethodOptions, registry};
+    /// # fn main() -> dof::Result<()> {
+    /// const N: u32 = 2;
+    /// let mut b = CpuBackend::new();
+    /// let desc = ContextDesc { frames_in_flight: N, ..ContextDesc::new(Extent::new(32, 32, 1), MethodOptions::default()) };
+    /// let mut ctx = registry::create(&mut b, registry::method("gather")?, &desc)?;
+    /// let image = dof::stress::noise_with_sky(32, 32, 1);
+    /// let [fragments, counts, out] = [4 * 1024, 1024, 3 * 1024].map(|w| b.create_buffer(w, "caller").unwrap());
+    /// b.write_buffer(fragments, 0, &dof::methods::buffers::slot_words(&image))?;
+    /// b.write_buffer(counts, 0, &image.counts)?;
+    /// let mut radii = Vec::new();
+    /// for frame in 0..6u32 {
+    ///     // After waiting on fence `frame % N`: frame - N has completed, its slot is about to be reused.
+    ///     if frame >= N {
+    ///         radii.push(ctx.report_frame(&mut b, N - 1)?.figures["radius_px"]);
+    ///     }
+    ///     let lens = dof::stress::test_lens(0.002 * (frame + 1) as f32);
+    ///     ctx.record(&mut b, &Frame::layers(32, 32, 1, lens, fragments, counts, out))?;
+    ///     b.submit()?;
+    /// }
+    /// // Frames 0 to 3, each with its own (growing) aperture, hence window radius.
+    /// assert_eq!(radii.len(), 4);
+    /// assert!(radii.windows(2).all(|r| r[0] < r[1]), "{radii:?}");
+    /// # ctx.destroy(&mut b);
+    /// # Ok(())
+    /// # }
+    /// ```
     fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
         match frames_ago {
             0 => self.report(backend),

@@ -20,6 +20,7 @@ pub mod keys;
 pub mod layered;
 pub mod lens;
 pub mod math;
+pub mod radiance;
 pub mod raster;
 pub mod raytrace;
 pub mod ring_gather;

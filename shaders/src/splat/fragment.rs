@@ -58,9 +58,8 @@ pub const POS_UNITS: u32 = 2;
 pub const MAX_EDGE: u32 = 0xffff / POS_UNITS;
 pub const MAX_LEVEL: u32 = 2;
 
-/// Bits of each colour mantissa, and the mantissa of a channel equal to `2^E`.
+/// Bits of each colour mantissa (a channel equal to `2^E` has the mantissa `2^13`).
 pub const MANTISSA_BITS: u32 = 14;
-const MANTISSA_ONE: f32 = 8192.0;
 const MANTISSA_MASK: u32 = (1 << MANTISSA_BITS) - 1;
 /// Range of the shared exponent (unbiased): `2^EXP_MAX` is `radiance::COLOR_MAX`.
 pub const EXP_MIN: i32 = -113;

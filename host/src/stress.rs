@@ -459,7 +459,9 @@ impl Case {
                 let checked: Vec<usize> = (0..out.data.len()).filter(|&i| far(i)).collect();
                 let err = checked
                     .iter()
-                    .map(|&i| (0..3).map(|c| (out.data[i][c] - front.data[i][c]).abs() / front.data[i][c].abs().max(1e-3)).fold(0.0f32, f32::max))
+                    .map(|&i| {
+                        (0..3).map(|c| (out.data[i][c] - front.data[i][c]).abs() / front.data[i][c].abs().max(1e-3)).fold(0.0f32, f32::max)
+                    })
                     .fold(0.0f32, f32::max);
                 if checked.is_empty() {
                     Outcome::Fail("no pixel lies beyond the spots' reach".into())

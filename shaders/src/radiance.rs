@@ -39,7 +39,7 @@ pub fn clamp_color(c: [f32; 3]) -> [f32; 3] {
 pub fn is_clamped(c: [f32; 3]) -> bool {
     let d = clamp_color(c);
     // NaN never compares equal: such a colour is dropped, not clamped.
-    let same = |a: f32, b: f32| a == b || a != a;
+    let same = |a: f32, b: f32| a == b || crate::lens::is_nan(a);
     !(same(c[0], d[0]) && same(c[1], d[1]) && same(c[2], d[2]))
 }
 

@@ -120,7 +120,13 @@ pub fn decode_color(m: [u32; 3], e: u32) -> [f32; 3] {
 /// Alpha in [0, 1] (NaN as 0) as its 10-bit code.
 #[inline]
 pub fn encode_alpha(a: f32) -> u32 {
-    let a = if a > 1.0 { 1.0 } else if a > 0.0 { a } else { 0.0 };
+    let a = if a > 1.0 {
+        1.0
+    } else if a > 0.0 {
+        a
+    } else {
+        0.0
+    };
     (a * ALPHA_ONE as f32 + 0.5) as u32
 }
 

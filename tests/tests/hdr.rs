@@ -96,6 +96,7 @@ fn ties_match_between_cpu_and_vulkan() {
                 worst = worst.max((p[c] - q[c]).abs() / top);
             }
         }
+        eprintln!("{:?}: CPU and Vulkan differ by at most {worst:.2e} (relative)", o.merge);
         assert!(worst <= 1e-5, "CPU and Vulkan differ by {worst:.2e} ({:?})", o.merge);
     }
 }
@@ -152,5 +153,41 @@ fn a_highlight_costs_the_frame_nothing() {
         }
         let many = splat(&mut CpuBackend::new(), &flat(0.5, &|x, y| ((y * 64 + x) % 97 == 0).then_some(1e12)), &lens, &o).unwrap();
         assert!(many.image.data.iter().all(|p| p.iter().all(|&c| c >= 0.5 * (1.0 - 1e-4) && c.is_finite())), "{merge:?}");
+    }
+}
+
+/// `--background 3e38` (issue 26: +inf from the gather, −inf from ray tracing) and the float's
+/// maximum, through the path `dof render` takes: a built-in scene ray cast into layers with that
+/// background, then every method of the frame API on both backends: finite, non-negative output.
+#[test]
+fn a_background_at_the_float_limit_in_every_method() {
+    use dof::frame::{METHODS, MethodOptions};
+    use dof::methods::one_shot::one_shot;
+    use dof::scene::{LayerOptions, builtin, raycast_layers};
+    let mut vk = vulkan();
+    for bg in [3e38, f32::MAX] {
+        let mut b = builtin("fence").unwrap().with_size(64, 36);
+        b.scene = b.scene.with_background([bg; 3]).unwrap();
+        let lens = b.thin_lens().unwrap();
+        let layers = raycast_layers(&b.scene, &b.camera, &lens, &LayerOptions::default()).unwrap().layers;
+        let sky = layers.fragments.iter().filter(|f| f.depth.is_infinite() && f.color == [bg; 3]).count();
+        assert!(sky > 100, "the background reaches the layers ({sky} fragments)");
+        let mut backends: Vec<&mut dyn Backend> = Vec::new();
+        let mut cpu = CpuBackend::new();
+        backends.push(&mut cpu);
+        if let Some(vk) = vk.as_mut() {
+            backends.push(vk);
+        }
+        for backend in backends {
+            let kind = backend.kind();
+            for method in METHODS {
+                let out = one_shot(backend, method, &MethodOptions::default(), &layers, &lens).unwrap();
+                let bad = out.image.data.iter().filter(|p| !p.iter().all(|&c| c.is_finite() && c >= 0.0)).count();
+                assert_eq!(bad, 0, "{} on {kind} with background {bg:e}: {bad} pixels not finite and non-negative", method.name);
+            }
+        }
+    }
+    if let Some(vk) = vk.as_mut() {
+        assert_clean(vk);
     }
 }

@@ -20,10 +20,19 @@ pub enum Expect {
     Close(f32),
     /// Every pixel equal to the input's flat colour within a relative tolerance.
     Flat(f32),
-    /// The 8x8 corners of the image equal to the flat colour within a relative tolerance.
-    FlatCorners(f32),
+    /// The 8x8 corners of the image equal to a colour within a relative tolerance.
+    FlatCorners([f32; 3], f32),
     /// Only finite values.
     Finite,
+    /// No pixel darker than the input's darkest colour (per channel, within a relative tolerance,
+    /// less 2^-12 of the pixel's brightest channel: a fragment's channels share one exponent, so
+    /// a channel far below its fragment's brightest keeps an absolute error of 2^-14 of it): a
+    /// bright pixel never takes light from the others.
+    NoDarkening(f32),
+    /// Pixels farther than `radius` px from every spot (an input front channel above 1e6) keep
+    /// their input colour within a relative tolerance: a highlight costs the rest of the frame
+    /// nothing beyond its own disc.
+    AwayFromSpots { radius: u32, tol: f32 },
     /// Non-finite values only where the input's front was non-finite (nothing spreads).
     NoSpread,
     /// Only finite values, and the red channel's sum within a relative tolerance of the input's.
@@ -119,6 +128,19 @@ pub fn varied(i: u32) -> [f32; 3] {
 }
 
 const FLAT: [f32; 3] = [0.25, 3.0, 1200.0];
+/// The dim frame of the extreme-HDR cases (issue 26 measured 0.5 and 0.3 images).
+const DIM: [f32; 3] = [0.5, 0.3, 0.1];
+
+/// A `w`x`h` frame of [`DIM`] at 5 m (CoC radius under 5 px with `test_lens(0.02)`), with the
+/// pixels where `spot(pixel)` holds set to `bright` (same depth).
+fn dim_with_spots(w: u32, h: u32, bright: [f32; 3], spot: impl Fn(u32) -> bool) -> LayeredImage {
+    let mut img = LayeredImage::new(w, h, 1).expect("a valid test size");
+    for p in 0..w * h {
+        let color = if spot(p) { bright } else { DIM };
+        let _ = img.push(p % w, p / w, Fragment { color, alpha: 1.0, depth: 5.0 });
+    }
+    img
+}
 
 pub fn cases() -> Vec<Case> {
     vec![
@@ -181,6 +203,61 @@ pub fn cases() -> Vec<Case> {
             },
         },
         Case {
+            name: "colour-at-f32-max",
+            expectation: "every 97th pixel at f32::MAX (3.4e38) over a 0.5 frame: finite, non-negative, and no pixel darker than the frame (within 1e-3)",
+            expect: Expect::NoDarkening(1e-3),
+            build: || (dim_with_spots(64, 48, [f32::MAX; 3], |p| p % 97 == 0), test_lens(0.02)),
+        },
+        Case {
+            name: "colour-1e38",
+            expectation: "pixels of 1e38 and 3e38 in single channels over a 0.5 frame: finite, non-negative, no pixel darker than the frame (within 1e-3)",
+            expect: Expect::NoDarkening(1e-3),
+            build: || {
+                let mut img = dim_with_spots(64, 48, [1e38, 0.3, 0.1], |p| p % 89 == 0);
+                for p in (40..img.fragments.len()).step_by(131) {
+                    img.fragments[p].color = [0.5, 3e38, 0.1];
+                }
+                (img, test_lens(0.02))
+            },
+        },
+        Case {
+            name: "spots-1e12-every-97",
+            expectation: "a 1e12 pixel every 97 pixels over a 0.5 frame: no pixel darker than the frame (within 1e-3)",
+            expect: Expect::NoDarkening(1e-3),
+            build: || (dim_with_spots(96, 64, [1e12; 3], |p| p % 97 == 0), test_lens(0.02)),
+        },
+        Case {
+            name: "spot-1e11-in-dim",
+            expectation: "one 1e11 pixel in a dim frame: every pixel beyond 20 px of it keeps its colour within 1e-3",
+            expect: Expect::AwayFromSpots { radius: 20, tol: 1e-3 },
+            build: || (dim_with_spots(64, 64, [1e11; 3], |p| p == 20 * 64 + 20), test_lens(0.02)),
+        },
+        Case {
+            name: "spots-1e12-over-dim",
+            expectation: "a cluster of 1e12 spots in a dim frame: every pixel beyond 20 px of them keeps its colour within 1e-3",
+            expect: Expect::AwayFromSpots { radius: 20, tol: 1e-3 },
+            build: || {
+                let spot = |p: u32| (p % 80) % 5 == 2 && (p / 80) % 5 == 2 && p % 80 < 20 && p / 80 < 20;
+                (dim_with_spots(80, 64, [1e12, 2e12, 5e11], spot), test_lens(0.02))
+            },
+        },
+        Case {
+            name: "subnormal-colours",
+            expectation: "every colour subnormal (below 1.2e-38) or zero: finite and non-negative",
+            expect: Expect::Finite,
+            build: || (noise_image(40, 33, 3, |i| varied(i).map(|c| c * 1e-42)), test_lens(0.02)),
+        },
+        Case {
+            name: "background-at-limit",
+            expectation: "a blurred near square over a background of f32::MAX at +inf (`--background 3e38`): finite, non-negative, and no pixel darker than the square (within 1e-3)",
+            expect: Expect::NoDarkening(1e-3),
+            build: || {
+                let mut img = sky_over(noise_image(96, 96, 1, |_| DIM), |i| (8..88).contains(&(i % 96)) && (8..88).contains(&(i / 96)));
+                img.fragments.iter_mut().filter(|f| f.depth.is_infinite()).for_each(|f| f.color = [f32::MAX; 3]);
+                (img, test_lens(0.04))
+            },
+        },
+        Case {
             name: "focus-at-focal-length",
             expectation: "z_f = 1.0001 f (CoC of thousands of pixels): a finite image",
             expect: Expect::Finite,
@@ -217,7 +294,7 @@ pub fn cases() -> Vec<Case> {
         Case {
             name: "near-object-over-sky",
             expectation: "a blurred near square over a flat coloured sky at +inf: finite, and the sky keeps its colour within 1e-3 in the image's corners, beyond the blur",
-            expect: Expect::FlatCorners(1e-3),
+            expect: Expect::FlatCorners(FLAT, 1e-3),
             // The square's CoC radius is 19 px; the corners lie at least 32 px from it.
             build: || {
                 (
@@ -306,6 +383,12 @@ impl Case {
         if self.expect != Expect::NoSpread && !finite(&out) {
             return Outcome::Fail("non-finite pixels".into());
         }
+        // The numerical contract: non-negative input gives non-negative output.
+        let negative_in = front.data.iter().any(|p| p.iter().any(|&c| c < 0.0));
+        let negative_out = out.data.iter().filter(|p| p.iter().any(|&c| c < 0.0)).count();
+        if !negative_in && negative_out > 0 {
+            return Outcome::Fail(format!("{negative_out} negative pixels from non-negative input"));
+        }
         let worst = |want: &dyn Fn(usize) -> [f32; 3]| {
             out.data
                 .iter()
@@ -320,7 +403,7 @@ impl Case {
                 let err = if let Expect::Flat(_) = self.expect { worst(&|_| FLAT) } else { worst(&|i| front.data[i]) };
                 if err <= tol { Outcome::Pass(format!("within {err:.2e}")) } else { Outcome::Fail(format!("off by {err:.2e} > {tol:.0e}")) }
             }
-            Expect::FlatCorners(tol) => {
+            Expect::FlatCorners(want, tol) => {
                 let (w, h) = (out.width as usize, out.height as usize);
                 let corner = |i: usize| (i % w < 8 || i % w >= w - 8) && (i / w < 8 || i / w >= h - 8);
                 let err = out
@@ -328,7 +411,7 @@ impl Case {
                     .iter()
                     .enumerate()
                     .filter(|(i, _)| corner(*i))
-                    .map(|(_, p)| (0..3).map(|c| (p[c] - FLAT[c]).abs() / FLAT[c]).fold(0.0f32, f32::max))
+                    .map(|(_, p)| (0..3).map(|c| (p[c] - want[c]).abs() / want[c]).fold(0.0f32, f32::max))
                     .fold(0.0f32, f32::max);
                 if err <= tol {
                     Outcome::Pass(format!("corners within {err:.2e}"))
@@ -350,6 +433,44 @@ impl Case {
                 Ok(_) => Outcome::Fail("two runs differ".into()),
                 Err(e) => Outcome::Fail(format!("second run: {e}")),
             },
+            Expect::NoDarkening(tol) => {
+                let darkest = front.data.iter().fold([f32::INFINITY; 3], |m, p| [m[0].min(p[0]), m[1].min(p[1]), m[2].min(p[2])]);
+                let shared = |p: &[f32; 3]| p[0].max(p[1]).max(p[2]) * (1.0 / 4096.0);
+                let darker = out.data.iter().filter(|p| (0..3).any(|c| p[c] < darkest[c] * (1.0 - tol) - shared(p))).count();
+                if darker == 0 {
+                    Outcome::Pass(format!("no pixel below {darkest:?}"))
+                } else {
+                    Outcome::Fail(format!("{darker} pixels darker than the input's darkest {darkest:?}"))
+                }
+            }
+            Expect::AwayFromSpots { radius, tol } => {
+                let w = out.width as usize;
+                let spots: Vec<(i64, i64)> = front
+                    .data
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, p)| p.iter().any(|&c| c > 1e6))
+                    .map(|(i, _)| ((i % w) as i64, (i / w) as i64))
+                    .collect();
+                let far = |i: usize| {
+                    let (x, y) = ((i % w) as i64, (i / w) as i64);
+                    spots.iter().all(|&(sx, sy)| (x - sx).pow(2) + (y - sy).pow(2) > (radius as i64).pow(2))
+                };
+                let checked: Vec<usize> = (0..out.data.len()).filter(|&i| far(i)).collect();
+                let err = checked
+                    .iter()
+                    .map(|&i| {
+                        (0..3).map(|c| (out.data[i][c] - front.data[i][c]).abs() / front.data[i][c].abs().max(1e-3)).fold(0.0f32, f32::max)
+                    })
+                    .fold(0.0f32, f32::max);
+                if checked.is_empty() {
+                    Outcome::Fail("no pixel lies beyond the spots' reach".into())
+                } else if err <= tol {
+                    Outcome::Pass(format!("{} pixels beyond {radius} px of {} spots within {err:.2e}", checked.len(), spots.len()))
+                } else {
+                    Outcome::Fail(format!("pixels beyond {radius} px of the spots off by {err:.2e} > {tol:.0e}"))
+                }
+            }
             Expect::Finite | Expect::ResultOrClearError => Outcome::Pass("finite".into()),
             Expect::NoSpread => Outcome::Pass("nothing spread".into()),
             Expect::InvalidArgument => Outcome::Fail("unreachable".into()),

@@ -70,7 +70,7 @@ pub fn luminance(c: [f32; 3]) -> f32 {
 
 #[inline]
 fn colour<M: Mem>(m: &M, i: u32) -> [f32; 3] {
-    [f32::from_bits(m.load(3 * i)), f32::from_bits(m.load(3 * i + 1)), f32::from_bits(m.load(3 * i + 2))]
+    crate::radiance::clamp_color([f32::from_bits(m.load(3 * i)), f32::from_bits(m.load(3 * i + 1)), f32::from_bits(m.load(3 * i + 2))])
 }
 
 #[inline]

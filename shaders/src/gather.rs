@@ -34,11 +34,12 @@ pub fn radius_px(lens: &ThinLens, z: f32, max_radius: f32) -> f32 {
     lens.coc_radius_px(z).min(max_radius)
 }
 
-/// Colour of pixel `i`, or `None` when any channel is not finite.
+/// Colour of pixel `i` under the numerical contract ([`crate::radiance`]), or `None` when any
+/// channel is not finite.
 #[inline]
 fn colour<M: Mem>(color: &M, i: u32) -> Option<[f32; 3]> {
     let c = [f32::from_bits(color.load(3 * i)), f32::from_bits(color.load(3 * i + 1)), f32::from_bits(color.load(3 * i + 2))];
-    if finite(c[0]) && finite(c[1]) && finite(c[2]) { Some(c) } else { None }
+    if finite(c[0]) && finite(c[1]) && finite(c[2]) { Some(crate::radiance::clamp_color(c)) } else { None }
 }
 
 /// The planned window radius: the reduction's, within the configured cap.

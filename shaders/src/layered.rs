@@ -145,6 +145,7 @@ fn matte_pixel<M: Mem>(p: &LayeredParams, anchors: &[f32; 4], input: &M, counts:
         let c = [f32::from_bits(input.load(at)), f32::from_bits(input.load(at + 1)), f32::from_bits(input.load(at + 2))];
         let z = f32::from_bits(input.load(at + 3));
         if is_finite(c[0]) && is_finite(c[1]) && is_finite(c[2]) && is_positive(z) {
+            let c = crate::radiance::clamp_color(c);
             let w = if first { matte_front(anchors, z) } else { matte_hidden(anchors, z) };
             first = false;
             let t = 1.0 - acc[3];

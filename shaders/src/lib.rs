@@ -21,6 +21,7 @@ pub mod layered;
 pub mod lens;
 pub mod math;
 pub mod peel;
+pub mod radiance;
 pub mod raster;
 pub mod raytrace;
 pub mod ring_gather;

@@ -119,7 +119,7 @@ fn fragment<M: Mem>(p: &TraceParams, input: &M, pi: u32, j: u32) -> Option<([f32
     if is_finite(c[0]) && is_finite(c[1]) && is_finite(c[2]) && is_positive(z) {
         let r = ray_r(&p.lens, z);
         if is_finite(r) {
-            return Some((c, r));
+            return Some((crate::radiance::clamp_color(c), r));
         }
     }
     None

@@ -124,6 +124,7 @@ pub fn signed_radius(lens: &ThinLens, z: f32, cap: f32) -> f32 {
 #[inline]
 fn sample<M: Mem>(color: &M, depth: &M, i: u32) -> Option<([f32; 3], f32)> {
     let c = [f32::from_bits(color.load(3 * i)), f32::from_bits(color.load(3 * i + 1)), f32::from_bits(color.load(3 * i + 2))];
+    let c = crate::radiance::clamp_color(c);
     let z = f32::from_bits(depth.load(i));
     if finite(c[0]) && finite(c[1]) && finite(c[2]) && is_positive(z) { Some((c, z)) } else { None }
 }

@@ -567,6 +567,16 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) 
     let ms: f64 = out.stages.iter().map(|t| t.ms).sum();
     println!("{} ({}) on {}: {ms:.2} ms in kernels", method.title, method.paper, b.device_name());
     println!("{}", out.report.summary);
+    // The numerical contract's clamp, counted over the input with the kernels' own rule (splatting
+    // also counts it on the device, in its summary above).
+    let clamped = layers
+        .counts
+        .iter()
+        .enumerate()
+        .flat_map(|(p, &n)| &layers.fragments[p * layers.max_layers as usize..][..n.min(layers.max_layers) as usize])
+        .filter(|f| dof_shaders::radiance::is_clamped(f.color))
+        .count();
+    println!("numerical contract: {clamped} input colour(s) clamped where read (negative, subnormal or above 2^100)");
     let image = out.image;
     Ok((image.crop(margin), crop_plane(&depth, layers.width, margin)))
 }

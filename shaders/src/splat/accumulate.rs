@@ -15,8 +15,10 @@
 //! coverage at its depth, which ends the pixel's traversal, and keeps its full f32 colour. A pixel
 //! stops early once its coverage is within [`SATURATED`] of full; the workgroup stops when all its
 //! pixels have. The result is normalised by the coverage gathered (which fills the frame border,
-//! where fragments from outside the image are missing, and holes left by dropped input) and undoes
-//! the colour scale of packing. A tile no list reaches (`copy`) writes its sharp fronts directly.
+//! where fragments from outside the image are missing, and holes left by dropped input). Colours are
+//! at most `radiance::COLOR_MAX` = 2^100 and the coverage weights sum to at most 1, so the sums stay
+//! finite, and so does the normalisation (by a coverage of at least 1e-6). A tile no list reaches
+//! (`copy`) writes its sharp fronts directly.
 
 use super::fragment::{Fragment, shaped_weight, weight_sum};
 use super::pack::load_sharp;
@@ -203,11 +205,10 @@ pub fn accumulate_pass<G: Group, M: Mem>(
         let (c, z) = load_sharp(&sharp, y * p.width + x);
         let rest = 1.0 - get(sh, USED, lid);
         if !is_nan(z) && rest > 0.0 {
-            let s = p.color_scale;
-            blend(sh, lid, rest, [s * c[0], s * c[1], s * c[2]]);
+            blend(sh, lid, rest, c);
         }
         let cover = get(sh, USED, lid);
-        let norm = if cover > 1e-6 { 1.0 / (cover * p.color_scale) } else { 0.0 };
+        let norm = if cover > 1e-6 { 1.0 / cover } else { 0.0 };
         store(&mut out, x, y, [get(sh, ACC_R, lid) * norm, get(sh, ACC_G, lid) * norm, get(sh, ACC_B, lid) * norm]);
         let visited = sh[VISITED + lid as usize];
         if visited < len {

@@ -1,17 +1,40 @@
-//! The splatting fragment: 16 bytes, laid out as Franke et al. 2018, Fig. 7.
+//! The splatting fragment: 16 bytes, the fields of Franke et al. 2018, Fig. 7, with the colour in a
+//! shared-exponent format wide enough for any colour the numerical contract admits
+//! ([`crate::radiance`]) and a coverage field.
 //!
-//! | word | bits 0-15 | bits 16-31 |
-//! |---|---|---|
-//! | 0 | red (f16) | green (f16) |
-//! | 1 | merge level | blue (f16) |
-//! | 2 | depth (f32) | |
-//! | 3 | x (half pixels) | y (half pixels) |
+//! | word | bits 0-13 | bits 14-23 | bits 24-27 | bits 28-29 | bits 30-31 |
+//! |---|---|---|---|---|---|
+//! | 0 | red mantissa | green mantissa (bits 14-27) | | merge level | reserved (0) |
+//! | 1 | blue mantissa | alpha (10 bits) | exponent (bits 24-31) | | |
+//! | 2 | depth (f32) | | | | |
+//! | 3 | x (bits 0-15, half pixels) | y (bits 16-31) | | | |
+//!
+//! Colour ([`encode_color`]): one exponent `E` for the three channels, the f32 exponent of the
+//! largest channel (biased by 127, 8 bits), and three 14-bit mantissas `m` with `c = m · 2^(E−13)`:
+//! the largest channel keeps a relative error of at most 2^-14 (6.1e-5; a half float's is 4.9e-4),
+//! the others an absolute error of at most 2^-14 of the largest. Each fragment has its own exponent,
+//! so a 1e12 highlight beside a 0.3 wall costs the wall nothing (the frame-wide colour scale this
+//! replaces made it underflow). `E` spans [[`EXP_MIN`], [`EXP_MAX`]]: a colour whose largest channel
+//! is below 2^-113 (9.6e-35) is stored as black, and [`crate::radiance::COLOR_MAX`] = 2^100 is the
+//! largest. Encoding and decoding multiply by powers of two only, so they are exact and equal on
+//! every backend.
+//!
+//! Alpha ([`encode_alpha`]): coverage in [0, 1] in 10 bits (steps of 1/1023; 0 and 1 exact). Every
+//! input sets it to 1 today; merging keeps it (only fragments of equal alpha merge), and
+//! accumulation does not read it yet: the alpha issue (#23) defines its use.
 //!
 //! The position is the centre of the fragment's footprint in half-pixel units of the full-resolution
 //! image (pixel `x` is centred at `2x + 1`; a merged 2x2 or 4x4 block at a pixel corner), so merged
 //! fragments keep an exact position and images up to 32767 pixels wide fit. The merge level (0: one
 //! pixel, 1: a 2x2 block, 2: 4x4) says how many pixels the fragment stands for, and how far its
 //! members' circles reach beyond its own.
+//!
+//! Ties. A tile list is ordered by the key `(depth, dense index)`: the sort orders depths and is
+//! stable, and `bin` gathers every list in increasing dense index (neighbour tiles in row-major
+//! order, each tile's fragments in the dense array's order). The dense index orders fragments by
+//! tile, then cell (row-major inside the tile), then slot: a function of the fragment's position,
+//! merge level (which sets its cell) and layer alone, so equal depths resolve the same way on every
+//! backend and schedule, and a frame recorded twice is equal to itself.
 //!
 //! The CoC is derived from depth on demand. A fragment is splatted over the disc of radius
 //! `coc(depth)/2 + extent(level)`: the CoC widened by half the width of the block of pixels it stands
@@ -22,20 +45,102 @@
 
 use crate::aperture::Aperture;
 use crate::exec::{Load, Mem};
-use crate::half::{HALF_MAX, f16_to_f32, f32_to_f16};
 use crate::lens::ThinLens;
 use crate::math::{ceil, floor, sqrt};
+use crate::radiance::clamp_color;
 
 pub const WORDS: u32 = 4;
+/// Bytes of a packed fragment.
+pub const BYTES: u32 = 4 * WORDS;
 /// Position units per pixel.
 pub const POS_UNITS: u32 = 2;
 /// Widest and tallest image the position field holds.
 pub const MAX_EDGE: u32 = 0xffff / POS_UNITS;
 pub const MAX_LEVEL: u32 = 2;
 
+/// Bits of each colour mantissa (a channel equal to `2^E` has the mantissa `2^13`).
+pub const MANTISSA_BITS: u32 = 14;
+const MANTISSA_MASK: u32 = (1 << MANTISSA_BITS) - 1;
+/// Range of the shared exponent (unbiased): `2^EXP_MAX` is `radiance::COLOR_MAX`.
+pub const EXP_MIN: i32 = -113;
+pub const EXP_MAX: i32 = 100;
+/// Bits of alpha, and its largest code (alpha 1).
+pub const ALPHA_BITS: u32 = 10;
+const ALPHA_ONE: u32 = (1 << ALPHA_BITS) - 1;
+
+/// `2^k` for `k` in [-126, 127].
+#[inline]
+fn pow2(k: i32) -> f32 {
+    f32::from_bits(((k + 127) as u32) << 23)
+}
+
+/// A colour as three mantissas and a biased exponent (0 for black). The colour goes through
+/// [`clamp_color`] first; a non-finite channel must not reach here (pack drops such slots).
+#[inline]
+pub fn encode_color(c: [f32; 3]) -> ([u32; 3], u32) {
+    let c = clamp_color(c);
+    let m = if c[0] > c[1] { c[0] } else { c[1] };
+    let m = if m > c[2] { m } else { c[2] };
+    if !(m >= pow2(EXP_MIN)) {
+        return ([0; 3], 0);
+    }
+    let mut e = ((m.to_bits() >> 23) & 0xff) as i32 - 127;
+    let mut out = [0u32; 3];
+    // At most twice: rounding the largest mantissa up to 2^14 moves to the next exponent, where it
+    // is exactly 2^13.
+    let mut pass = 0;
+    while pass < 2 {
+        let s = pow2(13 - e);
+        let mut top = 0;
+        let mut i = 0;
+        while i < 3 {
+            out[i] = (c[i] * s + 0.5) as u32;
+            top = if out[i] > top { out[i] } else { top };
+            i += 1;
+        }
+        if top <= MANTISSA_MASK {
+            break;
+        }
+        e += 1;
+        pass += 1;
+    }
+    (out, (e + 127) as u32)
+}
+
+/// The colour of mantissas `m` and biased exponent `e`.
+#[inline]
+pub fn decode_color(m: [u32; 3], e: u32) -> [f32; 3] {
+    if e == 0 {
+        return [0.0; 3];
+    }
+    let s = pow2(e as i32 - 127 - 13);
+    [m[0] as f32 * s, m[1] as f32 * s, m[2] as f32 * s]
+}
+
+/// Alpha in [0, 1] (NaN as 0) as its 10-bit code.
+#[inline]
+pub fn encode_alpha(a: f32) -> u32 {
+    let a = if a > 1.0 {
+        1.0
+    } else if a > 0.0 {
+        a
+    } else {
+        0.0
+    };
+    (a * ALPHA_ONE as f32 + 0.5) as u32
+}
+
+/// The alpha of code `a`: 0 and 1 exact.
+#[inline]
+pub fn decode_alpha(a: u32) -> f32 {
+    if a >= ALPHA_ONE { 1.0 } else { a as f32 * (1.0 / ALPHA_ONE as f32) }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fragment {
     pub color: [f32; 3],
+    /// Coverage in [0, 1] (1 for every input today).
+    pub alpha: f32,
     pub depth: f32,
     pub level: u32,
     /// Centre in half pixels.
@@ -43,18 +148,18 @@ pub struct Fragment {
 }
 
 impl Fragment {
-    /// A one-pixel fragment at pixel `(x, y)`.
+    /// An opaque one-pixel fragment at pixel `(x, y)`.
     #[inline]
     pub fn at_pixel(x: u32, y: u32, color: [f32; 3], depth: f32) -> Self {
-        Fragment { color, depth, level: 0, pos: [POS_UNITS * x + 1, POS_UNITS * y + 1] }
+        Fragment { color, alpha: 1.0, depth, level: 0, pos: [POS_UNITS * x + 1, POS_UNITS * y + 1] }
     }
 
     #[inline]
     pub fn pack(&self) -> [u32; 4] {
-        let h = |c: f32| f32_to_f16(clamp_half(c));
+        let (m, e) = encode_color(self.color);
         [
-            h(self.color[0]) | (h(self.color[1]) << 16),
-            (self.level & 0xffff) | (h(self.color[2]) << 16),
+            m[0] | (m[1] << MANTISSA_BITS) | ((self.level & 3) << 28),
+            m[2] | (encode_alpha(self.alpha) << MANTISSA_BITS) | (e << 24),
             self.depth.to_bits(),
             (self.pos[0] & 0xffff) | (self.pos[1] << 16),
         ]
@@ -62,10 +167,12 @@ impl Fragment {
 
     #[inline]
     pub fn unpack(w: [u32; 4]) -> Self {
+        let m = [w[0] & MANTISSA_MASK, (w[0] >> MANTISSA_BITS) & MANTISSA_MASK, w[1] & MANTISSA_MASK];
         Fragment {
-            color: [f16_to_f32(w[0] & 0xffff), f16_to_f32(w[0] >> 16), f16_to_f32(w[1] >> 16)],
+            color: decode_color(m, w[1] >> 24),
+            alpha: decode_alpha((w[1] >> MANTISSA_BITS) & ALPHA_ONE),
             depth: f32::from_bits(w[2]),
-            level: w[1] & 0xffff,
+            level: (w[0] >> 28) & 3,
             pos: [w[3] & 0xffff, w[3] >> 16],
         }
     }
@@ -125,18 +232,6 @@ impl Fragment {
 #[inline]
 pub fn depth_of<M: Mem>(m: &M, index: u32) -> f32 {
     f32::from_bits(m.load(WORDS * index + 2))
-}
-
-/// `c` clamped to the finite half-float range.
-#[inline]
-pub fn clamp_half(c: f32) -> f32 {
-    if c > HALF_MAX {
-        HALF_MAX
-    } else if c < -HALF_MAX {
-        -HALF_MAX
-    } else {
-        c
-    }
 }
 
 /// How far a fragment of `level` reaches beyond the CoC circle at its centre: half the edge of the
@@ -221,4 +316,112 @@ pub fn weight_sum<L: Load>(c: [f32; 2], s: f32, w: f32, ap: &Aperture, mirror: f
         y += 1.0;
     }
     sum
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::radiance::COLOR_MAX;
+
+    fn round_trip(f: Fragment) -> Fragment {
+        Fragment::unpack(f.pack())
+    }
+
+    #[test]
+    fn fields_round_trip() {
+        let f = Fragment { color: [0.5, 2.0, 7.0], alpha: 1.0, depth: 3.25, level: 2, pos: [65535, 1234] };
+        let g = round_trip(f);
+        assert_eq!((g.alpha, g.depth, g.level, g.pos), (1.0, 3.25, 2, [65535, 1234]));
+        // Dyadic values with few bits are exact.
+        assert_eq!(g.color, [0.5, 2.0, 7.0]);
+        assert_eq!(f.pack()[0] >> 30, 0, "reserved bits stay 0");
+    }
+
+    /// The largest channel keeps 2^-14 relative precision from 2^-113 up to COLOR_MAX; the others
+    /// 2^-14 of the largest in absolute terms.
+    #[test]
+    fn colour_precision_over_the_whole_range() {
+        let mut v = 1.1e-34f32;
+        while v <= COLOR_MAX {
+            for c in [[v, 0.3 * v, 0.01 * v], [0.7 * v, v, 0.0], [0.0, 0.0, v]] {
+                let g = round_trip(Fragment::at_pixel(0, 0, c, 1.0)).color;
+                let top = c.iter().copied().fold(0.0f32, f32::max);
+                for i in 0..3 {
+                    let err = (g[i] - c[i]).abs();
+                    assert!(err <= top * (1.0 / 16384.0) * 1.0001, "{c:?} -> {g:?}");
+                    if c[i] == top {
+                        assert!(err <= top * (1.0 / 16384.0) * 1.0001);
+                    }
+                }
+            }
+            v *= 7.3;
+        }
+    }
+
+    #[test]
+    fn colour_limits() {
+        let enc = |c: [f32; 3]| round_trip(Fragment::at_pixel(0, 0, c, 1.0)).color;
+        assert_eq!(enc([f32::MAX, 3e38, 1e38]), [COLOR_MAX; 3]);
+        assert_eq!(enc([COLOR_MAX, 0.0, 0.0]), [COLOR_MAX, 0.0, 0.0]);
+        assert_eq!(enc([0.0; 3]), [0.0; 3]);
+        assert_eq!(enc([1e-40, 1e-36, 0.0]), [0.0; 3], "below 2^-113: black");
+        assert_eq!(enc([-1.0, 0.5, 0.25]), [0.0, 0.5, 0.25], "negative channels are 0");
+        // Rounding up to the next exponent: 2^14 − 0.25 units of 2^-13.
+        let just_below = 2.0 - 1.0 / 32768.0;
+        assert_eq!(enc([just_below, 1.0, 0.0]), [2.0, 1.0, 0.0]);
+        // 1e12 beside 0.3 in separate fragments: each keeps its own precision.
+        let big = enc([1e12, 1e12, 1e12])[0];
+        let dim = enc([0.3, 0.3, 0.3])[0];
+        assert!((big / 1e12 - 1.0).abs() < 1e-4 && (dim / 0.3 - 1.0).abs() < 1e-4);
+    }
+
+    #[test]
+    fn encoding_is_exact_and_stable() {
+        // Decoding then encoding again changes nothing: a merged or re-packed fragment does not
+        // drift.
+        for i in 0..2000u32 {
+            let v = f32::from_bits(0x0d00_0000 + i.wrapping_mul(2_654_435_761) % 0x6000_0000);
+            let c = [v, 0.37 * v, 0.001 * v];
+            let once = round_trip(Fragment::at_pixel(1, 2, c, 1.0));
+            assert_eq!(round_trip(once), once, "{c:?}");
+        }
+    }
+
+    #[test]
+    fn alpha_codes() {
+        assert_eq!(decode_alpha(encode_alpha(1.0)), 1.0);
+        assert_eq!(decode_alpha(encode_alpha(0.0)), 0.0);
+        assert_eq!(decode_alpha(encode_alpha(f32::NAN)), 0.0);
+        assert_eq!(decode_alpha(encode_alpha(7.0)), 1.0);
+        assert_eq!(decode_alpha(encode_alpha(-1.0)), 0.0);
+        for k in 0..=100 {
+            let a = k as f32 / 100.0;
+            let g = round_trip(Fragment { alpha: a, ..Fragment::at_pixel(3, 4, [1.0; 3], 2.0) });
+            assert!((g.alpha - a).abs() <= 0.5 / 1023.0 + 1e-7, "{a} -> {}", g.alpha);
+            assert_eq!((g.color, g.depth, g.level, g.pos), ([1.0; 3], 2.0, 0, [7, 9]));
+        }
+    }
+
+    #[test]
+    fn every_field_has_its_own_bits() {
+        let base = Fragment { color: [1.0, 2.0, 3.0], alpha: decode_alpha(600), depth: 4.0, level: 1, pos: [10, 20] };
+        let variants = [
+            Fragment { color: [1.5, 2.0, 3.0], ..base },
+            Fragment { color: [1.0, 2.5, 3.0], ..base },
+            Fragment { color: [1.0, 2.0, 3.5], ..base },
+            Fragment { color: [2.0, 4.0, 6.0], ..base },
+            Fragment { alpha: decode_alpha(300), ..base },
+            Fragment { depth: 5.0, ..base },
+            Fragment { level: 2, ..base },
+            Fragment { pos: [11, 20], ..base },
+            Fragment { pos: [10, 21], ..base },
+        ];
+        for v in variants {
+            let g = round_trip(v);
+            assert_eq!(g, v, "{v:?}");
+            assert_ne!(v.pack(), base.pack());
+        }
+        assert_eq!(round_trip(base), base);
+        assert_eq!(BYTES, 16);
+    }
 }

@@ -3,7 +3,7 @@
 //! One invocation per output cell walks the four member cells' lists front to back (each list is in
 //! depth order). While all four heads are mergeable (same merge level as this step's input, all out of
 //! focus, depths within `merge_depth_ratio`, every colour channel within `merge_color_tol` of its
-//! value) they become one fragment: the members' average colour, the depth of the member with the
+//! value, equal alpha) they become one fragment: the members' average colour and their alpha, the depth of the member with the
 //! largest CoC, the block's centre, the next level. Otherwise the front-most head is passed through
 //! unchanged (never merged again: its level no longer matches). Merging never makes a fragment
 //! transparent: all four members or none.
@@ -43,7 +43,8 @@ pub fn mergeable(f: &[Fragment; 4], level: u32, p: &SplatParams) -> bool {
     let mut m = 0;
     while m < 4 {
         let q = &f[m];
-        if q.level != level || !(p.lens.coc_radius_px(q.depth) >= p.merge_min_radius) {
+        // Only fragments of equal alpha merge: a translucent one never joins an opaque one.
+        if q.level != level || q.alpha != f[0].alpha || !(p.lens.coc_radius_px(q.depth) >= p.merge_min_radius) {
             return false;
         }
         zmin = if q.depth < zmin { q.depth } else { zmin };
@@ -88,7 +89,7 @@ pub fn merged(f: &[Fragment; 4], lens: &ThinLens, ox: u32, oy: u32, edge: u32) -
         m += 1;
     }
     // The block's centre in half pixels: 2·(o·edge + edge/2).
-    Fragment { color, depth: f[widest].depth, level: f[0].level + 1, pos: [2 * ox * edge + edge, 2 * oy * edge + edge] }
+    Fragment { color, alpha: f[0].alpha, depth: f[widest].depth, level: f[0].level + 1, pos: [2 * ox * edge + edge, 2 * oy * edge + edge] }
 }
 
 pub fn merge_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells_in: M, counts_in: M, mut cells_out: M, mut counts_out: M, mut st: M) {
@@ -118,7 +119,7 @@ pub fn merge_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells_in: M, cou
         // Every step consumes at least one input fragment.
         while step < total {
             step += 1;
-            let mut f = [Fragment { color: [0.0; 3], depth: 0.0, level: 0, pos: [0; 2] }; 4];
+            let mut f = [Fragment { color: [0.0; 3], alpha: 1.0, depth: 0.0, level: 0, pos: [0; 2] }; 4];
             let mut present = 0;
             let mut front = 4usize;
             let mut m = 0usize;

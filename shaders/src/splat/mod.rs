@@ -1,10 +1,11 @@
 //! Tiled splatting of a multi-layer image (Franke et al. 2018, §5-6; Selgrad et al. 2016 is the same pipeline on the front
 //! layer only). Stages, each a kernel here, recorded by `host/src/frame/splat.rs`:
 //!
-//! 0. [`plan`]: the largest CoC radius and the brightest colour, reduced on the device, give the
-//!    rings, the radius cap and the colour scale (nothing is decided on the host from the image).
-//! 1. [`pack`]: per-pixel layer slots → 16-byte [`fragment::Fragment`]s (Franke et al. 2018, Fig. 7); non-finite
-//!    colours and invalid depths are dropped, colours scaled into the half-float range, and an empty
+//! 0. [`plan`]: the largest CoC radius, reduced on the device, gives the rings and the radius cap
+//!    (nothing is decided on the host from the image).
+//! 1. [`pack`]: per-pixel layer slots → 16-byte [`fragment::Fragment`]s (Franke et al. 2018, Fig. 7,
+//!    with a per-fragment colour exponent and alpha); non-finite colours and invalid depths are
+//!    dropped, colours clamped to the numerical contract ([`crate::radiance`]), and an empty
 //!    pixel gets the sky (black at infinite depth) so that coverage is complete. In-focus fragments
 //!    stay out of the lists: a pixel's first one is kept per pixel (its "sharp front").
 //! 2. [`merge`] (optional, once for 2x2, twice for 4x4): neighbouring out-of-focus fragments of
@@ -44,8 +45,8 @@ pub const MAX_GROUPS: u32 = 65535;
 /// `flags`: drop fragments inside a merged fragment's umbra (§6.2).
 pub const FLAG_UMBRA_MERGE: u32 = 1;
 
-/// Push constants of every splatting kernel (128 bytes, all that Vulkan guarantees). `rings`,
-/// `max_radius` and `color_scale` are the configured bounds here; the kernels use the frame's own,
+/// Push constants of every splatting kernel (128 bytes, all that Vulkan guarantees). `rings` and
+/// `max_radius` are the configured bounds here; the kernels use the frame's own,
 /// which `plan::splat_plan_finish` writes on the device (see [`plan::planned`]).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
@@ -71,9 +72,6 @@ pub struct SplatParams {
     pub merge_min_radius: f32,
     pub merge_depth_ratio: f32,
     pub merge_color_tol: f32,
-    /// Power of two the colours are scaled by before packing (so HDR values beyond the half-float
-    /// range survive) and divided by after accumulation: 1 for most images.
-    pub color_scale: f32,
     pub lens: ThinLens,
     /// The aperture shape `accumulate` tests pixels against (binning uses the enclosing circle).
     pub aperture: Aperture,
@@ -108,7 +106,7 @@ pub const fn block_for(tile: u32) -> u32 {
 pub mod stats {
     /// Input fragments dropped for a non-finite colour or a depth that is not positive.
     pub const DROPPED: u32 = 0;
-    /// Colours clamped to the half-float range.
+    /// Input colours changed by the numerical contract's clamp (`radiance::clamp_color`).
     pub const CLAMPED: u32 = 1;
     /// Black background fragments added for pixels without data (no slot at all).
     pub const SKY: u32 = 2;
@@ -138,14 +136,12 @@ pub mod stats {
     pub const OVERFLOW_ENTRIES: u32 = 15;
     /// List entries allocated so far (the pool's bump pointer; may pass the capacity on overflow).
     pub const LIST_TOP: u32 = 16;
-    /// The device plan: largest CoC radius present and brightest channel (f32 bits, reduced), then
-    /// the rings, the radius cap (f32 bits) and the colour scale (f32 bits) derived from them.
+    /// The device plan: largest CoC radius present (f32 bits, reduced), then the rings and the
+    /// radius cap (f32 bits) derived from it.
     pub const WIDEST: u32 = 17;
-    pub const BRIGHTEST: u32 = 18;
-    pub const RINGS: u32 = 19;
-    pub const RADIUS_CAP: u32 = 20;
-    pub const COLOR_SCALE: u32 = 21;
-    pub const WORDS: u32 = 22;
+    pub const RINGS: u32 = 18;
+    pub const RADIUS_CAP: u32 = 19;
+    pub const WORDS: u32 = 20;
 }
 
 #[cfg(not(target_arch = "spirv"))]

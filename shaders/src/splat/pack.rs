@@ -2,17 +2,19 @@
 //!
 //! Input: `layers` (per pixel `params.layers` slots of 4 words: red, green, blue, depth as f32 bits,
 //! front to back) and `counts` (slots used per pixel). A slot with a non-finite colour or a depth that
-//! is not positive (NaN, 0, negative) is dropped and counted: it never spreads. Colours are scaled
-//! by `color_scale` (the device plan picks a power of two that brings the brightest into the half-float
-//! range); what still lies beyond it is clamped and counted. The background arrives as a slot at
+//! is not positive (NaN, 0, negative) is dropped and counted: it never spreads. Every other colour goes
+//! through the numerical contract's [`clamp_color`] (negative and subnormal channels to 0, channels
+//! above `COLOR_MAX` to it; counted when it changes a value), then into the fragment's
+//! shared-exponent colour, which holds the whole contract range. The background arrives as a slot at
 //! infinite depth (its CoC the far-field limit) and blends like any surface. A pixel with no slot
 //! at all has no data: it gets a black background fragment, as `LayeredImage::front` reads it (a
 //! pixel whose slots were all dropped gets nothing and is filled by its neighbours' blur).
 
-use super::fragment::{Fragment, clamp_half};
+use super::fragment::Fragment;
 use super::{SplatParams, stats};
 use crate::exec::{Group, Mem};
 use crate::lens::{is_finite, is_positive};
+use crate::radiance::{clamp_color, is_clamped};
 use crate::wg::for_each_item;
 
 /// The slot `(pixel, k)` of the input: colour and depth.
@@ -79,6 +81,8 @@ pub fn pack_pass<G: Group, M: Mem>(
                 dropped += 1;
                 continue;
             }
+            clamped += is_clamped(c) as u32;
+            let c = clamp_color(c);
             if Fragment::at_pixel(x, y, c, z).radius(&p.lens, p.max_radius) <= 1.0 {
                 if front {
                     // Behind the sharp front: invisible here, and it reaches no other pixel.
@@ -89,12 +93,6 @@ pub fn pack_pass<G: Group, M: Mem>(
                 }
                 continue;
             }
-            let s = p.color_scale;
-            let c = [s * c[0], s * c[1], s * c[2]];
-            if clamp_half(c[0]) != c[0] || clamp_half(c[1]) != c[1] || clamp_half(c[2]) != c[2] {
-                clamped += 1;
-            }
-            let c = [clamp_half(c[0]), clamp_half(c[1]), clamp_half(c[2])];
             Fragment::at_pixel(x, y, c, z).store(&mut cells, i * p.layers + kept);
             kept += 1;
         }

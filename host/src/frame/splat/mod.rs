@@ -314,14 +314,13 @@ impl SplatContext {
             tile: o.tile,
             tiles_x: f.width.div_ceil(o.tile),
             tiles_y: f.height.div_ceil(o.tile),
-            // The device plan replaces these three (`dof_shaders::splat::plan::planned`).
+            // The device plan replaces these two (`dof_shaders::splat::plan::planned`).
             rings: MAX_RINGS,
             flags: if o.umbra_merge { FLAG_UMBRA_MERGE } else { 0 },
             max_radius: self.radius_cap,
             merge_min_radius: o.merge_min_radius,
             merge_depth_ratio: o.merge_depth_ratio,
             merge_color_tol: o.merge_color_tol,
-            color_scale: 1.0,
             lens: f.lens,
             aperture: o.aperture.kernel,
             list_capacity: self.list_entries as u32,
@@ -429,7 +428,6 @@ impl SplatContext {
             max_coc_radius: f32::from_bits(c(stats::WIDEST)),
             radius_cap: f32::from_bits(c(stats::RADIUS_CAP)),
             rings: c(stats::RINGS),
-            color_scale: f32::from_bits(c(stats::COLOR_SCALE)),
             merge_steps: self.merge_steps,
         };
         Ok(SplatReport {

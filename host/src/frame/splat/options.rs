@@ -91,8 +91,6 @@ pub struct Plan {
     pub radius_cap: f32,
     /// Tile rings fragments may reach: from the largest radius present, not the configured maximum.
     pub rings: u32,
-    /// Power of two that brings the brightest colour into the half-float range (1 when it already is).
-    pub color_scale: f32,
     /// 2x2 merging steps the frame ran (merging leaves fragments below the merge radius alone).
     pub merge_steps: u32,
 }

@@ -78,7 +78,7 @@ impl SplatReport {
             );
         }
         s += &format!(
-            "fragments: {} in ({:.2}/px; a full {}-layer image holds {}), {} dropped (non-finite or bad depth), {} clamped to half range, {} empty pixels given a black background\n",
+            "fragments: {} in ({:.2}/px; a full {}-layer image holds {}), {} dropped (non-finite or bad depth), {} clamped (negative, subnormal or above 2^100), {} empty pixels given a black background\n",
             self.input_fragments,
             self.input_fragments as f64 / self.pixels.max(1) as f64,
             self.plan.as_ref().map_or(0, |p| p.layers),

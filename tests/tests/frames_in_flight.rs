@@ -5,11 +5,14 @@
 //!   back into one submission (standalone, and on Vulkan inside one external recording of a
 //!   renderer's command buffer with synchronization validation on) each report what the same frame
 //!   reports alone through a one-frame context, and write the same image.
+//! - A renderer's loop with two command buffers and two fences on one queue, each frame submitted
+//!   without waiting for the one before: each frame's report, read after its fence, is its own.
 //! - A frame's report is refused once a later recording has taken its slot, and where no such
 //!   frame was recorded; a one-frame context keeps only the last.
 //! - Device bytes for 1, 2 and 3 frames in flight at 1920x1080 with 4 layers grow by the same
 //!   step, under 1% of the context (printed for `docs/measurements.md`).
 
+use dof::backend::vulkan::ash::vk;
 use dof::backend::{Backend, BufferId, CpuBackend, RawOptions, VulkanBackend};
 use dof::frame::{ContextDesc, ContextReport, DofContext, Extent, Frame, MAX_FRAMES_IN_FLIGHT, METHODS, MethodInfo, MethodOptions, Reads};
 use dof::methods::buffers::{read_rgb, slot_words};
@@ -176,6 +179,87 @@ fn two_frames_in_one_external_recording_keep_their_own_reports() {
         two.free(&mut vk);
     }
     drop(vk);
+    assert_no_messages(r.finish(), "the end");
+}
+
+/// A renderer's loop with two command buffers and two fences on one queue: each frame is
+/// submitted without waiting for the one before, so two frames of one context run at once
+/// (sharing its transient buffers, ordered by the recordings' barriers). After waiting on a
+/// slot's fence, the frame that used it is `report_frame(backend, 1)` and equals that frame alone;
+/// synchronization validation stays silent.
+#[test]
+fn two_frames_running_at_once_keep_their_own_reports() {
+    let Some(r) = Renderer::new() else { return };
+    let raw = r.raw();
+    // SAFETY: the renderer's live handles outlive the backend, dropped after its work completed.
+    let mut vk = unsafe { VulkanBackend::from_raw(raw.clone(), &RawOptions::default()) }.expect("from_raw");
+    let d = &r.device;
+    // SAFETY: plain creation calls on the renderer's live device; destroyed below, once idle.
+    let (pool, cbs, fences) = unsafe {
+        let info = vk::CommandPoolCreateInfo::default()
+            .queue_family_index(raw.queue_family)
+            .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
+        let pool = d.create_command_pool(&info, None).expect("vkCreateCommandPool");
+        let alloc =
+            vk::CommandBufferAllocateInfo::default().command_pool(pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(2);
+        let cbs = d.allocate_command_buffers(&alloc).expect("vkAllocateCommandBuffers");
+        let signalled = vk::FenceCreateInfo::default().flags(vk::FenceCreateFlags::SIGNALED);
+        let fences = [0, 1].map(|_| d.create_fence(&signalled, None).expect("vkCreateFence"));
+        (pool, cbs, fences)
+    };
+    for m in METHODS {
+        let two = TwoFrames::new(&mut vk, m);
+        let mut one = create(&mut vk, m, EXTENT, 1);
+        let mut reference = Vec::new();
+        for i in 0..2 {
+            recorded(&mut vk, &r, &mut |vk| two.record(vk, m, one.as_mut(), i));
+            reference.push(one.report(&mut vk).unwrap());
+        }
+        one.destroy(&mut vk);
+        let mut ctx = create(&mut vk, m, EXTENT, 2);
+        for frame in 0..6 {
+            let slot = frame % 2;
+            // SAFETY: the fence belongs to the live device; its submission (if any) is in flight.
+            unsafe {
+                d.wait_for_fences(&[fences[slot]], true, u64::MAX).expect("vkWaitForFences");
+                d.reset_fences(&[fences[slot]]).expect("vkResetFences");
+            }
+            if frame >= 2 {
+                // Frame - 2 ran frame `slot` of the two; frame - 1 may still be running.
+                let report = ctx.report_frame(&mut vk, 1).unwrap();
+                assert_eq!(report, reference[slot], "{}: frame {} read after its fence", m.name, frame - 2);
+            }
+            // SAFETY: the command buffer's last submission completed (its fence); recorded here
+            // outside a render pass, submitted to the queue the backend wraps.
+            unsafe {
+                d.reset_command_buffer(cbs[slot], vk::CommandBufferResetFlags::empty()).expect("reset");
+                let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
+                d.begin_command_buffer(cbs[slot], &begin).expect("vkBeginCommandBuffer");
+                vk.begin_external(cbs[slot]).expect("begin_external");
+                two.record(&mut vk, m, ctx.as_mut(), slot);
+                vk.end_external().expect("end_external");
+                d.end_command_buffer(cbs[slot]).expect("vkEndCommandBuffer");
+                let cb = [cbs[slot]];
+                let submit = [vk::SubmitInfo::default().command_buffers(&cb)];
+                d.queue_submit(raw.queue, &submit, fences[slot]).expect("vkQueueSubmit");
+            }
+        }
+        // SAFETY: both fences belong to the live device.
+        unsafe { d.wait_for_fences(&fences, true, u64::MAX) }.expect("vkWaitForFences");
+        for (ago, i) in [(0, 1), (1, 0)] {
+            assert_eq!(ctx.report_frame(&mut vk, ago).unwrap(), reference[i], "{}: the last frames", m.name);
+        }
+        assert_no_messages(r.messages(), &format!("{}: two frames running at once", m.name));
+        ctx.destroy(&mut vk);
+        two.free(&mut vk);
+    }
+    drop(vk);
+    // SAFETY: the device is idle (every fence waited on) and the handles are ours.
+    unsafe {
+        d.device_wait_idle().expect("vkDeviceWaitIdle");
+        fences.iter().for_each(|&f| d.destroy_fence(f, None));
+        d.destroy_command_pool(pool, None);
+    }
     assert_no_messages(r.finish(), "the end");
 }
 

@@ -148,7 +148,9 @@ fn matte_pixel<M: Mem>(p: &LayeredParams, anchors: &[f32; 4], input: &M, counts:
             let c = crate::radiance::clamp_color(c);
             let w = if first { matte_front(anchors, z) } else { matte_hidden(anchors, z) };
             first = false;
-            let t = 1.0 - acc[3];
+            // Coverage never exceeds 1; rounding must not make the remainder negative, which would
+            // subtract a bright colour (the numerical contract: non-negative output).
+            let t = (1.0 - acc[3]).max(0.0);
             acc[0] += t * w * c[0];
             acc[1] += t * w * c[1];
             acc[2] += t * w * c[2];
@@ -253,7 +255,8 @@ fn composite_pixel<M: Mem>(p: &LayeredParams, layer: &M, acc: &mut M, pi: u32) {
     let l = load4(layer, pi);
     let a = load4(acc, pi);
     let (front, back) = if p.mode == OVER { (l, a) } else { (a, l) };
-    let t = 1.0 - front[3];
+    // A blurred coverage may round above 1: what shows through is never negative.
+    let t = (1.0 - front[3]).max(0.0);
     store4(acc, pi, [front[0] + t * back[0], front[1] + t * back[1], front[2] + t * back[2], front[3] + t * back[3]]);
 }
 

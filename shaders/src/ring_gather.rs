@@ -7,33 +7,45 @@
 //! blurred.
 //!
 //! Four passes (all sizes in the frame's pixels unless said "half"):
-//! 1. [`downsample_pass`]: every half-resolution pixel averages its 2x2 pixels' colours and signed
-//!    CoC radii (taking the strongest near-field radius and only the near pixels' colour where one
-//!    is strongly in front, so foreground silhouettes survive the reduction); each 8x8 tile of them
-//!    reduces its largest near-field radius.
+//! 1. [`downsample_pass`]: every half-resolution pixel splits its 2x2 pixels into a near part and
+//!    the rest by a continuous weight (0 at a 1 px near CoC radius, 1 at 3 px) and keeps both as
+//!    samples: colour, signed radius, and the near part's coverage of the block. The rest weighs
+//!    its pixels by how much the composite shows the background field over them, so a sharp pixel
+//!    does not tint the field of its blurred neighbours. Each 8x8 tile reduces its largest
+//!    near-field radius, and takes out its highlights (at most [`HIGHLIGHTS_PER_TILE`]): blocks
+//!    much brighter than their 12 neighbours with a CoC radius of at least 3 px everywhere
+//!    (Unreal's scatter threshold), whose excess over the neighbours becomes a disc.
 //! 2. [`dilate_pass`]: every tile takes the largest near radius of the tiles that radius reaches,
-//!    so a blurred foreground spreads over the sharp tiles beside it (Unreal's "foreground hole
-//!    filling", FidelityFX's tile dilation).
+//!    fading in over the last tile of the reach, so a blurred foreground spreads over the sharp
+//!    tiles beside it (Unreal's "foreground hole filling", FidelityFX's tile dilation); and how far
+//!    to look for highlights whose discs reach it.
 //! 3. [`gather_pass`]: every half-resolution pixel reads `1 + 3 R (R + 1)` samples on `R` hexagonal
 //!    rings (ring `i` holds `6 i` points of a hexagonal lattice, so the samples cover the disc with
-//!    uniform density and no trigonometry), spread over its kernel radius: the larger of its own
-//!    background CoC and its tile's dilated near radius. Two fields:
-//!    - background: scatter-as-gather as in [`crate::gather`], each sample weighted by its coverage
-//!      over the inverse of its CoC area, a sample behind the pixel reaching at most the pixel's own
-//!      CoC (so a blurred background does not smear over a sharper object); where the pixel itself
-//!      is in the near field, the background seen within the kernel fills in what it hides;
-//!    - near: samples strongly in front, each adding the share of its CoC disc that one lattice cell
-//!      covers; their sum is the near field's coverage (alpha, 1 for a uniform near field), their
-//!      weighted mean its colour.
-//! 4. [`composite_pass`]: every pixel blends its own colour with the background field, upsampled
-//!    bilinearly, by its CoC (the full-resolution colour below a 1 px radius, the background field
-//!    from 2 px), then the near field over it by its coverage.
+//!    uniform density and no trigonometry) for each of two fields, each with its own kernel (one
+//!    set of rings where the two agree). A sample's near share rises continuously from 0 at a 0.5
+//!    half-pixel near radius to 1 at 1.5:
+//!    - background, as wide as the pixel's own background CoC: scatter-as-gather as in
+//!      [`crate::gather`], each sample weighted by its coverage over the inverse of its CoC area, a
+//!      sample behind the pixel reaching at most the pixel's own CoC (so a blurred background does
+//!      not smear over a sharper object); where the pixel itself is in the near field, the kernel
+//!      is the near one and the background seen within it fills in what the pixel hides;
+//!    - near, as wide as the tile's dilated near radius: each sample adds the share of its CoC disc
+//!      that one lattice cell covers, times its near share; their sum is the near field's coverage
+//!      (alpha, 1 for a uniform near field), their weighted mean its colour.
+//! 4. [`composite_pass`]: every pixel blends a full-resolution scatter-as-gather of its 5x5
+//!    neighbourhood (below a 1 px CoC radius) with the background field, upsampled bilinearly
+//!    (from 2 px), adds the discs of the highlights behind it, puts the near field over that by its
+//!    coverage and the discs of the near highlights on top.
 //!
-//! Samples beyond the frame's edge take the edge pixel (clamp-to-edge addressing), so a blurred
-//! object cut by the frame keeps its full coverage there. Non-finite colours and depths are skipped
-//! as in the exhaustive gather. What it cannot do, by construction: show what a blurred foreground
-//! hides (a single layer), honour CoCs beyond its radius cap, or resolve blur larger than its ring
-//! spacing allows (with few rings a large blur is sampled sparsely).
+//! Every decision that a focus pull moves through is a continuous weight, not a threshold (the
+//! near split, the dilation, the half- and full-resolution blend, the highlight share), so the
+//! image changes smoothly with the lens; only a tile's highlight cap is a count. Samples beyond the
+//! frame's edge take the edge pixel (clamp-to-edge addressing), so a blurred object cut by the
+//! frame keeps its full coverage there. Non-finite colours and depths are skipped as in the
+//! exhaustive gather. What it cannot do, by construction: show what a blurred foreground hides (a
+//! single layer), honour CoCs beyond its radius cap, or resolve blur larger than its ring spacing
+//! allows (with few rings a large blur is sampled sparsely; the highlight discs cover the worst of
+//! it, isolated bright pixels).
 
 use crate::exec::{Group, Mem};
 use crate::lens::{ThinLens, is_finite as finite, is_nan, is_pos_inf, is_positive};
@@ -558,11 +570,17 @@ impl Fields {
         // Behind the pixel: at most the pixel's own CoC (never through a sharper object); else its
         // own blur, in front of the focus plane too (the part of a slightly near sample that stays
         // in the background field is as blurred as the sample).
-        let limited = if s > own { minf(absf(s), own_back) } else { absf(s) };
         // Where the pixel itself is in the near field, what lies behind it is unknown in a single
         // layer: the background seen within the kernel fills it (where the near field is partly
-        // transparent, at its edges, this shows). By the pixel's near share, so nothing pops.
-        let reach = limited + near_share(own) * (radius - limited);
+        // transparent, at its edges, this shows). By the pixel's near share, so nothing pops; only
+        // for samples behind the pixel, so a slightly near sample's own background part is not
+        // diluted by the fill.
+        let reach = if s > own {
+            let limited = minf(absf(s), own_back);
+            limited + near_share(own) * (radius - limited)
+        } else {
+            absf(s)
+        };
         // A sample reaches the pixel over a soft edge half a lattice spacing wide.
         let cover = if d == 0.0 { 1.0 } else { saturate(reach - d + 0.5 * spacing) };
         let w = w_back * cover / maxf(reach * reach, 0.25);
@@ -622,11 +640,28 @@ impl Fields {
 const BACK: u32 = 1;
 const NEAR: u32 = 2;
 
-/// The samples of `rings` hexagonal rings of `radius` around (`hx`, `hy`) into the fields `which`.
+/// The rings a kernel of `radius` (half-resolution pixels) reads: the knob's count, fewer where
+/// that would space the samples closer than one half-resolution pixel (they would read the same
+/// pixels again), so a slightly blurred background costs what its blur needs.
+#[inline]
+pub fn rings_for(p: &RingGatherParams, radius: f32) -> u32 {
+    let most = if p.rings == 0 { 1 } else { p.rings };
+    let dense = crate::math::ceil(radius);
+    if dense < 1.0 {
+        1
+    } else if dense < most as f32 {
+        dense as u32
+    } else {
+        most
+    }
+}
+
+/// The samples of the hexagonal rings ([`rings_for`]) of `radius` around (`hx`, `hy`) into the
+/// fields `which`.
 #[allow(clippy::too_many_arguments)]
 fn rings_into<M: Mem>(f: &mut Fields, half: &M, p: &RingGatherParams, hx: u32, hy: u32, own: f32, radius: f32, which: u32) {
     let (hw, hh) = (p.half_width(), p.half_height());
-    let rings = if p.rings == 0 { 1 } else { p.rings };
+    let rings = rings_for(p, radius);
     let spacing = radius / rings as f32;
     let mut ring = 1u32;
     while ring <= rings {
@@ -671,9 +706,8 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, half: M, d
         let own_back = maxf(own_r, 0.0);
         let back_radius = own_back + near_share(own_r) * (maxf(near_radius, own_back) - own_back);
         if own_valid {
-            let rings = if p.rings == 0 { 1.0 } else { p.rings as f32 };
             f.add_pixel(&half, at, 0.0, own_r, back_radius, 1.0, BACK);
-            f.add_pixel(&half, at, 0.0, own_r, near_radius, near_radius / rings, NEAR);
+            f.add_pixel(&half, at, 0.0, own_r, near_radius, near_radius / rings_for(p, near_radius) as f32, NEAR);
         }
         let back = back_radius >= 0.5;
         let near = near_radius >= 0.5;
@@ -770,24 +804,24 @@ fn highlights_at<M: Mem>(p: &RingGatherParams, bright: &M, dilated: &M, x: u32, 
 }
 
 /// The full-resolution path for a pixel in focus or slightly blurred (own colour `c`, signed radius
-/// `own` in pixels): scatter as gather over the 5x5 pixels around, as the exhaustive gather does,
-/// each neighbour's radius capped at 2 px (where the blend has handed over to the background
-/// field), near-field neighbours left to the near field, and a neighbour behind the pixel reaching
+/// `own` in pixels): scatter as gather over the 3x3 pixels around, as the exhaustive gather does,
+/// each radius capped at [`FINE_REACH`] (what the 3x3 window holds; the blend hands over to the
+/// background field by 2 px), near-field neighbours left to the near field, and a neighbour behind the pixel reaching
 /// it by at most the pixel's own CoC. Written as the pixel's colour plus the weighted differences,
 /// so a pixel no neighbour reaches keeps its colour bit for bit.
 fn fine_gather<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, x: u32, y: u32, c: [f32; 3], own: f32) -> [f32; 3] {
     let own_back = maxf(own, 0.0);
     let mut delta = [0.0f32; 3];
-    let own_reach = minf(absf(own), 2.0);
+    let own_reach = minf(absf(own), FINE_REACH);
     let mut weight = saturate(own_reach + 0.5) / maxf(own_reach * own_reach, 0.25);
     let mut k = 0u32;
-    while k < 25 {
-        let (dx, dy) = ((k % 5) as i32 - 2, (k / 5) as i32 - 2);
+    while k < 9 {
+        let (dx, dy) = ((k % 3) as i32 - 1, (k / 3) as i32 - 1);
         let (qx, qy) = (x as i32 + dx, y as i32 + dy);
-        if k != 12 && qx >= 0 && qy >= 0 && (qx as u32) < p.width && (qy as u32) < p.height {
+        if k != 4 && qx >= 0 && qy >= 0 && (qx as u32) < p.width && (qy as u32) < p.height {
             if let Some((cq, zq)) = sample(color, depth, qy as u32 * p.width + qx as u32) {
                 let r = signed_radius(&p.lens, zq, p.max_radius as f32);
-                let reach = minf(if r > own { minf(absf(r), own_back) } else { absf(r) }, 2.0);
+                let reach = minf(if r > own { minf(absf(r), own_back) } else { absf(r) }, FINE_REACH);
                 let d = crate::math::sqrt((dx * dx + dy * dy) as f32);
                 let w = (1.0 - near_weight(r)) * saturate(reach - d + 0.5) / maxf(reach * reach, 0.25);
                 if w > 0.0 {
@@ -801,6 +835,9 @@ fn fine_gather<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, x: u32, y: u3
     let inv = 1.0 / weight;
     [c[0] + delta[0] * inv, c[1] + delta[1] * inv, c[2] + delta[2] * inv]
 }
+
+/// The largest radius (pixels) the full-resolution path spreads a pixel over: a 3x3 window.
+pub const FINE_REACH: f32 = 1.5;
 
 /// One invocation a pixel of an 8x8 tile: its own colour, the background field by its CoC, the
 /// far highlights' discs, the near field over them, the near highlights' discs on top, into `out`
@@ -850,7 +887,7 @@ pub fn composite_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, color: 
         let mut own = f32::NAN;
         if let Some((c, z)) = sample(&color, &depth, i) {
             own = signed_radius(&p.lens, z, p.max_radius as f32);
-            // Below a 1 px radius the full-resolution gather of the 5x5 pixels around, from 2 px
+            // Below a 1 px radius the full-resolution gather of the 3x3 pixels around, from 2 px
             // the background field, a blend between.
             let t = saturate(absf(own) - 1.0);
             base = if t < 1.0 { fine_gather(p, &color, &depth, x, y, c, own) } else { c };

@@ -126,6 +126,8 @@ fn close_to_the_exhaustive_gather_in_the_partial_occlusion_region() {
             err.sort_by(|a, b| b.0.partial_cmp(&a.0).unwrap());
             let total: f32 = err.iter().map(|e| e.0).sum();
             let top: f32 = err.iter().take(200).map(|e| e.0).sum();
+            let energy = |i: &RgbImage| i.data.iter().map(|p| p[0] as f64 + p[1] as f64 + p[2] as f64).sum::<f64>();
+            eprintln!("  energy: ring {:.4e}, gather {:.4e}, reference {:.4e}, input {:.4e}", energy(&ring), energy(&full), energy(&exact.image), energy(&fc));
             eprintln!("  top 200 pixels hold {:.1}% of the squared error", 100.0 * top / total);
             for &(e, i) in err.iter().take(12) {
                 eprintln!("  ({}, {}) err {e:.1}: ring {:.2?} gather {:.2?} ref {:.2?} front {:.2?} coc {:+.2} mask {}", i as u32 % size.0, i as u32 / size.0, ring.data[i], full.data[i], exact.image.data[i], fc.data[i], 0.5 * lens.signed_coc_px(fz[i]), layers.mask[i]);
@@ -147,9 +149,16 @@ fn close_to_the_exhaustive_gather_in_the_partial_occlusion_region() {
 /// reference's, measured as RMS on the tone-mapped images.
 #[test]
 fn a_focus_pull_does_not_flicker() {
-    let built = builtin("railing").unwrap().with_size(96, 54);
+    // `RING_TEMPORAL=WxHxFRAMESxSPP` measures at another size (`dof eval --temporal`: 160x90x12x256).
+    let (w, h, frames, spp) = std::env::var("RING_TEMPORAL")
+        .ok()
+        .and_then(|v| {
+            let n: Vec<u32> = v.split('x').filter_map(|s| s.parse().ok()).collect();
+            (n.len() == 4).then(|| (n[0], n[1], n[2] as usize, n[3]))
+        })
+        .unwrap_or((96, 54, 8, 128));
+    let built = builtin("railing").unwrap().with_size(w, h);
     let f0 = built.thin_lens().unwrap().focus_distance;
-    let frames = 8;
     let lenses: Vec<ThinLens> = (0..frames)
         .map(|i| {
             let mut settings = built.lens;
@@ -165,7 +174,7 @@ fn a_focus_pull_does_not_flicker() {
         let layers = raycast_layers(&built.scene, &built.camera, lens, &options).unwrap();
         let (front, depth) = layers.layers.front();
         images.push(layers.crop(&ring_gather(&mut CpuBackend::new(), &front, &depth, lens, &defaults()).unwrap().image));
-        references.push(reference(&built.scene, &built.camera, lens, &ReferenceOptions { spp: 128, ..Default::default() }).unwrap().image);
+        references.push(reference(&built.scene, &built.camera, lens, &ReferenceOptions { spp, ..Default::default() }).unwrap().image);
     }
     let rms = |a: &RgbImage, b: &RgbImage| {
         let (a, b) = (tonemap_image(a, 1.0), tonemap_image(b, 1.0));

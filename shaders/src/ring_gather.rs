@@ -551,6 +551,10 @@ pub fn dilate_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, tiles: M, 
 struct Fields {
     back: [f32; 3],
     back_weight: f32,
+    /// What lies behind a near pixel: the background within the kernel, normalised on its own and
+    /// blended with `back` by the pixel's near share.
+    fill: [f32; 3],
+    fill_weight: f32,
     near: [f32; 3],
     near_weight: f32,
 }
@@ -570,22 +574,21 @@ impl Fields {
         // Behind the pixel: at most the pixel's own CoC (never through a sharper object); else its
         // own blur, in front of the focus plane too (the part of a slightly near sample that stays
         // in the background field is as blurred as the sample).
-        // Where the pixel itself is in the near field, what lies behind it is unknown in a single
-        // layer: the background seen within the kernel fills it (where the near field is partly
-        // transparent, at its edges, this shows). By the pixel's near share, so nothing pops; only
-        // for samples behind the pixel, so a slightly near sample's own background part is not
-        // diluted by the fill.
-        let reach = if s > own {
-            let limited = minf(absf(s), own_back);
-            limited + near_share(own) * (radius - limited)
-        } else {
-            absf(s)
-        };
+        let reach = if s > own { minf(absf(s), own_back) } else { absf(s) };
         // A sample reaches the pixel over a soft edge half a lattice spacing wide.
         let cover = if d == 0.0 { 1.0 } else { saturate(reach - d + 0.5 * spacing) };
         let w = w_back * cover / maxf(reach * reach, 0.25);
         self.back = [self.back[0] + w * c[0], self.back[1] + w * c[1], self.back[2] + w * c[2]];
         self.back_weight += w;
+        // Where the pixel itself is in the near field, what lies behind it is unknown in a single
+        // layer: the background seen within the kernel (the samples behind the pixel) fills it
+        // (where the near field is partly transparent, at its edges, this shows).
+        if s > own && near_share(own) > 0.0 {
+            let cover = saturate(radius - d + 0.5 * spacing);
+            let w = w_back * cover / maxf(radius * radius, 0.25);
+            self.fill = [self.fill[0] + w * c[0], self.fill[1] + w * c[1], self.fill[2] + w * c[2]];
+            self.fill_weight += w;
+        }
     }
 
     /// Adds the near share of a sample of weight `m`: the share of its CoC disc that one lattice
@@ -640,29 +643,33 @@ impl Fields {
 const BACK: u32 = 1;
 const NEAR: u32 = 2;
 
-/// The rings a kernel of `radius` (half-resolution pixels) reads: the knob's count, fewer where
-/// that would space the samples closer than one half-resolution pixel (they would read the same
-/// pixels again), so a slightly blurred background costs what its blur needs.
+/// The lattice of a kernel of `radius` (half-resolution pixels): its rings and their spacing. The
+/// knob's rings spread over the radius, but never closer than one half-resolution pixel (they
+/// would read the same pixels again), so a slightly blurred background costs what its blur needs.
+/// The spacing moves continuously with the radius, and the rings reach half a spacing beyond it,
+/// where every sample's weight has fallen to 0: a ring comes and goes with weight 0, so the ring
+/// count never pops.
 #[inline]
-pub fn rings_for(p: &RingGatherParams, radius: f32) -> u32 {
+pub fn lattice(p: &RingGatherParams, radius: f32) -> (u32, f32) {
     let most = if p.rings == 0 { 1 } else { p.rings };
-    let dense = crate::math::ceil(radius);
-    if dense < 1.0 {
+    let spacing = maxf(radius / most as f32, 1.0);
+    let needed = crate::math::ceil(radius / spacing + 0.5);
+    let rings = if needed < 1.0 {
         1
-    } else if dense < most as f32 {
-        dense as u32
+    } else if needed < most as f32 {
+        needed as u32
     } else {
         most
-    }
+    };
+    (rings, spacing)
 }
 
-/// The samples of the hexagonal rings ([`rings_for`]) of `radius` around (`hx`, `hy`) into the
+/// The samples of the hexagonal rings ([`lattice`]) of `radius` around (`hx`, `hy`) into the
 /// fields `which`.
 #[allow(clippy::too_many_arguments)]
 fn rings_into<M: Mem>(f: &mut Fields, half: &M, p: &RingGatherParams, hx: u32, hy: u32, own: f32, radius: f32, which: u32) {
     let (hw, hh) = (p.half_width(), p.half_height());
-    let rings = rings_for(p, radius);
-    let spacing = radius / rings as f32;
+    let (rings, spacing) = lattice(p, radius);
     let mut ring = 1u32;
     while ring <= rings {
         let mut j = 0u32;
@@ -699,7 +706,7 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, half: M, d
         let cov = f32::from_bits(half.load(at + 3));
         let far_r = f32::from_bits(half.load(at + 8));
         let own = far_r + cov * (f32::from_bits(half.load(at + 7)) - far_r);
-        let mut f = Fields { back: [0.0; 3], back_weight: 0.0, near: [0.0; 3], near_weight: 0.0 };
+        let mut f = Fields { back: [0.0; 3], back_weight: 0.0, fill: [0.0; 3], fill_weight: 0.0, near: [0.0; 3], near_weight: 0.0 };
         let near_radius = f32::from_bits(dilated.load(DILATED_WORDS * (ty * p.tiles_x() + tx)));
         let own_valid = !is_nan(own);
         let own_r = if own_valid { own } else { 0.0 };
@@ -707,7 +714,7 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, half: M, d
         let back_radius = own_back + near_share(own_r) * (maxf(near_radius, own_back) - own_back);
         if own_valid {
             f.add_pixel(&half, at, 0.0, own_r, back_radius, 1.0, BACK);
-            f.add_pixel(&half, at, 0.0, own_r, near_radius, near_radius / rings_for(p, near_radius) as f32, NEAR);
+            f.add_pixel(&half, at, 0.0, own_r, near_radius, lattice(p, near_radius).1, NEAR);
         }
         let back = back_radius >= 0.5;
         let near = near_radius >= 0.5;
@@ -722,9 +729,21 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, half: M, d
             }
         }
         let at = FIELD_WORDS * (hy * hw + hx);
-        let (back, valid) = if f.back_weight > 0.0 {
+        // The pixel's own background and the fill, each normalised, blended by the pixel's near
+        // share (so neither's sample count sways the other's weight as the kernel changes size).
+        let normal = if f.back_weight > 0.0 {
             let inv = 1.0 / f.back_weight;
-            ([f.back[0] * inv, f.back[1] * inv, f.back[2] * inv], 1.0f32)
+            [f.back[0] * inv, f.back[1] * inv, f.back[2] * inv]
+        } else {
+            [0.0; 3]
+        };
+        let (back, valid) = if f.fill_weight > 0.0 {
+            let inv = 1.0 / f.fill_weight;
+            let fill = [f.fill[0] * inv, f.fill[1] * inv, f.fill[2] * inv];
+            let k = if f.back_weight > 0.0 { near_share(own_r) } else { 1.0 };
+            ([normal[0] + k * (fill[0] - normal[0]), normal[1] + k * (fill[1] - normal[1]), normal[2] + k * (fill[2] - normal[2])], 1.0f32)
+        } else if f.back_weight > 0.0 {
+            (normal, 1.0f32)
         } else {
             ([0.0; 3], 0.0)
         };
@@ -823,7 +842,10 @@ fn fine_gather<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, x: u32, y: u3
                 let r = signed_radius(&p.lens, zq, p.max_radius as f32);
                 let reach = minf(if r > own { minf(absf(r), own_back) } else { absf(r) }, FINE_REACH);
                 let d = crate::math::sqrt((dx * dx + dy * dy) as f32);
-                let w = (1.0 - near_weight(r)) * saturate(reach - d + 0.5) / maxf(reach * reach, 0.25);
+                // The edge eases in (squared): a neighbour starts to reach the pixel with a weight
+                // that grows from 0 with zero slope, so a radius crossing 1/2 px does not pop.
+                let edge = saturate(reach - d + 0.5);
+                let w = (1.0 - near_weight(r)) * edge * edge / maxf(reach * reach, 0.25);
                 if w > 0.0 {
                     delta = [delta[0] + w * (cq[0] - c[0]), delta[1] + w * (cq[1] - c[1]), delta[2] + w * (cq[2] - c[2])];
                     weight += w;

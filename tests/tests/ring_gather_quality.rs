@@ -115,24 +115,6 @@ fn close_to_the_exhaustive_gather_in_the_partial_occlusion_region() {
         let exact = reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: 64, ..Default::default() }).unwrap();
         let ring = layers.crop(&ring_gather(&mut CpuBackend::new(), &front, &depth, &lens, &defaults()).unwrap().image);
         let full = layers.crop(&gather(&mut CpuBackend::new(), &front, &depth, &lens, None).unwrap().image);
-        if std::env::var("RING_DUMP").is_ok() {
-            for (tag, img) in [("ring", &ring), ("gather", &full), ("ref", &exact.image)] {
-                dof::io::write_png_preview(format!("/tmp/{name}-{tag}.png"), img, 1.0).unwrap();
-            }
-        }
-        if std::env::var("RING_DUMP").is_ok() {
-            let (fc, fz) = (layers.crop(&front), dof::layers::crop_plane(&depth, front.width, layers.margin));
-            let mut err: Vec<(f32, usize)> = ring.data.iter().zip(&exact.image.data).enumerate().map(|(i, (a, b))| ((0..3).map(|c| (a[c] - b[c]).powi(2) - (full.data[i][c] - b[c]).powi(2)).sum::<f32>(), i)).collect();
-            err.sort_by(|a, b| b.0.partial_cmp(&a.0).unwrap());
-            let total: f32 = err.iter().map(|e| e.0).sum();
-            let top: f32 = err.iter().take(200).map(|e| e.0).sum();
-            let energy = |i: &RgbImage| i.data.iter().map(|p| p[0] as f64 + p[1] as f64 + p[2] as f64).sum::<f64>();
-            eprintln!("  energy: ring {:.4e}, gather {:.4e}, reference {:.4e}, input {:.4e}", energy(&ring), energy(&full), energy(&exact.image), energy(&fc));
-            eprintln!("  top 200 pixels hold {:.1}% of the squared error", 100.0 * top / total);
-            for &(e, i) in err.iter().take(12) {
-                eprintln!("  ({}, {}) err {e:.1}: ring {:.2?} gather {:.2?} ref {:.2?} front {:.2?} coc {:+.2} mask {}", i as u32 % size.0, i as u32 / size.0, ring.data[i], full.data[i], exact.image.data[i], fc.data[i], 0.5 * lens.signed_coc_px(fz[i]), layers.mask[i]);
-            }
-        }
         let ring = compare(&ring, &exact.image, Some(&layers.mask)).unwrap();
         let full = compare(&full, &exact.image, Some(&layers.mask)).unwrap();
         let (r, g) = (ring.psnr_masked_db.unwrap(), full.psnr_masked_db.unwrap());

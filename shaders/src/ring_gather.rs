@@ -363,19 +363,7 @@ fn block<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32) -
     };
     // Where every pixel is wholly near, the rest is empty (its radius the near one).
     let coverage = if rest_w > 0.0 { near_w * inv } else { 1.0 };
-    Block {
-        colour,
-        radius,
-        near,
-        coverage,
-        near_radius,
-        far,
-        far_radius,
-        count,
-        centre: [centre[0] * inv, centre[1] * inv],
-        low,
-        high,
-    }
+    Block { colour, radius, near, coverage, near_radius, far, far_radius, count, centre: [centre[0] * inv, centre[1] * inv], low, high }
 }
 
 /// The share of a block's colour above its ring of 12 neighbouring pixels (the 4x4 around it) that
@@ -386,7 +374,13 @@ fn highlight<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u3
     if b.count == 0 {
         return (0.0, [0.0; 3]);
     }
-    let smallest = if b.low > 0.0 { b.low } else if b.high < 0.0 { -b.high } else { 0.0 };
+    let smallest = if b.low > 0.0 {
+        b.low
+    } else if b.high < 0.0 {
+        -b.high
+    } else {
+        0.0
+    };
     let blur = saturate(smallest - HIGHLIGHT_MIN_RADIUS);
     if blur <= 0.0 {
         return (0.0, [0.0; 3]);
@@ -415,7 +409,8 @@ fn highlight<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u3
     let c = b.colour;
     let excess = [maxf(c[0] - ring[0], 0.0), maxf(c[1] - ring[1], 0.0), maxf(c[2] - ring[2], 0.0)];
     let (l, lr, le) = (luminance(c), luminance(ring), luminance(excess));
-    let contrast = if l >= 2.0 * HIGHLIGHT_CONTRAST * lr { 1.0 } else { saturate((l - HIGHLIGHT_CONTRAST * lr) / (HIGHLIGHT_CONTRAST * lr)) };
+    let contrast =
+        if l >= 2.0 * HIGHLIGHT_CONTRAST * lr { 1.0 } else { saturate((l - HIGHLIGHT_CONTRAST * lr) / (HIGHLIGHT_CONTRAST * lr)) };
     let bright = saturate((le - HIGHLIGHT_MIN_EXCESS) / HIGHLIGHT_MIN_EXCESS);
     (blur * contrast * bright, excess)
 }
@@ -617,7 +612,8 @@ impl Fields {
             return;
         }
         let cov = f32::from_bits(half.load(at + 3));
-        let colour = |o: u32| [f32::from_bits(half.load(at + o)), f32::from_bits(half.load(at + o + 1)), f32::from_bits(half.load(at + o + 2))];
+        let colour =
+            |o: u32| [f32::from_bits(half.load(at + o)), f32::from_bits(half.load(at + o + 1)), f32::from_bits(half.load(at + o + 2))];
         if cov > 0.0 {
             let (c, s) = (colour(0), f32::from_bits(half.load(at + 7)));
             if which & BACK != 0 {
@@ -793,7 +789,8 @@ fn highlights_at<M: Mem>(p: &RingGatherParams, bright: &M, dilated: &M, x: u32, 
                 let mut k = 0u32;
                 while k < n {
                     let h = record + 2 + HIGHLIGHT_WORDS * k;
-                    let (cx, cy, s) = (f32::from_bits(bright.load(h)), f32::from_bits(bright.load(h + 1)), f32::from_bits(bright.load(h + 2)));
+                    let (cx, cy, s) =
+                        (f32::from_bits(bright.load(h)), f32::from_bits(bright.load(h + 1)), f32::from_bits(bright.load(h + 2)));
                     let (ox, oy) = (px - cx, py - cy);
                     let d = crate::math::sqrt(ox * ox + oy * oy);
                     let radius = absf(s);
@@ -805,7 +802,8 @@ fn highlights_at<M: Mem>(p: &RingGatherParams, bright: &M, dilated: &M, x: u32, 
                     };
                     if d < reach + 0.5 {
                         let w = disc_weight(reach, d);
-                        let c = [f32::from_bits(bright.load(h + 3)), f32::from_bits(bright.load(h + 4)), f32::from_bits(bright.load(h + 5))];
+                        let c =
+                            [f32::from_bits(bright.load(h + 3)), f32::from_bits(bright.load(h + 4)), f32::from_bits(bright.load(h + 5))];
                         if s < 0.0 {
                             near = [near[0] + w * c[0], near[1] + w * c[1], near[2] + w * c[2]];
                         } else {

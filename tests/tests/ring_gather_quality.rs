@@ -107,6 +107,7 @@ fn close_to_the_exhaustive_gather_in_the_partial_occlusion_region() {
         Some(size) => (size, dof::scene::builtin_names().to_vec()),
         None => ((320, 180), vec!["railing", "fence"]),
     };
+    let mut missed = Vec::new();
     for name in names {
         let scene = builtin(name).unwrap().with_size(size.0, size.1);
         let lens = scene.thin_lens().unwrap();
@@ -122,8 +123,11 @@ fn close_to_the_exhaustive_gather_in_the_partial_occlusion_region() {
             "{name} {}x{}: region PSNR ring gather {r:.2} dB, gather {g:.2} dB; full frame {:.2} and {:.2} dB",
             size.0, size.1, ring.psnr_db, full.psnr_db
         );
-        assert!(r > g - 2.0, "{name}: ring gather {r} dB against the gather's {g} dB in the region");
+        if r <= g - 2.0 {
+            missed.push(format!("{name}: ring gather {r:.2} dB against the gather's {g:.2} dB in the region"));
+        }
     }
+    assert!(missed.is_empty(), "{missed:?}");
 }
 
 /// A focus pull on `railing` (focus from the scene's to 0.4 of it, one guard band for every frame

@@ -157,7 +157,13 @@ impl RingGatherContext {
             RingGatherParams { width: f.width, height: f.height, rings: d.options.rings, max_radius: d.options.max_radius, lens: f.lens };
         let params = push_words(&p);
         let tile_groups = [p.tiles_x(), p.tiles_y(), 1];
-        backend.dispatch(&RING_GATHER_DOWNSAMPLE, tile_groups, &[b.color, b.depth, b.half, b.tiles, b.bright], &params, "ring-gather/downsample")?;
+        backend.dispatch(
+            &RING_GATHER_DOWNSAMPLE,
+            tile_groups,
+            &[b.color, b.depth, b.half, b.tiles, b.bright],
+            &params,
+            "ring-gather/downsample",
+        )?;
         let tiles = p.tiles_x() as u64 * p.tiles_y() as u64;
         backend.dispatch(
             &RING_GATHER_DILATE,
@@ -168,7 +174,13 @@ impl RingGatherContext {
         )?;
         backend.dispatch(&RING_GATHER, tile_groups, &[b.half, b.dilated, b.fields], &params, "ring-gather")?;
         let pixel_groups = [f.width.div_ceil(8), f.height.div_ceil(8), 1];
-        backend.dispatch(&RING_GATHER_COMPOSITE, pixel_groups, &[b.color, b.depth, b.fields, b.bright, b.dilated, output], &params, "ring-gather/composite")?;
+        backend.dispatch(
+            &RING_GATHER_COMPOSITE,
+            pixel_groups,
+            &[b.color, b.depth, b.fields, b.bright, b.dilated, output],
+            &params,
+            "ring-gather/composite",
+        )?;
         record_output(backend, f, self.io.as_ref())
     }
 }

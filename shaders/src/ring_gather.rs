@@ -32,7 +32,7 @@
 //!    - near, as wide as the tile's dilated near radius: each sample adds the share of its CoC disc
 //!      that one lattice cell covers, times its near share; their sum is the near field's coverage
 //!      (alpha, 1 for a uniform near field), their weighted mean its colour.
-//! 4. [`composite_pass`]: every pixel blends a full-resolution scatter-as-gather of its 5x5
+//! 4. [`composite_pass`]: every pixel blends a full-resolution scatter-as-gather of its 3x3
 //!    neighbourhood (below a 1 px CoC radius) with the background field, upsampled bilinearly
 //!    (from 2 px), adds the discs of the highlights behind it, puts the near field over that by its
 //!    coverage and the discs of the near highlights on top.

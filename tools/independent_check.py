@@ -29,6 +29,7 @@ SCENES = ["simple", "railing", "columns", "highlights", "fence", "edges"]
 METHODS = [
     ("pinhole", ["--method", "pinhole"]),
     ("gather", ["--method", "gather"]),
+    ("ring-gather", ["--method", "ring-gather"]),
     ("bokeh", ["--method", "bokeh"]),
     ("tiled", ["--method", "tiled"]),
     ("multilayer", ["--method", "multilayer"]),

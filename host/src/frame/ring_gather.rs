@@ -10,7 +10,8 @@ use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffe
 use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
 use dof_shaders::ring_gather::{
-    FIELD_WORDS, HALF_WORDS, RING_GATHER, RING_GATHER_COMPOSITE, RING_GATHER_DILATE, RING_GATHER_DOWNSAMPLE, RingGatherParams,
+    BRIGHT_TILE_WORDS, DILATED_WORDS, FIELD_WORDS, HALF_WORDS, RING_GATHER, RING_GATHER_COMPOSITE, RING_GATHER_DILATE,
+    RING_GATHER_DOWNSAMPLE, RingGatherParams,
 };
 
 /// What engines ship by default: about five rings (Unreal Engine's Diaphragm DoF), 91 samples a
@@ -88,9 +89,12 @@ struct Passes {
     depth: BufferId,
     /// Half-resolution colour and signed CoC ([`HALF_WORDS`] a half-resolution pixel).
     half: BufferId,
-    /// Each tile's largest near-field radius, then dilated.
+    /// Each tile's largest near-field radius, then dilated (with its highlight reach,
+    /// [`DILATED_WORDS`] a tile).
     tiles: BufferId,
     dilated: BufferId,
+    /// Each tile's highlights, drawn as discs instead of gathered ([`BRIGHT_TILE_WORDS`] a tile).
+    bright: BufferId,
     /// The background and near fields ([`FIELD_WORDS`] a half-resolution pixel).
     fields: BufferId,
 }
@@ -120,7 +124,8 @@ impl RingGatherContext {
                 depth: owned.make(backend, pixels, "ring-gather/depth")?,
                 half: owned.make(backend, HALF_WORDS as u64 * half, "ring-gather/half")?,
                 tiles: owned.make(backend, tiles, "ring-gather/tiles")?,
-                dilated: owned.make(backend, tiles, "ring-gather/dilated")?,
+                dilated: owned.make(backend, DILATED_WORDS as u64 * tiles, "ring-gather/dilated")?,
+                bright: owned.make(backend, BRIGHT_TILE_WORDS as u64 * tiles, "ring-gather/bright")?,
                 fields: owned.make(backend, FIELD_WORDS as u64 * half, "ring-gather/fields")?,
             };
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
@@ -154,7 +159,7 @@ impl RingGatherContext {
     }
 
     /// Records one frame: the front layer of the input, then downsampling, tile dilation, the
-    /// gather over rings and the composite.
+    /// gather over rings and the composite with the highlights' discs.
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
         record_checked(self, backend, f, Self::commands)?;
@@ -173,18 +178,30 @@ impl RingGatherContext {
             RingGatherParams { width: f.width, height: f.height, rings: d.options.rings, max_radius: d.options.max_radius, lens: f.lens };
         let params = push_words(&p);
         let tile_groups = [p.tiles_x(), p.tiles_y(), 1];
-        backend.dispatch(&RING_GATHER_DOWNSAMPLE, tile_groups, &[b.color, b.depth, b.half, b.tiles], &params, "ring-gather/downsample")?;
+        backend.dispatch(
+            &RING_GATHER_DOWNSAMPLE,
+            tile_groups,
+            &[b.color, b.depth, b.half, b.tiles, b.bright],
+            &params,
+            "ring-gather/downsample",
+        )?;
         let tiles = p.tiles_x() as u64 * p.tiles_y() as u64;
         backend.dispatch(
             &RING_GATHER_DILATE,
             groups_for(&RING_GATHER_DILATE, tiles),
-            &[b.tiles, b.dilated],
+            &[b.tiles, b.bright, b.dilated],
             &params,
             "ring-gather/dilate",
         )?;
         backend.dispatch(&RING_GATHER, tile_groups, &[b.half, b.dilated, b.fields], &params, "ring-gather")?;
         let pixel_groups = [f.width.div_ceil(8), f.height.div_ceil(8), 1];
-        backend.dispatch(&RING_GATHER_COMPOSITE, pixel_groups, &[b.color, b.depth, b.fields, output], &params, "ring-gather/composite")?;
+        backend.dispatch(
+            &RING_GATHER_COMPOSITE,
+            pixel_groups,
+            &[b.color, b.depth, b.fields, b.bright, b.dilated, output],
+            &params,
+            "ring-gather/composite",
+        )?;
         record_output(backend, f, self.io.as_ref())
     }
 }

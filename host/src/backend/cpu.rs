@@ -185,6 +185,7 @@ impl CpuBackend {
             return Err(Error::KernelFault { kernel: kernel.entry, message });
         }
         self.counters.commands += 1;
+        self.counters.dispatches += 1;
         self.times.push(CommandTime { label: label.to_string(), kernel: kernel.entry, ms: start.elapsed().as_secs_f64() * 1e3 });
         Ok(())
     }
@@ -349,6 +350,8 @@ mod tests {
             readbacks: 1,
             uploads: 1,
             commands: 1,
+            dispatches: 1,
+            barriers: 0,
             device_bytes: 44,
             peak_device_bytes: 56,
         };

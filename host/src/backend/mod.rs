@@ -92,6 +92,12 @@ pub struct BackendCounters {
     /// Commands recorded: `fill`, `dispatch`, `dispatch_indirect`, `draw_indirect` and image
     /// copies (on Vulkan into the backend's command buffer or the caller's; on the CPU, run).
     pub commands: u64,
+    /// Kernel dispatches and draws among `commands` (`dispatch`, `dispatch_indirect`,
+    /// `draw_indirect`; a draw's CPU fallback counts its prepass and its kernel).
+    pub dispatches: u64,
+    /// Pipeline barriers recorded between commands (on Vulkan: the recorder's hazard barriers and
+    /// an image copy's layout transitions; on the CPU none, each command completes before the next).
+    pub barriers: u64,
     /// Bytes of the buffers the backend owns now (`4 · words` of each live `create_buffer` buffer;
     /// imports, staging and draw targets excluded).
     pub device_bytes: u64,
@@ -119,6 +125,8 @@ impl BackendCounters {
             readbacks: self.readbacks - earlier.readbacks,
             uploads: self.uploads - earlier.uploads,
             commands: self.commands - earlier.commands,
+            dispatches: self.dispatches - earlier.dispatches,
+            barriers: self.barriers - earlier.barriers,
             device_bytes: self.device_bytes,
             peak_device_bytes: self.peak_device_bytes,
         }

@@ -130,6 +130,9 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "submits_per_frame": per_frame(c.submissions),
             "readbacks_per_frame": per_frame(c.readbacks),
             "uploads_per_frame": per_frame(c.uploads),
+            "commands_per_frame": per_frame(c.commands),
+            "dispatches_per_frame": per_frame(c.dispatches),
+            "barriers_per_frame": per_frame(c.barriers),
             "cpu_record_ms": measured.record_ms,
             "gpu_ms": measured.gpu_ms,
             "peel_passes_per_frame": measured.peel_passes as f64 / args.frames as f64,
@@ -167,11 +170,14 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         }
     );
     println!(
-        "per frame: {:.2} allocations, {:.2} submissions, {:.2} readbacks, {:.2} uploads",
+        "per frame: {:.2} allocations, {:.2} submissions, {:.2} readbacks, {:.2} uploads; {:.1} commands, {:.1} of them dispatches or draws, {:.1} barriers",
         per_frame(c.allocations),
         per_frame(c.submissions),
         per_frame(c.readbacks),
-        per_frame(c.uploads)
+        per_frame(c.uploads),
+        per_frame(c.commands),
+        per_frame(c.dispatches),
+        per_frame(c.barriers)
     );
     println!(
         "CPU time to record a frame: {:.3} ms{}",

@@ -597,6 +597,7 @@ impl VulkanBackend {
         let push_data: &[u8] = &bytemuck::cast_slice::<u32, u8>(push)[..push_bytes];
         let push_descriptor = &self.device.push_descriptor;
         self.counters.commands += 1;
+        self.counters.dispatches += 1;
 
         self.recorder.record(&self.device, Some((label, kernel.entry)), &accessed, |d, cb| {
             // SAFETY: `cb` is recording; the pipeline, its layout and every bound buffer are alive
@@ -668,6 +669,8 @@ impl VulkanBackend {
             .image_extent(vk::Extent3D { width, height, depth: 1 })];
         let accessed = [(target.as_raw(), !into_image), (image.handle, into_image)];
         self.counters.commands += 1;
+        // The acquire and release transitions around the copy.
+        self.counters.barriers += 2;
         self.recorder.record(&self.device, Some((label, what)), &accessed, |d, cb| {
             // SAFETY: `cb` is recording outside a render pass; the image is live with the declared
             // format, extent and layout (`ImageRef::vulkan`'s contract) and the region lies inside
@@ -968,6 +971,7 @@ impl Backend for VulkanBackend {
         let extent = vk::Extent2D { width: size[0], height: size[1] };
         let stages = vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT;
         self.counters.commands += 1;
+        self.counters.dispatches += 1;
         self.recorder.record(&self.device, Some((label, draw.vertex)), &accessed, |d, cb| {
             let clear = [
                 vk::ClearValue { color: vk::ClearColorValue { float32: [0.0; 4] } },
@@ -1019,7 +1023,8 @@ impl Backend for VulkanBackend {
     }
 
     fn counters(&self) -> BackendCounters {
-        BackendCounters { submissions: self.recorder.submissions(), ..self.counters }
+        let barriers = self.counters.barriers + self.recorder.barriers();
+        BackendCounters { submissions: self.recorder.submissions(), barriers, ..self.counters }
     }
 
     fn prepare(&mut self, kernels: &[&'static KernelDesc], draws: &[&'static DrawDesc]) -> Result<()> {

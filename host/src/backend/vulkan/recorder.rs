@@ -189,7 +189,6 @@ impl Recorder {
     }
 
     /// Barriers put between commands so far.
-    #[cfg(test)]
     pub fn barriers(&self) -> u64 {
         self.barriers
     }

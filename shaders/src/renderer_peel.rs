@@ -62,8 +62,10 @@ const _: () = assert!(core::mem::size_of::<RendererPeelParams>() <= 128);
 /// whatever way the device rounds. [`DISCARD_ALL`] where nothing a depth buffer holds lies beyond it.
 #[inline]
 pub fn encoded_bound(io: &FrameIoParams, reach: f32, stored: u32) -> f32 {
-    let d = buffer_depth(io, reach);
     let s = depth_value(io, stored);
+    // A reach that is the layer's own depth (a partly covering surface) is its stored value as it
+    // is: no round trip through view depth, whose f32 error can exceed half a D24 step.
+    let d = if reach == view_depth(io, s) { s } else { buffer_depth(io, reach) };
     if !is_finite(d) || !(s >= 0.0 && s <= 1.0) {
         return DISCARD_ALL;
     }
@@ -73,18 +75,31 @@ pub fn encoded_bound(io: &FrameIoParams, reach: f32, stored: u32) -> f32 {
     // from the next one reliably; a whole step beyond refuses every depth the device rounds to `q`
     // (its f32 error is below half a step), and merges surfaces within one step (z-fighting).
     let step = |t: f32| (t * UNORM24_MAX + 0.5) as u32;
+    // The stored word's own step is taken as an integer: `s · M` in f32 may round to the next one.
+    let own = stored & 0xff_ffff;
+    let q = if !unorm {
+        0
+    } else if d == s {
+        own
+    } else {
+        step(d)
+    };
     if io.depth_encoding == DEPTH_REVERSED {
-        let t = if d < s { d } else { s };
         let t = if unorm {
-            let q = step(t);
+            let q = if q < own { q } else { own };
             if q < 2 { 0.0 } else { (q - 1) as f32 / UNORM24_MAX }
+        } else if d < s {
+            d
         } else {
-            t
+            s
         };
         if t > 0.0 { -t } else { DISCARD_ALL }
+    } else if unorm {
+        (if q > own { q } else { own } + 1) as f32 / UNORM24_MAX
+    } else if d > s {
+        d
     } else {
-        let t = if d > s { d } else { s };
-        if unorm { (step(t) + 1) as f32 / UNORM24_MAX } else { t }
+        s
     }
 }
 

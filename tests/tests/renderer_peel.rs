@@ -49,8 +49,7 @@ struct Scene {
 }
 
 fn scene(quads: Vec<Quad>, materials: Vec<MeshMaterial>) -> Scene {
-    let mut mesh = MeshScene::default();
-    mesh.materials = materials;
+    let mut mesh = MeshScene { materials, ..MeshScene::default() };
     for q in &quads {
         let base = mesh.vertices.len() as u32;
         for (x, y) in [(q.x, q.y), (q.x + q.w, q.y), (q.x + q.w, q.y + q.h), (q.x, q.y + q.h)] {
@@ -226,11 +225,7 @@ impl Attachments for VulkanAttachments {
             self.r.upload_image(&self.staging[i], image, format, self.extent, layouts[i], after.0, after.1);
             // SAFETY: the test's live image of this format and extent.
             refs.push(unsafe {
-                ImageRef::describe(image, format.vk_format(), self.extent)
-                    .unwrap()
-                    .in_layout(layouts[i])
-                    .after(after.0, after.1)
-                    .build()
+                ImageRef::describe(image, format.vk_format(), self.extent).unwrap().in_layout(layouts[i]).after(after.0, after.1).build()
             });
         }
         self.r.submit_and_wait();
@@ -255,12 +250,6 @@ fn renderer_peel(
     a.record(&mut |b| peel.begin(b, &s.lens).unwrap());
     for k in 0..options.max_layers {
         let bounds = a.backend().read_buffer(bound, 0, w as u64 * h as u64).unwrap();
-        if std::env::var_os("DEBUG_PEEL").is_some() {
-            let c = a.backend().read_buffer(peel.slots().counts, 0, 8).unwrap();
-            let r = a.backend().read_buffer(peel.slots().reach, 0, 8).unwrap();
-            let args = a.backend().read_buffer(peel.slots().args, 0, 12).unwrap();
-            eprintln!("pass {k}: bound {:?} counts {c:?} reach {:?} args {args:?}", &bounds[..8].iter().map(|&v| f32::from_bits(v)).collect::<Vec<_>>(), r.iter().map(|&v| f32::from_bits(v)).collect::<Vec<_>>());
-        }
         if k == 0 {
             assert!(bounds.iter().all(|&v| f32::from_bits(v) == f32::NEG_INFINITY), "pass 0 keeps every fragment");
         }
@@ -271,9 +260,6 @@ fn renderer_peel(
     a.record(&mut |b| peel.finish(b).unwrap());
     let got = read_slots(a.backend(), peel.slots());
     let report = peel.report(a.backend()).unwrap();
-    if std::env::var_os("DEBUG_PEEL").is_some() {
-        eprintln!("{encoding:?} {format}: {report:?} counts max {:?}", got.1.iter().max());
-    }
     assert_eq!(report.recorded, options.max_layers);
     assert!(report.with_surface >= 1 && report.drawn >= report.with_surface, "{report:?}");
     peel.destroy(a.backend());
@@ -333,7 +319,8 @@ fn renderer_peel_equals_the_mesh_peel_on_the_cpu() {
     let mut cpu = CpuBackend::new();
     let extent = [72, 40];
     let bound = cpu.create_buffer(72 * 40, "test/bound").unwrap();
-    let images = [ImageFormat::Rgba16Float, ImageFormat::D32Float, ImageFormat::D24UnormS8Uint].map(|f| cpu.create_image(f, extent).unwrap());
+    let images =
+        [ImageFormat::Rgba16Float, ImageFormat::D32Float, ImageFormat::D24UnormS8Uint].map(|f| cpu.create_image(f, extent).unwrap());
     equal_to_mesh_peel(&mut CpuAttachments { cpu, images }, bound);
 }
 
@@ -353,4 +340,48 @@ fn renderer_peel_equals_the_mesh_peel_on_vulkan() {
     vk.destroy_buffer(bound);
     drop(vk);
     assert_no_messages(a.r.finish(), "the renderer peel");
+}
+
+#[test]
+fn renderer_peel_refuses_misuse_before_recording() {
+    let mut cpu = CpuBackend::new();
+    let s = layered_scene();
+    let frame = s.camera.frame().unwrap();
+    let (w, h) = (frame.width, frame.height);
+    let bound = cpu.create_buffer(w as u64 * h as u64, "test/bound").unwrap();
+    let small = cpu.create_buffer(4, "test/small").unwrap();
+    let encoding = ENCODINGS[0];
+    let desc = RendererPeelDesc::new(&options(3, true), w, h, encoding, frame.tan_half_fov, 6);
+    // Creation: a bound buffer too small, a linear encoding, an R32F depth attachment.
+    assert!(RendererPeel::new(&mut cpu, &desc, small, None).is_err());
+    assert!(RendererPeel::new(&mut cpu, &desc, bound, Some(small)).is_err());
+    let linear = RendererPeelDesc { encoding: DepthEncoding::Linear, ..desc };
+    assert!(RendererPeel::new(&mut cpu, &linear, bound, None).is_err());
+    let r32 = RendererPeelDesc { depth_format: ImageFormat::R32Float, ..desc };
+    assert!(RendererPeel::new(&mut cpu, &r32, bound, None).is_err());
+    let mut peel = RendererPeel::new(&mut cpu, &desc, bound, None).unwrap();
+    let color = cpu.create_image(ImageFormat::Rgba16Float, [w, h]).unwrap();
+    let depth = cpu.create_image(ImageFormat::D32Float, [w, h]).unwrap();
+    let d24 = cpu.create_image(ImageFormat::D24UnormS8Uint, [w, h]).unwrap();
+    let tiny = cpu.create_image(ImageFormat::Rgba16Float, [w - 1, h]).unwrap();
+    cpu.submit().unwrap();
+    let commands = cpu.counters().commands;
+    // Out of order, before begin, after the last pass; the wrong depth format; a small image.
+    assert!(peel.append(&mut cpu, 0, color, depth).is_err(), "append before begin");
+    assert!(peel.finish(&mut cpu).is_err(), "finish before begin");
+    assert_eq!(cpu.counters().commands, commands, "a refused call recorded something");
+    peel.begin(&mut cpu, &s.lens).unwrap();
+    let commands = cpu.counters().commands;
+    assert!(peel.append(&mut cpu, 1, color, depth).is_err(), "pass 1 before pass 0");
+    assert!(peel.append(&mut cpu, 0, color, d24).is_err(), "a D24 image on a D32 peel");
+    assert!(peel.append(&mut cpu, 0, tiny, depth).is_err(), "an image smaller than the peel");
+    assert!(peel.finish(&mut cpu).is_err(), "finish before the last pass");
+    assert_eq!(cpu.counters().commands, commands, "a refused call recorded something");
+    for k in 0..3 {
+        peel.append(&mut cpu, k, color, depth).unwrap();
+    }
+    assert!(peel.append(&mut cpu, 3, color, depth).is_err(), "a pass beyond the last");
+    peel.finish(&mut cpu).unwrap();
+    cpu.submit().unwrap();
+    peel.destroy(&mut cpu);
 }

@@ -48,7 +48,7 @@ pub struct PeelPass {
 }
 
 fn module(d: &ash::Device, spv: &[u8]) -> Result<vk::ShaderModule> {
-    let words: Vec<u32> = spv.chunks_exact(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect();
+    let words: Vec<u32> = spv.as_chunks::<4>().0.iter().map(|c| u32::from_le_bytes(*c)).collect();
     // SAFETY: valid SPIR-V from glslangValidator.
     Ok(unsafe { d.create_shader_module(&vk::ShaderModuleCreateInfo::default().code(&words), None)? })
 }
@@ -71,8 +71,11 @@ impl PeelPass {
         unsafe {
             let view = |image, format, aspect| {
                 let range = vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1);
-                let info =
-                    vk::ImageViewCreateInfo::default().image(image).view_type(vk::ImageViewType::TYPE_2D).format(format).subresource_range(range);
+                let info = vk::ImageViewCreateInfo::default()
+                    .image(image)
+                    .view_type(vk::ImageViewType::TYPE_2D)
+                    .format(format)
+                    .subresource_range(range);
                 d.create_image_view(&info, None)
             };
             let views = [view(colour, COLOR, vk::ImageAspectFlags::COLOR)?, view(depth, DEPTH, vk::ImageAspectFlags::DEPTH)?];
@@ -140,7 +143,8 @@ impl PeelPass {
             let push = [vk::PushConstantRange::default()
                 .stage_flags(vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT)
                 .size(size_of::<Push>() as u32)];
-            let layout = d.create_pipeline_layout(&vk::PipelineLayoutCreateInfo::default().set_layouts(&layouts).push_constant_ranges(&push), None)?;
+            let layout =
+                d.create_pipeline_layout(&vk::PipelineLayoutCreateInfo::default().set_layouts(&layouts).push_constant_ranges(&push), None)?;
 
             let (vert, frag) = (module(d, VERT)?, module(d, FRAG)?);
             let main: &CStr = c"main";
@@ -153,8 +157,9 @@ impl PeelPass {
                 vk::VertexInputAttributeDescription::default().location(0).format(vk::Format::R32G32B32_SFLOAT),
                 vk::VertexInputAttributeDescription::default().location(1).format(vk::Format::R32G32B32A32_SFLOAT).offset(12),
             ];
-            let vertex_input =
-                vk::PipelineVertexInputStateCreateInfo::default().vertex_binding_descriptions(&bindings).vertex_attribute_descriptions(&attributes);
+            let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
+                .vertex_binding_descriptions(&bindings)
+                .vertex_attribute_descriptions(&attributes);
             let assembly = vk::PipelineInputAssemblyStateCreateInfo::default().topology(vk::PrimitiveTopology::TRIANGLE_LIST);
             let viewports = [vk::Viewport { width: extent[0] as f32, height: extent[1] as f32, max_depth: 1.0, ..Default::default() }];
             let scissors = [vk::Rect2D { extent: vk::Extent2D { width: extent[0], height: extent[1] }, ..Default::default() }];
@@ -211,8 +216,11 @@ impl PeelPass {
             vk::ClearValue { depth_stencil: vk::ClearDepthStencilValue { depth: 1.0, stencil: 0 } },
         ];
         let area = vk::Rect2D { extent: vk::Extent2D { width: self.extent[0], height: self.extent[1] }, ..Default::default() };
-        let begin =
-            vk::RenderPassBeginInfo::default().render_pass(self.render_pass).framebuffer(self.framebuffer).render_area(area).clear_values(&clear);
+        let begin = vk::RenderPassBeginInfo::default()
+            .render_pass(self.render_pass)
+            .framebuffer(self.framebuffer)
+            .render_area(area)
+            .clear_values(&clear);
         let push = Push { view_proj, width: self.extent[0] };
         // SAFETY: the command buffer is recording; every object is live; the push constants match
         // the layout's range.
@@ -245,7 +253,12 @@ impl PeelPass {
     /// Our bound and draw buffers, imported for the library to write.
     pub fn import(&self, backend: &mut VulkanBackend) -> Result<(dof::backend::BufferId, dof::backend::BufferId)> {
         // SAFETY: our live storage buffers of these sizes, alive until the backend has forgotten them.
-        unsafe { Ok((backend.import_buffer(self.bound.buffer, self.bound.bytes, "peel/bound")?, backend.import_buffer(self.draw.buffer, self.draw.bytes, "peel/draw")?)) }
+        unsafe {
+            Ok((
+                backend.import_buffer(self.bound.buffer, self.bound.bytes, "peel/bound")?,
+                backend.import_buffer(self.draw.buffer, self.draw.bytes, "peel/draw")?,
+            ))
+        }
     }
 
     /// Destroys the pass's own objects (its images and buffers go with the renderer's).

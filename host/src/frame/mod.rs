@@ -52,7 +52,7 @@ pub use gather::{GatherContext, GatherContextDesc};
 pub use io::{DepthEncoding, Frame, FrameInput, FrameOutput};
 pub use layered::{LayeredContext, LayeredContextDesc, LayeredOptions, LayeredPlanReport};
 pub use raytrace::{RaytraceContext, RaytraceContextDesc, RaytraceOptions};
-pub use renderer_peel::{RendererPeel, RendererPeelDesc};
 pub use registry::{ContextDesc, METHODS, MethodInfo, MethodOptions, Reads};
+pub use renderer_peel::{RendererPeel, RendererPeelDesc};
 pub use ring_gather::{RingGatherContext, RingGatherContextDesc, RingGatherOptions};
 pub use splat::{Merge, SplatContext, SplatContextDesc, SplatOptions};

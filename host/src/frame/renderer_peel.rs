@@ -120,7 +120,8 @@ impl RendererPeel {
             )));
         }
         match d.encoding {
-            DepthEncoding::Standard { near, far } | DepthEncoding::Reversed { near, far } if near.is_finite() && near > 0.0 && far > near => {}
+            DepthEncoding::Standard { near, far } | DepthEncoding::Reversed { near, far }
+                if near.is_finite() && near > 0.0 && far > near => {}
             e => {
                 return Err(Error::InvalidArgument(format!(
                     "a renderer's peel needs its depth planes (Standard or Reversed, 0 < near < far), got {e:?}"
@@ -236,7 +237,9 @@ impl RendererPeel {
 
     fn write_draw(&self, backend: &mut dyn Backend) -> Result<()> {
         match self.draw {
-            Some(draw) => backend.run(peel_renderer_draw::Bindings { args: self.slots.args, draw }, [1, 1, 1], &self.params(0), "renderer-peel/draw"),
+            Some(draw) => {
+                backend.run(peel_renderer_draw::Bindings { args: self.slots.args, draw }, [1, 1, 1], &self.params(0), "renderer-peel/draw")
+            }
             None => Ok(()),
         }
     }

@@ -27,7 +27,8 @@
 //!    the bound `RendererPeel` writes, and its draw is indirect from the command the library
 //!    writes. `RendererPeel` appends each pass into the multi-layer image on the device, and the
 //!    same `SplatContext` blurs it: one submission of ours a frame, and none, no allocation, upload
-//!    or readback of the library's (its counters).
+//!    or readback of the library's (its counters). The first peeled frame's slots are compared with
+//!    the library's own peel of the same view (`MeshPeelContext`), read back between frames.
 //! 7. Teardown: the contexts, the backend, then the renderer's own objects, the messenger last.
 //!
 //! `cargo run --example ash_host -- [--validation] [--width W --height H] [--frames N] [--out DIR]
@@ -40,7 +41,9 @@ use dof::backend::{Backend, BackendCounters, CommandTime, CpuBackend, ImageRef, 
 use dof::frame::{DepthEncoding, Frame, FrameInput, FrameOutput, RendererPeel, RendererPeelDesc, SplatContext, SplatContextDesc};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::splat::{Merge, SplatOptions, splat};
-use dof::scene::{Focus, GuardBand, LayerOptions, LensSettings, ThinLens, Vec3, builtin, raycast_layers};
+use dof::raster::{MeshPeelContext, MeshPeelDesc};
+use dof::scene::{Camera, Focus, GuardBand, LayerOptions, LensSettings, MeshScene, ThinLens, Vec3, builtin, raycast_layers};
+use dof_shaders::raster::mesh::{ALPHA_BLEND, MeshMaterial, MeshVertex, UNLIT};
 use glam::Mat4;
 use std::ffi::{CStr, c_char, c_void};
 use std::path::PathBuf;
@@ -528,6 +531,57 @@ fn peel_scene() -> Vec<peel::Vertex> {
     .concat()
 }
 
+/// Peels `peel_scene` with the library's own rasteriser (`MeshPeelContext`) from `camera` and
+/// counts the slot words where `ours` (the last frame of our pipeline) differs: counts, depths
+/// beyond 1e-4 relative, colours beyond 2^-10 relative (RGBA16F rounding). Edges may differ where the
+/// two rasterisers' coverage rules do.
+fn compare_with_mesh_peel(
+    r: &Renderer,
+    backend: &mut VulkanBackend,
+    ours: &RendererPeel,
+    camera: &Camera,
+    lens: &ThinLens,
+    options: &LayerOptions,
+) -> Result<(usize, usize)> {
+    let mut mesh = MeshScene::default();
+    for (q, tri) in peel_scene().as_chunks::<3>().0.iter().enumerate() {
+        let c = tri[0];
+        if q % 2 == 0 {
+            let flags = UNLIT | if c[6] < 1.0 { ALPHA_BLEND } else { 0 };
+            mesh.materials.push(MeshMaterial { base: [c[3], c[4], c[5], c[6]], flags, ..MeshMaterial::default() });
+        }
+        let base = mesh.vertices.len() as u32;
+        for v in tri {
+            mesh.vertices.push(MeshVertex { position: [v[0], v[1], v[2]], u: 0.0, normal: [0.0, 0.0, 1.0], v: 0.0 });
+        }
+        mesh.triangles.push([base, base + 1, base + 2, q as u32 / 2]);
+    }
+    mesh.lighting.background = [0.5, 0.7, 1.0];
+    let options = LayerOptions { guard_band: GuardBand::Pixels(0), ..*options };
+    let mut theirs = MeshPeelContext::new(backend, &mesh.raster(), camera, lens, &MeshPeelDesc::new(&options, 0.1))?;
+    r.begin()?;
+    // SAFETY: as in `run_frame`.
+    unsafe { backend.begin_external(r.cb)? };
+    theirs.record(backend, camera, lens)?;
+    backend.end_external()?;
+    r.submit_and_wait()?;
+    // Its timings are not the frames'.
+    while backend.take_external_times()?.is_some_and(|t| !t.is_empty()) {}
+    let mut read = |s: &dof::frame::peel::PeelSlots| -> Result<(Vec<u32>, Vec<u32>)> {
+        let pixels = s.width as u64 * s.height as u64;
+        Ok((backend.read_buffer(s.fragments, 0, 4 * pixels * s.layers as u64)?, backend.read_buffer(s.counts, 0, pixels)?))
+    };
+    let (a, b) = (read(ours.slots())?, read(theirs.slots())?);
+    theirs.destroy(backend);
+    let counts = a.1.iter().zip(&b.1).filter(|(x, y)| x != y).count();
+    let words = a.0.iter().zip(&b.0).enumerate().filter(|&(i, (&x, &y))| {
+        let (x, y) = (f32::from_bits(x), f32::from_bits(y));
+        let tol = if i % 4 == 3 { 1e-4 } else { 2f32.powi(-10) };
+        !(x == y || (x - y).abs() <= tol * y.abs())
+    });
+    Ok((counts + words.count(), a.1.len() + a.0.len()))
+}
+
 /// Compares with the one-shot path's image: the largest difference per channel, and whether each
 /// stays within 1e-3 of the channel's largest reference value.
 fn compare(got: &RgbImage, want: &RgbImage) -> ([f32; 3], bool) {
@@ -762,6 +816,19 @@ fn main() -> Result<ExitCode> {
         let unwritten = frame.image.data.iter().filter(|p| !p.iter().all(|v| v.is_finite()) || *p == &[1.0, 0.0, 1.0]).count();
         if unwritten > 0 {
             failures.push(format!("peeled frame {i}: {unwritten} pixels not written or not finite"));
+        }
+        if i == 0 {
+            // The library's own peel of the same view (its rasteriser), against ours (a readback,
+            // between frames).
+            let camera = Camera::look_at(eye, target, yfov, w, h);
+            let (differ, total) = compare_with_mesh_peel(&r, &mut backend, &renderer_peel, &camera, &lens, &peel_options)?;
+            println!(
+                "  vs the library's own peel of the view: {differ} of {total} slot words differ (counts, depths to 1e-4, colours to 2^-10)"
+            );
+            // Equal on lavapipe (0 words); another device's coverage rule may differ on an edge.
+            if differ * 100 > total {
+                failures.push(format!("our peel differs from the library's own in {differ} of {total} slot words"));
+            }
         }
         if i + 1 == args.frames {
             results.push(("peeled", frame.image));

@@ -20,7 +20,16 @@
 //!    Inside a frame the library allocates, submits and reads back nothing: checked on its counters.
 //! 5. Each result is compared with the one-shot path (`dof::methods::splat::splat` on the CPU
 //!    backend) and the last multi-layer and the single-layer results are written as EXR and PNG.
-//! 6. Teardown: the context, the backend, then the renderer's own objects, the messenger last.
+//! 6. Peeled frames, the camera orbiting 2 degrees a frame: the renderer draws each peel pass with
+//!    its own render pass, pipeline and GLSL shaders (`ash_host/peel.rs`, `peel.vert`, `peel.frag`,
+//!    their SPIR-V checked in beside them) into an RGBA16F colour and a D32 depth attachment; its
+//!    fragment shader discards by the library's test (`dof_peel_keep`, docs/integration.md) against
+//!    the bound `RendererPeel` writes, and its draw is indirect from the command the library
+//!    writes. `RendererPeel` appends each pass into the multi-layer image on the device, and the
+//!    same `SplatContext` blurs it: one submission of ours a frame, and none, no allocation, upload
+//!    or readback of the library's (its counters). The first peeled frame's slots are compared with
+//!    the library's own peel of the same view (`MeshPeelContext`), read back between frames.
+//! 7. Teardown: the contexts, the backend, then the renderer's own objects, the messenger last.
 //!
 //! `cargo run --example ash_host -- [--validation] [--width W --height H] [--frames N] [--out DIR]
 //! [--device NAME]`; it exits non-zero when a check fails or the validation layer said anything.
@@ -29,15 +38,21 @@ use anyhow::{Context, Result, bail, ensure};
 use dof::backend::vulkan::ash::vk::{AccessFlags as Access, ImageLayout as Layout};
 use dof::backend::vulkan::ash::{self, vk};
 use dof::backend::{Backend, BackendCounters, CommandTime, CpuBackend, ImageRef, RawDevice, RawOptions, VulkanBackend};
-use dof::frame::{DepthEncoding, Frame, FrameInput, FrameOutput, SplatContext, SplatContextDesc};
+use dof::frame::{DepthEncoding, Frame, FrameInput, FrameOutput, RendererPeel, RendererPeelDesc, SplatContext, SplatContextDesc};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::splat::{Merge, SplatOptions, splat};
-use dof::scene::{Focus, GuardBand, LayerOptions, LensSettings, ThinLens, builtin, raycast_layers};
+use dof::raster::{MeshPeelContext, MeshPeelDesc};
+use dof::scene::{Camera, Focus, GuardBand, LayerOptions, LensSettings, MeshScene, ThinLens, Vec3, builtin, raycast_layers};
+use dof_shaders::raster::mesh::{ALPHA_BLEND, MeshMaterial, MeshVertex, UNLIT};
+use glam::Mat4;
 use std::ffi::{CStr, c_char, c_void};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
+
+#[path = "ash_host/peel.rs"]
+mod peel;
 
 const USAGE: &str = "usage: ash_host [--validation] [--width W] [--height H] [--frames N] [--out DIR] [--device NAME]";
 
@@ -371,7 +386,16 @@ struct Output {
     extent: [u32; 2],
 }
 
-/// One frame in the renderer's command buffer: its pass before, the depth of field, its pass after.
+/// A frame's layers peeled by our own pipeline: the library's peel, our pass, the view.
+struct Peeling<'a> {
+    peel: &'a mut RendererPeel,
+    pass: &'a peel::PeelPass,
+    view_proj: [f32; 16],
+    background: [f32; 3],
+}
+
+/// One frame in the renderer's command buffer: its pass before (and, when `peeling`, its own peel
+/// passes, each appended by the library), the depth of field, its pass after.
 fn run_frame(
     r: &Renderer,
     backend: &mut VulkanBackend,
@@ -379,10 +403,30 @@ fn run_frame(
     out: &Output,
     lens: ThinLens,
     input: FrameInput,
+    mut peeling: Option<Peeling>,
 ) -> Result<FrameResult> {
     let (output, extent) = (out.image, out.extent);
     let shader_read = Layout::SHADER_READ_ONLY_OPTIMAL;
+    let before = backend.counters();
+    let start = Instant::now();
     r.begin()?;
+    // Our peel passes, in our command buffer: each library call between begin_external and
+    // end_external, our render passes between them (docs/integration.md has the order).
+    if let Some(p) = peeling.as_mut() {
+        // SAFETY: as for the frame below.
+        unsafe { backend.begin_external(r.cb)? };
+        p.peel.begin(backend, &lens)?;
+        backend.end_external()?;
+        for k in 0..p.peel.layers() {
+            p.pass.record(r, p.view_proj, p.background);
+            let (colour, depth) = p.pass.attachments()?;
+            // SAFETY: as for the frame below.
+            unsafe { backend.begin_external(r.cb)? };
+            p.peel.append(backend, k, colour, depth)?;
+            backend.end_external()?;
+        }
+    }
+
     // The pass before: here a clear of the output image (magenta, so a pixel the frame did not write
     // would show, and fail the comparison). The previous frame's readback copy read the image, so
     // the transition waits for transfers; its contents are discarded (UNDEFINED).
@@ -415,11 +459,12 @@ fn run_frame(
     // writes, end_external closes with one before our later transfer and shader accesses. (The first
     // frame of each input kind takes longer to record: the library creates a kernel's pipeline on
     // its first use.)
-    let before = backend.counters();
-    let start = Instant::now();
     // SAFETY: our command buffer is recording, outside a render pass, from a pool of the backend's
     // queue family; it is submitted after end_external, and every resource outlives the fence wait.
     unsafe { backend.begin_external(r.cb)? };
+    if let Some(p) = peeling.as_mut() {
+        p.peel.finish(backend)?;
+    }
     ctx.record(backend, &frame)?;
     backend.end_external()?;
     let record_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -442,13 +487,99 @@ fn run_frame(
 
     // After our fence: the library's counters over the frame, and its GPU timestamps.
     let counters = backend.counters().since(&before);
-    let times = backend.take_external_times()?.context("the frame completed, so its times are ready")?;
+    let mut times = backend.take_external_times()?.context("the frame completed, so its times are ready")?;
+    // One list per recording (the peel's passes are recordings of their own); empty: none left.
+    while let Some(more) = backend.take_external_times()?.filter(|t| !t.is_empty()) {
+        times.extend(more);
+    }
     let pixels = extent[0] as usize * extent[1] as usize;
     let mut rgba = vec![0f32; 4 * pixels];
     // SAFETY: the mapping covers the buffer; the copy completed and was made visible to the host.
     unsafe { std::ptr::copy_nonoverlapping(out.readback.mapped as *const f32, rgba.as_mut_ptr(), 4 * pixels) };
     let data = rgba.as_chunks::<4>().0.iter().map(|p| [p[0], p[1], p[2]]).collect();
     Ok(FrameResult { image: RgbImage { width: extent[0], height: extent[1], data }, counters, times, record_ms })
+}
+
+/// Vulkan clip space from view space (looking down −z): y down, depth 0 at the near plane and 1 at
+/// the far plane (the library's `DepthEncoding::Standard`).
+fn projection(yfov: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
+    let t = 1.0 / (yfov / 2.0).tan();
+    let (a, b) = (far / (near - far), near * far / (near - far));
+    Mat4::from_cols_array(&[t / aspect, 0.0, 0.0, 0.0, 0.0, -t, 0.0, 0.0, 0.0, 0.0, a, -1.0, 0.0, 0.0, b, 0.0])
+}
+
+/// View space of a camera at `eye` looking at `target`, +y up.
+fn look_at(eye: Vec3, target: Vec3) -> Mat4 {
+    let f = (target - eye).normalize();
+    let s = f.cross(Vec3::Y).normalize();
+    let u = s.cross(f);
+    Mat4::from_cols_array(&[s.x, u.x, -f.x, 0.0, s.y, u.y, -f.y, 0.0, s.z, u.z, -f.z, 0.0, -s.dot(eye), -u.dot(eye), f.dot(eye), 1.0])
+}
+
+/// The peeled scene: a far wall, a half-covering pane in focus and a near bar, as coloured
+/// triangles (position, then colour and coverage).
+fn peel_scene() -> Vec<peel::Vertex> {
+    let quad = |x0: f32, y0: f32, x1: f32, y1: f32, z: f32, c: [f32; 4]| {
+        let v = |x: f32, y: f32| [x, y, z, c[0], c[1], c[2], c[3]];
+        [v(x0, y0), v(x1, y0), v(x1, y1), v(x0, y0), v(x1, y1), v(x0, y1)]
+    };
+    [
+        quad(-6.0, -3.0, 6.0, 3.0, -8.0, [0.2, 0.4, 0.8, 1.0]),
+        quad(-1.0, -0.8, 0.6, 0.5, -3.0, [0.9, 0.3, 0.2, 0.5]),
+        quad(-0.35, -1.2, -0.1, 1.2, -1.3, [0.8, 0.7, 0.1, 1.0]),
+    ]
+    .concat()
+}
+
+/// Peels `peel_scene` with the library's own rasteriser (`MeshPeelContext`) from `camera` and
+/// counts the slot words where `ours` (the last frame of our pipeline) differs: counts, depths
+/// beyond 1e-4 relative, colours beyond 2^-10 relative (RGBA16F rounding). Edges may differ where the
+/// two rasterisers' coverage rules do.
+fn compare_with_mesh_peel(
+    r: &Renderer,
+    backend: &mut VulkanBackend,
+    ours: &RendererPeel,
+    camera: &Camera,
+    lens: &ThinLens,
+    options: &LayerOptions,
+) -> Result<(usize, usize)> {
+    let mut mesh = MeshScene::default();
+    for (q, tri) in peel_scene().as_chunks::<3>().0.iter().enumerate() {
+        let c = tri[0];
+        if q % 2 == 0 {
+            let flags = UNLIT | if c[6] < 1.0 { ALPHA_BLEND } else { 0 };
+            mesh.materials.push(MeshMaterial { base: [c[3], c[4], c[5], c[6]], flags, ..MeshMaterial::default() });
+        }
+        let base = mesh.vertices.len() as u32;
+        for v in tri {
+            mesh.vertices.push(MeshVertex { position: [v[0], v[1], v[2]], u: 0.0, normal: [0.0, 0.0, 1.0], v: 0.0 });
+        }
+        mesh.triangles.push([base, base + 1, base + 2, q as u32 / 2]);
+    }
+    mesh.lighting.background = [0.5, 0.7, 1.0];
+    let options = LayerOptions { guard_band: GuardBand::Pixels(0), ..*options };
+    let mut theirs = MeshPeelContext::new(backend, &mesh.raster(), camera, lens, &MeshPeelDesc::new(&options, 0.1))?;
+    r.begin()?;
+    // SAFETY: as in `run_frame`.
+    unsafe { backend.begin_external(r.cb)? };
+    theirs.record(backend, camera, lens)?;
+    backend.end_external()?;
+    r.submit_and_wait()?;
+    // Its timings are not the frames'.
+    while backend.take_external_times()?.is_some_and(|t| !t.is_empty()) {}
+    let mut read = |s: &dof::frame::peel::PeelSlots| -> Result<(Vec<u32>, Vec<u32>)> {
+        let pixels = s.width as u64 * s.height as u64;
+        Ok((backend.read_buffer(s.fragments, 0, 4 * pixels * s.layers as u64)?, backend.read_buffer(s.counts, 0, pixels)?))
+    };
+    let (a, b) = (read(ours.slots())?, read(theirs.slots())?);
+    theirs.destroy(backend);
+    let counts = a.1.iter().zip(&b.1).filter(|(x, y)| x != y).count();
+    let words = a.0.iter().zip(&b.0).enumerate().filter(|&(i, (&x, &y))| {
+        let (x, y) = (f32::from_bits(x), f32::from_bits(y));
+        let tol = if i % 4 == 3 { 1e-4 } else { 2f32.powi(-10) };
+        !(x == y || (x - y).abs() <= tol * y.abs())
+    });
+    Ok((counts + words.count(), a.1.len() + a.0.len()))
 }
 
 /// Compares with the one-shot path's image: the largest difference per channel, and whether each
@@ -622,7 +753,7 @@ fn main() -> Result<ExitCode> {
             let input = FrameInput::Images { color, depth, encoding: DepthEncoding::Linear };
             (default_lens, input, "single-layer")
         };
-        let frame = run_frame(&r, &mut backend, &mut ctx, &output, lens, input)?;
+        let frame = run_frame(&r, &mut backend, &mut ctx, &output, lens, input, None)?;
         let c = frame.counters;
         println!(
             "frame {i} ({kind}, focus {:.2}): recorded in {:.2} ms; {} allocations, {} submissions, {} readbacks, {} uploads; {}",
@@ -647,6 +778,68 @@ fn main() -> Result<ExitCode> {
             results.push((kind, frame.image));
         }
     }
+    // Peeled frames: our own pipeline draws each peel pass (peel.rs), the library turns the passes
+    // into the multi-layer image on the device and blurs it, the camera orbiting the focus point
+    // 2 degrees a frame. All in one command buffer and one submission of ours per frame.
+    let background = [0.5, 0.7, 1.0];
+    let pass = peel::PeelPass::new(&mut r, extent, &peel_scene())?;
+    let (bound_id, draw_id) = pass.import(&mut backend)?;
+    let (yfov, near, far) = (50f32.to_radians(), 0.1, 100.0);
+    let peel_options = LayerOptions { max_layers: layers.max_layers, ..LayerOptions::default() };
+    let encoding = DepthEncoding::Standard { near, far };
+    let peel_desc = RendererPeelDesc::new(&peel_options, w, h, encoding, (yfov / 2.0).tan(), pass.vertex_count);
+    let mut renderer_peel = RendererPeel::new(&mut backend, &peel_desc, bound_id, Some(draw_id))?;
+    backend.submit()?; // the peel's one-time zeroing, before the frames
+    let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.02, focus_distance: 3.0, pixels_per_unit: h as f32 / 0.024 };
+    let target = Vec3::new(0.0, 0.0, -3.0);
+    for i in 0..args.frames {
+        let angle = (2.0 * i as f32).to_radians();
+        let eye = target + 3.0 * Vec3::new(angle.sin(), 0.0, angle.cos());
+        let view_proj = (projection(yfov, w as f32 / h as f32, near, far) * look_at(eye, target)).to_cols_array();
+        let input = renderer_peel.frame(lens, FrameOutput::Buffer(bound_id)).input;
+        let peeling = Peeling { peel: &mut renderer_peel, pass: &pass, view_proj, background };
+        let frame = run_frame(&r, &mut backend, &mut ctx, &output, lens, input, Some(peeling))?;
+        let c = frame.counters;
+        println!(
+            "peeled frame {i} (orbit {:.0} deg): recorded in {:.2} ms; {} allocations, {} submissions, {} readbacks, {} uploads; {}",
+            angle.to_degrees(),
+            frame.record_ms,
+            c.allocations,
+            c.submissions,
+            c.readbacks,
+            c.uploads,
+            times_summary(&frame.times)
+        );
+        if (c.allocations, c.submissions, c.readbacks, c.uploads) != (0, 0, 0, 0) {
+            failures.push(format!("peeled frame {i}: the library allocated, submitted or transferred: {c:?}"));
+        }
+        let unwritten = frame.image.data.iter().filter(|p| !p.iter().all(|v| v.is_finite()) || *p == &[1.0, 0.0, 1.0]).count();
+        if unwritten > 0 {
+            failures.push(format!("peeled frame {i}: {unwritten} pixels not written or not finite"));
+        }
+        if i == 0 {
+            // The library's own peel of the same view (its rasteriser), against ours (a readback,
+            // between frames).
+            let camera = Camera::look_at(eye, target, yfov, w, h);
+            let (differ, total) = compare_with_mesh_peel(&r, &mut backend, &renderer_peel, &camera, &lens, &peel_options)?;
+            println!(
+                "  vs the library's own peel of the view: {differ} of {total} slot words differ (counts, depths to 1e-4, colours to 2^-10)"
+            );
+            // Equal on lavapipe (0 words); another device's coverage rule may differ on an edge.
+            if differ * 100 > total {
+                failures.push(format!("our peel differs from the library's own in {differ} of {total} slot words"));
+            }
+        }
+        if i + 1 == args.frames {
+            results.push(("peeled", frame.image));
+        }
+    }
+    let report = renderer_peel.report(&mut backend)?;
+    println!("peel: {} passes recorded, {} drawn, {} found a surface", report.recorded, report.drawn, report.with_surface);
+    if report.with_surface < 3 {
+        failures.push(format!("the peel found surfaces in {} passes, want 3 (bar, pane, wall)", report.with_surface));
+    }
+
     // What the last frame did, read from the context once its work is done (a readback, outside
     // the frames).
     let report = ctx.report(&mut backend)?;
@@ -664,6 +857,10 @@ fn main() -> Result<ExitCode> {
     }
 
     // Teardown: the library's objects first (imports are only forgotten), then ours.
+    renderer_peel.destroy(&mut backend);
+    backend.destroy_buffer(bound_id);
+    backend.destroy_buffer(draw_id);
+    pass.destroy(&r);
     ctx.destroy(&mut backend);
     backend.destroy_buffer(fragments_id);
     backend.destroy_buffer(counts_id);

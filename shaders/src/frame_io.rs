@@ -144,3 +144,26 @@ kernel!(
 
 #[cfg(not(target_arch = "spirv"))]
 pub const KERNELS: [&crate::KernelDesc; 3] = [&FROM_IMAGES, &FRONT, &TO_RGBA];
+
+/// The depth-buffer value of view depth `z` under `p`'s encoding (the inverse of [`view_depth`]):
+/// `z` itself for linear depth, +inf for `z` beyond the far plane or not finite (nothing a depth
+/// buffer can hold lies there).
+#[inline]
+pub fn buffer_depth(p: &FrameIoParams, z: f32) -> f32 {
+    if p.depth_encoding == DEPTH_LINEAR {
+        return z;
+    }
+    if !(z > 0.0) || !(z < p.far) {
+        return f32::INFINITY;
+    }
+    let infinite_far = p.far == f32::INFINITY;
+    // Standard: d = f·(z − n) / (z·(f − n)), or 1 − n/z with the far plane at infinity; reversed:
+    // d = n·(f − z) / (z·(f − n)), or n/z.
+    if p.depth_encoding == DEPTH_STANDARD {
+        if infinite_far { 1.0 - p.near / z } else { p.far * (z - p.near) / (z * (p.far - p.near)) }
+    } else if infinite_far {
+        p.near / z
+    } else {
+        p.near * (p.far - z) / (z * (p.far - p.near))
+    }
+}

@@ -24,6 +24,7 @@ pub mod peel;
 pub mod radiance;
 pub mod raster;
 pub mod raytrace;
+pub mod renderer_peel;
 pub mod ring_gather;
 pub mod scan;
 pub mod sort;
@@ -48,6 +49,7 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .chain(bokeh::KERNELS.iter())
         .chain(raster::KERNELS.iter())
         .chain(peel::KERNELS.iter())
+        .chain(renderer_peel::KERNELS.iter())
         .chain(frame_io::KERNELS.iter())
         .chain(tonemap::KERNELS.iter())
         .copied()

@@ -162,6 +162,31 @@ pub fn slot_kept(alpha: f32, depth: f32) -> bool {
     is_surface(depth) || alpha > 0.0
 }
 
+/// The reach the next pass tests against behind a pixel of a shaded layer (Franke et al. 2018,
+/// §4.1): behind an opaque surface its umbra (`ThinLens::umbra_length` of the pixel's footprint,
+/// `depth · footprint_per_depth`; infinite once the footprint covers the aperture), behind a
+/// partly covering one nothing more than its depth, and infinity where nothing was found.
+#[inline]
+pub fn next_reach(found: bool, alpha: f32, depth: f32, lens: &ThinLens, footprint_per_depth: f32) -> f32 {
+    if !found {
+        f32::INFINITY
+    } else if alpha < 1.0 {
+        depth
+    } else {
+        let r = depth + lens.umbra_length(depth, depth * footprint_per_depth);
+        if is_finite(r) { r } else { f32::INFINITY }
+    }
+}
+
+/// Whether a pass that found nothing at a pixel whose reach was `reach` sees the background there:
+/// only the first such pass (the reach is still finite), later ones see nothing.
+#[inline]
+pub fn background_seen(reach: f32) -> bool {
+    is_finite(reach)
+}
+
+pub use crate::renderer_peel::keep;
+
 /// Whether a layer's depth is a surface (finite), not the background.
 #[inline]
 pub fn is_surface(depth: f32) -> bool {

@@ -45,6 +45,7 @@ pub mod layered;
 pub mod peel;
 pub mod raytrace;
 pub mod registry;
+pub mod renderer_peel;
 pub mod ring_gather;
 pub mod splat;
 
@@ -56,5 +57,6 @@ pub use io::{DepthEncoding, Frame, FrameInput, FrameOutput};
 pub use layered::{LayeredContext, LayeredContextDesc, LayeredOptions, LayeredPlanReport};
 pub use raytrace::{RaytraceContext, RaytraceContextDesc, RaytraceOptions};
 pub use registry::{ContextDesc, METHODS, MethodInfo, MethodOptions, Reads};
+pub use renderer_peel::{RendererPeel, RendererPeelDesc};
 pub use ring_gather::{RingGatherContext, RingGatherContextDesc, RingGatherOptions};
 pub use splat::{Merge, SplatContext, SplatContextDesc, SplatOptions};

@@ -17,8 +17,9 @@ use super::mesh::{ALPHA_BLEND, Light, MATERIAL_WORDS, UNLIT, VERTEX_WORDS};
 use super::project::{cross, dot, sub, triangle, vertex_position};
 use super::texture::{load_f32, sample};
 use crate::exec::{Group, Load, Mem};
-use crate::lens::{ThinLens, is_finite};
+use crate::lens::ThinLens;
 use crate::math::sqrt;
+use crate::peel::{background_seen, next_reach};
 use crate::wg::for_each_item;
 
 /// [`ShadeParams::mode`]: write layer `(r, g, b, alpha, depth)` and the next reach.
@@ -127,7 +128,7 @@ pub fn shade_pass<G: Group, M: Mem>(
             let (rgb, alpha) =
                 shade_point(&p.light, p.eye, p.textures, id - 1, b0, b1, &vertices, &triangles, &materials, &textures, &texels);
             (rgb, alpha, f32::from_bits(vis.load(at + 1)))
-        } else if p.mode == ACCUMULATE || is_finite(f32::from_bits(reach.load(pi))) {
+        } else if p.mode == ACCUMULATE || background_seen(f32::from_bits(reach.load(pi))) {
             (p.light.background, 1.0, f32::INFINITY)
         } else {
             ([0.0; 3], 0.0, f32::INFINITY)
@@ -147,15 +148,7 @@ pub fn shade_pass<G: Group, M: Mem>(
         out.store(o + 2, rgb[2].to_bits());
         out.store(o + 3, alpha.to_bits());
         out.store(o + 4, depth.to_bits());
-        let next = if !found {
-            f32::INFINITY
-        } else if alpha < 1.0 {
-            depth
-        } else {
-            let umbra = p.lens.umbra_length(depth, depth * p.footprint_per_depth);
-            let r = depth + umbra;
-            if is_finite(r) { r } else { f32::INFINITY }
-        };
+        let next = next_reach(found, alpha, depth, &p.lens, p.footprint_per_depth);
         reach.store(pi, next.to_bits());
     });
 }

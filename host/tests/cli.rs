@@ -398,7 +398,8 @@ fn soak_and_frame_bench_report_flat_memory_and_no_per_frame_work() {
     let (commands, dispatches) = (j["commands_per_frame"].as_f64().unwrap(), j["dispatches_per_frame"].as_f64().unwrap());
     assert!(dispatches >= 5.0 && dispatches <= commands, "{j}");
     assert_eq!(j["barriers_per_frame"].as_f64(), Some(0.0), "{j}");
-    let o = dof(&["bench", "frame", "--backend", "vulkan", "--scene", "simple", "--width", "64", "--height", "36", "--frames", "2", "--json"]);
+    let o =
+        dof(&["bench", "frame", "--backend", "vulkan", "--scene", "simple", "--width", "64", "--height", "36", "--frames", "2", "--json"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("one JSON object");
     assert_eq!(v["dispatches_per_frame"], j["dispatches_per_frame"], "the same frame records the same dispatches on both backends");

@@ -51,6 +51,7 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .chain(peel::KERNELS.iter())
         .chain(renderer_peel::KERNELS.iter())
         .chain(frame_io::KERNELS.iter())
+        .chain(radiance::KERNELS.iter())
         .chain(tonemap::KERNELS.iter())
         .copied()
 }

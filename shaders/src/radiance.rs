@@ -9,6 +9,10 @@
 //! `2^27` colours with weights of at most 1 stays finite in f32, and so does its division by a
 //! total weight of at least `2^-20`: room that every method's accumulation stays within.
 
+use crate::exec::{Group, Mem};
+use crate::lens::{is_finite, is_positive};
+use crate::wg::for_each_item;
+
 /// Largest colour a method reads (2^100 ≈ 1.27e30); larger finite values are clamped to it.
 pub const COLOR_MAX: f32 = 1.267_650_6e30;
 
@@ -42,6 +46,50 @@ pub fn is_clamped(c: [f32; 3]) -> bool {
     let same = |a: f32, b: f32| a == b || crate::lens::is_nan(a);
     !(same(c[0], d[0]) && same(c[1], d[1]) && same(c[2], d[2]))
 }
+
+/// What [`COUNT_CLAMPED`] reads: the multi-layer input's size and where the count goes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct ClampCountParams {
+    pub pixels: u32,
+    /// Slots per pixel of the input.
+    pub layers: u32,
+    /// The word of `stats` the count is added to.
+    pub stats_at: u32,
+    /// Slots a pixel the method reads, front first (1 for the single-layer methods).
+    pub reads: u32,
+}
+
+/// Adds to `stats[stats_at]` the slots of the input (4 words: r, g, b, depth; `counts` used per
+/// pixel; the first `reads` of each pixel) a method keeps (finite colour, positive depth) whose colour [`clamp_color`] changes: the
+/// count the reports of the methods that clamp where they load colour give.
+pub fn count_pass<G: Group, M: Mem>(g: &mut G, p: &ClampCountParams, slots: M, counts: M, mut stats: M) {
+    for_each_item(g, p.pixels, |i| {
+        let n = counts.load(i).min(p.layers).min(p.reads);
+        let mut clamped = 0u32;
+        let mut k = 0;
+        while k < n {
+            let b = 4 * (i * p.layers + k);
+            let c = [f32::from_bits(slots.load(b)), f32::from_bits(slots.load(b + 1)), f32::from_bits(slots.load(b + 2))];
+            let kept = is_finite(c[0]) && is_finite(c[1]) && is_finite(c[2]) && is_positive(f32::from_bits(slots.load(b + 3)));
+            if kept && is_clamped(c) {
+                clamped += 1;
+            }
+            k += 1;
+        }
+        if clamped > 0 {
+            stats.atomic_add(p.stats_at, clamped);
+        }
+    });
+}
+
+kernel!(
+    /// Counts the input colours the numerical contract clamps.
+    COUNT_CLAMPED = radiance_count_clamped [256] (ClampCountParams) { slots, counts, stats } reads { slots, counts } => count_pass
+);
+
+#[cfg(not(target_arch = "spirv"))]
+pub const KERNELS: [&crate::KernelDesc; 1] = [&COUNT_CLAMPED];
 
 #[cfg(test)]
 mod tests {

@@ -278,7 +278,7 @@ fn frames_in_flight_out_of_range_are_refused_before_anything_is_allocated() {
 
 /// Device bytes of each method's context for 1, 2 and 3 frames in flight at `extent`: what the
 /// backend holds for it, growing by one step of report buffers per frame, under 1% of the context
-/// (and nothing for the ring gather, whose report reads nothing on the device).
+/// (for the ring gather only its count of clamped input colours).
 fn bytes_per_frame_in_flight(b: &mut dyn Backend, extent: Extent) {
     for m in METHODS {
         let bytes = [1, 2, 3].map(|frames| {
@@ -292,7 +292,8 @@ fn bytes_per_frame_in_flight(b: &mut dyn Backend, extent: Extent) {
         let step = bytes[1] - bytes[0];
         assert_eq!(bytes[2] - bytes[1], step, "{}: {bytes:?}", m.name);
         assert!(step * 100 < bytes[0], "{}: a frame in flight adds {step} bytes to {}", m.name, bytes[0]);
-        assert_eq!(step == 0, m.name == "ring-gather", "{}: {step} bytes a frame in flight", m.name);
+        // Every report reads something on the device (at least the count of clamped colours).
+        assert!(step > 0, "{}: {step} bytes a frame in flight", m.name);
         eprintln!(
             "{} {}x{}x{} {}: device bytes for 1, 2, 3 frames in flight: {} {} {} (+{step} a frame)",
             b.kind(),

@@ -126,6 +126,46 @@ fn clamps_are_counted_and_printed() {
     assert!(total > 0.9 * 2.0 * COLOR_MAX as f64 && total < 1.1 * 2.0 * COLOR_MAX as f64, "{total:e}");
 }
 
+/// Every method of the frame API counts the input colours it clamps in its report (figure
+/// `clamped`, and the summary), the same on the CPU backend and on Vulkan: a one-layer input and a
+/// two-layer one, whose hidden slot only the multi-layer methods read.
+#[test]
+fn every_method_reports_what_it_clamped() {
+    use dof::frame::{METHODS, MethodOptions, Reads};
+    use dof::methods::one_shot::one_shot;
+    let mut img = LayeredImage::new(24, 24, 2).unwrap();
+    for y in 0..24 {
+        for x in 0..24 {
+            let color = match (x, y) {
+                (8, 8) => [f32::MAX, 0.5, 0.5],
+                (14, 9) => [1e38, 1e38, 0.5],
+                (20, 20) => [-1.0, 0.5, 0.5],
+                (5, 17) => [0.5, 1e-40, 0.5],
+                _ => [0.5; 3],
+            };
+            img.push(x, y, Fragment { color, alpha: 1.0, depth: 3.0 }).unwrap();
+            if (x, y) == (3, 3) {
+                // Behind the front: read by the multi-layer methods only.
+                img.push(x, y, Fragment { color: [2e38, 0.5, 0.5], alpha: 1.0, depth: 6.0 }).unwrap();
+            }
+        }
+    }
+    let check = |b: &mut dyn Backend| {
+        for method in METHODS {
+            let out = one_shot(b, method, &MethodOptions::default(), &img, &test_lens(0.02)).unwrap();
+            let want = if method.reads == Reads::AllLayers { 5.0 } else { 4.0 };
+            assert_eq!(out.report.figures.get("clamped"), Some(&want), "{} on {}: {}", method.name, b.kind(), out.report.summary);
+            assert!(out.report.summary.contains("clamped"), "{}: {}", method.name, out.report.summary);
+            assert!(out.image.data.iter().all(|p| p.iter().all(|&c| c.is_finite() && c >= 0.0)), "{}", method.name);
+        }
+    };
+    check(&mut CpuBackend::new());
+    if let Some(mut vk) = vulkan() {
+        check(&mut vk);
+        assert_clean(&mut vk);
+    }
+}
+
 /// One 1e11 pixel in a 0.3 frame (issue 26: it pulled the rest down by 17%), and a 1e12 pixel
 /// every 97 pixels over 0.5 (it blacked out tiles): beyond the highlights' discs the frame is
 /// unchanged, and no pixel anywhere is darker than the frame.

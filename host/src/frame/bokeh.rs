@@ -8,7 +8,10 @@ use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::gather::{MAX_RADIUS, record_gather};
 use super::in_flight::{InFlight, per_frame};
-use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, ready, record_front, record_input, record_output};
+use super::io::{
+    Frame, ImageIo, Owned, check_frame, clamped_summary, output_buffer, ready, record_clamp_count, record_front, record_input,
+    record_output,
+};
 use crate::aperture::ApertureShape;
 use crate::backend::{Backend, BufferId, RunKernel, groups_for, push_words};
 use crate::error::{Error, Result};
@@ -130,7 +133,8 @@ impl BokehContext {
             let mut ids = sizes.iter().map(|&(words, label)| owned.make(backend, words, label)).collect::<Result<Vec<_>>>()?;
             let frames = desc.frames_in_flight;
             ids.extend(per_frame(&mut owned, backend, frames, ARGS_WORDS as u64 + 1, "bokeh/counters")?);
-            ids.extend(per_frame(&mut owned, backend, frames, 1, "bokeh/gather-radius")?);
+            // Per frame: the gather's window radius, then the count of clamped input colours.
+            ids.extend(per_frame(&mut owned, backend, frames, 2, "bokeh/gather-radius")?);
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             backend.write_buffer(ids[0], 0, &mask_words)?;
             // The sprite draw's target for the largest frame, so that no frame makes one.
@@ -159,6 +163,7 @@ impl BokehContext {
         kernels.extend([&GATHER, &GATHER_PLAN]);
         kernels.extend(dof_shaders::scan::KERNELS);
         kernels.extend(dof_shaders::frame_io::KERNELS);
+        kernels.extend(dof_shaders::radiance::KERNELS);
         ready(backend, ctx, &kernels, &[&BOKEH_DRAW], Self::destroy)
     }
 
@@ -193,6 +198,7 @@ impl BokehContext {
         let slots = record_input(backend, f, self.io.as_ref())?;
         let out = output_buffer(f, self.io.as_ref())?;
         record_front(backend, f, slots, b.color, b.depth)?;
+        record_clamp_count(backend, f, slots, 1, radius, 1)?;
         let o = &d.options;
         let params = BokehParams {
             width,
@@ -229,11 +235,18 @@ impl BokehContext {
     /// The same for the frame recorded `frames_ago` recordings before the last (see
     /// [`DofContext::report_frame`]).
     pub fn detected_and_radius_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<(u64, u32)> {
+        let (detected, radius, _) = self.figures_of(backend, frames_ago)?;
+        Ok((detected, radius))
+    }
+
+    /// Bright pixels detected, the gather's radius and the clamped input colours of the frame
+    /// `frames_ago` recordings before the last.
+    fn figures_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<(u64, u32, u32)> {
         self.owned.check(backend)?;
         let (slot, ()) = self.in_flight.slot(frames_ago)?;
         let detected = backend.read_buffer(self.b.counters[slot], COUNTER as u64, 1)?[0] as u64;
-        let radius = backend.read_buffer(self.b.radius[slot], 0, 1)?[0].min(MAX_RADIUS);
-        Ok((detected, radius))
+        let words = backend.read_buffer(self.b.radius[slot], 0, 2)?;
+        Ok((detected, words[0].min(MAX_RADIUS), words[1]))
     }
 }
 
@@ -254,16 +267,21 @@ impl DofContext for BokehContext {
         self.in_flight.frames()
     }
     fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
-        let (detected, radius) = self.detected_and_radius_of(backend, frames_ago)?;
+        let (detected, radius, clamped) = self.figures_of(backend, frames_ago)?;
         let overflow = detected.saturating_sub(self.desc.options.capacity as u64);
         let mut summary = format!("{detected} bright pixels detected, {} drawn as sprites", detected - overflow);
         if overflow > 0 {
             summary += &format!(" ({overflow} beyond the capacity of {} left in the blur)", self.desc.options.capacity);
         }
-        summary += &format!(", over a gather of radius {radius} px");
+        summary += &format!(", over a gather of radius {radius} px{}", clamped_summary(clamped));
         Ok(ContextReport {
             summary,
-            figures: [("sprites".to_string(), detected as f64), ("radius_px".to_string(), radius as f64)].into(),
+            figures: [
+                ("sprites".to_string(), detected as f64),
+                ("radius_px".to_string(), radius as f64),
+                ("clamped".to_string(), clamped as f64),
+            ]
+            .into(),
             overflow,
             ..Default::default()
         })

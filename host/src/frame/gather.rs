@@ -4,7 +4,10 @@
 use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::in_flight::{InFlight, per_frame};
-use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
+use super::io::{
+    Frame, ImageIo, Owned, check_frame, clamped_summary, context_pixels, output_buffer, ready, record_clamp_count, record_front,
+    record_input, record_output,
+};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::gather::{GATHER, GATHER_PLAN, GatherParams, TILE, gather, gather_plan};
@@ -70,7 +73,8 @@ impl GatherContext {
         let made = (|| {
             let color = owned.make(backend, 3 * pixels, "gather/color")?;
             let depth = owned.make(backend, pixels, "gather/depth")?;
-            let plans = per_frame(&mut owned, backend, desc.frames_in_flight, 1, "gather/plan")?;
+            // Per frame: the window radius, then the count of clamped input colours.
+            let plans = per_frame(&mut owned, backend, desc.frames_in_flight, 2, "gather/plan")?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             Ok((color, depth, plans, io))
         })();
@@ -78,6 +82,7 @@ impl GatherContext {
         let ctx = GatherContext { desc: desc.clone(), cap, color, depth, plans, in_flight, io, owned };
         let mut kernels = vec![&GATHER, &GATHER_PLAN];
         kernels.extend(dof_shaders::frame_io::KERNELS);
+        kernels.extend(dof_shaders::radiance::KERNELS);
         ready(backend, ctx, &kernels, &[], Self::destroy)
     }
 
@@ -103,6 +108,7 @@ impl GatherContext {
         let output = output_buffer(f, self.io.as_ref())?;
         record_front(backend, f, slots, self.color, self.depth)?;
         let plan = self.plans[self.in_flight.next()];
+        record_clamp_count(backend, f, slots, 1, plan, 1)?;
         let bindings = gather::Bindings { color: self.color, depth: self.depth, out: output, plan };
         record_gather(backend, f, self.cap, bindings)?;
         record_output(backend, f, self.io.as_ref())
@@ -117,8 +123,16 @@ impl GatherContext {
     /// [`DofContext::report_frame`]).
     pub fn radius_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<u32> {
         self.owned.check(backend)?;
+        Ok(self.plan_of(backend, frames_ago)?.0)
+    }
+
+    /// The window radius and the clamped input colours of the frame `frames_ago` recordings
+    /// before the last.
+    fn plan_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<(u32, u32)> {
+        self.owned.check(backend)?;
         let (slot, ()) = self.in_flight.slot(frames_ago)?;
-        Ok(backend.read_buffer(self.plans[slot], 0, 1)?[0].min(self.cap))
+        let words = backend.read_buffer(self.plans[slot], 0, 2)?;
+        Ok((words[0].min(self.cap), words[1]))
     }
 }
 
@@ -139,10 +153,10 @@ impl DofContext for GatherContext {
         self.in_flight.frames()
     }
     fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
-        let radius = self.radius_of(backend, frames_ago)?;
+        let (radius, clamped) = self.plan_of(backend, frames_ago)?;
         Ok(ContextReport {
-            summary: format!("gathered over a window of radius {radius} px (cap {} px)", self.cap),
-            figures: [("radius_px".to_string(), radius as f64)].into(),
+            summary: format!("gathered over a window of radius {radius} px (cap {} px){}", self.cap, clamped_summary(clamped)),
+            figures: [("radius_px".to_string(), radius as f64), ("clamped".to_string(), clamped as f64)].into(),
             ..Default::default()
         })
     }

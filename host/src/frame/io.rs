@@ -2,12 +2,13 @@
 //! image encodes depth, and the buffers that image inputs and outputs go through on the device.
 
 use super::context::Extent;
-use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, groups_for, push_words};
+use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, RunKernel, groups_for, push_words};
 use crate::error::{Error, Result};
 use dof_shaders::frame_io::{
     DEPTH_F32, DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FROM_IMAGES, FRONT, FrameIoParams, TO_RGBA,
 };
 use dof_shaders::lens::ThinLens;
+use dof_shaders::radiance::{COUNT_CLAMPED, ClampCountParams, radiance_count_clamped};
 
 /// How a depth image encodes depth.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -312,6 +313,29 @@ pub(crate) fn record_front(
     let params = io_params(f, None, None, f.layer_count(), DepthEncoding::Linear);
     let groups = groups_for(&FRONT, f.width as u64 * f.height as u64);
     backend.dispatch(&FRONT, groups, &[slots.0, slots.1, color, depth], &params, "frame/front")
+}
+
+/// Records the count of input colours the numerical contract clamps (`dof_shaders::radiance`)
+/// among the first `reads` slots of every pixel into `stats[at]` (cleared first): the figure
+/// `clamped` of the reports of the methods that clamp where they load colour.
+pub(crate) fn record_clamp_count(
+    backend: &mut dyn Backend,
+    f: &Frame,
+    slots: (BufferId, BufferId),
+    reads: u32,
+    stats: BufferId,
+    at: u32,
+) -> Result<()> {
+    let pixels = f.width * f.height;
+    let params = ClampCountParams { pixels, layers: f.layer_count(), stats_at: at, reads };
+    backend.fill(stats, at as u64, 1, 0, "frame/clamped")?;
+    let bindings = radiance_count_clamped::Bindings { slots: slots.0, counts: slots.1, stats };
+    backend.run(bindings, groups_for(&COUNT_CLAMPED, pixels as u64), &params, "frame/clamped")
+}
+
+/// The report's words on the input colours [`record_clamp_count`] counted.
+pub(crate) fn clamped_summary(clamped: u32) -> String {
+    if clamped == 0 { String::new() } else { format!("; {clamped} input colours clamped (negative, subnormal or above 2^100)") }
 }
 
 /// The buffer the method writes its RGB result into: the caller's, or for an image output the

@@ -27,7 +27,10 @@
 use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::in_flight::{InFlight, per_frame};
-use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_input, record_output};
+use super::io::{
+    Frame, ImageIo, Owned, check_frame, clamped_summary, context_pixels, output_buffer, ready, record_clamp_count, record_input,
+    record_output,
+};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::layered::{
@@ -236,7 +239,8 @@ impl LayeredContext {
         let mut owned = Owned::default();
         let made = (|| {
             let passes = Passes {
-                plans: per_frame(&mut owned, backend, desc.frames_in_flight, PLAN_WORDS as u64, "layered/plan")?,
+                // The plan, then the count of clamped input colours.
+                plans: per_frame(&mut owned, backend, desc.frames_in_flight, PLAN_WORDS as u64 + 1, "layered/plan")?,
                 weights: owned.make(backend, weights.len() as u64, "layered/weights")?,
                 layer: owned.make(backend, 4 * pixels, "layered/layer")?,
                 tmp: owned.make(backend, 4 * pixels, "layered/tmp")?,
@@ -257,6 +261,7 @@ impl LayeredContext {
         let ctx = LayeredContext { desc: desc.clone(), cocs, focus, ops, passes, in_flight, io, owned };
         let mut kernels = dof_shaders::layered::KERNELS.to_vec();
         kernels.extend(dof_shaders::frame_io::KERNELS);
+        kernels.extend(dof_shaders::radiance::KERNELS);
         ready(backend, ctx, &kernels, &[], Self::destroy)
     }
 
@@ -293,6 +298,7 @@ impl LayeredContext {
         let output = output_buffer(f, self.io.as_ref())?;
         let b = &self.passes;
         let plan_buf = b.plans[self.in_flight.next()];
+        record_clamp_count(backend, f, (input, counts), f.layer_count(), plan_buf, PLAN_WORDS)?;
         let pixels = f.width as u64 * f.height as u64;
         backend.fill(b.far, 0, 4 * pixels, 0, "layered/clear")?;
         backend.fill(b.near, 0, 4 * pixels, 0, "layered/clear")?;
@@ -356,10 +362,11 @@ impl LayeredContext {
     pub fn plan_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<LayeredPlanReport> {
         self.owned.check(backend)?;
         let (slot, ()) = self.in_flight.slot(frames_ago)?;
-        let words = backend.read_buffer(self.passes.plans[slot], 0, PLAN_WORDS as u64)?;
+        let words = backend.read_buffer(self.passes.plans[slot], 0, PLAN_WORDS as u64 + 1)?;
         let s = PLAN_STATS as usize;
         let used = (0..self.cocs.len()).map(|k| words[PLAN_USED as usize + k] != 0).collect();
-        Ok(LayeredPlanReport { coc_range: (-from_key(words[s]), from_key(words[s + 1])), capped: words[s + 2] as u64, used })
+        let (coc_range, capped, clamped) = ((-from_key(words[s]), from_key(words[s + 1])), words[s + 2] as u64, words[PLAN_WORDS as usize]);
+        Ok(LayeredPlanReport { coc_range, capped, used, clamped: clamped as u64 })
     }
 }
 
@@ -372,6 +379,8 @@ pub struct LayeredPlanReport {
     pub capped: u64,
     /// Per candidate layer, front to back: whether some fragment reached it.
     pub used: Vec<bool>,
+    /// Input colours the numerical contract clamped (`dof_shaders::radiance`).
+    pub clamped: u64,
 }
 
 impl LayeredPlanReport {
@@ -410,6 +419,7 @@ impl DofContext for LayeredContext {
         if p.capped > 0 {
             summary += &format!("; {} fragments beyond the {} px cap", p.capped, o.max_coc);
         }
+        summary += &clamped_summary(p.clamped as u32);
         Ok(ContextReport {
             summary,
             figures: [
@@ -418,6 +428,7 @@ impl DofContext for LayeredContext {
                 ("coc_min".to_string(), p.coc_range.0 as f64),
                 ("coc_max".to_string(), p.coc_range.1 as f64),
                 ("capped".to_string(), p.capped as f64),
+                ("clamped".to_string(), p.clamped as f64),
             ]
             .into(),
             ..Default::default()

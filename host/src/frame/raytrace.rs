@@ -13,7 +13,10 @@
 use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::in_flight::{InFlight, per_frame};
-use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_input, record_output};
+use super::io::{
+    Frame, ImageIo, Owned, check_frame, clamped_summary, context_pixels, output_buffer, ready, record_clamp_count, record_input,
+    record_output,
+};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 // The sampler is a leaf module of pure functions (the reference renderer's), shared so that the
@@ -143,7 +146,8 @@ pub struct RaytraceContext {
     hier: BufferId,
     /// The lens samples, written at creation.
     samples: BufferId,
-    /// Per frame in flight, [`STATS_WORDS`]: the missed rays of its frame.
+    /// Per frame in flight, [`STATS_WORDS`] (the missed rays of its frame), then the count of
+    /// clamped input colours.
     stats: Vec<BufferId>,
     io: Option<ImageIo>,
     owned: Owned,
@@ -177,7 +181,7 @@ impl RaytraceContext {
         let made = (|| {
             let hier = owned.make(backend, 2 * cells, "raytrace/hierarchy")?;
             let samples = owned.make(backend, sample_words.len() as u64, "raytrace/samples")?;
-            let stats = per_frame(&mut owned, backend, desc.frames_in_flight, STATS_WORDS as u64, "raytrace/stats")?;
+            let stats = per_frame(&mut owned, backend, desc.frames_in_flight, STATS_WORDS as u64 + 1, "raytrace/stats")?;
             backend.write_buffer(samples, 0, &sample_words)?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             Ok((hier, samples, stats, io))
@@ -186,6 +190,7 @@ impl RaytraceContext {
         let ctx = RaytraceContext { desc: desc.clone(), hier, samples, stats, io, owned, in_flight };
         let mut kernels = dof_shaders::raytrace::KERNELS.to_vec();
         kernels.extend(dof_shaders::frame_io::KERNELS);
+        kernels.extend(dof_shaders::radiance::KERNELS);
         ready(backend, ctx, &kernels, &[], Self::destroy)
     }
 
@@ -217,6 +222,7 @@ impl RaytraceContext {
         let output = output_buffer(f, self.io.as_ref())?;
         let (params, _) = trace_params(f.width, f.height, f.layer_count(), &d.options, f.lens);
         let stats = self.stats[self.in_flight.next()];
+        record_clamp_count(backend, f, (input, counts), f.layer_count(), stats, STATS_WORDS)?;
         let trace = raytrace_trace::Bindings { input, counts, hier: self.hier, samples: self.samples, out: output, stats };
         record_trace(backend, &params, trace)?;
         record_output(backend, f, self.io.as_ref())
@@ -231,9 +237,17 @@ impl RaytraceContext {
     /// The missed rays of the frame recorded `frames_ago` recordings before the last (see
     /// [`DofContext::report_frame`]), with that frame's pixels and hierarchy levels.
     fn missed_rays_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<(u64, (u64, u32))> {
+        let (missed, _, kept) = self.stats_of(backend, frames_ago)?;
+        Ok((missed, kept))
+    }
+
+    /// The missed rays and clamped input colours of the frame `frames_ago` recordings before the
+    /// last, with that frame's pixels and hierarchy levels.
+    fn stats_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<(u64, u32, (u64, u32))> {
         self.owned.check(backend)?;
         let (slot, kept) = self.in_flight.slot(frames_ago)?;
-        Ok((backend.read_buffer(self.stats[slot], 0, 1)?[0] as u64, kept))
+        let words = backend.read_buffer(self.stats[slot], 0, STATS_WORDS as u64 + 1)?;
+        Ok((words[0] as u64, words[STATS_WORDS as usize], kept))
     }
 }
 
@@ -254,19 +268,21 @@ impl DofContext for RaytraceContext {
         self.in_flight.frames()
     }
     fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
-        let (missed, (pixels, levels)) = self.missed_rays_of(backend, frames_ago)?;
+        let (missed, clamped, (pixels, levels)) = self.stats_of(backend, frames_ago)?;
         let spp = self.desc.options.spp;
         let rays = pixels * spp as u64;
         Ok(ContextReport {
             summary: format!(
-                "{spp} rays per pixel, {levels}-level hierarchy; {missed} of {rays} rays ({:.2}%) hit no stored fragment",
-                100.0 * missed as f64 / rays.max(1) as f64
+                "{spp} rays per pixel, {levels}-level hierarchy; {missed} of {rays} rays ({:.2}%) hit no stored fragment{}",
+                100.0 * missed as f64 / rays.max(1) as f64,
+                clamped_summary(clamped)
             ),
             figures: [
                 ("spp".to_string(), spp as f64),
                 ("levels".to_string(), levels as f64),
                 ("rays".to_string(), rays as f64),
                 ("missed_rays".to_string(), missed as f64),
+                ("clamped".to_string(), clamped as f64),
             ]
             .into(),
             ..Default::default()

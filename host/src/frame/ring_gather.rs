@@ -5,8 +5,11 @@
 
 use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
-use super::in_flight::InFlight;
-use super::io::{Frame, ImageIo, Owned, check_frame, context_pixels, output_buffer, ready, record_front, record_input, record_output};
+use super::in_flight::{InFlight, per_frame};
+use super::io::{
+    Frame, ImageIo, Owned, check_frame, clamped_summary, context_pixels, output_buffer, ready, record_clamp_count, record_front,
+    record_input, record_output,
+};
 use crate::backend::{Backend, BufferId, groups_for, push_words};
 use crate::error::{Error, Result};
 use dof_shaders::ring_gather::{
@@ -103,8 +106,10 @@ struct Passes {
 pub struct RingGatherContext {
     desc: RingGatherContextDesc,
     passes: Passes,
-    /// Per frame in flight, the options its frame ran with (its report; nothing on the device).
+    /// Per frame in flight, the options its frame ran with (its report) and, on the device, the
+    /// count of clamped input colours.
     in_flight: InFlight<RingGatherOptions>,
+    clamped: Vec<BufferId>,
     io: Option<ImageIo>,
     owned: Owned,
 }
@@ -128,13 +133,15 @@ impl RingGatherContext {
                 bright: owned.make(backend, BRIGHT_TILE_WORDS as u64 * tiles, "ring-gather/bright")?,
                 fields: owned.make(backend, FIELD_WORDS as u64 * half, "ring-gather/fields")?,
             };
+            let clamped = per_frame(&mut owned, backend, desc.frames_in_flight, 1, "ring-gather/clamped")?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
-            Ok((passes, io))
+            Ok((passes, clamped, io))
         })();
-        let ((passes, io), owned) = owned.or_free(backend, made)?;
-        let ctx = RingGatherContext { desc: desc.clone(), passes, in_flight, io, owned };
+        let ((passes, clamped, io), owned) = owned.or_free(backend, made)?;
+        let ctx = RingGatherContext { desc: desc.clone(), passes, in_flight, clamped, io, owned };
         let mut kernels = dof_shaders::ring_gather::KERNELS.to_vec();
         kernels.extend(dof_shaders::frame_io::KERNELS);
+        kernels.extend(dof_shaders::radiance::KERNELS);
         ready(backend, ctx, &kernels, &[], Self::destroy)
     }
 
@@ -174,6 +181,7 @@ impl RingGatherContext {
         let output = output_buffer(f, self.io.as_ref())?;
         let b = &self.passes;
         record_front(backend, f, slots, b.color, b.depth)?;
+        record_clamp_count(backend, f, slots, 1, self.clamped[self.in_flight.next()], 0)?;
         let p =
             RingGatherParams { width: f.width, height: f.height, rings: d.options.rings, max_radius: d.options.max_radius, lens: f.lens };
         let params = push_words(&p);
@@ -224,11 +232,22 @@ impl DofContext for RingGatherContext {
     }
     fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
         self.owned.check(backend)?;
-        let (_, o) = self.in_flight.slot(frames_ago)?;
+        let (slot, o) = self.in_flight.slot(frames_ago)?;
+        let clamped = backend.read_buffer(self.clamped[slot], 0, 1)?[0];
         let samples = dof_shaders::ring_gather::samples(o.rings);
         Ok(ContextReport {
-            summary: format!("{} rings, {samples} samples a half-resolution pixel, CoC radius cap {} px", o.rings, o.max_radius),
-            figures: [("rings".to_string(), o.rings as f64), ("samples_per_half_pixel".to_string(), samples as f64)].into(),
+            summary: format!(
+                "{} rings, {samples} samples a half-resolution pixel, CoC radius cap {} px{}",
+                o.rings,
+                o.max_radius,
+                clamped_summary(clamped)
+            ),
+            figures: [
+                ("rings".to_string(), o.rings as f64),
+                ("samples_per_half_pixel".to_string(), samples as f64),
+                ("clamped".to_string(), clamped as f64),
+            ]
+            .into(),
             ..Default::default()
         })
     }

@@ -515,6 +515,7 @@ impl DofContext for SplatContext {
             ("merged", r.merged as f64),
             ("overflow_tiles", r.overflow_tiles as f64),
             ("list_pool", r.list_capacity as f64),
+            ("clamped", r.clamped as f64),
         ];
         Ok(ContextReport {
             summary: r.summary(),

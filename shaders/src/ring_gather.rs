@@ -712,9 +712,11 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, half: M, d
         // The background kernel is as wide as the pixel's own blur, either side of the focus plane
         // (a slightly near pixel's neighbours in front reach it by their own CoC), widening to the
         // near kernel by the pixel's near share: its rings never switch off while a neighbour they
-        // hold still reaches the pixel.
+        // hold still reaches the pixel. Written so that a wholly near pixel's is the near radius
+        // exactly, and the two fields share their rings.
         let own_blur = absf(own_r);
-        let back_radius = own_blur + near_share(own_r) * (maxf(near_radius, own_blur) - own_blur);
+        let share = near_share(own_r);
+        let back_radius = (1.0 - share) * own_blur + share * maxf(near_radius, own_blur);
         if own_valid {
             f.add_pixel(&half, at, 0.0, own_r, back_radius, 1.0, BACK);
             f.add_pixel(&half, at, 0.0, own_r, near_radius, lattice(p, near_radius).1, NEAR);

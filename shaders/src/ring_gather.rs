@@ -24,7 +24,9 @@
 //!    uniform density and no trigonometry) for each of two fields, each with its own kernel (one
 //!    set of rings where the two agree). A sample's near share rises continuously from 0 at a 0.5
 //!    half-pixel near radius to 1 at 1.5:
-//!    - background, as wide as the pixel's own background CoC: scatter-as-gather as in
+//!    - background, as wide as the pixel's own CoC (either side of the focus plane, so a slightly
+//!      near pixel's rings never switch off while its neighbours in front still reach it):
+//!      scatter-as-gather as in
 //!      [`crate::gather`], each sample weighted by its coverage over the inverse of its CoC area, a
 //!      sample behind the pixel reaching at most the pixel's own CoC (so a blurred background does
 //!      not smear over a sharper object); where the pixel itself is in the near field, the kernel
@@ -686,8 +688,8 @@ fn rings_into<M: Mem>(f: &mut Fields, half: &M, p: &RingGatherParams, hx: u32, h
 }
 
 /// One workgroup a tile, one invocation a half-resolution pixel: both fields into `fields`. Each
-/// field has its own kernel: the background one as wide as the pixel's own background CoC (as wide
-/// as the near kernel where the pixel is near, to fill behind it), the near one as wide as the
+/// field has its own kernel: the background one as wide as the pixel's own CoC (widening to the
+/// near kernel by the pixel's near share, to fill behind it), the near one as wide as the
 /// tile's dilated near radius; one set of rings serves both where the two radii agree.
 pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, half: M, dilated: M, mut fields: M) {
     let [tx, ty, _] = g.workgroup_id();
@@ -707,8 +709,14 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, half: M, d
         let near_radius = f32::from_bits(dilated.load(DILATED_WORDS * (ty * p.tiles_x() + tx)));
         let own_valid = !is_nan(own);
         let own_r = if own_valid { own } else { 0.0 };
-        let own_back = maxf(own_r, 0.0);
-        let back_radius = own_back + near_share(own_r) * (maxf(near_radius, own_back) - own_back);
+        // The background kernel is as wide as the pixel's own blur, either side of the focus plane
+        // (a slightly near pixel's neighbours in front reach it by their own CoC), widening to the
+        // near kernel by the pixel's near share: its rings never switch off while a neighbour they
+        // hold still reaches the pixel. Written so that a wholly near pixel's is the near radius
+        // exactly, and the two fields share their rings.
+        let own_blur = absf(own_r);
+        let share = near_share(own_r);
+        let back_radius = (1.0 - share) * own_blur + share * maxf(near_radius, own_blur);
         if own_valid {
             f.add_pixel(&half, at, 0.0, own_r, back_radius, 1.0, BACK);
             f.add_pixel(&half, at, 0.0, own_r, near_radius, lattice(p, near_radius).1, NEAR);

@@ -131,18 +131,19 @@ fn close_to_the_exhaustive_gather_in_the_partial_occlusion_region() {
 }
 
 /// A focus pull on `railing` (focus from the scene's to 0.4 of it, one guard band for every frame
-/// as in `dof eval --temporal`): no frame-to-frame change of the ring gather is more than twice the
-/// reference's, measured as RMS on the tone-mapped images.
+/// as in `dof eval --temporal`): no frame-to-frame change of the ring gather is more than 1.3 times
+/// the reference's (measured up to 1.17), measured as RMS on the tone-mapped images; at the size of
+/// `dof eval --temporal` no more than 1.75 times (measured up to 1.65, the last step, where the
+/// far wall's checker, aliased in the one-sample input, starts to blur).
 #[test]
 fn a_focus_pull_does_not_flicker() {
     // `RING_TEMPORAL=WxHxFRAMESxSPP` measures at another size (`dof eval --temporal`: 160x90x12x256).
-    let (w, h, frames, spp) = std::env::var("RING_TEMPORAL")
-        .ok()
-        .and_then(|v| {
-            let n: Vec<u32> = v.split('x').filter_map(|s| s.parse().ok()).collect();
-            (n.len() == 4).then(|| (n[0], n[1], n[2] as usize, n[3]))
-        })
-        .unwrap_or((96, 54, 8, 128));
+    let size = std::env::var("RING_TEMPORAL").ok().and_then(|v| {
+        let n: Vec<u32> = v.split('x').filter_map(|s| s.parse().ok()).collect();
+        (n.len() == 4).then(|| (n[0], n[1], n[2] as usize, n[3]))
+    });
+    let bound = if size.is_some() { 1.75 } else { 1.3 };
+    let (w, h, frames, spp) = size.unwrap_or((96, 54, 8, 128));
     let built = builtin("railing").unwrap().with_size(w, h);
     let f0 = built.thin_lens().unwrap().focus_distance;
     let lenses: Vec<ThinLens> = (0..frames)
@@ -175,5 +176,5 @@ fn a_focus_pull_does_not_flicker() {
         eprintln!("step {i}: PSNR {p:.2} dB, temporal PSNR {t:.2} dB, change {ratio:.2}x the reference's");
         worst = worst.max(ratio);
     }
-    assert!(worst < 2.0, "a step changes {worst:.2}x as much as the reference's");
+    assert!(worst < bound, "a step changes {worst:.2}x as much as the reference's (at most {bound}x)");
 }

@@ -30,22 +30,12 @@ pub use report::SplatReport;
 pub const MAX_LIST_ENTRIES: u64 = 1 << 29;
 /// List entries a context holds per pixel of its maximum extent unless told otherwise, and the
 /// least it holds (so that small frames with strong blur, whose lists are long, still fit).
-/// Merged 4x4, it holds [`MERGED_4X4_LIST_QUARTERS_PER_PIXEL`] quarters of an entry a pixel instead.
-/// Measured: `railing` merged 4x4 uses 0.9 entries a pixel at 1920x1080 and 1.9 at 640x360.
+/// Measured merged 4x4 with 4 layers: the built-in scenes use 0.47 (`simple`) to 0.90 (`railing`)
+/// entries a pixel at 1920x1080, but `fence`, `railing` and `highlights` want more than 1.25 at
+/// 3840x2160 (lists grow with the blur in pixels), so the pool is not cut below 2. Unmerged, every
+/// built-in scene wants more than 2 at 1920x1080 (the one-shot path grows the pool).
 pub const DEFAULT_LIST_ENTRIES_PER_PIXEL: u64 = 2;
 pub const MIN_LIST_ENTRIES: u64 = 1 << 20;
-/// The pool merged 4x4, in quarter entries a pixel: 1.25 entries. Measured at 1920x1080 with 4
-/// layers, the built-in scenes use 0.47 (`simple`) to 0.90 (`railing`) entries a pixel.
-pub const MERGED_4X4_LIST_QUARTERS_PER_PIXEL: u64 = 5;
-
-/// The list pool a context of `pixels` holds unless told otherwise.
-pub fn default_list_entries(merge: Merge, pixels: u64) -> u64 {
-    let wanted = match merge {
-        Merge::X4 => (MERGED_4X4_LIST_QUARTERS_PER_PIXEL * pixels).div_ceil(4),
-        Merge::None | Merge::X2 => DEFAULT_LIST_ENTRIES_PER_PIXEL * pixels,
-    };
-    wanted.max(MIN_LIST_ENTRIES)
-}
 /// Longest list the sort is sized for unless told otherwise (longer lists are counted as overflow).
 pub const DEFAULT_MAX_LIST: u32 = 1 << 16;
 
@@ -58,8 +48,8 @@ pub struct SplatContextDesc {
     pub max_layers: u32,
     /// Tile size, merging, radius cap, aperture: fixed for the context's life.
     pub options: SplatOptions,
-    /// Tile-list entries the pool holds (default: [`default_list_entries`] for the maximum extent;
-    /// at most [`MAX_LIST_ENTRIES`]).
+    /// Tile-list entries the pool holds (default: [`DEFAULT_LIST_ENTRIES_PER_PIXEL`] per pixel of
+    /// the maximum extent, at least [`MIN_LIST_ENTRIES`]; at most [`MAX_LIST_ENTRIES`]).
     pub list_entries: Option<u64>,
     /// Longest list one tile may have (default [`DEFAULT_MAX_LIST`]).
     pub max_list: Option<u32>,
@@ -180,7 +170,7 @@ impl SplatContext {
         if 4 * slots > max_words {
             return Err(Error::TooLarge { what: "fragment slots of the input (words)".into(), size: 4 * slots, limit: max_words });
         }
-        let list_entries = desc.list_entries.unwrap_or(default_list_entries(desc.options.merge, pixels));
+        let list_entries = desc.list_entries.unwrap_or((DEFAULT_LIST_ENTRIES_PER_PIXEL * pixels).max(MIN_LIST_ENTRIES));
         if list_entries == 0 || list_entries > MAX_LIST_ENTRIES.min(max_words) {
             return Err(Error::TooLarge {
                 what: "tile list entries (merge fragments with --merge 2x2 or 4x4, or render smaller)".into(),

@@ -8,6 +8,9 @@
 
 use dof::backend::{Backend, CpuBackend};
 use dof::frame::{ContextDesc, Extent, METHODS, Merge, MethodOptions, SplatContext, SplatContextDesc, SplatOptions};
+use dof::methods::splat::{splat, splat_with_stages};
+use dof::stress::{noise_with_sky, test_lens};
+use dof_tests::vulkan;
 
 const SIZES: [(u32, u32); 3] = [(1280, 720), (1920, 1080), (3840, 2160)];
 const LAYERS: u32 = 4;
@@ -63,4 +66,28 @@ fn device_bytes_of_every_method() {
         }
     }
     assert_eq!(b.counters().device_bytes, 0, "every context freed");
+}
+
+/// The buffers shared between stages change nothing: a frame whose long lists take the sort's
+/// global path (whose key scratch then also holds the sorted keys) writes the same image, bit for
+/// bit, as with every stage's buffers kept apart, on the CPU backend and on Vulkan.
+#[test]
+fn shared_stage_buffers_leave_the_image_unchanged() {
+    let mut backends: Vec<Box<dyn Backend>> = vec![Box::new(CpuBackend::new())];
+    if let Some(vk) = vulkan() {
+        backends.push(Box::new(vk));
+    }
+    let img = noise_with_sky(64, 48, LAYERS);
+    for b in &mut backends {
+        for merge in [Merge::None, Merge::X4] {
+            let o = SplatOptions { merge, tile: 32, ..SplatOptions::default() };
+            let shared = splat(b.as_mut(), &img, &test_lens(0.2), &o).unwrap();
+            let apart = splat_with_stages(b.as_mut(), &img, &test_lens(0.2), &o).unwrap();
+            let what = format!("{} merge {}", b.kind(), merge.name());
+            assert!(shared.report.sort.global_lists > 0, "{what}: no list took the global path: {:?}", shared.report.sort);
+            assert_eq!(shared.report.overflow_tiles, 0, "{what}");
+            let bits = |o: &dof::methods::splat::SplatOutput| o.image.data.iter().flatten().map(|v| v.to_bits()).collect::<Vec<_>>();
+            assert!(bits(&shared) == bits(&apart), "{what}: the image differs with shared buffers");
+        }
+    }
 }

@@ -194,6 +194,8 @@ pub(crate) fn ready<C>(
 pub(crate) struct Owned {
     ids: Vec<BufferId>,
     bytes: u64,
+    /// Each buffer's label and bytes, in the order made (for per-buffer memory tables).
+    made: Vec<(String, u64)>,
     /// The backend the buffers were made on (set by the first one).
     owner: Option<BackendId>,
 }
@@ -205,6 +207,7 @@ impl Owned {
         self.owner = Some(backend.id());
         self.ids.push(id);
         self.bytes += 4 * words.max(1);
+        self.made.push((label.to_string(), 4 * words.max(1)));
         Ok(id)
     }
 
@@ -223,6 +226,18 @@ impl Owned {
     /// Bytes of every buffer made.
     pub fn bytes(&self) -> u64 {
         self.bytes
+    }
+
+    /// Bytes per label, summed over buffers of the same label, in the order first made.
+    pub fn table(&self) -> Vec<(String, u64)> {
+        let mut rows: Vec<(String, u64)> = Vec::new();
+        for (label, bytes) in &self.made {
+            match rows.iter_mut().find(|(l, _)| l == label) {
+                Some(row) => row.1 += bytes,
+                None => rows.push((label.clone(), *bytes)),
+            }
+        }
+        rows
     }
 
     /// Frees every buffer, on the backend that made them only: handed another backend it frees

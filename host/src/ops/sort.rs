@@ -109,13 +109,32 @@ impl SegmentedSort {
         4 * (plan::WORDS as u64 * self.plans.len() as u64 + lists + scratch)
     }
 
+    /// [`Self::bytes`] per buffer: the lists, the global path's scratch (when recorded), the plans.
+    pub fn table(&self) -> Vec<(String, u64)> {
+        let lists = (NUM_CLASSES as u64 + 1) * self.max_segments.max(1) as u64;
+        let mut rows = vec![("sort/lists".to_string(), 4 * lists)];
+        if self.scratch.is_some() {
+            rows.push(("sort/scratch-keys, scratch-positions".to_string(), 8 * self.max_elements as u64));
+        }
+        rows.push(("sort/plan".to_string(), 4 * plan::WORDS as u64 * self.plans.len() as u64));
+        rows
+    }
+
+    /// The global path's key scratch, when it is recorded. [`Self::record`] may be handed it as
+    /// `keys_out`: the global path writes it only at its own lists' positions, and its last pass
+    /// (which reads it no more) writes their sorted keys there.
+    pub fn scratch_keys(&self) -> Option<BufferId> {
+        self.scratch.map(|(keys, _)| keys)
+    }
+
     /// Capacity of the largest workgroup-memory class on this device.
     pub fn top_class_cap(&self) -> u32 {
         CLASS_CAPS[self.top_class as usize]
     }
 
     /// Records the sort of `num_segments` lists described by `segments` (`[offset, len]` pairs) from
-    /// `keys_in`/`values_in` into `keys_out`/`values_out` (distinct buffers). Lists must lie inside the
+    /// `keys_in`/`values_in` into `keys_out`/`values_out` (distinct buffers; `keys_out` may be
+    /// [`Self::scratch_keys`]). Lists must lie inside the
     /// buffers and be at most `max_list_len` long: the kernels check bounds, but a violated bound
     /// leaves that list unsorted.
     #[allow(clippy::too_many_arguments)]

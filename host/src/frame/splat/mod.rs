@@ -30,7 +30,10 @@ pub use report::SplatReport;
 pub const MAX_LIST_ENTRIES: u64 = 1 << 29;
 /// List entries a context holds per pixel of its maximum extent unless told otherwise, and the
 /// least it holds (so that small frames with strong blur, whose lists are long, still fit).
-/// Measured: `railing` merged 4x4 uses 0.9 entries a pixel at 1920x1080 and 1.9 at 640x360.
+/// Measured merged 4x4 with 4 layers: the built-in scenes use 0.47 (`simple`) to 0.90 (`railing`)
+/// entries a pixel at 1920x1080, but `fence`, `railing` and `highlights` want more than 1.25 at
+/// 3840x2160 (lists grow with the blur in pixels), so the pool is not cut below 2. Unmerged, every
+/// built-in scene wants more than 2 at 1920x1080 (the one-shot path grows the pool).
 pub const DEFAULT_LIST_ENTRIES_PER_PIXEL: u64 = 2;
 pub const MIN_LIST_ENTRIES: u64 = 1 << 20;
 /// Longest list the sort is sized for unless told otherwise (longer lists are counted as overflow).
@@ -180,6 +183,10 @@ impl SplatContext {
         let merge_steps = desc.options.merge.steps();
         let in_flight = InFlight::new(desc.frames_in_flight)?;
 
+        let sort = SegmentedSort::in_flight(backend, tiles as u32, list_entries as u32, max_list, desc.frames_in_flight)?;
+        // The sorted keys are written and never read by a later stage: where the sort has a key
+        // scratch for its long lists, they share it (see `SegmentedSort::scratch_keys`).
+        let sorted_keys_in_scratch = sort.scratch_keys().filter(|_| !desc.distinct_stage_buffers);
         let mut owned = Owned::default();
         let built = (|| {
             let slot_words = (0..=merge_steps)
@@ -190,18 +197,36 @@ impl SplatContext {
                 .max()
                 .unwrap_or(4 * slots);
             let mut cell_bufs: Vec<(BufferId, BufferId)> = Vec::new();
+            let shared = !desc.distinct_stage_buffers;
+            // Binning runs after compaction, and nothing reads the last level's cells again: the
+            // unsorted list keys go there when they fit (4 words a slot is far more than the pool).
+            let keys_in_cells = shared && list_entries <= slot_words;
             for s in 0..=merge_steps {
                 let (_, _, cx, cy) = cells(w, h, layers, s);
-                // Step 2 reads step 1's cells and writes over step 0's, which nothing reads again.
-                let cells_buf = if s == 2 && !desc.distinct_stage_buffers {
-                    cell_bufs[0].0
+                // Step 2 reads step 1's cells and counts and writes over step 0's, which nothing
+                // reads again.
+                let (cells_buf, counts) = if s == 2 && shared {
+                    cell_bufs[0]
                 } else {
-                    owned.make(backend, slot_words, &format!("splat/cells-{s}"))?
+                    // What else each buffer holds later in the frame, for the memory table.
+                    let holds_last = s == merge_steps || (s == 0 && merge_steps == 2 && shared);
+                    let mut label = format!("splat/cells-{s}");
+                    if s == 0 && merge_steps == 2 && shared {
+                        label += ", cells-2";
+                    }
+                    if s + 1 == merge_steps && shared {
+                        label += ", dense";
+                    }
+                    if holds_last && keys_in_cells {
+                        label += ", keys";
+                    }
+                    let cells_buf = owned.make(backend, slot_words, &label)?;
+                    (cells_buf, owned.make(backend, cx as u64 * cy as u64, &format!("splat/cell-counts-{s}"))?)
                 };
-                let counts = owned.make(backend, cx as u64 * cy as u64, &format!("splat/cell-counts-{s}"))?;
                 cell_bufs.push((cells_buf, counts));
             }
             let (_, _, fx, fy) = cells(w, h, layers, merge_steps);
+            let cell_bufs_last = cell_bufs[merge_steps as usize].0;
             // The dense array takes the merging buffer the last step does not write (step 0's
             // after one step, step 1's after two): nothing reads it again.
             let dense = match merge_steps {
@@ -224,23 +249,23 @@ impl SplatContext {
                 segments: segments[0],
                 dense,
                 mask: owned.make(backend, mask_words.len() as u64, "splat/aperture-mask")?,
-                keys: owned.make(backend, list_entries, "splat/keys")?,
+                keys: if keys_in_cells { cell_bufs_last } else { owned.make(backend, list_entries, "splat/keys")? },
                 values: owned.make(backend, list_entries, "splat/values")?,
-                keys_sorted: owned.make(backend, list_entries, "splat/keys-sorted")?,
+                keys_sorted: match sorted_keys_in_scratch {
+                    Some(scratch) => scratch,
+                    None => owned.make(backend, list_entries, "splat/keys-sorted")?,
+                },
                 values_sorted: owned.make(backend, list_entries, "splat/values-sorted")?,
                 io,
             };
             backend.write_buffer(b.mask, 0, &mask_words)?;
             Ok((b, stats.into_iter().zip(segments).collect()))
         })();
-        let ((b, reports), owned) = owned.or_free(backend, built)?;
-        let scan = ScanScratch::new(backend, tiles);
-        let (scan, owned) = owned.or_free(backend, scan)?;
-        let sort = match SegmentedSort::in_flight(backend, tiles as u32, list_entries as u32, max_list, desc.frames_in_flight) {
-            Ok(s) => s,
+        let built = built.and_then(|b| ScanScratch::new(backend, tiles).map(|scan| (b, scan)));
+        let (((b, reports), scan), owned) = match owned.or_free(backend, built) {
+            Ok(made) => made,
             Err(e) => {
-                scan.destroy(backend);
-                owned.free(backend);
+                sort.destroy(backend);
                 return Err(e);
             }
         };
@@ -293,6 +318,20 @@ impl SplatContext {
     /// Device memory the context holds, in bytes.
     pub fn device_bytes(&self) -> u64 {
         self.bytes
+    }
+
+    /// Device memory per buffer, in bytes, summing to [`Self::device_bytes`]: one row per label
+    /// (a buffer that holds several stages' data in turn names them all; the report buffers of
+    /// every frame in flight are one row).
+    pub fn memory_table(&self) -> Vec<(String, u64)> {
+        let mut rows = self.owned.table();
+        rows.push(("scan/scratch".to_string(), self.scan.bytes()));
+        let sorted_in_scratch = self.sort.scratch_keys() == Some(self.b.keys_sorted);
+        rows.extend(self.sort.table().into_iter().map(|(label, bytes)| match label.starts_with("sort/scratch") && sorted_in_scratch {
+            true => (format!("{label} (the first also splat/keys-sorted)"), bytes),
+            false => (label, bytes),
+        }));
+        rows
     }
 
     /// The list pool's size (entries) and the longest list the sort handles.

@@ -1,0 +1,93 @@
+//! Device memory of the multi-layer splatting context, buffer by buffer, and of every method of
+//! the registry, at 1280x720, 1920x1080 and 3840x2160 with 4 layers (printed for
+//! `docs/measurements.md`; run with `--nocapture`). Buffers hold the same bytes on every backend,
+//! so the CPU backend is enough.
+//! - The per-buffer table sums to `device_bytes`, which equals what the backend holds for it.
+//! - Buffers that hold several stages in turn are not counted twice, and the context at 1920x1080
+//!   with 4 layers and the registry's options stays within [`BOUND_1080P`].
+
+use dof::backend::{Backend, CpuBackend};
+use dof::frame::{ContextDesc, Extent, METHODS, Merge, MethodOptions, SplatContext, SplatContextDesc, SplatOptions};
+use dof::methods::splat::{splat, splat_with_stages};
+use dof::stress::{noise_with_sky, test_lens};
+use dof_tests::vulkan;
+
+const SIZES: [(u32, u32); 3] = [(1280, 720), (1920, 1080), (3840, 2160)];
+const LAYERS: u32 = 4;
+/// What the multi-layer context may hold at 1920x1080 with 4 layers (the registry's options).
+const BOUND_1080P: u64 = 390_000_000;
+
+#[test]
+fn splat_memory_table_sums_to_device_bytes() {
+    let mut b = CpuBackend::new();
+    for merge in [Merge::None, Merge::X2, Merge::X4] {
+        for (w, h) in SIZES {
+            let before = b.counters().device_bytes;
+            let desc = SplatContextDesc::new(w, h, LAYERS, SplatOptions { merge, ..SplatOptions::default() });
+            let ctx = SplatContext::new(&mut b, &desc).unwrap_or_else(|e| panic!("{w}x{h} merge {}: {e}", merge.name()));
+            let held = b.counters().device_bytes - before;
+            let table = ctx.memory_table();
+            let sum: u64 = table.iter().map(|(_, bytes)| bytes).sum();
+            assert_eq!(sum, ctx.device_bytes(), "{w}x{h} merge {}: the table's rows", merge.name());
+            assert_eq!(held, ctx.device_bytes(), "{w}x{h} merge {}: what the backend holds", merge.name());
+            let (entries, _) = ctx.list_bounds();
+            eprintln!("splat context {w}x{h}x{LAYERS}, merge {}, list pool {entries} entries: {sum} bytes", merge.name());
+            for (label, bytes) in &table {
+                eprintln!("  {label:<48} {bytes:>12} ({:.1} MB)", *bytes as f64 / 1e6);
+            }
+            // The unsorted keys live in the last merging level's cells: no buffer of their own.
+            assert!(table.iter().all(|(l, _)| l != "splat/keys"), "{w}x{h} merge {}: keys have their own buffer", merge.name());
+            ctx.destroy(&mut b);
+        }
+    }
+    assert_eq!(b.counters().device_bytes, 0, "every context freed");
+}
+
+#[test]
+fn device_bytes_of_every_method() {
+    let mut b = CpuBackend::new();
+    for (w, h) in SIZES {
+        for m in METHODS {
+            let desc = ContextDesc::new(Extent::new(w, h, LAYERS), MethodOptions::default());
+            match (m.create)(&mut b, &desc) {
+                Ok(ctx) => {
+                    eprintln!("device bytes {w}x{h}x{LAYERS} {}: {}", m.name, ctx.device_bytes());
+                    if m.name == "multilayer" && (w, h) == (1920, 1080) {
+                        assert!(ctx.device_bytes() <= BOUND_1080P, "multilayer at 1080p holds {} bytes", ctx.device_bytes());
+                    }
+                    ctx.destroy(&mut b);
+                }
+                // A method may refuse a size beyond its limits; the multi-layer context never does here.
+                Err(e) => {
+                    assert_ne!(m.name, "multilayer", "{w}x{h}: {e}");
+                    eprintln!("device bytes {w}x{h}x{LAYERS} {}: refused: {e}", m.name);
+                }
+            }
+        }
+    }
+    assert_eq!(b.counters().device_bytes, 0, "every context freed");
+}
+
+/// The buffers shared between stages change nothing: a frame whose long lists take the sort's
+/// global path (whose key scratch then also holds the sorted keys) writes the same image, bit for
+/// bit, as with every stage's buffers kept apart, on the CPU backend and on Vulkan.
+#[test]
+fn shared_stage_buffers_leave_the_image_unchanged() {
+    let mut backends: Vec<Box<dyn Backend>> = vec![Box::new(CpuBackend::new())];
+    if let Some(vk) = vulkan() {
+        backends.push(Box::new(vk));
+    }
+    let img = noise_with_sky(64, 48, LAYERS);
+    for b in &mut backends {
+        for merge in [Merge::None, Merge::X4] {
+            let o = SplatOptions { merge, tile: 32, ..SplatOptions::default() };
+            let shared = splat(b.as_mut(), &img, &test_lens(0.2), &o).unwrap();
+            let apart = splat_with_stages(b.as_mut(), &img, &test_lens(0.2), &o).unwrap();
+            let what = format!("{} merge {}", b.kind(), merge.name());
+            assert!(shared.report.sort.global_lists > 0, "{what}: no list took the global path: {:?}", shared.report.sort);
+            assert_eq!(shared.report.overflow_tiles, 0, "{what}");
+            let bits = |o: &dof::methods::splat::SplatOutput| o.image.data.iter().flatten().map(|v| v.to_bits()).collect::<Vec<_>>();
+            assert!(bits(&shared) == bits(&apart), "{what}: the image differs with shared buffers");
+        }
+    }
+}

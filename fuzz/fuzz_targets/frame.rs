@@ -447,7 +447,14 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
             if !small && !must_refuse {
                 return None;
             }
-            let desc = GatherContextDesc { max_width: w, max_height: h, max_layers: layers, max_radius: *max_radius, image_io: c.image_io, frames_in_flight: 1 };
+            let desc = GatherContextDesc {
+                max_width: w,
+                max_height: h,
+                max_layers: layers,
+                max_radius: *max_radius,
+                image_io: c.image_io,
+                frames_in_flight: 1,
+            };
             GatherContext::new(b, &desc).map(|c| Box::new(c) as Box<dyn DofContext>)
         }
         Method::Bokeh { lum_threshold, coc_threshold, capacity, max_radius } => {
@@ -462,7 +469,8 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
                 max_radius: max_radius.get(256.0, 1.0),
                 aperture,
             };
-            let desc = BokehContextDesc { max_width: w, max_height: h, max_layers: layers, options, image_io: c.image_io, frames_in_flight: 1 };
+            let desc =
+                BokehContextDesc { max_width: w, max_height: h, max_layers: layers, options, image_io: c.image_io, frames_in_flight: 1 };
             BokehContext::new(b, &desc).map(|c| Box::new(c) as Box<dyn DofContext>)
         }
         Method::RingGather { rings, max_radius } => {
@@ -472,7 +480,14 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
             let options = RingGatherOptions { rings: *rings, max_radius: *max_radius };
             // Out-of-range options must be refused too.
             must_refuse |= !(1..=ring_gather::MAX_SAMPLE_RINGS).contains(rings) || !(1..=ring_gather::MAX_RADIUS).contains(max_radius);
-            let desc = RingGatherContextDesc { max_width: w, max_height: h, max_layers: layers, options, image_io: c.image_io, frames_in_flight: 1 };
+            let desc = RingGatherContextDesc {
+                max_width: w,
+                max_height: h,
+                max_layers: layers,
+                options,
+                image_io: c.image_io,
+                frames_in_flight: 1,
+            };
             RingGatherContext::new(b, &desc).map(|c| Box::new(c) as Box<dyn DofContext>)
         }
         Method::Registry(_) => {

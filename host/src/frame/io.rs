@@ -2,10 +2,11 @@
 //! image encodes depth, and the buffers that image inputs and outputs go through on the device.
 
 use super::context::Extent;
-use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, RunKernel, groups_for, push_words};
+use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::frame_io::{
-    DEPTH_F32, DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FROM_IMAGES, FRONT, FrameIoParams, TO_RGBA,
+    DEPTH_F32, DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FROM_IMAGES, FRONT, FrameIoParams, TO_RGBA, frame_from_images,
+    frame_front, frame_to_rgba,
 };
 use dof_shaders::lens::ThinLens;
 use dof_shaders::radiance::{COUNT_CLAMPED, ClampCountParams, radiance_count_clamped};
@@ -286,7 +287,7 @@ impl ImageIo {
 
 /// The parameters of the frame I/O kernels: `color` and `depth` are the images' formats, where
 /// the frame has them.
-fn io_params(f: &Frame, color: Option<ImageFormat>, depth: Option<ImageFormat>, layers: u32, encoding: DepthEncoding) -> Vec<u32> {
+fn io_params(f: &Frame, color: Option<ImageFormat>, depth: Option<ImageFormat>, layers: u32, encoding: DepthEncoding) -> FrameIoParams {
     let (depth_encoding, near, far) = match encoding {
         DepthEncoding::Linear => (DEPTH_LINEAR, 0.0, 0.0),
         DepthEncoding::Standard { near, far } => (DEPTH_STANDARD, near, far),
@@ -294,7 +295,7 @@ fn io_params(f: &Frame, color: Option<ImageFormat>, depth: Option<ImageFormat>, 
     };
     let color_words = color.map_or(0, |c| c.words_per_pixel() as u32);
     let depth_format = if depth.is_some_and(ImageFormat::is_unorm24) { DEPTH_UNORM24 } else { DEPTH_F32 };
-    push_words(&FrameIoParams { width: f.width, height: f.height, color_words, depth_encoding, near, far, layers, depth_format })
+    FrameIoParams { width: f.width, height: f.height, color_words, depth_encoding, near, far, layers, depth_format }
 }
 
 /// Records what brings the frame's input into slot buffers: nothing for buffers, the copies and
@@ -309,7 +310,8 @@ pub(crate) fn record_input(backend: &mut dyn Backend, f: &Frame, io: Option<&Ima
             backend.copy_image_to_buffer(depth.top_left(f.width, f.height), io.depth, 0, "frame/input-depth")?;
             let params = io_params(f, Some(color.format), Some(depth.format), 1, encoding);
             let groups = groups_for(&FROM_IMAGES, f.width as u64 * f.height as u64);
-            backend.dispatch(&FROM_IMAGES, groups, &[io.color, io.depth, io.fragments, io.counts], &params, "frame/input")?;
+            let convert = frame_from_images::Bindings { color: io.color, depth: io.depth, fragments: io.fragments, counts: io.counts };
+            backend.run(convert, groups, &params, "frame/input")?;
             Ok((io.fragments, io.counts))
         }
         (FrameInput::Images { .. }, None) => Err(Error::InvalidArgument("image inputs need a context created with `image_io`".into())),
@@ -327,7 +329,7 @@ pub(crate) fn record_front(
 ) -> Result<()> {
     let params = io_params(f, None, None, f.layer_count(), DepthEncoding::Linear);
     let groups = groups_for(&FRONT, f.width as u64 * f.height as u64);
-    backend.dispatch(&FRONT, groups, &[slots.0, slots.1, color, depth], &params, "frame/front")
+    backend.run(frame_front::Bindings { fragments: slots.0, counts: slots.1, color, depth }, groups, &params, "frame/front")
 }
 
 /// Records the count of input colours the numerical contract clamps (`dof_shaders::radiance`)
@@ -368,7 +370,7 @@ pub(crate) fn record_output(backend: &mut dyn Backend, f: &Frame, io: Option<&Im
     if let (FrameOutput::Image(image), Some(io)) = (f.output, io) {
         let params = io_params(f, Some(image.format), None, 1, DepthEncoding::Linear);
         let groups = groups_for(&TO_RGBA, f.width as u64 * f.height as u64);
-        backend.dispatch(&TO_RGBA, groups, &[io.fragments, io.color], &params, "frame/output")?;
+        backend.run(frame_to_rgba::Bindings { rgb: io.fragments, rgba: io.color }, groups, &params, "frame/output")?;
         backend.copy_buffer_to_image(io.color, 0, image.top_left(f.width, f.height), "frame/output")?;
     }
     Ok(())

@@ -10,11 +10,11 @@ use super::io::{
     Frame, ImageIo, Owned, check_frame, clamped_summary, context_pixels, output_buffer, ready, record_clamp_count, record_front,
     record_input, record_output,
 };
-use crate::backend::{Backend, BufferId, groups_for, push_words};
+use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::ring_gather::{
-    BRIGHT_TILE_WORDS, DILATED_WORDS, FIELD_WORDS, HALF_WORDS, RING_GATHER, RING_GATHER_COMPOSITE, RING_GATHER_DILATE,
-    RING_GATHER_DOWNSAMPLE, RingGatherParams,
+    BRIGHT_TILE_WORDS, DILATED_WORDS, FIELD_WORDS, HALF_WORDS, RING_GATHER_DILATE, RingGatherParams, ring_gather, ring_gather_composite,
+    ring_gather_dilate, ring_gather_downsample,
 };
 
 /// What engines ship by default: about five rings (Unreal Engine's Diaphragm DoF), 91 samples a
@@ -184,32 +184,16 @@ impl RingGatherContext {
         record_clamp_count(backend, f, slots, 1, self.clamped[self.in_flight.next()], 0)?;
         let p =
             RingGatherParams { width: f.width, height: f.height, rings: d.options.rings, max_radius: d.options.max_radius, lens: f.lens };
-        let params = push_words(&p);
         let tile_groups = [p.tiles_x(), p.tiles_y(), 1];
-        backend.dispatch(
-            &RING_GATHER_DOWNSAMPLE,
-            tile_groups,
-            &[b.color, b.depth, b.half, b.tiles, b.bright],
-            &params,
-            "ring-gather/downsample",
-        )?;
-        let tiles = p.tiles_x() as u64 * p.tiles_y() as u64;
-        backend.dispatch(
-            &RING_GATHER_DILATE,
-            groups_for(&RING_GATHER_DILATE, tiles),
-            &[b.tiles, b.bright, b.dilated],
-            &params,
-            "ring-gather/dilate",
-        )?;
-        backend.dispatch(&RING_GATHER, tile_groups, &[b.half, b.dilated, b.fields], &params, "ring-gather")?;
+        let (color, depth, half, tiles, bright, dilated, fields) = (b.color, b.depth, b.half, b.tiles, b.bright, b.dilated, b.fields);
+        backend.run(ring_gather_downsample::Bindings { color, depth, half, tiles, bright }, tile_groups, &p, "ring-gather/downsample")?;
+        let tile_count = p.tiles_x() as u64 * p.tiles_y() as u64;
+        let dilate = ring_gather_dilate::Bindings { tiles, bright, dilated };
+        backend.run(dilate, groups_for(&RING_GATHER_DILATE, tile_count), &p, "ring-gather/dilate")?;
+        backend.run(ring_gather::Bindings { half, dilated, fields }, tile_groups, &p, "ring-gather")?;
         let pixel_groups = [f.width.div_ceil(8), f.height.div_ceil(8), 1];
-        backend.dispatch(
-            &RING_GATHER_COMPOSITE,
-            pixel_groups,
-            &[b.color, b.depth, b.fields, b.bright, b.dilated, output],
-            &params,
-            "ring-gather/composite",
-        )?;
+        let composite = ring_gather_composite::Bindings { color, depth, fields, bright, dilated, out: output };
+        backend.run(composite, pixel_groups, &p, "ring-gather/composite")?;
         record_output(backend, f, self.io.as_ref())
     }
 }

@@ -19,7 +19,7 @@
 
 use super::mesh::{DeviceMesh, RasterScene};
 use super::view::View;
-use crate::backend::{Backend, BufferId, CommandTime, groups_for, push_words, with_buffers};
+use crate::backend::{Backend, BufferId, CommandTime, RunKernel, groups_for, push_words, with_buffers};
 use crate::error::{Error, Result};
 use crate::layers::{Fragment, LayeredImage};
 use crate::scene::guard_band::auto_margin_mesh;
@@ -28,7 +28,7 @@ use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{is_surface, slot_kept};
 use dof_shaders::raster::draw::{RASTER_DRAW, VIS_WORDS};
 use dof_shaders::raster::project::RasterParams;
-use dof_shaders::raster::shade::{LAYER, LAYER_WORDS, RASTER_SHADE, ShadeParams};
+use dof_shaders::raster::shade::{LAYER, LAYER_WORDS, RASTER_SHADE, ShadeParams, raster_shade};
 
 /// The peeled image and what it cost.
 pub struct Peeled {
@@ -150,15 +150,12 @@ impl Pass {
         indirect: Option<(BufferId, u64)>,
         label: &str,
     ) -> Result<()> {
-        let [v, t, m, tx, tl] = mesh.buffers;
-        let bound = [self.vis, v, t, m, tx, tl, out, self.reach];
+        let [vertices, triangles, materials, textures, texels] = mesh.buffers;
+        let bound = raster_shade::Bindings { vis: self.vis, vertices, triangles, materials, textures, texels, out, reach: self.reach };
+        let p: ShadeParams = dof_shaders::exec::params(params);
         match indirect {
-            Some((args, offset)) => backend.dispatch_indirect(&RASTER_SHADE, args, offset, &bound, params, label),
-            None => {
-                let p: ShadeParams = dof_shaders::exec::params(params);
-                let pixels = p.width as u64 * p.height as u64;
-                backend.dispatch(&RASTER_SHADE, groups_for(&RASTER_SHADE, pixels), &bound, params, label)
-            }
+            Some((args, offset)) => backend.run_indirect(bound, args, offset, &p, label),
+            None => backend.run(bound, groups_for(&RASTER_SHADE, p.width as u64 * p.height as u64), &p, label),
         }
     }
 }

@@ -5,7 +5,7 @@ use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent};
 use super::in_flight::{InFlight, per_frame};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_input, record_output};
-use crate::backend::{Backend, BufferId, groups_for, push_words};
+use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 mod options;
 mod report;
@@ -13,12 +13,12 @@ mod report;
 use crate::ops::scan::ScanScratch;
 use crate::ops::sort::SegmentedSort;
 use dof_shaders::KernelDesc;
-use dof_shaders::splat::accumulate::ACCUMULATE;
-use dof_shaders::splat::bin::{ALLOC, BIN, COMPACT, TILE_COUNT};
+use dof_shaders::splat::accumulate::splat_accumulate;
+use dof_shaders::splat::bin::{ALLOC, splat_alloc, splat_bin, splat_compact, splat_tile_count};
 use dof_shaders::splat::fragment::MAX_EDGE;
-use dof_shaders::splat::merge::MERGE;
-use dof_shaders::splat::pack::PACK;
-use dof_shaders::splat::plan::{PLAN_FINISH, PLAN_REDUCE};
+use dof_shaders::splat::merge::{MERGE, splat_merge};
+use dof_shaders::splat::pack::{PACK, splat_pack};
+use dof_shaders::splat::plan::{splat_plan_finish, splat_plan_reduce};
 use dof_shaders::splat::{FLAG_UMBRA_MERGE, MAX_RINGS, SplatParams, TILE_SIZES, block_for, stats};
 pub use options::{Merge, Plan, SplatOptions};
 pub use report::SplatReport;
@@ -400,38 +400,48 @@ impl SplatContext {
         let tiles_y = f.height.div_ceil(self.desc.options.tile);
         let tiles = tiles_x as u64 * tiles_y as u64;
         let last = self.merge_steps;
-        let fin = push_words(&self.params(f, last));
-        let first = push_words(&self.params(f, 0));
+        let (fin, first) = (self.params(f, last), self.params(f, 0));
         let tile_grid = [tiles_x, tiles_y, 1];
         let pixel_groups = groups_for(&PACK, pixels);
         let (fragments, counts) = record_input(backend, f, b.io.as_ref())?;
         let output = output_buffer(f, b.io.as_ref())?;
 
         backend.fill(b.stats, 0, stats::WORDS as u64, 0, "splat/clear")?;
-        backend.dispatch(&PLAN_REDUCE, pixel_groups, &[fragments, counts, b.stats], &first, "splat/plan")?;
-        backend.dispatch(&PLAN_FINISH, [1, 1, 1], &[b.stats], &fin, "splat/plan")?;
+        backend.run(splat_plan_reduce::Bindings { layers: fragments, counts, st: b.stats }, pixel_groups, &first, "splat/plan")?;
+        backend.run(splat_plan_finish::Bindings { st: b.stats }, [1, 1, 1], &fin, "splat/plan")?;
         let (cells0, counts0) = b.cells[0];
-        backend.dispatch(&PACK, pixel_groups, &[fragments, counts, cells0, counts0, b.sharp, b.stats], &first, "splat/pack")?;
+        let pack = splat_pack::Bindings { layers: fragments, counts, cells: cells0, cell_counts: counts0, sharp: b.sharp, st: b.stats };
+        backend.run(pack, pixel_groups, &first, "splat/pack")?;
         for step in 0..last {
             let (ci, ni) = b.cells[step as usize];
             let (co, no) = b.cells[step as usize + 1];
             let (_, _, ox, oy) = cells(f.width, f.height, f.layer_count(), step + 1);
             let label = if step == 0 { "splat/merge-2x2" } else { "splat/merge-4x4" };
             let groups = groups_for(&MERGE, ox as u64 * oy as u64);
-            backend.dispatch(&MERGE, groups, &[ci, ni, co, no, b.stats], &push_words(&self.params(f, step)), label)?;
+            let merge = splat_merge::Bindings { cells_in: ci, counts_in: ni, cells_out: co, counts_out: no, st: b.stats };
+            backend.run(merge, groups, &self.params(f, step), label)?;
         }
-        let (cells_f, counts_f) = b.cells[last as usize];
-        let count_bufs = [cells_f, counts_f, b.cell_offsets, b.tile_count, b.tile_base, b.tile_radius, b.stats];
-        backend.dispatch(&TILE_COUNT, tile_grid, &count_bufs, &fin, "splat/tile-count")?;
+        let (cells, cell_counts) = b.cells[last as usize];
+        let (cell_off, tile_count, tile_base, tile_radius, st) = (b.cell_offsets, b.tile_count, b.tile_base, b.tile_radius, b.stats);
+        let count = splat_tile_count::Bindings { cells, cell_counts, cell_off, tile_count, tile_base, tile_radius, st };
+        backend.run(count, tile_grid, &fin, "splat/tile-count")?;
         self.scan.record(backend, b.tile_base, 0, tiles)?;
-        backend.dispatch(&COMPACT, tile_grid, &[cells_f, counts_f, b.cell_offsets, b.tile_base, b.dense], &fin, "splat/compact")?;
-        backend.dispatch(&ALLOC, groups_for(&ALLOC, tiles), &[b.tile_count, b.tile_radius, b.copy, b.stats], &fin, "splat/alloc")?;
-        let bin_bufs = [b.dense, b.tile_count, b.tile_base, b.tile_radius, b.copy, b.keys, b.values, b.segments, b.stats];
-        backend.dispatch(&BIN, tile_grid, &bin_bufs, &fin, "splat/bin")?;
+        backend.run(
+            splat_compact::Bindings { cells, cell_counts, cell_off, tile_base, dense: b.dense },
+            tile_grid,
+            &fin,
+            "splat/compact",
+        )?;
+        let alloc = splat_alloc::Bindings { tile_count, tile_radius, copy: b.copy, st };
+        backend.run(alloc, groups_for(&ALLOC, tiles), &fin, "splat/alloc")?;
+        let (dense, copy, keys, values, segments) = (b.dense, b.copy, b.keys, b.values, b.segments);
+        let bin = splat_bin::Bindings { dense, tile_count, tile_base, tile_radius, copy, keys, values, segments, st };
+        backend.run(bin, tile_grid, &fin, "splat/bin")?;
         self.sort.record(backend, b.segments, tiles as u32, b.keys, b.values, b.keys_sorted, b.values_sorted)?;
-        let acc_bufs = [b.sharp, b.dense, b.values_sorted, b.segments, b.copy, output, b.stats, b.mask];
+        let acc =
+            splat_accumulate::Bindings { sharp: b.sharp, dense, values: b.values_sorted, segments, copy, out: output, st, mask: b.mask };
         let sub = self.desc.options.tile / block_for(self.desc.options.tile);
-        backend.dispatch(&ACCUMULATE, [tiles_x * sub, tiles_y * sub, 1], &acc_bufs, &fin, "splat/accumulate")?;
+        backend.run(acc, [tiles_x * sub, tiles_y * sub, 1], &fin, "splat/accumulate")?;
         record_output(backend, f, b.io.as_ref())
     }
 

@@ -102,9 +102,10 @@ fn ties_match_between_cpu_and_vulkan() {
 }
 
 /// Clamped colours are counted in the report and named in its summary (what `dof render` prints).
-#[test]
-fn clamps_are_counted_and_printed() {
-    let mut img = LayeredImage::new(24, 24, 1).unwrap();
+/// A 24x24 frame of 0.5 at 3 m whose front holds four colours the contract clamps (f32::MAX,
+/// 1e38, a negative and a subnormal channel), with `behind(x, y)` pushed behind a pixel's front.
+fn four_clamped_fronts(layers: u32, behind: impl Fn(u32, u32) -> Option<Fragment>) -> LayeredImage {
+    let mut img = LayeredImage::new(24, 24, layers).unwrap();
     for y in 0..24 {
         for x in 0..24 {
             let color = match (x, y) {
@@ -115,8 +116,17 @@ fn clamps_are_counted_and_printed() {
                 _ => [0.5; 3],
             };
             img.push(x, y, Fragment { color, alpha: 1.0, depth: 3.0 }).unwrap();
+            if let Some(f) = behind(x, y) {
+                img.push(x, y, f).unwrap();
+            }
         }
     }
+    img
+}
+
+#[test]
+fn clamps_are_counted_and_printed() {
+    let img = four_clamped_fronts(1, |_, _| None);
     let out = splat(&mut CpuBackend::new(), &img, &test_lens(0.02), &SplatOptions::default()).unwrap();
     assert_eq!(out.report.clamped, 4);
     assert!(out.report.summary().contains("4 clamped"), "{}", out.report.summary());
@@ -133,23 +143,9 @@ fn clamps_are_counted_and_printed() {
 fn every_method_reports_what_it_clamped() {
     use dof::frame::{METHODS, MethodOptions, Reads};
     use dof::methods::one_shot::one_shot;
-    let mut img = LayeredImage::new(24, 24, 2).unwrap();
-    for y in 0..24 {
-        for x in 0..24 {
-            let color = match (x, y) {
-                (8, 8) => [f32::MAX, 0.5, 0.5],
-                (14, 9) => [1e38, 1e38, 0.5],
-                (20, 20) => [-1.0, 0.5, 0.5],
-                (5, 17) => [0.5, 1e-40, 0.5],
-                _ => [0.5; 3],
-            };
-            img.push(x, y, Fragment { color, alpha: 1.0, depth: 3.0 }).unwrap();
-            if (x, y) == (3, 3) {
-                // Behind the front: read by the multi-layer methods only.
-                img.push(x, y, Fragment { color: [2e38, 0.5, 0.5], alpha: 1.0, depth: 6.0 }).unwrap();
-            }
-        }
-    }
+    // Behind one front, a fifth clamped colour: read by the multi-layer methods only.
+    let behind = |x, y| ((x, y) == (3, 3)).then_some(Fragment { color: [2e38, 0.5, 0.5], alpha: 1.0, depth: 6.0 });
+    let img = four_clamped_fronts(2, behind);
     let check = |b: &mut dyn Backend| {
         for method in METHODS {
             let out = one_shot(b, method, &MethodOptions::default(), &img, &test_lens(0.02)).unwrap();

@@ -47,12 +47,13 @@ fn messenger_info(log: &Log) -> vk::DebugUtilsMessengerCreateInfoEXT<'static> {
         .user_data(Arc::as_ptr(log) as *mut c_void)
 }
 
-/// A host-visible buffer of the renderer's, mapped.
+/// A buffer of the renderer's with its memory: device-local, or host-visible and mapped.
 #[derive(Clone, Copy)]
-pub struct HostBuffer {
+pub struct OwnBuffer {
     pub buffer: vk::Buffer,
     memory: vk::DeviceMemory,
     pub bytes: u64,
+    /// Null for a device-local buffer.
     mapped: *mut u8,
 }
 
@@ -69,7 +70,7 @@ pub struct Renderer {
     pool: vk::CommandPool,
     pub cb: vk::CommandBuffer,
     fence: vk::Fence,
-    buffers: Vec<HostBuffer>,
+    buffers: Vec<OwnBuffer>,
     images: Vec<(vk::Image, vk::DeviceMemory)>,
 }
 
@@ -84,6 +85,12 @@ impl Renderer {
         let log: Log = Arc::default();
         // SAFETY: loading the system's Vulkan loader.
         let entry = unsafe { ash::Entry::load() }.expect("Vulkan is required (set DOF_SKIP_VULKAN=1 to skip on purpose)");
+        // SAFETY: plain enumeration.
+        let layers = unsafe { entry.enumerate_instance_layer_properties() }.expect("vkEnumerateInstanceLayerProperties");
+        assert!(
+            layers.iter().any(|l| l.layer_name_as_c_str() == Ok(VALIDATION_LAYER)),
+            "the Khronos validation layer is required: apt-get install vulkan-validationlayers (or DOF_SKIP_VULKAN=1)"
+        );
         let app = vk::ApplicationInfo::default().application_name(c"renderer").api_version(VulkanBackend::REQUIRED_API_VERSION);
         let layer_names = [VALIDATION_LAYER.as_ptr()];
         let extensions = [vk::EXT_DEBUG_UTILS_NAME.as_ptr(), vk::EXT_VALIDATION_FEATURES_NAME.as_ptr()];
@@ -186,31 +193,52 @@ impl Renderer {
     }
 
     /// A host-visible, mapped buffer for transfers.
-    pub fn host_buffer(&mut self, bytes: u64) -> HostBuffer {
+    pub fn host_buffer(&mut self, bytes: u64) -> OwnBuffer {
+        self.buffer(bytes, vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST, true)
+    }
+
+    /// A buffer with plain vkAllocateMemory: device-local, or host-visible and mapped.
+    pub fn buffer(&mut self, bytes: u64, usage: vk::BufferUsageFlags, host: bool) -> OwnBuffer {
         let d = &self.device;
-        let usage = vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
         // SAFETY: creation calls on the live device; destroyed in `finish`.
         unsafe {
             let buffer = d.create_buffer(&vk::BufferCreateInfo::default().size(bytes).usage(usage), None).expect("vkCreateBuffer");
             let req = d.get_buffer_memory_requirements(buffer);
-            let flags = vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT;
+            let flags = if host {
+                vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT
+            } else {
+                vk::MemoryPropertyFlags::DEVICE_LOCAL
+            };
             let info = vk::MemoryAllocateInfo::default()
                 .allocation_size(req.size)
                 .memory_type_index(self.memory_type(req.memory_type_bits, flags));
             let memory = d.allocate_memory(&info, None).expect("vkAllocateMemory");
             d.bind_buffer_memory(buffer, memory, 0).expect("vkBindBufferMemory");
-            let mapped = d.map_memory(memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty()).expect("vkMapMemory") as *mut u8;
-            let b = HostBuffer { buffer, memory, bytes, mapped };
+            let mapped = if host {
+                d.map_memory(memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty()).expect("vkMapMemory") as *mut u8
+            } else {
+                std::ptr::null_mut()
+            };
+            let b = OwnBuffer { buffer, memory, bytes, mapped };
             self.buffers.push(b);
             b
         }
     }
 
     /// Writes words into a host buffer (no submission of the renderer's may be running on it).
-    pub fn write(b: &HostBuffer, words: &[u32]) {
-        assert!(words.len() as u64 * 4 <= b.bytes);
+    pub fn write(b: &OwnBuffer, words: &[u32]) {
+        assert!(words.len() as u64 * 4 <= b.bytes && !b.mapped.is_null());
         // SAFETY: the mapping covers the buffer; the GPU is not using it (every submission is waited for).
         unsafe { std::ptr::copy_nonoverlapping(words.as_ptr() as *const u8, b.mapped, words.len() * 4) };
+    }
+
+    /// Reads words from a host buffer (after the submission that wrote it was waited for).
+    pub fn read(b: &OwnBuffer, offset_words: usize, words: usize) -> Vec<u32> {
+        assert!(((offset_words + words) * 4) as u64 <= b.bytes && !b.mapped.is_null());
+        let mut out = vec![0u32; words];
+        // SAFETY: as in `write`; the copy's writes were made available to the host and the fence waited.
+        unsafe { std::ptr::copy_nonoverlapping(b.mapped.add(offset_words * 4), out.as_mut_ptr() as *mut u8, words * 4) };
+        out
     }
 
     /// An optimally tiled 2D image of `format` with transfer and sampled usage (an attachment's
@@ -225,15 +253,21 @@ impl Renderer {
         } else {
             vk::ImageUsageFlags::empty()
         };
+        let usage = vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST | vk::ImageUsageFlags::SAMPLED | attachment;
+        self.raw_image(format.vk_format(), extent, usage)
+    }
+
+    /// An optimally tiled, device-local 2D image of any Vulkan format and usage.
+    pub fn raw_image(&mut self, format: vk::Format, extent: [u32; 2], usage: vk::ImageUsageFlags) -> vk::Image {
         let info = vk::ImageCreateInfo::default()
             .image_type(vk::ImageType::TYPE_2D)
-            .format(format.vk_format())
+            .format(format)
             .extent(vk::Extent3D { width: extent[0], height: extent[1], depth: 1 })
             .mip_levels(1)
             .array_layers(1)
             .samples(vk::SampleCountFlags::TYPE_1)
             .tiling(vk::ImageTiling::OPTIMAL)
-            .usage(vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST | vk::ImageUsageFlags::SAMPLED | attachment)
+            .usage(usage)
             .initial_layout(vk::ImageLayout::UNDEFINED);
         let d = &self.device;
         // SAFETY: creation calls on the live device; destroyed in `finish`.
@@ -256,7 +290,7 @@ impl Renderer {
     #[allow(clippy::too_many_arguments)]
     pub fn upload_image(
         &self,
-        staging: &HostBuffer,
+        staging: &OwnBuffer,
         image: vk::Image,
         format: ImageFormat,
         extent: [u32; 2],
@@ -294,6 +328,52 @@ impl Renderer {
             d.cmd_copy_buffer_to_image(self.cb, staging.buffer, image, vk::ImageLayout::TRANSFER_DST_OPTIMAL, &region);
             d.cmd_pipeline_barrier(self.cb, vk::PipelineStageFlags::TRANSFER, stage, none, &[], &[], &to_final);
         }
+    }
+
+    /// A global memory barrier in the renderer's command buffer.
+    pub fn barrier(
+        &self,
+        src: vk::PipelineStageFlags,
+        src_access: vk::AccessFlags,
+        dst: vk::PipelineStageFlags,
+        dst_access: vk::AccessFlags,
+    ) {
+        let memory = [vk::MemoryBarrier::default().src_access_mask(src_access).dst_access_mask(dst_access)];
+        // SAFETY: the command buffer is recording.
+        unsafe { self.device.cmd_pipeline_barrier(self.cb, src, dst, vk::DependencyFlags::empty(), &memory, &[], &[]) };
+    }
+
+    /// A layout transition of a colour image's whole subresource, with its memory dependency.
+    #[allow(clippy::too_many_arguments)]
+    pub fn image_barrier(
+        &self,
+        image: vk::Image,
+        old: vk::ImageLayout,
+        new: vk::ImageLayout,
+        src: vk::PipelineStageFlags,
+        src_access: vk::AccessFlags,
+        dst: vk::PipelineStageFlags,
+        dst_access: vk::AccessFlags,
+    ) {
+        let b = [vk::ImageMemoryBarrier::default()
+            .image(image)
+            .old_layout(old)
+            .new_layout(new)
+            .src_access_mask(src_access)
+            .dst_access_mask(dst_access)
+            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .subresource_range(
+                vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1),
+            )];
+        // SAFETY: the command buffer is recording; the image is live.
+        unsafe { self.device.cmd_pipeline_barrier(self.cb, src, dst, vk::DependencyFlags::empty(), &[], &[], &b) };
+    }
+
+    /// Copies the first `bytes` of `src` into `dst` in the renderer's command buffer.
+    pub fn copy(&self, src: &OwnBuffer, dst: &OwnBuffer, bytes: u64) {
+        // SAFETY: the command buffer is recording; both buffers hold `bytes`.
+        unsafe { self.device.cmd_copy_buffer(self.cb, src.buffer, dst.buffer, &[vk::BufferCopy::default().size(bytes)]) };
     }
 
     /// Begins the renderer's command buffer (after its last submission completed).

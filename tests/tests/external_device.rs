@@ -10,369 +10,27 @@
 //! Like every Vulkan suite it fails where Vulkan or the layer is missing, unless `DOF_SKIP_VULKAN=1`
 //! asks to skip it.
 
-use dof::backend::vulkan::ash::{self, vk};
+use dof::backend::vulkan::ash::vk;
 use dof::backend::vulkan::gpu_allocator;
-use dof::backend::{Backend, BackendCounters, BufferId, CpuBackend, ImageFormat, ImageRef, RawDevice, RawOptions, VulkanBackend};
+use dof::backend::{Backend, BackendCounters, BufferId, CpuBackend, ImageFormat, ImageRef, RawOptions, VulkanBackend};
 use dof::frame::{Frame, GatherContext, GatherContextDesc};
 use dof::ops::scan::{ScanScratch, exclusive_scan};
 use dof::ops::sort::{SegmentedSort, SortInput, sort_on};
 use dof::workload::{lists_with, random_key};
+use dof_tests::renderer::{OwnBuffer, Renderer, assert_no_messages};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
-use std::ffi::{CStr, c_char, c_void};
 use std::sync::{Arc, Mutex};
 
-const VALIDATION_LAYER: &CStr = c"VK_LAYER_KHRONOS_validation";
 /// The image: odd sizes, 4 words a pixel, 9 scan blocks (two scan levels).
 const WIDTH: u32 = 61;
 const HEIGHT: u32 = 37;
 
-fn skip_requested() -> bool {
-    if std::env::var_os("DOF_SKIP_VULKAN").is_some_and(|v| v == "1") {
-        eprintln!("DOF_SKIP_VULKAN=1: skipping a Vulkan test on purpose");
-        return true;
-    }
-    false
-}
-
-type Log = Arc<Mutex<Vec<String>>>;
-
-unsafe extern "system" fn collect(
-    severity: vk::DebugUtilsMessageSeverityFlagsEXT,
-    _types: vk::DebugUtilsMessageTypeFlagsEXT,
-    data: *const vk::DebugUtilsMessengerCallbackDataEXT<'_>,
-    user: *mut c_void,
-) -> vk::Bool32 {
-    use vk::DebugUtilsMessageSeverityFlagsEXT as S;
-    if data.is_null() || user.is_null() || !severity.intersects(S::WARNING | S::ERROR) {
-        return vk::FALSE;
-    }
-    // SAFETY: the layer passes valid data for the call; `user` is the test's log, which outlives the
-    // instance.
-    let (data, log) = unsafe { (&*data, &*(user as *const Mutex<Vec<String>>)) };
-    let text = |p: *const c_char| if p.is_null() { String::new() } else { unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned() };
-    let line = format!("[{severity:?}] {}: {}", text(data.p_message_id_name), text(data.p_message));
-    log.lock().unwrap_or_else(|e| e.into_inner()).push(line);
-    vk::FALSE
-}
-
-fn messenger_info(log: &Log) -> vk::DebugUtilsMessengerCreateInfoEXT<'static> {
-    vk::DebugUtilsMessengerCreateInfoEXT::default()
-        .message_severity(vk::DebugUtilsMessageSeverityFlagsEXT::WARNING | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR)
-        .message_type(
-            vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
-                | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
-                | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE,
-        )
-        .pfn_user_callback(Some(collect))
-        .user_data(Arc::as_ptr(log) as *mut c_void)
-}
-
-/// A buffer of the renderer's with its memory, mapped when host-visible.
-#[derive(Clone, Copy)]
-struct OwnBuffer {
-    buffer: vk::Buffer,
-    memory: vk::DeviceMemory,
-    bytes: u64,
-    mapped: *mut u8,
-}
-
-/// The renderer: everything here is made and destroyed by the test, never by the backend.
-struct Renderer {
-    log: Log,
-    entry: ash::Entry,
-    instance: ash::Instance,
-    debug: ash::ext::debug_utils::Instance,
-    messenger: vk::DebugUtilsMessengerEXT,
-    physical: vk::PhysicalDevice,
-    device: ash::Device,
-    queue_family: u32,
-    queue: vk::Queue,
-    pool: vk::CommandPool,
-    cb: vk::CommandBuffer,
-    fence: vk::Fence,
-    buffers: Vec<OwnBuffer>,
-    images: Vec<(vk::Image, vk::DeviceMemory)>,
-}
-
-impl Renderer {
-    fn new() -> Renderer {
-        let log: Log = Arc::default();
-        // SAFETY: loading the system's Vulkan loader.
-        let entry = unsafe { ash::Entry::load() }.expect("Vulkan is required (set DOF_SKIP_VULKAN=1 to skip on purpose)");
-        // SAFETY: plain enumeration.
-        let layers = unsafe { entry.enumerate_instance_layer_properties() }.expect("vkEnumerateInstanceLayerProperties");
-        assert!(
-            layers.iter().any(|l| l.layer_name_as_c_str() == Ok(VALIDATION_LAYER)),
-            "the Khronos validation layer is required: apt-get install vulkan-validationlayers (or DOF_SKIP_VULKAN=1)"
-        );
-        let app = vk::ApplicationInfo::default().application_name(c"renderer").api_version(VulkanBackend::REQUIRED_API_VERSION);
-        let layer_names = [VALIDATION_LAYER.as_ptr()];
-        let extensions = [vk::EXT_DEBUG_UTILS_NAME.as_ptr(), vk::EXT_VALIDATION_FEATURES_NAME.as_ptr()];
-        let sync = [vk::ValidationFeatureEnableEXT::SYNCHRONIZATION_VALIDATION];
-        let mut features = vk::ValidationFeaturesEXT::default().enabled_validation_features(&sync);
-        let mut chained = messenger_info(&log);
-        let info = vk::InstanceCreateInfo::default()
-            .application_info(&app)
-            .enabled_layer_names(&layer_names)
-            .enabled_extension_names(&extensions)
-            .push_next(&mut features)
-            .push_next(&mut chained);
-        // SAFETY: the create info points at live locals.
-        let instance = unsafe { entry.create_instance(&info, None) }.expect("vkCreateInstance");
-        let debug = ash::ext::debug_utils::Instance::new(&entry, &instance);
-        // SAFETY: the log outlives the messenger (the renderer holds it).
-        let messenger = unsafe { debug.create_debug_utils_messenger(&messenger_info(&log), None) }.expect("messenger");
-
-        // lavapipe where there is one (the CI device), else the first device.
-        // SAFETY: queries on the live instance.
-        let physical = unsafe {
-            let all = instance.enumerate_physical_devices().expect("vkEnumeratePhysicalDevices");
-            let name = |&pd: &vk::PhysicalDevice| {
-                instance
-                    .get_physical_device_properties(pd)
-                    .device_name_as_c_str()
-                    .map(|s| s.to_string_lossy().into_owned())
-                    .unwrap_or_default()
-            };
-            all.iter().copied().find(|pd| name(pd).contains("llvmpipe")).or(all.first().copied()).expect("a Vulkan device")
-        };
-        // SAFETY: as above.
-        let families = unsafe { instance.get_physical_device_queue_family_properties(physical) };
-        let wanted = vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE;
-        let queue_family = families
-            .iter()
-            .position(|f| f.queue_flags.contains(wanted) && f.timestamp_valid_bits > 0)
-            .expect("a graphics and compute queue with timestamps") as u32;
-
-        // The device the backend needs, made by the renderer.
-        let priorities = [1.0];
-        let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(queue_family).queue_priorities(&priorities)];
-        let extensions: Vec<*const c_char> = VulkanBackend::required_device_extensions().iter().map(|e| e.as_ptr()).collect();
-        let mut required = VulkanBackend::required_features();
-        let info = vk::DeviceCreateInfo::default()
-            .queue_create_infos(&queues)
-            .enabled_extension_names(&extensions)
-            .enabled_features(&required.core)
-            .push_next(&mut required.vulkan12);
-        // SAFETY: the physical device is the instance's; the info points at live locals.
-        let device = unsafe { instance.create_device(physical, &info, None) }.expect("vkCreateDevice");
-        // SAFETY: the family was created with one queue; plain creation calls on the live device.
-        let (queue, pool, cb, fence) = unsafe {
-            let queue = device.get_device_queue(queue_family, 0);
-            let pool_info = vk::CommandPoolCreateInfo::default()
-                .queue_family_index(queue_family)
-                .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
-            let pool = device.create_command_pool(&pool_info, None).expect("vkCreateCommandPool");
-            let alloc =
-                vk::CommandBufferAllocateInfo::default().command_pool(pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
-            let cb = device.allocate_command_buffers(&alloc).expect("vkAllocateCommandBuffers")[0];
-            let fence = device.create_fence(&vk::FenceCreateInfo::default(), None).expect("vkCreateFence");
-            (queue, pool, cb, fence)
-        };
-        Renderer {
-            log,
-            entry,
-            instance,
-            debug,
-            messenger,
-            physical,
-            device,
-            queue_family,
-            queue,
-            pool,
-            cb,
-            fence,
-            buffers: Vec::new(),
-            images: Vec::new(),
-        }
-    }
-
-    fn raw(&self) -> RawDevice {
-        RawDevice {
-            entry: self.entry.clone(),
-            instance: self.instance.clone(),
-            physical_device: self.physical,
-            device: self.device.clone(),
-            queue_family: self.queue_family,
-            queue: self.queue,
-        }
-    }
-
-    fn memory_type(&self, bits: u32, flags: vk::MemoryPropertyFlags) -> u32 {
-        // SAFETY: a query on the live instance.
-        let props = unsafe { self.instance.get_physical_device_memory_properties(self.physical) };
-        (0..props.memory_type_count)
-            .find(|&i| bits & (1 << i) != 0 && props.memory_types[i as usize].property_flags.contains(flags))
-            .expect("a memory type")
-    }
-
-    /// A buffer with plain vkAllocateMemory: device-local, or host-visible and mapped.
-    fn buffer(&mut self, bytes: u64, usage: vk::BufferUsageFlags, host: bool) -> OwnBuffer {
-        let d = &self.device;
-        // SAFETY: creation calls on the live device; everything is destroyed in `finish`.
-        unsafe {
-            let buffer = d.create_buffer(&vk::BufferCreateInfo::default().size(bytes).usage(usage), None).expect("vkCreateBuffer");
-            let req = d.get_buffer_memory_requirements(buffer);
-            let flags = if host {
-                vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT
-            } else {
-                vk::MemoryPropertyFlags::DEVICE_LOCAL
-            };
-            let info = vk::MemoryAllocateInfo::default()
-                .allocation_size(req.size)
-                .memory_type_index(self.memory_type(req.memory_type_bits, flags));
-            let memory = d.allocate_memory(&info, None).expect("vkAllocateMemory");
-            d.bind_buffer_memory(buffer, memory, 0).expect("vkBindBufferMemory");
-            let mapped = if host {
-                d.map_memory(memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty()).expect("vkMapMemory") as *mut u8
-            } else {
-                std::ptr::null_mut()
-            };
-            let b = OwnBuffer { buffer, memory, bytes, mapped };
-            self.buffers.push(b);
-            b
-        }
-    }
-
-    fn image(&mut self, format: vk::Format, usage: vk::ImageUsageFlags) -> vk::Image {
-        let d = &self.device;
-        let info = vk::ImageCreateInfo::default()
-            .image_type(vk::ImageType::TYPE_2D)
-            .format(format)
-            .extent(vk::Extent3D { width: WIDTH, height: HEIGHT, depth: 1 })
-            .mip_levels(1)
-            .array_layers(1)
-            .samples(vk::SampleCountFlags::TYPE_1)
-            .tiling(vk::ImageTiling::OPTIMAL)
-            .usage(usage)
-            .initial_layout(vk::ImageLayout::UNDEFINED);
-        // SAFETY: creation calls on the live device; destroyed in `finish`.
-        unsafe {
-            let image = d.create_image(&info, None).expect("vkCreateImage");
-            let req = d.get_image_memory_requirements(image);
-            let alloc = vk::MemoryAllocateInfo::default()
-                .allocation_size(req.size)
-                .memory_type_index(self.memory_type(req.memory_type_bits, vk::MemoryPropertyFlags::DEVICE_LOCAL));
-            let memory = d.allocate_memory(&alloc, None).expect("vkAllocateMemory");
-            d.bind_image_memory(image, memory, 0).expect("vkBindImageMemory");
-            self.images.push((image, memory));
-            image
-        }
-    }
-
-    fn write(b: &OwnBuffer, words: &[u32]) {
-        assert!(words.len() as u64 * 4 <= b.bytes && !b.mapped.is_null());
-        // SAFETY: the mapping covers the buffer; the GPU is not using it (every submission is waited for).
-        unsafe { std::ptr::copy_nonoverlapping(words.as_ptr() as *const u8, b.mapped, words.len() * 4) };
-    }
-
-    fn read(b: &OwnBuffer, offset_words: usize, words: usize) -> Vec<u32> {
-        assert!(((offset_words + words) * 4) as u64 <= b.bytes && !b.mapped.is_null());
-        let mut out = vec![0u32; words];
-        // SAFETY: as in `write`; the copy's writes were made available to the host and the fence waited.
-        unsafe { std::ptr::copy_nonoverlapping(b.mapped.add(offset_words * 4), out.as_mut_ptr() as *mut u8, words * 4) };
-        out
-    }
-
-    /// Begins the renderer's command buffer (after its last submission completed).
-    fn begin(&self) {
-        // SAFETY: the command buffer is not pending (every submission is waited for).
-        unsafe {
-            self.device.reset_command_buffer(self.cb, vk::CommandBufferResetFlags::empty()).expect("reset");
-            let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
-            self.device.begin_command_buffer(self.cb, &begin).expect("vkBeginCommandBuffer");
-        }
-    }
-
-    /// Ends, submits with the renderer's own fence, and waits.
-    fn submit_and_wait(&self) {
-        let cbs = [self.cb];
-        let submit = [vk::SubmitInfo::default().command_buffers(&cbs)];
-        // SAFETY: the command buffer is recorded; the fence is unsignalled.
-        unsafe {
-            self.device.end_command_buffer(self.cb).expect("vkEndCommandBuffer");
-            self.device.queue_submit(self.queue, &submit, self.fence).expect("vkQueueSubmit");
-            self.device.wait_for_fences(&[self.fence], true, u64::MAX).expect("vkWaitForFences");
-            self.device.reset_fences(&[self.fence]).expect("vkResetFences");
-        }
-    }
-
-    fn barrier(&self, src: vk::PipelineStageFlags, src_access: vk::AccessFlags, dst: vk::PipelineStageFlags, dst_access: vk::AccessFlags) {
-        let memory = [vk::MemoryBarrier::default().src_access_mask(src_access).dst_access_mask(dst_access)];
-        // SAFETY: the command buffer is recording.
-        unsafe { self.device.cmd_pipeline_barrier(self.cb, src, dst, vk::DependencyFlags::empty(), &memory, &[], &[]) };
-    }
-
-    #[allow(clippy::too_many_arguments)]
-    fn image_barrier(
-        &self,
-        image: vk::Image,
-        old: vk::ImageLayout,
-        new: vk::ImageLayout,
-        src: vk::PipelineStageFlags,
-        src_access: vk::AccessFlags,
-        dst: vk::PipelineStageFlags,
-        dst_access: vk::AccessFlags,
-    ) {
-        let b = [vk::ImageMemoryBarrier::default()
-            .image(image)
-            .old_layout(old)
-            .new_layout(new)
-            .src_access_mask(src_access)
-            .dst_access_mask(dst_access)
-            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-            .subresource_range(
-                vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1),
-            )];
-        // SAFETY: the command buffer is recording; the image is live.
-        unsafe { self.device.cmd_pipeline_barrier(self.cb, src, dst, vk::DependencyFlags::empty(), &[], &[], &b) };
-    }
-
-    fn copy(&self, src: &OwnBuffer, dst: &OwnBuffer, bytes: u64) {
-        // SAFETY: the command buffer is recording; both buffers hold `bytes`.
-        unsafe { self.device.cmd_copy_buffer(self.cb, src.buffer, dst.buffer, &[vk::BufferCopy::default().size(bytes)]) };
-    }
-
-    fn image_region() -> [vk::BufferImageCopy; 1] {
-        [vk::BufferImageCopy::default()
-            .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
-            .image_extent(vk::Extent3D { width: WIDTH, height: HEIGHT, depth: 1 })]
-    }
-
-    fn messages(&self) -> Vec<String> {
-        std::mem::take(&mut *self.log.lock().unwrap_or_else(|e| e.into_inner()))
-    }
-
-    /// Destroys everything the renderer made (the backend must be gone already) and returns the
-    /// messages the layer reported meanwhile: objects of the device never destroyed are reported at
-    /// vkDestroyDevice.
-    fn finish(self) -> Vec<String> {
-        // SAFETY: the device is idle (every submission was waited for) and nothing is used any more.
-        unsafe {
-            let d = &self.device;
-            d.device_wait_idle().expect("vkDeviceWaitIdle");
-            for b in &self.buffers {
-                d.destroy_buffer(b.buffer, None);
-                d.free_memory(b.memory, None);
-            }
-            for &(image, memory) in &self.images {
-                d.destroy_image(image, None);
-                d.free_memory(memory, None);
-            }
-            d.destroy_fence(self.fence, None);
-            d.destroy_command_pool(self.pool, None);
-            d.destroy_device(None);
-            self.debug.destroy_debug_utils_messenger(self.messenger, None);
-            self.instance.destroy_instance(None);
-        }
-        std::mem::take(&mut *self.log.lock().unwrap_or_else(|e| e.into_inner()))
-    }
-}
-
-fn assert_no_messages(messages: Vec<String>, when: &str) {
-    assert!(messages.is_empty(), "validation layer reported {} message(s) {when}:\n{}", messages.len(), messages.join("\n"));
+/// The whole of the test's image, as one copy region.
+fn image_region() -> [vk::BufferImageCopy; 1] {
+    [vk::BufferImageCopy::default()
+        .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
+        .image_extent(vk::Extent3D { width: WIDTH, height: HEIGHT, depth: 1 })]
 }
 
 /// A sort input with lists of every class and one long enough for the global path.
@@ -383,10 +41,7 @@ fn sort_input() -> SortInput {
 
 #[test]
 fn records_into_the_callers_command_buffer_on_the_callers_device() {
-    if skip_requested() {
-        return;
-    }
-    let mut r = Renderer::new();
+    let Some(mut r) = Renderer::new() else { return };
     let storage = vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
 
     // The renderer's data: an RGBA32F image's pixels and a sort problem, in its own buffers.
@@ -408,8 +63,9 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
     let values_in = r.buffer(bytes(n), storage, false);
     let keys_out = r.buffer(bytes(n), storage, false);
     let values_out = r.buffer(bytes(n), storage, false);
-    let image = r.image(
+    let image = r.raw_image(
         vk::Format::R32G32B32A32_SFLOAT,
+        [WIDTH, HEIGHT],
         vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST | vk::ImageUsageFlags::SAMPLED,
     );
 
@@ -481,13 +137,7 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
         );
         // SAFETY: the command buffer is recording; the image is in TRANSFER_DST_OPTIMAL.
         unsafe {
-            r.device.cmd_copy_buffer_to_image(
-                r.cb,
-                pixels_staging.buffer,
-                image,
-                vk::ImageLayout::TRANSFER_DST_OPTIMAL,
-                &Renderer::image_region(),
-            )
+            r.device.cmd_copy_buffer_to_image(r.cb, pixels_staging.buffer, image, vk::ImageLayout::TRANSFER_DST_OPTIMAL, &image_region())
         };
         r.copy(&keys_in, &keys_out, bytes(n));
         r.copy(&values_in, &values_out, bytes(n));
@@ -547,7 +197,7 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
         // backend's closing barrier made its writes visible to transfers.
         unsafe {
             let d = &r.device;
-            d.cmd_copy_image_to_buffer(r.cb, image, vk::ImageLayout::TRANSFER_SRC_OPTIMAL, readback.buffer, &Renderer::image_region());
+            d.cmd_copy_image_to_buffer(r.cb, image, vk::ImageLayout::TRANSFER_SRC_OPTIMAL, readback.buffer, &image_region());
             let at = bytes(pixel_words.len());
             d.cmd_copy_buffer(r.cb, keys_out.buffer, readback.buffer, &[vk::BufferCopy::default().dst_offset(at).size(bytes(n))]);
             d.cmd_copy_buffer(
@@ -603,13 +253,10 @@ fn records_into_the_callers_command_buffer_on_the_callers_device() {
 
 #[test]
 fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
-    if skip_requested() {
-        return;
-    }
-    let mut r = Renderer::new();
+    let Some(mut r) = Renderer::new() else { return };
     let storage = vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
     let own = r.buffer(64, storage, false);
-    let image = r.image(vk::Format::R32_SFLOAT, vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST);
+    let image = r.raw_image(vk::Format::R32_SFLOAT, [WIDTH, HEIGHT], vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST);
 
     // The renderer's own gpu-allocator serves the backend too.
     let allocator = gpu_allocator::vulkan::Allocator::new(&gpu_allocator::vulkan::AllocatorCreateDesc {
@@ -739,10 +386,7 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
 /// buffer with no barrier between them are reported (so the empty logs above mean something).
 #[test]
 fn the_renderers_messenger_reports_hazards() {
-    if skip_requested() {
-        return;
-    }
-    let mut r = Renderer::new();
+    let Some(mut r) = Renderer::new() else { return };
     let b = r.buffer(64, vk::BufferUsageFlags::TRANSFER_DST, false);
     r.begin();
     // SAFETY: the command buffer is recording; the missing barrier is the point.

@@ -194,7 +194,7 @@ struct VulkanAttachments {
     /// Colour (RGBA16F), D32 and D24 depth.
     images: [vk::Image; 3],
     extent: [u32; 2],
-    staging: [dof_tests::renderer::HostBuffer; 2],
+    staging: [dof_tests::renderer::OwnBuffer; 2],
 }
 
 impl Attachments for VulkanAttachments {

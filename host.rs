@@ -1,0 +1,255 @@
+//! The engine-grade gather (kernels and their rules in `dof_shaders::ring_gather`) as a frame
+//! context: half-resolution fields over a fixed budget of sample rings, every buffer bound at
+//! creation and nothing planned on the host, so its cost is fixed by the frame's size and the ring
+//! count, not by the blur.
+
+use super::checked::record_checked;
+use super::context::{ContextReport, Described, DofContext, Extent, remake};
+use super::in_flight::{InFlight, per_frame};
+use super::io::{
+    Frame, ImageIo, Owned, check_frame, clamped_summary, context_pixels, output_buffer, ready, record_clamp_count, record_front,
+    record_input, record_output,
+};
+use crate::backend::{Backend, BufferId, RunKernel, groups_for};
+use crate::error::{Error, Result};
+use dof_shaders::ring_gather::{
+    BRIGHT_TILE_WORDS, DILATED_WORDS, FIELD_WORDS, HALF_WORDS, RING_GATHER_DILATE, RingGatherParams, ring_gather, ring_gather_composite,
+    ring_gather_dilate, ring_gather_downsample,
+};
+
+/// What engines ship by default: about five rings (Unreal Engine's Diaphragm DoF), 91 samples a
+/// half-resolution pixel. Fixed before anything was compared with it.
+pub const DEFAULT_RINGS: u32 = 5;
+/// The quality knob's range: 1 ring (7 samples) to 8 rings (217 samples).
+pub const MAX_SAMPLE_RINGS: u32 = 8;
+/// Default cap on the CoC radius, pixels of the frame (32 half-resolution pixels).
+pub const DEFAULT_MAX_RADIUS: u32 = 64;
+/// Largest cap accepted: the tile dilation's neighbourhood grows with it (17x17 tiles at 128 px).
+pub const MAX_RADIUS: u32 = 128;
+
+/// The engine-grade gather's settings.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RingGatherOptions {
+    /// Sample rings at half resolution, 1 to [`MAX_SAMPLE_RINGS`].
+    pub rings: u32,
+    /// Cap on the CoC radius, pixels, 1 to [`MAX_RADIUS`].
+    pub max_radius: u32,
+}
+
+impl Default for RingGatherOptions {
+    fn default() -> Self {
+        RingGatherOptions { rings: DEFAULT_RINGS, max_radius: DEFAULT_MAX_RADIUS }
+    }
+}
+
+impl RingGatherOptions {
+    /// Refuses a ring count or radius cap out of range.
+    pub fn check(&self) -> Result<()> {
+        if !(1..=MAX_SAMPLE_RINGS).contains(&self.rings) {
+            return Err(Error::InvalidArgument(format!("the ring gather takes 1 to {MAX_SAMPLE_RINGS} rings, got {}", self.rings)));
+        }
+        if !(1..=MAX_RADIUS).contains(&self.max_radius) {
+            return Err(Error::InvalidArgument(format!(
+                "the ring gather's CoC radius cap is 1 to {MAX_RADIUS} px, got {}",
+                self.max_radius
+            )));
+        }
+        Ok(())
+    }
+}
+
+/// What a ring-gather context is created for.
+#[derive(Clone, Debug)]
+pub struct RingGatherContextDesc {
+    pub max_width: u32,
+    pub max_height: u32,
+    /// Most slots per pixel of a multi-layer input (the gather reads the front one).
+    pub max_layers: u32,
+    pub options: RingGatherOptions,
+    /// Hold the buffers that image inputs and outputs go through.
+    pub image_io: bool,
+    /// Frames in flight (default 1): copies kept of what the report reads.
+    pub frames_in_flight: u32,
+}
+
+impl RingGatherContextDesc {
+    pub fn new(max_width: u32, max_height: u32, max_layers: u32) -> Self {
+        RingGatherContextDesc {
+            max_width,
+            max_height,
+            max_layers,
+            options: RingGatherOptions::default(),
+            image_io: false,
+            frames_in_flight: 1,
+        }
+    }
+}
+
+/// The buffers one frame's passes read and write.
+struct Passes {
+    /// The front layer: 3 words a pixel, and its depth.
+    color: BufferId,
+    depth: BufferId,
+    /// Half-resolution colour and signed CoC ([`HALF_WORDS`] a half-resolution pixel).
+    half: BufferId,
+    /// Each tile's largest near-field radius, then dilated (with its highlight reach,
+    /// [`DILATED_WORDS`] a tile).
+    tiles: BufferId,
+    dilated: BufferId,
+    /// Each tile's highlights, drawn as discs instead of gathered ([`BRIGHT_TILE_WORDS`] a tile).
+    bright: BufferId,
+    /// The background and near fields ([`FIELD_WORDS`] a half-resolution pixel).
+    fields: BufferId,
+}
+
+/// A ring-gather context (see the [module docs](crate::frame)).
+pub struct RingGatherContext {
+    desc: RingGatherContextDesc,
+    passes: Passes,
+    /// Per frame in flight, the options its frame ran with (its report) and, on the device, the
+    /// count of clamped input colours.
+    in_flight: InFlight<RingGatherOptions>,
+    clamped: Vec<BufferId>,
+    io: Option<ImageIo>,
+    owned: Owned,
+}
+
+impl RingGatherContext {
+    pub fn new(backend: &mut dyn Backend, desc: &RingGatherContextDesc) -> Result<Self> {
+        desc.options.check()?;
+        let pixels = context_pixels(backend, "ring-gather", desc.max_width, desc.max_height, desc.max_layers)?;
+        let shape = RingGatherParams { width: desc.max_width, height: desc.max_height, ..Default::default() };
+        let half = shape.half_width() as u64 * shape.half_height() as u64;
+        let tiles = shape.tiles_x() as u64 * shape.tiles_y() as u64;
+        let in_flight = InFlight::new(desc.frames_in_flight)?;
+        let mut owned = Owned::default();
+        let made = (|| {
+            let passes = Passes {
+                color: owned.make(backend, 3 * pixels, "ring-gather/color")?,
+                depth: owned.make(backend, pixels, "ring-gather/depth")?,
+                half: owned.make(backend, HALF_WORDS as u64 * half, "ring-gather/half")?,
+                tiles: owned.make(backend, tiles, "ring-gather/tiles")?,
+                dilated: owned.make(backend, DILATED_WORDS as u64 * tiles, "ring-gather/dilated")?,
+                bright: owned.make(backend, BRIGHT_TILE_WORDS as u64 * tiles, "ring-gather/bright")?,
+                fields: owned.make(backend, FIELD_WORDS as u64 * half, "ring-gather/fields")?,
+            };
+            let clamped = per_frame(&mut owned, backend, desc.frames_in_flight, 1, "ring-gather/clamped")?;
+            let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
+            Ok((passes, clamped, io))
+        })();
+        let ((passes, clamped, io), owned) = owned.or_free(backend, made)?;
+        let ctx = RingGatherContext { desc: desc.clone(), passes, in_flight, clamped, io, owned };
+        let mut kernels = dof_shaders::ring_gather::KERNELS.to_vec();
+        kernels.extend(dof_shaders::frame_io::KERNELS);
+        kernels.extend(dof_shaders::radiance::KERNELS);
+        ready(backend, ctx, &kernels, &[], Self::destroy)
+    }
+
+    pub fn destroy(self, backend: &mut dyn Backend) {
+        self.owned.free(backend);
+    }
+
+    pub fn device_bytes(&self) -> u64 {
+        self.owned.bytes()
+    }
+
+    pub fn options(&self) -> RingGatherOptions {
+        self.desc.options
+    }
+
+    /// Changes the ring count or the radius cap for the frames recorded next (no allocation: the
+    /// buffers do not depend on them).
+    pub fn set_options(&mut self, options: RingGatherOptions) -> Result<()> {
+        options.check()?;
+        self.desc.options = options;
+        Ok(())
+    }
+
+    /// Records one frame: the front layer of the input, then downsampling, tile dilation, the
+    /// gather over rings and the composite with the highlights' discs.
+    pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
+        record_checked(self, backend, f, Self::commands)?;
+        self.in_flight.recorded(self.desc.options);
+        Ok(())
+    }
+
+    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+        let d = &self.desc;
+        let slots = record_input(backend, f, self.io.as_ref())?;
+        let output = output_buffer(f, self.io.as_ref())?;
+        let b = &self.passes;
+        record_front(backend, f, slots, b.color, b.depth)?;
+        record_clamp_count(backend, f, slots, 1, self.clamped[self.in_flight.next()], 0)?;
+        let p =
+            RingGatherParams { width: f.width, height: f.height, rings: d.options.rings, max_radius: d.options.max_radius, lens: f.lens };
+        let tile_groups = [p.tiles_x(), p.tiles_y(), 1];
+        let (color, depth, half, tiles, bright, dilated, fields) = (b.color, b.depth, b.half, b.tiles, b.bright, b.dilated, b.fields);
+        backend.run(ring_gather_downsample::Bindings { color, depth, half, tiles, bright }, tile_groups, &p, "ring-gather/downsample")?;
+        let tile_count = p.tiles_x() as u64 * p.tiles_y() as u64;
+        let dilate = ring_gather_dilate::Bindings { tiles, bright, dilated };
+        backend.run(dilate, groups_for(&RING_GATHER_DILATE, tile_count), &p, "ring-gather/dilate")?;
+        backend.run(ring_gather::Bindings { half, dilated, fields }, tile_groups, &p, "ring-gather")?;
+        let pixel_groups = [f.width.div_ceil(8), f.height.div_ceil(8), 1];
+        let composite = ring_gather_composite::Bindings { color, depth, fields, bright, dilated, out: output };
+        backend.run(composite, pixel_groups, &p, "ring-gather/composite")?;
+        record_output(backend, f, self.io.as_ref())
+    }
+}
+
+impl DofContext for RingGatherContext {
+    fn method(&self) -> &'static str {
+        "ring-gather"
+    }
+    fn extent(&self) -> Extent {
+        self.desc.extent()
+    }
+    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
+        RingGatherContext::record(self, backend, frame)
+    }
+    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
+        self.report_frame(backend, 0)
+    }
+    fn frames_in_flight(&self) -> u32 {
+        self.in_flight.frames()
+    }
+    fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
+        self.owned.check(backend)?;
+        let (slot, o) = self.in_flight.slot(frames_ago)?;
+        let clamped = backend.read_buffer(self.clamped[slot], 0, 1)?[0];
+        let samples = dof_shaders::ring_gather::samples(o.rings);
+        Ok(ContextReport {
+            summary: format!(
+                "{} rings, {samples} samples a half-resolution pixel, CoC radius cap {} px{}",
+                o.rings,
+                o.max_radius,
+                clamped_summary(clamped)
+            ),
+            figures: [
+                ("rings".to_string(), o.rings as f64),
+                ("samples_per_half_pixel".to_string(), samples as f64),
+                ("clamped".to_string(), clamped as f64),
+            ]
+            .into(),
+            ..Default::default()
+        })
+    }
+    fn device_bytes(&self) -> u64 {
+        RingGatherContext::device_bytes(self)
+    }
+    fn resize(&mut self, backend: &mut dyn Backend, extent: Extent) -> Result<()> {
+        self.owned.check(backend)?;
+        let desc = self.desc.clone();
+        remake(self, backend, &desc, extent, RingGatherContext::new, RingGatherContext::destroy)
+    }
+    fn knob(&self) -> Option<u32> {
+        Some(self.desc.options.rings)
+    }
+    fn set_knob(&mut self, rings: u32) -> Result<()> {
+        self.set_options(RingGatherOptions { rings, ..self.desc.options })
+    }
+    fn destroy(self: Box<Self>, backend: &mut dyn Backend) {
+        RingGatherContext::destroy(*self, backend)
+    }
+}

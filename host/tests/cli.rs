@@ -407,7 +407,8 @@ fn soak_and_frame_bench_report_flat_memory_and_no_per_frame_work() {
     assert!(barriers >= 1.0 && barriers <= v["commands_per_frame"].as_f64().unwrap(), "{v}");
     // The frame time: one span a frame around the whole recording, over every timed frame.
     for r in [&j, &v] {
-        let (median, p10, p90) = (r["frame_ms"].as_f64().unwrap(), r["frame_ms_p10"].as_f64().unwrap(), r["frame_ms_p90"].as_f64().unwrap());
+        let (median, p10, p90) =
+            (r["frame_ms"].as_f64().unwrap(), r["frame_ms_p10"].as_f64().unwrap(), r["frame_ms_p90"].as_f64().unwrap());
         assert!(median > 0.0 && p10 <= median && median <= p90, "{r}");
         assert_eq!((r["frame_ms_frames"].as_u64(), r["warmup_frames"].as_u64()), (Some(2), Some(2)), "{r}");
     }

@@ -75,4 +75,8 @@ fn an_orbiting_frame_reports_one_submission_and_no_transfers() {
         assert!(json.contains(field), "{field} in {json}");
     }
     assert!(json.contains("\"peel_ms\":") && json.contains("\"dof_ms\":"), "{json}");
+    // The peel's span is reported beside the frame time, each one a frame.
+    let j: serde_json::Value = serde_json::from_str(&json).expect("one JSON object");
+    assert!(j["frame_ms"].as_f64().unwrap() > 0.0 && j["peel_span_ms"].as_f64().unwrap() > 0.0, "{j}");
+    assert_eq!(j["frame_ms_frames"].as_u64(), Some(3), "{j}");
 }

@@ -405,8 +405,16 @@ fn soak_and_frame_bench_report_flat_memory_and_no_per_frame_work() {
     assert_eq!(v["dispatches_per_frame"], j["dispatches_per_frame"], "the same frame records the same dispatches on both backends");
     let barriers = v["barriers_per_frame"].as_f64().unwrap();
     assert!(barriers >= 1.0 && barriers <= v["commands_per_frame"].as_f64().unwrap(), "{v}");
+    // The frame time: one span a frame around the whole recording, over every timed frame.
+    for r in [&j, &v] {
+        let (median, p10, p90) =
+            (r["frame_ms"].as_f64().unwrap(), r["frame_ms_p10"].as_f64().unwrap(), r["frame_ms_p90"].as_f64().unwrap());
+        assert!(median > 0.0 && p10 <= median && median <= p90, "{r}");
+        assert_eq!((r["frame_ms_frames"].as_u64(), r["warmup_frames"].as_u64()), (Some(2), Some(2)), "{r}");
+    }
     assert_fails_with(&["soak", "--frames", "0"], "--frames");
     assert_fails_with(&["bench", "frame", "--frames", "0"], "--frames");
+    assert_fails_with(&["bench", "frame", "--warmup", "100001"], "--warmup");
 }
 
 /// `dof bench scaling` runs every point asked for, writes JSON, markdown and each plot, and reports

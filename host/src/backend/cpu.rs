@@ -3,7 +3,7 @@
 //! barriers (see `dof_shaders::exec`). Buffers are `[AtomicU32]`, so parallel workgroups never alias
 //! mutable memory.
 
-use super::{Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageFormat, ImageRef, Limits, check_dispatch};
+use super::{Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageFormat, ImageRef, Limits, SPAN, check_dispatch};
 use crate::error::{Error, Result};
 use dof_shaders::KernelDesc;
 use dof_shaders::exec::CpuDispatch;
@@ -21,6 +21,11 @@ pub struct CpuBackend {
     limits: Limits,
     buffers: Vec<Option<Box<[AtomicU32]>>>,
     times: Vec<CommandTime>,
+    /// Open spans (label, start), innermost last; closed spans of the recording, in opening order
+    /// (the slot is filled when the span closes); and those of the last submissions.
+    open_spans: Vec<(String, Instant, usize)>,
+    spans: Vec<CommandTime>,
+    submitted_spans: Vec<CommandTime>,
     counters: BackendCounters,
     budget: Option<u64>,
     /// The stand-ins for a renderer's images ([`CpuBackend::create_image`]), by handle − 1.
@@ -59,6 +64,9 @@ impl CpuBackend {
             },
             buffers: Vec::new(),
             times: Vec::new(),
+            open_spans: Vec::new(),
+            spans: Vec::new(),
+            submitted_spans: Vec::new(),
             counters: BackendCounters::default(),
             id: BackendId::fresh(),
             budget: None,
@@ -313,8 +321,30 @@ impl Backend for CpuBackend {
     }
 
     fn submit(&mut self) -> Result<Vec<CommandTime>> {
+        if let Some((label, ..)) = self.open_spans.last() {
+            return Err(Error::InvalidArgument(format!("submit with the span `{label}` still open (end_span first)")));
+        }
         self.counters.submissions += 1;
+        self.submitted_spans.append(&mut self.spans);
         Ok(std::mem::take(&mut self.times))
+    }
+
+    // The commands run as they are recorded, so a span is the wall time from its opening to its
+    // closing: its commands' times and the recording's own work between them.
+    fn begin_span(&mut self, label: &str) -> Result<()> {
+        self.spans.push(CommandTime { label: label.to_string(), kernel: SPAN, ms: f64::NAN });
+        self.open_spans.push((label.to_string(), Instant::now(), self.spans.len() - 1));
+        Ok(())
+    }
+
+    fn end_span(&mut self) -> Result<()> {
+        let (_, start, slot) = self.open_spans.pop().ok_or_else(|| Error::InvalidArgument("end_span without an open span".into()))?;
+        self.spans[slot].ms = start.elapsed().as_secs_f64() * 1e3;
+        Ok(())
+    }
+
+    fn take_span_times(&mut self) -> Vec<CommandTime> {
+        std::mem::take(&mut self.submitted_spans)
     }
 
     fn counters(&self) -> BackendCounters {

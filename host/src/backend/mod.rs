@@ -429,6 +429,9 @@ pub struct CommandTime {
     pub ms: f64,
 }
 
+/// The `kernel` of a span's [`CommandTime`] (see [`Backend::begin_span`]).
+pub const SPAN: &str = "span";
+
 pub trait Backend {
     fn kind(&self) -> BackendKind;
     /// This backend object's identity (see [`BackendId`]).
@@ -506,6 +509,24 @@ pub trait Backend {
         Ok(())
     }
     fn submit(&mut self) -> Result<Vec<CommandTime>>;
+    /// Opens a span named `label`: one pair of GPU timestamps (Vulkan) or the wall clock (CPU
+    /// backend) around every command recorded until the matching [`Backend::end_span`], in the
+    /// backend's own submission. Spans nest; every one must be closed before `submit`. Their times
+    /// come from [`Backend::take_span_times`] after the submission: a frame's time as one figure
+    /// rather than a sum of per-command pairs. Backends that time nothing ignore spans.
+    fn begin_span(&mut self, label: &str) -> Result<()> {
+        let _ = label;
+        Ok(())
+    }
+    /// Closes the innermost open span.
+    fn end_span(&mut self) -> Result<()> {
+        Ok(())
+    }
+    /// The spans of everything submitted since the last call, in the order they were opened
+    /// (`kernel` is [`SPAN`]; NaN on a queue without timestamps).
+    fn take_span_times(&mut self) -> Vec<CommandTime> {
+        Vec::new()
+    }
     /// Whether a frame may be recorded now. A backend on a caller's device records frames only into
     /// the caller's command buffer (Vulkan: between `begin_external` and `end_external`); recorded
     /// into its own, the frame would run at its next submission, after the caller may have changed

@@ -2,13 +2,19 @@
 //! device time per stage, the context's device memory, and per frame the allocations, submissions
 //! and host readbacks (from the backend's counters, so hidden ones count too).
 //!
+//! The frame time is one span (a GPU timestamp pair on Vulkan, the wall clock on the CPU backend)
+//! around the depth of field's whole recording, frame by frame: its median, 10th and 90th
+//! percentiles over the timed frames after the warm-up ones. The per-stage times (each command's
+//! own timestamp pair, summed by label) are its profile; with `--orbit` the peel has a span of its
+//! own, reported beside the frame time, not inside it.
+//!
 //! With `--orbit DEG` the multi-layer input is made anew every frame by depth peeling on the device
 //! (`raster::MeshPeelContext`, Franke et al. 2018, §4.1-4.3), recorded into the same submission as
 //! the depth of field, the camera turning DEG degrees a frame about the point in focus.
 
 use super::render::BackendArg;
 use anyhow::Context;
-use dof::backend::{Backend, BackendCounters, BufferId};
+use dof::backend::{Backend, BackendCounters, BufferId, CommandTime};
 use dof::frame::{ContextDesc, ContextReport, Extent, Frame, MethodInfo, MethodOptions, Reads, SplatOptions};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::slot_words;
@@ -55,9 +61,12 @@ pub struct FrameArgs {
     width: u32,
     #[arg(long, default_value_t = 720)]
     height: u32,
-    /// Timed frames after one warm-up frame.
-    #[arg(long, default_value_t = 10)]
+    /// Timed frames, after the warm-up ones (the frame time is their median).
+    #[arg(long, default_value_t = 20)]
     frames: u32,
+    /// Untimed frames first (pipelines, caches and the list pool settle).
+    #[arg(long, default_value_t = 2)]
+    warmup: u32,
     /// Run each frame through the one-shot function instead (a context, its buffers and the
     /// input's per frame, and the result read back): what the frame API saves. The "record" time
     /// is then the whole call.
@@ -78,6 +87,9 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     if args.frames == 0 || args.frames > MAX_FRAMES {
         anyhow::bail!("--frames must be between 1 and {MAX_FRAMES}, got {}", args.frames);
     }
+    if args.warmup > MAX_FRAMES {
+        anyhow::bail!("--warmup must be between 0 and {MAX_FRAMES}, got {}", args.warmup);
+    }
     for (flag, v) in [("--width", args.width), ("--height", args.height)] {
         if !(1..=MAX_EDGE).contains(&v) {
             anyhow::bail!("{flag} must be between 1 and {MAX_EDGE} px, got {v}");
@@ -91,7 +103,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     let b = backend.as_mut();
     let (measured, size, layers) = match args.orbit {
         Some(deg) => {
-            let m = orbiting(b, method, &view, &options, args.frames, deg, args.out.as_deref())?;
+            let m = orbiting(b, method, &view, &options, [args.warmup, args.frames], deg, args.out.as_deref())?;
             (m, [view.camera.width, view.camera.height], LayerOptions::default().max_layers)
         }
         None => {
@@ -101,17 +113,36 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
                 Reads::FrontLayer => layered.front_layer(),
             };
             let m = if args.one_shot {
-                one_shot(b, method, &image, &view.lens, &options, args.frames)?
+                one_shot(b, method, &image, &view.lens, &options, [args.warmup, args.frames])?
             } else {
-                framed(b, method, &image, &view.lens, &options, args.frames, args.out.as_deref())?
+                framed(b, method, &image, &view.lens, &options, [args.warmup, args.frames], args.out.as_deref())?
             };
             (m, [image.width, image.height], image.max_layers)
         }
     };
     let per_frame = |n: u64| n as f64 / args.frames as f64;
     let c = measured.counters;
+    let frame = Spread::of(&measured.frame_spans);
+    let peel = Spread::of(&measured.peel_spans);
+    let timing = match b.kind() {
+        dof::backend::BackendKind::Cpu => "wall clock around the recording (the CPU backend runs the kernels as it records)",
+        _ => "one GPU timestamp pair around the recording",
+    };
     if args.json {
-        let json = serde_json::json!({
+        // The frame time (spans), apart: one `json!` of every field passes the macro's recursion limit.
+        let spans = serde_json::json!({
+            "warmup_frames": args.warmup,
+            "frame_timing": if args.one_shot { "none: the one-shot path submits inside its call" } else { timing },
+            "frame_ms": frame.map(|f| f.median),
+            "frame_ms_p10": frame.map(|f| f.p10),
+            "frame_ms_p90": frame.map(|f| f.p90),
+            "frame_ms_frames": frame.map_or(0, |f| f.count),
+            "peel_span_ms": peel.map(|f| f.median),
+            "peel_span_ms_p10": peel.map(|f| f.p10),
+            "peel_span_ms_p90": peel.map(|f| f.p90),
+            "table1_ms": table1(&measured.stages),
+        });
+        let mut json = serde_json::json!({
             "method": method.name,
             "merge": args.merge.name(),
             "path": if args.one_shot { "one-shot" } else if args.orbit.is_some() { "frame-api+device-peel" } else { "frame-api" },
@@ -147,11 +178,14 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "list_entries": measured.list_entries,
             "list_pool": measured.list_pool,
         });
+        if let (Some(all), serde_json::Value::Object(spans)) = (json.as_object_mut(), spans) {
+            all.extend(spans);
+        }
         println!("{json}");
         return Ok(());
     }
     println!(
-        "{} {} merge {} on {} ({}), {}x{} with {} layers, {} frames after a warm-up ({})",
+        "{} {} merge {} on {} ({}), {}x{} with {} layers, {} frames after {} warm-up ({})",
         args.scene,
         method.name,
         args.merge.name(),
@@ -161,6 +195,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         size[1],
         layers,
         args.frames,
+        args.warmup,
         if args.one_shot {
             "one-shot path"
         } else if args.orbit.is_some() {
@@ -184,7 +219,17 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         measured.record_ms,
         if b.kind() == dof::backend::BackendKind::Cpu { " (the CPU backend runs the kernels as it records)" } else { "" }
     );
-    println!("device time per frame: {:.3} ms", measured.gpu_ms);
+    match frame {
+        Some(f) => println!(
+            "frame time (depth of field, {timing}): median {:.3} ms, p10 {:.3}, p90 {:.3} over {} frames",
+            f.median, f.p10, f.p90, f.count
+        ),
+        None => println!("frame time: not measured (the one-shot path submits inside its call; see the stages)"),
+    }
+    if let Some(p) = peel {
+        println!("peeling, beside it (its own span): median {:.3} ms, p10 {:.3}, p90 {:.3}", p.median, p.p10, p.p90);
+    }
+    println!("device time per frame, the commands' own timestamp pairs summed (the profile below): {:.3} ms", measured.gpu_ms);
     if args.orbit.is_some() {
         println!(
             "  peeling {:.3} ms ({:.1} passes recorded a frame; the last frame's drawn and with a surface: {:?}; guard band {} px), depth of field {:.3} ms",
@@ -229,6 +274,58 @@ struct Measured {
     peel_drawn: Option<(u32, u32)>,
     /// The band the last frame's view needed, and the frames that needed more than the image has.
     band: Option<(u32, u32)>,
+    /// Per timed frame, the span around the depth of field's recording and around the peel's
+    /// (ms; NaN where the queue has no timestamps).
+    frame_spans: Vec<f64>,
+    peel_spans: Vec<f64>,
+}
+
+/// The span labels `bench frame` opens.
+const DOF_SPAN: &str = "frame/dof";
+const PEEL_SPAN: &str = "frame/peel";
+
+/// The spread of per-frame times: median, 10th and 90th percentiles (nearest rank, the upper
+/// median for an even count, as `dof::timing::median`), over the finite ones.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Spread {
+    median: f64,
+    p10: f64,
+    p90: f64,
+    count: usize,
+}
+
+impl Spread {
+    fn of(values: &[f64]) -> Option<Spread> {
+        let mut v: Vec<f64> = values.iter().copied().filter(|t| t.is_finite()).collect();
+        if v.is_empty() {
+            return None;
+        }
+        v.sort_by(f64::total_cmp);
+        let at = |q: f64| v[(q * (v.len() - 1) as f64).round() as usize];
+        Some(Spread { median: at(0.5), p10: at(0.1), p90: at(0.9), count: v.len() })
+    }
+}
+
+/// The per-stage means summed into the columns of Franke et al. 2018, Table 1 (merge, splat,
+/// sort, apply; the peel's stages apart), as `dof eval` groups them.
+fn table1(stages: &BTreeMap<String, f64>) -> BTreeMap<&'static str, f64> {
+    let mut columns: BTreeMap<&'static str, f64> = ["merge", "splat", "sort", "apply"].into_iter().map(|c| (c, 0.0)).collect();
+    for (label, ms) in stages {
+        let column = if label.starts_with("peel/") { "peel" } else { dof::eval::report::table_column(label) };
+        *columns.entry(column).or_default() += ms;
+    }
+    columns
+}
+
+/// Adds a submission's spans to the frame's and the peel's lists.
+fn add_spans(m: &mut Measured, spans: Vec<CommandTime>) {
+    for s in spans {
+        match s.label.as_str() {
+            DOF_SPAN => m.frame_spans.push(s.ms),
+            PEEL_SPAN => m.peel_spans.push(s.ms),
+            _ => {}
+        }
+    }
 }
 
 impl Measured {
@@ -256,6 +353,8 @@ impl Measured {
             margin: 0,
             peel_drawn: None,
             band: None,
+            frame_spans: Vec::new(),
+            peel_spans: Vec::new(),
         }
     }
 }
@@ -279,7 +378,7 @@ fn framed(
     image: &LayeredImage,
     lens: &ThinLens,
     options: &MethodOptions,
-    frames: u32,
+    [warmup, frames]: [u32; 2],
     out: Option<&Path>,
 ) -> anyhow::Result<Measured> {
     let pixels = image.width as u64 * image.height as u64;
@@ -293,15 +392,22 @@ fn framed(
     let extent = Extent::new(image.width, image.height, image.max_layers);
     let mut ctx = (method.create)(b, &ContextDesc::new(extent, options.clone()))?;
     let frame = Frame::layers(image.width, image.height, image.max_layers, *lens, bufs[0], bufs[1], bufs[2]);
-    ctx.record(b, &frame)?;
-    b.submit()?;
+    for _ in 0..warmup {
+        ctx.record(b, &frame)?;
+        b.submit()?;
+    }
+    b.take_span_times();
     let before = b.counters();
     let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());
+    let mut spans = Vec::new();
     for _ in 0..frames {
         let start = Instant::now();
+        b.begin_span(DOF_SPAN)?;
         ctx.record(b, &frame)?;
+        b.end_span()?;
         record_ms += start.elapsed().as_secs_f64() * 1e3 / frames as f64;
         gpu_ms += add_stages(&mut stages, &b.submit()?, frames);
+        spans.extend(b.take_span_times());
     }
     let counters = b.counters().since(&before);
     let report = ctx.report(b).context("reading the last frame's report")?;
@@ -310,7 +416,9 @@ fn framed(
     let written = out.map(|out| write_last(b, bufs[2], [image.width, image.height], 0, out)).transpose();
     bufs.into_iter().for_each(|id| b.destroy_buffer(id));
     written?;
-    Ok(Measured::new(counters, record_ms, gpu_ms, stages, device_bytes, &report))
+    let mut m = Measured::new(counters, record_ms, gpu_ms, stages, device_bytes, &report);
+    add_spans(&mut m, spans);
+    Ok(m)
 }
 
 /// The one-shot path, frame after frame.
@@ -320,9 +428,11 @@ fn one_shot(
     image: &LayeredImage,
     lens: &ThinLens,
     options: &MethodOptions,
-    frames: u32,
+    [warmup, frames]: [u32; 2],
 ) -> anyhow::Result<Measured> {
-    one_shot::one_shot(b, method, options, image, lens)?;
+    for _ in 0..warmup {
+        one_shot::one_shot(b, method, options, image, lens)?;
+    }
     let before = b.counters();
     let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());
     let mut last = None;
@@ -437,7 +547,7 @@ fn orbiting(
     method: &MethodInfo,
     view: &SceneView,
     options: &MethodOptions,
-    frames: u32,
+    [warmup, frames]: [u32; 2],
     deg: f32,
     out: Option<&Path>,
 ) -> anyhow::Result<Measured> {
@@ -465,20 +575,29 @@ fn orbiting(
     };
     let frame = peel.frame(lens, dof::frame::FrameOutput::Buffer(output));
     let run = (|| -> anyhow::Result<Measured> {
-        // A warm-up frame from the first view, then one frame per turn.
-        peel.record(b, &view.camera, &lens)?;
-        ctx.record(b, &frame)?;
-        b.submit()?;
+        // Warm-up frames from the first view, then one frame per turn.
+        for _ in 0..warmup {
+            peel.record(b, &view.camera, &lens)?;
+            ctx.record(b, &frame)?;
+            b.submit()?;
+        }
+        b.take_span_times();
         let before = b.counters();
         let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());
         let mut passes = 0;
+        let mut spans = Vec::new();
         for i in 1..=frames {
             let camera = orbit(&view.camera, lens.focus_distance, deg * i as f32);
             let start = Instant::now();
+            b.begin_span(PEEL_SPAN)?;
             peel.record(b, &camera, &lens)?;
+            b.end_span()?;
+            b.begin_span(DOF_SPAN)?;
             ctx.record(b, &frame)?;
+            b.end_span()?;
             record_ms += start.elapsed().as_secs_f64() * 1e3 / frames as f64;
             let times = b.submit()?;
+            spans.extend(b.take_span_times());
             // One shading dispatch a pass recorded, whether or not the pass drew.
             passes += times.iter().filter(|t| t.label == "peel/shade").count() as u64;
             gpu_ms += add_stages(&mut stages, &times, frames);
@@ -487,6 +606,7 @@ fn orbiting(
         let report = ctx.report(b).context("reading the last frame's report")?;
         let mut m = Measured::new(counters, record_ms, gpu_ms, stages, ctx.device_bytes() + peel.device_bytes(), &report);
         m.peel_passes = passes;
+        add_spans(&mut m, spans);
         m.margin = peel.margin();
         let last = peel.peel_report(b).context("reading the last frame's peel report")?;
         m.peel_drawn = Some((last.drawn, last.with_surface));
@@ -508,4 +628,19 @@ fn write_last(b: &mut dyn Backend, output: BufferId, size: [u32; 2], margin: u32
     dof::io::write_exr(out, &image, &[]).with_context(|| format!("--out {}", out.display()))?;
     eprintln!("wrote {}", out.display());
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Spread;
+
+    #[test]
+    fn spread_is_nearest_rank_over_finite_times() {
+        let times: Vec<f64> = (1..=20).rev().map(f64::from).chain([f64::NAN]).collect();
+        let s = Spread::of(&times).unwrap();
+        // 20 finite values 1..=20: ranks 0.1·19 → 2 (3.0), 0.5·19 → 10 (11.0), 0.9·19 → 17 (18.0).
+        assert_eq!(s, Spread { median: 11.0, p10: 3.0, p90: 18.0, count: 20 });
+        assert_eq!(Spread::of(&[f64::NAN]), None);
+        assert_eq!(Spread::of(&[2.5]).map(|s| (s.median, s.p10, s.p90)), Some((2.5, 2.5, 2.5)));
+    }
 }

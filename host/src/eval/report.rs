@@ -126,7 +126,7 @@ pub struct SweepRecord {
 /// The column of Franke et al. 2018, Table 1, a recorded stage belongs to: `merge` (input preparation: packing
 /// and merging, the ray tracer's min/max hierarchy, layered DoF's matting, or bokeh detection),
 /// `splat` (tile counts, compaction, allocation, binning and their scans), `sort`, `apply`
-/// (accumulation, the gather, tracing, layered DoF's blurs and composition, the sprite draw).
+/// (accumulation, the gathers, tracing, layered DoF's blurs and composition, the sprite draw).
 pub fn table_column(label: &str) -> &'static str {
     if label.starts_with("splat/pack")
         || label.starts_with("splat/merge")
@@ -139,6 +139,7 @@ pub fn table_column(label: &str) -> &'static str {
         "sort"
     } else if label.starts_with("splat/accumulate")
         || label == "gather"
+        || label.starts_with("ring-gather")
         || label == "raytrace/trace"
         || label.starts_with("layered/")
         || label == "bokeh/draw"

@@ -257,7 +257,7 @@ pub const EXACT_SUM_LIMIT: f32 = 4.0;
 /// is the CoC disc (radius `s − w/2`) seen through a box of the fragment's width, to first order: the
 /// edge of a disc that covers half a pixel gives that pixel half a share, as the reference's integral
 /// over the pixel area does.
-#[inline]
+#[inline(always)]
 pub fn weight(d2: f32, s: f32, w: f32) -> f32 {
     let inner = s - w;
     if inner > 0.0 && d2 <= inner * inner {
@@ -271,7 +271,7 @@ pub fn weight(d2: f32, s: f32, w: f32) -> f32 {
 /// its squared length): the circle's fast path; the shape's gauge in place of the distance; or a
 /// mask's coverage at the offset over the CoC radius `s − w/2`. The offset is point-reflected
 /// (`mirror = −1`) for a foreground fragment.
-#[inline]
+#[inline(always)]
 pub fn shaped_weight<L: Load>(d: [f32; 2], d2: f32, s: f32, w: f32, ap: &Aperture, mirror: f32, mask: &L) -> f32 {
     if ap.is_circle() {
         return weight(d2, s, w);

@@ -1022,6 +1022,18 @@ impl Backend for VulkanBackend {
         Ok(self.recorder.take_times())
     }
 
+    fn begin_span(&mut self, label: &str) -> Result<()> {
+        self.recorder.begin_span(&self.device, label)
+    }
+
+    fn end_span(&mut self) -> Result<()> {
+        self.recorder.end_span(&self.device)
+    }
+
+    fn take_span_times(&mut self) -> Vec<CommandTime> {
+        self.recorder.take_span_times()
+    }
+
     fn counters(&self) -> BackendCounters {
         let barriers = self.counters.barriers + self.recorder.barriers();
         BackendCounters { submissions: self.recorder.submissions(), barriers, ..self.counters }

@@ -14,7 +14,7 @@
 //! more commands takes (and keeps) another pool, so one `submit` is always one `vkQueueSubmit`.
 
 use super::instance::DeviceCtx;
-use crate::backend::CommandTime;
+use crate::backend::{CommandTime, SPAN};
 use crate::error::{Result, VkContext};
 use ash::vk;
 use std::collections::{HashSet, VecDeque};
@@ -123,6 +123,12 @@ pub(super) struct Recorder {
     external_spare: Vec<Queries>,
     /// Timings of submitted work not yet returned by `take_times`.
     done: Vec<CommandTime>,
+    /// The open spans of `main`, innermost last: the pool and first query of each (`None` without
+    /// timestamps). A span takes one timed slot of `main_queries` (kernel [`SPAN`]): its first two
+    /// stamps where it opens, the third where it closes.
+    open_spans: Vec<Option<(vk::QueryPool, u32)>>,
+    /// Span timings of submitted work not yet returned by `take_span_times`.
+    done_spans: Vec<CommandTime>,
     /// `vkQueueSubmit` calls so far.
     submissions: u64,
     /// What the commands since the last barrier accessed; `None` at the start of a command buffer,
@@ -151,6 +157,8 @@ impl Recorder {
             external_pending: VecDeque::new(),
             external_spare: Vec::new(),
             done: Vec::new(),
+            open_spans: Vec::new(),
+            done_spans: Vec::new(),
             submissions: 0,
             touched: None,
             barriers: 0,
@@ -230,17 +238,7 @@ impl Recorder {
         let d = &ctx.device;
         let cb = match self.external {
             Some(cb) => cb,
-            None => {
-                if !self.recording {
-                    let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
-                    // SAFETY: `main` is not pending (every submission is waited for) and its pool allows reset.
-                    unsafe { d.begin_command_buffer(self.main, &begin) }.vk("vkBeginCommandBuffer")?;
-                    self.recording = true;
-                    self.main_queries.begin();
-                    self.touched = None;
-                }
-                self.main
-            }
+            None => self.begin_main(ctx)?,
         };
         let stamps = match timing {
             Some(_) if self.timestamps => {
@@ -292,11 +290,68 @@ impl Recorder {
         Ok(())
     }
 
+    /// The backend's own command buffer, begun if it is not recording yet.
+    fn begin_main(&mut self, ctx: &DeviceCtx) -> Result<vk::CommandBuffer> {
+        if !self.recording {
+            let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
+            // SAFETY: `main` is not pending (every submission is waited for) and its pool allows reset.
+            unsafe { ctx.device.begin_command_buffer(self.main, &begin) }.vk("vkBeginCommandBuffer")?;
+            self.recording = true;
+            self.main_queries.begin();
+            self.touched = None;
+        }
+        Ok(self.main)
+    }
+
+    /// Opens a span in the backend's own command buffer: its first stamps wait (bottom of pipe)
+    /// for everything recorded before it, as a timed command's do.
+    pub fn begin_span(&mut self, ctx: &DeviceCtx, label: &str) -> Result<()> {
+        if self.external.is_some() {
+            return Err(crate::error::Error::InvalidArgument(format!(
+                "span `{label}`: spans time the backend's own submissions, not a caller's command buffer (use take_external_times)"
+            )));
+        }
+        let cb = self.begin_main(ctx)?;
+        let slot = if self.timestamps { Some(self.main_queries.next(ctx, cb, "dof timestamps")?) } else { None };
+        if let Some((pool, query)) = slot {
+            // SAFETY: `cb` is recording, the queries were reset in it; see `record` for the second stamp.
+            unsafe {
+                ctx.device.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, pool, query);
+                ctx.device.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, pool, query + 1);
+            }
+        }
+        self.main_queries.timed.push((label.to_string(), SPAN));
+        self.open_spans.push(slot);
+        Ok(())
+    }
+
+    /// Closes the innermost open span: its last stamp waits for every command recorded before it.
+    pub fn end_span(&mut self, ctx: &DeviceCtx) -> Result<()> {
+        let slot = self.open_spans.pop().ok_or_else(|| crate::error::Error::InvalidArgument("end_span without an open span".into()))?;
+        if let Some((pool, query)) = slot {
+            // SAFETY: `main` is recording (the span opened in it and nothing submitted it since).
+            unsafe { ctx.device.cmd_write_timestamp(self.main, vk::PipelineStageFlags::BOTTOM_OF_PIPE, pool, query + 2) };
+        }
+        Ok(())
+    }
+
+    /// Span timings of everything submitted since the last call, in opening order.
+    pub fn take_span_times(&mut self) -> Vec<CommandTime> {
+        std::mem::take(&mut self.done_spans)
+    }
+
     /// Submits what is recorded in the backend's own command buffer, waits for it, and keeps its
-    /// timings for `take_times`.
+    /// timings for `take_times` (and its spans' for `take_span_times`). Refused while a span is
+    /// open: a span lies inside one submission.
     pub fn flush(&mut self, ctx: &DeviceCtx) -> Result<()> {
         if !self.recording {
             return Ok(());
+        }
+        if !self.open_spans.is_empty() {
+            return Err(crate::error::Error::InvalidArgument(format!(
+                "a submission with {} span(s) still open (end_span first; a span lies inside one submission)",
+                self.open_spans.len()
+            )));
         }
         self.recording = false;
         let timed = std::mem::take(&mut self.main_queries.timed);
@@ -305,8 +360,9 @@ impl Recorder {
         unsafe { d.end_command_buffer(self.main) }.vk("vkEndCommandBuffer")?;
         self.submit_and_wait(ctx, self.main)?;
         let stamps = if self.timestamps && !timed.is_empty() { self.main_queries.stamps(d, timed.len(), true)? } else { None };
-        let times = self.times(timed, stamps.as_deref());
+        let (spans, times): (Vec<_>, Vec<_>) = self.times(timed, stamps.as_deref()).into_iter().partition(|t| t.kernel == SPAN);
         self.done.extend(times);
+        self.done_spans.extend(spans);
         Ok(())
     }
 

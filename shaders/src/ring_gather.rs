@@ -13,8 +13,9 @@
 //!    its pixels by how much the composite shows the background field over them, so a sharp pixel
 //!    does not tint the field of its blurred neighbours. Each 8x8 tile reduces its largest
 //!    near-field radius, and takes out its highlights (at most [`HIGHLIGHTS_PER_TILE`]): blocks
-//!    much brighter than their 12 neighbours with a CoC radius of at least 3 px everywhere
-//!    (Unreal's scatter threshold), whose excess over the neighbours becomes a disc.
+//!    much brighter than their 12 neighbours (less those the emitter lights itself) with a CoC
+//!    radius of at least 1 px everywhere, whose excess over the neighbours becomes a disc drawn at
+//!    full resolution; the gather and the full-resolution path see the input without it.
 //! 2. [`dilate_pass`]: every tile takes the largest near radius of the tiles that radius reaches,
 //!    fading in over the last tile of the reach, so a blurred foreground spreads over the sharp
 //!    tiles beside it (Unreal's "foreground hole filling", FidelityFX's tile dilation); and how far
@@ -70,23 +71,31 @@ pub const DILATED_WORDS: u32 = 2;
 /// sample jumps from one field to the other as the focus moves.
 pub const NEAR_MIN_RADIUS: f32 = 0.5;
 pub const NEAR_RAMP: f32 = 1.0;
-/// Highlights drawn as discs instead of gathered (Unreal Engine's Diaphragm DoF scatters bright
-/// pixels whose CoC radius is at least 3 px): the scattered share rises from 0 at this CoC radius
-/// (pixels of the frame, the smallest of the 2x2 block's) to 1 one pixel further.
-pub const HIGHLIGHT_MIN_RADIUS: f32 = 3.0;
+/// Highlights drawn as discs instead of gathered: the scattered share rises from 0 at this CoC
+/// radius (pixels of the frame, the smallest of the 2x2 block's) to 1 at
+/// `HIGHLIGHT_MIN_RADIUS + HIGHLIGHT_RAMP`. Unreal Engine's Diaphragm DoF scatters from 3 px; here
+/// from where the full-resolution path stops holding a pixel alone (1 px, where the composite starts
+/// to blend in the half-resolution field), because an emitter of a few pixels' blur in front of a
+/// more blurred background is spread by the field of its neighbours, which neither keeps its energy
+/// nor its shape. Below 1/2 px a disc is one pixel: the emitter stays where it is.
+pub const HIGHLIGHT_MIN_RADIUS: f32 = 0.5;
+pub const HIGHLIGHT_RAMP: f32 = 0.5;
 /// ... and from 0 where the block's luminance is this many times its ring of 12 neighbours' to 1 at
 /// twice that ...
 pub const HIGHLIGHT_CONTRAST: f32 = 4.0;
 /// ... and from 0 where the excess over the neighbours has this luminance to 1 at twice that.
 pub const HIGHLIGHT_MIN_EXCESS: f32 = 0.25;
 /// Highlights a tile holds (1 in 8 of its half-resolution pixels; Unreal caps at 10% of quads).
-/// Beyond it a highlight stays in the gather whole.
+/// Beyond it a highlight stays in the gather whole, and is counted ([`STATS_CAPPED`]).
 pub const HIGHLIGHTS_PER_TILE: u32 = 8;
 /// A highlight's 8 words: centre x, y (pixels of the frame), signed CoC radius (pixels), then its
 /// colour per unit of disc weight (r, g, b), then 2 unused.
 pub const HIGHLIGHT_WORDS: u32 = 8;
 /// A tile's highlight record: the count, the largest radius (pixels, bits of an f32), the highlights.
 pub const BRIGHT_TILE_WORDS: u32 = 2 + HIGHLIGHTS_PER_TILE * HIGHLIGHT_WORDS;
+/// The word of the frame's statistics buffer that counts the highlights left in the gather because
+/// their tile held [`HIGHLIGHTS_PER_TILE`] already (word 0 counts the clamped input colours).
+pub const STATS_CAPPED: u32 = 1;
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, bytemuck::Pod, bytemuck::Zeroable)]
@@ -259,21 +268,47 @@ pub fn disc_weight_sum(cx: f32, cy: f32, radius: f32) -> f32 {
 
 /// A half-resolution pixel's reduction of its 2x2 pixels.
 struct Block {
-    /// The mean colour and signed CoC radius (half-resolution pixels; NaN: no valid pixel).
-    colour: [f32; 3],
-    radius: f32,
     /// The near part: colour, share of the block, signed radius; then the rest's colour and radius.
     near: [f32; 3],
     coverage: f32,
     near_radius: f32,
     far: [f32; 3],
     far_radius: f32,
-    /// Valid pixels and the mean of their centres (pixels of the frame).
+    /// Valid pixels.
     count: u32,
-    centre: [f32; 2],
-    /// The smallest and largest signed radius (pixels) of the valid pixels.
-    low: f32,
-    high: f32,
+    /// What a [`Cut`] took out of the pixels (summed), and the centre (pixels) and signed CoC
+    /// radius (pixels) of that light, weighted by its luminance.
+    taken: [f32; 3],
+    taken_centre: [f32; 2],
+    taken_radius: f32,
+}
+
+/// What the highlight path takes out of a block's 2x2 pixels: `share[k]` of pixel `k`'s excess
+/// over the background `over` (per channel, never below it). A share of 0 takes nothing.
+#[derive(Clone, Copy)]
+struct Cut {
+    share: [f32; 4],
+    over: [f32; 3],
+}
+
+const NO_CUT: Cut = Cut { share: [0.0; 4], over: [0.0; 3] };
+
+impl Cut {
+    #[inline]
+    fn any(&self) -> bool {
+        self.share[0] > 0.0 || self.share[1] > 0.0 || self.share[2] > 0.0 || self.share[3] > 0.0
+    }
+}
+
+/// Pixel `k`'s colour less what `cut` takes out of it, and that part.
+#[inline]
+fn cut_pixel(c: [f32; 3], cut: Cut, k: u32) -> ([f32; 3], [f32; 3]) {
+    let share = cut.share[k as usize];
+    if share <= 0.0 {
+        return (c, [0.0; 3]);
+    }
+    let t = [share * maxf(c[0] - cut.over[0], 0.0), share * maxf(c[1] - cut.over[1], 0.0), share * maxf(c[2] - cut.over[2], 0.0)];
+    ([c[0] - t[0], c[1] - t[1], c[2] - t[2]], t)
 }
 
 /// A pixel's weight in its block's near part: 0 at a 1 px near CoC radius, 1 at 3 px.
@@ -285,10 +320,9 @@ fn near_weight(r: f32) -> f32 {
 /// The 2x2 reduction at (`hx`, `hy`): the near part and the rest as two samples, so a blurred
 /// foreground's silhouette keeps its own colour and radius through the reduction without being
 /// inflated to the whole block (its coverage says how much of the block it is), and no threshold
-/// pops as the focus moves.
-fn block<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32) -> Block {
+/// pops as the focus moves. Each pixel's colour is taken less what `cut` takes out of it.
+fn block<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32, cut: Cut) -> Block {
     let cap = p.max_radius as f32;
-    let mut sum = [0.0f32; 3];
     let mut sum_r = 0.0f32;
     let mut count = 0u32;
     let mut centre = [0.0f32; 2];
@@ -297,7 +331,8 @@ fn block<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32) -
     let mut near_w = 0.0f32;
     let mut rest = [0.0f32; 4];
     let mut rest_b = 0.0f32;
-    let (mut low, mut high) = (0.0f32, 0.0f32);
+    let mut taken = [0.0f32; 3];
+    let mut taken_centre = [0.0f32; 4];
     let mut k = 0u32;
     while k < 4 {
         let x = 2 * hx + k % 2;
@@ -305,16 +340,17 @@ fn block<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32) -
         if x < p.width && y < p.height {
             if let Some((c, z)) = sample(color, depth, y * p.width + x) {
                 let r = signed_radius(&p.lens, z, cap);
-                sum = [sum[0] + c[0], sum[1] + c[1], sum[2] + c[2]];
+                let (c, t) = cut_pixel(c, cut, k);
+                taken = [taken[0] + t[0], taken[1] + t[1], taken[2] + t[2]];
+                let l = luminance(t);
+                taken_centre = [
+                    taken_centre[0] + l * (x as f32 + 0.5),
+                    taken_centre[1] + l * (y as f32 + 0.5),
+                    taken_centre[2] + l * r,
+                    taken_centre[3] + l,
+                ];
                 sum_r += r;
                 centre = [centre[0] + x as f32 + 0.5, centre[1] + y as f32 + 0.5];
-                if count == 0 {
-                    low = r;
-                    high = r;
-                } else {
-                    low = minf(low, r);
-                    high = maxf(high, r);
-                }
                 count += 1;
                 let w = near_weight(r);
                 near = [near[0] + w * c[0], near[1] + w * c[1], near[2] + w * c[2]];
@@ -334,22 +370,19 @@ fn block<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32) -
     if count == 0 {
         let z = [0.0f32; 3];
         return Block {
-            colour: z,
-            radius: f32::NAN,
             near: z,
             coverage: 0.0,
             near_radius: 0.0,
             far: z,
             far_radius: f32::NAN,
             count,
-            centre,
-            low,
-            high,
+            taken: z,
+            taken_centre: [0.0; 2],
+            taken_radius: 0.0,
         };
     }
     let n = count as f32;
     let inv = 1.0 / n;
-    let colour = [sum[0] * inv, sum[1] * inv, sum[2] * inv];
     let radius = 0.5 * sum_r * inv;
     let rest_w = n - near_w;
     let (far, far_radius) = if rest_w > 0.0 && rest_b > 0.0 {
@@ -366,61 +399,136 @@ fn block<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32) -
     };
     // Where every pixel is wholly near, the rest is empty (its radius the near one).
     let coverage = if rest_w > 0.0 { near_w * inv } else { 1.0 };
-    Block { colour, radius, near, coverage, near_radius, far, far_radius, count, centre: [centre[0] * inv, centre[1] * inv], low, high }
+    let centre = [centre[0] * inv, centre[1] * inv];
+    let (taken_centre, taken_radius) = if taken_centre[3] > 0.0 {
+        let i = 1.0 / taken_centre[3];
+        ([taken_centre[0] * i, taken_centre[1] * i], taken_centre[2] * i)
+    } else {
+        (centre, 2.0 * radius)
+    };
+    Block { near, coverage, near_radius, far, far_radius, count, taken, taken_centre, taken_radius }
 }
 
-/// The share of a block's colour above its ring of 12 neighbouring pixels (the 4x4 around it) that
-/// the highlight path scatters, and that excess (per channel, never negative): 0 unless the block
-/// is bright against its neighbours, blurred by at least [`HIGHLIGHT_MIN_RADIUS`] everywhere, and of
-/// one side of the focus plane; continuous ramps in between.
-fn highlight<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32, b: &Block) -> (f32, [f32; 3]) {
-    if b.count == 0 {
-        return (0.0, [0.0; 3]);
-    }
-    let smallest = if b.low > 0.0 {
-        b.low
-    } else if b.high < 0.0 {
-        -b.high
-    } else {
-        0.0
-    };
-    let blur = saturate(smallest - HIGHLIGHT_MIN_RADIUS);
-    if blur <= 0.0 {
-        return (0.0, [0.0; 3]);
-    }
+/// What the highlight path takes out of block (`hx`, `hy`): for each of its pixels, the share of
+/// its excess over the background that is scattered, 0 unless the pixel is bright against the
+/// background and blurred by at least [`HIGHLIGHT_MIN_RADIUS`]; continuous ramps in between. The
+/// background is the ring of 12 pixels around the block (the 4x4 around it) less the pixels of
+/// that ring more than [`HIGHLIGHT_CONTRAST`] times as bright as its darkest and as
+/// `HIGHLIGHT_CONTRAST * HIGHLIGHT_MIN_EXCESS`: an emitter a few pixels wide that reaches past the
+/// block lights part of its ring, which must not count as what it stands out from (with the plain
+/// mean, a 3-pixel emitter across two blocks was bright against neither). Colours below that bound
+/// are never left out. Each pixel is judged alone, so an emitter pixel in a block with its
+/// background (at another depth, maybe the other side of the focus plane) is still taken, and the
+/// disc has the CoC of what was taken.
+fn highlight<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32) -> Cut {
+    // Twice over the ring: its darkest pixel, then the mean of what is not much brighter.
+    let mut darkest = f32::MAX;
     let mut ring = [0.0f32; 3];
     let mut n = 0u32;
+    let mut pass = 0u32;
+    while pass < 2 {
+        let bound = HIGHLIGHT_CONTRAST * maxf(darkest, HIGHLIGHT_MIN_EXCESS);
+        let mut k = 0u32;
+        while k < 16 {
+            let (i, j) = (k % 4, k / 4);
+            let inner = (i == 1 || i == 2) && (j == 1 || j == 2);
+            let x = 2 * hx as i32 - 1 + i as i32;
+            let y = 2 * hy as i32 - 1 + j as i32;
+            if !inner && x >= 0 && y >= 0 && (x as u32) < p.width && (y as u32) < p.height {
+                if let Some((c, _)) = sample(color, depth, y as u32 * p.width + x as u32) {
+                    let l = luminance(c);
+                    if pass == 0 {
+                        darkest = minf(darkest, l);
+                    } else if l <= bound {
+                        ring = [ring[0] + c[0], ring[1] + c[1], ring[2] + c[2]];
+                        n += 1;
+                    }
+                }
+            }
+            k += 1;
+        }
+        pass += 1;
+    }
+    if n == 0 {
+        return NO_CUT;
+    }
+    let inv = 1.0 / n as f32;
+    let ring = [ring[0] * inv, ring[1] * inv, ring[2] * inv];
+    let lr = luminance(ring);
+    let mut cut = Cut { share: [0.0; 4], over: ring };
     let mut k = 0u32;
-    while k < 16 {
-        let (i, j) = (k % 4, k / 4);
-        let inner = (i == 1 || i == 2) && (j == 1 || j == 2);
-        let x = 2 * hx as i32 - 1 + i as i32;
-        let y = 2 * hy as i32 - 1 + j as i32;
-        if !inner && x >= 0 && y >= 0 && (x as u32) < p.width && (y as u32) < p.height {
-            if let Some((c, _)) = sample(color, depth, y as u32 * p.width + x as u32) {
-                ring = [ring[0] + c[0], ring[1] + c[1], ring[2] + c[2]];
-                n += 1;
+    while k < 4 {
+        let x = 2 * hx + k % 2;
+        let y = 2 * hy + k / 2;
+        if x < p.width && y < p.height {
+            if let Some((c, z)) = sample(color, depth, y * p.width + x) {
+                let blur = saturate((absf(signed_radius(&p.lens, z, p.max_radius as f32)) - HIGHLIGHT_MIN_RADIUS) / HIGHLIGHT_RAMP);
+                let excess = [maxf(c[0] - ring[0], 0.0), maxf(c[1] - ring[1], 0.0), maxf(c[2] - ring[2], 0.0)];
+                let (l, le) = (luminance(c), luminance(excess));
+                let contrast = if l >= 2.0 * HIGHLIGHT_CONTRAST * lr {
+                    1.0
+                } else {
+                    saturate((l - HIGHLIGHT_CONTRAST * lr) / (HIGHLIGHT_CONTRAST * lr))
+                };
+                let bright = saturate((le - HIGHLIGHT_MIN_EXCESS) / HIGHLIGHT_MIN_EXCESS);
+                cut.share[k as usize] = blur * contrast * bright;
             }
         }
         k += 1;
     }
-    if n == 0 {
-        return (0.0, [0.0; 3]);
+    cut
+}
+
+/// The signed radius (pixels) of the disc that draws what a cut took out of block `b`: the CoC of
+/// that light, at least half a pixel (a disc of one pixel).
+#[inline]
+fn disc_radius(b: &Block) -> f32 {
+    let r = b.taken_radius;
+    if r < 0.0 { minf(r, -0.5) } else { maxf(r, 0.5) }
+}
+
+/// Stores the 9 words of a block's two samples at word `at` of `half`.
+#[inline]
+fn store_block<M: Mem>(half: &mut M, at: u32, b: &Block) {
+    let words = [b.near[0], b.near[1], b.near[2], b.coverage, b.far[0], b.far[1], b.far[2], b.near_radius, b.far_radius];
+    let mut w = 0usize;
+    while w < 9 {
+        half.store(at + w as u32, words[w].to_bits());
+        w += 1;
     }
-    let inv = 1.0 / n as f32;
-    let ring = [ring[0] * inv, ring[1] * inv, ring[2] * inv];
-    let c = b.colour;
-    let excess = [maxf(c[0] - ring[0], 0.0), maxf(c[1] - ring[1], 0.0), maxf(c[2] - ring[2], 0.0)];
-    let (l, lr, le) = (luminance(c), luminance(ring), luminance(excess));
-    let contrast =
-        if l >= 2.0 * HIGHLIGHT_CONTRAST * lr { 1.0 } else { saturate((l - HIGHLIGHT_CONTRAST * lr) / (HIGHLIGHT_CONTRAST * lr)) };
-    let bright = saturate((le - HIGHLIGHT_MIN_EXCESS) / HIGHLIGHT_MIN_EXCESS);
-    (blur * contrast * bright, excess)
+}
+
+/// Copies the 2x2 pixels of block (`hx`, `hy`) from `color` to `fine` less what `cut` takes out of
+/// them: the colours the full-resolution path reads. An unusable pixel is copied as it is, so it
+/// stays unusable there.
+fn store_fine<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, fine: &mut M, hx: u32, hy: u32, cut: Cut) {
+    let mut k = 0u32;
+    while k < 4 {
+        let x = 2 * hx + k % 2;
+        let y = 2 * hy + k / 2;
+        if x < p.width && y < p.height {
+            let i = y * p.width + x;
+            let mut words = [color.load(3 * i), color.load(3 * i + 1), color.load(3 * i + 2)];
+            if cut.share[k as usize] > 0.0 {
+                if let Some((c, _)) = sample(color, depth, i) {
+                    let (c, _) = cut_pixel(c, cut, k);
+                    words = [c[0].to_bits(), c[1].to_bits(), c[2].to_bits()];
+                }
+            }
+            fine.store(3 * i, words[0]);
+            fine.store(3 * i + 1, words[1]);
+            fine.store(3 * i + 2, words[2]);
+        }
+        k += 1;
+    }
 }
 
 /// One workgroup a tile (8x8 half-resolution pixels): the 2x2 reduction into `half`, the tile's
 /// largest near-field radius (half-resolution pixels) into `tiles`, and its highlights (at most
-/// [`HIGHLIGHTS_PER_TILE`], in pixel order) into `bright`, their excess taken out of `half`.
+/// [`HIGHLIGHTS_PER_TILE`], in pixel order) into `bright`, their excess taken out of `half` and
+/// out of the full-resolution colours copied into `fine`; the highlights beyond a tile's cap are
+/// added to word [`STATS_CAPPED`] of `stats`.
+#[allow(clippy::too_many_arguments)]
 pub fn downsample_pass<G: Group, M: Mem>(
     g: &mut G,
     p: &RingGatherParams,
@@ -430,6 +538,8 @@ pub fn downsample_pass<G: Group, M: Mem>(
     mut half: M,
     mut tiles: M,
     mut bright: M,
+    mut fine: M,
+    mut stats: M,
 ) {
     let [tx, ty, _] = g.workgroup_id();
     let (hw, hh) = (p.half_width(), p.half_height());
@@ -440,19 +550,14 @@ pub fn downsample_pass<G: Group, M: Mem>(
         let mut flagged = 0u32;
         let mut reach = 0.0f32;
         if hx < hw && hy < hh {
-            let b = block(p, &color, &depth, hx, hy);
-            let at = HALF_WORDS * (hy * hw + hx);
-            let words = [b.near[0], b.near[1], b.near[2], b.coverage, b.far[0], b.far[1], b.far[2], b.near_radius, b.far_radius];
-            let mut w = 0usize;
-            while w < 9 {
-                half.store(at + w as u32, words[w].to_bits());
-                w += 1;
-            }
+            let b = block(p, &color, &depth, hx, hy, NO_CUT);
+            store_block(&mut half, HALF_WORDS * (hy * hw + hx), &b);
             if b.count > 0 {
                 near = maxf(maxf(-b.near_radius, -b.far_radius), 0.0);
-                if highlight(p, &color, &depth, hx, hy, &b).0 > 0.0 {
+                let cut = highlight(p, &color, &depth, hx, hy);
+                if cut.any() {
                     flagged = 1;
-                    reach = absf(2.0 * b.radius);
+                    reach = absf(disc_radius(&block(p, &color, &depth, hx, hy, cut)));
                 }
             }
         }
@@ -468,39 +573,40 @@ pub fn downsample_pass<G: Group, M: Mem>(
     g.each(|lid| {
         let slot = sh[slots + lid as usize];
         let own = if lid == 0 { slot } else { slot - sh[slots + lid as usize - 1] };
+        let hx = tx * TILE + lid % TILE;
+        let hy = ty * TILE + lid / TILE;
+        let mut cut = NO_CUT;
         if own == 1 && slot <= HIGHLIGHTS_PER_TILE {
-            let hx = tx * TILE + lid % TILE;
-            let hy = ty * TILE + lid / TILE;
-            let b = block(p, &color, &depth, hx, hy);
-            let (share, excess) = highlight(p, &color, &depth, hx, hy, &b);
-            // A highlight's pixels are all near or all not (its CoC is one side of the focus
-            // plane): the excess comes out of whichever part holds the block.
-            let at = HALF_WORDS * (hy * hw + hx) + if b.coverage > 0.0 { 0 } else { 4 };
-            let part = if b.coverage > 0.0 { b.near } else { b.far };
-            let mut ch = 0u32;
-            while ch < 3 {
-                let kept = part[ch as usize] - share * excess[ch as usize];
-                half.store(at + ch, maxf(kept, 0.0).to_bits());
-                ch += 1;
-            }
-            // The excess's energy (the block's pixels times the excess) spread over the disc.
-            let radius = 2.0 * b.radius;
-            let scale = share * b.count as f32 / disc_weight_sum(b.centre[0], b.centre[1], absf(radius));
+            cut = highlight(p, &color, &depth, hx, hy);
+            // The block again, each pixel less its excess over the background: the prefiltered
+            // input of the gather, which the disc's energy comes out of exactly.
+            let b = block(p, &color, &depth, hx, hy, cut);
+            store_block(&mut half, HALF_WORDS * (hy * hw + hx), &b);
+            // What was taken out, spread over the disc of the block's CoC, centred where its light was.
+            let radius = disc_radius(&b);
+            let (cx, cy) = (b.taken_centre[0], b.taken_centre[1]);
+            let scale = 1.0 / disc_weight_sum(cx, cy, absf(radius));
             let h = record + 2 + HIGHLIGHT_WORDS * (slot - 1);
-            bright.store(h, b.centre[0].to_bits());
-            bright.store(h + 1, b.centre[1].to_bits());
+            bright.store(h, cx.to_bits());
+            bright.store(h + 1, cy.to_bits());
             bright.store(h + 2, radius.to_bits());
-            bright.store(h + 3, (excess[0] * scale).to_bits());
-            bright.store(h + 4, (excess[1] * scale).to_bits());
-            bright.store(h + 5, (excess[2] * scale).to_bits());
+            bright.store(h + 3, (b.taken[0] * scale).to_bits());
+            bright.store(h + 4, (b.taken[1] * scale).to_bits());
+            bright.store(h + 5, (b.taken[2] * scale).to_bits());
             bright.store(h + 6, 0);
             bright.store(h + 7, 0);
+        }
+        if hx < hw && hy < hh {
+            store_fine(p, &color, &depth, &mut fine, hx, hy, cut);
         }
         if lid == 63 {
             tiles.store(ty * p.tiles_x() + tx, sh[m + 63]);
             let n = sh[slots + 63];
             bright.store(record, if n < HIGHLIGHTS_PER_TILE { n } else { HIGHLIGHTS_PER_TILE });
             bright.store(record + 1, sh[widest + 63]);
+            if n > HIGHLIGHTS_PER_TILE {
+                stats.atomic_add(STATS_CAPPED, n - HIGHLIGHTS_PER_TILE);
+            }
         }
     });
 }
@@ -870,9 +976,10 @@ pub const FINE_REACH: f32 = 1.5;
 
 /// One invocation a pixel of an 8x8 tile: its own colour, the background field by its CoC, the
 /// far highlights' discs, the near field over them, the near highlights' discs on top, into `out`
-/// (3 words a pixel).
+/// (3 words a pixel). The pixels' colours come from `fine`: the input less what the highlight path
+/// took out of it.
 #[allow(clippy::too_many_arguments)]
-pub fn composite_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, color: M, depth: M, fields: M, bright: M, dilated: M, mut out: M) {
+pub fn composite_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, fine: M, depth: M, fields: M, bright: M, dilated: M, mut out: M) {
     let [wx, wy, _] = g.workgroup_id();
     let (hw, hh) = (p.half_width(), p.half_height());
     g.each(|lid| {
@@ -914,12 +1021,12 @@ pub fn composite_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, color: 
         let i = y * p.width + x;
         let mut base = [0.0f32; 3];
         let mut own = f32::NAN;
-        if let Some((c, z)) = sample(&color, &depth, i) {
+        if let Some((c, z)) = sample(&fine, &depth, i) {
             own = signed_radius(&p.lens, z, p.max_radius as f32);
             // Below a 1 px radius the full-resolution gather of the 3x3 pixels around, from 2 px
             // the background field, a blend between.
             let t = saturate(absf(own) - 1.0);
-            base = if t < 1.0 { fine_gather(p, &color, &depth, x, y, c, own) } else { c };
+            base = if t < 1.0 { fine_gather(p, &fine, &depth, x, y, c, own) } else { c };
             if t > 0.0 && back_weight > 0.0 {
                 let inv = 1.0 / back_weight;
                 let mut ch = 0usize;
@@ -947,8 +1054,8 @@ pub fn composite_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, color: 
 }
 
 kernel!(
-    /// Half-resolution colour and signed CoC, each tile's largest near-field radius and its highlights.
-    RING_GATHER_DOWNSAMPLE = ring_gather_downsample [64] (RingGatherParams) shared [u32; 6 * 64] { color, depth, half, tiles, bright } reads { color, depth } => downsample_pass
+    /// Half-resolution colour and signed CoC, each tile's largest near-field radius and its highlights, taken out of the full-resolution colours.
+    RING_GATHER_DOWNSAMPLE = ring_gather_downsample [64] (RingGatherParams) shared [u32; 6 * 64] { color, depth, half, tiles, bright, fine, stats } reads { color, depth } => downsample_pass
 );
 kernel!(
     /// Each tile's near-field radius dilated over the tiles it reaches, and its highlight reach.
@@ -960,7 +1067,7 @@ kernel!(
 );
 kernel!(
     /// The full-resolution composite of the pixel, the background field, the near field and the highlights' discs.
-    RING_GATHER_COMPOSITE = ring_gather_composite [64] (RingGatherParams) { color, depth, fields, bright, dilated, out } reads { color, depth, fields, bright, dilated } => composite_pass
+    RING_GATHER_COMPOSITE = ring_gather_composite [64] (RingGatherParams) { fine, depth, fields, bright, dilated, out } reads { fine, depth, fields, bright, dilated } => composite_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

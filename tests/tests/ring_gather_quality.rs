@@ -3,8 +3,9 @@
 //! keep their energy (the highlight path) on both backends, and a focus pull without flicker.
 //! Bounds sit under the margins measured (see `docs/measurements.md`).
 
-use dof::backend::CpuBackend;
+use dof::backend::{Backend, CpuBackend};
 use dof::eval::temporal::temporal_psnr;
+use dof::frame::{DofContext, Frame, RingGatherContext, RingGatherContextDesc};
 use dof::io::tonemap::tonemap_image;
 use dof::layers::RgbImage;
 use dof::methods::gather::gather;
@@ -74,6 +75,53 @@ fn a_sub_pixel_highlight_becomes_an_even_disc_that_keeps_its_energy() {
     }
 }
 
+/// An emitter of 1 to 3 pixels a side with a CoC radius of 1.5 or 2.5 px in front of a background
+/// blurred by 9 px (the case of `highlights`): below Unreal's 3 px threshold, but drawn as a disc
+/// at full resolution that keeps its energy wherever it sits on the half-resolution grid. The same
+/// on Vulkan, bit for bit.
+#[test]
+fn a_small_emitter_before_a_blurred_background_keeps_its_energy() {
+    let (w, h) = (48u32, 48u32);
+    let (_, _, lens) = emitter(w, h, 0, 0);
+    let mut vk = vulkan();
+    for z in [2.342f32, 2.644] {
+        for side in 1..=3u32 {
+            for offset in [(0u32, 0u32), (1, 0), (1, 1)] {
+                let (mut img, mut depth, _) = emitter(w, h, 0, 0);
+                img.data[0] = [0.05, 0.05, 0.05];
+                for y in 0..side {
+                    for x in 0..side {
+                        let i = ((20 + offset.1 + y) * w + 20 + offset.0 + x) as usize;
+                        img.data[i] = [4000.0, 3000.0, 2000.0];
+                        depth[i] = z;
+                    }
+                }
+                let out = ring_gather(&mut CpuBackend::new(), &img, &depth, &lens, &defaults()).unwrap();
+                let given: f64 = img.data.iter().map(|p| p[0] as f64).sum();
+                let kept: f64 = out.image.data.iter().map(|p| p[0] as f64).sum();
+                eprintln!(
+                    "CoC radius {:.2} px, {side}x{side} at {offset:?}: energy {kept:.1} of {given:.1} ({:+.3}%)",
+                    lens.coc_radius_px(z),
+                    100.0 * (kept / given - 1.0)
+                );
+                assert!((kept / given - 1.0).abs() < 0.01, "CoC {z} m, {side}x{side} at {offset:?}: {kept} of {given}");
+                // Nothing beyond the disc's soft edge but the background's own blur.
+                let (cx, cy) = ((20 + offset.0) as f32 + 0.5 * side as f32, (20 + offset.1) as f32 + 0.5 * side as f32);
+                for i in 0..w * h {
+                    let (px, py) = ((i % w) as f32 + 0.5 - cx, (i / w) as f32 + 0.5 - cy);
+                    let far = (px * px + py * py).sqrt() > lens.coc_radius_px(z) + 0.5 * side as f32 + 1.5;
+                    assert!(!far || out.image.data[i as usize][0] < 1.0, "pixel {i}: {:?}", out.image.data[i as usize]);
+                }
+                if let Some(vk) = vk.as_mut() {
+                    let on_vk = ring_gather(vk, &img, &depth, &lens, &defaults()).unwrap();
+                    assert_clean(vk);
+                    assert_eq!(on_vk.image.data, out.image.data, "CoC {z} m, {side}x{side} at {offset:?}");
+                }
+            }
+        }
+    }
+}
+
 /// More highlights than a tile holds: the rest stay in the gather whole, so the energy is kept.
 #[test]
 fn highlights_beyond_a_tiles_capacity_stay_in_the_gather() {
@@ -92,21 +140,47 @@ fn highlights_beyond_a_tiles_capacity_stay_in_the_gather() {
     let (kept, given) = (sum(&out.image), sum(&img));
     assert!(kept > 0.97 * given && kept < 1.001 * given, "{kept} of {given}");
     assert!(out.image.data.iter().all(|p| p.iter().all(|c| c.is_finite() && *c >= 0.0)));
+    // The context's report counts the 8 beyond the tile's 8, with no readback in the frame.
+    let mut cpu = CpuBackend::new();
+    let mut ctx = RingGatherContext::new(&mut cpu, &RingGatherContextDesc::new(w, h, 1)).unwrap();
+    let slots: Vec<u32> =
+        img.data.iter().zip(&depth).flat_map(|(c, z)| [c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]).collect();
+    let input = cpu.create_buffer(slots.len() as u64, "input").unwrap();
+    let counts = cpu.create_buffer((w * h) as u64, "counts").unwrap();
+    let output = cpu.create_buffer(3 * (w * h) as u64, "output").unwrap();
+    cpu.write_buffer(input, 0, &slots).unwrap();
+    cpu.write_buffer(counts, 0, &vec![1u32; (w * h) as usize]).unwrap();
+    for _ in 0..2 {
+        let before = cpu.counters();
+        ctx.record(&mut cpu, &Frame::layers(w, h, 1, lens, input, counts, output)).unwrap();
+        cpu.submit().unwrap();
+        let spent = cpu.counters().since(&before);
+        assert_eq!((spent.allocations, spent.readbacks, spent.uploads), (0, 0, 0));
+        let report = ctx.report(&mut cpu).unwrap();
+        assert_eq!(report.figures["highlights_capped"], 8.0, "{}", report.summary);
+        assert!(report.summary.contains("8 highlights gathered"), "{}", report.summary);
+    }
+    ctx.destroy(&mut cpu);
 }
 
 /// Inside the partial-occlusion region the ring gather stays within 2 dB of the exhaustive gather
 /// (Riguer et al. 2003) on `railing` and `fence` at 320x180, the scenes whose foreground crosses the
-/// frame. `RING_REGION=WxH` measures every built-in scene at that size instead (64-spp references),
-/// as `docs/measurements.md` reports.
+/// frame, and on `highlights`, whose emitters of a few pixels' blur the highlight path must keep.
+/// `RING_REGION=WxH` measures every built-in scene at that size instead (64-spp references), as
+/// `docs/measurements.md` reports; `RING_SCENES=a,b` picks scenes.
 #[test]
 fn close_to_the_exhaustive_gather_in_the_partial_occlusion_region() {
-    let (size, names): ((u32, u32), Vec<&str>) = match std::env::var("RING_REGION").ok().and_then(|v| {
+    let (size, mut names): ((u32, u32), Vec<&str>) = match std::env::var("RING_REGION").ok().and_then(|v| {
         let (w, h) = v.split_once('x')?;
         Some((w.parse().ok()?, h.parse().ok()?))
     }) {
         Some(size) => (size, dof::scene::builtin_names().to_vec()),
-        None => ((320, 180), vec!["railing", "fence"]),
+        None => ((320, 180), vec!["railing", "fence", "highlights"]),
     };
+    let picked = std::env::var("RING_SCENES").unwrap_or_default();
+    if !picked.is_empty() {
+        names.retain(|n| picked.split(',').any(|p| p == *n));
+    }
     let mut missed = Vec::new();
     for name in names {
         let scene = builtin(name).unwrap().with_size(size.0, size.1);

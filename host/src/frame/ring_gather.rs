@@ -13,8 +13,8 @@ use super::io::{
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::ring_gather::{
-    BRIGHT_TILE_WORDS, DILATED_WORDS, FIELD_WORDS, HALF_WORDS, RING_GATHER_DILATE, RingGatherParams, ring_gather, ring_gather_composite,
-    ring_gather_dilate, ring_gather_downsample,
+    BRIGHT_TILE_WORDS, DILATED_WORDS, FIELD_WORDS, HALF_WORDS, HIGHLIGHTS_PER_TILE, RING_GATHER_DILATE, RingGatherParams, STATS_CAPPED,
+    ring_gather, ring_gather_composite, ring_gather_dilate, ring_gather_downsample,
 };
 
 /// What engines ship by default: about five rings (Unreal Engine's Diaphragm DoF), 91 samples a
@@ -90,6 +90,9 @@ struct Passes {
     /// The front layer: 3 words a pixel, and its depth.
     color: BufferId,
     depth: BufferId,
+    /// The front layer's colours less what the highlight path scatters (3 words a pixel): what the
+    /// full-resolution path reads.
+    fine: BufferId,
     /// Half-resolution colour and signed CoC ([`HALF_WORDS`] a half-resolution pixel).
     half: BufferId,
     /// Each tile's largest near-field radius, then dilated (with its highlight reach,
@@ -107,9 +110,9 @@ pub struct RingGatherContext {
     desc: RingGatherContextDesc,
     passes: Passes,
     /// Per frame in flight, the options its frame ran with (its report) and, on the device, the
-    /// count of clamped input colours.
+    /// count of clamped input colours and of the highlights left in the gather by a tile's cap.
     in_flight: InFlight<RingGatherOptions>,
-    clamped: Vec<BufferId>,
+    stats: Vec<BufferId>,
     io: Option<ImageIo>,
     owned: Owned,
 }
@@ -127,18 +130,19 @@ impl RingGatherContext {
             let passes = Passes {
                 color: owned.make(backend, 3 * pixels, "ring-gather/color")?,
                 depth: owned.make(backend, pixels, "ring-gather/depth")?,
+                fine: owned.make(backend, 3 * pixels, "ring-gather/fine")?,
                 half: owned.make(backend, HALF_WORDS as u64 * half, "ring-gather/half")?,
                 tiles: owned.make(backend, tiles, "ring-gather/tiles")?,
                 dilated: owned.make(backend, DILATED_WORDS as u64 * tiles, "ring-gather/dilated")?,
                 bright: owned.make(backend, BRIGHT_TILE_WORDS as u64 * tiles, "ring-gather/bright")?,
                 fields: owned.make(backend, FIELD_WORDS as u64 * half, "ring-gather/fields")?,
             };
-            let clamped = per_frame(&mut owned, backend, desc.frames_in_flight, 1, "ring-gather/clamped")?;
+            let stats = per_frame(&mut owned, backend, desc.frames_in_flight, 2, "ring-gather/stats")?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
-            Ok((passes, clamped, io))
+            Ok((passes, stats, io))
         })();
-        let ((passes, clamped, io), owned) = owned.or_free(backend, made)?;
-        let ctx = RingGatherContext { desc: desc.clone(), passes, in_flight, clamped, io, owned };
+        let ((passes, stats, io), owned) = owned.or_free(backend, made)?;
+        let ctx = RingGatherContext { desc: desc.clone(), passes, in_flight, stats, io, owned };
         let mut kernels = dof_shaders::ring_gather::KERNELS.to_vec();
         kernels.extend(dof_shaders::frame_io::KERNELS);
         kernels.extend(dof_shaders::radiance::KERNELS);
@@ -181,18 +185,22 @@ impl RingGatherContext {
         let output = output_buffer(f, self.io.as_ref())?;
         let b = &self.passes;
         record_front(backend, f, slots, b.color, b.depth)?;
-        record_clamp_count(backend, f, slots, 1, self.clamped[self.in_flight.next()], 0)?;
+        let stats = self.stats[self.in_flight.next()];
+        record_clamp_count(backend, f, slots, 1, stats, 0)?;
+        backend.fill(stats, STATS_CAPPED as u64, 1, 0, "ring-gather/capped")?;
         let p =
             RingGatherParams { width: f.width, height: f.height, rings: d.options.rings, max_radius: d.options.max_radius, lens: f.lens };
         let tile_groups = [p.tiles_x(), p.tiles_y(), 1];
-        let (color, depth, half, tiles, bright, dilated, fields) = (b.color, b.depth, b.half, b.tiles, b.bright, b.dilated, b.fields);
-        backend.run(ring_gather_downsample::Bindings { color, depth, half, tiles, bright }, tile_groups, &p, "ring-gather/downsample")?;
+        let (color, depth, fine, half, tiles, bright, dilated, fields) =
+            (b.color, b.depth, b.fine, b.half, b.tiles, b.bright, b.dilated, b.fields);
+        let downsample = ring_gather_downsample::Bindings { color, depth, half, tiles, bright, fine, stats };
+        backend.run(downsample, tile_groups, &p, "ring-gather/downsample")?;
         let tile_count = p.tiles_x() as u64 * p.tiles_y() as u64;
         let dilate = ring_gather_dilate::Bindings { tiles, bright, dilated };
         backend.run(dilate, groups_for(&RING_GATHER_DILATE, tile_count), &p, "ring-gather/dilate")?;
         backend.run(ring_gather::Bindings { half, dilated, fields }, tile_groups, &p, "ring-gather")?;
         let pixel_groups = [f.width.div_ceil(8), f.height.div_ceil(8), 1];
-        let composite = ring_gather_composite::Bindings { color, depth, fields, bright, dilated, out: output };
+        let composite = ring_gather_composite::Bindings { fine, depth, fields, bright, dilated, out: output };
         backend.run(composite, pixel_groups, &p, "ring-gather/composite")?;
         record_output(backend, f, self.io.as_ref())
     }
@@ -217,11 +225,18 @@ impl DofContext for RingGatherContext {
     fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
         self.owned.check(backend)?;
         let (slot, o) = self.in_flight.slot(frames_ago)?;
-        let clamped = backend.read_buffer(self.clamped[slot], 0, 1)?[0];
+        let words = backend.read_buffer(self.stats[slot], 0, 2)?;
+        let (clamped, capped) = (words[0], words[STATS_CAPPED as usize]);
         let samples = dof_shaders::ring_gather::samples(o.rings);
+        // Highlights beyond a tile's cap are gathered, not lost: the report says how many.
+        let capped_summary = if capped == 0 {
+            String::new()
+        } else {
+            format!("; {capped} highlights gathered instead of drawn as discs (more than {HIGHLIGHTS_PER_TILE} in their tile)")
+        };
         Ok(ContextReport {
             summary: format!(
-                "{} rings, {samples} samples a half-resolution pixel, CoC radius cap {} px{}",
+                "{} rings, {samples} samples a half-resolution pixel, CoC radius cap {} px{}{capped_summary}",
                 o.rings,
                 o.max_radius,
                 clamped_summary(clamped)
@@ -230,6 +245,7 @@ impl DofContext for RingGatherContext {
                 ("rings".to_string(), o.rings as f64),
                 ("samples_per_half_pixel".to_string(), samples as f64),
                 ("clamped".to_string(), clamped as f64),
+                ("highlights_capped".to_string(), capped as f64),
             ]
             .into(),
             ..Default::default()

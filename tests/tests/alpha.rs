@@ -15,14 +15,14 @@
 use std::path::PathBuf;
 
 use dof::backend::{Backend, CpuBackend};
-use dof::frame::{METHODS, MethodInfo, MethodOptions};
+use dof::frame::{Extent, METHODS, MethodInfo, MethodOptions};
 use dof::io::codecs::exr::prelude as exr;
 use dof::io::read_layered_exr;
 use dof::layers::{Fragment, LayeredImage, RgbImage};
 use dof::methods::one_shot::one_shot;
 use dof::stress::{test_lens, varied};
 use dof_shaders::lens::ThinLens;
-use dof_tests::{assert_clean, vulkan};
+use dof_tests::{ContextFrame, assert_clean, context_frames, vulkan};
 
 /// The pinhole-sized aperture: every CoC of the test lens is under 1e-4 px.
 const PINHOLE: f32 = 1e-7;
@@ -193,6 +193,45 @@ fn an_exr_with_alpha_0_everywhere_shows_its_colour() {
     assert_all(&mut CpuBackend::new(), "alpha 0 everywhere", (&image, 0), &test_lens(PINHOLE), 1e-5, |x, y| {
         colour(y as usize * w + x as usize)
     });
+}
+
+/// Alphas NaN or outside [0, 1] are clamped and counted in the reports, never silently: splatting
+/// counts them on the device (`alpha_clamped`), the other frame-API methods in their clamp count.
+#[test]
+fn bad_alphas_are_clamped_and_counted() {
+    let mut image = LayeredImage::new(16, 12, 2).unwrap();
+    let bad = [f32::NAN, -0.5, 1.5, f32::INFINITY];
+    for y in 0..12 {
+        for x in 0..16 {
+            let p = (y * 16 + x) as usize;
+            let alpha = if p % 8 == 0 { bad[(p / 8) % 4] } else { 0.5 };
+            image.push(x, y, Fragment { color: [0.2, 0.3, 0.4], alpha, depth: 1.5 }).unwrap();
+            image.push(x, y, Fragment::opaque([0.5; 3], 3.0)).unwrap();
+        }
+    }
+    let bad_count = (16 * 12 / 8) as f64;
+    let mut cpu = CpuBackend::new();
+    for m in METHODS {
+        let shot = one_shot(&mut cpu, m, &MethodOptions::default(), &image, &test_lens(0.01)).unwrap();
+        let out = &shot.image;
+        assert!(out.data.iter().flatten().all(|c| c.is_finite() && *c >= 0.0), "{}", m.name);
+        if m.name == "multilayer" {
+            assert_eq!(shot.report.figures["alpha_clamped"], bad_count, "{}", shot.report.summary);
+            assert!(shot.report.summary.contains(&format!("alpha: {bad_count} clamped")), "{}", shot.report.summary);
+        }
+        if ["layered", "raytrace"].contains(&m.name) {
+            assert!(shot.report.summary.contains(&format!("{bad_count} input values clamped")), "{}: {}", m.name, shot.report.summary);
+        }
+    }
+    // The one-shot path hands single-layer methods the flattened image (opaque; `dof render` counts
+    // the input's alphas itself); through the frame API they read the caller's slots and count the
+    // front slot's.
+    let frame = ContextFrame { image: &image, lens: test_lens(0.01), resize: None };
+    for name in ["gather", "ring-gather", "bokeh"] {
+        let extent = Extent::new(image.width, image.height, image.max_layers);
+        let (_, report) = context_frames(&mut cpu, name, &MethodOptions::default(), extent, std::slice::from_ref(&frame)).remove(0);
+        assert!(report.summary.contains(&format!("{bad_count} input values clamped")), "{name}: {}", report.summary);
+    }
 }
 
 /// A translucent scene: a noise wall, translucent panes of varied alpha in front of it (some

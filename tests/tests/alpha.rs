@@ -204,7 +204,7 @@ fn bad_alphas_are_clamped_and_counted() {
     for y in 0..12 {
         for x in 0..16 {
             let p = (y * 16 + x) as usize;
-            let alpha = if p % 8 == 0 { bad[(p / 8) % 4] } else { 0.5 };
+            let alpha = if p.is_multiple_of(8) { bad[(p / 8) % 4] } else { 0.5 };
             image.push(x, y, Fragment { color: [0.2, 0.3, 0.4], alpha, depth: 1.5 }).unwrap();
             image.push(x, y, Fragment::opaque([0.5; 3], 3.0)).unwrap();
         }

@@ -9,7 +9,7 @@
 //!   without waiting for the one before: each frame's report, read after its fence, is its own.
 //! - A frame's report is refused once a later recording has taken its slot, and where no such
 //!   frame was recorded; a one-frame context keeps only the last.
-//! - Device bytes for 1, 2 and 3 frames in flight at 1920x1080 with 4 layers grow by the same
+//! - Device bytes for 1, 2 and 3 frames in flight at 1920x1080 with 4 layers (3 on Vulkan) grow by the same
 //!   step, under 1% of the context (printed for `docs/measurements.md`).
 
 use dof::backend::vulkan::ash::vk;
@@ -44,7 +44,8 @@ impl TwoFrames {
             let image = if m.reads == Reads::FrontLayer { image.front_layer() } else { image };
             let pixels = (w * h) as u64;
             let [fragments, counts, out] =
-                [4 * pixels * image.max_layers as u64, pixels, 3 * pixels].map(|words| b.create_buffer(words, "caller").unwrap());
+                [dof::methods::buffers::SLOT_WORDS as u64 * pixels * image.max_layers as u64, pixels, 3 * pixels]
+                    .map(|words| b.create_buffer(words, "caller").unwrap());
             b.write_buffer(fragments, 0, &slot_words(&image)).unwrap();
             b.write_buffer(counts, 0, &image.counts).unwrap();
             buffers.extend([fragments, counts, out]);
@@ -316,6 +317,8 @@ fn a_frame_in_flight_adds_only_its_report_buffers_at_1080p_on_the_cpu() {
 #[test]
 fn a_frame_in_flight_adds_only_its_report_buffers_at_1080p_on_vulkan() {
     let Some(mut vk) = vulkan() else { return };
-    bytes_per_frame_in_flight(&mut vk, Extent::new(1920, 1080, 4));
+    // 3 layers: 4 of 20-byte slots (166 MB) exceed lavapipe's 128 MiB storage-buffer range, and
+    // the single-layer contexts refuse an extent whose input could not be bound.
+    bytes_per_frame_in_flight(&mut vk, Extent::new(1920, 1080, 3));
     assert_clean(&mut vk);
 }

@@ -140,7 +140,7 @@ fn render_pass(s: &Scene, encoding: DepthEncoding, format: ImageFormat, bound: &
 /// The slots, counts and mask a peel left.
 fn read_slots(b: &mut dyn Backend, s: &dof::frame::peel::PeelSlots) -> (Vec<f32>, Vec<u32>, Vec<u32>) {
     let pixels = s.width as u64 * s.height as u64;
-    let fragments = b.read_buffer(s.fragments, 0, 4 * pixels * s.layers as u64).unwrap();
+    let fragments = b.read_buffer(s.fragments, 0, dof::methods::buffers::SLOT_WORDS as u64 * pixels * s.layers as u64).unwrap();
     let counts = b.read_buffer(s.counts, 0, pixels).unwrap();
     let mask = b.read_buffer(s.mask, 0, pixels).unwrap();
     (fragments.into_iter().map(f32::from_bits).collect(), counts, mask)
@@ -273,10 +273,16 @@ fn assert_close(got: &(Vec<f32>, Vec<u32>, Vec<u32>), want: &(Vec<f32>, Vec<u32>
     assert_eq!(got.2, want.2, "{what}: the disocclusion buffer");
     for (p, &n) in want.1.iter().enumerate() {
         for k in 0..layers as usize {
-            let at = 4 * (p * layers as usize + k);
-            for c in 0..4 {
+            let words = dof::methods::buffers::SLOT_WORDS as usize;
+            let at = words * (p * layers as usize + k);
+            for c in 0..words {
                 let (g, e) = (got.0[at + c], want.0[at + c]);
-                let tol = if c < 3 { 2f32.powi(-11) * e.abs() } else { 1e-4 * e.abs() };
+                // Colour premultiplied by alpha, both rounded to RGBA16F here; depth; alpha.
+                let tol = match c {
+                    0..3 => 2f32.powi(-10) * e.abs(),
+                    3 => 1e-4 * e.abs(),
+                    _ => 2f32.powi(-11),
+                };
                 let same = g == e || (g - e).abs() <= tol;
                 assert!(same, "{what}: pixel {p} slot {k} (of {n}) word {c}: {g} against the mesh peel's {e}");
             }

@@ -485,6 +485,8 @@ impl SplatContext {
             full_layer_slots: pixels * f.layer_count() as u64,
             dropped: c(stats::DROPPED),
             clamped: c(stats::CLAMPED),
+            alpha_clamped: c(stats::ALPHA_CLAMPED),
+            backed: c(stats::BACKED),
             sky: c(stats::SKY),
             sharp_pixels: c(stats::SHARP),
             hidden_sharp: c(stats::HIDDEN_SHARP),
@@ -565,6 +567,7 @@ impl DofContext for SplatContext {
             ("overflow_tiles", r.overflow_tiles as f64),
             ("list_pool", r.list_capacity as f64),
             ("clamped", r.clamped as f64),
+            ("alpha_clamped", r.alpha_clamped as f64),
         ];
         Ok(ContextReport {
             summary: r.summary(),

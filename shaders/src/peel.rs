@@ -178,6 +178,29 @@ pub fn next_reach(found: bool, alpha: f32, depth: f32, lens: &ThinLens, footprin
     }
 }
 
+/// Whether a fragment of coverage `alpha` hides everything behind it (a translucent one, below 1,
+/// lets the rest through; NaN counts as translucent).
+#[inline]
+pub fn is_opaque(alpha: f32) -> bool {
+    alpha >= 1.0
+}
+
+/// How many of a pixel's `count` fragments (front to back, coverage `alpha(i)` of the `i`-th) it
+/// keeps outside the disocclusion buffer: up to and including the first opaque one. An opaque front
+/// fragment is all the pixel shows in focus (Franke et al. 2018, §4.2); behind a translucent one
+/// the next fragments still show, and are kept until one hides the rest.
+#[inline]
+pub fn slots_outside_buffer(count: u32, alpha: impl Fn(u32) -> f32) -> u32 {
+    let mut i = 0;
+    while i < count {
+        if is_opaque(alpha(i)) {
+            return i + 1;
+        }
+        i += 1;
+    }
+    count
+}
+
 /// Whether a pass that found nothing at a pixel whose reach was `reach` sees the background there:
 /// only the first such pass (the reach is still finite), later ones see nothing.
 #[inline]

@@ -27,6 +27,7 @@ pub mod raytrace;
 pub mod renderer_peel;
 pub mod ring_gather;
 pub mod scan;
+pub mod slot;
 pub mod sort;
 pub mod splat;
 pub mod tonemap;

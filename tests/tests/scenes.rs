@@ -16,29 +16,6 @@ fn frame_only() -> LayerOptions {
 // ---------------------------------------------------------------------------------------------
 // Multi-layer images.
 
-/// Every pixel's fragments composited front to back ("over", straight colour times coverage), in
-/// the order of operations of `Scene::trace`.
-fn composite(layers: &LayeredImage) -> dof::layers::RgbImage {
-    let mut out = dof::layers::RgbImage::new(layers.width, layers.height);
-    for y in 0..layers.height {
-        for x in 0..layers.width {
-            let mut sum = [0.0f32; 3];
-            let mut transmit = 1.0f32;
-            for f in layers.pixel(x, y) {
-                for k in 0..3 {
-                    sum[k] += transmit * f.alpha * f.color[k];
-                }
-                transmit *= 1.0 - f.alpha;
-                if f.alpha >= 1.0 {
-                    break;
-                }
-            }
-            out.data[(y * layers.width + x) as usize] = sum;
-        }
-    }
-    out
-}
-
 fn assert_front_to_back(name: &str, layers: &LayeredImage) {
     for y in 0..layers.height {
         for x in 0..layers.width {
@@ -210,10 +187,10 @@ fn pinhole_reference_is_the_front_layer() {
     for name in builtin_names() {
         let s = builtin(name).unwrap().with_size(96, 54);
         let lens = s.thin_lens().unwrap();
-        // Enough layers for every translucent surface a pixel shows, and its composite front to
-        // back ("over"; the front fragment alone where it is opaque).
+        // Enough layers for every translucent surface a pixel shows; `front` flattens them front
+        // to back ("over"; the front fragment alone where it is opaque).
         let ml = raycast_layers(&s.scene, &s.camera, &lens, &LayerOptions { max_layers: 16, ..frame_only() }).unwrap();
-        let front = composite(&ml.layers);
+        let (front, _) = ml.layers.front();
         let exact = ReferenceOptions { spp: 1, jitter: false, ..Default::default() };
         let pin = pinhole(&s.scene, &s.camera, &exact).unwrap();
         assert_eq!(pin.image, front, "{name}: pinhole differs from the front layer");

@@ -93,7 +93,7 @@ fn the_ray_caster_keeps_a_translucent_fragment_and_what_it_does_not_hide() {
     assert!(!ml.mask[p], "the pixel lies inside the pane, away from every edge");
     assert_eq!(ml.layers.counts[p], 2, "the pane and the wall it does not hide");
     let (front, back) = (ml.layers.fragments[p * l], ml.layers.fragments[p * l + 1]);
-    assert_eq!((front.alpha, front.color), (0.35, FRONT));
+    assert_eq!((front.alpha, front.color), (0.35, FRONT.map(|c| c * 0.35)), "premultiplied colour");
     assert_eq!((back.alpha, back.color), (1.0, BACK));
     assert!((front.depth - 1.5).abs() < 1e-5 && (back.depth - 6.0).abs() < 1e-5, "{} {}", front.depth, back.depth);
     // Over the sky: the pane, then the background at infinity.

@@ -8,7 +8,8 @@
 //! `BLEND` materials: every render is depth-peeled in its own view (Everitt 2001): pass `k` keeps
 //! the nearest fragment beyond the last pass's (the rasteriser's peel, with the reach the shading
 //! pass writes) and it is composited front to back with the transmittance left in front of it
-//! ("over", Porter and Duff 1984: `sum += T·alpha·rgb`, `T *= 1 − alpha`), until an opaque surface
+//! ("over", Porter and Duff 1984: `sum += T·alpha·rgb`, `T *= 1 − alpha`, the methods' own
+//! `dof_shaders::slot::Composite`), until an opaque surface
 //! or the background ends every pixel. So blended surfaces are blended in depth order, per pixel
 //! and per lens sample, with what lies behind them. The layers are read back and composited on the
 //! host after each pass (this is the reference, not a real-time path).
@@ -26,6 +27,7 @@ use crate::scene::sampling::{concentric_disc, pixel_rng, stratified};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{is_surface, slot_kept};
 use dof_shaders::raster::mesh::ALPHA_BLEND;
+use dof_shaders::slot::{Composite, premultiply};
 use dof_shaders::raster::shade::{ACCUMULATE, LAYER, LAYER_WORDS};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -148,10 +150,10 @@ fn accumulate_blended(
         let pass = Pass::new(backend, mesh, b, pixels)?;
         let layer = b[4];
         let mut sum = vec![[0.0f64; 3]; pixels as usize];
-        let mut transmit = vec![1.0f32; pixels as usize];
+        let mut over = vec![Composite::EMPTY; pixels as usize];
         let mut times = Vec::new();
         for (i, view) in views.iter().enumerate() {
-            transmit.fill(1.0);
+            over.fill(Composite::EMPTY);
             // A finite reach: the first pass that finds a pixel's ray escaping writes the background.
             backend.fill(pass.reach, 0, pixels, 0, "accum/reach")?;
             let shade = shade_params(scene, mesh, frame, lens, view, LAYER);
@@ -164,20 +166,22 @@ fn accumulate_blended(
                 let mut open = false;
                 for (p, w) in words.as_chunks::<{ LAYER_WORDS as usize }>().0.iter().enumerate() {
                     let (alpha, depth) = (f32::from_bits(w[3]), f32::from_bits(w[4]));
-                    let t = transmit[p];
-                    if t <= 0.0 || !slot_kept(alpha, depth) {
+                    if over[p].transmit <= 0.0 || !slot_kept(alpha, depth) {
                         continue;
                     }
-                    for j in 0..3 {
-                        sum[p][j] += (t * alpha * f32::from_bits(w[j])) as f64;
-                    }
-                    transmit[p] = t * (1.0 - alpha);
+                    // The methods' own "over" (`dof_shaders::slot`), behind what this view found.
+                    over[p].add(premultiply([0, 1, 2].map(|j| f32::from_bits(w[j])), alpha), alpha);
                     // Still open: something lies beyond this translucent surface, or may.
-                    open |= transmit[p] > 0.0 && is_surface(depth);
+                    open |= over[p].transmit > 0.0 && is_surface(depth);
                 }
                 k += 1;
                 if !open {
                     break;
+                }
+            }
+            for (s, o) in sum.iter_mut().zip(&over) {
+                for j in 0..3 {
+                    s[j] += o.color[j] as f64;
                 }
             }
             if let Some(bar) = bar {

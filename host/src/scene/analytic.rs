@@ -16,6 +16,7 @@
 //!   background ([`Scene::trace`]). Closed shapes stay opaque: their inner faces would need a
 //!   radiance of their own.
 
+use dof_shaders::slot::{Composite, premultiply};
 use glam::Vec3;
 
 use super::bvh::{Aabb, Bvh};
@@ -313,21 +314,18 @@ impl Scene {
             Some(_) => {}
         }
         self.all_hits(ray, 0.0, hits);
-        let mut sum = [0.0f32; 3];
-        let mut transmit = 1.0f32;
+        // The methods' own "over" (`dof_shaders::slot`), so that the pinhole image is the ray-cast
+        // layers flattened, bit for bit.
+        let mut over = Composite::EMPTY;
         for h in hits.iter().filter(|h| !h.self_occluded) {
             let alpha = self.alpha(h.primitive);
-            let c = self.shade(ray, h);
-            for k in 0..3 {
-                sum[k] += transmit * alpha * c[k];
-            }
-            transmit *= 1.0 - alpha;
-            if alpha >= 1.0 {
-                return sum;
+            over.add(premultiply(self.shade(ray, h), alpha), alpha);
+            if over.transmit <= 0.0 {
+                return over.color;
             }
         }
-        let bg = self.lighting.background;
-        [0, 1, 2].map(|k| sum[k] + transmit * bg[k])
+        over.add(self.lighting.background, 1.0);
+        over.color
     }
 }
 

@@ -12,7 +12,7 @@
 //!    everything behind it, so a pinhole keeps one layer. At most `max_layers` are kept. Where the
 //!    ray escapes, the background ([`Scene::background`], at infinite depth) is its last fragment.
 //!    A translucent hit ([`Scene::alpha`] below 1) is kept with its opacity as the fragment's
-//!    coverage, but sets no umbra: what lies behind it stays visible through it, so only an opaque
+//!    coverage (colour premultiplied by it), but sets no umbra: what lies behind it stays visible through it, so only an opaque
 //!    fragment ends a pixel's layers early. A hit of opacity 0 shows and hides nothing: skipped.
 //! 3. **Disocclusion buffer** (§4.2). On the front layer, two 4-neighbours are a depth
 //!    discontinuity when exactly one is sky or `|z_a − z_b| > edge_depth_ratio · min(z_a, z_b)`.
@@ -26,6 +26,7 @@
 
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{covers, disk_budget, pair_radius, slots_outside_buffer};
+use dof_shaders::slot::premultiply;
 use rayon::prelude::*;
 
 use super::analytic::{Hit, Scene};
@@ -174,7 +175,7 @@ fn cast_all(scene: &Scene, frame: &CameraFrame, lens: &ThinLens, options: &Layer
                     if (n > 0 && options.umbra_threshold && hit.t < reach) || alpha <= 0.0 {
                         continue;
                     }
-                    fragments[x * l + n] = Fragment { color: scene.shade(&ray, hit), alpha, depth: hit.t };
+                    fragments[x * l + n] = Fragment { color: premultiply(scene.shade(&ray, hit), alpha), alpha, depth: hit.t };
                     n += 1;
                     if alpha < 1.0 {
                         continue; // translucent: sets no umbra

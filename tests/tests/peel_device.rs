@@ -186,9 +186,8 @@ fn translucent_layers_on(b: &mut dyn Backend) {
     let host = peel_layers(b, &panes.raster(), &camera, &lens, default_near(lens.focus_distance), &opts).unwrap();
     let frame = host.image.frame_layers();
     let l = frame.max_layers as usize;
-    let behind_pane = (0..frame.counts.len())
-        .filter(|&p| !host.image.mask[p] && frame.counts[p] >= 2 && frame.fragments[p * l].alpha < 1.0)
-        .count();
+    let behind_pane =
+        (0..frame.counts.len()).filter(|&p| !host.image.mask[p] && frame.counts[p] >= 2 && frame.fragments[p * l].alpha < 1.0).count();
     assert!(behind_pane > 100, "{behind_pane} pixels outside the buffer keep a translucent front and what lies behind");
     // Only translucent slots come before the last one outside the buffer.
     for p in (0..frame.counts.len()).filter(|&p| !host.image.mask[p]) {

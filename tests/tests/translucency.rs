@@ -8,8 +8,9 @@ use dof::backend::{Backend, CpuBackend};
 use dof::metrics::psnr;
 use dof::raster::{AccumulateOptions, accumulate, default_near};
 use dof::scene::{
-    Camera, ExportOptions, GuardBand, LayerOptions, Lighting, Material, MeshScene, MitsubaExport, MitsubaOptions, Primitive, ReferenceOptions,
-    Scene, Shape, ThinLens, Vec3, builtin, export_glb, export_mitsuba, load_gltf_slice, pinhole, raycast_layers, reference,
+    Camera, ExportOptions, GuardBand, LayerOptions, Lighting, Material, MeshScene, MitsubaExport, MitsubaOptions, Primitive,
+    ReferenceOptions, Scene, Shape, ThinLens, Vec3, builtin, export_glb, export_mitsuba, load_gltf_slice, pinhole, raycast_layers,
+    reference,
 };
 use dof_shaders::raster::mesh::{ALPHA_BLEND, MeshMaterial, MeshVertex, UNLIT};
 
@@ -26,7 +27,10 @@ fn facing_quad(x0: f32, y0: f32, x1: f32, y1: f32, z: f32) -> Shape {
 fn pane_scene(alpha: f32, pane_z: f32) -> (Scene, Camera) {
     let prims = vec![
         Primitive { shape: facing_quad(-20.0, -20.0, 20.0, 0.0, -6.0), material: Material::Emissive(BACK) },
-        Primitive { shape: facing_quad(-0.6 * pane_z, -0.3 * pane_z, 0.6 * pane_z, 0.3 * pane_z, -pane_z), material: Material::Emissive(FRONT) },
+        Primitive {
+            shape: facing_quad(-0.6 * pane_z, -0.3 * pane_z, 0.6 * pane_z, 0.3 * pane_z, -pane_z),
+            material: Material::Emissive(FRONT),
+        },
     ];
     let scene = Scene::new(prims, Lighting::default()).unwrap().with_background(SKY).unwrap().with_alpha(1, alpha).unwrap();
     (scene, Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), 60f32.to_radians(), 64, 48))
@@ -76,7 +80,11 @@ fn an_in_focus_pane_shows_alpha_front_plus_the_rest_of_what_lies_behind() {
         for (x, y, back) in [(32, 30, BACK), (32, 17, SKY)] {
             let want = over(alpha, FRONT, back);
             assert!(close(at(&p.image, x, y), want, 1e-6), "alpha {alpha} pinhole at ({x}, {y}): {:?}, want {want:?}", at(&p.image, x, y));
-            assert!(close(at(&r.image, x, y), want, 1e-5), "alpha {alpha} reference at ({x}, {y}): {:?}, want {want:?}", at(&r.image, x, y));
+            assert!(
+                close(at(&r.image, x, y), want, 1e-5),
+                "alpha {alpha} reference at ({x}, {y}): {:?}, want {want:?}",
+                at(&r.image, x, y)
+            );
         }
     }
 }
@@ -213,7 +221,10 @@ fn translucent_builtins_export_blend_and_a_mask() {
     let MitsubaExport::Exact(m) = export_mitsuba(&b.scene, &b.camera, &lens, &MitsubaOptions::default()).unwrap() else { panic!() };
     assert!(m.xml.contains("name=\"opacity\" value=\"0.35\"") && m.xml.contains("name=\"opacity\" value=\"0.6\""));
     let premultiplied = [0.2f32, 0.35, 0.7].map(|c| c * 0.35);
-    assert!(m.xml.contains(&format!("value=\"{}, {}, {}\"", premultiplied[0], premultiplied[1], premultiplied[2])), "pane radiance times alpha");
+    assert!(
+        m.xml.contains(&format!("value=\"{}, {}, {}\"", premultiplied[0], premultiplied[1], premultiplied[2])),
+        "pane radiance times alpha"
+    );
 }
 
 #[test]
@@ -224,8 +235,15 @@ fn the_accumulation_buffer_of_exported_panes_matches_the_exact_reference() {
     let mesh = load_gltf_slice(&export_glb(&b.scene, &b.camera, &ExportOptions::default()).unwrap()).unwrap();
     let exact = reference(&b.scene, &b.camera, &lens, &ReferenceOptions { spp: 256, ..Default::default() }).unwrap();
     let near = default_near(lens.focus_distance);
-    let acc = accumulate(&mut CpuBackend::new(), &mesh.raster(), &b.camera, &lens, near, &AccumulateOptions { samples: 64, ..Default::default() })
-        .unwrap();
+    let acc = accumulate(
+        &mut CpuBackend::new(),
+        &mesh.raster(),
+        &b.camera,
+        &lens,
+        near,
+        &AccumulateOptions { samples: 64, ..Default::default() },
+    )
+    .unwrap();
     let db = psnr(&acc.image, &exact.image).unwrap();
     eprintln!("panes 96x54: accumulation buffer (64 renders) against the exact reference (256 spp): {db:.2} dB");
     // Seen: 56.5 dB.

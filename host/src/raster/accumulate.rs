@@ -22,13 +22,13 @@ use crate::error::{Error, Result};
 use crate::layers::RgbImage;
 use crate::methods::buffers::read_rgb;
 use crate::progress::Progress;
-use crate::scene::{Camera, CameraFrame};
 use crate::scene::sampling::{concentric_disc, pixel_rng, stratified};
+use crate::scene::{Camera, CameraFrame};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{is_surface, slot_kept};
 use dof_shaders::raster::mesh::ALPHA_BLEND;
-use dof_shaders::slot::{Composite, premultiply};
 use dof_shaders::raster::shade::{ACCUMULATE, LAYER, LAYER_WORDS};
+use dof_shaders::slot::{Composite, premultiply};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AccumulateOptions {

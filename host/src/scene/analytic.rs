@@ -183,7 +183,15 @@ impl Scene {
             }
         }
         let alpha = vec![1.0; primitives.len()];
-        Ok(Scene { bvh: Bvh::build(&boxes), unbounded, primitives, lighting, light_dir: l.direction.normalize(), alpha, translucent: false })
+        Ok(Scene {
+            bvh: Bvh::build(&boxes),
+            unbounded,
+            primitives,
+            lighting,
+            light_dir: l.direction.normalize(),
+            alpha,
+            translucent: false,
+        })
     }
 
     /// The same scene with primitive `index` translucent, of opacity `alpha` (module docs). Errors on
@@ -191,7 +199,10 @@ impl Scene {
     /// shape (sphere, box).
     pub fn with_alpha(mut self, index: usize, alpha: f32) -> Result<Self> {
         let Some(p) = self.primitives.get(index) else {
-            return Err(Error::InvalidArgument(format!("no primitive {index} to make translucent ({} in the scene)", self.primitives.len())));
+            return Err(Error::InvalidArgument(format!(
+                "no primitive {index} to make translucent ({} in the scene)",
+                self.primitives.len()
+            )));
         };
         if !(0.0..=1.0).contains(&alpha) {
             return Err(Error::InvalidArgument(format!("primitive {index}: an opacity lies in [0, 1], got {alpha}")));

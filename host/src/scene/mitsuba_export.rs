@@ -159,7 +159,9 @@ impl Radiance {
         let m = |c: [f32; 3]| c.map(|v| v * k);
         match self {
             Radiance::Rgb(c) => Radiance::Rgb(m(c)),
-            Radiance::Checker { color0, color1, scale, offset } => Radiance::Checker { color0: m(color0), color1: m(color1), scale, offset },
+            Radiance::Checker { color0, color1, scale, offset } => {
+                Radiance::Checker { color0: m(color0), color1: m(color1), scale, offset }
+            }
         }
     }
 }
@@ -168,10 +170,21 @@ impl Radiance {
 /// [−1, 1], emitting on the side of `normal` (unit).
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Out {
-    Sphere { center: Vec3, radius: f32, radiance: [f32; 3] },
+    Sphere {
+        center: Vec3,
+        radius: f32,
+        radiance: [f32; 3],
+    },
     /// `alpha` below 1: translucent, a `mask` BSDF of that opacity over an emitter already scaled
     /// by it.
-    Rect { center: Vec3, half_u: Vec3, half_v: Vec3, normal: Vec3, radiance: Radiance, alpha: f32 },
+    Rect {
+        center: Vec3,
+        half_u: Vec3,
+        half_v: Vec3,
+        normal: Vec3,
+        radiance: Radiance,
+        alpha: f32,
+    },
 }
 
 impl Out {

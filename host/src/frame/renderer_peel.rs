@@ -292,8 +292,8 @@ impl RendererPeel {
         Ok(())
     }
 
-    /// Ends the frame after its last pass: unused slots reset, and only the front slot kept outside
-    /// the disocclusion buffer (when on). The slots are then [`Self::frame`]'s input.
+    /// Ends the frame after its last pass: unused slots reset, and outside the disocclusion buffer
+    /// (when on) only the slots up to the first opaque one kept. The slots are then [`Self::frame`]'s input.
     pub fn finish(&mut self, backend: &mut dyn Backend) -> Result<()> {
         self.check(backend)?;
         if self.next != Some(self.desc.max_layers) {

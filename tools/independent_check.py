@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Independent check: the project's exact reference and every method against Mitsuba 3 (Jakob et
 al. 2022) on built-in scenes that export exactly (emissive-only surfaces, the same thin lens, a box
-pixel filter; see host/src/scene/mitsuba_export.rs).
+pixel filter; translucent surfaces as a `mask` BSDF of opacity alpha over an emitter of alpha times
+the radiance, which is glTF's "over"; see host/src/scene/mitsuba_export.rs).
 
     python3 tools/independent_check.py [--scenes fence,edges] [--width 320 --height 240]
         [--spp 4096] [--reference-spp 1024] [--backend cpu] [--out out/independent]
@@ -23,7 +24,7 @@ from pathlib import Path
 
 from dof_tools import compare, dof_binary, export_scenes, psnr, render_mitsuba, require_mitsuba, run, write_exr
 
-SCENES = ["simple", "railing", "columns", "highlights", "fence", "edges"]
+SCENES = ["simple", "railing", "columns", "highlights", "fence", "edges", "panes", "foliage", "glass"]
 
 # (row name, `dof render` arguments after the scene and size)
 METHODS = [

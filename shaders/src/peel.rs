@@ -14,8 +14,8 @@
 //!   front layer): `peel_edges` gives every pixel of a depth discontinuity its tag radius
 //!   ([`pair_radius`]), `peel_span` and `peel_mask` find the pixels within that radius of an edge
 //!   pixel (the disk `dx² + dy² <= r²`, split into a row pass and a column pass: [`disk_budget`],
-//!   [`covers`]), and `peel_mask` then keeps only the front slot outside the buffer and resets every
-//!   unused slot to black at `+inf` with alpha 0;
+//!   [`covers`]), and `peel_mask` then keeps outside the buffer the slots up to the first opaque
+//!   one ([`slots_outside_buffer`]; the front slot where it is opaque) and resets every unused slot to black at `+inf` with alpha 0;
 //! - `peel_band` (one invocation per triangle) and `peel_band_end` (one invocation): the guard band
 //!   this frame's view would need (the largest CoC radius of geometry within [`MAX_GUARD_BAND`]
 //!   pixels of the frame, [`nearest_in_reach`] and [`margin_of`], the rules of the host's
@@ -178,6 +178,29 @@ pub fn next_reach(found: bool, alpha: f32, depth: f32, lens: &ThinLens, footprin
         let r = depth + lens.umbra_length(depth, depth * footprint_per_depth);
         if is_finite(r) { r } else { f32::INFINITY }
     }
+}
+
+/// Whether a fragment of coverage `alpha` hides everything behind it (a translucent one, below 1,
+/// lets the rest through; NaN counts as translucent).
+#[inline]
+pub fn is_opaque(alpha: f32) -> bool {
+    alpha >= 1.0
+}
+
+/// How many of a pixel's `count` fragments (front to back, coverage `alpha(i)` of the `i`-th) it
+/// keeps outside the disocclusion buffer: up to and including the first opaque one. An opaque front
+/// fragment is all the pixel shows in focus (Franke et al. 2018, §4.2); behind a translucent one
+/// the next fragments still show, and are kept until one hides the rest.
+#[inline]
+pub fn slots_outside_buffer(count: u32, alpha: impl Fn(u32) -> f32) -> u32 {
+    let mut i = 0;
+    while i < count {
+        if is_opaque(alpha(i)) {
+            return i + 1;
+        }
+        i += 1;
+    }
+    count
 }
 
 /// Whether a pass that found nothing at a pixel whose reach was `reach` sees the background there:
@@ -374,8 +397,13 @@ pub fn mask_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, span: M, widest: M
         mask.store(i, tagged as u32);
         let mut n = counts.load(i);
         if p.disocclusion != 0 && !tagged && n > 1 {
-            n = 1;
-            counts.store(i, 1);
+            // Outside the buffer: the slots up to the first opaque one (what a translucent front
+            // slot does not hide is seen in focus too).
+            let kept = slots_outside_buffer(n, |k| slot::load(&fragments, i * p.layers + k).alpha);
+            if kept < n {
+                n = kept;
+                counts.store(i, n);
+            }
         }
         while n < p.layers {
             slot::store(&mut fragments, i * p.layers + n, Slot { color: [0.0; 3], depth: f32::INFINITY, alpha: 0.0 });

@@ -10,7 +10,8 @@
 //!   shaded layer (5 words: r, g, b, alpha, depth), the layout `peel_append` reads, and the next
 //!   reach ([`crate::peel::next_reach`], the rule the mesh rasteriser's shading pass applies);
 //! - `peel_renderer_bound`: the reach as the bound of pass `k + 1` ([`encoded_bound`]): nothing to
-//!   discard in pass 0, everything outside the disocclusion buffer (when it is on) and where the
+//!   discard in pass 0, everything outside the disocclusion buffer (when it is on) behind an opaque
+//!   layer ([`behind_translucent`]) and where the
 //!   reach is infinite;
 //! - `peel_renderer_draw` (one invocation): the next pass's indirect draw command, zero past the
 //!   last useful pass (`peel_plan` decides).
@@ -151,12 +152,20 @@ pub fn layer_pass<G: Group, M: Mem>(g: &mut G, p: &RendererPeelParams, color: M,
     });
 }
 
+/// Whether this pass's layer was a translucent surface (`alpha < 1`): its reach is then its own depth
+/// ([`crate::peel::next_reach`]), never the umbra behind an opaque one, and the next pass goes on
+/// behind it, also outside the disocclusion buffer (`crate::peel::slots_outside_buffer`).
+#[inline]
+pub fn behind_translucent(io: &FrameIoParams, reach: f32, stored: u32) -> bool {
+    is_finite(reach) && reach == view_depth(io, depth_value(io, stored))
+}
+
 pub fn bound_pass<G: Group, M: Mem>(g: &mut G, p: &RendererPeelParams, depth: M, mask: M, mut reach: M, mut bound: M) {
     for_each_item(g, p.io.width * p.io.height, |i| {
         let b = if p.pass == 0 {
             KEEP_ALL
-        } else if p.disocclusion != 0 && mask.load(i) == 0 {
-            // Only the front slot is kept outside the buffer: nothing more to find behind it.
+        } else if p.disocclusion != 0 && mask.load(i) == 0 && !behind_translucent(&p.io, f32::from_bits(reach.load(i)), depth.load(i)) {
+            // Outside the buffer the slots end at the first opaque one: nothing more to find behind it.
             reach.store(i, f32::INFINITY.to_bits());
             DISCARD_ALL
         } else {

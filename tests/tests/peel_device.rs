@@ -1,7 +1,7 @@
 //! Depth peeling on the device (`MeshPeelContext`) against the host oracle `peel_layers` of the
 //! same commit: the same slots, counts and disocclusion buffer, bit for bit, on the CPU backend and
 //! on Vulkan (a built-in scene's glTF export, the same with alpha-masked materials, a hand-built
-//! mesh with an alpha-masked texture); and a frame of peel plus multi-layer splatting with the camera turning, recorded with
+//! mesh with an alpha-masked texture, translucent panes); and a frame of peel plus multi-layer splatting with the camera turning, recorded with
 //! no allocation, upload or readback and submitted once.
 
 use dof::backend::{Backend, CpuBackend};
@@ -175,6 +175,37 @@ fn equal_to_host_on(b: &mut dyn Backend) {
     let (bars, camera, lens) = masked_bars();
     assert_same_as_host(b, &bars, &camera, &lens, &options(GuardBand::Pixels(4), 4, true));
     assert_same_as_host(b, &bars, &camera, &lens, &options(GuardBand::Off, 2, true));
+}
+
+/// `panes` (two translucent panes over a wall): the device keeps the host's slots, and outside the
+/// disocclusion buffer a pixel behind a pane keeps the pane and what it does not hide.
+fn translucent_layers_on(b: &mut dyn Backend) {
+    let (panes, camera, lens) = builtin_mesh("panes", 96, 54);
+    let opts = options(GuardBand::Pixels(6), 4, true);
+    assert_same_as_host(b, &panes, &camera, &lens, &opts);
+    let host = peel_layers(b, &panes.raster(), &camera, &lens, default_near(lens.focus_distance), &opts).unwrap();
+    let frame = host.image.frame_layers();
+    let l = frame.max_layers as usize;
+    let behind_pane =
+        (0..frame.counts.len()).filter(|&p| !host.image.mask[p] && frame.counts[p] >= 2 && frame.fragments[p * l].alpha < 1.0).count();
+    assert!(behind_pane > 100, "{behind_pane} pixels outside the buffer keep a translucent front and what lies behind");
+    // Only translucent slots come before the last one outside the buffer.
+    for p in (0..frame.counts.len()).filter(|&p| !host.image.mask[p]) {
+        let n = frame.counts[p] as usize;
+        assert!(frame.fragments[p * l..p * l + n.saturating_sub(1)].iter().all(|f| f.alpha < 1.0), "pixel {p}");
+    }
+}
+
+#[test]
+fn translucent_layers_peel_alike_on_the_cpu() {
+    translucent_layers_on(&mut CpuBackend::new());
+}
+
+#[test]
+fn translucent_layers_peel_alike_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    translucent_layers_on(&mut vk);
+    assert_clean(&mut vk);
 }
 
 #[test]

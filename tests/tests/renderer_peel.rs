@@ -273,6 +273,7 @@ fn assert_close(got: &(Vec<f32>, Vec<u32>, Vec<u32>), want: &(Vec<f32>, Vec<u32>
     assert_eq!(got.2, want.2, "{what}: the disocclusion buffer");
     for (p, &n) in want.1.iter().enumerate() {
         for k in 0..layers as usize {
+            // The slot format's words (`dof_shaders::slot`): premultiplied colour, depth, alpha.
             let words = dof::methods::buffers::SLOT_WORDS as usize;
             let at = words * (p * layers as usize + k);
             for c in 0..words {

@@ -25,7 +25,9 @@ fn assert_front_to_back(name: &str, layers: &LayeredImage) {
                 // The background (+inf) only as the last fragment.
                 assert!(f.depth > 0.0 && (f.depth.is_finite() || i + 1 == frags.len()), "{name} ({x}, {y}): depth {}", f.depth);
                 assert!(f.color.iter().all(|c| c.is_finite() && *c >= 0.0), "{name} ({x}, {y}): colour {:?}", f.color);
-                assert_eq!(f.alpha, 1.0);
+                // Only the translucent scenes' panes and cards cover partly.
+                let translucent = ["panes", "foliage", "glass"].contains(&name);
+                assert!(f.alpha == 1.0 || (translucent && f.alpha > 0.0 && f.alpha < 1.0), "{name} ({x}, {y}): alpha {}", f.alpha);
             }
             for w in frags.windows(2) {
                 assert!(w[0].depth <= w[1].depth, "{name} ({x}, {y}): {} then {}", w[0].depth, w[1].depth);
@@ -178,13 +180,16 @@ fn umbra_threshold_skips_fragments_in_the_shadow_of_the_one_in_front() {
 // References.
 
 /// A pinhole reference with one unjittered sample is the front layer of the ray-cast image, bit for
-/// bit; with jitter it is close (it differs only where a pixel's area straddles an edge).
+/// bit; with jitter it is close (it differs only where a pixel's area straddles an edge). Where
+/// translucent surfaces lie in front, the front layer is the fragments' composite, front to back.
 #[test]
 fn pinhole_reference_is_the_front_layer() {
     for name in builtin_names() {
         let s = builtin(name).unwrap().with_size(96, 54);
         let lens = s.thin_lens().unwrap();
-        let ml = raycast_layers(&s.scene, &s.camera, &lens, &frame_only()).unwrap();
+        // Enough layers for every translucent surface a pixel shows; `front` flattens them front
+        // to back ("over"; the front fragment alone where it is opaque).
+        let ml = raycast_layers(&s.scene, &s.camera, &lens, &LayerOptions { max_layers: 16, ..frame_only() }).unwrap();
         let (front, _) = ml.layers.front();
         let exact = ReferenceOptions { spp: 1, jitter: false, ..Default::default() };
         let pin = pinhole(&s.scene, &s.camera, &exact).unwrap();

@@ -15,7 +15,8 @@
 //! - `bound()` holds one f32 a pixel: the renderer's fragment shader discards a fragment unless
 //!   `dof_shaders::peel::keep(gl_FragCoord.z, bound[pixel])` (GLSL in `docs/integration.md`). It is
 //!   the previous layer's reach (its depth plus the umbra behind it) in the attachment's own depth
-//!   encoding, or "discard all" outside the disocclusion buffer and where nothing lies beyond.
+//!   encoding, or "discard all" outside the disocclusion buffer behind an opaque layer (a translucent
+//!   one never ends the peel) and where nothing lies beyond.
 //! - `append(k)` copies the renderer's colour and depth attachments into the context's buffers,
 //!   turns them into pass `k`'s layer and appends it to the slots, then writes pass `k + 1`'s bound
 //!   and indirect draw command. After pass 0 it builds the disocclusion buffer (§4.3) from the front
@@ -291,8 +292,8 @@ impl RendererPeel {
         Ok(())
     }
 
-    /// Ends the frame after its last pass: unused slots reset, and only the front slot kept outside
-    /// the disocclusion buffer (when on). The slots are then [`Self::frame`]'s input.
+    /// Ends the frame after its last pass: unused slots reset, and outside the disocclusion buffer
+    /// (when on) only the slots up to the first opaque one kept. The slots are then [`Self::frame`]'s input.
     pub fn finish(&mut self, backend: &mut dyn Backend) -> Result<()> {
         self.check(backend)?;
         if self.next != Some(self.desc.max_layers) {

@@ -10,7 +10,7 @@
 //! 3. The image covers the frame and its guard band ([`crate::scene::guard_band`]), drawn through
 //!    the overscanned camera.
 //! 4. The disocclusion buffer from the front layer ([`apply_disocclusion`]): pixels outside it keep
-//!    their front fragment only. This is the two-pass variant of §4.3 (the mask is built from the
+//!    their fragments up to the first opaque one (the front one where it is opaque). This is the two-pass variant of §4.3 (the mask is built from the
 //!    finished front layer rather than during the peel).
 //!
 //! This is the oracle of the device path [`super::MeshPeelContext`], which records the same passes

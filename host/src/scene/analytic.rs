@@ -8,8 +8,15 @@
 //! - an emissive surface has radiance equal to its emission, unlit; emission may exceed the
 //!   half-float range (65504), as highlights do;
 //! - where a ray hits nothing it sees the background ([`Scene::background`], black unless set): a
-//!   surface at infinite depth, the deepest fragment of every pixel whose ray escapes.
+//!   surface at infinite depth, the deepest fragment of every pixel whose ray escapes;
+//! - a flat primitive (quad or plane) may be translucent, with an opacity `alpha` in [0, 1]
+//!   ([`Scene::with_alpha`]; 1 unless set): it shows `alpha` times its radiance and lets `1 − alpha`
+//!   of what lies behind it through, glTF's `BLEND` ("over" with premultiplied colour, Porter and
+//!   Duff 1984). A ray composites every surface it crosses front to back until an opaque one or the
+//!   background ([`Scene::trace`]). Closed shapes stay opaque: their inner faces would need a
+//!   radiance of their own.
 
+use dof_shaders::slot::{Composite, premultiply};
 use glam::Vec3;
 
 use super::bvh::{Aabb, Bvh};
@@ -97,6 +104,10 @@ pub struct Scene {
     bvh: Bvh,
     /// Planes, tested by every ray.
     unbounded: Vec<u32>,
+    /// Opacity per primitive, in [0, 1] (1: opaque; below 1 only for quads and planes).
+    alpha: Vec<f32>,
+    /// Whether any primitive is translucent (rays then composite past their first hit).
+    translucent: bool,
 }
 
 /// One intersection of a ray with a primitive.
@@ -171,7 +182,50 @@ impl Scene {
                 None => unbounded.push(i as u32),
             }
         }
-        Ok(Scene { bvh: Bvh::build(&boxes), unbounded, primitives, lighting, light_dir: l.direction.normalize() })
+        let alpha = vec![1.0; primitives.len()];
+        Ok(Scene {
+            bvh: Bvh::build(&boxes),
+            unbounded,
+            primitives,
+            lighting,
+            light_dir: l.direction.normalize(),
+            alpha,
+            translucent: false,
+        })
+    }
+
+    /// The same scene with primitive `index` translucent, of opacity `alpha` (module docs). Errors on
+    /// an index out of range, an opacity that is NaN or outside [0, 1], or a translucent closed
+    /// shape (sphere, box).
+    pub fn with_alpha(mut self, index: usize, alpha: f32) -> Result<Self> {
+        let Some(p) = self.primitives.get(index) else {
+            return Err(Error::InvalidArgument(format!(
+                "no primitive {index} to make translucent ({} in the scene)",
+                self.primitives.len()
+            )));
+        };
+        if !(0.0..=1.0).contains(&alpha) {
+            return Err(Error::InvalidArgument(format!("primitive {index}: an opacity lies in [0, 1], got {alpha}")));
+        }
+        if alpha < 1.0 && !matches!(p.shape, Shape::Quad { .. } | Shape::Plane { .. }) {
+            return Err(Error::InvalidArgument(format!(
+                "primitive {index} ({:?}): only quads and planes may be translucent (a closed shape's inner faces have no radiance of their own)",
+                p.shape
+            )));
+        }
+        self.alpha[index] = alpha;
+        self.translucent = self.alpha.iter().any(|a| *a < 1.0);
+        Ok(self)
+    }
+
+    /// Opacity of primitive `index` (1 for an index naming no primitive).
+    pub fn alpha(&self, index: u32) -> f32 {
+        self.alpha.get(index as usize).copied().unwrap_or(1.0)
+    }
+
+    /// Whether any primitive is translucent.
+    pub fn has_translucency(&self) -> bool {
+        self.translucent
     }
 
     /// The same scene with another background radiance. Errors on a NaN, negative or infinite value.
@@ -256,12 +310,33 @@ impl Scene {
         }
     }
 
-    /// The radiance a ray sees: the first hit shaded, the background if it hits nothing.
+    /// The radiance a ray sees: the first hit shaded, the background if it hits nothing; past a
+    /// translucent hit, every surface along the ray composited front to back ("over", module docs).
     pub fn trace(&self, ray: &Ray) -> [f32; 3] {
-        match self.first_hit(ray, 0.0) {
-            Some(h) => self.shade(ray, &h),
-            None => self.lighting.background,
+        self.trace_with(ray, &mut Vec::new())
+    }
+
+    /// [`Self::trace`] with a buffer for the hits behind a translucent one (reused across calls).
+    pub fn trace_with(&self, ray: &Ray, hits: &mut Vec<Hit>) -> [f32; 3] {
+        let first = self.first_hit(ray, 0.0);
+        match first {
+            None => return self.lighting.background,
+            Some(h) if self.alpha(h.primitive) >= 1.0 => return self.shade(ray, &h),
+            Some(_) => {}
         }
+        self.all_hits(ray, 0.0, hits);
+        // The methods' own "over" (`dof_shaders::slot`), so that the pinhole image is the ray-cast
+        // layers flattened, bit for bit.
+        let mut over = Composite::EMPTY;
+        for h in hits.iter().filter(|h| !h.self_occluded) {
+            let alpha = self.alpha(h.primitive);
+            over.add(premultiply(self.shade(ray, h), alpha), alpha);
+            if over.transmit <= 0.0 {
+                return over.color;
+            }
+        }
+        over.add(self.lighting.background, 1.0);
+        over.color
     }
 }
 

@@ -10,8 +10,11 @@
 //! | `highlights` | small, very bright emissive dots at many depths (bokeh), some above 65504 |
 //! | `fence` | out-of-focus fence bars near the camera over a far wall, open sky above and below it |
 //! | `edges` | out-of-focus near objects crossing all four edges of the frame, open sky above |
+//! | `panes` | two tinted translucent panes (opacity 0.35 and 0.6) out of focus in front of an in-focus wall |
+//! | `foliage` | alpha-blended cards, as foliage is drawn, near the camera and around the focus |
+//! | `glass` | a translucent near pane over open sky and the top of a far wall |
 //!
-//! `fence` and `edges` are emissive only (every surface unlit, radiance = emission) and have a
+//! `fence`, `edges` and the three translucent scenes are emissive only (every surface unlit, radiance = emission) and have a
 //! coloured sky, so an independent renderer (`tools/independent_check.py`) sees exactly the same
 //! radiance and only the lens integration differs.
 
@@ -48,7 +51,7 @@ impl BuiltinScene {
     }
 }
 
-const NAMES: [&str; 6] = ["simple", "railing", "columns", "highlights", "fence", "edges"];
+const NAMES: [&str; 9] = ["simple", "railing", "columns", "highlights", "fence", "edges", "panes", "foliage", "glass"];
 
 /// Names of the built-in scenes.
 pub fn builtin_names() -> &'static [&'static str] {
@@ -64,6 +67,9 @@ pub fn builtin(name: &str) -> Result<BuiltinScene> {
         "highlights" => highlights(),
         "fence" => fence(),
         "edges" => edges(),
+        "panes" => panes(),
+        "foliage" => foliage(),
+        "glass" => glass(),
         _ => Err(Error::InvalidArgument(format!("unknown built-in scene `{name}`; the built-in scenes are: {}", NAMES.join(", ")))),
     }
 }
@@ -299,5 +305,83 @@ fn edges() -> Result<BuiltinScene> {
         camera: camera(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0)),
         // Far-field CoC 2.5 px: the near objects (z = 1.2) get 2.5·(15/1.2 − 1) ≈ 29 px.
         lens: LensSettings::with_aperture_radius(15.0, 0.045),
+    })
+}
+
+/// Builds a scene from `(primitive, opacity)` pairs: an opacity below 1 makes that primitive
+/// translucent ([`Scene::with_alpha`]).
+fn translucent_scene(prims: Vec<(Primitive, f32)>, background: [f32; 3]) -> Result<Scene> {
+    let alphas: Vec<f32> = prims.iter().map(|p| p.1).collect();
+    let mut scene = Scene::new(prims.into_iter().map(|p| p.0).collect(), Lighting::default())?.with_background(background)?;
+    for (i, a) in alphas.into_iter().enumerate() {
+        if a < 1.0 {
+            scene = scene.with_alpha(i, a)?;
+        }
+    }
+    Ok(scene)
+}
+
+/// Two tinted translucent panes out of focus in front of a far wall: a blue one of opacity 0.35 at
+/// 1.5 m and an amber one of opacity 0.6 at 2.5 m, overlapping in the middle of the frame, over a
+/// wall of emissive tiles at 10 m (in focus) with open sky above it. Every edge of both panes lies
+/// inside the frame, over the wall or the sky.
+fn panes() -> Result<BuiltinScene> {
+    let mut prims: Vec<(Primitive, f32)> = tiled_wall(-8.0, -3.0, 8.0, 1.5, -10.0, 4, 10).into_iter().map(|p| (p, 1.0)).collect();
+    prims.push((emissive(facing_quad(-0.7, -0.35, 0.15, 0.3, -1.5), [0.2, 0.35, 0.7]), 0.35));
+    prims.push((emissive(facing_quad(-0.2, -0.6, 1.1, 0.5, -2.5), [0.85, 0.5, 0.15]), 0.6));
+    Ok(BuiltinScene {
+        name: "panes",
+        description: "two tinted translucent panes (opacity 0.35 and 0.6) out of focus in front of an in-focus wall (emissive only)",
+        scene: translucent_scene(prims, SKY)?,
+        camera: camera(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0)),
+        // Far-field CoC 4 px: the panes get about 22 px (1.5 m) and 12 px (2.5 m).
+        lens: LensSettings::with_aperture_radius(10.0, 0.04),
+    })
+}
+
+/// Alpha-blended cards in the manner of foliage: 40 leaf-green cards of opacity 0.45 to 0.9, turned
+/// in the image plane, 20 between 1.2 and 3 m (out of focus) and 20 around the focus at 8 m, over
+/// a wall of emissive tiles at 12 m with open sky above it.
+fn foliage() -> Result<BuiltinScene> {
+    let mut prims: Vec<(Primitive, f32)> = tiled_wall(-10.0, -4.0, 10.0, 1.0, -12.0, 4, 12).into_iter().map(|p| (p, 1.0)).collect();
+    let greens = [[0.2, 0.45, 0.12], [0.35, 0.6, 0.18], [0.55, 0.65, 0.2], [0.15, 0.3, 0.1]];
+    let mut rng = SplitMix(0x00f0_11a9e);
+    let half_view = (FOV_DEGREES.to_radians() * 0.5).tan();
+    for i in 0..40 {
+        let near = i < 20;
+        let z = if near { 1.2 + 1.8 * rng.next_f32() } else { 7.0 + 2.0 * rng.next_f32() };
+        // Centre within the view at that depth (16:9), size a fixed share of the view's height.
+        let (hh, hw) = (z * half_view, z * half_view * 16.0 / 9.0);
+        let (cx, cy) = ((2.0 * rng.next_f32() - 1.0) * hw * 0.9, (2.0 * rng.next_f32() - 1.0) * hh * 0.9);
+        let size = hh * (if near { 0.12 } else { 0.06 }) * (0.6 + 0.8 * rng.next_f32());
+        let angle = std::f32::consts::PI * rng.next_f32();
+        let (u, v) = (Vec3::new(angle.cos(), angle.sin(), 0.0) * size, Vec3::new(-angle.sin(), angle.cos(), 0.0) * (0.5 * size));
+        let corner = Vec3::new(cx, cy, -z) - 0.5 * (u + v);
+        let alpha = 0.45 + 0.45 * rng.next_f32();
+        prims.push((emissive(Shape::Quad { corner, edge_u: u, edge_v: v }, greens[i % greens.len()]), alpha));
+    }
+    Ok(BuiltinScene {
+        name: "foliage",
+        description: "alpha-blended leaf cards near the camera and around the focus, over a far wall and sky (emissive only)",
+        scene: translucent_scene(prims, SKY)?,
+        camera: camera(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0)),
+        // Far-field CoC 3.1 px: the near cards get 5 to 18 px.
+        lens: LensSettings::with_aperture_radius(8.0, 0.025),
+    })
+}
+
+/// A translucent near object over open sky: a pale pane of opacity 0.45 at 1.2 m, out of focus
+/// (CoC about 33 px at 640x360), mostly over the sky and crossing the top edge of a far wall of
+/// emissive tiles at 12 m (in focus) that fills the lower part of the frame.
+fn glass() -> Result<BuiltinScene> {
+    let mut prims: Vec<(Primitive, f32)> = tiled_wall(-10.0, -5.0, 10.0, -0.8, -12.0, 3, 10).into_iter().map(|p| (p, 1.0)).collect();
+    prims.push((emissive(facing_quad(-0.35, -0.12, 0.25, 0.32, -1.2), [0.55, 0.55, 0.6]), 0.45));
+    Ok(BuiltinScene {
+        name: "glass",
+        description: "a translucent near pane over open sky and the top of an in-focus wall (emissive only)",
+        scene: translucent_scene(prims, SKY)?,
+        camera: camera(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0)),
+        // Far-field CoC 3.7 px: the pane (z = 1.2) gets 3.7·(12/1.2 − 1) ≈ 33 px.
+        lens: LensSettings::with_aperture_radius(12.0, 0.045),
     })
 }

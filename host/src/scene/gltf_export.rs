@@ -17,6 +17,8 @@
 //!   texture coordinates are the analytic surface coordinates over twice the cell size, so the
 //!   checker's parity matches the analytic one; emission becomes the emissive factor, with
 //!   `KHR_materials_emissive_strength` carrying a maximum above 1;
+//! - a translucent quad or plane ([`Scene::alpha`] below 1) gets `alphaMode: BLEND` with its
+//!   opacity as the base colour factor's alpha;
 //! - the light becomes a `KHR_lights_punctual` directional light, the ambient term the scene's
 //!   extras key `dof_ambient`, the background radiance the key `dof_background`; the camera a
 //!   perspective camera node of the default scene.
@@ -256,7 +258,7 @@ pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Re
 
     let mut bin = Bin::default();
     let (mut accessors, mut materials, mut images, mut textures, mut prims) = (vec![], vec![], vec![], vec![], vec![]);
-    for prim in scene.primitives() {
+    for (index, prim) in scene.primitives().iter().enumerate() {
         let material_index = materials.len();
         let mut uv_scale = 0.0;
         let closed = matches!(prim.shape, Shape::Sphere { .. } | Shape::Cuboid { .. });
@@ -286,6 +288,13 @@ pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Re
                     material["emissiveFactor"] = json!(c);
                 }
             }
+        }
+        // A translucent primitive: glTF's BLEND with its opacity as the base colour's alpha, which
+        // the loader reads as the fragment's coverage ("over").
+        let alpha = scene.alpha(index as u32);
+        if alpha < 1.0 {
+            material["pbrMetallicRoughness"]["baseColorFactor"][3] = json!(alpha);
+            material["alphaMode"] = json!("BLEND");
         }
         materials.push(material);
 

@@ -27,6 +27,10 @@
 //!   `K·|1 − z_f/z|` pixels ([`ThinLens::coc_px`]). `fov` is the vertical field of view with
 //!   `fov_axis` y; a `lookat` transform (Mitsuba's camera looks down its local +Z, and `lookat`
 //!   puts image +x on the camera's right: the image is not mirrored).
+//! - A translucent quad or plane (opacity `α` below 1) gets a `mask` BSDF of opacity `α` over the
+//!   black one and an emitter of `α` times its radiance: a ray sees `α·L` and passes on with
+//!   probability `1 − α`, which is glTF's "over" ([`Scene::trace`]); `max_depth` grows by one per
+//!   translucent surface so that the pass-throughs are not cut.
 //! - `hdrfilm` (RGB, float32) with a `box` reconstruction filter: each sample stays in its pixel,
 //!   as in the reference; integrator `path` with `max_depth` 2 (the first hit's emission; the black
 //!   surfaces reflect nothing); the background a `constant` emitter. The sample count is the XML
@@ -146,12 +150,41 @@ enum Radiance {
     Checker { color0: [f32; 3], color1: [f32; 3], scale: [f32; 2], offset: [f32; 2] },
 }
 
+impl Radiance {
+    /// Every colour scaled by `k` (a translucent surface's opacity: premultiplied radiance).
+    fn times(self, k: f32) -> Radiance {
+        if k == 1.0 {
+            return self;
+        }
+        let m = |c: [f32; 3]| c.map(|v| v * k);
+        match self {
+            Radiance::Rgb(c) => Radiance::Rgb(m(c)),
+            Radiance::Checker { color0, color1, scale, offset } => {
+                Radiance::Checker { color0: m(color0), color1: m(color1), scale, offset }
+            }
+        }
+    }
+}
+
 /// A Mitsuba shape: the sphere, or the rectangle `centre + s·half_u + t·half_v`, `s, t` in
 /// [−1, 1], emitting on the side of `normal` (unit).
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Out {
-    Sphere { center: Vec3, radius: f32, radiance: [f32; 3] },
-    Rect { center: Vec3, half_u: Vec3, half_v: Vec3, normal: Vec3, radiance: Radiance },
+    Sphere {
+        center: Vec3,
+        radius: f32,
+        radiance: [f32; 3],
+    },
+    /// `alpha` below 1: translucent, a `mask` BSDF of that opacity over an emitter already scaled
+    /// by it.
+    Rect {
+        center: Vec3,
+        half_u: Vec3,
+        half_v: Vec3,
+        normal: Vec3,
+        radiance: Radiance,
+        alpha: f32,
+    },
 }
 
 impl Out {
@@ -210,7 +243,8 @@ fn export_primitive(
             };
             let center = corner + 0.5 * edge_u + 0.5 * edge_v;
             let radiance = face_radiance(scene, prim, normal, corner, [corner + edge_u, corner + edge_v])?;
-            vec![Out::Rect { center, half_u: 0.5 * edge_u, half_v: 0.5 * edge_v, normal, radiance }]
+            let alpha = scene.alpha(index as u32);
+            vec![Out::Rect { center, half_u: 0.5 * edge_u, half_v: 0.5 * edge_v, normal, radiance: radiance.times(alpha), alpha }]
         }
         Shape::Plane { point, normal } => {
             let n = normal.normalize();
@@ -241,7 +275,8 @@ fn export_primitive(
             let corner = center - half * t - half * b;
             let far = [corner + 2.0 * half * t, corner + 2.0 * half * b];
             let radiance = face_radiance(scene, prim, side, corner, far)?;
-            vec![Out::Rect { center, half_u: half * t, half_v: half * b, normal: side, radiance }]
+            let alpha = scene.alpha(index as u32);
+            vec![Out::Rect { center, half_u: half * t, half_v: half * b, normal: side, radiance: radiance.times(alpha), alpha }]
         }
         Shape::Cuboid { min, max } => {
             let size = max - min;
@@ -267,7 +302,7 @@ fn export_primitive(
                     let c = center + normal * 0.5 * size[axis];
                     let corner = c - half_u - half_v;
                     let radiance = face_radiance(scene, prim, normal, corner, [corner + 2.0 * half_u, corner + 2.0 * half_v])?;
-                    faces.push(Out::Rect { center: c, half_u, half_v, normal, radiance });
+                    faces.push(Out::Rect { center: c, half_u, half_v, normal, radiance, alpha: 1.0 });
                 }
             }
             faces
@@ -362,12 +397,13 @@ fn plane_reach(scene: &Scene, view: &View) -> Vec<Reach> {
     let (w, h) = (f.width as usize + 1, f.height as usize + 1);
     for (lx, ly) in lens_points(view.radius) {
         let ray_at = |x: usize, y: usize| f.lens_ray(x as f32, y as f32, lx, ly, view.focus);
-        // First hit of every corner ray: primitive index and point.
-        let hits: Vec<Option<(u32, Vec3)>> = (0..w * h)
+        // What every corner ray sees: its hits up to the first opaque one (primitive index and
+        // point), and whether it escapes past them.
+        let hits: Vec<(Vec<(u32, Vec3)>, bool)> = (0..w * h)
             .into_par_iter()
-            .map(|k| {
+            .map_init(Vec::new, |all, k| {
                 let ray = ray_at(k % w, k / w);
-                scene.first_hit(&ray, 0.0).map(|hit| (hit.primitive, ray.at(hit.t)))
+                visible_hits(scene, &ray, all)
             })
             .collect();
         for &(i, point, n) in &planes {
@@ -381,10 +417,7 @@ fn plane_reach(scene: &Scene, view: &View) -> Vec<Reach> {
             let mut far = 0.0f32;
             let mut horizon = false;
             for k in 0..w * h {
-                let Some((prim, p)) = hits[k] else { continue };
-                if prim as usize != i {
-                    continue;
-                }
+                let Some(&(_, p)) = hits[k].0.iter().find(|(prim, _)| *prim as usize == i) else { continue };
                 far = far.max(dist(p));
                 let (x, y) = (k % w, k / w);
                 let neighbours = [(x.wrapping_sub(1), y), (x + 1, y), (x, y.wrapping_sub(1)), (x, y + 1)];
@@ -392,9 +425,12 @@ fn plane_reach(scene: &Scene, view: &View) -> Vec<Reach> {
                     if meets(&ray_at(nx, ny)) {
                         continue;
                     }
-                    match hits[ny * w + nx] {
-                        Some((_, q)) => far = far.max(dist(q)),
-                        None => horizon = true,
+                    let (seen, escapes) = &hits[ny * w + nx];
+                    if *escapes {
+                        horizon = true;
+                    }
+                    if let Some(&(_, q)) = seen.last() {
+                        far = far.max(dist(q));
                     }
                 }
             }
@@ -402,6 +438,26 @@ fn plane_reach(scene: &Scene, view: &View) -> Vec<Reach> {
         }
     }
     reach
+}
+
+/// The hits of `ray` up to and including the first opaque one (every surface it shows), and
+/// whether it escapes past them (no opaque hit); `all` is a reused buffer.
+fn visible_hits(scene: &Scene, ray: &Ray, all: &mut Vec<Hit>) -> (Vec<(u32, Vec3)>, bool) {
+    if !scene.has_translucency() {
+        return match scene.first_hit(ray, 0.0) {
+            Some(hit) => (vec![(hit.primitive, ray.at(hit.t))], false),
+            None => (Vec::new(), true),
+        };
+    }
+    scene.all_hits(ray, 0.0, all);
+    let mut seen = Vec::new();
+    for hit in all.iter().filter(|h| !h.self_occluded) {
+        seen.push((hit.primitive, ray.at(hit.t)));
+        if scene.alpha(hit.primitive) >= 1.0 {
+            return (seen, false);
+        }
+    }
+    (seen, true)
 }
 
 /// Writes the scene file.
@@ -412,8 +468,11 @@ fn write_xml(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &MitsubaO
     x.comment("with the analytic model's radiance), the exact reference's thin lens, a box pixel filter.");
     x.open("scene", &[("version", "3.0.0".into())]);
     x.leaf("default", &[("name", "spp".into()), ("value", options.spp.to_string())]);
+    // Depth 2 is the first hit's emission; each translucent (flat) surface a ray can cross adds one
+    // interaction, its mask's pass-through.
+    let translucent = (0..scene.primitives().len() as u32).filter(|&i| scene.alpha(i) < 1.0).count();
     x.open("integrator", &[("type", "path".into())]);
-    x.leaf("integer", &[("name", "max_depth".into()), ("value", "2".into())]);
+    x.leaf("integer", &[("name", "max_depth".into()), ("value", (2 + translucent).to_string())]);
     x.close("integrator");
     x.open("sensor", &[("type", "thinlens".into())]);
     x.float("fov", (camera.yfov_radians as f64).to_degrees() as f32);
@@ -465,7 +524,7 @@ fn write_shape(x: &mut Xml, shape: &Out) {
             x.leaf("ref", &[("id", "black".into())]);
             emitter(x, &Radiance::Rgb(radiance));
         }
-        Out::Rect { center, half_u, half_v, normal, radiance } => {
+        Out::Rect { center, half_u, half_v, normal, radiance, alpha } => {
             x.open("shape", &[("type", "rectangle".into())]);
             x.open("transform", &[("name", "to_world".into())]);
             // Columns: local x, y, z (the emitting side) and the centre.
@@ -474,7 +533,16 @@ fn write_shape(x: &mut Xml, shape: &Out) {
                 (0..3).flat_map(|r| cols.iter().map(move |c| num(c[r]))).chain(["0", "0", "0", "1"].map(String::from)).collect();
             x.leaf("matrix", &[("value", m.join(" "))]);
             x.close("transform");
-            x.leaf("ref", &[("id", "black".into())]);
+            if alpha < 1.0 {
+                // glTF's "over": the emitter shows alpha times the radiance (already scaled), and
+                // the mask lets 1 − alpha of the rays through to what lies behind.
+                x.open("bsdf", &[("type", "mask".into())]);
+                x.float("opacity", alpha);
+                x.leaf("ref", &[("id", "black".into())]);
+                x.close("bsdf");
+            } else {
+                x.leaf("ref", &[("id", "black".into())]);
+            }
             emitter(x, &radiance);
         }
     }

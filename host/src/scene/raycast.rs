@@ -11,16 +11,22 @@
 //!    ([`CameraFrame::pixel_footprint_radius`]). A footprint as large as the aperture shadows
 //!    everything behind it, so a pinhole keeps one layer. At most `max_layers` are kept. Where the
 //!    ray escapes, the background ([`Scene::background`], at infinite depth) is its last fragment.
+//!    A translucent hit ([`Scene::alpha`] below 1) is kept with its opacity as the fragment's
+//!    coverage (colour premultiplied by it), but sets no umbra: what lies behind it stays visible through it, so only an opaque
+//!    fragment ends a pixel's layers early. A hit of opacity 0 shows and hides nothing: skipped.
 //! 3. **Disocclusion buffer** (§4.2). On the front layer, two 4-neighbours are a depth
 //!    discontinuity when exactly one is sky or `|z_a − z_b| > edge_depth_ratio · min(z_a, z_b)`.
 //!    Both pixels of such a pair tag every pixel whose centre lies within `ceil(c/2)` pixels of
 //!    theirs, `c` the larger CoC of the two depths (the sky counts as the far limit). The larger
 //!    one, because hidden fragments matter on both sides: a blurred occluder uncovers what lies
 //!    behind its rim, and a blurred background is seen around a sharp occluder's rim. Untagged
-//!    pixels keep their front fragment only.
+//!    pixels keep their fragments up to the first opaque one (the front one when it is opaque):
+//!    what a translucent fragment does not hide is seen in focus too
+//!    ([`dof_shaders::peel::slots_outside_buffer`], the device peel's rule).
 
 use dof_shaders::lens::ThinLens;
-use dof_shaders::peel::{covers, disk_budget, pair_radius};
+use dof_shaders::peel::{covers, disk_budget, pair_radius, slots_outside_buffer};
+use dof_shaders::slot::premultiply;
 use rayon::prelude::*;
 
 use super::analytic::{Hit, Scene};
@@ -132,9 +138,9 @@ pub fn apply_disocclusion(
 
     let without_mask = full.crop(margin).stats();
     let mut masked = full.clone();
-    for (count, &keep) in masked.counts.iter_mut().zip(&mask) {
+    for (p, (count, &keep)) in masked.counts.iter_mut().zip(&mask).enumerate() {
         if !keep {
-            *count = (*count).min(1);
+            *count = slots_outside_buffer(*count, |i| full.fragments[p * l + i as usize].alpha);
         }
     }
     // Unused slots are reset so that equal images compare equal whatever was dropped.
@@ -165,11 +171,15 @@ fn cast_all(scene: &Scene, frame: &CameraFrame, lens: &ThinLens, options: &Layer
                     if n == l {
                         break;
                     }
-                    if n > 0 && options.umbra_threshold && hit.t < reach {
+                    let alpha = scene.alpha(hit.primitive);
+                    if (n > 0 && options.umbra_threshold && hit.t < reach) || alpha <= 0.0 {
                         continue;
                     }
-                    fragments[x * l + n] = Fragment { color: scene.shade(&ray, hit), alpha: 1.0, depth: hit.t };
+                    fragments[x * l + n] = Fragment { color: premultiply(scene.shade(&ray, hit), alpha), alpha, depth: hit.t };
                     n += 1;
+                    if alpha < 1.0 {
+                        continue; // translucent: sets no umbra
+                    }
                     let umbra = lens.umbra_length(hit.t, frame.pixel_footprint_radius(hit.t));
                     reach = if umbra.is_nan() { f32::INFINITY } else { hit.t + umbra };
                 }

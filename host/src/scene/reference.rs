@@ -4,7 +4,8 @@
 //! pixel's area (a box filter, as pbrt and Mitsuba integrate), see [`super::sampling::stratified`].
 //! Each ray leaves its lens point towards the point where the pinhole ray through its pixel
 //! position meets the focus plane ([`CameraFrame::lens_ray`]); its first hit is shaded with the
-//! scene's lighting model; the samples are averaged in `f64` and stored as `f32`.
+//! scene's lighting model (past translucent surfaces, every surface it crosses composited front to
+//! back, [`Scene::trace`]); the samples are averaged in `f64` and stored as `f32`.
 //!
 //! **Noise estimate.** The samples are drawn as two independent halves `A` and `B` (each
 //! stratified on its own); the image is their pooled mean. With `σ²` the per-sample variance, `MSE(A,
@@ -323,8 +324,8 @@ fn render_batch(
 ) {
     let width = frame.width as usize;
     acc.sum.par_chunks_mut(width).enumerate().for_each_init(
-        || (Vec::new(), Vec::new()),
-        |(samples, perm), (y, row)| {
+        || (Vec::new(), Vec::new(), Vec::new()),
+        |(samples, perm, hits), (y, row)| {
             for (x, out) in row.iter_mut().enumerate() {
                 let pixel = (y * width + x) as u64;
                 let mut rng = pixel_rng(seed, batch, pixel);
@@ -333,7 +334,7 @@ fn render_batch(
                 for s in samples.iter() {
                     let (dx, dy) = concentric_disc(s.lens.0, s.lens.1);
                     let ray = frame.lens_ray(x as f32 + s.pixel.0, y as f32 + s.pixel.1, radius * dx, radius * dy, focus);
-                    let c = scene.trace(&ray);
+                    let c = scene.trace_with(&ray, hits);
                     for k in 0..3 {
                         sum[k] += c[k] as f64;
                     }

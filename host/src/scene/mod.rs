@@ -35,7 +35,8 @@ pub mod mesh;
 pub mod mitsuba_export;
 pub mod raycast;
 pub mod reference;
-pub mod sampling;
+/// The sampler lives in the core (ray tracing through layers draws its lens samples with it).
+pub use dof_core::sampling;
 
 pub use analytic::{Albedo, Hit, Lighting, Material, Primitive, Scene, Shape};
 pub use builtin::{BuiltinScene, builtin, builtin_names};

@@ -25,32 +25,12 @@ use rayon::prelude::*;
 
 use super::analytic::{Hit, Scene};
 use super::camera::{Camera, CameraFrame};
-use super::guard_band::{GuardBand, auto_margin};
+use super::guard_band::auto_margin;
 use crate::error::{Error, Result};
 use crate::layers::{Fragment, LayerStats, LayeredImage, RgbImage, crop_plane};
 
-/// How the multi-layer image is built.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LayerOptions {
-    /// Fragments kept per pixel at most (L), `>= 1`. Default 4.
-    pub max_layers: u32,
-    /// Thin layers by the umbra threshold (default on). Off: consecutive hits are all kept.
-    pub umbra_threshold: bool,
-    /// Keep more than the front fragment only inside the disocclusion buffer (default on). The
-    /// statistics of both variants are returned either way.
-    pub disocclusion: bool,
-    /// Relative depth difference between 4-neighbours that counts as a discontinuity (default 0.05).
-    pub edge_depth_ratio: f32,
-    /// The margin rendered beyond the frame (default [`GuardBand::Auto`], see
-    /// [`super::guard_band`]).
-    pub guard_band: GuardBand,
-}
-
-impl Default for LayerOptions {
-    fn default() -> Self {
-        LayerOptions { max_layers: 4, umbra_threshold: true, disocclusion: true, edge_depth_ratio: 0.05, guard_band: GuardBand::Auto }
-    }
-}
+/// How the multi-layer image is built: in the core, beside the renderer peel that reads it too.
+pub use crate::frame::LayerOptions;
 
 /// A multi-layer image with what produced it.
 #[derive(Clone, Debug, PartialEq)]

@@ -55,7 +55,8 @@ pub struct SplatContextDesc {
     pub max_list: Option<u32>,
     /// Keep each stage's buffers apart instead of reusing one stage's for a later one (for tests
     /// that compare every stage; costs up to two more slot buffers).
-    pub(crate) distinct_stage_buffers: bool,
+    #[doc(hidden)]
+    pub distinct_stage_buffers: bool,
     /// Hold the buffers that image inputs and outputs go through (10 words a pixel).
     pub image_io: bool,
     /// Frames in flight (default 1): copies kept of the statistics and lists' lengths reports read.
@@ -511,7 +512,8 @@ impl SplatContext {
     }
 
     /// The context's buffers of each stage, for tests that compare backends stage by stage.
-    pub(crate) fn stage_buffers(&self) -> StageBuffers {
+    #[doc(hidden)]
+    pub fn stage_buffers(&self) -> StageBuffers {
         let b = &self.b;
         StageBuffers {
             cells: b.cells.clone(),
@@ -527,7 +529,8 @@ impl SplatContext {
 }
 
 /// See [`SplatContext::stage_buffers`].
-pub(crate) struct StageBuffers {
+#[doc(hidden)]
+pub struct StageBuffers {
     pub cells: Vec<(BufferId, BufferId)>,
     pub tile_count: BufferId,
     pub dense: BufferId,

@@ -32,12 +32,14 @@ use crate::layers::{Fragment, LayerStats, LayeredImage, RgbImage, crop_plane};
 /// How the multi-layer image is built: in the core, beside the renderer peel that reads it too.
 pub use crate::frame::LayerOptions;
 
-/// A multi-layer image with what produced it.
+/// A scene rendered into layers (by [`raycast_layers`], or by the rasteriser's depth peel):
+/// the [`LayeredImage`] of the frame and its guard band, the disocclusion buffer and the layer
+/// statistics. Methods run on [`Self::layers`]; [`Self::crop`] cuts their result to the frame.
 #[derive(Clone, Debug, PartialEq)]
-pub struct MultiLayerImage {
+pub struct SceneLayers {
     /// The layers, `margin` pixels larger than the frame on every side (the guard band): limited by
     /// the disocclusion buffer when `LayerOptions::disocclusion` was on, all kept otherwise. Run a
-    /// method on these and crop its result with [`MultiLayerImage::crop`].
+    /// method on these and crop its result with [`SceneLayers::crop`].
     pub layers: LayeredImage,
     /// The guard band's width in pixels.
     pub margin: u32,
@@ -50,7 +52,7 @@ pub struct MultiLayerImage {
     pub without_mask: LayerStats,
 }
 
-impl MultiLayerImage {
+impl SceneLayers {
     /// Share of the frame's pixels inside the disocclusion buffer.
     pub fn mask_share(&self) -> f64 {
         self.mask.iter().filter(|m| **m).count() as f64 / self.mask.len().max(1) as f64
@@ -77,7 +79,7 @@ impl MultiLayerImage {
 /// Ray casts the exact multi-layer image of `scene` seen by `camera` through `lens` (module docs).
 /// Errors on an invalid camera or lens, `max_layers == 0`, a NaN or negative edge ratio, or an
 /// image too large to address.
-pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &LayerOptions) -> Result<MultiLayerImage> {
+pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &LayerOptions) -> Result<SceneLayers> {
     camera.frame()?;
     if !lens.is_valid() {
         return Err(Error::InvalidArgument(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
@@ -98,13 +100,7 @@ pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
 /// rasteriser's, seen by `frame`, `margin` pixels of guard band around the frame): the
 /// disocclusion buffer from its front layer, and the frame's statistics with and without it. The
 /// layers returned are masked when `options.disocclusion` is on.
-pub fn apply_disocclusion(
-    full: LayeredImage,
-    frame: &CameraFrame,
-    lens: &ThinLens,
-    options: &LayerOptions,
-    margin: u32,
-) -> MultiLayerImage {
+pub fn apply_disocclusion(full: LayeredImage, frame: &CameraFrame, lens: &ThinLens, options: &LayerOptions, margin: u32) -> SceneLayers {
     let l = full.max_layers as usize;
     let front: Vec<f32> =
         (0..full.counts.len()).map(|p| if full.counts[p] > 0 { full.fragments[p * l].depth } else { f32::INFINITY }).collect();
@@ -126,7 +122,7 @@ pub fn apply_disocclusion(
     let with_mask = masked.crop(margin).stats();
     let layers = if options.disocclusion { masked } else { full };
     let mask = crop_plane(&mask, frame.width, margin);
-    MultiLayerImage { layers, margin, mask, with_mask, without_mask }
+    SceneLayers { layers, margin, mask, with_mask, without_mask }
 }
 
 /// Fills `image` with every pixel's kept hits (steps 1 and 2), rows in parallel.

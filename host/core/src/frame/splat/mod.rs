@@ -20,7 +20,7 @@ use dof_shaders::splat::merge::{MERGE, splat_merge};
 use dof_shaders::splat::pack::{PACK, splat_pack};
 use dof_shaders::splat::plan::{splat_plan_finish, splat_plan_reduce};
 use dof_shaders::splat::{FLAG_UMBRA_MERGE, MAX_RINGS, SplatParams, TILE_SIZES, block_for, stats};
-pub use options::{Merge, Plan, SplatOptions};
+pub use options::{Merge, SplatOptions, SplatPlanReport};
 pub use report::SplatReport;
 
 /// Most tile-list entries a context may hold: 2^29, so that each list buffer stays within 2 GiB.
@@ -467,7 +467,7 @@ impl SplatContext {
         let list_lengths: Vec<u32> = seg.as_chunks::<2>().0.iter().map(|s| s[1]).collect();
         let c = |i: u32| st[i as usize];
         let pixels = f.width as u64 * f.height as u64;
-        let plan = Plan {
+        let plan = SplatPlanReport {
             width: f.width,
             height: f.height,
             layers: f.layer_count(),

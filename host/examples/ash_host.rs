@@ -35,14 +35,14 @@
 //! [--device NAME]`; it exits non-zero when a check fails or the validation layer said anything.
 
 use anyhow::{Context, Result, bail, ensure};
-use dof::backend::vulkan::ash::vk::{AccessFlags as Access, ImageLayout as Layout};
-use dof::backend::vulkan::ash::{self, vk};
-use dof::backend::{Backend, BackendCounters, CommandTime, CpuBackend, ImageRef, RawDevice, RawOptions, VulkanBackend};
-use dof::frame::{DepthEncoding, Frame, FrameInput, FrameOutput, RendererPeel, RendererPeelDesc, SplatContext, SplatContextDesc};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::splat::{Merge, SplatOptions, splat};
 use dof::raster::{MeshPeelContext, MeshPeelDesc};
 use dof::scene::{Camera, Focus, GuardBand, LayerOptions, LensSettings, MeshScene, ThinLens, Vec3, builtin, raycast_layers};
+use dof_core::backend::vulkan::ash::vk::{AccessFlags as Access, ImageLayout as Layout};
+use dof_core::backend::vulkan::ash::{self, vk};
+use dof_core::backend::{Backend, BackendCounters, CommandTime, CpuBackend, ImageRef, RawDevice, RawOptions, VulkanBackend};
+use dof_core::frame::{DepthEncoding, Frame, FrameInput, FrameOutput, RendererPeel, RendererPeelDesc, SplatContext, SplatContextDesc};
 use dof_shaders::raster::mesh::{ALPHA_BLEND, MeshMaterial, MeshVertex, UNLIT};
 use dof_shaders::slot::{ALPHA_WORD, DEPTH_WORD, SLOT_WORDS};
 use glam::Mat4;
@@ -569,7 +569,7 @@ fn compare_with_mesh_peel(
     r.submit_and_wait()?;
     // Its timings are not the frames'.
     while backend.take_external_times()?.is_some_and(|t| !t.is_empty()) {}
-    let mut read = |s: &dof::frame::peel::PeelSlots| -> Result<(Vec<u32>, Vec<u32>)> {
+    let mut read = |s: &dof_core::frame::peel::PeelSlots| -> Result<(Vec<u32>, Vec<u32>)> {
         let pixels = s.width as u64 * s.height as u64;
         Ok((backend.read_buffer(s.fragments, 0, SLOT_WORDS as u64 * pixels * s.layers as u64)?, backend.read_buffer(s.counts, 0, pixels)?))
     };
@@ -752,7 +752,7 @@ fn main() -> Result<ExitCode> {
             // has written them since, so there is no write to name. They stay in that layout.
             // SAFETY: our live RGBA32F and R32F images of this extent with TRANSFER_SRC usage, on the
             // backend's queue family, in the declared layout; alive until the fence.
-            let image = |image: vk::Image, format: vk::Format| -> dof::Result<ImageRef> {
+            let image = |image: vk::Image, format: vk::Format| -> dof_core::Result<ImageRef> {
                 let desc =
                     ImageRef::describe(image, format, extent)?.in_layout(Layout::SHADER_READ_ONLY_OPTIMAL).after(COMPUTE, Access::empty());
                 Ok(unsafe { desc.build() })

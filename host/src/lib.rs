@@ -1,56 +1,50 @@
-//! Depth of field with order-correct, partial-occlusion-aware splatting: the host library.
+//! Depth of field above the core: the data, scenes, references and evaluation around the frame API.
 //!
-//! - [`frame`]: the frame API: a context per device, extent and method that records frames against the caller's buffers;
-//! - [`backend`]: the CPU and Vulkan backends that run the kernels of the `dof-shaders` crate;
-//! - [`ops`]: kernel sequences recorded on any backend (segmented sort, prefix scan);
-//! - [`workload`]: synthetic inputs shaped like the pipeline's (tile-list length mixes);
+//! The core (`dof-core`: [`frame`], [`backend`], [`ops`], [`aperture`], [`shaders`], [`error`]) is
+//! re-exported here, so `dof::frame::…` and `dof_core::frame::…` name the same items. This crate adds:
+//!
 //! - [`layers`]: colour and multi-layer images, the data every method shares;
-//! - [`io`]: the display transform and the input rules; EXR and PNG in and out (feature `exr`);
 //! - [`scene`]: lenses, cameras, analytic scenes and their exact references; glTF (feature `gltf`);
 //! - [`raster`]: triangle meshes rasterised into multi-layer images and accumulation-buffer references;
-//! - [`methods`]: the depth-of-field methods (gathering baseline, tiled splatting), on any backend;
+//! - [`methods`]: one frame of a host image through any method of the registry (the one-shot path),
+//!   and the host-planned oracles of ray tracing and layered DoF;
+//! - [`io`]: the display transform and the input rules; EXR and PNG in and out (feature `exr`);
 //! - [`metrics`]: PSNR against a reference, full-frame and in the partial-occlusion region; SSIM and
 //!   FLIP with the `eval` feature;
+//! - [`workload`]: synthetic inputs shaped like the pipeline's (tile-list length mixes);
+//! - [`timing`]: medians of timed runs;
 //! - `eval` (feature `eval`): every method on every scene and backend, timed and measured (`dof eval`);
 //! - `stress` (feature `eval`): the stiff and extreme cases, each with its expectation, on every
-//!   method (`dof stress`);
-//! - [`shaders`]: the embedded SPIR-V modules (prebuilt in `host/spirv/`, or compiled with the
-//!   `rebuild-spirv` feature).
+//!   method (`dof stress`).
+//!
+//! The `dof` command and its viewer are the crate `dof-cli` above this one.
 //!
 //! # Features
 //!
-//! Without default features this is the core: kernels, backends, the frame API, methods, layers,
-//! analytic scenes, on stable Rust and without rust-gpu. `exr` (EXR and PNG files), `gltf` (glTF
-//! scenes), `eval` (evaluation, SSIM and FLIP, plots, stress; implies `exr` and `gltf`), `progress`
-//! (progress bars) and `cli` (the `dof` command; everything; the default) add the rest;
-//! `rebuild-spirv` compiles the kernels to SPIR-V with rust-gpu (pinned nightly) instead of
-//! embedding the prebuilt modules.
+//! Without features this is the core with layers, analytic scenes and the one-shot methods, on
+//! stable Rust and without rust-gpu. `exr` (EXR and PNG files), `gltf` (glTF scenes), `eval`
+//! (evaluation, SSIM and FLIP, plots, stress; implies `exr` and `gltf`) and `progress` (progress
+//! bars) add the rest; `rebuild-spirv` compiles the kernels to SPIR-V with rust-gpu (pinned nightly)
+//! instead of embedding the prebuilt modules.
 
-pub mod aperture;
-pub mod backend;
-pub mod error;
 #[cfg(feature = "eval")]
 pub mod eval;
-pub mod frame;
 pub mod io;
 pub mod layers;
 pub mod methods;
 pub mod metrics;
-pub mod ops;
 mod progress;
 pub mod raster;
 pub mod scene;
-pub mod shaders;
-pub mod source_hash;
 #[cfg(feature = "eval")]
 pub mod stress;
 pub mod timing;
 pub mod workload;
 
-pub use error::{Error, Result};
-
-pub use backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
-/// The kernel crate, so that integrators use the kernel types of the version this crate was built with.
-pub use dof_shaders;
+/// The core, re-exported so that `dof::frame::…`, `dof::backend::…` and `dof::Error` name the same items
+/// as `dof_core::…`.
+pub use dof_core;
+pub use dof_core::{Backend, CpuBackend, Error, Result, VulkanBackend, VulkanOptions, dof_shaders};
+pub use dof_core::{aperture, backend, error, frame, ops, shaders, source_hash};
 pub use layers::{Fragment, LayeredImage, RgbImage};
 pub use scene::ThinLens;

@@ -9,7 +9,7 @@ use dof::io::{read_layered_exr, write_exr};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::splat::{SplatOptions, splat};
 use dof::metrics::{ImageError, compare};
-use dof::scene::{GuardBand, LayerOptions, MultiLayerImage, ReferenceOptions, builtin, raycast_layers, reference};
+use dof::scene::{GuardBand, LayerOptions, ReferenceOptions, SceneLayers, builtin, raycast_layers, reference};
 use dof_shaders::lens::ThinLens;
 
 const W: u32 = 320;
@@ -28,13 +28,13 @@ fn setup(name: &str) -> Setup {
     Setup { lens, reference: exact.image, sky: scene.scene.background() }
 }
 
-fn layers(name: &str, lens: &ThinLens, guard_band: GuardBand) -> MultiLayerImage {
+fn layers(name: &str, lens: &ThinLens, guard_band: GuardBand) -> SceneLayers {
     let scene = builtin(name).unwrap().with_size(W, H);
     raycast_layers(&scene.scene, &scene.camera, lens, &LayerOptions { guard_band, ..Default::default() }).unwrap()
 }
 
 /// Gather, single-layer and multi-layer splatting (unmerged) on `backend`, cut to the frame.
-fn run(backend: &mut dyn Backend, ml: &MultiLayerImage, lens: ThinLens) -> [RgbImage; 3] {
+fn run(backend: &mut dyn Backend, ml: &SceneLayers, lens: ThinLens) -> [RgbImage; 3] {
     let input = MethodInput::new(ml.layers.clone(), lens, ml.margin);
     let first = |m: &dyn EvaluatedMethod| -> Setting { m.settings(false).into_iter().next().unwrap() };
     let g = Registered::named("gather").unwrap().run(backend, &input, &Setting { label: "max-radius=48".into(), value: Some(48) }).unwrap();
@@ -49,7 +49,7 @@ fn region(e: &ImageError) -> f64 {
     e.psnr_masked_db.unwrap()
 }
 
-fn measure(name: &str, band: GuardBand) -> (Setup, MultiLayerImage, [ImageError; 3]) {
+fn measure(name: &str, band: GuardBand) -> (Setup, SceneLayers, [ImageError; 3]) {
     let s = setup(name);
     let ml = layers(name, &s.lens, band);
     let images = run(&mut CpuBackend::new(), &ml, s.lens);
@@ -192,8 +192,8 @@ fn the_exr_edge_policy_on_objects_crossing_the_frame_edges() {
     let s = setup("edges");
     let banded = layers("edges", &s.lens, GuardBand::Auto);
     let frame = layers("edges", &s.lens, GuardBand::Off);
-    let extended = MultiLayerImage { layers: frame.layers.extend_edges(banded.margin).unwrap(), margin: banded.margin, ..frame.clone() };
-    let full = |ml: &MultiLayerImage| run(&mut CpuBackend::new(), ml, s.lens).map(|i| compare(&i, &s.reference, None).unwrap().psnr_db);
+    let extended = SceneLayers { layers: frame.layers.extend_edges(banded.margin).unwrap(), margin: banded.margin, ..frame.clone() };
+    let full = |ml: &SceneLayers| run(&mut CpuBackend::new(), ml, s.lens).map(|i| compare(&i, &s.reference, None).unwrap().psnr_db);
     let (band, policy, none) = (full(&banded), full(&extended), full(&frame));
     eprintln!(
         "edges, full-frame PSNR (gather, single, multi): guard band {band:.3?}, edges extended {policy:.3?}, nothing beyond the frame {none:.3?}"

@@ -1,11 +1,11 @@
 //! Running a kernel of this crate's own (`own_kernel_shaders::HISTOGRAM`, declared with
-//! `dof_shaders::kernel!` in `kernels/`) on dof's backends, over the caller's buffers.
+//! `dof_shaders::kernel!` in `kernels/`) on dof-core's backends, over the caller's buffers.
 //!
-//! - CPU: the descriptor carries its CPU entry, so [`dof::CpuBackend`] runs it as it is.
+//! - CPU: the descriptor carries its CPU entry, so [`dof_core::CpuBackend`] runs it as it is.
 //! - Vulkan: [`add_to`] hands this crate's SPIR-V ([`MODULES`], compiled by build.rs) to
-//!   [`dof::VulkanBackend::add_modules`]; from then on the backend dispatches the kernel like its own.
+//!   [`dof_core::VulkanBackend::add_modules`]; from then on the backend dispatches the kernel like its own.
 
-use dof::backend::{Backend, RunKernel};
+use dof_core::backend::{Backend, RunKernel};
 use own_kernel_shaders::{HistogramParams, histogram as histogram_kernel};
 
 include!(concat!(env!("OUT_DIR"), "/own_modules.rs"));
@@ -17,13 +17,13 @@ pub fn own_modules() -> Vec<(&'static str, &'static [u8])> {
 }
 
 /// Adds this crate's kernels to a Vulkan backend (refused if one of their entry points is taken).
-pub fn add_to(vulkan: &mut dof::VulkanBackend) -> dof::Result<()> {
+pub fn add_to(vulkan: &mut dof_core::VulkanBackend) -> dof_core::Result<()> {
     vulkan.add_modules(&own_modules())
 }
 
 /// The histogram of `values` (`value % bins`) through the kernel on `backend`: the values in a
 /// buffer of the caller's, the counts in another, both made, used and destroyed here.
-pub fn histogram(backend: &mut dyn Backend, values: &[u32], bins: u32) -> dof::Result<Vec<u32>> {
+pub fn histogram(backend: &mut dyn Backend, values: &[u32], bins: u32) -> dof_core::Result<Vec<u32>> {
     let input = backend.create_buffer(values.len().max(1) as u64, "values")?;
     let counts = backend.create_buffer(bins.max(1) as u64, "counts")?;
     let result = (|| {
@@ -69,8 +69,8 @@ mod tests {
 
     /// The kernel as a CPU unit test: CPU backend against plain Rust, several lengths and bin counts.
     #[test]
-    fn histogram_on_the_cpu_backend() -> dof::Result<()> {
-        let mut cpu = dof::CpuBackend::new();
+    fn histogram_on_the_cpu_backend() -> dof_core::Result<()> {
+        let mut cpu = dof_core::CpuBackend::new();
         for (n, bins) in [(0, 4), (1, 1), (63, 7), (1000, 16), (100_000, 256)] {
             let values = sample(n);
             assert_eq!(histogram(&mut cpu, &values, bins)?, histogram_reference(&values, bins), "{n} words, {bins} bins");

@@ -6,11 +6,11 @@ use own_kernel::{add_to, histogram, histogram_reference, sample};
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (values, bins) = (sample(1 << 20), 64);
     let want = histogram_reference(&values, bins);
-    let cpu = histogram(&mut dof::CpuBackend::new(), &values, bins)?;
+    let cpu = histogram(&mut dof_core::CpuBackend::new(), &values, bins)?;
     if cpu != want {
         return Err("the CPU backend's histogram is not plain Rust's".into());
     }
-    let mut vulkan = dof::VulkanBackend::new(&dof::VulkanOptions { validation: true, device: None })?;
+    let mut vulkan = dof_core::VulkanBackend::new(&dof_core::VulkanOptions { validation: true, device: None })?;
     add_to(&mut vulkan)?;
     let gpu = histogram(&mut vulkan, &values, bins)?;
     let messages = vulkan.validation_messages();

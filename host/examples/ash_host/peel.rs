@@ -4,12 +4,12 @@
 //! D32_SFLOAT depth attachment. Its fragment shader calls the library's peel test
 //! (`dof_peel_keep`, the GLSL of docs/integration.md) against the bound buffer the library writes;
 //! its draw is indirect, from the command the library writes (a count of zero past the last useful
-//! pass). Everything else about peeling is `dof::frame::RendererPeel`'s.
+//! pass). Everything else about peeling is `dof_core::frame::RendererPeel`'s.
 
 use super::{Buffer, Renderer};
 use anyhow::Result;
-use dof::backend::vulkan::ash::vk;
-use dof::backend::{ImageRef, VulkanBackend};
+use dof_core::backend::vulkan::ash::{self, vk};
+use dof_core::backend::{ImageRef, VulkanBackend};
 use std::ffi::CStr;
 
 const VERT: &[u8] = include_bytes!("peel.vert.spv");
@@ -251,7 +251,7 @@ impl PeelPass {
     }
 
     /// Our bound and draw buffers, imported for the library to write.
-    pub fn import(&self, backend: &mut VulkanBackend) -> Result<(dof::backend::BufferId, dof::backend::BufferId)> {
+    pub fn import(&self, backend: &mut VulkanBackend) -> Result<(dof_core::backend::BufferId, dof_core::backend::BufferId)> {
         // SAFETY: our live storage buffers of these sizes, alive until the backend has forgotten them.
         unsafe {
             Ok((

@@ -23,7 +23,7 @@ use crate::layers::RgbImage;
 use crate::metrics::compare;
 use crate::raster::{AccumulateOptions, accumulate, peel_layers};
 use crate::scene::{
-    AutoOptions, LayerOptions, MultiLayerImage, ReferenceOptions, builtin, load_gltf, raycast_layers, reference, reference_auto,
+    AutoOptions, LayerOptions, ReferenceOptions, SceneLayers, builtin, load_gltf, raycast_layers, reference, reference_auto,
 };
 use crate::timing::RunTimes;
 use dof_shaders::lens::ThinLens;
@@ -175,7 +175,7 @@ struct Prepared {
     width: u32,
     height: u32,
     lens: ThinLens,
-    ml: MultiLayerImage,
+    ml: SceneLayers,
     reference: RgbImage,
     /// Samples per pixel of the exact reference, or renders of the accumulation buffer.
     reference_spp: u32,

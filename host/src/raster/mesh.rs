@@ -6,10 +6,8 @@ use crate::error::{Error, Result};
 use crate::scene::Lighting;
 use dof_shaders::raster::mesh::{Light, MATERIAL_WORDS, MeshMaterial, MeshVertex, NO_TEXTURE, TextureInfo};
 
-/// Most triangles a mesh may have: the visibility buffer stores `triangle + 1` as an exact f32.
-pub const MAX_TRIANGLES: u64 = 1 << 24;
-/// Most texels all textures together may hold (2^24, 256 MiB of linear RGBA f32).
-pub const MAX_TEXELS: u64 = 1 << 24;
+/// The scenes' limits, which the rasteriser's fields are sized for.
+pub use crate::scene::mesh::{MAX_TEXELS, MAX_TRIANGLES};
 
 /// A triangle mesh in world space with its materials, textures and light.
 #[derive(Clone, Copy, Debug)]
@@ -106,6 +104,11 @@ impl RasterScene<'_> {
 }
 
 impl crate::scene::MeshScene {
+    /// Checks what the rasteriser relies on ([`RasterScene::validate`]).
+    pub fn validate(&self) -> Result<()> {
+        self.raster().validate()
+    }
+
     /// The scene as the rasteriser takes it.
     pub fn raster(&self) -> RasterScene<'_> {
         RasterScene {

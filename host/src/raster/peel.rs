@@ -23,7 +23,7 @@ use crate::backend::{Backend, BufferId, CommandTime, RunKernel, groups_for, push
 use crate::error::{Error, Result};
 use crate::layers::{Fragment, LayeredImage};
 use crate::scene::guard_band::auto_margin_mesh;
-use crate::scene::{Camera, CameraFrame, LayerOptions, MultiLayerImage, apply_disocclusion};
+use crate::scene::{Camera, CameraFrame, LayerOptions, SceneLayers, apply_disocclusion};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{is_surface, slot_kept};
 use dof_shaders::raster::draw::{RASTER_DRAW, VIS_WORDS};
@@ -32,7 +32,7 @@ use dof_shaders::raster::shade::{LAYER, LAYER_WORDS, RASTER_SHADE, ShadeParams, 
 
 /// The peeled image and what it cost.
 pub struct Peeled {
-    pub image: MultiLayerImage,
+    pub image: SceneLayers,
     /// Peeling passes run (each a draw and a shading dispatch).
     pub passes: u32,
     pub times: Vec<CommandTime>,

@@ -24,16 +24,8 @@ use dof_shaders::peel::nearest_in_reach;
 
 pub use dof_shaders::peel::MAX_GUARD_BAND;
 
-/// How wide a margin the multi-layer image gets beyond the frame.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum GuardBand {
-    /// None: the methods see nothing beyond the frame (what an EXR offers).
-    Off,
-    /// The largest CoC radius that can reach into the frame, up to [`MAX_GUARD_BAND`] (module docs).
-    Auto,
-    /// A fixed margin in pixels (at most [`MAX_GUARD_BAND`]).
-    Pixels(u32),
-}
+/// How wide a margin: in the core, a field of [`LayerOptions`](crate::scene::LayerOptions).
+pub use crate::frame::GuardBand;
 
 impl Camera {
     /// The camera that sees `margin` more pixels on every side with the same pixel pitch and centre:
@@ -169,20 +161,6 @@ pub fn auto_margin_mesh(triangles: impl Iterator<Item = [Vec3; 3]>, camera: &Cam
 }
 
 pub use dof_shaders::peel::margin_of;
-
-impl GuardBand {
-    /// The margin in pixels this choice gives, `auto` computing it when asked.
-    pub fn resolve(self, auto: impl FnOnce() -> crate::Result<u32>) -> crate::Result<u32> {
-        match self {
-            GuardBand::Off => Ok(0),
-            GuardBand::Auto => auto(),
-            GuardBand::Pixels(m) if m <= MAX_GUARD_BAND => Ok(m),
-            GuardBand::Pixels(m) => {
-                Err(crate::Error::TooLarge { what: "guard band (px)".into(), size: m as u64, limit: MAX_GUARD_BAND as u64 })
-            }
-        }
-    }
-}
 
 #[cfg(test)]
 mod tests {

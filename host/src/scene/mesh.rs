@@ -18,8 +18,11 @@ use super::analytic::Lighting;
 use super::camera::Camera;
 use crate::error::{Error, Result};
 
-/// Most triangles a scene may hold (2^24), so triangle ids fit the rasteriser's 24-bit fields.
-pub use crate::raster::mesh::{MAX_TEXELS, MAX_TRIANGLES};
+/// Most triangles a mesh may have: the rasteriser's visibility buffer stores `triangle + 1` as an
+/// exact f32.
+pub const MAX_TRIANGLES: u64 = 1 << 24;
+/// Most texels all textures together may hold (2^24, 256 MiB of linear RGBA f32).
+pub const MAX_TEXELS: u64 = 1 << 24;
 
 /// A triangle scene in world space (the default is empty, with the default light).
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -186,10 +189,5 @@ impl MeshScene {
         let mut it = self.vertices.iter().map(|v| Vec3::from(v.position));
         let first = it.next()?;
         Some(it.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p))))
-    }
-
-    /// Checks what the rasteriser relies on ([`RasterScene::validate`](crate::raster::RasterScene::validate)).
-    pub fn validate(&self) -> Result<()> {
-        self.raster().validate()
     }
 }

@@ -35,7 +35,8 @@ pub mod mesh;
 pub mod mitsuba_export;
 pub mod raycast;
 pub mod reference;
-pub mod sampling;
+/// The sampler lives in the core (ray tracing through layers draws its lens samples with it).
+pub use dof_core::sampling;
 
 pub use analytic::{Albedo, Hit, Lighting, Material, Primitive, Scene, Shape};
 pub use builtin::{BuiltinScene, builtin, builtin_names};
@@ -52,5 +53,5 @@ pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
 pub use mesh::{LoadReport, MeshCamera, MeshScene};
 #[cfg(feature = "eval")]
 pub use mitsuba_export::{MitsubaExport, MitsubaOptions, MitsubaScene, export_metadata, export_mitsuba};
-pub use raycast::{LayerOptions, MultiLayerImage, apply_disocclusion, raycast_layers};
+pub use raycast::{LayerOptions, SceneLayers, apply_disocclusion, raycast_layers};
 pub use reference::{AutoOptions, MAX_SPP, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};

@@ -31,39 +31,21 @@ use rayon::prelude::*;
 
 use super::analytic::{Hit, Scene};
 use super::camera::{Camera, CameraFrame};
-use super::guard_band::{GuardBand, auto_margin};
+use super::guard_band::auto_margin;
 use crate::error::{Error, Result};
 use crate::layers::{Fragment, LayerStats, LayeredImage, RgbImage, crop_plane};
 
-/// How the multi-layer image is built.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LayerOptions {
-    /// Fragments kept per pixel at most (L), `>= 1`. Default 4.
-    pub max_layers: u32,
-    /// Thin layers by the umbra threshold (default on). Off: consecutive hits are all kept.
-    pub umbra_threshold: bool,
-    /// Keep more than the front fragment only inside the disocclusion buffer (default on). The
-    /// statistics of both variants are returned either way.
-    pub disocclusion: bool,
-    /// Relative depth difference between 4-neighbours that counts as a discontinuity (default 0.05).
-    pub edge_depth_ratio: f32,
-    /// The margin rendered beyond the frame (default [`GuardBand::Auto`], see
-    /// [`super::guard_band`]).
-    pub guard_band: GuardBand,
-}
+/// How the multi-layer image is built: in the core, beside the renderer peel that reads it too.
+pub use crate::frame::LayerOptions;
 
-impl Default for LayerOptions {
-    fn default() -> Self {
-        LayerOptions { max_layers: 4, umbra_threshold: true, disocclusion: true, edge_depth_ratio: 0.05, guard_band: GuardBand::Auto }
-    }
-}
-
-/// A multi-layer image with what produced it.
+/// A scene rendered into layers (by [`raycast_layers`], or by the rasteriser's depth peel):
+/// the [`LayeredImage`] of the frame and its guard band, the disocclusion buffer and the layer
+/// statistics. Methods run on [`Self::layers`]; [`Self::crop`] cuts their result to the frame.
 #[derive(Clone, Debug, PartialEq)]
-pub struct MultiLayerImage {
+pub struct SceneLayers {
     /// The layers, `margin` pixels larger than the frame on every side (the guard band): limited by
     /// the disocclusion buffer when `LayerOptions::disocclusion` was on, all kept otherwise. Run a
-    /// method on these and crop its result with [`MultiLayerImage::crop`].
+    /// method on these and crop its result with [`SceneLayers::crop`].
     pub layers: LayeredImage,
     /// The guard band's width in pixels.
     pub margin: u32,
@@ -76,7 +58,7 @@ pub struct MultiLayerImage {
     pub without_mask: LayerStats,
 }
 
-impl MultiLayerImage {
+impl SceneLayers {
     /// Share of the frame's pixels inside the disocclusion buffer.
     pub fn mask_share(&self) -> f64 {
         self.mask.iter().filter(|m| **m).count() as f64 / self.mask.len().max(1) as f64
@@ -103,7 +85,7 @@ impl MultiLayerImage {
 /// Ray casts the exact multi-layer image of `scene` seen by `camera` through `lens` (module docs).
 /// Errors on an invalid camera or lens, `max_layers == 0`, a NaN or negative edge ratio, or an
 /// image too large to address.
-pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &LayerOptions) -> Result<MultiLayerImage> {
+pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &LayerOptions) -> Result<SceneLayers> {
     camera.frame()?;
     if !lens.is_valid() {
         return Err(Error::InvalidArgument(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
@@ -124,13 +106,7 @@ pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
 /// rasteriser's, seen by `frame`, `margin` pixels of guard band around the frame): the
 /// disocclusion buffer from its front layer, and the frame's statistics with and without it. The
 /// layers returned are masked when `options.disocclusion` is on.
-pub fn apply_disocclusion(
-    full: LayeredImage,
-    frame: &CameraFrame,
-    lens: &ThinLens,
-    options: &LayerOptions,
-    margin: u32,
-) -> MultiLayerImage {
+pub fn apply_disocclusion(full: LayeredImage, frame: &CameraFrame, lens: &ThinLens, options: &LayerOptions, margin: u32) -> SceneLayers {
     let l = full.max_layers as usize;
     let front: Vec<f32> =
         (0..full.counts.len()).map(|p| if full.counts[p] > 0 { full.fragments[p * l].depth } else { f32::INFINITY }).collect();
@@ -152,7 +128,7 @@ pub fn apply_disocclusion(
     let with_mask = masked.crop(margin).stats();
     let layers = if options.disocclusion { masked } else { full };
     let mask = crop_plane(&mask, frame.width, margin);
-    MultiLayerImage { layers, margin, mask, with_mask, without_mask }
+    SceneLayers { layers, margin, mask, with_mask, without_mask }
 }
 
 /// Fills `image` with every pixel's kept hits (steps 1 and 2), rows in parallel.

@@ -9,5 +9,5 @@
 
 mod run;
 
-pub use crate::frame::splat::{Merge, Plan, SplatOptions, SplatReport};
+pub use crate::frame::splat::{Merge, SplatOptions, SplatPlanReport, SplatReport};
 pub use run::{Intermediates, SplatOutput, splat, splat_with_stages};

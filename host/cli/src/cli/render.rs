@@ -11,8 +11,8 @@ use dof::methods::one_shot::one_shot;
 use dof::methods::splat::Merge;
 use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
 use dof::scene::{
-    self, Aperture, AutoOptions, Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, MeshScene, MultiLayerImage,
-    ReferenceOptions, Vec3, load_gltf, raycast_layers,
+    self, Aperture, AutoOptions, Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, MeshScene, ReferenceOptions,
+    SceneLayers, Vec3, load_gltf, raycast_layers,
 };
 use dof_shaders::lens::ThinLens;
 use std::path::{Path, PathBuf};
@@ -692,7 +692,7 @@ fn lens_settings(args: &RenderArgs, mut settings: LensSettings) -> LensSettings 
 
 /// The methods that start from the multi-layer image, whatever made it: the layers themselves, or
 /// a blur of them.
-fn render_layers(args: &RenderArgs, out: &Path, layered: &MultiLayerImage, lens: &ThinLens) -> anyhow::Result<()> {
+fn render_layers(args: &RenderArgs, out: &Path, layered: &SceneLayers, lens: &ThinLens) -> anyhow::Result<()> {
     if args.method == Method::Layers {
         write_layered_exr(out, &layered.frame_layers())?;
         let (w, wo) = (layered.with_mask, layered.without_mask);
@@ -723,7 +723,7 @@ fn render_layers(args: &RenderArgs, out: &Path, layered: &MultiLayerImage, lens:
 }
 
 /// An image with the front layer's depth, its CoC and the disocclusion buffer as extra planes.
-fn write_with_planes(args: &RenderArgs, out: &Path, image: &RgbImage, layered: &MultiLayerImage, lens: &ThinLens) -> anyhow::Result<()> {
+fn write_with_planes(args: &RenderArgs, out: &Path, image: &RgbImage, layered: &SceneLayers, lens: &ThinLens) -> anyhow::Result<()> {
     let (_, depth) = layered.front();
     let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
     let mask: Vec<f32> = layered.mask.iter().map(|&m| m as u32 as f32).collect();

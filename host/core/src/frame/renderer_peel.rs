@@ -26,11 +26,11 @@
 //!   that pass dispatch zero workgroups; only the two attachment copies remain. A renderer that
 //!   draws directly instead gets every fragment discarded by the bound.
 
+use super::LayerOptions;
 use super::io::{DepthEncoding, Frame, FrameInput, FrameOutput, Owned, context_pixels, ready};
 use super::peel::{KERNELS, PeelReport, PeelSlots};
 use crate::backend::{Backend, BufferId, ImageFormat, ImageRef, RunKernel, format_names};
 use crate::error::{Error, Result};
-use crate::scene::LayerOptions;
 use dof_shaders::frame_io::{DEPTH_F32, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FrameIoParams};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{APPEND_ARGS, SHADE_ARGS};

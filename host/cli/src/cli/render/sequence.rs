@@ -94,9 +94,9 @@ fn read_exr_frame(path: &Path, first: Option<&LayeredImage>, notes: bool) -> any
 
 /// An EXR frame as the sequence's loop takes a rendered one: its edges extended by `margin`, no
 /// disocclusion buffer (an EXR carries none; its mask channel is not written).
-fn exr_as_layers(frame: &LayeredImage, margin: u32) -> anyhow::Result<MultiLayerImage> {
+fn exr_as_layers(frame: &LayeredImage, margin: u32) -> anyhow::Result<SceneLayers> {
     let stats = frame.stats();
-    Ok(MultiLayerImage {
+    Ok(SceneLayers {
         layers: frame.extend_edges(margin)?,
         margin,
         mask: vec![false; frame.width as usize * frame.height as usize],

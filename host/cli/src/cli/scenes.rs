@@ -10,7 +10,7 @@ use dof::layers::RgbImage;
 use dof::metrics::compare;
 use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
 use dof::scene::{
-    AutoOptions, BuiltinScene, ExportOptions, LayerOptions, MitsubaExport, MitsubaOptions, MultiLayerImage, ReferenceOptions, builtin,
+    AutoOptions, BuiltinScene, ExportOptions, LayerOptions, MitsubaExport, MitsubaOptions, ReferenceOptions, SceneLayers, builtin,
     builtin_names, export_glb, export_metadata, export_mitsuba, load_gltf_slice, raycast_layers, reference, reference_auto,
 };
 use dof_shaders::lens::ThinLens;
@@ -277,7 +277,7 @@ fn export_mitsuba_files(dir: &mut OutputDir, scene: &BuiltinScene, lens: &ThinLe
 }
 
 /// The scene exported to glTF, loaded back, depth-peeled, and (on request) accumulated.
-fn raster(args: &ScenesArgs, scene: &BuiltinScene, lens: &ThinLens, exact: &MultiLayerImage) -> anyhow::Result<()> {
+fn raster(args: &ScenesArgs, scene: &BuiltinScene, lens: &ThinLens, exact: &SceneLayers) -> anyhow::Result<()> {
     let glb = export_glb(&scene.scene, &scene.camera, &ExportOptions::default())?;
     let mesh = load_gltf_slice(&glb)?;
     let raster = mesh.raster();

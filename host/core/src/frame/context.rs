@@ -127,24 +127,29 @@ pub trait DofContext {
     /// renderer's submission with fence `frame % N`, and the wait on it is implied):
     ///
     /// ```
-    /// use dof::backend::{Backend, CpuBackend};
-    /// use dof::frame::{ContextDesc, Extent, Frame, MethodOptions, registry};
-    /// # fn main() -> dof::Result<()> {
+    /// use dof_core::ThinLens;
+    /// use dof_core::backend::{Backend, CpuBackend};
+    /// use dof_core::frame::{ContextDesc, Extent, Frame, MethodOptions, registry};
+    /// # fn main() -> dof_core::Result<()> {
     /// const N: u32 = 2;
     /// let mut b = CpuBackend::new();
     /// let desc = ContextDesc { frames_in_flight: N, ..ContextDesc::new(Extent::new(32, 32, 1), MethodOptions::default()) };
     /// let mut ctx = registry::create(&mut b, registry::method("gather")?, &desc)?;
-    /// let image = dof::stress::noise_with_sky(32, 32, 1);
     /// let [fragments, counts, out] = [5 * 1024, 1024, 3 * 1024].map(|w| b.create_buffer(w, "caller").unwrap());
-    /// b.write_buffer(fragments, 0, &dof::methods::buffers::slot_words(&image))?;
-    /// b.write_buffer(counts, 0, &image.counts)?;
+    /// // One opaque fragment a pixel (the layered input's slot words: premultiplied r, g, b, depth,
+    /// // alpha), depths 0.5 to 8.2.
+    /// let slots: Vec<u32> = (0..1024u32)
+    ///     .flat_map(|i| [0.5, 0.25, (i % 7) as f32 / 7.0, 0.5 + (i * 37 % 101) as f32 / 13.0, 1.0].map(f32::to_bits))
+    ///     .collect();
+    /// b.write_buffer(fragments, 0, &slots)?;
+    /// b.write_buffer(counts, 0, &[1u32; 1024])?;
     /// let mut radii = Vec::new();
     /// for frame in 0..6u32 {
     ///     // After waiting on fence `frame % N`: frame - N has completed, its slot is about to be reused.
     ///     if frame >= N {
     ///         radii.push(ctx.report_frame(&mut b, N - 1)?.figures["radius_px"]);
     ///     }
-    ///     let lens = dof::stress::test_lens(0.002 * (frame + 1) as f32);
+    ///     let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.002 * (frame + 1) as f32, focus_distance: 2.0, pixels_per_unit: 8000.0 };
     ///     ctx.record(&mut b, &Frame::layers(32, 32, 1, lens, fragments, counts, out))?;
     ///     b.submit()?;
     /// }

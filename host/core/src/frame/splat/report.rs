@@ -1,12 +1,12 @@
 //! What a splatting frame did and what it left out, for the CLI and the evaluation.
 
-use super::options::Plan;
+use super::options::SplatPlanReport;
 use crate::ops::sort::SortStats;
 
 /// What a frame did and left out.
 #[derive(Clone, Debug, Default)]
 pub struct SplatReport {
-    pub plan: Option<Plan>,
+    pub plan: Option<SplatPlanReport>,
     pub pixels: u64,
     /// Fragments in the input, and slots a full multi-layer image of this many layers would hold.
     pub input_fragments: u64,

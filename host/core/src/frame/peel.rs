@@ -1,7 +1,7 @@
 //! The device half of depth peeling (Franke et al. 2018, §4.1-4.3), whatever draws the passes: the
 //! slots in the layout [`super::FrameInput::Layers`] reads, the reach the next pass tests against,
 //! the indirect arguments of each pass, and the disocclusion buffer. Kernels and rules in
-//! `dof_shaders::peel`; a drawer (the mesh rasteriser's [`crate::raster::MeshPeelContext`]) records,
+//! `dof_shaders::peel`; a drawer (the mesh rasteriser's `MeshPeelContext`, in the crate `dof` above the core) records,
 //! per frame:
 //!
 //! ```text
@@ -24,8 +24,8 @@ use dof_shaders::peel::{
 };
 use dof_shaders::raster::shade::{LAYER_WORDS, RASTER_SHADE};
 
-/// The kernels a peel records.
-pub(crate) const KERNELS: [&dof_shaders::KernelDesc; 7] =
+/// The kernels a peel records (a drawer prepares them with its own).
+pub const KERNELS: [&dof_shaders::KernelDesc; 7] =
     [&PEEL_PLAN, &PEEL_APPEND, &PEEL_EDGES, &PEEL_SPAN, &PEEL_MASK, &PEEL_BAND, &PEEL_BAND_END];
 
 /// The peel's buffers on the device for a `width` x `height` image with `layers` slots a pixel
@@ -99,7 +99,7 @@ impl PeelReport {
 
 impl PeelSlots {
     /// Makes the buffers (into `owned`), refusing an empty image or slots beyond one buffer.
-    pub(crate) fn new(backend: &mut dyn Backend, owned: &mut Owned, width: u32, height: u32, layers: u32) -> Result<Self> {
+    pub fn new(backend: &mut dyn Backend, owned: &mut Owned, width: u32, height: u32, layers: u32) -> Result<Self> {
         let pixels = super::io::context_pixels(backend, "peel", width, height, layers)?;
         if width > i32::MAX as u32 / 2 || height > i32::MAX as u32 / 2 {
             return Err(Error::TooLarge {

@@ -15,10 +15,10 @@
 //! `VulkanBackend::add_modules` and `examples/own-kernel`).
 //!
 //! ```
-//! use dof::backend::{Backend, CpuBackend};
-//! use dof::ops::{scan::ScanScratch, sort::SegmentedSort};
+//! use dof_core::backend::{Backend, CpuBackend};
+//! use dof_core::ops::{scan::ScanScratch, sort::SegmentedSort};
 //!
-//! # fn main() -> dof::Result<()> {
+//! # fn main() -> dof_core::Result<()> {
 //! let mut backend = CpuBackend::new();
 //!
 //! // Scan: counts in the caller's buffer become offsets, the total is read back from the scratch.

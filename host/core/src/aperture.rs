@@ -11,7 +11,7 @@
 
 use crate::error::{Error, Result};
 use dof_shaders::aperture::{Aperture, blades, masked};
-#[cfg(feature = "exr")]
+#[cfg(feature = "png")]
 use std::path::Path;
 
 /// An aperture: the kernels' description and, for a mask, its texels.
@@ -26,10 +26,10 @@ pub struct ApertureShape {
 const STAR_SIDE: u32 = 96;
 const STAR_SAMPLES: u32 = 4;
 /// Largest side of an image mask.
-#[cfg(feature = "exr")]
+#[cfg(feature = "png")]
 const MAX_IMAGE_SIDE: u32 = 128;
 /// Shortest longer side of an aperture image: the mask needs at least 2x2 texels.
-#[cfg(feature = "exr")]
+#[cfg(feature = "png")]
 const MIN_IMAGE_SIDE: u32 = 2;
 
 impl ApertureShape {
@@ -112,10 +112,12 @@ pub fn parse_aperture(text: &str) -> Result<ApertureShape> {
         return star(n, rotation.to_radians(), inner.unwrap_or(0.5)).ok_or_else(|| syntax(text));
     }
     if text.to_ascii_lowercase().ends_with(".png") {
-        #[cfg(feature = "exr")]
+        #[cfg(feature = "png")]
         return image_aperture(Path::new(text));
-        #[cfg(not(feature = "exr"))]
-        return Err(Error::InvalidArgument(format!("aperture image {text}: reading PNG files needs the `exr` feature of the dof crate")));
+        #[cfg(not(feature = "png"))]
+        return Err(Error::InvalidArgument(format!(
+            "aperture image {text}: reading PNG files needs the `png` feature of dof-core (the `exr` feature of dof)"
+        )));
     }
     Err(syntax(text))
 }
@@ -166,8 +168,8 @@ pub fn star(n: u32, rotation: f32, inner: f32) -> Option<ApertureShape> {
     Some(ApertureShape { kernel, mask })
 }
 
-/// An aperture from a PNG (see the module notes; feature `exr`).
-#[cfg(feature = "exr")]
+/// An aperture from a PNG (see the module notes; feature `png`).
+#[cfg(feature = "png")]
 pub fn image_aperture(path: &Path) -> Result<ApertureShape> {
     let bad = |why: String| Error::InvalidArgument(format!("aperture image {}: {why}", path.display()));
     let bytes = std::fs::read(path).map_err(|e| bad(format!("cannot read it ({e})")))?;

@@ -363,9 +363,9 @@ impl ImageRef {
 /// nothing to wait for and is left in the layout it was in, unless told otherwise.
 ///
 /// ```no_run
-/// # use dof::backend::ImageRef;
-/// # use dof::backend::vulkan::ash::vk;
-/// # fn f(image: vk::Image) -> dof::Result<ImageRef> {
+/// # use dof_core::backend::ImageRef;
+/// # use dof_core::backend::vulkan::ash::vk;
+/// # fn f(image: vk::Image) -> dof_core::Result<ImageRef> {
 /// let colour = ImageRef::describe(image, vk::Format::R16G16B16A16_SFLOAT, [1920, 1080])?
 ///     .in_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
 ///     .after(vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT, vk::AccessFlags::COLOR_ATTACHMENT_WRITE)

@@ -21,7 +21,7 @@ use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 // The sampler is a leaf module of pure functions (the reference renderer's), shared so that the
 // traced rays are stratified the same way.
-use crate::scene::sampling::{concentric_disc, pixel_rng, stratified};
+use crate::sampling::{concentric_disc, pixel_rng, stratified};
 use dof_shaders::raytrace::{
     MAX_LEVELS, RT_BASE, RT_REDUCE, STATS_WORDS, TILE, TraceParams, level_offsets, levels_for, raytrace_base, raytrace_reduce,
     raytrace_trace,
@@ -104,8 +104,9 @@ pub fn trace_params(
 
 /// Records the hierarchy and the trace of one frame over `b.input` and `b.counts` into `b.out`,
 /// counting missed rays into `b.stats` (cleared first): what the one-shot function and the context
-/// both run.
-pub(crate) fn record_trace(backend: &mut dyn Backend, params: &TraceParams, b: raytrace_trace::Bindings<BufferId>) -> Result<()> {
+/// both run (public for that one-shot oracle, above the core).
+#[doc(hidden)]
+pub fn record_trace(backend: &mut dyn Backend, params: &TraceParams, b: raytrace_trace::Bindings<BufferId>) -> Result<()> {
     let pixels = params.width as u64 * params.height as u64;
     backend.fill(b.stats, 0, STATS_WORDS as u64, 0, "raytrace/stats")?;
     let base = raytrace_base::Bindings { input: b.input, counts: b.counts, hier: b.hier };

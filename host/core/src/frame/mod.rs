@@ -30,7 +30,7 @@
 //! and layered DoF with matting (Schedl, Wimmer 2012) through [`LayeredContext`], whose layer plan
 //! (the signed-CoC range and which candidate layers are used) is a device reduction over layers
 //! fixed at creation. Every context records the same [`Frame`] description. The one-shot functions
-//! in [`crate::methods`] (what the CLI, the evaluation and the tests call) run one frame through
+//! in `methods` of the crate `dof` above the core (what the CLI, the evaluation and the tests call) run one frame through
 //! these contexts, except ray tracing's and layered DoF's, which keep their own per-call paths
 //! (ray tracing's records the context's kernels; layered DoF's plans on the host and is the
 //! oracle the context is tested against).
@@ -41,6 +41,7 @@ pub mod context;
 pub mod gather;
 mod in_flight;
 pub mod io;
+pub mod layer_options;
 pub mod layered;
 pub mod peel;
 pub mod raytrace;
@@ -54,6 +55,7 @@ pub use context::{ContextReport, DofContext, Extent};
 pub use gather::{GatherContext, GatherContextDesc};
 pub use in_flight::MAX_FRAMES_IN_FLIGHT;
 pub use io::{DepthEncoding, Frame, FrameInput, FrameOutput};
+pub use layer_options::{GuardBand, LayerOptions};
 pub use layered::{LayeredContext, LayeredContextDesc, LayeredOptions, LayeredPlanReport};
 pub use raytrace::{RaytraceContext, RaytraceContextDesc, RaytraceOptions};
 pub use registry::{ContextDesc, METHODS, MethodInfo, MethodOptions, Reads};

@@ -178,8 +178,9 @@ pub(crate) fn context_pixels(backend: &dyn Backend, what: &str, width: u32, heig
 }
 
 /// Builds a new context's pipelines and submits its buffers' zeroing now, so that its first frame
-/// records only its own work; a failure destroys the context.
-pub(crate) fn ready<C>(
+/// records only its own work; a failure destroys the context. Public for contexts above the core
+/// (the mesh peel of the crate `dof`).
+pub fn ready<C>(
     backend: &mut dyn Backend,
     ctx: C,
     kernels: &[&'static dof_shaders::KernelDesc],
@@ -195,9 +196,9 @@ pub(crate) fn ready<C>(
     }
 }
 /// The buffers a context owns: made one by one, counted, and freed together (also when making a
-/// later one fails part way).
+/// later one fails part way). Public for contexts above the core (the mesh peel of the crate `dof`).
 #[derive(Default)]
-pub(crate) struct Owned {
+pub struct Owned {
     ids: Vec<BufferId>,
     bytes: u64,
     /// Each buffer's label and bytes, in the order made (for per-buffer memory tables).

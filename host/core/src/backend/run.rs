@@ -5,7 +5,7 @@
 //! that pick a kernel at run time.
 //!
 //! ```
-//! use dof::backend::{Backend, CpuBackend, RunKernel};
+//! use dof_core::backend::{Backend, CpuBackend, RunKernel};
 //! use dof_shaders::scan::{ScanParams, scan_block};
 //! let mut cpu = CpuBackend::new();
 //! let (data, sums) = (cpu.create_buffer(256, "data")?, cpu.create_buffer(1, "sums")?);
@@ -13,29 +13,29 @@
 //! cpu.run(scan_block::Bindings { data, sums }, [1, 1, 1], &ScanParams { len: 256, data_offset: 0, sums_offset: 0 }, "scan")?;
 //! cpu.submit()?;
 //! assert_eq!(cpu.read_buffer(sums, 0, 1)?, [256]);
-//! # Ok::<(), dof::Error>(())
+//! # Ok::<(), dof_core::Error>(())
 //! ```
 //!
 //! A binding left out is a compile error:
 //!
 //! ```compile_fail
-//! # use dof::backend::{Backend, CpuBackend, RunKernel};
+//! # use dof_core::backend::{Backend, CpuBackend, RunKernel};
 //! # use dof_shaders::scan::{ScanParams, scan_block};
 //! # let mut cpu = CpuBackend::new();
 //! # let data = cpu.create_buffer(256, "data")?;
 //! cpu.run(scan_block::Bindings { data }, [1, 1, 1], &ScanParams { len: 256, data_offset: 0, sums_offset: 0 }, "scan")?;
-//! # Ok::<(), dof::Error>(())
+//! # Ok::<(), dof_core::Error>(())
 //! ```
 //!
 //! and so are another kernel's parameters:
 //!
 //! ```compile_fail
-//! # use dof::backend::{Backend, CpuBackend, RunKernel};
+//! # use dof_core::backend::{Backend, CpuBackend, RunKernel};
 //! # use dof_shaders::{scan::scan_block, gather::GatherParams};
 //! # let mut cpu = CpuBackend::new();
 //! # let (data, sums) = (cpu.create_buffer(256, "data")?, cpu.create_buffer(1, "sums")?);
 //! cpu.run(scan_block::Bindings { data, sums }, [1, 1, 1], &GatherParams::default(), "scan")?;
-//! # Ok::<(), dof::Error>(())
+//! # Ok::<(), dof_core::Error>(())
 //! ```
 
 use super::{Backend, BufferId, push_words};

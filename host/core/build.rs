@@ -1,14 +1,15 @@
-//! Embeds the kernels' SPIR-V: one module per entry point, from `host/spirv/`.
+//! Embeds the kernels' SPIR-V: one module per entry point, from `host/spirv/` (beside this crate,
+//! `host/core/`, where CI checks it).
 //!
 //! `host/spirv/` is a generated artifact kept in git (one `.spv` per entry point and `manifest.txt`:
 //! entry point → file, and the hash of the kernel sources they were compiled from), so that a crate
-//! depending on `dof` needs neither the pinned nightly nor rust-gpu's compiler backend.
+//! depending on `dof-core` (or `dof`) needs neither the pinned nightly nor rust-gpu's compiler backend.
 //!
 //! - Without the `rebuild-spirv` feature this script only reads the manifest and generates the
 //!   `include_bytes!` table; it reruns when `host/spirv/` changes. Where the kernel sources lie next
 //!   to this crate (a checkout of the repository, not a packaged crate), their hash must be the
 //!   manifest's: a build that would embed SPIR-V older than the kernels it links for the CPU fails,
-//!   naming the feature that regenerates it (`cargo build -p dof` alone does not enable it).
+//!   naming the feature that regenerates it (`cargo build -p dof-core` or `-p dof` alone does not enable it).
 //! - With it (always on inside the workspace) the kernel crate is compiled to SPIR-V with rust-gpu
 //!   whenever its sources change, as before; when the result differs from `host/spirv/`, the files
 //!   and the manifest there are rewritten (stale modules removed) with a warning, and the freshly
@@ -83,7 +84,8 @@ fn write_table(modules: &[(String, PathBuf)]) -> Result<()> {
 }
 
 fn main() -> Result<()> {
-    let host_dir = Path::new(env!("CARGO_MANIFEST_DIR"));
+    // This crate is `host/core/`; the artifact stays in `host/spirv/`, the kernels in `shaders/`.
+    let host_dir = Path::new(env!("CARGO_MANIFEST_DIR")).parent().ok_or("dof-core's manifest directory has no parent")?;
     let spirv_dir = host_dir.join("spirv");
     #[cfg(feature = "rebuild-spirv")]
     {
@@ -113,7 +115,7 @@ fn embed_artifact(host_dir: &Path, spirv_dir: &Path) -> Result<()> {
             let crate_dir = crate_dir.canonicalize().unwrap_or(crate_dir);
             return Err(format!(
                 "the prebuilt SPIR-V in {} was compiled from other kernel sources than those in {} \
-                 (source hash {} in its manifest, {hash} on disk): build with `--features dof/rebuild-spirv` \
+                 (source hash {} in its manifest, {hash} on disk): build with `--features dof-core/rebuild-spirv` \
                  (the workspace-wide commands, `cargo test --workspace` and `cargo run --bin dof`, enable it) \
                  to recompile the kernels and rewrite it",
                 spirv_dir.display(),

@@ -20,7 +20,7 @@ use dof_shaders::splat::merge::{MERGE, splat_merge};
 use dof_shaders::splat::pack::{PACK, splat_pack};
 use dof_shaders::splat::plan::{splat_plan_finish, splat_plan_reduce};
 use dof_shaders::splat::{FLAG_UMBRA_MERGE, MAX_RINGS, SplatParams, TILE_SIZES, block_for, stats};
-pub use options::{Merge, Plan, SplatOptions};
+pub use options::{Merge, SplatOptions, SplatPlanReport};
 pub use report::SplatReport;
 
 /// Most tile-list entries a context may hold: 2^29, so that each list buffer stays within 2 GiB.
@@ -55,7 +55,8 @@ pub struct SplatContextDesc {
     pub max_list: Option<u32>,
     /// Keep each stage's buffers apart instead of reusing one stage's for a later one (for tests
     /// that compare every stage; costs up to two more slot buffers).
-    pub(crate) distinct_stage_buffers: bool,
+    #[doc(hidden)]
+    pub distinct_stage_buffers: bool,
     /// Hold the buffers that image inputs and outputs go through (10 words a pixel).
     pub image_io: bool,
     /// Frames in flight (default 1): copies kept of the statistics and lists' lengths reports read.
@@ -466,7 +467,7 @@ impl SplatContext {
         let list_lengths: Vec<u32> = seg.as_chunks::<2>().0.iter().map(|s| s[1]).collect();
         let c = |i: u32| st[i as usize];
         let pixels = f.width as u64 * f.height as u64;
-        let plan = Plan {
+        let plan = SplatPlanReport {
             width: f.width,
             height: f.height,
             layers: f.layer_count(),
@@ -513,7 +514,8 @@ impl SplatContext {
     }
 
     /// The context's buffers of each stage, for tests that compare backends stage by stage.
-    pub(crate) fn stage_buffers(&self) -> StageBuffers {
+    #[doc(hidden)]
+    pub fn stage_buffers(&self) -> StageBuffers {
         let b = &self.b;
         StageBuffers {
             cells: b.cells.clone(),
@@ -529,7 +531,8 @@ impl SplatContext {
 }
 
 /// See [`SplatContext::stage_buffers`].
-pub(crate) struct StageBuffers {
+#[doc(hidden)]
+pub struct StageBuffers {
     pub cells: Vec<(BufferId, BufferId)>,
     pub tile_count: BufferId,
     pub dense: BufferId,

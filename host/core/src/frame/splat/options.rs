@@ -74,10 +74,11 @@ impl Default for SplatOptions {
     }
 }
 
-/// What a frame decided: its size and tiling from the host, the rest from the device's reduction
-/// over the input (see `dof_shaders::splat::plan`).
+/// What a splatting frame ran with, as its report reads it back: its size and tiling from the host,
+/// the rest from the device's reduction over the input (see `dof_shaders::splat::plan`). A report,
+/// not an input: the frame plans on the device, and [`super::SplatReport::plan`] holds this.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Plan {
+pub struct SplatPlanReport {
     pub width: u32,
     pub height: u32,
     pub layers: u32,
@@ -95,7 +96,7 @@ pub struct Plan {
     pub merge_steps: u32,
 }
 
-impl Plan {
+impl SplatPlanReport {
     pub fn tiles(&self) -> u32 {
         self.tiles_x * self.tiles_y
     }

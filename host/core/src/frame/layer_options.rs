@@ -1,0 +1,54 @@
+//! How a multi-layer image is built: the fragments kept per pixel, the umbra threshold, the
+//! disocclusion buffer and the guard band. The renderer's own depth peel ([`super::RendererPeel`])
+//! reads these options here; the scenes above the core (analytic ray casting and the mesh peel, in
+//! the crate `dof`) read the same ones.
+
+use crate::error::{Error, Result};
+use dof_shaders::peel::MAX_GUARD_BAND;
+
+/// How the multi-layer image is built.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LayerOptions {
+    /// Fragments kept per pixel at most (L), `>= 1`. Default 4.
+    pub max_layers: u32,
+    /// Thin layers by the umbra threshold (default on). Off: consecutive hits are all kept.
+    pub umbra_threshold: bool,
+    /// Keep more than the front fragment only inside the disocclusion buffer (default on). The
+    /// statistics of both variants are returned either way.
+    pub disocclusion: bool,
+    /// Relative depth difference between 4-neighbours that counts as a discontinuity (default 0.05).
+    pub edge_depth_ratio: f32,
+    /// The margin rendered beyond the frame (default [`GuardBand::Auto`]; the scenes resolve it,
+    /// in the guard band module of the crate `dof`). A renderer's own peel renders what its attachments hold.
+    pub guard_band: GuardBand,
+}
+
+impl Default for LayerOptions {
+    fn default() -> Self {
+        LayerOptions { max_layers: 4, umbra_threshold: true, disocclusion: true, edge_depth_ratio: 0.05, guard_band: GuardBand::Auto }
+    }
+}
+
+/// How wide a margin the multi-layer image gets beyond the frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GuardBand {
+    /// None: the methods see nothing beyond the frame (what an EXR offers).
+    Off,
+    /// The largest CoC radius that can reach into the frame, up to [`MAX_GUARD_BAND`]
+    /// (resolved by the scenes of the crate `dof`).
+    Auto,
+    /// A fixed margin in pixels (at most [`MAX_GUARD_BAND`]).
+    Pixels(u32),
+}
+
+impl GuardBand {
+    /// The margin in pixels this choice gives, `auto` computing it when asked.
+    pub fn resolve(self, auto: impl FnOnce() -> Result<u32>) -> Result<u32> {
+        match self {
+            GuardBand::Off => Ok(0),
+            GuardBand::Auto => auto(),
+            GuardBand::Pixels(m) if m <= MAX_GUARD_BAND => Ok(m),
+            GuardBand::Pixels(m) => Err(Error::TooLarge { what: "guard band (px)".into(), size: m as u64, limit: MAX_GUARD_BAND as u64 }),
+        }
+    }
+}

@@ -1,0 +1,38 @@
+//! Depth of field with order-correct, partial-occlusion-aware splatting: the core a renderer links.
+//!
+//! - [`frame`]: the frame API: a context per device, extent and method that records frames against
+//!   the caller's buffers, every method's context with its options, and the registry of methods;
+//! - [`backend`]: the CPU and Vulkan backends that run the kernels of the `dof-shaders` crate;
+//! - [`ops`]: kernel sequences recorded on any backend (segmented sort, prefix scan), on the caller's
+//!   buffers too;
+//! - [`aperture`]: aperture shapes (circle, blades, stars, image masks) for splatting and bokeh sprites;
+//! - [`sampling`]: stratified lens samples and the concentric disc mapping (ray tracing's lens samples);
+//! - [`shaders`]: the embedded SPIR-V modules (prebuilt in `host/spirv/`, or compiled with the
+//!   `rebuild-spirv` feature), and [`source_hash`], the hash of the kernel sources they were built from;
+//! - [`error`]: the errors of every call.
+//!
+//! It depends on nothing of the project but the kernels. Multi-layer images, scenes and their
+//! references, the rasteriser, EXR/PNG/glTF, metrics and the evaluation are the crate `dof` above
+//! it, which re-exports this crate's modules; the `dof` command is the crate `dof-cli`.
+//!
+//! # Features
+//!
+//! Without features this builds on stable Rust from the prebuilt SPIR-V, without rust-gpu. `png`
+//! reads aperture masks from PNG files; `rebuild-spirv` compiles the kernels to SPIR-V with rust-gpu
+//! (pinned nightly) instead of embedding the prebuilt modules.
+
+pub mod aperture;
+pub mod backend;
+pub mod error;
+pub mod frame;
+pub mod ops;
+pub mod sampling;
+pub mod shaders;
+pub mod source_hash;
+
+pub use error::{Error, Result};
+
+pub use backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
+/// The kernel crate, so that integrators use the kernel types of the version this crate was built with.
+pub use dof_shaders;
+pub use dof_shaders::lens::ThinLens;

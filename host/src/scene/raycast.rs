@@ -21,10 +21,11 @@
 
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{covers, disk_budget, pair_radius};
+use dof_shaders::resolve::{Sample, grid_side, resolve_pixel, subsample_offset};
 use rayon::prelude::*;
 
 use super::analytic::{Hit, Scene};
-use super::camera::{Camera, CameraFrame};
+use super::camera::{Camera, CameraFrame, Ray};
 use super::guard_band::{GuardBand, auto_margin};
 use crate::error::{Error, Result};
 use crate::layers::{Fragment, LayerStats, LayeredImage, RgbImage, crop_plane};
@@ -44,11 +45,34 @@ pub struct LayerOptions {
     /// The margin rendered beyond the frame (default [`GuardBand::Auto`], see
     /// [`super::guard_band`]).
     pub guard_band: GuardBand,
+    /// Sub-samples a pixel (1, 4, 9 or 16, a stratified grid): above 1 each sub-sample's ray (or
+    /// peel at sub-sample resolution) gives its own fragment list and `dof_shaders::resolve`
+    /// groups them by depth into fragments of partial coverage (area-integrated layers). 1: the
+    /// pixel centre's ray alone (point-sampled layers).
+    pub subsamples: u32,
+}
+
+/// Sub-samples a pixel by default (see [`LayerOptions::subsamples`]).
+pub const DEFAULT_SUBSAMPLES: u32 = 1;
+
+/// Errors unless `n` is a sub-sample count the layers take (1, 4, 9 or 16).
+pub fn check_subsamples(n: u32) -> Result<()> {
+    if grid_side(n) == 0 {
+        return Err(Error::InvalidArgument(format!("sub-samples a pixel must be 1, 4, 9 or 16 (a square grid), got {n}")));
+    }
+    Ok(())
 }
 
 impl Default for LayerOptions {
     fn default() -> Self {
-        LayerOptions { max_layers: 4, umbra_threshold: true, disocclusion: true, edge_depth_ratio: 0.05, guard_band: GuardBand::Auto }
+        LayerOptions {
+            max_layers: 4,
+            umbra_threshold: true,
+            disocclusion: true,
+            edge_depth_ratio: 0.05,
+            guard_band: GuardBand::Auto,
+            subsamples: DEFAULT_SUBSAMPLES,
+        }
     }
 }
 
@@ -109,6 +133,7 @@ pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
         return Err(Error::InvalidArgument(format!("the edge depth ratio must not be negative, got {}", options.edge_depth_ratio)));
     }
     frame.check_size("multi-layer image", options.max_layers as u64)?;
+    check_subsamples(options.subsamples)?;
     let mut full = LayeredImage::new(frame.width, frame.height, options.max_layers)?;
     cast_all(scene, &frame, lens, options, &mut full);
     Ok(apply_disocclusion(full, &frame, lens, options, margin))
@@ -132,9 +157,14 @@ pub fn apply_disocclusion(
 
     let without_mask = full.crop(margin).stats();
     let mut masked = full.clone();
-    for (count, &keep) in masked.counts.iter_mut().zip(&mask) {
+    for (p, &keep) in mask.iter().enumerate() {
         if !keep {
-            *count = (*count).min(1);
+            // Outside the buffer the pixel keeps what its pinhole view sees: the front fragments
+            // up to the first opaque one (one, for point-sampled opaque layers; an area-integrated
+            // edge keeps its partly covering front and the surface it does not hide).
+            let frags = &masked.fragments[p * l..p * l + masked.counts[p] as usize];
+            let seen = frags.iter().position(|f| f.alpha >= 1.0).map_or(frags.len(), |i| i + 1);
+            masked.counts[p] = masked.counts[p].min(seen.max(1) as u32);
         }
     }
     // Unused slots are reset so that equal images compare equal whatever was dropped.
@@ -149,41 +179,129 @@ pub fn apply_disocclusion(
     MultiLayerImage { layers, margin, mask, with_mask, without_mask }
 }
 
-/// Fills `image` with every pixel's kept hits (steps 1 and 2), rows in parallel.
+/// Fills `image` with every pixel's kept hits (steps 1 and 2), rows in parallel: from the pixel
+/// centre's ray, or with `options.subsamples > 1` from each sub-sample's ray, resolved into area-
+/// integrated fragments by `dof_shaders::resolve::resolve_pixel` (see [`LayerOptions::subsamples`]).
 fn cast_all(scene: &Scene, frame: &CameraFrame, lens: &ThinLens, options: &LayerOptions, image: &mut LayeredImage) {
     let width = frame.width as usize;
     let l = options.max_layers as usize;
+    let n = options.subsamples.max(1);
+    let side = grid_side(n);
     image.fragments.par_chunks_mut(width * l).zip(image.counts.par_chunks_mut(width)).enumerate().for_each_init(
-        Vec::<Hit>::new,
-        |hits, (y, (fragments, counts))| {
+        || (Vec::<Hit>::new(), vec![EMPTY_FRAGMENT; n as usize * l], vec![0u32; n as usize]),
+        |(hits, sub, sub_counts), (y, (fragments, counts))| {
             for x in 0..width {
-                let ray = frame.pixel_ray(x as u32, y as u32);
-                scene.all_hits(&ray, 0.0, hits);
-                let mut n = 0usize;
-                let mut reach = 0.0f32;
-                for hit in hits.iter().filter(|h| !h.self_occluded) {
-                    if n == l {
-                        break;
-                    }
-                    if n > 0 && options.umbra_threshold && hit.t < reach {
-                        continue;
-                    }
-                    fragments[x * l + n] = Fragment { color: scene.shade(&ray, hit), alpha: 1.0, depth: hit.t };
-                    n += 1;
-                    let umbra = lens.umbra_length(hit.t, frame.pixel_footprint_radius(hit.t));
-                    reach = if umbra.is_nan() { f32::INFINITY } else { hit.t + umbra };
+                if n == 1 {
+                    let ray = frame.pixel_ray(x as u32, y as u32);
+                    counts[x] = cast_ray(scene, frame, lens, options, &ray, hits, &mut fragments[x * l..(x + 1) * l]);
+                    continue;
                 }
-                // The ray escapes: the background is its deepest fragment, unless the pixel is full
-                // or the last surface's umbra reaches infinity.
-                if n < l && (n == 0 || !options.umbra_threshold || reach < f32::INFINITY) {
-                    fragments[x * l + n] = Fragment { color: scene.background(), alpha: 1.0, depth: f32::INFINITY };
-                    n += 1;
+                for k in 0..n {
+                    let [dx, dy] = subsample_offset(k, side);
+                    let ray = Ray { origin: frame.eye, direction: frame.direction(x as f32 + dx, y as f32 + dy) };
+                    let kk = k as usize;
+                    sub_counts[kk] = cast_ray(scene, frame, lens, options, &ray, hits, &mut sub[kk * l..(kk + 1) * l]);
                 }
-                counts[x] = n as u32;
+                let fragment = |k: u32, j: u32| {
+                    let f = sub[k as usize * l + j as usize];
+                    Sample { color: f.color, alpha: f.alpha, depth: f.depth }
+                };
+                let out = &mut fragments[x * l..(x + 1) * l];
+                let r = resolve_pixel(
+                    n,
+                    |k| sub_counts[k as usize],
+                    fragment,
+                    l as u32,
+                    options.edge_depth_ratio,
+                    |j, s| {
+                        out[j as usize] = Fragment { color: s.straight(), alpha: s.alpha, depth: s.depth };
+                    },
+                );
+                counts[x] = r.count;
             }
         },
     );
 }
+
+/// Steps 1 and 2 along one ray: its kept hits into `fragments` (at most its length), front to
+/// back; returns how many.
+fn cast_ray(
+    scene: &Scene,
+    frame: &CameraFrame,
+    lens: &ThinLens,
+    options: &LayerOptions,
+    ray: &Ray,
+    hits: &mut Vec<Hit>,
+    fragments: &mut [Fragment],
+) -> u32 {
+    let l = fragments.len();
+    scene.all_hits(ray, 0.0, hits);
+    let mut n = 0usize;
+    let mut reach = 0.0f32;
+    for hit in hits.iter().filter(|h| !h.self_occluded) {
+        if n == l {
+            break;
+        }
+        if n > 0 && options.umbra_threshold && hit.t < reach {
+            continue;
+        }
+        fragments[n] = Fragment { color: scene.shade(ray, hit), alpha: 1.0, depth: hit.t };
+        n += 1;
+        let umbra = lens.umbra_length(hit.t, frame.pixel_footprint_radius(hit.t));
+        reach = if umbra.is_nan() { f32::INFINITY } else { hit.t + umbra };
+    }
+    // The ray escapes: the background is its deepest fragment, unless the pixel is full or the
+    // last surface's umbra reaches infinity.
+    if n < l && (n == 0 || !options.umbra_threshold || reach < f32::INFINITY) {
+        fragments[n] = Fragment { color: scene.background(), alpha: 1.0, depth: f32::INFINITY };
+        n += 1;
+    }
+    n as u32
+}
+
+/// Resolves a sub-sample image (`side` times wider and higher than the result: sub-sample `(i, j)`
+/// of pixel `(x, y)` is its pixel `(side·x + i, side·y + j)`) into area-integrated fragments with
+/// `dof_shaders::resolve::resolve_pixel`, at most `max_layers` a pixel; the peel's host path and
+/// the device kernel's oracle. Errors when the sizes do not divide or `max_layers` is 0.
+pub fn resolve_subsamples(fine: &LayeredImage, side: u32, max_layers: u32, tolerance: f32) -> Result<LayeredImage> {
+    if side == 0 || fine.width % side != 0 || fine.height % side != 0 || side > 4 {
+        return Err(Error::InvalidArgument(format!(
+            "a {}x{} sub-sample image does not divide into {side}x{side} grids (side 1 to 4)",
+            fine.width, fine.height
+        )));
+    }
+    let (w, h) = (fine.width / side, fine.height / side);
+    let mut out = LayeredImage::new(w, h, max_layers)?;
+    let (fl, l) = (fine.max_layers as usize, max_layers as usize);
+    let fw = fine.width as usize;
+    let s = side as usize;
+    out.fragments.par_chunks_mut(w as usize * l).zip(out.counts.par_chunks_mut(w as usize)).enumerate().for_each(
+        |(y, (fragments, counts))| {
+            for x in 0..w as usize {
+                let pixel = |k: u32| (y * s + k as usize / s) * fw + x * s + k as usize % s;
+                let fragment = |k: u32, j: u32| {
+                    let f = fine.fragments[pixel(k) * fl + j as usize];
+                    Sample { color: f.color, alpha: f.alpha, depth: f.depth }
+                };
+                let out = &mut fragments[x * l..(x + 1) * l];
+                let r = resolve_pixel(
+                    side * side,
+                    |k| fine.counts[pixel(k)].min(fl as u32),
+                    fragment,
+                    max_layers,
+                    tolerance,
+                    |j, s| {
+                        out[j as usize] = Fragment { color: s.straight(), alpha: s.alpha, depth: s.depth };
+                    },
+                );
+                counts[x] = r.count;
+            }
+        },
+    );
+    Ok(out)
+}
+
+const EMPTY_FRAGMENT: Fragment = Fragment { color: [0.0; 3], alpha: 0.0, depth: f32::INFINITY };
 
 /// The disocclusion buffer from the front-layer depths (step 3), with the device peel's rules
 /// (`dof_shaders::peel`: [`pair_radius`], [`disk_budget`], [`covers`]).

@@ -33,6 +33,9 @@ use dof::methods::bokeh::BokehOptions;
 use dof::methods::splat::{Merge, SplatOptions};
 use libfuzzer_sys::fuzz_target;
 
+/// Words of a layer input slot (`dof_shaders::slot`).
+const SLOT: u64 = dof::methods::buffers::SLOT_WORDS as u64;
+
 /// Whether inconsistent aperture descriptions are tried (see `ApertureIn::Raw`).
 const TRY_RAW_APERTURES: bool = true;
 
@@ -528,8 +531,8 @@ fn fill(b: &mut CpuBackend, bufs: &[BufferId; 3], f: &FrameIn, size: (u32, u32, 
             let mut rng = Rng(seed);
             let pixels = (w * h).min(count_cap);
             let mut counts = Vec::with_capacity(pixels as usize);
-            let mut slots = vec![0u32; (4 * pixels * layers).min(frag_cap) as usize];
-            let whole = pixels == w * h && slots.len() as u64 == 4 * pixels * layers;
+            let mut slots = vec![0u32; (SLOT * pixels * layers).min(frag_cap) as usize];
+            let whole = pixels == w * h && slots.len() as u64 == SLOT * pixels * layers;
             let mut front = vec![[0.0f32; 3]; pixels as usize];
             for p in 0..pixels {
                 let n = rng.next() % (layers.min(SMALL_LAYERS as u64) + 1);
@@ -539,13 +542,13 @@ fn fill(b: &mut CpuBackend, bufs: &[BufferId; 3], f: &FrameIn, size: (u32, u32, 
                     let sky = k + 1 == n && rng.next() % 4 == 0;
                     let d = if sky { f32::INFINITY } else { depth };
                     depth += 0.01 + 3.0 * rng.unit();
-                    let base = (4 * (p * layers + k)) as usize;
-                    if base + 4 <= slots.len() {
+                    let base = (SLOT * (p * layers + k)) as usize;
+                    if base + SLOT as usize <= slots.len() {
                         let rgb = [4.0 * rng.unit(), rng.unit(), rng.unit()];
                         if k == 0 {
                             front[p as usize] = rgb;
                         }
-                        slots[base..base + 4].copy_from_slice(&[rgb[0].to_bits(), rgb[1].to_bits(), rgb[2].to_bits(), d.to_bits()]);
+                        slots[base..base + SLOT as usize].copy_from_slice(&dof::dof_shaders::slot::Slot::opaque(rgb, d).words());
                     }
                 }
             }
@@ -557,7 +560,7 @@ fn fill(b: &mut CpuBackend, bufs: &[BufferId; 3], f: &FrameIn, size: (u32, u32, 
                 return None;
             }
             let cycle = |n: u64| -> Vec<u32> { words.iter().copied().cycle().take(n as usize).collect() };
-            let _ = b.write_buffer(bufs[0], 0, &cycle(frag_cap.min(4 * SMALL_EDGE as u64 * SMALL_EDGE as u64 * SMALL_LAYERS as u64)));
+            let _ = b.write_buffer(bufs[0], 0, &cycle(frag_cap.min(SLOT * SMALL_EDGE as u64 * SMALL_EDGE as u64 * SMALL_LAYERS as u64)));
             let counts: Vec<u32> =
                 cycle(count_cap.min(SMALL_EDGE as u64 * SMALL_EDGE as u64)).into_iter().map(|c| c.rotate_left(16)).collect();
             let _ = b.write_buffer(bufs[1], 0, &counts);
@@ -657,7 +660,7 @@ fn run(input: &Input) {
     // The caller's buffers: fragments, counts and output for the context's maximum, or a little
     // less or more.
     let pixels = max.0 as u64 * max.1 as u64;
-    let needs = [4 * pixels * max.2 as u64, pixels, 3 * pixels];
+    let needs = [SLOT * pixels * max.2 as u64, pixels, 3 * pixels];
     let mut bufs = [BufferId(0); 3];
     for (i, (&need, size)) in needs.iter().zip(input.sizes).enumerate() {
         let words = match size {

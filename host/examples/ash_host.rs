@@ -44,6 +44,7 @@ use dof::methods::splat::{Merge, SplatOptions, splat};
 use dof::raster::{MeshPeelContext, MeshPeelDesc};
 use dof::scene::{Camera, Focus, GuardBand, LayerOptions, LensSettings, MeshScene, ThinLens, Vec3, builtin, raycast_layers};
 use dof_shaders::raster::mesh::{ALPHA_BLEND, MeshMaterial, MeshVertex, UNLIT};
+use dof_shaders::slot::{ALPHA_WORD, DEPTH_WORD, SLOT_WORDS};
 use glam::Mat4;
 use std::ffi::{CStr, c_char, c_void};
 use std::path::PathBuf;
@@ -533,7 +534,8 @@ fn peel_scene() -> Vec<peel::Vertex> {
 
 /// Peels `peel_scene` with the library's own rasteriser (`MeshPeelContext`) from `camera` and
 /// counts the slot words where `ours` (the last frame of our pipeline) differs: counts, depths
-/// beyond 1e-4 relative, colours beyond 2^-10 relative (RGBA16F rounding). Edges may differ where the
+/// beyond 1e-4 relative, alpha beyond 2^-10, premultiplied colours beyond 2^-9 relative (RGBA16F
+/// rounding of colour and alpha). Edges may differ where the
 /// two rasterisers' coverage rules do.
 fn compare_with_mesh_peel(
     r: &Renderer,
@@ -569,15 +571,21 @@ fn compare_with_mesh_peel(
     while backend.take_external_times()?.is_some_and(|t| !t.is_empty()) {}
     let mut read = |s: &dof::frame::peel::PeelSlots| -> Result<(Vec<u32>, Vec<u32>)> {
         let pixels = s.width as u64 * s.height as u64;
-        Ok((backend.read_buffer(s.fragments, 0, 4 * pixels * s.layers as u64)?, backend.read_buffer(s.counts, 0, pixels)?))
+        Ok((backend.read_buffer(s.fragments, 0, SLOT_WORDS as u64 * pixels * s.layers as u64)?, backend.read_buffer(s.counts, 0, pixels)?))
     };
     let (a, b) = (read(ours.slots())?, read(theirs.slots())?);
     theirs.destroy(backend);
     let counts = a.1.iter().zip(&b.1).filter(|(x, y)| x != y).count();
     let words = a.0.iter().zip(&b.0).enumerate().filter(|&(i, (&x, &y))| {
         let (x, y) = (f32::from_bits(x), f32::from_bits(y));
-        let tol = if i % 4 == 3 { 1e-4 } else { 2f32.powi(-10) };
-        !(x == y || (x - y).abs() <= tol * y.abs())
+        // Depth relative; alpha absolute (RGBA16F's step at 1); colour, premultiplied by that
+        // alpha, relative to the two roundings.
+        let ok = match i as u32 % SLOT_WORDS {
+            DEPTH_WORD => (x - y).abs() <= 1e-4 * y.abs(),
+            ALPHA_WORD => (x - y).abs() <= 2f32.powi(-10),
+            _ => (x - y).abs() <= 2f32.powi(-9) * y.abs(),
+        };
+        !(x == y || ok)
     });
     Ok((counts + words.count(), a.1.len() + a.0.len()))
 }
@@ -634,7 +642,7 @@ fn main() -> Result<ExitCode> {
     let log: Arc<Log> = Arc::default();
     let mut r = Renderer::new(args.validation, &log, args.device.as_deref())?;
     let storage = vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::TRANSFER_DST;
-    let fragments = r.buffer(16 * pixels * l, storage, false)?;
+    let fragments = r.buffer(4 * SLOT_WORDS as u64 * pixels * l, storage, false)?;
     let counts = r.buffer(4 * pixels, storage, false)?;
     let image_usage = vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST | vk::ImageUsageFlags::SAMPLED;
     let colour_image = r.image(vk::Format::R32G32B32A32_SFLOAT, extent, image_usage)?;
@@ -645,8 +653,8 @@ fn main() -> Result<ExitCode> {
         extent,
     };
 
-    // Staging holds, in order: colour (RGBA32F), depth (R32F), fragments (4 words a slot: red,
-    // green, blue, depth), counts. Colour goes first: an image copy's buffer offset must be a
+    // Staging holds, in order: colour (RGBA32F), depth (R32F), fragments (5 words a slot:
+    // premultiplied red, green, blue, depth, alpha; `dof_shaders::slot`), counts. Colour goes first: an image copy's buffer offset must be a
     // multiple of the texel size (16 bytes for RGBA32F).
     let mut words: Vec<u32> = colour.data.iter().flat_map(|c| [c[0], c[1], c[2], 1.0]).map(f32::to_bits).collect();
     words.extend(depth.iter().map(|d| d.to_bits()));

@@ -5,6 +5,10 @@
 //! planar (distance along the camera's view axis, positive in front of the camera). The background
 //! (what a ray that hits nothing sees: the sky) is a fragment at depth `f32::INFINITY`, the last
 //! of its pixel; a pixel with no fragment at all (no data) is treated as a black background.
+//!
+//! Colour is **premultiplied** by alpha (`dof_shaders::slot`): a fragment's colour is the light it
+//! sends, its alpha what it hides behind it. A pixel's fragments composite front to back ("over")
+//! over black.
 
 use crate::error::{Error, Result};
 
@@ -48,12 +52,26 @@ pub fn crop_plane<T: Copy>(plane: &[T], width: u32, margin: u32) -> Vec<T> {
 /// One surface sample along a pixel's ray.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fragment {
-    /// Linear HDR radiance (emission included).
+    /// Linear HDR radiance (emission included), **premultiplied** by `alpha`: the light the fragment
+    /// sends towards the camera.
     pub color: [f32; 3],
-    /// Coverage in [0, 1]; 1 for opaque surfaces.
+    /// Coverage in [0, 1]: the share of what lies behind that the fragment hides; 1 for opaque
+    /// surfaces.
     pub alpha: f32,
     /// Planar depth, > 0.
     pub depth: f32,
+}
+
+impl Fragment {
+    /// An opaque fragment.
+    pub fn opaque(color: [f32; 3], depth: f32) -> Self {
+        Fragment { color, alpha: 1.0, depth }
+    }
+
+    /// The fragment as the layer input's slot (`dof_shaders::slot`).
+    pub fn slot(&self) -> dof_shaders::slot::Slot {
+        dof_shaders::slot::Slot { color: self.color, depth: self.depth, alpha: self.alpha }
+    }
 }
 
 /// Per pixel up to `max_layers` fragments sorted front to back. Storage is fixed-size per pixel
@@ -149,30 +167,48 @@ impl LayeredImage {
         Ok(true)
     }
 
-    /// The front fragment of every pixel composited over black (what a pinhole camera sees), and its
-    /// depth (`inf` for the background, and for a pixel without fragments, which is black).
+    /// Every pixel flattened (`dof_shaders::slot::flatten`): its fragments composited front to back
+    /// over black (what a pinhole camera sees; an opaque front fragment's colour as it is) at the
+    /// depth of its front fragment (`inf` for the background, and for a pixel without fragments,
+    /// which is black). The single-layer methods' input, as the device's `frame_front` makes it.
     pub fn front(&self) -> (RgbImage, Vec<f32>) {
         let mut image = RgbImage::new(self.width, self.height);
         let mut depth = vec![f32::INFINITY; image.data.len()];
         for p in 0..image.data.len() {
-            if self.counts[p] > 0 {
-                let f = self.fragments[p * self.max_layers as usize];
-                image.data[p] = f.color.map(|c| c * f.alpha);
-                depth[p] = f.depth;
-            }
+            (image.data[p], depth[p]) = self.flattened(p);
         }
         (image, depth)
     }
 
-    /// The front fragment of every pixel as a one-layer image: the input of single-layer methods.
+    /// Pixel `p` flattened, as in [`Self::front`].
+    pub fn flattened(&self, p: usize) -> ([f32; 3], f32) {
+        let start = p * self.max_layers as usize;
+        let n = self.counts[p].min(self.max_layers);
+        dof_shaders::slot::flatten(n, |k| self.fragments[start + k as usize].slot())
+    }
+
+    /// Whether pixel `p`'s fragments end translucent, with black behind them
+    /// (`dof_shaders::slot::ends_translucent`).
+    pub fn ends_translucent(&self, p: usize) -> bool {
+        let start = p * self.max_layers as usize;
+        dof_shaders::slot::ends_translucent(self.counts[p].min(self.max_layers), |k| self.fragments[start + k as usize].slot())
+    }
+
+    /// Every pixel flattened ([`Self::front`]) as an opaque one-layer image: the input of
+    /// single-layer methods.
     pub fn front_layer(&self) -> LayeredImage {
-        let l = self.max_layers as usize;
+        let fragments = (0..self.counts.len())
+            .map(|p| {
+                let (color, depth) = self.flattened(p);
+                Fragment { color, alpha: 1.0, depth }
+            })
+            .collect();
         LayeredImage {
             width: self.width,
             height: self.height,
             max_layers: 1,
             counts: self.counts.iter().map(|&c| c.min(1)).collect(),
-            fragments: self.fragments.iter().step_by(l).copied().collect(),
+            fragments,
         }
     }
 

@@ -121,6 +121,23 @@ fn sky_over(img: LayeredImage, keep: impl Fn(u32) -> bool) -> LayeredImage {
     out
 }
 
+/// `w`x`h`, per pixel `panes` translucent panes of alpha `alpha` from depth `z0` on, each `step`
+/// behind the last (colours premultiplied: [`varied`] times alpha), over an opaque [`varied`]
+/// surface 10% behind the last pane.
+fn pane_stack(w: u32, h: u32, panes: u32, alpha: f32, z0: f32, step: f32) -> LayeredImage {
+    let mut img = LayeredImage::new(w, h, panes + 1).expect("a valid test size");
+    for p in 0..w * h {
+        let (x, y) = (p % w, p / w);
+        let mut z = z0;
+        for k in 0..panes {
+            let _ = img.push(x, y, Fragment { color: varied(p * 131 + k).map(|c| c * alpha), alpha, depth: z });
+            z += step;
+        }
+        let _ = img.push(x, y, Fragment::opaque(varied(p), z * 1.1));
+    }
+    img
+}
+
 /// Colours of every scale, some beyond 1000.
 pub fn varied(i: u32) -> [f32; 3] {
     let c = hash(i);
@@ -330,6 +347,80 @@ pub fn cases() -> Vec<Case> {
             expectation: "40000x2: a finite image, or a clear TooLarge error",
             expect: Expect::ResultOrClearError,
             build: || (noise_image(40_000, 2, 1, varied), test_lens(0.01)),
+        },
+        Case {
+            name: "translucent-stack-in-focus",
+            expectation: "100 stacked panes of alpha 0.01 over an opaque surface, aperture 1e-7: the front-to-back composite within 1e-4",
+            expect: Expect::Close(1e-4),
+            build: || (pane_stack(24, 20, 100, 0.01, 1.0, 0.001), test_lens(1e-7)),
+        },
+        Case {
+            name: "translucent-stack-blurred",
+            expectation: "100 stacked panes of alpha 0.01, one flat colour, over the same colour, out of focus: flat within 3e-2 \
+                          (splatting stores alpha in 10 bits, 0.01 as 0.0098, and its coverage budget adds the panes' alphas: the \
+                          surface behind shows 2.3% of its colour too much)",
+            expect: Expect::Flat(3e-2),
+            build: || {
+                let mut img = pane_stack(40, 36, 100, 0.01, 1.2, 0.001);
+                let l = img.max_layers as usize;
+                for p in 0..img.counts.len() {
+                    for f in &mut img.fragments[p * l..p * l + img.counts[p] as usize] {
+                        f.color = FLAT.map(|c| c * f.alpha);
+                    }
+                }
+                (img, test_lens(0.008))
+            },
+        },
+        Case {
+            name: "alpha-0-glow",
+            expectation: "a blurred patch of alpha exactly 0 (light that hides nothing) over an opaque in-focus surface: the light \
+                          of both kept (red sum within 2e-2 of the input's composite)",
+            expect: Expect::Energy(2e-2),
+            build: || {
+                let (w, h) = (48u32, 48u32);
+                let mut img = LayeredImage::new(w, h, 2).expect("a valid test size");
+                for p in 0..w * h {
+                    let (x, y) = (p % w, p / w);
+                    if (20..28).contains(&x) && (20..28).contains(&y) {
+                        let _ = img.push(x, y, Fragment { color: [5.0, 0.5, 0.0], alpha: 0.0, depth: 1.6 });
+                    }
+                    let _ = img.push(x, y, Fragment::opaque(DIM, 2.0));
+                }
+                (img, test_lens(0.01))
+            },
+        },
+        Case {
+            name: "alpha-0-and-1-in-focus",
+            expectation: "slots of alpha exactly 0 (with colour) and exactly 1, aperture 1e-7: the composite (light of the alpha-0 \
+                          slots added, nothing behind an alpha-1 slot) within 1e-5",
+            expect: Expect::Close(1e-5),
+            build: || {
+                let mut img = noise_image(30, 22, 3, varied);
+                let l = img.max_layers as usize;
+                for p in 0..img.counts.len() {
+                    if p % 3 == 0 && img.counts[p] > 1 {
+                        img.fragments[p * l].alpha = 0.0;
+                    }
+                }
+                (img, test_lens(1e-7))
+            },
+        },
+        Case {
+            name: "alpha-out-of-range",
+            expectation: "alphas NaN, negative, above 1 and infinite are clamped (NaN to 0), aperture 1e-7: the composite of the \
+                          clamped alphas within 1e-5, and finite",
+            expect: Expect::Close(1e-5),
+            build: || {
+                let mut img = noise_image(30, 22, 3, varied);
+                let l = img.max_layers as usize;
+                let bad = [f32::NAN, -0.5, 1.5, f32::INFINITY, f32::NEG_INFINITY, 0.25];
+                for p in 0..img.counts.len() {
+                    if img.counts[p] > 1 {
+                        img.fragments[p * l].alpha = bad[p % bad.len()];
+                    }
+                }
+                (img, test_lens(1e-7))
+            },
         },
         Case {
             name: "degenerate-lens",

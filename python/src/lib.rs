@@ -221,7 +221,9 @@ fn layered_image(frags: ArrayViewD<'_, f32>, counts: ArrayViewD<'_, i64>) -> PyR
                 if !(0.0..=1.0).contains(&alpha) {
                     return Err(value_error(format!("alpha {alpha} of layer {k} at ({x}, {y}) must lie in [0, 1]")));
                 }
-                image.push(x as u32, y as u32, Fragment { color: [f(0), f(1), f(2)], alpha, depth: f(3) }).map_err(py_err)?;
+                // Straight here, premultiplied in a `Fragment` (the library's slots).
+                let color = dof::dof_shaders::slot::premultiply([f(0), f(1), f(2)], alpha);
+                image.push(x as u32, y as u32, Fragment { color, alpha, depth: f(3) }).map_err(py_err)?;
             }
         }
     }

@@ -2,19 +2,22 @@
 //!
 //! - `frame_from_images` (one invocation per pixel): a colour image (RGBA32F, RGBA16F as half bits,
 //!   or B10G11R11 packed floats) and a depth image copied into buffers become one fragment slot per
-//!   pixel. The depth word is an f32 (R32F, D32) or a 24-bit unorm in the low bits (D24 through its
+//!   pixel ([`crate::slot`]; alpha 1: a renderer's colour image is what its camera sees, and its
+//!   alpha channel, often a clear value, is not read). The depth word is an f32 (R32F, D32) or a 24-bit unorm in the low bits (D24 through its
 //!   depth aspect; the high 8 bits are undefined and ignored). It is either linear (planar view
 //!   depth, as the methods take it) or a depth buffer's value, turned into view depth from the
 //!   projection's near and far planes (standard or reversed Z, a far plane at infinity allowed). Where reversed or infinite projections put nothing (the far plane at
 //!   infinity), the depth is +inf: the background, which every method blends like a surface.
-//! - `frame_front` (one invocation per pixel): the front slot of a multi-layer input as a colour
-//!   (3 words) and a depth (1 word) a pixel, black at infinite depth where a pixel has no slot: the
-//!   input of the single-layer gathering methods.
+//! - `frame_front` (one invocation per pixel): a multi-layer input flattened to one colour (3 words)
+//!   and one depth (1 word) a pixel: the front-to-back "over" of the pixel's slots over black
+//!   ([`Composite`]; an opaque front slot's colour bit for bit) at the front slot's depth, black at
+//!   infinite depth where a pixel has no slot: the input of the single-layer gathering methods.
 //! - `frame_to_rgba` (one invocation per pixel): the methods' RGB result (3 f32 words a pixel) as
 //!   RGBA32F or RGBA16F with alpha 1, ready to copy into the caller's image.
 
 use crate::exec::{Group, Mem};
 use crate::half::{b10g11r11_to_f32, f16_to_f32, f32_to_f16};
+use crate::slot::{self, Slot};
 use crate::wg::for_each_item;
 
 /// `depth_encoding`: planar view depth as it is.
@@ -92,24 +95,18 @@ pub fn from_images_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, color: M
     for_each_item(g, p.width * p.height, |i| {
         let c = load_rgb(&color, p, i);
         let z = view_depth(p, depth_value(p, depth.load(i)));
-        fragments.store(4 * i, c[0].to_bits());
-        fragments.store(4 * i + 1, c[1].to_bits());
-        fragments.store(4 * i + 2, c[2].to_bits());
-        fragments.store(4 * i + 3, z.to_bits());
+        slot::store(&mut fragments, i, Slot::opaque(c, z));
         counts.store(i, 1);
     });
 }
 
 pub fn front_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, fragments: M, counts: M, mut color: M, mut depth: M) {
     for_each_item(g, p.width * p.height, |i| {
-        let b = 4 * i * p.layers;
-        let front = counts.load(i) > 0;
-        let mut k = 0;
-        while k < 3 {
-            color.store(3 * i + k, if front { fragments.load(b + k) } else { 0 });
-            k += 1;
-        }
-        depth.store(i, if front { fragments.load(b + 3) } else { f32::INFINITY.to_bits() });
+        let (c, z) = slot::flatten(counts.load(i).min(p.layers), |k| slot::load(&fragments, i * p.layers + k));
+        color.store(3 * i, c[0].to_bits());
+        color.store(3 * i + 1, c[1].to_bits());
+        color.store(3 * i + 2, c[2].to_bits());
+        depth.store(i, z.to_bits());
     });
 }
 

@@ -29,11 +29,12 @@
 
 use crate::exec::{Group, Mem};
 use crate::keys::sort_key;
-use crate::lens::{ThinLens, is_finite, is_pos_inf, is_positive};
+use crate::lens::{ThinLens, is_finite, is_pos_inf};
+use crate::slot::{self, Slot};
 use crate::wg::for_each_item;
 
-/// Words per fragment slot of the input: r, g, b, depth.
-pub const SLOT_WORDS: u32 = 4;
+/// Words per fragment slot of the input ([`crate::slot`]).
+pub use crate::slot::SLOT_WORDS;
 
 /// `mode` of the composition pass.
 pub const OVER: u32 = 0;
@@ -138,23 +139,26 @@ fn matte_pixel<M: Mem>(p: &LayeredParams, anchors: &[f32; 4], input: &M, counts:
     if n == 0 {
         acc[3] = matte_hidden(anchors, f32::INFINITY);
     }
+    let slot_at = |j: u32| slot::load(input, pi * p.max_layers + j);
+    // Slots that end translucent have black behind them: one more, opaque, at infinite depth.
+    let backed = slot::ends_translucent(n, slot_at);
+    let end = if backed { n + 1 } else { n };
     let mut first = true;
     let mut j = 0;
-    while j < n {
-        let at = (pi * p.max_layers + j) * SLOT_WORDS;
-        let c = [f32::from_bits(input.load(at)), f32::from_bits(input.load(at + 1)), f32::from_bits(input.load(at + 2))];
-        let z = f32::from_bits(input.load(at + 3));
-        if is_finite(c[0]) && is_finite(c[1]) && is_finite(c[2]) && is_positive(z) {
-            let c = crate::radiance::clamp_color(c);
+    while j < end {
+        let s = if j < n { slot_at(j) } else { Slot::opaque([0.0; 3], f32::INFINITY) };
+        if slot::is_valid(&s) {
+            let (c, z, a) = (crate::radiance::clamp_color(s.color), s.depth, slot::clamp_alpha(s.alpha));
             let w = if first { matte_front(anchors, z) } else { matte_hidden(anchors, z) };
             first = false;
             // Coverage never exceeds 1; rounding must not make the remainder negative, which would
-            // subtract a bright colour (the numerical contract: non-negative output).
+            // subtract a bright colour (the numerical contract: non-negative output). The colour is
+            // premultiplied: the fragment's alpha scales only the coverage it takes.
             let t = (1.0 - acc[3]).max(0.0);
             acc[0] += t * w * c[0];
             acc[1] += t * w * c[1];
             acc[2] += t * w * c[2];
-            acc[3] += t * w;
+            acc[3] += t * w * a;
         }
         j += 1;
     }
@@ -351,15 +355,22 @@ pub fn plan_reach_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredPlanParams, input
             hi = if c > p.max_coc { p.max_coc } else { c };
             reach(&mut plan, layers, f32::INFINITY, false);
         }
+        // Black behind slots that end translucent, as the matting adds it.
+        let slot_at = |j: u32| slot::load(&input, pi * p.max_layers + j);
+        if slot::ends_translucent(n, slot_at) {
+            let c = p.lens.far_limit_px();
+            if c > p.max_coc {
+                capped += 1;
+            }
+            hi = if c > p.max_coc { p.max_coc } else { c };
+            reach(&mut plan, layers, f32::INFINITY, false);
+        }
         let mut first = true;
         let mut j = 0;
         while j < n {
-            let at = (pi * p.max_layers + j) * SLOT_WORDS;
-            let z = f32::from_bits(input.load(at + 3));
-            let finite = is_finite(f32::from_bits(input.load(at)))
-                && is_finite(f32::from_bits(input.load(at + 1)))
-                && is_finite(f32::from_bits(input.load(at + 2)));
-            if finite && is_positive(z) {
+            let s = slot_at(j);
+            let z = s.depth;
+            if slot::is_valid(&s) {
                 let c = p.lens.signed_coc_px(z);
                 if is_finite(c) {
                     if c > p.max_coc || c < -p.max_coc {

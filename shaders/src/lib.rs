@@ -28,6 +28,7 @@ pub mod renderer_peel;
 pub mod resolve;
 pub mod ring_gather;
 pub mod scan;
+pub mod slot;
 pub mod sort;
 pub mod splat;
 pub mod tonemap;

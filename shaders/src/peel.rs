@@ -7,14 +7,16 @@
 //!   passes past the last useful one cost almost nothing), notes which passes ran and found a
 //!   surface, and clears the found flag;
 //! - `peel_append` (one invocation per pixel) after each pass: the pass's shaded layer becomes the
-//!   pixel's next slot where [`slot_kept`] says so (4 words r, g, b, depth, the frame API's
-//!   `FrameInput::Layers` layout), and a kept surface sets the found flag;
+//!   pixel's next slot where [`slot_kept`] says so (the frame API's `FrameInput::Layers` layout,
+//!   [`crate::slot`]: colour premultiplied by the layer's alpha, depth, alpha), and a kept surface
+//!   sets the found flag;
 //! - after the last pass the disocclusion buffer (§4.3, two-pass variant: built from the finished
 //!   front layer): `peel_edges` gives every pixel of a depth discontinuity its tag radius
 //!   ([`pair_radius`]), `peel_span` and `peel_mask` find the pixels within that radius of an edge
 //!   pixel (the disk `dx² + dy² <= r²`, split into a row pass and a column pass: [`disk_budget`],
-//!   [`covers`]), and `peel_mask` then keeps only the front slot outside the buffer and resets every
-//!   unused slot to `(0, 0, 0, +inf)`;
+//!   [`covers`]), and `peel_mask` then keeps outside the buffer only the front slots up to the first opaque one
+//!   (`crate::resolve::kept_outside_buffer`) and resets every
+//!   unused slot to black at `+inf` with alpha 0;
 //! - `peel_band` (one invocation per triangle) and `peel_band_end` (one invocation): the guard band
 //!   this frame's view would need (the largest CoC radius of geometry within [`MAX_GUARD_BAND`]
 //!   pixels of the frame, [`nearest_in_reach`] and [`margin_of`], the rules of the host's
@@ -25,10 +27,11 @@ use crate::exec::{Group, Mem};
 use crate::lens::{ThinLens, is_finite, is_nan};
 use crate::math::ceil;
 use crate::raster::project::{triangle, vertex_position};
+use crate::slot::{self, Slot};
 use crate::wg::for_each_item;
 
-/// Words a slot: red, green, blue, depth.
-pub const SLOT_WORDS: u32 = 4;
+/// Words a slot ([`crate::slot`]): premultiplied red, green, blue, depth, alpha.
+pub use crate::slot::SLOT_WORDS;
 /// Words of the indirect arguments: the draw command (4), the shading dispatch (3 and a pad), the
 /// append dispatch (3 and a pad).
 pub const ARGS_WORDS: u32 = 12;
@@ -251,7 +254,7 @@ pub fn covers(budget: i32, dy: i32) -> bool {
 /// The front slot's depth of pixel `p`, `+inf` where it has none.
 #[inline]
 fn front<M: Mem>(fragments: &M, counts: &M, p: u32, layers: u32) -> f32 {
-    if counts.load(p) > 0 { f32::from_bits(fragments.load(SLOT_WORDS * p * layers + 3)) } else { f32::INFINITY }
+    if counts.load(p) > 0 { slot::depth_of(fragments, p * layers) } else { f32::INFINITY }
 }
 
 pub fn plan_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, mut found: M, mut args: M, mut passes: M) {
@@ -285,11 +288,10 @@ pub fn append_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, layer: M, mut fr
         }
         let n = counts.load(i);
         if n < p.layers {
-            let s = SLOT_WORDS * (i * p.layers + n);
-            fragments.store(s, layer.load(o));
-            fragments.store(s + 1, layer.load(o + 1));
-            fragments.store(s + 2, layer.load(o + 2));
-            fragments.store(s + 3, depth.to_bits());
+            // The shaded layer's colour is straight; the slot's is premultiplied (an opaque layer's
+            // bits unchanged: c · 1 = c).
+            let rgb = [f32::from_bits(layer.load(o)), f32::from_bits(layer.load(o + 1)), f32::from_bits(layer.load(o + 2))];
+            slot::store(&mut fragments, i * p.layers + n, Slot { color: slot::premultiply(rgb, alpha), depth, alpha });
             counts.store(i, n + 1);
         }
         if is_surface(depth) && found.load(0) == 0 {
@@ -373,15 +375,11 @@ pub fn mask_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, span: M, widest: M
         mask.store(i, tagged as u32);
         let mut n = counts.load(i);
         if p.disocclusion != 0 && !tagged && n > 1 {
-            n = 1;
-            counts.store(i, 1);
+            n = crate::resolve::kept_outside_buffer(n, |k| slot::load(&fragments, i * p.layers + k).alpha);
+            counts.store(i, n);
         }
         while n < p.layers {
-            let s = SLOT_WORDS * (i * p.layers + n);
-            fragments.store(s, 0);
-            fragments.store(s + 1, 0);
-            fragments.store(s + 2, 0);
-            fragments.store(s + 3, f32::INFINITY.to_bits());
+            slot::store(&mut fragments, i * p.layers + n, Slot { color: [0.0; 3], depth: f32::INFINITY, alpha: 0.0 });
             n += 1;
         }
     });

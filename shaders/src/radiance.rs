@@ -60,20 +60,21 @@ pub struct ClampCountParams {
     pub reads: u32,
 }
 
-/// Adds to `stats[stats_at]` the slots of the input (4 words: r, g, b, depth; `counts` used per
-/// pixel; the first `reads` of each pixel) a method keeps (finite colour, positive depth) whose colour [`clamp_color`] changes: the
-/// count the reports of the methods that clamp where they load colour give.
+/// Adds to `stats[stats_at]` the values among the slots of the input ([`crate::slot`]; `counts`
+/// used per pixel; the first `reads` of each pixel) a method keeps (finite colour, positive depth)
+/// that its reads clamp: colours [`clamp_color`] changes and alphas `slot::clamp_alpha` changes (NaN
+/// or outside [0, 1]), one each. The count the reports of the methods that clamp where they load give.
 pub fn count_pass<G: Group, M: Mem>(g: &mut G, p: &ClampCountParams, slots: M, counts: M, mut stats: M) {
     for_each_item(g, p.pixels, |i| {
         let n = counts.load(i).min(p.layers).min(p.reads);
         let mut clamped = 0u32;
         let mut k = 0;
         while k < n {
-            let b = 4 * (i * p.layers + k);
-            let c = [f32::from_bits(slots.load(b)), f32::from_bits(slots.load(b + 1)), f32::from_bits(slots.load(b + 2))];
-            let kept = is_finite(c[0]) && is_finite(c[1]) && is_finite(c[2]) && is_positive(f32::from_bits(slots.load(b + 3)));
-            if kept && is_clamped(c) {
-                clamped += 1;
+            let s = crate::slot::load(&slots, i * p.layers + k);
+            let c = s.color;
+            let kept = is_finite(c[0]) && is_finite(c[1]) && is_finite(c[2]) && is_positive(s.depth);
+            if kept {
+                clamped += is_clamped(c) as u32 + crate::slot::is_alpha_clamped(s.alpha) as u32;
             }
             k += 1;
         }

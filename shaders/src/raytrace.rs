@@ -16,23 +16,27 @@
 //! A block whose `[min, max]` misses the ray's `r` interval inside it is skipped whole and the march
 //! climbs a level; a block that may hold a hit is descended into.
 //!
-//! Fragments are opaque (the layered input carries colour and depth, as for splatting), so the first
-//! hit ends a ray. Pixels without fragments are the sky: black, at `r = K/2`. A ray that leaves the
-//! image, or passes behind every stored fragment (information the multi-layer image does not hold),
-//! takes the deepest fragment at the pixel where it ended (clamped to the image) and is counted.
+//! Fragments carry alpha ([`crate::slot`]): the ray composites the fragments it hits front to back
+//! ("over", premultiplied colour) and ends at the first that makes it opaque; an opaque first hit
+//! is returned as it is. Pixels without fragments are the sky: black, at `r = K/2`. A ray that
+//! leaves the image, or passes behind every stored fragment (information the multi-layer image does
+//! not hold), takes the deepest fragment at the pixel where it ended (clamped to the image), if that
+//! lies behind what it passed through, and is counted; where nothing lies behind, a ray that passed
+//! through translucent fragments sees black behind them (a pixel's slots composite over black).
 //! Non-finite colours and depths are never hit.
 
 use crate::exec::{Group, Mem};
-use crate::lens::{ThinLens, is_finite, is_positive};
+use crate::lens::{ThinLens, is_finite};
 use crate::math::floor;
+use crate::slot::{self, Composite};
 use crate::wg::for_each_item;
 
 /// Pixels per side of a trace workgroup.
 pub const TILE: u32 = 8;
 /// Hierarchy levels at most (level `k` has cells of `2^k` pixels): enough for 8192-pixel sides.
 pub const MAX_LEVELS: u32 = 14;
-/// Words per fragment slot of the input: r, g, b, depth (as splatting reads it).
-pub const SLOT_WORDS: u32 = 4;
+/// Words per fragment slot of the input ([`crate::slot`]).
+pub use crate::slot::SLOT_WORDS;
 /// Stats words: [0] rays that ended without a hit.
 pub const STATS_WORDS: u32 = 1;
 
@@ -110,16 +114,15 @@ fn sky_r(lens: &ThinLens) -> f32 {
     0.5 * lens.far_limit_px()
 }
 
-/// Fragment `j` of pixel `pi`: colour and `r`, or `None` when it is not finite.
+/// Fragment `j` of pixel `pi`: premultiplied colour, `r` and alpha, or `None` when it is not
+/// finite.
 #[inline]
-fn fragment<M: Mem>(p: &TraceParams, input: &M, pi: u32, j: u32) -> Option<([f32; 3], f32)> {
-    let at = (pi * p.max_layers + j) * SLOT_WORDS;
-    let c = [f32::from_bits(input.load(at)), f32::from_bits(input.load(at + 1)), f32::from_bits(input.load(at + 2))];
-    let z = f32::from_bits(input.load(at + 3));
-    if is_finite(c[0]) && is_finite(c[1]) && is_finite(c[2]) && is_positive(z) {
-        let r = ray_r(&p.lens, z);
+fn fragment<M: Mem>(p: &TraceParams, input: &M, pi: u32, j: u32) -> Option<([f32; 3], f32, f32)> {
+    let s = slot::load(input, pi * p.max_layers + j);
+    if slot::is_valid(&s) {
+        let r = ray_r(&p.lens, s.depth);
         if is_finite(r) {
-            return Some((crate::radiance::clamp_color(c), r));
+            return Some((crate::radiance::clamp_color(s.color), r, slot::clamp_alpha(s.alpha)));
         }
     }
     None
@@ -133,7 +136,7 @@ pub fn base_pass<G: Group, M: Mem>(g: &mut G, p: &TraceParams, input: M, counts:
         let (mut lo, mut hi) = if n == 0 { (sky_r(&p.lens), sky_r(&p.lens)) } else { (f32::INFINITY, f32::NEG_INFINITY) };
         let mut j = 0;
         while j < n {
-            if let Some((_, r)) = fragment(p, &input, pi, j) {
+            if let Some((_, r, _)) = fragment(p, &input, pi, j) {
                 lo = lo.min(r);
                 hi = hi.max(r);
             }
@@ -211,6 +214,9 @@ fn trace_ray<M: Mem>(p: &TraceParams, input: &M, counts: &M, hier: &M, c: [f32; 
     let mut steps = 0u32;
     let max_steps = 4 * (p.width + p.height) + 8 * p.levels;
     let mut last_pixel = (c[1] as u32) * p.width + c[0] as u32;
+    // What the ray passed through (translucent fragments), and the last of them.
+    let mut over = Composite::EMPTY;
+    let (mut hit_pixel, mut hit_slot, mut hit_r) = (u32::MAX, 0u32, f32::NEG_INFINITY);
     while r <= r_end && steps < max_steps {
         steps += 1;
         let (x, y) = (c[0] + s[0] * r, c[1] + s[1] * r);
@@ -236,13 +242,26 @@ fn trace_ray<M: Mem>(p: &TraceParams, input: &M, counts: &M, hier: &M, c: [f32; 
         } else {
             let n = counts.load(last_pixel).min(p.max_layers);
             if n == 0 {
-                return Ray { colour: [0.0; 3], hit: true };
+                // No data: black, behind whatever the ray passed through.
+                return Ray { colour: over.color, hit: true };
             }
             let mut j = 0;
             while j < n {
-                if let Some((colour, rf)) = fragment(p, input, last_pixel, j) {
-                    if rf >= r - slack && rf <= leave + slack {
-                        return Ray { colour, hit: true };
+                if let Some((colour, rf, a)) = fragment(p, input, last_pixel, j) {
+                    // Each fragment once: the slack lets neighbouring blocks' intervals overlap.
+                    let new = last_pixel != hit_pixel || j > hit_slot;
+                    if new && rf >= r - slack && rf <= leave + slack {
+                        if a >= 1.0 && over.is_empty() {
+                            return Ray { colour, hit: true };
+                        }
+                        // Translucent: composited front to back ("over"); the ray goes on.
+                        over.add(colour, a);
+                        hit_pixel = last_pixel;
+                        hit_slot = j;
+                        hit_r = rf;
+                        if over.transmit <= 0.0 {
+                            return Ray { colour: over.color, hit: true };
+                        }
                     }
                 }
                 j += 1;
@@ -250,17 +269,28 @@ fn trace_ray<M: Mem>(p: &TraceParams, input: &M, counts: &M, hier: &M, c: [f32; 
             r = leave + nudge;
         }
     }
-    // No hit: the deepest usable fragment where the ray ended (black for the sky).
-    let mut colour = [0.0f32; 3];
+    // No opaque hit: the deepest usable fragment where the ray ended (black for the sky), if it lies
+    // behind what the ray passed through; none there is black behind them (a pixel's slots
+    // composite over black), a hit.
+    let mut behind = None;
     let n = counts.load(last_pixel).min(p.max_layers);
     let mut j = 0;
     while j < n {
-        if let Some((c, _)) = fragment(p, input, last_pixel, j) {
-            colour = c;
+        if let Some((c, rf, _)) = fragment(p, input, last_pixel, j) {
+            if rf > hit_r && (last_pixel != hit_pixel || j > hit_slot) {
+                behind = Some(c);
+            }
         }
         j += 1;
     }
-    Ray { colour, hit: false }
+    match behind {
+        Some(c) if over.is_empty() => Ray { colour: c, hit: false },
+        Some(c) => {
+            over.add(c, 1.0);
+            Ray { colour: over.color, hit: false }
+        }
+        None => Ray { colour: over.color, hit: over.transmit < 1.0 },
+    }
 }
 
 /// A small integer hash (pixels pick their sample pattern by it).

@@ -12,42 +12,29 @@
 //!    holds a fragment there or behind it; a list that ended in front (an opaque surface whose
 //!    umbra hid the rest, or a full list) says nothing about what lies deeper. With `D` the
 //!    sub-samples that see down to the cluster, and within each its members composited front to
-//!    back ("over", weight `w_i = α_i Π_{j<i}(1 − α_j)`):
-//!    `alpha = Σ w / D`, premultiplied colour `= Σ w·c / D`, depth the `w`-weighted mean depth
+//!    back ("over": member `i` weighted by `t_i = Π_{j<i}(1 − α_j)`, coverage `w_i = t_i α_i`):
+//!    `alpha = Σ w / D`, premultiplied colour `= Σ t·c / D`, depth the `w`-weighted mean depth
 //!    (the background stays at `+inf`). So a sub-pixel emitter seen by 1 of 16 sub-samples over
 //!    a wall seen by all 16 gets alpha 1/16 with its energy, and the wall alpha 1; an edge pixel
 //!    half covered gets its front surface at alpha 0.5 and whatever lies behind at the share of
 //!    the sub-samples that see it, which the front-to-back composite turns into the pixel's area
-//!    mean whenever the surface behind is seen wherever the front one is absent. A cluster of
-//!    coverage 0 (fully transparent members) is dropped.
+//!    mean whenever the surface behind is seen wherever the front one is absent. A cluster with
+//!    neither coverage nor light is dropped.
 //! 3. **At most `max_layers`.** The first `max_layers − 1` clusters are fragments of their own;
 //!    every further cluster is composited "over" into the last fragment (its depth stays that of
 //!    the first cluster it holds), so no energy is lost; [`Resolved::merged`] counts them.
 
 use crate::exec::{Group, Mem};
 use crate::lens::is_finite;
-use crate::peel::SLOT_WORDS;
+use crate::slot::{self, clamp_alpha};
 use crate::wg::for_each_item;
 
 /// Most sub-samples a pixel (a 4x4 grid).
 pub const MAX_SUBSAMPLES: u32 = 16;
 
-/// One fragment: colour (straight on input, premultiplied by `alpha` on output of
-/// [`resolve_pixel`]), coverage and planar depth.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Sample {
-    pub color: [f32; 3],
-    pub alpha: f32,
-    pub depth: f32,
-}
-
-impl Sample {
-    /// The straight colour of a premultiplied sample (0 where its alpha is 0).
-    #[inline]
-    pub fn straight(&self) -> [f32; 3] {
-        if self.alpha > 0.0 { [self.color[0] / self.alpha, self.color[1] / self.alpha, self.color[2] / self.alpha] } else { [0.0; 3] }
-    }
-}
+/// A fragment as the resolve reads and writes it: the frame's slot ([`crate::slot`]: colour
+/// premultiplied by alpha, depth, alpha).
+pub use crate::slot::Slot as Sample;
 
 /// What a resolve produced.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -70,9 +57,10 @@ fn over(front: Sample, back: Sample) -> Sample {
 }
 
 /// Resolves `subsamples` (at most [`MAX_SUBSAMPLES`]) fragment lists, list `s` holding `count(s)`
-/// fragments `fragment(s, k)` front to back with straight colour, into at most `max_layers`
-/// (`>= 1`) fragments with premultiplied colour, front to back, each handed to `out(k, sample)`
-/// (module docs: the rule). `tolerance` is the relative depth gap that separates clusters.
+/// fragments `fragment(s, k)` front to back (premultiplied colour, alpha read through
+/// [`clamp_alpha`]), into at most `max_layers` (`>= 1`) premultiplied fragments, front to back,
+/// each handed to `out(k, sample)` (module docs: the rule). `tolerance` is the relative depth gap
+/// that separates clusters.
 pub fn resolve_pixel<C, F, O>(subsamples: u32, count: C, fragment: F, max_layers: u32, tolerance: f32, mut out: O) -> Resolved
 where
     C: Fn(u32) -> u32,
@@ -81,7 +69,7 @@ where
 {
     let n = if subsamples < MAX_SUBSAMPLES { subsamples } else { MAX_SUBSAMPLES };
     let mut cursor = [0u32; MAX_SUBSAMPLES as usize];
-    let mut held = Sample::default();
+    let mut held = Sample { color: [0.0; 3], depth: 0.0, alpha: 0.0 };
     let mut holding = false;
     let mut result = Resolved::default();
     loop {
@@ -121,15 +109,16 @@ where
                     if !(f.depth <= limit) {
                         break;
                     }
-                    let w = t * f.alpha;
-                    color[0] += w * f.color[0];
-                    color[1] += w * f.color[1];
-                    color[2] += w * f.color[2];
+                    let a = clamp_alpha(f.alpha);
+                    let w = t * a;
+                    color[0] += t * f.color[0];
+                    color[1] += t * f.color[1];
+                    color[2] += t * f.color[2];
                     covered += w;
                     if finite {
                         depth += w * f.depth;
                     }
-                    t *= 1.0 - f.alpha;
+                    t *= 1.0 - a;
                     k += 1;
                     progressed = true;
                 }
@@ -148,14 +137,20 @@ where
             }
             continue;
         }
-        if !(covered > 0.0) {
+        if !(covered > 0.0) && color[0] == 0.0 && color[1] == 0.0 && color[2] == 0.0 {
             continue;
         }
         let d = seen as f32;
         let cluster = Sample {
             color: [color[0] / d, color[1] / d, color[2] / d],
             alpha: covered / d,
-            depth: if finite { depth / covered } else { f32::INFINITY },
+            depth: if !finite {
+                f32::INFINITY
+            } else if covered > 0.0 {
+                depth / covered
+            } else {
+                front
+            },
         };
         if !holding {
             held = cluster;
@@ -174,6 +169,22 @@ where
         result.count += 1;
     }
     result
+}
+
+/// How many of a pixel's `count` front slots stay outside the disocclusion buffer: those up to
+/// and including the first opaque one (`alpha(k)` its alpha, clamped), at least one. One for
+/// opaque layers, as before alpha; a partly covering front (an area-integrated edge, a sub-pixel
+/// emitter, a translucent surface) keeps what it does not hide.
+#[inline]
+pub fn kept_outside_buffer<A: Fn(u32) -> f32>(count: u32, alpha: A) -> u32 {
+    let mut k = 0;
+    while k < count {
+        if clamp_alpha(alpha(k)) >= 1.0 {
+            return k + 1;
+        }
+        k += 1;
+    }
+    if count > 0 { count } else { 0 }
 }
 
 /// Side of the sub-sample grid for `n` sub-samples: `n` must be 1, 4, 9 or 16; 0 otherwise.
@@ -214,28 +225,6 @@ pub struct ResolveParams {
     pub _pad: [u32; 2],
 }
 
-/// A slot of the frame's layout ([`SLOT_WORDS`] words: r, g, b, depth; coverage 1).
-#[inline]
-pub fn load_slot<M: Mem>(fragments: &M, slot: u32) -> Sample {
-    let o = SLOT_WORDS * slot;
-    Sample {
-        color: [f32::from_bits(fragments.load(o)), f32::from_bits(fragments.load(o + 1)), f32::from_bits(fragments.load(o + 2))],
-        alpha: 1.0,
-        depth: f32::from_bits(fragments.load(o + 3)),
-    }
-}
-
-/// Writes a resolved (premultiplied) sample into a slot of the frame's layout.
-#[inline]
-pub fn store_slot<M: Mem>(fragments: &mut M, slot: u32, sample: Sample) {
-    let o = SLOT_WORDS * slot;
-    let c = sample.straight();
-    fragments.store(o, c[0].to_bits());
-    fragments.store(o + 1, c[1].to_bits());
-    fragments.store(o + 2, c[2].to_bits());
-    fragments.store(o + 3, sample.depth.to_bits());
-}
-
 pub fn resolve_pass<G: Group, M: Mem>(g: &mut G, p: &ResolveParams, fine: M, fine_counts: M, mut fragments: M, mut counts: M) {
     let (w, side) = (p.width, p.side);
     let fine_width = w * side;
@@ -246,9 +235,9 @@ pub fn resolve_pass<G: Group, M: Mem>(g: &mut G, p: &ResolveParams, fine: M, fin
             let c = fine_counts.load(pixel(k));
             if c < p.fine_layers { c } else { p.fine_layers }
         };
-        let fragment = |k: u32, l: u32| load_slot(&fine, pixel(k) * p.fine_layers + l);
+        let fragment = |k: u32, l: u32| slot::load(&fine, pixel(k) * p.fine_layers + l);
         let base = i * p.layers;
-        let r = resolve_pixel(side * side, count, fragment, p.layers, p.tolerance, |l, s| store_slot(&mut fragments, base + l, s));
+        let r = resolve_pixel(side * side, count, fragment, p.layers, p.tolerance, |l, s| slot::store(&mut fragments, base + l, s));
         counts.store(i, r.count);
     });
 }

@@ -10,6 +10,7 @@ use dof::raster::{MeshPeelContext, MeshPeelDesc, default_near, peel_layers};
 use dof::scene::{Camera, ExportOptions, GuardBand, LayerOptions, MeshScene, builtin, export_glb, load_gltf_slice, raycast_layers};
 use dof::scene::{check_subsamples, resolve_subsamples};
 use dof_shaders::resolve::{RESOLVE, ResolveParams, Resolved, Sample, resolve, resolve_pixel};
+use dof_shaders::slot::SLOT_WORDS;
 use dof_tests::{assert_clean, vulkan};
 
 fn frag(color: [f32; 3], depth: f32) -> Sample {
@@ -18,7 +19,7 @@ fn frag(color: [f32; 3], depth: f32) -> Sample {
 
 /// Resolves hand-built sub-sample lists into at most `layers` fragments (premultiplied colour).
 fn run(lists: &[Vec<Sample>], layers: u32, tolerance: f32) -> (Vec<Sample>, Resolved) {
-    let mut out = vec![Sample::default(); layers as usize];
+    let mut out = vec![frag([0.0; 3], 0.0); layers as usize];
     let r = resolve_pixel(
         lists.len() as u32,
         |s| lists[s as usize].len() as u32,
@@ -85,7 +86,7 @@ fn a_sub_pixel_emitter_keeps_its_energy_at_partial_coverage() {
     assert_eq!(out[0].depth, 3.0);
     for j in 0..3 {
         assert_eq!(out[0].color[j], e[j] / 16.0, "premultiplied: the emitter's energy over the pixel");
-        assert_eq!(out[0].straight()[j], e[j], "its radiance");
+        assert_eq!(out[0].color[j] / out[0].alpha, e[j], "its radiance");
     }
     assert_eq!((out[1].alpha, out[1].depth), (1.0, 10.0));
     assert_eq!(out[2].depth, f32::INFINITY, "the background last");
@@ -122,12 +123,12 @@ fn one_sub_sample_resolves_to_its_own_list() {
     let (out, r) = run(std::slice::from_ref(&list), 4, 0.05);
     assert_eq!(r.count, 3);
     assert_eq!(out, list);
-    // Translucent members composite within their list.
+    // Translucent members (premultiplied) composite within their list.
     let list = vec![Sample { color: [1.0, 0.0, 0.0], alpha: 0.5, depth: 2.0 }, Sample { color: [0.0, 1.0, 0.0], alpha: 0.5, depth: 2.01 }];
     let (out, _) = run(&[list], 4, 0.05);
     assert_eq!(out.len(), 1);
     assert_eq!(out[0].alpha, 0.75);
-    assert_eq!(out[0].color, [0.5, 0.25, 0.0]);
+    assert_eq!(out[0].color, [1.0, 0.5, 0.0]);
 }
 
 #[test]
@@ -147,7 +148,7 @@ fn frame_only(subsamples: u32) -> LayerOptions {
     LayerOptions { guard_band: GuardBand::Off, disocclusion: false, subsamples, ..LayerOptions::default() }
 }
 
-/// Front-to-back composite of every pixel of an image with straight colour.
+/// Front-to-back composite of every pixel of an image (premultiplied colour).
 fn pinhole(layers: &LayeredImage) -> Vec<[f64; 3]> {
     (0..layers.counts.len())
         .map(|p| {
@@ -155,7 +156,7 @@ fn pinhole(layers: &LayeredImage) -> Vec<[f64; 3]> {
             let (mut c, mut t) = ([0.0f64; 3], 1.0f64);
             for f in layers.pixel(x, y) {
                 for j in 0..3 {
-                    c[j] += t * f.alpha as f64 * f.color[j] as f64;
+                    c[j] += t * f.color[j] as f64;
                 }
                 t *= 1.0 - f.alpha as f64;
             }
@@ -204,7 +205,7 @@ fn area_integrated_layers_keep_the_energy_of_their_sub_samples() {
     assert!(point.layers.fragments.iter().all(|f| f.alpha == 0.0 || f.alpha == 1.0));
 }
 
-/// Slot words of a layered image (r, g, b, depth) as the device holds them.
+/// A layered image's slots and counts uploaded as the device holds them.
 fn upload(b: &mut dyn Backend, image: &LayeredImage) -> (dof::backend::BufferId, dof::backend::BufferId) {
     let words = slot_words(image);
     let f = b.create_buffer(words.len() as u64, "test/fine").unwrap();
@@ -226,20 +227,21 @@ fn kernel_equals_host_on(b: &mut dyn Backend) {
     assert!(want.counts.iter().any(|&c| c == layers), "some pixel is full");
     let (ff, fc) = upload(b, &fine);
     let pixels = (w * h) as u64;
-    let out = b.create_buffer(4 * pixels * layers as u64, "test/slots").unwrap();
+    let words = SLOT_WORDS as u64 * pixels * layers as u64;
+    let out = b.create_buffer(words, "test/slots").unwrap();
     let counts = b.create_buffer(pixels, "test/counts").unwrap();
-    b.fill(out, 0, 4 * pixels * layers as u64, 0, "test").unwrap();
+    b.fill(out, 0, words, 0, "test").unwrap();
     let params = ResolveParams { width: w, height: h, side, fine_layers: fine.max_layers, layers, tolerance: 0.05, _pad: [0; 2] };
     b.run(resolve::Bindings { fine: ff, fine_counts: fc, fragments: out, counts }, groups_for(&RESOLVE, pixels), &params, "test/resolve")
         .unwrap();
     b.submit().unwrap();
     let got_counts = b.read_buffer(counts, 0, pixels).unwrap();
-    let got = b.read_buffer(out, 0, 4 * pixels * layers as u64).unwrap();
+    let got = b.read_buffer(out, 0, words).unwrap();
     assert_eq!(got_counts, want.counts);
     let want_words = slot_words(&want);
     for p in 0..pixels as usize {
-        let n = 4 * want.counts[p] as usize;
-        let at = 4 * p * layers as usize;
+        let n = SLOT_WORDS as usize * want.counts[p] as usize;
+        let at = SLOT_WORDS as usize * p * layers as usize;
         assert_eq!(got[at..at + n], want_words[at..at + n], "pixel {p}");
     }
     for id in [ff, fc, out, counts] {
@@ -269,7 +271,7 @@ fn device_peel_equals_host_on(b: &mut dyn Backend) {
     let mesh: MeshScene = load_gltf_slice(&glb).unwrap();
     let near = default_near(lens.focus_distance);
     let options =
-        LayerOptions { max_layers: 4, guard_band: GuardBand::Pixels(3), disocclusion: false, subsamples: 4, ..LayerOptions::default() };
+        LayerOptions { max_layers: 4, guard_band: GuardBand::Pixels(3), disocclusion: true, subsamples: 4, ..LayerOptions::default() };
     let host = peel_layers(b, &mesh.raster(), &camera, &lens, near, &options).unwrap();
     assert!(host.image.layers.fragments.iter().any(|f| f.alpha > 0.0 && f.alpha < 1.0), "partly covered fragments");
     let mut ctx = MeshPeelContext::new(b, &mesh.raster(), &camera, &lens, &MeshPeelDesc::new(&options, near)).unwrap();
@@ -282,10 +284,16 @@ fn device_peel_equals_host_on(b: &mut dyn Backend) {
     assert_eq!(times.iter().filter(|t| t.label == "peel/resolve").count(), 1, "the resolve ran on the device");
     let s = *ctx.slots();
     let pixels = s.width as u64 * s.height as u64;
-    let fragments = b.read_buffer(s.fragments, 0, 4 * pixels * s.layers as u64).unwrap();
+    let fragments = b.read_buffer(s.fragments, 0, SLOT_WORDS as u64 * pixels * s.layers as u64).unwrap();
     let counts = b.read_buffer(s.counts, 0, pixels).unwrap();
     assert_eq!(counts, host.image.layers.counts);
     assert_eq!(fragments, slot_words(&host.image.layers));
+    let mask = b.read_buffer(s.mask, 0, pixels).unwrap();
+    let m = ctx.margin() as usize;
+    let w = s.width as usize;
+    let cropped: Vec<bool> =
+        (m..s.height as usize - m).flat_map(|y| (m..w - m).map(move |x| (x, y))).map(|(x, y)| mask[y * w + x] != 0).collect();
+    assert_eq!(cropped, host.image.mask, "the disocclusion buffer");
     ctx.destroy(b);
 }
 

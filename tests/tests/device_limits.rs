@@ -101,7 +101,7 @@ fn a_list_overflow_on_vulkan_is_counted_and_degrades_cleanly() {
     let image = noise_with_sky(64, 48, 3);
     let pixels = 64 * 48;
     let bufs = [
-        b.create_buffer(4 * pixels * 3, "caller/fragments").unwrap(),
+        b.create_buffer(dof::methods::buffers::SLOT_WORDS as u64 * pixels * 3, "caller/fragments").unwrap(),
         b.create_buffer(pixels, "caller/counts").unwrap(),
         b.create_buffer(3 * pixels, "caller/output").unwrap(),
     ];

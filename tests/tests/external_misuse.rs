@@ -30,7 +30,7 @@ fn every_refused_frame_leaves_the_callers_command_buffer_untouched() {
     let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
     let pixels = (W * H) as u64;
     let image = dof::stress::noise_with_sky(W, H, 2);
-    let [fragments, counts, out, small] = [8 * pixels, pixels, 3 * pixels, 3].map(|w| vk.create_buffer(w, "caller").unwrap());
+    let [fragments, counts, out, small] = [10 * pixels, pixels, 3 * pixels, 3].map(|w| vk.create_buffer(w, "caller").unwrap());
     vk.write_buffer(fragments, 0, &slot_words(&image)).unwrap();
     vk.write_buffer(counts, 0, &image.counts).unwrap();
     // The renderer's images, defined by its own pass (an upload) and left as its attachments are.
@@ -148,7 +148,7 @@ fn a_context_destroyed_mid_recording_is_freed_once_the_command_buffer_completed(
     let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
     let pixels = (W * H) as u64;
     let image = dof::stress::noise_with_sky(W, H, 2);
-    let [fragments, counts, out] = [8 * pixels, pixels, 3 * pixels].map(|w| vk.create_buffer(w, "caller").unwrap());
+    let [fragments, counts, out] = [10 * pixels, pixels, 3 * pixels].map(|w| vk.create_buffer(w, "caller").unwrap());
     vk.write_buffer(fragments, 0, &slot_words(&image)).unwrap();
     vk.write_buffer(counts, 0, &image.counts).unwrap();
     let frame = Frame::layers(W, H, 2, dof::stress::test_lens(0.01), fragments, counts, out);
@@ -186,7 +186,7 @@ fn wide_frame(b: &mut dyn Backend) -> (Frame, [BufferId; 3]) {
     let (w, h) = WIDE;
     let image = dof::stress::noise_with_sky(w, h, 1);
     let pixels = (w * h) as u64;
-    let bufs = [4 * pixels, pixels, 3 * pixels].map(|n| b.create_buffer(n, "caller").unwrap());
+    let bufs = [dof::methods::buffers::SLOT_WORDS as u64 * pixels, pixels, 3 * pixels].map(|n| b.create_buffer(n, "caller").unwrap());
     b.write_buffer(bufs[0], 0, &slot_words(&image)).unwrap();
     b.write_buffer(bufs[1], 0, &image.counts).unwrap();
     (Frame::layers(w, h, 1, dof::stress::test_lens(0.01), bufs[0], bufs[1], bufs[2]), bufs)

@@ -16,7 +16,7 @@ use dof_tests::{assert_clean, vulkan};
 fn caller_buffers(b: &mut dyn Backend, max: (u32, u32, u32)) -> [BufferId; 3] {
     let pixels = max.0 as u64 * max.1 as u64;
     [
-        b.create_buffer(4 * pixels * max.2 as u64, "caller/fragments").unwrap(),
+        b.create_buffer(dof::methods::buffers::SLOT_WORDS as u64 * pixels * max.2 as u64, "caller/fragments").unwrap(),
         b.create_buffer(pixels, "caller/counts").unwrap(),
         b.create_buffer(3 * pixels, "caller/output").unwrap(),
     ]

@@ -44,7 +44,8 @@ impl TwoFrames {
             let image = if m.reads == Reads::FrontLayer { image.front_layer() } else { image };
             let pixels = (w * h) as u64;
             let [fragments, counts, out] =
-                [4 * pixels * image.max_layers as u64, pixels, 3 * pixels].map(|words| b.create_buffer(words, "caller").unwrap());
+                [dof::methods::buffers::SLOT_WORDS as u64 * pixels * image.max_layers as u64, pixels, 3 * pixels]
+                    .map(|words| b.create_buffer(words, "caller").unwrap());
             b.write_buffer(fragments, 0, &slot_words(&image)).unwrap();
             b.write_buffer(counts, 0, &image.counts).unwrap();
             buffers.extend([fragments, counts, out]);

@@ -213,7 +213,7 @@ fn decoded_input(case: &Case) -> Vec<u32> {
                 z == want_z || (z - want_z).abs() <= tolerance,
                 "{case:?} pixel ({x}, {y}): view depth {z} for {want_z} (tolerance {tolerance})"
             );
-            slots.extend([c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]);
+            slots.extend(dof_shaders::slot::Slot::opaque(c, z).words());
         }
     }
     slots
@@ -232,7 +232,8 @@ fn frame(input: FrameInput, output: BufferId) -> Frame {
 /// Buffers of the reference frame: its decoded input, its counts, and two outputs.
 fn buffers(b: &mut dyn Backend) -> [BufferId; 4] {
     let pixels = (W * H) as u64;
-    let bufs = [4 * pixels, pixels, 3 * pixels, 3 * pixels].map(|w| b.create_buffer(w, "test").unwrap());
+    let bufs =
+        [dof::methods::buffers::SLOT_WORDS as u64 * pixels, pixels, 3 * pixels, 3 * pixels].map(|w| b.create_buffer(w, "test").unwrap());
     b.write_buffer(bufs[1], 0, &vec![1; pixels as usize]).unwrap();
     bufs
 }

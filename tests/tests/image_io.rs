@@ -290,7 +290,7 @@ fn multi_layer_slots() -> Vec<Vec<Slot>> {
 }
 
 /// What the reader must produce from `slots`: per pixel, the non-empty finite slots as
-/// straight-colour fragments, sorted by depth (stable), then the first background slot (in layer
+/// premultiplied fragments as stored, sorted by depth (stable), then the first background slot (in layer
 /// order) as a background fragment with its stored colour.
 fn expected_pixels(slots: &[Vec<Slot>]) -> Vec<Vec<Fragment>> {
     (0..slots[0].len())
@@ -299,7 +299,7 @@ fn expected_pixels(slots: &[Vec<Slot>]) -> Vec<Vec<Fragment>> {
                 .iter()
                 .map(|l| l[p])
                 .filter(|s| s.a > 0.0 && s.z.is_finite())
-                .map(|s| Fragment { color: s.rgb.map(|c| c / s.a), alpha: s.a, depth: s.z })
+                .map(|s| Fragment { color: s.rgb, alpha: s.a, depth: s.z })
                 .collect();
             frags.sort_by(|a, b| a.depth.total_cmp(&b.depth));
             if let Some(sky) = slots.iter().map(|l| l[p]).find(|s| s.a > 0.0 && s.z == f32::INFINITY) {
@@ -431,7 +431,7 @@ fn depth_and_alpha_name_variants() {
 /// (premultiplied colour, alpha, depth).
 const TOOL_PIXELS: [([f32; 3], f32, f32); 4] = [
     ([0.5, 0.25, 0.125], 1.0, 3.0),        // opaque surface
-    ([0.2, 0.1, 0.05], 0.5, 7.5),          // antialiased edge: straight colour is twice this
+    ([0.2, 0.1, 0.05], 0.5, 7.5),          // antialiased edge: half covered, kept premultiplied
     ([0.3, 0.6, 0.9], 1.0, 1e10),          // Blender's world background at 1e10, with a colour
     ([0.0, 0.0, 0.0], 0.0, f32::INFINITY), // transparent film: alpha 0 at +inf
 ];
@@ -440,7 +440,7 @@ const TOOL_PIXELS: [([f32; 3], f32, f32); 4] = [
 fn tool_pixels_expected() -> [Vec<Fragment>; 4] {
     [
         vec![Fragment { color: [0.5, 0.25, 0.125], alpha: 1.0, depth: 3.0 }],
-        vec![Fragment { color: [0.4, 0.2, 0.1], alpha: 0.5, depth: 7.5 }],
+        vec![Fragment { color: [0.2, 0.1, 0.05], alpha: 0.5, depth: 7.5 }],
         vec![background([0.3, 0.6, 0.9])],
         vec![background([0.0; 3])],
     ]
@@ -611,7 +611,7 @@ fn multi_layer_background_ends_the_pixel() {
     write_channels(file.path(), 3, 1, channels);
     let (image, report) = read_layered_exr(file.path()).unwrap();
     assert_eq!(report.layout, ExrLayout::MultiLayer);
-    assert_eq!(image.pixel(0, 0), [Fragment { color: [2.0, 2.0, 0.0], alpha: 0.5, depth: 4.0 }, background([0.1, 0.2, 0.3])]);
+    assert_eq!(image.pixel(0, 0), [Fragment { color: [1.0, 1.0, 0.0], alpha: 0.5, depth: 4.0 }, background([0.1, 0.2, 0.3])]);
     assert_eq!(image.pixel(1, 0), [Fragment { color: [2.0, 0.0, 0.0], alpha: 1.0, depth: 1.0 }, background([0.2, 0.4, 0.6])]);
     assert_eq!(image.pixel(2, 0), [Fragment { color: [0.0, 3.0, 0.0], alpha: 1.0, depth: 5.0 }]);
     assert_eq!(report.counts, SanitizeCounts { background: 3, behind_background: 1, empty_alpha: 3, ..Default::default() });
@@ -932,7 +932,7 @@ fn nan_inf_policy_and_counts() {
         ([1.0, 1.0, 1.0], 1.0, inf),   // sky with colour -> background fragment with that colour
         ([0.0, 0.0, 0.0], 1.0, inf),   // black sky -> black background fragment
         ([0.5, 0.5, 0.5], 2.0, 1.0),   // alpha > 1 -> 1
-        ([0.5, 0.5, 0.5], nan, 1.0),   // alpha NaN -> 0 -> empty
+        ([0.5, 0.5, 0.5], nan, 1.0),   // alpha NaN -> 0: light that hides nothing
         ([-0.5, 0.0, 0.0], 1.0, -inf), // depth -inf -> dropped (colour not looked at)
     ];
     let n = pixels.len();
@@ -955,11 +955,12 @@ fn nan_inf_policy_and_counts() {
             depth_invalid: 4,
             behind_background: 0,
             background: 2,
-            empty_alpha: 1,
+            empty_alpha: 0,
+            emission_only: 1,
         }
     );
     assert_eq!(report.repaired(), 9);
-    assert_eq!(report.total(), 9, "backgrounds are data, not repairs");
+    assert_eq!(report.total(), 10, "backgrounds are data, not repairs; emission is noted");
     let text = report.to_string();
     assert_mentions(
         &text,
@@ -968,6 +969,7 @@ fn nan_inf_policy_and_counts() {
             "2 infinite colour",
             "4 fragments with NaN, zero or negative depth",
             "2 background fragments (depth +inf or >= 1e10)",
+            "1 fragments with alpha 0 and a colour, read as light that hides nothing",
         ],
     );
 
@@ -975,7 +977,8 @@ fn nan_inf_policy_and_counts() {
     assert_eq!(frag(0), [Fragment { color: [0.0, 0.5, 0.25], alpha: 1.0, depth: 2.0 }]);
     assert_eq!(frag(1), [Fragment { color: [COLOR_INF_REPLACEMENT, 0.0, 1.0], alpha: 1.0, depth: 2.0 }]);
     assert_eq!(COLOR_INF_REPLACEMENT, 65504.0);
-    for x in [2, 3, 4, 8, 9] {
+    assert_eq!(frag(8), [Fragment { color: [0.5; 3], alpha: 0.0, depth: 1.0 }]);
+    for x in [2, 3, 4, 9] {
         assert!(frag(x).is_empty(), "pixel {x} should be empty: {:?}", frag(x));
     }
     assert_eq!(frag(5), [background([1.0; 3])], "the sky's colour is kept");

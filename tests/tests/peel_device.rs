@@ -121,7 +121,7 @@ fn device_peel(b: &mut dyn Backend, ctx: &mut MeshPeelContext, camera: &Camera, 
     b.submit().unwrap();
     let s = *ctx.slots();
     let pixels = s.width as u64 * s.height as u64;
-    let fragments = b.read_buffer(s.fragments, 0, 4 * pixels * s.layers as u64).unwrap();
+    let fragments = b.read_buffer(s.fragments, 0, dof::methods::buffers::SLOT_WORDS as u64 * pixels * s.layers as u64).unwrap();
     let counts = b.read_buffer(s.counts, 0, pixels).unwrap();
     let mask = b.read_buffer(s.mask, 0, pixels).unwrap();
     let m = ctx.margin();

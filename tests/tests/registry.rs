@@ -23,7 +23,8 @@ fn input_for(m: &MethodInfo, w: u32, h: u32, layers: u32) -> LayeredImage {
 
 fn caller_buffers(b: &mut dyn Backend, e: Extent) -> [BufferId; 3] {
     let pixels = e.width as u64 * e.height as u64;
-    [4 * pixels * e.layers as u64, pixels, 3 * pixels].map(|words| b.create_buffer(words, "caller").unwrap())
+    [dof::methods::buffers::SLOT_WORDS as u64 * pixels * e.layers as u64, pixels, 3 * pixels]
+        .map(|words| b.create_buffer(words, "caller").unwrap())
 }
 
 /// Frames of several sizes within the extent, then a resize to a larger one and a frame there:

@@ -140,7 +140,7 @@ fn render_pass(s: &Scene, encoding: DepthEncoding, format: ImageFormat, bound: &
 /// The slots, counts and mask a peel left.
 fn read_slots(b: &mut dyn Backend, s: &dof::frame::peel::PeelSlots) -> (Vec<f32>, Vec<u32>, Vec<u32>) {
     let pixels = s.width as u64 * s.height as u64;
-    let fragments = b.read_buffer(s.fragments, 0, 4 * pixels * s.layers as u64).unwrap();
+    let fragments = b.read_buffer(s.fragments, 0, dof::methods::buffers::SLOT_WORDS as u64 * pixels * s.layers as u64).unwrap();
     let counts = b.read_buffer(s.counts, 0, pixels).unwrap();
     let mask = b.read_buffer(s.mask, 0, pixels).unwrap();
     (fragments.into_iter().map(f32::from_bits).collect(), counts, mask)

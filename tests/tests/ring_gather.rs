@@ -169,13 +169,12 @@ fn a_context_records_frames_without_allocating() {
     let mut cpu = CpuBackend::new();
     let (w, h) = (40u32, 24u32);
     let mut ctx = RingGatherContext::new(&mut cpu, &RingGatherContextDesc::new(w, h, 1)).unwrap();
-    let input = cpu.create_buffer(4 * (w * h) as u64, "input").unwrap();
+    let input = cpu.create_buffer(dof::methods::buffers::SLOT_WORDS as u64 * (w * h) as u64, "input").unwrap();
     let counts = cpu.create_buffer((w * h) as u64, "counts").unwrap();
     let output = cpu.create_buffer(3 * (w * h) as u64, "output").unwrap();
     for (fw, fh, rings) in [(40u32, 24u32, 5u32), (17, 9, 2), (40, 24, 8)] {
         let (img, depth) = noise_image(fw, fh);
-        let slots: Vec<u32> =
-            img.data.iter().zip(&depth).flat_map(|(c, z)| [c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]).collect();
+        let slots: Vec<u32> = img.data.iter().zip(&depth).flat_map(|(c, z)| dof_shaders::slot::Slot::opaque(*c, *z).words()).collect();
         cpu.write_buffer(input, 0, &slots).unwrap();
         cpu.write_buffer(counts, 0, &vec![1u32; (fw * fh) as usize]).unwrap();
         ctx.set_options(options(rings)).unwrap();

@@ -66,4 +66,9 @@ cases! {
     ragged_size => "ragged-size",
     very_wide_image => "very-wide-image",
     degenerate_lens => "degenerate-lens",
+    translucent_stack_in_focus => "translucent-stack-in-focus",
+    translucent_stack_blurred => "translucent-stack-blurred",
+    alpha_0_glow => "alpha-0-glow",
+    alpha_0_and_1_in_focus => "alpha-0-and-1-in-focus",
+    alpha_out_of_range => "alpha-out-of-range",
 }

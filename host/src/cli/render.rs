@@ -575,14 +575,19 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) 
     println!("{}", out.report.summary);
     // The numerical contract's clamp, counted over the input with the kernels' own rule (splatting
     // also counts it on the device, in its summary above).
-    let clamped = layers
-        .counts
-        .iter()
-        .enumerate()
-        .flat_map(|(p, &n)| &layers.fragments[p * layers.max_layers as usize..][..n.min(layers.max_layers) as usize])
-        .filter(|f| dof_shaders::radiance::is_clamped(f.color))
-        .count();
+    let used = || {
+        layers
+            .counts
+            .iter()
+            .enumerate()
+            .flat_map(|(p, &n)| &layers.fragments[p * layers.max_layers as usize..][..n.min(layers.max_layers) as usize])
+    };
+    let clamped = used().filter(|f| dof_shaders::radiance::is_clamped(f.color)).count();
     println!("numerical contract: {clamped} input colour(s) clamped where read (negative, subnormal or above 2^100)");
+    let alpha_clamped = used().filter(|f| dof_shaders::slot::is_alpha_clamped(f.alpha)).count();
+    if alpha_clamped > 0 {
+        println!("alpha: {alpha_clamped} input alpha(s) NaN or outside [0, 1], clamped where read (NaN to 0)");
+    }
     let image = out.image;
     Ok((image.crop(margin), crop_plane(&depth, layers.width, margin)))
 }

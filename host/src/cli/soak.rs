@@ -8,7 +8,7 @@
 use super::render::BackendArg;
 use dof::backend::{Backend, BufferId, CpuBackend, VulkanBackend, VulkanOptions};
 use dof::frame::{BokehOptions, ContextDesc, DofContext, Extent, Frame, METHODS, Merge, MethodInfo, MethodOptions, Reads, SplatOptions};
-use dof::methods::buffers::{read_rgb, slot_words};
+use dof::methods::buffers::{SLOT_WORDS, read_rgb, slot_words};
 use dof::stress::{noise_with_sky, test_lens};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
@@ -80,10 +80,11 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
     let max = args.max_size;
     let pixels = max as u64 * max as u64;
     // The caller's buffers, made once.
-    let bufs: Vec<BufferId> = [(4 * pixels * MAX_LAYERS as u64, "soak/fragments"), (pixels, "soak/counts"), (3 * pixels, "soak/output")]
-        .iter()
-        .map(|&(w, l)| b.create_buffer(w, l))
-        .collect::<dof::Result<_>>()?;
+    let bufs: Vec<BufferId> =
+        [(SLOT_WORDS as u64 * pixels * MAX_LAYERS as u64, "soak/fragments"), (pixels, "soak/counts"), (3 * pixels, "soak/output")]
+            .iter()
+            .map(|&(w, l)| b.create_buffer(w, l))
+            .collect::<dof::Result<_>>()?;
     // One context per method of the registry, all for the same largest frame.
     let extent = Extent::new(max, max, MAX_LAYERS);
     let mut contexts: Vec<Box<dyn DofContext>> = Vec::new();

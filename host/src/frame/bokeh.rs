@@ -123,7 +123,11 @@ impl BokehContext {
             (4 * pixels, "bokeh/sprite-image"),
         ];
         let max_words = backend.limits().max_buffer_bytes / 4;
-        let widest = sizes.iter().map(|s| (s.0, s.1)).chain([(4 * pixels * desc.max_layers as u64, "input slots")]).max_by_key(|s| s.0);
+        let widest = sizes
+            .iter()
+            .map(|s| (s.0, s.1))
+            .chain([(dof_shaders::slot::SLOT_WORDS as u64 * pixels * desc.max_layers as u64, "input slots")])
+            .max_by_key(|s| s.0);
         if let Some((words, what)) = widest.filter(|s| s.0 > max_words) {
             return Err(Error::TooLarge { what: format!("{what} (words)"), size: words, limit: max_words });
         }

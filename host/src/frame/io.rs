@@ -10,6 +10,7 @@ use dof_shaders::frame_io::{
 };
 use dof_shaders::lens::ThinLens;
 use dof_shaders::radiance::{COUNT_CLAMPED, ClampCountParams, radiance_count_clamped};
+use dof_shaders::slot::SLOT_WORDS;
 
 /// How a depth image encodes depth.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -27,8 +28,11 @@ pub enum DepthEncoding {
 #[derive(Clone, Copy, Debug)]
 pub enum FrameInput {
     /// A multi-layer image in the caller's buffers, read only: `fragments` holds per pixel
-    /// `layers` slots of 4 words (red, green, blue, depth as f32 bits), front to back, and
-    /// `counts` the slots used per pixel (one word each).
+    /// `layers` slots of [`SLOT_WORDS`] = 5 words (f32 bits: red, green, blue **premultiplied** by
+    /// alpha, planar view depth, alpha in [0, 1]; `dof_shaders::slot`), front to back, and `counts`
+    /// the slots used per pixel (one word each). A pixel's slots composite front to back over
+    /// black; an opaque slot has alpha 1 and its colour as it is. Alpha NaN or outside [0, 1] is
+    /// clamped (NaN to 0) and counted in the method's report.
     Layers { fragments: BufferId, counts: BufferId, layers: u32 },
     /// The caller's colour and depth images, one layer: colour RGBA32F, RGBA16F or B10G11R11, depth
     /// a depth attachment as it is (D32, D24 with stencil, X8_D24; read through its depth aspect,
@@ -106,7 +110,7 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
     let mut images = Vec::new();
     match f.input {
         FrameInput::Layers { fragments, counts, .. } => {
-            buffers.extend([("fragments", fragments, 4 * pixels * layers as u64), ("counts", counts, pixels)])
+            buffers.extend([("fragments", fragments, SLOT_WORDS as u64 * pixels * layers as u64), ("counts", counts, pixels)])
         }
         FrameInput::Images { color, depth, encoding } => {
             images.extend([("colour", color, COLOR_FORMATS.as_slice(), false), ("depth", depth, DEPTH_FORMATS.as_slice(), false)]);
@@ -166,8 +170,9 @@ pub(crate) fn context_pixels(backend: &dyn Backend, what: &str, width: u32, heig
     }
     let pixels = width as u64 * height as u64;
     let max_words = backend.limits().max_buffer_bytes / 4;
-    if 4 * pixels * layers as u64 > max_words {
-        return Err(Error::TooLarge { what: "input slots (words)".into(), size: 4 * pixels * layers as u64, limit: max_words });
+    let slot_words = SLOT_WORDS as u64 * pixels * layers as u64;
+    if slot_words > max_words {
+        return Err(Error::TooLarge { what: "input slots (words)".into(), size: slot_words, limit: max_words });
     }
     Ok(pixels)
 }
@@ -263,7 +268,7 @@ impl Owned {
     }
 }
 
-/// Buffers image inputs and outputs go through (10 words a pixel): the colour image (later the
+/// Buffers image inputs and outputs go through (11 words a pixel): the colour image (later the
 /// RGBA result), the depth image, and the one-layer input made from them (later the RGB result).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ImageIo {
@@ -279,7 +284,7 @@ impl ImageIo {
         Ok(ImageIo {
             color: owned.make(backend, 4 * pixels, "frame/io-color")?,
             depth: owned.make(backend, pixels, "frame/io-depth")?,
-            fragments: owned.make(backend, 4 * pixels, "frame/io-fragments")?,
+            fragments: owned.make(backend, SLOT_WORDS as u64 * pixels, "frame/io-fragments")?,
             counts: owned.make(backend, pixels, "frame/io-counts")?,
         })
     }
@@ -318,8 +323,9 @@ pub(crate) fn record_input(backend: &mut dyn Backend, f: &Frame, io: Option<&Ima
     }
 }
 
-/// Records the front fragment of every pixel (black at infinite depth where a pixel has none) as
-/// 3 colour words and one depth word a pixel: the input of the single-layer gathering methods.
+/// Records every pixel flattened (`dof_shaders::slot::flatten`: its slots composited front to back
+/// over black, at the front slot's depth; black at infinite depth where a pixel has none) as 3
+/// colour words and one depth word a pixel: the input of the single-layer gathering methods.
 pub(crate) fn record_front(
     backend: &mut dyn Backend,
     f: &Frame,
@@ -350,9 +356,13 @@ pub(crate) fn record_clamp_count(
     backend.run(bindings, groups_for(&COUNT_CLAMPED, pixels as u64), &params, "frame/clamped")
 }
 
-/// The report's words on the input colours [`record_clamp_count`] counted.
+/// The report's words on the input values [`record_clamp_count`] counted.
 pub(crate) fn clamped_summary(clamped: u32) -> String {
-    if clamped == 0 { String::new() } else { format!("; {clamped} input colours clamped (negative, subnormal or above 2^100)") }
+    if clamped == 0 {
+        String::new()
+    } else {
+        format!("; {clamped} input values clamped (colours negative, subnormal or above 2^100; alphas NaN or outside [0, 1])")
+    }
 }
 
 /// The buffer the method writes its RGB result into: the caller's, or for an image output the

@@ -36,7 +36,8 @@ pub struct PeelSlots {
     pub width: u32,
     pub height: u32,
     pub layers: u32,
-    /// `layers` slots a pixel of 4 words: r, g, b, depth (f32 bits), front to back.
+    /// `layers` slots a pixel ([`SLOT_WORDS`] words: premultiplied r, g, b, depth, alpha; the frame
+    /// API's layer input), front to back.
     pub fragments: BufferId,
     /// Slots used per pixel.
     pub counts: BufferId,

@@ -55,11 +55,11 @@ impl InputReport {
         self.counts.repaired()
     }
 
-    /// Everything worth a note to the user: [`Self::repaired`] plus the channels not read
-    /// (`ignored_channels`). When it is 0 the whole file was read as it is (apart from empty slots
+    /// Everything worth a note to the user: [`Self::repaired`], the fragments of alpha 0 read as
+    /// emission (`emission_only`) and the channels not read (`ignored_channels`). When it is 0 the whole file was read as it is (apart from empty slots
     /// and background fragments, which are data, not changes).
     pub fn total(&self) -> u64 {
-        self.counts.repaired() + self.ignored_channels.len() as u64
+        self.counts.repaired() + self.counts.emission_only + self.ignored_channels.len() as u64
     }
 }
 
@@ -78,6 +78,11 @@ impl fmt::Display for InputReport {
             (c.color_nan, "NaN colour values set to 0"),
             (c.color_inf, "infinite colour values clamped (+inf to 65504, -inf to 0)"),
             (c.alpha_invalid, "alpha values NaN or outside [0, 1] (NaN to 0, others clamped)"),
+            (
+                c.emission_only,
+                "fragments with alpha 0 and a colour, read as light that hides nothing (colour is premultiplied: a glow or \
+                 emission; an image whose alpha is 0 everywhere shows its colour)",
+            ),
             (c.depth_invalid, "fragments with NaN, zero or negative depth dropped"),
             (
                 c.behind_background,
@@ -123,9 +128,10 @@ impl fmt::Display for InputReport {
 /// order). A slot at depth `+inf` or at least [`BACKGROUND_DEPTH`] is the **background**: a
 /// fragment at depth `+inf` with alpha 1 and the stored colour, always the last of its pixel; a
 /// pixel keeps one (the first in layer order), and further background slots are dropped and
-/// counted (`behind_background`). Colour is premultiplied by alpha in EXR files and straight in a
-/// [`Fragment`], so it is divided by alpha (not for the background, which is the stored colour
-/// over black). Depth is taken as planar depth as written.
+/// counted (`behind_background`). Colour is premultiplied by alpha in EXR files and in a
+/// [`Fragment`], so it is kept as stored (the background is the stored colour over black, alpha 1);
+/// a slot of alpha 0 with a colour is light that hides nothing. Depth is taken as planar depth as
+/// written.
 pub fn read_layered_exr(path: impl AsRef<Path>) -> Result<(LayeredImage, InputReport)> {
     let path = path.as_ref();
     let file = ExrFile::open(path)?;

@@ -135,7 +135,7 @@ pub fn write_layered_exr(path: impl AsRef<Path>, image: &LayeredImage) -> Result
     for layer in 0..layers {
         let slot = |p: usize| (layer < image.counts[p] as usize).then(|| image.fragments[p * layers + layer]);
         for (k, c) in ["R", "G", "B"].into_iter().enumerate() {
-            let values = (0..pixels).map(|p| slot(p).map_or(0.0, |f| f.color[k] * f.alpha)).collect();
+            let values = (0..pixels).map(|p| slot(p).map_or(0.0, |f| f.color[k])).collect();
             channels.push(AnyChannel::new(text(&format!("layer{layer}.{c}"))?, FlatSamples::F32(values)));
         }
         let alpha = (0..pixels).map(|p| slot(p).map_or(0.0, |f| f.alpha)).collect();

@@ -37,8 +37,8 @@
 //! note; nothing is dropped silently. In a multi-layer file a named layer with colour but no depth,
 //! or only some of R, G, B, is an error.
 //!
-//! Colour in EXR is premultiplied by alpha; [`Fragment`](crate::layers::Fragment) colour is
-//! straight, so it is divided by alpha on reading and multiplied on writing. Depth is planar
+//! Colour in EXR is premultiplied by alpha, as [`Fragment`](crate::layers::Fragment) colour is:
+//! it is read and written as stored. Depth is planar
 //! (distance along the view axis) as in [`layers`](crate::layers); a renderer writing radial
 //! distance or `1/z` must be converted first. The image is the data window; the display window is
 //! ignored.
@@ -53,9 +53,11 @@
 //! is always the last fragment of its pixel: a pixel keeps one background (the first in layer
 //! order) and further background slots are dropped and counted. In an RGB+Z image the one layer is
 //! the whole pixel, so a pixel at background depth is the background whatever its alpha (a
-//! transparent film's alpha 0 gives the stored, usually black, colour). In a multi-layer image a
-//! slot with alpha 0 is empty whatever its depth ([`write_layered_exr`] writes empty slots as
-//! colour 0, A 0, Z `+inf`), and a background fragment is written as Z `+inf`, A 1.
+//! transparent film's alpha 0 gives the stored, usually black, colour). A slot with alpha 0 and a
+//! black colour is empty whatever its depth ([`write_layered_exr`] writes empty slots as colour 0,
+//! A 0, Z `+inf`), and a background fragment is written as Z `+inf`, A 1. A slot with alpha 0 and
+//! a colour is light that hides nothing (premultiplied colour: emission), read as a fragment and
+//! noted: an image whose alpha is 0 everywhere shows its colour, never black.
 //!
 //! # NaN/Inf policy
 //!
@@ -71,7 +73,8 @@
 //! | colour finite (negative included)   | unchanged                                           | —                |
 //! | alpha NaN                           | 0, so the slot is empty                             | `alpha_invalid`  |
 //! | alpha < 0 or > 1 (`±inf` included)  | clamped to [0, 1]                                   | `alpha_invalid`  |
-//! | alpha 0                             | empty slot: no fragment (colour, depth not checked; but see the RGB+Z background above) | `empty_alpha` (info) |
+//! | alpha 0, colour black               | empty slot: no fragment (depth not checked; but see the RGB+Z background above) | `empty_alpha` (info) |
+//! | alpha 0, colour not black           | a fragment that hides nothing (emission)            | `emission_only` (noted) |
 //! | depth `+inf` or >= [`BACKGROUND_DEPTH`] | the background: depth `+inf`, alpha 1, its colour | `background` (info) |
 //! | a second background slot in a pixel | dropped (the first background ends the pixel)      | `behind_background` |
 //! | depth NaN, `<= 0`, `-inf`           | fragment dropped (that layer of the pixel is empty) | `depth_invalid`  |
@@ -80,8 +83,7 @@
 //! RGB+Z pixel at background depth: depth, then colour); the colour of a slot that is empty or
 //! dropped is not checked or counted.
 //! Colour 65 504 (not `f32::MAX`) keeps sums of many clamped pixels finite in `f32`; finite values
-//! above it are kept. A colour that overflows when divided by a tiny alpha also becomes 65 504
-//! (counted in `color_inf`). [`read_rgb_exr`] applies the colour rules only. The PNG preview maps
+//! above it are kept. [`read_rgb_exr`] applies the colour rules only. The PNG preview maps
 //! NaN to black and `+inf` to white (see [`tonemap`](mod@tonemap)).
 //!
 //! # Errors

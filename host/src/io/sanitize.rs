@@ -41,8 +41,7 @@ pub fn is_background_depth(depth: f32) -> bool {
 pub struct SanitizeCounts {
     /// Colour samples that were NaN, set to 0.
     pub color_nan: u64,
-    /// Colour samples that were infinite: `+inf` set to [`COLOR_INF_REPLACEMENT`], `-inf` to 0. Also
-    /// counts colours that overflowed when divided by a tiny alpha (set to the same maximum).
+    /// Colour samples that were infinite: `+inf` set to [`COLOR_INF_REPLACEMENT`], `-inf` to 0.
     pub color_inf: u64,
     /// Alpha samples that were NaN (set to 0: the fragment is dropped) or outside [0, 1] (clamped).
     pub alpha_invalid: u64,
@@ -56,8 +55,13 @@ pub struct SanitizeCounts {
     /// Not a repair, for information: background fragments read (depth `+inf` or at least
     /// [`BACKGROUND_DEPTH`]), each kept with its colour at depth `+inf`.
     pub background: u64,
-    /// Not a repair, for information: layer slots with alpha 0 (empty by definition, no fragment).
+    /// Not a repair, for information: layer slots with alpha 0 and a black colour (empty by
+    /// definition, no fragment).
     pub empty_alpha: u64,
+    /// Not a repair, but always noted: fragments with alpha 0 and a colour that is not black. The
+    /// colour is premultiplied, so such a fragment is light that hides nothing (emission, a glow),
+    /// and it is read so: an image whose alpha is 0 everywhere shows its colour, never black.
+    pub emission_only: u64,
 }
 
 impl SanitizeCounts {
@@ -80,6 +84,7 @@ impl std::ops::Add for SanitizeCounts {
             behind_background: self.behind_background + o.behind_background,
             background: self.background + o.background,
             empty_alpha: self.empty_alpha + o.empty_alpha,
+            emission_only: self.emission_only + o.emission_only,
         }
     }
 }
@@ -109,37 +114,31 @@ impl SanitizeCounts {
         }
     }
 
-    /// One alpha sample under the policy: NaN → 0, below 0 → 0, above 1 → 1 (infinities included).
+    /// One alpha sample under the policy (the methods' own, `dof_shaders::slot::clamp_alpha`): NaN → 0,
+    /// below 0 → 0, above 1 → 1 (infinities included).
     #[inline]
     pub fn alpha(&mut self, a: f32) -> f32 {
-        if a.is_nan() || a < 0.0 {
-            self.alpha_invalid += 1;
-            0.0
-        } else if a > 1.0 {
-            self.alpha_invalid += 1;
-            1.0
-        } else {
-            a
-        }
+        self.alpha_invalid += dof_shaders::slot::is_alpha_clamped(a) as u64;
+        dof_shaders::slot::clamp_alpha(a)
     }
 
     /// One layer slot of a multi-layer pixel as stored in a file: colour **premultiplied** by alpha
-    /// (the OpenEXR convention), alpha (1 where the file has none) and depth. Returns the fragment
-    /// (with straight colour, as [`Fragment`] holds it), or `None` where the slot is empty:
+    /// (the OpenEXR convention, and [`Fragment`]'s), alpha (1 where the file has none) and depth.
+    /// Returns the fragment, or `None` where the slot is empty:
     ///
-    /// 1. alpha is sanitised ([`Self::alpha`]); alpha 0 → empty (counted in `empty_alpha`; nothing
-    ///    else is looked at, so zero-filled empty slots, which [`write_layered_exr`] writes with depth
-    ///    `+inf`, are neither a background nor reported as bad depth);
+    /// 1. alpha is sanitised ([`Self::alpha`]); alpha 0 with a black colour → empty (counted in
+    ///    `empty_alpha`; depth is not looked at, so zero-filled empty slots, which
+    ///    [`write_layered_exr`] writes with depth `+inf`, are neither a background nor reported as
+    ///    bad depth); alpha 0 with a colour is light that hides nothing (counted in `emission_only`);
     /// 2. depth `+inf` or at least [`BACKGROUND_DEPTH`] → the background ([`Self::background`]);
     ///    depth NaN, `<= 0` or `-inf` → dropped, counted in `depth_invalid`;
-    /// 3. colour samples are sanitised ([`Self::color`]) and divided by alpha; a quotient that
-    ///    overflows becomes [`COLOR_INF_REPLACEMENT`] (counted in `color_inf`).
+    /// 3. colour samples are sanitised ([`Self::color`]), and kept premultiplied.
     ///
     /// [`write_layered_exr`]: super::write_layered_exr
     #[inline]
     pub fn fragment(&mut self, premultiplied: [f32; 3], alpha: f32, depth: f32) -> Option<Fragment> {
         let alpha = self.alpha(alpha);
-        if alpha == 0.0 {
+        if alpha == 0.0 && premultiplied.iter().all(|&c| c == 0.0) {
             self.empty_alpha += 1;
             return None;
         }
@@ -150,18 +149,8 @@ impl SanitizeCounts {
             self.depth_invalid += 1;
             return None;
         }
-        let mut color = premultiplied.map(|c| self.color(c));
-        if alpha != 1.0 {
-            for c in &mut color {
-                let straight = *c / alpha;
-                *c = if straight.is_finite() {
-                    straight
-                } else {
-                    self.color_inf += 1;
-                    COLOR_INF_REPLACEMENT
-                };
-            }
-        }
+        self.emission_only += (alpha == 0.0) as u64;
+        let color = premultiplied.map(|c| self.color(c));
         Some(Fragment { color, alpha, depth })
     }
 
@@ -208,22 +197,29 @@ mod tests {
         let sky = Fragment { color: [1.0; 3], alpha: 1.0, depth: f32::INFINITY };
         assert_eq!(c.fragment([1.0; 3], 1.0, f32::INFINITY), Some(sky));
         assert_eq!(c.fragment([0.0; 3], 0.0, f32::INFINITY), None, "an empty slot, not a background");
+        // Alpha 0 with a colour is not empty: its depth is checked.
         assert_eq!(c.fragment([1.0; 3], 0.0, f32::NAN), None);
+        // Premultiplied colour is kept as it is.
         let f = c.fragment([0.5, 0.25, 0.0], 0.5, 2.0).unwrap();
-        assert_eq!(f.color, [1.0, 0.5, 0.0]);
+        assert_eq!((f.color, f.alpha), ([0.5, 0.25, 0.0], 0.5));
         assert_eq!(
             c,
             SanitizeCounts {
                 color_nan: 1,
                 color_inf: 2,
                 alpha_invalid: 3,
-                depth_invalid: 2,
+                depth_invalid: 3,
                 behind_background: 0,
                 background: 1,
-                empty_alpha: 2
+                empty_alpha: 1,
+                emission_only: 0
             }
         );
-        assert_eq!(c.repaired(), 8);
+        assert_eq!(c.repaired(), 9);
+        // Light that hides nothing: alpha 0 and a colour.
+        let glow = c.fragment([0.4, 0.2, 0.0], 0.0, 3.0).unwrap();
+        assert_eq!(glow, Fragment { color: [0.4, 0.2, 0.0], alpha: 0.0, depth: 3.0 });
+        assert_eq!(c.emission_only, 1);
     }
 
     #[test]
@@ -237,7 +233,8 @@ mod tests {
         // A sole layer at background depth is the background even with alpha 0.
         let b = c.sole_fragment([0.0; 3], 0.0, f32::MAX).unwrap();
         assert_eq!(b, Fragment { color: [0.0; 3], alpha: 1.0, depth: f32::INFINITY });
-        assert_eq!(c.sole_fragment([1.0; 3], 0.0, 3.0), None);
-        assert_eq!((c.background, c.color_nan, c.empty_alpha), (2, 1, 1));
+        assert_eq!(c.sole_fragment([1.0; 3], 0.0, 3.0), Some(Fragment { color: [1.0; 3], alpha: 0.0, depth: 3.0 }));
+        assert_eq!(c.sole_fragment([0.0; 3], 0.0, 3.0), None);
+        assert_eq!((c.background, c.color_nan, c.empty_alpha, c.emission_only), (2, 1, 1, 1));
     }
 }

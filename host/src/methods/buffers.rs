@@ -9,10 +9,12 @@ use dof_shaders::lens::ThinLens;
 
 pub use crate::backend::{MAX_GROUPS, groups_for};
 
-/// Every fragment slot of `image` as 4 words: r, g, b, depth (the input layout of the splatting,
-/// ray-tracing and layered kernels).
+pub use dof_shaders::slot::SLOT_WORDS;
+
+/// Every fragment slot of `image` as [`SLOT_WORDS`] words: premultiplied r, g, b, depth, alpha
+/// (`dof_shaders::slot`, the layer input of every method and of the frame API).
 pub fn slot_words(image: &LayeredImage) -> Vec<u32> {
-    image.fragments.iter().flat_map(|f| [f.color[0].to_bits(), f.color[1].to_bits(), f.color[2].to_bits(), f.depth.to_bits()]).collect()
+    image.fragments.iter().flat_map(|f| f.slot().words()).collect()
 }
 
 /// A `width` x `height` RGB image from 3 words a pixel of `buffer`.
@@ -46,9 +48,8 @@ pub fn one_layer_frame<T>(
     if !lens.is_valid() {
         return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
     }
-    let slots: Vec<u32> =
-        image.data.iter().zip(depth).flat_map(|(c, z)| [c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]).collect();
-    let sizes = [(4 * pixels, "one-layer/input"), (pixels, "one-layer/input-counts"), (3 * pixels, "one-layer/out")];
+    let slots: Vec<u32> = image.data.iter().zip(depth).flat_map(|(c, z)| dof_shaders::slot::Slot::opaque(*c, *z).words()).collect();
+    let sizes = [(SLOT_WORDS as u64 * pixels, "one-layer/input"), (pixels, "one-layer/input-counts"), (3 * pixels, "one-layer/out")];
     with_buffers(backend, &sizes, |backend, b| {
         backend.write_buffer(b[0], 0, &slots)?;
         backend.write_buffer(b[1], 0, &vec![1u32; pixels as usize])?;

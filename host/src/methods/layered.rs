@@ -85,7 +85,7 @@ pub fn plan(image: &LayeredImage, lens: &ThinLens, options: &LayeredOptions) -> 
     };
     for p in 0..image.counts.len() {
         let n = image.counts[p].min(image.max_layers) as usize;
-        if n == 0 {
+        if n == 0 || image.ends_translucent(p) {
             note(lens.far_limit_px());
         }
         for f in &image.fragments[p * image.max_layers as usize..][..n] {
@@ -123,7 +123,7 @@ pub fn plan(image: &LayeredImage, lens: &ThinLens, options: &LayeredOptions) -> 
     };
     for p in 0..image.counts.len() {
         let n = image.counts[p].min(image.max_layers) as usize;
-        if n == 0 {
+        if n == 0 || image.ends_translucent(p) {
             reach(f32::INFINITY, false);
         }
         let usable =

@@ -9,7 +9,7 @@ use crate::backend::{Backend, BufferId, CommandTime};
 use crate::error::{Error, Result};
 use crate::frame::{ContextDesc, ContextReport, DofContext, Extent, Frame, MethodInfo, MethodOptions, Reads};
 use crate::layers::{LayeredImage, RgbImage};
-use crate::methods::buffers::{read_rgb, slot_words};
+use crate::methods::buffers::{SLOT_WORDS, read_rgb, slot_words};
 use dof_shaders::lens::ThinLens;
 use std::borrow::Cow;
 
@@ -58,7 +58,8 @@ impl Runner {
         // The context checks the extent (and refuses) before any buffer of the input is made.
         let ctx = (method.create)(backend, &ContextDesc::new(extent, options.clone()))?;
         let pixels = w as u64 * h as u64;
-        let sizes = [(4 * pixels * layers as u64, "frames/input"), (pixels, "frames/input-counts"), (3 * pixels, "frames/out")];
+        let sizes =
+            [(SLOT_WORDS as u64 * pixels * layers as u64, "frames/input"), (pixels, "frames/input-counts"), (3 * pixels, "frames/out")];
         let mut io = Vec::new();
         for (words, label) in sizes {
             match backend.create_buffer(words, label) {
@@ -76,7 +77,7 @@ impl Runner {
     /// Device bytes of the context, the input and the output.
     pub fn buffer_bytes(&self) -> u64 {
         let pixels = self.extent.width as u64 * self.extent.height as u64;
-        self.ctx.device_bytes() + 4 * (4 * pixels * self.extent.layers as u64 + pixels + 3 * pixels)
+        self.ctx.device_bytes() + 4 * (SLOT_WORDS as u64 * pixels * self.extent.layers as u64 + pixels + 3 * pixels)
     }
 
     /// One frame of `image` (of the runner's size and layer count) through `lens`: upload, record,

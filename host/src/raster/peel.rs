@@ -211,7 +211,8 @@ pub fn peel_layers(
                 if slot_kept(alpha, depth) {
                     // Each pass keeps fragments strictly beyond the last, so layers arrive in order.
                     let slot = p * options.max_layers as usize + full.counts[p] as usize;
-                    full.fragments[slot] = Fragment { color: [0, 1, 2].map(|j| f32::from_bits(w[j])), alpha, depth };
+                    let rgb = [0, 1, 2].map(|j| f32::from_bits(w[j]));
+                    full.fragments[slot] = Fragment { color: dof_shaders::slot::premultiply(rgb, alpha), alpha, depth };
                     full.counts[p] += 1;
                     found |= is_surface(depth);
                 }

@@ -21,7 +21,7 @@
 
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{covers, disk_budget, pair_radius};
-use dof_shaders::resolve::{Sample, grid_side, resolve_pixel, subsample_offset};
+use dof_shaders::resolve::{Sample, grid_side, kept_outside_buffer, resolve_pixel, subsample_offset};
 use rayon::prelude::*;
 
 use super::analytic::{Hit, Scene};
@@ -159,12 +159,10 @@ pub fn apply_disocclusion(
     let mut masked = full.clone();
     for (p, &keep) in mask.iter().enumerate() {
         if !keep {
-            // Outside the buffer the pixel keeps what its pinhole view sees: the front fragments
-            // up to the first opaque one (one, for point-sampled opaque layers; an area-integrated
-            // edge keeps its partly covering front and the surface it does not hide).
-            let frags = &masked.fragments[p * l..p * l + masked.counts[p] as usize];
-            let seen = frags.iter().position(|f| f.alpha >= 1.0).map_or(frags.len(), |i| i + 1);
-            masked.counts[p] = masked.counts[p].min(seen.max(1) as u32);
+            // Outside the buffer the pixel keeps what its pinhole view sees (the device peel's
+            // rule): the front fragments up to the first opaque one.
+            let frags = &masked.fragments[p * l..];
+            masked.counts[p] = kept_outside_buffer(masked.counts[p], |k| frags[k as usize].alpha);
         }
     }
     // Unused slots are reset so that equal images compare equal whatever was dropped.
@@ -214,7 +212,7 @@ fn cast_all(scene: &Scene, frame: &CameraFrame, lens: &ThinLens, options: &Layer
                     l as u32,
                     options.edge_depth_ratio,
                     |j, s| {
-                        out[j as usize] = Fragment { color: s.straight(), alpha: s.alpha, depth: s.depth };
+                        out[j as usize] = Fragment { color: s.color, alpha: s.alpha, depth: s.depth };
                     },
                 );
                 counts[x] = r.count;
@@ -291,7 +289,7 @@ pub fn resolve_subsamples(fine: &LayeredImage, side: u32, max_layers: u32, toler
                     max_layers,
                     tolerance,
                     |j, s| {
-                        out[j as usize] = Fragment { color: s.straight(), alpha: s.alpha, depth: s.depth };
+                        out[j as usize] = Fragment { color: s.color, alpha: s.alpha, depth: s.depth };
                     },
                 );
                 counts[x] = r.count;

@@ -2,17 +2,21 @@
 //! tile and walks the tile's depth-sorted list in chunks of 256 fragments staged in workgroup memory;
 //! every pixel blends the fragments whose disc covers its centre, front to back.
 //!
-//! Blending. A fragment standing for `footprint` pixels gives a pixel centre the alpha
-//! `footprint · weight / Σ weight` (see [`weight`] and [`weight_sum`]): it spreads exactly its own
-//! energy. Front to back, each fragment takes at most the coverage its nearer fragments left
-//! (`a = min(α, 1 − used)`): coverage is a budget the near field spends first. Unlike per-fragment
+//! Blending. A fragment standing for `footprint` pixels gives a pixel centre the share
+//! `w = footprint · weight / Σ weight` of its disc (see [`weight`] and [`weight_sum`]): it spreads
+//! exactly its own energy. Its alpha `α` scales that coverage: it adds `w` times its premultiplied
+//! colour and spends `w·α` of the pixel ([`take`]). Front to back, each fragment takes at most the
+//! coverage its nearer fragments left (`min(w·α, 1 − used)`): coverage is a budget the near field
+//! spends first. A translucent fragment (or one of alpha 0, light that hides nothing) leaves the
+//! rest of its share to what lies behind it. Unlike per-fragment
 //! alpha compositing (`T ← T·(1 − α)`), the fragments of one blurred surface do not attenuate each
 //! other (a blurred wall is not a stack of translucent sheets), and the visible and hidden layers of
 //! a background together fill exactly what the foreground leaves. On the built-in scenes this is
 //! several dB closer to the exact reference than compositing (README, "Blending").
 //!
-//! A pixel's own in-focus front fragment (see `pack`) is not in any list: it takes all remaining
-//! coverage at its depth, which ends the pixel's traversal, and keeps its full f32 colour. A pixel
+//! A pixel's own in-focus front (see `pack`: the "over" of its leading in-focus slots, opaque or over
+//! black) is not in any list: it takes all remaining coverage at its depth, which ends the pixel's
+//! traversal, and keeps its full f32 colour. A pixel
 //! stops early once its coverage is within [`SATURATED`] of full; the workgroup stops when all its
 //! pixels have. The result is normalised by the coverage gathered (which fills the frame border,
 //! where fragments from outside the image are missing, and holes left by dropped input). Colours are
@@ -51,9 +55,11 @@ const CH_Z: usize = 13 * T;
 const CH_W: usize = 14 * T;
 /// 1 for a background fragment, −1 for a foreground one (its aperture shape is point-reflected).
 const CH_M: usize = 15 * T;
+/// The fragment's alpha.
+const CH_O: usize = 16 * T;
 /// Two halves for the "any pixel still active" scan.
-const ACTIVE: usize = 16 * T;
-pub const SHARED_WORDS: usize = 18 * T;
+const ACTIVE: usize = 17 * T;
+pub const SHARED_WORDS: usize = 19 * T;
 
 #[inline]
 fn get<const N: usize>(sh: &[u32; N], field: usize, i: u32) -> f32 {
@@ -65,12 +71,22 @@ fn set<const N: usize>(sh: &mut [u32; N], field: usize, i: u32, v: f32) {
     sh[field + i as usize] = v.to_bits();
 }
 
-/// Adds `a` of colour `c` to pixel `i`.
+/// What a fragment of disc share `w` and alpha `alpha` takes of a pixel that has `rest` coverage
+/// left: the factor its premultiplied colour is added with, and the coverage it spends. Its
+/// coverage `w·α` while that fits; otherwise the rest, with its colour scaled to match (`rest/α`,
+/// below `w`). An opaque fragment takes `min(w, rest)` for both, bit for bit as before alpha.
 #[inline]
-fn blend<const N: usize>(sh: &mut [u32; N], i: u32, a: f32, c: [f32; 3]) {
-    set(sh, ACC_R, i, get(sh, ACC_R, i) + a * c[0]);
-    set(sh, ACC_G, i, get(sh, ACC_G, i) + a * c[1]);
-    set(sh, ACC_B, i, get(sh, ACC_B, i) + a * c[2]);
+pub fn take(w: f32, alpha: f32, rest: f32) -> (f32, f32) {
+    let wa = w * alpha;
+    if wa < rest { (w, wa) } else { (rest / alpha, rest) }
+}
+
+/// Adds the share `s` of premultiplied colour `c` to pixel `i`, which spends `a` of its coverage.
+#[inline]
+fn blend<const N: usize>(sh: &mut [u32; N], i: u32, s: f32, a: f32, c: [f32; 3]) {
+    set(sh, ACC_R, i, get(sh, ACC_R, i) + s * c[0]);
+    set(sh, ACC_G, i, get(sh, ACC_G, i) + s * c[1]);
+    set(sh, ACC_B, i, get(sh, ACC_B, i) + s * c[2]);
     set(sh, USED, i, get(sh, USED, i) + a);
 }
 
@@ -148,6 +164,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
                 set(sh, CH_A, lid, f.footprint() / weight_sum(c, r, f.rim(), &p.aperture, mirror, &mask));
                 set(sh, CH_W, lid, f.rim());
                 set(sh, CH_M, lid, mirror);
+                set(sh, CH_O, lid, f.alpha);
                 set(sh, CH_R, lid, f.color[0]);
                 set(sh, CH_G, lid, f.color[1]);
                 set(sh, CH_B, lid, f.color[2]);
@@ -173,10 +190,9 @@ pub fn accumulate_pass<G: Group, M: Mem>(
                     // The pixel's own sharp front lies in front of the rest of the list.
                     live = false;
                 } else if d2 < s * s {
-                    let a = get(sh, CH_A, k) * shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask);
-                    let rest = 1.0 - used;
-                    let a = if a < rest { a } else { rest };
-                    acc = [acc[0] + a * get(sh, CH_R, k), acc[1] + a * get(sh, CH_G, k), acc[2] + a * get(sh, CH_B, k)];
+                    let w = get(sh, CH_A, k) * shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask);
+                    let (f, a) = take(w, get(sh, CH_O, k), 1.0 - used);
+                    acc = [acc[0] + f * get(sh, CH_R, k), acc[1] + f * get(sh, CH_G, k), acc[2] + f * get(sh, CH_B, k)];
                     used += a;
                     live = used < 1.0 - SATURATED;
                 }
@@ -205,7 +221,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
         let (c, z) = load_sharp(&sharp, y * p.width + x);
         let rest = 1.0 - get(sh, USED, lid);
         if !is_nan(z) && rest > 0.0 {
-            blend(sh, lid, rest, c);
+            blend(sh, lid, rest, rest, c);
         }
         let cover = get(sh, USED, lid);
         let norm = if cover > 1e-6 { 1.0 / cover } else { 0.0 };
@@ -220,7 +236,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
 
 kernel!(
     /// Front-to-back accumulation of the sorted tile lists (or copy-through) into `out` (3 words a pixel).
-    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 18 * 256]
+    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 19 * 256]
         { sharp, dense, values, segments, copy, out, st, mask }
         reads { sharp, dense, values, segments, copy, mask } => accumulate_pass
 );

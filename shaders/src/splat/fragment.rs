@@ -19,9 +19,12 @@
 //! largest. Encoding and decoding multiply by powers of two only, so they are exact and equal on
 //! every backend.
 //!
-//! Alpha ([`encode_alpha`]): coverage in [0, 1] in 10 bits (steps of 1/1023; 0 and 1 exact). Every
-//! input sets it to 1 today; merging keeps it (only fragments of equal alpha merge), and
-//! accumulation does not read it yet: the alpha issue (#23) defines its use.
+//! Alpha ([`encode_alpha`]): coverage in [0, 1] in 10 bits (steps of 1/1023; 0 and 1 exact), the
+//! input slot's alpha ([`crate::slot`]). The colour is premultiplied by it, as in the input: the
+//! fragment's energy is its colour, whatever the rounding of its alpha. Accumulation scales the
+//! fragment's disc coverage by alpha ([`super::accumulate`]); merging keeps it (only fragments of
+//! equal alpha merge, so a translucent fragment never joins an opaque one), and only an opaque
+//! merged fragment drops what lies in its umbra.
 //!
 //! The position is the centre of the fragment's footprint in half-pixel units of the full-resolution
 //! image (pixel `x` is centred at `2x + 1`; a merged 2x2 or 4x4 block at a pixel corner), so merged
@@ -139,7 +142,7 @@ pub fn decode_alpha(a: u32) -> f32 {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fragment {
     pub color: [f32; 3],
-    /// Coverage in [0, 1] (1 for every input today).
+    /// Coverage in [0, 1]; the colour is premultiplied by it.
     pub alpha: f32,
     pub depth: f32,
     pub level: u32,
@@ -152,6 +155,18 @@ impl Fragment {
     #[inline]
     pub fn at_pixel(x: u32, y: u32, color: [f32; 3], depth: f32) -> Self {
         Fragment { color, alpha: 1.0, depth, level: 0, pos: [POS_UNITS * x + 1, POS_UNITS * y + 1] }
+    }
+
+    /// The fragment with coverage `alpha` (its colour premultiplied by it).
+    #[inline]
+    pub fn with_alpha(self, alpha: f32) -> Self {
+        Fragment { alpha, ..self }
+    }
+
+    /// Whether it hides everything behind it (its 10-bit alpha is 1).
+    #[inline]
+    pub fn is_opaque(&self) -> bool {
+        self.alpha >= 1.0
     }
 
     #[inline]

@@ -3,13 +3,14 @@
 //! One invocation per output cell walks the four member cells' lists front to back (each list is in
 //! depth order). While all four heads are mergeable (same merge level as this step's input, all out of
 //! focus, depths within `merge_depth_ratio`, every colour channel within `merge_color_tol` of its
-//! value, equal alpha) they become one fragment: the members' average colour and their alpha, the depth of the member with the
+//! value, equal alpha, so a translucent fragment never merges with an opaque one) they become one
+//! fragment: the members' average (premultiplied) colour and their alpha, the depth of the member with the
 //! largest CoC, the block's centre, the next level. Otherwise the front-most head is passed through
 //! unchanged (never merged again: its level no longer matches). Merging never makes a fragment
 //! transparent: all four members or none.
 //!
-//! Umbra-aware merging (`FLAG_UMBRA_MERGE`): after a merge, member fragments inside the merged
-//! fragment's umbra (lens as an area light, the merged block's footprint as the occluder, see
+//! Umbra-aware merging (`FLAG_UMBRA_MERGE`): after a merge of opaque members, member fragments
+//! inside the merged fragment's umbra (lens as an area light, the merged block's footprint as the occluder, see
 //! [`crate::lens::ThinLens::umbra_length`]) are dropped; once the footprint exceeds the aperture the
 //! umbra is infinite and everything behind goes.
 //!
@@ -141,7 +142,8 @@ pub fn merge_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells_in: M, cou
                 out.store(&mut cells_out, o * cap_out + emitted);
                 emitted += 1;
                 merges += 1;
-                let umbra = p.flags & FLAG_UMBRA_MERGE != 0;
+                // Only an opaque fragment casts an umbra: what lies behind a translucent one shows.
+                let umbra = p.flags & FLAG_UMBRA_MERGE != 0 && out.is_opaque();
                 let r = footprint_radius(&p.lens, out.depth, edge_out as f32);
                 let shadow = out.depth + p.lens.umbra_length(out.depth, r);
                 let mut m = 0usize;

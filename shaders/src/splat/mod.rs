@@ -141,7 +141,11 @@ pub mod stats {
     pub const WIDEST: u32 = 17;
     pub const RINGS: u32 = 18;
     pub const RADIUS_CAP: u32 = 19;
-    pub const WORDS: u32 = 20;
+    /// Input alphas NaN or outside [0, 1], clamped (`slot::clamp_alpha`).
+    pub const ALPHA_CLAMPED: u32 = 20;
+    /// Pixels whose slots end translucent, given black behind them (a pixel composites over black).
+    pub const BACKED: u32 = 21;
+    pub const WORDS: u32 = 22;
 }
 
 #[cfg(not(target_arch = "spirv"))]

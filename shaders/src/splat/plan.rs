@@ -2,7 +2,8 @@
 //! runs on the host and nothing is read back between stages.
 //!
 //! - `splat_plan_reduce` (grid-stride over pixels): the largest CoC radius present (an empty pixel
-//!   counts as the background at infinite depth), reduced in workgroup memory and then with one
+//!   counts as the background at infinite depth, and so does the black behind slots that end
+//!   translucent), reduced in workgroup memory and then with one
 //!   atomic maximum per workgroup into the frame words.
 //! - `splat_plan_finish` (one invocation): from it, the tile rings fragments may reach and the
 //!   radius cap the rings allow. Every later kernel reads them through [`planned`].
@@ -12,6 +13,7 @@
 use super::pack::{input_slot, is_valid};
 use super::{MAX_RINGS, SplatParams, THREADS, stats};
 use crate::exec::{Group, Mem};
+use crate::slot::clamp_alpha;
 use crate::wg::{inclusive_scan, max};
 
 /// The push constants with the device plan's fields (`rings`, `max_radius`) read
@@ -51,18 +53,24 @@ pub fn reduce_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, sh: &mut [u32; 
         while i < pixels {
             let n = counts.load(i);
             let n = if n < p.layers { n } else { p.layers };
-            if n == 0 {
-                let r = p.lens.coc_radius_px(f32::INFINITY);
-                widest = if r > widest { r } else { widest };
-            }
+            let mut through = 1.0f32;
+            let mut valid = false;
             let mut k = 0;
             while k < n {
-                let (c, z) = input_slot(&layers, p, i, k);
+                let s = input_slot(&layers, p, i, k);
+                let (c, z) = (s.color, s.depth);
                 k += 1;
                 if !is_valid(c, z) {
                     continue;
                 }
+                valid = true;
+                through *= 1.0 - clamp_alpha(s.alpha);
                 let r = p.lens.coc_radius_px(z);
+                widest = if r > widest { r } else { widest };
+            }
+            // The black background of an empty pixel, or behind slots that end translucent.
+            if n == 0 || (valid && through > 0.0) {
+                let r = p.lens.coc_radius_px(f32::INFINITY);
                 widest = if r > widest { r } else { widest };
             }
             i += stride;

@@ -324,8 +324,8 @@ impl Device {
         }
         let gb = |b: u64| b as f64 / 1e9;
         let pixels = fw as u64 * fh as u64;
-        // Fragment slots of 4 words: the viewer's input and each context's largest buffer.
-        let slots = 16 * pixels * layers as u64;
+        // Fragment slots (`dof_shaders::slot`): the viewer's input and each context's largest buffer.
+        let slots = 4 * dof::methods::buffers::SLOT_WORDS as u64 * pixels * layers as u64;
         if slots > limits.max_buffer_bytes {
             bail!(
                 "{flags}: frames of {fw}x{fh} pixels (the window and the guard band beyond it) with {layers} layers need buffers of {:.2} GB; \

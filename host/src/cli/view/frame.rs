@@ -15,9 +15,11 @@ use dof::backend::vulkan::ash::vk::{self, AccessFlags as Access, ImageLayout as 
 use dof::backend::{Backend, BufferId, ImageFormat, ImageRef, RawDevice, RawOptions, RunKernel, VulkanBackend};
 use dof::frame::{Frame, FrameInput, FrameOutput};
 use dof::layers::{LayeredImage, RgbImage};
+use dof::methods::buffers::SLOT_WORDS;
 use dof::methods::buffers::groups_for;
 use dof::raster::{MeshPeelContext, MeshPeelDesc, default_near};
 use dof::scene::{Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, ThinLens};
+use dof_shaders::slot::DEPTH_WORD;
 use dof_shaders::tonemap::{DISPLAY, DisplayParams, MODE_LINEAR, MODE_TONEMAP, display_tonemap};
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle};
 use std::time::Instant;
@@ -50,8 +52,14 @@ impl Inputs {
             }
             let layers = image.max_layers.max(LAYERS);
             inputs.replace(Inputs {
-                all: (backend.create_buffer(4 * pixels * layers as u64, "view/fragments")?, backend.create_buffer(pixels, "view/counts")?),
-                front: (backend.create_buffer(4 * pixels, "view/front")?, backend.create_buffer(pixels, "view/front-counts")?),
+                all: (
+                    backend.create_buffer(SLOT_WORDS as u64 * pixels * layers as u64, "view/fragments")?,
+                    backend.create_buffer(pixels, "view/counts")?,
+                ),
+                front: (
+                    backend.create_buffer(SLOT_WORDS as u64 * pixels, "view/front")?,
+                    backend.create_buffer(pixels, "view/front-counts")?,
+                ),
                 pixels,
                 layers,
             });
@@ -97,7 +105,7 @@ impl DevicePeel {
         if backend.read_buffer(s.counts, p, 1)?[0] == 0 {
             return Ok(None);
         }
-        let depth = f32::from_bits(backend.read_buffer(s.fragments, 4 * p * s.layers as u64 + 3, 1)?[0]);
+        let depth = f32::from_bits(backend.read_buffer(s.fragments, SLOT_WORDS as u64 * p * s.layers as u64 + DEPTH_WORD as u64, 1)?[0]);
         Ok(Some(depth).filter(|d| d.is_finite() && *d > 0.0))
     }
 }

@@ -485,6 +485,8 @@ impl SplatContext {
             full_layer_slots: pixels * f.layer_count() as u64,
             dropped: c(stats::DROPPED),
             clamped: c(stats::CLAMPED),
+            alpha_clamped: c(stats::ALPHA_CLAMPED),
+            backed: c(stats::BACKED),
             sky: c(stats::SKY),
             sharp_pixels: c(stats::SHARP),
             hidden_sharp: c(stats::HIDDEN_SHARP),

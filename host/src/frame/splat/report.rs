@@ -13,6 +13,11 @@ pub struct SplatReport {
     pub full_layer_slots: u64,
     pub dropped: u32,
     pub clamped: u32,
+    /// Input alphas NaN or outside [0, 1], clamped (NaN to 0; `dof_shaders::slot::clamp_alpha`).
+    pub alpha_clamped: u32,
+    /// Pixels whose fragments end translucent, given black behind them (a pixel composites over
+    /// black).
+    pub backed: u32,
     /// Pixels without data, given a black background fragment.
     pub sky: u32,
     /// Pixels whose front is in focus (kept out of the lists), and in-focus fragments behind one.
@@ -87,6 +92,12 @@ impl SplatReport {
             self.clamped,
             self.sky
         );
+        if self.alpha_clamped > 0 || self.backed > 0 {
+            s += &format!(
+                "alpha: {} clamped (NaN or outside [0, 1]), {} pixels ending translucent given black behind\n",
+                self.alpha_clamped, self.backed
+            );
+        }
         s += &format!(
             "in focus: {} pixels keep their sharp front out of the lists, {} in-focus fragments behind one left out\n",
             self.sharp_pixels, self.hidden_sharp

@@ -268,7 +268,7 @@ fn cast_ray(
 /// `dof_shaders::resolve::resolve_pixel`, at most `max_layers` a pixel; the peel's host path and
 /// the device kernel's oracle. Errors when the sizes do not divide or `max_layers` is 0.
 pub fn resolve_subsamples(fine: &LayeredImage, side: u32, max_layers: u32, tolerance: f32) -> Result<LayeredImage> {
-    if side == 0 || fine.width % side != 0 || fine.height % side != 0 || side > 4 {
+    if side == 0 || !fine.width.is_multiple_of(side) || !fine.height.is_multiple_of(side) || side > 4 {
         return Err(Error::InvalidArgument(format!(
             "a {}x{} sub-sample image does not divide into {side}x{side} grids (side 1 to 4)",
             fine.width, fine.height

@@ -118,6 +118,15 @@ pub fn matte_front(a: &[f32; 4], z: f32) -> f32 {
     if z > a[2] && z < a[3] && is_finite(a[3]) { (a[3] - z) / (a[3] - a[2]) } else { matte_hidden(a, z) }
 }
 
+/// The matte of a translucent fragment: 1 in the layer whose depth range `(a[1], a[2]]` holds it,
+/// 0 elsewhere. The ramps of [`matte_front`] and [`matte_hidden`] overlap the neighbouring layers'
+/// (a fragment appears in two layers, the nearer hiding the other where it is opaque); a
+/// translucent fragment there would be counted twice, so it takes one layer, whole.
+#[inline]
+pub fn matte_translucent(a: &[f32; 4], z: f32) -> f32 {
+    if z > a[1] && z <= a[2] { 1.0 } else { 0.0 }
+}
+
 #[inline]
 fn load4<M: Mem>(m: &M, i: u32) -> [f32; 4] {
     [f32::from_bits(m.load(4 * i)), f32::from_bits(m.load(4 * i + 1)), f32::from_bits(m.load(4 * i + 2)), f32::from_bits(m.load(4 * i + 3))]
@@ -149,7 +158,13 @@ fn matte_pixel<M: Mem>(p: &LayeredParams, anchors: &[f32; 4], input: &M, counts:
         let s = if j < n { slot_at(j) } else { Slot::opaque([0.0; 3], f32::INFINITY) };
         if slot::is_valid(&s) {
             let (c, z, a) = (crate::radiance::clamp_color(s.color), s.depth, slot::clamp_alpha(s.alpha));
-            let w = if first { matte_front(anchors, z) } else { matte_hidden(anchors, z) };
+            let w = if a < 1.0 {
+                matte_translucent(anchors, z)
+            } else if first {
+                matte_front(anchors, z)
+            } else {
+                matte_hidden(anchors, z)
+            };
             first = false;
             // Coverage never exceeds 1; rounding must not make the remainder negative, which would
             // subtract a bright colour (the numerical contract: non-negative output). The colour is

@@ -14,8 +14,7 @@
 //!   front layer): `peel_edges` gives every pixel of a depth discontinuity its tag radius
 //!   ([`pair_radius`]), `peel_span` and `peel_mask` find the pixels within that radius of an edge
 //!   pixel (the disk `dx² + dy² <= r²`, split into a row pass and a column pass: [`disk_budget`],
-//!   [`covers`]), and `peel_mask` then keeps outside the buffer only the front slots up to the first opaque one
-//!   (`crate::resolve::kept_outside_buffer`) and resets every
+//!   [`covers`]), and `peel_mask` then keeps only the front slot outside the buffer and resets every
 //!   unused slot to black at `+inf` with alpha 0;
 //! - `peel_band` (one invocation per triangle) and `peel_band_end` (one invocation): the guard band
 //!   this frame's view would need (the largest CoC radius of geometry within [`MAX_GUARD_BAND`]
@@ -375,8 +374,8 @@ pub fn mask_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, span: M, widest: M
         mask.store(i, tagged as u32);
         let mut n = counts.load(i);
         if p.disocclusion != 0 && !tagged && n > 1 {
-            n = crate::resolve::kept_outside_buffer(n, |k| slot::load(&fragments, i * p.layers + k).alpha);
-            counts.store(i, n);
+            n = 1;
+            counts.store(i, 1);
         }
         while n < p.layers {
             slot::store(&mut fragments, i * p.layers + n, Slot { color: [0.0; 3], depth: f32::INFINITY, alpha: 0.0 });

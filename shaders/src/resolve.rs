@@ -171,22 +171,6 @@ where
     result
 }
 
-/// How many of a pixel's `count` front slots stay outside the disocclusion buffer: those up to
-/// and including the first opaque one (`alpha(k)` its alpha, clamped), at least one. One for
-/// opaque layers, as before alpha; a partly covering front (an area-integrated edge, a sub-pixel
-/// emitter, a translucent surface) keeps what it does not hide.
-#[inline]
-pub fn kept_outside_buffer<A: Fn(u32) -> f32>(count: u32, alpha: A) -> u32 {
-    let mut k = 0;
-    while k < count {
-        if clamp_alpha(alpha(k)) >= 1.0 {
-            return k + 1;
-        }
-        k += 1;
-    }
-    if count > 0 { count } else { 0 }
-}
-
 /// Side of the sub-sample grid for `n` sub-samples: `n` must be 1, 4, 9 or 16; 0 otherwise.
 #[inline]
 pub fn grid_side(n: u32) -> u32 {

@@ -80,7 +80,7 @@ pub fn context_frames(
     }
     let pixels = max.width as u64 * max.height as u64;
     let bufs = [
-        b.create_buffer(4 * pixels * max.layers as u64, "caller/fragments").unwrap(),
+        b.create_buffer(dof::methods::buffers::SLOT_WORDS as u64 * pixels * max.layers as u64, "caller/fragments").unwrap(),
         b.create_buffer(pixels, "caller/counts").unwrap(),
         b.create_buffer(3 * pixels, "caller/output").unwrap(),
     ];

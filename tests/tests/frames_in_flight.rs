@@ -9,7 +9,7 @@
 //!   without waiting for the one before: each frame's report, read after its fence, is its own.
 //! - A frame's report is refused once a later recording has taken its slot, and where no such
 //!   frame was recorded; a one-frame context keeps only the last.
-//! - Device bytes for 1, 2 and 3 frames in flight at 1920x1080 with 4 layers grow by the same
+//! - Device bytes for 1, 2 and 3 frames in flight at 1920x1080 with 4 layers (3 on Vulkan) grow by the same
 //!   step, under 1% of the context (printed for `docs/measurements.md`).
 
 use dof::backend::vulkan::ash::vk;
@@ -317,6 +317,8 @@ fn a_frame_in_flight_adds_only_its_report_buffers_at_1080p_on_the_cpu() {
 #[test]
 fn a_frame_in_flight_adds_only_its_report_buffers_at_1080p_on_vulkan() {
     let Some(mut vk) = vulkan() else { return };
-    bytes_per_frame_in_flight(&mut vk, Extent::new(1920, 1080, 4));
+    // 3 layers: 4 of 20-byte slots (166 MB) exceed lavapipe's 128 MiB storage-buffer range, and
+    // the single-layer contexts refuse an extent whose input could not be bound.
+    bytes_per_frame_in_flight(&mut vk, Extent::new(1920, 1080, 3));
     assert_clean(&mut vk);
 }

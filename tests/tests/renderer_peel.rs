@@ -273,10 +273,16 @@ fn assert_close(got: &(Vec<f32>, Vec<u32>, Vec<u32>), want: &(Vec<f32>, Vec<u32>
     assert_eq!(got.2, want.2, "{what}: the disocclusion buffer");
     for (p, &n) in want.1.iter().enumerate() {
         for k in 0..layers as usize {
-            let at = 4 * (p * layers as usize + k);
-            for c in 0..4 {
+            let words = dof::methods::buffers::SLOT_WORDS as usize;
+            let at = words * (p * layers as usize + k);
+            for c in 0..words {
                 let (g, e) = (got.0[at + c], want.0[at + c]);
-                let tol = if c < 3 { 2f32.powi(-11) * e.abs() } else { 1e-4 * e.abs() };
+                // Colour premultiplied by alpha, both rounded to RGBA16F here; depth; alpha.
+                let tol = match c {
+                    0..3 => 2f32.powi(-10) * e.abs(),
+                    3 => 1e-4 * e.abs(),
+                    _ => 2f32.powi(-11),
+                };
                 let same = g == e || (g - e).abs() <= tol;
                 assert!(same, "{what}: pixel {p} slot {k} (of {n}) word {c}: {g} against the mesh peel's {e}");
             }

@@ -135,7 +135,7 @@ pub trait DofContext {
     /// let desc = ContextDesc { frames_in_flight: N, ..ContextDesc::new(Extent::new(32, 32, 1), MethodOptions::default()) };
     /// let mut ctx = registry::create(&mut b, registry::method("gather")?, &desc)?;
     /// let image = dof::stress::noise_with_sky(32, 32, 1);
-    /// let [fragments, counts, out] = [4 * 1024, 1024, 3 * 1024].map(|w| b.create_buffer(w, "caller").unwrap());
+    /// let [fragments, counts, out] = [5 * 1024, 1024, 3 * 1024].map(|w| b.create_buffer(w, "caller").unwrap());
     /// b.write_buffer(fragments, 0, &dof::methods::buffers::slot_words(&image))?;
     /// b.write_buffer(counts, 0, &image.counts)?;
     /// let mut radii = Vec::new();

@@ -21,7 +21,7 @@
 
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{covers, disk_budget, pair_radius};
-use dof_shaders::resolve::{Sample, grid_side, kept_outside_buffer, resolve_pixel, subsample_offset};
+use dof_shaders::resolve::{Sample, grid_side, resolve_pixel, subsample_offset};
 use rayon::prelude::*;
 
 use super::analytic::{Hit, Scene};
@@ -163,12 +163,9 @@ pub fn apply_disocclusion(
 
     let without_mask = full.crop(margin).stats();
     let mut masked = full.clone();
-    for (p, &keep) in mask.iter().enumerate() {
+    for (count, &keep) in masked.counts.iter_mut().zip(&mask) {
         if !keep {
-            // Outside the buffer the pixel keeps what its pinhole view sees (the device peel's
-            // rule): the front fragments up to the first opaque one.
-            let frags = &masked.fragments[p * l..];
-            masked.counts[p] = kept_outside_buffer(masked.counts[p], |k| frags[k as usize].alpha);
+            *count = (*count).min(1);
         }
     }
     // Unused slots are reset so that equal images compare equal whatever was dropped.

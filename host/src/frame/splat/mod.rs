@@ -567,6 +567,7 @@ impl DofContext for SplatContext {
             ("overflow_tiles", r.overflow_tiles as f64),
             ("list_pool", r.list_capacity as f64),
             ("clamped", r.clamped as f64),
+            ("alpha_clamped", r.alpha_clamped as f64),
         ];
         Ok(ContextReport {
             summary: r.summary(),

@@ -25,6 +25,7 @@ pub mod radiance;
 pub mod raster;
 pub mod raytrace;
 pub mod renderer_peel;
+pub mod resolve;
 pub mod ring_gather;
 pub mod scan;
 pub mod slot;
@@ -51,6 +52,7 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .chain(raster::KERNELS.iter())
         .chain(peel::KERNELS.iter())
         .chain(renderer_peel::KERNELS.iter())
+        .chain(resolve::KERNELS.iter())
         .chain(frame_io::KERNELS.iter())
         .chain(radiance::KERNELS.iter())
         .chain(tonemap::KERNELS.iter())

@@ -8,8 +8,16 @@ use dof::eval::{EvalOptions, evaluate};
 #[test]
 fn quick_evaluation_covers_every_method_and_setting() {
     let mut backends: Vec<Box<dyn Backend>> = vec![Box::new(CpuBackend::new())];
-    let options =
-        EvalOptions { scenes: vec!["simple".into()], methods: vec![], quick: true, runs: 1, progress: false, coc_sweep: vec![4.0, 16.0] };
+    let options = EvalOptions {
+        scenes: vec!["simple".into()],
+        methods: vec![],
+        quick: true,
+        runs: 1,
+        progress: false,
+        coc_sweep: vec![4.0, 16.0],
+        subsamples: 1,
+        size: None,
+    };
     let report = evaluate(&options, &mut backends).unwrap();
     for method in evaluated_methods() {
         for setting in method.settings(true) {
@@ -69,6 +77,8 @@ fn unknown_methods_are_named() {
         runs: 1,
         progress: false,
         coc_sweep: vec![],
+        subsamples: 1,
+        size: None,
     };
     let err = evaluate(&options, &mut backends).err().unwrap();
     assert!(err.to_string().contains("gather"), "{err}");
@@ -87,6 +97,8 @@ fn a_gltf_scene_is_measured_against_its_accumulation_buffer() {
         runs: 1,
         progress: false,
         coc_sweep: vec![4.0],
+        subsamples: 1,
+        size: None,
     };
     let report = evaluate(&options, &mut backends).unwrap();
     std::fs::remove_file(&path).unwrap();

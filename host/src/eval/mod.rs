@@ -42,6 +42,10 @@ pub struct EvalOptions {
     /// Largest CoC radii (px) of the max-CoC sweep on the first scene (at 320x180, 160x90 with
     /// `quick`; 3 timed runs a point); empty for none.
     pub coc_sweep: Vec<f64>,
+    /// Sub-samples a pixel of the multi-layer images (`LayerOptions::subsamples`).
+    pub subsamples: u32,
+    /// Image size of the built-in scenes (`None`: the scene's own, 160x90 with `quick`).
+    pub size: Option<(u32, u32)>,
 }
 
 /// The default sweep targets: largest CoC radius present, px.
@@ -190,11 +194,14 @@ fn is_gltf(scene: &str) -> bool {
 /// A built-in scene: the exact ray-cast layers and the thin-lens reference.
 fn prepare_builtin(name: &str, options: &EvalOptions) -> Result<Prepared> {
     let mut scene = builtin(name)?;
-    if options.quick {
+    if let Some((w, h)) = options.size {
+        scene = scene.with_size(w, h);
+    } else if options.quick {
         scene = scene.with_size(160, 90);
     }
     let lens = scene.thin_lens()?;
-    let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &LayerOptions::default())?;
+    let layer_options = LayerOptions { subsamples: options.subsamples, ..LayerOptions::default() };
+    let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &layer_options)?;
     let exact = if options.quick {
         reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: 64, progress: options.progress, ..Default::default() })?
     } else {
@@ -220,7 +227,8 @@ fn prepare_gltf(path: &str, options: &EvalOptions, backend: &mut dyn Backend) ->
     let (camera, settings, near) = mesh.default_view(if options.quick { 160 } else { 640 }, None)?;
     let lens = settings.thin_lens(&camera)?;
     let raster = mesh.raster();
-    let ml = peel_layers(backend, &raster, &camera, &lens, near, &LayerOptions::default())?.image;
+    let layer_options = LayerOptions { subsamples: options.subsamples, ..LayerOptions::default() };
+    let ml = peel_layers(backend, &raster, &camera, &lens, near, &layer_options)?.image;
     let samples = if options.quick { 64 } else { 256 };
     let acc = accumulate(
         backend,

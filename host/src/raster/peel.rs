@@ -23,12 +23,13 @@ use crate::backend::{Backend, BufferId, CommandTime, RunKernel, groups_for, push
 use crate::error::{Error, Result};
 use crate::layers::{Fragment, LayeredImage};
 use crate::scene::guard_band::auto_margin_mesh;
-use crate::scene::{Camera, CameraFrame, LayerOptions, SceneLayers, apply_disocclusion};
+use crate::scene::{Camera, CameraFrame, LayerOptions, SceneLayers, apply_disocclusion, check_subsamples, resolve_subsamples};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{is_surface, slot_kept};
 use dof_shaders::raster::draw::{RASTER_DRAW, VIS_WORDS};
 use dof_shaders::raster::project::RasterParams;
 use dof_shaders::raster::shade::{LAYER, LAYER_WORDS, RASTER_SHADE, ShadeParams, raster_shade};
+use dof_shaders::resolve::grid_side;
 
 /// The peeled image and what it cost.
 pub struct Peeled {
@@ -171,7 +172,13 @@ pub fn peel_layers(
 ) -> Result<Peeled> {
     check_view(camera, lens, near)?;
     let margin = options.guard_band.resolve(|| auto_margin_mesh(scene.triangle_positions(), camera, lens, near))?;
-    let frame = camera.overscan(margin).frame()?;
+    check_subsamples(options.subsamples)?;
+    // Area-integrated layers: peeled at sub-sample resolution (a `side`-times finer pixel grid
+    // whose pixel centres are the stratified sub-samples), then resolved per pixel.
+    let side = grid_side(options.subsamples);
+    let coarse = camera.overscan(margin).frame()?;
+    let fine_camera = super::peel_context::sub_sample_camera(camera, side);
+    let frame = fine_camera.overscan(margin * side).frame()?;
     if options.max_layers == 0 || !(options.edge_depth_ratio >= 0.0) {
         return Err(Error::InvalidArgument(format!(
             "need at least one layer and a non-negative edge ratio, got {} and {}",
@@ -218,5 +225,6 @@ pub fn peel_layers(
     });
     mesh.destroy(backend);
     let (passes, times) = result?;
-    Ok(Peeled { image: apply_disocclusion(full, &frame, lens, options, margin), passes, times })
+    let full = if side > 1 { resolve_subsamples(&full, side, options.max_layers, options.edge_depth_ratio)? } else { full };
+    Ok(Peeled { image: apply_disocclusion(full, &coarse, lens, options, margin), passes, times })
 }

@@ -21,12 +21,13 @@ use crate::frame::io::{Owned, ready};
 use crate::frame::peel::{KERNELS, PeelReport, PeelSlots};
 use crate::frame::{Frame, FrameInput, FrameOutput};
 use crate::scene::guard_band::{auto_margin_mesh, reach_planes};
-use crate::scene::{Camera, GuardBand, LayerOptions};
+use crate::scene::{Camera, GuardBand, LayerOptions, check_subsamples};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::BandParams;
 use dof_shaders::raster::draw::{RASTER_DRAW, RASTER_FALLBACK, RASTER_SETUP, VIS_WORDS};
 use dof_shaders::raster::mesh::Light;
 use dof_shaders::raster::shade::{LAYER, RASTER_SHADE, ShadeParams};
+use dof_shaders::resolve::grid_side;
 
 /// What a mesh peel context is made for.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -41,6 +42,11 @@ pub struct MeshPeelDesc {
     pub edge_depth_ratio: f32,
     /// Keep more than the front slot only inside the disocclusion buffer.
     pub disocclusion: bool,
+    /// Sub-samples a pixel (1, 4, 9 or 16): above 1 the passes peel a `side`-times finer grid
+    /// (its pixel centres the stratified sub-samples) into slots of their own, which the
+    /// `resolve` kernel turns into the frame's area-integrated slots before the disocclusion
+    /// buffer (`LayerOptions::subsamples`).
+    pub subsamples: u32,
 }
 
 impl MeshPeelDesc {
@@ -53,6 +59,7 @@ impl MeshPeelDesc {
             guard_band: options.guard_band,
             edge_depth_ratio: options.edge_depth_ratio,
             disocclusion: options.disocclusion,
+            subsamples: options.subsamples,
         }
     }
 }
@@ -61,7 +68,12 @@ impl MeshPeelDesc {
 pub struct MeshPeelContext {
     desc: MeshPeelDesc,
     mesh: DeviceMesh,
+    /// The frame's slots (what the methods read).
     slots: PeelSlots,
+    /// The slots the passes peel into: `slots` itself, or those of the sub-sample grid.
+    fine: PeelSlots,
+    /// Side of the sub-sample grid (1: point-sampled).
+    side: u32,
     pass: Pass,
     light: Light,
     margin: u32,
@@ -84,19 +96,25 @@ impl MeshPeelContext {
             )));
         }
         scene.validate()?;
+        check_subsamples(desc.subsamples)?;
+        let side = grid_side(desc.subsamples);
         let margin = desc.guard_band.resolve(|| auto_margin_mesh(scene.triangle_positions(), camera, lens, desc.near))?;
         let frame = camera.overscan(margin).frame()?;
         frame.check_size("multi-layer image", desc.max_layers as u64)?;
         let (w, h) = (frame.width, frame.height);
-        let pixels = w as u64 * h as u64;
+        let fine_frame = sub_sample_camera(camera, side).overscan(margin * side).frame()?;
+        fine_frame.check_size("sub-sample multi-layer image", desc.max_layers as u64)?;
+        let (fw, fh) = (fine_frame.width, fine_frame.height);
+        let pixels = fw as u64 * fh as u64;
         let mut owned = Owned::default();
         let made = (|| {
             let slots = PeelSlots::new(backend, &mut owned, w, h, desc.max_layers)?;
+            let fine = if side > 1 { PeelSlots::new(backend, &mut owned, fw, fh, desc.max_layers)? } else { slots };
             let bounds = owned.make(backend, 4 * scene.triangles.len() as u64, "peel/bounds")?;
             let vis = owned.make(backend, VIS_WORDS as u64 * pixels, "peel/vis")?;
-            Ok((slots, Pass { args: slots.args, reach: slots.reach, bounds, vis }))
+            Ok((slots, fine, Pass { args: fine.args, reach: fine.reach, bounds, vis }))
         })();
-        let ((slots, pass), owned) = owned.or_free(backend, made)?;
+        let ((slots, fine, pass), owned) = owned.or_free(backend, made)?;
         let mesh = match DeviceMesh::upload(backend, scene) {
             Ok(mesh) => mesh,
             Err(e) => {
@@ -111,6 +129,8 @@ impl MeshPeelContext {
             desc: *desc,
             mesh,
             slots,
+            fine,
+            side,
             pass,
             light: scene.light(),
             margin,
@@ -118,7 +138,7 @@ impl MeshPeelContext {
             target_bytes,
             owned,
         };
-        if let Err(e) = backend.reserve_draw_target(&RASTER_DRAW, [w, h]) {
+        if let Err(e) = backend.reserve_draw_target(&RASTER_DRAW, [fw, fh]) {
             ctx.destroy(backend);
             return Err(e);
         }
@@ -183,14 +203,17 @@ impl MeshPeelContext {
         if [frame.width, frame.height] != self.size() {
             return Err(Error::InvalidArgument("the camera's guard band does not match the context's".into()));
         }
-        let (mesh, slots, pass) = (&self.mesh, &self.slots, &self.pass);
+        // The passes draw the sub-sample grid (the frame itself when point-sampled).
+        let coarse = frame;
+        let frame = sub_sample_camera(camera, self.side).overscan(self.margin * self.side).frame()?;
+        let (mesh, slots, pass) = (&self.mesh, &self.fine, &self.pass);
         // The band this view needs (the image keeps the one it was made with), checked before
         // anything is recorded.
         let band = BandParams {
             planes: reach_planes(camera, self.desc.near)?,
-            eye: frame.eye.to_array(),
+            eye: coarse.eye.to_array(),
             triangles: mesh.triangles,
-            forward: frame.forward.to_array(),
+            forward: coarse.forward.to_array(),
             margin: self.margin,
             lens: *lens,
         };
@@ -214,18 +237,27 @@ impl MeshPeelContext {
             slots.append(backend, k)?;
         }
         slots.plan(backend, self.desc.max_layers, vertices)?;
-        slots.finish(backend, *lens, self.desc.edge_depth_ratio, self.desc.disocclusion)?;
+        if self.side > 1 {
+            self.slots.resolve_from(backend, slots, self.side, self.desc.edge_depth_ratio)?;
+        }
+        self.slots.finish(backend, *lens, self.desc.edge_depth_ratio, self.desc.disocclusion)?;
         slots.band(backend, mesh.buffers[0], mesh.buffers[1], &band)
     }
 
     /// What the last frame's passes did (reads the device: once the frame completed).
     pub fn peel_report(&self, backend: &mut dyn Backend) -> Result<PeelReport> {
         self.owned.check(backend)?;
-        self.slots.report(backend)
+        self.fine.report(backend)
     }
 
     /// [`Self::peel_report`] in the frame API's report shape.
     pub fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
         Ok(self.peel_report(backend)?.context_report(self.margin))
     }
+}
+
+/// `camera` with a `side`-times finer pixel grid over the same view: its pixel centres are the
+/// stratified sub-samples of `camera`'s pixels (`dof_shaders::resolve::subsample_offset`).
+pub(crate) fn sub_sample_camera(camera: &Camera, side: u32) -> Camera {
+    Camera { width: camera.width.saturating_mul(side), height: camera.height.saturating_mul(side), ..*camera }
 }

@@ -53,5 +53,7 @@ pub use lens::{Aperture, Focus, LensSettings, validate_artist_lens};
 pub use mesh::{LoadReport, MeshCamera, MeshScene};
 #[cfg(feature = "eval")]
 pub use mitsuba_export::{MitsubaExport, MitsubaOptions, MitsubaScene, export_metadata, export_mitsuba};
-pub use raycast::{LayerOptions, SceneLayers, apply_disocclusion, raycast_layers};
+pub use raycast::{
+    DEFAULT_SUBSAMPLES, LayerOptions, SceneLayers, apply_disocclusion, check_subsamples, raycast_layers, resolve_subsamples,
+};
 pub use reference::{AutoOptions, MAX_SPP, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};

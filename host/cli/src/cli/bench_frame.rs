@@ -75,6 +75,10 @@ pub struct FrameArgs {
     /// Print one JSON object instead of the table.
     #[arg(long)]
     json: bool,
+    /// Sub-samples a pixel of the multi-layer input (1, 4, 9 or 16; with --orbit the device peel
+    /// runs at sub-sample resolution and resolves on the device).
+    #[arg(long, visible_alias = "area-samples", default_value_t = scene::DEFAULT_SUBSAMPLES)]
+    subsamples: u32,
 }
 
 /// The largest frame edge `bench frame` takes (that of 4K and beyond; the contexts check the
@@ -96,6 +100,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         }
     }
     check_view_flags(args)?;
+    scene::check_subsamples(args.subsamples).map_err(|e| anyhow::anyhow!("--subsamples: {e}"))?;
     let method = dof::frame::registry::method(&args.method)?;
     let options = MethodOptions { splat: SplatOptions { merge: args.merge, ..Default::default() }, ..Default::default() };
     let view = SceneView::new(args)?;
@@ -103,11 +108,11 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     let b = backend.as_mut();
     let (measured, size, layers) = match args.orbit {
         Some(deg) => {
-            let m = orbiting(b, method, &view, &options, [args.warmup, args.frames], deg, args.out.as_deref())?;
+            let m = orbiting(b, method, &view, &options, [args.warmup, args.frames], deg, args.out.as_deref(), args.subsamples)?;
             (m, [view.camera.width, view.camera.height], LayerOptions::default().max_layers)
         }
         None => {
-            let layered = view.layers(b)?;
+            let layered = view.layers(b, args.subsamples)?;
             let image = match method.reads {
                 Reads::AllLayers => layered,
                 Reads::FrontLayer => layered.front_layer(),
@@ -522,8 +527,8 @@ impl SceneView {
 
     /// The multi-layer input made once (no guard band): ray cast for a built-in scene, peeled on
     /// the host for a glTF one.
-    fn layers(&self, b: &mut dyn Backend) -> anyhow::Result<LayeredImage> {
-        let options = LayerOptions { guard_band: GuardBand::Off, ..Default::default() };
+    fn layers(&self, b: &mut dyn Backend, subsamples: u32) -> anyhow::Result<LayeredImage> {
+        let options = LayerOptions { guard_band: GuardBand::Off, subsamples, ..Default::default() };
         Ok(match &self.analytic {
             Some(analytic) => raycast_layers(analytic, &self.camera, &self.lens, &options)?.layers,
             None => peel_layers(b, &self.mesh.raster(), &self.camera, &self.lens, self.near, &options)?.image.layers,
@@ -542,6 +547,7 @@ fn orbit(camera: &Camera, focus: f32, deg: f32) -> Camera {
 
 /// The device peel and the method's context, made once; then per frame the camera turned, the
 /// peel and the depth of field recorded, and one submission.
+#[allow(clippy::too_many_arguments)]
 fn orbiting(
     b: &mut dyn Backend,
     method: &MethodInfo,
@@ -550,8 +556,9 @@ fn orbiting(
     [warmup, frames]: [u32; 2],
     deg: f32,
     out: Option<&Path>,
+    subsamples: u32,
 ) -> anyhow::Result<Measured> {
-    let layer_options = LayerOptions::default();
+    let layer_options = LayerOptions { subsamples, ..LayerOptions::default() };
     let desc = MeshPeelDesc::new(&layer_options, view.near);
     let lens = view.lens;
     let mut peel = MeshPeelContext::new(b, &view.mesh.raster(), &view.camera, &lens, &desc)?;

@@ -45,6 +45,16 @@ pub struct EvalArgs {
     /// change against the reference's) in temporal.json, temporal.md and plots.
     #[arg(long)]
     temporal: bool,
+    /// Sub-samples a pixel of the multi-layer images the methods run on: 1 (point-sampled), 4, 9
+    /// or 16 (area-integrated; see docs/scenes-and-references.md).
+    #[arg(long, visible_alias = "area-samples", default_value_t = dof::scene::DEFAULT_SUBSAMPLES)]
+    subsamples: u32,
+    /// Image size of the built-in scenes (both or neither; default the scene's own, 160x90 with
+    /// --quick).
+    #[arg(long, requires = "height")]
+    width: Option<u32>,
+    #[arg(long, requires = "width")]
+    height: Option<u32>,
     #[arg(long, default_value = "out/eval")]
     out: PathBuf,
 }
@@ -83,6 +93,12 @@ fn check_before_work(args: &EvalArgs) -> anyhow::Result<()> {
     }
     if !args.scaling && args.scaling_budget_s != dof::eval::scaling::DEFAULT_BUDGET_S {
         anyhow::bail!("--scaling-budget-s applies to the scaling sweep only; add --scaling");
+    }
+    dof::scene::check_subsamples(args.subsamples).map_err(|e| anyhow::anyhow!("--subsamples: {e}"))?;
+    for (value, flag) in [(args.width, "--width"), (args.height, "--height")] {
+        if let Some(v) = value.filter(|&v| v == 0 || v > 8192) {
+            anyhow::bail!("{flag} must lie between 1 and 8192 px, got {v}");
+        }
     }
     check_no_duplicates("--scenes", &args.scenes)?;
     check_no_duplicates("--methods", &args.methods)?;
@@ -124,6 +140,8 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         runs: args.runs.unwrap_or(if args.quick { 3 } else { 5 }),
         progress: true,
         coc_sweep,
+        subsamples: args.subsamples,
+        size: args.width.zip(args.height),
     };
     if !args.no_plots {
         // Before the long run, so a missing font is reported at once.

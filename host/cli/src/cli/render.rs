@@ -144,6 +144,11 @@ pub struct RenderArgs {
     /// Fragments per pixel in the multi-layer image (built-in and glTF scenes; 1 to 64).
     #[arg(long, default_value_t = DEFAULT_LAYERS)]
     layers: u32,
+    /// Sub-samples a pixel of the multi-layer image (built-in and glTF scenes): 1 (point-sampled:
+    /// the pixel centre's ray or peel), 4, 9 or 16 (a stratified grid, resolved by depth clusters
+    /// into fragments of partial coverage; see docs/scenes-and-references.md).
+    #[arg(long, visible_alias = "area-samples", default_value_t = scene::DEFAULT_SUBSAMPLES)]
+    subsamples: u32,
     /// Output EXR; a PNG preview is written beside it. Default `out/<scene>-<method>.exr`.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -304,6 +309,7 @@ fn check_ranges(args: &RenderArgs) -> anyhow::Result<()> {
     if args.layers == 0 || args.layers > MAX_LAYERS {
         bail!("--layers (fragments per pixel) must lie between 1 and {MAX_LAYERS}, got {}", args.layers);
     }
+    scene::check_subsamples(args.subsamples).map_err(|e| anyhow::anyhow!("--subsamples: {e}"))?;
     let positive = [
         (args.focus, "--focus (the focus distance)"),
         (args.f_number, "--f-number"),
@@ -648,7 +654,7 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         let shots = sequence::shots(args, args.frames.unwrap_or(1), &camera, &settings, &lens)?;
         return sequence::render_sequence(args, out, sequence::Source::Builtin(&builtin.scene), &shots);
     }
-    let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, ..Default::default() };
+    let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, subsamples: args.subsamples, ..Default::default() };
     let layered = raycast_layers(&builtin.scene, &camera, &lens, &options)?;
     match args.method {
         Method::Pinhole => {
@@ -761,7 +767,7 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     }
     let mut b = backend(args.backend)?;
     let raster = mesh.raster();
-    let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, ..Default::default() };
+    let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, subsamples: args.subsamples, ..Default::default() };
     let peeled = peel_layers(b.as_mut(), &raster, &camera, &lens, near, &options)?;
     let ms: f64 = peeled.times.iter().map(|t| t.ms).sum();
     println!("depth peeling on {}: {} passes, {ms:.2} ms", b.device_name(), peeled.passes);

@@ -21,11 +21,24 @@ pub struct LayerOptions {
     /// The margin rendered beyond the frame (default [`GuardBand::Auto`]; the scenes resolve it,
     /// in the guard band module of the crate `dof`). A renderer's own peel renders what its attachments hold.
     pub guard_band: GuardBand,
+    /// Sub-samples a pixel (1, 4, 9 or 16, a stratified grid): above 1 each sub-sample's ray (or
+    /// peel at sub-sample resolution) gives its own fragment list and `dof_shaders::resolve`
+    /// groups them by depth into fragments of partial coverage (area-integrated layers). 1: the
+    /// pixel centre's ray alone (point-sampled layers; the default here, while the command line
+    /// takes `dof::scene::DEFAULT_SUBSAMPLES`). A renderer's own peel is point-sampled.
+    pub subsamples: u32,
 }
 
 impl Default for LayerOptions {
     fn default() -> Self {
-        LayerOptions { max_layers: 4, umbra_threshold: true, disocclusion: true, edge_depth_ratio: 0.05, guard_band: GuardBand::Auto }
+        LayerOptions {
+            max_layers: 4,
+            umbra_threshold: true,
+            disocclusion: true,
+            edge_depth_ratio: 0.05,
+            guard_band: GuardBand::Auto,
+            subsamples: 1,
+        }
     }
 }
 

@@ -23,10 +23,12 @@ use dof_shaders::peel::{
     SHADE_ARGS, SLOT_WORDS, peel_append, peel_band, peel_band_end, peel_edges, peel_mask, peel_plan, peel_span,
 };
 use dof_shaders::raster::shade::{LAYER_WORDS, RASTER_SHADE};
+use dof_shaders::resolve::{RESOLVE, ResolveParams, resolve};
 
-/// The kernels a peel records (a drawer prepares them with its own).
-pub const KERNELS: [&dof_shaders::KernelDesc; 7] =
-    [&PEEL_PLAN, &PEEL_APPEND, &PEEL_EDGES, &PEEL_SPAN, &PEEL_MASK, &PEEL_BAND, &PEEL_BAND_END];
+/// The kernels a peel records (a drawer prepares them with its own; the resolve only with
+/// sub-samples).
+pub const KERNELS: [&dof_shaders::KernelDesc; 8] =
+    [&PEEL_PLAN, &PEEL_APPEND, &PEEL_EDGES, &PEEL_SPAN, &PEEL_MASK, &PEEL_BAND, &PEEL_BAND_END, &RESOLVE];
 
 /// The peel's buffers on the device for a `width` x `height` image with `layers` slots a pixel
 /// (owned by the context that made them).
@@ -187,6 +189,29 @@ impl PeelSlots {
         let mask =
             peel_mask::Bindings { span: self.span, widest: self.widest, mask: self.mask, fragments: self.fragments, counts: self.counts };
         backend.run(mask, groups, &params, "peel/mask")
+    }
+
+    /// Resolves the slots of `fine`, a peel at sub-sample resolution (`side` times wider and higher
+    /// than these slots; see `dof_shaders::resolve`), into these slots: area-integrated fragments,
+    /// clusters `tolerance` apart in relative depth. Run [`Self::finish`] on these slots after it.
+    pub fn resolve_from(&self, backend: &mut dyn Backend, fine: &PeelSlots, side: u32, tolerance: f32) -> Result<()> {
+        if side == 0 || fine.width != self.width * side || fine.height != self.height * side {
+            return Err(Error::InvalidArgument(format!(
+                "a {}x{} sub-sample peel does not resolve into {}x{} slots with {side}x{side} sub-samples",
+                fine.width, fine.height, self.width, self.height
+            )));
+        }
+        let params = ResolveParams {
+            width: self.width,
+            height: self.height,
+            side,
+            fine_layers: fine.layers,
+            layers: self.layers,
+            tolerance,
+            _pad: [0; 2],
+        };
+        let bound = resolve::Bindings { fine: fine.fragments, fine_counts: fine.counts, fragments: self.fragments, counts: self.counts };
+        backend.run(bound, groups_for(&RESOLVE, self.pixels()), &params, "peel/resolve")
     }
 
     /// Records the guard band the view of `params` needs, from `triangles` triangles of a mesh

@@ -3,9 +3,9 @@
 //! - `splat_tile_count` (one workgroup per tile): fragments per tile, each cell's offset inside its
 //!   tile (a scan of the partially filled cells: the index that lets every thread take fragments of
 //!   any pixel evenly), and the largest fragment radius in the tile.
-//! - `splat_place` (one invocation per cell): the fragments into one dense array, tile by tile,
-//!   made again from the input (unmerged) or by walking the cell's merged list again: the
-//!   fragments are stored once, in place.
+//! - `splat_place` and `splat_place_merged` (one invocation per cell): the fragments into one
+//!   dense array, tile by tile, made again from the input (unmerged) or by walking the cell's
+//!   merged list again: the fragments are stored once, in place.
 //! - `splat_alloc` (one invocation per tile): whether any tile within `rings` has fragments whose
 //!   largest radius can reach this tile (the lists hold blurred fragments only); a tile none reaches
 //!   is copied through.
@@ -147,32 +147,43 @@ pub fn tile_count_pass<G: Group, M: Mem>(
     });
 }
 
-/// One invocation per cell: its fragments into the dense array at the tile's offset plus the
-/// cell's (tile by tile, cells row-major in the tile, slot order). Unmerged (`cell` 1) they are
-/// the pixel's kept input slots ([`pack::next_kept`]), merged the cell's merged list
-/// ([`merge::cell_fragments`]): the slot-per-pixel cells are never stored.
+/// The dense index of cell `c`'s first fragment: its tile's offset plus the cell's in the tile.
+#[inline]
+fn cell_start<M: Mem>(p: &SplatParams, cells: &M, tile_base: &M, c: u32) -> u32 {
+    let (cx, cy) = (c % p.cells_x, c / p.cells_x);
+    let per_tile = p.tile / p.cell;
+    tile_base.load((cy / per_tile) * p.tiles_x + cx / per_tile) + cells.load(p.cells_x * p.cells_y + c)
+}
+
+/// Unmerged, one invocation per pixel: its kept input slots ([`pack::next_kept`]) into the dense
+/// array at their place (tile by tile, pixels row-major in the tile, slot order), so the
+/// slot-per-pixel cells are never stored.
 pub fn place_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, cells: M, tile_base: M, mut dense: M, st: M) {
     let p = &planned(p, &st);
-    let n_cells = p.cells_x * p.cells_y;
-    let per_tile = p.tile / p.cell;
-    for_each_item(g, n_cells, |c| {
-        let (cx, cy) = (c % p.cells_x, c / p.cells_x);
-        let mut at = tile_base.load((cy / per_tile) * p.tiles_x + cx / per_tile) + cells.load(n_cells + c);
-        if p.cell == 1 {
-            let (n, slots) = pack::pixel_slots(&counts, p, c);
-            let mut k = pack::next_kept(&layers, p, c, n, slots, 0);
-            while k < slots {
-                let (color, z) = pack::read_slot(&layers, p, c, n, k);
-                pack::slot_fragment(p, c, color, z).store(&mut dense, at);
-                at += 1;
-                k = pack::next_kept(&layers, p, c, n, slots, k + 1);
-            }
-        } else {
-            merge::cell_fragments(&layers, &counts, p, c, |f| {
-                f.store(&mut dense, at);
-                at += 1;
-            });
+    for_each_item(g, p.width * p.height, |i| {
+        let mut at = cell_start(p, &cells, &tile_base, i);
+        let (n, slots) = pack::pixel_slots(&counts, p, i);
+        let mut k = pack::next_kept(&layers, p, i, n, slots, 0);
+        while k < slots {
+            let (color, z) = pack::read_slot(&layers, p, i, n, k);
+            pack::slot_fragment(p, i, color, z).store(&mut dense, at);
+            at += 1;
+            k = pack::next_kept(&layers, p, i, n, slots, k + 1);
         }
+    });
+}
+
+/// Merged, one invocation per cell: its merged list ([`merge::cell_fragments`], walked again as
+/// `splat_merge` counted it) into the dense array at its place. A kernel of its own, so that the
+/// unmerged one stays small.
+pub fn place_merged_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, cells: M, tile_base: M, mut dense: M, st: M) {
+    let p = &planned(p, &st);
+    for_each_item(g, p.cells_x * p.cells_y, |c| {
+        let mut at = cell_start(p, &cells, &tile_base, c);
+        merge::cell_fragments(&layers, &counts, p, c, |f| {
+            f.store(&mut dense, at);
+            at += 1;
+        });
     });
 }
 
@@ -367,8 +378,13 @@ kernel!(
         { cells, tile_count, tile_base, tile_radius, st } => tile_count_pass
 );
 kernel!(
-    /// Fragments into one dense array, tile by tile, made from the input.
+    /// Unmerged: the fragments into one dense array, tile by tile, made from the input.
     PLACE = splat_place [256] (SplatParams) { layers, counts, cells, tile_base, dense, st } reads { layers, counts, cells, tile_base, st } => place_pass
+);
+kernel!(
+    /// Merged: each cell's merged fragments into one dense array, tile by tile.
+    PLACE_MERGED = splat_place_merged [256] (SplatParams) { layers, counts, cells, tile_base, dense, st }
+        reads { layers, counts, cells, tile_base, st } => place_merged_pass
 );
 kernel!(
     /// Which tiles no list fragment reaches (copied through).

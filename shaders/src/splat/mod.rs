@@ -148,13 +148,14 @@ pub mod stats {
 }
 
 #[cfg(not(target_arch = "spirv"))]
-pub const KERNELS: [&crate::KernelDesc; 9] = [
+pub const KERNELS: [&crate::KernelDesc; 10] = [
     &plan::PLAN_REDUCE,
     &plan::PLAN_FINISH,
     &pack::PACK,
     &merge::MERGE,
     &bin::TILE_COUNT,
     &bin::PLACE,
+    &bin::PLACE_MERGED,
     &bin::ALLOC,
     &bin::BIN,
     &accumulate::ACCUMULATE,

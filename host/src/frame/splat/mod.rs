@@ -14,7 +14,7 @@ use crate::ops::scan::ScanScratch;
 use crate::ops::sort::SegmentedSort;
 use dof_shaders::KernelDesc;
 use dof_shaders::splat::accumulate::splat_accumulate;
-use dof_shaders::splat::bin::{ALLOC, PLACE, splat_alloc, splat_bin, splat_place, splat_tile_count};
+use dof_shaders::splat::bin::{ALLOC, PLACE, PLACE_MERGED, splat_alloc, splat_bin, splat_place, splat_place_merged, splat_tile_count};
 use dof_shaders::splat::fragment::MAX_EDGE;
 use dof_shaders::splat::merge::{MERGE, splat_merge};
 use dof_shaders::splat::pack::{PACK, splat_pack};
@@ -390,8 +390,14 @@ impl SplatContext {
         let count = splat_tile_count::Bindings { cells, tile_count, tile_base, tile_radius, st };
         backend.run(count, tile_grid, &fin, "splat/tile-count")?;
         self.scan.record(backend, b.tile_base, 0, tiles)?;
-        let place = splat_place::Bindings { layers: fragments, counts, cells, tile_base, dense: b.dense, st };
-        backend.run(place, groups_for(&PLACE, cell_groups), &fin, "splat/place")?;
+        let dense = b.dense;
+        if last == 0 {
+            let place = splat_place::Bindings { layers: fragments, counts, cells, tile_base, dense, st };
+            backend.run(place, groups_for(&PLACE, cell_groups), &fin, "splat/place")?;
+        } else {
+            let place = splat_place_merged::Bindings { layers: fragments, counts, cells, tile_base, dense, st };
+            backend.run(place, groups_for(&PLACE_MERGED, cell_groups), &fin, "splat/place")?;
+        }
         let alloc = splat_alloc::Bindings { tile_count, tile_radius, copy: b.copy, st };
         backend.run(alloc, groups_for(&ALLOC, tiles), &fin, "splat/alloc")?;
         let (dense, copy, keys, values, segments) = (b.dense, b.copy, b.keys, b.values, b.segments);

@@ -389,6 +389,10 @@ impl SplatContext {
         let (tile_count, tile_base, tile_radius, st) = (b.tile_count, b.tile_base, b.tile_radius, b.stats);
         let count = splat_tile_count::Bindings { cells, tile_count, tile_base, tile_radius, st };
         backend.run(count, tile_grid, &fin, "splat/tile-count")?;
+        // The place pass reads the statistics this writes: recorded beside the scan (which it does
+        // not touch), the scan's barriers order it, with no barrier of its own.
+        let alloc = splat_alloc::Bindings { tile_count, tile_radius, copy: b.copy, st };
+        backend.run(alloc, groups_for(&ALLOC, tiles), &fin, "splat/alloc")?;
         self.scan.record(backend, b.tile_base, 0, tiles)?;
         let dense = b.dense;
         if last == 0 {
@@ -398,9 +402,7 @@ impl SplatContext {
             let place = splat_place_merged::Bindings { layers: fragments, counts, cells, tile_base, dense, st };
             backend.run(place, groups_for(&PLACE_MERGED, cell_groups), &fin, "splat/place")?;
         }
-        let alloc = splat_alloc::Bindings { tile_count, tile_radius, copy: b.copy, st };
-        backend.run(alloc, groups_for(&ALLOC, tiles), &fin, "splat/alloc")?;
-        let (dense, copy, keys, values, segments) = (b.dense, b.copy, b.keys, b.values, b.segments);
+        let (copy, keys, values, segments) = (b.copy, b.keys, b.values, b.segments);
         let bin = splat_bin::Bindings { dense, tile_count, tile_base, tile_radius, copy, keys, values, segments, st };
         backend.run(bin, tile_grid, &fin, "splat/bin")?;
         self.sort.record(backend, b.segments, tiles as u32, b.keys, b.values, b.keys_sorted, b.values_sorted)?;

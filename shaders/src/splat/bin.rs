@@ -20,8 +20,8 @@
 
 use super::fragment::Fragment;
 use super::plan::planned;
-use super::{merge, pack};
 use super::{SplatParams, THREADS, stats};
+use super::{merge, pack};
 use crate::exec::{Group, Mem};
 use crate::wg::{add, for_each_item, inclusive_scan, max};
 

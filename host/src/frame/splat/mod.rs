@@ -380,7 +380,12 @@ impl SplatContext {
         backend.run(splat_plan_finish::Bindings { st: b.stats }, [1, 1, 1], &fin, "splat/plan")?;
         let (_, _, fx, fy) = cells(f.width, f.height, f.layer_count(), last);
         let (cells, cell_groups) = (b.cells, fx as u64 * fy as u64);
-        backend.run(splat_pack::Bindings { layers: fragments, counts, cells, sharp: b.sharp, st: b.stats }, pixel_groups, &fin, "splat/pack")?;
+        backend.run(
+            splat_pack::Bindings { layers: fragments, counts, cells, sharp: b.sharp, st: b.stats },
+            pixel_groups,
+            &fin,
+            "splat/pack",
+        )?;
         if last > 0 {
             let label = if last == 1 { "splat/merge-2x2" } else { "splat/merge-4x4" };
             let merge = splat_merge::Bindings { layers: fragments, counts, cells, st: b.stats };

@@ -281,3 +281,80 @@ kernel!(
     /// Input slots → sharp fronts, and unmerged each pixel's list fragment count and widest radius.
     PACK = splat_pack [256] (SplatParams) { layers, counts, cells, sharp, st } reads { layers, counts } => pack_pass
 );
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exec::CpuMem;
+    use crate::lens::ThinLens;
+    use core::sync::atomic::AtomicU32;
+
+    /// A 1x1 frame with room for `layers` slots; depth 2 is in focus, 5 and the sky are blurred.
+    fn params(layers: u32) -> SplatParams {
+        let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.02, focus_distance: 2.0, pixels_per_unit: 8000.0 };
+        SplatParams { width: 1, height: 1, layers, cell: 1, max_radius: 16.0, lens, ..SplatParams::default() }
+    }
+
+    /// Pixel 0's list fragments (as yielded) and its cursor after the walk.
+    fn walk(layers: u32, slots: &[Slot]) -> (Vec<Fragment>, PixelFragments) {
+        let p = params(layers);
+        let mut words: Vec<u32> = Vec::new();
+        for k in 0..layers as usize {
+            words.extend(slots.get(k).map_or([0; 5], |s| s.words()));
+        }
+        let words: Vec<AtomicU32> = words.into_iter().map(AtomicU32::new).collect();
+        let count = [AtomicU32::new(slots.len() as u32)];
+        let (layers, counts) = (CpuMem { words: &words, writable: false }, CpuMem { words: &count, writable: false });
+        let mut w = PixelFragments::new(&counts, &p, 0);
+        let mut out = Vec::new();
+        while w.advance(&layers, &p) {
+            out.push(w.head);
+        }
+        (out, w)
+    }
+
+    fn slot(c: f32, z: f32, alpha: f32) -> Slot {
+        Slot { color: [c; 3], depth: z, alpha }
+    }
+
+    #[test]
+    fn a_translucent_sharp_front_before_a_blurred_slot_joins_the_lists_as_one_chain_fragment() {
+        let (f, w) = walk(4, &[slot(0.2, 2.0, 0.5), slot(0.1, 2.0, 0.5), slot(1.0, 5.0, 1.0), slot(0.3, 2.0, 1.0)]);
+        assert_eq!(f.len(), 3, "{f:?}");
+        // The "over" of the two in-focus slots, at the first one's depth: 0.2 + 0.5·0.1, alpha 0.75.
+        assert_eq!((f[0].color, f[0].alpha, f[0].depth), ([0.25; 3], 0.75, 2.0));
+        assert_eq!((f[1].color, f[1].depth), ([1.0; 3], 5.0));
+        // After the flush, an in-focus slot goes to the lists too.
+        assert_eq!((f[2].color, f[2].depth), ([0.3; 3], 2.0));
+        assert!(!w.has_sharp());
+        assert_eq!(w.backed, 0);
+    }
+
+    #[test]
+    fn slots_that_end_translucent_get_black_behind_them() {
+        let (f, w) = walk(4, &[slot(0.1, 5.0, 0.25)]);
+        assert_eq!(f.len(), 2, "{f:?}");
+        assert_eq!((f[1].color, f[1].alpha, f[1].depth), ([0.0; 3], 1.0, f32::INFINITY));
+        assert_eq!(w.backed, 1);
+        // A translucent sharp front with nothing behind it lies over black already: no fragment.
+        let (f, w) = walk(4, &[slot(0.1, 2.0, 0.25)]);
+        assert!(f.is_empty() && w.has_sharp() && w.backed == 0, "{f:?}");
+    }
+
+    #[test]
+    fn an_opaque_sharp_front_hides_the_in_focus_slots_behind_it() {
+        let (f, w) = walk(4, &[slot(0.5, 2.0, 1.0), slot(0.4, 2.0, 1.0), slot(1.0, 5.0, 1.0)]);
+        assert_eq!(f.len(), 1, "{f:?}");
+        assert_eq!(f[0].depth, 5.0);
+        assert!(w.has_sharp());
+        assert_eq!((w.hidden, w.backed), (1, 0));
+    }
+
+    #[test]
+    fn the_black_behind_full_lists_stays_in_its_pixel_as_the_front() {
+        let (f, w) = walk(2, &[slot(0.1, 5.0, 0.5), slot(0.2, 6.0, 0.5)]);
+        assert_eq!(f.len(), 2, "{f:?}");
+        assert!(w.has_sharp());
+        assert_eq!((w.front_z, w.backed), (f32::INFINITY, 1));
+    }
+}

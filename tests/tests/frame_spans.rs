@@ -7,7 +7,7 @@
 
 use dof::backend::{Backend, CpuBackend, SPAN};
 use dof::frame::{Frame, SplatContext, SplatContextDesc};
-use dof::methods::buffers::slot_words;
+use dof::methods::buffers::{SLOT_WORDS, slot_words};
 use dof::methods::splat::{Merge, SplatOptions};
 use dof::stress::{noise_with_sky, test_lens};
 use dof_tests::{assert_clean, vulkan};
@@ -27,7 +27,7 @@ fn spanned_frames(b: &mut dyn Backend) -> Vec<Timed> {
     let image = noise_with_sky(w, h, l);
     let pixels = w as u64 * h as u64;
     let bufs = [
-        b.create_buffer(4 * pixels * l as u64, "caller/fragments").unwrap(),
+        b.create_buffer(SLOT_WORDS as u64 * pixels * l as u64, "caller/fragments").unwrap(),
         b.create_buffer(pixels, "caller/counts").unwrap(),
         b.create_buffer(3 * pixels, "caller/output").unwrap(),
     ];

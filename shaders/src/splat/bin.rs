@@ -3,7 +3,9 @@
 //! - `splat_tile_count` (one workgroup per tile): fragments per tile, each cell's offset inside its
 //!   tile (a scan of the partially filled cells: the index that lets every thread take fragments of
 //!   any pixel evenly), and the largest fragment radius in the tile.
-//! - `splat_compact` (one workgroup per tile): the fragments into one dense array, tile by tile.
+//! - `splat_place` and `splat_place_merged` (one invocation per cell): the fragments into one
+//!   dense array, tile by tile, made again from the input (unmerged) or by walking the cell's
+//!   merged list again: the fragments are stored once, in place.
 //! - `splat_alloc` (one invocation per tile): whether any tile within `rings` has fragments whose
 //!   largest radius can reach this tile (the lists hold blurred fragments only); a tile none reaches
 //!   is copied through.
@@ -19,10 +21,11 @@
 use super::fragment::Fragment;
 use super::plan::planned;
 use super::{SplatParams, THREADS, stats};
+use super::{merge, pack};
 use crate::exec::{Group, Mem};
 use crate::wg::{add, for_each_item, inclusive_scan, max};
 
-/// Cells one invocation of `splat_tile_count`/`splat_compact` handles: (32 px / 1 px)² = 4 · 256.
+/// Cells one invocation of `splat_tile_count` handles: (32 px / 1 px)² = 4 · 256.
 pub const CELLS_PER_THREAD: u32 = 4;
 /// Candidates one invocation of `splat_bin` takes at a time.
 pub const CANDIDATES_PER_THREAD: u32 = 4;
@@ -94,51 +97,43 @@ pub fn fragment_reaches(p: &SplatParams, f: &Fragment, tx: u32, ty: u32) -> bool
     gx * gx + gy * gy <= r * r
 }
 
-#[allow(clippy::too_many_arguments)]
+/// Per tile: its fragment count, each cell's offset inside it and its widest radius. `cells` holds
+/// each cell's fragment count at `cells[c]` and its widest radius (f32 bits, 0 for none) at
+/// `cells[n + c]` (`n` cells in the frame, written by `pack` or `merge`); the offset replaces the
+/// radius there (the same invocation reads one and writes the other).
 pub fn tile_count_pass<G: Group, M: Mem>(
     g: &mut G,
     p: &SplatParams,
     sh: &mut [u32; 4 * THREADS as usize],
-    cells: M,
-    cell_counts: M,
-    mut cell_off: M,
+    mut cells: M,
     mut tile_count: M,
     mut tile_base: M,
     mut tile_radius: M,
     mut st: M,
 ) {
-    let p = &planned(p, &st);
     let [tx, ty, _] = g.workgroup_id();
     let t = ty * p.tiles_x + tx;
+    let n_cells = p.cells_x * p.cells_y;
     let radii = 2 * THREADS as usize;
     g.each(|lid| {
-        let (mut total, mut widest, mut capped) = (0u32, 0.0f32, 0u32);
+        let (mut total, mut widest) = (0u32, 0.0f32);
         each_cell(p, tx, ty, lid, |cell| {
-            let n = cell_counts.load(cell);
-            total += n;
-            let mut k = 0;
-            while k < n {
-                let f = Fragment::load(&cells, cell * p.cell_cap() + k);
-                let r = f.radius(&p.lens, p.max_radius);
-                widest = if r > widest { r } else { widest };
-                capped += f.is_capped(&p.lens, p.max_radius) as u32;
-                k += 1;
-            }
+            total += cells.load(cell);
+            let r = f32::from_bits(cells.load(n_cells + cell));
+            widest = if r > widest { r } else { widest };
         });
         sh[lid as usize] = total;
         // Radii are positive, so their bits order like the values.
         sh[radii + lid as usize] = widest.to_bits();
-        if capped > 0 {
-            st.atomic_add(stats::CAPPED, capped);
-        }
     });
     let sums = inclusive_scan(g, sh, 0, add);
     let widest = inclusive_scan(g, sh, radii, max);
     g.each(|lid| {
         let mut running = if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
         each_cell(p, tx, ty, lid, |cell| {
-            cell_off.store(cell, running);
-            running += cell_counts.load(cell);
+            let n = cells.load(cell);
+            cells.store(n_cells + cell, running);
+            running += n;
         });
         if lid == THREADS - 1 {
             let total = sh[sums + lid as usize];
@@ -152,17 +147,39 @@ pub fn tile_count_pass<G: Group, M: Mem>(
     });
 }
 
-pub fn compact_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells: M, cell_counts: M, cell_off: M, tile_base: M, mut dense: M) {
-    let [tx, ty, _] = g.workgroup_id();
-    let base = tile_base.load(ty * p.tiles_x + tx);
-    g.each(|lid| {
-        each_cell(p, tx, ty, lid, |cell| {
-            let (n, at) = (cell_counts.load(cell), base + cell_off.load(cell));
-            let mut w = 0;
-            while w < 4 * n {
-                dense.store(4 * at + w, cells.load(4 * cell * p.cell_cap() + w));
-                w += 1;
-            }
+/// The dense index of cell `c`'s first fragment: its tile's offset plus the cell's in the tile.
+#[inline]
+fn cell_start<M: Mem>(p: &SplatParams, cells: &M, tile_base: &M, c: u32) -> u32 {
+    let (cx, cy) = (c % p.cells_x, c / p.cells_x);
+    let per_tile = p.tile / p.cell;
+    tile_base.load((cy / per_tile) * p.tiles_x + cx / per_tile) + cells.load(p.cells_x * p.cells_y + c)
+}
+
+/// Unmerged, one invocation per pixel: its list fragments ([`pack::PixelFragments`], as packing
+/// counted them) into the dense array at their place (tile by tile, pixels row-major in the tile,
+/// front to back), so the slot-per-pixel cells are never stored.
+pub fn place_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, cells: M, tile_base: M, mut dense: M, st: M) {
+    let p = &planned(p, &st);
+    for_each_item(g, p.width * p.height, |i| {
+        let mut at = cell_start(p, &cells, &tile_base, i);
+        let mut w = pack::PixelFragments::new(&counts, p, i);
+        while w.advance(&layers, p) {
+            w.head.store(&mut dense, at);
+            at += 1;
+        }
+    });
+}
+
+/// Merged, one invocation per cell: its merged list ([`merge::cell_fragments`], walked again as
+/// `splat_merge` counted it) into the dense array at its place. A kernel of its own, so that the
+/// unmerged one stays small.
+pub fn place_merged_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, cells: M, tile_base: M, mut dense: M, st: M) {
+    let p = &planned(p, &st);
+    for_each_item(g, p.cells_x * p.cells_y, |c| {
+        let mut at = cell_start(p, &cells, &tile_base, c);
+        merge::cell_fragments(&layers, &counts, p, c, |f| {
+            f.store(&mut dense, at);
+            at += 1;
         });
     });
 }
@@ -355,11 +372,16 @@ fn candidate<const N: usize>(sh: &[u32; N], nb: usize, nb_base: usize, j: u32) -
 kernel!(
     /// Per-tile fragment counts, cell offsets inside tiles and largest radius.
     TILE_COUNT = splat_tile_count [256] (SplatParams) shared [u32; 4 * 256]
-        { cells, cell_counts, cell_off, tile_count, tile_base, tile_radius, st } reads { cells, cell_counts } => tile_count_pass
+        { cells, tile_count, tile_base, tile_radius, st } => tile_count_pass
 );
 kernel!(
-    /// Fragments into one dense array, tile by tile.
-    COMPACT = splat_compact [256] (SplatParams) { cells, cell_counts, cell_off, tile_base, dense } reads { cells, cell_counts, cell_off, tile_base } => compact_pass
+    /// Unmerged: the fragments into one dense array, tile by tile, made from the input.
+    PLACE = splat_place [256] (SplatParams) { layers, counts, cells, tile_base, dense, st } reads { layers, counts, cells, tile_base, st } => place_pass
+);
+kernel!(
+    /// Merged: each cell's merged fragments into one dense array, tile by tile.
+    PLACE_MERGED = splat_place_merged [256] (SplatParams) { layers, counts, cells, tile_base, dense, st }
+        reads { layers, counts, cells, tile_base, st } => place_merged_pass
 );
 kernel!(
     /// Which tiles no list fragment reaches (copied through).

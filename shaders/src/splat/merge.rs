@@ -1,23 +1,26 @@
-//! Stage 2 (optional): hierarchical fragment merging (Franke et al. 2018, §6.1-6.2), one 2x2 step per dispatch.
+//! Stage 2 (optional): hierarchical fragment merging (Franke et al. 2018, §6.1-6.2), 2x2 or 4x4.
 //!
-//! One invocation per output cell walks the four member cells' lists front to back (each list is in
-//! depth order). While all four heads are mergeable (same merge level as this step's input, all out of
-//! focus, depths within `merge_depth_ratio`, every colour channel within `merge_color_tol` of its
-//! value, equal alpha, so a translucent fragment never merges with an opaque one) they become one
-//! fragment: the members' average (premultiplied) colour and their alpha, the depth of the member with the
-//! largest CoC, the block's centre, the next level. Otherwise the front-most head is passed through
-//! unchanged (never merged again: its level no longer matches). Merging never makes a fragment
-//! transparent: all four members or none.
+//! Each 2x2 step walks the four member cells' lists front to back (each list is in depth order).
+//! While all four heads are mergeable (same merge level as this step's input, all out of focus,
+//! depths within `merge_depth_ratio`, every colour channel within `merge_color_tol` of its value,
+//! equal alpha, so a translucent fragment never merges with an opaque one) they become one fragment:
+//! the members' average (premultiplied) colour and their alpha, the depth of the member with the
+//! largest CoC, the block's centre, the next level. Otherwise the front-most
+//! head is passed through unchanged (never merged again: its level no longer matches). Merging
+//! never makes a fragment transparent: all four members or none.
 //!
-//! Umbra-aware merging (`FLAG_UMBRA_MERGE`): after a merge of opaque members, member fragments
-//! inside the merged fragment's umbra (lens as an area light, the merged block's footprint as the occluder, see
+//! Umbra-aware merging (`FLAG_UMBRA_MERGE`): after a merge of opaque members, member fragments inside the merged
+//! fragment's umbra (lens as an area light, the merged block's footprint as the occluder, see
 //! [`crate::lens::ThinLens::umbra_length`]) are dropped; once the footprint exceeds the aperture the
 //! umbra is infinite and everything behind goes.
 //!
-//! Reads the cell layout of `params.cell`/`cell_cap`/`cells_x`/`cells_y`; writes cells of twice the
-//! edge with four times the capacity.
+//! One invocation per output cell (`params.cell` 2 or 4 pixels) walks both levels at once from the
+//! input ([`cell_fragments`]): no level's fragments are stored, only each cell's count and widest
+//! radius ([`merge_count_pass`]); `bin::place_pass` walks the lists again to write them into the
+//! dense array.
 
-use super::fragment::{Fragment, depth_of};
+use super::fragment::Fragment;
+use super::pack::PixelFragments;
 use super::{FLAG_UMBRA_MERGE, SplatParams, stats};
 use crate::exec::{Group, Mem};
 use crate::lens::ThinLens;
@@ -93,86 +96,230 @@ pub fn merged(f: &[Fragment; 4], lens: &ThinLens, ox: u32, oy: u32, edge: u32) -
     Fragment { color, alpha: f[0].alpha, depth: f[widest].depth, level: f[0].level + 1, pos: [2 * ox * edge + edge, 2 * oy * edge + edge] }
 }
 
-pub fn merge_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, cells_in: M, counts_in: M, mut cells_out: M, mut counts_out: M, mut st: M) {
-    let out_x = p.cells_x.div_ceil(2);
-    let outputs = out_x * p.cells_y.div_ceil(2);
-    let level = if p.cell == 1 { 0 } else { 1 };
-    let cap_out = 4 * p.cell_cap();
-    let edge_out = 2 * p.cell;
-    for_each_item(g, outputs, |o| {
-        let (ox, oy) = (o % out_x, o / out_x);
-        let mut cell = [0u32; 4];
-        let mut count = [0u32; 4];
-        let mut head = [0u32; 4];
-        let mut total = 0;
+/// What a fragment reads as after a stage stored it (packed and unpacked): merging reads its
+/// members as stored, so results do not depend on whether a level was kept in memory.
+#[inline]
+fn as_stored(f: &Fragment) -> Fragment {
+    Fragment::unpack(f.pack())
+}
+
+/// Merges and umbra-skipped fragments, summed over the levels of one output cell.
+#[derive(Clone, Copy)]
+pub struct MergeCounts {
+    pub merges: u32,
+    pub skipped: u32,
+}
+
+/// A 2x2 cell of pixels being merged: each member pixel's cursor over its list fragments
+/// ([`PixelFragments`]), and bit `m` of `live` set while member `m` has a head.
+#[derive(Clone, Copy)]
+struct Quad {
+    cx: u32,
+    cy: u32,
+    walk: [PixelFragments; 4],
+    live: u32,
+}
+
+impl Quad {
+    const EMPTY: Quad = Quad { cx: 0, cy: 0, walk: [PixelFragments::EMPTY; 4], live: 0 };
+
+    /// The 2x2 cell `(cx, cy)`: members `m` at pixel `(2cx + (m & 1), 2cy + (m >> 1))`, those
+    /// outside the image empty.
+    #[inline]
+    fn new<M: Mem>(layers: &M, counts: &M, p: &SplatParams, cx: u32, cy: u32) -> Self {
+        let mut q = Quad { cx, cy, ..Quad::EMPTY };
         let mut m = 0;
         while m < 4 {
-            let (cx, cy) = (2 * ox + (m & 1), 2 * oy + (m >> 1));
-            if cx < p.cells_x && cy < p.cells_y {
-                cell[m as usize] = cy * p.cells_x + cx;
-                count[m as usize] = counts_in.load(cell[m as usize]);
-                total += count[m as usize];
+            let (x, y) = (2 * cx + (m & 1), 2 * cy + (m >> 1));
+            if x < p.width && y < p.height {
+                q.walk[m as usize] = PixelFragments::new(counts, p, y * p.width + x);
+                q.advance(layers, p, m as usize);
             }
             m += 1;
         }
-        let (mut emitted, mut merges, mut skipped) = (0u32, 0u32, 0u32);
-        let mut step = 0;
-        // Every step consumes at least one input fragment.
-        while step < total {
-            step += 1;
-            let mut f = [Fragment { color: [0.0; 3], alpha: 1.0, depth: 0.0, level: 0, pos: [0; 2] }; 4];
-            let mut present = 0;
-            let mut front = 4usize;
+        q
+    }
+
+    #[inline]
+    fn has(&self, m: usize) -> bool {
+        self.live & (1 << m) != 0
+    }
+
+    #[inline]
+    fn is_done(&self) -> bool {
+        self.live == 0
+    }
+
+    /// Member `m`'s head, as a stage reads it after storing it.
+    #[inline]
+    fn head(&self, m: usize) -> Fragment {
+        as_stored(&self.walk[m].head)
+    }
+
+    /// Moves member `m` to its next list fragment.
+    #[inline]
+    fn advance<M: Mem>(&mut self, layers: &M, p: &SplatParams, m: usize) {
+        if self.walk[m].advance(layers, p) {
+            self.live |= 1 << m;
+        } else {
+            self.live &= !(1 << m);
+        }
+    }
+
+    /// The next fragment of this 2x2 cell's merged list (one step of the front-to-back walk over its
+    /// four pixels; the cell must not be done).
+    fn step<M: Mem>(&mut self, layers: &M, p: &SplatParams, c: &mut MergeCounts) -> Fragment {
+        let mut f = [Fragment { color: [0.0; 3], alpha: 1.0, depth: 0.0, level: 0, pos: [0; 2] }; 4];
+        let mut present = 0;
+        let mut front = 4usize;
+        let mut m = 0usize;
+        while m < 4 {
+            if self.has(m) {
+                f[m] = self.head(m);
+                present += 1;
+                if front == 4 || f[m].depth < f[front].depth {
+                    front = m;
+                }
+            }
+            m += 1;
+        }
+        if present == 4 && mergeable(&f, 0, p) {
+            let out = merged(&f, &p.lens, self.cx, self.cy, 2);
+            c.merges += 1;
+            // Only an opaque fragment casts an umbra: what lies behind a translucent one shows.
+            let umbra = p.flags & FLAG_UMBRA_MERGE != 0 && out.is_opaque();
+            let shadow = out.depth + p.lens.umbra_length(out.depth, footprint_radius(&p.lens, out.depth, 2.0));
             let mut m = 0usize;
             while m < 4 {
-                if head[m] < count[m] {
-                    f[m] = Fragment::load(&cells_in, cell[m] * p.cell_cap() + head[m]);
-                    present += 1;
-                    if front == 4 || f[m].depth < f[front].depth {
-                        front = m;
-                    }
+                self.advance(layers, p, m);
+                while umbra && self.has(m) && self.walk[m].head.depth <= shadow {
+                    self.advance(layers, p, m);
+                    c.skipped += 1;
                 }
                 m += 1;
             }
-            if present == 0 {
-                break;
-            }
-            if present == 4 && mergeable(&f, level, p) {
-                let out = merged(&f, &p.lens, ox, oy, edge_out);
-                out.store(&mut cells_out, o * cap_out + emitted);
-                emitted += 1;
-                merges += 1;
-                // Only an opaque fragment casts an umbra: what lies behind a translucent one shows.
-                let umbra = p.flags & FLAG_UMBRA_MERGE != 0 && out.is_opaque();
-                let r = footprint_radius(&p.lens, out.depth, edge_out as f32);
-                let shadow = out.depth + p.lens.umbra_length(out.depth, r);
-                let mut m = 0usize;
-                while m < 4 {
-                    head[m] += 1;
-                    while umbra && head[m] < count[m] && depth_of(&cells_in, cell[m] * p.cell_cap() + head[m]) <= shadow {
-                        head[m] += 1;
-                        skipped += 1;
-                    }
-                    m += 1;
+            out
+        } else {
+            self.advance(layers, p, front);
+            f[front]
+        }
+    }
+}
+
+/// The merged fragments of output cell `o` (cells of `p.cell` = 2 or 4 pixels), front to back,
+/// each handed to `emit` as the stage that stores it gets it; returns the merges and skips.
+///
+/// No level is stored: the pixels' fragments come from the input ([`PixelFragments`]), a
+/// 2x2 cell's merged list is walked step by step ([`Quad`]), and the 4x4 walk keeps only the
+/// head of each of its four 2x2 lists. Each level reads its members as stored, so the lists are
+/// those of merging level by level through memory, fragment for fragment.
+pub fn cell_fragments<M: Mem>(layers: &M, counts: &M, p: &SplatParams, o: u32, mut emit: impl FnMut(&Fragment)) -> MergeCounts {
+    let mut c = MergeCounts { merges: 0, skipped: 0 };
+    let (ox, oy) = (o % p.cells_x, o / p.cells_x);
+    if p.cell == 2 {
+        let mut q = Quad::new(layers, counts, p, ox, oy);
+        while !q.is_done() {
+            let f = q.step(layers, p, &mut c);
+            emit(&f);
+        }
+        return c;
+    }
+    // 4x4: the four 2x2 cells' lists, each with its current head.
+    let mut q = [Quad::EMPTY; 4];
+    let mut head = [Fragment { color: [0.0; 3], alpha: 1.0, depth: 0.0, level: 0, pos: [0; 2] }; 4];
+    // Bit m: the 2x2 cell m has a head (bool arrays do not compile to SPIR-V).
+    let mut has = 0u32;
+    let mut m = 0usize;
+    while m < 4 {
+        q[m] = Quad::new(layers, counts, p, 2 * ox + (m as u32 & 1), 2 * oy + (m as u32 >> 1));
+        if !q[m].is_done() {
+            head[m] = as_stored(&q[m].step(layers, p, &mut c));
+            has |= 1 << m;
+        }
+        m += 1;
+    }
+    loop {
+        let mut present = 0;
+        let mut front = 4usize;
+        let mut m = 0usize;
+        while m < 4 {
+            if has & (1 << m) != 0 {
+                present += 1;
+                if front == 4 || head[m].depth < head[front].depth {
+                    front = m;
                 }
-            } else {
-                f[front].store(&mut cells_out, o * cap_out + emitted);
-                emitted += 1;
-                head[front] += 1;
             }
+            m += 1;
         }
-        counts_out.store(o, emitted);
-        if merges > 0 {
-            st.atomic_add(stats::MERGED, merges);
-            st.atomic_add(stats::MERGED_INPUTS, 4 * merges);
+        if present == 0 {
+            break;
         }
-        if skipped > 0 {
-            st.atomic_add(stats::UMBRA_SKIPPED, skipped);
+        if present == 4 && mergeable(&head, 1, p) {
+            let out = merged(&head, &p.lens, ox, oy, 4);
+            emit(&out);
+            c.merges += 1;
+            // Only an opaque fragment casts an umbra: what lies behind a translucent one shows.
+            let umbra = p.flags & FLAG_UMBRA_MERGE != 0 && out.is_opaque();
+            let shadow = out.depth + p.lens.umbra_length(out.depth, footprint_radius(&p.lens, out.depth, 4.0));
+            let mut m = 0usize;
+            while m < 4 {
+                let mut first = true;
+                while has & (1 << m) != 0 && (first || (umbra && head[m].depth <= shadow)) {
+                    c.skipped += !first as u32;
+                    first = false;
+                    has = next_head(&mut q[m], &mut head[m], has, m, layers, p, &mut c);
+                }
+                m += 1;
+            }
+        } else {
+            emit(&head[front]);
+            has = next_head(&mut q[front], &mut head[front], has, front, layers, p, &mut c);
+        }
+    }
+    c
+}
+
+/// Moves 2x2 cell `m`'s head on (as the 4x4 step reads it, stored); returns `has` with bit `m`
+/// cleared once its list is done.
+#[inline]
+fn next_head<M: Mem>(q: &mut Quad, head: &mut Fragment, has: u32, m: usize, layers: &M, p: &SplatParams, c: &mut MergeCounts) -> u32 {
+    if q.is_done() {
+        return has & !(1 << m);
+    }
+    *head = as_stored(&q.step(layers, p, c));
+    has
+}
+
+/// Per output cell: how many fragments its merged list holds, their widest radius and how many
+/// were capped, at `cells[o]` and `cells[cells + o]` (f32 bits) as `splat_tile_count` reads them,
+/// and the merging statistics. `bin::place_pass` walks the same lists again to write them.
+pub fn merge_count_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, mut cells: M, mut st: M) {
+    let p = &super::plan::planned(p, &st);
+    let outputs = p.cells_x * p.cells_y;
+    for_each_item(g, outputs, |o| {
+        let (mut n, mut widest, mut capped) = (0u32, 0.0f32, 0u32);
+        let c = cell_fragments(&layers, &counts, p, o, |f| {
+            let r = f.radius(&p.lens, p.max_radius);
+            widest = if r > widest { r } else { widest };
+            capped += f.is_capped(&p.lens, p.max_radius) as u32;
+            n += 1;
+        });
+        cells.store(o, n);
+        cells.store(outputs + o, widest.to_bits());
+        if c.merges > 0 {
+            st.atomic_add(stats::MERGED, c.merges);
+            st.atomic_add(stats::MERGED_INPUTS, 4 * c.merges);
+        }
+        if c.skipped > 0 {
+            st.atomic_add(stats::UMBRA_SKIPPED, c.skipped);
+        }
+        if capped > 0 {
+            st.atomic_add(stats::CAPPED, capped);
         }
     });
 }
 
 kernel!(
-    /// One 2x2 merging step over cells of `params.cell` pixels.
-    MERGE = splat_merge [256] (SplatParams) { cells_in, counts_in, cells_out, counts_out, st } reads { cells_in, counts_in } => merge_pass
+    /// Merged cells of `params.cell` pixels (2 or 4): their fragment counts and widest radii.
+    MERGE = splat_merge [256] (SplatParams) { layers, counts, cells, st } reads { layers, counts } => merge_count_pass
 );

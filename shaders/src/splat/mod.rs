@@ -7,12 +7,15 @@
 //!    with a per-fragment colour exponent and alpha); non-finite colours and invalid depths are
 //!    dropped, colours clamped to the numerical contract ([`crate::radiance`]), and an empty
 //!    pixel gets the sky (black at infinite depth) so that coverage is complete. In-focus fragments
-//!    stay out of the lists: a pixel's first one is kept per pixel (its "sharp front").
-//! 2. [`merge`] (optional, once for 2x2, twice for 4x4): neighbouring out-of-focus fragments of
-//!    similar depth and colour become one larger fragment; umbra-aware merging drops what the merged
-//!    fragment shadows from every lens point (§6.1-6.2).
+//!    stay out of the lists: a pixel's first one is kept per pixel (its "sharp front"). Unmerged,
+//!    it counts each pixel's list fragments (they are written once, by `bin`'s place pass).
+//! 2. [`merge`] (optional, 2x2 or 4x4, both levels in one pass): neighbouring out-of-focus
+//!    fragments of similar depth and colour become one larger fragment; umbra-aware merging drops
+//!    what the merged fragment shadows from every lens point (§6.1-6.2). It counts each cell's
+//!    merged fragments; no level is stored.
 //! 3. [`bin`]: per-tile fragment counts and an index over the partially filled cells (the
-//!    load-balancing structure of §5.1), a dense per-tile fragment array, which tiles no blur
+//!    load-balancing structure of §5.1), the dense per-tile fragment array (each cell's fragments
+//!    made again from the input and written straight at their place), which tiles no blur
 //!    reaches, then the tile lists, each allocated exactly from a bounded pool (a tile whose list
 //!    does not fit is counted as overflow and copied through).
 //! 4. The foundation's segmented sort orders every list by depth.
@@ -55,7 +58,7 @@ pub struct SplatParams {
     pub height: u32,
     /// Input slots per pixel (`pack`, and the copy-through of `accumulate`).
     pub layers: u32,
-    /// Edge in pixels of the cells a kernel reads (1, 2 or 4); see [`SplatParams::cell_cap`].
+    /// Edge in pixels of the frame's cells (1, or 2 or 4 merged); see [`SplatParams::cell_cap`].
     pub cell: u32,
     pub cells_x: u32,
     pub cells_y: u32,
@@ -149,13 +152,14 @@ pub mod stats {
 }
 
 #[cfg(not(target_arch = "spirv"))]
-pub const KERNELS: [&crate::KernelDesc; 9] = [
+pub const KERNELS: [&crate::KernelDesc; 10] = [
     &plan::PLAN_REDUCE,
     &plan::PLAN_FINISH,
     &pack::PACK,
     &merge::MERGE,
     &bin::TILE_COUNT,
-    &bin::COMPACT,
+    &bin::PLACE,
+    &bin::PLACE_MERGED,
     &bin::ALLOC,
     &bin::BIN,
     &accumulate::ACCUMULATE,

@@ -1,4 +1,7 @@
-//! Stage 1: the per-pixel layer slots of the input become packed fragments, one cell per pixel.
+//! Stage 1: the per-pixel layer slots of the input become fragments. This pass keeps each pixel's
+//! sharp front and counts; the list fragments are made again from the input where they are needed
+//! ([`PixelFragments`]: this pass, merging and `bin::place_pass` walk a pixel's slots with the
+//! same rule), so no slot-per-pixel array of them is ever stored.
 //!
 //! Input: `layers` (per pixel `params.layers` slots, [`crate::slot`]: premultiplied red, green,
 //! blue, depth, alpha as f32 bits, front to back) and `counts` (slots used per pixel). A slot with a
@@ -65,119 +68,293 @@ const NO_SHARP: u32 = 0;
 const SHARP_OPEN: u32 = 1;
 /// Opaque: in-focus slots behind it are hidden.
 const SHARP_CLOSED: u32 = 2;
-/// Translucent and followed by a blurred slot: it went into the cells as one in-focus fragment (so
-/// the depth order holds), and later in-focus slots go there too.
+/// Translucent and followed by a blurred slot: it went into the lists as one in-focus "chain"
+/// fragment (so the depth order holds), and later in-focus slots go there too.
 const SHARP_FLUSHED: u32 = 3;
 
-#[allow(clippy::too_many_arguments)]
-pub fn pack_pass<G: Group, M: Mem>(
-    g: &mut G,
-    p: &SplatParams,
-    layers: M,
-    counts: M,
-    mut cells: M,
-    mut cell_counts: M,
-    mut sharp: M,
-    mut st: M,
-) {
-    let p = &super::plan::planned(p, &st);
-    let pixels = p.width * p.height;
-    for_each_item(g, pixels, |i| {
-        let (x, y) = (i % p.width, i / p.width);
+/// A cursor over one pixel's list fragments, front to back, made from its input slots: the one
+/// rule for which fragments a pixel puts into the lists (its sharp front's state machine, the chain
+/// fragment behind a translucent sharp front, the black behind slots that end translucent). Packing
+/// counts them, merging walks them ([`super::merge`]) and `bin::place_pass` writes them, so every
+/// pass sees the same sequence. After the walk it also holds the pixel's sharp front and input
+/// statistics.
+#[derive(Clone, Copy)]
+pub struct PixelFragments {
+    pixel: u32,
+    /// Slots the pixel holds (its count, at most `layers`).
+    pub n: u32,
+    /// Slots read: `n`, plus one for an empty pixel's black or the black behind translucent slots.
+    slots: u32,
+    /// The next slot to read.
+    k: u32,
+    state: u32,
+    /// The sharp front: the "over" of the leading run of in-focus slots, in f32, and its depth.
+    front: Composite,
+    front_z: f32,
+    /// The light all valid slots let through so far, and how many there were.
+    through: f32,
+    valid: u32,
+    /// List fragments yielded so far.
+    kept: u32,
+    /// 1 while a fragment waits behind the chain fragment just yielded (in `held`).
+    waiting: u32,
+    held: Fragment,
+    /// The current list fragment (valid after [`PixelFragments::advance`] returned true), as
+    /// made, before it is stored.
+    pub head: Fragment,
+    pub dropped: u32,
+    pub clamped: u32,
+    pub alpha_clamped: u32,
+    pub hidden: u32,
+    /// 1 when black was added behind slots that end translucent.
+    pub backed: u32,
+}
+
+const NO_FRAGMENT: Fragment = Fragment { color: [0.0; 3], alpha: 1.0, depth: 0.0, level: 0, pos: [0; 2] };
+
+impl PixelFragments {
+    pub const EMPTY: PixelFragments = PixelFragments {
+        pixel: 0,
+        n: 0,
+        slots: 0,
+        k: 0,
+        state: NO_SHARP,
+        front: Composite::EMPTY,
+        front_z: f32::NAN,
+        through: 1.0,
+        valid: 0,
+        kept: 0,
+        waiting: 0,
+        held: NO_FRAGMENT,
+        head: NO_FRAGMENT,
+        dropped: 0,
+        clamped: 0,
+        alpha_clamped: 0,
+        hidden: 0,
+        backed: 0,
+    };
+
+    /// The cursor before pixel `i`'s first list fragment.
+    #[inline]
+    pub fn new<M: Mem>(counts: &M, p: &SplatParams, i: u32) -> Self {
         let n = counts.load(i);
         let n = if n < p.layers { n } else { p.layers };
-        let (mut kept, mut dropped, mut clamped, mut alpha_clamped, mut hidden) = (0u32, 0u32, 0u32, 0u32, 0u32);
-        // The sharp front: the "over" of the pixel's leading run of in-focus slots, in f32.
-        let mut state = NO_SHARP;
-        let mut front = Composite::EMPTY;
-        let mut front_z = f32::NAN;
-        // The light all valid slots let through so far, and how many there were.
-        let mut through = 1.0f32;
-        let mut valid = 0u32;
-        // An empty pixel's black background is one more slot; so is the black behind a pixel whose
-        // slots end translucent (a pixel composites over black), added after its slots.
-        let mut slots = if n == 0 { 1 } else { n };
-        let mut k = 0;
-        while k < slots {
-            let s = if k >= n { Slot::opaque([0.0; 3], f32::INFINITY) } else { input_slot(&layers, p, i, k) };
-            k += 1;
+        // An empty pixel's black background is one more slot.
+        PixelFragments { pixel: i, n, slots: if n == 0 { 1 } else { n }, ..Self::EMPTY }
+    }
+
+    /// Moves to the pixel's next list fragment (into `head`); false once there is none.
+    pub fn advance<M: Mem>(&mut self, layers: &M, p: &SplatParams) -> bool {
+        if self.waiting != 0 {
+            self.waiting = 0;
+            self.head = self.held;
+            return true;
+        }
+        let (x, y) = (self.pixel % p.width, self.pixel / p.width);
+        while self.k < self.slots {
+            let s = if self.k >= self.n { Slot::opaque([0.0; 3], f32::INFINITY) } else { input_slot(layers, p, self.pixel, self.k) };
+            self.k += 1;
             let (c, z) = (s.color, s.depth);
+            let mut made = 0u32;
             if !is_valid(c, z) {
-                dropped += 1;
+                self.dropped += 1;
             } else {
-                alpha_clamped += is_alpha_clamped(s.alpha) as u32;
+                self.alpha_clamped += is_alpha_clamped(s.alpha) as u32;
                 let a = clamp_alpha(s.alpha);
-                clamped += is_clamped(c) as u32;
+                self.clamped += is_clamped(c) as u32;
                 let c = clamp_color(c);
-                valid += 1;
-                through *= 1.0 - a;
+                self.valid += 1;
+                self.through *= 1.0 - a;
                 let f = Fragment::at_pixel(x, y, c, z).with_alpha(a);
                 let in_focus = f.radius(&p.lens, p.max_radius) <= 1.0;
-                if in_focus && state == NO_SHARP {
-                    front.add(c, a);
-                    front_z = z;
-                    state = if a >= 1.0 { SHARP_CLOSED } else { SHARP_OPEN };
-                } else if in_focus && state == SHARP_OPEN {
-                    front.add(c, a);
-                    state = if front.transmit > 0.0 { SHARP_OPEN } else { SHARP_CLOSED };
-                } else if in_focus && state == SHARP_CLOSED {
+                if in_focus && self.state == NO_SHARP {
+                    self.front.add(c, a);
+                    self.front_z = z;
+                    self.state = if a >= 1.0 { SHARP_CLOSED } else { SHARP_OPEN };
+                } else if in_focus && self.state == SHARP_OPEN {
+                    self.front.add(c, a);
+                    self.state = if self.front.transmit > 0.0 { SHARP_OPEN } else { SHARP_CLOSED };
+                } else if in_focus && self.state == SHARP_CLOSED {
                     // Behind an opaque sharp front: invisible here, and it reaches no other pixel.
-                    hidden += 1;
+                    self.hidden += 1;
                 } else {
-                    if state == SHARP_OPEN {
+                    if self.state == SHARP_OPEN {
                         // A blurred slot behind a translucent front: the front joins the lists.
-                        let chain = Fragment::at_pixel(x, y, front.color, front_z).with_alpha(front.alpha());
-                        chain.store(&mut cells, i * p.layers + kept);
-                        kept += 1;
-                        state = SHARP_FLUSHED;
+                        self.head = Fragment::at_pixel(x, y, self.front.color, self.front_z).with_alpha(self.front.alpha());
+                        self.kept += 1;
+                        made = 1;
+                        self.state = SHARP_FLUSHED;
                     }
-                    if kept < p.layers {
-                        f.store(&mut cells, i * p.layers + kept);
-                        kept += 1;
+                    if self.kept < p.layers {
+                        if made == 0 {
+                            self.head = f;
+                        } else {
+                            self.held = f;
+                            self.waiting = 1;
+                        }
+                        self.kept += 1;
+                        made += 1;
                     } else {
-                        // Only the black behind a pixel whose cells are full gets here: it stays
+                        // Only the black behind a pixel whose lists are full gets here: it stays
                         // in this pixel, as its front at infinite depth.
-                        front = Composite::EMPTY;
-                        front.add(c, a);
-                        front_z = z;
-                        state = SHARP_CLOSED;
+                        self.front = Composite::EMPTY;
+                        self.front.add(c, a);
+                        self.front_z = z;
+                        self.state = SHARP_CLOSED;
                     }
                 }
             }
             // A front still open at the end lies over black already (nothing of the pixel behind).
-            if k == slots && k == n && valid > 0 && through > 0.0 && state != SHARP_OPEN {
-                slots += 1;
-                st.atomic_add(stats::BACKED, 1);
+            if self.k == self.slots && self.k == self.n && self.valid > 0 && self.through > 0.0 && self.state != SHARP_OPEN {
+                self.slots += 1;
+                self.backed = 1;
+            }
+            if made > 0 {
+                return true;
             }
         }
-        if state == SHARP_OPEN || state == SHARP_CLOSED {
-            store_sharp(&mut sharp, i, front.color, front_z);
+        false
+    }
+
+    /// Whether the pixel has a sharp front (once the walk is done).
+    #[inline]
+    pub fn has_sharp(&self) -> bool {
+        self.state == SHARP_OPEN || self.state == SHARP_CLOSED
+    }
+}
+
+/// Per pixel: the sharp front and the input statistics. Unmerged (`cell` 1), also the pixel's
+/// list fragments: their count at `cells[i]` and their widest radius (f32 bits) at
+/// `cells[pixels + i]`, where `splat_tile_count` reads them; the fragments themselves are written
+/// only once their place in the dense array is known (`bin::place_pass`).
+#[allow(clippy::too_many_arguments)]
+pub fn pack_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, mut cells: M, mut sharp: M, mut st: M) {
+    let p = &super::plan::planned(p, &st);
+    let pixels = p.width * p.height;
+    for_each_item(g, pixels, |i| {
+        let mut w = PixelFragments::new(&counts, p, i);
+        let (mut kept, mut capped) = (0u32, 0u32);
+        let mut widest = 0.0f32;
+        while w.advance(&layers, p) {
+            let r = w.head.radius(&p.lens, p.max_radius);
+            widest = if r > widest { r } else { widest };
+            capped += w.head.is_capped(&p.lens, p.max_radius) as u32;
+            kept += 1;
+        }
+        if w.has_sharp() {
+            store_sharp(&mut sharp, i, w.front.color, w.front_z);
         } else {
             store_sharp(&mut sharp, i, [0.0; 3], f32::NAN);
         }
-        cell_counts.store(i, kept);
-        if n == 0 {
+        if p.cell == 1 {
+            cells.store(i, kept);
+            cells.store(pixels + i, widest.to_bits());
+            if capped > 0 {
+                st.atomic_add(stats::CAPPED, capped);
+            }
+        }
+        if w.n == 0 {
             st.atomic_add(stats::SKY, 1);
         }
-        if state == SHARP_OPEN || state == SHARP_CLOSED {
+        if w.has_sharp() {
             st.atomic_add(stats::SHARP, 1);
         }
-        if hidden > 0 {
-            st.atomic_add(stats::HIDDEN_SHARP, hidden);
+        if w.backed > 0 {
+            st.atomic_add(stats::BACKED, 1);
         }
-        if dropped > 0 {
-            st.atomic_add(stats::DROPPED, dropped);
+        if w.hidden > 0 {
+            st.atomic_add(stats::HIDDEN_SHARP, w.hidden);
         }
-        if clamped > 0 {
-            st.atomic_add(stats::CLAMPED, clamped);
+        if w.dropped > 0 {
+            st.atomic_add(stats::DROPPED, w.dropped);
         }
-        if alpha_clamped > 0 {
-            st.atomic_add(stats::ALPHA_CLAMPED, alpha_clamped);
+        if w.clamped > 0 {
+            st.atomic_add(stats::CLAMPED, w.clamped);
+        }
+        if w.alpha_clamped > 0 {
+            st.atomic_add(stats::ALPHA_CLAMPED, w.alpha_clamped);
         }
     });
 }
 
 kernel!(
-    /// Input slots → packed fragments in cells of one pixel.
-    PACK = splat_pack [256] (SplatParams) { layers, counts, cells, cell_counts, sharp, st } reads { layers, counts } => pack_pass
+    /// Input slots → sharp fronts, and unmerged each pixel's list fragment count and widest radius.
+    PACK = splat_pack [256] (SplatParams) { layers, counts, cells, sharp, st } reads { layers, counts } => pack_pass
 );
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exec::CpuMem;
+    use crate::lens::ThinLens;
+    use core::sync::atomic::AtomicU32;
+
+    /// A 1x1 frame with room for `layers` slots; depth 2 is in focus, 5 and the sky are blurred.
+    fn params(layers: u32) -> SplatParams {
+        let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.02, focus_distance: 2.0, pixels_per_unit: 8000.0 };
+        SplatParams { width: 1, height: 1, layers, cell: 1, max_radius: 16.0, lens, ..SplatParams::default() }
+    }
+
+    /// Pixel 0's list fragments (as yielded) and its cursor after the walk.
+    fn walk(layers: u32, slots: &[Slot]) -> (Vec<Fragment>, PixelFragments) {
+        let p = params(layers);
+        let mut words: Vec<u32> = Vec::new();
+        for k in 0..layers as usize {
+            words.extend(slots.get(k).map_or([0; 5], |s| s.words()));
+        }
+        let words: Vec<AtomicU32> = words.into_iter().map(AtomicU32::new).collect();
+        let count = [AtomicU32::new(slots.len() as u32)];
+        let (layers, counts) = (CpuMem { words: &words, writable: false }, CpuMem { words: &count, writable: false });
+        let mut w = PixelFragments::new(&counts, &p, 0);
+        let mut out = Vec::new();
+        while w.advance(&layers, &p) {
+            out.push(w.head);
+        }
+        (out, w)
+    }
+
+    fn slot(c: f32, z: f32, alpha: f32) -> Slot {
+        Slot { color: [c; 3], depth: z, alpha }
+    }
+
+    #[test]
+    fn a_translucent_sharp_front_before_a_blurred_slot_joins_the_lists_as_one_chain_fragment() {
+        let (f, w) = walk(4, &[slot(0.2, 2.0, 0.5), slot(0.1, 2.0, 0.5), slot(1.0, 5.0, 1.0), slot(0.3, 2.0, 1.0)]);
+        assert_eq!(f.len(), 3, "{f:?}");
+        // The "over" of the two in-focus slots, at the first one's depth: 0.2 + 0.5·0.1, alpha 0.75.
+        assert_eq!((f[0].color, f[0].alpha, f[0].depth), ([0.25; 3], 0.75, 2.0));
+        assert_eq!((f[1].color, f[1].depth), ([1.0; 3], 5.0));
+        // After the flush, an in-focus slot goes to the lists too.
+        assert_eq!((f[2].color, f[2].depth), ([0.3; 3], 2.0));
+        assert!(!w.has_sharp());
+        assert_eq!(w.backed, 0);
+    }
+
+    #[test]
+    fn slots_that_end_translucent_get_black_behind_them() {
+        let (f, w) = walk(4, &[slot(0.1, 5.0, 0.25)]);
+        assert_eq!(f.len(), 2, "{f:?}");
+        assert_eq!((f[1].color, f[1].alpha, f[1].depth), ([0.0; 3], 1.0, f32::INFINITY));
+        assert_eq!(w.backed, 1);
+        // A translucent sharp front with nothing behind it lies over black already: no fragment.
+        let (f, w) = walk(4, &[slot(0.1, 2.0, 0.25)]);
+        assert!(f.is_empty() && w.has_sharp() && w.backed == 0, "{f:?}");
+    }
+
+    #[test]
+    fn an_opaque_sharp_front_hides_the_in_focus_slots_behind_it() {
+        let (f, w) = walk(4, &[slot(0.5, 2.0, 1.0), slot(0.4, 2.0, 1.0), slot(1.0, 5.0, 1.0)]);
+        assert_eq!(f.len(), 1, "{f:?}");
+        assert_eq!(f[0].depth, 5.0);
+        assert!(w.has_sharp());
+        assert_eq!((w.hidden, w.backed), (1, 0));
+    }
+
+    #[test]
+    fn the_black_behind_full_lists_stays_in_its_pixel_as_the_front() {
+        let (f, w) = walk(2, &[slot(0.1, 5.0, 0.5), slot(0.2, 6.0, 0.5)]);
+        assert_eq!(f.len(), 2, "{f:?}");
+        assert!(w.has_sharp());
+        assert_eq!((w.front_z, w.backed), (f32::INFINITY, 1));
+    }
+}

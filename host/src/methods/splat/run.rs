@@ -18,7 +18,8 @@ use dof_shaders::lens::ThinLens;
 /// Every stage's buffers, read back by [`splat_with_stages`].
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Intermediates {
-    /// Packed fragments and counts per cell after packing and after each merging step.
+    /// Per cell of the frame (a pixel, or a merged block): its fragment count, and its offset in
+    /// its tile (one entry: no merging level's fragments are stored).
     pub cells: Vec<(Vec<u32>, Vec<u32>)>,
     pub tile_count: Vec<u32>,
     pub dense: Vec<u32>,
@@ -44,7 +45,7 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
     run(backend, image, lens, options, false)
 }
 
-/// [`splat`], keeping every stage's buffers apart (up to two more slot buffers) and reading them
+/// [`splat`], keeping every stage's buffers apart (two more list-sized buffers) and reading them
 /// back as the output's `intermediates`: for comparing backends stage by stage.
 pub fn splat_with_stages(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions) -> Result<SplatOutput> {
     run(backend, image, lens, options, true)
@@ -130,10 +131,10 @@ fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatRe
         let words = backend.buffer_words(id)?;
         backend.read_buffer(id, 0, words)
     };
-    let mut cells = Vec::new();
-    for &(c, n) in &s.cells {
-        cells.push((whole(c)?, whole(n)?));
-    }
+    // Kept apart, the cells' buffer holds their counts, then their offsets in their tiles.
+    let mut counts = whole(s.cells)?;
+    let offsets = counts.split_off(counts.len() / 2);
+    let cells = vec![(counts, offsets)];
     let tiles = report.tiles as u64;
     let tile_count = backend.read_buffer(s.tile_count, 0, tiles)?;
     let dense = backend.read_buffer(s.dense, 0, backend.buffer_words(s.dense)?)?;

@@ -14,7 +14,7 @@ use crate::ops::scan::ScanScratch;
 use crate::ops::sort::SegmentedSort;
 use dof_shaders::KernelDesc;
 use dof_shaders::splat::accumulate::splat_accumulate;
-use dof_shaders::splat::bin::{ALLOC, splat_alloc, splat_bin, splat_compact, splat_tile_count};
+use dof_shaders::splat::bin::{ALLOC, PLACE, PLACE_MERGED, splat_alloc, splat_bin, splat_place, splat_place_merged, splat_tile_count};
 use dof_shaders::splat::fragment::MAX_EDGE;
 use dof_shaders::splat::merge::{MERGE, splat_merge};
 use dof_shaders::splat::pack::{PACK, splat_pack};
@@ -54,7 +54,7 @@ pub struct SplatContextDesc {
     /// Longest list one tile may have (default [`DEFAULT_MAX_LIST`]).
     pub max_list: Option<u32>,
     /// Keep each stage's buffers apart instead of reusing one stage's for a later one (for tests
-    /// that compare every stage; costs up to two more slot buffers).
+    /// that compare every stage; costs two more list-sized buffers).
     #[doc(hidden)]
     pub distinct_stage_buffers: bool,
     /// Hold the buffers that image inputs and outputs go through (10 words a pixel).
@@ -83,9 +83,10 @@ impl SplatContextDesc {
 struct Buffers {
     stats: BufferId,
     sharp: BufferId,
-    /// Per merging step: cells and counts (steps may share a buffer; see `distinct_stage_buffers`).
-    cells: Vec<(BufferId, BufferId)>,
-    cell_offsets: BufferId,
+    /// Per cell of the frame (a pixel, or a merged 2x2 or 4x4 block): its fragment count, then its
+    /// widest radius, which its offset in its tile replaces; then the unsorted list keys (see
+    /// `distinct_stage_buffers`).
+    cells: BufferId,
     tile_count: BufferId,
     tile_base: BufferId,
     tile_radius: BufferId,
@@ -190,50 +191,19 @@ impl SplatContext {
         let sorted_keys_in_scratch = sort.scratch_keys().filter(|_| !desc.distinct_stage_buffers);
         let mut owned = Owned::default();
         let built = (|| {
-            let slot_words = (0..=merge_steps)
-                .map(|s| {
-                    let (_, cap, cx, cy) = cells(w, h, layers, s);
-                    4 * cx as u64 * cy as u64 * cap as u64
-                })
-                .max()
-                .unwrap_or(4 * slots);
-            let mut cell_bufs: Vec<(BufferId, BufferId)> = Vec::new();
-            let shared = !desc.distinct_stage_buffers;
-            // Binning runs after compaction, and nothing reads the last level's cells again: the
-            // unsorted list keys go there when they fit (4 words a slot is far more than the pool).
-            let keys_in_cells = shared && list_entries <= slot_words;
-            for s in 0..=merge_steps {
-                let (_, _, cx, cy) = cells(w, h, layers, s);
-                // Step 2 reads step 1's cells and counts and writes over step 0's, which nothing
-                // reads again.
-                let (cells_buf, counts) = if s == 2 && shared {
-                    cell_bufs[0]
-                } else {
-                    // What else each buffer holds later in the frame, for the memory table.
-                    let holds_last = s == merge_steps || (s == 0 && merge_steps == 2 && shared);
-                    let mut label = format!("splat/cells-{s}");
-                    if s == 0 && merge_steps == 2 && shared {
-                        label += ", cells-2";
-                    }
-                    if s + 1 == merge_steps && shared {
-                        label += ", dense";
-                    }
-                    if holds_last && keys_in_cells {
-                        label += ", keys";
-                    }
-                    let cells_buf = owned.make(backend, slot_words, &label)?;
-                    (cells_buf, owned.make(backend, cx as u64 * cy as u64, &format!("splat/cell-counts-{s}"))?)
-                };
-                cell_bufs.push((cells_buf, counts));
-            }
+            // Fragments are stored once, in the dense array (worst case: every slot blurred and
+            // nothing merged); no level of merging is stored (`dof_shaders::splat::merge`).
             let (_, _, fx, fy) = cells(w, h, layers, merge_steps);
-            let cell_bufs_last = cell_bufs[merge_steps as usize].0;
-            // The dense array takes the merging buffer the last step does not write (step 0's
-            // after one step, step 1's after two): nothing reads it again.
-            let dense = match merge_steps {
-                1 | 2 if !desc.distinct_stage_buffers => cell_bufs[(merge_steps - 1) as usize].0,
-                _ => owned.make(backend, 4 * slots, "splat/dense")?,
+            let cell_words = 2 * fx as u64 * fy as u64;
+            // Binning runs after the place pass, and nothing reads the cells' counts and offsets
+            // again: the unsorted list keys go there (the buffer grows to the pool if need be).
+            let keys_in_cells = !desc.distinct_stage_buffers;
+            let (cells_buf, cells_label) = match keys_in_cells {
+                true => (cell_words.max(list_entries), "splat/cell-counts, cell-offsets, keys"),
+                false => (cell_words, "splat/cell-counts, cell-offsets"),
             };
+            let cells_buf = owned.make(backend, cells_buf, cells_label)?;
+            let dense = owned.make(backend, 4 * slots, "splat/dense")?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             let mask_words = desc.options.aperture.mask_words();
             let stats = per_frame(&mut owned, backend, desc.frames_in_flight, stats::WORDS as u64, "splat/stats")?;
@@ -241,8 +211,7 @@ impl SplatContext {
             let b = Buffers {
                 stats: stats[0],
                 sharp: owned.make(backend, 4 * pixels, "splat/sharp")?,
-                cells: cell_bufs,
-                cell_offsets: owned.make(backend, fx as u64 * fy as u64, "splat/cell-offsets")?,
+                cells: cells_buf,
                 tile_count: owned.make(backend, tiles, "splat/tile-count")?,
                 tile_base: owned.make(backend, tiles, "splat/tile-base")?,
                 tile_radius: owned.make(backend, tiles, "splat/tile-radius")?,
@@ -250,7 +219,7 @@ impl SplatContext {
                 segments: segments[0],
                 dense,
                 mask: owned.make(backend, mask_words.len() as u64, "splat/aperture-mask")?,
-                keys: if keys_in_cells { cell_bufs_last } else { owned.make(backend, list_entries, "splat/keys")? },
+                keys: if keys_in_cells { cells_buf } else { owned.make(backend, list_entries, "splat/keys")? },
                 values: owned.make(backend, list_entries, "splat/values")?,
                 keys_sorted: match sorted_keys_in_scratch {
                     Some(scratch) => scratch,
@@ -410,32 +379,36 @@ impl SplatContext {
         backend.fill(b.stats, 0, stats::WORDS as u64, 0, "splat/clear")?;
         backend.run(splat_plan_reduce::Bindings { layers: fragments, counts, st: b.stats }, pixel_groups, &first, "splat/plan")?;
         backend.run(splat_plan_finish::Bindings { st: b.stats }, [1, 1, 1], &fin, "splat/plan")?;
-        let (cells0, counts0) = b.cells[0];
-        let pack = splat_pack::Bindings { layers: fragments, counts, cells: cells0, cell_counts: counts0, sharp: b.sharp, st: b.stats };
-        backend.run(pack, pixel_groups, &first, "splat/pack")?;
-        for step in 0..last {
-            let (ci, ni) = b.cells[step as usize];
-            let (co, no) = b.cells[step as usize + 1];
-            let (_, _, ox, oy) = cells(f.width, f.height, f.layer_count(), step + 1);
-            let label = if step == 0 { "splat/merge-2x2" } else { "splat/merge-4x4" };
-            let groups = groups_for(&MERGE, ox as u64 * oy as u64);
-            let merge = splat_merge::Bindings { cells_in: ci, counts_in: ni, cells_out: co, counts_out: no, st: b.stats };
-            backend.run(merge, groups, &self.params(f, step), label)?;
-        }
-        let (cells, cell_counts) = b.cells[last as usize];
-        let (cell_off, tile_count, tile_base, tile_radius, st) = (b.cell_offsets, b.tile_count, b.tile_base, b.tile_radius, b.stats);
-        let count = splat_tile_count::Bindings { cells, cell_counts, cell_off, tile_count, tile_base, tile_radius, st };
-        backend.run(count, tile_grid, &fin, "splat/tile-count")?;
-        self.scan.record(backend, b.tile_base, 0, tiles)?;
+        let (_, _, fx, fy) = cells(f.width, f.height, f.layer_count(), last);
+        let (cells, cell_groups) = (b.cells, fx as u64 * fy as u64);
         backend.run(
-            splat_compact::Bindings { cells, cell_counts, cell_off, tile_base, dense: b.dense },
-            tile_grid,
+            splat_pack::Bindings { layers: fragments, counts, cells, sharp: b.sharp, st: b.stats },
+            pixel_groups,
             &fin,
-            "splat/compact",
+            "splat/pack",
         )?;
+        if last > 0 {
+            let label = if last == 1 { "splat/merge-2x2" } else { "splat/merge-4x4" };
+            let merge = splat_merge::Bindings { layers: fragments, counts, cells, st: b.stats };
+            backend.run(merge, groups_for(&MERGE, cell_groups), &fin, label)?;
+        }
+        let (tile_count, tile_base, tile_radius, st) = (b.tile_count, b.tile_base, b.tile_radius, b.stats);
+        let count = splat_tile_count::Bindings { cells, tile_count, tile_base, tile_radius, st };
+        backend.run(count, tile_grid, &fin, "splat/tile-count")?;
+        // The place pass reads the statistics this writes: recorded beside the scan (which it does
+        // not touch), the scan's barriers order it, with no barrier of its own.
         let alloc = splat_alloc::Bindings { tile_count, tile_radius, copy: b.copy, st };
         backend.run(alloc, groups_for(&ALLOC, tiles), &fin, "splat/alloc")?;
-        let (dense, copy, keys, values, segments) = (b.dense, b.copy, b.keys, b.values, b.segments);
+        self.scan.record(backend, b.tile_base, 0, tiles)?;
+        let dense = b.dense;
+        if last == 0 {
+            let place = splat_place::Bindings { layers: fragments, counts, cells, tile_base, dense, st };
+            backend.run(place, groups_for(&PLACE, cell_groups), &fin, "splat/place")?;
+        } else {
+            let place = splat_place_merged::Bindings { layers: fragments, counts, cells, tile_base, dense, st };
+            backend.run(place, groups_for(&PLACE_MERGED, cell_groups), &fin, "splat/place")?;
+        }
+        let (copy, keys, values, segments) = (b.copy, b.keys, b.values, b.segments);
         let bin = splat_bin::Bindings { dense, tile_count, tile_base, tile_radius, copy, keys, values, segments, st };
         backend.run(bin, tile_grid, &fin, "splat/bin")?;
         self.sort.record(backend, b.segments, tiles as u32, b.keys, b.values, b.keys_sorted, b.values_sorted)?;
@@ -518,7 +491,7 @@ impl SplatContext {
     pub fn stage_buffers(&self) -> StageBuffers {
         let b = &self.b;
         StageBuffers {
-            cells: b.cells.clone(),
+            cells: b.cells,
             tile_count: b.tile_count,
             dense: b.dense,
             segments: b.segments,
@@ -533,7 +506,7 @@ impl SplatContext {
 /// See [`SplatContext::stage_buffers`].
 #[doc(hidden)]
 pub struct StageBuffers {
-    pub cells: Vec<(BufferId, BufferId)>,
+    pub cells: BufferId,
     pub tile_count: BufferId,
     pub dense: BufferId,
     pub segments: BufferId,

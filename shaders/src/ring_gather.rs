@@ -307,8 +307,20 @@ fn cut_pixel(c: [f32; 3], cut: Cut, k: u32) -> ([f32; 3], [f32; 3]) {
     if share <= 0.0 {
         return (c, [0.0; 3]);
     }
-    let t = [share * maxf(c[0] - cut.over[0], 0.0), share * maxf(c[1] - cut.over[1], 0.0), share * maxf(c[2] - cut.over[2], 0.0)];
-    ([c[0] - t[0], c[1] - t[1], c[2] - t[2]], t)
+    let mut rest = c;
+    let mut t = [0.0f32; 3];
+    let mut j = 0usize;
+    while j < 3 {
+        let over = cut.over[j];
+        if c[j] > over {
+            t[j] = share * (c[j] - over);
+            // What stays, as a blend of the pixel and the background rather than `c - t`: an HDR
+            // pixel (up to the contract's 2^100) minus its excess would cancel the background to 0.
+            rest[j] = (1.0 - share) * c[j] + share * over;
+        }
+        j += 1;
+    }
+    (rest, t)
 }
 
 /// A pixel's weight in its block's near part: 0 at a 1 px near CoC radius, 1 at 3 px.

@@ -143,8 +143,8 @@ fn highlights_beyond_a_tiles_capacity_stay_in_the_gather() {
     // The context's report counts the 8 beyond the tile's 8, with no readback in the frame.
     let mut cpu = CpuBackend::new();
     let mut ctx = RingGatherContext::new(&mut cpu, &RingGatherContextDesc::new(w, h, 1)).unwrap();
-    let slots: Vec<u32> =
-        img.data.iter().zip(&depth).flat_map(|(c, z)| [c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), z.to_bits()]).collect();
+    // Opaque slots (`dof_shaders::slot`: premultiplied colour, depth, alpha).
+    let slots: Vec<u32> = img.data.iter().zip(&depth).flat_map(|(c, z)| [c[0], c[1], c[2], *z, 1.0].map(f32::to_bits)).collect();
     let input = cpu.create_buffer(slots.len() as u64, "input").unwrap();
     let counts = cpu.create_buffer((w * h) as u64, "counts").unwrap();
     let output = cpu.create_buffer(3 * (w * h) as u64, "output").unwrap();

@@ -56,7 +56,7 @@ log="$out/run.log"
 dof=${DOF:-}
 if [ -z "$dof" ]; then
   echo "== building the release binary (the profile a user builds)" | tee -a "$log"
-  cargo build --release -p dof --no-default-features --features cli 2>&1 | tail -n 3 | tee -a "$log"
+  cargo build --release -p dof-cli --no-default-features 2>&1 | tail -n 3 | tee -a "$log"
   dof=target/release/dof
 fi
 [ -x "$dof" ] || { echo "error: $dof was not built" | tee -a "$log" >&2; exit 1; }

@@ -4,7 +4,7 @@
 //! against what it must give.
 
 use dof_core::backend::{Backend, BufferId, CpuBackend};
-use dof_core::frame::{ContextDesc, Extent, Frame, METHODS, MethodOptions, registry};
+use dof_core::frame::{ContextDesc, Extent, Frame, METHODS, MethodOptions, SLOT_WORDS, registry};
 use dof_core::{ThinLens, shaders};
 
 /// The frame: 64x64 pixels, up to 2 fragments each.
@@ -14,11 +14,12 @@ const LAYERS: u32 = 2;
 const SQUARE: [f32; 3] = [1.0, 0.5, 0.1];
 const BACKGROUND: [f32; 3] = [0.2, 0.2, 0.2];
 
-/// The input in the frame API's layout: per pixel `LAYERS` slots of 4 words (r, g, b, depth), front
+/// The input in the frame API's layout: per pixel `LAYERS` slots of `SLOT_WORDS` = 5 words (r, g, b
+/// premultiplied by alpha, depth, alpha), front
 /// to back, and a count of the slots used. A grey background at depth 10 behind an orange square
 /// (pixels 24 to 39 on both axes) at depth 2.
 fn input() -> (Vec<u32>, Vec<u32>) {
-    let mut slots = vec![0u32; (4 * LAYERS * W * H) as usize];
+    let mut slots = vec![0u32; (SLOT_WORDS * LAYERS * W * H) as usize];
     let mut counts = vec![0u32; (W * H) as usize];
     for y in 0..H {
         for x in 0..W {
@@ -29,8 +30,8 @@ fn input() -> (Vec<u32>, Vec<u32>) {
             }
             fragments.push((BACKGROUND, 10.0));
             for (k, (c, z)) in fragments.iter().enumerate() {
-                let at = 4 * (p * LAYERS as usize + k);
-                slots[at..at + 4].copy_from_slice(&[c[0], c[1], c[2], *z].map(f32::to_bits));
+                let at = SLOT_WORDS as usize * (p * LAYERS as usize + k);
+                slots[at..at + SLOT_WORDS as usize].copy_from_slice(&[c[0], c[1], c[2], *z, 1.0].map(f32::to_bits));
             }
             counts[p] = fragments.len() as u32;
         }

@@ -10,7 +10,9 @@ use dof_shaders::frame_io::{
 };
 use dof_shaders::lens::ThinLens;
 use dof_shaders::radiance::{COUNT_CLAMPED, ClampCountParams, radiance_count_clamped};
-use dof_shaders::slot::SLOT_WORDS;
+/// Words of one layer slot of [`FrameInput::Layers`]: premultiplied red, green, blue, depth,
+/// alpha (f32 bits; `dof_shaders::slot`).
+pub use dof_shaders::slot::SLOT_WORDS;
 
 /// How a depth image encodes depth.
 #[derive(Clone, Copy, Debug, PartialEq)]

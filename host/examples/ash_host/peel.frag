@@ -1,5 +1,5 @@
 #version 450
-// dof: depth peeling with your own passes (dof::frame::RendererPeel).
+// dof: depth peeling with your own passes (dof_core::frame::RendererPeel).
 // The bound of every pixel, written by the library before each pass (one float a pixel, row-major
 // over the attachments' width).
 layout(std430, set = 0, binding = 0) readonly buffer DofPeelBound { float dof_peel_bound[]; };

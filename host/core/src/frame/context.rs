@@ -110,7 +110,9 @@ pub trait DofContext {
     /// command buffer as it was.
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()>;
     /// What the last recorded frame did and left out (reads the device: call once it completed).
-    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport>;
+    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
+        self.report_frame(backend, 0)
+    }
     /// Frames in flight the context serves (chosen at creation, `frames_in_flight` of its
     /// description): each recording writes the next of that many report slots, round robin.
     fn frames_in_flight(&self) -> u32 {
@@ -160,15 +162,7 @@ pub trait DofContext {
     /// # Ok(())
     /// # }
     /// ```
-    fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
-        match frames_ago {
-            0 => self.report(backend),
-            _ => Err(crate::error::Error::InvalidArgument(format!(
-                "the {} context keeps one frame's report; asked for the frame {frames_ago} recordings before the last",
-                self.method()
-            ))),
-        }
-    }
+    fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport>;
     /// Device bytes the context holds.
     fn device_bytes(&self) -> u64;
     /// Makes the context hold frames up to `extent` (frees and reallocates; between frames only,

@@ -146,9 +146,6 @@ impl DofContext for GatherContext {
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
         GatherContext::record(self, backend, frame)
     }
-    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
-        self.report_frame(backend, 0)
-    }
     fn frames_in_flight(&self) -> u32 {
         self.in_flight.frames()
     }

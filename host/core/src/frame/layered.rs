@@ -399,9 +399,6 @@ impl DofContext for LayeredContext {
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
         LayeredContext::record(self, backend, frame)
     }
-    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
-        self.report_frame(backend, 0)
-    }
     fn frames_in_flight(&self) -> u32 {
         self.in_flight.frames()
     }

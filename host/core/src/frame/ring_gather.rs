@@ -216,9 +216,6 @@ impl DofContext for RingGatherContext {
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
         RingGatherContext::record(self, backend, frame)
     }
-    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
-        self.report_frame(backend, 0)
-    }
     fn frames_in_flight(&self) -> u32 {
         self.in_flight.frames()
     }

@@ -526,9 +526,6 @@ impl DofContext for SplatContext {
     fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
         SplatContext::record(self, backend, frame)
     }
-    fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
-        self.report_frame(backend, 0)
-    }
     fn frames_in_flight(&self) -> u32 {
         self.in_flight.frames()
     }

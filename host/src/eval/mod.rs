@@ -7,6 +7,7 @@
 //! Timing: one warm-up run, then the median of `runs` runs, per stage (GPU timestamps on Vulkan,
 //! wall time per dispatch on the CPU backend). Error: [`crate::metrics`] against the reference.
 
+pub mod backend_info;
 pub mod figures;
 pub mod grid;
 pub mod methods;
@@ -83,7 +84,7 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
     if backends.is_empty() {
         return Err(Error::InvalidArgument("the evaluation needs at least one backend".into()));
     }
-    let infos = backends.iter().map(|b| BackendInfo { kind: b.kind().to_string(), device: b.device_name(), driver: b.driver() }).collect();
+    let infos = backends.iter().map(|b| BackendInfo::of(b.as_ref())).collect();
     let mut report = Report::new(options.quick, options.runs, infos);
     for scene_arg in &options.scenes {
         let prepared =

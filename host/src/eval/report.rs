@@ -33,6 +33,8 @@
 //!   `stages_ms`, `wall_ms`, `runs` (0: the warm-up alone, over the budget), `peak_device_bytes`,
 //!   `peak_rss_bytes`, `skipped` (why, where the point was not run), `figures`.
 
+pub use super::backend_info::BackendInfo;
+pub use super::sweep::SweepRecord;
 use crate::layers::RgbImage;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -56,14 +58,6 @@ impl From<&dof_shaders::lens::ThinLens> for LensInfo {
             pixels_per_unit: l.pixels_per_unit,
         }
     }
-}
-
-/// A backend the evaluation ran on.
-#[derive(Clone, Debug, Serialize)]
-pub struct BackendInfo {
-    pub kind: String,
-    pub device: String,
-    pub driver: String,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -105,22 +99,6 @@ pub struct Record {
     pub figures: BTreeMap<String, f64>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub list_histogram: Vec<(u32, u32)>,
-}
-
-/// One point of the max-CoC sweep (Franke et al. 2018, Fig. 13): time only; the aperture differs from the
-/// scene's, so there is no reference to measure error against.
-#[derive(Clone, Debug, Serialize)]
-pub struct SweepRecord {
-    pub scene: String,
-    pub method: String,
-    pub setting: String,
-    pub backend: String,
-    pub device: String,
-    pub max_coc_px: f64,
-    pub time_ms: f64,
-    pub stages_ms: BTreeMap<String, f64>,
-    pub runs: usize,
-    pub figures: BTreeMap<String, f64>,
 }
 
 /// The column of Franke et al. 2018, Table 1, a recorded stage belongs to: `merge` (input preparation: packing

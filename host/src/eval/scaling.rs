@@ -18,9 +18,9 @@
 //! over [`PREDICTED_BUDGETS`] budgets. A warm-up over the budget is the point's only run. A run that
 //! fails skips the rest of its series the same way.
 
+use super::backend_info::BackendInfo;
 use super::methods::{EvaluatedMethod, MethodInput, Setting, evaluated_methods};
 use super::plot::{Axis, Figure, Mark, Series, Shape, palette};
-use super::report::BackendInfo;
 use super::sweep::{input_at_max_coc, max_coc_radius};
 use crate::backend::Backend;
 use crate::error::{Error, Result};
@@ -280,7 +280,7 @@ pub fn scaling(options: &ScalingOptions, backends: &mut [Box<dyn Backend>]) -> R
     }
     let methods = chosen(&options.methods)?;
     let scene = builtin(&options.scene)?;
-    let infos = backends.iter().map(|b| BackendInfo { kind: b.kind().to_string(), device: b.device_name(), driver: b.driver() }).collect();
+    let infos = backends.iter().map(|b| BackendInfo::of(b.as_ref())).collect();
     let mut report = ScalingReport {
         version: env!("CARGO_PKG_VERSION").to_string(),
         scene: options.scene.clone(),

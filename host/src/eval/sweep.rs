@@ -4,13 +4,30 @@
 //! buffer depend on the aperture). Time only: the references are for the scene's own aperture.
 
 use super::methods::{EvaluatedMethod, MethodInput};
-use super::report::SweepRecord;
 use super::timed;
 use crate::backend::Backend;
 use crate::error::{Error, Result};
 use crate::layers::LayeredImage;
 use crate::scene::{BuiltinScene, LayerOptions, raycast_layers};
 use dof_shaders::lens::ThinLens;
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// One point of the max-CoC sweep (Franke et al. 2018, Fig. 13): time only; the aperture differs from the
+/// scene's, so there is no reference to measure error against.
+#[derive(Clone, Debug, Serialize)]
+pub struct SweepRecord {
+    pub scene: String,
+    pub method: String,
+    pub setting: String,
+    pub backend: String,
+    pub device: String,
+    pub max_coc_px: f64,
+    pub time_ms: f64,
+    pub stages_ms: BTreeMap<String, f64>,
+    pub runs: usize,
+    pub figures: BTreeMap<String, f64>,
+}
 
 pub struct SweepOptions {
     /// Largest CoC radii present (px) to time at, each `> 0`.

@@ -177,7 +177,7 @@ pub fn peel_layers(
     // whose pixel centres are the stratified sub-samples), then resolved per pixel.
     let side = grid_side(options.subsamples);
     let coarse = camera.overscan(margin).frame()?;
-    let fine_camera = super::peel_context::sub_sample_camera(camera, side);
+    let fine_camera = sub_sample_camera(camera, side);
     let frame = fine_camera.overscan(margin * side).frame()?;
     if options.max_layers == 0 || !(options.edge_depth_ratio >= 0.0) {
         return Err(Error::InvalidArgument(format!(
@@ -227,4 +227,10 @@ pub fn peel_layers(
     let (passes, times) = result?;
     let full = if side > 1 { resolve_subsamples(&full, side, options.max_layers, options.edge_depth_ratio)? } else { full };
     Ok(Peeled { image: apply_disocclusion(full, &coarse, lens, options, margin), passes, times })
+}
+
+/// `camera` with a `side`-times finer pixel grid over the same view: its pixel centres are the
+/// stratified sub-samples of `camera`'s pixels (`dof_shaders::resolve::subsample_offset`).
+pub(crate) fn sub_sample_camera(camera: &Camera, side: u32) -> Camera {
+    Camera { width: camera.width.saturating_mul(side), height: camera.height.saturating_mul(side), ..*camera }
 }

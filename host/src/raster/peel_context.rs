@@ -12,7 +12,7 @@
 //! disocclusion buffer applied on the device. No allocation, upload, readback or submission.
 
 use super::mesh::{DeviceMesh, RasterScene};
-use super::peel::{Pass, check_view};
+use super::peel::{Pass, check_view, sub_sample_camera};
 use super::view::View;
 use crate::backend::{Backend, BackendKind, push_words};
 use crate::error::{Error, Result};
@@ -254,10 +254,4 @@ impl MeshPeelContext {
     pub fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
         Ok(self.peel_report(backend)?.context_report(self.margin))
     }
-}
-
-/// `camera` with a `side`-times finer pixel grid over the same view: its pixel centres are the
-/// stratified sub-samples of `camera`'s pixels (`dof_shaders::resolve::subsample_offset`).
-pub(crate) fn sub_sample_camera(camera: &Camera, side: u32) -> Camera {
-    Camera { width: camera.width.saturating_mul(side), height: camera.height.saturating_mul(side), ..*camera }
 }

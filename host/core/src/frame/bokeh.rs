@@ -55,6 +55,8 @@ pub struct BokehContextDesc {
     pub frames_in_flight: u32,
 }
 
+super::context::described!(BokehContextDesc);
+
 impl BokehContextDesc {
     pub fn new(max_width: u32, max_height: u32, max_layers: u32, options: BokehOptions) -> Self {
         BokehContextDesc { max_width, max_height, max_layers, options, image_io: false, frames_in_flight: 1 }

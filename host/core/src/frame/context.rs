@@ -4,35 +4,11 @@
 //! methods (the CLI, the viewer, the benchmarks, the fuzz target) hold `Box<dyn DofContext>` made
 //! through the [registry](super::registry) and never name a concrete context.
 
+pub use super::extent::Extent;
 use super::io::Frame;
 use crate::backend::Backend;
 use crate::error::Result;
 use std::collections::BTreeMap;
-
-/// The largest frame a context records: pixels, and fragment slots per pixel of a multi-layer
-/// input.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Extent {
-    pub width: u32,
-    pub height: u32,
-    pub layers: u32,
-}
-
-impl Extent {
-    pub fn new(width: u32, height: u32, layers: u32) -> Self {
-        Extent { width, height, layers }
-    }
-
-    /// Whether a frame of this size and layer count fits.
-    pub fn holds(&self, width: u32, height: u32, layers: u32) -> bool {
-        width <= self.width && height <= self.height && layers <= self.layers
-    }
-
-    /// The smallest extent holding both.
-    pub fn union(&self, other: Extent) -> Extent {
-        Extent::new(self.width.max(other.width), self.height.max(other.height), self.layers.max(other.layers))
-    }
-}
 
 /// What every context's description holds: its largest frame, as `max_width`, `max_height` and
 /// `max_layers`.
@@ -42,27 +18,21 @@ pub(crate) trait Described: Clone {
     fn at(&self, extent: Extent) -> Self;
 }
 
+/// `described!(Desc)` in a context's module: [`Described`] for a description with `max_width`,
+/// `max_height` and `max_layers` fields.
 macro_rules! described {
-    ($($desc:ty),* $(,)?) => {$(
-        impl Described for $desc {
-            fn extent(&self) -> Extent {
-                Extent::new(self.max_width, self.max_height, self.max_layers)
+    ($desc:ty) => {
+        impl $crate::frame::context::Described for $desc {
+            fn extent(&self) -> $crate::frame::context::Extent {
+                $crate::frame::context::Extent::new(self.max_width, self.max_height, self.max_layers)
             }
-            fn at(&self, e: Extent) -> Self {
+            fn at(&self, e: $crate::frame::context::Extent) -> Self {
                 Self { max_width: e.width, max_height: e.height, max_layers: e.layers, ..self.clone() }
             }
         }
-    )*};
+    };
 }
-
-described!(
-    super::splat::SplatContextDesc,
-    super::gather::GatherContextDesc,
-    super::ring_gather::RingGatherContextDesc,
-    super::bokeh::BokehContextDesc,
-    super::raytrace::RaytraceContextDesc,
-    super::layered::LayeredContextDesc,
-);
+pub(crate) use described;
 
 /// How every context resizes: one made by `make` from its description at `extent` replaces it,
 /// and the old one is freed after, so a failure keeps the old one. Callers check first that

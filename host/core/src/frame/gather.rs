@@ -31,6 +31,8 @@ pub struct GatherContextDesc {
     pub frames_in_flight: u32,
 }
 
+super::context::described!(GatherContextDesc);
+
 impl GatherContextDesc {
     pub fn new(max_width: u32, max_height: u32, max_layers: u32) -> Self {
         GatherContextDesc { max_width, max_height, max_layers, max_radius: None, image_io: false, frames_in_flight: 1 }

@@ -1,7 +1,7 @@
 //! What a frame reads and writes, for every context: the caller's buffers or images, how a depth
 //! image encodes depth, and the buffers that image inputs and outputs go through on the device.
 
-use super::context::Extent;
+use super::extent::Extent;
 use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::frame_io::{

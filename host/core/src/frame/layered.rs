@@ -123,6 +123,8 @@ pub struct LayeredContextDesc {
     pub frames_in_flight: u32,
 }
 
+super::context::described!(LayeredContextDesc);
+
 impl LayeredContextDesc {
     pub fn new(max_width: u32, max_height: u32, max_layers: u32, options: LayeredOptions) -> Self {
         LayeredContextDesc { max_width, max_height, max_layers, options, image_io: false, frames_in_flight: 1 }

@@ -38,6 +38,7 @@
 pub mod bokeh;
 mod checked;
 pub mod context;
+mod extent;
 pub mod gather;
 mod in_flight;
 pub mod io;

@@ -298,3 +298,5 @@ impl DofContext for RaytraceContext {
         RaytraceContext::destroy(*self, backend)
     }
 }
+
+super::context::described!(RaytraceContextDesc);

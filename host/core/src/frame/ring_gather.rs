@@ -72,6 +72,8 @@ pub struct RingGatherContextDesc {
     pub frames_in_flight: u32,
 }
 
+super::context::described!(RingGatherContextDesc);
+
 impl RingGatherContextDesc {
     pub fn new(max_width: u32, max_height: u32, max_layers: u32) -> Self {
         RingGatherContextDesc {

@@ -580,3 +580,5 @@ impl DofContext for SplatContext {
         SplatContext::destroy(*self, backend)
     }
 }
+
+super::context::described!(SplatContextDesc);

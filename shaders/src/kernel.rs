@@ -2,8 +2,9 @@
 //!
 //! `kernel!` takes a body function (see [`crate::exec`]) and generates
 //! - on SPIR-V, the `#[spirv(compute(threads(N)))]` entry point (rust-gpu names it `module::function`), which binds the
-//!   storage buffers (descriptor set 0, bindings in the order listed), the push constants and the
-//!   workgroup memory, and calls the body;
+//!   storage buffers (descriptor set 0, bindings in the order listed; those marked `read` as `&[u32]`,
+//!   which rust-gpu decorates `NonWritable`), the push constants and the workgroup memory, and calls
+//!   the body;
 //! - on the CPU, a `KernelDesc` constant with the same entry name, workgroup size and binding count,
 //!   and a CPU entry that runs the body for one workgroup;
 //! - on the CPU, a module named like the entry point holding `Bindings<B>`: one field per storage

@@ -1,8 +1,9 @@
 //! How one kernel body runs on both backends.
 //!
 //! A kernel is written once as a function generic over [`Group`] (the workgroup executing it),
-//! [`Mem`] (its writable storage buffers) and [`Load`] (its read-only ones, which may only be loaded). `Group::each` runs a closure for every invocation of the workgroup and
-//! then synchronises: on the GPU it is "call, then barrier"; on the CPU it is a loop over the local ids,
+//! [`Mem`] (its writable storage buffers) and [`Load`] (its read-only ones, which may only be
+//! loaded). `Group::each` runs a closure for every invocation of the workgroup and then
+//! synchronises: on the GPU it is "call, then barrier"; on the CPU it is a loop over the local ids,
 //! which is one legal schedule of the same program. The rule that makes this work: **code outside
 //! `each` must be uniform** (the same for every invocation: loop bounds, workgroup ids, values read from
 //! shared memory after a barrier); per-invocation state that must survive a barrier lives in workgroup

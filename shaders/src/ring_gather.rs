@@ -1076,7 +1076,8 @@ pub fn composite_pass<G: Group, R: Load, M: Mem>(
 
 kernel!(
     /// Half-resolution colour and signed CoC, each tile's largest near-field radius and its highlights, taken out of the full-resolution colours.
-    RING_GATHER_DOWNSAMPLE = ring_gather_downsample [64] (RingGatherParams) shared [u32; 6 * 64] { read color, read depth, half, tiles, bright, fine, stats } => downsample_pass
+    RING_GATHER_DOWNSAMPLE = ring_gather_downsample [64] (RingGatherParams) shared [u32; 6 * 64]
+        { read color, read depth, half, tiles, bright, fine, stats } => downsample_pass
 );
 kernel!(
     /// Each tile's near-field radius dilated over the tiles it reaches, and its highlight reach.
@@ -1088,7 +1089,8 @@ kernel!(
 );
 kernel!(
     /// The full-resolution composite of the pixel, the background field, the near field and the highlights' discs.
-    RING_GATHER_COMPOSITE = ring_gather_composite [64] (RingGatherParams) { read fine, read depth, read fields, read bright, read dilated, out } => composite_pass
+    RING_GATHER_COMPOSITE = ring_gather_composite [64] (RingGatherParams)
+        { read fine, read depth, read fields, read bright, read dilated, out } => composite_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

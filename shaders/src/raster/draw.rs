@@ -196,12 +196,16 @@ fn tile_bounds(p: &RasterParams, c: &[[f32; 3]; 3]) -> [u32; 4] {
 
 kernel!(
     /// Every triangle's tile range for the view: the prepass of the draw's CPU fallback.
-    RASTER_SETUP = raster_setup [64] (RasterParams) { read vertices, read triangles, read materials, read textures, read texels, read reach, bounds, read args, read target } => setup_pass
+    RASTER_SETUP = raster_setup [64] (RasterParams)
+        { read vertices, read triangles, read materials, read textures, read texels, read reach, bounds, read args, read target }
+        => setup_pass
 );
 
 kernel!(
     /// The rasterising draw as a compute kernel: the draw's CPU fallback.
-    RASTER_FALLBACK = raster_fallback [256] (RasterParams) { read vertices, read triangles, read materials, read textures, read texels, read reach, read bounds, read args, target } => fallback_pass
+    RASTER_FALLBACK = raster_fallback [256] (RasterParams)
+        { read vertices, read triangles, read materials, read textures, read texels, read reach, read bounds, read args, target }
+        => fallback_pass
 );
 
 /// Vertex stage: vertex `i` is corner `i % 3` of triangle `i / 3`, pulled from the buffers. A

@@ -155,5 +155,6 @@ pub fn shade_pass<G: Group, R: Load, M: Mem>(
 
 kernel!(
     /// Shades the visibility buffer into a layer (and the next reach) or the accumulation buffer.
-    RASTER_SHADE = raster_shade [256] (ShadeParams) { read vis, read vertices, read triangles, read materials, read textures, read texels, out, reach } => shade_pass
+    RASTER_SHADE = raster_shade [256] (ShadeParams)
+        { read vis, read vertices, read triangles, read materials, read textures, read texels, out, reach } => shade_pass
 );

@@ -398,7 +398,8 @@ kernel!(
 );
 kernel!(
     /// Merged: each cell's merged fragments into one dense array, tile by tile.
-    PLACE_MERGED = splat_place_merged [256] (SplatParams) { read layers, read counts, read cells, read tile_base, dense, read st } => place_merged_pass
+    PLACE_MERGED = splat_place_merged [256] (SplatParams)
+        { read layers, read counts, read cells, read tile_base, dense, read st } => place_merged_pass
 );
 kernel!(
     /// Which tiles no list fragment reaches (copied through).

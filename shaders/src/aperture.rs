@@ -64,7 +64,7 @@ impl Aperture {
         let (x0, y0) = (floor(fx), floor(fy));
         let (tx, ty) = (fx - x0, fy - y0);
         let texel = |x: f32, y: f32| -> f32 {
-            if x < 0.0 || y < 0.0 || x >= n || y >= n { 0.0 } else { f32::from_bits(mask.load_word(y as u32 * self.mask + x as u32)) }
+            if x < 0.0 || y < 0.0 || x >= n || y >= n { 0.0 } else { f32::from_bits(mask.load(y as u32 * self.mask + x as u32)) }
         };
         let top = texel(x0, y0) * (1.0 - tx) + texel(x0 + 1.0, y0) * tx;
         let bottom = texel(x0, y0 + 1.0) * (1.0 - tx) + texel(x0 + 1.0, y0 + 1.0) * tx;

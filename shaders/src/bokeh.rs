@@ -69,7 +69,7 @@ pub fn luminance(c: [f32; 3]) -> f32 {
 }
 
 #[inline]
-fn colour<M: Mem>(m: &M, i: u32) -> [f32; 3] {
+fn colour(m: &impl Load, i: u32) -> [f32; 3] {
     crate::radiance::clamp_color([f32::from_bits(m.load(3 * i)), f32::from_bits(m.load(3 * i + 1)), f32::from_bits(m.load(3 * i + 2))])
 }
 
@@ -89,7 +89,7 @@ pub fn sprite_weight<L: Load>(d: [f32; 2], s: f32, mirror: f32, ap: &Aperture, m
 /// The detection rule at pixel `pi`: for a bright pixel, its colour, the neighbourhood mean, its CoC
 /// radius and depth.
 #[inline]
-fn bright<M: Mem>(p: &BokehParams, color: &M, depth: &M, pi: u32) -> Option<([f32; 3], [f32; 3], f32, f32)> {
+fn bright(p: &BokehParams, color: &impl Load, depth: &impl Load, pi: u32) -> Option<([f32; 3], [f32; 3], f32, f32)> {
     let (x, y) = ((pi % p.width) as i32, (pi / p.width) as i32);
     let c = colour(color, pi);
     let mut sum = [0.0f32; 3];
@@ -123,7 +123,7 @@ fn bright<M: Mem>(p: &BokehParams, color: &M, depth: &M, pi: u32) -> Option<([f3
 }
 
 /// Detection: a flag per bright pixel (scanned into sprite slots next) and the append counter.
-pub fn detect_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, color: M, depth: M, mut flags: M, mut counters: M) {
+pub fn detect_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &BokehParams, color: R, depth: R, mut flags: M, mut counters: M) {
     for_each_item(g, p.width * p.height, |pi| {
         let hit = bright(p, &color, &depth, pi).is_some();
         if hit {
@@ -136,7 +136,16 @@ pub fn detect_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, color: M, depth
 /// Sprites into their slots (the scanned flags, so the order is the image's, the same every run),
 /// and the blur's input: per channel the smaller of the pixel and the neighbourhood mean where a
 /// sprite took the excess, else the pixel.
-pub fn emit_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, color: M, depth: M, slots: M, mut sprites: M, mut rest: M, mask: M) {
+pub fn emit_pass<G: Group, R: Load, M: Mem>(
+    g: &mut G,
+    p: &BokehParams,
+    color: R,
+    depth: R,
+    slots: R,
+    mut sprites: M,
+    mut rest: M,
+    mask: R,
+) {
     for_each_item(g, p.width * p.height, |pi| {
         let mut keep = colour(&color, pi);
         if let Some((c, mean, r, z)) = bright(p, &color, &depth, pi) {
@@ -181,7 +190,7 @@ pub fn args_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, mut counters: M) 
 
 /// The CPU backend's draw: every pixel centre of a 16x16 tile against every sprite drawn (RGBA, 4
 /// words a pixel, added to what `target` holds, as additive blending does).
-pub fn splat_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, sprites: M, mask: M, counters: M, mut target: M) {
+pub fn splat_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &BokehParams, sprites: R, mask: R, counters: R, mut target: M) {
     let [wx, wy, _] = g.workgroup_id();
     let n = counters.load(1);
     g.each(|lid| {
@@ -212,7 +221,7 @@ pub fn splat_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, sprites: M, mask
 }
 
 /// `out = blur + sprites` (sprites as RGBA, 4 words a pixel).
-pub fn combine_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, blur: M, sprites: M, mut out: M) {
+pub fn combine_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &BokehParams, blur: R, sprites: R, mut out: M) {
     for_each_item(g, p.width * p.height, |pi| {
         let mut k = 0;
         while k < 3 {
@@ -225,11 +234,11 @@ pub fn combine_pass<G: Group, M: Mem>(g: &mut G, p: &BokehParams, blur: M, sprit
 
 kernel!(
     /// Bright-pixel detection: flags and the append counter.
-    BOKEH_DETECT = bokeh_detect [256] (BokehParams) { color, depth, flags, counters } reads { color, depth } => detect_pass
+    BOKEH_DETECT = bokeh_detect [256] (BokehParams) { read color, read depth, flags, counters } => detect_pass
 );
 kernel!(
     /// Sprites into their scanned slots, and the blur's input.
-    BOKEH_EMIT = bokeh_emit [256] (BokehParams) { color, depth, slots, sprites, rest, mask } reads { color, depth, slots, mask } => emit_pass
+    BOKEH_EMIT = bokeh_emit [256] (BokehParams) { read color, read depth, read slots, sprites, rest, read mask } => emit_pass
 );
 kernel!(
     /// The indirect draw command from the detection counter.
@@ -237,11 +246,11 @@ kernel!(
 );
 kernel!(
     /// The sprites splatted by a compute kernel: the draw's CPU fallback.
-    BOKEH_SPLAT = bokeh_splat [256] (BokehParams) { sprites, mask, counters, target } reads { sprites, mask, counters } => splat_pass
+    BOKEH_SPLAT = bokeh_splat [256] (BokehParams) { read sprites, read mask, read counters, target } => splat_pass
 );
 kernel!(
     /// Blur plus sprites.
-    BOKEH_COMBINE = bokeh_combine [256] (BokehParams) { blur, sprites, out } reads { blur, sprites } => combine_pass
+    BOKEH_COMBINE = bokeh_combine [256] (BokehParams) { read blur, read sprites, out } => combine_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

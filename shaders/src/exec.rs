@@ -1,8 +1,9 @@
 //! How one kernel body runs on both backends.
 //!
-//! A kernel is written once as a function generic over [`Group`] (the workgroup executing it) and
-//! [`Mem`] (its storage buffers). `Group::each` runs a closure for every invocation of the workgroup and
-//! then synchronises: on the GPU it is "call, then barrier"; on the CPU it is a loop over the local ids,
+//! A kernel is written once as a function generic over [`Group`] (the workgroup executing it),
+//! [`Mem`] (its writable storage buffers) and [`Load`] (its read-only ones, which may only be
+//! loaded). `Group::each` runs a closure for every invocation of the workgroup and then
+//! synchronises: on the GPU it is "call, then barrier"; on the CPU it is a loop over the local ids,
 //! which is one legal schedule of the same program. The rule that makes this work: **code outside
 //! `each` must be uniform** (the same for every invocation: loop bounds, workgroup ids, values read from
 //! shared memory after a barrier); per-invocation state that must survive a barrier lives in workgroup
@@ -25,32 +26,25 @@ pub trait Group {
     fn each(&mut self, f: impl FnMut(u32));
 }
 
-/// A storage buffer of `u32` words.
-pub trait Mem {
+/// Read access to a storage buffer of `u32` words: all a kernel's read-only binding offers (on the
+/// GPU it is declared `&[u32]`, which rust-gpu decorates `NonWritable`), and what a graphics stage's
+/// bindings offer (they may not write storage buffers without a device feature).
+pub trait Load {
     fn len(&self) -> u32;
     fn load(&self, i: u32) -> u32;
-    fn store(&mut self, i: u32, v: u32);
-    /// Atomic add (queue-family scope: visible to every workgroup of the dispatch); returns the previous value.
-    fn atomic_add(&mut self, i: u32, v: u32) -> u32;
-    /// Atomic unsigned max (queue-family scope); returns the previous value.
-    fn atomic_max(&mut self, i: u32, v: u32) -> u32;
     #[inline]
     fn is_empty(&self) -> bool {
         self.len() == 0
     }
 }
 
-/// Read-only access to words: what a read-only binding (a graphics stage's, which may not write
-/// storage buffers without a device feature) offers; every [`Mem`] is one.
-pub trait Load {
-    fn load_word(&self, i: u32) -> u32;
-}
-
-impl<M: Mem> Load for M {
-    #[inline]
-    fn load_word(&self, i: u32) -> u32 {
-        self.load(i)
-    }
+/// A writable storage buffer of `u32` words.
+pub trait Mem: Load {
+    fn store(&mut self, i: u32, v: u32);
+    /// Atomic add (queue-family scope: visible to every workgroup of the dispatch); returns the previous value.
+    fn atomic_add(&mut self, i: u32, v: u32) -> u32;
+    /// Atomic unsigned max (queue-family scope); returns the previous value.
+    fn atomic_max(&mut self, i: u32, v: u32) -> u32;
 }
 
 /// Reads the push constants of a kernel from `u32` words (the CPU side of `#[spirv(push_constant)]`).
@@ -62,7 +56,7 @@ pub fn params<P: bytemuck::Pod>(words: &[u32]) -> P {
 
 #[cfg(not(target_arch = "spirv"))]
 mod cpu {
-    use super::{Group, Mem};
+    use super::{Group, Load, Mem};
     use core::sync::atomic::{AtomicU32, Ordering::Relaxed};
 
     /// A workgroup emulated on one CPU thread: `each` loops over the local ids.
@@ -110,7 +104,7 @@ mod cpu {
         }
     }
 
-    impl Mem for CpuMem<'_> {
+    impl Load for CpuMem<'_> {
         #[inline]
         fn len(&self) -> u32 {
             self.words.len() as u32
@@ -119,6 +113,9 @@ mod cpu {
         fn load(&self, i: u32) -> u32 {
             self.words[i as usize].load(Relaxed)
         }
+    }
+
+    impl Mem for CpuMem<'_> {
         #[inline]
         fn store(&mut self, i: u32, v: u32) {
             self.words[self.writable(i)].store(v, Relaxed)
@@ -159,7 +156,7 @@ pub use cpu::{CpuDispatch, CpuGroup, CpuMem};
 
 #[cfg(target_arch = "spirv")]
 mod gpu {
-    use super::{Group, Mem};
+    use super::{Group, Load, Mem};
     use spirv_std::arch::{atomic_i_add, atomic_u_max, control_barrier};
     use spirv_std::memory::{Scope, Semantics};
 
@@ -200,14 +197,7 @@ mod gpu {
     /// A read-only storage buffer (declared `&[u32]`, so rust-gpu marks it non-writable).
     pub struct GpuRead<'a>(pub &'a [u32]);
 
-    impl super::Load for GpuRead<'_> {
-        #[inline]
-        fn load_word(&self, i: u32) -> u32 {
-            self.0[i as usize]
-        }
-    }
-
-    impl Mem for GpuMem<'_> {
+    impl Load for GpuRead<'_> {
         #[inline]
         fn len(&self) -> u32 {
             self.0.len() as u32
@@ -216,6 +206,20 @@ mod gpu {
         fn load(&self, i: u32) -> u32 {
             self.0[i as usize]
         }
+    }
+
+    impl Load for GpuMem<'_> {
+        #[inline]
+        fn len(&self) -> u32 {
+            self.0.len() as u32
+        }
+        #[inline]
+        fn load(&self, i: u32) -> u32 {
+            self.0[i as usize]
+        }
+    }
+
+    impl Mem for GpuMem<'_> {
         #[inline]
         fn store(&mut self, i: u32, v: u32) {
             self.0[i as usize] = v;

@@ -15,7 +15,7 @@
 //! - `frame_to_rgba` (one invocation per pixel): the methods' RGB result (3 f32 words a pixel) as
 //!   RGBA32F or RGBA16F with alpha 1, ready to copy into the caller's image.
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::half::{b10g11r11_to_f32, f16_to_f32, f32_to_f16};
 use crate::slot::{self, Slot};
 use crate::wg::for_each_item;
@@ -80,7 +80,7 @@ pub fn view_depth(p: &FrameIoParams, d: f32) -> f32 {
 }
 
 #[inline]
-fn load_rgb<M: Mem>(color: &M, p: &FrameIoParams, i: u32) -> [f32; 3] {
+fn load_rgb(color: &impl Load, p: &FrameIoParams, i: u32) -> [f32; 3] {
     if p.color_words == 1 {
         b10g11r11_to_f32(color.load(i))
     } else if p.color_words == 2 {
@@ -91,7 +91,7 @@ fn load_rgb<M: Mem>(color: &M, p: &FrameIoParams, i: u32) -> [f32; 3] {
     }
 }
 
-pub fn from_images_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, color: M, depth: M, mut fragments: M, mut counts: M) {
+pub fn from_images_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &FrameIoParams, color: R, depth: R, mut fragments: M, mut counts: M) {
     for_each_item(g, p.width * p.height, |i| {
         let c = load_rgb(&color, p, i);
         let z = view_depth(p, depth_value(p, depth.load(i)));
@@ -100,7 +100,7 @@ pub fn from_images_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, color: M
     });
 }
 
-pub fn front_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, fragments: M, counts: M, mut color: M, mut depth: M) {
+pub fn front_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &FrameIoParams, fragments: R, counts: R, mut color: M, mut depth: M) {
     for_each_item(g, p.width * p.height, |i| {
         let (c, z) = slot::flatten(counts.load(i).min(p.layers), |k| slot::load(&fragments, i * p.layers + k));
         color.store(3 * i, c[0].to_bits());
@@ -110,7 +110,7 @@ pub fn front_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, fragments: M, 
     });
 }
 
-pub fn to_rgba_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, rgb: M, mut rgba: M) {
+pub fn to_rgba_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &FrameIoParams, rgb: R, mut rgba: M) {
     for_each_item(g, p.width * p.height, |i| {
         let c = [rgb.load(3 * i), rgb.load(3 * i + 1), rgb.load(3 * i + 2)];
         if p.color_words == 2 {
@@ -128,15 +128,15 @@ pub fn to_rgba_pass<G: Group, M: Mem>(g: &mut G, p: &FrameIoParams, rgb: M, mut 
 
 kernel!(
     /// A colour and a depth image (copied into buffers) as one fragment slot per pixel.
-    FROM_IMAGES = frame_from_images [256] (FrameIoParams) { color, depth, fragments, counts } reads { color, depth } => from_images_pass
+    FROM_IMAGES = frame_from_images [256] (FrameIoParams) { read color, read depth, fragments, counts } => from_images_pass
 );
 kernel!(
     /// The front slot of a multi-layer input as colour and depth.
-    FRONT = frame_front [256] (FrameIoParams) { fragments, counts, color, depth } reads { fragments, counts } => front_pass
+    FRONT = frame_front [256] (FrameIoParams) { read fragments, read counts, color, depth } => front_pass
 );
 kernel!(
     /// The RGB result as RGBA32F or RGBA16F with alpha 1.
-    TO_RGBA = frame_to_rgba [256] (FrameIoParams) { rgb, rgba } reads { rgb } => to_rgba_pass
+    TO_RGBA = frame_to_rgba [256] (FrameIoParams) { read rgb, rgba } => to_rgba_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

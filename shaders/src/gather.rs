@@ -12,7 +12,7 @@
 //! Non-finite colours and depths are skipped, so a NaN or Inf pixel never spreads; a pixel whose
 //! own value is skipped and that nothing covers comes out black.
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::lens::{ThinLens, is_finite as finite, is_positive};
 
 pub const TILE: u32 = 8;
@@ -37,21 +37,21 @@ pub fn radius_px(lens: &ThinLens, z: f32, max_radius: f32) -> f32 {
 /// Colour of pixel `i` under the numerical contract ([`crate::radiance`]), or `None` when any
 /// channel is not finite.
 #[inline]
-fn colour<M: Mem>(color: &M, i: u32) -> Option<[f32; 3]> {
+fn colour(color: &impl Load, i: u32) -> Option<[f32; 3]> {
     let c = [f32::from_bits(color.load(3 * i)), f32::from_bits(color.load(3 * i + 1)), f32::from_bits(color.load(3 * i + 2))];
     if finite(c[0]) && finite(c[1]) && finite(c[2]) { Some(crate::radiance::clamp_color(c)) } else { None }
 }
 
 /// The planned window radius: the reduction's, within the configured cap.
 #[inline]
-pub fn planned_radius<M: Mem>(p: &GatherParams, plan: &M) -> u32 {
+pub fn planned_radius(p: &GatherParams, plan: &impl Load) -> u32 {
     let r = plan.load(0);
     if r < p.max_radius { r } else { p.max_radius }
 }
 
 /// Grid-stride over pixels: the largest CoC radius (capped at `max_radius`, rounded up to whole
 /// pixels) of every sample with a positive depth, into `plan[0]` (zeroed before).
-pub fn plan_pass<G: Group, M: Mem>(g: &mut G, p: &GatherParams, sh: &mut [u32; 2 * 256], depth: M, mut plan: M) {
+pub fn plan_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &GatherParams, sh: &mut [u32; 2 * 256], depth: R, mut plan: M) {
     let stride = g.num_workgroups()[0] * 256;
     let base = g.workgroup_id()[0] * 256;
     let pixels = p.width * p.height;
@@ -78,7 +78,7 @@ pub fn plan_pass<G: Group, M: Mem>(g: &mut G, p: &GatherParams, sh: &mut [u32; 2
 }
 
 /// One invocation per pixel of an 8x8 tile.
-pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &GatherParams, color: M, depth: M, mut out: M, plan: M) {
+pub fn gather_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &GatherParams, color: R, depth: R, mut out: M, plan: R) {
     let radius = planned_radius(p, &plan);
     let [wx, wy, _] = g.workgroup_id();
     g.each(|lid| {
@@ -129,11 +129,11 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &GatherParams, color: M, dept
 
 kernel!(
     /// The gathering baseline over a colour (3 words a pixel) and depth (1 word a pixel) image.
-    GATHER = gather [64] (GatherParams) { color, depth, out, plan } reads { color, depth, plan } => gather_pass
+    GATHER = gather [64] (GatherParams) { read color, read depth, out, read plan } => gather_pass
 );
 kernel!(
     /// The largest CoC radius present, into the plan word the gather reads.
-    GATHER_PLAN = gather_plan [256] (GatherParams) shared [u32; 2 * 256] { depth, plan } reads { depth } => plan_pass
+    GATHER_PLAN = gather_plan [256] (GatherParams) shared [u32; 2 * 256] { read depth, plan } => plan_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

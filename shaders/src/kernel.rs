@@ -2,8 +2,9 @@
 //!
 //! `kernel!` takes a body function (see [`crate::exec`]) and generates
 //! - on SPIR-V, the `#[spirv(compute(threads(N)))]` entry point (rust-gpu names it `module::function`), which binds the
-//!   storage buffers (descriptor set 0, bindings in the order listed), the push constants and the
-//!   workgroup memory, and calls the body;
+//!   storage buffers (descriptor set 0, bindings in the order listed; those marked `read` as `&[u32]`,
+//!   which rust-gpu decorates `NonWritable`), the push constants and the workgroup memory, and calls
+//!   the body;
 //! - on the CPU, a `KernelDesc` constant with the same entry name, workgroup size and binding count,
 //!   and a CPU entry that runs the body for one workgroup;
 //! - on the CPU, a module named like the entry point holding `Bindings<B>`: one field per storage
@@ -24,9 +25,10 @@ pub struct KernelDesc {
     pub workgroup_size: u32,
     /// Storage buffers at bindings `0..bindings` of descriptor set 0.
     pub bindings: u32,
-    /// The bindings the kernel only reads, as a mask (bit `i`: binding `i`), from its declaration's
-    /// `reads { .. }`. The CPU backend faults on a write to one (so every CPU test checks the
-    /// declaration); the Vulkan backend's barriers count them as reads, not writes.
+    /// The bindings the kernel only reads, as a mask (bit `i`: binding `i`): those its declaration
+    /// marks `read`. They are `NonWritable` in its SPIR-V, and its body can only load them; the CPU
+    /// backend also faults on a write to one, and the Vulkan backend's barriers count them as reads,
+    /// not writes.
     pub read_only: u32,
     /// Size of the push constants in bytes.
     pub push_bytes: u32,
@@ -96,72 +98,71 @@ pub const fn entry_name(path: &'static str) -> &'static str {
     path
 }
 
-/// The mask of `reads` among `bindings` (a compile-time error names a read that is no binding).
+/// The mask of the bindings marked `read` (bit `i`: binding `i`).
 #[cfg(not(target_arch = "spirv"))]
-pub const fn read_mask(bindings: &[&str], reads: &[&str]) -> u32 {
+pub const fn read_mask(read: &[bool]) -> u32 {
     let mut mask = 0u32;
-    let mut r = 0;
-    while r < reads.len() {
-        let mut b = 0;
-        let mut found = false;
-        while b < bindings.len() {
-            if str_eq(bindings[b], reads[r]) {
-                mask |= 1 << b;
-                found = true;
-            }
-            b += 1;
+    let mut b = 0;
+    while b < read.len() {
+        if read[b] {
+            mask |= 1 << b;
         }
-        if !found {
-            panic!("a kernel declares a read-only binding that is not among its bindings");
-        }
-        r += 1;
+        b += 1;
     }
     mask
 }
 
-#[cfg(not(target_arch = "spirv"))]
-const fn str_eq(a: &str, b: &str) -> bool {
-    let (a, b) = (a.as_bytes(), b.as_bytes());
-    if a.len() != b.len() {
-        return false;
-    }
-    let mut i = 0;
-    while i < a.len() {
-        if a[i] != b[i] {
-            return false;
-        }
-        i += 1;
-    }
-    true
-}
-
-/// `kernel!(NAME = entry_fn [threads] (Params) shared [u32; N] { binding names } reads { names } => body);`
-/// (`reads { .. }`, the bindings the kernel never writes, is optional.)
+/// `kernel!(NAME = entry_fn [threads] (Params) shared [u32; N] { read a, read b, c } => body);`
+///
+/// Each binding is a name, marked `read` when the kernel only reads it. A `read` binding is declared
+/// `&[u32]` on the GPU (rust-gpu decorates it `NonWritable`) and reaches the body as a
+/// [`Load`](crate::exec::Load) (`GpuRead`), so a store or an atomic to it is a compile error; the
+/// others are `&mut [u32]`, a [`Mem`](crate::exec::Mem) (`GpuMem`). On the CPU every binding is a
+/// `CpuMem` (both traits), which faults on a write to a `read` binding; `KernelDesc::read_only` is
+/// the mask of the `read` bindings.
 /// The body is called as `body(&mut group, &params, &mut shared, buffers...)`; without `shared`, as
-/// `body(&mut group, &params, buffers...)`.
+/// `body(&mut group, &params, buffers...)`, the buffers in declaration order.
 #[macro_export]
 macro_rules! kernel {
-    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) shared [u32; $n:expr] { $($buf:ident),* }
-        $(reads { $($ro:ident),* })? => $body:ident) => {
-        $crate::kernel!(@gpu [$threads] $entry ($params) $body
-            [#[spirv(workgroup)] shared: &mut [u32; $n],] [shared,] [] [0 1 2 3 4 5 6 7 8 9 10 11] $($buf)*);
-        $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) ($n) $body [&mut [0u32; $n],] [$($($ro)*)?] $($buf)*);
+    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) shared [u32; $n:expr] { $($bind:tt)* }
+        => $body:ident) => {
+        $crate::kernel!(@parse [$(#[$doc])* $desc $entry [$threads] ($params) $body
+            [#[spirv(workgroup)] shared: &mut [u32; $n],] [shared,] [&mut [0u32; $n],] ($n)] [] $($bind)*);
     };
-    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) { $($buf:ident),* }
-        $(reads { $($ro:ident),* })? => $body:ident) => {
-        $crate::kernel!(@gpu [$threads] $entry ($params) $body [] [] [] [0 1 2 3 4 5 6 7 8 9 10 11] $($buf)*);
-        $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) (0) $body [] [$($($ro)*)?] $($buf)*);
+    ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) { $($bind:tt)* } => $body:ident) => {
+        $crate::kernel!(@parse [$(#[$doc])* $desc $entry [$threads] ($params) $body [] [] [] (0)] [] $($bind)*);
     };
 
-    // Accumulates one `#[spirv(storage_buffer)]` parameter per binding, numbered in order.
+    // Reads the binding list into `[read name]` / `[write name]` pairs.
+    (@parse [$($decl:tt)*] [$($acc:tt)*] read $b:ident $(, $($rest:tt)*)?) => {
+        $crate::kernel!(@parse [$($decl)*] [$($acc)* [read $b]] $($($rest)*)?);
+    };
+    (@parse [$($decl:tt)*] [$($acc:tt)*] $b:ident $(, $($rest:tt)*)?) => {
+        $crate::kernel!(@parse [$($decl)*] [$($acc)* [write $b]] $($($rest)*)?);
+    };
+    (@parse [$(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*]
+        [$($cpu_sh:tt)*] ($n:expr)] [$([$mode:ident $buf:ident])*]) => {
+        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*] [] [0 1 2 3 4 5 6 7 8 9 10 11]
+            $([$mode $buf])*);
+        $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) ($n) $body [$($cpu_sh)*] $([$mode $buf])*);
+    };
+
+    // Accumulates one `#[spirv(storage_buffer)]` parameter per binding, numbered in order: `&[u32]`
+    // for a `read` binding, `&mut [u32]` for the others.
     (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
-        [$n:tt $($ns:tt)*] $b:ident $($rest:ident)*) => {
+        [$n:tt $($ns:tt)*] [read $b:ident] $($rest:tt)*) => {
+        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+            [$($acc)* #[spirv(descriptor_set = 0, binding = $n, storage_buffer)] $b: &[u32],]
+            [$($ns)*] $($rest)*);
+    };
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
+        [$n:tt $($ns:tt)*] [write $b:ident] $($rest:tt)*) => {
         $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
             [$($acc)* #[spirv(descriptor_set = 0, binding = $n, storage_buffer)] $b: &mut [u32],]
             [$($ns)*] $($rest)*);
     };
     (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
-        [$($ns:tt)*] $(,)?) => {
+        [$($ns:tt)*]) => {
         #[cfg(target_arch = "spirv")]
         #[spirv_std::spirv(compute(threads($threads)))]
         #[allow(clippy::too_many_arguments)]
@@ -182,7 +183,10 @@ macro_rules! kernel {
             $crate::kernel!(@call $body (&mut group, params, $($sh_arg)*) [] $($acc)*);
         }
     };
-    // Turns the accumulated parameter list back into call arguments wrapped in `GpuMem`.
+    // Turns the accumulated parameter list back into call arguments wrapped in `GpuRead` / `GpuMem`.
+    (@call $body:ident ($($pre:tt)*) [$($args:tt)*] #[$attr:meta] $b:ident: &[u32], $($rest:tt)*) => {
+        $crate::kernel!(@call $body ($($pre)*) [$($args)* $crate::exec::GpuRead($b),] $($rest)*)
+    };
     (@call $body:ident ($($pre:tt)*) [$($args:tt)*] #[$attr:meta] $b:ident: &mut [u32], $($rest:tt)*) => {
         $crate::kernel!(@call $body ($($pre)*) [$($args)* $crate::exec::GpuMem($b),] $($rest)*)
     };
@@ -190,8 +194,11 @@ macro_rules! kernel {
         $body($($pre)* $($args)*)
     };
 
+    (@is_read read) => { true };
+    (@is_read write) => { false };
+
     (@cpu $(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) ($n:expr) $body:ident
-        [$($sh_arg:tt)*] [$($ro:ident)*] $($buf:ident)*) => {
+        [$($sh_arg:tt)*] $([$mode:ident $buf:ident])*) => {
         /// The bindings of the kernel of this name, by name (see [`kernel!`](crate::kernel!)).
         #[cfg(not(target_arch = "spirv"))]
         pub mod $entry {
@@ -224,7 +231,7 @@ macro_rules! kernel {
                 entry: $crate::kernel::entry_name(concat!(module_path!(), "::", stringify!($entry))),
                 workgroup_size: $threads,
                 bindings: [$(stringify!($buf)),*].len() as u32,
-                read_only: $crate::kernel::read_mask(&[$(stringify!($buf)),*], &[$(stringify!($ro)),*]),
+                read_only: $crate::kernel::read_mask(&[$($crate::kernel!(@is_read $mode)),*]),
                 push_bytes: core::mem::size_of::<$params>() as u32,
                 shared_bytes: 4 * ($n) as u32,
                 cpu,

@@ -27,7 +27,7 @@
 //! image; the normalisation at the end divides by the composite alpha, which undoes the border's
 //! loss and the gaps where the partial multi-layer image holds nothing behind a blurred edge.
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::keys::sort_key;
 use crate::lens::{ThinLens, is_finite, is_pos_inf};
 use crate::slot::{self, Slot};
@@ -128,7 +128,7 @@ pub fn matte_translucent(a: &[f32; 4], z: f32) -> f32 {
 }
 
 #[inline]
-fn load4<M: Mem>(m: &M, i: u32) -> [f32; 4] {
+fn load4(m: &impl Load, i: u32) -> [f32; 4] {
     [f32::from_bits(m.load(4 * i)), f32::from_bits(m.load(4 * i + 1)), f32::from_bits(m.load(4 * i + 2)), f32::from_bits(m.load(4 * i + 3))]
 }
 
@@ -142,7 +142,7 @@ fn store4<M: Mem>(m: &mut M, i: u32, v: [f32; 4]) {
 
 /// One pixel's premultiplied RGBA in the layer of `anchors`, from its fragments front to back.
 #[inline]
-fn matte_pixel<M: Mem>(p: &LayeredParams, anchors: &[f32; 4], input: &M, counts: &M, pi: u32) -> [f32; 4] {
+fn matte_pixel(p: &LayeredParams, anchors: &[f32; 4], input: &impl Load, counts: &impl Load, pi: u32) -> [f32; 4] {
     let n = counts.load(pi).min(p.max_layers);
     let mut acc = [0.0f32; 4];
     if n == 0 {
@@ -181,7 +181,7 @@ fn matte_pixel<M: Mem>(p: &LayeredParams, anchors: &[f32; 4], input: &M, counts:
 }
 
 /// One layer's premultiplied RGBA from every pixel's fragments, front to back.
-pub fn matte_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, input: M, counts: M, mut layer: M) {
+pub fn matte_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &LayeredParams, input: R, counts: R, mut layer: M) {
     for_each_item(g, p.width * p.height, |pi| {
         let acc = matte_pixel(p, &p.anchors, &input, &counts, pi);
         store4(&mut layer, pi, acc);
@@ -190,7 +190,7 @@ pub fn matte_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, input: M, coun
 
 /// Anchor `i` of a device plan: 0 before the first, `+inf` after the last.
 #[inline]
-fn plan_anchor<M: Mem>(plan: &M, layers: u32, i: i32) -> f32 {
+fn plan_anchor(plan: &impl Load, layers: u32, i: i32) -> f32 {
     if i < 0 {
         0.0
     } else if i as u32 + 1 >= layers {
@@ -202,19 +202,19 @@ fn plan_anchor<M: Mem>(plan: &M, layers: u32, i: i32) -> f32 {
 
 /// `[a[k-2], a[k-1], a[k], a[k+1]]` of layer `k` of a device plan.
 #[inline]
-fn plan_anchors_of<M: Mem>(plan: &M, layers: u32, k: u32) -> [f32; 4] {
+fn plan_anchors_of(plan: &impl Load, layers: u32, k: u32) -> [f32; 4] {
     let k = k as i32;
     [plan_anchor(plan, layers, k - 2), plan_anchor(plan, layers, k - 1), plan_anchor(plan, layers, k), plan_anchor(plan, layers, k + 1)]
 }
 
 /// Whether a gated kernel runs: its gate is [`ALWAYS`] or names a plan word that is not 0.
 #[inline]
-fn open<M: Mem>(plan: &M, gate: u32) -> bool {
+fn open(plan: &impl Load, gate: u32) -> bool {
     gate == ALWAYS || plan.load(gate) != 0
 }
 
 /// [`matte_pass`] of layer `p.layer` with the anchors of the device plan, where the gate is open.
-pub fn matte_at_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, input: M, counts: M, plan: M, mut layer: M) {
+pub fn matte_at_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &LayeredParams, input: R, counts: R, plan: R, mut layer: M) {
     if !open(&plan, p.gate) {
         return;
     }
@@ -227,7 +227,7 @@ pub fn matte_at_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, input: M, c
 
 /// One pixel of one direction of the separable Gaussian over `src`, zero outside the image.
 #[inline]
-fn blur_pixel<M: Mem>(p: &LayeredParams, src: &M, weights: &M, pi: u32) -> [f32; 4] {
+fn blur_pixel(p: &LayeredParams, src: &impl Load, weights: &impl Load, pi: u32) -> [f32; 4] {
     let r = p.radius as i32;
     let (x, y) = ((pi % p.width) as i32, (pi / p.width) as i32);
     let (limit, at) = if p.mode == 0 { (p.width as i32, x) } else { (p.height as i32, y) };
@@ -250,7 +250,7 @@ fn blur_pixel<M: Mem>(p: &LayeredParams, src: &M, weights: &M, pi: u32) -> [f32;
 }
 
 /// One direction of the separable Gaussian, `src` into `dst`, zero outside the image.
-pub fn blur_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, src: M, weights: M, mut dst: M) {
+pub fn blur_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &LayeredParams, src: R, weights: R, mut dst: M) {
     for_each_item(g, p.width * p.height, |pi| {
         let acc = blur_pixel(p, &src, &weights, pi);
         store4(&mut dst, pi, acc);
@@ -258,7 +258,7 @@ pub fn blur_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, src: M, weights
 }
 
 /// [`blur_pass`] where the gate is open.
-pub fn blur_gated_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, src: M, weights: M, mut dst: M, plan: M) {
+pub fn blur_gated_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &LayeredParams, src: R, weights: R, mut dst: M, plan: R) {
     if !open(&plan, p.gate) {
         return;
     }
@@ -270,7 +270,7 @@ pub fn blur_gated_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, src: M, w
 
 /// One pixel of `layer over acc` ([`OVER`]) or `acc over layer` ([`UNDER`]).
 #[inline]
-fn composite_pixel<M: Mem>(p: &LayeredParams, layer: &M, acc: &mut M, pi: u32) {
+fn composite_pixel<M: Mem>(p: &LayeredParams, layer: &impl Load, acc: &mut M, pi: u32) {
     let l = load4(layer, pi);
     let a = load4(acc, pi);
     let (front, back) = if p.mode == OVER { (l, a) } else { (a, l) };
@@ -280,12 +280,12 @@ fn composite_pixel<M: Mem>(p: &LayeredParams, layer: &M, acc: &mut M, pi: u32) {
 }
 
 /// `acc = layer over acc` ([`OVER`], the layer in front) or `acc = acc over layer` ([`UNDER`]).
-pub fn composite_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, layer: M, mut acc: M) {
+pub fn composite_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &LayeredParams, layer: R, mut acc: M) {
     for_each_item(g, p.width * p.height, |pi| composite_pixel(p, &layer, &mut acc, pi));
 }
 
 /// [`composite_pass`] where the gate is open.
-pub fn composite_gated_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, layer: M, mut acc: M, plan: M) {
+pub fn composite_gated_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &LayeredParams, layer: R, mut acc: M, plan: R) {
     if !open(&plan, p.gate) {
         return;
     }
@@ -322,7 +322,7 @@ pub fn plan_begin_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredPlanParams, mut p
 /// Whether layer `k` of the plan is in range: the first, or its front anchor is finite (layers
 /// behind an infinite anchor, past eq. 8's bound, hold nothing).
 #[inline]
-fn in_range<M: Mem>(plan: &M, layers: u32, k: u32) -> bool {
+fn in_range(plan: &impl Load, layers: u32, k: u32) -> bool {
     k == 0 || !is_pos_inf(plan_anchor(plan, layers, k as i32 - 1))
 }
 
@@ -357,7 +357,7 @@ fn reach<M: Mem>(plan: &mut M, layers: u32, z: f32, front: bool) {
 
 /// The device plan, second pass (one item a pixel): the signed-CoC range of the fragments (the sky
 /// at the far limit, capped at `max_coc` and counted beyond it) and the layers they reach.
-pub fn plan_reach_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredPlanParams, input: M, counts: M, mut plan: M) {
+pub fn plan_reach_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &LayeredPlanParams, input: R, counts: R, mut plan: M) {
     let layers = p.layers;
     for_each_item(g, p.width * p.height, |pi| {
         let n = counts.load(pi).min(p.max_layers);
@@ -447,7 +447,7 @@ pub fn plan_end_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredPlanParams, mut pla
 }
 
 /// Colour divided by the composite alpha (black where nothing covers the pixel).
-pub fn resolve_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, acc: M, mut out: M) {
+pub fn resolve_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &LayeredParams, acc: R, mut out: M) {
     for_each_item(g, p.width * p.height, |pi| {
         let a = load4(&acc, pi);
         let inv = if a[3] > 1e-6 { 1.0 / a[3] } else { 0.0 };
@@ -459,19 +459,19 @@ pub fn resolve_pass<G: Group, M: Mem>(g: &mut G, p: &LayeredParams, acc: M, mut 
 
 kernel!(
     /// One depth layer by the matting functions, premultiplied RGBA.
-    LAYERED_MATTE = layered_matte [256] (LayeredParams) { input, counts, layer } => matte_pass
+    LAYERED_MATTE = layered_matte [256] (LayeredParams) { read input, read counts, layer } => matte_pass
 );
 kernel!(
     /// One direction of a separable Gaussian over premultiplied RGBA.
-    LAYERED_BLUR = layered_blur [256] (LayeredParams) { src, weights, dst } => blur_pass
+    LAYERED_BLUR = layered_blur [256] (LayeredParams) { read src, read weights, dst } => blur_pass
 );
 kernel!(
     /// Premultiplied "over" of a layer and the running composite.
-    LAYERED_COMPOSITE = layered_composite [256] (LayeredParams) { layer, acc } => composite_pass
+    LAYERED_COMPOSITE = layered_composite [256] (LayeredParams) { read layer, acc } => composite_pass
 );
 kernel!(
     /// The composite normalised by its alpha, as RGB.
-    LAYERED_RESOLVE = layered_resolve [256] (LayeredParams) { acc, out } => resolve_pass
+    LAYERED_RESOLVE = layered_resolve [256] (LayeredParams) { read acc, out } => resolve_pass
 );
 
 kernel!(
@@ -480,7 +480,7 @@ kernel!(
 );
 kernel!(
     /// The device plan's signed-CoC range and the layers the fragments reach.
-    LAYERED_PLAN_REACH = layered_plan_reach [256] (LayeredPlanParams) { input, counts, plan } reads { input, counts } => plan_reach_pass
+    LAYERED_PLAN_REACH = layered_plan_reach [256] (LayeredPlanParams) { read input, read counts, plan } => plan_reach_pass
 );
 kernel!(
     /// The device plan's gates of the cascade's blurs.
@@ -488,15 +488,15 @@ kernel!(
 );
 kernel!(
     /// One depth layer of the device plan by the matting functions, where its gate is open.
-    LAYERED_MATTE_AT = layered_matte_at [256] (LayeredParams) { input, counts, plan, layer } reads { input, counts, plan } => matte_at_pass
+    LAYERED_MATTE_AT = layered_matte_at [256] (LayeredParams) { read input, read counts, read plan, layer } => matte_at_pass
 );
 kernel!(
     /// One direction of a separable Gaussian, where its gate is open.
-    LAYERED_BLUR_GATED = layered_blur_gated [256] (LayeredParams) { src, weights, dst, plan } reads { src, weights, plan } => blur_gated_pass
+    LAYERED_BLUR_GATED = layered_blur_gated [256] (LayeredParams) { read src, read weights, dst, read plan } => blur_gated_pass
 );
 kernel!(
     /// Premultiplied "over" of a layer and the running composite, where its gate is open.
-    LAYERED_COMPOSITE_GATED = layered_composite_gated [256] (LayeredParams) { layer, acc, plan } reads { layer, plan } => composite_gated_pass
+    LAYERED_COMPOSITE_GATED = layered_composite_gated [256] (LayeredParams) { read layer, acc, read plan } => composite_gated_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

@@ -22,7 +22,7 @@
 //!   `scene::guard_band::auto_margin_mesh`), and a count of the frames whose band exceeded the one
 //!   the image was made with.
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::lens::{ThinLens, is_finite, is_nan};
 use crate::math::ceil;
 use crate::raster::project::{triangle, vertex_position};
@@ -275,7 +275,7 @@ pub fn covers(budget: i32, dy: i32) -> bool {
 
 /// The front slot's depth of pixel `p`, `+inf` where it has none.
 #[inline]
-fn front<M: Mem>(fragments: &M, counts: &M, p: u32, layers: u32) -> f32 {
+fn front(fragments: &impl Load, counts: &impl Load, p: u32, layers: u32) -> f32 {
     if counts.load(p) > 0 { slot::depth_of(fragments, p * layers) } else { f32::INFINITY }
 }
 
@@ -300,7 +300,7 @@ pub fn plan_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, mut found: M, mut 
     });
 }
 
-pub fn append_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, layer: M, mut fragments: M, mut counts: M, mut found: M) {
+pub fn append_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &PeelParams, layer: R, mut fragments: M, mut counts: M, mut found: M) {
     for_each_item(g, p.width * p.height, |i| {
         // The layer's words: r, g, b, alpha, depth (the shading pass's LAYER mode).
         let o = 5 * i;
@@ -322,7 +322,7 @@ pub fn append_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, layer: M, mut fr
     });
 }
 
-pub fn edges_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, fragments: M, counts: M, mut edge: M, mut widest: M) {
+pub fn edges_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &PeelParams, fragments: R, counts: R, mut edge: M, mut widest: M) {
     let (w, h) = (p.width, p.height);
     let limit = (if w > h { w } else { h }) as i32;
     for_each_item(g, w * h, |i| {
@@ -359,7 +359,7 @@ pub fn edges_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, fragments: M, cou
     });
 }
 
-pub fn span_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, edge: M, widest: M, mut span: M) {
+pub fn span_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &PeelParams, edge: R, widest: R, mut span: M) {
     let (w, h) = (p.width, p.height);
     let reach = widest.load(0) as i32 - 1;
     for_each_item(g, w * h, |i| {
@@ -380,7 +380,7 @@ pub fn span_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, edge: M, widest: M
     });
 }
 
-pub fn mask_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, span: M, widest: M, mut mask: M, mut fragments: M, mut counts: M) {
+pub fn mask_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &PeelParams, span: R, widest: R, mut mask: M, mut fragments: M, mut counts: M) {
     let (w, h) = (p.width, p.height);
     let reach = widest.load(0) as i32 - 1;
     for_each_item(g, w * h, |i| {
@@ -412,7 +412,7 @@ pub fn mask_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, span: M, widest: M
     });
 }
 
-pub fn band_pass<G: Group, M: Mem>(g: &mut G, p: &BandParams, vertices: M, triangles: M, mut band: M) {
+pub fn band_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &BandParams, vertices: R, triangles: R, mut band: M) {
     for_each_item(g, p.triangles, |t| {
         let tri = triangle(&triangles, t);
         let a = vertex_position(&vertices, tri[0]);
@@ -447,24 +447,24 @@ kernel!(
 );
 kernel!(
     /// Appends a shaded peel layer into the slots.
-    PEEL_APPEND = peel_append [256] (PeelParams) { layer, fragments, counts, found } reads { layer } => append_pass
+    PEEL_APPEND = peel_append [256] (PeelParams) { read layer, fragments, counts, found } => append_pass
 );
 kernel!(
     /// The disocclusion buffer's edge pixels and their tag radii.
-    PEEL_EDGES = peel_edges [256] (PeelParams) { fragments, counts, edge, widest } reads { fragments, counts } => edges_pass
+    PEEL_EDGES = peel_edges [256] (PeelParams) { read fragments, read counts, edge, widest } => edges_pass
 );
 kernel!(
     /// The disocclusion buffer's row pass: per pixel, the widest disk budget of its row's edges.
-    PEEL_SPAN = peel_span [256] (PeelParams) { edge, widest, span } reads { edge, widest } => span_pass
+    PEEL_SPAN = peel_span [256] (PeelParams) { read edge, read widest, span } => span_pass
 );
 kernel!(
     /// The disocclusion buffer's column pass, applied to the slots.
-    PEEL_MASK = peel_mask [256] (PeelParams) { span, widest, mask, fragments, counts } reads { span, widest } => mask_pass
+    PEEL_MASK = peel_mask [256] (PeelParams) { read span, read widest, mask, fragments, counts } => mask_pass
 );
 
 kernel!(
     /// The largest CoC radius of the triangles within the widest guard band of this view.
-    PEEL_BAND = peel_band [64] (BandParams) { vertices, triangles, band } reads { vertices, triangles } => band_pass
+    PEEL_BAND = peel_band [64] (BandParams) { read vertices, read triangles, band } => band_pass
 );
 kernel!(
     /// The band this view needs, and whether it exceeds the image's.

@@ -9,7 +9,7 @@
 //! `2^27` colours with weights of at most 1 stays finite in f32, and so does its division by a
 //! total weight of at least `2^-20`: room that every method's accumulation stays within.
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::lens::{is_finite, is_positive};
 use crate::wg::for_each_item;
 
@@ -64,7 +64,7 @@ pub struct ClampCountParams {
 /// used per pixel; the first `reads` of each pixel) a method keeps (finite colour, positive depth)
 /// that its reads clamp: colours [`clamp_color`] changes and alphas `slot::clamp_alpha` changes (NaN
 /// or outside [0, 1]), one each. The count the reports of the methods that clamp where they load give.
-pub fn count_pass<G: Group, M: Mem>(g: &mut G, p: &ClampCountParams, slots: M, counts: M, mut stats: M) {
+pub fn count_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &ClampCountParams, slots: R, counts: R, mut stats: M) {
     for_each_item(g, p.pixels, |i| {
         let n = counts.load(i).min(p.layers).min(p.reads);
         let mut clamped = 0u32;
@@ -86,7 +86,7 @@ pub fn count_pass<G: Group, M: Mem>(g: &mut G, p: &ClampCountParams, slots: M, c
 
 kernel!(
     /// Counts the input colours the numerical contract clamps.
-    COUNT_CLAMPED = radiance_count_clamped [256] (ClampCountParams) { slots, counts, stats } reads { slots, counts } => count_pass
+    COUNT_CLAMPED = radiance_count_clamped [256] (ClampCountParams) { read slots, read counts, stats } => count_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

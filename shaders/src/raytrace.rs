@@ -25,7 +25,7 @@
 //! through translucent fragments sees black behind them (a pixel's slots composite over black).
 //! Non-finite colours and depths are never hit.
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::lens::{ThinLens, is_finite};
 use crate::math::floor;
 use crate::slot::{self, Composite};
@@ -117,7 +117,7 @@ fn sky_r(lens: &ThinLens) -> f32 {
 /// Fragment `j` of pixel `pi`: premultiplied colour, `r` and alpha, or `None` when it is not
 /// finite.
 #[inline]
-fn fragment<M: Mem>(p: &TraceParams, input: &M, pi: u32, j: u32) -> Option<([f32; 3], f32, f32)> {
+fn fragment(p: &TraceParams, input: &impl Load, pi: u32, j: u32) -> Option<([f32; 3], f32, f32)> {
     let s = slot::load(input, pi * p.max_layers + j);
     if slot::is_valid(&s) {
         let r = ray_r(&p.lens, s.depth);
@@ -130,7 +130,7 @@ fn fragment<M: Mem>(p: &TraceParams, input: &M, pi: u32, j: u32) -> Option<([f32
 
 /// Level 0: per pixel, the smallest and largest `r` of its fragments (the sky's for a pixel
 /// without fragments; an empty interval when none is usable).
-pub fn base_pass<G: Group, M: Mem>(g: &mut G, p: &TraceParams, input: M, counts: M, mut hier: M) {
+pub fn base_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &TraceParams, input: R, counts: R, mut hier: M) {
     for_each_item(g, p.width * p.height, |pi| {
         let n = counts.load(pi).min(p.max_layers);
         let (mut lo, mut hi) = if n == 0 { (sky_r(&p.lens), sky_r(&p.lens)) } else { (f32::INFINITY, f32::NEG_INFINITY) };
@@ -198,7 +198,7 @@ struct Ray {
     hit: bool,
 }
 
-fn trace_ray<M: Mem>(p: &TraceParams, input: &M, counts: &M, hier: &M, c: [f32; 2], s: [f32; 2]) -> Ray {
+fn trace_ray(p: &TraceParams, input: &impl Load, counts: &impl Load, hier: &impl Load, c: [f32; 2], s: [f32; 2]) -> Ray {
     let top = level_offset(p, p.levels - 1);
     let (w, h) = (p.width as f32, p.height as f32);
     // From the image's nearest `r` to the sky's, clipped to where the ray is inside the image.
@@ -304,7 +304,16 @@ fn hash(mut v: u32) -> u32 {
 }
 
 /// One invocation per pixel of an 8x8 tile: `spp` rays, their mean into `out`.
-pub fn trace_pass<G: Group, M: Mem>(g: &mut G, p: &TraceParams, input: M, counts: M, hier: M, samples: M, mut out: M, mut stats: M) {
+pub fn trace_pass<G: Group, R: Load, M: Mem>(
+    g: &mut G,
+    p: &TraceParams,
+    input: R,
+    counts: R,
+    hier: R,
+    samples: R,
+    mut out: M,
+    mut stats: M,
+) {
     let [wx, wy, _] = g.workgroup_id();
     g.each(|lid| {
         let x = wx * TILE + lid % TILE;
@@ -348,7 +357,7 @@ pub fn trace_pass<G: Group, M: Mem>(g: &mut G, p: &TraceParams, input: M, counts
 
 kernel!(
     /// Level 0 of the min/max hierarchy of the signed CoC radius, one pixel an invocation.
-    RT_BASE = raytrace_base [256] (TraceParams) { input, counts, hier } => base_pass
+    RT_BASE = raytrace_base [256] (TraceParams) { read input, read counts, hier } => base_pass
 );
 kernel!(
     /// One level of the min/max hierarchy from the level below.
@@ -356,7 +365,7 @@ kernel!(
 );
 kernel!(
     /// `spp` thin-lens rays per pixel through the multi-layer image.
-    RT_TRACE = raytrace_trace [64] (TraceParams) { input, counts, hier, samples, out, stats } => trace_pass
+    RT_TRACE = raytrace_trace [64] (TraceParams) { read input, read counts, read hier, read samples, out, stats } => trace_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

@@ -16,7 +16,7 @@
 //! - `peel_renderer_draw` (one invocation): the next pass's indirect draw command, zero past the
 //!   last useful pass (`peel_plan` decides).
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::frame_io::{DEPTH_REVERSED, DEPTH_UNORM24, FrameIoParams, buffer_depth, depth_value, view_depth};
 use crate::half::{b10g11r11_to_f32, f16_to_f32};
 use crate::lens::{ThinLens, is_finite};
@@ -114,7 +114,7 @@ pub fn drawn(io: &FrameIoParams, d: f32) -> bool {
 /// Colour and coverage of pixel `i` of a colour attachment copied into a buffer (coverage 1 for
 /// B10G11R11, which has none).
 #[inline]
-fn load_rgba<M: Mem>(color: &M, p: &FrameIoParams, i: u32) -> [f32; 4] {
+fn load_rgba(color: &impl Load, p: &FrameIoParams, i: u32) -> [f32; 4] {
     if p.color_words == 1 {
         let c = b10g11r11_to_f32(color.load(i));
         [c[0], c[1], c[2], 1.0]
@@ -127,7 +127,7 @@ fn load_rgba<M: Mem>(color: &M, p: &FrameIoParams, i: u32) -> [f32; 4] {
     }
 }
 
-pub fn layer_pass<G: Group, M: Mem>(g: &mut G, p: &RendererPeelParams, color: M, depth: M, mut reach: M, mut layer: M) {
+pub fn layer_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &RendererPeelParams, color: R, depth: R, mut reach: M, mut layer: M) {
     for_each_item(g, p.io.width * p.io.height, |i| {
         let d = depth_value(&p.io, depth.load(i));
         let z = view_depth(&p.io, d);
@@ -160,7 +160,7 @@ pub fn behind_translucent(io: &FrameIoParams, reach: f32, stored: u32) -> bool {
     is_finite(reach) && reach == view_depth(io, depth_value(io, stored))
 }
 
-pub fn bound_pass<G: Group, M: Mem>(g: &mut G, p: &RendererPeelParams, depth: M, mask: M, mut reach: M, mut bound: M) {
+pub fn bound_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &RendererPeelParams, depth: R, mask: R, mut reach: M, mut bound: M) {
     for_each_item(g, p.io.width * p.io.height, |i| {
         let b = if p.pass == 0 {
             KEEP_ALL
@@ -175,7 +175,7 @@ pub fn bound_pass<G: Group, M: Mem>(g: &mut G, p: &RendererPeelParams, depth: M,
     });
 }
 
-pub fn draw_pass<G: Group, M: Mem>(g: &mut G, _p: &RendererPeelParams, args: M, mut draw: M) {
+pub fn draw_pass<G: Group, R: Load, M: Mem>(g: &mut G, _p: &RendererPeelParams, args: R, mut draw: M) {
     for_each_item(g, 1, |_| {
         // The planned draw command (count, 1, 0, 0), and a zero: a non-indexed or an indexed
         // indirect draw command alike.
@@ -190,16 +190,16 @@ pub fn draw_pass<G: Group, M: Mem>(g: &mut G, _p: &RendererPeelParams, args: M, 
 
 kernel!(
     /// A renderer's pass (its attachments copied into buffers) as a shaded peel layer and the next reach.
-    PEEL_RENDERER_LAYER = peel_renderer_layer [256] (RendererPeelParams) { color, depth, reach, layer } reads { color, depth } => layer_pass
+    PEEL_RENDERER_LAYER = peel_renderer_layer [256] (RendererPeelParams) { read color, read depth, reach, layer } => layer_pass
 );
 kernel!(
     /// The bound a renderer's next pass tests its fragments against, in its depth encoding.
-    PEEL_RENDERER_BOUND = peel_renderer_bound [256] (RendererPeelParams) { depth, mask, reach, bound } reads { depth, mask } => bound_pass
+    PEEL_RENDERER_BOUND = peel_renderer_bound [256] (RendererPeelParams) { read depth, read mask, reach, bound } => bound_pass
 );
 
 kernel!(
     /// The renderer's indirect draw command for the next pass (zero past the last useful one).
-    PEEL_RENDERER_DRAW = peel_renderer_draw [64] (RendererPeelParams) { args, draw } reads { args } => draw_pass
+    PEEL_RENDERER_DRAW = peel_renderer_draw [64] (RendererPeelParams) { read args, draw } => draw_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

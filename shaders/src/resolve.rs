@@ -24,7 +24,7 @@
 //!    every further cluster is composited "over" into the last fragment (its depth stays that of
 //!    the first cluster it holds), so no energy is lost; [`Resolved::merged`] counts them.
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::lens::is_finite;
 use crate::slot::{self, clamp_alpha};
 use crate::wg::for_each_item;
@@ -209,7 +209,7 @@ pub struct ResolveParams {
     pub _pad: [u32; 2],
 }
 
-pub fn resolve_pass<G: Group, M: Mem>(g: &mut G, p: &ResolveParams, fine: M, fine_counts: M, mut fragments: M, mut counts: M) {
+pub fn resolve_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &ResolveParams, fine: R, fine_counts: R, mut fragments: M, mut counts: M) {
     let (w, side) = (p.width, p.side);
     let fine_width = w * side;
     for_each_item(g, w * p.height, |i| {
@@ -228,7 +228,7 @@ pub fn resolve_pass<G: Group, M: Mem>(g: &mut G, p: &ResolveParams, fine: M, fin
 
 kernel!(
     /// Resolves a sub-sample image's slots into the frame's slots (area-integrated layers).
-    RESOLVE = resolve [64] (ResolveParams) { fine, fine_counts, fragments, counts } reads { fine, fine_counts } => resolve_pass
+    RESOLVE = resolve [64] (ResolveParams) { read fine, read fine_counts, fragments, counts } => resolve_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

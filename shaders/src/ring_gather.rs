@@ -50,7 +50,7 @@
 //! allows (with few rings a large blur is sampled sparsely; the highlight discs cover the worst of
 //! it, isolated bright pixels).
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::lens::{ThinLens, is_finite as finite, is_nan, is_pos_inf, is_positive};
 
 /// Half-resolution pixels on a side of a tile (tiles are 16x16 pixels of the frame).
@@ -181,7 +181,7 @@ pub fn near_share(s: f32) -> f32 {
 
 /// The colour of pixel `i` with its depth, or `None` when either is unusable.
 #[inline]
-fn sample<M: Mem>(color: &M, depth: &M, i: u32) -> Option<([f32; 3], f32)> {
+fn sample(color: &impl Load, depth: &impl Load, i: u32) -> Option<([f32; 3], f32)> {
     let c = [f32::from_bits(color.load(3 * i)), f32::from_bits(color.load(3 * i + 1)), f32::from_bits(color.load(3 * i + 2))];
     let c = crate::radiance::clamp_color(c);
     let z = f32::from_bits(depth.load(i));
@@ -333,7 +333,7 @@ fn near_weight(r: f32) -> f32 {
 /// foreground's silhouette keeps its own colour and radius through the reduction without being
 /// inflated to the whole block (its coverage says how much of the block it is), and no threshold
 /// pops as the focus moves. Each pixel's colour is taken less what `cut` takes out of it.
-fn block<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32, cut: Cut) -> Block {
+fn block(p: &RingGatherParams, color: &impl Load, depth: &impl Load, hx: u32, hy: u32, cut: Cut) -> Block {
     let cap = p.max_radius as f32;
     let mut sum_r = 0.0f32;
     let mut count = 0u32;
@@ -432,7 +432,7 @@ fn block<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32, c
 /// are never left out. Each pixel is judged alone, so an emitter pixel in a block with its
 /// background (at another depth, maybe the other side of the focus plane) is still taken, and the
 /// disc has the CoC of what was taken.
-fn highlight<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, hx: u32, hy: u32) -> Cut {
+fn highlight(p: &RingGatherParams, color: &impl Load, depth: &impl Load, hx: u32, hy: u32) -> Cut {
     // Twice over the ring: its darkest pixel, then the mean of what is not much brighter.
     let mut darkest = f32::MAX;
     let mut ring = [0.0f32; 3];
@@ -513,7 +513,7 @@ fn store_block<M: Mem>(half: &mut M, at: u32, b: &Block) {
 /// Copies the 2x2 pixels of block (`hx`, `hy`) from `color` to `fine` less what `cut` takes out of
 /// them: the colours the full-resolution path reads. An unusable pixel is copied as it is, so it
 /// stays unusable there.
-fn store_fine<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, fine: &mut M, hx: u32, hy: u32, cut: Cut) {
+fn store_fine<M: Mem>(p: &RingGatherParams, color: &impl Load, depth: &impl Load, fine: &mut M, hx: u32, hy: u32, cut: Cut) {
     let mut k = 0u32;
     while k < 4 {
         let x = 2 * hx + k % 2;
@@ -541,12 +541,12 @@ fn store_fine<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, fine: &mut M, 
 /// out of the full-resolution colours copied into `fine`; the highlights beyond a tile's cap are
 /// added to word [`STATS_CAPPED`] of `stats`.
 #[allow(clippy::too_many_arguments)]
-pub fn downsample_pass<G: Group, M: Mem>(
+pub fn downsample_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
     p: &RingGatherParams,
     sh: &mut [u32; 6 * 64],
-    color: M,
-    depth: M,
+    color: R,
+    depth: R,
     mut half: M,
     mut tiles: M,
     mut bright: M,
@@ -627,7 +627,7 @@ pub fn downsample_pass<G: Group, M: Mem>(
 /// (measured from the nearest edges of the two tiles), itself included, and how far to look for
 /// highlights whose disc reaches it. A neighbour's radius fades in over the last tile of its reach
 /// instead of switching on, so the dilated radius (the near kernel's size) moves continuously.
-pub fn dilate_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, tiles: M, bright: M, mut dilated: M) {
+pub fn dilate_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &RingGatherParams, tiles: R, bright: R, mut dilated: M) {
     let (tw, th) = (p.tiles_x(), p.tiles_y());
     let reach = p.dilation_tiles() as i32;
     crate::wg::for_each_item(g, tw * th, |t| {
@@ -727,7 +727,7 @@ impl Fields {
     /// the rest) to the fields `which`.
     #[allow(clippy::too_many_arguments)]
     #[inline]
-    fn add_pixel<M: Mem>(&mut self, half: &M, at: u32, d: f32, own: f32, radius: f32, spacing: f32, which: u32) {
+    fn add_pixel(&mut self, half: &impl Load, at: u32, d: f32, own: f32, radius: f32, spacing: f32, which: u32) {
         let far_r = f32::from_bits(half.load(at + 8));
         if is_nan(far_r) {
             return;
@@ -784,7 +784,7 @@ pub fn lattice(p: &RingGatherParams, radius: f32) -> (u32, f32) {
 /// The samples of the hexagonal rings ([`lattice`]) of `radius` around (`hx`, `hy`) into the
 /// fields `which`.
 #[allow(clippy::too_many_arguments)]
-fn rings_into<M: Mem>(f: &mut Fields, half: &M, p: &RingGatherParams, hx: u32, hy: u32, own: f32, radius: f32, which: u32) {
+fn rings_into(f: &mut Fields, half: &impl Load, p: &RingGatherParams, hx: u32, hy: u32, own: f32, radius: f32, which: u32) {
     let (hw, hh) = (p.half_width(), p.half_height());
     let (rings, spacing) = lattice(p, radius);
     let mut ring = 1u32;
@@ -809,7 +809,7 @@ fn rings_into<M: Mem>(f: &mut Fields, half: &M, p: &RingGatherParams, hx: u32, h
 /// field has its own kernel: the background one as wide as the pixel's own CoC (widening to the
 /// near kernel by the pixel's near share, to fill behind it), the near one as wide as the
 /// tile's dilated near radius; one set of rings serves both where the two radii agree.
-pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, half: M, dilated: M, mut fields: M) {
+pub fn gather_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &RingGatherParams, half: R, dilated: R, mut fields: M) {
     let [tx, ty, _] = g.workgroup_id();
     let (hw, hh) = (p.half_width(), p.half_height());
     g.each(|lid| {
@@ -888,7 +888,7 @@ pub fn gather_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, half: M, d
 /// those behind the near field (far highlights) and those in front (near ones). A highlight behind
 /// a sharper pixel reaches it by at most the pixel's own CoC, as in the gather; behind a pixel of
 /// the near field it is the background the near field covers, and reaches it whole.
-fn highlights_at<M: Mem>(p: &RingGatherParams, bright: &M, dilated: &M, x: u32, y: u32, own: f32) -> ([f32; 3], [f32; 3]) {
+fn highlights_at(p: &RingGatherParams, bright: &impl Load, dilated: &impl Load, x: u32, y: u32, own: f32) -> ([f32; 3], [f32; 3]) {
     let mut far = [0.0f32; 3];
     let mut near = [0.0f32; 3];
     let (tw, th) = (p.tiles_x(), p.tiles_y());
@@ -953,7 +953,7 @@ fn highlights_at<M: Mem>(p: &RingGatherParams, bright: &M, dilated: &M, x: u32, 
 /// background field by 2 px), near-field neighbours left to the near field, and a neighbour behind the pixel reaching
 /// it by at most the pixel's own CoC. Written as the pixel's colour plus the weighted differences,
 /// so a pixel no neighbour reaches keeps its colour bit for bit.
-fn fine_gather<M: Mem>(p: &RingGatherParams, color: &M, depth: &M, x: u32, y: u32, c: [f32; 3], own: f32) -> [f32; 3] {
+fn fine_gather(p: &RingGatherParams, color: &impl Load, depth: &impl Load, x: u32, y: u32, c: [f32; 3], own: f32) -> [f32; 3] {
     let own_back = maxf(own, 0.0);
     let mut delta = [0.0f32; 3];
     let own_reach = minf(absf(own), FINE_REACH);
@@ -991,7 +991,16 @@ pub const FINE_REACH: f32 = 1.5;
 /// (3 words a pixel). The pixels' colours come from `fine`: the input less what the highlight path
 /// took out of it.
 #[allow(clippy::too_many_arguments)]
-pub fn composite_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, fine: M, depth: M, fields: M, bright: M, dilated: M, mut out: M) {
+pub fn composite_pass<G: Group, R: Load, M: Mem>(
+    g: &mut G,
+    p: &RingGatherParams,
+    fine: R,
+    depth: R,
+    fields: R,
+    bright: R,
+    dilated: R,
+    mut out: M,
+) {
     let [wx, wy, _] = g.workgroup_id();
     let (hw, hh) = (p.half_width(), p.half_height());
     g.each(|lid| {
@@ -1067,19 +1076,21 @@ pub fn composite_pass<G: Group, M: Mem>(g: &mut G, p: &RingGatherParams, fine: M
 
 kernel!(
     /// Half-resolution colour and signed CoC, each tile's largest near-field radius and its highlights, taken out of the full-resolution colours.
-    RING_GATHER_DOWNSAMPLE = ring_gather_downsample [64] (RingGatherParams) shared [u32; 6 * 64] { color, depth, half, tiles, bright, fine, stats } reads { color, depth } => downsample_pass
+    RING_GATHER_DOWNSAMPLE = ring_gather_downsample [64] (RingGatherParams) shared [u32; 6 * 64]
+        { read color, read depth, half, tiles, bright, fine, stats } => downsample_pass
 );
 kernel!(
     /// Each tile's near-field radius dilated over the tiles it reaches, and its highlight reach.
-    RING_GATHER_DILATE = ring_gather_dilate [64] (RingGatherParams) { tiles, bright, dilated } reads { tiles, bright } => dilate_pass
+    RING_GATHER_DILATE = ring_gather_dilate [64] (RingGatherParams) { read tiles, read bright, dilated } => dilate_pass
 );
 kernel!(
     /// The background and near fields at half resolution, over hexagonal sample rings.
-    RING_GATHER = ring_gather [64] (RingGatherParams) { half, dilated, fields } reads { half, dilated } => gather_pass
+    RING_GATHER = ring_gather [64] (RingGatherParams) { read half, read dilated, fields } => gather_pass
 );
 kernel!(
     /// The full-resolution composite of the pixel, the background field, the near field and the highlights' discs.
-    RING_GATHER_COMPOSITE = ring_gather_composite [64] (RingGatherParams) { fine, depth, fields, bright, dilated, out } reads { fine, depth, fields, bright, dilated } => composite_pass
+    RING_GATHER_COMPOSITE = ring_gather_composite [64] (RingGatherParams)
+        { read fine, read depth, read fields, read bright, read dilated, out } => composite_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

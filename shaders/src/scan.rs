@@ -3,7 +3,7 @@
 //! (recursively, until one block remains) and `scan_add` adds each block's offset back. Sums wrap
 //! modulo 2^32 on both backends.
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::wg::{add, inclusive_scan};
 
 pub const THREADS: u32 = 256;
@@ -68,7 +68,7 @@ pub fn block_pass<G: Group, M: Mem>(g: &mut G, p: &ScanParams, sh: &mut [u32; 2 
 }
 
 /// Adds the scanned block sums back to every word of each block.
-pub fn add_pass<G: Group, M: Mem>(g: &mut G, p: &ScanParams, mut data: M, sums: M) {
+pub fn add_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &ScanParams, mut data: M, sums: R) {
     let blocks = p.len.div_ceil(BLOCK);
     let mut block = g.workgroup_id()[0];
     while block < blocks {
@@ -95,7 +95,7 @@ kernel!(
 );
 kernel!(
     /// Adds each block's scanned offset to its words.
-    ADD = scan_add [256] (ScanParams) { data, sums } reads { sums } => add_pass
+    ADD = scan_add [256] (ScanParams) { data, read sums } => add_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

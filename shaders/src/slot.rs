@@ -23,7 +23,7 @@
 //! Alpha outside [0, 1] is clamped and NaN read as 0 ([`clamp_alpha`]); every method that reads
 //! alpha counts what the clamp changed ([`is_alpha_clamped`]).
 
-use crate::exec::Mem;
+use crate::exec::{Load, Mem};
 use crate::lens::{is_finite, is_positive};
 
 /// Words of one slot.
@@ -57,7 +57,7 @@ impl Slot {
 
 /// Slot `index` (pixel · layers + layer) of a buffer of slots.
 #[inline]
-pub fn load<M: Mem>(m: &M, index: u32) -> Slot {
+pub fn load(m: &impl Load, index: u32) -> Slot {
     let b = SLOT_WORDS * index;
     Slot {
         color: [f32::from_bits(m.load(b)), f32::from_bits(m.load(b + 1)), f32::from_bits(m.load(b + 2))],
@@ -68,7 +68,7 @@ pub fn load<M: Mem>(m: &M, index: u32) -> Slot {
 
 /// The depth of slot `index`, without reading the rest.
 #[inline]
-pub fn depth_of<M: Mem>(m: &M, index: u32) -> f32 {
+pub fn depth_of(m: &impl Load, index: u32) -> f32 {
     f32::from_bits(m.load(SLOT_WORDS * index + DEPTH_WORD))
 }
 

@@ -19,7 +19,7 @@
 //! strict total order, so the result is the stable sort under [`crate::keys::sort_key`]: bit-identical
 //! on every backend and schedule. Output goes to separate buffers (keys keep their original bits).
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::keys::sort_key;
 
 /// Capacities of the workgroup-memory classes. A class need not be a power of two (see the module
@@ -214,7 +214,7 @@ fn local_sort<G: Group, const N: usize>(g: &mut G, sh: &mut [u32; N], base: u32,
 
 /// Segments: `segments[2 s]` is the offset of list `s`, `segments[2 s + 1]` its length.
 #[inline]
-fn segment<M: Mem>(segments: &M, s: u32) -> (u32, u32) {
+fn segment(segments: &impl Load, s: u32) -> (u32, u32) {
     (segments.load(2 * s), segments.load(2 * s + 1))
 }
 
@@ -228,7 +228,7 @@ pub struct ClassifyParams {
 
 /// One invocation per list: append it to its class. `lists[c * num_segments + slot]` holds the
 /// lists of class `c`; the plan's counts must be zero beforehand.
-pub fn classify<G: Group, M: Mem>(g: &mut G, p: &ClassifyParams, segments: M, mut plan: M, mut lists: M) {
+pub fn classify<G: Group, R: Load, M: Mem>(g: &mut G, p: &ClassifyParams, segments: R, mut plan: M, mut lists: M) {
     let size = g.size();
     let first = g.workgroup_id()[0] * size;
     let stride = g.num_workgroups()[0] * size;
@@ -298,15 +298,15 @@ pub struct SortParams {
 /// One workgroup sorts one list of the class in workgroup memory (`N / 2` elements at most), looping
 /// over the class's lists when there are more than workgroups.
 #[allow(clippy::too_many_arguments)]
-pub fn shared_class_pass<G: Group, M: Mem, const N: usize>(
+pub fn shared_class_pass<G: Group, R: Load, M: Mem, const N: usize>(
     g: &mut G,
     p: &SortParams,
     sh: &mut [u32; N],
-    segments: M,
-    plan: M,
-    lists: M,
-    keys_in: M,
-    values_in: M,
+    segments: R,
+    plan: R,
+    lists: R,
+    keys_in: R,
+    values_in: R,
     mut keys_out: M,
     mut values_out: M,
 ) {
@@ -340,12 +340,12 @@ pub fn shared_class_pass<G: Group, M: Mem, const N: usize>(
 
 /// Runs `body(group, offset, len)` for every global-class list this workgroup handles (workgroup row
 /// `y` takes lists `y, y + rows, ..`). Uniform: every invocation sees the same lists.
-fn for_each_global_list<G: Group, M: Mem>(
+fn for_each_global_list<G: Group>(
     g: &mut G,
     p: &SortParams,
-    plan: &M,
-    lists: &M,
-    segments: &M,
+    plan: &impl Load,
+    lists: &impl Load,
+    segments: &impl Load,
     mut body: impl FnMut(&mut G, u32, u32),
 ) {
     let count = plan.load(plan::COUNTS + GLOBAL_CLASS);
@@ -361,14 +361,14 @@ fn for_each_global_list<G: Group, M: Mem>(
 /// list into the scratch buffers and sort the block. With `k > LOCAL_BLOCK`: load the block from
 /// scratch, run the steps `j < LOCAL_BLOCK` of stage `k`, store it back.
 #[allow(clippy::too_many_arguments)]
-pub fn global_local_pass<G: Group, M: Mem, const N: usize>(
+pub fn global_local_pass<G: Group, R: Load, M: Mem, const N: usize>(
     g: &mut G,
     p: &SortParams,
     sh: &mut [u32; N],
-    segments: M,
-    plan: M,
-    lists: M,
-    keys_in: M,
+    segments: R,
+    plan: R,
+    lists: R,
+    keys_in: R,
     mut scratch_keys: M,
     mut scratch_pos: M,
 ) {
@@ -413,12 +413,12 @@ pub fn global_local_pass<G: Group, M: Mem, const N: usize>(
 
 /// Global path: one compare-exchange step `(k, j)` with `j >= LOCAL_BLOCK`, in global memory.
 #[allow(clippy::too_many_arguments)]
-pub fn global_step_pass<G: Group, M: Mem>(
+pub fn global_step_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
     p: &SortParams,
-    segments: M,
-    plan: M,
-    lists: M,
+    segments: R,
+    plan: R,
+    lists: R,
     mut scratch_keys: M,
     mut scratch_pos: M,
 ) {
@@ -444,15 +444,15 @@ pub fn global_step_pass<G: Group, M: Mem>(
 
 /// Global path: write the sorted keys and gather the payloads.
 #[allow(clippy::too_many_arguments)]
-pub fn global_store_pass<G: Group, M: Mem>(
+pub fn global_store_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
     p: &SortParams,
-    segments: M,
-    plan: M,
-    lists: M,
-    keys_in: M,
-    values_in: M,
-    scratch_pos: M,
+    segments: R,
+    plan: R,
+    lists: R,
+    keys_in: R,
+    values_in: R,
+    scratch_pos: R,
     mut keys_out: M,
     mut values_out: M,
 ) {
@@ -474,55 +474,44 @@ pub fn global_store_pass<G: Group, M: Mem>(
 
 kernel!(
     /// Appends every non-empty list to its length class.
-    CLASSIFY = sort_classify [256] (ClassifyParams) { segments, plan, lists } reads { segments } => classify
+    CLASSIFY = sort_classify [256] (ClassifyParams) { read segments, plan, lists } => classify
 );
 kernel!(
     /// Indirect dispatch arguments from the class counts.
     PLAN = sort_plan [64] (PlanParams) { plan } => write_plan
 );
 kernel!(SHARED_64 = sort_shared_64 [32] (SortParams) shared [u32; 2 * 64]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
-    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
+    { read segments, read plan, read lists, read keys_in, read values_in, keys_out, values_out } => shared_class_pass);
 kernel!(SHARED_128 = sort_shared_128 [64] (SortParams) shared [u32; 2 * 128]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
-    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
+    { read segments, read plan, read lists, read keys_in, read values_in, keys_out, values_out } => shared_class_pass);
 kernel!(SHARED_256 = sort_shared_256 [128] (SortParams) shared [u32; 2 * 256]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
-    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
+    { read segments, read plan, read lists, read keys_in, read values_in, keys_out, values_out } => shared_class_pass);
 kernel!(SHARED_512 = sort_shared_512 [256] (SortParams) shared [u32; 2 * 512]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
-    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
+    { read segments, read plan, read lists, read keys_in, read values_in, keys_out, values_out } => shared_class_pass);
 kernel!(SHARED_1024 = sort_shared_1024 [256] (SortParams) shared [u32; 2 * 1024]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
-    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
+    { read segments, read plan, read lists, read keys_in, read values_in, keys_out, values_out } => shared_class_pass);
 kernel!(SHARED_2048 = sort_shared_2048 [256] (SortParams) shared [u32; 2 * 2048]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
-    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
+    { read segments, read plan, read lists, read keys_in, read values_in, keys_out, values_out } => shared_class_pass);
 kernel!(SHARED_4096 = sort_shared_4096 [256] (SortParams) shared [u32; 2 * 4096]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
-    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
+    { read segments, read plan, read lists, read keys_in, read values_in, keys_out, values_out } => shared_class_pass);
 kernel!(SHARED_6144 = sort_shared_6144 [256] (SortParams) shared [u32; 2 * 6144]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
-    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
+    { read segments, read plan, read lists, read keys_in, read values_in, keys_out, values_out } => shared_class_pass);
 kernel!(SHARED_8192 = sort_shared_8192 [256] (SortParams) shared [u32; 2 * 8192]
-    { segments, plan, lists, keys_in, values_in, keys_out, values_out }
-    reads { segments, plan, lists, keys_in, values_in } => shared_class_pass);
+    { read segments, read plan, read lists, read keys_in, read values_in, keys_out, values_out } => shared_class_pass);
 kernel!(
     /// Global path: transform and sort blocks (`k == 0`), or finish the narrow steps of stage `k`.
     GLOBAL_LOCAL = sort_global_local [256] (SortParams) shared [u32; 2 * 2048]
-    { segments, plan, lists, keys_in, scratch_keys, scratch_pos }
-        reads { segments, plan, lists, keys_in } => global_local_pass
+    { read segments, read plan, read lists, read keys_in, scratch_keys, scratch_pos } => global_local_pass
 );
 kernel!(
     /// Global path: one wide compare-exchange step in global memory.
     GLOBAL_STEP = sort_global_step [256] (SortParams)
-    { segments, plan, lists, scratch_keys, scratch_pos } reads { segments, plan, lists } => global_step_pass
+    { read segments, read plan, read lists, scratch_keys, scratch_pos } => global_step_pass
 );
 kernel!(
     /// Global path: sorted keys and payloads to the outputs.
     GLOBAL_STORE = sort_global_store [256] (SortParams)
-    { segments, plan, lists, keys_in, values_in, scratch_pos, keys_out, values_out }
-        reads { segments, plan, lists, keys_in, values_in, scratch_pos } => global_store_pass
+    { read segments, read plan, read lists, read keys_in, read values_in, read scratch_pos, keys_out, values_out } => global_store_pass
 );
 
 /// The workgroup-memory class kernels, by class index.

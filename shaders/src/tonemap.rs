@@ -10,7 +10,7 @@
 //!   as display-encoded sRGB in [0, 1], RGBA32F with alpha 1: tone-mapped ([`MODE_TONEMAP`]) or
 //!   the raw linear values clamped to [0, 1] and sRGB-encoded ([`MODE_LINEAR`]).
 
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::math::powf;
 use crate::wg::for_each_item;
 
@@ -88,7 +88,7 @@ pub fn display_channel(p: &DisplayParams, c: f32) -> f32 {
     if p.mode == MODE_LINEAR { srgb_oetf(c) } else { tonemap_channel(c, p.exposure) }
 }
 
-pub fn display_pass<G: Group, M: Mem>(g: &mut G, p: &DisplayParams, rgb: M, mut rgba: M) {
+pub fn display_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &DisplayParams, rgb: R, mut rgba: M) {
     for_each_item(g, p.width * p.height, |i| {
         let mut k = 0;
         while k < 3 {
@@ -102,7 +102,7 @@ pub fn display_pass<G: Group, M: Mem>(g: &mut G, p: &DisplayParams, rgb: M, mut 
 
 kernel!(
     /// The RGB result as display-encoded sRGB (tone-mapped or raw linear), RGBA32F with alpha 1.
-    DISPLAY = display_tonemap [256] (DisplayParams) { rgb, rgba } reads { rgb } => display_pass
+    DISPLAY = display_tonemap [256] (DisplayParams) { read rgb, rgba } => display_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]

@@ -83,3 +83,113 @@ fn every_kernel_the_host_names_has_its_own_module() {
         assert_eq!(points, BTreeSet::from([entry.clone()]), "module of {entry} holds other entry points");
     }
 }
+
+/// A storage-buffer variable of a module: its descriptor set and binding, and whether it is
+/// decorated `NonWritable`.
+#[derive(Debug)]
+struct StorageBuffer {
+    set: u32,
+    binding: u32,
+    non_writable: bool,
+}
+
+/// The module's `StorageBuffer` variables, read from its words: `OpVariable` (storage class 12) with
+/// its `OpDecorate` `DescriptorSet` (34), `Binding` (33) and `NonWritable` (24). rust-gpu 0.11
+/// decorates the variable of a `&[u32]` entry parameter `NonWritable` (not the member of its block
+/// struct, which read-only and writable bindings share); a member decoration would count too.
+fn storage_buffers(words: &[u32]) -> Vec<StorageBuffer> {
+    const NON_WRITABLE: u32 = 24;
+    const BINDING: u32 = 33;
+    const DESCRIPTOR_SET: u32 = 34;
+    const STORAGE_BUFFER: u32 = 12;
+    assert_eq!(words.first(), Some(&0x0723_0203), "not a SPIR-V module");
+    let mut decorations: BTreeMap<u32, Vec<(u32, Option<u32>)>> = BTreeMap::new();
+    let mut member_non_writable: BTreeMap<u32, BTreeSet<u32>> = BTreeMap::new();
+    let mut members: BTreeMap<u32, u32> = BTreeMap::new();
+    let mut pointee: BTreeMap<u32, u32> = BTreeMap::new();
+    let mut variables = Vec::new();
+    let mut at = 5;
+    while at < words.len() {
+        let (count, opcode) = ((words[at] >> 16) as usize, words[at] & 0xffff);
+        assert!(count > 0 && at + count <= words.len(), "malformed instruction at word {at}");
+        let ops = &words[at + 1..at + count];
+        match opcode {
+            // OpDecorate target decoration [literal]
+            71 => decorations.entry(ops[0]).or_default().push((ops[1], ops.get(2).copied())),
+            // OpMemberDecorate struct member decoration
+            72 if ops[2] == NON_WRITABLE => {
+                member_non_writable.entry(ops[0]).or_default().insert(ops[1]);
+            }
+            // OpTypeStruct result members..
+            30 => {
+                members.insert(ops[0], ops.len() as u32 - 1);
+            }
+            // OpTypePointer result storage-class type
+            32 => {
+                pointee.insert(ops[0], ops[2]);
+            }
+            // OpVariable type result storage-class
+            59 if ops[2] == STORAGE_BUFFER => variables.push((ops[0], ops[1])),
+            _ => {}
+        }
+        at += count;
+    }
+    variables
+        .into_iter()
+        .map(|(ty, var)| {
+            let decorated = decorations.get(&var).map(Vec::as_slice).unwrap_or(&[]);
+            let literal = |d: u32| decorated.iter().find(|(k, _)| *k == d).and_then(|(_, v)| *v);
+            let block = pointee.get(&ty).copied();
+            let every_member = block.is_some_and(|s| {
+                let n = members.get(&s).copied().unwrap_or(0);
+                n > 0 && member_non_writable.get(&s).is_some_and(|m| m.len() as u32 == n)
+            });
+            StorageBuffer {
+                set: literal(DESCRIPTOR_SET).unwrap_or_else(|| panic!("storage buffer %{var} has no descriptor set")),
+                binding: literal(BINDING).unwrap_or_else(|| panic!("storage buffer %{var} has no binding")),
+                non_writable: decorated.iter().any(|(k, _)| *k == NON_WRITABLE) || every_member,
+            }
+        })
+        .collect()
+}
+
+/// Every kernel's read-only bindings (those its `kernel!` declaration marks `read`, the
+/// `KernelDesc::read_only` mask) are exactly its `NonWritable` storage buffers in its SPIR-V, and
+/// every storage buffer of a draw's stages is `NonWritable` (graphics stages only read).
+#[test]
+fn read_only_bindings_are_non_writable_in_the_spirv() {
+    let (mut read_only, mut writable) = (0, 0);
+    for kernel in dof_shaders::all_kernels() {
+        let words = dof::shaders::module_words(kernel.entry).expect("module");
+        let mut seen = 0u32;
+        for b in storage_buffers(&words) {
+            let (entry, i) = (kernel.entry, b.binding);
+            assert_eq!(b.set, 0, "{entry}: binding {i} is not in descriptor set 0");
+            assert!(i < kernel.bindings, "{entry}: binding {i} beyond its {} bindings", kernel.bindings);
+            assert_eq!(seen & (1 << i), 0, "{entry}: binding {i} twice");
+            seen |= 1 << i;
+            let declared = kernel.read_only & (1 << i) != 0;
+            assert_eq!(b.non_writable, declared, "{entry}: binding {i} NonWritable in the SPIR-V vs declared read-only");
+            if declared {
+                read_only += 1;
+            } else {
+                writable += 1;
+            }
+        }
+        // rust-gpu leaves out a binding the kernel never touches (`raster_setup`'s textures): a module
+        // holds a subset of the declared bindings, and nothing is there to decorate for the others.
+        assert_ne!(seen, 0, "{}: no binding in the module", kernel.entry);
+    }
+    // The kernels declare both kinds, so the comparison above saw both answers.
+    assert!(read_only > 100 && writable > 50, "{read_only} read-only and {writable} writable bindings checked");
+    for draw in dof_shaders::all_draws() {
+        for entry in [draw.vertex, draw.fragment] {
+            let buffers = storage_buffers(&dof::shaders::module_words(entry).expect("module"));
+            assert!(!buffers.is_empty(), "{entry} binds no storage buffer");
+            for b in buffers {
+                assert!(b.set == 0 && b.binding < draw.bindings, "{entry}: binding {} of set {}", b.binding, b.set);
+                assert!(b.non_writable, "{entry}: binding {} is writable", b.binding);
+            }
+        }
+    }
+}

@@ -40,7 +40,7 @@ pub fn interpolate_uv(vertices: &impl Load, tri: [u32; 4], b0: f32, b1: f32) -> 
 /// The material's coverage at a point: base alpha times the base texture's alpha.
 pub fn coverage(p: &RasterParams, material: u32, uv: (f32, f32), materials: &impl Load, textures: &impl Load, texels: &impl Load) -> f32 {
     let at = material * MATERIAL_WORDS;
-    let base_texture = materials.load_word(at + 8);
+    let base_texture = materials.load(at + 8);
     load_f32(materials, at + 3) * sample(textures, texels, p.textures, base_texture, uv.0, uv.1)[3]
 }
 
@@ -64,7 +64,7 @@ pub fn fragment_kept(
         return false;
     }
     let tri = triangle(triangles, t);
-    let flags = materials.load_word(tri[3] * MATERIAL_WORDS + 10);
+    let flags = materials.load(tri[3] * MATERIAL_WORDS + 10);
     if flags & (ALPHA_MASK | ALPHA_BLEND) == 0 {
         return true;
     }
@@ -76,7 +76,7 @@ pub fn fragment_kept(
 /// mesh's): what the graphics pipeline draws, so a command of zero vertices costs the fallback no
 /// rasterising either.
 pub fn drawn_triangles(p: &RasterParams, args: &impl Load) -> u32 {
-    let n = args.load_word(0) / 3;
+    let n = args.load(0) / 3;
     if n < p.triangles { n } else { p.triangles }
 }
 
@@ -84,18 +84,18 @@ pub fn drawn_triangles(p: &RasterParams, args: &impl Load) -> u32 {
 /// so the CPU stand-in reads it instead of projecting every triangle once per tile. (The graphics
 /// pipeline neither runs nor reads it.)
 #[allow(clippy::too_many_arguments)]
-pub fn setup_pass<G: Group, M: Mem>(
+pub fn setup_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
     p: &RasterParams,
-    vertices: M,
-    triangles: M,
-    materials: M,
-    _textures: M,
-    _texels: M,
-    _reach: M,
+    vertices: R,
+    triangles: R,
+    materials: R,
+    _textures: R,
+    _texels: R,
+    _reach: R,
     mut bounds: M,
-    args: M,
-    _target: M,
+    args: R,
+    _target: R,
 ) {
     for_each_item(g, drawn_triangles(p, &args), |t| {
         let (v, _, drawn) = fetch(p, t, &vertices, &triangles, &materials);
@@ -112,17 +112,17 @@ pub fn setup_pass<G: Group, M: Mem>(
 /// The CPU stand-in for the draw: each workgroup owns a 16x16 tile and walks every triangle (a
 /// uniform loop), rasterising those whose tile range holds it.
 #[allow(clippy::too_many_arguments)]
-pub fn fallback_pass<G: Group, M: Mem>(
+pub fn fallback_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
     p: &RasterParams,
-    vertices: M,
-    triangles: M,
-    materials: M,
-    textures: M,
-    texels: M,
-    reach: M,
-    bounds: M,
-    args: M,
+    vertices: R,
+    triangles: R,
+    materials: R,
+    textures: R,
+    texels: R,
+    reach: R,
+    bounds: R,
+    args: R,
     mut target: M,
 ) {
     let [wx, wy, _] = g.workgroup_id();
@@ -196,12 +196,16 @@ fn tile_bounds(p: &RasterParams, c: &[[f32; 3]; 3]) -> [u32; 4] {
 
 kernel!(
     /// Every triangle's tile range for the view: the prepass of the draw's CPU fallback.
-    RASTER_SETUP = raster_setup [64] (RasterParams) { vertices, triangles, materials, textures, texels, reach, bounds, args, target } => setup_pass
+    RASTER_SETUP = raster_setup [64] (RasterParams)
+        { read vertices, read triangles, read materials, read textures, read texels, read reach, bounds, read args, read target }
+        => setup_pass
 );
 
 kernel!(
     /// The rasterising draw as a compute kernel: the draw's CPU fallback.
-    RASTER_FALLBACK = raster_fallback [256] (RasterParams) { vertices, triangles, materials, textures, texels, reach, bounds, args, target } => fallback_pass
+    RASTER_FALLBACK = raster_fallback [256] (RasterParams)
+        { read vertices, read triangles, read materials, read textures, read texels, read reach, read bounds, read args, target }
+        => fallback_pass
 );
 
 /// Vertex stage: vertex `i` is corner `i % 3` of triangle `i / 3`, pulled from the buffers. A

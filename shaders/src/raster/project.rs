@@ -45,7 +45,7 @@ pub fn vertex_position(vertices: &impl Load, index: u32) -> [f32; 3] {
 #[inline]
 pub fn triangle(triangles: &impl Load, t: u32) -> [u32; 4] {
     let at = t * TRIANGLE_WORDS;
-    [triangles.load_word(at), triangles.load_word(at + 1), triangles.load_word(at + 2), triangles.load_word(at + 3)]
+    [triangles.load(at), triangles.load(at + 1), triangles.load(at + 2), triangles.load(at + 3)]
 }
 
 #[inline]
@@ -81,7 +81,7 @@ pub fn visible(p: &RasterParams, v: &[[f32; 3]; 3], material: u32, materials: &i
     if dot(n, n) == 0.0 {
         return false;
     }
-    let flags = materials.load_word(material * MATERIAL_WORDS + 10);
+    let flags = materials.load(material * MATERIAL_WORDS + 10);
     flags & DOUBLE_SIDED != 0 || dot(n, sub(v[0], p.eye)) < 0.0
 }
 

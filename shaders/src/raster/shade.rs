@@ -90,9 +90,9 @@ pub fn shade_point(
     }
     let uv = interpolate_uv(vertices, tri, b0, b1);
     let at = tri[3] * MATERIAL_WORDS;
-    let base_tex = sample(textures, texels, texture_count, materials.load_word(at + 8), uv.0, uv.1);
-    let emit_tex = sample(textures, texels, texture_count, materials.load_word(at + 9), uv.0, uv.1);
-    let flags = materials.load_word(at + 10);
+    let base_tex = sample(textures, texels, texture_count, materials.load(at + 8), uv.0, uv.1);
+    let emit_tex = sample(textures, texels, texture_count, materials.load(at + 9), uv.0, uv.1);
+    let flags = materials.load(at + 10);
     let lambert = dot(n, light.direction).max(0.0);
     let mut rgb = [0.0; 3];
     let mut j = 0;
@@ -107,15 +107,15 @@ pub fn shade_point(
 }
 
 #[allow(clippy::too_many_arguments)]
-pub fn shade_pass<G: Group, M: Mem>(
+pub fn shade_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
     p: &ShadeParams,
-    vis: M,
-    vertices: M,
-    triangles: M,
-    materials: M,
-    textures: M,
-    texels: M,
+    vis: R,
+    vertices: R,
+    triangles: R,
+    materials: R,
+    textures: R,
+    texels: R,
     mut out: M,
     mut reach: M,
 ) {
@@ -155,5 +155,6 @@ pub fn shade_pass<G: Group, M: Mem>(
 
 kernel!(
     /// Shades the visibility buffer into a layer (and the next reach) or the accumulation buffer.
-    RASTER_SHADE = raster_shade [256] (ShadeParams) { vis, vertices, triangles, materials, textures, texels, out, reach } => shade_pass
+    RASTER_SHADE = raster_shade [256] (ShadeParams)
+        { read vis, read vertices, read triangles, read materials, read textures, read texels, out, reach } => shade_pass
 );

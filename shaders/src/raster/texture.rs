@@ -8,7 +8,7 @@ use crate::math::floor;
 
 #[inline]
 pub fn load_f32(m: &impl Load, i: u32) -> f32 {
-    f32::from_bits(m.load_word(i))
+    f32::from_bits(m.load(i))
 }
 
 /// Texel index along one axis of `size` texels for the integer coordinate `i` under `wrap`.
@@ -46,8 +46,7 @@ pub fn sample(textures: &impl Load, texels: &impl Load, texture_count: u32, inde
         return [1.0; 4];
     }
     let at = index * TEXTURE_WORDS;
-    let (offset, width, height, sampler) =
-        (textures.load_word(at), textures.load_word(at + 1), textures.load_word(at + 2), textures.load_word(at + 3));
+    let (offset, width, height, sampler) = (textures.load(at), textures.load(at + 1), textures.load(at + 2), textures.load(at + 3));
     if width == 0 || height == 0 {
         return [1.0; 4];
     }

@@ -27,7 +27,7 @@
 use super::fragment::{Fragment, shaped_weight, weight_sum};
 use super::pack::load_sharp;
 use super::{SplatParams, THREADS, stats};
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::lens::is_nan;
 use crate::wg::{inclusive_scan, max};
 
@@ -91,18 +91,18 @@ fn blend<const N: usize>(sh: &mut [u32; N], i: u32, s: f32, a: f32, c: [f32; 3])
 }
 
 #[allow(clippy::too_many_arguments)]
-pub fn accumulate_pass<G: Group, M: Mem>(
+pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
     p: &SplatParams,
     sh: &mut [u32; SHARED_WORDS],
-    sharp: M,
-    dense: M,
-    values: M,
-    segments: M,
-    copy: M,
+    sharp: R,
+    dense: R,
+    values: R,
+    segments: R,
+    copy: R,
     mut out: M,
     mut st: M,
-    mask: M,
+    mask: R,
 ) {
     let p = &super::plan::planned(p, &st);
     let [wx, wy, _] = g.workgroup_id();
@@ -237,6 +237,5 @@ pub fn accumulate_pass<G: Group, M: Mem>(
 kernel!(
     /// Front-to-back accumulation of the sorted tile lists (or copy-through) into `out` (3 words a pixel).
     ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 19 * 256]
-        { sharp, dense, values, segments, copy, out, st, mask }
-        reads { sharp, dense, values, segments, copy, mask } => accumulate_pass
+        { read sharp, read dense, read values, read segments, read copy, out, st, read mask } => accumulate_pass
 );

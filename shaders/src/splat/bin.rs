@@ -22,7 +22,7 @@ use super::fragment::Fragment;
 use super::plan::planned;
 use super::{SplatParams, THREADS, stats};
 use super::{merge, pack};
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::wg::{add, for_each_item, inclusive_scan, max};
 
 /// Cells one invocation of `splat_tile_count` handles: (32 px / 1 px)² = 4 · 256.
@@ -149,7 +149,7 @@ pub fn tile_count_pass<G: Group, M: Mem>(
 
 /// The dense index of cell `c`'s first fragment: its tile's offset plus the cell's in the tile.
 #[inline]
-fn cell_start<M: Mem>(p: &SplatParams, cells: &M, tile_base: &M, c: u32) -> u32 {
+fn cell_start(p: &SplatParams, cells: &impl Load, tile_base: &impl Load, c: u32) -> u32 {
     let (cx, cy) = (c % p.cells_x, c / p.cells_x);
     let per_tile = p.tile / p.cell;
     tile_base.load((cy / per_tile) * p.tiles_x + cx / per_tile) + cells.load(p.cells_x * p.cells_y + c)
@@ -158,7 +158,16 @@ fn cell_start<M: Mem>(p: &SplatParams, cells: &M, tile_base: &M, c: u32) -> u32 
 /// Unmerged, one invocation per pixel: its list fragments ([`pack::PixelFragments`], as packing
 /// counted them) into the dense array at their place (tile by tile, pixels row-major in the tile,
 /// front to back), so the slot-per-pixel cells are never stored.
-pub fn place_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, cells: M, tile_base: M, mut dense: M, st: M) {
+pub fn place_pass<G: Group, R: Load, M: Mem>(
+    g: &mut G,
+    p: &SplatParams,
+    layers: R,
+    counts: R,
+    cells: R,
+    tile_base: R,
+    mut dense: M,
+    st: R,
+) {
     let p = &planned(p, &st);
     for_each_item(g, p.width * p.height, |i| {
         let mut at = cell_start(p, &cells, &tile_base, i);
@@ -173,7 +182,16 @@ pub fn place_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, count
 /// Merged, one invocation per cell: its merged list ([`merge::cell_fragments`], walked again as
 /// `splat_merge` counted it) into the dense array at its place. A kernel of its own, so that the
 /// unmerged one stays small.
-pub fn place_merged_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, cells: M, tile_base: M, mut dense: M, st: M) {
+pub fn place_merged_pass<G: Group, R: Load, M: Mem>(
+    g: &mut G,
+    p: &SplatParams,
+    layers: R,
+    counts: R,
+    cells: R,
+    tile_base: R,
+    mut dense: M,
+    st: R,
+) {
     let p = &planned(p, &st);
     for_each_item(g, p.cells_x * p.cells_y, |c| {
         let mut at = cell_start(p, &cells, &tile_base, c);
@@ -184,7 +202,7 @@ pub fn place_merged_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M
     });
 }
 
-pub fn alloc_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, tile_count: M, tile_radius: M, mut copy: M, mut st: M) {
+pub fn alloc_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, tile_count: R, tile_radius: R, mut copy: M, mut st: M) {
     let p = &planned(p, &st);
     let tiles = p.tiles_x * p.tiles_y;
     for_each_item(g, tiles, |t| {
@@ -217,14 +235,14 @@ pub fn alloc_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, tile_count: M, t
 const BIN_SHARED: usize = 6 * THREADS as usize;
 
 #[allow(clippy::too_many_arguments)]
-pub fn bin_pass<G: Group, M: Mem>(
+pub fn bin_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
     p: &SplatParams,
     sh: &mut [u32; BIN_SHARED],
-    dense: M,
-    tile_count: M,
-    tile_base: M,
-    tile_radius: M,
+    dense: R,
+    tile_count: R,
+    tile_base: R,
+    tile_radius: R,
     mut copy: M,
     mut keys: M,
     mut values: M,
@@ -376,20 +394,19 @@ kernel!(
 );
 kernel!(
     /// Unmerged: the fragments into one dense array, tile by tile, made from the input.
-    PLACE = splat_place [256] (SplatParams) { layers, counts, cells, tile_base, dense, st } reads { layers, counts, cells, tile_base, st } => place_pass
+    PLACE = splat_place [256] (SplatParams) { read layers, read counts, read cells, read tile_base, dense, read st } => place_pass
 );
 kernel!(
     /// Merged: each cell's merged fragments into one dense array, tile by tile.
-    PLACE_MERGED = splat_place_merged [256] (SplatParams) { layers, counts, cells, tile_base, dense, st }
-        reads { layers, counts, cells, tile_base, st } => place_merged_pass
+    PLACE_MERGED = splat_place_merged [256] (SplatParams)
+        { read layers, read counts, read cells, read tile_base, dense, read st } => place_merged_pass
 );
 kernel!(
     /// Which tiles no list fragment reaches (copied through).
-    ALLOC = splat_alloc [256] (SplatParams) { tile_count, tile_radius, copy, st } reads { tile_count, tile_radius } => alloc_pass
+    ALLOC = splat_alloc [256] (SplatParams) { read tile_count, read tile_radius, copy, st } => alloc_pass
 );
 kernel!(
     /// The tile lists: depth keys and dense fragment indices.
     BIN = splat_bin [256] (SplatParams) shared [u32; 6 * 256]
-        { dense, tile_count, tile_base, tile_radius, copy, keys, values, segments, st }
-        reads { dense, tile_count, tile_base, tile_radius } => bin_pass
+        { read dense, read tile_count, read tile_base, read tile_radius, copy, keys, values, segments, st } => bin_pass
 );

@@ -194,7 +194,7 @@ impl Fragment {
 
     /// Fragment `index` of a buffer of packed fragments.
     #[inline]
-    pub fn load<M: Mem>(m: &M, index: u32) -> Self {
+    pub fn load(m: &impl Load, index: u32) -> Self {
         let b = WORDS * index;
         Self::unpack([m.load(b), m.load(b + 1), m.load(b + 2), m.load(b + 3)])
     }
@@ -245,7 +245,7 @@ impl Fragment {
 
 /// Depth of packed fragment `index` without decoding the rest.
 #[inline]
-pub fn depth_of<M: Mem>(m: &M, index: u32) -> f32 {
+pub fn depth_of(m: &impl Load, index: u32) -> f32 {
     f32::from_bits(m.load(WORDS * index + 2))
 }
 

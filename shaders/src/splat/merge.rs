@@ -22,7 +22,7 @@
 use super::fragment::Fragment;
 use super::pack::PixelFragments;
 use super::{FLAG_UMBRA_MERGE, SplatParams, stats};
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::lens::ThinLens;
 use crate::wg::for_each_item;
 
@@ -126,7 +126,7 @@ impl Quad {
     /// The 2x2 cell `(cx, cy)`: members `m` at pixel `(2cx + (m & 1), 2cy + (m >> 1))`, those
     /// outside the image empty.
     #[inline]
-    fn new<M: Mem>(layers: &M, counts: &M, p: &SplatParams, cx: u32, cy: u32) -> Self {
+    fn new(layers: &impl Load, counts: &impl Load, p: &SplatParams, cx: u32, cy: u32) -> Self {
         let mut q = Quad { cx, cy, ..Quad::EMPTY };
         let mut m = 0;
         while m < 4 {
@@ -158,7 +158,7 @@ impl Quad {
 
     /// Moves member `m` to its next list fragment.
     #[inline]
-    fn advance<M: Mem>(&mut self, layers: &M, p: &SplatParams, m: usize) {
+    fn advance(&mut self, layers: &impl Load, p: &SplatParams, m: usize) {
         if self.walk[m].advance(layers, p) {
             self.live |= 1 << m;
         } else {
@@ -168,7 +168,7 @@ impl Quad {
 
     /// The next fragment of this 2x2 cell's merged list (one step of the front-to-back walk over its
     /// four pixels; the cell must not be done).
-    fn step<M: Mem>(&mut self, layers: &M, p: &SplatParams, c: &mut MergeCounts) -> Fragment {
+    fn step(&mut self, layers: &impl Load, p: &SplatParams, c: &mut MergeCounts) -> Fragment {
         let mut f = [Fragment { color: [0.0; 3], alpha: 1.0, depth: 0.0, level: 0, pos: [0; 2] }; 4];
         let mut present = 0;
         let mut front = 4usize;
@@ -213,7 +213,7 @@ impl Quad {
 /// 2x2 cell's merged list is walked step by step ([`Quad`]), and the 4x4 walk keeps only the
 /// head of each of its four 2x2 lists. Each level reads its members as stored, so the lists are
 /// those of merging level by level through memory, fragment for fragment.
-pub fn cell_fragments<M: Mem>(layers: &M, counts: &M, p: &SplatParams, o: u32, mut emit: impl FnMut(&Fragment)) -> MergeCounts {
+pub fn cell_fragments(layers: &impl Load, counts: &impl Load, p: &SplatParams, o: u32, mut emit: impl FnMut(&Fragment)) -> MergeCounts {
     let mut c = MergeCounts { merges: 0, skipped: 0 };
     let (ox, oy) = (o % p.cells_x, o / p.cells_x);
     if p.cell == 2 {
@@ -282,7 +282,7 @@ pub fn cell_fragments<M: Mem>(layers: &M, counts: &M, p: &SplatParams, o: u32, m
 /// Moves 2x2 cell `m`'s head on (as the 4x4 step reads it, stored); returns `has` with bit `m`
 /// cleared once its list is done.
 #[inline]
-fn next_head<M: Mem>(q: &mut Quad, head: &mut Fragment, has: u32, m: usize, layers: &M, p: &SplatParams, c: &mut MergeCounts) -> u32 {
+fn next_head(q: &mut Quad, head: &mut Fragment, has: u32, m: usize, layers: &impl Load, p: &SplatParams, c: &mut MergeCounts) -> u32 {
     if q.is_done() {
         return has & !(1 << m);
     }
@@ -293,7 +293,7 @@ fn next_head<M: Mem>(q: &mut Quad, head: &mut Fragment, has: u32, m: usize, laye
 /// Per output cell: how many fragments its merged list holds, their widest radius and how many
 /// were capped, at `cells[o]` and `cells[cells + o]` (f32 bits) as `splat_tile_count` reads them,
 /// and the merging statistics. `bin::place_pass` walks the same lists again to write them.
-pub fn merge_count_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, mut cells: M, mut st: M) {
+pub fn merge_count_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, layers: R, counts: R, mut cells: M, mut st: M) {
     let p = &super::plan::planned(p, &st);
     let outputs = p.cells_x * p.cells_y;
     for_each_item(g, outputs, |o| {
@@ -321,5 +321,5 @@ pub fn merge_count_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M,
 
 kernel!(
     /// Merged cells of `params.cell` pixels (2 or 4): their fragment counts and widest radii.
-    MERGE = splat_merge [256] (SplatParams) { layers, counts, cells, st } reads { layers, counts } => merge_count_pass
+    MERGE = splat_merge [256] (SplatParams) { read layers, read counts, cells, st } => merge_count_pass
 );

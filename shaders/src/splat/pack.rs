@@ -23,7 +23,7 @@
 
 use super::fragment::Fragment;
 use super::{SplatParams, stats};
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::lens::{is_finite, is_positive};
 use crate::radiance::{clamp_color, is_clamped};
 use crate::slot::{Composite, Slot, clamp_alpha, is_alpha_clamped};
@@ -31,7 +31,7 @@ use crate::wg::for_each_item;
 
 /// The slot `(pixel, k)` of the input ([`crate::slot`]).
 #[inline]
-pub fn input_slot<M: Mem>(layers: &M, p: &SplatParams, pixel: u32, k: u32) -> Slot {
+pub fn input_slot(layers: &impl Load, p: &SplatParams, pixel: u32, k: u32) -> Slot {
     crate::slot::load(layers, pixel * p.layers + k)
 }
 
@@ -45,7 +45,7 @@ pub fn is_valid(color: [f32; 3], depth: f32) -> bool {
 /// sharp front is opaque (or translucent over black, nothing of the pixel behind it): it takes all
 /// the coverage left at its depth and ends the pixel's traversal.
 #[inline]
-pub fn load_sharp<M: Mem>(sharp: &M, pixel: u32) -> ([f32; 3], f32) {
+pub fn load_sharp(sharp: &impl Load, pixel: u32) -> ([f32; 3], f32) {
     let b = 4 * pixel;
     (
         [f32::from_bits(sharp.load(b)), f32::from_bits(sharp.load(b + 1)), f32::from_bits(sharp.load(b + 2))],
@@ -136,7 +136,7 @@ impl PixelFragments {
 
     /// The cursor before pixel `i`'s first list fragment.
     #[inline]
-    pub fn new<M: Mem>(counts: &M, p: &SplatParams, i: u32) -> Self {
+    pub fn new(counts: &impl Load, p: &SplatParams, i: u32) -> Self {
         let n = counts.load(i);
         let n = if n < p.layers { n } else { p.layers };
         // An empty pixel's black background is one more slot.
@@ -144,7 +144,7 @@ impl PixelFragments {
     }
 
     /// Moves to the pixel's next list fragment (into `head`); false once there is none.
-    pub fn advance<M: Mem>(&mut self, layers: &M, p: &SplatParams) -> bool {
+    pub fn advance(&mut self, layers: &impl Load, p: &SplatParams) -> bool {
         if self.waiting != 0 {
             self.waiting = 0;
             self.head = self.held;
@@ -228,7 +228,7 @@ impl PixelFragments {
 /// `cells[pixels + i]`, where `splat_tile_count` reads them; the fragments themselves are written
 /// only once their place in the dense array is known (`bin::place_pass`).
 #[allow(clippy::too_many_arguments)]
-pub fn pack_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts: M, mut cells: M, mut sharp: M, mut st: M) {
+pub fn pack_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, layers: R, counts: R, mut cells: M, mut sharp: M, mut st: M) {
     let p = &super::plan::planned(p, &st);
     let pixels = p.width * p.height;
     for_each_item(g, pixels, |i| {
@@ -279,7 +279,7 @@ pub fn pack_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, layers: M, counts
 
 kernel!(
     /// Input slots → sharp fronts, and unmerged each pixel's list fragment count and widest radius.
-    PACK = splat_pack [256] (SplatParams) { layers, counts, cells, sharp, st } reads { layers, counts } => pack_pass
+    PACK = splat_pack [256] (SplatParams) { read layers, read counts, cells, sharp, st } => pack_pass
 );
 
 #[cfg(test)]

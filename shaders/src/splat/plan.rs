@@ -12,14 +12,14 @@
 
 use super::pack::{input_slot, is_valid};
 use super::{MAX_RINGS, SplatParams, THREADS, stats};
-use crate::exec::{Group, Mem};
+use crate::exec::{Group, Load, Mem};
 use crate::slot::clamp_alpha;
 use crate::wg::{inclusive_scan, max};
 
 /// The push constants with the device plan's fields (`rings`, `max_radius`) read
 /// from the frame words that `splat_plan_finish` wrote.
 #[inline]
-pub fn planned<M: Mem>(p: &SplatParams, st: &M) -> SplatParams {
+pub fn planned(p: &SplatParams, st: &impl Load) -> SplatParams {
     let mut q = *p;
     q.rings = st.load(stats::RINGS);
     q.max_radius = f32::from_bits(st.load(stats::RADIUS_CAP));
@@ -41,7 +41,14 @@ pub fn rings_for(widest: f32, cell: u32, cap: f32, tile: u32) -> (u32, f32) {
     (rings, if cap < ring_reach { cap } else { ring_reach })
 }
 
-pub fn reduce_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, sh: &mut [u32; 2 * THREADS as usize], layers: M, counts: M, mut st: M) {
+pub fn reduce_pass<G: Group, R: Load, M: Mem>(
+    g: &mut G,
+    p: &SplatParams,
+    sh: &mut [u32; 2 * THREADS as usize],
+    layers: R,
+    counts: R,
+    mut st: M,
+) {
     let pixels = p.width * p.height;
     // [0, 2T): scan of the widest radius, a non-negative float (or +inf) whose bits order like
     // its value.
@@ -100,7 +107,7 @@ pub fn finish_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, mut st: M) {
 
 kernel!(
     /// The largest CoC radius of the input, into the frame words.
-    PLAN_REDUCE = splat_plan_reduce [256] (SplatParams) shared [u32; 2 * 256] { layers, counts, st } reads { layers, counts } => reduce_pass
+    PLAN_REDUCE = splat_plan_reduce [256] (SplatParams) shared [u32; 2 * 256] { read layers, read counts, st } => reduce_pass
 );
 kernel!(
     /// Rings and radius cap from the reduction.

@@ -7,7 +7,7 @@
 //! without the crate name), which must not be one of dof's own.
 #![cfg_attr(target_arch = "spirv", no_std)]
 
-use dof_shaders::exec::{Group, Mem};
+use dof_shaders::exec::{Group, Load, Mem};
 use dof_shaders::kernel;
 
 /// The push constants: `len` words of `values`, counted into `bins` bins by `value % bins`.
@@ -23,7 +23,7 @@ pub const THREADS: u32 = 64;
 
 /// The body: a grid-stride loop over the words, one atomic add per word into `counts` (which the
 /// caller zeroes). Any number of workgroups covers any length.
-pub fn histogram_pass<G: Group, M: Mem>(g: &mut G, p: &HistogramParams, values: M, mut counts: M) {
+pub fn histogram_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &HistogramParams, values: R, mut counts: M) {
     let stride = g.num_workgroups()[0] * THREADS;
     let first = g.workgroup_id()[0] * THREADS;
     let bins = if p.bins == 0 { 1 } else { p.bins };
@@ -38,7 +38,7 @@ pub fn histogram_pass<G: Group, M: Mem>(g: &mut G, p: &HistogramParams, values: 
 
 kernel!(
     /// Counts `values` into `counts` (`value % bins`), adding to what `counts` holds.
-    HISTOGRAM = histogram [64] (HistogramParams) { values, counts } reads { values } => histogram_pass
+    HISTOGRAM = histogram [64] (HistogramParams) { read values, counts } => histogram_pass
 );
 
 /// This crate's kernels: what the host hands to Vulkan (the SPIR-V build also holds dof-shaders' own

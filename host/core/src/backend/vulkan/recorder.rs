@@ -6,7 +6,7 @@
 //! Barriers follow from what each command declares it reads and writes: the recorder remembers the
 //! buffers (and images) the commands since the last barrier read and wrote, and puts a full memory
 //! barrier before a command that reads what one of them wrote or writes what one of them read or
-//! wrote (a kernel's `reads { .. }` bindings are reads, its others writes; fills write; copies
+//! wrote (a kernel's `read` bindings are reads, its others writes; fills write; copies
 //! read their source and write their destination), and before the first command of a command
 //! buffer. Commands that share nothing, or only read what they share, run without barriers.
 //!

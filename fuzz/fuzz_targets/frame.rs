@@ -25,9 +25,9 @@ use dof::dof_shaders::aperture::{Aperture, blades, masked};
 use dof::dof_shaders::splat::fragment::MAX_EDGE;
 use dof::frame::splat::MAX_LIST_ENTRIES;
 use dof::frame::{
-    BokehContext, BokehContextDesc, ContextDesc, DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput, GatherContext,
-    GatherContextDesc, METHODS, MethodOptions, RingGatherContext, RingGatherContextDesc, RingGatherOptions, SplatContext, SplatContextDesc,
-    ring_gather,
+    BokehContext, BokehContextDesc, ContextDesc, CountBuffer, DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput,
+    GatherContext, GatherContextDesc, METHODS, MethodOptions, RgbBuffer, RingGatherContext, RingGatherContextDesc, RingGatherOptions,
+    SlotBuffer, SplatContext, SplatContextDesc, ring_gather,
 };
 use dof::methods::bokeh::BokehOptions;
 use dof::methods::splat::{Merge, SplatOptions};
@@ -585,9 +585,11 @@ fn record(b: &mut CpuBackend, ctx: &mut dyn DofContext, bufs: &[BufferId; 3], f:
         height: size.1,
         lens: f.lens.get(),
         input: match f.input {
-            InputIn::Buffers { fragments, counts } => {
-                FrameInput::Layers { fragments: buffer(fragments, bufs), counts: buffer(counts, bufs), layers: size.2 }
-            }
+            InputIn::Buffers { fragments, counts } => FrameInput::Layers {
+                fragments: SlotBuffer(buffer(fragments, bufs)),
+                counts: CountBuffer(buffer(counts, bufs)),
+                layers: size.2,
+            },
             InputIn::Images { color, depth, encoding } => FrameInput::Images {
                 color: color.get((size.0, size.1)),
                 depth: depth.get((size.0, size.1)),
@@ -599,7 +601,7 @@ fn record(b: &mut CpuBackend, ctx: &mut dyn DofContext, bufs: &[BufferId; 3], f:
             },
         },
         output: match f.output {
-            OutputIn::Buffer(id) => FrameOutput::Buffer(buffer(id, bufs)),
+            OutputIn::Buffer(id) => FrameOutput::Buffer(RgbBuffer(buffer(id, bufs))),
             OutputIn::Image(image) => FrameOutput::Image(image.get((size.0, size.1))),
         },
     };

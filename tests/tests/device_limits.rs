@@ -5,7 +5,10 @@
 
 use dof::Error;
 use dof::backend::{Backend, CpuBackend};
-use dof::frame::{BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, SplatContext, SplatContextDesc};
+use dof::frame::{
+    BokehContext, BokehContextDesc, CountBuffer, Frame, GatherContext, GatherContextDesc, RgbBuffer, SlotBuffer, SplatContext,
+    SplatContextDesc,
+};
 use dof::methods::bokeh::BokehOptions;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::splat::{Merge, SplatOptions, splat};
@@ -112,7 +115,7 @@ fn a_list_overflow_on_vulkan_is_counted_and_degrades_cleanly() {
     let mut desc = SplatContextDesc::new(64, 48, 3, SplatOptions::default());
     desc.list_entries = Some(2000);
     let mut ctx = SplatContext::new(b, &desc).unwrap();
-    ctx.record(b, &Frame::layers(64, 48, 3, test_lens(0.02), bufs[0], bufs[1], bufs[2])).unwrap();
+    ctx.record(b, &Frame::layers(64, 48, 3, test_lens(0.02), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]))).unwrap();
     b.submit().unwrap();
     let report = ctx.report(b).unwrap();
     assert!(report.overflow_tiles > 0 && report.list_entries <= 2000, "{report:?}");

@@ -13,7 +13,7 @@
 use dof::backend::vulkan::ash::vk;
 use dof::backend::vulkan::gpu_allocator;
 use dof::backend::{Backend, BackendCounters, BufferId, CpuBackend, ImageFormat, ImageRef, RawOptions, VulkanBackend};
-use dof::frame::{Frame, GatherContext, GatherContextDesc};
+use dof::frame::{CountBuffer, Frame, GatherContext, GatherContextDesc, RgbBuffer, SlotBuffer};
 use dof::ops::scan::{ScanScratch, exclusive_scan};
 use dof::ops::sort::{SegmentedSort, SortInput, sort_on};
 use dof::workload::{lists_with, random_key};
@@ -289,7 +289,10 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
     let mut ctx = GatherContext::new(&mut vk, &GatherContextDesc::new(4, 4, 1)).expect("a context on the renderer's device");
     let bufs = [16u64, 4, 12].map(|w| vk.create_buffer(w, "frame").expect("create_buffer"));
     let before = vk.counters();
-    let outside = ctx.record(&mut vk, &Frame::layers(4, 4, 1, dof::stress::test_lens(0.01), bufs[0], bufs[1], bufs[2]));
+    let outside = ctx.record(
+        &mut vk,
+        &Frame::layers(4, 4, 1, dof::stress::test_lens(0.01), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2])),
+    );
     assert!(matches!(&outside, Err(dof::Error::InvalidArgument(m)) if m.contains("begin_external")), "{outside:?}");
     assert_eq!(vk.counters(), before, "the refused frame recorded nothing");
     assert!(vk.submit().unwrap().is_empty(), "nothing was left recorded");

@@ -5,7 +5,7 @@
 
 use dof::Error;
 use dof::backend::{Backend, BufferId, CpuBackend};
-use dof::frame::{Frame, FrameInput, FrameOutput, SplatContext, SplatContextDesc};
+use dof::frame::{CountBuffer, Frame, FrameInput, FrameOutput, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::splat::{Merge, SplatOptions, splat};
@@ -28,7 +28,15 @@ fn upload(b: &mut dyn Backend, bufs: &[BufferId; 3], image: &LayeredImage) {
 }
 
 fn frame(image: &LayeredImage, aperture: f32, bufs: &[BufferId; 3]) -> Frame {
-    Frame::layers(image.width, image.height, image.max_layers, test_lens(aperture), bufs[0], bufs[1], bufs[2])
+    Frame::layers(
+        image.width,
+        image.height,
+        image.max_layers,
+        test_lens(aperture),
+        SlotBuffer(bufs[0]),
+        CountBuffer(bufs[1]),
+        RgbBuffer(bufs[2]),
+    )
 }
 
 /// Frames of changing size, layer count and lens through one context: per frame no allocation, no
@@ -132,7 +140,7 @@ fn frames_beyond_the_context_or_its_buffers_are_refused() {
     ctx.record(&mut b, &frame(&image, 0.01, &bufs)).unwrap();
     b.submit().unwrap();
     let small = caller_buffers(&mut b, (8, 8, 1));
-    let short = Frame { output: FrameOutput::Buffer(small[2]), ..frame(&image, 0.01, &bufs) };
+    let short = Frame { output: FrameOutput::Buffer(RgbBuffer(small[2])), ..frame(&image, 0.01, &bufs) };
     assert!(matches!(ctx.record(&mut b, &short), Err(Error::InvalidArgument(m)) if m.contains("output")));
     let nan_lens = Frame { lens: test_lens(f32::NAN), ..frame(&image, 0.01, &bufs) };
     assert!(matches!(ctx.record(&mut b, &nan_lens), Err(Error::InvalidArgument(_))));

@@ -190,7 +190,7 @@ fn a_context_records_frames_without_allocating_or_reading_back_on_vulkan() {
 /// for bit on a built-in scene, and a context too small for a frame refuses it.
 #[test]
 fn the_registry_one_shot_path_equals_the_one_shot_function() {
-    use dof::frame::{ContextDesc, Extent, Frame, MethodOptions, registry};
+    use dof::frame::{ContextDesc, CountBuffer, Extent, Frame, MethodOptions, RgbBuffer, SlotBuffer, registry};
     use dof::methods::one_shot::one_shot;
     let scene = builtin("railing").unwrap().with_size(96, 54);
     let lens = scene.thin_lens().unwrap();
@@ -208,7 +208,7 @@ fn the_registry_one_shot_path_equals_the_one_shot_function() {
         assert_eq!(shot.report.figures["missed_rays"], expected.missed_rays as f64);
         let mut ctx = (method.create)(b.as_mut(), &ContextDesc::new(Extent::new(16, 16, 1), options)).unwrap();
         let out = b.create_buffer(3 * 96 * 54, "out").unwrap();
-        let f = Frame::layers(96, 54, 1, lens, out, out, out);
+        let f = Frame::layers(96, 54, 1, lens, SlotBuffer(out), CountBuffer(out), RgbBuffer(out));
         assert!(matches!(ctx.record(b.as_mut(), &f), Err(Error::InvalidArgument(_))));
         ctx.destroy(b.as_mut());
         b.destroy_buffer(out);

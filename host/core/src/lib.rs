@@ -19,7 +19,8 @@
 //!
 //! Without features this builds on stable Rust from the prebuilt SPIR-V, without rust-gpu. `png`
 //! reads aperture masks from PNG files; `rebuild-spirv` compiles the kernels to SPIR-V with rust-gpu
-//! (pinned nightly) instead of embedding the prebuilt modules.
+//! (pinned nightly) instead of embedding the prebuilt modules; `testing` adds `testing`, what only
+//! the project's suites use (on inside the workspace, through the tests crate).
 
 pub mod aperture;
 pub mod backend;
@@ -29,6 +30,8 @@ pub mod ops;
 pub mod sampling;
 pub mod shaders;
 pub mod source_hash;
+#[cfg(feature = "testing")]
+pub mod testing;
 
 pub use error::{Error, Result};
 

@@ -19,7 +19,7 @@ use crate::error::{Error, Result};
 use crate::frame::context::ContextReport;
 use crate::frame::io::{Owned, ready};
 use crate::frame::peel::{KERNELS, PeelReport, PeelSlots};
-use crate::frame::{Frame, FrameInput, FrameOutput};
+use crate::frame::{CountBuffer, Frame, FrameInput, FrameOutput, SlotBuffer};
 use crate::scene::guard_band::{auto_margin_mesh, reach_planes};
 use crate::scene::{Camera, GuardBand, LayerOptions, check_subsamples};
 use dof_shaders::lens::ThinLens;
@@ -178,7 +178,7 @@ impl MeshPeelContext {
     /// image (crop its result by [`Self::margin`]).
     pub fn frame(&self, lens: ThinLens, output: FrameOutput) -> Frame {
         let s = &self.slots;
-        let input = FrameInput::Layers { fragments: s.fragments, counts: s.counts, layers: s.layers };
+        let input = FrameInput::Layers { fragments: SlotBuffer(s.fragments), counts: CountBuffer(s.counts), layers: s.layers };
         Frame { width: s.width, height: s.height, lens, input, output }
     }
 

@@ -17,7 +17,6 @@
 
 use arbitrary::Arbitrary;
 use ash::vk;
-use dof::Error;
 use dof::ThinLens;
 use dof::aperture::{ApertureShape, star};
 use dof::backend::{Backend, BufferId, CpuBackend, ImageFormat, ImageRef};
@@ -31,6 +30,7 @@ use dof::frame::{
 };
 use dof::methods::bokeh::BokehOptions;
 use dof::methods::splat::{Merge, SplatOptions};
+use dof::{CoreError, Error};
 use libfuzzer_sys::fuzz_target;
 
 /// Words of a layer input slot (`dof_shaders::slot`).
@@ -384,10 +384,10 @@ fn stat(what: &str) {
 }
 
 /// `Ok` or a clean `Err`; a kernel fault is a failure.
-fn clean<T>(what: &str, r: dof::Result<T>) -> Option<T> {
-    match r {
+fn clean<T>(what: &str, r: Result<T, impl Into<Error>>) -> Option<T> {
+    match r.map_err(Into::into) {
         Ok(v) => Some(v),
-        Err(e @ Error::KernelFault { .. }) => panic!("{what}: {e}"),
+        Err(e @ Error::Core(CoreError::KernelFault { .. })) => panic!("{what}: {e}"),
         Err(_) => None,
     }
 }

@@ -19,7 +19,7 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-#[path = "src/source_hash.rs"]
+#[path = "build/source_hash.rs"]
 mod source_hash;
 
 type Result<T> = std::result::Result<T, Box<dyn std::error::Error>>;

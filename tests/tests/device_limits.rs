@@ -3,7 +3,7 @@
 //! frame. Each is a clear error, or a documented degraded result, with nothing leaked and the
 //! backend still usable; never a panic or garbage.
 
-use dof::Error;
+use dof::CoreError;
 use dof::backend::{Backend, CpuBackend};
 use dof::frame::{
     BokehContext, BokehContextDesc, CountBuffer, Frame, GatherContext, GatherContextDesc, RgbBuffer, SlotBuffer, SplatContext,
@@ -30,18 +30,18 @@ fn memory_runs_out(b: &mut dyn Backend) {
     for budget in [0, 4096, need / 3, need / 2, need - 4] {
         b.set_memory_budget(Some(held + budget));
         match SplatContext::new(b, &desc) {
-            Err(Error::OutOfMemory { budget: got, .. }) => assert_eq!(got, held + budget),
+            Err(CoreError::OutOfMemory { budget: got, .. }) => assert_eq!(got, held + budget),
             Err(e) => panic!("budget {budget}: {e}"),
             Ok(_) => panic!("budget {budget} of {need} bytes: the context was created"),
         }
         assert_eq!(b.counters().device_bytes, held, "budget {budget}: buffers left behind");
         assert!(matches!(
             GatherContext::new(b, &GatherContextDesc::new(4096, 4096, 4)),
-            Err(Error::OutOfMemory { .. }) | Err(Error::TooLarge { .. })
+            Err(CoreError::OutOfMemory { .. }) | Err(CoreError::TooLarge { .. })
         ));
         assert!(matches!(
             BokehContext::new(b, &BokehContextDesc::new(2048, 2048, 1, BokehOptions::default())),
-            Err(Error::OutOfMemory { .. }) | Err(Error::TooLarge { .. })
+            Err(CoreError::OutOfMemory { .. }) | Err(CoreError::TooLarge { .. })
         ));
         assert_eq!(b.counters().device_bytes, held, "budget {budget}: buffers left behind");
     }
@@ -76,10 +76,13 @@ fn extent_beyond_the_device(b: &mut dyn Backend) {
     let edge = dof_shaders::splat::fragment::MAX_EDGE;
     for (w, h, l) in [(edge, edge, 64u32), (edge, edge, 4096)] {
         let e = SplatContext::new(b, &SplatContextDesc::new(w, h, l, SplatOptions::default())).err().expect("too large");
-        assert!(matches!(e, Error::TooLarge { .. }), "{w}x{h}x{l}: {e}");
+        assert!(matches!(e, CoreError::TooLarge { .. }), "{w}x{h}x{l}: {e}");
     }
-    assert!(matches!(SplatContext::new(b, &SplatContextDesc::new(edge + 1, 16, 1, SplatOptions::default())), Err(Error::TooLarge { .. })));
-    assert!(matches!(GatherContext::new(b, &GatherContextDesc::new(1 << 16, 1 << 16, 1 << 12)), Err(Error::TooLarge { .. })));
+    assert!(matches!(
+        SplatContext::new(b, &SplatContextDesc::new(edge + 1, 16, 1, SplatOptions::default())),
+        Err(CoreError::TooLarge { .. })
+    ));
+    assert!(matches!(GatherContext::new(b, &GatherContextDesc::new(1 << 16, 1 << 16, 1 << 12)), Err(CoreError::TooLarge { .. })));
     assert_eq!(b.counters().device_bytes, held);
 }
 

@@ -10,6 +10,7 @@
 //! Like every Vulkan suite it fails where Vulkan or the layer is missing, unless `DOF_SKIP_VULKAN=1`
 //! asks to skip it.
 
+use dof::CoreError;
 use dof::backend::vulkan::ash::vk;
 use dof::backend::vulkan::gpu_allocator;
 use dof::backend::{Backend, BackendCounters, BufferId, CpuBackend, ImageFormat, ImageRef, RawOptions, VulkanBackend};
@@ -293,7 +294,7 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
         &mut vk,
         &Frame::layers(4, 4, 1, dof::stress::test_lens(0.01), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2])),
     );
-    assert!(matches!(&outside, Err(dof::Error::InvalidArgument(m)) if m.contains("begin_external")), "{outside:?}");
+    assert!(matches!(&outside, Err(CoreError::InvalidArgument(m)) if m.contains("begin_external")), "{outside:?}");
     assert_eq!(vk.counters(), before, "the refused frame recorded nothing");
     assert!(vk.submit().unwrap().is_empty(), "nothing was left recorded");
     ctx.destroy(&mut vk);
@@ -374,8 +375,8 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
     // The CPU backend copies only its own stand-in images.
     let mut cpu = CpuBackend::new();
     let b = cpu.create_buffer(4 * WIDTH as u64 * HEIGHT as u64, "b").unwrap();
-    assert!(matches!(cpu.copy_image_to_buffer(target, b, 0, "x"), Err(dof::Error::InvalidArgument(_))));
-    assert!(matches!(cpu.copy_buffer_to_image(b, 0, target, "x"), Err(dof::Error::InvalidArgument(_))));
+    assert!(matches!(cpu.copy_image_to_buffer(target, b, 0, "x"), Err(CoreError::InvalidArgument(_))));
+    assert!(matches!(cpu.copy_buffer_to_image(b, 0, target, "x"), Err(CoreError::InvalidArgument(_))));
 
     drop(vk);
     // The renderer's allocator, which the backend no longer holds, goes before its device.

@@ -2,9 +2,9 @@
 //! of a one-dimensional grid-stride dispatch, and reading an RGB result back.
 
 use crate::backend::{Backend, BufferId, with_buffers};
-use crate::error::{Error, Result};
 use crate::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};
 use crate::layers::{LayeredImage, RgbImage};
+use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 
 pub use crate::backend::{MAX_GROUPS, groups_for};

@@ -6,12 +6,12 @@
 //! again with the context grown ([`DofContext::grow_to_fit`]), so every result is whole.
 
 use crate::backend::{Backend, BufferId, CommandTime};
-use crate::error::{Error, Result};
 use crate::frame::{
     ContextDesc, ContextReport, CountBuffer, DofContext, Extent, Frame, MethodInfo, MethodOptions, Reads, RgbBuffer, SlotBuffer,
 };
 use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{SLOT_WORDS, read_rgb, slot_words};
+use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 use std::borrow::Cow;
 

@@ -15,10 +15,10 @@ pub use oracle::{RaytraceOutput, raytrace};
 mod oracle {
     use super::RaytraceOptions;
     use crate::backend::{Backend, CommandTime, with_buffers};
-    use crate::error::{Error, Result};
     use crate::frame::raytrace::{lens_samples, trace_params};
     use crate::layers::{LayeredImage, RgbImage};
     use crate::methods::buffers::{read_rgb, slot_words};
+    use dof_core::error::{Error, Result};
     use dof_core::testing::record_trace;
     use dof_shaders::lens::ThinLens;
     use dof_shaders::raytrace::raytrace_trace;

@@ -393,7 +393,7 @@ fn framed(
     let bufs: Vec<BufferId> = [(input.len() as u64, "bench/fragments"), (pixels, "bench/counts"), (3 * pixels, "bench/output")]
         .iter()
         .map(|&(w, l)| b.create_buffer(w, l))
-        .collect::<dof::Result<_>>()?;
+        .collect::<Result<_, dof::CoreError>>()?;
     b.write_buffer(bufs[0], 0, &input)?;
     b.write_buffer(bufs[1], 0, &image.counts)?;
     let extent = Extent::new(image.width, image.height, image.max_layers);

@@ -87,7 +87,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
         [(SLOT_WORDS as u64 * pixels * MAX_LAYERS as u64, "soak/fragments"), (pixels, "soak/counts"), (3 * pixels, "soak/output")]
             .iter()
             .map(|&(w, l)| b.create_buffer(w, l))
-            .collect::<dof::Result<_>>()?;
+            .collect::<Result<_, dof::CoreError>>()?;
     // One context per method of the registry, all for the same largest frame.
     let extent = Extent::new(max, max, MAX_LAYERS);
     let mut contexts: Vec<Box<dyn DofContext>> = Vec::new();

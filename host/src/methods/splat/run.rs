@@ -7,12 +7,12 @@
 //! wanted, so its result is always whole.
 
 use crate::backend::{Backend, CommandTime, with_buffers};
-use crate::error::{Error, Result};
 use crate::frame::splat::{MAX_LIST_ENTRIES, SplatContext, SplatContextDesc};
 use crate::frame::splat::{SplatOptions, SplatReport};
 use crate::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};
 use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{read_rgb, slot_words};
+use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 
 /// Every stage's buffers, read back by [`splat_with_stages`] (feature `testing`).

@@ -1,7 +1,7 @@
 //! Thin-lens ray tracing through the multi-layer image (kernels and their rules in
 //! `dof_shaders::raytrace`): a min/max hierarchy of the signed CoC, then `spp` rays per pixel.
 //!
-//! [`raytrace`] is the one-shot oracle the suites compare the context with (feature `testing`): it
+//! `raytrace` is the one-shot oracle the suites compare the context with (feature `testing`): it
 //! allocates, uploads and reads back per call, and records the same kernels in the same order as
 //! [`crate::frame::RaytraceContext`] (through `dof_core::testing::record_trace`), whose module
 //! makes the lens samples and holds the options. A frame of the registry's context is

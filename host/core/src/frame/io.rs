@@ -99,7 +99,7 @@ impl Frame {
     /// # }
     /// ```
     ///
-    /// ```compile_fail
+    /// ```compile_fail,E0308
     /// # use dof_core::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};
     /// # fn frame(lens: dof_core::ThinLens, slots: SlotBuffer, counts: CountBuffer, out: RgbBuffer) -> Frame {
     /// Frame::layers(8, 8, 1, lens, counts, slots, out) // the counts where the slots belong

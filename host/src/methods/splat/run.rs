@@ -136,7 +136,7 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
 }
 
 /// A splatting context; one that keeps each stage's buffers apart where `keep_stages` (only with
-/// the feature `testing`, which [`splat_with_stages`] needs).
+/// the feature `testing`, which `splat_with_stages` needs).
 fn context(backend: &mut dyn Backend, desc: &SplatContextDesc, keep_stages: bool) -> Result<SplatContext> {
     #[cfg(feature = "testing")]
     if keep_stages {

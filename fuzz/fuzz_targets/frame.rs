@@ -17,7 +17,6 @@
 
 use arbitrary::Arbitrary;
 use ash::vk;
-use dof::Error;
 use dof::ThinLens;
 use dof::aperture::{ApertureShape, star};
 use dof::backend::{Backend, BufferId, CpuBackend, ImageFormat, ImageRef};
@@ -25,12 +24,13 @@ use dof::dof_shaders::aperture::{Aperture, blades, masked};
 use dof::dof_shaders::splat::fragment::MAX_EDGE;
 use dof::frame::splat::MAX_LIST_ENTRIES;
 use dof::frame::{
-    BokehContext, BokehContextDesc, ContextDesc, DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput, GatherContext,
-    GatherContextDesc, METHODS, MethodOptions, RingGatherContext, RingGatherContextDesc, RingGatherOptions, SplatContext, SplatContextDesc,
-    ring_gather,
+    BokehContext, BokehContextDesc, ContextDesc, CountBuffer, DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput,
+    GatherContext, GatherContextDesc, METHODS, MethodOptions, RgbBuffer, RingGatherContext, RingGatherContextDesc, RingGatherOptions,
+    SlotBuffer, SplatContext, SplatContextDesc, ring_gather,
 };
 use dof::methods::bokeh::BokehOptions;
 use dof::methods::splat::{Merge, SplatOptions};
+use dof::{CoreError, Error};
 use libfuzzer_sys::fuzz_target;
 
 /// Words of a layer input slot (`dof_shaders::slot`).
@@ -384,10 +384,10 @@ fn stat(what: &str) {
 }
 
 /// `Ok` or a clean `Err`; a kernel fault is a failure.
-fn clean<T>(what: &str, r: dof::Result<T>) -> Option<T> {
-    match r {
+fn clean<T>(what: &str, r: Result<T, impl Into<Error>>) -> Option<T> {
+    match r.map_err(Into::into) {
         Ok(v) => Some(v),
-        Err(e @ Error::KernelFault { .. }) => panic!("{what}: {e}"),
+        Err(e @ Error::Core(CoreError::KernelFault { .. })) => panic!("{what}: {e}"),
         Err(_) => None,
     }
 }
@@ -585,9 +585,11 @@ fn record(b: &mut CpuBackend, ctx: &mut dyn DofContext, bufs: &[BufferId; 3], f:
         height: size.1,
         lens: f.lens.get(),
         input: match f.input {
-            InputIn::Buffers { fragments, counts } => {
-                FrameInput::Layers { fragments: buffer(fragments, bufs), counts: buffer(counts, bufs), layers: size.2 }
-            }
+            InputIn::Buffers { fragments, counts } => FrameInput::Layers {
+                fragments: SlotBuffer(buffer(fragments, bufs)),
+                counts: CountBuffer(buffer(counts, bufs)),
+                layers: size.2,
+            },
             InputIn::Images { color, depth, encoding } => FrameInput::Images {
                 color: color.get((size.0, size.1)),
                 depth: depth.get((size.0, size.1)),
@@ -599,7 +601,7 @@ fn record(b: &mut CpuBackend, ctx: &mut dyn DofContext, bufs: &[BufferId; 3], f:
             },
         },
         output: match f.output {
-            OutputIn::Buffer(id) => FrameOutput::Buffer(buffer(id, bufs)),
+            OutputIn::Buffer(id) => FrameOutput::Buffer(RgbBuffer(buffer(id, bufs))),
             OutputIn::Image(image) => FrameOutput::Image(image.get((size.0, size.1))),
         },
     };

@@ -42,7 +42,10 @@ use dof::scene::{Camera, Focus, GuardBand, LayerOptions, LensSettings, MeshScene
 use dof_core::backend::vulkan::ash::vk::{AccessFlags as Access, ImageLayout as Layout};
 use dof_core::backend::vulkan::ash::{self, vk};
 use dof_core::backend::{Backend, BackendCounters, CommandTime, CpuBackend, ImageRef, RawDevice, RawOptions, VulkanBackend};
-use dof_core::frame::{DepthEncoding, Frame, FrameInput, FrameOutput, RendererPeel, RendererPeelDesc, SplatContext, SplatContextDesc};
+use dof_core::frame::{
+    CountBuffer, DepthEncoding, Frame, FrameInput, FrameOutput, RendererPeel, RendererPeelDesc, RgbBuffer, SlotBuffer, SplatContext,
+    SplatContextDesc,
+};
 use dof_shaders::raster::mesh::{ALPHA_BLEND, MeshMaterial, MeshVertex, UNLIT};
 use dof_shaders::slot::{ALPHA_WORD, DEPTH_WORD, SLOT_WORDS};
 use glam::Mat4;
@@ -746,7 +749,11 @@ fn main() -> Result<ExitCode> {
             let t = if args.frames > 1 { i as f32 / (args.frames - 1) as f32 } else { 0.5 };
             let focus = near_far.0 * (near_far.1 / near_far.0).powf(t);
             let lens = LensSettings { focus: Focus::Distance(focus), ..scene.lens }.thin_lens(&scene.camera)?;
-            (lens, FrameInput::Layers { fragments: fragments_id, counts: counts_id, layers: layers.max_layers }, "multi-layer")
+            (
+                lens,
+                FrameInput::Layers { fragments: SlotBuffer(fragments_id), counts: CountBuffer(counts_id), layers: layers.max_layers },
+                "multi-layer",
+            )
         } else {
             // Our upload left both images in SHADER_READ_ONLY_OPTIMAL, visible to compute; nothing
             // has written them since, so there is no write to name. They stay in that layout.
@@ -804,7 +811,7 @@ fn main() -> Result<ExitCode> {
         let angle = (2.0 * i as f32).to_radians();
         let eye = target + 3.0 * Vec3::new(angle.sin(), 0.0, angle.cos());
         let view_proj = (projection(yfov, w as f32 / h as f32, near, far) * look_at(eye, target)).to_cols_array();
-        let input = renderer_peel.frame(lens, FrameOutput::Buffer(bound_id)).input;
+        let input = renderer_peel.frame(lens, FrameOutput::Buffer(RgbBuffer(bound_id))).input;
         let peeling = Peeling { peel: &mut renderer_peel, pass: &pass, view_proj, background };
         let frame = run_frame(&r, &mut backend, &mut ctx, &output, lens, input, Some(peeling))?;
         let c = frame.counters;

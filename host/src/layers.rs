@@ -10,7 +10,7 @@
 //! sends, its alpha what it hides behind it. A pixel's fragments composite front to back ("over")
 //! over black.
 
-use crate::error::{Error, Result};
+use crate::error::{CoreError, Error, Result};
 
 /// Linear HDR RGB, row-major, top row first.
 #[derive(Clone, Debug, PartialEq)]
@@ -117,13 +117,13 @@ impl LayeredImage {
     /// An image with no fragments. Errors on a zero size or one too large to address.
     pub fn new(width: u32, height: u32, max_layers: u32) -> Result<Self> {
         if width == 0 || height == 0 || max_layers == 0 {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "a layered image needs a positive size and layer count, got {width}x{height} with {max_layers} layers"
             )));
         }
         let slots = width as u64 * height as u64 * max_layers as u64;
         if slots > MAX_SLOTS {
-            return Err(Error::TooLarge { what: "layered image (pixels x layers)".into(), size: slots, limit: MAX_SLOTS });
+            return Err(Error::Core(CoreError::TooLarge { what: "layered image (pixels x layers)".into(), size: slots, limit: MAX_SLOTS }));
         }
         Ok(LayeredImage {
             width,
@@ -151,7 +151,7 @@ impl LayeredImage {
     /// or its depth is not a positive number.
     pub fn push(&mut self, x: u32, y: u32, fragment: Fragment) -> Result<bool> {
         if !(fragment.depth > 0.0) {
-            return Err(Error::InvalidArgument(format!("fragment depth {} at ({x}, {y}) is not positive", fragment.depth)));
+            return Err(Error::invalid(format!("fragment depth {} at ({x}, {y}) is not positive", fragment.depth)));
         }
         let p = self.pixel_index(x, y);
         let count = self.counts[p] as usize;
@@ -160,7 +160,7 @@ impl LayeredImage {
         }
         let start = p * self.max_layers as usize;
         if count > 0 && self.fragments[start + count - 1].depth > fragment.depth {
-            return Err(Error::InvalidArgument(format!("fragments at ({x}, {y}) must be pushed front to back")));
+            return Err(Error::invalid(format!("fragments at ({x}, {y}) must be pushed front to back")));
         }
         self.fragments[start + count] = fragment;
         self.counts[p] += 1;

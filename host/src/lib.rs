@@ -1,8 +1,9 @@
 //! Depth of field above the core: the data, scenes, references and evaluation around the frame API.
 //!
-//! The core (`dof-core`: [`frame`], [`backend`], [`ops`], [`aperture`], [`shaders`], [`error`]) is
+//! The core (`dof-core`: [`frame`], [`backend`], [`ops`], [`aperture`], [`shaders`]) is
 //! re-exported here, so `dof::frame::…` and `dof_core::frame::…` name the same items. This crate adds:
 //!
+//! - [`error`]: its errors, the core's ([`CoreError`]) and those of scene files and plots;
 //! - [`layers`]: colour and multi-layer images, the data every method shares;
 //! - [`scene`]: lenses, cameras, analytic scenes and their exact references; glTF (feature `gltf`);
 //! - [`raster`]: triangle meshes rasterised into multi-layer images and accumulation-buffer references;
@@ -27,6 +28,7 @@
 //! bars) add the rest; `rebuild-spirv` compiles the kernels to SPIR-V with rust-gpu (pinned nightly)
 //! instead of embedding the prebuilt modules.
 
+pub mod error;
 #[cfg(feature = "eval")]
 pub mod eval;
 pub mod io;
@@ -41,10 +43,11 @@ pub mod stress;
 pub mod timing;
 pub mod workload;
 
-/// The core, re-exported so that `dof::frame::…`, `dof::backend::…` and `dof::Error` name the same items
-/// as `dof_core::…`.
+/// The core, re-exported so that `dof::frame::…` and `dof::backend::…` name the same items as
+/// `dof_core::…`. [`Error`] is this crate's: the core's errors ([`CoreError`]) and those above it.
 pub use dof_core;
-pub use dof_core::{Backend, CpuBackend, Error, Result, VulkanBackend, VulkanOptions, dof_shaders};
-pub use dof_core::{aperture, backend, error, frame, ops, shaders, source_hash};
+pub use dof_core::{Backend, CpuBackend, VulkanBackend, VulkanOptions, dof_shaders};
+pub use dof_core::{aperture, backend, frame, ops, shaders};
+pub use error::{CoreError, Error, Result};
 pub use layers::{Fragment, LayeredImage, RgbImage};
 pub use scene::ThinLens;

@@ -41,16 +41,13 @@ pub struct ImageError {
 
 fn check_sizes(a: &RgbImage, b: &RgbImage, mask: Option<&[bool]>) -> Result<()> {
     if (a.width, a.height) != (b.width, b.height) || a.data.len() != b.data.len() {
-        return Err(Error::InvalidArgument(format!(
-            "cannot compare a {}x{} image with a {}x{} reference",
-            a.width, a.height, b.width, b.height
-        )));
+        return Err(Error::invalid(format!("cannot compare a {}x{} image with a {}x{} reference", a.width, a.height, b.width, b.height)));
     }
     if a.data.is_empty() {
-        return Err(Error::InvalidArgument("cannot compare empty images".into()));
+        return Err(Error::invalid("cannot compare empty images".into()));
     }
     if let Some(m) = mask.filter(|m| m.len() != a.data.len()) {
-        return Err(Error::InvalidArgument(format!("the mask has {} entries for {} pixels", m.len(), a.data.len())));
+        return Err(Error::invalid(format!("the mask has {} entries for {} pixels", m.len(), a.data.len())));
     }
     Ok(())
 }
@@ -105,7 +102,7 @@ pub fn compare(image: &RgbImage, reference: &RgbImage, mask: Option<&[bool]>) ->
     let squared = squared_errors(image, reference);
     let pixels = squared.len() as u64;
     let similarity = image_compare::rgb_similarity_structure(&image_compare::Algorithm::MSSIMSimple, &to_rgb8(image), &to_rgb8(reference))
-        .map_err(|e| Error::InvalidArgument(format!("SSIM failed: {e}")))?;
+        .map_err(|e| Error::invalid(format!("SSIM failed: {e}")))?;
     let flip_map = flip_map(image, reference);
     let mut result = ImageError {
         psnr_db: psnr_from(squared.iter().sum(), pixels),

@@ -6,7 +6,7 @@
 //! Methods run at their last quick setting (the heavier one: for splatting, 4x4 merging).
 
 use crate::backend::Backend;
-use crate::error::{Error, Result};
+use crate::error::{CoreError, Error, Result};
 use crate::eval::methods::{EvaluatedMethod, MethodInput};
 use crate::layers::{Fragment, LayeredImage, RgbImage};
 use dof_shaders::lens::ThinLens;
@@ -459,8 +459,8 @@ impl Case {
             return Outcome::NotApplicable("the method ignores the lens");
         }
         let out = match (result, self.expect) {
-            (Err(Error::InvalidArgument(m)), Expect::InvalidArgument) => return Outcome::Pass(format!("error: {m}")),
-            (Err(e @ (Error::TooLarge { .. } | Error::InvalidArgument(_))), Expect::ResultOrClearError) => {
+            (Err(Error::Core(CoreError::InvalidArgument(m))), Expect::InvalidArgument) => return Outcome::Pass(format!("error: {m}")),
+            (Err(e @ Error::Core(CoreError::TooLarge { .. } | CoreError::InvalidArgument(_))), Expect::ResultOrClearError) => {
                 return Outcome::Pass(format!("error: {e}"));
             }
             (Err(e), _) => return Outcome::Fail(format!("error: {e}")),
@@ -576,5 +576,5 @@ impl Case {
 
 /// Finds a case by name.
 pub fn case(name: &str) -> Result<Case> {
-    cases().into_iter().find(|c| c.name == name).ok_or_else(|| Error::InvalidArgument(format!("no stress case `{name}`")))
+    cases().into_iter().find(|c| c.name == name).ok_or_else(|| Error::invalid(format!("no stress case `{name}`")))
 }

@@ -10,7 +10,7 @@ use dof::frame::{BokehOptions, LayeredOptions, METHODS, Merge, MethodOptions, Ra
 use dof::layers::{Fragment, LayeredImage, RgbImage};
 use dof::methods::one_shot::one_shot;
 use dof::scene::{Aperture, Camera, LensSettings, MAX_GUARD_BAND, ThinLens, Vec3};
-use dof::{CpuBackend, Error, VulkanBackend, VulkanOptions};
+use dof::{CoreError, CpuBackend, Error, VulkanBackend, VulkanOptions};
 use numpy::ndarray::{Array2, Array3, Array4, ArrayViewD, Axis};
 use numpy::{AllowTypeChange, IntoPyArray, PyArray3, PyArrayLike2, PyArrayLikeDyn, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
@@ -20,9 +20,10 @@ use pyo3::types::{PyDict, PyTuple};
 /// A library error as a Python exception: bad input (`InvalidArgument`, `TooLarge`) is a
 /// `ValueError`, anything else (no Vulkan driver, a device failure) a `RuntimeError`; the message
 /// is the library's, as the CLI prints it.
-fn py_err(e: Error) -> PyErr {
+fn py_err(e: impl Into<Error>) -> PyErr {
+    let e: Error = e.into();
     match e {
-        Error::InvalidArgument(_) | Error::TooLarge { .. } | Error::Scene(_) => PyValueError::new_err(e.to_string()),
+        Error::Core(CoreError::InvalidArgument(_) | CoreError::TooLarge { .. }) | Error::Scene(_) => PyValueError::new_err(e.to_string()),
         _ => PyRuntimeError::new_err(e.to_string()),
     }
 }

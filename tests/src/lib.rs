@@ -71,7 +71,7 @@ pub fn context_frames(
     extent: dof::frame::Extent,
     frames: &[ContextFrame],
 ) -> Vec<(RgbImage, dof::frame::ContextReport)> {
-    use dof::frame::{ContextDesc, Frame, registry};
+    use dof::frame::{ContextDesc, CountBuffer, Frame, RgbBuffer, SlotBuffer, registry};
     use dof::methods::buffers::{read_rgb, slot_words};
     let method = registry::method(method).unwrap();
     let mut max = extent;
@@ -94,7 +94,8 @@ pub fn context_frames(
         let img = f.image;
         b.write_buffer(bufs[0], 0, &slot_words(img)).unwrap();
         b.write_buffer(bufs[1], 0, &img.counts).unwrap();
-        let frame = Frame::layers(img.width, img.height, img.max_layers, f.lens, bufs[0], bufs[1], bufs[2]);
+        let frame =
+            Frame::layers(img.width, img.height, img.max_layers, f.lens, SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
         let before = b.counters();
         ctx.record(b, &frame).unwrap();
         b.submit().unwrap();

@@ -1,7 +1,7 @@
 //! Bokeh sprites (de Rousiers and Pettineo): the graphics pipeline on Vulkan against its compute fallback on the
 //! CPU, no highlights, more highlights than the buffer holds, energy kept, bad options refused.
 
-use dof::Error;
+use dof::CoreError;
 use dof::aperture::parse_aperture;
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::RgbImage;
@@ -133,7 +133,7 @@ fn bad_options_are_errors() {
     ];
     for options in bad {
         let err = bokeh(&mut CpuBackend::new(), &img, &depth, &lens, &options).err().expect("an error");
-        assert!(matches!(err, Error::InvalidArgument(_)), "{err}");
+        assert!(matches!(err, CoreError::InvalidArgument(_)), "{err}");
     }
     assert!(bokeh(&mut CpuBackend::new(), &img, &depth[1..], &lens, &BokehOptions::default()).is_err());
 }

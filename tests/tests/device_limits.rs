@@ -3,9 +3,12 @@
 //! frame. Each is a clear error, or a documented degraded result, with nothing leaked and the
 //! backend still usable; never a panic or garbage.
 
-use dof::Error;
+use dof::CoreError;
 use dof::backend::{Backend, CpuBackend};
-use dof::frame::{BokehContext, BokehContextDesc, Frame, GatherContext, GatherContextDesc, SplatContext, SplatContextDesc};
+use dof::frame::{
+    BokehContext, BokehContextDesc, CountBuffer, Frame, GatherContext, GatherContextDesc, RgbBuffer, SlotBuffer, SplatContext,
+    SplatContextDesc,
+};
 use dof::methods::bokeh::BokehOptions;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::splat::{Merge, SplatOptions, splat};
@@ -27,18 +30,18 @@ fn memory_runs_out(b: &mut dyn Backend) {
     for budget in [0, 4096, need / 3, need / 2, need - 4] {
         b.set_memory_budget(Some(held + budget));
         match SplatContext::new(b, &desc) {
-            Err(Error::OutOfMemory { budget: got, .. }) => assert_eq!(got, held + budget),
+            Err(CoreError::OutOfMemory { budget: got, .. }) => assert_eq!(got, held + budget),
             Err(e) => panic!("budget {budget}: {e}"),
             Ok(_) => panic!("budget {budget} of {need} bytes: the context was created"),
         }
         assert_eq!(b.counters().device_bytes, held, "budget {budget}: buffers left behind");
         assert!(matches!(
             GatherContext::new(b, &GatherContextDesc::new(4096, 4096, 4)),
-            Err(Error::OutOfMemory { .. }) | Err(Error::TooLarge { .. })
+            Err(CoreError::OutOfMemory { .. }) | Err(CoreError::TooLarge { .. })
         ));
         assert!(matches!(
             BokehContext::new(b, &BokehContextDesc::new(2048, 2048, 1, BokehOptions::default())),
-            Err(Error::OutOfMemory { .. }) | Err(Error::TooLarge { .. })
+            Err(CoreError::OutOfMemory { .. }) | Err(CoreError::TooLarge { .. })
         ));
         assert_eq!(b.counters().device_bytes, held, "budget {budget}: buffers left behind");
     }
@@ -73,10 +76,13 @@ fn extent_beyond_the_device(b: &mut dyn Backend) {
     let edge = dof_shaders::splat::fragment::MAX_EDGE;
     for (w, h, l) in [(edge, edge, 64u32), (edge, edge, 4096)] {
         let e = SplatContext::new(b, &SplatContextDesc::new(w, h, l, SplatOptions::default())).err().expect("too large");
-        assert!(matches!(e, Error::TooLarge { .. }), "{w}x{h}x{l}: {e}");
+        assert!(matches!(e, CoreError::TooLarge { .. }), "{w}x{h}x{l}: {e}");
     }
-    assert!(matches!(SplatContext::new(b, &SplatContextDesc::new(edge + 1, 16, 1, SplatOptions::default())), Err(Error::TooLarge { .. })));
-    assert!(matches!(GatherContext::new(b, &GatherContextDesc::new(1 << 16, 1 << 16, 1 << 12)), Err(Error::TooLarge { .. })));
+    assert!(matches!(
+        SplatContext::new(b, &SplatContextDesc::new(edge + 1, 16, 1, SplatOptions::default())),
+        Err(CoreError::TooLarge { .. })
+    ));
+    assert!(matches!(GatherContext::new(b, &GatherContextDesc::new(1 << 16, 1 << 16, 1 << 12)), Err(CoreError::TooLarge { .. })));
     assert_eq!(b.counters().device_bytes, held);
 }
 
@@ -112,7 +118,7 @@ fn a_list_overflow_on_vulkan_is_counted_and_degrades_cleanly() {
     let mut desc = SplatContextDesc::new(64, 48, 3, SplatOptions::default());
     desc.list_entries = Some(2000);
     let mut ctx = SplatContext::new(b, &desc).unwrap();
-    ctx.record(b, &Frame::layers(64, 48, 3, test_lens(0.02), bufs[0], bufs[1], bufs[2])).unwrap();
+    ctx.record(b, &Frame::layers(64, 48, 3, test_lens(0.02), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]))).unwrap();
     b.submit().unwrap();
     let report = ctx.report(b).unwrap();
     assert!(report.overflow_tiles > 0 && report.list_entries <= 2000, "{report:?}");

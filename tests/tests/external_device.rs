@@ -10,10 +10,11 @@
 //! Like every Vulkan suite it fails where Vulkan or the layer is missing, unless `DOF_SKIP_VULKAN=1`
 //! asks to skip it.
 
+use dof::CoreError;
 use dof::backend::vulkan::ash::vk;
 use dof::backend::vulkan::gpu_allocator;
 use dof::backend::{Backend, BackendCounters, BufferId, CpuBackend, ImageFormat, ImageRef, RawOptions, VulkanBackend};
-use dof::frame::{Frame, GatherContext, GatherContextDesc};
+use dof::frame::{CountBuffer, Frame, GatherContext, GatherContextDesc, RgbBuffer, SlotBuffer};
 use dof::ops::scan::{ScanScratch, exclusive_scan};
 use dof::ops::sort::{SegmentedSort, SortInput, sort_on};
 use dof::workload::{lists_with, random_key};
@@ -289,8 +290,11 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
     let mut ctx = GatherContext::new(&mut vk, &GatherContextDesc::new(4, 4, 1)).expect("a context on the renderer's device");
     let bufs = [16u64, 4, 12].map(|w| vk.create_buffer(w, "frame").expect("create_buffer"));
     let before = vk.counters();
-    let outside = ctx.record(&mut vk, &Frame::layers(4, 4, 1, dof::stress::test_lens(0.01), bufs[0], bufs[1], bufs[2]));
-    assert!(matches!(&outside, Err(dof::Error::InvalidArgument(m)) if m.contains("begin_external")), "{outside:?}");
+    let outside = ctx.record(
+        &mut vk,
+        &Frame::layers(4, 4, 1, dof::stress::test_lens(0.01), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2])),
+    );
+    assert!(matches!(&outside, Err(CoreError::InvalidArgument(m)) if m.contains("begin_external")), "{outside:?}");
     assert_eq!(vk.counters(), before, "the refused frame recorded nothing");
     assert!(vk.submit().unwrap().is_empty(), "nothing was left recorded");
     ctx.destroy(&mut vk);
@@ -371,8 +375,8 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
     // The CPU backend copies only its own stand-in images.
     let mut cpu = CpuBackend::new();
     let b = cpu.create_buffer(4 * WIDTH as u64 * HEIGHT as u64, "b").unwrap();
-    assert!(matches!(cpu.copy_image_to_buffer(target, b, 0, "x"), Err(dof::Error::InvalidArgument(_))));
-    assert!(matches!(cpu.copy_buffer_to_image(b, 0, target, "x"), Err(dof::Error::InvalidArgument(_))));
+    assert!(matches!(cpu.copy_image_to_buffer(target, b, 0, "x"), Err(CoreError::InvalidArgument(_))));
+    assert!(matches!(cpu.copy_buffer_to_image(b, 0, target, "x"), Err(CoreError::InvalidArgument(_))));
 
     drop(vk);
     // The renderer's allocator, which the backend no longer holds, goes before its device.

@@ -3,9 +3,9 @@
 //! to copied-through tiles instead of writing out of bounds; and every result equals the one-shot
 //! path's on both backends.
 
-use dof::Error;
+use dof::CoreError;
 use dof::backend::{Backend, BufferId, CpuBackend};
-use dof::frame::{Frame, FrameInput, FrameOutput, SplatContext, SplatContextDesc};
+use dof::frame::{CountBuffer, Frame, FrameInput, FrameOutput, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::splat::{Merge, SplatOptions, splat};
@@ -28,7 +28,15 @@ fn upload(b: &mut dyn Backend, bufs: &[BufferId; 3], image: &LayeredImage) {
 }
 
 fn frame(image: &LayeredImage, aperture: f32, bufs: &[BufferId; 3]) -> Frame {
-    Frame::layers(image.width, image.height, image.max_layers, test_lens(aperture), bufs[0], bufs[1], bufs[2])
+    Frame::layers(
+        image.width,
+        image.height,
+        image.max_layers,
+        test_lens(aperture),
+        SlotBuffer(bufs[0]),
+        CountBuffer(bufs[1]),
+        RgbBuffer(bufs[2]),
+    )
 }
 
 /// Frames of changing size, layer count and lens through one context: per frame no allocation, no
@@ -127,20 +135,20 @@ fn frames_beyond_the_context_or_its_buffers_are_refused() {
     let image = noise_with_sky(40, 20, 2);
     let bufs = caller_buffers(&mut b, (40, 20, 2));
     upload(&mut b, &bufs, &image);
-    assert!(matches!(ctx.record(&mut b, &frame(&image, 0.01, &bufs)), Err(Error::InvalidArgument(m)) if m.contains("resize")));
+    assert!(matches!(ctx.record(&mut b, &frame(&image, 0.01, &bufs)), Err(CoreError::InvalidArgument(m)) if m.contains("resize")));
     ctx.resize(&mut b, 40, 20, 2).unwrap();
     ctx.record(&mut b, &frame(&image, 0.01, &bufs)).unwrap();
     b.submit().unwrap();
     let small = caller_buffers(&mut b, (8, 8, 1));
-    let short = Frame { output: FrameOutput::Buffer(small[2]), ..frame(&image, 0.01, &bufs) };
-    assert!(matches!(ctx.record(&mut b, &short), Err(Error::InvalidArgument(m)) if m.contains("output")));
+    let short = Frame { output: FrameOutput::Buffer(RgbBuffer(small[2])), ..frame(&image, 0.01, &bufs) };
+    assert!(matches!(ctx.record(&mut b, &short), Err(CoreError::InvalidArgument(m)) if m.contains("output")));
     let nan_lens = Frame { lens: test_lens(f32::NAN), ..frame(&image, 0.01, &bufs) };
-    assert!(matches!(ctx.record(&mut b, &nan_lens), Err(Error::InvalidArgument(_))));
-    assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(0, 10, 1, options.clone())), Err(Error::InvalidArgument(_))));
-    assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(100_000, 10, 1, options.clone())), Err(Error::TooLarge { .. })));
+    assert!(matches!(ctx.record(&mut b, &nan_lens), Err(CoreError::InvalidArgument(_))));
+    assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(0, 10, 1, options.clone())), Err(CoreError::InvalidArgument(_))));
+    assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(100_000, 10, 1, options.clone())), Err(CoreError::TooLarge { .. })));
     let mut huge_pool = SplatContextDesc::new(16, 16, 1, options);
     huge_pool.list_entries = Some(1 << 40);
-    assert!(matches!(SplatContext::new(&mut b, &huge_pool), Err(Error::TooLarge { .. })));
+    assert!(matches!(SplatContext::new(&mut b, &huge_pool), Err(CoreError::TooLarge { .. })));
     ctx.destroy(&mut b);
 }
 
@@ -188,7 +196,7 @@ fn image_frames_need_image_io_and_a_backend_with_images() {
         output: FrameOutput::Image(image(ImageFormat::Rgba32Float)),
     };
     let mut plain = SplatContext::new(&mut b, &SplatContextDesc::new(16, 16, 1, options.clone())).unwrap();
-    assert!(matches!(plain.record(&mut b, &f), Err(Error::InvalidArgument(m)) if m.contains("image_io")));
+    assert!(matches!(plain.record(&mut b, &f), Err(CoreError::InvalidArgument(m)) if m.contains("image_io")));
     let mut desc = SplatContextDesc::new(16, 16, 1, options);
     desc.image_io = true;
     let mut with_io = SplatContext::new(&mut b, &desc).unwrap();
@@ -200,7 +208,7 @@ fn image_frames_need_image_io_and_a_backend_with_images() {
         },
         ..f
     };
-    assert!(matches!(with_io.record(&mut b, &wrong), Err(Error::InvalidArgument(m)) if m.contains("colour")));
+    assert!(matches!(with_io.record(&mut b, &wrong), Err(CoreError::InvalidArgument(m)) if m.contains("colour")));
     let planes = Frame {
         input: FrameInput::Images {
             color: image(ImageFormat::Rgba32Float),
@@ -209,7 +217,7 @@ fn image_frames_need_image_io_and_a_backend_with_images() {
         },
         ..f
     };
-    assert!(matches!(with_io.record(&mut b, &planes), Err(Error::InvalidArgument(m)) if m.contains("near")));
+    assert!(matches!(with_io.record(&mut b, &planes), Err(CoreError::InvalidArgument(m)) if m.contains("near")));
     assert!(with_io.record(&mut b, &f).is_err(), "not an image of the CPU backend's");
     plain.destroy(&mut b);
     with_io.destroy(&mut b);

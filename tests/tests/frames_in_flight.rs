@@ -14,7 +14,10 @@
 
 use dof::backend::vulkan::ash::vk;
 use dof::backend::{Backend, BufferId, CpuBackend, RawOptions, VulkanBackend};
-use dof::frame::{ContextDesc, ContextReport, DofContext, Extent, Frame, MAX_FRAMES_IN_FLIGHT, METHODS, MethodInfo, MethodOptions, Reads};
+use dof::frame::{
+    ContextDesc, ContextReport, CountBuffer, DofContext, Extent, Frame, MAX_FRAMES_IN_FLIGHT, METHODS, MethodInfo, MethodOptions, Reads,
+    RgbBuffer, SlotBuffer,
+};
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::stress::{noise_with_sky, test_lens};
 use dof_tests::renderer::{Renderer, assert_no_messages};
@@ -49,7 +52,7 @@ impl TwoFrames {
             b.write_buffer(fragments, 0, &slot_words(&image)).unwrap();
             b.write_buffer(counts, 0, &image.counts).unwrap();
             buffers.extend([fragments, counts, out]);
-            Frame::layers(w, h, image.max_layers, test_lens(aperture), fragments, counts, out)
+            Frame::layers(w, h, image.max_layers, test_lens(aperture), SlotBuffer(fragments), CountBuffer(counts), RgbBuffer(out))
         });
         TwoFrames { frames, buffers }
     }
@@ -64,7 +67,7 @@ impl TwoFrames {
 
     fn image(&self, b: &mut dyn Backend, i: usize) -> Vec<[f32; 3]> {
         let f = &self.frames[i];
-        let dof::frame::FrameOutput::Buffer(out) = f.output else { unreachable!() };
+        let dof::frame::FrameOutput::Buffer(RgbBuffer(out)) = f.output else { unreachable!() };
         read_rgb(b, out, f.width, f.height).unwrap().data
     }
 

@@ -10,8 +10,8 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use dof::Error;
 use dof::scene::{ArtistLens, Camera, Vec3, validate_artist_lens};
+use dof::{CoreError, Error};
 
 struct Counting;
 
@@ -111,7 +111,7 @@ fn aperture_png_of_a_huge_size_is_refused_before_its_pixels_are_allocated() {
     let path = regression("aperture_png", "palette-6x100925440.png");
     let (result, largest) = largest_allocation(|| dof::aperture::image_aperture(&path));
     let err = result.unwrap_err();
-    assert!(matches!(err, Error::InvalidArgument(_)), "{err}");
+    assert!(matches!(err, CoreError::InvalidArgument(_)), "{err}");
     assert!(err.to_string().contains("6x100925440 is not a usable size"), "{err}");
     assert!(largest < 16 << 20, "refusing it allocated {largest} bytes at once");
     // Through `--aperture`'s parser too.
@@ -126,7 +126,7 @@ fn aperture_png_of_a_huge_size_is_refused_before_its_pixels_are_allocated() {
 fn aperture_png_with_a_partial_palette_entry_is_refused() {
     let path = regression("aperture_png", "palette-of-14-bytes.png");
     let err = dof::aperture::image_aperture(&path).unwrap_err();
-    assert!(matches!(err, Error::InvalidArgument(_)), "{err}");
+    assert!(matches!(err, CoreError::InvalidArgument(_)), "{err}");
     assert!(err.to_string().contains("palette of 14 bytes"), "{err}");
 }
 
@@ -140,7 +140,7 @@ fn an_artist_lens_whose_coc_diameter_overflows_is_refused() {
     let v = 3.396_151_4e38;
     let lens = ArtistLens { near_start: v, near_end: v, far_start: v, far_end: v, max_radius_px: v };
     let err = validate_artist_lens(&lens).unwrap_err();
-    assert!(matches!(err, Error::InvalidArgument(_)), "{err}");
+    assert!(matches!(err, dof::Error::Core(CoreError::InvalidArgument(_))), "{err}");
     // The largest radius accepted gives a number everywhere.
     let largest = ArtistLens { max_radius_px: f32::MAX / 2.0, ..lens };
     validate_artist_lens(&largest).unwrap();

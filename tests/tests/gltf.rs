@@ -5,12 +5,12 @@
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicU32, Ordering};
 
-use dof::Error;
 use dof::scene::gltf_export::sphere_segments;
 use dof::scene::{
     Albedo, CameraFrame, ExportOptions, Material, MeshCamera, MeshScene, Shape, Vec3, builtin, builtin_names, export_builtin_glb,
     export_glb, load_gltf, load_gltf_slice,
 };
+use dof::{CoreError, Error};
 use dof_shaders::raster::mesh::{DOUBLE_SIDED, NEAREST, NO_TEXTURE, WRAP_S_SHIFT, WRAP_T_SHIFT};
 use serde_json::{Value, json};
 
@@ -184,7 +184,7 @@ fn export_options_are_checked() {
         ExportOptions { plane_half_extent: 0.0, ..opts },
         ExportOptions { plane_half_extent: f32::NAN, ..opts },
     ] {
-        assert!(matches!(export_glb(&b.scene, &b.camera, &bad), Err(Error::InvalidArgument(_))));
+        assert!(matches!(export_glb(&b.scene, &b.camera, &bad), Err(dof::Error::Core(CoreError::InvalidArgument(_)))));
     }
 }
 
@@ -722,6 +722,6 @@ fn a_texture_beyond_the_budget_is_refused_before_decoding() {
     doc["images"][0] = json!({ "uri": format!("data:image/png;base64,{}", base64(&png_header_only(8192, 8192))) });
     let err = load_gltf_slice(&join_glb(&doc, &bin)).expect_err("an 8192x8192 texture is beyond 2^24 texels");
     let text = err.to_string();
-    assert!(matches!(err, dof::Error::TooLarge { .. }), "{text}");
+    assert!(matches!(err, dof::Error::Core(CoreError::TooLarge { .. })), "{text}");
     assert!(text.contains("8192x8192") && text.contains("scale the textures down"), "{text}");
 }

@@ -18,7 +18,10 @@
 
 use dof::backend::vulkan::ash::vk;
 use dof::backend::{Backend, BufferId, CpuBackend, ImageFormat, ImageRef, RawOptions, VulkanBackend};
-use dof::frame::{ContextDesc, DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput, MethodOptions, registry};
+use dof::frame::{
+    ContextDesc, CountBuffer, DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput, MethodOptions, RgbBuffer, SlotBuffer,
+    registry,
+};
 use dof_shaders::frame_io::{
     DEPTH_F32, DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FrameIoParams, depth_value, view_depth,
 };
@@ -226,7 +229,7 @@ fn context(b: &mut dyn Backend) -> Box<dyn DofContext> {
 }
 
 fn frame(input: FrameInput, output: BufferId) -> Frame {
-    Frame { width: W, height: H, lens: dof::stress::test_lens(0.01), input, output: FrameOutput::Buffer(output) }
+    Frame { width: W, height: H, lens: dof::stress::test_lens(0.01), input, output: FrameOutput::Buffer(RgbBuffer(output)) }
 }
 
 /// Buffers of the reference frame: its decoded input, its counts, and two outputs.
@@ -255,7 +258,11 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_the_cpu() {
         cpu.write_image(&depth, &depth_texels).unwrap();
         cpu.write_buffer(fragments, 0, &decoded_input(&case)).unwrap();
         ctx.record(&mut cpu, &frame(FrameInput::Images { color, depth, encoding: case.encoding }, from_images)).unwrap();
-        ctx.record(&mut cpu, &frame(FrameInput::Layers { fragments, counts, layers: 1 }, from_buffers)).unwrap();
+        ctx.record(
+            &mut cpu,
+            &frame(FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: 1 }, from_buffers),
+        )
+        .unwrap();
         cpu.submit().unwrap();
         let (a, b) =
             (cpu.read_buffer(from_images, 0, 3 * (W * H) as u64).unwrap(), cpu.read_buffer(from_buffers, 0, 3 * (W * H) as u64).unwrap());
@@ -361,7 +368,11 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
             continue;
         }
         recorded.unwrap_or_else(|e| panic!("{case:?}: {e}"));
-        ctx.record(&mut vk, &frame(FrameInput::Layers { fragments, counts, layers: 1 }, from_buffers)).unwrap();
+        ctx.record(
+            &mut vk,
+            &frame(FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: 1 }, from_buffers),
+        )
+        .unwrap();
         vk.end_external().unwrap();
         r.submit_and_wait();
         let a = floats(&vk.read_buffer(from_images, 0, 3 * (W * H) as u64).unwrap());
@@ -423,7 +434,7 @@ fn image_input_cost_at_720p_on_the_cpu() {
         height: COST[1],
         lens: dof::stress::test_lens(0.01),
         input: FrameInput::Images { color, depth, encoding: DepthEncoding::Reversed { near: 0.1, far: f32::INFINITY } },
-        output: FrameOutput::Buffer(out),
+        output: FrameOutput::Buffer(RgbBuffer(out)),
     };
     for run in 0..3 {
         ctx.record(&mut cpu, &f).unwrap();
@@ -465,7 +476,7 @@ fn image_input_cost_at_720p_on_vulkan() {
             depth: describe(depth_image, vk::Format::D32_SFLOAT),
             encoding: DepthEncoding::Reversed { near: 0.1, far: f32::INFINITY },
         },
-        output: FrameOutput::Buffer(out),
+        output: FrameOutput::Buffer(RgbBuffer(out)),
     };
     for run in 0..3 {
         r.begin();

@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU32, Ordering};
 
-use dof::Error;
+use dof::CoreError;
 use dof::io::codecs::exr::prelude as exr;
 use dof::io::codecs::png;
 use dof::io::tonemap::{aces_fitted, srgb_eotf, srgb_oetf, to_u8, tonemap, tonemap_to_srgb8};
@@ -55,7 +55,7 @@ fn random_image(rng: &mut Pcg64, width: u32, height: u32) -> RgbImage {
 
 fn err_message<T: std::fmt::Debug>(r: dof::Result<T>) -> String {
     let e = r.expect_err("expected an error");
-    assert!(matches!(e, Error::InvalidArgument(_)), "expected InvalidArgument, got {e:?}");
+    assert!(matches!(e, dof::Error::Core(CoreError::InvalidArgument(_))), "expected InvalidArgument, got {e:?}");
     eprintln!("expected error: {e}");
     e.to_string()
 }

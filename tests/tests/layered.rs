@@ -4,7 +4,7 @@
 //! anchors by the CoC inverse within eq. 8's bound, empty layers skipped), exact and flat cases,
 //! Vulkan against the CPU, the exact reference, and bad options.
 
-use dof::Error;
+use dof::CoreError;
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::{Fragment, LayeredImage};
 use dof::methods::gather::gather;
@@ -162,10 +162,10 @@ fn bad_options_are_errors() {
     ];
     for options in bad {
         let err = layered(&mut CpuBackend::new(), &img, &lens, &options).err().expect("an error");
-        assert!(matches!(err, Error::InvalidArgument(_)), "{err}");
+        assert!(matches!(err, CoreError::InvalidArgument(_)), "{err}");
     }
     let degenerate = ThinLens { focus_distance: 0.01, ..lens };
-    assert!(matches!(layered(&mut CpuBackend::new(), &img, &degenerate, &LayeredOptions::default()), Err(Error::InvalidArgument(_))));
+    assert!(matches!(layered(&mut CpuBackend::new(), &img, &degenerate, &LayeredOptions::default()), Err(CoreError::InvalidArgument(_))));
 }
 
 // ---- The frame API's context: the plan on the device ----
@@ -291,11 +291,11 @@ fn a_context_with_bad_options_is_refused() {
         LayeredOptions { max_coc: 5000.0, ..Default::default() },
     ] {
         let desc = ContextDesc::new(Extent::new(8, 8, 2), MethodOptions { layered, ..Default::default() });
-        assert!(matches!((method.create)(&mut b, &desc), Err(Error::InvalidArgument(_))));
+        assert!(matches!((method.create)(&mut b, &desc), Err(CoreError::InvalidArgument(_))));
     }
     assert!(matches!(
         (method.create)(&mut b, &ContextDesc::new(Extent::new(0, 8, 2), MethodOptions::default())),
-        Err(Error::InvalidArgument(_))
+        Err(CoreError::InvalidArgument(_))
     ));
     assert_eq!(b.counters().device_bytes, 0);
 }

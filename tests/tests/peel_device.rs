@@ -5,7 +5,7 @@
 //! no allocation, upload or readback and submitted once.
 
 use dof::backend::{Backend, CpuBackend};
-use dof::frame::{ContextDesc, Extent, FrameOutput, MethodOptions, registry};
+use dof::frame::{ContextDesc, Extent, FrameOutput, MethodOptions, RgbBuffer, registry};
 use dof::methods::buffers::slot_words;
 use dof::raster::{MeshPeelContext, MeshPeelDesc, default_near, peel_layers};
 use dof::scene::{Camera, ExportOptions, GuardBand, LayerOptions, MeshScene, Vec3, builtin, export_glb, load_gltf_slice};
@@ -246,7 +246,7 @@ fn orbiting_frames_on(b: &mut dyn Backend) {
     for i in 0..frames {
         let cam = orbit(&camera, lens.focus_distance, i as f32);
         peel.record(b, &cam, &lens).unwrap();
-        dof.record(b, &peel.frame(lens, FrameOutput::Buffer(out))).unwrap();
+        dof.record(b, &peel.frame(lens, FrameOutput::Buffer(RgbBuffer(out)))).unwrap();
         let times = b.submit().unwrap();
         // Every pass is recorded, the ones that draw nothing too (one shading dispatch each).
         assert_eq!(times.iter().filter(|t| t.label == "peel/shade").count(), layers as usize, "passes recorded");

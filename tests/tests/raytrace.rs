@@ -2,7 +2,7 @@
 //! Vulkan against the CPU backend, convergence with rays per pixel against the exact reference, and
 //! bad options refused.
 
-use dof::Error;
+use dof::CoreError;
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::LayeredImage;
 use dof::methods::gather::gather;
@@ -136,7 +136,7 @@ fn bad_options_are_errors() {
     ];
     for (options, lens) in bad {
         let err = raytrace(&mut cpu, &img, &lens, &options).err().expect("an error");
-        assert!(matches!(err, Error::InvalidArgument(_)), "{err}");
+        assert!(matches!(err, CoreError::InvalidArgument(_)), "{err}");
     }
     assert!(
         LayeredImage::new(0, 4, 1).is_err()
@@ -190,7 +190,7 @@ fn a_context_records_frames_without_allocating_or_reading_back_on_vulkan() {
 /// for bit on a built-in scene, and a context too small for a frame refuses it.
 #[test]
 fn the_registry_one_shot_path_equals_the_one_shot_function() {
-    use dof::frame::{ContextDesc, Extent, Frame, MethodOptions, registry};
+    use dof::frame::{ContextDesc, CountBuffer, Extent, Frame, MethodOptions, RgbBuffer, SlotBuffer, registry};
     use dof::methods::one_shot::one_shot;
     let scene = builtin("railing").unwrap().with_size(96, 54);
     let lens = scene.thin_lens().unwrap();
@@ -208,8 +208,8 @@ fn the_registry_one_shot_path_equals_the_one_shot_function() {
         assert_eq!(shot.report.figures["missed_rays"], expected.missed_rays as f64);
         let mut ctx = (method.create)(b.as_mut(), &ContextDesc::new(Extent::new(16, 16, 1), options)).unwrap();
         let out = b.create_buffer(3 * 96 * 54, "out").unwrap();
-        let f = Frame::layers(96, 54, 1, lens, out, out, out);
-        assert!(matches!(ctx.record(b.as_mut(), &f), Err(Error::InvalidArgument(_))));
+        let f = Frame::layers(96, 54, 1, lens, SlotBuffer(out), CountBuffer(out), RgbBuffer(out));
+        assert!(matches!(ctx.record(b.as_mut(), &f), Err(CoreError::InvalidArgument(_))));
         ctx.destroy(b.as_mut());
         b.destroy_buffer(out);
         assert_eq!(b.take_diagnostics(), Vec::<String>::new(), "{}", b.kind());
@@ -224,9 +224,9 @@ fn a_context_with_bad_options_is_refused() {
     let method = registry::method("raytrace").unwrap();
     for raytrace in [RaytraceOptions { spp: 0, ..Default::default() }, RaytraceOptions { patterns: 0, ..Default::default() }] {
         let desc = ContextDesc::new(Extent::new(8, 8, 2), MethodOptions { raytrace, ..Default::default() });
-        assert!(matches!((method.create)(&mut b, &desc), Err(Error::InvalidArgument(_))));
+        assert!(matches!((method.create)(&mut b, &desc), Err(CoreError::InvalidArgument(_))));
     }
     let huge = ContextDesc::new(Extent::new(10_000, 1, 1), MethodOptions::default());
-    assert!(matches!((method.create)(&mut b, &huge), Err(Error::InvalidArgument(_))));
+    assert!(matches!((method.create)(&mut b, &huge), Err(CoreError::InvalidArgument(_))));
     assert_eq!(b.counters().device_bytes, 0);
 }

@@ -4,7 +4,7 @@
 //! context, so a method added to the registry is covered without a change.
 
 use dof::backend::{Backend, BufferId, CpuBackend};
-use dof::frame::{ContextDesc, DofContext, Extent, Frame, METHODS, MethodInfo, MethodOptions, Reads};
+use dof::frame::{ContextDesc, CountBuffer, DofContext, Extent, Frame, METHODS, MethodInfo, MethodOptions, Reads, RgbBuffer, SlotBuffer};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::one_shot::one_shot;
@@ -40,7 +40,11 @@ fn frames_resizes_and_one_shot(b: &mut dyn Backend) {
         for (i, &(w, h, l, aperture)) in [(48, 32, 3, 0.02f32), (17, 9, 2, 0.01), (48, 32, 1, 0.0), (64, 40, 3, 0.02)].iter().enumerate() {
             if i == 3 {
                 assert!(
-                    ctx.record(b, &Frame::layers(w, h, l, test_lens(aperture), bufs[0], bufs[1], bufs[2])).is_err(),
+                    ctx.record(
+                        b,
+                        &Frame::layers(w, h, l, test_lens(aperture), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]))
+                    )
+                    .is_err(),
                     "{}: beyond",
                     m.name
                 );
@@ -50,7 +54,8 @@ fn frames_resizes_and_one_shot(b: &mut dyn Backend) {
             let image = input_for(m, w, h, l);
             b.write_buffer(bufs[0], 0, &slot_words(&image)).unwrap();
             b.write_buffer(bufs[1], 0, &image.counts).unwrap();
-            let frame = Frame::layers(w, h, image.max_layers, test_lens(aperture), bufs[0], bufs[1], bufs[2]);
+            let frame =
+                Frame::layers(w, h, image.max_layers, test_lens(aperture), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
             let before = b.counters();
             ctx.record(b, &frame).unwrap_or_else(|e| panic!("{} frame {i}: {e}", m.name));
             b.submit().unwrap();
@@ -92,7 +97,7 @@ fn a_context_is_tied_to_its_backend() {
         // The other backend holds buffers of the same ids as the context's.
         let theirs: Vec<BufferId> = (0..64).map(|_| other.create_buffer(8, "theirs").unwrap()).collect();
         let bufs = caller_buffers(&mut other, extent);
-        let frame = Frame::layers(16, 16, 1, test_lens(0.01), bufs[0], bufs[1], bufs[2]);
+        let frame = Frame::layers(16, 16, 1, test_lens(0.01), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
         let refused = ctx.record(&mut other, &frame).expect_err("recording on another backend");
         assert!(refused.to_string().contains("another backend"), "{}: {refused}", m.name);
         assert!(ctx.resize(&mut other, Extent::new(8, 8, 1)).is_err(), "{}: resize on another backend", m.name);

@@ -3,7 +3,7 @@
 //! frames without allocation through its context, and measured against the exact reference.
 
 use dof::backend::{Backend, CpuBackend};
-use dof::frame::{Frame, RingGatherContext, RingGatherContextDesc};
+use dof::frame::{CountBuffer, Frame, RgbBuffer, RingGatherContext, RingGatherContextDesc, SlotBuffer};
 use dof::layers::RgbImage;
 use dof::methods::ring_gather::{DEFAULT_RINGS, MAX_RADIUS, MAX_SAMPLE_RINGS, RingGatherOptions, ring_gather};
 use dof::metrics::compare;
@@ -179,7 +179,7 @@ fn a_context_records_frames_without_allocating() {
         cpu.write_buffer(counts, 0, &vec![1u32; (fw * fh) as usize]).unwrap();
         ctx.set_options(options(rings)).unwrap();
         let before = cpu.counters();
-        ctx.record(&mut cpu, &Frame::layers(fw, fh, 1, lens(0.02), input, counts, output)).unwrap();
+        ctx.record(&mut cpu, &Frame::layers(fw, fh, 1, lens(0.02), SlotBuffer(input), CountBuffer(counts), RgbBuffer(output))).unwrap();
         cpu.submit().unwrap();
         let spent = cpu.counters().since(&before);
         assert_eq!((spent.allocations, spent.readbacks, spent.uploads, spent.submissions), (0, 0, 0, 1), "{fw}x{fh}");

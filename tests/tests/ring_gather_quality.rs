@@ -5,7 +5,7 @@
 
 use dof::backend::{Backend, CpuBackend};
 use dof::eval::temporal::temporal_psnr;
-use dof::frame::{DofContext, Frame, RingGatherContext, RingGatherContextDesc};
+use dof::frame::{CountBuffer, DofContext, Frame, RgbBuffer, RingGatherContext, RingGatherContextDesc, SlotBuffer};
 use dof::io::tonemap::tonemap_image;
 use dof::layers::RgbImage;
 use dof::methods::gather::gather;
@@ -152,7 +152,7 @@ fn highlights_beyond_a_tiles_capacity_stay_in_the_gather() {
     cpu.write_buffer(counts, 0, &vec![1u32; (w * h) as usize]).unwrap();
     for _ in 0..2 {
         let before = cpu.counters();
-        ctx.record(&mut cpu, &Frame::layers(w, h, 1, lens, input, counts, output)).unwrap();
+        ctx.record(&mut cpu, &Frame::layers(w, h, 1, lens, SlotBuffer(input), CountBuffer(counts), RgbBuffer(output))).unwrap();
         cpu.submit().unwrap();
         let spent = cpu.counters().since(&before);
         assert_eq!((spent.allocations, spent.readbacks, spent.uploads), (0, 0, 0));

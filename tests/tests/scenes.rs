@@ -1,6 +1,6 @@
 //! Scenes, cameras, the exact multi-layer image and the thin-lens reference.
 
-use dof::Error;
+use dof::CoreError;
 use dof::layers::LayeredImage;
 use dof::metrics::psnr;
 use dof::scene::{
@@ -425,7 +425,7 @@ fn photographic_and_radius_settings_give_the_same_blur_as_the_camera_geometry() 
 
 fn is_invalid<T: std::fmt::Debug>(r: dof::Result<T>, needle: &str) {
     match r {
-        Err(Error::InvalidArgument(m)) => assert!(m.contains(needle), "message `{m}` lacks `{needle}`"),
+        Err(dof::Error::Core(CoreError::InvalidArgument(m))) => assert!(m.contains(needle), "message `{m}` lacks `{needle}`"),
         other => panic!("expected an invalid-argument error mentioning `{needle}`, got {other:?}"),
     }
 }
@@ -489,8 +489,8 @@ fn invalid_cameras_lenses_and_scenes_are_errors() {
     is_invalid(reference_auto(&s.scene, &s.camera, &thin, &AutoOptions { target_psnr_db: f64::NAN, ..Default::default() }), "target");
     is_invalid(pinhole(&s.scene, &Camera { width: 0, ..s.camera }, &ReferenceOptions::default()), "size");
     let huge = Camera { width: u32::MAX, height: u32::MAX, ..s.camera };
-    assert!(matches!(raycast_layers(&s.scene, &huge, &thin, &frame_only()), Err(Error::TooLarge { .. })));
-    assert!(matches!(pinhole(&s.scene, &huge, &ReferenceOptions::default()), Err(Error::TooLarge { .. })));
+    assert!(matches!(raycast_layers(&s.scene, &huge, &thin, &frame_only()), Err(dof::Error::Core(CoreError::TooLarge { .. }))));
+    assert!(matches!(pinhole(&s.scene, &huge, &ReferenceOptions::default()), Err(dof::Error::Core(CoreError::TooLarge { .. }))));
 
     let err = builtin("nope").unwrap_err().to_string();
     for name in builtin_names() {

@@ -5,6 +5,10 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
+/// The hash the core's build script stamps the SPIR-V with (not part of the core's library).
+#[path = "../../host/core/build/source_hash.rs"]
+mod source_hash;
+
 /// Without `rebuild-spirv` the hash comes from `host/spirv/manifest.txt`: this fails when a kernel
 /// source changed and the artifact was not regenerated. With it (the workspace) the hash is taken
 /// when the build script compiles the kernels.
@@ -12,7 +16,7 @@ use std::path::Path;
 fn embedded_module_was_built_from_the_current_sources() {
     let shaders = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shaders");
     assert_eq!(
-        dof::source_hash::shader_source_hash(&shaders),
+        source_hash::shader_source_hash(&shaders),
         dof::shaders::SOURCE_HASH,
         "the embedded SPIR-V was built from other kernel sources than those on disk"
     );

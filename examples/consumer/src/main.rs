@@ -4,7 +4,7 @@
 //! against what it must give.
 
 use dof_core::backend::{Backend, BufferId, CpuBackend};
-use dof_core::frame::{ContextDesc, Extent, Frame, METHODS, MethodOptions, SLOT_WORDS, registry};
+use dof_core::frame::{ContextDesc, CountBuffer, Extent, Frame, METHODS, MethodOptions, RgbBuffer, SLOT_WORDS, SlotBuffer, registry};
 use dof_core::{ThinLens, shaders};
 
 /// The frame: 64x64 pixels, up to 2 fragments each.
@@ -53,7 +53,7 @@ fn mean(rgb: &[[f32; 3]]) -> [f64; 3] {
 fn run(cpu: &mut CpuBackend, method: &str, lens: ThinLens, [fragments, counts, out]: [BufferId; 3]) -> dof_core::Result<Vec<[f32; 3]>> {
     let desc = ContextDesc::new(Extent::new(W, H, LAYERS), MethodOptions::default());
     let mut ctx = registry::create(cpu, registry::method(method)?, &desc)?;
-    ctx.record(cpu, &Frame::layers(W, H, LAYERS, lens, fragments, counts, out))?;
+    ctx.record(cpu, &Frame::layers(W, H, LAYERS, lens, SlotBuffer(fragments), CountBuffer(counts), RgbBuffer(out)))?;
     cpu.submit()?;
     let words = cpu.read_buffer(out, 0, 3 * (W * H) as u64)?;
     ctx.destroy(cpu);

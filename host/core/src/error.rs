@@ -1,4 +1,5 @@
-//! Errors of the library. Nothing on a user-reachable path panics: every failure is one of these.
+//! Errors of the core. Nothing on a user-reachable path panics: every failure is one of these. (The
+//! crate `dof` above wraps them with its own: scene files and plots.)
 
 use thiserror::Error;
 
@@ -26,11 +27,6 @@ pub enum Error {
     TooLarge { what: String, size: u64, limit: u64 },
     #[error("invalid argument: {0}")]
     InvalidArgument(String),
-    #[error("cannot draw a plot: {0}")]
-    Plot(String),
-    /// A scene file that cannot be read or used (malformed, missing parts, out-of-range data).
-    #[error("scene: {0}")]
-    Scene(String),
 }
 
 pub type Result<T> = std::result::Result<T, Error>;

@@ -8,7 +8,7 @@
 //! - [`aperture`]: aperture shapes (circle, blades, stars, image masks) for splatting and bokeh sprites;
 //! - [`sampling`]: stratified lens samples and the concentric disc mapping (ray tracing's lens samples);
 //! - [`shaders`]: the embedded SPIR-V modules (prebuilt in `host/spirv/`, or compiled with the
-//!   `rebuild-spirv` feature), and [`source_hash`], the hash of the kernel sources they were built from;
+//!   `rebuild-spirv` feature), and the hash of the kernel sources they were built from;
 //! - [`error`]: the errors of every call.
 //!
 //! It depends on nothing of the project but the kernels. Multi-layer images, scenes and their
@@ -19,7 +19,8 @@
 //!
 //! Without features this builds on stable Rust from the prebuilt SPIR-V, without rust-gpu. `png`
 //! reads aperture masks from PNG files; `rebuild-spirv` compiles the kernels to SPIR-V with rust-gpu
-//! (pinned nightly) instead of embedding the prebuilt modules.
+//! (pinned nightly) instead of embedding the prebuilt modules; `testing` adds `testing`, what only
+//! the project's suites use (on inside the workspace, through the tests crate).
 
 pub mod aperture;
 pub mod backend;
@@ -28,7 +29,8 @@ pub mod frame;
 pub mod ops;
 pub mod sampling;
 pub mod shaders;
-pub mod source_hash;
+#[cfg(feature = "testing")]
+pub mod testing;
 
 pub use error::{Error, Result};
 

@@ -4,7 +4,8 @@
 
 include!(concat!(env!("OUT_DIR"), "/spirv_modules.rs"));
 
-/// SHA-256 over the kernel crate's sources (see [`crate::source_hash`]) when the modules were built.
+/// SHA-256 over the kernel crate's sources (`host/core/build/source_hash.rs`) when the modules were
+/// built.
 pub const SOURCE_HASH: &str = env!("DOF_SHADERS_SOURCE_HASH");
 
 /// The module holding `entry` as words, as `vkCreateShaderModule` wants them.

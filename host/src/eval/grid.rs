@@ -53,7 +53,7 @@ pub struct Grid {
 pub fn compose(reference: &RgbImage, rows: &[(String, RgbImage)]) -> Result<Grid> {
     let (w, h) = (reference.width as usize, reference.height as usize);
     if let Some((label, image)) = rows.iter().find(|(_, i)| (i.width, i.height) != (reference.width, reference.height)) {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "grid row `{}` is {}x{}, the reference {}x{}",
             label.replace('\n', " "),
             image.width,

@@ -78,11 +78,11 @@ pub fn evaluate(options: &EvalOptions, backends: &mut [Box<dyn Backend>]) -> Res
     for m in &options.methods {
         if !all.iter().any(|x| x.name() == m) {
             let names: Vec<_> = all.iter().map(|x| x.name()).collect();
-            return Err(Error::InvalidArgument(format!("unknown method `{m}`; the methods are: {}", names.join(", "))));
+            return Err(Error::invalid(format!("unknown method `{m}`; the methods are: {}", names.join(", "))));
         }
     }
     if backends.is_empty() {
-        return Err(Error::InvalidArgument("the evaluation needs at least one backend".into()));
+        return Err(Error::invalid("the evaluation needs at least one backend".into()));
     }
     let infos = backends.iter().map(|b| BackendInfo::of(b.as_ref())).collect();
     let mut report = Report::new(options.quick, options.runs, infos);

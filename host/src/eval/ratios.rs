@@ -53,7 +53,7 @@ pub struct RatioRow {
 /// Runs both methods on every scene and backend.
 pub fn ratios(options: &RatioOptions, backends: &mut [Box<dyn Backend>]) -> Result<Vec<RatioRow>> {
     if backends.is_empty() || options.scenes.is_empty() || options.runs == 0 || options.spp == 0 {
-        return Err(Error::InvalidArgument("cost ratios need a backend, a scene, a timed run and a reference sample".into()));
+        return Err(Error::invalid("cost ratios need a backend, a scene, a timed run and a reference sample".into()));
     }
     let mut rows = Vec::new();
     for name in &options.scenes {
@@ -71,8 +71,7 @@ pub fn ratios(options: &RatioOptions, backends: &mut [Box<dyn Backend>]) -> Resu
             let b = b.as_mut();
             // One method at its sweep setting: time and error.
             let mut measure = |method: &dyn EvaluatedMethod| -> Result<Timed> {
-                let setting =
-                    method.sweep_setting().ok_or_else(|| Error::InvalidArgument(format!("{} has no sweep setting", method.name())))?;
+                let setting = method.sweep_setting().ok_or_else(|| Error::invalid(format!("{} has no sweep setting", method.name())))?;
                 let (times, output) = timed(method, b, &input, &setting, options.runs)?;
                 let error = compare(&input.crop(&output.image), &exact.image, Some(&ml.mask))?;
                 let t = Timed {

@@ -89,7 +89,7 @@ impl ScalingOptions {
     }
 
     fn check(&self) -> Result<()> {
-        let bad = |what: String| Err(Error::InvalidArgument(what));
+        let bad = |what: String| Err(Error::invalid(what));
         if self.sizes.is_empty() && self.cocs.is_empty() {
             return bad("the scaling sweep needs image sizes or CoC radii to run at".into());
         }
@@ -198,10 +198,10 @@ fn chosen(names: &[String]) -> Result<Vec<(Box<dyn EvaluatedMethod>, Setting)>> 
         match all.iter().find(|m| m.name() == n) {
             None => {
                 let known: Vec<_> = all.iter().map(|m| m.name()).collect();
-                return Err(Error::InvalidArgument(format!("unknown method `{n}`; the methods are: {}", known.join(", "))));
+                return Err(Error::invalid(format!("unknown method `{n}`; the methods are: {}", known.join(", "))));
             }
             Some(m) if !m.uses_backend() => {
-                return Err(Error::InvalidArgument(format!("`{n}` runs no kernels; the scaling sweep times methods that do")));
+                return Err(Error::invalid(format!("`{n}` runs no kernels; the scaling sweep times methods that do")));
             }
             Some(_) => {}
         }
@@ -276,7 +276,7 @@ fn ordered_sizes(sizes: &[(u32, u32)]) -> Vec<(u32, u32)> {
 pub fn scaling(options: &ScalingOptions, backends: &mut [Box<dyn Backend>]) -> Result<ScalingReport> {
     options.check()?;
     if backends.is_empty() {
-        return Err(Error::InvalidArgument("the scaling sweep needs at least one backend".into()));
+        return Err(Error::invalid("the scaling sweep needs at least one backend".into()));
     }
     let methods = chosen(&options.methods)?;
     let scene = builtin(&options.scene)?;
@@ -634,7 +634,7 @@ impl ScalingReport {
     /// Writes `scaling.json`, `scaling.md` and (with `plots`) every figure as SVG and PNG into
     /// `dir`; returns the files written.
     pub fn write(&self, dir: &Path, plots: bool) -> Result<Vec<PathBuf>> {
-        let io = |path: &Path, e: std::io::Error| Error::InvalidArgument(format!("writing {}: {e}", path.display()));
+        let io = |path: &Path, e: std::io::Error| Error::invalid(format!("writing {}: {e}", path.display()));
         std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
         let mut written = Vec::new();
         for (name, text) in [("scaling.json", self.to_json()), ("scaling.md", self.to_markdown())] {

@@ -56,10 +56,10 @@ pub fn max_coc_radius(layers: &LayeredImage, lens: &ThinLens) -> f64 {
 pub fn lens_for_max_coc(layers: &LayeredImage, lens: &ThinLens, target: f64) -> Result<ThinLens> {
     let now = max_coc_radius(layers, lens);
     if !(target > 0.0 && target.is_finite()) {
-        return Err(Error::InvalidArgument(format!("a max-CoC sweep target must be a positive number of pixels, got {target}")));
+        return Err(Error::invalid(format!("a max-CoC sweep target must be a positive number of pixels, got {target}")));
     }
     if !(now > 0.0) {
-        return Err(Error::InvalidArgument("the sweep scene has no blur to scale (pinhole lens or everything in focus)".into()));
+        return Err(Error::invalid("the sweep scene has no blur to scale (pinhole lens or everything in focus)".into()));
     }
     Ok(ThinLens { aperture_radius: (lens.aperture_radius as f64 * target / now) as f32, ..*lens })
 }

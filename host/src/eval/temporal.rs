@@ -80,7 +80,7 @@ pub struct TemporalReport {
 pub fn temporal_psnr(a0: &RgbImage, a1: &RgbImage, r0: &RgbImage, r1: &RgbImage) -> Result<f64> {
     let n = r0.data.len();
     if [a0, a1, r1].iter().any(|i| i.data.len() != n) || n == 0 {
-        return Err(Error::InvalidArgument("temporal PSNR needs four images of one size".into()));
+        return Err(Error::invalid("temporal PSNR needs four images of one size".into()));
     }
     let [a0, a1, r0, r1] = [a0, a1, r0, r1].map(|i| tonemap_image(i, 1.0));
     let mut sum = 0.0;
@@ -96,7 +96,7 @@ pub fn temporal_psnr(a0: &RgbImage, a1: &RgbImage, r0: &RgbImage, r1: &RgbImage)
 /// Runs the focus pull for every chosen method on `backend`.
 pub fn temporal(options: &TemporalOptions, backend: &mut dyn Backend, progress: bool) -> Result<TemporalReport> {
     if options.frames < 2 {
-        return Err(Error::InvalidArgument(format!("a temporal evaluation needs at least 2 frames, got {}", options.frames)));
+        return Err(Error::invalid(format!("a temporal evaluation needs at least 2 frames, got {}", options.frames)));
     }
     let builtin = scene::builtin(&options.scene)?;
     let mut camera = builtin.camera;
@@ -129,7 +129,7 @@ pub fn temporal(options: &TemporalOptions, backend: &mut dyn Backend, progress: 
     let methods: Vec<&MethodInfo> =
         METHODS.iter().filter(|m| options.methods.is_empty() || options.methods.iter().any(|n| n == m.name)).collect();
     if methods.is_empty() {
-        return Err(Error::InvalidArgument(format!("no method of the frame API among {:?}", options.methods)));
+        return Err(Error::invalid(format!("no method of the frame API among {:?}", options.methods)));
     }
     let mut rows = Vec::new();
     for method in methods {
@@ -141,7 +141,7 @@ pub fn temporal(options: &TemporalOptions, backend: &mut dyn Backend, progress: 
                 if runner.is_none() {
                     runner = Some(Runner::new(backend, method, &MethodOptions::default(), &input)?);
                 }
-                let r = runner.as_mut().ok_or_else(|| Error::InvalidArgument("no context".into()))?;
+                let r = runner.as_mut().ok_or_else(|| Error::invalid("no context".into()))?;
                 images.push(layered.crop(&r.frame(backend, &input, lens)?.image));
             }
             Ok(())

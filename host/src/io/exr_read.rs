@@ -151,7 +151,7 @@ pub fn read_layered_exr(path: impl AsRef<Path>) -> Result<(LayeredImage, InputRe
     for g in &groups {
         let get = |i: Option<usize>| i.map(|i| file.samples(path, i)).transpose();
         let (Some(r), Some(gr), Some(b), Some(depth)) = (get(g.r)?, get(g.g)?, get(g.b)?, get(g.depth)?) else {
-            return Err(Error::InvalidArgument(format!("internal: layer `{}` selected without its channels", g.name)));
+            return Err(Error::invalid(format!("internal: layer `{}` selected without its channels", g.name)));
         };
         planes.push(Planes { rgb: [r, gr, b], alpha: get(g.a)?, depth });
     }
@@ -205,7 +205,7 @@ pub fn read_rgb_exr(path: impl AsRef<Path>) -> Result<(RgbImage, InputReport)> {
         Some(root) if root.has_rgb() => root.clone(),
         root => {
             let missing = root.map_or(vec!["R", "G", "B"], |r| r.missing_colors());
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "{} needs the colour channels R, G and B (missing {}); it has the channels {}",
                 path.display(),
                 missing.join(", "),
@@ -252,7 +252,7 @@ impl ExrFile {
     fn open(path: &Path) -> Result<ExrFile> {
         let mut file = File::open(path).map_err(|e| fs_error("open", path, &e))?;
         if file.metadata().map(|m| m.is_dir()).unwrap_or(false) {
-            return Err(Error::InvalidArgument(format!("{} is a directory, not an EXR file", path.display())));
+            return Err(Error::invalid(format!("{} is a directory, not an EXR file", path.display())));
         }
         let file_len = file.metadata().map(|m| m.len()).unwrap_or(0);
         let mut magic = Vec::with_capacity(8);
@@ -262,7 +262,7 @@ impl ExrFile {
         // corners of an inverted (empty) data window, so that case is looked for in the raw header.
         file.seek(SeekFrom::Start(0)).map_err(|e| fs_error("read", path, &e))?;
         if let Some((part, [x0, y0, x1, y1])) = empty_data_window(&mut BufReader::new(&mut file)) {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "{}: part {part} has a zero size: its data window runs from ({x0}, {y0}) to ({x1}, {y1}), \
                  so there are no pixels to read",
                 path.display()
@@ -277,7 +277,7 @@ impl ExrFile {
                 announced += header.layer_size.area() as u128 * header.channels.bytes_per_pixel as u128;
             }
             if announced > MAX_EXPANSION * file_len as u128 + EXPANSION_SLACK {
-                return Err(Error::InvalidArgument(format!(
+                return Err(Error::invalid(format!(
                     "{} is corrupt: its header announces {} MiB of pixel data in a file of {file_len} bytes \
                      (more than {MAX_EXPANSION} times its size); re-export it",
                     path.display(),
@@ -287,14 +287,14 @@ impl ExrFile {
             for (i, header) in meta.headers.iter().enumerate() {
                 let part = header.own_attributes.layer_name.as_ref().map_or(format!("part {i}"), |n| format!("part `{n}`"));
                 if header.deep {
-                    return Err(Error::InvalidArgument(format!(
+                    return Err(Error::invalid(format!(
                         "{}: {part} holds deep data, which this reader does not support; write one flat layer per depth \
                          layer (`layer0.R`, `layer0.Z`, ...) instead",
                         path.display()
                     )));
                 }
                 if header.layer_size.x() == 0 || header.layer_size.y() == 0 {
-                    return Err(Error::InvalidArgument(format!(
+                    return Err(Error::invalid(format!(
                         "{}: {part} has a zero size ({}x{}): there are no pixels to read",
                         path.display(),
                         header.layer_size.x(),
@@ -324,7 +324,7 @@ impl ExrFile {
             }
         }
         if names.is_empty() {
-            return Err(Error::InvalidArgument(format!("{} has no channels", path.display())));
+            return Err(Error::invalid(format!("{} has no channels", path.display())));
         }
         Ok(ExrFile { parts, names, index })
     }
@@ -339,7 +339,7 @@ impl ExrFile {
                 let part = &self.parts[p];
                 let channel = &part.channel_data.list[c];
                 if channel.sampling != Vec2(1, 1) {
-                    return Err(Error::InvalidArgument(format!(
+                    return Err(Error::invalid(format!(
                         "{}: channel `{}` is subsampled ({}x{}); only full-resolution channels are supported: \
                          re-export without subsampling",
                         path.display(),
@@ -352,7 +352,7 @@ impl ExrFile {
                 match first {
                     None => first = Some((&self.names[i], size, position)),
                     Some((name, s, pos)) if s != size || pos != position => {
-                        return Err(Error::InvalidArgument(format!(
+                        return Err(Error::invalid(format!(
                             "{}: layer sizes differ: `{}` is {}x{} at ({}, {}) but `{name}` is {}x{} at ({}, {}); \
                              all layers must share one data window",
                             path.display(),
@@ -372,17 +372,17 @@ impl ExrFile {
             }
         }
         let Some((_, size, _)) = first else {
-            return Err(Error::InvalidArgument(format!("{}: no channels to read", path.display())));
+            return Err(Error::invalid(format!("{}: no channels to read", path.display())));
         };
         if size.x() == 0 || size.y() == 0 {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "{} has a zero size ({}x{}): there are no pixels to read",
                 path.display(),
                 size.x(),
                 size.y()
             )));
         }
-        let too_large = || Error::InvalidArgument(format!("{}: size {}x{} is too large", path.display(), size.x(), size.y()));
+        let too_large = || Error::invalid(format!("{}: size {}x{} is too large", path.display(), size.x(), size.y()));
         Ok((u32::try_from(size.x()).map_err(|_| too_large())?, u32::try_from(size.y()).map_err(|_| too_large())?))
     }
 
@@ -397,7 +397,7 @@ impl ExrFile {
             FlatSamples::U32(v) => Cow::Owned(v.iter().map(|&u| u as f32).collect()),
         };
         if samples.len() != expected {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "{}: channel `{}` holds {} samples, expected {}x{} = {expected}; the file is corrupt",
                 path.display(),
                 self.names[i],
@@ -472,7 +472,7 @@ fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)>
 
     if candidates.len() > 1 {
         let each = candidates.iter().enumerate().map(|(i, c)| format!("({}) {}", i + 1, c.what)).collect::<Vec<_>>();
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "{} is ambiguous: its channels hold {} different images and nothing says which one to read: {}. Keep the \
              channels of the one to use and remove the others (or export only that layer). Channels: {}",
             path.display(),
@@ -490,7 +490,7 @@ fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)>
             } else {
                 "has no depth: it needs a Z channel".to_string()
             };
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "{}: layer `{}` {problem}; every layer of a multi-layer EXR needs `<layer>.R`, `.G`, `.B` and `.Z` \
                  (`.A` optional). Complete the layer or remove its channels. Channels: {}",
                 path.display(),
@@ -512,7 +512,7 @@ fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)>
         format!("; the file's depth layers ({}) belong to no colour layer", depth_layers.join(", "))
     };
     if groups.iter().any(|g| g.name.is_empty() && g.has_rgb()) {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "{} has colour but no depth: it needs a Z channel (planar depth; `depth` is accepted too) {SIBLINGS} to be \
              read as a layered image{unmatched}. Channels: {}. Write the renderer's depth pass into the same file as `Z`",
             path.display(),
@@ -520,7 +520,7 @@ fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)>
         )));
     }
     if let Some(g) = groups.iter().find(|g| g.has_rgb()) {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "{}: layer `{}` has colour but no depth: it needs a Z channel (`{}.Z`, planar depth) {SIBLINGS}{unmatched}. \
              Channels: {}",
             path.display(),
@@ -532,7 +532,7 @@ fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)>
     let root = groups.iter().find(|g| g.name.is_empty());
     let missing = root.map_or(vec!["R", "G", "B"], |r| r.missing_colors());
     let depth = if root.is_some_and(|r| r.depth.is_some()) { "" } else { " and a Z channel (depth)" };
-    Err(Error::InvalidArgument(format!(
+    Err(Error::invalid(format!(
         "{} needs the colour channels R, G and B (missing {}){depth}; it has the channels {}",
         path.display(),
         missing.join(", "),
@@ -584,7 +584,7 @@ fn check_declared_size(path: &Path, meta: &MetaData) -> Result<()> {
         let slots = (w as u64).saturating_mul(h as u64).saturating_mul(layers);
         if w > MAX_EXR_EDGE || h > MAX_EXR_EDGE || slots > MAX_EXR_SLOTS {
             let part = header.own_attributes.layer_name.as_ref().map_or(format!("part {i}"), |n| format!("part `{n}`"));
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "{}: the header of {part} declares {w}x{h} pixels with {layers} depth layer(s), beyond the limit on EXR input \
                  of {MAX_EXR_EDGE} pixels a side and {MAX_EXR_SLOTS} pixels x layers; refused before decoding",
                 path.display()
@@ -612,7 +612,7 @@ fn guarded<T>(path: &Path, decode: impl FnOnce() -> Result<T>) -> Result<T> {
                 .map(|s| s.to_string())
                 .or_else(|| payload.downcast_ref::<String>().cloned())
                 .unwrap_or_else(|| "no message".to_string());
-            Err(Error::InvalidArgument(format!("{} is corrupt: the EXR decoder failed on its data ({what}); re-export it", path.display())))
+            Err(Error::invalid(format!("{} is corrupt: the EXR decoder failed on its data ({what}); re-export it", path.display())))
         }
     }
 }
@@ -689,13 +689,13 @@ fn check_magic(path: &Path, head: &[u8]) -> Result<()> {
     } else {
         format!("it starts with the bytes {:02x?}, not the EXR signature 76 2f 31 01", &head[..4])
     };
-    Err(Error::InvalidArgument(format!("{} is not an OpenEXR file: {what}", path.display())))
+    Err(Error::invalid(format!("{} is not an OpenEXR file: {what}", path.display())))
 }
 
 fn exr_error(path: &Path, e: ::exr::error::Error) -> Error {
     use ::exr::error::Error as E;
     let path = path.display();
-    Error::InvalidArgument(match e {
+    Error::invalid(match e {
         E::Invalid(msg) if msg.contains("missing bytes") => format!(
             "{path} is truncated: the file ends before all the data its header announces ({msg}); \
              re-export or copy it again"

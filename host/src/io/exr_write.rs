@@ -70,13 +70,13 @@ pub fn write_exr_with(path: impl AsRef<Path>, image: &RgbImage, extra: &[(&str, 
     for &(name, plane) in extra {
         check_channel_name(name)?;
         if names.contains(&name) {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "EXR channel name `{name}` is used twice (R, G and B hold the colour): give every extra plane its own name"
             )));
         }
         names.push(name);
         if plane.len() != pixels {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "extra EXR plane `{name}` has {} values but the image is {}x{} = {pixels} pixels",
                 plane.len(),
                 image.width,
@@ -115,13 +115,13 @@ pub fn write_layered_exr(path: impl AsRef<Path>, image: &LayeredImage) -> Result
     let pixels = image.width as usize * image.height as usize;
     let layers = image.max_layers as usize;
     if pixels == 0 || layers == 0 {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "cannot write a layered EXR of size {}x{} with {} layers: the size and layer count must be positive",
             image.width, image.height, image.max_layers
         )));
     }
     if image.counts.len() != pixels || image.fragments.len() != pixels * layers {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "layered image {}x{} with {} layers holds {} counts and {} fragment slots; expected {pixels} and {}",
             image.width,
             image.height,
@@ -150,7 +150,7 @@ pub fn write_layered_exr(path: impl AsRef<Path>, image: &LayeredImage) -> Result
 
 fn check_channel_name(name: &str) -> Result<()> {
     if name.is_empty() || name.len() > 255 || !name.bytes().all(|b| b.is_ascii_graphic()) {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "`{name}` cannot be an EXR channel name: use 1 to 255 printable ASCII characters without spaces"
         )));
     }
@@ -158,12 +158,12 @@ fn check_channel_name(name: &str) -> Result<()> {
 }
 
 fn text(name: &str) -> Result<Text> {
-    Text::new_or_none(name).ok_or_else(|| Error::InvalidArgument(format!("`{name}` cannot be an EXR channel name: use printable ASCII")))
+    Text::new_or_none(name).ok_or_else(|| Error::invalid(format!("`{name}` cannot be an EXR channel name: use printable ASCII")))
 }
 
 fn encode_and_write(path: &Path, image: &Image<Layer<AnyChannels<FlatSamples>>>) -> Result<()> {
     // Encoded in memory, then written in one call, so that every I/O error is reported with the path.
     let mut encoded = std::io::Cursor::new(Vec::new());
-    image.write().to_buffered(&mut encoded).map_err(|e| Error::InvalidArgument(format!("encoding the EXR {}: {e}", path.display())))?;
+    image.write().to_buffered(&mut encoded).map_err(|e| Error::invalid(format!("encoding the EXR {}: {e}", path.display())))?;
     write_file(path, encoded.get_ref())
 }

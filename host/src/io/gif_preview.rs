@@ -21,16 +21,16 @@ pub const MAX_GIF_EDGE: u32 = u16::MAX as u32;
 /// is not a positive finite number, a file that cannot be written.
 pub fn write_gif_preview(path: impl AsRef<Path>, frames: &[RgbImage], exposure: f32, delay_ms: u32) -> Result<()> {
     let path = path.as_ref();
-    let Some(first) = frames.first() else { return Err(Error::InvalidArgument("an animated GIF needs at least one frame".into())) };
+    let Some(first) = frames.first() else { return Err(Error::invalid("an animated GIF needs at least one frame".into())) };
     if !(exposure > 0.0 && exposure.is_finite()) {
-        return Err(Error::InvalidArgument(format!("GIF preview exposure must be a positive finite number, got {exposure}")));
+        return Err(Error::invalid(format!("GIF preview exposure must be a positive finite number, got {exposure}")));
     }
     let (w, h) = (first.width, first.height);
     if w > MAX_GIF_EDGE || h > MAX_GIF_EDGE {
-        return Err(Error::InvalidArgument(format!("a GIF is at most {MAX_GIF_EDGE} px on an edge, got {w}x{h}")));
+        return Err(Error::invalid(format!("a GIF is at most {MAX_GIF_EDGE} px on an edge, got {w}x{h}")));
     }
     let mut encoded = Vec::new();
-    let gif_error = |e: ::gif::EncodingError| Error::InvalidArgument(format!("encoding the GIF {}: {e}", path.display()));
+    let gif_error = |e: ::gif::EncodingError| Error::invalid(format!("encoding the GIF {}: {e}", path.display()));
     {
         let mut encoder = ::gif::Encoder::new(&mut encoded, w as u16, h as u16, &[]).map_err(gif_error)?;
         encoder.set_repeat(::gif::Repeat::Infinite).map_err(gif_error)?;
@@ -38,10 +38,7 @@ pub fn write_gif_preview(path: impl AsRef<Path>, frames: &[RgbImage], exposure: 
         for image in frames {
             check_rgb_image(image, "a GIF frame")?;
             if (image.width, image.height) != (w, h) {
-                return Err(Error::InvalidArgument(format!(
-                    "the frames of a GIF share one size: {w}x{h} and {}x{}",
-                    image.width, image.height
-                )));
+                return Err(Error::invalid(format!("the frames of a GIF share one size: {w}x{h} and {}x{}", image.width, image.height)));
             }
             let bytes: Vec<u8> = image.data.par_iter().flat_map_iter(|&c| tonemap_to_srgb8(c, exposure)).collect();
             let mut frame = ::gif::Frame::from_rgb_speed(w as u16, h as u16, &bytes, 10);

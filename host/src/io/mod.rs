@@ -153,14 +153,14 @@ use crate::layers::RgbImage;
 #[cfg(feature = "exr")]
 fn check_rgb_image(image: &RgbImage, what: &str) -> Result<()> {
     if image.width == 0 || image.height == 0 {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "cannot write {what} of zero size ({}x{}): width and height must be positive",
             image.width, image.height
         )));
     }
     let pixels = image.width as u64 * image.height as u64;
     if image.data.len() as u64 != pixels {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "cannot write {what}: the image is {}x{} = {pixels} pixels but its data holds {}",
             image.width,
             image.height,
@@ -175,7 +175,7 @@ fn check_rgb_image(image: &RgbImage, what: &str) -> Result<()> {
 fn fs_error(action: &str, path: &Path, e: &std::io::Error) -> Error {
     use std::io::ErrorKind;
     let path = path.display();
-    Error::InvalidArgument(match (action, e.kind()) {
+    Error::invalid(match (action, e.kind()) {
         ("open", ErrorKind::NotFound) => format!("cannot open {path}: the file does not exist; check the path"),
         ("create", ErrorKind::NotFound) => {
             format!("cannot create {path}: its directory does not exist; create the directory first")

@@ -18,7 +18,7 @@ pub fn write_png_preview(path: impl AsRef<Path>, image: &RgbImage, exposure: f32
     let path = path.as_ref();
     check_rgb_image(image, "a PNG preview")?;
     if !(exposure > 0.0 && exposure.is_finite()) {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "PNG preview exposure must be a positive finite number, got {exposure} (1 leaves the image as is)"
         )));
     }
@@ -39,7 +39,7 @@ pub fn write_png_display(path: impl AsRef<Path>, width: u32, height: u32, pixels
 pub(crate) fn write_srgb8(path: &Path, width: u32, height: u32, bytes: &[u8]) -> Result<()> {
     // Encoded in memory, then written in one call, so that every I/O error is reported with the path.
     let mut encoded = Vec::new();
-    let png_error = |e: ::png::EncodingError| Error::InvalidArgument(format!("encoding the PNG {}: {e}", path.display()));
+    let png_error = |e: ::png::EncodingError| Error::invalid(format!("encoding the PNG {}: {e}", path.display()));
     let mut encoder = ::png::Encoder::new(&mut encoded, width, height);
     encoder.set_color(::png::ColorType::Rgb);
     encoder.set_depth(::png::BitDepth::Eight);

@@ -5,10 +5,10 @@
 
 use super::buffers::one_layer_frame;
 use crate::backend::{Backend, CommandTime};
-use crate::error::Result;
 pub use crate::frame::bokeh::BokehOptions;
 use crate::frame::{BokehContext, BokehContextDesc};
 use crate::layers::RgbImage;
+use dof_core::error::Result;
 use dof_shaders::lens::ThinLens;
 
 pub struct BokehOutput {

@@ -2,9 +2,9 @@
 //! of a one-dimensional grid-stride dispatch, and reading an RGB result back.
 
 use crate::backend::{Backend, BufferId, with_buffers};
-use crate::error::{Error, Result};
-use crate::frame::Frame;
+use crate::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};
 use crate::layers::{LayeredImage, RgbImage};
+use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 
 pub use crate::backend::{MAX_GROUPS, groups_for};
@@ -53,7 +53,7 @@ pub fn one_layer_frame<T>(
     with_buffers(backend, &sizes, |backend, b| {
         backend.write_buffer(b[0], 0, &slots)?;
         backend.write_buffer(b[1], 0, &vec![1u32; pixels as usize])?;
-        let ran = run(backend, &Frame::layers(image.width, image.height, 1, *lens, b[0], b[1], b[2]))?;
+        let ran = run(backend, &Frame::layers(image.width, image.height, 1, *lens, SlotBuffer(b[0]), CountBuffer(b[1]), RgbBuffer(b[2])))?;
         Ok((read_rgb(backend, b[2], image.width, image.height)?, ran))
     })
 }

@@ -3,9 +3,9 @@
 
 use super::buffers::one_layer_frame;
 use crate::backend::{Backend, CommandTime};
-use crate::error::{Error, Result};
 use crate::frame::{GatherContext, GatherContextDesc};
 use crate::layers::RgbImage;
+use dof_core::error::{Error, Result};
 use dof_shaders::gather::radius_px;
 use dof_shaders::lens::ThinLens;
 

@@ -21,9 +21,9 @@
 
 use super::buffers::{groups_for, read_rgb, slot_words};
 use crate::backend::{Backend, BufferId, CommandTime, RunKernel, with_buffers};
-use crate::error::{Error, Result};
 use crate::frame::layered::{gaussian, sigma};
 use crate::layers::{LayeredImage, RgbImage};
+use dof_core::error::{Error, Result};
 use dof_shaders::layered::{
     LAYERED_MATTE, LayeredParams, OVER, SLOT_WORDS, UNDER, layered_blur, layered_composite, layered_matte, layered_resolve, matte_front,
     matte_hidden,

@@ -6,10 +6,12 @@
 //! again with the context grown ([`DofContext::grow_to_fit`]), so every result is whole.
 
 use crate::backend::{Backend, BufferId, CommandTime};
-use crate::error::{Error, Result};
-use crate::frame::{ContextDesc, ContextReport, DofContext, Extent, Frame, MethodInfo, MethodOptions, Reads};
+use crate::frame::{
+    ContextDesc, ContextReport, CountBuffer, DofContext, Extent, Frame, MethodInfo, MethodOptions, Reads, RgbBuffer, SlotBuffer,
+};
 use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{SLOT_WORDS, read_rgb, slot_words};
+use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 use std::borrow::Cow;
 
@@ -96,7 +98,8 @@ impl Runner {
         let before = backend.counters();
         backend.write_buffer(self.io[0], 0, &slot_words(image))?;
         backend.write_buffer(self.io[1], 0, &image.counts)?;
-        let frame = Frame::layers(e.width, e.height, e.layers, *lens, self.io[0], self.io[1], self.io[2]);
+        let frame =
+            Frame::layers(e.width, e.height, e.layers, *lens, SlotBuffer(self.io[0]), CountBuffer(self.io[1]), RgbBuffer(self.io[2]));
         let mut attempt = 0;
         let (stages, report) = loop {
             self.ctx.record(backend, &frame)?;

@@ -3,9 +3,9 @@
 
 use super::buffers::one_layer_frame;
 use crate::backend::{Backend, CommandTime};
-use crate::error::Result;
 use crate::frame::{RingGatherContext, RingGatherContextDesc};
 use crate::layers::RgbImage;
+use dof_core::error::Result;
 use dof_shaders::lens::ThinLens;
 
 pub use crate::frame::ring_gather::{DEFAULT_MAX_RADIUS, DEFAULT_RINGS, MAX_RADIUS, MAX_SAMPLE_RINGS, RingGatherOptions};

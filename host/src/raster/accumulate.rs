@@ -78,7 +78,7 @@ pub fn accumulate(
 ) -> Result<Accumulated> {
     let frame = check_view(camera, lens, near)?;
     if options.samples == 0 || options.samples > crate::scene::MAX_SPP {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "the accumulation buffer takes 1 to {} renders, got {}",
             crate::scene::MAX_SPP,
             options.samples
@@ -146,7 +146,7 @@ fn accumulate_blended(
     let pixels = frame.width as u64 * frame.height as u64;
     let mut sizes = Pass::sizes(mesh, pixels, pixels).to_vec();
     sizes.push((LAYER_WORDS as u64 * pixels, "accum/layer"));
-    with_buffers(backend, &sizes, |backend, b| {
+    Ok(with_buffers(backend, &sizes, |backend, b| {
         let pass = Pass::new(backend, mesh, b, pixels)?;
         let layer = b[4];
         let mut sum = vec![[0.0f64; 3]; pixels as usize];
@@ -194,5 +194,5 @@ fn accumulate_blended(
             *out = s.map(|v| (v / n) as f32);
         }
         Ok((image, times))
-    })
+    })?)
 }

@@ -2,7 +2,7 @@
 //! the device.
 
 use crate::backend::{Backend, BufferId};
-use crate::error::{Error, Result};
+use crate::error::{CoreError, Error, Result};
 use crate::scene::Lighting;
 use dof_shaders::raster::mesh::{Light, MATERIAL_WORDS, MeshMaterial, MeshVertex, NO_TEXTURE, TextureInfo};
 
@@ -32,10 +32,18 @@ impl RasterScene<'_> {
             return bad("the scene holds no triangles; a scene needs at least one".into());
         }
         if self.triangles.len() as u64 > MAX_TRIANGLES {
-            return Err(Error::TooLarge { what: "triangles of the scene".into(), size: self.triangles.len() as u64, limit: MAX_TRIANGLES });
+            return Err(Error::Core(CoreError::TooLarge {
+                what: "triangles of the scene".into(),
+                size: self.triangles.len() as u64,
+                limit: MAX_TRIANGLES,
+            }));
         }
         if self.texels.len() as u64 > MAX_TEXELS {
-            return Err(Error::TooLarge { what: "texels of all textures".into(), size: self.texels.len() as u64, limit: MAX_TEXELS });
+            return Err(Error::Core(CoreError::TooLarge {
+                what: "texels of all textures".into(),
+                size: self.texels.len() as u64,
+                limit: MAX_TEXELS,
+            }));
         }
         for (i, v) in self.vertices.iter().enumerate() {
             let finite = v.position.iter().chain(v.normal.iter()).all(|x| x.is_finite()) && v.u.is_finite() && v.v.is_finite();
@@ -155,7 +163,7 @@ impl DeviceMesh {
                 for b in buffers {
                     backend.destroy_buffer(b);
                 }
-                return Err(e);
+                return Err(e.into());
             }
             bytes += 4 * size;
         }

@@ -43,10 +43,10 @@ pub struct Peeled {
 pub(crate) fn check_view(camera: &Camera, lens: &ThinLens, near: f32) -> Result<crate::scene::CameraFrame> {
     let frame = camera.frame()?;
     if !lens.is_valid() {
-        return Err(Error::InvalidArgument(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
+        return Err(Error::invalid(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
     }
     if !(near > 0.0 && near.is_finite() && near < lens.focus_distance) {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "the near plane must lie between 0 and the focus distance {}, got {near}",
             lens.focus_distance
         )));
@@ -124,7 +124,7 @@ impl Pass {
         };
         let [v, t, m, tx, tl] = mesh.buffers;
         let size = [frame.width, frame.height];
-        backend.draw_indirect(
+        Ok(backend.draw_indirect(
             &RASTER_DRAW,
             self.args,
             &[v, t, m, tx, tl, self.reach, self.bounds],
@@ -132,7 +132,7 @@ impl Pass {
             size,
             &push_words(&params),
             label,
-        )
+        )?)
     }
 
     /// Shades the visibility buffer into `out` (a layer, or the accumulation buffer).
@@ -155,8 +155,8 @@ impl Pass {
         let bound = raster_shade::Bindings { vis: self.vis, vertices, triangles, materials, textures, texels, out, reach: self.reach };
         let p: ShadeParams = dof_shaders::exec::params(params);
         match indirect {
-            Some((args, offset)) => backend.run_indirect(bound, args, offset, &p, label),
-            None => backend.run(bound, groups_for(&RASTER_SHADE, p.width as u64 * p.height as u64), &p, label),
+            Some((args, offset)) => Ok(backend.run_indirect(bound, args, offset, &p, label)?),
+            None => Ok(backend.run(bound, groups_for(&RASTER_SHADE, p.width as u64 * p.height as u64), &p, label)?),
         }
     }
 }
@@ -171,7 +171,7 @@ pub fn peel_layers(
     options: &LayerOptions,
 ) -> Result<Peeled> {
     check_view(camera, lens, near)?;
-    let margin = options.guard_band.resolve(|| auto_margin_mesh(scene.triangle_positions(), camera, lens, near))?;
+    let margin = options.guard_band.resolve(|| Ok(auto_margin_mesh(scene.triangle_positions(), camera, lens, near)?))?;
     check_subsamples(options.subsamples)?;
     // Area-integrated layers: peeled at sub-sample resolution (a `side`-times finer pixel grid
     // whose pixel centres are the stratified sub-samples), then resolved per pixel.
@@ -180,7 +180,7 @@ pub fn peel_layers(
     let fine_camera = sub_sample_camera(camera, side);
     let frame = fine_camera.overscan(margin * side).frame()?;
     if options.max_layers == 0 || !(options.edge_depth_ratio >= 0.0) {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "need at least one layer and a non-negative edge ratio, got {} and {}",
             options.max_layers, options.edge_depth_ratio
         )));

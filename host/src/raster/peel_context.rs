@@ -19,7 +19,7 @@ use crate::error::{Error, Result};
 use crate::frame::context::ContextReport;
 use crate::frame::io::{Owned, ready};
 use crate::frame::peel::{KERNELS, PeelReport, PeelSlots};
-use crate::frame::{Frame, FrameInput, FrameOutput};
+use crate::frame::{CountBuffer, Frame, FrameInput, FrameOutput, SlotBuffer};
 use crate::scene::guard_band::{auto_margin_mesh, reach_planes};
 use crate::scene::{Camera, GuardBand, LayerOptions, check_subsamples};
 use dof_shaders::lens::ThinLens;
@@ -90,7 +90,7 @@ impl MeshPeelContext {
     pub fn new(backend: &mut dyn Backend, scene: &RasterScene, camera: &Camera, lens: &ThinLens, desc: &MeshPeelDesc) -> Result<Self> {
         check_view(camera, lens, desc.near)?;
         if desc.max_layers == 0 || !(desc.edge_depth_ratio >= 0.0) {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "need at least one layer and a non-negative edge ratio, got {} and {}",
                 desc.max_layers, desc.edge_depth_ratio
             )));
@@ -98,7 +98,7 @@ impl MeshPeelContext {
         scene.validate()?;
         check_subsamples(desc.subsamples)?;
         let side = grid_side(desc.subsamples);
-        let margin = desc.guard_band.resolve(|| auto_margin_mesh(scene.triangle_positions(), camera, lens, desc.near))?;
+        let margin = desc.guard_band.resolve(|| Ok(auto_margin_mesh(scene.triangle_positions(), camera, lens, desc.near)?))?;
         let frame = camera.overscan(margin).frame()?;
         frame.check_size("multi-layer image", desc.max_layers as u64)?;
         let (w, h) = (frame.width, frame.height);
@@ -140,11 +140,11 @@ impl MeshPeelContext {
         };
         if let Err(e) = backend.reserve_draw_target(&RASTER_DRAW, [fw, fh]) {
             ctx.destroy(backend);
-            return Err(e);
+            return Err(e.into());
         }
         let mut kernels = vec![&RASTER_SHADE, &RASTER_SETUP, &RASTER_FALLBACK];
         kernels.extend(KERNELS);
-        ready(backend, ctx, &kernels, &[&RASTER_DRAW], Self::destroy)
+        Ok(ready(backend, ctx, &kernels, &[&RASTER_DRAW], Self::destroy)?)
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {
@@ -178,7 +178,7 @@ impl MeshPeelContext {
     /// image (crop its result by [`Self::margin`]).
     pub fn frame(&self, lens: ThinLens, output: FrameOutput) -> Frame {
         let s = &self.slots;
-        let input = FrameInput::Layers { fragments: s.fragments, counts: s.counts, layers: s.layers };
+        let input = FrameInput::Layers { fragments: SlotBuffer(s.fragments), counts: CountBuffer(s.counts), layers: s.layers };
         Frame { width: s.width, height: s.height, lens, input, output }
     }
 
@@ -193,7 +193,7 @@ impl MeshPeelContext {
         self.owned.check(backend)?;
         backend.check_frame_recording()?;
         if [camera.width, camera.height] != self.frame_size {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "a {}x{} camera on a peel context made for {}x{} frames (make another context)",
                 camera.width, camera.height, self.frame_size[0], self.frame_size[1]
             )));
@@ -201,7 +201,7 @@ impl MeshPeelContext {
         check_view(camera, lens, self.desc.near)?;
         let frame = camera.overscan(self.margin).frame()?;
         if [frame.width, frame.height] != self.size() {
-            return Err(Error::InvalidArgument("the camera's guard band does not match the context's".into()));
+            return Err(Error::invalid("the camera's guard band does not match the context's".into()));
         }
         // The passes draw the sub-sample grid (the frame itself when point-sampled).
         let coarse = frame;
@@ -241,13 +241,13 @@ impl MeshPeelContext {
             self.slots.resolve_from(backend, slots, self.side, self.desc.edge_depth_ratio)?;
         }
         self.slots.finish(backend, *lens, self.desc.edge_depth_ratio, self.desc.disocclusion)?;
-        slots.band(backend, mesh.buffers[0], mesh.buffers[1], &band)
+        Ok(slots.band(backend, mesh.buffers[0], mesh.buffers[1], &band)?)
     }
 
     /// What the last frame's passes did (reads the device: once the frame completed).
     pub fn peel_report(&self, backend: &mut dyn Backend) -> Result<PeelReport> {
         self.owned.check(backend)?;
-        self.fine.report(backend)
+        Ok(self.fine.report(backend)?)
     }
 
     /// [`Self::peel_report`] in the frame API's report shape.

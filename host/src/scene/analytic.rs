@@ -21,7 +21,7 @@ use glam::Vec3;
 
 use super::bvh::{Aabb, Bvh};
 use super::camera::Ray;
-use crate::error::{Error, Result};
+use crate::error::{CoreError, Error, Result};
 
 /// The geometry of one primitive.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -131,10 +131,14 @@ impl Scene {
     /// or infinite colour, or a non-positive checker cell, naming the primitive.
     pub fn new(primitives: Vec<Primitive>, lighting: Lighting) -> Result<Self> {
         if primitives.len() > u32::MAX as usize {
-            return Err(Error::TooLarge { what: "primitives".into(), size: primitives.len() as u64, limit: u32::MAX as u64 });
+            return Err(Error::Core(CoreError::TooLarge {
+                what: "primitives".into(),
+                size: primitives.len() as u64,
+                limit: u32::MAX as u64,
+            }));
         }
         for (i, p) in primitives.iter().enumerate() {
-            let bad = |why: &str| Error::InvalidArgument(format!("primitive {i} ({:?}): {why}", p.shape));
+            let bad = |why: &str| Error::invalid(format!("primitive {i} ({:?}): {why}", p.shape));
             match p.shape {
                 Shape::Sphere { center, radius } => {
                     if !center.is_finite() || !(radius > 0.0 && radius.is_finite()) {
@@ -168,10 +172,10 @@ impl Scene {
         }
         let l = lighting;
         if !l.direction.is_finite() || !(l.direction.length_squared() > 0.0) {
-            return Err(Error::InvalidArgument("the light direction must be finite and not zero".into()));
+            return Err(Error::invalid("the light direction must be finite and not zero".into()));
         }
         if !l.color.iter().chain(l.ambient.iter()).all(|v| *v >= 0.0 && v.is_finite()) {
-            return Err(Error::InvalidArgument("light and ambient colours must be finite and not negative".into()));
+            return Err(Error::invalid("light and ambient colours must be finite and not negative".into()));
         }
         check_background(l.background)?;
         let mut boxes = Vec::new();
@@ -199,16 +203,13 @@ impl Scene {
     /// shape (sphere, box).
     pub fn with_alpha(mut self, index: usize, alpha: f32) -> Result<Self> {
         let Some(p) = self.primitives.get(index) else {
-            return Err(Error::InvalidArgument(format!(
-                "no primitive {index} to make translucent ({} in the scene)",
-                self.primitives.len()
-            )));
+            return Err(Error::invalid(format!("no primitive {index} to make translucent ({} in the scene)", self.primitives.len())));
         };
         if !(0.0..=1.0).contains(&alpha) {
-            return Err(Error::InvalidArgument(format!("primitive {index}: an opacity lies in [0, 1], got {alpha}")));
+            return Err(Error::invalid(format!("primitive {index}: an opacity lies in [0, 1], got {alpha}")));
         }
         if alpha < 1.0 && !matches!(p.shape, Shape::Quad { .. } | Shape::Plane { .. }) {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "primitive {index} ({:?}): only quads and planes may be translucent (a closed shape's inner faces have no radiance of their own)",
                 p.shape
             )));
@@ -346,7 +347,7 @@ pub fn check_background(rgb: [f32; 3]) -> Result<()> {
     if rgb.iter().all(|v| *v >= 0.0 && v.is_finite()) {
         Ok(())
     } else {
-        Err(Error::InvalidArgument(format!("the background colour must be finite and not negative, got {rgb:?}")))
+        Err(Error::invalid(format!("the background colour must be finite and not negative, got {rgb:?}")))
     }
 }
 

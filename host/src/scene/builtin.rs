@@ -70,7 +70,7 @@ pub fn builtin(name: &str) -> Result<BuiltinScene> {
         "panes" => panes(),
         "foliage" => foliage(),
         "glass" => glass(),
-        _ => Err(Error::InvalidArgument(format!("unknown built-in scene `{name}`; the built-in scenes are: {}", NAMES.join(", ")))),
+        _ => Err(Error::invalid(format!("unknown built-in scene `{name}`; the built-in scenes are: {}", NAMES.join(", ")))),
     }
 }
 

@@ -6,7 +6,7 @@
 
 use glam::Vec3;
 
-use crate::error::{Error, Result};
+use crate::error::{CoreError, Error, Result};
 
 /// A perspective camera. Validate it with [`Camera::frame`] before use; every function taking a
 /// camera does.
@@ -79,32 +79,28 @@ impl Camera {
     /// parallel to the view axis.
     pub fn frame(&self) -> Result<CameraFrame> {
         if self.width == 0 || self.height == 0 {
-            return Err(Error::InvalidArgument(format!("the image size must be positive, got {}x{}", self.width, self.height)));
+            return Err(Error::invalid(format!("the image size must be positive, got {}x{}", self.width, self.height)));
         }
         let fov = self.yfov_radians;
         if !(fov > 0.0 && fov < std::f32::consts::PI) {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "the vertical field of view must lie strictly between 0 and 180 degrees, got {} degrees",
                 fov.to_degrees()
             )));
         }
         if !(self.eye.is_finite() && self.target.is_finite() && self.up.is_finite()) {
-            return Err(Error::InvalidArgument("camera eye, target and up must be finite".into()));
+            return Err(Error::invalid("camera eye, target and up must be finite".into()));
         }
-        let forward =
-            unit(self.target - self.eye).ok_or_else(|| Error::InvalidArgument("the camera's target must differ from its eye".into()))?;
+        let forward = unit(self.target - self.eye).ok_or_else(|| Error::invalid("the camera's target must differ from its eye".into()))?;
         let right = unit(self.up)
             .map(|up| forward.cross(up))
             .filter(|r| r.length() > 1e-6)
             .and_then(unit)
-            .ok_or_else(|| Error::InvalidArgument("the camera's up vector must not be zero or parallel to its view axis".into()))?;
+            .ok_or_else(|| Error::invalid("the camera's up vector must not be zero or parallel to its view axis".into()))?;
         let up = right.cross(forward);
         let tan_half_fov = (0.5 * fov).tan();
         if !(tan_half_fov.is_finite() && tan_half_fov > 0.0) {
-            return Err(Error::InvalidArgument(format!(
-                "the vertical field of view {} degrees is too close to 0 or 180",
-                fov.to_degrees()
-            )));
+            return Err(Error::invalid(format!("the vertical field of view {} degrees is too close to 0 or 180", fov.to_degrees())));
         }
         Ok(CameraFrame {
             eye: self.eye,
@@ -185,11 +181,11 @@ impl CameraFrame {
     pub fn check_size(&self, what: &str, per_pixel: u64) -> Result<()> {
         let slots = (self.width as u64 * self.height as u64).saturating_mul(per_pixel.max(1));
         if slots > MAX_SLOTS {
-            return Err(Error::TooLarge {
+            return Err(Error::Core(CoreError::TooLarge {
                 what: format!("{what} ({}x{} pixels x {per_pixel})", self.width, self.height),
                 size: slots,
                 limit: MAX_SLOTS,
-            });
+            }));
         }
         Ok(())
     }

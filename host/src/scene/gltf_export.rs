@@ -32,7 +32,7 @@ use super::analytic::{Albedo, Lighting, Material, Scene, Shape, surface_coords, 
 use super::builtin::builtin;
 use super::camera::{Camera, CameraFrame};
 use super::mesh::MAX_TRIANGLES;
-use crate::error::{Error, Result};
+use crate::error::{CoreError, Error, Result};
 
 /// How finely curved and unbounded shapes are turned into triangles.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -236,10 +236,10 @@ const REPEAT: u32 = 10497;
 pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Result<Vec<u8>> {
     let frame = camera.frame()?;
     if options.sphere_segments < 4 {
-        return Err(Error::InvalidArgument(format!("sphere_segments must be at least 4, got {}", options.sphere_segments)));
+        return Err(Error::invalid(format!("sphere_segments must be at least 4, got {}", options.sphere_segments)));
     }
     if !(options.plane_half_extent > 0.0 && options.plane_half_extent.is_finite()) {
-        return Err(Error::InvalidArgument(format!("plane_half_extent must be positive and finite, got {}", options.plane_half_extent)));
+        return Err(Error::invalid(format!("plane_half_extent must be positive and finite, got {}", options.plane_half_extent)));
     }
     let estimate: u64 = scene
         .primitives()
@@ -253,7 +253,11 @@ pub fn export_glb(scene: &Scene, camera: &Camera, options: &ExportOptions) -> Re
         })
         .sum();
     if estimate > MAX_TRIANGLES {
-        return Err(Error::TooLarge { what: "triangles of the exported scene".into(), size: estimate, limit: MAX_TRIANGLES });
+        return Err(Error::Core(CoreError::TooLarge {
+            what: "triangles of the exported scene".into(),
+            size: estimate,
+            limit: MAX_TRIANGLES,
+        }));
     }
 
     let mut bin = Bin::default();

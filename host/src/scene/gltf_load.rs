@@ -48,7 +48,7 @@ use gltf::mesh::Mode;
 
 use super::analytic::Lighting;
 use super::mesh::{LoadReport, MAX_TEXELS, MAX_TRIANGLES, MeshCamera, MeshScene, zero_area};
-use crate::error::{Error, Result};
+use crate::error::{CoreError, Error, Result};
 
 fn scene_err(m: impl Into<String>) -> Error {
     Error::Scene(m.into())
@@ -570,7 +570,11 @@ impl Loader<'_> {
 
             let first = self.out.vertices.len();
             if first + n > u32::MAX as usize {
-                return Err(Error::TooLarge { what: "vertices of the scene".into(), size: (first + n) as u64, limit: u32::MAX as u64 });
+                return Err(Error::Core(CoreError::TooLarge {
+                    what: "vertices of the scene".into(),
+                    size: (first + n) as u64,
+                    limit: u32::MAX as u64,
+                }));
             }
             for k in 0..n {
                 let p = world.transform_point3(Vec3::from(positions[k]));
@@ -613,11 +617,11 @@ impl Loader<'_> {
                 self.out.triangles.push([f + a, f + b, f + c, material]);
             }
             if self.out.triangles.len() as u64 > MAX_TRIANGLES {
-                return Err(Error::TooLarge {
+                return Err(Error::Core(CoreError::TooLarge {
                     what: "triangles of the scene".into(),
                     size: self.out.triangles.len() as u64,
                     limit: MAX_TRIANGLES,
-                });
+                }));
             }
         }
         Ok(())
@@ -746,11 +750,11 @@ impl Loader<'_> {
         let offset = self.out.texels.len() as u64;
         let total = offset + width as u64 * height as u64;
         if total > MAX_TEXELS {
-            return Err(Error::TooLarge {
+            return Err(Error::Core(CoreError::TooLarge {
                 what: format!("texels of all textures ({what} is {width}x{height}; scale the textures down)"),
                 size: total,
                 limit: MAX_TEXELS,
-            });
+            }));
         }
         let decoded = match format {
             Some(f) => image::load_from_memory_with_format(&bytes, f),

@@ -234,6 +234,6 @@ mod tests {
         assert_eq!(GuardBand::Off.resolve(|| Ok(5)).unwrap(), 0);
         assert_eq!(GuardBand::Auto.resolve(|| Ok(5)).unwrap(), 5);
         assert_eq!(GuardBand::Pixels(12).resolve(|| Ok(5)).unwrap(), 12);
-        assert!(matches!(GuardBand::Pixels(MAX_GUARD_BAND + 1).resolve(|| Ok(5)), Err(crate::Error::TooLarge { .. })));
+        assert!(matches!(GuardBand::Pixels(MAX_GUARD_BAND + 1).resolve(|| Ok(5)), Err(crate::CoreError::TooLarge { .. })));
     }
 }

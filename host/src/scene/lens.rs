@@ -83,45 +83,43 @@ impl LensSettings {
         let zf = match self.focus {
             Focus::Distance(d) => {
                 if !(d > 0.0 && d.is_finite()) {
-                    return Err(Error::InvalidArgument(format!("the focus distance must be positive and finite, got {d}")));
+                    return Err(Error::invalid(format!("the focus distance must be positive and finite, got {d}")));
                 }
                 d
             }
             Focus::Point(p) => {
                 let d = frame.depth_of(p);
                 if !p.is_finite() || !(d > 0.0) {
-                    return Err(Error::InvalidArgument(format!(
-                        "the focus point {p} is behind or in the plane of the camera (planar depth {d})"
-                    )));
+                    return Err(Error::invalid(format!("the focus point {p} is behind or in the plane of the camera (planar depth {d})")));
                 }
                 d
             }
         };
         let mpu = self.metres_per_unit;
         if !(mpu > 0.0 && mpu.is_finite()) {
-            return Err(Error::InvalidArgument(format!("metres per scene unit must be positive and finite, got {mpu}")));
+            return Err(Error::invalid(format!("metres per scene unit must be positive and finite, got {mpu}")));
         }
         let f_mm = match self.focal_length_mm {
             Some(f) => {
                 if !(f > 0.0 && f.is_finite()) {
-                    return Err(Error::InvalidArgument(format!("the focal length must be positive and finite, got {f} mm")));
+                    return Err(Error::invalid(format!("the focal length must be positive and finite, got {f} mm")));
                 }
                 f
             }
             None => {
                 let s = self.sensor_height_mm;
                 if !(s > 0.0 && s.is_finite()) {
-                    return Err(Error::InvalidArgument(format!("the sensor height must be positive and finite, got {s} mm")));
+                    return Err(Error::invalid(format!("the sensor height must be positive and finite, got {s} mm")));
                 }
                 s / (2.0 * frame.tan_half_fov)
             }
         };
         let f = f_mm * 1e-3 / mpu;
         if !(f > 0.0 && f.is_finite()) {
-            return Err(Error::InvalidArgument(format!("the focal length {f_mm} mm is not representable in scene units")));
+            return Err(Error::invalid(format!("the focal length {f_mm} mm is not representable in scene units")));
         }
         if f >= zf {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::invalid(format!(
                 "the focal length ({f} scene units, {f_mm} mm) must be shorter than the focus distance ({zf}): \
                  a thin lens cannot focus closer than its focal length"
             )));
@@ -129,13 +127,13 @@ impl LensSettings {
         let radius = match self.aperture {
             Aperture::FNumber(n) => {
                 if !(n > 0.0) {
-                    return Err(Error::InvalidArgument(format!("the f-number must be positive, got {n}")));
+                    return Err(Error::invalid(format!("the f-number must be positive, got {n}")));
                 }
                 f / (2.0 * n)
             }
             Aperture::Radius(r) => {
                 if !(r >= 0.0 && r.is_finite()) {
-                    return Err(Error::InvalidArgument(format!("the aperture radius must be finite and not negative, got {r}")));
+                    return Err(Error::invalid(format!("the aperture radius must be finite and not negative, got {r}")));
                 }
                 r
             }
@@ -144,7 +142,7 @@ impl LensSettings {
         let ppu = frame.height as f32 / (2.0 * sensor_distance * frame.tan_half_fov);
         let lens = ThinLens { focal_length: f, aperture_radius: radius, focus_distance: zf, pixels_per_unit: ppu };
         if !lens.is_valid() || !lens.far_limit_px().is_finite() {
-            return Err(Error::InvalidArgument(format!("the lens settings give an unusable lens: {lens:?}")));
+            return Err(Error::invalid(format!("the lens settings give an unusable lens: {lens:?}")));
         }
         Ok(lens)
     }
@@ -157,7 +155,7 @@ pub fn validate_artist_lens(lens: &ArtistLens) -> Result<()> {
     if lens.is_valid() && (2.0 * lens.max_radius_px).is_finite() {
         Ok(())
     } else {
-        Err(Error::InvalidArgument(format!(
+        Err(Error::invalid(format!(
             "an artist lens needs near_end <= near_start <= far_start <= far_end and max_radius_px >= 0, \
              all finite (far_end may be infinite) and max_radius_px below {:e}; got {lens:?}",
             f32::MAX / 2.0

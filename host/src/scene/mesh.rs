@@ -16,7 +16,7 @@ use glam::Vec3;
 
 use super::analytic::Lighting;
 use super::camera::Camera;
-use crate::error::{Error, Result};
+use crate::error::{CoreError, Error, Result};
 
 /// Most triangles a mesh may have: the rasteriser's visibility buffer stores `triangle + 1` as an
 /// exact f32.
@@ -66,7 +66,9 @@ impl MeshCamera {
     pub fn camera(&self, width: u32, height: u32) -> Result<Camera> {
         let camera = Camera { eye: self.eye, target: self.eye + self.forward, up: self.up, yfov_radians: self.yfov_radians, width, height };
         camera.frame().map_err(|e| match e {
-            Error::InvalidArgument(m) => Error::InvalidArgument(format!("camera {}: {m}", self.name.as_deref().unwrap_or("(unnamed)"))),
+            Error::Core(CoreError::InvalidArgument(m)) => {
+                Error::invalid(format!("camera {}: {m}", self.name.as_deref().unwrap_or("(unnamed)")))
+            }
             other => other,
         })?;
         Ok(camera)

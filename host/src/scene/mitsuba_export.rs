@@ -83,7 +83,7 @@ pub enum MitsubaExport {
 pub fn export_mitsuba(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &MitsubaOptions) -> Result<MitsubaExport> {
     let frame = camera.frame()?;
     if !lens.is_valid() {
-        return Err(Error::InvalidArgument(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
+        return Err(Error::invalid(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
     }
     let view = View { frame, radius: lens.aperture_radius, focus: lens.focus_distance };
     let reach = plane_reach(scene, &view);
@@ -347,7 +347,7 @@ fn face_radiance(scene: &Scene, prim: &Primitive, normal: Vec3, corner: Vec3, en
             let (su, sv) = (eu[0] - o[0], ev[1] - o[1]);
             let skew = (eu[1] - o[1]).abs().max((ev[0] - o[0]).abs());
             if !(skew <= 1e-6 * su.abs().max(sv.abs())) {
-                return Err(Error::InvalidArgument(format!("checker axes not along the face's edges (skew {skew})")));
+                return Err(Error::invalid(format!("checker axes not along the face's edges (skew {skew})")));
             }
             Radiance::Checker { color0: times(a), color1: times(b), scale: [su as f32, sv as f32], offset: [o[0] as f32, o[1] as f32] }
         }

@@ -50,7 +50,7 @@ pub const DEFAULT_SUBSAMPLES: u32 = 4;
 /// Errors unless `n` is a sub-sample count the layers take (1, 4, 9 or 16).
 pub fn check_subsamples(n: u32) -> Result<()> {
     if grid_side(n) == 0 {
-        return Err(Error::InvalidArgument(format!("sub-samples a pixel must be 1, 4, 9 or 16 (a square grid), got {n}")));
+        return Err(Error::invalid(format!("sub-samples a pixel must be 1, 4, 9 or 16 (a square grid), got {n}")));
     }
     Ok(())
 }
@@ -105,13 +105,13 @@ impl SceneLayers {
 pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &LayerOptions) -> Result<SceneLayers> {
     camera.frame()?;
     if !lens.is_valid() {
-        return Err(Error::InvalidArgument(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
+        return Err(Error::invalid(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
     }
     // Ray casting has no near plane; a thousandth of the focus distance bounds the band's search.
-    let margin = options.guard_band.resolve(|| auto_margin(scene, camera, lens, 1e-3 * lens.focus_distance))?;
+    let margin = options.guard_band.resolve(|| Ok(auto_margin(scene, camera, lens, 1e-3 * lens.focus_distance)?))?;
     let frame = camera.overscan(margin).frame()?;
     if !(options.edge_depth_ratio >= 0.0) {
-        return Err(Error::InvalidArgument(format!("the edge depth ratio must not be negative, got {}", options.edge_depth_ratio)));
+        return Err(Error::invalid(format!("the edge depth ratio must not be negative, got {}", options.edge_depth_ratio)));
     }
     frame.check_size("multi-layer image", options.max_layers as u64)?;
     check_subsamples(options.subsamples)?;
@@ -239,7 +239,7 @@ fn cast_ray(
 /// the device kernel's oracle. Errors when the sizes do not divide or `max_layers` is 0.
 pub fn resolve_subsamples(fine: &LayeredImage, side: u32, max_layers: u32, tolerance: f32) -> Result<LayeredImage> {
     if side == 0 || !fine.width.is_multiple_of(side) || !fine.height.is_multiple_of(side) || side > 4 {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "a {}x{} sub-sample image does not divide into {side}x{side} grids (side 1 to 4)",
             fine.width, fine.height
         )));

@@ -144,7 +144,7 @@ fn tonemapped_mse(a: impl Iterator<Item = [f32; 3]>, b: impl Iterator<Item = [f3
 fn check_region(region: &Option<Vec<bool>>, frame: &CameraFrame) -> Result<()> {
     match region {
         Some(r) if r.len() != frame.width as usize * frame.height as usize => {
-            Err(Error::InvalidArgument(format!("the noise region has {} entries for a {}x{} image", r.len(), frame.width, frame.height)))
+            Err(Error::invalid(format!("the noise region has {} entries for a {}x{} image", r.len(), frame.width, frame.height)))
         }
         _ => Ok(()),
     }
@@ -173,13 +173,13 @@ pub fn reference_auto(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
     check_lens(lens)?;
     let o = options;
     if !(o.target_psnr_db.is_finite() && o.tolerance_db > 0.0 && o.tolerance_db.is_finite()) {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "auto reference: the target PSNR must be finite and the tolerance positive, got {} dB and {} dB",
             o.target_psnr_db, o.tolerance_db
         )));
     }
     if o.start_spp < 2 || o.max_spp < o.start_spp || o.max_spp > MAX_SPP {
-        return Err(Error::InvalidArgument(format!(
+        return Err(Error::invalid(format!(
             "auto reference: need 2 <= start_spp <= max_spp <= {MAX_SPP}, got {} and {}",
             o.start_spp, o.max_spp
         )));
@@ -234,13 +234,13 @@ fn check_lens(lens: &ThinLens) -> Result<()> {
     if lens.is_valid() {
         Ok(())
     } else {
-        Err(Error::InvalidArgument(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")))
+        Err(Error::invalid(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")))
     }
 }
 
 fn render_fixed(scene: &Scene, frame: &CameraFrame, radius: f32, focus: f32, options: &ReferenceOptions) -> Result<Reference> {
     if options.spp == 0 || options.spp > MAX_SPP {
-        return Err(Error::InvalidArgument(format!("a reference takes 1 to {MAX_SPP} samples per pixel, got {}", options.spp)));
+        return Err(Error::invalid(format!("a reference takes 1 to {MAX_SPP} samples per pixel, got {}", options.spp)));
     }
     check_region(&options.region, frame)?;
     frame.check_size("reference image", 1)?;

@@ -15,7 +15,9 @@
 use super::render::BackendArg;
 use anyhow::Context;
 use dof::backend::{Backend, BackendCounters, BufferId, CommandTime};
-use dof::frame::{ContextDesc, ContextReport, Extent, Frame, MethodInfo, MethodOptions, Reads, SplatOptions};
+use dof::frame::{
+    ContextDesc, ContextReport, CountBuffer, Extent, Frame, MethodInfo, MethodOptions, Reads, RgbBuffer, SlotBuffer, SplatOptions,
+};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::slot_words;
 use dof::methods::one_shot;
@@ -391,12 +393,13 @@ fn framed(
     let bufs: Vec<BufferId> = [(input.len() as u64, "bench/fragments"), (pixels, "bench/counts"), (3 * pixels, "bench/output")]
         .iter()
         .map(|&(w, l)| b.create_buffer(w, l))
-        .collect::<dof::Result<_>>()?;
+        .collect::<Result<_, dof::CoreError>>()?;
     b.write_buffer(bufs[0], 0, &input)?;
     b.write_buffer(bufs[1], 0, &image.counts)?;
     let extent = Extent::new(image.width, image.height, image.max_layers);
     let mut ctx = (method.create)(b, &ContextDesc::new(extent, options.clone()))?;
-    let frame = Frame::layers(image.width, image.height, image.max_layers, *lens, bufs[0], bufs[1], bufs[2]);
+    let frame =
+        Frame::layers(image.width, image.height, image.max_layers, *lens, SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
     for _ in 0..warmup {
         ctx.record(b, &frame)?;
         b.submit()?;
@@ -580,7 +583,7 @@ fn orbiting(
             return Err(e.into());
         }
     };
-    let frame = peel.frame(lens, dof::frame::FrameOutput::Buffer(output));
+    let frame = peel.frame(lens, dof::frame::FrameOutput::Buffer(RgbBuffer(output)));
     let run = (|| -> anyhow::Result<Measured> {
         // Warm-up frames from the first view, then one frame per turn.
         for _ in 0..warmup {

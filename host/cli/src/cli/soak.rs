@@ -7,7 +7,10 @@
 
 use super::render::BackendArg;
 use dof::backend::{Backend, BufferId, CpuBackend, VulkanBackend, VulkanOptions};
-use dof::frame::{BokehOptions, ContextDesc, DofContext, Extent, Frame, METHODS, Merge, MethodInfo, MethodOptions, Reads, SplatOptions};
+use dof::frame::{
+    BokehOptions, ContextDesc, CountBuffer, DofContext, Extent, Frame, METHODS, Merge, MethodInfo, MethodOptions, Reads, RgbBuffer,
+    SlotBuffer, SplatOptions,
+};
 use dof::methods::buffers::{SLOT_WORDS, read_rgb, slot_words};
 use dof::stress::{noise_with_sky, test_lens};
 use rand::{Rng, SeedableRng};
@@ -84,7 +87,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
         [(SLOT_WORDS as u64 * pixels * MAX_LAYERS as u64, "soak/fragments"), (pixels, "soak/counts"), (3 * pixels, "soak/output")]
             .iter()
             .map(|&(w, l)| b.create_buffer(w, l))
-            .collect::<dof::Result<_>>()?;
+            .collect::<Result<_, dof::CoreError>>()?;
     // One context per method of the registry, all for the same largest frame.
     let extent = Extent::new(max, max, MAX_LAYERS);
     let mut contexts: Vec<Box<dyn DofContext>> = Vec::new();
@@ -127,7 +130,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
         }
         let mut lens = test_lens(aperture);
         lens.focus_distance = 1.0 + (frame % 7) as f32 * 0.5;
-        let f = Frame::layers(w, h, layers, lens, bufs[0], bufs[1], bufs[2]);
+        let f = Frame::layers(w, h, layers, lens, SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
         contexts[method].record(b, &f)?;
         b.submit()?;
         per_method[method] += 1;

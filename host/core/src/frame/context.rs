@@ -101,7 +101,7 @@ pub trait DofContext {
     /// ```
     /// use dof_core::ThinLens;
     /// use dof_core::backend::{Backend, CpuBackend};
-    /// use dof_core::frame::{ContextDesc, Extent, Frame, MethodOptions, registry};
+    /// use dof_core::frame::{ContextDesc, CountBuffer, Extent, Frame, MethodOptions, RgbBuffer, SlotBuffer, registry};
     /// # fn main() -> dof_core::Result<()> {
     /// const N: u32 = 2;
     /// let mut b = CpuBackend::new();
@@ -122,7 +122,8 @@ pub trait DofContext {
     ///         radii.push(ctx.report_frame(&mut b, N - 1)?.figures["radius_px"]);
     ///     }
     ///     let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.002 * (frame + 1) as f32, focus_distance: 2.0, pixels_per_unit: 8000.0 };
-    ///     ctx.record(&mut b, &Frame::layers(32, 32, 1, lens, fragments, counts, out))?;
+    ///     let (slots, counts, rgb) = (SlotBuffer(fragments), CountBuffer(counts), RgbBuffer(out));
+    ///     ctx.record(&mut b, &Frame::layers(32, 32, 1, lens, slots, counts, rgb))?;
     ///     b.submit()?;
     /// }
     /// // Frames 0 to 3, each with its own (growing) aperture, hence window radius.

@@ -26,6 +26,26 @@ pub enum DepthEncoding {
     Reversed { near: f32, far: f32 },
 }
 
+/// The caller's buffers a frame reads and writes, each typed by what it holds so that handing one
+/// where another belongs does not compile. Each wraps the backend's [`BufferId`] (made by
+/// `create_buffer` or `import_buffer`): `SlotBuffer(id)` says what `id` holds, `.0` gives it back.
+macro_rules! caller_buffer {
+    ($($(#[$doc:meta])* $name:ident;)*) => {$(
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        pub struct $name(pub BufferId);
+    )*};
+}
+
+caller_buffer! {
+    /// Fragment slots: per pixel `layers` slots of [`SLOT_WORDS`] words (see [`FrameInput::Layers`]).
+    SlotBuffer;
+    /// Slots used per pixel, one word each.
+    CountBuffer;
+    /// An RGB image: 3 words (f32 red, green, blue) a pixel, row-major.
+    RgbBuffer;
+}
+
 /// What a frame reads.
 #[derive(Clone, Copy, Debug)]
 pub enum FrameInput {
@@ -35,7 +55,7 @@ pub enum FrameInput {
     /// the slots used per pixel (one word each). A pixel's slots composite front to back over
     /// black; an opaque slot has alpha 1 and its colour as it is. Alpha NaN or outside [0, 1] is
     /// clamped (NaN to 0) and counted in the method's report.
-    Layers { fragments: BufferId, counts: BufferId, layers: u32 },
+    Layers { fragments: SlotBuffer, counts: CountBuffer, layers: u32 },
     /// The caller's colour and depth images, one layer: colour RGBA32F, RGBA16F or B10G11R11, depth
     /// a depth attachment as it is (D32, D24 with stencil, X8_D24; read through its depth aspect,
     /// with a `Standard` or `Reversed` encoding) or R32F (any encoding). They are copied into the
@@ -48,7 +68,7 @@ pub enum FrameInput {
 #[derive(Clone, Copy, Debug)]
 pub enum FrameOutput {
     /// 3 words (f32 red, green, blue) a pixel, row-major; written whole.
-    Buffer(BufferId),
+    Buffer(RgbBuffer),
     /// The caller's RGBA32F or RGBA16F image (alpha 1), its top-left frame-sized part written, left
     /// in its `final_layout` (needs a context created with `image_io`).
     Image(ImageRef),
@@ -66,8 +86,34 @@ pub struct Frame {
 }
 
 impl Frame {
-    /// A frame of a multi-layer image in buffers, into a buffer.
-    pub fn layers(width: u32, height: u32, layers: u32, lens: ThinLens, fragments: BufferId, counts: BufferId, output: BufferId) -> Self {
+    /// A frame of a multi-layer image in buffers, into a buffer. Each buffer is typed by what it
+    /// holds, so swapping two does not compile:
+    ///
+    /// ```
+    /// # use dof_core::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};
+    /// # fn frame(b: &mut dyn dof_core::Backend, lens: dof_core::ThinLens) -> dof_core::Result<Frame> {
+    /// let slots = SlotBuffer(b.create_buffer(5 * 64, "slots")?);
+    /// let counts = CountBuffer(b.create_buffer(64, "counts")?);
+    /// let out = RgbBuffer(b.create_buffer(3 * 64, "out")?);
+    /// Ok(Frame::layers(8, 8, 1, lens, slots, counts, out))
+    /// # }
+    /// ```
+    ///
+    /// ```compile_fail,E0308
+    /// # use dof_core::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};
+    /// # fn frame(lens: dof_core::ThinLens, slots: SlotBuffer, counts: CountBuffer, out: RgbBuffer) -> Frame {
+    /// Frame::layers(8, 8, 1, lens, counts, slots, out) // the counts where the slots belong
+    /// # }
+    /// ```
+    pub fn layers(
+        width: u32,
+        height: u32,
+        layers: u32,
+        lens: ThinLens,
+        fragments: SlotBuffer,
+        counts: CountBuffer,
+        output: RgbBuffer,
+    ) -> Self {
         Frame { width, height, lens, input: FrameInput::Layers { fragments, counts, layers }, output: FrameOutput::Buffer(output) }
     }
 
@@ -112,7 +158,7 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
     let mut images = Vec::new();
     match f.input {
         FrameInput::Layers { fragments, counts, .. } => {
-            buffers.extend([("fragments", fragments, SLOT_WORDS as u64 * pixels * layers as u64), ("counts", counts, pixels)])
+            buffers.extend([("fragments", fragments.0, SLOT_WORDS as u64 * pixels * layers as u64), ("counts", counts.0, pixels)])
         }
         FrameInput::Images { color, depth, encoding } => {
             images.extend([("colour", color, COLOR_FORMATS.as_slice(), false), ("depth", depth, DEPTH_FORMATS.as_slice(), false)]);
@@ -133,7 +179,7 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
         }
     }
     match f.output {
-        FrameOutput::Buffer(out) => buffers.push(("output", out, 3 * pixels)),
+        FrameOutput::Buffer(out) => buffers.push(("output", out.0, 3 * pixels)),
         FrameOutput::Image(out) => images.push(("output", out, OUTPUT_FORMATS.as_slice(), true)),
     }
     for (what, id, words) in buffers {
@@ -310,7 +356,7 @@ fn io_params(f: &Frame, color: Option<ImageFormat>, depth: Option<ImageFormat>, 
 /// the conversion for images. Returns the fragments and counts buffers the method reads.
 pub(crate) fn record_input(backend: &mut dyn Backend, f: &Frame, io: Option<&ImageIo>) -> Result<(BufferId, BufferId)> {
     match (f.input, io) {
-        (FrameInput::Layers { fragments, counts, .. }, _) => Ok((fragments, counts)),
+        (FrameInput::Layers { fragments, counts, .. }, _) => Ok((fragments.0, counts.0)),
         (FrameInput::Images { color, depth, encoding }, Some(io)) => {
             // Copies through the context's buffers: depth formats are rarely storage images, and
             // the kernels read buffers on both backends (docs/integration.md has the cost).
@@ -372,7 +418,7 @@ pub(crate) fn clamped_summary(clamped: u32) -> String {
 /// one-layer input's (read only by the stages before).
 pub(crate) fn output_buffer(f: &Frame, io: Option<&ImageIo>) -> Result<BufferId> {
     match (f.output, io) {
-        (FrameOutput::Buffer(out), _) => Ok(out),
+        (FrameOutput::Buffer(out), _) => Ok(out.0),
         (FrameOutput::Image(_), Some(io)) => Ok(io.fragments),
         (FrameOutput::Image(_), None) => Err(Error::InvalidArgument("image outputs need a context created with `image_io`".into())),
     }

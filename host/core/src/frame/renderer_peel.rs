@@ -27,7 +27,7 @@
 //!   draws directly instead gets every fragment discarded by the bound.
 
 use super::LayerOptions;
-use super::io::{DepthEncoding, Frame, FrameInput, FrameOutput, Owned, context_pixels, ready};
+use super::io::{CountBuffer, DepthEncoding, Frame, FrameInput, FrameOutput, Owned, SlotBuffer, context_pixels, ready};
 use super::peel::{KERNELS, PeelReport, PeelSlots};
 use crate::backend::{Backend, BufferId, ImageFormat, ImageRef, RunKernel, format_names};
 use crate::error::{Error, Result};
@@ -184,7 +184,7 @@ impl RendererPeel {
     /// The slots the last finished frame wrote, as a frame of the frame API.
     pub fn frame(&self, lens: ThinLens, output: FrameOutput) -> Frame {
         let s = &self.slots;
-        let input = FrameInput::Layers { fragments: s.fragments, counts: s.counts, layers: s.layers };
+        let input = FrameInput::Layers { fragments: SlotBuffer(s.fragments), counts: CountBuffer(s.counts), layers: s.layers };
         Frame { width: s.width, height: s.height, lens, input, output }
     }
 

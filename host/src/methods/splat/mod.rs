@@ -10,4 +10,6 @@
 mod run;
 
 pub use crate::frame::splat::{Merge, SplatOptions, SplatPlanReport, SplatReport};
-pub use run::{Intermediates, SplatOutput, splat, splat_with_stages};
+#[cfg(feature = "testing")]
+pub use run::{Intermediates, splat_with_stages};
+pub use run::{SplatOutput, splat};

@@ -7,15 +7,16 @@
 //! wanted, so its result is always whole.
 
 use crate::backend::{Backend, CommandTime, with_buffers};
-use crate::error::{Error, Result};
-use crate::frame::Frame;
 use crate::frame::splat::{MAX_LIST_ENTRIES, SplatContext, SplatContextDesc};
 use crate::frame::splat::{SplatOptions, SplatReport};
+use crate::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};
 use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{read_rgb, slot_words};
+use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 
-/// Every stage's buffers, read back by [`splat_with_stages`].
+/// Every stage's buffers, read back by [`splat_with_stages`] (feature `testing`).
+#[cfg(feature = "testing")]
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Intermediates {
     /// Per cell of the frame (a pixel, or a merged block): its fragment count, and its offset in
@@ -34,6 +35,8 @@ pub struct SplatOutput {
     pub image: RgbImage,
     pub report: SplatReport,
     pub stages: Vec<CommandTime>,
+    /// Every stage's buffers, where [`splat_with_stages`] ran it.
+    #[cfg(feature = "testing")]
     pub intermediates: Option<Intermediates>,
 }
 
@@ -46,7 +49,8 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
 }
 
 /// [`splat`], keeping every stage's buffers apart (two more list-sized buffers) and reading them
-/// back as the output's `intermediates`: for comparing backends stage by stage.
+/// back as the output's `intermediates`: for comparing backends stage by stage (feature `testing`).
+#[cfg(feature = "testing")]
 pub fn splat_with_stages(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions) -> Result<SplatOutput> {
     run(backend, image, lens, options, true)
 }
@@ -61,9 +65,8 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
         return Err(Error::InvalidArgument(format!("an empty {w}x{h} image with {layers} layers")));
     }
     let mut desc = SplatContextDesc::new(w, h, layers, options.clone());
-    desc.distinct_stage_buffers = keep_stages;
     // The context checks the bounds (and refuses) before the input is uploaded.
-    let first = SplatContext::new(backend, &desc)?;
+    let first = context(backend, &desc, keep_stages)?;
     let pixels = w as u64 * h as u64;
     let input = slot_words(image);
     let sizes = [(input.len() as u64, "splat/input"), (pixels, "splat/input-counts"), (3 * pixels, "splat/out")];
@@ -71,12 +74,12 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
     let result = with_buffers(backend, &sizes, |backend, io| {
         backend.write_buffer(io[0], 0, &input)?;
         backend.write_buffer(io[1], 0, &image.counts)?;
-        let frame = Frame::layers(w, h, layers, *lens, io[0], io[1], io[2]);
+        let frame = Frame::layers(w, h, layers, *lens, SlotBuffer(io[0]), CountBuffer(io[1]), RgbBuffer(io[2]));
         let mut attempt = 0;
         loop {
             let mut ctx = match first.take() {
                 Some(ctx) => ctx,
-                None => SplatContext::new(backend, &desc)?,
+                None => context(backend, &desc, keep_stages)?,
             };
             let ran = (|| {
                 ctx.record(backend, &frame)?;
@@ -109,10 +112,17 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
                 continue;
             }
             let done = (|| {
-                report.input_fragments = image.counts.iter().map(|&n| n.min(layers) as u64).sum();
+                report.input_fragments = Some(image.counts.iter().map(|&n| n.min(layers) as u64).sum());
                 let out = read_rgb(backend, io[2], w, h)?;
+                #[cfg(feature = "testing")]
                 let inter = if keep_stages { Some(intermediates(backend, &ctx, &report)?) } else { None };
-                Ok(SplatOutput { image: out, report, stages, intermediates: inter })
+                Ok(SplatOutput {
+                    image: out,
+                    report,
+                    stages,
+                    #[cfg(feature = "testing")]
+                    intermediates: inter,
+                })
             })();
             ctx.destroy(backend);
             return done;
@@ -125,8 +135,20 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
     result
 }
 
+/// A splatting context; one that keeps each stage's buffers apart where `keep_stages` (only with
+/// the feature `testing`, which `splat_with_stages` needs).
+fn context(backend: &mut dyn Backend, desc: &SplatContextDesc, keep_stages: bool) -> Result<SplatContext> {
+    #[cfg(feature = "testing")]
+    if keep_stages {
+        return dof_core::testing::splat_context_with_distinct_stages(backend, desc);
+    }
+    debug_assert!(!keep_stages, "keeping every stage needs the feature `testing`");
+    SplatContext::new(backend, desc)
+}
+
+#[cfg(feature = "testing")]
 fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatReport) -> Result<Intermediates> {
-    let s = ctx.stage_buffers();
+    let s = dof_core::testing::stage_buffers(ctx);
     let mut whole = |id| {
         let words = backend.buffer_words(id)?;
         backend.read_buffer(id, 0, words)

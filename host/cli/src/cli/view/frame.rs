@@ -13,7 +13,7 @@ use super::ui::{Panel, Stats};
 use anyhow::{Context, Result, anyhow, bail};
 use dof::backend::vulkan::ash::vk::{self, AccessFlags as Access, ImageLayout as Layout};
 use dof::backend::{Backend, BufferId, ImageFormat, ImageRef, RawDevice, RawOptions, RunKernel, VulkanBackend};
-use dof::frame::{Frame, FrameInput, FrameOutput};
+use dof::frame::{CountBuffer, Frame, FrameInput, FrameOutput, RgbBuffer, SlotBuffer};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::buffers::SLOT_WORDS;
 use dof::methods::buffers::groups_for;
@@ -747,8 +747,8 @@ impl App<'_> {
             width: fw,
             height: fh,
             lens: shape.lens,
-            input: FrameInput::Layers { fragments, counts, layers: slots },
-            output: FrameOutput::Buffer(display.rgb),
+            input: FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: slots },
+            output: FrameOutput::Buffer(RgbBuffer(display.rgb)),
         };
         // The display pass: the documented tone map (the one PNG previews use, from the same
         // source) at the panel's exposure, or the raw linear values clamped, sRGB-encoded.

@@ -53,10 +53,6 @@ pub struct SplatContextDesc {
     pub list_entries: Option<u64>,
     /// Longest list one tile may have (default [`DEFAULT_MAX_LIST`]).
     pub max_list: Option<u32>,
-    /// Keep each stage's buffers apart instead of reusing one stage's for a later one (for tests
-    /// that compare every stage; costs two more list-sized buffers).
-    #[doc(hidden)]
-    pub distinct_stage_buffers: bool,
     /// Hold the buffers that image inputs and outputs go through (10 words a pixel).
     pub image_io: bool,
     /// Frames in flight (default 1): copies kept of the statistics and lists' lengths reports read.
@@ -72,7 +68,6 @@ impl SplatContextDesc {
             options,
             list_entries: None,
             max_list: None,
-            distinct_stage_buffers: false,
             image_io: false,
             frames_in_flight: 1,
         }
@@ -84,8 +79,8 @@ struct Buffers {
     stats: BufferId,
     sharp: BufferId,
     /// Per cell of the frame (a pixel, or a merged 2x2 or 4x4 block): its fragment count, then its
-    /// widest radius, which its offset in its tile replaces; then the unsorted list keys (see
-    /// `distinct_stage_buffers`).
+    /// widest radius, which its offset in its tile replaces; then the unsorted list keys (unless the
+    /// context keeps every stage apart: `SplatContext::distinct_stages`).
     cells: BufferId,
     tile_count: BufferId,
     tile_base: BufferId,
@@ -120,6 +115,9 @@ pub struct SplatContext {
     in_flight: InFlight<Frame>,
     /// The registry name it records as (`multilayer`, or `tiled` when handed front layers).
     name: &'static str,
+    /// Each stage's buffers kept apart instead of one stage's reused for a later one (two more
+    /// list-sized buffers): only for tests that compare every stage (`crate::testing`).
+    distinct_stages: bool,
 }
 
 /// Checks the options against what the kernels support; returns the configured radius cap.
@@ -156,6 +154,11 @@ fn cells(width: u32, height: u32, layers: u32, steps: u32) -> (u32, u32, u32, u3
 impl SplatContext {
     /// Creates the context: checks the options and bounds, and allocates every buffer.
     pub fn new(backend: &mut dyn Backend, desc: &SplatContextDesc) -> Result<Self> {
+        Self::build(backend, desc, false)
+    }
+
+    /// [`Self::new`], keeping each stage's buffers apart where `distinct_stages` says so.
+    pub(crate) fn build(backend: &mut dyn Backend, desc: &SplatContextDesc, distinct_stages: bool) -> Result<Self> {
         let radius_cap = check_options(&desc.options)?;
         let (w, h, layers) = (desc.max_width, desc.max_height, desc.max_layers);
         if w == 0 || h == 0 || layers == 0 {
@@ -188,7 +191,7 @@ impl SplatContext {
         let sort = SegmentedSort::in_flight(backend, tiles as u32, list_entries as u32, max_list, desc.frames_in_flight)?;
         // The sorted keys are written and never read by a later stage: where the sort has a key
         // scratch for its long lists, they share it (see `SegmentedSort::scratch_keys`).
-        let sorted_keys_in_scratch = sort.scratch_keys().filter(|_| !desc.distinct_stage_buffers);
+        let sorted_keys_in_scratch = sort.scratch_keys().filter(|_| !distinct_stages);
         let mut owned = Owned::default();
         let built = (|| {
             // Fragments are stored once, in the dense array (worst case: every slot blurred and
@@ -197,7 +200,7 @@ impl SplatContext {
             let cell_words = 2 * fx as u64 * fy as u64;
             // Binning runs after the place pass, and nothing reads the cells' counts and offsets
             // again: the unsorted list keys go there (the buffer grows to the pool if need be).
-            let keys_in_cells = !desc.distinct_stage_buffers;
+            let keys_in_cells = !distinct_stages;
             let (cells_buf, cells_label) = match keys_in_cells {
                 true => (cell_words.max(list_entries), "splat/cell-counts, cell-offsets, keys"),
                 false => (cell_words, "splat/cell-counts, cell-offsets"),
@@ -260,6 +263,7 @@ impl SplatContext {
             reports,
             in_flight,
             name: "multilayer",
+            distinct_stages,
         };
         super::io::ready(backend, ctx, &kernels, &[], Self::destroy)
     }
@@ -342,7 +346,7 @@ impl SplatContext {
     pub fn resize(&mut self, backend: &mut dyn Backend, max_width: u32, max_height: u32, max_layers: u32) -> Result<()> {
         self.owned.check(backend)?;
         let desc = self.desc.at(Extent::new(max_width, max_height, max_layers));
-        let fresh = SplatContext::new(backend, &desc)?.named(self.name);
+        let fresh = SplatContext::build(backend, &desc, self.distinct_stages)?.named(self.name);
         let old = std::mem::replace(self, fresh);
         old.destroy(backend);
         Ok(())
@@ -420,8 +424,8 @@ impl SplatContext {
     }
 
     /// What the last recorded frame did and left out. Reads the context's statistics back, so call
-    /// it only once that frame's work has completed (standalone: after `submit`). The input-side
-    /// counts that need the host image (`input_fragments`) are left at zero.
+    /// it only once that frame's work has completed (standalone: after `submit`). The input's
+    /// fragment count, which the device does not count, is left `None` (`input_fragments`).
     pub fn report(&self, backend: &mut dyn Backend) -> Result<SplatReport> {
         self.report_of(backend, 0)
     }
@@ -455,7 +459,7 @@ impl SplatContext {
         };
         Ok(SplatReport {
             pixels,
-            input_fragments: 0,
+            input_fragments: None,
             full_layer_slots: pixels * f.layer_count() as u64,
             dropped: c(stats::DROPPED),
             clamped: c(stats::CLAMPED),
@@ -487,8 +491,8 @@ impl SplatContext {
     }
 
     /// The context's buffers of each stage, for tests that compare backends stage by stage.
-    #[doc(hidden)]
-    pub fn stage_buffers(&self) -> StageBuffers {
+    #[cfg(feature = "testing")]
+    pub(crate) fn stage_buffers(&self) -> StageBuffers {
         let b = &self.b;
         StageBuffers {
             cells: b.cells,
@@ -503,8 +507,8 @@ impl SplatContext {
     }
 }
 
-/// See [`SplatContext::stage_buffers`].
-#[doc(hidden)]
+/// A splatting context's buffers of each stage (`crate::testing::stage_buffers`).
+#[cfg(feature = "testing")]
 pub struct StageBuffers {
     pub cells: BufferId,
     pub tile_count: BufferId,
@@ -572,7 +576,7 @@ impl DofContext for SplatContext {
         let wanted = (report.list_top + report.overflow_entries).max(2 * entries).min(MAX_LIST_ENTRIES);
         let desc =
             SplatContextDesc { list_entries: Some(wanted), max_list: Some(max_list.max(report.longest_list_wanted)), ..self.desc.clone() };
-        let grown = SplatContext::new(backend, &desc)?.named(self.name);
+        let grown = SplatContext::build(backend, &desc, self.distinct_stages)?.named(self.name);
         std::mem::replace(self, grown).destroy(backend);
         Ok(true)
     }

@@ -8,8 +8,11 @@ use crate::ops::sort::SortStats;
 pub struct SplatReport {
     pub plan: Option<SplatPlanReport>,
     pub pixels: u64,
-    /// Fragments in the input, and slots a full multi-layer image of this many layers would hold.
-    pub input_fragments: u64,
+    /// Fragments in the input (slots used, up to the frame's layers), where the host knows them:
+    /// the one-shot function counts its image's; a context reads only the device, which does not
+    /// count them, and leaves `None`. Then the slots a full multi-layer image of this many layers
+    /// would hold.
+    pub input_fragments: Option<u64>,
     pub full_layer_slots: u64,
     pub dropped: u32,
     pub clamped: u32,
@@ -82,15 +85,18 @@ impl SplatReport {
                 p.tiles_x, p.tiles_y, p.tile, p.rings, p.max_coc_radius, p.radius_cap, p.merge_steps
             );
         }
+        let layers = self.plan.as_ref().map_or(0, |p| p.layers);
+        let input = match self.input_fragments {
+            Some(n) => format!(
+                "{n} in ({:.2}/px; a full {layers}-layer image holds {})",
+                n as f64 / self.pixels.max(1) as f64,
+                self.full_layer_slots
+            ),
+            None => format!("input count not read back (a full {layers}-layer image holds {})", self.full_layer_slots),
+        };
         s += &format!(
-            "fragments: {} in ({:.2}/px; a full {}-layer image holds {}), {} dropped (non-finite or bad depth), {} clamped (negative, subnormal or above 2^100), {} empty pixels given a black background\n",
-            self.input_fragments,
-            self.input_fragments as f64 / self.pixels.max(1) as f64,
-            self.plan.as_ref().map_or(0, |p| p.layers),
-            self.full_layer_slots,
-            self.dropped,
-            self.clamped,
-            self.sky
+            "fragments: {input}, {} dropped (non-finite or bad depth), {} clamped (negative, subnormal or above 2^100), {} empty pixels given a black background\n",
+            self.dropped, self.clamped, self.sky
         );
         if self.alpha_clamped > 0 || self.backed > 0 {
             s += &format!(

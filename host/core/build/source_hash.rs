@@ -1,6 +1,7 @@
-//! The hash of the kernel crate's sources. The build script `include!`s this file to stamp the
-//! SPIR-V it builds; the library exposes it so a test can recompute the hash from the files on disk
-//! and prove the embedded module was built from them.
+//! The hash of the kernel crate's sources. The build script includes this file to stamp the SPIR-V
+//! it builds (and to refuse prebuilt SPIR-V older than the kernels on disk); the test suite
+//! includes it too, to recompute the hash from the files on disk and prove the embedded modules
+//! were built from them. Not part of the library: a renderer has no use for it.
 
 use sha2::{Digest, Sha256};
 use std::path::{Path, PathBuf};

@@ -63,12 +63,13 @@ pub const SHARED_WORDS: usize = 19 * T;
 
 /// Pixels one invocation walks at a time. On the CPU a workgroup's invocations run one after
 /// another, and a pixel's walk is a chain (each covering entry waits for the coverage the last one
-/// left): walking four pixels at once overlaps their chains. On the GPU each invocation walks its
-/// own. Each pixel's arithmetic is the same either way, so the images are too.
+/// left): walking eight pixels at once overlaps their chains (eight took 4% less CPU time than four
+/// on `railing` at 1080p). On the GPU each invocation walks its own. Each pixel's arithmetic is
+/// the same either way, so the images are too.
 #[cfg(target_arch = "spirv")]
 const LANES: u32 = 1;
 #[cfg(not(target_arch = "spirv"))]
-const LANES: u32 = 4;
+const LANES: u32 = 8;
 const L: usize = LANES as usize;
 const _: () = assert!(THREADS % LANES == 0);
 

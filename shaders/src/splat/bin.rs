@@ -271,7 +271,7 @@ pub fn bin_pass<G: Group, M: Mem>(
             let mut i = 0;
             while i < CANDIDATES_PER_THREAD {
                 let j = start + lid * CANDIDATES_PER_THREAD + i;
-                if j < total && fragment_reaches(p, &Fragment::load_disc(&dense, candidate(sh, nb, nb_base, j)), tx, ty) {
+                if j < total && fragment_reaches(p, &Fragment::load(&dense, candidate(sh, nb, nb_base, j)), tx, ty) {
                     kept += 1;
                 }
                 i += 1;
@@ -324,7 +324,7 @@ pub fn bin_pass<G: Group, M: Mem>(
             let mut i = 0;
             while i < CANDIDATES_PER_THREAD {
                 let j = start + lid * CANDIDATES_PER_THREAD + i;
-                if j < total && fragment_reaches(p, &Fragment::load_disc(&dense, candidate(sh, nb, nb_base, j)), tx, ty) {
+                if j < total && fragment_reaches(p, &Fragment::load(&dense, candidate(sh, nb, nb_base, j)), tx, ty) {
                     mask |= 1 << i;
                     kept += 1;
                 }

@@ -199,16 +199,6 @@ impl Fragment {
         Self::unpack([m.load(b), m.load(b + 1), m.load(b + 2), m.load(b + 3)])
     }
 
-    /// The fields of fragment `index` its disc depends on ([`Fragment::centre`],
-    /// [`Fragment::radius`]): depth, merge level and position, the same as [`Fragment::load`]'s;
-    /// its colour and alpha are not decoded (black, 0). What binning tests candidates with.
-    #[inline]
-    pub fn load_disc<M: Mem>(m: &M, index: u32) -> Self {
-        let b = WORDS * index;
-        let w = [m.load(b), 0, m.load(b + 2), m.load(b + 3)];
-        Fragment { color: [0.0; 3], alpha: 0.0, ..Self::unpack(w) }
-    }
-
     #[inline]
     pub fn store<M: Mem>(&self, m: &mut M, index: u32) {
         let w = self.pack();

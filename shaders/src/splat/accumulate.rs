@@ -61,6 +61,18 @@ const CH_O: usize = 16 * T;
 const ACTIVE: usize = 17 * T;
 pub const SHARED_WORDS: usize = 19 * T;
 
+/// Pixels one invocation walks at a time. On the CPU a workgroup's invocations run one after
+/// another, and a pixel's walk is a chain (each covering entry waits for the coverage the last one
+/// left): walking eight pixels at once overlaps their chains (eight took 4% less CPU time than four
+/// on `railing` at 1080p). On the GPU each invocation walks its own. Each pixel's arithmetic is
+/// the same either way, so the images are too.
+#[cfg(target_arch = "spirv")]
+const LANES: u32 = 1;
+#[cfg(not(target_arch = "spirv"))]
+const LANES: u32 = 8;
+const L: usize = LANES as usize;
+const _: () = assert!(THREADS % LANES == 0);
+
 #[inline]
 fn get<const N: usize>(sh: &[u32; N], field: usize, i: u32) -> f32 {
     f32::from_bits(sh[field + i as usize])
@@ -88,6 +100,18 @@ fn blend<const N: usize>(sh: &mut [u32; N], i: u32, s: f32, a: f32, c: [f32; 3])
     set(sh, ACC_G, i, get(sh, ACC_G, i) + s * c[1]);
     set(sh, ACC_B, i, get(sh, ACC_B, i) + s * c[2]);
     set(sh, USED, i, get(sh, USED, i) + a);
+}
+
+/// The first of the staged chunk's `n` entries (sorted front to back) at or behind depth `z`, `n`
+/// if none (and for a NaN `z`): where a pixel whose sharp front lies at `z` stops.
+#[inline]
+fn first_behind<const N: usize>(sh: &[u32; N], n: u32, z: f32) -> u32 {
+    let (mut lo, mut hi) = (0, n);
+    while lo < hi {
+        let mid = (lo + hi) / 2;
+        if get(sh, CH_Z, mid) >= z { hi = mid } else { lo = mid + 1 }
+    }
+    lo
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -173,39 +197,83 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
         });
         let n = if len - start < THREADS { len - start } else { THREADS };
         g.each(|lid| {
-            let (ok, x, y) = pixel(lid);
-            // The pixel's state in registers for the walk: workgroup memory indexed by the
+            // Invocation `lid` walks pixels `lid .. lid + LANES` (each alone on the GPU).
+            if lid % LANES != 0 {
+                return;
+            }
+            // The pixels' state in registers for the walk: workgroup memory indexed by the
             // invocation is a gather or scatter per access on a SIMD implementation (lavapipe).
-            let sharp_z = get(sh, SHARP_Z, lid);
-            let mut used = get(sh, USED, lid);
-            let mut acc = [get(sh, ACC_R, lid), get(sh, ACC_G, lid), get(sh, ACC_B, lid)];
-            let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
-            let mut live = ok && used < 1.0 - SATURATED;
+            let mut ok = [false; L];
+            let mut pos = [[0.0f32; 2]; L];
+            let mut used = [0.0f32; L];
+            let mut acc = [[0.0f32; 3]; L];
+            let mut live = [false; L];
+            // Where each pixel's walk ends (its sharp front lies in front of the rest of the
+            // list), and the entries it visits, as a walk over every entry in order counts them:
+            // up to and including the one that saturates it or lies at or behind its sharp front.
+            let mut end = [0u32; L];
+            let mut visited = [0u32; L];
+            let mut stop = 0;
+            let mut walking = 0;
+            let mut l = 0;
+            while l < L {
+                let q = lid + l as u32;
+                let (o, x, y) = pixel(q);
+                ok[l] = o;
+                pos[l] = [x as f32 + 0.5, y as f32 + 0.5];
+                used[l] = get(sh, USED, q);
+                acc[l] = [get(sh, ACC_R, q), get(sh, ACC_G, q), get(sh, ACC_B, q)];
+                live[l] = o && used[l] < 1.0 - SATURATED;
+                if live[l] {
+                    end[l] = first_behind(sh, n, get(sh, SHARP_Z, q));
+                    stop = if end[l] > stop { end[l] } else { stop };
+                    walking += 1;
+                }
+                l += 1;
+            }
             let mut k = 0;
-            while live && k < n {
-                let (dx, dy) = (px - get(sh, CH_X, k), py - get(sh, CH_Y, k));
-                let s = get(sh, CH_S, k);
-                let d2 = dx * dx + dy * dy;
-                if get(sh, CH_Z, k) >= sharp_z {
-                    // The pixel's own sharp front lies in front of the rest of the list.
-                    live = false;
-                } else if d2 < s * s {
-                    let w = get(sh, CH_A, k) * shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask);
-                    let (f, a) = take(w, get(sh, CH_O, k), 1.0 - used);
-                    acc = [acc[0] + f * get(sh, CH_R, k), acc[1] + f * get(sh, CH_G, k), acc[2] + f * get(sh, CH_B, k)];
-                    used += a;
-                    live = used < 1.0 - SATURATED;
+            while walking > 0 && k < stop {
+                let (cx, cy, s) = (get(sh, CH_X, k), get(sh, CH_Y, k), get(sh, CH_S, k));
+                let mut l = 0;
+                while l < L {
+                    if live[l] && k < end[l] {
+                        let (dx, dy) = (pos[l][0] - cx, pos[l][1] - cy);
+                        let d2 = dx * dx + dy * dy;
+                        if d2 < s * s {
+                            let w =
+                                get(sh, CH_A, k) * shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask);
+                            let (f, a) = take(w, get(sh, CH_O, k), 1.0 - used[l]);
+                            let c = &mut acc[l];
+                            *c = [c[0] + f * get(sh, CH_R, k), c[1] + f * get(sh, CH_G, k), c[2] + f * get(sh, CH_B, k)];
+                            used[l] += a;
+                            if !(used[l] < 1.0 - SATURATED) {
+                                live[l] = false;
+                                visited[l] = k + 1;
+                                walking -= 1;
+                            }
+                        }
+                    }
+                    l += 1;
                 }
                 k += 1;
             }
-            set(sh, ACC_R, lid, acc[0]);
-            set(sh, ACC_G, lid, acc[1]);
-            set(sh, ACC_B, lid, acc[2]);
-            set(sh, USED, lid, used);
-            if ok {
-                sh[VISITED + lid as usize] += k;
+            let mut l = 0;
+            while l < L {
+                let q = lid + l as u32;
+                if live[l] {
+                    visited[l] = if end[l] < n { end[l] + 1 } else { n };
+                    live[l] = end[l] == n;
+                }
+                set(sh, ACC_R, q, acc[l][0]);
+                set(sh, ACC_G, q, acc[l][1]);
+                set(sh, ACC_B, q, acc[l][2]);
+                set(sh, USED, q, used[l]);
+                if ok[l] {
+                    sh[VISITED + q as usize] += visited[l];
+                }
+                sh[ACTIVE + q as usize] = live[l] as u32;
+                l += 1;
             }
-            sh[ACTIVE + lid as usize] = live as u32;
         });
         let s = inclusive_scan(g, sh, ACTIVE, max);
         let mut any = 0;

@@ -12,7 +12,9 @@
 //! alpha compositing (`T ← T·(1 − α)`), the fragments of one blurred surface do not attenuate each
 //! other (a blurred wall is not a stack of translucent sheets), and the visible and hidden layers of
 //! a background together fill exactly what the foreground leaves. On the built-in scenes this is
-//! several dB closer to the exact reference than compositing (README, "Blending").
+//! several dB closer to the exact reference than compositing (README, "Blending"). Different
+//! translucent surfaces, told apart by depth and by their summed disc shares, composite instead
+//! ([`super::surfaces`]): a pane behind another is seen through it.
 //!
 //! A pixel's own in-focus front (see `pack`: the "over" of its leading in-focus slots, opaque or over
 //! black) is not in any list: it takes all remaining coverage at its depth, which ends the pixel's
@@ -26,6 +28,7 @@
 
 use super::fragment::{Fragment, shaped_weight, weight_sum};
 use super::pack::load_sharp;
+use super::surfaces::{self, Surfaces};
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Mem};
 use crate::lens::is_nan;
@@ -59,7 +62,9 @@ const CH_M: usize = 15 * T;
 const CH_O: usize = 16 * T;
 /// Two halves for the "any pixel still active" scan.
 const ACTIVE: usize = 17 * T;
-pub const SHARED_WORDS: usize = 19 * T;
+/// The pixel's [`Surfaces`] between chunks.
+const SURFACES: usize = 19 * T;
+pub const SHARED_WORDS: usize = SURFACES + surfaces::WORDS * T;
 
 #[inline]
 fn get<const N: usize>(sh: &[u32; N], field: usize, i: u32) -> f32 {
@@ -147,6 +152,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
         // at +inf still blends.
         let z = if ok { load_sharp(&sharp, y * p.width + x).1 } else { f32::NAN };
         set(sh, SHARP_Z, lid, z);
+        Surfaces::START.store(sh, SURFACES, T, lid);
     });
     let mut start = 0;
     let mut active = 1;
@@ -179,6 +185,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
             let sharp_z = get(sh, SHARP_Z, lid);
             let mut used = get(sh, USED, lid);
             let mut acc = [get(sh, ACC_R, lid), get(sh, ACC_G, lid), get(sh, ACC_B, lid)];
+            let mut surfaces = Surfaces::load(sh, SURFACES, T, lid);
             let (px, py) = (x as f32 + 0.5, y as f32 + 0.5);
             let mut live = ok && used < 1.0 - SATURATED;
             let mut k = 0;
@@ -191,7 +198,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
                     live = false;
                 } else if d2 < s * s {
                     let w = get(sh, CH_A, k) * shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask);
-                    let (f, a) = take(w, get(sh, CH_O, k), 1.0 - used);
+                    let (f, a) = surfaces.take(w, get(sh, CH_O, k), get(sh, CH_Z, k), used);
                     acc = [acc[0] + f * get(sh, CH_R, k), acc[1] + f * get(sh, CH_G, k), acc[2] + f * get(sh, CH_B, k)];
                     used += a;
                     live = used < 1.0 - SATURATED;
@@ -202,6 +209,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
             set(sh, ACC_G, lid, acc[1]);
             set(sh, ACC_B, lid, acc[2]);
             set(sh, USED, lid, used);
+            surfaces.store(sh, SURFACES, T, lid);
             if ok {
                 sh[VISITED + lid as usize] += k;
             }
@@ -236,7 +244,7 @@ pub fn accumulate_pass<G: Group, M: Mem>(
 
 kernel!(
     /// Front-to-back accumulation of the sorted tile lists (or copy-through) into `out` (3 words a pixel).
-    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 19 * 256]
+    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 23 * 256]
         { sharp, dense, values, segments, copy, out, st, mask }
         reads { sharp, dense, values, segments, copy, mask } => accumulate_pass
 );

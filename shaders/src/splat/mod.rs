@@ -30,6 +30,7 @@ pub mod fragment;
 pub mod merge;
 pub mod pack;
 pub mod plan;
+pub mod surfaces;
 
 use crate::aperture::Aperture;
 use crate::lens::ThinLens;

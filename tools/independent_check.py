@@ -5,7 +5,7 @@ pixel filter; translucent surfaces as a `mask` BSDF of opacity alpha over an emi
 the radiance, which is glTF's "over"; see host/src/scene/mitsuba_export.rs).
 
     python3 tools/independent_check.py [--scenes fence,edges] [--width 320 --height 240]
-        [--spp 4096] [--reference-spp 1024] [--backend cpu] [--out out/independent]
+        [--spp 4096] [--reference-spp 1024] [--backend cpu] [--out out/independent] [--mitsuba-cache DIR]
 
 Per scene: Mitsuba renders two independent halves (different seeds), whose PSNR against each other
 gives the noise of their pooled mean (+6.02 dB for equal halves, as host/src/scene/reference.rs);
@@ -56,6 +56,8 @@ def parse():
     p.add_argument("--backend", default="cpu", choices=["cpu", "vulkan"], help="backend of the project's methods")
     p.add_argument("--variant", default="auto", help="Mitsuba variant (default: llvm_ad_rgb if it runs, else scalar_rgb)")
     p.add_argument("--out", default="out/independent", type=Path)
+    p.add_argument("--mitsuba-cache", type=Path,
+                   help="reuse Mitsuba's halves from DIR/SCENE-WxH-SPPspp when there (they depend on the scene, size and spp only), else render and store them there")
     p.add_argument("--dof", help="a built dof binary (default: build the dev profile, as `cargo run --bin dof` does)")
     return p.parse_args()
 
@@ -64,9 +66,12 @@ def mitsuba_halves(mi, xml, spp, folder):
     """Two independent halves and their pooled mean, as EXRs; returns (paths, samples, seconds)."""
     start = time.perf_counter()
     n = [spp - spp // 2, spp // 2]
+    paths = [folder / "mitsuba-a.exr", folder / "mitsuba-b.exr", folder / "mitsuba.exr"]
+    if all(path.exists() for path in paths):
+        return paths, n, 0.0
     halves = [render_mitsuba(mi, xml, k, seed) for k, seed in zip(n, (1, 2))]
     pooled = (halves[0] * n[0] + halves[1] * n[1]) / (n[0] + n[1])
-    paths = [folder / "mitsuba-a.exr", folder / "mitsuba-b.exr", folder / "mitsuba.exr"]
+    folder.mkdir(parents=True, exist_ok=True)
     for image, path in zip(halves + [pooled], paths):
         write_exr(mi, image, path)
     return paths, n, time.perf_counter() - start
@@ -94,7 +99,8 @@ def check_scene(dof, mi, args, name, meta, xml):
     folder.mkdir(parents=True, exist_ok=True)
     size = ["--width", args.width, "--height", args.height]
     print(f"{name}: Mitsuba, {args.spp} spp in two halves...", file=sys.stderr)
-    (half_a, half_b, mitsuba), n, mitsuba_s = mitsuba_halves(mi, xml, args.spp, folder)
+    cache = args.mitsuba_cache / f"{name}-{args.width}x{args.height}-{args.spp}spp" if args.mitsuba_cache else folder
+    (half_a, half_b, mitsuba), n, mitsuba_s = mitsuba_halves(mi, xml, args.spp, cache)
     result = {"scene": name, "width": args.width, "height": args.height, "mitsuba_spp": args.spp,
               "mitsuba_seconds": round(mitsuba_s, 1), "notes": meta["notes"], "rows": []}
     print(f"{name}: project reference...", file=sys.stderr)

@@ -361,7 +361,8 @@ pub fn cases() -> Vec<Case> {
             name: "translucent-stack-blurred",
             expectation: "100 stacked panes of alpha 0.01, one colour, over the same colour, out of focus: that colour within \
                           4e-2 (splatting stores alpha in 10 bits, 0.01 as 0.0098, so the panes' light fills less coverage than it \
-                          should and the surface behind adds its share too: measured 2.3% bright; the others within 3e-4)",
+                          should: measured 1.4% bright on the CPU backend, 2.3% on lavapipe, where these tile lists of 16 384 \
+                          entries and more come out without the surface behind; the others within 3e-4)",
             expect: Expect::Flat(4e-2),
             build: || {
                 let mut img = pane_stack(40, 36, 100, 0.01, 1.2, 0.001);

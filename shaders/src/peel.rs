@@ -210,8 +210,6 @@ pub fn background_seen(reach: f32) -> bool {
     is_finite(reach)
 }
 
-pub use crate::renderer_peel::keep;
-
 /// Whether a layer's depth is a surface (finite), not the background.
 #[inline]
 pub fn is_surface(depth: f32) -> bool {

@@ -3,7 +3,7 @@
 //!
 //! The "renderer" here is the test's own, on the host: per pass it casts each pixel centre's ray
 //! (the rasteriser's sample point) against a scene of quads facing the camera, keeps the nearest
-//! fragment that `dof_shaders::peel::keep` accepts against the library's bound (read back: this
+//! fragment that `dof_shaders::renderer_peel::keep` accepts against the library's bound (read back: this
 //! test checks the library's logic, not a real-time loop; `examples/ash_host.rs` peels with a GPU
 //! pipeline), and writes RGBA16F colour and a D32 or D24 depth attachment, standard or reversed
 //! planes. Quads facing the camera have one planar depth over their whole area, so the rasteriser
@@ -23,7 +23,7 @@ use dof::raster::{MeshPeelContext, MeshPeelDesc};
 use dof::scene::{Camera, GuardBand, LayerOptions, MeshScene, Vec3};
 use dof_shaders::half::f32_to_f16;
 use dof_shaders::lens::ThinLens;
-use dof_shaders::peel::keep;
+use dof_shaders::renderer_peel::keep;
 use dof_shaders::raster::mesh::{ALPHA_BLEND, MeshMaterial, MeshVertex, UNLIT};
 use dof_tests::renderer::{Renderer, assert_no_messages};
 

@@ -5,14 +5,16 @@
 //! Blending. A fragment standing for `footprint` pixels gives a pixel centre the share
 //! `w = footprint · weight / Σ weight` of its disc (see [`weight`] and [`weight_sum`]): it spreads
 //! exactly its own energy. Its alpha `α` scales that coverage: it adds `w` times its premultiplied
-//! colour and spends `w·α` of the pixel ([`take`]). Front to back, each fragment takes at most the
+//! colour and spends `w·α` of the pixel ([`surfaces::take`]). Front to back, each fragment takes at most the
 //! coverage its nearer fragments left (`min(w·α, 1 − used)`): coverage is a budget the near field
 //! spends first. A translucent fragment (or one of alpha 0, light that hides nothing) leaves the
 //! rest of its share to what lies behind it. Unlike per-fragment
 //! alpha compositing (`T ← T·(1 − α)`), the fragments of one blurred surface do not attenuate each
 //! other (a blurred wall is not a stack of translucent sheets), and the visible and hidden layers of
 //! a background together fill exactly what the foreground leaves. On the built-in scenes this is
-//! several dB closer to the exact reference than compositing (README, "Blending").
+//! several dB closer to the exact reference than compositing (README, "Blending"). Different
+//! translucent surfaces, told apart by depth and by their summed disc shares, composite instead
+//! ([`super::surfaces`]): a pane behind another is seen through it.
 //!
 //! A pixel's own in-focus front (see `pack`: the "over" of its leading in-focus slots, opaque or over
 //! black) is not in any list: it takes all remaining coverage at its depth, which ends the pixel's
@@ -26,6 +28,7 @@
 
 use super::fragment::{Fragment, shaped_weight, weight_sum};
 use super::pack::load_sharp;
+use super::surfaces::{self, Surfaces};
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Load, Mem};
 use crate::lens::is_nan;
@@ -59,7 +62,9 @@ const CH_M: usize = 15 * T;
 const CH_O: usize = 16 * T;
 /// Two halves for the "any pixel still active" scan.
 const ACTIVE: usize = 17 * T;
-pub const SHARED_WORDS: usize = 19 * T;
+/// The pixel's [`Surfaces`] between chunks.
+const SURFACES: usize = 19 * T;
+pub const SHARED_WORDS: usize = SURFACES + surfaces::WORDS * T;
 
 /// Pixels one invocation walks at a time. On the CPU a workgroup's invocations run one after
 /// another, and a pixel's walk is a chain (each covering entry waits for the coverage the last one
@@ -81,16 +86,6 @@ fn get<const N: usize>(sh: &[u32; N], field: usize, i: u32) -> f32 {
 #[inline]
 fn set<const N: usize>(sh: &mut [u32; N], field: usize, i: u32, v: f32) {
     sh[field + i as usize] = v.to_bits();
-}
-
-/// What a fragment of disc share `w` and alpha `alpha` takes of a pixel that has `rest` coverage
-/// left: the factor its premultiplied colour is added with, and the coverage it spends. Its
-/// coverage `w·α` while that fits; otherwise the rest, with its colour scaled to match (`rest/α`,
-/// below `w`). An opaque fragment takes `min(w, rest)` for both, bit for bit as before alpha.
-#[inline]
-pub fn take(w: f32, alpha: f32, rest: f32) -> (f32, f32) {
-    let wa = w * alpha;
-    if wa < rest { (w, wa) } else { (rest / alpha, rest) }
 }
 
 /// Adds the share `s` of premultiplied colour `c` to pixel `i`, which spends `a` of its coverage.
@@ -128,7 +123,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
     mut st: M,
     mask: R,
 ) {
-    let p = &super::plan::planned(p, &st);
+    let p = &super::planned(p, &st);
     let [wx, wy, _] = g.workgroup_id();
     let sub = p.tile / p.block();
     let (tx, ty) = (wx / sub, wy / sub);
@@ -171,6 +166,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
         // at +inf still blends.
         let z = if ok { load_sharp(&sharp, y * p.width + x).1 } else { f32::NAN };
         set(sh, SHARP_Z, lid, z);
+        Surfaces::START.store(sh, SURFACES, T, lid);
     });
     let mut start = 0;
     let mut active = 1;
@@ -208,6 +204,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
             let mut used = [0.0f32; L];
             let mut acc = [[0.0f32; 3]; L];
             let mut live = [false; L];
+            let mut surfaces = [Surfaces::START; L];
             // Where each pixel's walk ends (its sharp front lies in front of the rest of the
             // list), and the entries it visits, as a walk over every entry in order counts them:
             // up to and including the one that saturates it or lies at or behind its sharp front.
@@ -223,6 +220,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                 pos[l] = [x as f32 + 0.5, y as f32 + 0.5];
                 used[l] = get(sh, USED, q);
                 acc[l] = [get(sh, ACC_R, q), get(sh, ACC_G, q), get(sh, ACC_B, q)];
+                surfaces[l] = Surfaces::load(sh, SURFACES, T, q);
                 live[l] = o && used[l] < 1.0 - SATURATED;
                 if live[l] {
                     end[l] = first_behind(sh, n, get(sh, SHARP_Z, q));
@@ -242,7 +240,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                         if d2 < s * s {
                             let w =
                                 get(sh, CH_A, k) * shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask);
-                            let (f, a) = take(w, get(sh, CH_O, k), 1.0 - used[l]);
+                            let (f, a) = surfaces[l].take(w, get(sh, CH_O, k), get(sh, CH_Z, k), used[l]);
                             let c = &mut acc[l];
                             *c = [c[0] + f * get(sh, CH_R, k), c[1] + f * get(sh, CH_G, k), c[2] + f * get(sh, CH_B, k)];
                             used[l] += a;
@@ -268,6 +266,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                 set(sh, ACC_G, q, acc[l][1]);
                 set(sh, ACC_B, q, acc[l][2]);
                 set(sh, USED, q, used[l]);
+                surfaces[l].store(sh, SURFACES, T, q);
                 if ok[l] {
                     sh[VISITED + q as usize] += visited[l];
                 }
@@ -304,6 +303,6 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
 
 kernel!(
     /// Front-to-back accumulation of the sorted tile lists (or copy-through) into `out` (3 words a pixel).
-    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 19 * 256]
+    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 23 * 256]
         { read sharp, read dense, read values, read segments, read copy, out, st, read mask } => accumulate_pass
 );

@@ -19,7 +19,7 @@
 //!   stable sort that follows is deterministic.
 
 use super::fragment::Fragment;
-use super::plan::planned;
+use super::planned;
 use super::{SplatParams, THREADS, stats};
 use super::{merge, pack};
 use crate::exec::{Group, Load, Mem};

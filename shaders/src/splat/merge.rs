@@ -294,7 +294,7 @@ fn next_head(q: &mut Quad, head: &mut Fragment, has: u32, m: usize, layers: &imp
 /// were capped, at `cells[o]` and `cells[cells + o]` (f32 bits) as `splat_tile_count` reads them,
 /// and the merging statistics. `bin::place_pass` walks the same lists again to write them.
 pub fn merge_count_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, layers: R, counts: R, mut cells: M, mut st: M) {
-    let p = &super::plan::planned(p, &st);
+    let p = &super::planned(p, &st);
     let outputs = p.cells_x * p.cells_y;
     for_each_item(g, outputs, |o| {
         let (mut n, mut widest, mut capped) = (0u32, 0.0f32, 0u32);

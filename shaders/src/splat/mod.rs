@@ -30,8 +30,10 @@ pub mod fragment;
 pub mod merge;
 pub mod pack;
 pub mod plan;
+pub mod surfaces;
 
 use crate::aperture::Aperture;
+use crate::exec::Load;
 use crate::lens::ThinLens;
 
 /// Invocations per workgroup of every splatting kernel.
@@ -50,7 +52,7 @@ pub const FLAG_UMBRA_MERGE: u32 = 1;
 
 /// Push constants of every splatting kernel (128 bytes, all that Vulkan guarantees). `rings` and
 /// `max_radius` are the configured bounds here; the kernels use the frame's own,
-/// which `plan::splat_plan_finish` writes on the device (see [`plan::planned`]).
+/// which `plan::splat_plan_finish` writes on the device (see [`planned`]).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct SplatParams {
@@ -103,6 +105,16 @@ impl SplatParams {
 #[inline]
 pub const fn block_for(tile: u32) -> u32 {
     if tile == 24 { 12 } else { 16 }
+}
+
+/// The push constants with the device plan's fields (`rings`, `max_radius`) read
+/// from the frame words that `splat_plan_finish` wrote.
+#[inline]
+pub fn planned(p: &SplatParams, st: &impl Load) -> SplatParams {
+    let mut q = *p;
+    q.rings = st.load(stats::RINGS);
+    q.max_radius = f32::from_bits(st.load(stats::RADIUS_CAP));
+    q
 }
 
 /// Words of the statistics buffer every run fills (atomic counters, so order-independent).

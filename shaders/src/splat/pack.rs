@@ -229,7 +229,7 @@ impl PixelFragments {
 /// only once their place in the dense array is known (`bin::place_pass`).
 #[allow(clippy::too_many_arguments)]
 pub fn pack_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, layers: R, counts: R, mut cells: M, mut sharp: M, mut st: M) {
-    let p = &super::plan::planned(p, &st);
+    let p = &super::planned(p, &st);
     let pixels = p.width * p.height;
     for_each_item(g, pixels, |i| {
         let mut w = PixelFragments::new(&counts, p, i);

@@ -6,7 +6,7 @@
 //!   translucent), reduced in workgroup memory and then with one
 //!   atomic maximum per workgroup into the frame words.
 //! - `splat_plan_finish` (one invocation): from it, the tile rings fragments may reach and the
-//!   radius cap the rings allow. Every later kernel reads them through [`planned`].
+//!   radius cap the rings allow. Every later kernel reads them through [`planned`](super::planned).
 //!
 //! No colour scale: every fragment carries its own exponent (see [`super::fragment`]).
 
@@ -15,16 +15,6 @@ use super::{MAX_RINGS, SplatParams, THREADS, stats};
 use crate::exec::{Group, Load, Mem};
 use crate::slot::clamp_alpha;
 use crate::wg::{inclusive_scan, max};
-
-/// The push constants with the device plan's fields (`rings`, `max_radius`) read
-/// from the frame words that `splat_plan_finish` wrote.
-#[inline]
-pub fn planned(p: &SplatParams, st: &impl Load) -> SplatParams {
-    let mut q = *p;
-    q.rings = st.load(stats::RINGS);
-    q.max_radius = f32::from_bits(st.load(stats::RADIUS_CAP));
-    q
-}
 
 /// Rings and radius cap for the widest radius present: fragments merged into cells of `cell` pixels
 /// reach half a cell beyond their CoC, and `cap` (the configured cap, at most `MAX_RINGS` tiles)

@@ -13,7 +13,7 @@
 //! ```
 //!
 //! - `bound()` holds one f32 a pixel: the renderer's fragment shader discards a fragment unless
-//!   `dof_shaders::peel::keep(gl_FragCoord.z, bound[pixel])` (GLSL in `docs/integration.md`). It is
+//!   `dof_shaders::renderer_peel::keep(gl_FragCoord.z, bound[pixel])` (GLSL in `docs/integration.md`). It is
 //!   the previous layer's reach (its depth plus the umbra behind it) in the attachment's own depth
 //!   encoding, or "discard all" outside the disocclusion buffer behind an opaque layer (a translucent
 //!   one never ends the peel) and where nothing lies beyond.

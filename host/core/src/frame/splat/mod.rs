@@ -327,7 +327,7 @@ impl SplatContext {
             tile: o.tile,
             tiles_x: f.width.div_ceil(o.tile),
             tiles_y: f.height.div_ceil(o.tile),
-            // The device plan replaces these two (`dof_shaders::splat::plan::planned`).
+            // The device plan replaces these two (`dof_shaders::splat::planned`).
             rings: MAX_RINGS,
             flags: if o.umbra_merge { FLAG_UMBRA_MERGE } else { 0 },
             max_radius: self.radius_cap,

@@ -2,7 +2,8 @@
 //! the numbers of docs/measurements.md, "Area-integrated layers", section "Where the region's
 //! error comes from".
 //!
-//! `cargo run --release -p dof --features eval --example highlight_rims -- [SPP] [N,N,..]`
+//! `cargo run --release -p dof --features eval --example highlight_rims -- [SPP] [N,N,..] [OUT.exr]`
+//! (`OUT.exr`: the aimed reference, to compare other renderers with through `dof compare`)
 //! (or `cargo build --workspace --example highlight_rims` and `target/debug/examples/highlight_rims`).
 //!
 //! 1. **An aimed reference for the emitters.** The thin-lens reference samples pixel × lens
@@ -61,6 +62,9 @@ fn main() -> Result<()> {
     );
     let converged = add(&base, &aimed[0]);
     let converged_other = add(&base, &aimed[1]);
+    if let Some(path) = args.get(3) {
+        dof::io::write_exr(path, &converged, &[])?;
+    }
 
     let mut cpu = CpuBackend::new();
     let backend: &mut dyn Backend = &mut cpu;

@@ -1,0 +1,454 @@
+//! What limits multi-layer splatting in the partial-occlusion region of `highlights` (issue 23):
+//! the numbers of docs/measurements.md, "Area-integrated layers", section "Where the region's
+//! error comes from".
+//!
+//! `cargo run --release -p dof --features eval --example highlight_rims -- [SPP] [N,N,..] [OUT.exr]`
+//! (`OUT.exr`: the aimed reference, to compare other renderers with through `dof compare`)
+//! (or `cargo build --workspace --example highlight_rims` and `target/debug/examples/highlight_rims`).
+//!
+//! 1. **An aimed reference for the emitters.** The thin-lens reference samples pixel × lens
+//!    uniformly, so a pixel that a saturating bokeh disc overlaps by less than about one sample in
+//!    `spp` comes out black, and two seeds disagree there. Here the emitters' light is integrated
+//!    with samples aimed at each emissive sphere: stratified pixel points over the part of the
+//!    pixel that can see the sphere, and per pixel point lens points drawn only in the bounding box
+//!    of the sphere's projection, from the pixel point's focus-plane point, onto the lens plane (the
+//!    whole lens when that projection is unbounded); every ray is traced through the whole scene,
+//!    so occlusion is exact. The rest of the image is the uniform reference of the scene with the
+//!    emitters black; the sum is the converged image up to the aimed estimator's own noise (two
+//!    seeds are compared, and its energy against the uniform reference's).
+//! 2. **Methods** (pinhole, multi-layer splatting unmerged, the gather) against both references.
+//! 3. **Splat kernels and an oracle**: the emitters' fragments splatted on the host without
+//!    occlusion (kernel 0 is splatting's own weight and reproduces the method's emitter image) with
+//!    other kernels, and every sub-sample splatted from its own position (what a fragment with a
+//!    sub-pixel position could do).
+
+use dof::eval::methods::{MethodInput, evaluated_methods};
+use dof::io::tonemap::tonemap;
+use dof::layers::{LayeredImage, RgbImage};
+use dof::metrics::squared_error;
+use dof::scene::{
+    Camera, LayerOptions, Lighting, Material, Primitive, ReferenceOptions, Scene, Shape, ThinLens, Vec3, builtin, raycast_layers, reference,
+};
+use dof::{Backend, CpuBackend, Result};
+use dof_shaders::resolve::grid_side;
+use dof_shaders::splat::fragment::weight;
+use rayon::prelude::*;
+
+const WIDTH: u32 = 320;
+const HEIGHT: u32 = 180;
+/// Pixel points (per side) and lens points (per side) of the aimed estimator.
+const PIXEL_SIDE: u32 = 16;
+const LENS_SIDE: u32 = 16;
+
+fn main() -> Result<()> {
+    let args: Vec<String> = std::env::args().collect();
+    let spp: u32 = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1024);
+    let counts: Vec<u32> = args.get(2).map_or(vec![1, 4, 16], |s| s.split(',').filter_map(|v| v.parse().ok()).collect());
+    let b = builtin("highlights")?.with_size(WIDTH, HEIGHT);
+    let lens = b.thin_lens()?;
+    let uniform = |scene: &Scene, seed: u64| -> Result<RgbImage> {
+        Ok(reference(scene, &b.camera, &lens, &ReferenceOptions { spp, seed, ..Default::default() })?.image)
+    };
+    let full = [uniform(&b.scene, 0)?, uniform(&b.scene, 1)?];
+    let base = uniform(&variant(&b.scene, Part::Rest)?, 0)?;
+    let emit_uniform = uniform(&variant(&b.scene, Part::Emitters)?, 0)?;
+    let aimed = [aimed_emitters(&b.scene, &b.camera, &lens, 0), aimed_emitters(&b.scene, &b.camera, &lens, 1)];
+    let energy = |i: &RgbImage| i.data.iter().map(|p| p.iter().map(|&c| c as f64).sum::<f64>()).sum::<f64>();
+    println!(
+        "emitters' energy: aimed {:.5e} and {:.5e} (two seeds), uniform {spp} spp {:.5e}",
+        energy(&aimed[0]),
+        energy(&aimed[1]),
+        energy(&emit_uniform)
+    );
+    let converged = add(&base, &aimed[0]);
+    let converged_other = add(&base, &aimed[1]);
+    if let Some(path) = args.get(3) {
+        dof::io::write_exr(path, &converged, &[])?;
+    }
+
+    let mut cpu = CpuBackend::new();
+    let backend: &mut dyn Backend = &mut cpu;
+    let methods = evaluated_methods();
+    for &n in &counts {
+        let options = LayerOptions { subsamples: n, ..LayerOptions::default() };
+        let layers = raycast_layers(&b.scene, &b.camera, &lens, &options)?;
+        let mask = layers.mask.clone();
+        let region = mask.iter().filter(|m| **m).count();
+        let lit = mask.iter().zip(&aimed[0].data).filter(|(m, c)| **m && tonemap(**c, 1.0).iter().any(|&t| t >= 0.05)).count();
+        println!(
+            "\nN = {n}: region {region} px ({:.1}% of the frame), {lit} of them lit by the emitters; PSNR full / region (dB)",
+            100.0 * region as f64 / mask.len() as f64
+        );
+        println!("  uniform {spp} spp, seed 1 against seed 0: {}", pair(&full[1], &full[0], &mask));
+        println!("  aimed, seed 1 against seed 0:            {}", pair(&converged_other, &converged, &mask));
+        println!("  uniform {spp} spp (seed 0) against aimed: {}", pair(&full[0], &converged, &mask));
+        let emit_layers = raycast_layers(&variant(&b.scene, Part::Emitters)?, &b.camera, &lens, &options)?;
+        let rest_layers = raycast_layers(&variant(&b.scene, Part::Rest)?, &b.camera, &lens, &options)?;
+        let mut splat_rest = None;
+        let mut splat_emit = None;
+        for m in methods.iter().filter(|m| ["pinhole", "multilayer", "gather"].contains(&m.name())) {
+            let settings = m.settings(false);
+            // Unmerged splatting; the gather at its widest radius.
+            let setting = if m.name() == "gather" { settings[settings.len() - 1].clone() } else { settings[0].clone() };
+            let run = |backend: &mut dyn Backend, l: &dof::scene::SceneLayers| -> Result<RgbImage> {
+                let input = MethodInput::new(l.layers.clone(), lens, l.margin);
+                Ok(input.crop(&m.run(backend, &input, &setting)?.image))
+            };
+            let image = run(backend, &layers)?;
+            if m.name() == "multilayer" {
+                splat_rest = Some(run(backend, &rest_layers)?);
+                splat_emit = Some(run(backend, &emit_layers)?);
+            }
+            println!(
+                "  {:10} against uniform {} | against aimed {} | share of the region's squared error in pixels the emitters light: {:.0}%",
+                m.name(),
+                pair(&image, &full[0], &mask),
+                pair(&image, &converged, &mask),
+                100.0 * emitter_share(&image, &converged, &aimed[0], &mask)
+            );
+        }
+        let (Some(rest), Some(emit)) = (splat_rest, splat_emit) else { continue };
+        for k in [Kernel::Splat, Kernel::WideRim, Kernel::DiscBox, Kernel::DiscBoxBox] {
+            let sim = splat_host(&emit_layers.layers, &lens, emit_layers.margin, k);
+            let total = add(&rest, &sim);
+            println!(
+                "  host splat, {:44}: against splatting's emitters {} | total against uniform {} | against aimed {}",
+                k.name(),
+                pair(&sim, &emit, &mask),
+                pair(&total, &full[0], &mask),
+                pair(&total, &converged, &mask)
+            );
+        }
+        if n > 1 {
+            let side = grid_side(n);
+            let fine = builtin("highlights")?.with_size(WIDTH * side, HEIGHT * side);
+            let fine_lens = fine.thin_lens()?;
+            let no_buffer = LayerOptions { disocclusion: false, ..LayerOptions::default() };
+            let fine_layers = raycast_layers(&variant(&fine.scene, Part::Emitters)?, &fine.camera, &fine_lens, &no_buffer)?;
+            let sim = splat_subsamples(&fine_layers.layers, &fine_lens, fine_layers.margin, side);
+            let total = add(&rest, &sim);
+            println!(
+                "  oracle, each sub-sample from its own position: total against uniform {} | against aimed {}",
+                pair(&total, &full[0], &mask),
+                pair(&total, &converged, &mask)
+            );
+        }
+    }
+    Ok(())
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Part {
+    /// Every emitter black (still occluding).
+    Rest,
+    /// Only the emitters' light (no lighting, black background).
+    Emitters,
+}
+
+fn variant(scene: &Scene, part: Part) -> Result<Scene> {
+    let prims: Vec<Primitive> = scene
+        .primitives()
+        .iter()
+        .map(|p| match (part, p.material) {
+            (Part::Rest, Material::Emissive(_)) => Primitive { shape: p.shape, material: Material::Emissive([0.0; 3]) },
+            _ => *p,
+        })
+        .collect();
+    let l = *scene.lighting();
+    let l = if part == Part::Emitters { Lighting { color: [0.0; 3], ambient: [0.0; 3], background: [0.0; 3], ..l } } else { l };
+    Scene::new(prims, l)
+}
+
+fn add(a: &RgbImage, b: &RgbImage) -> RgbImage {
+    let data = a.data.iter().zip(&b.data).map(|(p, q)| [p[0] + q[0], p[1] + q[1], p[2] + q[2]]).collect();
+    RgbImage { width: a.width, height: a.height, data }
+}
+
+fn psnr(sum: f64, pixels: usize) -> f64 {
+    -10.0 * (sum / (3 * pixels.max(1)) as f64).log10()
+}
+
+/// "full / region" PSNR of `a` against `r` on the evaluation's display transform.
+fn pair(a: &RgbImage, r: &RgbImage, mask: &[bool]) -> String {
+    let (mut all, mut inside, mut n) = (0.0, 0.0, 0);
+    for (i, &m) in mask.iter().enumerate() {
+        let e = squared_error(a.data[i], r.data[i]);
+        all += e;
+        if m {
+            inside += e;
+            n += 1;
+        }
+    }
+    format!("{:.2} / {:.2}", psnr(all, mask.len()), psnr(inside, n))
+}
+
+/// Share of the region's squared error in pixels the emitters light: where the emitters' light
+/// alone (`emitters`, converged) tone-maps to at least 0.05 in some channel.
+fn emitter_share(a: &RgbImage, r: &RgbImage, emitters: &RgbImage, mask: &[bool]) -> f64 {
+    let (mut sat, mut all) = (0.0, 0.0);
+    for (i, &m) in mask.iter().enumerate() {
+        if m {
+            let e = squared_error(a.data[i], r.data[i]);
+            let t = tonemap(emitters.data[i], 1.0);
+            all += e;
+            if t[0].max(t[1]).max(t[2]) >= 0.05 {
+                sat += e;
+            }
+        }
+    }
+    sat / all.max(f64::MIN_POSITIVE)
+}
+
+/// SplitMix64 as uniform floats in [0, 1).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f32 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^= z >> 31;
+        (z >> 40) as f32 / (1u64 << 24) as f32
+    }
+}
+
+/// The emitters' light, each emissive sphere integrated with samples aimed at it (module docs).
+fn aimed_emitters(scene: &Scene, camera: &Camera, lens: &ThinLens, seed: u64) -> RgbImage {
+    let frame = camera.frame().expect("valid camera");
+    let emitters: Vec<(u32, Vec3, f32, [f32; 3])> = scene
+        .primitives()
+        .iter()
+        .enumerate()
+        .filter_map(|(i, p)| match (p.shape, p.material) {
+            (Shape::Sphere { center, radius }, Material::Emissive(c)) if c != [0.0; 3] => Some((i as u32, center, radius, c)),
+            _ => None,
+        })
+        .collect();
+    let parts: Vec<Vec<(usize, [f64; 3])>> =
+        emitters.par_iter().map(|&(id, c, rho, e)| aimed_emitter(scene, &frame, lens, id, c, rho, e, seed)).collect();
+    let mut image = RgbImage::new(frame.width, frame.height);
+    for (i, v) in parts.into_iter().flatten() {
+        for k in 0..3 {
+            image.data[i][k] += v[k] as f32;
+        }
+    }
+    image
+}
+
+#[allow(clippy::too_many_arguments)]
+fn aimed_emitter(
+    scene: &Scene,
+    frame: &dof::scene::CameraFrame,
+    lens: &ThinLens,
+    id: u32,
+    c: Vec3,
+    rho: f32,
+    e: [f32; 3],
+    seed: u64,
+) -> Vec<(usize, [f64; 3])> {
+    let (w, h) = (frame.width as i64, frame.height as i64);
+    let (a, focus) = (lens.aperture_radius, lens.focus_distance);
+    let mut out = Vec::new();
+    let z = frame.depth_of(c);
+    let Some((cx, cy)) = frame.project(c) else { return out };
+    // Pixels that can see the sphere lie within its CoC plus its projected radius (with margin:
+    // the per-emitter check found every hit well inside).
+    let support = lens.coc_radius_px(z) + 1.5 * rho / (2.0 * frame.pixel_footprint_radius(z)) + 1.0;
+    let mut rng = Rng(seed ^ ((id as u64) << 32));
+    let (x0, x1) = (((cx - support).floor() as i64).max(0), ((cx + support).ceil() as i64).min(w - 1));
+    let (y0, y1) = (((cy - support).floor() as i64).max(0), ((cy + support).ceil() as i64).min(h - 1));
+    for py in y0..=y1 {
+        for px in x0..=x1 {
+            let (bx0, bx1) = ((px as f32).max(cx - support), (px as f32 + 1.0).min(cx + support));
+            let (by0, by1) = ((py as f32).max(cy - support), (py as f32 + 1.0).min(cy + support));
+            if !(bx1 > bx0 && by1 > by0) {
+                continue;
+            }
+            let mut cover = 0.0f64;
+            for k in 0..PIXEL_SIDE * PIXEL_SIDE {
+                let sx = bx0 + (bx1 - bx0) * ((k % PIXEL_SIDE) as f32 + rng.next()) / PIXEL_SIDE as f32;
+                let sy = by0 + (by1 - by0) * ((k / PIXEL_SIDE) as f32 + rng.next()) / PIXEL_SIDE as f32;
+                let f = frame.eye + focus * frame.direction(sx, sy);
+                let Some((lo, hi)) = lens_box(frame, f, c, rho, a, focus) else { continue };
+                let mut hits = 0u32;
+                for j in 0..LENS_SIDE * LENS_SIDE {
+                    let lx = lo[0] + (hi[0] - lo[0]) * ((j % LENS_SIDE) as f32 + rng.next()) / LENS_SIDE as f32;
+                    let ly = lo[1] + (hi[1] - lo[1]) * ((j / LENS_SIDE) as f32 + rng.next()) / LENS_SIDE as f32;
+                    if lx * lx + ly * ly <= a * a {
+                        let ray = frame.lens_ray(sx, sy, lx, ly, focus);
+                        hits += scene.first_hit(&ray, 0.0).is_some_and(|hit| hit.primitive == id) as u32;
+                    }
+                }
+                let box_area = ((hi[0] - lo[0]) * (hi[1] - lo[1])) as f64;
+                cover += box_area * hits as f64 / (LENS_SIDE * LENS_SIDE) as f64 / (std::f64::consts::PI * (a as f64).powi(2));
+            }
+            let v = cover / (PIXEL_SIDE * PIXEL_SIDE) as f64 * ((bx1 - bx0) * (by1 - by0)) as f64;
+            if v > 0.0 {
+                out.push(((py * w + px) as usize, e.map(|c| c as f64 * v)));
+            }
+        }
+    }
+    out
+}
+
+/// The lens-plane box (along the camera's right and up, clipped to the lens's square) of the lens
+/// points whose ray through the focus-plane point `f` meets the sphere: the bounding box of the
+/// sphere's silhouette seen from `f`, projected from `f` onto the lens plane, padded by 3%; the
+/// whole lens where that projection is unbounded (`f` inside the sphere, or the silhouette
+/// crossing the focus depth).
+fn lens_box(frame: &dof::scene::CameraFrame, f: Vec3, c: Vec3, rho: f32, a: f32, focus: f32) -> Option<([f32; 2], [f32; 2])> {
+    let v = c - f;
+    let d2 = v.length_squared();
+    let whole = ([-a, -a], [a, a]);
+    if d2 <= 1.0001 * rho * rho {
+        return Some(whole);
+    }
+    let centre = c - (rho * rho / d2) * v;
+    let radius = rho * (1.0 - rho * rho / d2).sqrt();
+    let axis = v.normalize();
+    let (t1, t2) = (axis.any_orthonormal_vector(), axis.cross(axis.any_orthonormal_vector()));
+    let (mut lo, mut hi) = ([f32::INFINITY; 2], [f32::NEG_INFINITY; 2]);
+    let (mut behind, mut before) = (false, false);
+    for s in 0..64 {
+        let angle = s as f32 * std::f32::consts::TAU / 64.0;
+        let p = centre + radius * (angle.cos() * t1 + angle.sin() * t2);
+        let dz = frame.depth_of(p) - focus;
+        if dz > 0.0 {
+            behind = true;
+        } else {
+            before = true;
+        }
+        if dz.abs() < 1e-6 * focus {
+            return Some(whole);
+        }
+        let q = f + (p - f) * (-focus / dz) - frame.eye;
+        let l = [q.dot(frame.right), q.dot(frame.up)];
+        for k in 0..2 {
+            lo[k] = lo[k].min(l[k]);
+            hi[k] = hi[k].max(l[k]);
+        }
+    }
+    if behind && before {
+        return Some(whole);
+    }
+    for k in 0..2 {
+        let pad = 0.03 * (hi[k] - lo[k]) + 1e-6 * a;
+        lo[k] = (lo[k] - pad).max(-a);
+        hi[k] = (hi[k] + pad).min(a);
+    }
+    (hi[0] > lo[0] && hi[1] > lo[1]).then_some((lo, hi))
+}
+
+#[derive(Clone, Copy)]
+enum Kernel {
+    /// Splatting's weight: support r + 1/2, a linear rim 1 px wide.
+    Splat,
+    /// Support r + 1, a linear rim 2 px wide.
+    WideRim,
+    /// The CoC disc seen through the destination pixel's box (a point source at the centre).
+    DiscBox,
+    /// The CoC disc convolved with the source pixel's box and the destination's.
+    DiscBoxBox,
+}
+
+impl Kernel {
+    fn name(self) -> &'static str {
+        match self {
+            Kernel::Splat => "splatting's weight (r + 1/2, rim 1 px)",
+            Kernel::WideRim => "r + 1, rim 2 px",
+            Kernel::DiscBox => "disc through the destination box",
+            Kernel::DiscBoxBox => "disc through source and destination boxes",
+        }
+    }
+
+    /// Weight at offset `o` (pixel centre minus source) for CoC radius `r`.
+    fn weight(self, o: [f32; 2], r: f32) -> f32 {
+        let d2 = o[0] * o[0] + o[1] * o[1];
+        let tent = |x: f32| (1.0 - x.abs()).max(0.0);
+        match self {
+            Kernel::Splat => weight(d2, r + 0.5, 1.0),
+            Kernel::WideRim => weight(d2, r + 1.0, 2.0),
+            Kernel::DiscBox | Kernel::DiscBoxBox => {
+                // Midpoint rule over the box (or the tent of two boxes).
+                let (g, half) = (24, if matches!(self, Kernel::DiscBoxBox) { 1.0 } else { 0.5 });
+                let (mut inside, mut total) = (0.0f32, 0.0f32);
+                for j in 0..g {
+                    for i in 0..g {
+                        let tx = -half + 2.0 * half * (i as f32 + 0.5) / g as f32;
+                        let ty = -half + 2.0 * half * (j as f32 + 0.5) / g as f32;
+                        let w = if matches!(self, Kernel::DiscBoxBox) { tent(tx) * tent(ty) } else { 1.0 };
+                        if (o[0] + tx).powi(2) + (o[1] + ty).powi(2) < r * r {
+                            inside += w;
+                        }
+                        total += w;
+                    }
+                }
+                inside / total
+            }
+        }
+    }
+}
+
+/// Adds `color` spread from `(cx, cy)` (frame pixels) with kernel `k` for CoC radius `r`,
+/// normalised over the lattice, into `image`.
+fn spread(image: &mut RgbImage, cx: f32, cy: f32, r: f32, k: Kernel, color: [f32; 3]) {
+    let reach = (r + 2.0).ceil() as i32;
+    let (px, py) = (cx.floor() as i32, cy.floor() as i32);
+    let mut weights = Vec::new();
+    for dy in -reach..=reach {
+        for dx in -reach..=reach {
+            let (qx, qy) = (px + dx, py + dy);
+            let o = [qx as f32 + 0.5 - cx, qy as f32 + 0.5 - cy];
+            let w = if r < 1e-3 { f32::from(dx == 0 && dy == 0) } else { k.weight(o, r) };
+            weights.push((qx, qy, w));
+        }
+    }
+    let sum: f32 = weights.iter().map(|w| w.2).sum();
+    for (qx, qy, w) in weights {
+        if w > 0.0 && qx >= 0 && qy >= 0 && (qx as u32) < image.width && (qy as u32) < image.height {
+            let q = image.index(qx as u32, qy as u32);
+            for c in 0..3 {
+                image.data[q][c] += color[c] * w / sum;
+            }
+        }
+    }
+}
+
+/// Every coloured fragment of `layers` (frame plus `margin`) splatted from its pixel centre with
+/// kernel `k`, without occlusion, cut to the frame.
+fn splat_host(layers: &LayeredImage, lens: &ThinLens, margin: u32, k: Kernel) -> RgbImage {
+    let mut image = RgbImage::new(layers.width - 2 * margin, layers.height - 2 * margin);
+    for y in 0..layers.height {
+        for x in 0..layers.width {
+            for f in layers.pixel(x, y) {
+                if f.color != [0.0; 3] && f.depth.is_finite() {
+                    let (cx, cy) = (x as f32 + 0.5 - margin as f32, y as f32 + 0.5 - margin as f32);
+                    spread(&mut image, cx, cy, lens.coc_radius_px(f.depth), k, f.color);
+                }
+            }
+        }
+    }
+    image
+}
+
+/// The oracle: point-sampled layers at `side` times the size, each sub-sample's coloured
+/// fragments splatted from its own position (the disc through the destination box), weighted by
+/// 1 / side².
+fn splat_subsamples(fine: &LayeredImage, fine_lens: &ThinLens, fine_margin: u32, side: u32) -> RgbImage {
+    let mut image = RgbImage::new(WIDTH, HEIGHT);
+    let s = side as f32;
+    for y in 0..fine.height {
+        for x in 0..fine.width {
+            for f in fine.pixel(x, y) {
+                if f.color != [0.0; 3] && f.depth.is_finite() {
+                    let cx = (x as f32 - fine_margin as f32 + 0.5) / s;
+                    let cy = (y as f32 - fine_margin as f32 + 0.5) / s;
+                    let color = f.color.map(|c| c / (s * s));
+                    spread(&mut image, cx, cy, fine_lens.coc_radius_px(f.depth) / s, Kernel::DiscBox, color);
+                }
+            }
+        }
+    }
+    image
+}

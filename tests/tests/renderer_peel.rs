@@ -23,8 +23,8 @@ use dof::raster::{MeshPeelContext, MeshPeelDesc};
 use dof::scene::{Camera, GuardBand, LayerOptions, MeshScene, Vec3};
 use dof_shaders::half::f32_to_f16;
 use dof_shaders::lens::ThinLens;
-use dof_shaders::renderer_peel::keep;
 use dof_shaders::raster::mesh::{ALPHA_BLEND, MeshMaterial, MeshVertex, UNLIT};
+use dof_shaders::renderer_peel::keep;
 use dof_tests::renderer::{Renderer, assert_no_messages};
 
 const NEAR: f32 = 0.1;

@@ -30,7 +30,6 @@
 //! covering opaque surface, or an opaque surface partly covering behind a pane, takes its share
 //! unscaled, as before.
 
-
 /// Relative depth step beyond which the next fragment is another surface (as the area-integrated
 /// layers cluster depths within 5%, [`crate::resolve`]).
 pub const DEPTH_GAP: f32 = 1.05;

@@ -16,12 +16,14 @@
 use std::path::PathBuf;
 
 use dof::backend::{Backend, CpuBackend};
+use dof::frame::splat::LLVMPIPE_SAFE_LIST;
 use dof::frame::splat::{Merge, SplatOptions};
 use dof::frame::{Extent, METHODS, MethodInfo, MethodOptions};
 use dof::io::codecs::exr::prelude as exr;
 use dof::io::read_layered_exr;
 use dof::layers::{Fragment, LayeredImage, RgbImage};
 use dof::methods::one_shot::one_shot;
+use dof::methods::splat::splat;
 use dof::stress::{test_lens, varied};
 use dof_shaders::lens::ThinLens;
 use dof_tests::{ContextFrame, assert_clean, context_frames, vulkan};
@@ -231,6 +233,36 @@ fn a_blurred_stack_of_100_panes_lets_the_composite_through_vulkan() {
     let Some(mut vk) = vulkan() else { return };
     blurred_stack(&mut vk, &[Merge::X4]);
     assert_clean(&mut vk);
+}
+
+/// The report says when llvmpipe's loop limit may have cut a frame short: set for the unmerged
+/// stack's lists on llvmpipe (and never on another driver or the CPU backend), clear when merged.
+#[test]
+fn the_report_flags_lists_beyond_llvmpipes_loop_limit() {
+    let mut image = LayeredImage::new(40, 36, 21).unwrap();
+    for y in 0..36 {
+        for x in 0..40 {
+            for k in 0..20 {
+                image.push(x, y, Fragment { color: [0.001, 0.0, 0.0], alpha: 0.001, depth: 1.2 + 0.001 * k as f32 }).unwrap();
+            }
+            image.push(x, y, Fragment::opaque([0.0, 1.0, 0.0], 1.5)).unwrap();
+        }
+    }
+    let lens = test_lens(0.03);
+    let mut backends: Vec<Box<dyn Backend>> = vec![Box::new(CpuBackend::new())];
+    if let Some(vk) = vulkan() {
+        backends.push(Box::new(vk));
+    }
+    for b in &mut backends {
+        let llvmpipe = b.driver().contains("llvmpipe");
+        for merge in [Merge::None, Merge::X4] {
+            let out = splat(b.as_mut(), &image, &lens, &SplatOptions { merge, ..Default::default() }).unwrap();
+            let long = out.report.longest_list_wanted > LLVMPIPE_SAFE_LIST;
+            assert_eq!(long, merge == Merge::None, "{merge:?}: longest list {}", out.report.longest_list_wanted);
+            assert_eq!(out.report.driver_loop_limit, llvmpipe && long, "{merge:?} on {}", b.driver());
+            assert_eq!(out.report.summary().contains("llvmpipe ends"), out.report.driver_loop_limit);
+        }
+    }
 }
 
 /// An EXR whose alpha is 0 everywhere (colour not black, depth finite): read as light that hides

@@ -21,7 +21,7 @@ use dof_shaders::splat::pack::{PACK, splat_pack};
 use dof_shaders::splat::plan::{splat_plan_finish, splat_plan_reduce};
 use dof_shaders::splat::{FLAG_UMBRA_MERGE, MAX_RINGS, SplatParams, TILE_SIZES, block_for, stats};
 pub use options::{Merge, SplatOptions, SplatPlanReport};
-pub use report::SplatReport;
+pub use report::{LLVMPIPE_SAFE_LIST, SplatReport};
 
 /// Most tile-list entries a context may hold: 2^29, so that each list buffer stays within 2 GiB.
 /// Measured on an NVIDIA H100 (driver 580.159.04): a 3840x2160 unmerged frame whose list buffers
@@ -482,6 +482,7 @@ impl SplatContext {
             overflow_entries: c(stats::OVERFLOW_ENTRIES) as u64,
             longest_list_wanted: c(stats::MAX_CAPACITY),
             list_top: c(stats::LIST_TOP) as u64,
+            driver_loop_limit: c(stats::MAX_CAPACITY) > LLVMPIPE_SAFE_LIST && backend.driver().contains("llvmpipe"),
             sort: self.sort.stats_of(backend, slot)?,
             early_out_pixels: c(stats::EARLY_OUT),
             skipped_entries: c(stats::SKIPPED_ENTRIES),

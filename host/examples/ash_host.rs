@@ -49,6 +49,7 @@ use dof_core::frame::{
     SplatContextDesc, SplatOptions,
 };
 use dof_shaders::slot::SLOT_WORDS;
+use dof_shaders::tonemap::tonemap_channel;
 use glam::Mat4;
 use std::ffi::{CStr, c_char, c_void};
 use std::path::PathBuf;
@@ -590,21 +591,16 @@ impl CpuCheck {
     }
 }
 
-/// Writes `image` as an EXR (32-bit float RGB) and a PNG preview (clamped to [0, 1], sRGB).
+/// Writes `image` as an EXR (32-bit float RGB) and a PNG preview (the library's tone map,
+/// `dof_shaders::tonemap::tonemap_channel`, as the `dof` command's previews).
 fn write_image(path: &std::path::Path, image: &Rgb) -> Result<()> {
-    let (w, h) = (image.width as usize, image.height as usize);
-    let at = |x: usize, y: usize| image.data[y * w + x];
-    exr::prelude::write_rgb_file(path.with_extension("exr"), w, h, |x, y| {
-        let c = at(x, y);
+    let w = image.width as usize;
+    exr::prelude::write_rgb_file(path.with_extension("exr"), w, image.height as usize, |x, y| {
+        let c = image.data[y * w + x];
         (c[0], c[1], c[2])
     })
     .with_context(|| format!("writing {}", path.with_extension("exr").display()))?;
-    let srgb = |v: f32| {
-        let v = v.clamp(0.0, 1.0);
-        let e = if v <= 0.003_130_8 { 12.92 * v } else { 1.055 * v.powf(1.0 / 2.4) - 0.055 };
-        (e * 255.0 + 0.5) as u8
-    };
-    let bytes: Vec<u8> = image.data.iter().flat_map(|c| c.map(srgb)).collect();
+    let bytes: Vec<u8> = image.data.iter().flat_map(|c| c.map(|v| (tonemap_channel(v, 1.0) * 255.0).round() as u8)).collect();
     let file = std::fs::File::create(path.with_extension("png")).with_context(|| format!("creating {}", path.display()))?;
     let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), image.width, image.height);
     encoder.set_color(png::ColorType::Rgb);

@@ -25,7 +25,7 @@
 use dof::eval::methods::{MethodInput, evaluated_methods};
 use dof::io::tonemap::tonemap;
 use dof::layers::{LayeredImage, RgbImage};
-use dof::metrics::squared_error;
+use dof::metrics::{psnr_of_mse, squared_error};
 use dof::scene::{
     Camera, LayerOptions, Lighting, Material, Primitive, ReferenceOptions, Scene, Shape, ThinLens, Vec3, builtin, raycast_layers, reference,
 };
@@ -165,7 +165,7 @@ fn add(a: &RgbImage, b: &RgbImage) -> RgbImage {
 }
 
 fn psnr(sum: f64, pixels: usize) -> f64 {
-    -10.0 * (sum / (3 * pixels.max(1)) as f64).log10()
+    psnr_of_mse(sum / (3 * pixels.max(1)) as f64)
 }
 
 /// "full / region" PSNR of `a` against `r` on the evaluation's display transform.

@@ -118,6 +118,9 @@ pub struct SplatContext {
     /// Each stage's buffers kept apart instead of one stage's reused for a later one (two more
     /// list-sized buffers): only for tests that compare every stage (`crate::testing`).
     distinct_stages: bool,
+    /// Whether the backend runs on llvmpipe (lavapipe), whose loop limit long lists reach
+    /// ([`LLVMPIPE_SAFE_LIST`]); the driver is known at creation.
+    llvmpipe: bool,
 }
 
 /// Checks the options against what the kernels support; returns the configured radius cap.
@@ -264,6 +267,7 @@ impl SplatContext {
             in_flight,
             name: "multilayer",
             distinct_stages,
+            llvmpipe: backend.driver().contains("llvmpipe"),
         };
         super::io::ready(backend, ctx, &kernels, &[], Self::destroy)
     }
@@ -482,7 +486,7 @@ impl SplatContext {
             overflow_entries: c(stats::OVERFLOW_ENTRIES) as u64,
             longest_list_wanted: c(stats::MAX_CAPACITY),
             list_top: c(stats::LIST_TOP) as u64,
-            driver_loop_limit: c(stats::MAX_CAPACITY) > LLVMPIPE_SAFE_LIST && backend.driver().contains("llvmpipe"),
+            driver_loop_limit: self.llvmpipe && c(stats::MAX_CAPACITY) > LLVMPIPE_SAFE_LIST,
             sort: self.sort.stats_of(backend, slot)?,
             early_out_pixels: c(stats::EARLY_OUT),
             skipped_entries: c(stats::SKIPPED_ENTRIES),

@@ -20,7 +20,8 @@
 //! 3. **Splat kernels and an oracle**: the emitters' fragments splatted on the host without
 //!    occlusion (kernel 0 is splatting's own weight and reproduces the method's emitter image) with
 //!    other kernels, and every sub-sample splatted from its own position (what a fragment with a
-//!    sub-pixel position could do).
+//!    sub-pixel position could do), and the resolve's clusters splatted from their centroids (what a
+//!    slot with a sub-pixel position could do).
 
 use dof::eval::methods::{MethodInput, evaluated_methods};
 use dof::io::tonemap::tonemap;
@@ -132,6 +133,21 @@ fn main() -> Result<()> {
                 pair(&total, &full[0], &mask),
                 pair(&total, &converged, &mask)
             );
+            // What a slot with a sub-pixel position could do: the resolve's clusters (5% depth
+            // gap) splatted from their centroids; and, with no gap, each sub-sample on its own
+            // (the oracle above with the kernel varied).
+            for (gap, what) in [(0.05, "each pixel's clusters from their centroid"), (0.0, "each sub-sample from its own position")] {
+                for k in [Kernel::Splat, Kernel::DiscBox] {
+                    let sim = splat_groups(&fine_layers.layers, &fine_lens, fine_layers.margin, side, gap, k);
+                    let total = add(&rest, &sim);
+                    println!(
+                        "  {what}, {:44}: total against uniform {} | against aimed {}",
+                        k.name(),
+                        pair(&total, &full[0], &mask),
+                        pair(&total, &converged, &mask)
+                    );
+                }
+            }
         }
     }
     Ok(())
@@ -447,6 +463,59 @@ fn splat_subsamples(fine: &LayeredImage, fine_lens: &ThinLens, fine_margin: u32,
                     let color = f.color.map(|c| c / (s * s));
                     spread(&mut image, cx, cy, fine_lens.coc_radius_px(f.depth) / s, Kernel::DiscBox, color);
                 }
+            }
+        }
+    }
+    image
+}
+
+/// The fragments a resolve with sub-pixel positions would make: per pixel, the coloured sub-sample
+/// fragments of `fine` grouped by depth (a relative `gap`, as the resolve's clusters; 0 leaves
+/// every sub-sample of distinct depth alone), each group splatted once from its sub-samples'
+/// centroid with their summed colour / side², with kernel `k`.
+fn splat_groups(fine: &LayeredImage, fine_lens: &ThinLens, fine_margin: u32, side: u32, gap: f32, k: Kernel) -> RgbImage {
+    let mut image = RgbImage::new(WIDTH, HEIGHT);
+    let s = side as f32;
+    let m = fine_margin as i64;
+    for py in -(m / side as i64 + 1)..(HEIGHT as i64 + m / side as i64 + 1) {
+        for px in -(m / side as i64 + 1)..(WIDTH as i64 + m / side as i64 + 1) {
+            // (depth, x, y, colour) of every coloured sub-sample fragment of pixel (px, py).
+            let mut subs: Vec<(f32, f32, f32, [f32; 3])> = Vec::new();
+            for j in 0..side as i64 {
+                for i in 0..side as i64 {
+                    let (fx, fy) = (px * side as i64 + i + m, py * side as i64 + j + m);
+                    if fx < 0 || fy < 0 || fx >= fine.width as i64 || fy >= fine.height as i64 {
+                        continue;
+                    }
+                    for f in fine.pixel(fx as u32, fy as u32) {
+                        if f.color != [0.0; 3] && f.depth.is_finite() {
+                            let cx = (fx as f32 - fine_margin as f32 + 0.5) / s;
+                            let cy = (fy as f32 - fine_margin as f32 + 0.5) / s;
+                            subs.push((f.depth, cx, cy, f.color));
+                        }
+                    }
+                }
+            }
+            subs.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let mut start = 0;
+            while start < subs.len() {
+                let z0 = subs[start].0;
+                let mut end = start;
+                while end < subs.len() && subs[end].0 <= z0 * (1.0 + gap) {
+                    end += 1;
+                }
+                let g = &subs[start..end];
+                let n = g.len() as f32;
+                let (cx, cy) = (g.iter().map(|v| v.1).sum::<f32>() / n, g.iter().map(|v| v.2).sum::<f32>() / n);
+                let z = g.iter().map(|v| v.0).sum::<f32>() / n;
+                let mut color = [0.0f32; 3];
+                for v in g {
+                    for c in 0..3 {
+                        color[c] += v.3[c] / (s * s);
+                    }
+                }
+                spread(&mut image, cx, cy, fine_lens.coc_radius_px(z) / s, k, color);
+                start = end;
             }
         }
     }

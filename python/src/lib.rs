@@ -194,7 +194,9 @@ fn rgbz_image(rgb: ArrayViewD<'_, f32>, depth: ArrayViewD<'_, f32>) -> PyResult<
 }
 
 /// A multi-layer array (H, W, L, 4: r, g, b, depth; or 5 with alpha last) and its counts (H, W).
-fn layered_image(frags: ArrayViewD<'_, f32>, counts: ArrayViewD<'_, i64>) -> PyResult<LayeredImage> {
+/// The colour is premultiplied by alpha (the library's slots, OpenEXR's convention, what
+/// `read_exr(layers=True)` returns) unless `straight_alpha`, when it is premultiplied here.
+fn layered_image(frags: ArrayViewD<'_, f32>, counts: ArrayViewD<'_, i64>, straight_alpha: bool) -> PyResult<LayeredImage> {
     let s = frags.shape();
     let (h, w, l, c) = (s[0], s[1], s[2], s[3]);
     if c != 4 && c != 5 {
@@ -222,8 +224,9 @@ fn layered_image(frags: ArrayViewD<'_, f32>, counts: ArrayViewD<'_, i64>) -> PyR
                 if !(0.0..=1.0).contains(&alpha) {
                     return Err(value_error(format!("alpha {alpha} of layer {k} at ({x}, {y}) must lie in [0, 1]")));
                 }
-                // Straight here, premultiplied in a `Fragment` (the library's slots).
-                let color = dof::dof_shaders::slot::premultiply([f(0), f(1), f(2)], alpha);
+                // A `Fragment` holds premultiplied colour (the library's slots).
+                let color =
+                    if straight_alpha { dof::dof_shaders::slot::premultiply([f(0), f(1), f(2)], alpha) } else { [f(0), f(1), f(2)] };
                 image.push(x as u32, y as u32, Fragment { color, alpha, depth: f(3) }).map_err(py_err)?;
             }
         }
@@ -250,7 +253,10 @@ fn to_rgb_array(image: &RgbImage) -> Array3<f32> {
 ///   - `image` RGB (H, W, 3) and `depth` (H, W): linear colour and planar depth in scene units
 ///     (> 0; +inf is the background), or
 ///   - `image` a multi-layer array (H, W, L, 4) of fragments (r, g, b, depth), front to back, or
-///     (H, W, L, 5) with a straight alpha last, and `depth` the fragment counts per pixel (H, W).
+///     (H, W, L, 5) with alpha last, and `depth` the fragment counts per pixel (H, W). The colour
+///     of a fragment with alpha is **premultiplied** by it, as OpenEXR stores it and as
+///     `read_exr(layers=True)` returns it: a fragment with alpha 0 and a colour is light that hides
+///     nothing. With `straight_alpha=True` the colour is straight and is premultiplied here.
 /// Arrays of other float types are converted to float32.
 ///
 /// The lens, as `dof render` takes it for an EXR: `focus` (planar focus distance, scene units)
@@ -269,7 +275,7 @@ fn to_rgb_array(image: &RgbImage) -> Array3<f32> {
 /// Raises ValueError on bad input (shapes, depths, lens, options) and RuntimeError otherwise (no
 /// Vulkan driver, a device failure), with the library's messages.
 #[pyfunction]
-#[pyo3(signature = (image, depth, *, focus, aperture_radius=None, f_number=None, focal_length=None, sensor_height=24.0, yfov=40.0, pixels_per_unit=None, metres_per_unit=1.0, method="multilayer", backend="cpu", **options))]
+#[pyo3(signature = (image, depth, *, focus, aperture_radius=None, f_number=None, focal_length=None, sensor_height=24.0, yfov=40.0, pixels_per_unit=None, metres_per_unit=1.0, method="multilayer", backend="cpu", straight_alpha=false, **options))]
 #[allow(clippy::too_many_arguments)]
 fn blur<'py>(
     py: Python<'py>,
@@ -285,6 +291,7 @@ fn blur<'py>(
     metres_per_unit: f32,
     method: &str,
     backend: &str,
+    straight_alpha: bool,
     options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyArray3<f32>>> {
     let info = dof::frame::registry::method(method).map_err(py_err)?;
@@ -296,7 +303,7 @@ fn blur<'py>(
         }
         4 => {
             let counts: PyArrayLikeDyn<'py, i64, AllowTypeChange> = depth.extract()?;
-            layered_image(image.as_array(), counts.as_array())?
+            layered_image(image.as_array(), counts.as_array(), straight_alpha)?
         }
         n => {
             return Err(value_error(format!(
@@ -346,7 +353,8 @@ fn has_depth_channel(path: &std::path::Path) -> bool {
 /// ValueError: read it with `layers=True`.
 ///
 /// With `layers=True` returns `(fragments, counts)`: (H, W, L, 5) float32 fragments (r, g, b,
-/// depth, alpha; colour straight, front to back) and (H, W) uint32 counts, which `blur` takes.
+/// depth, alpha; colour premultiplied by alpha, as the file holds it; front to back) and (H, W)
+/// uint32 counts, which `blur` takes as they are.
 ///
 /// Raises ValueError naming the file and the problem on a missing, unreadable or unusable file.
 #[pyfunction]

@@ -74,6 +74,52 @@ def test_multilayer_input_and_counts():
         dof.blur(frags, np.full((h, w), 3), focus=4.0, aperture_radius=0.5)
 
 
+def two_layers(front, alpha, back=(0.1, 0.9, 0.1), h=8, w=12):
+    """Every pixel: a fragment of colour `front` and coverage `alpha` at z=1 over an opaque `back`
+    at z=2."""
+    frags = np.zeros((h, w, 2, 5), np.float32)
+    frags[:, :, 0] = [*front, 1.0, alpha]
+    frags[:, :, 1] = [*back, 2.0, 1.0]
+    return frags, np.full((h, w), 2)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_alpha_is_premultiplied(backend):
+    """Fragments with alpha hold premultiplied colour (as OpenEXR and read_exr have it): in focus
+    every method returns the front-to-back composite, front + (1 - alpha) * back; straight colour
+    gives the same with straight_alpha=True."""
+    premultiplied = two_layers((0.4, 0.2, 0.1), 0.5)
+    straight = two_layers((0.8, 0.4, 0.2), 0.5)
+    composite = np.array([0.45, 0.65, 0.15], np.float32)
+    names = [m["name"] for m in dof.methods()] if backend == "cpu" else ["multilayer", "gather"]
+    for method in names:
+        out = dof.blur(*premultiplied, focus=1.0, aperture_radius=1e-7, method=method, backend=backend, spp=4)
+        np.testing.assert_allclose(out, np.broadcast_to(composite, out.shape), atol=1e-4, err_msg=method)
+        out2 = dof.blur(*straight, focus=1.0, aperture_radius=1e-7, method=method, backend=backend, spp=4, straight_alpha=True)
+        np.testing.assert_allclose(out2, out, atol=1e-6, err_msg=method)
+
+
+def test_alpha_zero_is_light_that_hides_nothing():
+    """A premultiplied fragment of alpha 0 with a colour adds its light and hides nothing; as
+    straight colour it is nothing at all."""
+    frags, counts = two_layers((0.3, 0.3, 0.3), 0.0, back=(0.1, 0.1, 0.1))
+    out = dof.blur(frags, counts, focus=1.0, aperture_radius=1e-7)
+    np.testing.assert_allclose(out, np.full(out.shape, 0.4, np.float32), atol=1e-5)
+    out = dof.blur(frags, counts, focus=1.0, aperture_radius=1e-7, straight_alpha=True)
+    np.testing.assert_allclose(out, np.full(out.shape, 0.1, np.float32), atol=1e-5)
+
+
+def test_read_exr_layers_feed_blur_as_they_are():
+    """An RGBA+Z file read as layers: its premultiplied colour goes into blur unchanged, so in
+    focus the result is the file's own composite (read_exr without layers)."""
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "fuzz", "corpus", "exr", "rgbaz-float.exr")
+    frags, counts = dof.read_exr(path, layers=True)
+    assert frags.shape[3] == 5 and (frags[..., 4][counts > 0] < 1.0).any(), "the corpus file has alpha below 1"
+    rgb, _ = dof.read_exr(path)
+    out = dof.blur(frags, counts, focus=1.0, aperture_radius=1e-7)
+    np.testing.assert_allclose(out, rgb, atol=1e-5)
+
+
 @pytest.mark.parametrize(
     "lens, message",
     [

@@ -57,17 +57,19 @@ def parse():
     p.add_argument("--variant", default="auto", help="Mitsuba variant (default: llvm_ad_rgb if it runs, else scalar_rgb)")
     p.add_argument("--out", default="out/independent", type=Path)
     p.add_argument("--mitsuba-cache", type=Path,
-                   help="reuse Mitsuba's halves from DIR/SCENE-WxH-SPPspp when there (they depend on the scene, size and spp only), else render and store them there")
+                   help="reuse Mitsuba's halves from DIR/SCENE-WxH-SPPspp-VARIANT when there (they depend on the scene, size, spp and variant only), else render and store them there; without it they are always rendered")
     p.add_argument("--dof", help="a built dof binary (default: build the dev profile, as `cargo run --bin dof` does)")
     return p.parse_args()
 
 
-def mitsuba_halves(mi, xml, spp, folder):
-    """Two independent halves and their pooled mean, as EXRs; returns (paths, samples, seconds)."""
+def mitsuba_halves(mi, xml, spp, folder, reuse):
+    """Two independent halves and their pooled mean, as EXRs in `folder`; with `reuse` (a
+    `--mitsuba-cache` folder, named for the scene, size, samples and variant) those already there
+    are taken as they are. Returns (paths, samples, seconds)."""
     start = time.perf_counter()
     n = [spp - spp // 2, spp // 2]
     paths = [folder / "mitsuba-a.exr", folder / "mitsuba-b.exr", folder / "mitsuba.exr"]
-    if all(path.exists() for path in paths):
+    if reuse and all(path.exists() for path in paths):
         return paths, n, 0.0
     halves = [render_mitsuba(mi, xml, k, seed) for k, seed in zip(n, (1, 2))]
     pooled = (halves[0] * n[0] + halves[1] * n[1]) / (n[0] + n[1])
@@ -99,8 +101,8 @@ def check_scene(dof, mi, args, name, meta, xml):
     folder.mkdir(parents=True, exist_ok=True)
     size = ["--width", args.width, "--height", args.height]
     print(f"{name}: Mitsuba, {args.spp} spp in two halves...", file=sys.stderr)
-    cache = args.mitsuba_cache / f"{name}-{args.width}x{args.height}-{args.spp}spp" if args.mitsuba_cache else folder
-    (half_a, half_b, mitsuba), n, mitsuba_s = mitsuba_halves(mi, xml, args.spp, cache)
+    cache = args.mitsuba_cache / f"{name}-{args.width}x{args.height}-{args.spp}spp-{mi.variant()}" if args.mitsuba_cache else folder
+    (half_a, half_b, mitsuba), n, mitsuba_s = mitsuba_halves(mi, xml, args.spp, cache, reuse=args.mitsuba_cache is not None)
     result = {"scene": name, "width": args.width, "height": args.height, "mitsuba_spp": args.spp,
               "mitsuba_seconds": round(mitsuba_s, 1), "notes": meta["notes"], "rows": []}
     print(f"{name}: project reference...", file=sys.stderr)

@@ -601,7 +601,8 @@ fn write_image(path: &std::path::Path, image: &Rgb) -> Result<()> {
     })
     .with_context(|| format!("writing {}", path.with_extension("exr").display()))?;
     let bytes: Vec<u8> = image.data.iter().flat_map(|c| c.map(|v| (tonemap_channel(v, 1.0) * 255.0).round() as u8)).collect();
-    let file = std::fs::File::create(path.with_extension("png")).with_context(|| format!("creating {}", path.display()))?;
+    let file =
+        std::fs::File::create(path.with_extension("png")).with_context(|| format!("creating {}", path.with_extension("png").display()))?;
     let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), image.width, image.height);
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);

@@ -35,6 +35,21 @@ fn modules(src: &Path) -> BTreeMap<Module, PathBuf> {
     out
 }
 
+/// The length of the character literal that `s` starts with (`'x'`, `'"'`, `'\''`, `'\u{..}'`),
+/// or `None` (not a quote, a lifetime, a label).
+fn char_literal(s: &str) -> Option<usize> {
+    let mut chars = s.char_indices();
+    if chars.next()?.1 != '\'' {
+        return None;
+    }
+    if chars.next()?.1 == '\\' {
+        // An escape: the escaped character, then up to the closing quote.
+        return s.get(3..)?.find('\'').map(|i| i + 4);
+    }
+    let (i, q) = chars.next()?;
+    (q == '\'').then_some(i + 1)
+}
+
 /// The source without comments and without its `#[cfg(test)] mod …` blocks (tests may import
 /// anything, and `super` inside them is one level deeper than the file).
 fn code(text: &str) -> String {
@@ -45,6 +60,10 @@ fn code(text: &str) -> String {
             rest = r.find('\n').map_or("", |n| &r[n..]);
         } else if let Some(r) = rest.strip_prefix("/*") {
             rest = r.find("*/").map_or("", |n| &r[n + 2..]);
+        } else if let Some(n) = char_literal(rest) {
+            // A character literal ('"' would otherwise open a string).
+            out.push_str("' '");
+            rest = &rest[n..];
         } else if rest.starts_with('"') {
             // A string literal: kept out of the paths (it may hold "//" or "crate::").
             let bytes = rest.as_bytes();

@@ -27,6 +27,7 @@ use dof::eval::methods::{MethodInput, evaluated_methods};
 use dof::io::tonemap::tonemap;
 use dof::layers::{LayeredImage, RgbImage};
 use dof::metrics::{psnr_of_mse, squared_error};
+use dof::scene::builtin::SplitMix;
 use dof::scene::{
     Camera, LayerOptions, Lighting, Material, Primitive, ReferenceOptions, Scene, Shape, ThinLens, Vec3, builtin, raycast_layers, reference,
 };
@@ -215,20 +216,6 @@ fn emitter_share(a: &RgbImage, r: &RgbImage, emitters: &RgbImage, mask: &[bool])
     sat / all.max(f64::MIN_POSITIVE)
 }
 
-/// SplitMix64 as uniform floats in [0, 1).
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f32 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^= z >> 31;
-        (z >> 40) as f32 / (1u64 << 24) as f32
-    }
-}
-
 /// The emitters' light, each emissive sphere integrated with samples aimed at it (module docs).
 fn aimed_emitters(scene: &Scene, camera: &Camera, lens: &ThinLens, seed: u64) -> RgbImage {
     let frame = camera.frame().expect("valid camera");
@@ -271,7 +258,7 @@ fn aimed_emitter(
     // Pixels that can see the sphere lie within its CoC plus its projected radius (with margin:
     // the per-emitter check found every hit well inside).
     let support = lens.coc_radius_px(z) + 1.5 * rho / (2.0 * frame.pixel_footprint_radius(z)) + 1.0;
-    let mut rng = Rng(seed ^ ((id as u64) << 32));
+    let mut rng = SplitMix(seed ^ ((id as u64) << 32));
     let (x0, x1) = (((cx - support).floor() as i64).max(0), ((cx + support).ceil() as i64).min(w - 1));
     let (y0, y1) = (((cy - support).floor() as i64).max(0), ((cy + support).ceil() as i64).min(h - 1));
     for py in y0..=y1 {
@@ -283,14 +270,14 @@ fn aimed_emitter(
             }
             let mut cover = 0.0f64;
             for k in 0..PIXEL_SIDE * PIXEL_SIDE {
-                let sx = bx0 + (bx1 - bx0) * ((k % PIXEL_SIDE) as f32 + rng.next()) / PIXEL_SIDE as f32;
-                let sy = by0 + (by1 - by0) * ((k / PIXEL_SIDE) as f32 + rng.next()) / PIXEL_SIDE as f32;
+                let sx = bx0 + (bx1 - bx0) * ((k % PIXEL_SIDE) as f32 + rng.next_f32()) / PIXEL_SIDE as f32;
+                let sy = by0 + (by1 - by0) * ((k / PIXEL_SIDE) as f32 + rng.next_f32()) / PIXEL_SIDE as f32;
                 let f = frame.eye + focus * frame.direction(sx, sy);
                 let Some((lo, hi)) = lens_box(frame, f, c, rho, a, focus) else { continue };
                 let mut hits = 0u32;
                 for j in 0..LENS_SIDE * LENS_SIDE {
-                    let lx = lo[0] + (hi[0] - lo[0]) * ((j % LENS_SIDE) as f32 + rng.next()) / LENS_SIDE as f32;
-                    let ly = lo[1] + (hi[1] - lo[1]) * ((j / LENS_SIDE) as f32 + rng.next()) / LENS_SIDE as f32;
+                    let lx = lo[0] + (hi[0] - lo[0]) * ((j % LENS_SIDE) as f32 + rng.next_f32()) / LENS_SIDE as f32;
+                    let ly = lo[1] + (hi[1] - lo[1]) * ((j / LENS_SIDE) as f32 + rng.next_f32()) / LENS_SIDE as f32;
                     if lx * lx + ly * ly <= a * a {
                         let ray = frame.lens_ray(sx, sy, lx, ly, focus);
                         hits += scene.first_hit(&ray, 0.0).is_some_and(|hit| hit.primitive == id) as u32;

@@ -176,11 +176,13 @@ fn columns() -> Result<BuiltinScene> {
     })
 }
 
-/// SplitMix64: a small fixed generator so the scene does not depend on a crate's algorithm.
-struct SplitMix(u64);
+/// SplitMix64: a small fixed generator so the scenes (and the examples' estimators) do not depend
+/// on a crate's algorithm. The state is the seed.
+pub struct SplitMix(pub u64);
 
 impl SplitMix {
-    fn next_f32(&mut self) -> f32 {
+    /// The next uniform float in [0, 1) (24 bits).
+    pub fn next_f32(&mut self) -> f32 {
         self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);

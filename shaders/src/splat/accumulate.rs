@@ -225,7 +225,11 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                 if live[l] {
                     end[l] = first_behind(sh, n, get(sh, SHARP_Z, q));
                     stop = if end[l] > stop { end[l] } else { stop };
-                    walking += 1;
+                    // A pixel walks until it saturates or reaches its stop; one whose stop is
+                    // the chunk's first entry does not walk at all.
+                    if end[l] > 0 {
+                        walking += 1;
+                    }
                 }
                 l += 1;
             }
@@ -249,6 +253,10 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                                 visited[l] = k + 1;
                                 walking -= 1;
                             }
+                        }
+                        // At its stop unsaturated: done walking, still live for what follows.
+                        if live[l] && k + 1 == end[l] {
+                            walking -= 1;
                         }
                     }
                     l += 1;

@@ -116,6 +116,38 @@ fn the_ray_caster_keeps_a_translucent_fragment_and_what_it_does_not_hide() {
 }
 
 #[test]
+fn a_full_pixel_keeps_what_its_translucent_last_slot_lets_through() {
+    // Six panes of opacity 0.3 at depths 1.5 .. 2.75 in front of the wall (and the sky above it):
+    // more translucent surfaces than the 4 slots. The last slot takes the rest "over" (the fourth
+    // pane, the two behind it, then the wall or the sky), so the pixel's composite is exact.
+    let colours = [[0.9, 0.1, 0.1], [0.1, 0.9, 0.1], [0.1, 0.1, 0.9], [0.8, 0.8, 0.1], [0.1, 0.8, 0.8], [0.8, 0.1, 0.8]];
+    let mut prims = vec![Primitive { shape: facing_quad(-20.0, -20.0, 20.0, 0.0, -6.0), material: Material::Emissive(BACK) }];
+    for (i, c) in colours.iter().enumerate() {
+        let z = 1.5 + 0.25 * i as f32;
+        prims.push(Primitive { shape: facing_quad(-0.6 * z, -0.3 * z, 0.6 * z, 0.3 * z, -z), material: Material::Emissive(*c) });
+    }
+    let mut scene = Scene::new(prims, Lighting::default()).unwrap().with_background(SKY).unwrap();
+    for i in 1..=colours.len() {
+        scene = scene.with_alpha(i, 0.3).unwrap();
+    }
+    let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), 60f32.to_radians(), 64, 48);
+    let options = LayerOptions { guard_band: GuardBand::Off, disocclusion: false, ..Default::default() };
+    let ml = raycast_layers(&scene, &camera, &lens(6.0, 0.02), &options).unwrap();
+    let l = ml.layers.max_layers as usize;
+    assert_eq!(l, 4);
+    let (image, _) = ml.layers.front();
+    for (x, y, back) in [(32usize, 30usize, BACK), (32, 17, SKY)] {
+        let p = y * 64 + x;
+        assert_eq!(ml.layers.counts[p], 4, "({x}, {y}): full");
+        let last = ml.layers.fragments[p * l + 3];
+        assert!((last.depth - 2.25).abs() < 1e-5, "the last slot keeps the fourth pane's depth: {}", last.depth);
+        assert!((last.alpha - 1.0).abs() < 1e-6, "and hides all behind it once the wall or sky is in: {}", last.alpha);
+        let want = colours.iter().rev().fold(back, |behind, c| over(0.3, *c, behind));
+        assert!(close(image.data[p], want, 1e-5), "({x}, {y}): {:?}, want {want:?}", image.data[p]);
+    }
+}
+
+#[test]
 fn blur_through_a_pane_keeps_the_energy() {
     // A pane out of focus in the middle of a uniform wall, all inside the frame with its blur: the
     // thin lens moves light between pixels but neither adds nor removes it.

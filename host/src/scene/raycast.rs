@@ -14,6 +14,11 @@
 //!    A translucent hit ([`Scene::alpha`] below 1) is kept with its opacity as the fragment's
 //!    coverage (colour premultiplied by it), but sets no umbra: what lies behind it stays visible through it, so only an opaque
 //!    fragment ends a pixel's layers early. A hit of opacity 0 shows and hides nothing: skipped.
+//!    A pixel whose `max_layers` slots are full with the last one translucent takes what lies
+//!    behind it (the next hits up to an opaque one, else the background) composited "over" into
+//!    that last slot, which keeps its depth, as the area resolve does with clusters beyond
+//!    `max_layers` ([`dof_shaders::resolve`]): a deep stack of panes keeps its light and what it
+//!    lets through.
 //! 3. **Disocclusion buffer** (§4.2). On the front layer, two 4-neighbours are a depth
 //!    discontinuity when exactly one is sky or `|z_a − z_b| > edge_depth_ratio · min(z_a, z_b)`.
 //!    Both pixels of such a pair tag every pixel whose centre lies within `ceil(c/2)` pixels of
@@ -209,14 +214,20 @@ fn cast_ray(
     let mut n = 0usize;
     let mut reach = 0.0f32;
     for hit in hits.iter().filter(|h| !h.self_occluded) {
-        if n == l {
+        if n == l && !(fragments[l - 1].alpha < 1.0) {
             break;
         }
         let alpha = scene.alpha(hit.primitive);
         if (n > 0 && options.umbra_threshold && hit.t < reach) || alpha <= 0.0 {
             continue;
         }
-        fragments[n] = Fragment { color: premultiply(scene.shade(ray, hit), alpha), alpha, depth: hit.t };
+        let fragment = Fragment { color: premultiply(scene.shade(ray, hit), alpha), alpha, depth: hit.t };
+        if n == l {
+            // Full behind a translucent last slot: into it (module docs, step 2).
+            fragments[l - 1] = over(fragments[l - 1], fragment);
+            continue;
+        }
+        fragments[n] = fragment;
         n += 1;
         if alpha < 1.0 {
             continue; // translucent: sets no umbra
@@ -224,13 +235,25 @@ fn cast_ray(
         let umbra = lens.umbra_length(hit.t, frame.pixel_footprint_radius(hit.t));
         reach = if umbra.is_nan() { f32::INFINITY } else { hit.t + umbra };
     }
-    // The ray escapes: the background is its deepest fragment, unless the pixel is full or the
-    // last surface's umbra reaches infinity.
-    if n < l && (n == 0 || !options.umbra_threshold || reach < f32::INFINITY) {
-        fragments[n] = Fragment { color: scene.background(), alpha: 1.0, depth: f32::INFINITY };
-        n += 1;
+    // The ray escapes: the background is its deepest fragment, unless the last surface's umbra
+    // reaches infinity; into a full pixel's translucent last slot.
+    if n == 0 || !options.umbra_threshold || reach < f32::INFINITY {
+        let background = Fragment { color: scene.background(), alpha: 1.0, depth: f32::INFINITY };
+        if n < l {
+            fragments[n] = background;
+            n += 1;
+        } else if fragments[l - 1].alpha < 1.0 {
+            fragments[l - 1] = over(fragments[l - 1], background);
+        }
     }
     n as u32
+}
+
+/// `back` composited behind `front` (premultiplied "over"), at `front`'s depth.
+fn over(front: Fragment, back: Fragment) -> Fragment {
+    let t = 1.0 - front.alpha;
+    let c = |i: usize| front.color[i] + t * back.color[i];
+    Fragment { color: [c(0), c(1), c(2)], alpha: front.alpha + t * back.alpha, depth: front.depth }
 }
 
 /// Resolves a sub-sample image (`side` times wider and higher than the result: sub-sample `(i, j)`

@@ -89,9 +89,11 @@ pub const HIGHLIGHT_MIN_EXCESS: f32 = 0.25;
 /// Beyond it a highlight stays in the gather whole, and is counted ([`STATS_CAPPED`]).
 pub const HIGHLIGHTS_PER_TILE: u32 = 8;
 /// A highlight's 8 words: centre x, y (pixels of the frame), signed CoC radius (pixels), then its
-/// colour per unit of disc weight (r, g, b), then 2 unused.
+/// colour per unit of disc weight (r, g, b), the spread of its light (pixels, [`disc_weight`]),
+/// then 1 unused.
 pub const HIGHLIGHT_WORDS: u32 = 8;
-/// A tile's highlight record: the count, the largest radius (pixels, bits of an f32), the highlights.
+/// A tile's highlight record: the count, the farthest reach of its discs (radius plus spread, pixels,
+/// bits of an f32), the highlights.
 pub const BRIGHT_TILE_WORDS: u32 = 2 + HIGHLIGHTS_PER_TILE * HIGHLIGHT_WORDS;
 /// The word of the frame's statistics buffer that counts the highlights left in the gather because
 /// their tile held [`HIGHLIGHTS_PER_TILE`] already (word 0 counts the clamped input colours).
@@ -219,19 +221,23 @@ pub fn hex_point(ring: u32, j: u32) -> [f32; 2] {
     [a[0] * r + (b[0] - a[0]) * step, a[1] * r + (b[1] - a[1]) * step]
 }
 
-/// A highlight's disc weight at a pixel whose centre is `d` pixels from the disc's centre: 1 inside,
-/// a one-pixel soft edge at `radius`.
+/// A highlight's disc weight at a pixel whose centre is `d` pixels from the disc's centre: the CoC
+/// disc of `radius` seen through a pixel and spread over the light's footprint, `spread` its mean
+/// distance from the centre (0 for the light of one pixel): 1 inside `radius − 1/2 − spread`, a
+/// soft edge `1 + 2·spread` wide out to `radius + 1/2 + spread` (splatting's weight of a fragment
+/// standing for a block of pixels, `splat::fragment::weight`, with the block's width in place of the
+/// footprint's). One pixel's light has the one-pixel soft edge of a single pixel's disc.
 #[inline]
-pub fn disc_weight(radius: f32, d: f32) -> f32 {
-    saturate(radius + 0.5 - d)
+pub fn disc_weight(radius: f32, spread: f32, d: f32) -> f32 {
+    saturate((radius + 0.5 + spread - d) / (1.0 + 2.0 * spread))
 }
 
-/// The sum of [`disc_weight`] over every pixel centre of the plane for a disc of `radius` (>= 1)
-/// centred at (`cx`, `cy`): the pixels whose weight is 1 counted row by row, the soft edge summed,
-/// so a highlight's disc keeps its energy exactly (in O(radius), not O(radius²)).
-pub fn disc_weight_sum(cx: f32, cy: f32, radius: f32) -> f32 {
-    let outer = radius + 0.5;
-    let inner = radius - 0.5;
+/// The sum of [`disc_weight`] over every pixel centre of the plane for a disc of `radius` (>= 1/2)
+/// and `spread` centred at (`cx`, `cy`): the pixels whose weight is 1 counted row by row, the soft
+/// edge summed, so a highlight's disc keeps its energy exactly (in O(radius), not O(radius²)).
+pub fn disc_weight_sum(cx: f32, cy: f32, radius: f32, spread: f32) -> f32 {
+    let outer = radius + 0.5 + spread;
+    let inner = radius - 0.5 - spread;
     let mut sum = 0.0f32;
     let mut y = crate::math::floor(cy - outer);
     let last = crate::math::floor(cy + outer);
@@ -256,7 +262,7 @@ pub fn disc_weight_sum(cx: f32, cy: f32, radius: f32) -> f32 {
             while x <= end {
                 if x < lo || x > hi {
                     let ox = x + 0.5 - cx;
-                    sum += disc_weight(radius, crate::math::sqrt(ox * ox + oy * oy));
+                    sum += disc_weight(radius, spread, crate::math::sqrt(ox * ox + oy * oy));
                 }
                 x += 1.0;
             }
@@ -276,11 +282,13 @@ struct Block {
     far_radius: f32,
     /// Valid pixels.
     count: u32,
-    /// What a [`Cut`] took out of the pixels (summed), and the centre (pixels) and signed CoC
-    /// radius (pixels) of that light, weighted by its luminance.
+    /// What a [`Cut`] took out of the pixels (summed), and the centre (pixels), signed CoC radius
+    /// (pixels) and spread (the mean distance of its pixels' centres from that centre, pixels) of
+    /// that light, weighted by its luminance.
     taken: [f32; 3],
     taken_centre: [f32; 2],
     taken_radius: f32,
+    taken_spread: f32,
 }
 
 /// What the highlight path takes out of a block's 2x2 pixels: `share[k]` of pixel `k`'s excess
@@ -345,6 +353,8 @@ fn block(p: &RingGatherParams, color: &impl Load, depth: &impl Load, hx: u32, hy
     let mut rest_b = 0.0f32;
     let mut taken = [0.0f32; 3];
     let mut taken_centre = [0.0f32; 4];
+    // Each pixel's share of the taken light's luminance, for its spread.
+    let mut taken_l = [0.0f32; 4];
     let mut k = 0u32;
     while k < 4 {
         let x = 2 * hx + k % 2;
@@ -355,6 +365,7 @@ fn block(p: &RingGatherParams, color: &impl Load, depth: &impl Load, hx: u32, hy
                 let (c, t) = cut_pixel(c, cut, k);
                 taken = [taken[0] + t[0], taken[1] + t[1], taken[2] + t[2]];
                 let l = luminance(t);
+                taken_l[k as usize] = l;
                 taken_centre = [
                     taken_centre[0] + l * (x as f32 + 0.5),
                     taken_centre[1] + l * (y as f32 + 0.5),
@@ -391,6 +402,7 @@ fn block(p: &RingGatherParams, color: &impl Load, depth: &impl Load, hx: u32, hy
             taken: z,
             taken_centre: [0.0; 2],
             taken_radius: 0.0,
+            taken_spread: 0.0,
         };
     }
     let n = count as f32;
@@ -412,13 +424,23 @@ fn block(p: &RingGatherParams, color: &impl Load, depth: &impl Load, hx: u32, hy
     // Where every pixel is wholly near, the rest is empty (its radius the near one).
     let coverage = if rest_w > 0.0 { near_w * inv } else { 1.0 };
     let centre = [centre[0] * inv, centre[1] * inv];
-    let (taken_centre, taken_radius) = if taken_centre[3] > 0.0 {
+    let (taken_centre, taken_radius, taken_spread) = if taken_centre[3] > 0.0 {
         let i = 1.0 / taken_centre[3];
-        ([taken_centre[0] * i, taken_centre[1] * i], taken_centre[2] * i)
+        let c = [taken_centre[0] * i, taken_centre[1] * i];
+        let mut spread = 0.0f32;
+        let mut k = 0u32;
+        while k < 4 {
+            if taken_l[k as usize] > 0.0 {
+                let (dx, dy) = ((2 * hx + k % 2) as f32 + 0.5 - c[0], (2 * hy + k / 2) as f32 + 0.5 - c[1]);
+                spread += taken_l[k as usize] * crate::math::sqrt(dx * dx + dy * dy);
+            }
+            k += 1;
+        }
+        (c, taken_centre[2] * i, spread * i)
     } else {
-        (centre, 2.0 * radius)
+        (centre, 2.0 * radius, 0.0)
     };
-    Block { near, coverage, near_radius, far, far_radius, count, taken, taken_centre, taken_radius }
+    Block { near, coverage, near_radius, far, far_radius, count, taken, taken_centre, taken_radius, taken_spread }
 }
 
 /// What the highlight path takes out of block (`hx`, `hy`): for each of its pixels, the share of
@@ -569,7 +591,8 @@ pub fn downsample_pass<G: Group, R: Load, M: Mem>(
                 let cut = highlight(p, &color, &depth, hx, hy);
                 if cut.any() {
                     flagged = 1;
-                    reach = absf(disc_radius(&block(p, &color, &depth, hx, hy, cut)));
+                    let b = block(p, &color, &depth, hx, hy, cut);
+                    reach = absf(disc_radius(&b)) + b.taken_spread;
                 }
             }
         }
@@ -597,7 +620,7 @@ pub fn downsample_pass<G: Group, R: Load, M: Mem>(
             // What was taken out, spread over the disc of the block's CoC, centred where its light was.
             let radius = disc_radius(&b);
             let (cx, cy) = (b.taken_centre[0], b.taken_centre[1]);
-            let scale = 1.0 / disc_weight_sum(cx, cy, absf(radius));
+            let scale = 1.0 / disc_weight_sum(cx, cy, absf(radius), b.taken_spread);
             let h = record + 2 + HIGHLIGHT_WORDS * (slot - 1);
             bright.store(h, cx.to_bits());
             bright.store(h + 1, cy.to_bits());
@@ -605,7 +628,7 @@ pub fn downsample_pass<G: Group, R: Load, M: Mem>(
             bright.store(h + 3, (b.taken[0] * scale).to_bits());
             bright.store(h + 4, (b.taken[1] * scale).to_bits());
             bright.store(h + 5, (b.taken[2] * scale).to_bits());
-            bright.store(h + 6, 0);
+            bright.store(h + 6, b.taken_spread.to_bits());
             bright.store(h + 7, 0);
         }
         if hx < hw && hy < hh {
@@ -927,8 +950,9 @@ fn highlights_at(p: &RingGatherParams, bright: &impl Load, dilated: &impl Load, 
                         let limited = minf(radius, own_back);
                         limited + open * (radius - limited)
                     };
-                    if d < reach + 0.5 {
-                        let w = disc_weight(reach, d);
+                    let spread = f32::from_bits(bright.load(h + 6));
+                    if d < reach + 0.5 + spread {
+                        let w = disc_weight(reach, spread, d);
                         let c =
                             [f32::from_bits(bright.load(h + 3)), f32::from_bits(bright.load(h + 4)), f32::from_bits(bright.load(h + 5))];
                         if s < 0.0 {

@@ -246,8 +246,9 @@ pub fn disc_weight_sum(cx: f32, cy: f32, radius: f32, spread: f32) -> f32 {
         let b2 = outer * outer - oy * oy;
         if b2 > 0.0 {
             let b = crate::math::sqrt(b2);
-            let a2 = inner * inner - oy * oy;
-            // Whole pixels: centres within the inner radius.
+            // Whole pixels: centres within the inner radius (none when the soft edge reaches the
+            // centre, a footprint wider than the CoC disc).
+            let a2 = if inner > 0.0 { inner * inner - oy * oy } else { -1.0 };
             let (lo, hi) = if a2 > 0.0 {
                 let a = crate::math::sqrt(a2);
                 (crate::math::ceil(cx - a - 0.5), crate::math::floor(cx + a - 0.5))

@@ -6,16 +6,10 @@
 //! (`OUT.exr`: the aimed reference, to compare other renderers with through `dof compare`)
 //! (or `cargo build --workspace --example highlight_rims` and `target/debug/examples/highlight_rims`).
 //!
-//! 1. **An aimed reference for the emitters.** The thin-lens reference samples pixel × lens
-//!    uniformly, so a pixel that a saturating bokeh disc overlaps by less than about one sample in
-//!    `spp` comes out black, and two seeds disagree there. Here the emitters' light is integrated
-//!    with samples aimed at each emissive sphere: stratified pixel points over the part of the
-//!    pixel that can see the sphere, and per pixel point lens points drawn only in the bounding box
-//!    of the sphere's projection, from the pixel point's focus-plane point, onto the lens plane (the
-//!    whole lens when that projection is unbounded); every ray is traced through the whole scene,
-//!    so occlusion is exact. The rest of the image is the uniform reference of the scene with the
-//!    emitters black; the sum is the converged image up to the aimed estimator's own noise (two
-//!    seeds are compared, and its energy against the uniform reference's).
+//! 1. **An aimed reference for the emitters** (`dof::scene::aimed`, what `ReferenceOptions::
+//!    aimed_emitters` adds to the reference): the emitters' light integrated with samples aimed at
+//!    each sphere, plus the uniform reference of the scene with the emitters black; two seeds are
+//!    compared, and its energy against the uniform reference's.
 //! 2. **Methods** (pinhole, multi-layer splatting unmerged, the gather) against both references.
 //! 3. **Splat kernels and an oracle**: the emitters' fragments splatted on the host without
 //!    occlusion (kernel 0 is splatting's own weight and reproduces the method's emitter image) with
@@ -27,18 +21,15 @@ use dof::eval::methods::{MethodInput, evaluated_methods};
 use dof::io::tonemap::tonemap;
 use dof::layers::{LayeredImage, RgbImage};
 use dof::metrics::{psnr_of_mse, squared_error};
-use dof::scene::builtin::SplitMix;
-use dof::scene::{
-    Camera, LayerOptions, Lighting, Material, Primitive, ReferenceOptions, Scene, Shape, ThinLens, Vec3, builtin, raycast_layers, reference,
-};
+use dof::scene::aimed::{aimed_emitters, emitters_only, without_emitters};
+use dof::scene::{LayerOptions, ReferenceOptions, Scene, ThinLens, builtin, raycast_layers, reference};
 use dof::{Backend, CpuBackend, Result};
 use dof_shaders::resolve::grid_side;
 use dof_shaders::splat::fragment::weight;
-use rayon::prelude::*;
 
 const WIDTH: u32 = 320;
 const HEIGHT: u32 = 180;
-/// Pixel points (per side) and lens points (per side) of the aimed estimator.
+/// Pixel points (per side) and lens points (per side) of the aimed estimator (`aimed::sides_for(1024)`).
 const PIXEL_SIDE: u32 = 16;
 const LENS_SIDE: u32 = 16;
 
@@ -52,9 +43,10 @@ fn main() -> Result<()> {
         Ok(reference(scene, &b.camera, &lens, &ReferenceOptions { spp, seed, ..Default::default() })?.image)
     };
     let full = [uniform(&b.scene, 0)?, uniform(&b.scene, 1)?];
-    let base = uniform(&variant(&b.scene, Part::Rest)?, 0)?;
-    let emit_uniform = uniform(&variant(&b.scene, Part::Emitters)?, 0)?;
-    let aimed = [aimed_emitters(&b.scene, &b.camera, &lens, 0), aimed_emitters(&b.scene, &b.camera, &lens, 1)];
+    let base = uniform(&without_emitters(&b.scene)?, 0)?;
+    let emit_uniform = uniform(&emitters_only(&b.scene)?, 0)?;
+    let frame = b.camera.frame()?;
+    let aimed = [0, 1].map(|seed| aimed_emitters(&b.scene, &frame, &lens, PIXEL_SIDE, LENS_SIDE, seed));
     let energy = |i: &RgbImage| i.data.iter().map(|p| p.iter().map(|&c| c as f64).sum::<f64>()).sum::<f64>();
     println!(
         "emitters' energy: aimed {:.5e} and {:.5e} (two seeds), uniform {spp} spp {:.5e}",
@@ -84,8 +76,8 @@ fn main() -> Result<()> {
         println!("  uniform {spp} spp, seed 1 against seed 0: {}", pair(&full[1], &full[0], &mask));
         println!("  aimed, seed 1 against seed 0:            {}", pair(&converged_other, &converged, &mask));
         println!("  uniform {spp} spp (seed 0) against aimed: {}", pair(&full[0], &converged, &mask));
-        let emit_layers = raycast_layers(&variant(&b.scene, Part::Emitters)?, &b.camera, &lens, &options)?;
-        let rest_layers = raycast_layers(&variant(&b.scene, Part::Rest)?, &b.camera, &lens, &options)?;
+        let emit_layers = raycast_layers(&emitters_only(&b.scene)?, &b.camera, &lens, &options)?;
+        let rest_layers = raycast_layers(&without_emitters(&b.scene)?, &b.camera, &lens, &options)?;
         let mut splat_rest = None;
         let mut splat_emit = None;
         for m in methods.iter().filter(|m| ["pinhole", "multilayer", "gather"].contains(&m.name())) {
@@ -126,7 +118,7 @@ fn main() -> Result<()> {
             let fine = builtin("highlights")?.with_size(WIDTH * side, HEIGHT * side);
             let fine_lens = fine.thin_lens()?;
             let no_buffer = LayerOptions { disocclusion: false, ..LayerOptions::default() };
-            let fine_layers = raycast_layers(&variant(&fine.scene, Part::Emitters)?, &fine.camera, &fine_lens, &no_buffer)?;
+            let fine_layers = raycast_layers(&emitters_only(&fine.scene)?, &fine.camera, &fine_lens, &no_buffer)?;
             let sim = splat_subsamples(&fine_layers.layers, &fine_lens, fine_layers.margin, side);
             let total = add(&rest, &sim);
             println!(
@@ -152,28 +144,6 @@ fn main() -> Result<()> {
         }
     }
     Ok(())
-}
-
-#[derive(Clone, Copy, PartialEq)]
-enum Part {
-    /// Every emitter black (still occluding).
-    Rest,
-    /// Only the emitters' light (no lighting, black background).
-    Emitters,
-}
-
-fn variant(scene: &Scene, part: Part) -> Result<Scene> {
-    let prims: Vec<Primitive> = scene
-        .primitives()
-        .iter()
-        .map(|p| match (part, p.material) {
-            (Part::Rest, Material::Emissive(_)) => Primitive { shape: p.shape, material: Material::Emissive([0.0; 3]) },
-            _ => *p,
-        })
-        .collect();
-    let l = *scene.lighting();
-    let l = if part == Part::Emitters { Lighting { color: [0.0; 3], ambient: [0.0; 3], background: [0.0; 3], ..l } } else { l };
-    Scene::new(prims, l)
 }
 
 fn add(a: &RgbImage, b: &RgbImage) -> RgbImage {
@@ -214,133 +184,6 @@ fn emitter_share(a: &RgbImage, r: &RgbImage, emitters: &RgbImage, mask: &[bool])
         }
     }
     sat / all.max(f64::MIN_POSITIVE)
-}
-
-/// The emitters' light, each emissive sphere integrated with samples aimed at it (module docs).
-fn aimed_emitters(scene: &Scene, camera: &Camera, lens: &ThinLens, seed: u64) -> RgbImage {
-    let frame = camera.frame().expect("valid camera");
-    let emitters: Vec<(u32, Vec3, f32, [f32; 3])> = scene
-        .primitives()
-        .iter()
-        .enumerate()
-        .filter_map(|(i, p)| match (p.shape, p.material) {
-            (Shape::Sphere { center, radius }, Material::Emissive(c)) if c != [0.0; 3] => Some((i as u32, center, radius, c)),
-            _ => None,
-        })
-        .collect();
-    let parts: Vec<Vec<(usize, [f64; 3])>> =
-        emitters.par_iter().map(|&(id, c, rho, e)| aimed_emitter(scene, &frame, lens, id, c, rho, e, seed)).collect();
-    let mut image = RgbImage::new(frame.width, frame.height);
-    for (i, v) in parts.into_iter().flatten() {
-        for k in 0..3 {
-            image.data[i][k] += v[k] as f32;
-        }
-    }
-    image
-}
-
-#[allow(clippy::too_many_arguments)]
-fn aimed_emitter(
-    scene: &Scene,
-    frame: &dof::scene::CameraFrame,
-    lens: &ThinLens,
-    id: u32,
-    c: Vec3,
-    rho: f32,
-    e: [f32; 3],
-    seed: u64,
-) -> Vec<(usize, [f64; 3])> {
-    let (w, h) = (frame.width as i64, frame.height as i64);
-    let (a, focus) = (lens.aperture_radius, lens.focus_distance);
-    let mut out = Vec::new();
-    let z = frame.depth_of(c);
-    let Some((cx, cy)) = frame.project(c) else { return out };
-    // Pixels that can see the sphere lie within its CoC plus its projected radius (with margin:
-    // the per-emitter check found every hit well inside).
-    let support = lens.coc_radius_px(z) + 1.5 * rho / (2.0 * frame.pixel_footprint_radius(z)) + 1.0;
-    let mut rng = SplitMix(seed ^ ((id as u64) << 32));
-    let (x0, x1) = (((cx - support).floor() as i64).max(0), ((cx + support).ceil() as i64).min(w - 1));
-    let (y0, y1) = (((cy - support).floor() as i64).max(0), ((cy + support).ceil() as i64).min(h - 1));
-    for py in y0..=y1 {
-        for px in x0..=x1 {
-            let (bx0, bx1) = ((px as f32).max(cx - support), (px as f32 + 1.0).min(cx + support));
-            let (by0, by1) = ((py as f32).max(cy - support), (py as f32 + 1.0).min(cy + support));
-            if !(bx1 > bx0 && by1 > by0) {
-                continue;
-            }
-            let mut cover = 0.0f64;
-            for k in 0..PIXEL_SIDE * PIXEL_SIDE {
-                let sx = bx0 + (bx1 - bx0) * ((k % PIXEL_SIDE) as f32 + rng.next_f32()) / PIXEL_SIDE as f32;
-                let sy = by0 + (by1 - by0) * ((k / PIXEL_SIDE) as f32 + rng.next_f32()) / PIXEL_SIDE as f32;
-                let f = frame.eye + focus * frame.direction(sx, sy);
-                let Some((lo, hi)) = lens_box(frame, f, c, rho, a, focus) else { continue };
-                let mut hits = 0u32;
-                for j in 0..LENS_SIDE * LENS_SIDE {
-                    let lx = lo[0] + (hi[0] - lo[0]) * ((j % LENS_SIDE) as f32 + rng.next_f32()) / LENS_SIDE as f32;
-                    let ly = lo[1] + (hi[1] - lo[1]) * ((j / LENS_SIDE) as f32 + rng.next_f32()) / LENS_SIDE as f32;
-                    if lx * lx + ly * ly <= a * a {
-                        let ray = frame.lens_ray(sx, sy, lx, ly, focus);
-                        hits += scene.first_hit(&ray, 0.0).is_some_and(|hit| hit.primitive == id) as u32;
-                    }
-                }
-                let box_area = ((hi[0] - lo[0]) * (hi[1] - lo[1])) as f64;
-                cover += box_area * hits as f64 / (LENS_SIDE * LENS_SIDE) as f64 / (std::f64::consts::PI * (a as f64).powi(2));
-            }
-            let v = cover / (PIXEL_SIDE * PIXEL_SIDE) as f64 * ((bx1 - bx0) * (by1 - by0)) as f64;
-            if v > 0.0 {
-                out.push(((py * w + px) as usize, e.map(|c| c as f64 * v)));
-            }
-        }
-    }
-    out
-}
-
-/// The lens-plane box (along the camera's right and up, clipped to the lens's square) of the lens
-/// points whose ray through the focus-plane point `f` meets the sphere: the bounding box of the
-/// sphere's silhouette seen from `f`, projected from `f` onto the lens plane, padded by 3%; the
-/// whole lens where that projection is unbounded (`f` inside the sphere, or the silhouette
-/// crossing the focus depth).
-fn lens_box(frame: &dof::scene::CameraFrame, f: Vec3, c: Vec3, rho: f32, a: f32, focus: f32) -> Option<([f32; 2], [f32; 2])> {
-    let v = c - f;
-    let d2 = v.length_squared();
-    let whole = ([-a, -a], [a, a]);
-    if d2 <= 1.0001 * rho * rho {
-        return Some(whole);
-    }
-    let centre = c - (rho * rho / d2) * v;
-    let radius = rho * (1.0 - rho * rho / d2).sqrt();
-    let axis = v.normalize();
-    let (t1, t2) = (axis.any_orthonormal_vector(), axis.cross(axis.any_orthonormal_vector()));
-    let (mut lo, mut hi) = ([f32::INFINITY; 2], [f32::NEG_INFINITY; 2]);
-    let (mut behind, mut before) = (false, false);
-    for s in 0..64 {
-        let angle = s as f32 * std::f32::consts::TAU / 64.0;
-        let p = centre + radius * (angle.cos() * t1 + angle.sin() * t2);
-        let dz = frame.depth_of(p) - focus;
-        if dz > 0.0 {
-            behind = true;
-        } else {
-            before = true;
-        }
-        if dz.abs() < 1e-6 * focus {
-            return Some(whole);
-        }
-        let q = f + (p - f) * (-focus / dz) - frame.eye;
-        let l = [q.dot(frame.right), q.dot(frame.up)];
-        for k in 0..2 {
-            lo[k] = lo[k].min(l[k]);
-            hi[k] = hi[k].max(l[k]);
-        }
-    }
-    if behind && before {
-        return Some(whole);
-    }
-    for k in 0..2 {
-        let pad = 0.03 * (hi[k] - lo[k]) + 1e-6 * a;
-        lo[k] = (lo[k] - pad).max(-a);
-        hi[k] = (hi[k] + pad).min(a);
-    }
-    (hi[0] > lo[0] && hi[1] > lo[1]).then_some((lo, hi))
 }
 
 #[derive(Clone, Copy)]

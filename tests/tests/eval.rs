@@ -16,6 +16,7 @@ fn quick_evaluation_covers_every_method_and_setting() {
         progress: false,
         coc_sweep: vec![4.0, 16.0],
         subsamples: 1,
+        aimed_emitters: false,
         size: None,
     };
     let report = evaluate(&options, &mut backends).unwrap();
@@ -78,6 +79,7 @@ fn unknown_methods_are_named() {
         progress: false,
         coc_sweep: vec![],
         subsamples: 1,
+        aimed_emitters: false,
         size: None,
     };
     let err = evaluate(&options, &mut backends).err().unwrap();
@@ -98,6 +100,7 @@ fn a_gltf_scene_is_measured_against_its_accumulation_buffer() {
         progress: false,
         coc_sweep: vec![4.0],
         subsamples: 1,
+        aimed_emitters: false,
         size: None,
     };
     let report = evaluate(&options, &mut backends).unwrap();

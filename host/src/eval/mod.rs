@@ -45,6 +45,9 @@ pub struct EvalOptions {
     pub coc_sweep: Vec<f64>,
     /// Sub-samples a pixel of the multi-layer images (`LayerOptions::subsamples`).
     pub subsamples: u32,
+    /// The built-in scenes' references integrate their emissive spheres' light with aimed samples
+    /// (`ReferenceOptions::aimed_emitters`; scenes with translucency are refused).
+    pub aimed_emitters: bool,
     /// Image size of the built-in scenes (`None`: the scene's own, 160x90 with `quick`).
     pub size: Option<(u32, u32)>,
 }
@@ -204,9 +207,16 @@ fn prepare_builtin(name: &str, options: &EvalOptions) -> Result<Prepared> {
     let layer_options = LayerOptions { subsamples: options.subsamples, ..LayerOptions::default() };
     let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &layer_options)?;
     let exact = if options.quick {
-        reference(&scene.scene, &scene.camera, &lens, &ReferenceOptions { spp: 64, progress: options.progress, ..Default::default() })?
+        let o = ReferenceOptions { spp: 64, progress: options.progress, aimed_emitters: options.aimed_emitters, ..Default::default() };
+        reference(&scene.scene, &scene.camera, &lens, &o)?
     } else {
-        let auto = AutoOptions { max_spp: 1024, region: Some(ml.mask.clone()), progress: options.progress, ..Default::default() };
+        let auto = AutoOptions {
+            max_spp: 1024,
+            region: Some(ml.mask.clone()),
+            progress: options.progress,
+            aimed_emitters: options.aimed_emitters,
+            ..Default::default()
+        };
         reference_auto(&scene.scene, &scene.camera, &lens, &auto)?
     };
     Ok(Prepared {

@@ -20,6 +20,7 @@
 //! The lens models themselves live in the kernel crate ([`dof_shaders::lens`]) so the kernels
 //! evaluate the same code per fragment; they are re-exported here.
 
+pub mod aimed;
 pub mod analytic;
 pub mod builtin;
 pub mod bvh;

@@ -27,11 +27,15 @@
 //! Scenes with tiny HDR emitters converge slowly on this metric: a pixel that a bokeh disc barely
 //! overlaps is bright after tone mapping but hit by fewer than one sample in `spp`, so the error
 //! concentrates in a band at bokeh rims that narrows only slowly as `spp` grows. Expect the cap
-//! there, and read [`Reference::valid_up_to_psnr_db`] for what the result can still measure.
+//! there, and read [`Reference::valid_up_to_psnr_db`] for what the result can still measure; or
+//! set `aimed_emitters`: the emissive spheres' light is then integrated with samples aimed at each
+//! ([`super::aimed`]), once a half with its own seed, and added to the uniform samples of the scene
+//! with those spheres black, so both halves (and the noise estimate) include it.
 
 use dof_shaders::lens::ThinLens;
 use rayon::prelude::*;
 
+use super::aimed;
 use super::analytic::Scene;
 use super::camera::{Camera, CameraFrame};
 use super::sampling::{concentric_disc, pixel_rng, stratified};
@@ -53,11 +57,14 @@ pub struct ReferenceOptions {
     /// Pixels (row-major, `true` = inside) over which a second noise estimate is made, e.g. the
     /// partial-occlusion region where methods are also compared.
     pub region: Option<Vec<bool>>,
+    /// Integrate the emissive spheres' light with samples aimed at them (module docs; default off).
+    /// Refused for scenes with translucent surfaces.
+    pub aimed_emitters: bool,
 }
 
 impl Default for ReferenceOptions {
     fn default() -> Self {
-        ReferenceOptions { spp: 64, jitter: true, seed: 0, progress: false, region: None }
+        ReferenceOptions { spp: 64, jitter: true, seed: 0, progress: false, region: None, aimed_emitters: false }
     }
 }
 
@@ -78,11 +85,23 @@ pub struct AutoOptions {
     /// A pixel region (row-major, `true` = inside) whose own noise estimate must also reach the
     /// requirement, e.g. the partial-occlusion region. `None`: the full frame only.
     pub region: Option<Vec<bool>>,
+    /// As [`ReferenceOptions::aimed_emitters`], aimed once with the samples of 1024 spp (or
+    /// `max_spp` if lower); the uniform samples then grow as without it.
+    pub aimed_emitters: bool,
 }
 
 impl Default for AutoOptions {
     fn default() -> Self {
-        AutoOptions { target_psnr_db: 40.0, tolerance_db: 0.5, start_spp: 16, max_spp: 4096, seed: 0, progress: false, region: None }
+        AutoOptions {
+            target_psnr_db: 40.0,
+            tolerance_db: 0.5,
+            start_spp: 16,
+            max_spp: 4096,
+            seed: 0,
+            progress: false,
+            region: None,
+            aimed_emitters: false,
+        }
     }
 }
 
@@ -155,14 +174,14 @@ fn check_region(region: &Option<Vec<bool>>, frame: &CameraFrame) -> Result<()> {
 pub fn reference(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &ReferenceOptions) -> Result<Reference> {
     let frame = camera.frame()?;
     check_lens(lens)?;
-    render_fixed(scene, &frame, lens.aperture_radius, lens.focus_distance, options)
+    render_fixed(scene, &frame, lens.aperture_radius, lens.focus_distance, options, options.aimed_emitters.then_some(lens))
 }
 
 /// The pinhole image (aperture 0) with the same sampling: with `spp = 1` and no jitter, the
 /// radiance along each pixel's centre ray.
 pub fn pinhole(scene: &Scene, camera: &Camera, options: &ReferenceOptions) -> Result<Reference> {
     let frame = camera.frame()?;
-    render_fixed(scene, &frame, 0.0, 1.0, options)
+    render_fixed(scene, &frame, 0.0, 1.0, options, None)
 }
 
 /// Thin-lens reference whose sample count is raised (doubled from `start_spp`) until its noise
@@ -191,6 +210,8 @@ pub fn reference_auto(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
     let pixels = frame.width as usize * frame.height as usize;
     let mut a = Accum::new(pixels);
     let mut b = Accum::new(pixels);
+    let rest = if o.aimed_emitters { aim(scene, &frame, lens, o.max_spp.min(1024), o.seed, &mut a, &mut b)? } else { None };
+    let scene = rest.as_ref().unwrap_or(scene);
     let mut batch = 0u64;
     let mut m = o.start_spp / 2;
     let (mut estimate, mut region_estimate);
@@ -238,7 +259,15 @@ fn check_lens(lens: &ThinLens) -> Result<()> {
     }
 }
 
-fn render_fixed(scene: &Scene, frame: &CameraFrame, radius: f32, focus: f32, options: &ReferenceOptions) -> Result<Reference> {
+/// The reference with `options`; with `aimed` (the lens), the emitters' light aimed at them.
+fn render_fixed(
+    scene: &Scene,
+    frame: &CameraFrame,
+    radius: f32,
+    focus: f32,
+    options: &ReferenceOptions,
+    aimed: Option<&ThinLens>,
+) -> Result<Reference> {
     if options.spp == 0 || options.spp > MAX_SPP {
         return Err(Error::invalid(format!("a reference takes 1 to {MAX_SPP} samples per pixel, got {}", options.spp)));
     }
@@ -248,6 +277,11 @@ fn render_fixed(scene: &Scene, frame: &CameraFrame, radius: f32, focus: f32, opt
     let (na, nb) = (options.spp - options.spp / 2, options.spp / 2);
     let mut a = Accum::new(pixels);
     let mut b = Accum::new(pixels);
+    let rest = match aimed {
+        Some(lens) => aim(scene, frame, lens, options.spp, options.seed, &mut a, &mut b)?,
+        None => None,
+    };
+    let scene = rest.as_ref().unwrap_or(scene);
     let halves = if nb > 0 { 2 } else { 1 };
     let bar = progress_bar(options.progress, frame, halves, &format!("reference: {} spp", options.spp));
     render_batch(scene, frame, radius, focus, na, options.jitter, options.seed, 0, bar.as_ref(), &mut a);
@@ -269,30 +303,56 @@ fn render_fixed(scene: &Scene, frame: &CameraFrame, radius: f32, focus: f32, opt
     })
 }
 
-/// Per-pixel radiance sums of one independent half.
+/// Per-pixel radiance sums of one independent half, and the aimed emitters' light it adds (its own
+/// estimate, independent of the other half's).
 struct Accum {
     sum: Vec<[f64; 3]>,
     n: u32,
+    aimed: Option<RgbImage>,
 }
 
 impl Accum {
     fn new(pixels: usize) -> Self {
-        Accum { sum: vec![[0.0; 3]; pixels], n: 0 }
+        Accum { sum: vec![[0.0; 3]; pixels], n: 0, aimed: None }
+    }
+
+    /// The aimed light at pixel `i` (0 without).
+    fn aimed_at(&self, i: usize) -> [f64; 3] {
+        self.aimed.as_ref().map_or([0.0; 3], |a| a.data[i].map(f64::from))
     }
 
     fn mean(&self) -> impl Iterator<Item = [f32; 3]> + '_ {
         let n = self.n.max(1) as f64;
-        self.sum.iter().map(move |s| s.map(|v| (v / n) as f32))
+        self.sum.iter().enumerate().map(move |(i, s)| {
+            let e = self.aimed_at(i);
+            [0, 1, 2].map(|k| (s[k] / n + e[k]) as f32)
+        })
     }
 }
 
 fn pooled(frame: &CameraFrame, a: &Accum, b: &Accum) -> RgbImage {
-    let n = (a.n + b.n).max(1) as f64;
+    let (na, nb) = (a.n as f64, b.n as f64);
+    let n = (na + nb).max(1.0);
     let mut image = RgbImage::new(frame.width, frame.height);
-    for ((out, sa), sb) in image.data.iter_mut().zip(&a.sum).zip(&b.sum) {
-        *out = [0, 1, 2].map(|k| ((sa[k] + sb[k]) / n) as f32);
+    for (i, ((out, sa), sb)) in image.data.iter_mut().zip(&a.sum).zip(&b.sum).enumerate() {
+        let (ea, eb) = (a.aimed_at(i), b.aimed_at(i));
+        *out = [0, 1, 2].map(|k| ((sa[k] + sb[k] + ea[k] * na + eb[k] * nb) / n) as f32);
     }
     image
+}
+
+/// With a lens that blurs and a scene with emitters: each half's aimed light (seeds `2·seed` and
+/// `2·seed + 1`, the samples of `spp`, [`aimed::sides_for`]) into `a` and `b`, and the scene the
+/// uniform samples are then taken of (its emitters black). `None`: nothing to aim at.
+fn aim(scene: &Scene, frame: &CameraFrame, lens: &ThinLens, spp: u32, seed: u64, a: &mut Accum, b: &mut Accum) -> Result<Option<Scene>> {
+    if !(lens.aperture_radius > 0.0) || aimed::emitters(scene).is_empty() {
+        return Ok(None);
+    }
+    let rest = aimed::without_emitters(scene)?;
+    let (pixel_side, lens_side) = aimed::sides_for(spp);
+    a.aimed = Some(aimed::aimed_emitters(scene, frame, lens, pixel_side, lens_side, seed.wrapping_mul(2)));
+    b.aimed = Some(aimed::aimed_emitters(scene, frame, lens, pixel_side, lens_side, seed.wrapping_mul(2).wrapping_add(1)));
+    Ok(Some(rest))
 }
 
 /// Estimated PSNR of the pooled mean of `a` and `b` against the converged image (module docs).

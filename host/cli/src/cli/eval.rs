@@ -49,6 +49,11 @@ pub struct EvalArgs {
     /// or 16 (area-integrated; see docs/scenes-and-references.md).
     #[arg(long, visible_alias = "area-samples", default_value_t = dof::scene::DEFAULT_SUBSAMPLES)]
     subsamples: u32,
+    /// The built-in scenes' references integrate the light of their emissive spheres with samples
+    /// aimed at each (converged at saturated bokeh rims, where uniform samples leave pixels dark by
+    /// chance; see docs/scenes-and-references.md). Refused for scenes with translucent surfaces.
+    #[arg(long)]
+    aimed_emitters: bool,
     /// Image size of the built-in scenes (both or neither; default the scene's own, 160x90 with
     /// --quick).
     #[arg(long, requires = "height")]
@@ -141,6 +146,7 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         progress: true,
         coc_sweep,
         subsamples: args.subsamples,
+        aimed_emitters: args.aimed_emitters,
         size: args.width.zip(args.height),
     };
     if !args.no_plots {

@@ -118,6 +118,11 @@ pub struct RenderArgs {
     /// 16); at most 65536.
     #[arg(long, visible_alias = "spp")]
     samples: Option<u32>,
+    /// The reference (`--method reference`, built-in scenes): integrate the light of the emissive
+    /// spheres with samples aimed at each, converged at saturated bokeh rims (see
+    /// docs/scenes-and-references.md). Refused for scenes with translucent surfaces.
+    #[arg(long)]
+    aimed_emitters: bool,
     /// Splatting and bokeh sprites: the aperture shape, `circle`, `blades:N[:ROTATION_DEGREES[:CURVATURE]]`,
     /// `star:N[:ROTATION_DEGREES[:INNER]]` or a PNG (its luminance as coverage; see `dof::aperture`).
     #[arg(long, default_value = "circle")]
@@ -664,9 +669,13 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         Method::Reference => {
             let reference = match args.samples {
                 Some(spp) => {
-                    scene::reference(&builtin.scene, &camera, &lens, &ReferenceOptions { spp, progress: true, ..Default::default() })?
+                    let o = ReferenceOptions { spp, progress: true, aimed_emitters: args.aimed_emitters, ..Default::default() };
+                    scene::reference(&builtin.scene, &camera, &lens, &o)?
                 }
-                None => scene::reference_auto(&builtin.scene, &camera, &lens, &AutoOptions { progress: true, ..Default::default() })?,
+                None => {
+                    let o = AutoOptions { progress: true, aimed_emitters: args.aimed_emitters, ..Default::default() };
+                    scene::reference_auto(&builtin.scene, &camera, &lens, &o)?
+                }
             };
             println!(
                 "reference: {} samples per pixel, estimated noise PSNR {}{}",

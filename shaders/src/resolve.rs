@@ -26,7 +26,7 @@
 
 use crate::exec::{Group, Load, Mem};
 use crate::lens::is_finite;
-use crate::slot::{self, clamp_alpha};
+use crate::slot::{self, clamp_alpha, over};
 use crate::wg::for_each_item;
 
 /// Most sub-samples a pixel (a 4x4 grid).
@@ -43,17 +43,6 @@ pub struct Resolved {
     pub count: u32,
     /// Clusters composited into the last fragment because the pixel was full.
     pub merged: u32,
-}
-
-/// "Over": `back` behind `front`, both premultiplied; `front`'s depth is kept.
-#[inline]
-fn over(front: Sample, back: Sample) -> Sample {
-    let t = 1.0 - front.alpha;
-    Sample {
-        color: [front.color[0] + t * back.color[0], front.color[1] + t * back.color[1], front.color[2] + t * back.color[2]],
-        alpha: front.alpha + t * back.alpha,
-        depth: front.depth,
-    }
 }
 
 /// Resolves `subsamples` (at most [`MAX_SUBSAMPLES`]) fragment lists, list `s` holding `count(s)`

@@ -224,12 +224,13 @@ pub fn hex_point(ring: u32, j: u32) -> [f32; 2] {
 /// A highlight's disc weight at a pixel whose centre is `d` pixels from the disc's centre: the CoC
 /// disc of `radius` seen through a pixel and spread over the light's footprint, `spread` its mean
 /// distance from the centre (0 for the light of one pixel): 1 inside `radius − 1/2 − spread`, a
-/// soft edge `1 + 2·spread` wide out to `radius + 1/2 + spread` (splatting's weight of a fragment
-/// standing for a block of pixels, `splat::fragment::weight`, with the block's width in place of the
-/// footprint's). One pixel's light has the one-pixel soft edge of a single pixel's disc.
+/// soft edge `1 + 2·spread` wide out to `radius + 1/2 + spread`: splatting's rim of a fragment
+/// standing for a block of pixels ([`crate::splat::fragment::linear_rim`]), with the footprint's
+/// width in place of the block's. One pixel's light has the one-pixel soft edge of a single
+/// pixel's disc.
 #[inline]
 pub fn disc_weight(radius: f32, spread: f32, d: f32) -> f32 {
-    saturate((radius + 0.5 + spread - d) / (1.0 + 2.0 * spread))
+    crate::splat::fragment::linear_rim(d, radius + 0.5 + spread, 1.0 + 2.0 * spread)
 }
 
 /// The sum of [`disc_weight`] over every pixel centre of the plane for a disc of `radius` (>= 1/2)

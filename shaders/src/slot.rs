@@ -108,6 +108,19 @@ pub fn is_alpha_clamped(a: f32) -> bool {
     !(a >= 0.0 && a <= 1.0)
 }
 
+/// "Over": `back` behind `front`, both premultiplied (clamped alphas); `front`'s depth is kept. The
+/// area resolve merges clusters beyond its layers with it, and the ray caster what lies behind a
+/// full pixel's translucent last slot.
+#[inline]
+pub fn over(front: Slot, back: Slot) -> Slot {
+    let t = 1.0 - front.alpha;
+    Slot {
+        color: [front.color[0] + t * back.color[0], front.color[1] + t * back.color[1], front.color[2] + t * back.color[2]],
+        alpha: front.alpha + t * back.alpha,
+        depth: front.depth,
+    }
+}
+
 /// The front-to-back "over" of premultiplied fragments (Porter, Duff 1984): the colour gathered
 /// and the share of light that still passes (1 at the start, 0 once an opaque fragment is added).
 #[derive(Clone, Copy, Debug, PartialEq)]

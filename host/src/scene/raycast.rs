@@ -249,11 +249,10 @@ fn cast_ray(
     n as u32
 }
 
-/// `back` composited behind `front` (premultiplied "over"), at `front`'s depth.
+/// `back` behind `front` ([`dof_shaders::slot::over`]), at `front`'s depth.
 fn over(front: Fragment, back: Fragment) -> Fragment {
-    let t = 1.0 - front.alpha;
-    let c = |i: usize| front.color[i] + t * back.color[i];
-    Fragment { color: [c(0), c(1), c(2)], alpha: front.alpha + t * back.alpha, depth: front.depth }
+    let s = dof_shaders::slot::over(front.slot(), back.slot());
+    Fragment { color: s.color, alpha: s.alpha, depth: s.depth }
 }
 
 /// Resolves a sub-sample image (`side` times wider and higher than the result: sub-sample `(i, j)`

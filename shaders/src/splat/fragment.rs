@@ -278,7 +278,14 @@ pub fn weight(d2: f32, s: f32, w: f32) -> f32 {
     if inner > 0.0 && d2 <= inner * inner {
         return 1.0;
     }
-    let v = (s - sqrt(d2)) / w;
+    linear_rim(sqrt(d2), s, w)
+}
+
+/// The soft rim of [`weight`] at distance (or gauge) `d`: 1 up to `s − w`, falling linearly to 0 at
+/// `s`. The ring gather's highlight discs use it too (`ring_gather::disc_weight`).
+#[inline(always)]
+pub fn linear_rim(d: f32, s: f32, w: f32) -> f32 {
+    let v = (s - d) / w;
     if v > 0.0 { if v < 1.0 { v } else { 1.0 } } else { 0.0 }
 }
 
@@ -296,8 +303,7 @@ pub fn shaped_weight<L: Load>(d: [f32; 2], d2: f32, s: f32, w: f32, ap: &Apertur
         let r = s - 0.5 * w;
         return if r > 0.0 { ap.coverage(mask, [d[0] / r, d[1] / r]) } else { 0.0 };
     }
-    let v = (s - ap.gauge(d)) / w;
-    if v > 0.0 { if v < 1.0 { v } else { 1.0 } } else { 0.0 }
+    linear_rim(ap.gauge(d), s, w)
 }
 
 /// The sum of [`shaped_weight`] over every pixel centre (of an unbounded grid) around `c`: what a

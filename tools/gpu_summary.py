@@ -14,7 +14,7 @@ for (w, h), rs in sorted(rows.items()):
     dev = rs[0]["device"]
     print(f"## {w}x{h} on {dev} ({rs[0]['backend']})\n")
     print("Frame time: median (p10-p90) of one span around the whole recording, over "
-          f"{rs[0]['frame_ms_frames']} frames after {rs[0]['warmup_frames']} warm-up; the columns of "
+          f"{rs[0]['frame_ms_frames']} frames after {rs[0].get('warmup_frames_run', rs[0]['warmup_frames'])} warm-up; the columns of "
           "Franke et al. 2018, Table 1: per-stage means, each command's own timestamp pair.\n")
     print("| scene | method | merge | frame ms (p10-p90) | merge | splat | sort | apply | dispatches | barriers | MB |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
@@ -25,3 +25,39 @@ for (w, h), rs in sorted(rows.items()):
               f"| {ms(t['merge'])} | {ms(t['splat'])} | {ms(t['sort'])} | {ms(t['apply'])} "
               f"| {r['dispatches_per_frame']:.0f} | {r['barriers_per_frame']:.0f} | {r['device_bytes'] / 1e6:.1f} |")
     print()
+
+# The ratio the goals name, from the frame times above (both methods through the frame API, frame
+# after frame, so at the clocks a renderer sees), with the PSNRs of `dof bench ratios` where its
+# report is there (its own times come from one-shot runs with host work between them: on a GPU
+# they run at lowered clocks, so they are not used for the ratio).
+by = {}
+for rs in rows.values():
+    for r in rs:
+        by[(r["width"], r["height"], r["scene"], r["method"], r["merge"])] = r
+psnr = {}
+for path in glob.glob(os.path.join(out, "ratios-*", "ratios.json")):
+    with open(path) as f:
+        report = json.load(f)
+    for row in report if isinstance(report, list) else report.get("rows", []):
+        size = os.path.basename(os.path.dirname(path))[len("ratios-"):]
+        psnr[(size, row["scene"])] = row
+for (w, h) in sorted(rows):
+    scenes = sorted({s for (W, H, s, _, _) in by if (W, H) == (w, h)})
+    lines = []
+    for s in scenes:
+        ml, rg = by.get((w, h, s, "multilayer", "4x4")), by.get((w, h, s, "ring-gather", "none"))
+        if ml is None or rg is None:
+            continue
+        p = psnr.get((f"{w}x{h}", s))
+        def db(key):
+            return "-" if p is None else f"{p[key]['psnr_db']:.2f} / {p[key]['psnr_masked_db']:.2f}"
+        lines.append(f"| {s} | {ml['frame_ms']:.3f} | {rg['frame_ms']:.3f} | {ml['frame_ms'] / rg['frame_ms']:.2f} "
+                     f"| {db('multilayer')} | {db('ring_gather')} |")
+    if lines:
+        print(f"## Multi-layer (merged 4x4) over the ring gather, {w}x{h}\n")
+        print("Frame times from the table above; PSNR (full frame / partial-occlusion region) from `dof bench ratios` "
+              "at the same size where it ran (16-spp exact reference).\n")
+        print("| scene | multilayer ms | ring gather ms | ratio | multilayer PSNR (dB) | ring gather PSNR (dB) |")
+        print("|---|---|---|---|---|---|")
+        print("\n".join(lines))
+        print()

@@ -69,6 +69,10 @@ pub struct FrameArgs {
     /// Untimed frames first (pipelines, caches and the list pool settle).
     #[arg(long, default_value_t = 2)]
     warmup: u32,
+    /// The warm-up goes on until it has lasted this long too (ms of wall time): a GPU raises its
+    /// clocks only after some busy time, and frames timed before run several times slower.
+    #[arg(long, default_value_t = 500.0)]
+    warmup_ms: f64,
     /// Run each frame through the one-shot function instead (a context, its buffers and the
     /// input's per frame, and the result read back): what the frame API saves. The "record" time
     /// is then the whole call.
@@ -110,7 +114,17 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     let b = backend.as_mut();
     let (measured, size, layers) = match args.orbit {
         Some(deg) => {
-            let m = orbiting(b, method, &view, &options, [args.warmup, args.frames], deg, args.out.as_deref(), args.subsamples)?;
+            let m = orbiting(
+                b,
+                method,
+                &view,
+                &options,
+                [args.warmup, args.frames],
+                args.warmup_ms,
+                deg,
+                args.out.as_deref(),
+                args.subsamples,
+            )?;
             (m, [view.camera.width, view.camera.height], LayerOptions::default().max_layers)
         }
         None => {
@@ -120,9 +134,9 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
                 Reads::FrontLayer => layered.front_layer(),
             };
             let m = if args.one_shot {
-                one_shot(b, method, &image, &view.lens, &options, [args.warmup, args.frames])?
+                one_shot(b, method, &image, &view.lens, &options, [args.warmup, args.frames], args.warmup_ms)?
             } else {
-                framed(b, method, &image, &view.lens, &options, [args.warmup, args.frames], args.out.as_deref())?
+                framed(b, method, &image, &view.lens, &options, [args.warmup, args.frames], args.warmup_ms, args.out.as_deref())?
             };
             (m, [image.width, image.height], image.max_layers)
         }
@@ -184,6 +198,8 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "overflow_tiles": measured.overflow_tiles,
             "list_entries": measured.list_entries,
             "list_pool": measured.list_pool,
+            "pool_grown_in_warmup": measured.grown,
+            "warmup_frames_run": measured.warmed,
         });
         if let (Some(all), serde_json::Value::Object(spans)) = (json.as_object_mut(), spans) {
             all.extend(spans);
@@ -202,7 +218,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         size[1],
         layers,
         args.frames,
-        args.warmup,
+        measured.warmed,
         if args.one_shot {
             "one-shot path"
         } else if args.orbit.is_some() {
@@ -251,11 +267,12 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         println!("  {stage:<22} {ms:>9.3} ms");
     }
     println!(
-        "device memory: context {:.1} MB, backend peak {:.1} MB; lists {} entries in a pool of {}, {} overflowing tiles",
+        "device memory: context {:.1} MB, backend peak {:.1} MB; lists {} entries in a pool of {} (grown {} time(s) in the warm-up), {} overflowing tiles",
         measured.device_bytes as f64 / 1e6,
         c.peak_device_bytes as f64 / 1e6,
         measured.list_entries,
         measured.list_pool,
+        measured.grown,
         measured.overflow_tiles
     );
     Ok(())
@@ -271,6 +288,10 @@ struct Measured {
     overflow_tiles: u64,
     list_entries: u64,
     list_pool: u64,
+    /// Times the warm-up grew the context after an overflowing frame.
+    grown: u32,
+    /// Warm-up frames run (`--warmup`, more where `--warmup-ms` asked for them).
+    warmed: u32,
     /// Device time of the peel's commands per frame (labels `peel/...`), part of `gpu_ms`.
     peel_ms: f64,
     /// Peel passes recorded over all timed frames.
@@ -355,6 +376,8 @@ impl Measured {
             overflow_tiles: report.overflow,
             list_entries: figure("list_entries"),
             list_pool: figure("list_pool"),
+            grown: 0,
+            warmed: 0,
             peel_ms,
             peel_passes: 0,
             margin: 0,
@@ -386,6 +409,7 @@ fn framed(
     lens: &ThinLens,
     options: &MethodOptions,
     [warmup, frames]: [u32; 2],
+    warmup_ms: f64,
     out: Option<&Path>,
 ) -> anyhow::Result<Measured> {
     let pixels = image.width as u64 * image.height as u64;
@@ -400,7 +424,16 @@ fn framed(
     let mut ctx = (method.create)(b, &ContextDesc::new(extent, options.clone()))?;
     let frame =
         Frame::layers(image.width, image.height, image.max_layers, *lens, SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
-    for _ in 0..warmup {
+    let warmed = warm_up(warmup, warmup_ms, || {
+        ctx.record(b, &frame)?;
+        b.submit()?;
+        Ok(())
+    })?;
+    // A renderer grows what overflowed between frames; the timed frames are then whole (a frame
+    // that overflows copies tiles through unblurred, which is cheaper and wrong).
+    let mut grown = 0;
+    while warmup > 0 && grown < GROW_ATTEMPTS && ctx.report(b)?.overflow > 0 && ctx.grow_to_fit(b)? {
+        grown += 1;
         ctx.record(b, &frame)?;
         b.submit()?;
     }
@@ -425,9 +458,29 @@ fn framed(
     bufs.into_iter().for_each(|id| b.destroy_buffer(id));
     written?;
     let mut m = Measured::new(counters, record_ms, gpu_ms, stages, device_bytes, &report);
+    m.grown = grown;
+    m.warmed = warmed;
     add_spans(&mut m, spans);
     Ok(m)
 }
+
+/// Runs untimed frames: at least `frames`, and on until `min_ms` of wall time have passed (at most
+/// [`MAX_WARMUP_FRAMES`]); returns how many ran.
+fn warm_up(frames: u32, min_ms: f64, mut frame: impl FnMut() -> anyhow::Result<()>) -> anyhow::Result<u32> {
+    let start = Instant::now();
+    let mut ran = 0;
+    while ran < frames || (ran > 0 && ran < MAX_WARMUP_FRAMES && start.elapsed().as_secs_f64() * 1e3 < min_ms) {
+        frame()?;
+        ran += 1;
+    }
+    Ok(ran)
+}
+
+/// The longest warm-up `--warmup-ms` makes.
+const MAX_WARMUP_FRAMES: u32 = 2000;
+
+/// Times the warm-up grows a context whose frame overflowed (each at least doubles the pool).
+const GROW_ATTEMPTS: u32 = 4;
 
 /// The one-shot path, frame after frame.
 fn one_shot(
@@ -437,10 +490,12 @@ fn one_shot(
     lens: &ThinLens,
     options: &MethodOptions,
     [warmup, frames]: [u32; 2],
+    warmup_ms: f64,
 ) -> anyhow::Result<Measured> {
-    for _ in 0..warmup {
+    let warmed = warm_up(warmup, warmup_ms, || {
         one_shot::one_shot(b, method, options, image, lens)?;
-    }
+        Ok(())
+    })?;
     let before = b.counters();
     let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());
     let mut last = None;
@@ -453,7 +508,9 @@ fn one_shot(
     }
     let counters = b.counters().since(&before);
     let last = last.context("no frame ran")?;
-    Ok(Measured::new(counters, record_ms, gpu_ms, stages, last.buffer_bytes, &last.report))
+    let mut m = Measured::new(counters, record_ms, gpu_ms, stages, last.buffer_bytes, &last.report);
+    m.warmed = warmed;
+    Ok(m)
 }
 
 /// Checks the view flags before anything is loaded or made.
@@ -557,6 +614,7 @@ fn orbiting(
     view: &SceneView,
     options: &MethodOptions,
     [warmup, frames]: [u32; 2],
+    warmup_ms: f64,
     deg: f32,
     out: Option<&Path>,
     subsamples: u32,
@@ -586,11 +644,12 @@ fn orbiting(
     let frame = peel.frame(lens, dof::frame::FrameOutput::Buffer(RgbBuffer(output)));
     let run = (|| -> anyhow::Result<Measured> {
         // Warm-up frames from the first view, then one frame per turn.
-        for _ in 0..warmup {
+        let warmed = warm_up(warmup, warmup_ms, || {
             peel.record(b, &view.camera, &lens)?;
             ctx.record(b, &frame)?;
             b.submit()?;
-        }
+            Ok(())
+        })?;
         b.take_span_times();
         let before = b.counters();
         let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());
@@ -616,6 +675,7 @@ fn orbiting(
         let report = ctx.report(b).context("reading the last frame's report")?;
         let mut m = Measured::new(counters, record_ms, gpu_ms, stages, ctx.device_bytes() + peel.device_bytes(), &report);
         m.peel_passes = passes;
+        m.warmed = warmed;
         add_spans(&mut m, spans);
         m.margin = peel.margin();
         let last = peel.peel_report(b).context("reading the last frame's peel report")?;

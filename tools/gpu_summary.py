@@ -26,10 +26,8 @@ for (w, h), rs in sorted(rows.items()):
               f"| {r['dispatches_per_frame']:.0f} | {r['barriers_per_frame']:.0f} | {r['device_bytes'] / 1e6:.1f} |")
     print()
 
-# The ratio the goals name, from the frame times above (both methods through the frame API, frame
-# after frame, so at the clocks a renderer sees), with the PSNRs of `dof bench ratios` where its
-# report is there (its own times come from one-shot runs with host work between them: on a GPU
-# they run at lowered clocks, so they are not used for the ratio).
+# The ratio the goals name, measured as they say (`dof bench frame`: one span around each frame's
+# recording, no guard band), with the PSNRs of `dof bench ratios` where its report is there.
 by = {}
 for rs in rows.values():
     for r in rs:

@@ -45,4 +45,40 @@ impl RunTimes {
     pub fn median_stages(&self) -> BTreeMap<String, f64> {
         self.stages.iter().map(|(k, v)| (k.clone(), median(v.clone()))).collect()
     }
+
+    /// Each stage's mean time per run over all runs (a time the queue could not stamp counts 0).
+    pub fn mean_stages(&self) -> BTreeMap<String, f64> {
+        let runs = self.totals.len().max(1) as f64;
+        self.stages.iter().map(|(k, v)| (k.clone(), v.iter().filter(|t| t.is_finite()).sum::<f64>() / runs)).collect()
+    }
+}
+
+/// How a timing run warms up: at least `frames` untimed frames, and on until `ms` of wall time have
+/// passed (at most [`Warmup::MAX_FRAMES`]): a GPU raises its clocks only after some busy time, and
+/// frames timed before that ran three times slower on an H200.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Warmup {
+    pub frames: u32,
+    pub ms: f64,
+}
+
+impl Warmup {
+    /// The longest warm-up `ms` makes.
+    pub const MAX_FRAMES: u32 = 2000;
+
+    /// One frame, and on Vulkan 500 ms: the CPU backend has no clocks of its own to raise.
+    pub fn for_backend(kind: crate::backend::BackendKind) -> Warmup {
+        Warmup { frames: 1, ms: if kind == crate::backend::BackendKind::Cpu { 0.0 } else { 500.0 } }
+    }
+
+    /// Runs `frame` as the warm-up asks (none for 0 frames); returns how many ran.
+    pub fn run<E>(&self, mut frame: impl FnMut() -> Result<(), E>) -> Result<u32, E> {
+        let start = std::time::Instant::now();
+        let mut ran = 0;
+        while ran < self.frames || (ran > 0 && ran < Self::MAX_FRAMES && start.elapsed().as_secs_f64() * 1e3 < self.ms) {
+            frame()?;
+            ran += 1;
+        }
+        Ok(ran)
+    }
 }

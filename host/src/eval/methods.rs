@@ -1,5 +1,5 @@
 //! The methods the evaluation (and `dof stress`) runs: the pinhole image, then every method of the
-//! frame API's registry ([`crate::frame::METHODS`]) through the one generic one-shot path, each
+//! frame API's registry ([`crate::frame::METHODS`]) through the one generic path ([`Runner`]), each
 //! with the settings the evaluation sweeps ([`sweep_points`]). A method added to the registry is
 //! evaluated with its default options without any change here; an entry in [`sweep_points`] adds
 //! a sweep of its knobs.
@@ -10,9 +10,10 @@ use crate::frame::registry::{self, METHODS};
 use crate::frame::{LayeredOptions, MethodInfo, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
 use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::gather::MAX_RADIUS;
-use crate::methods::one_shot::one_shot;
+use crate::methods::one_shot::{OneShot, Runner, method_input, one_shot};
 use crate::methods::ring_gather::DEFAULT_RINGS;
 use crate::methods::splat::Merge;
+use crate::timing::{RunTimes, Warmup};
 use dof_shaders::lens::ThinLens;
 use std::collections::BTreeMap;
 
@@ -68,6 +69,16 @@ pub trait EvaluatedMethod {
         None
     }
     fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput>;
+    /// A warm-up run, then `runs` timed runs: their times and the last run's output.
+    fn timed(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting, runs: usize) -> Result<(RunTimes, MethodOutput)> {
+        let mut times = RunTimes::default();
+        let mut output = self.run(backend, input, setting)?;
+        for _ in 0..runs {
+            output = self.run(backend, input, setting)?;
+            times.add(&output.stages);
+        }
+        Ok((times, output))
+    }
 }
 
 /// The unblurred image: the front layer (what a pinhole camera sees). The floor every method must beat.
@@ -197,7 +208,8 @@ fn splat_options(s: &Setting) -> MethodOptions {
     MethodOptions { splat: SplatOptions { merge, tile, ..Default::default() }, ..Default::default() }
 }
 
-/// A registry method, evaluated through the one-shot path ([`one_shot`]) with the settings of
+/// A registry method, run through the one-shot path ([`one_shot`]) and timed frame after frame through
+/// one context ([`Runner::time_frames`]), with the settings of
 /// [`sweep_points`]. Its figures are its context's report figures, plus `buffer_bytes` (the
 /// context's device bytes with its frame's buffers) and, for the splatting methods, `tile_px` and
 /// `merge_steps`.
@@ -230,13 +242,34 @@ impl EvaluatedMethod for Registered {
     fn run(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting) -> Result<MethodOutput> {
         let options = self.options(setting);
         let out = one_shot(backend, self.0, &options, &input.layers, &input.lens)?;
+        Ok(self.output(&options, out))
+    }
+    /// Frames back to back through one context, as a renderer runs them ([`Runner::time_frames`],
+    /// warmed up as [`Warmup::for_backend`] says): one-shot runs with host work between them ran
+    /// at lowered GPU clocks.
+    fn timed(&self, backend: &mut dyn Backend, input: &MethodInput, setting: &Setting, runs: usize) -> Result<(RunTimes, MethodOutput)> {
+        let options = self.options(setting);
+        let image = method_input(self.0, &input.layers);
+        let mut runner = Runner::new(backend, self.0, &options, &image)?;
+        let warmup = Warmup::for_backend(backend.kind());
+        let timed = runner.time_frames(backend, &image, &input.lens, warmup, runs.max(1) as u32);
+        runner.destroy(backend);
+        let t = timed?;
+        Ok((t.runs, self.output(&options, t.last)))
+    }
+}
+
+impl Registered {
+    /// The evaluation's output of a frame: its image, commands and report figures, with the
+    /// context's bytes and the splatting settings.
+    fn output(&self, options: &MethodOptions, out: OneShot) -> MethodOutput {
         let mut figures = out.report.figures;
         figures.insert("buffer_bytes".into(), out.buffer_bytes as f64);
         if self.0.tiles {
             figures.insert("tile_px".into(), options.splat.tile as f64);
             figures.insert("merge_steps".into(), options.splat.merge.steps() as f64);
         }
-        Ok(MethodOutput { image: out.image, stages: out.stages, figures, list_histogram: out.report.list_histogram })
+        MethodOutput { image: out.image, stages: out.stages, figures, list_histogram: out.report.list_histogram }
     }
 }
 

@@ -57,8 +57,8 @@ pub fn default_coc_sweep(quick: bool) -> Vec<f64> {
     if quick { vec![4.0, 16.0] } else { vec![4.0, 8.0, 16.0, 32.0] }
 }
 
-/// One method at one setting on one backend: a warm-up run, then `runs` timed runs. Returns the
-/// times and the last run's output.
+/// One method at one setting on one backend: a warm-up, then `runs` timed runs
+/// ([`EvaluatedMethod::timed`]). Returns the times and the last run's output.
 pub fn timed(
     method: &dyn EvaluatedMethod,
     backend: &mut dyn Backend,
@@ -66,13 +66,7 @@ pub fn timed(
     setting: &Setting,
     runs: usize,
 ) -> Result<(RunTimes, MethodOutput)> {
-    let mut times = RunTimes::default();
-    let mut output = method.run(backend, input, setting)?;
-    for _ in 0..runs {
-        output = method.run(backend, input, setting)?;
-        times.add(&output.stages);
-    }
-    Ok((times, output))
+    method.timed(backend, input, setting, runs)
 }
 
 /// Runs the evaluation on `backends` (host-only methods run once, on the first).

@@ -3,8 +3,9 @@
 //! backend in one run, with each one's error against the exact reference beside its time. The
 //! paper (Franke et al. 2018) reports multi-layer 2.4-2.6x slower than its gather on a GTX 1070; the goal here is 1.8x.
 //!
-//! Both methods run at their sweep setting from [`super::methods`], through the same one-shot path
-//! as `dof eval` (a warm-up run, then the median of the timed runs of the kernels' times).
+//! Both methods run at their sweep setting from [`super::methods`], timed as `dof eval` times them
+//! (frames back to back through one context after a warm-up, the median of the timed frames'
+//! summed kernel times; [`super::methods::EvaluatedMethod::timed`]).
 
 use super::methods::{EvaluatedMethod, MethodInput, Registered};
 use super::timed;

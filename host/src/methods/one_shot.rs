@@ -4,13 +4,16 @@
 //! The convenience path for the CLI, the evaluation, sequences and the tests; a renderer records
 //! into its own command buffer instead ([`crate::frame`]). A frame whose context overflowed is run
 //! again with the context grown ([`DofContext::grow_to_fit`]), so every result is whole.
+//! [`Runner::time_frames`] times frames as a renderer runs them: the input uploaded once, frames
+//! back to back after a warm-up, nothing read back until the last.
 
-use crate::backend::{Backend, BufferId, CommandTime};
+use crate::backend::{Backend, BackendCounters, BufferId, CommandTime};
 use crate::frame::{
     ContextDesc, ContextReport, CountBuffer, DofContext, Extent, Frame, MethodInfo, MethodOptions, Reads, RgbBuffer, SlotBuffer,
 };
 use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{SLOT_WORDS, read_rgb, slot_words};
+use crate::timing::{RunTimes, Warmup};
 use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 use std::borrow::Cow;
@@ -27,6 +30,46 @@ pub struct OneShot {
 
 /// Runs a frame again with a grown context at most this many times after an overflow.
 const RETRIES: u32 = 3;
+
+/// The span [`Runner::time_frames`] opens around each timed frame's recording.
+pub const FRAME_SPAN: &str = "frame/dof";
+
+/// After a frame: while its context overflowed, grows the context ([`DofContext::grow_to_fit`]) and
+/// runs `again` (record and submit the same frame), at most [`RETRIES`] times, as a renderer grows
+/// it between frames. Returns how many times it grew and the last frame's report.
+pub fn grow_to_fit(
+    ctx: &mut dyn DofContext,
+    backend: &mut dyn Backend,
+    mut again: impl FnMut(&mut dyn DofContext, &mut dyn Backend) -> Result<()>,
+) -> Result<(u32, ContextReport)> {
+    let mut grown = 0;
+    loop {
+        let report = ctx.report(backend)?;
+        if report.overflow == 0 || grown == RETRIES || !ctx.grow_to_fit(backend)? {
+            return Ok((grown, report));
+        }
+        grown += 1;
+        again(ctx, backend)?;
+    }
+}
+
+/// What [`Runner::time_frames`] measured.
+pub struct TimedFrames {
+    /// The last timed frame: its image, report and commands.
+    pub last: OneShot,
+    /// Each timed frame's commands, by stage.
+    pub runs: RunTimes,
+    /// Each timed frame's span around its recording (ms; NaN where the queue has no timestamps).
+    pub spans_ms: Vec<f64>,
+    /// CPU time to record a frame, the mean (the CPU backend runs the kernels as it records).
+    pub record_ms: f64,
+    /// The backend's counters over the timed frames.
+    pub counters: BackendCounters,
+    /// Warm-up frames run.
+    pub warmed: u32,
+    /// Times the context grew after an overflowing warm-up frame.
+    pub grown: u32,
+}
 
 /// The input `method` reads of `image`: the front layer for [`Reads::FrontLayer`], else all of it.
 pub fn method_input<'a>(method: &MethodInfo, image: &'a LayeredImage) -> Cow<'a, LayeredImage> {
@@ -82,9 +125,9 @@ impl Runner {
         self.ctx.device_bytes() + 4 * (SLOT_WORDS as u64 * pixels * self.extent.layers as u64 + pixels + 3 * pixels)
     }
 
-    /// One frame of `image` (of the runner's size and layer count) through `lens`: upload, record,
-    /// submit, read back.
-    pub fn frame(&mut self, backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens) -> Result<OneShot> {
+    /// Uploads `image` (of the runner's size and layer count) and returns the frame that reads it
+    /// through `lens`.
+    fn upload(&self, backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens) -> Result<Frame> {
         let e = self.extent;
         if (image.width, image.height, image.max_layers) != (e.width, e.height, e.layers) {
             return Err(Error::InvalidArgument(format!(
@@ -95,27 +138,84 @@ impl Runner {
         if !lens.is_valid() {
             return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
         }
-        let before = backend.counters();
         backend.write_buffer(self.io[0], 0, &slot_words(image))?;
         backend.write_buffer(self.io[1], 0, &image.counts)?;
-        let frame =
-            Frame::layers(e.width, e.height, e.layers, *lens, SlotBuffer(self.io[0]), CountBuffer(self.io[1]), RgbBuffer(self.io[2]));
-        let mut attempt = 0;
-        let (stages, report) = loop {
-            self.ctx.record(backend, &frame)?;
-            let stages = backend.submit()?;
-            let report = self.ctx.report(backend)?;
-            if report.overflow == 0 || attempt == RETRIES || !self.ctx.grow_to_fit(backend)? {
-                break (stages, report);
-            }
-            attempt += 1;
-        };
+        Ok(Frame::layers(e.width, e.height, e.layers, *lens, SlotBuffer(self.io[0]), CountBuffer(self.io[1]), RgbBuffer(self.io[2])))
+    }
+
+    /// One frame of `image` (of the runner's size and layer count) through `lens`: upload, record,
+    /// submit, read back.
+    pub fn frame(&mut self, backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens) -> Result<OneShot> {
+        let e = self.extent;
+        let before = backend.counters();
+        let frame = self.upload(backend, image, lens)?;
+        self.ctx.record(backend, &frame)?;
+        let mut stages = backend.submit()?;
+        let (_, report) = grow_to_fit(self.ctx.as_mut(), backend, |ctx, backend| {
+            ctx.record(backend, &frame)?;
+            stages = backend.submit()?;
+            Ok(())
+        })?;
         let image = read_rgb(backend, self.io[2], e.width, e.height)?;
         if self.frames > 0 {
             self.later_allocations += backend.counters().since(&before).allocations;
         }
         self.frames += 1;
         Ok(OneShot { image, report, stages, buffer_bytes: self.buffer_bytes() })
+    }
+
+    /// Times `frames` frames of `image` through `lens` as a renderer runs them: the input uploaded
+    /// once, the warm-up's frames, the context grown if a warm-up frame overflowed (as a renderer
+    /// grows it between frames, so the timed frames are whole), then the timed frames back to back,
+    /// each with a span ([`FRAME_SPAN`]) around its recording; the last one is read back after.
+    pub fn time_frames(
+        &mut self,
+        backend: &mut dyn Backend,
+        image: &LayeredImage,
+        lens: &ThinLens,
+        warmup: Warmup,
+        frames: u32,
+    ) -> Result<TimedFrames> {
+        if frames == 0 {
+            return Err(Error::InvalidArgument("timing needs at least one frame".into()));
+        }
+        let frame = self.upload(backend, image, lens)?;
+        let ctx = &mut self.ctx;
+        let warmed = warmup.run(|| -> Result<()> {
+            ctx.record(backend, &frame)?;
+            backend.submit()?;
+            Ok(())
+        })?;
+        let grown = if warmed > 0 {
+            grow_to_fit(ctx.as_mut(), backend, |ctx, backend| {
+                ctx.record(backend, &frame)?;
+                backend.submit()?;
+                Ok(())
+            })?
+            .0
+        } else {
+            0
+        };
+        backend.take_span_times();
+        let before = backend.counters();
+        let (mut runs, mut spans_ms, mut record_ms, mut stages) = (RunTimes::default(), Vec::new(), 0.0, Vec::new());
+        for _ in 0..frames {
+            let start = std::time::Instant::now();
+            backend.begin_span(FRAME_SPAN)?;
+            ctx.record(backend, &frame)?;
+            backend.end_span()?;
+            record_ms += start.elapsed().as_secs_f64() * 1e3 / frames as f64;
+            stages = backend.submit()?;
+            runs.add(&stages);
+            spans_ms.extend(backend.take_span_times().into_iter().filter(|s| s.label == FRAME_SPAN).map(|s| s.ms));
+        }
+        let counters = backend.counters().since(&before);
+        let report = ctx.report(backend)?;
+        let e = self.extent;
+        let image = read_rgb(backend, self.io[2], e.width, e.height)?;
+        self.frames += warmed + grown + frames;
+        let last = OneShot { image, report, stages, buffer_bytes: self.buffer_bytes() };
+        Ok(TimedFrames { last, runs, spans_ms, record_ms, counters, warmed, grown })
     }
 
     /// Device bytes of the context alone.

@@ -15,15 +15,13 @@
 use super::render::BackendArg;
 use anyhow::Context;
 use dof::backend::{Backend, BackendCounters, BufferId, CommandTime};
-use dof::frame::{
-    ContextDesc, ContextReport, CountBuffer, Extent, Frame, MethodInfo, MethodOptions, Reads, RgbBuffer, SlotBuffer, SplatOptions,
-};
-use dof::layers::LayeredImage;
-use dof::methods::buffers::slot_words;
-use dof::methods::one_shot;
+use dof::frame::{ContextDesc, ContextReport, Extent, MethodInfo, MethodOptions, Reads, RgbBuffer, SplatOptions};
+use dof::layers::{LayeredImage, RgbImage};
+use dof::methods::one_shot::{self, Runner};
 use dof::methods::splat::Merge;
 use dof::raster::{MeshPeelContext, MeshPeelDesc, default_near, peel_layers};
 use dof::scene::{self, Aperture, Camera, Focus, GuardBand, LayerOptions, LensSettings, MeshScene, raycast_layers};
+use dof::timing::Warmup;
 use dof_shaders::lens::ThinLens;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -110,21 +108,12 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     let method = dof::frame::registry::method(&args.method)?;
     let options = MethodOptions { splat: SplatOptions { merge: args.merge, ..Default::default() }, ..Default::default() };
     let view = SceneView::new(args)?;
+    let warmup = Warmup { frames: args.warmup, ms: args.warmup_ms };
     let mut backend = super::render::backend(args.backend)?;
     let b = backend.as_mut();
     let (measured, size, layers) = match args.orbit {
         Some(deg) => {
-            let m = orbiting(
-                b,
-                method,
-                &view,
-                &options,
-                [args.warmup, args.frames],
-                args.warmup_ms,
-                deg,
-                args.out.as_deref(),
-                args.subsamples,
-            )?;
+            let m = orbiting(b, method, &view, &options, warmup, args.frames, deg, args.out.as_deref(), args.subsamples)?;
             (m, [view.camera.width, view.camera.height], LayerOptions::default().max_layers)
         }
         None => {
@@ -134,9 +123,9 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
                 Reads::FrontLayer => layered.front_layer(),
             };
             let m = if args.one_shot {
-                one_shot(b, method, &image, &view.lens, &options, [args.warmup, args.frames], args.warmup_ms)?
+                one_shot(b, method, &image, &view.lens, &options, warmup, args.frames)?
             } else {
-                framed(b, method, &image, &view.lens, &options, [args.warmup, args.frames], args.warmup_ms, args.out.as_deref())?
+                framed(b, method, &image, &view.lens, &options, warmup, args.frames, args.out.as_deref())?
             };
             (m, [image.width, image.height], image.max_layers)
         }
@@ -309,7 +298,7 @@ struct Measured {
 }
 
 /// The span labels `bench frame` opens.
-const DOF_SPAN: &str = "frame/dof";
+const DOF_SPAN: &str = one_shot::FRAME_SPAN;
 const PEEL_SPAN: &str = "frame/peel";
 
 /// The spread of per-frame times: median, 10th and 90th percentiles (nearest rank, the upper
@@ -401,86 +390,35 @@ fn add_stages(into: &mut BTreeMap<String, f64>, times: &[dof::backend::CommandTi
 }
 
 /// The frame API: one context and the input's buffers, made and filled once; then per frame a
-/// recording and one submission.
+/// recording and one submission ([`Runner::time_frames`], which also grows the context when a
+/// warm-up frame overflowed).
+#[allow(clippy::too_many_arguments)]
 fn framed(
     b: &mut dyn Backend,
     method: &MethodInfo,
     image: &LayeredImage,
     lens: &ThinLens,
     options: &MethodOptions,
-    [warmup, frames]: [u32; 2],
-    warmup_ms: f64,
+    warmup: Warmup,
+    frames: u32,
     out: Option<&Path>,
 ) -> anyhow::Result<Measured> {
-    let pixels = image.width as u64 * image.height as u64;
-    let input = slot_words(image);
-    let bufs: Vec<BufferId> = [(input.len() as u64, "bench/fragments"), (pixels, "bench/counts"), (3 * pixels, "bench/output")]
-        .iter()
-        .map(|&(w, l)| b.create_buffer(w, l))
-        .collect::<Result<_, dof::CoreError>>()?;
-    b.write_buffer(bufs[0], 0, &input)?;
-    b.write_buffer(bufs[1], 0, &image.counts)?;
-    let extent = Extent::new(image.width, image.height, image.max_layers);
-    let mut ctx = (method.create)(b, &ContextDesc::new(extent, options.clone()))?;
-    let frame =
-        Frame::layers(image.width, image.height, image.max_layers, *lens, SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
-    let warmed = warm_up(warmup, warmup_ms, || {
-        ctx.record(b, &frame)?;
-        b.submit()?;
-        Ok(())
-    })?;
-    // A renderer grows what overflowed between frames; the timed frames are then whole (a frame
-    // that overflows copies tiles through unblurred, which is cheaper and wrong).
-    let mut grown = 0;
-    while warmup > 0 && grown < GROW_ATTEMPTS && ctx.report(b)?.overflow > 0 && ctx.grow_to_fit(b)? {
-        grown += 1;
-        ctx.record(b, &frame)?;
-        b.submit()?;
+    let mut runner = Runner::new(b, method, options, image)?;
+    let timed = runner.time_frames(b, image, lens, warmup, frames);
+    let device_bytes = runner.device_bytes();
+    runner.destroy(b);
+    let t = timed?;
+    if let Some(out) = out {
+        write_exr(&t.last.image, out)?;
     }
-    b.take_span_times();
-    let before = b.counters();
-    let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());
-    let mut spans = Vec::new();
-    for _ in 0..frames {
-        let start = Instant::now();
-        b.begin_span(DOF_SPAN)?;
-        ctx.record(b, &frame)?;
-        b.end_span()?;
-        record_ms += start.elapsed().as_secs_f64() * 1e3 / frames as f64;
-        gpu_ms += add_stages(&mut stages, &b.submit()?, frames);
-        spans.extend(b.take_span_times());
-    }
-    let counters = b.counters().since(&before);
-    let report = ctx.report(b).context("reading the last frame's report")?;
-    let device_bytes = ctx.device_bytes();
-    ctx.destroy(b);
-    let written = out.map(|out| write_last(b, bufs[2], [image.width, image.height], 0, out)).transpose();
-    bufs.into_iter().for_each(|id| b.destroy_buffer(id));
-    written?;
-    let mut m = Measured::new(counters, record_ms, gpu_ms, stages, device_bytes, &report);
-    m.grown = grown;
-    m.warmed = warmed;
-    add_spans(&mut m, spans);
+    let stages = t.runs.mean_stages();
+    let gpu_ms = stages.values().sum();
+    let mut m = Measured::new(t.counters, t.record_ms, gpu_ms, stages, device_bytes, &t.last.report);
+    m.grown = t.grown;
+    m.warmed = t.warmed;
+    m.frame_spans = t.spans_ms;
     Ok(m)
 }
-
-/// Runs untimed frames: at least `frames`, and on until `min_ms` of wall time have passed (at most
-/// [`MAX_WARMUP_FRAMES`]); returns how many ran.
-fn warm_up(frames: u32, min_ms: f64, mut frame: impl FnMut() -> anyhow::Result<()>) -> anyhow::Result<u32> {
-    let start = Instant::now();
-    let mut ran = 0;
-    while ran < frames || (ran > 0 && ran < MAX_WARMUP_FRAMES && start.elapsed().as_secs_f64() * 1e3 < min_ms) {
-        frame()?;
-        ran += 1;
-    }
-    Ok(ran)
-}
-
-/// The longest warm-up `--warmup-ms` makes.
-const MAX_WARMUP_FRAMES: u32 = 2000;
-
-/// Times the warm-up grows a context whose frame overflowed (each at least doubles the pool).
-const GROW_ATTEMPTS: u32 = 4;
 
 /// The one-shot path, frame after frame.
 fn one_shot(
@@ -489,13 +427,10 @@ fn one_shot(
     image: &LayeredImage,
     lens: &ThinLens,
     options: &MethodOptions,
-    [warmup, frames]: [u32; 2],
-    warmup_ms: f64,
+    warmup: Warmup,
+    frames: u32,
 ) -> anyhow::Result<Measured> {
-    let warmed = warm_up(warmup, warmup_ms, || {
-        one_shot::one_shot(b, method, options, image, lens)?;
-        Ok(())
-    })?;
+    let warmed = warmup.run(|| one_shot::one_shot(b, method, options, image, lens).map(|_| ()))?;
     let before = b.counters();
     let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());
     let mut last = None;
@@ -613,8 +548,8 @@ fn orbiting(
     method: &MethodInfo,
     view: &SceneView,
     options: &MethodOptions,
-    [warmup, frames]: [u32; 2],
-    warmup_ms: f64,
+    warmup: Warmup,
+    frames: u32,
     deg: f32,
     out: Option<&Path>,
     subsamples: u32,
@@ -644,12 +579,24 @@ fn orbiting(
     let frame = peel.frame(lens, dof::frame::FrameOutput::Buffer(RgbBuffer(output)));
     let run = (|| -> anyhow::Result<Measured> {
         // Warm-up frames from the first view, then one frame per turn.
-        let warmed = warm_up(warmup, warmup_ms, || {
+        let warmed = warmup.run(|| -> anyhow::Result<()> {
             peel.record(b, &view.camera, &lens)?;
             ctx.record(b, &frame)?;
             b.submit()?;
             Ok(())
         })?;
+        // The first view's frame again with the context grown, if it overflowed.
+        let grown = if warmed > 0 {
+            one_shot::grow_to_fit(ctx.as_mut(), b, |ctx, b| {
+                peel.record(b, &view.camera, &lens)?;
+                ctx.record(b, &frame)?;
+                b.submit()?;
+                Ok(())
+            })?
+            .0
+        } else {
+            0
+        };
         b.take_span_times();
         let before = b.counters();
         let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());
@@ -676,6 +623,7 @@ fn orbiting(
         let mut m = Measured::new(counters, record_ms, gpu_ms, stages, ctx.device_bytes() + peel.device_bytes(), &report);
         m.peel_passes = passes;
         m.warmed = warmed;
+        m.grown = grown;
         add_spans(&mut m, spans);
         m.margin = peel.margin();
         let last = peel.peel_report(b).context("reading the last frame's peel report")?;
@@ -694,8 +642,11 @@ fn orbiting(
 
 /// Reads the RGB result of the last frame, cuts `margin` pixels off every side and writes it.
 fn write_last(b: &mut dyn Backend, output: BufferId, size: [u32; 2], margin: u32, out: &Path) -> anyhow::Result<()> {
-    let image = dof::methods::buffers::read_rgb(b, output, size[0], size[1])?.crop(margin);
-    dof::io::write_exr(out, &image, &[]).with_context(|| format!("--out {}", out.display()))?;
+    write_exr(&dof::methods::buffers::read_rgb(b, output, size[0], size[1])?.crop(margin), out)
+}
+
+fn write_exr(image: &RgbImage, out: &Path) -> anyhow::Result<()> {
+    dof::io::write_exr(out, image, &[]).with_context(|| format!("--out {}", out.display()))?;
     eprintln!("wrote {}", out.display());
     Ok(())
 }

@@ -53,6 +53,20 @@ pub fn grow_to_fit(
     }
 }
 
+/// The warm-up's frames of `ctx` (`frame` records and submits one), then, if the last one
+/// overflowed, the context grown and the frame run again ([`grow_to_fit`]). Returns the warm-up's
+/// frames and the times the context grew.
+pub fn warm_up(
+    ctx: &mut dyn DofContext,
+    backend: &mut dyn Backend,
+    warmup: Warmup,
+    mut frame: impl FnMut(&mut dyn DofContext, &mut dyn Backend) -> Result<()>,
+) -> Result<(u32, u32)> {
+    let warmed = warmup.run(|| frame(&mut *ctx, &mut *backend))?;
+    let grown = if warmed > 0 { grow_to_fit(ctx, backend, &mut frame)?.0 } else { 0 };
+    Ok((warmed, grown))
+}
+
 /// What [`Runner::time_frames`] measured.
 pub struct TimedFrames {
     /// The last timed frame: its image, report and commands.
@@ -181,21 +195,11 @@ impl Runner {
         }
         let frame = self.upload(backend, image, lens)?;
         let ctx = &mut self.ctx;
-        let warmed = warmup.run(|| -> Result<()> {
+        let (warmed, grown) = warm_up(ctx.as_mut(), backend, warmup, |ctx, backend| {
             ctx.record(backend, &frame)?;
             backend.submit()?;
             Ok(())
         })?;
-        let grown = if warmed > 0 {
-            grow_to_fit(ctx.as_mut(), backend, |ctx, backend| {
-                ctx.record(backend, &frame)?;
-                backend.submit()?;
-                Ok(())
-            })?
-            .0
-        } else {
-            0
-        };
         backend.take_span_times();
         let before = backend.counters();
         let (mut runs, mut spans_ms, mut record_ms, mut stages) = (RunTimes::default(), Vec::new(), 0.0, Vec::new());

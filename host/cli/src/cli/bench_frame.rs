@@ -578,25 +578,14 @@ fn orbiting(
     };
     let frame = peel.frame(lens, dof::frame::FrameOutput::Buffer(RgbBuffer(output)));
     let run = (|| -> anyhow::Result<Measured> {
-        // Warm-up frames from the first view, then one frame per turn.
-        let warmed = warmup.run(|| -> anyhow::Result<()> {
+        // Warm-up frames from the first view (the context grown if one overflowed), then one
+        // frame per turn.
+        let (warmed, grown) = one_shot::warm_up(ctx.as_mut(), b, warmup, |ctx, b| {
             peel.record(b, &view.camera, &lens)?;
             ctx.record(b, &frame)?;
             b.submit()?;
             Ok(())
         })?;
-        // The first view's frame again with the context grown, if it overflowed.
-        let grown = if warmed > 0 {
-            one_shot::grow_to_fit(ctx.as_mut(), b, |ctx, b| {
-                peel.record(b, &view.camera, &lens)?;
-                ctx.record(b, &frame)?;
-                b.submit()?;
-                Ok(())
-            })?
-            .0
-        } else {
-            0
-        };
         b.take_span_times();
         let before = b.counters();
         let (mut record_ms, mut gpu_ms, mut stages) = (0.0, 0.0, BTreeMap::new());

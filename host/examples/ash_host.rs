@@ -768,7 +768,12 @@ fn main() -> Result<ExitCode> {
             let lens = LensSettings { focus: Focus::Distance(focus), ..scene.lens }.thin_lens(&scene.camera)?;
             (
                 lens,
-                FrameInput::Layers { fragments: SlotBuffer(fragments_id), counts: CountBuffer(counts_id), layers: layers.max_layers },
+                FrameInput::Layers {
+                    fragments: SlotBuffer(fragments_id),
+                    counts: CountBuffer(counts_id),
+                    layers: layers.max_layers,
+                    footprint_side: 0,
+                },
                 "multi-layer",
             )
         } else {

@@ -85,6 +85,11 @@ pub struct LayeredImage {
     pub counts: Vec<u32>,
     /// Slot `pixel * max_layers + layer`; slots at or beyond `counts[pixel]` are unused.
     pub fragments: Vec<Fragment>,
+    /// Each slot's footprint (`dof_shaders::footprint`: the sub-samples of its pixel's
+    /// `footprint_side`² grid it covers) where the image was integrated over sub-samples, one per
+    /// slot; empty (and `footprint_side` 0) where every slot stands for its whole pixel.
+    pub footprints: Vec<u32>,
+    pub footprint_side: u32,
 }
 
 /// What a multi-layer image holds, for reports.
@@ -131,6 +136,8 @@ impl LayeredImage {
             max_layers,
             counts: vec![0; width as usize * height as usize],
             fragments: vec![EMPTY; slots as usize],
+            footprints: Vec::new(),
+            footprint_side: 0,
         })
     }
 
@@ -209,6 +216,8 @@ impl LayeredImage {
             max_layers: 1,
             counts: self.counts.iter().map(|&c| c.min(1)).collect(),
             fragments,
+            footprints: Vec::new(),
+            footprint_side: 0,
         }
     }
 
@@ -218,14 +227,26 @@ impl LayeredImage {
         let l = self.max_layers as usize;
         let mut counts = Vec::with_capacity(w as usize * h as usize);
         let mut fragments = Vec::with_capacity(counts.capacity() * l);
+        let mut footprints = Vec::new();
         for y in margin..margin + h {
             for x in margin..margin + w {
                 let p = self.pixel_index(x, y);
                 counts.push(self.counts[p]);
                 fragments.extend_from_slice(&self.fragments[p * l..(p + 1) * l]);
+                if self.has_footprints() {
+                    footprints.extend_from_slice(&self.footprints[p * l..(p + 1) * l]);
+                }
             }
         }
-        LayeredImage { width: w, height: h, max_layers: self.max_layers, counts, fragments }
+        LayeredImage {
+            width: w,
+            height: h,
+            max_layers: self.max_layers,
+            counts,
+            fragments,
+            footprints,
+            footprint_side: self.footprint_side,
+        }
     }
 
     /// The edge policy for images with nothing beyond their frame (EXR input): `margin` pixels on
@@ -235,6 +256,10 @@ impl LayeredImage {
     pub fn extend_edges(&self, margin: u32) -> Result<LayeredImage> {
         let (w, h) = (self.width + 2 * margin, self.height + 2 * margin);
         let mut out = LayeredImage::new(w, h, self.max_layers)?;
+        if self.has_footprints() {
+            out.footprints = vec![0; out.fragments.len()];
+            out.footprint_side = self.footprint_side;
+        }
         let l = self.max_layers as usize;
         for y in 0..h {
             let sy = y.saturating_sub(margin).min(self.height - 1);
@@ -243,9 +268,24 @@ impl LayeredImage {
                 let (p, q) = (out.pixel_index(x, y), self.pixel_index(sx, sy));
                 out.counts[p] = self.counts[q];
                 out.fragments[p * l..(p + 1) * l].copy_from_slice(&self.fragments[q * l..(q + 1) * l]);
+                if self.has_footprints() {
+                    out.footprints[p * l..(p + 1) * l].copy_from_slice(&self.footprints[q * l..(q + 1) * l]);
+                }
             }
         }
         Ok(out)
+    }
+
+    /// Whether the slots carry footprints (one per slot).
+    pub fn has_footprints(&self) -> bool {
+        self.footprint_side > 0 && self.footprints.len() == self.fragments.len()
+    }
+
+    /// The image without its footprints: every slot stands for its whole pixel.
+    pub fn without_footprints(mut self) -> LayeredImage {
+        self.footprints = Vec::new();
+        self.footprint_side = 0;
+        self
     }
 
     pub fn stats(&self) -> LayerStats {

@@ -13,6 +13,7 @@ pub mod exec;
 #[macro_use]
 pub mod kernel;
 pub mod bokeh;
+pub mod footprint;
 pub mod frame_io;
 pub mod gather;
 pub mod half;

@@ -23,3 +23,8 @@ pub fn ceil(x: f32) -> f32 {
 pub fn powf(x: f32, y: f32) -> f32 {
     x.powf(y)
 }
+
+#[inline]
+pub fn asin(x: f32) -> f32 {
+    x.asin()
+}

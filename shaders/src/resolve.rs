@@ -25,6 +25,7 @@
 //!    the first cluster it holds), so no energy is lost; [`Resolved::merged`] counts them.
 
 use crate::exec::{Group, Load, Mem};
+use crate::footprint;
 use crate::lens::is_finite;
 use crate::slot::{self, clamp_alpha, over};
 use crate::wg::for_each_item;
@@ -48,17 +49,19 @@ pub struct Resolved {
 /// Resolves `subsamples` (at most [`MAX_SUBSAMPLES`]) fragment lists, list `s` holding `count(s)`
 /// fragments `fragment(s, k)` front to back (premultiplied colour, alpha read through
 /// [`clamp_alpha`]), into at most `max_layers` (`>= 1`) premultiplied fragments, front to back,
-/// each handed to `out(k, sample)` (module docs: the rule). `tolerance` is the relative depth gap
-/// that separates clusters.
+/// each handed to `out(k, sample, footprint)` (module docs: the rule) with its
+/// [`crate::footprint`]: bit `s` set where sub-sample `s` gave it coverage or light. `tolerance` is
+/// the relative depth gap that separates clusters.
 pub fn resolve_pixel<C, F, O>(subsamples: u32, count: C, fragment: F, max_layers: u32, tolerance: f32, mut out: O) -> Resolved
 where
     C: Fn(u32) -> u32,
     F: Fn(u32, u32) -> Sample,
-    O: FnMut(u32, Sample),
+    O: FnMut(u32, Sample, u32),
 {
     let n = if subsamples < MAX_SUBSAMPLES { subsamples } else { MAX_SUBSAMPLES };
     let mut cursor = [0u32; MAX_SUBSAMPLES as usize];
     let mut held = Sample { color: [0.0; 3], depth: 0.0, alpha: 0.0 };
+    let mut held_footprint = 0u32;
     let mut holding = false;
     let mut result = Resolved::default();
     loop {
@@ -85,6 +88,7 @@ where
         let mut covered = 0.0f32;
         let mut color = [0.0f32; 3];
         let mut depth = 0.0f32;
+        let mut footprint = 0u32;
         let mut progressed = false;
         let mut s = 0;
         while s < n {
@@ -100,6 +104,9 @@ where
                     }
                     let a = clamp_alpha(f.alpha);
                     let w = t * a;
+                    if w > 0.0 || (t > 0.0 && (f.color[0] > 0.0 || f.color[1] > 0.0 || f.color[2] > 0.0)) {
+                        footprint |= 1 << s;
+                    }
                     color[0] += t * f.color[0];
                     color[1] += t * f.color[1];
                     color[2] += t * f.color[2];
@@ -143,18 +150,21 @@ where
         };
         if !holding {
             held = cluster;
+            held_footprint = footprint;
             holding = true;
         } else if result.count + 1 < max_layers {
-            out(result.count, held);
+            out(result.count, held, held_footprint);
             result.count += 1;
             held = cluster;
+            held_footprint = footprint;
         } else {
             held = over(held, cluster);
+            held_footprint |= footprint;
             result.merged += 1;
         }
     }
     if holding && max_layers > 0 {
-        out(result.count, held);
+        out(result.count, held, held_footprint);
         result.count += 1;
     }
     result
@@ -195,7 +205,10 @@ pub struct ResolveParams {
     pub layers: u32,
     /// Relative depth gap that separates clusters.
     pub tolerance: f32,
-    pub _pad: [u32; 2],
+    /// 1: the slot buffer carries each slot's [`crate::footprint`] after the slots
+    /// ([`crate::footprint::slot_word`]), and the resolve writes it.
+    pub footprints: u32,
+    pub _pad: u32,
 }
 
 pub fn resolve_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &ResolveParams, fine: R, fine_counts: R, mut fragments: M, mut counts: M) {
@@ -210,7 +223,13 @@ pub fn resolve_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &ResolveParams, fin
         };
         let fragment = |k: u32, l: u32| slot::load(&fine, pixel(k) * p.fine_layers + l);
         let base = i * p.layers;
-        let r = resolve_pixel(side * side, count, fragment, p.layers, p.tolerance, |l, s| slot::store(&mut fragments, base + l, s));
+        let slots = w * p.height * p.layers;
+        let r = resolve_pixel(side * side, count, fragment, p.layers, p.tolerance, |l, s, footprint| {
+            slot::store(&mut fragments, base + l, s);
+            if p.footprints != 0 {
+                fragments.store(footprint::slot_word(slots, base + l), footprint);
+            }
+        });
         counts.store(i, r.count);
     });
 }

@@ -19,17 +19,55 @@ fn frag(color: [f32; 3], depth: f32) -> Sample {
 
 /// Resolves hand-built sub-sample lists into at most `layers` fragments (premultiplied colour).
 fn run(lists: &[Vec<Sample>], layers: u32, tolerance: f32) -> (Vec<Sample>, Resolved) {
+    let (out, _, r) = run_with_footprints(lists, layers, tolerance);
+    (out, r)
+}
+
+/// [`run`], with each fragment's footprint.
+fn run_with_footprints(lists: &[Vec<Sample>], layers: u32, tolerance: f32) -> (Vec<Sample>, Vec<u32>, Resolved) {
     let mut out = vec![frag([0.0; 3], 0.0); layers as usize];
+    let mut footprints = vec![0; layers as usize];
     let r = resolve_pixel(
         lists.len() as u32,
         |s| lists[s as usize].len() as u32,
         |s, k| lists[s as usize][k as usize],
         layers,
         tolerance,
-        |k, f| out[k as usize] = f,
+        |k, f, footprint| {
+            out[k as usize] = f;
+            footprints[k as usize] = footprint;
+        },
     );
     out.truncate(r.count as usize);
-    (out, r)
+    footprints.truncate(r.count as usize);
+    (out, footprints, r)
+}
+
+#[test]
+fn each_fragment_knows_the_sub_samples_that_saw_it() {
+    let (e, w, sky) = ([50.0, 40.0, 30.0], [0.2; 3], [0.0; 3]);
+    // Sub-samples 1 and 3 see an emitter in front of a wall, 0 and 2 the wall, and sub-sample 2
+    // the sky behind it (the wall casts no umbra there).
+    let lists = vec![
+        vec![frag(w, 8.0)],
+        vec![frag(e, 2.0), frag(w, 8.0)],
+        vec![frag(w, 8.0), frag(sky, f32::INFINITY)],
+        vec![frag(e, 2.0), frag(w, 8.0)],
+    ];
+    let (out, footprints, r) = run_with_footprints(&lists, 4, 0.05);
+    assert_eq!((r.count, r.merged), (3, 0));
+    assert_eq!(out[0].alpha, 0.5);
+    assert_eq!(footprints, vec![0b1010, 0b1111, 0b0100]);
+    // Clusters composited into the last slot join their footprints.
+    let (_, footprints, r) = run_with_footprints(&lists, 2, 0.05);
+    assert_eq!((r.count, r.merged), (2, 1));
+    assert_eq!(footprints, vec![0b1010, 0b1111]);
+    let (_, footprints, _) = run_with_footprints(&lists, 1, 0.05);
+    assert_eq!(footprints, vec![0b1111]);
+    // Black, fully transparent fragments give no sub-sample to a footprint.
+    let lists = vec![vec![Sample { color: [0.0; 3], alpha: 0.0, depth: 3.0 }], vec![frag(e, 3.0)], vec![], vec![]];
+    let (_, footprints, _) = run_with_footprints(&lists, 4, 0.05);
+    assert_eq!(footprints, vec![0b0010]);
 }
 
 /// Front-to-back "over" of premultiplied fragments.
@@ -231,7 +269,7 @@ fn kernel_equals_host_on(b: &mut dyn Backend) {
     let out = b.create_buffer(words, "test/slots").unwrap();
     let counts = b.create_buffer(pixels, "test/counts").unwrap();
     b.fill(out, 0, words, 0, "test").unwrap();
-    let params = ResolveParams { width: w, height: h, side, fine_layers: fine.max_layers, layers, tolerance: 0.05, _pad: [0; 2] };
+    let params = ResolveParams { width: w, height: h, side, fine_layers: fine.max_layers, layers, tolerance: 0.05, footprints: 0, _pad: 0 };
     b.run(resolve::Bindings { fine: ff, fine_counts: fc, fragments: out, counts }, groups_for(&RESOLVE, pixels), &params, "test/resolve")
         .unwrap();
     b.submit().unwrap();
@@ -287,7 +325,8 @@ fn device_peel_equals_host_on(b: &mut dyn Backend) {
     let fragments = b.read_buffer(s.fragments, 0, SLOT_WORDS as u64 * pixels * s.layers as u64).unwrap();
     let counts = b.read_buffer(s.counts, 0, pixels).unwrap();
     assert_eq!(counts, host.image.layers.counts);
-    assert_eq!(fragments, slot_words(&host.image.layers));
+    // The device peel's slots carry no footprints (yet); the host's slots are the same.
+    assert_eq!(fragments, slot_words(&host.image.layers.clone().without_footprints()));
     let mask = b.read_buffer(s.mask, 0, pixels).unwrap();
     let m = ctx.margin() as usize;
     let w = s.width as usize;

@@ -260,7 +260,10 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_the_cpu() {
         ctx.record(&mut cpu, &frame(FrameInput::Images { color, depth, encoding: case.encoding }, from_images)).unwrap();
         ctx.record(
             &mut cpu,
-            &frame(FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: 1 }, from_buffers),
+            &frame(
+                FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: 1, footprint_side: 0 },
+                from_buffers,
+            ),
         )
         .unwrap();
         cpu.submit().unwrap();
@@ -370,7 +373,10 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
         recorded.unwrap_or_else(|e| panic!("{case:?}: {e}"));
         ctx.record(
             &mut vk,
-            &frame(FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: 1 }, from_buffers),
+            &frame(
+                FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: 1, footprint_side: 0 },
+                from_buffers,
+            ),
         )
         .unwrap();
         vk.end_external().unwrap();

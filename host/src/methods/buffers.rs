@@ -12,9 +12,20 @@ pub use crate::backend::{MAX_GROUPS, groups_for};
 pub use dof_shaders::slot::SLOT_WORDS;
 
 /// Every fragment slot of `image` as [`SLOT_WORDS`] words: premultiplied r, g, b, depth, alpha
-/// (`dof_shaders::slot`, the layer input of every method and of the frame API).
+/// (`dof_shaders::slot`, the layer input of every method and of the frame API), then its
+/// footprints, one word a slot, where it has them (`FrameInput::Layers::footprint_side`).
 pub fn slot_words(image: &LayeredImage) -> Vec<u32> {
-    image.fragments.iter().flat_map(|f| f.slot().words()).collect()
+    let mut words: Vec<u32> = image.fragments.iter().flat_map(|f| f.slot().words()).collect();
+    if image.has_footprints() {
+        words.extend_from_slice(&image.footprints);
+    }
+    words
+}
+
+/// Words of `image`'s layer input ([`slot_words`]).
+pub fn input_words(image: &LayeredImage) -> u64 {
+    let per_slot = SLOT_WORDS as u64 + image.has_footprints() as u64;
+    per_slot * image.fragments.len() as u64
 }
 
 /// A `width` x `height` RGB image from 3 words a pixel of `buffer`.

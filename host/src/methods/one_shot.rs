@@ -12,7 +12,7 @@ use crate::frame::{
     ContextDesc, ContextReport, CountBuffer, DofContext, Extent, Frame, MethodInfo, MethodOptions, Reads, RgbBuffer, SlotBuffer,
 };
 use crate::layers::{LayeredImage, RgbImage};
-use crate::methods::buffers::{SLOT_WORDS, read_rgb, slot_words};
+use crate::methods::buffers::{input_words, read_rgb, slot_words};
 use crate::timing::{RunTimes, Warmup};
 use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
@@ -99,6 +99,9 @@ pub struct Runner {
     ctx: Box<dyn DofContext>,
     io: [BufferId; 3],
     extent: Extent,
+    /// Words of the input buffer, and the side of its footprints' grid (0: none).
+    input_words: u64,
+    footprint_side: u32,
     /// Allocations (backend counters) during the frames after the first: 0 unless a frame
     /// overflowed and its context grew.
     pub later_allocations: u64,
@@ -114,11 +117,13 @@ impl Runner {
             return Err(Error::InvalidArgument(format!("{} needs a non-empty image, got {w}x{h} with {layers} layers", method.name)));
         }
         let extent = Extent::new(w, h, layers);
+        // Splatting holds a word a fragment for the footprints of an area-integrated input.
+        let mut options = options.clone();
+        options.splat.footprints |= image.has_footprints();
         // The context checks the extent (and refuses) before any buffer of the input is made.
-        let ctx = (method.create)(backend, &ContextDesc::new(extent, options.clone()))?;
+        let ctx = (method.create)(backend, &ContextDesc::new(extent, options))?;
         let pixels = w as u64 * h as u64;
-        let sizes =
-            [(SLOT_WORDS as u64 * pixels * layers as u64, "frames/input"), (pixels, "frames/input-counts"), (3 * pixels, "frames/out")];
+        let sizes = [(input_words(image), "frames/input"), (pixels, "frames/input-counts"), (3 * pixels, "frames/out")];
         let mut io = Vec::new();
         for (words, label) in sizes {
             match backend.create_buffer(words, label) {
@@ -130,20 +135,22 @@ impl Runner {
                 }
             }
         }
-        Ok(Runner { ctx, io: [io[0], io[1], io[2]], extent, later_allocations: 0, frames: 0 })
+        let (input_words, footprint_side) = (sizes[0].0, if image.has_footprints() { image.footprint_side } else { 0 });
+        Ok(Runner { ctx, io: [io[0], io[1], io[2]], extent, input_words, footprint_side, later_allocations: 0, frames: 0 })
     }
 
     /// Device bytes of the context, the input and the output.
     pub fn buffer_bytes(&self) -> u64 {
         let pixels = self.extent.width as u64 * self.extent.height as u64;
-        self.ctx.device_bytes() + 4 * (SLOT_WORDS as u64 * pixels * self.extent.layers as u64 + pixels + 3 * pixels)
+        self.ctx.device_bytes() + 4 * (self.input_words + pixels + 3 * pixels)
     }
 
     /// Uploads `image` (of the runner's size and layer count) and returns the frame that reads it
     /// through `lens`.
     fn upload(&self, backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens) -> Result<Frame> {
         let e = self.extent;
-        if (image.width, image.height, image.max_layers) != (e.width, e.height, e.layers) {
+        let side = if image.has_footprints() { image.footprint_side } else { 0 };
+        if (image.width, image.height, image.max_layers, side) != (e.width, e.height, e.layers, self.footprint_side) {
             return Err(Error::InvalidArgument(format!(
                 "a frame of {}x{} with {} layers differs from the {}x{} with {} its runner was made for",
                 image.width, image.height, image.max_layers, e.width, e.height, e.layers
@@ -154,7 +161,9 @@ impl Runner {
         }
         backend.write_buffer(self.io[0], 0, &slot_words(image))?;
         backend.write_buffer(self.io[1], 0, &image.counts)?;
-        Ok(Frame::layers(e.width, e.height, e.layers, *lens, SlotBuffer(self.io[0]), CountBuffer(self.io[1]), RgbBuffer(self.io[2])))
+        let frame =
+            Frame::layers(e.width, e.height, e.layers, *lens, SlotBuffer(self.io[0]), CountBuffer(self.io[1]), RgbBuffer(self.io[2]));
+        Ok(frame.with_footprints(side))
     }
 
     /// One frame of `image` (of the runner's size and layer count) through `lens`: upload, record,

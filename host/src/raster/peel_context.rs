@@ -178,7 +178,8 @@ impl MeshPeelContext {
     /// image (crop its result by [`Self::margin`]).
     pub fn frame(&self, lens: ThinLens, output: FrameOutput) -> Frame {
         let s = &self.slots;
-        let input = FrameInput::Layers { fragments: SlotBuffer(s.fragments), counts: CountBuffer(s.counts), layers: s.layers };
+        let input =
+            FrameInput::Layers { fragments: SlotBuffer(s.fragments), counts: CountBuffer(s.counts), layers: s.layers, footprint_side: 0 };
         Frame { width: s.width, height: s.height, lens, input, output }
     }
 

@@ -162,9 +162,18 @@ fn cast_all(scene: &Scene, frame: &CameraFrame, lens: &ThinLens, options: &Layer
     let l = options.max_layers as usize;
     let n = options.subsamples.max(1);
     let side = grid_side(n);
-    image.fragments.par_chunks_mut(width * l).zip(image.counts.par_chunks_mut(width)).enumerate().for_each_init(
+    if n > 1 {
+        image.footprints = vec![dof_shaders::footprint::WHOLE; image.fragments.len()];
+        image.footprint_side = side;
+    }
+    // Point-sampled images hold no footprints: one empty chunk a row.
+    let footprint_rows: Vec<&mut [u32]> = match n > 1 {
+        true => image.footprints.chunks_mut(width * l).collect(),
+        false => (0..frame.height).map(|_| <&mut [u32]>::default()).collect(),
+    };
+    image.fragments.par_chunks_mut(width * l).zip(image.counts.par_chunks_mut(width)).zip(footprint_rows).enumerate().for_each_init(
         || (Vec::<Hit>::new(), vec![EMPTY_FRAGMENT; n as usize * l], vec![0u32; n as usize]),
-        |(hits, sub, sub_counts), (y, (fragments, counts))| {
+        |(hits, sub, sub_counts), (y, ((fragments, counts), footprints))| {
             for x in 0..width {
                 if n == 1 {
                     let ray = frame.pixel_ray(x as u32, y as u32);
@@ -182,14 +191,16 @@ fn cast_all(scene: &Scene, frame: &CameraFrame, lens: &ThinLens, options: &Layer
                     Sample { color: f.color, alpha: f.alpha, depth: f.depth }
                 };
                 let out = &mut fragments[x * l..(x + 1) * l];
+                let marks = &mut footprints[x * l..(x + 1) * l];
                 let r = resolve_pixel(
                     n,
                     |k| sub_counts[k as usize],
                     fragment,
                     l as u32,
                     options.edge_depth_ratio,
-                    |j, s| {
+                    |j, s, footprint| {
                         out[j as usize] = Fragment { color: s.color, alpha: s.alpha, depth: s.depth };
+                        marks[j as usize] = footprint;
                     },
                 );
                 counts[x] = r.count;
@@ -271,8 +282,11 @@ pub fn resolve_subsamples(fine: &LayeredImage, side: u32, max_layers: u32, toler
     let (fl, l) = (fine.max_layers as usize, max_layers as usize);
     let fw = fine.width as usize;
     let s = side as usize;
-    out.fragments.par_chunks_mut(w as usize * l).zip(out.counts.par_chunks_mut(w as usize)).enumerate().for_each(
-        |(y, (fragments, counts))| {
+    out.footprints = vec![dof_shaders::footprint::WHOLE; out.fragments.len()];
+    out.footprint_side = side;
+    let footprint_rows = out.footprints.par_chunks_mut(w as usize * l);
+    out.fragments.par_chunks_mut(w as usize * l).zip(out.counts.par_chunks_mut(w as usize)).zip(footprint_rows).enumerate().for_each(
+        |(y, ((fragments, counts), footprints))| {
             for x in 0..w as usize {
                 let pixel = |k: u32| (y * s + k as usize / s) * fw + x * s + k as usize % s;
                 let fragment = |k: u32, j: u32| {
@@ -280,14 +294,16 @@ pub fn resolve_subsamples(fine: &LayeredImage, side: u32, max_layers: u32, toler
                     Sample { color: f.color, alpha: f.alpha, depth: f.depth }
                 };
                 let out = &mut fragments[x * l..(x + 1) * l];
+                let marks = &mut footprints[x * l..(x + 1) * l];
                 let r = resolve_pixel(
                     side * side,
                     |k| fine.counts[pixel(k)].min(fl as u32),
                     fragment,
                     max_layers,
                     tolerance,
-                    |j, s| {
+                    |j, s, footprint| {
                         out[j as usize] = Fragment { color: s.color, alpha: s.alpha, depth: s.depth };
+                        marks[j as usize] = footprint;
                     },
                 );
                 counts[x] = r.count;

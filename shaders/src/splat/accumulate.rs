@@ -31,6 +31,7 @@ use super::pack::load_sharp;
 use super::surfaces::{self, Surfaces};
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Load, Mem};
+use crate::footprint;
 use crate::lens::is_nan;
 use crate::wg::{inclusive_scan, max};
 
@@ -64,7 +65,9 @@ const CH_O: usize = 16 * T;
 const ACTIVE: usize = 17 * T;
 /// The pixel's [`Surfaces`] between chunks.
 const SURFACES: usize = 19 * T;
-pub const SHARED_WORDS: usize = SURFACES + surfaces::WORDS * T;
+/// The fragment's footprint ([`crate::footprint`]; `WHOLE`: splatted from its centre).
+const CH_F: usize = SURFACES + surfaces::WORDS * T;
+pub const SHARED_WORDS: usize = CH_F + T;
 
 /// Pixels one invocation walks at a time. On the CPU a workgroup's invocations run one after
 /// another, and a pixel's walk is a chain (each covering entry waits for the coverage the last one
@@ -174,14 +177,17 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
         g.each(|lid| {
             let i = start + lid;
             if i < len {
-                let f = Fragment::load(&dense, values.load(offset + i));
+                let f = Fragment::load_in(p, &dense, values.load(offset + i));
                 let r = f.radius(&p.lens, p.max_radius);
                 let c = f.centre();
                 set(sh, CH_X, lid, c[0]);
                 set(sh, CH_Y, lid, c[1]);
                 set(sh, CH_S, lid, r);
                 let mirror = if f.depth < p.lens.focus_distance { -1.0 } else { 1.0 };
-                set(sh, CH_A, lid, f.footprint() / weight_sum(c, r, f.rim(), &p.aperture, mirror, &mask));
+                // A footprint's weights are normalised already.
+                let share = if f.has_footprint() { 1.0 } else { f.footprint() / weight_sum(c, r, f.rim(), &p.aperture, mirror, &mask) };
+                set(sh, CH_A, lid, share);
+                sh[CH_F + lid as usize] = f.footprint;
                 set(sh, CH_W, lid, f.rim());
                 set(sh, CH_M, lid, mirror);
                 set(sh, CH_O, lid, f.alpha);
@@ -233,6 +239,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                 }
                 l += 1;
             }
+            let side = p.footprint_side();
             let mut k = 0;
             while walking > 0 && k < stop {
                 let (cx, cy, s) = (get(sh, CH_X, k), get(sh, CH_Y, k), get(sh, CH_S, k));
@@ -242,8 +249,13 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                         let (dx, dy) = (pos[l][0] - cx, pos[l][1] - cy);
                         let d2 = dx * dx + dy * dy;
                         if d2 < s * s {
-                            let w =
-                                get(sh, CH_A, k) * shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask);
+                            let fp = sh[CH_F + k as usize];
+                            let w = get(sh, CH_A, k)
+                                * if fp != footprint::WHOLE {
+                                    footprint::weight(fp, side, [dx, dy], s - footprint::REACH)
+                                } else {
+                                    shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask)
+                                };
                             let (f, a) = surfaces[l].take(w, get(sh, CH_O, k), get(sh, CH_Z, k), used[l]);
                             let c = &mut acc[l];
                             *c = [c[0] + f * get(sh, CH_R, k), c[1] + f * get(sh, CH_G, k), c[2] + f * get(sh, CH_B, k)];
@@ -311,6 +323,6 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
 
 kernel!(
     /// Front-to-back accumulation of the sorted tile lists (or copy-through) into `out` (3 words a pixel).
-    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 23 * 256]
+    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 24 * 256]
         { read sharp, read dense, read values, read segments, read copy, out, st, read mask } => accumulate_pass
 );

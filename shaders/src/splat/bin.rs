@@ -173,7 +173,7 @@ pub fn place_pass<G: Group, R: Load, M: Mem>(
         let mut at = cell_start(p, &cells, &tile_base, i);
         let mut w = pack::PixelFragments::new(&counts, p, i);
         while w.advance(&layers, p) {
-            w.head.store(&mut dense, at);
+            w.head.store_in(p, &mut dense, at);
             at += 1;
         }
     });
@@ -196,7 +196,7 @@ pub fn place_merged_pass<G: Group, R: Load, M: Mem>(
     for_each_item(g, p.cells_x * p.cells_y, |c| {
         let mut at = cell_start(p, &cells, &tile_base, c);
         merge::cell_fragments(&layers, &counts, p, c, |f| {
-            f.store(&mut dense, at);
+            f.store_in(p, &mut dense, at);
             at += 1;
         });
     });
@@ -289,7 +289,7 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
             let mut i = 0;
             while i < CANDIDATES_PER_THREAD {
                 let j = start + lid * CANDIDATES_PER_THREAD + i;
-                if j < total && fragment_reaches(p, &Fragment::load(&dense, candidate(sh, nb, nb_base, j)), tx, ty) {
+                if j < total && fragment_reaches(p, &Fragment::load_in(p, &dense, candidate(sh, nb, nb_base, j)), tx, ty) {
                     kept += 1;
                 }
                 i += 1;
@@ -342,7 +342,7 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
             let mut i = 0;
             while i < CANDIDATES_PER_THREAD {
                 let j = start + lid * CANDIDATES_PER_THREAD + i;
-                if j < total && fragment_reaches(p, &Fragment::load(&dense, candidate(sh, nb, nb_base, j)), tx, ty) {
+                if j < total && fragment_reaches(p, &Fragment::load_in(p, &dense, candidate(sh, nb, nb_base, j)), tx, ty) {
                     mask |= 1 << i;
                     kept += 1;
                 }

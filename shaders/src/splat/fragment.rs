@@ -46,8 +46,10 @@
 //! §6.1). A disc of radius at most 1 reaches only the fragment's own pixel centre: such a fragment is
 //! in focus.
 
+use super::SplatParams;
 use crate::aperture::Aperture;
 use crate::exec::{Load, Mem};
+use crate::footprint;
 use crate::lens::ThinLens;
 use crate::math::{ceil, floor, sqrt};
 use crate::radiance::clamp_color;
@@ -148,19 +150,35 @@ pub struct Fragment {
     pub level: u32,
     /// Centre in half pixels.
     pub pos: [u32; 2],
+    /// The sub-samples of its pixel it covers ([`crate::footprint`]; `WHOLE` for none given). Not
+    /// in the 16 bytes: a frame with footprints keeps them in a word of their own per fragment
+    /// ([`footprint_word`]), read by [`Fragment::load_in`].
+    pub footprint: u32,
 }
 
 impl Fragment {
     /// An opaque one-pixel fragment at pixel `(x, y)`.
     #[inline]
     pub fn at_pixel(x: u32, y: u32, color: [f32; 3], depth: f32) -> Self {
-        Fragment { color, alpha: 1.0, depth, level: 0, pos: [POS_UNITS * x + 1, POS_UNITS * y + 1] }
+        Fragment { color, alpha: 1.0, depth, level: 0, pos: [POS_UNITS * x + 1, POS_UNITS * y + 1], footprint: footprint::WHOLE }
     }
 
     /// The fragment with coverage `alpha` (its colour premultiplied by it).
     #[inline]
     pub fn with_alpha(self, alpha: f32) -> Self {
         Fragment { alpha, ..self }
+    }
+
+    /// The fragment with footprint `footprint`.
+    #[inline]
+    pub fn with_footprint(self, footprint: u32) -> Self {
+        Fragment { footprint, ..self }
+    }
+
+    /// Whether it is splatted from its sub-samples ([`crate::footprint::weight`]).
+    #[inline]
+    pub fn has_footprint(&self) -> bool {
+        self.footprint != footprint::WHOLE
     }
 
     /// Whether it hides everything behind it (its 10-bit alpha is 1).
@@ -189,6 +207,7 @@ impl Fragment {
             depth: f32::from_bits(w[2]),
             level: (w[0] >> 28) & 3,
             pos: [w[3] & 0xffff, w[3] >> 16],
+            footprint: footprint::WHOLE,
         }
     }
 
@@ -197,6 +216,23 @@ impl Fragment {
     pub fn load(m: &impl Load, index: u32) -> Self {
         let b = WORDS * index;
         Self::unpack([m.load(b), m.load(b + 1), m.load(b + 2), m.load(b + 3)])
+    }
+
+    /// Fragment `index` of a frame's dense array, with its footprint where the frame has them.
+    #[inline]
+    pub fn load_in(p: &SplatParams, m: &impl Load, index: u32) -> Self {
+        let f = Self::load(m, index);
+        if p.footprint_side() > 0 { f.with_footprint(m.load(footprint_word(p, index))) } else { f }
+    }
+
+    /// Stores it as fragment `index` of a frame's dense array, with its footprint where the frame
+    /// has them.
+    #[inline]
+    pub fn store_in<M: Mem>(&self, p: &SplatParams, m: &mut M, index: u32) {
+        self.store(m, index);
+        if p.footprint_side() > 0 {
+            m.store(footprint_word(p, index), self.footprint);
+        }
     }
 
     #[inline]
@@ -228,10 +264,12 @@ impl Fragment {
     }
 
     /// Radius in pixels of the disc the fragment is splatted over (its support): its CoC radius plus
-    /// its [`extent`], capped at `cap`, and at least half a pixel (its own pixel).
+    /// its [`extent`] (with a footprint, [`crate::footprint::REACH`]), capped at `cap`, and at least
+    /// half a pixel (its own pixel).
     #[inline]
     pub fn radius(&self, lens: &ThinLens, cap: f32) -> f32 {
-        let r = lens.coc_radius_px(self.depth) + extent(self.level);
+        let reach = if self.has_footprint() { footprint::REACH } else { extent(self.level) };
+        let r = lens.coc_radius_px(self.depth) + reach;
         let r = if r < cap { r } else { cap };
         if r > 0.5 { r } else { 0.5 }
     }
@@ -239,8 +277,16 @@ impl Fragment {
     /// Whether the radius was capped (for the report).
     #[inline]
     pub fn is_capped(&self, lens: &ThinLens, cap: f32) -> bool {
-        lens.coc_radius_px(self.depth) + extent(self.level) > cap
+        let reach = if self.has_footprint() { footprint::REACH } else { extent(self.level) };
+        lens.coc_radius_px(self.depth) + reach > cap
     }
+}
+
+/// Where a frame with footprints keeps dense fragment `index`'s: one word a fragment, after the
+/// most fragments the frame can hold (every slot of the input).
+#[inline]
+pub fn footprint_word(p: &SplatParams, index: u32) -> u32 {
+    WORDS * p.width * p.height * p.layers + index
 }
 
 /// Depth of packed fragment `index` without decoding the rest.
@@ -350,7 +396,7 @@ mod tests {
 
     #[test]
     fn fields_round_trip() {
-        let f = Fragment { color: [0.5, 2.0, 7.0], alpha: 1.0, depth: 3.25, level: 2, pos: [65535, 1234] };
+        let f = Fragment { color: [0.5, 2.0, 7.0], alpha: 1.0, depth: 3.25, level: 2, pos: [65535, 1234], footprint: 0 };
         let g = round_trip(f);
         assert_eq!((g.alpha, g.depth, g.level, g.pos), (1.0, 3.25, 2, [65535, 1234]));
         // Dyadic values with few bits are exact.
@@ -425,7 +471,7 @@ mod tests {
 
     #[test]
     fn every_field_has_its_own_bits() {
-        let base = Fragment { color: [1.0, 2.0, 3.0], alpha: decode_alpha(600), depth: 4.0, level: 1, pos: [10, 20] };
+        let base = Fragment { color: [1.0, 2.0, 3.0], alpha: decode_alpha(600), depth: 4.0, level: 1, pos: [10, 20], footprint: 0 };
         let variants = [
             Fragment { color: [1.5, 2.0, 3.0], ..base },
             Fragment { color: [1.0, 2.5, 3.0], ..base },

@@ -23,6 +23,7 @@ use super::fragment::Fragment;
 use super::pack::PixelFragments;
 use super::{FLAG_UMBRA_MERGE, SplatParams, stats};
 use crate::exec::{Group, Load, Mem};
+use crate::footprint;
 use crate::lens::ThinLens;
 use crate::wg::for_each_item;
 
@@ -47,8 +48,13 @@ pub fn mergeable(f: &[Fragment; 4], level: u32, p: &SplatParams) -> bool {
     let mut m = 0;
     while m < 4 {
         let q = &f[m];
-        // Only fragments of equal alpha merge: a translucent one never joins an opaque one.
-        if q.level != level || q.alpha != f[0].alpha || !(p.lens.coc_radius_px(q.depth) >= p.merge_min_radius) {
+        // Only fragments of equal alpha merge: a translucent one never joins an opaque one. One
+        // that covers part of its pixel's sub-samples keeps its footprint, unmerged.
+        if q.level != level
+            || q.alpha != f[0].alpha
+            || !(p.lens.coc_radius_px(q.depth) >= p.merge_min_radius)
+            || (q.has_footprint() && q.footprint != footprint::full(p.footprint_side()))
+        {
             return false;
         }
         zmin = if q.depth < zmin { q.depth } else { zmin };
@@ -93,14 +99,21 @@ pub fn merged(f: &[Fragment; 4], lens: &ThinLens, ox: u32, oy: u32, edge: u32) -
         m += 1;
     }
     // The block's centre in half pixels: 2·(o·edge + edge/2).
-    Fragment { color, alpha: f[0].alpha, depth: f[widest].depth, level: f[0].level + 1, pos: [2 * ox * edge + edge, 2 * oy * edge + edge] }
+    Fragment {
+        color,
+        alpha: f[0].alpha,
+        depth: f[widest].depth,
+        level: f[0].level + 1,
+        pos: [2 * ox * edge + edge, 2 * oy * edge + edge],
+        footprint: footprint::WHOLE,
+    }
 }
 
 /// What a fragment reads as after a stage stored it (packed and unpacked): merging reads its
 /// members as stored, so results do not depend on whether a level was kept in memory.
 #[inline]
 fn as_stored(f: &Fragment) -> Fragment {
-    Fragment::unpack(f.pack())
+    Fragment::unpack(f.pack()).with_footprint(f.footprint)
 }
 
 /// Merges and umbra-skipped fragments, summed over the levels of one output cell.
@@ -169,7 +182,7 @@ impl Quad {
     /// The next fragment of this 2x2 cell's merged list (one step of the front-to-back walk over its
     /// four pixels; the cell must not be done).
     fn step(&mut self, layers: &impl Load, p: &SplatParams, c: &mut MergeCounts) -> Fragment {
-        let mut f = [Fragment { color: [0.0; 3], alpha: 1.0, depth: 0.0, level: 0, pos: [0; 2] }; 4];
+        let mut f = [Fragment::at_pixel(0, 0, [0.0; 3], 0.0); 4];
         let mut present = 0;
         let mut front = 4usize;
         let mut m = 0usize;
@@ -226,7 +239,7 @@ pub fn cell_fragments(layers: &impl Load, counts: &impl Load, p: &SplatParams, o
     }
     // 4x4: the four 2x2 cells' lists, each with its current head.
     let mut q = [Quad::EMPTY; 4];
-    let mut head = [Fragment { color: [0.0; 3], alpha: 1.0, depth: 0.0, level: 0, pos: [0; 2] }; 4];
+    let mut head = [Fragment::at_pixel(0, 0, [0.0; 3], 0.0); 4];
     // Bit m: the 2x2 cell m has a head (bool arrays do not compile to SPIR-V).
     let mut has = 0u32;
     let mut m = 0usize;

@@ -49,6 +49,11 @@ pub const MAX_GROUPS: u32 = 65535;
 
 /// `flags`: drop fragments inside a merged fragment's umbra (§6.2).
 pub const FLAG_UMBRA_MERGE: u32 = 1;
+/// `flags` bits 8-10: the side of the sub-sample grid of the input's footprints (1 to 4; 0: the
+/// input has none). The input slot buffer then carries one footprint word a slot after its slots
+/// ([`crate::footprint::slot_word`]), and the dense array one a fragment after its fragments
+/// ([`fragment::footprint_word`]).
+pub const FOOTPRINT_SIDE_SHIFT: u32 = 8;
 
 /// Push constants of every splatting kernel (128 bytes, all that Vulkan guarantees). `rings` and
 /// `max_radius` are the configured bounds here; the kernels use the frame's own,
@@ -93,6 +98,11 @@ impl SplatParams {
     #[inline]
     pub fn cell_cap(&self) -> u32 {
         self.layers * self.cell * self.cell
+    }
+    /// The side of the input footprints' sub-sample grid, 0 for none ([`FOOTPRINT_SIDE_SHIFT`]).
+    #[inline]
+    pub fn footprint_side(&self) -> u32 {
+        (self.flags >> FOOTPRINT_SIDE_SHIFT) & 7
     }
     /// Edge of the pixel block one accumulation workgroup covers (divides `tile`).
     #[inline]

@@ -24,6 +24,7 @@
 use super::fragment::Fragment;
 use super::{SplatParams, stats};
 use crate::exec::{Group, Load, Mem};
+use crate::footprint;
 use crate::lens::{is_finite, is_positive};
 use crate::radiance::{clamp_color, is_clamped};
 use crate::slot::{Composite, Slot, clamp_alpha, is_alpha_clamped};
@@ -33,6 +34,15 @@ use crate::wg::for_each_item;
 #[inline]
 pub fn input_slot(layers: &impl Load, p: &SplatParams, pixel: u32, k: u32) -> Slot {
     crate::slot::load(layers, pixel * p.layers + k)
+}
+
+/// The footprint of slot `(pixel, k)` where the input has them, else `WHOLE`.
+#[inline]
+pub fn input_footprint(layers: &impl Load, p: &SplatParams, pixel: u32, k: u32) -> u32 {
+    if p.footprint_side() == 0 {
+        return footprint::WHOLE;
+    }
+    layers.load(footprint::slot_word(p.width * p.height * p.layers, pixel * p.layers + k))
 }
 
 /// Whether a slot may become a fragment.
@@ -110,7 +120,7 @@ pub struct PixelFragments {
     pub backed: u32,
 }
 
-const NO_FRAGMENT: Fragment = Fragment { color: [0.0; 3], alpha: 1.0, depth: 0.0, level: 0, pos: [0; 2] };
+const NO_FRAGMENT: Fragment = Fragment { color: [0.0; 3], alpha: 1.0, depth: 0.0, level: 0, pos: [0; 2], footprint: footprint::WHOLE };
 
 impl PixelFragments {
     pub const EMPTY: PixelFragments = PixelFragments {
@@ -166,7 +176,9 @@ impl PixelFragments {
                 self.valid += 1;
                 self.through *= 1.0 - a;
                 let f = Fragment::at_pixel(x, y, c, z).with_alpha(a);
+                // In focus as without a footprint: a sharp front stays in its pixel.
                 let in_focus = f.radius(&p.lens, p.max_radius) <= 1.0;
+                let f = if self.k > self.n { f } else { f.with_footprint(input_footprint(layers, p, self.pixel, self.k - 1)) };
                 if in_focus && self.state == NO_SHARP {
                     self.front.add(c, a);
                     self.front_z = z;

@@ -89,6 +89,8 @@ pub fn finish_pass<G: Group, M: Mem>(g: &mut G, p: &SplatParams, mut st: M) {
         }
         let widest = f32::from_bits(st.load(stats::WIDEST));
         // Run with the last merging step's parameters: `cell` is the merged cells' edge.
+        // A fragment with a footprint reaches `footprint::REACH` beyond its CoC, not half a pixel.
+        let widest = if p.footprint_side() > 0 { widest + crate::footprint::REACH - 0.5 } else { widest };
         let (rings, cap) = rings_for(widest, p.cell, p.max_radius, p.tile);
         st.store(stats::RINGS, rings);
         st.store(stats::RADIUS_CAP, cap.to_bits());

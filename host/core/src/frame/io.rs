@@ -55,7 +55,15 @@ pub enum FrameInput {
     /// the slots used per pixel (one word each). A pixel's slots composite front to back over
     /// black; an opaque slot has alpha 1 and its colour as it is. Alpha NaN or outside [0, 1] is
     /// clamped (NaN to 0) and counted in the method's report.
-    Layers { fragments: SlotBuffer, counts: CountBuffer, layers: u32 },
+    ///
+    /// `footprint_side` 0: the slots stand for whole pixels. 1 to 4: after the slots, `fragments`
+    /// holds one word a slot, the slot's footprint, the sub-samples of a `side × side` grid of its
+    /// pixel it covers (`dof_shaders::footprint`; bit `j·side + i` for the stratum centred at
+    /// `((i + ½)/side, (j + ½)/side)`; 0 for the whole pixel), as an area-integrated layer image or
+    /// a multisampled renderer's sample masks give it. Multi-layer and single-layer splatting (with
+    /// the circular aperture, on a context created with `footprints`) splat such a slot from its
+    /// sub-samples; the other methods read the slots alone.
+    Layers { fragments: SlotBuffer, counts: CountBuffer, layers: u32, footprint_side: u32 },
     /// The caller's colour and depth images, one layer: colour RGBA32F, RGBA16F or B10G11R11, depth
     /// a depth attachment as it is (D32, D24 with stencil, X8_D24; read through its depth aspect,
     /// with a `Standard` or `Reversed` encoding) or R32F (any encoding). They are copied into the
@@ -114,7 +122,25 @@ impl Frame {
         counts: CountBuffer,
         output: RgbBuffer,
     ) -> Self {
-        Frame { width, height, lens, input: FrameInput::Layers { fragments, counts, layers }, output: FrameOutput::Buffer(output) }
+        let input = FrameInput::Layers { fragments, counts, layers, footprint_side: 0 };
+        Frame { width, height, lens, input, output: FrameOutput::Buffer(output) }
+    }
+
+    /// The frame with its layer input's footprints on a `side × side` grid (0: none; see
+    /// [`FrameInput::Layers`]); an image input has none.
+    pub fn with_footprints(mut self, side: u32) -> Self {
+        if let FrameInput::Layers { ref mut footprint_side, .. } = self.input {
+            *footprint_side = side;
+        }
+        self
+    }
+
+    /// The side of the input footprints' sub-sample grid (0: none; see [`FrameInput::Layers`]).
+    pub fn footprint_side(&self) -> u32 {
+        match self.input {
+            FrameInput::Layers { footprint_side, .. } => footprint_side,
+            FrameInput::Images { .. } => 0,
+        }
     }
 
     /// Fragment slots per pixel the frame reads.
@@ -157,8 +183,12 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
     let mut buffers = Vec::new();
     let mut images = Vec::new();
     match f.input {
-        FrameInput::Layers { fragments, counts, .. } => {
-            buffers.extend([("fragments", fragments.0, SLOT_WORDS as u64 * pixels * layers as u64), ("counts", counts.0, pixels)])
+        FrameInput::Layers { fragments, counts, footprint_side, .. } => {
+            if footprint_side > 4 {
+                return Err(Error::InvalidArgument(format!("footprints on a {footprint_side}x{footprint_side} grid: the side is 0 to 4")));
+            }
+            let per_slot = SLOT_WORDS as u64 + (footprint_side > 0) as u64;
+            buffers.extend([("fragments", fragments.0, per_slot * pixels * layers as u64), ("counts", counts.0, pixels)])
         }
         FrameInput::Images { color, depth, encoding } => {
             images.extend([("colour", color, COLOR_FORMATS.as_slice(), false), ("depth", depth, DEPTH_FORMATS.as_slice(), false)]);

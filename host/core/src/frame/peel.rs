@@ -208,7 +208,9 @@ impl PeelSlots {
             fine_layers: fine.layers,
             layers: self.layers,
             tolerance,
-            _pad: [0; 2],
+            // The device peel's slots carry no footprints yet (the disocclusion mask moves slots).
+            footprints: 0,
+            _pad: 0,
         };
         let bound = resolve::Bindings { fine: fine.fragments, fine_counts: fine.counts, fragments: self.fragments, counts: self.counts };
         backend.run(bound, groups_for(&RESOLVE, self.pixels()), &params, "peel/resolve")

@@ -64,7 +64,9 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
     if w == 0 || h == 0 || layers == 0 {
         return Err(Error::InvalidArgument(format!("an empty {w}x{h} image with {layers} layers")));
     }
-    let mut desc = SplatContextDesc::new(w, h, layers, options.clone());
+    let mut options = options.clone();
+    options.footprints |= image.has_footprints();
+    let mut desc = SplatContextDesc::new(w, h, layers, options);
     // The context checks the bounds (and refuses) before the input is uploaded.
     let first = context(backend, &desc, keep_stages)?;
     let pixels = w as u64 * h as u64;
@@ -74,7 +76,8 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
     let result = with_buffers(backend, &sizes, |backend, io| {
         backend.write_buffer(io[0], 0, &input)?;
         backend.write_buffer(io[1], 0, &image.counts)?;
-        let frame = Frame::layers(w, h, layers, *lens, SlotBuffer(io[0]), CountBuffer(io[1]), RgbBuffer(io[2]));
+        let side = if image.has_footprints() { image.footprint_side } else { 0 };
+        let frame = Frame::layers(w, h, layers, *lens, SlotBuffer(io[0]), CountBuffer(io[1]), RgbBuffer(io[2])).with_footprints(side);
         let mut attempt = 0;
         loop {
             let mut ctx = match first.take() {

@@ -747,7 +747,7 @@ impl App<'_> {
             width: fw,
             height: fh,
             lens: shape.lens,
-            input: FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: slots },
+            input: FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: slots, footprint_side: 0 },
             output: FrameOutput::Buffer(RgbBuffer(display.rgb)),
         };
         // The display pass: the documented tone map (the one PNG previews use, from the same

@@ -19,7 +19,7 @@ use dof_shaders::splat::fragment::MAX_EDGE;
 use dof_shaders::splat::merge::{MERGE, splat_merge};
 use dof_shaders::splat::pack::{PACK, splat_pack};
 use dof_shaders::splat::plan::{splat_plan_finish, splat_plan_reduce};
-use dof_shaders::splat::{FLAG_UMBRA_MERGE, MAX_RINGS, SplatParams, TILE_SIZES, block_for, stats};
+use dof_shaders::splat::{FLAG_UMBRA_MERGE, FOOTPRINT_SIDE_SHIFT, MAX_RINGS, SplatParams, TILE_SIZES, block_for, stats};
 pub use options::{Merge, SplatOptions, SplatPlanReport};
 pub use report::{LLVMPIPE_SAFE_LIST, SplatReport};
 
@@ -209,7 +209,8 @@ impl SplatContext {
                 false => (cell_words, "splat/cell-counts, cell-offsets"),
             };
             let cells_buf = owned.make(backend, cells_buf, cells_label)?;
-            let dense = owned.make(backend, 4 * slots, "splat/dense")?;
+            let dense_words = if desc.options.footprints { 5 * slots } else { 4 * slots };
+            let dense = owned.make(backend, dense_words, "splat/dense")?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             let mask_words = desc.options.aperture.mask_words();
             let stats = per_frame(&mut owned, backend, desc.frames_in_flight, stats::WORDS as u64, "splat/stats")?;
@@ -333,7 +334,7 @@ impl SplatContext {
             tiles_y: f.height.div_ceil(o.tile),
             // The device plan replaces these two (`dof_shaders::splat::planned`).
             rings: MAX_RINGS,
-            flags: if o.umbra_merge { FLAG_UMBRA_MERGE } else { 0 },
+            flags: if o.umbra_merge { FLAG_UMBRA_MERGE } else { 0 } | (self.footprint_side(f) << FOOTPRINT_SIDE_SHIFT),
             max_radius: self.radius_cap,
             merge_min_radius: o.merge_min_radius,
             merge_depth_ratio: o.merge_depth_ratio,
@@ -343,6 +344,12 @@ impl SplatContext {
             list_capacity: self.list_entries as u32,
             max_list: self.max_list,
         }
+    }
+
+    /// The side of the footprints the frame's fragments are splatted from: its input's, with the
+    /// circular aperture (a shaped one splats every fragment from its centre).
+    fn footprint_side(&self, f: &Frame) -> u32 {
+        if self.desc.options.aperture.kernel.is_circle() { f.footprint_side() } else { 0 }
     }
 
     /// Grows (or shrinks) the context to a new maximum extent: frees and reallocates its buffers.
@@ -361,6 +368,11 @@ impl SplatContext {
     /// `begin_external` and `end_external`).
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.b.io.as_ref())?;
+        if f.footprint_side() > 0 && !self.desc.options.footprints {
+            return Err(Error::InvalidArgument(
+                "a frame with footprints needs a splatting context created with `SplatOptions::footprints`".into(),
+            ));
+        }
         // This frame's slot of what reports read; every other buffer is shared between frames.
         let slot = self.in_flight.next();
         (self.b.stats, self.b.segments) = self.reports[slot];

@@ -57,6 +57,9 @@ pub struct SplatOptions {
     pub umbra_merge: bool,
     /// The aperture shape (default the circle; see [`crate::aperture`]).
     pub aperture: ApertureShape,
+    /// Hold a word a fragment for input footprints (`FrameInput::Layers::footprint_side`): frames
+    /// with footprints need it; 4 bytes a slot of the extent more.
+    pub footprints: bool,
 }
 
 impl Default for SplatOptions {
@@ -70,6 +73,7 @@ impl Default for SplatOptions {
             merge_color_tol: 0.25,
             umbra_merge: true,
             aperture: ApertureShape::circle(),
+            footprints: false,
         }
     }
 }

@@ -1,0 +1,250 @@
+//! A fragment's footprint: which sub-samples of its pixel it covers, and the splat weight that
+//! spreads it from there.
+//!
+//! An area-integrated layer image ([`crate::resolve`]) knows, for each fragment, the sub-samples of
+//! the pixel's `side × side` grid that saw it (bit `k` for sub-sample `k`, at
+//! [`crate::resolve::subsample_offset`]). A renderer with multisampling has the same thing: a
+//! fragment's sample mask. Splatting a fragment from its pixel's centre puts a sphere 1 px across
+//! anywhere in the pixel on the same pixels; splatting it from its sub-samples spreads it over the
+//! footprint it really has. With the disc's exact coverage of each destination pixel's box in place
+//! of a linear rim, this is what lights the rim pixels of a small, saturated emitter's bokeh as an
+//! integral over the pixel's area does (the measurement is in `docs/measurements.md`, "Where
+//! `highlights`' region error comes from").
+//!
+//! A footprint word is the mask in its low [`MAX_BITS`] bits; 0 means "none given": the fragment
+//! stands for its whole pixel and is splatted from the centre as before.
+
+use crate::math::{asin, sqrt};
+use crate::resolve::subsample_offset;
+use crate::slot::SLOT_WORDS;
+
+/// Bits a footprint holds (a 4x4 grid).
+pub const MAX_BITS: u32 = 16;
+/// The footprint of no sub-sample given.
+pub const WHOLE: u32 = 0;
+/// How far beyond its CoC radius a footprint's splat reaches from the pixel centre: the farthest
+/// sub-sample lies `(side − 1)/(2·side)·√2 < √2/2` from it, and a destination box reaches `√2/2`
+/// beyond the point it is tested at.
+pub const REACH: f32 = core::f32::consts::SQRT_2;
+
+/// Where a slot buffer of `slots` slots that carries footprints holds slot `index`'s: one word a
+/// slot, after the slots.
+#[inline]
+pub fn slot_word(slots: u32, index: u32) -> u32 {
+    SLOT_WORDS * slots + index
+}
+
+/// Every sub-sample of a `side × side` grid.
+#[inline]
+pub fn full(side: u32) -> u32 {
+    let n = side * side;
+    if n >= 32 { u32::MAX } else { (1u32 << n) - 1 }
+}
+
+/// `∫ s(x) dx` with `s(x) = √(r² − x²)`, for `x` in `[−r, r]`.
+#[inline]
+fn chord_integral(x: f32, r: f32) -> f32 {
+    let q = r * r - x * x;
+    let s = if q > 0.0 { sqrt(q) } else { 0.0 };
+    let t = x / r;
+    let t = if t > 1.0 {
+        1.0
+    } else if t < -1.0 {
+        -1.0
+    } else {
+        t
+    };
+    0.5 * (x * s + r * r * asin(t))
+}
+
+#[inline]
+fn clamp_to(x: f32, a: f32) -> f32 {
+    if x > a {
+        a
+    } else if x < -a {
+        -a
+    } else {
+        x
+    }
+}
+
+/// `∫ min(c, s(x)) dx` over `[x0, x1]`, for `c >= 0` and `s(x) = √(r² − x²)` (0 outside `[−r, r]`):
+/// `c` where the chord is longer than `c` (`|x| < a`, `a = √(r² − c²)`), the chord elsewhere.
+#[inline]
+fn capped_chords(c: f32, x0: f32, x1: f32, r: f32) -> f32 {
+    let q = r * r - c * c;
+    let a = if q > 0.0 { sqrt(q) } else { 0.0 };
+    let (u0, u1) = (clamp_to(x0, a), clamp_to(x1, a));
+    let (v0, v1) = (clamp_to(x0, r), clamp_to(x1, r));
+    c * (u1 - u0) + (chord_integral(v1, r) - chord_integral(v0, r)) - (chord_integral(u1, r) - chord_integral(u0, r))
+}
+
+/// Area of the disc of radius `r` about the origin inside the box `[x0, x1] × [y0, y1]`, exact (the
+/// integral of each vertical chord's length inside `[y0, y1]`, in closed form), in `[0, box area]`.
+#[inline]
+pub fn disc_box_area(r: f32, x0: f32, x1: f32, y0: f32, y1: f32) -> f32 {
+    if !(r > 0.0) {
+        return 0.0;
+    }
+    // The chord at x spans [−s, s]; inside [y0, y1] it is min(y1, s) − max(y0, −s) where positive.
+    let area = if y0 >= 0.0 {
+        capped_chords(y1, x0, x1, r) - capped_chords(y0, x0, x1, r)
+    } else if y1 <= 0.0 {
+        capped_chords(-y0, x0, x1, r) - capped_chords(-y1, x0, x1, r)
+    } else {
+        capped_chords(y1, x0, x1, r) + capped_chords(-y0, x0, x1, r)
+    };
+    let most = (x1 - x0) * (y1 - y0);
+    if area > most {
+        most
+    } else if area > 0.0 {
+        area
+    } else {
+        0.0
+    }
+}
+
+/// The share of a point's disc of radius `r` that falls in the unit box at `[ox, ox + 1] × [oy, oy +
+/// 1]` relative to the point: 1 or 0 without the integral where the box lies wholly inside or
+/// outside; a point source (`r` under 1e-4) gives its whole share to the box that holds it. The
+/// shares of every box of the pixel lattice sum to 1.
+#[inline]
+pub fn box_share(r: f32, ox: f32, oy: f32) -> f32 {
+    let (x1, y1) = (ox + 1.0, oy + 1.0);
+    if !(r >= 1e-4) {
+        return if ox <= 0.0 && x1 > 0.0 && oy <= 0.0 && y1 > 0.0 { 1.0 } else { 0.0 };
+    }
+    // Nearest and farthest points of the box from the origin.
+    let nx = if ox > 0.0 {
+        ox
+    } else if x1 < 0.0 {
+        -x1
+    } else {
+        0.0
+    };
+    let ny = if oy > 0.0 {
+        oy
+    } else if y1 < 0.0 {
+        -y1
+    } else {
+        0.0
+    };
+    if nx * nx + ny * ny >= r * r {
+        return 0.0;
+    }
+    let fx = if -ox > x1 { -ox } else { x1 };
+    let fy = if -oy > y1 { -oy } else { y1 };
+    let area = if fx * fx + fy * fy <= r * r { 1.0 } else { disc_box_area(r, ox, x1, oy, y1) };
+    area / (core::f32::consts::PI * r * r)
+}
+
+/// The weight a pixel whose centre lies at `d` (pixel centre minus the fragment's pixel centre)
+/// receives from a fragment of footprint `mask` on a `side × side` grid with CoC radius `r`: the
+/// mean over its sub-samples of [`box_share`]. Normalised: a fragment's weights over the pixel
+/// lattice sum to 1, so it spreads exactly its energy.
+#[inline]
+pub fn weight(mask: u32, side: u32, d: [f32; 2], r: f32) -> f32 {
+    let n = side * side;
+    let (mut sum, mut count) = (0.0f32, 0u32);
+    let mut k = 0;
+    while k < n && k < MAX_BITS {
+        if mask & (1 << k) != 0 {
+            // The destination box relative to sub-sample k: the pixel centre is at d + ½ from the
+            // fragment pixel's corner, the sub-sample at its offset.
+            let o = subsample_offset(k, side);
+            sum += box_share(r, d[0] - o[0], d[1] - o[1]);
+            count += 1;
+        }
+        k += 1;
+    }
+    if count == 0 { 0.0 } else { sum / count as f32 }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The disc's area inside a box by a fine midpoint rule.
+    fn brute(r: f32, x0: f32, x1: f32, y0: f32, y1: f32) -> f64 {
+        let g = 400;
+        let (mut inside, cell) = (0u64, ((x1 - x0) as f64 / g as f64) * ((y1 - y0) as f64 / g as f64));
+        for j in 0..g {
+            for i in 0..g {
+                let x = x0 as f64 + (x1 - x0) as f64 * (i as f64 + 0.5) / g as f64;
+                let y = y0 as f64 + (y1 - y0) as f64 * (j as f64 + 0.5) / g as f64;
+                inside += (x * x + y * y < (r * r) as f64) as u64;
+            }
+        }
+        inside as f64 * cell
+    }
+
+    #[test]
+    fn the_disc_in_a_box_matches_a_midpoint_rule() {
+        for &r in &[0.05f32, 0.3, 0.7, 1.0, 1.6, 3.3, 7.5] {
+            for &(x0, y0) in &[(-0.5f32, -0.5f32), (0.0, 0.0), (-1.2, 0.3), (0.4, -2.1), (r - 0.5, -0.5), (-r - 0.4, r - 0.7), (2.0, 2.0)] {
+                let a = disc_box_area(r, x0, x0 + 1.0, y0, y0 + 1.0) as f64;
+                let b = brute(r, x0, x0 + 1.0, y0, y0 + 1.0);
+                assert!((a - b).abs() < 2e-3 * (1.0 + b), "r {r} box at ({x0}, {y0}): {a} against {b}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_box_over_the_whole_disc_holds_all_of_it() {
+        for &r in &[0.01f32, 0.5, 2.0, 9.0] {
+            let a = disc_box_area(r, -r - 1.0, r + 0.5, -r - 0.25, r + 2.0);
+            let want = core::f32::consts::PI * r * r;
+            assert!((a - want).abs() <= 1e-5 * want.max(1e-3), "{r}: {a} against {want}");
+        }
+    }
+
+    /// Shares over the lattice sum to 1 from any sub-sample, for point sources and wide discs.
+    #[test]
+    fn shares_over_the_lattice_sum_to_one() {
+        for &r in &[0.0f32, 5e-5, 0.2, 0.6, 1.0, 2.4, 6.0, 13.7] {
+            for side in 1..=4u32 {
+                for mask in [full(side), 1, 1 << (side * side - 1), 0b0110 & full(side)] {
+                    if mask == 0 {
+                        continue;
+                    }
+                    let reach = (r + 2.0).ceil() as i32;
+                    let mut sum = 0.0f64;
+                    for y in -reach..=reach {
+                        for x in -reach..=reach {
+                            sum += weight(mask, side, [x as f32, y as f32], r) as f64;
+                        }
+                    }
+                    assert!((sum - 1.0).abs() < 2e-4, "r {r} side {side} mask {mask:b}: {sum}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_footprint_reaches_no_farther_than_its_bound() {
+        for &r in &[0.3f32, 1.0, 3.7] {
+            for side in [2u32, 4] {
+                for y in -8..=8 {
+                    for x in -8..=8 {
+                        let d = ((x * x + y * y) as f32).sqrt();
+                        if weight(full(side), side, [x as f32, y as f32], r) > 0.0 {
+                            assert!(d < r + REACH, "r {r}: ({x}, {y}) lit");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// A sub-sample in the pixel's top-left corner lights its left and upper neighbours more than
+    /// its right and lower ones.
+    #[test]
+    fn the_footprint_moves_the_disc() {
+        let r = 1.2;
+        let corner = 1; // sub-sample 0 of a 2x2 grid
+        assert!(weight(corner, 2, [-1.0, 0.0], r) > weight(corner, 2, [1.0, 0.0], r));
+        assert!(weight(corner, 2, [0.0, -1.0], r) > weight(corner, 2, [0.0, 1.0], r));
+        let whole = full(2);
+        assert!((weight(whole, 2, [-1.0, 0.0], r) - weight(whole, 2, [1.0, 0.0], r)).abs() < 1e-6);
+    }
+}

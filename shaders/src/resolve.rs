@@ -231,6 +231,12 @@ pub fn resolve_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &ResolveParams, fin
             }
         });
         counts.store(i, r.count);
+        // Unused slots hold no footprint, as the host's resolve leaves them.
+        let mut l = r.count;
+        while p.footprints != 0 && l < p.layers {
+            fragments.store(footprint::slot_word(slots, base + l), footprint::WHOLE);
+            l += 1;
+        }
     });
 }
 

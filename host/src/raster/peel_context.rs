@@ -108,8 +108,10 @@ impl MeshPeelContext {
         let pixels = fw as u64 * fh as u64;
         let mut owned = Owned::default();
         let made = (|| {
-            let slots = PeelSlots::new(backend, &mut owned, w, h, desc.max_layers)?;
-            let fine = if side > 1 { PeelSlots::new(backend, &mut owned, fw, fh, desc.max_layers)? } else { slots };
+            // Resolved slots carry each fragment's footprint in its pixel's sub-sample grid.
+            let footprint_side = if side > 1 { side } else { 0 };
+            let slots = PeelSlots::new(backend, &mut owned, w, h, desc.max_layers, footprint_side)?;
+            let fine = if side > 1 { PeelSlots::new(backend, &mut owned, fw, fh, desc.max_layers, 0)? } else { slots };
             let bounds = owned.make(backend, 4 * scene.triangles.len() as u64, "peel/bounds")?;
             let vis = owned.make(backend, VIS_WORDS as u64 * pixels, "peel/vis")?;
             Ok((slots, fine, Pass { args: fine.args, reach: fine.reach, bounds, vis }))
@@ -178,9 +180,19 @@ impl MeshPeelContext {
     /// image (crop its result by [`Self::margin`]).
     pub fn frame(&self, lens: ThinLens, output: FrameOutput) -> Frame {
         let s = &self.slots;
-        let input =
-            FrameInput::Layers { fragments: SlotBuffer(s.fragments), counts: CountBuffer(s.counts), layers: s.layers, footprint_side: 0 };
+        let input = FrameInput::Layers {
+            fragments: SlotBuffer(s.fragments),
+            counts: CountBuffer(s.counts),
+            layers: s.layers,
+            footprint_side: s.footprint_side,
+        };
         Frame { width: s.width, height: s.height, lens, input, output }
+    }
+
+    /// The side of the sub-sample grid of the slots' footprints (0: none; a splatting context for
+    /// [`Self::frame`] needs `SplatOptions::footprints` when it is not).
+    pub fn footprint_side(&self) -> u32 {
+        self.slots.footprint_side
     }
 
     /// The device buffers (slots, counts, mask, ...), for tests and callers that read them.

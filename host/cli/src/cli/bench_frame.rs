@@ -561,7 +561,9 @@ fn orbiting(
     let [w, h] = peel.size();
     let made = (|| {
         let output = b.create_buffer(3 * w as u64 * h as u64, "bench/output")?;
-        match (method.create)(b, &ContextDesc::new(Extent::new(w, h, peel.layers()), options.clone())) {
+        let mut options = options.clone();
+        options.splat.footprints |= peel.footprint_side() > 0;
+        match (method.create)(b, &ContextDesc::new(Extent::new(w, h, peel.layers()), options)) {
             Ok(ctx) => Ok((output, ctx)),
             Err(e) => {
                 b.destroy_buffer(output);

@@ -38,8 +38,10 @@ pub struct PeelSlots {
     pub height: u32,
     pub layers: u32,
     /// `layers` slots a pixel ([`SLOT_WORDS`] words: premultiplied r, g, b, depth, alpha; the frame
-    /// API's layer input), front to back.
+    /// API's layer input), front to back; then, with `footprint_side` above 0, a footprint a slot
+    /// (`dof_shaders::footprint`; the frame API's `FrameInput::Layers::footprint_side`).
     pub fragments: BufferId,
+    pub footprint_side: u32,
     /// Slots used per pixel.
     pub counts: BufferId,
     /// Per pixel, the depth the next pass's fragments must lie beyond (f32 bits).
@@ -100,8 +102,9 @@ impl PeelReport {
 }
 
 impl PeelSlots {
-    /// Makes the buffers (into `owned`), refusing an empty image or slots beyond one buffer.
-    pub fn new(backend: &mut dyn Backend, owned: &mut Owned, width: u32, height: u32, layers: u32) -> Result<Self> {
+    /// Makes the buffers (into `owned`), refusing an empty image or slots beyond one buffer; with a
+    /// `footprint_side` above 0 the slots carry footprints (written by [`Self::resolve_from`]).
+    pub fn new(backend: &mut dyn Backend, owned: &mut Owned, width: u32, height: u32, layers: u32, footprint_side: u32) -> Result<Self> {
         let pixels = super::io::context_pixels(backend, "peel", width, height, layers)?;
         if width > i32::MAX as u32 / 2 || height > i32::MAX as u32 / 2 {
             return Err(Error::TooLarge {
@@ -114,7 +117,8 @@ impl PeelSlots {
             width,
             height,
             layers,
-            fragments: owned.make(backend, SLOT_WORDS as u64 * pixels * layers as u64, "peel/fragments")?,
+            footprint_side,
+            fragments: owned.make(backend, (SLOT_WORDS as u64 + (footprint_side > 0) as u64) * pixels * layers as u64, "peel/fragments")?,
             counts: owned.make(backend, pixels, "peel/counts")?,
             reach: owned.make(backend, pixels, "peel/reach")?,
             args: owned.make(backend, ARGS_WORDS as u64, "peel/args")?,
@@ -195,7 +199,11 @@ impl PeelSlots {
     /// than these slots; see `dof_shaders::resolve`), into these slots: area-integrated fragments,
     /// clusters `tolerance` apart in relative depth. Run [`Self::finish`] on these slots after it.
     pub fn resolve_from(&self, backend: &mut dyn Backend, fine: &PeelSlots, side: u32, tolerance: f32) -> Result<()> {
-        if side == 0 || fine.width != self.width * side || fine.height != self.height * side {
+        if side == 0
+            || fine.width != self.width * side
+            || fine.height != self.height * side
+            || (self.footprint_side != 0 && self.footprint_side != side)
+        {
             return Err(Error::InvalidArgument(format!(
                 "a {}x{} sub-sample peel does not resolve into {}x{} slots with {side}x{side} sub-samples",
                 fine.width, fine.height, self.width, self.height
@@ -208,8 +216,7 @@ impl PeelSlots {
             fine_layers: fine.layers,
             layers: self.layers,
             tolerance,
-            // The device peel's slots carry no footprints yet (the disocclusion mask moves slots).
-            footprints: 0,
+            footprints: (self.footprint_side > 0) as u32,
             _pad: 0,
         };
         let bound = resolve::Bindings { fine: fine.fragments, fine_counts: fine.counts, fragments: self.fragments, counts: self.counts };

@@ -145,7 +145,7 @@ impl RendererPeel {
         }
         let mut owned = Owned::default();
         let made = (|| {
-            let slots = PeelSlots::new(backend, &mut owned, d.width, d.height, d.max_layers)?;
+            let slots = PeelSlots::new(backend, &mut owned, d.width, d.height, d.max_layers, 0)?;
             let color = owned.make(backend, d.color_format.words_per_pixel() * pixels, "renderer-peel/color")?;
             let depth = owned.make(backend, pixels, "renderer-peel/depth")?;
             Ok((slots, color, depth))
@@ -184,8 +184,12 @@ impl RendererPeel {
     /// The slots the last finished frame wrote, as a frame of the frame API.
     pub fn frame(&self, lens: ThinLens, output: FrameOutput) -> Frame {
         let s = &self.slots;
-        let input =
-            FrameInput::Layers { fragments: SlotBuffer(s.fragments), counts: CountBuffer(s.counts), layers: s.layers, footprint_side: 0 };
+        let input = FrameInput::Layers {
+            fragments: SlotBuffer(s.fragments),
+            counts: CountBuffer(s.counts),
+            layers: s.layers,
+            footprint_side: s.footprint_side,
+        };
         Frame { width: s.width, height: s.height, lens, input, output }
     }
 

@@ -1,0 +1,172 @@
+//! Footprints (`dof_shaders::footprint`): fragments splatted from the sub-samples of their pixel
+//! that saw them. Energy kept and light moved where the footprint lies, on hand-built frames;
+//! area-integrated scenes on Vulkan against the CPU, stage by stage; the frame API's checks.
+
+use dof::backend::{Backend, CpuBackend};
+use dof::frame::{ContextDesc, CountBuffer, Extent, Frame, MethodOptions, RgbBuffer, SlotBuffer, registry};
+use dof::layers::{Fragment, LayeredImage, RgbImage};
+use dof::methods::buffers::slot_words;
+use dof::methods::splat::{Merge, SplatOptions, splat, splat_with_stages};
+use dof::scene::{Camera, GuardBand, LayerOptions, builtin, raycast_layers};
+use dof::stress::test_lens;
+use dof_shaders::footprint;
+use dof_shaders::lens::ThinLens;
+use dof_tests::{assert_clean, vulkan};
+
+const W: u32 = 24;
+
+/// A `W`x`W` frame of a black wall at the test lens' focus (every pixel's sharp front, which takes
+/// all the coverage left, so nothing is renormalised) with one emitter of energy `energy` at pixel
+/// (11, 12), covering the sub-samples `mask` of a `side`² grid (alpha their share), at depth `z`.
+fn one_emitter(side: u32, mask: u32, z: f32, energy: f32) -> LayeredImage {
+    let mut img = LayeredImage::new(W, W, 2).unwrap();
+    img.footprints = vec![footprint::WHOLE; img.fragments.len()];
+    img.footprint_side = side;
+    for y in 0..W {
+        for x in 0..W {
+            let p = img.pixel_index(x, y);
+            if (x, y) == (11, 12) {
+                let alpha = mask.count_ones() as f32 / (side * side) as f32;
+                img.push(x, y, Fragment { color: [energy; 3], alpha, depth: z }).unwrap();
+                img.footprints[2 * p] = mask;
+            }
+            img.push(x, y, Fragment { color: [0.0; 3], alpha: 1.0, depth: 2.0 }).unwrap();
+        }
+    }
+    img
+}
+
+fn lens() -> ThinLens {
+    test_lens(0.02)
+}
+
+fn energy(image: &RgbImage) -> f64 {
+    image.data.iter().map(|p| p[0] as f64).sum()
+}
+
+/// The light-weighted mean position of an image (pixel centres at `x + ½`).
+fn centroid(image: &RgbImage) -> [f64; 2] {
+    let (mut sx, mut sy, mut s) = (0.0, 0.0, 0.0);
+    for y in 0..image.height {
+        for x in 0..image.width {
+            let v = image.data[(y * image.width + x) as usize][0] as f64;
+            sx += v * (x as f64 + 0.5);
+            sy += v * (y as f64 + 0.5);
+            s += v;
+        }
+    }
+    [sx / s, sy / s]
+}
+
+#[test]
+fn a_footprint_spreads_exactly_its_energy_from_where_it_lies() {
+    let l = lens();
+    for z in [0.6f32, 1.0, 1.4, 1.8] {
+        let r = l.coc_radius_px(z);
+        for (side, mask) in [(2u32, 0b0001u32), (2, 0b0101), (4, 0xffff), (4, 0x0033), (4, 0x8000)] {
+            let img = one_emitter(side, mask, z, 1000.0);
+            let out = splat(&mut CpuBackend::new(), &img, &l, &SplatOptions::default()).unwrap();
+            let e = energy(&out.image);
+            assert!((e / 1000.0 - 1.0).abs() < 1e-4, "CoC {r} px, {side}x{side} mask {mask:b}: energy {e}");
+            // Out of focus, the light's centre is the mean of the footprint's sub-samples.
+            let mut want = [0.0f64; 2];
+            for k in 0..side * side {
+                if mask & (1 << k) != 0 {
+                    let o = dof_shaders::resolve::subsample_offset(k, side);
+                    want[0] += (11.0 + o[0]) as f64 / mask.count_ones() as f64;
+                    want[1] += (12.0 + o[1]) as f64 / mask.count_ones() as f64;
+                }
+            }
+            let got = centroid(&out.image);
+            if r > 1.0 {
+                assert!((got[0] - want[0]).abs() < 0.03 && (got[1] - want[1]).abs() < 0.03, "CoC {r}: {got:?} against {want:?}");
+            }
+            // Without the footprint, the light is centred on the pixel.
+            let whole = splat(&mut CpuBackend::new(), &img.clone().without_footprints(), &l, &SplatOptions::default()).unwrap();
+            let c = centroid(&whole.image);
+            assert!((c[0] - 11.5).abs() < 1e-3 && (c[1] - 12.5).abs() < 1e-3, "{c:?}");
+        }
+    }
+}
+
+#[test]
+fn in_focus_footprints_change_nothing() {
+    // Just in front of the test lens' focus (depth 2) the emitter is in focus too: a sharp front,
+    // kept in its pixel, as without its footprint.
+    let img = one_emitter(4, 0x0f0f, 1.999, 50.0);
+    let a = splat(&mut CpuBackend::new(), &img, &lens(), &SplatOptions::default()).unwrap();
+    let b = splat(&mut CpuBackend::new(), &img.clone().without_footprints(), &lens(), &SplatOptions::default()).unwrap();
+    assert_eq!(a.image.data, b.image.data);
+}
+
+/// `highlights` ray cast at 4 and 16 sub-samples: every stage on Vulkan equals the CPU's, footprint
+/// words included; the image within float rounding; and the footprints changed the image.
+#[test]
+fn area_integrated_scenes_on_vulkan_match_the_cpu() {
+    let Some(mut vk) = vulkan() else { return };
+    let scene = builtin("highlights").unwrap();
+    let camera = Camera { width: 64, height: 36, ..scene.camera };
+    let l = scene.lens.thin_lens(&camera).unwrap();
+    for (subsamples, merge) in [(4, Merge::None), (16, Merge::X4)] {
+        let options = LayerOptions { subsamples, guard_band: GuardBand::Pixels(2), ..LayerOptions::default() };
+        let layers = raycast_layers(&scene.scene, &camera, &l, &options).unwrap().layers;
+        assert!(layers.has_footprints());
+        assert!(layers.footprints.iter().any(|&m| m != 0 && m != footprint::full(layers.footprint_side)), "partial footprints");
+        let o = SplatOptions { merge, ..Default::default() };
+        let on_vk = splat_with_stages(&mut vk, &layers, &l, &o).unwrap();
+        assert_clean(&mut vk);
+        let on_cpu = splat_with_stages(&mut CpuBackend::new(), &layers, &l, &o).unwrap();
+        let (a, b) = (on_vk.intermediates.as_ref().unwrap(), on_cpu.intermediates.as_ref().unwrap());
+        assert!(a.dense == b.dense, "dense fragments and footprints ({subsamples} sub-samples)");
+        assert!(a.sorted == b.sorted, "sorted lists ({subsamples} sub-samples)");
+        for (p, q) in on_vk.image.data.iter().zip(&on_cpu.image.data) {
+            for c in 0..3 {
+                assert!((p[c] - q[c]).abs() <= 1e-5 * q[c].abs().max(1e-2), "{p:?} vs {q:?}");
+            }
+        }
+        let without = splat(&mut CpuBackend::new(), &layers.clone().without_footprints(), &l, &o).unwrap();
+        assert!(without.image.data != on_cpu.image.data, "the footprints moved light");
+    }
+}
+
+#[test]
+fn the_frame_api_checks_footprints() {
+    let mut b = CpuBackend::new();
+    let img = one_emitter(2, 0b0011, 1.2, 10.0);
+    let words = slot_words(&img);
+    let pixels = (W * W) as u64;
+    let input = b.create_buffer(words.len() as u64, "test/input").unwrap();
+    let counts = b.create_buffer(pixels, "test/counts").unwrap();
+    let out = b.create_buffer(3 * pixels, "test/out").unwrap();
+    b.write_buffer(input, 0, &words).unwrap();
+    b.write_buffer(counts, 0, &img.counts).unwrap();
+    let frame = Frame::layers(W, W, 2, lens(), SlotBuffer(input), CountBuffer(counts), RgbBuffer(out));
+    let method = registry::method("multilayer").unwrap();
+    let extent = Extent::new(W, W, 2);
+    // A context made without room for footprints refuses a frame that has them.
+    let mut plain = (method.create)(&mut b, &ContextDesc::new(extent, MethodOptions::default())).unwrap();
+    let e = plain.record(&mut b, &frame.with_footprints(2)).unwrap_err().to_string();
+    assert!(e.contains("footprints"), "{e}");
+    plain.destroy(&mut b);
+    let mut options = MethodOptions::default();
+    options.splat.footprints = true;
+    let mut ctx = (method.create)(&mut b, &ContextDesc::new(extent, options)).unwrap();
+    let e = ctx.record(&mut b, &frame.with_footprints(5)).unwrap_err().to_string();
+    assert!(e.contains("grid"), "{e}");
+    // The same frame through the frame API and through the one-shot path: the same image.
+    ctx.record(&mut b, &frame.with_footprints(2)).unwrap();
+    b.submit().unwrap();
+    let got = b.read_buffer(out, 0, 3 * pixels).unwrap();
+    let want = splat(&mut CpuBackend::new(), &img, &lens(), &SplatOptions::default()).unwrap();
+    let want: Vec<u32> = want.image.data.iter().flat_map(|p| p.map(f32::to_bits)).collect();
+    assert_eq!(got, want);
+    ctx.destroy(&mut b);
+    // A buffer without the footprint words is too small for a frame that says it has them.
+    let short = b.create_buffer(words.len() as u64 - pixels * 2, "test/short").unwrap();
+    let frame = Frame::layers(W, W, 2, lens(), SlotBuffer(short), CountBuffer(counts), RgbBuffer(out)).with_footprints(2);
+    let mut options = MethodOptions::default();
+    options.splat.footprints = true;
+    let mut ctx = (method.create)(&mut b, &ContextDesc::new(extent, options)).unwrap();
+    assert!(ctx.record(&mut b, &frame).is_err());
+    ctx.destroy(&mut b);
+}

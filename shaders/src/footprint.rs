@@ -144,6 +144,13 @@ pub fn box_share(r: f32, ox: f32, oy: f32) -> f32 {
 /// lattice sum to 1, so it spreads exactly its energy.
 #[inline]
 pub fn weight(mask: u32, side: u32, d: [f32; 2], r: f32) -> f32 {
+    // Every sub-sample's box inside the disc (no sub-sample lies farther than REACH − √2/2 from
+    // the pixel centre, no box corner farther than √2/2 from its centre).
+    let d2 = d[0] * d[0] + d[1] * d[1];
+    let inner = r - REACH;
+    if inner > 0.0 && d2 <= inner * inner {
+        return 1.0 / (core::f32::consts::PI * r * r);
+    }
     let n = side * side;
     let (mut sum, mut count) = (0.0f32, 0u32);
     let mut k = 0;

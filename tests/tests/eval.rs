@@ -16,6 +16,7 @@ fn quick_evaluation_covers_every_method_and_setting() {
         progress: false,
         coc_sweep: vec![4.0, 16.0],
         subsamples: 1,
+        footprints: true,
         aimed_emitters: false,
         size: None,
     };
@@ -79,6 +80,7 @@ fn unknown_methods_are_named() {
         progress: false,
         coc_sweep: vec![],
         subsamples: 1,
+        footprints: true,
         aimed_emitters: false,
         size: None,
     };
@@ -100,6 +102,7 @@ fn a_gltf_scene_is_measured_against_its_accumulation_buffer() {
         progress: false,
         coc_sweep: vec![4.0],
         subsamples: 1,
+        footprints: true,
         aimed_emitters: false,
         size: None,
     };

@@ -45,6 +45,8 @@ pub struct EvalOptions {
     pub coc_sweep: Vec<f64>,
     /// Sub-samples a pixel of the multi-layer images (`LayerOptions::subsamples`).
     pub subsamples: u32,
+    /// Keep the area-integrated fragments' footprints (`LayerOptions::footprints`).
+    pub footprints: bool,
     /// The built-in scenes' references integrate their emissive spheres' light with aimed samples
     /// (`ReferenceOptions::aimed_emitters`; scenes with translucency are refused).
     pub aimed_emitters: bool,
@@ -198,7 +200,7 @@ fn prepare_builtin(name: &str, options: &EvalOptions) -> Result<Prepared> {
         scene = scene.with_size(160, 90);
     }
     let lens = scene.thin_lens()?;
-    let layer_options = LayerOptions { subsamples: options.subsamples, ..LayerOptions::default() };
+    let layer_options = LayerOptions { subsamples: options.subsamples, footprints: options.footprints, ..LayerOptions::default() };
     let ml = raycast_layers(&scene.scene, &scene.camera, &lens, &layer_options)?;
     let exact = if options.quick {
         let o = ReferenceOptions { spp: 64, progress: options.progress, aimed_emitters: options.aimed_emitters, ..Default::default() };
@@ -232,7 +234,7 @@ fn prepare_gltf(path: &str, options: &EvalOptions, backend: &mut dyn Backend) ->
     let (camera, settings, near) = mesh.default_view(if options.quick { 160 } else { 640 }, None)?;
     let lens = settings.thin_lens(&camera)?;
     let raster = mesh.raster();
-    let layer_options = LayerOptions { subsamples: options.subsamples, ..LayerOptions::default() };
+    let layer_options = LayerOptions { subsamples: options.subsamples, footprints: options.footprints, ..LayerOptions::default() };
     let ml = peel_layers(backend, &raster, &camera, &lens, near, &layer_options)?.image;
     let samples = if options.quick { 64 } else { 256 };
     let acc = accumulate(

@@ -119,7 +119,9 @@ impl Runner {
         let extent = Extent::new(w, h, layers);
         // Splatting holds a word a fragment for the footprints of an area-integrated input.
         let mut options = options.clone();
-        options.splat.footprints |= image.has_footprints();
+        if image.has_footprints() {
+            options.splat.footprint_side = options.splat.footprint_side.max(image.footprint_side);
+        }
         // The context checks the extent (and refuses) before any buffer of the input is made.
         let ctx = (method.create)(backend, &ContextDesc::new(extent, options))?;
         let pixels = w as u64 * h as u64;

@@ -226,6 +226,7 @@ pub fn peel_layers(
     mesh.destroy(backend);
     let (passes, times) = result?;
     let full = if side > 1 { resolve_subsamples(&full, side, options.max_layers, options.edge_depth_ratio)? } else { full };
+    let full = if options.footprints { full } else { full.without_footprints() };
     Ok(Peeled { image: apply_disocclusion(full, &coarse, lens, options, margin), passes, times })
 }
 

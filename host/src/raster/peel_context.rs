@@ -47,6 +47,9 @@ pub struct MeshPeelDesc {
     /// `resolve` kernel turns into the frame's area-integrated slots before the disocclusion
     /// buffer (`LayerOptions::subsamples`).
     pub subsamples: u32,
+    /// With sub-samples, the resolved slots carry each fragment's footprint
+    /// (`LayerOptions::footprints`; [`MeshPeelContext::footprint_side`]).
+    pub footprints: bool,
 }
 
 impl MeshPeelDesc {
@@ -60,6 +63,7 @@ impl MeshPeelDesc {
             edge_depth_ratio: options.edge_depth_ratio,
             disocclusion: options.disocclusion,
             subsamples: options.subsamples,
+            footprints: options.footprints,
         }
     }
 }
@@ -109,7 +113,7 @@ impl MeshPeelContext {
         let mut owned = Owned::default();
         let made = (|| {
             // Resolved slots carry each fragment's footprint in its pixel's sub-sample grid.
-            let footprint_side = if side > 1 { side } else { 0 };
+            let footprint_side = if side > 1 && desc.footprints { side } else { 0 };
             let slots = PeelSlots::new(backend, &mut owned, w, h, desc.max_layers, footprint_side)?;
             let fine = if side > 1 { PeelSlots::new(backend, &mut owned, fw, fh, desc.max_layers, 0)? } else { slots };
             let bounds = owned.make(backend, 4 * scene.triangles.len() as u64, "peel/bounds")?;
@@ -190,7 +194,7 @@ impl MeshPeelContext {
     }
 
     /// The side of the sub-sample grid of the slots' footprints (0: none; a splatting context for
-    /// [`Self::frame`] needs `SplatOptions::footprints` when it is not).
+    /// [`Self::frame`] needs `SplatOptions::footprint_side` at least this).
     pub fn footprint_side(&self) -> u32 {
         self.slots.footprint_side
     }

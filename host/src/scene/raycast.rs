@@ -122,6 +122,7 @@ pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
     check_subsamples(options.subsamples)?;
     let mut full = LayeredImage::new(frame.width, frame.height, options.max_layers)?;
     cast_all(scene, &frame, lens, options, &mut full);
+    let full = if options.footprints { full } else { full.without_footprints() };
     Ok(apply_disocclusion(full, &frame, lens, options, margin))
 }
 

@@ -152,7 +152,7 @@ pub struct Fragment {
     pub pos: [u32; 2],
     /// The sub-samples of its pixel it covers ([`crate::footprint`]; `WHOLE` for none given). Not
     /// in the 16 bytes: a frame with footprints keeps them in a word of their own per fragment
-    /// ([`footprint_word`]), read by [`Fragment::load_in`].
+    /// ([`footprint_field`]), read by [`Fragment::load_in`].
     pub footprint: u32,
 }
 
@@ -222,16 +222,24 @@ impl Fragment {
     #[inline]
     pub fn load_in(p: &SplatParams, m: &impl Load, index: u32) -> Self {
         let f = Self::load(m, index);
-        if p.footprint_side() > 0 { f.with_footprint(m.load(footprint_word(p, index))) } else { f }
+        let side = p.footprint_side();
+        if side == 0 {
+            return f;
+        }
+        let (word, shift, mask) = footprint_field(p, side, index);
+        f.with_footprint((m.load(word) >> shift) & mask)
     }
 
     /// Stores it as fragment `index` of a frame's dense array, with its footprint where the frame
-    /// has them.
+    /// has them (into a field the frame cleared: an add of disjoint bits, as neighbours share its
+    /// word).
     #[inline]
     pub fn store_in<M: Mem>(&self, p: &SplatParams, m: &mut M, index: u32) {
         self.store(m, index);
-        if p.footprint_side() > 0 {
-            m.store(footprint_word(p, index), self.footprint);
+        let side = p.footprint_side();
+        if side > 0 && self.footprint != footprint::WHOLE {
+            let (word, shift, mask) = footprint_field(p, side, index);
+            m.atomic_add(word, (self.footprint & mask) << shift);
         }
     }
 
@@ -282,11 +290,42 @@ impl Fragment {
     }
 }
 
-/// Where a frame with footprints keeps dense fragment `index`'s: one word a fragment, after the
-/// most fragments the frame can hold (every slot of the input).
+/// Bits a footprint of a `side × side` grid takes in the dense array: its sub-samples, rounded up
+/// to a power of two (1, 4 or 16), so that fields never straddle words.
 #[inline]
-pub fn footprint_word(p: &SplatParams, index: u32) -> u32 {
-    WORDS * p.width * p.height * p.layers + index
+pub fn footprint_bits(side: u32) -> u32 {
+    let n = side * side;
+    if n <= 1 {
+        1
+    } else if n <= 4 {
+        4
+    } else {
+        16
+    }
+}
+
+/// Words a frame of `slots` input slots needs for its fragments' footprints on a `side` grid.
+#[inline]
+pub fn footprint_words(slots: u32, side: u32) -> u32 {
+    let per_word = 32 / footprint_bits(side);
+    slots.div_ceil(per_word)
+}
+
+/// Where a frame with footprints on a `side` grid keeps dense fragment `index`'s: word, shift and
+/// mask of its [`footprint_bits`]-wide field, after the most fragments the frame can hold (every
+/// slot of the input). The frame clears them before its place pass.
+#[inline]
+pub fn footprint_field(p: &SplatParams, side: u32, index: u32) -> (u32, u32, u32) {
+    let bits = footprint_bits(side);
+    let per_word = 32 / bits;
+    let mask = if bits >= 32 { u32::MAX } else { (1 << bits) - 1 };
+    (footprint_base(p) + index / per_word, (index % per_word) * bits, mask)
+}
+
+/// The first word of a frame's footprint fields in the dense array.
+#[inline]
+pub fn footprint_base(p: &SplatParams) -> u32 {
+    WORDS * p.width * p.height * p.layers
 }
 
 /// Depth of packed fragment `index` without decoding the rest.

@@ -42,7 +42,9 @@ pub fn input_footprint(layers: &impl Load, p: &SplatParams, pixel: u32, k: u32) 
     if p.footprint_side() == 0 {
         return footprint::WHOLE;
     }
-    layers.load(footprint::slot_word(p.width * p.height * p.layers, pixel * p.layers + k))
+    let mask = layers.load(footprint::slot_word(p.width * p.height * p.layers, pixel * p.layers + k));
+    // Every sub-sample: the whole pixel, splatted from its centre.
+    if mask & footprint::full(p.footprint_side()) == footprint::full(p.footprint_side()) { footprint::WHOLE } else { mask }
 }
 
 /// Whether a slot may become a fragment.

@@ -83,6 +83,10 @@ pub struct FrameArgs {
     /// runs at sub-sample resolution and resolves on the device).
     #[arg(long, visible_alias = "area-samples", default_value_t = scene::DEFAULT_SUBSAMPLES)]
     subsamples: u32,
+    /// Leave out the footprints of area-integrated fragments (which of a pixel's sub-samples saw
+    /// each): splatting then spreads every fragment from its pixel's centre.
+    #[arg(long)]
+    no_footprints: bool,
 }
 
 /// The largest frame edge `bench frame` takes (that of 4K and beyond; the contexts check the
@@ -113,11 +117,12 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     let b = backend.as_mut();
     let (measured, size, layers) = match args.orbit {
         Some(deg) => {
-            let m = orbiting(b, method, &view, &options, warmup, args.frames, deg, args.out.as_deref(), args.subsamples)?;
+            let layers = LayerOptions { subsamples: args.subsamples, footprints: !args.no_footprints, ..Default::default() };
+            let m = orbiting(b, method, &view, &options, warmup, args.frames, deg, args.out.as_deref(), &layers)?;
             (m, [view.camera.width, view.camera.height], LayerOptions::default().max_layers)
         }
         None => {
-            let layered = view.layers(b, args.subsamples)?;
+            let layered = view.layers(b, args.subsamples, !args.no_footprints)?;
             let image = match method.reads {
                 Reads::AllLayers => layered,
                 Reads::FrontLayer => layered.front_layer(),
@@ -522,8 +527,8 @@ impl SceneView {
 
     /// The multi-layer input made once (no guard band): ray cast for a built-in scene, peeled on
     /// the host for a glTF one.
-    fn layers(&self, b: &mut dyn Backend, subsamples: u32) -> anyhow::Result<LayeredImage> {
-        let options = LayerOptions { guard_band: GuardBand::Off, subsamples, ..Default::default() };
+    fn layers(&self, b: &mut dyn Backend, subsamples: u32, footprints: bool) -> anyhow::Result<LayeredImage> {
+        let options = LayerOptions { guard_band: GuardBand::Off, subsamples, footprints, ..Default::default() };
         Ok(match &self.analytic {
             Some(analytic) => raycast_layers(analytic, &self.camera, &self.lens, &options)?.layers,
             None => peel_layers(b, &self.mesh.raster(), &self.camera, &self.lens, self.near, &options)?.image.layers,
@@ -552,17 +557,16 @@ fn orbiting(
     frames: u32,
     deg: f32,
     out: Option<&Path>,
-    subsamples: u32,
+    layer_options: &LayerOptions,
 ) -> anyhow::Result<Measured> {
-    let layer_options = LayerOptions { subsamples, ..LayerOptions::default() };
-    let desc = MeshPeelDesc::new(&layer_options, view.near);
+    let desc = MeshPeelDesc::new(layer_options, view.near);
     let lens = view.lens;
     let mut peel = MeshPeelContext::new(b, &view.mesh.raster(), &view.camera, &lens, &desc)?;
     let [w, h] = peel.size();
     let made = (|| {
         let output = b.create_buffer(3 * w as u64 * h as u64, "bench/output")?;
         let mut options = options.clone();
-        options.splat.footprints |= peel.footprint_side() > 0;
+        options.splat.footprint_side = options.splat.footprint_side.max(peel.footprint_side());
         match (method.create)(b, &ContextDesc::new(Extent::new(w, h, peel.layers()), options)) {
             Ok(ctx) => Ok((output, ctx)),
             Err(e) => {

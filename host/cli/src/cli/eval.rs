@@ -49,6 +49,10 @@ pub struct EvalArgs {
     /// or 16 (area-integrated; see docs/scenes-and-references.md).
     #[arg(long, visible_alias = "area-samples", default_value_t = dof::scene::DEFAULT_SUBSAMPLES)]
     subsamples: u32,
+    /// Leave out the footprints of area-integrated fragments (which of a pixel's sub-samples saw
+    /// each): splatting then spreads every fragment from its pixel's centre.
+    #[arg(long)]
+    no_footprints: bool,
     /// The built-in scenes' references integrate the light of their emissive spheres with samples
     /// aimed at each (converged at saturated bokeh rims, where uniform samples leave pixels dark by
     /// chance; see docs/scenes-and-references.md). Refused for scenes with translucent surfaces.
@@ -146,6 +150,7 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         progress: true,
         coc_sweep,
         subsamples: args.subsamples,
+        footprints: !args.no_footprints,
         aimed_emitters: args.aimed_emitters,
         size: args.width.zip(args.height),
     };

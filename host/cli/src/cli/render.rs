@@ -154,6 +154,10 @@ pub struct RenderArgs {
     /// into fragments of partial coverage; see docs/scenes-and-references.md).
     #[arg(long, visible_alias = "area-samples", default_value_t = scene::DEFAULT_SUBSAMPLES)]
     subsamples: u32,
+    /// Leave out the footprints of area-integrated fragments (which of a pixel's sub-samples saw
+    /// each): splatting then spreads every fragment from its pixel's centre.
+    #[arg(long)]
+    no_footprints: bool,
     /// Output EXR; a PNG preview is written beside it. Default `out/<scene>-<method>.exr`.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -659,7 +663,13 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         let shots = sequence::shots(args, args.frames.unwrap_or(1), &camera, &settings, &lens)?;
         return sequence::render_sequence(args, out, sequence::Source::Builtin(&builtin.scene), &shots);
     }
-    let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, subsamples: args.subsamples, ..Default::default() };
+    let options = LayerOptions {
+        max_layers: args.layers,
+        guard_band: args.guard_band,
+        subsamples: args.subsamples,
+        footprints: !args.no_footprints,
+        ..Default::default()
+    };
     let layered = raycast_layers(&builtin.scene, &camera, &lens, &options)?;
     match args.method {
         Method::Pinhole => {
@@ -776,7 +786,13 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     }
     let mut b = backend(args.backend)?;
     let raster = mesh.raster();
-    let options = LayerOptions { max_layers: args.layers, guard_band: args.guard_band, subsamples: args.subsamples, ..Default::default() };
+    let options = LayerOptions {
+        max_layers: args.layers,
+        guard_band: args.guard_band,
+        subsamples: args.subsamples,
+        footprints: !args.no_footprints,
+        ..Default::default()
+    };
     let peeled = peel_layers(b.as_mut(), &raster, &camera, &lens, near, &options)?;
     let ms: f64 = peeled.times.iter().map(|t| t.ms).sum();
     println!("depth peeling on {}: {} passes, {ms:.2} ms", b.device_name(), peeled.passes);

@@ -61,7 +61,7 @@ pub enum FrameInput {
     /// pixel it covers (`dof_shaders::footprint`; bit `j·side + i` for the stratum centred at
     /// `((i + ½)/side, (j + ½)/side)`; 0 for the whole pixel), as an area-integrated layer image or
     /// a multisampled renderer's sample masks give it. Multi-layer and single-layer splatting (with
-    /// the circular aperture, on a context created with `footprints`) splat such a slot from its
+    /// the circular aperture, on a context created with a `footprint_side` at least this) splat such a slot from its
     /// sub-samples; the other methods read the slots alone.
     Layers { fragments: SlotBuffer, counts: CountBuffer, layers: u32, footprint_side: u32 },
     /// The caller's colour and depth images, one layer: colour RGBA32F, RGBA16F or B10G11R11, depth

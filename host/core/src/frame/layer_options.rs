@@ -27,6 +27,11 @@ pub struct LayerOptions {
     /// pixel centre's ray alone (point-sampled layers; the default here, while the command line
     /// takes `dof::scene::DEFAULT_SUBSAMPLES`). A renderer's own peel is point-sampled.
     pub subsamples: u32,
+    /// With more than one sub-sample, keep each fragment's footprint (which sub-samples saw it:
+    /// `dof_shaders::footprint`), so splatting spreads it from there. Default on; off, every
+    /// fragment stands for its whole pixel (4 bytes a slot less; what the methods other than
+    /// splatting read either way).
+    pub footprints: bool,
 }
 
 impl Default for LayerOptions {
@@ -38,6 +43,7 @@ impl Default for LayerOptions {
             edge_depth_ratio: 0.05,
             guard_band: GuardBand::Auto,
             subsamples: 1,
+            footprints: true,
         }
     }
 }

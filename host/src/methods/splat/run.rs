@@ -65,7 +65,9 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
         return Err(Error::InvalidArgument(format!("an empty {w}x{h} image with {layers} layers")));
     }
     let mut options = options.clone();
-    options.footprints |= image.has_footprints();
+    if image.has_footprints() {
+        options.footprint_side = options.footprint_side.max(image.footprint_side);
+    }
     let mut desc = SplatContextDesc::new(w, h, layers, options);
     // The context checks the bounds (and refuses) before the input is uploaded.
     let first = context(backend, &desc, keep_stages)?;

@@ -15,7 +15,7 @@ use crate::ops::sort::SegmentedSort;
 use dof_shaders::KernelDesc;
 use dof_shaders::splat::accumulate::splat_accumulate;
 use dof_shaders::splat::bin::{ALLOC, PLACE, PLACE_MERGED, splat_alloc, splat_bin, splat_place, splat_place_merged, splat_tile_count};
-use dof_shaders::splat::fragment::MAX_EDGE;
+use dof_shaders::splat::fragment::{MAX_EDGE, footprint_base, footprint_words};
 use dof_shaders::splat::merge::{MERGE, splat_merge};
 use dof_shaders::splat::pack::{PACK, splat_pack};
 use dof_shaders::splat::plan::{splat_plan_finish, splat_plan_reduce};
@@ -209,7 +209,11 @@ impl SplatContext {
                 false => (cell_words, "splat/cell-counts, cell-offsets"),
             };
             let cells_buf = owned.make(backend, cells_buf, cells_label)?;
-            let dense_words = if desc.options.footprints { 5 * slots } else { 4 * slots };
+            let footprint_words = match desc.options.footprint_side {
+                0 => 0,
+                side => footprint_words(slots as u32, side) as u64,
+            };
+            let dense_words = 4 * slots + footprint_words;
             let dense = owned.make(backend, dense_words, "splat/dense")?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             let mask_words = desc.options.aperture.mask_words();
@@ -368,10 +372,13 @@ impl SplatContext {
     /// `begin_external` and `end_external`).
     pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.b.io.as_ref())?;
-        if f.footprint_side() > 0 && !self.desc.options.footprints {
-            return Err(Error::InvalidArgument(
-                "a frame with footprints needs a splatting context created with `SplatOptions::footprints`".into(),
-            ));
+        if f.footprint_side() > self.desc.options.footprint_side {
+            return Err(Error::InvalidArgument(format!(
+                "a frame with footprints on a {0}x{0} grid needs a splatting context created with `SplatOptions::footprint_side` \
+                 {0} or more (it has {1})",
+                f.footprint_side(),
+                self.desc.options.footprint_side
+            )));
         }
         // This frame's slot of what reports read; every other buffer is shared between frames.
         let slot = self.in_flight.next();
@@ -397,6 +404,12 @@ impl SplatContext {
         let output = output_buffer(f, b.io.as_ref())?;
 
         backend.fill(b.stats, 0, stats::WORDS as u64, 0, "splat/clear")?;
+        let side = self.footprint_side(f);
+        if side > 0 {
+            // The place pass adds each footprint into its cleared field.
+            let slots = f.width * f.height * f.layer_count();
+            backend.fill(b.dense, footprint_base(&fin) as u64, footprint_words(slots, side) as u64, 0, "splat/clear")?;
+        }
         backend.run(splat_plan_reduce::Bindings { layers: fragments, counts, st: b.stats }, pixel_groups, &first, "splat/plan")?;
         backend.run(splat_plan_finish::Bindings { st: b.stats }, [1, 1, 1], &fin, "splat/plan")?;
         let (_, _, fx, fy) = cells(f.width, f.height, f.layer_count(), last);

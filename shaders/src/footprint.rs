@@ -3,7 +3,7 @@
 //!
 //! An area-integrated layer image ([`crate::resolve`]) knows, for each fragment, the sub-samples of
 //! the pixel's `side × side` grid that saw it (bit `k` for sub-sample `k`, at
-//! [`crate::resolve::subsample_offset`]). A renderer with multisampling has the same thing: a
+//! [`subsample_offset`]). A renderer with multisampling has the same thing: a
 //! fragment's sample mask. Splatting a fragment from its pixel's centre puts a sphere 1 px across
 //! anywhere in the pixel on the same pixels; splatting it from its sub-samples spreads it over the
 //! footprint it really has. With the disc's exact coverage of each destination pixel's box in place
@@ -15,7 +15,6 @@
 //! stands for its whole pixel and is splatted from the centre as before.
 
 use crate::math::{asin, sqrt};
-use crate::resolve::subsample_offset;
 use crate::slot::SLOT_WORDS;
 
 /// Bits a footprint holds (a 4x4 grid).
@@ -27,6 +26,13 @@ pub const WHOLE: u32 = 0;
 /// beyond the point it is tested at.
 pub const REACH: f32 = core::f32::consts::SQRT_2;
 
+/// Where sub-sample `k` of a `side` x `side` grid lies in its pixel: the stratum centres
+/// `((i + 0.5) / side, (j + 0.5) / side)`, `k = j · side + i` (the pixel centre for `side = 1`).
+#[inline]
+pub fn subsample_offset(k: u32, side: u32) -> [f32; 2] {
+    let s = side as f32;
+    [((k % side) as f32 + 0.5) / s, ((k / side) as f32 + 0.5) / s]
+}
 /// Where a slot buffer of `slots` slots that carries footprints holds slot `index`'s: one word a
 /// slot, after the slots.
 #[inline]

@@ -26,6 +26,7 @@
 
 use crate::exec::{Group, Load, Mem};
 use crate::footprint;
+pub use crate::footprint::subsample_offset;
 use crate::lens::is_finite;
 use crate::slot::{self, clamp_alpha, over};
 use crate::wg::for_each_item;
@@ -180,14 +181,6 @@ pub fn grid_side(n: u32) -> u32 {
         16 => 4,
         _ => 0,
     }
-}
-
-/// Where sub-sample `k` of a `side` x `side` grid lies in its pixel: the stratum centres
-/// `((i + 0.5) / side, (j + 0.5) / side)`, `k = j · side + i` (the pixel centre for `side = 1`).
-#[inline]
-pub fn subsample_offset(k: u32, side: u32) -> [f32; 2] {
-    let s = side as f32;
-    [((k % side) as f32 + 0.5) / s, ((k / side) as f32 + 0.5) / s]
 }
 
 /// The `resolve` kernel's constants.

@@ -92,6 +92,23 @@ fn a_footprint_spreads_exactly_its_energy_from_where_it_lies() {
     }
 }
 
+/// Bits beyond the grid mean nothing: a footprint with none of its grid's bits, or all of them, is
+/// the whole pixel.
+#[test]
+fn footprints_beyond_the_grid_are_the_whole_pixel() {
+    let whole = splat(&mut CpuBackend::new(), &one_emitter(2, 0b1111, 1.2, 50.0).without_footprints(), &lens(), &SplatOptions::default());
+    for mask in [0xfff0u32, 0xffff, 0b1111, 0] {
+        let out = splat(&mut CpuBackend::new(), &one_emitter(2, mask, 1.2, 50.0), &lens(), &SplatOptions::default()).unwrap();
+        // The emitter's alpha is its mask's share of the grid: compare light, not coverage.
+        let img = one_emitter(2, 0b1111, 1.2, 50.0);
+        let mut img = img.clone();
+        img.footprints = one_emitter(2, mask, 1.2, 50.0).footprints;
+        let same_alpha = splat(&mut CpuBackend::new(), &img, &lens(), &SplatOptions::default()).unwrap();
+        assert_eq!(same_alpha.image.data, whole.as_ref().unwrap().image.data, "mask {mask:x}");
+        assert!(energy(&out.image) > 0.0);
+    }
+}
+
 #[test]
 fn in_focus_footprints_change_nothing() {
     // Just in front of the test lens' focus (depth 2) the emitter is in focus too: a sharp front,

@@ -42,9 +42,11 @@ pub fn input_footprint(layers: &impl Load, p: &SplatParams, pixel: u32, k: u32) 
     if p.footprint_side() == 0 {
         return footprint::WHOLE;
     }
-    let mask = layers.load(footprint::slot_word(p.width * p.height * p.layers, pixel * p.layers + k));
-    // Every sub-sample: the whole pixel, splatted from its centre.
-    if mask & footprint::full(p.footprint_side()) == footprint::full(p.footprint_side()) { footprint::WHOLE } else { mask }
+    let full = footprint::full(p.footprint_side());
+    // Bits beyond the grid mean nothing. None of the grid's, or all of them: the whole pixel,
+    // splatted from its centre.
+    let mask = layers.load(footprint::slot_word(p.width * p.height * p.layers, pixel * p.layers + k)) & full;
+    if mask == full { footprint::WHOLE } else { mask }
 }
 
 /// Whether a slot may become a fragment.

@@ -204,6 +204,19 @@ pub struct RenderArgs {
     f_number_to: Option<f32>,
 }
 
+impl RenderArgs {
+    /// The multi-layer image's options the command line sets, with `guard_band`.
+    pub(crate) fn layer_options(&self, guard_band: GuardBand) -> LayerOptions {
+        LayerOptions {
+            max_layers: self.layers,
+            guard_band,
+            subsamples: self.subsamples,
+            footprints: !self.no_footprints,
+            ..Default::default()
+        }
+    }
+}
+
 fn parse_vec3(s: &str) -> Result<Vec3, String> {
     let parts: Vec<f32> = s.split(',').map(|p| p.trim().parse::<f32>().map_err(|e| format!("`{p}`: {e}"))).collect::<Result<_, _>>()?;
     match parts[..] {
@@ -663,13 +676,7 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         let shots = sequence::shots(args, args.frames.unwrap_or(1), &camera, &settings, &lens)?;
         return sequence::render_sequence(args, out, sequence::Source::Builtin(&builtin.scene), &shots);
     }
-    let options = LayerOptions {
-        max_layers: args.layers,
-        guard_band: args.guard_band,
-        subsamples: args.subsamples,
-        footprints: !args.no_footprints,
-        ..Default::default()
-    };
+    let options = args.layer_options(args.guard_band);
     let layered = raycast_layers(&builtin.scene, &camera, &lens, &options)?;
     match args.method {
         Method::Pinhole => {
@@ -786,13 +793,7 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     }
     let mut b = backend(args.backend)?;
     let raster = mesh.raster();
-    let options = LayerOptions {
-        max_layers: args.layers,
-        guard_band: args.guard_band,
-        subsamples: args.subsamples,
-        footprints: !args.no_footprints,
-        ..Default::default()
-    };
+    let options = args.layer_options(args.guard_band);
     let peeled = peel_layers(b.as_mut(), &raster, &camera, &lens, near, &options)?;
     let ms: f64 = peeled.times.iter().map(|t| t.ms).sum();
     println!("depth peeling on {}: {} passes, {ms:.2} ms", b.device_name(), peeled.passes);

@@ -197,8 +197,7 @@ pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, sho
         }
         _ => println!("guard band: {margin} px beyond every edge for every frame (the largest the frames need)"),
     }
-    let options =
-        LayerOptions { max_layers: args.layers, guard_band: GuardBand::Pixels(margin), subsamples: args.subsamples, ..Default::default() };
+    let options = args.layer_options(GuardBand::Pixels(margin));
     let method_options = method_options(args)?;
     let mut runner: Option<Runner> = None;
     let mut previews = Vec::with_capacity(shots.len());

@@ -50,6 +50,31 @@ fn splat_memory_table_sums_to_device_bytes() {
     assert_eq!(b.counters().device_bytes, 0, "every context freed");
 }
 
+/// Footprints add a field a slot to the dense array: 4 bits with 2x2 sub-samples (the command
+/// line's default), 16 with 3x3 or 4x4; at 1080p with 2x2 the context stays within the bound.
+#[test]
+fn footprints_add_a_field_a_slot() {
+    let mut b = CpuBackend::new();
+    let (w, h) = (1920, 1080);
+    let slots = (w * h * LAYERS) as u64;
+    let bytes = |b: &mut CpuBackend, side: u32| {
+        let desc = SplatContextDesc::new(w, h, LAYERS, SplatOptions { merge: Merge::X4, footprint_side: side, ..SplatOptions::default() });
+        let ctx = SplatContext::new(b, &desc).unwrap();
+        let n = ctx.device_bytes();
+        ctx.destroy(b);
+        n
+    };
+    let none = bytes(&mut b, 0);
+    for (side, bits) in [(1, 1), (2, 4), (3, 16), (4, 16)] {
+        let with = bytes(&mut b, side);
+        eprintln!("1920x1080x{LAYERS}, footprints on a {side}x{side} grid: {with} bytes ({:.1} MB)", with as f64 / 1e6);
+        assert_eq!(with - none, 4 * (slots * bits).div_ceil(32), "side {side}");
+        if side <= 2 {
+            assert!(with <= BOUND_1080P, "side {side}: {with} bytes");
+        }
+    }
+}
+
 #[test]
 fn device_bytes_of_every_method() {
     let mut b = CpuBackend::new();

@@ -14,8 +14,9 @@
 //!    does not tint the field of its blurred neighbours. Each 8x8 tile reduces its largest
 //!    near-field radius, and takes out its highlights (at most [`HIGHLIGHTS_PER_TILE`]): blocks
 //!    much brighter than their 12 neighbours (less those the emitter lights itself) with a CoC
-//!    radius of at least 1 px everywhere, whose excess over the neighbours becomes a disc drawn at
-//!    full resolution; the gather and the full-resolution path see the input without it.
+//!    radius of at least 1/2 px everywhere (a ramp from 1/4 px), whose excess over the neighbours
+//!    becomes a disc drawn at full resolution; the gather and the full-resolution path see the
+//!    input without it.
 //! 2. [`dilate_pass`]: every tile takes the largest near radius of the tiles that radius reaches,
 //!    fading in over the last tile of the reach, so a blurred foreground spreads over the sharp
 //!    tiles beside it (Unreal's "foreground hole filling", FidelityFX's tile dilation); and how far
@@ -72,14 +73,16 @@ pub const DILATED_WORDS: u32 = 2;
 pub const NEAR_MIN_RADIUS: f32 = 0.5;
 pub const NEAR_RAMP: f32 = 1.0;
 /// Highlights drawn as discs instead of gathered: the scattered share rises from 0 at this CoC
-/// radius (pixels of the frame, the smallest of the 2x2 block's) to 1 at
-/// `HIGHLIGHT_MIN_RADIUS + HIGHLIGHT_RAMP`. Unreal Engine's Diaphragm DoF scatters from 3 px; here
-/// from where the full-resolution path stops holding a pixel alone (1 px, where the composite starts
-/// to blend in the half-resolution field), because an emitter of a few pixels' blur in front of a
-/// more blurred background is spread by the field of its neighbours, which neither keeps its energy
-/// nor its shape. Below 1/2 px a disc is one pixel: the emitter stays where it is.
-pub const HIGHLIGHT_MIN_RADIUS: f32 = 0.5;
-pub const HIGHLIGHT_RAMP: f32 = 0.5;
+/// radius (pixels of the frame) to 1 at `HIGHLIGHT_MIN_RADIUS + HIGHLIGHT_RAMP`, where a disc is
+/// wider than its pixel. Unreal Engine's Diaphragm DoF scatters from 3 px. Left to the gather, an
+/// emitter is averaged into the half-resolution field its more blurred neighbours read and
+/// upsampled from it: a dim halo 1 to 5 px around it, which the saturating display transform shows
+/// (on `highlights` at 320x180 against the converged reference, 561 pixels lit that the reference
+/// leaves dark with the earlier ramp from 1/2 px to 1 px, 345 with this one, the gather 79). In
+/// focus the share is 0: a block's taken light is one disc, which would spread two sharp emitters
+/// of a block over each other's pixels.
+pub const HIGHLIGHT_MIN_RADIUS: f32 = 0.25;
+pub const HIGHLIGHT_RAMP: f32 = 0.25;
 /// ... and from 0 where the block's luminance is this many times its ring of 12 neighbours' to 1 at
 /// twice that ...
 pub const HIGHLIGHT_CONTRAST: f32 = 4.0;

@@ -43,7 +43,7 @@ fn every_method(b: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens) -> V
 }
 
 fn temp(name: &str) -> PathBuf {
-    std::env::temp_dir().join(format!("dof-alpha-{}-{name}", std::process::id()))
+    std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("dof-alpha-{}-{name}", std::process::id()))
 }
 
 /// An RGB+Z EXR (channels R, G, B, A, Z) of `w`x`h` pixels, each `(premultiplied colour, alpha,

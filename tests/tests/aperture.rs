@@ -183,7 +183,7 @@ fn masks_match_a_brute_force_shaped_kernel() {
             pixels[(y * side + x) as usize] = (hits * 255 / 16) as u8;
         }
     }
-    let path = std::env::temp_dir().join(format!("dof-aperture-{}.png", std::process::id()));
+    let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("dof-aperture-{}.png", std::process::id()));
     let mut encoded = Vec::new();
     {
         let mut encoder = dof::io::codecs::png::Encoder::new(&mut encoded, side, side);
@@ -221,7 +221,7 @@ const MASK_BOUND: f32 = 0.06;
 
 #[test]
 fn bad_aperture_images_are_named() {
-    let dir = std::env::temp_dir();
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
     let not_png = dir.join(format!("dof-not-a-png-{}.png", std::process::id()));
     std::fs::write(&not_png, b"hello").unwrap();
     let black = dir.join(format!("dof-black-{}.png", std::process::id()));

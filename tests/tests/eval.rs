@@ -54,7 +54,7 @@ fn quick_evaluation_covers_every_method_and_setting() {
     assert!(json["records"].as_array().unwrap().iter().any(|r| r.get("list_histogram").is_some()));
 
     // Plots: error against time, list lengths and the sweep, each as SVG and PNG.
-    let dir = std::env::temp_dir().join(format!("dof-eval-plots-{}", std::process::id()));
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("dof-eval-plots-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let files = dof::eval::figures::write_all(&report, &dir).unwrap();
     for stem in ["simple-error-vs-time", "simple-list-lengths", "simple-max-coc"] {
@@ -90,7 +90,7 @@ fn unknown_methods_are_named() {
 
 #[test]
 fn a_gltf_scene_is_measured_against_its_accumulation_buffer() {
-    let path = std::env::temp_dir().join(format!("dof-eval-{}.glb", std::process::id()));
+    let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("dof-eval-{}.glb", std::process::id()));
     std::fs::write(&path, dof::scene::export_builtin_glb("simple", 160, 90).unwrap()).unwrap();
     let mut backends: Vec<Box<dyn Backend>> = vec![Box::new(CpuBackend::new())];
     let scenes = vec![path.to_str().unwrap().to_string()];

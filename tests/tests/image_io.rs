@@ -27,7 +27,7 @@ impl TempFile {
     fn new(name: &str) -> TempFile {
         static NEXT: AtomicU32 = AtomicU32::new(0);
         let n = NEXT.fetch_add(1, Ordering::Relaxed);
-        TempFile(std::env::temp_dir().join(format!("dof-image-io-{}-{n}-{name}", std::process::id())))
+        TempFile(std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("dof-image-io-{}-{n}-{name}", std::process::id())))
     }
     fn path(&self) -> &Path {
         &self.0
@@ -767,7 +767,7 @@ fn not_an_exr_is_an_error() {
         std::fs::write(file.path(), &bytes).unwrap();
         err_message(read_layered_exr(file.path()));
     }
-    let dir = std::env::temp_dir();
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
     err_message(read_layered_exr(&dir));
 }
 
@@ -910,7 +910,7 @@ fn writer_argument_errors() {
     for exposure in [0.0, -1.0, f32::NAN, f32::INFINITY] {
         assert_mentions(&err_message(write_png_preview(out.path(), &image, exposure)), &["exposure"]);
     }
-    let no_dir = std::env::temp_dir().join("dof-no-such-dir-image-io").join("x.exr");
+    let no_dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("dof-no-such-dir-image-io").join("x.exr");
     assert_mentions(&err_message(write_exr(&no_dir, &image, &[])), &["directory does not exist"]);
     assert!(!out.path().exists(), "failed writes leave no file");
 }

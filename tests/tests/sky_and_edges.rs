@@ -153,7 +153,7 @@ fn exr_sky_at_infinity_and_at_1e10_blur_alike() {
     let s = setup("fence");
     let ml = layers("fence", &s.lens, GuardBand::Off);
     let (front, depth) = ml.front();
-    let dir = std::env::temp_dir().join(format!("dof-sky-{}", std::process::id()));
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("dof-sky-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let read = |far: f32| -> LayeredImage {
         let z: Vec<f32> = depth.iter().map(|&z| if z.is_finite() { z } else { far }).collect();

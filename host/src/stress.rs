@@ -429,12 +429,50 @@ pub fn cases() -> Vec<Case> {
             },
         },
         Case {
+            name: "footprint-emitters",
+            expectation: "sub-pixel emitters (1e4) at partial alpha with footprints on a 4x4 grid (one to fifteen sub-samples, \
+                          and bits beyond the grid) over a dim wall in focus, blurred a few px: no pixel darker than the wall (their \
+                          light kept is checked on multi-layer splatting in tests/tests/footprints.rs: the single-layer methods \
+                          flatten an emitter over the wall into one blurred surface, up to 42% bright here)",
+            expect: Expect::NoDarkening(1e-3),
+            build: || (footprinted(48, 40, |p| 1.2 + (p % 7) as f32 * 0.1), test_lens(0.01)),
+        },
+        Case {
+            name: "footprint-coc-extremes",
+            expectation: "the same footprints with CoC radii from 1e-5 px to beyond every window (~1000 px): finite",
+            expect: Expect::Finite,
+            build: || (footprinted(40, 32, |p| if p % 2 == 0 { 1.99999 } else { 0.0501 }), test_lens(1.0)),
+        },
+        Case {
             name: "degenerate-lens",
             expectation: "focus distance below the focal length: an InvalidArgument error",
             expect: Expect::InvalidArgument,
             build: || (noise_image(16, 16, 1, varied), ThinLens { focus_distance: 0.01, ..test_lens(0.01) }),
         },
     ]
+}
+
+/// A dim wall at the test lens' focus with an emitter in front of every 29th pixel 10 px or more
+/// inside the frame, at `depth(p)`,
+/// covering a varying part of a 4x4 grid (its alpha that share; its mask given in the footprints,
+/// some with bits beyond what the grid needs).
+fn footprinted(w: u32, h: u32, depth: impl Fn(u32) -> f32) -> LayeredImage {
+    let mut img = LayeredImage::new(w, h, 2).expect("a valid test size");
+    img.footprints = vec![dof_shaders::footprint::WHOLE; img.fragments.len()];
+    img.footprint_side = 4;
+    for p in 0..w * h {
+        let (x, y) = (p % w, p / w);
+        if p % 29 == 0 && (10..w - 10).contains(&x) && (10..h - 10).contains(&y) {
+            let mask = hash(p) & 0xffff | if p % 3 == 0 { 0xffff_0000 } else { 0 };
+            let alpha = (mask & 0xffff).count_ones() as f32 / 16.0;
+            if alpha > 0.0 {
+                let _ = img.push(x, y, Fragment { color: [1e4 * alpha, 10.0 * alpha, 0.0], alpha, depth: depth(p) });
+                img.footprints[(p * 2) as usize] = mask;
+            }
+        }
+        let _ = img.push(x, y, Fragment::opaque(DIM, 2.0));
+    }
+    img
 }
 
 fn input(img: LayeredImage, lens: ThinLens) -> MethodInput {

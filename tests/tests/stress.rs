@@ -71,4 +71,6 @@ cases! {
     alpha_0_glow => "alpha-0-glow",
     alpha_0_and_1_in_focus => "alpha-0-and-1-in-focus",
     alpha_out_of_range => "alpha-out-of-range",
+    footprint_emitters => "footprint-emitters",
+    footprint_coc_extremes => "footprint-coc-extremes",
 }

@@ -257,6 +257,10 @@ fn to_rgb_array(image: &RgbImage) -> Array3<f32> {
 ///     of a fragment with alpha is **premultiplied** by it, as OpenEXR stores it and as
 ///     `read_exr(layers=True)` returns it: a fragment with alpha 0 and a colour is light that hides
 ///     nothing. With `straight_alpha=True` the colour is straight and is premultiplied here.
+///     `footprints` (H, W, L) unsigned integers, with `footprint_side` 1 to 4, gives each
+///     fragment the sub-samples of a `side x side` grid of its pixel it covers (bit `j*side + i`
+///     for the stratum centred at `((i + 1/2)/side, (j + 1/2)/side)`; 0 for the whole pixel), as
+///     a multisampled renderer's sample masks: splatting then spreads it from them.
 /// Arrays of other float types are converted to float32.
 ///
 /// The lens, as `dof render` takes it for an EXR: `focus` (planar focus distance, scene units)
@@ -275,7 +279,7 @@ fn to_rgb_array(image: &RgbImage) -> Array3<f32> {
 /// Raises ValueError on bad input (shapes, depths, lens, options) and RuntimeError otherwise (no
 /// Vulkan driver, a device failure), with the library's messages.
 #[pyfunction]
-#[pyo3(signature = (image, depth, *, focus, aperture_radius=None, f_number=None, focal_length=None, sensor_height=24.0, yfov=40.0, pixels_per_unit=None, metres_per_unit=1.0, method="multilayer", backend="cpu", straight_alpha=false, **options))]
+#[pyo3(signature = (image, depth, *, focus, aperture_radius=None, f_number=None, focal_length=None, sensor_height=24.0, yfov=40.0, pixels_per_unit=None, metres_per_unit=1.0, method="multilayer", backend="cpu", straight_alpha=false, footprints=None, footprint_side=0, **options))]
 #[allow(clippy::too_many_arguments)]
 fn blur<'py>(
     py: Python<'py>,
@@ -292,6 +296,8 @@ fn blur<'py>(
     method: &str,
     backend: &str,
     straight_alpha: bool,
+    footprints: Option<PyArrayLikeDyn<'py, u32, AllowTypeChange>>,
+    footprint_side: u32,
     options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyArray3<f32>>> {
     let info = dof::frame::registry::method(method).map_err(py_err)?;
@@ -303,7 +309,13 @@ fn blur<'py>(
         }
         4 => {
             let counts: PyArrayLikeDyn<'py, i64, AllowTypeChange> = depth.extract()?;
-            layered_image(image.as_array(), counts.as_array(), straight_alpha)?
+            let mut layers = layered_image(image.as_array(), counts.as_array(), straight_alpha)?;
+            match footprints {
+                Some(f) => with_footprints(&mut layers, f.as_array(), footprint_side)?,
+                None if footprint_side != 0 => return Err(value_error("footprint_side without footprints".to_string())),
+                None => {}
+            }
+            layers
         }
         n => {
             return Err(value_error(format!(
@@ -332,6 +344,20 @@ fn blur<'py>(
         Ok(out.image.crop(margin))
     })?;
     Ok(to_rgb_array(&result).into_pyarray(py))
+}
+
+/// Gives `layers` the footprints `f` (H, W, L) on a `side` grid (1 to 4).
+fn with_footprints(layers: &mut LayeredImage, f: ArrayViewD<'_, u32>, side: u32) -> PyResult<()> {
+    let (h, w, l) = (layers.height as usize, layers.width as usize, layers.max_layers as usize);
+    if f.shape() != [h, w, l] {
+        return Err(value_error(format!("footprints must have the fragments' shape ({h}, {w}, {l}); got {:?}", f.shape())));
+    }
+    if !(1..=4).contains(&side) {
+        return Err(value_error(format!("footprint_side must be 1 to 4 with footprints; got {side}")));
+    }
+    layers.footprints = f.iter().copied().collect();
+    layers.footprint_side = side;
+    Ok(())
 }
 
 /// Whether an EXR file has a depth channel (`Z` or `depth`, any case, in any layer or part).

@@ -109,6 +109,40 @@ def test_alpha_zero_is_light_that_hides_nothing():
     np.testing.assert_allclose(out, np.full(out.shape, 0.1, np.float32), atol=1e-5)
 
 
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_footprints_move_the_light(backend):
+    """An emitter covering the left column of its pixel's 2x2 sub-samples (alpha 1/2) in front of
+    a black wall in focus: with its footprint the light's centre lies a quarter pixel left of the
+    pixel's, without it on the pixel's centre; the energy is the same. Bad footprints raise
+    ValueError."""
+    h, w = 31, 31
+    frags = np.zeros((h, w, 2, 5), np.float32)
+    frags[..., 3] = 1.0
+    frags[..., 4] = 1.0
+    counts = np.ones((h, w), np.uint32)
+    frags[15, 15, 0] = [500.0, 500.0, 500.0, 0.5, 0.5]
+    frags[15, 15, 1] = [0.0, 0.0, 0.0, 1.0, 1.0]
+    counts[15, 15] = 2
+    footprints = np.zeros((h, w, 2), np.uint32)
+    footprints[15, 15, 0] = 0b0101
+    lens = dict(focus=1.0, aperture_radius=0.02, pixels_per_unit=4000.0, focal_length=50.0, backend=backend)
+    with_fp = dof.blur(frags, counts, footprints=footprints, footprint_side=2, **lens)
+    without = dof.blur(frags, counts, **lens)
+    xs = np.arange(w) + 0.5
+
+    def centre_x(img):
+        light = img[..., 0].sum(axis=0)
+        return float((light * xs).sum() / light.sum())
+
+    assert abs(with_fp.sum() - without.sum()) < 1e-3 * without.sum()
+    assert abs(centre_x(without) - 15.5) < 1e-3
+    assert abs(centre_x(with_fp) - 15.25) < 0.02
+    with pytest.raises(ValueError, match="footprints"):
+        dof.blur(frags, counts, footprints=footprints[:, :, :1], footprint_side=2, **lens)
+    with pytest.raises(ValueError, match="footprint_side"):
+        dof.blur(frags, counts, footprints=footprints, footprint_side=5, **lens)
+
+
 def test_read_exr_layers_feed_blur_as_they_are():
     """An RGBA+Z file read as layers: its premultiplied colour goes into blur unchanged, so in
     focus the result is the file's own composite (read_exr without layers)."""

@@ -8,7 +8,8 @@
 #
 # In order: the device (`dof info`, nvidia-smi; the run ends at once if no NVIDIA device answers);
 # `dof bench frame` of multi-layer splatting merged 4x4 and of the ring gather on every built-in
-# scene at 1920x1080, then at 3840x2160; at 1920x1080 unmerged, 2x2, tiled, bokeh, layered and the
+# scene at 1920x1080 (the command line's 4 sub-samples, footprints on), `railing` again without
+# footprints, then at 3840x2160; at 1920x1080 unmerged, 2x2, tiled, bokeh, layered and the
 # ray tracer; the device peel of `fence` with the camera orbiting at both sizes; `dof bench ratios`
 # at 1920x1080 (16-spp references); `dof stress` on the GPU (every method's oracles on a real
 # driver); the exhaustive gather at 1920x1080 (5 frames: it is slow); the rest at 3840x2160;
@@ -50,6 +51,12 @@ orbit() { # size
     --width "$w" --height "$h" --frames 10 --json > "$m/orbit-fence-$1.json" 2> "$m/orbit-fence-$1.err" \
     || echo "orbit $1 failed: $(tail -n 1 "$m/orbit-fence-$1.err")" | tee -a "$log"
 }
+no_footprints() { # size: multi-layer 4x4 on `railing` without footprints, beside the sweep's row with them
+  local w=${1%x*} h=${1#*x}
+  step 40 "$dof" bench frame --backend vulkan --scene railing --method multilayer --merge 4x4 --width "$w" --height "$h" \
+    --frames 20 --no-footprints --json > "$m/no-footprints-railing-$1.json" 2> "$m/no-footprints-railing-$1.err" \
+    || echo "no-footprints $1 failed: $(tail -n 1 "$m/no-footprints-railing-$1.err")" | tee -a "$log"
+}
 ratios() { # time limit, size
   local w=${2%x*} h=${2#*x}
   step "$1" "$dof" bench ratios --backend vulkan --width "$w" --height "$h" --spp 16 --runs 3 \
@@ -71,6 +78,7 @@ if [ -z "${GPU_LEASE_SIZE1:-}" ] && ! grep -q "vulkan device 0: NVIDIA" "$m/devi
   finish; exit 1
 fi
 measure 120 --sizes "$s1" --methods multilayer:4x4,ring-gather:none
+no_footprints "$s1"
 measure 150 --sizes "$s2" --methods multilayer:4x4,ring-gather:none
 measure 150 --sizes "$s1" --methods multilayer:none,multilayer:2x2,tiled:4x4,bokeh:none,layered:none,raytrace:none
 orbit "$s1"

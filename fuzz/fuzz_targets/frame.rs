@@ -424,6 +424,9 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
                 merge_color_tol: merge_color_tol.get(0.25, 0.05),
                 umbra_merge: *umbra_merge,
                 aperture,
+                // The tile byte's upper bits (its lower ones pick the tile), so the corpus decodes
+                // as before: room for footprints of a 1 to 4 side grid, or none.
+                footprint_side: (*tile as u32 >> 2) % 5,
             };
             let list_entries = match list_entries {
                 None => None,
@@ -552,6 +555,11 @@ fn fill(b: &mut CpuBackend, bufs: &[BufferId; 3], f: &FrameIn, size: (u32, u32, 
                     }
                 }
             }
+            // Footprints after the slots: any mask, bits beyond the grid too.
+            if footprint_side(f) > 0 {
+                let room = (frag_cap as usize).saturating_sub(slots.len()).min((pixels * layers) as usize);
+                slots.extend((0..room).map(|_| rng.next() as u32));
+            }
             let written = b.write_buffer(bufs[0], 0, &slots).is_ok() && b.write_buffer(bufs[1], 0, &counts).is_ok();
             (whole && written).then_some(front)
         }
@@ -566,6 +574,15 @@ fn fill(b: &mut CpuBackend, bufs: &[BufferId; 3], f: &FrameIn, size: (u32, u32, 
             let _ = b.write_buffer(bufs[1], 0, &counts);
             None
         }
+    }
+}
+
+/// The side of the footprints a frame's input carries after its slots: from a well-formed frame's
+/// seed (0 to 5, 5 to be refused; `fill` writes the masks), none for raw words.
+fn footprint_side(f: &FrameIn) -> u32 {
+    match f.content {
+        Content::WellFormed(seed) => ((seed >> 58) % 6) as u32,
+        Content::Raw => 0,
     }
 }
 
@@ -589,6 +606,7 @@ fn record(b: &mut CpuBackend, ctx: &mut dyn DofContext, bufs: &[BufferId; 3], f:
                 fragments: SlotBuffer(buffer(fragments, bufs)),
                 counts: CountBuffer(buffer(counts, bufs)),
                 layers: size.2,
+                footprint_side: footprint_side(&f),
             },
             InputIn::Images { color, depth, encoding } => FrameInput::Images {
                 color: color.get((size.0, size.1)),
@@ -662,7 +680,8 @@ fn run(input: &Input) {
     // The caller's buffers: fragments, counts and output for the context's maximum, or a little
     // less or more.
     let pixels = max.0 as u64 * max.1 as u64;
-    let needs = [SLOT * pixels * max.2 as u64, pixels, 3 * pixels];
+    // The fragments' buffer with room for a footprint a slot after the slots.
+    let needs = [(SLOT + 1) * pixels * max.2 as u64, pixels, 3 * pixels];
     let mut bufs = [BufferId(0); 3];
     for (i, (&need, size)) in needs.iter().zip(input.sizes).enumerate() {
         let words = match size {

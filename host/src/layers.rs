@@ -281,6 +281,12 @@ impl LayeredImage {
         self.footprint_side > 0 && self.footprints.len() == self.fragments.len()
     }
 
+    /// The side of the footprints' grid the slots carry, 0 for none (as the frame API's
+    /// `FrameInput::Layers::footprint_side` takes it).
+    pub fn footprint_grid(&self) -> u32 {
+        if self.has_footprints() { self.footprint_side } else { 0 }
+    }
+
     /// The image without its footprints: every slot stands for its whole pixel.
     pub fn without_footprints(mut self) -> LayeredImage {
         self.footprints = Vec::new();

@@ -119,9 +119,7 @@ impl Runner {
         let extent = Extent::new(w, h, layers);
         // Splatting holds a word a fragment for the footprints of an area-integrated input.
         let mut options = options.clone();
-        if image.has_footprints() {
-            options.splat.footprint_side = options.splat.footprint_side.max(image.footprint_side);
-        }
+        options.splat.footprint_side = options.splat.footprint_side.max(image.footprint_grid());
         // The context checks the extent (and refuses) before any buffer of the input is made.
         let ctx = (method.create)(backend, &ContextDesc::new(extent, options))?;
         let pixels = w as u64 * h as u64;
@@ -137,7 +135,7 @@ impl Runner {
                 }
             }
         }
-        let (input_words, footprint_side) = (sizes[0].0, if image.has_footprints() { image.footprint_side } else { 0 });
+        let (input_words, footprint_side) = (sizes[0].0, image.footprint_grid());
         Ok(Runner { ctx, io: [io[0], io[1], io[2]], extent, input_words, footprint_side, later_allocations: 0, frames: 0 })
     }
 
@@ -151,7 +149,7 @@ impl Runner {
     /// through `lens`.
     fn upload(&self, backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens) -> Result<Frame> {
         let e = self.extent;
-        let side = if image.has_footprints() { image.footprint_side } else { 0 };
+        let side = image.footprint_grid();
         if (image.width, image.height, image.max_layers, side) != (e.width, e.height, e.layers, self.footprint_side) {
             return Err(Error::InvalidArgument(format!(
                 "a frame of {}x{} with {} layers differs from the {}x{} with {} its runner was made for",

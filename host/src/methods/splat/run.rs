@@ -65,9 +65,7 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
         return Err(Error::InvalidArgument(format!("an empty {w}x{h} image with {layers} layers")));
     }
     let mut options = options.clone();
-    if image.has_footprints() {
-        options.footprint_side = options.footprint_side.max(image.footprint_side);
-    }
+    options.footprint_side = options.footprint_side.max(image.footprint_grid());
     let mut desc = SplatContextDesc::new(w, h, layers, options);
     // The context checks the bounds (and refuses) before the input is uploaded.
     let first = context(backend, &desc, keep_stages)?;
@@ -78,8 +76,8 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
     let result = with_buffers(backend, &sizes, |backend, io| {
         backend.write_buffer(io[0], 0, &input)?;
         backend.write_buffer(io[1], 0, &image.counts)?;
-        let side = if image.has_footprints() { image.footprint_side } else { 0 };
-        let frame = Frame::layers(w, h, layers, *lens, SlotBuffer(io[0]), CountBuffer(io[1]), RgbBuffer(io[2])).with_footprints(side);
+        let frame = Frame::layers(w, h, layers, *lens, SlotBuffer(io[0]), CountBuffer(io[1]), RgbBuffer(io[2]))
+            .with_footprints(image.footprint_grid());
         let mut attempt = 0;
         loop {
             let mut ctx = match first.take() {

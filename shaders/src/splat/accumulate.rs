@@ -112,6 +112,18 @@ fn first_behind<const N: usize>(sh: &[u32; N], n: u32, z: f32) -> u32 {
     lo
 }
 
+/// The largest of the pixels' walk limits: where the walk of them all stops.
+#[inline]
+fn furthest(lim: &[u32; L]) -> u32 {
+    let mut m = 0;
+    let mut l = 0;
+    while l < L {
+        m = if lim[l] > m { lim[l] } else { m };
+        l += 1;
+    }
+    m
+}
+
 #[allow(clippy::too_many_arguments)]
 pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
@@ -206,7 +218,8 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
             // The pixels' state in registers for the walk: workgroup memory indexed by the
             // invocation is a gather or scatter per access on a SIMD implementation (lavapipe).
             let mut ok = [false; L];
-            let mut pos = [[0.0f32; 2]; L];
+            let mut px = [0.0f32; L];
+            let mut py = [0.0f32; L];
             let mut used = [0.0f32; L];
             let mut acc = [[0.0f32; 3]; L];
             let mut live = [false; L];
@@ -216,62 +229,63 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
             // up to and including the one that saturates it or lies at or behind its sharp front.
             let mut end = [0u32; L];
             let mut visited = [0u32; L];
-            let mut stop = 0;
-            let mut walking = 0;
+            // The entries each pixel still walks: its end while it is live, 0 once saturated.
+            let mut lim = [0u32; L];
             let mut l = 0;
             while l < L {
                 let q = lid + l as u32;
                 let (o, x, y) = pixel(q);
                 ok[l] = o;
-                pos[l] = [x as f32 + 0.5, y as f32 + 0.5];
+                px[l] = x as f32 + 0.5;
+                py[l] = y as f32 + 0.5;
                 used[l] = get(sh, USED, q);
                 acc[l] = [get(sh, ACC_R, q), get(sh, ACC_G, q), get(sh, ACC_B, q)];
                 surfaces[l] = Surfaces::load(sh, SURFACES, T, q);
                 live[l] = o && used[l] < 1.0 - SATURATED;
                 if live[l] {
                     end[l] = first_behind(sh, n, get(sh, SHARP_Z, q));
-                    stop = if end[l] > stop { end[l] } else { stop };
-                    // A pixel walks until it saturates or reaches its stop; one whose stop is
-                    // the chunk's first entry does not walk at all.
-                    if end[l] > 0 {
-                        walking += 1;
-                    }
+                    lim[l] = end[l];
                 }
                 l += 1;
             }
             let side = p.footprint_side();
+            let mut stop = furthest(&lim);
             let mut k = 0;
-            while walking > 0 && k < stop {
+            while k < stop {
                 let (cx, cy, s) = (get(sh, CH_X, k), get(sh, CH_Y, k), get(sh, CH_S, k));
+                // Which pixels the entry's disc covers, without a branch per pixel (on the CPU a
+                // hit or miss is a coin toss the branch predictor loses); then the hits, in
+                // order.
+                let mut hits = 0u32;
                 let mut l = 0;
                 while l < L {
-                    if live[l] && k < end[l] {
-                        let (dx, dy) = (pos[l][0] - cx, pos[l][1] - cy);
-                        let d2 = dx * dx + dy * dy;
-                        if d2 < s * s {
-                            let fp = sh[CH_F + k as usize];
-                            let w = get(sh, CH_A, k)
-                                * if fp != footprint::WHOLE {
-                                    footprint::weight(fp, side, [dx, dy], s - footprint::REACH)
-                                } else {
-                                    shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask)
-                                };
-                            let (f, a) = surfaces[l].take(w, get(sh, CH_O, k), get(sh, CH_Z, k), used[l]);
-                            let c = &mut acc[l];
-                            *c = [c[0] + f * get(sh, CH_R, k), c[1] + f * get(sh, CH_G, k), c[2] + f * get(sh, CH_B, k)];
-                            used[l] += a;
-                            if !(used[l] < 1.0 - SATURATED) {
-                                live[l] = false;
-                                visited[l] = k + 1;
-                                walking -= 1;
-                            }
-                        }
-                        // At its stop unsaturated: done walking, still live for what follows.
-                        if live[l] && k + 1 == end[l] {
-                            walking -= 1;
-                        }
-                    }
+                    let (dx, dy) = (px[l] - cx, py[l] - cy);
+                    let hit = (dx * dx + dy * dy < s * s) & (k < lim[l]);
+                    hits |= (hit as u32) << l;
                     l += 1;
+                }
+                while hits != 0 {
+                    let l = hits.trailing_zeros() as usize;
+                    hits &= hits - 1;
+                    let (dx, dy) = (px[l] - cx, py[l] - cy);
+                    let d2 = dx * dx + dy * dy;
+                    let fp = sh[CH_F + k as usize];
+                    let w = get(sh, CH_A, k)
+                        * if fp != footprint::WHOLE {
+                            footprint::weight(fp, side, [dx, dy], s - footprint::REACH)
+                        } else {
+                            shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask)
+                        };
+                    let (f, a) = surfaces[l].take(w, get(sh, CH_O, k), get(sh, CH_Z, k), used[l]);
+                    let c = &mut acc[l];
+                    *c = [c[0] + f * get(sh, CH_R, k), c[1] + f * get(sh, CH_G, k), c[2] + f * get(sh, CH_B, k)];
+                    used[l] += a;
+                    if !(used[l] < 1.0 - SATURATED) {
+                        live[l] = false;
+                        visited[l] = k + 1;
+                        lim[l] = 0;
+                        stop = furthest(&lim);
+                    }
                 }
                 k += 1;
             }

@@ -14,7 +14,8 @@
 //!   first sweep counts them, one atomic takes exactly that many entries from the list pool (a
 //!   list that does not fit is counted as overflow and its tile copied through: a bounded,
 //!   reported degradation rather than a write out of bounds), and a second sweep writes them in
-//!   place through a workgroup scan. The destination tile gathers its list (rather than sources
+//!   place through a workgroup scan, from the first sweep's results where workgroup memory kept
+//!   them (the first 8192 candidates) and testing again beyond. The destination tile gathers its list (rather than sources
 //!   scattering with atomics), so every list comes out in the same order on every backend and the
 //!   stable sort that follows is deterministic.
 
@@ -232,7 +233,10 @@ pub fn alloc_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, tile_co
 }
 
 /// Words of workgroup memory `splat_bin` uses.
-const BIN_SHARED: usize = 6 * THREADS as usize;
+const BIN_SHARED: usize = 7 * THREADS as usize;
+/// Chunks of candidates whose test results sweep 1 keeps for sweep 2: a word an invocation holds
+/// the `CANDIDATES_PER_THREAD`-bit masks of this many chunks.
+const CACHED_CHUNKS: u32 = 32 / CANDIDATES_PER_THREAD;
 
 #[allow(clippy::too_many_arguments)]
 pub fn bin_pass<G: Group, R: Load, M: Mem>(
@@ -255,8 +259,9 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
     let t_usize = THREADS as usize;
     // Workgroup memory: [0, 2T) scan of candidates per invocation; [2T, 3T) their masks (word 2T
     // also passes the list's offset from invocation 0 to all); [3T, 5T) scan of the neighbours'
-    // candidate counts; [5T, 6T) the neighbours' first dense index.
-    let (masks, nb_scan, nb_base) = (2 * t_usize, 3 * t_usize, 5 * t_usize);
+    // candidate counts; [5T, 6T) the neighbours' first dense index; [6T, 7T) the masks of the first
+    // `CACHED_CHUNKS` chunks, as sweep 1 found them.
+    let (masks, nb_scan, nb_base, cached) = (2 * t_usize, 3 * t_usize, 5 * t_usize, 6 * t_usize);
     let side = 2 * p.rings + 1;
     // One candidate space over the fragments of every neighbour tile (within the rings) that can
     // reach this tile: each invocation takes four at a time, whatever tile they come from.
@@ -276,6 +281,7 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
         }
         sh[nb_scan + lid as usize] = n;
         sh[nb_base + lid as usize] = from;
+        sh[cached + lid as usize] = 0;
     });
     let nb = inclusive_scan(g, sh, nb_scan, add);
     let total = sh[nb + t_usize - 1];
@@ -283,16 +289,12 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
     // Sweep 1 counts the candidates that reach the tile, so that its list is allocated exactly.
     let mut count = 0u32;
     let mut start = 0;
+    let mut chunk = 0;
     while start < total {
         g.each(|lid| {
-            let mut kept = 0u32;
-            let mut i = 0;
-            while i < CANDIDATES_PER_THREAD {
-                let j = start + lid * CANDIDATES_PER_THREAD + i;
-                if j < total && fragment_reaches(p, &Fragment::load_in(p, &dense, candidate(sh, nb, nb_base, j)), tx, ty) {
-                    kept += 1;
-                }
-                i += 1;
+            let (mask, kept) = reaching(p, sh, nb, nb_base, &dense, total, start + lid * CANDIDATES_PER_THREAD, tx, ty);
+            if chunk < CACHED_CHUNKS {
+                sh[cached + lid as usize] |= mask << (chunk * CANDIDATES_PER_THREAD);
             }
             sh[lid as usize] = kept;
         });
@@ -301,6 +303,7 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
         g.each(|_| chunk_total = sh[sums + t_usize - 1]);
         count += chunk_total;
         start += THREADS * CANDIDATES_PER_THREAD;
+        chunk += 1;
     }
     // One atomic a tile takes its range from the pool. The pointer cannot wrap: the host keeps
     // tiles · max_list below 2^32, and a longer list never touches it.
@@ -333,21 +336,19 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
         return;
     }
 
-    // Sweep 2 writes the list, in candidate order (the same on every backend).
+    // Sweep 2 writes the list, in candidate order (the same on every backend), from sweep 1's
+    // masks where it kept them.
     let mut running = 0u32;
     let mut start = 0;
+    let mut chunk = 0;
     while start < total {
         g.each(|lid| {
-            let (mut mask, mut kept) = (0u32, 0u32);
-            let mut i = 0;
-            while i < CANDIDATES_PER_THREAD {
-                let j = start + lid * CANDIDATES_PER_THREAD + i;
-                if j < total && fragment_reaches(p, &Fragment::load_in(p, &dense, candidate(sh, nb, nb_base, j)), tx, ty) {
-                    mask |= 1 << i;
-                    kept += 1;
-                }
-                i += 1;
-            }
+            let (mask, kept) = if chunk < CACHED_CHUNKS {
+                let mask = (sh[cached + lid as usize] >> (chunk * CANDIDATES_PER_THREAD)) & ((1 << CANDIDATES_PER_THREAD) - 1);
+                (mask, mask.count_ones())
+            } else {
+                reaching(p, sh, nb, nb_base, &dense, total, start + lid * CANDIDATES_PER_THREAD, tx, ty)
+            };
             sh[lid as usize] = kept;
             sh[masks + lid as usize] = mask;
         });
@@ -371,7 +372,35 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
         });
         running += chunk_total;
         start += THREADS * CANDIDATES_PER_THREAD;
+        chunk += 1;
     }
+}
+
+/// Which of the `CANDIDATES_PER_THREAD` candidates from `first` (of `total`) reach tile `(tx, ty)`:
+/// a mask (bit `i` for candidate `first + i`) and their count.
+#[inline]
+fn reaching<const N: usize>(
+    p: &SplatParams,
+    sh: &[u32; N],
+    nb: usize,
+    nb_base: usize,
+    dense: &impl Load,
+    total: u32,
+    first: u32,
+    tx: u32,
+    ty: u32,
+) -> (u32, u32) {
+    let (mut mask, mut kept) = (0u32, 0u32);
+    let mut i = 0;
+    while i < CANDIDATES_PER_THREAD {
+        let j = first + i;
+        if j < total && fragment_reaches(p, &Fragment::load_in(p, dense, candidate(sh, nb, nb_base, j)), tx, ty) {
+            mask |= 1 << i;
+            kept += 1;
+        }
+        i += 1;
+    }
+    (mask, kept)
 }
 
 /// The dense index of candidate `j`: the neighbour whose range of the inclusive scan at `sh[nb..]`
@@ -407,6 +436,6 @@ kernel!(
 );
 kernel!(
     /// The tile lists: depth keys and dense fragment indices.
-    BIN = splat_bin [256] (SplatParams) shared [u32; 6 * 256]
+    BIN = splat_bin [256] (SplatParams) shared [u32; 7 * 256]
         { read dense, read tile_count, read tile_base, read tile_radius, copy, keys, values, segments, st } => bin_pass
 );

@@ -82,3 +82,33 @@ impl Warmup {
         Ok(ran)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Warmup;
+    use std::time::{Duration, Instant};
+
+    /// Runs a warm-up of frames that each take `frame_ms`; returns the frames run and the time.
+    fn warm(frames: u32, ms: f64, frame_ms: u64) -> (u32, f64) {
+        let start = Instant::now();
+        let ran = Warmup { frames, ms }
+            .run(|| -> Result<(), ()> {
+                std::thread::sleep(Duration::from_millis(frame_ms));
+                Ok(())
+            })
+            .unwrap();
+        (ran, start.elapsed().as_secs_f64() * 1e3)
+    }
+
+    #[test]
+    fn a_warm_up_runs_its_frames_then_on_until_its_time_has_passed() {
+        // Frames of 5 ms and 60 ms of warm-up: more frames than asked, stopping once past it.
+        let (ran, elapsed) = warm(2, 60.0, 5);
+        assert!(ran > 2 && elapsed >= 60.0, "{ran} frames in {elapsed} ms");
+        // Frames longer than the warm-up time: exactly the frames asked for.
+        assert_eq!(warm(2, 10.0, 20).0, 2);
+        // No time: the frames asked for; none asked, none run, whatever the time.
+        assert_eq!(warm(3, 0.0, 1).0, 3);
+        assert_eq!(warm(0, 50.0, 1).0, 0);
+    }
+}

@@ -414,10 +414,11 @@ fn soak_and_frame_bench_report_flat_memory_and_no_per_frame_work() {
             (r["frame_ms"].as_f64().unwrap(), r["frame_ms_p10"].as_f64().unwrap(), r["frame_ms_p90"].as_f64().unwrap());
         assert!(median > 0.0 && p10 <= median && median <= p90, "{r}");
         assert_eq!((r["frame_ms_frames"].as_u64(), r["warmup_frames"].as_u64()), (Some(2), Some(2)), "{r}");
-        // At least the frames asked for, then on for the warm-up time (500 ms): where a frame
-        // takes well under that, more ran; a pool that did not overflow is not grown.
+        // At least the frames asked for (the time that follows is `timing`'s unit test: on a
+        // loaded machine, two first frames on lavapipe can outlast the 500 ms); a pool that did
+        // not overflow is not grown.
         let run = r["warmup_frames_run"].as_u64().unwrap();
-        assert!(run >= 2 && (median > 100.0 || run > 2), "{r}");
+        assert!(run >= 2, "{r}");
         assert_eq!(r["pool_grown_in_warmup"].as_u64(), Some(0), "{r}");
     }
     assert_fails_with(&["soak", "--frames", "0"], "--frames");

@@ -536,7 +536,23 @@ impl Case {
             Expect::Exact => Outcome::Fail(format!("differs from the input by up to {:.2e} (relative)", worst(&|i| front.data[i]))),
             Expect::Close(tol) | Expect::Flat(tol) => {
                 let err = if let Expect::Flat(_) = self.expect { worst(&|_| front.data[0]) } else { worst(&|i| front.data[i]) };
-                if err <= tol { Outcome::Pass(format!("within {err:.2e}")) } else { Outcome::Fail(format!("off by {err:.2e} > {tol:.0e}")) }
+                if err <= tol {
+                    Outcome::Pass(format!("within {err:.2e}"))
+                } else {
+                    // Where: the first pixel that far off, and what it holds.
+                    let want = |i: usize| if let Expect::Flat(_) = self.expect { front.data[0] } else { front.data[i] };
+                    let off = |i: usize, p: &[f32; 3]| {
+                        (0..3).map(|c| (p[c] - want(i)[c]).abs() / want(i)[c].abs().max(1e-3)).fold(0.0f32, f32::max)
+                    };
+                    let (i, p) = out.data.iter().enumerate().find(|(i, p)| off(*i, p) > tol).expect("a pixel beyond the tolerance");
+                    let (x, y) = (i % out.width as usize, i / out.width as usize);
+                    let n = out.data.iter().enumerate().filter(|(i, p)| off(*i, p) > tol).count();
+                    Outcome::Fail(format!(
+                        "off by {err:.2e} > {tol:.0e} ({n} of {} pixels; the first at ({x}, {y}): {p:?} for {:?})",
+                        out.data.len(),
+                        want(i)
+                    ))
+                }
             }
             Expect::FlatCorners(want, tol) => {
                 let (w, h) = (out.width as usize, out.height as usize);

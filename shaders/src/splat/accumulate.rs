@@ -264,9 +264,8 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                     hits |= (hit as u32) << l;
                     l += 1;
                 }
-                while hits != 0 {
-                    let l = hits.trailing_zeros() as usize;
-                    hits &= hits - 1;
+                // A hit, in the scalar walk's arithmetic.
+                let mut take = |l: usize| {
                     let (dx, dy) = (px[l] - cx, py[l] - cy);
                     let d2 = dx * dx + dy * dy;
                     let fp = sh[CH_F + k as usize];
@@ -285,6 +284,20 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                         visited[l] = k + 1;
                         lim[l] = 0;
                         stop = furthest(&lim);
+                    }
+                };
+                if L == 1 {
+                    // The GPU's one pixel. A loop over the mask's bits here made lavapipe leave
+                    // pixels black whose walk crossed hundreds of chunks (the stress case
+                    // `translucent-stack-blurred`), though the CPU ran it right with one lane.
+                    if hits != 0 {
+                        take(0);
+                    }
+                } else {
+                    while hits != 0 {
+                        let l = hits.trailing_zeros() as usize;
+                        hits &= hits - 1;
+                        take(l);
                     }
                 }
                 k += 1;

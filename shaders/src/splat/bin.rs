@@ -15,9 +15,9 @@
 //!   list that does not fit is counted as overflow and its tile copied through: a bounded,
 //!   reported degradation rather than a write out of bounds), and a second sweep writes them in
 //!   place through a workgroup scan, from the first sweep's results where workgroup memory kept
-//!   them (the first 8192 candidates) and testing again beyond. The destination tile gathers its list (rather than sources
-//!   scattering with atomics), so every list comes out in the same order on every backend and the
-//!   stable sort that follows is deterministic.
+//!   them (the first 8192 candidates) and testing again beyond. The destination tile gathers its
+//!   list (rather than sources scattering with atomics), so every list comes out in the same order
+//!   on every backend and the stable sort that follows is deterministic.
 
 use super::fragment::Fragment;
 use super::planned;

@@ -14,7 +14,8 @@
 //! A footprint word is the mask in its low [`MAX_BITS`] bits; 0 means "none given": the fragment
 //! stands for its whole pixel and is splatted from the centre as before.
 
-use crate::math::{asin, sqrt};
+use crate::lane::{LaneMask, Lanes};
+use crate::math::asin;
 use crate::slot::SLOT_WORDS;
 
 /// Bits a footprint holds (a 4x4 grid).
@@ -47,130 +48,118 @@ pub fn full(side: u32) -> u32 {
     if n >= 32 { u32::MAX } else { (1u32 << n) - 1 }
 }
 
+// The integrals below run per destination pixel, or for several at once ([`crate::lane`]): their
+// branches are selects, and the closed form is computed only where some pixel needs it. The disc's
+// radius is the fragment's, the same for every pixel.
+
 /// `∫ s(x) dx` with `s(x) = √(r² − x²)`, for `x` in `[−r, r]`.
 #[inline]
-fn chord_integral(x: f32, r: f32) -> f32 {
-    let q = r * r - x * x;
-    let s = if q > 0.0 { sqrt(q) } else { 0.0 };
-    let t = x / r;
-    let t = if t > 1.0 {
-        1.0
-    } else if t < -1.0 {
-        -1.0
-    } else {
-        t
-    };
-    0.5 * (x * s + r * r * asin(t))
+fn chord_integral<V: Lanes>(x: V, r: f32) -> V {
+    let rr = V::splat(r * r);
+    let q = rr - x * x;
+    let s = V::select(V::splat(0.0).lt(q), q.sqrt(), V::splat(0.0));
+    let t = clamp_to(x / V::splat(r), V::splat(1.0));
+    V::splat(0.5) * (x * s + rr * asin(t))
 }
 
+/// `x` clamped to `[−a, a]`.
 #[inline]
-fn clamp_to(x: f32, a: f32) -> f32 {
-    if x > a {
-        a
-    } else if x < -a {
-        -a
-    } else {
-        x
-    }
+fn clamp_to<V: Lanes>(x: V, a: V) -> V {
+    V::select(a.lt(x), a, V::select(x.lt(-a), -a, x))
 }
 
 /// `∫ min(c, s(x)) dx` over `[x0, x1]`, for `c >= 0` and `s(x) = √(r² − x²)` (0 outside `[−r, r]`):
 /// `c` where the chord is longer than `c` (`|x| < a`, `a = √(r² − c²)`), the chord elsewhere.
 #[inline]
-fn capped_chords(c: f32, x0: f32, x1: f32, r: f32) -> f32 {
-    let q = r * r - c * c;
-    let a = if q > 0.0 { sqrt(q) } else { 0.0 };
+fn capped_chords<V: Lanes>(c: V, x0: V, x1: V, r: f32) -> V {
+    let q = V::splat(r * r) - c * c;
+    let a = V::select(V::splat(0.0).lt(q), q.sqrt(), V::splat(0.0));
     let (u0, u1) = (clamp_to(x0, a), clamp_to(x1, a));
-    let (v0, v1) = (clamp_to(x0, r), clamp_to(x1, r));
+    let (v0, v1) = (clamp_to(x0, V::splat(r)), clamp_to(x1, V::splat(r)));
     c * (u1 - u0) + (chord_integral(v1, r) - chord_integral(v0, r)) - (chord_integral(u1, r) - chord_integral(u0, r))
 }
 
 /// Area of the disc of radius `r` about the origin inside the box `[x0, x1] × [y0, y1]`, exact (the
 /// integral of each vertical chord's length inside `[y0, y1]`, in closed form), in `[0, box area]`.
 #[inline]
-pub fn disc_box_area(r: f32, x0: f32, x1: f32, y0: f32, y1: f32) -> f32 {
+pub fn disc_box_area<V: Lanes>(r: f32, x0: V, x1: V, y0: V, y1: V) -> V {
+    let zero = V::splat(0.0);
     if !(r > 0.0) {
-        return 0.0;
+        return zero;
     }
-    // The chord at x spans [−s, s]; inside [y0, y1] it is min(y1, s) − max(y0, −s) where positive.
-    let area = if y0 >= 0.0 {
-        capped_chords(y1, x0, x1, r) - capped_chords(y0, x0, x1, r)
-    } else if y1 <= 0.0 {
-        capped_chords(-y0, x0, x1, r) - capped_chords(-y1, x0, x1, r)
-    } else {
-        capped_chords(y1, x0, x1, r) + capped_chords(-y0, x0, x1, r)
-    };
+    // The chord at x spans [−s, s]; inside [y0, y1] it is min(y1, s) − max(y0, −s) where positive:
+    // for a box above the axis the chords capped at y1 less those capped at y0, below it the
+    // mirror image, across it the two halves.
+    let above = zero.le(y0);
+    let below = !above & y1.le(zero);
+    let first = V::select(below, -y0, y1);
+    let second = V::select(above, y0, V::select(below, -y1, -y0));
+    let sign = V::select(above | below, V::splat(-1.0), V::splat(1.0));
+    let area = capped_chords(first, x0, x1, r) + sign * capped_chords(second, x0, x1, r);
     let most = (x1 - x0) * (y1 - y0);
-    if area > most {
-        most
-    } else if area > 0.0 {
-        area
-    } else {
-        0.0
-    }
+    V::select(most.lt(area), most, V::select(zero.lt(area), area, zero))
 }
 
 /// The share of a point's disc of radius `r` that falls in the unit box at `[ox, ox + 1] × [oy, oy +
 /// 1]` relative to the point: 1 or 0 without the integral where the box lies wholly inside or
 /// outside; a point source (`r` under 1e-4) gives its whole share to the box that holds it. The
-/// shares of every box of the pixel lattice sum to 1.
+/// shares of every box of the pixel lattice sum to 1. Only the pixels `active` need a value.
 #[inline]
-pub fn box_share(r: f32, ox: f32, oy: f32) -> f32 {
-    let (x1, y1) = (ox + 1.0, oy + 1.0);
+pub fn box_share<V: Lanes>(r: f32, ox: V, oy: V, active: V::Mask) -> V {
+    let c = V::splat;
+    let (x1, y1) = (ox + c(1.0), oy + c(1.0));
     if !(r >= 1e-4) {
-        return if ox <= 0.0 && x1 > 0.0 && oy <= 0.0 && y1 > 0.0 { 1.0 } else { 0.0 };
+        let holds = ox.le(c(0.0)) & c(0.0).lt(x1) & oy.le(c(0.0)) & c(0.0).lt(y1);
+        return V::select(holds, c(1.0), c(0.0));
     }
     // Nearest and farthest points of the box from the origin.
-    let nx = if ox > 0.0 {
-        ox
-    } else if x1 < 0.0 {
-        -x1
-    } else {
-        0.0
-    };
-    let ny = if oy > 0.0 {
-        oy
-    } else if y1 < 0.0 {
-        -y1
-    } else {
-        0.0
-    };
-    if nx * nx + ny * ny >= r * r {
-        return 0.0;
-    }
-    let fx = if -ox > x1 { -ox } else { x1 };
-    let fy = if -oy > y1 { -oy } else { y1 };
-    let area = if fx * fx + fy * fy <= r * r { 1.0 } else { disc_box_area(r, ox, x1, oy, y1) };
-    area / (core::f32::consts::PI * r * r)
+    let nx = V::select(c(0.0).lt(ox), ox, V::select(x1.lt(c(0.0)), -x1, c(0.0)));
+    let ny = V::select(c(0.0).lt(oy), oy, V::select(y1.lt(c(0.0)), -y1, c(0.0)));
+    let rr = c(r * r);
+    let outside = rr.le(nx * nx + ny * ny);
+    let fx = V::select(x1.lt(-ox), -ox, x1);
+    let fy = V::select(y1.lt(-oy), -oy, y1);
+    let inside = (fx * fx + fy * fy).le(rr);
+    let area = if (active & !outside & !inside).any() { V::select(inside, c(1.0), disc_box_area(r, ox, x1, oy, y1)) } else { c(1.0) };
+    V::select(outside, c(0.0), area / c(core::f32::consts::PI * r * r))
 }
 
 /// The weight a pixel whose centre lies at `d` (pixel centre minus the fragment's pixel centre)
 /// receives from a fragment of footprint `mask` on a `side × side` grid with CoC radius `r`: the
 /// mean over its sub-samples of [`box_share`]. Normalised: a fragment's weights over the pixel
-/// lattice sum to 1, so it spreads exactly its energy.
+/// lattice sum to 1, so it spreads exactly its energy. Per pixel, or for several at once of which
+/// only those `active` need a value.
 #[inline]
-pub fn weight(mask: u32, side: u32, d: [f32; 2], r: f32) -> f32 {
+pub fn weight_at<V: Lanes>(mask: u32, side: u32, d: [V; 2], r: f32, active: V::Mask) -> V {
     // Every sub-sample's box inside the disc (no sub-sample lies farther than REACH − √2/2 from
     // the pixel centre, no box corner farther than √2/2 from its centre).
     let d2 = d[0] * d[0] + d[1] * d[1];
     let inner = r - REACH;
-    if inner > 0.0 && d2 <= inner * inner {
-        return 1.0 / (core::f32::consts::PI * r * r);
+    let interior = V::Mask::splat(inner > 0.0) & d2.le(V::splat(inner * inner));
+    let whole = V::splat(1.0 / (core::f32::consts::PI * r * r));
+    if !(active & !interior).any() {
+        return whole;
     }
     let n = side * side;
-    let (mut sum, mut count) = (0.0f32, 0u32);
+    let (mut sum, mut count) = (V::splat(0.0), 0u32);
     let mut k = 0;
     while k < n && k < MAX_BITS {
         if mask & (1 << k) != 0 {
             // The destination box relative to sub-sample k: the pixel centre is at d + ½ from the
             // fragment pixel's corner, the sub-sample at its offset.
             let o = subsample_offset(k, side);
-            sum += box_share(r, d[0] - o[0], d[1] - o[1]);
+            sum = sum + box_share(r, d[0] - V::splat(o[0]), d[1] - V::splat(o[1]), active & !interior);
             count += 1;
         }
         k += 1;
     }
-    if count == 0 { 0.0 } else { sum / count as f32 }
+    V::select(interior, whole, if count == 0 { V::splat(0.0) } else { sum / V::splat(count as f32) })
+}
+
+/// [`weight_at`] for one pixel.
+#[inline]
+pub fn weight(mask: u32, side: u32, d: [f32; 2], r: f32) -> f32 {
+    weight_at(mask, side, d, r, true)
 }
 
 #[cfg(test)]

@@ -18,6 +18,7 @@ pub mod frame_io;
 pub mod gather;
 pub mod half;
 pub mod keys;
+pub mod lane;
 pub mod layered;
 pub mod lens;
 pub mod math;

@@ -26,12 +26,13 @@
 //! finite, and so does the normalisation (by a coverage of at least 1e-6). A tile no list reaches
 //! (`copy`) writes its sharp fronts directly.
 
-use super::fragment::{Fragment, shaped_weight, weight_sum};
+use super::fragment::{self, Fragment, shaped_weight, weight_sum};
 use super::pack::load_sharp;
 use super::surfaces::{self, Surfaces};
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Load, Mem};
 use crate::footprint;
+use crate::lane::{LaneMask, Lanes};
 use crate::lens::is_nan;
 use crate::wg::{inclusive_scan, max};
 
@@ -69,16 +70,17 @@ const SURFACES: usize = 19 * T;
 const CH_F: usize = SURFACES + surfaces::WORDS * T;
 pub const SHARED_WORDS: usize = CH_F + T;
 
-/// Pixels one invocation walks at a time. On the CPU a workgroup's invocations run one after
-/// another, and a pixel's walk is a chain (each covering entry waits for the coverage the last one
-/// left): walking eight pixels at once overlaps their chains (eight took 4% less CPU time than four
-/// on `railing` at 1080p). On the GPU each invocation walks its own. Each pixel's arithmetic is
-/// the same either way, so the images are too.
+/// The pixels one invocation walks at a time ([`crate::lane`]). On the CPU a workgroup's
+/// invocations run one after another, and a pixel's walk is a chain (each covering entry waits for
+/// the coverage the last one left): walking eight pixels at once overlaps their chains, and their
+/// arithmetic runs in vector registers. On the GPU each invocation walks its own. Each pixel's
+/// arithmetic is the same either way, so the images are too.
 #[cfg(target_arch = "spirv")]
-const LANES: u32 = 1;
+type Px = f32;
 #[cfg(not(target_arch = "spirv"))]
-const LANES: u32 = 8;
-const L: usize = LANES as usize;
+type Px = crate::lane::Wide;
+const L: usize = Px::N;
+const LANES: u32 = L as u32;
 const _: () = assert!(THREADS % LANES == 0);
 
 #[inline]
@@ -89,6 +91,33 @@ fn get<const N: usize>(sh: &[u32; N], field: usize, i: u32) -> f32 {
 #[inline]
 fn set<const N: usize>(sh: &mut [u32; N], field: usize, i: u32, v: f32) {
     sh[field + i as usize] = v.to_bits();
+}
+
+/// `[f(0), .., f(L − 1)]` (written out: `core::array::from_fn` is not for SPIR-V).
+#[inline(always)]
+fn per_lane<T: Copy + Default>(mut f: impl FnMut(usize) -> T) -> [T; L] {
+    let mut a = [T::default(); L];
+    let mut l = 0;
+    while l < L {
+        a[l] = f(l);
+        l += 1;
+    }
+    a
+}
+
+/// Pixels `i .. i + L` of `field`.
+#[inline]
+fn get_px<const N: usize>(sh: &[u32; N], field: usize, i: u32) -> Px {
+    Px::from_fn(|l| get(sh, field, i + l as u32))
+}
+
+#[inline]
+fn set_px<const N: usize>(sh: &mut [u32; N], field: usize, i: u32, v: Px) {
+    let mut l = 0;
+    while l < L {
+        set(sh, field, i + l as u32, v.lane(l));
+        l += 1;
+    }
 }
 
 /// Adds the share `s` of premultiplied colour `c` to pixel `i`, which spends `a` of its coverage.
@@ -110,18 +139,6 @@ fn first_behind<const N: usize>(sh: &[u32; N], n: u32, z: f32) -> u32 {
         if get(sh, CH_Z, mid) >= z { hi = mid } else { lo = mid + 1 }
     }
     lo
-}
-
-/// The largest of the pixels' walk limits: where the walk of them all stops.
-#[inline]
-fn furthest(lim: &[u32; L]) -> u32 {
-    let mut m = 0;
-    let mut l = 0;
-    while l < L {
-        m = if lim[l] > m { lim[l] } else { m };
-        l += 1;
-    }
-    m
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -181,7 +198,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
         // at +inf still blends.
         let z = if ok { load_sharp(&sharp, y * p.width + x).1 } else { f32::NAN };
         set(sh, SHARP_Z, lid, z);
-        Surfaces::START.store(sh, SURFACES, T, lid);
+        Surfaces::<f32>::start().store(sh, SURFACES, T, lid);
     });
     let mut start = 0;
     let mut active = 1;
@@ -217,91 +234,72 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
             }
             // The pixels' state in registers for the walk: workgroup memory indexed by the
             // invocation is a gather or scatter per access on a SIMD implementation (lavapipe).
-            let mut ok = [false; L];
-            let mut px = [0.0f32; L];
-            let mut py = [0.0f32; L];
-            let mut used = [0.0f32; L];
-            let mut acc = [[0.0f32; 3]; L];
-            let mut live = [false; L];
-            let mut surfaces = [Surfaces::START; L];
+            let ok = per_lane(|l| pixel(lid + l as u32).0);
+            let px = Px::from_fn(|l| pixel(lid + l as u32).1 as f32 + 0.5);
+            let py = Px::from_fn(|l| pixel(lid + l as u32).2 as f32 + 0.5);
+            let mut used = get_px(sh, USED, lid);
+            let mut acc = [get_px(sh, ACC_R, lid), get_px(sh, ACC_G, lid), get_px(sh, ACC_B, lid)];
+            let mut surfaces = Surfaces::<Px>::load(sh, SURFACES, T, lid);
+            let mut live = per_lane(|l| ok[l] && used.lane(l) < 1.0 - SATURATED);
             // Where each pixel's walk ends (its sharp front lies in front of the rest of the
             // list), and the entries it visits, as a walk over every entry in order counts them:
             // up to and including the one that saturates it or lies at or behind its sharp front.
-            let mut end = [0u32; L];
+            let end = per_lane(|l| if live[l] { first_behind(sh, n, get(sh, SHARP_Z, lid + l as u32)) } else { 0 });
             let mut visited = [0u32; L];
-            // The entries each pixel still walks: its end while it is live, 0 once saturated.
-            let mut lim = [0u32; L];
-            let mut l = 0;
-            while l < L {
-                let q = lid + l as u32;
-                let (o, x, y) = pixel(q);
-                ok[l] = o;
-                px[l] = x as f32 + 0.5;
-                py[l] = y as f32 + 0.5;
-                used[l] = get(sh, USED, q);
-                acc[l] = [get(sh, ACC_R, q), get(sh, ACC_G, q), get(sh, ACC_B, q)];
-                surfaces[l] = Surfaces::load(sh, SURFACES, T, q);
-                live[l] = o && used[l] < 1.0 - SATURATED;
-                if live[l] {
-                    end[l] = first_behind(sh, n, get(sh, SHARP_Z, q));
-                    lim[l] = end[l];
-                }
-                l += 1;
-            }
+            // The entries each pixel still walks (as f32, exact): its end while it is live, 0
+            // once saturated.
+            let mut lim = Px::from_fn(|l| end[l] as f32);
             let side = p.footprint_side();
-            let mut stop = furthest(&lim);
+            let mut stop = lim.max_lane() as u32;
             let mut k = 0;
             while k < stop {
                 let (cx, cy, s) = (get(sh, CH_X, k), get(sh, CH_Y, k), get(sh, CH_S, k));
-                // Which pixels the entry's disc covers, without a branch per pixel (on the CPU a
-                // hit or miss is a coin toss the branch predictor loses); then the hits, in
-                // order.
-                let mut hits = 0u32;
-                let mut l = 0;
-                while l < L {
-                    let (dx, dy) = (px[l] - cx, py[l] - cy);
-                    let hit = (dx * dx + dy * dy < s * s) & (k < lim[l]);
-                    hits |= (hit as u32) << l;
-                    l += 1;
-                }
-                // A hit, in the scalar walk's arithmetic.
-                let mut take = |l: usize| {
-                    let (dx, dy) = (px[l] - cx, py[l] - cy);
-                    let d2 = dx * dx + dy * dy;
+                let (dx, dy) = (px - Px::splat(cx), py - Px::splat(cy));
+                let d2 = dx * dx + dy * dy;
+                // The pixels the entry's disc covers, without a branch per pixel (on the CPU a
+                // hit or miss is a coin toss the branch predictor loses).
+                let hit = d2.lt(Px::splat(s * s)) & Px::splat(k as f32).lt(lim);
+                if hit.any() {
                     let fp = sh[CH_F + k as usize];
-                    let w = get(sh, CH_A, k)
-                        * if fp != footprint::WHOLE {
-                            footprint::weight(fp, side, [dx, dy], s - footprint::REACH)
-                        } else {
-                            shaped_weight([dx, dy], d2, s, get(sh, CH_W, k), &p.aperture, get(sh, CH_M, k), &mask)
-                        };
-                    let (f, a) = surfaces[l].take(w, get(sh, CH_O, k), get(sh, CH_Z, k), used[l]);
-                    let c = &mut acc[l];
-                    *c = [c[0] + f * get(sh, CH_R, k), c[1] + f * get(sh, CH_G, k), c[2] + f * get(sh, CH_B, k)];
-                    used[l] += a;
-                    if !(used[l] < 1.0 - SATURATED) {
-                        live[l] = false;
-                        visited[l] = k + 1;
-                        lim[l] = 0;
-                        stop = furthest(&lim);
+                    let rim = get(sh, CH_W, k);
+                    let weight = if fp != footprint::WHOLE {
+                        footprint::weight_at(fp, side, [dx, dy], s - footprint::REACH, hit)
+                    } else if p.aperture.is_circle() {
+                        fragment::weight(d2, Px::splat(s), Px::splat(rim))
+                    } else {
+                        // A shaped aperture: pixel by pixel.
+                        let mirror = get(sh, CH_M, k);
+                        Px::from_fn(|l| shaped_weight([dx.lane(l), dy.lane(l)], d2.lane(l), s, rim, &p.aperture, mirror, &mask))
+                    };
+                    let w = Px::splat(get(sh, CH_A, k)) * weight;
+                    let (f, a) = surfaces.take(hit, w, get(sh, CH_O, k), get(sh, CH_Z, k), used);
+                    let mut c = 0;
+                    while c < 3 {
+                        acc[c] = Px::select(hit, acc[c] + f * Px::splat(get(sh, CH_R + c * T, k)), acc[c]);
+                        c += 1;
                     }
-                };
-                if L == 1 {
-                    // The GPU's one pixel. A loop over the mask's bits here made lavapipe leave
-                    // pixels black whose walk crossed hundreds of chunks (the stress case
-                    // `translucent-stack-blurred`), though the CPU ran it right with one lane.
-                    if hits != 0 {
-                        take(0);
-                    }
-                } else {
-                    while hits != 0 {
-                        let l = hits.trailing_zeros() as usize;
-                        hits &= hits - 1;
-                        take(l);
+                    used = Px::select(hit, used + a, used);
+                    let saturated = hit & !used.lt(Px::splat(1.0 - SATURATED));
+                    if saturated.any() {
+                        let mut l = 0;
+                        while l < L {
+                            if saturated.test(l) {
+                                live[l] = false;
+                                visited[l] = k + 1;
+                            }
+                            l += 1;
+                        }
+                        lim = Px::select(saturated, Px::splat(0.0), lim);
+                        stop = lim.max_lane() as u32;
                     }
                 }
                 k += 1;
             }
+            set_px(sh, ACC_R, lid, acc[0]);
+            set_px(sh, ACC_G, lid, acc[1]);
+            set_px(sh, ACC_B, lid, acc[2]);
+            set_px(sh, USED, lid, used);
+            surfaces.store(sh, SURFACES, T, lid);
             let mut l = 0;
             while l < L {
                 let q = lid + l as u32;
@@ -309,11 +307,6 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                     visited[l] = if end[l] < n { end[l] + 1 } else { n };
                     live[l] = end[l] == n;
                 }
-                set(sh, ACC_R, q, acc[l][0]);
-                set(sh, ACC_G, q, acc[l][1]);
-                set(sh, ACC_B, q, acc[l][2]);
-                set(sh, USED, q, used[l]);
-                surfaces[l].store(sh, SURFACES, T, q);
                 if ok[l] {
                     sh[VISITED + q as usize] += visited[l];
                 }

@@ -50,8 +50,9 @@ use super::SplatParams;
 use crate::aperture::Aperture;
 use crate::exec::{Load, Mem};
 use crate::footprint;
+use crate::lane::Lanes;
 use crate::lens::ThinLens;
-use crate::math::{ceil, floor, sqrt};
+use crate::math::{ceil, floor};
 use crate::radiance::clamp_color;
 
 pub const WORDS: u32 = 4;
@@ -357,21 +358,21 @@ pub const EXACT_SUM_LIMIT: f32 = 4.0;
 /// is the CoC disc (radius `s − w/2`) seen through a box of the fragment's width, to first order: the
 /// edge of a disc that covers half a pixel gives that pixel half a share, as the reference's integral
 /// over the pixel area does.
+/// Per pixel (`V = f32`) or for several at once ([`crate::lane`]).
 #[inline(always)]
-pub fn weight(d2: f32, s: f32, w: f32) -> f32 {
+pub fn weight<V: Lanes>(d2: V, s: V, w: V) -> V {
     let inner = s - w;
-    if inner > 0.0 && d2 <= inner * inner {
-        return 1.0;
-    }
-    linear_rim(sqrt(d2), s, w)
+    let interior = V::splat(0.0).lt(inner) & d2.le(inner * inner);
+    V::select(interior, V::splat(1.0), linear_rim(d2.sqrt(), s, w))
 }
 
 /// The soft rim of [`weight`] at distance (or gauge) `d`: 1 up to `s − w`, falling linearly to 0 at
 /// `s`. The ring gather's highlight discs use it too (`ring_gather::disc_weight`).
 #[inline(always)]
-pub fn linear_rim(d: f32, s: f32, w: f32) -> f32 {
+pub fn linear_rim<V: Lanes>(d: V, s: V, w: V) -> V {
     let v = (s - d) / w;
-    if v > 0.0 { if v < 1.0 { v } else { 1.0 } } else { 0.0 }
+    let (zero, one) = (V::splat(0.0), V::splat(1.0));
+    V::select(zero.lt(v), V::select(v.lt(one), v, one), zero)
 }
 
 /// [`weight`] for the aperture shape `ap` at offset `d` (pixel centre minus fragment centre, `d2`

@@ -30,6 +30,8 @@
 //! covering opaque surface, or an opaque surface partly covering behind a pane, takes its share
 //! unscaled, as before.
 
+use crate::lane::{LaneMask, Lanes};
+
 /// Relative depth step beyond which the next fragment is another surface (as the area-integrated
 /// layers cluster depths within 5%, [`crate::resolve`]).
 pub const DEPTH_GAP: f32 = 1.05;
@@ -40,55 +42,68 @@ pub const SHARE_MAX: f32 = 1.0;
 /// left: the factor its premultiplied colour is added with, and the coverage it spends. Its
 /// coverage `w·α` while that fits; otherwise the rest, with its colour scaled to match (`rest/α`,
 /// below `w`). An opaque fragment takes `min(w, rest)` for both, bit for bit as before alpha.
-#[inline]
-pub fn take(w: f32, alpha: f32, rest: f32) -> (f32, f32) {
-    let wa = w * alpha;
-    if wa < rest { (w, wa) } else { (rest / alpha, rest) }
+#[inline(always)]
+pub fn take<V: Lanes>(w: V, alpha: f32, rest: V) -> (V, V) {
+    let wa = w * V::splat(alpha);
+    let fits = wa.lt(rest);
+    // `rest / 1` is `rest`: an opaque fragment (the common case) skips the division.
+    let scaled = if alpha == 1.0 { rest } else { rest / V::splat(alpha) };
+    (V::select(fits, w, scaled), V::select(fits, wa, rest))
 }
 
-/// A pixel's walk between surfaces.
+/// A pixel's walk between surfaces (or several pixels', [`crate::lane`]).
 #[derive(Clone, Copy)]
-pub struct Surfaces {
+pub struct Surfaces<V: Lanes> {
     /// Depth of the last fragment taken (NaN: none yet).
-    pub last_z: f32,
+    pub last_z: V,
     /// Summed disc share of the current surface's fragments.
-    pub share: f32,
+    pub share: V,
     /// Coverage left when the current surface began: the factor its translucent fragments are
     /// scaled by when [`Surfaces::see_through`].
-    pub rest: f32,
+    pub rest: V,
     /// The current surface has an opaque fragment (before the first: true, nothing to see through).
-    pub opaque: bool,
+    pub opaque: V::Mask,
     /// The current surface lies behind a wholly translucent one.
-    pub see_through: bool,
+    pub see_through: V::Mask,
 }
 
-impl Surfaces {
+impl<V: Lanes> Surfaces<V> {
     /// Before the first fragment.
-    pub const START: Surfaces = Surfaces { last_z: f32::NAN, share: 0.0, rest: 1.0, opaque: true, see_through: false };
+    #[inline(always)]
+    pub fn start() -> Surfaces<V> {
+        Surfaces {
+            last_z: V::splat(f32::NAN),
+            share: V::splat(0.0),
+            rest: V::splat(1.0),
+            opaque: V::Mask::splat(true),
+            see_through: V::Mask::splat(false),
+        }
+    }
 
-    /// What a fragment of disc share `w`, alpha `alpha` and depth `z` takes of a pixel that has
-    /// spent `used` of its coverage: the factor its premultiplied colour is added with and the
-    /// coverage it spends ([`take`], on its share scaled by its surface's rest where it is seen
-    /// through a translucent surface).
-    #[inline]
-    pub fn take(&mut self, w: f32, alpha: f32, z: f32, used: f32) -> (f32, f32) {
-        let rest = 1.0 - used;
+    /// What a fragment of disc share `w`, alpha `alpha` and depth `z` takes of the pixels `hit` that
+    /// have spent `used` of their coverage: the factor its premultiplied colour is added with and
+    /// the coverage it spends ([`take`], on its share scaled by its surface's rest where it is seen
+    /// through a translucent surface). The other pixels' state stays as it was.
+    #[inline(always)]
+    pub fn take(&mut self, hit: V::Mask, w: V, alpha: f32, z: f32, used: V) -> (V, V) {
+        let rest = V::splat(1.0) - used;
         // `!(z <= ..)`: the first fragment (NaN) starts a surface too.
-        if !(z <= self.last_z * DEPTH_GAP) || self.share + 0.5 * w > SHARE_MAX {
-            self.see_through = !self.opaque;
-            self.opaque = false;
-            self.rest = rest;
-            self.share = 0.0;
-        }
-        self.last_z = z;
-        self.share += w;
-        if alpha < 1.0 {
-            let scale = if self.see_through { self.rest } else { 1.0 };
-            take(w * scale, alpha, rest)
+        let new = !V::splat(z).le(self.last_z * V::splat(DEPTH_GAP)) | V::splat(SHARE_MAX).lt(self.share + V::splat(0.5) * w);
+        let see_through = new.pick(!self.opaque, self.see_through);
+        let opaque = !new & self.opaque;
+        let surface_rest = V::select(new, rest, self.rest);
+        let share = V::select(new, V::splat(0.0), self.share) + w;
+        let (taken, opaque) = if alpha < 1.0 {
+            (take(w * V::select(see_through, surface_rest, V::splat(1.0)), alpha, rest), opaque)
         } else {
-            self.opaque = true;
-            take(w, alpha, rest)
-        }
+            (take(w, alpha, rest), V::Mask::splat(true))
+        };
+        self.last_z = V::select(hit, V::splat(z), self.last_z);
+        self.share = V::select(hit, share, self.share);
+        self.rest = V::select(hit, surface_rest, self.rest);
+        self.opaque = hit.pick(opaque, self.opaque);
+        self.see_through = hit.pick(see_through, self.see_through);
+        taken
     }
 }
 
@@ -96,26 +111,31 @@ impl Surfaces {
 /// `base` (the walk keeps it between chunks).
 pub const WORDS: usize = 4;
 
-impl Surfaces {
+impl<V: Lanes> Surfaces<V> {
+    /// The state of pixels `i .. i + V::N`.
     #[inline]
-    pub fn load<const N: usize>(sh: &[u32; N], base: usize, stride: usize, i: u32) -> Surfaces {
+    pub fn load<const N: usize>(sh: &[u32; N], base: usize, stride: usize, i: u32) -> Surfaces<V> {
         let i = base + i as usize;
-        let flags = sh[i + 3 * stride];
+        let word = |f: usize, l: usize| sh[i + f * stride + l];
         Surfaces {
-            last_z: f32::from_bits(sh[i]),
-            share: f32::from_bits(sh[i + stride]),
-            rest: f32::from_bits(sh[i + 2 * stride]),
-            opaque: flags & 1 != 0,
-            see_through: flags & 2 != 0,
+            last_z: V::from_fn(|l| f32::from_bits(word(0, l))),
+            share: V::from_fn(|l| f32::from_bits(word(1, l))),
+            rest: V::from_fn(|l| f32::from_bits(word(2, l))),
+            opaque: V::Mask::from_fn(|l| word(3, l) & 1 != 0),
+            see_through: V::Mask::from_fn(|l| word(3, l) & 2 != 0),
         }
     }
 
     #[inline]
     pub fn store<const N: usize>(self, sh: &mut [u32; N], base: usize, stride: usize, i: u32) {
         let i = base + i as usize;
-        sh[i] = self.last_z.to_bits();
-        sh[i + stride] = self.share.to_bits();
-        sh[i + 2 * stride] = self.rest.to_bits();
-        sh[i + 3 * stride] = self.opaque as u32 | (self.see_through as u32) << 1;
+        let mut l = 0;
+        while l < V::N {
+            sh[i + l] = self.last_z.lane(l).to_bits();
+            sh[i + stride + l] = self.share.lane(l).to_bits();
+            sh[i + 2 * stride + l] = self.rest.lane(l).to_bits();
+            sh[i + 3 * stride + l] = self.opaque.test(l) as u32 | (self.see_through.test(l) as u32) << 1;
+            l += 1;
+        }
     }
 }

@@ -1,0 +1,253 @@
+//! Numbers that stand for several pixels at once, so that a per-pixel computation is written once
+//! and runs one pixel an invocation on the GPU and several in SIMD registers on the CPU.
+//!
+//! On the GPU an invocation walks one pixel, and a [`Lanes`] value is a plain `f32` (its mask a
+//! `bool`). On the CPU a workgroup's invocations run one after another, so one invocation walks
+//! [`Wide::N`] pixels, and a value is a [`Wide`]: eight `f32` whose element-wise operations the
+//! compiler turns into vector instructions (no branch inside, so it can). Branches become
+//! [`Lanes::select`]: both sides are computed, the mask picks. Every operation is the same IEEE
+//! operation on each lane as on the scalar, in the same order, so the pixels' values are the same
+//! bits on either target.
+
+use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
+
+/// A value per pixel.
+pub trait Lanes: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self> {
+    type Mask: LaneMask;
+    /// Pixels per value.
+    const N: usize;
+    fn splat(x: f32) -> Self;
+    fn from_fn(f: impl FnMut(usize) -> f32) -> Self;
+    fn lane(self, l: usize) -> f32;
+    fn sqrt(self) -> Self;
+    fn lt(self, o: Self) -> Self::Mask;
+    fn le(self, o: Self) -> Self::Mask;
+    /// `a` where `m` holds, else `b`.
+    fn select(m: Self::Mask, a: Self, b: Self) -> Self;
+    /// The largest lane (NaN lanes ignored where another lane is a number).
+    fn max_lane(self) -> f32;
+}
+
+/// A condition per pixel.
+pub trait LaneMask: Copy + BitAnd<Output = Self> + BitOr<Output = Self> + Not<Output = Self> {
+    fn splat(b: bool) -> Self;
+    fn from_fn(f: impl FnMut(usize) -> bool) -> Self;
+    fn test(self, l: usize) -> bool;
+    fn any(self) -> bool;
+    /// `a` where `self` holds, else `b`.
+    #[inline(always)]
+    fn pick(self, a: Self, b: Self) -> Self {
+        (self & a) | (!self & b)
+    }
+}
+
+impl Lanes for f32 {
+    type Mask = bool;
+    const N: usize = 1;
+    #[inline(always)]
+    fn splat(x: f32) -> f32 {
+        x
+    }
+    #[inline(always)]
+    fn from_fn(mut f: impl FnMut(usize) -> f32) -> f32 {
+        f(0)
+    }
+    #[inline(always)]
+    fn lane(self, _l: usize) -> f32 {
+        self
+    }
+    #[inline(always)]
+    fn sqrt(self) -> f32 {
+        crate::math::sqrt(self)
+    }
+    #[inline(always)]
+    fn lt(self, o: f32) -> bool {
+        self < o
+    }
+    #[inline(always)]
+    fn le(self, o: f32) -> bool {
+        self <= o
+    }
+    #[inline(always)]
+    fn select(m: bool, a: f32, b: f32) -> f32 {
+        if m { a } else { b }
+    }
+    #[inline(always)]
+    fn max_lane(self) -> f32 {
+        self
+    }
+}
+
+impl LaneMask for bool {
+    #[inline(always)]
+    fn splat(b: bool) -> bool {
+        b
+    }
+    #[inline(always)]
+    fn from_fn(mut f: impl FnMut(usize) -> bool) -> bool {
+        f(0)
+    }
+    #[inline(always)]
+    fn test(self, _l: usize) -> bool {
+        self
+    }
+    #[inline(always)]
+    fn any(self) -> bool {
+        self
+    }
+}
+
+#[cfg(not(target_arch = "spirv"))]
+pub use wide::{Wide, WideMask};
+
+#[cfg(not(target_arch = "spirv"))]
+mod wide {
+    use super::{LaneMask, Lanes};
+    use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
+
+    const W: usize = 4;
+
+    /// Eight pixels' values. Each operation is a loop over the lanes without a branch, which the
+    /// compiler emits as vector instructions.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    #[repr(C, align(16))]
+    pub struct Wide(pub [f32; W]);
+
+    /// Eight pixels' conditions, as SIMD compares give them: all bits set where true.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    #[repr(C, align(16))]
+    pub struct WideMask(pub [u32; W]);
+
+    macro_rules! lanewise {
+        ($ty:ident, $tr:ident, $f:ident, $op:tt) => {
+            impl $tr for $ty {
+                type Output = $ty;
+                #[inline(always)]
+                fn $f(self, o: $ty) -> $ty {
+                    let mut r = self.0;
+                    let mut l = 0;
+                    while l < W {
+                        r[l] = self.0[l] $op o.0[l];
+                        l += 1;
+                    }
+                    $ty(r)
+                }
+            }
+        };
+    }
+    lanewise!(Wide, Add, add, +);
+    lanewise!(Wide, Sub, sub, -);
+    lanewise!(Wide, Mul, mul, *);
+    lanewise!(Wide, Div, div, /);
+    lanewise!(WideMask, BitAnd, bitand, &);
+    lanewise!(WideMask, BitOr, bitor, |);
+
+    impl Neg for Wide {
+        type Output = Wide;
+        #[inline(always)]
+        fn neg(self) -> Wide {
+            Wide(self.0.map(|v| -v))
+        }
+    }
+
+    impl Not for WideMask {
+        type Output = WideMask;
+        #[inline(always)]
+        fn not(self) -> WideMask {
+            WideMask(self.0.map(|m| !m))
+        }
+    }
+
+    #[inline(always)]
+    fn mask(b: bool) -> u32 {
+        (b as u32).wrapping_neg()
+    }
+
+    impl Lanes for Wide {
+        type Mask = WideMask;
+        const N: usize = W;
+        #[inline(always)]
+        fn splat(x: f32) -> Wide {
+            Wide([x; W])
+        }
+        #[inline(always)]
+        fn from_fn(f: impl FnMut(usize) -> f32) -> Wide {
+            Wide(core::array::from_fn(f))
+        }
+        #[inline(always)]
+        fn lane(self, l: usize) -> f32 {
+            self.0[l]
+        }
+        #[inline(always)]
+        fn sqrt(self) -> Wide {
+            Wide(self.0.map(f32::sqrt))
+        }
+        #[inline(always)]
+        fn lt(self, o: Wide) -> WideMask {
+            WideMask(core::array::from_fn(|l| mask(self.0[l] < o.0[l])))
+        }
+        #[inline(always)]
+        fn le(self, o: Wide) -> WideMask {
+            WideMask(core::array::from_fn(|l| mask(self.0[l] <= o.0[l])))
+        }
+        #[inline(always)]
+        fn select(m: WideMask, a: Wide, b: Wide) -> Wide {
+            Wide(core::array::from_fn(|l| f32::from_bits((m.0[l] & a.0[l].to_bits()) | (!m.0[l] & b.0[l].to_bits()))))
+        }
+        #[inline(always)]
+        fn max_lane(self) -> f32 {
+            self.0.iter().fold(f32::NEG_INFINITY, |m, &v| if v > m { v } else { m })
+        }
+    }
+
+    impl LaneMask for WideMask {
+        #[inline(always)]
+        fn splat(b: bool) -> WideMask {
+            WideMask([mask(b); W])
+        }
+        #[inline(always)]
+        fn from_fn(mut f: impl FnMut(usize) -> bool) -> WideMask {
+            WideMask(core::array::from_fn(|l| mask(f(l))))
+        }
+        #[inline(always)]
+        fn test(self, l: usize) -> bool {
+            self.0[l] != 0
+        }
+        #[inline(always)]
+        fn any(self) -> bool {
+            self.0.iter().fold(0, |a, &m| a | m) != 0
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each lane of a wide operation is the scalar operation's bits, NaN and infinities included.
+    #[test]
+    fn wide_lanes_are_the_scalar_bits() {
+        let xs = [0.3f32, -2.5, f32::NAN, f32::INFINITY, 0.0, -0.0, 1e-40, 7.0];
+        let ys = [1.1f32, -2.5, 3.0, f32::INFINITY, -0.0, 2.0, 3e38, f32::NAN];
+        let (a, b) = (Wide(xs), Wide(ys));
+        for l in 0..Wide::N {
+            let (x, y) = (xs[l], ys[l]);
+            assert_eq!((a + b).lane(l).to_bits(), (x + y).to_bits());
+            assert_eq!((a - b).lane(l).to_bits(), (x - y).to_bits());
+            assert_eq!((a * b).lane(l).to_bits(), (x * y).to_bits());
+            assert_eq!((a / b).lane(l).to_bits(), (x / y).to_bits());
+            assert_eq!((-a).lane(l).to_bits(), (-x).to_bits());
+            assert_eq!(a.sqrt().lane(l).to_bits(), Lanes::sqrt(x).to_bits());
+            assert_eq!(a.lt(b).test(l), x < y);
+            assert_eq!(a.le(b).test(l), x <= y);
+            let m = a.lt(b);
+            assert_eq!(Wide::select(m, a, b).lane(l).to_bits(), f32::select(x < y, x, y).to_bits());
+            assert_eq!((!m).test(l), !(x < y));
+            assert_eq!(m.pick(WideMask::splat(true), WideMask::splat(false)).test(l), x < y);
+        }
+        assert_eq!(a.max_lane(), f32::INFINITY);
+        assert!(a.lt(b).any());
+        assert!(!WideMask::splat(false).any());
+        assert!(WideMask::from_fn(|l| l == 7).any());
+    }
+}

@@ -180,6 +180,33 @@ mod tests {
         inside as f64 * cell
     }
 
+    /// The CPU walks several pixels at once: each lane's weight is the one-pixel weight, bit for
+    /// bit, whichever of its neighbours need the integral, and lanes left inactive do not matter.
+    #[test]
+    fn weights_for_several_pixels_are_each_pixels_weight() {
+        use crate::lane::{LaneMask, Wide, WideMask};
+        for side in 1..=4u32 {
+            for mask in [full(side), 1, 0b1001, 0b0110_1001_0000_0011] {
+                for r in [1e-5f32, 0.3, 1.2, 2.5, 6.0, 40.0] {
+                    for y in -8..=8 {
+                        for x0 in (-9..=9).step_by(Wide::N) {
+                            let xs = Wide::from_fn(|l| (x0 + l as i32) as f32);
+                            let ys = Wide::splat(y as f32);
+                            let active = WideMask::from_fn(|l| (x0 + l as i32 + y) % 3 != 0);
+                            let w = weight_at(mask, side, [xs, ys], r, active);
+                            for l in 0..Wide::N {
+                                if active.test(l) {
+                                    let one = weight(mask, side, [xs.lane(l), y as f32], r);
+                                    assert_eq!(w.lane(l).to_bits(), one.to_bits(), "side {side} mask {mask:#x} r {r} at ({}, {y})", xs.lane(l));
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     #[test]
     fn the_disc_in_a_box_matches_a_midpoint_rule() {
         for &r in &[0.05f32, 0.3, 0.7, 1.0, 1.6, 3.3, 7.5] {

@@ -79,6 +79,7 @@ pub const SHARED_WORDS: usize = CH_F + T;
 type Px = f32;
 #[cfg(not(target_arch = "spirv"))]
 type Px = crate::lane::Wide;
+type PxMask = <Px as Lanes>::Mask;
 const L: usize = Px::N;
 const LANES: u32 = L as u32;
 const _: () = assert!(THREADS % LANES == 0);
@@ -240,12 +241,17 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
             let mut used = get_px(sh, USED, lid);
             let mut acc = [get_px(sh, ACC_R, lid), get_px(sh, ACC_G, lid), get_px(sh, ACC_B, lid)];
             let mut surfaces = Surfaces::<Px>::load(sh, SURFACES, T, lid);
-            let mut live = per_lane(|l| ok[l] && used.lane(l) < 1.0 - SATURATED);
+            let live = per_lane(|l| ok[l] && used.lane(l) < 1.0 - SATURATED);
             // Where each pixel's walk ends (its sharp front lies in front of the rest of the
             // list), and the entries it visits, as a walk over every entry in order counts them:
             // up to and including the one that saturates it or lies at or behind its sharp front.
             let end = per_lane(|l| if live[l] { first_behind(sh, n, get(sh, SHARP_Z, lid + l as u32)) } else { 0 });
-            let mut visited = [0u32; L];
+            // The pixels saturated in this chunk, and the entries they visited. (Lane values, not
+            // arrays indexed by the lane inside the walk: on lavapipe, a function-local array indexed
+            // by a variable in this loop left pixels black in the stress case
+            // `translucent-stack-blurred`, whose walks cross hundreds of chunks.)
+            let mut saturated = PxMask::splat(false);
+            let mut saturated_after = Px::splat(0.0);
             // The entries each pixel still walks (as f32, exact): its end while it is live, 0
             // once saturated.
             let mut lim = Px::from_fn(|l| end[l] as f32);
@@ -273,23 +279,17 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                     };
                     let w = Px::splat(get(sh, CH_A, k)) * weight;
                     let (f, a) = surfaces.take(hit, w, get(sh, CH_O, k), get(sh, CH_Z, k), used);
-                    let mut c = 0;
-                    while c < 3 {
-                        acc[c] = Px::select(hit, acc[c] + f * Px::splat(get(sh, CH_R + c * T, k)), acc[c]);
-                        c += 1;
-                    }
+                    acc = [
+                        Px::select(hit, acc[0] + f * Px::splat(get(sh, CH_R, k)), acc[0]),
+                        Px::select(hit, acc[1] + f * Px::splat(get(sh, CH_G, k)), acc[1]),
+                        Px::select(hit, acc[2] + f * Px::splat(get(sh, CH_B, k)), acc[2]),
+                    ];
                     used = Px::select(hit, used + a, used);
-                    let saturated = hit & !used.lt(Px::splat(1.0 - SATURATED));
-                    if saturated.any() {
-                        let mut l = 0;
-                        while l < L {
-                            if saturated.test(l) {
-                                live[l] = false;
-                                visited[l] = k + 1;
-                            }
-                            l += 1;
-                        }
-                        lim = Px::select(saturated, Px::splat(0.0), lim);
+                    let now = hit & !used.lt(Px::splat(1.0 - SATURATED));
+                    if now.any() {
+                        saturated = saturated | now;
+                        saturated_after = Px::select(now, Px::splat((k + 1) as f32), saturated_after);
+                        lim = Px::select(now, Px::splat(0.0), lim);
                         stop = lim.max_lane() as u32;
                     }
                 }
@@ -303,14 +303,17 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
             let mut l = 0;
             while l < L {
                 let q = lid + l as u32;
-                if live[l] {
-                    visited[l] = if end[l] < n { end[l] + 1 } else { n };
-                    live[l] = end[l] == n;
-                }
+                let (visited, live) = if saturated.test(l) {
+                    (saturated_after.lane(l) as u32, false)
+                } else if live[l] {
+                    (if end[l] < n { end[l] + 1 } else { n }, end[l] == n)
+                } else {
+                    (0, false)
+                };
                 if ok[l] {
-                    sh[VISITED + q as usize] += visited[l];
+                    sh[VISITED + q as usize] += visited;
                 }
-                sh[ACTIVE + q as usize] = live[l] as u32;
+                sh[ACTIVE + q as usize] = live as u32;
                 l += 1;
             }
         });

@@ -50,10 +50,11 @@ pub fn full(side: u32) -> u32 {
 
 // The integrals below run per destination pixel, or for several at once ([`crate::lane`]): their
 // branches are selects, and the closed form is computed only where some pixel needs it. The disc's
-// radius is the fragment's, the same for every pixel.
+// radius is the fragment's, the same for every pixel. Always inlined, so that the splat walk's copy
+// for AVX2 (`crate::pass_with_avx2`) has them in AVX2 too.
 
 /// `∫ s(x) dx` with `s(x) = √(r² − x²)`, for `x` in `[−r, r]`.
-#[inline]
+#[inline(always)]
 fn chord_integral<V: Lanes>(x: V, r: f32) -> V {
     let rr = V::splat(r * r);
     let q = rr - x * x;
@@ -63,14 +64,14 @@ fn chord_integral<V: Lanes>(x: V, r: f32) -> V {
 }
 
 /// `x` clamped to `[−a, a]`.
-#[inline]
+#[inline(always)]
 fn clamp_to<V: Lanes>(x: V, a: V) -> V {
     V::select(a.lt(x), a, V::select(x.lt(-a), -a, x))
 }
 
 /// `∫ min(c, s(x)) dx` over `[x0, x1]`, for `c >= 0` and `s(x) = √(r² − x²)` (0 outside `[−r, r]`):
 /// `c` where the chord is longer than `c` (`|x| < a`, `a = √(r² − c²)`), the chord elsewhere.
-#[inline]
+#[inline(always)]
 fn capped_chords<V: Lanes>(c: V, x0: V, x1: V, r: f32) -> V {
     let q = V::splat(r * r) - c * c;
     let a = V::select(V::splat(0.0).lt(q), q.sqrt(), V::splat(0.0));
@@ -81,7 +82,7 @@ fn capped_chords<V: Lanes>(c: V, x0: V, x1: V, r: f32) -> V {
 
 /// Area of the disc of radius `r` about the origin inside the box `[x0, x1] × [y0, y1]`, exact (the
 /// integral of each vertical chord's length inside `[y0, y1]`, in closed form), in `[0, box area]`.
-#[inline]
+#[inline(always)]
 pub fn disc_box_area<V: Lanes>(r: f32, x0: V, x1: V, y0: V, y1: V) -> V {
     let zero = V::splat(0.0);
     if !(r > 0.0) {
@@ -104,7 +105,7 @@ pub fn disc_box_area<V: Lanes>(r: f32, x0: V, x1: V, y0: V, y1: V) -> V {
 /// 1]` relative to the point: 1 or 0 without the integral where the box lies wholly inside or
 /// outside; a point source (`r` under 1e-4) gives its whole share to the box that holds it. The
 /// shares of every box of the pixel lattice sum to 1. Only the pixels `active` need a value.
-#[inline]
+#[inline(always)]
 pub fn box_share<V: Lanes>(r: f32, ox: V, oy: V, active: V::Mask) -> V {
     let c = V::splat;
     let (x1, y1) = (ox + c(1.0), oy + c(1.0));
@@ -129,7 +130,7 @@ pub fn box_share<V: Lanes>(r: f32, ox: V, oy: V, active: V::Mask) -> V {
 /// mean over its sub-samples of [`box_share`]. Normalised: a fragment's weights over the pixel
 /// lattice sum to 1, so it spreads exactly its energy. Per pixel, or for several at once of which
 /// only those `active` need a value.
-#[inline]
+#[inline(always)]
 pub fn weight_at<V: Lanes>(mask: u32, side: u32, d: [V; 2], r: f32, active: V::Mask) -> V {
     // Every sub-sample's box inside the disc (no sub-sample lies farther than REACH − √2/2 from
     // the pixel centre, no box corner farther than √2/2 from its centre).
@@ -197,7 +198,12 @@ mod tests {
                             for l in 0..Wide::N {
                                 if active.test(l) {
                                     let one = weight(mask, side, [xs.lane(l), y as f32], r);
-                                    assert_eq!(w.lane(l).to_bits(), one.to_bits(), "side {side} mask {mask:#x} r {r} at ({}, {y})", xs.lane(l));
+                                    assert_eq!(
+                                        w.lane(l).to_bits(),
+                                        one.to_bits(),
+                                        "side {side} mask {mask:#x} r {r} at ({}, {y})",
+                                        xs.lane(l)
+                                    );
                                 }
                             }
                         }

@@ -100,22 +100,47 @@ impl LaneMask for bool {
 #[cfg(not(target_arch = "spirv"))]
 pub use wide::{Wide, WideMask};
 
+/// Defines a kernel pass whose lane arithmetic ([`Wide`]) fills 256-bit registers where the CPU
+/// has AVX2: on x86-64 the body is compiled a second time, in a function with the AVX2 target
+/// feature (the closures the body passes to `Group::each` are compiled with it too), which the pass
+/// calls where the CPU has it. The same IEEE operations either way (no fused multiply-add), so the
+/// same bits. Elsewhere, and on the GPU, the pass is the body.
+#[macro_export]
+macro_rules! pass_with_avx2 {
+    ($(#[$m:meta])* pub fn $name:ident<$($gp:ident: $gb:path),*>($($arg:ident: $ty:ty),* $(,)?) $body:block) => {
+        $(#[$m])*
+        pub fn $name<$($gp: $gb),*>($($arg: $ty),*) {
+            #[cfg(all(not(target_arch = "spirv"), target_arch = "x86_64"))]
+            {
+                #[target_feature(enable = "avx2")]
+                #[allow(clippy::too_many_arguments)]
+                unsafe fn avx2<$($gp: $gb),*>($($arg: $ty),*) $body
+                if std::is_x86_feature_detected!("avx2") {
+                    // SAFETY: the CPU has AVX2.
+                    return unsafe { avx2($($arg),*) };
+                }
+            }
+            $body
+        }
+    };
+}
+
 #[cfg(not(target_arch = "spirv"))]
 mod wide {
     use super::{LaneMask, Lanes};
     use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
-    const W: usize = 4;
+    const W: usize = 8;
 
     /// Eight pixels' values. Each operation is a loop over the lanes without a branch, which the
     /// compiler emits as vector instructions.
     #[derive(Clone, Copy, Debug, PartialEq)]
-    #[repr(C, align(16))]
+    #[repr(C, align(32))]
     pub struct Wide(pub [f32; W]);
 
     /// Eight pixels' conditions, as SIMD compares give them: all bits set where true.
     #[derive(Clone, Copy, Debug, PartialEq)]
-    #[repr(C, align(16))]
+    #[repr(C, align(32))]
     pub struct WideMask(pub [u32; W]);
 
     macro_rules! lanewise {

@@ -29,7 +29,7 @@ pub fn powf(x: f32, y: f32) -> f32 {
 /// (`crate::footprint`) multiply it by `r²`. `x + x³·P(x²)` up to 1/2, a least-squares fit of
 /// degree 4 (relative error under 3e-7 in f32), and `π/2 − 2·asin(√((1 − x)/2))` above. Per
 /// value or for several at once ([`crate::lane`]).
-#[inline]
+#[inline(always)]
 pub fn asin<V: crate::lane::Lanes>(x: V) -> V {
     let c = V::splat;
     let negative = x.lt(c(0.0));

@@ -142,6 +142,7 @@ fn first_behind<const N: usize>(sh: &[u32; N], n: u32, z: f32) -> u32 {
     lo
 }
 
+crate::pass_with_avx2! {
 #[allow(clippy::too_many_arguments)]
 pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
@@ -152,10 +153,11 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
     values: R,
     segments: R,
     copy: R,
-    mut out: M,
-    mut st: M,
+    out: M,
+    st: M,
     mask: R,
 ) {
+    let (mut out, mut st) = (out, st);
     let p = &super::planned(p, &st);
     let [wx, wy, _] = g.workgroup_id();
     let sub = p.tile / p.block();
@@ -342,6 +344,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
             st.atomic_add(stats::SKIPPED_ENTRIES, len - visited);
         }
     });
+}
 }
 
 kernel!(

@@ -363,14 +363,21 @@ pub const EXACT_SUM_LIMIT: f32 = 4.0;
 pub fn weight<V: Lanes>(d2: V, s: V, w: V) -> V {
     let inner = s - w;
     let interior = V::splat(0.0).lt(inner) & d2.le(inner * inner);
-    V::select(interior, V::splat(1.0), linear_rim(d2.sqrt(), s, w))
+    // `w` is a block's width, a power of two: multiplying by its reciprocal is the division,
+    // exactly, and leaves the division off the chain from `d2`.
+    V::select(interior, V::splat(1.0), unit_ramp((s - d2.sqrt()) * (V::splat(1.0) / w)))
 }
 
 /// The soft rim of [`weight`] at distance (or gauge) `d`: 1 up to `s − w`, falling linearly to 0 at
 /// `s`. The ring gather's highlight discs use it too (`ring_gather::disc_weight`).
 #[inline(always)]
 pub fn linear_rim<V: Lanes>(d: V, s: V, w: V) -> V {
-    let v = (s - d) / w;
+    unit_ramp((s - d) / w)
+}
+
+/// `v` clamped to `[0, 1]` (0 for NaN).
+#[inline(always)]
+fn unit_ramp<V: Lanes>(v: V) -> V {
     let (zero, one) = (V::splat(0.0), V::splat(1.0));
     V::select(zero.lt(v), V::select(v.lt(one), v, one), zero)
 }

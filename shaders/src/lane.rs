@@ -100,10 +100,38 @@ impl LaneMask for bool {
 #[cfg(not(target_arch = "spirv"))]
 pub use wide::{Wide, WideMask};
 
+/// Which copy of the passes defined with [`pass_with_avx2!`](crate::pass_with_avx2) the CPU backend
+/// runs.
+#[cfg(not(target_arch = "spirv"))]
+pub mod isa {
+    use core::sync::atomic::{AtomicBool, Ordering::Relaxed};
+
+    static AVX2_ALLOWED: AtomicBool = AtomicBool::new(true);
+
+    /// Whether the copies compiled for AVX2 run where the CPU has AVX2 (the default), or the
+    /// baseline copies everywhere: for comparing the two, which give the same bits. Process-wide.
+    pub fn allow_avx2(allowed: bool) {
+        AVX2_ALLOWED.store(allowed, Relaxed)
+    }
+
+    /// Whether a pass runs its AVX2 copy now.
+    #[inline]
+    pub fn avx2() -> bool {
+        #[cfg(target_arch = "x86_64")]
+        {
+            AVX2_ALLOWED.load(Relaxed) && std::is_x86_feature_detected!("avx2")
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            false
+        }
+    }
+}
+
 /// Defines a kernel pass whose lane arithmetic ([`Wide`]) fills 256-bit registers where the CPU
 /// has AVX2: on x86-64 the body is compiled a second time, in a function with the AVX2 target
 /// feature (the closures the body passes to `Group::each` are compiled with it too), which the pass
-/// calls where the CPU has it. The same IEEE operations either way (no fused multiply-add), so the
+/// calls where the CPU has it ([`isa`]). The same IEEE operations either way (no fused multiply-add), so the
 /// same bits. Elsewhere, and on the GPU, the pass is the body.
 #[macro_export]
 macro_rules! pass_with_avx2 {
@@ -115,7 +143,7 @@ macro_rules! pass_with_avx2 {
                 #[target_feature(enable = "avx2")]
                 #[allow(clippy::too_many_arguments)]
                 unsafe fn avx2<$($gp: $gb),*>($($arg: $ty),*) $body
-                if std::is_x86_feature_detected!("avx2") {
+                if $crate::lane::isa::avx2() {
                     // SAFETY: the CPU has AVX2.
                     return unsafe { avx2($($arg),*) };
                 }

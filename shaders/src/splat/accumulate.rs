@@ -190,6 +190,23 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
 
     let offset = segments.load(2 * t);
     let len = segments.load(2 * t + 1);
+    // Where the list's last translucent entry ends. Only a translucent fragment reads a pixel's
+    // surfaces, so behind it the walk spends the plain coverage budget (the same result, bit for
+    // bit: `Surfaces::take` of an opaque fragment is `surfaces::take`).
+    g.each(|lid| {
+        let mut end = 0;
+        let mut i = lid;
+        while i < len {
+            if !Fragment::is_opaque_at(&dense, values.load(offset + i)) {
+                end = i + 1;
+            }
+            i += THREADS;
+        }
+        sh[ACTIVE + lid as usize] = end;
+    });
+    let s = inclusive_scan(g, sh, ACTIVE, max);
+    let mut translucent_end = 0;
+    g.each(|_| translucent_end = sh[s + T - 1]);
     g.each(|lid| {
         let mut f = ACC_R;
         while f <= VISITED {
@@ -280,7 +297,12 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                         Px::from_fn(|l| shaped_weight([dx.lane(l), dy.lane(l)], d2.lane(l), s, rim, &p.aperture, mirror, &mask))
                     };
                     let w = Px::splat(get(sh, CH_A, k)) * weight;
-                    let (f, a) = surfaces.take(hit, w, get(sh, CH_O, k), get(sh, CH_Z, k), used);
+                    let alpha = get(sh, CH_O, k);
+                    let (f, a) = if start + k < translucent_end {
+                        surfaces.take(hit, w, alpha, get(sh, CH_Z, k), used)
+                    } else {
+                        surfaces::take(w, alpha, Px::splat(1.0) - used)
+                    };
                     acc = [
                         Px::select(hit, acc[0] + f * Px::splat(get(sh, CH_R, k)), acc[0]),
                         Px::select(hit, acc[1] + f * Px::splat(get(sh, CH_G, k)), acc[1]),

@@ -212,6 +212,13 @@ impl Fragment {
         }
     }
 
+    /// Whether fragment `index` of a buffer of packed fragments is opaque ([`Fragment::is_opaque`]),
+    /// from its alpha's bits alone.
+    #[inline]
+    pub fn is_opaque_at(m: &impl Load, index: u32) -> bool {
+        (m.load(WORDS * index + 1) >> MANTISSA_BITS) & ALPHA_ONE == ALPHA_ONE
+    }
+
     /// Fragment `index` of a buffer of packed fragments.
     #[inline]
     pub fn load(m: &impl Load, index: u32) -> Self {

@@ -357,10 +357,12 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
         g.each(|lid| {
             let mut at = out + running + if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
             let mask = sh[masks + lid as usize];
+            let first = start + lid * CANDIDATES_PER_THREAD;
+            let mut nb_at = if mask != 0 { neighbour(sh, nb, first) } else { 0 };
             let mut i = 0;
             while i < CANDIDATES_PER_THREAD {
                 if mask & (1 << i) != 0 {
-                    let j = candidate(sh, nb, nb_base, start + lid * CANDIDATES_PER_THREAD + i);
+                    let j = candidate(sh, nb, nb_base, &mut nb_at, first + i);
                     keys.store(at, dense.load(4 * j + 2));
                     values.store(at, j);
                     at += 1;
@@ -391,10 +393,11 @@ fn reaching<const N: usize>(
     ty: u32,
 ) -> (u32, u32) {
     let (mut mask, mut kept) = (0u32, 0u32);
+    let mut at = neighbour(sh, nb, first);
     let mut i = 0;
     while i < CANDIDATES_PER_THREAD {
         let j = first + i;
-        if j < total && fragment_reaches(p, &Fragment::load_in(p, dense, candidate(sh, nb, nb_base, j)), tx, ty) {
+        if j < total && fragment_reaches(p, &Fragment::load_in(p, dense, candidate(sh, nb, nb_base, &mut at, j)), tx, ty) {
             mask |= 1 << i;
             kept += 1;
         }
@@ -403,17 +406,29 @@ fn reaching<const N: usize>(
     (mask, kept)
 }
 
-/// The dense index of candidate `j`: the neighbour whose range of the inclusive scan at `sh[nb..]`
-/// holds it (binary search), plus the offset into that neighbour's fragments.
+/// The neighbour whose range of the inclusive scan at `sh[nb..]` holds candidate `j` (binary
+/// search).
 #[inline]
-fn candidate<const N: usize>(sh: &[u32; N], nb: usize, nb_base: usize, j: u32) -> u32 {
+fn neighbour<const N: usize>(sh: &[u32; N], nb: usize, j: u32) -> usize {
     let (mut lo, mut hi) = (0usize, THREADS as usize - 1);
     while lo < hi {
         let mid = (lo + hi) / 2;
         if sh[nb + mid] > j { hi = mid } else { lo = mid + 1 }
     }
-    let before = if lo == 0 { 0 } else { sh[nb + lo - 1] };
-    sh[nb_base + lo] + (j - before)
+    lo
+}
+
+/// The dense index of candidate `j`: the offset into the fragments of its neighbour, found by
+/// stepping on from neighbour `*at` (which holds an earlier candidate, or precedes it) and left in
+/// `*at`. An invocation's candidates are consecutive, so one binary search ([`neighbour`]) serves
+/// them all.
+#[inline]
+fn candidate<const N: usize>(sh: &[u32; N], nb: usize, nb_base: usize, at: &mut usize, j: u32) -> u32 {
+    while *at < THREADS as usize - 1 && sh[nb + *at] <= j {
+        *at += 1;
+    }
+    let before = if *at == 0 { 0 } else { sh[nb + *at - 1] };
+    sh[nb_base + *at] + (j - before)
 }
 
 kernel!(

@@ -157,6 +157,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
     st: M,
     mask: R,
 ) {
+    // (`pass_with_avx2!` takes parameters as plain names.)
     let (mut out, mut st) = (out, st);
     let p = &super::planned(p, &st);
     let [wx, wy, _] = g.workgroup_id();

@@ -364,8 +364,7 @@ pub const EXACT_SUM_LIMIT: f32 = 4.0;
 /// distance `d2` receives, before normalisation: 1 inside `s − w`, falling linearly to 0 at `s`. This
 /// is the CoC disc (radius `s − w/2`) seen through a box of the fragment's width, to first order: the
 /// edge of a disc that covers half a pixel gives that pixel half a share, as the reference's integral
-/// over the pixel area does.
-/// Per pixel (`V = f32`) or for several at once ([`crate::lane`]).
+/// over the pixel area does. Per pixel (`V = f32`) or for several at once ([`crate::lane`]).
 #[inline(always)]
 pub fn weight<V: Lanes>(d2: V, s: V, w: V) -> V {
     let inner = s - w;
@@ -378,7 +377,7 @@ pub fn weight<V: Lanes>(d2: V, s: V, w: V) -> V {
 /// The soft rim of [`weight`] at distance (or gauge) `d`: 1 up to `s − w`, falling linearly to 0 at
 /// `s`. The ring gather's highlight discs use it too (`ring_gather::disc_weight`).
 #[inline(always)]
-pub fn linear_rim<V: Lanes>(d: V, s: V, w: V) -> V {
+pub fn linear_rim(d: f32, s: f32, w: f32) -> f32 {
     unit_ramp((s - d) / w)
 }
 

@@ -36,7 +36,7 @@ fn splat_memory_table_sums_to_device_bytes() {
             for (label, bytes) in &table {
                 eprintln!("  {label:<48} {bytes:>12} ({:.1} MB)", *bytes as f64 / 1e6);
             }
-            // The unsorted keys live in the cells' counts and offsets: no buffer of their own.
+            // The unsorted keys live in the cells' counts and radii: no buffer of their own.
             assert!(table.iter().all(|(l, _)| l != "splat/keys"), "{w}x{h} merge {}: keys have their own buffer", merge.name());
             // One fragment-sized buffer: no merging level is stored.
             let fragment_sized = table.iter().filter(|(_, bytes)| *bytes >= 16 * (w * h) as u64 * LAYERS as u64).count();
@@ -50,13 +50,15 @@ fn splat_memory_table_sums_to_device_bytes() {
     assert_eq!(b.counters().device_bytes, 0, "every context freed");
 }
 
-/// Footprints add a field a slot to the dense array: 4 bits with 2x2 sub-samples (the command
-/// line's default), 16 with 3x3 or 4x4; at 1080p with 2x2 the context stays within the bound.
+/// Footprints add a field a slot to the dense array (its slots: the input's, padded to whole
+/// tiles): 4 bits with 2x2 sub-samples (the command line's default), 16 with 3x3 or 4x4; at 1080p
+/// with 2x2 the context stays within the bound.
 #[test]
 fn footprints_add_a_field_a_slot() {
     let mut b = CpuBackend::new();
-    let (w, h) = (1920, 1080);
-    let slots = (w * h * LAYERS) as u64;
+    let (w, h): (u32, u32) = (1920, 1080);
+    let tile = SplatOptions::default().tile;
+    let slots = (w.next_multiple_of(tile) * h.next_multiple_of(tile) * LAYERS) as u64;
     let bytes = |b: &mut CpuBackend, side: u32| {
         let desc = SplatContextDesc::new(w, h, LAYERS, SplatOptions { merge: Merge::X4, footprint_side: side, ..SplatOptions::default() });
         let ctx = SplatContext::new(b, &desc).unwrap();

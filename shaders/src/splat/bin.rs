@@ -3,33 +3,32 @@
 //! - `splat_tile_count` (one workgroup per tile): fragments per tile, each cell's offset inside its
 //!   tile (a scan of the partially filled cells: the index that lets every thread take fragments of
 //!   any pixel evenly), and the largest fragment radius in the tile.
-//! - `splat_place` and `splat_place_merged` (one invocation per cell): the fragments into one
-//!   dense array, tile by tile, made again from the input (unmerged) or by walking the cell's
-//!   merged list again: the fragments are stored once, in place.
 //! - `splat_alloc` (one invocation per tile): whether any tile within `rings` has fragments whose
 //!   largest radius can reach this tile (the lists hold blurred fragments only); a tile none reaches
 //!   is copied through.
 //! - `splat_bin` (one workgroup per tile): every invocation takes four candidates at a time from the
-//!   neighbours' dense fragments and keeps those whose disc reaches a pixel centre of the tile. A
-//!   first sweep counts them, one atomic takes exactly that many entries from the list pool (a
-//!   list that does not fit is counted as overflow and its tile copied through: a bounded,
-//!   reported degradation rather than a write out of bounds), and a second sweep writes them in
-//!   place through a workgroup scan, from the first sweep's results where workgroup memory kept
-//!   them (the first 8192 candidates) and testing again beyond. The destination tile gathers its
-//!   list (rather than sources scattering with atomics), so every list comes out in the same order
-//!   on every backend and the stable sort that follows is deterministic.
+//!   neighbours' fragments and keeps those whose disc reaches a pixel centre of the tile. A
+//!   neighbour's candidates are its fragments in the dense array, cell by cell in the tile, each
+//!   cell's in its region ([`SplatParams::cell_region`], written by packing or merging), found
+//!   through the cells' offsets in the tile. A first sweep counts them, one atomic takes exactly
+//!   that many entries from the list pool (a list that does not fit is counted as overflow and its
+//!   tile copied through: a bounded, reported degradation rather than a write out of bounds), and a
+//!   second sweep writes them in place through a workgroup scan, from the first sweep's results
+//!   where workgroup memory kept them (the first 8192 candidates) and testing again beyond. The
+//!   destination tile gathers its list (rather than sources scattering with atomics), so every list
+//!   comes out in the same order on every backend, in dense order, and the stable sort that follows
+//!   is deterministic.
 
 use super::fragment::Fragment;
 use super::planned;
 use super::{SplatParams, THREADS, stats};
-use super::{merge, pack};
 use crate::exec::{Group, Load, Mem};
 use crate::wg::{add, for_each_item, inclusive_scan, max};
 
 /// Cells one invocation of `splat_tile_count` handles: (32 px / 1 px)² = 4 · 256.
 pub const CELLS_PER_THREAD: u32 = 4;
 /// Candidates one invocation of `splat_bin` takes at a time.
-pub const CANDIDATES_PER_THREAD: u32 = 4;
+pub const CANDIDATES_PER_THREAD: u32 = 8;
 const NONE: u32 = u32::MAX;
 
 /// Index of cell `c` (row-major inside tile `(tx, ty)`), or `NONE` outside the cell grid.
@@ -77,8 +76,13 @@ fn gap(v_lo: f32, v_hi: f32, lo: f32, hi: f32) -> f32 {
 /// `(tx, ty)`.
 #[inline]
 pub fn tile_reaches(p: &SplatParams, sx: u32, sy: u32, tx: u32, ty: u32, r: f32) -> bool {
-    let (sx0, sx1) = span(sx, p.tile, p.width);
-    let (sy0, sy1) = span(sy, p.tile, p.height);
+    block_reaches(p, span(sx, p.tile, p.width), span(sy, p.tile, p.height), tx, ty, r)
+}
+
+/// Whether a fragment of radius `r` centred anywhere in the block of pixels `[x0, x1] × [y0, y1]`
+/// can cover a pixel centre of tile `(tx, ty)`.
+#[inline]
+fn block_reaches(p: &SplatParams, (sx0, sx1): (f32, f32), (sy0, sy1): (f32, f32), tx: u32, ty: u32, r: f32) -> bool {
     let (tx0, tx1) = span(tx, p.tile, p.width);
     let (ty0, ty1) = span(ty, p.tile, p.height);
     let gx = gap(sx0, sx1, tx0 + 0.5, tx1 - 0.5);
@@ -100,15 +104,16 @@ pub fn fragment_reaches(p: &SplatParams, f: &Fragment, tx: u32, ty: u32) -> bool
 
 /// Per tile: its fragment count, each cell's offset inside it and its widest radius. `cells` holds
 /// each cell's fragment count at `cells[c]` and its widest radius (f32 bits, 0 for none) at
-/// `cells[n + c]` (`n` cells in the frame, written by `pack` or `merge`); the offset replaces the
-/// radius there (the same invocation reads one and writes the other).
-pub fn tile_count_pass<G: Group, M: Mem>(
+/// `cells[n + c]` (`n` cells in the frame, written by `pack` or `merge`); `offsets` gets the offset
+/// at `offsets[c]` and the radius again at `offsets[n + c]`, for binning (which writes its keys
+/// over `cells`).
+pub fn tile_count_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
     p: &SplatParams,
     sh: &mut [u32; 4 * THREADS as usize],
-    mut cells: M,
+    cells: R,
     mut tile_count: M,
-    mut tile_base: M,
+    mut offsets: M,
     mut tile_radius: M,
     mut st: M,
 ) {
@@ -132,74 +137,18 @@ pub fn tile_count_pass<G: Group, M: Mem>(
     g.each(|lid| {
         let mut running = if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
         each_cell(p, tx, ty, lid, |cell| {
-            let n = cells.load(cell);
-            cells.store(n_cells + cell, running);
-            running += n;
+            offsets.store(cell, running);
+            offsets.store(n_cells + cell, cells.load(n_cells + cell));
+            running += cells.load(cell);
         });
         if lid == THREADS - 1 {
             let total = sh[sums + lid as usize];
             tile_count.store(t, total);
-            tile_base.store(t, total);
             tile_radius.store(t, sh[widest + lid as usize]);
             if total > 0 {
                 st.atomic_add(stats::TILED, total);
             }
         }
-    });
-}
-
-/// The dense index of cell `c`'s first fragment: its tile's offset plus the cell's in the tile.
-#[inline]
-fn cell_start(p: &SplatParams, cells: &impl Load, tile_base: &impl Load, c: u32) -> u32 {
-    let (cx, cy) = (c % p.cells_x, c / p.cells_x);
-    let per_tile = p.tile / p.cell;
-    tile_base.load((cy / per_tile) * p.tiles_x + cx / per_tile) + cells.load(p.cells_x * p.cells_y + c)
-}
-
-/// Unmerged, one invocation per pixel: its list fragments ([`pack::PixelFragments`], as packing
-/// counted them) into the dense array at their place (tile by tile, pixels row-major in the tile,
-/// front to back), so the slot-per-pixel cells are never stored.
-pub fn place_pass<G: Group, R: Load, M: Mem>(
-    g: &mut G,
-    p: &SplatParams,
-    layers: R,
-    counts: R,
-    cells: R,
-    tile_base: R,
-    mut dense: M,
-    st: R,
-) {
-    let p = &planned(p, &st);
-    for_each_item(g, p.width * p.height, |i| {
-        let mut at = cell_start(p, &cells, &tile_base, i);
-        let mut w = pack::PixelFragments::new(&counts, p, i);
-        while w.advance(&layers, p) {
-            w.head.store_in(p, &mut dense, at);
-            at += 1;
-        }
-    });
-}
-
-/// Merged, one invocation per cell: its merged list ([`merge::cell_fragments`], walked again as
-/// `splat_merge` counted it) into the dense array at its place. A kernel of its own, so that the
-/// unmerged one stays small.
-pub fn place_merged_pass<G: Group, R: Load, M: Mem>(
-    g: &mut G,
-    p: &SplatParams,
-    layers: R,
-    counts: R,
-    cells: R,
-    tile_base: R,
-    mut dense: M,
-    st: R,
-) {
-    let p = &planned(p, &st);
-    for_each_item(g, p.cells_x * p.cells_y, |c| {
-        let mut at = cell_start(p, &cells, &tile_base, c);
-        merge::cell_fragments(&layers, &counts, p, c, |f| {
-            f.store_in(p, &mut dense, at);
-            at += 1;
-        });
     });
 }
 
@@ -245,7 +194,7 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
     sh: &mut [u32; BIN_SHARED],
     dense: R,
     tile_count: R,
-    tile_base: R,
+    offsets: R,
     tile_radius: R,
     mut copy: M,
     mut keys: M,
@@ -259,9 +208,9 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
     let t_usize = THREADS as usize;
     // Workgroup memory: [0, 2T) scan of candidates per invocation; [2T, 3T) their masks (word 2T
     // also passes the list's offset from invocation 0 to all); [3T, 5T) scan of the neighbours'
-    // candidate counts; [5T, 6T) the neighbours' first dense index; [6T, 7T) the masks of the first
+    // candidate counts; [5T, 6T) the neighbours' tile indices; [6T, 7T) the masks of the first
     // `CACHED_CHUNKS` chunks, as sweep 1 found them.
-    let (masks, nb_scan, nb_base, cached) = (2 * t_usize, 3 * t_usize, 5 * t_usize, 6 * t_usize);
+    let (masks, nb_scan, nb_tile, cached) = (2 * t_usize, 3 * t_usize, 5 * t_usize, 6 * t_usize);
     let side = 2 * p.rings + 1;
     // One candidate space over the fragments of every neighbour tile (within the rings) that can
     // reach this tile: each invocation takes four at a time, whatever tile they come from.
@@ -275,12 +224,12 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
                 let r = f32::from_bits(tile_radius.load(s));
                 if s == t || tile_reaches(p, sx as u32, sy as u32, tx, ty, r) {
                     n = tile_count.load(s);
-                    from = tile_base.load(s);
+                    from = s;
                 }
             }
         }
         sh[nb_scan + lid as usize] = n;
-        sh[nb_base + lid as usize] = from;
+        sh[nb_tile + lid as usize] = from;
         sh[cached + lid as usize] = 0;
     });
     let nb = inclusive_scan(g, sh, nb_scan, add);
@@ -292,7 +241,7 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
     let mut chunk = 0;
     while start < total {
         g.each(|lid| {
-            let (mask, kept) = reaching(p, sh, nb, nb_base, &dense, total, start + lid * CANDIDATES_PER_THREAD, tx, ty);
+            let (mask, kept) = reaching(p, sh, nb, nb_tile, &dense, &offsets, total, start + lid * CANDIDATES_PER_THREAD, tx, ty);
             if chunk < CACHED_CHUNKS {
                 sh[cached + lid as usize] |= mask << (chunk * CANDIDATES_PER_THREAD);
             }
@@ -347,7 +296,7 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
                 let mask = (sh[cached + lid as usize] >> (chunk * CANDIDATES_PER_THREAD)) & ((1 << CANDIDATES_PER_THREAD) - 1);
                 (mask, mask.count_ones())
             } else {
-                reaching(p, sh, nb, nb_base, &dense, total, start + lid * CANDIDATES_PER_THREAD, tx, ty)
+                reaching(p, sh, nb, nb_tile, &dense, &offsets, total, start + lid * CANDIDATES_PER_THREAD, tx, ty)
             };
             sh[lid as usize] = kept;
             sh[masks + lid as usize] = mask;
@@ -358,11 +307,11 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
             let mut at = out + running + if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
             let mask = sh[masks + lid as usize];
             let first = start + lid * CANDIDATES_PER_THREAD;
-            let mut nb_at = if mask != 0 { neighbour(sh, nb, first) } else { 0 };
+            let mut cursor = Cursor::at(if mask != 0 { neighbour(sh, nb, first) } else { 0 }, tx, ty);
             let mut i = 0;
             while i < CANDIDATES_PER_THREAD {
                 if mask & (1 << i) != 0 {
-                    let j = candidate(sh, nb, nb_base, &mut nb_at, first + i);
+                    let j = cursor.candidate(p, sh, nb, nb_tile, &offsets, first + i);
                     keys.store(at, dense.load(4 * j + 2));
                     values.store(at, j);
                     at += 1;
@@ -380,26 +329,32 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
 
 /// Which of the `CANDIDATES_PER_THREAD` candidates from `first` (of `total`) reach tile `(tx, ty)`:
 /// a mask (bit `i` for candidate `first + i`) and their count.
+#[allow(clippy::too_many_arguments)]
 #[inline]
 fn reaching<const N: usize>(
     p: &SplatParams,
     sh: &[u32; N],
     nb: usize,
-    nb_base: usize,
+    nb_tile: usize,
     dense: &impl Load,
+    offsets: &impl Load,
     total: u32,
     first: u32,
     tx: u32,
     ty: u32,
 ) -> (u32, u32) {
     let (mut mask, mut kept) = (0u32, 0u32);
-    let mut at = neighbour(sh, nb, first);
+    let mut cursor = Cursor::at(neighbour(sh, nb, first), tx, ty);
     let mut i = 0;
     while i < CANDIDATES_PER_THREAD {
         let j = first + i;
-        if j < total && fragment_reaches(p, &Fragment::load_in(p, dense, candidate(sh, nb, nb_base, &mut at, j)), tx, ty) {
-            mask |= 1 << i;
-            kept += 1;
+        if j < total {
+            let at = cursor.candidate(p, sh, nb, nb_tile, offsets, j);
+            // A fragment of a cell none of whose fragments reach the tile is not read.
+            if cursor.reaches && fragment_reaches(p, &Fragment::load_in(p, dense, at), tx, ty) {
+                mask |= 1 << i;
+                kept += 1;
+            }
         }
         i += 1;
     }
@@ -418,32 +373,121 @@ fn neighbour<const N: usize>(sh: &[u32; N], nb: usize, j: u32) -> usize {
     lo
 }
 
-/// The dense index of candidate `j`: the offset into the fragments of its neighbour, found by
-/// stepping on from neighbour `*at` (which holds an earlier candidate, or precedes it) and left in
-/// `*at`. An invocation's candidates are consecutive, so one binary search ([`neighbour`]) serves
-/// them all.
-#[inline]
-fn candidate<const N: usize>(sh: &[u32; N], nb: usize, nb_base: usize, at: &mut usize, j: u32) -> u32 {
-    while *at < THREADS as usize - 1 && sh[nb + *at] <= j {
-        *at += 1;
+/// Where an invocation's consecutive candidates lie, as the last one was found: the neighbour (its
+/// index in the scan), and the cell in that neighbour's tile. The next candidate steps on from
+/// there, so one binary search over the neighbours ([`neighbour`]) and one over a tile's cells
+/// serve all of them. Cells are tracked by their column and row in the tile, so that no step
+/// divides.
+#[derive(Clone, Copy)]
+struct Cursor {
+    nb: usize,
+    /// The neighbour the fields below belong to (`usize::MAX`: none yet).
+    cells_of: usize,
+    /// The neighbour tile's cells inside the grid: `w × h` of them from cell `first`, at `(x0, y0)`
+    /// in the cell grid; its cell regions start at region `base` (the tile's index times its cells).
+    first: u32,
+    x0: u32,
+    y0: u32,
+    w: u32,
+    h: u32,
+    base: u32,
+    /// The current cell, its offset in the tile, and the next cell's (`u32::MAX` after the last).
+    x: u32,
+    y: u32,
+    offset: u32,
+    next: u32,
+    /// The tile the candidates are for, and whether the current cell's widest fragment, anywhere
+    /// in the cell, reaches it (if not, none of the cell's fragments does).
+    tx: u32,
+    ty: u32,
+    reaches: bool,
+}
+
+impl Cursor {
+    #[inline]
+    fn at(nb: usize, tx: u32, ty: u32) -> Self {
+        Cursor {
+            nb,
+            cells_of: usize::MAX,
+            first: 0,
+            x0: 0,
+            y0: 0,
+            w: 0,
+            h: 0,
+            base: 0,
+            x: 0,
+            y: 0,
+            offset: 0,
+            next: 0,
+            tx,
+            ty,
+            reaches: false,
+        }
     }
-    let before = if *at == 0 { 0 } else { sh[nb + *at - 1] };
-    sh[nb_base + *at] + (j - before)
+
+    /// The offset in its tile of the tile's cell `(x, y)`, `u32::MAX` past the last.
+    #[inline]
+    fn offset_of(&self, p: &SplatParams, offsets: &impl Load, x: u32, y: u32) -> u32 {
+        if y < self.h { offsets.load(self.first + y * p.cells_x + x) } else { u32::MAX }
+    }
+
+    /// Moves to cell `(x, y)` of the tile.
+    #[inline(always)]
+    fn go(&mut self, p: &SplatParams, offsets: &impl Load, x: u32, y: u32) {
+        (self.x, self.y) = (x, y);
+        self.offset = self.offset_of(p, offsets, x, y);
+        self.next = if x + 1 < self.w { self.offset_of(p, offsets, x + 1, y) } else { self.offset_of(p, offsets, 0, y + 1) };
+        let r = f32::from_bits(offsets.load(p.cells_x * p.cells_y + self.first + y * p.cells_x + x));
+        let (gx, gy) = ((self.x0 + x) * p.cell, (self.y0 + y) * p.cell);
+        let block = |g: u32, size: u32| (g as f32, if g + p.cell < size { (g + p.cell) as f32 } else { size as f32 });
+        self.reaches = block_reaches(p, block(gx, p.width), block(gy, p.height), self.tx, self.ty, r);
+    }
+
+    /// The dense index of candidate `j` (at or after the last one asked for): the `o`-th fragment
+    /// of its neighbour tile lies in the last cell whose offset in the tile is at most `o`.
+    #[inline(always)]
+    fn candidate<const N: usize>(&mut self, p: &SplatParams, sh: &[u32; N], nb: usize, nb_tile: usize, offsets: &impl Load, j: u32) -> u32 {
+        while self.nb < THREADS as usize - 1 && sh[nb + self.nb] <= j {
+            self.nb += 1;
+        }
+        let o = j - if self.nb == 0 { 0 } else { sh[nb + self.nb - 1] };
+        let ct = p.tile / p.cell;
+        if self.cells_of != self.nb {
+            let s = sh[nb_tile + self.nb];
+            let (x0, y0) = ((s % p.tiles_x) * ct, (s / p.tiles_x) * ct);
+            self.cells_of = self.nb;
+            self.first = y0 * p.cells_x + x0;
+            (self.x0, self.y0) = (x0, y0);
+            self.w = if p.cells_x - x0 < ct { p.cells_x - x0 } else { ct };
+            self.h = if p.cells_y - y0 < ct { p.cells_y - y0 } else { ct };
+            self.base = s * ct * ct;
+            // The cell is in the last row whose first cell's offset is at most `o` (the first
+            // row's is 0), at the last column of that row whose offset is.
+            let (mut lo, mut hi) = (0, self.h - 1);
+            while lo < hi {
+                let mid = (lo + hi).div_ceil(2);
+                if self.offset_of(p, offsets, 0, mid) <= o { lo = mid } else { hi = mid - 1 }
+            }
+            let y = lo;
+            let (mut lo, mut hi) = (0, self.w - 1);
+            while lo < hi {
+                let mid = (lo + hi).div_ceil(2);
+                if self.offset_of(p, offsets, mid, y) <= o { lo = mid } else { hi = mid - 1 }
+            }
+            self.go(p, offsets, lo, y);
+        }
+        while self.next <= o {
+            let (x, y) = if self.x + 1 < self.w { (self.x + 1, self.y) } else { (0, self.y + 1) };
+            self.go(p, offsets, x, y);
+        }
+        (self.base + self.y * ct + self.x) * p.cell_cap() + (o - self.offset)
+    }
 }
 
 kernel!(
     /// Per-tile fragment counts, cell offsets inside tiles and largest radius.
     TILE_COUNT = splat_tile_count [256] (SplatParams) shared [u32; 4 * 256]
-        { cells, tile_count, tile_base, tile_radius, st } => tile_count_pass
-);
-kernel!(
-    /// Unmerged: the fragments into one dense array, tile by tile, made from the input.
-    PLACE = splat_place [256] (SplatParams) { read layers, read counts, read cells, read tile_base, dense, read st } => place_pass
-);
-kernel!(
-    /// Merged: each cell's merged fragments into one dense array, tile by tile.
-    PLACE_MERGED = splat_place_merged [256] (SplatParams)
-        { read layers, read counts, read cells, read tile_base, dense, read st } => place_merged_pass
+        { read cells, tile_count, offsets, tile_radius, st } => tile_count_pass
 );
 kernel!(
     /// Which tiles no list fragment reaches (copied through).
@@ -452,5 +496,5 @@ kernel!(
 kernel!(
     /// The tile lists: depth keys and dense fragment indices.
     BIN = splat_bin [256] (SplatParams) shared [u32; 7 * 256]
-        { read dense, read tile_count, read tile_base, read tile_radius, copy, keys, values, segments, st } => bin_pass
+        { read dense, read tile_count, read offsets, read tile_radius, copy, keys, values, segments, st } => bin_pass
 );

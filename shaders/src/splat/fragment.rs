@@ -321,7 +321,7 @@ pub fn footprint_words(slots: u32, side: u32) -> u32 {
 
 /// Where a frame with footprints on a `side` grid keeps dense fragment `index`'s: word, shift and
 /// mask of its [`footprint_bits`]-wide field, after the most fragments the frame can hold (every
-/// slot of the input). The frame clears them before its place pass.
+/// cell region, [`SplatParams::dense_slots`]). The frame clears them before it packs.
 #[inline]
 pub fn footprint_field(p: &SplatParams, side: u32, index: u32) -> (u32, u32, u32) {
     let bits = footprint_bits(side);
@@ -333,7 +333,7 @@ pub fn footprint_field(p: &SplatParams, side: u32, index: u32) -> (u32, u32, u32
 /// The first word of a frame's footprint fields in the dense array.
 #[inline]
 pub fn footprint_base(p: &SplatParams) -> u32 {
-    WORDS * p.width * p.height * p.layers
+    WORDS * p.dense_slots()
 }
 
 /// Depth of packed fragment `index` without decoding the rest.
@@ -411,7 +411,7 @@ pub fn shaped_weight<L: Load>(d: [f32; 2], d2: f32, s: f32, w: f32, ap: &Apertur
 /// analytic shapes `A/π · (π(s − w)² + π(s − w)w + πw²/3)` with `A` the unit shape's area (π for
 /// the circle), for a mask `A·r²` with `r = s − w/2`; the lattice sum matches either to well under
 /// a percent there.
-#[inline]
+#[inline(always)]
 pub fn weight_sum<L: Load>(c: [f32; 2], s: f32, w: f32, ap: &Aperture, mirror: f32, mask: &L) -> f32 {
     if s >= EXACT_SUM_LIMIT + w {
         if ap.mask > 0 {
@@ -421,22 +421,45 @@ pub fn weight_sum<L: Load>(c: [f32; 2], s: f32, w: f32, ap: &Aperture, mirror: f
         let inner = s - w;
         return ap.area * (inner * inner + inner * w + w * w / 3.0);
     }
+    // A row's weights a lane per pixel (eight on the CPU, one on the GPU), added in the row's
+    // order: the same sum, bit for bit. A lane past the row's end weighs +0, which adds nothing.
     let mut sum = 0.0;
     let mut y = ceil(c[1] - s - 0.5);
     let y_end = floor(c[1] + s - 0.5);
+    let x_start = ceil(c[0] - s - 0.5);
+    let x_end = floor(c[0] + s - 0.5);
+    let step = Row::from_fn(|l| l as f32);
     while y <= y_end {
         let dy = y + 0.5 - c[1];
-        let mut x = ceil(c[0] - s - 0.5);
-        let x_end = floor(c[0] + s - 0.5);
+        let mut x = x_start;
         while x <= x_end {
-            let dx = x + 0.5 - c[0];
-            sum += shaped_weight([dx, dy], dx * dx + dy * dy, s, w, ap, mirror, mask);
-            x += 1.0;
+            let xs = Row::splat(x) + step;
+            let inside = xs.le(Row::splat(x_end));
+            let dx = xs + Row::splat(0.5) - Row::splat(c[0]);
+            let d2 = dx * dx + Row::splat(dy * dy);
+            let wt = if ap.is_circle() {
+                weight(d2, Row::splat(s), Row::splat(w))
+            } else {
+                Row::from_fn(|l| shaped_weight([dx.lane(l), dy], d2.lane(l), s, w, ap, mirror, mask))
+            };
+            let wt = Row::select(inside, wt, Row::splat(0.0));
+            let mut l = 0;
+            while l < Row::N {
+                sum += wt.lane(l);
+                l += 1;
+            }
+            x += Row::N as f32;
         }
         y += 1.0;
     }
     sum
 }
+
+/// The pixels of a row [`weight_sum`] weighs at once.
+#[cfg(target_arch = "spirv")]
+type Row = f32;
+#[cfg(not(target_arch = "spirv"))]
+type Row = crate::lane::Wide;
 
 #[cfg(test)]
 mod tests {

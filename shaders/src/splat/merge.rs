@@ -15,9 +15,9 @@
 //! umbra is infinite and everything behind goes.
 //!
 //! One invocation per output cell (`params.cell` 2 or 4 pixels) walks both levels at once from the
-//! input ([`cell_fragments`]): no level's fragments are stored, only each cell's count and widest
-//! radius ([`merge_count_pass`]); `bin::place_pass` walks the lists again to write them into the
-//! dense array.
+//! input ([`cell_fragments`]): no level's fragments are stored but the last, which
+//! [`merge_pass`] writes into the cell's region of the dense array as the walk makes it, with
+//! the cell's count and widest radius.
 
 use super::fragment::Fragment;
 use super::pack::PixelFragments;
@@ -88,13 +88,16 @@ pub fn mergeable(f: &[Fragment; 4], level: u32, p: &SplatParams) -> bool {
 pub fn merged(f: &[Fragment; 4], lens: &ThinLens, ox: u32, oy: u32, edge: u32) -> Fragment {
     let mut color = [0.0f32; 3];
     let mut widest = 0;
+    let mut widest_r = lens.coc_radius_px(f[0].depth);
     let mut m = 0;
     while m < 4 {
         color[0] += 0.25 * f[m].color[0];
         color[1] += 0.25 * f[m].color[1];
         color[2] += 0.25 * f[m].color[2];
-        if lens.coc_radius_px(f[m].depth) > lens.coc_radius_px(f[widest].depth) {
+        let r = lens.coc_radius_px(f[m].depth);
+        if r > widest_r {
             widest = m;
+            widest_r = r;
         }
         m += 1;
     }
@@ -303,15 +306,18 @@ fn next_head(q: &mut Quad, head: &mut Fragment, has: u32, m: usize, layers: &imp
     has
 }
 
-/// Per output cell: how many fragments its merged list holds, their widest radius and how many
-/// were capped, at `cells[o]` and `cells[cells + o]` (f32 bits) as `splat_tile_count` reads them,
-/// and the merging statistics. `bin::place_pass` walks the same lists again to write them.
-pub fn merge_count_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, layers: R, counts: R, mut cells: M, mut st: M) {
+/// Per output cell: its merged list, into the cell's region of the dense array
+/// ([`SplatParams::cell_region`]); how many fragments it holds, their widest radius and how many
+/// were capped, at `cells[o]` and `cells[cells + o]` (f32 bits) as `splat_tile_count` reads them;
+/// and the merging statistics.
+pub fn merge_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, layers: R, counts: R, mut cells: M, mut dense: M, mut st: M) {
     let p = &super::planned(p, &st);
     let outputs = p.cells_x * p.cells_y;
     for_each_item(g, outputs, |o| {
         let (mut n, mut widest, mut capped) = (0u32, 0.0f32, 0u32);
+        let region = p.cell_region(o);
         let c = cell_fragments(&layers, &counts, p, o, |f| {
+            f.store_in(p, &mut dense, region + n);
             let r = f.radius(&p.lens, p.max_radius);
             widest = if r > widest { r } else { widest };
             capped += f.is_capped(&p.lens, p.max_radius) as u32;
@@ -333,6 +339,6 @@ pub fn merge_count_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, l
 }
 
 kernel!(
-    /// Merged cells of `params.cell` pixels (2 or 4): their fragment counts and widest radii.
-    MERGE = splat_merge [256] (SplatParams) { read layers, read counts, cells, st } => merge_count_pass
+    /// Merged cells of `params.cell` pixels (2 or 4): their fragments, counts and widest radii.
+    MERGE = splat_merge [256] (SplatParams) { read layers, read counts, cells, dense, st } => merge_pass
 );

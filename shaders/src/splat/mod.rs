@@ -8,16 +8,16 @@
 //!    dropped, colours clamped to the numerical contract ([`crate::radiance`]), and an empty
 //!    pixel gets the sky (black at infinite depth) so that coverage is complete. In-focus fragments
 //!    stay out of the lists: a pixel's first one is kept per pixel (its "sharp front"). Unmerged,
-//!    it counts each pixel's list fragments (they are written once, by `bin`'s place pass).
+//!    it writes each pixel's list fragments into the dense array, in the pixel's region
+//!    ([`SplatParams::cell_region`]), and counts them.
 //! 2. [`merge`] (optional, 2x2 or 4x4, both levels in one pass): neighbouring out-of-focus
 //!    fragments of similar depth and colour become one larger fragment; umbra-aware merging drops
-//!    what the merged fragment shadows from every lens point (§6.1-6.2). It counts each cell's
-//!    merged fragments; no level is stored.
+//!    what the merged fragment shadows from every lens point (§6.1-6.2). It writes each cell's
+//!    merged list into the cell's region of the dense array and counts it; no level is stored.
 //! 3. [`bin`]: per-tile fragment counts and an index over the partially filled cells (the
-//!    load-balancing structure of §5.1), the dense per-tile fragment array (each cell's fragments
-//!    made again from the input and written straight at their place), which tiles no blur
-//!    reaches, then the tile lists, each allocated exactly from a bounded pool (a tile whose list
-//!    does not fit is counted as overflow and copied through).
+//!    load-balancing structure of §5.1), which tiles no blur reaches, then the tile lists, each
+//!    allocated exactly from a bounded pool (a tile whose list does not fit is counted as
+//!    overflow and copied through).
 //! 4. The foundation's segmented sort orders every list by depth.
 //! 5. [`accumulate`]: per pixel, front to back over its tile's list with early termination, ending
 //!    at the pixel's sharp front; tiles that no blur reaches write their sharp fronts through.
@@ -94,10 +94,27 @@ pub struct SplatParams {
 const _: () = assert!(core::mem::size_of::<SplatParams>() <= 128);
 
 impl SplatParams {
-    /// Fragment slots per cell: every slot of the pixels a cell covers.
+    /// Fragment slots per cell: every slot of the pixels a cell covers, the most its list holds.
     #[inline]
     pub fn cell_cap(&self) -> u32 {
         self.layers * self.cell * self.cell
+    }
+    /// The first dense index of cell `c`'s fragments. Each cell keeps a region of
+    /// [`Self::cell_cap`] fragments, tile by tile and row-major inside its tile: the pass that
+    /// makes a cell's list writes it as it goes, with no count of the cells before it (binning
+    /// finds a tile's fragments through its cells' offsets in the tile, `bin::tile_count_pass`).
+    /// Walked in that order, the fragments come tile by tile, cell by cell, front to back.
+    #[inline]
+    pub fn cell_region(&self, c: u32) -> u32 {
+        let ct = self.tile / self.cell;
+        let (gx, gy) = (c % self.cells_x, c / self.cells_x);
+        let t = (gy / ct) * self.tiles_x + gx / ct;
+        ((t * ct + gy % ct) * ct + gx % ct) * self.cell_cap()
+    }
+    /// Fragments the dense array has room for: the regions of every cell of the tile grid.
+    #[inline]
+    pub fn dense_slots(&self) -> u32 {
+        self.tiles_x * self.tiles_y * self.tile * self.tile * self.layers
     }
     /// The side of the input footprints' sub-sample grid, 0 for none ([`FOOTPRINT_SIDE_SHIFT`]).
     #[inline]
@@ -174,15 +191,5 @@ pub mod stats {
 }
 
 #[cfg(not(target_arch = "spirv"))]
-pub const KERNELS: [&crate::KernelDesc; 10] = [
-    &plan::PLAN_REDUCE,
-    &plan::PLAN_FINISH,
-    &pack::PACK,
-    &merge::MERGE,
-    &bin::TILE_COUNT,
-    &bin::PLACE,
-    &bin::PLACE_MERGED,
-    &bin::ALLOC,
-    &bin::BIN,
-    &accumulate::ACCUMULATE,
-];
+pub const KERNELS: [&crate::KernelDesc; 8] =
+    [&plan::PLAN_REDUCE, &plan::PLAN_FINISH, &pack::PACK, &merge::MERGE, &bin::TILE_COUNT, &bin::ALLOC, &bin::BIN, &accumulate::ACCUMULATE];

@@ -1,7 +1,7 @@
 //! Stage 1: the per-pixel layer slots of the input become fragments. This pass keeps each pixel's
-//! sharp front and counts; the list fragments are made again from the input where they are needed
-//! ([`PixelFragments`]: this pass, merging and `bin::place_pass` walk a pixel's slots with the
-//! same rule), so no slot-per-pixel array of them is ever stored.
+//! sharp front and, unmerged, writes its list fragments; merging makes them again from the input
+//! ([`PixelFragments`]: this pass and merging walk a pixel's slots with the same rule), so no
+//! level of fragments is stored before its last.
 //!
 //! Input: `layers` (per pixel `params.layers` slots, [`crate::slot`]: premultiplied red, green,
 //! blue, depth, alpha as f32 bits, front to back) and `counts` (slots used per pixel). A slot with a
@@ -89,8 +89,8 @@ const SHARP_FLUSHED: u32 = 3;
 /// A cursor over one pixel's list fragments, front to back, made from its input slots: the one
 /// rule for which fragments a pixel puts into the lists (its sharp front's state machine, the chain
 /// fragment behind a translucent sharp front, the black behind slots that end translucent). Packing
-/// counts them, merging walks them ([`super::merge`]) and `bin::place_pass` writes them, so every
-/// pass sees the same sequence. After the walk it also holds the pixel's sharp front and input
+/// counts them (and unmerged writes them) and merging walks them ([`super::merge`]), so both passes
+/// see the same sequence. After the walk it also holds the pixel's sharp front and input
 /// statistics.
 #[derive(Clone, Copy)]
 pub struct PixelFragments {
@@ -240,18 +240,31 @@ impl PixelFragments {
 }
 
 /// Per pixel: the sharp front and the input statistics. Unmerged (`cell` 1), also the pixel's
-/// list fragments: their count at `cells[i]` and their widest radius (f32 bits) at
-/// `cells[pixels + i]`, where `splat_tile_count` reads them; the fragments themselves are written
-/// only once their place in the dense array is known (`bin::place_pass`).
+/// list fragments: into its region of the dense array ([`SplatParams::cell_region`]), their count
+/// at `cells[i]` and their widest radius (f32 bits) at `cells[pixels + i]`, where
+/// `splat_tile_count` reads them.
 #[allow(clippy::too_many_arguments)]
-pub fn pack_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, layers: R, counts: R, mut cells: M, mut sharp: M, mut st: M) {
+pub fn pack_pass<G: Group, R: Load, M: Mem>(
+    g: &mut G,
+    p: &SplatParams,
+    layers: R,
+    counts: R,
+    mut cells: M,
+    mut sharp: M,
+    mut dense: M,
+    mut st: M,
+) {
     let p = &super::planned(p, &st);
     let pixels = p.width * p.height;
     for_each_item(g, pixels, |i| {
         let mut w = PixelFragments::new(&counts, p, i);
         let (mut kept, mut capped) = (0u32, 0u32);
         let mut widest = 0.0f32;
+        let region = p.cell_region(i);
         while w.advance(&layers, p) {
+            if p.cell == 1 {
+                w.head.store_in(p, &mut dense, region + kept);
+            }
             let r = w.head.radius(&p.lens, p.max_radius);
             widest = if r > widest { r } else { widest };
             capped += w.head.is_capped(&p.lens, p.max_radius) as u32;
@@ -294,8 +307,9 @@ pub fn pack_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, layers: 
 }
 
 kernel!(
-    /// Input slots → sharp fronts, and unmerged each pixel's list fragment count and widest radius.
-    PACK = splat_pack [256] (SplatParams) { read layers, read counts, cells, sharp, st } => pack_pass
+    /// Input slots → sharp fronts, and unmerged each pixel's list fragments, their count and widest
+    /// radius.
+    PACK = splat_pack [256] (SplatParams) { read layers, read counts, cells, sharp, dense, st } => pack_pass
 );
 
 #[cfg(test)]

@@ -14,6 +14,8 @@ use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{read_rgb, slot_words};
 use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
+#[cfg(feature = "testing")]
+use dof_shaders::splat::{SplatParams, fragment::WORDS as FRAGMENT_WORDS};
 
 /// Every stage's buffers, read back by [`splat_with_stages`] (feature `testing`).
 #[cfg(feature = "testing")]
@@ -23,6 +25,8 @@ pub struct Intermediates {
     /// its tile (one entry: no merging level's fragments are stored).
     pub cells: Vec<(Vec<u32>, Vec<u32>)>,
     pub tile_count: Vec<u32>,
+    /// The dense fragments, cell region by cell region without their unused tails, then the
+    /// footprint fields.
     pub dense: Vec<u32>,
     /// Each tile's list length (where a list lies in the pool depends on the order tiles ran in).
     pub list_lengths: Vec<u32>,
@@ -156,13 +160,35 @@ fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatRe
         let words = backend.buffer_words(id)?;
         backend.read_buffer(id, 0, words)
     };
-    // Kept apart, the cells' buffer holds their counts, then their offsets in their tiles.
+    // Kept apart, the cells' buffer holds their counts, then their widest radii.
     let mut counts = whole(s.cells)?;
-    let offsets = counts.split_off(counts.len() / 2);
-    let cells = vec![(counts, offsets)];
+    counts.truncate(counts.len() / 2);
+    let offsets = backend.read_buffer(s.offsets, 0, counts.len() as u64)?;
     let tiles = report.tiles as u64;
     let tile_count = backend.read_buffer(s.tile_count, 0, tiles)?;
-    let dense = backend.read_buffer(s.dense, 0, backend.buffer_words(s.dense)?)?;
+    // The dense array with each cell region's unused tail left out (what lies there is whatever
+    // the buffer held), then the footprint fields, which the frame clears.
+    let all = backend.read_buffer(s.dense, 0, backend.buffer_words(s.dense)?)?;
+    let plan = report.plan.as_ref().ok_or_else(|| Error::InvalidArgument("a splatting report without its plan".into()))?;
+    let cell = 1 << plan.merge_steps;
+    let p = SplatParams {
+        width: plan.width,
+        height: plan.height,
+        layers: plan.layers,
+        cell,
+        cells_x: plan.width.div_ceil(cell),
+        cells_y: plan.height.div_ceil(cell),
+        tile: plan.tile,
+        tiles_x: plan.tiles_x,
+        tiles_y: plan.tiles_y,
+        ..Default::default()
+    };
+    let mut regions: Vec<(u32, u32)> = (0..counts.len() as u32).map(|c| (p.cell_region(c), counts[c as usize])).collect();
+    regions.sort_unstable();
+    let words = FRAGMENT_WORDS as usize;
+    let mut dense: Vec<u32> = regions.iter().flat_map(|&(at, n)| &all[words * at as usize..words * (at + n) as usize]).copied().collect();
+    dense.extend_from_slice(&all[words * p.dense_slots() as usize..]);
+    let cells = vec![(counts, offsets)];
     let segments = backend.read_buffer(s.segments, 0, 2 * tiles)?;
     let mut lists = |keys, values| -> Result<(Vec<u32>, Vec<u32>)> {
         let (all_k, all_v) =

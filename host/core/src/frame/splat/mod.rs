@@ -10,11 +10,10 @@ use crate::error::{Error, Result};
 mod options;
 mod report;
 
-use crate::ops::scan::ScanScratch;
 use crate::ops::sort::SegmentedSort;
 use dof_shaders::KernelDesc;
 use dof_shaders::splat::accumulate::splat_accumulate;
-use dof_shaders::splat::bin::{ALLOC, PLACE, PLACE_MERGED, splat_alloc, splat_bin, splat_place, splat_place_merged, splat_tile_count};
+use dof_shaders::splat::bin::{ALLOC, splat_alloc, splat_bin, splat_tile_count};
 use dof_shaders::splat::fragment::{MAX_EDGE, footprint_base, footprint_words};
 use dof_shaders::splat::merge::{MERGE, splat_merge};
 use dof_shaders::splat::pack::{PACK, splat_pack};
@@ -79,11 +78,13 @@ struct Buffers {
     stats: BufferId,
     sharp: BufferId,
     /// Per cell of the frame (a pixel, or a merged 2x2 or 4x4 block): its fragment count, then its
-    /// widest radius, which its offset in its tile replaces; then the unsorted list keys (unless the
-    /// context keeps every stage apart: `SplatContext::distinct_stages`).
+    /// widest radius; then the unsorted list keys (unless the context keeps every stage apart:
+    /// `SplatContext::distinct_stages`).
     cells: BufferId,
+    /// Per cell, its offset in its tile; binning reads them, and the sorted list values come after
+    /// (in `values_sorted`, unless every stage is kept apart).
+    offsets: BufferId,
     tile_count: BufferId,
-    tile_base: BufferId,
     tile_radius: BufferId,
     copy: BufferId,
     segments: BufferId,
@@ -107,7 +108,6 @@ pub struct SplatContext {
     owned: Owned,
     bytes: u64,
     b: Buffers,
-    scan: ScanScratch,
     sort: SegmentedSort,
     /// Per frame in flight, the statistics and segments its report reads (the recording writes
     /// them through `b.stats` and `b.segments`), and its frame.
@@ -173,10 +173,16 @@ impl SplatContext {
         let tile = desc.options.tile;
         let pixels = w as u64 * h as u64;
         let tiles = w.div_ceil(tile) as u64 * h.div_ceil(tile) as u64;
-        let slots = pixels * layers as u64;
+        // Every cell keeps a region of the dense array as large as its slots, over the whole tile
+        // grid (`SplatParams::cell_region`): the input's slots, padded to whole tiles.
+        let slots = tiles * (tile * tile) as u64 * layers as u64;
         let max_words = backend.limits().max_buffer_bytes / 4;
         if 4 * slots > max_words {
-            return Err(Error::TooLarge { what: "fragment slots of the input (words)".into(), size: 4 * slots, limit: max_words });
+            return Err(Error::TooLarge {
+                what: "fragment slots of the input, padded to whole tiles (words)".into(),
+                size: 4 * slots,
+                limit: max_words,
+            });
         }
         let list_entries = desc.list_entries.unwrap_or((DEFAULT_LIST_ENTRIES_PER_PIXEL * pixels).max(MIN_LIST_ENTRIES));
         if list_entries == 0 || list_entries > MAX_LIST_ENTRIES.min(max_words) {
@@ -201,12 +207,12 @@ impl SplatContext {
             // nothing merged); no level of merging is stored (`dof_shaders::splat::merge`).
             let (_, _, fx, fy) = cells(w, h, layers, merge_steps);
             let cell_words = 2 * fx as u64 * fy as u64;
-            // Binning runs after the place pass, and nothing reads the cells' counts and offsets
-            // again: the unsorted list keys go there (the buffer grows to the pool if need be).
+            // Nothing reads the cells' counts and radii after the tile counts: the unsorted list
+            // keys that binning writes go there (the buffer grows to the pool if need be).
             let keys_in_cells = !distinct_stages;
             let (cells_buf, cells_label) = match keys_in_cells {
-                true => (cell_words.max(list_entries), "splat/cell-counts, cell-offsets, keys"),
-                false => (cell_words, "splat/cell-counts, cell-offsets"),
+                true => (cell_words.max(list_entries), "splat/cell-counts, keys"),
+                false => (cell_words, "splat/cell-counts"),
             };
             let cells_buf = owned.make(backend, cells_buf, cells_label)?;
             let footprint_words = match desc.options.footprint_side {
@@ -219,12 +225,22 @@ impl SplatContext {
             let mask_words = desc.options.aperture.mask_words();
             let stats = per_frame(&mut owned, backend, desc.frames_in_flight, stats::WORDS as u64, "splat/stats")?;
             let segments = per_frame(&mut owned, backend, desc.frames_in_flight, 2 * tiles, "splat/segments")?;
+            // The cells' offsets are read by binning and by nothing after it: the sorted list values
+            // go there (the buffer grows to the cells if need be).
+            let values_sorted = match distinct_stages {
+                false => owned.make(backend, list_entries.max(cell_words), "splat/cell-offsets, values-sorted")?,
+                true => owned.make(backend, list_entries, "splat/values-sorted")?,
+            };
+            let offsets = match distinct_stages {
+                false => values_sorted,
+                true => owned.make(backend, cell_words, "splat/cell-offsets")?,
+            };
             let b = Buffers {
                 stats: stats[0],
                 sharp: owned.make(backend, 4 * pixels, "splat/sharp")?,
                 cells: cells_buf,
+                offsets,
                 tile_count: owned.make(backend, tiles, "splat/tile-count")?,
-                tile_base: owned.make(backend, tiles, "splat/tile-base")?,
                 tile_radius: owned.make(backend, tiles, "splat/tile-radius")?,
                 copy: owned.make(backend, tiles, "splat/copy")?,
                 segments: segments[0],
@@ -236,23 +252,21 @@ impl SplatContext {
                     Some(scratch) => scratch,
                     None => owned.make(backend, list_entries, "splat/keys-sorted")?,
                 },
-                values_sorted: owned.make(backend, list_entries, "splat/values-sorted")?,
+                values_sorted,
                 io,
             };
             backend.write_buffer(b.mask, 0, &mask_words)?;
             Ok((b, stats.into_iter().zip(segments).collect()))
         })();
-        let built = built.and_then(|b| ScanScratch::new(backend, tiles).map(|scan| (b, scan)));
-        let (((b, reports), scan), owned) = match owned.or_free(backend, built) {
+        let ((b, reports), owned) = match owned.or_free(backend, built) {
             Ok(made) => made,
             Err(e) => {
                 sort.destroy(backend);
                 return Err(e);
             }
         };
-        let bytes = owned.bytes() + scan.bytes() + sort.bytes();
+        let bytes = owned.bytes() + sort.bytes();
         let mut kernels: Vec<&'static KernelDesc> = dof_shaders::splat::KERNELS.to_vec();
-        kernels.extend(dof_shaders::scan::KERNELS);
         kernels.extend(sort.kernels());
         if desc.image_io {
             kernels.extend(dof_shaders::frame_io::KERNELS);
@@ -266,7 +280,6 @@ impl SplatContext {
             owned,
             bytes,
             b,
-            scan,
             sort,
             reports,
             in_flight,
@@ -284,7 +297,6 @@ impl SplatContext {
             return;
         }
         self.sort.destroy(backend);
-        self.scan.destroy(backend);
         self.owned.free(backend);
     }
 
@@ -308,7 +320,6 @@ impl SplatContext {
     /// every frame in flight are one row).
     pub fn memory_table(&self) -> Vec<(String, u64)> {
         let mut rows = self.owned.table();
-        rows.push(("scan/scratch".to_string(), self.scan.bytes()));
         let sorted_in_scratch = self.sort.scratch_keys() == Some(self.b.keys_sorted);
         rows.extend(self.sort.table().into_iter().map(|(label, bytes)| match label.starts_with("sort/scratch") && sorted_in_scratch {
             true => (format!("{label} (the first also splat/keys-sorted)"), bytes),
@@ -406,43 +417,32 @@ impl SplatContext {
         backend.fill(b.stats, 0, stats::WORDS as u64, 0, "splat/clear")?;
         let side = self.footprint_side(f);
         if side > 0 {
-            // The place pass adds each footprint into its cleared field.
-            let slots = f.width * f.height * f.layer_count();
-            backend.fill(b.dense, footprint_base(&fin) as u64, footprint_words(slots, side) as u64, 0, "splat/clear")?;
+            // Packing or merging adds each footprint into its cleared field.
+            backend.fill(b.dense, footprint_base(&fin) as u64, footprint_words(fin.dense_slots(), side) as u64, 0, "splat/clear")?;
         }
         backend.run(splat_plan_reduce::Bindings { layers: fragments, counts, st: b.stats }, pixel_groups, &first, "splat/plan")?;
         backend.run(splat_plan_finish::Bindings { st: b.stats }, [1, 1, 1], &fin, "splat/plan")?;
         let (_, _, fx, fy) = cells(f.width, f.height, f.layer_count(), last);
         let (cells, cell_groups) = (b.cells, fx as u64 * fy as u64);
+        let dense = b.dense;
         backend.run(
-            splat_pack::Bindings { layers: fragments, counts, cells, sharp: b.sharp, st: b.stats },
+            splat_pack::Bindings { layers: fragments, counts, cells, sharp: b.sharp, dense, st: b.stats },
             pixel_groups,
             &fin,
             "splat/pack",
         )?;
         if last > 0 {
             let label = if last == 1 { "splat/merge-2x2" } else { "splat/merge-4x4" };
-            let merge = splat_merge::Bindings { layers: fragments, counts, cells, st: b.stats };
+            let merge = splat_merge::Bindings { layers: fragments, counts, cells, dense, st: b.stats };
             backend.run(merge, groups_for(&MERGE, cell_groups), &fin, label)?;
         }
-        let (tile_count, tile_base, tile_radius, st) = (b.tile_count, b.tile_base, b.tile_radius, b.stats);
-        let count = splat_tile_count::Bindings { cells, tile_count, tile_base, tile_radius, st };
+        let (tile_count, offsets, tile_radius, st) = (b.tile_count, b.offsets, b.tile_radius, b.stats);
+        let count = splat_tile_count::Bindings { cells, tile_count, offsets, tile_radius, st };
         backend.run(count, tile_grid, &fin, "splat/tile-count")?;
-        // The place pass reads the statistics this writes: recorded beside the scan (which it does
-        // not touch), the scan's barriers order it, with no barrier of its own.
         let alloc = splat_alloc::Bindings { tile_count, tile_radius, copy: b.copy, st };
         backend.run(alloc, groups_for(&ALLOC, tiles), &fin, "splat/alloc")?;
-        self.scan.record(backend, b.tile_base, 0, tiles)?;
-        let dense = b.dense;
-        if last == 0 {
-            let place = splat_place::Bindings { layers: fragments, counts, cells, tile_base, dense, st };
-            backend.run(place, groups_for(&PLACE, cell_groups), &fin, "splat/place")?;
-        } else {
-            let place = splat_place_merged::Bindings { layers: fragments, counts, cells, tile_base, dense, st };
-            backend.run(place, groups_for(&PLACE_MERGED, cell_groups), &fin, "splat/place")?;
-        }
         let (copy, keys, values, segments) = (b.copy, b.keys, b.values, b.segments);
-        let bin = splat_bin::Bindings { dense, tile_count, tile_base, tile_radius, copy, keys, values, segments, st };
+        let bin = splat_bin::Bindings { dense, tile_count, offsets, tile_radius, copy, keys, values, segments, st };
         backend.run(bin, tile_grid, &fin, "splat/bin")?;
         self.sort.record(backend, b.segments, tiles as u32, b.keys, b.values, b.keys_sorted, b.values_sorted)?;
         let acc =
@@ -526,6 +526,7 @@ impl SplatContext {
         let b = &self.b;
         StageBuffers {
             cells: b.cells,
+            offsets: b.offsets,
             tile_count: b.tile_count,
             dense: b.dense,
             segments: b.segments,
@@ -541,6 +542,7 @@ impl SplatContext {
 #[cfg(feature = "testing")]
 pub struct StageBuffers {
     pub cells: BufferId,
+    pub offsets: BufferId,
     pub tile_count: BufferId,
     pub dense: BufferId,
     pub segments: BufferId,

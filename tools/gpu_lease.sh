@@ -4,7 +4,12 @@
 # (GPU_LEASE_DEADLINE seconds, default 540), so that a lease cut short still brings back the rows
 # that matter:
 #
-#   DOF=path/to/release/dof bash tools/gpu_lease.sh OUT_DIR
+#   DOF=path/to/release/dof [BASE_DOF=path/to/earlier/dof] bash tools/gpu_lease.sh OUT_DIR
+#
+# With BASE_DOF, the run begins with that build against DOF, interleaved (tools/gpu_compare.sh:
+# multi-layer 4x4 on every built-in scene at the first size, `railing`, `fence` and `simple` at the
+# second; into OUT/compare/), so that a kernel change measured only on the CPU gets its GPU figure
+# first.
 #
 # In order: the device (`dof info`, nvidia-smi; the run ends at once if no NVIDIA device answers);
 # `dof bench frame` of multi-layer splatting merged 4x4 and of the ring gather on every built-in
@@ -76,6 +81,10 @@ if [ -z "${GPU_LEASE_SIZE1:-}" ] && ! grep -q "vulkan device 0: NVIDIA" "$m/devi
   ls /usr/share/vulkan/icd.d /etc/vulkan/icd.d /usr/local/nvidia/share/vulkan/icd.d >> "$log" 2>&1
   ldconfig -p | grep -i vulkan >> "$log"
   finish; exit 1
+fi
+if [ -n "${BASE_DOF:-}" ]; then
+  step 130 bash tools/gpu_compare.sh "$m/compare" "$BASE_DOF" "$dof" --sizes "$s1" --methods multilayer:4x4 --deadline 110 >> "$log" 2>&1
+  step 80 bash tools/gpu_compare.sh "$m/compare" "$BASE_DOF" "$dof" --sizes "$s2" --scenes railing,fence,simple --methods multilayer:4x4 --deadline 60 >> "$log" 2>&1
 fi
 measure 120 --sizes "$s1" --methods multilayer:4x4,ring-gather:none
 no_footprints "$s1"

@@ -100,6 +100,13 @@ impl LaneMask for bool {
 #[cfg(not(target_arch = "spirv"))]
 pub use wide::{Wide, WideMask};
 
+/// The pixels one invocation works on at once on this target: one on the GPU, [`Wide::N`] on the
+/// CPU, where a workgroup's invocations run one after another.
+#[cfg(target_arch = "spirv")]
+pub type Native = f32;
+#[cfg(not(target_arch = "spirv"))]
+pub type Native = Wide;
+
 /// Which copy of the passes defined with [`pass_with_avx2!`](crate::pass_with_avx2) the CPU backend
 /// runs.
 #[cfg(not(target_arch = "spirv"))]

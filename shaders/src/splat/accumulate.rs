@@ -75,10 +75,7 @@ pub const SHARED_WORDS: usize = CH_F + T;
 /// the coverage the last one left): walking eight pixels at once overlaps their chains, and their
 /// arithmetic runs in vector registers. On the GPU each invocation walks its own. Each pixel's
 /// arithmetic is the same either way, so the images are too.
-#[cfg(target_arch = "spirv")]
-type Px = f32;
-#[cfg(not(target_arch = "spirv"))]
-type Px = crate::lane::Wide;
+type Px = crate::lane::Native;
 type PxMask = <Px as Lanes>::Mask;
 const L: usize = Px::N;
 const LANES: u32 = L as u32;

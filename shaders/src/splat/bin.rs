@@ -36,7 +36,7 @@ const NONE: u32 = u32::MAX;
 /// Index of cell `c` (row-major inside tile `(tx, ty)`), or `NONE` outside the cell grid.
 #[inline]
 fn cell_of(p: &SplatParams, tx: u32, ty: u32, c: u32) -> u32 {
-    let ct = p.tile / p.cell;
+    let ct = p.cells_per_tile_edge();
     if c >= ct * ct {
         return NONE;
     }
@@ -58,7 +58,8 @@ fn each_cell(p: &SplatParams, tx: u32, ty: u32, lid: u32, mut f: impl FnMut(u32)
     }
 }
 
-/// Pixel span `[start, end)` of tile `t` along an axis of `size` pixels.
+/// Pixel span `[start, end)` of block `t` of `tile` pixels (a tile, or a cell) along an axis of
+/// `size` pixels.
 #[inline]
 fn span(t: u32, tile: u32, size: u32) -> (f32, f32) {
     let end = if (t + 1) * tile < size { (t + 1) * tile } else { size };
@@ -385,14 +386,14 @@ struct Cursor {
     nb: usize,
     /// The neighbour the fields below belong to (`usize::MAX`: none yet).
     cells_of: usize,
-    /// The neighbour tile's cells inside the grid: `w × h` of them from cell `first`, at `(x0, y0)`
-    /// in the cell grid; its cell regions start at region `base` (the tile's index times its cells).
+    /// The neighbour tile `tile`'s cells inside the grid: `w × h` of them from cell `first`, at
+    /// `(x0, y0)` in the cell grid.
+    tile: u32,
     first: u32,
     x0: u32,
     y0: u32,
     w: u32,
     h: u32,
-    base: u32,
     /// The current cell, its offset in the tile, and the next cell's (`u32::MAX` after the last).
     x: u32,
     y: u32,
@@ -411,12 +412,12 @@ impl Cursor {
         Cursor {
             nb,
             cells_of: usize::MAX,
+            tile: 0,
             first: 0,
             x0: 0,
             y0: 0,
             w: 0,
             h: 0,
-            base: 0,
             x: 0,
             y: 0,
             offset: 0,
@@ -427,10 +428,16 @@ impl Cursor {
         }
     }
 
+    /// The frame's index of the tile's cell `(x, y)`.
+    #[inline]
+    fn cell(&self, p: &SplatParams, x: u32, y: u32) -> u32 {
+        self.first + y * p.cells_x + x
+    }
+
     /// The offset in its tile of the tile's cell `(x, y)`, `u32::MAX` past the last.
     #[inline]
     fn offset_of(&self, p: &SplatParams, offsets: &impl Load, x: u32, y: u32) -> u32 {
-        if y < self.h { offsets.load(self.first + y * p.cells_x + x) } else { u32::MAX }
+        if y < self.h { offsets.load(self.cell(p, x, y)) } else { u32::MAX }
     }
 
     /// Moves to cell `(x, y)` of the tile.
@@ -439,10 +446,9 @@ impl Cursor {
         (self.x, self.y) = (x, y);
         self.offset = self.offset_of(p, offsets, x, y);
         self.next = if x + 1 < self.w { self.offset_of(p, offsets, x + 1, y) } else { self.offset_of(p, offsets, 0, y + 1) };
-        let r = f32::from_bits(offsets.load(p.cells_x * p.cells_y + self.first + y * p.cells_x + x));
-        let (gx, gy) = ((self.x0 + x) * p.cell, (self.y0 + y) * p.cell);
-        let block = |g: u32, size: u32| (g as f32, if g + p.cell < size { (g + p.cell) as f32 } else { size as f32 });
-        self.reaches = block_reaches(p, block(gx, p.width), block(gy, p.height), self.tx, self.ty, r);
+        let r = f32::from_bits(offsets.load(p.cells_x * p.cells_y + self.cell(p, x, y)));
+        let (cx, cy) = (span(self.x0 + x, p.cell, p.width), span(self.y0 + y, p.cell, p.height));
+        self.reaches = block_reaches(p, cx, cy, self.tx, self.ty, r);
     }
 
     /// The dense index of candidate `j` (at or after the last one asked for): the `o`-th fragment
@@ -453,16 +459,16 @@ impl Cursor {
             self.nb += 1;
         }
         let o = j - if self.nb == 0 { 0 } else { sh[nb + self.nb - 1] };
-        let ct = p.tile / p.cell;
         if self.cells_of != self.nb {
+            let ct = p.cells_per_tile_edge();
             let s = sh[nb_tile + self.nb];
             let (x0, y0) = ((s % p.tiles_x) * ct, (s / p.tiles_x) * ct);
             self.cells_of = self.nb;
+            self.tile = s;
             self.first = y0 * p.cells_x + x0;
             (self.x0, self.y0) = (x0, y0);
             self.w = if p.cells_x - x0 < ct { p.cells_x - x0 } else { ct };
             self.h = if p.cells_y - y0 < ct { p.cells_y - y0 } else { ct };
-            self.base = s * ct * ct;
             // The cell is in the last row whose first cell's offset is at most `o` (the first
             // row's is 0), at the last column of that row whose offset is.
             let (mut lo, mut hi) = (0, self.h - 1);
@@ -482,7 +488,7 @@ impl Cursor {
             let (x, y) = if self.x + 1 < self.w { (self.x + 1, self.y) } else { (0, self.y + 1) };
             self.go(p, offsets, x, y);
         }
-        (self.base + self.y * ct + self.x) * p.cell_cap() + (o - self.offset)
+        p.region_in_tile(self.tile, self.x, self.y) + (o - self.offset)
     }
 }
 

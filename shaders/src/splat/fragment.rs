@@ -50,7 +50,7 @@ use super::SplatParams;
 use crate::aperture::Aperture;
 use crate::exec::{Load, Mem};
 use crate::footprint;
-use crate::lane::Lanes;
+use crate::lane::{Lanes, Native as Row};
 use crate::lens::ThinLens;
 use crate::math::{ceil, floor};
 use crate::radiance::clamp_color;
@@ -454,12 +454,6 @@ pub fn weight_sum<L: Load>(c: [f32; 2], s: f32, w: f32, ap: &Aperture, mirror: f
     }
     sum
 }
-
-/// The pixels of a row [`weight_sum`] weighs at once.
-#[cfg(target_arch = "spirv")]
-type Row = f32;
-#[cfg(not(target_arch = "spirv"))]
-type Row = crate::lane::Wide;
 
 #[cfg(test)]
 mod tests {

@@ -106,10 +106,20 @@ impl SplatParams {
     /// Walked in that order, the fragments come tile by tile, cell by cell, front to back.
     #[inline]
     pub fn cell_region(&self, c: u32) -> u32 {
-        let ct = self.tile / self.cell;
+        let ct = self.cells_per_tile_edge();
         let (gx, gy) = (c % self.cells_x, c / self.cells_x);
-        let t = (gy / ct) * self.tiles_x + gx / ct;
-        ((t * ct + gy % ct) * ct + gx % ct) * self.cell_cap()
+        self.region_in_tile((gy / ct) * self.tiles_x + gx / ct, gx % ct, gy % ct)
+    }
+    /// [`Self::cell_region`] of the cell at column `x`, row `y` of tile `t`.
+    #[inline]
+    pub fn region_in_tile(&self, t: u32, x: u32, y: u32) -> u32 {
+        let ct = self.cells_per_tile_edge();
+        ((t * ct + y) * ct + x) * self.cell_cap()
+    }
+    /// Cells along a tile's edge.
+    #[inline]
+    pub fn cells_per_tile_edge(&self) -> u32 {
+        self.tile / self.cell
     }
     /// Fragments the dense array has room for: the regions of every cell of the tile grid.
     #[inline]

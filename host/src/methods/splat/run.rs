@@ -15,7 +15,7 @@ use crate::methods::buffers::{read_rgb, slot_words};
 use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 #[cfg(feature = "testing")]
-use dof_shaders::splat::{SplatParams, fragment::WORDS as FRAGMENT_WORDS};
+use dof_shaders::splat::fragment::WORDS as FRAGMENT_WORDS;
 
 /// Every stage's buffers, read back by [`splat_with_stages`] (feature `testing`).
 #[cfg(feature = "testing")]
@@ -160,29 +160,17 @@ fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatRe
         let words = backend.buffer_words(id)?;
         backend.read_buffer(id, 0, words)
     };
-    // Kept apart, the cells' buffer holds their counts, then their widest radii.
+    let p = s.params.ok_or_else(|| Error::InvalidArgument("the splatting context has recorded no frame".into()))?;
+    // Kept apart, the cells' buffer holds the frame's cells' counts, then their widest radii.
+    let n = (p.cells_x * p.cells_y) as usize;
     let mut counts = whole(s.cells)?;
-    counts.truncate(counts.len() / 2);
-    let offsets = backend.read_buffer(s.offsets, 0, counts.len() as u64)?;
+    counts.truncate(n);
+    let offsets = backend.read_buffer(s.offsets, 0, n as u64)?;
     let tiles = report.tiles as u64;
     let tile_count = backend.read_buffer(s.tile_count, 0, tiles)?;
     // The dense array with each cell region's unused tail left out (what lies there is whatever
     // the buffer held), then the footprint fields, which the frame clears.
     let all = backend.read_buffer(s.dense, 0, backend.buffer_words(s.dense)?)?;
-    let plan = report.plan.as_ref().ok_or_else(|| Error::InvalidArgument("a splatting report without its plan".into()))?;
-    let cell = 1 << plan.merge_steps;
-    let p = SplatParams {
-        width: plan.width,
-        height: plan.height,
-        layers: plan.layers,
-        cell,
-        cells_x: plan.width.div_ceil(cell),
-        cells_y: plan.height.div_ceil(cell),
-        tile: plan.tile,
-        tiles_x: plan.tiles_x,
-        tiles_y: plan.tiles_y,
-        ..Default::default()
-    };
     let mut regions: Vec<(u32, u32)> = (0..counts.len() as u32).map(|c| (p.cell_region(c), counts[c as usize])).collect();
     regions.sort_unstable();
     let words = FRAGMENT_WORDS as usize;

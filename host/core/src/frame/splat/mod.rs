@@ -81,8 +81,9 @@ struct Buffers {
     /// widest radius; then the unsorted list keys (unless the context keeps every stage apart:
     /// `SplatContext::distinct_stages`).
     cells: BufferId,
-    /// Per cell, its offset in its tile; binning reads them, and the sorted list values come after
-    /// (in `values_sorted`, unless every stage is kept apart).
+    /// Per cell, its offset in its tile, then its widest radius again, for binning (which writes its
+    /// keys over `cells`); then the sorted list values (in `values_sorted`, unless every stage is
+    /// kept apart).
     offsets: BufferId,
     tile_count: BufferId,
     tile_radius: BufferId,
@@ -525,6 +526,7 @@ impl SplatContext {
     pub(crate) fn stage_buffers(&self) -> StageBuffers {
         let b = &self.b;
         StageBuffers {
+            params: self.in_flight.slot(0).ok().map(|(_, f)| self.params(&f, self.merge_steps)),
             cells: b.cells,
             offsets: b.offsets,
             tile_count: b.tile_count,
@@ -541,6 +543,8 @@ impl SplatContext {
 /// A splatting context's buffers of each stage (`crate::testing::stage_buffers`).
 #[cfg(feature = "testing")]
 pub struct StageBuffers {
+    /// The last recorded frame's kernel parameters (where its cells' regions lie), if one was.
+    pub params: Option<SplatParams>,
     pub cells: BufferId,
     pub offsets: BufferId,
     pub tile_count: BufferId,

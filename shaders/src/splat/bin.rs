@@ -349,17 +349,19 @@ fn reaching<const N: usize>(
     let (mut mask, mut kept) = (0u32, 0u32);
     let mut cursor = Cursor::at(neighbour(sh, nb, first), tx, ty);
     let mut i = 0;
-    while i < CANDIDATES_PER_THREAD {
-        let j = first + i;
-        if j < total {
-            let at = cursor.candidate(p, sh, nb, nb_tile, offsets, j);
-            // A fragment of a cell none of whose fragments reach the tile is not read.
-            if cursor.reaches && fragment_reaches(p, &Fragment::load_in(p, dense, at), tx, ty) {
+    while i < CANDIDATES_PER_THREAD && first + i < total {
+        let at = cursor.candidate(p, sh, nb, nb_tile, offsets, first + i);
+        if cursor.reaches {
+            if fragment_reaches(p, &Fragment::load_in(p, dense, at), tx, ty) {
                 mask |= 1 << i;
                 kept += 1;
             }
+            i += 1;
+        } else {
+            // None of the cell's fragments reaches the tile: none is read, and the walk goes on
+            // from the next cell's first.
+            i = cursor.cell_end(sh, nb) - first;
         }
-        i += 1;
     }
     (mask, kept)
 }
@@ -449,6 +451,15 @@ impl Cursor {
         let r = f32::from_bits(offsets.load(p.cells_x * p.cells_y + self.cell(p, x, y)));
         let (cx, cy) = (span(self.x0 + x, p.cell, p.width), span(self.y0 + y, p.cell, p.height));
         self.reaches = block_reaches(p, cx, cy, self.tx, self.ty, r);
+    }
+
+    /// The candidate after the current cell's last (its neighbour tile's first fragment is
+    /// candidate `sh[nb + self.nb - 1]`, the one after its last `sh[nb + self.nb]`).
+    #[inline(always)]
+    fn cell_end<const N: usize>(&self, sh: &[u32; N], nb: usize) -> u32 {
+        let base = if self.nb == 0 { 0 } else { sh[nb + self.nb - 1] };
+        let end = sh[nb + self.nb];
+        if self.next < end - base { base + self.next } else { end }
     }
 
     /// The dense index of candidate `j` (at or after the last one asked for): the `o`-th fragment

@@ -346,25 +346,6 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
         start += THREADS;
     }
     g.each(|lid| {
-        // The early-out statistics, one pair of atomics per walk's pixels (a pixel's own on the
-        // GPU): with a pair per pixel, the counters' cache line kept moving between the CPU's
-        // threads.
-        if lid % LANES == 0 {
-            let (mut early, mut skipped) = (0, 0);
-            let mut q = lid;
-            while q < lid + LANES {
-                let visited = sh[VISITED + q as usize];
-                if pixel(q).0 && visited < len {
-                    early += 1;
-                    skipped += len - visited;
-                }
-                q += 1;
-            }
-            if early > 0 {
-                st.atomic_add(stats::EARLY_OUT, early);
-                st.atomic_add(stats::SKIPPED_ENTRIES, skipped);
-            }
-        }
         let (ok, x, y) = pixel(lid);
         if !ok {
             return;
@@ -377,6 +358,27 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
         let cover = get(sh, USED, lid);
         let norm = if cover > 1e-6 { 1.0 / cover } else { 0.0 };
         store(&mut out, x, y, [get(sh, ACC_R, lid) * norm, get(sh, ACC_G, lid) * norm, get(sh, ACC_B, lid) * norm]);
+    });
+    // The early-out statistics, one pair of atomics per walk's pixels (a pixel's own on the GPU):
+    // with a pair per pixel, the counters' cache line kept moving between the CPU's threads.
+    g.each(|lid| {
+        if lid % LANES != 0 {
+            return;
+        }
+        let (mut early, mut skipped) = (0, 0);
+        let mut q = lid;
+        while q < lid + LANES {
+            let visited = sh[VISITED + q as usize];
+            if pixel(q).0 && visited < len {
+                early += 1;
+                skipped += len - visited;
+            }
+            q += 1;
+        }
+        if early > 0 {
+            st.atomic_add(stats::EARLY_OUT, early);
+            st.atomic_add(stats::SKIPPED_ENTRIES, skipped);
+        }
     });
 }
 }

@@ -293,6 +293,95 @@ pub struct SortParams {
     pub k: u32,
     /// Step `j` of `sort_global_step`.
     pub j: u32,
+    /// `sort_shared_*`: 1 to sort each list with one invocation ([`serial_sort`]) instead of the
+    /// network, for a device whose invocations of a workgroup run one after another (the CPU
+    /// backend), where the network's `n log² n` comparators are all paid one by one.
+    pub serial: u32,
+}
+
+/// Elements [`serial_sort`] first sorts by insertion.
+const SERIAL_RUN: u32 = 16;
+
+/// Stable merges of the sorted runs of `w` elements of `src`, pairwise, into `dst` (positions
+/// `[0, len)`). A left run's elements precede the right run's in the input, so taking the right
+/// one only when its key is smaller keeps the order under `(key, position)`.
+#[inline]
+fn merge_runs(src: &impl Pairs, dst: &mut impl Pairs, len: u32, w: u32) {
+    let mut lo = 0;
+    while lo < len {
+        let mid = if lo + w < len { lo + w } else { len };
+        let hi = if mid + w < len { mid + w } else { len };
+        let (mut i, mut j, mut o) = (lo, mid, lo);
+        while i < mid && j < hi {
+            let (a, b) = (src.get(i), src.get(j));
+            if b.0 < a.0 {
+                dst.set(o, b.0, b.1);
+                j += 1;
+            } else {
+                dst.set(o, a.0, a.1);
+                i += 1;
+            }
+            o += 1;
+        }
+        while i < mid {
+            let a = src.get(i);
+            dst.set(o, a.0, a.1);
+            i += 1;
+            o += 1;
+        }
+        while j < hi {
+            let b = src.get(j);
+            dst.set(o, b.0, b.1);
+            j += 1;
+            o += 1;
+        }
+        lo = hi;
+    }
+}
+
+/// The serial strategy ([`SortParams::serial`]): one invocation sorts the `len` pairs in
+/// workgroup memory, with `scratch` (the list's own stretch of the output buffers) as the second
+/// buffer of a merge sort: runs of [`SERIAL_RUN`] by insertion, then bottom-up merges, back and
+/// forth. `n log n` steps; the result is the network's, the order under `(key, position)`, which
+/// is unique.
+fn serial_sort<const N: usize, M: Mem>(sh: &mut [u32; N], scratch: &mut GlobalPairs<'_, M>, len: u32) {
+    let mut shared = SharedPairs { sh, base: 0 };
+    let mut s = 0;
+    while s < len {
+        let e = if s + SERIAL_RUN < len { s + SERIAL_RUN } else { len };
+        let mut i = s + 1;
+        while i < e {
+            let (k, p) = shared.get(i);
+            let mut m = i;
+            while m > s && shared.get(m - 1).0 > k {
+                let (pk, pp) = shared.get(m - 1);
+                shared.set(m, pk, pp);
+                m -= 1;
+            }
+            shared.set(m, k, p);
+            i += 1;
+        }
+        s = e;
+    }
+    let mut w = SERIAL_RUN;
+    let mut in_shared = true;
+    while w < len {
+        if in_shared {
+            merge_runs(&shared, scratch, len, w);
+        } else {
+            merge_runs(scratch, &mut shared, len, w);
+        }
+        in_shared = !in_shared;
+        w *= 2;
+    }
+    if !in_shared {
+        let mut i = 0;
+        while i < len {
+            let (k, p) = scratch.get(i);
+            shared.set(i, k, p);
+            i += 1;
+        }
+    }
 }
 
 /// One workgroup sorts one list of the class in workgroup memory (`N / 2` elements at most), looping
@@ -324,7 +413,15 @@ pub fn shared_class_pass<G: Group, R: Load, M: Mem, const N: usize>(
                 i += size;
             }
         });
-        local_sort(g, sh, 0, pow2_ceil(len), len);
+        if p.serial != 0 {
+            g.each(|lid| {
+                if lid == 0 {
+                    serial_sort(sh, &mut GlobalPairs { keys: &mut keys_out, pos: &mut values_out, offset }, len);
+                }
+            });
+        } else {
+            local_sort(g, sh, 0, pow2_ceil(len), len);
+        }
         g.each(|lid| {
             let mut i = lid;
             while i < len {

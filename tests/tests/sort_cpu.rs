@@ -1,7 +1,7 @@
 //! The segmented sort on the CPU backend against the stable reference sort.
 
 use dof::backend::CpuBackend;
-use dof::ops::sort::{SortInput, sort_on};
+use dof::ops::sort::{SortInput, sort_on, sort_on_with};
 use dof::workload::{lists_with, random_key, tile_lists};
 use dof_tests::assert_sorted_like_reference;
 use proptest::prelude::*;
@@ -12,10 +12,14 @@ use rand_pcg::Pcg64;
 /// and one past them, and lists beyond the largest workgroup-memory class (the global path).
 const LENGTHS: [u32; 18] = [0, 1, 2, 3, 5, 63, 64, 65, 127, 129, 1000, 2047, 2049, 4095, 4096, 4097, 6000, 17000];
 
+/// Both strategies of the workgroup-memory classes: the serial merge sort the CPU backend runs and
+/// the bitonic network a GPU runs.
 fn run(input: &SortInput, shared_bytes: u32) {
     let mut cpu = CpuBackend::with_shared_bytes(shared_bytes);
-    let out = sort_on(&mut cpu, input).expect("sort");
-    assert_sorted_like_reference(input, &out);
+    for serial in [true, false] {
+        let out = sort_on_with(&mut cpu, input, Some(serial)).expect("sort");
+        assert_sorted_like_reference(input, &out);
+    }
 }
 
 fn check_orders(shared_bytes: u32) {

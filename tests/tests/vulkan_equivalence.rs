@@ -3,7 +3,7 @@
 
 use dof::backend::{Backend, CpuBackend};
 use dof::ops::scan::exclusive_scan;
-use dof::ops::sort::sort_on;
+use dof::ops::sort::{sort_on, sort_on_with};
 use dof::workload::{lists_with, random_key, tile_lists};
 use dof_tests::{assert_clean, assert_sorted_like_reference, vulkan};
 use rand::SeedableRng;
@@ -23,15 +23,45 @@ fn sort_matches_cpu_bit_for_bit() {
         lists_with(&lengths, |_, _| 2.0),
         tile_lists(300, 8192, 5),
     ];
+    let bits = |k: &[f32]| k.iter().map(|k| k.to_bits()).collect::<Vec<_>>();
     for input in &inputs {
-        let on_vk = sort_on(&mut vk, input).expect("Vulkan sort");
+        // The network on Vulkan against both strategies on the CPU: the serial merge sort the
+        // CPU backend runs and the network.
+        for serial in [true, false] {
+            let on_vk = sort_on(&mut vk, input).expect("Vulkan sort");
+            assert_clean(&mut vk);
+            let on_cpu = sort_on_with(&mut cpu, input, Some(serial)).expect("CPU sort");
+            let first_difference = |a: &[u32], b: &[u32]| a.iter().zip(b).position(|(a, b)| a != b);
+            let keys = first_difference(&bits(&on_vk.keys), &bits(&on_cpu.keys));
+            assert_eq!(keys, None, "keys differ between Vulkan and CPU from that index on ({serial:?})");
+            let values = first_difference(&on_vk.values, &on_cpu.values);
+            assert_eq!(values, None, "payloads differ between Vulkan and CPU from that index on ({serial:?})");
+            assert_eq!(on_vk.stats.class_counts, on_cpu.stats.class_counts, "class plans differ");
+            assert_sorted_like_reference(input, &on_vk);
+        }
+    }
+}
+
+/// The serial strategy compiled to SPIR-V and run by one invocation on Vulkan. Lists up to 2048
+/// long: lavapipe ends a shader invocation's loops after 65 535 iterations of all its loops
+/// together (Mesa's `LP_MAX_TGSI_LOOP_ITERATIONS`), and one invocation merge-sorting a list of
+/// about 3 800 reversed keys reaches that (its output then comes back half sorted). No Vulkan
+/// device chooses the serial strategy ([`dof::backend::Limits::serial_invocations`]).
+#[test]
+fn serial_strategy_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    let mut rng = Pcg64::seed_from_u64(13);
+    let lengths = [0, 1, 2, 3, 17, 64, 65, 300, 1000, 2047, 2048];
+    let inputs = [
+        lists_with(&lengths, |_, _| random_key(&mut rng)),
+        lists_with(&lengths, |_, i| i as f32),
+        lists_with(&lengths, |_, i| -(i as f32)),
+        lists_with(&lengths, |_, _| 2.0),
+    ];
+    for input in &inputs {
+        let out = sort_on_with(&mut vk, input, Some(true)).expect("Vulkan sort");
         assert_clean(&mut vk);
-        let on_cpu = sort_on(&mut cpu, input).expect("CPU sort");
-        let bits = |k: &[f32]| k.iter().map(|k| k.to_bits()).collect::<Vec<_>>();
-        assert_eq!(bits(&on_vk.keys), bits(&on_cpu.keys), "keys differ between Vulkan and CPU");
-        assert_eq!(on_vk.values, on_cpu.values, "payloads differ between Vulkan and CPU");
-        assert_eq!(on_vk.stats.class_counts, on_cpu.stats.class_counts, "class plans differ");
-        assert_sorted_like_reference(input, &on_vk);
+        assert_sorted_like_reference(input, &out);
     }
 }
 

@@ -61,6 +61,7 @@ impl CpuBackend {
                 max_workgroup_count: [65535; 3],
                 subgroup_size: None,
                 max_buffer_bytes: 1 << 34,
+                serial_invocations: true,
             },
             buffers: Vec::new(),
             times: Vec::new(),

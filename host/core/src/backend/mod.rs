@@ -57,6 +57,9 @@ pub struct Limits {
     pub subgroup_size: Option<u32>,
     /// Largest single buffer in bytes (`maxStorageBufferRange`, bounded by the heap).
     pub max_buffer_bytes: u64,
+    /// A workgroup's invocations run one after another (the CPU backend), so a kernel may choose
+    /// work-efficient serial code over a parallel network (the segmented sort does).
+    pub serial_invocations: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

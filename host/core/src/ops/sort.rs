@@ -22,6 +22,10 @@ pub struct SegmentedSort {
     slot: usize,
     lists: BufferId,
     scratch: Option<(BufferId, BufferId)>,
+    /// Whether the workgroup-memory classes sort each list with one invocation (a merge sort)
+    /// rather than the bitonic network: where a workgroup's invocations run one after another
+    /// ([`crate::backend::Limits::serial_invocations`]). Either gives the same order.
+    pub serial: bool,
 }
 
 /// What one sort did, read back from the plan buffer (for reports; the GPU path never needs it).
@@ -74,7 +78,8 @@ impl SegmentedSort {
         let shared = made.len() - frames.max(1) as usize;
         let scratch = (shared == 3).then(|| (made[1], made[2]));
         let plans = made[shared..].to_vec();
-        Ok(SegmentedSort { max_segments, max_elements, max_list_len, top_class, plans, slot: 0, lists: made[0], scratch })
+        let serial = backend.limits().serial_invocations;
+        Ok(SegmentedSort { max_segments, max_elements, max_list_len, top_class, plans, slot: 0, lists: made[0], scratch, serial })
     }
 
     /// Makes [`Self::record`] write, and [`Self::stats`] read, the plan of frame-in-flight `slot`.
@@ -162,14 +167,14 @@ impl SegmentedSort {
         // (their bindings, one list for every class, are those of `sort_shared_64::Bindings`).
         let io = [segments, plan_buf, lists, keys_in, values_in, keys_out, values_out];
         for class in 0..=self.top_class {
-            let params = push_words(&SortParams { num_segments, class, k: 0, j: 0 });
+            let params = push_words(&SortParams { num_segments, class, k: 0, j: 0, serial: self.serial as u32 });
             let args = (plan::CLASS_ARGS + 3 * class) as u64;
             let label = format!("sort/shared-{}", CLASS_CAPS[class as usize]);
             backend.dispatch_indirect(SHARED_CLASSES[class as usize], plan_buf, args, &io, &params, &label)?;
         }
 
         let Some((scratch_keys, scratch_pos)) = self.scratch else { return Ok(()) };
-        let params = |k, j| SortParams { num_segments, class: GLOBAL_CLASS, k, j };
+        let params = |k, j| SortParams { num_segments, class: GLOBAL_CLASS, k, j, serial: 0 };
         let local = sort_global_local::Bindings { segments, plan: plan_buf, lists, keys_in, scratch_keys, scratch_pos };
         let step = sort_global_step::Bindings { segments, plan: plan_buf, lists, scratch_keys, scratch_pos };
         let block_args = plan::BLOCK_ARGS as u64;
@@ -266,6 +271,12 @@ pub struct SortOutput {
 /// Uploads, sorts and reads back `input` on `backend`. Outputs start as copies of the inputs, so words
 /// outside every list come back unchanged.
 pub fn sort_on(backend: &mut dyn Backend, input: &SortInput) -> Result<SortOutput> {
+    sort_on_with(backend, input, None)
+}
+
+/// [`sort_on`] with the workgroup-memory classes' strategy chosen ([`SegmentedSort::serial`]), or
+/// the device's (`None`): for checking that both give the same order on every backend.
+pub fn sort_on_with(backend: &mut dyn Backend, input: &SortInput, serial: Option<bool>) -> Result<SortOutput> {
     input.validate()?;
     let n = input.keys.len() as u64;
     let key_bits: Vec<u32> = input.keys.iter().map(|k| k.to_bits()).collect();
@@ -284,7 +295,8 @@ pub fn sort_on(backend: &mut dyn Backend, input: &SortInput) -> Result<SortOutpu
         backend.write_buffer(values_in, 0, &input.values)?;
         backend.write_buffer(keys_out, 0, &key_bits)?;
         backend.write_buffer(values_out, 0, &input.values)?;
-        let sort = SegmentedSort::new(backend, input.segments.len() as u32, n as u32, input.max_list_len())?;
+        let mut sort = SegmentedSort::new(backend, input.segments.len() as u32, n as u32, input.max_list_len())?;
+        sort.serial = serial.unwrap_or(sort.serial);
         let recorded = sort.record(backend, segments, input.segments.len() as u32, keys_in, values_in, keys_out, values_out);
         let done = recorded.and_then(|_| backend.submit()).and_then(|times| {
             let stats = sort.stats(backend)?;

@@ -267,6 +267,7 @@ pub(super) fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: 
             max_workgroup_count: props.limits.max_compute_work_group_count,
             subgroup_size: (subgroup.subgroup_size > 0).then_some(subgroup.subgroup_size),
             max_buffer_bytes,
+            serial_invocations: false,
         };
 
         // A compute queue, preferring one that can write timestamps.

@@ -199,7 +199,7 @@ impl Fragment {
         ]
     }
 
-    #[inline]
+    #[inline(always)]
     pub fn unpack(w: [u32; 4]) -> Self {
         let m = [w[0] & MANTISSA_MASK, (w[0] >> MANTISSA_BITS) & MANTISSA_MASK, w[1] & MANTISSA_MASK];
         Fragment {
@@ -220,14 +220,14 @@ impl Fragment {
     }
 
     /// Fragment `index` of a buffer of packed fragments.
-    #[inline]
+    #[inline(always)]
     pub fn load(m: &impl Load, index: u32) -> Self {
         let b = WORDS * index;
         Self::unpack([m.load(b), m.load(b + 1), m.load(b + 2), m.load(b + 3)])
     }
 
     /// Fragment `index` of a frame's dense array, with its footprint where the frame has them.
-    #[inline]
+    #[inline(always)]
     pub fn load_in(p: &SplatParams, m: &impl Load, index: u32) -> Self {
         let f = Self::load(m, index);
         let side = p.footprint_side();
@@ -284,17 +284,23 @@ impl Fragment {
     /// half a pixel (its own pixel).
     #[inline]
     pub fn radius(&self, lens: &ThinLens, cap: f32) -> f32 {
-        let reach = if self.has_footprint() { footprint::REACH } else { extent(self.level) };
-        let r = lens.coc_radius_px(self.depth) + reach;
-        let r = if r < cap { r } else { cap };
-        if r > 0.5 { r } else { 0.5 }
+        self.support(lens, cap).0
     }
 
     /// Whether the radius was capped (for the report).
     #[inline]
     pub fn is_capped(&self, lens: &ThinLens, cap: f32) -> bool {
+        self.support(lens, cap).1
+    }
+
+    /// [`Self::radius`] and [`Self::is_capped`] from one evaluation of the CoC.
+    #[inline]
+    pub fn support(&self, lens: &ThinLens, cap: f32) -> (f32, bool) {
         let reach = if self.has_footprint() { footprint::REACH } else { extent(self.level) };
-        lens.coc_radius_px(self.depth) + reach > cap
+        let r = lens.coc_radius_px(self.depth) + reach;
+        let capped = r > cap;
+        let r = if r < cap { r } else { cap };
+        (if r > 0.5 { r } else { 0.5 }, capped)
     }
 }
 

@@ -318,9 +318,9 @@ pub fn merge_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, layers:
         let region = p.cell_region(o);
         let c = cell_fragments(&layers, &counts, p, o, |f| {
             f.store_in(p, &mut dense, region + n);
-            let r = f.radius(&p.lens, p.max_radius);
+            let (r, cut) = f.support(&p.lens, p.max_radius);
             widest = if r > widest { r } else { widest };
-            capped += f.is_capped(&p.lens, p.max_radius) as u32;
+            capped += cut as u32;
             n += 1;
         });
         cells.store(o, n);

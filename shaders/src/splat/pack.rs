@@ -262,12 +262,13 @@ pub fn pack_pass<G: Group, R: Load, M: Mem>(
         let mut widest = 0.0f32;
         let region = p.cell_region(i);
         while w.advance(&layers, p) {
+            // Merged, only the sharp front and the statistics are this pass's.
             if p.cell == 1 {
                 w.head.store_in(p, &mut dense, region + kept);
+                let (r, cut) = w.head.support(&p.lens, p.max_radius);
+                widest = if r > widest { r } else { widest };
+                capped += cut as u32;
             }
-            let r = w.head.radius(&p.lens, p.max_radius);
-            widest = if r > widest { r } else { widest };
-            capped += w.head.is_capped(&p.lens, p.max_radius) as u32;
             kept += 1;
         }
         if w.has_sharp() {

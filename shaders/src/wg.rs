@@ -23,6 +23,27 @@ pub fn inclusive_scan<G: Group, const N: usize>(g: &mut G, sh: &mut [u32; N], ba
     src
 }
 
+/// The reduction under `op` (associative and commutative) of `sh[base .. base + n]`, `n` the
+/// workgroup size (a power of two; one word per invocation, written before the call), which it
+/// overwrites: a tree, halving the active invocations at each of its log2(n) barriers, so it does
+/// `n − 1` operations where [`inclusive_scan`] does `n log2 n`. Every invocation gets the result.
+pub fn reduce<G: Group, const N: usize>(g: &mut G, sh: &mut [u32; N], base: usize, op: impl Fn(u32, u32) -> u32) -> u32 {
+    let mut half = g.size() / 2;
+    while half > 0 {
+        g.each(|lid| {
+            if lid < half {
+                let i = base + lid as usize;
+                sh[i] = op(sh[i], sh[i + half as usize]);
+            }
+        });
+        half /= 2;
+    }
+    // Read in a step of its own, so that no invocation overwrites the word before all have read it.
+    let mut total = 0;
+    g.each(|_| total = sh[base]);
+    total
+}
+
 #[inline]
 pub fn add(a: u32, b: u32) -> u32 {
     a.wrapping_add(b)

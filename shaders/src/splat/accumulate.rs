@@ -34,7 +34,7 @@ use crate::exec::{Group, Load, Mem};
 use crate::footprint;
 use crate::lane::{LaneMask, Lanes};
 use crate::lens::is_nan;
-use crate::wg::{inclusive_scan, max};
+use crate::wg::{max, reduce};
 
 /// Coverage short of full at which a pixel stops.
 pub const SATURATED: f32 = 1.0 / 1024.0;
@@ -62,10 +62,10 @@ const CH_W: usize = 14 * T;
 const CH_M: usize = 15 * T;
 /// The fragment's alpha.
 const CH_O: usize = 16 * T;
-/// Two halves for the "any pixel still active" scan.
+/// The "any pixel still active" reduction (and the list's translucent end's).
 const ACTIVE: usize = 17 * T;
 /// The pixel's [`Surfaces`] between chunks.
-const SURFACES: usize = 19 * T;
+const SURFACES: usize = 18 * T;
 /// The fragment's footprint ([`crate::footprint`]; `WHOLE`: splatted from its centre).
 const CH_F: usize = SURFACES + surfaces::WORDS * T;
 pub const SHARED_WORDS: usize = CH_F + T;
@@ -202,9 +202,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
         }
         sh[ACTIVE + lid as usize] = end;
     });
-    let s = inclusive_scan(g, sh, ACTIVE, max);
-    let mut translucent_end = 0;
-    g.each(|_| translucent_end = sh[s + T - 1]);
+    let translucent_end = reduce(g, sh, ACTIVE, max);
     g.each(|lid| {
         let mut f = ACC_R;
         while f <= VISITED {
@@ -339,10 +337,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                 l += 1;
             }
         });
-        let s = inclusive_scan(g, sh, ACTIVE, max);
-        let mut any = 0;
-        g.each(|_| any = sh[s + T - 1]);
-        active = any;
+        active = reduce(g, sh, ACTIVE, max);
         start += THREADS;
     }
     g.each(|lid| {
@@ -385,6 +380,6 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
 
 kernel!(
     /// Front-to-back accumulation of the sorted tile lists (or copy-through) into `out` (3 words a pixel).
-    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 24 * 256]
+    ACCUMULATE = splat_accumulate [256] (SplatParams) shared [u32; 23 * 256]
         { read sharp, read dense, read values, read segments, read copy, out, st, read mask } => accumulate_pass
 );

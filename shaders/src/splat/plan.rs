@@ -14,7 +14,7 @@ use super::pack::{input_slot, is_valid};
 use super::{MAX_RINGS, SplatParams, THREADS, stats};
 use crate::exec::{Group, Load, Mem};
 use crate::slot::clamp_alpha;
-use crate::wg::{inclusive_scan, max};
+use crate::wg::{max, reduce};
 
 /// Rings and radius cap for the widest radius present: fragments merged into cells of `cell` pixels
 /// reach half a cell beyond their CoC, and `cap` (the configured cap, at most `MAX_RINGS` tiles)
@@ -74,10 +74,10 @@ pub fn reduce_pass<G: Group, R: Load, M: Mem>(
         }
         sh[lid as usize] = widest.to_bits();
     });
-    let w = inclusive_scan(g, sh, 0, max);
+    let w = reduce(g, sh, 0, max);
     g.each(|lid| {
-        if lid == THREADS - 1 {
-            st.atomic_max(stats::WIDEST, sh[w + lid as usize]);
+        if lid == 0 {
+            st.atomic_max(stats::WIDEST, w);
         }
     });
 }

@@ -164,19 +164,20 @@ macro_rules! pass_with_avx2 {
 mod wide {
     use super::{LaneMask, Lanes};
     use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
+    use core::simd::cmp::SimdPartialOrd;
+    use core::simd::num::SimdFloat;
+    use core::simd::{Mask, Select, Simd};
 
     const W: usize = 8;
 
-    /// Eight pixels' values. Each operation is a loop over the lanes without a branch, which the
-    /// compiler emits as vector instructions.
+    /// Eight pixels' values, a portable SIMD vector: each operation is the lanes' IEEE operation,
+    /// which the compiler emits as one vector instruction.
     #[derive(Clone, Copy, Debug, PartialEq)]
-    #[repr(C, align(32))]
-    pub struct Wide(pub [f32; W]);
+    pub struct Wide(pub Simd<f32, W>);
 
-    /// Eight pixels' conditions, as SIMD compares give them: all bits set where true.
+    /// Eight pixels' conditions, as SIMD compares give them.
     #[derive(Clone, Copy, Debug, PartialEq)]
-    #[repr(C, align(32))]
-    pub struct WideMask(pub [u32; W]);
+    pub struct WideMask(pub Mask<i32, W>);
 
     macro_rules! lanewise {
         ($ty:ident, $tr:ident, $f:ident, $op:tt) => {
@@ -184,13 +185,7 @@ mod wide {
                 type Output = $ty;
                 #[inline(always)]
                 fn $f(self, o: $ty) -> $ty {
-                    let mut r = self.0;
-                    let mut l = 0;
-                    while l < W {
-                        r[l] = self.0[l] $op o.0[l];
-                        l += 1;
-                    }
-                    $ty(r)
+                    $ty(self.0 $op o.0)
                 }
             }
         };
@@ -206,7 +201,7 @@ mod wide {
         type Output = Wide;
         #[inline(always)]
         fn neg(self) -> Wide {
-            Wide(self.0.map(|v| -v))
+            Wide(-self.0)
         }
     }
 
@@ -214,13 +209,8 @@ mod wide {
         type Output = WideMask;
         #[inline(always)]
         fn not(self) -> WideMask {
-            WideMask(self.0.map(|m| !m))
+            WideMask(!self.0)
         }
-    }
-
-    #[inline(always)]
-    fn mask(b: bool) -> u32 {
-        (b as u32).wrapping_neg()
     }
 
     impl Lanes for Wide {
@@ -228,11 +218,11 @@ mod wide {
         const N: usize = W;
         #[inline(always)]
         fn splat(x: f32) -> Wide {
-            Wide([x; W])
+            Wide(Simd::splat(x))
         }
         #[inline(always)]
         fn from_fn(f: impl FnMut(usize) -> f32) -> Wide {
-            Wide(core::array::from_fn(f))
+            Wide(Simd::from_array(core::array::from_fn(f)))
         }
         #[inline(always)]
         fn lane(self, l: usize) -> f32 {
@@ -240,42 +230,45 @@ mod wide {
         }
         #[inline(always)]
         fn sqrt(self) -> Wide {
-            Wide(self.0.map(f32::sqrt))
+            Wide(std::simd::StdFloat::sqrt(self.0))
         }
         #[inline(always)]
         fn lt(self, o: Wide) -> WideMask {
-            WideMask(core::array::from_fn(|l| mask(self.0[l] < o.0[l])))
+            WideMask(self.0.simd_lt(o.0))
         }
         #[inline(always)]
         fn le(self, o: Wide) -> WideMask {
-            WideMask(core::array::from_fn(|l| mask(self.0[l] <= o.0[l])))
+            WideMask(self.0.simd_le(o.0))
         }
         #[inline(always)]
         fn select(m: WideMask, a: Wide, b: Wide) -> Wide {
-            Wide(core::array::from_fn(|l| f32::from_bits((m.0[l] & a.0[l].to_bits()) | (!m.0[l] & b.0[l].to_bits()))))
+            Wide(m.0.select(a.0, b.0))
         }
         #[inline(always)]
         fn max_lane(self) -> f32 {
-            self.0.iter().fold(f32::NEG_INFINITY, |m, &v| if v > m { v } else { m })
+            // NaN lanes ignored, as the scalar fold over `v > m` ignores them; −inf for none.
+            let v = self.0;
+            let v = v.is_nan().select(Simd::splat(f32::NEG_INFINITY), v);
+            v.reduce_max()
         }
     }
 
     impl LaneMask for WideMask {
         #[inline(always)]
         fn splat(b: bool) -> WideMask {
-            WideMask([mask(b); W])
+            WideMask(Mask::splat(b))
         }
         #[inline(always)]
-        fn from_fn(mut f: impl FnMut(usize) -> bool) -> WideMask {
-            WideMask(core::array::from_fn(|l| mask(f(l))))
+        fn from_fn(f: impl FnMut(usize) -> bool) -> WideMask {
+            WideMask(Mask::from_array(core::array::from_fn(f)))
         }
         #[inline(always)]
         fn test(self, l: usize) -> bool {
-            self.0[l] != 0
+            self.0.test(l)
         }
         #[inline(always)]
         fn any(self) -> bool {
-            self.0.iter().fold(0, |a, &m| a | m) != 0
+            self.0.any()
         }
     }
 }

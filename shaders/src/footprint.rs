@@ -69,7 +69,7 @@ fn asin<V: Lanes>(x: V) -> V {
 // The integrals below run per destination pixel, or for several at once ([`crate::lane`]): their
 // branches are selects, and the closed form is computed only where some pixel needs it. The disc's
 // radius is the fragment's, the same for every pixel. Always inlined, so that the splat walk's copy
-// for AVX2 (`crate::pass_with_avx2`) has them in AVX2 too.
+// for AVX2 and AVX-512 (`crate::pass_with_simd`) has them in those instructions too.
 
 /// `∫ s(x) dx` with `s(x) = √(r² − x²)`, for `x` in `[−r, r]`.
 #[inline(always)]

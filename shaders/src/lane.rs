@@ -107,52 +107,74 @@ pub type Native = f32;
 #[cfg(not(target_arch = "spirv"))]
 pub type Native = Wide;
 
-/// Which copy of the passes defined with [`pass_with_avx2!`](crate::pass_with_avx2) the CPU backend
+/// Which copy of the passes defined with [`pass_with_simd!`](crate::pass_with_simd) the CPU backend
 /// runs.
 #[cfg(not(target_arch = "spirv"))]
 pub mod isa {
-    use core::sync::atomic::{AtomicBool, Ordering::Relaxed};
+    use core::sync::atomic::{AtomicU8, Ordering::Relaxed};
 
-    static AVX2_ALLOWED: AtomicBool = AtomicBool::new(true);
-
-    /// Whether the copies compiled for AVX2 run where the CPU has AVX2 (the default), or the
-    /// baseline copies everywhere: for comparing the two, which give the same bits. Process-wide.
-    pub fn allow_avx2(allowed: bool) {
-        AVX2_ALLOWED.store(allowed, Relaxed)
+    /// The instruction sets a pass has a copy for, widest last.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+    pub enum Isa {
+        /// The target's baseline (SSE2 on x86-64).
+        Baseline,
+        /// AVX2: 16 vector registers of eight lanes.
+        Avx2,
+        /// AVX-512 (F and VL) on the same eight lanes: 32 vector registers and mask registers.
+        Avx512,
     }
 
-    /// Whether a pass runs its AVX2 copy now.
+    static LIMIT: AtomicU8 = AtomicU8::new(Isa::Avx512 as u8);
+
+    /// The widest copy the passes may run (`Avx512`, the default: the widest the CPU has), for
+    /// comparing the copies, which give the same bits. Process-wide.
+    pub fn limit(isa: Isa) {
+        LIMIT.store(isa as u8, Relaxed)
+    }
+
+    /// The copy a pass runs now: the widest the CPU has, within [`limit`].
     #[inline]
-    pub fn avx2() -> bool {
+    pub fn current() -> Isa {
+        let limit = LIMIT.load(Relaxed);
         #[cfg(target_arch = "x86_64")]
         {
-            AVX2_ALLOWED.load(Relaxed) && std::is_x86_feature_detected!("avx2")
+            if limit >= Isa::Avx512 as u8 && std::is_x86_feature_detected!("avx512f") && std::is_x86_feature_detected!("avx512vl") {
+                return Isa::Avx512;
+            }
+            if limit >= Isa::Avx2 as u8 && std::is_x86_feature_detected!("avx2") {
+                return Isa::Avx2;
+            }
         }
-        #[cfg(not(target_arch = "x86_64"))]
-        {
-            false
-        }
+        let _ = limit;
+        Isa::Baseline
     }
 }
 
-/// Defines a kernel pass whose lane arithmetic ([`Wide`]) fills 256-bit registers where the CPU
-/// has AVX2: on x86-64 the body is compiled a second time, in a function with the AVX2 target
-/// feature (the closures the body passes to `Group::each` are compiled with it too), which the pass
-/// calls where the CPU has it ([`isa`]). The same IEEE operations either way (no fused multiply-add), so the
-/// same bits. Elsewhere, and on the GPU, the pass is the body.
+/// Defines a kernel pass whose lane arithmetic ([`Wide`]) runs in the widest vector instructions
+/// the CPU has: on x86-64 the body is compiled twice more, in functions with the AVX2 and the
+/// AVX-512 (F, VL) target features (the closures the body passes to `Group::each` are compiled
+/// with them too), and the pass calls the widest copy the CPU has ([`isa`]). The same IEEE
+/// operations in every copy (no fused multiply-add), so the same bits. Elsewhere, and on the GPU,
+/// the pass is the body.
 #[macro_export]
-macro_rules! pass_with_avx2 {
+macro_rules! pass_with_simd {
     ($(#[$m:meta])* pub fn $name:ident<$($gp:ident: $gb:path),*>($($arg:ident: $ty:ty),* $(,)?) $body:block) => {
         $(#[$m])*
         pub fn $name<$($gp: $gb),*>($($arg: $ty),*) {
             #[cfg(all(not(target_arch = "spirv"), target_arch = "x86_64"))]
             {
+                #[target_feature(enable = "avx2,avx512f,avx512vl")]
+                #[allow(clippy::too_many_arguments)]
+                unsafe fn avx512<$($gp: $gb),*>($($arg: $ty),*) $body
                 #[target_feature(enable = "avx2")]
                 #[allow(clippy::too_many_arguments)]
                 unsafe fn avx2<$($gp: $gb),*>($($arg: $ty),*) $body
-                if $crate::lane::isa::avx2() {
+                match $crate::lane::isa::current() {
+                    // SAFETY: the CPU has AVX-512 F and VL.
+                    $crate::lane::isa::Isa::Avx512 => return unsafe { avx512($($arg),*) },
                     // SAFETY: the CPU has AVX2.
-                    return unsafe { avx2($($arg),*) };
+                    $crate::lane::isa::Isa::Avx2 => return unsafe { avx2($($arg),*) },
+                    $crate::lane::isa::Isa::Baseline => {}
                 }
             }
             $body

@@ -139,7 +139,7 @@ fn first_behind<const N: usize>(sh: &[u32; N], n: u32, z: f32) -> u32 {
     lo
 }
 
-crate::pass_with_avx2! {
+crate::pass_with_simd! {
 #[allow(clippy::too_many_arguments)]
 pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
@@ -154,7 +154,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
     st: M,
     mask: R,
 ) {
-    // (`pass_with_avx2!` takes parameters as plain names.)
+    // (`pass_with_simd!` takes parameters as plain names.)
     let (mut out, mut st) = (out, st);
     let p = &super::planned(p, &st);
     let [wx, wy, _] = g.workgroup_id();

@@ -182,7 +182,8 @@ macro_rules! pass_with_simd {
     };
 }
 
-#[cfg(not(target_arch = "spirv"))]
+/// With `portable-simd` (a nightly compiler): `core::simd` vectors and masks.
+#[cfg(all(not(target_arch = "spirv"), feature = "portable-simd"))]
 mod wide {
     use super::{LaneMask, Lanes};
     use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
@@ -291,6 +292,127 @@ mod wide {
         #[inline(always)]
         fn any(self) -> bool {
             self.0.any()
+        }
+    }
+}
+
+/// Without `portable-simd` (stable Rust): arrays whose lane loops the compiler vectorises.
+#[cfg(all(not(target_arch = "spirv"), not(feature = "portable-simd")))]
+mod wide {
+    use super::{LaneMask, Lanes};
+    use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
+
+    const W: usize = 8;
+
+    /// Eight pixels' values. Each operation is a loop over the lanes without a branch, which the
+    /// compiler emits as vector instructions.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    #[repr(C, align(32))]
+    pub struct Wide(pub [f32; W]);
+
+    /// Eight pixels' conditions, as SIMD compares give them: all bits set where true.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    #[repr(C, align(32))]
+    pub struct WideMask(pub [u32; W]);
+
+    macro_rules! lanewise {
+        ($ty:ident, $tr:ident, $f:ident, $op:tt) => {
+            impl $tr for $ty {
+                type Output = $ty;
+                #[inline(always)]
+                fn $f(self, o: $ty) -> $ty {
+                    let mut r = self.0;
+                    let mut l = 0;
+                    while l < W {
+                        r[l] = self.0[l] $op o.0[l];
+                        l += 1;
+                    }
+                    $ty(r)
+                }
+            }
+        };
+    }
+    lanewise!(Wide, Add, add, +);
+    lanewise!(Wide, Sub, sub, -);
+    lanewise!(Wide, Mul, mul, *);
+    lanewise!(Wide, Div, div, /);
+    lanewise!(WideMask, BitAnd, bitand, &);
+    lanewise!(WideMask, BitOr, bitor, |);
+
+    impl Neg for Wide {
+        type Output = Wide;
+        #[inline(always)]
+        fn neg(self) -> Wide {
+            Wide(self.0.map(|v| -v))
+        }
+    }
+
+    impl Not for WideMask {
+        type Output = WideMask;
+        #[inline(always)]
+        fn not(self) -> WideMask {
+            WideMask(self.0.map(|m| !m))
+        }
+    }
+
+    #[inline(always)]
+    fn mask(b: bool) -> u32 {
+        (b as u32).wrapping_neg()
+    }
+
+    impl Lanes for Wide {
+        type Mask = WideMask;
+        const N: usize = W;
+        #[inline(always)]
+        fn splat(x: f32) -> Wide {
+            Wide([x; W])
+        }
+        #[inline(always)]
+        fn from_fn(f: impl FnMut(usize) -> f32) -> Wide {
+            Wide(core::array::from_fn(f))
+        }
+        #[inline(always)]
+        fn lane(self, l: usize) -> f32 {
+            self.0[l]
+        }
+        #[inline(always)]
+        fn sqrt(self) -> Wide {
+            Wide(self.0.map(f32::sqrt))
+        }
+        #[inline(always)]
+        fn lt(self, o: Wide) -> WideMask {
+            WideMask(core::array::from_fn(|l| mask(self.0[l] < o.0[l])))
+        }
+        #[inline(always)]
+        fn le(self, o: Wide) -> WideMask {
+            WideMask(core::array::from_fn(|l| mask(self.0[l] <= o.0[l])))
+        }
+        #[inline(always)]
+        fn select(m: WideMask, a: Wide, b: Wide) -> Wide {
+            Wide(core::array::from_fn(|l| f32::from_bits((m.0[l] & a.0[l].to_bits()) | (!m.0[l] & b.0[l].to_bits()))))
+        }
+        #[inline(always)]
+        fn max_lane(self) -> f32 {
+            self.0.iter().fold(f32::NEG_INFINITY, |m, &v| if v > m { v } else { m })
+        }
+    }
+
+    impl LaneMask for WideMask {
+        #[inline(always)]
+        fn splat(b: bool) -> WideMask {
+            WideMask([mask(b); W])
+        }
+        #[inline(always)]
+        fn from_fn(mut f: impl FnMut(usize) -> bool) -> WideMask {
+            WideMask(core::array::from_fn(|l| mask(f(l))))
+        }
+        #[inline(always)]
+        fn test(self, l: usize) -> bool {
+            self.0[l] != 0
+        }
+        #[inline(always)]
+        fn any(self) -> bool {
+            self.0.iter().fold(0, |a, &m| a | m) != 0
         }
     }
 }

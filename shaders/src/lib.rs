@@ -4,8 +4,8 @@
 //! `#[spirv(compute)]` entry points that [`kernel!`] generates) and linked into the host as the CPU
 //! backend. See [`exec`] for the execution model and [`kernel`] for how entry points are declared.
 #![cfg_attr(target_arch = "spirv", no_std)]
-// The CPU backend's lane type (`lane::Wide`) is a portable SIMD vector.
-#![cfg_attr(not(target_arch = "spirv"), feature(portable_simd))]
+// The CPU backend's lane type (`lane::Wide`) as a portable SIMD vector, on a nightly compiler.
+#![cfg_attr(all(not(target_arch = "spirv"), feature = "portable-simd"), feature(portable_simd))]
 // Kernel code keeps nested conditions, `% 2` and hand-written clamps: `f32::clamp` asserts its
 // bounds, and a panic path is what kernels avoid.
 #![allow(clippy::collapsible_if, clippy::manual_is_multiple_of, clippy::manual_clamp)]

@@ -353,8 +353,11 @@ fn serial_sort<const N: usize, M: Mem>(sh: &mut [u32; N], scratch: &mut GlobalPa
         while i < e {
             let (k, p) = shared.get(i);
             let mut m = i;
-            while m > s && shared.get(m - 1).0 > k {
+            while m > s {
                 let (pk, pp) = shared.get(m - 1);
+                if pk <= k {
+                    break;
+                }
                 shared.set(m, pk, pp);
                 m -= 1;
             }

@@ -23,7 +23,7 @@ use super::fragment::Fragment;
 use super::planned;
 use super::{SplatParams, THREADS, stats};
 use crate::exec::{Group, Load, Mem};
-use crate::wg::{add, for_each_item, inclusive_scan, max};
+use crate::wg::{add, for_each_item, inclusive_scan, max, reduce};
 
 /// Cells one invocation of `splat_tile_count` handles: (32 px / 1 px)² = 4 · 256.
 pub const CELLS_PER_THREAD: u32 = 4;
@@ -113,7 +113,7 @@ pub fn fragment_reaches(p: &SplatParams, f: &Fragment, tx: u32, ty: u32) -> bool
 pub fn tile_count_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
     p: &SplatParams,
-    sh: &mut [u32; 4 * THREADS as usize],
+    sh: &mut [u32; 3 * THREADS as usize],
     cells: R,
     mut tile_count: M,
     mut offsets: M,
@@ -136,7 +136,7 @@ pub fn tile_count_pass<G: Group, R: Load, M: Mem>(
         sh[radii + lid as usize] = widest.to_bits();
     });
     let sums = inclusive_scan(g, sh, 0, add);
-    let widest = inclusive_scan(g, sh, radii, max);
+    let widest = reduce(g, sh, radii, max);
     g.each(|lid| {
         let mut running = if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
         each_cell(p, tx, ty, lid, |cell| {
@@ -147,7 +147,7 @@ pub fn tile_count_pass<G: Group, R: Load, M: Mem>(
         if lid == THREADS - 1 {
             let total = sh[sums + lid as usize];
             tile_count.store(t, total);
-            tile_radius.store(t, sh[widest + lid as usize]);
+            tile_radius.store(t, widest);
             if total > 0 {
                 st.atomic_add(stats::TILED, total);
             }
@@ -250,10 +250,7 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
             }
             sh[lid as usize] = kept;
         });
-        let sums = inclusive_scan(g, sh, 0, add);
-        let mut chunk_total = 0;
-        g.each(|_| chunk_total = sh[sums + t_usize - 1]);
-        count += chunk_total;
+        count += reduce(g, sh, 0, add);
         start += THREADS * CANDIDATES_PER_THREAD;
         chunk += 1;
     }
@@ -505,7 +502,7 @@ impl Cursor {
 
 kernel!(
     /// Per-tile fragment counts, cell offsets inside tiles and largest radius.
-    TILE_COUNT = splat_tile_count [256] (SplatParams) shared [u32; 4 * 256]
+    TILE_COUNT = splat_tile_count [256] (SplatParams) shared [u32; 3 * 256]
         { read cells, tile_count, offsets, tile_radius, st } => tile_count_pass
 );
 kernel!(

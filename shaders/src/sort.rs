@@ -88,16 +88,17 @@ pub fn pow2_ceil(n: u32) -> u32 {
 }
 
 /// The two positions compared by comparator `t` of step `j` in merge stage `k` of the flip network.
+/// `k` and `j` are powers of two, so blocks are found with masks: no division (a GPU runs an
+/// integer division as a long instruction sequence, and this runs for every comparator).
 #[inline]
 pub fn comparator(t: u32, k: u32, j: u32) -> (u32, u32) {
-    if j == k / 2 {
-        // Flip: compare mirrored positions of each k-block.
-        let half = k / 2;
-        let base = (t / half) * k;
-        let pos = t % half;
-        (base + pos, base + k - 1 - pos)
+    // The comparator's pair of `2 j` positions starts at `(t / j) · 2 j`.
+    let lo = ((t & !(j - 1)) << 1) + (t & (j - 1));
+    if j == k >> 1 {
+        // Flip: compare mirrored positions of each k-block (here `2 j = k`).
+        let base = (t & !(j - 1)) << 1;
+        (lo, base + k - 1 - (t & (j - 1)))
     } else {
-        let lo = (t / j) * 2 * j + t % j;
         (lo, lo + j)
     }
 }

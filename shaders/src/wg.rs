@@ -23,6 +23,38 @@ pub fn inclusive_scan<G: Group, const N: usize>(g: &mut G, sh: &mut [u32; N], ba
     src
 }
 
+/// Two inclusive scans side by side, `op_a` over `sh[a .. a + n]` and `op_b` over `sh[b .. b + n]`
+/// (`n` the workgroup size, one word per invocation each), both restarting wherever the segment id
+/// at `sh[segs + i]` changes (ids non-decreasing in `i`): the scans of several short runs at once,
+/// one run per segment. Each ping-pongs with the `n` words after it; returns the offsets of the
+/// halves that hold the results. Hillis-Steele: log2(n) barriers for both.
+pub fn segmented_scans<G: Group, const N: usize>(
+    g: &mut G,
+    sh: &mut [u32; N],
+    (a, b, segs): (usize, usize, usize),
+    op_a: impl Fn(u32, u32) -> u32,
+    op_b: impl Fn(u32, u32) -> u32,
+) -> (usize, usize) {
+    let threads = g.size();
+    let t = threads as usize;
+    let mut flip = false;
+    let mut d = 1u32;
+    while d < threads {
+        g.each(|lid| {
+            let (src_a, src_b) = if flip { (a + t, b + t) } else { (a, b) };
+            let (dst_a, dst_b) = if flip { (a, b) } else { (a + t, b + t) };
+            let i = lid as usize;
+            let (own_a, own_b) = (sh[src_a + i], sh[src_b + i]);
+            let same = lid >= d && sh[segs + (lid - d) as usize] == sh[segs + i];
+            sh[dst_a + i] = if same { op_a(sh[src_a + (lid - d) as usize], own_a) } else { own_a };
+            sh[dst_b + i] = if same { op_b(sh[src_b + (lid - d) as usize], own_b) } else { own_b };
+        });
+        flip = !flip;
+        d *= 2;
+    }
+    if flip { (a + t, b + t) } else { (a, b) }
+}
+
 /// The reduction under `op` (associative and commutative) of `sh[base .. base + n]`, `n` the
 /// workgroup size (a power of two; one word per invocation, written before the call), which it
 /// overwrites: a tree, halving the active invocations at each of its log2(n) barriers, so it does

@@ -9,6 +9,8 @@
 //! - [`sampling`]: stratified lens samples and the concentric disc mapping (ray tracing's lens samples);
 //! - [`shaders`]: the embedded SPIR-V modules (prebuilt in `host/spirv/`, or compiled with the
 //!   `rebuild-spirv` feature), and the hash of the kernel sources they were built from;
+//! - [`kernel_shape`]: the GPU shape of each embedded kernel, read from its SPIR-V (per-invocation
+//!   arrays, workgroup memory, barriers, divisions, subgroup operations), with no GPU;
 //! - [`error`]: the errors of every call.
 //!
 //! It depends on nothing of the project but the kernels. Multi-layer images, scenes and their
@@ -26,6 +28,7 @@ pub mod aperture;
 pub mod backend;
 pub mod error;
 pub mod frame;
+pub mod kernel_shape;
 pub mod ops;
 pub mod sampling;
 pub mod shaders;

@@ -24,8 +24,10 @@
 //! where fragments from outside the image are missing, and holes left by dropped input). Colours are
 //! at most `radiance::COLOR_MAX` = 2^100 and the coverage weights sum to at most 1, so the sums stay
 //! finite, and so does the normalisation (by a coverage of at least 1e-6). A tile no list reaches
-//! (`copy`) writes its sharp fronts directly.
+//! (`copy`) writes its sharp fronts directly; a thinned list's wide fragments take the share of
+//! their lattice blocks (`bin::thin_weight`).
 
+use super::bin::{TILE_COPY, TILE_THIN_SHIFT, thin_weight};
 use super::fragment::{self, Fragment, shaped_weight, weight_sum};
 use super::pack::load_sharp;
 use super::surfaces::{self, Surfaces};
@@ -175,7 +177,8 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
         out.store(i + 2, c[2].to_bits());
     };
 
-    if copy.load(t) != 0 {
+    let tile = copy.load(t);
+    if tile & TILE_COPY != 0 {
         g.each(|lid| {
             let (ok, x, y) = pixel(lid);
             if ok {
@@ -186,6 +189,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
         return;
     }
 
+    let thin = tile >> TILE_THIN_SHIFT;
     let offset = segments.load(2 * t);
     let len = segments.load(2 * t + 1);
     // Where the list's last translucent entry ends. Only a translucent fragment reads a pixel's
@@ -229,8 +233,10 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                 set(sh, CH_Y, lid, c[1]);
                 set(sh, CH_S, lid, r);
                 let mirror = if f.depth < p.lens.focus_distance { -1.0 } else { 1.0 };
-                // A footprint's weights are normalised already.
+                // A footprint's weights are normalised already. A thinned list's wide fragments
+                // stand for their lattice blocks.
                 let share = if f.has_footprint() { 1.0 } else { f.footprint() / weight_sum(c, r, f.rim(), &p.aperture, mirror, &mask) };
+                let share = share * thin_weight(p, thin, r);
                 set(sh, CH_A, lid, share);
                 sh[CH_F + lid as usize] = f.footprint;
                 set(sh, CH_W, lid, f.rim());

@@ -1,37 +1,84 @@
 //! Stage 3: tile lists (Franke et al. 2018, §5.1).
 //!
-//! - `splat_tile_count` (one workgroup per tile): fragments per tile, each cell's offset inside its
-//!   tile (a scan of the partially filled cells: the index that lets every thread take fragments of
-//!   any pixel evenly), and the largest fragment radius in the tile.
+//! - `splat_tile_count` (one cell an invocation, as many tiles a workgroup as that fills):
+//!   fragments per tile, each cell's offset inside its tile (a scan of the partially filled cells:
+//!   the index that lets every thread take fragments of any pixel evenly), and the largest
+//!   fragment radius in the tile.
 //! - `splat_alloc` (one invocation per tile): whether any tile within `rings` has fragments whose
 //!   largest radius can reach this tile (the lists hold blurred fragments only); a tile none reaches
 //!   is copied through.
-//! - `splat_bin` (one workgroup per tile): every invocation takes sixteen candidates at a time from the
-//!   neighbours' fragments and keeps those whose disc reaches a pixel centre of the tile. A
-//!   neighbour's candidates are its fragments in the dense array, cell by cell in the tile, each
-//!   cell's in its region ([`SplatParams::cell_region`], written by packing or merging), found
+//! - `splat_bin` (one workgroup per tile): every invocation takes candidates from the neighbours'
+//!   fragments (one at a time on a GPU, sixteen consecutive ones where invocations run one after
+//!   another: [`candidates_per_thread`]) and keeps those whose disc reaches a pixel centre of the
+//!   tile. A neighbour's candidates are its fragments in the dense array, cell by cell in the tile,
+//!   each cell's in its region ([`SplatParams::cell_region`], written by packing or merging), found
 //!   through the cells' offsets in the tile. A first sweep counts them, one atomic takes exactly
-//!   that many entries from the list pool (a list that does not fit is counted as overflow and its
-//!   tile copied through: a bounded, reported degradation rather than a write out of bounds), and a
-//!   second sweep writes them in place through a workgroup scan, from the first sweep's results
-//!   where workgroup memory kept them (the first 8192 candidates) and testing again beyond. The
-//!   destination tile gathers its list (rather than sources scattering with atomics), so every list
-//!   comes out in the same order on every backend, in dense order, and the stable sort that follows
-//!   is deterministic.
+//!   that many entries from the list pool, and a second sweep writes them in place through a
+//!   workgroup scan, from the first sweep's results where workgroup memory kept them and testing
+//!   again beyond. A list that does not fit the sort or the pool is thinned ([`thin_keeps`]) until
+//!   it does, and the frame reports it; only a list that fits at no level leaves its tile sharp
+//!   (counted as overflow). The destination tile gathers its list (rather than sources scattering
+//!   with atomics), so every list comes out in the same order on every backend, in dense order,
+//!   and the stable sort that follows is deterministic.
 
 use super::fragment::Fragment;
 use super::planned;
-use super::{SplatParams, THREADS, stats};
+use super::{FLAG_SERIAL, SplatParams, THREADS, stats};
 use crate::exec::{Group, Load, Mem};
-use crate::wg::{add, for_each_item, inclusive_scan, max, reduce};
+use crate::wg::{add, for_each_item, inclusive_scan, max, reduce, segmented_scans};
 
-/// Cells one invocation of `splat_tile_count` handles: (32 px / 1 px)² = 4 · 256.
-pub const CELLS_PER_THREAD: u32 = 4;
-/// Candidates one invocation of `splat_bin` takes at a time: consecutive ones, so that one search
-/// for the first one's cell serves them all (on the CPU, binning `railing` at 1920x1080 merged 4x4
-/// took 115 ms with 8, 101 ms with 16).
-pub const CANDIDATES_PER_THREAD: u32 = 16;
+/// Tiles one workgroup of `splat_tile_count` counts: one cell an invocation, so as many tiles as
+/// its invocations hold (16 of 4x4-merged 16-px tiles), or one tile where a tile has more cells
+/// than the workgroup has invocations (each then takes a run of consecutive cells).
+#[inline]
+pub fn tiles_per_count_group(p: &SplatParams) -> u32 {
+    let cells = p.cells_per_tile_edge() * p.cells_per_tile_edge();
+    if cells >= THREADS { 1 } else { THREADS / cells }
+}
+/// Candidates one invocation of `splat_bin` tests at a time where a workgroup's invocations run one
+/// after another (`FLAG_SERIAL`, the CPU backend): consecutive ones, so that one search for the
+/// first one's cell serves them all (binning `railing` at 1920x1080 merged 4x4 took 115 ms with 8,
+/// 101 ms with 16). A GPU takes one: adjacent invocations test adjacent candidates, so their loads
+/// coalesce and every invocation is busy while a list has 256 candidates left.
+pub const SERIAL_CANDIDATES_PER_THREAD: u32 = 16;
 const NONE: u32 = u32::MAX;
+
+/// The candidates an invocation of `splat_bin` tests at a time on the device `p` was made for.
+#[inline]
+pub fn candidates_per_thread(p: &SplatParams) -> u32 {
+    if p.flags & FLAG_SERIAL != 0 { SERIAL_CANDIDATES_PER_THREAD } else { 1 }
+}
+
+/// `copy[t]`: the tile shows its sharp fronts only (no blur reaches it, or its list fits nowhere).
+pub const TILE_COPY: u32 = 1;
+/// `copy[t] >> TILE_THIN_SHIFT`: the tile's thinning level (0: its whole list).
+pub const TILE_THIN_SHIFT: u32 = 1;
+/// Deepest thinning: source cells on a lattice of 2^3 = 8 cells a side.
+pub const MAX_THIN: u32 = 3;
+
+/// Thinning, the fallback for a list too long for the sort or the pool. At level `k` the list keeps
+/// a wide fragment (radius at least [`thin_radius`]) only from the source cells on a lattice of
+/// `2^k` cells a side, and each such fragment stands for the `4^k` cells of its lattice block
+/// ([`thin_weight`]); narrower fragments are all kept. The list stays sorted and order-correct:
+/// the blur of a large disc is sampled from a coarser grid of sources, as merging does with the
+/// sources' colours averaged. Levels go up until the list fits; the frame reports the tiles thinned.
+#[inline]
+pub fn thin_keeps(p: &SplatParams, thin: u32, cell_x: u32, cell_y: u32, radius: f32) -> bool {
+    thin == 0 || (cell_x | cell_y) & ((1 << thin) - 1) == 0 || radius < thin_radius(p, thin)
+}
+
+/// The radius (px) from which fragments are thinned at level `thin`: two lattice spacings, so that
+/// a thinned disc always covers several lattice points' worth of pixels.
+#[inline]
+pub fn thin_radius(p: &SplatParams, thin: u32) -> f32 {
+    (2 * (p.cell << thin)) as f32
+}
+
+/// The share a kept fragment of radius `radius` takes at level `thin`: its lattice block's cells.
+#[inline]
+pub fn thin_weight(p: &SplatParams, thin: u32, radius: f32) -> f32 {
+    if thin > 0 && radius >= thin_radius(p, thin) { (1u32 << (2 * thin)) as f32 } else { 1.0 }
+}
 
 /// Index of cell `c` (row-major inside tile `(tx, ty)`), or `NONE` outside the cell grid.
 #[inline]
@@ -42,20 +89,6 @@ fn cell_of(p: &SplatParams, tx: u32, ty: u32, c: u32) -> u32 {
     }
     let (gx, gy) = (tx * ct + c % ct, ty * ct + c / ct);
     if gx < p.cells_x && gy < p.cells_y { gy * p.cells_x + gx } else { NONE }
-}
-
-/// Runs `f(cell)` for each cell invocation `lid` handles in tile `(tx, ty)` (consecutive, so their
-/// order across invocations is the tile's row-major cell order), skipping cells outside the grid.
-#[inline]
-fn each_cell(p: &SplatParams, tx: u32, ty: u32, lid: u32, mut f: impl FnMut(u32)) {
-    let mut i = 0;
-    while i < CELLS_PER_THREAD {
-        let cell = cell_of(p, tx, ty, lid * CELLS_PER_THREAD + i);
-        if cell != NONE {
-            f(cell);
-        }
-        i += 1;
-    }
 }
 
 /// Pixel span `[start, end)` of block `t` of `tile` pixels (a tile, or a cell) along an axis of
@@ -93,11 +126,9 @@ fn block_reaches(p: &SplatParams, (sx0, sx1): (f32, f32), (sy0, sy1): (f32, f32)
     gx * gx + gy * gy <= r * r
 }
 
-/// Whether fragment `f` covers a pixel centre of tile `(tx, ty)`.
+/// Whether a disc of radius `r` centred at `c` (pixels) covers a pixel centre of tile `(tx, ty)`.
 #[inline]
-pub fn fragment_reaches(p: &SplatParams, f: &Fragment, tx: u32, ty: u32) -> bool {
-    let r = f.radius(&p.lens, p.max_radius);
-    let c = f.centre();
+fn disc_reaches(p: &SplatParams, c: [f32; 2], r: f32, tx: u32, ty: u32) -> bool {
     let (tx0, tx1) = span(tx, p.tile, p.width);
     let (ty0, ty1) = span(ty, p.tile, p.height);
     let gx = gap(c[0], c[0], tx0 + 0.5, tx1 - 0.5);
@@ -109,50 +140,103 @@ pub fn fragment_reaches(p: &SplatParams, f: &Fragment, tx: u32, ty: u32) -> bool
 /// each cell's fragment count at `cells[c]` and its widest radius (f32 bits, 0 for none) at
 /// `cells[n + c]` (`n` cells in the frame, written by `pack` or `merge`); `offsets` gets the offset
 /// at `offsets[c]` and the radius again at `offsets[n + c]`, for binning (which writes its keys
-/// over `cells`).
+/// over `cells`). A workgroup takes [`tiles_per_count_group`] consecutive tiles, an invocation a
+/// cell (or a run of cells), the tiles' cells one after another; a scan per tile (segmented) gives
+/// the offsets, the tile's count and its widest radius.
 pub fn tile_count_pass<G: Group, R: Load, M: Mem>(
     g: &mut G,
     p: &SplatParams,
-    sh: &mut [u32; 3 * THREADS as usize],
+    sh: &mut [u32; 6 * THREADS as usize],
     cells: R,
     mut tile_count: M,
     mut offsets: M,
     mut tile_radius: M,
     mut st: M,
 ) {
-    let [tx, ty, _] = g.workgroup_id();
-    let t = ty * p.tiles_x + tx;
     let n_cells = p.cells_x * p.cells_y;
-    let radii = 2 * THREADS as usize;
-    g.each(|lid| {
-        let (mut total, mut widest) = (0u32, 0.0f32);
-        each_cell(p, tx, ty, lid, |cell| {
-            total += cells.load(cell);
-            let r = f32::from_bits(cells.load(n_cells + cell));
-            widest = if r > widest { r } else { widest };
+    let tiles = p.tiles_x * p.tiles_y;
+    let per_tile = p.cells_per_tile_edge() * p.cells_per_tile_edge();
+    let group_tiles = tiles_per_count_group(p);
+    let per = per_tile.div_ceil(THREADS);
+    let t_usize = THREADS as usize;
+    // Workgroup memory: [0, 2T) the counts' scan, [2T, 4T) the radii's, [4T, 5T) each
+    // invocation's tile among the workgroup's (the scans' segments), [5T, 6T) its own count.
+    let (counts, radii, segs, own) = (0, 2 * t_usize, 4 * t_usize, 5 * t_usize);
+    // The tile of invocation `lid` (its index among the group's, and in the frame; none past the
+    // frame's last) and the first of its cells in that tile.
+    let place = |first_tile: u32, lid: u32| -> (u32, u32, u32) {
+        let slot = lid * per / per_tile;
+        (slot, first_tile + slot, lid * per - slot * per_tile)
+    };
+    let groups = tiles.div_ceil(group_tiles);
+    let mut group = g.workgroup_id()[0];
+    while group < groups {
+        let first_tile = group * group_tiles;
+        g.each(|lid| {
+            let (slot, t, first) = place(first_tile, lid);
+            let (total, widest) =
+                if slot < group_tiles && t < tiles { run_of_cells(p, &cells, t, first, per, 0, |_, _| {}) } else { (0, 0.0) };
+            sh[counts + lid as usize] = total;
+            // Radii are positive, so their bits order like the values.
+            sh[radii + lid as usize] = widest.to_bits();
+            sh[segs + lid as usize] = slot;
+            sh[own + lid as usize] = total;
         });
-        sh[lid as usize] = total;
-        // Radii are positive, so their bits order like the values.
-        sh[radii + lid as usize] = widest.to_bits();
-    });
-    let sums = inclusive_scan(g, sh, 0, add);
-    let widest = reduce(g, sh, radii, max);
-    g.each(|lid| {
-        let mut running = if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
-        each_cell(p, tx, ty, lid, |cell| {
-            offsets.store(cell, running);
-            offsets.store(n_cells + cell, cells.load(n_cells + cell));
-            running += cells.load(cell);
-        });
-        if lid == THREADS - 1 {
-            let total = sh[sums + lid as usize];
-            tile_count.store(t, total);
-            tile_radius.store(t, widest);
-            if total > 0 {
-                st.atomic_add(stats::TILED, total);
+        let (sums, widest) = segmented_scans(g, sh, (counts, radii, segs), add, max);
+        g.each(|lid| {
+            let (slot, t, first) = place(first_tile, lid);
+            if slot >= group_tiles || t >= tiles {
+                return;
             }
+            let inclusive = sh[sums + lid as usize];
+            run_of_cells(p, &cells, t, first, per, inclusive - sh[own + lid as usize], |cell, offset| {
+                offsets.store(cell, offset);
+                offsets.store(n_cells + cell, cells.load(n_cells + cell));
+            });
+            // The tile's last invocation holds its totals.
+            if lid == THREADS - 1 || sh[segs + lid as usize + 1] != slot {
+                tile_count.store(t, inclusive);
+                tile_radius.store(t, sh[widest + lid as usize]);
+                if inclusive > 0 {
+                    st.atomic_add(stats::TILED, inclusive);
+                }
+            }
+        });
+        group += g.num_workgroups()[0];
+    }
+}
+
+/// The fragment count and widest radius of the `per` cells of tile `t` from its cell `first` (those
+/// inside the grid), calling `f(cell, offset)` for each with its offset in the tile counted on
+/// from `running`.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn run_of_cells(
+    p: &SplatParams,
+    cells: &impl Load,
+    t: u32,
+    first: u32,
+    per: u32,
+    mut running: u32,
+    mut f: impl FnMut(u32, u32),
+) -> (u32, f32) {
+    let n_cells = p.cells_x * p.cells_y;
+    let (tx, ty) = (t % p.tiles_x, t / p.tiles_x);
+    let (mut total, mut widest) = (0u32, 0.0f32);
+    let mut i = 0;
+    while i < per {
+        let cell = cell_of(p, tx, ty, first + i);
+        if cell != NONE {
+            let n = cells.load(cell);
+            let r = f32::from_bits(cells.load(n_cells + cell));
+            f(cell, running);
+            running += n;
+            total += n;
+            widest = if r > widest { r } else { widest };
         }
-    });
+        i += 1;
+    }
+    (total, widest)
 }
 
 pub fn alloc_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, tile_count: R, tile_radius: R, mut copy: M, mut st: M) {
@@ -186,9 +270,8 @@ pub fn alloc_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, tile_co
 
 /// Words of workgroup memory `splat_bin` uses.
 const BIN_SHARED: usize = 7 * THREADS as usize;
-/// Chunks of candidates whose test results sweep 1 keeps for sweep 2: a word an invocation holds
-/// the `CANDIDATES_PER_THREAD`-bit masks of this many chunks.
-const CACHED_CHUNKS: u32 = 32 / CANDIDATES_PER_THREAD;
+/// Candidates whose test results sweep 1 keeps for sweep 2, per invocation: the bits of a word.
+const CACHED_CANDIDATES: u32 = 32;
 
 #[allow(clippy::too_many_arguments)]
 pub fn bin_pass<G: Group, R: Load, M: Mem>(
@@ -211,12 +294,13 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
     let t_usize = THREADS as usize;
     // Workgroup memory: [0, 2T) scan of candidates per invocation; [2T, 3T) their masks (word 2T
     // also passes the list's offset from invocation 0 to all); [3T, 5T) scan of the neighbours'
-    // candidate counts; [5T, 6T) the neighbours' tile indices; [6T, 7T) the masks of the first
-    // `CACHED_CHUNKS` chunks, as sweep 1 found them.
+    // candidate counts; [5T, 6T) the neighbours' tile indices; [6T, 7T) each invocation's test
+    // results of its first `CACHED_CANDIDATES` candidates, as sweep 1 found them.
     let (masks, nb_scan, nb_tile, cached) = (2 * t_usize, 3 * t_usize, 5 * t_usize, 6 * t_usize);
     let side = 2 * p.rings + 1;
     // One candidate space over the fragments of every neighbour tile (within the rings) that can
-    // reach this tile: each invocation takes sixteen at a time, whatever tile they come from.
+    // reach this tile: each invocation takes `candidates_per_thread` at a time, whatever tile they
+    // come from.
     g.each(|lid| {
         let mut n = 0;
         let mut from = 0;
@@ -233,70 +317,87 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
         }
         sh[nb_scan + lid as usize] = n;
         sh[nb_tile + lid as usize] = from;
-        sh[cached + lid as usize] = 0;
     });
     let nb = inclusive_scan(g, sh, nb_scan, add);
     let total = sh[nb + t_usize - 1];
-
-    // Sweep 1 counts the candidates that reach the tile, so that its list is allocated exactly.
-    let mut count = 0u32;
-    let mut start = 0;
-    let mut chunk = 0;
-    while start < total {
+    let per = candidates_per_thread(p);
+    // Sweep 1 counts the candidates that reach the tile, so that its list is allocated exactly:
+    // each invocation its own, then one reduction; the first chunks' results stay in workgroup
+    // memory for sweep 2. One atomic a tile then takes its range from the pool. A list that does
+    // not fit (longer than the sort handles, or more than the pool has left) is counted again
+    // thinned ([`thin_keeps`]), a level at a time, until it fits; one that fits at no level
+    // leaves its tile to its sharp fronts.
+    let cached_chunks = CACHED_CANDIDATES >> per.trailing_zeros();
+    let (mut whole, mut thin, mut out) = (0u32, 0u32, NONE);
+    let mut count;
+    loop {
         g.each(|lid| {
-            let (mask, kept) = reaching(p, sh, nb, nb_tile, &dense, &offsets, total, start + lid * CANDIDATES_PER_THREAD, tx, ty);
-            if chunk < CACHED_CHUNKS {
-                sh[cached + lid as usize] |= mask << (chunk * CANDIDATES_PER_THREAD);
+            let (mut kept, mut cache, mut chunk) = (0u32, 0u32, 0u32);
+            let mut first = lid * per;
+            while first < total {
+                let (mask, n) = reaching(p, sh, nb, nb_tile, &dense, &offsets, total, first, per, tx, ty, thin);
+                if chunk < cached_chunks {
+                    cache |= mask << (chunk * per);
+                }
+                kept += n;
+                first += THREADS * per;
+                chunk += 1;
             }
             sh[lid as usize] = kept;
+            if thin == 0 {
+                sh[cached + lid as usize] = cache;
+            }
         });
-        count += reduce(g, sh, 0, add);
-        start += THREADS * CANDIDATES_PER_THREAD;
-        chunk += 1;
+        count = reduce(g, sh, 0, add);
+        whole = if thin == 0 { count } else { whole };
+        g.each(|lid| {
+            if lid == 0 {
+                sh[masks] = allocate(p, &mut st, count);
+            }
+        });
+        g.each(|_| out = sh[masks]);
+        if out != NONE || count == 0 || thin == MAX_THIN {
+            break;
+        }
+        thin += 1;
     }
-    // One atomic a tile takes its range from the pool. The pointer cannot wrap: the host keeps
-    // tiles · max_list below 2^32, and a longer list never touches it.
     g.each(|lid| {
         if lid == 0 {
-            let mut out = NONE;
-            if count > 0 && count <= p.max_list {
-                let at = st.atomic_add(stats::LIST_TOP, count);
-                if at <= p.list_capacity && count <= p.list_capacity - at {
-                    out = at;
-                }
-            }
-            if count > 0 && out == NONE {
-                // Overflow: this tile shows its sharp fronts only, and the frame reports it.
-                copy.store(t, 1);
+            if out == NONE && whole > 0 {
+                // Not even the coarsest lattice fits: this tile shows its sharp fronts only, and
+                // the frame reports it.
+                copy.store(t, TILE_COPY);
                 st.atomic_add(stats::OVERFLOW_TILES, 1);
-                st.atomic_add(stats::OVERFLOW_ENTRIES, count);
+                st.atomic_add(stats::OVERFLOW_ENTRIES, whole);
+            } else if out != NONE && thin > 0 {
+                copy.store(t, thin << TILE_THIN_SHIFT);
+                st.atomic_add(stats::THINNED_TILES, 1);
+                st.atomic_add(stats::THINNED_ENTRIES, whole - count);
             }
-            if out != NONE {
-                st.atomic_max(stats::MAX_CAPACITY, count);
+            if whole > 0 {
+                st.atomic_max(stats::MAX_CAPACITY, whole);
             }
             segments.store(2 * t, if out == NONE { 0 } else { out });
             segments.store(2 * t + 1, if out == NONE { 0 } else { count });
-            sh[masks] = out;
         }
     });
-    let mut out = NONE;
-    g.each(|_| out = sh[masks]);
     if out == NONE {
         return;
     }
 
     // Sweep 2 writes the list, in candidate order (the same on every backend), from sweep 1's
-    // masks where it kept them.
+    // masks where it kept them (a thinned list tests its candidates again).
     let mut running = 0u32;
     let mut start = 0;
     let mut chunk = 0;
     while start < total {
         g.each(|lid| {
-            let (mask, kept) = if chunk < CACHED_CHUNKS {
-                let mask = (sh[cached + lid as usize] >> (chunk * CANDIDATES_PER_THREAD)) & ((1 << CANDIDATES_PER_THREAD) - 1);
+            let first = start + lid * per;
+            let (mask, kept) = if chunk < cached_chunks && thin == 0 {
+                let mask = (sh[cached + lid as usize] >> (chunk * per)) & (u32::MAX >> (32 - per));
                 (mask, mask.count_ones())
             } else {
-                reaching(p, sh, nb, nb_tile, &dense, &offsets, total, start + lid * CANDIDATES_PER_THREAD, tx, ty)
+                reaching(p, sh, nb, nb_tile, &dense, &offsets, total, first, per, tx, ty, thin)
             };
             sh[lid as usize] = kept;
             sh[masks + lid as usize] = mask;
@@ -306,10 +407,10 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
         g.each(|lid| {
             let mut at = out + running + if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
             let mask = sh[masks + lid as usize];
-            let first = start + lid * CANDIDATES_PER_THREAD;
+            let first = start + lid * per;
             let mut cursor = Cursor::at(if mask != 0 { neighbour(sh, nb, first) } else { 0 }, tx, ty);
             let mut i = 0;
-            while i < CANDIDATES_PER_THREAD {
+            while i < per {
                 if mask & (1 << i) != 0 {
                     let j = cursor.candidate(p, sh, nb, nb_tile, &offsets, first + i);
                     keys.store(at, dense.load(4 * j + 2));
@@ -322,13 +423,30 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
             chunk_total = sh[sums + t_usize - 1];
         });
         running += chunk_total;
-        start += THREADS * CANDIDATES_PER_THREAD;
+        start += THREADS * per;
         chunk += 1;
     }
 }
 
-/// Which of the `CANDIDATES_PER_THREAD` candidates from `first` (of `total`) reach tile `(tx, ty)`:
-/// a mask (bit `i` for candidate `first + i`) and their count.
+/// The first entry of a range of `count` taken from the list pool, or `NONE` when the list is
+/// longer than the sort handles or the pool has no room for it (the range is then given back, so
+/// that a thinner list may still fit). The pointer cannot wrap: the host keeps
+/// `tiles · max_list` below 2^32.
+#[inline]
+fn allocate(p: &SplatParams, st: &mut impl Mem, count: u32) -> u32 {
+    if count == 0 || count > p.max_list {
+        return NONE;
+    }
+    let at = st.atomic_add(stats::LIST_TOP, count);
+    if at <= p.list_capacity && count <= p.list_capacity - at {
+        return at;
+    }
+    st.atomic_add(stats::LIST_TOP, count.wrapping_neg());
+    NONE
+}
+
+/// Which of the `per` candidates from `first` (of `total`) reach tile `(tx, ty)` and are kept at
+/// thinning level `thin`: a mask (bit `i` for candidate `first + i`) and their count.
 #[allow(clippy::too_many_arguments)]
 #[inline]
 fn reaching<const N: usize>(
@@ -340,16 +458,20 @@ fn reaching<const N: usize>(
     offsets: &impl Load,
     total: u32,
     first: u32,
+    per: u32,
     tx: u32,
     ty: u32,
+    thin: u32,
 ) -> (u32, u32) {
     let (mut mask, mut kept) = (0u32, 0u32);
     let mut cursor = Cursor::at(neighbour(sh, nb, first), tx, ty);
     let mut i = 0;
-    while i < CANDIDATES_PER_THREAD && first + i < total {
+    while i < per && first + i < total {
         let at = cursor.candidate(p, sh, nb, nb_tile, offsets, first + i);
         if cursor.reaches {
-            if fragment_reaches(p, &Fragment::load_in(p, dense, at), tx, ty) {
+            let f = Fragment::load_in(p, dense, at);
+            let r = f.radius(&p.lens, p.max_radius);
+            if disc_reaches(p, f.centre(), r, tx, ty) && thin_keeps(p, thin, cursor.x0 + cursor.x, cursor.y0 + cursor.y, r) {
                 mask |= 1 << i;
                 kept += 1;
             }
@@ -502,7 +624,7 @@ impl Cursor {
 
 kernel!(
     /// Per-tile fragment counts, cell offsets inside tiles and largest radius.
-    TILE_COUNT = splat_tile_count [256] (SplatParams) shared [u32; 3 * 256]
+    TILE_COUNT = splat_tile_count [256] (SplatParams) shared [u32; 6 * 256]
         { read cells, tile_count, offsets, tile_radius, st } => tile_count_pass
 );
 kernel!(

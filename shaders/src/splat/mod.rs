@@ -16,8 +16,8 @@
 //!    merged list into the cell's region of the dense array and counts it; no level is stored.
 //! 3. [`bin`]: per-tile fragment counts and an index over the partially filled cells (the
 //!    load-balancing structure of §5.1), which tiles no blur reaches, then the tile lists, each
-//!    allocated exactly from a bounded pool (a tile whose list does not fit is counted as
-//!    overflow and copied through).
+//!    allocated exactly from a bounded pool (a list that does not fit is thinned to a coarser
+//!    lattice of its sources until it does, and counted).
 //! 4. The foundation's segmented sort orders every list by depth.
 //! 5. [`accumulate`]: per pixel, front to back over its tile's list with early termination, ending
 //!    at the pixel's sharp front; tiles that no blur reaches write their sharp fronts through.
@@ -49,6 +49,10 @@ pub const MAX_GROUPS: u32 = 65535;
 
 /// `flags`: drop fragments inside a merged fragment's umbra (§6.2).
 pub const FLAG_UMBRA_MERGE: u32 = 1;
+/// `flags`: the device runs a workgroup's invocations one after another (the CPU backend), so a
+/// kernel may give an invocation a run of consecutive items where a GPU gives it one. The results
+/// do not depend on it.
+pub const FLAG_SERIAL: u32 = 2;
 /// `flags` bits 8-10: the side of the sub-sample grid of the input's footprints (1 to 4; 0: the
 /// input has none). The input slot buffer then carries one footprint word a slot after its slots
 /// ([`crate::footprint::slot_word`]), and the dense array one a fragment after its fragments
@@ -86,7 +90,8 @@ pub struct SplatParams {
     /// The aperture shape `accumulate` tests pixels against (binning uses the enclosing circle).
     pub aperture: Aperture,
     /// Entries the list buffers hold, and the longest list the sort was sized for: a tile whose
-    /// list does not fit either is counted in [`stats::OVERFLOW_TILES`] and copied through.
+    /// list does not fit either is thinned ([`stats::THINNED_TILES`]), or where no thinning fits,
+    /// counted in [`stats::OVERFLOW_TILES`] and copied through.
     pub list_capacity: u32,
     pub max_list: u32,
 }
@@ -171,7 +176,7 @@ pub mod stats {
     pub const CAPPED: u32 = 6;
     /// Tiles copied through (no blur reaches them).
     pub const COPY_TILES: u32 = 7;
-    /// Longest tile list (entries) the frame allocated.
+    /// Longest tile list (entries) the frame wanted, before any thinning.
     pub const MAX_CAPACITY: u32 = 8;
     /// Pixels that stopped before the end of their list (saturated).
     pub const EARLY_OUT: u32 = 9;
@@ -197,7 +202,10 @@ pub mod stats {
     pub const ALPHA_CLAMPED: u32 = 20;
     /// Pixels whose slots end translucent, given black behind them (a pixel composites over black).
     pub const BACKED: u32 = 21;
-    pub const WORDS: u32 = 22;
+    /// Tiles whose list was thinned to fit (`bin::thin_keeps`), and the entries thinning left out.
+    pub const THINNED_TILES: u32 = 22;
+    pub const THINNED_ENTRIES: u32 = 23;
+    pub const WORDS: u32 = 24;
 }
 
 #[cfg(not(target_arch = "spirv"))]

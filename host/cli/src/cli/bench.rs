@@ -20,6 +20,10 @@ pub enum BenchCommand {
     /// Multi-layer tiled splatting (merged 4x4) over the engine-grade gather (5 rings), per
     /// built-in scene and backend, with each one's error against the exact reference.
     Ratios(super::bench_ratios::RatiosArgs),
+    /// The GPU shape of every embedded kernel, read from its SPIR-V without a GPU: instructions,
+    /// per-invocation memory and its run-time indexing, workgroup memory, barriers, divisions,
+    /// subgroup operations.
+    Kernels(super::bench_kernels::KernelsArgs),
 }
 
 #[derive(clap::Args)]
@@ -45,6 +49,7 @@ pub fn run(cmd: &BenchCommand) -> anyhow::Result<()> {
         BenchCommand::Frame(args) => super::bench_frame::run(args),
         BenchCommand::Scaling(args) => super::bench_scaling::run(args),
         BenchCommand::Ratios(args) => super::bench_ratios::run(args),
+        BenchCommand::Kernels(args) => super::bench_kernels::run(args),
     }
 }
 

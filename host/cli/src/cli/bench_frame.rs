@@ -87,6 +87,10 @@ pub struct FrameArgs {
     /// each): splatting then spreads every fragment from its pixel's centre.
     #[arg(long)]
     no_footprints: bool,
+    /// Time only the frame's span (one timestamp pair a frame on Vulkan): no command gets a pair
+    /// of its own, so the frame time carries none of their cost, and there is no per-stage profile.
+    #[arg(long)]
+    span_only: bool,
 }
 
 /// The largest frame edge `bench frame` takes (that of 4K and beyond; the contexts check the
@@ -115,6 +119,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     let warmup = Warmup { frames: args.warmup, ms: args.warmup_ms };
     let mut backend = super::render::backend(args.backend)?;
     let b = backend.as_mut();
+    b.set_command_timestamps(!args.span_only);
     let (measured, size, layers) = match args.orbit {
         Some(deg) => {
             let layers = LayerOptions { subsamples: args.subsamples, footprints: !args.no_footprints, ..Default::default() };
@@ -172,12 +177,14 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "guard_band_needed_px_last_frame": measured.band.map(|b| b.0),
             "guard_band_exceeded_frames": measured.band.map(|b| b.1),
             "frames": args.frames,
+            "span_only": args.span_only,
             "allocations_per_frame": per_frame(c.allocations),
             "submits_per_frame": per_frame(c.submissions),
             "readbacks_per_frame": per_frame(c.readbacks),
             "uploads_per_frame": per_frame(c.uploads),
             "commands_per_frame": per_frame(c.commands),
             "dispatches_per_frame": per_frame(c.dispatches),
+            "empty_dispatches_per_frame": per_frame(c.empty_dispatches),
             "barriers_per_frame": per_frame(c.barriers),
             "cpu_record_ms": measured.record_ms,
             "gpu_ms": measured.gpu_ms,
@@ -190,6 +197,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "device_bytes": measured.device_bytes,
             "peak_device_bytes": c.peak_device_bytes,
             "overflow_tiles": measured.overflow_tiles,
+            "thinned_tiles": measured.thinned_tiles,
             "list_entries": measured.list_entries,
             "list_pool": measured.list_pool,
             "pool_grown_in_warmup": measured.grown,
@@ -222,13 +230,15 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         }
     );
     println!(
-        "per frame: {:.2} allocations, {:.2} submissions, {:.2} readbacks, {:.2} uploads; {:.1} commands, {:.1} of them dispatches or draws, {:.1} barriers",
+        "per frame: {:.2} allocations, {:.2} submissions, {:.2} readbacks, {:.2} uploads; {:.1} commands, {:.1} of them dispatches or draws ({:.1} empty{}), {:.1} barriers",
         per_frame(c.allocations),
         per_frame(c.submissions),
         per_frame(c.readbacks),
         per_frame(c.uploads),
         per_frame(c.commands),
         per_frame(c.dispatches),
+        per_frame(c.empty_dispatches),
+        if b.kind() == dof::backend::BackendKind::Cpu { "" } else { ", not counted on a GPU" },
         per_frame(c.barriers)
     );
     println!(
@@ -280,6 +290,7 @@ struct Measured {
     stages: BTreeMap<String, f64>,
     device_bytes: u64,
     overflow_tiles: u64,
+    thinned_tiles: u64,
     list_entries: u64,
     list_pool: u64,
     /// Times the warm-up grew the context after an overflowing frame.
@@ -367,7 +378,8 @@ impl Measured {
             gpu_ms,
             stages,
             device_bytes: bytes,
-            overflow_tiles: report.overflow,
+            overflow_tiles: figure("overflow_tiles"),
+            thinned_tiles: figure("thinned_tiles"),
             list_entries: figure("list_entries"),
             list_pool: figure("list_pool"),
             grown: 0,

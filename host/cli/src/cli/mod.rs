@@ -1,5 +1,6 @@
 pub mod bench;
 pub mod bench_frame;
+pub mod bench_kernels;
 pub mod bench_ratios;
 pub mod bench_scaling;
 pub mod compare;

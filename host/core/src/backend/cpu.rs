@@ -281,7 +281,11 @@ impl Backend for CpuBackend {
 
     fn dispatch(&mut self, kernel: &'static KernelDesc, groups: [u32; 3], buffers: &[BufferId], push: &[u32], label: &str) -> Result<()> {
         check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), push.len())?;
-        self.run(kernel, groups, buffers, push, label)
+        self.run(kernel, groups, buffers, push, label)?;
+        if groups.contains(&0) {
+            self.counters.empty_dispatches += 1;
+        }
+        Ok(())
     }
 
     fn dispatch_indirect(
@@ -297,7 +301,11 @@ impl Backend for CpuBackend {
         let a = self.range(args, args_offset_words, 3)?;
         let groups = [a[0].load(Relaxed), a[1].load(Relaxed), a[2].load(Relaxed)];
         check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), push.len())?;
-        self.run(kernel, groups, buffers, push, label)
+        self.run(kernel, groups, buffers, push, label)?;
+        if groups.contains(&0) {
+            self.counters.empty_dispatches += 1;
+        }
+        Ok(())
     }
 
     fn copy_image_to_buffer(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, label: &str) -> Result<()> {
@@ -382,6 +390,7 @@ mod tests {
             uploads: 1,
             commands: 1,
             dispatches: 1,
+            empty_dispatches: 0,
             barriers: 0,
             device_bytes: 44,
             peak_device_bytes: 56,

@@ -98,6 +98,10 @@ pub struct BackendCounters {
     /// Kernel dispatches and draws among `commands` (`dispatch`, `dispatch_indirect`,
     /// `draw_indirect`; a draw's CPU fallback counts its prepass and its kernel).
     pub dispatches: u64,
+    /// Dispatches among `dispatches` of no workgroup (an indirect dispatch whose size the device
+    /// planned as zero). Counted on the CPU backend, which reads the size in place; a Vulkan
+    /// backend cannot know it without a readback and counts none.
+    pub empty_dispatches: u64,
     /// Pipeline barriers recorded between commands (on Vulkan: the recorder's hazard barriers and
     /// an image copy's layout transitions; on the CPU none, each command completes before the next).
     pub barriers: u64,
@@ -129,6 +133,7 @@ impl BackendCounters {
             uploads: self.uploads - earlier.uploads,
             commands: self.commands - earlier.commands,
             dispatches: self.dispatches - earlier.dispatches,
+            empty_dispatches: self.empty_dispatches - earlier.empty_dispatches,
             barriers: self.barriers - earlier.barriers,
             device_bytes: self.device_bytes,
             peak_device_bytes: self.peak_device_bytes,
@@ -524,6 +529,13 @@ pub trait Backend {
     /// Closes the innermost open span.
     fn end_span(&mut self) -> Result<()> {
         Ok(())
+    }
+    /// Whether each command gets a timestamp pair of its own (on by default): off, only spans are
+    /// timed, so that a frame's span measures the frame without the per-command queries (each
+    /// pair drains the pipeline between commands on some GPUs). Backends that time nothing, or
+    /// time by the wall clock, ignore it.
+    fn set_command_timestamps(&mut self, on: bool) {
+        let _ = on;
     }
     /// The spans of everything submitted since the last call, in the order they were opened
     /// (`kernel` is [`SPAN`]; NaN on a queue without timestamps).

@@ -101,11 +101,11 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
                     return Err(e);
                 }
             };
-            if report.overflow_tiles > 0 && attempt < RETRIES {
-                // The pool the frame wanted: every list that was placed or tried, at least double.
+            if report.tiles_cut_short() > 0 && attempt < RETRIES {
+                // The pool the frame wanted: every list that was placed, thinned or tried, at least double.
                 let (entries, max_list) = ctx.list_bounds();
                 ctx.destroy(backend);
-                let wanted = (report.list_top + report.overflow_entries).max(2 * entries);
+                let wanted = report.entries_wanted().max(2 * entries);
                 if entries >= MAX_LIST_ENTRIES {
                     return Err(Error::TooLarge {
                         what: "tile list entries (merge fragments with --merge 2x2 or 4x4, or render smaller)".into(),

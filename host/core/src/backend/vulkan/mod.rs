@@ -1026,6 +1026,9 @@ impl Backend for VulkanBackend {
         self.recorder.begin_span(&self.device, label)
     }
 
+    fn set_command_timestamps(&mut self, on: bool) {
+        self.recorder.set_command_timestamps(on);
+    }
     fn end_span(&mut self) -> Result<()> {
         self.recorder.end_span(&self.device)
     }

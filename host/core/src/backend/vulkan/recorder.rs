@@ -105,6 +105,9 @@ pub(super) struct Recorder {
     fence: vk::Fence,
     /// Whether the queue writes timestamps.
     timestamps: bool,
+    /// Whether commands get timestamp pairs of their own (spans always do, where the queue has
+    /// timestamps).
+    command_timestamps: bool,
     timestamp_mask: u64,
     period_ns: f64,
     /// Whether the queue supports graphics stages (barriers name them only then).
@@ -147,6 +150,7 @@ impl Recorder {
             once: vk::CommandBuffer::null(),
             fence: vk::Fence::null(),
             timestamps: false,
+            command_timestamps: true,
             timestamp_mask: 0,
             period_ns: 1.0,
             graphics: false,
@@ -197,6 +201,11 @@ impl Recorder {
     }
 
     /// Barriers put between commands so far.
+    /// Whether later commands get timestamp pairs of their own ([`crate::Backend::set_command_timestamps`]).
+    pub fn set_command_timestamps(&mut self, on: bool) {
+        self.command_timestamps = on;
+    }
+
     pub fn barriers(&self) -> u64 {
         self.barriers
     }
@@ -241,7 +250,7 @@ impl Recorder {
             None => self.begin_main(ctx)?,
         };
         let stamps = match timing {
-            Some(_) if self.timestamps => {
+            Some(_) if self.timestamps && self.command_timestamps => {
                 let queries = if self.external.is_some() { &mut self.external_queries } else { &mut self.main_queries };
                 Some(queries.next(ctx, cb, "dof timestamps")?)
             }
@@ -283,7 +292,7 @@ impl Recorder {
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, pool, query + 2);
             }
         }
-        if let Some((label, kernel)) = timing {
+        if let Some((label, kernel)) = timing.filter(|_| self.command_timestamps) {
             let queries = if self.external.is_some() { &mut self.external_queries } else { &mut self.main_queries };
             queries.timed.push((label.to_string(), kernel));
         }

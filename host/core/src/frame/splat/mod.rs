@@ -13,12 +13,14 @@ mod report;
 use crate::ops::sort::SegmentedSort;
 use dof_shaders::KernelDesc;
 use dof_shaders::splat::accumulate::splat_accumulate;
-use dof_shaders::splat::bin::{ALLOC, splat_alloc, splat_bin, splat_tile_count};
+use dof_shaders::splat::bin::{ALLOC, splat_alloc, splat_bin, splat_tile_count, tiles_per_count_group};
 use dof_shaders::splat::fragment::{MAX_EDGE, footprint_base, footprint_words};
 use dof_shaders::splat::merge::{MERGE, splat_merge};
 use dof_shaders::splat::pack::{PACK, splat_pack};
 use dof_shaders::splat::plan::{splat_plan_finish, splat_plan_reduce};
-use dof_shaders::splat::{FLAG_UMBRA_MERGE, FOOTPRINT_SIDE_SHIFT, MAX_RINGS, SplatParams, TILE_SIZES, block_for, stats};
+use dof_shaders::splat::{
+    FLAG_SERIAL, FLAG_UMBRA_MERGE, FOOTPRINT_SIDE_SHIFT, MAX_GROUPS, MAX_RINGS, SplatParams, TILE_SIZES, block_for, stats,
+};
 pub use options::{Merge, SplatOptions, SplatPlanReport};
 pub use report::{LLVMPIPE_SAFE_LIST, SplatReport};
 
@@ -122,6 +124,9 @@ pub struct SplatContext {
     /// Whether the backend runs on llvmpipe (lavapipe), whose loop limit long lists reach
     /// ([`LLVMPIPE_SAFE_LIST`]); the driver is known at creation.
     llvmpipe: bool,
+    /// Whether the backend runs a workgroup's invocations one after another
+    /// (`Limits::serial_invocations`): the kernels' `FLAG_SERIAL`.
+    serial: bool,
 }
 
 /// Checks the options against what the kernels support; returns the configured radius cap.
@@ -287,6 +292,7 @@ impl SplatContext {
             name: "multilayer",
             distinct_stages,
             llvmpipe: backend.driver().contains("llvmpipe"),
+            serial: backend.limits().serial_invocations,
         };
         super::io::ready(backend, ctx, &kernels, &[], Self::destroy)
     }
@@ -350,7 +356,9 @@ impl SplatContext {
             tiles_y: f.height.div_ceil(o.tile),
             // The device plan replaces these two (`dof_shaders::splat::planned`).
             rings: MAX_RINGS,
-            flags: if o.umbra_merge { FLAG_UMBRA_MERGE } else { 0 } | (self.footprint_side(f) << FOOTPRINT_SIDE_SHIFT),
+            flags: if o.umbra_merge { FLAG_UMBRA_MERGE } else { 0 }
+                | if self.serial { FLAG_SERIAL } else { 0 }
+                | (self.footprint_side(f) << FOOTPRINT_SIDE_SHIFT),
             max_radius: self.radius_cap,
             merge_min_radius: o.merge_min_radius,
             merge_depth_ratio: o.merge_depth_ratio,
@@ -439,7 +447,8 @@ impl SplatContext {
         }
         let (tile_count, offsets, tile_radius, st) = (b.tile_count, b.offsets, b.tile_radius, b.stats);
         let count = splat_tile_count::Bindings { cells, tile_count, offsets, tile_radius, st };
-        backend.run(count, tile_grid, &fin, "splat/tile-count")?;
+        let count_groups = (tiles as u32).div_ceil(tiles_per_count_group(&fin)).min(MAX_GROUPS);
+        backend.run(count, [count_groups, 1, 1], &fin, "splat/tile-count")?;
         let alloc = splat_alloc::Bindings { tile_count, tile_radius, copy: b.copy, st };
         backend.run(alloc, groups_for(&ALLOC, tiles), &fin, "splat/alloc")?;
         let (copy, keys, values, segments) = (b.copy, b.keys, b.values, b.segments);
@@ -510,6 +519,8 @@ impl SplatContext {
             list_capacity: self.list_entries,
             overflow_tiles: c(stats::OVERFLOW_TILES),
             overflow_entries: c(stats::OVERFLOW_ENTRIES) as u64,
+            thinned_tiles: c(stats::THINNED_TILES),
+            thinned_entries: c(stats::THINNED_ENTRIES) as u64,
             longest_list_wanted: c(stats::MAX_CAPACITY),
             list_top: c(stats::LIST_TOP) as u64,
             driver_loop_limit: self.llvmpipe && c(stats::MAX_CAPACITY) > LLVMPIPE_SAFE_LIST,
@@ -578,6 +589,7 @@ impl DofContext for SplatContext {
             ("copy_tiles", r.copy_tiles as f64),
             ("merged", r.merged as f64),
             ("overflow_tiles", r.overflow_tiles as f64),
+            ("thinned_tiles", r.thinned_tiles as f64),
             ("list_pool", r.list_capacity as f64),
             ("clamped", r.clamped as f64),
             ("alpha_clamped", r.alpha_clamped as f64),
@@ -586,7 +598,7 @@ impl DofContext for SplatContext {
             summary: r.summary(),
             figures: figures.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
             list_histogram: r.list_histogram(),
-            overflow: r.overflow_tiles as u64,
+            overflow: r.tiles_cut_short() as u64,
         })
     }
     fn device_bytes(&self) -> u64 {
@@ -597,7 +609,7 @@ impl DofContext for SplatContext {
     }
     fn grow_to_fit(&mut self, backend: &mut dyn Backend) -> Result<bool> {
         let report = SplatContext::report(self, backend)?;
-        if report.overflow_tiles == 0 {
+        if report.tiles_cut_short() == 0 {
             return Ok(false);
         }
         // The pool the frame wanted: every list that was placed or tried, at least double.
@@ -605,11 +617,11 @@ impl DofContext for SplatContext {
         if entries >= MAX_LIST_ENTRIES {
             return Err(Error::TooLarge {
                 what: "tile list entries (merge fragments with --merge 2x2 or 4x4, or render smaller)".into(),
-                size: report.list_top + report.overflow_entries,
+                size: report.entries_wanted(),
                 limit: MAX_LIST_ENTRIES,
             });
         }
-        let wanted = (report.list_top + report.overflow_entries).max(2 * entries).min(MAX_LIST_ENTRIES);
+        let wanted = report.entries_wanted().max(2 * entries).min(MAX_LIST_ENTRIES);
         let desc =
             SplatContextDesc { list_entries: Some(wanted), max_list: Some(max_list.max(report.longest_list_wanted)), ..self.desc.clone() };
         let grown = SplatContext::build(backend, &desc, self.distinct_stages)?.named(self.name);

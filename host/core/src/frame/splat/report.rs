@@ -43,6 +43,11 @@ pub struct SplatReport {
     /// instead, and the entries they would have held. Zero in a whole frame.
     pub overflow_tiles: u32,
     pub overflow_entries: u64,
+    /// Tiles whose list was thinned to fit the pool or the sort (a coarser lattice of its wide
+    /// sources, each standing for its block: `dof_shaders::splat::bin::thin_keeps`), and the
+    /// entries thinning left out. Blurred, but approximately; zero in a whole frame.
+    pub thinned_tiles: u32,
+    pub thinned_entries: u64,
     /// The longest list any tile wanted, and the pool's bump pointer at the end of the frame.
     pub longest_list_wanted: u32,
     pub list_top: u64,
@@ -68,6 +73,15 @@ impl SplatReport {
     pub fn mean_list_length(&self) -> f64 {
         let splatted = (self.tiles - self.copy_tiles).max(1);
         self.list_entries as f64 / splatted as f64
+    }
+    /// Tiles the frame could not splat whole: thinned or left sharp.
+    pub fn tiles_cut_short(&self) -> u32 {
+        self.overflow_tiles + self.thinned_tiles
+    }
+    /// The list entries the frame wanted: those placed, those thinning left out and those of the
+    /// tiles left sharp (what a pool that holds the whole frame needs).
+    pub fn entries_wanted(&self) -> u64 {
+        self.list_top + self.thinned_entries + self.overflow_entries
     }
     pub fn max_list_length(&self) -> u32 {
         self.list_lengths.iter().copied().max().unwrap_or(0)
@@ -131,9 +145,16 @@ impl SplatReport {
             self.max_list_length(),
             self.list_capacity
         );
+        if self.thinned_tiles > 0 {
+            s += &format!(
+                "THINNED: {} tiles did not fit the list pool whole and were splatted from a coarser lattice of their \
+                 wide fragments ({} list entries left out)\n",
+                self.thinned_tiles, self.thinned_entries
+            );
+        }
         if self.overflow_tiles > 0 {
             s += &format!(
-                "OVERFLOW: {} tiles ({} list entries) did not fit the list pool and show only their in-focus fronts\n",
+                "OVERFLOW: {} tiles ({} list entries) did not fit the list pool even thinned and show only their in-focus fronts\n",
                 self.overflow_tiles, self.overflow_entries
             );
         }

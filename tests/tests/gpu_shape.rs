@@ -1,0 +1,187 @@
+//! The GPU shape of the hot kernels, held to budgets without a GPU (`dof bench kernels` prints the
+//! same numbers for every kernel). Each is read from the embedded SPIR-V ([`dof::kernel_shape`]):
+//!
+//! - function-storage bytes: per-invocation arrays, which a GPU keeps in local (off-chip) memory
+//!   when they are indexed at run time;
+//! - run-time indexed function-storage accesses;
+//! - integer divisions and remainders by a run-time value (a long instruction sequence each);
+//! - barriers in the code (not as executed) and workgroup memory.
+//!
+//! A budget is the most a kernel may have. Where a kernel meets the shape a GPU wants, the budget
+//! is that shape; where it does not yet (the merge), the budget is today's figure, so that it can
+//! only improve, with the shape it should reach beside it. Raising a budget needs a reason in the
+//! change that raises it.
+//!
+//! Per frame, the commands of a multi-layer frame are held too, counted by the CPU backend (the
+//! same recording as on Vulkan).
+
+use dof::backend::{Backend, CpuBackend};
+use dof::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
+use dof::kernel_shape::{KernelShape, analyze};
+use dof::methods::buffers::{SLOT_WORDS, slot_words};
+use dof::methods::splat::{Merge, SplatOptions};
+use dof::stress::{noise_with_sky, test_lens};
+
+/// The most a kernel may have of each figure.
+struct Budget {
+    /// The entry point (`module::function`).
+    entry: &'static str,
+    function_bytes: u32,
+    runtime_indexed: usize,
+    runtime_divisions: usize,
+    barriers: usize,
+    workgroup_bytes: u32,
+}
+
+/// The hot kernels of multi-layer splatting and their budgets.
+const BUDGETS: &[Budget] = &[
+    // The shape a GPU wants: no per-invocation arrays, no division by a run-time value.
+    Budget {
+        entry: "sort::sort_shared_1024",
+        function_bytes: 0,
+        runtime_indexed: 0,
+        runtime_divisions: 0,
+        barriers: 5,
+        workgroup_bytes: 8192,
+    },
+    Budget {
+        entry: "sort::sort_global_step",
+        function_bytes: 0,
+        runtime_indexed: 0,
+        runtime_divisions: 0,
+        barriers: 1,
+        workgroup_bytes: 0,
+    },
+    Budget {
+        entry: "sort::sort_global_local",
+        function_bytes: 0,
+        runtime_indexed: 0,
+        runtime_divisions: 0,
+        barriers: 6,
+        workgroup_bytes: 16384,
+    },
+    // Binning: the cursor walks cells by column and row; the divisions left place a neighbour tile
+    // (once per neighbour tile an invocation meets, not per candidate).
+    Budget {
+        entry: "splat::bin::splat_bin",
+        function_bytes: 0,
+        runtime_indexed: 0,
+        runtime_divisions: 20,
+        barriers: 11,
+        workgroup_bytes: 7168,
+    },
+    Budget {
+        entry: "splat::bin::splat_tile_count",
+        function_bytes: 0,
+        runtime_indexed: 0,
+        // Each invocation places its cell in its tile once (24-px tiles have 36, 144 or 576 cells).
+        runtime_divisions: 13,
+        barriers: 3,
+        workgroup_bytes: 6144,
+    },
+    Budget {
+        entry: "splat::accumulate::splat_accumulate",
+        function_bytes: 256,
+        runtime_indexed: 8,
+        runtime_divisions: 21,
+        barriers: 11,
+        workgroup_bytes: 23552,
+    },
+    Budget {
+        entry: "splat::pack::splat_pack",
+        function_bytes: 256,
+        runtime_indexed: 2,
+        runtime_divisions: 12,
+        barriers: 1,
+        workgroup_bytes: 0,
+    },
+    // Not yet the GPU's shape: one invocation walks a 4x4 cell's 16 pixel cursors, kept in
+    // function-storage arrays (5 KB an invocation). The shape to reach: merged level by level, no
+    // per-invocation arrays (at most 256 bytes). Held at today's figures until then.
+    Budget {
+        entry: "splat::merge::splat_merge",
+        function_bytes: 5272,
+        runtime_indexed: 950,
+        runtime_divisions: 41,
+        barriers: 1,
+        workgroup_bytes: 0,
+    },
+];
+
+fn shape(entry: &str) -> KernelShape {
+    let words = dof::shaders::module_words(entry).unwrap_or_else(|| panic!("no embedded module for {entry}"));
+    analyze(&words).unwrap_or_else(|e| panic!("the SPIR-V of {entry}: {e}"))
+}
+
+#[test]
+fn hot_kernels_stay_within_their_budgets() {
+    let mut over = Vec::new();
+    for b in BUDGETS {
+        let s = shape(b.entry);
+        let figures = [
+            ("function-storage bytes", s.function_bytes as u64, b.function_bytes as u64),
+            ("run-time indexed function-storage accesses", s.runtime_indexed as u64, b.runtime_indexed as u64),
+            ("divisions by a run-time value", s.runtime_divisions as u64, b.runtime_divisions as u64),
+            ("barriers", s.barriers as u64, b.barriers as u64),
+            ("workgroup bytes", s.workgroup_bytes as u64, b.workgroup_bytes as u64),
+        ];
+        for (what, got, most) in figures {
+            if got > most {
+                over.push(format!("{}: {got} {what}, budget {most}", b.entry));
+            }
+        }
+    }
+    assert!(over.is_empty(), "over budget:\n{}", over.join("\n"));
+}
+
+/// Every size class of the shared-memory sort is one kernel with another array size: none divides
+/// by a run-time value (the comparator finds its pair with masks).
+#[test]
+fn no_sort_kernel_divides_by_a_run_time_value() {
+    for (entry, _) in dof::shaders::MODULES.iter().filter(|(e, _)| e.starts_with("sort::")) {
+        let s = shape(entry);
+        assert_eq!(s.runtime_divisions, 0, "{entry}: {s:?}");
+    }
+}
+
+/// Every embedded module parses, and none uses function storage without saying so in the table
+/// `dof bench kernels` prints: the analysis covers what the host embeds.
+#[test]
+fn every_embedded_module_has_a_shape() {
+    for (entry, _) in dof::shaders::MODULES {
+        let s = shape(entry);
+        assert_eq!(s.entry, *entry, "the module's entry point");
+        assert!(s.instructions > 0 && s.functions > 0, "{entry}: {s:?}");
+    }
+}
+
+/// The commands of one multi-layer frame, merged 4x4 and unmerged, as the CPU backend counts them
+/// (the same recording the Vulkan backend makes): at most `MAX_COMMANDS`, and of the dispatches,
+/// at most `MAX_EMPTY` of no workgroup (the sort's size classes and its global path, sized on the
+/// device, which no list of this frame needs).
+#[test]
+fn a_multilayer_frame_records_a_bounded_number_of_commands() {
+    const MAX_COMMANDS: u64 = 44;
+    const MAX_EMPTY: u64 = 30;
+    let mut b = CpuBackend::new();
+    let (w, h, layers) = (64, 48, 3);
+    let image = noise_with_sky(w, h, layers);
+    let pixels = w as u64 * h as u64;
+    let slots = b.create_buffer(SLOT_WORDS as u64 * pixels * layers as u64, "caller/fragments").unwrap();
+    let counts = b.create_buffer(pixels, "caller/counts").unwrap();
+    let out = b.create_buffer(3 * pixels, "caller/output").unwrap();
+    b.write_buffer(slots, 0, &slot_words(&image)).unwrap();
+    b.write_buffer(counts, 0, &image.counts).unwrap();
+    for merge in [Merge::X4, Merge::None] {
+        let desc = SplatContextDesc::new(w, h, layers, SplatOptions { merge, ..Default::default() });
+        let mut ctx = SplatContext::new(&mut b, &desc).unwrap();
+        let before = b.counters();
+        ctx.record(&mut b, &Frame::layers(w, h, layers, test_lens(0.02), SlotBuffer(slots), CountBuffer(counts), RgbBuffer(out))).unwrap();
+        b.submit().unwrap();
+        let c = b.counters().since(&before);
+        assert!(c.commands <= MAX_COMMANDS, "{merge:?}: {} commands, budget {MAX_COMMANDS}", c.commands);
+        assert!(c.empty_dispatches <= MAX_EMPTY, "{merge:?}: {} empty dispatches, budget {MAX_EMPTY}", c.empty_dispatches);
+        assert!(c.empty_dispatches < c.dispatches, "{merge:?}: {c:?}");
+        ctx.destroy(&mut b);
+    }
+}

@@ -53,31 +53,44 @@ pub fn candidates_per_thread(p: &SplatParams) -> u32 {
 pub const TILE_COPY: u32 = 1;
 /// `copy[t] >> TILE_THIN_SHIFT`: the tile's thinning level (0: its whole list).
 pub const TILE_THIN_SHIFT: u32 = 1;
-/// Deepest thinning: source cells on a lattice of 2^3 = 8 cells a side.
-pub const MAX_THIN: u32 = 3;
+/// Deepest thinning: the widest fragments (radius at least 32 cells) from a lattice of 2^4 = 16
+/// cells a side.
+pub const MAX_THIN: u32 = 4;
 
-/// Thinning, the fallback for a list too long for the sort or the pool. At level `k` the list keeps
-/// a wide fragment (radius at least [`thin_radius`]) only from the source cells on a lattice of
-/// `2^k` cells a side, and each such fragment stands for the `4^k` cells of its lattice block
-/// ([`thin_weight`]); narrower fragments are all kept. The list stays sorted and order-correct:
-/// the blur of a large disc is sampled from a coarser grid of sources, as merging does with the
-/// sources' colours averaged. Levels go up until the list fits; the frame reports the tiles thinned.
+/// Thinning, the fallback for a list too long for the sort or the pool. At level `k` a fragment of
+/// radius at least [`thin_radius`]`(j)` for some `j <= k` (the largest such `j`: its own level) is
+/// kept only from the source cells on a lattice of `2^j` cells a side, and stands for the `4^j`
+/// cells of its lattice block ([`thin_weight`]); narrower fragments are all kept. The list stays
+/// sorted and order-correct: the blur of a wide disc is sampled from a coarser grid of sources,
+/// as merging does with the sources' colours averaged, and the wider the disc the coarser the
+/// grid. Levels go up until the list fits; the frame reports the tiles thinned.
 #[inline]
 pub fn thin_keeps(p: &SplatParams, thin: u32, cell_x: u32, cell_y: u32, radius: f32) -> bool {
-    thin == 0 || (cell_x | cell_y) & ((1 << thin) - 1) == 0 || radius < thin_radius(p, thin)
+    (cell_x | cell_y) & ((1 << own_level(p, thin, radius)) - 1) == 0
 }
 
-/// The radius (px) from which fragments are thinned at level `thin`: two lattice spacings, so that
-/// a thinned disc always covers several lattice points' worth of pixels.
+/// The level a fragment of radius `radius` is thinned at in a list thinned to level `thin`.
 #[inline]
-pub fn thin_radius(p: &SplatParams, thin: u32) -> f32 {
-    (2 * (p.cell << thin)) as f32
+fn own_level(p: &SplatParams, thin: u32, radius: f32) -> u32 {
+    let mut j = 0;
+    while j < thin && radius >= thin_radius(p, j + 1) {
+        j += 1;
+    }
+    j
 }
 
-/// The share a kept fragment of radius `radius` takes at level `thin`: its lattice block's cells.
+/// The radius (px) from which fragments are thinned at level `j`: two lattice spacings, so that a
+/// thinned disc always covers several lattice points' worth of pixels.
+#[inline]
+pub fn thin_radius(p: &SplatParams, j: u32) -> f32 {
+    (2 * (p.cell << j)) as f32
+}
+
+/// The share a kept fragment of radius `radius` takes in a list thinned to level `thin`: the
+/// cells of its lattice block.
 #[inline]
 pub fn thin_weight(p: &SplatParams, thin: u32, radius: f32) -> f32 {
-    if thin > 0 && radius >= thin_radius(p, thin) { (1u32 << (2 * thin)) as f32 } else { 1.0 }
+    (1u32 << (2 * own_level(p, thin, radius))) as f32
 }
 
 /// Index of cell `c` (row-major inside tile `(tx, ty)`), or `NONE` outside the cell grid.

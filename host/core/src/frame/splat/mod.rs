@@ -11,6 +11,7 @@ mod options;
 mod report;
 
 use crate::ops::sort::SegmentedSort;
+use dof_shaders::sort::{CLASS_CAPS, top_class_for};
 use dof_shaders::KernelDesc;
 use dof_shaders::splat::accumulate::splat_accumulate;
 use dof_shaders::splat::bin::{ALLOC, splat_alloc, splat_bin, splat_tile_count, tiles_per_count_group};
@@ -37,8 +38,16 @@ pub const MAX_LIST_ENTRIES: u64 = 1 << 29;
 /// built-in scene wants more than 2 at 1920x1080 (the one-shot path grows the pool).
 pub const DEFAULT_LIST_ENTRIES_PER_PIXEL: u64 = 2;
 pub const MIN_LIST_ENTRIES: u64 = 1 << 20;
-/// Longest list the sort is sized for unless told otherwise (longer lists are counted as overflow).
-pub const DEFAULT_MAX_LIST: u32 = 1 << 16;
+/// The longest list a context sorts unless told otherwise: the largest the device sorts in
+/// workgroup memory (`dof_shaders::sort::CLASS_CAPS`, from its workgroup-memory limit: 4096 with
+/// 32 KiB, 6144 with 48 KiB). A longer list is thinned to fit
+/// (`dof_shaders::splat::bin::thin_keeps`), so a frame records none of the global-memory sort's
+/// commands (22 more, most of them empty in most frames, for lists of up to 65 536). Give a longer
+/// bound (`SplatContextDesc::max_list`) to sort such lists whole; the one-shot path does so after a
+/// frame that thinned ([`DofContext::grow_to_fit`]).
+pub fn default_max_list(backend: &dyn Backend) -> u32 {
+    CLASS_CAPS[top_class_for(backend.limits().max_shared_bytes) as usize]
+}
 
 /// What a context is created for.
 #[derive(Clone, Debug)]
@@ -52,7 +61,7 @@ pub struct SplatContextDesc {
     /// Tile-list entries the pool holds (default: [`DEFAULT_LIST_ENTRIES_PER_PIXEL`] per pixel of
     /// the maximum extent, at least [`MIN_LIST_ENTRIES`]; at most [`MAX_LIST_ENTRIES`]).
     pub list_entries: Option<u64>,
-    /// Longest list one tile may have (default [`DEFAULT_MAX_LIST`]).
+    /// Longest list one tile may have (default [`default_max_list`]).
     pub max_list: Option<u32>,
     /// Hold the buffers that image inputs and outputs go through (10 words a pixel).
     pub image_io: bool,
@@ -199,7 +208,7 @@ impl SplatContext {
             });
         }
         // The pool's bump pointer must not wrap: every tile adds at most `max_list` to it.
-        let max_list = desc.max_list.unwrap_or(DEFAULT_MAX_LIST).clamp(1, (u32::MAX as u64 / tiles).min(list_entries) as u32);
+        let max_list = desc.max_list.unwrap_or_else(|| default_max_list(backend)).clamp(1, (u32::MAX as u64 / tiles).min(list_entries) as u32);
         let merge_steps = desc.options.merge.steps();
         let in_flight = InFlight::new(desc.frames_in_flight)?;
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A kernel change against its baseline on one GPU, in one lease: `dof bench frame` of two builds,
+# A kernel change against its baseline on one GPU, in one run: `dof bench frame` of two builds,
 # interleaved scene by scene (baseline, change, baseline again), so that clock changes and other
 # drift show as a spread between the two baseline runs instead of passing for a speed-up.
 #
@@ -10,7 +10,7 @@
 # Writes OUT_DIR/<label>-<scene>-<W>x<H>-<method>-<merge>.json (labels base, new, base2) and
 # compare.md: per row the three frame times (median over --frames after --warmup frames; GPUs
 # raise their clocks over the first frames, so the warm-up is long) and new/base. No run starts
-# past --deadline seconds (default 400), so a short lease still brings back the rows done.
+# past --deadline seconds (default 400), so a short run still brings back the rows done.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?output folder}; base=${2:?baseline dof}; new=${3:?new dof}; shift 3

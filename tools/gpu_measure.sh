@@ -17,7 +17,7 @@
 # sweep. Copy OUT_DIR into docs/gpu/ with the device's name. --quick runs 320x180 and 160x90,
 # 3 frames after 1 warm-up, a 4-spp reference: what lavapipe can finish, to test the script itself.
 # --scenes, --sizes and --methods narrow the sweep (method:merge, as in the list below), and
-# --no-ratios leaves out the ratio bench, so a short lease can run the sweep in parts into one
+# --no-ratios leaves out the ratio bench, so a short run can do the sweep in parts into one
 # OUT_DIR (the log is appended to; summary.md is made from every JSON there). DOF=path/to/dof
 # skips the build.
 set -uo pipefail

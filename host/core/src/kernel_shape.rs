@@ -695,6 +695,6 @@ mod tests {
         assert!(json.starts_with("{\"entry\":\"a\\\"b\",\"words\":0,"));
         assert!(json.contains("\"barriers\":3,"));
         assert!(json.ends_with("\"calls\":0}"));
-        assert_eq!(json.matches(':').count(), 18);
+        assert_eq!(json.matches(':').count(), 19);
     }
 }

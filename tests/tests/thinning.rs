@@ -58,7 +58,11 @@ fn tiles(w: usize, h: usize) -> Vec<Vec<usize>> {
     let mut all = Vec::new();
     for ty in 0..h.div_ceil(TILE) {
         for tx in 0..w.div_ceil(TILE) {
-            all.push((ty * TILE..(ty * TILE + TILE).min(h)).flat_map(|y| (tx * TILE..(tx * TILE + TILE).min(w)).map(move |x| y * w + x)).collect());
+            all.push(
+                (ty * TILE..(ty * TILE + TILE).min(h))
+                    .flat_map(|y| (tx * TILE..(tx * TILE + TILE).min(w)).map(move |x| y * w + x))
+                    .collect(),
+            );
         }
     }
     all
@@ -97,7 +101,11 @@ fn lists_beyond_the_sort_are_thinned_and_stay_blurred() {
         err_thinned += mean_abs(&thinned, &whole.image.data, &pixels);
         err_sharp += mean_abs(&sharp, &whole.image.data, &pixels);
     }
-    assert!(differing > 0 && differing <= report.thinned_tiles, "{differing} tiles differ from the whole frame, {} thinned", report.thinned_tiles);
+    assert!(
+        differing > 0 && differing <= report.thinned_tiles,
+        "{differing} tiles differ from the whole frame, {} thinned",
+        report.thinned_tiles
+    );
     assert!(
         err_thinned < 0.25 * err_sharp,
         "thinned tiles must stay blurred: mean error {err_thinned:.4} against the whole frame, sharp fronts {err_sharp:.4}"

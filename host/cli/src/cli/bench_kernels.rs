@@ -41,7 +41,7 @@ fn modules(dir: Option<&Path>) -> anyhow::Result<Vec<(String, Vec<u32>)>> {
             if bytes.len() % 4 != 0 {
                 anyhow::bail!("{}: {} bytes is not a whole number of SPIR-V words", path.display(), bytes.len());
             }
-            modules.push((entry.to_string(), bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect()));
+            modules.push((entry.to_string(), bytes.as_chunks::<4>().0.iter().map(|c| u32::from_le_bytes(*c)).collect()));
         }
     }
     if modules.is_empty() {

@@ -11,8 +11,8 @@ mod options;
 mod report;
 
 use crate::ops::sort::SegmentedSort;
-use dof_shaders::sort::{CLASS_CAPS, top_class_for};
 use dof_shaders::KernelDesc;
+use dof_shaders::sort::{CLASS_CAPS, top_class_for};
 use dof_shaders::splat::accumulate::splat_accumulate;
 use dof_shaders::splat::bin::{ALLOC, splat_alloc, splat_bin, splat_tile_count, tiles_per_count_group};
 use dof_shaders::splat::fragment::{MAX_EDGE, footprint_base, footprint_words};
@@ -208,7 +208,8 @@ impl SplatContext {
             });
         }
         // The pool's bump pointer must not wrap: every tile adds at most `max_list` to it.
-        let max_list = desc.max_list.unwrap_or_else(|| default_max_list(backend)).clamp(1, (u32::MAX as u64 / tiles).min(list_entries) as u32);
+        let max_list =
+            desc.max_list.unwrap_or_else(|| default_max_list(backend)).clamp(1, (u32::MAX as u64 / tiles).min(list_entries) as u32);
         let merge_steps = desc.options.merge.steps();
         let in_flight = InFlight::new(desc.frames_in_flight)?;
 

@@ -7,7 +7,8 @@
 #
 # In order:
 # 1. the device (`dof info`, nvidia-smi; the run ends at once if no NVIDIA device answers) and the
-#    kernels' static shape (`dof bench kernels --json`), the figures the GPU's own numbers explain;
+#    kernels' static shape (`dof bench kernels --json`), the figures the GPU's own numbers explain,
+#    and what the driver reports of each kernel's pipeline (`--device`: registers, spills);
 # 2. warm frame times with one timestamp pair a frame and no command timed on its own
 #    (`dof bench frame --span-only`, 30 frames after a warm-up of at least 500 ms): multi-layer 4x4
 #    and the ring gather on every built-in scene at 1920x1080, then multi-layer 4x4 at 3840x2160;
@@ -89,6 +90,8 @@ if [ -z "${GPU_RUN_SIZE1:-}" ] && ! grep -q "vulkan device 0: NVIDIA" "$m/device
   finish; exit 1
 fi
 "$dof" bench kernels --json > "$m/kernels.jsonl" 2> "$m/kernels.err" || echo "bench kernels failed" | tee -a "$log"
+step 60 "$dof" bench kernels --device > "$m/kernels-device.jsonl" 2> "$m/kernels-device.err" \
+  || echo "driver statistics failed: $(tail -n 1 "$m/kernels-device.err")" | tee -a "$log"
 for scene in simple railing columns highlights fence edges; do
   span_only 20 "$s1" "$scene" multilayer 4x4
   span_only 20 "$s1" "$scene" ring-gather none

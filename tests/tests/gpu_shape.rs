@@ -15,7 +15,7 @@
 //! Per frame, the commands of a multi-layer frame are held too, counted by the CPU backend (the
 //! same recording as on Vulkan).
 
-use dof::backend::{Backend, CpuBackend};
+use dof::backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
 use dof::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof::kernel_shape::{KernelShape, analyze};
 use dof::methods::buffers::{SLOT_WORDS, slot_words};
@@ -187,4 +187,25 @@ fn a_multilayer_frame_records_a_bounded_number_of_commands() {
         assert!(c.empty_dispatches < c.dispatches, "{merge:?}: {c:?}");
         ctx.destroy(&mut b);
     }
+}
+
+/// Where the driver reports pipeline statistics, each kernel's pipeline has some (registers,
+/// spills); where it does not (lavapipe), asking for them is refused with the reason, before any
+/// device is made.
+#[test]
+fn driver_statistics_where_the_device_reports_them() {
+    if dof_tests::vulkan().is_none() {
+        return;
+    }
+    match VulkanBackend::new(&VulkanOptions { pipeline_statistics: true, validation: true, ..Default::default() }) {
+        Ok(mut vk) => {
+            let stats = vk.pipeline_statistics(&dof_shaders::splat::bin::BIN).unwrap();
+            assert!(!stats.is_empty() && stats.iter().all(|s| !s.name.is_empty()), "{stats:?}");
+        }
+        Err(e) => assert!(e.to_string().contains("VK_KHR_pipeline_executable_properties"), "{e}"),
+    }
+    // A backend made without them refuses the query.
+    let Some(mut vk) = dof_tests::vulkan() else { return };
+    let refused = vk.pipeline_statistics(&dof_shaders::splat::bin::BIN).unwrap_err();
+    assert!(refused.to_string().contains("VulkanOptions::pipeline_statistics"), "{refused}");
 }

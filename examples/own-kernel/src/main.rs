@@ -10,7 +10,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if cpu != want {
         return Err("the CPU backend's histogram is not plain Rust's".into());
     }
-    let mut vulkan = dof_core::VulkanBackend::new(&dof_core::VulkanOptions { validation: true, device: None })?;
+    let mut vulkan = dof_core::VulkanBackend::new(&dof_core::VulkanOptions { validation: true, ..Default::default() })?;
     add_to(&mut vulkan)?;
     let gpu = histogram(&mut vulkan, &values, bins)?;
     let messages = vulkan.validation_messages();

@@ -4,7 +4,7 @@ use own_kernel::{add_to, histogram, sample};
 
 #[test]
 fn histogram_on_vulkan_matches_the_cpu() -> dof_core::Result<()> {
-    let mut vulkan = dof_core::VulkanBackend::new(&dof_core::VulkanOptions { validation: true, device: None })?;
+    let mut vulkan = dof_core::VulkanBackend::new(&dof_core::VulkanOptions { validation: true, ..Default::default() })?;
     add_to(&mut vulkan)?;
     // Added twice: refused, the entry point is taken.
     let err = add_to(&mut vulkan).unwrap_err();

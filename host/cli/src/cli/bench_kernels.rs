@@ -5,6 +5,7 @@
 //! the hot kernels to budgets (`tests/tests/gpu_shape.rs`).
 
 use anyhow::Context;
+use dof::backend::{Backend, VulkanBackend, VulkanOptions};
 use dof::kernel_shape::{KernelShape, analyze};
 use std::path::{Path, PathBuf};
 
@@ -21,6 +22,11 @@ pub struct KernelsArgs {
     /// commit's, to compare a kernel change before and after.
     #[arg(long)]
     dir: Option<PathBuf>,
+    /// Also what the Vulkan device's driver reports of each kernel's pipeline (registers, spills
+    /// and the like; VK_KHR_pipeline_executable_properties), for the embedded kernels: one JSON
+    /// object a line per statistic. Refused on a device that does not report them (lavapipe).
+    #[arg(long)]
+    device: bool,
 }
 
 /// The modules to read: the embedded ones, or those `dir`'s manifest names.
@@ -62,7 +68,32 @@ pub fn shapes(dir: Option<&Path>, only: Option<&str>) -> anyhow::Result<Vec<Kern
     Ok(shapes)
 }
 
+/// The driver's statistics of every embedded kernel whose entry contains `only`, a JSON object a
+/// line.
+fn device_statistics(only: Option<&str>) -> anyhow::Result<()> {
+    let mut vk = VulkanBackend::new(&VulkanOptions { pipeline_statistics: true, ..Default::default() })?;
+    let device = vk.device_name();
+    for kernel in dof_shaders::all_kernels().filter(|k| only.is_none_or(|text| k.entry.contains(text))) {
+        for s in vk.pipeline_statistics(kernel)? {
+            println!(
+                "{}",
+                serde_json::json!({
+                    "device": device, "entry": kernel.entry, "executable": s.executable, "statistic": s.name,
+                    "value": s.value, "description": s.description,
+                })
+            );
+        }
+    }
+    Ok(())
+}
+
 pub fn run(args: &KernelsArgs) -> anyhow::Result<()> {
+    if args.device {
+        if args.dir.is_some() {
+            anyhow::bail!("--device reads the embedded kernels' pipelines: leave out --dir");
+        }
+        return device_statistics(args.only.as_deref());
+    }
     let shapes = shapes(args.dir.as_deref(), args.only.as_deref())?;
     if shapes.is_empty() {
         anyhow::bail!("no embedded kernel's name contains {:?}", args.only.as_deref().unwrap_or_default());

@@ -165,6 +165,9 @@ pub(super) struct Candidate {
     pub features: Features,
     /// Why the device cannot run the kernels, if it cannot.
     pub problem: Option<String>,
+    /// Whether it can report its pipelines' statistics (VK_KHR_pipeline_executable_properties
+    /// with `pipelineExecutableInfo`): the driver's register and spill counts.
+    pub pipeline_statistics: bool,
 }
 
 /// Device features to enable, from the capabilities the SPIR-V module declares.
@@ -281,12 +284,19 @@ pub(super) fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: 
         let timestamp_bits = queue_family.map_or(0, |i| families[i as usize].timestamp_valid_bits);
 
         let mut missing = Vec::new();
+        let mut pipeline_statistics = false;
         if at_least(2) {
             let mut v12 = vk::PhysicalDeviceVulkan12Features::default();
+            let mut executable = vk::PhysicalDevicePipelineExecutablePropertiesFeaturesKHR::default();
+            let has_executable = has_ext(vk::KHR_PIPELINE_EXECUTABLE_PROPERTIES_NAME);
             let mut features2 = vk::PhysicalDeviceFeatures2::default().push_next(&mut v12);
+            if has_executable {
+                features2 = features2.push_next(&mut executable);
+            }
             instance.get_physical_device_features2(pd, &mut features2);
             let core = features2.features;
             missing = features.missing(&core, &v12);
+            pipeline_statistics = has_executable && executable.pipeline_executable_info == vk::TRUE;
         }
 
         let problem = if !at_least(2) {
@@ -318,7 +328,7 @@ pub(super) fn describe(instance: &ash::Instance, pd: vk::PhysicalDevice, index: 
             limits,
             timestamp_period_ns: props.limits.timestamp_period,
         };
-        Ok(Candidate { physical: pd, info, queue_family, timestamp_bits, features, problem })
+        Ok(Candidate { physical: pd, info, queue_family, timestamp_bits, features, problem, pipeline_statistics })
     }
 }
 
@@ -406,22 +416,41 @@ pub(super) struct DeviceCtx {
     pub push_descriptor: ash::khr::push_descriptor::Device,
     /// Names objects for validation messages, with validation only.
     pub debug_utils: Option<ash::ext::debug_utils::Device>,
+    /// Reads pipelines' statistics, where the backend was asked to and the device can
+    /// (`VulkanOptions::pipeline_statistics`).
+    pub executable_properties: Option<ash::khr::pipeline_executable_properties::Device>,
     /// Whether the backend created the device (and destroys it).
     owned: bool,
 }
 
 impl DeviceCtx {
-    pub fn new(instance: &InstanceCtx, candidate: &Candidate) -> Result<Self> {
+    /// The device of `candidate`; with `pipeline_statistics`, also the extension and feature that
+    /// report pipelines' statistics (refused where the device lacks them).
+    pub fn new(instance: &InstanceCtx, candidate: &Candidate, pipeline_statistics: bool) -> Result<Self> {
         let family = candidate.queue_family.ok_or_else(|| Error::NoVulkan("the device has no compute queue".into()))?;
+        if pipeline_statistics && !candidate.pipeline_statistics {
+            return Err(Error::InvalidArgument(format!(
+                "pipeline statistics were asked for, but {} does not report them (it lacks VK_KHR_pipeline_executable_properties \
+                 with pipelineExecutableInfo)",
+                candidate.info.name
+            )));
+        }
         let priorities = [1.0f32];
         let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
-        let extensions = REQUIRED_EXTENSIONS.map(CStr::as_ptr);
+        let mut extensions: Vec<*const std::ffi::c_char> = REQUIRED_EXTENSIONS.map(CStr::as_ptr).to_vec();
+        if pipeline_statistics {
+            extensions.push(vk::KHR_PIPELINE_EXECUTABLE_PROPERTIES_NAME.as_ptr());
+        }
         let (core, mut v12) = candidate.features.structs();
-        let info = vk::DeviceCreateInfo::default()
+        let mut executable = vk::PhysicalDevicePipelineExecutablePropertiesFeaturesKHR::default().pipeline_executable_info(true);
+        let mut info = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
             .enabled_extension_names(&extensions)
             .enabled_features(&core)
             .push_next(&mut v12);
+        if pipeline_statistics {
+            info = info.push_next(&mut executable);
+        }
         // SAFETY: the physical device comes from this instance; `info` points at live locals.
         let device = unsafe { instance.instance.create_device(candidate.physical, &info, None) }.vk("vkCreateDevice")?;
         // SAFETY: family `family` was created with one queue.
@@ -429,7 +458,9 @@ impl DeviceCtx {
         let push_descriptor = ash::khr::push_descriptor::Device::new(&instance.instance, &device);
         let debug_utils = instance.validation().then(|| ash::ext::debug_utils::Device::new(&instance.instance, &device));
         let graphics = queue_flags(&instance.instance, candidate.physical, family).contains(vk::QueueFlags::GRAPHICS);
-        Ok(DeviceCtx { device, queue, queue_family: family, graphics, push_descriptor, debug_utils, owned: true })
+        let executable_properties =
+            pipeline_statistics.then(|| ash::khr::pipeline_executable_properties::Device::new(&instance.instance, &device));
+        Ok(DeviceCtx { device, queue, queue_family: family, graphics, push_descriptor, debug_utils, executable_properties, owned: true })
     }
 
     /// The caller's device and queue, never destroyed here. `debug_names` names the backend's objects
@@ -445,7 +476,7 @@ impl DeviceCtx {
         let push_descriptor = ash::khr::push_descriptor::Device::new(&instance.instance, &device);
         let debug_utils = debug_names.then(|| ash::ext::debug_utils::Device::new(&instance.instance, &device));
         let graphics = queue_flags(&instance.instance, physical, queue_family).contains(vk::QueueFlags::GRAPHICS);
-        DeviceCtx { device, queue, queue_family, graphics, push_descriptor, debug_utils, owned: false }
+        DeviceCtx { device, queue, queue_family, graphics, push_descriptor, debug_utils, executable_properties: None, owned: false }
     }
 
     /// Whether the device is the caller's (made by [`Self::borrowed`]).

@@ -53,6 +53,23 @@ pub struct VulkanOptions {
     /// The device: a decimal index or a case-insensitive substring of its name. `None` consults
     /// `DOF_VULKAN_DEVICE`, then picks the best device (discrete > integrated > virtual > CPU).
     pub device: Option<String>,
+    /// Have the driver keep each pipeline's statistics (VK_KHR_pipeline_executable_properties):
+    /// registers, spills and the like, for [`VulkanBackend::pipeline_statistics`]. Refused where
+    /// the device does not report them (lavapipe does not).
+    pub pipeline_statistics: bool,
+}
+
+/// One statistic a driver reports of a pipeline's executable ([`VulkanBackend::pipeline_statistics`]).
+#[derive(Clone, Debug)]
+pub struct PipelineStatistic {
+    /// The executable (a compute pipeline has one; its name is the driver's).
+    pub executable: String,
+    /// The statistic's name and description, as the driver gives them (for example NVIDIA's
+    /// register count and local-memory bytes).
+    pub name: String,
+    pub description: String,
+    /// Its value (booleans as 0 or 1).
+    pub value: f64,
 }
 
 /// A physical device as `list_devices` and `info` describe it.
@@ -161,7 +178,7 @@ impl VulkanBackend {
         // Device features follow from the capabilities the kernel modules declare.
         let needed = spirv::all_capabilities();
         let candidate = instance::select(instance::candidates(&instance.instance, &needed)?, choice.as_deref())?;
-        let device = DeviceCtx::new(&instance, &candidate)?;
+        let device = DeviceCtx::new(&instance, &candidate, opts.pipeline_statistics)?;
         let allocator = Allocator::new(&AllocatorCreateDesc {
             instance: instance.instance.clone(),
             device: device.device.clone(),
@@ -248,13 +265,14 @@ impl VulkanBackend {
         physical: vk::PhysicalDevice,
         timestamp_bits: u32,
     ) -> Result<Self> {
+        let capture_statistics = device.executable_properties.is_some();
         // From here on `Drop` cleans up whatever a failing step leaves behind.
         let mut backend = VulkanBackend {
             device,
             instance,
             allocator: Some(allocator),
             info,
-            pipelines: Pipelines::default(),
+            pipelines: Pipelines::new(capture_statistics),
             draws: draw::Draws::default(),
             physical,
             recorder: Recorder::empty(),
@@ -277,6 +295,44 @@ impl VulkanBackend {
 
     /// The Vulkan version the backend's device must support and be created for.
     pub const REQUIRED_API_VERSION: u32 = vk::API_VERSION_1_2;
+
+    /// What the driver reports of `kernel`'s pipeline (created now if need be), executable by
+    /// executable: for each, its statistics by the driver's names (registers, spills, ...). Needs a
+    /// backend made with [`VulkanOptions::pipeline_statistics`].
+    pub fn pipeline_statistics(&mut self, kernel: &'static KernelDesc) -> Result<Vec<PipelineStatistic>> {
+        let Some(ext) = self.device.executable_properties.clone() else {
+            return Err(Error::InvalidArgument("pipeline statistics need a backend made with `VulkanOptions::pipeline_statistics`".into()));
+        };
+        let pipeline = self.pipelines.get(&self.device.device, kernel)?.pipeline;
+        let mut all = Vec::new();
+        // SAFETY: the pipeline was created on this device with CAPTURE_STATISTICS_KHR (the
+        // backend's pipelines are, once statistics are enabled), and stays alive during the calls.
+        unsafe {
+            let executables = ext
+                .get_pipeline_executable_properties(&vk::PipelineInfoKHR::default().pipeline(pipeline))
+                .vk("vkGetPipelineExecutablePropertiesKHR")?;
+            for (index, executable) in executables.iter().enumerate() {
+                let name = executable.name_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+                let info = vk::PipelineExecutableInfoKHR::default().pipeline(pipeline).executable_index(index as u32);
+                for stat in ext.get_pipeline_executable_statistics(&info).vk("vkGetPipelineExecutableStatisticsKHR")? {
+                    let value = match stat.format {
+                        vk::PipelineExecutableStatisticFormatKHR::BOOL32 => (stat.value.b32 == vk::TRUE) as u64 as f64,
+                        vk::PipelineExecutableStatisticFormatKHR::INT64 => stat.value.i64 as f64,
+                        vk::PipelineExecutableStatisticFormatKHR::UINT64 => stat.value.u64 as f64,
+                        vk::PipelineExecutableStatisticFormatKHR::FLOAT64 => stat.value.f64,
+                        _ => f64::NAN,
+                    };
+                    all.push(PipelineStatistic {
+                        executable: name.clone(),
+                        name: stat.name_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
+                        description: stat.description_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
+                        value,
+                    });
+                }
+            }
+        }
+        Ok(all)
+    }
 
     /// The device extensions a caller's device must enable for [`Self::from_raw`].
     pub fn required_device_extensions() -> &'static [&'static CStr] {

@@ -17,15 +17,20 @@ pub(super) struct Pipeline {
     pub pipeline: vk::Pipeline,
 }
 
-#[derive(Default)]
 pub(super) struct Pipelines {
     by_entry: HashMap<&'static str, Pipeline>,
+    /// Create pipelines with CAPTURE_STATISTICS_KHR (the device enabled pipeline statistics).
+    capture_statistics: bool,
     /// The caller's modules (`VulkanBackend::add_modules`): entry -> (words, the entry point's name
     /// inside the module). No entry here is one of the project's.
     added: HashMap<String, (Vec<u32>, String)>,
 }
 
 impl Pipelines {
+    pub fn new(capture_statistics: bool) -> Self {
+        Pipelines { by_entry: HashMap::new(), capture_statistics, added: HashMap::new() }
+    }
+
     /// Adds a caller's modules, all or none: every entry must be new (neither the project's nor
     /// added before, nor twice in `modules`), every module SPIR-V holding that entry point, and its
     /// capabilities within `enabled` (what the device was created with).
@@ -80,7 +85,7 @@ impl Pipelines {
                 kernel.entry
             ))
         })?;
-        let p = create(device, kernel, &words, &name)?;
+        let p = create(device, kernel, &words, &name, self.capture_statistics)?;
         self.by_entry.insert(kernel.entry, p);
         Ok(p)
     }
@@ -93,7 +98,7 @@ impl Pipelines {
     }
 }
 
-fn create(device: &ash::Device, kernel: &KernelDesc, words: &[u32], name: &str) -> Result<Pipeline> {
+fn create(device: &ash::Device, kernel: &KernelDesc, words: &[u32], name: &str, capture_statistics: bool) -> Result<Pipeline> {
     let entry = CString::new(name).map_err(|_| Error::InvalidArgument(format!("kernel entry `{}` contains a NUL byte", kernel.entry)))?;
     let bindings: Vec<_> = (0..kernel.bindings)
         .map(|b| {
@@ -125,7 +130,8 @@ fn create(device: &ash::Device, kernel: &KernelDesc, words: &[u32], name: &str) 
             }
             p.layout = device.create_pipeline_layout(&layout_info, None).vk("vkCreatePipelineLayout")?;
             let stage = vk::PipelineShaderStageCreateInfo::default().stage(vk::ShaderStageFlags::COMPUTE).module(module).name(&entry);
-            let info = [vk::ComputePipelineCreateInfo::default().stage(stage).layout(p.layout)];
+            let flags = if capture_statistics { vk::PipelineCreateFlags::CAPTURE_STATISTICS_KHR } else { vk::PipelineCreateFlags::empty() };
+            let info = [vk::ComputePipelineCreateInfo::default().flags(flags).stage(stage).layout(p.layout)];
             let pipelines = device
                 .create_compute_pipelines(vk::PipelineCache::null(), &info, None)
                 .map_err(|(_, result)| Error::Vulkan { call: "vkCreateComputePipelines", result })?;

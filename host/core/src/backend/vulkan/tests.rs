@@ -10,7 +10,7 @@ fn skip_requested() -> bool {
 }
 
 fn backend() -> Option<VulkanBackend> {
-    match VulkanBackend::new(&VulkanOptions { validation: true, device: None }) {
+    match VulkanBackend::new(&VulkanOptions { validation: true, ..Default::default() }) {
         Ok(b) => Some(b),
         Err(e @ (Error::NoVulkan(_) | Error::NoValidationLayer)) if skip_requested() => {
             eprintln!("DOF_SKIP_VULKAN=1: skipping a Vulkan test on purpose ({e})");

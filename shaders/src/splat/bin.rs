@@ -281,43 +281,40 @@ pub fn alloc_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &SplatParams, tile_co
     });
 }
 
-/// Words of workgroup memory `splat_bin` uses.
+/// Words of workgroup memory `splat_bin_count` and `splat_bin` use.
 const BIN_SHARED: usize = 7 * THREADS as usize;
-/// Candidates whose test results sweep 1 keeps for sweep 2, per invocation: the bits of a word.
+/// Candidates whose test results the count keeps for the writing pass, per invocation: the bits of
+/// a word (`cache[t · THREADS + lid]`).
 const CACHED_CANDIDATES: u32 = 32;
+/// Thinning levels a tile's list is counted at, 0 (whole) to [`MAX_THIN`]: `thin_counts[t · LEVELS + level]`.
+pub const LEVELS: u32 = MAX_THIN + 1;
+// Workgroup memory of both binning passes: [0, 2T) a scan or reduction of one word per invocation;
+// [2T, 3T) the masks of the step; [3T, 5T) the scan of the neighbours' candidate counts; [5T, 6T)
+// the neighbours' tile indices; [6T, 7T) more reductions.
+const SCAN: usize = 0;
+const MASKS: usize = 2 * THREADS as usize;
+const NB_SCAN: usize = 3 * THREADS as usize;
+const NB_TILE: usize = 5 * THREADS as usize;
 
-#[allow(clippy::too_many_arguments)]
-pub fn bin_pass<G: Group, R: Load, M: Mem>(
+/// The candidate space of tile `(tx, ty)`: the fragments of every neighbour tile within the rings
+/// that can reach it (none for a tile copied through), their counts scanned at `sh[nb..]` and
+/// their tile indices at `sh[NB_TILE..]`. Returns `nb` and the candidates in all.
+fn candidate_space<G: Group, const N: usize>(
     g: &mut G,
     p: &SplatParams,
-    sh: &mut [u32; BIN_SHARED],
-    dense: R,
-    tile_count: R,
-    offsets: R,
-    tile_radius: R,
-    mut copy: M,
-    mut keys: M,
-    mut values: M,
-    mut segments: M,
-    mut st: M,
-) {
-    let p = &planned(p, &st);
-    let [tx, ty, _] = g.workgroup_id();
+    sh: &mut [u32; N],
+    tile_count: &impl Load,
+    tile_radius: &impl Load,
+    copied: bool,
+    tx: u32,
+    ty: u32,
+) -> (usize, u32) {
     let t = ty * p.tiles_x + tx;
-    let t_usize = THREADS as usize;
-    // Workgroup memory: [0, 2T) scan of candidates per invocation; [2T, 3T) their masks (word 2T
-    // also passes the list's offset from invocation 0 to all); [3T, 5T) scan of the neighbours'
-    // candidate counts; [5T, 6T) the neighbours' tile indices; [6T, 7T) each invocation's test
-    // results of its first `CACHED_CANDIDATES` candidates, as sweep 1 found them.
-    let (masks, nb_scan, nb_tile, cached) = (2 * t_usize, 3 * t_usize, 5 * t_usize, 6 * t_usize);
     let side = 2 * p.rings + 1;
-    // One candidate space over the fragments of every neighbour tile (within the rings) that can
-    // reach this tile: each invocation takes `candidates_per_thread` at a time, whatever tile they
-    // come from.
     g.each(|lid| {
         let mut n = 0;
         let mut from = 0;
-        if lid < side * side && copy.load(t) == 0 {
+        if lid < side * side && !copied {
             let (sx, sy) = (tx as i32 + (lid % side) as i32 - p.rings as i32, ty as i32 + (lid / side) as i32 - p.rings as i32);
             if sx >= 0 && sy >= 0 && sx < p.tiles_x as i32 && sy < p.tiles_y as i32 {
                 let s = sy as u32 * p.tiles_x + sx as u32;
@@ -328,104 +325,258 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
                 }
             }
         }
-        sh[nb_scan + lid as usize] = n;
-        sh[nb_tile + lid as usize] = from;
+        sh[NB_SCAN + lid as usize] = n;
+        sh[NB_TILE + lid as usize] = from;
     });
-    let nb = inclusive_scan(g, sh, nb_scan, add);
-    let total = sh[nb + t_usize - 1];
+    let nb = inclusive_scan(g, sh, NB_SCAN, add);
+    (nb, sh[nb + THREADS as usize - 1])
+}
+
+/// Binning, first pass (one workgroup per tile): how long the tile's list is at every thinning
+/// level ([`thin_keeps`]; the levels are nested, each keeping a subset of the one before), into
+/// `thin_counts`, and each invocation's test results of its first candidates into `cache`. Each
+/// invocation takes its candidates ([`candidates_per_thread`] at a time, the workgroup's next
+/// ones), then one reduction a level.
+pub fn bin_count_pass<G: Group, R: Load, M: Mem>(
+    g: &mut G,
+    p: &SplatParams,
+    sh: &mut [u32; BIN_SHARED],
+    dense: R,
+    tile_count: R,
+    offsets: R,
+    tile_radius: R,
+    copy: R,
+    mut thin_counts: M,
+    mut cache: M,
+    st: R,
+) {
+    let p = &planned(p, &st);
+    let [tx, ty, _] = g.workgroup_id();
+    let t = ty * p.tiles_x + tx;
+    let (nb, total) = candidate_space(g, p, sh, &tile_count, &tile_radius, copy.load(t) != 0, tx, ty);
     let per = candidates_per_thread(p);
-    // Sweep 1 counts the candidates that reach the tile, so that its list is allocated exactly:
-    // each invocation its own, then one reduction; the first chunks' results stay in workgroup
-    // memory for sweep 2. One atomic a tile then takes its range from the pool. A list that does
-    // not fit (longer than the sort handles, or more than the pool has left) is counted again
-    // thinned ([`thin_keeps`]), a level at a time, until it fits; one that fits at no level
-    // leaves its tile to its sharp fronts.
     let cached_chunks = CACHED_CANDIDATES >> per.trailing_zeros();
-    let (mut whole, mut thin, mut out) = (0u32, 0u32, NONE);
-    let mut count;
-    loop {
-        g.each(|lid| {
-            let (mut kept, mut cache, mut chunk) = (0u32, 0u32, 0u32);
-            let mut first = lid * per;
-            while first < total {
-                let (mask, n) = reaching(p, sh, nb, nb_tile, &dense, &offsets, total, first, per, tx, ty, thin);
-                if chunk < cached_chunks {
-                    cache |= mask << (chunk * per);
-                }
-                kept += n;
-                first += THREADS * per;
-                chunk += 1;
+    // Per invocation, the candidates kept at levels 0 to 4 (scalars, not an array: a GPU would
+    // keep an array indexed at run time in local memory).
+    const _: () = assert!(MAX_THIN == 4);
+    // Five words an invocation where the walk reads none: the scan's and the masks' words, the
+    // half of the neighbours' scan that does not hold its result, and the last.
+    let (a, b, c, e) = (SCAN, SCAN + THREADS as usize, MASKS, 6 * THREADS as usize);
+    let d = if nb == NB_SCAN { NB_SCAN + THREADS as usize } else { NB_SCAN };
+    g.each(|lid| {
+        let (mut k0, mut k1, mut k2, mut k3, mut k4) = (0u32, 0u32, 0u32, 0u32, 0u32);
+        let (mut bits, mut chunk) = (0u32, 0u32);
+        let mut first = lid * per;
+        while first < total {
+            let mut mask = 0u32;
+            visit_reaching(p, sh, nb, &dense, &offsets, total, first, per, tx, ty, |i, r, cx, cy| {
+                mask |= 1 << i;
+                k0 += 1;
+                k1 += thin_keeps(p, 1, cx, cy, r) as u32;
+                k2 += thin_keeps(p, 2, cx, cy, r) as u32;
+                k3 += thin_keeps(p, 3, cx, cy, r) as u32;
+                k4 += thin_keeps(p, 4, cx, cy, r) as u32;
+            });
+            if chunk < cached_chunks {
+                bits |= mask << (chunk * per);
             }
-            sh[lid as usize] = kept;
-            if thin == 0 {
-                sh[cached + lid as usize] = cache;
-            }
-        });
-        count = reduce(g, sh, 0, add);
-        whole = if thin == 0 { count } else { whole };
-        g.each(|lid| {
-            if lid == 0 {
-                sh[masks] = allocate(p, &mut st, count);
-            }
-        });
-        g.each(|_| out = sh[masks]);
-        if out != NONE || count == 0 || thin == MAX_THIN {
-            break;
+            first += THREADS * per;
+            chunk += 1;
         }
-        thin += 1;
-    }
+        cache.store(t * THREADS + lid, bits);
+        let i = lid as usize;
+        (sh[a + i], sh[b + i], sh[c + i], sh[d + i], sh[e + i]) = (k0, k1, k2, k3, k4);
+    });
+    let (n0, n1, n2) = (reduce(g, sh, a, add), reduce(g, sh, b, add), reduce(g, sh, c, add));
+    let (n3, n4) = (reduce(g, sh, d, add), reduce(g, sh, e, add));
     g.each(|lid| {
         if lid == 0 {
-            if out == NONE && whole > 0 {
-                // Not even the coarsest lattice fits: this tile shows its sharp fronts only, and
-                // the frame reports it.
-                copy.store(t, TILE_COPY);
-                st.atomic_add(stats::OVERFLOW_TILES, 1);
-                st.atomic_add(stats::OVERFLOW_ENTRIES, whole);
-            } else if out != NONE && thin > 0 {
-                copy.store(t, thin << TILE_THIN_SHIFT);
-                st.atomic_add(stats::THINNED_TILES, 1);
-                st.atomic_add(stats::THINNED_ENTRIES, whole - count);
-            }
-            if whole > 0 {
-                st.atomic_max(stats::MAX_CAPACITY, whole);
-            }
-            segments.store(2 * t, if out == NONE { 0 } else { out });
-            segments.store(2 * t + 1, if out == NONE { 0 } else { count });
+            let at = t * LEVELS;
+            thin_counts.store(at, n0);
+            thin_counts.store(at + 1, n1);
+            thin_counts.store(at + 2, n2);
+            thin_counts.store(at + 3, n3);
+            thin_counts.store(at + 4, n4);
         }
     });
-    if out == NONE {
+}
+
+/// The level and length of tile `t`'s list under a cap of `cap` entries: the first level whose
+/// list is at most `cap`, or else the deepest, if it fits the sort (`None` if it does not).
+#[inline]
+fn level_under(p: &SplatParams, thin_counts: &impl Load, t: u32, cap: u32) -> Option<(u32, u32)> {
+    let mut level = 0;
+    while level < MAX_THIN && thin_counts.load(t * LEVELS + level) > cap {
+        level += 1;
+    }
+    let n = thin_counts.load(t * LEVELS + level);
+    if n <= p.max_list { Some((level, n)) } else { None }
+}
+
+/// Binning, the plan (one workgroup for the frame): one cap on list length for every tile, the
+/// largest (at most the longest list the sort handles) under which the lists fit the pool, each
+/// list thinned to the first level within it; then every list's place in the pool, tile by tile
+/// (a scan), written to `segments`, and each tile's level to `copy` ([`TILE_THIN_SHIFT`]). The
+/// longest lists are thinned first, where the blur is widest. Only a list whose deepest level
+/// exceeds the sort, or that the pool cannot hold even so, leaves its tile sharp. Placement does not
+/// depend on the order tiles ran in: the same lists on every backend.
+pub fn bin_plan_pass<G: Group, R: Load, M: Mem>(
+    g: &mut G,
+    p: &SplatParams,
+    sh: &mut [u32; 2 * THREADS as usize],
+    thin_counts: R,
+    mut copy: M,
+    mut segments: M,
+    mut st: M,
+) {
+    let tiles = p.tiles_x * p.tiles_y;
+    // Each invocation takes a run of consecutive tiles, so that a scan places them in order.
+    let run = tiles.div_ceil(THREADS);
+    let cap_total = |cap: u32, lid: u32| -> u32 {
+        let mut sum = 0u32;
+        let mut t = lid * run;
+        while t < tiles && t < (lid + 1) * run {
+            if copy.load(t) & TILE_COPY == 0
+                && let Some((_, n)) = level_under(p, &thin_counts, t, cap)
+            {
+                sum += n;
+            }
+            t += 1;
+        }
+        sum
+    };
+    // The largest cap whose lists fit the pool: a binary search (the total grows with the cap).
+    let (mut lo, mut hi) = (0u32, p.max_list);
+    g.each(|lid| sh[lid as usize] = cap_total(hi, lid));
+    if reduce(g, sh, 0, add) <= p.list_capacity {
+        lo = hi;
+    }
+    while lo < hi {
+        let mid = lo + (hi - lo).div_ceil(2);
+        g.each(|lid| sh[lid as usize] = cap_total(mid, lid));
+        if reduce(g, sh, 0, add) <= p.list_capacity {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    let cap = lo;
+    g.each(|lid| sh[lid as usize] = cap_total(cap, lid));
+    let sums = inclusive_scan(g, sh, 0, add);
+    g.each(|lid| {
+        let mut at = if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
+        let (mut thinned, mut left_out, mut sharp, mut sharp_entries, mut longest) = (0u32, 0u32, 0u32, 0u32, 0u32);
+        let mut t = lid * run;
+        while t < tiles && t < (lid + 1) * run {
+            let whole = thin_counts.load(t * LEVELS);
+            longest = if whole > longest { whole } else { longest };
+            let placed = if copy.load(t) & TILE_COPY != 0 { None } else { level_under(p, &thin_counts, t, cap) };
+            // The scan's total is at most the pool; a tile past it (a cap of 0 still too much) is
+            // left out, in tile order.
+            let placed = placed.filter(|&(_, n)| n <= p.list_capacity - at.min(p.list_capacity));
+            match placed {
+                Some((level, n)) => {
+                    segments.store(2 * t, at);
+                    segments.store(2 * t + 1, n);
+                    copy.store(t, level << TILE_THIN_SHIFT);
+                    if level > 0 {
+                        thinned += 1;
+                        left_out += whole - n;
+                    }
+                    at += n;
+                }
+                None => {
+                    segments.store(2 * t, 0);
+                    segments.store(2 * t + 1, 0);
+                    if whole > 0 {
+                        copy.store(t, TILE_COPY);
+                        sharp += 1;
+                        sharp_entries += whole;
+                    }
+                }
+            }
+            t += 1;
+        }
+        if thinned > 0 {
+            st.atomic_add(stats::THINNED_TILES, thinned);
+            st.atomic_add(stats::THINNED_ENTRIES, left_out);
+        }
+        if sharp > 0 {
+            st.atomic_add(stats::OVERFLOW_TILES, sharp);
+            st.atomic_add(stats::OVERFLOW_ENTRIES, sharp_entries);
+        }
+        if longest > 0 {
+            st.atomic_max(stats::MAX_CAPACITY, longest);
+        }
+        if lid == THREADS - 1 {
+            st.atomic_add(stats::LIST_TOP, sh[sums + lid as usize]);
+        }
+    });
+}
+
+/// Binning, second pass (one workgroup per tile): the tile's list at the level and place the plan
+/// gave it, in candidate order (the same on every backend), from the count's cached test results
+/// where it kept them (a thinned list tests its candidates again). Each step places the
+/// invocations' kept candidates through a workgroup scan.
+#[allow(clippy::too_many_arguments)]
+pub fn bin_pass<G: Group, R: Load, M: Mem>(
+    g: &mut G,
+    p: &SplatParams,
+    sh: &mut [u32; BIN_SHARED],
+    dense: R,
+    tile_count: R,
+    offsets: R,
+    tile_radius: R,
+    copy: R,
+    segments: R,
+    cache: R,
+    mut keys: M,
+    mut values: M,
+    st: R,
+) {
+    let p = &planned(p, &st);
+    let [tx, ty, _] = g.workgroup_id();
+    let t = ty * p.tiles_x + tx;
+    let (state, out, len) = (copy.load(t), segments.load(2 * t), segments.load(2 * t + 1));
+    if state & TILE_COPY != 0 || len == 0 {
         return;
     }
-
-    // Sweep 2 writes the list, in candidate order (the same on every backend), from sweep 1's
-    // masks where it kept them (a thinned list tests its candidates again).
+    let thin = state >> TILE_THIN_SHIFT;
+    let (nb, total) = candidate_space(g, p, sh, &tile_count, &tile_radius, false, tx, ty);
+    let per = candidates_per_thread(p);
+    let cached_chunks = CACHED_CANDIDATES >> per.trailing_zeros();
+    let t_usize = THREADS as usize;
     let mut running = 0u32;
     let mut start = 0;
     let mut chunk = 0;
     while start < total {
         g.each(|lid| {
             let first = start + lid * per;
-            let (mask, kept) = if chunk < cached_chunks && thin == 0 {
-                let mask = (sh[cached + lid as usize] >> (chunk * per)) & (u32::MAX >> (32 - per));
-                (mask, mask.count_ones())
+            let mask = if chunk < cached_chunks && thin == 0 {
+                (cache.load(t * THREADS + lid) >> (chunk * per)) & (u32::MAX >> (32 - per))
             } else {
-                reaching(p, sh, nb, nb_tile, &dense, &offsets, total, first, per, tx, ty, thin)
+                let mut mask = 0u32;
+                visit_reaching(p, sh, nb, &dense, &offsets, total, first, per, tx, ty, |i, r, cx, cy| {
+                    if thin_keeps(p, thin, cx, cy, r) {
+                        mask |= 1 << i;
+                    }
+                });
+                mask
             };
-            sh[lid as usize] = kept;
-            sh[masks + lid as usize] = mask;
+            sh[SCAN + lid as usize] = mask.count_ones();
+            sh[MASKS + lid as usize] = mask;
         });
-        let sums = inclusive_scan(g, sh, 0, add);
+        let sums = inclusive_scan(g, sh, SCAN, add);
         let mut chunk_total = 0;
         g.each(|lid| {
             let mut at = out + running + if lid == 0 { 0 } else { sh[sums + lid as usize - 1] };
-            let mask = sh[masks + lid as usize];
+            let mask = sh[MASKS + lid as usize];
             let first = start + lid * per;
             let mut cursor = Cursor::at(if mask != 0 { neighbour(sh, nb, first) } else { 0 }, tx, ty);
             let mut i = 0;
             while i < per {
                 if mask & (1 << i) != 0 {
-                    let j = cursor.candidate(p, sh, nb, nb_tile, &offsets, first + i);
+                    let j = cursor.candidate(p, sh, nb, NB_TILE, &offsets, first + i);
                     keys.store(at, dense.load(4 * j + 2));
                     values.store(at, j);
                     at += 1;
@@ -441,32 +592,15 @@ pub fn bin_pass<G: Group, R: Load, M: Mem>(
     }
 }
 
-/// The first entry of a range of `count` taken from the list pool, or `NONE` when the list is
-/// longer than the sort handles or the pool has no room for it (the range is then given back, so
-/// that a thinner list may still fit). The pointer cannot wrap: the host keeps
-/// `tiles · max_list` below 2^32.
-#[inline]
-fn allocate(p: &SplatParams, st: &mut impl Mem, count: u32) -> u32 {
-    if count == 0 || count > p.max_list {
-        return NONE;
-    }
-    let at = st.atomic_add(stats::LIST_TOP, count);
-    if at <= p.list_capacity && count <= p.list_capacity - at {
-        return at;
-    }
-    st.atomic_add(stats::LIST_TOP, count.wrapping_neg());
-    NONE
-}
-
-/// Which of the `per` candidates from `first` (of `total`) reach tile `(tx, ty)` and are kept at
-/// thinning level `thin`: a mask (bit `i` for candidate `first + i`) and their count.
+/// Calls `f(i, radius, cell_x, cell_y)` for each of the `per` candidates from `first` (of `total`)
+/// whose disc reaches a pixel centre of tile `(tx, ty)`: `i` its place after `first`, the cell its
+/// column and row in the frame's cell grid.
 #[allow(clippy::too_many_arguments)]
 #[inline]
-fn reaching<const N: usize>(
+fn visit_reaching<const N: usize>(
     p: &SplatParams,
     sh: &[u32; N],
     nb: usize,
-    nb_tile: usize,
     dense: &impl Load,
     offsets: &impl Load,
     total: u32,
@@ -474,19 +608,17 @@ fn reaching<const N: usize>(
     per: u32,
     tx: u32,
     ty: u32,
-    thin: u32,
-) -> (u32, u32) {
-    let (mut mask, mut kept) = (0u32, 0u32);
+    mut f: impl FnMut(u32, f32, u32, u32),
+) {
     let mut cursor = Cursor::at(neighbour(sh, nb, first), tx, ty);
     let mut i = 0;
     while i < per && first + i < total {
-        let at = cursor.candidate(p, sh, nb, nb_tile, offsets, first + i);
+        let at = cursor.candidate(p, sh, nb, NB_TILE, offsets, first + i);
         if cursor.reaches {
-            let f = Fragment::load_in(p, dense, at);
-            let r = f.radius(&p.lens, p.max_radius);
-            if disc_reaches(p, f.centre(), r, tx, ty) && thin_keeps(p, thin, cursor.x0 + cursor.x, cursor.y0 + cursor.y, r) {
-                mask |= 1 << i;
-                kept += 1;
+            let frag = Fragment::load_in(p, dense, at);
+            let r = frag.radius(&p.lens, p.max_radius);
+            if disc_reaches(p, frag.centre(), r, tx, ty) {
+                f(i, r, cursor.x0 + cursor.x, cursor.y0 + cursor.y);
             }
             i += 1;
         } else {
@@ -495,7 +627,6 @@ fn reaching<const N: usize>(
             i = cursor.cell_end(sh, nb) - first;
         }
     }
-    (mask, kept)
 }
 
 /// The neighbour whose range of the inclusive scan at `sh[nb..]` holds candidate `j` (binary
@@ -645,7 +776,18 @@ kernel!(
     ALLOC = splat_alloc [256] (SplatParams) { read tile_count, read tile_radius, copy, st } => alloc_pass
 );
 kernel!(
+    /// Each tile's list length at every thinning level, and the count's cached test results.
+    BIN_COUNT = splat_bin_count [256] (SplatParams) shared [u32; 7 * 256]
+        { read dense, read tile_count, read offsets, read tile_radius, read copy, thin_counts, cache, read st } => bin_count_pass
+);
+kernel!(
+    /// One workgroup: each tile's thinning level and place in the list pool.
+    BIN_PLAN = splat_bin_plan [256] (SplatParams) shared [u32; 2 * 256]
+        { read thin_counts, copy, segments, st } => bin_plan_pass
+);
+kernel!(
     /// The tile lists: depth keys and dense fragment indices.
     BIN = splat_bin [256] (SplatParams) shared [u32; 7 * 256]
-        { read dense, read tile_count, read offsets, read tile_radius, copy, keys, values, segments, st } => bin_pass
+        { read dense, read tile_count, read offsets, read tile_radius, read copy, read segments, read cache, keys, values, read st }
+        => bin_pass
 );

@@ -191,7 +191,8 @@ pub mod stats {
     /// and the entries those lists would have held: such tiles are copied through.
     pub const OVERFLOW_TILES: u32 = 14;
     pub const OVERFLOW_ENTRIES: u32 = 15;
-    /// List entries allocated so far (the pool's bump pointer; may pass the capacity on overflow).
+    /// List entries allocated so far (the pool's bump pointer; a range that does not fit is given back,
+    /// so it passes the capacity only for a moment).
     pub const LIST_TOP: u32 = 16;
     /// The device plan: largest CoC radius present (f32 bits, reduced), then the rings and the
     /// radius cap (f32 bits) derived from it.
@@ -209,5 +210,15 @@ pub mod stats {
 }
 
 #[cfg(not(target_arch = "spirv"))]
-pub const KERNELS: [&crate::KernelDesc; 8] =
-    [&plan::PLAN_REDUCE, &plan::PLAN_FINISH, &pack::PACK, &merge::MERGE, &bin::TILE_COUNT, &bin::ALLOC, &bin::BIN, &accumulate::ACCUMULATE];
+pub const KERNELS: [&crate::KernelDesc; 10] = [
+    &plan::PLAN_REDUCE,
+    &plan::PLAN_FINISH,
+    &pack::PACK,
+    &merge::MERGE,
+    &bin::TILE_COUNT,
+    &bin::ALLOC,
+    &bin::BIN_COUNT,
+    &bin::BIN_PLAN,
+    &bin::BIN,
+    &accumulate::ACCUMULATE,
+];

@@ -14,13 +14,13 @@ use crate::ops::sort::SegmentedSort;
 use dof_shaders::KernelDesc;
 use dof_shaders::sort::{CLASS_CAPS, top_class_for};
 use dof_shaders::splat::accumulate::splat_accumulate;
-use dof_shaders::splat::bin::{ALLOC, splat_alloc, splat_bin, splat_tile_count, tiles_per_count_group};
+use dof_shaders::splat::bin::{ALLOC, LEVELS, splat_alloc, splat_bin, splat_bin_count, splat_bin_plan, splat_tile_count, tiles_per_count_group};
 use dof_shaders::splat::fragment::{MAX_EDGE, footprint_base, footprint_words};
 use dof_shaders::splat::merge::{MERGE, splat_merge};
 use dof_shaders::splat::pack::{PACK, splat_pack};
 use dof_shaders::splat::plan::{splat_plan_finish, splat_plan_reduce};
 use dof_shaders::splat::{
-    FLAG_SERIAL, FLAG_UMBRA_MERGE, FOOTPRINT_SIDE_SHIFT, MAX_GROUPS, MAX_RINGS, SplatParams, TILE_SIZES, block_for, stats,
+    FLAG_SERIAL, FLAG_UMBRA_MERGE, FOOTPRINT_SIDE_SHIFT, MAX_GROUPS, MAX_RINGS, SplatParams, THREADS, TILE_SIZES, block_for, stats,
 };
 pub use options::{Merge, SplatOptions, SplatPlanReport};
 pub use report::{LLVMPIPE_SAFE_LIST, SplatReport};
@@ -99,6 +99,10 @@ struct Buffers {
     tile_count: BufferId,
     tile_radius: BufferId,
     copy: BufferId,
+    /// Per tile, its list's length at every thinning level (binning's count, for its plan).
+    thin_counts: BufferId,
+    /// Per tile and invocation, binning's count's test results of its first candidates.
+    bin_cache: BufferId,
     segments: BufferId,
     dense: BufferId,
     mask: BufferId,
@@ -259,6 +263,8 @@ impl SplatContext {
                 tile_count: owned.make(backend, tiles, "splat/tile-count")?,
                 tile_radius: owned.make(backend, tiles, "splat/tile-radius")?,
                 copy: owned.make(backend, tiles, "splat/copy")?,
+                thin_counts: owned.make(backend, tiles * LEVELS as u64, "splat/thin-counts")?,
+                bin_cache: owned.make(backend, tiles * THREADS as u64, "splat/bin-cache")?,
                 segments: segments[0],
                 dense,
                 mask: owned.make(backend, mask_words.len() as u64, "splat/aperture-mask")?,
@@ -462,7 +468,11 @@ impl SplatContext {
         let alloc = splat_alloc::Bindings { tile_count, tile_radius, copy: b.copy, st };
         backend.run(alloc, groups_for(&ALLOC, tiles), &fin, "splat/alloc")?;
         let (copy, keys, values, segments) = (b.copy, b.keys, b.values, b.segments);
-        let bin = splat_bin::Bindings { dense, tile_count, offsets, tile_radius, copy, keys, values, segments, st };
+        let (thin_counts, cache) = (b.thin_counts, b.bin_cache);
+        let count = splat_bin_count::Bindings { dense, tile_count, offsets, tile_radius, copy, thin_counts, cache, st };
+        backend.run(count, tile_grid, &fin, "splat/bin-count")?;
+        backend.run(splat_bin_plan::Bindings { thin_counts, copy, segments, st }, [1, 1, 1], &fin, "splat/bin-plan")?;
+        let bin = splat_bin::Bindings { dense, tile_count, offsets, tile_radius, copy, segments, cache, keys, values, st };
         backend.run(bin, tile_grid, &fin, "splat/bin")?;
         self.sort.record(backend, b.segments, tiles as u32, b.keys, b.values, b.keys_sorted, b.values_sorted)?;
         let acc =

@@ -12,14 +12,15 @@
 //!   another: [`candidates_per_thread`]) and keeps those whose disc reaches a pixel centre of the
 //!   tile. A neighbour's candidates are its fragments in the dense array, cell by cell in the tile,
 //!   each cell's in its region ([`SplatParams::cell_region`], written by packing or merging), found
-//!   through the cells' offsets in the tile. A first sweep counts them, one atomic takes exactly
-//!   that many entries from the list pool, and a second sweep writes them in place through a
-//!   workgroup scan, from the first sweep's results where workgroup memory kept them and testing
-//!   again beyond. A list that does not fit the sort or the pool is thinned ([`thin_keeps`]) until
-//!   it does, and the frame reports it; only a list that fits at no level leaves its tile sharp
-//!   (counted as overflow). The destination tile gathers its list (rather than sources scattering
-//!   with atomics), so every list comes out in the same order on every backend, in dense order,
-//!   and the stable sort that follows is deterministic.
+//!   through the cells' offsets in the tile. Three passes: `splat_bin_count` counts each list at
+//!   every thinning level ([`thin_keeps`]), `splat_bin_plan` chooses one cap on list length under
+//!   which the lists fit the pool and places them (a scan over the tiles), and `splat_bin` writes
+//!   each list in place through a workgroup scan, from the count's test results where it kept them
+//!   and testing again beyond. Only a list that fits at no level leaves its tile sharp (counted as
+//!   overflow). The destination tile gathers its list (rather than sources scattering with
+//!   atomics), and the plan places lists in tile order, so every list comes out in the same place
+//!   and order on every backend, in dense order, and the stable sort that follows is
+//!   deterministic.
 
 use super::fragment::Fragment;
 use super::planned;

@@ -16,8 +16,8 @@
 //!    merged list into the cell's region of the dense array and counts it; no level is stored.
 //! 3. [`bin`]: per-tile fragment counts and an index over the partially filled cells (the
 //!    load-balancing structure of §5.1), which tiles no blur reaches, then the tile lists, each
-//!    allocated exactly from a bounded pool (a list that does not fit is thinned to a coarser
-//!    lattice of its sources until it does, and counted).
+//!    placed exactly in a bounded pool by a plan for the whole frame (lists that do not fit are
+//!    thinned to a coarser lattice of their sources until they do, and counted).
 //! 4. The foundation's segmented sort orders every list by depth.
 //! 5. [`accumulate`]: per pixel, front to back over its tile's list with early termination, ending
 //!    at the pixel's sharp front; tiles that no blur reaches write their sharp fronts through.
@@ -191,8 +191,7 @@ pub mod stats {
     /// and the entries those lists would have held: such tiles are copied through.
     pub const OVERFLOW_TILES: u32 = 14;
     pub const OVERFLOW_ENTRIES: u32 = 15;
-    /// List entries allocated so far (the pool's bump pointer; a range that does not fit is given back,
-    /// so it passes the capacity only for a moment).
+    /// List entries the plan placed in the pool (`bin::bin_plan_pass`).
     pub const LIST_TOP: u32 = 16;
     /// The device plan: largest CoC radius present (f32 bits, reduced), then the rings and the
     /// radius cap (f32 bits) derived from it.

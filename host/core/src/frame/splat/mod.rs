@@ -14,7 +14,9 @@ use crate::ops::sort::SegmentedSort;
 use dof_shaders::KernelDesc;
 use dof_shaders::sort::{CLASS_CAPS, top_class_for};
 use dof_shaders::splat::accumulate::splat_accumulate;
-use dof_shaders::splat::bin::{ALLOC, LEVELS, splat_alloc, splat_bin, splat_bin_count, splat_bin_plan, splat_tile_count, tiles_per_count_group};
+use dof_shaders::splat::bin::{
+    ALLOC, LEVELS, splat_alloc, splat_bin, splat_bin_count, splat_bin_plan, splat_tile_count, tiles_per_count_group,
+};
 use dof_shaders::splat::fragment::{MAX_EDGE, footprint_base, footprint_words};
 use dof_shaders::splat::merge::{MERGE, splat_merge};
 use dof_shaders::splat::pack::{PACK, splat_pack};

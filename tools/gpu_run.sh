@@ -11,15 +11,17 @@
 #    and what the driver reports of each kernel's pipeline (`--device`: registers, spills);
 # 2. warm frame times with one timestamp pair a frame and no command timed on its own
 #    (`dof bench frame --span-only`, 30 frames after a warm-up of at least 500 ms): multi-layer 4x4
-#    and the ring gather on every built-in scene at 1920x1080, then multi-layer 4x4 at 3840x2160;
+#    and the ring gather on every built-in scene at 1920x1080; then multi-layer 4x4 per stage
+#    (`dof bench frame` per command) at that size;
 # 3. with BASE_DOF, that build against DOF, interleaved (tools/gpu_compare.sh: multi-layer 4x4 on
 #    every built-in scene at 1920x1080; into OUT/compare/);
-# 4. the moving-camera frame: the device peel of `fence` with the camera orbiting 1 degree a
-#    frame, peel and depth of field, span-only and then per stage, at both sizes;
-# 5. per-stage tables (`dof bench frame` per command): multi-layer 4x4 and the ring gather at
-#    1920x1080 and 3840x2160, then unmerged, 2x2, tiled, bokeh, layered and the ray tracer at
-#    1920x1080; `dof stress` on the GPU (every method's oracles on a real driver);
-#    `dof bench ratios` at 1920x1080; the exhaustive gather; the rest at 3840x2160.
+# 4. `dof stress` on the GPU (every method's oracles on a real driver); multi-layer 4x4 span-only
+#    at 3840x2160;
+# 5. the moving-camera frame: the device peel of `fence` with the camera orbiting 1 degree a
+#    frame, peel and depth of field, span-only and then per stage;
+# 6. per-stage tables: multi-layer 4x4 and the ring gather at 3840x2160, then the ring gather,
+#    unmerged, 2x2, tiled, bokeh, layered and the ray tracer at 1920x1080; `dof bench ratios` at
+#    1920x1080; the exhaustive gather; the rest at 3840x2160.
 # Everything lands in one tarball, OUT_DIR/gpu.tgz. Unpack it into docs/gpu/<device>-<date>/ and
 # run `python3 tools/gpu_summary.py` there for the tables. Vulkan's loader travels as .deb files in
 # .gl/ where the machine lacks one; the NVIDIA ICD is named explicitly when it is present.
@@ -96,21 +98,21 @@ for scene in simple railing columns highlights fence edges; do
   span_only 20 "$s1" "$scene" multilayer 4x4
   span_only 20 "$s1" "$scene" ring-gather none
 done
-for scene in simple railing fence; do span_only 30 "$s2" "$scene" multilayer 4x4; done
+measure 120 --sizes "$s1" --methods multilayer:4x4
 if [ -n "${BASE_DOF:-}" ]; then
   step 130 bash tools/gpu_compare.sh "$m/compare" "$BASE_DOF" "$dof" --sizes "$s1" --methods multilayer:4x4 --deadline 110 >> "$log" 2>&1
 fi
+step 60 "$dof" stress --backend vulkan > "$m/stress-vulkan.log" 2>&1
+echo "stress exit $?" | tee -a "$log"
+for scene in simple railing fence; do span_only 30 "$s2" "$scene" multilayer 4x4; done
 orbit "$s1" --span-only
 orbit "$s1"
 orbit "$s2" --span-only
-measure 120 --sizes "$s1" --methods multilayer:4x4,ring-gather:none
 measure 150 --sizes "$s2" --methods multilayer:4x4,ring-gather:none
+measure 150 --sizes "$s1" --methods ring-gather:none,multilayer:none,multilayer:2x2,tiled:4x4,bokeh:none,layered:none,raytrace:none
 orbit "$s2"
-measure 150 --sizes "$s1" --methods multilayer:none,multilayer:2x2,tiled:4x4,bokeh:none,layered:none,raytrace:none
 no_footprints "$s1"
 ratios 100 "$s1"
-step 60 "$dof" stress --backend vulkan > "$m/stress-vulkan.log" 2>&1
-echo "stress exit $?" | tee -a "$log"
 measure 60 --sizes "$s1" --methods gather:none --frames 5 --warmup 1
 measure 120 --sizes "$s2" --methods multilayer:none,tiled:4x4,layered:none,raytrace:none --frames 5 --warmup 1
 ratios 150 "$s2"

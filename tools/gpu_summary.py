@@ -5,8 +5,11 @@ import glob, json, os, sys
 out = sys.argv[1]
 rows = {}
 for path in sorted(glob.glob(os.path.join(out, "frame-*.json"))):
-    with open(path) as f:
-        r = json.load(f)
+    try:
+        with open(path) as f:
+            r = json.load(f)
+    except ValueError:  # a run cut short by its time limit leaves an empty file
+        continue
     rows.setdefault((r["width"], r["height"]), []).append(r)
 def ms(v):
     return "-" if v is None else f"{v:.3f}"

@@ -7,8 +7,7 @@
 //! which is one legal schedule of the same program. The rule that makes this work: **code outside
 //! `each` must be uniform** (the same for every invocation: loop bounds, workgroup ids, values read from
 //! shared memory after a barrier); per-invocation state that must survive a barrier lives in workgroup
-//! memory, or in a [`Group::Private`] value handed to [`Group::each_with`]: on the GPU that is the
-//! invocation's own registers, on the CPU one value per local id.
+//! memory.
 //!
 //! Storage buffers are arrays of `u32` words (floats travel as their bits). On the CPU they are
 //! `[AtomicU32]` accessed with relaxed ordering, so workgroups can run in parallel without any unsafe
@@ -25,31 +24,6 @@ pub trait Group {
     /// Runs `f(local_index)` for every invocation, then a workgroup barrier that also makes storage
     /// buffer writes of the workgroup visible to it.
     fn each(&mut self, f: impl FnMut(u32));
-    /// State each invocation keeps across barriers: on the GPU one value per invocation (no array),
-    /// on the CPU one per local id.
-    type Private<T: Copy>;
-    /// Every invocation's state, starting at `init`.
-    fn private<T: Copy>(&self, init: T) -> Self::Private<T>;
-    /// [`Group::each`] with each invocation's own state: `f(local_index, state)`, then the barrier.
-    fn each_with<T: Copy>(&mut self, state: &mut Self::Private<T>, f: impl FnMut(u32, &mut T));
-}
-
-/// An atomic add to word `i` of workgroup memory (between the invocations of one `each`); returns
-/// the previous value. On the CPU the invocations of a workgroup run one after another, so it is a
-/// plain add.
-#[inline]
-pub fn shared_add<const N: usize>(sh: &mut [u32; N], i: usize, v: u32) -> u32 {
-    #[cfg(target_arch = "spirv")]
-    {
-        use spirv_std::memory::{Scope, Semantics};
-        unsafe { spirv_std::arch::atomic_i_add::<u32, { Scope::Workgroup as u32 }, { Semantics::NONE.bits() }>(&mut sh[i], v) }
-    }
-    #[cfg(not(target_arch = "spirv"))]
-    {
-        let old = sh[i];
-        sh[i] = old.wrapping_add(v);
-        old
-    }
 }
 
 /// Read access to a storage buffer of `u32` words: all a kernel's read-only binding offers (on the
@@ -109,17 +83,6 @@ mod cpu {
         fn each(&mut self, mut f: impl FnMut(u32)) {
             for lid in 0..self.size {
                 f(lid);
-            }
-        }
-        type Private<T: Copy> = Vec<T>;
-        #[inline]
-        fn private<T: Copy>(&self, init: T) -> Vec<T> {
-            vec![init; self.size as usize]
-        }
-        #[inline]
-        fn each_with<T: Copy>(&mut self, state: &mut Vec<T>, mut f: impl FnMut(u32, &mut T)) {
-            for (lid, s) in state.iter_mut().enumerate() {
-                f(lid as u32, s);
             }
         }
     }
@@ -221,28 +184,12 @@ mod gpu {
         #[inline]
         fn each(&mut self, mut f: impl FnMut(u32)) {
             f(self.local_index);
-            barrier();
+            control_barrier::<
+                { Scope::Workgroup as u32 },
+                { Scope::Workgroup as u32 },
+                { Semantics::WORKGROUP_MEMORY.bits() | Semantics::UNIFORM_MEMORY.bits() | Semantics::ACQUIRE_RELEASE.bits() },
+            >();
         }
-        type Private<T: Copy> = T;
-        #[inline]
-        fn private<T: Copy>(&self, init: T) -> T {
-            init
-        }
-        #[inline]
-        fn each_with<T: Copy>(&mut self, state: &mut T, mut f: impl FnMut(u32, &mut T)) {
-            f(self.local_index, state);
-            barrier();
-        }
-    }
-
-    /// The workgroup barrier after each step: workgroup and storage-buffer writes become visible.
-    #[inline]
-    fn barrier() {
-        control_barrier::<
-            { Scope::Workgroup as u32 },
-            { Scope::Workgroup as u32 },
-            { Semantics::WORKGROUP_MEMORY.bits() | Semantics::UNIFORM_MEMORY.bits() | Semantics::ACQUIRE_RELEASE.bits() },
-        >();
     }
 
     pub struct GpuMem<'a>(pub &'a mut [u32]);

@@ -18,7 +18,7 @@ use dof_shaders::splat::bin::{
     ALLOC, LEVELS, splat_alloc, splat_bin, splat_bin_count, splat_bin_plan, splat_tile_count, tiles_per_count_group,
 };
 use dof_shaders::splat::fragment::{MAX_EDGE, footprint_base, footprint_words};
-use dof_shaders::splat::merge::{MERGE, invocations_per_cell, splat_merge};
+use dof_shaders::splat::merge::{MERGE, splat_merge};
 use dof_shaders::splat::pack::{PACK, splat_pack};
 use dof_shaders::splat::plan::{splat_plan_finish, splat_plan_reduce};
 use dof_shaders::splat::{
@@ -461,8 +461,7 @@ impl SplatContext {
         if last > 0 {
             let label = if last == 1 { "splat/merge-2x2" } else { "splat/merge-4x4" };
             let merge = splat_merge::Bindings { layers: fragments, counts, cells, dense, st: b.stats };
-            let invocations = cell_groups * invocations_per_cell(1 << last) as u64;
-            backend.run(merge, groups_for(&MERGE, invocations), &fin, label)?;
+            backend.run(merge, groups_for(&MERGE, cell_groups), &fin, label)?;
         }
         let (tile_count, offsets, tile_radius, st) = (b.tile_count, b.offsets, b.tile_radius, b.stats);
         let count = splat_tile_count::Bindings { cells, tile_count, offsets, tile_radius, st };

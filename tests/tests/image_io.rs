@@ -1129,3 +1129,30 @@ fn corrupted_files_never_panic() {
         let _ = read_rgb_exr(target.path());
     }
 }
+
+/// Expectation: a FIFO, a device and a directory given as an EXR input are refused as not regular
+/// files by every reader (layered, colour, the header check a mask goes through), at once: nothing
+/// opens the FIFO, which would wait for a writer forever.
+#[test]
+fn special_files_are_refused_without_blocking() {
+    let dir = TempFile::new("special");
+    std::fs::create_dir_all(&dir.0).unwrap();
+    let fifo = dir.0.join("shot.exr");
+    let mut inputs = vec![(PathBuf::from("/dev/zero"), "not a regular file"), (dir.0.clone(), "is a directory")];
+    match std::process::Command::new("mkfifo").arg(&fifo).status() {
+        Ok(s) if s.success() => inputs.push((fifo, "not a regular file")),
+        other => panic!("mkfifo failed ({other:?}): the FIFO case needs it"),
+    }
+    for (path, words) in inputs {
+        let (tx, rx) = std::sync::mpsc::channel();
+        let p = path.clone();
+        std::thread::spawn(move || {
+            let _ = tx.send([err_message(read_layered_exr(&p)), err_message(read_rgb_exr(&p)), err_message(dof::io::check_exr_header(&p))]);
+        });
+        let messages = rx.recv_timeout(std::time::Duration::from_secs(20)).unwrap_or_else(|_| panic!("reading {} blocked", path.display()));
+        for m in messages {
+            assert_mentions(&m, &[words]);
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir.0);
+}

@@ -44,8 +44,8 @@ enum Command {
     FlagTable,
 }
 
-/// The numeric options of `command` and its subcommands, as `(subcommand path, --flag, type)`.
-fn numeric_flags(command: &clap::Command, path: &str, out: &mut Vec<(String, String, &'static str)>) {
+/// The type of a numeric option's value (`None` for any other argument).
+fn numeric_type(arg: &clap::Arg) -> Option<&'static str> {
     use std::any::TypeId;
     let types: [(TypeId, &'static str); 8] = [
         (TypeId::of::<u8>(), "u8"),
@@ -57,10 +57,17 @@ fn numeric_flags(command: &clap::Command, path: &str, out: &mut Vec<(String, Str
         (TypeId::of::<f32>(), "f32"),
         (TypeId::of::<f64>(), "f64"),
     ];
+    if !arg.get_action().takes_values() {
+        return None;
+    }
+    let id = arg.get_value_parser().type_id();
+    types.iter().find(|(t, _)| id == *t).map(|(_, name)| *name)
+}
+
+/// The numeric options of `command` and its subcommands, as `(subcommand path, --flag, type)`.
+fn numeric_flags(command: &clap::Command, path: &str, out: &mut Vec<(String, String, &'static str)>) {
     for arg in command.get_arguments() {
-        let (Some(long), true) = (arg.get_long(), arg.get_action().takes_values()) else { continue };
-        let id = arg.get_value_parser().type_id();
-        if let Some((_, name)) = types.iter().find(|(t, _)| id == *t) {
+        if let (Some(long), Some(name)) = (arg.get_long(), numeric_type(arg)) {
             out.push((path.to_string(), format!("--{long}"), name));
         }
     }
@@ -70,12 +77,30 @@ fn numeric_flags(command: &clap::Command, path: &str, out: &mut Vec<(String, Str
     }
 }
 
+/// The command line's grammar: every subcommand takes a value that starts with `-` and reads as a
+/// number (`--frames -1`, `--lum-threshold -inf`) as that option's value, so that the option's own
+/// range check answers, rather than taking it for an unknown flag.
+fn grammar() -> clap::Command {
+    fn negatives(c: clap::Command) -> clap::Command {
+        // clap reads `-1` as a number, not `-inf` or `-1e-45`: a numeric option takes any value.
+        c.allow_negative_numbers(true)
+            .mut_args(|a| if a.get_long().is_some() && numeric_type(&a).is_some() { a.allow_hyphen_values(true) } else { a })
+            .mut_subcommands(negatives)
+    }
+    negatives(<Cli as clap::CommandFactory>::command())
+}
+
+fn parse<I: IntoIterator<Item = T>, T: Into<std::ffi::OsString> + Clone>(args: I) -> Cli {
+    let matches = grammar().get_matches_from(args);
+    <Cli as clap::FromArgMatches>::from_arg_matches(&matches).unwrap_or_else(|e| e.exit())
+}
+
 fn main() -> std::process::ExitCode {
-    let cli = Cli::parse();
+    let cli = parse(std::env::args_os());
     // No subcommand: render the default scene with the default method.
     let command = match cli.command {
         Some(command) => command,
-        None => match Cli::parse_from(["dof", "render"]).command {
+        None => match parse(["dof", "render"]).command {
             Some(command) => command,
             None => unreachable!("`dof render` parses to the render command"),
         },

@@ -1141,3 +1141,67 @@ fn eval_temporal_writes_a_temporal_psnr_per_method() {
     let md = std::fs::read_to_string(out.join("temporal.md")).unwrap();
     assert!(md.contains("| ring-gather |"), "{md}");
 }
+
+/// A negative number given as its own word (`--frames -1`, `--lum-threshold -inf`) is that
+/// option's value, answered by the option's own range check, never taken for an unknown flag.
+#[test]
+fn negative_values_are_values_not_flags() {
+    for (args, needle) in [
+        (&["bench", "scaling", "--budget-s", "-1"][..], "--budget-s"),
+        (&["render", "--method", "bokeh", "--lum-threshold", "-inf"][..], "--lum-threshold"),
+        (&["bench", "frame", "--frames", "-1"][..], "--frames"),
+        (&["render", "--width", "-5"][..], "--width"),
+        (&["render", "--aperture-radius", "-1e-45"][..], "aperture"),
+    ] {
+        assert_fails_fast_with(args, needle, 20);
+        let stderr = String::from_utf8_lossy(&dof(args).stderr).into_owned();
+        assert!(!stderr.contains("unexpected argument"), "`dof {}`: {stderr}", args.join(" "));
+    }
+}
+
+/// A FIFO given as an EXR input (a scene, one of the pair `compare` reads) is refused as not a
+/// regular file at once, instead of waiting for a writer forever.
+#[test]
+fn a_fifo_as_an_exr_input_is_refused_at_once() {
+    let fifo = temp("input-fifo.exr");
+    let _ = std::fs::remove_file(&fifo);
+    let made = Command::new("mkfifo").arg(&fifo).status().expect("mkfifo runs");
+    assert!(made.success(), "mkfifo failed");
+    let f = fifo.to_str().unwrap();
+    let out = temp("fifo-out.exr");
+    assert_fails_fast_with(&["render", "--scene", f, "--method", "gather", "--out", out.to_str().unwrap()], "not a regular file", 20);
+    assert_fails_fast_with(&["compare", f, f], "not a regular file", 20);
+    let _ = std::fs::remove_file(&fifo);
+}
+
+/// `dof bench frame --out` makes its folder and checks that it can write there before any frame
+/// runs, as `dof render` does.
+#[test]
+fn bench_frame_checks_its_output_before_the_frames() {
+    let base = [
+        "bench",
+        "frame",
+        "--backend",
+        "cpu",
+        "--scene",
+        "simple",
+        "--method",
+        "gather",
+        "--width",
+        "32",
+        "--height",
+        "18",
+        "--frames",
+        "1",
+    ];
+    let mut args = base.to_vec();
+    args.extend(["--out", "/dev/null/sub/x.exr"]);
+    assert_fails_fast_with(&args, "cannot create the output folder", 20);
+    let out = temp("bench-frame-new-folder/frame.exr");
+    let _ = std::fs::remove_dir_all(out.parent().unwrap());
+    let mut args = base.to_vec();
+    args.extend(["--out", out.to_str().unwrap()]);
+    let run = dof(&args);
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    assert!(out.is_file(), "bench frame did not write {}", out.display());
+}

@@ -239,6 +239,22 @@ pub fn read_rgb_exr(path: impl AsRef<Path>) -> Result<(RgbImage, InputReport)> {
     Ok((image, report))
 }
 
+/// Opens an EXR input, refusing anything but a regular file before opening it: opening a FIFO
+/// blocks until something writes to it, and a directory or a device is no image.
+fn open_regular(path: &Path) -> Result<File> {
+    let meta = std::fs::metadata(path).map_err(|e| fs_error("open", path, &e))?;
+    if meta.is_dir() {
+        return Err(Error::invalid(format!("{} is a directory, not an EXR file", path.display())));
+    }
+    if !meta.file_type().is_file() {
+        return Err(Error::invalid(format!(
+            "{} is not a regular file (a FIFO, socket or device): an EXR input must be a file",
+            path.display()
+        )));
+    }
+    File::open(path).map_err(|e| fs_error("open", path, &e))
+}
+
 /// A decoded EXR: every part, every channel, with full names (`part.channel` in multi-part files).
 struct ExrFile {
     parts: Vec<Layer<AnyChannels<FlatSamples>>>,
@@ -250,10 +266,7 @@ struct ExrFile {
 
 impl ExrFile {
     fn open(path: &Path) -> Result<ExrFile> {
-        let mut file = File::open(path).map_err(|e| fs_error("open", path, &e))?;
-        if file.metadata().map(|m| m.is_dir()).unwrap_or(false) {
-            return Err(Error::invalid(format!("{} is a directory, not an EXR file", path.display())));
-        }
+        let mut file = open_regular(path)?;
         let file_len = file.metadata().map(|m| m.len()).unwrap_or(0);
         let mut magic = Vec::with_capacity(8);
         (&mut file).take(8).read_to_end(&mut magic).map_err(|e| fs_error("read", path, &e))?;
@@ -545,7 +558,7 @@ fn select_layers(path: &Path, file: &ExrFile) -> Result<(ExrLayout, Vec<Group>)>
 /// decodes the file itself (a mask plane, say).
 pub fn check_exr_header(path: impl AsRef<Path>) -> Result<()> {
     let path = path.as_ref();
-    let file = File::open(path).map_err(|e| fs_error("open", path, &e))?;
+    let file = open_regular(path)?;
     let meta = guarded(path, || MetaData::read_from_buffered(BufReader::new(file), false).map_err(|e| exr_error(path, e)))?;
     check_declared_size(path, &meta)
 }

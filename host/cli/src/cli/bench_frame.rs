@@ -487,6 +487,10 @@ fn check_view_flags(args: &FrameArgs) -> anyhow::Result<()> {
     {
         anyhow::bail!("--out must name an .exr file, got {}", out.display());
     }
+    if let Some(out) = &args.out {
+        // Its folder made and a probe written now, not after the frames ran.
+        super::render::prepare_output(out)?;
+    }
     Ok(())
 }
 

@@ -431,6 +431,14 @@ fn same_file(a: &Path, b: &Path) -> bool {
     }
 }
 
+/// Makes `out`'s folder and checks that `out` can be written, before any work.
+pub(crate) fn prepare_output(out: &Path) -> anyhow::Result<()> {
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
+    }
+    check_writable(out)
+}
+
 /// Fails now, not after the render, when `out` cannot be written: a probe file beside it is
 /// created and removed.
 fn check_writable(out: &Path) -> anyhow::Result<()> {
@@ -473,10 +481,7 @@ pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
         bail!("--out must name an .exr file (a PNG preview is written beside it), got {}", out.display());
     }
     check_before_work(args, &out)?;
-    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).with_context(|| format!("cannot create the output folder {}", dir.display()))?;
-    }
-    check_writable(&out)?;
+    prepare_output(&out)?;
     if is_file_scene(&args.scene) { render_file(args, &out) } else { render_builtin(args, &out) }
 }
 

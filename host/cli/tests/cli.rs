@@ -1205,3 +1205,66 @@ fn bench_frame_checks_its_output_before_the_frames() {
     assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
     assert!(out.is_file(), "bench frame did not write {}", out.display());
 }
+
+/// A sequence's outputs never collide with its inputs: frames named like the input pattern (which
+/// the next run would read as frames of the shot) are refused, and so are frames of a glTF
+/// sequence that would overwrite one of the scene's own files; nothing is written either way.
+#[test]
+fn sequence_outputs_never_join_or_overwrite_their_inputs() {
+    let dir = temp("seq-collide");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let made = dir.join("render.exr");
+    let o = dof(&[
+        "render",
+        "--method",
+        "pinhole",
+        "--width",
+        "24",
+        "--height",
+        "16",
+        "--frames",
+        "3",
+        "--orbit",
+        "2",
+        "--out",
+        made.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for i in 0..3 {
+        std::fs::rename(dir.join(format!("render-{i:04}.exr")), dir.join(format!("shot-{}.exr", 1001 + i))).unwrap();
+    }
+    let pattern = dir.join("shot-####.exr");
+    let out = dir.join("shot.exr");
+    let args = [
+        "render",
+        "--scene",
+        pattern.to_str().unwrap(),
+        "--method",
+        "gather",
+        "--focus",
+        "4",
+        "--aperture-radius",
+        "0.1",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    assert_fails_fast_with(&args, "named like frames of the input sequence", 20);
+    assert!(!dir.join("shot-0000.exr").exists(), "an output was written");
+
+    // A glTF whose buffer is named like the sequence's first frame.
+    let g = temp("seq-collide-gltf");
+    let _ = std::fs::remove_dir_all(&g);
+    std::fs::create_dir_all(&g).unwrap();
+    let vertices: Vec<u8> = [-1.0f32, -1.0, -5.0, 1.0, -1.0, -5.0, 0.0, 1.0, -5.0].iter().flat_map(|v| v.to_le_bytes()).collect();
+    std::fs::write(g.join("seq-0000.exr"), &vertices).unwrap();
+    let gltf = r#"{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+        "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+        "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[-1,-1,-5],"max":[1,1,-5]}],
+        "bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"uri":"seq-0000.exr","byteLength":36}]}"#;
+    std::fs::write(g.join("s.gltf"), gltf).unwrap();
+    let (scene, out) = (g.join("s.gltf"), g.join("seq.exr"));
+    let args = ["render", "--scene", scene.to_str().unwrap(), "--method", "gather", "--frames", "1", "--out", out.to_str().unwrap()];
+    assert_fails_fast_with(&args, "would overwrite the input", 20);
+    assert_eq!(std::fs::read(g.join("seq-0000.exr")).unwrap(), vertices, "the scene's buffer was overwritten");
+}

@@ -296,12 +296,17 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let mut outputs =
         vec![(out.to_path_buf(), "--out".to_string()), (out.with_extension("png"), "the PNG preview beside --out".to_string())];
     let mut inputs = vec![PathBuf::from(&args.scene)];
-    if exr_pattern::is_pattern(&args.scene) {
+    let frames = if exr_pattern::is_pattern(&args.scene) {
         let files = sequence::exr_frames(args)?;
         let n = files.len() as u32;
+        inputs = files;
+        Some(n)
+    } else {
+        args.frames
+    };
+    if let Some(n) = frames {
         outputs.extend((0..n).map(|i| (sequence::frame_path(out, i, n), format!("frame {i} of the sequence (from --out)"))));
         outputs.push((out.with_extension("gif"), "the GIF preview beside --out".to_string()));
-        inputs = files;
     }
     let lower = args.scene.to_ascii_lowercase();
     if lower.ends_with(".gltf") || lower.ends_with(".glb") {
@@ -310,11 +315,24 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     if Path::new(&args.aperture).extension().is_some() {
         inputs.push(PathBuf::from(&args.aperture));
     }
-    for input in &inputs {
-        for (output, what) in &outputs {
-            if same_file(input, output) {
-                bail!("{what} ({}) would overwrite the input {}; choose another --out", output.display(), input.display());
-            }
+    // One look-up an output (a sequence may have 10,000 frames on each side).
+    let inputs: std::collections::HashMap<PathBuf, &PathBuf> =
+        inputs.iter().map(|i| (i.canonicalize().unwrap_or_else(|_| i.clone()), i)).collect();
+    for (output, what) in &outputs {
+        if let Some(input) = inputs.get(&output.canonicalize().unwrap_or_else(|_| output.clone())) {
+            bail!("{what} ({}) would overwrite the input {}; choose another --out", output.display(), input.display());
+        }
+    }
+    if exr_pattern::is_pattern(&args.scene) {
+        // Outputs the pattern matches would be read as frames of the shot by the next run.
+        if let Some((output, _)) = outputs.iter().find(|(o, _)| exr_pattern::matches(&args.scene, o)) {
+            bail!(
+                "the outputs of --out {} (such as {}) are named like frames of the input sequence {}: a later run would \
+                 read them as frames of the shot; choose another --out",
+                out.display(),
+                output.display(),
+                args.scene
+            );
         }
     }
     Ok(())
@@ -421,14 +439,6 @@ fn lens_flags(args: &RenderArgs) -> String {
     ];
     let flags: Vec<String> = given.iter().filter_map(|(v, flag)| v.map(|v| format!("{flag} {v}"))).collect();
     format!("the lens from {}", flags.join(", "))
-}
-
-/// Whether two paths name the same file (compared canonically when both exist, else as written).
-fn same_file(a: &Path, b: &Path) -> bool {
-    match (a.canonicalize(), b.canonicalize()) {
-        (Ok(a), Ok(b)) => a == b,
-        _ => a == b,
-    }
 }
 
 /// Makes `out`'s folder and checks that `out` can be written, before any work.

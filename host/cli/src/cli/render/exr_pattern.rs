@@ -68,6 +68,19 @@ pub(crate) fn frames(pattern: &str) -> anyhow::Result<(Vec<(u64, PathBuf)>, Vec<
     Ok((found, gaps))
 }
 
+/// Whether `path` is a file the sequence `pattern` would read as one of its frames (its folder
+/// and a name the pattern matches).
+pub(crate) fn matches(pattern: &str, path: &Path) -> bool {
+    let Ok(p) = parse(pattern) else { return false };
+    let name = path.file_name().and_then(|n| n.to_str());
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let same_dir = match (dir.canonicalize(), p.dir.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => dir == p.dir,
+    };
+    same_dir && name.is_some_and(|n| frame_number(&p, n).is_some())
+}
+
 /// The name a sequence's outputs take by default: the pattern's file name without its number.
 pub(crate) fn stem(pattern: &str) -> String {
     let name = Path::new(pattern).file_name().and_then(|n| n.to_str()).unwrap_or("sequence");

@@ -1268,3 +1268,73 @@ fn sequence_outputs_never_join_or_overwrite_their_inputs() {
     assert_fails_fast_with(&args, "would overwrite the input", 20);
     assert_eq!(std::fs::read(g.join("seq-0000.exr")).unwrap(), vertices, "the scene's buffer was overwritten");
 }
+
+/// Colours near f32::MAX (a background, a glTF material) are taken as the numerical contract's
+/// 2^100: summing a pixel's sub-samples stays finite, the sky stays bright, and no method writes
+/// +inf.
+#[test]
+fn colours_near_the_float_limit_stay_finite_and_keep_the_sky() {
+    let sky = 3e38f32;
+    for method in ["gather", "multilayer", "pinhole", "reference"] {
+        let out = temp(&format!("huge-background-{method}.exr"));
+        let o = dof(&[
+            "render",
+            "--scene",
+            "fence",
+            "--method",
+            method,
+            "--width",
+            "64",
+            "--height",
+            "36",
+            "--background=3e38,3e38,3e38",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{method}: {}", String::from_utf8_lossy(&o.stderr));
+        assert!(String::from_utf8_lossy(&o.stderr).contains("2^100"), "{method}: no note of the clamp");
+        let image = dof::io::read_rgb_exr(&out).unwrap().0;
+        let values: Vec<f32> = image.data.iter().flatten().copied().collect();
+        assert!(values.iter().all(|v| v.is_finite() && *v >= 0.0), "{method}: a value not finite or negative");
+        let bright = values.iter().filter(|v| **v > 1e29).count();
+        assert!(bright > values.len() / 10, "{method}: the sky went dark ({bright} bright values of {})", values.len());
+        assert!(values.iter().all(|v| *v <= sky), "{method}");
+    }
+    // A glTF material of base colour 1e38.
+    let g = temp("huge-material");
+    let _ = std::fs::remove_dir_all(&g);
+    std::fs::create_dir_all(&g).unwrap();
+    let vertices: Vec<u8> = [-100.0f32, -100.0, -5.0, 100.0, -100.0, -5.0, 0.0, 100.0, -5.0].iter().flat_map(|v| v.to_le_bytes()).collect();
+    std::fs::write(g.join("t.bin"), &vertices).unwrap();
+    let gltf = r#"{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+        "materials":[{"pbrMetallicRoughness":{"baseColorFactor":[1e38,0,0,1]},"emissiveFactor":[1e38,0,0]}],
+        "meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],
+        "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[-100,-100,-5],"max":[100,100,-5]}],
+        "bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"uri":"t.bin","byteLength":36}]}"#;
+    std::fs::write(g.join("t.gltf"), gltf).unwrap();
+    for method in ["pinhole", "gather", "multilayer"] {
+        let out = g.join(format!("{method}.exr"));
+        let o = dof(&[
+            "render",
+            "--scene",
+            g.join("t.gltf").to_str().unwrap(),
+            "--method",
+            method,
+            "--width",
+            "32",
+            "--height",
+            "18",
+            "--eye",
+            "0,0,0",
+            "--target",
+            "0,0,-1",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{method}: {}", String::from_utf8_lossy(&o.stderr));
+        let image = dof::io::read_rgb_exr(&out).unwrap().0;
+        let values: Vec<f32> = image.data.iter().flatten().copied().collect();
+        assert!(values.iter().all(|v| v.is_finite() && *v >= 0.0), "{method}: a value not finite or negative");
+        assert!(values.iter().any(|v| *v > 1e29), "{method}: the material's light is lost");
+    }
+}

@@ -16,6 +16,7 @@
 //!   background ([`Scene::trace`]). Closed shapes stay opaque: their inner faces would need a
 //!   radiance of their own.
 
+use dof_shaders::radiance::COLOR_MAX;
 use dof_shaders::slot::{Composite, premultiply};
 use glam::Vec3;
 
@@ -178,6 +179,7 @@ impl Scene {
             return Err(Error::invalid("light and ambient colours must be finite and not negative".into()));
         }
         check_background(l.background)?;
+        let lighting = Lighting { background: in_contract(l.background), ..lighting };
         let mut boxes = Vec::new();
         let mut unbounded = Vec::new();
         for (i, p) in primitives.iter().enumerate() {
@@ -232,7 +234,7 @@ impl Scene {
     /// The same scene with another background radiance. Errors on a NaN, negative or infinite value.
     pub fn with_background(mut self, rgb: [f32; 3]) -> Result<Self> {
         check_background(rgb)?;
-        self.lighting.background = rgb;
+        self.lighting.background = in_contract(rgb);
         Ok(self)
     }
 
@@ -293,7 +295,7 @@ impl Scene {
     pub fn shade(&self, ray: &Ray, hit: &Hit) -> [f32; 3] {
         let Some(prim) = self.primitives.get(hit.primitive as usize) else { return [0.0; 3] };
         match prim.material {
-            Material::Emissive(c) => c,
+            Material::Emissive(c) => in_contract(c),
             Material::Diffuse(albedo) => {
                 let n = if hit.normal.dot(ray.direction) > 0.0 { -hit.normal } else { hit.normal };
                 let lambert = n.dot(self.light_dir).max(0.0);
@@ -306,7 +308,7 @@ impl Scene {
                     }
                 };
                 let l = &self.lighting;
-                [0, 1, 2].map(|k| a[k] * (l.ambient[k] + l.color[k] * lambert))
+                in_contract([0, 1, 2].map(|k| a[k] * (l.ambient[k] + l.color[k] * lambert)))
             }
         }
     }
@@ -341,8 +343,16 @@ impl Scene {
     }
 }
 
+/// A radiance under the numerical contract's ceiling: each channel at most
+/// [`COLOR_MAX`] = 2^100, so that summing a pixel's sub-samples, or a lens's samples, stays finite
+/// (a product that overflowed to +inf becomes the ceiling too).
+pub fn in_contract(rgb: [f32; 3]) -> [f32; 3] {
+    rgb.map(|v| if v > COLOR_MAX { COLOR_MAX } else { v })
+}
+
 /// A background radiance must be finite and not negative (HDR values above the half-float range
-/// are fine: the splatting methods scale them like any colour).
+/// are fine: the splatting methods scale them like any colour; above 2^100 they are taken as 2^100,
+/// [`in_contract`]).
 pub fn check_background(rgb: [f32; 3]) -> Result<()> {
     if rgb.iter().all(|v| *v >= 0.0 && v.is_finite()) {
         Ok(())

@@ -242,6 +242,9 @@ fn parse_guard_band(s: &str) -> Result<GuardBand, String> {
 /// scene, the aperture image).
 fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     check_ranges(args)?;
+    if let Some(rgb) = args.background.filter(|c| c.max_element() > dof_shaders::radiance::COLOR_MAX) {
+        eprintln!("note: --background {:e},{:e},{:e} is taken as at most 2^100 a channel, the largest colour the methods read", rgb.x, rgb.y, rgb.z);
+    }
     if args.scene.to_ascii_lowercase().ends_with(".exr") {
         let fixed = [
             (args.width.is_some(), "--width"),
@@ -783,7 +786,7 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let mut mesh = load_gltf(Path::new(&args.scene))?;
     if let Some(rgb) = args.background {
         scene::analytic::check_background(rgb.to_array())?;
-        mesh.lighting.background = rgb.to_array();
+        mesh.lighting.background = scene::analytic::in_contract(rgb.to_array());
     }
     let report = mesh.report.to_string();
     if !report.is_empty() {

@@ -11,11 +11,16 @@ use dof::ops::sort::{SortInput, SortOutput};
 /// A missing driver or layer fails the test with the reason: CI must never skip the Vulkan suites
 /// silently. Setting `DOF_SKIP_VULKAN=1` skips them on purpose (the test prints that it did).
 pub fn vulkan() -> Option<VulkanBackend> {
+    vulkan_with(VulkanOptions { validation: true, ..Default::default() })
+}
+
+/// [`vulkan`] with these options.
+pub fn vulkan_with(options: VulkanOptions) -> Option<VulkanBackend> {
     if std::env::var_os("DOF_SKIP_VULKAN").is_some_and(|v| v == "1") {
         eprintln!("DOF_SKIP_VULKAN=1: skipping a Vulkan test on purpose");
         return None;
     }
-    match VulkanBackend::new(&VulkanOptions { validation: true, ..Default::default() }) {
+    match VulkanBackend::new(&options) {
         Ok(vk) => Some(vk),
         Err(e) => panic!("Vulkan is required for this test (set DOF_SKIP_VULKAN=1 to skip on purpose): {e}"),
     }

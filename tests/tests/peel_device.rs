@@ -11,7 +11,7 @@ use dof::raster::{MeshPeelContext, MeshPeelDesc, default_near, peel_layers};
 use dof::scene::{Camera, ExportOptions, GuardBand, LayerOptions, MeshScene, Vec3, builtin, export_glb, load_gltf_slice};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::raster::mesh::{ALPHA_MASK, MeshMaterial, MeshVertex, NEAREST, TextureInfo, UNLIT};
-use dof_tests::{assert_clean, vulkan};
+use dof_tests::{assert_clean, vulkan, vulkan_with};
 
 /// A built-in scene exported to glTF and loaded back (what `dof scenes --raster` peels), seen by
 /// its own camera at `w` x `h`.
@@ -205,6 +205,28 @@ fn translucent_layers_peel_alike_on_the_cpu() {
 fn translucent_layers_peel_alike_on_vulkan() {
     let Some(mut vk) = vulkan() else { return };
     translucent_layers_on(&mut vk);
+    assert_clean(&mut vk);
+}
+
+/// Vulkan drawing through the draws' compute fallbacks (`DrawPath::Compute`) peels exactly as the
+/// CPU backend does: the same rasteriser, the same slots, counts and buffer, bit for bit.
+#[test]
+fn compute_draws_on_vulkan_peel_as_the_cpu_backend_does() {
+    use dof::backend::{DrawPath, VulkanOptions};
+    let Some(mut vk) = vulkan_with(VulkanOptions { validation: true, draws: DrawPath::Compute, ..Default::default() }) else { return };
+    assert!(!vk.draws_through_graphics());
+    let mut cpu = CpuBackend::new();
+    for (mesh, camera, lens) in [builtin_mesh("fence", 96, 54), masked_bars()] {
+        let desc = MeshPeelDesc::new(&options(GuardBand::Pixels(6), 4, true), default_near(lens.focus_distance));
+        let mut peeled = Vec::new();
+        for b in [&mut cpu as &mut dyn Backend, &mut vk] {
+            let mut ctx = MeshPeelContext::new(b, &mesh.raster(), &camera, &lens, &desc).unwrap();
+            peeled.push(device_peel(b, &mut ctx, &camera, &lens));
+            ctx.destroy(b);
+        }
+        assert!(peeled[0].1.iter().any(|&c| c > 1), "the scene has pixels of several layers");
+        assert!(peeled[0] == peeled[1], "the compute draws' peel differs from the CPU backend's");
+    }
     assert_clean(&mut vk);
 }
 

@@ -243,7 +243,10 @@ fn parse_guard_band(s: &str) -> Result<GuardBand, String> {
 fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     check_ranges(args)?;
     if let Some(rgb) = args.background.filter(|c| c.max_element() > dof_shaders::radiance::COLOR_MAX) {
-        eprintln!("note: --background {:e},{:e},{:e} is taken as at most 2^100 a channel, the largest colour the methods read", rgb.x, rgb.y, rgb.z);
+        eprintln!(
+            "note: --background {:e},{:e},{:e} is taken as at most 2^100 a channel, the largest colour the methods read",
+            rgb.x, rgb.y, rgb.z
+        );
     }
     if args.scene.to_ascii_lowercase().ends_with(".exr") {
         let fixed = [

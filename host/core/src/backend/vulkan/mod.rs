@@ -57,6 +57,40 @@ pub struct VulkanOptions {
     /// registers, spills and the like, for [`VulkanBackend::pipeline_statistics`]. Refused where
     /// the device does not report them (lavapipe does not).
     pub pipeline_statistics: bool,
+    /// How draws (the device peel's rasterisation) run. `Auto` consults `DOF_VULKAN_DRAWS`
+    /// (`graphics` or `compute`), then takes the graphics pipeline where the queue has it.
+    pub draws: DrawPath,
+}
+
+/// How a backend runs draws ([`Backend::draw_indirect`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DrawPath {
+    /// `DOF_VULKAN_DRAWS` if set, else the graphics pipeline where the queue has graphics.
+    #[default]
+    Auto,
+    /// Through the graphics pipeline (refused on a compute-only queue).
+    Graphics,
+    /// Through each draw's compute fallback, the rasteriser the CPU backend runs: on GPUs whose
+    /// graphics path is slow (compute GPUs such as the H100 and H200), much the faster.
+    Compute,
+}
+
+/// Environment variable choosing the draw path when `VulkanOptions::draws` is `Auto`.
+pub const DRAWS_ENV: &str = "DOF_VULKAN_DRAWS";
+
+impl DrawPath {
+    /// The path `Auto` stands for: `DOF_VULKAN_DRAWS`, else graphics.
+    fn resolve(self) -> Result<DrawPath> {
+        if self != DrawPath::Auto {
+            return Ok(self);
+        }
+        match std::env::var(DRAWS_ENV).ok().as_deref().map(str::trim) {
+            None | Some("") => Ok(DrawPath::Graphics),
+            Some(v) if v.eq_ignore_ascii_case("graphics") => Ok(DrawPath::Graphics),
+            Some(v) if v.eq_ignore_ascii_case("compute") => Ok(DrawPath::Compute),
+            Some(v) => Err(Error::InvalidArgument(format!("{DRAWS_ENV}={v}: give `graphics` or `compute` (or unset it)"))),
+        }
+    }
 }
 
 /// One statistic a driver reports of a pipeline's executable ([`VulkanBackend::pipeline_statistics`]).
@@ -163,6 +197,8 @@ pub struct VulkanBackend {
     retired: Vec<(vk::Event, Vec<(GpuBuffer, u64)>)>,
     /// Events of released batches, reset, to be used again.
     spare_events: Vec<vk::Event>,
+    /// Draws go through the graphics pipeline (else through their compute fallbacks).
+    graphics_draws: bool,
 }
 
 fn lock(allocator: &SharedAllocator) -> MutexGuard<'_, Allocator> {
@@ -174,6 +210,7 @@ impl VulkanBackend {
     /// and allocator.
     pub fn new(opts: &VulkanOptions) -> Result<Self> {
         let choice = opts.device.clone().or_else(|| std::env::var(DEVICE_ENV).ok().filter(|s| !s.trim().is_empty()));
+        let draws = opts.draws.resolve()?;
         let instance = InstanceCtx::new(opts.validation)?;
         // Device features follow from the capabilities the kernel modules declare.
         let needed = spirv::all_capabilities();
@@ -188,7 +225,30 @@ impl VulkanBackend {
             allocation_sizes: Default::default(),
         })
         .map_err(|e| Error::Allocation(e.to_string()))?;
-        Self::assemble(device, instance, Arc::new(Mutex::new(allocator)), candidate.info, candidate.physical, candidate.timestamp_bits)
+        let graphics = device.graphics;
+        let mut backend = Self::assemble(
+            device,
+            instance,
+            Arc::new(Mutex::new(allocator)),
+            candidate.info,
+            candidate.physical,
+            candidate.timestamp_bits,
+        )?;
+        backend.graphics_draws = match draws {
+            DrawPath::Compute => false,
+            _ if graphics => true,
+            DrawPath::Graphics if opts.draws == DrawPath::Graphics => {
+                return Err(Error::InvalidArgument("draws through the graphics pipeline: the queue has no graphics".into()));
+            }
+            _ => false,
+        };
+        Ok(backend)
+    }
+
+    /// Whether draws go through the graphics pipeline (else through their compute fallbacks,
+    /// [`DrawPath`]).
+    pub fn draws_through_graphics(&self) -> bool {
+        self.graphics_draws
     }
 
     /// The backend on the caller's device: it creates only its own pipelines, buffers, command pool,
@@ -288,7 +348,9 @@ impl VulkanBackend {
             retiring: Vec::new(),
             retired: Vec::new(),
             spare_events: Vec::new(),
+            graphics_draws: false,
         };
+        backend.graphics_draws = backend.device.graphics;
         backend.recorder.init(&backend.device, timestamp_bits, backend.info.timestamp_period_ns)?;
         Ok(backend)
     }
@@ -792,7 +854,7 @@ impl Backend for VulkanBackend {
     }
     fn check_draw_target(&self, _draw: &'static DrawDesc, size: [u32; 2]) -> Result<()> {
         let covered = self.draws.target.as_ref().is_some_and(|t| t.size[0] >= size[0] && t.size[1] >= size[1]);
-        if self.device.graphics && self.recorder.is_external() && !covered {
+        if self.graphics_draws && self.recorder.is_external() && !covered {
             return Err(Error::InvalidArgument(format!(
                 "a draw at {}x{} inside an external recording: the draw target is smaller, and growing it needs the GPU idle; \
                  make the context for the largest frame before begin_external",
@@ -802,7 +864,7 @@ impl Backend for VulkanBackend {
         Ok(())
     }
     fn reserve_draw_target(&mut self, draw: &'static DrawDesc, size: [u32; 2]) -> Result<()> {
-        if !self.device.graphics {
+        if !self.graphics_draws {
             return Ok(());
         }
         self.ensure_draw_target(draw, size, "reserve")
@@ -995,8 +1057,9 @@ impl Backend for VulkanBackend {
         push: &[u32],
         label: &str,
     ) -> Result<()> {
-        if !self.device.graphics {
-            // A compute-only queue (a caller's): the draw's compute fallback, as on the CPU.
+        if !self.graphics_draws {
+            // A compute-only queue (a caller's), or compute draws asked for: the draw's compute
+            // fallback, as on the CPU.
             return draw_fallback(self, draw, args, buffers, target, size, push, label);
         }
         check_draw(self, draw, args, buffers, target, size, push)?;

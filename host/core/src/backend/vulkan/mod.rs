@@ -70,8 +70,10 @@ pub enum DrawPath {
     Auto,
     /// Through the graphics pipeline (refused on a compute-only queue).
     Graphics,
-    /// Through each draw's compute fallback, the rasteriser the CPU backend runs: on GPUs whose
-    /// graphics path is slow (compute GPUs such as the H100 and H200), much the faster.
+    /// Through each draw's compute fallback, the rasteriser the CPU backend runs (the same
+    /// slots, bit for bit). Each of its workgroups walks every triangle for its tile, so it suits
+    /// small meshes: on an H200 it peeled `fence` at 1920x1080 in 187 ms a frame against the
+    /// graphics pipeline's 26 ms.
     Compute,
 }
 

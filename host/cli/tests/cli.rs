@@ -646,6 +646,7 @@ fn duplicates_and_unknown_names_are_refused_up_front() {
         assert_fails_fast_with(&args, says, 10);
     }
     assert_fails_fast_with(&["eval", "--quick", "--backend", "cpu", "--coc-sweep", "4,4", "--out", o], "--coc-sweep", 10);
+    assert_fails_fast_with(&["eval", "--quick", "--backend", "cpu", "--coc-sweep", "1000000000", "--out", o], "at most 1024", 10);
     assert!(!out.join("report.json").exists(), "no work was done");
     let ratios = ["bench", "ratios", "--backend", "cpu", "--width", "32", "--height", "18", "--spp", "1", "--runs", "1", "--out", o];
     for (scenes, says) in [("simple,simple", "--scenes names `simple` twice"), ("simple,nosuch", "railing")] {
@@ -1337,4 +1338,15 @@ fn colours_near_the_float_limit_stay_finite_and_keep_the_sky() {
         assert!(values.iter().all(|v| v.is_finite() && *v >= 0.0), "{method}: a value not finite or negative");
         assert!(values.iter().any(|v| *v > 1e29), "{method}: the material's light is lost");
     }
+}
+
+/// A sequence too wide for its GIF preview is refused before any frame is rendered, and a
+/// printf-style sequence name (`shot-%04d.exr`) is answered with its `#` spelling.
+#[test]
+fn sequence_names_and_sizes_are_checked_before_the_work() {
+    let out = temp("wide-seq/w.exr");
+    let args = ["render", "--method", "pinhole", "--width", "65536", "--height", "4", "--frames", "1", "--out", out.to_str().unwrap()];
+    assert_fails_fast_with(&args, "GIF preview", 10);
+    assert!(!temp("wide-seq/w-0000.exr").exists());
+    assert_fails_fast_with(&["render", "--scene", "in/shot-%04d.exr", "--method", "gather"], "in/shot-####.exr", 10);
 }

@@ -68,6 +68,10 @@ pub struct EvalArgs {
     out: PathBuf,
 }
 
+/// The largest CoC radius the sweep takes: wider than the diagonal of any frame it renders
+/// (320x180), and exact in f32, so the radius reported is the one asked for.
+const MAX_SWEEP_RADIUS: f64 = 1024.0;
+
 fn sweep_targets(args: &EvalArgs) -> anyhow::Result<Vec<f64>> {
     if args.coc_sweep.is_empty() {
         return Ok(dof::eval::default_coc_sweep(args.quick));
@@ -79,8 +83,8 @@ fn sweep_targets(args: &EvalArgs) -> anyhow::Result<Vec<f64>> {
         .coc_sweep
         .iter()
         .map(|s| match s.parse::<f64>() {
-            Ok(v) if v > 0.0 && v.is_finite() => Ok(v),
-            _ => anyhow::bail!("--coc-sweep takes positive radii in pixels (or `none`), got `{s}`"),
+            Ok(v) if v > 0.0 && v <= MAX_SWEEP_RADIUS => Ok(v),
+            _ => anyhow::bail!("--coc-sweep takes radii in pixels above 0 and at most {MAX_SWEEP_RADIUS} (or `none`), got `{s}`"),
         })
         .collect::<anyhow::Result<_>>()?;
     for (i, r) in radii.iter().enumerate() {

@@ -242,6 +242,9 @@ fn parse_guard_band(s: &str) -> Result<GuardBand, String> {
 /// scene, the aperture image).
 fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     check_ranges(args)?;
+    if let Some(hashes) = exr_pattern::from_printf(&args.scene).filter(|_| !Path::new(&args.scene).exists()) {
+        bail!("--scene {}: no such file; an EXR sequence names its frame number with # (write {hashes})", args.scene);
+    }
     if let Some(rgb) = args.background.filter(|c| c.max_element() > dof_shaders::radiance::COLOR_MAX) {
         eprintln!(
             "note: --background {:e},{:e},{:e} is taken as at most 2^100 a channel, the largest colour the methods read",
@@ -310,6 +313,13 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     } else {
         args.frames
     };
+    let edge = args.width.unwrap_or(0).max(args.height.unwrap_or(0));
+    if frames.is_some() && edge > dof::io::MAX_GIF_EDGE {
+        bail!(
+            "a sequence's GIF preview is at most {} px on an edge; --width/--height {edge} is over it (render single frames instead)",
+            dof::io::MAX_GIF_EDGE
+        );
+    }
     if let Some(n) = frames {
         outputs.extend((0..n).map(|i| (sequence::frame_path(out, i, n), format!("frame {i} of the sequence (from --out)"))));
         outputs.push((out.with_extension("gif"), "the GIF preview beside --out".to_string()));

@@ -68,6 +68,22 @@ pub(crate) fn frames(pattern: &str) -> anyhow::Result<(Vec<(u64, PathBuf)>, Vec<
     Ok((found, gaps))
 }
 
+/// The `#` spelling of a printf-style frame number (`shot-%04d.exr` → `shot-####.exr`, `%d` →
+/// `#`), as Nuke and ffmpeg name sequences; `None` when `scene` holds none.
+pub(crate) fn from_printf(scene: &str) -> Option<String> {
+    let start = scene.find('%')?;
+    let rest = &scene[start + 1..];
+    let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
+    if rest.as_bytes().get(digits) != Some(&b'd') {
+        return None;
+    }
+    let width: usize = if digits == 0 { 1 } else { rest[..digits].parse().ok()? };
+    if width == 0 || width > 16 {
+        return None;
+    }
+    Some(format!("{}{}{}", &scene[..start], "#".repeat(width), &rest[digits + 1..]))
+}
+
 /// Whether `path` is a file the sequence `pattern` would read as one of its frames (its folder
 /// and a name the pattern matches).
 pub(crate) fn matches(pattern: &str, path: &Path) -> bool {
@@ -144,6 +160,14 @@ mod tests {
         let one = dir.path().join("a-#.exr");
         // `a-07` has a leading zero beyond the padding of one: not frame 7, so only `a-7` matches.
         assert_eq!(frames(one.to_str().unwrap()).unwrap().0.len(), 1);
+    }
+
+    #[test]
+    fn printf_frame_numbers_read_as_hashes() {
+        assert_eq!(from_printf("in/shot-%04d.exr").as_deref(), Some("in/shot-####.exr"));
+        assert_eq!(from_printf("shot.%d.exr").as_deref(), Some("shot.#.exr"));
+        assert_eq!(from_printf("shot-####.exr"), None);
+        assert_eq!(from_printf("100%.exr"), None);
     }
 
     #[test]

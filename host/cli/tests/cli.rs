@@ -1350,3 +1350,53 @@ fn sequence_names_and_sizes_are_checked_before_the_work() {
     assert!(!temp("wide-seq/w-0000.exr").exists());
     assert_fails_fast_with(&["render", "--scene", "in/shot-%04d.exr", "--method", "gather"], "in/shot-####.exr", 10);
 }
+
+/// An aperture far wider than any lens (30 m): the splatting methods blur with their capped CoC
+/// and keep the frame's light; ray tracing through layers, which would see past the layers' end,
+/// is refused before any work.
+#[test]
+fn huge_apertures_blur_or_are_refused() {
+    let mean = |method: &str| {
+        let out = temp(&format!("huge-aperture-{method}.exr"));
+        let o = dof(&[
+            "render",
+            "--scene",
+            "simple",
+            "--method",
+            method,
+            "--width",
+            "64",
+            "--height",
+            "36",
+            "--aperture-radius",
+            "30",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{method}: {}", String::from_utf8_lossy(&o.stderr));
+        let image = dof::io::read_rgb_exr(&out).unwrap().0;
+        image.data.iter().flatten().map(|v| *v as f64).sum::<f64>() / (3 * image.data.len()) as f64
+    };
+    let (multilayer, tiled) = (mean("multilayer"), mean("tiled"));
+    assert!(multilayer > 0.5 * tiled && tiled > 0.05, "multilayer mean {multilayer}, tiled {tiled}: the frame went dark");
+    let out = temp("huge-aperture-raytrace.exr");
+    assert_fails_fast_with(
+        &[
+            "render",
+            "--scene",
+            "simple",
+            "--method",
+            "raytrace",
+            "--width",
+            "64",
+            "--height",
+            "36",
+            "--aperture-radius",
+            "30",
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        "ray tracing through layers sees only",
+        20,
+    );
+}

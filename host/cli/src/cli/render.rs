@@ -457,6 +457,22 @@ fn lens_flags(args: &RenderArgs) -> String {
     format!("the lens from {}", flags.join(", "))
 }
 
+/// Refuses a lens whose blur reaches past what ray tracing through layers can see: the layers end
+/// [`scene::MAX_GUARD_BAND`] px beyond the frame, and a ray leaving them finds nothing, so a wider
+/// far-field CoC would darken the frame instead of blurring it. The splatting methods cap the CoC
+/// there instead.
+fn check_lens_reach(args: &RenderArgs, lens: &ThinLens) -> anyhow::Result<()> {
+    let coc = lens.far_limit_px();
+    let reach = dof::scene::MAX_GUARD_BAND as f32;
+    if args.method.name() == "raytrace" && !(coc <= reach) {
+        bail!(
+            "the far-field CoC is {coc:.0} px, but ray tracing through layers sees only {reach:.0} px beyond the frame, where the \
+             layers end: lower the aperture, or use a method that caps the CoC there (multilayer, tiled)"
+        );
+    }
+    Ok(())
+}
+
 /// Makes `out`'s folder and checks that `out` can be written, before any work.
 pub(crate) fn prepare_output(out: &Path) -> anyhow::Result<()> {
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
@@ -547,6 +563,7 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         Method::Reference => bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)"),
         Method::Frame(_) => {
             let lens = exr_lens(args, &layers)?;
+            check_lens_reach(args, &lens)?;
             // Nothing lies beyond an EXR's frame: its edge pixels are extended outwards as far as
             // its largest CoC reaches (the edge policy, the same for every method).
             let margin = edge_margin(&layers, &lens);
@@ -703,6 +720,7 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         lens.focus_distance,
         lens.far_limit_px()
     );
+    check_lens_reach(args, &lens)?;
     if args.frames.is_some() {
         let shots = sequence::shots(args, args.frames.unwrap_or(1), &camera, &settings, &lens)?;
         return sequence::render_sequence(args, out, sequence::Source::Builtin(&builtin.scene), &shots);
@@ -817,6 +835,7 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         lens.focus_distance,
         lens.far_limit_px()
     );
+    check_lens_reach(args, &lens)?;
     if args.frames.is_some() {
         let settings = lens_settings(args, mesh.lens_focused_at(&camera, args.focus)?);
         let shots = sequence::shots(args, args.frames.unwrap_or(1), &camera, &settings, &lens)?;

@@ -59,9 +59,10 @@ pub fn squared_error(p: [f32; 3], q: [f32; 3]) -> f64 {
     (0..3).map(|c| (p[c] as f64 - q[c] as f64).powi(2)).sum()
 }
 
-/// PSNR (signal peak 1) of a mean squared error per channel; `+inf` for 0.
+/// PSNR (signal peak 1) of a mean squared error per channel; `+inf` for 0. An error of the whole
+/// peak is 0 dB, never −0 (`+ 0.0` turns −0 into +0).
 pub fn psnr_of_mse(mse: f64) -> f64 {
-    if mse > 0.0 { -10.0 * mse.log10() } else { f64::INFINITY }
+    if mse > 0.0 { -10.0 * mse.log10() + 0.0 } else { f64::INFINITY }
 }
 
 fn squared_errors(a: &RgbImage, b: &RgbImage) -> Vec<f64> {

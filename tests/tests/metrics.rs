@@ -68,3 +68,15 @@ fn mismatched_inputs_are_errors() {
     assert!(compare(&a, &gradient(8, 9), None).is_err());
     assert!(compare(&a, &a, Some(&[true; 3])).is_err());
 }
+
+/// An image as far as can be from its reference (a sky at 3e38 against black) scores 0 dB, printed
+/// as 0.00 and written to JSON as 0, never −0.
+#[test]
+fn the_largest_error_is_zero_db_not_minus_zero() {
+    let sky = RgbImage { width: 4, height: 2, data: vec![[3e38; 3]; 8] };
+    let black = RgbImage { width: 4, height: 2, data: vec![[0.0; 3]; 8] };
+    let p = psnr(&black, &sky).unwrap();
+    assert!(p == 0.0 && p.is_sign_positive(), "{p}");
+    assert_eq!(format!("{p:.2}"), "0.00");
+    assert!(dof::metrics::psnr_of_mse(1.0).is_sign_positive());
+}

@@ -1322,8 +1322,9 @@ fn colours_near_the_float_limit_stay_finite_and_keep_the_sky() {
     }
 }
 
-/// A sequence too wide for its GIF preview is refused before any frame is rendered, and a
-/// printf-style sequence name (`shot-%04d.exr`) is answered with its `#` spelling.
+/// A sequence too wide for its GIF preview is refused before any frame is rendered, a
+/// printf-style sequence name (`shot-%04d.exr`) is answered with its `#` spelling, and a move over
+/// one EXR names what can move.
 #[test]
 fn sequence_names_and_sizes_are_checked_before_the_work() {
     let out = temp("wide-seq/w.exr");
@@ -1331,6 +1332,13 @@ fn sequence_names_and_sizes_are_checked_before_the_work() {
     assert_fails_fast_with(&args, "GIF preview", 10);
     assert!(!temp("wide-seq/w-0000.exr").exists());
     assert_fails_fast_with(&["render", "--scene", "in/shot-%04d.exr", "--method", "gather"], "in/shot-####.exr", 10);
+    // A move over one EXR says what can move instead of suggesting what is refused next.
+    let exr = temp("one-exr/layers.exr");
+    let o = render_small("fence", "layers", &[], &exr);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let one = ["render", "--scene", exr.to_str().unwrap(), "--method", "gather", "--focus", "4", "--aperture-radius", "0.1"];
+    assert_fails_fast_with(&[&one[..], &["--orbit", "2"]].concat(), "no geometry to turn", 10);
+    assert_fails_fast_with(&[&one[..], &["--focus-to", "8"]].concat(), "EXR sequence by its pattern", 10);
 }
 
 /// An aperture far wider than any lens (30 m): the splatting methods blur with their capped CoC

@@ -429,7 +429,18 @@ fn check_sequence(args: &RenderArgs) -> anyhow::Result<()> {
         (args.f_number_to.is_some(), "--f-number-to"),
     ];
     let sequence = args.frames.is_some() || exr_pattern::is_pattern(&args.scene);
+    let one_exr = !sequence && args.scene.to_ascii_lowercase().ends_with(".exr");
     if let Some((_, flag)) = moves.iter().find(|(given, _)| *given).filter(|_| !sequence) {
+        if one_exr {
+            // `--frames` is refused on one EXR, and an EXR has no geometry to turn: say what moves.
+            let how = if *flag == "--orbit" {
+                "an EXR has no geometry to turn: orbit a built-in or glTF scene with --frames N"
+            } else {
+                "one EXR is one frame: give an EXR sequence by its pattern (shot-####.exr, one file a frame), or a built-in or \
+                 glTF scene with --frames N"
+            };
+            bail!("{flag} moves the shot over a sequence; {how}");
+        }
         bail!("{flag} moves the shot over a sequence: give --frames N (or an EXR sequence such as shot-####.exr)");
     }
     let exr = args.scene.to_ascii_lowercase().ends_with(".exr");

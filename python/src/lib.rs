@@ -7,6 +7,7 @@ use std::path::PathBuf;
 
 use dof::backend::Backend;
 use dof::frame::{BokehOptions, LayeredOptions, METHODS, Merge, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
+use dof::io::SanitizeCounts;
 use dof::layers::{Fragment, LayeredImage, RgbImage};
 use dof::methods::one_shot::one_shot;
 use dof::scene::{Aperture, Camera, LensSettings, MAX_GUARD_BAND, ThinLens, Vec3};
@@ -184,9 +185,11 @@ fn rgbz_image(rgb: ArrayViewD<'_, f32>, depth: ArrayViewD<'_, f32>) -> PyResult<
     }
     let (width, height) = check_size(h, w)?;
     let mut image = LayeredImage::new(width, height, 1).map_err(py_err)?;
+    // Infinite and NaN colours under the EXR readers' policy (+inf → 65504, NaN and -inf → 0).
+    let mut policy = SanitizeCounts::default();
     for y in 0..h {
         for x in 0..w {
-            let color = [rgb[[y, x, 0]], rgb[[y, x, 1]], rgb[[y, x, 2]]];
+            let color = [0, 1, 2].map(|c| policy.color(rgb[[y, x, c]]));
             image.push(x as u32, y as u32, Fragment { color, alpha: 1.0, depth: depth[[y, x]] }).map_err(py_err)?;
         }
     }
@@ -212,6 +215,7 @@ fn layered_image(frags: ArrayViewD<'_, f32>, counts: ArrayViewD<'_, i64>, straig
         return Err(value_error(format!("a multi-layer image needs at least one layer, got {l}")));
     }
     let mut image = LayeredImage::new(width, height, l as u32).map_err(py_err)?;
+    let mut policy = SanitizeCounts::default();
     for y in 0..h {
         for x in 0..w {
             let n = counts[[y, x]];
@@ -225,8 +229,8 @@ fn layered_image(frags: ArrayViewD<'_, f32>, counts: ArrayViewD<'_, i64>, straig
                     return Err(value_error(format!("alpha {alpha} of layer {k} at ({x}, {y}) must lie in [0, 1]")));
                 }
                 // A `Fragment` holds premultiplied colour (the library's slots).
-                let color =
-                    if straight_alpha { dof::dof_shaders::slot::premultiply([f(0), f(1), f(2)], alpha) } else { [f(0), f(1), f(2)] };
+                let raw = [0, 1, 2].map(|i| policy.color(f(i)));
+                let color = if straight_alpha { dof::dof_shaders::slot::premultiply(raw, alpha) } else { raw };
                 image.push(x as u32, y as u32, Fragment { color, alpha, depth: f(3) }).map_err(py_err)?;
             }
         }

@@ -59,6 +59,22 @@ def test_in_focus_is_identity(backend, aperture_radius):
     np.testing.assert_allclose(out, rgb, rtol=1e-5, atol=1e-6)
 
 
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_infinite_colours_follow_the_exr_policy(backend):
+    """A +inf channel is 65504 (the largest half, as `read_exr` makes it), never black; NaN and
+    -inf are 0: the readers' policy, the same for an RGB image and a multi-layer one."""
+    rgb, depth = scene()
+    rgb[10, 40] = [np.inf, np.nan, -np.inf]
+    want = rgb.copy()
+    want[10, 40] = [65504.0, 0.0, 0.0]
+    out = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.0, backend=backend)
+    np.testing.assert_allclose(out, want, rtol=1e-5, atol=1e-6)
+    frags = np.zeros(rgb.shape[:2] + (1, 4), np.float32)
+    frags[:, :, 0, :3], frags[:, :, 0, 3] = rgb, depth
+    layered = dof.blur(frags, np.ones(depth.shape, np.int64), focus=4.0, aperture_radius=0.0, backend=backend)
+    np.testing.assert_allclose(layered, want, rtol=1e-5, atol=1e-6)
+
+
 def test_multilayer_input_and_counts():
     rgb, depth = scene()
     h, w, _ = rgb.shape

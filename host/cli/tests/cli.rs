@@ -1362,3 +1362,31 @@ fn huge_apertures_blur_or_are_refused() {
     assert!(!o.status.success() && stderr.contains("ray tracing through layers sees only"), "{stderr}");
     assert!(start.elapsed() < std::time::Duration::from_secs(20), "the refusal took {:?}", start.elapsed());
 }
+
+/// A flag of one method given to another is refused naming the flag and the methods that take it,
+/// and flags an EXR input fixes (its sub-samples, its footprints) are refused for it, instead of
+/// being ignored.
+#[test]
+fn flags_that_do_not_apply_are_refused() {
+    for (method, flag) in [
+        ("gather", &["--merge", "4x4"][..]),
+        ("gather", &["--tile", "24"][..]),
+        ("multilayer", &["--sprites", "100"][..]),
+        ("gather", &["--lum-threshold", "2"][..]),
+        ("tiled", &["--no-cascade"][..]),
+        ("bokeh", &["--layers-per-doubling", "3"][..]),
+        ("multilayer", &["--aimed-emitters"][..]),
+    ] {
+        let out = temp("flags-apply.exr");
+        let o = render_small("simple", method, flag, &out);
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert!(!o.status.success() && stderr.contains(flag[0]) && stderr.contains("only"), "{method} {flag:?}: {stderr}");
+    }
+    let exr = temp("flags-apply/layers.exr");
+    let o = render_small("fence", "layers", &[], &exr);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for flag in [&["--subsamples", "1"][..], &["--no-footprints"][..]] {
+        let args = [&["render", "--scene", exr.to_str().unwrap(), "--method", "gather", "--focus", "4"][..], flag].concat();
+        assert_fails_fast_with(&args, "does not apply to an EXR input", 10);
+    }
+}

@@ -71,6 +71,8 @@ fn the_viewer_screenshot_matches_dof_render() {
     // starts them (single-layer splatting merges 4x4).
     for (method, merge) in [("multilayer", "none"), ("tiled", "4x4"), ("gather", "4x4"), ("ring-gather", "4x4"), ("bokeh", "4x4")] {
         let exr = dir.join(format!("render-{method}.exr"));
+        // `dof render` takes `--merge` for the splatting methods only.
+        let render_merge = if matches!(method, "multilayer" | "tiled") { merge } else { "none" };
         run(dof()
             .args([
                 "render",
@@ -79,7 +81,7 @@ fn the_viewer_screenshot_matches_dof_render() {
                 "--method",
                 method,
                 "--merge",
-                merge,
+                render_merge,
                 "--backend",
                 "vulkan",
                 "--width",

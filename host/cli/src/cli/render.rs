@@ -259,6 +259,8 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             (args.eye.is_some(), "--eye"),
             (args.target.is_some(), "--target"),
             (args.layers != DEFAULT_LAYERS, "--layers"),
+            (args.subsamples != scene::DEFAULT_SUBSAMPLES, "--subsamples"),
+            (args.no_footprints, "--no-footprints"),
         ];
         if let Some((_, flag)) = fixed.iter().find(|(given, _)| *given) {
             bail!(
@@ -279,6 +281,20 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     }
     if args.rings != dof::methods::ring_gather::DEFAULT_RINGS && !method.is_some_and(|m| m.knob.is_some_and(|k| k.name == "rings")) {
         bail!("--rings is the ring gather's knob; {} does not take it", args.method.name());
+    }
+    // Flags of one method or family given to another (their defaults pass: they change nothing).
+    let name = args.method.name();
+    let only = [
+        (args.merge != Merge::None, "--merge", &["multilayer", "tiled"][..]),
+        (args.tile != 16, "--tile", &["multilayer", "tiled"][..]),
+        (args.lum_threshold != 1.0, "--lum-threshold", &["bokeh"][..]),
+        (args.sprites != 4096, "--sprites", &["bokeh"][..]),
+        (args.no_cascade, "--no-cascade", &["layered"][..]),
+        (args.layers_per_doubling != 2, "--layers-per-doubling", &["layered"][..]),
+        (args.aimed_emitters, "--aimed-emitters", &["reference"][..]),
+    ];
+    if let Some((_, flag, methods)) = only.iter().find(|(given, _, methods)| *given && !methods.contains(&name)) {
+        bail!("{flag} applies to {} only; {name} does not take it", methods.join(" and "));
     }
     match (args.max_coc, args.method.name()) {
         (Some(0), _) => bail!("--max-coc is a CoC diameter of at least 1 px, got 0"),

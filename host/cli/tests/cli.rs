@@ -1356,6 +1356,14 @@ fn huge_apertures_blur_or_are_refused() {
     };
     let (multilayer, tiled) = (mean("multilayer"), mean("tiled"));
     assert!(multilayer > 0.5 * tiled && tiled > 0.05, "multilayer mean {multilayer}, tiled {tiled}: the frame went dark");
+    // A sequence whose aperture grows to 1e30 m: one context, its list pool bounded (the lists
+    // are thinned to fit), the last frame as bright as a still one.
+    let seq = temp("huge-aperture-seq/s.exr");
+    let o = render_small("simple", "multilayer", &["--frames", "2", "--aperture-radius-to", "1e30"], &seq);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let last = dof::io::read_rgb_exr(temp("huge-aperture-seq/s-0001.exr")).unwrap().0;
+    let last = last.data.iter().flatten().map(|v| *v as f64).sum::<f64>() / (3 * last.data.len()) as f64;
+    assert!(last > 0.5 * tiled, "the sequence's last frame went dark ({last} against {tiled})");
     let start = std::time::Instant::now();
     let o = render_small("simple", "raytrace", &aperture, &temp("huge-aperture-raytrace.exr"));
     let stderr = String::from_utf8_lossy(&o.stderr);

@@ -134,8 +134,8 @@ impl LayeredImage {
             width,
             height,
             max_layers,
-            counts: vec![0; width as usize * height as usize],
-            fragments: vec![EMPTY; slots as usize],
+            counts: dof_core::error::filled(width as usize * height as usize, 0, "a layered image's counts")?,
+            fragments: dof_core::error::filled(slots as usize, EMPTY, "a layered image's fragments")?,
             footprints: Vec::new(),
             footprint_side: 0,
         })

@@ -14,7 +14,7 @@ use dof::scene::{Aperture, Camera, LensSettings, MAX_GUARD_BAND, ThinLens, Vec3}
 use dof::{CoreError, CpuBackend, Error, VulkanBackend, VulkanOptions};
 use numpy::ndarray::{Array2, Array3, Array4, ArrayViewD, Axis};
 use numpy::{AllowTypeChange, IntoPyArray, PyArray3, PyArrayLike2, PyArrayLikeDyn, PyUntypedArrayMethods};
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyMemoryError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
@@ -25,6 +25,7 @@ fn py_err(e: impl Into<Error>) -> PyErr {
     let e: Error = e.into();
     match e {
         Error::Core(CoreError::InvalidArgument(_) | CoreError::TooLarge { .. }) | Error::Scene(_) => PyValueError::new_err(e.to_string()),
+        Error::Core(CoreError::HostMemory { .. }) => PyMemoryError::new_err(e.to_string()),
         _ => PyRuntimeError::new_err(e.to_string()),
     }
 }

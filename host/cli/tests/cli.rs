@@ -1398,3 +1398,18 @@ fn flags_that_do_not_apply_are_refused() {
         assert_fails_fast_with(&args, "does not apply to an EXR input", 10);
     }
 }
+
+/// A multi-layer image within the size limits that the machine cannot hold (here, under a 3 GB
+/// address-space limit) is a clear error, not an abort.
+#[test]
+fn an_image_beyond_the_machines_memory_is_an_error() {
+    let out = temp("host-memory/o.exr");
+    let cmd = format!(
+        "ulimit -v 3000000 && exec {} render --scene simple --method gather --width 7800 --height 7800 --guard-band off --out {}",
+        env!("CARGO_BIN_EXE_dof"),
+        out.display()
+    );
+    let o = Command::new("bash").args(["-c", &cmd]).output().expect("bash runs");
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.code() == Some(1) && stderr.contains("out of host memory"), "{:?}: {stderr}", o.status);
+}

@@ -25,6 +25,9 @@ pub enum Error {
     OutOfMemory { what: String, requested: u64, held: u64, budget: u64 },
     #[error("{what} is too large: {size} exceeds the limit {limit}")]
     TooLarge { what: String, size: u64, limit: u64 },
+    /// A host allocation the machine refused: nothing was allocated.
+    #[error("out of host memory: {what} needs {bytes} bytes, which this machine could not allocate")]
+    HostMemory { what: String, bytes: u64 },
     #[error("invalid argument: {0}")]
     InvalidArgument(String),
 }
@@ -39,5 +42,29 @@ pub(crate) trait VkContext<T> {
 impl<T> VkContext<T> for std::result::Result<T, ash::vk::Result> {
     fn vk(self, call: &'static str) -> Result<T> {
         self.map_err(|result| Error::Vulkan { call, result })
+    }
+}
+
+/// `n` copies of `value` in a new vector, or [`Error::HostMemory`] where the allocation fails:
+/// for sizes that come from input, so a size the machine cannot hold is an error, not an abort.
+pub fn filled<T: Clone>(n: usize, value: T, what: &str) -> Result<Vec<T>> {
+    let mut v = Vec::new();
+    let bytes = (n as u64).saturating_mul(std::mem::size_of::<T>() as u64);
+    v.try_reserve_exact(n).map_err(|_| Error::HostMemory { what: what.to_string(), bytes })?;
+    v.resize(n, value);
+    Ok(v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_allocation_beyond_the_machine_is_an_error() {
+        match filled(usize::MAX / 4, 0u64, "a test buffer") {
+            Err(Error::HostMemory { what, bytes }) => assert!(what == "a test buffer" && bytes == u64::MAX, "{what} {bytes}"),
+            other => panic!("{:?}", other.map(|v| v.len())),
+        }
+        assert_eq!(filled(3, 7u8, "small").unwrap(), vec![7, 7, 7]);
     }
 }

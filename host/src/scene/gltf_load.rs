@@ -47,6 +47,7 @@ use gltf::accessor::{DataType, Dimensions};
 use gltf::mesh::Mode;
 
 use super::analytic::Lighting;
+use super::analytic::in_contract;
 use super::mesh::{LoadReport, MAX_TEXELS, MAX_TRIANGLES, MeshCamera, MeshScene, zero_area};
 use crate::error::{CoreError, Error, Result};
 
@@ -139,8 +140,7 @@ fn load(bytes: &[u8], base: Option<&Path>) -> Result<MeshScene> {
         .or_else(|| document.scenes().next())
         .ok_or_else(|| scene_err("the glTF file holds no scene, so no triangles; add a scene whose nodes hold meshes"))?;
     loader.out.lighting.ambient = extras_colour(&scene, "dof_ambient")?.unwrap_or(Lighting::default().ambient);
-    loader.out.lighting.background =
-        crate::scene::analytic::in_contract(extras_colour(&scene, "dof_background")?.unwrap_or(Lighting::default().background));
+    loader.out.lighting.background = in_contract(extras_colour(&scene, "dof_background")?.unwrap_or(Lighting::default().background));
     let mut light_found = false;
     // Depth first with an explicit stack (no recursion limit on deep files); a node reached twice
     // means the hierarchy is not a tree.
@@ -665,9 +665,9 @@ impl Loader<'_> {
         }
         // Colours above the numerical contract's 2^100 are taken as 2^100, so that shading and
         // summing sub-samples stay finite.
-        let [r, g, b] = crate::scene::analytic::in_contract([mat.base[0], mat.base[1], mat.base[2]]);
+        let [r, g, b] = in_contract([mat.base[0], mat.base[1], mat.base[2]]);
         mat.base = [r, g, b, mat.base[3]];
-        mat.emissive = crate::scene::analytic::in_contract(mat.emissive);
+        mat.emissive = in_contract(mat.emissive);
         if let Some(info) = pbr.base_color_texture() {
             mat.base_texture = self.texture(&info, true, &what)?;
         }

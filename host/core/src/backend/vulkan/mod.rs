@@ -228,6 +228,9 @@ impl VulkanBackend {
         })
         .map_err(|e| Error::Allocation(e.to_string()))?;
         let graphics = device.graphics;
+        if opts.draws == DrawPath::Graphics && !graphics {
+            return Err(Error::InvalidArgument("draws through the graphics pipeline: the queue has no graphics".into()));
+        }
         let mut backend = Self::assemble(
             device,
             instance,
@@ -236,14 +239,7 @@ impl VulkanBackend {
             candidate.physical,
             candidate.timestamp_bits,
         )?;
-        backend.graphics_draws = match draws {
-            DrawPath::Compute => false,
-            _ if graphics => true,
-            DrawPath::Graphics if opts.draws == DrawPath::Graphics => {
-                return Err(Error::InvalidArgument("draws through the graphics pipeline: the queue has no graphics".into()));
-            }
-            _ => false,
-        };
+        backend.graphics_draws = graphics && draws != DrawPath::Compute;
         Ok(backend)
     }
 

@@ -5,6 +5,7 @@
 //!
 //! - [`error`]: its errors, the core's ([`CoreError`]) and those of scene files and plots;
 //! - [`layers`]: colour and multi-layer images, the data every method shares;
+//! - [`deep`]: deep images (every sample of a pixel), made tidy, flattened and turned into layers;
 //! - [`scene`]: lenses, cameras, analytic scenes and their exact references; glTF (feature `gltf`);
 //! - [`raster`]: triangle meshes rasterised into multi-layer images and accumulation-buffer references;
 //! - [`methods`]: one frame of a host image through any method of the registry (the one-shot path),
@@ -28,6 +29,7 @@
 //! bars) add the rest; `rebuild-spirv` compiles the kernels to SPIR-V with rust-gpu (pinned nightly)
 //! instead of embedding the prebuilt modules.
 
+pub mod deep;
 pub mod error;
 #[cfg(feature = "eval")]
 pub mod eval;

@@ -241,7 +241,7 @@ pub fn read_rgb_exr(path: impl AsRef<Path>) -> Result<(RgbImage, InputReport)> {
 
 /// Opens an EXR input, refusing anything but a regular file before opening it: opening a FIFO
 /// blocks until something writes to it, and a directory or a device is no image.
-fn open_regular(path: &Path) -> Result<File> {
+pub(super) fn open_regular(path: &Path) -> Result<File> {
     let meta = std::fs::metadata(path).map_err(|e| fs_error("open", path, &e))?;
     if meta.is_dir() {
         return Err(Error::invalid(format!("{} is a directory, not an EXR file", path.display())));
@@ -565,7 +565,7 @@ pub fn check_exr_header(path: impl AsRef<Path>) -> Result<()> {
 
 /// The name a channel is known by: in a multi-part file the part name (or `part<index>`) is
 /// prefixed where the channel name lacks it.
-fn full_channel_name(multi_part: bool, part: usize, part_name: Option<&Text>, channel: &Text) -> String {
+pub(super) fn full_channel_name(multi_part: bool, part: usize, part_name: Option<&Text>, channel: &Text) -> String {
     let part_name = part_name.map(|t| t.to_string()).unwrap_or_else(|| format!("part{part}"));
     let name = channel.to_string();
     if !multi_part || name.starts_with(&format!("{part_name}.")) { name } else { format!("{part_name}.{name}") }
@@ -616,7 +616,7 @@ const EXPANSION_SLACK: u128 = 256 << 20;
 /// Runs the exr crate's decoder, turning a panic inside it into an error: its overflow checks and
 /// index assertions can trip on corrupt data. Decoding runs on this thread (`non_parallel`) so that
 /// such a panic unwinds to here; in the crate's thread pool it would abort the process.
-fn guarded<T>(path: &Path, decode: impl FnOnce() -> Result<T>) -> Result<T> {
+pub(super) fn guarded<T>(path: &Path, decode: impl FnOnce() -> Result<T>) -> Result<T> {
     match std::panic::catch_unwind(std::panic::AssertUnwindSafe(decode)) {
         Ok(result) => result,
         Err(payload) => {
@@ -630,12 +630,39 @@ fn guarded<T>(path: &Path, decode: impl FnOnce() -> Result<T>) -> Result<T> {
     }
 }
 
-/// Walks the raw header attributes of every part (OpenEXR file layout: magic, version, then per part
-/// `name\0type\0size value` until an empty name; multi-part files end with an empty header) and
-/// returns the first part whose `dataWindow` has a maximum below its minimum, with its
-/// `[xMin, yMin, xMax, yMax]`. Any irregularity ends the walk with `None`, leaving the diagnosis to
-/// the exr crate.
+/// Returns the first part whose `dataWindow` has a maximum below its minimum, with its
+/// `[xMin, yMin, xMax, yMax]` (see [`walk_headers`]; an irregular header gives `None`, leaving the
+/// diagnosis to the exr crate).
 fn empty_data_window(r: &mut impl Read) -> Option<(usize, [i32; 4])> {
+    let mut found = None;
+    walk_headers(r, |part, name, kind, value| {
+        if found.is_none() && name == b"dataWindow" && kind == b"box2i" && value.len() == 16 {
+            let b: [i32; 4] = std::array::from_fn(|i| i32::from_le_bytes(value[4 * i..4 * i + 4].try_into().unwrap()));
+            if b[2] < b[0] || b[3] < b[1] {
+                found = Some((part, b));
+            }
+        }
+    });
+    found
+}
+
+/// Walks the raw header attributes of every part (OpenEXR file layout: magic, version, then per part
+/// `name\0type\0size value` until an empty name; multi-part files end with an empty header),
+/// handing `visit` each attribute's part, name, type and value (values over 1 KiB are skipped and
+/// handed as empty). Returns the offset of the first byte after the headers (where the chunk offset
+/// tables begin), or `None` at the first irregularity.
+pub(super) fn walk_headers(r: &mut impl Read, mut visit: impl FnMut(usize, &[u8], &[u8], &[u8])) -> Option<u64> {
+    struct Counted<R> {
+        inner: R,
+        read: u64,
+    }
+    impl<R: Read> Read for Counted<R> {
+        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+            let n = self.inner.read(buf)?;
+            self.read += n as u64;
+            Ok(n)
+        }
+    }
     fn read_i32(r: &mut impl Read) -> Option<i32> {
         let mut b = [0; 4];
         r.read_exact(&mut b).ok()?;
@@ -654,6 +681,7 @@ fn empty_data_window(r: &mut impl Read) -> Option<(usize, [i32; 4])> {
         }
         None
     }
+    let r = &mut Counted { inner: r, read: 0 };
     let _magic = read_i32(r)?;
     let flags = read_i32(r)? as u32;
     let multi_part = flags & 0x1000 != 0;
@@ -667,24 +695,25 @@ fn empty_data_window(r: &mut impl Read) -> Option<(usize, [i32; 4])> {
             attributes += 1;
             let kind = read_name(r)?;
             let size = u64::try_from(read_i32(r)?).ok()?;
-            if name == b"dataWindow" && kind == b"box2i" && size == 16 {
-                let b = [read_i32(r)?, read_i32(r)?, read_i32(r)?, read_i32(r)?];
-                if b[2] < b[0] || b[3] < b[1] {
-                    return Some((part, b));
-                }
-            } else if std::io::copy(&mut r.take(size), &mut std::io::sink()).ok()? != size {
+            if size <= 1024 {
+                let mut value = vec![0; size as usize];
+                r.read_exact(&mut value).ok()?;
+                visit(part, &name, &kind, &value);
+            } else if std::io::copy(&mut r.by_ref().take(size), &mut std::io::sink()).ok()? != size {
                 return None;
+            } else {
+                visit(part, &name, &kind, &[]);
             }
         }
         if !multi_part || attributes == 0 {
-            return None;
+            return Some(r.read);
         }
     }
     None
 }
 
 /// The OpenEXR magic number, with a hint for common non-EXR files.
-fn check_magic(path: &Path, head: &[u8]) -> Result<()> {
+pub(super) fn check_magic(path: &Path, head: &[u8]) -> Result<()> {
     const EXR: [u8; 4] = [0x76, 0x2f, 0x31, 0x01];
     if head.len() >= 4 && head[..4] == EXR {
         return Ok(());
@@ -705,7 +734,7 @@ fn check_magic(path: &Path, head: &[u8]) -> Result<()> {
     Err(Error::invalid(format!("{} is not an OpenEXR file: {what}", path.display())))
 }
 
-fn exr_error(path: &Path, e: ::exr::error::Error) -> Error {
+pub(super) fn exr_error(path: &Path, e: ::exr::error::Error) -> Error {
     use ::exr::error::Error as E;
     let path = path.display();
     Error::invalid(match e {
@@ -724,7 +753,7 @@ fn exr_error(path: &Path, e: ::exr::error::Error) -> Error {
 }
 
 /// At most 24 names, comma-separated.
-fn list(names: &[String]) -> String {
+pub(super) fn list(names: &[String]) -> String {
     const SHOWN: usize = 24;
     let mut s = names.iter().take(SHOWN).map(String::as_str).collect::<Vec<_>>().join(", ");
     if names.len() > SHOWN {

@@ -7,6 +7,9 @@
 //! - [`read_layered_exr`]: an RGB+Z (also Blender's and Nuke's layouts) or multi-layer EXR to a
 //!   `LayeredImage` (the background as a fragment at depth `+inf`), with an
 //!   [`InputReport`] of what was read and repaired; [`read_rgb_exr`]: the colour of an EXR.
+//! - [`read_deep_exr`]: deep OpenEXR files (every sample of every pixel) to a tidy
+//!   [`DeepImage`](crate::deep::DeepImage), which [`DeepImage::layers`](crate::deep::DeepImage::layers)
+//!   turns into a `LayeredImage` for a lens; [`is_deep_exr`] tells deep files from flat ones.
 //! - [`write_png_preview`]: 8-bit sRGB PNG through [`tonemap()`](tonemap::tonemap) (exposure, ACES
 //!   fitted curve, sRGB OETF; formulas in [`tonemap`](mod@tonemap)).
 //!
@@ -90,7 +93,7 @@
 //!
 //! A missing or unreadable file, a file that is not an EXR, a truncated or corrupt EXR, a zero
 //! size, missing R/G/B, missing depth ("needs a Z channel"), several candidate images ("is
-//! ambiguous"), layers with different data windows, subsampled channels, deep data: each is an [`Error::InvalidArgument`] naming the file and saying
+//! ambiguous"), layers with different data windows, subsampled channels, deep data (read by [`read_deep_exr`]): each is an [`Error::InvalidArgument`] naming the file and saying
 //! what to change. Nothing here panics on file contents: a header announcing more than 4096 times
 //! the file's size in pixel data is rejected as corrupt before anything is allocated, and the exr
 //! crate decodes on the calling thread inside `catch_unwind`, so that an assertion it trips on
@@ -107,6 +110,10 @@
 #[cfg(feature = "exr")]
 mod channels;
 #[cfg(feature = "exr")]
+mod deep_codec;
+#[cfg(feature = "exr")]
+mod deep_exr;
+#[cfg(feature = "exr")]
 mod exr_read;
 #[cfg(feature = "exr")]
 mod exr_write;
@@ -122,6 +129,8 @@ use std::path::Path;
 
 #[cfg(feature = "exr")]
 pub use channels::natural_cmp;
+#[cfg(feature = "exr")]
+pub use deep_exr::{DeepReport, is_deep_exr, read_deep_exr};
 #[cfg(feature = "exr")]
 pub use exr_read::{ExrLayout, InputReport, MAX_EXR_EDGE, MAX_EXR_SLOTS, check_exr_header, read_layered_exr, read_rgb_exr};
 #[cfg(feature = "exr")]

@@ -1413,3 +1413,90 @@ fn an_image_beyond_the_machines_memory_is_an_error() {
     let stderr = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.code() == Some(1) && stderr.contains("out of host memory"), "{:?}: {stderr}", o.status);
 }
+
+/// A deep EXR written by OpenEXR's own library (`tools/make_deep_fixtures.py`).
+fn deep_fixture(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../tests/data/deep").join(name)
+}
+
+#[test]
+fn deep_exr_renders_merges_and_makes_sequences() {
+    let deep = deep_fixture("scene-zips.exr");
+    let flat = deep_fixture("scene-flat.exr");
+    let (deep, flat) = (deep.to_str().unwrap(), flat.to_str().unwrap());
+    // In focus the deep file is its flattened composite: the flat layers' front composite.
+    let pinhole = |scene: &[&str], name: &str| {
+        let out = temp(name);
+        let mut args = vec!["render", "--method", "pinhole", "--out", out.to_str().unwrap()];
+        scene.iter().for_each(|s| args.extend(["--scene", s]));
+        let o = dof(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        dof::io::read_rgb_exr(&out).unwrap().0
+    };
+    let (a, b) = (pinhole(&[deep], "deep-pinhole.exr"), pinhole(&[flat], "flat-pinhole.exr"));
+    let worst = a.data.iter().flatten().zip(b.data.iter().flatten()).map(|(x, y)| (x - y).abs()).fold(0.0f32, f32::max);
+    assert!(worst <= 1e-6, "deep and flat differ by {worst}");
+    // A deep file merged with itself: every sample twice, merged back by tidying (alpha 1 - (1-a)²).
+    // Opaque samples stay as they were; the pane (alpha 0.4) hides 0.64 of the wall.
+    let twice = pinhole(&[deep, deep], "deep-twice.exr");
+    assert_eq!(twice.get(45, 2), a.get(45, 2), "the wall alone");
+    let (pane, wall) = ([0.2f32, 0.6, 0.9], [0.2 + 0.6 * 5.0 / 48.0, 0.3, 0.2 + 0.6 * 10.0 / 32.0]);
+    let want: Vec<f32> = (0..3).map(|c| 0.64 * pane[c] + 0.36 * wall[c]).collect();
+    let got = twice.get(5, 10);
+    assert!((0..3).all(|c| (got[c] - want[c]).abs() < 1e-4), "the pane over the wall: {got:?}, want {want:?}");
+
+    // Blurred: the layers are made for the lens, with --layers fragments a pixel, and reported.
+    let out = temp("deep-multilayer.exr");
+    let o = dof(&[
+        "render",
+        "--scene",
+        deep,
+        "--method",
+        "multilayer",
+        "--focus",
+        "4",
+        "--aperture-radius",
+        "0.05",
+        "--layers",
+        "2",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(stdout.contains("deep input to layers (L = 2)") && stdout.contains("left out in umbrae"), "{stdout}");
+    assert_fails_with(
+        &["render", "--scene", flat, "--layers", "2", "--method", "multilayer", "--focus", "4", "--f-number", "2"],
+        "--layers",
+    );
+    assert_fails_with(&["render", "--scene", deep, "--scene", flat, "--method", "pinhole"], "is a flat EXR");
+    assert_fails_with(&["render", "--scene", deep, "--scene", "simple", "--method", "pinhole"], "merge deep EXR files");
+
+    // A sequence of deep frames, its lens moving.
+    let dir = temp("deep-seq");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    for i in 1..=2 {
+        std::fs::copy(deep_fixture("scene-rle.exr"), dir.join(format!("shot-{i:04}.exr"))).unwrap();
+    }
+    let out = dir.join("blur.exr");
+    let pattern = dir.join("shot-####.exr");
+    let o = dof(&[
+        "render",
+        "--scene",
+        pattern.to_str().unwrap(),
+        "--method",
+        "multilayer",
+        "--focus",
+        "4",
+        "--focus-to",
+        "10",
+        "--aperture-radius",
+        "0.05",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let frames: Vec<_> = (0..2).map(|i| dof::io::read_rgb_exr(dir.join(format!("blur-{i:04}.exr"))).unwrap().0).collect();
+    assert_ne!(frames[0], frames[1], "the focus moved");
+}

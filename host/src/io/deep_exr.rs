@@ -274,7 +274,13 @@ fn read_file(path: &Path, parts: &mut Vec<Part>, report: &mut DeepReport) -> Res
         let image = blocks.assemble()?;
         report.samples_read += image.samples.len() as u64;
         let kind = if matches!(layout, Layout::Tiles { .. }) { "deep tiles" } else { "deep scan lines" };
-        report.parts.push(format!("{file_name}: {part_name} ({kind}, {:?})", header.compression));
+        let compression = match header.compression {
+            Compression::Uncompressed => "no compression",
+            Compression::RLE => "RLE",
+            Compression::ZIP1 => "ZIPS",
+            _ => "ZIP",
+        };
+        report.parts.push(format!("{file_name}: {part_name} ({kind}, {compression})"));
         let origin = header.own_attributes.layer_position;
         parts.push(Part { origin: (origin.x() as i64, origin.y() as i64), image });
         read_any = true;

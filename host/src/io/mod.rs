@@ -114,6 +114,8 @@ mod deep_codec;
 #[cfg(feature = "exr")]
 mod deep_exr;
 #[cfg(feature = "exr")]
+mod exr_input;
+#[cfg(feature = "exr")]
 mod exr_read;
 #[cfg(feature = "exr")]
 mod exr_write;
@@ -131,6 +133,8 @@ use std::path::Path;
 pub use channels::natural_cmp;
 #[cfg(feature = "exr")]
 pub use deep_exr::{DeepReport, is_deep_exr, read_deep_exr};
+#[cfg(feature = "exr")]
+pub use exr_input::ExrInput;
 #[cfg(feature = "exr")]
 pub use exr_read::{ExrLayout, InputReport, MAX_EXR_EDGE, MAX_EXR_SLOTS, check_exr_header, read_layered_exr, read_rgb_exr};
 #[cfg(feature = "exr")]

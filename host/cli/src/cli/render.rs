@@ -4,7 +4,7 @@
 use anyhow::{Context, bail};
 use dof::aperture::parse_aperture;
 use dof::frame::{BokehOptions, LayeredOptions, METHODS, MethodInfo, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
-use dof::io::{read_layered_exr, write_exr, write_layered_exr, write_png_preview};
+use dof::io::{ExrInput, write_exr, write_layered_exr, write_png_preview};
 use dof::layers::RgbImage;
 use dof::layers::{LayeredImage, crop_plane};
 use dof::methods::one_shot::one_shot;
@@ -81,9 +81,10 @@ pub enum BackendArg {
 pub struct RenderArgs {
     /// A built-in scene name (`simple`, `railing`, `columns`, `highlights`, `fence`, `edges`; `dof
     /// scenes` describes them), a glTF scene (`.gltf` or `.glb`: rasterised and depth-peeled on
-    /// `--backend`), or an EXR file (RGB+Z or multi-layer).
-    #[arg(long, default_value = "simple")]
-    scene: String,
+    /// `--backend`), or an EXR file (RGB+Z, multi-layer, or deep). Deep EXR files may be given
+    /// more than once: their samples merge into one image, as a deep merge does.
+    #[arg(long = "scene", default_value = "simple")]
+    scenes: Vec<String>,
     #[arg(long, default_value = "reference", value_parser = Method::parser())]
     method: Method,
     /// Image size (built-in and glTF scenes; an EXR has its own).
@@ -205,6 +206,11 @@ pub struct RenderArgs {
 }
 
 impl RenderArgs {
+    /// The (first) scene given.
+    pub(crate) fn scene(&self) -> &str {
+        &self.scenes[0]
+    }
+
     /// The multi-layer image's options the command line sets, with `guard_band`.
     pub(crate) fn layer_options(&self, guard_band: GuardBand) -> LayerOptions {
         LayerOptions {
@@ -242,8 +248,8 @@ fn parse_guard_band(s: &str) -> Result<GuardBand, String> {
 /// scene, the aperture image).
 fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     check_ranges(args)?;
-    if let Some(hashes) = exr_pattern::from_printf(&args.scene).filter(|_| !Path::new(&args.scene).exists()) {
-        bail!("--scene {}: no such file; an EXR sequence names its frame number with # (write {hashes})", args.scene);
+    if let Some(hashes) = exr_pattern::from_printf(args.scene()).filter(|_| !Path::new(args.scene()).exists()) {
+        bail!("--scene {}: no such file; an EXR sequence names its frame number with # (write {hashes})", args.scene());
     }
     if let Some(rgb) = args.background.filter(|c| c.max_element() > dof_shaders::radiance::COLOR_MAX) {
         eprintln!(
@@ -251,22 +257,34 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             rgb.x, rgb.y, rgb.z
         );
     }
-    if args.scene.to_ascii_lowercase().ends_with(".exr") {
+    if args.scenes.len() > 1 {
+        if let Some(other) = args.scenes.iter().find(|s| !s.to_ascii_lowercase().ends_with(".exr") || exr_pattern::is_pattern(s)) {
+            bail!("--scene is given more than once only to merge deep EXR files; {other} is not one (give one scene)");
+        }
+        if args.frames.is_some() {
+            bail!("--frames: deep EXR files given together are one frame; a sequence is named by one pattern");
+        }
+    }
+    if args.scene().to_ascii_lowercase().ends_with(".exr") {
+        // The layer budget applies to deep input, whose layers are made here.
+        let first =
+            if exr_pattern::is_pattern(args.scene()) { sequence::exr_frames(args)?.into_iter().next() } else { Some(args.scene().into()) };
+        let deep = first.is_some_and(|p| dof::io::is_deep_exr(p).unwrap_or(false));
         let fixed = [
             (args.width.is_some(), "--width"),
             (args.height.is_some(), "--height"),
             (args.guard_band != GuardBand::Auto, "--guard-band"),
             (args.eye.is_some(), "--eye"),
             (args.target.is_some(), "--target"),
-            (args.layers != DEFAULT_LAYERS, "--layers"),
+            (args.layers != DEFAULT_LAYERS && !deep, "--layers"),
             (args.subsamples != scene::DEFAULT_SUBSAMPLES, "--subsamples"),
             (args.no_footprints, "--no-footprints"),
         ];
         if let Some((_, flag)) = fixed.iter().find(|(given, _)| *given) {
             bail!(
                 "{flag} does not apply to an EXR input ({}): an EXR fixes its own size, view and layers \
-                 (its edges are extended by the edge policy instead of a guard band)",
-                args.scene
+                 (its edges are extended by the edge policy instead of a guard band; --layers sets the layers of deep input)",
+                args.scene()
             );
         }
     }
@@ -320,8 +338,8 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     // Every file the run reads, and every file it writes.
     let mut outputs =
         vec![(out.to_path_buf(), "--out".to_string()), (out.with_extension("png"), "the PNG preview beside --out".to_string())];
-    let mut inputs = vec![PathBuf::from(&args.scene)];
-    let frames = if exr_pattern::is_pattern(&args.scene) {
+    let mut inputs: Vec<PathBuf> = args.scenes.iter().map(PathBuf::from).collect();
+    let frames = if exr_pattern::is_pattern(args.scene()) {
         let files = sequence::exr_frames(args)?;
         let n = files.len() as u32;
         inputs = files;
@@ -340,9 +358,9 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         outputs.extend((0..n).map(|i| (sequence::frame_path(out, i, n), format!("frame {i} of the sequence (from --out)"))));
         outputs.push((out.with_extension("gif"), "the GIF preview beside --out".to_string()));
     }
-    let lower = args.scene.to_ascii_lowercase();
+    let lower = args.scene().to_ascii_lowercase();
     if lower.ends_with(".gltf") || lower.ends_with(".glb") {
-        inputs.extend(scene::gltf_external_files(Path::new(&args.scene)));
+        inputs.extend(scene::gltf_external_files(Path::new(args.scene())));
     }
     if Path::new(&args.aperture).extension().is_some() {
         inputs.push(PathBuf::from(&args.aperture));
@@ -355,15 +373,15 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             bail!("{what} ({}) would overwrite the input {}; choose another --out", output.display(), input.display());
         }
     }
-    if exr_pattern::is_pattern(&args.scene) {
+    if exr_pattern::is_pattern(args.scene()) {
         // Outputs the pattern matches would be read as frames of the shot by the next run.
-        if let Some((output, _)) = outputs.iter().find(|(o, _)| exr_pattern::matches(&args.scene, o)) {
+        if let Some((output, _)) = outputs.iter().find(|(o, _)| exr_pattern::matches(args.scene(), o)) {
             bail!(
                 "the outputs of --out {} (such as {}) are named like frames of the input sequence {}: a later run would \
                  read them as frames of the shot; choose another --out",
                 out.display(),
                 output.display(),
-                args.scene
+                args.scene()
             );
         }
     }
@@ -444,8 +462,8 @@ fn check_sequence(args: &RenderArgs) -> anyhow::Result<()> {
         (args.aperture_radius_to.is_some(), "--aperture-radius-to"),
         (args.f_number_to.is_some(), "--f-number-to"),
     ];
-    let sequence = args.frames.is_some() || exr_pattern::is_pattern(&args.scene);
-    let one_exr = !sequence && args.scene.to_ascii_lowercase().ends_with(".exr");
+    let sequence = args.frames.is_some() || exr_pattern::is_pattern(args.scene());
+    let one_exr = !sequence && args.scene().to_ascii_lowercase().ends_with(".exr");
     if let Some((_, flag)) = moves.iter().find(|(given, _)| *given).filter(|_| !sequence) {
         if one_exr {
             // `--frames` is refused on one EXR, and an EXR has no geometry to turn: say what moves.
@@ -459,8 +477,8 @@ fn check_sequence(args: &RenderArgs) -> anyhow::Result<()> {
         }
         bail!("{flag} moves the shot over a sequence: give --frames N (or an EXR sequence such as shot-####.exr)");
     }
-    let exr = args.scene.to_ascii_lowercase().ends_with(".exr");
-    if args.frames.is_some() && exr && !exr_pattern::is_pattern(&args.scene) {
+    let exr = args.scene().to_ascii_lowercase().ends_with(".exr");
+    if args.frames.is_some() && exr && !exr_pattern::is_pattern(args.scene()) {
         bail!("--frames on one EXR: name an EXR sequence by a pattern such as shot-####.exr (its frames are the files that match)");
     }
     if args.orbit.is_some() && exr {
@@ -539,10 +557,10 @@ const MAX_EDGE: u32 = 65536;
 use super::MAX_SAMPLES;
 
 pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
-    let name = if exr_pattern::is_pattern(&args.scene) {
-        exr_pattern::stem(&args.scene)
+    let name = if exr_pattern::is_pattern(args.scene()) {
+        exr_pattern::stem(args.scene())
     } else {
-        Path::new(&args.scene).file_stem().and_then(|s| s.to_str()).unwrap_or("scene").to_string()
+        Path::new(args.scene()).file_stem().and_then(|s| s.to_str()).unwrap_or("scene").to_string()
     };
     let method = args.method.name();
     let out = args.out.clone().unwrap_or_else(|| PathBuf::from(format!("out/{name}-{method}.exr")));
@@ -551,31 +569,38 @@ pub fn run(args: &RenderArgs) -> anyhow::Result<()> {
     }
     check_before_work(args, &out)?;
     prepare_output(&out)?;
-    if is_file_scene(&args.scene) { render_file(args, &out) } else { render_builtin(args, &out) }
+    if is_file_scene(args.scene()) { render_file(args, &out) } else { render_builtin(args, &out) }
 }
 
 /// A scene given as a file: a glTF scene (rasterised), or EXR input (the methods that need only the
 /// image).
 fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
-    let lower = args.scene.to_ascii_lowercase();
+    let lower = args.scene().to_ascii_lowercase();
     if lower.ends_with(".gltf") || lower.ends_with(".glb") {
         return render_gltf(args, out);
     }
-    if exr_pattern::is_pattern(&args.scene) {
+    if exr_pattern::is_pattern(args.scene()) {
         return sequence::render_exr_sequence(args, out);
     }
-    let (layers, report) = read_layered_exr(&args.scene)?;
-    if report.total() > 0 {
-        eprintln!("note: {}: {report}", args.scene);
+    let input = ExrInput::read(&args.scenes)?;
+    if let Some(note) = input.note() {
+        eprintln!("note: {}: {note}", args.scenes.join(", "));
     }
     if args.background.is_some() {
         bail!("--background applies to built-in and glTF scenes; an EXR carries its background as the colour stored at depth +inf");
     }
+    if args.method == Method::Reference {
+        bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)");
+    }
+    if args.method == Method::Pinhole {
+        let (image, depth) = input.flattened();
+        return write_outputs(out, &image, &[("Z", &depth)], args.exposure);
+    }
+    // Flat layers are read as stored; a deep image's layers are made for the lens.
+    let (camera, settings) = exr_camera(args, input.size())?;
+    let lens = settings.thin_lens(&camera).with_context(|| lens_flags(args))?;
+    let layers = exr_layers(args, &input, &camera, &lens, true)?;
     match args.method {
-        Method::Pinhole => {
-            let (image, depth) = layers.front();
-            write_outputs(out, &image, &[("Z", &depth)], args.exposure)
-        }
         Method::Layers => {
             write_layered_exr(out, &layers)?;
             let stats = layers.stats();
@@ -587,9 +612,7 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             );
             Ok(())
         }
-        Method::Reference => bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)"),
-        Method::Frame(_) => {
-            let lens = exr_lens(args, &layers)?;
+        _ => {
             check_lens_reach(args, &lens)?;
             // Nothing lies beyond an EXR's frame: its edge pixels are extended outwards as far as
             // its largest CoC reaches (the edge policy, the same for every method).
@@ -607,21 +630,32 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     }
 }
 
-/// The lens for an EXR, which carries no camera: `--focus` and `--f-number` or `--aperture-radius`
-/// are required; the field of view (`--yfov`, default 40 degrees) and sensor height give the scale.
-fn exr_lens(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<ThinLens> {
-    let (camera, settings) = exr_camera(args, layers)?;
-    settings.thin_lens(&camera).with_context(|| lens_flags(args))
+/// The layers of an EXR input for `lens`: a deep image's made by the paper's rules with
+/// `--layers` fragments a pixel (its report printed when `print`), flat layers as stored.
+pub(super) fn exr_layers(
+    args: &RenderArgs,
+    input: &ExrInput,
+    camera: &Camera,
+    lens: &ThinLens,
+    print: bool,
+) -> anyhow::Result<LayeredImage> {
+    let (layers, report) = input.layers(camera, lens, &args.layer_options(GuardBand::Off))?;
+    if let Some(r) = report.filter(|_| print) {
+        println!("deep input to layers (L = {}): {r}", args.layers);
+    }
+    Ok(layers)
 }
 
-/// The camera and lens settings of an EXR from the lens flags (see [`exr_lens`]).
-fn exr_camera(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<(Camera, LensSettings)> {
+/// The camera and lens settings of an EXR of `size` from the lens flags: it carries no camera, so
+/// `--focus` and `--f-number` or `--aperture-radius` are required; the field of view (`--yfov`,
+/// default 40 degrees) and sensor height give the scale.
+fn exr_camera(args: &RenderArgs, size: (u32, u32)) -> anyhow::Result<(Camera, LensSettings)> {
     let aperture = match (args.f_number, args.aperture_radius) {
         (Some(n), _) => Some(Aperture::FNumber(n)),
         (_, Some(r)) => Some(Aperture::Radius(r)),
         _ => None,
     };
-    let (camera, mut settings) = exr_view(layers, args.focus, aperture, args.yfov)?;
+    let (camera, mut settings) = exr_view(size, args.focus, aperture, args.yfov)?;
     settings.focal_length_mm = args.focal_length;
     settings.sensor_height_mm = args.sensor_height;
     Ok((camera, settings))
@@ -630,7 +664,7 @@ fn exr_camera(args: &RenderArgs, layers: &LayeredImage) -> anyhow::Result<(Camer
 /// The camera and lens settings of an EXR (it has neither): at the origin looking down -Z with
 /// `yfov` degrees (default 40), the focus and aperture as given (both required).
 pub(crate) fn exr_view(
-    layers: &LayeredImage,
+    (width, height): (u32, u32),
     focus: Option<f32>,
     aperture: Option<Aperture>,
     yfov: Option<f32>,
@@ -642,7 +676,7 @@ pub(crate) fn exr_view(
     };
     let Some(aperture) = aperture else { bail!("an EXR carries no lens: give --f-number or --aperture-radius (with --focus)") };
     let yfov = yfov.unwrap_or(40.0).to_radians();
-    let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), yfov, layers.width, layers.height);
+    let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), yfov, width, height);
     let mut settings = LensSettings::photographic(focus, 8.0);
     settings.aperture = aperture;
     Ok((camera, settings))
@@ -723,7 +757,7 @@ pub(super) fn backend(choice: BackendArg) -> anyhow::Result<Box<dyn dof::backend
 }
 
 fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
-    let mut builtin = scene::builtin(&args.scene)?;
+    let mut builtin = scene::builtin(args.scene())?;
     if let Some(rgb) = args.background {
         builtin.scene = builtin.scene.with_background(rgb.to_array())?;
     }
@@ -841,19 +875,19 @@ fn write_with_planes(args: &RenderArgs, out: &Path, image: &RgbImage, layered: &
 /// A glTF scene: loaded, rasterised and depth-peeled on the chosen backend; its reference is the
 /// accumulation buffer.
 fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
-    let mut mesh = load_gltf(Path::new(&args.scene))?;
+    let mut mesh = load_gltf(Path::new(args.scene()))?;
     if let Some(rgb) = args.background {
         scene::analytic::check_background(rgb.to_array())?;
         mesh.lighting.background = scene::analytic::in_contract(rgb.to_array());
     }
     let report = mesh.report.to_string();
     if !report.is_empty() {
-        eprintln!("note: {}: {report}", args.scene);
+        eprintln!("note: {}: {report}", args.scene());
     }
     let (camera, lens, near) = gltf_view(args, &mesh)?;
     println!(
         "{}: {} triangles, {}x{}, f = {:.1} mm, aperture radius {:.2} mm, focus {:.3}, near plane {near}, far-field CoC {:.1} px",
-        args.scene,
+        args.scene(),
         mesh.triangles.len(),
         camera.width,
         camera.height,
@@ -907,7 +941,7 @@ fn gltf_view(args: &RenderArgs, mesh: &MeshScene) -> anyhow::Result<(Camera, Thi
             (camera, settings, None)
         }
         (None, None) if mesh.cameras.is_empty() => {
-            bail!("{} has no camera: give --eye X,Y,Z --target X,Y,Z (and --yfov DEGREES, default 40)", args.scene)
+            bail!("{} has no camera: give --eye X,Y,Z --target X,Y,Z (and --yfov DEGREES, default 40)", args.scene())
         }
         (None, None) => {
             let (camera, near) = mesh.default_camera(width, args.height)?;

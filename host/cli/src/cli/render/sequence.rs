@@ -37,13 +37,13 @@ pub(super) enum Source<'a> {
 
 /// The files of the EXR sequence `--scene` names, the first `--frames N` of them when given.
 pub(super) fn exr_frames(args: &RenderArgs) -> anyhow::Result<Vec<PathBuf>> {
-    let (found, _) = super::exr_pattern::frames(&args.scene)?;
+    let (found, _) = super::exr_pattern::frames(args.scene())?;
     let n = args.frames.map_or(found.len(), |n| n as usize);
     if n > found.len() {
-        bail!("--frames {n}: the EXR sequence {} has {} frames", args.scene, found.len());
+        bail!("--frames {n}: the EXR sequence {} has {} frames", args.scene(), found.len());
     }
     if found.len() > MAX_FRAMES as usize && args.frames.is_none() {
-        bail!("the EXR sequence {} has {} frames, more than {MAX_FRAMES}: render a part with --frames N", args.scene, found.len());
+        bail!("the EXR sequence {} has {} frames, more than {MAX_FRAMES}: render a part with --frames N", args.scene(), found.len());
     }
     Ok(found.into_iter().take(n).map(|(_, path)| path).collect())
 }
@@ -56,27 +56,35 @@ pub(super) fn render_exr_sequence(args: &RenderArgs, out: &Path) -> anyhow::Resu
     if args.background.is_some() {
         bail!("--background applies to built-in and glTF scenes; an EXR carries its background as the colour stored at depth +inf");
     }
-    let (found, gaps) = super::exr_pattern::frames(&args.scene)?;
+    let (found, gaps) = super::exr_pattern::frames(args.scene())?;
     for (first, last) in gaps {
         let which = if first == last { format!("frame {first} is") } else { format!("frames {first} to {last} are") };
-        eprintln!("note: {which} missing from {}; the sequence goes on with the next file", args.scene);
+        eprintln!("note: {which} missing from {}; the sequence goes on with the next file", args.scene());
     }
     let files = exr_frames(args)?;
-    println!("{}: {} frames, {} … {}", args.scene, files.len(), found[0].0, found[files.len() - 1].0);
-    let (first, _) = read_layered_exr(&files[0])?;
-    let (camera, settings) = exr_camera(args, &first)?;
+    println!("{}: {} frames, {} … {}", args.scene(), files.len(), found[0].0, found[files.len() - 1].0);
+    let first = ExrInput::read(&files[..1])?;
+    let (camera, settings) = exr_camera(args, first.size())?;
     let lens = settings.thin_lens(&camera).with_context(|| lens_flags(args))?;
     let shots = shots(args, files.len() as u32, &camera, &settings, &lens)?;
     render_sequence(args, out, Source::Exr(&files), &shots)
 }
 
-/// One frame of an EXR sequence, checked against the first's size and layer count; what the reader
-/// left out is noted when `notes` (the first of the two reads of every file).
-fn read_exr_frame(path: &Path, first: Option<&LayeredImage>, notes: bool) -> anyhow::Result<LayeredImage> {
-    let (layers, report) = read_layered_exr(path)?;
-    if notes && report.total() > 0 {
-        eprintln!("note: {}: {report}", path.display());
+/// One frame of an EXR sequence as layers for its shot (a deep frame's made for its lens), checked
+/// against the first's size and layer count; what the reader found is noted when `notes` (the
+/// first of the two reads of every file).
+fn read_exr_frame(
+    args: &RenderArgs,
+    path: &Path,
+    first: Option<&LayeredImage>,
+    (camera, lens): &(Camera, ThinLens),
+    notes: bool,
+) -> anyhow::Result<LayeredImage> {
+    let input = ExrInput::read(&[path])?;
+    if let Some(note) = input.note().filter(|_| notes) {
+        eprintln!("note: {}: {note}", path.display());
     }
+    let layers = exr_layers(args, &input, camera, lens, notes)?;
     if let Some(f) = first.filter(|f| (f.width, f.height, f.max_layers) != (layers.width, layers.height, layers.max_layers)) {
         bail!(
             "{} is {}x{} with {} layers, the sequence's first frame {}x{} with {}: every frame of a sequence has one size",
@@ -168,9 +176,9 @@ pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, sho
         (Source::Exr(files), _) => {
             let mut largest = 0;
             let mut first = None;
-            for (path, (_, lens)) in files.iter().zip(shots) {
-                let frame = read_exr_frame(path, first.as_ref(), true)?;
-                largest = largest.max(edge_margin(&frame, lens));
+            for (path, shot) in files.iter().zip(shots) {
+                let frame = read_exr_frame(args, path, first.as_ref(), shot, true)?;
+                largest = largest.max(edge_margin(&frame, &shot.1));
                 first.get_or_insert(frame);
             }
             largest
@@ -207,7 +215,9 @@ pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, sho
             let layered = match &source {
                 Source::Builtin(s) => raycast_layers(s, camera, lens, &options)?,
                 Source::Gltf { mesh, near } => peel_layers(b.as_mut(), &mesh.raster(), camera, lens, *near, &options)?.image,
-                Source::Exr(files) => exr_as_layers(&read_exr_frame(&files[i as usize], None, false)?, margin)?,
+                Source::Exr(files) => {
+                    exr_as_layers(&read_exr_frame(args, &files[i as usize], None, &(camera.clone(), *lens), false)?, margin)?
+                }
             };
             let path = frame_path(out, i, n);
             let mut kernel_ms = None;

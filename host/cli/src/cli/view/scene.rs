@@ -5,7 +5,7 @@
 
 use anyhow::{Context, Result, bail};
 use dof::backend::Backend;
-use dof::io::read_layered_exr;
+use dof::io::ExrInput;
 use dof::layers::{LayeredImage, RgbImage};
 use dof::raster::{AccumulateOptions, accumulate, default_near};
 use dof::scene::{
@@ -21,8 +21,8 @@ enum Content {
     /// Triangles to peel; with the analytic scene they came from (its exact reference) for a
     /// built-in scene.
     Mesh { mesh: Box<MeshScene>, analytic: Option<Box<Scene>>, near: Option<f32> },
-    /// A still multi-layer image.
-    Exr(LayeredImage),
+    /// A still image: flat layers, or a deep image whose layers follow the lens.
+    Exr(ExrInput),
 }
 
 pub struct SceneSource {
@@ -49,13 +49,13 @@ impl SceneSource {
         let lower = spec.to_ascii_lowercase();
         let name = Path::new(spec).file_stem().and_then(|s| s.to_str()).unwrap_or("scene").to_string();
         if lower.ends_with(".exr") {
-            let (layers, report) = read_layered_exr(spec)?;
-            if report.total() > 0 {
-                eprintln!("note: {spec}: {report}");
+            let input = ExrInput::read(&[spec])?;
+            if let Some(note) = input.note() {
+                eprintln!("note: {spec}: {note}");
             }
-            let (camera, lens) = crate::cli::render::exr_view(&layers, focus, aperture, None)?;
+            let (camera, lens) = crate::cli::render::exr_view(input.size(), focus, aperture, None)?;
             lens.thin_lens(&camera)?;
-            return Ok(SceneSource { name, content: Content::Exr(layers), camera, lens });
+            return Ok(SceneSource { name, content: Content::Exr(input), camera, lens });
         }
         let (mesh, analytic, camera, mut lens, near) = if lower.ends_with(".gltf") || lower.ends_with(".glb") {
             let mesh = load_gltf(Path::new(spec))?;
@@ -104,7 +104,7 @@ impl SceneSource {
     /// window's size.
     pub fn fixed_size(&self) -> Option<[u32; 2]> {
         match &self.content {
-            Content::Exr(l) => Some([l.width, l.height]),
+            Content::Exr(input) => Some(input.size().into()),
             Content::Mesh { .. } => None,
         }
     }
@@ -112,7 +112,8 @@ impl SceneSource {
     /// Fragment slots a pixel the contexts are made for (the peeled layers, or the EXR's).
     pub fn max_layers(&self) -> u32 {
         match &self.content {
-            Content::Exr(l) => l.max_layers.max(LAYERS),
+            Content::Exr(ExrInput::Flat { layers, .. }) => layers.max_layers.max(LAYERS),
+            Content::Exr(ExrInput::Deep { .. }) => LAYERS,
             Content::Mesh { .. } => LAYERS,
         }
     }
@@ -122,15 +123,18 @@ impl SceneSource {
         matches!(self.content, Content::Mesh { .. })
     }
 
-    /// An EXR's multi-layer image for the lens of `settings`, its edges extended by its largest CoC
+    /// An EXR's multi-layer image for the lens of `settings` (a deep image's made for it, with
+    /// [`LAYERS`] fragments a pixel), its edges extended by its largest CoC
     /// (a mesh scene's layers are peeled on the device instead: see `frame.rs`).
     pub fn exr_layers(&self, camera: &Camera, settings: &LensSettings) -> Result<Layers> {
         let lens = settings.thin_lens(camera)?;
         let start = Instant::now();
         let (image, margin) = match &self.content {
             Content::Mesh { .. } => bail!("a mesh scene's layers are peeled on the device, not made on the host"),
-            Content::Exr(layers) => {
-                let margin = crate::cli::render::edge_margin(layers, &lens);
+            Content::Exr(input) => {
+                let options = dof::frame::LayerOptions { max_layers: LAYERS, ..Default::default() };
+                let (layers, _) = input.layers(camera, &lens, &options)?;
+                let margin = crate::cli::render::edge_margin(&layers, &lens);
                 (layers.extend_edges(margin)?, margin)
             }
         };

@@ -417,14 +417,162 @@ fn read_exr<'py>(py: Python<'py>, path: PathBuf, layers: bool) -> PyResult<Bound
             let depth = Array2::from_shape_vec((image.height as usize, image.width as usize), depth).expect("a plane per pixel");
             (to_rgb_array(&rgb).into_pyarray(py), depth.into_pyarray(py)).into_pyobject(py)
         }
-        Ok(image) => {
-            let (h, w, l) = (image.height as usize, image.width as usize, image.max_layers as usize);
-            let flat: Vec<f32> = image.fragments.iter().flat_map(|f| [f.color[0], f.color[1], f.color[2], f.depth, f.alpha]).collect();
-            let frags = Array4::from_shape_vec((h, w, l, 5), flat).expect("max_layers slots per pixel");
-            let counts = Array2::from_shape_vec((h, w), image.counts.clone()).expect("a count per pixel");
-            (frags.into_pyarray(py), counts.into_pyarray(py)).into_pyobject(py)
-        }
+        Ok(image) => layered_arrays(py, &image),
     }
+}
+
+/// The fields of a deep sample, in the order of the arrays `read_deep_exr` returns.
+const DEEP_FIELDS: [&str; 6] = ["R", "G", "B", "A", "Z", "ZBack"];
+
+/// Reads one deep OpenEXR file, or several merged into one image (as a deep merge does), with the
+/// library's reader: deep scan lines or tiles, no compression, RLE, ZIPS or ZIP, the NaN/Inf
+/// policy of `dof render`, every pixel made tidy by OpenEXR's rules (sorted by depth, overlapping
+/// volume samples split, samples over one depth range merged).
+///
+/// Returns `(counts, samples)`: the samples per pixel (H, W) uint32, and a dict of flat float32
+/// arrays `R`, `G`, `B` (premultiplied), `A`, `Z`, `ZBack`, one entry per sample, pixel after
+/// pixel in row-major order and front to back within a pixel. `deep_layers` turns them into the
+/// multi-layer image `blur` takes.
+///
+/// Raises ValueError naming the file and the problem on a missing, flat, damaged or unusable file.
+#[pyfunction]
+fn read_deep_exr<'py>(py: Python<'py>, paths: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyTuple>> {
+    let paths: Vec<PathBuf> = match paths.extract::<PathBuf>() {
+        Ok(one) => vec![one],
+        Err(_) => paths.extract()?,
+    };
+    let (image, _) = py.detach(|| dof::io::read_deep_exr(&paths)).map_err(py_err)?;
+    deep_arrays(py, &image)
+}
+
+/// `(counts, samples)` of a deep image, as `read_deep_exr` returns them.
+fn deep_arrays<'py>(py: Python<'py>, image: &dof::deep::DeepImage) -> PyResult<Bound<'py, PyTuple>> {
+    let counts: Vec<u32> = (0..image.pixels()).map(|p| image.count(p) as u32).collect();
+    let counts = Array2::from_shape_vec((image.height as usize, image.width as usize), counts).expect("a count per pixel");
+    let samples = PyDict::new(py);
+    for (k, name) in DEEP_FIELDS.iter().enumerate() {
+        let field: Vec<f32> = image
+            .samples
+            .iter()
+            .map(|s| match k {
+                0..=2 => s.color[k],
+                3 => s.alpha,
+                4 => s.z,
+                _ => s.z_back,
+            })
+            .collect();
+        samples.set_item(name, field.into_pyarray(py))?;
+    }
+    (counts.into_pyarray(py), samples).into_pyobject(py)
+}
+
+/// A deep image from `counts` (H, W) and `samples` (a dict of flat arrays `R`, `G`, `B`, `A`, `Z`
+/// and optionally `ZBack`, as `read_deep_exr` returns them), made tidy.
+fn deep_image(counts: ArrayViewD<'_, i64>, samples: &Bound<'_, PyDict>) -> PyResult<dof::deep::DeepImage> {
+    if counts.ndim() != 2 {
+        return Err(value_error(format!("counts must have shape (H, W), got {:?}", counts.shape())));
+    }
+    let (width, height) = check_size(counts.shape()[0], counts.shape()[1])?;
+    let mut n = Vec::with_capacity(counts.len());
+    for &c in counts.iter() {
+        if !(0..=u32::MAX as i64).contains(&c) {
+            return Err(value_error(format!("a sample count must lie between 0 and 2^32 - 1, got {c}")));
+        }
+        n.push(c as u32);
+    }
+    let total: u64 = n.iter().map(|&c| c as u64).sum();
+    let mut fields: Vec<Vec<f32>> = Vec::with_capacity(6);
+    for name in DEEP_FIELDS {
+        let Some(array) = samples.get_item(name)? else {
+            if name == "ZBack" {
+                fields.push(fields[4].clone());
+                continue;
+            }
+            return Err(value_error(format!("samples has no `{name}` array (it needs R, G, B, A, Z and optionally ZBack)")));
+        };
+        let array: PyArrayLikeDyn<'_, f32, AllowTypeChange> = array.extract()?;
+        let values: Vec<f32> = array.as_array().iter().copied().collect();
+        if values.len() as u64 != total {
+            return Err(value_error(format!("samples[`{name}`] holds {} values, but counts add up to {total}", values.len())));
+        }
+        fields.push(values);
+    }
+    let mut policy = SanitizeCounts::default();
+    let mut kept_counts = Vec::with_capacity(n.len());
+    let mut kept = Vec::with_capacity(total as usize);
+    let mut i = 0;
+    for &c in &n {
+        let before = kept.len();
+        for k in i..i + c as usize {
+            let rgb = [fields[0][k], fields[1][k], fields[2][k]];
+            // The reader's rules: a dropped sample (NaN depth, empty) leaves its pixel.
+            if let Some(f) = policy.fragment(rgb, fields[3][k], fields[4][k]) {
+                let z_back = if f.depth == f32::INFINITY || !(fields[5][k] >= f.depth) { f.depth } else { fields[5][k] };
+                kept.push(dof::deep::DeepSample { color: f.color, alpha: f.alpha, z: f.depth, z_back });
+            }
+        }
+        i += c as usize;
+        kept_counts.push((kept.len() - before) as u32);
+    }
+    let image = dof::deep::DeepImage::from_counts(width, height, &kept_counts, kept).map_err(py_err)?;
+    Ok(image.tidy().map_err(py_err)?.0)
+}
+
+/// The multi-layer image of a deep image for a lens, as `dof render` makes it from a deep EXR: the
+/// umbra threshold, at most `max_layers` fragments a pixel (neighbours closest in inverse depth
+/// merged), the disocclusion buffer (Franke et al. 2018, §4). `counts` and `samples` as
+/// `read_deep_exr` returns them; the lens as `blur` takes it.
+///
+/// Returns `(fragments, counts)` as `read_exr(path, layers=True)` does: (H, W, L, 5) float32
+/// (r, g, b, depth, alpha) and (H, W) uint32, which `blur` takes with the same lens.
+#[pyfunction]
+#[pyo3(signature = (counts, samples, *, focus, aperture_radius=None, f_number=None, focal_length=None, sensor_height=24.0, yfov=40.0, pixels_per_unit=None, metres_per_unit=1.0, max_layers=4))]
+#[allow(clippy::too_many_arguments)]
+fn deep_layers<'py>(
+    py: Python<'py>,
+    counts: PyArrayLikeDyn<'py, i64, AllowTypeChange>,
+    samples: &Bound<'py, PyDict>,
+    focus: f32,
+    aperture_radius: Option<f32>,
+    f_number: Option<f32>,
+    focal_length: Option<f32>,
+    sensor_height: f32,
+    yfov: f32,
+    pixels_per_unit: Option<f32>,
+    metres_per_unit: f32,
+    max_layers: u32,
+) -> PyResult<Bound<'py, PyTuple>> {
+    if !(1..=64).contains(&max_layers) {
+        return Err(value_error(format!("max_layers must lie between 1 and 64, got {max_layers}")));
+    }
+    let image = deep_image(counts.as_array(), samples)?;
+    let lens = lens(
+        image.width,
+        image.height,
+        focus,
+        aperture_radius,
+        f_number,
+        focal_length,
+        sensor_height,
+        yfov,
+        pixels_per_unit,
+        metres_per_unit,
+    )?;
+    let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), yfov.to_radians(), image.width, image.height);
+    let options = dof::frame::LayerOptions { max_layers, ..Default::default() };
+    let layers = py
+        .detach(|| -> dof::Result<LayeredImage> { Ok(image.layers(&camera.frame()?, &lens, &options)?.0) })
+        .map_err(py_err)?;
+    layered_arrays(py, &layers)
+}
+
+/// `(fragments, counts)` of a multi-layer image, as `read_exr(path, layers=True)` returns them.
+fn layered_arrays<'py>(py: Python<'py>, image: &LayeredImage) -> PyResult<Bound<'py, PyTuple>> {
+    let (h, w, l) = (image.height as usize, image.width as usize, image.max_layers as usize);
+    let flat: Vec<f32> = image.fragments.iter().flat_map(|f| [f.color[0], f.color[1], f.color[2], f.depth, f.alpha]).collect();
+    let frags = Array4::from_shape_vec((h, w, l, 5), flat).expect("max_layers slots per pixel");
+    let counts = Array2::from_shape_vec((h, w), image.counts.clone()).expect("a count per pixel");
+    (frags.into_pyarray(py), counts.into_pyarray(py)).into_pyobject(py)
 }
 
 /// Writes a linear float32 RGB EXR (ZIP-compressed, lossless) with the library's writer; with
@@ -495,6 +643,8 @@ fn methods(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
 fn dof_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(blur, m)?)?;
     m.add_function(wrap_pyfunction!(read_exr, m)?)?;
+    m.add_function(wrap_pyfunction!(read_deep_exr, m)?)?;
+    m.add_function(wrap_pyfunction!(deep_layers, m)?)?;
     m.add_function(wrap_pyfunction!(write_exr, m)?)?;
     m.add_function(wrap_pyfunction!(methods, m)?)?;
     Ok(())

@@ -301,8 +301,8 @@ impl ExrFile {
                 let part = header.own_attributes.layer_name.as_ref().map_or(format!("part {i}"), |n| format!("part `{n}`"));
                 if header.deep {
                     return Err(Error::invalid(format!(
-                        "{}: {part} holds deep data, which this reader does not support; write one flat layer per depth \
-                         layer (`layer0.R`, `layer0.Z`, ...) instead",
+                        "{}: {part} holds deep data, which the flat reader does not read: read it with `read_deep_exr` \
+                         (`dof render` and the Python binding's `read_deep_exr` read deep files)",
                         path.display()
                     )));
                 }

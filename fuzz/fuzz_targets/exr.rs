@@ -1,13 +1,14 @@
-//! The EXR reader, every layout (RGB, RGB+Z, Blender, Nuke single- and multi-part, multi-layer):
-//! the input is written to a file of this process and read with `read_layered_exr` and
-//! `read_rgb_exr`.
+//! The EXR readers, every layout (RGB, RGB+Z, Blender, Nuke single- and multi-part, multi-layer,
+//! deep scan lines and tiles): the input is written to a file of this process and read with
+//! `read_layered_exr`, `read_rgb_exr` and `read_deep_exr`.
 //!
 //! Every call must return `Ok` or `Err`. What is read must follow the documented NaN/Inf policy:
 //! counts within the layer count, fragments sorted front to back with positive depth (`+inf` only
-//! for the last, the background), alpha in [0, 1], finite colour.
+//! for the last, the background), alpha in [0, 1], finite colour; a deep image tidy (samples front
+//! to back, `ZBack` not in front of `Z`), its layers for a lens within the layer budget.
 #![no_main]
 
-use dof::io::{read_layered_exr, read_rgb_exr};
+use dof::io::{read_deep_exr, read_layered_exr, read_rgb_exr};
 use libfuzzer_sys::fuzz_target;
 use std::path::PathBuf;
 use std::sync::OnceLock;
@@ -70,5 +71,33 @@ fn run(data: &[u8]) {
         assert_eq!(image.data.len() as u64, image.width as u64 * image.height as u64);
         assert!(image.data.iter().flatten().all(|c| c.is_finite()), "non-finite colour after the policy");
         let _ = report.to_string();
+    }
+
+    if let Ok((image, report)) = read_deep_exr(&[path]) {
+        assert_eq!((image.width, image.height), (report.width, report.height));
+        assert_eq!(image.offsets.len(), image.pixels() + 1);
+        assert_eq!(*image.offsets.last().unwrap(), image.samples.len() as u64);
+        for p in 0..image.pixels() {
+            let pixel = image.pixel(p);
+            for s in pixel {
+                assert!(s.z > 0.0 && s.z_back >= s.z, "pixel {p}: depths {} to {}", s.z, s.z_back);
+                assert!((0.0..=1.0).contains(&s.alpha), "pixel {p}: alpha {}", s.alpha);
+                assert!(s.color.iter().all(|c| c.is_finite()), "pixel {p}: colour {:?}", s.color);
+            }
+            assert!(pixel.windows(2).all(|w| w[0].z <= w[1].z), "pixel {p}: not sorted");
+        }
+        let _ = report.to_string();
+        let camera = dof::scene::Camera::look_at(
+            dof::scene::Vec3::ZERO,
+            dof::scene::Vec3::new(0.0, 0.0, -1.0),
+            0.7,
+            image.width,
+            image.height,
+        );
+        let lens = dof::scene::ThinLens { focal_length: 0.05, aperture_radius: 0.02, focus_distance: 4.0, pixels_per_unit: 1e3 };
+        let options = dof::frame::LayerOptions { max_layers: 3, ..Default::default() };
+        if let Ok((layers, _)) = camera.frame().and_then(|frame| Ok(image.layers(&frame, &lens, &options)?)) {
+            assert!(layers.counts.iter().all(|&n| n <= 3));
+        }
     }
 }

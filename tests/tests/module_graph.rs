@@ -320,7 +320,7 @@ fn library_imports_point_down() {
         &[
             // What `dof` re-exports from `dof-core`.
             &["dof_core", "backend", "error", "frame", "ops", "aperture", "shaders", "dof_shaders"],
-            &["layers", "io", "metrics", "workload", "timing", "progress"],
+            &["layers", "deep", "io", "metrics", "workload", "timing", "progress"],
             &["methods"],
             &["scene"],
             &["raster"],

@@ -8,22 +8,20 @@
 //!   depth, volume samples (`z_back > z`) split where they overlap others, samples covering the same
 //!   depth range merged, so that a pixel is a front-to-back list of disjoint samples;
 //! - [`DeepImage::flatten`]: that list composited "over", front to back (OpenEXR's flattened image);
-//! - [`DeepImage::layers`] (in [`to_layers`]): the umbra threshold and the disocclusion buffer of
-//!   Franke et al. 2018 (§4) decide which samples a pixel keeps, and a pixel with more than
-//!   `max_layers` left merges its closest neighbours in inverse depth (the CoC is linear in it),
-//!   so a pixel of 200 samples never becomes 200 layers. [`DeepLayersReport`] says what was merged
-//!   or left out and how much of the in-focus image that moved.
+//! - `DeepImage::layers` (in `scene::deep_layers`, beside the ray caster whose rules it follows):
+//!   the umbra threshold and the disocclusion buffer of Franke et al. 2018 (§4) decide which
+//!   samples a pixel keeps, and a pixel with more than `max_layers` left merges its closest
+//!   neighbours in inverse depth (the CoC is linear in it), so a pixel of 200 samples never
+//!   becomes 200 layers; its report says what was merged or left out and how much of the in-focus
+//!   image that moved.
 //!
 //! Colour is premultiplied by alpha, as in OpenEXR and in [`crate::layers::Fragment`].
 
 mod tidy;
-pub mod to_layers;
 
 use crate::error::{CoreError, Error, Result};
 use crate::layers::RgbImage;
 use dof_shaders::slot::{Slot, flatten};
-
-pub use to_layers::DeepLayersReport;
 
 /// One sample of a deep pixel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,7 +42,7 @@ impl DeepSample {
         self.z_back > self.z
     }
 
-    fn slot(&self) -> Slot {
+    pub(crate) fn slot(&self) -> Slot {
         Slot { color: self.color, depth: self.z, alpha: self.alpha }
     }
 }

@@ -8,8 +8,9 @@
 //!   `LayeredImage` (the background as a fragment at depth `+inf`), with an
 //!   [`InputReport`] of what was read and repaired; [`read_rgb_exr`]: the colour of an EXR.
 //! - [`read_deep_exr`]: deep OpenEXR files (every sample of every pixel) to a tidy
-//!   [`DeepImage`](crate::deep::DeepImage), which [`DeepImage::layers`](crate::deep::DeepImage::layers)
-//!   turns into a `LayeredImage` for a lens; [`is_deep_exr`] tells deep files from flat ones.
+//!   [`DeepImage`](crate::deep::DeepImage), which `DeepImage::layers` (`scene::deep_layers`) turns
+//!   into a `LayeredImage` for a lens; [`is_deep_exr`] tells deep files from flat ones;
+//!   `scene::ExrInput` reads either kind as a scene.
 //! - [`write_png_preview`]: 8-bit sRGB PNG through [`tonemap()`](tonemap::tonemap) (exposure, ACES
 //!   fitted curve, sRGB OETF; formulas in [`tonemap`](mod@tonemap)).
 //!
@@ -114,8 +115,6 @@ mod deep_codec;
 #[cfg(feature = "exr")]
 mod deep_exr;
 #[cfg(feature = "exr")]
-mod exr_input;
-#[cfg(feature = "exr")]
 mod exr_read;
 #[cfg(feature = "exr")]
 mod exr_write;
@@ -133,8 +132,6 @@ use std::path::Path;
 pub use channels::natural_cmp;
 #[cfg(feature = "exr")]
 pub use deep_exr::{DeepReport, is_deep_exr, read_deep_exr};
-#[cfg(feature = "exr")]
-pub use exr_input::ExrInput;
 #[cfg(feature = "exr")]
 pub use exr_read::{ExrLayout, InputReport, MAX_EXR_EDGE, MAX_EXR_SLOTS, check_exr_header, read_layered_exr, read_rgb_exr};
 #[cfg(feature = "exr")]

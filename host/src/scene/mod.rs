@@ -6,6 +6,8 @@
 //! - [`builtin`](mod@builtin): named scenes with default camera and lens (`simple`, `railing`, `columns`,
 //!   `highlights`);
 //! - [`raycast`]: the exact partial multi-layer image (umbra threshold, disocclusion buffer);
+//! - [`deep_layers`]: a deep image's layers for a lens, by the ray caster's rules;
+//! - `exr_input` (feature `exr`): an EXR given as a scene, flat layers or deep samples;
 //! - [`guard_band`]: the margin rendered beyond the frame so blur from outside reaches into it;
 //! - [`reference`](mod@reference): thin-lens distributed ray tracing (the ground truth) and the pinhole image;
 //! - [`bvh`]: the bounding-volume hierarchy that keeps ray casts cheap;
@@ -25,6 +27,9 @@ pub mod analytic;
 pub mod builtin;
 pub mod bvh;
 pub mod camera;
+pub mod deep_layers;
+#[cfg(feature = "exr")]
+pub mod exr_input;
 #[cfg(feature = "gltf")]
 pub mod gltf_export;
 #[cfg(feature = "gltf")]
@@ -42,7 +47,10 @@ pub use dof_core::sampling;
 pub use analytic::{Albedo, Hit, Lighting, Material, Primitive, Scene, Shape};
 pub use builtin::{BuiltinScene, builtin, builtin_names};
 pub use camera::{Camera, CameraFrame, Ray};
+pub use deep_layers::DeepLayersReport;
 pub use dof_shaders::lens::{ArtistLens, ThinLens};
+#[cfg(feature = "exr")]
+pub use exr_input::ExrInput;
 /// The vector type of the scene API (so users need not depend on `glam` themselves).
 pub use glam::Vec3;
 #[cfg(feature = "gltf")]

@@ -4,12 +4,13 @@
 use anyhow::{Context, bail};
 use dof::aperture::parse_aperture;
 use dof::frame::{BokehOptions, LayeredOptions, METHODS, MethodInfo, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
-use dof::io::{ExrInput, write_exr, write_layered_exr, write_png_preview};
+use dof::io::{write_exr, write_layered_exr, write_png_preview};
 use dof::layers::RgbImage;
 use dof::layers::{LayeredImage, crop_plane};
 use dof::methods::one_shot::one_shot;
 use dof::methods::splat::Merge;
 use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
+use dof::scene::ExrInput;
 use dof::scene::{
     self, Aperture, AutoOptions, Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, MeshScene, ReferenceOptions,
     SceneLayers, Vec3, load_gltf, raycast_layers,

@@ -5,9 +5,9 @@
 
 use anyhow::{Context, Result, bail};
 use dof::backend::Backend;
-use dof::io::ExrInput;
 use dof::layers::{LayeredImage, RgbImage};
 use dof::raster::{AccumulateOptions, accumulate, default_near};
+use dof::scene::ExrInput;
 use dof::scene::{
     self, Camera, LensSettings, MeshScene, ReferenceOptions, Scene, ThinLens, builtin, export_builtin_glb, load_gltf, load_gltf_slice,
 };

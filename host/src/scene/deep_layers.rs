@@ -1,5 +1,5 @@
-//! A tidy deep image to the multi-layer image the methods read, by the rules of Franke et al. 2018
-//! (§4) that make the ray caster's layers ([`crate::scene::raycast`]):
+//! A tidy deep image ([`crate::deep`]) to the multi-layer image the methods read, by the rules of
+//! Franke et al. 2018 (§4) that make the ray caster's layers ([`super::raycast`]):
 //!
 //! 1. **Umbra threshold.** Front to back, a sample is left out while it lies within the umbra of
 //!    the last opaque sample kept (`ThinLens::umbra_length` of its depth and pixel footprint): no
@@ -7,7 +7,7 @@
 //! 2. **Layer budget.** While a pixel keeps more than `max_layers` samples, the two neighbours
 //!    closest in inverse depth merge ("over", at the front one's depth): a CoC is linear in inverse
 //!    depth, so these are the two whose blur differs least. The pixel's flattened colour is kept.
-//! 3. **Disocclusion buffer** ([`crate::scene::raycast::apply_disocclusion`]): outside it a pixel
+//! 3. **Disocclusion buffer** ([`super::raycast::apply_disocclusion`]): outside it a pixel
 //!    keeps its samples up to the first opaque one.
 //!
 //! A sample's share of the in-focus image is its coverage times the light that passes the samples in
@@ -20,13 +20,13 @@ use std::fmt;
 
 use rayon::prelude::*;
 
-use super::{DeepImage, DeepSample};
+use super::camera::CameraFrame;
+use super::raycast::apply_disocclusion;
+use crate::deep::{DeepImage, DeepSample};
 use crate::error::{Error, Result};
 use crate::frame::LayerOptions;
 use crate::layers::{Fragment, LayeredImage};
-use crate::scene::ThinLens;
-use crate::scene::camera::CameraFrame;
-use crate::scene::raycast::apply_disocclusion;
+use dof_shaders::lens::ThinLens;
 
 /// What turning a deep image into layers left out or merged.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -188,10 +188,7 @@ fn merge_to_budget(kept: &mut Vec<Kept>, budget: usize, report: &mut DeepLayersR
         }
         let j = next[i];
         let (front, back) = (kept[i], kept[j]);
-        let s = dof_shaders::slot::over(
-            dof_shaders::slot::Slot { color: front.sample.color, depth: front.sample.z, alpha: front.sample.alpha },
-            dof_shaders::slot::Slot { color: back.sample.color, depth: back.sample.z, alpha: back.sample.alpha },
-        );
+        let s = dof_shaders::slot::over(front.sample.slot(), back.sample.slot());
         kept[i] = Kept {
             sample: DeepSample { color: s.color, alpha: s.alpha, z: front.sample.z, z_back: back.sample.z_back.max(front.sample.z_back) },
             share: front.share + back.share,

@@ -4,12 +4,14 @@
 
 use std::path::Path;
 
-use super::{DeepReport, InputReport, is_deep_exr, read_deep_exr, read_layered_exr};
-use crate::deep::{DeepImage, DeepLayersReport};
+use super::camera::Camera;
+use super::deep_layers::DeepLayersReport;
+use crate::deep::DeepImage;
 use crate::error::{Error, Result};
 use crate::frame::LayerOptions;
+use crate::io::{DeepReport, InputReport, is_deep_exr, read_deep_exr, read_layered_exr};
 use crate::layers::{LayeredImage, RgbImage};
-use crate::scene::{Camera, ThinLens};
+use dof_shaders::lens::ThinLens;
 
 /// An EXR input, read.
 #[derive(Clone, Debug)]

@@ -1282,8 +1282,10 @@ fn sequence_outputs_never_join_or_overwrite_their_inputs() {
         "--out",
         out.to_str().unwrap(),
     ];
-    assert_fails_fast_with(&args, "named like frames of the input sequence", 20);
-    assert!(!dir.join("shot-0000.exr").exists(), "an output was written");
+    // Outputs are named by frame number: frame 1001's would be its input.
+    let before = std::fs::read(dir.join("shot-1001.exr")).unwrap();
+    assert_fails_fast_with(&args, "would overwrite the input", 20);
+    assert_eq!(std::fs::read(dir.join("shot-1001.exr")).unwrap(), before, "an input was overwritten");
 
     // A glTF whose buffer is named like the sequence's first frame.
     let (scene, vertices) = triangle_gltf("seq-collide-gltf", "seq-0000.exr", 1.0, None);
@@ -1497,6 +1499,89 @@ fn deep_exr_renders_merges_and_makes_sequences() {
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let frames: Vec<_> = (0..2).map(|i| dof::io::read_rgb_exr(dir.join(format!("blur-{i:04}.exr"))).unwrap().0).collect();
-    assert_ne!(frames[0], frames[1], "the focus moved");
+    let frames: Vec<_> = (1..=2).map(|i| dof::io::read_rgb_exr(dir.join(format!("blur-{i:04}.exr"))).unwrap().0).collect();
+    assert_ne!(frames[0], frames[1], "the focus moved (outputs named by the input frames' numbers)");
+}
+
+#[test]
+fn a_frame_range_renders_its_part_of_the_shot_as_the_whole_shot_does() {
+    let dir = temp("frame-range");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let render = |extra: &[&str], out: &str| {
+        let out = dir.join(out);
+        let mut args = vec![
+            "render",
+            "--scene",
+            "simple",
+            "--method",
+            "multilayer",
+            "--width",
+            "48",
+            "--height",
+            "27",
+            "--frames",
+            "3",
+            "--focus-to",
+            "2",
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        let o = dof(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8_lossy(&o.stdout).to_string()
+    };
+    render(&[], "whole.exr");
+    let stdout = render(&["--frame-range", "1:2"], "part.exr");
+    assert!(stdout.contains("no preview GIF for a part of the shot"), "{stdout}");
+    assert!(!dir.join("part-0000.exr").exists() && !dir.join("part.gif").exists());
+    for i in 1..=2 {
+        let read = |name: &str| dof::io::read_rgb_exr(dir.join(format!("{name}-{i:04}.exr"))).unwrap().0;
+        assert_eq!(read("part"), read("whole"), "frame {i} rendered alone is the whole shot's frame {i}");
+    }
+    assert_fails_with(&["render", "--scene", "simple", "--frames", "3", "--frame-range", "2:5"], "frames 0 to 2");
+    assert_fails_with(&["render", "--scene", "simple", "--frame-range", "0:1"], "give --frames N");
+    assert_fails_with(&["render", "--scene", "simple", "--frames", "3", "--frame-range", "2:1"], "FIRST <= LAST");
+
+    // An EXR sequence: by the numbers in its file names, outputs named alike.
+    let layers = dir.join("layers.exr");
+    let o = dof(&["render", "--method", "layers", "--width", "40", "--height", "24", "--out", layers.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for n in 1001..=1003 {
+        std::fs::copy(&layers, dir.join(format!("shot-{n}.exr"))).unwrap();
+    }
+    let pattern = dir.join("shot-####.exr");
+    let run = |extra: &[&str], out: &str| {
+        let out = dir.join(out);
+        let mut args = vec![
+            "render",
+            "--scene",
+            pattern.to_str().unwrap(),
+            "--method",
+            "multilayer",
+            "--focus",
+            "4",
+            "--focus-to",
+            "6",
+            "--f-number",
+            "2",
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        let o = dof(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    };
+    run(&[], "seq.exr");
+    run(&["--frame-range", "1002:1003"], "seqpart.exr");
+    assert!(!dir.join("seqpart-1001.exr").exists());
+    for n in 1002..=1003 {
+        let read = |name: &str| dof::io::read_rgb_exr(dir.join(format!("{name}-{n}.exr"))).unwrap().0;
+        assert_eq!(read("seqpart"), read("seq"), "frame {n}");
+    }
+    assert_fails_with(
+        &["render", "--scene", pattern.to_str().unwrap(), "--focus", "4", "--f-number", "2", "--frame-range", "1:5"],
+        "none of them",
+    );
 }

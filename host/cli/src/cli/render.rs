@@ -190,6 +190,13 @@ pub struct RenderArgs {
     /// scenes; at most 10000.
     #[arg(long, allow_negative_numbers = true)]
     frames: Option<u32>,
+    /// Sequences: render only frames A to B of the shot (inclusive), e.g. `1001:1100` for a render
+    /// farm's share. An EXR sequence's frames by their numbers in the file names; a built-in or
+    /// glTF sequence's by their index (0 to N-1 of `--frames N`). Every frame is the one the whole
+    /// shot would render: the moves span the shot, and outputs are named by frame number. No
+    /// preview GIF is written for a part of a shot.
+    #[arg(long, value_parser = parse_frame_range, allow_negative_numbers = true)]
+    frame_range: Option<(u64, u64)>,
     /// Sequences: a focus pull, the focus distance going linearly from the start's to this one.
     #[arg(long, allow_negative_numbers = true)]
     focus_to: Option<f32>,
@@ -222,6 +229,16 @@ impl RenderArgs {
             ..Default::default()
         }
     }
+}
+
+fn parse_frame_range(s: &str) -> Result<(u64, u64), String> {
+    let bad = || format!("expected a frame range FIRST:LAST of frame numbers (0 or more, FIRST <= LAST), got `{s}`");
+    let (a, b) = s.split_once(':').ok_or_else(bad)?;
+    let (a, b) = (a.trim().parse::<u64>().map_err(|_| bad())?, b.trim().parse::<u64>().map_err(|_| bad())?);
+    if a > b {
+        return Err(bad());
+    }
+    Ok((a, b))
 }
 
 fn parse_vec3(s: &str) -> Result<Vec3, String> {
@@ -268,8 +285,10 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     }
     if args.scene().to_ascii_lowercase().ends_with(".exr") {
         // The layer budget applies to deep input, whose layers are made here.
-        let first =
-            if exr_pattern::is_pattern(args.scene()) { sequence::exr_frames(args)?.into_iter().next() } else { Some(args.scene().into()) };
+        let first = match sequence::plan(args)? {
+            Some(plan) => plan.files.get(plan.selected.start).cloned(),
+            None => Some(args.scene().into()),
+        };
         let deep = first.is_some_and(|p| dof::io::is_deep_exr(p).unwrap_or(false));
         let fixed = [
             (args.width.is_some(), "--width"),
@@ -340,24 +359,25 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let mut outputs =
         vec![(out.to_path_buf(), "--out".to_string()), (out.with_extension("png"), "the PNG preview beside --out".to_string())];
     let mut inputs: Vec<PathBuf> = args.scenes.iter().map(PathBuf::from).collect();
-    let frames = if exr_pattern::is_pattern(args.scene()) {
-        let files = sequence::exr_frames(args)?;
-        let n = files.len() as u32;
-        inputs = files;
-        Some(n)
-    } else {
-        args.frames
-    };
+    let plan = sequence::plan(args)?;
+    if let Some(plan) = &plan {
+        inputs.extend(plan.files.iter().cloned());
+    }
     let edge = args.width.unwrap_or(0).max(args.height.unwrap_or(0));
-    if frames.is_some() && edge > dof::io::MAX_GIF_EDGE {
+    if plan.as_ref().is_some_and(|p| p.whole()) && edge > dof::io::MAX_GIF_EDGE {
         bail!(
             "a sequence's GIF preview is at most {} px on an edge; --width/--height {edge} is over it (render single frames instead)",
             dof::io::MAX_GIF_EDGE
         );
     }
-    if let Some(n) = frames {
-        outputs.extend((0..n).map(|i| (sequence::frame_path(out, i, n), format!("frame {i} of the sequence (from --out)"))));
-        outputs.push((out.with_extension("gif"), "the GIF preview beside --out".to_string()));
+    if let Some(plan) = &plan {
+        outputs.extend(plan.selected.clone().map(|i| {
+            let number = plan.numbers[i];
+            (plan.path(out, i), format!("frame {number} of the sequence (from --out)"))
+        }));
+        if plan.whole() {
+            outputs.push((out.with_extension("gif"), "the GIF preview beside --out".to_string()));
+        }
     }
     let lower = args.scene().to_ascii_lowercase();
     if lower.ends_with(".gltf") || lower.ends_with(".glb") {
@@ -783,9 +803,9 @@ fn render_builtin(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         lens.far_limit_px()
     );
     check_lens_reach(args, &lens)?;
-    if args.frames.is_some() {
-        let shots = sequence::shots(args, args.frames.unwrap_or(1), &camera, &settings, &lens)?;
-        return sequence::render_sequence(args, out, sequence::Source::Builtin(&builtin.scene), &shots);
+    if let Some(plan) = sequence::plan(args)? {
+        let shots = sequence::shots(args, plan.numbers.len() as u32, &camera, &settings, &lens)?;
+        return sequence::render_sequence(args, out, sequence::Source::Builtin(&builtin.scene), &shots, &plan);
     }
     let options = args.layer_options(args.guard_band);
     let layered = raycast_layers(&builtin.scene, &camera, &lens, &options)?;
@@ -898,10 +918,10 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         lens.far_limit_px()
     );
     check_lens_reach(args, &lens)?;
-    if args.frames.is_some() {
+    if let Some(plan) = sequence::plan(args)? {
         let settings = lens_settings(args, mesh.lens_focused_at(&camera, args.focus)?);
-        let shots = sequence::shots(args, args.frames.unwrap_or(1), &camera, &settings, &lens)?;
-        return sequence::render_sequence(args, out, sequence::Source::Gltf { mesh: &mesh, near }, &shots);
+        let shots = sequence::shots(args, plan.numbers.len() as u32, &camera, &settings, &lens)?;
+        return sequence::render_sequence(args, out, sequence::Source::Gltf { mesh: &mesh, near }, &shots, &plan);
     }
     let mut b = backend(args.backend)?;
     let raster = mesh.raster();

@@ -7,12 +7,16 @@
 //! recorded, submitted and read back. The guard band is fixed for the sequence (`auto`: the largest
 //! of the frames' own), so every frame has the same extent. The references and the pinhole image
 //! render per frame with their own functions. Output: `OUT-0000.exr`, … beside `--out` and an
-//! animated preview `OUT.gif` through the PNG previews' tone map.
+//! animated preview `OUT.gif` through the PNG previews' tone map. `--frame-range A:B` renders a
+//! part of the shot ([`Plan`]): the moves and the guard band span the whole shot, so each frame is
+//! the one the whole shot renders, named by its number; no preview is written for a part.
 //!
 //! An EXR sequence (`--scene shot-####.exr`, see [`super::exr_pattern`]) renders every file that
-//! matches, in frame order (the first `--frames N` of them when given): the lens as for one EXR,
-//! moved by the sequence flags, every frame's edges extended by the largest CoC any frame reaches,
-//! so that one context serves them all. Every file must have the first's size and layer count.
+//! matches, in frame order (the first `--frames N` of them when given), each output named by its
+//! input's frame number: the lens as for one EXR, moved by the sequence flags, every frame's edges
+//! extended by the largest CoC any frame rendered reaches, so that one context serves them all.
+//! Every file must have the first's size and layer count; deep frames are made into layers for
+//! their frame's lens.
 
 use super::*;
 use dof::io::write_gif_preview;
@@ -35,17 +39,85 @@ pub(super) enum Source<'a> {
     Exr(&'a [PathBuf]),
 }
 
-/// The files of the EXR sequence `--scene` names, the first `--frames N` of them when given.
-pub(super) fn exr_frames(args: &RenderArgs) -> anyhow::Result<Vec<PathBuf>> {
-    let (found, _) = super::exr_pattern::frames(args.scene())?;
-    let n = args.frames.map_or(found.len(), |n| n as usize);
-    if n > found.len() {
-        bail!("--frames {n}: the EXR sequence {} has {} frames", args.scene(), found.len());
+/// The frames of a sequence: every frame of the shot (its moves span them all), and those this run
+/// renders (`--frame-range`, else all).
+pub(super) struct Plan {
+    /// Each frame's number: an EXR sequence's from its file name, a built-in or glTF sequence's
+    /// index. Outputs are named by it.
+    pub numbers: Vec<u64>,
+    /// An EXR sequence's files, one a frame; empty otherwise.
+    pub files: Vec<PathBuf>,
+    /// The indices rendered.
+    pub selected: std::ops::Range<usize>,
+}
+
+impl Plan {
+    /// Whether every frame of the shot is rendered (then a preview GIF is written too).
+    pub fn whole(&self) -> bool {
+        self.selected.len() == self.numbers.len()
     }
-    if found.len() > MAX_FRAMES as usize && args.frames.is_none() {
-        bail!("the EXR sequence {} has {} frames, more than {MAX_FRAMES}: render a part with --frames N", args.scene(), found.len());
+
+    /// The output of frame `i`: `OUT-1001.exr` beside `out` (at least four digits, as many as the
+    /// shot's largest number needs, so that every part of a shot names its frames alike).
+    pub fn path(&self, out: &Path, i: usize) -> PathBuf {
+        let last = self.numbers.last().copied().unwrap_or(0);
+        let digits = (last.max(1).ilog10() + 1).max(4) as usize;
+        let stem = out.file_stem().and_then(|s| s.to_str()).unwrap_or("frame");
+        out.with_file_name(format!("{stem}-{:0digits$}.exr", self.numbers[i]))
     }
-    Ok(found.into_iter().take(n).map(|(_, path)| path).collect())
+}
+
+/// The sequence `args` asks for, if any: an EXR sequence's files that match `--scene` (the first
+/// `--frames N` of them when given), or `--frames N` of a built-in or glTF scene; narrowed to
+/// `--frame-range`. Errors on a range with no sequence or outside the shot.
+pub(super) fn plan(args: &RenderArgs) -> anyhow::Result<Option<Plan>> {
+    let (numbers, files): (Vec<u64>, Vec<PathBuf>) = if super::exr_pattern::is_pattern(args.scene()) {
+        let (found, _) = super::exr_pattern::frames(args.scene())?;
+        let n = args.frames.map_or(found.len(), |n| n as usize);
+        if n > found.len() {
+            bail!("--frames {n}: the EXR sequence {} has {} frames", args.scene(), found.len());
+        }
+        if found.len() > MAX_FRAMES as usize && args.frames.is_none() && args.frame_range.is_none() {
+            bail!(
+                "the EXR sequence {} has {} frames, more than {MAX_FRAMES}: render a part with --frames N or --frame-range A:B",
+                args.scene(),
+                found.len()
+            );
+        }
+        found.into_iter().take(n).unzip()
+    } else if let Some(n) = args.frames {
+        ((0..n as u64).collect(), Vec::new())
+    } else {
+        if args.frame_range.is_some() {
+            bail!("--frame-range picks frames of a sequence: give --frames N (or an EXR sequence such as shot-####.exr)");
+        }
+        return Ok(None);
+    };
+    if numbers.is_empty() {
+        bail!("the sequence has no frames");
+    }
+    let selected = match args.frame_range {
+        None => 0..numbers.len(),
+        Some((a, b)) => {
+            let first = numbers.partition_point(|&n| n < a);
+            let end = numbers.partition_point(|&n| n <= b);
+            if first == end {
+                bail!(
+                    "--frame-range {a}:{b}: the sequence's frames are {} to {}, none of them in that range",
+                    numbers[0],
+                    numbers[numbers.len() - 1]
+                );
+            }
+            if files.is_empty() && b >= numbers.len() as u64 {
+                bail!("--frame-range {a}:{b}: the sequence has frames 0 to {} (--frames {})", numbers.len() - 1, numbers.len());
+            }
+            first..end
+        }
+    };
+    if selected.len() > MAX_FRAMES as usize {
+        bail!("--frame-range selects {} frames, more than {MAX_FRAMES} in one run", selected.len());
+    }
+    Ok(Some(Plan { numbers, files, selected }))
 }
 
 /// `dof render --scene shot-####.exr`: the sequence's frames through one context (module docs).
@@ -56,18 +128,19 @@ pub(super) fn render_exr_sequence(args: &RenderArgs, out: &Path) -> anyhow::Resu
     if args.background.is_some() {
         bail!("--background applies to built-in and glTF scenes; an EXR carries its background as the colour stored at depth +inf");
     }
-    let (found, gaps) = super::exr_pattern::frames(args.scene())?;
+    let (_, gaps) = super::exr_pattern::frames(args.scene())?;
     for (first, last) in gaps {
         let which = if first == last { format!("frame {first} is") } else { format!("frames {first} to {last} are") };
         eprintln!("note: {which} missing from {}; the sequence goes on with the next file", args.scene());
     }
-    let files = exr_frames(args)?;
-    println!("{}: {} frames, {} … {}", args.scene(), files.len(), found[0].0, found[files.len() - 1].0);
-    let first = ExrInput::read(&files[..1])?;
-    let (camera, settings) = exr_camera(args, first.size())?;
+    let plan = plan(args)?.context("an EXR sequence")?;
+    let (first, last) = (plan.numbers[plan.selected.start], plan.numbers[plan.selected.end - 1]);
+    println!("{}: {} frames, {first} … {last} (of {} in the shot)", args.scene(), plan.selected.len(), plan.numbers.len());
+    let input = ExrInput::read(&plan.files[plan.selected.start..plan.selected.start + 1])?;
+    let (camera, settings) = exr_camera(args, input.size())?;
     let lens = settings.thin_lens(&camera).with_context(|| lens_flags(args))?;
-    let shots = shots(args, files.len() as u32, &camera, &settings, &lens)?;
-    render_sequence(args, out, Source::Exr(&files), &shots)
+    let shots = shots(args, plan.numbers.len() as u32, &camera, &settings, &lens)?;
+    render_sequence(args, out, Source::Exr(&plan.files), &shots, &plan)
 }
 
 /// One frame of an EXR sequence as layers for its shot (a deep frame's made for its lens), checked
@@ -160,31 +233,33 @@ pub(super) fn shots(
         .collect()
 }
 
-/// `OUT-0007.exr` beside `out` (at least four digits).
-pub(super) fn frame_path(out: &Path, i: u32, frames: u32) -> PathBuf {
-    let digits = (frames.saturating_sub(1).max(1).ilog10() + 1).max(4) as usize;
-    let stem = out.file_stem().and_then(|s| s.to_str()).unwrap_or("frame");
-    out.with_file_name(format!("{stem}-{i:0digits$}.exr"))
-}
-
-/// Renders the sequence of `shots` from `source` and writes its frames and preview.
-pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, shots: &[(Camera, ThinLens)]) -> anyhow::Result<()> {
-    let n = shots.len() as u32;
+/// Renders the frames `plan` selects of the sequence of `shots` (one a frame of the whole shot) from
+/// `source`, and writes them, and the preview when the whole shot is rendered.
+pub(super) fn render_sequence(
+    args: &RenderArgs,
+    out: &Path,
+    source: Source,
+    shots: &[(Camera, ThinLens)],
+    plan: &Plan,
+) -> anyhow::Result<()> {
     let mut b = backend(args.backend)?;
     let margin = match (&source, args.guard_band) {
-        // An EXR's edges are extended as far as the largest CoC of any frame reaches.
+        // An EXR's edges are extended as far as the largest CoC of any frame rendered reaches
+        // (reading the rest of a long shot would defeat a farm's split; beyond the frames' own
+        // largest CoC a wider extension adds nothing that reaches them).
         (Source::Exr(files), _) => {
             let mut largest = 0;
             let mut first = None;
-            for (path, shot) in files.iter().zip(shots) {
-                let frame = read_exr_frame(args, path, first.as_ref(), shot, true)?;
-                largest = largest.max(edge_margin(&frame, &shot.1));
+            for i in plan.selected.clone() {
+                let frame = read_exr_frame(args, &files[i], first.as_ref(), &shots[i], true)?;
+                largest = largest.max(edge_margin(&frame, &shots[i].1));
                 first.get_or_insert(frame);
             }
             largest
         }
         (_, GuardBand::Off) => 0,
         (_, GuardBand::Pixels(p)) => p,
+        // Over every frame of the shot, so that any part of it renders its frames alike.
         (_, GuardBand::Auto) => {
             let mut largest = 0;
             for (camera, lens) in shots {
@@ -208,18 +283,17 @@ pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, sho
     let options = args.layer_options(GuardBand::Pixels(margin));
     let method_options = method_options(args)?;
     let mut runner: Option<Runner> = None;
-    let mut previews = Vec::with_capacity(shots.len());
+    // The preview's frames, kept only when the whole shot is rendered.
+    let mut previews = Vec::new();
     let rendered = (|| -> anyhow::Result<()> {
-        for (i, (camera, lens)) in shots.iter().enumerate() {
-            let i = i as u32;
+        for i in plan.selected.clone() {
+            let (camera, lens) = &shots[i];
             let layered = match &source {
                 Source::Builtin(s) => raycast_layers(s, camera, lens, &options)?,
                 Source::Gltf { mesh, near } => peel_layers(b.as_mut(), &mesh.raster(), camera, lens, *near, &options)?.image,
-                Source::Exr(files) => {
-                    exr_as_layers(&read_exr_frame(args, &files[i as usize], None, &(camera.clone(), *lens), false)?, margin)?
-                }
+                Source::Exr(files) => exr_as_layers(&read_exr_frame(args, &files[i], None, &shots[i], false)?, margin)?,
             };
-            let path = frame_path(out, i, n);
+            let path = plan.path(out, i);
             let mut kernel_ms = None;
             let image = match args.method {
                 Method::Layers => {
@@ -273,7 +347,8 @@ pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, sho
                 }
             }
             println!(
-                "frame {i}: focus {:.3}, aperture radius {:.2} mm, eye {:.3},{:.3},{:.3}{} -> {}",
+                "frame {}: focus {:.3}, aperture radius {:.2} mm, eye {:.3},{:.3},{:.3}{} -> {}",
+                plan.numbers[i],
                 lens.focus_distance,
                 lens.aperture_radius * 1e3,
                 camera.eye.x,
@@ -282,7 +357,9 @@ pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, sho
                 kernel_ms.map_or(String::new(), |ms| format!(", {ms:.2} ms in kernels")),
                 path.display()
             );
-            previews.push(image);
+            if plan.whole() {
+                previews.push(image);
+            }
         }
         Ok(())
     })();
@@ -293,8 +370,14 @@ pub(super) fn render_sequence(args: &RenderArgs, out: &Path, source: Source, sho
         r.destroy(b.as_mut());
     }
     rendered?;
+    let (first, last) = (plan.path(out, plan.selected.start), plan.path(out, plan.selected.end - 1));
+    let n = plan.selected.len();
+    if !plan.whole() {
+        println!("wrote {n} frames ({} … {}); no preview GIF for a part of the shot", first.display(), last.display());
+        return Ok(());
+    }
     let gif = out.with_extension("gif");
     write_gif_preview(&gif, &previews, args.exposure, GIF_DELAY_MS)?;
-    println!("wrote {n} frames ({} … {}) and {}", frame_path(out, 0, n).display(), frame_path(out, n - 1, n).display(), gif.display());
+    println!("wrote {n} frames ({} … {}) and {}", first.display(), last.display(), gif.display());
     Ok(())
 }

@@ -421,6 +421,21 @@ fn read_exr<'py>(py: Python<'py>, path: PathBuf, layers: bool) -> PyResult<Bound
     }
 }
 
+/// Whether the file at `path` is a deep OpenEXR file (from its first 8 bytes). Raises ValueError
+/// when it cannot be read or is not an OpenEXR file.
+#[pyfunction]
+fn is_deep_exr(path: PathBuf) -> PyResult<bool> {
+    dof::io::is_deep_exr(&path).map_err(py_err)
+}
+
+/// The files of an EXR sequence as compositors name them (`shot-####.exr`: one run of `#` for the
+/// frame number padded to that many digits; as `dof render --scene` takes it), in frame order:
+/// a list of `(frame number, path)`. Raises ValueError when nothing matches.
+#[pyfunction]
+fn exr_sequence(pattern: &str) -> PyResult<Vec<(u64, PathBuf)>> {
+    Ok(dof::io::exr_pattern::frames(pattern).map_err(py_err)?.0)
+}
+
 /// The fields of a deep sample, in the order of the arrays `read_deep_exr` returns.
 const DEEP_FIELDS: [&str; 6] = ["R", "G", "B", "A", "Z", "ZBack"];
 
@@ -639,11 +654,13 @@ fn methods(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
 /// methods of the `dof` library, on the CPU or Vulkan. `blur` blurs, `methods` lists the methods,
 /// `read_exr` and `write_exr` read and write EXR files with the library's reader and writer.
 #[pymodule]
-#[pyo3(name = "dof")]
+#[pyo3(name = "_native")]
 fn dof_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(blur, m)?)?;
     m.add_function(wrap_pyfunction!(read_exr, m)?)?;
     m.add_function(wrap_pyfunction!(read_deep_exr, m)?)?;
+    m.add_function(wrap_pyfunction!(is_deep_exr, m)?)?;
+    m.add_function(wrap_pyfunction!(exr_sequence, m)?)?;
     m.add_function(wrap_pyfunction!(deep_layers, m)?)?;
     m.add_function(wrap_pyfunction!(write_exr, m)?)?;
     m.add_function(wrap_pyfunction!(methods, m)?)?;

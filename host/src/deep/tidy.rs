@@ -234,7 +234,7 @@ mod tests {
         // Half the depth of a medium that lets a quarter through lets half through.
         assert!((s[0].alpha - 0.5).abs() < 1e-6 && (s[0].color[0] - 0.5).abs() < 1e-6, "{:?}", s[0]);
         // The pieces composite back to the whole volume.
-        let back = s.iter().filter(|p| p.z == 2.0 && p.z_back == 3.0).next().unwrap();
+        let back = s.iter().find(|p| p.z == 2.0 && p.z_back == 3.0).unwrap();
         assert!((1.0 - (1.0 - s[0].alpha) * (1.0 - back.alpha) - 0.75).abs() < 1e-6);
     }
 

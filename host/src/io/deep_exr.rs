@@ -431,7 +431,7 @@ fn read_chunk(
     let (x0, y0, bw, bh, block, table_rows) = match *layout {
         Layout::Lines { per_block } => {
             let y = read_i32(r).map_err(io)? as i64 - origin.y() as i64;
-            if y < 0 || y >= h as i64 || y as usize % per_block != 0 {
+            if y < 0 || y >= h as i64 || !(y as usize).is_multiple_of(per_block) {
                 return Err(format!("its first line {} is not the start of a block of the data window", y + origin.y() as i64));
             }
             let y = y as usize;

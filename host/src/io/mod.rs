@@ -114,6 +114,7 @@ mod channels;
 mod deep_codec;
 #[cfg(feature = "exr")]
 mod deep_exr;
+pub mod exr_pattern;
 #[cfg(feature = "exr")]
 mod exr_read;
 #[cfg(feature = "exr")]
@@ -195,8 +196,24 @@ fn fs_error(action: &str, path: &Path, e: &std::io::Error) -> Error {
     })
 }
 
-/// Writes a whole file, with the path in any error.
+/// Writes a whole file atomically, with the path in any error: the bytes go to a temporary file
+/// beside it, which is then renamed over `path`, so a reader (or a render farm retrying a frame
+/// after a worker died) finds the file complete or absent, never cut short.
 #[cfg(feature = "exr")]
 fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
-    std::fs::write(path, bytes).map_err(|e| fs_error("create", path, &e))
+    use std::io::Write;
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static COUNTER: AtomicU64 = AtomicU64::new(0);
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let temp = path.with_file_name(format!(".{name}.{}-{}.part", std::process::id(), COUNTER.fetch_add(1, Ordering::Relaxed)));
+    let written = (|| {
+        let mut file = std::fs::File::create(&temp)?;
+        file.write_all(bytes)?;
+        file.sync_all()?;
+        std::fs::rename(&temp, path)
+    })();
+    written.map_err(|e| {
+        let _ = std::fs::remove_file(&temp);
+        fs_error("create", path, &e)
+    })
 }

@@ -18,7 +18,7 @@ use dof::scene::{
 use dof_shaders::lens::ThinLens;
 use std::path::{Path, PathBuf};
 
-mod exr_pattern;
+use dof::io::exr_pattern;
 mod sequence;
 
 /// What `dof render` makes: the pinhole image, the multi-layer image, a reference, or a frame
@@ -617,38 +617,43 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         let (image, depth) = input.flattened();
         return write_outputs(out, &image, &[("Z", &depth)], args.exposure);
     }
-    // Flat layers are read as stored; a deep image's layers are made for the lens.
+    // Flat layers are read as stored (`--method layers` writes them back without a lens); a deep
+    // image's layers are made for the lens.
+    if let (Method::Layers, ExrInput::Flat { layers, .. }) = (args.method, &input) {
+        return write_layers(out, layers);
+    }
     let (camera, settings) = exr_camera(args, input.size())?;
     let lens = settings.thin_lens(&camera).with_context(|| lens_flags(args))?;
     let layers = exr_layers(args, &input, &camera, &lens, true)?;
-    match args.method {
-        Method::Layers => {
-            write_layered_exr(out, &layers)?;
-            let stats = layers.stats();
-            println!(
-                "{} layers, {:.3} fragments per pixel, {:.1}% of pixels with more than one",
-                layers.max_layers,
-                stats.fragments_per_pixel(),
-                100.0 * stats.multi_layer_share()
-            );
-            Ok(())
-        }
-        _ => {
-            check_lens_reach(args, &lens)?;
-            // Nothing lies beyond an EXR's frame: its edge pixels are extended outwards as far as
-            // its largest CoC reaches (the edge policy, the same for every method).
-            let margin = edge_margin(&layers, &lens);
-            let padded = layers.extend_edges(margin)?;
-            if margin > 0 {
-                println!(
-                    "edge policy: the image's edge pixels extended by {margin} px on every side (its largest CoC radius, at most {MAX_GUARD_BAND})"
-                );
-            }
-            let (image, depth) = blur(args, &padded, &lens, margin)?;
-            let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
-            write_outputs(out, &image, &[("Z", &depth), ("coc", &coc)], args.exposure)
-        }
+    if args.method == Method::Layers {
+        return write_layers(out, &layers);
     }
+    check_lens_reach(args, &lens)?;
+    // Nothing lies beyond an EXR's frame: its edge pixels are extended outwards as far as its
+    // largest CoC reaches (the edge policy, the same for every method).
+    let margin = edge_margin(&layers, &lens);
+    let padded = layers.extend_edges(margin)?;
+    if margin > 0 {
+        println!(
+            "edge policy: the image's edge pixels extended by {margin} px on every side (its largest CoC radius, at most {MAX_GUARD_BAND})"
+        );
+    }
+    let (image, depth) = blur(args, &padded, &lens, margin)?;
+    let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
+    write_outputs(out, &image, &[("Z", &depth), ("coc", &coc)], args.exposure)
+}
+
+/// `--method layers`: the multi-layer image as a multi-layer EXR, and what it holds.
+fn write_layers(out: &Path, layers: &LayeredImage) -> anyhow::Result<()> {
+    write_layered_exr(out, layers)?;
+    let stats = layers.stats();
+    println!(
+        "{} layers, {:.3} fragments per pixel, {:.1}% of pixels with more than one",
+        layers.max_layers,
+        stats.fragments_per_pixel(),
+        100.0 * stats.multi_layer_share()
+    );
+    Ok(())
 }
 
 /// The layers of an EXR input for `lens`: a deep image's made by the paper's rules with

@@ -22,7 +22,7 @@ enum Content {
     /// built-in scene.
     Mesh { mesh: Box<MeshScene>, analytic: Option<Box<Scene>>, near: Option<f32> },
     /// A still image: flat layers, or a deep image whose layers follow the lens.
-    Exr(ExrInput),
+    Exr(Box<ExrInput>),
 }
 
 pub struct SceneSource {
@@ -55,7 +55,7 @@ impl SceneSource {
             }
             let (camera, lens) = crate::cli::render::exr_view(input.size(), focus, aperture, None)?;
             lens.thin_lens(&camera)?;
-            return Ok(SceneSource { name, content: Content::Exr(input), camera, lens });
+            return Ok(SceneSource { name, content: Content::Exr(Box::new(input)), camera, lens });
         }
         let (mesh, analytic, camera, mut lens, near) = if lower.ends_with(".gltf") || lower.ends_with(".glb") {
             let mesh = load_gltf(Path::new(spec))?;
@@ -112,8 +112,10 @@ impl SceneSource {
     /// Fragment slots a pixel the contexts are made for (the peeled layers, or the EXR's).
     pub fn max_layers(&self) -> u32 {
         match &self.content {
-            Content::Exr(ExrInput::Flat { layers, .. }) => layers.max_layers.max(LAYERS),
-            Content::Exr(ExrInput::Deep { .. }) => LAYERS,
+            Content::Exr(input) => match input.as_ref() {
+                ExrInput::Flat { layers, .. } => layers.max_layers.max(LAYERS),
+                ExrInput::Deep { .. } => LAYERS,
+            },
             Content::Mesh { .. } => LAYERS,
         }
     }

@@ -2,11 +2,12 @@
 //! number padded to that many digits (Nuke's and Blender's convention). Numbers wider than the
 //! padding are matched too when they have no leading zero (`####` matches `0042` and `12345`).
 
-use anyhow::{Context, bail};
 use std::path::{Path, PathBuf};
 
+use crate::error::{Error, Result};
+
 /// Whether `scene` names an EXR sequence rather than one file.
-pub(crate) fn is_pattern(scene: &str) -> bool {
+pub fn is_pattern(scene: &str) -> bool {
     scene.contains('#') && scene.to_ascii_lowercase().ends_with(".exr")
 }
 
@@ -19,16 +20,20 @@ struct Pattern<'a> {
     padding: usize,
 }
 
-fn parse(pattern: &str) -> anyhow::Result<Pattern<'_>> {
+fn parse(pattern: &str) -> Result<Pattern<'_>> {
     let path = Path::new(pattern);
-    let name = path.file_name().and_then(|n| n.to_str()).with_context(|| format!("{pattern} names no file"))?;
+    let name = path.file_name().and_then(|n| n.to_str()).ok_or_else(|| Error::invalid(format!("{pattern} names no file")))?;
     let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
     if dir.to_string_lossy().contains('#') {
-        bail!("the EXR sequence {pattern}: only the file name may hold the frame number's #");
+        return Err(Error::invalid(format!("the EXR sequence {pattern}: only the file name may hold the frame number's #")));
     }
-    let (Some(start), Some(end)) = (name.find('#'), name.rfind('#')) else { bail!("{pattern} holds no # for the frame number") };
+    let (Some(start), Some(end)) = (name.find('#'), name.rfind('#')) else {
+        return Err(Error::invalid(format!("{pattern} holds no # for the frame number")));
+    };
     if name[start..=end].chars().any(|c| c != '#') {
-        bail!("the EXR sequence {pattern} holds more than one run of #; write the frame number as one run, such as shot-####.exr");
+        return Err(Error::invalid(format!(
+            "the EXR sequence {pattern} holds more than one run of #; write the frame number as one run, such as shot-####.exr"
+        )));
     }
     Ok(Pattern { dir, prefix: &name[..start], suffix: &name[end + 1..], padding: end + 1 - start })
 }
@@ -43,24 +48,25 @@ fn frame_number(p: &Pattern, name: &str) -> Option<u64> {
 
 /// The files of the sequence in frame order, with their numbers. Refuses a pattern that matches
 /// nothing; numbers missing between the first and the last are returned for the caller to report.
-pub(crate) fn frames(pattern: &str) -> anyhow::Result<(Vec<(u64, PathBuf)>, Vec<(u64, u64)>)> {
+pub fn frames(pattern: &str) -> Result<(Vec<(u64, PathBuf)>, Vec<(u64, u64)>)> {
     let p = parse(pattern)?;
-    let entries = std::fs::read_dir(p.dir).with_context(|| format!("cannot list {} (for --scene {pattern})", p.dir.display()))?;
+    let listing = |e: std::io::Error| Error::invalid(format!("cannot list {} (for the sequence {pattern}): {e}", p.dir.display()));
+    let entries = std::fs::read_dir(p.dir).map_err(listing)?;
     let mut found = Vec::new();
     for entry in entries {
-        let entry = entry.with_context(|| format!("cannot list {} (for --scene {pattern})", p.dir.display()))?;
+        let entry = entry.map_err(listing)?;
         if let Some(n) = entry.file_name().to_str().and_then(|name| frame_number(&p, name)) {
             found.push((n, entry.path()));
         }
     }
     if found.is_empty() {
-        bail!(
+        return Err(Error::invalid(format!(
             "no file in {} matches the EXR sequence {pattern} ({}, then {} digits, then {})",
             p.dir.display(),
             p.prefix,
             p.padding,
             p.suffix
-        );
+        )));
     }
     // Numbers are unique: a name's digits are its number's one spelling at this padding.
     found.sort();
@@ -70,7 +76,7 @@ pub(crate) fn frames(pattern: &str) -> anyhow::Result<(Vec<(u64, PathBuf)>, Vec<
 
 /// The `#` spelling of a printf-style frame number (`shot-%04d.exr` → `shot-####.exr`, `%d` →
 /// `#`), as Nuke and ffmpeg name sequences; `None` when `scene` holds none.
-pub(crate) fn from_printf(scene: &str) -> Option<String> {
+pub fn from_printf(scene: &str) -> Option<String> {
     let start = scene.find('%')?;
     let rest = &scene[start + 1..];
     let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
@@ -86,7 +92,7 @@ pub(crate) fn from_printf(scene: &str) -> Option<String> {
 
 /// Whether `path` is a file the sequence `pattern` would read as one of its frames (its folder
 /// and a name the pattern matches).
-pub(crate) fn matches(pattern: &str, path: &Path) -> bool {
+pub fn matches(pattern: &str, path: &Path) -> bool {
     let Ok(p) = parse(pattern) else { return false };
     let name = path.file_name().and_then(|n| n.to_str());
     let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
@@ -98,7 +104,7 @@ pub(crate) fn matches(pattern: &str, path: &Path) -> bool {
 }
 
 /// The name a sequence's outputs take by default: the pattern's file name without its number.
-pub(crate) fn stem(pattern: &str) -> String {
+pub fn stem(pattern: &str) -> String {
     let name = Path::new(pattern).file_name().and_then(|n| n.to_str()).unwrap_or("sequence");
     let before = name.split('#').next().unwrap_or("").trim_end_matches(['-', '_', '.', ' ']);
     if before.is_empty() { "sequence".to_string() } else { before.to_string() }

@@ -290,3 +290,53 @@ fn stiff_geometry_rasterises_as_stated() {
         }
     }
 }
+
+/// A cube of half-size `h` centred on `c`, every face wound outwards (its vertices split per face,
+/// as exporters write them).
+fn cube(m: &mut MeshScene, c: Vec3, h: f32, material: u32) {
+    let (x, y, z) = (Vec3::X * 2.0 * h, Vec3::Y * 2.0 * h, Vec3::Z * 2.0 * h);
+    m.quad(c + Vec3::new(-h, -h, h), x, y, material);
+    m.quad(c + Vec3::new(h, -h, -h), -x, y, material);
+    m.quad(c + Vec3::new(h, -h, h), -z, y, material);
+    m.quad(c + Vec3::new(-h, -h, -h), z, y, material);
+    m.quad(c + Vec3::new(-h, h, h), x, -z, material);
+    m.quad(c + Vec3::new(-h, -h, -h), x, z, material);
+}
+
+#[test]
+fn closed_double_sided_objects_peel_as_single_sided_ones_and_cards_keep_both_sides() {
+    let build = |cube_flags: u32| {
+        let mut m = MeshScene::default();
+        let wall = m.material(unlit([0.2, 0.3, 0.9]));
+        let solid = m.material(MeshMaterial { flags: UNLIT | cube_flags, ..unlit([1.0, 0.2, 0.1]) });
+        let card = m.material(MeshMaterial { flags: UNLIT | DOUBLE_SIDED, ..unlit([0.1, 1.0, 0.1]) });
+        m.facing(0.0, 0.0, 10.0, 20.0, wall);
+        cube(&mut m, Vec3::new(0.0, 0.0, -4.0), 0.5, solid);
+        // A thin card seen from behind (wound clockwise from the camera), right of the cube.
+        m.quad(Vec3::new(0.8, -0.25, -3.0), Vec3::new(0.0, 0.5, 0.0), Vec3::new(0.5, 0.0, 0.0), card);
+        m
+    };
+    // An aperture wide enough that the cube's far side lies beyond its near side's umbra.
+    let peel = |m: &MeshScene| {
+        peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.5, 10.0), 0.01, &all_layers()).unwrap().image.layers
+    };
+    let single = peel(&build(0));
+    let mut double = build(DOUBLE_SIDED);
+    let as_authored = peel(&double);
+    let report = double.single_sided_solids(camera().eye);
+    assert_eq!((report.solids, report.triangles, report.around_eye), (1, 12, 0), "{report}");
+    let fixed = peel(&double);
+    assert_eq!(fixed.counts, single.counts);
+    assert_eq!(fixed.fragments, single.fragments, "drawn as if authored single-sided");
+    // As authored, the inside of the cube's far side (depth 4.5) was a layer behind its near side.
+    let inner = |l: &dof::layers::LayeredImage| l.pixel(W / 2, H / 2).iter().filter(|f| (f.depth - 4.5).abs() < 1e-3).count();
+    assert_eq!((inner(&as_authored), inner(&fixed)), (1, 0));
+    // The card still shows its back.
+    let card = fixed.pixel(78, H / 2);
+    assert!((card[0].depth - 3.0).abs() < 1e-3 && card[0].color == [0.1, 1.0, 0.1], "{card:?}");
+    // From inside the cube nothing changes.
+    let mut inside = build(DOUBLE_SIDED);
+    let report = inside.single_sided_solids(Vec3::new(0.0, 0.0, -4.0));
+    assert_eq!((report.solids, report.around_eye), (0, 1));
+    assert_eq!(inside, build(DOUBLE_SIDED));
+}

@@ -12,6 +12,7 @@
 //! - [`reference`](mod@reference): thin-lens distributed ray tracing (the ground truth) and the pinhole image;
 //! - [`bvh`]: the bounding-volume hierarchy that keeps ray casts cheap;
 //! - [`mesh`]: triangle scenes ([`MeshScene`]) as the rasteriser draws them;
+//! - [`solids`]: closed opaque meshes drawn single-sided whatever their materials say;
 //! - `gltf_load` (feature `gltf`): glTF 2.0 files into a [`MeshScene`];
 //! - `gltf_export` (feature `gltf`): analytic scenes out as binary glTF, for rasterising what ray
 //!   casting renders;
@@ -41,6 +42,7 @@ pub mod mesh;
 pub mod mitsuba_export;
 pub mod raycast;
 pub mod reference;
+pub mod solids;
 /// The sampler lives in the core (ray tracing through layers draws its lens samples with it).
 pub use dof_core::sampling;
 
@@ -66,3 +68,4 @@ pub use raycast::{
     DEFAULT_SUBSAMPLES, LayerOptions, SceneLayers, apply_disocclusion, check_subsamples, raycast_layers, resolve_subsamples,
 };
 pub use reference::{AutoOptions, MAX_SPP, Reference, ReferenceOptions, noise_margin_db, pinhole, reference, reference_auto};
+pub use solids::SolidReport;

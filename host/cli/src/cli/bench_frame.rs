@@ -518,8 +518,9 @@ impl SceneView {
             settings
         };
         let (mesh, analytic, camera, lens, near) = if lower.ends_with(".gltf") || lower.ends_with(".glb") {
-            let mesh = scene::load_gltf(Path::new(&args.scene))?;
+            let mut mesh = scene::load_gltf(Path::new(&args.scene))?;
             let (camera, near) = mesh.default_camera(args.width, Some(args.height)).with_context(|| args.scene.clone())?;
+            mesh.single_sided_solids(camera.eye);
             let settings = with_flags(mesh.lens_focused_at(&camera, args.focus)?);
             let lens = settings.thin_lens(&camera).context(lens_flags)?;
             (mesh, None, camera, lens, Some(near))

@@ -911,6 +911,11 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         eprintln!("note: {}: {report}", args.scene());
     }
     let (camera, lens, near) = gltf_view(args, &mesh)?;
+    // From the start's eye (a sequence's orbit keeps to the outside of objects).
+    let solids = mesh.single_sided_solids(camera.eye);
+    if solids != Default::default() {
+        println!("{}: {solids}", args.scene());
+    }
     println!(
         "{}: {} triangles, {}x{}, f = {:.1} mm, aperture radius {:.2} mm, focus {:.3}, near plane {near}, far-field CoC {:.1} px",
         args.scene(),

@@ -58,7 +58,7 @@ impl SceneSource {
             return Ok(SceneSource { name, content: Content::Exr(Box::new(input)), camera, lens });
         }
         let (mesh, analytic, camera, mut lens, near) = if lower.ends_with(".gltf") || lower.ends_with(".glb") {
-            let mesh = load_gltf(Path::new(spec))?;
+            let mut mesh = load_gltf(Path::new(spec))?;
             let report = mesh.report.to_string();
             if !report.is_empty() {
                 eprintln!("note: {spec}: {report}");
@@ -66,6 +66,11 @@ impl SceneSource {
             // The file's camera and the lens `dof render` gives it (`MeshScene::default_view`).
             let (camera, near) =
                 mesh.default_camera(size[0], Some(size[1])).with_context(|| format!("{spec}: the viewer starts from the file's camera"))?;
+            // From the start's eye: orbiting keeps to the outside of objects.
+            let solids = mesh.single_sided_solids(camera.eye);
+            if solids != Default::default() {
+                eprintln!("note: {spec}: {solids}");
+            }
             let lens = mesh.lens_focused_at(&camera, focus)?;
             (mesh, None, camera, lens, Some(near))
         } else {

@@ -25,7 +25,7 @@ use super::mesh::MeshScene;
 /// What [`MeshScene::single_sided_solids`] changed.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SolidReport {
-    /// Solids with a double-sided material, now drawn single-sided.
+    /// Solids with a double-sided material, drawn single-sided.
     pub solids: u32,
     /// Their triangles.
     pub triangles: u64,

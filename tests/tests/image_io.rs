@@ -1102,7 +1102,7 @@ fn corrupted_files_never_panic() {
         ("raw", ExrPrecision::Float, ExrCompression::None),
     ] {
         let file = TempFile::new(&format!("fuzz-{name}.exr"));
-        write_exr_with(file.path(), &image, &[("Z", &depth)], &ExrWriteOptions { precision, compression }).unwrap();
+        write_exr_with(file.path(), &image, &[("Z", &depth)], &ExrWriteOptions { precision, compression, window: None }).unwrap();
         originals.push(std::fs::read(file.path()).unwrap());
     }
     let mut layered = LayeredImage::new(3, 2, 2).unwrap();

@@ -1585,3 +1585,39 @@ fn a_frame_range_renders_its_part_of_the_shot_as_the_whole_shot_does() {
         "none of them",
     );
 }
+
+#[test]
+fn an_exr_keeps_its_data_and_display_windows() {
+    use dof::io::codecs::exr::meta::MetaData;
+    use dof::io::{ExrWindow, ExrWriteOptions, write_exr_with};
+    // An RGB+Z crop at (5, -3) of a 100x50 frame.
+    let (w, h) = (24u32, 16u32);
+    let image = dof::layers::RgbImage { width: w, height: h, data: (0..w * h).map(|i| [i as f32 / 400.0, 0.5, 0.25]).collect() };
+    let depth: Vec<f32> = (0..w * h).map(|i| if i % w < w / 2 { 2.0 } else { 6.0 }).collect();
+    let window = ExrWindow { origin: (5, -3), display: [0, 0, 99, 49] };
+    let input = temp("windowed.exr");
+    write_exr_with(&input, &image, &[("Z", &depth)], &ExrWriteOptions { window: Some(window), ..Default::default() }).unwrap();
+    for method in ["pinhole", "gather"] {
+        let out = temp(&format!("windowed-{method}.exr"));
+        let o = dof(&[
+            "render",
+            "--scene",
+            input.to_str().unwrap(),
+            "--method",
+            method,
+            "--focus",
+            "4",
+            "--f-number",
+            "2",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let meta = MetaData::read_from_file(&out, false).unwrap();
+        let header = &meta.headers[0];
+        let position = header.own_attributes.layer_position;
+        assert_eq!((position.x(), position.y()), (5, -3), "{method}: the data window's corner");
+        let d = header.shared_attributes.display_window;
+        assert_eq!((d.position.x(), d.position.y(), d.size.x(), d.size.y()), (0, 0, 100, 50), "{method}: the display window");
+    }
+}

@@ -45,10 +45,13 @@ use crate::deep::{DeepImage, DeepSample, MAX_DEEP_SAMPLES, TidyReport};
 use crate::error::{Error, Result};
 
 /// What reading deep files found and changed.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct DeepReport {
     pub width: u32,
     pub height: u32,
+    /// Where the image (the union of the parts' data windows) lies in the files' pixel space, with
+    /// the first part's display window: write the result with it to keep its place.
+    pub window: super::ExrWindow,
     /// The deep parts read, as `file: part (type, compression)`.
     pub parts: Vec<String>,
     /// Channels read, and those not read (other channels, flat parts).
@@ -121,7 +124,21 @@ pub fn is_deep_exr(path: impl AsRef<Path>) -> Result<bool> {
 /// Reads every deep part of every file in `paths` into one tidy deep image over the union of their
 /// data windows (module docs), with a report of what was read and changed.
 pub fn read_deep_exr<P: AsRef<Path>>(paths: &[P]) -> Result<(DeepImage, DeepReport)> {
-    let mut report = DeepReport::default();
+    let mut report = DeepReport {
+        width: 0,
+        height: 0,
+        window: super::ExrWindow::plain(1, 1),
+        parts: Vec::new(),
+        channels: Vec::new(),
+        ignored_channels: Vec::new(),
+        samples_read: 0,
+        samples: 0,
+        max_samples: 0,
+        counts: SanitizeCounts::default(),
+        z_back_repaired: 0,
+        coloured_alpha: 0,
+        tidy: TidyReport::default(),
+    };
     let mut parts = Vec::new();
     for path in paths {
         read_file(path.as_ref(), &mut parts, &mut report)?;
@@ -148,15 +165,17 @@ pub fn read_deep_exr<P: AsRef<Path>>(paths: &[P]) -> Result<(DeepImage, DeepRepo
     let (image, tidy) = merged.tidy()?;
     report.width = width;
     report.height = height;
+    report.window = super::ExrWindow { origin: (x0 as i32, y0 as i32), display: parts[0].display };
     report.samples = image.samples.len() as u64;
     report.max_samples = image.max_count();
     report.tidy = tidy;
     Ok((image, report))
 }
 
-/// A deep part read, with the position of its data window's corner.
+/// A deep part read, with the position of its data window's corner and its display window.
 struct Part {
     origin: (i64, i64),
+    display: [i32; 4],
     image: DeepImage,
 }
 
@@ -282,7 +301,9 @@ fn read_file(path: &Path, parts: &mut Vec<Part>, report: &mut DeepReport) -> Res
         };
         report.parts.push(format!("{file_name}: {part_name} ({kind}, {compression})"));
         let origin = header.own_attributes.layer_position;
-        parts.push(Part { origin: (origin.x() as i64, origin.y() as i64), image });
+        let d = header.shared_attributes.display_window;
+        let display = [d.position.x(), d.position.y(), d.max().x(), d.max().y()];
+        parts.push(Part { origin: (origin.x() as i64, origin.y() as i64), display, image });
         read_any = true;
     }
     if !read_any {

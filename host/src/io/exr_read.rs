@@ -47,6 +47,8 @@ pub struct InputReport {
     pub ignored_channels: Vec<String>,
     /// What the NaN/Inf policy repaired or dropped.
     pub counts: SanitizeCounts,
+    /// Where the image lies in the file's pixel space: write the result with it to keep its place.
+    pub window: super::ExrWindow,
 }
 
 impl InputReport {
@@ -138,9 +140,10 @@ pub fn read_layered_exr(path: impl AsRef<Path>) -> Result<(LayeredImage, InputRe
     let (layout, groups) = select_layers(path, &file)?;
     // An RGB+Z image's single layer is the whole pixel (see `SanitizeCounts::sole_fragment`).
     let sole = layout == ExrLayout::RgbZ;
-    let (width, height) = file.size_of(path, &groups)?;
+    let (width, height, origin) = file.size_of(path, &groups)?;
     let mut image = LayeredImage::new(width, height, groups.len() as u32)?;
     let mut report = file.report(layout, width, height, &groups);
+    report.window = super::ExrWindow { origin, display: file.display };
 
     struct Planes<'a> {
         rgb: [Cow<'a, [f32]>; 3],
@@ -215,8 +218,9 @@ pub fn read_rgb_exr(path: impl AsRef<Path>) -> Result<(RgbImage, InputReport)> {
     };
     let colour_only = Group { a: None, depth: None, ..root };
     let groups = [colour_only];
-    let (width, height) = file.size_of(path, &groups)?;
+    let (width, height, origin) = file.size_of(path, &groups)?;
     let mut report = file.report(ExrLayout::Rgb, width, height, &groups);
+    report.window = super::ExrWindow { origin, display: file.display };
     let g = &groups[0];
     let mut planes = Vec::with_capacity(3);
     for i in [g.r, g.g, g.b].into_iter().flatten() {
@@ -258,6 +262,8 @@ pub(super) fn open_regular(path: &Path) -> Result<File> {
 /// A decoded EXR: every part, every channel, with full names (`part.channel` in multi-part files).
 struct ExrFile {
     parts: Vec<Layer<AnyChannels<FlatSamples>>>,
+    /// The display window, `[x_min, y_min, x_max, y_max]`.
+    display: [i32; 4],
     /// Full channel names, in the order of `index`.
     names: Vec<String>,
     /// (part, channel within the part) of each full name.
@@ -326,6 +332,8 @@ impl ExrFile {
                 .from_unbuffered(&mut file)
                 .map_err(|e| exr_error(path, e))
         })?;
+        let d = image.attributes.display_window;
+        let display = [d.position.x(), d.position.y(), d.max().x(), d.max().y()];
         let parts: Vec<_> = image.layer_data.into_iter().collect();
         let multi_part = parts.len() > 1;
         let mut names = Vec::new();
@@ -339,12 +347,12 @@ impl ExrFile {
         if names.is_empty() {
             return Err(Error::invalid(format!("{} has no channels", path.display())));
         }
-        Ok(ExrFile { parts, names, index })
+        Ok(ExrFile { parts, display, names, index })
     }
 
     /// The size shared by every used channel of `groups`; errors on a zero size, different data
     /// windows or subsampled channels.
-    fn size_of(&self, path: &Path, groups: &[Group]) -> Result<(u32, u32)> {
+    fn size_of(&self, path: &Path, groups: &[Group]) -> Result<(u32, u32, (i32, i32))> {
         let mut first: Option<(&str, Vec2<usize>, Vec2<i32>)> = None;
         for g in groups {
             for i in g.used() {
@@ -384,7 +392,7 @@ impl ExrFile {
                 }
             }
         }
-        let Some((_, size, _)) = first else {
+        let Some((_, size, position)) = first else {
             return Err(Error::invalid(format!("{}: no channels to read", path.display())));
         };
         if size.x() == 0 || size.y() == 0 {
@@ -396,7 +404,11 @@ impl ExrFile {
             )));
         }
         let too_large = || Error::invalid(format!("{}: size {}x{} is too large", path.display(), size.x(), size.y()));
-        Ok((u32::try_from(size.x()).map_err(|_| too_large())?, u32::try_from(size.y()).map_err(|_| too_large())?))
+        Ok((
+            u32::try_from(size.x()).map_err(|_| too_large())?,
+            u32::try_from(size.y()).map_err(|_| too_large())?,
+            (position.x(), position.y()),
+        ))
     }
 
     /// The samples of channel `i` as `f32` (borrowed when stored as `f32`).
@@ -433,6 +445,7 @@ impl ExrFile {
             channels: groups.iter().flat_map(|g| g.used()).map(|i| self.names[i].clone()).collect(),
             ignored_channels: (0..self.names.len()).filter(|i| used.binary_search(i).is_err()).map(|i| self.names[i].clone()).collect(),
             counts: SanitizeCounts::default(),
+            window: super::ExrWindow::plain(width, height),
         }
     }
 }

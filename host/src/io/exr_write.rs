@@ -30,12 +30,37 @@ pub enum ExrCompression {
     None,
 }
 
+/// Where an image lies in an EXR's pixel space: the corner of its data window and the display
+/// window (`[x_min, y_min, x_max, y_max]`, inclusive, as OpenEXR stores it). An input's windows,
+/// written back with the result, keep a render's place in its frame (an offset crop, a data
+/// window beyond or inside the display window).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ExrWindow {
+    pub origin: (i32, i32),
+    pub display: [i32; 4],
+}
+
+impl ExrWindow {
+    /// A data window at `(0, 0)` that is the display window too.
+    pub fn plain(width: u32, height: u32) -> ExrWindow {
+        ExrWindow { origin: (0, 0), display: [0, 0, width as i32 - 1, height as i32 - 1] }
+    }
+
+    /// Whether the data window is at `(0, 0)` and is the display window.
+    pub fn is_plain(&self, width: u32, height: u32) -> bool {
+        *self == ExrWindow::plain(width, height)
+    }
+}
+
 /// Options of [`write_exr_with`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ExrWriteOptions {
     /// Sample type of the colour channels (extra planes are always `f32`).
     pub precision: ExrPrecision,
     pub compression: ExrCompression,
+    /// The data window's corner and the display window (default: the image at `(0, 0)`, its own
+    /// display window).
+    pub window: Option<ExrWindow>,
 }
 
 impl ExrCompression {
@@ -99,7 +124,16 @@ pub fn write_exr_with(path: impl AsRef<Path>, image: &RgbImage, extra: &[(&str, 
         channels.push(AnyChannel::new(text(name)?, FlatSamples::F32(plane.to_vec())));
     }
     let size = (image.width as usize, image.height as usize);
-    let exr_image = Image::from_encoded_channels(size, options.compression.encoding(), AnyChannels::sort(channels));
+    let mut exr_image = Image::from_encoded_channels(size, options.compression.encoding(), AnyChannels::sort(channels));
+    if let Some(w) = options.window {
+        let [x0, y0, x1, y1] = w.display;
+        if x1 < x0 || y1 < y0 {
+            return Err(Error::invalid(format!("an EXR display window needs its maximum at or after its minimum, got {:?}", w.display)));
+        }
+        exr_image.layer_data.attributes.layer_position = Vec2(w.origin.0, w.origin.1);
+        exr_image.attributes.display_window =
+            IntegerBounds::new(Vec2(x0, y0), Vec2((x1 as i64 - x0 as i64 + 1) as usize, (y1 as i64 - y0 as i64 + 1) as usize));
+    }
     encode_and_write(path, &exr_image)
 }
 

@@ -44,8 +44,9 @@
 //! Colour in EXR is premultiplied by alpha, as [`Fragment`](crate::layers::Fragment) colour is:
 //! it is read and written as stored. Depth is planar
 //! (distance along the view axis) as in [`layers`](crate::layers); a renderer writing radial
-//! distance or `1/z` must be converted first. The image is the data window; the display window is
-//! ignored.
+//! distance or `1/z` must be converted first. The image is the data window; its corner and the
+//! display window are kept ([`InputReport::window`]) and `dof render` writes its result with them,
+//! so an offset crop or a data window beyond the display window keeps its place in the frame.
 //!
 //! # The background
 //!
@@ -136,7 +137,7 @@ pub use deep_exr::{DeepReport, is_deep_exr, read_deep_exr};
 #[cfg(feature = "exr")]
 pub use exr_read::{ExrLayout, InputReport, MAX_EXR_EDGE, MAX_EXR_SLOTS, check_exr_header, read_layered_exr, read_rgb_exr};
 #[cfg(feature = "exr")]
-pub use exr_write::{ExrCompression, ExrPrecision, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr};
+pub use exr_write::{ExrCompression, ExrPrecision, ExrWindow, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr};
 #[cfg(feature = "exr")]
 pub use gif_preview::{MAX_GIF_EDGE, write_gif_preview};
 #[cfg(feature = "eval")]

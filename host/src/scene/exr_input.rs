@@ -47,6 +47,15 @@ impl ExrInput {
         matches!(self, ExrInput::Deep { .. })
     }
 
+    /// Where the image lies in the file's pixel space (its data window's corner, the display
+    /// window): the result is written with it.
+    pub fn window(&self) -> crate::io::ExrWindow {
+        match self {
+            ExrInput::Flat { report, .. } => report.window,
+            ExrInput::Deep { report, .. } => report.window,
+        }
+    }
+
     pub fn size(&self) -> (u32, u32) {
         match self {
             ExrInput::Flat { layers, .. } => (layers.width, layers.height),

@@ -4,7 +4,7 @@
 use anyhow::{Context, bail};
 use dof::aperture::parse_aperture;
 use dof::frame::{BokehOptions, LayeredOptions, METHODS, MethodInfo, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
-use dof::io::{write_exr, write_layered_exr, write_png_preview};
+use dof::io::{ExrWindow, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr, write_png_preview};
 use dof::layers::RgbImage;
 use dof::layers::{LayeredImage, crop_plane};
 use dof::methods::one_shot::one_shot;
@@ -613,9 +613,10 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     if args.method == Method::Reference {
         bail!("the exact reference needs the scene's geometry; an EXR has none (use a built-in scene)");
     }
+    let window = Some(input.window());
     if args.method == Method::Pinhole {
         let (image, depth) = input.flattened();
-        return write_outputs(out, &image, &[("Z", &depth)], args.exposure);
+        return write_outputs_at(out, &image, &[("Z", &depth)], args.exposure, window);
     }
     // Flat layers are read as stored (`--method layers` writes them back without a lens); a deep
     // image's layers are made for the lens.
@@ -640,7 +641,7 @@ fn render_file(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     }
     let (image, depth) = blur(args, &padded, &lens, margin)?;
     let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
-    write_outputs(out, &image, &[("Z", &depth), ("coc", &coc)], args.exposure)
+    write_outputs_at(out, &image, &[("Z", &depth), ("coc", &coc)], args.exposure, window)
 }
 
 /// `--method layers`: the multi-layer image as a multi-layer EXR, and what it holds.
@@ -988,7 +989,18 @@ fn gltf_view(args: &RenderArgs, mesh: &MeshScene) -> anyhow::Result<(Camera, Thi
 }
 
 fn write_outputs(out: &Path, image: &RgbImage, extra: &[(&str, &[f32])], exposure: f32) -> anyhow::Result<()> {
-    write_exr(out, image, extra)?;
+    write_outputs_at(out, image, extra, exposure, None)
+}
+
+/// [`write_outputs`] with the EXR's data and display windows (an EXR input's, kept).
+fn write_outputs_at(
+    out: &Path,
+    image: &RgbImage,
+    extra: &[(&str, &[f32])],
+    exposure: f32,
+    window: Option<ExrWindow>,
+) -> anyhow::Result<()> {
+    write_exr_with(out, image, extra, &ExrWriteOptions { window, ..Default::default() })?;
     let png = out.with_extension("png");
     write_png_preview(&png, image, exposure)?;
     println!("wrote {} and {}", out.display(), png.display());

@@ -152,7 +152,7 @@ fn read_exr_frame(
     first: Option<&LayeredImage>,
     (camera, lens): &(Camera, ThinLens),
     notes: bool,
-) -> anyhow::Result<LayeredImage> {
+) -> anyhow::Result<(LayeredImage, ExrWindow)> {
     let input = ExrInput::read(&[path])?;
     if let Some(note) = input.note().filter(|_| notes) {
         eprintln!("note: {}: {note}", path.display());
@@ -170,7 +170,7 @@ fn read_exr_frame(
             f.max_layers
         );
     }
-    Ok(layers)
+    Ok((layers, input.window()))
 }
 
 /// An EXR frame as the sequence's loop takes a rendered one: its edges extended by `margin`, no
@@ -251,7 +251,7 @@ pub(super) fn render_sequence(
             let mut largest = 0;
             let mut first = None;
             for i in plan.selected.clone() {
-                let frame = read_exr_frame(args, &files[i], first.as_ref(), &shots[i], true)?;
+                let (frame, _) = read_exr_frame(args, &files[i], first.as_ref(), &shots[i], true)?;
                 largest = largest.max(edge_margin(&frame, &shots[i].1));
                 first.get_or_insert(frame);
             }
@@ -288,10 +288,16 @@ pub(super) fn render_sequence(
     let rendered = (|| -> anyhow::Result<()> {
         for i in plan.selected.clone() {
             let (camera, lens) = &shots[i];
+            // An EXR frame is written with its input's windows.
+            let mut window = None;
             let layered = match &source {
                 Source::Builtin(s) => raycast_layers(s, camera, lens, &options)?,
                 Source::Gltf { mesh, near } => peel_layers(b.as_mut(), &mesh.raster(), camera, lens, *near, &options)?.image,
-                Source::Exr(files) => exr_as_layers(&read_exr_frame(args, &files[i], None, &shots[i], false)?, margin)?,
+                Source::Exr(files) => {
+                    let (frame, at) = read_exr_frame(args, &files[i], None, &shots[i], false)?;
+                    window = Some(at);
+                    exr_as_layers(&frame, margin)?
+                }
             };
             let path = plan.path(out, i);
             let mut kernel_ms = None;
@@ -342,7 +348,9 @@ pub(super) fn render_sequence(
                 let coc: Vec<f32> = depth.iter().map(|&z| lens.coc_px(z)).collect();
                 let mask: Vec<f32> = layered.mask.iter().map(|&m| m as u32 as f32).collect();
                 match &source {
-                    Source::Exr(_) => write_exr(&path, &image, &[("Z", &depth), ("coc", &coc)])?,
+                    Source::Exr(_) => {
+                        write_exr_with(&path, &image, &[("Z", &depth), ("coc", &coc)], &ExrWriteOptions { window, ..Default::default() })?
+                    }
                     _ => write_exr(&path, &image, &[("Z", &depth), ("coc", &coc), ("mask", &mask)])?,
                 }
             }

@@ -365,6 +365,13 @@ fn with_footprints(layers: &mut LayeredImage, f: ArrayViewD<'_, u32>, side: u32)
     Ok(())
 }
 
+/// A Python `UserWarning` saying what reading `path` repaired or left out (the note `dof render`
+/// prints), so that nothing is changed silently.
+fn warn_read(py: Python<'_>, path: &std::path::Path, report: &str) -> PyResult<()> {
+    let message = std::ffi::CString::new(format!("{}: {report}", path.display()).replace('\0', " ")).expect("no NUL byte");
+    PyErr::warn(py, &py.get_type::<pyo3::exceptions::PyUserWarning>(), &message, 1)
+}
+
 /// Whether an EXR file has a depth channel (`Z` or `depth`, any case, in any layer or part).
 fn has_depth_channel(path: &std::path::Path) -> bool {
     use dof::io::codecs::exr::meta::MetaData;
@@ -388,10 +395,12 @@ fn has_depth_channel(path: &std::path::Path) -> bool {
 /// uint32 counts, which `blur` takes as they are.
 ///
 /// Raises ValueError naming the file and the problem on a missing, unreadable or unusable file.
+/// What the reader repaired or left out (NaN or infinite colour, bad depth, channels not read) is
+/// said in a `UserWarning`, as `dof render` prints it.
 #[pyfunction]
 #[pyo3(signature = (path, *, layers=false))]
 fn read_exr<'py>(py: Python<'py>, path: PathBuf, layers: bool) -> PyResult<Bound<'py, PyTuple>> {
-    let read = py.detach(|| -> PyResult<Result<LayeredImage, RgbImage>> {
+    let (read, note) = py.detach(|| -> PyResult<(Result<LayeredImage, RgbImage>, Option<String>)> {
         match dof::io::read_layered_exr(&path) {
             Ok((image, report)) => {
                 if !layers && image.max_layers > 1 {
@@ -401,15 +410,18 @@ fn read_exr<'py>(py: Python<'py>, path: PathBuf, layers: bool) -> PyResult<Bound
                         report.layers.join(", ")
                     )));
                 }
-                Ok(Ok(image))
+                Ok((Ok(image), (report.total() > 0).then(|| report.to_string())))
             }
             Err(e) if !layers && path.is_file() && !has_depth_channel(&path) => match dof::io::read_rgb_exr(&path) {
-                Ok((rgb, _)) => Ok(Err(rgb)),
+                Ok((rgb, report)) => Ok((Err(rgb), (report.total() > 0).then(|| report.to_string()))),
                 Err(_) => Err(py_err(e)),
             },
             Err(e) => Err(py_err(e)),
         }
     })?;
+    if let Some(note) = note {
+        warn_read(py, &path, &note)?;
+    }
     match read {
         Err(rgb) => (to_rgb_array(&rgb).into_pyarray(py), py.None()).into_pyobject(py),
         Ok(image) if !layers => {
@@ -450,13 +462,18 @@ const DEEP_FIELDS: [&str; 6] = ["R", "G", "B", "A", "Z", "ZBack"];
 /// multi-layer image `blur` takes.
 ///
 /// Raises ValueError naming the file and the problem on a missing, flat, damaged or unusable file.
+/// What the reader repaired or left out is said in a `UserWarning`.
 #[pyfunction]
 fn read_deep_exr<'py>(py: Python<'py>, paths: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyTuple>> {
     let paths: Vec<PathBuf> = match paths.extract::<PathBuf>() {
         Ok(one) => vec![one],
         Err(_) => paths.extract()?,
     };
-    let (image, _) = py.detach(|| dof::io::read_deep_exr(&paths)).map_err(py_err)?;
+    let (image, report) = py.detach(|| dof::io::read_deep_exr(&paths)).map_err(py_err)?;
+    let changed = report.counts.repaired() + report.z_back_repaired + report.coloured_alpha;
+    if changed > 0 || !report.ignored_channels.is_empty() {
+        warn_read(py, &paths[0], &report.to_string())?;
+    }
     deep_arrays(py, &image)
 }
 
@@ -575,9 +592,7 @@ fn deep_layers<'py>(
     )?;
     let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), yfov.to_radians(), image.width, image.height);
     let options = dof::frame::LayerOptions { max_layers, ..Default::default() };
-    let layers = py
-        .detach(|| -> dof::Result<LayeredImage> { Ok(image.layers(&camera.frame()?, &lens, &options)?.0) })
-        .map_err(py_err)?;
+    let layers = py.detach(|| -> dof::Result<LayeredImage> { Ok(image.layers(&camera.frame()?, &lens, &options)?.0) }).map_err(py_err)?;
     layered_arrays(py, &layers)
 }
 

@@ -200,6 +200,19 @@ def test_deep_exr_reads_as_counts_and_flat_samples_that_make_layers_for_blur():
     assert c[0, 0] >= 1 and frags[0, 0, 0, 3] == 1.0, "the nearer sample comes first"
 
 
+def test_readers_warn_about_what_they_repaired(tmp_path):
+    rgb = np.full((4, 6, 3), 0.5, np.float32)
+    rgb[1, 2, 0] = np.nan
+    depth = np.full((4, 6), 2.0, np.float32)
+    path = str(tmp_path / "nan.exr")
+    dof.write_exr(path, rgb, depth)
+    with pytest.warns(UserWarning, match="NaN colour values set to 0"):
+        back, _ = dof.read_exr(path)
+    assert back[1, 2, 0] == 0.0
+    with pytest.warns(UserWarning, match="NaN, zero or negative Z dropped"):
+        dof.read_deep_exr(os.path.join(DEEP, "nan-depth.exr"))
+
+
 def test_bad_deep_input_raises_value_error(tmp_path):
     with pytest.raises(ValueError, match="not an OpenEXR file"):
         bad = tmp_path / "bad.exr"

@@ -287,6 +287,7 @@ fn the_viewer_refuses_bad_input_clearly() {
     let wide_exr = dir.join("wide.exr");
     let wide = dof::layers::RgbImage { width: 100_000, height: 1, data: vec![[0.5; 3]; 100_000] };
     dof::io::write_exr(&wide_exr, &wide, &[("Z", &vec![2.0; 100_000])]).unwrap();
+    let deep = format!("{}/../../tests/data/deep/scene-zips.exr", env!("CARGO_MANIFEST_DIR"));
     for (args, expect) in [
         (vec!["--width", "0"], "--width must lie between"),
         (vec!["--focus", "NaN"], "--focus must be a positive finite distance"),
@@ -303,6 +304,8 @@ fn the_viewer_refuses_bad_input_clearly() {
         (vec!["--exposure", "inf"], "--exposure must be a positive number"),
         (vec!["--script", "exposure=-1"], "the exposure must be positive"),
         (vec!["--scene", wide_exr.to_str().unwrap(), "--focus", "3", "--f-number", "2"], "declares 100000x1 pixels"),
+        (vec!["--frames", "2", "--script", "method=tiled,method=gather,method=bokeh"], "--script has 3 steps"),
+        (vec!["--scene", deep.as_str(), "--focus", "3", "--f-number", "2", "--width", "320"], "opens at its own size (48x32)"),
     ] {
         let out = dof().arg("view").args(&args).env_remove("DISPLAY").output().unwrap();
         let err = String::from_utf8_lossy(&out.stderr);

@@ -342,7 +342,7 @@ impl App<'_> {
 
     /// The window, the device on it, the library on that device, the UI renderer.
     fn open(&mut self, el: &ActiveEventLoop) -> Result<()> {
-        let size = self.source.fixed_size().unwrap_or([self.args.width, self.args.height]);
+        let size = self.source.fixed_size().unwrap_or(self.args.size());
         let attributes = Window::default_attributes()
             .with_title(format!("dof view: {}", self.source.name))
             .with_inner_size(PhysicalSize::new(size[0], size[1]));
@@ -368,7 +368,7 @@ impl App<'_> {
         // The size against what the device holds, before anything is made for it.
         let flags = match self.source.fixed_size() {
             Some([w, h]) => format!("--scene {} ({w}x{h} pixels, shown at its own size)", self.args.scene),
-            None => format!("--width {} --height {}", self.args.width, self.args.height),
+            None => format!("--width {} --height {}", size[0], size[1]),
         };
         let frame = size.map(|e| e.saturating_add(2 * MAX_GUARD_BAND));
         let fit = Fit { flags: &flags, window: size, frame, layers: self.source.max_layers() };

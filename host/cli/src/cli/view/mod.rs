@@ -36,12 +36,13 @@ pub struct ViewArgs {
     /// A method of the frame API (its registry name: multilayer, tiled, gather, ring-gather, bokeh, ...).
     #[arg(long, default_value = "multilayer")]
     pub method: ViewMethod,
-    /// Window size in pixels (an EXR is shown scaled to it). Small by default: on lavapipe (Mesa's
-    /// CPU Vulkan) every pixel costs.
-    #[arg(long, default_value_t = 320)]
-    pub width: u32,
-    #[arg(long, default_value_t = 180)]
-    pub height: u32,
+    /// Window size in pixels of built-in and glTF scenes (default 320x180; small: on lavapipe,
+    /// Mesa's CPU Vulkan, every pixel costs). An EXR opens at its own size; resizing the window
+    /// scales it.
+    #[arg(long)]
+    pub width: Option<u32>,
+    #[arg(long)]
+    pub height: Option<u32>,
     /// Focus distance in scene units (planar); default the scene's.
     #[arg(long, allow_negative_numbers = true)]
     pub focus: Option<f32>,
@@ -99,8 +100,16 @@ pub struct ViewArgs {
 /// Largest window or frame edge the viewer accepts.
 const MAX_EDGE: u32 = 8192;
 
+impl ViewArgs {
+    /// The window size of a built-in or glTF scene.
+    pub fn size(&self) -> [u32; 2] {
+        [self.width.unwrap_or(320), self.height.unwrap_or(180)]
+    }
+}
+
 fn check(args: &ViewArgs) -> Result<()> {
-    for (what, v) in [("--width", args.width), ("--height", args.height)] {
+    let [width, height] = args.size();
+    for (what, v) in [("--width", width), ("--height", height)] {
         if !(16..=MAX_EDGE).contains(&v) {
             bail!("{what} must lie between 16 and {MAX_EDGE} pixels, got {v}");
         }
@@ -146,12 +155,22 @@ fn check(args: &ViewArgs) -> Result<()> {
 pub fn run(args: &ViewArgs) -> Result<()> {
     check(args)?;
     let steps = script::parse(&args.script)?;
+    if let Some(n) = args.frames.filter(|&n| steps.len() > n as usize) {
+        bail!(
+            "--script has {} steps, one a frame, but --frames {n} ends the run after {n}: give --frames {} or more",
+            steps.len(),
+            steps.len()
+        );
+    }
     let aperture = match (args.f_number, args.aperture_radius) {
         (Some(n), _) => Some(dof::scene::Aperture::FNumber(n)),
         (_, Some(r)) => Some(dof::scene::Aperture::Radius(r)),
         _ => None,
     };
-    let source = scene::SceneSource::load(&args.scene, [args.width, args.height], args.focus, aperture)?;
+    let source = scene::SceneSource::load(&args.scene, args.size(), args.focus, aperture)?;
+    if let Some([w, h]) = source.fixed_size().filter(|_| args.width.is_some() || args.height.is_some()) {
+        bail!("--width/--height do not apply to an EXR: it opens at its own size ({w}x{h}); resize the window to scale it");
+    }
     if let Some([w, h]) = source.fixed_size()
         && (!(16..=MAX_EDGE).contains(&w) || !(16..=MAX_EDGE).contains(&h))
     {

@@ -201,6 +201,12 @@ impl LayeredImage {
         dof_shaders::slot::ends_translucent(self.counts[p].min(self.max_layers), |k| self.fragments[start + k as usize].slot())
     }
 
+    /// Pixels whose `max_layers` slots are all used and still let light through, with black
+    /// behind: a translucent stack deeper than the layers, whose remainder was left out.
+    pub fn full_and_translucent(&self) -> u64 {
+        (0..self.counts.len()).filter(|&p| self.counts[p] >= self.max_layers && self.ends_translucent(p)).count() as u64
+    }
+
     /// Every pixel flattened ([`Self::front`]) as an opaque one-layer image: the input of
     /// single-layer methods.
     pub fn front_layer(&self) -> LayeredImage {

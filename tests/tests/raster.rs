@@ -340,3 +340,23 @@ fn closed_double_sided_objects_peel_as_single_sided_ones_and_cards_keep_both_sid
     assert_eq!((report.solids, report.around_eye), (0, 1));
     assert_eq!(inside, build(DOUBLE_SIDED));
 }
+
+#[test]
+fn a_translucent_stack_deeper_than_the_layers_is_counted() {
+    let mut m = MeshScene::default();
+    let wall = m.material(unlit([1.0, 1.0, 1.0]));
+    m.facing(0.0, 0.0, 10.0, 20.0, wall);
+    let pane = m.material(MeshMaterial { flags: UNLIT | dof_shaders::raster::mesh::ALPHA_BLEND, ..unlit([1.0, 0.0, 0.0]) });
+    for k in 0..8 {
+        m.materials[pane as usize].base[3] = 0.1;
+        m.facing(0.0, 0.0, 2.0 + 0.5 * k as f32, 1.0, pane);
+    }
+    let peel = |layers: u32| {
+        let options = LayerOptions { max_layers: layers, ..all_layers() };
+        peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.5, 10.0), 0.01, &options).unwrap().image.layers
+    };
+    let shallow = peel(4);
+    assert!(shallow.full_and_translucent() > 0, "four of eight panes, and nothing behind them");
+    assert!(shallow.ends_translucent(shallow.pixel_index(W / 2, H / 2)));
+    assert_eq!(peel(16).full_and_translucent(), 0, "every pane and the wall behind them");
+}

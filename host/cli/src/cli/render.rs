@@ -940,6 +940,14 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let peeled = peel_layers(b.as_mut(), &raster, &camera, &lens, near, &options)?;
     let ms: f64 = peeled.times.iter().map(|t| t.ms).sum();
     println!("depth peeling on {}: {} passes, {ms:.2} ms", b.device_name(), peeled.passes);
+    let deep_stacks = peeled.image.layers.full_and_translucent();
+    if deep_stacks > 0 {
+        eprintln!(
+            "note: {deep_stacks} pixel(s) fill all {} layers with translucent surfaces and still let light through: what lies \
+             behind them is left out (black); raise --layers",
+            options.max_layers
+        );
+    }
     match args.method {
         Method::Pinhole => write_with_planes(args, out, &peeled.image.front().0, &peeled.image, &lens),
         Method::Reference => {

@@ -499,8 +499,8 @@ fn join_glb(json: &Value, bin: &[u8]) -> Vec<u8> {
 }
 
 /// Expectation: material flags and sampler bits follow the file: unlit, mask with its cutoff,
-/// blend, single-sided; a linear-magnification, clamp/mirror sampler; a texture naming texCoord 1
-/// uses set 0 and is counted; an emissive texture is decoded; the same image used twice with the
+/// blend, single-sided; a linear-magnification, clamp/mirror sampler; a texture naming a texCoord
+/// set the primitives lack, beside an emissive texture on set 0, is counted; an emissive texture is decoded; the same image used twice with the
 /// same sampler shares one texture.
 #[test]
 fn material_flags_and_samplers_follow_the_file() {
@@ -518,7 +518,8 @@ fn material_flags_and_samplers_follow_the_file() {
     doc["samplers"][0] = json!({ "magFilter": 9729, "wrapS": 33071, "wrapT": 33648 });
     doc["extensionsUsed"] = json!(["KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_unlit"]);
     let m = load_gltf_slice(&join_glb(&doc, &bin)).unwrap();
-    assert_eq!(m.report.unsupported_texcoords, 1);
+    // Its base colour reads set 1, which the primitives lack, and its emissive texture set 0.
+    assert!(m.report.missing_texture_coordinates > 0 && m.report.mixed_texture_coordinates > 0, "{}", m.report);
     let mat = m.materials[0];
     assert_eq!(mat.flags, UNLIT | ALPHA_MASK);
     assert_eq!(mat.alpha_cutoff, 0.25);
@@ -728,4 +729,46 @@ fn a_texture_beyond_the_budget_is_refused_before_decoding() {
     let text = err.to_string();
     assert!(matches!(err, dof::Error::Core(CoreError::TooLarge { .. })), "{text}");
     assert!(text.contains("8192x8192") && text.contains("scale the textures down"), "{text}");
+}
+
+/// `KHR_texture_transform` and `TEXCOORD_1`: a material's texture reading set 1 through an offset,
+/// rotation and scale gives its primitives those coordinates, transformed as the extension's GLSL
+/// does (`translation · rotation · scale`).
+#[test]
+fn texture_transforms_and_the_second_coordinate_set_are_applied() {
+    let (mut doc, bin) = split_glb(&export_builtin_glb("railing", W, H).unwrap());
+    let plain = load_gltf_slice(&join_glb(&doc, &bin)).unwrap();
+    for mesh in doc["meshes"].as_array_mut().unwrap() {
+        for prim in mesh["primitives"].as_array_mut().unwrap() {
+            if let Some(uv) = prim["attributes"].get("TEXCOORD_0").cloned() {
+                prim["attributes"]["TEXCOORD_1"] = uv;
+            }
+        }
+    }
+    let rotation = std::f32::consts::FRAC_PI_2;
+    doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = json!({
+        "index": 0,
+        "texCoord": 1,
+        "extensions": { "KHR_texture_transform": { "offset": [0.5, 0.25], "rotation": rotation, "scale": [2.0, 3.0] } },
+    });
+    doc["extensionsUsed"] = json!(["KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform"]);
+    let m = load_gltf_slice(&join_glb(&doc, &bin)).unwrap();
+    assert!(m.report.is_clean(), "{}", m.report);
+    let with_material = |mesh: &MeshScene| -> Vec<usize> {
+        let mut v: Vec<usize> = mesh.triangles.iter().filter(|t| t[3] == 0).flat_map(|t| t[..3].iter().map(|&i| i as usize)).collect();
+        v.sort_unstable();
+        v.dedup();
+        v
+    };
+    let vertices = with_material(&m);
+    assert!(!vertices.is_empty());
+    assert_eq!(vertices, with_material(&plain));
+    for i in vertices {
+        let (u, v) = (plain.vertices[i].u, plain.vertices[i].v);
+        // Rotation by a quarter turn: (u, v) scaled to (2u, 3v) turns to (-3v, 2u).
+        let want = [-3.0 * v + 0.5, 2.0 * u + 0.25];
+        let got = [m.vertices[i].u, m.vertices[i].v];
+        let close = |a: f32, b: f32| (a - b).abs() <= 1e-6 * b.abs().max(1.0);
+        assert!(close(got[0], want[0]) && close(got[1], want[1]), "vertex {i}: {got:?}, want {want:?}");
+    }
 }

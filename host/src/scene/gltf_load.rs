@@ -541,16 +541,30 @@ impl Loader<'_> {
                 }
                 None => vec![[0.0; 3]; n],
             };
-            let uvs: Vec<[f32; 2]> = match prim.get(&gltf::Semantic::TexCoords(0)) {
+            // The coordinates its textures read: one set and transform for the primitive, baked
+            // into its vertices.
+            let mapping = UvMapping::of(&prim.material());
+            if prim.get(&gltf::Semantic::Colors(0)).is_some() {
+                self.out.report.ignored_vertex_colors += 1;
+            }
+            if mapping.mixed {
+                self.out.report.mixed_texture_coordinates += 1;
+            }
+            let set = mapping.set;
+            let uvs: Vec<[f32; 2]> = match prim.get(&gltf::Semantic::TexCoords(set)) {
                 Some(acc) => {
                     let ok = [(DataType::F32, Dimensions::Vec2), (DataType::U8, Dimensions::Vec2), (DataType::U16, Dimensions::Vec2)];
-                    check_accessor(&acc, &format!("{what} TEXCOORD_0"), &ok, bufs)?;
-                    reader.read_tex_coords(0).map(|t| t.into_f32().collect()).unwrap_or_default()
+                    check_accessor(&acc, &format!("{what} TEXCOORD_{set}"), &ok, bufs)?;
+                    let raw = reader.read_tex_coords(set).map(|t| t.into_f32().collect::<Vec<_>>()).unwrap_or_default();
+                    raw.into_iter().map(|uv| mapping.apply(uv)).collect()
                 }
-                None => vec![[0.0; 2]; n],
+                None => {
+                    self.out.report.missing_texture_coordinates += mapping.textured as u64 * (set != 0) as u64;
+                    vec![[0.0; 2]; n]
+                }
             };
             if normals.len() != n || uvs.len() != n {
-                return Err(scene_err(format!("{what}: NORMAL or TEXCOORD_0 has a different count than POSITION ({n})")));
+                return Err(scene_err(format!("{what}: NORMAL or TEXCOORD_{set} has a different count than POSITION ({n})")));
             }
             let indices: Vec<u32> = match prim.indices() {
                 Some(acc) => {
@@ -693,9 +707,6 @@ impl Loader<'_> {
 
     /// The texture index for a material's texture reference, decoding its image on first use.
     fn texture(&mut self, info: &gltf::texture::Info, srgb: bool, what: &str) -> Result<u32> {
-        if info.tex_coord() != 0 {
-            self.out.report.unsupported_texcoords += 1;
-        }
         let texture = info.texture();
         let sampler = texture.sampler();
         let wrap = |w: gltf::texture::WrappingMode| match w {
@@ -779,4 +790,43 @@ impl Loader<'_> {
 /// The sRGB transfer function's inverse.
 fn srgb_to_linear(s: f32) -> f32 {
     if s <= 0.040_45 { s / 12.92 } else { ((s + 0.055) / 1.055).powf(2.4) }
+}
+
+/// The texture coordinates a material's textures read: a set (`TEXCOORD_n`) and a
+/// `KHR_texture_transform` (offset, rotation, scale), the base colour texture's, else the emissive
+/// texture's. The rasteriser reads one set a vertex, so a primitive's coordinates are these, with
+/// the transform applied; `mixed` when its two textures ask for different ones.
+struct UvMapping {
+    set: u32,
+    /// `uv' = [m0 m1 m2; m3 m4 m5] · (u, v, 1)`.
+    matrix: [f32; 6],
+    textured: bool,
+    mixed: bool,
+}
+
+impl UvMapping {
+    fn of(material: &gltf::Material) -> UvMapping {
+        let pbr = material.pbr_metallic_roughness();
+        let infos: Vec<gltf::texture::Info> = [pbr.base_color_texture(), material.emissive_texture()].into_iter().flatten().collect();
+        let one = |info: &gltf::texture::Info| -> (u32, [f32; 6]) {
+            match info.texture_transform() {
+                Some(t) => {
+                    let ([ox, oy], r, [sx, sy]) = (t.offset(), t.rotation(), t.scale());
+                    let (c, s) = (r.cos(), r.sin());
+                    // Translation · rotation · scale, as the extension's GLSL defines it (column-major:
+                    // the rotation's first column is (cos, sin)).
+                    (t.tex_coord().unwrap_or(info.tex_coord()), [c * sx, -s * sy, ox, s * sx, c * sy, oy])
+                }
+                None => (info.tex_coord(), [1.0, 0.0, 0.0, 0.0, 1.0, 0.0]),
+            }
+        };
+        let mappings: Vec<(u32, [f32; 6])> = infos.iter().map(one).collect();
+        let (set, matrix) = mappings.first().copied().unwrap_or((0, [1.0, 0.0, 0.0, 0.0, 1.0, 0.0]));
+        UvMapping { set, matrix, textured: !mappings.is_empty(), mixed: mappings.iter().any(|m| *m != (set, matrix)) }
+    }
+
+    fn apply(&self, [u, v]: [f32; 2]) -> [f32; 2] {
+        let m = self.matrix;
+        [m[0] * u + m[1] * v + m[2], m[3] * u + m[4] * v + m[5]]
+    }
 }

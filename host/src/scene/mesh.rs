@@ -7,7 +7,8 @@
 //! - zero-area triangles (repeated indices, or a cross product of two edges no longer than `1e-12`
 //!   times the longest squared edge) are dropped, since they cover no pixel;
 //! - point and line primitives, orthographic cameras, lights other than the first directional one
-//!   and texture references to a texture coordinate set other than 0 are skipped or changed.
+//!   and textures whose coordinates a primitive cannot give (a set it lacks, or different sets or
+//!   transforms for its base colour and emissive textures) are skipped or changed.
 
 use dof_shaders::raster::mesh::{MeshMaterial, MeshVertex, TextureInfo};
 
@@ -84,8 +85,13 @@ pub struct LoadReport {
     pub skipped_primitives: u64,
     /// Orthographic cameras skipped.
     pub orthographic_cameras: u64,
-    /// Texture references naming a texture coordinate set other than 0 (set 0 is used instead).
-    pub unsupported_texcoords: u64,
+    /// Primitives whose material's base colour and emissive textures read different coordinate
+    /// sets or transforms (the base colour texture's are used for both).
+    pub mixed_texture_coordinates: u64,
+    /// Primitives whose textures name a coordinate set they lack (their coordinates read as 0).
+    pub missing_texture_coordinates: u64,
+    /// Primitives with vertex colours (`COLOR_0`), which the rasteriser does not apply.
+    pub ignored_vertex_colors: u64,
     /// Punctual lights not used: point and spot lights, and directional lights after the first.
     pub ignored_lights: u64,
 }
@@ -104,7 +110,12 @@ impl std::fmt::Display for LoadReport {
             (self.degenerate_triangles, "zero-area triangles dropped"),
             (self.skipped_primitives, "point or line primitives skipped"),
             (self.orthographic_cameras, "orthographic cameras skipped"),
-            (self.unsupported_texcoords, "textures on a texture coordinate set other than 0 (set 0 used)"),
+            (
+                self.mixed_texture_coordinates,
+                "primitives whose base colour and emissive textures use different coordinates (the base colour's used for both)",
+            ),
+            (self.missing_texture_coordinates, "primitives lacking the texture coordinate set their textures name (read as 0)"),
+            (self.ignored_vertex_colors, "primitives whose vertex colours (COLOR_0) are not applied"),
             (self.ignored_lights, "lights not used (only the first directional light is)"),
         ];
         let parts: Vec<String> = items.iter().filter(|(n, _)| *n > 0).map(|(n, what)| format!("{n} {what}")).collect();

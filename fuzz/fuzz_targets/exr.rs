@@ -87,13 +87,8 @@ fn run(data: &[u8]) {
             assert!(pixel.windows(2).all(|w| w[0].z <= w[1].z), "pixel {p}: not sorted");
         }
         let _ = report.to_string();
-        let camera = dof::scene::Camera::look_at(
-            dof::scene::Vec3::ZERO,
-            dof::scene::Vec3::new(0.0, 0.0, -1.0),
-            0.7,
-            image.width,
-            image.height,
-        );
+        let camera =
+            dof::scene::Camera::look_at(dof::scene::Vec3::ZERO, dof::scene::Vec3::new(0.0, 0.0, -1.0), 0.7, image.width, image.height);
         let lens = dof::scene::ThinLens { focal_length: 0.05, aperture_radius: 0.02, focus_distance: 4.0, pixels_per_unit: 1e3 };
         let options = dof::frame::LayerOptions { max_layers: 3, ..Default::default() };
         if let Ok((layers, _)) = camera.frame().and_then(|frame| Ok(image.layers(&frame, &lens, &options)?)) {

@@ -272,7 +272,8 @@ fn read_file(path: &Path, parts: &mut Vec<Part>, report: &mut DeepReport) -> Res
             return Err(what(format!("its data window is {w}x{h}, outside 1 to {} pixels a side", super::MAX_EXR_EDGE)));
         }
         let layout = Layout::of(header);
-        let mut blocks = Blocks { width: w, height: h, counts: vec![0; w * h], chunks: Vec::new(), seen: vec![false; layout.blocks(w, h)] };
+        let mut blocks =
+            Blocks { width: w, height: h, counts: vec![0; w * h], chunks: Vec::new(), samples: 0, seen: vec![false; layout.blocks(w, h)] };
         let mut chunk_file = BufReader::new(&mut file);
         for (k, &offset) in tables[index].iter().enumerate() {
             if offset == 0 {
@@ -382,6 +383,8 @@ struct Blocks {
     counts: Vec<u32>,
     /// (x0, y0, w, h, samples in row-major pixel order).
     chunks: Vec<(usize, usize, usize, usize, Vec<DeepSample>)>,
+    /// Samples the chunks hold so far.
+    samples: u64,
     seen: Vec<bool>,
 }
 
@@ -514,7 +517,7 @@ fn read_chunk(
         total += last as u64;
     }
     let per_sample: usize = header.channels.list.iter().map(sample_bytes).sum();
-    let read_so_far: u64 = blocks.chunks.iter().map(|c| c.4.len() as u64).sum::<u64>() + report.samples_read;
+    let read_so_far = blocks.samples + report.samples_read;
     if read_so_far + total > MAX_DEEP_SAMPLES {
         return Err(format!(
             "its pixel offset table brings the samples to {}, beyond the limit of {MAX_DEEP_SAMPLES}",
@@ -536,22 +539,19 @@ fn read_chunk(
     let mut values = vec![0f32; header.channels.list.len()];
     let mut at = 0usize;
     let channel_count = header.channels.list.len();
-    for (y, &row_total) in row_totals.iter().enumerate() {
+    for &row_total in &row_totals {
         let row_total = row_total as usize;
         let mut starts = Vec::with_capacity(channel_count);
         for c in &header.channels.list {
             starts.push(at);
             at += row_total * sample_bytes(c);
         }
-        let first = samples.len();
-        let _ = y;
         for k in 0..row_total {
             for (c, channel) in header.channels.list.iter().enumerate() {
                 values[c] = value(&data, starts[c], k, channel.sample_type);
             }
             samples.push(sample(&values, fields, report));
         }
-        debug_assert_eq!(samples.len() - first, row_total);
     }
     // Samples the input rules drop (NaN depth, empty) leave their pixel: recount per pixel.
     let mut kept = Vec::with_capacity(samples.len());
@@ -566,6 +566,7 @@ fn read_chunk(
             i += n;
         }
     }
+    blocks.samples += kept.len() as u64;
     blocks.chunks.push((x0, y0, bw, bh, kept));
     Ok(())
 }

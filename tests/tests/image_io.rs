@@ -1156,3 +1156,30 @@ fn special_files_are_refused_without_blocking() {
     }
     let _ = std::fs::remove_dir_all(&dir.0);
 }
+
+/// A sequence's preview is encoded frame by frame (memory holds one frame): the same bytes as
+/// writing every frame at once, and nothing left behind when dropped unfinished.
+#[test]
+fn a_gif_preview_streams_its_frames_and_leaves_nothing_when_dropped() {
+    use dof::io::{GifPreview, write_gif_preview};
+    let dir = std::env::temp_dir().join(format!("dof-gif-stream-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let frame = |k: f32| RgbImage { width: 20, height: 12, data: (0..240).map(|i| [i as f32 / 240.0, k, 0.5]).collect() };
+    let frames = [frame(0.1), frame(0.7)];
+    write_gif_preview(dir.join("all.gif"), &frames, 1.0, 80).unwrap();
+    let mut streamed = GifPreview::create(dir.join("streamed.gif"), 20, 12, 1.0, 80).unwrap();
+    for f in &frames {
+        streamed.push(f).unwrap();
+    }
+    streamed.finish().unwrap();
+    assert_eq!(std::fs::read(dir.join("all.gif")).unwrap(), std::fs::read(dir.join("streamed.gif")).unwrap());
+    let mut dropped = GifPreview::create(dir.join("dropped.gif"), 20, 12, 1.0, 80).unwrap();
+    dropped.push(&frames[0]).unwrap();
+    assert!(dropped.push(&RgbImage::new(4, 4)).is_err(), "a frame of another size");
+    drop(dropped);
+    let mut names: Vec<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    assert_eq!(names, ["all.gif", "streamed.gif"], "no partial or temporary file");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -139,7 +139,7 @@ pub use exr_read::{ExrLayout, InputReport, MAX_EXR_EDGE, MAX_EXR_SLOTS, check_ex
 #[cfg(feature = "exr")]
 pub use exr_write::{ExrCompression, ExrPrecision, ExrWindow, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr};
 #[cfg(feature = "exr")]
-pub use gif_preview::{MAX_GIF_EDGE, write_gif_preview};
+pub use gif_preview::{GifPreview, MAX_GIF_EDGE, write_gif_preview};
 #[cfg(feature = "eval")]
 pub(crate) use preview::write_srgb8;
 #[cfg(feature = "exr")]
@@ -198,23 +198,37 @@ fn fs_error(action: &str, path: &Path, e: &std::io::Error) -> Error {
 }
 
 /// Writes a whole file atomically, with the path in any error: the bytes go to a temporary file
-/// beside it, which is then renamed over `path`, so a reader (or a render farm retrying a frame
-/// after a worker died) finds the file complete or absent, never cut short.
+/// beside it ([`temp_beside`]), which is then renamed over `path`, so a reader (or a render farm
+/// retrying a frame after a worker died) finds the file complete or absent, never cut short.
 #[cfg(feature = "exr")]
 fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
     use std::io::Write;
-    use std::sync::atomic::{AtomicU64, Ordering};
-    static COUNTER: AtomicU64 = AtomicU64::new(0);
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let temp = path.with_file_name(format!(".{name}.{}-{}.part", std::process::id(), COUNTER.fetch_add(1, Ordering::Relaxed)));
+    let temp = temp_beside(path);
     let written = (|| {
         let mut file = std::fs::File::create(&temp)?;
         file.write_all(bytes)?;
-        file.sync_all()?;
-        std::fs::rename(&temp, path)
+        persist(file, &temp, path)
     })();
     written.map_err(|e| {
         let _ = std::fs::remove_file(&temp);
         fs_error("create", path, &e)
     })
+}
+
+/// A temporary name beside `path` (hidden, unique to this process and call) for a file that is
+/// renamed over `path` once whole.
+#[cfg(feature = "exr")]
+fn temp_beside(path: &Path) -> std::path::PathBuf {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static COUNTER: AtomicU64 = AtomicU64::new(0);
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    path.with_file_name(format!(".{name}.{}-{}.part", std::process::id(), COUNTER.fetch_add(1, Ordering::Relaxed)))
+}
+
+/// Flushes `file` (written at `temp`) to the disk and renames it over `path`.
+#[cfg(feature = "exr")]
+fn persist(file: std::fs::File, temp: &Path, path: &Path) -> std::io::Result<()> {
+    file.sync_all()?;
+    drop(file);
+    std::fs::rename(temp, path)
 }

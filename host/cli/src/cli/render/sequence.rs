@@ -19,7 +19,7 @@
 //! their frame's lens.
 
 use super::*;
-use dof::io::write_gif_preview;
+use dof::io::GifPreview;
 use dof::methods::one_shot::{Runner, method_input};
 use dof::scene::guard_band::{auto_margin, auto_margin_mesh};
 
@@ -283,8 +283,9 @@ pub(super) fn render_sequence(
     let options = args.layer_options(GuardBand::Pixels(margin));
     let method_options = method_options(args)?;
     let mut runner: Option<Runner> = None;
-    // The preview's frames, kept only when the whole shot is rendered.
-    let mut previews = Vec::new();
+    // The preview of the whole shot, encoded frame by frame as they come (one frame in memory).
+    let gif_path = out.with_extension("gif");
+    let mut preview: Option<GifPreview> = None;
     let rendered = (|| -> anyhow::Result<()> {
         for i in plan.selected.clone() {
             let (camera, lens) = &shots[i];
@@ -366,7 +367,10 @@ pub(super) fn render_sequence(
                 path.display()
             );
             if plan.whole() {
-                previews.push(image);
+                if preview.is_none() {
+                    preview = Some(GifPreview::create(&gif_path, image.width, image.height, args.exposure, GIF_DELAY_MS)?);
+                }
+                preview.as_mut().context("the preview")?.push(&image)?;
             }
         }
         Ok(())
@@ -384,8 +388,7 @@ pub(super) fn render_sequence(
         println!("wrote {n} frames ({} … {}); no preview GIF for a part of the shot", first.display(), last.display());
         return Ok(());
     }
-    let gif = out.with_extension("gif");
-    write_gif_preview(&gif, &previews, args.exposure, GIF_DELAY_MS)?;
-    println!("wrote {n} frames ({} … {}) and {}", first.display(), last.display(), gif.display());
+    preview.context("no frame for the preview")?.finish()?;
+    println!("wrote {n} frames ({} … {}) and {}", first.display(), last.display(), gif_path.display());
     Ok(())
 }

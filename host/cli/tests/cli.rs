@@ -1621,3 +1621,41 @@ fn an_exr_keeps_its_data_and_display_windows() {
         assert_eq!((d.position.x(), d.position.y(), d.size.x(), d.size.y()), (0, 0, 100, 50), "{method}: the display window");
     }
 }
+
+/// A lit triangle without normals far from the origin shades as one near it (its face normal in
+/// f64: the f32 cross product of edges of 1e10 overflows when squared); beyond ±1e12 units, where
+/// the f32 rasteriser loses triangles, the scene is refused with a message to scale it down.
+#[test]
+fn huge_gltf_coordinates_shade_right_or_are_refused() {
+    let centre = |extent: f32| {
+        let (scene, _) = triangle_gltf(&format!("huge-{extent:e}"), "tri.bin", extent, None);
+        let out = scene.with_file_name("pinhole.exr");
+        let o = dof(&[
+            "render",
+            "--scene",
+            scene.to_str().unwrap(),
+            "--method",
+            "pinhole",
+            "--eye",
+            "0,0,0",
+            "--target",
+            "0,0,-1",
+            "--width",
+            "48",
+            "--height",
+            "32",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        dof::io::read_rgb_exr(&out).unwrap().0.get(24, 16)
+    };
+    let near = centre(1e5);
+    assert!(near[0] > 0.3, "lit, not ambient only: {near:?}");
+    assert_eq!(centre(1e10), near);
+    let (scene, _) = triangle_gltf("huge-refused", "tri.bin", 1e13, None);
+    assert_fails_with(
+        &["render", "--scene", scene.to_str().unwrap(), "--method", "pinhole", "--eye", "0,0,0", "--target", "0,0,-1"],
+        "beyond ±1e12 units",
+    );
+}

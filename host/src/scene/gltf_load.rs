@@ -261,6 +261,11 @@ fn extras_colour(scene: &gltf::Scene, key: &str) -> Result<Option<[f32; 3]>> {
 /// refused before it is read.
 pub const MAX_IMAGE_FILE_BYTES: u64 = 256 << 20;
 
+/// Largest vertex coordinate (world space, any axis) a scene may hold: beyond it, products of screen
+/// coordinates in the f32 rasteriser overflow and triangles vanish. No real asset comes near it (in
+/// millimetres it is a billion kilometres); a scene beyond it is refused, to be scaled down.
+pub const MAX_COORDINATE: f32 = 1e12;
+
 /// How much of a file a URI may read.
 #[derive(Clone, Copy)]
 enum ReadLimit {
@@ -534,6 +539,7 @@ impl Loader<'_> {
             check_accessor(&pos_acc, &format!("{what} POSITION"), &[(DataType::F32, Dimensions::Vec3)], bufs)?;
             let positions: Vec<[f32; 3]> = reader.read_positions().map(|p| p.collect()).unwrap_or_default();
             let n = positions.len();
+            let has_normals = prim.get(&gltf::Semantic::Normals).is_some();
             let normals: Vec<[f32; 3]> = match prim.get(&gltf::Semantic::Normals) {
                 Some(acc) => {
                     check_accessor(&acc, &format!("{what} NORMAL"), &[(DataType::F32, Dimensions::Vec3)], bufs)?;
@@ -583,21 +589,20 @@ impl Loader<'_> {
             }
             let material = self.material(prim.material())?;
 
-            let first = self.out.vertices.len();
-            if first + n > u32::MAX as usize {
-                return Err(Error::Core(CoreError::TooLarge {
-                    what: "vertices of the scene".into(),
-                    size: (first + n) as u64,
-                    limit: u32::MAX as u64,
-                }));
-            }
-            for k in 0..n {
-                let p = world.transform_point3(Vec3::from(positions[k]));
-                let nrm = (normal_matrix * Vec3::from(normals[k])).normalize_or_zero();
+            let mut world_positions = Vec::with_capacity(n);
+            for p in &positions {
+                let p = world.transform_point3(Vec3::from(*p));
                 if !p.is_finite() {
                     return Err(scene_err(format!("{what}: a vertex is not finite after its node's transform")));
                 }
-                self.out.vertices.push(MeshVertex { position: p.to_array(), u: uvs[k][0], normal: nrm.to_array(), v: uvs[k][1] });
+                if p.abs().max_element() > MAX_COORDINATE {
+                    return Err(scene_err(format!(
+                        "{what}: a vertex lies at ({:e}, {:e}, {:e}), beyond ±{MAX_COORDINATE:e} units, where rasterising in f32 \
+                         loses triangles; scale the scene down (its units are free)",
+                        p.x, p.y, p.z
+                    )));
+                }
+                world_positions.push(p);
             }
             let mut tris = Vec::new();
             match mode {
@@ -621,15 +626,47 @@ impl Loader<'_> {
                 }
                 _ => {}
             }
+            // Without normals a primitive is flat-shaded: each triangle gets its own corners with its
+            // face normal, computed here in f64 (the kernels' f32 cross product of long edges
+            // overflows when squared).
+            let flat = !has_normals;
+            let first = self.out.vertices.len();
+            let added = if flat { 3 * tris.len() } else { n };
+            if first + added > u32::MAX as usize {
+                return Err(Error::Core(CoreError::TooLarge {
+                    what: "vertices of the scene".into(),
+                    size: (first + added) as u64,
+                    limit: u32::MAX as u64,
+                }));
+            }
+            let vertex =
+                |k: usize, normal: [f32; 3]| MeshVertex { position: world_positions[k].to_array(), u: uvs[k][0], normal, v: uvs[k][1] };
+            if !flat {
+                for k in 0..n {
+                    let nrm = (normal_matrix * Vec3::from(normals[k])).normalize_or_zero();
+                    self.out.vertices.push(vertex(k, nrm.to_array()));
+                }
+            }
             for [a, b, c] in tris {
                 let (b, c) = if mirrored { (c, b) } else { (b, c) };
-                let v = |i: u32| Vec3::from(self.out.vertices[first + i as usize].position);
+                let v = |i: u32| world_positions[i as usize];
                 if a == b || b == c || a == c || zero_area(v(a), v(b), v(c)) {
                     self.out.report.degenerate_triangles += 1;
                     continue;
                 }
-                let f = first as u32;
-                self.out.triangles.push([f + a, f + b, f + c, material]);
+                let corners = if flat {
+                    let (p0, p1, p2) = (v(a).as_dvec3(), v(b).as_dvec3(), v(c).as_dvec3());
+                    let normal = (p1 - p0).cross(p2 - p0).normalize_or_zero().as_vec3().to_array();
+                    let at = self.out.vertices.len() as u32;
+                    for k in [a, b, c] {
+                        self.out.vertices.push(vertex(k as usize, normal));
+                    }
+                    [at, at + 1, at + 2]
+                } else {
+                    let f = first as u32;
+                    [f + a, f + b, f + c]
+                };
+                self.out.triangles.push([corners[0], corners[1], corners[2], material]);
             }
             if self.out.triangles.len() as u64 > MAX_TRIANGLES {
                 return Err(Error::Core(CoreError::TooLarge {

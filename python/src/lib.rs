@@ -12,8 +12,9 @@ use dof::layers::{Fragment, LayeredImage, RgbImage};
 use dof::methods::one_shot::one_shot;
 use dof::scene::{Aperture, Camera, LensSettings, MAX_GUARD_BAND, ThinLens, Vec3};
 use dof::{CoreError, CpuBackend, Error, VulkanBackend, VulkanOptions};
+use numpy::ndarray::Dimension;
 use numpy::ndarray::{Array2, Array3, Array4, ArrayViewD, Axis};
-use numpy::{AllowTypeChange, IntoPyArray, PyArray3, PyArrayLike2, PyArrayLikeDyn, PyUntypedArrayMethods};
+use numpy::{AllowTypeChange, IntoPyArray, PyArray3, PyArrayLikeDyn, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyMemoryError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -301,22 +302,30 @@ fn blur<'py>(
     method: &str,
     backend: &str,
     straight_alpha: bool,
-    footprints: Option<PyArrayLikeDyn<'py, u32, AllowTypeChange>>,
+    footprints: Option<Bound<'py, PyAny>>,
     footprint_side: u32,
     options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyArray3<f32>>> {
     let info = dof::frame::registry::method(method).map_err(py_err)?;
     let options = method_options(options)?;
+    if depth.is_none() {
+        return Err(value_error(
+            "blur needs a second array: an RGB image needs a float depth array (H, W), a multi-layer one its counts (H, W); got None"
+                .to_string(),
+        ));
+    }
     let layers = match image.ndim() {
         3 => {
-            let depth: PyArrayLikeDyn<'py, f32, AllowTypeChange> = depth.extract()?;
+            let depth: PyArrayLikeDyn<'py, f32, AllowTypeChange> = depth
+                .extract()
+                .map_err(|_| value_error(format!("an RGB image needs a float depth array (H, W), got {}", describe(depth))))?;
             rgbz_image(image.as_array(), depth.as_array())?
         }
         4 => {
-            let counts: PyArrayLikeDyn<'py, i64, AllowTypeChange> = depth.extract()?;
-            let mut layers = layered_image(image.as_array(), counts.as_array(), straight_alpha)?;
+            let counts = whole_numbers(depth, "counts", u32::MAX as u64)?;
+            let mut layers = layered_image(image.as_array(), counts.view(), straight_alpha)?;
             match footprints {
-                Some(f) => with_footprints(&mut layers, f.as_array(), footprint_side)?,
+                Some(f) => with_footprints(&mut layers, whole_numbers(&f, "footprints", u32::MAX as u64)?.view(), footprint_side)?,
                 None if footprint_side != 0 => return Err(value_error("footprint_side without footprints".to_string())),
                 None => {}
             }
@@ -351,8 +360,32 @@ fn blur<'py>(
     Ok(to_rgb_array(&result).into_pyarray(py))
 }
 
+/// An array of whole numbers from 0 to `max` (sample counts, footprint masks), checked value by
+/// value: a NaN, a fraction or a value out of range is a ValueError naming where it is, never
+/// cast silently.
+fn whole_numbers(array: &Bound<'_, PyAny>, what: &str, max: u64) -> PyResult<numpy::ndarray::ArrayD<i64>> {
+    let values: PyArrayLikeDyn<'_, f64, AllowTypeChange> =
+        array.extract().map_err(|_| value_error(format!("{what} must be an array of whole numbers, got {}", describe(array))))?;
+    let values = values.as_array();
+    for (index, &v) in values.indexed_iter() {
+        if !(v.is_finite() && v.fract() == 0.0 && v >= 0.0 && v <= max as f64) {
+            return Err(value_error(format!("{what}{:?} is {v}; it must be a whole number from 0 to {max}", index.slice())));
+        }
+    }
+    Ok(values.mapv(|v| v as i64))
+}
+
+/// What a Python value is, for messages: its type, and its shape if it is an array.
+fn describe(value: &Bound<'_, PyAny>) -> String {
+    let kind = value.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "?".into());
+    match value.getattr("shape") {
+        Ok(shape) => format!("{kind} of shape {shape}"),
+        Err(_) => kind,
+    }
+}
+
 /// Gives `layers` the footprints `f` (H, W, L) on a `side` grid (1 to 4).
-fn with_footprints(layers: &mut LayeredImage, f: ArrayViewD<'_, u32>, side: u32) -> PyResult<()> {
+fn with_footprints(layers: &mut LayeredImage, f: ArrayViewD<'_, i64>, side: u32) -> PyResult<()> {
     let (h, w, l) = (layers.height as usize, layers.width as usize, layers.max_layers as usize);
     if f.shape() != [h, w, l] {
         return Err(value_error(format!("footprints must have the fragments' shape ({h}, {w}, {l}); got {:?}", f.shape())));
@@ -360,7 +393,7 @@ fn with_footprints(layers: &mut LayeredImage, f: ArrayViewD<'_, u32>, side: u32)
     if !(1..=4).contains(&side) {
         return Err(value_error(format!("footprint_side must be 1 to 4 with footprints; got {side}")));
     }
-    layers.footprints = f.iter().copied().collect();
+    layers.footprints = f.iter().map(|&v| v as u32).collect();
     layers.footprint_side = side;
     Ok(())
 }
@@ -562,7 +595,7 @@ fn deep_image(counts: ArrayViewD<'_, i64>, samples: &Bound<'_, PyDict>) -> PyRes
 #[allow(clippy::too_many_arguments)]
 fn deep_layers<'py>(
     py: Python<'py>,
-    counts: PyArrayLikeDyn<'py, i64, AllowTypeChange>,
+    counts: Bound<'py, PyAny>,
     samples: &Bound<'py, PyDict>,
     focus: f32,
     aperture_radius: Option<f32>,
@@ -577,7 +610,7 @@ fn deep_layers<'py>(
     if !(1..=64).contains(&max_layers) {
         return Err(value_error(format!("max_layers must lie between 1 and 64, got {max_layers}")));
     }
-    let image = deep_image(counts.as_array(), samples)?;
+    let image = deep_image(whole_numbers(&counts, "counts", u32::MAX as u64)?.view(), samples)?;
     let lens = lens(
         image.width,
         image.height,
@@ -616,7 +649,7 @@ fn write_exr(
     py: Python<'_>,
     path: PathBuf,
     rgb: PyArrayLikeDyn<'_, f32, AllowTypeChange>,
-    depth: Option<PyArrayLike2<'_, f32, AllowTypeChange>>,
+    depth: Option<Bound<'_, PyAny>>,
 ) -> PyResult<()> {
     let view = rgb.as_array();
     if view.ndim() != 3 || view.shape()[2] != 3 {
@@ -628,7 +661,9 @@ fn write_exr(
     let image = RgbImage { width, height, data };
     let depth: Option<Vec<f32>> = match &depth {
         Some(d) => {
-            let d = d.as_array();
+            let array: PyArrayLikeDyn<'_, f32, AllowTypeChange> =
+                d.extract().map_err(|_| value_error(format!("depth must be a float array (H, W), got {}", describe(d))))?;
+            let d = array.as_array();
             if d.shape() != [h, w] {
                 return Err(value_error(format!("depth must have shape (H, W) = ({h}, {w}) like rgb, got {:?}", d.shape())));
             }

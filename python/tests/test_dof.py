@@ -200,6 +200,26 @@ def test_deep_exr_reads_as_counts_and_flat_samples_that_make_layers_for_blur():
     assert c[0, 0] >= 1 and frags[0, 0, 0, 3] == 1.0, "the nearer sample comes first"
 
 
+def test_bad_arrays_are_named_never_cast(tmp_path):
+    rgb, depth = scene(8, 12)
+    with pytest.raises(ValueError, match=r"depth must have shape \(H, W\)"):
+        dof.write_exr(str(tmp_path / "x.exr"), rgb, depth[..., None])
+    with pytest.raises(ValueError, match="needs a float depth array"):
+        dof.blur(rgb, None, focus=2.0, f_number=2.0)
+    frags = np.zeros((8, 12, 2, 5), np.float32)
+    frags[..., 3] = 4.0
+    frags[..., 4] = 1.0
+    for bad, shown in [(np.nan, "NaN"), (1.7, "1.7"), (-1.0, "-1")]:
+        counts = np.ones((8, 12))
+        counts[2, 3] = bad
+        with pytest.raises(ValueError, match=rf"counts\[2, 3\] is {shown}; it must be a whole number"):
+            dof.blur(frags, counts, focus=2.0, f_number=2.0)
+    footprints = np.full((8, 12, 2), 15, np.int64)
+    footprints[0, 0, 0] = -1
+    with pytest.raises(ValueError, match=r"footprints\[0, 0, 0\] is -1"):
+        dof.blur(frags, np.ones((8, 12)), focus=2.0, f_number=2.0, footprints=footprints, footprint_side=2)
+
+
 def test_readers_warn_about_what_they_repaired(tmp_path):
     rgb = np.full((4, 6, 3), 0.5, np.float32)
     rgb[1, 2, 0] = np.nan

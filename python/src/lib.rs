@@ -565,18 +565,18 @@ fn deep_image(counts: ArrayViewD<'_, i64>, samples: &Bound<'_, PyDict>) -> PyRes
     let mut policy = SanitizeCounts::default();
     let mut kept_counts = Vec::with_capacity(n.len());
     let mut kept = Vec::with_capacity(total as usize);
-    let mut i = 0;
+    let [r, g, b, a, z, z_back] = &fields[..] else { unreachable!("six fields") };
+    let mut stored = (0..total as usize).map(|k| ([r[k], g[k], b[k]], a[k], z[k], z_back[k]));
     for &c in &n {
         let before = kept.len();
-        for k in i..i + c as usize {
-            let rgb = [fields[0][k], fields[1][k], fields[2][k]];
-            // The reader's rules: a dropped sample (NaN depth, empty) leaves its pixel.
-            if let Some(f) = policy.fragment(rgb, fields[3][k], fields[4][k]) {
-                let z_back = if f.depth == f32::INFINITY || !(fields[5][k] >= f.depth) { f.depth } else { fields[5][k] };
+        for (rgb, alpha, depth, back) in stored.by_ref().take(c as usize) {
+            // The reader's rules: a dropped sample (NaN depth, empty) leaves its pixel; a ZBack
+            // that is NaN or in front of Z is Z.
+            if let Some(f) = policy.fragment(rgb, alpha, depth) {
+                let z_back = if f.depth == f32::INFINITY || back.is_nan() || back < f.depth { f.depth } else { back };
                 kept.push(dof::deep::DeepSample { color: f.color, alpha: f.alpha, z: f.depth, z_back });
             }
         }
-        i += c as usize;
         kept_counts.push((kept.len() - before) as u32);
     }
     let image = dof::deep::DeepImage::from_counts(width, height, &kept_counts, kept).map_err(py_err)?;

@@ -657,7 +657,11 @@ fn write_exr(
     }
     let (h, w) = (view.shape()[0], view.shape()[1]);
     let (width, height) = check_size(h, w)?;
-    let data: Vec<[f32; 3]> = view.lanes(Axis(2)).into_iter().map(|c| [c[0], c[1], c[2]]).collect();
+    // Reserved first, so that an image this machine cannot hold is a MemoryError, not an abort.
+    let mut data: Vec<[f32; 3]> = Vec::new();
+    data.try_reserve_exact(h * w)
+        .map_err(|_| py_err(CoreError::HostMemory { what: "the image to write".into(), bytes: (h * w * 12) as u64 }))?;
+    data.extend(view.lanes(Axis(2)).into_iter().map(|c| [c[0], c[1], c[2]]));
     let image = RgbImage { width, height, data };
     let depth: Option<Vec<f32>> = match &depth {
         Some(d) => {

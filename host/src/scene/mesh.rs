@@ -175,26 +175,27 @@ impl MeshScene {
 
     /// Distance along the unit `direction` from `origin` to the nearest triangle (either side).
     pub fn first_hit(&self, origin: Vec3, direction: Vec3) -> Option<f32> {
+        (0..self.triangles.len()).filter_map(|t| self.ray_hits(t, origin, direction)).min_by(f32::total_cmp)
+    }
+
+    /// Where the ray from `origin` along `direction` crosses triangle `t` (either side, in front of
+    /// the origin): its distance in units of `direction` (Möller-Trumbore), `None` when it misses.
+    pub(crate) fn ray_hits(&self, t: usize, origin: Vec3, direction: Vec3) -> Option<f32> {
         let at = |i: u32| self.vertices.get(i as usize).map(|v| Vec3::from(v.position));
-        self.triangles
-            .iter()
-            .filter_map(|t| {
-                let (a, b, c) = (at(t[0])?, at(t[1])?, at(t[2])?);
-                // Möller-Trumbore.
-                let (e1, e2) = (b - a, c - a);
-                let p = direction.cross(e2);
-                let det = e1.dot(p);
-                if det.abs() < 1e-12 {
-                    return None;
-                }
-                let s = origin - a;
-                let u = s.dot(p) / det;
-                let q = s.cross(e1);
-                let v = direction.dot(q) / det;
-                let t = e2.dot(q) / det;
-                (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0).then_some(t)
-            })
-            .min_by(f32::total_cmp)
+        let tri = self.triangles.get(t)?;
+        let (a, b, c) = (at(tri[0])?, at(tri[1])?, at(tri[2])?);
+        let (e1, e2) = (b - a, c - a);
+        let p = direction.cross(e2);
+        let det = e1.dot(p);
+        if det.abs() < 1e-12 {
+            return None;
+        }
+        let s = origin - a;
+        let u = s.dot(p) / det;
+        let q = s.cross(e1);
+        let v = direction.dot(q) / det;
+        let t = e2.dot(q) / det;
+        (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0).then_some(t)
     }
 
     /// Axis-aligned bounds of all vertex positions; `None` without vertices.

@@ -157,27 +157,6 @@ impl MeshScene {
     /// surface an odd number of times (a direction no axis-aligned model lines up with).
     fn contains(&self, p: Vec3, triangles: &[usize]) -> bool {
         let dir = Vec3::new(0.5377, 0.6118, 0.5801).normalize();
-        let mut crossings = 0u32;
-        for &t in triangles {
-            let v = [0, 1, 2].map(|k| Vec3::from(self.vertices[self.triangles[t][k] as usize].position));
-            // Möller-Trumbore.
-            let (e1, e2) = (v[1] - v[0], v[2] - v[0]);
-            let h = dir.cross(e2);
-            let det = e1.dot(h);
-            if det.abs() < 1e-12 {
-                continue;
-            }
-            let s = p - v[0];
-            let u = s.dot(h) / det;
-            let q = s.cross(e1);
-            let w = dir.dot(q) / det;
-            if u < 0.0 || w < 0.0 || u + w > 1.0 {
-                continue;
-            }
-            if e2.dot(q) / det > 0.0 {
-                crossings += 1;
-            }
-        }
-        crossings % 2 == 1
+        triangles.iter().filter(|&&t| self.ray_hits(t, p, dir).is_some()).count() % 2 == 1
     }
 }

@@ -248,9 +248,9 @@ fn make_backend(name: &str) -> PyResult<Box<dyn Backend>> {
     }
 }
 
-fn to_rgb_array(image: &RgbImage) -> Array3<f32> {
+fn to_rgb_array(image: &RgbImage) -> PyResult<Array3<f32>> {
     let (w, h) = (image.width as usize, image.height as usize);
-    Array3::from_shape_vec((h, w, 3), image.data.iter().flatten().copied().collect()).expect("an RgbImage holds width x height pixels")
+    Array3::from_shape_vec((h, w, 3), image.data.iter().flatten().copied().collect()).map_err(shape_error)
 }
 
 /// Blurs an image with depth of field and returns the result as a (H, W, 3) float32 array.
@@ -357,7 +357,7 @@ fn blur<'py>(
         let out = one_shot(b.as_mut(), info, &options, &padded, &lens).map_err(py_err)?;
         Ok(out.image.crop(margin))
     })?;
-    Ok(to_rgb_array(&result).into_pyarray(py))
+    Ok(to_rgb_array(&result)?.into_pyarray(py))
 }
 
 /// An array of whole numbers from 0 to `max` (sample counts, footprint masks), checked value by
@@ -401,7 +401,8 @@ fn with_footprints(layers: &mut LayeredImage, f: ArrayViewD<'_, i64>, side: u32)
 /// A Python `UserWarning` saying what reading `path` repaired or left out (the note `dof render`
 /// prints), so that nothing is changed silently.
 fn warn_read(py: Python<'_>, path: &std::path::Path, report: &str) -> PyResult<()> {
-    let message = std::ffi::CString::new(format!("{}: {report}", path.display()).replace('\0', " ")).expect("no NUL byte");
+    let message = std::ffi::CString::new(format!("{}: {report}", path.display()).replace('\0', " "))
+        .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
     PyErr::warn(py, &py.get_type::<pyo3::exceptions::PyUserWarning>(), &message, 1)
 }
 
@@ -456,11 +457,11 @@ fn read_exr<'py>(py: Python<'py>, path: PathBuf, layers: bool) -> PyResult<Bound
         warn_read(py, &path, &note)?;
     }
     match read {
-        Err(rgb) => (to_rgb_array(&rgb).into_pyarray(py), py.None()).into_pyobject(py),
+        Err(rgb) => (to_rgb_array(&rgb)?.into_pyarray(py), py.None()).into_pyobject(py),
         Ok(image) if !layers => {
             let (rgb, depth) = image.front();
-            let depth = Array2::from_shape_vec((image.height as usize, image.width as usize), depth).expect("a plane per pixel");
-            (to_rgb_array(&rgb).into_pyarray(py), depth.into_pyarray(py)).into_pyobject(py)
+            let depth = Array2::from_shape_vec((image.height as usize, image.width as usize), depth).map_err(shape_error)?;
+            (to_rgb_array(&rgb)?.into_pyarray(py), depth.into_pyarray(py)).into_pyobject(py)
         }
         Ok(image) => layered_arrays(py, &image),
     }
@@ -510,10 +511,15 @@ fn read_deep_exr<'py>(py: Python<'py>, paths: &Bound<'py, PyAny>) -> PyResult<Bo
     deep_arrays(py, &image)
 }
 
+/// A library image whose buffer does not fit its size (a library fault) as a RuntimeError.
+fn shape_error(e: numpy::ndarray::ShapeError) -> PyErr {
+    PyRuntimeError::new_err(format!("an image's buffer does not match its size: {e}"))
+}
+
 /// `(counts, samples)` of a deep image, as `read_deep_exr` returns them.
 fn deep_arrays<'py>(py: Python<'py>, image: &dof::deep::DeepImage) -> PyResult<Bound<'py, PyTuple>> {
     let counts: Vec<u32> = (0..image.pixels()).map(|p| image.count(p) as u32).collect();
-    let counts = Array2::from_shape_vec((image.height as usize, image.width as usize), counts).expect("a count per pixel");
+    let counts = Array2::from_shape_vec((image.height as usize, image.width as usize), counts).map_err(shape_error)?;
     let samples = PyDict::new(py);
     for (k, name) in DEEP_FIELDS.iter().enumerate() {
         let field: Vec<f32> = image
@@ -633,8 +639,8 @@ fn deep_layers<'py>(
 fn layered_arrays<'py>(py: Python<'py>, image: &LayeredImage) -> PyResult<Bound<'py, PyTuple>> {
     let (h, w, l) = (image.height as usize, image.width as usize, image.max_layers as usize);
     let flat: Vec<f32> = image.fragments.iter().flat_map(|f| [f.color[0], f.color[1], f.color[2], f.depth, f.alpha]).collect();
-    let frags = Array4::from_shape_vec((h, w, l, 5), flat).expect("max_layers slots per pixel");
-    let counts = Array2::from_shape_vec((h, w), image.counts.clone()).expect("a count per pixel");
+    let frags = Array4::from_shape_vec((h, w, l, 5), flat).map_err(shape_error)?;
+    let counts = Array2::from_shape_vec((h, w), image.counts.clone()).map_err(shape_error)?;
     (frags.into_pyarray(py), counts.into_pyarray(py)).into_pyobject(py)
 }
 

@@ -38,7 +38,7 @@ use ::exr::meta::header::Header;
 use ::exr::prelude::*;
 
 use super::deep_codec::unpack;
-use super::exr_read::{check_magic, exr_error, guarded, list, open_regular, walk_headers};
+use super::exr_read::{check_magic, exr_error, guarded, list, open_regular, walk_headers, word};
 use super::fs_error;
 use super::sanitize::SanitizeCounts;
 use crate::deep::{DeepImage, DeepSample, MAX_DEEP_SAMPLES, TidyReport};
@@ -118,7 +118,7 @@ pub fn is_deep_exr(path: impl AsRef<Path>) -> Result<bool> {
     let mut head = Vec::with_capacity(8);
     (&mut file).take(8).read_to_end(&mut head).map_err(|e| fs_error("read", path, &e))?;
     check_magic(path, &head)?;
-    Ok(head.len() == 8 && u32::from_le_bytes(head[4..8].try_into().unwrap()) & 0x800 != 0)
+    Ok(head.len() == 8 && u32::from_le_bytes(word(&head, 4)) & 0x800 != 0)
 }
 
 /// Reads every deep part of every file in `paths` into one tidy deep image over the union of their
@@ -143,13 +143,15 @@ pub fn read_deep_exr<P: AsRef<Path>>(paths: &[P]) -> Result<(DeepImage, DeepRepo
     for path in paths {
         read_file(path.as_ref(), &mut parts, &mut report)?;
     }
-    if parts.is_empty() {
-        return Err(Error::invalid("no deep file given".to_string()));
+    let Some(first) = parts.first() else { return Err(Error::invalid("no deep file given".to_string())) };
+    let display = first.display;
+    let (mut x0, mut y0, mut x1, mut y1) = (i64::MAX, i64::MAX, i64::MIN, i64::MIN);
+    for p in &parts {
+        x0 = x0.min(p.origin.0);
+        y0 = y0.min(p.origin.1);
+        x1 = x1.max(p.origin.0 + p.image.width as i64);
+        y1 = y1.max(p.origin.1 + p.image.height as i64);
     }
-    let x0 = parts.iter().map(|p| p.origin.0).min().unwrap();
-    let y0 = parts.iter().map(|p| p.origin.1).min().unwrap();
-    let x1 = parts.iter().map(|p| p.origin.0 + p.image.width as i64).max().unwrap();
-    let y1 = parts.iter().map(|p| p.origin.1 + p.image.height as i64).max().unwrap();
     let (width, height) = ((x1 - x0) as u64, (y1 - y0) as u64);
     if width > super::MAX_EXR_EDGE as u64 || height > super::MAX_EXR_EDGE as u64 {
         return Err(Error::invalid(format!(
@@ -161,11 +163,14 @@ pub fn read_deep_exr<P: AsRef<Path>>(paths: &[P]) -> Result<(DeepImage, DeepRepo
     // Each part placed in the union, then all merged and made tidy.
     let placed: Vec<DeepImage> =
         parts.iter().map(|p| place(&p.image, (p.origin.0 - x0) as u32, (p.origin.1 - y0) as u32, width, height)).collect::<Result<_>>()?;
-    let merged = if placed.len() == 1 { placed.into_iter().next().unwrap() } else { DeepImage::merge(&placed)? };
+    let merged = match <[DeepImage; 1]>::try_from(placed) {
+        Ok([only]) => only,
+        Err(placed) => DeepImage::merge(&placed)?,
+    };
     let (image, tidy) = merged.tidy()?;
     report.width = width;
     report.height = height;
-    report.window = super::ExrWindow { origin: (x0 as i32, y0 as i32), display: parts[0].display };
+    report.window = super::ExrWindow { origin: (x0 as i32, y0 as i32), display };
     report.samples = image.samples.len() as u64;
     report.max_samples = image.max_count();
     report.tidy = tidy;
@@ -506,7 +511,7 @@ fn read_chunk(
         let mut last = 0i64;
         for x in 0..bw {
             let k = (y * stride + x) * 4;
-            let cumulative = i32::from_le_bytes(table[k..k + 4].try_into().unwrap()) as i64;
+            let cumulative = i32::from_le_bytes(word(&table, k)) as i64;
             if cumulative < last {
                 return Err(format!("its pixel offset table decreases at pixel ({}, {}) ({last} then {cumulative})", x0 + x, y0 + y));
             }
@@ -575,8 +580,8 @@ fn read_chunk(
 fn value(data: &[u8], start: usize, k: usize, kind: SampleType) -> f32 {
     match kind {
         SampleType::F16 => f16::from_bits(u16::from_le_bytes([data[start + 2 * k], data[start + 2 * k + 1]])).to_f32(),
-        SampleType::F32 => f32::from_le_bytes(data[start + 4 * k..start + 4 * k + 4].try_into().unwrap()),
-        SampleType::U32 => u32::from_le_bytes(data[start + 4 * k..start + 4 * k + 4].try_into().unwrap()) as f32,
+        SampleType::F32 => f32::from_le_bytes(word(data, start + 4 * k)),
+        SampleType::U32 => u32::from_le_bytes(word(data, start + 4 * k)) as f32,
     }
 }
 

@@ -650,7 +650,7 @@ fn empty_data_window(r: &mut impl Read) -> Option<(usize, [i32; 4])> {
     let mut found = None;
     walk_headers(r, |part, name, kind, value| {
         if found.is_none() && name == b"dataWindow" && kind == b"box2i" && value.len() == 16 {
-            let b: [i32; 4] = std::array::from_fn(|i| i32::from_le_bytes(value[4 * i..4 * i + 4].try_into().unwrap()));
+            let b: [i32; 4] = std::array::from_fn(|i| i32::from_le_bytes(word(value, 4 * i)));
             if b[2] < b[0] || b[3] < b[1] {
                 found = Some((part, b));
             }
@@ -723,6 +723,11 @@ pub(super) fn walk_headers(r: &mut impl Read, mut visit: impl FnMut(usize, &[u8]
         }
     }
     None
+}
+
+/// The four bytes of `bytes` from `at` (callers check the length first).
+pub(super) fn word(bytes: &[u8], at: usize) -> [u8; 4] {
+    [bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]]
 }
 
 /// The OpenEXR magic number, with a hint for common non-EXR files.

@@ -86,7 +86,8 @@ impl GifPreview {
         let bytes: Vec<u8> = image.data.par_iter().flat_map_iter(|&c| tonemap_to_srgb8(c, self.exposure)).collect();
         let mut frame = ::gif::Frame::from_rgb_speed(w as u16, h as u16, &bytes, 10);
         frame.delay = self.delay;
-        let written = self.encoder.as_mut().expect("the encoder lives until finish").write_frame(&frame);
+        let Some(encoder) = self.encoder.as_mut() else { return Err(Error::invalid("the GIF preview is already finished".into())) };
+        let written = encoder.write_frame(&frame);
         written.map_err(|e| self.error(e))?;
         self.frames += 1;
         Ok(())
@@ -97,7 +98,7 @@ impl GifPreview {
         if self.frames == 0 {
             return Err(Error::invalid("an animated GIF needs at least one frame".into()));
         }
-        let encoder = self.encoder.take().expect("the encoder lives until finish");
+        let Some(encoder) = self.encoder.take() else { return Err(Error::invalid("the GIF preview is already finished".into())) };
         let writer = encoder.into_inner().map_err(|e| fs_error("create", &self.path, &e))?;
         let file = writer.into_inner().map_err(|e| fs_error("create", &self.path, e.error()))?;
         persist(file, &self.temp, &self.path).map_err(|e| fs_error("create", &self.path, &e))?;

@@ -45,8 +45,8 @@ use dof_core::backend::vulkan::ash::vk::{AccessFlags as Access, ImageLayout as L
 use dof_core::backend::vulkan::ash::{self, vk};
 use dof_core::backend::{Backend, BackendCounters, BufferId, CommandTime, CpuBackend, ImageRef, RawDevice, RawOptions, VulkanBackend};
 use dof_core::frame::{
-    CountBuffer, DepthEncoding, Frame, FrameInput, FrameOutput, Merge, RendererPeel, RendererPeelDesc, RgbBuffer, SlotBuffer, SplatContext,
-    SplatContextDesc, SplatOptions,
+    CountBuffer, DepthEncoding, DofContext, Frame, FrameInput, FrameOutput, Merge, RendererPeel, RendererPeelDesc, RgbBuffer, SlotBuffer,
+    SplatContext, SplatContextDesc, SplatOptions,
 };
 use dof_shaders::slot::SLOT_WORDS;
 use dof_shaders::tonemap::tonemap_channel;

@@ -6,7 +6,7 @@
 use dof::CoreError;
 use dof::backend::{Backend, CpuBackend};
 use dof::frame::{
-    BokehContext, BokehContextDesc, CountBuffer, Frame, GatherContext, GatherContextDesc, RgbBuffer, SlotBuffer, SplatContext,
+    BokehContext, BokehContextDesc, CountBuffer, DofContext, Frame, GatherContext, GatherContextDesc, RgbBuffer, SlotBuffer, SplatContext,
     SplatContextDesc,
 };
 use dof::methods::bokeh::BokehOptions;

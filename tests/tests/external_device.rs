@@ -14,7 +14,7 @@ use dof::CoreError;
 use dof::backend::vulkan::ash::vk;
 use dof::backend::vulkan::gpu_allocator;
 use dof::backend::{Backend, BackendCounters, BufferId, CpuBackend, ImageFormat, ImageRef, RawOptions, VulkanBackend};
-use dof::frame::{CountBuffer, Frame, GatherContext, GatherContextDesc, RgbBuffer, SlotBuffer};
+use dof::frame::{CountBuffer, DofContext, Frame, GatherContext, GatherContextDesc, RgbBuffer, SlotBuffer};
 use dof::ops::scan::{ScanScratch, exclusive_scan};
 use dof::ops::sort::{SegmentedSort, SortInput, sort_on};
 use dof::workload::{lists_with, random_key};

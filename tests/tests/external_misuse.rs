@@ -64,7 +64,7 @@ fn every_refused_frame_leaves_the_callers_command_buffer_untouched() {
         ("more layers than the context", Frame::layers(W, H, 3, lens, SlotBuffer(fragments), CountBuffer(counts), RgbBuffer(out))),
         ("an invalid lens", Frame { lens: dof::stress::test_lens(-1.0), ..layers }),
         ("an output buffer too small", Frame { output: FrameOutput::Buffer(RgbBuffer(small)), ..layers }),
-        // Refused once every command had been recorded, before the dry run.
+        // Refused by the image copy's own check, while the frame is captured.
         (
             "an output image to be left UNDEFINED",
             Frame {
@@ -200,7 +200,7 @@ fn wide_desc() -> ContextDesc {
 
 /// A frame that passes the frame-level checks but that a command of the method refuses (a dispatch
 /// wider than the device's workgroup count, found only while recording) records nothing either:
-/// the dry run finds it first. On the CPU backend, which runs commands as they are recorded, nothing
+/// capturing the frame's recording finds it first. On the CPU backend, which runs commands as they are recorded, nothing
 /// runs.
 #[test]
 fn a_frame_refused_by_one_of_its_commands_records_none_of_them() {

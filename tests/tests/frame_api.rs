@@ -5,7 +5,7 @@
 
 use dof::CoreError;
 use dof::backend::{Backend, BufferId, CpuBackend};
-use dof::frame::{CountBuffer, Frame, FrameInput, FrameOutput, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
+use dof::frame::{CountBuffer, DofContext, Frame, FrameInput, FrameOutput, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::splat::{Merge, SplatOptions, splat};

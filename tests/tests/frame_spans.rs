@@ -6,7 +6,7 @@
 //! Misuse is refused with an error.
 
 use dof::backend::{Backend, CpuBackend, SPAN};
-use dof::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
+use dof::frame::{CountBuffer, DofContext, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof::methods::buffers::{SLOT_WORDS, slot_words};
 use dof::methods::splat::{Merge, SplatOptions};
 use dof::stress::{noise_with_sky, test_lens};

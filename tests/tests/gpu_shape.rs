@@ -16,7 +16,7 @@
 //! same recording as on Vulkan).
 
 use dof::backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
-use dof::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
+use dof::frame::{CountBuffer, DofContext, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof::kernel_shape::{KernelShape, analyze};
 use dof::methods::buffers::{SLOT_WORDS, slot_words};
 use dof::methods::splat::{Merge, SplatOptions};

@@ -86,6 +86,73 @@ fn every_registered_method_records_resizes_and_matches_the_one_shot_path_on_vulk
     assert_clean(&mut vk);
 }
 
+/// Every method's frame as a value: made once, checked, then encoded. Encoded, it gives the image
+/// the one-shot path gives; its stages are named; the barriers it derives from its commands'
+/// reads and writes are the ones the Vulkan backend records; another backend refuses it.
+fn recordings_are_values(b: &mut dyn Backend) {
+    let (w, h, l) = (40, 24, 3);
+    for m in METHODS {
+        let extent = Extent::new(w, h, l);
+        let mut ctx = create(b, m, extent);
+        let bufs = caller_buffers(b, extent);
+        let image = input_for(m, w, h, l);
+        b.write_buffer(bufs[0], 0, &slot_words(&image)).unwrap();
+        b.write_buffer(bufs[1], 0, &image.counts).unwrap();
+        b.submit().unwrap();
+        let frame = Frame::layers(w, h, image.max_layers, test_lens(0.02), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
+        let before = b.counters();
+        let recording = ctx.recording(b, &frame).unwrap_or_else(|e| panic!("{}: {e}", m.name));
+        assert_eq!(b.counters().since(&before).commands, 0, "{}: making the recording records nothing", m.name);
+        let commands = recording.commands();
+        assert!(!commands.is_empty() && commands.iter().all(|c| !c.label().is_empty()), "{}: {commands:?}", m.name);
+        assert!(!recording.stages().is_empty());
+        let barriers = recording.barriers();
+        assert_eq!(barriers.first(), Some(&0), "{}: the first command waits for what came before", m.name);
+        assert!(barriers.len() < commands.len(), "{}: some commands run without a barrier between them", m.name);
+        // Every barrier separates a command from one it depends on: it reads or writes something
+        // written since the barrier before, or writes something read since then.
+        for pair in barriers.windows(2) {
+            let (from, at) = (pair[0], pair[1]);
+            let later = commands[at].accesses();
+            let depends = commands[from..at].iter().flat_map(|c| c.accesses()).any(|earlier| {
+                later.iter().any(|a| a.resource == earlier.resource && (earlier.writes || a.writes))
+            });
+            assert!(depends, "{}: a barrier before command {at} ({:?}) with no dependency", m.name, commands[at]);
+        }
+
+        let other = CpuBackend::new();
+        assert!(recording.encode(&mut { other }).is_err(), "{}: another backend", m.name);
+        let before = b.counters();
+        recording.encode(b).unwrap_or_else(|e| panic!("{}: encode: {e}", m.name));
+        b.submit().unwrap();
+        let spent = b.counters().since(&before);
+        if b.kind() == dof::backend::BackendKind::Vulkan {
+            assert_eq!(spent.commands, commands.len() as u64, "{}: one backend command a recorded command", m.name);
+            assert_eq!(spent.barriers, barriers.len() as u64, "{}: the backend's barriers are the recording's", m.name);
+        } else {
+            // The CPU backend runs a draw as its compute fallback: a fill and one or two kernels.
+            assert!(spent.commands >= commands.len() as u64, "{}", m.name);
+        }
+        let got = read_rgb(b, bufs[2], w, h).unwrap();
+        let once = one_shot(b, m, &MethodOptions::default(), &image, &test_lens(0.02)).unwrap();
+        assert!(once.image.data == got.data, "{}: the encoded recording differs from the one-shot path", m.name);
+        ctx.destroy(b);
+        bufs.iter().for_each(|&id| b.destroy_buffer(id));
+    }
+}
+
+#[test]
+fn every_method_records_a_frame_as_a_value_on_the_cpu() {
+    recordings_are_values(&mut CpuBackend::new());
+}
+
+#[test]
+fn every_method_records_a_frame_as_a_value_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    recordings_are_values(&mut vk);
+    assert_clean(&mut vk);
+}
+
 /// A context refuses a backend other than the one that made it: recording, resizing and
 /// destroying there touch none of that backend's buffers (whose ids may well be the same).
 #[test]

@@ -3,7 +3,7 @@
 //! frames without allocation through its context, and measured against the exact reference.
 
 use dof::backend::{Backend, CpuBackend};
-use dof::frame::{CountBuffer, Frame, RgbBuffer, RingGatherContext, RingGatherContextDesc, SlotBuffer};
+use dof::frame::{CountBuffer, DofContext, Frame, RgbBuffer, RingGatherContext, RingGatherContextDesc, SlotBuffer};
 use dof::layers::RgbImage;
 use dof::methods::ring_gather::{DEFAULT_RINGS, MAX_RADIUS, MAX_SAMPLE_RINGS, RingGatherOptions, ring_gather};
 use dof::metrics::compare;

@@ -9,7 +9,7 @@
 //!   holds every thinned list, it does not depend on the order tiles run in).
 
 use dof::backend::{Backend, BufferId, CpuBackend};
-use dof::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
+use dof::frame::{CountBuffer, DofContext, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::{SLOT_WORDS, read_rgb, slot_words};
 use dof::methods::splat::{Merge, SplatOptions, SplatReport, splat};

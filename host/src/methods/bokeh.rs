@@ -6,7 +6,7 @@
 use super::buffers::one_layer_frame;
 use crate::backend::{Backend, CommandTime};
 pub use crate::frame::bokeh::BokehOptions;
-use crate::frame::{BokehContext, BokehContextDesc};
+use crate::frame::{BokehContext, BokehContextDesc, DofContext};
 use crate::layers::RgbImage;
 use dof_core::error::Result;
 use dof_shaders::lens::ThinLens;

@@ -3,7 +3,7 @@
 
 use super::buffers::one_layer_frame;
 use crate::backend::{Backend, CommandTime};
-use crate::frame::{GatherContext, GatherContextDesc};
+use crate::frame::{DofContext, GatherContext, GatherContextDesc};
 use crate::layers::RgbImage;
 use dof_core::error::{Error, Result};
 use dof_shaders::gather::radius_px;

@@ -3,7 +3,7 @@
 
 use super::buffers::one_layer_frame;
 use crate::backend::{Backend, CommandTime};
-use crate::frame::{RingGatherContext, RingGatherContextDesc};
+use crate::frame::{DofContext, RingGatherContext, RingGatherContextDesc};
 use crate::layers::RgbImage;
 use dof_core::error::Result;
 use dof_shaders::lens::ThinLens;

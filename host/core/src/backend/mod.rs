@@ -17,10 +17,12 @@
 use crate::error::{Error, Result};
 use dof_shaders::{DrawDesc, KernelDesc};
 
+pub mod access;
 pub mod cpu;
 mod run;
 pub mod vulkan;
 
+pub use access::{Access, Hazards, Resource};
 pub use cpu::CpuBackend;
 pub use run::RunKernel;
 pub use vulkan::{DRAWS_ENV, DrawPath, PipelineStatistic, RawDevice, RawOptions, RequiredFeatures, VulkanBackend, VulkanOptions};

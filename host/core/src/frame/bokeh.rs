@@ -4,7 +4,6 @@
 //! pipeline on Vulkan, its compute fallback on the CPU) and the sum. Nothing is planned or read
 //! back on the host.
 
-use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::gather::{MAX_RADIUS, record_gather};
 use super::in_flight::{InFlight, per_frame};
@@ -12,6 +11,7 @@ use super::io::{
     Frame, ImageIo, Owned, check_frame, clamped_summary, output_buffer, ready, record_clamp_count, record_front, record_input,
     record_output,
 };
+use super::recording::{Recording, capture};
 use crate::aperture::ApertureShape;
 use crate::backend::{Backend, BufferId, RunKernel, groups_for, push_words};
 use crate::error::{Error, Result};
@@ -186,14 +186,14 @@ impl BokehContext {
         self.owned.bytes() + self.scan.bytes()
     }
 
-    pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+    pub fn recording(&mut self, backend: &dyn Backend, f: &Frame) -> Result<Recording> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
-        record_checked(self, backend, f, Self::commands)?;
+        let recording = capture(self, backend, f, Self::commands)?;
         self.in_flight.recorded(());
-        Ok(())
+        Ok(recording)
     }
 
-    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    /// The frame's commands (captured, and checked, by [`capture`]).
     fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
         let b = &self.b;
@@ -263,8 +263,8 @@ impl DofContext for BokehContext {
     fn extent(&self) -> Extent {
         self.desc.extent()
     }
-    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
-        BokehContext::record(self, backend, frame)
+    fn recording(&mut self, backend: &dyn Backend, frame: &Frame) -> Result<Recording> {
+        BokehContext::recording(self, backend, frame)
     }
     fn frames_in_flight(&self) -> u32 {
         self.in_flight.frames()

@@ -6,6 +6,7 @@
 
 pub use super::extent::Extent;
 use super::io::Frame;
+use super::recording::Recording;
 use crate::backend::Backend;
 use crate::error::Result;
 use std::collections::BTreeMap;
@@ -73,12 +74,20 @@ pub trait DofContext {
     fn method(&self) -> &'static str;
     /// The largest frame it records.
     fn extent(&self) -> Extent;
-    /// Records one frame of any size within [`DofContext::extent`] into the backend's current
-    /// command buffer: no allocation, readback or submission. Refused on another backend than the
-    /// one that made the context. Every check runs before the first command is recorded (each
-    /// command is checked first by a dry run, `frame::checked`): a refused frame leaves the
-    /// command buffer as it was.
-    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()>;
+    /// One frame of any size within [`DofContext::extent`] as a value: its commands, checked
+    /// against `backend` (the one that made the context; another is refused), with what each
+    /// reads and writes. Nothing is recorded until it is [encoded](Recording::encode), into the
+    /// backend, or by a caller's render graph that schedules the commands itself. Making it takes
+    /// the frame's report slot (see [`DofContext::report_frame`]).
+    fn recording(&mut self, backend: &dyn Backend, frame: &Frame) -> Result<Recording>;
+    /// Records one frame into the backend's current command buffer (the caller's, on a caller's
+    /// device): its [`DofContext::recording`], encoded. No allocation, readback or submission.
+    /// Every check runs before the first command is recorded: a refused frame leaves the command
+    /// buffer, and the context, as they were.
+    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
+        backend.check_frame_recording()?;
+        self.recording(backend, frame)?.encode(backend)
+    }
     /// What the last recorded frame did and left out (reads the device: call once it completed).
     fn report(&self, backend: &mut dyn Backend) -> Result<ContextReport> {
         self.report_frame(backend, 0)

@@ -1,13 +1,13 @@
 //! The gathering baseline (Riguer et al. 2003) as a frame context: the window radius reduced on the
 //! device from the frame's depths, so nothing is planned on the host.
 
-use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::in_flight::{InFlight, per_frame};
 use super::io::{
     Frame, ImageIo, Owned, check_frame, clamped_summary, context_pixels, output_buffer, ready, record_clamp_count, record_front,
     record_input, record_output,
 };
+use super::recording::{Recording, capture};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::gather::{GATHER, GATHER_PLAN, GatherParams, TILE, gather, gather_plan};
@@ -97,14 +97,14 @@ impl GatherContext {
     }
 
     /// Records one frame: the front layer of the input, the radius reduction, the gather.
-    pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+    pub fn recording(&mut self, backend: &dyn Backend, f: &Frame) -> Result<Recording> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
-        record_checked(self, backend, f, Self::commands)?;
+        let recording = capture(self, backend, f, Self::commands)?;
         self.in_flight.recorded(());
-        Ok(())
+        Ok(recording)
     }
 
-    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    /// The frame's commands (captured, and checked, by [`capture`]).
     fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let slots = record_input(backend, f, self.io.as_ref())?;
         let output = output_buffer(f, self.io.as_ref())?;
@@ -145,8 +145,8 @@ impl DofContext for GatherContext {
     fn extent(&self) -> Extent {
         self.desc.extent()
     }
-    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
-        GatherContext::record(self, backend, frame)
+    fn recording(&mut self, backend: &dyn Backend, frame: &Frame) -> Result<Recording> {
+        GatherContext::recording(self, backend, frame)
     }
     fn frames_in_flight(&self) -> u32 {
         self.in_flight.frames()

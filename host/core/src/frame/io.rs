@@ -162,10 +162,9 @@ const OUTPUT_FORMATS: [ImageFormat; 2] = [ImageFormat::Rgba32Float, ImageFormat:
 
 /// Checks what every context checks: a non-empty size within the maximum, a valid lens, buffers
 /// large enough, images at least of the frame's size, of a supported format, that the backend can
-/// copy, sane depth planes. (The commands themselves are checked by [`super::checked`].)
+/// copy, sane depth planes. (The commands themselves are checked as they are captured, [`super::recording`].)
 pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: Extent, io: Option<&ImageIo>) -> Result<()> {
     owned.check(backend)?;
-    backend.check_frame_recording()?;
     let layers = f.layer_count();
     if f.width == 0 || f.height == 0 || layers == 0 {
         return Err(Error::InvalidArgument(format!("an empty {}x{} frame with {layers} layers", f.width, f.height)));

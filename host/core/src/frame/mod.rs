@@ -36,7 +36,6 @@
 //! oracle the context is tested against).
 
 pub mod bokeh;
-mod checked;
 pub mod context;
 mod extent;
 pub mod gather;
@@ -46,6 +45,7 @@ pub mod layer_options;
 pub mod layered;
 pub mod peel;
 pub mod raytrace;
+pub mod recording;
 pub mod registry;
 pub mod renderer_peel;
 pub mod ring_gather;
@@ -59,6 +59,7 @@ pub use io::{CountBuffer, DepthEncoding, Frame, FrameInput, FrameOutput, RgbBuff
 pub use layer_options::{GuardBand, LayerOptions};
 pub use layered::{LayeredContext, LayeredContextDesc, LayeredOptions, LayeredPlanReport};
 pub use raytrace::{RaytraceContext, RaytraceContextDesc, RaytraceOptions};
+pub use recording::{Command, Groups, Recording};
 pub use registry::{ContextDesc, METHODS, MethodInfo, MethodOptions, Reads};
 pub use renderer_peel::{RendererPeel, RendererPeelDesc};
 pub use ring_gather::{RingGatherContext, RingGatherContextDesc, RingGatherOptions};

@@ -10,13 +10,13 @@
 //! neighbouring pixels do not share one noise pattern. Both backends get the same buffer, so both
 //! trace the same rays.
 
-use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::in_flight::{InFlight, per_frame};
 use super::io::{
     Frame, ImageIo, Owned, check_frame, clamped_summary, context_pixels, output_buffer, ready, record_clamp_count, record_input,
     record_output,
 };
+use super::recording::{Recording, capture};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 // The sampler is a leaf module of pure functions (the reference renderer's), shared so that the
@@ -207,15 +207,15 @@ impl RaytraceContext {
     }
 
     /// Records one frame: the missed-ray count cleared, the hierarchy, the trace.
-    pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+    pub fn recording(&mut self, backend: &dyn Backend, f: &Frame) -> Result<Recording> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
-        record_checked(self, backend, f, Self::commands)?;
+        let recording = capture(self, backend, f, Self::commands)?;
         let levels = trace_params(f.width, f.height, f.layer_count(), &self.desc.options, f.lens).0.levels;
         self.in_flight.recorded((f.width as u64 * f.height as u64, levels));
-        Ok(())
+        Ok(recording)
     }
 
-    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    /// The frame's commands (captured, and checked, by [`capture`]).
     fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
         let (input, counts) = record_input(backend, f, self.io.as_ref())?;
@@ -258,8 +258,8 @@ impl DofContext for RaytraceContext {
     fn extent(&self) -> Extent {
         self.desc.extent()
     }
-    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
-        RaytraceContext::record(self, backend, frame)
+    fn recording(&mut self, backend: &dyn Backend, frame: &Frame) -> Result<Recording> {
+        RaytraceContext::recording(self, backend, frame)
     }
     fn frames_in_flight(&self) -> u32 {
         self.in_flight.frames()

@@ -3,13 +3,13 @@
 //! creation and nothing planned on the host, so its cost is fixed by the frame's size and the ring
 //! count, not by the blur.
 
-use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::in_flight::{InFlight, per_frame};
 use super::io::{
     Frame, ImageIo, Owned, check_frame, clamped_summary, context_pixels, output_buffer, ready, record_clamp_count, record_front,
     record_input, record_output,
 };
+use super::recording::{Recording, capture};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::ring_gather::{
@@ -173,14 +173,14 @@ impl RingGatherContext {
 
     /// Records one frame: the front layer of the input, then downsampling, tile dilation, the
     /// gather over rings and the composite with the highlights' discs.
-    pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+    pub fn recording(&mut self, backend: &dyn Backend, f: &Frame) -> Result<Recording> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
-        record_checked(self, backend, f, Self::commands)?;
+        let recording = capture(self, backend, f, Self::commands)?;
         self.in_flight.recorded(self.desc.options);
-        Ok(())
+        Ok(recording)
     }
 
-    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    /// The frame's commands (captured, and checked, by [`capture`]).
     fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
         let slots = record_input(backend, f, self.io.as_ref())?;
@@ -215,8 +215,8 @@ impl DofContext for RingGatherContext {
     fn extent(&self) -> Extent {
         self.desc.extent()
     }
-    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
-        RingGatherContext::record(self, backend, frame)
+    fn recording(&mut self, backend: &dyn Backend, frame: &Frame) -> Result<Recording> {
+        RingGatherContext::recording(self, backend, frame)
     }
     fn frames_in_flight(&self) -> u32 {
         self.in_flight.frames()

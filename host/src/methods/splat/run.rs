@@ -7,6 +7,7 @@
 //! wanted, so its result is always whole.
 
 use crate::backend::{Backend, CommandTime, with_buffers};
+use crate::frame::DofContext;
 use crate::frame::splat::{MAX_LIST_ENTRIES, SplatContext, SplatContextDesc};
 use crate::frame::splat::{SplatOptions, SplatReport};
 use crate::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};

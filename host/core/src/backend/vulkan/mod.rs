@@ -24,6 +24,7 @@ mod pipelines;
 mod recorder;
 mod spirv;
 
+use super::access::{Access, Resource, copy_accesses, dispatch_accesses, draw_accesses};
 use super::{
     Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageRef, Limits, check_dispatch, check_draw, draw_fallback,
 };
@@ -589,6 +590,17 @@ impl VulkanBackend {
         self.buffers.get(&id.0).ok_or_else(|| Error::InvalidArgument(format!("unknown buffer {}", id.0)))
     }
 
+    /// `accesses` by raw handle, as the recorder's barriers track them.
+    fn raw_accesses(&self, accesses: &[Access]) -> Result<Vec<(u64, bool)>> {
+        accesses
+            .iter()
+            .map(|a| match a.resource {
+                Resource::Buffer(id) => Ok((self.buffer(id)?.handle.as_raw(), a.writes)),
+                Resource::Image(handle) => Ok((handle, a.writes)),
+            })
+            .collect()
+    }
+
     /// The buffer, after checking that `offset..offset + words` lies inside it.
     fn range(&self, id: BufferId, offset: u64, words: u64) -> Result<vk::Buffer> {
         let b = self.buffer(id)?;
@@ -698,13 +710,7 @@ impl VulkanBackend {
         };
         let pipeline = self.pipelines.get(&self.device.device, kernel)?;
         self.note_used(buffers.iter().copied().chain(indirect.map(|(id, _)| id)));
-        // What the kernel declares read-only is read; the indirect arguments are read.
-        let accessed: Vec<(u64, bool)> = bound
-            .iter()
-            .enumerate()
-            .map(|(i, b)| (b.as_raw(), kernel.read_only & (1 << i) == 0))
-            .chain(args.as_ref().map(|(b, _)| (b.as_raw(), false)))
-            .collect();
+        let accessed = self.raw_accesses(&dispatch_accesses(kernel, buffers, indirect.map(|(id, _)| id)))?;
 
         let infos = buffer_infos(&bound);
         let writes = storage_writes(&infos);
@@ -783,7 +789,7 @@ impl VulkanBackend {
             .buffer_offset(offset_words * 4)
             .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(image.format.copy_aspect()).layer_count(1))
             .image_extent(vk::Extent3D { width, height, depth: 1 })];
-        let accessed = [(target.as_raw(), !into_image), (image.handle, into_image)];
+        let accessed = self.raw_accesses(&copy_accesses(image.handle, buffer, into_image))?;
         self.counters.commands += 1;
         // The acquire and release transitions around the copy.
         self.counters.barriers += 2;
@@ -1072,14 +1078,9 @@ impl Backend for VulkanBackend {
         let target_buffer = self.range(target, 0, 4 * pixels)?;
         let bound: Vec<vk::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.handle)).collect::<Result<_>>()?;
         self.note_used(buffers.iter().copied().chain([args, target]));
-        // The draw reads its storage buffers and the indirect command, and writes its image and
-        // (copied from it) the target.
-        let accessed: Vec<(u64, bool)> = bound
-            .iter()
-            .chain([&args_buffer])
-            .map(|b| (b.as_raw(), false))
-            .chain([(target_buffer.as_raw(), true), (image.as_raw(), true)])
-            .collect();
+        // And the draw writes its image, copied into the target.
+        let mut accessed = self.raw_accesses(&draw_accesses(buffers, args, target))?;
+        accessed.push((image.as_raw(), true));
         let infos = buffer_infos(&bound);
         let writes = storage_writes(&infos);
         let push_bytes = draw.push_bytes.div_ceil(4) as usize * 4;

@@ -14,10 +14,10 @@
 //! more commands takes (and keeps) another pool, so one `submit` is always one `vkQueueSubmit`.
 
 use super::instance::DeviceCtx;
-use crate::backend::{CommandTime, SPAN};
+use crate::backend::{CommandTime, Hazards, SPAN};
 use crate::error::{Result, VkContext};
 use ash::vk;
-use std::collections::{HashSet, VecDeque};
+use std::collections::VecDeque;
 
 /// Timed commands per query pool; a recording timing more commands uses more pools.
 pub(super) const TIMED_PER_POOL: u32 = 2048;
@@ -91,13 +91,6 @@ impl Queries {
     }
 }
 
-/// The buffers and images commands since the last barrier read and wrote (raw handles).
-#[derive(Default)]
-struct Touched {
-    read: HashSet<u64>,
-    written: HashSet<u64>,
-}
-
 pub(super) struct Recorder {
     pool: vk::CommandPool,
     main: vk::CommandBuffer,
@@ -134,9 +127,9 @@ pub(super) struct Recorder {
     done_spans: Vec<CommandTime>,
     /// `vkQueueSubmit` calls so far.
     submissions: u64,
-    /// What the commands since the last barrier accessed; `None` at the start of a command buffer,
-    /// where the first command waits for everything before.
-    touched: Option<Touched>,
+    /// What the commands since the last barrier accessed (raw handles), from the start of the
+    /// command buffer being recorded.
+    hazards: Hazards<u64>,
     /// Barriers `record` put between commands so far (for tests).
     barriers: u64,
 }
@@ -164,7 +157,7 @@ impl Recorder {
             open_spans: Vec::new(),
             done_spans: Vec::new(),
             submissions: 0,
-            touched: None,
+            hazards: Hazards::default(),
             barriers: 0,
         }
     }
@@ -257,24 +250,11 @@ impl Recorder {
             _ => None,
         };
         // A barrier only where this command reads something an earlier command since the last
-        // barrier wrote, or writes something one read or wrote (kernels declare the bindings they
-        // only read), and before the first command of a command buffer.
-        let hazard = match &self.touched {
-            None => true,
-            Some(t) => accessed.iter().any(|&(h, writes)| t.written.contains(&h) || (writes && t.read.contains(&h))),
-        };
-        if hazard {
+        // barrier wrote, or writes something one read or wrote, and before the first command of a
+        // command buffer (`backend::access`).
+        if self.hazards.next(accessed) {
             self.barriers += 1;
             full_barrier(d, cb, self.graphics);
-            self.touched = Some(Touched::default());
-        }
-        let touched = self.touched.get_or_insert_with(Touched::default);
-        for &(h, writes) in accessed {
-            if writes {
-                touched.written.insert(h)
-            } else {
-                touched.read.insert(h)
-            };
         }
         // SAFETY: `cb` is recording; the queries were reset in it and each is written once.
         unsafe {
@@ -307,7 +287,7 @@ impl Recorder {
             unsafe { ctx.device.begin_command_buffer(self.main, &begin) }.vk("vkBeginCommandBuffer")?;
             self.recording = true;
             self.main_queries.begin();
-            self.touched = None;
+            self.hazards.restart();
         }
         Ok(self.main)
     }
@@ -464,7 +444,7 @@ impl Recorder {
             later_stages(g),
             later_accesses(g),
         );
-        self.touched = Some(Touched::default());
+        self.hazards.after_barrier();
     }
 
     /// Ends the external recording with a barrier making the backend's writes visible to whatever
@@ -481,7 +461,7 @@ impl Recorder {
             | if g { vk::AccessFlags::COLOR_ATTACHMENT_WRITE } else { vk::AccessFlags::empty() };
         barrier(&ctx.device, cb, src, src_access, later_stages(g), later_accesses(g));
         self.external_pending.push_back(std::mem::take(&mut self.external_queries));
-        self.touched = None;
+        self.hazards.restart();
     }
 
     /// The timings of the oldest ended external recording whose times were not taken, once the

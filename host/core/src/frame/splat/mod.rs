@@ -1,10 +1,10 @@
 //! Tiled splatting as a frame context: every buffer and bound fixed at creation, then per frame a
 //! recording of the stages in `dof_shaders::splat` with no allocation, readback or host planning.
 
-use super::checked::record_checked;
 use super::context::{ContextReport, Described, DofContext, Extent};
 use super::in_flight::{InFlight, per_frame};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_input, record_output};
+use super::recording::{Recording, capture};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 mod options;
@@ -408,7 +408,7 @@ impl SplatContext {
     /// Records one frame. Nothing is allocated, read back or submitted; on Vulkan the commands go
     /// into the backend's current command buffer (its own, or the caller's between
     /// `begin_external` and `end_external`).
-    pub fn record(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
+    pub fn recording(&mut self, backend: &dyn Backend, f: &Frame) -> Result<Recording> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.b.io.as_ref())?;
         if f.footprint_side() > self.desc.options.footprint_side {
             return Err(Error::InvalidArgument(format!(
@@ -422,12 +422,12 @@ impl SplatContext {
         let slot = self.in_flight.next();
         (self.b.stats, self.b.segments) = self.reports[slot];
         self.sort.use_slot(slot);
-        record_checked(self, backend, f, Self::commands)?;
+        let recording = capture(self, backend, f, Self::commands)?;
         self.in_flight.recorded(*f);
-        Ok(())
+        Ok(recording)
     }
 
-    /// The frame's commands (checked by [`record_checked`] before they are recorded).
+    /// The frame's commands (captured, and checked, by [`capture`]).
     fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let b = &self.b;
         let pixels = f.width as u64 * f.height as u64;
@@ -596,8 +596,8 @@ impl DofContext for SplatContext {
     fn extent(&self) -> Extent {
         self.desc.extent()
     }
-    fn record(&mut self, backend: &mut dyn Backend, frame: &Frame) -> Result<()> {
-        SplatContext::record(self, backend, frame)
+    fn recording(&mut self, backend: &dyn Backend, frame: &Frame) -> Result<Recording> {
+        SplatContext::recording(self, backend, frame)
     }
     fn frames_in_flight(&self) -> u32 {
         self.in_flight.frames()

@@ -72,6 +72,8 @@ pub struct Renderer {
     fence: vk::Fence,
     buffers: Vec<OwnBuffer>,
     images: Vec<(vk::Image, vk::DeviceMemory)>,
+    /// Render passes, framebuffers and views of the depth passes, destroyed in `finish`.
+    passes: Vec<(vk::RenderPass, vk::Framebuffer, vk::ImageView)>,
 }
 
 impl Renderer {
@@ -164,6 +166,7 @@ impl Renderer {
             fence,
             buffers: Vec::new(),
             images: Vec::new(),
+            passes: Vec::new(),
         })
     }
 
@@ -330,6 +333,53 @@ impl Renderer {
         }
     }
 
+    /// Records a render pass whose only attachment is the depth image `image` (a depth format),
+    /// cleared to `depth` and stored: a depth-attachment write at the fragment-test stages, as a
+    /// renderer's depth prepass makes. It leaves the image in DEPTH_STENCIL_ATTACHMENT_OPTIMAL and
+    /// records no barrier after it.
+    pub fn depth_pass(&mut self, image: vk::Image, format: ImageFormat, extent: [u32; 2], depth: f32) {
+        let d = &self.device;
+        let attachment = [vk::AttachmentDescription::default()
+            .format(format.vk_format())
+            .samples(vk::SampleCountFlags::TYPE_1)
+            .load_op(vk::AttachmentLoadOp::CLEAR)
+            .store_op(vk::AttachmentStoreOp::STORE)
+            .stencil_load_op(vk::AttachmentLoadOp::CLEAR)
+            .stencil_store_op(vk::AttachmentStoreOp::STORE)
+            .initial_layout(vk::ImageLayout::UNDEFINED)
+            .final_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)];
+        let depth_ref = vk::AttachmentReference::default().attachment(0).layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+        let subpass =
+            [vk::SubpassDescription::default().pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS).depth_stencil_attachment(&depth_ref)];
+        let range = vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::DEPTH).level_count(1).layer_count(1);
+        let view_info = vk::ImageViewCreateInfo::default()
+            .image(image)
+            .view_type(vk::ImageViewType::TYPE_2D)
+            .format(format.vk_format())
+            .subresource_range(range);
+        // SAFETY: creation and recording calls on the live device; the command buffer is recording
+        // outside a render pass; everything made is destroyed in `finish`, after the device idles.
+        unsafe {
+            let pass = d
+                .create_render_pass(&vk::RenderPassCreateInfo::default().attachments(&attachment).subpasses(&subpass), None)
+                .expect("vkCreateRenderPass");
+            let view = d.create_image_view(&view_info, None).expect("vkCreateImageView");
+            let views = [view];
+            let fb_info =
+                vk::FramebufferCreateInfo::default().render_pass(pass).attachments(&views).width(extent[0]).height(extent[1]).layers(1);
+            let framebuffer = d.create_framebuffer(&fb_info, None).expect("vkCreateFramebuffer");
+            let clear = [vk::ClearValue { depth_stencil: vk::ClearDepthStencilValue { depth, stencil: 0 } }];
+            let begin = vk::RenderPassBeginInfo::default()
+                .render_pass(pass)
+                .framebuffer(framebuffer)
+                .render_area(vk::Rect2D { offset: vk::Offset2D::default(), extent: vk::Extent2D { width: extent[0], height: extent[1] } })
+                .clear_values(&clear);
+            d.cmd_begin_render_pass(self.cb, &begin, vk::SubpassContents::INLINE);
+            d.cmd_end_render_pass(self.cb);
+            self.passes.push((pass, framebuffer, view));
+        }
+    }
+
     /// A global memory barrier in the renderer's command buffer.
     pub fn barrier(
         &self,
@@ -414,6 +464,11 @@ impl Renderer {
             for b in &self.buffers {
                 d.destroy_buffer(b.buffer, None);
                 d.free_memory(b.memory, None);
+            }
+            for &(pass, framebuffer, view) in &self.passes {
+                d.destroy_framebuffer(framebuffer, None);
+                d.destroy_image_view(view, None);
+                d.destroy_render_pass(pass, None);
             }
             for &(image, memory) in &self.images {
                 d.destroy_image(image, None);

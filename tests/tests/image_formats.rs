@@ -397,6 +397,50 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
     assert_no_messages(r.finish(), "when the renderer destroyed its device");
 }
 
+/// A renderer's depth prepass writes the depth attachment and hands it over described by layout
+/// alone (no `.after()`): the frame's copy still waits for that write, by the description's safe
+/// default (any earlier write) and the opening barrier of the library's recording (which covers
+/// depth-attachment writes). Synchronisation validation must stay silent, and the frame must read
+/// the depth the pass wrote.
+#[test]
+fn a_depth_attachment_described_by_layout_alone_is_waited_for() {
+    let Some(mut r) = Renderer::new() else { return };
+    // SAFETY: as in the test above: the renderer's handles outlive the backend.
+    let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
+    let mut ctx = context(&mut vk);
+    let [_, _, out, _] = buffers(&mut vk);
+    let color_texels: Vec<u32> = (0..W * H).flat_map(|i| [0.25, 0.5, (i % 7) as f32 / 7.0, 1.0].map(f32::to_bits)).collect();
+    let color_image = r.image(ImageFormat::Rgba32Float, [W, H]);
+    let depth_image = r.image(ImageFormat::D32Float, [W, H]);
+    let staging = r.host_buffer(4 * color_texels.len() as u64);
+    Renderer::write(&staging, &color_texels);
+    let shader_read = (vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL, vk::PipelineStageFlags::FRAGMENT_SHADER, vk::AccessFlags::SHADER_READ);
+    r.begin();
+    r.upload_image(&staging, color_image, ImageFormat::Rgba32Float, [W, H], shader_read.0, shader_read.1, shader_read.2);
+    // Standard depth 0.5 with near 0.1 and far 100 is a view depth of about 0.2.
+    r.depth_pass(depth_image, ImageFormat::D32Float, [W, H], 0.5);
+    let by_layout = |image, format, layout| {
+        // SAFETY: the renderer's live image of this format and extent, with transfer usage, in
+        // `layout` when the frame runs.
+        unsafe { ImageRef::describe(image, format, [W, H]).unwrap().in_layout(layout).build() }
+    };
+    let color = by_layout(color_image, vk::Format::R32G32B32A32_SFLOAT, shader_read.0);
+    let depth = by_layout(depth_image, vk::Format::D32_SFLOAT, vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+    assert_eq!((depth.stage, depth.access), (vk::PipelineStageFlags::ALL_COMMANDS, vk::AccessFlags::MEMORY_WRITE), "the safe default");
+    // SAFETY: the renderer's command buffer is recording, outside a render pass.
+    unsafe { vk.begin_external(r.cb) }.expect("begin_external");
+    let encoding = DepthEncoding::Standard { near: NEAR, far: FAR };
+    ctx.record(&mut vk, &frame(FrameInput::Images { color, depth, encoding }, out)).unwrap();
+    vk.end_external().unwrap();
+    r.submit_and_wait();
+    let rgb = floats(&vk.read_buffer(out, 0, 3 * (W * H) as u64).unwrap());
+    assert!(rgb.iter().all(|v| v.is_finite()) && rgb.iter().any(|&v| v > 0.0), "an empty frame");
+    assert_no_messages(r.messages(), "reading a depth attachment described by layout alone");
+    ctx.destroy(&mut vk);
+    drop(vk);
+    assert_no_messages(r.finish(), "when the renderer destroyed its device");
+}
+
 /// The share of a 1280x720 multi-layer frame that bringing an RGBA16F colour and a D32 depth image
 /// in takes (the two copies and the conversion kernel), from the frame's own per-command times.
 fn input_share(times: &[dof::backend::CommandTime]) -> (f64, f64) {

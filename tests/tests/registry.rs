@@ -114,9 +114,10 @@ fn recordings_are_values(b: &mut dyn Backend) {
         for pair in barriers.windows(2) {
             let (from, at) = (pair[0], pair[1]);
             let later = commands[at].accesses();
-            let depends = commands[from..at].iter().flat_map(|c| c.accesses()).any(|earlier| {
-                later.iter().any(|a| a.resource == earlier.resource && (earlier.writes || a.writes))
-            });
+            let depends = commands[from..at]
+                .iter()
+                .flat_map(|c| c.accesses())
+                .any(|earlier| later.iter().any(|a| a.resource == earlier.resource && (earlier.writes || a.writes)));
             assert!(depends, "{}: a barrier before command {at} ({:?}) with no dependency", m.name, commands[at]);
         }
 

@@ -320,7 +320,9 @@ impl ImageRef {
     }
 
     /// Starts describing a caller's Vulkan image of `format` and `extent` (see [`ImageDesc`]):
-    /// the format is checked now, the state is named with the builder's methods.
+    /// the format is checked now, the state is named with the builder's methods. Until
+    /// [`ImageDesc::after`] narrows it, the frame waits for every earlier write of any stage
+    /// (depth-attachment writes included).
     pub fn describe(image: ash::vk::Image, format: ash::vk::Format, extent: [u32; 2]) -> Result<ImageDesc> {
         let format = ImageFormat::try_from(format)?;
         let layout = ash::vk::ImageLayout::GENERAL;
@@ -329,8 +331,8 @@ impl ImageRef {
             format,
             extent,
             layout,
-            stage: ash::vk::PipelineStageFlags::empty(),
-            access: ash::vk::AccessFlags::empty(),
+            stage: ash::vk::PipelineStageFlags::ALL_COMMANDS,
+            access: ash::vk::AccessFlags::MEMORY_WRITE,
             final_layout: None,
         })
     }
@@ -369,8 +371,10 @@ impl ImageRef {
     }
 }
 
-/// An [`ImageRef`] being described, by name rather than by position: the image is in GENERAL with
-/// nothing to wait for and is left in the layout it was in, unless told otherwise.
+/// An [`ImageRef`] being described, by name rather than by position: the image is in GENERAL, its
+/// copy waits for every earlier write (all commands, memory writes), and it is left in the layout it
+/// was in, unless told otherwise. Naming the last access with [`ImageDesc::after`] narrows the wait
+/// to it.
 ///
 /// ```no_run
 /// # use dof_core::backend::ImageRef;
@@ -402,7 +406,8 @@ impl ImageDesc {
         ImageDesc { layout, ..self }
     }
 
-    /// The caller's last access of the image, which the frame waits for and makes visible.
+    /// The caller's last access of the image, which the frame waits for and makes visible (instead
+    /// of every earlier write, the default).
     pub fn after(self, stage: ash::vk::PipelineStageFlags, access: ash::vk::AccessFlags) -> Self {
         ImageDesc { stage, access, ..self }
     }

@@ -424,9 +424,14 @@ impl Recorder {
         self.external_queries.begin();
         let g = self.graphics;
         let graphics = |flags: vk::PipelineStageFlags| if g { flags } else { vk::PipelineStageFlags::empty() };
-        let colour = if g { vk::AccessFlags::COLOR_ATTACHMENT_WRITE } else { vk::AccessFlags::empty() };
-        // The caller's compute, transfer, colour-attachment and shader writes (and, by the execution
-        // dependency, its reads at those stages) come before every access of the backend's commands.
+        let attachments = if g {
+            vk::AccessFlags::COLOR_ATTACHMENT_WRITE | vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_WRITE
+        } else {
+            vk::AccessFlags::empty()
+        };
+        // The caller's compute, transfer, colour- and depth-attachment and shader writes (and, by
+        // the execution dependency, its reads at those stages) come before every access of the
+        // backend's commands.
         barrier(
             &ctx.device,
             cb,
@@ -437,10 +442,12 @@ impl Recorder {
                 | vk::PipelineStageFlags::DRAW_INDIRECT
                 | graphics(
                     vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT
+                        | vk::PipelineStageFlags::EARLY_FRAGMENT_TESTS
+                        | vk::PipelineStageFlags::LATE_FRAGMENT_TESTS
                         | vk::PipelineStageFlags::VERTEX_SHADER
                         | vk::PipelineStageFlags::FRAGMENT_SHADER,
                 ),
-            vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_WRITE | colour,
+            vk::AccessFlags::SHADER_WRITE | vk::AccessFlags::TRANSFER_WRITE | attachments,
             later_stages(g),
             later_accesses(g),
         );

@@ -14,7 +14,8 @@
 //! 3. It wraps its device with `VulkanBackend::from_raw`, imports its two storage buffers, and
 //!    creates one `SplatContext` (every allocation happens here, once).
 //! 4. Per frame, in its own command buffer: its own pass before (clearing the output image), then
-//!    `begin_external`, `SplatContext::record`, `end_external`, then its own pass after (copying the
+//!    the library's recording (`VulkanBackend::record_into`, a guard that ends it), `record`, then
+//!    its own pass after (copying the
 //!    result into a host-visible buffer), one submission with its own fence. Several multi-layer
 //!    frames with a changing focus distance, then one frame from the colour and depth images.
 //!    Inside a frame the library allocates, submits and reads back nothing: checked on its counters.
@@ -416,20 +417,17 @@ fn run_frame(
     let before = backend.counters();
     let start = Instant::now();
     r.begin()?;
-    // Our peel passes, in our command buffer: each library call between begin_external and
-    // end_external, our render passes between them (docs/integration.md has the order).
+    // Our peel passes, in our command buffer: each library call inside a recording of the
+    // library's (`record_into`, ended when it drops), our render passes between them
+    // (docs/integration.md has the order).
     if let Some(p) = peeling.as_mut() {
         // SAFETY: as for the frame below.
-        unsafe { backend.begin_external(r.cb)? };
-        p.peel.begin(backend, &lens)?;
-        backend.end_external()?;
+        p.peel.begin(&mut *unsafe { backend.record_into(r.cb)? }, &lens)?;
         for k in 0..p.peel.layers() {
             p.pass.record(r, p.view_proj, p.background);
             let (colour, depth) = p.pass.attachments()?;
             // SAFETY: as for the frame below.
-            unsafe { backend.begin_external(r.cb)? };
-            p.peel.append(backend, k, colour, depth)?;
-            backend.end_external()?;
+            p.peel.append(&mut *unsafe { backend.record_into(r.cb)? }, k, colour, depth)?;
         }
     }
 
@@ -460,19 +458,20 @@ fn run_frame(
     let out_ref = unsafe { out_ref.build() };
     let frame = Frame { width: extent[0], height: extent[1], lens, input, output: FrameOutput::Image(out_ref) };
 
-    // The library's part, recorded into our command buffer. Between begin_external and end_external
-    // we record nothing ourselves; begin_external opens with a barrier after our transfer and compute
-    // writes, end_external closes with one before our later transfer and shader accesses. (The first
+    // The library's part, recorded into our command buffer. While its recording lasts we record
+    // nothing ourselves; it opens with a barrier after our transfer, compute and attachment writes,
+    // and its end closes it with one before our later transfer and shader accesses. (The first
     // frame of each input kind takes longer to record: the library creates a kernel's pipeline on
     // its first use.)
     // SAFETY: our command buffer is recording, outside a render pass, from a pool of the backend's
-    // queue family; it is submitted after end_external, and every resource outlives the fence wait.
-    unsafe { backend.begin_external(r.cb)? };
+    // queue family; it is submitted after the recording ends, and every resource outlives the fence
+    // wait.
+    let mut recording = unsafe { backend.record_into(r.cb)? };
     if let Some(p) = peeling.as_mut() {
-        p.peel.finish(backend)?;
+        p.peel.finish(&mut *recording)?;
     }
-    ctx.record(backend, &frame)?;
-    backend.end_external()?;
+    ctx.record(&mut *recording, &frame)?;
+    recording.end()?;
     let record_ms = start.elapsed().as_secs_f64() * 1e3;
 
     // The pass after: the result into our host-visible buffer. The library documents the state it
@@ -744,7 +743,7 @@ fn main() -> Result<ExitCode> {
     let mut ctx = SplatContext::new(&mut backend, &desc)?;
     // Creating the context recorded the zeroing of its buffers in the backend's own command buffer;
     // running it now (one submission to our queue, waited for) leaves nothing for the first frame's
-    // begin_external to flush, so that every frame submits nothing.
+    // recording to flush, so that every frame submits nothing.
     backend.submit()?;
     println!(
         "context: {:.1} MiB of device memory, {} allocations",

@@ -403,3 +403,35 @@ fn the_renderers_messenger_reports_hazards() {
     assert!(messages.iter().any(|m| m.contains("SYNC-HAZARD-WRITE-AFTER-WRITE")), "{messages:?}");
     assert_no_messages(r.finish(), "after the hazard");
 }
+
+/// The recording guard (`record_into`) is the backend while it lasts and ends the recording when
+/// dropped, or by `end`: either way the closing barrier is recorded, a new recording may begin, and
+/// the validation layer stays silent.
+#[test]
+fn a_recording_guard_ends_the_recording_when_dropped() {
+    let Some(mut r) = Renderer::new() else { return };
+    // SAFETY: the renderer's live handles outlive the backend, dropped before `finish`.
+    let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
+    let buffer = vk.create_buffer(256, "guarded").unwrap();
+    vk.submit().unwrap();
+    r.begin();
+    {
+        // SAFETY: the renderer's command buffer is recording, outside a render pass.
+        let mut recording = unsafe { vk.record_into(r.cb) }.unwrap();
+        assert!(recording.is_external());
+        recording.fill(buffer, 0, 256, 7, "guarded/fill").unwrap();
+        assert!(recording.submit().is_err(), "no submission inside the recording");
+    }
+    assert!(!vk.is_external(), "dropping the guard ended the recording");
+    // SAFETY: as above.
+    let mut recording = unsafe { vk.record_into(r.cb) }.unwrap();
+    recording.fill(buffer, 128, 128, 9, "guarded/fill").unwrap();
+    recording.end().unwrap();
+    assert!(vk.end_external().is_err(), "the recording was ended once, by `end`");
+    r.submit_and_wait();
+    let words = vk.read_buffer(buffer, 0, 256).unwrap();
+    assert!(words[..128].iter().all(|&w| w == 7) && words[128..].iter().all(|&w| w == 9));
+    vk.destroy_buffer(buffer);
+    drop(vk);
+    assert_no_messages(r.finish(), "around two guarded recordings");
+}

@@ -25,7 +25,7 @@ pub mod vulkan;
 pub use access::{Access, Hazards, Resource};
 pub use cpu::CpuBackend;
 pub use run::RunKernel;
-pub use vulkan::{DRAWS_ENV, DrawPath, PipelineStatistic, RawDevice, RawOptions, RequiredFeatures, VulkanBackend, VulkanOptions};
+pub use vulkan::{DRAWS_ENV, DrawPath, External, PipelineStatistic, RawDevice, RawOptions, RequiredFeatures, VulkanBackend, VulkanOptions};
 
 /// A buffer of `u32` words owned by a backend.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -509,6 +509,32 @@ impl VulkanBackend {
         Ok(())
     }
 
+    /// [`Self::begin_external`] as a guard: the returned [`External`] is the backend for the
+    /// recording (it dereferences to it), and the recording ends, with the closing barrier, when
+    /// the guard is dropped or [`External::end`] is called (which returns the error, where ending
+    /// failed, that a drop can only log).
+    ///
+    /// ```no_run
+    /// # use dof_core::backend::VulkanBackend;
+    /// # use dof_core::frame::{DofContext, Frame};
+    /// # fn frame(backend: &mut VulkanBackend, cb: dof_core::backend::vulkan::ash::vk::CommandBuffer,
+    /// #          ctx: &mut dyn DofContext, frame: &Frame) -> dof_core::Result<()> {
+    /// // SAFETY: `cb` is the renderer's primary command buffer, recording, outside a render pass.
+    /// let mut recording = unsafe { backend.record_into(cb)? };
+    /// ctx.record(&mut *recording, frame)?;
+    /// recording.end() // or let it drop
+    /// # }
+    /// ```
+    ///
+    /// # Safety
+    ///
+    /// As for [`Self::begin_external`], with the guard's end in place of `end_external`.
+    pub unsafe fn record_into(&mut self, cb: vk::CommandBuffer) -> Result<External<'_>> {
+        // SAFETY: the caller's contract, passed on.
+        unsafe { self.begin_external(cb)? };
+        Ok(External { backend: self })
+    }
+
     /// Ends the recording into the caller's command buffer (with the closing barrier described at
     /// [`Self::begin_external`]). Where buffers the recording uses were destroyed during it, it also
     /// records the setting of an event of the backend's, by which [`Self::release_finished`] knows
@@ -1223,3 +1249,41 @@ impl Drop for VulkanBackend {
 
 #[cfg(test)]
 mod tests;
+
+/// A recording into a caller's command buffer ([`VulkanBackend::record_into`]): the backend while
+/// it lasts, ended when dropped.
+pub struct External<'a> {
+    backend: &'a mut VulkanBackend,
+}
+
+impl External<'_> {
+    /// Ends the recording (the closing barrier, and the event that frees buffers destroyed during
+    /// it once the command buffer completes), returning what went wrong where something did.
+    pub fn end(self) -> Result<()> {
+        self.backend.end_external()
+    }
+}
+
+impl std::ops::Deref for External<'_> {
+    type Target = VulkanBackend;
+    fn deref(&self) -> &VulkanBackend {
+        self.backend
+    }
+}
+
+impl std::ops::DerefMut for External<'_> {
+    fn deref_mut(&mut self) -> &mut VulkanBackend {
+        self.backend
+    }
+}
+
+impl Drop for External<'_> {
+    /// Ends the recording if [`External::end`] has not (an error can only be logged here).
+    fn drop(&mut self) {
+        if self.backend.is_external()
+            && let Err(e) = self.backend.end_external()
+        {
+            log::error!("ending the recording into the caller's command buffer: {e}");
+        }
+    }
+}

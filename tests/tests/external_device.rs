@@ -409,7 +409,7 @@ fn the_renderers_messenger_reports_hazards() {
 /// the validation layer stays silent.
 #[test]
 fn a_recording_guard_ends_the_recording_when_dropped() {
-    let Some(mut r) = Renderer::new() else { return };
+    let Some(r) = Renderer::new() else { return };
     // SAFETY: the renderer's live handles outlive the backend, dropped before `finish`.
     let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
     let buffer = vk.create_buffer(256, "guarded").unwrap();

@@ -881,12 +881,12 @@ fn main() -> Result<ExitCode> {
         println!("wrote {} and .png", path.with_extension("exr").display());
     }
 
-    // Teardown: the library's objects first (imports are only forgotten), then ours.
-    renderer_peel.destroy(&mut backend);
+    // Teardown: the library's objects first (imports are only forgotten), then ours. The contexts
+    // free themselves when dropped (through the backend, once the device is done with them).
+    drop((renderer_peel, ctx));
     backend.destroy_buffer(bound_id);
     backend.destroy_buffer(draw_id);
     pass.destroy(&r);
-    ctx.destroy(&mut backend);
     check.destroy();
     backend.destroy_buffer(fragments_id);
     backend.destroy_buffer(counts_id);

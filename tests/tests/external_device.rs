@@ -435,3 +435,41 @@ fn a_recording_guard_ends_the_recording_when_dropped() {
     drop(vk);
     assert_no_messages(r.finish(), "around two guarded recordings");
 }
+
+/// A context dropped during a recording into the renderer's command buffer, which uses its
+/// buffers: nothing is freed while that command buffer may still run (not yet submitted, here),
+/// everything once it has completed, and the validation layer stays silent (a buffer freed early
+/// would be reported at the submission).
+#[test]
+fn a_context_dropped_during_a_recording_is_freed_once_it_completed() {
+    let Some(r) = Renderer::new() else { return };
+    // SAFETY: the renderer's live handles outlive the backend, dropped before `finish`.
+    let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
+    let [slots, counts, out] = [5 * 64, 64, 3 * 64].map(|words| vk.create_buffer(words, "caller").unwrap());
+    let words: Vec<u32> = (0..64u32).flat_map(|i| [0.5, 0.25, 0.125, 1.0 + i as f32 / 8.0, 1.0].map(f32::to_bits)).collect();
+    vk.write_buffer(slots, 0, &words).unwrap();
+    vk.write_buffer(counts, 0, &[1; 64]).unwrap();
+    let base = vk.counters().device_bytes;
+    let mut ctx = GatherContext::new(&mut vk, &GatherContextDesc::new(8, 8, 1)).unwrap();
+    vk.submit().unwrap();
+    let held = ctx.device_bytes();
+    let lens = dof::stress::test_lens(0.02);
+    r.begin();
+    {
+        // SAFETY: the renderer's command buffer is recording, outside a render pass.
+        let mut recording = unsafe { vk.record_into(r.cb) }.unwrap();
+        ctx.record(&mut *recording, &Frame::layers(8, 8, 1, lens, SlotBuffer(slots), CountBuffer(counts), RgbBuffer(out))).unwrap();
+        drop(ctx);
+        assert_eq!(recording.release_finished().unwrap(), 0, "the recording uses the buffers");
+    }
+    assert_eq!(vk.release_finished().unwrap(), 0, "the command buffer was not even submitted");
+    assert_eq!(vk.counters().device_bytes, base + held);
+    r.submit_and_wait();
+    assert_eq!(vk.release_finished().unwrap(), held, "freed once the command buffer completed");
+    assert_eq!(vk.counters().device_bytes, base);
+    let rgb = vk.read_buffer(out, 0, 3 * 64).unwrap();
+    assert!(rgb.iter().all(|&w| f32::from_bits(w).is_finite()) && rgb.iter().any(|&w| f32::from_bits(w) > 0.0));
+    [slots, counts, out].into_iter().for_each(|b| vk.destroy_buffer(b));
+    drop(vk);
+    assert_no_messages(r.finish(), "around a context dropped mid-recording");
+}

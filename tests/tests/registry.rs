@@ -154,6 +154,41 @@ fn every_method_records_a_frame_as_a_value_on_vulkan() {
     assert_clean(&mut vk);
 }
 
+/// A context dropped without `destroy` gives its buffers back: the backend frees them at its next
+/// chance (here `release_finished`), and holds what it held before the context was made.
+fn dropped_contexts_free_themselves(b: &mut dyn Backend) {
+    let extent = Extent::new(24, 16, 2);
+    let bufs = caller_buffers(b, extent);
+    for m in METHODS {
+        let before = b.counters().device_bytes;
+        let mut ctx = create(b, m, extent);
+        let held = ctx.device_bytes();
+        assert_eq!(b.counters().device_bytes - before, held, "{}: the context's bytes", m.name);
+        let image = input_for(m, 24, 16, 2);
+        b.write_buffer(bufs[0], 0, &slot_words(&image)).unwrap();
+        b.write_buffer(bufs[1], 0, &image.counts).unwrap();
+        let frame = Frame::layers(24, 16, image.max_layers, test_lens(0.02), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
+        ctx.record(b, &frame).unwrap();
+        b.submit().unwrap();
+        drop(ctx);
+        let freed = b.release_finished().unwrap();
+        assert_eq!((freed, b.counters().device_bytes), (held, before), "{}: freed after the drop", m.name);
+    }
+    bufs.iter().for_each(|&id| b.destroy_buffer(id));
+}
+
+#[test]
+fn dropped_contexts_free_themselves_on_the_cpu() {
+    dropped_contexts_free_themselves(&mut CpuBackend::new());
+}
+
+#[test]
+fn dropped_contexts_free_themselves_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    dropped_contexts_free_themselves(&mut vk);
+    assert_clean(&mut vk);
+}
+
 /// A context refuses a backend other than the one that made it: recording, resizing and
 /// destroying there touch none of that backend's buffers (whose ids may well be the same).
 #[test]

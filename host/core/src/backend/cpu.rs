@@ -3,7 +3,10 @@
 //! barriers (see `dof_shaders::exec`). Buffers are `[AtomicU32]`, so parallel workgroups never alias
 //! mutable memory.
 
-use super::{Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageFormat, ImageRef, Limits, SPAN, check_dispatch};
+use super::{
+    Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageFormat, ImageRef, Limits, RetireQueue, SPAN,
+    check_dispatch,
+};
 use crate::error::{Error, Result};
 use dof_shaders::KernelDesc;
 use dof_shaders::exec::CpuDispatch;
@@ -30,6 +33,8 @@ pub struct CpuBackend {
     budget: Option<u64>,
     /// The stand-ins for a renderer's images ([`CpuBackend::create_image`]), by handle − 1.
     images: Vec<Option<CpuImage>>,
+    /// Buffers given back by contexts dropped without `destroy`.
+    retire: RetireQueue,
 }
 
 /// An image stand-in: its format, full extent and texels, packed as its copies pack them (for a
@@ -72,6 +77,7 @@ impl CpuBackend {
             id: BackendId::fresh(),
             budget: None,
             images: Vec::new(),
+            retire: RetireQueue::default(),
         }
     }
 
@@ -228,7 +234,19 @@ impl Backend for CpuBackend {
         self.counters.reset_peak();
     }
 
+    fn retire_queue(&self) -> RetireQueue {
+        self.retire.clone()
+    }
+
+    fn release_finished(&mut self) -> Result<u64> {
+        // Every command has run by the time it returns: nothing to wait for.
+        let before = self.counters.device_bytes;
+        self.retire.take().into_iter().for_each(|id| self.destroy_buffer(id));
+        Ok(before - self.counters.device_bytes)
+    }
+
     fn create_buffer(&mut self, words: u64, label: &str) -> Result<BufferId> {
+        self.release_finished()?;
         let words = words.max(1);
         if words * 4 > self.limits.max_buffer_bytes {
             return Err(Error::TooLarge { what: "buffer on the CPU backend".into(), size: words * 4, limit: self.limits.max_buffer_bytes });
@@ -335,6 +353,7 @@ impl Backend for CpuBackend {
         }
         self.counters.submissions += 1;
         self.submitted_spans.append(&mut self.spans);
+        self.release_finished()?;
         Ok(std::mem::take(&mut self.times))
     }
 

@@ -19,11 +19,13 @@ use dof_shaders::{DrawDesc, KernelDesc};
 
 pub mod access;
 pub mod cpu;
+mod retire;
 mod run;
 pub mod vulkan;
 
 pub use access::{Access, Hazards, Resource};
 pub use cpu::CpuBackend;
+pub use retire::RetireQueue;
 pub use run::RunKernel;
 pub use vulkan::{DRAWS_ENV, DrawPath, External, PipelineStatistic, RawDevice, RawOptions, RequiredFeatures, VulkanBackend, VulkanOptions};
 
@@ -459,6 +461,16 @@ pub trait Backend {
     }
     fn limits(&self) -> &Limits;
 
+    /// The queue through which buffers are given back without the backend at hand (a context
+    /// dropped without `destroy`): the backend frees what it holds at its next `create_buffer`,
+    /// `submit` or [`Backend::release_finished`], once the device is done with it.
+    fn retire_queue(&self) -> RetireQueue;
+    /// Frees what is due: buffers given back through [`Backend::retire_queue`], and (Vulkan)
+    /// buffers destroyed during recordings into a caller's command buffer, once the recordings
+    /// that may use them have completed. Never blocks. Returns the bytes freed.
+    fn release_finished(&mut self) -> Result<u64> {
+        Ok(0)
+    }
     /// A zeroed buffer of `words` u32 words (at least one).
     fn create_buffer(&mut self, words: u64, label: &str) -> Result<BufferId>;
     fn destroy_buffer(&mut self, buffer: BufferId);

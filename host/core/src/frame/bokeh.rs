@@ -148,7 +148,8 @@ impl BokehContext {
             let scan = ScanScratch::new(backend, pixels)?;
             Ok((ids, io, scan))
         })();
-        let ((ids, io, scan), owned) = owned.or_free(backend, made)?;
+        let ((ids, io, scan), mut owned) = owned.or_free(backend, made)?;
+        owned.adopt(scan.buffers());
         let frames = desc.frames_in_flight as usize;
         let b = Buffers {
             mask: ids[0],
@@ -174,11 +175,7 @@ impl BokehContext {
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {
-        if let Err(e) = self.owned.check(backend) {
-            log::error!("{e}: nothing freed");
-            return;
-        }
-        self.scan.destroy(backend);
+        // The scan's buffers are among the owned ones.
         self.owned.free(backend);
     }
 

@@ -165,7 +165,9 @@ pub trait DofContext {
     fn grow_to_fit(&mut self, _backend: &mut dyn Backend) -> Result<bool> {
         Ok(false)
     }
-    /// Frees every buffer on the backend that made the context (handed another, it frees nothing
-    /// there; see [`crate::backend::BackendId`]).
+    /// Frees every buffer on the backend that made the context now (handed another, it frees
+    /// nothing there; see [`crate::backend::BackendId`]). Optional: a context dropped without it
+    /// gives its buffers back through the backend's [`RetireQueue`](crate::backend::RetireQueue),
+    /// and the backend frees them once the device is done with them.
     fn destroy(self: Box<Self>, backend: &mut dyn Backend);
 }

@@ -2,7 +2,7 @@
 //! image encodes depth, and the buffers that image inputs and outputs go through on the device.
 
 use super::extent::Extent;
-use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, RunKernel, groups_for};
+use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, RetireQueue, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::frame_io::{
     DEPTH_F32, DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FROM_IMAGES, FRONT, FrameIoParams, TO_RGBA, frame_from_images,
@@ -273,10 +273,14 @@ pub fn ready<C>(
     }
 }
 /// The buffers a context owns: made one by one, counted, and freed together (also when making a
-/// later one fails part way). Public for contexts above the core (the mesh peel of the crate `dof`).
+/// later one fails part way). Dropped without [`Owned::free`] (a context dropped without
+/// `destroy`), it hands them to its backend's [`RetireQueue`], which frees them once the device is
+/// done with them. Public for contexts above the core (the mesh peel of the crate `dof`).
 #[derive(Default)]
 pub struct Owned {
     ids: Vec<BufferId>,
+    /// The queue of the backend the buffers were made on (set by the first one).
+    retire: Option<RetireQueue>,
     bytes: u64,
     /// Each buffer's label and bytes, in the order made (for per-buffer memory tables).
     made: Vec<(String, u64)>,
@@ -289,6 +293,7 @@ impl Owned {
         self.check(backend)?;
         let id = backend.create_buffer(words.max(1), label)?;
         self.owner = Some(backend.id());
+        self.retire.get_or_insert_with(|| backend.retire_queue());
         self.ids.push(id);
         self.bytes += 4 * words.max(1);
         self.made.push((label.to_string(), 4 * words.max(1)));
@@ -305,6 +310,12 @@ impl Owned {
             ))),
             _ => Ok(()),
         }
+    }
+
+    /// Takes `ids`, made on the same backend by a part of the context (its sort, its scan), to be
+    /// freed with the buffers made here; their bytes are the part's to count.
+    pub fn adopt(&mut self, ids: &[BufferId]) {
+        self.ids.extend_from_slice(ids);
     }
 
     /// Bytes of every buffer made.
@@ -326,12 +337,13 @@ impl Owned {
 
     /// Frees every buffer, on the backend that made them only: handed another backend it frees
     /// nothing there and says so in the log (the buffers go with their own backend).
-    pub fn free(self, backend: &mut dyn Backend) {
+    pub fn free(mut self, backend: &mut dyn Backend) {
         if let Err(e) = self.check(backend) {
-            log::error!("{e}: nothing freed");
+            // Dropped, they go to their own backend's queue.
+            log::error!("{e}: nothing freed here; the buffers go back to their own backend");
             return;
         }
-        self.ids.into_iter().for_each(|id| backend.destroy_buffer(id));
+        std::mem::take(&mut self.ids).into_iter().for_each(|id| backend.destroy_buffer(id));
     }
 
     /// `made` when it is `Ok`; otherwise frees everything and passes the error on.
@@ -342,6 +354,16 @@ impl Owned {
                 self.free(backend);
                 Err(e)
             }
+        }
+    }
+}
+
+impl Drop for Owned {
+    fn drop(&mut self) {
+        if let Some(queue) = &self.retire
+            && !self.ids.is_empty()
+        {
+            queue.retire(std::mem::take(&mut self.ids));
         }
     }
 }

@@ -19,8 +19,8 @@
 use super::io::Frame;
 use crate::backend::access::{copy_accesses, dispatch_accesses, draw_accesses};
 use crate::backend::{
-    Access, Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, Hazards, ImageRef, Limits, Resource, check_dispatch,
-    check_draw,
+    Access, Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, Hazards, ImageRef, Limits, Resource, RetireQueue,
+    check_dispatch, check_draw,
 };
 use crate::error::{Error, Result};
 use dof_shaders::{DrawDesc, KernelDesc};
@@ -233,6 +233,12 @@ impl Backend for Capture<'_> {
     }
     fn limits(&self) -> &Limits {
         self.inner.limits()
+    }
+    fn retire_queue(&self) -> RetireQueue {
+        self.inner.retire_queue()
+    }
+    fn release_finished(&mut self) -> Result<u64> {
+        Err(self.refused("release_finished"))
     }
     fn create_buffer(&mut self, _words: u64, _label: &str) -> Result<BufferId> {
         Err(self.refused("create_buffer"))

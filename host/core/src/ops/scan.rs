@@ -56,6 +56,11 @@ impl ScanScratch {
         }
     }
 
+    /// Every buffer the scratch holds (for an owner that frees them with its own).
+    pub fn buffers(&self) -> &[BufferId] {
+        &self.levels
+    }
+
     /// Where the total of the last scan ends up: word 0 of the top level.
     pub fn total(&self, len: u64) -> (BufferId, u64) {
         let mut level = 0;

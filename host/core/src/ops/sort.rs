@@ -89,12 +89,13 @@ impl SegmentedSort {
     }
 
     pub fn destroy(self, backend: &mut dyn Backend) {
-        self.plans.iter().for_each(|&p| backend.destroy_buffer(p));
-        backend.destroy_buffer(self.lists);
-        if let Some((k, p)) = self.scratch {
-            backend.destroy_buffer(k);
-            backend.destroy_buffer(p);
-        }
+        self.buffers().into_iter().for_each(|b| backend.destroy_buffer(b));
+    }
+
+    /// Every buffer the sort holds (for an owner that frees them with its own).
+    pub fn buffers(&self) -> Vec<BufferId> {
+        let scratch = self.scratch.map(|(k, p)| [k, p]);
+        self.plans.iter().copied().chain([self.lists]).chain(scratch.into_iter().flatten()).collect()
     }
 
     /// The kernels [`Self::record`] may dispatch on this device.

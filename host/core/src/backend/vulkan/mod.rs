@@ -26,7 +26,8 @@ mod spirv;
 
 use super::access::{Access, Resource, copy_accesses, dispatch_accesses, draw_accesses};
 use super::{
-    Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageRef, Limits, check_dispatch, check_draw, draw_fallback,
+    Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageRef, Limits, RetireQueue, check_dispatch, check_draw,
+    draw_fallback,
 };
 use crate::error::{Error, Result, VkContext};
 use ash::vk;
@@ -193,13 +194,20 @@ pub struct VulkanBackend {
     /// Buffers the open external recording uses.
     external_used: HashSet<u32>,
     /// Buffers destroyed during the open external recording that it uses, with their bytes: they
-    /// go with the recording into `retired` at `end_external`.
+    /// wait for the recording at `end_external`.
     retiring: Vec<(GpuBuffer, u64)>,
-    /// Buffers destroyed during ended external recordings, each batch with the event its recording
-    /// sets at its end: freed by `release_finished` once the event is set.
-    retired: Vec<(vk::Event, Vec<(GpuBuffer, u64)>)>,
-    /// Events of released batches, reset, to be used again.
+    /// Ended external recordings not known to have completed: the number of each and the event
+    /// it sets at its end.
+    pending: Vec<(u64, vk::Event)>,
+    /// The number the next ended external recording gets.
+    recordings: u64,
+    /// Buffers waiting for recordings (by number) to complete, with their bytes: freed by
+    /// `release_finished` once none of those recordings is pending.
+    waiting: Vec<(Vec<u64>, GpuBuffer, u64)>,
+    /// Events of completed recordings, reset, to be used again.
     spare_events: Vec<vk::Event>,
+    /// Buffers given back by contexts dropped without `destroy`.
+    retire: RetireQueue,
     /// Draws go through the graphics pipeline (else through their compute fallbacks).
     graphics_draws: bool,
 }
@@ -345,8 +353,11 @@ impl VulkanBackend {
             budget: None,
             external_used: HashSet::new(),
             retiring: Vec::new(),
-            retired: Vec::new(),
+            pending: Vec::new(),
+            recordings: 0,
+            waiting: Vec::new(),
             spare_events: Vec::new(),
+            retire: RetireQueue::default(),
             graphics_draws: false,
         };
         backend.graphics_draws = backend.device.graphics;
@@ -536,59 +547,77 @@ impl VulkanBackend {
     }
 
     /// Ends the recording into the caller's command buffer (with the closing barrier described at
-    /// [`Self::begin_external`]). Where buffers the recording uses were destroyed during it, it also
-    /// records the setting of an event of the backend's, by which [`Self::release_finished`] knows
-    /// that the command buffer has completed.
+    /// [`Self::begin_external`]), and records the setting of an event of the backend's, by which
+    /// [`Self::release_finished`] knows that the command buffer has completed (and may free the
+    /// buffers destroyed or given back while it could still run).
     pub fn end_external(&mut self) -> Result<()> {
         let Some(cb) = self.recorder.external_command_buffer() else {
             return Err(Error::InvalidArgument("end_external without begin_external".into()));
         };
-        let retiring = if self.retiring.is_empty() {
-            Ok(())
-        } else {
-            let event = match self.spare_events.pop() {
-                Some(event) => Ok(event),
-                // SAFETY: a plain creation on the live device; destroyed in `drop`.
-                None => unsafe { self.device.device.create_event(&vk::EventCreateInfo::default(), None) }.vk("vkCreateEvent"),
-            };
-            event.map(|event| {
-                // SAFETY: `cb` is recording, outside a render pass; the event is the backend's and
-                // unset (new, or reset once its last batch was released).
-                unsafe { self.device.device.cmd_set_event(cb, event, vk::PipelineStageFlags::ALL_COMMANDS) };
-                self.retired.push((event, std::mem::take(&mut self.retiring)));
-            })
+        let event = match self.spare_events.pop() {
+            Some(event) => Ok(event),
+            // SAFETY: a plain creation on the live device; destroyed in `drop`.
+            None => unsafe { self.device.device.create_event(&vk::EventCreateInfo::default(), None) }.vk("vkCreateEvent"),
         };
+        let ended = event.map(|event| {
+            // SAFETY: `cb` is recording, outside a render pass; the event is the backend's and
+            // unset (new, or reset once its recording completed).
+            unsafe { self.device.device.cmd_set_event(cb, event, vk::PipelineStageFlags::ALL_COMMANDS) };
+            let number = self.recordings;
+            self.recordings += 1;
+            self.pending.push((number, event));
+            self.waiting.extend(self.retiring.drain(..).map(|(gpu, bytes)| (vec![number], gpu, bytes)));
+        });
         self.recorder.end_external(&self.device);
         self.external_used.clear();
         // Without an event the destroyed buffers wait for the next recording's end (or the drop).
-        retiring
+        ended
     }
 
-    /// Frees the buffers destroyed during external recordings whose command buffers have completed
-    /// (never blocks: a recording still running keeps its buffers until a later call; one whose
-    /// command buffer was never submitted keeps them until the backend is dropped). Returns the
-    /// bytes freed. `begin_external` calls it too.
+    /// Frees what is due (never blocks): buffers destroyed during external recordings, and buffers
+    /// of contexts dropped without `destroy`, once every recording that may use them has completed.
+    /// A recording still running keeps them until a later call; one whose command buffer was never
+    /// submitted keeps them until the backend is dropped. Returns the bytes freed.
+    /// `begin_external`, `submit` and `create_buffer` call it too.
     pub fn release_finished(&mut self) -> Result<u64> {
-        let mut freed = 0;
+        // The recordings that completed.
         let mut i = 0;
-        while i < self.retired.len() {
+        while i < self.pending.len() {
             // SAFETY: the event is the backend's and alive.
-            if !unsafe { self.device.device.get_event_status(self.retired[i].0) }.vk("vkGetEventStatus")? {
+            if unsafe { self.device.device.get_event_status(self.pending[i].1) }.vk("vkGetEventStatus")? {
+                let (_, event) = self.pending.swap_remove(i);
+                // SAFETY: the command that set it has executed; nothing else uses it.
+                unsafe { self.device.device.reset_event(event) }.vk("vkResetEvent")?;
+                self.spare_events.push(event);
+            } else {
                 i += 1;
-                continue;
             }
-            let (event, buffers) = self.retired.swap_remove(i);
-            let allocator = self.allocator()?;
-            let mut allocator = lock(&allocator);
-            for (gpu, bytes) in buffers {
-                // SAFETY (of the destruction): the event is set after every command of the recording.
-                gpu.destroy(&self.device.device, &mut allocator);
-                self.counters.remove_buffer(bytes);
-                freed += bytes;
+        }
+        // Buffers given back: they wait for every recording that may still run.
+        if !self.recorder.is_external() {
+            let running: Vec<u64> = self.pending.iter().map(|&(n, _)| n).collect();
+            for id in self.retire.take() {
+                let Some(b) = self.buffers.remove(&id.0) else { continue };
+                // An imported buffer is only forgotten.
+                if let Some(gpu) = b.owned {
+                    self.waiting.push((running.clone(), gpu, b.words * 4));
+                }
             }
-            // SAFETY: the command that set it has executed; nothing else uses it.
-            unsafe { self.device.device.reset_event(event) }.vk("vkResetEvent")?;
-            self.spare_events.push(event);
+        }
+        let (due, wait): (Vec<_>, Vec<_>) =
+            std::mem::take(&mut self.waiting).into_iter().partition(|(on, ..)| on.iter().all(|n| self.pending.iter().all(|p| p.0 != *n)));
+        self.waiting = wait;
+        let mut freed = 0;
+        for (_, gpu, bytes) in due {
+            self.counters.remove_buffer(bytes);
+            freed += bytes;
+            if self.recorder.is_recording() {
+                // The backend's own unsubmitted commands may use it: freed after their submission.
+                self.doomed.push(gpu);
+            } else {
+                let allocator = self.allocator()?;
+                gpu.destroy(&self.device.device, &mut lock(&allocator));
+            }
         }
         Ok(freed)
     }
@@ -936,8 +965,17 @@ impl Backend for VulkanBackend {
         self.counters.reset_peak();
     }
 
+    fn retire_queue(&self) -> RetireQueue {
+        self.retire.clone()
+    }
+
+    fn release_finished(&mut self) -> Result<u64> {
+        VulkanBackend::release_finished(self)
+    }
+
     fn create_buffer(&mut self, words: u64, label: &str) -> Result<BufferId> {
         self.refuse_external("create_buffer")?;
+        self.release_finished()?;
         let limit = self.info.limits.max_buffer_bytes;
         let bytes = words.max(1).checked_mul(4).filter(|&b| b <= limit).ok_or_else(|| Error::TooLarge {
             what: format!("buffer `{label}` on this device"),
@@ -1163,6 +1201,7 @@ impl Backend for VulkanBackend {
     fn submit(&mut self) -> Result<Vec<CommandTime>> {
         self.refuse_external("submit")?;
         self.flush()?;
+        self.release_finished()?;
         Ok(self.recorder.take_times())
     }
 
@@ -1215,7 +1254,7 @@ impl Drop for VulkanBackend {
         // SAFETY (of the destruction below): nothing is pending and nothing is destroyed twice.
         self.pipelines.destroy(&d);
         self.recorder.destroy(&d);
-        for event in self.spare_events.drain(..).chain(self.retired.iter().map(|(e, _)| *e)) {
+        for event in self.spare_events.drain(..).chain(self.pending.iter().map(|&(_, e)| e)) {
             // SAFETY: nothing pending uses it.
             unsafe { d.destroy_event(event, None) };
         }
@@ -1232,8 +1271,8 @@ impl Drop for VulkanBackend {
                 b.destroy(&d, &mut allocator);
             }
             // The caller waited for its command buffers (`from_raw`'s contract).
-            let retired = self.retired.drain(..).flat_map(|(_, batch)| batch);
-            for (b, _) in self.retiring.drain(..).chain(retired) {
+            let waiting = self.waiting.drain(..).map(|(_, gpu, bytes)| (gpu, bytes));
+            for (b, _) in self.retiring.drain(..).chain(waiting) {
                 b.destroy(&d, &mut allocator);
             }
             self.upload.destroy(&d, &mut allocator);

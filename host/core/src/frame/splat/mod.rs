@@ -282,7 +282,7 @@ impl SplatContext {
             backend.write_buffer(b.mask, 0, &mask_words)?;
             Ok((b, stats.into_iter().zip(segments).collect()))
         })();
-        let ((b, reports), owned) = match owned.or_free(backend, built) {
+        let ((b, reports), mut owned) = match owned.or_free(backend, built) {
             Ok(made) => made,
             Err(e) => {
                 sort.destroy(backend);
@@ -290,6 +290,7 @@ impl SplatContext {
             }
         };
         let bytes = owned.bytes() + sort.bytes();
+        owned.adopt(&sort.buffers());
         let mut kernels: Vec<&'static KernelDesc> = dof_shaders::splat::KERNELS.to_vec();
         kernels.extend(sort.kernels());
         if desc.image_io {
@@ -317,11 +318,7 @@ impl SplatContext {
 
     /// Frees every buffer. The backend must not be running the context's work.
     pub fn destroy(self, backend: &mut dyn Backend) {
-        if let Err(e) = self.owned.check(backend) {
-            log::error!("{e}: nothing freed");
-            return;
-        }
-        self.sort.destroy(backend);
+        // The sort's buffers are among the owned ones.
         self.owned.free(backend);
     }
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One command for the GPU figures of issue 24 (the per-stage table in the shape of Franke et al.
+# One command for the GPU figures (the per-stage table in the shape of Franke et al.
 # 2018, Table 1, at 1920x1080 and 3840x2160, and the ratios against the ring gather):
 #
 #   bash tools/gpu_measure.sh OUT_DIR [--quick] [--backend vulkan|cpu] [--frames N] [--warmup N]

@@ -173,8 +173,8 @@ enum Method {
         umbra_merge: bool,
         list_entries: Option<Entries>,
         max_list: Option<u32>,
-        /// Once a test switch of the library (each stage in buffers of its own); no longer
-        /// public, kept so that the corpus decodes as before.
+        /// A field the stored corpus holds for a switch the library does not have (each stage in
+        /// buffers of its own); kept so that the corpus decodes unchanged.
         _distinct_stage_buffers: bool,
     },
     Gather {
@@ -424,8 +424,8 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
                 merge_color_tol: merge_color_tol.get(0.25, 0.05),
                 umbra_merge: *umbra_merge,
                 aperture,
-                // The tile byte's upper bits (its lower ones pick the tile), so the corpus decodes
-                // as before: room for footprints of a 1 to 4 side grid, or none.
+                // The tile byte's upper bits (its lower ones pick the tile), so that the stored corpus
+                // decodes unchanged: room for footprints of a 1 to 4 side grid, or none.
                 footprint_side: (*tile as u32 >> 2) % 5,
             };
             let list_entries = match list_entries {

@@ -1,4 +1,4 @@
-//! What limits multi-layer splatting in the partial-occlusion region of `highlights` (issue 23):
+//! What limits multi-layer splatting in the partial-occlusion region of `highlights`:
 //! the numbers of docs/measurements.md, "Area-integrated layers", section "Where the region's
 //! error comes from".
 //!

@@ -49,7 +49,7 @@ pub mod workload;
 /// `dof_core::…`. [`Error`] is this crate's: the core's errors ([`CoreError`]) and those above it.
 pub use dof_core;
 pub use dof_core::{Backend, CpuBackend, VulkanBackend, VulkanOptions, dof_shaders};
-pub use dof_core::{aperture, backend, frame, kernel_shape, ops, shaders};
+pub use dof_core::{aperture, backend, frame, kernel_shape, lens, ops, shaders};
 pub use error::{CoreError, Error, Result};
 pub use layers::{Fragment, LayeredImage, RgbImage};
 pub use scene::ThinLens;

@@ -148,7 +148,7 @@ const FLAT: [f32; 3] = [0.25, 3.0, 1200.0];
 /// The colour of the stacked panes (channels of one scale: a fragment's channels share an
 /// exponent, and a stack of 100 repeats one rounding 100 times).
 const STACK: [f32; 3] = [0.5, 0.3, 0.1];
-/// The dim frame of the extreme-HDR cases (issue 26 measured 0.5 and 0.3 images).
+/// The dim frame of the extreme-HDR cases (measured with 0.5 and 0.3 images).
 const DIM: [f32; 3] = [0.5, 0.3, 0.1];
 
 /// A `w`x`h` frame of [`DIM`] at 5 m (CoC radius under 5 px with `test_lens(0.02)`), with the

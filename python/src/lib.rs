@@ -19,13 +19,16 @@ use pyo3::exceptions::{PyMemoryError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-/// A library error as a Python exception: bad input (`InvalidArgument`, `TooLarge`) is a
-/// `ValueError`, anything else (no Vulkan driver, a device failure) a `RuntimeError`; the message
-/// is the library's, as the CLI prints it.
+/// A library error as a Python exception: bad input (an invalid argument or lens, a size beyond a
+/// limit) is a `ValueError`, anything else (no Vulkan driver, a device failure) a `RuntimeError`;
+/// the message is the library's, as the CLI prints it.
 fn py_err(e: impl Into<Error>) -> PyErr {
     let e: Error = e.into();
     match e {
-        Error::Core(CoreError::InvalidArgument(_) | CoreError::TooLarge { .. }) | Error::Scene(_) => PyValueError::new_err(e.to_string()),
+        Error::Core(
+            CoreError::InvalidArgument(_) | CoreError::InvalidLens(_) | CoreError::ResizeNeeded { .. } | CoreError::TooLarge { .. },
+        )
+        | Error::Scene(_) => PyValueError::new_err(e.to_string()),
         Error::Core(CoreError::HostMemory { .. }) => PyMemoryError::new_err(e.to_string()),
         _ => PyRuntimeError::new_err(e.to_string()),
     }

@@ -344,7 +344,7 @@ def test_options_reach_the_method():
 
 
 def test_readme_example(tmp_path, monkeypatch):
-    """The README's five lines, on a file written here."""
+    """The README's Python lines, on a file written here."""
     monkeypatch.chdir(tmp_path)
     dof.write_exr("in.exr", *scene())
     rgb, depth = dof.read_exr("in.exr")

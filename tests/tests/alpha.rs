@@ -1,7 +1,7 @@
-//! Alpha through every method (issue 23), on the CPU backend and on Vulkan (lavapipe in CI):
+//! Alpha through every method, on the CPU backend and on Vulkan (lavapipe in CI):
 //!
 //! - **The in-focus oracle**: with a pinhole-sized aperture (radius 1e-7), every registered method
-//!   and the pinhole return the input's front-to-back composite over black, on the issue's cases: an
+//!   and the pinhole return the input's front-to-back composite over black, on three cases: an
 //!   RGB+Z EXR of premultiplied 0.4 at alpha 0.5 gives 0.4 (not 0.8), a two-layer pixel of
 //!   premultiplied (0.8, 0.4, 0.2) at alpha 0.5 over an opaque (0.1, 0.9, 0.1) gives
 //!   (0.85, 0.85, 0.25) (not brighter than its input), and an anti-aliased edge pixel of alpha 0.5
@@ -92,7 +92,7 @@ fn assert_all(
     }
 }
 
-/// The in-focus oracle on the issue's three cases.
+/// The in-focus oracle on the three cases of the module's documentation.
 fn in_focus_oracle(b: &mut dyn Backend) {
     let lens = test_lens(PINHOLE);
     // Premultiplied 0.4 at alpha 0.5 in an RGB+Z EXR, beside opaque pixels.

@@ -215,7 +215,7 @@ fn masks_match_a_brute_force_shaped_kernel() {
 
 /// Just above the largest relative L1 measured for masks: 0.051 for the star (96 texels, sampled
 /// bilinearly at the pixel centres, so its sharp notches soften) and 0.032 for the image; the
-/// circle scores 1.05 and 1.18. Energy was within 1.3% (the mask's integral stands in for the
+/// circle scores 1.05 and 1.18. Energy is within 1.3% (the mask's integral stands in for the
 /// lattice sum beyond a 4 px support).
 const MASK_BOUND: f32 = 0.06;
 

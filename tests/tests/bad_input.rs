@@ -63,7 +63,7 @@ fn kernels_needing_more_workgroup_memory_than_the_device_has_are_refused() {
 }
 
 /// Sample counts beyond the stated bound are refused before anything proportional to them is
-/// allocated (4e9 samples per pixel once meant an 80 GB allocation), without naming a CLI flag.
+/// allocated (4e9 samples per pixel would mean an 80 GB allocation), without naming a CLI flag.
 #[test]
 fn sample_counts_beyond_the_bound_are_refused() {
     use dof::scene::{AutoOptions, MAX_SPP, ReferenceOptions, builtin, reference, reference_auto};

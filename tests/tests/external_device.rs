@@ -294,7 +294,7 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
         &mut vk,
         &Frame::layers(4, 4, 1, dof::stress::test_lens(0.01), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2])),
     );
-    assert!(matches!(&outside, Err(CoreError::InvalidArgument(m)) if m.contains("begin_external")), "{outside:?}");
+    assert!(matches!(&outside, Err(CoreError::RecordingState(m)) if m.contains("record_into")), "{outside:?}");
     assert_eq!(vk.counters(), before, "the refused frame recorded nothing");
     assert!(vk.submit().unwrap().is_empty(), "nothing was left recorded");
     ctx.destroy(&mut vk);
@@ -379,7 +379,7 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
     assert!(matches!(cpu.copy_buffer_to_image(b, 0, target, "x"), Err(CoreError::InvalidArgument(_))));
 
     drop(vk);
-    // The renderer's allocator, which the backend no longer holds, goes before its device.
+    // The renderer's allocator, which the dropped backend does not hold, goes before its device.
     assert_eq!(Arc::strong_count(&shared), 1);
     drop(shared);
     assert_no_messages(r.messages(), "");

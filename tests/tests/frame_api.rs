@@ -137,7 +137,12 @@ fn frames_beyond_the_context_or_its_buffers_are_refused() {
     let image = noise_with_sky(40, 20, 2);
     let bufs = caller_buffers(&mut b, (40, 20, 2));
     upload(&mut b, &bufs, &image);
-    assert!(matches!(ctx.record(&mut b, &frame(&image, 0.01, &bufs)), Err(CoreError::InvalidArgument(m)) if m.contains("resize")));
+    match ctx.record(&mut b, &frame(&image, 0.01, &bufs)) {
+        Err(CoreError::ResizeNeeded { frame, context }) => {
+            assert_eq!((frame, context), (dof::frame::Extent::new(40, 20, 2), dof::frame::Extent::new(32, 32, 2)))
+        }
+        other => panic!("{other:?}"),
+    }
     ctx.resize(&mut b, 40, 20, 2).unwrap();
     ctx.record(&mut b, &frame(&image, 0.01, &bufs)).unwrap();
     b.submit().unwrap();
@@ -145,7 +150,7 @@ fn frames_beyond_the_context_or_its_buffers_are_refused() {
     let short = Frame { output: FrameOutput::Buffer(RgbBuffer(small[2])), ..frame(&image, 0.01, &bufs) };
     assert!(matches!(ctx.record(&mut b, &short), Err(CoreError::InvalidArgument(m)) if m.contains("output")));
     let nan_lens = Frame { lens: test_lens(f32::NAN), ..frame(&image, 0.01, &bufs) };
-    assert!(matches!(ctx.record(&mut b, &nan_lens), Err(CoreError::InvalidArgument(_))));
+    assert!(matches!(ctx.record(&mut b, &nan_lens), Err(CoreError::InvalidLens(_))));
     assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(0, 10, 1, options.clone())), Err(CoreError::InvalidArgument(_))));
     assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(100_000, 10, 1, options.clone())), Err(CoreError::TooLarge { .. })));
     let mut huge_pool = SplatContextDesc::new(16, 16, 1, options);

@@ -50,9 +50,9 @@ fn regression(target: &str, name: &str) -> PathBuf {
 }
 
 /// A primitive whose `POSITION` names an accessor that does not exist: the gltf crate's validation
-/// indexed the accessors with it and panicked (gltf-json 1.4.1, `mesh.rs`). Found by the `gltf`
-/// target (a mutated `"accessors"` key); fixed in `scene/gltf_load.rs` by checking that reference
-/// before the crate validates.
+/// indexes the accessors with it and panics (gltf-json 1.4.1, `mesh.rs`). A reproducer of the `gltf`
+/// target (a mutated `"accessors"` key); `scene/gltf_load.rs` checks that reference before the
+/// crate validates.
 #[test]
 fn gltf_position_naming_a_missing_accessor_is_an_error() {
     let path = regression("gltf", "position-accessor-out-of-range.gltf");
@@ -83,10 +83,10 @@ fn gltf_position_naming_a_missing_accessor_is_an_error() {
 }
 
 /// What the gltf crate's accessors unwrap without its validation checking it (gltf 1.4.1): an image
-/// with neither `uri` nor `bufferView` (`Image::source`, found by the `gltf` target: a mutated
+/// with neither `uri` nor `bufferView` (`Image::source`, a reproducer of the `gltf` target: a mutated
 /// `"bufferView"` key), an image `bufferView` without `mimeType` (same function), a camera whose
-/// `type` names a projection it lacks (`Camera::projection`). Each panicked once a primitive used
-/// the image or a node the camera; fixed in `scene/gltf_load.rs` by refusing them before loading.
+/// `type` names a projection it lacks (`Camera::projection`). Each panics once a primitive uses
+/// the image or a node the camera; `scene/gltf_load.rs` refuses them before loading.
 #[test]
 fn gltf_images_and_cameras_without_what_they_need_are_errors() {
     for (file, expected) in [
@@ -103,9 +103,9 @@ fn gltf_images_and_cameras_without_what_they_need_are_errors() {
     }
 }
 
-/// A palette PNG of 6x100925440 pixels in 115 bytes: the mask reader allocated its 2.4 GB output
-/// buffer before checking the size (1 to 8192 a side). Found by the `aperture_png` target
-/// (libFuzzer's malloc limit); fixed in `aperture.rs` by checking the header's size first.
+/// A palette PNG of 6x100925440 pixels in 115 bytes: a mask reader that allocates its output
+/// before checking the size (1 to 8192 a side) asks for 2.4 GB. A reproducer of the `aperture_png`
+/// target (libFuzzer's malloc limit); `aperture.rs` checks the header's size first.
 #[test]
 fn aperture_png_of_a_huge_size_is_refused_before_its_pixels_are_allocated() {
     let path = regression("aperture_png", "palette-6x100925440.png");
@@ -120,8 +120,8 @@ fn aperture_png_of_a_huge_size_is_refused_before_its_pixels_are_allocated() {
 }
 
 /// A palette PNG whose PLTE chunk is 14 bytes (not whole RGB entries): png 0.18's palette
-/// expansion indexed past it and panicked. Found by the `aperture_png` target; fixed in
-/// `aperture.rs` by checking the palette (and its transparency chunk) before decoding.
+/// expansion indexes past it and panics. A reproducer of the `aperture_png` target; `aperture.rs`
+/// checks the palette (and its transparency chunk) before decoding.
 #[test]
 fn aperture_png_with_a_partial_palette_entry_is_refused() {
     let path = regression("aperture_png", "palette-of-14-bytes.png");
@@ -131,10 +131,10 @@ fn aperture_png_with_a_partial_palette_entry_is_refused() {
 }
 
 /// An artist lens with `max_radius_px` 3.4e38: valid by `ArtistLens::is_valid`, but its CoC
-/// diameter `2 · max_radius_px` overflows and the sharp zone's CoC is `inf · 0` = NaN. Found by the
-/// `lens` target (`fuzz/regressions/lens/artist-lens-diameter-overflows`); fixed in
-/// `scene/lens.rs`: `validate_artist_lens` refuses a radius whose diameter is not finite. (The
-/// kernel crate's `signed_coc_px` still multiplies `2 · max_radius_px` first.)
+/// diameter `2 · max_radius_px` overflows and the sharp zone's CoC is `inf · 0` = NaN. A reproducer
+/// of the `lens` target (`fuzz/regressions/lens/artist-lens-diameter-overflows`); in
+/// `scene/lens.rs`, `validate_artist_lens` refuses a radius whose diameter is not finite. (The
+/// kernel crate's `signed_coc_px` multiplies `2 · max_radius_px` first.)
 #[test]
 fn an_artist_lens_whose_coc_diameter_overflows_is_refused() {
     let v = 3.396_151_4e38;
@@ -151,10 +151,10 @@ fn an_artist_lens_whose_coc_diameter_overflows_is_refused() {
 }
 
 /// Cameras whose view axis (`target − eye`) or `forward × up` is so short that its squared length
-/// is subnormal: `Camera::frame` accepts them, and its axes, documented as unit, are not (0.989 and
-/// 0.995 long here), so pixel rays are off. Found by the `lens` target
-/// (`fuzz/regressions/lens/camera-axes-underflow`, `camera-view-axis-underflows`). Fixed in
-/// `scene/camera.rs`: vectors are scaled by their largest component before normalising.
+/// is subnormal: `Camera::frame` accepts them, and normalised naively their axes, documented as
+/// unit, come out 0.989 and 0.995 long, so pixel rays would be off. Reproducers of the `lens` target
+/// (`fuzz/regressions/lens/camera-axes-underflow`, `camera-view-axis-underflows`). In
+/// `scene/camera.rs` vectors are scaled by their largest component before normalising.
 #[test]
 fn a_camera_whose_axes_underflow_is_refused_or_has_unit_axes() {
     let cameras = [
@@ -188,7 +188,7 @@ fn a_camera_whose_axes_underflow_is_refused_or_has_unit_axes() {
 /// `blades` 2^32 - 1 makes the bokeh kernels loop for ever (the `frame` target's timeout,
 /// `fuzz/regressions/frame/aperture-with-4294967295-blades`), and a mask shorter than `side²` is
 /// read out of bounds (on the CPU backend a kernel fault in `bokeh::emit_pass`, on a GPU a stray
-/// read). Fixed: the splatting and bokeh contexts refuse an aperture that the constructors in
+/// read). The splatting and bokeh contexts refuse an aperture that the constructors in
 /// `aperture` could not have made (`ApertureShape::check`).
 #[test]
 fn frame_contexts_refuse_inconsistent_apertures() {

@@ -12,7 +12,7 @@ use dof::scene::{
 #[test]
 fn exported_scenes_peel_like_the_ray_caster() {
     // `highlights` holds hundreds of thousands of tiny, far triangles (its emitters): the CPU
-    // rasteriser once gave some of them spurious depths near the eye.
+    // rasteriser must not give any of them spurious depths near the eye.
     for name in ["simple", "railing", "columns", "highlights"] {
         let scene = builtin(name).unwrap().with_size(160, 90);
         let lens = scene.thin_lens().unwrap();

@@ -12,7 +12,7 @@ use dof_tests::{assert_clean, vulkan};
 
 /// A fronto-parallel textured wall at 4 m behind a near wall at 0.8 m that covers the middle third,
 /// and a far wall at 9 m behind both: three depths, every fragment of a wall at exactly its wall's
-/// depth (the many exact ties of issue 26's held-out scene).
+/// depth (many exact ties).
 fn walls(w: u32, h: u32) -> LayeredImage {
     let mut img = LayeredImage::new(w, h, 3).unwrap();
     for y in 0..h {
@@ -162,8 +162,8 @@ fn every_method_reports_what_it_clamped() {
     }
 }
 
-/// One 1e11 pixel in a 0.3 frame (issue 26: it pulled the rest down by 17%), and a 1e12 pixel
-/// every 97 pixels over 0.5 (it blacked out tiles): beyond the highlights' discs the frame is
+/// One 1e11 pixel in a 0.3 frame (a frame-wide half-float scale pulls the rest down by 17%), and
+/// a 1e12 pixel every 97 pixels over 0.5 (a frame-wide scale blacks out tiles): beyond the highlights' discs the frame is
 /// unchanged, and no pixel anywhere is darker than the frame.
 #[test]
 fn a_highlight_costs_the_frame_nothing() {
@@ -192,7 +192,7 @@ fn a_highlight_costs_the_frame_nothing() {
     }
 }
 
-/// `--background 3e38` (issue 26: +inf from the gather, −inf from ray tracing) and the float's
+/// `--background 3e38` (where sums can reach +inf in the gather, −inf in ray tracing) and the float's
 /// maximum, each taken as 2^100 when read, through the path `dof render` takes: a built-in scene ray cast into layers with that
 /// background, then every method of the frame API on both backends: finite, non-negative output.
 #[test]
@@ -225,7 +225,7 @@ fn a_background_at_the_float_limit_in_every_method() {
                 let out = one_shot(backend, method, &MethodOptions::default(), &layers, &lens).unwrap();
                 let bad = out.image.data.iter().filter(|p| !p.iter().all(|&c| c.is_finite() && c >= 0.0)).count();
                 assert_eq!(bad, 0, "{} on {kind} with background {bg:e}: {bad} pixels not finite and non-negative", method.name);
-                // Issue 26: a background of 1e30 blacked out foreground pixels in tiled splatting.
+                // A background of 1e30 can black out foreground pixels in tiled splatting: no more black than with 0.5.
                 let black = out.image.data.iter().filter(|p| p.iter().all(|&c| c == 0.0)).count();
                 if bg == 0.5 {
                     black_with_dim.push(black);

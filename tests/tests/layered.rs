@@ -165,7 +165,7 @@ fn bad_options_are_errors() {
         assert!(matches!(err, CoreError::InvalidArgument(_)), "{err}");
     }
     let degenerate = ThinLens { focus_distance: 0.01, ..lens };
-    assert!(matches!(layered(&mut CpuBackend::new(), &img, &degenerate, &LayeredOptions::default()), Err(CoreError::InvalidArgument(_))));
+    assert!(matches!(layered(&mut CpuBackend::new(), &img, &degenerate, &LayeredOptions::default()), Err(CoreError::InvalidLens(_))));
 }
 
 // ---- The frame API's context: the plan on the device ----

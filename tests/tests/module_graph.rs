@@ -310,7 +310,10 @@ fn check_layers(src: &str, layers: &[&[&str]]) {
 
 #[test]
 fn core_imports_point_down() {
-    check_layers("host/core/src", &[&["error"], &["backend", "shaders"], &["ops", "aperture", "sampling"], &["frame"], &["testing"]]);
+    check_layers(
+        "host/core/src",
+        &[&["error", "extent"], &["backend", "shaders", "lens"], &["ops", "aperture", "sampling"], &["frame"], &["testing"]],
+    );
 }
 
 #[test]
@@ -319,7 +322,7 @@ fn library_imports_point_down() {
         "host/src",
         &[
             // What `dof` re-exports from `dof-core`.
-            &["dof_core", "backend", "error", "frame", "ops", "aperture", "shaders", "dof_shaders"],
+            &["dof_core", "backend", "error", "frame", "ops", "aperture", "lens", "shaders", "dof_shaders"],
             &["layers", "deep", "io", "metrics", "workload", "timing", "progress"],
             &["methods"],
             &["scene"],

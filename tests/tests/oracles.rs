@@ -185,9 +185,9 @@ fn aperture() -> impl Strategy<Value = f32> {
     prop_oneof![Just(0.0f32), Just(PINHOLE), 0.0f32..0.002, 0.002f32..0.03, 0.03f32..1.0]
 }
 
-/// The case the non-negativity oracle found: a pixel bright enough for a bokeh sprite, red, with
-/// a blue neighbour in its 5x5 window. The sprite carried the pixel's excess over the neighbourhood mean channel by
-/// channel, so its blue channel was negative and so was the image; now every method gives a
+/// A case of the non-negativity oracle: a pixel bright enough for a bokeh sprite, red, with
+/// a blue neighbour in its 5x5 window. A sprite carrying the pixel's excess over the neighbourhood mean channel by
+/// channel would have a negative blue channel, and so would the image; every method gives a
 /// non-negative image (the case kept as a plain test, since random seeds change run to run).
 #[test]
 fn a_red_highlight_beside_a_blue_one_stays_non_negative() {

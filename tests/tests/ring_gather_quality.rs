@@ -1,4 +1,4 @@
-//! The ring gather as an honest baseline (issue 24, item 4; issue 25's flicker): close to the
+//! The ring gather as an honest baseline: close to the
 //! exhaustive gather inside the partial-occlusion region, sub-pixel highlights drawn as discs that
 //! keep their energy (the highlight path) on both backends, and a focus pull without flicker.
 //! Bounds sit under the margins measured (see `docs/measurements.md`).

@@ -232,8 +232,8 @@ fn bad_input_is_an_error() {
     let img = noise_with_sky(20, 20, 2);
     let mut cpu = CpuBackend::new();
     let o = SplatOptions::default();
-    assert!(matches!(splat(&mut cpu, &img, &lens(-1.0), &o), Err(CoreError::InvalidArgument(_))));
-    assert!(matches!(splat(&mut cpu, &img, &ThinLens { focus_distance: 0.01, ..lens(0.01) }, &o), Err(CoreError::InvalidArgument(_))));
+    assert!(matches!(splat(&mut cpu, &img, &lens(-1.0), &o), Err(CoreError::InvalidLens(_))));
+    assert!(matches!(splat(&mut cpu, &img, &ThinLens { focus_distance: 0.01, ..lens(0.01) }, &o), Err(CoreError::InvalidLens(_))));
     assert!(matches!(splat(&mut cpu, &img, &lens(0.01), &SplatOptions { tile: 20, ..o.clone() }), Err(CoreError::InvalidArgument(_))));
     assert!(matches!(
         splat(&mut cpu, &img, &lens(0.01), &SplatOptions { max_radius: Some(1000.0), ..o.clone() }),

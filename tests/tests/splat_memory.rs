@@ -15,7 +15,7 @@ use dof_tests::vulkan;
 const SIZES: [(u32, u32); 3] = [(1280, 720), (1920, 1080), (3840, 2160)];
 const LAYERS: u32 = 4;
 /// What the multi-layer context may hold at 1920x1080 with 4 layers, unmerged (the registry's
-/// options) and merged: 256 MB (10^6 bytes), the bound of the real-time issue.
+/// options) and merged: 256 MB (10^6 bytes), the real-time memory bound.
 const BOUND_1080P: u64 = 256_000_000;
 
 #[test]

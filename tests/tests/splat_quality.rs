@@ -89,9 +89,9 @@ fn columns() {
 
 /// Little partial occlusion, and a 256-sample reference of bright dots is noisy: the three methods
 /// agree within 0.03 dB (multi 15.22 dB in the region, single 15.22, gather 15.19); lists 475 -> 117
-/// (4.05x). Merging compares colours in their own units since fragments carry their own exponent;
-/// the frame-wide half-float scale before (1/4 here, for emitters above 65504) loosened the merge
-/// tolerance's near-black floor four times, and lists shortened 6.6x.
+/// (4.05x). Merging compares colours in their own units, since fragments carry their own exponent;
+/// a frame-wide half-float scale (1/4 here, for emitters above 65504) loosens the merge
+/// tolerance's near-black floor four times, and shortens the lists 6.6x.
 #[test]
 fn highlights() {
     check(&measure("highlights"), -0.05, -0.05, 3.8, 0.2);

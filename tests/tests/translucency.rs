@@ -1,4 +1,4 @@
-//! Translucent surfaces in the ground truth (issue 23): the analytic scenes' opacity, the exact
+//! Translucent surfaces in the ground truth: the analytic scenes' opacity, the exact
 //! thin-lens reference and ray caster on a single pane against the analytic "over", energy, the
 //! accumulation buffer blending `BLEND` surfaces in depth order (both panes' orders, both
 //! backends), the built-in translucent scenes through glTF (`alphaMode: BLEND`) and Mitsuba (a

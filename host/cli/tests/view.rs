@@ -282,7 +282,7 @@ wait $pid"#,
 /// screenshot that was asked for is written or the run fails saying why.
 #[test]
 fn the_viewer_refuses_bad_input_clearly() {
-    // An EXR far wider than any window (it used to panic on the window size).
+    // An EXR far wider than any window (the case of a panic on the window size).
     let dir = scratch("bad-input");
     let wide_exr = dir.join("wide.exr");
     let wide = dof::layers::RgbImage { width: 100_000, height: 1, data: vec![[0.5; 3]; 100_000] };

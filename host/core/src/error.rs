@@ -1,9 +1,13 @@
-//! Errors of the core. Nothing on a user-reachable path panics: every failure is one of these. (The
-//! crate `dof` above wraps them with its own: scene files and plots.)
+//! Errors of the core. Nothing on a user-reachable path panics: every failure is one of these. A
+//! caller matches on the kind (a frame that needs a larger context, an invalid lens, a context on
+//! the wrong backend, a call the recording state does not allow, a resource beyond a limit) and
+//! shows the message as it is. (The crate `dof` above wraps them with its own: scene files and
+//! plots.)
 
 use thiserror::Error;
 
 #[derive(Debug, Error)]
+#[non_exhaustive]
 pub enum Error {
     #[error(
         "no usable Vulkan driver: {0}\n  hint: install a Vulkan driver; on Debian/Ubuntu without a GPU, \
@@ -28,6 +32,20 @@ pub enum Error {
     /// A host allocation the machine refused: nothing was allocated.
     #[error("out of host memory: {what} needs {bytes} bytes, which this machine could not allocate")]
     HostMemory { what: String, bytes: u64 },
+    /// A frame larger than the context was made for: resize the context
+    /// ([`crate::frame::DofContext::resize`]) between frames, or make it for the largest frame.
+    #[error("a {frame} frame exceeds the context's {context} (resize the context)")]
+    ResizeNeeded { frame: crate::extent::Extent, context: crate::extent::Extent },
+    /// A lens the kernels cannot evaluate (see [`crate::lens`]).
+    #[error("invalid lens: {0}")]
+    InvalidLens(String),
+    /// A context, recording or resource handed to another backend than the one that made it.
+    #[error("{0}")]
+    WrongBackend(String),
+    /// A call the backend's recording state does not allow: a frame outside the caller's command
+    /// buffer on a caller's device, or a submission, transfer or allocation inside it.
+    #[error("{0}")]
+    RecordingState(String),
     #[error("invalid argument: {0}")]
     InvalidArgument(String),
 }

@@ -6,6 +6,8 @@
 //! - [`ops`]: kernel sequences recorded on any backend (segmented sort, prefix scan), on the caller's
 //!   buffers too;
 //! - [`aperture`]: aperture shapes (circle, blades, stars, image masks) for splatting and bokeh sprites;
+//! - [`lens`]: the thin lens from a camera's focal length, f-number, focus distance and field of
+//!   view (or sensor height, or projection matrix);
 //! - [`sampling`]: stratified lens samples and the concentric disc mapping (ray tracing's lens samples);
 //! - [`shaders`]: the embedded SPIR-V modules (prebuilt in `host/spirv/`, or compiled with the
 //!   `rebuild-spirv` feature), and the hash of the kernel sources they were built from;
@@ -27,8 +29,10 @@
 pub mod aperture;
 pub mod backend;
 pub mod error;
+mod extent;
 pub mod frame;
 pub mod kernel_shape;
+pub mod lens;
 pub mod ops;
 pub mod sampling;
 pub mod shaders;

@@ -56,9 +56,7 @@ pub fn one_layer_frame<T>(
             depth.len()
         )));
     }
-    if !lens.is_valid() {
-        return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
-    }
+    crate::lens::check(lens)?;
     let slots: Vec<u32> = image.data.iter().zip(depth).flat_map(|(c, z)| dof_shaders::slot::Slot::opaque(*c, *z).words()).collect();
     let sizes = [(SLOT_WORDS as u64 * pixels, "one-layer/input"), (pixels, "one-layer/input-counts"), (3 * pixels, "one-layer/out")];
     with_buffers(backend, &sizes, |backend, b| {

@@ -66,9 +66,7 @@ impl LayerPlan {
 
 /// Plans the layers of `image` under `lens`.
 pub fn plan(image: &LayeredImage, lens: &ThinLens, options: &LayeredOptions) -> Result<LayerPlan> {
-    if !lens.is_valid() {
-        return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
-    }
+    crate::lens::check(lens)?;
     options.check()?;
     if image.width == 0 || image.height == 0 || image.max_layers == 0 {
         return Err(Error::InvalidArgument(format!("layered DoF needs a non-empty image, got {}x{}", image.width, image.height)));

@@ -156,9 +156,7 @@ impl Runner {
                 image.width, image.height, image.max_layers, e.width, e.height, e.layers
             )));
         }
-        if !lens.is_valid() {
-            return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
-        }
+        crate::lens::check(lens)?;
         backend.write_buffer(self.io[0], 0, &slot_words(image))?;
         backend.write_buffer(self.io[1], 0, &image.counts)?;
         let frame =
@@ -251,9 +249,7 @@ pub fn one_shot(
     image: &LayeredImage,
     lens: &ThinLens,
 ) -> Result<OneShot> {
-    if !lens.is_valid() {
-        return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
-    }
+    crate::lens::check(lens)?;
     let input = method_input(method, image);
     let mut runner = Runner::new(backend, method, options, &input)?;
     let ran = runner.frame(backend, &input, lens);

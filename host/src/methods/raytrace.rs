@@ -38,9 +38,7 @@ mod oracle {
 
     /// Renders `image` through `lens` by ray tracing the layers on `backend`.
     pub fn raytrace(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &RaytraceOptions) -> Result<RaytraceOutput> {
-        if !lens.is_valid() {
-            return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
-        }
+        crate::lens::check(lens)?;
         options.check()?;
         let (width, height) = (image.width, image.height);
         let pixels = width as u64 * height as u64;

@@ -42,9 +42,7 @@ pub struct Peeled {
 /// Checks what every raster pass needs: a valid camera, lens and near plane.
 pub(crate) fn check_view(camera: &Camera, lens: &ThinLens, near: f32) -> Result<crate::scene::CameraFrame> {
     let frame = camera.frame()?;
-    if !lens.is_valid() {
-        return Err(Error::invalid(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
-    }
+    crate::lens::check(lens)?;
     if !(near > 0.0 && near.is_finite() && near < lens.focus_distance) {
         return Err(Error::invalid(format!(
             "the near plane must lie between 0 and the focus distance {}, got {near}",

@@ -12,6 +12,7 @@ use glam::Vec3;
 
 use super::camera::Camera;
 use crate::error::{Error, Result};
+pub use dof_core::lens::Aperture;
 
 /// Where the camera focuses.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -20,15 +21,6 @@ pub enum Focus {
     Distance(f32),
     /// Focus on the plane through this point (parallel to the image plane).
     Point(Vec3),
-}
-
-/// How large the aperture is.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Aperture {
-    /// f-number N: aperture diameter f/N. `+inf` is a pinhole.
-    FNumber(f32),
-    /// Aperture radius in scene units; 0 is a pinhole.
-    Radius(f32),
 }
 
 /// A thin lens as a user describes it. Scene units are metres unless `metres_per_unit` says
@@ -124,26 +116,8 @@ impl LensSettings {
                  a thin lens cannot focus closer than its focal length"
             )));
         }
-        let radius = match self.aperture {
-            Aperture::FNumber(n) => {
-                if !(n > 0.0) {
-                    return Err(Error::invalid(format!("the f-number must be positive, got {n}")));
-                }
-                f / (2.0 * n)
-            }
-            Aperture::Radius(r) => {
-                if !(r >= 0.0 && r.is_finite()) {
-                    return Err(Error::invalid(format!("the aperture radius must be finite and not negative, got {r}")));
-                }
-                r
-            }
-        };
-        let sensor_distance = f * zf / (zf - f);
-        let ppu = frame.height as f32 / (2.0 * sensor_distance * frame.tan_half_fov);
-        let lens = ThinLens { focal_length: f, aperture_radius: radius, focus_distance: zf, pixels_per_unit: ppu };
-        if !lens.is_valid() || !lens.far_limit_px().is_finite() {
-            return Err(Error::invalid(format!("the lens settings give an unusable lens: {lens:?}")));
-        }
+        let radius = self.aperture.radius(f)?;
+        let lens = dof_core::lens::thin_lens_for_view(f, radius, zf, frame.tan_half_fov, frame.height)?;
         Ok(lens)
     }
 }

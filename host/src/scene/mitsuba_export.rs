@@ -82,9 +82,7 @@ pub enum MitsubaExport {
 /// lens; a scene without an exact counterpart is `Ok(Skipped(reason))`.
 pub fn export_mitsuba(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &MitsubaOptions) -> Result<MitsubaExport> {
     let frame = camera.frame()?;
-    if !lens.is_valid() {
-        return Err(Error::invalid(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
-    }
+    crate::lens::check(lens)?;
     let view = View { frame, radius: lens.aperture_radius, focus: lens.focus_distance };
     let reach = plane_reach(scene, &view);
     let mut shapes = Vec::new();

@@ -49,7 +49,7 @@ pub use crate::frame::LayerOptions;
 /// layers": on `columns` at 320x180 it lifts multi-layer splatting from 33.83 to 39.00 dB, above the
 /// 16-spp antialiased pinhole, and on `highlights` it scores best, for twice the device peel's
 /// memory; 16 gains 4 dB more on `columns` for 5 times the memory). The library's
-/// `LayerOptions::default()` keeps 1 (point-sampled), as before.
+/// `LayerOptions::default()` keeps 1 (point-sampled).
 pub const DEFAULT_SUBSAMPLES: u32 = 4;
 
 /// Errors unless `n` is a sub-sample count the layers take (1, 4, 9 or 16).
@@ -109,9 +109,7 @@ impl SceneLayers {
 /// image too large to address.
 pub fn raycast_layers(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &LayerOptions) -> Result<SceneLayers> {
     camera.frame()?;
-    if !lens.is_valid() {
-        return Err(Error::invalid(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")));
-    }
+    crate::lens::check(lens)?;
     // Ray casting has no near plane; a thousandth of the focus distance bounds the band's search.
     let margin = options.guard_band.resolve(|| Ok(auto_margin(scene, camera, lens, 1e-3 * lens.focus_distance)?))?;
     let frame = camera.overscan(margin).frame()?;

@@ -252,11 +252,7 @@ pub fn reference_auto(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
 pub const MAX_SPP: u32 = 1 << 16;
 
 fn check_lens(lens: &ThinLens) -> Result<()> {
-    if lens.is_valid() {
-        Ok(())
-    } else {
-        Err(Error::invalid(format!("the lens is not valid (need 0 < f < focus distance, aperture >= 0): {lens:?}")))
-    }
+    Ok(crate::lens::check(lens)?)
 }
 
 /// The reference with `options`; with `aimed` (the lens), the emitters' light aimed at them.

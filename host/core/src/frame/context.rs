@@ -4,11 +4,11 @@
 //! methods (the CLI, the viewer, the benchmarks, the fuzz target) hold `Box<dyn DofContext>` made
 //! through the [registry](super::registry) and never name a concrete context.
 
-pub use super::extent::Extent;
 use super::io::Frame;
 use super::recording::Recording;
 use crate::backend::Backend;
 use crate::error::Result;
+pub use crate::extent::Extent;
 use std::collections::BTreeMap;
 
 /// What every context's description holds: its largest frame, as `max_width`, `max_height` and

@@ -1,9 +1,9 @@
 //! What a frame reads and writes, for every context: the caller's buffers or images, how a depth
 //! image encodes depth, and the buffers that image inputs and outputs go through on the device.
 
-use super::extent::Extent;
 use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, RetireQueue, RunKernel, groups_for};
 use crate::error::{Error, Result};
+use crate::extent::Extent;
 use dof_shaders::frame_io::{
     DEPTH_F32, DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FROM_IMAGES, FRONT, FrameIoParams, TO_RGBA, frame_from_images,
     frame_front, frame_to_rgba,
@@ -170,14 +170,9 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
         return Err(Error::InvalidArgument(format!("an empty {}x{} frame with {layers} layers", f.width, f.height)));
     }
     if !max.holds(f.width, f.height, layers) {
-        return Err(Error::InvalidArgument(format!(
-            "a {}x{} frame with {layers} layers exceeds the context's {}x{} with {} (resize the context)",
-            f.width, f.height, max.width, max.height, max.layers
-        )));
+        return Err(Error::ResizeNeeded { frame: Extent::new(f.width, f.height, layers), context: max });
     }
-    if !f.lens.is_valid() {
-        return Err(Error::InvalidArgument(format!("invalid lens: {:?}", f.lens)));
-    }
+    crate::lens::check(&f.lens)?;
     let pixels = f.width as u64 * f.height as u64;
     let mut buffers = Vec::new();
     let mut images = Vec::new();
@@ -304,7 +299,7 @@ impl Owned {
     /// belong to someone else.
     pub fn check(&self, backend: &dyn Backend) -> Result<()> {
         match self.owner {
-            Some(owner) if owner != backend.id() => Err(Error::InvalidArgument(format!(
+            Some(owner) if owner != backend.id() => Err(Error::WrongBackend(format!(
                 "this context was made on another backend than the {} backend it was handed (contexts are tied to the backend that made them)",
                 backend.kind()
             ))),

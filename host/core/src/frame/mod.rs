@@ -37,7 +37,6 @@
 
 pub mod bokeh;
 pub mod context;
-mod extent;
 pub mod gather;
 mod in_flight;
 pub mod io;

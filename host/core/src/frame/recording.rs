@@ -173,7 +173,7 @@ impl Recording {
     /// device, inside the caller's command buffer).
     pub fn encode(&self, backend: &mut dyn Backend) -> Result<()> {
         if backend.id() != self.backend {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::WrongBackend(format!(
                 "a recording made for another backend was handed the {} backend (recordings are tied to their context's backend)",
                 backend.kind()
             )));
@@ -217,7 +217,7 @@ impl Capture<'_> {
     }
 
     fn refused(&self, what: &str) -> Error {
-        Error::InvalidArgument(format!("{what} while recording a frame (a frame only records commands)"))
+        Error::RecordingState(format!("{what} while recording a frame (a frame only records commands)"))
     }
 }
 

@@ -228,9 +228,7 @@ impl RendererPeel {
     /// command written.
     pub fn begin(&mut self, backend: &mut dyn Backend, lens: &ThinLens) -> Result<()> {
         self.check(backend)?;
-        if !lens.is_valid() {
-            return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
-        }
+        crate::lens::check(lens)?;
         self.lens = *lens;
         let pixels = self.desc.width as u64 * self.desc.height as u64;
         self.slots.begin(backend)?;

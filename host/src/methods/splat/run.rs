@@ -61,9 +61,7 @@ pub fn splat_with_stages(backend: &mut dyn Backend, image: &LayeredImage, lens: 
 }
 
 fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions, keep_stages: bool) -> Result<SplatOutput> {
-    if !lens.is_valid() {
-        return Err(Error::InvalidArgument(format!("invalid lens: {lens:?}")));
-    }
+    crate::lens::check(lens)?;
     crate::frame::splat::check_options(options)?;
     let (w, h, layers) = (image.width, image.height, image.max_layers);
     if w == 0 || h == 0 || layers == 0 {

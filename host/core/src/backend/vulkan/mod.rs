@@ -506,7 +506,7 @@ impl VulkanBackend {
     /// recording uses stays alive until it completed.
     pub unsafe fn begin_external(&mut self, cb: vk::CommandBuffer) -> Result<()> {
         if self.recorder.is_external() {
-            return Err(Error::InvalidArgument(
+            return Err(Error::RecordingState(
                 "begin_external: already recording into a caller's command buffer; call end_external first".into(),
             ));
         }
@@ -552,7 +552,7 @@ impl VulkanBackend {
     /// buffers destroyed or given back while it could still run).
     pub fn end_external(&mut self) -> Result<()> {
         let Some(cb) = self.recorder.external_command_buffer() else {
-            return Err(Error::InvalidArgument("end_external without begin_external".into()));
+            return Err(Error::RecordingState("end_external without begin_external".into()));
         };
         let event = match self.spare_events.pop() {
             Some(event) => Ok(event),
@@ -717,7 +717,7 @@ impl VulkanBackend {
     /// An error for `what`, which needs the backend's own command buffer, during an external recording.
     fn refuse_external(&self, what: &str) -> Result<()> {
         if self.recorder.is_external() {
-            return Err(Error::InvalidArgument(format!(
+            return Err(Error::RecordingState(format!(
                 "{what} is not allowed while recording into the caller's command buffer (between begin_external and \
                  end_external): it would submit or allocate; do it before begin_external or after end_external"
             )));
@@ -930,9 +930,9 @@ impl Backend for VulkanBackend {
     }
     fn check_frame_recording(&self) -> Result<()> {
         if self.device.is_borrowed() && !self.recorder.is_external() {
-            return Err(Error::InvalidArgument(
+            return Err(Error::RecordingState(
                 "a frame on a backend wrapping the caller's device must be recorded into the caller's command buffer: \
-                 call begin_external first (and end_external after)"
+                 call record_into (or begin_external) first"
                     .into(),
             ));
         }

@@ -9,6 +9,13 @@ pub struct Extent {
     pub layers: u32,
 }
 
+impl std::fmt::Display for Extent {
+    /// `1920x1080 with 4 layers`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}x{} with {} layer{}", self.width, self.height, self.layers, if self.layers == 1 { "" } else { "s" })
+    }
+}
+
 impl Extent {
     pub fn new(width: u32, height: u32, layers: u32) -> Self {
         Extent { width, height, layers }

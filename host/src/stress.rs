@@ -39,10 +39,10 @@ pub enum Expect {
     Energy(f32),
     /// Two runs give the same image bit for bit.
     Deterministic,
-    /// A finite result, or a `TooLarge`/`InvalidArgument` error.
+    /// A finite result, or a `TooLarge`/`InvalidArgument`/`InvalidLens` error.
     ResultOrClearError,
-    /// An `InvalidArgument` error (methods that use the lens).
-    InvalidArgument,
+    /// An `InvalidLens` error (methods that use the lens).
+    InvalidLens,
 }
 
 pub struct Case {
@@ -445,8 +445,8 @@ pub fn cases() -> Vec<Case> {
         },
         Case {
             name: "degenerate-lens",
-            expectation: "focus distance below the focal length: an InvalidArgument error",
-            expect: Expect::InvalidArgument,
+            expectation: "focus distance below the focal length: an InvalidLens error",
+            expect: Expect::InvalidLens,
             build: || (noise_image(16, 16, 1, varied), ThinLens { focus_distance: 0.01, ..test_lens(0.01) }),
         },
     ]
@@ -494,16 +494,19 @@ impl Case {
         let input = input(img, lens);
         let Some(setting) = method.settings(true).pop() else { return Outcome::NotApplicable("no setting") };
         let result = method.run(backend, &input, &setting);
-        if !method.uses_backend() && self.expect == Expect::InvalidArgument {
+        if !method.uses_backend() && self.expect == Expect::InvalidLens {
             return Outcome::NotApplicable("the method ignores the lens");
         }
         let out = match (result, self.expect) {
-            (Err(Error::Core(CoreError::InvalidArgument(m))), Expect::InvalidArgument) => return Outcome::Pass(format!("error: {m}")),
-            (Err(e @ Error::Core(CoreError::TooLarge { .. } | CoreError::InvalidArgument(_))), Expect::ResultOrClearError) => {
+            (Err(Error::Core(CoreError::InvalidLens(m))), Expect::InvalidLens) => return Outcome::Pass(format!("error: {m}")),
+            (
+                Err(e @ Error::Core(CoreError::TooLarge { .. } | CoreError::InvalidArgument(_) | CoreError::InvalidLens(_))),
+                Expect::ResultOrClearError,
+            ) => {
                 return Outcome::Pass(format!("error: {e}"));
             }
             (Err(e), _) => return Outcome::Fail(format!("error: {e}")),
-            (Ok(_), Expect::InvalidArgument) => return Outcome::Fail("no error for an invalid lens".into()),
+            (Ok(_), Expect::InvalidLens) => return Outcome::Fail("no error for an invalid lens".into()),
             (Ok(out), _) => out.image,
         };
         let front = &input.front;
@@ -622,7 +625,7 @@ impl Case {
             }
             Expect::Finite | Expect::ResultOrClearError => Outcome::Pass("finite".into()),
             Expect::NoSpread => Outcome::Pass("nothing spread".into()),
-            Expect::InvalidArgument => Outcome::Fail("unreachable".into()),
+            Expect::InvalidLens => Outcome::Fail("unreachable".into()),
         }
     }
 }

@@ -136,7 +136,7 @@ fn bad_options_are_errors() {
     ];
     for (options, lens) in bad {
         let err = raytrace(&mut cpu, &img, &lens, &options).err().expect("an error");
-        assert!(matches!(err, CoreError::InvalidArgument(_)), "{err}");
+        assert!(matches!(err, CoreError::InvalidArgument(_) | CoreError::InvalidLens(_)), "{err}");
     }
     assert!(
         LayeredImage::new(0, 4, 1).is_err()

@@ -425,7 +425,9 @@ fn photographic_and_radius_settings_give_the_same_blur_as_the_camera_geometry() 
 
 fn is_invalid<T: std::fmt::Debug>(r: dof::Result<T>, needle: &str) {
     match r {
-        Err(dof::Error::Core(CoreError::InvalidArgument(m))) => assert!(m.contains(needle), "message `{m}` lacks `{needle}`"),
+        Err(dof::Error::Core(CoreError::InvalidArgument(m) | CoreError::InvalidLens(m))) => {
+            assert!(m.contains(needle), "message `{m}` lacks `{needle}`")
+        }
         other => panic!("expected an invalid-argument error mentioning `{needle}`, got {other:?}"),
     }
 }

@@ -17,6 +17,7 @@ pub enum Error {
     NoVulkan(String),
     #[error("the Khronos validation layer was requested but is not installed\n  hint: `apt-get install vulkan-validationlayers`")]
     NoValidationLayer,
+    #[cfg(feature = "vulkan")]
     #[error("Vulkan call {call} failed: {result}")]
     Vulkan { call: &'static str, result: ash::vk::Result },
     #[error("GPU memory allocation failed: {0}")]
@@ -53,10 +54,12 @@ pub enum Error {
 pub type Result<T> = std::result::Result<T, Error>;
 
 /// Turns a failed ash call into an [`Error::Vulkan`] naming the call.
+#[cfg(feature = "vulkan")]
 pub(crate) trait VkContext<T> {
     fn vk(self, call: &'static str) -> Result<T>;
 }
 
+#[cfg(feature = "vulkan")]
 impl<T> VkContext<T> for std::result::Result<T, ash::vk::Result> {
     fn vk(self, call: &'static str) -> Result<T> {
         self.map_err(|result| Error::Vulkan { call, result })

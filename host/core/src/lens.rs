@@ -123,8 +123,8 @@ pub fn check(lens: &ThinLens) -> Result<()> {
         Ok(())
     } else {
         Err(Error::InvalidLens(format!(
-            "{lens:?} (needs 0 < focal_length < focus_distance, aperture_radius >= 0 and pixels_per_unit > 0, all finite, \
-             with a finite far-field blur)"
+            "the lens {lens:?} cannot be evaluated (it needs 0 < focal_length < focus_distance, aperture_radius >= 0 and \
+             pixels_per_unit > 0, all finite, with a finite far-field blur)"
         )))
     }
 }

@@ -21,8 +21,9 @@
 //!
 //! # Features
 //!
-//! Without features this builds on stable Rust from the prebuilt SPIR-V, without rust-gpu. `png`
-//! reads aperture masks from PNG files; `rebuild-spirv` compiles the kernels to SPIR-V with rust-gpu
+//! By default this builds on stable Rust from the prebuilt SPIR-V, without rust-gpu. `vulkan` (on
+//! by default) is the Vulkan backend and the caller's Vulkan images: without it the core is the CPU
+//! backend alone and builds no Vulkan crate. `png` reads aperture masks from PNG files; `rebuild-spirv` compiles the kernels to SPIR-V with rust-gpu
 //! (pinned nightly) instead of embedding the prebuilt modules; `testing` adds `testing`, what only
 //! the project's suites use (on inside the workspace, through the tests crate).
 
@@ -41,7 +42,9 @@ pub mod testing;
 
 pub use error::{Error, Result};
 
-pub use backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
+pub use backend::{Backend, CpuBackend};
+#[cfg(feature = "vulkan")]
+pub use backend::{VulkanBackend, VulkanOptions};
 /// The kernel crate, so that integrators use the kernel types of the version this crate was built with.
 pub use dof_shaders;
 pub use dof_shaders::lens::ThinLens;

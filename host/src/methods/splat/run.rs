@@ -6,6 +6,8 @@
 //! lists overflow the default pool, this path runs it again with a pool as large as the frame
 //! wanted, so its result is always whole.
 
+#[cfg(feature = "testing")]
+use crate::backend::BufferId;
 use crate::backend::{Backend, CommandTime, with_buffers};
 use crate::frame::DofContext;
 use crate::frame::splat::{MAX_LIST_ENTRIES, SplatContext, SplatContextDesc};
@@ -53,8 +55,9 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
     run(backend, image, lens, options, false)
 }
 
-/// [`splat`], keeping every stage's buffers apart (two more list-sized buffers) and reading them
-/// back as the output's `intermediates`: for comparing backends stage by stage (feature `testing`).
+/// [`splat`], reading every stage's buffers back as the output's `intermediates`: for comparing
+/// backends stage by stage (feature `testing`). The frame's recording is encoded in parts, each
+/// submitted, so that a buffer a later stage reuses is read as its own stage left it.
 #[cfg(feature = "testing")]
 pub fn splat_with_stages(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions) -> Result<SplatOutput> {
     run(backend, image, lens, options, true)
@@ -71,7 +74,7 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
     options.footprint_side = options.footprint_side.max(image.footprint_grid());
     let mut desc = SplatContextDesc::new(w, h, layers, options);
     // The context checks the bounds (and refuses) before the input is uploaded.
-    let first = context(backend, &desc, keep_stages)?;
+    let first = SplatContext::new(backend, &desc)?;
     let pixels = w as u64 * h as u64;
     let input = slot_words(image);
     let sizes = [(input.len() as u64, "splat/input"), (pixels, "splat/input-counts"), (3 * pixels, "splat/out")];
@@ -85,15 +88,15 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
         loop {
             let mut ctx = match first.take() {
                 Some(ctx) => ctx,
-                None => context(backend, &desc, keep_stages)?,
+                None => SplatContext::new(backend, &desc)?,
             };
             let ran = (|| {
-                ctx.record(backend, &frame)?;
-                let stages = backend.submit()?;
+                let (parts, mut stages) = record_frame(backend, &mut ctx, &frame, keep_stages)?;
+                stages.extend(backend.submit()?);
                 let report = ctx.report(backend)?;
-                Ok::<_, Error>((stages, report))
+                Ok::<_, Error>((stages, report, parts))
             })();
-            let (stages, mut report) = match ran {
+            let (stages, mut report, _parts) = match ran {
                 Ok(r) => r,
                 Err(e) => {
                     ctx.destroy(backend);
@@ -121,7 +124,10 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
                 report.input_fragments = Some(image.counts.iter().map(|&n| n.min(layers) as u64).sum());
                 let out = read_rgb(backend, io[2], w, h)?;
                 #[cfg(feature = "testing")]
-                let inter = if keep_stages { Some(intermediates(backend, &ctx, &report)?) } else { None };
+                let inter = match _parts {
+                    Some(parts) => Some(intermediates(backend, &ctx, &report, parts)?),
+                    None => None,
+                };
                 Ok(SplatOutput {
                     image: out,
                     report,
@@ -141,30 +147,76 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
     result
 }
 
-/// A splatting context; one that keeps each stage's buffers apart where `keep_stages` (only with
-/// the feature `testing`, which `splat_with_stages` needs).
-fn context(backend: &mut dyn Backend, desc: &SplatContextDesc, keep_stages: bool) -> Result<SplatContext> {
-    #[cfg(feature = "testing")]
-    if keep_stages {
-        return dof_core::testing::splat_context_with_distinct_stages(backend, desc);
+/// Records the frame. Where `keep_stages` (feature `testing`), encodes its recording in parts
+/// instead, each but the last submitted, and returns what each stage's buffers held as the stage
+/// left them, and the times of the parts submitted.
+#[cfg(feature = "testing")]
+fn record_frame(
+    backend: &mut dyn Backend,
+    ctx: &mut SplatContext,
+    frame: &Frame,
+    keep_stages: bool,
+) -> Result<(Option<StageReads>, Vec<CommandTime>)> {
+    if !keep_stages {
+        return ctx.record(backend, frame).map(|_| (None, Vec::new()));
     }
-    debug_assert!(!keep_stages, "keeping every stage needs the feature `testing`");
-    SplatContext::new(backend, desc)
+    let s = dof_core::testing::stage_buffers(ctx);
+    let recording = ctx.recording(backend, frame)?;
+    // A buffer a later stage reuses is read before that stage's first command: the cells (where
+    // binning writes the keys) before binning, the offsets (where the sort writes the sorted
+    // values) and the binned lists before the sort; the rest once the frame is done.
+    let points: [(&str, &[BufferId]); 2] = [("splat/bin", &[s.cells]), ("sort/", &[s.offsets, s.keys, s.values])];
+    let mut reads = StageReads::default();
+    let mut times = Vec::new();
+    let mut next = 0;
+    for (stage, buffers) in points {
+        let at = recording.commands().iter().position(|c| c.label() == stage || (stage.ends_with('/') && c.label().starts_with(stage)));
+        let at = at.ok_or_else(|| Error::InvalidArgument(format!("the splatting frame has no stage `{stage}`")))?;
+        recording.commands()[next..at].iter().try_for_each(|c| c.encode(backend))?;
+        times.extend(backend.submit()?);
+        for &id in buffers {
+            let words = backend.buffer_words(id)?;
+            reads.0.insert(id_key(stage, id), backend.read_buffer(id, 0, words)?);
+        }
+        next = at;
+    }
+    recording.commands()[next..].iter().try_for_each(|c| c.encode(backend))?;
+    Ok((Some(reads), times))
+}
+
+#[cfg(not(feature = "testing"))]
+fn record_frame(
+    backend: &mut dyn Backend,
+    ctx: &mut SplatContext,
+    frame: &Frame,
+    _keep_stages: bool,
+) -> Result<(Option<()>, Vec<CommandTime>)> {
+    ctx.record(backend, frame).map(|_| (None, Vec::new()))
+}
+
+/// What a stage's buffers held as the stage left them, by the stage read before and the buffer.
+#[cfg(feature = "testing")]
+#[derive(Default)]
+struct StageReads(std::collections::HashMap<(String, u32), Vec<u32>>);
+
+#[cfg(feature = "testing")]
+fn id_key(stage: &str, id: BufferId) -> (String, u32) {
+    (stage.to_string(), id.0)
 }
 
 #[cfg(feature = "testing")]
-fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatReport) -> Result<Intermediates> {
+fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatReport, mut parts: StageReads) -> Result<Intermediates> {
     let s = dof_core::testing::stage_buffers(ctx);
-    let mut whole = |id| {
-        let words = backend.buffer_words(id)?;
-        backend.read_buffer(id, 0, words)
+    let mut early = |stage: &str, id: BufferId| {
+        parts.0.remove(&id_key(stage, id)).ok_or_else(|| Error::InvalidArgument(format!("buffer {} was not read before `{stage}`", id.0)))
     };
     let p = s.params.ok_or_else(|| Error::InvalidArgument("the splatting context has recorded no frame".into()))?;
-    // Kept apart, the cells' buffer holds the frame's cells' counts, then their widest radii.
+    // Before binning, the cells' buffer holds the frame's cells' counts, then their widest radii.
     let n = (p.cells_x * p.cells_y) as usize;
-    let mut counts = whole(s.cells)?;
+    let mut counts = early("splat/bin", s.cells)?;
     counts.truncate(n);
-    let offsets = backend.read_buffer(s.offsets, 0, n as u64)?;
+    let mut offsets = early("sort/", s.offsets)?;
+    offsets.truncate(n);
     let tiles = report.tiles as u64;
     let tile_count = backend.read_buffer(s.tile_count, 0, tiles)?;
     // The dense array with each cell region's unused tail left out (what lies there is whatever
@@ -177,15 +229,11 @@ fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatRe
     dense.extend_from_slice(&all[words * p.dense_slots() as usize..]);
     let cells = vec![(counts, offsets)];
     let segments = backend.read_buffer(s.segments, 0, 2 * tiles)?;
-    let mut lists = |keys, values| -> Result<(Vec<u32>, Vec<u32>)> {
-        let (all_k, all_v) =
-            (backend.read_buffer(keys, 0, backend.buffer_words(keys)?)?, backend.read_buffer(values, 0, backend.buffer_words(values)?)?);
-        let pick = |all: &[u32]| {
-            segments.as_chunks::<2>().0.iter().flat_map(|s| all[s[0] as usize..(s[0] + s[1]) as usize].iter().copied()).collect()
-        };
-        Ok((pick(&all_k), pick(&all_v)))
+    let pick = |all: &[u32]| -> Vec<u32> {
+        segments.as_chunks::<2>().0.iter().flat_map(|s| all[s[0] as usize..(s[0] + s[1]) as usize].iter().copied()).collect()
     };
-    let binned = lists(s.keys, s.values)?;
-    let sorted = lists(s.keys_sorted, s.values_sorted)?;
+    let binned = (pick(&early("sort/", s.keys)?), pick(&early("sort/", s.values)?));
+    let mut whole = |id| backend.read_buffer(id, 0, backend.buffer_words(id)?);
+    let sorted = (pick(&whole(s.keys_sorted)?), pick(&whole(s.values_sorted)?));
     Ok(Intermediates { cells, tile_count, dense, list_lengths: segments.as_chunks::<2>().0.iter().map(|s| s[1]).collect(), binned, sorted })
 }

@@ -91,12 +91,10 @@ struct Buffers {
     stats: BufferId,
     sharp: BufferId,
     /// Per cell of the frame (a pixel, or a merged 2x2 or 4x4 block): its fragment count, then its
-    /// widest radius; then the unsorted list keys (unless the context keeps every stage apart:
-    /// `SplatContext::distinct_stages`).
+    /// widest radius; then the unsorted list keys.
     cells: BufferId,
     /// Per cell, its offset in its tile, then its widest radius again, for binning (which writes its
-    /// keys over `cells`); then the sorted list values (in `values_sorted`, unless every stage is
-    /// kept apart).
+    /// keys over `cells`); then the sorted list values (in `values_sorted`).
     offsets: BufferId,
     tile_count: BufferId,
     tile_radius: BufferId,
@@ -133,9 +131,6 @@ pub struct SplatContext {
     in_flight: InFlight<Frame>,
     /// The registry name it records as (`multilayer`, or `tiled` when handed front layers).
     name: &'static str,
-    /// Each stage's buffers kept apart instead of one stage's reused for a later one (two more
-    /// list-sized buffers): only for tests that compare every stage (`crate::testing`).
-    distinct_stages: bool,
     /// Whether the backend runs on llvmpipe (lavapipe), whose loop limit long lists reach
     /// ([`LLVMPIPE_SAFE_LIST`]); the driver is known at creation.
     llvmpipe: bool,
@@ -178,11 +173,6 @@ fn cells(width: u32, height: u32, layers: u32, steps: u32) -> (u32, u32, u32, u3
 impl SplatContext {
     /// Creates the context: checks the options and bounds, and allocates every buffer.
     pub fn new(backend: &mut dyn Backend, desc: &SplatContextDesc) -> Result<Self> {
-        Self::build(backend, desc, false)
-    }
-
-    /// [`Self::new`], keeping each stage's buffers apart where `distinct_stages` says so.
-    pub(crate) fn build(backend: &mut dyn Backend, desc: &SplatContextDesc, distinct_stages: bool) -> Result<Self> {
         let radius_cap = check_options(&desc.options)?;
         let (w, h, layers) = (desc.max_width, desc.max_height, desc.max_layers);
         if w == 0 || h == 0 || layers == 0 {
@@ -222,7 +212,7 @@ impl SplatContext {
         let sort = SegmentedSort::in_flight(backend, tiles as u32, list_entries as u32, max_list, desc.frames_in_flight)?;
         // The sorted keys are written and never read by a later stage: where the sort has a key
         // scratch for its long lists, they share it (see `SegmentedSort::scratch_keys`).
-        let sorted_keys_in_scratch = sort.scratch_keys().filter(|_| !distinct_stages);
+        let sorted_keys_in_scratch = sort.scratch_keys();
         let mut owned = Owned::default();
         let built = (|| {
             // Fragments are stored once, in the dense array (worst case: every slot blurred and
@@ -231,12 +221,7 @@ impl SplatContext {
             let cell_words = 2 * fx as u64 * fy as u64;
             // Nothing reads the cells' counts and radii after the tile counts: the unsorted list
             // keys that binning writes go there (the buffer grows to the pool if need be).
-            let keys_in_cells = !distinct_stages;
-            let (cells_buf, cells_label) = match keys_in_cells {
-                true => (cell_words.max(list_entries), "splat/cell-counts, keys"),
-                false => (cell_words, "splat/cell-counts"),
-            };
-            let cells_buf = owned.make(backend, cells_buf, cells_label)?;
+            let cells_buf = owned.make(backend, cell_words.max(list_entries), "splat/cell-counts, keys")?;
             let footprint_words = match desc.options.footprint_side {
                 0 => 0,
                 side => footprint_words(slots as u32, side) as u64,
@@ -249,14 +234,8 @@ impl SplatContext {
             let segments = per_frame(&mut owned, backend, desc.frames_in_flight, 2 * tiles, "splat/segments")?;
             // The cells' offsets are read by binning and by nothing after it: the sorted list values
             // go there (the buffer grows to the cells if need be).
-            let values_sorted = match distinct_stages {
-                false => owned.make(backend, list_entries.max(cell_words), "splat/cell-offsets, values-sorted")?,
-                true => owned.make(backend, list_entries, "splat/values-sorted")?,
-            };
-            let offsets = match distinct_stages {
-                false => values_sorted,
-                true => owned.make(backend, cell_words, "splat/cell-offsets")?,
-            };
+            let values_sorted = owned.make(backend, list_entries.max(cell_words), "splat/cell-offsets, values-sorted")?;
+            let offsets = values_sorted;
             let b = Buffers {
                 stats: stats[0],
                 sharp: owned.make(backend, 4 * pixels, "splat/sharp")?,
@@ -270,7 +249,7 @@ impl SplatContext {
                 segments: segments[0],
                 dense,
                 mask: owned.make(backend, mask_words.len() as u64, "splat/aperture-mask")?,
-                keys: if keys_in_cells { cells_buf } else { owned.make(backend, list_entries, "splat/keys")? },
+                keys: cells_buf,
                 values: owned.make(backend, list_entries, "splat/values")?,
                 keys_sorted: match sorted_keys_in_scratch {
                     Some(scratch) => scratch,
@@ -309,7 +288,6 @@ impl SplatContext {
             reports,
             in_flight,
             name: "multilayer",
-            distinct_stages,
             llvmpipe: backend.driver().contains("llvmpipe"),
             serial: backend.limits().serial_invocations,
         };
@@ -396,7 +374,7 @@ impl SplatContext {
     pub fn resize(&mut self, backend: &mut dyn Backend, max_width: u32, max_height: u32, max_layers: u32) -> Result<()> {
         self.owned.check(backend)?;
         let desc = self.desc.at(Extent::new(max_width, max_height, max_layers));
-        let fresh = SplatContext::build(backend, &desc, self.distinct_stages)?.named(self.name);
+        let fresh = SplatContext::new(backend, &desc)?.named(self.name);
         let old = std::mem::replace(self, fresh);
         old.destroy(backend);
         Ok(())
@@ -643,7 +621,7 @@ impl DofContext for SplatContext {
         let wanted = report.entries_wanted().max(2 * entries).min(MAX_LIST_ENTRIES);
         let desc =
             SplatContextDesc { list_entries: Some(wanted), max_list: Some(max_list.max(report.longest_list_wanted)), ..self.desc.clone() };
-        let grown = SplatContext::build(backend, &desc, self.distinct_stages)?.named(self.name);
+        let grown = SplatContext::new(backend, &desc)?.named(self.name);
         std::mem::replace(self, grown).destroy(backend);
         Ok(true)
     }

@@ -6,7 +6,7 @@
 use std::path::PathBuf;
 
 use dof::backend::Backend;
-use dof::frame::{BokehOptions, LayeredOptions, METHODS, Merge, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
+use dof::frame::{BokehOptions, LayeredOptions, METHODS, Merge, MethodInfo, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
 use dof::io::SanitizeCounts;
 use dof::layers::{Fragment, LayeredImage, RgbImage};
 use dof::methods::one_shot::one_shot;
@@ -38,7 +38,8 @@ fn value_error(msg: impl Into<String>) -> PyErr {
     PyValueError::new_err(msg.into())
 }
 
-/// The options `blur` takes besides the lens, with the CLI flag each one is.
+/// The options `blur` takes besides the lens, with the CLI flag each one is, and the methods that
+/// take it (`max_coc` and `aperture`: as the registry says).
 const OPTIONS: &[(&str, &str)] = &[
     ("tile", "--tile: tile edge in pixels, 16, 24 or 32 (tiled, multilayer)"),
     ("merge", "--merge: fragment merging, 'none', '2x2' or '4x4' (tiled, multilayer)"),
@@ -52,8 +53,23 @@ const OPTIONS: &[(&str, &str)] = &[
     ("layers_per_doubling", "--layers-per-doubling: layered DoF, 1 to 4"),
 ];
 
+/// Whether `method` takes the option `key` (a name of [`OPTIONS`]), as `dof render` decides for its
+/// flags: an option another method takes is refused rather than ignored.
+fn takes(method: &MethodInfo, key: &str) -> bool {
+    match key {
+        "tile" | "merge" => ["multilayer", "tiled"].contains(&method.name),
+        "max_coc" => method.caps_coc,
+        "aperture" => method.shaped_aperture,
+        "rings" => method.knob.is_some_and(|k| k.name == "rings"),
+        "lum_threshold" | "sprites" => method.name == "bokeh",
+        "spp" | "samples" => method.name == "raytrace",
+        "no_cascade" | "layers_per_doubling" => method.name == "layered",
+        _ => true,
+    }
+}
+
 /// The frame API's options from `blur`'s keyword options, as `dof render` makes them from its flags.
-fn method_options(options: Option<&Bound<'_, PyDict>>) -> PyResult<MethodOptions> {
+fn method_options(method: &MethodInfo, options: Option<&Bound<'_, PyDict>>) -> PyResult<MethodOptions> {
     let mut tile = 16u32;
     let mut merge = Merge::None;
     let mut max_coc: Option<u32> = None;
@@ -68,6 +84,10 @@ fn method_options(options: Option<&Bound<'_, PyDict>>) -> PyResult<MethodOptions
         for (key, value) in options.iter() {
             let key: String = key.extract()?;
             let bad = |e: PyErr| value_error(format!("option {key}: {e}"));
+            if !takes(method, &key) {
+                let others: Vec<&str> = METHODS.iter().filter(|m| takes(m, &key)).map(|m| m.name).collect();
+                return Err(value_error(format!("option {key} applies to {} only; {} does not take it", others.join(", "), method.name)));
+            }
             match key.as_str() {
                 "tile" => tile = value.extract().map_err(bad)?,
                 "merge" => {
@@ -310,7 +330,7 @@ fn blur<'py>(
     options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyArray3<f32>>> {
     let info = dof::frame::registry::method(method).map_err(py_err)?;
-    let options = method_options(options)?;
+    let options = method_options(info, options)?;
     if depth.is_none() {
         return Err(value_error(
             "blur needs a second array: an RGB image needs a float depth array (H, W), a multi-layer one its counts (H, W); got None"

@@ -341,6 +341,11 @@ def test_options_reach_the_method():
     assert np.abs(a - b).max() > 1e-3
     merged = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5, merge="4x4", tile=32, aperture="blades:6")
     assert merged.shape == rgb.shape
+    # An option of another method is refused, not ignored, as the CLI refuses its flag.
+    for method, option in [("gather", {"merge": "4x4"}), ("tiled", {"no_cascade": True}), ("ring-gather", {"spp": 4}),
+                           ("multilayer", {"rings": 2}), ("gather", {"aperture": "blades:6"})]:
+        with pytest.raises(ValueError, match=f"option {next(iter(option))} applies to .* only; {method} does not take it"):
+            dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5, method=method, **option)
 
 
 def test_readme_example(tmp_path, monkeypatch):

@@ -306,6 +306,8 @@ fn the_viewer_refuses_bad_input_clearly() {
         (vec!["--scene", wide_exr.to_str().unwrap(), "--focus", "3", "--f-number", "2"], "declares 100000x1 pixels"),
         (vec!["--frames", "2", "--script", "method=tiled,method=gather,method=bokeh"], "--script has 3 steps"),
         (vec!["--scene", deep.as_str(), "--focus", "3", "--f-number", "2", "--width", "320"], "opens at its own size (48x32)"),
+        (vec!["--scene", "in/shot-####.exr", "--focus", "3", "--f-number", "2"], "one EXR image, not a sequence"),
+        (vec!["--scene", "in/shot-%04d.exr", "--focus", "3", "--f-number", "2"], "(a sequence, in/shot-####.exr, is for `dof render`)"),
     ] {
         let out = dof().arg("view").args(&args).env_remove("DISPLAY").output().unwrap();
         let err = String::from_utf8_lossy(&out.stderr);

@@ -290,7 +290,7 @@ impl ExrFile {
         let image = guarded(path, || {
             file.seek(SeekFrom::Start(0)).map_err(|e| fs_error("read", path, &e))?;
             let meta = MetaData::read_from_buffered(BufReader::new(&mut file), false).map_err(|e| exr_error(path, e))?;
-            check_declared_size(path, &meta)?;
+            let slots = check_declared_size(path, &meta)?;
             let mut announced: u128 = 0;
             for header in &meta.headers {
                 announced += header.layer_size.area() as u128 * header.channels.bytes_per_pixel as u128;
@@ -303,6 +303,9 @@ impl ExrFile {
                     announced >> 20
                 )));
             }
+            // Decoding holds every channel of every part, and the layered image its slots.
+            let image_bytes = slots as u128 * (std::mem::size_of::<crate::layers::Fragment>() as u128 + 4);
+            check_free(path, announced + image_bytes, available_memory())?;
             for (i, header) in meta.headers.iter().enumerate() {
                 let part = header.own_attributes.layer_name.as_ref().map_or(format!("part {i}"), |n| format!("part `{n}`"));
                 if header.deep {
@@ -573,7 +576,7 @@ pub fn check_exr_header(path: impl AsRef<Path>) -> Result<()> {
     let path = path.as_ref();
     let file = open_regular(path)?;
     let meta = guarded(path, || MetaData::read_from_buffered(BufReader::new(file), false).map_err(|e| exr_error(path, e)))?;
-    check_declared_size(path, &meta)
+    check_declared_size(path, &meta).map(drop)
 }
 
 /// The name a channel is known by: in a multi-part file the part name (or `part<index>`) is
@@ -593,8 +596,8 @@ pub const MAX_EXR_SLOTS: u64 = crate::layers::MAX_SLOTS;
 /// Refuses, from the headers alone (before any pixel is decoded or allocated), a file whose data
 /// window is wider or taller than [`MAX_EXR_EDGE`], or whose pixels times depth layers (the
 /// complete colour-and-depth layers its channel names announce, at least one) exceed
-/// [`MAX_EXR_SLOTS`].
-fn check_declared_size(path: &Path, meta: &MetaData) -> Result<()> {
+/// [`MAX_EXR_SLOTS`]. Returns the most slots a part declares.
+fn check_declared_size(path: &Path, meta: &MetaData) -> Result<u64> {
     let multi_part = meta.headers.len() > 1;
     let names: Vec<String> = meta
         .headers
@@ -605,6 +608,7 @@ fn check_declared_size(path: &Path, meta: &MetaData) -> Result<()> {
         })
         .collect();
     let layers = group_channels(&names).iter().filter(|g| g.is_complete()).count().max(1) as u64;
+    let mut most = 0;
     for (i, header) in meta.headers.iter().enumerate() {
         let (w, h) = (header.layer_size.x(), header.layer_size.y());
         let slots = (w as u64).saturating_mul(h as u64).saturating_mul(layers);
@@ -616,8 +620,33 @@ fn check_declared_size(path: &Path, meta: &MetaData) -> Result<()> {
                 path.display()
             )));
         }
+        most = most.max(slots);
     }
-    Ok(())
+    Ok(most)
+}
+
+/// Refuses, before decoding, a file whose decoding needs more than the `free` bytes of memory the
+/// machine has (where it says: `None` skips the check): a clear error instead of an abort.
+fn check_free(path: &Path, needed: u128, free: Option<u64>) -> Result<()> {
+    match free {
+        Some(free) if needed > free as u128 => Err(Error::invalid(format!(
+            "{}: decoding it needs about {:.1} GiB of memory (every channel of every part, then the layered image), and \
+             this machine has {:.1} GiB free; refused before decoding",
+            path.display(),
+            needed as f64 / (1u64 << 30) as f64,
+            free as f64 / (1u64 << 30) as f64
+        ))),
+        _ => Ok(()),
+    }
+}
+
+/// The memory the machine has free for a new allocation (`MemAvailable` of `/proc/meminfo`), where
+/// the system says.
+fn available_memory() -> Option<u64> {
+    let info = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = info.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    kib.checked_mul(1024)
 }
 
 /// A header announcing more pixel data than this many times the file size plus
@@ -778,4 +807,21 @@ pub(super) fn list(names: &[String]) -> String {
         s += &format!(" and {} more", names.len() - SHOWN);
     }
     if s.is_empty() { "(none)".to_string() } else { s }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_file_needing_more_memory_than_is_free_is_refused_before_decoding() {
+        let path = Path::new("big.exr");
+        let e = check_free(path, 18 << 30, Some(16 << 30)).unwrap_err().to_string();
+        assert!(e.contains("needs about 18.0 GiB") && e.contains("16.0 GiB free"), "{e}");
+        assert!(check_free(path, 1 << 30, Some(16 << 30)).is_ok());
+        assert!(check_free(path, u128::MAX, None).is_ok(), "no figure from the system: no check");
+        if cfg!(target_os = "linux") {
+            assert!(available_memory().is_some_and(|b| b > 0));
+        }
+    }
 }

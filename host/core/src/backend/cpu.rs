@@ -262,7 +262,7 @@ impl Backend for CpuBackend {
             return Err(Error::TooLarge { what: "buffer on the CPU backend".into(), size: words * 4, limit: self.limits.max_buffer_bytes });
         }
         self.counters.check_budget(self.budget, words * 4, label)?;
-        let buffer: Box<[AtomicU32]> = (0..words).map(|_| AtomicU32::new(0)).collect();
+        let buffer = zeroed_words(words).ok_or_else(|| Error::HostMemory { what: format!("buffer `{label}`"), bytes: words * 4 })?;
         let slot = self.buffers.iter().position(Option::is_none).unwrap_or(self.buffers.len());
         if slot == self.buffers.len() {
             self.buffers.push(None);
@@ -390,8 +390,35 @@ impl Backend for CpuBackend {
     }
 }
 
+/// A buffer of `words` zeroed words, or `None` where the machine refuses the allocation (an error
+/// for the caller, not an abort). Zeroed by the allocator, so pages never written cost nothing.
+fn zeroed_words(words: u64) -> Option<Box<[AtomicU32]>> {
+    let n = usize::try_from(words).ok()?;
+    let layout = std::alloc::Layout::array::<AtomicU32>(n).ok()?;
+    if layout.size() == 0 {
+        return Some(Box::new([]));
+    }
+    // SAFETY: the layout has a non-zero size; a non-null result is `n` zeroed, aligned words, and
+    // all-zero bytes are a valid `AtomicU32` (it has `u32`'s representation). The box owns the
+    // allocation with the same layout it is freed with.
+    unsafe {
+        let ptr = std::alloc::alloc_zeroed(layout) as *mut AtomicU32;
+        (!ptr.is_null()).then(|| Box::from_raw(std::ptr::slice_from_raw_parts_mut(ptr, n)))
+    }
+}
+
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn buffers_are_zeroed_and_an_allocation_beyond_the_machine_is_an_error() {
+        let words = super::zeroed_words(1 << 20).unwrap();
+        assert!(words.len() == 1 << 20 && words.iter().all(|w| w.load(std::sync::atomic::Ordering::Relaxed) == 0));
+        assert!(super::zeroed_words(u64::MAX / 8).is_none());
+        // 512 TiB: more than any machine this runs on maps.
+        assert!(super::zeroed_words(1 << 47).is_none());
+        assert_eq!(super::zeroed_words(0).unwrap().len(), 0);
+    }
+
     use super::*;
     use crate::backend::push_words;
     use dof_shaders::scan::{ADD, ScanParams};

@@ -49,6 +49,14 @@ impl SceneSource {
         let lower = spec.to_ascii_lowercase();
         let name = Path::new(spec).file_stem().and_then(|s| s.to_str()).unwrap_or("scene").to_string();
         if lower.ends_with(".exr") {
+            if dof::io::exr_pattern::is_pattern(spec) {
+                bail!(
+                    "--scene {spec}: the viewer shows one EXR image, not a sequence: give one frame's file (`dof render` renders a sequence)"
+                );
+            }
+            if let Some(hashes) = dof::io::exr_pattern::from_printf(spec).filter(|_| !Path::new(spec).exists()) {
+                bail!("--scene {spec}: no such file; the viewer shows one EXR image (a sequence, {hashes}, is for `dof render`)");
+            }
             let input = ExrInput::read(&[spec])?;
             if let Some(note) = input.note() {
                 eprintln!("note: {spec}: {note}");

@@ -6,7 +6,9 @@
 use std::path::PathBuf;
 
 use dof::backend::Backend;
-use dof::frame::{BokehOptions, LayeredOptions, METHODS, Merge, MethodInfo, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
+use dof::frame::{
+    BokehOptions, LayeredOptions, METHODS, Merge, MethodInfo, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions,
+};
 use dof::io::SanitizeCounts;
 use dof::layers::{Fragment, LayeredImage, RgbImage};
 use dof::methods::one_shot::one_shot;

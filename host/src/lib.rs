@@ -35,6 +35,7 @@ pub mod error;
 pub mod eval;
 pub mod io;
 pub mod layers;
+pub mod memory;
 pub mod methods;
 pub mod metrics;
 mod progress;

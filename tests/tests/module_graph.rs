@@ -323,7 +323,7 @@ fn library_imports_point_down() {
         &[
             // What `dof` re-exports from `dof-core`.
             &["dof_core", "backend", "error", "frame", "ops", "aperture", "lens", "shaders", "dof_shaders"],
-            &["layers", "deep", "io", "metrics", "workload", "timing", "progress"],
+            &["layers", "deep", "io", "metrics", "workload", "timing", "progress", "memory"],
             &["methods"],
             &["scene"],
             &["raster"],

@@ -305,7 +305,8 @@ impl ExrFile {
             }
             // Decoding holds every channel of every part, and the layered image its slots.
             let image_bytes = slots as u128 * (std::mem::size_of::<crate::layers::Fragment>() as u128 + 4);
-            check_free(path, announced + image_bytes, available_memory())?;
+            let what = format!("decoding {} (every channel of every part, then the layered image)", path.display());
+            crate::memory::check_fits(&what, announced + image_bytes, crate::memory::available())?;
             for (i, header) in meta.headers.iter().enumerate() {
                 let part = header.own_attributes.layer_name.as_ref().map_or(format!("part {i}"), |n| format!("part `{n}`"));
                 if header.deep {
@@ -625,30 +626,6 @@ fn check_declared_size(path: &Path, meta: &MetaData) -> Result<u64> {
     Ok(most)
 }
 
-/// Refuses, before decoding, a file whose decoding needs more than the `free` bytes of memory the
-/// machine has (where it says: `None` skips the check): a clear error instead of an abort.
-fn check_free(path: &Path, needed: u128, free: Option<u64>) -> Result<()> {
-    match free {
-        Some(free) if needed > free as u128 => Err(Error::invalid(format!(
-            "{}: decoding it needs about {:.1} GiB of memory (every channel of every part, then the layered image), and \
-             this machine has {:.1} GiB free; refused before decoding",
-            path.display(),
-            needed as f64 / (1u64 << 30) as f64,
-            free as f64 / (1u64 << 30) as f64
-        ))),
-        _ => Ok(()),
-    }
-}
-
-/// The memory the machine has free for a new allocation (`MemAvailable` of `/proc/meminfo`), where
-/// the system says.
-fn available_memory() -> Option<u64> {
-    let info = std::fs::read_to_string("/proc/meminfo").ok()?;
-    let line = info.lines().find(|l| l.starts_with("MemAvailable:"))?;
-    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
-    kib.checked_mul(1024)
-}
-
 /// A header announcing more pixel data than this many times the file size plus
 /// [`EXPANSION_SLACK`] is corrupt: no EXR compression reaches that ratio on real images, and the
 /// check keeps a few flipped header bytes from asking for gigabytes.
@@ -807,21 +784,4 @@ pub(super) fn list(names: &[String]) -> String {
         s += &format!(" and {} more", names.len() - SHOWN);
     }
     if s.is_empty() { "(none)".to_string() } else { s }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_file_needing_more_memory_than_is_free_is_refused_before_decoding() {
-        let path = Path::new("big.exr");
-        let e = check_free(path, 18 << 30, Some(16 << 30)).unwrap_err().to_string();
-        assert!(e.contains("needs about 18.0 GiB") && e.contains("16.0 GiB free"), "{e}");
-        assert!(check_free(path, 1 << 30, Some(16 << 30)).is_ok());
-        assert!(check_free(path, u128::MAX, None).is_ok(), "no figure from the system: no check");
-        if cfg!(target_os = "linux") {
-            assert!(available_memory().is_some_and(|b| b > 0));
-        }
-    }
 }

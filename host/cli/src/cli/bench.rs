@@ -69,11 +69,15 @@ fn std_sort_ms(input: &SortInput, runs: usize) -> f64 {
     median(times)
 }
 
-/// Most tile lists `bench sort` makes: 2^20, a 16384x16384 image in 16x16 tiles (about 2 GiB of
-/// keys at the longest lists).
+/// Most tile lists `bench sort` makes: 2^20, a 16384x16384 image in 16x16 tiles (about 10^9 keys,
+/// 40 GB of host memory: refused where the machine has less free).
 const MAX_TILES: usize = 1 << 20;
 /// Longest list it makes: 2^20 entries.
 const MAX_LIST: u32 = 1 << 20;
+/// A list's mean length in `workload::tile_lists` (exp(ln 700 + 0.8²/2) ≈ 964), rounded up.
+const MEAN_LIST: u32 = 1000;
+/// Host bytes a key takes in `bench sort` (see `sort`).
+const KEY_BYTES: u128 = 40;
 
 fn sort(args: &SortArgs) -> anyhow::Result<()> {
     if args.tiles == 0 || args.tiles > MAX_TILES {
@@ -83,8 +87,15 @@ fn sort(args: &SortArgs) -> anyhow::Result<()> {
         anyhow::bail!("--max-len must lie between 1 and {MAX_LIST}, got {}", args.max_len);
     }
     check_count("--runs", "timed runs", args.runs, 1, MAX_RUNS)?;
+    // Lists average about 960 keys (log-normal about 700, `workload::tile_lists`), at most
+    // --max-len. Each key is held by the input (key and value), the reference's copy, its bits for
+    // the upload, and four buffers of the backend: about 40 bytes.
+    let keys = args.tiles as u128 * args.max_len.min(MEAN_LIST) as u128;
+    let what = format!("bench sort with --tiles {} --max-len {} (about {keys} keys)", args.tiles, args.max_len);
+    dof::memory::check_fits(&what, keys * KEY_BYTES, dof::memory::available())?;
     let input = workload::tile_lists(args.tiles, args.max_len, args.seed);
     let n = input.keys.len();
+    anyhow::ensure!(n <= u32::MAX as usize, "{what}: {n} keys, beyond the 2^32 a sort takes");
     let std_ms = std_sort_ms(&input, args.runs);
     let mut hist = [0usize; 8];
     for &(_, l) in &input.segments {

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 use dof::backend::Backend;
 use dof::frame::{
-    BokehOptions, LayeredOptions, METHODS, Merge, MethodInfo, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions,
+    BokehOptions, LayeredOptions, METHODS, Merge, MethodInfo, MethodOption, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions,
 };
 use dof::io::SanitizeCounts;
 use dof::layers::{Fragment, LayeredImage, RgbImage};
@@ -40,8 +40,8 @@ fn value_error(msg: impl Into<String>) -> PyErr {
     PyValueError::new_err(msg.into())
 }
 
-/// The options `blur` takes besides the lens, with the CLI flag each one is, and the methods that
-/// take it (`max_coc` and `aperture`: as the registry says).
+/// The options `blur` takes besides the lens, with the CLI flag each one is (which methods take
+/// each is the registry's `MethodOption`).
 const OPTIONS: &[(&str, &str)] = &[
     ("tile", "--tile: tile edge in pixels, 16, 24 or 32 (tiled, multilayer)"),
     ("merge", "--merge: fragment merging, 'none', '2x2' or '4x4' (tiled, multilayer)"),
@@ -55,19 +55,9 @@ const OPTIONS: &[(&str, &str)] = &[
     ("layers_per_doubling", "--layers-per-doubling: layered DoF, 1 to 4"),
 ];
 
-/// Whether `method` takes the option `key` (a name of [`OPTIONS`]), as `dof render` decides for its
-/// flags: an option another method takes is refused rather than ignored.
-fn takes(method: &MethodInfo, key: &str) -> bool {
-    match key {
-        "tile" | "merge" => ["multilayer", "tiled"].contains(&method.name),
-        "max_coc" => method.caps_coc,
-        "aperture" => method.shaped_aperture,
-        "rings" => method.knob.is_some_and(|k| k.name == "rings"),
-        "lum_threshold" | "sprites" => method.name == "bokeh",
-        "spp" | "samples" => method.name == "raytrace",
-        "no_cascade" | "layers_per_doubling" => method.name == "layered",
-        _ => true,
-    }
+/// The registry's option a keyword names (`spp` is `--samples`).
+fn option_of(key: &str) -> Option<MethodOption> {
+    MethodOption::ALL.into_iter().find(|o| o.key() == key || (key == "spp" && *o == MethodOption::Samples))
 }
 
 /// The frame API's options from `blur`'s keyword options, as `dof render` makes them from its flags.
@@ -86,9 +76,9 @@ fn method_options(method: &MethodInfo, options: Option<&Bound<'_, PyDict>>) -> P
         for (key, value) in options.iter() {
             let key: String = key.extract()?;
             let bad = |e: PyErr| value_error(format!("option {key}: {e}"));
-            if !takes(method, &key) {
-                let others: Vec<&str> = METHODS.iter().filter(|m| takes(m, &key)).map(|m| m.name).collect();
-                return Err(value_error(format!("option {key} applies to {} only; {} does not take it", others.join(", "), method.name)));
+            // An option of another method is refused, as `dof render` refuses its flag.
+            if let Some(option) = option_of(&key).filter(|&o| !method.takes(o)) {
+                return Err(value_error(format!("option {key} applies to {} only; {} does not take it", option.methods(), method.name)));
             }
             match key.as_str() {
                 "tile" => tile = value.extract().map_err(bad)?,

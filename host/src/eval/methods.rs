@@ -265,7 +265,7 @@ impl Registered {
     fn output(&self, options: &MethodOptions, out: OneShot) -> MethodOutput {
         let mut figures = out.report.figures;
         figures.insert("buffer_bytes".into(), out.buffer_bytes as f64);
-        if self.0.tiles {
+        if self.0.tiles() {
             figures.insert("tile_px".into(), options.splat.tile as f64);
             figures.insert("merge_steps".into(), options.splat.merge.steps() as f64);
         }

@@ -106,16 +106,8 @@ impl LensSettings {
                 s / (2.0 * frame.tan_half_fov)
             }
         };
+        // In scene units; the core checks it against the focus distance.
         let f = f_mm * 1e-3 / mpu;
-        if !(f > 0.0 && f.is_finite()) {
-            return Err(Error::invalid(format!("the focal length {f_mm} mm is not representable in scene units")));
-        }
-        if f >= zf {
-            return Err(Error::invalid(format!(
-                "the focal length ({f} scene units, {f_mm} mm) must be shorter than the focus distance ({zf}): \
-                 a thin lens cannot focus closer than its focal length"
-            )));
-        }
         let radius = self.aperture.radius(f)?;
         let lens = dof_core::lens::thin_lens_for_view(f, radius, zf, frame.tan_half_fov, frame.height)?;
         Ok(lens)

@@ -173,7 +173,7 @@ fn check_region(region: &Option<Vec<bool>>, frame: &CameraFrame) -> Result<()> {
 /// `spp == 0`.
 pub fn reference(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &ReferenceOptions) -> Result<Reference> {
     let frame = camera.frame()?;
-    check_lens(lens)?;
+    crate::lens::check(lens)?;
     render_fixed(scene, &frame, lens.aperture_radius, lens.focus_distance, options, options.aimed_emitters.then_some(lens))
 }
 
@@ -189,7 +189,7 @@ pub fn pinhole(scene: &Scene, camera: &Camera, options: &ReferenceOptions) -> Re
 /// on an invalid camera, lens or options.
 pub fn reference_auto(scene: &Scene, camera: &Camera, lens: &ThinLens, options: &AutoOptions) -> Result<Reference> {
     let frame = camera.frame()?;
-    check_lens(lens)?;
+    crate::lens::check(lens)?;
     let o = options;
     if !(o.target_psnr_db.is_finite() && o.tolerance_db > 0.0 && o.tolerance_db.is_finite()) {
         return Err(Error::invalid(format!(
@@ -250,10 +250,6 @@ pub fn reference_auto(scene: &Scene, camera: &Camera, lens: &ThinLens, options: 
 /// Most samples per pixel a reference (and renders an accumulation buffer) takes: refused beyond,
 /// before anything proportional to the count is allocated.
 pub const MAX_SPP: u32 = 1 << 16;
-
-fn check_lens(lens: &ThinLens) -> Result<()> {
-    Ok(crate::lens::check(lens)?)
-}
 
 /// The reference with `options`; with `aimed` (the lens), the emitters' light aimed at them.
 fn render_fixed(

@@ -3,7 +3,9 @@
 
 use anyhow::{Context, bail};
 use dof::aperture::parse_aperture;
-use dof::frame::{BokehOptions, LayeredOptions, METHODS, MethodInfo, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions};
+use dof::frame::{
+    BokehOptions, LayeredOptions, METHODS, MethodInfo, MethodOption, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions,
+};
 use dof::io::{ExrWindow, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr, write_png_preview};
 use dof::layers::RgbImage;
 use dof::layers::{LayeredImage, crop_plane};
@@ -308,31 +310,32 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             );
         }
     }
-    // Options a method would otherwise ignore.
-    let which = |pick: fn(&MethodInfo) -> bool| METHODS.iter().filter(|m| pick(m)).map(|m| m.name).collect::<Vec<_>>().join(", ");
+    // Options a method would otherwise ignore: each registry entry lists those it takes (their
+    // defaults pass: they change nothing).
     let method = args.method.frame();
-    if args.aperture != "circle" && !method.is_some_and(|m| m.shaped_aperture) {
-        bail!("--aperture {} is supported by {} only; {} uses the circle", args.aperture, which(|m| m.shaped_aperture), args.method.name());
-    }
-    if args.max_coc.is_some() && !method.is_some_and(|m| m.caps_coc) {
-        bail!("--max-coc caps the blur of {} only; {} does not take it", which(|m| m.caps_coc), args.method.name());
-    }
-    if args.rings != dof::methods::ring_gather::DEFAULT_RINGS && !method.is_some_and(|m| m.knob.is_some_and(|k| k.name == "rings")) {
-        bail!("--rings is the ring gather's knob; {} does not take it", args.method.name());
-    }
-    // Flags of one method or family given to another (their defaults pass: they change nothing).
     let name = args.method.name();
-    let only = [
-        (args.merge != Merge::None, "--merge", &["multilayer", "tiled"][..]),
-        (args.tile != 16, "--tile", &["multilayer", "tiled"][..]),
-        (args.lum_threshold != 1.0, "--lum-threshold", &["bokeh"][..]),
-        (args.sprites != 4096, "--sprites", &["bokeh"][..]),
-        (args.no_cascade, "--no-cascade", &["layered"][..]),
-        (args.layers_per_doubling != 2, "--layers-per-doubling", &["layered"][..]),
-        (args.aimed_emitters, "--aimed-emitters", &["reference"][..]),
+    if args.aperture != "circle" && !method.is_some_and(|m| m.shaped_aperture()) {
+        bail!("--aperture {} is supported by {} only; {name} uses the circle", args.aperture, MethodOption::Aperture.methods());
+    }
+    if args.max_coc.is_some() && !method.is_some_and(|m| m.takes(MethodOption::MaxCoc)) {
+        bail!("--max-coc caps the blur of {} only; {name} does not take it", MethodOption::MaxCoc.methods());
+    }
+    if args.rings != dof::methods::ring_gather::DEFAULT_RINGS && !method.is_some_and(|m| m.takes(MethodOption::Rings)) {
+        bail!("--rings is the ring gather's knob; {name} does not take it");
+    }
+    let given = [
+        (args.merge != Merge::None, MethodOption::Merge),
+        (args.tile != 16, MethodOption::Tile),
+        (args.lum_threshold != 1.0, MethodOption::LumThreshold),
+        (args.sprites != 4096, MethodOption::Sprites),
+        (args.no_cascade, MethodOption::NoCascade),
+        (args.layers_per_doubling != 2, MethodOption::LayersPerDoubling),
     ];
-    if let Some((_, flag, methods)) = only.iter().find(|(given, _, methods)| *given && !methods.contains(&name)) {
-        bail!("{flag} applies to {} only; {name} does not take it", methods.join(" and "));
+    if let Some((_, option)) = given.iter().find(|(set, option)| *set && !method.is_some_and(|m| m.takes(*option))) {
+        bail!("{} applies to {} only; {name} does not take it", option.flag(), option.methods());
+    }
+    if args.aimed_emitters && name != "reference" {
+        bail!("--aimed-emitters applies to reference only; {name} does not take it");
     }
     match (args.max_coc, args.method.name()) {
         (Some(0), _) => bail!("--max-coc is a CoC diameter of at least 1 px, got 0"),

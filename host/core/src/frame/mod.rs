@@ -59,7 +59,7 @@ pub use layer_options::{GuardBand, LayerOptions};
 pub use layered::{LayeredContext, LayeredContextDesc, LayeredOptions, LayeredPlanReport};
 pub use raytrace::{RaytraceContext, RaytraceContextDesc, RaytraceOptions};
 pub use recording::{Command, Groups, Recording};
-pub use registry::{ContextDesc, METHODS, MethodInfo, MethodOptions, Reads};
+pub use registry::{ContextDesc, METHODS, MethodInfo, MethodOption, MethodOptions, Reads};
 pub use renderer_peel::{RendererPeel, RendererPeelDesc};
 pub use ring_gather::{RingGatherContext, RingGatherContextDesc, RingGatherOptions};
 pub use splat::{Merge, SplatContext, SplatContextDesc, SplatOptions};

@@ -52,6 +52,74 @@ pub struct MethodOptions {
     pub layered: LayeredOptions,
 }
 
+/// A setting of [`MethodOptions`] that some methods take and others would ignore. Each method's
+/// entry lists those it takes ([`MethodInfo::takes`]), so the command line and the bindings refuse
+/// the others rather than ignore them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MethodOption {
+    /// Tile edge of the splatting methods.
+    Tile,
+    /// Fragment merging of the splatting methods.
+    Merge,
+    /// A cap on the CoC (each method's own radius or diameter cap).
+    MaxCoc,
+    /// The aperture's shape (blades, stars, masks).
+    Aperture,
+    /// Sample rings of the ring gather.
+    Rings,
+    /// Luminance that makes a bokeh sprite.
+    LumThreshold,
+    /// Bokeh sprite capacity.
+    Sprites,
+    /// Rays per pixel of ray tracing.
+    Samples,
+    /// Layered DoF with one blur per layer.
+    NoCascade,
+    /// Layered DoF's layers per doubling of the CoC.
+    LayersPerDoubling,
+}
+
+impl MethodOption {
+    pub const ALL: [MethodOption; 10] = [
+        MethodOption::Tile,
+        MethodOption::Merge,
+        MethodOption::MaxCoc,
+        MethodOption::Aperture,
+        MethodOption::Rings,
+        MethodOption::LumThreshold,
+        MethodOption::Sprites,
+        MethodOption::Samples,
+        MethodOption::NoCascade,
+        MethodOption::LayersPerDoubling,
+    ];
+
+    /// The command line's flag (`--max-coc`).
+    pub fn flag(self) -> &'static str {
+        match self {
+            MethodOption::Tile => "--tile",
+            MethodOption::Merge => "--merge",
+            MethodOption::MaxCoc => "--max-coc",
+            MethodOption::Aperture => "--aperture",
+            MethodOption::Rings => "--rings",
+            MethodOption::LumThreshold => "--lum-threshold",
+            MethodOption::Sprites => "--sprites",
+            MethodOption::Samples => "--samples",
+            MethodOption::NoCascade => "--no-cascade",
+            MethodOption::LayersPerDoubling => "--layers-per-doubling",
+        }
+    }
+
+    /// The keyword of the bindings (`max_coc`): the flag in snake case.
+    pub fn key(self) -> String {
+        self.flag().trim_start_matches("--").replace('-', "_")
+    }
+
+    /// The names of the registered methods that take it, for messages (`multilayer, tiled`).
+    pub fn methods(self) -> String {
+        METHODS.iter().filter(|m| m.takes(self)).map(|m| m.name).collect::<Vec<_>>().join(", ")
+    }
+}
+
 /// What a context is created for, whatever its method.
 #[derive(Clone, Debug)]
 pub struct ContextDesc {
@@ -81,12 +149,8 @@ pub struct MethodInfo {
     pub paper: &'static str,
     pub reads: Reads,
     pub knob: Option<Knob>,
-    /// Whether it draws the aperture's shape (`--aperture`: blades, stars, masks).
-    pub shaped_aperture: bool,
-    /// Whether it reads the tile size and merging of [`SplatOptions`].
-    pub tiles: bool,
-    /// Whether it takes a cap on the CoC (`--max-coc`: each method's own radius or diameter cap).
-    pub caps_coc: bool,
+    /// The settings of [`MethodOptions`] it takes; it ignores the others.
+    pub options: &'static [MethodOption],
     /// Makes its context: checks the options and the extent, allocates every buffer.
     pub create: fn(&mut dyn Backend, &ContextDesc) -> Result<Box<dyn DofContext>>,
 }
@@ -94,6 +158,23 @@ pub struct MethodInfo {
 impl std::fmt::Debug for MethodInfo {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(self.name)
+    }
+}
+
+impl MethodInfo {
+    /// Whether it takes `option`.
+    pub fn takes(&self, option: MethodOption) -> bool {
+        self.options.contains(&option)
+    }
+
+    /// Whether it draws the aperture's shape (blades, stars, masks).
+    pub fn shaped_aperture(&self) -> bool {
+        self.takes(MethodOption::Aperture)
+    }
+
+    /// Whether it reads the tile size and merging of [`SplatOptions`].
+    pub fn tiles(&self) -> bool {
+        self.takes(MethodOption::Tile)
     }
 }
 
@@ -118,9 +199,7 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "Franke, Hofmann, Stamminger, Selgrad 2018",
         reads: Reads::AllLayers,
         knob: None,
-        shaped_aperture: true,
-        tiles: true,
-        caps_coc: true,
+        options: &[MethodOption::Tile, MethodOption::Merge, MethodOption::MaxCoc, MethodOption::Aperture],
         create: |b, d| create_splat(b, d, "multilayer"),
     },
     MethodInfo {
@@ -129,9 +208,7 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "Selgrad, Franke, Stamminger 2016",
         reads: Reads::FrontLayer,
         knob: None,
-        shaped_aperture: true,
-        tiles: true,
-        caps_coc: true,
+        options: &[MethodOption::Tile, MethodOption::Merge, MethodOption::MaxCoc, MethodOption::Aperture],
         create: |b, d| create_splat(b, d, "tiled"),
     },
     MethodInfo {
@@ -140,9 +217,7 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "Riguer, Tatarchuk, Isidoro 2003",
         reads: Reads::FrontLayer,
         knob: None,
-        shaped_aperture: false,
-        tiles: false,
-        caps_coc: true,
+        options: &[MethodOption::MaxCoc],
         create: |b, d| {
             let desc = GatherContextDesc {
                 max_radius: d.options.gather_max_radius,
@@ -159,9 +234,7 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "after AMD FidelityFX DoF, Unreal Engine's Diaphragm DoF and Jimenez 2014",
         reads: Reads::FrontLayer,
         knob: Some(Knob { name: "rings", min: 1, max: MAX_SAMPLE_RINGS, default: DEFAULT_RINGS }),
-        shaped_aperture: false,
-        tiles: false,
-        caps_coc: true,
+        options: &[MethodOption::MaxCoc, MethodOption::Rings],
         create: |b, d| {
             let desc = RingGatherContextDesc {
                 options: d.options.ring_gather,
@@ -178,9 +251,7 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "de Rousiers 2012; Pettineo 2012",
         reads: Reads::FrontLayer,
         knob: None,
-        shaped_aperture: true,
-        tiles: false,
-        caps_coc: false,
+        options: &[MethodOption::Aperture, MethodOption::LumThreshold, MethodOption::Sprites],
         create: |b, d| {
             let desc = BokehContextDesc {
                 image_io: d.image_io,
@@ -196,9 +267,7 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "Lee, Eisemann, Seidel 2010",
         reads: Reads::AllLayers,
         knob: None,
-        shaped_aperture: false,
-        tiles: false,
-        caps_coc: false,
+        options: &[MethodOption::Samples],
         create: |b, d| {
             let desc = RaytraceContextDesc {
                 image_io: d.image_io,
@@ -214,9 +283,7 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "Schedl, Wimmer 2012",
         reads: Reads::AllLayers,
         knob: None,
-        shaped_aperture: false,
-        tiles: false,
-        caps_coc: true,
+        options: &[MethodOption::MaxCoc, MethodOption::NoCascade, MethodOption::LayersPerDoubling],
         create: |b, d| {
             let desc = LayeredContextDesc {
                 image_io: d.image_io,

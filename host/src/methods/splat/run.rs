@@ -162,25 +162,27 @@ fn record_frame(
     }
     let s = dof_core::testing::stage_buffers(ctx);
     let recording = ctx.recording(backend, frame)?;
-    // A buffer a later stage reuses is read before that stage's first command: the cells (where
-    // binning writes the keys) before binning, the offsets (where the sort writes the sorted
-    // values) and the binned lists before the sort; the rest once the frame is done.
-    let points: [(&str, &[BufferId]); 2] = [("splat/bin", &[s.cells]), ("sort/", &[s.offsets, s.keys, s.values])];
-    let mut reads = StageReads::default();
+    let commands = recording.commands();
     let mut times = Vec::new();
-    let mut next = 0;
-    for (stage, buffers) in points {
-        let at = recording.commands().iter().position(|c| c.label() == stage || (stage.ends_with('/') && c.label().starts_with(stage)));
+    // Encodes the commands from `from` up to the first of `stage` (a label, or a prefix ending in
+    // `/`), submits them, and returns where that stage starts.
+    let mut run_to = |backend: &mut dyn Backend, from: usize, stage: &str| -> Result<usize> {
+        let starts = |label: &str| label == stage || (stage.ends_with('/') && label.starts_with(stage));
+        let at = commands[from..].iter().position(|c| starts(c.label())).map(|i| from + i);
         let at = at.ok_or_else(|| Error::InvalidArgument(format!("the splatting frame has no stage `{stage}`")))?;
-        recording.commands()[next..at].iter().try_for_each(|c| c.encode(backend))?;
+        commands[from..at].iter().try_for_each(|c| c.encode(backend))?;
         times.extend(backend.submit()?);
-        for &id in buffers {
-            let words = backend.buffer_words(id)?;
-            reads.0.insert(id_key(stage, id), backend.read_buffer(id, 0, words)?);
-        }
-        next = at;
-    }
-    recording.commands()[next..].iter().try_for_each(|c| c.encode(backend))?;
+        Ok(at)
+    };
+    let whole = |backend: &mut dyn Backend, id: BufferId| backend.read_buffer(id, 0, backend.buffer_words(id)?);
+    // A buffer a later stage reuses is read before that stage: the cells (where binning writes
+    // the keys) before binning, the offsets (where the sort writes the sorted values) and the
+    // binned lists before the sort; the rest once the frame is done.
+    let at = run_to(backend, 0, "splat/bin")?;
+    let cells = whole(backend, s.cells)?;
+    let at = run_to(backend, at, "sort/")?;
+    let reads = StageReads { cells, offsets: whole(backend, s.offsets)?, keys: whole(backend, s.keys)?, values: whole(backend, s.values)? };
+    commands[at..].iter().try_for_each(|c| c.encode(backend))?;
     Ok((Some(reads), times))
 }
 
@@ -194,28 +196,26 @@ fn record_frame(
     ctx.record(backend, frame).map(|_| (None, Vec::new()))
 }
 
-/// What a stage's buffers held as the stage left them, by the stage read before and the buffer.
+/// The buffers a later stage reuses, as their own stage left them.
 #[cfg(feature = "testing")]
-#[derive(Default)]
-struct StageReads(std::collections::HashMap<(String, u32), Vec<u32>>);
-
-#[cfg(feature = "testing")]
-fn id_key(stage: &str, id: BufferId) -> (String, u32) {
-    (stage.to_string(), id.0)
+struct StageReads {
+    /// The cells' counts, then their widest radii (before binning writes the keys there).
+    cells: Vec<u32>,
+    /// The cells' offsets in their tiles (before the sort writes the sorted values there).
+    offsets: Vec<u32>,
+    /// The binned lists, before the sort.
+    keys: Vec<u32>,
+    values: Vec<u32>,
 }
 
 #[cfg(feature = "testing")]
-fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatReport, mut parts: StageReads) -> Result<Intermediates> {
+fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatReport, stages: StageReads) -> Result<Intermediates> {
     let s = dof_core::testing::stage_buffers(ctx);
-    let mut early = |stage: &str, id: BufferId| {
-        parts.0.remove(&id_key(stage, id)).ok_or_else(|| Error::InvalidArgument(format!("buffer {} was not read before `{stage}`", id.0)))
-    };
     let p = s.params.ok_or_else(|| Error::InvalidArgument("the splatting context has recorded no frame".into()))?;
     // Before binning, the cells' buffer holds the frame's cells' counts, then their widest radii.
     let n = (p.cells_x * p.cells_y) as usize;
-    let mut counts = early("splat/bin", s.cells)?;
+    let StageReads { cells: mut counts, mut offsets, keys, values } = stages;
     counts.truncate(n);
-    let mut offsets = early("sort/", s.offsets)?;
     offsets.truncate(n);
     let tiles = report.tiles as u64;
     let tile_count = backend.read_buffer(s.tile_count, 0, tiles)?;
@@ -232,7 +232,7 @@ fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatRe
     let pick = |all: &[u32]| -> Vec<u32> {
         segments.as_chunks::<2>().0.iter().flat_map(|s| all[s[0] as usize..(s[0] + s[1]) as usize].iter().copied()).collect()
     };
-    let binned = (pick(&early("sort/", s.keys)?), pick(&early("sort/", s.values)?));
+    let binned = (pick(&keys), pick(&values));
     let mut whole = |id| backend.read_buffer(id, 0, backend.buffer_words(id)?);
     let sorted = (pick(&whole(s.keys_sorted)?), pick(&whole(s.values_sorted)?));
     Ok(Intermediates { cells, tile_count, dense, list_lengths: segments.as_chunks::<2>().0.iter().map(|s| s[1]).collect(), binned, sorted })

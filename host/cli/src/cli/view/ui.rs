@@ -92,13 +92,13 @@ impl Panel {
             if !(self.exposure > 0.0 && self.exposure.is_finite()) {
                 self.exposure = 1.0;
             }
-            ui.add_enabled_ui(self.settings.method.0.shaped_aperture, |ui| {
+            ui.add_enabled_ui(self.settings.method.0.shaped_aperture(), |ui| {
                 ui.add(egui::Slider::new(&mut self.blades, 0..=12).text("blades (0: circle)"));
             });
             if self.blades > 0 && self.blades < 3 {
                 self.blades = 3;
             }
-            ui.add_enabled_ui(self.settings.method.0.tiles, |ui| {
+            ui.add_enabled_ui(self.settings.method.0.tiles(), |ui| {
                 ui.horizontal(|ui| {
                     ui.label("merge");
                     ui.selectable_value(&mut self.settings.merge, Merge::None, "none");

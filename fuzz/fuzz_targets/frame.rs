@@ -398,7 +398,7 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
         Method::Registry(i) => Some(&METHODS[i as usize % METHODS.len()]),
         _ => None,
     };
-    let splat = matches!(c.method, Method::Splat { .. }) || registry.is_some_and(|m| m.name == "multilayer" || m.name == "tiled");
+    let splat = matches!(c.method, Method::Splat { .. }) || registry.is_some_and(|m| m.tiles());
     let (mut must_refuse, small) = judge(w, h, layers, splat);
     let context = match &c.method {
         Method::Splat {
@@ -713,7 +713,7 @@ fn run(input: &Input) {
             Op::Record(f) => record(&mut b, ctx.as_mut(), &bufs, &f, max, &input.words),
             Op::Resize(w, h, l) => {
                 let (w, h, l) = (w.get(), h.get(), l.get());
-                let splat = ctx.method() == "multilayer" || ctx.method() == "tiled";
+                let splat = dof::frame::registry::method(ctx.method()).is_ok_and(|m| m.tiles());
                 let (must_refuse, small) = judge(w, h, l, splat);
                 if !small && !must_refuse {
                     continue;

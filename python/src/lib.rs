@@ -6,9 +6,7 @@
 use std::path::PathBuf;
 
 use dof::backend::Backend;
-use dof::frame::{
-    BokehOptions, LayeredOptions, METHODS, Merge, MethodInfo, MethodOption, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions,
-};
+use dof::frame::{Kind, METHODS, MethodInfo, MethodOptions, Value};
 use dof::io::SanitizeCounts;
 use dof::layers::{Fragment, LayeredImage, RgbImage};
 use dof::methods::one_shot::one_shot;
@@ -19,7 +17,7 @@ use numpy::ndarray::{Array2, Array3, Array4, ArrayViewD, Axis};
 use numpy::{AllowTypeChange, IntoPyArray, PyArray3, PyArrayLikeDyn, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyMemoryError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
+use pyo3::types::{PyBool, PyDict, PyTuple};
 
 /// A library error as a Python exception: bad input (an invalid argument or lens, a size beyond a
 /// limit) is a `ValueError`, anything else (no Vulkan driver, a device failure) a `RuntimeError`;
@@ -40,85 +38,27 @@ fn value_error(msg: impl Into<String>) -> PyErr {
     PyValueError::new_err(msg.into())
 }
 
-/// The options `blur` takes besides the lens, with the CLI flag each one is (which methods take
-/// each is the registry's `MethodOption`).
-const OPTIONS: &[(&str, &str)] = &[
-    ("tile", "--tile: tile edge in pixels, 16, 24 or 32 (tiled, multilayer)"),
-    ("merge", "--merge: fragment merging, 'none', '2x2' or '4x4' (tiled, multilayer)"),
-    ("max_coc", "--max-coc: largest CoC diameter in pixels the method honours"),
-    ("aperture", "--aperture: 'circle', 'blades:N[:ROT[:CURV]]', 'star:N[:ROT[:INNER]]' or a PNG (splatting, bokeh)"),
-    ("rings", "--rings: sample rings of the ring gather, 1 to 8"),
-    ("lum_threshold", "--lum-threshold: luminance that makes a bokeh sprite"),
-    ("sprites", "--sprites: bokeh sprite capacity"),
-    ("spp", "--samples: rays per pixel of raytrace (default 16)"),
-    ("no_cascade", "--no-cascade: layered DoF, one blur per layer"),
-    ("layers_per_doubling", "--layers-per-doubling: layered DoF, 1 to 4"),
-];
-
-/// The registry's option a keyword names (`spp` is `--samples`).
-fn option_of(key: &str) -> Option<MethodOption> {
-    MethodOption::ALL.into_iter().find(|o| o.key() == key || (key == "spp" && *o == MethodOption::Samples))
-}
-
-/// The frame API's options from `blur`'s keyword options, as `dof render` makes them from its flags.
+/// The frame API's options from `blur`'s keyword options, checked by the method's registry entry
+/// as `dof render` checks its flags: a bool is a flag, an int a count, a float a number and a str a
+/// name; an int where a count is wanted is never rounded from a float.
 fn method_options(method: &MethodInfo, options: Option<&Bound<'_, PyDict>>) -> PyResult<MethodOptions> {
-    let mut tile = 16u32;
-    let mut merge = Merge::None;
-    let mut max_coc: Option<u32> = None;
-    let mut aperture = "circle".to_string();
-    let mut rings = RingGatherOptions::default().rings;
-    let mut lum_threshold = 1.0f32;
-    let mut sprites = 4096u32;
-    let mut spp = 16u32;
-    let mut no_cascade = false;
-    let mut layers_per_doubling = 2u32;
-    if let Some(options) = options {
-        for (key, value) in options.iter() {
-            let key: String = key.extract()?;
-            let bad = |e: PyErr| value_error(format!("option {key}: {e}"));
-            // An option of another method is refused, as `dof render` refuses its flag.
-            if let Some(option) = option_of(&key).filter(|&o| !method.takes(o)) {
-                return Err(value_error(format!("option {key} applies to {} only; {} does not take it", option.methods(), method.name)));
-            }
-            match key.as_str() {
-                "tile" => tile = value.extract().map_err(bad)?,
-                "merge" => {
-                    let s: String = value.extract().map_err(bad)?;
-                    merge = s.parse().map_err(value_error)?;
-                }
-                "max_coc" => max_coc = value.extract().map_err(bad)?,
-                "aperture" => aperture = value.extract().map_err(bad)?,
-                "rings" => rings = value.extract().map_err(bad)?,
-                "lum_threshold" => lum_threshold = value.extract().map_err(bad)?,
-                "sprites" => sprites = value.extract().map_err(bad)?,
-                "spp" | "samples" => spp = value.extract().map_err(bad)?,
-                "no_cascade" => no_cascade = value.extract().map_err(bad)?,
-                "layers_per_doubling" => layers_per_doubling = value.extract().map_err(bad)?,
-                _ => {
-                    let known: Vec<&str> = OPTIONS.iter().map(|o| o.0).collect();
-                    return Err(value_error(format!("unknown option '{key}': blur takes {}", known.join(", "))));
-                }
-            }
-        }
+    let mut values = Vec::new();
+    for (key, value) in options.into_iter().flat_map(|o| o.iter()) {
+        let key: String = key.extract()?;
+        let value = if let Ok(b) = value.cast::<PyBool>() {
+            Value::Flag(b.is_true())
+        } else if let Ok(i) = value.extract::<i64>() {
+            Value::Int(i)
+        } else if let Ok(f) = value.extract::<f64>() {
+            Value::Number(f)
+        } else if let Ok(t) = value.extract::<String>() {
+            Value::Text(t)
+        } else {
+            return Err(value_error(format!("option {key}: expected a bool, a number or a str, got {}", value.get_type().name()?)));
+        };
+        values.push((key, value));
     }
-    if max_coc == Some(0) {
-        return Err(value_error("max_coc (the largest CoC diameter, px) must be positive, got 0"));
-    }
-    let aperture = dof::aperture::parse_aperture(&aperture).map_err(py_err)?;
-    let ring_defaults = RingGatherOptions::default();
-    Ok(MethodOptions {
-        splat: SplatOptions { tile, merge, max_radius: max_coc.map(|d| d as f32 / 2.0), aperture: aperture.clone(), ..Default::default() },
-        gather_max_radius: max_coc.map(|d| d.div_ceil(2)),
-        ring_gather: RingGatherOptions { rings, max_radius: max_coc.map_or(ring_defaults.max_radius, |d| d.div_ceil(2)) },
-        bokeh: BokehOptions { lum_threshold, capacity: sprites, aperture, ..Default::default() },
-        raytrace: RaytraceOptions { spp, ..Default::default() },
-        layered: LayeredOptions {
-            cascaded: !no_cascade,
-            layers_per_doubling,
-            max_coc: max_coc.map_or(LayeredOptions::default().max_coc, |d| d as f32),
-            ..Default::default()
-        },
-    })
+    method.method_options(values).map_err(py_err)
 }
 
 /// The lens as `dof render` builds it for an EXR (which carries no camera): a camera at the origin
@@ -292,9 +232,10 @@ fn to_rgb_array(image: &RgbImage) -> PyResult<Array3<f32>> {
 /// length (it only matters for the millimetre values).
 ///
 /// `method` is a name from `methods()` (default "multilayer", multi-layer tiled splatting);
-/// `backend` is "cpu" (default) or "vulkan". `options` are the CLI's method flags: tile, merge
-/// ("none", "2x2", "4x4"), max_coc, aperture (shape), rings, lum_threshold, sprites, spp,
-/// no_cascade, layers_per_doubling. As in the CLI, the image's edge pixels are extended outwards
+/// `backend` is "cpu" (default) or "vulkan". `options` are the method's options, as `methods()`
+/// lists them with their units and bounds, named as the CLI's flags: tile, merge ("none", "2x2",
+/// "4x4"), max_coc (a CoC diameter in pixels), aperture (shape), rings, lum_threshold, sprites,
+/// spp (or samples), no_cascade, layers_per_doubling. As in the CLI, the image's edge pixels are extended outwards
 /// as far as its largest CoC reaches, so blur does not darken at the frame.
 ///
 /// Raises ValueError on bad input (shapes, depths, lens, options) and RuntimeError otherwise (no
@@ -703,8 +644,10 @@ fn write_exr(
 }
 
 /// The methods `blur` takes, from the library's registry: a list of dicts with `name` (what
-/// `method=` takes), `title`, `paper`, `reads` ("all layers" or "front layer") and `knob` (the
-/// name of its quality option, or None).
+/// `method=` takes), `title`, `paper`, `reads` ("all layers" or "front layer"), `knob` (the
+/// name of its quality option, or None) and `options`: the keyword options it takes, each a dict
+/// with `key`, `kind` ("count", "number", "flag", "choice" or "aperture"), `min` and `max` (counts
+/// and numbers), `choices` (choices), `unit`, `default` and `help`.
 #[pyfunction]
 fn methods(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
     METHODS
@@ -720,6 +663,38 @@ fn methods(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
             };
             d.set_item("reads", reads)?;
             d.set_item("knob", m.knob.map(|k| k.name))?;
+            let options = m
+                .options
+                .iter()
+                .map(|spec| {
+                    let o = PyDict::new(py);
+                    o.set_item("key", spec.option.key())?;
+                    let kind = match spec.kind {
+                        Kind::Count { min, max } => {
+                            o.set_item("min", min)?;
+                            o.set_item("max", max)?;
+                            "count"
+                        }
+                        Kind::Number { min, max } => {
+                            o.set_item("min", min)?;
+                            o.set_item("max", max)?;
+                            "number"
+                        }
+                        Kind::Flag => "flag",
+                        Kind::Choice(names) => {
+                            o.set_item("choices", names.to_vec())?;
+                            "choice"
+                        }
+                        Kind::Aperture => "aperture",
+                    };
+                    o.set_item("kind", kind)?;
+                    o.set_item("unit", spec.unit)?;
+                    o.set_item("default", spec.default)?;
+                    o.set_item("help", spec.help)?;
+                    Ok(o)
+                })
+                .collect::<PyResult<Vec<_>>>()?;
+            d.set_item("options", options)?;
             Ok(d)
         })
         .collect()

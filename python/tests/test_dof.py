@@ -281,11 +281,16 @@ def test_bad_input_raises_value_error():
         dof.blur(rgb, bad, focus=2.0, f_number=2.0)
     with pytest.raises(ValueError, match="unknown method 'nope'.*multilayer"):
         dof.blur(rgb, depth, focus=2.0, f_number=2.0, method="nope")
-    with pytest.raises(ValueError, match="unknown option 'tiles'"):
+    with pytest.raises(ValueError, match="unknown option 'tiles': multilayer takes tile, merge, max_coc, aperture"):
         dof.blur(rgb, depth, focus=2.0, f_number=2.0, tiles=16)
+    # A count is never rounded from a float, and bounds name their unit.
+    with pytest.raises(ValueError, match="option rings of ring-gather is a whole number between 1 and 8"):
+        dof.blur(rgb, depth, focus=2.0, f_number=2.0, method="ring-gather", rings=2.5)
+    with pytest.raises(ValueError, match=r"option max_coc of gather must lie between 1 and 96 \(px, CoC diameter\), got 200"):
+        dof.blur(rgb, depth, focus=2.0, f_number=2.0, method="gather", max_coc=200)
     with pytest.raises(ValueError, match="tile size 17"):
         dof.blur(rgb, depth, focus=2.0, aperture_radius=0.5, tile=17)
-    with pytest.raises(ValueError, match="unknown merge level"):
+    with pytest.raises(ValueError, match="option merge of multilayer is one of none, 2x2, 4x4, got 3x3"):
         dof.blur(rgb, depth, focus=2.0, aperture_radius=0.5, merge="3x3")
     with pytest.raises(ValueError, match="unknown backend"):
         dof.blur(rgb, depth, focus=2.0, aperture_radius=0.5, backend="metal")
@@ -318,6 +323,14 @@ def test_methods_lists_the_registry():
     assert names[0] == "multilayer" and len(names) == len(set(names)) >= 7
     for m in dof.methods():
         assert m["title"] and m["paper"]
+    # Each method's options with their kinds, bounds, units and defaults, as blur checks them.
+    gather = next(m for m in dof.methods() if m["name"] == "gather")
+    assert gather["options"] == [{"key": "max_coc", "kind": "count", "min": 1, "max": 96, "unit": "px, CoC diameter",
+                                  "default": "what the scene needs, up to the largest",
+                                  "help": "largest CoC diameter the method honours"}]
+    multilayer = next(m for m in dof.methods() if m["name"] == "multilayer")
+    merge = next(o for o in multilayer["options"] if o["key"] == "merge")
+    assert merge["kind"] == "choice" and merge["choices"] == ["none", "2x2", "4x4"] and merge["default"] == "none"
 
 
 @pytest.mark.parametrize("method", [m["name"] for m in dof.methods()])

@@ -139,9 +139,10 @@ fn the_generic_path_gives_each_methods_own_image() {
     let generic =
         |b: &mut CpuBackend, name: &str, setting: Setting| Registered::named(name).unwrap().run(b, &input, &setting).unwrap().image;
     let first = |name: &str| Registered::named(name).unwrap().settings(true).remove(0);
+    let options = |name: &str| Registered::named(name).unwrap().options(&first(name)).unwrap();
 
     let own: Vec<(&str, Setting, RgbImage)> = vec![
-        ("gather", first("gather"), gather::gather(b, front, depth, &lens, first("gather").value).unwrap().image),
+        ("gather", first("gather"), gather::gather(b, front, depth, &lens, options("gather").gather_max_radius).unwrap().image),
         (
             "ring-gather",
             first("ring-gather"),
@@ -150,7 +151,7 @@ fn the_generic_path_gives_each_methods_own_image() {
                 front,
                 depth,
                 &lens,
-                &ring_gather::RingGatherOptions { rings: first("ring-gather").value.unwrap(), ..Default::default() },
+                &ring_gather::RingGatherOptions { rings: options("ring-gather").ring_gather.rings, ..Default::default() },
             )
             .unwrap()
             .image,
@@ -175,7 +176,7 @@ fn the_generic_path_gives_each_methods_own_image() {
                 b,
                 &input.layers,
                 &lens,
-                &raytrace::RaytraceOptions { spp: first("raytrace").value.unwrap(), ..Default::default() },
+                &raytrace::RaytraceOptions { spp: options("raytrace").raytrace.spp, ..Default::default() },
             )
             .unwrap()
             .image,
@@ -187,7 +188,7 @@ fn the_generic_path_gives_each_methods_own_image() {
     let setting = first("layered");
     let options = layered::LayeredOptions { cascaded: true, layers_per_doubling: 2, ..Default::default() };
     let own = layered::layered(b, &input.layers, &lens, &options).unwrap().image;
-    assert_eq!(setting.label, "cascaded layers/doubling=2");
+    assert_eq!(setting.label, "layers_per_doubling=2");
     let psnr = dof::metrics::compare(&generic(b, "layered", setting), &own, None).unwrap().psnr_db;
     assert!(psnr >= 40.0, "layered DoF: the device plan's image is {psnr:.1} dB from the host plan's");
 }

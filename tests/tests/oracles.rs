@@ -16,7 +16,7 @@
 //!   the method suites state.
 
 use dof::backend::{Backend, CpuBackend};
-use dof::frame::{METHODS, MethodInfo, MethodOptions, RaytraceOptions};
+use dof::frame::{METHODS, MethodInfo, MethodOptions, RaytraceOptions, Scale, Tolerances, VulkanTolerance};
 use dof::layers::{Fragment, LayeredImage, RgbImage};
 use dof::methods::one_shot::one_shot;
 use dof::stress::test_lens;
@@ -106,33 +106,7 @@ fn size() -> impl Strategy<Value = (u32, u32)> {
     (prop::sample::select(EDGES), prop::sample::select(EDGES))
 }
 
-/// What a method is held to, by property. Every registered method needs an entry: a method added
-/// to the registry fails [`every_method_states_its_tolerances`] until its tolerances are stated.
-struct Tolerances {
-    /// In focus: the largest difference from the front composite relative to its value (0: bit for
-    /// bit).
-    in_focus: f32,
-    /// Energy: the largest relative change of a channel's mean over the window.
-    energy: f64,
-    /// CPU against Vulkan.
-    vulkan: VulkanTolerance,
-}
-
-/// How far Vulkan (lavapipe in CI) may be from the CPU: `|vk - cpu| <= rel · scale` for all but
-/// `1 / share` of the pixels (every pixel when `share` is 0), where `scale` is `max(|cpu|, floor)`,
-/// or the image's peak.
-struct VulkanTolerance {
-    rel: f32,
-    scale: Scale,
-    share: usize,
-}
-
-enum Scale {
-    Value(f32),
-    Peak,
-}
-
-/// The tolerances, with the reasons:
+/// The tolerances each registry entry states ([`MethodInfo::tolerances`]), with the reasons:
 /// - in focus, the gathering baseline (and bokeh sprites, whose blur it is): a sub-pixel CoC gives
 ///   the pixel's own sample the weight `w = 1 / (r + 1/2)²`, not a power of two, and the result is
 ///   `(w·c)·(1/w)`: two roundings, so within 2 ulp (2.4e-7 relative; measured 1.2e-7). The others
@@ -150,30 +124,8 @@ enum Scale {
 ///   ray grazing a pixel corner may go either way. On lavapipe the gathers, ray tracing and
 ///   layered DoF measured bit for bit on these images, splatting within 2.3e-6 and bokeh sprites
 ///   within 3.2e-5 (relative to `max(|cpu|, 1e-3)`).
-fn tolerances(m: &MethodInfo) -> Option<Tolerances> {
-    let value = |rel, floor| VulkanTolerance { rel, scale: Scale::Value(floor), share: 0 };
-    Some(match m.name {
-        "multilayer" | "tiled" => Tolerances { in_focus: 0.0, energy: 1e-3, vulkan: value(1e-5, 1e-2) },
-        "gather" => Tolerances { in_focus: 2.4e-7, energy: 1e-5, vulkan: value(1e-5, 1e-3) },
-        "ring-gather" => Tolerances { in_focus: 0.0, energy: 1e-5, vulkan: value(1e-4, 1e-2) },
-        "bokeh" => Tolerances { in_focus: 2.4e-7, energy: 1e-5, vulkan: VulkanTolerance { rel: 1e-4, scale: Scale::Peak, share: 0 } },
-        "raytrace" => {
-            Tolerances { in_focus: 0.0, energy: 1e-5, vulkan: VulkanTolerance { rel: 1e-5, scale: Scale::Value(1.0), share: 200 } }
-        }
-        "layered" => Tolerances { in_focus: 0.0, energy: 1e-5, vulkan: value(1e-5, 1.0) },
-        _ => return None,
-    })
-}
-
 fn tolerances_of(m: &MethodInfo) -> Tolerances {
-    tolerances(m).unwrap_or_else(|| panic!("{}: no tolerances stated in tests/tests/oracles.rs", m.name))
-}
-
-#[test]
-fn every_method_states_its_tolerances() {
-    for m in METHODS {
-        tolerances_of(m);
-    }
+    m.tolerances
 }
 
 /// The pinhole-sized aperture: every CoC of the test lens between 0.5 units and +inf is under

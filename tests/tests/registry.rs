@@ -4,7 +4,10 @@
 //! context, so a method added to the registry is covered without a change.
 
 use dof::backend::{Backend, BufferId, CpuBackend};
-use dof::frame::{ContextDesc, CountBuffer, DofContext, Extent, Frame, METHODS, MethodInfo, MethodOptions, Reads, RgbBuffer, SlotBuffer};
+use dof::frame::{
+    ContextDesc, CountBuffer, DofContext, Extent, Frame, Kind, METHODS, MethodInfo, MethodOption, MethodOptions, Reads, RgbBuffer,
+    SlotBuffer, Value,
+};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::one_shot::one_shot;
@@ -218,5 +221,92 @@ fn unknown_method_names_list_the_registry() {
     let e = dof::frame::registry::method("nosuch").unwrap_err().to_string();
     for m in METHODS {
         assert!(e.contains(m.name), "{e}");
+    }
+}
+
+/// Every command a method records, at each of its evaluation points and with image input and
+/// output, belongs to one of the stages its entry names, so reports file it in the right column.
+#[test]
+fn every_recorded_command_belongs_to_a_stage_of_its_entry() {
+    let b = &mut CpuBackend::new();
+    let (w, h, l) = (40, 24, 3);
+    for m in METHODS {
+        for point in m.sweep.points {
+            let options = m.parse_options(point).unwrap_or_else(|e| panic!("{} `{point}`: {e}", m.name));
+            for image_io in [false, true] {
+                let desc = ContextDesc { image_io, ..ContextDesc::new(Extent::new(w, h, l), options.clone()) };
+                let mut ctx = (m.create)(b, &desc).unwrap_or_else(|e| panic!("{} `{point}`: {e}", m.name));
+                let bufs = caller_buffers(b, Extent::new(w, h, l));
+                let frame = Frame::layers(w, h, l, test_lens(0.02), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
+                let recording = ctx.recording(b, &frame).unwrap_or_else(|e| panic!("{}: {e}", m.name));
+                for c in recording.commands() {
+                    assert!(m.column(c.label()).is_some(), "{} `{point}`: no stage of its entry claims `{}`", m.name, c.label());
+                }
+                drop(recording);
+                ctx.destroy(b);
+                bufs.iter().for_each(|&id| b.destroy_buffer(id));
+            }
+        }
+    }
+}
+
+/// Every entry's evaluation points parse, its full, quick and timed picks name points it has, and
+/// the defaults its options state are the option types' own.
+#[test]
+fn every_entry_states_parseable_sweeps_and_true_defaults() {
+    let defaults = format!("{:?}", MethodOptions::default());
+    for m in METHODS {
+        let s = m.sweep;
+        let picks = s.full.iter().chain(s.quick).chain(s.timed.as_ref());
+        assert!(picks.into_iter().all(|&i| i < s.points.len()), "{}: a pick beyond its {} points", m.name, s.points.len());
+        assert!(!s.full.is_empty() && !s.quick.is_empty(), "{}", m.name);
+        for point in s.points {
+            m.parse_options(point).unwrap_or_else(|e| panic!("{} `{point}`: {e}", m.name));
+        }
+        for spec in m.options.iter().filter(|s| s.option != MethodOption::MaxCoc) {
+            let parsed = m.parse_options(&format!("{}={}", spec.option.key(), spec.default)).unwrap();
+            assert_eq!(format!("{parsed:?}"), defaults, "{} {}: the stated default is not the default", m.name, spec.option.key());
+        }
+    }
+}
+
+/// An option is refused, naming the methods that take it, where a method does not take it; a
+/// value is refused, naming the option's bounds and unit, where it lies outside them; a key no
+/// method knows is refused, naming the method's own options. The bounds themselves are accepted.
+#[test]
+fn entries_refuse_options_they_do_not_take_and_values_out_of_bounds() {
+    for m in METHODS {
+        for option in MethodOption::ALL.into_iter().filter(|&o| !m.takes(o)) {
+            let e = m.method_options([(option.key(), Value::Flag(true))]).unwrap_err().to_string();
+            assert!(e.contains("applies to") && e.contains(&option.methods()) && e.contains(m.name), "{}: {e}", m.name);
+        }
+        let e = m.method_options([("nosuch", Value::Int(1))]).unwrap_err().to_string();
+        assert!(e.contains("unknown option 'nosuch'"), "{e}");
+        for spec in m.options {
+            let key = spec.option.key();
+            let (inside, outside): (Vec<Value>, Vec<Value>) = match spec.kind {
+                Kind::Count { min, max } => (
+                    vec![Value::Int(min.into()), Value::Int(max.into())],
+                    vec![Value::Int(i64::from(min) - 1), Value::Int(i64::from(max) + 1), Value::Number(min as f64 + 0.5)],
+                ),
+                Kind::Number { min, max } => (
+                    vec![Value::Number(min.into()), Value::Int(1)],
+                    vec![Value::Number(f64::from(min) - 1.0), Value::Number(f64::from(max) * 2.0), Value::Number(f64::NAN)],
+                ),
+                Kind::Flag => (vec![Value::Flag(false), Value::Text("true".into())], vec![Value::Int(1), Value::Text("yes".into())]),
+                Kind::Choice(names) => (names.iter().map(|&n| Value::from(n)).collect(), vec![Value::from("3x3")]),
+                Kind::Aperture => (vec![Value::from("circle"), Value::from("blades:6")], vec![Value::from("blades:1"), Value::Int(6)]),
+            };
+            for v in inside {
+                m.method_options([(key.as_str(), v.clone())]).unwrap_or_else(|e| panic!("{} {key}={v}: {e}", m.name));
+            }
+            for v in outside {
+                let e = m.method_options([(key.as_str(), v.clone())]).map(|_| ()).unwrap_err().to_string();
+                assert!(e.contains(&key), "{} {key}={v}: {e}", m.name);
+                if matches!(spec.kind, Kind::Count { .. } | Kind::Number { .. }) && !spec.unit.is_empty() {
+                    assert!(e.contains(spec.unit), "{} {key}={v}: the unit is not named: {e}", m.name);
+                }
+            }
+        }
     }
 }

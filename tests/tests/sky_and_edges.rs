@@ -37,10 +37,10 @@ fn layers(name: &str, lens: &ThinLens, guard_band: GuardBand) -> SceneLayers {
 fn run(backend: &mut dyn Backend, ml: &SceneLayers, lens: ThinLens) -> [RgbImage; 3] {
     let input = MethodInput::new(ml.layers.clone(), lens, ml.margin);
     let first = |m: &dyn EvaluatedMethod| -> Setting { m.settings(false).into_iter().next().unwrap() };
-    let g = Registered::named("gather").unwrap().run(backend, &input, &Setting { label: "max-radius=48".into(), value: Some(48) }).unwrap();
+    let g = Registered::named("gather").unwrap().run(backend, &input, &Setting::new("max_coc=96")).unwrap();
     let single = Registered::named("tiled").unwrap();
     let multi = Registered::named("multilayer").unwrap();
-    let s = single.run(backend, &input, &Setting { value: Some(0), ..first(&single) }).unwrap();
+    let s = single.run(backend, &input, &Setting::new("merge=none tile=16")).unwrap();
     let m = multi.run(backend, &input, &first(&multi)).unwrap();
     [g.image, s.image, m.image].map(|i| input.crop(&i))
 }
@@ -138,7 +138,7 @@ fn vulkan_renders_sky_and_edges_like_the_cpu() {
         let worst = relative(&cpu, &gpu);
         assert!(worst < 1e-5, "{name}: multi-layer splatting differs between the backends by {worst} (relative)");
         let gather = Registered::named("gather").unwrap();
-        let gathered = |b: &mut dyn Backend| gather.run(b, &input, &Setting { label: String::new(), value: Some(48) }).unwrap().image;
+        let gathered = |b: &mut dyn Backend| gather.run(b, &input, &Setting::new("max_coc=96")).unwrap().image;
         let worst = relative(&gathered(&mut CpuBackend::new()), &gathered(&mut vk));
         assert!(worst < 1e-4, "{name}: gather differs by {worst} (relative)");
         dof_tests::assert_clean(&mut vk);

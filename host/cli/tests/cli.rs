@@ -1,6 +1,7 @@
 //! The `dof` command as a user runs it: outputs appear, and bad input gets a clear message and a
 //! non-zero exit (never a panic).
 
+use dof::frame::MethodOption;
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
@@ -90,7 +91,10 @@ fn splatting_methods_render_builtin_and_exr_scenes() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert_fails_with(&["render", "--method", "multilayer", "--tile", "20", "--width", "32", "--height", "32"], "tile size 20");
     assert_fails_with(&["render", "--method", "multilayer", "--merge", "3x3"], "unknown merge level");
-    assert_fails_with(&["render", "--method", "multilayer", "--max-coc", "1000", "--width", "32", "--height", "32"], "use larger tiles");
+    assert_fails_with(
+        &["render", "--method", "multilayer", "--max-coc", "1000", "--width", "32", "--height", "32"],
+        "between 1 and 384 (px, CoC diameter)",
+    );
 }
 
 #[test]
@@ -135,7 +139,7 @@ fn raytrace_layered_and_shaped_apertures_render() {
     }
     assert_fails_with(
         &["render", "--method", "gather", "--aperture", "blades:6", "--width", "32", "--height", "32"],
-        "is supported by multilayer, tiled, bokeh only",
+        "option --aperture applies to multilayer, tiled, bokeh only",
     );
     assert_fails_with(&["render", "--method", "multilayer", "--aperture", "hexagon", "--width", "32", "--height", "32"], "blades:N");
     assert_fails_with(&["render", "--method", "raytrace", "--spp", "0", "--width", "32", "--height", "32"], "rays per pixel");
@@ -328,8 +332,8 @@ fn flags_and_outputs_are_checked_before_the_work() {
     std::fs::write(&file, b"x").unwrap();
     assert_fails_with(&["eval", "--quick", "--out", file.to_str().unwrap()], "is a file");
     // Options a method would ignore are refused; --max-coc errors quote the diameter given.
-    assert_fails_with(&["render", "--method", "reference", "--aperture", "blades:6", "--samples", "1"], "--aperture blades:6");
-    assert_fails_with(&["render", "--method", "raytrace", "--max-coc", "20"], "--max-coc caps the blur");
+    assert_fails_with(&["render", "--method", "reference", "--aperture", "blades:6", "--samples", "1"], "option --aperture applies to");
+    assert_fails_with(&["render", "--method", "raytrace", "--max-coc", "20"], "option --max-coc applies to");
     assert_fails_with(&["render", "--method", "multilayer", "--max-coc", "0"], "got 0");
     assert_fails_with(&["render", "--method", "gather", "--max-coc", "200"], "got 200");
     // Negative coordinates need no `=`.
@@ -480,7 +484,7 @@ fn scaling_bench_writes_points_and_plots_and_reports_skips() {
             assert!(std::fs::metadata(&path).is_ok_and(|m| m.len() > 1000), "{} not written", path.display());
         }
     }
-    assert!(std::fs::read_to_string(out.join("scaling.md")).unwrap().contains("| gather | max-radius=48 | cpu |"));
+    assert!(std::fs::read_to_string(out.join("scaling.md")).unwrap().contains("| gather | max_coc=96 | cpu |"));
 
     // A budget every run exceeds: each series runs its first point and reports the rest as skipped.
     let o = dof(&[
@@ -541,9 +545,9 @@ fn ring_gather_renders_and_cost_ratios_are_measured() {
     assert!(exr.exists() && exr.with_extension("png").exists());
     assert_fails_with(
         &["render", "--scene", "simple", "--method", "ring-gather", "--rings", "0", "--width", "64", "--height", "36"],
-        "1 to 8 rings",
+        "between 1 and 8 (rings)",
     );
-    assert_fails_with(&["render", "--scene", "simple", "--method", "gather", "--rings", "3"], "--rings is the ring gather's knob");
+    assert_fails_with(&["render", "--scene", "simple", "--method", "gather", "--rings", "3"], "option --rings applies to ring-gather only");
 
     let out = temp("ratios");
     let dir = out.to_str().unwrap();
@@ -775,10 +779,10 @@ fn flag_table_base(sub: &str, flag: &str, dir: &std::path::Path) -> Vec<(String,
                 ("--method", Some(method.into())),
                 ("--width", Some("32".into())),
                 ("--height", Some("18".into())),
-                ("--samples", Some("1".into())),
                 ("--out", Some(d("render.exr"))),
             ]
             .into_iter()
+            .chain((method == "reference").then(|| ("--samples", Some("1".into()))))
             .chain(sequence.then(|| ("--frames", Some("2".into()))))
             .collect()
         }
@@ -994,25 +998,15 @@ fn every_method_renders_a_sequence() {
     let methods = dof::frame::METHODS.iter().map(|m| m.name).chain(["pinhole", "reference", "layers"]);
     for method in methods {
         let out = temp(&format!("seq-all/{method}.exr"));
+        // Samples for the methods that take them (the reference's renders, ray tracing's rays).
+        let samples = dof::frame::registry::method(method).map_or(method == "reference", |m| m.takes(MethodOption::Samples));
+        let samples = if samples { &["--samples", "2"][..] } else { &[][..] };
         let o = dof(&[
-            "render",
-            "--method",
-            method,
-            "--width",
-            "24",
-            "--height",
-            "16",
-            "--samples",
-            "2",
-            "--frames",
-            "2",
-            "--orbit",
-            "3",
-            "--f-number-to",
-            "4",
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+            &["render", "--method", method, "--width", "24", "--height", "16"][..],
+            samples,
+            &["--frames", "2", "--orbit", "3", "--f-number-to", "4", "--out", out.to_str().unwrap()][..],
+        ]
+        .concat());
         let stdout = String::from_utf8_lossy(&o.stdout);
         assert!(o.status.success(), "{method}: {}", String::from_utf8_lossy(&o.stderr));
         assert!(temp(&format!("seq-all/{method}-0001.exr")).exists(), "{method}: {stdout}");

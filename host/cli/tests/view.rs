@@ -71,25 +71,13 @@ fn the_viewer_screenshot_matches_dof_render() {
     // starts them (single-layer splatting merges 4x4).
     for (method, merge) in [("multilayer", "none"), ("tiled", "4x4"), ("gather", "4x4"), ("ring-gather", "4x4"), ("bokeh", "4x4")] {
         let exr = dir.join(format!("render-{method}.exr"));
-        // `dof render` takes `--merge` for the splatting methods only.
-        let render_merge = if matches!(method, "multilayer" | "tiled") { merge } else { "none" };
+        // `dof render` takes `--merge` for the methods that merge only.
+        let merges = dof::frame::registry::method(method).is_ok_and(|m| m.takes(dof::frame::MethodOption::Merge));
+        let render_merge = if merges { &["--merge", merge][..] } else { &[][..] };
         run(dof()
-            .args([
-                "render",
-                "--scene",
-                g,
-                "--method",
-                method,
-                "--merge",
-                render_merge,
-                "--backend",
-                "vulkan",
-                "--width",
-                "256",
-                "--height",
-                "144",
-                "--out",
-            ])
+            .args(["render", "--scene", g, "--method", method])
+            .args(render_merge)
+            .args(["--backend", "vulkan", "--width", "256", "--height", "144", "--out"])
             .arg(&exr));
         let shot = dir.join(format!("view-{method}.png"));
         let s = shot.to_str().unwrap();

@@ -167,7 +167,7 @@ mod tests {
         let reference = flat(w, h, [0.5, 0.5, 0.5]);
         // Distinct colours, so each row's image says which row it is.
         let rows = vec![
-            ("gather\nmax-radius=48\nPSNR 20.00 dB".to_string(), flat(w, h, [4.0, 0.0, 0.0])),
+            ("gather\nmax_coc=96\nPSNR 20.00 dB".to_string(), flat(w, h, [4.0, 0.0, 0.0])),
             ("multilayer\nmerge=4x4 tile=16\nPSNR 30.00 dB".to_string(), flat(w, h, [0.0, 4.0, 0.0])),
         ];
         let g = compose(&reference, &rows)?;

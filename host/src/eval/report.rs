@@ -101,31 +101,12 @@ pub struct Record {
     pub list_histogram: Vec<(u32, u32)>,
 }
 
-/// The column of Franke et al. 2018, Table 1, a recorded stage belongs to: `merge` (input preparation: packing
-/// and merging, the ray tracer's min/max hierarchy, layered DoF's matting, or bokeh detection),
-/// `splat` (tile counts, compaction, allocation, binning and their scans), `sort`, `apply`
-/// (accumulation, the gathers, tracing, layered DoF's blurs and composition, the sprite draw).
-pub fn table_column(label: &str) -> &'static str {
-    if label.starts_with("splat/pack")
-        || label.starts_with("splat/merge")
-        || label == "raytrace/hierarchy"
-        || label == "layered/matte"
-        || label == "bokeh/detect"
-    {
-        "merge"
-    } else if label.starts_with("sort/") {
-        "sort"
-    } else if label.starts_with("splat/accumulate")
-        || label == "gather"
-        || label.starts_with("ring-gather")
-        || label == "raytrace/trace"
-        || label.starts_with("layered/")
-        || label == "bokeh/draw"
-    {
-        "apply"
-    } else {
-        "splat"
-    }
+/// The column of Franke et al. 2018, Table 1, that a stage of the registry method `method`
+/// belongs to, as its entry says ([`crate::frame::MethodInfo::column`]): `merge`, `splat`, `sort` or
+/// `apply`; `other` for a label no stage of the method claims (the registry's tests hold every
+/// recorded label to a stage).
+pub fn table_column(method: &str, label: &str) -> &'static str {
+    crate::frame::registry::method(method).ok().and_then(|m| m.column(label)).map_or("other", |c| c.name())
 }
 
 fn db(v: Option<f64>) -> String {
@@ -269,7 +250,7 @@ impl Report {
         for r in self.records.iter().filter(|r| r.scene == scene && r.backend != "host") {
             let mut cols = BTreeMap::new();
             for (label, ms) in &r.stages_ms {
-                *cols.entry(table_column(label)).or_insert(0.0) += ms;
+                *cols.entry(table_column(&r.method, label)).or_insert(0.0) += ms;
             }
             let col = |c: &str| cols.get(c).map_or("-".into(), |v: &f64| format!("{v:.2}"));
             let list = r.figures.get("mean_list_length").map_or("-".into(), |v| format!("{v:.0}"));

@@ -15,7 +15,7 @@
 use super::render::BackendArg;
 use anyhow::Context;
 use dof::backend::{Backend, BackendCounters, BufferId, CommandTime};
-use dof::frame::{ContextDesc, ContextReport, Extent, MethodInfo, MethodOptions, Reads, RgbBuffer, SplatOptions};
+use dof::frame::{ContextDesc, ContextReport, Extent, MethodInfo, MethodOption, MethodOptions, Reads, RgbBuffer, Value};
 use dof::layers::{LayeredImage, RgbImage};
 use dof::methods::one_shot::{self, Runner};
 use dof::methods::splat::Merge;
@@ -114,7 +114,9 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
     check_view_flags(args)?;
     scene::check_subsamples(args.subsamples).map_err(|e| anyhow::anyhow!("--subsamples: {e}"))?;
     let method = dof::frame::registry::method(&args.method)?;
-    let options = MethodOptions { splat: SplatOptions { merge: args.merge, ..Default::default() }, ..Default::default() };
+    // `--merge` (default 4x4) applies to the methods that merge; the others run with their defaults.
+    let merge = method.takes(MethodOption::Merge).then(|| ("merge", Value::from(args.merge.name())));
+    let options = method.method_options(merge)?;
     let view = SceneView::new(args)?;
     let warmup = Warmup { frames: args.warmup, ms: args.warmup_ms };
     let mut backend = super::render::backend(args.backend)?;
@@ -160,7 +162,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "peel_span_ms": peel.map(|f| f.median),
             "peel_span_ms_p10": peel.map(|f| f.p10),
             "peel_span_ms_p90": peel.map(|f| f.p90),
-            "table1_ms": table1(&measured.stages),
+            "table1_ms": table1(method.name, &measured.stages),
         });
         let mut json = serde_json::json!({
             "method": method.name,
@@ -341,10 +343,10 @@ impl Spread {
 
 /// The per-stage means summed into the columns of Franke et al. 2018, Table 1 (merge, splat,
 /// sort, apply; the peel's stages apart), as `dof eval` groups them.
-fn table1(stages: &BTreeMap<String, f64>) -> BTreeMap<&'static str, f64> {
+fn table1(method: &str, stages: &BTreeMap<String, f64>) -> BTreeMap<&'static str, f64> {
     let mut columns: BTreeMap<&'static str, f64> = ["merge", "splat", "sort", "apply"].into_iter().map(|c| (c, 0.0)).collect();
     for (label, ms) in stages {
-        let column = if label.starts_with("peel/") { "peel" } else { dof::eval::report::table_column(label) };
+        let column = if label.starts_with("peel/") { "peel" } else { dof::eval::report::table_column(method, label) };
         *columns.entry(column).or_default() += ms;
     }
     columns

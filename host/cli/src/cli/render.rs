@@ -2,10 +2,7 @@
 //! PNG preview beside it.
 
 use anyhow::{Context, bail};
-use dof::aperture::parse_aperture;
-use dof::frame::{
-    BokehOptions, LayeredOptions, METHODS, MethodInfo, MethodOption, MethodOptions, RaytraceOptions, RingGatherOptions, SplatOptions,
-};
+use dof::frame::{METHODS, MethodInfo, MethodOption, MethodOptions, Value};
 use dof::io::{ExrWindow, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr, write_png_preview};
 use dof::layers::RgbImage;
 use dof::layers::{LayeredImage, crop_plane};
@@ -129,23 +126,25 @@ pub struct RenderArgs {
     aimed_emitters: bool,
     /// Splatting and bokeh sprites: the aperture shape, `circle`, `blades:N[:ROTATION_DEGREES[:CURVATURE]]`,
     /// `star:N[:ROTATION_DEGREES[:INNER]]` or a PNG (its luminance as coverage; see `dof::aperture`).
-    #[arg(long, default_value = "circle")]
-    aperture: String,
-    /// The ring gather: sample rings at half resolution (1 to 8; 5, 91 samples, is what engines ship).
-    #[arg(long, default_value_t = dof::methods::ring_gather::DEFAULT_RINGS)]
-    rings: u32,
-    /// Bokeh sprites: luminance above the 5x5 neighbourhood's mean that makes a sprite.
-    #[arg(long, default_value_t = 1.0)]
-    lum_threshold: f32,
-    /// Bokeh sprites: how many the sprite buffer holds.
-    #[arg(long, default_value_t = 4096)]
-    sprites: u32,
+    /// Default `circle`.
+    #[arg(long)]
+    aperture: Option<String>,
+    /// The ring gather: sample rings at half resolution (1 to 8; default 5, 91 samples, what engines
+    /// ship).
+    #[arg(long)]
+    rings: Option<u32>,
+    /// Bokeh sprites: luminance above the 5x5 neighbourhood's mean that makes a sprite (default 1).
+    #[arg(long, allow_negative_numbers = true)]
+    lum_threshold: Option<f32>,
+    /// Bokeh sprites: how many the sprite buffer holds (default 4096).
+    #[arg(long)]
+    sprites: Option<u32>,
     /// Layered DoF: one blur per layer instead of the cascade.
     #[arg(long)]
     no_cascade: bool,
-    /// Layered DoF: layers per doubling of the CoC (1 to 4).
-    #[arg(long, default_value_t = 2)]
-    layers_per_doubling: u32,
+    /// Layered DoF: layers per doubling of the CoC (1 to 4; default 2).
+    #[arg(long)]
+    layers_per_doubling: Option<u32>,
     /// The margin rendered beyond the frame for built-in and glTF scenes: `auto` (the largest CoC
     /// radius that can reach into the frame, at most 96 px), `off`, or a width in pixels.
     #[arg(long, default_value = "auto", value_parser = parse_guard_band)]
@@ -172,12 +171,12 @@ pub struct RenderArgs {
     /// up to the method's limit).
     #[arg(long)]
     max_coc: Option<u32>,
-    /// Fragment merging before tiling (tiled and multilayer).
-    #[arg(long, default_value = "none")]
-    merge: Merge,
-    /// Tile edge in pixels (tiled and multilayer): 16, 24 or 32.
-    #[arg(long, default_value_t = 16)]
-    tile: u32,
+    /// Fragment merging before tiling (tiled and multilayer; default none).
+    #[arg(long)]
+    merge: Option<Merge>,
+    /// Tile edge in pixels (tiled and multilayer): 16, 24 or 32 (default 16).
+    #[arg(long)]
+    tile: Option<u32>,
     /// Background radiance `R,G,B` (linear, finite, not negative): what a ray that hits nothing sees,
     /// a surface at infinite depth that every method blends like any other. Built-in and glTF
     /// scenes; default the scene's own (black, or the sky of `fence` and `edges`; a glTF scene's
@@ -310,47 +309,21 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             );
         }
     }
-    // Options a method would otherwise ignore: each registry entry lists those it takes (their
-    // defaults pass: they change nothing).
-    let method = args.method.frame();
-    let name = args.method.name();
-    if args.aperture != "circle" && !method.is_some_and(|m| m.shaped_aperture()) {
-        bail!("--aperture {} is supported by {} only; {name} uses the circle", args.aperture, MethodOption::Aperture.methods());
-    }
-    if args.max_coc.is_some() && !method.is_some_and(|m| m.takes(MethodOption::MaxCoc)) {
-        bail!("--max-coc caps the blur of {} only; {name} does not take it", MethodOption::MaxCoc.methods());
-    }
-    if args.rings != dof::methods::ring_gather::DEFAULT_RINGS && !method.is_some_and(|m| m.takes(MethodOption::Rings)) {
-        bail!("--rings is the ring gather's knob; {name} does not take it");
-    }
-    let given = [
-        (args.merge != Merge::None, MethodOption::Merge),
-        (args.tile != 16, MethodOption::Tile),
-        (args.lum_threshold != 1.0, MethodOption::LumThreshold),
-        (args.sprites != 4096, MethodOption::Sprites),
-        (args.no_cascade, MethodOption::NoCascade),
-        (args.layers_per_doubling != 2, MethodOption::LayersPerDoubling),
-    ];
-    if let Some((_, option)) = given.iter().find(|(set, option)| *set && !method.is_some_and(|m| m.takes(*option))) {
-        bail!("{} applies to {} only; {name} does not take it", option.flag(), option.methods());
-    }
-    if args.aimed_emitters && name != "reference" {
-        bail!("--aimed-emitters applies to reference only; {name} does not take it");
-    }
-    match (args.max_coc, args.method.name()) {
-        (Some(0), _) => bail!("--max-coc is a CoC diameter of at least 1 px, got 0"),
-        (Some(d), "gather") if d.div_ceil(2) > dof::methods::gather::MAX_RADIUS => {
-            bail!(
-                "--max-coc for gather is at most {} px (its window of radius {} px), got {d}",
-                2 * dof::methods::gather::MAX_RADIUS,
-                dof::methods::gather::MAX_RADIUS
-            )
+    // The method's options: a registry method's entry refuses those it does not take and values
+    // out of its bounds; render's own methods take none (the reference takes `--samples`).
+    match args.method.frame() {
+        Some(_) => drop(method_options(args)?),
+        None => {
+            let name = args.method.name();
+            let given = args.method_flags().into_iter().filter(|(flag, _)| !(*flag == "--samples" && name == "reference"));
+            if let Some((flag, _)) = given.into_iter().next() {
+                let option = MethodOption::from_key(flag).map_or_else(String::new, |o| o.methods());
+                bail!("option {flag} applies to {option} only; {name} does not take it");
+            }
         }
-        (Some(d), "ring-gather") if d.div_ceil(2) > dof::methods::ring_gather::MAX_RADIUS => {
-            bail!("--max-coc for ring-gather is at most {} px, got {d}", 2 * dof::methods::ring_gather::MAX_RADIUS)
-        }
-        (Some(d), "layered") if d > 1024 => bail!("--max-coc for layered is at most 1024 px, got {d}"),
-        _ => {}
+    }
+    if args.aimed_emitters && args.method.name() != "reference" {
+        bail!("--aimed-emitters applies to reference only; {} does not take it", args.method.name());
     }
     if !(args.exposure > 0.0 && args.exposure.is_finite()) {
         bail!("--exposure must be a positive number, got {}", args.exposure);
@@ -386,8 +359,8 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     if lower.ends_with(".gltf") || lower.ends_with(".glb") {
         inputs.extend(scene::gltf_external_files(Path::new(args.scene())));
     }
-    if Path::new(&args.aperture).extension().is_some() {
-        inputs.push(PathBuf::from(&args.aperture));
+    if let Some(mask) = args.aperture.as_deref().filter(|a| Path::new(a).extension().is_some()) {
+        inputs.push(PathBuf::from(mask));
     }
     // One look-up an output (a sequence may have 10,000 frames on each side).
     let inputs: std::collections::HashMap<PathBuf, &PathBuf> =
@@ -441,24 +414,7 @@ fn check_ranges(args: &RenderArgs) -> anyhow::Result<()> {
     if let Some(deg) = args.yfov.filter(|d| !(*d > 0.0 && *d < 180.0)) {
         bail!("--yfov (the vertical field of view) must lie strictly between 0 and 180 degrees, got {deg}");
     }
-    if !(args.lum_threshold >= 0.0 && args.lum_threshold.is_finite()) {
-        bail!("--lum-threshold must be a finite number, not negative, got {}", args.lum_threshold);
-    }
-    let max_rings = dof::methods::ring_gather::MAX_SAMPLE_RINGS;
-    if !(1..=max_rings).contains(&args.rings) {
-        bail!("--rings: the ring gather takes 1 to {max_rings} rings, got {}", args.rings);
-    }
-    if !(1..=MAX_SPRITES).contains(&args.sprites) {
-        bail!("--sprites (the sprite capacity) must lie between 1 and {MAX_SPRITES}, got {}", args.sprites);
-    }
-    if !(1..=4).contains(&args.layers_per_doubling) {
-        bail!("--layers-per-doubling (layers per doubling of the CoC) must be 1 to 4, got {}", args.layers_per_doubling);
-    }
     check_sequence(args)?;
-    let tiles = dof_shaders::splat::TILE_SIZES;
-    if !tiles.contains(&args.tile) {
-        bail!("--tile: tile size {} is not one of {tiles:?}", args.tile);
-    }
     Ok(())
 }
 
@@ -567,9 +523,6 @@ fn is_file_scene(scene: &str) -> bool {
     let lower = scene.to_ascii_lowercase();
     [".exr", ".gltf", ".glb"].iter().any(|ext| lower.ends_with(ext))
 }
-
-/// Most sprites `--sprites` may ask for (the bokeh sprite buffer's limit).
-const MAX_SPRITES: u32 = 1 << 20;
 
 /// Default and largest `--layers`.
 const DEFAULT_LAYERS: u32 = 4;
@@ -753,29 +706,36 @@ fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) 
     Ok((image.crop(margin), crop_plane(&depth, layers.width, margin)))
 }
 
-/// The frame API's options from the command line (each method reads its own).
+/// The frame API's options from the command line: the method options given, checked by the
+/// method's registry entry (kinds, bounds, which it takes).
+/// Render's own methods (pinhole, layers, reference) take the defaults, which they do not read.
 fn method_options(args: &RenderArgs) -> anyhow::Result<MethodOptions> {
-    let aperture = parse_aperture(&args.aperture)?;
-    let ring_defaults = RingGatherOptions::default();
-    Ok(MethodOptions {
-        splat: SplatOptions {
-            tile: args.tile,
-            merge: args.merge,
-            max_radius: args.max_coc.map(|d| d as f32 / 2.0),
-            aperture: aperture.clone(),
-            ..Default::default()
-        },
-        gather_max_radius: args.max_coc.map(|d| d.div_ceil(2)),
-        ring_gather: RingGatherOptions { rings: args.rings, max_radius: args.max_coc.map_or(ring_defaults.max_radius, |d| d.div_ceil(2)) },
-        bokeh: BokehOptions { lum_threshold: args.lum_threshold, capacity: args.sprites, aperture, ..Default::default() },
-        raytrace: RaytraceOptions { spp: args.samples.unwrap_or(16), ..Default::default() },
-        layered: LayeredOptions {
-            cascaded: !args.no_cascade,
-            layers_per_doubling: args.layers_per_doubling,
-            max_coc: args.max_coc.map_or(LayeredOptions::default().max_coc, |d| d as f32),
-            ..Default::default()
-        },
-    })
+    match args.method.frame() {
+        Some(method) => Ok(method.method_options(args.method_flags())?),
+        None => Ok(MethodOptions::default()),
+    }
+}
+
+impl RenderArgs {
+    /// The method options given on the command line, by flag.
+    fn method_flags(&self) -> Vec<(&'static str, Value)> {
+        let flag = |o: MethodOption| o.flag();
+        [
+            self.tile.map(|v| (flag(MethodOption::Tile), Value::from(v))),
+            self.merge.map(|v| (flag(MethodOption::Merge), Value::from(v.name()))),
+            self.max_coc.map(|v| (flag(MethodOption::MaxCoc), Value::from(v))),
+            self.aperture.as_deref().map(|v| (flag(MethodOption::Aperture), Value::from(v))),
+            self.rings.map(|v| (flag(MethodOption::Rings), Value::from(v))),
+            self.lum_threshold.map(|v| (flag(MethodOption::LumThreshold), Value::from(v))),
+            self.sprites.map(|v| (flag(MethodOption::Sprites), Value::from(v))),
+            self.samples.map(|v| (flag(MethodOption::Samples), Value::from(v))),
+            self.no_cascade.then(|| (flag(MethodOption::NoCascade), Value::from(true))),
+            self.layers_per_doubling.map(|v| (flag(MethodOption::LayersPerDoubling), Value::from(v))),
+        ]
+        .into_iter()
+        .flatten()
+        .collect()
+    }
 }
 
 pub(super) fn backend(choice: BackendArg) -> anyhow::Result<Box<dyn dof::backend::Backend>> {

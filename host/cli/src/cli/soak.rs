@@ -8,8 +8,8 @@
 use super::render::BackendArg;
 use dof::backend::{Backend, BufferId, CpuBackend, VulkanBackend, VulkanOptions};
 use dof::frame::{
-    BokehOptions, ContextDesc, CountBuffer, DofContext, Extent, Frame, METHODS, Merge, MethodInfo, MethodOptions, Reads, RgbBuffer,
-    SlotBuffer, SplatOptions,
+    ContextDesc, CountBuffer, DofContext, Extent, Frame, METHODS, MethodInfo, MethodOption, MethodOptions, Reads, RgbBuffer, SlotBuffer,
+    Value,
 };
 use dof::methods::buffers::{SLOT_WORDS, read_rgb, slot_words};
 use dof::stress::{noise_with_sky, test_lens};
@@ -53,15 +53,13 @@ fn resident_bytes() -> i64 {
     statm.split_whitespace().nth(1).and_then(|p| p.parse::<i64>().ok()).map_or(0, |pages| pages * 4096)
 }
 
-/// Options for every method: multi-layer splatting merged 4x4, single-layer 2x2 (so both merging
-/// paths run), bokeh sprites from a low threshold (the noise makes highlights).
-fn options_for(method: &MethodInfo) -> MethodOptions {
-    let merge = if method.reads == Reads::AllLayers { Merge::X4 } else { Merge::X2 };
-    MethodOptions {
-        splat: SplatOptions { merge, ..Default::default() },
-        bokeh: BokehOptions { lum_threshold: 0.5, ..Default::default() },
-        ..Default::default()
-    }
+/// Options for every method, each where the method takes it: multi-layer splatting merged 4x4,
+/// single-layer 2x2 (so both merging paths run), bokeh sprites from a low threshold (the noise
+/// makes highlights).
+fn options_for(method: &MethodInfo) -> anyhow::Result<MethodOptions> {
+    let merge = if method.reads == Reads::AllLayers { "4x4" } else { "2x2" };
+    let wanted = [(MethodOption::Merge, Value::from(merge)), (MethodOption::LumThreshold, Value::from(0.5f32))];
+    Ok(method.method_options(wanted.into_iter().filter(|(o, _)| method.takes(*o)).map(|(o, v)| (o.key(), v)))?)
 }
 
 pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
@@ -92,7 +90,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
     let extent = Extent::new(max, max, MAX_LAYERS);
     let mut contexts: Vec<Box<dyn DofContext>> = Vec::new();
     for m in METHODS {
-        contexts.push((m.create)(b, &ContextDesc::new(extent, options_for(m)))?);
+        contexts.push((m.create)(b, &ContextDesc::new(extent, options_for(m)?))?);
     }
     let mut rng = Pcg64::seed_from_u64(args.seed);
     let warm_up = (args.frames / 10).max(8);

@@ -2,11 +2,8 @@
 //! created once for the largest frame and recorded into the viewer's command buffer.
 
 use anyhow::Result;
-use dof::aperture::parse_aperture;
 use dof::backend::{Backend, CommandTime};
-use dof::frame::{
-    BokehOptions, ContextDesc, DofContext, Extent, Frame, METHODS, Merge, MethodInfo, MethodOptions, Reads, RingGatherOptions, SplatOptions,
-};
+use dof::frame::{ContextDesc, DofContext, Extent, Frame, METHODS, Merge, MethodInfo, MethodOption, MethodOptions, Reads, Value};
 
 /// A method of the frame API's registry, as the viewer offers it.
 #[derive(Clone, Copy, PartialEq)]
@@ -70,14 +67,14 @@ pub struct MethodSettings {
 
 impl MethodSettings {
     /// The frame API's options these settings make (each method reads its own).
+    /// The viewer's controls apply to the methods that take them (the registry entry says which);
+    /// the entry checks their values.
     fn options(&self) -> Result<MethodOptions> {
-        let aperture = parse_aperture(&self.aperture)?;
-        Ok(MethodOptions {
-            splat: SplatOptions { tile: self.tile, merge: self.merge, aperture: aperture.clone(), ..Default::default() },
-            ring_gather: RingGatherOptions { rings: self.rings, ..Default::default() },
-            bokeh: BokehOptions { aperture, ..Default::default() },
-            ..Default::default()
-        })
+        let m = self.method.0;
+        let aperture = (!self.aperture.is_empty()).then(|| ("aperture", Value::from(self.aperture.as_str())));
+        let given = [("tile", Value::from(self.tile)), ("merge", Value::from(self.merge.name())), ("rings", Value::from(self.rings))];
+        let taken = given.into_iter().chain(aperture).filter(|(key, _)| MethodOption::from_key(key).is_some_and(|o| m.takes(o)));
+        Ok(m.method_options(taken)?)
     }
 
     /// What a context of any method is made from: everything but the method and its knob.
@@ -129,7 +126,8 @@ impl Contexts {
             made = true;
         }
         if let (Some(knob), Some((_, ctx))) = (s.method.0.knob, slot.as_mut()) {
-            // The ring count is the only knob today; a method's knob changes without a new context.
+            // The viewer's knob control is the ring count, the registry's one knob; it changes without a
+            // new context.
             let value = if knob.name == "rings" { s.rings } else { knob.default };
             if ctx.knob() != Some(value) {
                 ctx.set_knob(value)?;

@@ -603,7 +603,7 @@ fn record(b: &mut CpuBackend, ctx: &mut dyn DofContext, bufs: &[BufferId; 3], f:
         lens: f.lens.get(),
         input: match f.input {
             InputIn::Buffers { fragments, counts } => FrameInput::Layers {
-                fragments: SlotBuffer(buffer(fragments, bufs)),
+                fragments: SlotBuffer::current(buffer(fragments, bufs)),
                 counts: CountBuffer(buffer(counts, bufs)),
                 layers: size.2,
                 footprint_side: footprint_side(&f),

@@ -572,7 +572,7 @@ impl CpuCheck {
         let words: Vec<u32> = image.fragments.iter().flat_map(|f| f.slot().words()).collect();
         self.cpu.write_buffer(self.slots, 0, &words)?;
         self.cpu.write_buffer(self.counts, 0, &image.counts)?;
-        let (slots, counts, out) = (SlotBuffer(self.slots), CountBuffer(self.counts), RgbBuffer(self.out));
+        let (slots, counts, out) = (SlotBuffer::current(self.slots), CountBuffer(self.counts), RgbBuffer(self.out));
         self.ctx.record(&mut self.cpu, &Frame::layers(w, h, image.max_layers, lens, slots, counts, out))?;
         self.cpu.submit()?;
         let overflow = self.ctx.report(&mut self.cpu)?.overflow_tiles;
@@ -768,7 +768,7 @@ fn main() -> Result<ExitCode> {
             (
                 lens,
                 FrameInput::Layers {
-                    fragments: SlotBuffer(fragments_id),
+                    fragments: SlotBuffer::current(fragments_id),
                     counts: CountBuffer(counts_id),
                     layers: layers.max_layers,
                     footprint_side: 0,

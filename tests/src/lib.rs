@@ -99,8 +99,15 @@ pub fn context_frames(
         let img = f.image;
         b.write_buffer(bufs[0], 0, &slot_words(img)).unwrap();
         b.write_buffer(bufs[1], 0, &img.counts).unwrap();
-        let frame =
-            Frame::layers(img.width, img.height, img.max_layers, f.lens, SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
+        let frame = Frame::layers(
+            img.width,
+            img.height,
+            img.max_layers,
+            f.lens,
+            SlotBuffer::current(bufs[0]),
+            CountBuffer(bufs[1]),
+            RgbBuffer(bufs[2]),
+        );
         let before = b.counters();
         ctx.record(b, &frame).unwrap();
         b.submit().unwrap();

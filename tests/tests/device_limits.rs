@@ -118,7 +118,8 @@ fn a_list_overflow_on_vulkan_is_counted_and_degrades_cleanly() {
     let mut desc = SplatContextDesc::new(64, 48, 3, SplatOptions::default());
     desc.list_entries = Some(2000);
     let mut ctx = SplatContext::new(b, &desc).unwrap();
-    ctx.record(b, &Frame::layers(64, 48, 3, test_lens(0.02), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]))).unwrap();
+    ctx.record(b, &Frame::layers(64, 48, 3, test_lens(0.02), SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2])))
+        .unwrap();
     b.submit().unwrap();
     let report = ctx.report(b).unwrap();
     assert!(report.overflow_tiles > 0 && report.list_entries <= 2000, "{report:?}");

@@ -292,7 +292,7 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
     let before = vk.counters();
     let outside = ctx.record(
         &mut vk,
-        &Frame::layers(4, 4, 1, dof::stress::test_lens(0.01), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2])),
+        &Frame::layers(4, 4, 1, dof::stress::test_lens(0.01), SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2])),
     );
     assert!(matches!(&outside, Err(CoreError::RecordingState(m)) if m.contains("record_into")), "{outside:?}");
     assert_eq!(vk.counters(), before, "the refused frame recorded nothing");
@@ -458,7 +458,8 @@ fn a_context_dropped_during_a_recording_is_freed_once_it_completed() {
     {
         // SAFETY: the renderer's command buffer is recording, outside a render pass.
         let mut recording = unsafe { vk.record_into(r.cb) }.unwrap();
-        ctx.record(&mut *recording, &Frame::layers(8, 8, 1, lens, SlotBuffer(slots), CountBuffer(counts), RgbBuffer(out))).unwrap();
+        ctx.record(&mut *recording, &Frame::layers(8, 8, 1, lens, SlotBuffer::current(slots), CountBuffer(counts), RgbBuffer(out)))
+            .unwrap();
         drop(ctx);
         assert_eq!(recording.release_finished().unwrap(), 0, "the recording uses the buffers");
     }

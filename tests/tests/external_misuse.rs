@@ -57,11 +57,11 @@ fn every_refused_frame_leaves_the_callers_command_buffer_untouched() {
     let colour = describe(colour_image, ImageFormat::Rgba16Float, [W, H], ro, ro);
     let depth = describe(depth_image, ImageFormat::D32Float, [W, H], ro, ro);
     let lens = dof::stress::test_lens(0.01);
-    let layers = Frame::layers(W, H, 2, lens, SlotBuffer(fragments), CountBuffer(counts), RgbBuffer(out));
+    let layers = Frame::layers(W, H, 2, lens, SlotBuffer::current(fragments), CountBuffer(counts), RgbBuffer(out));
     let images = FrameInput::Images { color: colour, depth, encoding: DepthEncoding::Reversed { near: 0.1, far: f32::INFINITY } };
     let invalid: Vec<(&str, Frame)> = vec![
-        ("larger than the context", Frame::layers(W + 1, H, 2, lens, SlotBuffer(fragments), CountBuffer(counts), RgbBuffer(out))),
-        ("more layers than the context", Frame::layers(W, H, 3, lens, SlotBuffer(fragments), CountBuffer(counts), RgbBuffer(out))),
+        ("larger than the context", Frame::layers(W + 1, H, 2, lens, SlotBuffer::current(fragments), CountBuffer(counts), RgbBuffer(out))),
+        ("more layers than the context", Frame::layers(W, H, 3, lens, SlotBuffer::current(fragments), CountBuffer(counts), RgbBuffer(out))),
         ("an invalid lens", Frame { lens: dof::stress::test_lens(-1.0), ..layers }),
         ("an output buffer too small", Frame { output: FrameOutput::Buffer(RgbBuffer(small)), ..layers }),
         // Refused by the image copy's own check, while the frame is captured.
@@ -153,7 +153,7 @@ fn a_context_destroyed_mid_recording_is_freed_once_the_command_buffer_completed(
     let [fragments, counts, out] = [10 * pixels, pixels, 3 * pixels].map(|w| vk.create_buffer(w, "caller").unwrap());
     vk.write_buffer(fragments, 0, &slot_words(&image)).unwrap();
     vk.write_buffer(counts, 0, &image.counts).unwrap();
-    let frame = Frame::layers(W, H, 2, dof::stress::test_lens(0.01), SlotBuffer(fragments), CountBuffer(counts), RgbBuffer(out));
+    let frame = Frame::layers(W, H, 2, dof::stress::test_lens(0.01), SlotBuffer::current(fragments), CountBuffer(counts), RgbBuffer(out));
     for method in METHODS {
         let start = vk.counters().device_bytes;
         let ctx = (method.create)(&mut vk, &desc()).unwrap();
@@ -191,7 +191,7 @@ fn wide_frame(b: &mut dyn Backend) -> (Frame, [BufferId; 3]) {
     let bufs = [dof::methods::buffers::SLOT_WORDS as u64 * pixels, pixels, 3 * pixels].map(|n| b.create_buffer(n, "caller").unwrap());
     b.write_buffer(bufs[0], 0, &slot_words(&image)).unwrap();
     b.write_buffer(bufs[1], 0, &image.counts).unwrap();
-    (Frame::layers(w, h, 1, dof::stress::test_lens(0.01), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2])), bufs)
+    (Frame::layers(w, h, 1, dof::stress::test_lens(0.01), SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2])), bufs)
 }
 
 fn wide_desc() -> ContextDesc {

@@ -160,7 +160,7 @@ fn the_frame_api_checks_footprints() {
     let out = b.create_buffer(3 * pixels, "test/out").unwrap();
     b.write_buffer(input, 0, &words).unwrap();
     b.write_buffer(counts, 0, &img.counts).unwrap();
-    let frame = Frame::layers(W, W, 2, lens(), SlotBuffer(input), CountBuffer(counts), RgbBuffer(out));
+    let frame = Frame::layers(W, W, 2, lens(), SlotBuffer::current(input), CountBuffer(counts), RgbBuffer(out));
     let method = registry::method("multilayer").unwrap();
     let extent = Extent::new(W, W, 2);
     // A context made without room for footprints refuses a frame that has them.
@@ -183,7 +183,7 @@ fn the_frame_api_checks_footprints() {
     ctx.destroy(&mut b);
     // A buffer without the footprint words is too small for a frame that says it has them.
     let short = b.create_buffer(words.len() as u64 - pixels * 2, "test/short").unwrap();
-    let frame = Frame::layers(W, W, 2, lens(), SlotBuffer(short), CountBuffer(counts), RgbBuffer(out)).with_footprints(2);
+    let frame = Frame::layers(W, W, 2, lens(), SlotBuffer::current(short), CountBuffer(counts), RgbBuffer(out)).with_footprints(2);
     let mut options = MethodOptions::default();
     options.splat.footprint_side = 2;
     let mut ctx = (method.create)(&mut b, &ContextDesc::new(extent, options)).unwrap();

@@ -33,7 +33,7 @@ fn frame(image: &LayeredImage, aperture: f32, bufs: &[BufferId; 3]) -> Frame {
         image.height,
         image.max_layers,
         test_lens(aperture),
-        SlotBuffer(bufs[0]),
+        SlotBuffer::current(bufs[0]),
         CountBuffer(bufs[1]),
         RgbBuffer(bufs[2]),
     )

@@ -35,7 +35,7 @@ fn spanned_frames(b: &mut dyn Backend) -> Vec<Timed> {
     b.write_buffer(bufs[1], 0, &image.counts).unwrap();
     let options = SplatOptions { merge: Merge::X2, ..Default::default() };
     let mut ctx = SplatContext::new(b, &SplatContextDesc::new(w, h, l, options)).unwrap();
-    let frame = Frame::layers(w, h, l, test_lens(0.02), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
+    let frame = Frame::layers(w, h, l, test_lens(0.02), SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
     let mut out = Vec::new();
     for _ in 0..3 {
         let start = Instant::now();

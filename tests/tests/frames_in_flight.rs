@@ -52,7 +52,7 @@ impl TwoFrames {
             b.write_buffer(fragments, 0, &slot_words(&image)).unwrap();
             b.write_buffer(counts, 0, &image.counts).unwrap();
             buffers.extend([fragments, counts, out]);
-            Frame::layers(w, h, image.max_layers, test_lens(aperture), SlotBuffer(fragments), CountBuffer(counts), RgbBuffer(out))
+            Frame::layers(w, h, image.max_layers, test_lens(aperture), SlotBuffer::current(fragments), CountBuffer(counts), RgbBuffer(out))
         });
         TwoFrames { frames, buffers }
     }

@@ -196,7 +196,8 @@ fn a_multilayer_frame_records_a_bounded_number_of_commands() {
         let desc = SplatContextDesc::new(w, h, layers, SplatOptions { merge, ..Default::default() });
         let mut ctx = SplatContext::new(&mut b, &desc).unwrap();
         let before = b.counters();
-        ctx.record(&mut b, &Frame::layers(w, h, layers, test_lens(0.02), SlotBuffer(slots), CountBuffer(counts), RgbBuffer(out))).unwrap();
+        ctx.record(&mut b, &Frame::layers(w, h, layers, test_lens(0.02), SlotBuffer::current(slots), CountBuffer(counts), RgbBuffer(out)))
+            .unwrap();
         b.submit().unwrap();
         let c = b.counters().since(&before);
         assert!(c.commands <= MAX_COMMANDS, "{merge:?}: {} commands, budget {MAX_COMMANDS}", c.commands);

@@ -261,7 +261,7 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_the_cpu() {
         ctx.record(
             &mut cpu,
             &frame(
-                FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: 1, footprint_side: 0 },
+                FrameInput::Layers { fragments: SlotBuffer::current(fragments), counts: CountBuffer(counts), layers: 1, footprint_side: 0 },
                 from_buffers,
             ),
         )
@@ -374,7 +374,7 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
         ctx.record(
             &mut vk,
             &frame(
-                FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: 1, footprint_side: 0 },
+                FrameInput::Layers { fragments: SlotBuffer::current(fragments), counts: CountBuffer(counts), layers: 1, footprint_side: 0 },
                 from_buffers,
             ),
         )

@@ -208,7 +208,7 @@ fn the_registry_one_shot_path_equals_the_one_shot_function() {
         assert_eq!(shot.report.figures["missed_rays"], expected.missed_rays as f64);
         let mut ctx = (method.create)(b.as_mut(), &ContextDesc::new(Extent::new(16, 16, 1), options)).unwrap();
         let out = b.create_buffer(3 * 96 * 54, "out").unwrap();
-        let f = Frame::layers(96, 54, 1, lens, SlotBuffer(out), CountBuffer(out), RgbBuffer(out));
+        let f = Frame::layers(96, 54, 1, lens, SlotBuffer::current(out), CountBuffer(out), RgbBuffer(out));
         assert!(matches!(ctx.record(b.as_mut(), &f), Err(CoreError::ResizeNeeded { .. })));
         ctx.destroy(b.as_mut());
         b.destroy_buffer(out);

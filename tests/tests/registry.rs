@@ -45,7 +45,15 @@ fn frames_resizes_and_one_shot(b: &mut dyn Backend) {
                 assert!(
                     ctx.record(
                         b,
-                        &Frame::layers(w, h, l, test_lens(aperture), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]))
+                        &Frame::layers(
+                            w,
+                            h,
+                            l,
+                            test_lens(aperture),
+                            SlotBuffer::current(bufs[0]),
+                            CountBuffer(bufs[1]),
+                            RgbBuffer(bufs[2])
+                        )
                     )
                     .is_err(),
                     "{}: beyond",
@@ -57,8 +65,15 @@ fn frames_resizes_and_one_shot(b: &mut dyn Backend) {
             let image = input_for(m, w, h, l);
             b.write_buffer(bufs[0], 0, &slot_words(&image)).unwrap();
             b.write_buffer(bufs[1], 0, &image.counts).unwrap();
-            let frame =
-                Frame::layers(w, h, image.max_layers, test_lens(aperture), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
+            let frame = Frame::layers(
+                w,
+                h,
+                image.max_layers,
+                test_lens(aperture),
+                SlotBuffer::current(bufs[0]),
+                CountBuffer(bufs[1]),
+                RgbBuffer(bufs[2]),
+            );
             let before = b.counters();
             ctx.record(b, &frame).unwrap_or_else(|e| panic!("{} frame {i}: {e}", m.name));
             b.submit().unwrap();
@@ -102,7 +117,8 @@ fn recordings_are_values(b: &mut dyn Backend) {
         b.write_buffer(bufs[0], 0, &slot_words(&image)).unwrap();
         b.write_buffer(bufs[1], 0, &image.counts).unwrap();
         b.submit().unwrap();
-        let frame = Frame::layers(w, h, image.max_layers, test_lens(0.02), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
+        let frame =
+            Frame::layers(w, h, image.max_layers, test_lens(0.02), SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
         let before = b.counters();
         let recording = ctx.recording(b, &frame).unwrap_or_else(|e| panic!("{}: {e}", m.name));
         assert_eq!(b.counters().since(&before).commands, 0, "{}: making the recording records nothing", m.name);
@@ -169,7 +185,15 @@ fn dropped_contexts_free_themselves(b: &mut dyn Backend) {
         let image = input_for(m, 24, 16, 2);
         b.write_buffer(bufs[0], 0, &slot_words(&image)).unwrap();
         b.write_buffer(bufs[1], 0, &image.counts).unwrap();
-        let frame = Frame::layers(24, 16, image.max_layers, test_lens(0.02), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
+        let frame = Frame::layers(
+            24,
+            16,
+            image.max_layers,
+            test_lens(0.02),
+            SlotBuffer::current(bufs[0]),
+            CountBuffer(bufs[1]),
+            RgbBuffer(bufs[2]),
+        );
         ctx.record(b, &frame).unwrap();
         b.submit().unwrap();
         drop(ctx);
@@ -202,7 +226,7 @@ fn a_context_is_tied_to_its_backend() {
         // The other backend holds buffers of the same ids as the context's.
         let theirs: Vec<BufferId> = (0..64).map(|_| other.create_buffer(8, "theirs").unwrap()).collect();
         let bufs = caller_buffers(&mut other, extent);
-        let frame = Frame::layers(16, 16, 1, test_lens(0.01), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
+        let frame = Frame::layers(16, 16, 1, test_lens(0.01), SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
         let refused = ctx.record(&mut other, &frame).expect_err("recording on another backend");
         assert!(refused.to_string().contains("another backend"), "{}: {refused}", m.name);
         assert!(ctx.resize(&mut other, Extent::new(8, 8, 1)).is_err(), "{}: resize on another backend", m.name);
@@ -237,7 +261,7 @@ fn every_recorded_command_belongs_to_a_stage_of_its_entry() {
                 let desc = ContextDesc { image_io, ..ContextDesc::new(Extent::new(w, h, l), options.clone()) };
                 let mut ctx = (m.create)(b, &desc).unwrap_or_else(|e| panic!("{} `{point}`: {e}", m.name));
                 let bufs = caller_buffers(b, Extent::new(w, h, l));
-                let frame = Frame::layers(w, h, l, test_lens(0.02), SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
+                let frame = Frame::layers(w, h, l, test_lens(0.02), SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
                 let recording = ctx.recording(b, &frame).unwrap_or_else(|e| panic!("{}: {e}", m.name));
                 for c in recording.commands() {
                     assert!(m.column(c.label()).is_some(), "{} `{point}`: no stage of its entry claims `{}`", m.name, c.label());

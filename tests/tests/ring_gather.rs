@@ -179,7 +179,8 @@ fn a_context_records_frames_without_allocating() {
         cpu.write_buffer(counts, 0, &vec![1u32; (fw * fh) as usize]).unwrap();
         ctx.set_options(options(rings)).unwrap();
         let before = cpu.counters();
-        ctx.record(&mut cpu, &Frame::layers(fw, fh, 1, lens(0.02), SlotBuffer(input), CountBuffer(counts), RgbBuffer(output))).unwrap();
+        ctx.record(&mut cpu, &Frame::layers(fw, fh, 1, lens(0.02), SlotBuffer::current(input), CountBuffer(counts), RgbBuffer(output)))
+            .unwrap();
         cpu.submit().unwrap();
         let spent = cpu.counters().since(&before);
         assert_eq!((spent.allocations, spent.readbacks, spent.uploads, spent.submissions), (0, 0, 0, 1), "{fw}x{fh}");

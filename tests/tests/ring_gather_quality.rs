@@ -152,7 +152,7 @@ fn highlights_beyond_a_tiles_capacity_stay_in_the_gather() {
     cpu.write_buffer(counts, 0, &vec![1u32; (w * h) as usize]).unwrap();
     for _ in 0..2 {
         let before = cpu.counters();
-        ctx.record(&mut cpu, &Frame::layers(w, h, 1, lens, SlotBuffer(input), CountBuffer(counts), RgbBuffer(output))).unwrap();
+        ctx.record(&mut cpu, &Frame::layers(w, h, 1, lens, SlotBuffer::current(input), CountBuffer(counts), RgbBuffer(output))).unwrap();
         cpu.submit().unwrap();
         let spent = cpu.counters().since(&before);
         assert_eq!((spent.allocations, spent.readbacks, spent.uploads), (0, 0, 0));

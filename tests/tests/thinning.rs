@@ -44,7 +44,7 @@ fn frame(b: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, max_list: u
     let mut desc = SplatContextDesc::new(w, h, l, SplatOptions { merge: Merge::None, ..Default::default() });
     desc.max_list = Some(max_list);
     let mut ctx = SplatContext::new(b, &desc).unwrap();
-    ctx.record(b, &Frame::layers(w, h, l, *lens, SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]))).unwrap();
+    ctx.record(b, &Frame::layers(w, h, l, *lens, SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]))).unwrap();
     b.submit().unwrap();
     let report = ctx.report(b).unwrap();
     let out = read_rgb(b, bufs[2], w, h).unwrap().data;

@@ -4,7 +4,7 @@
 //! against what it must give.
 
 use dof_core::backend::{Backend, BufferId, CpuBackend};
-use dof_core::frame::{ContextDesc, CountBuffer, Extent, Frame, METHODS, MethodOptions, RgbBuffer, SLOT_WORDS, SlotBuffer, registry};
+use dof_core::frame::{ContextDesc, CountBuffer, Extent, Frame, METHODS, MethodOptions, RgbBuffer, SLOT_WORDS, SlotBuffer, SlotLayout, registry};
 use dof_core::{ThinLens, shaders};
 
 /// The frame: 64x64 pixels, up to 2 fragments each.
@@ -14,8 +14,9 @@ const LAYERS: u32 = 2;
 const SQUARE: [f32; 3] = [1.0, 0.5, 0.1];
 const BACKGROUND: [f32; 3] = [0.2, 0.2, 0.2];
 
-/// The input in the frame API's layout: per pixel `LAYERS` slots of `SLOT_WORDS` = 5 words (r, g, b
-/// premultiplied by alpha, depth, alpha), front
+/// The input in the frame API's layout `SlotLayout::PremultipliedRgbDepthAlpha` (named where the
+/// frame is made, so that this writer stops compiling if the layout is ever retired): per pixel
+/// `LAYERS` slots of `SLOT_WORDS` = 5 words (r, g, b premultiplied by alpha, depth, alpha), front
 /// to back, and a count of the slots used. A grey background at depth 10 behind an orange square
 /// (pixels 24 to 39 on both axes) at depth 2.
 fn input() -> (Vec<u32>, Vec<u32>) {
@@ -53,7 +54,7 @@ fn mean(rgb: &[[f32; 3]]) -> [f64; 3] {
 fn run(cpu: &mut CpuBackend, method: &str, lens: ThinLens, [fragments, counts, out]: [BufferId; 3]) -> dof_core::Result<Vec<[f32; 3]>> {
     let desc = ContextDesc::new(Extent::new(W, H, LAYERS), MethodOptions::default());
     let mut ctx = registry::create(cpu, registry::method(method)?, &desc)?;
-    ctx.record(cpu, &Frame::layers(W, H, LAYERS, lens, SlotBuffer(fragments), CountBuffer(counts), RgbBuffer(out)))?;
+    ctx.record(cpu, &Frame::layers(W, H, LAYERS, lens, SlotBuffer(fragments, SlotLayout::PremultipliedRgbDepthAlpha), CountBuffer(counts), RgbBuffer(out)))?;
     cpu.submit()?;
     let words = cpu.read_buffer(out, 0, 3 * (W * H) as u64)?;
     ctx.destroy(cpu);

@@ -62,7 +62,10 @@ pub fn one_layer_frame<T>(
     with_buffers(backend, &sizes, |backend, b| {
         backend.write_buffer(b[0], 0, &slots)?;
         backend.write_buffer(b[1], 0, &vec![1u32; pixels as usize])?;
-        let ran = run(backend, &Frame::layers(image.width, image.height, 1, *lens, SlotBuffer(b[0]), CountBuffer(b[1]), RgbBuffer(b[2])))?;
+        let ran = run(
+            backend,
+            &Frame::layers(image.width, image.height, 1, *lens, SlotBuffer::current(b[0]), CountBuffer(b[1]), RgbBuffer(b[2])),
+        )?;
         Ok((read_rgb(backend, b[2], image.width, image.height)?, ran))
     })
 }

@@ -159,8 +159,15 @@ impl Runner {
         crate::lens::check(lens)?;
         backend.write_buffer(self.io[0], 0, &slot_words(image))?;
         backend.write_buffer(self.io[1], 0, &image.counts)?;
-        let frame =
-            Frame::layers(e.width, e.height, e.layers, *lens, SlotBuffer(self.io[0]), CountBuffer(self.io[1]), RgbBuffer(self.io[2]));
+        let frame = Frame::layers(
+            e.width,
+            e.height,
+            e.layers,
+            *lens,
+            SlotBuffer::current(self.io[0]),
+            CountBuffer(self.io[1]),
+            RgbBuffer(self.io[2]),
+        );
         Ok(frame.with_footprints(side))
     }
 

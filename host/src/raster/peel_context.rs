@@ -185,7 +185,7 @@ impl MeshPeelContext {
     pub fn frame(&self, lens: ThinLens, output: FrameOutput) -> Frame {
         let s = &self.slots;
         let input = FrameInput::Layers {
-            fragments: SlotBuffer(s.fragments),
+            fragments: SlotBuffer::current(s.fragments),
             counts: CountBuffer(s.counts),
             layers: s.layers,
             footprint_side: s.footprint_side,

@@ -128,7 +128,7 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
         }
         let mut lens = test_lens(aperture);
         lens.focus_distance = 1.0 + (frame % 7) as f32 * 0.5;
-        let f = Frame::layers(w, h, layers, lens, SlotBuffer(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
+        let f = Frame::layers(w, h, layers, lens, SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
         contexts[method].record(b, &f)?;
         b.submit()?;
         per_method[method] += 1;

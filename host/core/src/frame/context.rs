@@ -131,7 +131,7 @@ pub trait DofContext {
     ///         radii.push(ctx.report_frame(&mut b, N - 1)?.figures["radius_px"]);
     ///     }
     ///     let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.002 * (frame + 1) as f32, focus_distance: 2.0, pixels_per_unit: 8000.0 };
-    ///     let (slots, counts, rgb) = (SlotBuffer(fragments), CountBuffer(counts), RgbBuffer(out));
+    ///     let (slots, counts, rgb) = (SlotBuffer::current(fragments), CountBuffer(counts), RgbBuffer(out));
     ///     ctx.record(&mut b, &Frame::layers(32, 32, 1, lens, slots, counts, rgb))?;
     ///     b.submit()?;
     /// }

@@ -26,9 +26,53 @@ pub enum DepthEncoding {
     Reversed { near: f32, far: f32 },
 }
 
+/// The layout of the fragment slots a caller writes, by name: a writer states the one it writes
+/// when it makes its [`SlotBuffer`], and a layout the kernels no longer read is removed from this
+/// type, so a writer of an older layout stops compiling instead of handing the kernels words they
+/// misread.
+#[non_exhaustive]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SlotLayout {
+    /// [`SLOT_WORDS`] = 5 words a slot, f32 bits: red, green, blue **premultiplied** by alpha,
+    /// planar view depth, alpha in [0, 1] (`dof_shaders::slot::Slot::words`).
+    PremultipliedRgbDepthAlpha,
+}
+
+impl SlotLayout {
+    /// The layout the kernels read.
+    pub const CURRENT: SlotLayout = SlotLayout::PremultipliedRgbDepthAlpha;
+
+    /// Words of one slot.
+    pub fn words(self) -> u32 {
+        match self {
+            SlotLayout::PremultipliedRgbDepthAlpha => SLOT_WORDS,
+        }
+    }
+}
+
+/// Fragment slots: per pixel `layers` slots in the layout it names (see [`FrameInput::Layers`]),
+/// `.0` the backend's buffer. A writer names its layout; a buffer id alone is not slots:
+///
+/// ```compile_fail,E0061
+/// # use dof_core::frame::SlotBuffer;
+/// # fn slots(id: dof_core::backend::BufferId) -> SlotBuffer {
+/// SlotBuffer(id) // which layout were they written in?
+/// # }
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct SlotBuffer(pub BufferId, pub SlotLayout);
+
+impl SlotBuffer {
+    /// Slots written in the layout the kernels read ([`SlotLayout::CURRENT`]), for writers that
+    /// use the library's own (`dof_shaders::slot`, `dof::methods::buffers::slot_words`).
+    pub fn current(id: BufferId) -> Self {
+        SlotBuffer(id, SlotLayout::CURRENT)
+    }
+}
+
 /// The caller's buffers a frame reads and writes, each typed by what it holds so that handing one
 /// where another belongs does not compile. Each wraps the backend's [`BufferId`] (made by
-/// `create_buffer` or `import_buffer`): `SlotBuffer(id)` says what `id` holds, `.0` gives it back.
+/// `create_buffer` or `import_buffer`): `CountBuffer(id)` says what `id` holds, `.0` gives it back.
 macro_rules! caller_buffer {
     ($($(#[$doc:meta])* $name:ident;)*) => {$(
         $(#[$doc])*
@@ -38,8 +82,6 @@ macro_rules! caller_buffer {
 }
 
 caller_buffer! {
-    /// Fragment slots: per pixel `layers` slots of [`SLOT_WORDS`] words (see [`FrameInput::Layers`]).
-    SlotBuffer;
     /// Slots used per pixel, one word each.
     CountBuffer;
     /// An RGB image: 3 words (f32 red, green, blue) a pixel, row-major.
@@ -98,9 +140,10 @@ impl Frame {
     /// holds, so swapping two does not compile:
     ///
     /// ```
-    /// # use dof_core::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};
+    /// # use dof_core::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer, SlotLayout};
     /// # fn frame(b: &mut dyn dof_core::Backend, lens: dof_core::ThinLens) -> dof_core::Result<Frame> {
-    /// let slots = SlotBuffer(b.create_buffer(5 * 64, "slots")?);
+    /// // The slots as this writer writes them: premultiplied colour, depth, alpha.
+    /// let slots = SlotBuffer(b.create_buffer(5 * 64, "slots")?, SlotLayout::PremultipliedRgbDepthAlpha);
     /// let counts = CountBuffer(b.create_buffer(64, "counts")?);
     /// let out = RgbBuffer(b.create_buffer(3 * 64, "out")?);
     /// Ok(Frame::layers(8, 8, 1, lens, slots, counts, out))
@@ -181,7 +224,14 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
             if footprint_side > 4 {
                 return Err(Error::InvalidArgument(format!("footprints on a {footprint_side}x{footprint_side} grid: the side is 0 to 4")));
             }
-            let per_slot = SLOT_WORDS as u64 + (footprint_side > 0) as u64;
+            if fragments.1 != SlotLayout::CURRENT {
+                return Err(Error::InvalidArgument(format!(
+                    "the slots are written in the {:?} layout; the kernels read {:?}",
+                    fragments.1,
+                    SlotLayout::CURRENT
+                )));
+            }
+            let per_slot = fragments.1.words() as u64 + (footprint_side > 0) as u64;
             buffers.extend([("fragments", fragments.0, per_slot * pixels * layers as u64), ("counts", counts.0, pixels)])
         }
         FrameInput::Images { color, depth, encoding } => {

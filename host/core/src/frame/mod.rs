@@ -55,7 +55,7 @@ pub use bokeh::{BokehContext, BokehContextDesc, BokehOptions};
 pub use context::{ContextReport, DofContext, Extent};
 pub use gather::{GatherContext, GatherContextDesc};
 pub use in_flight::MAX_FRAMES_IN_FLIGHT;
-pub use io::{CountBuffer, DepthEncoding, Frame, FrameInput, FrameOutput, RgbBuffer, SLOT_WORDS, SlotBuffer};
+pub use io::{CountBuffer, DepthEncoding, Frame, FrameInput, FrameOutput, RgbBuffer, SLOT_WORDS, SlotBuffer, SlotLayout};
 pub use layer_options::{GuardBand, LayerOptions};
 pub use layered::{LayeredContext, LayeredContextDesc, LayeredOptions, LayeredPlanReport};
 pub use options::{Kind, MethodOption, MethodOptions, OptionSpec, Value};

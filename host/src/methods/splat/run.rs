@@ -82,7 +82,7 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
     let result = with_buffers(backend, &sizes, |backend, io| {
         backend.write_buffer(io[0], 0, &input)?;
         backend.write_buffer(io[1], 0, &image.counts)?;
-        let frame = Frame::layers(w, h, layers, *lens, SlotBuffer(io[0]), CountBuffer(io[1]), RgbBuffer(io[2]))
+        let frame = Frame::layers(w, h, layers, *lens, SlotBuffer::current(io[0]), CountBuffer(io[1]), RgbBuffer(io[2]))
             .with_footprints(image.footprint_grid());
         let mut attempt = 0;
         loop {

@@ -747,7 +747,12 @@ impl App<'_> {
             width: fw,
             height: fh,
             lens: shape.lens,
-            input: FrameInput::Layers { fragments: SlotBuffer(fragments), counts: CountBuffer(counts), layers: slots, footprint_side: 0 },
+            input: FrameInput::Layers {
+                fragments: SlotBuffer::current(fragments),
+                counts: CountBuffer(counts),
+                layers: slots,
+                footprint_side: 0,
+            },
             output: FrameOutput::Buffer(RgbBuffer(display.rgb)),
         };
         // The display pass: the documented tone map (the one PNG previews use, from the same

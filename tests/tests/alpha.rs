@@ -313,7 +313,7 @@ fn bad_alphas_are_clamped_and_counted() {
         let out = &shot.image;
         assert!(out.data.iter().flatten().all(|c| c.is_finite() && *c >= 0.0), "{}", m.name);
         if m.name == "multilayer" {
-            assert_eq!(shot.report.figures["alpha_clamped"], bad_count, "{}", shot.report.summary);
+            assert_eq!(shot.report.figures()["alpha_clamped"], bad_count, "{}", shot.report.summary);
             assert!(shot.report.summary.contains(&format!("alpha: {bad_count} clamped")), "{}", shot.report.summary);
         }
         if ["layered", "raytrace"].contains(&m.name) {

@@ -150,7 +150,7 @@ fn every_method_reports_what_it_clamped() {
         for method in METHODS {
             let out = one_shot(b, method, &MethodOptions::default(), &img, &test_lens(0.02)).unwrap();
             let want = if method.reads == Reads::AllLayers { 5.0 } else { 4.0 };
-            assert_eq!(out.report.figures.get("clamped"), Some(&want), "{} on {}: {}", method.name, b.kind(), out.report.summary);
+            assert_eq!(out.report.figures().get("clamped"), Some(&want), "{} on {}: {}", method.name, b.kind(), out.report.summary);
             assert!(out.report.summary.contains("clamped"), "{}: {}", method.name, out.report.summary);
             assert!(out.image.data.iter().all(|p| p.iter().all(|&c| c.is_finite() && c >= 0.0)), "{}", method.name);
         }

@@ -214,8 +214,11 @@ fn context_frames_against_the_host_path(b: &mut dyn Backend, cascaded: bool) -> 
         }
         assert!(psnr >= MIN_PSNR_DB && max <= MAX_TONE_DIFFERENCE, "cascaded {cascaded}, frame {i}: {psnr:.2} dB, {max}");
         // The range reduced on the device is the host plan's.
-        assert_eq!((report.figures["coc_min"], report.figures["coc_max"]), (host.plan.coc_range.0 as f64, host.plan.coc_range.1 as f64));
-        assert_eq!(report.figures["capped"], host.plan.capped as f64);
+        assert_eq!(
+            (report.figures()["coc_min"], report.figures()["coc_max"]),
+            (host.plan.coc_range.0 as f64, host.plan.coc_range.1 as f64)
+        );
+        assert_eq!(report.figures()["capped"], host.plan.capped as f64);
     }
     got.into_iter().map(|g| g.0).collect()
 }

@@ -316,7 +316,7 @@ fn extra_passes_find_nothing_on(b: &mut dyn Backend) {
     let report = ctx.peel_report(b).unwrap();
     assert_eq!((report.recorded, report.with_surface), (layers, 2), "{report:?}");
     assert_eq!(report.drawn, 3, "the pass after the last surface draws, the rest do not: {report:?}");
-    let figures = ctx.report(b).unwrap().figures;
+    let figures = ctx.report(b).unwrap().figures();
     assert_eq!(figures["peel_passes_recorded"], layers as f64);
     ctx.destroy(b);
 }

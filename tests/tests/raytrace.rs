@@ -4,6 +4,7 @@
 
 use dof::CoreError;
 use dof::backend::{Backend, CpuBackend};
+use dof::frame::RaytraceReport;
 use dof::layers::LayeredImage;
 use dof::methods::gather::gather;
 use dof::methods::raytrace::{RaytraceOptions, RaytraceOutput, raytrace};
@@ -161,8 +162,9 @@ fn context_frames_equal_the_one_shot_function(b: &mut dyn Backend) -> Vec<dof::l
     for (i, (image, report)) in got.iter().enumerate() {
         let expected = raytrace(b, &images[i], &frames[i].lens, &options).unwrap();
         assert!(image.data == expected.image.data, "frame {i} differs from the one-shot function");
-        assert_eq!(report.figures["missed_rays"], expected.missed_rays as f64, "frame {i}");
-        assert_eq!(report.figures["levels"], expected.levels as f64, "frame {i}");
+        let typed = report.details::<RaytraceReport>().expect("ray tracing's own report");
+        assert_eq!((typed.missed_rays, typed.levels), (expected.missed_rays, expected.levels), "frame {i}");
+        assert_eq!(report.figures()["missed_rays"], expected.missed_rays as f64, "frame {i}");
     }
     got.into_iter().map(|g| g.0).collect()
 }
@@ -205,7 +207,7 @@ fn the_registry_one_shot_path_equals_the_one_shot_function() {
         let shot = one_shot(b.as_mut(), method, &options, &layers, &lens).unwrap();
         let expected = raytrace(b.as_mut(), &layers, &lens, &options.raytrace).unwrap();
         assert!(shot.image.data == expected.image.data, "{}", b.kind());
-        assert_eq!(shot.report.figures["missed_rays"], expected.missed_rays as f64);
+        assert_eq!(shot.report.figures()["missed_rays"], expected.missed_rays as f64);
         let mut ctx = (method.create)(b.as_mut(), &ContextDesc::new(Extent::new(16, 16, 1), options)).unwrap();
         let out = b.create_buffer(3 * 96 * 54, "out").unwrap();
         let f = Frame::layers(96, 54, 1, lens, SlotBuffer::current(out), CountBuffer(out), RgbBuffer(out));

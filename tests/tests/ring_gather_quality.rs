@@ -157,7 +157,7 @@ fn highlights_beyond_a_tiles_capacity_stay_in_the_gather() {
         let spent = cpu.counters().since(&before);
         assert_eq!((spent.allocations, spent.readbacks, spent.uploads), (0, 0, 0));
         let report = ctx.report(&mut cpu).unwrap();
-        assert_eq!(report.figures["highlights_capped"], 8.0, "{}", report.summary);
+        assert_eq!(report.figures()["highlights_capped"], 8.0, "{}", report.summary);
         assert!(report.summary.contains("8 highlights gathered"), "{}", report.summary);
     }
     ctx.destroy(&mut cpu);

@@ -160,7 +160,7 @@ impl Registered {
     /// The evaluation's output of a frame: its image, commands and report figures, with the
     /// context's bytes and the splatting settings.
     fn output(&self, options: &MethodOptions, out: OneShot) -> MethodOutput {
-        let mut figures = out.report.figures;
+        let mut figures = out.report.figures();
         figures.insert("buffer_bytes".into(), out.buffer_bytes as f64);
         if self.0.tiles() {
             figures.insert("tile_px".into(), options.splat.tile as f64);

@@ -276,12 +276,7 @@ impl DofContext for BokehContext {
         summary += &format!(", over a gather of radius {radius} px{}", clamped_summary(clamped));
         Ok(ContextReport {
             summary,
-            figures: [
-                ("sprites".to_string(), detected as f64),
-                ("radius_px".to_string(), radius as f64),
-                ("clamped".to_string(), clamped as f64),
-            ]
-            .into(),
+            details: Some(std::sync::Arc::new(BokehReport { sprites: detected, radius_px: radius, clamped })),
             overflow,
             ..Default::default()
         })
@@ -298,3 +293,20 @@ impl DofContext for BokehContext {
         BokehContext::destroy(*self, backend)
     }
 }
+
+/// What a bokeh sprite frame did.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BokehReport {
+    /// Bright pixels detected (those beyond the capacity stay in the blur).
+    pub sprites: u64,
+    /// The gather's radius (px).
+    pub radius_px: u32,
+    /// Input values clamped where read (the numerical contract).
+    pub clamped: u32,
+}
+
+super::context::report_details!(BokehReport, |r| vec![
+    ("sprites", r.sprites as f64),
+    ("radius_px", r.radius_px as f64),
+    ("clamped", r.clamped as f64),
+]);

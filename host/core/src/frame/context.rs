@@ -9,7 +9,9 @@ use super::recording::Recording;
 use crate::backend::Backend;
 use crate::error::Result;
 pub use crate::extent::Extent;
+use std::any::Any;
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 /// What every context's description holds: its largest frame, as `max_width`, `max_height` and
 /// `max_layers`.
@@ -51,14 +53,25 @@ pub(crate) fn remake<C, D: Described>(
     Ok(())
 }
 
-/// What a context's last frame did and left out, in a form every method shares. Read from the
-/// device, so only once that frame's work has completed.
-#[derive(Clone, Debug, Default, PartialEq)]
+/// What a method's frame did, as its own type (`SplatReport`, `GatherReport`, ...): read back
+/// by type with [`ContextReport::details`], flattened by name for tables with
+/// [`ContextReport::figures`].
+pub trait ReportDetails: std::fmt::Debug + Send + Sync + 'static {
+    /// Its figures by name (`mean_list_length`, `radius_px`, ...).
+    fn figures(&self) -> Vec<(&'static str, f64)>;
+    /// Itself, for [`ContextReport::details`].
+    fn as_any(&self) -> &dyn Any;
+}
+
+/// What a context's last frame did and left out, in a form every method shares, with the
+/// method's own report inside. Read from the device, so only once that frame's work has
+/// completed.
+#[derive(Clone, Debug, Default)]
 pub struct ContextReport {
     /// One line for people: what the frame did and what it left out.
     pub summary: String,
-    /// Method-specific figures by name (list lengths, detected highlights, the scanned radius, ...).
-    pub figures: BTreeMap<String, f64>,
+    /// The method's own report ([`ContextReport::details`] reads it by type).
+    pub details: Option<Arc<dyn ReportDetails>>,
     /// Tiles per list-length bucket `(upper bound, tiles)` (Franke et al. 2018, Fig. 12); empty for
     /// methods without tile lists.
     pub list_histogram: Vec<(u32, u32)>,
@@ -66,6 +79,55 @@ pub struct ContextReport {
     /// the sprite capacity): 0 when the frame is whole.
     pub overflow: u64,
 }
+
+impl ContextReport {
+    /// A report of `details`, with its summary.
+    pub fn of(summary: String, details: impl ReportDetails) -> Self {
+        ContextReport { summary, details: Some(Arc::new(details)), ..Default::default() }
+    }
+
+    /// The method's own report, if it is a `T`:
+    /// `report.details::<SplatReport>().map(|r| r.overflow_tiles)`.
+    pub fn details<T: ReportDetails>(&self) -> Option<&T> {
+        self.details.as_deref().and_then(|d| d.as_any().downcast_ref())
+    }
+
+    /// The method's figures by name, for tables that list every method's.
+    pub fn figures(&self) -> BTreeMap<String, f64> {
+        self.details.iter().flat_map(|d| d.figures()).map(|(k, v)| (k.to_string(), v)).collect()
+    }
+
+    /// One figure by name.
+    pub fn figure(&self, name: &str) -> Option<f64> {
+        self.details.as_ref()?.figures().into_iter().find(|(k, _)| *k == name).map(|(_, v)| v)
+    }
+}
+
+/// Two reports are equal when they say the same: summary, figures, histogram and overflow.
+impl PartialEq for ContextReport {
+    fn eq(&self, other: &Self) -> bool {
+        self.summary == other.summary
+            && self.figures() == other.figures()
+            && self.list_histogram == other.list_histogram
+            && self.overflow == other.overflow
+    }
+}
+
+/// Implements [`ReportDetails`] for a report struct from a list of its figures.
+macro_rules! report_details {
+    ($t:ty, |$r:ident| $figures:expr) => {
+        impl $crate::frame::context::ReportDetails for $t {
+            fn figures(&self) -> Vec<(&'static str, f64)> {
+                let $r = self;
+                $figures
+            }
+            fn as_any(&self) -> &dyn std::any::Any {
+                self
+            }
+        }
+    };
+}
+pub(crate) use report_details;
 
 /// A method's frame context (see the [module docs](crate::frame) for what a frame may and may not
 /// do). Every method implements it; nothing outside a method's own module names its concrete type.
@@ -128,7 +190,7 @@ pub trait DofContext {
     /// for frame in 0..6u32 {
     ///     // After waiting on fence `frame % N`: frame - N has completed, its slot is about to be reused.
     ///     if frame >= N {
-    ///         radii.push(ctx.report_frame(&mut b, N - 1)?.figures["radius_px"]);
+    ///         radii.push(ctx.report_frame(&mut b, N - 1)?.figure("radius_px").unwrap_or(0.0));
     ///     }
     ///     let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.002 * (frame + 1) as f32, focus_distance: 2.0, pixels_per_unit: 8000.0 };
     ///     let (slots, counts, rgb) = (SlotBuffer::current(fragments), CountBuffer(counts), RgbBuffer(out));

@@ -155,7 +155,7 @@ impl DofContext for GatherContext {
         let (radius, clamped) = self.plan_of(backend, frames_ago)?;
         Ok(ContextReport {
             summary: format!("gathered over a window of radius {radius} px (cap {} px){}", self.cap, clamped_summary(clamped)),
-            figures: [("radius_px".to_string(), radius as f64), ("clamped".to_string(), clamped as f64)].into(),
+            details: Some(std::sync::Arc::new(GatherReport { radius_px: radius, clamped })),
             ..Default::default()
         })
     }
@@ -171,3 +171,14 @@ impl DofContext for GatherContext {
         GatherContext::destroy(*self, backend)
     }
 }
+
+/// What a gather frame did.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GatherReport {
+    /// The CoC radius scanned (px): the frame's largest, up to the cap.
+    pub radius_px: u32,
+    /// Input values clamped where read (the numerical contract).
+    pub clamped: u32,
+}
+
+super::context::report_details!(GatherReport, |r| vec![("radius_px", r.radius_px as f64), ("clamped", r.clamped as f64)]);

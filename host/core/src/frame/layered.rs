@@ -421,15 +421,7 @@ impl DofContext for LayeredContext {
         summary += &clamped_summary(p.clamped as u32);
         Ok(ContextReport {
             summary,
-            figures: [
-                ("layers".to_string(), self.cocs.len() as f64),
-                ("used_layers".to_string(), p.used_layers() as f64),
-                ("coc_min".to_string(), p.coc_range.0 as f64),
-                ("coc_max".to_string(), p.coc_range.1 as f64),
-                ("capped".to_string(), p.capped as f64),
-                ("clamped".to_string(), p.clamped as f64),
-            ]
-            .into(),
+            details: Some(std::sync::Arc::new(LayeredReport { layers: self.cocs.len() as u32, plan: p })),
             ..Default::default()
         })
     }
@@ -478,3 +470,20 @@ mod tests {
         }
     }
 }
+
+/// What a layered DoF frame did: the candidate layers and the frame's plan.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LayeredReport {
+    /// Candidate layers fixed at creation.
+    pub layers: u32,
+    pub plan: LayeredPlanReport,
+}
+
+super::context::report_details!(LayeredReport, |r| vec![
+    ("layers", r.layers as f64),
+    ("used_layers", r.plan.used_layers() as f64),
+    ("coc_min", r.plan.coc_range.0 as f64),
+    ("coc_max", r.plan.coc_range.1 as f64),
+    ("capped", r.plan.capped as f64),
+    ("clamped", r.plan.clamped as f64),
+]);

@@ -81,25 +81,33 @@ pub struct PeelReport {
 }
 
 impl PeelReport {
+    /// The report in the shape every context's has, with the guard band the image was made with.
     pub fn context_report(&self, margin: u32) -> ContextReport {
-        ContextReport {
-            summary: format!(
+        ContextReport::of(
+            format!(
                 "peeled {} passes: {} drawn, {} found a surface (guard band {margin} px; this view needs {} px; {} frames needed more)",
                 self.recorded, self.drawn, self.with_surface, self.band_needed, self.band_exceeded_frames
             ),
-            figures: [
-                ("peel_passes_recorded".to_string(), self.recorded as f64),
-                ("peel_passes_drawn".to_string(), self.drawn as f64),
-                ("peel_passes_with_surface".to_string(), self.with_surface as f64),
-                ("guard_band_px".to_string(), margin as f64),
-                ("guard_band_needed_px".to_string(), self.band_needed as f64),
-                ("guard_band_exceeded_frames".to_string(), self.band_exceeded_frames as f64),
-            ]
-            .into(),
-            ..Default::default()
-        }
+            PeelFrameReport { peel: self.clone(), guard_band_px: margin },
+        )
     }
 }
+
+/// A peel's report with the guard band its image was made with.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PeelFrameReport {
+    pub peel: PeelReport,
+    pub guard_band_px: u32,
+}
+
+super::context::report_details!(PeelFrameReport, |r| vec![
+    ("peel_passes_recorded", r.peel.recorded as f64),
+    ("peel_passes_drawn", r.peel.drawn as f64),
+    ("peel_passes_with_surface", r.peel.with_surface as f64),
+    ("guard_band_px", r.guard_band_px as f64),
+    ("guard_band_needed_px", r.peel.band_needed as f64),
+    ("guard_band_exceeded_frames", r.peel.band_exceeded_frames as f64),
+]);
 
 impl PeelSlots {
     /// Makes the buffers (into `owned`), refusing an empty image or slots beyond one buffer; with a

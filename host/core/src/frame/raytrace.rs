@@ -274,14 +274,7 @@ impl DofContext for RaytraceContext {
                 100.0 * missed as f64 / rays.max(1) as f64,
                 clamped_summary(clamped)
             ),
-            figures: [
-                ("spp".to_string(), spp as f64),
-                ("levels".to_string(), levels as f64),
-                ("rays".to_string(), rays as f64),
-                ("missed_rays".to_string(), missed as f64),
-                ("clamped".to_string(), clamped as f64),
-            ]
-            .into(),
+            details: Some(std::sync::Arc::new(RaytraceReport { spp, levels, rays, missed_rays: missed, clamped })),
             ..Default::default()
         })
     }
@@ -299,3 +292,24 @@ impl DofContext for RaytraceContext {
 }
 
 super::context::described!(RaytraceContextDesc);
+
+/// What a frame of ray tracing through the layers did.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RaytraceReport {
+    pub spp: u32,
+    /// Levels of the min/max hierarchy.
+    pub levels: u32,
+    pub rays: u64,
+    /// Rays that hit no stored fragment.
+    pub missed_rays: u64,
+    /// Input values clamped where read (the numerical contract).
+    pub clamped: u32,
+}
+
+super::context::report_details!(RaytraceReport, |r| vec![
+    ("spp", r.spp as f64),
+    ("levels", r.levels as f64),
+    ("rays", r.rays as f64),
+    ("missed_rays", r.missed_rays as f64),
+    ("clamped", r.clamped as f64),
+]);

@@ -240,13 +240,12 @@ impl DofContext for RingGatherContext {
                 o.max_radius,
                 clamped_summary(clamped)
             ),
-            figures: [
-                ("rings".to_string(), o.rings as f64),
-                ("samples_per_half_pixel".to_string(), samples as f64),
-                ("clamped".to_string(), clamped as f64),
-                ("highlights_capped".to_string(), capped as f64),
-            ]
-            .into(),
+            details: Some(std::sync::Arc::new(RingGatherReport {
+                rings: o.rings,
+                samples_per_half_pixel: samples,
+                clamped,
+                highlights_capped: capped,
+            })),
             ..Default::default()
         })
     }
@@ -268,3 +267,21 @@ impl DofContext for RingGatherContext {
         RingGatherContext::destroy(*self, backend)
     }
 }
+
+/// What a ring gather frame did.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RingGatherReport {
+    pub rings: u32,
+    pub samples_per_half_pixel: u32,
+    /// Input values clamped where read (the numerical contract).
+    pub clamped: u32,
+    /// Highlights beyond their tile's cap, gathered instead of drawn as discs.
+    pub highlights_capped: u32,
+}
+
+super::context::report_details!(RingGatherReport, |r| vec![
+    ("rings", r.rings as f64),
+    ("samples_per_half_pixel", r.samples_per_half_pixel as f64),
+    ("clamped", r.clamped as f64),
+    ("highlights_capped", r.highlights_capped as f64),
+]);

@@ -579,23 +579,11 @@ impl DofContext for SplatContext {
     }
     fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
         let r = SplatContext::report_of(self, backend, frames_ago)?;
-        let figures = [
-            ("list_entries", r.list_entries as f64),
-            ("mean_list_length", r.mean_list_length()),
-            ("max_list_length", r.max_list_length() as f64),
-            ("copy_tiles", r.copy_tiles as f64),
-            ("merged", r.merged as f64),
-            ("overflow_tiles", r.overflow_tiles as f64),
-            ("thinned_tiles", r.thinned_tiles as f64),
-            ("list_pool", r.list_capacity as f64),
-            ("clamped", r.clamped as f64),
-            ("alpha_clamped", r.alpha_clamped as f64),
-        ];
         Ok(ContextReport {
             summary: r.summary(),
-            figures: figures.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
             list_histogram: r.list_histogram(),
             overflow: r.tiles_cut_short() as u64,
+            details: Some(std::sync::Arc::new(r)),
         })
     }
     fn device_bytes(&self) -> u64 {

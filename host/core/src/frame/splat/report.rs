@@ -183,3 +183,16 @@ impl SplatReport {
         s
     }
 }
+
+crate::frame::context::report_details!(SplatReport, |r| vec![
+    ("list_entries", r.list_entries as f64),
+    ("mean_list_length", r.mean_list_length()),
+    ("max_list_length", r.max_list_length() as f64),
+    ("copy_tiles", r.copy_tiles as f64),
+    ("merged", r.merged as f64),
+    ("overflow_tiles", r.overflow_tiles as f64),
+    ("thinned_tiles", r.thinned_tiles as f64),
+    ("list_pool", r.list_capacity as f64),
+    ("clamped", r.clamped as f64),
+    ("alpha_clamped", r.alpha_clamped as f64),
+]);

@@ -443,7 +443,7 @@ fn create(b: &mut CpuBackend, c: &ContextIn) -> Option<(Box<dyn DofContext>, (u3
             if !small && !must_refuse {
                 return None;
             }
-            let mut desc = SplatContextDesc::new(w, h, layers, options);
+            let mut desc = SplatContextDesc::new(Extent::new(w, h, layers), options);
             desc.list_entries = list_entries;
             desc.max_list = *max_list;
             desc.image_io = c.image_io;

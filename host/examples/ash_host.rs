@@ -40,6 +40,7 @@
 //! [--device NAME]`; it exits non-zero when a check fails or the validation layer said anything.
 
 use anyhow::{Context, Result, bail, ensure};
+use dof::frame::Extent;
 use dof::layers::LayeredImage;
 use dof::scene::{Focus, GuardBand, LayerOptions, LensSettings, ThinLens, Vec3, builtin, raycast_layers};
 use dof_core::backend::vulkan::ash::vk::{AccessFlags as Access, ImageLayout as Layout};
@@ -738,7 +739,7 @@ fn main() -> Result<ExitCode> {
     let counts_id = unsafe { backend.import_buffer(counts.buffer, counts.bytes, "counts")? };
 
     let splat_options = SplatOptions { merge: Merge::X4, ..SplatOptions::default() };
-    let mut desc = SplatContextDesc::new(w, h, layers.max_layers, splat_options.clone());
+    let mut desc = SplatContextDesc::new(Extent::new(w, h, layers.max_layers), splat_options.clone());
     desc.image_io = true;
     let mut ctx = SplatContext::new(&mut backend, &desc)?;
     // Creating the context recorded the zeroing of its buffers in the backend's own command buffer;
@@ -752,8 +753,10 @@ fn main() -> Result<ExitCode> {
     );
 
     // The check: the same context on the CPU backend.
-    let mut check =
-        CpuCheck::new(backend.limits().max_shared_bytes, &SplatContextDesc::new(w, h, layers.max_layers, splat_options.clone()))?;
+    let mut check = CpuCheck::new(
+        backend.limits().max_shared_bytes,
+        &SplatContextDesc::new(Extent::new(w, h, layers.max_layers), splat_options.clone()),
+    )?;
 
     // The frames: multi-layer from our buffers with the focus sweeping from near to far, then one
     // frame from our colour and depth images.

@@ -5,6 +5,7 @@
 
 use dof::CoreError;
 use dof::backend::{Backend, CpuBackend};
+use dof::frame::Extent;
 use dof::frame::{
     BokehContext, BokehContextDesc, CountBuffer, DofContext, Frame, GatherContext, GatherContextDesc, RgbBuffer, SlotBuffer, SplatContext,
     SplatContextDesc,
@@ -19,7 +20,7 @@ use dof_tests::{assert_clean, vulkan};
 /// whatever it made is freed, and the same backend then runs a frame once the budget allows.
 fn memory_runs_out(b: &mut dyn Backend) {
     let held = b.counters().device_bytes;
-    let desc = SplatContextDesc::new(128, 96, 4, SplatOptions { merge: Merge::X4, ..Default::default() });
+    let desc = SplatContextDesc::new(Extent::new(128, 96, 4), SplatOptions { merge: Merge::X4, ..Default::default() });
     // Every budget from nothing to just short of the context fails at a different buffer.
     let need = {
         let ctx = SplatContext::new(b, &desc).unwrap();
@@ -36,11 +37,11 @@ fn memory_runs_out(b: &mut dyn Backend) {
         }
         assert_eq!(b.counters().device_bytes, held, "budget {budget}: buffers left behind");
         assert!(matches!(
-            GatherContext::new(b, &GatherContextDesc::new(4096, 4096, 4)),
+            GatherContext::new(b, &GatherContextDesc::new(Extent::new(4096, 4096, 4))),
             Err(CoreError::OutOfMemory { .. }) | Err(CoreError::TooLarge { .. })
         ));
         assert!(matches!(
-            BokehContext::new(b, &BokehContextDesc::new(2048, 2048, 1, BokehOptions::default())),
+            BokehContext::new(b, &BokehContextDesc::new(Extent::new(2048, 2048, 1), BokehOptions::default())),
             Err(CoreError::OutOfMemory { .. }) | Err(CoreError::TooLarge { .. })
         ));
         assert_eq!(b.counters().device_bytes, held, "budget {budget}: buffers left behind");
@@ -75,14 +76,17 @@ fn extent_beyond_the_device(b: &mut dyn Backend) {
     let held = b.counters().device_bytes;
     let edge = dof_shaders::splat::fragment::MAX_EDGE;
     for (w, h, l) in [(edge, edge, 64u32), (edge, edge, 4096)] {
-        let e = SplatContext::new(b, &SplatContextDesc::new(w, h, l, SplatOptions::default())).err().expect("too large");
+        let e = SplatContext::new(b, &SplatContextDesc::new(Extent::new(w, h, l), SplatOptions::default())).err().expect("too large");
         assert!(matches!(e, CoreError::TooLarge { .. }), "{w}x{h}x{l}: {e}");
     }
     assert!(matches!(
-        SplatContext::new(b, &SplatContextDesc::new(edge + 1, 16, 1, SplatOptions::default())),
+        SplatContext::new(b, &SplatContextDesc::new(Extent::new(edge + 1, 16, 1), SplatOptions::default())),
         Err(CoreError::TooLarge { .. })
     ));
-    assert!(matches!(GatherContext::new(b, &GatherContextDesc::new(1 << 16, 1 << 16, 1 << 12)), Err(CoreError::TooLarge { .. })));
+    assert!(matches!(
+        GatherContext::new(b, &GatherContextDesc::new(Extent::new(1 << 16, 1 << 16, 1 << 12))),
+        Err(CoreError::TooLarge { .. })
+    ));
     assert_eq!(b.counters().device_bytes, held);
 }
 
@@ -115,7 +119,7 @@ fn a_list_overflow_on_vulkan_is_counted_and_degrades_cleanly() {
     b.write_buffer(bufs[1], 0, &image.counts).unwrap();
     // A sentinel in the output: every word must be overwritten.
     b.write_buffer(bufs[2], 0, &vec![f32::NAN.to_bits(); 3 * pixels as usize]).unwrap();
-    let mut desc = SplatContextDesc::new(64, 48, 3, SplatOptions::default());
+    let mut desc = SplatContextDesc::new(Extent::new(64, 48, 3), SplatOptions::default());
     desc.list_entries = Some(2000);
     let mut ctx = SplatContext::new(b, &desc).unwrap();
     ctx.record(b, &Frame::layers(64, 48, 3, test_lens(0.02), SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2])))

@@ -14,6 +14,7 @@ use dof::CoreError;
 use dof::backend::vulkan::ash::vk;
 use dof::backend::vulkan::gpu_allocator;
 use dof::backend::{Backend, BackendCounters, BufferId, CpuBackend, ImageFormat, ImageRef, RawOptions, VulkanBackend};
+use dof::frame::Extent;
 use dof::frame::{CountBuffer, DofContext, Frame, GatherContext, GatherContextDesc, RgbBuffer, SlotBuffer};
 use dof::ops::scan::{ScanScratch, exclusive_scan};
 use dof::ops::sort::{SegmentedSort, SortInput, sort_on};
@@ -287,7 +288,7 @@ fn refuses_what_would_submit_or_allocate_inside_the_callers_recording() {
     // A frame recorded outside begin_external would go into the backend's own command buffer and
     // run at its next submission, after the renderer may have changed what it reads: refused, with
     // nothing recorded. Making the context (its one-time zeroing) may submit.
-    let mut ctx = GatherContext::new(&mut vk, &GatherContextDesc::new(4, 4, 1)).expect("a context on the renderer's device");
+    let mut ctx = GatherContext::new(&mut vk, &GatherContextDesc::new(Extent::new(4, 4, 1))).expect("a context on the renderer's device");
     let bufs = [16u64, 4, 12].map(|w| vk.create_buffer(w, "frame").expect("create_buffer"));
     let before = vk.counters();
     let outside = ctx.record(
@@ -450,7 +451,7 @@ fn a_context_dropped_during_a_recording_is_freed_once_it_completed() {
     vk.write_buffer(slots, 0, &words).unwrap();
     vk.write_buffer(counts, 0, &[1; 64]).unwrap();
     let base = vk.counters().device_bytes;
-    let mut ctx = GatherContext::new(&mut vk, &GatherContextDesc::new(8, 8, 1)).unwrap();
+    let mut ctx = GatherContext::new(&mut vk, &GatherContextDesc::new(Extent::new(8, 8, 1))).unwrap();
     vk.submit().unwrap();
     let held = ctx.device_bytes();
     let lens = dof::stress::test_lens(0.02);

@@ -5,6 +5,7 @@
 
 use dof::CoreError;
 use dof::backend::{Backend, BufferId, CpuBackend};
+use dof::frame::Extent;
 use dof::frame::{CountBuffer, DofContext, Frame, FrameInput, FrameOutput, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::{read_rgb, slot_words};
@@ -45,7 +46,7 @@ fn frames_through_one_context(b: &mut dyn Backend) {
     let options = SplatOptions { merge: Merge::X4, ..Default::default() };
     let max = (70, 45, 3);
     let bufs = caller_buffers(b, max);
-    let mut ctx = SplatContext::new(b, &SplatContextDesc::new(max.0, max.1, max.2, options.clone())).unwrap();
+    let mut ctx = SplatContext::new(b, &SplatContextDesc::new(Extent::new(max.0, max.1, max.2), options.clone())).unwrap();
     let cases = [((70, 45, 3), 0.02), ((33, 20, 2), 0.01), ((70, 45, 3), 0.0), ((64, 40, 1), 0.03), ((70, 45, 3), 0.02)];
     for (i, &((w, h, l), aperture)) in cases.iter().enumerate() {
         let image = noise_with_sky(w, h, l);
@@ -90,7 +91,7 @@ fn an_overflowing_list_pool_is_counted_and_degrades_to_thinned_or_copied_tiles()
     let options = SplatOptions::default();
     let bufs = caller_buffers(&mut b, (64, 48, 3));
     upload(&mut b, &bufs, &image);
-    let mut desc = SplatContextDesc::new(64, 48, 3, options.clone());
+    let mut desc = SplatContextDesc::new(Extent::new(64, 48, 3), options.clone());
     desc.list_entries = Some(3000);
     let mut ctx = SplatContext::new(&mut b, &desc).unwrap();
     ctx.record(&mut b, &frame(&image, 0.02, &bufs)).unwrap();
@@ -133,7 +134,7 @@ fn an_overflowing_list_pool_is_counted_and_degrades_to_thinned_or_copied_tiles()
 fn frames_beyond_the_context_or_its_buffers_are_refused() {
     let mut b = CpuBackend::new();
     let options = SplatOptions::default();
-    let mut ctx = SplatContext::new(&mut b, &SplatContextDesc::new(32, 32, 2, options.clone())).unwrap();
+    let mut ctx = SplatContext::new(&mut b, &SplatContextDesc::new(Extent::new(32, 32, 2), options.clone())).unwrap();
     let image = noise_with_sky(40, 20, 2);
     let bufs = caller_buffers(&mut b, (40, 20, 2));
     upload(&mut b, &bufs, &image);
@@ -151,9 +152,15 @@ fn frames_beyond_the_context_or_its_buffers_are_refused() {
     assert!(matches!(ctx.record(&mut b, &short), Err(CoreError::InvalidArgument(m)) if m.contains("output")));
     let nan_lens = Frame { lens: test_lens(f32::NAN), ..frame(&image, 0.01, &bufs) };
     assert!(matches!(ctx.record(&mut b, &nan_lens), Err(CoreError::InvalidLens(_))));
-    assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(0, 10, 1, options.clone())), Err(CoreError::InvalidArgument(_))));
-    assert!(matches!(SplatContext::new(&mut b, &SplatContextDesc::new(100_000, 10, 1, options.clone())), Err(CoreError::TooLarge { .. })));
-    let mut huge_pool = SplatContextDesc::new(16, 16, 1, options);
+    assert!(matches!(
+        SplatContext::new(&mut b, &SplatContextDesc::new(Extent::new(0, 10, 1), options.clone())),
+        Err(CoreError::InvalidArgument(_))
+    ));
+    assert!(matches!(
+        SplatContext::new(&mut b, &SplatContextDesc::new(Extent::new(100_000, 10, 1), options.clone())),
+        Err(CoreError::TooLarge { .. })
+    ));
+    let mut huge_pool = SplatContextDesc::new(Extent::new(16, 16, 1), options);
     huge_pool.list_entries = Some(1 << 40);
     assert!(matches!(SplatContext::new(&mut b, &huge_pool), Err(CoreError::TooLarge { .. })));
     ctx.destroy(&mut b);
@@ -165,7 +172,8 @@ fn the_context_holds_its_memory_and_no_more() {
     let mut b = CpuBackend::new();
     let start = b.counters().device_bytes;
     let ctx =
-        SplatContext::new(&mut b, &SplatContextDesc::new(96, 64, 4, SplatOptions { merge: Merge::X4, ..Default::default() })).unwrap();
+        SplatContext::new(&mut b, &SplatContextDesc::new(Extent::new(96, 64, 4), SplatOptions { merge: Merge::X4, ..Default::default() }))
+            .unwrap();
     assert_eq!(b.counters().device_bytes - start, ctx.device_bytes());
     ctx.destroy(&mut b);
     assert_eq!(b.counters().device_bytes, start);
@@ -202,9 +210,9 @@ fn image_frames_need_image_io_and_a_backend_with_images() {
         },
         output: FrameOutput::Image(image(ImageFormat::Rgba32Float)),
     };
-    let mut plain = SplatContext::new(&mut b, &SplatContextDesc::new(16, 16, 1, options.clone())).unwrap();
+    let mut plain = SplatContext::new(&mut b, &SplatContextDesc::new(Extent::new(16, 16, 1), options.clone())).unwrap();
     assert!(matches!(plain.record(&mut b, &f), Err(CoreError::InvalidArgument(m)) if m.contains("image_io")));
-    let mut desc = SplatContextDesc::new(16, 16, 1, options);
+    let mut desc = SplatContextDesc::new(Extent::new(16, 16, 1), options);
     desc.image_io = true;
     let mut with_io = SplatContext::new(&mut b, &desc).unwrap();
     let wrong = Frame {
@@ -265,7 +273,7 @@ fn a_gather_context_records_frames_like_the_one_shot_gather() {
     use dof::methods::gather::{MAX_RADIUS, gather, needed_radius};
     let mut b = CpuBackend::new();
     let bufs = caller_buffers(&mut b, (50, 30, 3));
-    let mut ctx = GatherContext::new(&mut b, &GatherContextDesc::new(50, 30, 3)).unwrap();
+    let mut ctx = GatherContext::new(&mut b, &GatherContextDesc::new(Extent::new(50, 30, 3))).unwrap();
     for (i, (w, h, l, aperture)) in [(50u32, 30u32, 3u32, 0.02f32), (24, 17, 2, 0.005), (50, 30, 1, 0.0)].into_iter().enumerate() {
         let image = noise_with_sky(w, h, l);
         upload(&mut b, &bufs, &image);
@@ -291,7 +299,7 @@ fn bokeh_frames(b: &mut dyn Backend) {
     use dof::methods::bokeh::{BokehOptions, bokeh};
     let options = BokehOptions { lum_threshold: 0.2, coc_threshold: 1.0, ..Default::default() };
     let bufs = caller_buffers(b, (48, 32, 2));
-    let mut ctx = BokehContext::new(b, &BokehContextDesc::new(48, 32, 2, options.clone())).unwrap();
+    let mut ctx = BokehContext::new(b, &BokehContextDesc::new(Extent::new(48, 32, 2), options.clone())).unwrap();
     for (i, aperture) in [0.02f32, 0.01, 0.03].into_iter().enumerate() {
         let mut image = noise_with_sky(48, 32, 2);
         // A few highlights, so that sprites are drawn.

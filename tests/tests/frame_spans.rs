@@ -6,6 +6,7 @@
 //! Misuse is refused with an error.
 
 use dof::backend::{Backend, CpuBackend, SPAN};
+use dof::frame::Extent;
 use dof::frame::{CountBuffer, DofContext, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof::methods::buffers::{SLOT_WORDS, slot_words};
 use dof::methods::splat::{Merge, SplatOptions};
@@ -34,7 +35,7 @@ fn spanned_frames(b: &mut dyn Backend) -> Vec<Timed> {
     b.write_buffer(bufs[0], 0, &slot_words(&image)).unwrap();
     b.write_buffer(bufs[1], 0, &image.counts).unwrap();
     let options = SplatOptions { merge: Merge::X2, ..Default::default() };
-    let mut ctx = SplatContext::new(b, &SplatContextDesc::new(w, h, l, options)).unwrap();
+    let mut ctx = SplatContext::new(b, &SplatContextDesc::new(Extent::new(w, h, l), options)).unwrap();
     let frame = Frame::layers(w, h, l, test_lens(0.02), SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]));
     let mut out = Vec::new();
     for _ in 0..3 {

@@ -6,6 +6,7 @@
 //! A counting allocator records the largest single allocation, so that "refused without allocating"
 //! is checked, not only "refused".
 
+use dof::frame::Extent;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -205,10 +206,10 @@ fn frame_contexts_refuse_inconsistent_apertures() {
     for aperture in apertures {
         let mut b = CpuBackend::new();
         let options = BokehOptions { aperture: aperture.clone(), ..Default::default() };
-        let bokeh = BokehContext::new(&mut b, &BokehContextDesc::new(16, 16, 1, options));
+        let bokeh = BokehContext::new(&mut b, &BokehContextDesc::new(Extent::new(16, 16, 1), options));
         assert!(bokeh.is_err(), "a bokeh context accepted {:?}", aperture.kernel);
         let options = SplatOptions { aperture: aperture.clone(), ..Default::default() };
-        let splat = SplatContext::new(&mut b, &SplatContextDesc::new(16, 16, 1, options));
+        let splat = SplatContext::new(&mut b, &SplatContextDesc::new(Extent::new(16, 16, 1), options));
         assert!(splat.is_err(), "a splatting context accepted {:?}", aperture.kernel);
     }
 }

@@ -16,6 +16,7 @@
 //! same recording as on Vulkan).
 
 use dof::backend::{Backend, CpuBackend, VulkanBackend, VulkanOptions};
+use dof::frame::Extent;
 use dof::frame::{CountBuffer, DofContext, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof::kernel_shape::{KernelShape, analyze};
 use dof::methods::buffers::{SLOT_WORDS, slot_words};
@@ -193,7 +194,7 @@ fn a_multilayer_frame_records_a_bounded_number_of_commands() {
     b.write_buffer(slots, 0, &slot_words(&image)).unwrap();
     b.write_buffer(counts, 0, &image.counts).unwrap();
     for merge in [Merge::X4, Merge::None] {
-        let desc = SplatContextDesc::new(w, h, layers, SplatOptions { merge, ..Default::default() });
+        let desc = SplatContextDesc::new(Extent::new(w, h, layers), SplatOptions { merge, ..Default::default() });
         let mut ctx = SplatContext::new(&mut b, &desc).unwrap();
         let before = b.counters();
         ctx.record(&mut b, &Frame::layers(w, h, layers, test_lens(0.02), SlotBuffer::current(slots), CountBuffer(counts), RgbBuffer(out)))

@@ -3,6 +3,7 @@
 //! frames without allocation through its context, and measured against the exact reference.
 
 use dof::backend::{Backend, CpuBackend};
+use dof::frame::Extent;
 use dof::frame::{CountBuffer, DofContext, Frame, RgbBuffer, RingGatherContext, RingGatherContextDesc, SlotBuffer};
 use dof::layers::RgbImage;
 use dof::methods::ring_gather::{DEFAULT_RINGS, MAX_RADIUS, MAX_SAMPLE_RINGS, RingGatherOptions, ring_gather};
@@ -168,7 +169,7 @@ fn vulkan_matches_cpu() {
 fn a_context_records_frames_without_allocating() {
     let mut cpu = CpuBackend::new();
     let (w, h) = (40u32, 24u32);
-    let mut ctx = RingGatherContext::new(&mut cpu, &RingGatherContextDesc::new(w, h, 1)).unwrap();
+    let mut ctx = RingGatherContext::new(&mut cpu, &RingGatherContextDesc::new(Extent::new(w, h, 1))).unwrap();
     let input = cpu.create_buffer(dof::methods::buffers::SLOT_WORDS as u64 * (w * h) as u64, "input").unwrap();
     let counts = cpu.create_buffer((w * h) as u64, "counts").unwrap();
     let output = cpu.create_buffer(3 * (w * h) as u64, "output").unwrap();

@@ -5,6 +5,7 @@
 
 use dof::backend::{Backend, CpuBackend};
 use dof::eval::temporal::temporal_psnr;
+use dof::frame::Extent;
 use dof::frame::{CountBuffer, DofContext, Frame, RgbBuffer, RingGatherContext, RingGatherContextDesc, SlotBuffer};
 use dof::io::tonemap::tonemap_image;
 use dof::layers::RgbImage;
@@ -142,7 +143,7 @@ fn highlights_beyond_a_tiles_capacity_stay_in_the_gather() {
     assert!(out.image.data.iter().all(|p| p.iter().all(|c| c.is_finite() && *c >= 0.0)));
     // The context's report counts the 8 beyond the tile's 8, with no readback in the frame.
     let mut cpu = CpuBackend::new();
-    let mut ctx = RingGatherContext::new(&mut cpu, &RingGatherContextDesc::new(w, h, 1)).unwrap();
+    let mut ctx = RingGatherContext::new(&mut cpu, &RingGatherContextDesc::new(Extent::new(w, h, 1))).unwrap();
     // Opaque slots (`dof_shaders::slot`: premultiplied colour, depth, alpha).
     let slots: Vec<u32> = img.data.iter().zip(&depth).flat_map(|(c, z)| [c[0], c[1], c[2], *z, 1.0].map(f32::to_bits)).collect();
     let input = cpu.create_buffer(slots.len() as u64, "input").unwrap();

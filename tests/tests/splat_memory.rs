@@ -24,7 +24,7 @@ fn splat_memory_table_sums_to_device_bytes() {
     for merge in [Merge::None, Merge::X2, Merge::X4] {
         for (w, h) in SIZES {
             let before = b.counters().device_bytes;
-            let desc = SplatContextDesc::new(w, h, LAYERS, SplatOptions { merge, ..SplatOptions::default() });
+            let desc = SplatContextDesc::new(Extent::new(w, h, LAYERS), SplatOptions { merge, ..SplatOptions::default() });
             let ctx = SplatContext::new(&mut b, &desc).unwrap_or_else(|e| panic!("{w}x{h} merge {}: {e}", merge.name()));
             let held = b.counters().device_bytes - before;
             let table = ctx.memory_table();
@@ -60,7 +60,10 @@ fn footprints_add_a_field_a_slot() {
     let tile = SplatOptions::default().tile;
     let slots = (w.next_multiple_of(tile) * h.next_multiple_of(tile) * LAYERS) as u64;
     let bytes = |b: &mut CpuBackend, side: u32| {
-        let desc = SplatContextDesc::new(w, h, LAYERS, SplatOptions { merge: Merge::X4, footprint_side: side, ..SplatOptions::default() });
+        let desc = SplatContextDesc::new(
+            Extent::new(w, h, LAYERS),
+            SplatOptions { merge: Merge::X4, footprint_side: side, ..SplatOptions::default() },
+        );
         let ctx = SplatContext::new(b, &desc).unwrap();
         let n = ctx.device_bytes();
         ctx.destroy(b);

@@ -9,6 +9,7 @@
 //!   holds every thinned list, it does not depend on the order tiles run in).
 
 use dof::backend::{Backend, BufferId, CpuBackend};
+use dof::frame::Extent;
 use dof::frame::{CountBuffer, DofContext, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof::layers::LayeredImage;
 use dof::methods::buffers::{SLOT_WORDS, read_rgb, slot_words};
@@ -41,7 +42,7 @@ fn frame(b: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, max_list: u
     ];
     b.write_buffer(bufs[0], 0, &slot_words(image)).unwrap();
     b.write_buffer(bufs[1], 0, &image.counts).unwrap();
-    let mut desc = SplatContextDesc::new(w, h, l, SplatOptions { merge: Merge::None, ..Default::default() });
+    let mut desc = SplatContextDesc::new(Extent::new(w, h, l), SplatOptions { merge: Merge::None, ..Default::default() });
     desc.max_list = Some(max_list);
     let mut ctx = SplatContext::new(b, &desc).unwrap();
     ctx.record(b, &Frame::layers(w, h, l, *lens, SlotBuffer::current(bufs[0]), CountBuffer(bufs[1]), RgbBuffer(bufs[2]))).unwrap();

@@ -5,6 +5,7 @@
 
 use super::buffers::one_layer_frame;
 use crate::backend::{Backend, CommandTime};
+use crate::frame::Extent;
 pub use crate::frame::bokeh::BokehOptions;
 use crate::frame::{BokehContext, BokehContextDesc, DofContext};
 use crate::layers::RgbImage;
@@ -24,7 +25,7 @@ pub struct BokehOutput {
 
 pub fn bokeh(backend: &mut dyn Backend, image: &RgbImage, depth: &[f32], lens: &ThinLens, options: &BokehOptions) -> Result<BokehOutput> {
     crate::frame::bokeh::check_options(options)?;
-    let desc = BokehContextDesc::new(image.width, image.height, 1, options.clone());
+    let desc = BokehContextDesc::new(Extent::new(image.width, image.height, 1), options.clone());
     let (out, (times, (detected, blur_radius), context_bytes)) =
         one_layer_frame(backend, "bokeh sprites", image, depth, lens, |backend, frame| {
             let mut ctx = BokehContext::new(backend, &desc)?;

@@ -3,6 +3,7 @@
 
 use super::buffers::one_layer_frame;
 use crate::backend::{Backend, CommandTime};
+use crate::frame::Extent;
 use crate::frame::{DofContext, GatherContext, GatherContextDesc};
 use crate::layers::RgbImage;
 use dof_core::error::{Error, Result};
@@ -41,7 +42,7 @@ pub fn gather(
     if cap > MAX_RADIUS {
         return Err(Error::TooLarge { what: "gather radius (px)".into(), size: cap as u64, limit: MAX_RADIUS as u64 });
     }
-    let desc = GatherContextDesc { max_radius: Some(cap), ..GatherContextDesc::new(image.width, image.height, 1) };
+    let desc = GatherContextDesc { max_radius: Some(cap), ..GatherContextDesc::new(Extent::new(image.width, image.height, 1)) };
     let (out, (radius, times, context_bytes)) = one_layer_frame(backend, "gather", image, depth, lens, |backend, frame| {
         let mut ctx = GatherContext::new(backend, &desc)?;
         let ran = (|| {

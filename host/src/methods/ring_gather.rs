@@ -3,6 +3,7 @@
 
 use super::buffers::one_layer_frame;
 use crate::backend::{Backend, CommandTime};
+use crate::frame::Extent;
 use crate::frame::{DofContext, RingGatherContext, RingGatherContextDesc};
 use crate::layers::RgbImage;
 use dof_core::error::Result;
@@ -29,7 +30,7 @@ pub fn ring_gather(
     options: &RingGatherOptions,
 ) -> Result<RingGatherOutput> {
     options.check()?;
-    let desc = RingGatherContextDesc { options: *options, ..RingGatherContextDesc::new(image.width, image.height, 1) };
+    let desc = RingGatherContextDesc { options: *options, ..RingGatherContextDesc::new(Extent::new(image.width, image.height, 1)) };
     let (out, (times, context_bytes)) = one_layer_frame(backend, "the ring gather", image, depth, lens, |backend, frame| {
         let mut ctx = RingGatherContext::new(backend, &desc)?;
         let ran = ctx.record(backend, frame).and_then(|_| backend.submit()).map(|times| (times, ctx.device_bytes()));

@@ -58,7 +58,9 @@ pub struct BokehContextDesc {
 super::context::described!(BokehContextDesc);
 
 impl BokehContextDesc {
-    pub fn new(max_width: u32, max_height: u32, max_layers: u32, options: BokehOptions) -> Self {
+    /// A description for frames up to `max`, with the defaults of the rest.
+    pub fn new(max: Extent, options: BokehOptions) -> Self {
+        let Extent { width: max_width, height: max_height, layers: max_layers } = max;
         BokehContextDesc { max_width, max_height, max_layers, options, image_io: false, frames_in_flight: 1 }
     }
 }

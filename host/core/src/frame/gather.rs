@@ -34,7 +34,9 @@ pub struct GatherContextDesc {
 super::context::described!(GatherContextDesc);
 
 impl GatherContextDesc {
-    pub fn new(max_width: u32, max_height: u32, max_layers: u32) -> Self {
+    /// A description for frames up to `max`, with the defaults of the rest.
+    pub fn new(max: Extent) -> Self {
+        let Extent { width: max_width, height: max_height, layers: max_layers } = max;
         GatherContextDesc { max_width, max_height, max_layers, max_radius: None, image_io: false, frames_in_flight: 1 }
     }
 }

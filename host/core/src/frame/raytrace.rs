@@ -134,7 +134,9 @@ pub struct RaytraceContextDesc {
 }
 
 impl RaytraceContextDesc {
-    pub fn new(max_width: u32, max_height: u32, max_layers: u32, options: RaytraceOptions) -> Self {
+    /// A description for frames up to `max`, with the defaults of the rest.
+    pub fn new(max: Extent, options: RaytraceOptions) -> Self {
+        let Extent { width: max_width, height: max_height, layers: max_layers } = max;
         RaytraceContextDesc { max_width, max_height, max_layers, options, image_io: false, frames_in_flight: 1 }
     }
 }

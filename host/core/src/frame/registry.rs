@@ -229,7 +229,7 @@ impl PartialEq for MethodInfo {
 }
 
 fn create_splat(b: &mut dyn Backend, d: &ContextDesc, name: &'static str) -> Result<Box<dyn DofContext>> {
-    let mut desc = SplatContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.splat.clone());
+    let mut desc = SplatContextDesc::new(d.extent, d.options.splat.clone());
     desc.image_io = d.image_io;
     desc.frames_in_flight = d.frames_in_flight;
     Ok(Box::new(SplatContext::new(b, &desc)?.named(name)))
@@ -304,7 +304,7 @@ pub static METHODS: &[MethodInfo] = &[
                 max_radius: d.options.gather_max_radius,
                 image_io: d.image_io,
                 frames_in_flight: d.frames_in_flight,
-                ..GatherContextDesc::new(d.extent.width, d.extent.height, d.extent.layers)
+                ..GatherContextDesc::new(d.extent)
             };
             Ok(Box::new(GatherContext::new(b, &desc)?))
         },
@@ -330,7 +330,7 @@ pub static METHODS: &[MethodInfo] = &[
                 options: d.options.ring_gather,
                 image_io: d.image_io,
                 frames_in_flight: d.frames_in_flight,
-                ..RingGatherContextDesc::new(d.extent.width, d.extent.height, d.extent.layers)
+                ..RingGatherContextDesc::new(d.extent)
             };
             Ok(Box::new(RingGatherContext::new(b, &desc)?))
         },
@@ -358,7 +358,7 @@ pub static METHODS: &[MethodInfo] = &[
             let desc = BokehContextDesc {
                 image_io: d.image_io,
                 frames_in_flight: d.frames_in_flight,
-                ..BokehContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.bokeh.clone())
+                ..BokehContextDesc::new(d.extent, d.options.bokeh.clone())
             };
             Ok(Box::new(BokehContext::new(b, &desc)?))
         },
@@ -380,7 +380,7 @@ pub static METHODS: &[MethodInfo] = &[
             let desc = RaytraceContextDesc {
                 image_io: d.image_io,
                 frames_in_flight: d.frames_in_flight,
-                ..RaytraceContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.raytrace.clone())
+                ..RaytraceContextDesc::new(d.extent, d.options.raytrace.clone())
             };
             Ok(Box::new(RaytraceContext::new(b, &desc)?))
         },
@@ -407,7 +407,7 @@ pub static METHODS: &[MethodInfo] = &[
             let desc = LayeredContextDesc {
                 image_io: d.image_io,
                 frames_in_flight: d.frames_in_flight,
-                ..LayeredContextDesc::new(d.extent.width, d.extent.height, d.extent.layers, d.options.layered.clone())
+                ..LayeredContextDesc::new(d.extent, d.options.layered.clone())
             };
             Ok(Box::new(LayeredContext::new(b, &desc)?))
         },

@@ -75,7 +75,9 @@ pub struct RingGatherContextDesc {
 super::context::described!(RingGatherContextDesc);
 
 impl RingGatherContextDesc {
-    pub fn new(max_width: u32, max_height: u32, max_layers: u32) -> Self {
+    /// A description for frames up to `max`, with the defaults of the rest.
+    pub fn new(max: Extent) -> Self {
+        let Extent { width: max_width, height: max_height, layers: max_layers } = max;
         RingGatherContextDesc {
             max_width,
             max_height,

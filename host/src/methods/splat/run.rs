@@ -9,7 +9,7 @@
 #[cfg(feature = "testing")]
 use crate::backend::BufferId;
 use crate::backend::{Backend, CommandTime, with_buffers};
-use crate::frame::DofContext;
+use crate::frame::{DofContext, Extent};
 use crate::frame::splat::{MAX_LIST_ENTRIES, SplatContext, SplatContextDesc};
 use crate::frame::splat::{SplatOptions, SplatReport};
 use crate::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};
@@ -72,7 +72,7 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
     }
     let mut options = options.clone();
     options.footprint_side = options.footprint_side.max(image.footprint_grid());
-    let mut desc = SplatContextDesc::new(w, h, layers, options);
+    let mut desc = SplatContextDesc::new(Extent::new(w, h, layers), options);
     // The context checks the bounds (and refuses) before the input is uploaded.
     let first = SplatContext::new(backend, &desc)?;
     let pixels = w as u64 * h as u64;

@@ -72,7 +72,9 @@ pub struct SplatContextDesc {
 }
 
 impl SplatContextDesc {
-    pub fn new(max_width: u32, max_height: u32, max_layers: u32, options: SplatOptions) -> Self {
+    /// A description for frames up to `max`, with the defaults of the rest.
+    pub fn new(max: Extent, options: SplatOptions) -> Self {
+        let Extent { width: max_width, height: max_height, layers: max_layers } = max;
         SplatContextDesc {
             max_width,
             max_height,

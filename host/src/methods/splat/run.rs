@@ -10,7 +10,8 @@
 use crate::backend::BufferId;
 use crate::backend::{Backend, CommandTime, with_buffers};
 use crate::frame::{DofContext, Extent};
-use crate::frame::splat::{MAX_LIST_ENTRIES, SplatContext, SplatContextDesc};
+use crate::frame::splat::{SplatContext, SplatContextDesc};
+use crate::methods::one_shot::grow_to_fit;
 use crate::frame::splat::{SplatOptions, SplatReport};
 use crate::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};
 use crate::layers::{LayeredImage, RgbImage};
@@ -47,9 +48,6 @@ pub struct SplatOutput {
     pub intermediates: Option<Intermediates>,
 }
 
-/// Runs with a larger pool at most this many times after an overflow.
-const RETRIES: u32 = 3;
-
 /// Renders `image` through `lens` by tiled splatting on `backend`.
 pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions) -> Result<SplatOutput> {
     run(backend, image, lens, options, false)
@@ -72,78 +70,53 @@ fn run(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options
     }
     let mut options = options.clone();
     options.footprint_side = options.footprint_side.max(image.footprint_grid());
-    let mut desc = SplatContextDesc::new(Extent::new(w, h, layers), options);
+    let desc = SplatContextDesc::new(Extent::new(w, h, layers), options);
     // The context checks the bounds (and refuses) before the input is uploaded.
-    let first = SplatContext::new(backend, &desc)?;
+    let mut ctx = SplatContext::new(backend, &desc)?;
     let pixels = w as u64 * h as u64;
     let input = slot_words(image);
     let sizes = [(input.len() as u64, "splat/input"), (pixels, "splat/input-counts"), (3 * pixels, "splat/out")];
-    let mut first = Some(first);
     let result = with_buffers(backend, &sizes, |backend, io| {
         backend.write_buffer(io[0], 0, &input)?;
         backend.write_buffer(io[1], 0, &image.counts)?;
         let frame = Frame::layers(w, h, layers, *lens, SlotBuffer::current(io[0]), CountBuffer(io[1]), RgbBuffer(io[2]))
             .with_footprints(image.footprint_grid());
-        let mut attempt = 0;
-        loop {
-            let mut ctx = match first.take() {
-                Some(ctx) => ctx,
-                None => SplatContext::new(backend, &desc)?,
-            };
-            let ran = (|| {
-                let (parts, mut stages) = record_frame(backend, &mut ctx, &frame, keep_stages)?;
-                stages.extend(backend.submit()?);
-                let report = ctx.report(backend)?;
-                Ok::<_, Error>((stages, report, parts))
-            })();
-            let (stages, mut report, _parts) = match ran {
-                Ok(r) => r,
-                Err(e) => {
-                    ctx.destroy(backend);
-                    return Err(e);
-                }
-            };
-            if report.tiles_cut_short() > 0 && attempt < RETRIES {
-                // The pool the frame wanted: every list that was placed, thinned or tried, at least double.
-                let (entries, max_list) = ctx.list_bounds();
-                ctx.destroy(backend);
-                let wanted = report.entries_wanted().max(2 * entries);
-                if entries >= MAX_LIST_ENTRIES {
-                    return Err(Error::TooLarge {
-                        what: "tile list entries (merge fragments with --merge 2x2 or 4x4, or render smaller)".into(),
-                        size: wanted,
-                        limit: MAX_LIST_ENTRIES,
-                    });
-                }
-                desc.list_entries = Some(wanted.min(MAX_LIST_ENTRIES));
-                desc.max_list = Some(max_list.max(report.longest_list_wanted));
-                attempt += 1;
-                continue;
-            }
-            let done = (|| {
-                report.input_fragments = Some(image.counts.iter().map(|&n| n.min(layers) as u64).sum());
-                let out = read_rgb(backend, io[2], w, h)?;
-                #[cfg(feature = "testing")]
-                let inter = match _parts {
-                    Some(parts) => Some(intermediates(backend, &ctx, &report, parts)?),
-                    None => None,
-                };
-                Ok(SplatOutput {
-                    image: out,
-                    report,
-                    stages,
-                    #[cfg(feature = "testing")]
-                    intermediates: inter,
-                })
-            })();
-            ctx.destroy(backend);
-            return done;
-        }
+        // The frame, then, while its lists overflowed the pool, the context grown and the frame
+        // run again: the one rule every one-shot run follows (`one_shot::grow_to_fit`).
+        let mut stages = Vec::new();
+        let mut run_frame = |ctx: &mut dyn DofContext, backend: &mut dyn Backend| -> Result<()> {
+            ctx.record(backend, &frame)?;
+            stages = backend.submit()?;
+            Ok(())
+        };
+        run_frame(&mut ctx, backend)?;
+        grow_to_fit(&mut ctx, backend, &mut run_frame)?;
+        // Every stage's buffers as it left them: the whole frame once more, in parts.
+        let _parts = if keep_stages {
+            let (parts, times) = record_frame(backend, &mut ctx, &frame, keep_stages)?;
+            stages = times;
+            stages.extend(backend.submit()?);
+            parts
+        } else {
+            None
+        };
+        let mut report = ctx.report(backend)?;
+        report.input_fragments = Some(image.counts.iter().map(|&n| n.min(layers) as u64).sum());
+        let out = read_rgb(backend, io[2], w, h)?;
+        #[cfg(feature = "testing")]
+        let inter = match _parts {
+            Some(parts) => Some(intermediates(backend, &ctx, &report, parts)?),
+            None => None,
+        };
+        Ok(SplatOutput {
+            image: out,
+            report,
+            stages,
+            #[cfg(feature = "testing")]
+            intermediates: inter,
+        })
     });
-    // If the input buffers could not be made, the first context is still here.
-    if let Some(ctx) = first {
-        ctx.destroy(backend);
-    }
+    ctx.destroy(backend);
     result
 }
 

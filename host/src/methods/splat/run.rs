@@ -9,13 +9,13 @@
 #[cfg(feature = "testing")]
 use crate::backend::BufferId;
 use crate::backend::{Backend, CommandTime, with_buffers};
-use crate::frame::{DofContext, Extent};
 use crate::frame::splat::{SplatContext, SplatContextDesc};
-use crate::methods::one_shot::grow_to_fit;
 use crate::frame::splat::{SplatOptions, SplatReport};
 use crate::frame::{CountBuffer, Frame, RgbBuffer, SlotBuffer};
+use crate::frame::{DofContext, Extent};
 use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{read_rgb, slot_words};
+use crate::methods::one_shot::grow_to_fit;
 use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 #[cfg(feature = "testing")]

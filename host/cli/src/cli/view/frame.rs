@@ -479,13 +479,38 @@ impl App<'_> {
         Ok(())
     }
 
-    /// One frame.
+    /// One frame: the clock, the script and the controls, then the frame itself
+    /// ([`Self::frame_in`]) with the window's objects, then, after the last of `--frames`, its
+    /// completion.
     fn frame(&mut self, el: &ActiveEventLoop) -> Result<()> {
         self.complete()?;
-        let frames = self.args.frames;
-        if frames.is_some_and(|n| self.frames_recorded >= n) || self.closed {
+        let Some(dt) = self.tick(el) else { return Ok(()) };
+        let movable = self.source.movable();
+        if movable {
+            self.controls.fly(&mut self.camera, dt as f32);
+        }
+        for key in std::mem::take(&mut self.controls.pressed) {
+            if key == KeyCode::KeyH {
+                self.panel.visible = !self.panel.visible;
+            }
+        }
+        let mut r = self.running.take().context("not running")?;
+        let last = self.frame_in(&mut r);
+        self.running = Some(r);
+        if last? {
+            // The screenshot and the last report are read now, then the loop ends.
+            self.complete()?;
             el.exit();
-            return Ok(());
+        }
+        Ok(())
+    }
+
+    /// The frame's clock and the script's step: the seconds since the last frame, or `None` when
+    /// the frames are done or the window closed.
+    fn tick(&mut self, el: &ActiveEventLoop) -> Option<f64> {
+        if self.args.frames.is_some_and(|n| self.frames_recorded >= n) || self.closed {
+            el.exit();
+            return None;
         }
         let now = Instant::now();
         let dt = self.last_frame.map_or(0.0, |t| now.duration_since(t).as_secs_f64());
@@ -498,174 +523,47 @@ impl App<'_> {
             }
             self.stats.fps = if self.stats.fps == 0.0 { 1.0 / dt } else { 0.8 * self.stats.fps + 0.2 / dt };
         }
-
-        // Scripted steps, one a frame; then the controls.
+        // Scripted steps, one a frame.
         if let Some(step) = self.steps.get(self.frames_recorded as usize).cloned() {
             self.apply(step, el);
             if self.closed {
-                return Ok(());
+                return None;
             }
         }
-        let movable = self.source.movable();
-        if movable {
-            self.controls.fly(&mut self.camera, dt as f32);
-        }
-        for key in std::mem::take(&mut self.controls.pressed) {
-            if key == KeyCode::KeyH {
-                self.panel.visible = !self.panel.visible;
-            }
-        }
+        Some(dt)
+    }
 
-        let r = self.running.as_mut().context("not running")?;
-        if r.resize {
-            r.resize = false;
-            let size = r.window.inner_size();
-            if size.width == 0 || size.height == 0 {
-                return Ok(());
-            }
-            // SAFETY: waiting for the device before its swapchain's objects are destroyed.
-            unsafe { r.d.device.device_wait_idle()? };
-            let old = r.sc.take();
-            let sc = Swapchain::new(&r.d, &r.surface_fn, r.surface, [size.width, size.height], self.args.vsync, old)?;
-            println!("swapchain: {}x{}", sc.extent.width, sc.extent.height);
-            r.sc = Some(sc);
+    /// The frame with the window's objects: the UI, the lens and focus, the layers and buffers it
+    /// needs, then its commands, submitted and presented. Returns whether it was the last of
+    /// `--frames`.
+    fn frame_in(&mut self, r: &mut Running) -> Result<bool> {
+        if !resize_swapchain(r, self.args.vsync)? {
+            return Ok(false);
         }
         let extent = r.sc.as_ref().context("no swapchain")?.extent;
         let fixed = self.source.fixed_size();
         let size = fixed.unwrap_or([extent.width, extent.height]);
         self.camera.width = size[0];
         self.camera.height = size[1];
-
-        // The UI: built now (it edits the lens and the method), drawn after the blur.
-        let lens_now = self.lens.thin_lens(&self.camera)?;
-        let raw = r.egui_state.take_egui_input(&r.window);
-        let (panel, stats, error_texture) = (&mut self.panel, &self.stats, &r.error_texture);
-        let output = r.egui_ctx.run(raw, |ctx| {
-            panel.draw(ctx, stats, &lens_now);
-            if let (true, Some(t)) = (panel.show_error && panel.visible, error_texture) {
-                // Half the window wide, at its right.
-                let screen = ctx.content_rect();
-                let size = t.size_vec2() * (0.5 * screen.width() / t.size_vec2().x);
-                egui::Window::new("error vs reference").default_pos([screen.width() / 2.0, 4.0]).show(ctx, |ui| ui.image((t.id(), size)));
-            }
-        });
-        r.egui_state.handle_platform_output(&r.window, output.platform_output);
+        let output = self.build_ui(r)?;
         let primitives = r.egui_ctx.tessellate(output.shapes, output.pixels_per_point);
+        self.take_panel_lens();
+        self.focus_on_click(r, extent, size)?;
 
-        // The lens and method from the panel; an invalid lens is shown and not taken.
-        self.panel.settings.aperture = self.panel.shape();
-        let candidate = LensSettings { focus: Focus::Distance(self.panel.focus), aperture: self.panel.aperture, ..self.lens };
-        match candidate.thin_lens(&self.camera) {
-            Ok(_) => {
-                self.lens = candidate;
-                self.stats.problem = None;
-            }
-            Err(e) => self.stats.problem = Some(format!("lens not taken: {e}")),
-        }
-
-        // Click to focus: the front depth under the cursor, from the host's copy of an EXR's layers
-        // or read from the device peel's last frame.
-        let backend = r.backend.as_mut().context("no backend")?;
-        if let Some((x, y)) = self.controls.focus_click.take() {
-            let (fx, fy) = ((x / extent.width as f64 * size[0] as f64) as u32, (y / extent.height as f64 * size[1] as f64) as u32);
-            let depth = match (&r.peel, &r.layers) {
-                (Some(peel), _) => peel.front_depth(backend, fx, fy)?,
-                (None, Some((_, _, layers))) => layers.front_depth(fx, fy),
-                (None, None) => None,
-            };
-            if let Some(depth) = depth {
-                let focused = LensSettings { focus: Focus::Distance(depth), ..self.lens };
-                if focused.thin_lens(&self.camera).is_ok() {
-                    self.lens = focused;
-                    self.panel.focus = depth;
-                    println!("focus: {depth:.4} (the depth under the cursor at {x:.0},{y:.0})");
-                }
-            }
-        }
-
-        // The layers: a mesh's peel context, made again when the frame size or the lens changed (it
-        // peels whenever the camera moved); an EXR's layers, uploaded again when the lens changed (its edges).
         let lens = self.lens.thin_lens(&self.camera)?;
-        // The library's counters over the rest of the frame; `remade` when anything is made.
-        let before = backend.counters();
+        let before = r.backend.as_ref().context("no backend")?.counters();
+        // Whether anything was made this frame (the library's counters count it then).
         let mut remade = false;
-        let shape = match self.source.mesh() {
-            Some((mesh, near)) => {
-                let camera_size = [self.camera.width, self.camera.height];
-                if r.peel.as_ref().is_none_or(|p| p.size != camera_size || p.lens != self.lens) {
-                    if let Some(old) = r.peel.take() {
-                        old.ctx.destroy(backend);
-                    }
-                    let start = Instant::now();
-                    let near = near.unwrap_or_else(|| default_near(lens.focus_distance));
-                    let options = LayerOptions { max_layers: LAYERS, guard_band: GuardBand::Auto, ..Default::default() };
-                    let ctx = MeshPeelContext::new(backend, &mesh.raster(), &self.camera, &lens, &MeshPeelDesc::new(&options, near))?;
-                    self.stats.layers_ms = start.elapsed().as_secs_f64() * 1e3;
-                    self.stats.device_peel = Some(ctx.margin());
-                    r.peel = Some(DevicePeel { ctx, size: camera_size, lens: self.lens, peeled: None });
-                    remade = true;
-                }
-                let ctx = &r.peel.as_ref().context("no peel context")?.ctx;
-                let [width, height] = ctx.size();
-                Shape { width, height, layers: ctx.layers(), margin: ctx.margin(), lens }
-            }
-            None => {
-                if r.layers.as_ref().is_none_or(|(c, l, _)| *c != self.camera || *l != self.lens) {
-                    let layers = self.source.exr_layers(&self.camera, &self.lens)?;
-                    Inputs::upload(&mut r.inputs, backend, &layers.image)?;
-                    remade = true;
-                    self.stats.layers_ms = layers.ms;
-                    r.layers = Some((self.camera, self.lens, layers));
-                }
-                let (_, _, layers) = r.layers.as_ref().context("no layers")?;
-                let i = &layers.image;
-                Shape { width: i.width, height: i.height, layers: i.max_layers, margin: layers.margin, lens: layers.lens }
-            }
-        };
-        let fw = shape.width;
-        let fh = shape.height;
+        let shape = self.prepare_layers(r, &lens, &mut remade)?;
         self.stats.frame = [size[0], size[1]];
-
-        // The contexts and the output image, for frames up to the window's size plus the widest
-        // guard band (grown, never shrunk, when the window grows).
-        let want = [fw.max(size[0] + 2 * MAX_GUARD_BAND), fh.max(size[1] + 2 * MAX_GUARD_BAND), shape.layers.max(LAYERS)];
-        let contexts = r.contexts.get_or_insert_with(|| Contexts::new(want));
-        let made_before = backend.counters().allocations;
-        contexts.prepare(backend, &self.panel.settings, want)?;
-        remade |= backend.counters().allocations != made_before;
-        let max = contexts.max();
-        if r.target.as_ref().is_none_or(|(_, e, _)| e[0] < max[0] || e[1] < max[1]) {
-            remade = true;
-            // SAFETY: the image may be in use by nothing (the frame before completed).
-            unsafe { r.d.device.device_wait_idle()? };
-            if let Some((old, _, _)) = r.target.take() {
-                r.d.destroy_image(old);
-            }
-            let usage = vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST;
-            r.target = Some((r.d.image(vk::Format::R32G32B32A32_SFLOAT, [max[0], max[1]], usage)?, [max[0], max[1]], true));
-        }
-        let pixels = max[0] as u64 * max[1] as u64;
-        if r.display.as_ref().is_none_or(|b| b.pixels < pixels) {
-            remade = true;
-            if let Some(old) = r.display.take() {
-                old.destroy(backend);
-            }
-            let rgb = backend.create_buffer(3 * pixels, "view/rgb")?;
-            let rgba = match backend.create_buffer(4 * pixels, "view/display") {
-                Ok(b) => b,
-                Err(e) => {
-                    backend.destroy_buffer(rgb);
-                    return Err(e.into());
-                }
-            };
-            r.display = Some(Display { rgb, rgba, pixels });
-        }
-        let last = frames.is_some_and(|n| self.frames_recorded + 1 == n);
+        self.prepare_buffers(r, &shape, size, &mut remade)?;
+        let last = self.args.frames.is_some_and(|n| self.frames_recorded + 1 == n);
         // The swapchain image is copied for the screenshot every frame (written after the last).
         let copy_shot = self.args.screenshot.is_some();
         let want_linear = self.panel.show_error && fixed.is_none() && self.source.has_reference();
         if want_linear && r.reference.as_ref().is_none_or(|(c, l, _)| *c != self.camera || *l != self.lens) {
             println!("computing the reference for this view ({REFERENCE_SAMPLES} samples a pixel)...");
+            let backend = r.backend.as_mut().context("no backend")?;
             let image = self.source.reference(backend, &self.camera, &self.lens, REFERENCE_SAMPLES)?;
             r.reference = Some((self.camera, self.lens, image));
             remade = true;
@@ -691,117 +589,23 @@ impl App<'_> {
             }
             Err(vk::Result::ERROR_OUT_OF_DATE_KHR) => {
                 r.resize = true;
-                return Ok(());
+                return Ok(false);
             }
             Err(e) => return Err(e).context("vkAcquireNextImageKHR"),
         };
-        let image = sc.images[index as usize];
 
-        // Record.
-        let d = &r.d;
-        let cb = d.cb;
+        // Record: the depth of field and the display pass, the blit into the swapchain image, the
+        // UI over it, the screenshot's copy.
+        let cb = r.d.cb;
         // SAFETY: the command buffer's last submission completed (the fence).
         unsafe {
-            d.device.reset_command_buffer(cb, vk::CommandBufferResetFlags::empty())?;
-            d.device
+            r.d.device.reset_command_buffer(cb, vk::CommandBufferResetFlags::empty())?;
+            r.d.device
                 .begin_command_buffer(cb, &vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT))?;
         }
-        let (target, _, fresh) = r.target.as_mut().context("no target")?;
-        let (target_image, was_fresh) = (target.handle, *fresh);
-        *fresh = false;
-        if was_fresh {
-            d.image_barrier(
-                target_image,
-                Layout::UNDEFINED,
-                Layout::TRANSFER_SRC_OPTIMAL,
-                (vk::PipelineStageFlags::TOP_OF_PIPE, Access::empty()),
-                (TRANSFER, Access::empty()),
-            );
-        }
-        // The display pass's result goes into the target image as the library sees it: in
-        // TRANSFER_SRC_OPTIMAL, last read by the blit of the frame before (a read: the library's
-        // barrier only has to wait for it), left there.
-        // SAFETY: our live RGBA32F image, at least the frame's size, TRANSFER_SRC|DST usage, on the
-        // backend's queue family, in that layout when the copy runs; alive until the fence.
-        let out = unsafe {
-            ImageRef::vulkan(
-                target_image,
-                ImageFormat::Rgba32Float,
-                [fw, fh],
-                Layout::TRANSFER_SRC_OPTIMAL,
-                TRANSFER,
-                Access::empty(),
-                Layout::TRANSFER_SRC_OPTIMAL,
-            )
-        };
-        let display = r.display.as_ref().context("no display buffers")?;
-        let method = self.panel.settings.method;
-        // The peel's slots (a single-layer method reads their front slot), or the uploaded ones.
-        let ((fragments, counts), slots) = match (&r.peel, &r.inputs) {
-            (Some(p), _) => ((p.ctx.slots().fragments, p.ctx.slots().counts), shape.layers),
-            (None, Some(inputs)) if method.front_only() => (inputs.front, 1),
-            (None, Some(inputs)) => (inputs.all, shape.layers),
-            (None, None) => bail!("no inputs"),
-        };
-        let frame = Frame {
-            width: fw,
-            height: fh,
-            lens: shape.lens,
-            input: FrameInput::Layers {
-                fragments: SlotBuffer::current(fragments),
-                counts: CountBuffer(counts),
-                layers: slots,
-                footprint_side: 0,
-            },
-            output: FrameOutput::Buffer(RgbBuffer(display.rgb)),
-        };
-        // The display pass: the documented tone map (the one PNG previews use, from the same
-        // source) at the panel's exposure, or the raw linear values clamped, sRGB-encoded.
-        let mode = if self.panel.raw_linear { MODE_LINEAR } else { MODE_TONEMAP };
-        let params = DisplayParams { width: fw, height: fh, mode, exposure: self.panel.exposure };
-        // SAFETY: our command buffer is recording, outside a render pass, from a pool of the
-        // backend's queue family; every resource it names outlives the fence wait.
-        unsafe { backend.begin_external(cb)? };
-        let peeled = match r.peel.as_mut() {
-            Some(p) if p.peeled != Some(self.camera) => {
-                let recorded = p.ctx.record(backend, &self.camera, &lens);
-                p.peeled = recorded.is_ok().then_some(self.camera);
-                recorded.map_err(anyhow::Error::from)
-            }
-            _ => Ok(()),
-        };
-        let recorded = peeled.and_then(|()| contexts_record(r.contexts.as_mut(), backend, method, &frame)).and_then(|()| {
-            let groups = groups_for(&DISPLAY, fw as u64 * fh as u64);
-            backend.run(display_tonemap::Bindings { rgb: display.rgb, rgba: display.rgba }, groups, &params, "view/display")?;
-            backend.copy_buffer_to_image(display.rgba, 0, out, "view/display-to-image")?;
-            Ok(())
-        });
-        backend.end_external()?;
-        recorded?;
-
-        // The frame, cut to the window (the guard band is beyond it), into the swapchain image.
-        let m = shape.margin as i32;
-        let (sw, sh) = (size[0] as i32, size[1] as i32);
-        d.image_barrier(
-            image,
-            Layout::UNDEFINED,
-            Layout::TRANSFER_DST_OPTIMAL,
-            (TRANSFER, Access::empty()),
-            (TRANSFER, Access::TRANSFER_WRITE),
-        );
-        let blit = vk::ImageBlit::default()
-            .src_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
-            .src_offsets([vk::Offset3D { x: m, y: m, z: 0 }, vk::Offset3D { x: m + sw, y: m + sh, z: 1 }])
-            .dst_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
-            .dst_offsets([vk::Offset3D { x: 0, y: 0, z: 0 }, vk::Offset3D { x: w as i32, y: h as i32, z: 1 }]);
-        // Same size for rendered scenes (each pixel copied; its value, sRGB-encoded by the display
-        // pass, stored as it is in the UNORM swapchain image); an EXR is scaled to the window.
-        let filter = if fixed.is_some() { vk::Filter::LINEAR } else { vk::Filter::NEAREST };
-        // SAFETY: recording; both images are in the layouts named, the regions inside them.
-        unsafe {
-            d.device.cmd_blit_image(cb, target_image, Layout::TRANSFER_SRC_OPTIMAL, image, Layout::TRANSFER_DST_OPTIMAL, &[blit], filter)
-        };
-
+        let target_image = self.record_dof(r, &shape, &lens)?;
+        let image = record_blit(r, index, target_image, &shape, size, fixed.is_some())?;
+        let (d, sc) = (&r.d, r.sc.as_ref().context("no swapchain")?);
         // The UI over it, in the render pass (which leaves the image in TRANSFER_SRC_OPTIMAL).
         let pass = vk::RenderPassBeginInfo::default()
             .render_pass(sc.render_pass)
@@ -809,6 +613,7 @@ impl App<'_> {
             .render_area(vk::Rect2D { offset: vk::Offset2D::default(), extent });
         // SAFETY: recording; the framebuffer is the acquired image's.
         unsafe { d.device.cmd_begin_render_pass(cb, &pass, vk::SubpassContents::INLINE) };
+        let renderer = r.renderer.as_mut().context("no UI renderer")?;
         renderer.cmd_draw(cb, extent, output.pixels_per_point, &primitives).map_err(|e| anyhow!("the UI renderer: {e}"))?;
         // SAFETY: recording, inside the render pass begun above.
         unsafe { d.device.cmd_end_render_pass(cb) };
@@ -860,7 +665,7 @@ impl App<'_> {
         r.pending = Pending {
             submitted: true,
             screenshot: last && copy_shot,
-            linear: want_linear.then_some(LinearRead { frame_width: fw, margin: shape.margin, size: [size[0], size[1]] }),
+            linear: want_linear.then_some(LinearRead { frame_width: shape.width, margin: shape.margin, size: [size[0], size[1]] }),
             free: output.textures_delta.free,
             report: report_due,
         };
@@ -876,12 +681,223 @@ impl App<'_> {
             Err(vk::Result::ERROR_OUT_OF_DATE_KHR) => r.resize = true,
             Err(e) => return Err(e).context("vkQueuePresentKHR"),
         }
-        if last {
-            // The screenshot and the last report are read now, then the loop ends.
-            self.complete()?;
-            el.exit();
+        Ok(last)
+    }
+
+    /// The UI, built before the blur (it edits the lens and the method) and drawn after it.
+    fn build_ui(&mut self, r: &mut Running) -> Result<egui::FullOutput> {
+        let lens_now = self.lens.thin_lens(&self.camera)?;
+        let raw = r.egui_state.take_egui_input(&r.window);
+        let (panel, stats, error_texture) = (&mut self.panel, &self.stats, &r.error_texture);
+        let output = r.egui_ctx.run(raw, |ctx| {
+            panel.draw(ctx, stats, &lens_now);
+            if let (true, Some(t)) = (panel.show_error && panel.visible, error_texture) {
+                // Half the window wide, at its right.
+                let screen = ctx.content_rect();
+                let size = t.size_vec2() * (0.5 * screen.width() / t.size_vec2().x);
+                egui::Window::new("error vs reference").default_pos([screen.width() / 2.0, 4.0]).show(ctx, |ui| ui.image((t.id(), size)));
+            }
+        });
+        let mut output = output;
+        r.egui_state.handle_platform_output(&r.window, std::mem::take(&mut output.platform_output));
+        Ok(output)
+    }
+
+    /// The lens and method from the panel; an invalid lens is shown and not taken.
+    fn take_panel_lens(&mut self) {
+        self.panel.settings.aperture = self.panel.shape();
+        let candidate = LensSettings { focus: Focus::Distance(self.panel.focus), aperture: self.panel.aperture, ..self.lens };
+        match candidate.thin_lens(&self.camera) {
+            Ok(_) => {
+                self.lens = candidate;
+                self.stats.problem = None;
+            }
+            Err(e) => self.stats.problem = Some(format!("lens not taken: {e}")),
+        }
+    }
+
+    /// Click to focus: the front depth under the cursor, from the host's copy of an EXR's layers
+    /// or read from the device peel's last frame.
+    fn focus_on_click(&mut self, r: &mut Running, extent: vk::Extent2D, size: [u32; 2]) -> Result<()> {
+        let Some((x, y)) = self.controls.focus_click.take() else { return Ok(()) };
+        let backend = r.backend.as_mut().context("no backend")?;
+        let (fx, fy) = ((x / extent.width as f64 * size[0] as f64) as u32, (y / extent.height as f64 * size[1] as f64) as u32);
+        let depth = match (&r.peel, &r.layers) {
+            (Some(peel), _) => peel.front_depth(backend, fx, fy)?,
+            (None, Some((_, _, layers))) => layers.front_depth(fx, fy),
+            (None, None) => None,
+        };
+        if let Some(depth) = depth {
+            let focused = LensSettings { focus: Focus::Distance(depth), ..self.lens };
+            if focused.thin_lens(&self.camera).is_ok() {
+                self.lens = focused;
+                self.panel.focus = depth;
+                println!("focus: {depth:.4} (the depth under the cursor at {x:.0},{y:.0})");
+            }
         }
         Ok(())
+    }
+
+    /// The layers: a mesh's peel context, made again when the frame size or the lens changed (it
+    /// peels whenever the camera moved); an EXR's layers, uploaded again when the lens changed (its
+    /// edges).
+    fn prepare_layers(&mut self, r: &mut Running, lens: &ThinLens, remade: &mut bool) -> Result<Shape> {
+        let backend = r.backend.as_mut().context("no backend")?;
+        match self.source.mesh() {
+            Some((mesh, near)) => {
+                let camera_size = [self.camera.width, self.camera.height];
+                if r.peel.as_ref().is_none_or(|p| p.size != camera_size || p.lens != self.lens) {
+                    if let Some(old) = r.peel.take() {
+                        old.ctx.destroy(backend);
+                    }
+                    let start = Instant::now();
+                    let near = near.unwrap_or_else(|| default_near(lens.focus_distance));
+                    let options = LayerOptions { max_layers: LAYERS, guard_band: GuardBand::Auto, ..Default::default() };
+                    let ctx = MeshPeelContext::new(backend, &mesh.raster(), &self.camera, lens, &MeshPeelDesc::new(&options, near))?;
+                    self.stats.layers_ms = start.elapsed().as_secs_f64() * 1e3;
+                    self.stats.device_peel = Some(ctx.margin());
+                    r.peel = Some(DevicePeel { ctx, size: camera_size, lens: self.lens, peeled: None });
+                    *remade = true;
+                }
+                let ctx = &r.peel.as_ref().context("no peel context")?.ctx;
+                let [width, height] = ctx.size();
+                Ok(Shape { width, height, layers: ctx.layers(), margin: ctx.margin(), lens: *lens })
+            }
+            None => {
+                if r.layers.as_ref().is_none_or(|(c, l, _)| *c != self.camera || *l != self.lens) {
+                    let layers = self.source.exr_layers(&self.camera, &self.lens)?;
+                    Inputs::upload(&mut r.inputs, backend, &layers.image)?;
+                    *remade = true;
+                    self.stats.layers_ms = layers.ms;
+                    r.layers = Some((self.camera, self.lens, layers));
+                }
+                let (_, _, layers) = r.layers.as_ref().context("no layers")?;
+                let i = &layers.image;
+                Ok(Shape { width: i.width, height: i.height, layers: i.max_layers, margin: layers.margin, lens: layers.lens })
+            }
+        }
+    }
+
+    /// The contexts and the output image, for frames up to the window's size plus the widest
+    /// guard band (grown, never shrunk, when the window grows), and the display buffers.
+    fn prepare_buffers(&mut self, r: &mut Running, shape: &Shape, size: [u32; 2], remade: &mut bool) -> Result<()> {
+        let backend = r.backend.as_mut().context("no backend")?;
+        let want =
+            [shape.width.max(size[0] + 2 * MAX_GUARD_BAND), shape.height.max(size[1] + 2 * MAX_GUARD_BAND), shape.layers.max(LAYERS)];
+        let contexts = r.contexts.get_or_insert_with(|| Contexts::new(want));
+        let made_before = backend.counters().allocations;
+        contexts.prepare(backend, &self.panel.settings, want)?;
+        *remade |= backend.counters().allocations != made_before;
+        let max = contexts.max();
+        if r.target.as_ref().is_none_or(|(_, e, _)| e[0] < max[0] || e[1] < max[1]) {
+            *remade = true;
+            // SAFETY: the image may be in use by nothing (the frame before completed).
+            unsafe { r.d.device.device_wait_idle()? };
+            if let Some((old, _, _)) = r.target.take() {
+                r.d.destroy_image(old);
+            }
+            let usage = vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST;
+            r.target = Some((r.d.image(vk::Format::R32G32B32A32_SFLOAT, [max[0], max[1]], usage)?, [max[0], max[1]], true));
+        }
+        let pixels = max[0] as u64 * max[1] as u64;
+        if r.display.as_ref().is_none_or(|b| b.pixels < pixels) {
+            *remade = true;
+            if let Some(old) = r.display.take() {
+                old.destroy(backend);
+            }
+            let rgb = backend.create_buffer(3 * pixels, "view/rgb")?;
+            let rgba = match backend.create_buffer(4 * pixels, "view/display") {
+                Ok(b) => b,
+                Err(e) => {
+                    backend.destroy_buffer(rgb);
+                    return Err(e.into());
+                }
+            };
+            r.display = Some(Display { rgb, rgba, pixels });
+        }
+        Ok(())
+    }
+
+    /// Records the peel (where the camera moved), the depth of field through the frame API and the
+    /// display pass into the frame's command buffer, through the library's guard. Returns the
+    /// target image the display pass wrote.
+    fn record_dof(&mut self, r: &mut Running, shape: &Shape, lens: &ThinLens) -> Result<vk::Image> {
+        let (target, _, fresh) = r.target.as_mut().context("no target")?;
+        let (target_image, was_fresh) = (target.handle, *fresh);
+        *fresh = false;
+        if was_fresh {
+            r.d.image_barrier(
+                target_image,
+                Layout::UNDEFINED,
+                Layout::TRANSFER_SRC_OPTIMAL,
+                (vk::PipelineStageFlags::TOP_OF_PIPE, Access::empty()),
+                (TRANSFER, Access::empty()),
+            );
+        }
+        let (fw, fh) = (shape.width, shape.height);
+        // The display pass's result goes into the target image as the library sees it: in
+        // TRANSFER_SRC_OPTIMAL, last read by the blit of the frame before (a read: the library's
+        // barrier only has to wait for it), left there.
+        // SAFETY: our live RGBA32F image, at least the frame's size, TRANSFER_SRC|DST usage, on the
+        // backend's queue family, in that layout when the copy runs; alive until the fence.
+        let out = unsafe {
+            ImageRef::vulkan(
+                target_image,
+                ImageFormat::Rgba32Float,
+                [fw, fh],
+                Layout::TRANSFER_SRC_OPTIMAL,
+                TRANSFER,
+                Access::empty(),
+                Layout::TRANSFER_SRC_OPTIMAL,
+            )
+        };
+        let display = r.display.as_ref().context("no display buffers")?;
+        let method = self.panel.settings.method;
+        // The peel's slots (a single-layer method reads their front slot), or the uploaded ones.
+        let ((fragments, counts), slots) = match (&r.peel, &r.inputs) {
+            (Some(p), _) => ((p.ctx.slots().fragments, p.ctx.slots().counts), shape.layers),
+            (None, Some(inputs)) if method.front_only() => (inputs.front, 1),
+            (None, Some(inputs)) => (inputs.all, shape.layers),
+            (None, None) => bail!("no inputs"),
+        };
+        let frame = Frame {
+            width: fw,
+            height: fh,
+            lens: shape.lens,
+            input: FrameInput::Layers {
+                fragments: SlotBuffer::current(fragments),
+                counts: CountBuffer(counts),
+                layers: slots,
+                footprint_side: 0,
+            },
+            output: FrameOutput::Buffer(RgbBuffer(display.rgb)),
+        };
+        // The display pass: the documented tone map (the one PNG previews use, from the same
+        // source) at the panel's exposure, or the raw linear values clamped, sRGB-encoded.
+        let mode = if self.panel.raw_linear { MODE_LINEAR } else { MODE_TONEMAP };
+        let params = DisplayParams { width: fw, height: fh, mode, exposure: self.panel.exposure };
+        let (rgb, rgba) = (display.rgb, display.rgba);
+        let backend = r.backend.as_mut().context("no backend")?;
+        // SAFETY: our command buffer is recording, outside a render pass, from a pool of the
+        // backend's queue family; every resource it names outlives the fence wait.
+        let mut recording = unsafe { backend.record_into(r.d.cb)? };
+        let peeled = match r.peel.as_mut() {
+            Some(p) if p.peeled != Some(self.camera) => {
+                let recorded = p.ctx.record(&mut *recording, &self.camera, lens);
+                p.peeled = recorded.is_ok().then_some(self.camera);
+                recorded.map_err(anyhow::Error::from)
+            }
+            _ => Ok(()),
+        };
+        let recorded = peeled.and_then(|()| contexts_record(r.contexts.as_mut(), &mut recording, method, &frame)).and_then(|()| {
+            let groups = groups_for(&DISPLAY, fw as u64 * fh as u64);
+            recording.run(display_tonemap::Bindings { rgb, rgba }, groups, &params, "view/display")?;
+            recording.copy_buffer_to_image(rgba, 0, out, "view/display-to-image")?;
+            Ok(())
+        });
+        recording.end()?;
+        recorded?;
+        Ok(target_image)
     }
 
     fn apply(&mut self, step: Step, el: &ActiveEventLoop) {
@@ -978,6 +994,57 @@ impl App<'_> {
         }
         Ok(())
     }
+}
+
+/// Makes the swapchain again where the window was resized; `false` while the window has no area
+/// (the frame is skipped).
+fn resize_swapchain(r: &mut Running, vsync: bool) -> Result<bool> {
+    if !r.resize {
+        return Ok(true);
+    }
+    r.resize = false;
+    let size = r.window.inner_size();
+    if size.width == 0 || size.height == 0 {
+        return Ok(false);
+    }
+    // SAFETY: waiting for the device before its swapchain's objects are destroyed.
+    unsafe { r.d.device.device_wait_idle()? };
+    let old = r.sc.take();
+    let sc = Swapchain::new(&r.d, &r.surface_fn, r.surface, [size.width, size.height], vsync, old)?;
+    println!("swapchain: {}x{}", sc.extent.width, sc.extent.height);
+    r.sc = Some(sc);
+    Ok(true)
+}
+
+/// Records the frame, cut to the window (the guard band is beyond it), blitted from the target
+/// image into the acquired swapchain image (`scaled`: an EXR scaled to the window); returns that
+/// image, left in TRANSFER_DST_OPTIMAL.
+fn record_blit(r: &Running, index: u32, target_image: vk::Image, shape: &Shape, size: [u32; 2], scaled: bool) -> Result<vk::Image> {
+    let sc = r.sc.as_ref().context("no swapchain")?;
+    let (d, cb, image) = (&r.d, r.d.cb, sc.images[index as usize]);
+    let (w, h) = (sc.extent.width, sc.extent.height);
+    let m = shape.margin as i32;
+    let (sw, sh) = (size[0] as i32, size[1] as i32);
+    d.image_barrier(
+        image,
+        Layout::UNDEFINED,
+        Layout::TRANSFER_DST_OPTIMAL,
+        (TRANSFER, Access::empty()),
+        (TRANSFER, Access::TRANSFER_WRITE),
+    );
+    let blit = vk::ImageBlit::default()
+        .src_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
+        .src_offsets([vk::Offset3D { x: m, y: m, z: 0 }, vk::Offset3D { x: m + sw, y: m + sh, z: 1 }])
+        .dst_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
+        .dst_offsets([vk::Offset3D { x: 0, y: 0, z: 0 }, vk::Offset3D { x: w as i32, y: h as i32, z: 1 }]);
+    // Same size for rendered scenes (each pixel copied; its value, sRGB-encoded by the display
+    // pass, stored as it is in the UNORM swapchain image); an EXR is scaled to the window.
+    let filter = if scaled { vk::Filter::LINEAR } else { vk::Filter::NEAREST };
+    // SAFETY: recording; both images are in the layouts named, the regions inside them.
+    unsafe {
+        d.device.cmd_blit_image(cb, target_image, Layout::TRANSFER_SRC_OPTIMAL, image, Layout::TRANSFER_DST_OPTIMAL, &[blit], filter)
+    };
+    Ok(image)
 }
 
 /// Writes the screenshot from the read-back swapchain pixels of a completed frame (`how`: which).

@@ -32,6 +32,7 @@ pub mod renderer_peel;
 pub mod resolve;
 pub mod ring_gather;
 pub mod scan;
+pub mod scatter_gather;
 pub mod slot;
 pub mod sort;
 pub mod splat;
@@ -49,6 +50,7 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
         .chain(sort::KERNELS.iter())
         .chain(gather::KERNELS.iter())
         .chain(ring_gather::KERNELS.iter())
+        .chain(scatter_gather::KERNELS.iter())
         .chain(splat::KERNELS.iter())
         .chain(raytrace::KERNELS.iter())
         .chain(layered::KERNELS.iter())

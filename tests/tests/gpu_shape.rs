@@ -34,7 +34,7 @@ struct Budget {
     workgroup_bytes: u32,
 }
 
-/// The hot kernels of multi-layer splatting and their budgets.
+/// The hot kernels of multi-layer splatting and of scatter-as-you-gather, and their budgets.
 const BUDGETS: &[Budget] = &[
     // The shape a GPU wants: no per-invocation arrays, no division by a run-time value.
     Budget {
@@ -121,6 +121,33 @@ const BUDGETS: &[Budget] = &[
         function_bytes: 5272,
         runtime_indexed: 950,
         runtime_divisions: 41,
+        barriers: 1,
+        workgroup_bytes: 0,
+    },
+    // Scatter-as-you-gather: one invocation a pixel or a tile, the rings turned by rotation, no
+    // per-invocation arrays and no division by a run-time value; the tiles' two reductions share
+    // one tree.
+    Budget {
+        entry: "scatter_gather::scatter_gather",
+        function_bytes: 0,
+        runtime_indexed: 0,
+        runtime_divisions: 0,
+        barriers: 1,
+        workgroup_bytes: 0,
+    },
+    Budget {
+        entry: "scatter_gather::scatter_gather_tiles",
+        function_bytes: 0,
+        runtime_indexed: 0,
+        runtime_divisions: 0,
+        barriers: 3,
+        workgroup_bytes: 2048,
+    },
+    Budget {
+        entry: "scatter_gather::scatter_gather_dilate",
+        function_bytes: 0,
+        runtime_indexed: 0,
+        runtime_divisions: 0,
         barriers: 1,
         workgroup_bytes: 0,
     },

@@ -112,7 +112,7 @@ fn size() -> impl Strategy<Value = (u32, u32)> {
 ///   `(w·c)·(1/w)`: two roundings, so within 2 ulp (2.4e-7 relative; measured 1.2e-7). The others
 ///   copy the front layer through bit for bit (splatting copies tiles without a list, ray tracing
 ///   hits the pixel's own front fragment, layered DoF and the ring gather composite the pixel
-///   alone).
+///   alone, scatter-as-you-gather copies a tile whose kernel is under half a pixel).
 /// - energy: splatting stores a fragment's colour as half floats (a relative rounding of up to
 ///   2^-11 a value, 4.9e-4; measured 1.4e-4 on the mean), so 1e-3; the others sum in f32 over at
 ///   most a few hundred pixels, measured at most 2.5e-6, so 1e-5. Ray tracing is run with one lens
@@ -123,7 +123,8 @@ fn size() -> impl Strategy<Value = (u32, u32)> {
 ///   a division differently, the sprite rasteriser interpolates what the CPU fallback computes, a
 ///   ray grazing a pixel corner may go either way. On lavapipe the gathers, ray tracing and
 ///   layered DoF measured bit for bit on these images, splatting within 2.3e-6 and bokeh sprites
-///   within 3.2e-5 (relative to `max(|cpu|, 1e-3)`).
+///   within 3.2e-5 (relative to `max(|cpu|, 1e-3)`); scatter-as-you-gather is held to bit for bit,
+///   as its suite holds it.
 fn tolerances_of(m: &MethodInfo) -> Tolerances {
     m.tolerances
 }

@@ -26,10 +26,11 @@
 //! [`GatherContext`], the engine-grade gather (after AMD FidelityFX DoF, Unreal Engine's Diaphragm
 //! DoF and Jimenez 2014) through [`RingGatherContext`], bokeh sprites (de Rousiers, Pettineo)
 //! through [`BokehContext`], ray tracing through layers (Lee et al. 2010) through
-//! [`RaytraceContext`] (hierarchy sized for the largest frame, lens samples written at creation)
-//! and layered DoF with matting (Schedl, Wimmer 2012) through [`LayeredContext`], whose layer plan
+//! [`RaytraceContext`] (hierarchy sized for the largest frame, lens samples written at creation),
+//! layered DoF with matting (Schedl, Wimmer 2012) through [`LayeredContext`], whose layer plan
 //! (the signed-CoC range and which candidate layers are used) is a device reduction over layers
-//! fixed at creation. Every context records the same [`Frame`] description. The one-shot functions
+//! fixed at creation, and scatter-as-you-gather with tile depth separation (Jimenez 2014) through
+//! [`ScatterGatherContext`]. Every context records the same [`Frame`] description. The one-shot functions
 //! in `methods` of the crate `dof` above the core (what the CLI, the evaluation and the tests call) run one frame through
 //! these contexts, except ray tracing's and layered DoF's, which keep their own per-call paths
 //! (ray tracing's records the context's kernels; layered DoF's plans on the host and is the
@@ -49,6 +50,7 @@ pub mod recording;
 pub mod registry;
 pub mod renderer_peel;
 pub mod ring_gather;
+pub mod scatter_gather;
 pub mod splat;
 
 pub use bokeh::{BokehContext, BokehContextDesc, BokehOptions, BokehReport};
@@ -64,4 +66,5 @@ pub use recording::{Command, Groups, Recording};
 pub use registry::{Column, ContextDesc, METHODS, MethodInfo, Reads, Scale, Stage, Sweep, Tolerances, VulkanTolerance};
 pub use renderer_peel::{RendererPeel, RendererPeelDesc};
 pub use ring_gather::{RingGatherContext, RingGatherContextDesc, RingGatherOptions, RingGatherReport};
+pub use scatter_gather::{ScatterGatherContext, ScatterGatherContextDesc, ScatterGatherOptions, ScatterGatherReport};
 pub use splat::{Merge, SplatContext, SplatContextDesc, SplatOptions, SplatReport};

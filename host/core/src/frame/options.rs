@@ -9,6 +9,7 @@ use super::bokeh::BokehOptions;
 use super::layered::LayeredOptions;
 use super::raytrace::{MAX_SPP, RaytraceOptions};
 use super::ring_gather::{MAX_SAMPLE_RINGS, RingGatherOptions};
+use super::scatter_gather::ScatterGatherOptions;
 use super::splat::{Merge, SplatOptions};
 use crate::aperture::parse_aperture;
 use crate::error::{Error, Result};
@@ -27,6 +28,8 @@ pub struct MethodOptions {
     pub raytrace: RaytraceOptions,
     /// Layered DoF (cascading, layers per doubling, first and largest layer CoC).
     pub layered: LayeredOptions,
+    /// Scatter-as-you-gather (rings, radius cap).
+    pub scatter_gather: ScatterGatherOptions,
 }
 
 /// A setting that some methods take and others would ignore. Each method's entry lists those it
@@ -247,6 +250,7 @@ impl MethodOptions {
                 self.gather_max_radius = Some(d.div_ceil(2));
                 self.ring_gather.max_radius = d.div_ceil(2);
                 self.layered.max_coc = d as f32;
+                self.scatter_gather.max_radius = d.div_ceil(2);
             }
             (MethodOption::Aperture, Checked::Text(s)) => {
                 let shape = parse_aperture(&s)?;

@@ -23,3 +23,27 @@ pub fn ceil(x: f32) -> f32 {
 pub fn powf(x: f32, y: f32) -> f32 {
     x.powf(y)
 }
+
+/// The smaller of `a` and `b` (`b` where they are unordered), as one comparison on both targets.
+#[inline]
+pub fn minf(a: f32, b: f32) -> f32 {
+    if a < b { a } else { b }
+}
+
+/// The larger of `a` and `b` (`b` where they are unordered).
+#[inline]
+pub fn maxf(a: f32, b: f32) -> f32 {
+    if a > b { a } else { b }
+}
+
+/// `x` clamped to [0, 1] (NaN to 1).
+#[inline]
+pub fn saturate(x: f32) -> f32 {
+    minf(maxf(x, 0.0), 1.0)
+}
+
+/// `|x|` (NaN stays NaN).
+#[inline]
+pub fn absf(x: f32) -> f32 {
+    if x < 0.0 { -x } else { x }
+}

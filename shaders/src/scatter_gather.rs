@@ -40,6 +40,7 @@
 
 use crate::exec::{Group, Load, Mem};
 use crate::lens::{ThinLens, is_finite as finite, is_nan, is_pos_inf, is_positive};
+use crate::math::{absf, maxf, minf, saturate};
 use crate::ring_gather::signed_radius;
 
 /// Pixels on a side of a tile.
@@ -87,26 +88,6 @@ impl ScatterGatherParams {
 #[inline]
 pub const fn samples(rings: u32) -> u32 {
     1 + 4 * rings * (rings + 1)
-}
-
-#[inline]
-fn minf(a: f32, b: f32) -> f32 {
-    if a < b { a } else { b }
-}
-
-#[inline]
-fn maxf(a: f32, b: f32) -> f32 {
-    if a > b { a } else { b }
-}
-
-#[inline]
-fn saturate(x: f32) -> f32 {
-    minf(maxf(x, 0.0), 1.0)
-}
-
-#[inline]
-fn absf(x: f32) -> f32 {
-    if x < 0.0 { -x } else { x }
 }
 
 /// The light a sample of CoC radius `r` gives a pixel its disc covers: the inverse of the disc's

@@ -4,7 +4,9 @@
 //! against what it must give.
 
 use dof_core::backend::{Backend, BufferId, CpuBackend};
-use dof_core::frame::{ContextDesc, CountBuffer, Extent, Frame, METHODS, MethodOptions, RgbBuffer, SLOT_WORDS, SlotBuffer, SlotLayout, registry};
+use dof_core::frame::{
+    ContextDesc, CountBuffer, Extent, Frame, METHODS, MethodOptions, RgbBuffer, SLOT_WORDS, SlotBuffer, SlotLayout, registry,
+};
 use dof_core::{ThinLens, shaders};
 
 /// The frame: 64x64 pixels, up to 2 fragments each.
@@ -54,7 +56,8 @@ fn mean(rgb: &[[f32; 3]]) -> [f64; 3] {
 fn run(cpu: &mut CpuBackend, method: &str, lens: ThinLens, [fragments, counts, out]: [BufferId; 3]) -> dof_core::Result<Vec<[f32; 3]>> {
     let desc = ContextDesc::new(Extent::new(W, H, LAYERS), MethodOptions::default());
     let mut ctx = registry::create(cpu, registry::method(method)?, &desc)?;
-    ctx.record(cpu, &Frame::layers(W, H, LAYERS, lens, SlotBuffer(fragments, SlotLayout::PremultipliedRgbDepthAlpha), CountBuffer(counts), RgbBuffer(out)))?;
+    let slots = SlotBuffer(fragments, SlotLayout::PremultipliedRgbDepthAlpha);
+    ctx.record(cpu, &Frame::layers(W, H, LAYERS, lens, slots, CountBuffer(counts), RgbBuffer(out)))?;
     cpu.submit()?;
     let words = cpu.read_buffer(out, 0, 3 * (W * H) as u64)?;
     ctx.destroy(cpu);

@@ -198,6 +198,9 @@ impl OptionSpec {
     fn check(&self, method: &str, key: &str, value: &Value) -> Result<Checked> {
         let bad = |what: String| Err(Error::InvalidArgument(format!("option {key} of {method} {what}, got {value}")));
         let unit = if self.unit.is_empty() { String::new() } else { format!(" ({})", self.unit) };
+        // A number bounded above only by the largest float is said as "at least".
+        let range =
+            |min: f32, max: f32| if max == f32::MAX { format!("finite and at least {min}") } else { format!("between {min} and {max}") };
         match (self.kind, value) {
             (Kind::Count { min, max }, Value::Int(v)) => match u32::try_from(*v) {
                 Ok(v) if (min..=max).contains(&v) => Ok(Checked::Count(v)),
@@ -214,14 +217,14 @@ impl OptionSpec {
                 if f.is_finite() && (min..=max).contains(&f) {
                     Ok(Checked::Number(f))
                 } else {
-                    bad(format!("must lie between {min} and {max}{unit}"))
+                    bad(format!("must be {}{unit}", range(min, max)))
                 }
             }
             (Kind::Number { min, max }, Value::Text(s)) => match s.trim().parse::<f64>() {
                 Ok(v) => self.check(method, key, &Value::Number(v)),
-                Err(_) => bad(format!("is a number between {min} and {max}{unit}")),
+                Err(_) => bad(format!("is a number {}{unit}", range(min, max))),
             },
-            (Kind::Number { min, max }, _) => bad(format!("is a number between {min} and {max}{unit}")),
+            (Kind::Number { min, max }, _) => bad(format!("is a number {}{unit}", range(min, max))),
             (Kind::Flag, Value::Flag(v)) => Ok(Checked::Flag(*v)),
             (Kind::Flag, Value::Text(s)) if s == "true" || s == "false" => Ok(Checked::Flag(s == "true")),
             (Kind::Flag, _) => bad("is true or false".into()),

@@ -372,7 +372,7 @@ impl Measured {
         bytes: u64,
         report: &ContextReport,
     ) -> Self {
-        let figure = |name: &str| report.figures().get(name).copied().unwrap_or(0.0) as u64;
+        let figure = |name: &str| report.figure(name).unwrap_or(0.0) as u64;
         let peel_ms = stages.iter().filter(|(l, _)| l.starts_with("peel/")).map(|(_, ms)| ms).sum();
         Measured {
             counters,

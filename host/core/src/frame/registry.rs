@@ -113,11 +113,6 @@ pub struct Sweep {
     pub timed: Option<usize>,
 }
 
-impl Sweep {
-    /// The method's defaults, once, and out of the max-CoC sweep.
-    pub const DEFAULTS: Sweep = Sweep { points: &[""], full: &[0], quick: &[0], timed: None };
-}
-
 /// What the suites hold a method to (`tests/tests/oracles.rs` states the reasons).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tolerances {

@@ -3,14 +3,8 @@
 
 use crate::error::{Error, Result};
 
-/// The memory the machine has free for new allocations (`MemAvailable` of `/proc/meminfo`), where
-/// the system says; `None` elsewhere.
-pub fn available() -> Option<u64> {
-    let info = std::fs::read_to_string("/proc/meminfo").ok()?;
-    let line = info.lines().find(|l| l.starts_with("MemAvailable:"))?;
-    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
-    kib.checked_mul(1024)
-}
+/// The memory the machine has free for new allocations, where the system says; `None` elsewhere.
+pub use dof_core::host_memory::available;
 
 /// Refuses `what`, which needs about `needed` bytes, where that is more than `free` (where the
 /// system says: `None` skips the check).

@@ -13,6 +13,7 @@
 //!   `rebuild-spirv` feature), and the hash of the kernel sources they were built from;
 //! - [`kernel_shape`]: the GPU shape of each embedded kernel, read from its SPIR-V (per-invocation
 //!   arrays, workgroup memory, barriers, divisions, subgroup operations), with no GPU;
+//! - [`host_memory`]: the machine's memory, installed and free, against which sizes are refused;
 //! - [`error`]: the errors of every call.
 //!
 //! It depends on nothing of the project but the kernels. Multi-layer images, scenes and their
@@ -32,6 +33,7 @@ pub mod backend;
 pub mod error;
 mod extent;
 pub mod frame;
+pub mod host_memory;
 pub mod kernel_shape;
 pub mod lens;
 pub mod ops;

@@ -390,9 +390,13 @@ impl Backend for CpuBackend {
     }
 }
 
-/// A buffer of `words` zeroed words, or `None` where the machine refuses the allocation (an error
-/// for the caller, not an abort). Zeroed by the allocator, so pages never written cost nothing.
+/// A buffer of `words` zeroed words, or `None` where it is larger than all the machine's memory or
+/// the allocator refuses it (an error for the caller, not an abort). Zeroed by the allocator, so
+/// pages never written cost nothing.
 fn zeroed_words(words: u64) -> Option<Box<[AtomicU32]>> {
+    if crate::host_memory::installed().is_some_and(|bytes| words.saturating_mul(4) > bytes) {
+        return None;
+    }
     let n = usize::try_from(words).ok()?;
     let layout = std::alloc::Layout::array::<AtomicU32>(n).ok()?;
     if layout.size() == 0 {

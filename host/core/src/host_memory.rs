@@ -1,0 +1,37 @@
+//! What the machine's memory holds, where the system says (`/proc/meminfo` on Linux; `None`
+//! elsewhere): sizes from input are refused against these before anything is allocated.
+
+use std::sync::OnceLock;
+
+/// One `/proc/meminfo` field (given in KiB there), in bytes.
+fn meminfo_bytes(key: &str) -> Option<u64> {
+    let info = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = info.lines().find(|l| l.split(':').next() == Some(key))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    kib.checked_mul(1024)
+}
+
+/// The memory free for new allocations now (`MemAvailable`).
+pub fn available() -> Option<u64> {
+    meminfo_bytes("MemAvailable")
+}
+
+/// All the memory the machine has, RAM and swap: no allocation larger can ever be backed. It is
+/// checked before allocating because an overcommitting kernel grants such an allocation and then
+/// kills the process when its pages are first touched.
+pub fn installed() -> Option<u64> {
+    static INSTALLED: OnceLock<Option<u64>> = OnceLock::new();
+    *INSTALLED.get_or_init(|| meminfo_bytes("MemTotal")?.checked_add(meminfo_bytes("SwapTotal").unwrap_or(0)))
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_system_says_on_linux() {
+        if cfg!(target_os = "linux") {
+            let (free, all) = (super::available(), super::installed());
+            assert!(free.is_some_and(|f| f > 0) && all.is_some_and(|a| a >= free.unwrap_or(0)), "{free:?} {all:?}");
+        }
+        assert_eq!(super::meminfo_bytes("NoSuchField"), None);
+    }
+}

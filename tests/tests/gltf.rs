@@ -724,11 +724,11 @@ fn png_header_only(width: u32, height: u32) -> Vec<u8> {
 #[test]
 fn a_texture_beyond_the_budget_is_refused_before_decoding() {
     let (mut doc, bin) = split_glb(&export_builtin_glb("railing", W, H).unwrap());
-    doc["images"][0] = json!({ "uri": format!("data:image/png;base64,{}", base64(&png_header_only(8192, 8192))) });
-    let err = load_gltf_slice(&join_glb(&doc, &bin)).expect_err("an 8192x8192 texture is beyond 2^24 texels");
+    doc["images"][0] = json!({ "uri": format!("data:image/png;base64,{}", base64(&png_header_only(16384, 16384))) });
+    let err = load_gltf_slice(&join_glb(&doc, &bin)).expect_err("a 16384x16384 texture is beyond 2^27 texels");
     let text = err.to_string();
     assert!(matches!(err, dof::Error::Core(CoreError::TooLarge { .. })), "{text}");
-    assert!(text.contains("8192x8192") && text.contains("scale the textures down"), "{text}");
+    assert!(text.contains("16384x16384") && text.contains("scale the textures down"), "{text}");
 }
 
 /// `KHR_texture_transform` and `TEXCOORD_1`: a material's texture reading set 1 through an offset,

@@ -428,3 +428,78 @@ fn graphics_draws_agree_with_the_cpu_except_on_exact_depth_ties() {
     assert_clean(&mut compute);
     assert!(exact.image.layers == cpu.image.layers, "compute draws on Vulkan differ from the CPU rasteriser");
 }
+
+/// An `n` x `n` checker of single texels, 0 and 1.
+fn checker(n: u32) -> Vec<[f32; 4]> {
+    (0..n * n)
+        .map(|i| {
+            let v = ((i % n + i / n) % 2) as f32;
+            [v, v, v, 1.0]
+        })
+        .collect()
+}
+
+/// A minified texture is filtered over each pixel's footprint: a checker of single texels many
+/// to a pixel reads as its mean, seen face on (isotropic) and on a floor running to the horizon
+/// (anisotropic), on the CPU and on Vulkan. Point-sampled, it would alias to anything from 0 to 1.
+#[test]
+fn minified_textures_read_as_the_mean_of_their_footprint() {
+    let one_sample = LayerOptions { subsamples: 1, ..all_layers() };
+    let mut backends: Vec<(&str, Box<dyn dof::backend::Backend>)> = vec![("cpu", Box::new(CpuBackend::new()))];
+    if let Some(vk) = vulkan() {
+        backends.push(("vulkan", Box::new(vk)));
+    }
+    for (floor, n) in [(false, 256), (true, 1024)] {
+        let mut m = MeshScene::default();
+        m.texels = checker(n);
+        m.textures = vec![TextureInfo { offset: 0, width: n, height: n, sampler: 0 }];
+        let mat = m.material(MeshMaterial { base_texture: 0, flags: UNLIT | DOUBLE_SIDED, ..unlit([1.0; 3]) });
+        if floor {
+            // 1 below the eye, from 1.5 to 31.5 away: 1.5 to 6 texels a pixel across it, more along it.
+            m.quad(Vec3::new(-4.0, -1.0, -1.5), Vec3::new(8.0, 0.0, 0.0), Vec3::new(0.0, 0.0, -30.0), mat);
+        } else {
+            // About 35 pixels across: 7.3 texels a pixel.
+            m.facing(0.0, 0.0, 2.0, 0.4, mat);
+        }
+        for (name, backend) in backends.iter_mut() {
+            let out = peel_layers(backend.as_mut(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &one_sample).unwrap();
+            let (image, depth) = out.image.layers.front();
+            let mut checked = 0;
+            for y in 1..H - 1 {
+                for x in 1..W - 1 {
+                    // Pixels whose neighbours are all on the surface (no edge), at least 4 texels a
+                    // pixel on the floor (from 4 away, short of its far edge).
+                    let inside = (0..9).all(|k| depth[((y + k / 3 - 1) * W + x + k % 3 - 1) as usize].is_finite());
+                    let d = depth[(y * W + x) as usize];
+                    if !inside || (floor && !(4.0..25.0).contains(&d)) {
+                        continue;
+                    }
+                    let v = image.get(x, y);
+                    assert!(v.iter().all(|c| (c - 0.5).abs() < 0.01), "{name}, floor {floor}: ({x}, {y}) at depth {d} reads {v:?}");
+                    checked += 1;
+                }
+            }
+            assert!(checked > if floor { 1000 } else { 700 }, "{name}, floor {floor}: {checked} pixels checked");
+        }
+    }
+}
+
+/// Magnified, a texture reads as its texels, nearest or bilinear as its sampler says.
+#[test]
+fn magnified_textures_keep_their_texels() {
+    let one_sample = LayerOptions { subsamples: 1, ..all_layers() };
+    for (sampler, expect_between) in [(NEAREST, false), (0, true)] {
+        let mut m = MeshScene::default();
+        m.texels = checker(2);
+        m.textures = vec![TextureInfo { offset: 0, width: 2, height: 2, sampler }];
+        let mat = m.material(MeshMaterial { base_texture: 0, flags: UNLIT, ..unlit([1.0; 3]) });
+        m.facing(0.0, 0.0, 2.0, 0.4, mat);
+        let out = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &one_sample).unwrap();
+        let (image, depth) = out.image.layers.front();
+        let values: Vec<f32> = (0..W * H).filter(|&p| depth[p as usize].is_finite()).map(|p| image.get(p % W, p / W)[0]).collect();
+        let between = values.iter().filter(|&&v| v > 0.01 && v < 0.99).count();
+        let (lo, hi) = values.iter().fold((1.0f32, 0.0f32), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+        assert!(values.len() > 1000 && lo < 0.05 && hi > 0.95, "{} pixels from {lo} to {hi}", values.len());
+        assert_eq!(between > 100, expect_between, "sampler {sampler}: {between} of {} pixels between the texels", values.len());
+    }
+}

@@ -131,7 +131,7 @@ impl crate::scene::MeshScene {
 }
 
 /// The mesh's buffers on a backend: vertices, triangles, materials, textures, texels (the draw's
-/// bindings 0-4). Free them with [`DeviceMesh::destroy`].
+/// bindings 0-4; the textures with their mip chains, [`super::mipmap`]). Free them with [`DeviceMesh::destroy`].
 pub struct DeviceMesh {
     pub buffers: [BufferId; 5],
     pub triangles: u32,
@@ -143,12 +143,13 @@ impl DeviceMesh {
     /// Validates and uploads `scene`. Empty tables get one unused entry (buffers cannot be empty).
     pub fn upload(backend: &mut dyn Backend, scene: &RasterScene) -> Result<Self> {
         scene.validate()?;
+        let (textures, texels) = super::mipmap::sampled_textures(scene.textures, scene.texels);
         let words: [Vec<u32>; 5] = [
             bytemuck::cast_slice(scene.vertices).to_vec(),
             bytemuck::cast_slice(scene.triangles).to_vec(),
             bytemuck::cast_slice(scene.materials).to_vec(),
-            bytemuck::cast_slice(scene.textures).to_vec(),
-            bytemuck::cast_slice(scene.texels).to_vec(),
+            bytemuck::cast_slice(&textures).to_vec(),
+            texels,
         ];
         let labels = ["mesh/vertices", "mesh/triangles", "mesh/materials", "mesh/textures", "mesh/texels"];
         let mut buffers = Vec::with_capacity(5);

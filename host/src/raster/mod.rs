@@ -3,6 +3,7 @@
 //! `dof_shaders::raster`).
 //!
 //! - [`mesh`]: the mesh as the rasteriser takes it, and its upload;
+//! - [`mipmap`]: its textures as the shading samples them (mip chains of half floats);
 //! - [`view`]: the clip transform for a pinhole or for one lens point (sheared frustum);
 //! - [`peel`]: depth peeling with the umbra threshold, then the disocclusion buffer (the host
 //!   oracle, reading each pass back);
@@ -14,6 +15,7 @@
 
 pub mod accumulate;
 pub mod mesh;
+pub mod mipmap;
 pub mod peel;
 pub mod peel_context;
 pub mod view;

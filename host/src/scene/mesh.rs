@@ -22,8 +22,10 @@ use crate::error::{CoreError, Error, Result};
 /// Most triangles a mesh may have: the rasteriser's visibility buffer stores `triangle + 1` as an
 /// exact f32.
 pub const MAX_TRIANGLES: u64 = 1 << 24;
-/// Most texels all textures together may hold (2^24, 256 MiB of linear RGBA f32).
-pub const MAX_TEXELS: u64 = 1 << 24;
+/// Most texels all textures together may hold: 2^27 (134 M; Crytek Sponza has about 71 M). Each
+/// costs 16 bytes as loaded (linear RGBA f32) and about 10.7 on the device (half floats, 8 bytes,
+/// with a third more for the mip chain): 2 GiB and 1.3 GiB at the limit.
+pub const MAX_TEXELS: u64 = 1 << 27;
 
 /// A triangle scene in world space (the default is empty, with the default light).
 #[derive(Clone, Debug, Default, PartialEq)]

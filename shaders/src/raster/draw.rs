@@ -13,7 +13,7 @@
 
 use super::mesh::{ALPHA_BLEND, ALPHA_MASK, MATERIAL_WORDS, VERTEX_WORDS};
 use super::project::{RasterParams, clip, cover, edges, fetch, pixel_ndc, triangle};
-use super::texture::{load_f32, sample};
+use super::texture::{UvFootprint, load_f32, sample};
 use crate::exec::{Group, Load, Mem};
 use crate::math::{ceil, floor};
 use crate::wg::for_each_item;
@@ -37,11 +37,12 @@ pub fn interpolate_uv(vertices: &impl Load, tri: [u32; 4], b0: f32, b1: f32) -> 
     (u, v)
 }
 
-/// The material's coverage at a point: base alpha times the base texture's alpha.
+/// The material's coverage at a point: base alpha times the base texture's alpha, read at the
+/// finest level (the alpha test keeps cut-outs as sharp at a distance as near).
 pub fn coverage(p: &RasterParams, material: u32, uv: (f32, f32), materials: &impl Load, textures: &impl Load, texels: &impl Load) -> f32 {
     let at = material * MATERIAL_WORDS;
     let base_texture = materials.load(at + 8);
-    load_f32(materials, at + 3) * sample(textures, texels, p.textures, base_texture, uv.0, uv.1)[3]
+    load_f32(materials, at + 3) * sample(textures, texels, p.textures, base_texture, uv.0, uv.1, UvFootprint::POINT)[3]
 }
 
 /// Whether a fragment of triangle `t` at planar depth `depth` is kept (module docs).

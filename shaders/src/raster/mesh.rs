@@ -4,8 +4,9 @@
 //! - vertices: [`MeshVertex`], world space, 8 words;
 //! - triangles: `[i0, i1, i2, material]`, 4 words;
 //! - materials: [`MeshMaterial`], 16 words;
-//! - textures: [`TextureInfo`], 4 words; texels: linear RGBA f32, 4 words each, row-major, top row
-//!   first (glTF's UV origin is the top left corner).
+//! - textures: [`TextureInfo`], 4 words; texels: linear RGBA half floats, [`TEXEL_WORDS`] words
+//!   each, row-major, top row first (glTF's UV origin is the top left corner), every texture
+//!   followed by its mip chain ([`super::texture`]).
 //!
 //! Lighting model (the analytic scenes' one, so an exported analytic scene renders the same): a lit
 //! surface with base colour `a` and unit normal `n` turned to face the viewer has radiance
@@ -18,7 +19,7 @@ pub const VERTEX_WORDS: u32 = 8;
 pub const TRIANGLE_WORDS: u32 = 4;
 pub const MATERIAL_WORDS: u32 = 16;
 pub const TEXTURE_WORDS: u32 = 4;
-pub const TEXEL_WORDS: u32 = 4;
+pub const TEXEL_WORDS: u32 = 2;
 /// "No texture" in [`MeshMaterial::base_texture`] and [`MeshMaterial::emissive_texture`].
 pub const NO_TEXTURE: u32 = u32::MAX;
 
@@ -39,6 +40,9 @@ pub const WRAP_CLAMP: u32 = 1;
 pub const WRAP_MIRROR: u32 = 2;
 pub const WRAP_S_SHIFT: u32 = 1;
 pub const WRAP_T_SHIFT: u32 = 3;
+/// [`TextureInfo::sampler`]: the number of mip levels (0 reads as 1), five bits at bit 8.
+pub const LEVELS_SHIFT: u32 = 8;
+pub const LEVELS_MASK: u32 = 0x1f;
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
@@ -87,7 +91,7 @@ pub struct TextureInfo {
     pub offset: u32,
     pub width: u32,
     pub height: u32,
-    /// [`NEAREST`] and the wrap modes.
+    /// [`NEAREST`], the wrap modes and the mip levels ([`LEVELS_SHIFT`]).
     pub sampler: u32,
 }
 

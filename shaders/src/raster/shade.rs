@@ -15,10 +15,10 @@
 use super::draw::{VIS_WORDS, interpolate_uv};
 use super::mesh::{ALPHA_BLEND, Light, MATERIAL_WORDS, UNLIT, VERTEX_WORDS};
 use super::project::{cross, dot, sub, triangle, vertex_position};
-use super::texture::{load_f32, sample};
+use super::texture::{UvFootprint, load_f32, sample};
 use crate::exec::{Group, Load, Mem};
 use crate::lens::ThinLens;
-use crate::math::sqrt;
+use crate::math::{absf, sqrt};
 use crate::peel::{background_seen, next_reach};
 use crate::wg::for_each_item;
 
@@ -51,7 +51,56 @@ fn normalize(v: [f32; 3]) -> [f32; 3] {
     if l > 0.0 { [v[0] / l, v[1] / l, v[2] / l] } else { v }
 }
 
-/// Radiance and coverage of triangle `t` at barycentrics `(b0, b1)` seen from `eye`.
+/// How a pixel `width` across at `position`, square to the ray from `eye`, maps into the texture
+/// coordinates of the triangle with corners `v` and coordinates `uv`: the pixel's two axes
+/// carried along the ray onto the triangle's plane (a ray differential, Igehy 1999), in the
+/// triangle's barycentric frame, then into `(u, v)`.
+fn uv_footprint(eye: [f32; 3], position: [f32; 3], v: [[f32; 3]; 3], uv: [(f32, f32); 3], width: f32) -> UvFootprint {
+    let d = normalize(sub(position, eye));
+    let (e1, e2) = (sub(v[1], v[0]), sub(v[2], v[0]));
+    let n = cross(e1, e2);
+    let (g11, g12, g22) = (dot(e1, e1), dot(e1, e2), dot(e2, e2));
+    let gram = g11 * g22 - g12 * g12;
+    if !(gram > 0.0) || !(width > 0.0) {
+        return UvFootprint::POINT;
+    }
+    // Two unit axes square to the ray (the branchless basis of Duff et al. 2017).
+    let sign = if d[2] >= 0.0 { 1.0 } else { -1.0 };
+    let k = -1.0 / (sign + d[2]);
+    let m = d[0] * d[1] * k;
+    let axis_a = [1.0 + sign * d[0] * d[0] * k, sign * m, -sign * d[0]];
+    let axis_b = [m, sign + d[1] * d[1] * k, -d[1]];
+    // Seen nearly edge-on the footprint stretches; at most a thousandfold.
+    let dn = dot(d, n);
+    let floor_dn = 1e-3 * sqrt(dot(n, n));
+    let dn = if absf(dn) >= floor_dn {
+        dn
+    } else if dn < 0.0 {
+        -floor_dn
+    } else {
+        floor_dn
+    };
+    let (du1, dv1, du2, dv2) = (uv[1].0 - uv[0].0, uv[1].1 - uv[0].1, uv[2].0 - uv[0].0, uv[2].1 - uv[0].1);
+    let to_uv = |axis: [f32; 3]| {
+        let along = dot(axis, n) / dn;
+        let step = [width * (axis[0] - d[0] * along), width * (axis[1] - d[1] * along), width * (axis[2] - d[2] * along)];
+        let (r1, r2) = (dot(step, e1), dot(step, e2));
+        let (alpha, beta) = ((r1 * g22 - r2 * g12) / gram, (r2 * g11 - r1 * g12) / gram);
+        (alpha * du1 + beta * du2, alpha * dv1 + beta * dv2)
+    };
+    let (du_a, dv_a) = to_uv(axis_a);
+    let (du_b, dv_b) = to_uv(axis_b);
+    UvFootprint { du_a, dv_a, du_b, dv_b }
+}
+
+/// The texture coordinates of each corner of triangle `tri`.
+fn corner_uvs(vertices: &impl Load, tri: [u32; 4]) -> [(f32, f32); 3] {
+    let uv = |k: u32| (load_f32(vertices, k * VERTEX_WORDS + 3), load_f32(vertices, k * VERTEX_WORDS + 7));
+    [uv(tri[0]), uv(tri[1]), uv(tri[2])]
+}
+
+/// Radiance and coverage of triangle `t` at barycentrics `(b0, b1)` seen from `eye`, its textures
+/// filtered over a pixel `pixel_width` across there (0: read at their finest level).
 #[allow(clippy::too_many_arguments)]
 pub fn shade_point(
     light: &Light,
@@ -60,6 +109,7 @@ pub fn shade_point(
     t: u32,
     b0: f32,
     b1: f32,
+    pixel_width: f32,
     vertices: &impl Load,
     triangles: &impl Load,
     materials: &impl Load,
@@ -90,8 +140,14 @@ pub fn shade_point(
     }
     let uv = interpolate_uv(vertices, tri, b0, b1);
     let at = tri[3] * MATERIAL_WORDS;
-    let base_tex = sample(textures, texels, texture_count, materials.load(at + 8), uv.0, uv.1);
-    let emit_tex = sample(textures, texels, texture_count, materials.load(at + 9), uv.0, uv.1);
+    let (base_index, emit_index) = (materials.load(at + 8), materials.load(at + 9));
+    let footprint = if base_index < texture_count || emit_index < texture_count {
+        uv_footprint(eye, position, v, corner_uvs(vertices, tri), pixel_width)
+    } else {
+        UvFootprint::POINT
+    };
+    let base_tex = sample(textures, texels, texture_count, base_index, uv.0, uv.1, footprint);
+    let emit_tex = sample(textures, texels, texture_count, emit_index, uv.0, uv.1, footprint);
     let flags = materials.load(at + 10);
     let lambert = dot(n, light.direction).max(0.0);
     let mut rgb = [0.0; 3];
@@ -125,9 +181,24 @@ pub fn shade_pass<G: Group, R: Load, M: Mem>(
         let found = id > 0;
         let (rgb, alpha, depth) = if found {
             let (b0, b1) = (f32::from_bits(vis.load(at + 2)), f32::from_bits(vis.load(at + 3)));
-            let (rgb, alpha) =
-                shade_point(&p.light, p.eye, p.textures, id - 1, b0, b1, &vertices, &triangles, &materials, &textures, &texels);
-            (rgb, alpha, f32::from_bits(vis.load(at + 1)))
+            let depth = f32::from_bits(vis.load(at + 1));
+            // The pixel is `2 · footprint_per_depth` scene units across per unit of planar depth.
+            let pixel_width = 2.0 * p.footprint_per_depth * depth;
+            let (rgb, alpha) = shade_point(
+                &p.light,
+                p.eye,
+                p.textures,
+                id - 1,
+                b0,
+                b1,
+                pixel_width,
+                &vertices,
+                &triangles,
+                &materials,
+                &textures,
+                &texels,
+            );
+            (rgb, alpha, depth)
         } else if p.mode == ACCUMULATE || background_seen(f32::from_bits(reach.load(pi))) {
             (p.light.background, 1.0, f32::INFINITY)
         } else {

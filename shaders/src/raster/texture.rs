@@ -1,14 +1,100 @@
-//! Texture lookups for the mesh shading: one texel buffer holds every texture (linear RGBA), each
-//! described by a [`TextureInfo`]. Magnification is nearest or bilinear as the sampler says; there
-//! are no mipmaps (minified textures alias, as in a renderer without them).
+//! Texture lookups for the mesh shading. One texel buffer holds every texture with its mip chain
+//! (linear RGBA as half floats, [`TEXEL_WORDS`] words a texel: `r | g << 16`, `b | a << 16`), each
+//! described by a [`TextureInfo`]; level `l` is `max(1, width >> l)` by `max(1, height >> l)`
+//! texels, right after level `l - 1`, each texel the area average of the level above it.
+//!
+//! A lookup filters over the pixel's footprint ([`UvFootprint`]): where the footprint covers less
+//! than a texel, the finest level, bilinear (or nearest, as the sampler says); where it covers
+//! more, anisotropic trilinear filtering: up to [`MAX_ANISOTROPY`] probes spaced along the
+//! footprint's major axis, each interpolated between the two levels whose texels match the
+//! footprint's width across that axis (the scheme of EXT_texture_filter_anisotropic, with the
+//! axes of the footprint's ellipse rather than its two derivatives, so the result does not turn
+//! with the screen). Every step is arithmetic and bit operations, the same on both targets.
 
-use super::mesh::{NEAREST, NO_TEXTURE, TEXEL_WORDS, TEXTURE_WORDS, WRAP_CLAMP, WRAP_MIRROR, WRAP_S_SHIFT, WRAP_T_SHIFT};
+use super::mesh::{
+    LEVELS_MASK, LEVELS_SHIFT, NEAREST, NO_TEXTURE, TEXEL_WORDS, TEXTURE_WORDS, WRAP_CLAMP, WRAP_MIRROR, WRAP_S_SHIFT, WRAP_T_SHIFT,
+};
 use crate::exec::Load;
-use crate::math::floor;
+use crate::math::{absf, ceil, floor, maxf, sqrt};
+
+/// Most probes a lookup takes along its footprint's major axis.
+pub const MAX_ANISOTROPY: u32 = 8;
 
 #[inline]
 pub fn load_f32(m: &impl Load, i: u32) -> f32 {
     f32::from_bits(m.load(i))
+}
+
+/// The half float in the low 16 bits of `h`, exactly (every half is an f32).
+#[inline]
+pub fn half_to_f32(h: u32) -> f32 {
+    let sign = if h & 0x8000 != 0 { -1.0 } else { 1.0 };
+    let exponent = (h >> 10) & 0x1f;
+    let mantissa = h & 0x3ff;
+    if exponent == 0 {
+        // Zero or subnormal: mantissa · 2^-24, a product of exact values.
+        return sign * mantissa as f32 * (1.0 / 16_777_216.0);
+    }
+    let bits = if exponent == 0x1f { 0x7f80_0000 | (mantissa << 13) } else { ((exponent + 112) << 23) | (mantissa << 13) };
+    sign * f32::from_bits(bits)
+}
+
+/// `log2(x)` for finite `x >= 1`, within 0.0011: the exponent from the bits plus a cubic in the
+/// mantissa that is exact at both ends (a level of detail needs no more).
+#[inline]
+pub fn log2_level(x: f32) -> f32 {
+    let bits = x.to_bits();
+    let exponent = ((bits >> 23) & 0xff) as i32 - 127;
+    let m = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000) - 1.0;
+    exponent as f32 + m * (1.420_864_5 + m * (-0.577_250_6 + m * 0.156_386_1))
+}
+
+/// A linear RGBA value.
+#[derive(Clone, Copy, Default)]
+pub struct Rgba {
+    pub r: f32,
+    pub g: f32,
+    pub b: f32,
+    pub a: f32,
+}
+
+impl Rgba {
+    pub const WHITE: Rgba = Rgba { r: 1.0, g: 1.0, b: 1.0, a: 1.0 };
+
+    /// `self + (other - self) · t`.
+    #[inline]
+    fn lerp(self, other: Rgba, t: f32) -> Rgba {
+        Rgba {
+            r: self.r + (other.r - self.r) * t,
+            g: self.g + (other.g - self.g) * t,
+            b: self.b + (other.b - self.b) * t,
+            a: self.a + (other.a - self.a) * t,
+        }
+    }
+
+    #[inline]
+    fn add(self, other: Rgba) -> Rgba {
+        Rgba { r: self.r + other.r, g: self.g + other.g, b: self.b + other.b, a: self.a + other.a }
+    }
+
+    #[inline]
+    fn scale(self, s: f32) -> Rgba {
+        Rgba { r: self.r * s, g: self.g * s, b: self.b * s, a: self.a * s }
+    }
+}
+
+/// How a pixel's footprint maps into texture coordinates: the change of `(u, v)` across the pixel
+/// along two perpendicular axes, `a` and `b`. [`UvFootprint::POINT`] reads the finest level.
+#[derive(Clone, Copy, Default)]
+pub struct UvFootprint {
+    pub du_a: f32,
+    pub dv_a: f32,
+    pub du_b: f32,
+    pub dv_b: f32,
+}
+
+impl UvFootprint {
+    pub const POINT: UvFootprint = UvFootprint { du_a: 0.0, dv_a: 0.0, du_b: 0.0, dv_b: 0.0 };
 }
 
 /// Texel index along one axis of `size` texels for the integer coordinate `i` under `wrap`.
@@ -33,53 +119,165 @@ fn wrap_index(i: i32, size: u32, wrap: u32) -> u32 {
     r as u32
 }
 
-#[inline]
-fn texel(texels: &impl Load, offset: u32, width: u32, x: u32, y: u32) -> [f32; 4] {
-    let at = (offset + y * width + x) * TEXEL_WORDS;
-    [load_f32(texels, at), load_f32(texels, at + 1), load_f32(texels, at + 2), load_f32(texels, at + 3)]
+/// One level of a texture: its first texel, its size and the sampler's wrap modes.
+#[derive(Clone, Copy)]
+struct Level {
+    offset: u32,
+    width: u32,
+    height: u32,
+    wrap_s: u32,
+    wrap_t: u32,
 }
 
-/// Texture `index` at `(u, v)` (glTF UVs: origin at the top left); white for [`NO_TEXTURE`] or an
-/// index past the table, so a factor times a missing texture is the factor.
-pub fn sample(textures: &impl Load, texels: &impl Load, texture_count: u32, index: u32, u: f32, v: f32) -> [f32; 4] {
+impl Level {
+    /// Level `l` of the texture whose finest level is `base`.
+    fn of(base: Level, l: u32) -> Level {
+        let mut level = base;
+        let mut k = 0;
+        while k < l {
+            level.offset += level.width * level.height;
+            level.width = if level.width > 1 { level.width >> 1 } else { 1 };
+            level.height = if level.height > 1 { level.height >> 1 } else { 1 };
+            k += 1;
+        }
+        level
+    }
+
+    #[inline]
+    fn texel(&self, texels: &impl Load, x: u32, y: u32) -> Rgba {
+        let at = (self.offset + y * self.width + x) * TEXEL_WORDS;
+        let (rg, ba) = (texels.load(at), texels.load(at + 1));
+        Rgba { r: half_to_f32(rg & 0xffff), g: half_to_f32(rg >> 16), b: half_to_f32(ba & 0xffff), a: half_to_f32(ba >> 16) }
+    }
+
+    fn nearest(&self, texels: &impl Load, u: f32, v: f32) -> Rgba {
+        let x = wrap_index(floor(u * self.width as f32) as i32, self.width, self.wrap_s);
+        let y = wrap_index(floor(v * self.height as f32) as i32, self.height, self.wrap_t);
+        self.texel(texels, x, y)
+    }
+
+    /// Bilinear between the four texel centres around `(u, v)`.
+    fn bilinear(&self, texels: &impl Load, u: f32, v: f32) -> Rgba {
+        let (fx, fy) = (u * self.width as f32 - 0.5, v * self.height as f32 - 0.5);
+        let (x0, y0) = (floor(fx), floor(fy));
+        let (ax, ay) = (fx - x0, fy - y0);
+        let (x0, y0) = (x0 as i32, y0 as i32);
+        let xa = wrap_index(x0, self.width, self.wrap_s);
+        let xb = wrap_index(x0 + 1, self.width, self.wrap_s);
+        let ya = wrap_index(y0, self.height, self.wrap_t);
+        let yb = wrap_index(y0 + 1, self.height, self.wrap_t);
+        let top = self.texel(texels, xa, ya).lerp(self.texel(texels, xb, ya), ax);
+        let bottom = self.texel(texels, xa, yb).lerp(self.texel(texels, xb, yb), ax);
+        top.lerp(bottom, ay)
+    }
+}
+
+/// Texture `index` at `(u, v)` (glTF UVs: origin at the top left) filtered over `footprint`;
+/// white for [`NO_TEXTURE`] or an index past the table, so a factor times a missing texture is
+/// the factor.
+pub fn sample(
+    textures: &impl Load,
+    texels: &impl Load,
+    texture_count: u32,
+    index: u32,
+    u: f32,
+    v: f32,
+    footprint: UvFootprint,
+) -> [f32; 4] {
+    let c = filtered(textures, texels, texture_count, index, u, v, footprint);
+    [c.r, c.g, c.b, c.a]
+}
+
+fn filtered(textures: &impl Load, texels: &impl Load, texture_count: u32, index: u32, u: f32, v: f32, f: UvFootprint) -> Rgba {
     if index == NO_TEXTURE || index >= texture_count {
-        return [1.0; 4];
+        return Rgba::WHITE;
     }
     let at = index * TEXTURE_WORDS;
     let (offset, width, height, sampler) = (textures.load(at), textures.load(at + 1), textures.load(at + 2), textures.load(at + 3));
     if width == 0 || height == 0 {
-        return [1.0; 4];
+        return Rgba::WHITE;
     }
-    let wrap_s = (sampler >> WRAP_S_SHIFT) & 3;
-    let wrap_t = (sampler >> WRAP_T_SHIFT) & 3;
+    let levels = (sampler >> LEVELS_SHIFT) & LEVELS_MASK;
+    let levels = if levels == 0 { 1 } else { levels };
+    let base = Level { offset, width, height, wrap_s: (sampler >> WRAP_S_SHIFT) & 3, wrap_t: (sampler >> WRAP_T_SHIFT) & 3 };
     // Non-finite UVs (none reach here from a validated mesh) fall back to the first texel.
-    let (x, y) = (u * width as f32, v * height as f32);
-    let (x, y) = if crate::lens::is_finite(x) && crate::lens::is_finite(y) { (x, y) } else { (0.0, 0.0) };
-    if sampler & NEAREST != 0 {
-        let tx = wrap_index(floor(x) as i32, width, wrap_s);
-        let ty = wrap_index(floor(y) as i32, height, wrap_t);
-        return texel(texels, offset, width, tx, ty);
+    let finite = crate::lens::is_finite(u * width as f32) && crate::lens::is_finite(v * height as f32);
+    let (u, v) = if finite { (u, v) } else { (0.0, 0.0) };
+
+    // The footprint in level-0 texels, and the axes of its ellipse: the singular values of the
+    // 2x2 map from the pixel's axes to texels.
+    let (ax, ay, bx, by) = (f.du_a * width as f32, f.dv_a * height as f32, f.du_b * width as f32, f.dv_b * height as f32);
+    let sum = ax * ax + ay * ay + bx * bx + by * by;
+    let det = absf(ax * by - ay * bx);
+    let major2 = 0.5 * (sum + sqrt(maxf(sum * sum - 4.0 * det * det, 0.0)));
+    let major = sqrt(major2);
+    if !(major > 1.0) || !crate::lens::is_finite(sum) {
+        // Magnified (or no footprint): the finest level, as the sampler says.
+        return if sampler & NEAREST != 0 { base.nearest(texels, u, v) } else { base.bilinear(texels, u, v) };
     }
-    // Bilinear between the four texel centres around (x, y).
-    let (fx, fy) = (x - 0.5, y - 0.5);
-    let (x0, y0) = (floor(fx), floor(fy));
-    let (ax, ay) = (fx - x0, fy - y0);
-    let (x0, y0) = (x0 as i32, y0 as i32);
-    let xa = wrap_index(x0, width, wrap_s);
-    let xb = wrap_index(x0 + 1, width, wrap_s);
-    let ya = wrap_index(y0, height, wrap_t);
-    let yb = wrap_index(y0 + 1, height, wrap_t);
-    let t00 = texel(texels, offset, width, xa, ya);
-    let t10 = texel(texels, offset, width, xb, ya);
-    let t01 = texel(texels, offset, width, xa, yb);
-    let t11 = texel(texels, offset, width, xb, yb);
-    let mut out = [0.0; 4];
-    let mut k = 0;
-    while k < 4 {
-        let top = t00[k] + (t10[k] - t00[k]) * ax;
-        let bottom = t01[k] + (t11[k] - t01[k]) * ax;
-        out[k] = top + (bottom - top) * ay;
-        k += 1;
+    let minor = det / major;
+    let probes = if minor * MAX_ANISOTROPY as f32 <= major { MAX_ANISOTROPY } else { ceil(major / minor) as u32 };
+    let probes = if probes < 1 { 1 } else { probes };
+    let width_across = major / probes as f32;
+    let lod = if width_across > 1.0 { log2_level(width_across) } else { 0.0 };
+    let top = levels - 1;
+    let fine = floor(lod) as u32;
+    let (fine, blend) = if fine >= top { (top, 0.0) } else { (fine, lod - fine as f32) };
+    let (level0, level1) = (Level::of(base, fine), Level::of(base, if fine < top { fine + 1 } else { top }));
+
+    // The major axis: the eigenvector of J·Jᵀ = [[p, q], [q, r]] for the eigenvalue `major2`.
+    let (p, q, r) = (ax * ax + bx * bx, ax * ay + bx * by, ay * ay + by * by);
+    let (e0, e1) = ((q, major2 - p), (major2 - r, q));
+    let (ex, ey) = if e0.0 * e0.0 + e0.1 * e0.1 >= e1.0 * e1.0 + e1.1 * e1.1 { e0 } else { e1 };
+    let len = sqrt(ex * ex + ey * ey);
+    let (ex, ey) = if len > 0.0 { (ex / len, ey / len) } else { (1.0, 0.0) };
+    // Its extent in (u, v).
+    let (mu, mv) = (ex * major / width as f32, ey * major / height as f32);
+
+    let mut sum_probes = Rgba::default();
+    let mut i = 0;
+    while i < probes {
+        let t = (i as f32 + 0.5) / probes as f32 - 0.5;
+        let (pu, pv) = (u + t * mu, v + t * mv);
+        let c = level0.bilinear(texels, pu, pv);
+        let c = if blend > 0.0 { c.lerp(level1.bilinear(texels, pu, pv), blend) } else { c };
+        sum_probes = sum_probes.add(c);
+        i += 1;
     }
-    out
+    sum_probes.scale(1.0 / probes as f32)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn halves_decode_exactly() {
+        for (h, f) in [
+            (0x0000u32, 0.0f32),
+            (0x3c00, 1.0),
+            (0xc000, -2.0),
+            (0x3555, 0.333_251_95),
+            (0x7bff, 65504.0),
+            (0x0001, 5.960_464_5e-8),
+            (0x03ff, 6.097_555e-5),
+            (0x7c00, f32::INFINITY),
+        ] {
+            assert_eq!(half_to_f32(h), f, "{h:#x}");
+        }
+        assert!(half_to_f32(0x7e00).is_nan());
+        assert_eq!(half_to_f32(0x8000).to_bits(), (-0.0f32).to_bits());
+    }
+
+    #[test]
+    fn the_level_of_detail_is_log2_within_a_thousandth() {
+        let mut x = 1.0f32;
+        while x < 1e6 {
+            assert!((log2_level(x) - x.log2()).abs() < 0.0011, "{x}");
+            x *= 1.013;
+        }
+        for k in 0..20 {
+            assert_eq!(log2_level((1u32 << k) as f32), k as f32);
+        }
+    }
 }

@@ -450,9 +450,11 @@ fn minified_textures_read_as_the_mean_of_their_footprint() {
         backends.push(("vulkan", Box::new(vk)));
     }
     for (floor, n) in [(false, 256), (true, 1024)] {
-        let mut m = MeshScene::default();
-        m.texels = checker(n);
-        m.textures = vec![TextureInfo { offset: 0, width: n, height: n, sampler: 0 }];
+        let mut m = MeshScene {
+            texels: checker(n),
+            textures: vec![TextureInfo { offset: 0, width: n, height: n, sampler: 0 }],
+            ..MeshScene::default()
+        };
         let mat = m.material(MeshMaterial { base_texture: 0, flags: UNLIT | DOUBLE_SIDED, ..unlit([1.0; 3]) });
         if floor {
             // 1 below the eye, from 1.5 to 31.5 away: 1.5 to 6 texels a pixel across it, more along it.
@@ -489,9 +491,11 @@ fn minified_textures_read_as_the_mean_of_their_footprint() {
 fn magnified_textures_keep_their_texels() {
     let one_sample = LayerOptions { subsamples: 1, ..all_layers() };
     for (sampler, expect_between) in [(NEAREST, false), (0, true)] {
-        let mut m = MeshScene::default();
-        m.texels = checker(2);
-        m.textures = vec![TextureInfo { offset: 0, width: 2, height: 2, sampler }];
+        let mut m = MeshScene {
+            texels: checker(2),
+            textures: vec![TextureInfo { offset: 0, width: 2, height: 2, sampler }],
+            ..MeshScene::default()
+        };
         let mat = m.material(MeshMaterial { base_texture: 0, flags: UNLIT, ..unlit([1.0; 3]) });
         m.facing(0.0, 0.0, 2.0, 0.4, mat);
         let out = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &one_sample).unwrap();

@@ -8,17 +8,23 @@
 //!    cluster is, in every sub-sample, its next fragments with depth `<= z0 · (1 + tolerance)`
 //!    (`tolerance` is the layers' edge depth ratio: a larger relative gap is a different surface;
 //!    at `z0 = +inf` the cluster is the background).
-//! 2. **Coverage over what is known.** A sub-sample *sees down to* a cluster when its list still
-//!    holds a fragment there or behind it; a list that ended in front (an opaque surface whose
-//!    umbra hid the rest, or a full list) says nothing about what lies deeper. With `D` the
-//!    sub-samples that see down to the cluster, and within each its members composited front to
-//!    back ("over": member `i` weighted by `t_i = Π_{j<i}(1 − α_j)`, coverage `w_i = t_i α_i`):
-//!    `alpha = Σ w / D`, premultiplied colour `= Σ t·c / D`, depth the `w`-weighted mean depth
-//!    (the background stays at `+inf`). So a sub-pixel emitter seen by 1 of 16 sub-samples over
-//!    a wall seen by all 16 gets alpha 1/16 with its energy, and the wall alpha 1; an edge pixel
-//!    half covered gets its front surface at alpha 0.5 and whatever lies behind at the share of
-//!    the sub-samples that see it, which the front-to-back composite turns into the pixel's area
-//!    mean whenever the surface behind is seen wherever the front one is absent. A cluster with
+//! 2. **Coverage of what is still open.** A sub-sample *sees down to* a cluster when its list
+//!    still holds a fragment there or behind it; a list that ended in front (an opaque surface
+//!    whose umbra hid the rest, or a full list) says nothing about what lies deeper. Within a
+//!    sub-sample the cluster's members composite front to back ("over": member `i` weighted by
+//!    `t_i = Π_{j<i}(1 − α_j)`, coverage `w_i = t_i α_i`), and `T_s` is what the sub-sample's
+//!    earlier clusters let through. Over the sub-samples `s` that see down to the cluster,
+//!    `alpha = Σ T_s·Σw / Σ T_s` and premultiplied colour `= Σ T_s·Σ t·c / Σ T_s`: the share of
+//!    the light still open that the cluster takes. The front-to-back composite of the clusters
+//!    is then the pixel's area mean of its sub-samples' own composites, exactly, at every depth
+//!    (so the pinhole image, and every method in focus, see the area mean). A cluster no open
+//!    sub-sample sees (hidden in the pinhole, seen from other lens points) weighs the sub-samples
+//!    that see down to it alike (`T_s` read as 1). Depth is the `w`-weighted mean depth (the
+//!    background stays at `+inf`). So a sub-pixel emitter seen by 1 of 16 sub-samples over a
+//!    wall seen by all 16 gets alpha 1/16 with its energy, and the wall alpha 1; an edge pixel
+//!    half covered gets its front surface at alpha 0.5 and the surface seen beside it alpha 1,
+//!    also where the front surface's sub-samples see past that depth to something farther (a
+//!    floor receding from the eye; two objects side by side over the sky). A cluster with
 //!    neither coverage nor light is dropped.
 //! 3. **At most `max_layers`.** The first `max_layers − 1` clusters are fragments of their own;
 //!    every further cluster is composited "over" into the last fragment (its depth stays that of
@@ -85,9 +91,14 @@ where
         }
         let finite = is_finite(front);
         let limit = if finite { front + tolerance * front } else { f32::INFINITY };
+        // Sums over the sub-samples that see down to the cluster, each weighted by what its
+        // earlier clusters let through (`open`) and alike (`seen`, the fallback).
         let mut seen = 0u32;
+        let mut open = 0.0f32;
         let mut covered = 0.0f32;
+        let mut covered_open = 0.0f32;
         let mut color = [0.0f32; 3];
+        let mut color_open = [0.0f32; 3];
         let mut depth = 0.0f32;
         let mut footprint = 0u32;
         let mut progressed = false;
@@ -97,6 +108,13 @@ where
             let mut k = cursor[s as usize];
             if k < c {
                 seen += 1;
+                let mut through = 1.0f32;
+                let mut j = 0;
+                while j < k {
+                    through *= 1.0 - clamp_alpha(fragment(s, j).alpha);
+                    j += 1;
+                }
+                open += through;
                 let mut t = 1.0f32;
                 while k < c {
                     let f = fragment(s, k);
@@ -111,7 +129,11 @@ where
                     color[0] += t * f.color[0];
                     color[1] += t * f.color[1];
                     color[2] += t * f.color[2];
+                    color_open[0] += through * t * f.color[0];
+                    color_open[1] += through * t * f.color[1];
+                    color_open[2] += through * t * f.color[2];
                     covered += w;
+                    covered_open += through * w;
                     if finite {
                         depth += w * f.depth;
                     }
@@ -137,10 +159,10 @@ where
         if !(covered > 0.0) && color[0] == 0.0 && color[1] == 0.0 && color[2] == 0.0 {
             continue;
         }
-        let d = seen as f32;
+        let (share, color, d) = if open > 0.0 { (covered_open, color_open, open) } else { (covered, color, seen as f32) };
         let cluster = Sample {
             color: [color[0] / d, color[1] / d, color[2] / d],
-            alpha: covered / d,
+            alpha: share / d,
             depth: if !finite {
                 f32::INFINITY
             } else if covered > 0.0 {

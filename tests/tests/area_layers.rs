@@ -113,6 +113,30 @@ fn a_half_covered_edge_pixel_keeps_its_front_at_half_coverage_and_what_lies_behi
     }
 }
 
+/// Where the front surface's sub-samples see past the surface beside it to something farther (a
+/// floor receding from the eye, split in two clusters by depth, with the sky beyond its umbra; two
+/// objects side by side over the sky), the surface beside still covers all the front leaves
+/// open: the composite is the area mean, not darkened by the sky the front hides.
+#[test]
+fn a_surface_beside_the_front_covers_what_the_front_leaves_open() {
+    let (near, far, sky) = ([0.2, 0.4, 0.6], [0.6, 0.3, 0.1], [0.0, 0.0, 0.0]);
+    let at_inf = frag(sky, f32::INFINITY);
+    for lists in [
+        vec![vec![frag(near, 18.8), at_inf], vec![frag(near, 18.9), at_inf], vec![frag(far, 20.0), at_inf], vec![frag(far, 20.1), at_inf]],
+        vec![vec![frag(near, 2.0), at_inf], vec![frag(near, 2.0), at_inf], vec![frag(near, 2.0), at_inf], vec![frag(far, 9.0), at_inf]],
+    ] {
+        let (out, r) = run(&lists, 4, 0.05);
+        let near_share = lists.iter().filter(|l| l[0].color == near).count() as f32 / 4.0;
+        assert_eq!(r.count, 3, "{out:?}");
+        assert_eq!((out[0].alpha, out[1].alpha), (near_share, 1.0), "{out:?}");
+        assert_eq!(out[2].depth, f32::INFINITY, "the sky stays, for the lens points that see past the surfaces: {out:?}");
+        let c = composite(&out);
+        for j in 0..3 {
+            assert!(close(c[j], near_share * near[j] + (1.0 - near_share) * far[j]), "{c:?} from {out:?}");
+        }
+    }
+}
+
 #[test]
 fn a_sub_pixel_emitter_keeps_its_energy_at_partial_coverage() {
     let (e, w) = ([5000.0, 4000.0, 3000.0], [0.1, 0.1, 0.1]);

@@ -70,6 +70,7 @@ pub(crate) fn shade_params(
         width: frame.width,
         height: frame.height,
         textures: mesh.textures,
+        camera: frame.orientation(),
     }
 }
 

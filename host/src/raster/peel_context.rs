@@ -244,6 +244,7 @@ impl MeshPeelContext {
             width: frame.width,
             height: frame.height,
             textures: mesh.textures,
+            camera: frame.orientation(),
         });
         let vertices = 3 * mesh.triangles;
         slots.begin(backend)?;

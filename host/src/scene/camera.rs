@@ -116,6 +116,12 @@ impl Camera {
 }
 
 impl CameraFrame {
+    /// The camera's orientation as a unit quaternion `[x, y, z, w]` taking its axes (+x right, +y
+    /// up, −z forward) to the world, as the rasteriser's shading reads it.
+    pub fn orientation(&self) -> [f32; 4] {
+        glam::Quat::from_mat3(&glam::Mat3::from_cols(self.right, self.up, -self.forward)).normalize().to_array()
+    }
+
     /// Direction of the pinhole ray through image position `(px, py)` in pixels (`(0, 0)` the top
     /// left corner of the image, `(x + 0.5, y + 0.5)` the centre of pixel `(x, y)`), with a unit
     /// component along the view axis.

@@ -42,6 +42,9 @@ pub struct ShadeParams {
     pub width: u32,
     pub height: u32,
     pub textures: u32,
+    /// The camera's orientation, a unit quaternion `(x, y, z, w)` taking its axes (+x the image's
+    /// right, +y its up, −z the view axis) to the world: a pixel's footprint is its square.
+    pub camera: [f32; 4],
 }
 
 const _: () = assert!(core::mem::size_of::<ShadeParams>() <= 128);
@@ -51,12 +54,22 @@ fn normalize(v: [f32; 3]) -> [f32; 3] {
     if l > 0.0 { [v[0] / l, v[1] / l, v[2] / l] } else { v }
 }
 
-/// How a pixel `width` across at `position`, square to the ray from `eye`, maps into the texture
-/// coordinates of the triangle with corners `v` and coordinates `uv`: the pixel's two axes
-/// carried along the ray onto the triangle's plane (a ray differential, Igehy 1999), in the
-/// triangle's barycentric frame, then into `(u, v)`.
-fn uv_footprint(eye: [f32; 3], position: [f32; 3], v: [[f32; 3]; 3], uv: [(f32, f32); 3], width: f32) -> UvFootprint {
-    let d = normalize(sub(position, eye));
+/// `v` turned by the unit quaternion `q` (`x, y, z, w`).
+fn rotate(q: [f32; 4], v: [f32; 3]) -> [f32; 3] {
+    let axis = [q[0], q[1], q[2]];
+    let t = cross(axis, v);
+    let t = [2.0 * t[0], 2.0 * t[1], 2.0 * t[2]];
+    let u = cross(axis, t);
+    [v[0] + q[3] * t[0] + u[0], v[1] + q[3] * t[1] + u[1], v[2] + q[3] * t[2] + u[2]]
+}
+
+/// How the pixel at `position` maps into the texture coordinates of the triangle with corners `v`
+/// and coordinates `uv`: the pixel's square, `width` across at its planar depth with its sides
+/// along the image's axes (the camera's orientation `camera`), carried along the ray from `eye`
+/// onto the triangle's plane (a ray differential, Igehy 1999), in the triangle's barycentric
+/// frame, then into `(u, v)`.
+fn uv_footprint(eye: [f32; 3], camera: [f32; 4], position: [f32; 3], v: [[f32; 3]; 3], uv: [(f32, f32); 3], width: f32) -> UvFootprint {
+    let d = sub(position, eye);
     let (e1, e2) = (sub(v[1], v[0]), sub(v[2], v[0]));
     let n = cross(e1, e2);
     let (g11, g12, g22) = (dot(e1, e1), dot(e1, e2), dot(e2, e2));
@@ -64,22 +77,11 @@ fn uv_footprint(eye: [f32; 3], position: [f32; 3], v: [[f32; 3]; 3], uv: [(f32, 
     if !(gram > 0.0) || !(width > 0.0) {
         return UvFootprint::POINT;
     }
-    // Two unit axes square to the ray (the branchless basis of Duff et al. 2017).
-    let sign = if d[2] >= 0.0 { 1.0 } else { -1.0 };
-    let k = -1.0 / (sign + d[2]);
-    let m = d[0] * d[1] * k;
-    let axis_a = [1.0 + sign * d[0] * d[0] * k, sign * m, -sign * d[0]];
-    let axis_b = [m, sign + d[1] * d[1] * k, -d[1]];
+    let (right, up) = (rotate(camera, [1.0, 0.0, 0.0]), rotate(camera, [0.0, 1.0, 0.0]));
     // Seen nearly edge-on the footprint stretches; at most a thousandfold.
     let dn = dot(d, n);
-    let floor_dn = 1e-3 * sqrt(dot(n, n));
-    let dn = if absf(dn) >= floor_dn {
-        dn
-    } else if dn < 0.0 {
-        -floor_dn
-    } else {
-        floor_dn
-    };
+    let floor_dn = 1e-3 * sqrt(dot(d, d) * dot(n, n));
+    let dn = if absf(dn) >= floor_dn { dn } else if dn < 0.0 { -floor_dn } else { floor_dn };
     let (du1, dv1, du2, dv2) = (uv[1].0 - uv[0].0, uv[1].1 - uv[0].1, uv[2].0 - uv[0].0, uv[2].1 - uv[0].1);
     let to_uv = |axis: [f32; 3]| {
         let along = dot(axis, n) / dn;
@@ -88,8 +90,8 @@ fn uv_footprint(eye: [f32; 3], position: [f32; 3], v: [[f32; 3]; 3], uv: [(f32, 
         let (alpha, beta) = ((r1 * g22 - r2 * g12) / gram, (r2 * g11 - r1 * g12) / gram);
         (alpha * du1 + beta * du2, alpha * dv1 + beta * dv2)
     };
-    let (du_a, dv_a) = to_uv(axis_a);
-    let (du_b, dv_b) = to_uv(axis_b);
+    let (du_a, dv_a) = to_uv(right);
+    let (du_b, dv_b) = to_uv(up);
     UvFootprint { du_a, dv_a, du_b, dv_b }
 }
 
@@ -100,11 +102,13 @@ fn corner_uvs(vertices: &impl Load, tri: [u32; 4]) -> [(f32, f32); 3] {
 }
 
 /// Radiance and coverage of triangle `t` at barycentrics `(b0, b1)` seen from `eye`, its textures
-/// filtered over a pixel `pixel_width` across there (0: read at their finest level).
+/// filtered over the pixel's square, `pixel_width` across at its depth, its sides along the
+/// image's axes (`camera`, the camera's orientation; width 0: read at their finest level).
 #[allow(clippy::too_many_arguments)]
 pub fn shade_point(
     light: &Light,
     eye: [f32; 3],
+    camera: [f32; 4],
     texture_count: u32,
     t: u32,
     b0: f32,
@@ -142,7 +146,7 @@ pub fn shade_point(
     let at = tri[3] * MATERIAL_WORDS;
     let (base_index, emit_index) = (materials.load(at + 8), materials.load(at + 9));
     let footprint = if base_index < texture_count || emit_index < texture_count {
-        uv_footprint(eye, position, v, corner_uvs(vertices, tri), pixel_width)
+        uv_footprint(eye, camera, position, v, corner_uvs(vertices, tri), pixel_width)
     } else {
         UvFootprint::POINT
     };
@@ -187,6 +191,7 @@ pub fn shade_pass<G: Group, R: Load, M: Mem>(
             let (rgb, alpha) = shade_point(
                 &p.light,
                 p.eye,
+                p.camera,
                 p.textures,
                 id - 1,
                 b0,

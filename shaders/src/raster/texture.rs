@@ -3,22 +3,27 @@
 //! described by a [`TextureInfo`]; level `l` is `max(1, width >> l)` by `max(1, height >> l)`
 //! texels, right after level `l - 1`, each texel the area average of the level above it.
 //!
-//! A lookup filters over the pixel's footprint ([`UvFootprint`]): where the footprint covers less
-//! than a texel, the finest level, bilinear (or nearest, as the sampler says); where it covers
-//! more, anisotropic trilinear filtering: up to [`MAX_ANISOTROPY`] probes spaced along the
-//! footprint's major axis, each interpolated between the two levels whose texels match the
-//! footprint's width across that axis (the scheme of EXT_texture_filter_anisotropic, with the
-//! axes of the footprint's ellipse rather than its two derivatives, so the result does not turn
-//! with the screen). Every step is arithmetic and bit operations, the same on both targets.
+//! A lookup filters over the pixel's footprint ([`UvFootprint`]: the pixel's square carried onto
+//! the surface, a parallelogram in the texture): where it covers less than a texel, the finest
+//! level, bilinear (or nearest, as the sampler says); where it covers more, a box filter over the
+//! parallelogram by quadrature: a grid of probes spread evenly over it (up to
+//! [`MAX_PROBES_ACROSS`] along its shorter side and [`MAX_PROBES`] in all), each a trilinear mip
+//! lookup at the level whose texels match the probes' spacing. A box over the pixel is what a
+//! renderer that samples the pixel's area finely (a path tracer with a box pixel filter) sees;
+//! one trilinear lookup (a GPU's isotropic filter) blurs a square texture up to twice as wide,
+//! and aligns its boxes with the mip grid. Every step is arithmetic and bit operations, the same
+//! on both targets.
 
 use super::mesh::{
     LEVELS_MASK, LEVELS_SHIFT, NEAREST, NO_TEXTURE, TEXEL_WORDS, TEXTURE_WORDS, WRAP_CLAMP, WRAP_MIRROR, WRAP_S_SHIFT, WRAP_T_SHIFT,
 };
 use crate::exec::Load;
-use crate::math::{absf, ceil, floor, maxf, sqrt};
+use crate::math::{ceil, floor, maxf, minf, sqrt};
 
-/// Most probes a lookup takes along its footprint's major axis.
-pub const MAX_ANISOTROPY: u32 = 8;
+/// Most probes a lookup takes over its footprint.
+pub const MAX_PROBES: u32 = 16;
+/// Most probes across its footprint's shorter side.
+pub const MAX_PROBES_ACROSS: u32 = 4;
 
 #[inline]
 pub fn load_f32(m: &impl Load, i: u32) -> f32 {
@@ -84,7 +89,7 @@ impl Rgba {
 }
 
 /// How a pixel's footprint maps into texture coordinates: the change of `(u, v)` across the pixel
-/// along two perpendicular axes, `a` and `b`. [`UvFootprint::POINT`] reads the finest level.
+/// along its two sides, `a` and `b`. [`UvFootprint::POINT`] reads the finest level.
 #[derive(Clone, Copy, Default)]
 pub struct UvFootprint {
     pub du_a: f32,
@@ -204,47 +209,52 @@ fn filtered(textures: &impl Load, texels: &impl Load, texture_count: u32, index:
     let finite = crate::lens::is_finite(u * width as f32) && crate::lens::is_finite(v * height as f32);
     let (u, v) = if finite { (u, v) } else { (0.0, 0.0) };
 
-    // The footprint in level-0 texels, and the axes of its ellipse: the singular values of the
-    // 2x2 map from the pixel's axes to texels.
+    // The footprint's sides in level-0 texels.
     let (ax, ay, bx, by) = (f.du_a * width as f32, f.dv_a * height as f32, f.du_b * width as f32, f.dv_b * height as f32);
-    let sum = ax * ax + ay * ay + bx * bx + by * by;
-    let det = absf(ax * by - ay * bx);
-    let major2 = 0.5 * (sum + sqrt(maxf(sum * sum - 4.0 * det * det, 0.0)));
-    let major = sqrt(major2);
-    if !(major > 1.0) || !crate::lens::is_finite(sum) {
+    let (la, lb) = (sqrt(ax * ax + ay * ay), sqrt(bx * bx + by * by));
+    let longest = maxf(la, lb);
+    if !(longest > 1.0) || !crate::lens::is_finite(longest) {
         // Magnified (or no footprint): the finest level, as the sampler says.
         return if sampler & NEAREST != 0 { base.nearest(texels, u, v) } else { base.bilinear(texels, u, v) };
     }
-    let minor = det / major;
-    let probes = if minor * MAX_ANISOTROPY as f32 <= major { MAX_ANISOTROPY } else { ceil(major / minor) as u32 };
-    let probes = if probes < 1 { 1 } else { probes };
-    let width_across = major / probes as f32;
-    let lod = if width_across > 1.0 { log2_level(width_across) } else { 0.0 };
+    // About a probe a texel along each side, within the budgets.
+    let (na, nb) = if la >= lb {
+        let nb = probes_along(lb, MAX_PROBES_ACROSS);
+        (probes_along(la, MAX_PROBES / nb), nb)
+    } else {
+        let na = probes_along(la, MAX_PROBES_ACROSS);
+        (na, probes_along(lb, MAX_PROBES / na))
+    };
+    let spacing = maxf(la / na as f32, lb / nb as f32);
+    let lod = if spacing > 1.0 { log2_level(spacing) } else { 0.0 };
     let top = levels - 1;
     let fine = floor(lod) as u32;
     let (fine, blend) = if fine >= top { (top, 0.0) } else { (fine, lod - fine as f32) };
     let (level0, level1) = (Level::of(base, fine), Level::of(base, if fine < top { fine + 1 } else { top }));
 
-    // The major axis: the eigenvector of J·Jᵀ = [[p, q], [q, r]] for the eigenvalue `major2`.
-    let (p, q, r) = (ax * ax + bx * bx, ax * ay + bx * by, ay * ay + by * by);
-    let (e0, e1) = ((q, major2 - p), (major2 - r, q));
-    let (ex, ey) = if e0.0 * e0.0 + e0.1 * e0.1 >= e1.0 * e1.0 + e1.1 * e1.1 { e0 } else { e1 };
-    let len = sqrt(ex * ex + ey * ey);
-    let (ex, ey) = if len > 0.0 { (ex / len, ey / len) } else { (1.0, 0.0) };
-    // Its extent in (u, v).
-    let (mu, mv) = (ex * major / width as f32, ey * major / height as f32);
-
-    let mut sum_probes = Rgba::default();
+    let mut sum = Rgba::default();
     let mut i = 0;
-    while i < probes {
-        let t = (i as f32 + 0.5) / probes as f32 - 0.5;
-        let (pu, pv) = (u + t * mu, v + t * mv);
-        let c = level0.bilinear(texels, pu, pv);
-        let c = if blend > 0.0 { c.lerp(level1.bilinear(texels, pu, pv), blend) } else { c };
-        sum_probes = sum_probes.add(c);
+    while i < na {
+        let s = (i as f32 + 0.5) / na as f32 - 0.5;
+        let mut j = 0;
+        while j < nb {
+            let t = (j as f32 + 0.5) / nb as f32 - 0.5;
+            let (pu, pv) = (u + s * f.du_a + t * f.du_b, v + s * f.dv_a + t * f.dv_b);
+            let c = level0.bilinear(texels, pu, pv);
+            let c = if blend > 0.0 { c.lerp(level1.bilinear(texels, pu, pv), blend) } else { c };
+            sum = sum.add(c);
+            j += 1;
+        }
         i += 1;
     }
-    sum_probes.scale(1.0 / probes as f32)
+    sum.scale(1.0 / (na * nb) as f32)
+}
+
+/// Probes along a side `length` texels long: one a texel, at least 1 and at most `most`.
+#[inline]
+fn probes_along(length: f32, most: u32) -> u32 {
+    let n = ceil(minf(length, most as f32));
+    if n < 1.0 { 1 } else { n as u32 }
 }
 
 #[cfg(test)]

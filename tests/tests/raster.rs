@@ -440,8 +440,9 @@ fn checker(n: u32) -> Vec<[f32; 4]> {
 }
 
 /// A minified texture is filtered over each pixel's footprint: a checker of single texels many
-/// to a pixel reads as its mean, seen face on (isotropic) and on a floor running to the horizon
-/// (anisotropic), on the CPU and on Vulkan. Point-sampled, it would alias to anything from 0 to 1.
+/// to a pixel reads as its mean, seen face on and on a floor running to the horizon (a long,
+/// sheared footprint), on the CPU and on Vulkan. Point-sampled, it would alias to anything from 0
+/// to 1.
 #[test]
 fn minified_textures_read_as_the_mean_of_their_footprint() {
     let one_sample = LayerOptions { subsamples: 1, ..all_layers() };
@@ -477,7 +478,9 @@ fn minified_textures_read_as_the_mean_of_their_footprint() {
                         continue;
                     }
                     let v = image.get(x, y);
-                    assert!(v.iter().all(|c| (c - 0.5).abs() < 0.01), "{name}, floor {floor}: ({x}, {y}) at depth {d} reads {v:?}");
+                    // A box over `L` by `L` texels of the checker is within `1 / (2 L²)` of its mean (an
+                    // odd count of cells); point-sampled, a pixel could read 0 or 1.
+                    assert!(v.iter().all(|c| (c - 0.5).abs() < 0.03), "{name}, floor {floor}: ({x}, {y}) at depth {d} reads {v:?}");
                     checked += 1;
                 }
             }

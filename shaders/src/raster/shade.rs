@@ -81,7 +81,13 @@ fn uv_footprint(eye: [f32; 3], camera: [f32; 4], position: [f32; 3], v: [[f32; 3
     // Seen nearly edge-on the footprint stretches; at most a thousandfold.
     let dn = dot(d, n);
     let floor_dn = 1e-3 * sqrt(dot(d, d) * dot(n, n));
-    let dn = if absf(dn) >= floor_dn { dn } else if dn < 0.0 { -floor_dn } else { floor_dn };
+    let dn = if absf(dn) >= floor_dn {
+        dn
+    } else if dn < 0.0 {
+        -floor_dn
+    } else {
+        floor_dn
+    };
     let (du1, dv1, du2, dv2) = (uv[1].0 - uv[0].0, uv[1].1 - uv[0].1, uv[2].0 - uv[0].0, uv[2].1 - uv[0].1);
     let to_uv = |axis: [f32; 3]| {
         let along = dot(axis, n) / dn;

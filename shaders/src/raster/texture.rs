@@ -21,9 +21,9 @@ use crate::exec::Load;
 use crate::math::{ceil, floor, maxf, minf, sqrt};
 
 /// Most probes a lookup takes over its footprint.
-pub const MAX_PROBES: u32 = 16;
+pub const MAX_PROBES: u32 = 64;
 /// Most probes across its footprint's shorter side.
-pub const MAX_PROBES_ACROSS: u32 = 4;
+pub const MAX_PROBES_ACROSS: u32 = 8;
 
 #[inline]
 pub fn load_f32(m: &impl Load, i: u32) -> f32 {

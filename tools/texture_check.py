@@ -4,15 +4,21 @@ textured glTF scene built here as real assets are (a closed box whose material i
 a floor running to the horizon and a wall, 1024x1024 sRGB textures of fine detail, everything
 emissive through KHR_materials_unlit).
 
-    python3 tools/texture_check.py [--width 160 --height 120] [--spp 1024] [--subsamples 1,4,16]
-        [--out out/texture-check] [--dof PATH/TO/dof]
+    python3 tools/texture_check.py [--width 160 --height 120] [--spp 4096] [--subsamples 1,4,16]
+        [--defocus-spp 8192] [--out out/texture-check] [--dof PATH/TO/dof]
 
 Mitsuba sees the same triangles (OBJ) with the same images as area emitters' radiance (bilinear,
 sRGB decoded), through a pinhole with a box pixel filter: at SPP samples a pixel it is the
 pixel's area average of the bilinear texture. The project renders the pinhole image (`dof render
 --method pinhole`, the rasterised front layer at each sub-sample count) and `dof compare`
 measures it against Mitsuba's. Two Mitsuba halves (different seeds) give the reference's own noise
-(their PSNR + 6.02 dB for the pooled mean). Writes OUT/table.md and OUT/table.json.
+(their PSNR + 6.02 dB for the pooled mean).
+
+Then defocused (`--defocus-spp` > 0): Mitsuba's `thinlens` with the same aperture radius and
+planar focus distance against every blurring method, full frame and in the partial-occlusion
+region (the `mask` plane of `dof render --method pinhole` with that lens), on the scene as built
+(the box's material double-sided) and with every material single-sided: a closed object's inner
+faces must not show through its blurred silhouette. Writes OUT/table.md and OUT/table.json.
 """
 
 import argparse
@@ -33,8 +39,13 @@ def parse():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--width", type=int, default=160)
     p.add_argument("--height", type=int, default=120)
-    p.add_argument("--spp", type=int, default=1024, help="Mitsuba samples a pixel, in two halves")
+    p.add_argument("--spp", type=int, default=4096, help="Mitsuba samples a pixel, in two halves (4096: its noise 51 dB)")
     p.add_argument("--subsamples", default="1,4,16", help="the project's sub-sample counts to measure (4 is the default)")
+    p.add_argument("--defocus-spp", type=int, default=8192, help="Mitsuba samples a pixel of the defocused check (0: skip it)")
+    p.add_argument("--aperture-radius", type=float, default=0.15, help="aperture radius of the defocused check, scene units")
+    p.add_argument("--focus", type=float, default=5.5, help="planar focus distance of the defocused check (the box)")
+    p.add_argument("--methods", default="multilayer,tiled,gather,ring-gather,layered,scatter-gather",
+                   help="methods of the defocused check")
     p.add_argument("--variant", default="auto")
     p.add_argument("--out", type=Path, default=Path("out/texture-check"))
     p.add_argument("--dof", help="the dof binary (default: build it)")
@@ -110,7 +121,7 @@ def triangles(quads, repeat):
     return np.array(pos, np.float32), np.array(uv, np.float32), np.array(idx, np.uint32)
 
 
-def write_gltf(folder, objects, camera):
+def write_gltf(folder, objects, camera, file="scene.gltf", double_sided=True):
     eye, yfov, aspect = camera
     binary, views, accessors, meshes, nodes, materials = bytearray(), [], [], [], [], []
 
@@ -123,7 +134,7 @@ def write_gltf(folder, objects, camera):
 
     for t in range(3):
         materials.append({"pbrMetallicRoughness": {"baseColorTexture": {"index": t}, "metallicFactor": 0.0},
-                          "doubleSided": True, "extensions": {"KHR_materials_unlit": {}}})
+                          "doubleSided": double_sided, "extensions": {"KHR_materials_unlit": {}}})
     for name, quads, repeat, tex in objects:
         pos, uv, idx = triangles(quads, repeat)
         a = len(accessors)
@@ -153,7 +164,7 @@ def write_gltf(folder, objects, camera):
         "bufferViews": views,
         "accessors": accessors,
     }
-    (folder / "scene.gltf").write_text(json.dumps(doc, indent=1))
+    (folder / file).write_text(json.dumps(doc, indent=1))
 
 
 def write_obj(path, quads, repeat):
@@ -165,13 +176,15 @@ def write_obj(path, quads, repeat):
     path.write_text("\n".join(lines) + "\n")
 
 
-def mitsuba_scene(mi, folder, objects, camera, width, height):
+def mitsuba_scene(mi, folder, objects, camera, width, height, lens=None):
+    """The scene in Mitsuba: a pinhole, or with `lens` = (aperture radius, focus distance) a thin lens."""
     eye, yfov, _ = camera
+    sensor = {"type": "perspective"} if lens is None else {"type": "thinlens", "aperture_radius": lens[0], "focus_distance": lens[1]}
     d = {
         "type": "scene",
         "integrator": {"type": "path", "max_depth": 2},
         "sensor": {
-            "type": "perspective", "fov": math.degrees(yfov), "fov_axis": "y", "near_clip": 0.01, "far_clip": 1000.0,
+            **sensor, "fov": math.degrees(yfov), "fov_axis": "y", "near_clip": 0.01, "far_clip": 1000.0,
             "to_world": mi.ScalarTransform4f().look_at(origin=list(eye), target=[eye[0], eye[1], eye[2] - 1.0], up=[0, 1, 0]),
             "film": {"type": "hdrfilm", "width": width, "height": height, "pixel_format": "rgb",
                      "component_format": "float32", "rfilter": {"type": "box"}},
@@ -189,6 +202,45 @@ def mitsuba_scene(mi, folder, objects, camera, width, height):
     return mi.load_dict(d)
 
 
+def mitsuba_halves(mi, scene, spp, out, stem):
+    """Two renders of `spp / 2` samples (seeds 1 and 2), written to OUT/STEM-half0.exr and
+    -half1.exr, and their mean to OUT/STEM.exr (the halves' PSNR against each other + 6.02 dB is
+    the mean's noise)."""
+    halves = [np.array(mi.render(scene, seed=seed, spp=spp // 2)) for seed in (1, 2)]
+    for k, h in enumerate(halves):
+        write_exr(mi, h, out / f"{stem}-half{k}.exr")
+    write_exr(mi, 0.5 * (halves[0] + halves[1]), out / f"{stem}.exr")
+
+
+def defocused(mi, dof, args, out, objects, camera):
+    """Every method, with the scene double- and single-sided, against Mitsuba's thin lens."""
+    lens = (args.aperture_radius, args.focus)
+    write_gltf(out, objects, camera, "scene-single-sided.gltf", double_sided=False)
+    ms = mitsuba_scene(mi, out, objects, camera, args.width, args.height, lens)
+    mitsuba_halves(mi, ms, args.defocus_spp, out, "mitsuba-lens")
+    size = ["--width", args.width, "--height", args.height, "--aperture-radius", args.aperture_radius, "--focus", args.focus]
+    ok, _, _ = run([dof, "render", "--scene", out / "scene.gltf", "--method", "pinhole", *size, "--out", out / "mask.exr"])
+    if not ok:
+        return None
+    noise = compare(dof, out / "mitsuba-lens-half0.exr", out / "mitsuba-lens-half1.exr", out / "mask.exr")
+    rows = []
+    for method in args.methods.split(","):
+        row = {"method": method}
+        for variant, scene in (("double", "scene.gltf"), ("single", "scene-single-sided.gltf")):
+            image = out / f"{method}-{variant}.exr"
+            ok, _, seconds = run([dof, "render", "--scene", out / scene, "--method", method, *size, "--out", image])
+            c = compare(dof, out / "mitsuba-lens.exr", image, out / "mask.exr") if ok else None
+            row[variant] = None if c is None else {"psnr_db": psnr(c["psnr_db"]), "region_db": psnr(c["psnr_masked_db"]), "seconds": seconds}
+        rows.append(row)
+    return {"rows": rows, "spp": args.defocus_spp, "aperture_radius": args.aperture_radius, "focus": args.focus,
+            "noise_db": None if noise is None else psnr(noise["psnr_db"]) + 6.02,
+            "noise_region_db": None if noise is None else psnr(noise["psnr_masked_db"]) + 6.02}
+
+
+def fmt(v):
+    return "-" if v is None else f"{v:.2f}"
+
+
 def main():
     args = parse()
     out = args.out.resolve()
@@ -203,10 +255,7 @@ def main():
     write_gltf(out, objects, camera)
 
     ms = mitsuba_scene(mi, out, objects, camera, args.width, args.height)
-    halves = [np.array(mi.render(ms, seed=seed, spp=args.spp // 2)) for seed in (1, 2)]
-    for k, h in enumerate(halves):
-        write_exr(mi, h, out / f"mitsuba-half{k}.exr")
-    write_exr(mi, 0.5 * (halves[0] + halves[1]), out / "mitsuba.exr")
+    mitsuba_halves(mi, ms, args.spp, out, "mitsuba")
     noise = compare(dof, out / "mitsuba-half0.exr", out / "mitsuba-half1.exr")
     noise_db = psnr(noise["psnr_db"]) + 6.02 if noise else float("nan")
 
@@ -217,13 +266,20 @@ def main():
                               "--height", args.height, "--subsamples", n, "--out", image])
         result = compare(dof, out / "mitsuba.exr", image) if ok else None
         rows.append({"subsamples": n, "psnr_db": psnr(result["psnr_db"]) if result else None, "seconds": seconds})
-    table = ["| sub-samples | PSNR against Mitsuba (dB) |", "|---:|---:|"]
-    table += [f"| {r['subsamples']} | {r['psnr_db']:.2f} |" if r["psnr_db"] is not None else f"| {r['subsamples']} | failed |" for r in rows]
-    note = (f"Mitsuba {mi.__version__} ({variant}), {args.spp} spp at {args.width}x{args.height}; "
-            f"its own noise: {noise_db:.2f} dB")
-    text = "\n".join(table) + "\n\n" + note + "\n"
+    table = ["Pinhole (`dof render --method pinhole`):", "", "| sub-samples | PSNR against Mitsuba (dB) | seconds |", "|---:|---:|---:|"]
+    table += [f"| {r['subsamples']} | {fmt(r['psnr_db'])} | {r['seconds']:.2f} |" for r in rows]
+    table += ["", f"Mitsuba {mi.__version__} ({variant}), {args.spp} spp at {args.width}x{args.height}; its own noise: {noise_db:.2f} dB"]
+    lens = defocused(mi, dof, args, out, objects, camera) if args.defocus_spp > 0 else None
+    if lens:
+        table += ["", f"Defocused (aperture radius {args.aperture_radius}, focus {args.focus}), PSNR full / region (dB) against Mitsuba's "
+                  f"thin lens at {args.defocus_spp} spp (its own noise {fmt(lens['noise_db'])} / {fmt(lens['noise_region_db'])} dB):", "",
+                  "| method | double-sided | single-sided |", "|---|---:|---:|"]
+        for r in lens["rows"]:
+            cell = lambda c: "failed" if c is None else f"{fmt(c['psnr_db'])} / {fmt(c['region_db'])}"
+            table.append(f"| {r['method']} | {cell(r['double'])} | {cell(r['single'])} |")
+    text = "\n".join(table) + "\n"
     (out / "table.md").write_text(text)
-    (out / "table.json").write_text(json.dumps({"rows": rows, "mitsuba_noise_db": noise_db, "spp": args.spp,
+    (out / "table.json").write_text(json.dumps({"pinhole": rows, "mitsuba_noise_db": noise_db, "spp": args.spp, "defocused": lens,
                                                 "width": args.width, "height": args.height, "variant": variant}, indent=1))
     print(text, end="")
 

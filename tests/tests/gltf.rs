@@ -772,3 +772,49 @@ fn texture_transforms_and_the_second_coordinate_set_are_applied() {
         assert!(close(got[0], want[0]) && close(got[1], want[1]), "vertex {i}: {got:?}, want {want:?}");
     }
 }
+
+/// Expectation: `COLOR_0` loads as each vertex's linear colour (unsigned bytes normalised, floats
+/// as they are, RGB with alpha 1), white without one; a non-finite colour is an error naming it.
+#[test]
+fn vertex_colours_are_read() {
+    let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    let floats = |v: &[f32]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
+    let cases: [(u32, &str, Vec<u8>, [[f32; 4]; 3]); 3] = [
+        (
+            5121,
+            "VEC4",
+            vec![255, 0, 0, 255, 0, 51, 0, 255, 0, 0, 255, 0],
+            [[1.0, 0.0, 0.0, 1.0], [0.0, 0.2, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0]],
+        ),
+        (5126, "VEC3", floats(&[0.5, 0.25, 1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]), [[0.5, 0.25, 1.0, 1.0], [0.0, 0.0, 0.0, 1.0], [1.0; 4]]),
+        (5126, "VEC3", floats(&[0.5, f32::NAN, 1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]), [[0.0; 4]; 3]),
+    ];
+    for (component, ty, data, expect) in cases {
+        let (mut doc, mut bin) = document(&positions, None, None, 4, json!([{ "mesh": 0 }]));
+        let views = doc["bufferViews"].as_array().unwrap().len();
+        doc["bufferViews"].as_array_mut().unwrap().push(json!({ "buffer": 0, "byteOffset": bin.len(), "byteLength": data.len() }));
+        let mut accessor = json!({ "bufferView": views, "componentType": component, "count": 3, "type": ty });
+        if component != 5126 {
+            accessor["normalized"] = json!(true);
+        }
+        let colors = doc["accessors"].as_array().unwrap().len();
+        doc["accessors"].as_array_mut().unwrap().push(accessor);
+        doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = json!(colors);
+        bin.extend(&data);
+        doc["buffers"][0] = json!({ "byteLength": bin.len(), "uri": format!("data:application/octet-stream;base64,{}", base64(&bin)) });
+        let loaded = load_doc(&doc);
+        if expect[0][0] == 0.0 && expect[2][0] == 0.0 {
+            let err = loaded.err().expect("a NaN colour is refused").to_string();
+            assert!(err.contains("COLOR_0") && err.contains("non-finite"), "{err}");
+            continue;
+        }
+        let m = loaded.unwrap();
+        let half = dof_shaders::raster::texture::half_to_f32;
+        for (k, v) in m.vertices.iter().enumerate() {
+            let c = [half(v.color[0] & 0xffff), half(v.color[0] >> 16), half(v.color[1] & 0xffff), half(v.color[1] >> 16)];
+            assert!((0..4).all(|j| (c[j] - expect[k][j]).abs() < 1e-3), "{ty} vertex {k}: {c:?}, expected {:?}", expect[k]);
+        }
+    }
+    let (doc, _) = document(&positions, None, None, 4, json!([{ "mesh": 0 }]));
+    assert!(load_doc(&doc).unwrap().vertices.iter().all(|v| v.color == dof_shaders::raster::mesh::WHITE_HALVES));
+}

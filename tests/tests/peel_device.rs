@@ -29,7 +29,7 @@ fn quad(m: &mut MeshScene, corner: Vec3, u: Vec3, v: Vec3, material: u32) {
     let n = u.cross(v).normalize().to_array();
     let base = m.vertices.len() as u32;
     for (p, (tu, tv)) in [(corner, (0.0, 0.0)), (corner + u, (1.0, 0.0)), (corner + u + v, (1.0, 1.0)), (corner + v, (0.0, 1.0))] {
-        m.vertices.push(MeshVertex { position: p.to_array(), u: tu, normal: n, v: tv });
+        m.vertices.push(MeshVertex { position: p.to_array(), u: tu, normal: n, v: tv, ..MeshVertex::default() });
     }
     m.triangles.push([base, base + 1, base + 2, material]);
     m.triangles.push([base, base + 2, base + 3, material]);

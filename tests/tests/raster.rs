@@ -5,7 +5,7 @@ use dof::backend::CpuBackend;
 use dof::raster::{AccumulateOptions, accumulate, peel_layers};
 use dof::scene::{Camera, LayerOptions, MeshScene, Vec3};
 use dof_shaders::lens::ThinLens;
-use dof_shaders::raster::mesh::{ALPHA_MASK, DOUBLE_SIDED, MeshMaterial, MeshVertex, NEAREST, TextureInfo, UNLIT};
+use dof_shaders::raster::mesh::{ALPHA_BLEND, ALPHA_MASK, DOUBLE_SIDED, MeshMaterial, MeshVertex, NEAREST, TextureInfo, UNLIT};
 use dof_tests::{assert_clean, vulkan};
 
 /// Hand-building meshes of quads.
@@ -26,7 +26,7 @@ impl Build for MeshScene {
         let n = u.cross(v).normalize().to_array();
         let base = self.vertices.len() as u32;
         for (p, (tu, tv)) in [(corner, (0.0, 0.0)), (corner + u, (1.0, 0.0)), (corner + u + v, (1.0, 1.0)), (corner + v, (0.0, 1.0))] {
-            self.vertices.push(MeshVertex { position: p.to_array(), u: tu, normal: n, v: tv });
+            self.vertices.push(MeshVertex { position: p.to_array(), u: tu, normal: n, v: tv, ..MeshVertex::default() });
         }
         self.triangles.push([base, base + 1, base + 2, material]);
         self.triangles.push([base, base + 2, base + 3, material]);
@@ -508,5 +508,30 @@ fn magnified_textures_keep_their_texels() {
         let (lo, hi) = values.iter().fold((1.0f32, 0.0f32), |(lo, hi), &v| (lo.min(v), hi.max(v)));
         assert!(values.len() > 1000 && lo < 0.05 && hi > 0.95, "{} pixels from {lo} to {hi}", values.len());
         assert_eq!(between > 100, expect_between, "sampler {sampler}: {between} of {} pixels between the texels", values.len());
+    }
+}
+
+/// Vertex colours multiply the base colour, and their alpha the coverage of a blended surface.
+#[test]
+fn vertex_colours_multiply_the_base_colour() {
+    let one_sample = LayerOptions { subsamples: 1, ..all_layers() };
+    // An opaque square tinted (0.5, 0.25, 1): 0.8 times that. A blended one of vertex alpha 0.5
+    // over the wall of 0.2: half of 0.8 and half of 0.2.
+    for (flags, rgba, expected) in [(UNLIT, [0.5, 0.25, 1.0, 1.0], [0.4, 0.2, 0.8]), (UNLIT | ALPHA_BLEND, [1.0, 1.0, 1.0, 0.5], [0.5; 3])]
+    {
+        let mut m = MeshScene::default();
+        let wall = m.material(unlit([0.2; 3]));
+        m.facing(0.0, 0.0, 4.0, 2.0, wall);
+        let tinted = m.material(MeshMaterial { flags, ..unlit([0.8; 3]) });
+        m.facing(0.0, 0.0, 2.0, 0.3, tinted);
+        let first = m.vertices.len() - 4;
+        for v in &mut m.vertices[first..] {
+            v.color = dof::raster::mipmap::pack_halves(rgba);
+        }
+        let out = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &one_sample).unwrap();
+        let c = out.image.layers.front().0.get(W / 2, H / 2);
+        assert!((0..3).all(|k| (c[k] - expected[k]).abs() < 1e-3), "flags {flags}: {c:?}, expected {expected:?}");
+        let front = out.image.layers.pixel(W / 2, H / 2)[0];
+        assert!((front.alpha - rgba[3]).abs() < 1e-3 && (front.depth - 2.0).abs() < 1e-3, "{front:?}");
     }
 }

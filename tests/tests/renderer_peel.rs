@@ -53,7 +53,7 @@ fn scene(quads: Vec<Quad>, materials: Vec<MeshMaterial>) -> Scene {
     for q in &quads {
         let base = mesh.vertices.len() as u32;
         for (x, y) in [(q.x, q.y), (q.x + q.w, q.y), (q.x + q.w, q.y + q.h), (q.x, q.y + q.h)] {
-            mesh.vertices.push(MeshVertex { position: [x, y, q.z], u: 0.0, normal: [0.0, 0.0, 1.0], v: 0.0 });
+            mesh.vertices.push(MeshVertex { position: [x, y, q.z], normal: [0.0, 0.0, 1.0], ..MeshVertex::default() });
         }
         mesh.triangles.push([base, base + 1, base + 2, q.material]);
         mesh.triangles.push([base, base + 2, base + 3, q.material]);

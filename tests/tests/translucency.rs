@@ -180,7 +180,7 @@ fn blended_panes(za: f32, zb: f32) -> MeshScene {
     for (i, (half, z)) in [(20.0, 8.0), (1.0, za), (1.0, zb)].into_iter().enumerate() {
         let base = m.vertices.len() as u32;
         for (x, y) in [(-half, -half), (half, -half), (half, half), (-half, half)] {
-            m.vertices.push(MeshVertex { position: [x, y, -z], u: 0.0, normal: [0.0, 0.0, 1.0], v: 0.0 });
+            m.vertices.push(MeshVertex { position: [x, y, -z], normal: [0.0, 0.0, 1.0], ..MeshVertex::default() });
         }
         m.triangles.push([base, base + 1, base + 2, i as u32]);
         m.triangles.push([base, base + 2, base + 3, i as u32]);

@@ -71,9 +71,9 @@ fn weighted(taps: impl Iterator<Item = ([f32; 4], f32)>) -> [f32; 4] {
     sum
 }
 
-/// Packs a linear RGBA texel as two words of half floats (`r | g << 16`, `b | a << 16`); values
-/// past the half range become its largest finite value.
-fn pack(t: [f32; 4]) -> [u32; 2] {
+/// Packs linear RGBA as two words of half floats (`r | g << 16`, `b | a << 16`), as texels and
+/// vertex colours are stored; values past the half range become its largest finite value.
+pub fn pack_halves(t: [f32; 4]) -> [u32; 2] {
     let h = |x: f32| f16::from_f32(x.clamp(-65504.0, 65504.0)).to_bits() as u32;
     [h(t[0]) | (h(t[1]) << 16), h(t[2]) | (h(t[3]) << 16)]
 }
@@ -90,11 +90,11 @@ pub fn sampled_textures(textures: &[TextureInfo], texels: &[[f32; 4]]) -> (Vec<T
             let offset = *chains.entry((t.offset, t.width, t.height)).or_insert_with(|| {
                 let start = (words.len() / TEXEL_WORDS as usize) as u32;
                 let base = &texels[t.offset as usize..t.offset as usize + t.width as usize * t.height as usize];
-                words.extend(base.iter().flat_map(|&x| pack(x)));
+                words.extend(base.iter().flat_map(|&x| pack_halves(x)));
                 let (mut level, mut w, mut h) = (base.to_vec(), t.width, t.height);
                 while w > 1 || h > 1 {
                     (level, w, h) = downsample(&level, w, h);
-                    words.extend(level.iter().flat_map(|&x| pack(x)));
+                    words.extend(level.iter().flat_map(|&x| pack_halves(x)));
                 }
                 start
             });

@@ -39,8 +39,8 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use dof_shaders::raster::mesh::{
-    ALPHA_BLEND, ALPHA_MASK, DOUBLE_SIDED, MeshMaterial, MeshVertex, NEAREST, TextureInfo, UNLIT, WRAP_CLAMP, WRAP_MIRROR, WRAP_REPEAT,
-    WRAP_S_SHIFT, WRAP_T_SHIFT,
+    ALPHA_BLEND, ALPHA_MASK, DOUBLE_SIDED, MeshMaterial, MeshVertex, NEAREST, TextureInfo, UNLIT, WHITE_HALVES, WRAP_CLAMP, WRAP_MIRROR,
+    WRAP_REPEAT, WRAP_S_SHIFT, WRAP_T_SHIFT,
 };
 use glam::{Mat3, Mat4, Vec3};
 use gltf::accessor::{DataType, Dimensions};
@@ -550,9 +550,21 @@ impl Loader<'_> {
             // The coordinates its textures read: one set and transform for the primitive, baked
             // into its vertices.
             let mapping = UvMapping::of(&prim.material());
-            if prim.get(&gltf::Semantic::Colors(0)).is_some() {
-                self.out.report.ignored_vertex_colors += 1;
-            }
+            // Vertex colours (`COLOR_0`, linear), multiplying the base colour; white without.
+            let colors: Vec<[u32; 2]> = match prim.get(&gltf::Semantic::Colors(0)) {
+                Some(acc) => {
+                    let ok = [DataType::F32, DataType::U8, DataType::U16]
+                        .into_iter()
+                        .flat_map(|t| [(t, Dimensions::Vec3), (t, Dimensions::Vec4)]);
+                    check_accessor(&acc, &format!("{what} COLOR_0"), &ok.collect::<Vec<_>>(), bufs)?;
+                    let raw: Vec<[f32; 4]> = reader.read_colors(0).map(|c| c.into_rgba_f32().collect()).unwrap_or_default();
+                    if let Some(k) = raw.iter().position(|c| !c.iter().all(|x| x.is_finite())) {
+                        return Err(scene_err(format!("{what} COLOR_0: vertex {k} has a non-finite colour {:?}", raw[k])));
+                    }
+                    raw.iter().map(|&c| vertex_color(c)).collect()
+                }
+                None => vec![WHITE_HALVES; n],
+            };
             if mapping.mixed {
                 self.out.report.mixed_texture_coordinates += 1;
             }
@@ -569,8 +581,8 @@ impl Loader<'_> {
                     vec![[0.0; 2]; n]
                 }
             };
-            if normals.len() != n || uvs.len() != n {
-                return Err(scene_err(format!("{what}: NORMAL or TEXCOORD_{set} has a different count than POSITION ({n})")));
+            if normals.len() != n || uvs.len() != n || colors.len() != n {
+                return Err(scene_err(format!("{what}: NORMAL, TEXCOORD_{set} or COLOR_0 has a different count than POSITION ({n})")));
             }
             let indices: Vec<u32> = match prim.indices() {
                 Some(acc) => {
@@ -639,8 +651,13 @@ impl Loader<'_> {
                     limit: u32::MAX as u64,
                 }));
             }
-            let vertex =
-                |k: usize, normal: [f32; 3]| MeshVertex { position: world_positions[k].to_array(), u: uvs[k][0], normal, v: uvs[k][1] };
+            let vertex = |k: usize, normal: [f32; 3]| MeshVertex {
+                position: world_positions[k].to_array(),
+                u: uvs[k][0],
+                normal,
+                v: uvs[k][1],
+                color: colors[k],
+            };
             if !flat {
                 for k in 0..n {
                     let nrm = (normal_matrix * Vec3::from(normals[k])).normalize_or_zero();
@@ -822,6 +839,12 @@ impl Loader<'_> {
         }));
         Ok((offset as u32, width, height))
     }
+}
+
+/// A vertex colour as the rasteriser stores it: linear RGBA, clamped to [0, 1] (glTF's range), as
+/// half floats.
+fn vertex_color(c: [f32; 4]) -> [u32; 2] {
+    crate::raster::mipmap::pack_halves(c.map(|x| x.clamp(0.0, 1.0)))
 }
 
 /// The sRGB transfer function's inverse.

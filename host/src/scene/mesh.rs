@@ -92,8 +92,6 @@ pub struct LoadReport {
     pub mixed_texture_coordinates: u64,
     /// Primitives whose textures name a coordinate set they lack (their coordinates read as 0).
     pub missing_texture_coordinates: u64,
-    /// Primitives with vertex colours (`COLOR_0`), which the rasteriser does not apply.
-    pub ignored_vertex_colors: u64,
     /// Punctual lights not used: point and spot lights, and directional lights after the first.
     pub ignored_lights: u64,
 }
@@ -117,7 +115,6 @@ impl std::fmt::Display for LoadReport {
                 "primitives whose base colour and emissive textures use different coordinates (the base colour's used for both)",
             ),
             (self.missing_texture_coordinates, "primitives lacking the texture coordinate set their textures name (read as 0)"),
-            (self.ignored_vertex_colors, "primitives whose vertex colours (COLOR_0) are not applied"),
             (self.ignored_lights, "lights not used (only the first directional light is)"),
         ];
         let parts: Vec<String> = items.iter().filter(|(n, _)| *n > 0).map(|(n, what)| format!("{n} {what}")).collect();

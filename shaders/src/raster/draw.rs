@@ -13,7 +13,7 @@
 
 use super::mesh::{ALPHA_BLEND, ALPHA_MASK, MATERIAL_WORDS, VERTEX_WORDS};
 use super::project::{RasterParams, clip, cover, edges, fetch, pixel_ndc, triangle};
-use super::texture::{UvFootprint, load_f32, sample};
+use super::texture::{UvFootprint, half_to_f32, load_f32, sample};
 use crate::exec::{Group, Load, Mem};
 use crate::math::{ceil, floor};
 use crate::wg::for_each_item;
@@ -37,12 +37,39 @@ pub fn interpolate_uv(vertices: &impl Load, tri: [u32; 4], b0: f32, b1: f32) -> 
     (u, v)
 }
 
-/// The material's coverage at a point: base alpha times the base texture's alpha, read at the
-/// finest level (the alpha test keeps cut-outs as sharp at a distance as near).
-pub fn coverage(p: &RasterParams, material: u32, uv: (f32, f32), materials: &impl Load, textures: &impl Load, texels: &impl Load) -> f32 {
+/// Interpolated vertex colour (linear RGBA) of triangle `t` at barycentrics `(b0, b1)`.
+pub fn interpolate_color(vertices: &impl Load, tri: [u32; 4], b0: f32, b1: f32) -> [f32; 4] {
+    let b = [b0, b1, 1.0 - b0 - b1];
+    let mut c = [0.0f32; 4];
+    let mut k = 0;
+    while k < 3 {
+        let at = tri[k] * VERTEX_WORDS + 8;
+        let (rg, ba) = (vertices.load(at), vertices.load(at + 1));
+        c[0] += b[k] * half_to_f32(rg & 0xffff);
+        c[1] += b[k] * half_to_f32(rg >> 16);
+        c[2] += b[k] * half_to_f32(ba & 0xffff);
+        c[3] += b[k] * half_to_f32(ba >> 16);
+        k += 1;
+    }
+    c
+}
+
+/// The material's coverage at a point: base alpha times the base texture's alpha (read at the
+/// finest level: the alpha test keeps cut-outs as sharp at a distance as near) times the vertex
+/// colour's alpha.
+#[allow(clippy::too_many_arguments)]
+pub fn coverage(
+    p: &RasterParams,
+    material: u32,
+    uv: (f32, f32),
+    vertex_alpha: f32,
+    materials: &impl Load,
+    textures: &impl Load,
+    texels: &impl Load,
+) -> f32 {
     let at = material * MATERIAL_WORDS;
     let base_texture = materials.load(at + 8);
-    load_f32(materials, at + 3) * sample(textures, texels, p.textures, base_texture, uv.0, uv.1, UvFootprint::POINT)[3]
+    load_f32(materials, at + 3) * sample(textures, texels, p.textures, base_texture, uv.0, uv.1, UvFootprint::POINT)[3] * vertex_alpha
 }
 
 /// Whether a fragment of triangle `t` at planar depth `depth` is kept (module docs).
@@ -69,7 +96,8 @@ pub fn fragment_kept(
     if flags & (ALPHA_MASK | ALPHA_BLEND) == 0 {
         return true;
     }
-    let alpha = coverage(p, tri[3], interpolate_uv(vertices, tri, b0, b1), materials, textures, texels);
+    let vertex_alpha = interpolate_color(vertices, tri, b0, b1)[3];
+    let alpha = coverage(p, tri[3], interpolate_uv(vertices, tri, b0, b1), vertex_alpha, materials, textures, texels);
     if flags & ALPHA_MASK != 0 { alpha >= load_f32(materials, tri[3] * MATERIAL_WORDS + 7) } else { alpha > 0.0 }
 }
 

@@ -1,7 +1,7 @@
 //! The triangle-mesh scene as the rasteriser's buffers hold it, and how a surface point of it is
 //! shaded. Every buffer is an array of words; the host builds them from these `Pod` types.
 //!
-//! - vertices: [`MeshVertex`], world space, 8 words;
+//! - vertices: [`MeshVertex`], world space, 10 words;
 //! - triangles: `[i0, i1, i2, material]`, 4 words;
 //! - materials: [`MeshMaterial`], 16 words;
 //! - textures: [`TextureInfo`], 4 words; texels: linear RGBA half floats, [`TEXEL_WORDS`] words
@@ -9,13 +9,14 @@
 //!   followed by its mip chain ([`super::texture`]).
 //!
 //! Lighting model (the analytic scenes' one, so an exported analytic scene renders the same): a lit
-//! surface with base colour `a` and unit normal `n` turned to face the viewer has radiance
+//! surface with base colour `a` (the material's factor times its texture times the vertex colour,
+//! glTF's `COLOR_0`) and unit normal `n` turned to face the viewer has radiance
 //! `a · (ambient + light · max(0, n·l)) + emission`; an unlit one (`KHR_materials_unlit`) has
 //! `a + emission`. No shadows, no specular term. Alpha is the base colour's alpha: `MASK` keeps the
 //! surface where it reaches the cutoff (then opaque), `BLEND` keeps it with that coverage, `OPAQUE`
 //! ignores it.
 
-pub const VERTEX_WORDS: u32 = 8;
+pub const VERTEX_WORDS: u32 = 10;
 pub const TRIANGLE_WORDS: u32 = 4;
 pub const MATERIAL_WORDS: u32 = 16;
 pub const TEXTURE_WORDS: u32 = 4;
@@ -45,13 +46,26 @@ pub const LEVELS_SHIFT: u32 = 8;
 pub const LEVELS_MASK: u32 = 0x1f;
 
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct MeshVertex {
     pub position: [f32; 3],
     pub u: f32,
     /// Unit shading normal (zero when the file has none: the face normal is used).
     pub normal: [f32; 3],
     pub v: f32,
+    /// Linear RGBA vertex colour as half floats (`r | g << 16`, `b | a << 16`), multiplying the
+    /// base colour; [`WHITE_HALVES`] without one.
+    pub color: [u32; 2],
+}
+
+/// White, opaque: the vertex colour of a vertex without one.
+pub const WHITE_HALVES: [u32; 2] = [0x3c00_3c00, 0x3c00_3c00];
+
+impl Default for MeshVertex {
+    /// At the origin, no normal, no texture coordinates, white.
+    fn default() -> Self {
+        MeshVertex { position: [0.0; 3], u: 0.0, normal: [0.0; 3], v: 0.0, color: WHITE_HALVES }
+    }
 }
 
 #[repr(C)]

@@ -12,7 +12,7 @@
 //! pass that found the pixel's ray escaping). A later pass, whose reach is already infinite, writes
 //! coverage 0 there: nothing.
 
-use super::draw::{VIS_WORDS, interpolate_uv};
+use super::draw::{VIS_WORDS, interpolate_color, interpolate_uv};
 use super::mesh::{ALPHA_BLEND, Light, MATERIAL_WORDS, UNLIT, VERTEX_WORDS};
 use super::project::{cross, dot, sub, triangle, vertex_position};
 use super::texture::{UvFootprint, load_f32, sample};
@@ -158,17 +158,18 @@ pub fn shade_point(
     };
     let base_tex = sample(textures, texels, texture_count, base_index, uv.0, uv.1, footprint);
     let emit_tex = sample(textures, texels, texture_count, emit_index, uv.0, uv.1, footprint);
+    let vertex = interpolate_color(vertices, tri, b0, b1);
     let flags = materials.load(at + 10);
     let lambert = dot(n, light.direction).max(0.0);
     let mut rgb = [0.0; 3];
     let mut j = 0;
     while j < 3 {
-        let base = load_f32(materials, at + j as u32) * base_tex[j];
+        let base = load_f32(materials, at + j as u32) * base_tex[j] * vertex[j];
         let lit = if flags & UNLIT != 0 { base } else { base * (light.ambient[j] + light.color[j] * lambert) };
         rgb[j] = lit + load_f32(materials, at + 4 + j as u32) * emit_tex[j];
         j += 1;
     }
-    let alpha = if flags & ALPHA_BLEND != 0 { (load_f32(materials, at + 3) * base_tex[3]).clamp(0.0, 1.0) } else { 1.0 };
+    let alpha = if flags & ALPHA_BLEND != 0 { (load_f32(materials, at + 3) * base_tex[3] * vertex[3]).clamp(0.0, 1.0) } else { 1.0 };
     (rgb, alpha)
 }
 

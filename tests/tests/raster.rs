@@ -526,7 +526,7 @@ fn vertex_colours_multiply_the_base_colour() {
         m.facing(0.0, 0.0, 2.0, 0.3, tinted);
         let first = m.vertices.len() - 4;
         for v in &mut m.vertices[first..] {
-            v.color = dof::raster::mipmap::pack_halves(rgba);
+            v.color = dof::scene::mesh::pack_halves(rgba);
         }
         let out = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &one_sample).unwrap();
         let c = out.image.layers.front().0.get(W / 2, H / 2);

@@ -2,8 +2,8 @@
 //! floats (`dof_shaders::raster::texture`). Built at upload from the scene's linear RGBA images,
 //! which stay as loaded.
 
+use crate::scene::mesh::pack_halves;
 use dof_shaders::raster::mesh::{LEVELS_MASK, LEVELS_SHIFT, TEXEL_WORDS, TextureInfo};
-use half::f16;
 use rayon::prelude::*;
 use std::collections::HashMap;
 
@@ -69,13 +69,6 @@ fn weighted(taps: impl Iterator<Item = ([f32; 4], f32)>) -> [f32; 4] {
         }
     }
     sum
-}
-
-/// Packs linear RGBA as two words of half floats (`r | g << 16`, `b | a << 16`), as texels and
-/// vertex colours are stored; values past the half range become its largest finite value.
-pub fn pack_halves(t: [f32; 4]) -> [u32; 2] {
-    let h = |x: f32| f16::from_f32(x.clamp(-65504.0, 65504.0)).to_bits() as u32;
-    [h(t[0]) | (h(t[1]) << 16), h(t[2]) | (h(t[3]) << 16)]
 }
 
 /// The texture table and texel words the kernel samples, for the scene's `textures` over its

@@ -844,7 +844,7 @@ impl Loader<'_> {
 /// A vertex colour as the rasteriser stores it: linear RGBA, clamped to [0, 1] (glTF's range), as
 /// half floats.
 fn vertex_color(c: [f32; 4]) -> [u32; 2] {
-    crate::raster::mipmap::pack_halves(c.map(|x| x.clamp(0.0, 1.0)))
+    super::mesh::pack_halves(c.map(|x| x.clamp(0.0, 1.0)))
 }
 
 /// The sRGB transfer function's inverse.

@@ -27,6 +27,13 @@ pub const MAX_TRIANGLES: u64 = 1 << 24;
 /// with a third more for the mip chain): 2 GiB and 1.3 GiB at the limit.
 pub const MAX_TEXELS: u64 = 1 << 27;
 
+/// Packs linear RGBA as two words of half floats (`r | g << 16`, `b | a << 16`), as texels and
+/// vertex colours are stored; values past the half range become its largest finite value.
+pub fn pack_halves(t: [f32; 4]) -> [u32; 2] {
+    let h = |x: f32| half::f16::from_f32(x.clamp(-65504.0, 65504.0)).to_bits() as u32;
+    [h(t[0]) | (h(t[1]) << 16), h(t[2]) | (h(t[3]) << 16)]
+}
+
 /// A triangle scene in world space (the default is empty, with the default light).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct MeshScene {

@@ -804,7 +804,7 @@ fn vertex_colours_are_read() {
         doc["buffers"][0] = json!({ "byteLength": bin.len(), "uri": format!("data:application/octet-stream;base64,{}", base64(&bin)) });
         let loaded = load_doc(&doc);
         if expect[0][0] == 0.0 && expect[2][0] == 0.0 {
-            let err = loaded.err().expect("a NaN colour is refused").to_string();
+            let err = loaded.expect_err("a NaN colour is refused").to_string();
             assert!(err.contains("COLOR_0") && err.contains("non-finite"), "{err}");
             continue;
         }

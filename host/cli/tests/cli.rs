@@ -1368,7 +1368,12 @@ fn huge_apertures_blur_or_are_refused() {
     let start = std::time::Instant::now();
     let o = render_small("simple", "raytrace", &aperture, &temp("huge-aperture-raytrace.exr"));
     let stderr = String::from_utf8_lossy(&o.stderr);
-    assert!(!o.status.success() && stderr.contains("ray tracing through layers sees only"), "{stderr}");
+    assert!(
+        !o.status.success()
+            && stderr.contains("raytrace (ray tracing through the layers) sees only")
+            && stderr.contains("caps the CoC there (multilayer, tiled,"),
+        "{stderr}"
+    );
     assert!(start.elapsed() < std::time::Duration::from_secs(20), "the refusal took {:?}", start.elapsed());
 }
 

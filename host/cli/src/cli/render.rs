@@ -2,7 +2,7 @@
 //! PNG preview beside it.
 
 use anyhow::{Context, bail};
-use dof::frame::{METHODS, MethodInfo, MethodOption, MethodOptions, Value};
+use dof::frame::{METHODS, MethodInfo, MethodOption, MethodOptions, Reach, Value};
 use dof::io::{ExrWindow, ExrWriteOptions, write_exr, write_exr_with, write_layered_exr, write_png_preview};
 use dof::layers::RgbImage;
 use dof::layers::{LayeredImage, crop_plane};
@@ -482,17 +482,22 @@ fn lens_flags(args: &RenderArgs) -> String {
     format!("the lens from {}", flags.join(", "))
 }
 
-/// Refuses a lens whose blur reaches past what ray tracing through layers can see: the layers end
-/// [`scene::MAX_GUARD_BAND`] px beyond the frame, and a ray leaving them finds nothing, so a wider
-/// far-field CoC would darken the frame instead of blurring it. The splatting methods cap the CoC
-/// there instead.
+/// Refuses a lens whose blur reaches past what a [`Reach::WithinLayers`] method (ray tracing
+/// through layers) can see: the layers end [`scene::MAX_GUARD_BAND`] px beyond the frame, and a ray
+/// leaving them finds nothing, so a wider far-field CoC would darken the frame instead of blurring
+/// it. The [`Reach::Capped`] methods cap the blur there instead.
 fn check_lens_reach(args: &RenderArgs, lens: &ThinLens) -> anyhow::Result<()> {
     let coc = lens.far_limit_px();
     let reach = dof::scene::MAX_GUARD_BAND as f32;
-    if args.method.name() == "raytrace" && !(coc <= reach) {
+    let Some(info) = args.method.frame() else { return Ok(()) };
+    if info.reach == Reach::WithinLayers && !(coc <= reach) {
+        let capped: Vec<&str> = METHODS.iter().filter(|m| m.reach == Reach::Capped).map(|m| m.name).collect();
         bail!(
-            "the far-field CoC is {coc:.0} px, but ray tracing through layers sees only {reach:.0} px beyond the frame, where the \
-             layers end: lower the aperture, or use a method that caps the CoC there (multilayer, tiled)"
+            "the far-field CoC is {coc:.0} px, but {} ({}) sees only {reach:.0} px beyond the frame, where the layers end: lower \
+             the aperture, or use a method that caps the CoC there ({})",
+            info.name,
+            info.title,
+            capped.join(", ")
         );
     }
     Ok(())

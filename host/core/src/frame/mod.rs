@@ -63,7 +63,7 @@ pub use layered::{LayeredContext, LayeredContextDesc, LayeredOptions, LayeredPla
 pub use options::{Kind, MethodOption, MethodOptions, OptionSpec, Value};
 pub use raytrace::{RaytraceContext, RaytraceContextDesc, RaytraceOptions, RaytraceReport};
 pub use recording::{Command, Groups, Recording};
-pub use registry::{Column, ContextDesc, METHODS, MethodInfo, Reads, Scale, Stage, Sweep, Tolerances, VulkanTolerance};
+pub use registry::{Column, ContextDesc, METHODS, MethodInfo, Reach, Reads, Scale, Stage, Sweep, Tolerances, VulkanTolerance};
 pub use renderer_peel::{RendererPeel, RendererPeelDesc};
 pub use ring_gather::{RingGatherContext, RingGatherContextDesc, RingGatherOptions, RingGatherReport};
 pub use scatter_gather::{ScatterGatherContext, ScatterGatherContextDesc, ScatterGatherOptions, ScatterGatherReport};

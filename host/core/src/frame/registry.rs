@@ -147,6 +147,16 @@ const fn tolerances(in_focus: f32, energy: f64, rel: f32, floor: f32) -> Toleran
     Tolerances { in_focus, energy, vulkan: VulkanTolerance { rel, scale: Scale::Value(floor), share: 0 } }
 }
 
+/// How far past the frame a method's blur may reach.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Reach {
+    /// It caps the blur (a CoC cap, or discs clipped where the layers end): every lens is taken.
+    Capped,
+    /// It follows rays through the layers, which end at the guard band: a far-field CoC wider
+    /// than the band would darken the frame instead of blurring it.
+    WithinLayers,
+}
+
 /// One method of the frame API.
 pub struct MethodInfo {
     /// The name the command line, scripts and reports use.
@@ -164,6 +174,9 @@ pub struct MethodInfo {
     /// The settings the evaluation runs.
     pub sweep: Sweep,
     pub tolerances: Tolerances,
+    /// How far past the frame its blur may reach: lenses beyond a [`Reach::WithinLayers`] method's
+    /// reach are refused by the command line.
+    pub reach: Reach,
     /// Makes its context: checks the options and the extent, allocates every buffer.
     pub create: fn(&mut dyn Backend, &ContextDesc) -> Result<Box<dyn DofContext>>,
 }
@@ -267,6 +280,7 @@ pub static METHODS: &[MethodInfo] = &[
         },
         // Fragments are stored as half floats: a relative rounding up to 2^-11 a value.
         tolerances: tolerances(0.0, 1e-3, 1e-5, 1e-2),
+        reach: Reach::Capped,
         create: |b, d| create_splat(b, d, "multilayer"),
     },
     MethodInfo {
@@ -281,6 +295,7 @@ pub static METHODS: &[MethodInfo] = &[
         // multi-layer method's), and out of the max-CoC sweep, which times the same pipeline.
         sweep: Sweep { points: &["merge=4x4 tile=16"], full: &[0], quick: &[0], timed: None },
         tolerances: tolerances(0.0, 1e-3, 1e-5, 1e-2),
+        reach: Reach::Capped,
         create: |b, d| create_splat(b, d, "tiled"),
     },
     MethodInfo {
@@ -295,6 +310,7 @@ pub static METHODS: &[MethodInfo] = &[
         sweep: Sweep { points: &["max_coc=2", "max_coc=8", "max_coc=96"], full: &[0, 1, 2], quick: &[0, 1], timed: Some(2) },
         // In focus the pixel's own weight is not a power of two: two roundings.
         tolerances: tolerances(2.4e-7, 1e-5, 1e-5, 1e-3),
+        reach: Reach::Capped,
         create: |b, d| {
             let desc = GatherContextDesc {
                 max_radius: d.options.gather_max_radius,
@@ -321,6 +337,7 @@ pub static METHODS: &[MethodInfo] = &[
             timed: Some(3),
         },
         tolerances: tolerances(0.0, 1e-5, 1e-4, 1e-2),
+        reach: Reach::Capped,
         create: |b, d| {
             let desc = RingGatherContextDesc {
                 options: d.options.ring_gather,
@@ -350,6 +367,7 @@ pub static METHODS: &[MethodInfo] = &[
         sweep: Sweep { points: &["lum_threshold=1"], full: &[0], quick: &[0], timed: None },
         // The sprite rasteriser interpolates what the CPU fallback computes.
         tolerances: Tolerances { in_focus: 2.4e-7, energy: 1e-5, vulkan: VulkanTolerance { rel: 1e-4, scale: Scale::Peak, share: 0 } },
+        reach: Reach::Capped,
         create: |b, d| {
             let desc = BokehContextDesc {
                 image_io: d.image_io,
@@ -372,6 +390,7 @@ pub static METHODS: &[MethodInfo] = &[
         sweep: Sweep { points: &["samples=4", "samples=16", "samples=32"], full: &[1, 2], quick: &[0, 1], timed: None },
         // A ray grazing a pixel corner may go either way: one pixel in 200 may differ.
         tolerances: Tolerances { in_focus: 0.0, energy: 1e-5, vulkan: VulkanTolerance { rel: 1e-5, scale: Scale::Value(1.0), share: 200 } },
+        reach: Reach::WithinLayers,
         create: |b, d| {
             let desc = RaytraceContextDesc {
                 image_io: d.image_io,
@@ -399,6 +418,7 @@ pub static METHODS: &[MethodInfo] = &[
             timed: Some(0),
         },
         tolerances: tolerances(0.0, 1e-5, 1e-5, 1.0),
+        reach: Reach::Capped,
         create: |b, d| {
             let desc = LayeredContextDesc {
                 image_io: d.image_io,
@@ -420,6 +440,7 @@ pub static METHODS: &[MethodInfo] = &[
         sweep: Sweep { points: &["max_coc=64", "max_coc=128"], full: &[0, 1], quick: &[0], timed: Some(0) },
         // In focus a tile under half a pixel is copied; on lavapipe Vulkan equals the CPU bit for bit.
         tolerances: tolerances(0.0, 1e-5, 0.0, 1.0),
+        reach: Reach::Capped,
         create: |b, d| {
             let desc = ScatterGatherContextDesc {
                 options: d.options.scatter_gather,

@@ -371,3 +371,59 @@ fn the_device_peel_resolves_like_the_host_on_vulkan() {
     device_peel_equals_host_on(&mut vk);
     assert_clean(&mut vk);
 }
+
+mod composite_property {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Surfaces far enough apart that each is one cluster (gaps well past the 5% tolerance).
+    const SURFACES: [f32; 4] = [1.0, 2.0, 4.0, 8.0];
+
+    /// One sub-sample's list, front to back: some of the surfaces (each a little off its depth,
+    /// within 1%), translucent or not, ending on an opaque surface or the sky, as a peel's lists
+    /// end.
+    fn list() -> impl Strategy<Value = Vec<Sample>> {
+        let fragment = (0.0f32..1.0, 0.0f32..1.0, 0.0f32..1.0, 0.05f32..1.0, -0.01f32..0.01);
+        (proptest::collection::vec(any::<bool>(), 4), proptest::collection::vec(fragment, 4), 0usize..5).prop_map(|(used, f, end)| {
+            let mut out = Vec::new();
+            for k in 0..end.min(4) {
+                if used[k] {
+                    let (r, g, b, a, jitter) = f[k];
+                    out.push(Sample { color: [r * a, g * a, b * a], alpha: a, depth: SURFACES[k] * (1.0 + jitter) });
+                }
+            }
+            // The end: an opaque surface behind the rest, or the sky.
+            let (r, g, b, _, _) = f[end.min(3)];
+            let depth = if end < 4 { SURFACES[end] } else { f32::INFINITY };
+            out.retain(|s| s.depth < depth * 0.99);
+            out.push(Sample { color: [r, g, b], alpha: 1.0, depth });
+            out
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+
+        /// The oracle the resolve is held to: the front-to-back composite of the resolved
+        /// fragments is the mean of the sub-samples' own composites (the pixel's area mean), when
+        /// every list ends opaque and no cluster is merged for want of layers.
+        #[test]
+        fn the_composite_of_the_resolved_pixel_is_the_mean_of_its_sub_samples(
+            lists in prop_oneof![proptest::collection::vec(list(), 4), proptest::collection::vec(list(), 16)]
+        ) {
+            let (out, r) = run(&lists, 16, 0.05);
+            prop_assert_eq!(r.merged, 0);
+            let got = composite(&out);
+            let mut want = [0.0f32; 3];
+            for l in &lists {
+                let c = composite(l);
+                for j in 0..3 {
+                    want[j] += c[j] / lists.len() as f32;
+                }
+            }
+            for j in 0..3 {
+                prop_assert!((got[j] - want[j]).abs() <= 1e-5 * want[j].max(1.0), "{:?} against {:?} from {:?}", got, want, out);
+            }
+        }
+    }
+}

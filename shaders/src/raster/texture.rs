@@ -155,17 +155,13 @@ impl Level {
         Rgba { r: half_to_f32(rg & 0xffff), g: half_to_f32(rg >> 16), b: half_to_f32(ba & 0xffff), a: half_to_f32(ba >> 16) }
     }
 
-    fn nearest(&self, texels: &impl Load, u: f32, v: f32) -> Rgba {
-        let x = wrap_index(floor(u * self.width as f32) as i32, self.width, self.wrap_s);
-        let y = wrap_index(floor(v * self.height as f32) as i32, self.height, self.wrap_t);
-        self.texel(texels, x, y)
-    }
-
-    /// Bilinear between the four texel centres around `(u, v)`.
-    fn bilinear(&self, texels: &impl Load, u: f32, v: f32) -> Rgba {
-        let (fx, fy) = (u * self.width as f32 - 0.5, v * self.height as f32 - 0.5);
+    /// Bilinear between the four texel centres around `(u, v)`; with `nearest`, the texel that
+    /// holds `(u, v)` (the same four reads, weighted 1, 0, 0, 0: one code path for both).
+    fn read(&self, texels: &impl Load, u: f32, v: f32, nearest: bool) -> Rgba {
+        let centre = if nearest { 0.0 } else { 0.5 };
+        let (fx, fy) = (u * self.width as f32 - centre, v * self.height as f32 - centre);
         let (x0, y0) = (floor(fx), floor(fy));
-        let (ax, ay) = (fx - x0, fy - y0);
+        let (ax, ay) = if nearest { (0.0, 0.0) } else { (fx - x0, fy - y0) };
         let (x0, y0) = (x0 as i32, y0 as i32);
         let xa = wrap_index(x0, self.width, self.wrap_s);
         let xb = wrap_index(x0 + 1, self.width, self.wrap_s);
@@ -213,25 +209,28 @@ fn filtered(textures: &impl Load, texels: &impl Load, texture_count: u32, index:
     let (ax, ay, bx, by) = (f.du_a * width as f32, f.dv_a * height as f32, f.du_b * width as f32, f.dv_b * height as f32);
     let (la, lb) = (sqrt(ax * ax + ay * ay), sqrt(bx * bx + by * by));
     let longest = maxf(la, lb);
-    if !(longest > 1.0) || !crate::lens::is_finite(longest) {
-        // Magnified (or no footprint): the finest level, as the sampler says.
-        return if sampler & NEAREST != 0 { base.nearest(texels, u, v) } else { base.bilinear(texels, u, v) };
-    }
-    // About a probe a texel along each side, within the budgets.
-    let (na, nb) = if la >= lb {
+    // Magnified (or no footprint): one read of the finest level, as the sampler says. Minified:
+    // about a probe a texel along each side, within the budgets, at the level the spacing fits.
+    let magnified = !(longest > 1.0) || !crate::lens::is_finite(longest);
+    let (na, nb) = if magnified {
+        (1, 1)
+    } else if la >= lb {
         let nb = probes_along(lb, MAX_PROBES_ACROSS);
         (probes_along(la, MAX_PROBES / nb), nb)
     } else {
         let na = probes_along(la, MAX_PROBES_ACROSS);
         (na, probes_along(lb, MAX_PROBES / na))
     };
-    let spacing = maxf(la / na as f32, lb / nb as f32);
+    let spacing = if magnified { 1.0 } else { maxf(la / na as f32, lb / nb as f32) };
     let lod = if spacing > 1.0 { log2_level(spacing) } else { 0.0 };
     let top = levels - 1;
     let fine = floor(lod) as u32;
     let (fine, blend) = if fine >= top { (top, 0.0) } else { (fine, lod - fine as f32) };
-    let (level0, level1) = (Level::of(base, fine), Level::of(base, if fine < top { fine + 1 } else { top }));
+    let reads = if blend > 0.0 { 2 } else { 1 };
+    let (level0, level1) = (Level::of(base, fine), Level::of(base, fine + reads - 1));
+    let nearest = magnified && sampler & NEAREST != 0;
 
+    // One read site (the kernel inlines every call): probe by probe, level by level.
     let mut sum = Rgba::default();
     let mut i = 0;
     while i < na {
@@ -240,9 +239,12 @@ fn filtered(textures: &impl Load, texels: &impl Load, texture_count: u32, index:
         while j < nb {
             let t = (j as f32 + 0.5) / nb as f32 - 0.5;
             let (pu, pv) = (u + s * f.du_a + t * f.du_b, v + s * f.dv_a + t * f.dv_b);
-            let c = level0.bilinear(texels, pu, pv);
-            let c = if blend > 0.0 { c.lerp(level1.bilinear(texels, pu, pv), blend) } else { c };
-            sum = sum.add(c);
+            let mut k = 0;
+            while k < reads {
+                let (level, weight) = if k == 0 { (level0, 1.0 - blend) } else { (level1, blend) };
+                sum = sum.add(level.read(texels, pu, pv, nearest).scale(weight));
+                k += 1;
+            }
             j += 1;
         }
         i += 1;

@@ -12,11 +12,6 @@ pub fn level_count(width: u32, height: u32) -> u32 {
     32 - width.max(height).max(1).leading_zeros()
 }
 
-/// Texels of an image's whole mip chain.
-pub fn chain_texels(width: u32, height: u32) -> u64 {
-    (0..level_count(width, height)).map(|l| (width >> l).max(1) as u64 * (height >> l).max(1) as u64).sum()
-}
-
 /// For each texel of a `to`-texel row, the texels of a `from`-texel row it averages and their
 /// weights: the share of its interval `[i·from/to, (i+1)·from/to)` each covers (an exact box).
 fn box_weights(from: u32, to: u32) -> Vec<Vec<(u32, f32)>> {
@@ -124,7 +119,6 @@ mod tests {
     #[test]
     fn chains_are_laid_out_as_the_kernel_walks_them() {
         assert_eq!((level_count(1, 1), level_count(4, 4), level_count(5, 3), level_count(1024, 1)), (1, 3, 3, 11));
-        assert_eq!(chain_texels(4, 2), 8 + 2 + 1);
         let texels = vec![[0.5f32, 0.25, 1.0, 1.0]; 4 * 2 + 1];
         let tex = |offset, width, height| TextureInfo { offset, width, height, sampler: 0 };
         let (table, words) = sampled_textures(&[tex(0, 4, 2), tex(8, 1, 1), tex(0, 4, 2)], &texels);

@@ -271,20 +271,27 @@ pub fn bokeh_vs(
     #[spirv(flat)] colour: &mut spirv_std::glam::Vec4,
     #[spirv(flat)] shape: &mut spirv_std::glam::Vec2,
 ) {
+    // The sprite is read through a function, not a closure: a closure's captures become a struct
+    // holding a pointer, which naga cannot translate.
     let at = instance as u32 * SPRITE_WORDS;
-    let f = |k: u32| f32::from_bits(sprites[(at + k) as usize]);
     // Corners of the two triangles, in units of the half-width: vertices 1, 3, 4 on the right,
     // 2, 4, 5 at the bottom.
     let v = vertex % 6;
     let cx = if v == 1 || v == 3 || v == 4 { 1.0 } else { -1.0 };
     let cy = if v == 2 || v == 4 || v == 5 { 1.0 } else { -1.0 };
-    let half = f(2) + 0.5;
+    let half = sprite_f32(sprites, at, 2) + 0.5;
     let d = [cx * half, cy * half];
-    let (x, y) = (f(0) + d[0], f(1) + d[1]);
+    let (x, y) = (sprite_f32(sprites, at, 0) + d[0], sprite_f32(sprites, at, 1) + d[1]);
     *position = spirv_std::glam::Vec4::new(2.0 * x / p.width as f32 - 1.0, 2.0 * y / p.height as f32 - 1.0, 0.0, 1.0);
     *offset = spirv_std::glam::Vec2::new(d[0], d[1]);
-    *colour = spirv_std::glam::Vec4::new(f(4), f(5), f(6), 0.0);
-    *shape = spirv_std::glam::Vec2::new(f(2), f(3));
+    *colour = spirv_std::glam::Vec4::new(sprite_f32(sprites, at, 4), sprite_f32(sprites, at, 5), sprite_f32(sprites, at, 6), 0.0);
+    *shape = spirv_std::glam::Vec2::new(sprite_f32(sprites, at, 2), sprite_f32(sprites, at, 3));
+}
+
+/// Word `k` of the sprite at word `at`, as `f32`.
+#[cfg(target_arch = "spirv")]
+fn sprite_f32(sprites: &[u32], at: u32, k: u32) -> f32 {
+    f32::from_bits(sprites[(at + k) as usize])
 }
 
 /// Fragment stage: the sprite's weight at this pixel centre times its colour, added by blending.

@@ -1,0 +1,361 @@
+struct type_5 {
+    member: f32,
+    member_1: f32,
+    member_2: f32,
+    member_3: f32,
+}
+
+struct type_6 {
+    member: u32,
+    member_1: u32,
+    member_2: u32,
+    member_3: u32,
+    member_4: type_5,
+}
+
+struct type_7 {
+    member: type_6,
+}
+
+struct type_10 {
+    member: array<u32>,
+}
+
+struct type_24 {
+    member: array<atomic<u32>>,
+}
+
+var<private> global: u32;
+var<private> global_1: vec3<u32>;
+var<private> global_2: vec3<u32>;
+var<immediate> global_3: type_7;
+@group(0) @binding(0) 
+var<storage> global_4: type_10;
+var<workgroup> global_5: array<u32, 512>;
+@group(0) @binding(1) 
+var<storage, read_write> global_6: type_24;
+var<private> global_7: u32 = 2143289344u;
+
+fn function_() {
+    var local: u32;
+    var local_1: u32;
+    var local_2: u32;
+    var local_3: u32;
+    var local_4: u32;
+    var local_5: u32;
+    var local_6: u32;
+    var local_7: bool;
+    var local_8: f32;
+    var local_9: u32;
+    var local_10: bool;
+    var local_11: f32;
+    var local_12: f32;
+    var local_13: f32;
+    var local_14: f32;
+    var local_15: u32;
+    var local_16: u32;
+    var local_17: bool;
+    var local_18: u32;
+    var local_19: u32;
+    var local_20: u32;
+    var local_21: u32;
+    var local_22: u32;
+    var local_23: u32;
+    var local_24: u32;
+    var local_25: f32;
+    var local_26: u32;
+    var phi_112_: u32;
+    var phi_115_: u32;
+    var phi_137_: bool;
+    var phi_172_: bool;
+    var phi_200_: f32;
+    var phi_201_: f32;
+    var phi_207_: f32;
+    var phi_209_: f32;
+    var phi_345_: bool;
+    var phi_244_: u32;
+    var phi_113_: u32;
+    var phi_116_: u32;
+    var phi_358_: bool;
+    var phi_253_: u32;
+    var phi_256_: u32;
+    var phi_292_: u32;
+    var phi_254_: u32;
+    var phi_257_: u32;
+    var phi_373_: bool;
+
+    let _e57 = global_7;
+    switch bitcast<i32>(0u) {
+        default: {
+            let _e60 = global;
+            local = _e60;
+            let _e61 = global_1;
+            let _e62 = global_2;
+            local_1 = arrayLength((&global_4.member));
+            local_2 = arrayLength((&global_6.member));
+            local_3 = (_e62.x * 256u);
+            let _e73 = global_3.member.member;
+            let _e76 = global_3.member.member_1;
+            local_4 = (_e73 * _e76);
+            phi_112_ = ((_e61.x * 256u) + _e60);
+            phi_115_ = 0u;
+            loop {
+                let _e80 = phi_112_;
+                let _e82 = phi_115_;
+                local_5 = _e80;
+                local_6 = _e82;
+                let _e83 = local_5;
+                let _e84 = local_4;
+                let _e85 = (_e83 < _e84);
+                local_7 = _e85;
+                if _e85 {
+                    let _e86 = local_5;
+                    let _e87 = local_1;
+                    if (_e86 < _e87) {
+                    } else {
+                        phi_358_ = true;
+                        break;
+                    }
+                    let _e89 = local_5;
+                    let _e92 = global_4.member[_e89];
+                    let _e93 = bitcast<f32>(_e92);
+                    local_8 = _e93;
+                    let _e94 = bitcast<u32>(_e93);
+                    local_9 = _e94;
+                    let _e95 = (_e94 == 0u);
+                    local_10 = _e95;
+                    if _e95 {
+                        phi_137_ = false;
+                    } else {
+                        let _e96 = local_9;
+                        phi_137_ = (_e96 <= 2139095040u);
+                    }
+                    let _e99 = phi_137_;
+                    if _e99 {
+                        let _e102 = global_3.member.member_2;
+                        local_11 = f32(_e102);
+                        let _e104 = local_9;
+                        if (_e104 == 2139095040u) {
+                            let _e109 = global_3.member.member_4.member_1;
+                            let _e114 = global_3.member.member_4.member;
+                            let _e119 = global_3.member.member_4.member_2;
+                            let _e125 = global_3.member.member_4.member_3;
+                            phi_209_ = (0.5f * ((((2f * _e109) * _e114) / (_e119 - _e114)) * _e125));
+                        } else {
+                            let _e128 = local_10;
+                            if _e128 {
+                                phi_172_ = false;
+                            } else {
+                                let _e129 = local_9;
+                                phi_172_ = (_e129 <= 2139095040u);
+                            }
+                            let _e132 = phi_172_;
+                            if _e132 {
+                                let _e136 = global_3.member.member_4.member_1;
+                                let _e141 = global_3.member.member_4.member;
+                                let _e146 = global_3.member.member_4.member_2;
+                                local_12 = _e146;
+                                let _e152 = global_3.member.member_4.member_3;
+                                let _e153 = ((((2f * _e136) * _e141) / (_e146 - _e141)) * _e152);
+                                local_13 = _e153;
+                                if (_e153 == 0f) {
+                                    phi_200_ = 0f;
+                                } else {
+                                    let _e155 = local_12;
+                                    let _e156 = local_8;
+                                    let _e159 = local_13;
+                                    phi_200_ = (_e159 * (1f - (_e155 / _e156)));
+                                }
+                                let _e162 = phi_200_;
+                                phi_201_ = _e162;
+                            } else {
+                                phi_201_ = bitcast<f32>(_e57);
+                            }
+                            let _e164 = phi_201_;
+                            local_14 = _e164;
+                            if (_e164 < 0f) {
+                                let _e166 = local_14;
+                                phi_207_ = -(_e166);
+                            } else {
+                                phi_207_ = _e164;
+                            }
+                            let _e169 = phi_207_;
+                            phi_209_ = (0.5f * _e169);
+                        }
+                        let _e172 = phi_209_;
+                        let _e176 = select(_e172, 0f, ((bitcast<u32>(_e172) & 2147483647u) > 2139095040u));
+                        local_25 = _e176;
+                        if (_e176 != _e176) {
+                            phi_345_ = true;
+                        } else {
+                            let _e178 = local_11;
+                            let _e179 = local_25;
+                            phi_345_ = (_e178 <= _e179);
+                        }
+                        let _e182 = phi_345_;
+                        let _e183 = local_11;
+                        let _e184 = local_25;
+                        let _e185 = select(_e184, _e183, _e182);
+                        let _e190 = select(select(u32(_e185), 0u, (_e185 < 0f)), 4294967295u, (_e185 > 4294967000f));
+                        let _e194 = (_e190 + select(1u, 0u, (f32(_e190) == _e185)));
+                        let _e195 = local_6;
+                        let _e197 = local_6;
+                        phi_244_ = select(_e197, _e194, (_e194 > _e195));
+                    } else {
+                        phi_244_ = _e82;
+                    }
+                    let _e200 = phi_244_;
+                    let _e201 = local_5;
+                    let _e202 = local_3;
+                    phi_113_ = (_e201 + _e202);
+                    phi_116_ = _e200;
+                } else {
+                    phi_113_ = u32();
+                    phi_116_ = u32();
+                }
+                let _e205 = phi_113_;
+                let _e207 = phi_116_;
+                continue;
+                continuing {
+                    let _e208 = local_7;
+                    phi_112_ = _e205;
+                    phi_115_ = _e207;
+                    phi_358_ = false;
+                    break if !(_e208);
+                }
+            }
+            let _e211 = phi_358_;
+            if _e211 {
+                break;
+            }
+            let _e212 = local;
+            if (_e212 < 512u) {
+            } else {
+                break;
+            }
+            let _e214 = local;
+            let _e216 = local_6;
+            global_5[_e214] = _e216;
+            storageBarrier();
+            workgroupBarrier();
+            phi_253_ = 1u;
+            phi_256_ = 0u;
+            loop {
+                let _e218 = phi_253_;
+                let _e220 = phi_256_;
+                local_15 = _e218;
+                local_16 = _e220;
+                let _e221 = local_15;
+                let _e222 = (_e221 < 256u);
+                local_17 = _e222;
+                if _e222 {
+                    let _e223 = local_16;
+                    let _e225 = select(0u, 256u, (_e223 == 0u));
+                    local_26 = _e225;
+                    let _e226 = local_16;
+                    let _e227 = local;
+                    let _e228 = (_e226 + _e227);
+                    local_18 = _e228;
+                    if (_e228 < 512u) {
+                    } else {
+                        phi_373_ = true;
+                        break;
+                    }
+                    let _e230 = local_18;
+                    let _e232 = global_5[_e230];
+                    local_19 = _e232;
+                    let _e233 = local;
+                    let _e234 = local_15;
+                    if (_e233 >= _e234) {
+                        let _e236 = local;
+                        let _e237 = local_15;
+                        let _e239 = local_16;
+                        let _e240 = (_e239 + (_e236 - _e237));
+                        local_20 = _e240;
+                        if (_e240 < 512u) {
+                        } else {
+                            phi_373_ = true;
+                            break;
+                        }
+                        let _e242 = local_20;
+                        let _e244 = global_5[_e242];
+                        let _e245 = local_19;
+                        let _e247 = local_19;
+                        phi_292_ = select(_e247, _e244, (_e244 > _e245));
+                    } else {
+                        phi_292_ = _e232;
+                    }
+                    let _e250 = phi_292_;
+                    local_21 = _e250;
+                    let _e251 = local_26;
+                    let _e252 = local;
+                    let _e253 = (_e251 + _e252);
+                    local_22 = _e253;
+                    if (_e253 < 512u) {
+                    } else {
+                        phi_373_ = true;
+                        break;
+                    }
+                    let _e255 = local_22;
+                    let _e257 = local_21;
+                    global_5[_e255] = _e257;
+                    storageBarrier();
+                    workgroupBarrier();
+                    let _e258 = local_15;
+                    phi_254_ = (_e258 * 2u);
+                    phi_257_ = _e225;
+                } else {
+                    phi_254_ = u32();
+                    phi_257_ = u32();
+                }
+                let _e261 = phi_254_;
+                let _e263 = phi_257_;
+                continue;
+                continuing {
+                    let _e264 = local_17;
+                    phi_253_ = _e261;
+                    phi_256_ = _e263;
+                    phi_373_ = _e211;
+                    break if !(_e264);
+                }
+            }
+            let _e267 = phi_373_;
+            if _e267 {
+                break;
+            }
+            let _e268 = local;
+            if (_e268 == 255u) {
+                let _e270 = local_16;
+                let _e271 = local;
+                let _e272 = (_e270 + _e271);
+                local_23 = _e272;
+                if (_e272 < 512u) {
+                } else {
+                    break;
+                }
+                let _e274 = local_23;
+                let _e276 = global_5[_e274];
+                local_24 = _e276;
+                let _e277 = local_2;
+                if (0u < _e277) {
+                } else {
+                    break;
+                }
+                let _e281 = local_24;
+                let _e282 = atomicMax((&global_6.member[0u]), _e281);
+            }
+            storageBarrier();
+            workgroupBarrier();
+            break;
+        }
+    }
+    return;
+}
+
+@compute @workgroup_size(256, 1, 1) 
+fn gather_plan(@builtin(local_invocation_index) param: u32, @builtin(workgroup_id) param_1: vec3<u32>, @builtin(num_workgroups) param_2: vec3<u32>) {
+    global = param;
+    global_1 = param_1;
+    global_2 = param_2;
+    function_();
+}

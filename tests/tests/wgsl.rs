@@ -1,0 +1,83 @@
+//! The kernels in WGSL (`host/wgsl/`, translated by naga from `host/spirv/` whenever the kernels
+//! are rebuilt): one module per SPIR-V module, from the same kernel sources, each one that naga
+//! parses as WGSL, validates, and writes as MSL (Metal), HLSL (DX12) and SPIR-V (Vulkan), the
+//! languages wgpu hands to drivers.
+
+use dof::shaders::{MODULES, SOURCE_HASH};
+use naga::valid::{Capabilities, ValidationFlags, Validator};
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// `entry point → file` of `host/wgsl/manifest.txt`, and its source hash.
+fn manifest() -> (String, BTreeMap<String, String>) {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../host/wgsl");
+    let text = std::fs::read_to_string(dir.join("manifest.txt")).expect("host/wgsl/manifest.txt");
+    let mut hash = String::new();
+    let mut modules = BTreeMap::new();
+    for line in text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty()) {
+        match line.split_whitespace().collect::<Vec<_>>().as_slice() {
+            ["source-hash", h] => hash = h.to_string(),
+            ["module", entry, file] => {
+                modules.insert(entry.to_string(), std::fs::read_to_string(dir.join(file)).expect(file));
+            }
+            _ => panic!("manifest line {line:?}"),
+        }
+    }
+    (hash, modules)
+}
+
+#[test]
+fn every_kernel_has_its_wgsl_from_the_same_sources() {
+    let (hash, modules) = manifest();
+    assert_eq!(hash, SOURCE_HASH, "host/wgsl/ was translated from other kernel sources than host/spirv/");
+    let spirv: Vec<&str> = MODULES.iter().map(|(entry, _)| *entry).collect();
+    let wgsl: Vec<&str> = modules.keys().map(String::as_str).collect();
+    assert_eq!(wgsl, spirv, "the entry points of host/wgsl/ and host/spirv/");
+}
+
+/// What a wgpu device offers the kernels beyond WGSL's core: push constants ("immediates").
+fn capabilities() -> Capabilities {
+    Capabilities::IMMEDIATES
+}
+
+#[test]
+fn every_kernel_translates_to_msl_hlsl_and_spirv() {
+    let (_, modules) = manifest();
+    let mut failures = Vec::new();
+    for (entry, source) in &modules {
+        let module = match naga::front::wgsl::parse_str(source) {
+            Ok(m) => m,
+            Err(e) => {
+                failures.push(format!("{entry}: WGSL: {}", e.emit_to_string(source)));
+                continue;
+            }
+        };
+        let info = match Validator::new(ValidationFlags::all(), capabilities()).validate(&module) {
+            Ok(info) => info,
+            Err(e) => {
+                failures.push(format!("{entry}: validation: {:?}", e.into_inner()));
+                continue;
+            }
+        };
+        // One entry point, named after the kernel function (naga's namer appends `_` to a name
+        // ending in a digit); pipelines take it as the module's only one.
+        let short = entry.rsplit("::").next().unwrap_or(entry);
+        assert!(matches!(module.entry_points.as_slice(), [only] if only.name.trim_end_matches('_') == short), "{entry}: its entry point");
+
+        // Metal Shading Language 2.0 (macOS 10.13, iOS 11): naga's default, 1.0, has no instance index.
+        let msl = naga::back::msl::Options { lang_version: (2, 0), fake_missing_bindings: true, ..Default::default() };
+        if let Err(e) = naga::back::msl::write_string(&module, &info, &msl, &naga::back::msl::PipelineOptions::default()) {
+            failures.push(format!("{entry}: MSL: {e}"));
+        }
+        let immediates = naga::back::hlsl::BindTarget { space: 0, register: 0, ..Default::default() };
+        let hlsl = naga::back::hlsl::Options { immediates_target: Some(immediates), fake_missing_bindings: true, ..Default::default() };
+        let mut text = String::new();
+        if let Err(e) = naga::back::hlsl::Writer::new(&mut text, &hlsl, &Default::default()).write(&module, &info, None) {
+            failures.push(format!("{entry}: HLSL: {e}"));
+        }
+        if let Err(e) = naga::back::spv::write_vec(&module, &info, &Default::default(), None) {
+            failures.push(format!("{entry}: SPIR-V: {e}"));
+        }
+    }
+    assert!(failures.is_empty(), "{} of {} kernels fail:\n{}", failures.len(), modules.len(), failures.join("\n"));
+}

@@ -15,6 +15,7 @@ pub mod exec;
 #[macro_use]
 pub mod kernel;
 pub mod bokeh;
+pub mod fill;
 pub mod footprint;
 pub mod frame_io;
 pub mod gather;
@@ -47,6 +48,7 @@ pub use kernel::{DrawDesc, KernelBindings, KernelDesc};
 pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
     scan::KERNELS
         .iter()
+        .chain(fill::KERNELS.iter())
         .chain(sort::KERNELS.iter())
         .chain(gather::KERNELS.iter())
         .chain(ring_gather::KERNELS.iter())

@@ -2,7 +2,7 @@
 
 pub mod renderer;
 
-use dof::backend::{VulkanBackend, VulkanOptions};
+use dof::backend::{VulkanBackend, VulkanOptions, WgpuBackend, WgpuOptions};
 use dof::layers::RgbImage;
 use dof::ops::sort::{SortInput, SortOutput};
 
@@ -23,6 +23,21 @@ pub fn vulkan_with(options: VulkanOptions) -> Option<VulkanBackend> {
     match VulkanBackend::new(&options) {
         Ok(vk) => Some(vk),
         Err(e) => panic!("Vulkan is required for this test (set DOF_SKIP_VULKAN=1 to skip on purpose): {e}"),
+    }
+}
+
+/// The wgpu backend on wgpu's Vulkan backend (lavapipe in CI).
+///
+/// As with [`vulkan`], a missing device fails the test with the reason; `DOF_SKIP_WGPU=1` skips on
+/// purpose, and says so.
+pub fn wgpu() -> Option<WgpuBackend> {
+    if std::env::var_os("DOF_SKIP_WGPU").is_some_and(|v| v == "1") {
+        eprintln!("DOF_SKIP_WGPU=1: skipping a wgpu test on purpose");
+        return None;
+    }
+    match WgpuBackend::new(&WgpuOptions { backends: wgpu::Backends::VULKAN, ..Default::default() }) {
+        Ok(backend) => Some(backend),
+        Err(e) => panic!("wgpu on Vulkan is required for this test (set DOF_SKIP_WGPU=1 to skip on purpose): {e}"),
     }
 }
 

@@ -15,7 +15,7 @@ mod non_finite;
 
 /// WGSL for the module of one entry point.
 pub fn translate(entry: &str, spirv: &[u8]) -> Result<String, String> {
-    let words: Vec<u32> = spirv.chunks_exact(4).map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]])).collect();
+    let words: Vec<u32> = spirv.as_chunks::<4>().0.iter().map(|w| u32::from_le_bytes(*w)).collect();
     let mut module = rspirv::dr::load_words(&words).map_err(|e| format!("{entry}: cannot load the SPIR-V: {e}"))?;
     non_finite::make_non_finite_constants_runtime(&mut module).map_err(|e| format!("{entry}: {e}"))?;
     cross_block::spill_cross_block_values(&mut module).map_err(|e| format!("{entry}: {e}"))?;

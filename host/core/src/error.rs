@@ -20,6 +20,15 @@ pub enum Error {
     #[cfg(feature = "vulkan")]
     #[error("Vulkan call {call} failed: {result}")]
     Vulkan { call: &'static str, result: ash::vk::Result },
+    /// No device of the kind asked for (the wgpu backend: no adapter, or one without a feature the
+    /// kernels need).
+    #[cfg(feature = "wgpu")]
+    #[error("no usable device: {0}")]
+    NoDevice(String),
+    /// The device reported an error (the wgpu backend: a validation error, a lost device).
+    #[cfg(feature = "wgpu")]
+    #[error("device error: {0}")]
+    Device(String),
     #[error("GPU memory allocation failed: {0}")]
     Allocation(String),
     #[error("kernel `{kernel}` faulted on the CPU backend (an out-of-bounds access): {message}")]

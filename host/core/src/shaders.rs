@@ -3,6 +3,8 @@
 //! modules are not stale).
 
 include!(concat!(env!("OUT_DIR"), "/spirv_modules.rs"));
+#[cfg(feature = "wgpu")]
+include!(concat!(env!("OUT_DIR"), "/wgsl_modules.rs"));
 
 /// SHA-256 over the kernel crate's sources (`host/core/build/source_hash.rs`) when the modules were
 /// built.
@@ -14,6 +16,12 @@ pub fn module_words(entry: &str) -> Option<Vec<u32>> {
         .iter()
         .find(|(name, _)| *name == entry)
         .map(|(_, bytes)| bytes.as_chunks::<4>().0.iter().map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect())
+}
+
+/// The WGSL module holding `entry` (`host/wgsl/`), as the wgpu backend takes it.
+#[cfg(feature = "wgpu")]
+pub fn wgsl_module(entry: &str) -> Option<&'static str> {
+    WGSL_MODULES.iter().find(|(name, _)| *name == entry).map(|(_, source)| *source)
 }
 
 /// Total size of the embedded modules in bytes.

@@ -24,6 +24,8 @@ mod retire;
 mod run;
 #[cfg(feature = "vulkan")]
 pub mod vulkan;
+#[cfg(feature = "wgpu")]
+pub mod wgpu;
 
 pub use access::{Access, Hazards, Resource};
 pub use cpu::CpuBackend;
@@ -33,6 +35,8 @@ pub(crate) use image::format_names;
 pub use image::{ImageFormat, ImageRef};
 pub use retire::RetireQueue;
 pub use run::RunKernel;
+#[cfg(feature = "wgpu")]
+pub use self::wgpu::{WgpuBackend, WgpuOptions};
 #[cfg(feature = "vulkan")]
 pub use vulkan::{DRAWS_ENV, DrawPath, External, PipelineStatistic, RawDevice, RawOptions, RequiredFeatures, VulkanBackend, VulkanOptions};
 
@@ -77,6 +81,7 @@ pub struct Limits {
 pub enum BackendKind {
     Cpu,
     Vulkan,
+    Wgpu,
 }
 
 impl std::fmt::Display for BackendKind {
@@ -84,6 +89,7 @@ impl std::fmt::Display for BackendKind {
         f.write_str(match self {
             BackendKind::Cpu => "cpu",
             BackendKind::Vulkan => "vulkan",
+            BackendKind::Wgpu => "wgpu",
         })
     }
 }

@@ -1,0 +1,446 @@
+//! The wgpu backend: the kernels as WGSL (`host/wgsl/`, naga's translation of the SPIR-V the Vulkan
+//! backend runs) on any device wgpu drives: Vulkan, Metal, DX12 and GL.
+//!
+//! What it does as the other backends do: every kernel, with its push constants as wgpu's
+//! immediates; indirect dispatches; draws through their compute fallbacks. Each dispatch is a
+//! compute pass of its own, and wgpu places the barriers between them. What it does differently:
+//! - `fill` with zero is the encoder's clear; another value runs the `fill_words` kernel;
+//! - nothing is timed: every command's time, and every span's, is NaN;
+//! - wgpu's barriers are its own, so `barriers` in the counters stays 0;
+//! - no images: a frame's input and output are buffers.
+//!
+//! wgpu reports a misuse it catches through its error handler, not the call: the backend gathers
+//! those messages and fails the next `submit`, `read_buffer` or `write_buffer` with them.
+
+use super::{Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, Limits, RetireQueue, check_dispatch};
+use crate::error::{Error, Result};
+use dof_shaders::KernelDesc;
+use dof_shaders::fill::{FILL, FillParams, THREADS as FILL_THREADS};
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
+
+/// What device a [`WgpuBackend`] asks wgpu for.
+#[derive(Clone, Debug)]
+pub struct WgpuOptions {
+    /// The APIs wgpu may use; by default those `WGPU_BACKEND` names, or all.
+    pub backends: wgpu::Backends,
+    pub power_preference: wgpu::PowerPreference,
+}
+
+impl Default for WgpuOptions {
+    fn default() -> Self {
+        WgpuOptions { backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::all()), power_preference: wgpu::PowerPreference::HighPerformance }
+    }
+}
+
+struct WgpuBuffer {
+    buffer: wgpu::Buffer,
+    words: u64,
+}
+
+/// How many workgroups a dispatch runs.
+enum Groups {
+    Direct([u32; 3]),
+    /// Read on the device from `args[offset .. offset + 3]` (words).
+    Indirect(BufferId, u64),
+}
+
+struct Pipeline {
+    pipeline: wgpu::ComputePipeline,
+    layout: wgpu::BindGroupLayout,
+}
+
+pub struct WgpuBackend {
+    id: BackendId,
+    limits: Limits,
+    info: wgpu::AdapterInfo,
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    buffers: Vec<Option<WgpuBuffer>>,
+    pipelines: HashMap<&'static str, Pipeline>,
+    /// Commands recorded since the last submission.
+    encoder: Option<wgpu::CommandEncoder>,
+    /// The labels and kernels of the recorded commands (their times, NaN, at `submit`).
+    recorded: Vec<(String, &'static str)>,
+    /// What wgpu's error handler reported since the last check.
+    errors: Arc<Mutex<Vec<String>>>,
+    counters: BackendCounters,
+    budget: Option<u64>,
+    retire: RetireQueue,
+}
+
+impl WgpuBackend {
+    /// A device of the first adapter wgpu offers for `options`.
+    pub fn new(options: &WgpuOptions) -> Result<Self> {
+        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor { backends: options.backends, ..wgpu::InstanceDescriptor::new_without_display_handle() });
+        let adapter_options = wgpu::RequestAdapterOptions { power_preference: options.power_preference, ..Default::default() };
+        let adapter = pollster::block_on(instance.request_adapter(&adapter_options))
+            .map_err(|e| Error::NoDevice(format!("wgpu offers no adapter for {:?}: {e}", options.backends)))?;
+        let info = adapter.get_info();
+        if !adapter.features().contains(wgpu::Features::IMMEDIATES) {
+            return Err(Error::NoDevice(format!("{} ({:?}) has no immediates (push constants), which every kernel reads", info.name, info.backend)));
+        }
+        let descriptor = wgpu::DeviceDescriptor {
+            label: Some("dof"),
+            required_features: wgpu::Features::IMMEDIATES,
+            required_limits: adapter.limits(),
+            ..Default::default()
+        };
+        let (device, queue) = pollster::block_on(adapter.request_device(&descriptor))
+            .map_err(|e| Error::NoDevice(format!("{} ({:?}) refuses a device: {e}", info.name, info.backend)))?;
+        Ok(Self::from_device(device, queue, info))
+    }
+
+    /// A backend on a device the caller made (with [`wgpu::Features::IMMEDIATES`]); `info` is its
+    /// adapter's.
+    pub fn from_device(device: wgpu::Device, queue: wgpu::Queue, info: wgpu::AdapterInfo) -> Self {
+        let errors = Arc::new(Mutex::new(Vec::new()));
+        let sink = errors.clone();
+        device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
+            if let Ok(mut errors) = sink.lock() {
+                errors.push(e.to_string());
+            }
+        }));
+        let l = device.limits();
+        let limits = Limits {
+            max_shared_bytes: l.max_compute_workgroup_storage_size,
+            max_workgroup_invocations: l.max_compute_invocations_per_workgroup,
+            max_workgroup_count: [l.max_compute_workgroups_per_dimension; 3],
+            subgroup_size: (info.subgroup_min_size == info.subgroup_max_size).then_some(info.subgroup_min_size),
+            max_buffer_bytes: l.max_buffer_size.min(l.max_storage_buffer_binding_size),
+            serial_invocations: false,
+        };
+        WgpuBackend {
+            id: BackendId::fresh(),
+            limits,
+            info,
+            device,
+            queue,
+            buffers: Vec::new(),
+            pipelines: HashMap::new(),
+            encoder: None,
+            recorded: Vec::new(),
+            errors,
+            counters: BackendCounters::default(),
+            budget: None,
+            retire: RetireQueue::default(),
+        }
+    }
+
+    pub fn device(&self) -> &wgpu::Device {
+        &self.device
+    }
+
+    pub fn queue(&self) -> &wgpu::Queue {
+        &self.queue
+    }
+
+    fn buffer(&self, id: BufferId) -> Result<&WgpuBuffer> {
+        self.buffers.get(id.0 as usize).and_then(Option::as_ref).ok_or_else(|| Error::InvalidArgument(format!("unknown buffer {}", id.0)))
+    }
+
+    fn check_range(&self, id: BufferId, offset: u64, words: u64) -> Result<()> {
+        let buffer = self.buffer(id)?;
+        match offset.checked_add(words) {
+            Some(end) if end <= buffer.words => Ok(()),
+            _ => Err(Error::InvalidArgument(format!("range {offset}..{offset}+{words} outside buffer {} of {} words", id.0, buffer.words))),
+        }
+    }
+
+    /// Fails with what wgpu reported since the last check.
+    fn check_errors(&self) -> Result<()> {
+        let mut errors = self.errors.lock().map_err(|_| Error::Device("wgpu's error list is poisoned".into()))?;
+        if errors.is_empty() {
+            return Ok(());
+        }
+        let all = std::mem::take(&mut *errors);
+        Err(Error::Device(format!("wgpu reported {} error(s):\n{}", all.len(), all.join("\n"))))
+    }
+
+    fn encoder(&mut self) -> &mut wgpu::CommandEncoder {
+        self.encoder.get_or_insert_with(|| self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("dof") }))
+    }
+
+    /// Submits what is recorded and waits for it.
+    fn flush(&mut self) -> Result<()> {
+        if let Some(encoder) = self.encoder.take() {
+            self.queue.submit([encoder.finish()]);
+            self.counters.submissions += 1;
+            self.wait()?;
+        }
+        self.check_errors()
+    }
+
+    fn wait(&self) -> Result<()> {
+        self.device
+            .poll(wgpu::PollType::Wait { submission_index: None, timeout: None })
+            .map(|_| ())
+            .map_err(|e| Error::Device(format!("waiting for the device: {e}")))
+    }
+
+    fn pipeline(&mut self, kernel: &'static KernelDesc) -> Result<&Pipeline> {
+        if !self.pipelines.contains_key(kernel.entry) {
+            let pipeline = self.create_pipeline(kernel)?;
+            self.pipelines.insert(kernel.entry, pipeline);
+        }
+        self.pipelines.get(kernel.entry).ok_or_else(|| Error::Device(format!("no pipeline for {}", kernel.entry)))
+    }
+
+    fn create_pipeline(&self, kernel: &'static KernelDesc) -> Result<Pipeline> {
+        let source = crate::shaders::wgsl_module(kernel.entry)
+            .ok_or_else(|| Error::InvalidArgument(format!("kernel {} has no WGSL module (host/wgsl/)", kernel.entry)))?;
+        let entries: Vec<wgpu::BindGroupLayoutEntry> = (0..kernel.bindings)
+            .map(|binding| wgpu::BindGroupLayoutEntry {
+                binding,
+                visibility: wgpu::ShaderStages::COMPUTE,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Storage { read_only: kernel.read_only & (1 << binding) != 0 },
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            })
+            .collect();
+        let layout = self.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(kernel.entry), entries: &entries });
+        let pipeline_layout = self.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(kernel.entry),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: kernel.push_bytes.next_multiple_of(4),
+        });
+        let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(kernel.entry), source: wgpu::ShaderSource::Wgsl(source.into()) });
+        let pipeline = self.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(kernel.entry),
+            layout: Some(&pipeline_layout),
+            module: &module,
+            entry_point: None,
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        self.check_errors().map_err(|e| Error::Device(format!("the pipeline of {}: {e}", kernel.entry)))?;
+        Ok(Pipeline { pipeline, layout })
+    }
+
+    /// Records one dispatch of `kernel`, direct (`groups`) or indirect (`args` at a word offset).
+    fn record_dispatch(
+        &mut self,
+        kernel: &'static KernelDesc,
+        groups: Groups,
+        buffers: &[BufferId],
+        push: &[u32],
+        label: &str,
+    ) -> Result<()> {
+        let bound: Vec<wgpu::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.buffer.clone())).collect::<Result<_>>()?;
+        let indirect = match groups {
+            Groups::Indirect(args, offset) => Some((self.buffer(args)?.buffer.clone(), offset * 4)),
+            Groups::Direct(_) => None,
+        };
+        let layout = self.pipeline(kernel)?.layout.clone();
+        let pipeline = self.pipeline(kernel)?.pipeline.clone();
+        let entries: Vec<wgpu::BindGroupEntry> =
+            bound.iter().enumerate().map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() }).collect();
+        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout: &layout, entries: &entries });
+        let immediates: Vec<u8> = bytemuck::cast_slice(push).iter().copied().take(kernel.push_bytes.next_multiple_of(4) as usize).collect();
+        let encoder = self.encoder();
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(label), timestamp_writes: None });
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &bind_group, &[]);
+        if !immediates.is_empty() {
+            pass.set_immediates(0, &immediates);
+        }
+        match (groups, indirect) {
+            (Groups::Direct([x, y, z]), _) => pass.dispatch_workgroups(x, y, z),
+            (Groups::Indirect(..), Some((args, offset))) => pass.dispatch_workgroups_indirect(&args, offset),
+            (Groups::Indirect(..), None) => {}
+        }
+        drop(pass);
+        self.counters.commands += 1;
+        self.counters.dispatches += 1;
+        self.recorded.push((label.to_string(), kernel.entry));
+        Ok(())
+    }
+}
+
+impl Backend for WgpuBackend {
+    fn kind(&self) -> BackendKind {
+        BackendKind::Wgpu
+    }
+
+    fn id(&self) -> BackendId {
+        self.id
+    }
+
+    fn device_name(&self) -> String {
+        format!("{} (wgpu, {:?})", self.info.name, self.info.backend)
+    }
+
+    fn driver(&self) -> String {
+        format!("{} {}", self.info.driver, self.info.driver_info).trim().to_string()
+    }
+
+    fn limits(&self) -> &Limits {
+        &self.limits
+    }
+
+    fn retire_queue(&self) -> RetireQueue {
+        self.retire.clone()
+    }
+
+    fn release_finished(&mut self) -> Result<u64> {
+        // wgpu keeps a dropped buffer alive until the device is done with it.
+        let before = self.counters.device_bytes;
+        self.retire.take().into_iter().for_each(|id| self.destroy_buffer(id));
+        Ok(before - self.counters.device_bytes)
+    }
+
+    fn create_buffer(&mut self, words: u64, label: &str) -> Result<BufferId> {
+        self.release_finished()?;
+        let bytes = words.max(1) * 4;
+        if bytes > self.limits.max_buffer_bytes {
+            return Err(Error::TooLarge { what: format!("buffer `{label}` on {}", self.info.name), size: bytes, limit: self.limits.max_buffer_bytes });
+        }
+        self.counters.check_budget(self.budget, bytes, label)?;
+        // wgpu zeroes new buffers.
+        let buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(label),
+            size: bytes,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::INDIRECT | wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        self.check_errors()?;
+        let slot = self.buffers.iter().position(Option::is_none).unwrap_or(self.buffers.len());
+        if slot == self.buffers.len() {
+            self.buffers.push(None);
+        }
+        self.buffers[slot] = Some(WgpuBuffer { buffer, words: bytes / 4 });
+        self.counters.add_buffer(bytes);
+        Ok(BufferId(slot as u32))
+    }
+
+    fn destroy_buffer(&mut self, buffer: BufferId) {
+        if let Some(slot) = self.buffers.get_mut(buffer.0 as usize)
+            && let Some(b) = slot.take()
+        {
+            self.counters.remove_buffer(b.words * 4);
+        }
+    }
+
+    fn buffer_words(&self, buffer: BufferId) -> Result<u64> {
+        Ok(self.buffer(buffer)?.words)
+    }
+
+    fn write_buffer(&mut self, buffer: BufferId, offset_words: u64, data: &[u32]) -> Result<()> {
+        self.check_range(buffer, offset_words, data.len() as u64)?;
+        self.flush()?;
+        // Lands before the commands of the next submission, after those of the last.
+        self.queue.write_buffer(&self.buffer(buffer)?.buffer, offset_words * 4, bytemuck::cast_slice(data));
+        self.counters.uploads += 1;
+        Ok(())
+    }
+
+    fn read_buffer(&mut self, buffer: BufferId, offset_words: u64, words: u64) -> Result<Vec<u32>> {
+        self.check_range(buffer, offset_words, words)?;
+        if words == 0 {
+            self.counters.readbacks += 1;
+            return Ok(Vec::new());
+        }
+        let staging = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("dof readback"),
+            size: words * 4,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let source = self.buffer(buffer)?.buffer.clone();
+        self.encoder().copy_buffer_to_buffer(&source, offset_words * 4, &staging, 0, words * 4);
+        self.flush()?;
+        let mapped = Arc::new(Mutex::new(None));
+        let done = mapped.clone();
+        staging.map_async(wgpu::MapMode::Read, .., move |result| {
+            if let Ok(mut slot) = done.lock() {
+                *slot = Some(result);
+            }
+        });
+        self.wait()?;
+        let outcome = mapped.lock().map_err(|_| Error::Device("the readback's state is poisoned".into()))?.take();
+        match outcome {
+            Some(Ok(())) => {}
+            Some(Err(e)) => return Err(Error::Device(format!("mapping the readback: {e}"))),
+            None => return Err(Error::Device("the readback was not mapped after the device went idle".into())),
+        }
+        let view = staging.get_mapped_range(..).map_err(|e| Error::Device(format!("reading the readback: {e}")))?;
+        let out: Vec<u32> = view.as_chunks::<4>().0.iter().map(|w| u32::from_le_bytes(*w)).collect();
+        drop(view);
+        staging.unmap();
+        self.counters.readbacks += 1;
+        Ok(out)
+    }
+
+    fn fill(&mut self, buffer: BufferId, offset_words: u64, words: u64, value: u32, label: &str) -> Result<()> {
+        self.check_range(buffer, offset_words, words)?;
+        if value != 0 {
+            let (Ok(offset), Ok(count)) = (u32::try_from(offset_words), u32::try_from(words)) else {
+                return Err(Error::InvalidArgument(format!("fill `{label}` of a non-zero value beyond 2^32 words")));
+            };
+            let groups = count.div_ceil(FILL_THREADS).clamp(1, self.limits.max_workgroup_count[0]);
+            let params = FillParams { offset, words: count, value };
+            return self.dispatch(&FILL, [groups, 1, 1], &[buffer], bytemuck::cast_slice(&[params]), label);
+        }
+        let target = self.buffer(buffer)?.buffer.clone();
+        self.encoder().clear_buffer(&target, offset_words * 4, Some(words * 4));
+        self.counters.commands += 1;
+        self.recorded.push((label.to_string(), "fill"));
+        Ok(())
+    }
+
+    fn dispatch(&mut self, kernel: &'static KernelDesc, groups: [u32; 3], buffers: &[BufferId], push: &[u32], label: &str) -> Result<()> {
+        check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), push.len())?;
+        self.record_dispatch(kernel, Groups::Direct(groups), buffers, push, label)?;
+        if groups.contains(&0) {
+            self.counters.empty_dispatches += 1;
+        }
+        Ok(())
+    }
+
+    fn dispatch_indirect(
+        &mut self,
+        kernel: &'static KernelDesc,
+        args: BufferId,
+        args_offset_words: u64,
+        buffers: &[BufferId],
+        push: &[u32],
+        label: &str,
+    ) -> Result<()> {
+        check_dispatch(&self.limits, kernel, None, buffers.len(), push.len())?;
+        self.check_range(args, args_offset_words, 3)?;
+        self.record_dispatch(kernel, Groups::Indirect(args, args_offset_words), buffers, push, label)
+    }
+
+    fn submit(&mut self) -> Result<Vec<CommandTime>> {
+        self.release_finished()?;
+        let recorded = std::mem::take(&mut self.recorded);
+        self.flush()?;
+        Ok(recorded.into_iter().map(|(label, kernel)| CommandTime { label, kernel, ms: f64::NAN }).collect())
+    }
+
+    fn counters(&self) -> BackendCounters {
+        self.counters
+    }
+
+    fn reset_peak_device_bytes(&mut self) {
+        self.counters.reset_peak();
+    }
+
+    fn set_memory_budget(&mut self, budget: Option<u64>) {
+        self.budget = budget;
+    }
+
+    fn prepare(&mut self, kernels: &[&'static KernelDesc], draws: &[&'static dof_shaders::DrawDesc]) -> Result<()> {
+        for kernel in kernels.iter().copied().chain(draws.iter().flat_map(|d| [Some(d.fallback), d.fallback_prepass]).flatten()) {
+            self.pipeline(kernel)?;
+        }
+        Ok(())
+    }
+
+    fn take_diagnostics(&mut self) -> Vec<String> {
+        self.errors.lock().map(|mut e| std::mem::take(&mut *e)).unwrap_or_default()
+    }
+}

@@ -1,0 +1,75 @@
+//! The wgpu backend (on wgpu's Vulkan backend, lavapipe in CI) against the CPU backend: the
+//! backend's own commands, the sort and scan, and every method of the registry.
+
+use dof::backend::{Backend, CpuBackend};
+use dof::frame::{METHODS, MethodOptions};
+use dof::methods::one_shot::one_shot;
+use dof::ops::scan::exclusive_scan;
+use dof::ops::sort::sort_on_with;
+use dof::stress::{noise_with_sky, test_lens};
+use dof::workload::{lists_with, random_key};
+use dof_tests::wgpu;
+use rand::SeedableRng;
+use rand_pcg::Pcg64;
+
+#[test]
+fn buffers_fills_and_transfers() {
+    let Some(mut g) = wgpu() else { return };
+    let a = g.create_buffer(40, "a").unwrap();
+    assert_eq!(g.read_buffer(a, 0, 40).unwrap(), vec![0; 40], "new buffers are zero");
+    let data: Vec<u32> = (0..40).map(|i| i * 3 + 1).collect();
+    g.write_buffer(a, 0, &data).unwrap();
+    g.fill(a, 10, 5, 7, "seven").unwrap();
+    g.fill(a, 20, 3, 0, "zero").unwrap();
+    g.submit().unwrap();
+    let mut want = data.clone();
+    want[10..15].fill(7);
+    want[20..23].fill(0);
+    assert_eq!(g.read_buffer(a, 0, 40).unwrap(), want);
+    assert_eq!(g.read_buffer(a, 38, 2).unwrap(), want[38..]);
+    assert!(g.read_buffer(a, 39, 2).is_err(), "a range beyond the buffer");
+    assert!(g.fill(a, 39, 2, 1, "beyond").is_err());
+    g.destroy_buffer(a);
+    assert_eq!(g.counters().device_bytes, 0);
+    assert!(g.take_diagnostics().is_empty());
+}
+
+#[test]
+fn sort_and_scan_match_the_cpu_bit_for_bit() {
+    let Some(mut g) = wgpu() else { return };
+    let mut cpu = CpuBackend::with_shared_bytes(g.limits().max_shared_bytes);
+    let mut rng = Pcg64::seed_from_u64(21);
+    let input = lists_with(&[0, 1, 3, 64, 65, 300, 1000, 2048, 4097, 9000, 40_000], |_, _| random_key(&mut rng));
+    let on_gpu = sort_on_with(&mut g, &input, None).expect("sort on wgpu");
+    let on_cpu = sort_on_with(&mut cpu, &input, Some(false)).expect("sort on the CPU");
+    let bits = |k: &[f32]| k.iter().map(|k| k.to_bits()).collect::<Vec<_>>();
+    assert!(bits(&on_gpu.keys) == bits(&on_cpu.keys) && on_gpu.values == on_cpu.values, "the sorts differ");
+
+    let words: Vec<u32> = (0..300_000u32).map(|i| i.wrapping_mul(2_654_435_761) >> 20).collect();
+    assert!(exclusive_scan(&mut g, &words).unwrap() == exclusive_scan(&mut cpu, &words).unwrap(), "the scans differ");
+    assert!(g.take_diagnostics().is_empty());
+}
+
+/// Every registered method, one frame through the one-shot path, on both backends: the same image,
+/// bit for bit.
+#[test]
+fn every_method_matches_the_cpu() {
+    let Some(mut g) = wgpu() else { return };
+    let mut cpu = CpuBackend::with_shared_bytes(g.limits().max_shared_bytes);
+    let image = noise_with_sky(48, 32, 3);
+    let lens = test_lens(0.02);
+    let mut differing = Vec::new();
+    for m in METHODS {
+        let on_gpu = one_shot(&mut g, m, &MethodOptions::default(), &image, &lens).unwrap_or_else(|e| panic!("{} on wgpu: {e}", m.name));
+        let on_cpu = one_shot(&mut cpu, m, &MethodOptions::default(), &image, &lens).unwrap_or_else(|e| panic!("{} on the CPU: {e}", m.name));
+        let (a, b) = (on_gpu.image.data.as_flattened(), on_cpu.image.data.as_flattened());
+        let differ = a.iter().zip(b).filter(|(x, y)| x.to_bits() != y.to_bits()).count();
+        let largest = a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0f32, f32::max);
+        if differ > 0 {
+            differing.push(format!("{}: {differ} of {} values differ, by at most {largest:e}", m.name, a.len()));
+        }
+    }
+    assert!(differing.is_empty(), "methods whose wgpu image differs from the CPU's:\n{}", differing.join("\n"));
+    assert_eq!(g.counters().device_bytes, 0, "every context freed");
+    assert!(g.take_diagnostics().is_empty());
+}

@@ -640,10 +640,10 @@ fn function_() {
                                 let _e438 = local_25;
                                 phi_879_ = _e437;
                                 phi_315_ = (_e438 + 1i);
-                                let _e727 = local_58;
-                                phi_318_ = _e727;
-                                let _e730 = local_59;
-                                phi_320_ = _e730;
+                                let _e728 = local_58;
+                                phi_318_ = _e728;
+                                let _e731 = local_59;
+                                phi_320_ = _e731;
                             } else {
                                 phi_879_ = _e237;
                                 phi_315_ = i32();
@@ -749,152 +749,152 @@ fn function_() {
                         local_56 = _e550;
                         let _e553 = global_5.member.member_6;
                         local_51 = _e553;
-                        if (_e550 != _e550) {
+                        if !((_e550 == _e550)) {
                             phi_813_ = true;
                         } else {
-                            let _e555 = local_51;
-                            let _e556 = local_56;
-                            phi_813_ = (_e555 <= _e556);
+                            let _e556 = local_51;
+                            let _e557 = local_56;
+                            phi_813_ = (_e556 <= _e557);
                         }
-                        let _e559 = phi_813_;
-                        let _e560 = local_51;
-                        let _e561 = local_56;
-                        local_57 = select(_e561, _e560, _e559);
-                        let _e563 = local_21;
-                        if ((bitcast<u32>(_e563) & 2139095040u) != 2139095040u) {
-                            let _e567 = local_22;
-                            let _e570 = ((bitcast<u32>(_e567) & 2139095040u) != 2139095040u);
-                            local_52 = _e570;
-                            if _e570 {
-                                let _e571 = local_23;
-                                phi_693_ = ((bitcast<u32>(_e571) & 2139095040u) != 2139095040u);
+                        let _e560 = phi_813_;
+                        let _e561 = local_51;
+                        let _e562 = local_56;
+                        local_57 = select(_e562, _e561, _e560);
+                        let _e564 = local_21;
+                        if ((bitcast<u32>(_e564) & 2139095040u) != 2139095040u) {
+                            let _e568 = local_22;
+                            let _e571 = ((bitcast<u32>(_e568) & 2139095040u) != 2139095040u);
+                            local_52 = _e571;
+                            if _e571 {
+                                let _e572 = local_23;
+                                phi_693_ = ((bitcast<u32>(_e572) & 2139095040u) != 2139095040u);
                             } else {
                                 phi_693_ = bool();
                             }
-                            let _e576 = phi_693_;
-                            let _e577 = local_52;
-                            phi_695_ = _e576;
-                            phi_696_ = select(true, false, _e577);
+                            let _e577 = phi_693_;
+                            let _e578 = local_52;
+                            phi_695_ = _e577;
+                            phi_696_ = select(true, false, _e578);
                         } else {
                             phi_695_ = bool();
                             phi_696_ = true;
                         }
-                        let _e580 = phi_695_;
-                        let _e582 = phi_696_;
-                        if select(_e580, false, _e582) {
-                            let _e584 = local_47;
-                            if (_e584 == 0u) {
+                        let _e581 = phi_695_;
+                        let _e583 = phi_696_;
+                        if select(_e581, false, _e583) {
+                            let _e585 = local_47;
+                            if (_e585 == 0u) {
                                 phi_710_ = false;
                             } else {
-                                let _e586 = local_47;
-                                phi_710_ = (_e586 <= 2139095040u);
+                                let _e587 = local_47;
+                                phi_710_ = (_e587 <= 2139095040u);
                             }
-                            let _e589 = phi_710_;
-                            if _e589 {
-                                let _e590 = local_21;
-                                let _e592 = local_22;
-                                let _e595 = local_23;
-                                let _e598 = local_45;
-                                let _e601 = local_45;
-                                let _e605 = local_45;
-                                let _e612 = global_5.member.member_4;
-                                if (((((0.2126f * _e590) + (0.7152f * _e592)) + (0.0722f * _e595)) - (((0.2126f * _e598[0]) + (0.7152f * _e601[1])) + (0.0722f * _e605[2]))) > _e612) {
-                                    let _e616 = global_5.member.member_5;
-                                    let _e617 = local_57;
-                                    let _e618 = (_e617 > _e616);
-                                    local_53 = _e618;
-                                    if _e618 {
-                                        let _e619 = local_24;
-                                        let _e620 = local_45;
-                                        let _e621 = local_57;
-                                        let _e622 = local_46;
-                                        phi_742_ = type_21(1u, type_20(_e619, _e620, _e621, _e622));
+                            let _e590 = phi_710_;
+                            if _e590 {
+                                let _e591 = local_21;
+                                let _e593 = local_22;
+                                let _e596 = local_23;
+                                let _e599 = local_45;
+                                let _e602 = local_45;
+                                let _e606 = local_45;
+                                let _e613 = global_5.member.member_4;
+                                if (((((0.2126f * _e591) + (0.7152f * _e593)) + (0.0722f * _e596)) - (((0.2126f * _e599[0]) + (0.7152f * _e602[1])) + (0.0722f * _e606[2]))) > _e613) {
+                                    let _e617 = global_5.member.member_5;
+                                    let _e618 = local_57;
+                                    let _e619 = (_e618 > _e617);
+                                    local_53 = _e619;
+                                    if _e619 {
+                                        let _e620 = local_24;
+                                        let _e621 = local_45;
+                                        let _e622 = local_57;
+                                        let _e623 = local_46;
+                                        phi_742_ = type_21(1u, type_20(_e620, _e621, _e622, _e623));
                                     } else {
                                         phi_742_ = type_21();
                                     }
-                                    let _e626 = phi_742_;
-                                    let _e627 = local_53;
-                                    phi_744_ = _e626;
-                                    phi_745_ = select(true, false, _e627);
+                                    let _e627 = phi_742_;
+                                    let _e628 = local_53;
+                                    phi_744_ = _e627;
+                                    phi_745_ = select(true, false, _e628);
                                 } else {
                                     phi_744_ = type_21();
                                     phi_745_ = true;
                                 }
-                                let _e630 = phi_744_;
-                                let _e632 = phi_745_;
-                                phi_746_ = _e630;
-                                phi_747_ = _e632;
+                                let _e631 = phi_744_;
+                                let _e633 = phi_745_;
+                                phi_746_ = _e631;
+                                phi_747_ = _e633;
                             } else {
                                 phi_746_ = type_21();
                                 phi_747_ = true;
                             }
-                            let _e634 = phi_746_;
-                            let _e636 = phi_747_;
-                            phi_748_ = _e634;
-                            phi_749_ = _e636;
+                            let _e635 = phi_746_;
+                            let _e637 = phi_747_;
+                            phi_748_ = _e635;
+                            phi_749_ = _e637;
                         } else {
                             phi_748_ = type_21();
                             phi_749_ = true;
                         }
-                        let _e638 = phi_748_;
-                        let _e640 = phi_749_;
-                        if _e640 {
+                        let _e639 = phi_748_;
+                        let _e641 = phi_749_;
+                        if _e641 {
                             phi_754_ = type_21(0u, type_21().member_1);
                         } else {
-                            phi_754_ = _e638;
+                            phi_754_ = _e639;
                         }
-                        let _e645 = phi_754_;
-                        let _e648 = (bitcast<i32>(_e645.member) == 1i);
-                        local_54 = _e648;
-                        if _e648 {
-                            let _e649 = local_4;
-                            if (4u < _e649) {
+                        let _e646 = phi_754_;
+                        let _e649 = (bitcast<i32>(_e646.member) == 1i);
+                        local_54 = _e649;
+                        if _e649 {
+                            let _e650 = local_4;
+                            if (4u < _e650) {
                             } else {
                                 phi_880_ = true;
                                 break;
                             }
-                            let _e653 = atomicAdd((&global_7.member[4u]), 1u);
+                            let _e654 = atomicAdd((&global_7.member[4u]), 1u);
                         }
-                        let _e654 = local_54;
-                        local_55 = select(0u, 1u, _e654);
-                        let _e656 = local_11;
-                        let _e657 = local_3;
-                        if (_e656 < _e657) {
+                        let _e655 = local_54;
+                        local_55 = select(0u, 1u, _e655);
+                        let _e657 = local_11;
+                        let _e658 = local_3;
+                        if (_e657 < _e658) {
                         } else {
                             phi_880_ = true;
                             break;
                         }
-                        let _e659 = local_11;
-                        let _e662 = local_55;
-                        global_6.member[_e659] = _e662;
+                        let _e660 = local_11;
+                        let _e663 = local_55;
+                        global_6.member[_e660] = _e663;
                         phi_882_ = _e451;
                     } else {
                         phi_882_ = _e130;
                     }
-                    let _e664 = phi_882_;
+                    let _e665 = phi_882_;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e665 = local_9;
-                    let _e666 = local_8;
-                    phi_881_ = _e664;
-                    phi_142_ = (_e665 + _e666);
+                    let _e666 = local_9;
+                    let _e667 = local_8;
+                    phi_881_ = _e665;
+                    phi_142_ = (_e666 + _e667);
                 } else {
                     phi_881_ = _e130;
                     phi_142_ = u32();
                 }
-                let _e669 = phi_881_;
-                let _e671 = phi_142_;
+                let _e670 = phi_881_;
+                let _e672 = phi_142_;
                 continue;
                 continuing {
-                    let _e672 = local_10;
-                    phi_877_ = _e669;
-                    phi_141_ = _e671;
-                    phi_880_ = _e669;
-                    break if !(_e672);
+                    let _e673 = local_10;
+                    phi_877_ = _e670;
+                    phi_141_ = _e672;
+                    phi_880_ = _e670;
+                    break if !(_e673);
                 }
             }
-            let _e675 = phi_880_;
-            if _e675 {
+            let _e676 = phi_880_;
+            if _e676 {
                 break;
             }
             break;

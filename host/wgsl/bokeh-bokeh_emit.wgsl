@@ -920,10 +920,10 @@ fn function_() {
                                 let _e591 = local_37;
                                 phi_1852_ = _e590;
                                 phi_473_ = (_e591 + 1i);
-                                let _e1608 = local_139;
-                                phi_476_ = _e1608;
-                                let _e1611 = local_140;
-                                phi_478_ = _e1611;
+                                let _e1620 = local_139;
+                                phi_476_ = _e1620;
+                                let _e1623 = local_140;
+                                phi_478_ = _e1623;
                             } else {
                                 phi_1852_ = _e390;
                                 phi_473_ = i32();
@@ -1029,937 +1029,937 @@ fn function_() {
                         local_132 = _e703;
                         let _e706 = global_5.member.member_6;
                         local_63 = _e706;
-                        if (_e703 != _e703) {
+                        if !((_e703 == _e703)) {
                             phi_1716_ = true;
                         } else {
-                            let _e708 = local_63;
-                            let _e709 = local_132;
-                            phi_1716_ = (_e708 <= _e709);
+                            let _e709 = local_63;
+                            let _e710 = local_132;
+                            phi_1716_ = (_e709 <= _e710);
                         }
-                        let _e712 = phi_1716_;
-                        let _e713 = local_63;
-                        let _e714 = local_132;
-                        local_133 = select(_e714, _e713, _e712);
-                        let _e716 = local_33;
-                        if ((bitcast<u32>(_e716) & 2139095040u) != 2139095040u) {
-                            let _e720 = local_34;
-                            let _e723 = ((bitcast<u32>(_e720) & 2139095040u) != 2139095040u);
-                            local_64 = _e723;
-                            if _e723 {
-                                let _e724 = local_35;
-                                phi_851_ = ((bitcast<u32>(_e724) & 2139095040u) != 2139095040u);
+                        let _e713 = phi_1716_;
+                        let _e714 = local_63;
+                        let _e715 = local_132;
+                        local_133 = select(_e715, _e714, _e713);
+                        let _e717 = local_33;
+                        if ((bitcast<u32>(_e717) & 2139095040u) != 2139095040u) {
+                            let _e721 = local_34;
+                            let _e724 = ((bitcast<u32>(_e721) & 2139095040u) != 2139095040u);
+                            local_64 = _e724;
+                            if _e724 {
+                                let _e725 = local_35;
+                                phi_851_ = ((bitcast<u32>(_e725) & 2139095040u) != 2139095040u);
                             } else {
                                 phi_851_ = bool();
                             }
-                            let _e729 = phi_851_;
-                            let _e730 = local_64;
-                            phi_853_ = _e729;
-                            phi_854_ = select(true, false, _e730);
+                            let _e730 = phi_851_;
+                            let _e731 = local_64;
+                            phi_853_ = _e730;
+                            phi_854_ = select(true, false, _e731);
                         } else {
                             phi_853_ = bool();
                             phi_854_ = true;
                         }
-                        let _e733 = phi_853_;
-                        let _e735 = phi_854_;
-                        if select(_e733, false, _e735) {
-                            let _e737 = local_59;
-                            if (_e737 == 0u) {
+                        let _e734 = phi_853_;
+                        let _e736 = phi_854_;
+                        if select(_e734, false, _e736) {
+                            let _e738 = local_59;
+                            if (_e738 == 0u) {
                                 phi_868_ = false;
                             } else {
-                                let _e739 = local_59;
-                                phi_868_ = (_e739 <= 2139095040u);
+                                let _e740 = local_59;
+                                phi_868_ = (_e740 <= 2139095040u);
                             }
-                            let _e742 = phi_868_;
-                            if _e742 {
-                                let _e743 = local_33;
-                                let _e745 = local_34;
-                                let _e748 = local_35;
-                                let _e751 = local_57;
-                                let _e754 = local_57;
-                                let _e758 = local_57;
-                                let _e765 = global_5.member.member_4;
-                                if (((((0.2126f * _e743) + (0.7152f * _e745)) + (0.0722f * _e748)) - (((0.2126f * _e751[0]) + (0.7152f * _e754[1])) + (0.0722f * _e758[2]))) > _e765) {
-                                    let _e769 = global_5.member.member_5;
-                                    let _e770 = local_133;
-                                    let _e771 = (_e770 > _e769);
-                                    local_65 = _e771;
-                                    if _e771 {
-                                        let _e772 = local_36;
-                                        let _e773 = local_57;
-                                        let _e774 = local_133;
-                                        let _e775 = local_58;
-                                        phi_900_ = type_24(1u, type_23(_e772, _e773, _e774, _e775));
+                            let _e743 = phi_868_;
+                            if _e743 {
+                                let _e744 = local_33;
+                                let _e746 = local_34;
+                                let _e749 = local_35;
+                                let _e752 = local_57;
+                                let _e755 = local_57;
+                                let _e759 = local_57;
+                                let _e766 = global_5.member.member_4;
+                                if (((((0.2126f * _e744) + (0.7152f * _e746)) + (0.0722f * _e749)) - (((0.2126f * _e752[0]) + (0.7152f * _e755[1])) + (0.0722f * _e759[2]))) > _e766) {
+                                    let _e770 = global_5.member.member_5;
+                                    let _e771 = local_133;
+                                    let _e772 = (_e771 > _e770);
+                                    local_65 = _e772;
+                                    if _e772 {
+                                        let _e773 = local_36;
+                                        let _e774 = local_57;
+                                        let _e775 = local_133;
+                                        let _e776 = local_58;
+                                        phi_900_ = type_24(1u, type_23(_e773, _e774, _e775, _e776));
                                     } else {
                                         phi_900_ = type_24();
                                     }
-                                    let _e779 = phi_900_;
-                                    let _e780 = local_65;
-                                    phi_902_ = _e779;
-                                    phi_903_ = select(true, false, _e780);
+                                    let _e780 = phi_900_;
+                                    let _e781 = local_65;
+                                    phi_902_ = _e780;
+                                    phi_903_ = select(true, false, _e781);
                                 } else {
                                     phi_902_ = type_24();
                                     phi_903_ = true;
                                 }
-                                let _e783 = phi_902_;
-                                let _e785 = phi_903_;
-                                phi_904_ = _e783;
-                                phi_905_ = _e785;
+                                let _e784 = phi_902_;
+                                let _e786 = phi_903_;
+                                phi_904_ = _e784;
+                                phi_905_ = _e786;
                             } else {
                                 phi_904_ = type_24();
                                 phi_905_ = true;
                             }
-                            let _e787 = phi_904_;
-                            let _e789 = phi_905_;
-                            phi_906_ = _e787;
-                            phi_907_ = _e789;
+                            let _e788 = phi_904_;
+                            let _e790 = phi_905_;
+                            phi_906_ = _e788;
+                            phi_907_ = _e790;
                         } else {
                             phi_906_ = type_24();
                             phi_907_ = true;
                         }
-                        let _e791 = phi_906_;
-                        let _e793 = phi_907_;
-                        if _e793 {
+                        let _e792 = phi_906_;
+                        let _e794 = phi_907_;
+                        if _e794 {
                             phi_912_ = type_24(0u, type_24().member_1);
                         } else {
-                            phi_912_ = _e791;
+                            phi_912_ = _e792;
                         }
-                        let _e798 = phi_912_;
-                        local_66 = _e798;
-                        if (bitcast<i32>(_e798.member) != 0i) {
-                            let _e802 = local_66;
-                            local_67 = _e802.member_1.member;
-                            let _e805 = local_66;
-                            local_68 = _e805.member_1.member_1;
-                            let _e808 = local_66;
-                            local_69 = _e808.member_1.member_2;
-                            let _e811 = local_66;
-                            local_70 = _e811.member_1.member_3;
-                            let _e814 = local_13;
-                            let _e815 = local_3;
-                            if (_e814 < _e815) {
+                        let _e799 = phi_912_;
+                        local_66 = _e799;
+                        if (bitcast<i32>(_e799.member) != 0i) {
+                            let _e803 = local_66;
+                            local_67 = _e803.member_1.member;
+                            let _e806 = local_66;
+                            local_68 = _e806.member_1.member_1;
+                            let _e809 = local_66;
+                            local_69 = _e809.member_1.member_2;
+                            let _e812 = local_66;
+                            local_70 = _e812.member_1.member_3;
+                            let _e815 = local_13;
+                            let _e816 = local_3;
+                            if (_e815 < _e816) {
                             } else {
                                 phi_1935_ = true;
                                 break;
                             }
-                            let _e817 = local_13;
-                            let _e820 = global_6.member[_e817];
-                            local_71 = _e820;
-                            let _e823 = global_5.member.member_2;
-                            if (_e820 < _e823) {
-                                let _e825 = local_28;
-                                if _e825 {
+                            let _e818 = local_13;
+                            let _e821 = global_6.member[_e818];
+                            local_71 = _e821;
+                            let _e824 = global_5.member.member_2;
+                            if (_e821 < _e824) {
+                                let _e826 = local_28;
+                                if _e826 {
                                     phi_1935_ = true;
                                     break;
                                 }
-                                let _e826 = local_29;
-                                local_72 = (f32(_e826) + 0.5f);
-                                let _e829 = local_28;
-                                if _e829 {
+                                let _e827 = local_29;
+                                local_72 = (f32(_e827) + 0.5f);
+                                let _e830 = local_28;
+                                if _e830 {
                                     phi_1935_ = true;
                                     break;
                                 }
-                                let _e830 = local_31;
-                                local_73 = (f32(_e830) + 0.5f);
-                                let _e833 = local_69;
-                                let _e834 = (_e833 + 0.5f);
-                                local_74 = _e834;
-                                let _e838 = global_5.member.member_8.member_2;
-                                let _e839 = local_70;
-                                local_134 = select(1f, -1f, (_e839 < _e838));
-                                if (_e834 >= 5f) {
-                                    let _e846 = global_5.member.member_9.member_6;
-                                    if (_e846 > 0u) {
-                                        let _e851 = global_5.member.member_9.member_5;
-                                        let _e852 = local_69;
-                                        let _e854 = local_69;
-                                        phi_999_ = ((_e851 * _e852) * _e854);
+                                let _e831 = local_31;
+                                local_73 = (f32(_e831) + 0.5f);
+                                let _e834 = local_69;
+                                let _e835 = (_e834 + 0.5f);
+                                local_74 = _e835;
+                                let _e839 = global_5.member.member_8.member_2;
+                                let _e840 = local_70;
+                                local_134 = select(1f, -1f, (_e840 < _e839));
+                                if (_e835 >= 5f) {
+                                    let _e847 = global_5.member.member_9.member_6;
+                                    if (_e847 > 0u) {
+                                        let _e852 = global_5.member.member_9.member_5;
+                                        let _e853 = local_69;
+                                        let _e855 = local_69;
+                                        phi_999_ = ((_e852 * _e853) * _e855);
                                     } else {
-                                        let _e856 = local_69;
-                                        let _e857 = (_e856 + -0.5f);
-                                        let _e861 = global_5.member.member_9.member_5;
-                                        phi_999_ = (_e861 * (((_e857 * _e857) + _e857) + 0.33333334f));
+                                        let _e857 = local_69;
+                                        let _e858 = (_e857 + -0.5f);
+                                        let _e862 = global_5.member.member_9.member_5;
+                                        phi_999_ = (_e862 * (((_e858 * _e858) + _e858) + 0.33333334f));
                                     }
-                                    let _e867 = phi_999_;
+                                    let _e868 = phi_999_;
                                     phi_1933_ = _e604;
-                                    phi_1551_ = _e867;
+                                    phi_1551_ = _e868;
                                 } else {
-                                    let _e868 = local_73;
-                                    let _e869 = local_74;
-                                    let _e873 = local_73;
-                                    let _e874 = local_74;
-                                    local_75 = floor(((_e873 + _e874) - 0.5f));
-                                    let _e878 = local_72;
-                                    let _e879 = local_74;
-                                    let _e883 = local_72;
-                                    let _e884 = local_74;
-                                    local_76 = floor(((_e883 + _e884) - 0.5f));
+                                    let _e869 = local_73;
+                                    let _e870 = local_74;
+                                    let _e874 = local_73;
+                                    let _e875 = local_74;
+                                    local_75 = floor(((_e874 + _e875) - 0.5f));
+                                    let _e879 = local_72;
+                                    let _e880 = local_74;
+                                    let _e884 = local_72;
+                                    let _e885 = local_74;
+                                    local_76 = floor(((_e884 + _e885) - 0.5f));
                                     phi_1864_ = _e604;
-                                    phi_1014_ = ceil(((_e868 - _e869) - 0.5f));
+                                    phi_1014_ = ceil(((_e869 - _e870) - 0.5f));
                                     phi_1017_ = 0f;
                                     loop {
-                                        let _e889 = phi_1864_;
-                                        let _e891 = phi_1014_;
-                                        let _e893 = phi_1017_;
-                                        local_77 = _e891;
-                                        local_143 = _e893;
-                                        let _e894 = local_77;
-                                        let _e895 = local_75;
-                                        let _e896 = (_e894 <= _e895);
-                                        local_78 = _e896;
-                                        if _e896 {
-                                            let _e897 = local_77;
-                                            let _e899 = local_73;
-                                            local_79 = ((_e897 + 0.5f) - _e899);
-                                            phi_1028_ = ceil(((_e878 - _e879) - 0.5f));
-                                            phi_1031_ = _e893;
+                                        let _e890 = phi_1864_;
+                                        let _e892 = phi_1014_;
+                                        let _e894 = phi_1017_;
+                                        local_77 = _e892;
+                                        local_143 = _e894;
+                                        let _e895 = local_77;
+                                        let _e896 = local_75;
+                                        let _e897 = (_e895 <= _e896);
+                                        local_78 = _e897;
+                                        if _e897 {
+                                            let _e898 = local_77;
+                                            let _e900 = local_73;
+                                            local_79 = ((_e898 + 0.5f) - _e900);
+                                            phi_1028_ = ceil(((_e879 - _e880) - 0.5f));
+                                            phi_1031_ = _e894;
                                             loop {
-                                                let _e902 = phi_1028_;
-                                                let _e904 = phi_1031_;
-                                                local_80 = _e902;
-                                                local_142 = _e904;
-                                                let _e905 = local_80;
-                                                let _e906 = local_76;
-                                                let _e907 = (_e905 <= _e906);
-                                                local_81 = _e907;
-                                                if _e907 {
-                                                    let _e908 = local_80;
-                                                    let _e910 = local_72;
-                                                    let _e911 = ((_e908 + 0.5f) - _e910);
-                                                    local_82 = _e911;
-                                                    let _e913 = local_79;
+                                                let _e903 = phi_1028_;
+                                                let _e905 = phi_1031_;
+                                                local_80 = _e903;
+                                                local_142 = _e905;
+                                                let _e906 = local_80;
+                                                let _e907 = local_76;
+                                                let _e908 = (_e906 <= _e907);
+                                                local_81 = _e908;
+                                                if _e908 {
+                                                    let _e909 = local_80;
+                                                    let _e911 = local_72;
+                                                    let _e912 = ((_e909 + 0.5f) - _e911);
+                                                    local_82 = _e912;
                                                     let _e914 = local_79;
-                                                    local_83 = ((_e911 * _e911) + (_e913 * _e914));
-                                                    let _e920 = global_5.member.member_9.member;
-                                                    local_84 = _e920;
-                                                    let _e921 = (_e920 == 0u);
-                                                    local_85 = _e921;
-                                                    if _e921 {
-                                                        let _e925 = global_5.member.member_9.member_6;
-                                                        phi_1055_ = (_e925 == 0u);
+                                                    let _e915 = local_79;
+                                                    local_83 = ((_e912 * _e912) + (_e914 * _e915));
+                                                    let _e921 = global_5.member.member_9.member;
+                                                    local_84 = _e921;
+                                                    let _e922 = (_e921 == 0u);
+                                                    local_85 = _e922;
+                                                    if _e922 {
+                                                        let _e926 = global_5.member.member_9.member_6;
+                                                        phi_1055_ = (_e926 == 0u);
                                                     } else {
                                                         phi_1055_ = false;
                                                     }
-                                                    let _e928 = phi_1055_;
-                                                    if _e928 {
-                                                        let _e929 = local_69;
-                                                        let _e930 = (_e929 + -0.5f);
-                                                        let _e933 = local_83;
-                                                        let _e936 = local_83;
-                                                        let _e938 = local_74;
-                                                        let _e939 = (_e938 - sqrt(_e936));
-                                                        phi_1529_ = select(select(0f, select(1f, _e939, (_e939 < 1f)), (0f < _e939)), 1f, ((0f < _e930) && (_e933 <= (_e930 * _e930))));
+                                                    let _e929 = phi_1055_;
+                                                    if _e929 {
+                                                        let _e930 = local_69;
+                                                        let _e931 = (_e930 + -0.5f);
+                                                        let _e934 = local_83;
+                                                        let _e937 = local_83;
+                                                        let _e939 = local_74;
+                                                        let _e940 = (_e939 - sqrt(_e937));
+                                                        phi_1529_ = select(select(0f, select(1f, _e940, (_e940 < 1f)), (0f < _e940)), 1f, ((0f < _e931) && (_e934 <= (_e931 * _e931))));
                                                     } else {
-                                                        let _e945 = local_85;
-                                                        if _e945 {
-                                                            let _e949 = global_5.member.member_9.member_6;
-                                                            phi_1091_ = (_e949 == 0u);
+                                                        let _e946 = local_85;
+                                                        if _e946 {
+                                                            let _e950 = global_5.member.member_9.member_6;
+                                                            phi_1091_ = (_e950 == 0u);
                                                         } else {
                                                             phi_1091_ = false;
                                                         }
-                                                        let _e952 = phi_1091_;
-                                                        if _e952 {
-                                                            let _e953 = local_69;
-                                                            let _e954 = (_e953 + -0.5f);
-                                                            let _e957 = local_83;
-                                                            let _e960 = local_83;
-                                                            let _e962 = local_74;
-                                                            let _e963 = (_e962 - sqrt(_e960));
-                                                            phi_1528_ = select(select(0f, select(1f, _e963, (_e963 < 1f)), (0f < _e963)), 1f, ((0f < _e954) && (_e957 <= (_e954 * _e954))));
+                                                        let _e953 = phi_1091_;
+                                                        if _e953 {
+                                                            let _e954 = local_69;
+                                                            let _e955 = (_e954 + -0.5f);
+                                                            let _e958 = local_83;
+                                                            let _e961 = local_83;
+                                                            let _e963 = local_74;
+                                                            let _e964 = (_e963 - sqrt(_e961));
+                                                            phi_1528_ = select(select(0f, select(1f, _e964, (_e964 < 1f)), (0f < _e964)), 1f, ((0f < _e955) && (_e958 <= (_e955 * _e955))));
                                                         } else {
-                                                            let _e969 = local_134;
-                                                            let _e970 = local_82;
-                                                            local_86 = (_e969 * _e970);
-                                                            let _e972 = local_134;
-                                                            let _e973 = local_79;
-                                                            local_87 = (_e972 * _e973);
-                                                            let _e978 = global_5.member.member_9.member_6;
-                                                            local_88 = _e978;
-                                                            if (_e978 > 0u) {
-                                                                let _e980 = local_69;
-                                                                if (_e980 > 0f) {
-                                                                    let _e982 = local_86;
-                                                                    let _e983 = local_69;
-                                                                    let _e985 = local_87;
-                                                                    let _e986 = local_69;
-                                                                    let _e988 = local_88;
-                                                                    let _e989 = f32(_e988);
-                                                                    local_89 = _e989;
-                                                                    let _e993 = (((((_e982 / _e983) + 1f) * 0.5f) * _e989) - 0.5f);
-                                                                    local_90 = _e993;
-                                                                    local_91 = (((((_e985 / _e986) + 1f) * 0.5f) * _e989) - 0.5f);
-                                                                    if (_e993 > -1f) {
-                                                                        let _e999 = local_91;
-                                                                        if (_e999 > -1f) {
-                                                                            let _e1001 = local_90;
-                                                                            let _e1002 = local_89;
-                                                                            if (_e1001 < _e1002) {
-                                                                                let _e1004 = local_91;
-                                                                                let _e1005 = local_89;
-                                                                                let _e1006 = (_e1004 < _e1005);
-                                                                                local_92 = _e1006;
-                                                                                if _e1006 {
-                                                                                    let _e1007 = local_90;
-                                                                                    let _e1008 = floor(_e1007);
-                                                                                    local_93 = _e1008;
-                                                                                    let _e1009 = local_91;
-                                                                                    let _e1010 = floor(_e1009);
-                                                                                    local_94 = _e1010;
-                                                                                    let _e1011 = local_90;
-                                                                                    local_95 = (_e1011 - _e1008);
-                                                                                    let _e1013 = local_91;
-                                                                                    local_96 = (_e1013 - _e1010);
-                                                                                    let _e1015 = (_e1008 < 0f);
-                                                                                    local_97 = _e1015;
-                                                                                    if _e1015 {
+                                                            let _e970 = local_134;
+                                                            let _e971 = local_82;
+                                                            local_86 = (_e970 * _e971);
+                                                            let _e973 = local_134;
+                                                            let _e974 = local_79;
+                                                            local_87 = (_e973 * _e974);
+                                                            let _e979 = global_5.member.member_9.member_6;
+                                                            local_88 = _e979;
+                                                            if (_e979 > 0u) {
+                                                                let _e981 = local_69;
+                                                                if (_e981 > 0f) {
+                                                                    let _e983 = local_86;
+                                                                    let _e984 = local_69;
+                                                                    let _e986 = local_87;
+                                                                    let _e987 = local_69;
+                                                                    let _e989 = local_88;
+                                                                    let _e990 = f32(_e989);
+                                                                    local_89 = _e990;
+                                                                    let _e994 = (((((_e983 / _e984) + 1f) * 0.5f) * _e990) - 0.5f);
+                                                                    local_90 = _e994;
+                                                                    local_91 = (((((_e986 / _e987) + 1f) * 0.5f) * _e990) - 0.5f);
+                                                                    if (_e994 > -1f) {
+                                                                        let _e1000 = local_91;
+                                                                        if (_e1000 > -1f) {
+                                                                            let _e1002 = local_90;
+                                                                            let _e1003 = local_89;
+                                                                            if (_e1002 < _e1003) {
+                                                                                let _e1005 = local_91;
+                                                                                let _e1006 = local_89;
+                                                                                let _e1007 = (_e1005 < _e1006);
+                                                                                local_92 = _e1007;
+                                                                                if _e1007 {
+                                                                                    let _e1008 = local_90;
+                                                                                    let _e1009 = floor(_e1008);
+                                                                                    local_93 = _e1009;
+                                                                                    let _e1010 = local_91;
+                                                                                    let _e1011 = floor(_e1010);
+                                                                                    local_94 = _e1011;
+                                                                                    let _e1012 = local_90;
+                                                                                    local_95 = (_e1012 - _e1009);
+                                                                                    let _e1014 = local_91;
+                                                                                    local_96 = (_e1014 - _e1011);
+                                                                                    let _e1016 = (_e1009 < 0f);
+                                                                                    local_97 = _e1016;
+                                                                                    if _e1016 {
                                                                                         phi_1220_ = f32();
                                                                                         phi_1221_ = true;
                                                                                     } else {
-                                                                                        let _e1016 = local_94;
-                                                                                        if (_e1016 < 0f) {
+                                                                                        let _e1017 = local_94;
+                                                                                        if (_e1017 < 0f) {
                                                                                             phi_1218_ = f32();
                                                                                             phi_1219_ = true;
                                                                                         } else {
-                                                                                            let _e1018 = local_93;
-                                                                                            let _e1019 = local_89;
-                                                                                            if (_e1018 >= _e1019) {
+                                                                                            let _e1019 = local_93;
+                                                                                            let _e1020 = local_89;
+                                                                                            if (_e1019 >= _e1020) {
                                                                                                 phi_1216_ = f32();
                                                                                                 phi_1217_ = true;
                                                                                             } else {
-                                                                                                let _e1021 = local_94;
-                                                                                                let _e1022 = local_89;
-                                                                                                let _e1023 = (_e1021 >= _e1022);
-                                                                                                if _e1023 {
+                                                                                                let _e1022 = local_94;
+                                                                                                let _e1023 = local_89;
+                                                                                                let _e1024 = (_e1022 >= _e1023);
+                                                                                                if _e1024 {
                                                                                                     phi_1215_ = f32();
                                                                                                 } else {
-                                                                                                    let _e1024 = local_94;
-                                                                                                    let _e1026 = local_94;
-                                                                                                    let _e1028 = local_94;
-                                                                                                    let _e1032 = local_88;
-                                                                                                    let _e1034 = local_93;
+                                                                                                    let _e1025 = local_94;
+                                                                                                    let _e1027 = local_94;
+                                                                                                    let _e1030 = local_94;
+                                                                                                    let _e1034 = local_88;
                                                                                                     let _e1036 = local_93;
                                                                                                     let _e1038 = local_93;
-                                                                                                    let _e1042 = ((select(select(u32(_e1024), 0u, (_e1026 < 0f)), 4294967295u, (_e1028 > 4294967000f)) * _e1032) + select(select(u32(_e1034), 0u, (_e1036 < 0f)), 4294967295u, (_e1038 > 4294967000f)));
-                                                                                                    local_98 = _e1042;
-                                                                                                    let _e1043 = local_6;
-                                                                                                    if (_e1042 < _e1043) {
+                                                                                                    let _e1041 = local_93;
+                                                                                                    let _e1045 = ((select(select(u32(_e1025), 0u, !((_e1027 >= 0f))), 4294967295u, (_e1030 > 4294967000f)) * _e1034) + select(select(u32(_e1036), 0u, !((_e1038 >= 0f))), 4294967295u, (_e1041 > 4294967000f)));
+                                                                                                    local_98 = _e1045;
+                                                                                                    let _e1046 = local_6;
+                                                                                                    if (_e1045 < _e1046) {
                                                                                                     } else {
                                                                                                         phi_1853_ = true;
                                                                                                         break;
                                                                                                     }
-                                                                                                    let _e1045 = local_98;
-                                                                                                    let _e1048 = global_9.member[_e1045];
-                                                                                                    phi_1215_ = bitcast<f32>(_e1048);
+                                                                                                    let _e1048 = local_98;
+                                                                                                    let _e1051 = global_9.member[_e1048];
+                                                                                                    phi_1215_ = bitcast<f32>(_e1051);
                                                                                                 }
-                                                                                                let _e1051 = phi_1215_;
-                                                                                                phi_1216_ = _e1051;
-                                                                                                phi_1217_ = _e1023;
+                                                                                                let _e1054 = phi_1215_;
+                                                                                                phi_1216_ = _e1054;
+                                                                                                phi_1217_ = _e1024;
                                                                                             }
-                                                                                            let _e1053 = phi_1216_;
-                                                                                            let _e1055 = phi_1217_;
-                                                                                            phi_1218_ = _e1053;
-                                                                                            phi_1219_ = _e1055;
+                                                                                            let _e1056 = phi_1216_;
+                                                                                            let _e1058 = phi_1217_;
+                                                                                            phi_1218_ = _e1056;
+                                                                                            phi_1219_ = _e1058;
                                                                                         }
-                                                                                        let _e1057 = phi_1218_;
-                                                                                        let _e1059 = phi_1219_;
-                                                                                        phi_1220_ = _e1057;
-                                                                                        phi_1221_ = _e1059;
+                                                                                        let _e1060 = phi_1218_;
+                                                                                        let _e1062 = phi_1219_;
+                                                                                        phi_1220_ = _e1060;
+                                                                                        phi_1221_ = _e1062;
                                                                                     }
-                                                                                    let _e1061 = phi_1220_;
-                                                                                    let _e1063 = phi_1221_;
-                                                                                    let _e1065 = local_95;
-                                                                                    let _e1066 = (1f - _e1065);
-                                                                                    local_99 = _e1066;
-                                                                                    local_100 = (select(_e1061, 0f, _e1063) * _e1066);
-                                                                                    let _e1068 = local_93;
-                                                                                    let _e1069 = (_e1068 + 1f);
-                                                                                    local_101 = _e1069;
-                                                                                    let _e1070 = (_e1069 < 0f);
-                                                                                    local_102 = _e1070;
-                                                                                    if _e1070 {
+                                                                                    let _e1064 = phi_1220_;
+                                                                                    let _e1066 = phi_1221_;
+                                                                                    let _e1068 = local_95;
+                                                                                    let _e1069 = (1f - _e1068);
+                                                                                    local_99 = _e1069;
+                                                                                    local_100 = (select(_e1064, 0f, _e1066) * _e1069);
+                                                                                    let _e1071 = local_93;
+                                                                                    let _e1072 = (_e1071 + 1f);
+                                                                                    local_101 = _e1072;
+                                                                                    let _e1073 = (_e1072 < 0f);
+                                                                                    local_102 = _e1073;
+                                                                                    if _e1073 {
                                                                                         phi_1284_ = f32();
                                                                                         phi_1285_ = true;
                                                                                     } else {
-                                                                                        let _e1071 = local_94;
-                                                                                        if (_e1071 < 0f) {
+                                                                                        let _e1074 = local_94;
+                                                                                        if (_e1074 < 0f) {
                                                                                             phi_1282_ = f32();
                                                                                             phi_1283_ = true;
                                                                                         } else {
-                                                                                            let _e1073 = local_101;
-                                                                                            let _e1074 = local_89;
-                                                                                            if (_e1073 >= _e1074) {
+                                                                                            let _e1076 = local_101;
+                                                                                            let _e1077 = local_89;
+                                                                                            if (_e1076 >= _e1077) {
                                                                                                 phi_1280_ = f32();
                                                                                                 phi_1281_ = true;
                                                                                             } else {
-                                                                                                let _e1076 = local_94;
-                                                                                                let _e1077 = local_89;
-                                                                                                let _e1078 = (_e1076 >= _e1077);
-                                                                                                if _e1078 {
+                                                                                                let _e1079 = local_94;
+                                                                                                let _e1080 = local_89;
+                                                                                                let _e1081 = (_e1079 >= _e1080);
+                                                                                                if _e1081 {
                                                                                                     phi_1279_ = f32();
                                                                                                 } else {
-                                                                                                    let _e1079 = local_94;
-                                                                                                    let _e1081 = local_94;
-                                                                                                    let _e1083 = local_94;
-                                                                                                    let _e1087 = local_88;
-                                                                                                    let _e1089 = local_101;
-                                                                                                    let _e1091 = local_101;
+                                                                                                    let _e1082 = local_94;
+                                                                                                    let _e1084 = local_94;
+                                                                                                    let _e1087 = local_94;
+                                                                                                    let _e1091 = local_88;
                                                                                                     let _e1093 = local_101;
-                                                                                                    let _e1097 = ((select(select(u32(_e1079), 0u, (_e1081 < 0f)), 4294967295u, (_e1083 > 4294967000f)) * _e1087) + select(select(u32(_e1089), 0u, (_e1091 < 0f)), 4294967295u, (_e1093 > 4294967000f)));
-                                                                                                    local_103 = _e1097;
-                                                                                                    let _e1098 = local_6;
-                                                                                                    if (_e1097 < _e1098) {
+                                                                                                    let _e1095 = local_101;
+                                                                                                    let _e1098 = local_101;
+                                                                                                    let _e1102 = ((select(select(u32(_e1082), 0u, !((_e1084 >= 0f))), 4294967295u, (_e1087 > 4294967000f)) * _e1091) + select(select(u32(_e1093), 0u, !((_e1095 >= 0f))), 4294967295u, (_e1098 > 4294967000f)));
+                                                                                                    local_103 = _e1102;
+                                                                                                    let _e1103 = local_6;
+                                                                                                    if (_e1102 < _e1103) {
                                                                                                     } else {
                                                                                                         phi_1853_ = true;
                                                                                                         break;
                                                                                                     }
-                                                                                                    let _e1100 = local_103;
-                                                                                                    let _e1103 = global_9.member[_e1100];
-                                                                                                    phi_1279_ = bitcast<f32>(_e1103);
+                                                                                                    let _e1105 = local_103;
+                                                                                                    let _e1108 = global_9.member[_e1105];
+                                                                                                    phi_1279_ = bitcast<f32>(_e1108);
                                                                                                 }
-                                                                                                let _e1106 = phi_1279_;
-                                                                                                phi_1280_ = _e1106;
-                                                                                                phi_1281_ = _e1078;
+                                                                                                let _e1111 = phi_1279_;
+                                                                                                phi_1280_ = _e1111;
+                                                                                                phi_1281_ = _e1081;
                                                                                             }
-                                                                                            let _e1108 = phi_1280_;
-                                                                                            let _e1110 = phi_1281_;
-                                                                                            phi_1282_ = _e1108;
-                                                                                            phi_1283_ = _e1110;
+                                                                                            let _e1113 = phi_1280_;
+                                                                                            let _e1115 = phi_1281_;
+                                                                                            phi_1282_ = _e1113;
+                                                                                            phi_1283_ = _e1115;
                                                                                         }
-                                                                                        let _e1112 = phi_1282_;
-                                                                                        let _e1114 = phi_1283_;
-                                                                                        phi_1284_ = _e1112;
-                                                                                        phi_1285_ = _e1114;
+                                                                                        let _e1117 = phi_1282_;
+                                                                                        let _e1119 = phi_1283_;
+                                                                                        phi_1284_ = _e1117;
+                                                                                        phi_1285_ = _e1119;
                                                                                     }
-                                                                                    let _e1116 = phi_1284_;
-                                                                                    let _e1118 = phi_1285_;
-                                                                                    let _e1120 = local_95;
-                                                                                    let _e1122 = local_100;
-                                                                                    local_104 = (_e1122 + (select(_e1116, 0f, _e1118) * _e1120));
-                                                                                    let _e1124 = local_94;
-                                                                                    local_105 = (_e1124 + 1f);
-                                                                                    let _e1126 = local_97;
-                                                                                    if _e1126 {
+                                                                                    let _e1121 = phi_1284_;
+                                                                                    let _e1123 = phi_1285_;
+                                                                                    let _e1125 = local_95;
+                                                                                    let _e1127 = local_100;
+                                                                                    local_104 = (_e1127 + (select(_e1121, 0f, _e1123) * _e1125));
+                                                                                    let _e1129 = local_94;
+                                                                                    local_105 = (_e1129 + 1f);
+                                                                                    let _e1131 = local_97;
+                                                                                    if _e1131 {
                                                                                         phi_1348_ = f32();
                                                                                         phi_1349_ = true;
                                                                                     } else {
-                                                                                        let _e1127 = local_105;
-                                                                                        if (_e1127 < 0f) {
+                                                                                        let _e1132 = local_105;
+                                                                                        if (_e1132 < 0f) {
                                                                                             phi_1346_ = f32();
                                                                                             phi_1347_ = true;
                                                                                         } else {
-                                                                                            let _e1129 = local_93;
-                                                                                            let _e1130 = local_89;
-                                                                                            if (_e1129 >= _e1130) {
+                                                                                            let _e1134 = local_93;
+                                                                                            let _e1135 = local_89;
+                                                                                            if (_e1134 >= _e1135) {
                                                                                                 phi_1344_ = f32();
                                                                                                 phi_1345_ = true;
                                                                                             } else {
-                                                                                                let _e1132 = local_105;
-                                                                                                let _e1133 = local_89;
-                                                                                                let _e1134 = (_e1132 >= _e1133);
-                                                                                                if _e1134 {
+                                                                                                let _e1137 = local_105;
+                                                                                                let _e1138 = local_89;
+                                                                                                let _e1139 = (_e1137 >= _e1138);
+                                                                                                if _e1139 {
                                                                                                     phi_1343_ = f32();
                                                                                                 } else {
-                                                                                                    let _e1135 = local_105;
-                                                                                                    let _e1137 = local_105;
-                                                                                                    let _e1139 = local_105;
-                                                                                                    let _e1143 = local_88;
-                                                                                                    let _e1145 = local_93;
-                                                                                                    let _e1147 = local_93;
-                                                                                                    let _e1149 = local_93;
-                                                                                                    let _e1153 = ((select(select(u32(_e1135), 0u, (_e1137 < 0f)), 4294967295u, (_e1139 > 4294967000f)) * _e1143) + select(select(u32(_e1145), 0u, (_e1147 < 0f)), 4294967295u, (_e1149 > 4294967000f)));
-                                                                                                    local_106 = _e1153;
-                                                                                                    let _e1154 = local_6;
-                                                                                                    if (_e1153 < _e1154) {
+                                                                                                    let _e1140 = local_105;
+                                                                                                    let _e1142 = local_105;
+                                                                                                    let _e1145 = local_105;
+                                                                                                    let _e1149 = local_88;
+                                                                                                    let _e1151 = local_93;
+                                                                                                    let _e1153 = local_93;
+                                                                                                    let _e1156 = local_93;
+                                                                                                    let _e1160 = ((select(select(u32(_e1140), 0u, !((_e1142 >= 0f))), 4294967295u, (_e1145 > 4294967000f)) * _e1149) + select(select(u32(_e1151), 0u, !((_e1153 >= 0f))), 4294967295u, (_e1156 > 4294967000f)));
+                                                                                                    local_106 = _e1160;
+                                                                                                    let _e1161 = local_6;
+                                                                                                    if (_e1160 < _e1161) {
                                                                                                     } else {
                                                                                                         phi_1853_ = true;
                                                                                                         break;
                                                                                                     }
-                                                                                                    let _e1156 = local_106;
-                                                                                                    let _e1159 = global_9.member[_e1156];
-                                                                                                    phi_1343_ = bitcast<f32>(_e1159);
+                                                                                                    let _e1163 = local_106;
+                                                                                                    let _e1166 = global_9.member[_e1163];
+                                                                                                    phi_1343_ = bitcast<f32>(_e1166);
                                                                                                 }
-                                                                                                let _e1162 = phi_1343_;
-                                                                                                phi_1344_ = _e1162;
-                                                                                                phi_1345_ = _e1134;
+                                                                                                let _e1169 = phi_1343_;
+                                                                                                phi_1344_ = _e1169;
+                                                                                                phi_1345_ = _e1139;
                                                                                             }
-                                                                                            let _e1164 = phi_1344_;
-                                                                                            let _e1166 = phi_1345_;
-                                                                                            phi_1346_ = _e1164;
-                                                                                            phi_1347_ = _e1166;
+                                                                                            let _e1171 = phi_1344_;
+                                                                                            let _e1173 = phi_1345_;
+                                                                                            phi_1346_ = _e1171;
+                                                                                            phi_1347_ = _e1173;
                                                                                         }
-                                                                                        let _e1168 = phi_1346_;
-                                                                                        let _e1170 = phi_1347_;
-                                                                                        phi_1348_ = _e1168;
-                                                                                        phi_1349_ = _e1170;
+                                                                                        let _e1175 = phi_1346_;
+                                                                                        let _e1177 = phi_1347_;
+                                                                                        phi_1348_ = _e1175;
+                                                                                        phi_1349_ = _e1177;
                                                                                     }
-                                                                                    let _e1172 = phi_1348_;
-                                                                                    let _e1174 = phi_1349_;
-                                                                                    let _e1176 = local_99;
-                                                                                    local_107 = (select(_e1172, 0f, _e1174) * _e1176);
-                                                                                    let _e1178 = local_102;
-                                                                                    if _e1178 {
+                                                                                    let _e1179 = phi_1348_;
+                                                                                    let _e1181 = phi_1349_;
+                                                                                    let _e1183 = local_99;
+                                                                                    local_107 = (select(_e1179, 0f, _e1181) * _e1183);
+                                                                                    let _e1185 = local_102;
+                                                                                    if _e1185 {
                                                                                         phi_1413_ = f32();
                                                                                         phi_1414_ = true;
                                                                                     } else {
-                                                                                        let _e1179 = local_105;
-                                                                                        if (_e1179 < 0f) {
+                                                                                        let _e1186 = local_105;
+                                                                                        if (_e1186 < 0f) {
                                                                                             phi_1411_ = f32();
                                                                                             phi_1412_ = true;
                                                                                         } else {
-                                                                                            let _e1181 = local_101;
-                                                                                            let _e1182 = local_89;
-                                                                                            if (_e1181 >= _e1182) {
+                                                                                            let _e1188 = local_101;
+                                                                                            let _e1189 = local_89;
+                                                                                            if (_e1188 >= _e1189) {
                                                                                                 phi_1409_ = f32();
                                                                                                 phi_1410_ = true;
                                                                                             } else {
-                                                                                                let _e1184 = local_105;
-                                                                                                let _e1185 = local_89;
-                                                                                                let _e1186 = (_e1184 >= _e1185);
-                                                                                                if _e1186 {
+                                                                                                let _e1191 = local_105;
+                                                                                                let _e1192 = local_89;
+                                                                                                let _e1193 = (_e1191 >= _e1192);
+                                                                                                if _e1193 {
                                                                                                     phi_1408_ = f32();
                                                                                                 } else {
-                                                                                                    let _e1187 = local_105;
-                                                                                                    let _e1189 = local_105;
-                                                                                                    let _e1191 = local_105;
-                                                                                                    let _e1195 = local_88;
-                                                                                                    let _e1197 = local_101;
-                                                                                                    let _e1199 = local_101;
-                                                                                                    let _e1201 = local_101;
-                                                                                                    let _e1205 = ((select(select(u32(_e1187), 0u, (_e1189 < 0f)), 4294967295u, (_e1191 > 4294967000f)) * _e1195) + select(select(u32(_e1197), 0u, (_e1199 < 0f)), 4294967295u, (_e1201 > 4294967000f)));
-                                                                                                    local_108 = _e1205;
-                                                                                                    let _e1206 = local_6;
-                                                                                                    if (_e1205 < _e1206) {
+                                                                                                    let _e1194 = local_105;
+                                                                                                    let _e1196 = local_105;
+                                                                                                    let _e1199 = local_105;
+                                                                                                    let _e1203 = local_88;
+                                                                                                    let _e1205 = local_101;
+                                                                                                    let _e1207 = local_101;
+                                                                                                    let _e1210 = local_101;
+                                                                                                    let _e1214 = ((select(select(u32(_e1194), 0u, !((_e1196 >= 0f))), 4294967295u, (_e1199 > 4294967000f)) * _e1203) + select(select(u32(_e1205), 0u, !((_e1207 >= 0f))), 4294967295u, (_e1210 > 4294967000f)));
+                                                                                                    local_108 = _e1214;
+                                                                                                    let _e1215 = local_6;
+                                                                                                    if (_e1214 < _e1215) {
                                                                                                     } else {
                                                                                                         phi_1853_ = true;
                                                                                                         break;
                                                                                                     }
-                                                                                                    let _e1208 = local_108;
-                                                                                                    let _e1211 = global_9.member[_e1208];
-                                                                                                    phi_1408_ = bitcast<f32>(_e1211);
+                                                                                                    let _e1217 = local_108;
+                                                                                                    let _e1220 = global_9.member[_e1217];
+                                                                                                    phi_1408_ = bitcast<f32>(_e1220);
                                                                                                 }
-                                                                                                let _e1214 = phi_1408_;
-                                                                                                phi_1409_ = _e1214;
-                                                                                                phi_1410_ = _e1186;
+                                                                                                let _e1223 = phi_1408_;
+                                                                                                phi_1409_ = _e1223;
+                                                                                                phi_1410_ = _e1193;
                                                                                             }
-                                                                                            let _e1216 = phi_1409_;
-                                                                                            let _e1218 = phi_1410_;
-                                                                                            phi_1411_ = _e1216;
-                                                                                            phi_1412_ = _e1218;
+                                                                                            let _e1225 = phi_1409_;
+                                                                                            let _e1227 = phi_1410_;
+                                                                                            phi_1411_ = _e1225;
+                                                                                            phi_1412_ = _e1227;
                                                                                         }
-                                                                                        let _e1220 = phi_1411_;
-                                                                                        let _e1222 = phi_1412_;
-                                                                                        phi_1413_ = _e1220;
-                                                                                        phi_1414_ = _e1222;
+                                                                                        let _e1229 = phi_1411_;
+                                                                                        let _e1231 = phi_1412_;
+                                                                                        phi_1413_ = _e1229;
+                                                                                        phi_1414_ = _e1231;
                                                                                     }
-                                                                                    let _e1224 = phi_1413_;
-                                                                                    let _e1226 = phi_1414_;
-                                                                                    let _e1228 = local_95;
-                                                                                    let _e1230 = local_107;
-                                                                                    let _e1232 = local_96;
-                                                                                    let _e1234 = local_104;
-                                                                                    let _e1236 = local_96;
-                                                                                    phi_1425_ = ((_e1234 * (1f - _e1232)) + ((_e1230 + (select(_e1224, 0f, _e1226) * _e1228)) * _e1236));
+                                                                                    let _e1233 = phi_1413_;
+                                                                                    let _e1235 = phi_1414_;
+                                                                                    let _e1237 = local_95;
+                                                                                    let _e1239 = local_107;
+                                                                                    let _e1241 = local_96;
+                                                                                    let _e1243 = local_104;
+                                                                                    let _e1245 = local_96;
+                                                                                    phi_1425_ = ((_e1243 * (1f - _e1241)) + ((_e1239 + (select(_e1233, 0f, _e1235) * _e1237)) * _e1245));
                                                                                 } else {
                                                                                     phi_1425_ = f32();
                                                                                 }
-                                                                                let _e1240 = phi_1425_;
-                                                                                let _e1241 = local_92;
-                                                                                phi_1427_ = _e1240;
-                                                                                phi_1428_ = select(true, false, _e1241);
+                                                                                let _e1249 = phi_1425_;
+                                                                                let _e1250 = local_92;
+                                                                                phi_1427_ = _e1249;
+                                                                                phi_1428_ = select(true, false, _e1250);
                                                                             } else {
                                                                                 phi_1427_ = f32();
                                                                                 phi_1428_ = true;
                                                                             }
-                                                                            let _e1244 = phi_1427_;
-                                                                            let _e1246 = phi_1428_;
-                                                                            phi_1429_ = _e1244;
-                                                                            phi_1430_ = _e1246;
+                                                                            let _e1253 = phi_1427_;
+                                                                            let _e1255 = phi_1428_;
+                                                                            phi_1429_ = _e1253;
+                                                                            phi_1430_ = _e1255;
                                                                         } else {
                                                                             phi_1429_ = f32();
                                                                             phi_1430_ = true;
                                                                         }
-                                                                        let _e1248 = phi_1429_;
-                                                                        let _e1250 = phi_1430_;
-                                                                        phi_1431_ = _e1248;
-                                                                        phi_1432_ = _e1250;
+                                                                        let _e1257 = phi_1429_;
+                                                                        let _e1259 = phi_1430_;
+                                                                        phi_1431_ = _e1257;
+                                                                        phi_1432_ = _e1259;
                                                                     } else {
                                                                         phi_1431_ = f32();
                                                                         phi_1432_ = true;
                                                                     }
-                                                                    let _e1252 = phi_1431_;
-                                                                    let _e1254 = phi_1432_;
-                                                                    phi_1437_ = select(_e1252, 0f, _e1254);
+                                                                    let _e1261 = phi_1431_;
+                                                                    let _e1263 = phi_1432_;
+                                                                    phi_1437_ = select(_e1261, 0f, _e1263);
                                                                 } else {
                                                                     phi_1437_ = 0f;
                                                                 }
-                                                                let _e1257 = phi_1437_;
-                                                                phi_1527_ = _e1257;
+                                                                let _e1266 = phi_1437_;
+                                                                phi_1527_ = _e1266;
                                                             } else {
-                                                                let _e1258 = local_86;
-                                                                let _e1259 = local_86;
-                                                                let _e1261 = local_87;
-                                                                let _e1262 = local_87;
-                                                                let _e1265 = sqrt(((_e1258 * _e1259) + (_e1261 * _e1262)));
-                                                                local_109 = _e1265;
-                                                                let _e1266 = local_85;
-                                                                if _e1266 {
-                                                                    phi_1514_ = _e1265;
+                                                                let _e1267 = local_86;
+                                                                let _e1268 = local_86;
+                                                                let _e1270 = local_87;
+                                                                let _e1271 = local_87;
+                                                                let _e1274 = sqrt(((_e1267 * _e1268) + (_e1270 * _e1271)));
+                                                                local_109 = _e1274;
+                                                                let _e1275 = local_85;
+                                                                if _e1275 {
+                                                                    phi_1514_ = _e1274;
                                                                 } else {
-                                                                    let _e1270 = global_5.member.member_9.member_2;
-                                                                    let _e1272 = local_86;
-                                                                    let _e1275 = local_87;
+                                                                    let _e1279 = global_5.member.member_9.member_2;
+                                                                    let _e1281 = local_86;
+                                                                    let _e1284 = local_87;
                                                                     phi_1456_ = 1u;
-                                                                    phi_1459_ = ((_e1272 * _e1270[0]) + (_e1275 * _e1270[1]));
-                                                                    phi_1461_ = _e1270;
+                                                                    phi_1459_ = ((_e1281 * _e1279[0]) + (_e1284 * _e1279[1]));
+                                                                    phi_1461_ = _e1279;
                                                                     loop {
-                                                                        let _e1279 = phi_1456_;
-                                                                        let _e1281 = phi_1459_;
-                                                                        let _e1283 = phi_1461_;
-                                                                        local_110 = _e1279;
-                                                                        local_111 = _e1281;
-                                                                        local_112 = _e1283;
-                                                                        let _e1284 = local_110;
-                                                                        let _e1285 = local_84;
-                                                                        let _e1286 = (_e1284 < _e1285);
-                                                                        local_113 = _e1286;
-                                                                        if _e1286 {
-                                                                            let _e1287 = local_112;
-                                                                            let _e1293 = global_5.member.member_9.member_3[0u];
-                                                                            let _e1295 = local_112;
-                                                                            let _e1301 = global_5.member.member_9.member_3[1u];
-                                                                            let _e1303 = ((_e1287[0] * _e1293) - (_e1295[1] * _e1301));
-                                                                            let _e1306 = ((_e1287[0] * _e1301) + (_e1295[1] * _e1293));
-                                                                            let _e1308 = local_86;
-                                                                            let _e1310 = local_87;
-                                                                            let _e1312 = ((_e1308 * _e1303) + (_e1310 * _e1306));
-                                                                            let _e1313 = local_111;
-                                                                            let _e1315 = local_111;
-                                                                            let _e1317 = local_110;
-                                                                            phi_1457_ = (_e1317 + 1u);
-                                                                            phi_1460_ = select(_e1315, _e1312, (_e1312 > _e1313));
-                                                                            phi_1462_ = array<f32, 2>(_e1303, _e1306);
+                                                                        let _e1288 = phi_1456_;
+                                                                        let _e1290 = phi_1459_;
+                                                                        let _e1292 = phi_1461_;
+                                                                        local_110 = _e1288;
+                                                                        local_111 = _e1290;
+                                                                        local_112 = _e1292;
+                                                                        let _e1293 = local_110;
+                                                                        let _e1294 = local_84;
+                                                                        let _e1295 = (_e1293 < _e1294);
+                                                                        local_113 = _e1295;
+                                                                        if _e1295 {
+                                                                            let _e1296 = local_112;
+                                                                            let _e1302 = global_5.member.member_9.member_3[0u];
+                                                                            let _e1304 = local_112;
+                                                                            let _e1310 = global_5.member.member_9.member_3[1u];
+                                                                            let _e1312 = ((_e1296[0] * _e1302) - (_e1304[1] * _e1310));
+                                                                            let _e1315 = ((_e1296[0] * _e1310) + (_e1304[1] * _e1302));
+                                                                            let _e1317 = local_86;
+                                                                            let _e1319 = local_87;
+                                                                            let _e1321 = ((_e1317 * _e1312) + (_e1319 * _e1315));
+                                                                            let _e1322 = local_111;
+                                                                            let _e1324 = local_111;
+                                                                            let _e1326 = local_110;
+                                                                            phi_1457_ = (_e1326 + 1u);
+                                                                            phi_1460_ = select(_e1324, _e1321, (_e1321 > _e1322));
+                                                                            phi_1462_ = array<f32, 2>(_e1312, _e1315);
                                                                         } else {
                                                                             phi_1457_ = u32();
                                                                             phi_1460_ = f32();
                                                                             phi_1462_ = array<f32, 2>();
                                                                         }
-                                                                        let _e1320 = phi_1457_;
-                                                                        let _e1322 = phi_1460_;
-                                                                        let _e1324 = phi_1462_;
+                                                                        let _e1329 = phi_1457_;
+                                                                        let _e1331 = phi_1460_;
+                                                                        let _e1333 = phi_1462_;
                                                                         continue;
                                                                         continuing {
-                                                                            let _e1325 = local_113;
-                                                                            phi_1456_ = _e1320;
-                                                                            phi_1459_ = _e1322;
-                                                                            phi_1461_ = _e1324;
-                                                                            break if !(_e1325);
+                                                                            let _e1334 = local_113;
+                                                                            phi_1456_ = _e1329;
+                                                                            phi_1459_ = _e1331;
+                                                                            phi_1461_ = _e1333;
+                                                                            break if !(_e1334);
                                                                         }
                                                                     }
-                                                                    let _e1330 = global_5.member.member_9.member_1;
-                                                                    let _e1332 = local_111;
-                                                                    let _e1337 = global_5.member.member_9.member_4;
-                                                                    let _e1339 = local_109;
-                                                                    phi_1514_ = ((((1f - _e1330) * _e1332) * _e1337) + (_e1330 * _e1339));
+                                                                    let _e1339 = global_5.member.member_9.member_1;
+                                                                    let _e1341 = local_111;
+                                                                    let _e1346 = global_5.member.member_9.member_4;
+                                                                    let _e1348 = local_109;
+                                                                    phi_1514_ = ((((1f - _e1339) * _e1341) * _e1346) + (_e1339 * _e1348));
                                                                 }
-                                                                let _e1343 = phi_1514_;
-                                                                let _e1344 = local_74;
-                                                                let _e1345 = (_e1344 - _e1343);
-                                                                phi_1527_ = select(0f, select(1f, _e1345, (_e1345 < 1f)), (0f < _e1345));
+                                                                let _e1352 = phi_1514_;
+                                                                let _e1353 = local_74;
+                                                                let _e1354 = (_e1353 - _e1352);
+                                                                phi_1527_ = select(0f, select(1f, _e1354, (_e1354 < 1f)), (0f < _e1354));
                                                             }
-                                                            let _e1351 = phi_1527_;
-                                                            phi_1528_ = _e1351;
+                                                            let _e1360 = phi_1527_;
+                                                            phi_1528_ = _e1360;
                                                         }
-                                                        let _e1353 = phi_1528_;
-                                                        phi_1529_ = _e1353;
+                                                        let _e1362 = phi_1528_;
+                                                        phi_1529_ = _e1362;
                                                     }
-                                                    let _e1355 = phi_1529_;
-                                                    let _e1356 = local_81;
-                                                    local_135 = select(0f, _e1355, _e1356);
+                                                    let _e1364 = phi_1529_;
+                                                    let _e1365 = local_81;
+                                                    local_135 = select(0f, _e1364, _e1365);
                                                     phi_1535_ = 0u;
-                                                    phi_1538_ = _e904;
+                                                    phi_1538_ = _e905;
                                                     loop {
-                                                        let _e1359 = phi_1535_;
-                                                        let _e1361 = phi_1538_;
-                                                        local_114 = _e1359;
-                                                        local_115 = _e1361;
-                                                        local_141 = _e1361;
-                                                        let _e1362 = local_114;
-                                                        let _e1363 = (_e1362 < 1u);
-                                                        local_116 = _e1363;
-                                                        if _e1363 {
-                                                            let _e1364 = local_115;
-                                                            let _e1365 = local_135;
-                                                            let _e1367 = local_114;
-                                                            phi_1536_ = (_e1367 + 1u);
-                                                            phi_1539_ = (_e1364 + _e1365);
+                                                        let _e1368 = phi_1535_;
+                                                        let _e1370 = phi_1538_;
+                                                        local_114 = _e1368;
+                                                        local_115 = _e1370;
+                                                        local_141 = _e1370;
+                                                        let _e1371 = local_114;
+                                                        let _e1372 = (_e1371 < 1u);
+                                                        local_116 = _e1372;
+                                                        if _e1372 {
+                                                            let _e1373 = local_115;
+                                                            let _e1374 = local_135;
+                                                            let _e1376 = local_114;
+                                                            phi_1536_ = (_e1376 + 1u);
+                                                            phi_1539_ = (_e1373 + _e1374);
                                                         } else {
                                                             phi_1536_ = u32();
                                                             phi_1539_ = f32();
                                                         }
-                                                        let _e1370 = phi_1536_;
-                                                        let _e1372 = phi_1539_;
+                                                        let _e1379 = phi_1536_;
+                                                        let _e1381 = phi_1539_;
                                                         continue;
                                                         continuing {
-                                                            let _e1373 = local_116;
-                                                            phi_1535_ = _e1370;
-                                                            phi_1538_ = _e1372;
-                                                            break if !(_e1373);
+                                                            let _e1382 = local_116;
+                                                            phi_1535_ = _e1379;
+                                                            phi_1538_ = _e1381;
+                                                            break if !(_e1382);
                                                         }
                                                     }
-                                                    let _e1375 = local_80;
-                                                    phi_1029_ = (_e1375 + 1f);
-                                                    let _e1693 = local_141;
-                                                    phi_1032_ = _e1693;
+                                                    let _e1384 = local_80;
+                                                    phi_1029_ = (_e1384 + 1f);
+                                                    let _e1705 = local_141;
+                                                    phi_1032_ = _e1705;
                                                 } else {
                                                     phi_1029_ = f32();
                                                     phi_1032_ = f32();
                                                 }
-                                                let _e1378 = phi_1029_;
-                                                let _e1380 = phi_1032_;
+                                                let _e1387 = phi_1029_;
+                                                let _e1389 = phi_1032_;
                                                 continue;
                                                 continuing {
-                                                    let _e1381 = local_81;
-                                                    phi_1028_ = _e1378;
-                                                    phi_1031_ = _e1380;
-                                                    phi_1853_ = _e889;
-                                                    break if !(_e1381);
+                                                    let _e1390 = local_81;
+                                                    phi_1028_ = _e1387;
+                                                    phi_1031_ = _e1389;
+                                                    phi_1853_ = _e890;
+                                                    break if !(_e1390);
                                                 }
                                             }
-                                            let _e1384 = phi_1853_;
-                                            phi_1922_ = _e1384;
-                                            if _e1384 {
+                                            let _e1393 = phi_1853_;
+                                            phi_1922_ = _e1393;
+                                            if _e1393 {
                                                 break;
                                             }
-                                            let _e1385 = local_77;
-                                            phi_1923_ = _e1384;
-                                            phi_1015_ = (_e1385 + 1f);
-                                            let _e1699 = local_142;
-                                            phi_1018_ = _e1699;
+                                            let _e1394 = local_77;
+                                            phi_1923_ = _e1393;
+                                            phi_1015_ = (_e1394 + 1f);
+                                            let _e1711 = local_142;
+                                            phi_1018_ = _e1711;
                                         } else {
-                                            phi_1923_ = _e889;
+                                            phi_1923_ = _e890;
                                             phi_1015_ = f32();
                                             phi_1018_ = f32();
                                         }
-                                        let _e1388 = phi_1923_;
-                                        let _e1390 = phi_1015_;
-                                        let _e1392 = phi_1018_;
+                                        let _e1397 = phi_1923_;
+                                        let _e1399 = phi_1015_;
+                                        let _e1401 = phi_1018_;
                                         continue;
                                         continuing {
-                                            let _e1393 = local_78;
-                                            phi_1864_ = _e1388;
-                                            phi_1014_ = _e1390;
-                                            phi_1017_ = _e1392;
-                                            phi_1922_ = _e1388;
-                                            break if !(_e1393);
+                                            let _e1402 = local_78;
+                                            phi_1864_ = _e1397;
+                                            phi_1014_ = _e1399;
+                                            phi_1017_ = _e1401;
+                                            phi_1922_ = _e1397;
+                                            break if !(_e1402);
                                         }
                                     }
-                                    let _e1396 = phi_1922_;
-                                    phi_1935_ = _e1396;
-                                    if _e1396 {
+                                    let _e1405 = phi_1922_;
+                                    phi_1935_ = _e1405;
+                                    if _e1405 {
                                         break;
                                     }
-                                    phi_1933_ = _e1396;
-                                    let _e1704 = local_143;
-                                    phi_1551_ = _e1704;
+                                    phi_1933_ = _e1405;
+                                    let _e1716 = local_143;
+                                    phi_1551_ = _e1716;
                                 }
-                                let _e1398 = phi_1933_;
-                                let _e1400 = phi_1551_;
-                                local_117 = (1f / _e1400);
-                                let _e1402 = local_67;
-                                local_118 = _e1402[0];
-                                let _e1404 = local_68;
-                                local_119 = _e1404[0];
-                                if (_e1402[0] != _e1402[0]) {
+                                let _e1407 = phi_1933_;
+                                let _e1409 = phi_1551_;
+                                local_117 = (1f / _e1409);
+                                let _e1411 = local_67;
+                                local_118 = _e1411[0];
+                                let _e1413 = local_68;
+                                local_119 = _e1413[0];
+                                if !((_e1411[0] == _e1411[0])) {
                                     phi_1734_ = true;
                                 } else {
-                                    let _e1407 = local_119;
-                                    let _e1408 = local_118;
-                                    phi_1734_ = (_e1407 <= _e1408);
+                                    let _e1417 = local_119;
+                                    let _e1418 = local_118;
+                                    phi_1734_ = (_e1417 <= _e1418);
                                 }
-                                let _e1411 = phi_1734_;
-                                let _e1412 = local_119;
-                                let _e1413 = local_118;
-                                local_136 = select(_e1413, _e1412, _e1411);
-                                let _e1415 = local_67;
-                                local_120 = _e1415[1];
-                                let _e1417 = local_68;
-                                local_121 = _e1417[1];
-                                if (_e1415[1] != _e1415[1]) {
+                                let _e1421 = phi_1734_;
+                                let _e1422 = local_119;
+                                let _e1423 = local_118;
+                                local_136 = select(_e1423, _e1422, _e1421);
+                                let _e1425 = local_67;
+                                local_120 = _e1425[1];
+                                let _e1427 = local_68;
+                                local_121 = _e1427[1];
+                                if !((_e1425[1] == _e1425[1])) {
                                     phi_1749_ = true;
                                 } else {
-                                    let _e1420 = local_121;
-                                    let _e1421 = local_120;
-                                    phi_1749_ = (_e1420 <= _e1421);
+                                    let _e1431 = local_121;
+                                    let _e1432 = local_120;
+                                    phi_1749_ = (_e1431 <= _e1432);
                                 }
-                                let _e1424 = phi_1749_;
-                                let _e1425 = local_121;
-                                let _e1426 = local_120;
-                                local_137 = select(_e1426, _e1425, _e1424);
-                                let _e1428 = local_67;
-                                local_122 = _e1428[2];
-                                let _e1430 = local_68;
-                                local_123 = _e1430[2];
-                                if (_e1428[2] != _e1428[2]) {
+                                let _e1435 = phi_1749_;
+                                let _e1436 = local_121;
+                                let _e1437 = local_120;
+                                local_137 = select(_e1437, _e1436, _e1435);
+                                let _e1439 = local_67;
+                                local_122 = _e1439[2];
+                                let _e1441 = local_68;
+                                local_123 = _e1441[2];
+                                if !((_e1439[2] == _e1439[2])) {
                                     phi_1764_ = true;
                                 } else {
-                                    let _e1433 = local_123;
-                                    let _e1434 = local_122;
-                                    phi_1764_ = (_e1433 <= _e1434);
+                                    let _e1445 = local_123;
+                                    let _e1446 = local_122;
+                                    phi_1764_ = (_e1445 <= _e1446);
                                 }
-                                let _e1437 = phi_1764_;
-                                let _e1438 = local_123;
-                                let _e1439 = local_122;
-                                let _e1440 = select(_e1439, _e1438, _e1437);
-                                let _e1441 = local_136;
-                                let _e1442 = local_137;
-                                let _e1444 = local_118;
-                                let _e1445 = local_136;
-                                let _e1447 = local_117;
-                                let _e1449 = local_120;
-                                let _e1450 = local_137;
-                                let _e1452 = local_117;
-                                let _e1454 = local_122;
-                                let _e1456 = local_117;
-                                let _e1459 = local_72;
-                                local_138[0u] = _e1459;
-                                let _e1461 = local_73;
-                                local_138[1u] = _e1461;
-                                let _e1463 = local_74;
-                                local_138[2u] = _e1463;
-                                let _e1465 = local_134;
-                                local_138[3u] = _e1465;
-                                local_138[4u] = ((_e1444 - _e1445) * _e1447);
-                                local_138[5u] = ((_e1449 - _e1450) * _e1452);
-                                local_138[6u] = ((_e1454 - _e1440) * _e1456);
+                                let _e1449 = phi_1764_;
+                                let _e1450 = local_123;
+                                let _e1451 = local_122;
+                                let _e1452 = select(_e1451, _e1450, _e1449);
+                                let _e1453 = local_136;
+                                let _e1454 = local_137;
+                                let _e1456 = local_118;
+                                let _e1457 = local_136;
+                                let _e1459 = local_117;
+                                let _e1461 = local_120;
+                                let _e1462 = local_137;
+                                let _e1464 = local_117;
+                                let _e1466 = local_122;
+                                let _e1468 = local_117;
+                                let _e1471 = local_72;
+                                local_138[0u] = _e1471;
+                                let _e1473 = local_73;
+                                local_138[1u] = _e1473;
+                                let _e1475 = local_74;
+                                local_138[2u] = _e1475;
+                                let _e1477 = local_134;
+                                local_138[3u] = _e1477;
+                                local_138[4u] = ((_e1456 - _e1457) * _e1459);
+                                local_138[5u] = ((_e1461 - _e1462) * _e1464);
+                                local_138[6u] = ((_e1466 - _e1452) * _e1468);
                                 local_138[7u] = 0f;
                                 phi_1581_ = 0u;
                                 loop {
-                                    let _e1471 = phi_1581_;
-                                    local_124 = _e1471;
-                                    let _e1472 = local_124;
-                                    let _e1473 = (_e1472 < 8u);
-                                    local_125 = _e1473;
-                                    if _e1473 {
-                                        let _e1474 = local_71;
-                                        let _e1476 = local_124;
-                                        local_126 = ((_e1474 * 8u) + _e1476);
-                                        let _e1478 = local_125;
-                                        if _e1478 {
+                                    let _e1483 = phi_1581_;
+                                    local_124 = _e1483;
+                                    let _e1484 = local_124;
+                                    let _e1485 = (_e1484 < 8u);
+                                    local_125 = _e1485;
+                                    if _e1485 {
+                                        let _e1486 = local_71;
+                                        let _e1488 = local_124;
+                                        local_126 = ((_e1486 * 8u) + _e1488);
+                                        let _e1490 = local_125;
+                                        if _e1490 {
                                         } else {
                                             phi_1924_ = true;
                                             break;
                                         }
-                                        let _e1479 = local_124;
-                                        let _e1481 = local_138[_e1479];
-                                        local_127 = bitcast<u32>(_e1481);
-                                        let _e1483 = local_126;
-                                        let _e1484 = local_4;
-                                        if (_e1483 < _e1484) {
+                                        let _e1491 = local_124;
+                                        let _e1493 = local_138[_e1491];
+                                        local_127 = bitcast<u32>(_e1493);
+                                        let _e1495 = local_126;
+                                        let _e1496 = local_4;
+                                        if (_e1495 < _e1496) {
                                         } else {
                                             phi_1924_ = true;
                                             break;
                                         }
-                                        let _e1486 = local_126;
-                                        let _e1489 = local_127;
-                                        global_7.member[_e1486] = _e1489;
-                                        let _e1490 = local_124;
-                                        phi_1582_ = (_e1490 + 1u);
+                                        let _e1498 = local_126;
+                                        let _e1501 = local_127;
+                                        global_7.member[_e1498] = _e1501;
+                                        let _e1502 = local_124;
+                                        phi_1582_ = (_e1502 + 1u);
                                     } else {
                                         phi_1582_ = u32();
                                     }
-                                    let _e1493 = phi_1582_;
+                                    let _e1505 = phi_1582_;
                                     continue;
                                     continuing {
-                                        let _e1494 = local_125;
-                                        phi_1581_ = _e1493;
-                                        phi_1924_ = _e1398;
-                                        break if !(_e1494);
+                                        let _e1506 = local_125;
+                                        phi_1581_ = _e1505;
+                                        phi_1924_ = _e1407;
+                                        break if !(_e1506);
                                     }
                                 }
-                                let _e1497 = phi_1924_;
-                                phi_1935_ = _e1497;
-                                if _e1497 {
+                                let _e1509 = phi_1924_;
+                                phi_1935_ = _e1509;
+                                if _e1509 {
                                     break;
                                 }
-                                phi_1939_ = _e1497;
-                                phi_1615_ = array<f32, 3>(_e1441, _e1442, _e1440);
+                                phi_1939_ = _e1509;
+                                phi_1615_ = array<f32, 3>(_e1453, _e1454, _e1452);
                             } else {
                                 phi_1939_ = _e604;
                                 phi_1615_ = _e320;
                             }
-                            let _e1499 = phi_1939_;
-                            let _e1501 = phi_1615_;
-                            phi_1938_ = _e1499;
-                            phi_1616_ = _e1501;
+                            let _e1511 = phi_1939_;
+                            let _e1513 = phi_1615_;
+                            phi_1938_ = _e1511;
+                            phi_1616_ = _e1513;
                         } else {
                             phi_1938_ = _e604;
                             phi_1616_ = _e320;
                         }
-                        let _e1503 = phi_1938_;
-                        let _e1505 = phi_1616_;
-                        local_128 = _e1505;
-                        local_129 = bitcast<u32>(_e1505[0]);
-                        let _e1508 = local_14;
-                        let _e1509 = local_5;
-                        if (_e1508 < _e1509) {
+                        let _e1515 = phi_1938_;
+                        let _e1517 = phi_1616_;
+                        local_128 = _e1517;
+                        local_129 = bitcast<u32>(_e1517[0]);
+                        let _e1520 = local_14;
+                        let _e1521 = local_5;
+                        if (_e1520 < _e1521) {
                         } else {
                             phi_1935_ = true;
                             break;
                         }
-                        let _e1511 = local_14;
-                        let _e1514 = local_129;
-                        global_8.member[_e1511] = _e1514;
-                        let _e1515 = local_128;
-                        local_130 = bitcast<u32>(_e1515[1]);
-                        let _e1518 = local_17;
-                        let _e1519 = local_5;
-                        if (_e1518 < _e1519) {
+                        let _e1523 = local_14;
+                        let _e1526 = local_129;
+                        global_8.member[_e1523] = _e1526;
+                        let _e1527 = local_128;
+                        local_130 = bitcast<u32>(_e1527[1]);
+                        let _e1530 = local_17;
+                        let _e1531 = local_5;
+                        if (_e1530 < _e1531) {
                         } else {
                             phi_1935_ = true;
                             break;
                         }
-                        let _e1521 = local_17;
-                        let _e1524 = local_130;
-                        global_8.member[_e1521] = _e1524;
-                        let _e1525 = local_128;
-                        local_131 = bitcast<u32>(_e1525[2]);
-                        let _e1528 = local_20;
-                        let _e1529 = local_5;
-                        if (_e1528 < _e1529) {
+                        let _e1533 = local_17;
+                        let _e1536 = local_130;
+                        global_8.member[_e1533] = _e1536;
+                        let _e1537 = local_128;
+                        local_131 = bitcast<u32>(_e1537[2]);
+                        let _e1540 = local_20;
+                        let _e1541 = local_5;
+                        if (_e1540 < _e1541) {
                         } else {
                             phi_1935_ = true;
                             break;
                         }
-                        let _e1531 = local_20;
-                        let _e1534 = local_131;
-                        global_8.member[_e1531] = _e1534;
-                        phi_1937_ = _e1503;
+                        let _e1543 = local_20;
+                        let _e1546 = local_131;
+                        global_8.member[_e1543] = _e1546;
+                        phi_1937_ = _e1515;
                     } else {
                         phi_1937_ = _e226;
                     }
-                    let _e1536 = phi_1937_;
+                    let _e1548 = phi_1937_;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e1537 = local_11;
-                    let _e1538 = local_10;
-                    phi_1936_ = _e1536;
-                    phi_159_ = (_e1537 + _e1538);
+                    let _e1549 = local_11;
+                    let _e1550 = local_10;
+                    phi_1936_ = _e1548;
+                    phi_159_ = (_e1549 + _e1550);
                 } else {
                     phi_1936_ = _e226;
                     phi_159_ = u32();
                 }
-                let _e1541 = phi_1936_;
-                let _e1543 = phi_159_;
+                let _e1553 = phi_1936_;
+                let _e1555 = phi_159_;
                 continue;
                 continuing {
-                    let _e1544 = local_12;
-                    phi_1850_ = _e1541;
-                    phi_158_ = _e1543;
-                    phi_1935_ = _e1541;
-                    break if !(_e1544);
+                    let _e1556 = local_12;
+                    phi_1850_ = _e1553;
+                    phi_158_ = _e1555;
+                    phi_1935_ = _e1553;
+                    break if !(_e1556);
                 }
             }
-            let _e1547 = phi_1935_;
-            if _e1547 {
+            let _e1559 = phi_1935_;
+            if _e1559 {
                 break;
             }
             break;

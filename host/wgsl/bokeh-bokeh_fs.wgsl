@@ -236,347 +236,347 @@ fn function_() {
                                                         } else {
                                                             let _e163 = local_18;
                                                             let _e165 = local_18;
-                                                            let _e167 = local_18;
-                                                            let _e171 = local_11;
-                                                            let _e173 = local_17;
-                                                            let _e175 = local_17;
-                                                            let _e177 = local_17;
-                                                            let _e181 = ((select(select(u32(_e163), 0u, (_e165 < 0f)), 4294967295u, (_e167 > 4294967000f)) * _e171) + select(select(u32(_e173), 0u, (_e175 < 0f)), 4294967295u, (_e177 > 4294967000f)));
-                                                            local_22 = _e181;
-                                                            let _e182 = local;
-                                                            if (_e181 < _e182) {
+                                                            let _e168 = local_18;
+                                                            let _e172 = local_11;
+                                                            let _e174 = local_17;
+                                                            let _e176 = local_17;
+                                                            let _e179 = local_17;
+                                                            let _e183 = ((select(select(u32(_e163), 0u, !((_e165 >= 0f))), 4294967295u, (_e168 > 4294967000f)) * _e172) + select(select(u32(_e174), 0u, !((_e176 >= 0f))), 4294967295u, (_e179 > 4294967000f)));
+                                                            local_22 = _e183;
+                                                            let _e184 = local;
+                                                            if (_e183 < _e184) {
                                                             } else {
                                                                 break;
                                                             }
-                                                            let _e184 = local_22;
-                                                            let _e187 = global.member[_e184];
-                                                            phi_211_ = bitcast<f32>(_e187);
+                                                            let _e186 = local_22;
+                                                            let _e189 = global.member[_e186];
+                                                            phi_211_ = bitcast<f32>(_e189);
                                                         }
-                                                        let _e190 = phi_211_;
-                                                        phi_212_ = _e190;
+                                                        let _e192 = phi_211_;
+                                                        phi_212_ = _e192;
                                                         phi_213_ = _e162;
                                                     }
-                                                    let _e192 = phi_212_;
-                                                    let _e194 = phi_213_;
-                                                    phi_214_ = _e192;
-                                                    phi_215_ = _e194;
+                                                    let _e194 = phi_212_;
+                                                    let _e196 = phi_213_;
+                                                    phi_214_ = _e194;
+                                                    phi_215_ = _e196;
                                                 }
-                                                let _e196 = phi_214_;
-                                                let _e198 = phi_215_;
-                                                phi_216_ = _e196;
-                                                phi_217_ = _e198;
+                                                let _e198 = phi_214_;
+                                                let _e200 = phi_215_;
+                                                phi_216_ = _e198;
+                                                phi_217_ = _e200;
                                             }
-                                            let _e200 = phi_216_;
-                                            let _e202 = phi_217_;
-                                            let _e204 = local_19;
-                                            let _e205 = (1f - _e204);
-                                            local_23 = _e205;
-                                            local_24 = (select(_e200, 0f, _e202) * _e205);
-                                            let _e207 = local_17;
-                                            let _e208 = (_e207 + 1f);
-                                            local_25 = _e208;
-                                            let _e209 = (_e208 < 0f);
-                                            local_26 = _e209;
-                                            if _e209 {
+                                            let _e202 = phi_216_;
+                                            let _e204 = phi_217_;
+                                            let _e206 = local_19;
+                                            let _e207 = (1f - _e206);
+                                            local_23 = _e207;
+                                            local_24 = (select(_e202, 0f, _e204) * _e207);
+                                            let _e209 = local_17;
+                                            let _e210 = (_e209 + 1f);
+                                            local_25 = _e210;
+                                            let _e211 = (_e210 < 0f);
+                                            local_26 = _e211;
+                                            if _e211 {
                                                 phi_272_ = f32();
                                                 phi_273_ = true;
                                             } else {
-                                                let _e210 = local_18;
-                                                if (_e210 < 0f) {
+                                                let _e212 = local_18;
+                                                if (_e212 < 0f) {
                                                     phi_270_ = f32();
                                                     phi_271_ = true;
                                                 } else {
-                                                    let _e212 = local_25;
-                                                    let _e213 = local_13;
-                                                    if (_e212 >= _e213) {
+                                                    let _e214 = local_25;
+                                                    let _e215 = local_13;
+                                                    if (_e214 >= _e215) {
                                                         phi_268_ = f32();
                                                         phi_269_ = true;
                                                     } else {
-                                                        let _e215 = local_18;
-                                                        let _e216 = local_13;
-                                                        let _e217 = (_e215 >= _e216);
-                                                        if _e217 {
+                                                        let _e217 = local_18;
+                                                        let _e218 = local_13;
+                                                        let _e219 = (_e217 >= _e218);
+                                                        if _e219 {
                                                             phi_267_ = f32();
                                                         } else {
-                                                            let _e218 = local_18;
                                                             let _e220 = local_18;
                                                             let _e222 = local_18;
-                                                            let _e226 = local_11;
-                                                            let _e228 = local_25;
-                                                            let _e230 = local_25;
-                                                            let _e232 = local_25;
-                                                            let _e236 = ((select(select(u32(_e218), 0u, (_e220 < 0f)), 4294967295u, (_e222 > 4294967000f)) * _e226) + select(select(u32(_e228), 0u, (_e230 < 0f)), 4294967295u, (_e232 > 4294967000f)));
-                                                            local_27 = _e236;
-                                                            let _e237 = local;
-                                                            if (_e236 < _e237) {
+                                                            let _e225 = local_18;
+                                                            let _e229 = local_11;
+                                                            let _e231 = local_25;
+                                                            let _e233 = local_25;
+                                                            let _e236 = local_25;
+                                                            let _e240 = ((select(select(u32(_e220), 0u, !((_e222 >= 0f))), 4294967295u, (_e225 > 4294967000f)) * _e229) + select(select(u32(_e231), 0u, !((_e233 >= 0f))), 4294967295u, (_e236 > 4294967000f)));
+                                                            local_27 = _e240;
+                                                            let _e241 = local;
+                                                            if (_e240 < _e241) {
                                                             } else {
                                                                 break;
                                                             }
-                                                            let _e239 = local_27;
-                                                            let _e242 = global.member[_e239];
-                                                            phi_267_ = bitcast<f32>(_e242);
+                                                            let _e243 = local_27;
+                                                            let _e246 = global.member[_e243];
+                                                            phi_267_ = bitcast<f32>(_e246);
                                                         }
-                                                        let _e245 = phi_267_;
-                                                        phi_268_ = _e245;
-                                                        phi_269_ = _e217;
+                                                        let _e249 = phi_267_;
+                                                        phi_268_ = _e249;
+                                                        phi_269_ = _e219;
                                                     }
-                                                    let _e247 = phi_268_;
-                                                    let _e249 = phi_269_;
-                                                    phi_270_ = _e247;
-                                                    phi_271_ = _e249;
+                                                    let _e251 = phi_268_;
+                                                    let _e253 = phi_269_;
+                                                    phi_270_ = _e251;
+                                                    phi_271_ = _e253;
                                                 }
-                                                let _e251 = phi_270_;
-                                                let _e253 = phi_271_;
-                                                phi_272_ = _e251;
-                                                phi_273_ = _e253;
+                                                let _e255 = phi_270_;
+                                                let _e257 = phi_271_;
+                                                phi_272_ = _e255;
+                                                phi_273_ = _e257;
                                             }
-                                            let _e255 = phi_272_;
-                                            let _e257 = phi_273_;
-                                            let _e259 = local_19;
-                                            let _e261 = local_24;
-                                            local_28 = (_e261 + (select(_e255, 0f, _e257) * _e259));
-                                            let _e263 = local_18;
-                                            local_29 = (_e263 + 1f);
-                                            let _e265 = local_21;
-                                            if _e265 {
+                                            let _e259 = phi_272_;
+                                            let _e261 = phi_273_;
+                                            let _e263 = local_19;
+                                            let _e265 = local_24;
+                                            local_28 = (_e265 + (select(_e259, 0f, _e261) * _e263));
+                                            let _e267 = local_18;
+                                            local_29 = (_e267 + 1f);
+                                            let _e269 = local_21;
+                                            if _e269 {
                                                 phi_328_ = f32();
                                                 phi_329_ = true;
                                             } else {
-                                                let _e266 = local_29;
-                                                if (_e266 < 0f) {
+                                                let _e270 = local_29;
+                                                if (_e270 < 0f) {
                                                     phi_326_ = f32();
                                                     phi_327_ = true;
                                                 } else {
-                                                    let _e268 = local_17;
-                                                    let _e269 = local_13;
-                                                    if (_e268 >= _e269) {
+                                                    let _e272 = local_17;
+                                                    let _e273 = local_13;
+                                                    if (_e272 >= _e273) {
                                                         phi_324_ = f32();
                                                         phi_325_ = true;
                                                     } else {
-                                                        let _e271 = local_29;
-                                                        let _e272 = local_13;
-                                                        let _e273 = (_e271 >= _e272);
-                                                        if _e273 {
+                                                        let _e275 = local_29;
+                                                        let _e276 = local_13;
+                                                        let _e277 = (_e275 >= _e276);
+                                                        if _e277 {
                                                             phi_323_ = f32();
                                                         } else {
-                                                            let _e274 = local_29;
-                                                            let _e276 = local_29;
                                                             let _e278 = local_29;
-                                                            let _e282 = local_11;
-                                                            let _e284 = local_17;
-                                                            let _e286 = local_17;
-                                                            let _e288 = local_17;
-                                                            let _e292 = ((select(select(u32(_e274), 0u, (_e276 < 0f)), 4294967295u, (_e278 > 4294967000f)) * _e282) + select(select(u32(_e284), 0u, (_e286 < 0f)), 4294967295u, (_e288 > 4294967000f)));
-                                                            local_30 = _e292;
-                                                            let _e293 = local;
-                                                            if (_e292 < _e293) {
+                                                            let _e280 = local_29;
+                                                            let _e283 = local_29;
+                                                            let _e287 = local_11;
+                                                            let _e289 = local_17;
+                                                            let _e291 = local_17;
+                                                            let _e294 = local_17;
+                                                            let _e298 = ((select(select(u32(_e278), 0u, !((_e280 >= 0f))), 4294967295u, (_e283 > 4294967000f)) * _e287) + select(select(u32(_e289), 0u, !((_e291 >= 0f))), 4294967295u, (_e294 > 4294967000f)));
+                                                            local_30 = _e298;
+                                                            let _e299 = local;
+                                                            if (_e298 < _e299) {
                                                             } else {
                                                                 break;
                                                             }
-                                                            let _e295 = local_30;
-                                                            let _e298 = global.member[_e295];
-                                                            phi_323_ = bitcast<f32>(_e298);
+                                                            let _e301 = local_30;
+                                                            let _e304 = global.member[_e301];
+                                                            phi_323_ = bitcast<f32>(_e304);
                                                         }
-                                                        let _e301 = phi_323_;
-                                                        phi_324_ = _e301;
-                                                        phi_325_ = _e273;
+                                                        let _e307 = phi_323_;
+                                                        phi_324_ = _e307;
+                                                        phi_325_ = _e277;
                                                     }
-                                                    let _e303 = phi_324_;
-                                                    let _e305 = phi_325_;
-                                                    phi_326_ = _e303;
-                                                    phi_327_ = _e305;
+                                                    let _e309 = phi_324_;
+                                                    let _e311 = phi_325_;
+                                                    phi_326_ = _e309;
+                                                    phi_327_ = _e311;
                                                 }
-                                                let _e307 = phi_326_;
-                                                let _e309 = phi_327_;
-                                                phi_328_ = _e307;
-                                                phi_329_ = _e309;
+                                                let _e313 = phi_326_;
+                                                let _e315 = phi_327_;
+                                                phi_328_ = _e313;
+                                                phi_329_ = _e315;
                                             }
-                                            let _e311 = phi_328_;
-                                            let _e313 = phi_329_;
-                                            let _e315 = local_23;
-                                            local_31 = (select(_e311, 0f, _e313) * _e315);
-                                            let _e317 = local_26;
-                                            if _e317 {
+                                            let _e317 = phi_328_;
+                                            let _e319 = phi_329_;
+                                            let _e321 = local_23;
+                                            local_31 = (select(_e317, 0f, _e319) * _e321);
+                                            let _e323 = local_26;
+                                            if _e323 {
                                                 phi_385_ = f32();
                                                 phi_386_ = true;
                                             } else {
-                                                let _e318 = local_29;
-                                                if (_e318 < 0f) {
+                                                let _e324 = local_29;
+                                                if (_e324 < 0f) {
                                                     phi_383_ = f32();
                                                     phi_384_ = true;
                                                 } else {
-                                                    let _e320 = local_25;
-                                                    let _e321 = local_13;
-                                                    if (_e320 >= _e321) {
+                                                    let _e326 = local_25;
+                                                    let _e327 = local_13;
+                                                    if (_e326 >= _e327) {
                                                         phi_381_ = f32();
                                                         phi_382_ = true;
                                                     } else {
-                                                        let _e323 = local_29;
-                                                        let _e324 = local_13;
-                                                        let _e325 = (_e323 >= _e324);
-                                                        if _e325 {
+                                                        let _e329 = local_29;
+                                                        let _e330 = local_13;
+                                                        let _e331 = (_e329 >= _e330);
+                                                        if _e331 {
                                                             phi_380_ = f32();
                                                         } else {
-                                                            let _e326 = local_29;
-                                                            let _e328 = local_29;
-                                                            let _e330 = local_29;
-                                                            let _e334 = local_11;
-                                                            let _e336 = local_25;
-                                                            let _e338 = local_25;
-                                                            let _e340 = local_25;
-                                                            let _e344 = ((select(select(u32(_e326), 0u, (_e328 < 0f)), 4294967295u, (_e330 > 4294967000f)) * _e334) + select(select(u32(_e336), 0u, (_e338 < 0f)), 4294967295u, (_e340 > 4294967000f)));
-                                                            local_32 = _e344;
-                                                            let _e345 = local;
-                                                            if (_e344 < _e345) {
+                                                            let _e332 = local_29;
+                                                            let _e334 = local_29;
+                                                            let _e337 = local_29;
+                                                            let _e341 = local_11;
+                                                            let _e343 = local_25;
+                                                            let _e345 = local_25;
+                                                            let _e348 = local_25;
+                                                            let _e352 = ((select(select(u32(_e332), 0u, !((_e334 >= 0f))), 4294967295u, (_e337 > 4294967000f)) * _e341) + select(select(u32(_e343), 0u, !((_e345 >= 0f))), 4294967295u, (_e348 > 4294967000f)));
+                                                            local_32 = _e352;
+                                                            let _e353 = local;
+                                                            if (_e352 < _e353) {
                                                             } else {
                                                                 break;
                                                             }
-                                                            let _e347 = local_32;
-                                                            let _e350 = global.member[_e347];
-                                                            phi_380_ = bitcast<f32>(_e350);
+                                                            let _e355 = local_32;
+                                                            let _e358 = global.member[_e355];
+                                                            phi_380_ = bitcast<f32>(_e358);
                                                         }
-                                                        let _e353 = phi_380_;
-                                                        phi_381_ = _e353;
-                                                        phi_382_ = _e325;
+                                                        let _e361 = phi_380_;
+                                                        phi_381_ = _e361;
+                                                        phi_382_ = _e331;
                                                     }
-                                                    let _e355 = phi_381_;
-                                                    let _e357 = phi_382_;
-                                                    phi_383_ = _e355;
-                                                    phi_384_ = _e357;
+                                                    let _e363 = phi_381_;
+                                                    let _e365 = phi_382_;
+                                                    phi_383_ = _e363;
+                                                    phi_384_ = _e365;
                                                 }
-                                                let _e359 = phi_383_;
-                                                let _e361 = phi_384_;
-                                                phi_385_ = _e359;
-                                                phi_386_ = _e361;
+                                                let _e367 = phi_383_;
+                                                let _e369 = phi_384_;
+                                                phi_385_ = _e367;
+                                                phi_386_ = _e369;
                                             }
-                                            let _e363 = phi_385_;
-                                            let _e365 = phi_386_;
-                                            let _e367 = local_19;
-                                            let _e369 = local_31;
-                                            let _e371 = local_20;
-                                            let _e373 = local_28;
-                                            let _e375 = local_20;
-                                            phi_397_ = ((_e373 * (1f - _e371)) + ((_e369 + (select(_e363, 0f, _e365) * _e367)) * _e375));
+                                            let _e371 = phi_385_;
+                                            let _e373 = phi_386_;
+                                            let _e375 = local_19;
+                                            let _e377 = local_31;
+                                            let _e379 = local_20;
+                                            let _e381 = local_28;
+                                            let _e383 = local_20;
+                                            phi_397_ = ((_e381 * (1f - _e379)) + ((_e377 + (select(_e371, 0f, _e373) * _e375)) * _e383));
                                         } else {
                                             phi_397_ = f32();
                                         }
-                                        let _e379 = phi_397_;
-                                        let _e380 = local_16;
-                                        phi_399_ = _e379;
-                                        phi_400_ = select(true, false, _e380);
+                                        let _e387 = phi_397_;
+                                        let _e388 = local_16;
+                                        phi_399_ = _e387;
+                                        phi_400_ = select(true, false, _e388);
                                     } else {
                                         phi_399_ = f32();
                                         phi_400_ = true;
                                     }
-                                    let _e383 = phi_399_;
-                                    let _e385 = phi_400_;
-                                    phi_401_ = _e383;
-                                    phi_402_ = _e385;
+                                    let _e391 = phi_399_;
+                                    let _e393 = phi_400_;
+                                    phi_401_ = _e391;
+                                    phi_402_ = _e393;
                                 } else {
                                     phi_401_ = f32();
                                     phi_402_ = true;
                                 }
-                                let _e387 = phi_401_;
-                                let _e389 = phi_402_;
-                                phi_403_ = _e387;
-                                phi_404_ = _e389;
+                                let _e395 = phi_401_;
+                                let _e397 = phi_402_;
+                                phi_403_ = _e395;
+                                phi_404_ = _e397;
                             } else {
                                 phi_403_ = f32();
                                 phi_404_ = true;
                             }
-                            let _e391 = phi_403_;
-                            let _e393 = phi_404_;
-                            phi_409_ = select(_e391, 0f, _e393);
+                            let _e399 = phi_403_;
+                            let _e401 = phi_404_;
+                            phi_409_ = select(_e399, 0f, _e401);
                         } else {
                             phi_409_ = 0f;
                         }
-                        let _e396 = phi_409_;
-                        phi_499_ = _e396;
+                        let _e404 = phi_409_;
+                        phi_499_ = _e404;
                     } else {
-                        let _e397 = local_9;
-                        let _e398 = local_9;
-                        let _e400 = local_10;
-                        let _e401 = local_10;
-                        let _e404 = sqrt(((_e397 * _e398) + (_e400 * _e401)));
-                        local_33 = _e404;
-                        let _e405 = local_8;
-                        if _e405 {
-                            phi_486_ = _e404;
+                        let _e405 = local_9;
+                        let _e406 = local_9;
+                        let _e408 = local_10;
+                        let _e409 = local_10;
+                        let _e412 = sqrt(((_e405 * _e406) + (_e408 * _e409)));
+                        local_33 = _e412;
+                        let _e413 = local_8;
+                        if _e413 {
+                            phi_486_ = _e412;
                         } else {
-                            let _e409 = global_1.member.member_9.member_2;
-                            let _e411 = local_9;
-                            let _e414 = local_10;
+                            let _e417 = global_1.member.member_9.member_2;
+                            let _e419 = local_9;
+                            let _e422 = local_10;
                             phi_428_ = 1u;
-                            phi_431_ = ((_e411 * _e409[0]) + (_e414 * _e409[1]));
-                            phi_433_ = _e409;
+                            phi_431_ = ((_e419 * _e417[0]) + (_e422 * _e417[1]));
+                            phi_433_ = _e417;
                             loop {
-                                let _e418 = phi_428_;
-                                let _e420 = phi_431_;
-                                let _e422 = phi_433_;
-                                local_34 = _e418;
-                                local_35 = _e420;
-                                local_36 = _e422;
-                                let _e423 = local_34;
-                                let _e424 = local_7;
-                                let _e425 = (_e423 < _e424);
-                                local_37 = _e425;
-                                if _e425 {
-                                    let _e426 = local_36;
-                                    let _e432 = global_1.member.member_9.member_3[0u];
+                                let _e426 = phi_428_;
+                                let _e428 = phi_431_;
+                                let _e430 = phi_433_;
+                                local_34 = _e426;
+                                local_35 = _e428;
+                                local_36 = _e430;
+                                let _e431 = local_34;
+                                let _e432 = local_7;
+                                let _e433 = (_e431 < _e432);
+                                local_37 = _e433;
+                                if _e433 {
                                     let _e434 = local_36;
-                                    let _e440 = global_1.member.member_9.member_3[1u];
-                                    let _e442 = ((_e426[0] * _e432) - (_e434[1] * _e440));
-                                    let _e445 = ((_e426[0] * _e440) + (_e434[1] * _e432));
-                                    let _e447 = local_9;
-                                    let _e449 = local_10;
-                                    let _e451 = ((_e447 * _e442) + (_e449 * _e445));
-                                    let _e452 = local_35;
-                                    let _e454 = local_35;
-                                    let _e456 = local_34;
-                                    phi_429_ = (_e456 + 1u);
-                                    phi_432_ = select(_e454, _e451, (_e451 > _e452));
-                                    phi_434_ = array<f32, 2>(_e442, _e445);
+                                    let _e440 = global_1.member.member_9.member_3[0u];
+                                    let _e442 = local_36;
+                                    let _e448 = global_1.member.member_9.member_3[1u];
+                                    let _e450 = ((_e434[0] * _e440) - (_e442[1] * _e448));
+                                    let _e453 = ((_e434[0] * _e448) + (_e442[1] * _e440));
+                                    let _e455 = local_9;
+                                    let _e457 = local_10;
+                                    let _e459 = ((_e455 * _e450) + (_e457 * _e453));
+                                    let _e460 = local_35;
+                                    let _e462 = local_35;
+                                    let _e464 = local_34;
+                                    phi_429_ = (_e464 + 1u);
+                                    phi_432_ = select(_e462, _e459, (_e459 > _e460));
+                                    phi_434_ = array<f32, 2>(_e450, _e453);
                                 } else {
                                     phi_429_ = u32();
                                     phi_432_ = f32();
                                     phi_434_ = array<f32, 2>();
                                 }
-                                let _e459 = phi_429_;
-                                let _e461 = phi_432_;
-                                let _e463 = phi_434_;
+                                let _e467 = phi_429_;
+                                let _e469 = phi_432_;
+                                let _e471 = phi_434_;
                                 continue;
                                 continuing {
-                                    let _e464 = local_37;
-                                    phi_428_ = _e459;
-                                    phi_431_ = _e461;
-                                    phi_433_ = _e463;
-                                    break if !(_e464);
+                                    let _e472 = local_37;
+                                    phi_428_ = _e467;
+                                    phi_431_ = _e469;
+                                    phi_433_ = _e471;
+                                    break if !(_e472);
                                 }
                             }
-                            let _e469 = global_1.member.member_9.member_1;
-                            let _e471 = local_35;
-                            let _e476 = global_1.member.member_9.member_4;
-                            let _e478 = local_33;
-                            phi_486_ = ((((1f - _e469) * _e471) * _e476) + (_e469 * _e478));
+                            let _e477 = global_1.member.member_9.member_1;
+                            let _e479 = local_35;
+                            let _e484 = global_1.member.member_9.member_4;
+                            let _e486 = local_33;
+                            phi_486_ = ((((1f - _e477) * _e479) * _e484) + (_e477 * _e486));
                         }
-                        let _e482 = phi_486_;
-                        let _e483 = local_4;
-                        let _e484 = (_e483 - _e482);
-                        phi_499_ = select(0f, select(1f, _e484, (_e484 < 1f)), (0f < _e484));
+                        let _e490 = phi_486_;
+                        let _e491 = local_4;
+                        let _e492 = (_e491 - _e490);
+                        phi_499_ = select(0f, select(1f, _e492, (_e492 < 1f)), (0f < _e492));
                     }
-                    let _e490 = phi_499_;
-                    phi_500_ = _e490;
+                    let _e498 = phi_499_;
+                    phi_500_ = _e498;
                 }
-                let _e492 = phi_500_;
-                phi_501_ = _e492;
+                let _e500 = phi_500_;
+                phi_501_ = _e500;
             } else {
                 phi_501_ = 0f;
             }
-            let _e494 = phi_501_;
-            let _e495 = local_3;
-            let _e498 = local_3;
-            let _e501 = local_3;
-            global_5 = vec4<f32>((_e494 * _e495.x), (_e494 * _e498.y), (_e494 * _e501.z), 0f);
+            let _e502 = phi_501_;
+            let _e503 = local_3;
+            let _e506 = local_3;
+            let _e509 = local_3;
+            global_5 = vec4<f32>((_e502 * _e503.x), (_e502 * _e506.y), (_e502 * _e509.z), 0f);
             break;
         }
     }

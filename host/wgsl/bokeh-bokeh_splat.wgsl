@@ -412,446 +412,446 @@ fn function_() {
                                                                         } else {
                                                                             let _e320 = local_43;
                                                                             let _e322 = local_43;
-                                                                            let _e324 = local_43;
-                                                                            let _e328 = local_36;
-                                                                            let _e330 = local_42;
-                                                                            let _e332 = local_42;
-                                                                            let _e334 = local_42;
-                                                                            let _e338 = ((select(select(u32(_e320), 0u, (_e322 < 0f)), 4294967295u, (_e324 > 4294967000f)) * _e328) + select(select(u32(_e330), 0u, (_e332 < 0f)), 4294967295u, (_e334 > 4294967000f)));
-                                                                            local_47 = _e338;
-                                                                            let _e339 = local_2;
-                                                                            if (_e338 < _e339) {
+                                                                            let _e325 = local_43;
+                                                                            let _e329 = local_36;
+                                                                            let _e331 = local_42;
+                                                                            let _e333 = local_42;
+                                                                            let _e336 = local_42;
+                                                                            let _e340 = ((select(select(u32(_e320), 0u, !((_e322 >= 0f))), 4294967295u, (_e325 > 4294967000f)) * _e329) + select(select(u32(_e331), 0u, !((_e333 >= 0f))), 4294967295u, (_e336 > 4294967000f)));
+                                                                            local_47 = _e340;
+                                                                            let _e341 = local_2;
+                                                                            if (_e340 < _e341) {
                                                                             } else {
                                                                                 phi_704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e341 = local_47;
-                                                                            let _e344 = global_2.member[_e341];
-                                                                            phi_333_ = bitcast<f32>(_e344);
+                                                                            let _e343 = local_47;
+                                                                            let _e346 = global_2.member[_e343];
+                                                                            phi_333_ = bitcast<f32>(_e346);
                                                                         }
-                                                                        let _e347 = phi_333_;
-                                                                        phi_334_ = _e347;
+                                                                        let _e349 = phi_333_;
+                                                                        phi_334_ = _e349;
                                                                         phi_335_ = _e319;
                                                                     }
-                                                                    let _e349 = phi_334_;
-                                                                    let _e351 = phi_335_;
-                                                                    phi_336_ = _e349;
-                                                                    phi_337_ = _e351;
+                                                                    let _e351 = phi_334_;
+                                                                    let _e353 = phi_335_;
+                                                                    phi_336_ = _e351;
+                                                                    phi_337_ = _e353;
                                                                 }
-                                                                let _e353 = phi_336_;
-                                                                let _e355 = phi_337_;
-                                                                phi_338_ = _e353;
-                                                                phi_339_ = _e355;
+                                                                let _e355 = phi_336_;
+                                                                let _e357 = phi_337_;
+                                                                phi_338_ = _e355;
+                                                                phi_339_ = _e357;
                                                             }
-                                                            let _e357 = phi_338_;
-                                                            let _e359 = phi_339_;
-                                                            let _e361 = local_44;
-                                                            let _e362 = (1f - _e361);
-                                                            local_48 = _e362;
-                                                            local_49 = (select(_e357, 0f, _e359) * _e362);
-                                                            let _e364 = local_42;
-                                                            let _e365 = (_e364 + 1f);
-                                                            local_50 = _e365;
-                                                            let _e366 = (_e365 < 0f);
-                                                            local_51 = _e366;
-                                                            if _e366 {
+                                                            let _e359 = phi_338_;
+                                                            let _e361 = phi_339_;
+                                                            let _e363 = local_44;
+                                                            let _e364 = (1f - _e363);
+                                                            local_48 = _e364;
+                                                            local_49 = (select(_e359, 0f, _e361) * _e364);
+                                                            let _e366 = local_42;
+                                                            let _e367 = (_e366 + 1f);
+                                                            local_50 = _e367;
+                                                            let _e368 = (_e367 < 0f);
+                                                            local_51 = _e368;
+                                                            if _e368 {
                                                                 phi_394_ = f32();
                                                                 phi_395_ = true;
                                                             } else {
-                                                                let _e367 = local_43;
-                                                                if (_e367 < 0f) {
+                                                                let _e369 = local_43;
+                                                                if (_e369 < 0f) {
                                                                     phi_392_ = f32();
                                                                     phi_393_ = true;
                                                                 } else {
-                                                                    let _e369 = local_50;
-                                                                    let _e370 = local_38;
-                                                                    if (_e369 >= _e370) {
+                                                                    let _e371 = local_50;
+                                                                    let _e372 = local_38;
+                                                                    if (_e371 >= _e372) {
                                                                         phi_390_ = f32();
                                                                         phi_391_ = true;
                                                                     } else {
-                                                                        let _e372 = local_43;
-                                                                        let _e373 = local_38;
-                                                                        let _e374 = (_e372 >= _e373);
-                                                                        if _e374 {
+                                                                        let _e374 = local_43;
+                                                                        let _e375 = local_38;
+                                                                        let _e376 = (_e374 >= _e375);
+                                                                        if _e376 {
                                                                             phi_389_ = f32();
                                                                         } else {
-                                                                            let _e375 = local_43;
                                                                             let _e377 = local_43;
                                                                             let _e379 = local_43;
-                                                                            let _e383 = local_36;
-                                                                            let _e385 = local_50;
-                                                                            let _e387 = local_50;
-                                                                            let _e389 = local_50;
-                                                                            let _e393 = ((select(select(u32(_e375), 0u, (_e377 < 0f)), 4294967295u, (_e379 > 4294967000f)) * _e383) + select(select(u32(_e385), 0u, (_e387 < 0f)), 4294967295u, (_e389 > 4294967000f)));
-                                                                            local_52 = _e393;
-                                                                            let _e394 = local_2;
-                                                                            if (_e393 < _e394) {
+                                                                            let _e382 = local_43;
+                                                                            let _e386 = local_36;
+                                                                            let _e388 = local_50;
+                                                                            let _e390 = local_50;
+                                                                            let _e393 = local_50;
+                                                                            let _e397 = ((select(select(u32(_e377), 0u, !((_e379 >= 0f))), 4294967295u, (_e382 > 4294967000f)) * _e386) + select(select(u32(_e388), 0u, !((_e390 >= 0f))), 4294967295u, (_e393 > 4294967000f)));
+                                                                            local_52 = _e397;
+                                                                            let _e398 = local_2;
+                                                                            if (_e397 < _e398) {
                                                                             } else {
                                                                                 phi_704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e396 = local_52;
-                                                                            let _e399 = global_2.member[_e396];
-                                                                            phi_389_ = bitcast<f32>(_e399);
+                                                                            let _e400 = local_52;
+                                                                            let _e403 = global_2.member[_e400];
+                                                                            phi_389_ = bitcast<f32>(_e403);
                                                                         }
-                                                                        let _e402 = phi_389_;
-                                                                        phi_390_ = _e402;
-                                                                        phi_391_ = _e374;
+                                                                        let _e406 = phi_389_;
+                                                                        phi_390_ = _e406;
+                                                                        phi_391_ = _e376;
                                                                     }
-                                                                    let _e404 = phi_390_;
-                                                                    let _e406 = phi_391_;
-                                                                    phi_392_ = _e404;
-                                                                    phi_393_ = _e406;
+                                                                    let _e408 = phi_390_;
+                                                                    let _e410 = phi_391_;
+                                                                    phi_392_ = _e408;
+                                                                    phi_393_ = _e410;
                                                                 }
-                                                                let _e408 = phi_392_;
-                                                                let _e410 = phi_393_;
-                                                                phi_394_ = _e408;
-                                                                phi_395_ = _e410;
+                                                                let _e412 = phi_392_;
+                                                                let _e414 = phi_393_;
+                                                                phi_394_ = _e412;
+                                                                phi_395_ = _e414;
                                                             }
-                                                            let _e412 = phi_394_;
-                                                            let _e414 = phi_395_;
-                                                            let _e416 = local_44;
-                                                            let _e418 = local_49;
-                                                            local_53 = (_e418 + (select(_e412, 0f, _e414) * _e416));
-                                                            let _e420 = local_43;
-                                                            local_54 = (_e420 + 1f);
-                                                            let _e422 = local_46;
-                                                            if _e422 {
+                                                            let _e416 = phi_394_;
+                                                            let _e418 = phi_395_;
+                                                            let _e420 = local_44;
+                                                            let _e422 = local_49;
+                                                            local_53 = (_e422 + (select(_e416, 0f, _e418) * _e420));
+                                                            let _e424 = local_43;
+                                                            local_54 = (_e424 + 1f);
+                                                            let _e426 = local_46;
+                                                            if _e426 {
                                                                 phi_450_ = f32();
                                                                 phi_451_ = true;
                                                             } else {
-                                                                let _e423 = local_54;
-                                                                if (_e423 < 0f) {
+                                                                let _e427 = local_54;
+                                                                if (_e427 < 0f) {
                                                                     phi_448_ = f32();
                                                                     phi_449_ = true;
                                                                 } else {
-                                                                    let _e425 = local_42;
-                                                                    let _e426 = local_38;
-                                                                    if (_e425 >= _e426) {
+                                                                    let _e429 = local_42;
+                                                                    let _e430 = local_38;
+                                                                    if (_e429 >= _e430) {
                                                                         phi_446_ = f32();
                                                                         phi_447_ = true;
                                                                     } else {
-                                                                        let _e428 = local_54;
-                                                                        let _e429 = local_38;
-                                                                        let _e430 = (_e428 >= _e429);
-                                                                        if _e430 {
+                                                                        let _e432 = local_54;
+                                                                        let _e433 = local_38;
+                                                                        let _e434 = (_e432 >= _e433);
+                                                                        if _e434 {
                                                                             phi_445_ = f32();
                                                                         } else {
-                                                                            let _e431 = local_54;
-                                                                            let _e433 = local_54;
                                                                             let _e435 = local_54;
-                                                                            let _e439 = local_36;
-                                                                            let _e441 = local_42;
-                                                                            let _e443 = local_42;
-                                                                            let _e445 = local_42;
-                                                                            let _e449 = ((select(select(u32(_e431), 0u, (_e433 < 0f)), 4294967295u, (_e435 > 4294967000f)) * _e439) + select(select(u32(_e441), 0u, (_e443 < 0f)), 4294967295u, (_e445 > 4294967000f)));
-                                                                            local_55 = _e449;
-                                                                            let _e450 = local_2;
-                                                                            if (_e449 < _e450) {
+                                                                            let _e437 = local_54;
+                                                                            let _e440 = local_54;
+                                                                            let _e444 = local_36;
+                                                                            let _e446 = local_42;
+                                                                            let _e448 = local_42;
+                                                                            let _e451 = local_42;
+                                                                            let _e455 = ((select(select(u32(_e435), 0u, !((_e437 >= 0f))), 4294967295u, (_e440 > 4294967000f)) * _e444) + select(select(u32(_e446), 0u, !((_e448 >= 0f))), 4294967295u, (_e451 > 4294967000f)));
+                                                                            local_55 = _e455;
+                                                                            let _e456 = local_2;
+                                                                            if (_e455 < _e456) {
                                                                             } else {
                                                                                 phi_704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e452 = local_55;
-                                                                            let _e455 = global_2.member[_e452];
-                                                                            phi_445_ = bitcast<f32>(_e455);
+                                                                            let _e458 = local_55;
+                                                                            let _e461 = global_2.member[_e458];
+                                                                            phi_445_ = bitcast<f32>(_e461);
                                                                         }
-                                                                        let _e458 = phi_445_;
-                                                                        phi_446_ = _e458;
-                                                                        phi_447_ = _e430;
+                                                                        let _e464 = phi_445_;
+                                                                        phi_446_ = _e464;
+                                                                        phi_447_ = _e434;
                                                                     }
-                                                                    let _e460 = phi_446_;
-                                                                    let _e462 = phi_447_;
-                                                                    phi_448_ = _e460;
-                                                                    phi_449_ = _e462;
+                                                                    let _e466 = phi_446_;
+                                                                    let _e468 = phi_447_;
+                                                                    phi_448_ = _e466;
+                                                                    phi_449_ = _e468;
                                                                 }
-                                                                let _e464 = phi_448_;
-                                                                let _e466 = phi_449_;
-                                                                phi_450_ = _e464;
-                                                                phi_451_ = _e466;
+                                                                let _e470 = phi_448_;
+                                                                let _e472 = phi_449_;
+                                                                phi_450_ = _e470;
+                                                                phi_451_ = _e472;
                                                             }
-                                                            let _e468 = phi_450_;
-                                                            let _e470 = phi_451_;
-                                                            let _e472 = local_48;
-                                                            local_56 = (select(_e468, 0f, _e470) * _e472);
-                                                            let _e474 = local_51;
-                                                            if _e474 {
+                                                            let _e474 = phi_450_;
+                                                            let _e476 = phi_451_;
+                                                            let _e478 = local_48;
+                                                            local_56 = (select(_e474, 0f, _e476) * _e478);
+                                                            let _e480 = local_51;
+                                                            if _e480 {
                                                                 phi_507_ = f32();
                                                                 phi_508_ = true;
                                                             } else {
-                                                                let _e475 = local_54;
-                                                                if (_e475 < 0f) {
+                                                                let _e481 = local_54;
+                                                                if (_e481 < 0f) {
                                                                     phi_505_ = f32();
                                                                     phi_506_ = true;
                                                                 } else {
-                                                                    let _e477 = local_50;
-                                                                    let _e478 = local_38;
-                                                                    if (_e477 >= _e478) {
+                                                                    let _e483 = local_50;
+                                                                    let _e484 = local_38;
+                                                                    if (_e483 >= _e484) {
                                                                         phi_503_ = f32();
                                                                         phi_504_ = true;
                                                                     } else {
-                                                                        let _e480 = local_54;
-                                                                        let _e481 = local_38;
-                                                                        let _e482 = (_e480 >= _e481);
-                                                                        if _e482 {
+                                                                        let _e486 = local_54;
+                                                                        let _e487 = local_38;
+                                                                        let _e488 = (_e486 >= _e487);
+                                                                        if _e488 {
                                                                             phi_502_ = f32();
                                                                         } else {
-                                                                            let _e483 = local_54;
-                                                                            let _e485 = local_54;
-                                                                            let _e487 = local_54;
-                                                                            let _e491 = local_36;
-                                                                            let _e493 = local_50;
-                                                                            let _e495 = local_50;
-                                                                            let _e497 = local_50;
-                                                                            let _e501 = ((select(select(u32(_e483), 0u, (_e485 < 0f)), 4294967295u, (_e487 > 4294967000f)) * _e491) + select(select(u32(_e493), 0u, (_e495 < 0f)), 4294967295u, (_e497 > 4294967000f)));
-                                                                            local_57 = _e501;
-                                                                            let _e502 = local_2;
-                                                                            if (_e501 < _e502) {
+                                                                            let _e489 = local_54;
+                                                                            let _e491 = local_54;
+                                                                            let _e494 = local_54;
+                                                                            let _e498 = local_36;
+                                                                            let _e500 = local_50;
+                                                                            let _e502 = local_50;
+                                                                            let _e505 = local_50;
+                                                                            let _e509 = ((select(select(u32(_e489), 0u, !((_e491 >= 0f))), 4294967295u, (_e494 > 4294967000f)) * _e498) + select(select(u32(_e500), 0u, !((_e502 >= 0f))), 4294967295u, (_e505 > 4294967000f)));
+                                                                            local_57 = _e509;
+                                                                            let _e510 = local_2;
+                                                                            if (_e509 < _e510) {
                                                                             } else {
                                                                                 phi_704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e504 = local_57;
-                                                                            let _e507 = global_2.member[_e504];
-                                                                            phi_502_ = bitcast<f32>(_e507);
+                                                                            let _e512 = local_57;
+                                                                            let _e515 = global_2.member[_e512];
+                                                                            phi_502_ = bitcast<f32>(_e515);
                                                                         }
-                                                                        let _e510 = phi_502_;
-                                                                        phi_503_ = _e510;
-                                                                        phi_504_ = _e482;
+                                                                        let _e518 = phi_502_;
+                                                                        phi_503_ = _e518;
+                                                                        phi_504_ = _e488;
                                                                     }
-                                                                    let _e512 = phi_503_;
-                                                                    let _e514 = phi_504_;
-                                                                    phi_505_ = _e512;
-                                                                    phi_506_ = _e514;
+                                                                    let _e520 = phi_503_;
+                                                                    let _e522 = phi_504_;
+                                                                    phi_505_ = _e520;
+                                                                    phi_506_ = _e522;
                                                                 }
-                                                                let _e516 = phi_505_;
-                                                                let _e518 = phi_506_;
-                                                                phi_507_ = _e516;
-                                                                phi_508_ = _e518;
+                                                                let _e524 = phi_505_;
+                                                                let _e526 = phi_506_;
+                                                                phi_507_ = _e524;
+                                                                phi_508_ = _e526;
                                                             }
-                                                            let _e520 = phi_507_;
-                                                            let _e522 = phi_508_;
-                                                            let _e524 = local_44;
-                                                            let _e526 = local_56;
-                                                            let _e528 = local_45;
-                                                            let _e530 = local_53;
-                                                            let _e532 = local_45;
-                                                            phi_519_ = ((_e530 * (1f - _e528)) + ((_e526 + (select(_e520, 0f, _e522) * _e524)) * _e532));
+                                                            let _e528 = phi_507_;
+                                                            let _e530 = phi_508_;
+                                                            let _e532 = local_44;
+                                                            let _e534 = local_56;
+                                                            let _e536 = local_45;
+                                                            let _e538 = local_53;
+                                                            let _e540 = local_45;
+                                                            phi_519_ = ((_e538 * (1f - _e536)) + ((_e534 + (select(_e528, 0f, _e530) * _e532)) * _e540));
                                                         } else {
                                                             phi_519_ = f32();
                                                         }
-                                                        let _e536 = phi_519_;
-                                                        let _e537 = local_41;
-                                                        phi_521_ = _e536;
-                                                        phi_522_ = select(true, false, _e537);
+                                                        let _e544 = phi_519_;
+                                                        let _e545 = local_41;
+                                                        phi_521_ = _e544;
+                                                        phi_522_ = select(true, false, _e545);
                                                     } else {
                                                         phi_521_ = f32();
                                                         phi_522_ = true;
                                                     }
-                                                    let _e540 = phi_521_;
-                                                    let _e542 = phi_522_;
-                                                    phi_523_ = _e540;
-                                                    phi_524_ = _e542;
+                                                    let _e548 = phi_521_;
+                                                    let _e550 = phi_522_;
+                                                    phi_523_ = _e548;
+                                                    phi_524_ = _e550;
                                                 } else {
                                                     phi_523_ = f32();
                                                     phi_524_ = true;
                                                 }
-                                                let _e544 = phi_523_;
-                                                let _e546 = phi_524_;
-                                                phi_525_ = _e544;
-                                                phi_526_ = _e546;
+                                                let _e552 = phi_523_;
+                                                let _e554 = phi_524_;
+                                                phi_525_ = _e552;
+                                                phi_526_ = _e554;
                                             } else {
                                                 phi_525_ = f32();
                                                 phi_526_ = true;
                                             }
-                                            let _e548 = phi_525_;
-                                            let _e550 = phi_526_;
-                                            phi_531_ = select(_e548, 0f, _e550);
+                                            let _e556 = phi_525_;
+                                            let _e558 = phi_526_;
+                                            phi_531_ = select(_e556, 0f, _e558);
                                         } else {
                                             phi_531_ = 0f;
                                         }
-                                        let _e553 = phi_531_;
-                                        phi_621_ = _e553;
+                                        let _e561 = phi_531_;
+                                        phi_621_ = _e561;
                                     } else {
-                                        let _e554 = local_34;
-                                        let _e555 = local_34;
-                                        let _e557 = local_35;
-                                        let _e558 = local_35;
-                                        let _e561 = sqrt(((_e554 * _e555) + (_e557 * _e558)));
-                                        local_58 = _e561;
-                                        let _e562 = local_33;
-                                        if _e562 {
-                                            phi_608_ = _e561;
+                                        let _e562 = local_34;
+                                        let _e563 = local_34;
+                                        let _e565 = local_35;
+                                        let _e566 = local_35;
+                                        let _e569 = sqrt(((_e562 * _e563) + (_e565 * _e566)));
+                                        local_58 = _e569;
+                                        let _e570 = local_33;
+                                        if _e570 {
+                                            phi_608_ = _e569;
                                         } else {
-                                            let _e566 = global_3.member.member_9.member_2;
-                                            let _e568 = local_34;
-                                            let _e571 = local_35;
+                                            let _e574 = global_3.member.member_9.member_2;
+                                            let _e576 = local_34;
+                                            let _e579 = local_35;
                                             phi_550_ = 1u;
-                                            phi_553_ = ((_e568 * _e566[0]) + (_e571 * _e566[1]));
-                                            phi_555_ = _e566;
+                                            phi_553_ = ((_e576 * _e574[0]) + (_e579 * _e574[1]));
+                                            phi_555_ = _e574;
                                             loop {
-                                                let _e575 = phi_550_;
-                                                let _e577 = phi_553_;
-                                                let _e579 = phi_555_;
-                                                local_59 = _e575;
-                                                local_60 = _e577;
-                                                local_61 = _e579;
-                                                let _e580 = local_59;
-                                                let _e581 = local_32;
-                                                let _e582 = (_e580 < _e581);
-                                                local_62 = _e582;
-                                                if _e582 {
-                                                    let _e583 = local_61;
-                                                    let _e589 = global_3.member.member_9.member_3[0u];
+                                                let _e583 = phi_550_;
+                                                let _e585 = phi_553_;
+                                                let _e587 = phi_555_;
+                                                local_59 = _e583;
+                                                local_60 = _e585;
+                                                local_61 = _e587;
+                                                let _e588 = local_59;
+                                                let _e589 = local_32;
+                                                let _e590 = (_e588 < _e589);
+                                                local_62 = _e590;
+                                                if _e590 {
                                                     let _e591 = local_61;
-                                                    let _e597 = global_3.member.member_9.member_3[1u];
-                                                    let _e599 = ((_e583[0] * _e589) - (_e591[1] * _e597));
-                                                    let _e602 = ((_e583[0] * _e597) + (_e591[1] * _e589));
-                                                    let _e604 = local_34;
-                                                    let _e606 = local_35;
-                                                    let _e608 = ((_e604 * _e599) + (_e606 * _e602));
-                                                    let _e609 = local_60;
-                                                    let _e611 = local_60;
-                                                    let _e613 = local_59;
-                                                    phi_551_ = (_e613 + 1u);
-                                                    phi_554_ = select(_e611, _e608, (_e608 > _e609));
-                                                    phi_556_ = array<f32, 2>(_e599, _e602);
+                                                    let _e597 = global_3.member.member_9.member_3[0u];
+                                                    let _e599 = local_61;
+                                                    let _e605 = global_3.member.member_9.member_3[1u];
+                                                    let _e607 = ((_e591[0] * _e597) - (_e599[1] * _e605));
+                                                    let _e610 = ((_e591[0] * _e605) + (_e599[1] * _e597));
+                                                    let _e612 = local_34;
+                                                    let _e614 = local_35;
+                                                    let _e616 = ((_e612 * _e607) + (_e614 * _e610));
+                                                    let _e617 = local_60;
+                                                    let _e619 = local_60;
+                                                    let _e621 = local_59;
+                                                    phi_551_ = (_e621 + 1u);
+                                                    phi_554_ = select(_e619, _e616, (_e616 > _e617));
+                                                    phi_556_ = array<f32, 2>(_e607, _e610);
                                                 } else {
                                                     phi_551_ = u32();
                                                     phi_554_ = f32();
                                                     phi_556_ = array<f32, 2>();
                                                 }
-                                                let _e616 = phi_551_;
-                                                let _e618 = phi_554_;
-                                                let _e620 = phi_556_;
+                                                let _e624 = phi_551_;
+                                                let _e626 = phi_554_;
+                                                let _e628 = phi_556_;
                                                 continue;
                                                 continuing {
-                                                    let _e621 = local_62;
-                                                    phi_550_ = _e616;
-                                                    phi_553_ = _e618;
-                                                    phi_555_ = _e620;
-                                                    break if !(_e621);
+                                                    let _e629 = local_62;
+                                                    phi_550_ = _e624;
+                                                    phi_553_ = _e626;
+                                                    phi_555_ = _e628;
+                                                    break if !(_e629);
                                                 }
                                             }
-                                            let _e626 = global_3.member.member_9.member_1;
-                                            let _e628 = local_60;
-                                            let _e633 = global_3.member.member_9.member_4;
-                                            let _e635 = local_58;
-                                            phi_608_ = ((((1f - _e626) * _e628) * _e633) + (_e626 * _e635));
+                                            let _e634 = global_3.member.member_9.member_1;
+                                            let _e636 = local_60;
+                                            let _e641 = global_3.member.member_9.member_4;
+                                            let _e643 = local_58;
+                                            phi_608_ = ((((1f - _e634) * _e636) * _e641) + (_e634 * _e643));
                                         }
-                                        let _e639 = phi_608_;
-                                        let _e640 = local_28;
-                                        let _e641 = (_e640 - _e639);
-                                        phi_621_ = select(0f, select(1f, _e641, (_e641 < 1f)), (0f < _e641));
+                                        let _e647 = phi_608_;
+                                        let _e648 = local_28;
+                                        let _e649 = (_e648 - _e647);
+                                        phi_621_ = select(0f, select(1f, _e649, (_e649 < 1f)), (0f < _e649));
                                     }
-                                    let _e647 = phi_621_;
-                                    phi_622_ = _e647;
+                                    let _e655 = phi_621_;
+                                    phi_622_ = _e655;
                                 }
-                                let _e649 = phi_622_;
-                                phi_623_ = _e649;
+                                let _e657 = phi_622_;
+                                phi_623_ = _e657;
                             } else {
                                 phi_623_ = 0f;
                             }
-                            let _e651 = phi_623_;
-                            local_63 = _e651;
-                            if (_e651 > 0f) {
-                                let _e653 = local_21;
-                                let _e654 = (_e653 + 4u);
-                                local_64 = _e654;
-                                let _e655 = local_1;
-                                if (_e654 < _e655) {
+                            let _e659 = phi_623_;
+                            local_63 = _e659;
+                            if (_e659 > 0f) {
+                                let _e661 = local_21;
+                                let _e662 = (_e661 + 4u);
+                                local_64 = _e662;
+                                let _e663 = local_1;
+                                if (_e662 < _e663) {
                                 } else {
                                     phi_704_ = true;
                                     break;
                                 }
-                                let _e657 = local_64;
-                                let _e660 = global_4.member[_e657];
-                                let _e662 = local_63;
-                                let _e664 = local_19;
-                                local_65 = (_e664[0] + (_e662 * bitcast<f32>(_e660)));
-                                let _e667 = local_21;
-                                let _e668 = (_e667 + 5u);
-                                local_66 = _e668;
-                                let _e669 = local_1;
-                                if (_e668 < _e669) {
+                                let _e665 = local_64;
+                                let _e668 = global_4.member[_e665];
+                                let _e670 = local_63;
+                                let _e672 = local_19;
+                                local_65 = (_e672[0] + (_e670 * bitcast<f32>(_e668)));
+                                let _e675 = local_21;
+                                let _e676 = (_e675 + 5u);
+                                local_66 = _e676;
+                                let _e677 = local_1;
+                                if (_e676 < _e677) {
                                 } else {
                                     phi_704_ = true;
                                     break;
                                 }
-                                let _e671 = local_66;
-                                let _e674 = global_4.member[_e671];
-                                let _e676 = local_63;
-                                let _e678 = local_19;
-                                local_67 = (_e678[1] + (_e676 * bitcast<f32>(_e674)));
-                                let _e681 = local_21;
-                                let _e682 = (_e681 + 6u);
-                                local_68 = _e682;
-                                let _e683 = local_1;
-                                if (_e682 < _e683) {
+                                let _e679 = local_66;
+                                let _e682 = global_4.member[_e679];
+                                let _e684 = local_63;
+                                let _e686 = local_19;
+                                local_67 = (_e686[1] + (_e684 * bitcast<f32>(_e682)));
+                                let _e689 = local_21;
+                                let _e690 = (_e689 + 6u);
+                                local_68 = _e690;
+                                let _e691 = local_1;
+                                if (_e690 < _e691) {
                                 } else {
                                     phi_704_ = true;
                                     break;
                                 }
-                                let _e685 = local_68;
-                                let _e688 = global_4.member[_e685];
-                                let _e690 = local_63;
-                                let _e692 = local_19;
-                                let _e695 = local_65;
-                                let _e696 = local_67;
-                                phi_667_ = array<f32, 3>(_e695, _e696, (_e692[2] + (_e690 * bitcast<f32>(_e688))));
+                                let _e693 = local_68;
+                                let _e696 = global_4.member[_e693];
+                                let _e698 = local_63;
+                                let _e700 = local_19;
+                                let _e703 = local_65;
+                                let _e704 = local_67;
+                                phi_667_ = array<f32, 3>(_e703, _e704, (_e700[2] + (_e698 * bitcast<f32>(_e696))));
                             } else {
                                 phi_667_ = _e175;
                             }
-                            let _e699 = phi_667_;
-                            let _e700 = local_18;
-                            phi_146_ = (_e700 + 1u);
-                            phi_149_ = _e699;
+                            let _e707 = phi_667_;
+                            let _e708 = local_18;
+                            phi_146_ = (_e708 + 1u);
+                            phi_149_ = _e707;
                         } else {
                             phi_146_ = u32();
                             phi_149_ = array<f32, 3>();
                         }
-                        let _e703 = phi_146_;
-                        let _e705 = phi_149_;
+                        let _e711 = phi_146_;
+                        let _e713 = phi_149_;
                         continue;
                         continuing {
-                            let _e706 = local_20;
-                            phi_145_ = _e703;
-                            phi_148_ = _e705;
+                            let _e714 = local_20;
+                            phi_145_ = _e711;
+                            phi_148_ = _e713;
                             phi_704_ = false;
-                            break if !(_e706);
+                            break if !(_e714);
                         }
                     }
-                    let _e709 = phi_704_;
-                    if _e709 {
+                    let _e717 = phi_704_;
+                    if _e717 {
                         break;
                     }
-                    let _e710 = local_19;
-                    local_69 = bitcast<u32>(_e710[0]);
-                    let _e713 = local_11;
-                    if _e713 {
+                    let _e718 = local_19;
+                    local_69 = bitcast<u32>(_e718[0]);
+                    let _e721 = local_11;
+                    if _e721 {
                     } else {
                         break;
                     }
-                    let _e714 = local_69;
-                    global_6.member[_e146] = _e714;
-                    let _e715 = local_19;
-                    local_70 = bitcast<u32>(_e715[1]);
-                    let _e718 = local_14;
-                    if _e718 {
+                    let _e722 = local_69;
+                    global_6.member[_e146] = _e722;
+                    let _e723 = local_19;
+                    local_70 = bitcast<u32>(_e723[1]);
+                    let _e726 = local_14;
+                    if _e726 {
                     } else {
                         break;
                     }
-                    let _e719 = local_70;
-                    global_6.member[_e155] = _e719;
-                    let _e720 = local_19;
-                    local_71 = bitcast<u32>(_e720[2]);
-                    let _e723 = local_17;
-                    if _e723 {
+                    let _e727 = local_70;
+                    global_6.member[_e155] = _e727;
+                    let _e728 = local_19;
+                    local_71 = bitcast<u32>(_e728[2]);
+                    let _e731 = local_17;
+                    if _e731 {
                     } else {
                         break;
                     }
-                    let _e724 = local_71;
-                    global_6.member[_e164] = _e724;
+                    let _e732 = local_71;
+                    global_6.member[_e164] = _e732;
                 }
             }
             storageBarrier();

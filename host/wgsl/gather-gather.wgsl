@@ -272,531 +272,531 @@ fn function_() {
                     let _e222 = phi_218_;
                     let _e226 = select(_e222, 0f, ((bitcast<u32>(_e222) & 2147483647u) > 2139095040u));
                     local_57 = _e226;
-                    if (_e226 != _e226) {
+                    if !((_e226 == _e226)) {
                         phi_676_ = true;
                     } else {
-                        let _e228 = local_10;
-                        let _e229 = local_57;
-                        phi_676_ = (_e228 <= _e229);
+                        let _e229 = local_10;
+                        let _e230 = local_57;
+                        phi_676_ = (_e229 <= _e230);
                     }
-                    let _e232 = phi_676_;
-                    let _e233 = local_10;
-                    let _e234 = local_57;
-                    local_58 = select(_e234, _e233, _e232);
-                    let _e236 = local_56;
-                    let _e237 = bitcast<i32>(_e236);
-                    local_17 = _e237;
-                    let _e238 = -(_e237);
+                    let _e233 = phi_676_;
+                    let _e234 = local_10;
+                    let _e235 = local_57;
+                    local_58 = select(_e235, _e234, _e233);
+                    let _e237 = local_56;
+                    let _e238 = bitcast<i32>(_e237);
+                    local_17 = _e238;
+                    let _e239 = -(_e238);
                     phi_762_ = false;
-                    phi_230_ = _e238;
+                    phi_230_ = _e239;
                     phi_233_ = 0f;
                     phi_235_ = array<f32, 3>(0f, 0f, 0f);
                     loop {
-                        let _e240 = phi_762_;
-                        let _e242 = phi_230_;
-                        let _e244 = phi_233_;
-                        let _e246 = phi_235_;
-                        local_18 = _e242;
-                        local_19 = _e244;
-                        local_20 = _e246;
-                        let _e247 = local_18;
-                        let _e248 = local_17;
-                        let _e249 = (_e247 <= _e248);
-                        local_21 = _e249;
-                        if _e249 {
-                            let _e250 = local_7;
-                            let _e252 = local_18;
-                            local_22 = (bitcast<i32>(_e250) + _e252);
-                            phi_247_ = _e238;
-                            phi_250_ = _e244;
-                            phi_252_ = _e246;
+                        let _e241 = phi_762_;
+                        let _e243 = phi_230_;
+                        let _e245 = phi_233_;
+                        let _e247 = phi_235_;
+                        local_18 = _e243;
+                        local_19 = _e245;
+                        local_20 = _e247;
+                        let _e248 = local_18;
+                        let _e249 = local_17;
+                        let _e250 = (_e248 <= _e249);
+                        local_21 = _e250;
+                        if _e250 {
+                            let _e251 = local_7;
+                            let _e253 = local_18;
+                            local_22 = (bitcast<i32>(_e251) + _e253);
+                            phi_247_ = _e239;
+                            phi_250_ = _e245;
+                            phi_252_ = _e247;
                             loop {
-                                let _e255 = phi_247_;
-                                let _e257 = phi_250_;
-                                let _e259 = phi_252_;
-                                local_23 = _e255;
-                                local_24 = _e257;
-                                local_25 = _e259;
-                                local_61 = _e257;
-                                local_62 = _e259;
-                                let _e260 = local_22;
-                                if (_e260 >= 0i) {
-                                    let _e262 = local_9;
-                                    let _e264 = local_22;
-                                    if (_e264 < bitcast<i32>(_e262)) {
-                                        let _e266 = local_23;
-                                        let _e267 = local_17;
-                                        let _e268 = (_e266 <= _e267);
-                                        if _e268 {
-                                            let _e269 = local_6;
-                                            let _e271 = local_23;
-                                            let _e272 = (bitcast<i32>(_e269) + _e271);
-                                            local_26 = _e272;
-                                            if (_e272 >= 0i) {
-                                                let _e274 = local_8;
-                                                let _e276 = local_26;
-                                                if (_e276 < bitcast<i32>(_e274)) {
-                                                    let _e278 = local_22;
-                                                    let _e280 = local_8;
-                                                    let _e282 = local_26;
-                                                    let _e284 = ((bitcast<u32>(_e278) * _e280) + bitcast<u32>(_e282));
-                                                    local_27 = _e284;
-                                                    let _e285 = local_2;
-                                                    if (_e284 < _e285) {
+                                let _e256 = phi_247_;
+                                let _e258 = phi_250_;
+                                let _e260 = phi_252_;
+                                local_23 = _e256;
+                                local_24 = _e258;
+                                local_25 = _e260;
+                                local_61 = _e258;
+                                local_62 = _e260;
+                                let _e261 = local_22;
+                                if (_e261 >= 0i) {
+                                    let _e263 = local_9;
+                                    let _e265 = local_22;
+                                    if (_e265 < bitcast<i32>(_e263)) {
+                                        let _e267 = local_23;
+                                        let _e268 = local_17;
+                                        let _e269 = (_e267 <= _e268);
+                                        if _e269 {
+                                            let _e270 = local_6;
+                                            let _e272 = local_23;
+                                            let _e273 = (bitcast<i32>(_e270) + _e272);
+                                            local_26 = _e273;
+                                            if (_e273 >= 0i) {
+                                                let _e275 = local_8;
+                                                let _e277 = local_26;
+                                                if (_e277 < bitcast<i32>(_e275)) {
+                                                    let _e279 = local_22;
+                                                    let _e281 = local_8;
+                                                    let _e283 = local_26;
+                                                    let _e285 = ((bitcast<u32>(_e279) * _e281) + bitcast<u32>(_e283));
+                                                    local_27 = _e285;
+                                                    let _e286 = local_2;
+                                                    if (_e285 < _e286) {
                                                     } else {
                                                         phi_721_ = true;
                                                         break;
                                                     }
-                                                    let _e287 = local_27;
-                                                    let _e290 = global_3.member[_e287];
-                                                    local_28 = bitcast<f32>(_e290);
-                                                    let _e292 = local_27;
-                                                    let _e293 = (3u * _e292);
-                                                    local_29 = _e293;
-                                                    let _e294 = local_1;
-                                                    if (_e293 < _e294) {
+                                                    let _e288 = local_27;
+                                                    let _e291 = global_3.member[_e288];
+                                                    local_28 = bitcast<f32>(_e291);
+                                                    let _e293 = local_27;
+                                                    let _e294 = (3u * _e293);
+                                                    local_29 = _e294;
+                                                    let _e295 = local_1;
+                                                    if (_e294 < _e295) {
                                                     } else {
                                                         phi_721_ = true;
                                                         break;
                                                     }
-                                                    let _e296 = local_29;
-                                                    let _e299 = global_4.member[_e296];
-                                                    local_30 = bitcast<f32>(_e299);
-                                                    let _e301 = local_29;
-                                                    let _e302 = (_e301 + 1u);
-                                                    local_31 = _e302;
-                                                    let _e303 = local_1;
-                                                    if (_e302 < _e303) {
+                                                    let _e297 = local_29;
+                                                    let _e300 = global_4.member[_e297];
+                                                    local_30 = bitcast<f32>(_e300);
+                                                    let _e302 = local_29;
+                                                    let _e303 = (_e302 + 1u);
+                                                    local_31 = _e303;
+                                                    let _e304 = local_1;
+                                                    if (_e303 < _e304) {
                                                     } else {
                                                         phi_721_ = true;
                                                         break;
                                                     }
-                                                    let _e305 = local_31;
-                                                    let _e308 = global_4.member[_e305];
-                                                    local_32 = bitcast<f32>(_e308);
-                                                    let _e310 = local_29;
-                                                    let _e311 = (_e310 + 2u);
-                                                    local_33 = _e311;
-                                                    let _e312 = local_1;
-                                                    if (_e311 < _e312) {
+                                                    let _e306 = local_31;
+                                                    let _e309 = global_4.member[_e306];
+                                                    local_32 = bitcast<f32>(_e309);
+                                                    let _e311 = local_29;
+                                                    let _e312 = (_e311 + 2u);
+                                                    local_33 = _e312;
+                                                    let _e313 = local_1;
+                                                    if (_e312 < _e313) {
                                                     } else {
                                                         phi_721_ = true;
                                                         break;
                                                     }
-                                                    let _e314 = local_33;
-                                                    let _e317 = global_4.member[_e314];
-                                                    local_34 = bitcast<f32>(_e317);
-                                                    let _e319 = local_30;
-                                                    if ((bitcast<u32>(_e319) & 2139095040u) != 2139095040u) {
-                                                        let _e323 = local_32;
-                                                        if ((bitcast<u32>(_e323) & 2139095040u) != 2139095040u) {
-                                                            let _e327 = local_34;
-                                                            let _e330 = ((bitcast<u32>(_e327) & 2139095040u) != 2139095040u);
-                                                            local_35 = _e330;
-                                                            if _e330 {
-                                                                let _e331 = local_30;
-                                                                if (_e331 > 1267650600000000000000000000000f) {
-                                                                    let _e333 = local_30;
-                                                                    phi_354_ = select(true, false, (_e333 <= 340282350000000000000000000000000000000f));
+                                                    let _e315 = local_33;
+                                                    let _e318 = global_4.member[_e315];
+                                                    local_34 = bitcast<f32>(_e318);
+                                                    let _e320 = local_30;
+                                                    if ((bitcast<u32>(_e320) & 2139095040u) != 2139095040u) {
+                                                        let _e324 = local_32;
+                                                        if ((bitcast<u32>(_e324) & 2139095040u) != 2139095040u) {
+                                                            let _e328 = local_34;
+                                                            let _e331 = ((bitcast<u32>(_e328) & 2139095040u) != 2139095040u);
+                                                            local_35 = _e331;
+                                                            if _e331 {
+                                                                let _e332 = local_30;
+                                                                if (_e332 > 1267650600000000000000000000000f) {
+                                                                    let _e334 = local_30;
+                                                                    phi_354_ = select(true, false, (_e334 <= 340282350000000000000000000000000000000f));
                                                                 } else {
                                                                     phi_354_ = true;
                                                                 }
-                                                                let _e337 = phi_354_;
-                                                                if _e337 {
-                                                                    let _e338 = local_30;
-                                                                    if (_e338 < 0.000000000000000000000000000000000000011754944f) {
-                                                                        let _e340 = local_30;
-                                                                        phi_368_ = select(true, false, (_e340 >= -340282350000000000000000000000000000000f));
+                                                                let _e338 = phi_354_;
+                                                                if _e338 {
+                                                                    let _e339 = local_30;
+                                                                    if (_e339 < 0.000000000000000000000000000000000000011754944f) {
+                                                                        let _e341 = local_30;
+                                                                        phi_368_ = select(true, false, (_e341 >= -340282350000000000000000000000000000000f));
                                                                     } else {
                                                                         phi_368_ = true;
                                                                     }
-                                                                    let _e344 = phi_368_;
-                                                                    let _e345 = local_30;
-                                                                    phi_373_ = select(0f, _e345, _e344);
+                                                                    let _e345 = phi_368_;
+                                                                    let _e346 = local_30;
+                                                                    phi_373_ = select(0f, _e346, _e345);
                                                                 } else {
                                                                     phi_373_ = 1267650600000000000000000000000f;
                                                                 }
-                                                                let _e348 = phi_373_;
-                                                                local_36 = _e348;
-                                                                let _e349 = local_32;
-                                                                if (_e349 > 1267650600000000000000000000000f) {
-                                                                    let _e351 = local_32;
-                                                                    phi_383_ = select(true, false, (_e351 <= 340282350000000000000000000000000000000f));
+                                                                let _e349 = phi_373_;
+                                                                local_36 = _e349;
+                                                                let _e350 = local_32;
+                                                                if (_e350 > 1267650600000000000000000000000f) {
+                                                                    let _e352 = local_32;
+                                                                    phi_383_ = select(true, false, (_e352 <= 340282350000000000000000000000000000000f));
                                                                 } else {
                                                                     phi_383_ = true;
                                                                 }
-                                                                let _e355 = phi_383_;
-                                                                if _e355 {
-                                                                    let _e356 = local_32;
-                                                                    if (_e356 < 0.000000000000000000000000000000000000011754944f) {
-                                                                        let _e358 = local_32;
-                                                                        phi_397_ = select(true, false, (_e358 >= -340282350000000000000000000000000000000f));
+                                                                let _e356 = phi_383_;
+                                                                if _e356 {
+                                                                    let _e357 = local_32;
+                                                                    if (_e357 < 0.000000000000000000000000000000000000011754944f) {
+                                                                        let _e359 = local_32;
+                                                                        phi_397_ = select(true, false, (_e359 >= -340282350000000000000000000000000000000f));
                                                                     } else {
                                                                         phi_397_ = true;
                                                                     }
-                                                                    let _e362 = phi_397_;
-                                                                    let _e363 = local_32;
-                                                                    phi_402_ = select(0f, _e363, _e362);
+                                                                    let _e363 = phi_397_;
+                                                                    let _e364 = local_32;
+                                                                    phi_402_ = select(0f, _e364, _e363);
                                                                 } else {
                                                                     phi_402_ = 1267650600000000000000000000000f;
                                                                 }
-                                                                let _e366 = phi_402_;
-                                                                local_37 = _e366;
-                                                                let _e367 = local_34;
-                                                                if (_e367 > 1267650600000000000000000000000f) {
-                                                                    let _e369 = local_34;
-                                                                    phi_412_ = select(true, false, (_e369 <= 340282350000000000000000000000000000000f));
+                                                                let _e367 = phi_402_;
+                                                                local_37 = _e367;
+                                                                let _e368 = local_34;
+                                                                if (_e368 > 1267650600000000000000000000000f) {
+                                                                    let _e370 = local_34;
+                                                                    phi_412_ = select(true, false, (_e370 <= 340282350000000000000000000000000000000f));
                                                                 } else {
                                                                     phi_412_ = true;
                                                                 }
-                                                                let _e373 = phi_412_;
-                                                                if _e373 {
-                                                                    let _e374 = local_34;
-                                                                    if (_e374 < 0.000000000000000000000000000000000000011754944f) {
-                                                                        let _e376 = local_34;
-                                                                        phi_426_ = select(true, false, (_e376 >= -340282350000000000000000000000000000000f));
+                                                                let _e374 = phi_412_;
+                                                                if _e374 {
+                                                                    let _e375 = local_34;
+                                                                    if (_e375 < 0.000000000000000000000000000000000000011754944f) {
+                                                                        let _e377 = local_34;
+                                                                        phi_426_ = select(true, false, (_e377 >= -340282350000000000000000000000000000000f));
                                                                     } else {
                                                                         phi_426_ = true;
                                                                     }
-                                                                    let _e380 = phi_426_;
-                                                                    let _e381 = local_34;
-                                                                    phi_431_ = select(0f, _e381, _e380);
+                                                                    let _e381 = phi_426_;
+                                                                    let _e382 = local_34;
+                                                                    phi_431_ = select(0f, _e382, _e381);
                                                                 } else {
                                                                     phi_431_ = 1267650600000000000000000000000f;
                                                                 }
-                                                                let _e384 = phi_431_;
-                                                                let _e385 = local_36;
-                                                                let _e386 = local_37;
-                                                                phi_434_ = type_18(1u, array<f32, 3>(_e385, _e386, _e384));
+                                                                let _e385 = phi_431_;
+                                                                let _e386 = local_36;
+                                                                let _e387 = local_37;
+                                                                phi_434_ = type_18(1u, array<f32, 3>(_e386, _e387, _e385));
                                                             } else {
                                                                 phi_434_ = type_18();
                                                             }
-                                                            let _e390 = phi_434_;
-                                                            let _e391 = local_35;
-                                                            phi_436_ = _e390;
-                                                            phi_437_ = select(true, false, _e391);
+                                                            let _e391 = phi_434_;
+                                                            let _e392 = local_35;
+                                                            phi_436_ = _e391;
+                                                            phi_437_ = select(true, false, _e392);
                                                         } else {
                                                             phi_436_ = type_18();
                                                             phi_437_ = true;
                                                         }
-                                                        let _e394 = phi_436_;
-                                                        let _e396 = phi_437_;
-                                                        phi_438_ = _e394;
-                                                        phi_439_ = _e396;
+                                                        let _e395 = phi_436_;
+                                                        let _e397 = phi_437_;
+                                                        phi_438_ = _e395;
+                                                        phi_439_ = _e397;
                                                     } else {
                                                         phi_438_ = type_18();
                                                         phi_439_ = true;
                                                     }
-                                                    let _e398 = phi_438_;
-                                                    let _e400 = phi_439_;
-                                                    if _e400 {
+                                                    let _e399 = phi_438_;
+                                                    let _e401 = phi_439_;
+                                                    if _e401 {
                                                         phi_444_ = type_18(0u, type_18().member_1);
                                                     } else {
-                                                        phi_444_ = _e398;
+                                                        phi_444_ = _e399;
                                                     }
-                                                    let _e405 = phi_444_;
-                                                    local_38 = _e405;
-                                                    if (bitcast<i32>(_e405.member) != 0i) {
-                                                        let _e409 = local_38;
-                                                        local_39 = _e409.member_1;
-                                                        let _e411 = local_28;
-                                                        let _e412 = bitcast<u32>(_e411);
-                                                        local_55 = _e412;
-                                                        if (_e412 == 0u) {
+                                                    let _e406 = phi_444_;
+                                                    local_38 = _e406;
+                                                    if (bitcast<i32>(_e406.member) != 0i) {
+                                                        let _e410 = local_38;
+                                                        local_39 = _e410.member_1;
+                                                        let _e412 = local_28;
+                                                        let _e413 = bitcast<u32>(_e412);
+                                                        local_55 = _e413;
+                                                        if (_e413 == 0u) {
                                                             phi_690_ = false;
                                                         } else {
-                                                            let _e414 = local_55;
-                                                            phi_690_ = (_e414 <= 2139095040u);
+                                                            let _e415 = local_55;
+                                                            phi_690_ = (_e415 <= 2139095040u);
                                                         }
-                                                        let _e417 = phi_690_;
-                                                        if _e417 {
-                                                            let _e418 = local_39;
-                                                            phi_458_ = type_18(1u, _e418);
+                                                        let _e418 = phi_690_;
+                                                        if _e418 {
+                                                            let _e419 = local_39;
+                                                            phi_458_ = type_18(1u, _e419);
                                                         } else {
                                                             phi_458_ = type_18(0u, type_18().member_1);
                                                         }
-                                                        let _e424 = phi_458_;
-                                                        phi_460_ = _e424;
+                                                        let _e425 = phi_458_;
+                                                        phi_460_ = _e425;
                                                     } else {
                                                         phi_460_ = type_18(0u, type_18().member_1);
                                                     }
-                                                    let _e429 = phi_460_;
-                                                    local_40 = _e429;
-                                                    if (bitcast<i32>(_e429.member) != 0i) {
-                                                        let _e433 = local_40;
-                                                        local_41 = _e433.member_1;
-                                                        let _e435 = local_28;
-                                                        let _e436 = bitcast<u32>(_e435);
-                                                        local_42 = _e436;
-                                                        if (_e436 == 2139095040u) {
-                                                            let _e441 = global_2.member.member_4.member_1;
-                                                            let _e446 = global_2.member.member_4.member;
-                                                            let _e451 = global_2.member.member_4.member_2;
-                                                            let _e457 = global_2.member.member_4.member_3;
-                                                            phi_534_ = (0.5f * ((((2f * _e441) * _e446) / (_e451 - _e446)) * _e457));
+                                                    let _e430 = phi_460_;
+                                                    local_40 = _e430;
+                                                    if (bitcast<i32>(_e430.member) != 0i) {
+                                                        let _e434 = local_40;
+                                                        local_41 = _e434.member_1;
+                                                        let _e436 = local_28;
+                                                        let _e437 = bitcast<u32>(_e436);
+                                                        local_42 = _e437;
+                                                        if (_e437 == 2139095040u) {
+                                                            let _e442 = global_2.member.member_4.member_1;
+                                                            let _e447 = global_2.member.member_4.member;
+                                                            let _e452 = global_2.member.member_4.member_2;
+                                                            let _e458 = global_2.member.member_4.member_3;
+                                                            phi_534_ = (0.5f * ((((2f * _e442) * _e447) / (_e452 - _e447)) * _e458));
                                                         } else {
-                                                            let _e460 = local_42;
-                                                            if (_e460 == 0u) {
+                                                            let _e461 = local_42;
+                                                            if (_e461 == 0u) {
                                                                 phi_497_ = false;
                                                             } else {
-                                                                let _e462 = local_42;
-                                                                phi_497_ = (_e462 <= 2139095040u);
+                                                                let _e463 = local_42;
+                                                                phi_497_ = (_e463 <= 2139095040u);
                                                             }
-                                                            let _e465 = phi_497_;
-                                                            if _e465 {
-                                                                let _e469 = global_2.member.member_4.member_1;
-                                                                let _e474 = global_2.member.member_4.member;
-                                                                let _e479 = global_2.member.member_4.member_2;
-                                                                local_43 = _e479;
-                                                                let _e485 = global_2.member.member_4.member_3;
-                                                                let _e486 = ((((2f * _e469) * _e474) / (_e479 - _e474)) * _e485);
-                                                                local_44 = _e486;
-                                                                if (_e486 == 0f) {
+                                                            let _e466 = phi_497_;
+                                                            if _e466 {
+                                                                let _e470 = global_2.member.member_4.member_1;
+                                                                let _e475 = global_2.member.member_4.member;
+                                                                let _e480 = global_2.member.member_4.member_2;
+                                                                local_43 = _e480;
+                                                                let _e486 = global_2.member.member_4.member_3;
+                                                                let _e487 = ((((2f * _e470) * _e475) / (_e480 - _e475)) * _e486);
+                                                                local_44 = _e487;
+                                                                if (_e487 == 0f) {
                                                                     phi_525_ = 0f;
                                                                 } else {
-                                                                    let _e488 = local_43;
-                                                                    let _e489 = local_28;
-                                                                    let _e492 = local_44;
-                                                                    phi_525_ = (_e492 * (1f - (_e488 / _e489)));
+                                                                    let _e489 = local_43;
+                                                                    let _e490 = local_28;
+                                                                    let _e493 = local_44;
+                                                                    phi_525_ = (_e493 * (1f - (_e489 / _e490)));
                                                                 }
-                                                                let _e495 = phi_525_;
-                                                                phi_526_ = _e495;
+                                                                let _e496 = phi_525_;
+                                                                phi_526_ = _e496;
                                                             } else {
                                                                 phi_526_ = _e97;
                                                             }
-                                                            let _e497 = phi_526_;
-                                                            local_45 = _e497;
-                                                            if (_e497 < 0f) {
-                                                                let _e499 = local_45;
-                                                                phi_532_ = -(_e499);
+                                                            let _e498 = phi_526_;
+                                                            local_45 = _e498;
+                                                            if (_e498 < 0f) {
+                                                                let _e500 = local_45;
+                                                                phi_532_ = -(_e500);
                                                             } else {
-                                                                phi_532_ = _e497;
+                                                                phi_532_ = _e498;
                                                             }
-                                                            let _e502 = phi_532_;
-                                                            phi_534_ = (0.5f * _e502);
+                                                            let _e503 = phi_532_;
+                                                            phi_534_ = (0.5f * _e503);
                                                         }
-                                                        let _e505 = phi_534_;
-                                                        let _e509 = select(_e505, 0f, ((bitcast<u32>(_e505) & 2147483647u) > 2139095040u));
-                                                        local_59 = _e509;
-                                                        if (_e509 != _e509) {
+                                                        let _e506 = phi_534_;
+                                                        let _e510 = select(_e506, 0f, ((bitcast<u32>(_e506) & 2147483647u) > 2139095040u));
+                                                        local_59 = _e510;
+                                                        if !((_e510 == _e510)) {
                                                             phi_701_ = true;
                                                         } else {
-                                                            let _e511 = local_10;
-                                                            let _e512 = local_59;
-                                                            phi_701_ = (_e511 <= _e512);
+                                                            let _e513 = local_10;
+                                                            let _e514 = local_59;
+                                                            phi_701_ = (_e513 <= _e514);
                                                         }
-                                                        let _e515 = phi_701_;
-                                                        let _e516 = local_10;
-                                                        let _e517 = local_59;
-                                                        let _e518 = select(_e517, _e516, _e515);
-                                                        local_60 = _e518;
-                                                        let _e519 = local_28;
-                                                        let _e520 = local_12;
-                                                        if (_e519 > _e520) {
-                                                            let _e522 = local_60;
-                                                            let _e523 = local_60;
-                                                            if (_e522 != _e523) {
+                                                        let _e517 = phi_701_;
+                                                        let _e518 = local_10;
+                                                        let _e519 = local_59;
+                                                        let _e520 = select(_e519, _e518, _e517);
+                                                        local_60 = _e520;
+                                                        let _e521 = local_28;
+                                                        let _e522 = local_12;
+                                                        if (_e521 > _e522) {
+                                                            let _e524 = local_60;
+                                                            let _e525 = local_60;
+                                                            if !((_e524 == _e525)) {
                                                                 phi_716_ = true;
                                                             } else {
-                                                                let _e525 = local_58;
-                                                                let _e526 = local_60;
-                                                                phi_716_ = (_e525 <= _e526);
+                                                                let _e528 = local_58;
+                                                                let _e529 = local_60;
+                                                                phi_716_ = (_e528 <= _e529);
                                                             }
-                                                            let _e529 = phi_716_;
-                                                            let _e530 = local_58;
-                                                            let _e531 = local_60;
-                                                            phi_549_ = select(_e531, _e530, _e529);
+                                                            let _e532 = phi_716_;
+                                                            let _e533 = local_58;
+                                                            let _e534 = local_60;
+                                                            phi_549_ = select(_e534, _e533, _e532);
                                                         } else {
-                                                            phi_549_ = _e518;
+                                                            phi_549_ = _e520;
                                                         }
-                                                        let _e534 = phi_549_;
-                                                        let _e535 = (_e534 + 0.5f);
-                                                        let _e536 = local_23;
-                                                        let _e537 = local_23;
-                                                        let _e539 = local_18;
-                                                        let _e540 = local_18;
-                                                        let _e544 = (_e535 * _e535);
-                                                        local_46 = _e544;
-                                                        if (f32(((_e536 * _e537) + (_e539 * _e540))) <= _e544) {
-                                                            let _e546 = local_46;
-                                                            let _e547 = (1f / _e546);
-                                                            let _e548 = local_41;
-                                                            let _e551 = local_25;
-                                                            let _e554 = local_41;
-                                                            let _e557 = local_25;
-                                                            let _e560 = local_41;
-                                                            let _e563 = local_25;
-                                                            let _e567 = local_24;
-                                                            phi_578_ = (_e567 + _e547);
-                                                            phi_579_ = array<f32, 3>((_e551[0] + (_e547 * _e548[0])), (_e557[1] + (_e547 * _e554[1])), (_e563[2] + (_e547 * _e560[2])));
+                                                        let _e537 = phi_549_;
+                                                        let _e538 = (_e537 + 0.5f);
+                                                        let _e539 = local_23;
+                                                        let _e540 = local_23;
+                                                        let _e542 = local_18;
+                                                        let _e543 = local_18;
+                                                        let _e547 = (_e538 * _e538);
+                                                        local_46 = _e547;
+                                                        if (f32(((_e539 * _e540) + (_e542 * _e543))) <= _e547) {
+                                                            let _e549 = local_46;
+                                                            let _e550 = (1f / _e549);
+                                                            let _e551 = local_41;
+                                                            let _e554 = local_25;
+                                                            let _e557 = local_41;
+                                                            let _e560 = local_25;
+                                                            let _e563 = local_41;
+                                                            let _e566 = local_25;
+                                                            let _e570 = local_24;
+                                                            phi_578_ = (_e570 + _e550);
+                                                            phi_579_ = array<f32, 3>((_e554[0] + (_e550 * _e551[0])), (_e560[1] + (_e550 * _e557[1])), (_e566[2] + (_e550 * _e563[2])));
                                                         } else {
-                                                            phi_578_ = _e257;
-                                                            phi_579_ = _e259;
+                                                            phi_578_ = _e258;
+                                                            phi_579_ = _e260;
                                                         }
-                                                        let _e570 = phi_578_;
-                                                        let _e572 = phi_579_;
-                                                        phi_580_ = _e570;
-                                                        phi_581_ = _e572;
+                                                        let _e573 = phi_578_;
+                                                        let _e575 = phi_579_;
+                                                        phi_580_ = _e573;
+                                                        phi_581_ = _e575;
                                                     } else {
-                                                        phi_580_ = _e257;
-                                                        phi_581_ = _e259;
+                                                        phi_580_ = _e258;
+                                                        phi_581_ = _e260;
                                                     }
-                                                    let _e574 = phi_580_;
-                                                    let _e576 = phi_581_;
-                                                    phi_582_ = _e574;
-                                                    phi_583_ = _e576;
+                                                    let _e577 = phi_580_;
+                                                    let _e579 = phi_581_;
+                                                    phi_582_ = _e577;
+                                                    phi_583_ = _e579;
                                                 } else {
-                                                    phi_582_ = _e257;
-                                                    phi_583_ = _e259;
+                                                    phi_582_ = _e258;
+                                                    phi_583_ = _e260;
                                                 }
-                                                let _e578 = phi_582_;
-                                                let _e580 = phi_583_;
-                                                phi_584_ = _e578;
-                                                phi_585_ = _e580;
+                                                let _e581 = phi_582_;
+                                                let _e583 = phi_583_;
+                                                phi_584_ = _e581;
+                                                phi_585_ = _e583;
                                             } else {
-                                                phi_584_ = _e257;
-                                                phi_585_ = _e259;
+                                                phi_584_ = _e258;
+                                                phi_585_ = _e260;
                                             }
-                                            let _e582 = phi_584_;
-                                            let _e584 = phi_585_;
-                                            let _e585 = local_23;
-                                            phi_587_ = (_e585 + 1i);
-                                            phi_588_ = _e582;
-                                            phi_589_ = _e584;
+                                            let _e585 = phi_584_;
+                                            let _e587 = phi_585_;
+                                            let _e588 = local_23;
+                                            phi_587_ = (_e588 + 1i);
+                                            phi_588_ = _e585;
+                                            phi_589_ = _e587;
                                         } else {
                                             phi_587_ = i32();
                                             phi_588_ = f32();
                                             phi_589_ = array<f32, 3>();
                                         }
-                                        let _e588 = phi_587_;
-                                        let _e590 = phi_588_;
-                                        let _e592 = phi_589_;
-                                        phi_591_ = _e588;
-                                        phi_592_ = _e590;
-                                        phi_593_ = _e592;
-                                        phi_594_ = _e268;
+                                        let _e591 = phi_587_;
+                                        let _e593 = phi_588_;
+                                        let _e595 = phi_589_;
+                                        phi_591_ = _e591;
+                                        phi_592_ = _e593;
+                                        phi_593_ = _e595;
+                                        phi_594_ = _e269;
                                     } else {
                                         phi_591_ = i32();
                                         phi_592_ = f32();
                                         phi_593_ = array<f32, 3>();
                                         phi_594_ = false;
                                     }
-                                    let _e594 = phi_591_;
-                                    let _e596 = phi_592_;
-                                    let _e598 = phi_593_;
-                                    let _e600 = phi_594_;
-                                    phi_248_ = _e594;
-                                    phi_251_ = _e596;
-                                    phi_253_ = _e598;
-                                    phi_596_ = _e600;
+                                    let _e597 = phi_591_;
+                                    let _e599 = phi_592_;
+                                    let _e601 = phi_593_;
+                                    let _e603 = phi_594_;
+                                    phi_248_ = _e597;
+                                    phi_251_ = _e599;
+                                    phi_253_ = _e601;
+                                    phi_596_ = _e603;
                                 } else {
                                     phi_248_ = i32();
                                     phi_251_ = f32();
                                     phi_253_ = array<f32, 3>();
                                     phi_596_ = false;
                                 }
-                                let _e602 = phi_248_;
-                                let _e604 = phi_251_;
-                                let _e606 = phi_253_;
-                                let _e608 = phi_596_;
-                                local_47 = _e608;
+                                let _e605 = phi_248_;
+                                let _e607 = phi_251_;
+                                let _e609 = phi_253_;
+                                let _e611 = phi_596_;
+                                local_47 = _e611;
                                 continue;
                                 continuing {
-                                    let _e609 = local_47;
-                                    phi_247_ = _e602;
-                                    phi_250_ = _e604;
-                                    phi_252_ = _e606;
-                                    phi_721_ = _e240;
-                                    break if !(_e609);
+                                    let _e612 = local_47;
+                                    phi_247_ = _e605;
+                                    phi_250_ = _e607;
+                                    phi_252_ = _e609;
+                                    phi_721_ = _e241;
+                                    break if !(_e612);
                                 }
                             }
-                            let _e612 = phi_721_;
-                            phi_776_ = _e612;
-                            if _e612 {
+                            let _e615 = phi_721_;
+                            phi_776_ = _e615;
+                            if _e615 {
                                 break;
                             }
-                            let _e613 = local_18;
-                            phi_777_ = _e612;
-                            phi_231_ = (_e613 + 1i);
-                            let _e734 = local_61;
-                            phi_234_ = _e734;
-                            let _e737 = local_62;
-                            phi_236_ = _e737;
+                            let _e616 = local_18;
+                            phi_777_ = _e615;
+                            phi_231_ = (_e616 + 1i);
+                            let _e737 = local_61;
+                            phi_234_ = _e737;
+                            let _e740 = local_62;
+                            phi_236_ = _e740;
                         } else {
-                            phi_777_ = _e240;
+                            phi_777_ = _e241;
                             phi_231_ = i32();
                             phi_234_ = f32();
                             phi_236_ = array<f32, 3>();
                         }
-                        let _e616 = phi_777_;
-                        let _e618 = phi_231_;
-                        let _e620 = phi_234_;
-                        let _e622 = phi_236_;
+                        let _e619 = phi_777_;
+                        let _e621 = phi_231_;
+                        let _e623 = phi_234_;
+                        let _e625 = phi_236_;
                         continue;
                         continuing {
-                            let _e623 = local_21;
-                            phi_762_ = _e616;
-                            phi_230_ = _e618;
-                            phi_233_ = _e620;
-                            phi_235_ = _e622;
-                            phi_776_ = _e616;
-                            break if !(_e623);
+                            let _e626 = local_21;
+                            phi_762_ = _e619;
+                            phi_230_ = _e621;
+                            phi_233_ = _e623;
+                            phi_235_ = _e625;
+                            phi_776_ = _e619;
+                            break if !(_e626);
                         }
                     }
-                    let _e626 = phi_776_;
-                    if _e626 {
+                    let _e629 = phi_776_;
+                    if _e629 {
                         break;
                     }
-                    let _e627 = local_19;
-                    if (_e627 > 0f) {
-                        let _e629 = local_19;
-                        phi_612_ = (1f / _e629);
+                    let _e630 = local_19;
+                    if (_e630 > 0f) {
+                        let _e632 = local_19;
+                        phi_612_ = (1f / _e632);
                     } else {
                         phi_612_ = 0f;
                     }
-                    let _e632 = phi_612_;
-                    local_48 = _e632;
-                    let _e633 = local_11;
-                    let _e634 = (3u * _e633);
-                    local_49 = _e634;
-                    let _e635 = local_20;
-                    local_50 = bitcast<u32>((_e635[0] * _e632));
-                    let _e639 = local_3;
-                    if (_e634 < _e639) {
+                    let _e635 = phi_612_;
+                    local_48 = _e635;
+                    let _e636 = local_11;
+                    let _e637 = (3u * _e636);
+                    local_49 = _e637;
+                    let _e638 = local_20;
+                    local_50 = bitcast<u32>((_e638[0] * _e635));
+                    let _e642 = local_3;
+                    if (_e637 < _e642) {
                     } else {
                         break;
                     }
-                    let _e641 = local_49;
-                    let _e644 = local_50;
-                    global_5.member[_e641] = _e644;
-                    let _e645 = local_49;
-                    let _e646 = (_e645 + 1u);
-                    local_51 = _e646;
-                    let _e647 = local_20;
-                    let _e649 = local_48;
-                    local_52 = bitcast<u32>((_e647[1] * _e649));
-                    let _e652 = local_3;
-                    if (_e646 < _e652) {
+                    let _e644 = local_49;
+                    let _e647 = local_50;
+                    global_5.member[_e644] = _e647;
+                    let _e648 = local_49;
+                    let _e649 = (_e648 + 1u);
+                    local_51 = _e649;
+                    let _e650 = local_20;
+                    let _e652 = local_48;
+                    local_52 = bitcast<u32>((_e650[1] * _e652));
+                    let _e655 = local_3;
+                    if (_e649 < _e655) {
                     } else {
                         break;
                     }
-                    let _e654 = local_51;
-                    let _e657 = local_52;
-                    global_5.member[_e654] = _e657;
-                    let _e658 = local_49;
-                    let _e659 = (_e658 + 2u);
-                    local_53 = _e659;
-                    let _e660 = local_20;
-                    let _e662 = local_48;
-                    local_54 = bitcast<u32>((_e660[2] * _e662));
-                    let _e665 = local_3;
-                    if (_e659 < _e665) {
+                    let _e657 = local_51;
+                    let _e660 = local_52;
+                    global_5.member[_e657] = _e660;
+                    let _e661 = local_49;
+                    let _e662 = (_e661 + 2u);
+                    local_53 = _e662;
+                    let _e663 = local_20;
+                    let _e665 = local_48;
+                    local_54 = bitcast<u32>((_e663[2] * _e665));
+                    let _e668 = local_3;
+                    if (_e662 < _e668) {
                     } else {
                         break;
                     }
-                    let _e667 = local_53;
-                    let _e670 = local_54;
-                    global_5.member[_e667] = _e670;
+                    let _e670 = local_53;
+                    let _e673 = local_54;
+                    global_5.member[_e670] = _e673;
                 }
             }
             storageBarrier();

@@ -185,164 +185,164 @@ fn function_() {
                         let _e172 = phi_209_;
                         let _e176 = select(_e172, 0f, ((bitcast<u32>(_e172) & 2147483647u) > 2139095040u));
                         local_25 = _e176;
-                        if (_e176 != _e176) {
+                        if !((_e176 == _e176)) {
                             phi_345_ = true;
                         } else {
-                            let _e178 = local_11;
-                            let _e179 = local_25;
-                            phi_345_ = (_e178 <= _e179);
+                            let _e179 = local_11;
+                            let _e180 = local_25;
+                            phi_345_ = (_e179 <= _e180);
                         }
-                        let _e182 = phi_345_;
-                        let _e183 = local_11;
-                        let _e184 = local_25;
-                        let _e185 = select(_e184, _e183, _e182);
-                        let _e190 = select(select(u32(_e185), 0u, (_e185 < 0f)), 4294967295u, (_e185 > 4294967000f));
-                        let _e194 = (_e190 + select(1u, 0u, (f32(_e190) == _e185)));
-                        let _e195 = local_6;
+                        let _e183 = phi_345_;
+                        let _e184 = local_11;
+                        let _e185 = local_25;
+                        let _e186 = select(_e185, _e184, _e183);
+                        let _e192 = select(select(u32(_e186), 0u, !((_e186 >= 0f))), 4294967295u, (_e186 > 4294967000f));
+                        let _e196 = (_e192 + select(1u, 0u, (f32(_e192) == _e186)));
                         let _e197 = local_6;
-                        phi_244_ = select(_e197, _e194, (_e194 > _e195));
+                        let _e199 = local_6;
+                        phi_244_ = select(_e199, _e196, (_e196 > _e197));
                     } else {
                         phi_244_ = _e82;
                     }
-                    let _e200 = phi_244_;
-                    let _e201 = local_5;
-                    let _e202 = local_3;
-                    phi_113_ = (_e201 + _e202);
-                    phi_116_ = _e200;
+                    let _e202 = phi_244_;
+                    let _e203 = local_5;
+                    let _e204 = local_3;
+                    phi_113_ = (_e203 + _e204);
+                    phi_116_ = _e202;
                 } else {
                     phi_113_ = u32();
                     phi_116_ = u32();
                 }
-                let _e205 = phi_113_;
-                let _e207 = phi_116_;
+                let _e207 = phi_113_;
+                let _e209 = phi_116_;
                 continue;
                 continuing {
-                    let _e208 = local_7;
-                    phi_112_ = _e205;
-                    phi_115_ = _e207;
+                    let _e210 = local_7;
+                    phi_112_ = _e207;
+                    phi_115_ = _e209;
                     phi_358_ = false;
-                    break if !(_e208);
+                    break if !(_e210);
                 }
             }
-            let _e211 = phi_358_;
-            if _e211 {
-                break;
-            }
-            let _e212 = local;
-            if (_e212 < 512u) {
-            } else {
+            let _e213 = phi_358_;
+            if _e213 {
                 break;
             }
             let _e214 = local;
-            let _e216 = local_6;
-            global_5[_e214] = _e216;
+            if (_e214 < 512u) {
+            } else {
+                break;
+            }
+            let _e216 = local;
+            let _e218 = local_6;
+            global_5[_e216] = _e218;
             storageBarrier();
             workgroupBarrier();
             phi_253_ = 1u;
             phi_256_ = 0u;
             loop {
-                let _e218 = phi_253_;
-                let _e220 = phi_256_;
-                local_15 = _e218;
-                local_16 = _e220;
-                let _e221 = local_15;
-                let _e222 = (_e221 < 256u);
-                local_17 = _e222;
-                if _e222 {
-                    let _e223 = local_16;
-                    let _e225 = select(0u, 256u, (_e223 == 0u));
-                    local_26 = _e225;
-                    let _e226 = local_16;
-                    let _e227 = local;
-                    let _e228 = (_e226 + _e227);
-                    local_18 = _e228;
-                    if (_e228 < 512u) {
+                let _e220 = phi_253_;
+                let _e222 = phi_256_;
+                local_15 = _e220;
+                local_16 = _e222;
+                let _e223 = local_15;
+                let _e224 = (_e223 < 256u);
+                local_17 = _e224;
+                if _e224 {
+                    let _e225 = local_16;
+                    let _e227 = select(0u, 256u, (_e225 == 0u));
+                    local_26 = _e227;
+                    let _e228 = local_16;
+                    let _e229 = local;
+                    let _e230 = (_e228 + _e229);
+                    local_18 = _e230;
+                    if (_e230 < 512u) {
                     } else {
                         phi_373_ = true;
                         break;
                     }
-                    let _e230 = local_18;
-                    let _e232 = global_5[_e230];
-                    local_19 = _e232;
-                    let _e233 = local;
-                    let _e234 = local_15;
-                    if (_e233 >= _e234) {
-                        let _e236 = local;
-                        let _e237 = local_15;
-                        let _e239 = local_16;
-                        let _e240 = (_e239 + (_e236 - _e237));
-                        local_20 = _e240;
-                        if (_e240 < 512u) {
+                    let _e232 = local_18;
+                    let _e234 = global_5[_e232];
+                    local_19 = _e234;
+                    let _e235 = local;
+                    let _e236 = local_15;
+                    if (_e235 >= _e236) {
+                        let _e238 = local;
+                        let _e239 = local_15;
+                        let _e241 = local_16;
+                        let _e242 = (_e241 + (_e238 - _e239));
+                        local_20 = _e242;
+                        if (_e242 < 512u) {
                         } else {
                             phi_373_ = true;
                             break;
                         }
-                        let _e242 = local_20;
-                        let _e244 = global_5[_e242];
-                        let _e245 = local_19;
+                        let _e244 = local_20;
+                        let _e246 = global_5[_e244];
                         let _e247 = local_19;
-                        phi_292_ = select(_e247, _e244, (_e244 > _e245));
+                        let _e249 = local_19;
+                        phi_292_ = select(_e249, _e246, (_e246 > _e247));
                     } else {
-                        phi_292_ = _e232;
+                        phi_292_ = _e234;
                     }
-                    let _e250 = phi_292_;
-                    local_21 = _e250;
-                    let _e251 = local_26;
-                    let _e252 = local;
-                    let _e253 = (_e251 + _e252);
-                    local_22 = _e253;
-                    if (_e253 < 512u) {
+                    let _e252 = phi_292_;
+                    local_21 = _e252;
+                    let _e253 = local_26;
+                    let _e254 = local;
+                    let _e255 = (_e253 + _e254);
+                    local_22 = _e255;
+                    if (_e255 < 512u) {
                     } else {
                         phi_373_ = true;
                         break;
                     }
-                    let _e255 = local_22;
-                    let _e257 = local_21;
-                    global_5[_e255] = _e257;
+                    let _e257 = local_22;
+                    let _e259 = local_21;
+                    global_5[_e257] = _e259;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e258 = local_15;
-                    phi_254_ = (_e258 * 2u);
-                    phi_257_ = _e225;
+                    let _e260 = local_15;
+                    phi_254_ = (_e260 * 2u);
+                    phi_257_ = _e227;
                 } else {
                     phi_254_ = u32();
                     phi_257_ = u32();
                 }
-                let _e261 = phi_254_;
-                let _e263 = phi_257_;
+                let _e263 = phi_254_;
+                let _e265 = phi_257_;
                 continue;
                 continuing {
-                    let _e264 = local_17;
-                    phi_253_ = _e261;
-                    phi_256_ = _e263;
-                    phi_373_ = _e211;
-                    break if !(_e264);
+                    let _e266 = local_17;
+                    phi_253_ = _e263;
+                    phi_256_ = _e265;
+                    phi_373_ = _e213;
+                    break if !(_e266);
                 }
             }
-            let _e267 = phi_373_;
-            if _e267 {
+            let _e269 = phi_373_;
+            if _e269 {
                 break;
             }
-            let _e268 = local;
-            if (_e268 == 255u) {
-                let _e270 = local_16;
-                let _e271 = local;
-                let _e272 = (_e270 + _e271);
-                local_23 = _e272;
-                if (_e272 < 512u) {
+            let _e270 = local;
+            if (_e270 == 255u) {
+                let _e272 = local_16;
+                let _e273 = local;
+                let _e274 = (_e272 + _e273);
+                local_23 = _e274;
+                if (_e274 < 512u) {
                 } else {
                     break;
                 }
-                let _e274 = local_23;
-                let _e276 = global_5[_e274];
-                local_24 = _e276;
-                let _e277 = local_2;
-                if (0u < _e277) {
+                let _e276 = local_23;
+                let _e278 = global_5[_e276];
+                local_24 = _e278;
+                let _e279 = local_2;
+                if (0u < _e279) {
                 } else {
                     break;
                 }
-                let _e281 = local_24;
-                let _e282 = atomicMax((&global_6.member[0u]), _e281);
+                let _e283 = local_24;
+                let _e284 = atomicMax((&global_6.member[0u]), _e283);
             }
             storageBarrier();
             workgroupBarrier();

@@ -214,85 +214,85 @@ fn function_() {
                         local_24 = _e162[3];
                         let _e166 = (1f - _e162[3]);
                         local_25 = _e166;
-                        if (_e166 != _e166) {
+                        if !((_e166 == _e166)) {
                             phi_366_ = true;
                         } else {
-                            let _e168 = local_25;
-                            phi_366_ = (0f >= _e168);
+                            let _e169 = local_25;
+                            phi_366_ = (0f >= _e169);
                         }
-                        let _e171 = phi_366_;
-                        let _e172 = local_25;
-                        let _e173 = select(_e172, 0f, _e171);
-                        let _e174 = local_22;
-                        let _e176 = local_23;
-                        let _e180 = local_22;
-                        let _e182 = local_23;
-                        local_26 = (_e180[1] + (_e173 * _e182[1]));
-                        let _e186 = local_22;
-                        let _e188 = local_23;
-                        local_27 = (_e186[2] + (_e173 * _e188[2]));
-                        let _e192 = local_23;
-                        let _e195 = local_24;
-                        local_28 = (_e195 + (_e173 * _e192[3]));
-                        local_29 = bitcast<u32>((_e174[0] + (_e173 * _e176[0])));
-                        let _e198 = local_15;
-                        if _e198 {
+                        let _e172 = phi_366_;
+                        let _e173 = local_25;
+                        let _e174 = select(_e173, 0f, _e172);
+                        let _e175 = local_22;
+                        let _e177 = local_23;
+                        let _e181 = local_22;
+                        let _e183 = local_23;
+                        local_26 = (_e181[1] + (_e174 * _e183[1]));
+                        let _e187 = local_22;
+                        let _e189 = local_23;
+                        local_27 = (_e187[2] + (_e174 * _e189[2]));
+                        let _e193 = local_23;
+                        let _e196 = local_24;
+                        local_28 = (_e196 + (_e174 * _e193[3]));
+                        local_29 = bitcast<u32>((_e175[0] + (_e174 * _e177[0])));
+                        let _e199 = local_15;
+                        if _e199 {
                         } else {
                             phi_375_ = true;
                             break;
                         }
-                        let _e199 = local_29;
-                        global_5.member[_e124] = _e199;
-                        let _e200 = local_26;
-                        local_30 = bitcast<u32>(_e200);
-                        let _e202 = local_17;
-                        if _e202 {
+                        let _e200 = local_29;
+                        global_5.member[_e124] = _e200;
+                        let _e201 = local_26;
+                        local_30 = bitcast<u32>(_e201);
+                        let _e203 = local_17;
+                        if _e203 {
                         } else {
                             phi_375_ = true;
                             break;
                         }
-                        let _e203 = local_30;
-                        global_5.member[_e132] = _e203;
-                        let _e204 = local_27;
-                        local_31 = bitcast<u32>(_e204);
-                        let _e206 = local_19;
-                        if _e206 {
+                        let _e204 = local_30;
+                        global_5.member[_e132] = _e204;
+                        let _e205 = local_27;
+                        local_31 = bitcast<u32>(_e205);
+                        let _e207 = local_19;
+                        if _e207 {
                         } else {
                             phi_375_ = true;
                             break;
                         }
-                        let _e207 = local_31;
-                        global_5.member[_e140] = _e207;
-                        let _e208 = local_28;
-                        local_32 = bitcast<u32>(_e208);
-                        let _e210 = local_21;
-                        if _e210 {
+                        let _e208 = local_31;
+                        global_5.member[_e140] = _e208;
+                        let _e209 = local_28;
+                        local_32 = bitcast<u32>(_e209);
+                        let _e211 = local_21;
+                        if _e211 {
                         } else {
                             phi_375_ = true;
                             break;
                         }
-                        let _e211 = local_32;
-                        global_5.member[_e148] = _e211;
+                        let _e212 = local_32;
+                        global_5.member[_e148] = _e212;
                     }
                     storageBarrier();
                     workgroupBarrier();
-                    let _e212 = local_5;
-                    let _e213 = local_4;
-                    phi_95_ = (_e212 + _e213);
+                    let _e213 = local_5;
+                    let _e214 = local_4;
+                    phi_95_ = (_e213 + _e214);
                 } else {
                     phi_95_ = u32();
                 }
-                let _e216 = phi_95_;
+                let _e217 = phi_95_;
                 continue;
                 continuing {
-                    let _e217 = local_6;
-                    phi_94_ = _e216;
+                    let _e218 = local_6;
+                    phi_94_ = _e217;
                     phi_375_ = false;
-                    break if !(_e217);
+                    break if !(_e218);
                 }
             }
-            let _e220 = phi_375_;
-            if _e220 {
+            let _e221 = phi_375_;
+            if _e221 {
                 break;
             }
             break;

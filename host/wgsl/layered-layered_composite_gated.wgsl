@@ -243,85 +243,85 @@ fn function_() {
                             local_28 = _e187[3];
                             let _e191 = (1f - _e187[3]);
                             local_29 = _e191;
-                            if (_e191 != _e191) {
+                            if !((_e191 == _e191)) {
                                 phi_389_ = true;
                             } else {
-                                let _e193 = local_29;
-                                phi_389_ = (0f >= _e193);
+                                let _e194 = local_29;
+                                phi_389_ = (0f >= _e194);
                             }
-                            let _e196 = phi_389_;
-                            let _e197 = local_29;
-                            let _e198 = select(_e197, 0f, _e196);
-                            let _e199 = local_26;
-                            let _e201 = local_27;
-                            let _e205 = local_26;
-                            let _e207 = local_27;
-                            local_30 = (_e205[1] + (_e198 * _e207[1]));
-                            let _e211 = local_26;
-                            let _e213 = local_27;
-                            local_31 = (_e211[2] + (_e198 * _e213[2]));
-                            let _e217 = local_27;
-                            let _e220 = local_28;
-                            local_32 = (_e220 + (_e198 * _e217[3]));
-                            local_33 = bitcast<u32>((_e199[0] + (_e198 * _e201[0])));
-                            let _e223 = local_19;
-                            if _e223 {
+                            let _e197 = phi_389_;
+                            let _e198 = local_29;
+                            let _e199 = select(_e198, 0f, _e197);
+                            let _e200 = local_26;
+                            let _e202 = local_27;
+                            let _e206 = local_26;
+                            let _e208 = local_27;
+                            local_30 = (_e206[1] + (_e199 * _e208[1]));
+                            let _e212 = local_26;
+                            let _e214 = local_27;
+                            local_31 = (_e212[2] + (_e199 * _e214[2]));
+                            let _e218 = local_27;
+                            let _e221 = local_28;
+                            local_32 = (_e221 + (_e199 * _e218[3]));
+                            local_33 = bitcast<u32>((_e200[0] + (_e199 * _e202[0])));
+                            let _e224 = local_19;
+                            if _e224 {
                             } else {
                                 phi_398_ = true;
                                 break;
                             }
-                            let _e224 = local_33;
-                            global_6.member[_e149] = _e224;
-                            let _e225 = local_30;
-                            local_34 = bitcast<u32>(_e225);
-                            let _e227 = local_21;
-                            if _e227 {
+                            let _e225 = local_33;
+                            global_6.member[_e149] = _e225;
+                            let _e226 = local_30;
+                            local_34 = bitcast<u32>(_e226);
+                            let _e228 = local_21;
+                            if _e228 {
                             } else {
                                 phi_398_ = true;
                                 break;
                             }
-                            let _e228 = local_34;
-                            global_6.member[_e157] = _e228;
-                            let _e229 = local_31;
-                            local_35 = bitcast<u32>(_e229);
-                            let _e231 = local_23;
-                            if _e231 {
+                            let _e229 = local_34;
+                            global_6.member[_e157] = _e229;
+                            let _e230 = local_31;
+                            local_35 = bitcast<u32>(_e230);
+                            let _e232 = local_23;
+                            if _e232 {
                             } else {
                                 phi_398_ = true;
                                 break;
                             }
-                            let _e232 = local_35;
-                            global_6.member[_e165] = _e232;
-                            let _e233 = local_32;
-                            local_36 = bitcast<u32>(_e233);
-                            let _e235 = local_25;
-                            if _e235 {
+                            let _e233 = local_35;
+                            global_6.member[_e165] = _e233;
+                            let _e234 = local_32;
+                            local_36 = bitcast<u32>(_e234);
+                            let _e236 = local_25;
+                            if _e236 {
                             } else {
                                 phi_398_ = true;
                                 break;
                             }
-                            let _e236 = local_36;
-                            global_6.member[_e173] = _e236;
+                            let _e237 = local_36;
+                            global_6.member[_e173] = _e237;
                         }
                         storageBarrier();
                         workgroupBarrier();
-                        let _e237 = local_9;
-                        let _e238 = local_8;
-                        phi_118_ = (_e237 + _e238);
+                        let _e238 = local_9;
+                        let _e239 = local_8;
+                        phi_118_ = (_e238 + _e239);
                     } else {
                         phi_118_ = u32();
                     }
-                    let _e241 = phi_118_;
+                    let _e242 = phi_118_;
                     continue;
                     continuing {
-                        let _e242 = local_10;
-                        phi_117_ = _e241;
+                        let _e243 = local_10;
+                        phi_117_ = _e242;
                         phi_398_ = false;
-                        break if !(_e242);
+                        break if !(_e243);
                     }
                 }
-                let _e245 = phi_398_;
-                if _e245 {
+                let _e246 = phi_398_;
+                if _e246 {
                     break;
                 }
             }

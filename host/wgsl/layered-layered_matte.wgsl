@@ -850,142 +850,142 @@ fn function_() {
                                     local_66 = _e654[3];
                                     let _e656 = (1f - _e654[3]);
                                     local_67 = _e656;
-                                    if (_e656 != _e656) {
+                                    if !((_e656 == _e656)) {
                                         phi_912_ = true;
                                     } else {
-                                        let _e658 = local_67;
-                                        phi_912_ = (0f >= _e658);
+                                        let _e659 = local_67;
+                                        phi_912_ = (0f >= _e659);
                                     }
-                                    let _e661 = phi_912_;
-                                    let _e662 = local_67;
-                                    let _e664 = local_65;
-                                    let _e665 = (select(_e662, 0f, _e661) * _e664);
-                                    let _e666 = local_48;
-                                    let _e668 = local_32;
-                                    let _e671 = local_50;
-                                    let _e673 = local_32;
-                                    let _e676 = local_52;
-                                    let _e678 = local_32;
-                                    let _e681 = local_55;
-                                    let _e683 = local_66;
-                                    phi_801_ = array<f32, 4>((_e668[0] + (_e665 * _e666)), (_e673[1] + (_e665 * _e671)), (_e678[2] + (_e665 * _e676)), (_e683 + (_e665 * _e681)));
+                                    let _e662 = phi_912_;
+                                    let _e663 = local_67;
+                                    let _e665 = local_65;
+                                    let _e666 = (select(_e663, 0f, _e662) * _e665);
+                                    let _e667 = local_48;
+                                    let _e669 = local_32;
+                                    let _e672 = local_50;
+                                    let _e674 = local_32;
+                                    let _e677 = local_52;
+                                    let _e679 = local_32;
+                                    let _e682 = local_55;
+                                    let _e684 = local_66;
+                                    phi_801_ = array<f32, 4>((_e669[0] + (_e666 * _e667)), (_e674[1] + (_e666 * _e672)), (_e679[2] + (_e666 * _e677)), (_e684 + (_e666 * _e682)));
                                 } else {
                                     phi_801_ = _e343;
                                 }
-                                let _e687 = phi_801_;
-                                let _e688 = local_78;
-                                let _e689 = local_31;
-                                let _e691 = local_30;
-                                phi_363_ = (_e691 + 1u);
-                                phi_366_ = select(_e689, false, _e688);
-                                phi_368_ = _e687;
+                                let _e688 = phi_801_;
+                                let _e689 = local_78;
+                                let _e690 = local_31;
+                                let _e692 = local_30;
+                                phi_363_ = (_e692 + 1u);
+                                phi_366_ = select(_e690, false, _e689);
+                                phi_368_ = _e688;
                             } else {
                                 phi_363_ = u32();
                                 phi_366_ = bool();
                                 phi_368_ = array<f32, 4>();
                             }
-                            let _e694 = phi_363_;
-                            let _e696 = phi_366_;
-                            let _e698 = phi_368_;
+                            let _e695 = phi_363_;
+                            let _e697 = phi_366_;
+                            let _e699 = phi_368_;
                             continue;
                             continuing {
-                                let _e699 = local_33;
-                                phi_362_ = _e694;
-                                phi_365_ = _e696;
-                                phi_367_ = _e698;
+                                let _e700 = local_33;
+                                phi_362_ = _e695;
+                                phi_365_ = _e697;
+                                phi_367_ = _e699;
                                 phi_943_ = _e328;
-                                break if !(_e699);
+                                break if !(_e700);
                             }
                         }
-                        let _e702 = phi_943_;
-                        phi_998_ = _e702;
-                        if _e702 {
+                        let _e703 = phi_943_;
+                        phi_998_ = _e703;
+                        if _e703 {
                             break;
                         }
-                        let _e703 = local_8;
-                        let _e704 = (4u * _e703);
-                        local_68 = _e704;
-                        let _e705 = local_32;
-                        local_69 = bitcast<u32>(_e705[0]);
-                        let _e708 = local_3;
-                        if (_e704 < _e708) {
+                        let _e704 = local_8;
+                        let _e705 = (4u * _e704);
+                        local_68 = _e705;
+                        let _e706 = local_32;
+                        local_69 = bitcast<u32>(_e706[0]);
+                        let _e709 = local_3;
+                        if (_e705 < _e709) {
                         } else {
                             phi_998_ = true;
                             break;
                         }
-                        let _e710 = local_68;
-                        let _e713 = local_69;
-                        global_6.member[_e710] = _e713;
-                        let _e714 = local_68;
-                        let _e715 = (_e714 + 1u);
-                        local_70 = _e715;
-                        let _e716 = local_32;
-                        local_71 = bitcast<u32>(_e716[1]);
-                        let _e719 = local_3;
-                        if (_e715 < _e719) {
+                        let _e711 = local_68;
+                        let _e714 = local_69;
+                        global_6.member[_e711] = _e714;
+                        let _e715 = local_68;
+                        let _e716 = (_e715 + 1u);
+                        local_70 = _e716;
+                        let _e717 = local_32;
+                        local_71 = bitcast<u32>(_e717[1]);
+                        let _e720 = local_3;
+                        if (_e716 < _e720) {
                         } else {
                             phi_998_ = true;
                             break;
                         }
-                        let _e721 = local_70;
-                        let _e724 = local_71;
-                        global_6.member[_e721] = _e724;
-                        let _e725 = local_68;
-                        let _e726 = (_e725 + 2u);
-                        local_72 = _e726;
-                        let _e727 = local_32;
-                        local_73 = bitcast<u32>(_e727[2]);
-                        let _e730 = local_3;
-                        if (_e726 < _e730) {
+                        let _e722 = local_70;
+                        let _e725 = local_71;
+                        global_6.member[_e722] = _e725;
+                        let _e726 = local_68;
+                        let _e727 = (_e726 + 2u);
+                        local_72 = _e727;
+                        let _e728 = local_32;
+                        local_73 = bitcast<u32>(_e728[2]);
+                        let _e731 = local_3;
+                        if (_e727 < _e731) {
                         } else {
                             phi_998_ = true;
                             break;
                         }
-                        let _e732 = local_72;
-                        let _e735 = local_73;
-                        global_6.member[_e732] = _e735;
-                        let _e736 = local_68;
-                        let _e737 = (_e736 + 3u);
-                        local_74 = _e737;
-                        let _e738 = local_32;
-                        local_75 = bitcast<u32>(_e738[3]);
-                        let _e741 = local_3;
-                        if (_e737 < _e741) {
+                        let _e733 = local_72;
+                        let _e736 = local_73;
+                        global_6.member[_e733] = _e736;
+                        let _e737 = local_68;
+                        let _e738 = (_e737 + 3u);
+                        local_74 = _e738;
+                        let _e739 = local_32;
+                        local_75 = bitcast<u32>(_e739[3]);
+                        let _e742 = local_3;
+                        if (_e738 < _e742) {
                         } else {
                             phi_998_ = true;
                             break;
                         }
-                        let _e743 = local_74;
-                        let _e746 = local_75;
-                        global_6.member[_e743] = _e746;
-                        phi_1000_ = _e702;
+                        let _e744 = local_74;
+                        let _e747 = local_75;
+                        global_6.member[_e744] = _e747;
+                        phi_1000_ = _e703;
                     } else {
                         phi_1000_ = _e138;
                     }
-                    let _e748 = phi_1000_;
+                    let _e749 = phi_1000_;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e749 = local_6;
-                    let _e750 = local_5;
-                    phi_999_ = _e748;
-                    phi_105_ = (_e749 + _e750);
+                    let _e750 = local_6;
+                    let _e751 = local_5;
+                    phi_999_ = _e749;
+                    phi_105_ = (_e750 + _e751);
                 } else {
                     phi_999_ = _e138;
                     phi_105_ = u32();
                 }
-                let _e753 = phi_999_;
-                let _e755 = phi_105_;
+                let _e754 = phi_999_;
+                let _e756 = phi_105_;
                 continue;
                 continuing {
-                    let _e756 = local_7;
-                    phi_941_ = _e753;
-                    phi_104_ = _e755;
-                    phi_998_ = _e753;
-                    break if !(_e756);
+                    let _e757 = local_7;
+                    phi_941_ = _e754;
+                    phi_104_ = _e756;
+                    phi_998_ = _e754;
+                    break if !(_e757);
                 }
             }
-            let _e759 = phi_998_;
-            if _e759 {
+            let _e760 = phi_998_;
+            if _e760 {
                 break;
             }
             break;

@@ -1010,142 +1010,142 @@ fn function_() {
                                         local_79 = _e746[3];
                                         let _e748 = (1f - _e746[3]);
                                         local_80 = _e748;
-                                        if (_e748 != _e748) {
+                                        if !((_e748 == _e748)) {
                                             phi_1043_ = true;
                                         } else {
-                                            let _e750 = local_80;
-                                            phi_1043_ = (0f >= _e750);
+                                            let _e751 = local_80;
+                                            phi_1043_ = (0f >= _e751);
                                         }
-                                        let _e753 = phi_1043_;
-                                        let _e754 = local_80;
-                                        let _e756 = local_78;
-                                        let _e757 = (select(_e754, 0f, _e753) * _e756);
-                                        let _e758 = local_67;
-                                        let _e760 = local_51;
-                                        let _e763 = local_69;
-                                        let _e765 = local_51;
-                                        let _e768 = local_71;
-                                        let _e770 = local_51;
-                                        let _e773 = local_74;
-                                        let _e775 = local_79;
-                                        phi_949_ = array<f32, 4>((_e760[0] + (_e757 * _e758)), (_e765[1] + (_e757 * _e763)), (_e770[2] + (_e757 * _e768)), (_e775 + (_e757 * _e773)));
+                                        let _e754 = phi_1043_;
+                                        let _e755 = local_80;
+                                        let _e757 = local_78;
+                                        let _e758 = (select(_e755, 0f, _e754) * _e757);
+                                        let _e759 = local_67;
+                                        let _e761 = local_51;
+                                        let _e764 = local_69;
+                                        let _e766 = local_51;
+                                        let _e769 = local_71;
+                                        let _e771 = local_51;
+                                        let _e774 = local_74;
+                                        let _e776 = local_79;
+                                        phi_949_ = array<f32, 4>((_e761[0] + (_e758 * _e759)), (_e766[1] + (_e758 * _e764)), (_e771[2] + (_e758 * _e769)), (_e776 + (_e758 * _e774)));
                                     } else {
                                         phi_949_ = _e462;
                                     }
-                                    let _e779 = phi_949_;
-                                    let _e780 = local_91;
-                                    let _e781 = local_50;
-                                    let _e783 = local_49;
-                                    phi_511_ = (_e783 + 1u);
-                                    phi_514_ = select(_e781, false, _e780);
-                                    phi_516_ = _e779;
+                                    let _e780 = phi_949_;
+                                    let _e781 = local_91;
+                                    let _e782 = local_50;
+                                    let _e784 = local_49;
+                                    phi_511_ = (_e784 + 1u);
+                                    phi_514_ = select(_e782, false, _e781);
+                                    phi_516_ = _e780;
                                 } else {
                                     phi_511_ = u32();
                                     phi_514_ = bool();
                                     phi_516_ = array<f32, 4>();
                                 }
-                                let _e786 = phi_511_;
-                                let _e788 = phi_514_;
-                                let _e790 = phi_516_;
+                                let _e787 = phi_511_;
+                                let _e789 = phi_514_;
+                                let _e791 = phi_516_;
                                 continue;
                                 continuing {
-                                    let _e791 = local_52;
-                                    phi_510_ = _e786;
-                                    phi_513_ = _e788;
-                                    phi_515_ = _e790;
+                                    let _e792 = local_52;
+                                    phi_510_ = _e787;
+                                    phi_513_ = _e789;
+                                    phi_515_ = _e791;
                                     phi_1091_ = _e447;
-                                    break if !(_e791);
+                                    break if !(_e792);
                                 }
                             }
-                            let _e794 = phi_1091_;
-                            phi_1146_ = _e794;
-                            if _e794 {
+                            let _e795 = phi_1091_;
+                            phi_1146_ = _e795;
+                            if _e795 {
                                 break;
                             }
-                            let _e795 = local_29;
-                            let _e796 = (4u * _e795);
-                            local_81 = _e796;
-                            let _e797 = local_51;
-                            local_82 = bitcast<u32>(_e797[0]);
-                            let _e800 = local_4;
-                            if (_e796 < _e800) {
+                            let _e796 = local_29;
+                            let _e797 = (4u * _e796);
+                            local_81 = _e797;
+                            let _e798 = local_51;
+                            local_82 = bitcast<u32>(_e798[0]);
+                            let _e801 = local_4;
+                            if (_e797 < _e801) {
                             } else {
                                 phi_1146_ = true;
                                 break;
                             }
-                            let _e802 = local_81;
-                            let _e805 = local_82;
-                            global_3.member[_e802] = _e805;
-                            let _e806 = local_81;
-                            let _e807 = (_e806 + 1u);
-                            local_83 = _e807;
-                            let _e808 = local_51;
-                            local_84 = bitcast<u32>(_e808[1]);
-                            let _e811 = local_4;
-                            if (_e807 < _e811) {
+                            let _e803 = local_81;
+                            let _e806 = local_82;
+                            global_3.member[_e803] = _e806;
+                            let _e807 = local_81;
+                            let _e808 = (_e807 + 1u);
+                            local_83 = _e808;
+                            let _e809 = local_51;
+                            local_84 = bitcast<u32>(_e809[1]);
+                            let _e812 = local_4;
+                            if (_e808 < _e812) {
                             } else {
                                 phi_1146_ = true;
                                 break;
                             }
-                            let _e813 = local_83;
-                            let _e816 = local_84;
-                            global_3.member[_e813] = _e816;
-                            let _e817 = local_81;
-                            let _e818 = (_e817 + 2u);
-                            local_85 = _e818;
-                            let _e819 = local_51;
-                            local_86 = bitcast<u32>(_e819[2]);
-                            let _e822 = local_4;
-                            if (_e818 < _e822) {
+                            let _e814 = local_83;
+                            let _e817 = local_84;
+                            global_3.member[_e814] = _e817;
+                            let _e818 = local_81;
+                            let _e819 = (_e818 + 2u);
+                            local_85 = _e819;
+                            let _e820 = local_51;
+                            local_86 = bitcast<u32>(_e820[2]);
+                            let _e823 = local_4;
+                            if (_e819 < _e823) {
                             } else {
                                 phi_1146_ = true;
                                 break;
                             }
-                            let _e824 = local_85;
-                            let _e827 = local_86;
-                            global_3.member[_e824] = _e827;
-                            let _e828 = local_81;
-                            let _e829 = (_e828 + 3u);
-                            local_87 = _e829;
-                            let _e830 = local_51;
-                            local_88 = bitcast<u32>(_e830[3]);
-                            let _e833 = local_4;
-                            if (_e829 < _e833) {
+                            let _e825 = local_85;
+                            let _e828 = local_86;
+                            global_3.member[_e825] = _e828;
+                            let _e829 = local_81;
+                            let _e830 = (_e829 + 3u);
+                            local_87 = _e830;
+                            let _e831 = local_51;
+                            local_88 = bitcast<u32>(_e831[3]);
+                            let _e834 = local_4;
+                            if (_e830 < _e834) {
                             } else {
                                 phi_1146_ = true;
                                 break;
                             }
-                            let _e835 = local_87;
-                            let _e838 = local_88;
-                            global_3.member[_e835] = _e838;
-                            phi_1148_ = _e794;
+                            let _e836 = local_87;
+                            let _e839 = local_88;
+                            global_3.member[_e836] = _e839;
+                            phi_1148_ = _e795;
                         } else {
                             phi_1148_ = _e266;
                         }
-                        let _e840 = phi_1148_;
+                        let _e841 = phi_1148_;
                         storageBarrier();
                         workgroupBarrier();
-                        let _e841 = local_27;
-                        let _e842 = local_26;
-                        phi_1147_ = _e840;
-                        phi_254_ = (_e841 + _e842);
+                        let _e842 = local_27;
+                        let _e843 = local_26;
+                        phi_1147_ = _e841;
+                        phi_254_ = (_e842 + _e843);
                     } else {
                         phi_1147_ = _e266;
                         phi_254_ = u32();
                     }
-                    let _e845 = phi_1147_;
-                    let _e847 = phi_254_;
+                    let _e846 = phi_1147_;
+                    let _e848 = phi_254_;
                     continue;
                     continuing {
-                        let _e848 = local_28;
-                        phi_1080_ = _e845;
-                        phi_253_ = _e847;
-                        phi_1146_ = _e845;
-                        break if !(_e848);
+                        let _e849 = local_28;
+                        phi_1080_ = _e846;
+                        phi_253_ = _e848;
+                        phi_1146_ = _e846;
+                        break if !(_e849);
                     }
                 }
-                let _e851 = phi_1146_;
-                if _e851 {
+                let _e852 = phi_1146_;
+                if _e852 {
                     break;
                 }
             }

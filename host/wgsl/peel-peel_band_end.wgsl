@@ -96,46 +96,46 @@ fn function_() {
                             } else {
                                 let _e97 = local_6;
                                 let _e99 = local_6;
-                                let _e101 = local_6;
-                                phi_212_ = select(select(u32(_e97), 0u, (_e99 < 0f)), 4294967295u, (_e101 > 4294967000f));
+                                let _e102 = local_6;
+                                phi_212_ = select(select(u32(_e97), 0u, !((_e99 >= 0f))), 4294967295u, (_e102 > 4294967000f));
                             }
-                            let _e106 = phi_212_;
-                            phi_213_ = _e106;
+                            let _e107 = phi_212_;
+                            phi_213_ = _e107;
                         }
-                        let _e108 = phi_213_;
-                        local_7 = _e108;
-                        let _e109 = local_1;
-                        if (1u < _e109) {
+                        let _e109 = phi_213_;
+                        local_7 = _e109;
+                        let _e110 = local_1;
+                        if (1u < _e110) {
                         } else {
                             phi_288_ = true;
                             break;
                         }
-                        let _e113 = local_7;
-                        global_4.member[1u] = _e113;
-                        let _e116 = global_3.member.member_4;
-                        let _e117 = local_7;
-                        if (_e117 > _e116) {
-                            let _e119 = local_1;
-                            let _e120 = (2u < _e119);
-                            local_8 = _e120;
-                            if _e120 {
+                        let _e114 = local_7;
+                        global_4.member[1u] = _e114;
+                        let _e117 = global_3.member.member_4;
+                        let _e118 = local_7;
+                        if (_e118 > _e117) {
+                            let _e120 = local_1;
+                            let _e121 = (2u < _e120);
+                            local_8 = _e121;
+                            if _e121 {
                             } else {
                                 phi_288_ = true;
                                 break;
                             }
-                            let _e123 = global_4.member[2u];
-                            local_9 = (_e123 + 1u);
-                            let _e125 = local_8;
-                            if _e125 {
+                            let _e124 = global_4.member[2u];
+                            local_9 = (_e124 + 1u);
+                            let _e126 = local_8;
+                            if _e126 {
                             } else {
                                 phi_288_ = true;
                                 break;
                             }
-                            let _e126 = local_9;
-                            global_4.member[2u] = _e126;
+                            let _e127 = local_9;
+                            global_4.member[2u] = _e127;
                         }
-                        let _e127 = local_5;
-                        if _e127 {
+                        let _e128 = local_5;
+                        if _e128 {
                         } else {
                             phi_288_ = true;
                             break;
@@ -144,23 +144,23 @@ fn function_() {
                     }
                     storageBarrier();
                     workgroupBarrier();
-                    let _e128 = local_3;
-                    let _e129 = local_2;
-                    phi_81_ = (_e128 + _e129);
+                    let _e129 = local_3;
+                    let _e130 = local_2;
+                    phi_81_ = (_e129 + _e130);
                 } else {
                     phi_81_ = u32();
                 }
-                let _e132 = phi_81_;
+                let _e133 = phi_81_;
                 continue;
                 continuing {
-                    let _e133 = local_4;
-                    phi_80_ = _e132;
+                    let _e134 = local_4;
+                    phi_80_ = _e133;
                     phi_288_ = false;
-                    break if !(_e133);
+                    break if !(_e134);
                 }
             }
-            let _e136 = phi_288_;
-            if _e136 {
+            let _e137 = phi_288_;
+            if _e137 {
                 break;
             }
             break;

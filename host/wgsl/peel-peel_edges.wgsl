@@ -493,727 +493,727 @@ fn function_() {
                                         } else {
                                             let _e381 = local_35;
                                             let _e383 = local_35;
-                                            let _e385 = local_35;
-                                            let _e389 = local_35;
+                                            let _e386 = local_35;
                                             let _e390 = local_35;
-                                            phi_413_ = select(0i, select(select(i32(_e381), i32(-2147483648), (_e383 < -2147483600f)), 2147483647i, (_e385 > 2147483500f)), (_e389 == _e390));
+                                            let _e391 = local_35;
+                                            phi_413_ = select(0i, select(select(i32(_e381), i32(-2147483648), !((_e383 >= -2147483600f))), 2147483647i, (_e386 > 2147483500f)), (_e390 == _e391));
                                         }
-                                        let _e394 = phi_413_;
-                                        phi_414_ = _e394;
+                                        let _e395 = phi_413_;
+                                        phi_414_ = _e395;
                                     } else {
                                         phi_414_ = i32();
                                     }
-                                    let _e396 = phi_414_;
-                                    let _e397 = local_36;
-                                    phi_416_ = _e396;
-                                    phi_417_ = select(true, false, _e397);
+                                    let _e397 = phi_414_;
+                                    let _e398 = local_36;
+                                    phi_416_ = _e397;
+                                    phi_417_ = select(true, false, _e398);
                                 } else {
                                     phi_416_ = i32();
                                     phi_417_ = true;
                                 }
-                                let _e400 = phi_416_;
-                                let _e402 = phi_417_;
-                                let _e403 = local_7;
-                                phi_422_ = select(_e400, _e403, _e402);
+                                let _e401 = phi_416_;
+                                let _e403 = phi_417_;
+                                let _e404 = local_7;
+                                phi_422_ = select(_e401, _e404, _e403);
                             } else {
                                 phi_422_ = -1i;
                             }
-                            let _e406 = phi_422_;
-                            phi_607_ = select(_e406, -1i, (_e406 < -1i));
+                            let _e407 = phi_422_;
+                            phi_607_ = select(_e407, -1i, (_e407 < -1i));
                         } else {
                             phi_607_ = -1i;
                         }
-                        let _e410 = phi_607_;
-                        local_37 = _e410;
-                        let _e411 = local_14;
-                        if (_e411 > 0u) {
-                            let _e413 = local_12;
-                            let _e414 = (_e413 - 1u);
-                            local_38 = _e414;
-                            let _e415 = local_2;
-                            if (_e414 < _e415) {
+                        let _e411 = phi_607_;
+                        local_37 = _e411;
+                        let _e412 = local_14;
+                        if (_e412 > 0u) {
+                            let _e414 = local_12;
+                            let _e415 = (_e414 - 1u);
+                            local_38 = _e415;
+                            let _e416 = local_2;
+                            if (_e415 < _e416) {
                             } else {
                                 phi_1898_ = true;
                                 break;
                             }
-                            let _e417 = local_38;
-                            let _e420 = global_5.member[_e417];
-                            if (_e420 > 0u) {
-                                let _e422 = local_38;
-                                let _e423 = local_16;
-                                let _e426 = ((5u * (_e422 * _e423)) + 3u);
-                                local_39 = _e426;
-                                let _e427 = local_1;
-                                if (_e426 < _e427) {
+                            let _e418 = local_38;
+                            let _e421 = global_5.member[_e418];
+                            if (_e421 > 0u) {
+                                let _e423 = local_38;
+                                let _e424 = local_16;
+                                let _e427 = ((5u * (_e423 * _e424)) + 3u);
+                                local_39 = _e427;
+                                let _e428 = local_1;
+                                if (_e427 < _e428) {
                                 } else {
                                     phi_1898_ = true;
                                     break;
                                 }
-                                let _e429 = local_39;
-                                let _e432 = global_4.member[_e429];
-                                phi_653_ = bitcast<f32>(_e432);
+                                let _e430 = local_39;
+                                let _e433 = global_4.member[_e430];
+                                phi_653_ = bitcast<f32>(_e433);
                             } else {
                                 phi_653_ = _e134;
                             }
-                            let _e435 = phi_653_;
-                            local_40 = _e435;
-                            let _e438 = global_3.member.member_5;
-                            local_41 = _e438;
-                            let _e439 = bitcast<u32>(_e435);
-                            local_42 = _e439;
-                            let _e442 = local_18;
-                            let _e443 = bitcast<u32>(_e442);
-                            local_43 = _e443;
-                            local_44 = ((_e443 & 2139095040u) != 2139095040u);
-                            if ((_e439 & 2139095040u) != 2139095040u) {
-                                let _e448 = local_44;
-                                if _e448 {
-                                    let _e449 = local_40;
-                                    let _e450 = local_18;
-                                    let _e451 = (_e449 - _e450);
-                                    local_45 = _e451;
-                                    if (_e451 < 0f) {
-                                        let _e453 = local_45;
-                                        phi_857_ = -(_e453);
+                            let _e436 = phi_653_;
+                            local_40 = _e436;
+                            let _e439 = global_3.member.member_5;
+                            local_41 = _e439;
+                            let _e440 = bitcast<u32>(_e436);
+                            local_42 = _e440;
+                            let _e443 = local_18;
+                            let _e444 = bitcast<u32>(_e443);
+                            local_43 = _e444;
+                            local_44 = ((_e444 & 2139095040u) != 2139095040u);
+                            if ((_e440 & 2139095040u) != 2139095040u) {
+                                let _e449 = local_44;
+                                if _e449 {
+                                    let _e450 = local_40;
+                                    let _e451 = local_18;
+                                    let _e452 = (_e450 - _e451);
+                                    local_45 = _e452;
+                                    if (_e452 < 0f) {
+                                        let _e454 = local_45;
+                                        phi_857_ = -(_e454);
                                     } else {
-                                        phi_857_ = _e451;
+                                        phi_857_ = _e452;
                                     }
-                                    let _e456 = phi_857_;
-                                    let _e457 = local_40;
-                                    let _e458 = local_18;
-                                    let _e460 = local_40;
-                                    let _e461 = local_18;
-                                    let _e463 = local_41;
-                                    phi_865_ = (_e456 > (_e463 * select(_e461, _e460, (_e457 < _e458))));
+                                    let _e457 = phi_857_;
+                                    let _e458 = local_40;
+                                    let _e459 = local_18;
+                                    let _e461 = local_40;
+                                    let _e462 = local_18;
+                                    let _e464 = local_41;
+                                    phi_865_ = (_e457 > (_e464 * select(_e462, _e461, (_e458 < _e459))));
                                 } else {
                                     phi_865_ = true;
                                 }
-                                let _e467 = phi_865_;
-                                phi_867_ = _e467;
+                                let _e468 = phi_865_;
+                                phi_867_ = _e468;
                             } else {
-                                let _e446 = local_44;
-                                phi_867_ = (_e446 != false);
+                                let _e447 = local_44;
+                                phi_867_ = (_e447 != false);
                             }
-                            let _e469 = phi_867_;
-                            if _e469 {
-                                let _e470 = local_42;
-                                if (_e470 == 0u) {
+                            let _e470 = phi_867_;
+                            if _e470 {
+                                let _e471 = local_42;
+                                if (_e471 == 0u) {
                                     phi_877_ = false;
                                 } else {
-                                    let _e472 = local_42;
-                                    phi_877_ = (_e472 <= 2139095040u);
+                                    let _e473 = local_42;
+                                    phi_877_ = (_e473 <= 2139095040u);
                                 }
-                                let _e475 = phi_877_;
-                                if _e475 {
-                                    let _e479 = global_3.member.member.member_1;
-                                    let _e484 = global_3.member.member.member;
-                                    let _e489 = global_3.member.member.member_2;
-                                    local_46 = _e489;
-                                    let _e495 = global_3.member.member.member_3;
-                                    let _e496 = ((((2f * _e479) * _e484) / (_e489 - _e484)) * _e495);
-                                    local_47 = _e496;
-                                    if (_e496 == 0f) {
+                                let _e476 = phi_877_;
+                                if _e476 {
+                                    let _e480 = global_3.member.member.member_1;
+                                    let _e485 = global_3.member.member.member;
+                                    let _e490 = global_3.member.member.member_2;
+                                    local_46 = _e490;
+                                    let _e496 = global_3.member.member.member_3;
+                                    let _e497 = ((((2f * _e480) * _e485) / (_e490 - _e485)) * _e496);
+                                    local_47 = _e497;
+                                    if (_e497 == 0f) {
                                         phi_905_ = 0f;
                                     } else {
-                                        let _e498 = local_46;
-                                        let _e499 = local_40;
-                                        let _e502 = local_47;
-                                        phi_905_ = (_e502 * (1f - (_e498 / _e499)));
+                                        let _e499 = local_46;
+                                        let _e500 = local_40;
+                                        let _e503 = local_47;
+                                        phi_905_ = (_e503 * (1f - (_e499 / _e500)));
                                     }
-                                    let _e505 = phi_905_;
-                                    phi_906_ = _e505;
+                                    let _e506 = phi_905_;
+                                    phi_906_ = _e506;
                                 } else {
                                     phi_906_ = _e132;
                                 }
-                                let _e507 = phi_906_;
-                                local_48 = _e507;
-                                if (_e507 < 0f) {
-                                    let _e509 = local_48;
-                                    phi_912_ = -(_e509);
+                                let _e508 = phi_906_;
+                                local_48 = _e508;
+                                if (_e508 < 0f) {
+                                    let _e510 = local_48;
+                                    phi_912_ = -(_e510);
                                 } else {
-                                    phi_912_ = _e507;
+                                    phi_912_ = _e508;
                                 }
-                                let _e512 = phi_912_;
-                                local_49 = _e512;
-                                let _e513 = local_43;
-                                if (_e513 == 0u) {
+                                let _e513 = phi_912_;
+                                local_49 = _e513;
+                                let _e514 = local_43;
+                                if (_e514 == 0u) {
                                     phi_919_ = false;
                                 } else {
-                                    let _e515 = local_43;
-                                    phi_919_ = (_e515 <= 2139095040u);
+                                    let _e516 = local_43;
+                                    phi_919_ = (_e516 <= 2139095040u);
                                 }
-                                let _e518 = phi_919_;
-                                if _e518 {
-                                    let _e522 = global_3.member.member.member_1;
-                                    let _e527 = global_3.member.member.member;
-                                    let _e532 = global_3.member.member.member_2;
-                                    local_50 = _e532;
-                                    let _e538 = global_3.member.member.member_3;
-                                    let _e539 = ((((2f * _e522) * _e527) / (_e532 - _e527)) * _e538);
-                                    local_51 = _e539;
-                                    if (_e539 == 0f) {
+                                let _e519 = phi_919_;
+                                if _e519 {
+                                    let _e523 = global_3.member.member.member_1;
+                                    let _e528 = global_3.member.member.member;
+                                    let _e533 = global_3.member.member.member_2;
+                                    local_50 = _e533;
+                                    let _e539 = global_3.member.member.member_3;
+                                    let _e540 = ((((2f * _e523) * _e528) / (_e533 - _e528)) * _e539);
+                                    local_51 = _e540;
+                                    if (_e540 == 0f) {
                                         phi_947_ = 0f;
                                     } else {
-                                        let _e541 = local_50;
-                                        let _e542 = local_18;
-                                        let _e545 = local_51;
-                                        phi_947_ = (_e545 * (1f - (_e541 / _e542)));
+                                        let _e542 = local_50;
+                                        let _e543 = local_18;
+                                        let _e546 = local_51;
+                                        phi_947_ = (_e546 * (1f - (_e542 / _e543)));
                                     }
-                                    let _e548 = phi_947_;
-                                    phi_948_ = _e548;
+                                    let _e549 = phi_947_;
+                                    phi_948_ = _e549;
                                 } else {
                                     phi_948_ = _e132;
                                 }
-                                let _e550 = phi_948_;
-                                local_52 = _e550;
-                                if (_e550 < 0f) {
-                                    let _e552 = local_52;
-                                    phi_954_ = -(_e552);
+                                let _e551 = phi_948_;
+                                local_52 = _e551;
+                                if (_e551 < 0f) {
+                                    let _e553 = local_52;
+                                    phi_954_ = -(_e553);
                                 } else {
-                                    phi_954_ = _e550;
+                                    phi_954_ = _e551;
                                 }
-                                let _e555 = phi_954_;
-                                local_53 = _e555;
-                                let _e556 = local_49;
-                                if ((bitcast<u32>(_e556) & 2147483647u) > 2139095040u) {
-                                    phi_976_ = _e555;
+                                let _e556 = phi_954_;
+                                local_53 = _e556;
+                                let _e557 = local_49;
+                                if ((bitcast<u32>(_e557) & 2147483647u) > 2139095040u) {
+                                    phi_976_ = _e556;
                                 } else {
-                                    let _e560 = local_53;
-                                    if ((bitcast<u32>(_e560) & 2147483647u) > 2139095040u) {
+                                    let _e561 = local_53;
+                                    if ((bitcast<u32>(_e561) & 2147483647u) > 2139095040u) {
                                         phi_971_ = true;
                                     } else {
-                                        let _e564 = local_49;
-                                        let _e565 = local_53;
-                                        phi_971_ = (_e564 > _e565);
+                                        let _e565 = local_49;
+                                        let _e566 = local_53;
+                                        phi_971_ = (_e565 > _e566);
                                     }
-                                    let _e568 = phi_971_;
-                                    let _e569 = local_49;
-                                    let _e570 = local_53;
-                                    phi_976_ = select(_e570, _e569, _e568);
+                                    let _e569 = phi_971_;
+                                    let _e570 = local_49;
+                                    let _e571 = local_53;
+                                    phi_976_ = select(_e571, _e570, _e569);
                                 }
-                                let _e573 = phi_976_;
-                                let _e575 = ceil((_e573 * 0.5f));
-                                local_54 = _e575;
-                                if ((bitcast<u32>(_e575) & 2139095040u) != 2139095040u) {
-                                    let _e579 = local_7;
-                                    let _e581 = local_54;
-                                    let _e582 = (_e581 < f32(_e579));
-                                    local_55 = _e582;
-                                    if _e582 {
-                                        let _e583 = local_54;
-                                        if (_e583 < 0f) {
+                                let _e574 = phi_976_;
+                                let _e576 = ceil((_e574 * 0.5f));
+                                local_54 = _e576;
+                                if ((bitcast<u32>(_e576) & 2139095040u) != 2139095040u) {
+                                    let _e580 = local_7;
+                                    let _e582 = local_54;
+                                    let _e583 = (_e582 < f32(_e580));
+                                    local_55 = _e583;
+                                    if _e583 {
+                                        let _e584 = local_54;
+                                        if (_e584 < 0f) {
                                             phi_1003_ = 0i;
                                         } else {
-                                            let _e585 = local_54;
-                                            let _e587 = local_54;
-                                            let _e589 = local_54;
-                                            let _e593 = local_54;
-                                            let _e594 = local_54;
-                                            phi_1003_ = select(0i, select(select(i32(_e585), i32(-2147483648), (_e587 < -2147483600f)), 2147483647i, (_e589 > 2147483500f)), (_e593 == _e594));
+                                            let _e586 = local_54;
+                                            let _e588 = local_54;
+                                            let _e591 = local_54;
+                                            let _e595 = local_54;
+                                            let _e596 = local_54;
+                                            phi_1003_ = select(0i, select(select(i32(_e586), i32(-2147483648), !((_e588 >= -2147483600f))), 2147483647i, (_e591 > 2147483500f)), (_e595 == _e596));
                                         }
-                                        let _e598 = phi_1003_;
-                                        phi_1004_ = _e598;
+                                        let _e600 = phi_1003_;
+                                        phi_1004_ = _e600;
                                     } else {
                                         phi_1004_ = i32();
                                     }
-                                    let _e600 = phi_1004_;
-                                    let _e601 = local_55;
-                                    phi_1006_ = _e600;
-                                    phi_1007_ = select(true, false, _e601);
+                                    let _e602 = phi_1004_;
+                                    let _e603 = local_55;
+                                    phi_1006_ = _e602;
+                                    phi_1007_ = select(true, false, _e603);
                                 } else {
                                     phi_1006_ = i32();
                                     phi_1007_ = true;
                                 }
-                                let _e604 = phi_1006_;
-                                let _e606 = phi_1007_;
-                                let _e607 = local_7;
-                                phi_1012_ = select(_e604, _e607, _e606);
+                                let _e606 = phi_1006_;
+                                let _e608 = phi_1007_;
+                                let _e609 = local_7;
+                                phi_1012_ = select(_e606, _e609, _e608);
                             } else {
                                 phi_1012_ = -1i;
                             }
-                            let _e610 = phi_1012_;
-                            let _e611 = local_37;
+                            let _e612 = phi_1012_;
                             let _e613 = local_37;
-                            phi_1019_ = select(_e610, _e613, (_e610 < _e611));
+                            let _e615 = local_37;
+                            phi_1019_ = select(_e612, _e615, (_e612 < _e613));
                         } else {
-                            phi_1019_ = _e410;
+                            phi_1019_ = _e411;
                         }
-                        let _e616 = phi_1019_;
-                        local_56 = _e616;
-                        let _e617 = local_15;
-                        let _e619 = local_6;
-                        if ((_e617 + 1u) < _e619) {
-                            let _e621 = local_12;
-                            let _e622 = local_5;
-                            let _e623 = (_e621 + _e622);
-                            local_57 = _e623;
-                            let _e624 = local_2;
-                            if (_e623 < _e624) {
+                        let _e618 = phi_1019_;
+                        local_56 = _e618;
+                        let _e619 = local_15;
+                        let _e621 = local_6;
+                        if ((_e619 + 1u) < _e621) {
+                            let _e623 = local_12;
+                            let _e624 = local_5;
+                            let _e625 = (_e623 + _e624);
+                            local_57 = _e625;
+                            let _e626 = local_2;
+                            if (_e625 < _e626) {
                             } else {
                                 phi_1898_ = true;
                                 break;
                             }
-                            let _e626 = local_57;
-                            let _e629 = global_5.member[_e626];
-                            if (_e629 > 0u) {
-                                let _e631 = local_57;
-                                let _e632 = local_16;
-                                let _e635 = ((5u * (_e631 * _e632)) + 3u);
-                                local_58 = _e635;
-                                let _e636 = local_1;
-                                if (_e635 < _e636) {
+                            let _e628 = local_57;
+                            let _e631 = global_5.member[_e628];
+                            if (_e631 > 0u) {
+                                let _e633 = local_57;
+                                let _e634 = local_16;
+                                let _e637 = ((5u * (_e633 * _e634)) + 3u);
+                                local_58 = _e637;
+                                let _e638 = local_1;
+                                if (_e637 < _e638) {
                                 } else {
                                     phi_1898_ = true;
                                     break;
                                 }
-                                let _e638 = local_58;
-                                let _e641 = global_4.member[_e638];
-                                phi_1068_ = bitcast<f32>(_e641);
+                                let _e640 = local_58;
+                                let _e643 = global_4.member[_e640];
+                                phi_1068_ = bitcast<f32>(_e643);
                             } else {
                                 phi_1068_ = _e134;
                             }
-                            let _e644 = phi_1068_;
-                            local_59 = _e644;
-                            let _e647 = global_3.member.member_5;
-                            local_60 = _e647;
-                            let _e648 = local_18;
-                            let _e649 = bitcast<u32>(_e648);
-                            local_61 = _e649;
-                            let _e652 = bitcast<u32>(_e644);
-                            local_62 = _e652;
-                            local_63 = ((_e652 & 2139095040u) != 2139095040u);
-                            if ((_e649 & 2139095040u) != 2139095040u) {
-                                let _e657 = local_63;
-                                if _e657 {
-                                    let _e658 = local_18;
-                                    let _e659 = local_59;
-                                    let _e660 = (_e658 - _e659);
-                                    local_64 = _e660;
-                                    if (_e660 < 0f) {
-                                        let _e662 = local_64;
-                                        phi_1094_ = -(_e662);
+                            let _e646 = phi_1068_;
+                            local_59 = _e646;
+                            let _e649 = global_3.member.member_5;
+                            local_60 = _e649;
+                            let _e650 = local_18;
+                            let _e651 = bitcast<u32>(_e650);
+                            local_61 = _e651;
+                            let _e654 = bitcast<u32>(_e646);
+                            local_62 = _e654;
+                            local_63 = ((_e654 & 2139095040u) != 2139095040u);
+                            if ((_e651 & 2139095040u) != 2139095040u) {
+                                let _e659 = local_63;
+                                if _e659 {
+                                    let _e660 = local_18;
+                                    let _e661 = local_59;
+                                    let _e662 = (_e660 - _e661);
+                                    local_64 = _e662;
+                                    if (_e662 < 0f) {
+                                        let _e664 = local_64;
+                                        phi_1094_ = -(_e664);
                                     } else {
-                                        phi_1094_ = _e660;
+                                        phi_1094_ = _e662;
                                     }
-                                    let _e665 = phi_1094_;
-                                    let _e666 = local_18;
-                                    let _e667 = local_59;
-                                    let _e669 = local_18;
-                                    let _e670 = local_59;
-                                    let _e672 = local_60;
-                                    phi_1102_ = (_e665 > (_e672 * select(_e670, _e669, (_e666 < _e667))));
+                                    let _e667 = phi_1094_;
+                                    let _e668 = local_18;
+                                    let _e669 = local_59;
+                                    let _e671 = local_18;
+                                    let _e672 = local_59;
+                                    let _e674 = local_60;
+                                    phi_1102_ = (_e667 > (_e674 * select(_e672, _e671, (_e668 < _e669))));
                                 } else {
                                     phi_1102_ = true;
                                 }
-                                let _e676 = phi_1102_;
-                                phi_1104_ = _e676;
+                                let _e678 = phi_1102_;
+                                phi_1104_ = _e678;
                             } else {
-                                let _e655 = local_63;
-                                phi_1104_ = (_e655 != false);
+                                let _e657 = local_63;
+                                phi_1104_ = (_e657 != false);
                             }
-                            let _e678 = phi_1104_;
-                            if _e678 {
-                                let _e679 = local_61;
-                                if (_e679 == 0u) {
+                            let _e680 = phi_1104_;
+                            if _e680 {
+                                let _e681 = local_61;
+                                if (_e681 == 0u) {
                                     phi_1114_ = false;
                                 } else {
-                                    let _e681 = local_61;
-                                    phi_1114_ = (_e681 <= 2139095040u);
+                                    let _e683 = local_61;
+                                    phi_1114_ = (_e683 <= 2139095040u);
                                 }
-                                let _e684 = phi_1114_;
-                                if _e684 {
-                                    let _e688 = global_3.member.member.member_1;
-                                    let _e693 = global_3.member.member.member;
-                                    let _e698 = global_3.member.member.member_2;
-                                    local_65 = _e698;
-                                    let _e704 = global_3.member.member.member_3;
-                                    let _e705 = ((((2f * _e688) * _e693) / (_e698 - _e693)) * _e704);
-                                    local_66 = _e705;
-                                    if (_e705 == 0f) {
+                                let _e686 = phi_1114_;
+                                if _e686 {
+                                    let _e690 = global_3.member.member.member_1;
+                                    let _e695 = global_3.member.member.member;
+                                    let _e700 = global_3.member.member.member_2;
+                                    local_65 = _e700;
+                                    let _e706 = global_3.member.member.member_3;
+                                    let _e707 = ((((2f * _e690) * _e695) / (_e700 - _e695)) * _e706);
+                                    local_66 = _e707;
+                                    if (_e707 == 0f) {
                                         phi_1142_ = 0f;
                                     } else {
-                                        let _e707 = local_65;
-                                        let _e708 = local_18;
-                                        let _e711 = local_66;
-                                        phi_1142_ = (_e711 * (1f - (_e707 / _e708)));
+                                        let _e709 = local_65;
+                                        let _e710 = local_18;
+                                        let _e713 = local_66;
+                                        phi_1142_ = (_e713 * (1f - (_e709 / _e710)));
                                     }
-                                    let _e714 = phi_1142_;
-                                    phi_1143_ = _e714;
+                                    let _e716 = phi_1142_;
+                                    phi_1143_ = _e716;
                                 } else {
                                     phi_1143_ = _e132;
                                 }
-                                let _e716 = phi_1143_;
-                                local_67 = _e716;
-                                if (_e716 < 0f) {
-                                    let _e718 = local_67;
-                                    phi_1149_ = -(_e718);
+                                let _e718 = phi_1143_;
+                                local_67 = _e718;
+                                if (_e718 < 0f) {
+                                    let _e720 = local_67;
+                                    phi_1149_ = -(_e720);
                                 } else {
-                                    phi_1149_ = _e716;
+                                    phi_1149_ = _e718;
                                 }
-                                let _e721 = phi_1149_;
-                                local_68 = _e721;
-                                let _e722 = local_62;
-                                if (_e722 == 0u) {
+                                let _e723 = phi_1149_;
+                                local_68 = _e723;
+                                let _e724 = local_62;
+                                if (_e724 == 0u) {
                                     phi_1156_ = false;
                                 } else {
-                                    let _e724 = local_62;
-                                    phi_1156_ = (_e724 <= 2139095040u);
+                                    let _e726 = local_62;
+                                    phi_1156_ = (_e726 <= 2139095040u);
                                 }
-                                let _e727 = phi_1156_;
-                                if _e727 {
-                                    let _e731 = global_3.member.member.member_1;
-                                    let _e736 = global_3.member.member.member;
-                                    let _e741 = global_3.member.member.member_2;
-                                    local_69 = _e741;
-                                    let _e747 = global_3.member.member.member_3;
-                                    let _e748 = ((((2f * _e731) * _e736) / (_e741 - _e736)) * _e747);
-                                    local_70 = _e748;
-                                    if (_e748 == 0f) {
+                                let _e729 = phi_1156_;
+                                if _e729 {
+                                    let _e733 = global_3.member.member.member_1;
+                                    let _e738 = global_3.member.member.member;
+                                    let _e743 = global_3.member.member.member_2;
+                                    local_69 = _e743;
+                                    let _e749 = global_3.member.member.member_3;
+                                    let _e750 = ((((2f * _e733) * _e738) / (_e743 - _e738)) * _e749);
+                                    local_70 = _e750;
+                                    if (_e750 == 0f) {
                                         phi_1184_ = 0f;
                                     } else {
-                                        let _e750 = local_69;
-                                        let _e751 = local_59;
-                                        let _e754 = local_70;
-                                        phi_1184_ = (_e754 * (1f - (_e750 / _e751)));
+                                        let _e752 = local_69;
+                                        let _e753 = local_59;
+                                        let _e756 = local_70;
+                                        phi_1184_ = (_e756 * (1f - (_e752 / _e753)));
                                     }
-                                    let _e757 = phi_1184_;
-                                    phi_1185_ = _e757;
+                                    let _e759 = phi_1184_;
+                                    phi_1185_ = _e759;
                                 } else {
                                     phi_1185_ = _e132;
                                 }
-                                let _e759 = phi_1185_;
-                                local_71 = _e759;
-                                if (_e759 < 0f) {
-                                    let _e761 = local_71;
-                                    phi_1191_ = -(_e761);
+                                let _e761 = phi_1185_;
+                                local_71 = _e761;
+                                if (_e761 < 0f) {
+                                    let _e763 = local_71;
+                                    phi_1191_ = -(_e763);
                                 } else {
-                                    phi_1191_ = _e759;
+                                    phi_1191_ = _e761;
                                 }
-                                let _e764 = phi_1191_;
-                                local_72 = _e764;
-                                let _e765 = local_68;
-                                if ((bitcast<u32>(_e765) & 2147483647u) > 2139095040u) {
-                                    phi_1213_ = _e764;
+                                let _e766 = phi_1191_;
+                                local_72 = _e766;
+                                let _e767 = local_68;
+                                if ((bitcast<u32>(_e767) & 2147483647u) > 2139095040u) {
+                                    phi_1213_ = _e766;
                                 } else {
-                                    let _e769 = local_72;
-                                    if ((bitcast<u32>(_e769) & 2147483647u) > 2139095040u) {
+                                    let _e771 = local_72;
+                                    if ((bitcast<u32>(_e771) & 2147483647u) > 2139095040u) {
                                         phi_1208_ = true;
                                     } else {
-                                        let _e773 = local_68;
-                                        let _e774 = local_72;
-                                        phi_1208_ = (_e773 > _e774);
+                                        let _e775 = local_68;
+                                        let _e776 = local_72;
+                                        phi_1208_ = (_e775 > _e776);
                                     }
-                                    let _e777 = phi_1208_;
-                                    let _e778 = local_68;
-                                    let _e779 = local_72;
-                                    phi_1213_ = select(_e779, _e778, _e777);
+                                    let _e779 = phi_1208_;
+                                    let _e780 = local_68;
+                                    let _e781 = local_72;
+                                    phi_1213_ = select(_e781, _e780, _e779);
                                 }
-                                let _e782 = phi_1213_;
-                                let _e784 = ceil((_e782 * 0.5f));
-                                local_73 = _e784;
-                                if ((bitcast<u32>(_e784) & 2139095040u) != 2139095040u) {
-                                    let _e788 = local_7;
-                                    let _e790 = local_73;
-                                    let _e791 = (_e790 < f32(_e788));
-                                    local_74 = _e791;
-                                    if _e791 {
-                                        let _e792 = local_73;
-                                        if (_e792 < 0f) {
+                                let _e784 = phi_1213_;
+                                let _e786 = ceil((_e784 * 0.5f));
+                                local_73 = _e786;
+                                if ((bitcast<u32>(_e786) & 2139095040u) != 2139095040u) {
+                                    let _e790 = local_7;
+                                    let _e792 = local_73;
+                                    let _e793 = (_e792 < f32(_e790));
+                                    local_74 = _e793;
+                                    if _e793 {
+                                        let _e794 = local_73;
+                                        if (_e794 < 0f) {
                                             phi_1240_ = 0i;
                                         } else {
-                                            let _e794 = local_73;
                                             let _e796 = local_73;
                                             let _e798 = local_73;
-                                            let _e802 = local_73;
-                                            let _e803 = local_73;
-                                            phi_1240_ = select(0i, select(select(i32(_e794), i32(-2147483648), (_e796 < -2147483600f)), 2147483647i, (_e798 > 2147483500f)), (_e802 == _e803));
+                                            let _e801 = local_73;
+                                            let _e805 = local_73;
+                                            let _e806 = local_73;
+                                            phi_1240_ = select(0i, select(select(i32(_e796), i32(-2147483648), !((_e798 >= -2147483600f))), 2147483647i, (_e801 > 2147483500f)), (_e805 == _e806));
                                         }
-                                        let _e807 = phi_1240_;
-                                        phi_1241_ = _e807;
+                                        let _e810 = phi_1240_;
+                                        phi_1241_ = _e810;
                                     } else {
                                         phi_1241_ = i32();
                                     }
-                                    let _e809 = phi_1241_;
-                                    let _e810 = local_74;
-                                    phi_1243_ = _e809;
-                                    phi_1244_ = select(true, false, _e810);
+                                    let _e812 = phi_1241_;
+                                    let _e813 = local_74;
+                                    phi_1243_ = _e812;
+                                    phi_1244_ = select(true, false, _e813);
                                 } else {
                                     phi_1243_ = i32();
                                     phi_1244_ = true;
                                 }
-                                let _e813 = phi_1243_;
-                                let _e815 = phi_1244_;
-                                let _e816 = local_7;
-                                phi_1249_ = select(_e813, _e816, _e815);
+                                let _e816 = phi_1243_;
+                                let _e818 = phi_1244_;
+                                let _e819 = local_7;
+                                phi_1249_ = select(_e816, _e819, _e818);
                             } else {
                                 phi_1249_ = -1i;
                             }
-                            let _e819 = phi_1249_;
-                            let _e820 = local_56;
-                            let _e822 = local_56;
-                            phi_1434_ = select(_e819, _e822, (_e819 < _e820));
+                            let _e822 = phi_1249_;
+                            let _e823 = local_56;
+                            let _e825 = local_56;
+                            phi_1434_ = select(_e822, _e825, (_e822 < _e823));
                         } else {
-                            phi_1434_ = _e616;
+                            phi_1434_ = _e618;
                         }
-                        let _e825 = phi_1434_;
-                        local_75 = _e825;
-                        let _e826 = local_15;
-                        if (_e826 > 0u) {
-                            let _e828 = local_12;
-                            let _e829 = local_5;
-                            let _e830 = (_e828 - _e829);
-                            local_76 = _e830;
-                            let _e831 = local_2;
-                            if (_e830 < _e831) {
+                        let _e828 = phi_1434_;
+                        local_75 = _e828;
+                        let _e829 = local_15;
+                        if (_e829 > 0u) {
+                            let _e831 = local_12;
+                            let _e832 = local_5;
+                            let _e833 = (_e831 - _e832);
+                            local_76 = _e833;
+                            let _e834 = local_2;
+                            if (_e833 < _e834) {
                             } else {
                                 phi_1898_ = true;
                                 break;
                             }
-                            let _e833 = local_76;
-                            let _e836 = global_5.member[_e833];
-                            if (_e836 > 0u) {
-                                let _e838 = local_76;
-                                let _e839 = local_16;
-                                let _e842 = ((5u * (_e838 * _e839)) + 3u);
-                                local_77 = _e842;
-                                let _e843 = local_1;
-                                if (_e842 < _e843) {
+                            let _e836 = local_76;
+                            let _e839 = global_5.member[_e836];
+                            if (_e839 > 0u) {
+                                let _e841 = local_76;
+                                let _e842 = local_16;
+                                let _e845 = ((5u * (_e841 * _e842)) + 3u);
+                                local_77 = _e845;
+                                let _e846 = local_1;
+                                if (_e845 < _e846) {
                                 } else {
                                     phi_1898_ = true;
                                     break;
                                 }
-                                let _e845 = local_77;
-                                let _e848 = global_4.member[_e845];
-                                phi_1481_ = bitcast<f32>(_e848);
+                                let _e848 = local_77;
+                                let _e851 = global_4.member[_e848];
+                                phi_1481_ = bitcast<f32>(_e851);
                             } else {
                                 phi_1481_ = _e134;
                             }
-                            let _e851 = phi_1481_;
-                            local_78 = _e851;
-                            let _e854 = global_3.member.member_5;
-                            local_79 = _e854;
-                            let _e855 = bitcast<u32>(_e851);
-                            local_80 = _e855;
-                            let _e858 = local_18;
-                            let _e859 = bitcast<u32>(_e858);
-                            local_81 = _e859;
-                            local_82 = ((_e859 & 2139095040u) != 2139095040u);
-                            if ((_e855 & 2139095040u) != 2139095040u) {
-                                let _e864 = local_82;
-                                if _e864 {
-                                    let _e865 = local_78;
-                                    let _e866 = local_18;
-                                    let _e867 = (_e865 - _e866);
-                                    local_83 = _e867;
-                                    if (_e867 < 0f) {
-                                        let _e869 = local_83;
-                                        phi_1685_ = -(_e869);
+                            let _e854 = phi_1481_;
+                            local_78 = _e854;
+                            let _e857 = global_3.member.member_5;
+                            local_79 = _e857;
+                            let _e858 = bitcast<u32>(_e854);
+                            local_80 = _e858;
+                            let _e861 = local_18;
+                            let _e862 = bitcast<u32>(_e861);
+                            local_81 = _e862;
+                            local_82 = ((_e862 & 2139095040u) != 2139095040u);
+                            if ((_e858 & 2139095040u) != 2139095040u) {
+                                let _e867 = local_82;
+                                if _e867 {
+                                    let _e868 = local_78;
+                                    let _e869 = local_18;
+                                    let _e870 = (_e868 - _e869);
+                                    local_83 = _e870;
+                                    if (_e870 < 0f) {
+                                        let _e872 = local_83;
+                                        phi_1685_ = -(_e872);
                                     } else {
-                                        phi_1685_ = _e867;
+                                        phi_1685_ = _e870;
                                     }
-                                    let _e872 = phi_1685_;
-                                    let _e873 = local_78;
-                                    let _e874 = local_18;
+                                    let _e875 = phi_1685_;
                                     let _e876 = local_78;
                                     let _e877 = local_18;
-                                    let _e879 = local_79;
-                                    phi_1693_ = (_e872 > (_e879 * select(_e877, _e876, (_e873 < _e874))));
+                                    let _e879 = local_78;
+                                    let _e880 = local_18;
+                                    let _e882 = local_79;
+                                    phi_1693_ = (_e875 > (_e882 * select(_e880, _e879, (_e876 < _e877))));
                                 } else {
                                     phi_1693_ = true;
                                 }
-                                let _e883 = phi_1693_;
-                                phi_1695_ = _e883;
+                                let _e886 = phi_1693_;
+                                phi_1695_ = _e886;
                             } else {
-                                let _e862 = local_82;
-                                phi_1695_ = (_e862 != false);
+                                let _e865 = local_82;
+                                phi_1695_ = (_e865 != false);
                             }
-                            let _e885 = phi_1695_;
-                            if _e885 {
-                                let _e886 = local_80;
-                                if (_e886 == 0u) {
+                            let _e888 = phi_1695_;
+                            if _e888 {
+                                let _e889 = local_80;
+                                if (_e889 == 0u) {
                                     phi_1705_ = false;
                                 } else {
-                                    let _e888 = local_80;
-                                    phi_1705_ = (_e888 <= 2139095040u);
+                                    let _e891 = local_80;
+                                    phi_1705_ = (_e891 <= 2139095040u);
                                 }
-                                let _e891 = phi_1705_;
-                                if _e891 {
-                                    let _e895 = global_3.member.member.member_1;
-                                    let _e900 = global_3.member.member.member;
-                                    let _e905 = global_3.member.member.member_2;
-                                    local_84 = _e905;
-                                    let _e911 = global_3.member.member.member_3;
-                                    let _e912 = ((((2f * _e895) * _e900) / (_e905 - _e900)) * _e911);
-                                    local_85 = _e912;
-                                    if (_e912 == 0f) {
+                                let _e894 = phi_1705_;
+                                if _e894 {
+                                    let _e898 = global_3.member.member.member_1;
+                                    let _e903 = global_3.member.member.member;
+                                    let _e908 = global_3.member.member.member_2;
+                                    local_84 = _e908;
+                                    let _e914 = global_3.member.member.member_3;
+                                    let _e915 = ((((2f * _e898) * _e903) / (_e908 - _e903)) * _e914);
+                                    local_85 = _e915;
+                                    if (_e915 == 0f) {
                                         phi_1733_ = 0f;
                                     } else {
-                                        let _e914 = local_84;
-                                        let _e915 = local_78;
-                                        let _e918 = local_85;
-                                        phi_1733_ = (_e918 * (1f - (_e914 / _e915)));
+                                        let _e917 = local_84;
+                                        let _e918 = local_78;
+                                        let _e921 = local_85;
+                                        phi_1733_ = (_e921 * (1f - (_e917 / _e918)));
                                     }
-                                    let _e921 = phi_1733_;
-                                    phi_1734_ = _e921;
+                                    let _e924 = phi_1733_;
+                                    phi_1734_ = _e924;
                                 } else {
                                     phi_1734_ = _e132;
                                 }
-                                let _e923 = phi_1734_;
-                                local_86 = _e923;
-                                if (_e923 < 0f) {
-                                    let _e925 = local_86;
-                                    phi_1740_ = -(_e925);
+                                let _e926 = phi_1734_;
+                                local_86 = _e926;
+                                if (_e926 < 0f) {
+                                    let _e928 = local_86;
+                                    phi_1740_ = -(_e928);
                                 } else {
-                                    phi_1740_ = _e923;
+                                    phi_1740_ = _e926;
                                 }
-                                let _e928 = phi_1740_;
-                                local_87 = _e928;
-                                let _e929 = local_81;
-                                if (_e929 == 0u) {
+                                let _e931 = phi_1740_;
+                                local_87 = _e931;
+                                let _e932 = local_81;
+                                if (_e932 == 0u) {
                                     phi_1747_ = false;
                                 } else {
-                                    let _e931 = local_81;
-                                    phi_1747_ = (_e931 <= 2139095040u);
+                                    let _e934 = local_81;
+                                    phi_1747_ = (_e934 <= 2139095040u);
                                 }
-                                let _e934 = phi_1747_;
-                                if _e934 {
-                                    let _e938 = global_3.member.member.member_1;
-                                    let _e943 = global_3.member.member.member;
-                                    let _e948 = global_3.member.member.member_2;
-                                    local_88 = _e948;
-                                    let _e954 = global_3.member.member.member_3;
-                                    let _e955 = ((((2f * _e938) * _e943) / (_e948 - _e943)) * _e954);
-                                    local_89 = _e955;
-                                    if (_e955 == 0f) {
+                                let _e937 = phi_1747_;
+                                if _e937 {
+                                    let _e941 = global_3.member.member.member_1;
+                                    let _e946 = global_3.member.member.member;
+                                    let _e951 = global_3.member.member.member_2;
+                                    local_88 = _e951;
+                                    let _e957 = global_3.member.member.member_3;
+                                    let _e958 = ((((2f * _e941) * _e946) / (_e951 - _e946)) * _e957);
+                                    local_89 = _e958;
+                                    if (_e958 == 0f) {
                                         phi_1775_ = 0f;
                                     } else {
-                                        let _e957 = local_88;
-                                        let _e958 = local_18;
-                                        let _e961 = local_89;
-                                        phi_1775_ = (_e961 * (1f - (_e957 / _e958)));
+                                        let _e960 = local_88;
+                                        let _e961 = local_18;
+                                        let _e964 = local_89;
+                                        phi_1775_ = (_e964 * (1f - (_e960 / _e961)));
                                     }
-                                    let _e964 = phi_1775_;
-                                    phi_1776_ = _e964;
+                                    let _e967 = phi_1775_;
+                                    phi_1776_ = _e967;
                                 } else {
                                     phi_1776_ = _e132;
                                 }
-                                let _e966 = phi_1776_;
-                                local_90 = _e966;
-                                if (_e966 < 0f) {
-                                    let _e968 = local_90;
-                                    phi_1782_ = -(_e968);
+                                let _e969 = phi_1776_;
+                                local_90 = _e969;
+                                if (_e969 < 0f) {
+                                    let _e971 = local_90;
+                                    phi_1782_ = -(_e971);
                                 } else {
-                                    phi_1782_ = _e966;
+                                    phi_1782_ = _e969;
                                 }
-                                let _e971 = phi_1782_;
-                                local_91 = _e971;
-                                let _e972 = local_87;
-                                if ((bitcast<u32>(_e972) & 2147483647u) > 2139095040u) {
-                                    phi_1804_ = _e971;
+                                let _e974 = phi_1782_;
+                                local_91 = _e974;
+                                let _e975 = local_87;
+                                if ((bitcast<u32>(_e975) & 2147483647u) > 2139095040u) {
+                                    phi_1804_ = _e974;
                                 } else {
-                                    let _e976 = local_91;
-                                    if ((bitcast<u32>(_e976) & 2147483647u) > 2139095040u) {
+                                    let _e979 = local_91;
+                                    if ((bitcast<u32>(_e979) & 2147483647u) > 2139095040u) {
                                         phi_1799_ = true;
                                     } else {
-                                        let _e980 = local_87;
-                                        let _e981 = local_91;
-                                        phi_1799_ = (_e980 > _e981);
+                                        let _e983 = local_87;
+                                        let _e984 = local_91;
+                                        phi_1799_ = (_e983 > _e984);
                                     }
-                                    let _e984 = phi_1799_;
-                                    let _e985 = local_87;
-                                    let _e986 = local_91;
-                                    phi_1804_ = select(_e986, _e985, _e984);
+                                    let _e987 = phi_1799_;
+                                    let _e988 = local_87;
+                                    let _e989 = local_91;
+                                    phi_1804_ = select(_e989, _e988, _e987);
                                 }
-                                let _e989 = phi_1804_;
-                                let _e991 = ceil((_e989 * 0.5f));
-                                local_92 = _e991;
-                                if ((bitcast<u32>(_e991) & 2139095040u) != 2139095040u) {
-                                    let _e995 = local_7;
-                                    let _e997 = local_92;
-                                    let _e998 = (_e997 < f32(_e995));
-                                    local_93 = _e998;
-                                    if _e998 {
-                                        let _e999 = local_92;
-                                        if (_e999 < 0f) {
+                                let _e992 = phi_1804_;
+                                let _e994 = ceil((_e992 * 0.5f));
+                                local_92 = _e994;
+                                if ((bitcast<u32>(_e994) & 2139095040u) != 2139095040u) {
+                                    let _e998 = local_7;
+                                    let _e1000 = local_92;
+                                    let _e1001 = (_e1000 < f32(_e998));
+                                    local_93 = _e1001;
+                                    if _e1001 {
+                                        let _e1002 = local_92;
+                                        if (_e1002 < 0f) {
                                             phi_1831_ = 0i;
                                         } else {
-                                            let _e1001 = local_92;
-                                            let _e1003 = local_92;
-                                            let _e1005 = local_92;
+                                            let _e1004 = local_92;
+                                            let _e1006 = local_92;
                                             let _e1009 = local_92;
-                                            let _e1010 = local_92;
-                                            phi_1831_ = select(0i, select(select(i32(_e1001), i32(-2147483648), (_e1003 < -2147483600f)), 2147483647i, (_e1005 > 2147483500f)), (_e1009 == _e1010));
+                                            let _e1013 = local_92;
+                                            let _e1014 = local_92;
+                                            phi_1831_ = select(0i, select(select(i32(_e1004), i32(-2147483648), !((_e1006 >= -2147483600f))), 2147483647i, (_e1009 > 2147483500f)), (_e1013 == _e1014));
                                         }
-                                        let _e1014 = phi_1831_;
-                                        phi_1832_ = _e1014;
+                                        let _e1018 = phi_1831_;
+                                        phi_1832_ = _e1018;
                                     } else {
                                         phi_1832_ = i32();
                                     }
-                                    let _e1016 = phi_1832_;
-                                    let _e1017 = local_93;
-                                    phi_1834_ = _e1016;
-                                    phi_1835_ = select(true, false, _e1017);
+                                    let _e1020 = phi_1832_;
+                                    let _e1021 = local_93;
+                                    phi_1834_ = _e1020;
+                                    phi_1835_ = select(true, false, _e1021);
                                 } else {
                                     phi_1834_ = i32();
                                     phi_1835_ = true;
                                 }
-                                let _e1020 = phi_1834_;
-                                let _e1022 = phi_1835_;
-                                let _e1023 = local_7;
-                                phi_1840_ = select(_e1020, _e1023, _e1022);
+                                let _e1024 = phi_1834_;
+                                let _e1026 = phi_1835_;
+                                let _e1027 = local_7;
+                                phi_1840_ = select(_e1024, _e1027, _e1026);
                             } else {
                                 phi_1840_ = -1i;
                             }
-                            let _e1026 = phi_1840_;
-                            let _e1027 = local_75;
-                            let _e1029 = local_75;
-                            phi_1847_ = select(_e1026, _e1029, (_e1026 < _e1027));
+                            let _e1030 = phi_1840_;
+                            let _e1031 = local_75;
+                            let _e1033 = local_75;
+                            phi_1847_ = select(_e1030, _e1033, (_e1030 < _e1031));
                         } else {
-                            phi_1847_ = _e825;
+                            phi_1847_ = _e828;
                         }
-                        let _e1032 = phi_1847_;
-                        local_94 = bitcast<u32>((_e1032 + 1i));
-                        let _e1035 = local_12;
-                        let _e1036 = local_3;
-                        if (_e1035 < _e1036) {
+                        let _e1036 = phi_1847_;
+                        local_94 = bitcast<u32>((_e1036 + 1i));
+                        let _e1039 = local_12;
+                        let _e1040 = local_3;
+                        if (_e1039 < _e1040) {
                         } else {
                             phi_1898_ = true;
                             break;
                         }
-                        let _e1038 = local_12;
-                        let _e1041 = local_94;
-                        global_6.member[_e1038] = _e1041;
-                        let _e1042 = local_94;
-                        if (_e1042 > 0u) {
-                            let _e1044 = local_4;
-                            if (0u < _e1044) {
+                        let _e1042 = local_12;
+                        let _e1045 = local_94;
+                        global_6.member[_e1042] = _e1045;
+                        let _e1046 = local_94;
+                        if (_e1046 > 0u) {
+                            let _e1048 = local_4;
+                            if (0u < _e1048) {
                             } else {
                                 phi_1898_ = true;
                                 break;
                             }
-                            let _e1048 = local_94;
-                            let _e1049 = atomicMax((&global_7.member[0u]), _e1048);
+                            let _e1052 = local_94;
+                            let _e1053 = atomicMax((&global_7.member[0u]), _e1052);
                         }
                     }
                     storageBarrier();
                     workgroupBarrier();
-                    let _e1050 = local_10;
-                    let _e1051 = local_9;
-                    phi_127_ = (_e1050 + _e1051);
+                    let _e1054 = local_10;
+                    let _e1055 = local_9;
+                    phi_127_ = (_e1054 + _e1055);
                 } else {
                     phi_127_ = u32();
                 }
-                let _e1054 = phi_127_;
+                let _e1058 = phi_127_;
                 continue;
                 continuing {
-                    let _e1055 = local_11;
-                    phi_126_ = _e1054;
+                    let _e1059 = local_11;
+                    phi_126_ = _e1058;
                     phi_1898_ = false;
-                    break if !(_e1055);
+                    break if !(_e1059);
                 }
             }
-            let _e1058 = phi_1898_;
-            if _e1058 {
+            let _e1062 = phi_1898_;
+            if _e1062 {
                 break;
             }
             break;

@@ -1770,1538 +1770,1538 @@ fn function_() {
                                                                                 let _e1554 = (_e1553 - 1u);
                                                                                 local_133 = _e1554;
                                                                                 let _e1555 = floor(0f);
-                                                                                let _e1560 = select(select(u32(_e1555), 0u, (_e1555 < 0f)), 4294967295u, (_e1555 > 4294967000f));
-                                                                                local_134 = _e1560;
-                                                                                let _e1561 = (_e1560 >= _e1554);
-                                                                                local_135 = _e1561;
-                                                                                if _e1561 {
+                                                                                let _e1561 = select(select(u32(_e1555), 0u, !((_e1555 >= 0f))), 4294967295u, (_e1555 > 4294967000f));
+                                                                                local_134 = _e1561;
+                                                                                let _e1562 = (_e1561 >= _e1554);
+                                                                                local_135 = _e1562;
+                                                                                if _e1562 {
                                                                                     phi_1383_ = 0f;
                                                                                 } else {
-                                                                                    let _e1562 = local_134;
-                                                                                    phi_1383_ = -(f32(_e1562));
+                                                                                    let _e1563 = local_134;
+                                                                                    phi_1383_ = -(f32(_e1563));
                                                                                 }
-                                                                                let _e1566 = phi_1383_;
-                                                                                local_136 = _e1566;
-                                                                                let _e1567 = local_135;
-                                                                                let _e1568 = local_133;
-                                                                                let _e1569 = local_134;
-                                                                                local_307 = select(_e1569, _e1568, _e1567);
-                                                                                local_308 = select(1u, 2u, (_e1566 > 0f));
+                                                                                let _e1567 = phi_1383_;
+                                                                                local_136 = _e1567;
+                                                                                let _e1568 = local_135;
+                                                                                let _e1569 = local_133;
+                                                                                let _e1570 = local_134;
+                                                                                local_307 = select(_e1570, _e1569, _e1568);
+                                                                                local_308 = select(1u, 2u, (_e1567 > 0f));
                                                                                 phi_3041_ = 0u;
                                                                                 phi_3042_ = _e1531;
                                                                                 loop {
-                                                                                    let _e1574 = phi_3041_;
-                                                                                    let _e1576 = phi_3042_;
-                                                                                    local_283 = _e1574;
-                                                                                    local_284 = _e1576;
-                                                                                    local_329 = _e1576;
-                                                                                    let _e1577 = local_283;
-                                                                                    let _e1578 = local_307;
-                                                                                    let _e1579 = (_e1577 < _e1578);
-                                                                                    local_285 = _e1579;
-                                                                                    if _e1579 {
-                                                                                        let _e1580 = local_284;
-                                                                                        local_286 = _e1580.member_1;
-                                                                                        let _e1582 = local_284;
-                                                                                        local_287 = _e1582.member_2;
-                                                                                        let _e1585 = local_284;
-                                                                                        let _e1588 = local_284;
-                                                                                        local_288 = type_22((_e1585.member + (_e1580.member_1 * _e1582.member_2)), _e1588.member_1, _e1588.member_2, _e1588.member_3, _e1588.member_4);
-                                                                                        if (_e1580.member_1 > 1u) {
-                                                                                            let _e1596 = local_286;
-                                                                                            phi_3059_ = (_e1596 >> bitcast<u32>(1i));
+                                                                                    let _e1575 = phi_3041_;
+                                                                                    let _e1577 = phi_3042_;
+                                                                                    local_283 = _e1575;
+                                                                                    local_284 = _e1577;
+                                                                                    local_329 = _e1577;
+                                                                                    let _e1578 = local_283;
+                                                                                    let _e1579 = local_307;
+                                                                                    let _e1580 = (_e1578 < _e1579);
+                                                                                    local_285 = _e1580;
+                                                                                    if _e1580 {
+                                                                                        let _e1581 = local_284;
+                                                                                        local_286 = _e1581.member_1;
+                                                                                        let _e1583 = local_284;
+                                                                                        local_287 = _e1583.member_2;
+                                                                                        let _e1586 = local_284;
+                                                                                        let _e1589 = local_284;
+                                                                                        local_288 = type_22((_e1586.member + (_e1581.member_1 * _e1583.member_2)), _e1589.member_1, _e1589.member_2, _e1589.member_3, _e1589.member_4);
+                                                                                        if (_e1581.member_1 > 1u) {
+                                                                                            let _e1597 = local_286;
+                                                                                            phi_3059_ = (_e1597 >> bitcast<u32>(1i));
                                                                                         } else {
                                                                                             phi_3059_ = 1u;
                                                                                         }
-                                                                                        let _e1600 = phi_3059_;
-                                                                                        let _e1601 = local_288;
-                                                                                        local_289 = type_22(_e1601.member, _e1600, _e1601.member_2, _e1601.member_3, _e1601.member_4);
-                                                                                        let _e1608 = local_287;
-                                                                                        if (_e1608 > 1u) {
-                                                                                            let _e1610 = local_287;
-                                                                                            phi_3068_ = (_e1610 >> bitcast<u32>(1i));
+                                                                                        let _e1601 = phi_3059_;
+                                                                                        let _e1602 = local_288;
+                                                                                        local_289 = type_22(_e1602.member, _e1601, _e1602.member_2, _e1602.member_3, _e1602.member_4);
+                                                                                        let _e1609 = local_287;
+                                                                                        if (_e1609 > 1u) {
+                                                                                            let _e1611 = local_287;
+                                                                                            phi_3068_ = (_e1611 >> bitcast<u32>(1i));
                                                                                         } else {
                                                                                             phi_3068_ = 1u;
                                                                                         }
-                                                                                        let _e1614 = phi_3068_;
-                                                                                        let _e1615 = local_289;
-                                                                                        let _e1622 = local_283;
-                                                                                        phi_3073_ = (_e1622 + 1u);
-                                                                                        phi_3074_ = type_22(_e1615.member, _e1615.member_1, _e1614, _e1615.member_3, _e1615.member_4);
+                                                                                        let _e1615 = phi_3068_;
+                                                                                        let _e1616 = local_289;
+                                                                                        let _e1623 = local_283;
+                                                                                        phi_3073_ = (_e1623 + 1u);
+                                                                                        phi_3074_ = type_22(_e1616.member, _e1616.member_1, _e1615, _e1616.member_3, _e1616.member_4);
                                                                                     } else {
                                                                                         phi_3073_ = u32();
                                                                                         phi_3074_ = type_22();
                                                                                     }
-                                                                                    let _e1625 = phi_3073_;
-                                                                                    let _e1627 = phi_3074_;
+                                                                                    let _e1626 = phi_3073_;
+                                                                                    let _e1628 = phi_3074_;
                                                                                     continue;
                                                                                     continuing {
-                                                                                        let _e1628 = local_285;
-                                                                                        phi_3041_ = _e1625;
-                                                                                        phi_3042_ = _e1627;
-                                                                                        break if !(_e1628);
+                                                                                        let _e1629 = local_285;
+                                                                                        phi_3041_ = _e1626;
+                                                                                        phi_3042_ = _e1628;
+                                                                                        break if !(_e1629);
                                                                                     }
                                                                                 }
-                                                                                let _e1630 = local_307;
-                                                                                let _e1631 = local_308;
-                                                                                local_137 = ((_e1630 + _e1631) - 1u);
+                                                                                let _e1631 = local_307;
+                                                                                let _e1632 = local_308;
+                                                                                local_137 = ((_e1631 + _e1632) - 1u);
                                                                                 phi_3080_ = 0u;
                                                                                 phi_3081_ = _e1531;
                                                                                 loop {
-                                                                                    let _e1635 = phi_3080_;
-                                                                                    let _e1637 = phi_3081_;
-                                                                                    local_290 = _e1635;
-                                                                                    local_291 = _e1637;
-                                                                                    local_330 = _e1637;
-                                                                                    let _e1638 = local_290;
-                                                                                    let _e1639 = local_137;
-                                                                                    let _e1640 = (_e1638 < _e1639);
-                                                                                    local_292 = _e1640;
-                                                                                    if _e1640 {
-                                                                                        let _e1641 = local_291;
-                                                                                        local_293 = _e1641.member_1;
-                                                                                        let _e1643 = local_291;
-                                                                                        local_294 = _e1643.member_2;
-                                                                                        let _e1646 = local_291;
-                                                                                        let _e1649 = local_291;
-                                                                                        local_295 = type_22((_e1646.member + (_e1641.member_1 * _e1643.member_2)), _e1649.member_1, _e1649.member_2, _e1649.member_3, _e1649.member_4);
-                                                                                        if (_e1641.member_1 > 1u) {
-                                                                                            let _e1657 = local_293;
-                                                                                            phi_3098_ = (_e1657 >> bitcast<u32>(1i));
+                                                                                    let _e1636 = phi_3080_;
+                                                                                    let _e1638 = phi_3081_;
+                                                                                    local_290 = _e1636;
+                                                                                    local_291 = _e1638;
+                                                                                    local_330 = _e1638;
+                                                                                    let _e1639 = local_290;
+                                                                                    let _e1640 = local_137;
+                                                                                    let _e1641 = (_e1639 < _e1640);
+                                                                                    local_292 = _e1641;
+                                                                                    if _e1641 {
+                                                                                        let _e1642 = local_291;
+                                                                                        local_293 = _e1642.member_1;
+                                                                                        let _e1644 = local_291;
+                                                                                        local_294 = _e1644.member_2;
+                                                                                        let _e1647 = local_291;
+                                                                                        let _e1650 = local_291;
+                                                                                        local_295 = type_22((_e1647.member + (_e1642.member_1 * _e1644.member_2)), _e1650.member_1, _e1650.member_2, _e1650.member_3, _e1650.member_4);
+                                                                                        if (_e1642.member_1 > 1u) {
+                                                                                            let _e1658 = local_293;
+                                                                                            phi_3098_ = (_e1658 >> bitcast<u32>(1i));
                                                                                         } else {
                                                                                             phi_3098_ = 1u;
                                                                                         }
-                                                                                        let _e1661 = phi_3098_;
-                                                                                        let _e1662 = local_295;
-                                                                                        local_296 = type_22(_e1662.member, _e1661, _e1662.member_2, _e1662.member_3, _e1662.member_4);
-                                                                                        let _e1669 = local_294;
-                                                                                        if (_e1669 > 1u) {
-                                                                                            let _e1671 = local_294;
-                                                                                            phi_3107_ = (_e1671 >> bitcast<u32>(1i));
+                                                                                        let _e1662 = phi_3098_;
+                                                                                        let _e1663 = local_295;
+                                                                                        local_296 = type_22(_e1663.member, _e1662, _e1663.member_2, _e1663.member_3, _e1663.member_4);
+                                                                                        let _e1670 = local_294;
+                                                                                        if (_e1670 > 1u) {
+                                                                                            let _e1672 = local_294;
+                                                                                            phi_3107_ = (_e1672 >> bitcast<u32>(1i));
                                                                                         } else {
                                                                                             phi_3107_ = 1u;
                                                                                         }
-                                                                                        let _e1675 = phi_3107_;
-                                                                                        let _e1676 = local_296;
-                                                                                        let _e1683 = local_290;
-                                                                                        phi_3112_ = (_e1683 + 1u);
-                                                                                        phi_3113_ = type_22(_e1676.member, _e1676.member_1, _e1675, _e1676.member_3, _e1676.member_4);
+                                                                                        let _e1676 = phi_3107_;
+                                                                                        let _e1677 = local_296;
+                                                                                        let _e1684 = local_290;
+                                                                                        phi_3112_ = (_e1684 + 1u);
+                                                                                        phi_3113_ = type_22(_e1677.member, _e1677.member_1, _e1676, _e1677.member_3, _e1677.member_4);
                                                                                     } else {
                                                                                         phi_3112_ = u32();
                                                                                         phi_3113_ = type_22();
                                                                                     }
-                                                                                    let _e1686 = phi_3112_;
-                                                                                    let _e1688 = phi_3113_;
+                                                                                    let _e1687 = phi_3112_;
+                                                                                    let _e1689 = phi_3113_;
                                                                                     continue;
                                                                                     continuing {
-                                                                                        let _e1689 = local_292;
-                                                                                        phi_3080_ = _e1686;
-                                                                                        phi_3081_ = _e1688;
-                                                                                        break if !(_e1689);
+                                                                                        let _e1690 = local_292;
+                                                                                        phi_3080_ = _e1687;
+                                                                                        phi_3081_ = _e1689;
+                                                                                        break if !(_e1690);
                                                                                     }
                                                                                 }
-                                                                                let _e1691 = local_132;
-                                                                                local_138 = ((_e1691 & 1u) != 0u);
+                                                                                let _e1692 = local_132;
+                                                                                local_138 = ((_e1692 & 1u) != 0u);
                                                                                 phi_3257_ = _e1452;
                                                                                 phi_1402_ = 0u;
                                                                                 phi_1405_ = type_5(0f, 0f, 0f, 0f);
                                                                                 loop {
-                                                                                    let _e1695 = phi_3257_;
-                                                                                    let _e1697 = phi_1402_;
-                                                                                    let _e1699 = phi_1405_;
-                                                                                    local_139 = _e1697;
-                                                                                    local_140 = _e1699;
-                                                                                    local_333 = _e1699;
-                                                                                    let _e1700 = local_139;
-                                                                                    let _e1701 = (_e1700 < 1u);
-                                                                                    local_141 = _e1701;
-                                                                                    if _e1701 {
-                                                                                        phi_3256_ = _e1695;
+                                                                                    let _e1696 = phi_3257_;
+                                                                                    let _e1698 = phi_1402_;
+                                                                                    let _e1700 = phi_1405_;
+                                                                                    local_139 = _e1698;
+                                                                                    local_140 = _e1700;
+                                                                                    local_333 = _e1700;
+                                                                                    let _e1701 = local_139;
+                                                                                    let _e1702 = (_e1701 < 1u);
+                                                                                    local_141 = _e1702;
+                                                                                    if _e1702 {
+                                                                                        phi_3256_ = _e1696;
                                                                                         phi_1419_ = 0u;
-                                                                                        phi_1422_ = _e1699;
+                                                                                        phi_1422_ = _e1700;
                                                                                         loop {
-                                                                                            let _e1703 = phi_3256_;
-                                                                                            let _e1705 = phi_1419_;
-                                                                                            let _e1707 = phi_1422_;
-                                                                                            local_142 = _e1705;
-                                                                                            local_332 = _e1707;
-                                                                                            let _e1708 = local_142;
-                                                                                            let _e1709 = (_e1708 < 1u);
-                                                                                            local_143 = _e1709;
-                                                                                            if _e1709 {
+                                                                                            let _e1704 = phi_3256_;
+                                                                                            let _e1706 = phi_1419_;
+                                                                                            let _e1708 = phi_1422_;
+                                                                                            local_142 = _e1706;
+                                                                                            local_332 = _e1708;
+                                                                                            let _e1709 = local_142;
+                                                                                            let _e1710 = (_e1709 < 1u);
+                                                                                            local_143 = _e1710;
+                                                                                            if _e1710 {
                                                                                                 phi_1448_ = 0u;
-                                                                                                phi_1451_ = _e1707;
+                                                                                                phi_1451_ = _e1708;
                                                                                                 loop {
-                                                                                                    let _e1711 = phi_1448_;
-                                                                                                    let _e1713 = phi_1451_;
-                                                                                                    local_144 = _e1711;
-                                                                                                    local_145 = _e1713;
-                                                                                                    local_331 = _e1713;
-                                                                                                    let _e1714 = local_144;
-                                                                                                    let _e1715 = local_308;
-                                                                                                    let _e1716 = (_e1714 < _e1715);
-                                                                                                    local_146 = _e1716;
-                                                                                                    if _e1716 {
-                                                                                                        let _e1717 = local_144;
-                                                                                                        if (_e1717 == 0u) {
-                                                                                                            let _e1719 = local_136;
-                                                                                                            let _e3065 = local_329;
-                                                                                                            phi_1464_ = _e3065;
-                                                                                                            phi_1465_ = (1f - _e1719);
+                                                                                                    let _e1712 = phi_1448_;
+                                                                                                    let _e1714 = phi_1451_;
+                                                                                                    local_144 = _e1712;
+                                                                                                    local_145 = _e1714;
+                                                                                                    local_331 = _e1714;
+                                                                                                    let _e1715 = local_144;
+                                                                                                    let _e1716 = local_308;
+                                                                                                    let _e1717 = (_e1715 < _e1716);
+                                                                                                    local_146 = _e1717;
+                                                                                                    if _e1717 {
+                                                                                                        let _e1718 = local_144;
+                                                                                                        if (_e1718 == 0u) {
+                                                                                                            let _e1720 = local_136;
+                                                                                                            let _e3068 = local_329;
+                                                                                                            phi_1464_ = _e3068;
+                                                                                                            phi_1465_ = (1f - _e1720);
                                                                                                         } else {
-                                                                                                            let _e3067 = local_330;
-                                                                                                            phi_1464_ = _e3067;
-                                                                                                            phi_1465_ = _e1566;
+                                                                                                            let _e3070 = local_330;
+                                                                                                            phi_1464_ = _e3070;
+                                                                                                            phi_1465_ = _e1567;
                                                                                                         }
-                                                                                                        let _e1722 = phi_1464_;
-                                                                                                        let _e1724 = phi_1465_;
-                                                                                                        local_147 = _e1722;
-                                                                                                        local_148 = _e1724;
-                                                                                                        let _e1725 = local_138;
-                                                                                                        let _e1726 = select(0.5f, 0f, _e1725);
-                                                                                                        local_149 = _e1722.member_1;
-                                                                                                        let _e1729 = local_306;
-                                                                                                        let _e1731 = ((_e1729 * f32(_e1722.member_1)) - _e1726);
-                                                                                                        local_150 = _e1731;
-                                                                                                        local_151 = _e1722.member_2;
-                                                                                                        let _e1734 = local_305;
-                                                                                                        let _e1736 = ((_e1734 * f32(_e1722.member_2)) - _e1726);
-                                                                                                        local_152 = _e1736;
-                                                                                                        local_153 = floor(_e1731);
-                                                                                                        local_154 = floor(_e1736);
-                                                                                                        let _e1739 = local_138;
-                                                                                                        if _e1739 {
+                                                                                                        let _e1723 = phi_1464_;
+                                                                                                        let _e1725 = phi_1465_;
+                                                                                                        local_147 = _e1723;
+                                                                                                        local_148 = _e1725;
+                                                                                                        let _e1726 = local_138;
+                                                                                                        let _e1727 = select(0.5f, 0f, _e1726);
+                                                                                                        local_149 = _e1723.member_1;
+                                                                                                        let _e1730 = local_306;
+                                                                                                        let _e1732 = ((_e1730 * f32(_e1723.member_1)) - _e1727);
+                                                                                                        local_150 = _e1732;
+                                                                                                        local_151 = _e1723.member_2;
+                                                                                                        let _e1735 = local_305;
+                                                                                                        let _e1737 = ((_e1735 * f32(_e1723.member_2)) - _e1727);
+                                                                                                        local_152 = _e1737;
+                                                                                                        local_153 = floor(_e1732);
+                                                                                                        local_154 = floor(_e1737);
+                                                                                                        let _e1740 = local_138;
+                                                                                                        if _e1740 {
                                                                                                             phi_1485_ = 0f;
                                                                                                             phi_1486_ = 0f;
                                                                                                         } else {
-                                                                                                            let _e1740 = local_150;
-                                                                                                            let _e1741 = local_153;
-                                                                                                            let _e1743 = local_152;
-                                                                                                            let _e1744 = local_154;
-                                                                                                            phi_1485_ = (_e1743 - _e1744);
-                                                                                                            phi_1486_ = (_e1740 - _e1741);
+                                                                                                            let _e1741 = local_150;
+                                                                                                            let _e1742 = local_153;
+                                                                                                            let _e1744 = local_152;
+                                                                                                            let _e1745 = local_154;
+                                                                                                            phi_1485_ = (_e1744 - _e1745);
+                                                                                                            phi_1486_ = (_e1741 - _e1742);
                                                                                                         }
-                                                                                                        let _e1747 = phi_1485_;
-                                                                                                        let _e1749 = phi_1486_;
-                                                                                                        local_155 = _e1747;
-                                                                                                        local_156 = _e1749;
-                                                                                                        let _e1750 = local_153;
-                                                                                                        let _e1752 = local_153;
-                                                                                                        let _e1754 = local_153;
-                                                                                                        let _e1758 = local_153;
-                                                                                                        let _e1759 = local_153;
-                                                                                                        let _e1761 = select(0i, select(select(i32(_e1750), i32(-2147483648), (_e1752 < -2147483600f)), 2147483647i, (_e1754 > 2147483500f)), (_e1758 == _e1759));
-                                                                                                        local_157 = _e1761;
-                                                                                                        let _e1762 = local_154;
+                                                                                                        let _e1748 = phi_1485_;
+                                                                                                        let _e1750 = phi_1486_;
+                                                                                                        local_155 = _e1748;
+                                                                                                        local_156 = _e1750;
+                                                                                                        let _e1751 = local_153;
+                                                                                                        let _e1753 = local_153;
+                                                                                                        let _e1756 = local_153;
+                                                                                                        let _e1760 = local_153;
+                                                                                                        let _e1761 = local_153;
+                                                                                                        let _e1763 = select(0i, select(select(i32(_e1751), i32(-2147483648), !((_e1753 >= -2147483600f))), 2147483647i, (_e1756 > 2147483500f)), (_e1760 == _e1761));
+                                                                                                        local_157 = _e1763;
                                                                                                         let _e1764 = local_154;
                                                                                                         let _e1766 = local_154;
-                                                                                                        let _e1770 = local_154;
-                                                                                                        let _e1771 = local_154;
-                                                                                                        let _e1773 = select(0i, select(select(i32(_e1762), i32(-2147483648), (_e1764 < -2147483600f)), 2147483647i, (_e1766 > 2147483500f)), (_e1770 == _e1771));
-                                                                                                        local_158 = _e1773;
-                                                                                                        let _e1774 = local_147;
-                                                                                                        local_159 = _e1774.member_3;
-                                                                                                        let _e1776 = local_149;
-                                                                                                        local_160 = bitcast<i32>(_e1776);
-                                                                                                        let _e1778 = (_e1774.member_3 == 1u);
-                                                                                                        local_161 = _e1778;
-                                                                                                        if _e1778 {
-                                                                                                            let _e1832 = local_157;
-                                                                                                            if (_e1832 < 0i) {
+                                                                                                        let _e1769 = local_154;
+                                                                                                        let _e1773 = local_154;
+                                                                                                        let _e1774 = local_154;
+                                                                                                        let _e1776 = select(0i, select(select(i32(_e1764), i32(-2147483648), !((_e1766 >= -2147483600f))), 2147483647i, (_e1769 > 2147483500f)), (_e1773 == _e1774));
+                                                                                                        local_158 = _e1776;
+                                                                                                        let _e1777 = local_147;
+                                                                                                        local_159 = _e1777.member_3;
+                                                                                                        let _e1779 = local_149;
+                                                                                                        local_160 = bitcast<i32>(_e1779);
+                                                                                                        let _e1781 = (_e1777.member_3 == 1u);
+                                                                                                        local_161 = _e1781;
+                                                                                                        if _e1781 {
+                                                                                                            let _e1835 = local_157;
+                                                                                                            if (_e1835 < 0i) {
                                                                                                                 phi_1522_ = 0i;
                                                                                                             } else {
-                                                                                                                let _e1834 = local_157;
-                                                                                                                let _e1835 = local_160;
-                                                                                                                if (_e1834 >= _e1835) {
-                                                                                                                    let _e1837 = local_160;
-                                                                                                                    phi_1521_ = (_e1837 - 1i);
+                                                                                                                let _e1837 = local_157;
+                                                                                                                let _e1838 = local_160;
+                                                                                                                if (_e1837 >= _e1838) {
+                                                                                                                    let _e1840 = local_160;
+                                                                                                                    phi_1521_ = (_e1840 - 1i);
                                                                                                                 } else {
-                                                                                                                    phi_1521_ = _e1761;
+                                                                                                                    phi_1521_ = _e1763;
                                                                                                                 }
-                                                                                                                let _e1840 = phi_1521_;
-                                                                                                                phi_1522_ = _e1840;
+                                                                                                                let _e1843 = phi_1521_;
+                                                                                                                phi_1522_ = _e1843;
                                                                                                             }
-                                                                                                            let _e1842 = phi_1522_;
-                                                                                                            phi_1582_ = _e1842;
+                                                                                                            let _e1845 = phi_1522_;
+                                                                                                            phi_1582_ = _e1845;
                                                                                                         } else {
-                                                                                                            let _e1779 = local_159;
-                                                                                                            if (_e1779 == 2u) {
-                                                                                                                let _e1801 = local_160;
-                                                                                                                let _e1802 = (2i * _e1801);
-                                                                                                                local_162 = _e1802;
-                                                                                                                let _e1803 = (_e1802 == 0i);
-                                                                                                                local_163 = _e1803;
-                                                                                                                if _e1803 {
+                                                                                                            let _e1782 = local_159;
+                                                                                                            if (_e1782 == 2u) {
+                                                                                                                let _e1804 = local_160;
+                                                                                                                let _e1805 = (2i * _e1804);
+                                                                                                                local_162 = _e1805;
+                                                                                                                let _e1806 = (_e1805 == 0i);
+                                                                                                                local_163 = _e1806;
+                                                                                                                if _e1806 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1804 = local_162;
-                                                                                                                let _e1805 = (_e1804 == -1i);
-                                                                                                                local_164 = _e1805;
-                                                                                                                let _e1806 = local_157;
-                                                                                                                if (_e1805 && (_e1806 == i32(-2147483648))) {
-                                                                                                                    phi_3210_ = true;
-                                                                                                                    break;
-                                                                                                                }
+                                                                                                                let _e1807 = local_162;
+                                                                                                                let _e1808 = (_e1807 == -1i);
+                                                                                                                local_164 = _e1808;
                                                                                                                 let _e1809 = local_157;
-                                                                                                                let _e1810 = local_162;
-                                                                                                                let _e1812 = local_162;
-                                                                                                                local_165 = ((_e1809 % _e1810) + _e1812);
-                                                                                                                let _e1814 = local_163;
-                                                                                                                if _e1814 {
+                                                                                                                if (_e1808 && (_e1809 == i32(-2147483648))) {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1815 = local_165;
-                                                                                                                let _e1817 = local_164;
-                                                                                                                if (_e1817 && (_e1815 == i32(-2147483648))) {
+                                                                                                                let _e1812 = local_157;
+                                                                                                                let _e1813 = local_162;
+                                                                                                                let _e1815 = local_162;
+                                                                                                                local_165 = ((_e1812 % _e1813) + _e1815);
+                                                                                                                let _e1817 = local_163;
+                                                                                                                if _e1817 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1819 = local_165;
-                                                                                                                let _e1820 = local_162;
-                                                                                                                let _e1821 = (_e1819 % _e1820);
-                                                                                                                local_166 = _e1821;
-                                                                                                                let _e1822 = local_160;
-                                                                                                                if (_e1821 < _e1822) {
-                                                                                                                    phi_1557_ = _e1821;
+                                                                                                                let _e1818 = local_165;
+                                                                                                                let _e1820 = local_164;
+                                                                                                                if (_e1820 && (_e1818 == i32(-2147483648))) {
+                                                                                                                    phi_3210_ = true;
+                                                                                                                    break;
+                                                                                                                }
+                                                                                                                let _e1822 = local_165;
+                                                                                                                let _e1823 = local_162;
+                                                                                                                let _e1824 = (_e1822 % _e1823);
+                                                                                                                local_166 = _e1824;
+                                                                                                                let _e1825 = local_160;
+                                                                                                                if (_e1824 < _e1825) {
+                                                                                                                    phi_1557_ = _e1824;
                                                                                                                 } else {
-                                                                                                                    let _e1824 = local_162;
-                                                                                                                    let _e1826 = local_166;
-                                                                                                                    phi_1557_ = ((_e1824 - 1i) - _e1826);
+                                                                                                                    let _e1827 = local_162;
+                                                                                                                    let _e1829 = local_166;
+                                                                                                                    phi_1557_ = ((_e1827 - 1i) - _e1829);
                                                                                                                 }
-                                                                                                                let _e1829 = phi_1557_;
-                                                                                                                phi_1581_ = _e1829;
+                                                                                                                let _e1832 = phi_1557_;
+                                                                                                                phi_1581_ = _e1832;
                                                                                                             } else {
-                                                                                                                let _e1781 = local_160;
-                                                                                                                let _e1782 = (_e1781 == 0i);
-                                                                                                                local_167 = _e1782;
-                                                                                                                if _e1782 {
+                                                                                                                let _e1784 = local_160;
+                                                                                                                let _e1785 = (_e1784 == 0i);
+                                                                                                                local_167 = _e1785;
+                                                                                                                if _e1785 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1783 = local_160;
-                                                                                                                let _e1784 = (_e1783 == -1i);
-                                                                                                                local_168 = _e1784;
-                                                                                                                let _e1785 = local_157;
-                                                                                                                if (_e1784 && (_e1785 == i32(-2147483648))) {
-                                                                                                                    phi_3210_ = true;
-                                                                                                                    break;
-                                                                                                                }
+                                                                                                                let _e1786 = local_160;
+                                                                                                                let _e1787 = (_e1786 == -1i);
+                                                                                                                local_168 = _e1787;
                                                                                                                 let _e1788 = local_157;
-                                                                                                                let _e1789 = local_160;
-                                                                                                                let _e1791 = local_160;
-                                                                                                                local_169 = ((_e1788 % _e1789) + _e1791);
-                                                                                                                let _e1793 = local_167;
-                                                                                                                if _e1793 {
+                                                                                                                if (_e1787 && (_e1788 == i32(-2147483648))) {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1794 = local_169;
-                                                                                                                let _e1796 = local_168;
-                                                                                                                if (_e1796 && (_e1794 == i32(-2147483648))) {
+                                                                                                                let _e1791 = local_157;
+                                                                                                                let _e1792 = local_160;
+                                                                                                                let _e1794 = local_160;
+                                                                                                                local_169 = ((_e1791 % _e1792) + _e1794);
+                                                                                                                let _e1796 = local_167;
+                                                                                                                if _e1796 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1798 = local_169;
-                                                                                                                let _e1799 = local_160;
-                                                                                                                phi_1581_ = (_e1798 % _e1799);
+                                                                                                                let _e1797 = local_169;
+                                                                                                                let _e1799 = local_168;
+                                                                                                                if (_e1799 && (_e1797 == i32(-2147483648))) {
+                                                                                                                    phi_3210_ = true;
+                                                                                                                    break;
+                                                                                                                }
+                                                                                                                let _e1801 = local_169;
+                                                                                                                let _e1802 = local_160;
+                                                                                                                phi_1581_ = (_e1801 % _e1802);
                                                                                                             }
-                                                                                                            let _e1831 = phi_1581_;
-                                                                                                            phi_1582_ = _e1831;
+                                                                                                            let _e1834 = phi_1581_;
+                                                                                                            phi_1582_ = _e1834;
                                                                                                         }
-                                                                                                        let _e1844 = phi_1582_;
-                                                                                                        local_170 = bitcast<u32>(_e1844);
-                                                                                                        let _e1846 = local_157;
-                                                                                                        let _e1847 = (_e1846 + 1i);
-                                                                                                        local_171 = _e1847;
-                                                                                                        let _e1848 = local_161;
-                                                                                                        if _e1848 {
-                                                                                                            let _e1902 = local_171;
-                                                                                                            if (_e1902 < 0i) {
+                                                                                                        let _e1847 = phi_1582_;
+                                                                                                        local_170 = bitcast<u32>(_e1847);
+                                                                                                        let _e1849 = local_157;
+                                                                                                        let _e1850 = (_e1849 + 1i);
+                                                                                                        local_171 = _e1850;
+                                                                                                        let _e1851 = local_161;
+                                                                                                        if _e1851 {
+                                                                                                            let _e1905 = local_171;
+                                                                                                            if (_e1905 < 0i) {
                                                                                                                 phi_1602_ = 0i;
                                                                                                             } else {
-                                                                                                                let _e1904 = local_171;
-                                                                                                                let _e1905 = local_160;
-                                                                                                                if (_e1904 >= _e1905) {
-                                                                                                                    let _e1907 = local_160;
-                                                                                                                    phi_1601_ = (_e1907 - 1i);
+                                                                                                                let _e1907 = local_171;
+                                                                                                                let _e1908 = local_160;
+                                                                                                                if (_e1907 >= _e1908) {
+                                                                                                                    let _e1910 = local_160;
+                                                                                                                    phi_1601_ = (_e1910 - 1i);
                                                                                                                 } else {
-                                                                                                                    phi_1601_ = _e1847;
+                                                                                                                    phi_1601_ = _e1850;
                                                                                                                 }
-                                                                                                                let _e1910 = phi_1601_;
-                                                                                                                phi_1602_ = _e1910;
+                                                                                                                let _e1913 = phi_1601_;
+                                                                                                                phi_1602_ = _e1913;
                                                                                                             }
-                                                                                                            let _e1912 = phi_1602_;
-                                                                                                            phi_1662_ = _e1912;
+                                                                                                            let _e1915 = phi_1602_;
+                                                                                                            phi_1662_ = _e1915;
                                                                                                         } else {
-                                                                                                            let _e1849 = local_159;
-                                                                                                            if (_e1849 == 2u) {
-                                                                                                                let _e1871 = local_160;
-                                                                                                                let _e1872 = (2i * _e1871);
-                                                                                                                local_172 = _e1872;
-                                                                                                                let _e1873 = (_e1872 == 0i);
-                                                                                                                local_173 = _e1873;
-                                                                                                                if _e1873 {
+                                                                                                            let _e1852 = local_159;
+                                                                                                            if (_e1852 == 2u) {
+                                                                                                                let _e1874 = local_160;
+                                                                                                                let _e1875 = (2i * _e1874);
+                                                                                                                local_172 = _e1875;
+                                                                                                                let _e1876 = (_e1875 == 0i);
+                                                                                                                local_173 = _e1876;
+                                                                                                                if _e1876 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1874 = local_172;
-                                                                                                                let _e1875 = (_e1874 == -1i);
-                                                                                                                local_174 = _e1875;
-                                                                                                                let _e1876 = local_171;
-                                                                                                                if (_e1875 && (_e1876 == i32(-2147483648))) {
-                                                                                                                    phi_3210_ = true;
-                                                                                                                    break;
-                                                                                                                }
+                                                                                                                let _e1877 = local_172;
+                                                                                                                let _e1878 = (_e1877 == -1i);
+                                                                                                                local_174 = _e1878;
                                                                                                                 let _e1879 = local_171;
-                                                                                                                let _e1880 = local_172;
-                                                                                                                let _e1882 = local_172;
-                                                                                                                local_175 = ((_e1879 % _e1880) + _e1882);
-                                                                                                                let _e1884 = local_173;
-                                                                                                                if _e1884 {
+                                                                                                                if (_e1878 && (_e1879 == i32(-2147483648))) {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1885 = local_175;
-                                                                                                                let _e1887 = local_174;
-                                                                                                                if (_e1887 && (_e1885 == i32(-2147483648))) {
+                                                                                                                let _e1882 = local_171;
+                                                                                                                let _e1883 = local_172;
+                                                                                                                let _e1885 = local_172;
+                                                                                                                local_175 = ((_e1882 % _e1883) + _e1885);
+                                                                                                                let _e1887 = local_173;
+                                                                                                                if _e1887 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1889 = local_175;
-                                                                                                                let _e1890 = local_172;
-                                                                                                                let _e1891 = (_e1889 % _e1890);
-                                                                                                                local_176 = _e1891;
-                                                                                                                let _e1892 = local_160;
-                                                                                                                if (_e1891 < _e1892) {
-                                                                                                                    phi_1637_ = _e1891;
+                                                                                                                let _e1888 = local_175;
+                                                                                                                let _e1890 = local_174;
+                                                                                                                if (_e1890 && (_e1888 == i32(-2147483648))) {
+                                                                                                                    phi_3210_ = true;
+                                                                                                                    break;
+                                                                                                                }
+                                                                                                                let _e1892 = local_175;
+                                                                                                                let _e1893 = local_172;
+                                                                                                                let _e1894 = (_e1892 % _e1893);
+                                                                                                                local_176 = _e1894;
+                                                                                                                let _e1895 = local_160;
+                                                                                                                if (_e1894 < _e1895) {
+                                                                                                                    phi_1637_ = _e1894;
                                                                                                                 } else {
-                                                                                                                    let _e1894 = local_172;
-                                                                                                                    let _e1896 = local_176;
-                                                                                                                    phi_1637_ = ((_e1894 - 1i) - _e1896);
+                                                                                                                    let _e1897 = local_172;
+                                                                                                                    let _e1899 = local_176;
+                                                                                                                    phi_1637_ = ((_e1897 - 1i) - _e1899);
                                                                                                                 }
-                                                                                                                let _e1899 = phi_1637_;
-                                                                                                                phi_1661_ = _e1899;
+                                                                                                                let _e1902 = phi_1637_;
+                                                                                                                phi_1661_ = _e1902;
                                                                                                             } else {
-                                                                                                                let _e1851 = local_160;
-                                                                                                                let _e1852 = (_e1851 == 0i);
-                                                                                                                local_177 = _e1852;
-                                                                                                                if _e1852 {
+                                                                                                                let _e1854 = local_160;
+                                                                                                                let _e1855 = (_e1854 == 0i);
+                                                                                                                local_177 = _e1855;
+                                                                                                                if _e1855 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1853 = local_160;
-                                                                                                                let _e1854 = (_e1853 == -1i);
-                                                                                                                local_178 = _e1854;
-                                                                                                                let _e1855 = local_171;
-                                                                                                                if (_e1854 && (_e1855 == i32(-2147483648))) {
-                                                                                                                    phi_3210_ = true;
-                                                                                                                    break;
-                                                                                                                }
+                                                                                                                let _e1856 = local_160;
+                                                                                                                let _e1857 = (_e1856 == -1i);
+                                                                                                                local_178 = _e1857;
                                                                                                                 let _e1858 = local_171;
-                                                                                                                let _e1859 = local_160;
-                                                                                                                let _e1861 = local_160;
-                                                                                                                local_179 = ((_e1858 % _e1859) + _e1861);
-                                                                                                                let _e1863 = local_177;
-                                                                                                                if _e1863 {
+                                                                                                                if (_e1857 && (_e1858 == i32(-2147483648))) {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1864 = local_179;
-                                                                                                                let _e1866 = local_178;
-                                                                                                                if (_e1866 && (_e1864 == i32(-2147483648))) {
+                                                                                                                let _e1861 = local_171;
+                                                                                                                let _e1862 = local_160;
+                                                                                                                let _e1864 = local_160;
+                                                                                                                local_179 = ((_e1861 % _e1862) + _e1864);
+                                                                                                                let _e1866 = local_177;
+                                                                                                                if _e1866 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1868 = local_179;
-                                                                                                                let _e1869 = local_160;
-                                                                                                                phi_1661_ = (_e1868 % _e1869);
+                                                                                                                let _e1867 = local_179;
+                                                                                                                let _e1869 = local_178;
+                                                                                                                if (_e1869 && (_e1867 == i32(-2147483648))) {
+                                                                                                                    phi_3210_ = true;
+                                                                                                                    break;
+                                                                                                                }
+                                                                                                                let _e1871 = local_179;
+                                                                                                                let _e1872 = local_160;
+                                                                                                                phi_1661_ = (_e1871 % _e1872);
                                                                                                             }
-                                                                                                            let _e1901 = phi_1661_;
-                                                                                                            phi_1662_ = _e1901;
+                                                                                                            let _e1904 = phi_1661_;
+                                                                                                            phi_1662_ = _e1904;
                                                                                                         }
-                                                                                                        let _e1914 = phi_1662_;
-                                                                                                        local_180 = bitcast<u32>(_e1914);
-                                                                                                        let _e1916 = local_147;
-                                                                                                        local_181 = _e1916.member_4;
-                                                                                                        let _e1918 = local_151;
-                                                                                                        local_182 = bitcast<i32>(_e1918);
-                                                                                                        let _e1920 = (_e1916.member_4 == 1u);
-                                                                                                        local_183 = _e1920;
-                                                                                                        if _e1920 {
-                                                                                                            let _e1974 = local_158;
-                                                                                                            if (_e1974 < 0i) {
+                                                                                                        let _e1917 = phi_1662_;
+                                                                                                        local_180 = bitcast<u32>(_e1917);
+                                                                                                        let _e1919 = local_147;
+                                                                                                        local_181 = _e1919.member_4;
+                                                                                                        let _e1921 = local_151;
+                                                                                                        local_182 = bitcast<i32>(_e1921);
+                                                                                                        let _e1923 = (_e1919.member_4 == 1u);
+                                                                                                        local_183 = _e1923;
+                                                                                                        if _e1923 {
+                                                                                                            let _e1977 = local_158;
+                                                                                                            if (_e1977 < 0i) {
                                                                                                                 phi_1681_ = 0i;
                                                                                                             } else {
-                                                                                                                let _e1976 = local_158;
-                                                                                                                let _e1977 = local_182;
-                                                                                                                if (_e1976 >= _e1977) {
-                                                                                                                    let _e1979 = local_182;
-                                                                                                                    phi_1680_ = (_e1979 - 1i);
+                                                                                                                let _e1979 = local_158;
+                                                                                                                let _e1980 = local_182;
+                                                                                                                if (_e1979 >= _e1980) {
+                                                                                                                    let _e1982 = local_182;
+                                                                                                                    phi_1680_ = (_e1982 - 1i);
                                                                                                                 } else {
-                                                                                                                    phi_1680_ = _e1773;
+                                                                                                                    phi_1680_ = _e1776;
                                                                                                                 }
-                                                                                                                let _e1982 = phi_1680_;
-                                                                                                                phi_1681_ = _e1982;
+                                                                                                                let _e1985 = phi_1680_;
+                                                                                                                phi_1681_ = _e1985;
                                                                                                             }
-                                                                                                            let _e1984 = phi_1681_;
-                                                                                                            phi_1741_ = _e1984;
+                                                                                                            let _e1987 = phi_1681_;
+                                                                                                            phi_1741_ = _e1987;
                                                                                                         } else {
-                                                                                                            let _e1921 = local_181;
-                                                                                                            if (_e1921 == 2u) {
-                                                                                                                let _e1943 = local_182;
-                                                                                                                let _e1944 = (2i * _e1943);
-                                                                                                                local_184 = _e1944;
-                                                                                                                let _e1945 = (_e1944 == 0i);
-                                                                                                                local_185 = _e1945;
-                                                                                                                if _e1945 {
+                                                                                                            let _e1924 = local_181;
+                                                                                                            if (_e1924 == 2u) {
+                                                                                                                let _e1946 = local_182;
+                                                                                                                let _e1947 = (2i * _e1946);
+                                                                                                                local_184 = _e1947;
+                                                                                                                let _e1948 = (_e1947 == 0i);
+                                                                                                                local_185 = _e1948;
+                                                                                                                if _e1948 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1946 = local_184;
-                                                                                                                let _e1947 = (_e1946 == -1i);
-                                                                                                                local_186 = _e1947;
-                                                                                                                let _e1948 = local_158;
-                                                                                                                if (_e1947 && (_e1948 == i32(-2147483648))) {
-                                                                                                                    phi_3210_ = true;
-                                                                                                                    break;
-                                                                                                                }
+                                                                                                                let _e1949 = local_184;
+                                                                                                                let _e1950 = (_e1949 == -1i);
+                                                                                                                local_186 = _e1950;
                                                                                                                 let _e1951 = local_158;
-                                                                                                                let _e1952 = local_184;
-                                                                                                                let _e1954 = local_184;
-                                                                                                                local_187 = ((_e1951 % _e1952) + _e1954);
-                                                                                                                let _e1956 = local_185;
-                                                                                                                if _e1956 {
+                                                                                                                if (_e1950 && (_e1951 == i32(-2147483648))) {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1957 = local_187;
-                                                                                                                let _e1959 = local_186;
-                                                                                                                if (_e1959 && (_e1957 == i32(-2147483648))) {
+                                                                                                                let _e1954 = local_158;
+                                                                                                                let _e1955 = local_184;
+                                                                                                                let _e1957 = local_184;
+                                                                                                                local_187 = ((_e1954 % _e1955) + _e1957);
+                                                                                                                let _e1959 = local_185;
+                                                                                                                if _e1959 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1961 = local_187;
-                                                                                                                let _e1962 = local_184;
-                                                                                                                let _e1963 = (_e1961 % _e1962);
-                                                                                                                local_188 = _e1963;
-                                                                                                                let _e1964 = local_182;
-                                                                                                                if (_e1963 < _e1964) {
-                                                                                                                    phi_1716_ = _e1963;
+                                                                                                                let _e1960 = local_187;
+                                                                                                                let _e1962 = local_186;
+                                                                                                                if (_e1962 && (_e1960 == i32(-2147483648))) {
+                                                                                                                    phi_3210_ = true;
+                                                                                                                    break;
+                                                                                                                }
+                                                                                                                let _e1964 = local_187;
+                                                                                                                let _e1965 = local_184;
+                                                                                                                let _e1966 = (_e1964 % _e1965);
+                                                                                                                local_188 = _e1966;
+                                                                                                                let _e1967 = local_182;
+                                                                                                                if (_e1966 < _e1967) {
+                                                                                                                    phi_1716_ = _e1966;
                                                                                                                 } else {
-                                                                                                                    let _e1966 = local_184;
-                                                                                                                    let _e1968 = local_188;
-                                                                                                                    phi_1716_ = ((_e1966 - 1i) - _e1968);
+                                                                                                                    let _e1969 = local_184;
+                                                                                                                    let _e1971 = local_188;
+                                                                                                                    phi_1716_ = ((_e1969 - 1i) - _e1971);
                                                                                                                 }
-                                                                                                                let _e1971 = phi_1716_;
-                                                                                                                phi_1740_ = _e1971;
+                                                                                                                let _e1974 = phi_1716_;
+                                                                                                                phi_1740_ = _e1974;
                                                                                                             } else {
-                                                                                                                let _e1923 = local_182;
-                                                                                                                let _e1924 = (_e1923 == 0i);
-                                                                                                                local_189 = _e1924;
-                                                                                                                if _e1924 {
+                                                                                                                let _e1926 = local_182;
+                                                                                                                let _e1927 = (_e1926 == 0i);
+                                                                                                                local_189 = _e1927;
+                                                                                                                if _e1927 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1925 = local_182;
-                                                                                                                let _e1926 = (_e1925 == -1i);
-                                                                                                                local_190 = _e1926;
-                                                                                                                let _e1927 = local_158;
-                                                                                                                if (_e1926 && (_e1927 == i32(-2147483648))) {
-                                                                                                                    phi_3210_ = true;
-                                                                                                                    break;
-                                                                                                                }
+                                                                                                                let _e1928 = local_182;
+                                                                                                                let _e1929 = (_e1928 == -1i);
+                                                                                                                local_190 = _e1929;
                                                                                                                 let _e1930 = local_158;
-                                                                                                                let _e1931 = local_182;
-                                                                                                                let _e1933 = local_182;
-                                                                                                                local_191 = ((_e1930 % _e1931) + _e1933);
-                                                                                                                let _e1935 = local_189;
-                                                                                                                if _e1935 {
+                                                                                                                if (_e1929 && (_e1930 == i32(-2147483648))) {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1936 = local_191;
-                                                                                                                let _e1938 = local_190;
-                                                                                                                if (_e1938 && (_e1936 == i32(-2147483648))) {
+                                                                                                                let _e1933 = local_158;
+                                                                                                                let _e1934 = local_182;
+                                                                                                                let _e1936 = local_182;
+                                                                                                                local_191 = ((_e1933 % _e1934) + _e1936);
+                                                                                                                let _e1938 = local_189;
+                                                                                                                if _e1938 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1940 = local_191;
-                                                                                                                let _e1941 = local_182;
-                                                                                                                phi_1740_ = (_e1940 % _e1941);
+                                                                                                                let _e1939 = local_191;
+                                                                                                                let _e1941 = local_190;
+                                                                                                                if (_e1941 && (_e1939 == i32(-2147483648))) {
+                                                                                                                    phi_3210_ = true;
+                                                                                                                    break;
+                                                                                                                }
+                                                                                                                let _e1943 = local_191;
+                                                                                                                let _e1944 = local_182;
+                                                                                                                phi_1740_ = (_e1943 % _e1944);
                                                                                                             }
-                                                                                                            let _e1973 = phi_1740_;
-                                                                                                            phi_1741_ = _e1973;
+                                                                                                            let _e1976 = phi_1740_;
+                                                                                                            phi_1741_ = _e1976;
                                                                                                         }
-                                                                                                        let _e1986 = phi_1741_;
-                                                                                                        local_192 = bitcast<u32>(_e1986);
-                                                                                                        let _e1988 = local_158;
-                                                                                                        let _e1989 = (_e1988 + 1i);
-                                                                                                        local_193 = _e1989;
-                                                                                                        let _e1990 = local_183;
-                                                                                                        if _e1990 {
-                                                                                                            let _e2044 = local_193;
-                                                                                                            if (_e2044 < 0i) {
+                                                                                                        let _e1989 = phi_1741_;
+                                                                                                        local_192 = bitcast<u32>(_e1989);
+                                                                                                        let _e1991 = local_158;
+                                                                                                        let _e1992 = (_e1991 + 1i);
+                                                                                                        local_193 = _e1992;
+                                                                                                        let _e1993 = local_183;
+                                                                                                        if _e1993 {
+                                                                                                            let _e2047 = local_193;
+                                                                                                            if (_e2047 < 0i) {
                                                                                                                 phi_1761_ = 0i;
                                                                                                             } else {
-                                                                                                                let _e2046 = local_193;
-                                                                                                                let _e2047 = local_182;
-                                                                                                                if (_e2046 >= _e2047) {
-                                                                                                                    let _e2049 = local_182;
-                                                                                                                    phi_1760_ = (_e2049 - 1i);
+                                                                                                                let _e2049 = local_193;
+                                                                                                                let _e2050 = local_182;
+                                                                                                                if (_e2049 >= _e2050) {
+                                                                                                                    let _e2052 = local_182;
+                                                                                                                    phi_1760_ = (_e2052 - 1i);
                                                                                                                 } else {
-                                                                                                                    phi_1760_ = _e1989;
+                                                                                                                    phi_1760_ = _e1992;
                                                                                                                 }
-                                                                                                                let _e2052 = phi_1760_;
-                                                                                                                phi_1761_ = _e2052;
+                                                                                                                let _e2055 = phi_1760_;
+                                                                                                                phi_1761_ = _e2055;
                                                                                                             }
-                                                                                                            let _e2054 = phi_1761_;
-                                                                                                            phi_1821_ = _e2054;
+                                                                                                            let _e2057 = phi_1761_;
+                                                                                                            phi_1821_ = _e2057;
                                                                                                         } else {
-                                                                                                            let _e1991 = local_181;
-                                                                                                            if (_e1991 == 2u) {
-                                                                                                                let _e2013 = local_182;
-                                                                                                                let _e2014 = (2i * _e2013);
-                                                                                                                local_194 = _e2014;
-                                                                                                                let _e2015 = (_e2014 == 0i);
-                                                                                                                local_195 = _e2015;
-                                                                                                                if _e2015 {
+                                                                                                            let _e1994 = local_181;
+                                                                                                            if (_e1994 == 2u) {
+                                                                                                                let _e2016 = local_182;
+                                                                                                                let _e2017 = (2i * _e2016);
+                                                                                                                local_194 = _e2017;
+                                                                                                                let _e2018 = (_e2017 == 0i);
+                                                                                                                local_195 = _e2018;
+                                                                                                                if _e2018 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e2016 = local_194;
-                                                                                                                let _e2017 = (_e2016 == -1i);
-                                                                                                                local_196 = _e2017;
-                                                                                                                let _e2018 = local_193;
-                                                                                                                if (_e2017 && (_e2018 == i32(-2147483648))) {
-                                                                                                                    phi_3210_ = true;
-                                                                                                                    break;
-                                                                                                                }
+                                                                                                                let _e2019 = local_194;
+                                                                                                                let _e2020 = (_e2019 == -1i);
+                                                                                                                local_196 = _e2020;
                                                                                                                 let _e2021 = local_193;
-                                                                                                                let _e2022 = local_194;
-                                                                                                                let _e2024 = local_194;
-                                                                                                                local_197 = ((_e2021 % _e2022) + _e2024);
-                                                                                                                let _e2026 = local_195;
-                                                                                                                if _e2026 {
+                                                                                                                if (_e2020 && (_e2021 == i32(-2147483648))) {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e2027 = local_197;
-                                                                                                                let _e2029 = local_196;
-                                                                                                                if (_e2029 && (_e2027 == i32(-2147483648))) {
+                                                                                                                let _e2024 = local_193;
+                                                                                                                let _e2025 = local_194;
+                                                                                                                let _e2027 = local_194;
+                                                                                                                local_197 = ((_e2024 % _e2025) + _e2027);
+                                                                                                                let _e2029 = local_195;
+                                                                                                                if _e2029 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e2031 = local_197;
-                                                                                                                let _e2032 = local_194;
-                                                                                                                let _e2033 = (_e2031 % _e2032);
-                                                                                                                local_198 = _e2033;
-                                                                                                                let _e2034 = local_182;
-                                                                                                                if (_e2033 < _e2034) {
-                                                                                                                    phi_1796_ = _e2033;
+                                                                                                                let _e2030 = local_197;
+                                                                                                                let _e2032 = local_196;
+                                                                                                                if (_e2032 && (_e2030 == i32(-2147483648))) {
+                                                                                                                    phi_3210_ = true;
+                                                                                                                    break;
+                                                                                                                }
+                                                                                                                let _e2034 = local_197;
+                                                                                                                let _e2035 = local_194;
+                                                                                                                let _e2036 = (_e2034 % _e2035);
+                                                                                                                local_198 = _e2036;
+                                                                                                                let _e2037 = local_182;
+                                                                                                                if (_e2036 < _e2037) {
+                                                                                                                    phi_1796_ = _e2036;
                                                                                                                 } else {
-                                                                                                                    let _e2036 = local_194;
-                                                                                                                    let _e2038 = local_198;
-                                                                                                                    phi_1796_ = ((_e2036 - 1i) - _e2038);
+                                                                                                                    let _e2039 = local_194;
+                                                                                                                    let _e2041 = local_198;
+                                                                                                                    phi_1796_ = ((_e2039 - 1i) - _e2041);
                                                                                                                 }
-                                                                                                                let _e2041 = phi_1796_;
-                                                                                                                phi_1820_ = _e2041;
+                                                                                                                let _e2044 = phi_1796_;
+                                                                                                                phi_1820_ = _e2044;
                                                                                                             } else {
-                                                                                                                let _e1993 = local_182;
-                                                                                                                let _e1994 = (_e1993 == 0i);
-                                                                                                                local_199 = _e1994;
-                                                                                                                if _e1994 {
+                                                                                                                let _e1996 = local_182;
+                                                                                                                let _e1997 = (_e1996 == 0i);
+                                                                                                                local_199 = _e1997;
+                                                                                                                if _e1997 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e1995 = local_182;
-                                                                                                                let _e1996 = (_e1995 == -1i);
-                                                                                                                local_200 = _e1996;
-                                                                                                                let _e1997 = local_193;
-                                                                                                                if (_e1996 && (_e1997 == i32(-2147483648))) {
-                                                                                                                    phi_3210_ = true;
-                                                                                                                    break;
-                                                                                                                }
+                                                                                                                let _e1998 = local_182;
+                                                                                                                let _e1999 = (_e1998 == -1i);
+                                                                                                                local_200 = _e1999;
                                                                                                                 let _e2000 = local_193;
-                                                                                                                let _e2001 = local_182;
-                                                                                                                let _e2003 = local_182;
-                                                                                                                local_201 = ((_e2000 % _e2001) + _e2003);
-                                                                                                                let _e2005 = local_199;
-                                                                                                                if _e2005 {
+                                                                                                                if (_e1999 && (_e2000 == i32(-2147483648))) {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e2006 = local_201;
-                                                                                                                let _e2008 = local_200;
-                                                                                                                if (_e2008 && (_e2006 == i32(-2147483648))) {
+                                                                                                                let _e2003 = local_193;
+                                                                                                                let _e2004 = local_182;
+                                                                                                                let _e2006 = local_182;
+                                                                                                                local_201 = ((_e2003 % _e2004) + _e2006);
+                                                                                                                let _e2008 = local_199;
+                                                                                                                if _e2008 {
                                                                                                                     phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
-                                                                                                                let _e2010 = local_201;
-                                                                                                                let _e2011 = local_182;
-                                                                                                                phi_1820_ = (_e2010 % _e2011);
+                                                                                                                let _e2009 = local_201;
+                                                                                                                let _e2011 = local_200;
+                                                                                                                if (_e2011 && (_e2009 == i32(-2147483648))) {
+                                                                                                                    phi_3210_ = true;
+                                                                                                                    break;
+                                                                                                                }
+                                                                                                                let _e2013 = local_201;
+                                                                                                                let _e2014 = local_182;
+                                                                                                                phi_1820_ = (_e2013 % _e2014);
                                                                                                             }
-                                                                                                            let _e2043 = phi_1820_;
-                                                                                                            phi_1821_ = _e2043;
+                                                                                                            let _e2046 = phi_1820_;
+                                                                                                            phi_1821_ = _e2046;
                                                                                                         }
-                                                                                                        let _e2056 = phi_1821_;
-                                                                                                        local_202 = bitcast<u32>(_e2056);
-                                                                                                        let _e2058 = local_147;
-                                                                                                        local_203 = _e2058.member;
-                                                                                                        let _e2060 = local_192;
-                                                                                                        let _e2061 = local_149;
-                                                                                                        let _e2063 = (_e2058.member + (_e2060 * _e2061));
-                                                                                                        local_204 = _e2063;
-                                                                                                        let _e2064 = local_170;
-                                                                                                        let _e2066 = ((_e2063 + _e2064) * 2u);
-                                                                                                        local_205 = _e2066;
-                                                                                                        let _e2067 = local_5;
-                                                                                                        if (_e2066 < _e2067) {
+                                                                                                        let _e2059 = phi_1821_;
+                                                                                                        local_202 = bitcast<u32>(_e2059);
+                                                                                                        let _e2061 = local_147;
+                                                                                                        local_203 = _e2061.member;
+                                                                                                        let _e2063 = local_192;
+                                                                                                        let _e2064 = local_149;
+                                                                                                        let _e2066 = (_e2061.member + (_e2063 * _e2064));
+                                                                                                        local_204 = _e2066;
+                                                                                                        let _e2067 = local_170;
+                                                                                                        let _e2069 = ((_e2066 + _e2067) * 2u);
+                                                                                                        local_205 = _e2069;
+                                                                                                        let _e2070 = local_5;
+                                                                                                        if (_e2069 < _e2070) {
                                                                                                         } else {
                                                                                                             phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e2069 = local_205;
-                                                                                                        let _e2072 = global_8.member[_e2069];
-                                                                                                        local_206 = _e2072;
-                                                                                                        let _e2073 = local_205;
-                                                                                                        let _e2074 = (_e2073 + 1u);
-                                                                                                        local_207 = _e2074;
-                                                                                                        let _e2075 = local_5;
-                                                                                                        if (_e2074 < _e2075) {
+                                                                                                        let _e2072 = local_205;
+                                                                                                        let _e2075 = global_8.member[_e2072];
+                                                                                                        local_206 = _e2075;
+                                                                                                        let _e2076 = local_205;
+                                                                                                        let _e2077 = (_e2076 + 1u);
+                                                                                                        local_207 = _e2077;
+                                                                                                        let _e2078 = local_5;
+                                                                                                        if (_e2077 < _e2078) {
                                                                                                         } else {
                                                                                                             phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e2077 = local_207;
-                                                                                                        let _e2080 = global_8.member[_e2077];
-                                                                                                        local_208 = _e2080;
-                                                                                                        let _e2081 = local_206;
-                                                                                                        let _e2082 = (_e2081 & 65535u);
-                                                                                                        local_309 = select(-1f, 1f, ((_e2082 & 32768u) == 0u));
-                                                                                                        let _e2088 = ((_e2082 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_209 = _e2088;
-                                                                                                        local_210 = (_e2082 & 1023u);
-                                                                                                        if (_e2088 == 0u) {
-                                                                                                            let _e2110 = local_210;
-                                                                                                            let _e2112 = local_309;
-                                                                                                            phi_1875_ = ((_e2112 * f32(_e2110)) * 0.000000059604645f);
+                                                                                                        let _e2080 = local_207;
+                                                                                                        let _e2083 = global_8.member[_e2080];
+                                                                                                        local_208 = _e2083;
+                                                                                                        let _e2084 = local_206;
+                                                                                                        let _e2085 = (_e2084 & 65535u);
+                                                                                                        local_309 = select(-1f, 1f, ((_e2085 & 32768u) == 0u));
+                                                                                                        let _e2091 = ((_e2085 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_209 = _e2091;
+                                                                                                        local_210 = (_e2085 & 1023u);
+                                                                                                        if (_e2091 == 0u) {
+                                                                                                            let _e2113 = local_210;
+                                                                                                            let _e2115 = local_309;
+                                                                                                            phi_1875_ = ((_e2115 * f32(_e2113)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2091 = local_209;
-                                                                                                            if (_e2091 == 31u) {
-                                                                                                                let _e2101 = local_210;
-                                                                                                                phi_1872_ = (2139095040u | (_e2101 << bitcast<u32>(13i)));
+                                                                                                            let _e2094 = local_209;
+                                                                                                            if (_e2094 == 31u) {
+                                                                                                                let _e2104 = local_210;
+                                                                                                                phi_1872_ = (2139095040u | (_e2104 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2093 = local_209;
-                                                                                                                let _e2097 = local_210;
-                                                                                                                phi_1872_ = (((_e2093 + 112u) << bitcast<u32>(23i)) | (_e2097 << bitcast<u32>(13i)));
+                                                                                                                let _e2096 = local_209;
+                                                                                                                let _e2100 = local_210;
+                                                                                                                phi_1872_ = (((_e2096 + 112u) << bitcast<u32>(23i)) | (_e2100 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2106 = phi_1872_;
-                                                                                                            let _e2108 = local_309;
-                                                                                                            phi_1875_ = (_e2108 * bitcast<f32>(_e2106));
+                                                                                                            let _e2109 = phi_1872_;
+                                                                                                            let _e2111 = local_309;
+                                                                                                            phi_1875_ = (_e2111 * bitcast<f32>(_e2109));
                                                                                                         }
-                                                                                                        let _e2116 = phi_1875_;
-                                                                                                        local_211 = _e2116;
-                                                                                                        let _e2117 = local_206;
-                                                                                                        let _e2119 = (_e2117 >> bitcast<u32>(16i));
-                                                                                                        local_310 = select(-1f, 1f, ((_e2119 & 32768u) == 0u));
-                                                                                                        let _e2125 = ((_e2119 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_212 = _e2125;
-                                                                                                        local_213 = (_e2119 & 1023u);
-                                                                                                        if (_e2125 == 0u) {
-                                                                                                            let _e2147 = local_213;
-                                                                                                            let _e2149 = local_310;
-                                                                                                            phi_1907_ = ((_e2149 * f32(_e2147)) * 0.000000059604645f);
+                                                                                                        let _e2119 = phi_1875_;
+                                                                                                        local_211 = _e2119;
+                                                                                                        let _e2120 = local_206;
+                                                                                                        let _e2122 = (_e2120 >> bitcast<u32>(16i));
+                                                                                                        local_310 = select(-1f, 1f, ((_e2122 & 32768u) == 0u));
+                                                                                                        let _e2128 = ((_e2122 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_212 = _e2128;
+                                                                                                        local_213 = (_e2122 & 1023u);
+                                                                                                        if (_e2128 == 0u) {
+                                                                                                            let _e2150 = local_213;
+                                                                                                            let _e2152 = local_310;
+                                                                                                            phi_1907_ = ((_e2152 * f32(_e2150)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2128 = local_212;
-                                                                                                            if (_e2128 == 31u) {
-                                                                                                                let _e2138 = local_213;
-                                                                                                                phi_1904_ = (2139095040u | (_e2138 << bitcast<u32>(13i)));
+                                                                                                            let _e2131 = local_212;
+                                                                                                            if (_e2131 == 31u) {
+                                                                                                                let _e2141 = local_213;
+                                                                                                                phi_1904_ = (2139095040u | (_e2141 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2130 = local_212;
-                                                                                                                let _e2134 = local_213;
-                                                                                                                phi_1904_ = (((_e2130 + 112u) << bitcast<u32>(23i)) | (_e2134 << bitcast<u32>(13i)));
+                                                                                                                let _e2133 = local_212;
+                                                                                                                let _e2137 = local_213;
+                                                                                                                phi_1904_ = (((_e2133 + 112u) << bitcast<u32>(23i)) | (_e2137 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2143 = phi_1904_;
-                                                                                                            let _e2145 = local_310;
-                                                                                                            phi_1907_ = (_e2145 * bitcast<f32>(_e2143));
+                                                                                                            let _e2146 = phi_1904_;
+                                                                                                            let _e2148 = local_310;
+                                                                                                            phi_1907_ = (_e2148 * bitcast<f32>(_e2146));
                                                                                                         }
-                                                                                                        let _e2153 = phi_1907_;
-                                                                                                        local_214 = _e2153;
-                                                                                                        let _e2154 = local_208;
-                                                                                                        let _e2155 = (_e2154 & 65535u);
-                                                                                                        local_311 = select(-1f, 1f, ((_e2155 & 32768u) == 0u));
-                                                                                                        let _e2161 = ((_e2155 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_215 = _e2161;
-                                                                                                        local_216 = (_e2155 & 1023u);
-                                                                                                        if (_e2161 == 0u) {
-                                                                                                            let _e2183 = local_216;
-                                                                                                            let _e2185 = local_311;
-                                                                                                            phi_1939_ = ((_e2185 * f32(_e2183)) * 0.000000059604645f);
+                                                                                                        let _e2156 = phi_1907_;
+                                                                                                        local_214 = _e2156;
+                                                                                                        let _e2157 = local_208;
+                                                                                                        let _e2158 = (_e2157 & 65535u);
+                                                                                                        local_311 = select(-1f, 1f, ((_e2158 & 32768u) == 0u));
+                                                                                                        let _e2164 = ((_e2158 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_215 = _e2164;
+                                                                                                        local_216 = (_e2158 & 1023u);
+                                                                                                        if (_e2164 == 0u) {
+                                                                                                            let _e2186 = local_216;
+                                                                                                            let _e2188 = local_311;
+                                                                                                            phi_1939_ = ((_e2188 * f32(_e2186)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2164 = local_215;
-                                                                                                            if (_e2164 == 31u) {
-                                                                                                                let _e2174 = local_216;
-                                                                                                                phi_1936_ = (2139095040u | (_e2174 << bitcast<u32>(13i)));
+                                                                                                            let _e2167 = local_215;
+                                                                                                            if (_e2167 == 31u) {
+                                                                                                                let _e2177 = local_216;
+                                                                                                                phi_1936_ = (2139095040u | (_e2177 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2166 = local_215;
-                                                                                                                let _e2170 = local_216;
-                                                                                                                phi_1936_ = (((_e2166 + 112u) << bitcast<u32>(23i)) | (_e2170 << bitcast<u32>(13i)));
+                                                                                                                let _e2169 = local_215;
+                                                                                                                let _e2173 = local_216;
+                                                                                                                phi_1936_ = (((_e2169 + 112u) << bitcast<u32>(23i)) | (_e2173 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2179 = phi_1936_;
-                                                                                                            let _e2181 = local_311;
-                                                                                                            phi_1939_ = (_e2181 * bitcast<f32>(_e2179));
+                                                                                                            let _e2182 = phi_1936_;
+                                                                                                            let _e2184 = local_311;
+                                                                                                            phi_1939_ = (_e2184 * bitcast<f32>(_e2182));
                                                                                                         }
-                                                                                                        let _e2189 = phi_1939_;
-                                                                                                        local_217 = _e2189;
-                                                                                                        let _e2190 = local_208;
-                                                                                                        let _e2192 = (_e2190 >> bitcast<u32>(16i));
-                                                                                                        local_312 = select(-1f, 1f, ((_e2192 & 32768u) == 0u));
-                                                                                                        let _e2198 = ((_e2192 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_218 = _e2198;
-                                                                                                        local_219 = (_e2192 & 1023u);
-                                                                                                        if (_e2198 == 0u) {
-                                                                                                            let _e2220 = local_219;
-                                                                                                            let _e2222 = local_312;
-                                                                                                            phi_1971_ = ((_e2222 * f32(_e2220)) * 0.000000059604645f);
+                                                                                                        let _e2192 = phi_1939_;
+                                                                                                        local_217 = _e2192;
+                                                                                                        let _e2193 = local_208;
+                                                                                                        let _e2195 = (_e2193 >> bitcast<u32>(16i));
+                                                                                                        local_312 = select(-1f, 1f, ((_e2195 & 32768u) == 0u));
+                                                                                                        let _e2201 = ((_e2195 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_218 = _e2201;
+                                                                                                        local_219 = (_e2195 & 1023u);
+                                                                                                        if (_e2201 == 0u) {
+                                                                                                            let _e2223 = local_219;
+                                                                                                            let _e2225 = local_312;
+                                                                                                            phi_1971_ = ((_e2225 * f32(_e2223)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2201 = local_218;
-                                                                                                            if (_e2201 == 31u) {
-                                                                                                                let _e2211 = local_219;
-                                                                                                                phi_1968_ = (2139095040u | (_e2211 << bitcast<u32>(13i)));
+                                                                                                            let _e2204 = local_218;
+                                                                                                            if (_e2204 == 31u) {
+                                                                                                                let _e2214 = local_219;
+                                                                                                                phi_1968_ = (2139095040u | (_e2214 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2203 = local_218;
-                                                                                                                let _e2207 = local_219;
-                                                                                                                phi_1968_ = (((_e2203 + 112u) << bitcast<u32>(23i)) | (_e2207 << bitcast<u32>(13i)));
+                                                                                                                let _e2206 = local_218;
+                                                                                                                let _e2210 = local_219;
+                                                                                                                phi_1968_ = (((_e2206 + 112u) << bitcast<u32>(23i)) | (_e2210 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2216 = phi_1968_;
-                                                                                                            let _e2218 = local_312;
-                                                                                                            phi_1971_ = (_e2218 * bitcast<f32>(_e2216));
+                                                                                                            let _e2219 = phi_1968_;
+                                                                                                            let _e2221 = local_312;
+                                                                                                            phi_1971_ = (_e2221 * bitcast<f32>(_e2219));
                                                                                                         }
-                                                                                                        let _e2226 = phi_1971_;
-                                                                                                        local_220 = _e2226;
-                                                                                                        let _e2227 = local_204;
-                                                                                                        let _e2228 = local_180;
-                                                                                                        let _e2230 = ((_e2227 + _e2228) * 2u);
-                                                                                                        local_221 = _e2230;
-                                                                                                        let _e2231 = local_5;
-                                                                                                        if (_e2230 < _e2231) {
+                                                                                                        let _e2229 = phi_1971_;
+                                                                                                        local_220 = _e2229;
+                                                                                                        let _e2230 = local_204;
+                                                                                                        let _e2231 = local_180;
+                                                                                                        let _e2233 = ((_e2230 + _e2231) * 2u);
+                                                                                                        local_221 = _e2233;
+                                                                                                        let _e2234 = local_5;
+                                                                                                        if (_e2233 < _e2234) {
                                                                                                         } else {
                                                                                                             phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e2233 = local_221;
-                                                                                                        let _e2236 = global_8.member[_e2233];
-                                                                                                        local_222 = _e2236;
-                                                                                                        let _e2237 = local_221;
-                                                                                                        let _e2238 = (_e2237 + 1u);
-                                                                                                        local_223 = _e2238;
-                                                                                                        let _e2239 = local_5;
-                                                                                                        if (_e2238 < _e2239) {
+                                                                                                        let _e2236 = local_221;
+                                                                                                        let _e2239 = global_8.member[_e2236];
+                                                                                                        local_222 = _e2239;
+                                                                                                        let _e2240 = local_221;
+                                                                                                        let _e2241 = (_e2240 + 1u);
+                                                                                                        local_223 = _e2241;
+                                                                                                        let _e2242 = local_5;
+                                                                                                        if (_e2241 < _e2242) {
                                                                                                         } else {
                                                                                                             phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e2241 = local_223;
-                                                                                                        let _e2244 = global_8.member[_e2241];
-                                                                                                        local_224 = _e2244;
-                                                                                                        let _e2245 = local_222;
-                                                                                                        let _e2246 = (_e2245 & 65535u);
-                                                                                                        local_313 = select(-1f, 1f, ((_e2246 & 32768u) == 0u));
-                                                                                                        let _e2252 = ((_e2246 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_225 = _e2252;
-                                                                                                        local_226 = (_e2246 & 1023u);
-                                                                                                        if (_e2252 == 0u) {
-                                                                                                            let _e2274 = local_226;
-                                                                                                            let _e2276 = local_313;
-                                                                                                            phi_2024_ = ((_e2276 * f32(_e2274)) * 0.000000059604645f);
+                                                                                                        let _e2244 = local_223;
+                                                                                                        let _e2247 = global_8.member[_e2244];
+                                                                                                        local_224 = _e2247;
+                                                                                                        let _e2248 = local_222;
+                                                                                                        let _e2249 = (_e2248 & 65535u);
+                                                                                                        local_313 = select(-1f, 1f, ((_e2249 & 32768u) == 0u));
+                                                                                                        let _e2255 = ((_e2249 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_225 = _e2255;
+                                                                                                        local_226 = (_e2249 & 1023u);
+                                                                                                        if (_e2255 == 0u) {
+                                                                                                            let _e2277 = local_226;
+                                                                                                            let _e2279 = local_313;
+                                                                                                            phi_2024_ = ((_e2279 * f32(_e2277)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2255 = local_225;
-                                                                                                            if (_e2255 == 31u) {
-                                                                                                                let _e2265 = local_226;
-                                                                                                                phi_2021_ = (2139095040u | (_e2265 << bitcast<u32>(13i)));
+                                                                                                            let _e2258 = local_225;
+                                                                                                            if (_e2258 == 31u) {
+                                                                                                                let _e2268 = local_226;
+                                                                                                                phi_2021_ = (2139095040u | (_e2268 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2257 = local_225;
-                                                                                                                let _e2261 = local_226;
-                                                                                                                phi_2021_ = (((_e2257 + 112u) << bitcast<u32>(23i)) | (_e2261 << bitcast<u32>(13i)));
+                                                                                                                let _e2260 = local_225;
+                                                                                                                let _e2264 = local_226;
+                                                                                                                phi_2021_ = (((_e2260 + 112u) << bitcast<u32>(23i)) | (_e2264 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2270 = phi_2021_;
-                                                                                                            let _e2272 = local_313;
-                                                                                                            phi_2024_ = (_e2272 * bitcast<f32>(_e2270));
+                                                                                                            let _e2273 = phi_2021_;
+                                                                                                            let _e2275 = local_313;
+                                                                                                            phi_2024_ = (_e2275 * bitcast<f32>(_e2273));
                                                                                                         }
-                                                                                                        let _e2280 = phi_2024_;
-                                                                                                        local_227 = _e2280;
-                                                                                                        let _e2281 = local_222;
-                                                                                                        let _e2283 = (_e2281 >> bitcast<u32>(16i));
-                                                                                                        local_314 = select(-1f, 1f, ((_e2283 & 32768u) == 0u));
-                                                                                                        let _e2289 = ((_e2283 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_228 = _e2289;
-                                                                                                        local_229 = (_e2283 & 1023u);
-                                                                                                        if (_e2289 == 0u) {
-                                                                                                            let _e2311 = local_229;
-                                                                                                            let _e2313 = local_314;
-                                                                                                            phi_2056_ = ((_e2313 * f32(_e2311)) * 0.000000059604645f);
+                                                                                                        let _e2283 = phi_2024_;
+                                                                                                        local_227 = _e2283;
+                                                                                                        let _e2284 = local_222;
+                                                                                                        let _e2286 = (_e2284 >> bitcast<u32>(16i));
+                                                                                                        local_314 = select(-1f, 1f, ((_e2286 & 32768u) == 0u));
+                                                                                                        let _e2292 = ((_e2286 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_228 = _e2292;
+                                                                                                        local_229 = (_e2286 & 1023u);
+                                                                                                        if (_e2292 == 0u) {
+                                                                                                            let _e2314 = local_229;
+                                                                                                            let _e2316 = local_314;
+                                                                                                            phi_2056_ = ((_e2316 * f32(_e2314)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2292 = local_228;
-                                                                                                            if (_e2292 == 31u) {
-                                                                                                                let _e2302 = local_229;
-                                                                                                                phi_2053_ = (2139095040u | (_e2302 << bitcast<u32>(13i)));
+                                                                                                            let _e2295 = local_228;
+                                                                                                            if (_e2295 == 31u) {
+                                                                                                                let _e2305 = local_229;
+                                                                                                                phi_2053_ = (2139095040u | (_e2305 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2294 = local_228;
-                                                                                                                let _e2298 = local_229;
-                                                                                                                phi_2053_ = (((_e2294 + 112u) << bitcast<u32>(23i)) | (_e2298 << bitcast<u32>(13i)));
+                                                                                                                let _e2297 = local_228;
+                                                                                                                let _e2301 = local_229;
+                                                                                                                phi_2053_ = (((_e2297 + 112u) << bitcast<u32>(23i)) | (_e2301 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2307 = phi_2053_;
-                                                                                                            let _e2309 = local_314;
-                                                                                                            phi_2056_ = (_e2309 * bitcast<f32>(_e2307));
+                                                                                                            let _e2310 = phi_2053_;
+                                                                                                            let _e2312 = local_314;
+                                                                                                            phi_2056_ = (_e2312 * bitcast<f32>(_e2310));
                                                                                                         }
-                                                                                                        let _e2317 = phi_2056_;
-                                                                                                        local_230 = _e2317;
-                                                                                                        let _e2318 = local_224;
-                                                                                                        let _e2319 = (_e2318 & 65535u);
-                                                                                                        local_315 = select(-1f, 1f, ((_e2319 & 32768u) == 0u));
-                                                                                                        let _e2325 = ((_e2319 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_231 = _e2325;
-                                                                                                        local_232 = (_e2319 & 1023u);
-                                                                                                        if (_e2325 == 0u) {
-                                                                                                            let _e2347 = local_232;
-                                                                                                            let _e2349 = local_315;
-                                                                                                            phi_2088_ = ((_e2349 * f32(_e2347)) * 0.000000059604645f);
+                                                                                                        let _e2320 = phi_2056_;
+                                                                                                        local_230 = _e2320;
+                                                                                                        let _e2321 = local_224;
+                                                                                                        let _e2322 = (_e2321 & 65535u);
+                                                                                                        local_315 = select(-1f, 1f, ((_e2322 & 32768u) == 0u));
+                                                                                                        let _e2328 = ((_e2322 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_231 = _e2328;
+                                                                                                        local_232 = (_e2322 & 1023u);
+                                                                                                        if (_e2328 == 0u) {
+                                                                                                            let _e2350 = local_232;
+                                                                                                            let _e2352 = local_315;
+                                                                                                            phi_2088_ = ((_e2352 * f32(_e2350)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2328 = local_231;
-                                                                                                            if (_e2328 == 31u) {
-                                                                                                                let _e2338 = local_232;
-                                                                                                                phi_2085_ = (2139095040u | (_e2338 << bitcast<u32>(13i)));
+                                                                                                            let _e2331 = local_231;
+                                                                                                            if (_e2331 == 31u) {
+                                                                                                                let _e2341 = local_232;
+                                                                                                                phi_2085_ = (2139095040u | (_e2341 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2330 = local_231;
-                                                                                                                let _e2334 = local_232;
-                                                                                                                phi_2085_ = (((_e2330 + 112u) << bitcast<u32>(23i)) | (_e2334 << bitcast<u32>(13i)));
+                                                                                                                let _e2333 = local_231;
+                                                                                                                let _e2337 = local_232;
+                                                                                                                phi_2085_ = (((_e2333 + 112u) << bitcast<u32>(23i)) | (_e2337 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2343 = phi_2085_;
-                                                                                                            let _e2345 = local_315;
-                                                                                                            phi_2088_ = (_e2345 * bitcast<f32>(_e2343));
+                                                                                                            let _e2346 = phi_2085_;
+                                                                                                            let _e2348 = local_315;
+                                                                                                            phi_2088_ = (_e2348 * bitcast<f32>(_e2346));
                                                                                                         }
-                                                                                                        let _e2353 = phi_2088_;
-                                                                                                        local_233 = _e2353;
-                                                                                                        let _e2354 = local_224;
-                                                                                                        let _e2356 = (_e2354 >> bitcast<u32>(16i));
-                                                                                                        local_316 = select(-1f, 1f, ((_e2356 & 32768u) == 0u));
-                                                                                                        let _e2362 = ((_e2356 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_234 = _e2362;
-                                                                                                        local_235 = (_e2356 & 1023u);
-                                                                                                        if (_e2362 == 0u) {
-                                                                                                            let _e2384 = local_235;
-                                                                                                            let _e2386 = local_316;
-                                                                                                            phi_2120_ = ((_e2386 * f32(_e2384)) * 0.000000059604645f);
+                                                                                                        let _e2356 = phi_2088_;
+                                                                                                        local_233 = _e2356;
+                                                                                                        let _e2357 = local_224;
+                                                                                                        let _e2359 = (_e2357 >> bitcast<u32>(16i));
+                                                                                                        local_316 = select(-1f, 1f, ((_e2359 & 32768u) == 0u));
+                                                                                                        let _e2365 = ((_e2359 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_234 = _e2365;
+                                                                                                        local_235 = (_e2359 & 1023u);
+                                                                                                        if (_e2365 == 0u) {
+                                                                                                            let _e2387 = local_235;
+                                                                                                            let _e2389 = local_316;
+                                                                                                            phi_2120_ = ((_e2389 * f32(_e2387)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2365 = local_234;
-                                                                                                            if (_e2365 == 31u) {
-                                                                                                                let _e2375 = local_235;
-                                                                                                                phi_2117_ = (2139095040u | (_e2375 << bitcast<u32>(13i)));
+                                                                                                            let _e2368 = local_234;
+                                                                                                            if (_e2368 == 31u) {
+                                                                                                                let _e2378 = local_235;
+                                                                                                                phi_2117_ = (2139095040u | (_e2378 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2367 = local_234;
-                                                                                                                let _e2371 = local_235;
-                                                                                                                phi_2117_ = (((_e2367 + 112u) << bitcast<u32>(23i)) | (_e2371 << bitcast<u32>(13i)));
+                                                                                                                let _e2370 = local_234;
+                                                                                                                let _e2374 = local_235;
+                                                                                                                phi_2117_ = (((_e2370 + 112u) << bitcast<u32>(23i)) | (_e2374 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2380 = phi_2117_;
-                                                                                                            let _e2382 = local_316;
-                                                                                                            phi_2120_ = (_e2382 * bitcast<f32>(_e2380));
+                                                                                                            let _e2383 = phi_2117_;
+                                                                                                            let _e2385 = local_316;
+                                                                                                            phi_2120_ = (_e2385 * bitcast<f32>(_e2383));
                                                                                                         }
-                                                                                                        let _e2390 = phi_2120_;
-                                                                                                        let _e2391 = local_227;
-                                                                                                        let _e2392 = local_211;
-                                                                                                        let _e2394 = local_156;
-                                                                                                        let _e2396 = local_211;
-                                                                                                        local_236 = (_e2396 + ((_e2391 - _e2392) * _e2394));
-                                                                                                        let _e2398 = local_230;
-                                                                                                        let _e2399 = local_214;
-                                                                                                        let _e2401 = local_156;
-                                                                                                        let _e2403 = local_214;
-                                                                                                        local_237 = (_e2403 + ((_e2398 - _e2399) * _e2401));
-                                                                                                        let _e2405 = local_233;
-                                                                                                        let _e2406 = local_217;
-                                                                                                        let _e2408 = local_156;
-                                                                                                        let _e2410 = local_217;
-                                                                                                        local_238 = (_e2410 + ((_e2405 - _e2406) * _e2408));
-                                                                                                        let _e2412 = local_220;
-                                                                                                        let _e2414 = local_156;
-                                                                                                        let _e2416 = local_220;
-                                                                                                        local_239 = (_e2416 + ((_e2390 - _e2412) * _e2414));
-                                                                                                        let _e2418 = local_202;
-                                                                                                        let _e2419 = local_149;
-                                                                                                        let _e2421 = local_203;
-                                                                                                        let _e2422 = (_e2421 + (_e2418 * _e2419));
-                                                                                                        local_240 = _e2422;
-                                                                                                        let _e2423 = local_170;
-                                                                                                        let _e2425 = ((_e2422 + _e2423) * 2u);
-                                                                                                        local_241 = _e2425;
-                                                                                                        let _e2426 = local_5;
-                                                                                                        if (_e2425 < _e2426) {
+                                                                                                        let _e2393 = phi_2120_;
+                                                                                                        let _e2394 = local_227;
+                                                                                                        let _e2395 = local_211;
+                                                                                                        let _e2397 = local_156;
+                                                                                                        let _e2399 = local_211;
+                                                                                                        local_236 = (_e2399 + ((_e2394 - _e2395) * _e2397));
+                                                                                                        let _e2401 = local_230;
+                                                                                                        let _e2402 = local_214;
+                                                                                                        let _e2404 = local_156;
+                                                                                                        let _e2406 = local_214;
+                                                                                                        local_237 = (_e2406 + ((_e2401 - _e2402) * _e2404));
+                                                                                                        let _e2408 = local_233;
+                                                                                                        let _e2409 = local_217;
+                                                                                                        let _e2411 = local_156;
+                                                                                                        let _e2413 = local_217;
+                                                                                                        local_238 = (_e2413 + ((_e2408 - _e2409) * _e2411));
+                                                                                                        let _e2415 = local_220;
+                                                                                                        let _e2417 = local_156;
+                                                                                                        let _e2419 = local_220;
+                                                                                                        local_239 = (_e2419 + ((_e2393 - _e2415) * _e2417));
+                                                                                                        let _e2421 = local_202;
+                                                                                                        let _e2422 = local_149;
+                                                                                                        let _e2424 = local_203;
+                                                                                                        let _e2425 = (_e2424 + (_e2421 * _e2422));
+                                                                                                        local_240 = _e2425;
+                                                                                                        let _e2426 = local_170;
+                                                                                                        let _e2428 = ((_e2425 + _e2426) * 2u);
+                                                                                                        local_241 = _e2428;
+                                                                                                        let _e2429 = local_5;
+                                                                                                        if (_e2428 < _e2429) {
                                                                                                         } else {
                                                                                                             phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e2428 = local_241;
-                                                                                                        let _e2431 = global_8.member[_e2428];
-                                                                                                        local_242 = _e2431;
-                                                                                                        let _e2432 = local_241;
-                                                                                                        let _e2433 = (_e2432 + 1u);
-                                                                                                        local_243 = _e2433;
-                                                                                                        let _e2434 = local_5;
-                                                                                                        if (_e2433 < _e2434) {
+                                                                                                        let _e2431 = local_241;
+                                                                                                        let _e2434 = global_8.member[_e2431];
+                                                                                                        local_242 = _e2434;
+                                                                                                        let _e2435 = local_241;
+                                                                                                        let _e2436 = (_e2435 + 1u);
+                                                                                                        local_243 = _e2436;
+                                                                                                        let _e2437 = local_5;
+                                                                                                        if (_e2436 < _e2437) {
                                                                                                         } else {
                                                                                                             phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e2436 = local_243;
-                                                                                                        let _e2439 = global_8.member[_e2436];
-                                                                                                        local_244 = _e2439;
-                                                                                                        let _e2440 = local_242;
-                                                                                                        let _e2441 = (_e2440 & 65535u);
-                                                                                                        local_317 = select(-1f, 1f, ((_e2441 & 32768u) == 0u));
-                                                                                                        let _e2447 = ((_e2441 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_245 = _e2447;
-                                                                                                        local_246 = (_e2441 & 1023u);
-                                                                                                        if (_e2447 == 0u) {
-                                                                                                            let _e2469 = local_246;
-                                                                                                            let _e2471 = local_317;
-                                                                                                            phi_2185_ = ((_e2471 * f32(_e2469)) * 0.000000059604645f);
+                                                                                                        let _e2439 = local_243;
+                                                                                                        let _e2442 = global_8.member[_e2439];
+                                                                                                        local_244 = _e2442;
+                                                                                                        let _e2443 = local_242;
+                                                                                                        let _e2444 = (_e2443 & 65535u);
+                                                                                                        local_317 = select(-1f, 1f, ((_e2444 & 32768u) == 0u));
+                                                                                                        let _e2450 = ((_e2444 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_245 = _e2450;
+                                                                                                        local_246 = (_e2444 & 1023u);
+                                                                                                        if (_e2450 == 0u) {
+                                                                                                            let _e2472 = local_246;
+                                                                                                            let _e2474 = local_317;
+                                                                                                            phi_2185_ = ((_e2474 * f32(_e2472)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2450 = local_245;
-                                                                                                            if (_e2450 == 31u) {
-                                                                                                                let _e2460 = local_246;
-                                                                                                                phi_2182_ = (2139095040u | (_e2460 << bitcast<u32>(13i)));
+                                                                                                            let _e2453 = local_245;
+                                                                                                            if (_e2453 == 31u) {
+                                                                                                                let _e2463 = local_246;
+                                                                                                                phi_2182_ = (2139095040u | (_e2463 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2452 = local_245;
-                                                                                                                let _e2456 = local_246;
-                                                                                                                phi_2182_ = (((_e2452 + 112u) << bitcast<u32>(23i)) | (_e2456 << bitcast<u32>(13i)));
+                                                                                                                let _e2455 = local_245;
+                                                                                                                let _e2459 = local_246;
+                                                                                                                phi_2182_ = (((_e2455 + 112u) << bitcast<u32>(23i)) | (_e2459 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2465 = phi_2182_;
-                                                                                                            let _e2467 = local_317;
-                                                                                                            phi_2185_ = (_e2467 * bitcast<f32>(_e2465));
+                                                                                                            let _e2468 = phi_2182_;
+                                                                                                            let _e2470 = local_317;
+                                                                                                            phi_2185_ = (_e2470 * bitcast<f32>(_e2468));
                                                                                                         }
-                                                                                                        let _e2475 = phi_2185_;
-                                                                                                        local_247 = _e2475;
-                                                                                                        let _e2476 = local_242;
-                                                                                                        let _e2478 = (_e2476 >> bitcast<u32>(16i));
-                                                                                                        local_318 = select(-1f, 1f, ((_e2478 & 32768u) == 0u));
-                                                                                                        let _e2484 = ((_e2478 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_248 = _e2484;
-                                                                                                        local_249 = (_e2478 & 1023u);
-                                                                                                        if (_e2484 == 0u) {
-                                                                                                            let _e2506 = local_249;
-                                                                                                            let _e2508 = local_318;
-                                                                                                            phi_2217_ = ((_e2508 * f32(_e2506)) * 0.000000059604645f);
+                                                                                                        let _e2478 = phi_2185_;
+                                                                                                        local_247 = _e2478;
+                                                                                                        let _e2479 = local_242;
+                                                                                                        let _e2481 = (_e2479 >> bitcast<u32>(16i));
+                                                                                                        local_318 = select(-1f, 1f, ((_e2481 & 32768u) == 0u));
+                                                                                                        let _e2487 = ((_e2481 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_248 = _e2487;
+                                                                                                        local_249 = (_e2481 & 1023u);
+                                                                                                        if (_e2487 == 0u) {
+                                                                                                            let _e2509 = local_249;
+                                                                                                            let _e2511 = local_318;
+                                                                                                            phi_2217_ = ((_e2511 * f32(_e2509)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2487 = local_248;
-                                                                                                            if (_e2487 == 31u) {
-                                                                                                                let _e2497 = local_249;
-                                                                                                                phi_2214_ = (2139095040u | (_e2497 << bitcast<u32>(13i)));
+                                                                                                            let _e2490 = local_248;
+                                                                                                            if (_e2490 == 31u) {
+                                                                                                                let _e2500 = local_249;
+                                                                                                                phi_2214_ = (2139095040u | (_e2500 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2489 = local_248;
-                                                                                                                let _e2493 = local_249;
-                                                                                                                phi_2214_ = (((_e2489 + 112u) << bitcast<u32>(23i)) | (_e2493 << bitcast<u32>(13i)));
+                                                                                                                let _e2492 = local_248;
+                                                                                                                let _e2496 = local_249;
+                                                                                                                phi_2214_ = (((_e2492 + 112u) << bitcast<u32>(23i)) | (_e2496 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2502 = phi_2214_;
-                                                                                                            let _e2504 = local_318;
-                                                                                                            phi_2217_ = (_e2504 * bitcast<f32>(_e2502));
+                                                                                                            let _e2505 = phi_2214_;
+                                                                                                            let _e2507 = local_318;
+                                                                                                            phi_2217_ = (_e2507 * bitcast<f32>(_e2505));
                                                                                                         }
-                                                                                                        let _e2512 = phi_2217_;
-                                                                                                        local_250 = _e2512;
-                                                                                                        let _e2513 = local_244;
-                                                                                                        let _e2514 = (_e2513 & 65535u);
-                                                                                                        local_319 = select(-1f, 1f, ((_e2514 & 32768u) == 0u));
-                                                                                                        let _e2520 = ((_e2514 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_251 = _e2520;
-                                                                                                        local_252 = (_e2514 & 1023u);
-                                                                                                        if (_e2520 == 0u) {
-                                                                                                            let _e2542 = local_252;
-                                                                                                            let _e2544 = local_319;
-                                                                                                            phi_2249_ = ((_e2544 * f32(_e2542)) * 0.000000059604645f);
+                                                                                                        let _e2515 = phi_2217_;
+                                                                                                        local_250 = _e2515;
+                                                                                                        let _e2516 = local_244;
+                                                                                                        let _e2517 = (_e2516 & 65535u);
+                                                                                                        local_319 = select(-1f, 1f, ((_e2517 & 32768u) == 0u));
+                                                                                                        let _e2523 = ((_e2517 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_251 = _e2523;
+                                                                                                        local_252 = (_e2517 & 1023u);
+                                                                                                        if (_e2523 == 0u) {
+                                                                                                            let _e2545 = local_252;
+                                                                                                            let _e2547 = local_319;
+                                                                                                            phi_2249_ = ((_e2547 * f32(_e2545)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2523 = local_251;
-                                                                                                            if (_e2523 == 31u) {
-                                                                                                                let _e2533 = local_252;
-                                                                                                                phi_2246_ = (2139095040u | (_e2533 << bitcast<u32>(13i)));
+                                                                                                            let _e2526 = local_251;
+                                                                                                            if (_e2526 == 31u) {
+                                                                                                                let _e2536 = local_252;
+                                                                                                                phi_2246_ = (2139095040u | (_e2536 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2525 = local_251;
-                                                                                                                let _e2529 = local_252;
-                                                                                                                phi_2246_ = (((_e2525 + 112u) << bitcast<u32>(23i)) | (_e2529 << bitcast<u32>(13i)));
+                                                                                                                let _e2528 = local_251;
+                                                                                                                let _e2532 = local_252;
+                                                                                                                phi_2246_ = (((_e2528 + 112u) << bitcast<u32>(23i)) | (_e2532 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2538 = phi_2246_;
-                                                                                                            let _e2540 = local_319;
-                                                                                                            phi_2249_ = (_e2540 * bitcast<f32>(_e2538));
+                                                                                                            let _e2541 = phi_2246_;
+                                                                                                            let _e2543 = local_319;
+                                                                                                            phi_2249_ = (_e2543 * bitcast<f32>(_e2541));
                                                                                                         }
-                                                                                                        let _e2548 = phi_2249_;
-                                                                                                        local_253 = _e2548;
-                                                                                                        let _e2549 = local_244;
-                                                                                                        let _e2551 = (_e2549 >> bitcast<u32>(16i));
-                                                                                                        local_320 = select(-1f, 1f, ((_e2551 & 32768u) == 0u));
-                                                                                                        let _e2557 = ((_e2551 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_254 = _e2557;
-                                                                                                        local_255 = (_e2551 & 1023u);
-                                                                                                        if (_e2557 == 0u) {
-                                                                                                            let _e2579 = local_255;
-                                                                                                            let _e2581 = local_320;
-                                                                                                            phi_2281_ = ((_e2581 * f32(_e2579)) * 0.000000059604645f);
+                                                                                                        let _e2551 = phi_2249_;
+                                                                                                        local_253 = _e2551;
+                                                                                                        let _e2552 = local_244;
+                                                                                                        let _e2554 = (_e2552 >> bitcast<u32>(16i));
+                                                                                                        local_320 = select(-1f, 1f, ((_e2554 & 32768u) == 0u));
+                                                                                                        let _e2560 = ((_e2554 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_254 = _e2560;
+                                                                                                        local_255 = (_e2554 & 1023u);
+                                                                                                        if (_e2560 == 0u) {
+                                                                                                            let _e2582 = local_255;
+                                                                                                            let _e2584 = local_320;
+                                                                                                            phi_2281_ = ((_e2584 * f32(_e2582)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2560 = local_254;
-                                                                                                            if (_e2560 == 31u) {
-                                                                                                                let _e2570 = local_255;
-                                                                                                                phi_2278_ = (2139095040u | (_e2570 << bitcast<u32>(13i)));
+                                                                                                            let _e2563 = local_254;
+                                                                                                            if (_e2563 == 31u) {
+                                                                                                                let _e2573 = local_255;
+                                                                                                                phi_2278_ = (2139095040u | (_e2573 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2562 = local_254;
-                                                                                                                let _e2566 = local_255;
-                                                                                                                phi_2278_ = (((_e2562 + 112u) << bitcast<u32>(23i)) | (_e2566 << bitcast<u32>(13i)));
+                                                                                                                let _e2565 = local_254;
+                                                                                                                let _e2569 = local_255;
+                                                                                                                phi_2278_ = (((_e2565 + 112u) << bitcast<u32>(23i)) | (_e2569 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2575 = phi_2278_;
-                                                                                                            let _e2577 = local_320;
-                                                                                                            phi_2281_ = (_e2577 * bitcast<f32>(_e2575));
+                                                                                                            let _e2578 = phi_2278_;
+                                                                                                            let _e2580 = local_320;
+                                                                                                            phi_2281_ = (_e2580 * bitcast<f32>(_e2578));
                                                                                                         }
-                                                                                                        let _e2585 = phi_2281_;
-                                                                                                        local_256 = _e2585;
-                                                                                                        let _e2586 = local_240;
-                                                                                                        let _e2587 = local_180;
-                                                                                                        let _e2589 = ((_e2586 + _e2587) * 2u);
-                                                                                                        local_257 = _e2589;
-                                                                                                        let _e2590 = local_5;
-                                                                                                        if (_e2589 < _e2590) {
+                                                                                                        let _e2588 = phi_2281_;
+                                                                                                        local_256 = _e2588;
+                                                                                                        let _e2589 = local_240;
+                                                                                                        let _e2590 = local_180;
+                                                                                                        let _e2592 = ((_e2589 + _e2590) * 2u);
+                                                                                                        local_257 = _e2592;
+                                                                                                        let _e2593 = local_5;
+                                                                                                        if (_e2592 < _e2593) {
                                                                                                         } else {
                                                                                                             phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e2592 = local_257;
-                                                                                                        let _e2595 = global_8.member[_e2592];
-                                                                                                        local_258 = _e2595;
-                                                                                                        let _e2596 = local_257;
-                                                                                                        let _e2597 = (_e2596 + 1u);
-                                                                                                        local_259 = _e2597;
-                                                                                                        let _e2598 = local_5;
-                                                                                                        if (_e2597 < _e2598) {
+                                                                                                        let _e2595 = local_257;
+                                                                                                        let _e2598 = global_8.member[_e2595];
+                                                                                                        local_258 = _e2598;
+                                                                                                        let _e2599 = local_257;
+                                                                                                        let _e2600 = (_e2599 + 1u);
+                                                                                                        local_259 = _e2600;
+                                                                                                        let _e2601 = local_5;
+                                                                                                        if (_e2600 < _e2601) {
                                                                                                         } else {
                                                                                                             phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e2600 = local_259;
-                                                                                                        let _e2603 = global_8.member[_e2600];
-                                                                                                        local_260 = _e2603;
-                                                                                                        let _e2604 = local_258;
-                                                                                                        let _e2605 = (_e2604 & 65535u);
-                                                                                                        local_321 = select(-1f, 1f, ((_e2605 & 32768u) == 0u));
-                                                                                                        let _e2611 = ((_e2605 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_261 = _e2611;
-                                                                                                        local_262 = (_e2605 & 1023u);
-                                                                                                        if (_e2611 == 0u) {
-                                                                                                            let _e2633 = local_262;
-                                                                                                            let _e2635 = local_321;
-                                                                                                            phi_2334_ = ((_e2635 * f32(_e2633)) * 0.000000059604645f);
+                                                                                                        let _e2603 = local_259;
+                                                                                                        let _e2606 = global_8.member[_e2603];
+                                                                                                        local_260 = _e2606;
+                                                                                                        let _e2607 = local_258;
+                                                                                                        let _e2608 = (_e2607 & 65535u);
+                                                                                                        local_321 = select(-1f, 1f, ((_e2608 & 32768u) == 0u));
+                                                                                                        let _e2614 = ((_e2608 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_261 = _e2614;
+                                                                                                        local_262 = (_e2608 & 1023u);
+                                                                                                        if (_e2614 == 0u) {
+                                                                                                            let _e2636 = local_262;
+                                                                                                            let _e2638 = local_321;
+                                                                                                            phi_2334_ = ((_e2638 * f32(_e2636)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2614 = local_261;
-                                                                                                            if (_e2614 == 31u) {
-                                                                                                                let _e2624 = local_262;
-                                                                                                                phi_2331_ = (2139095040u | (_e2624 << bitcast<u32>(13i)));
+                                                                                                            let _e2617 = local_261;
+                                                                                                            if (_e2617 == 31u) {
+                                                                                                                let _e2627 = local_262;
+                                                                                                                phi_2331_ = (2139095040u | (_e2627 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2616 = local_261;
-                                                                                                                let _e2620 = local_262;
-                                                                                                                phi_2331_ = (((_e2616 + 112u) << bitcast<u32>(23i)) | (_e2620 << bitcast<u32>(13i)));
+                                                                                                                let _e2619 = local_261;
+                                                                                                                let _e2623 = local_262;
+                                                                                                                phi_2331_ = (((_e2619 + 112u) << bitcast<u32>(23i)) | (_e2623 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2629 = phi_2331_;
-                                                                                                            let _e2631 = local_321;
-                                                                                                            phi_2334_ = (_e2631 * bitcast<f32>(_e2629));
+                                                                                                            let _e2632 = phi_2331_;
+                                                                                                            let _e2634 = local_321;
+                                                                                                            phi_2334_ = (_e2634 * bitcast<f32>(_e2632));
                                                                                                         }
-                                                                                                        let _e2639 = phi_2334_;
-                                                                                                        local_263 = _e2639;
-                                                                                                        let _e2640 = local_258;
-                                                                                                        let _e2642 = (_e2640 >> bitcast<u32>(16i));
-                                                                                                        local_322 = select(-1f, 1f, ((_e2642 & 32768u) == 0u));
-                                                                                                        let _e2648 = ((_e2642 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_264 = _e2648;
-                                                                                                        local_265 = (_e2642 & 1023u);
-                                                                                                        if (_e2648 == 0u) {
-                                                                                                            let _e2670 = local_265;
-                                                                                                            let _e2672 = local_322;
-                                                                                                            phi_2366_ = ((_e2672 * f32(_e2670)) * 0.000000059604645f);
+                                                                                                        let _e2642 = phi_2334_;
+                                                                                                        local_263 = _e2642;
+                                                                                                        let _e2643 = local_258;
+                                                                                                        let _e2645 = (_e2643 >> bitcast<u32>(16i));
+                                                                                                        local_322 = select(-1f, 1f, ((_e2645 & 32768u) == 0u));
+                                                                                                        let _e2651 = ((_e2645 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_264 = _e2651;
+                                                                                                        local_265 = (_e2645 & 1023u);
+                                                                                                        if (_e2651 == 0u) {
+                                                                                                            let _e2673 = local_265;
+                                                                                                            let _e2675 = local_322;
+                                                                                                            phi_2366_ = ((_e2675 * f32(_e2673)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2651 = local_264;
-                                                                                                            if (_e2651 == 31u) {
-                                                                                                                let _e2661 = local_265;
-                                                                                                                phi_2363_ = (2139095040u | (_e2661 << bitcast<u32>(13i)));
+                                                                                                            let _e2654 = local_264;
+                                                                                                            if (_e2654 == 31u) {
+                                                                                                                let _e2664 = local_265;
+                                                                                                                phi_2363_ = (2139095040u | (_e2664 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2653 = local_264;
-                                                                                                                let _e2657 = local_265;
-                                                                                                                phi_2363_ = (((_e2653 + 112u) << bitcast<u32>(23i)) | (_e2657 << bitcast<u32>(13i)));
+                                                                                                                let _e2656 = local_264;
+                                                                                                                let _e2660 = local_265;
+                                                                                                                phi_2363_ = (((_e2656 + 112u) << bitcast<u32>(23i)) | (_e2660 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2666 = phi_2363_;
-                                                                                                            let _e2668 = local_322;
-                                                                                                            phi_2366_ = (_e2668 * bitcast<f32>(_e2666));
+                                                                                                            let _e2669 = phi_2363_;
+                                                                                                            let _e2671 = local_322;
+                                                                                                            phi_2366_ = (_e2671 * bitcast<f32>(_e2669));
                                                                                                         }
-                                                                                                        let _e2676 = phi_2366_;
-                                                                                                        local_266 = _e2676;
-                                                                                                        let _e2677 = local_260;
-                                                                                                        let _e2678 = (_e2677 & 65535u);
-                                                                                                        local_323 = select(-1f, 1f, ((_e2678 & 32768u) == 0u));
-                                                                                                        let _e2684 = ((_e2678 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_267 = _e2684;
-                                                                                                        local_268 = (_e2678 & 1023u);
-                                                                                                        if (_e2684 == 0u) {
-                                                                                                            let _e2706 = local_268;
-                                                                                                            let _e2708 = local_323;
-                                                                                                            phi_2398_ = ((_e2708 * f32(_e2706)) * 0.000000059604645f);
+                                                                                                        let _e2679 = phi_2366_;
+                                                                                                        local_266 = _e2679;
+                                                                                                        let _e2680 = local_260;
+                                                                                                        let _e2681 = (_e2680 & 65535u);
+                                                                                                        local_323 = select(-1f, 1f, ((_e2681 & 32768u) == 0u));
+                                                                                                        let _e2687 = ((_e2681 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_267 = _e2687;
+                                                                                                        local_268 = (_e2681 & 1023u);
+                                                                                                        if (_e2687 == 0u) {
+                                                                                                            let _e2709 = local_268;
+                                                                                                            let _e2711 = local_323;
+                                                                                                            phi_2398_ = ((_e2711 * f32(_e2709)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2687 = local_267;
-                                                                                                            if (_e2687 == 31u) {
-                                                                                                                let _e2697 = local_268;
-                                                                                                                phi_2395_ = (2139095040u | (_e2697 << bitcast<u32>(13i)));
+                                                                                                            let _e2690 = local_267;
+                                                                                                            if (_e2690 == 31u) {
+                                                                                                                let _e2700 = local_268;
+                                                                                                                phi_2395_ = (2139095040u | (_e2700 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2689 = local_267;
-                                                                                                                let _e2693 = local_268;
-                                                                                                                phi_2395_ = (((_e2689 + 112u) << bitcast<u32>(23i)) | (_e2693 << bitcast<u32>(13i)));
+                                                                                                                let _e2692 = local_267;
+                                                                                                                let _e2696 = local_268;
+                                                                                                                phi_2395_ = (((_e2692 + 112u) << bitcast<u32>(23i)) | (_e2696 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2702 = phi_2395_;
-                                                                                                            let _e2704 = local_323;
-                                                                                                            phi_2398_ = (_e2704 * bitcast<f32>(_e2702));
+                                                                                                            let _e2705 = phi_2395_;
+                                                                                                            let _e2707 = local_323;
+                                                                                                            phi_2398_ = (_e2707 * bitcast<f32>(_e2705));
                                                                                                         }
-                                                                                                        let _e2712 = phi_2398_;
-                                                                                                        local_269 = _e2712;
-                                                                                                        let _e2713 = local_260;
-                                                                                                        let _e2715 = (_e2713 >> bitcast<u32>(16i));
-                                                                                                        local_324 = select(-1f, 1f, ((_e2715 & 32768u) == 0u));
-                                                                                                        let _e2721 = ((_e2715 >> bitcast<u32>(10i)) & 31u);
-                                                                                                        local_270 = _e2721;
-                                                                                                        local_271 = (_e2715 & 1023u);
-                                                                                                        if (_e2721 == 0u) {
-                                                                                                            let _e2743 = local_271;
-                                                                                                            let _e2745 = local_324;
-                                                                                                            phi_2430_ = ((_e2745 * f32(_e2743)) * 0.000000059604645f);
+                                                                                                        let _e2715 = phi_2398_;
+                                                                                                        local_269 = _e2715;
+                                                                                                        let _e2716 = local_260;
+                                                                                                        let _e2718 = (_e2716 >> bitcast<u32>(16i));
+                                                                                                        local_324 = select(-1f, 1f, ((_e2718 & 32768u) == 0u));
+                                                                                                        let _e2724 = ((_e2718 >> bitcast<u32>(10i)) & 31u);
+                                                                                                        local_270 = _e2724;
+                                                                                                        local_271 = (_e2718 & 1023u);
+                                                                                                        if (_e2724 == 0u) {
+                                                                                                            let _e2746 = local_271;
+                                                                                                            let _e2748 = local_324;
+                                                                                                            phi_2430_ = ((_e2748 * f32(_e2746)) * 0.000000059604645f);
                                                                                                         } else {
-                                                                                                            let _e2724 = local_270;
-                                                                                                            if (_e2724 == 31u) {
-                                                                                                                let _e2734 = local_271;
-                                                                                                                phi_2427_ = (2139095040u | (_e2734 << bitcast<u32>(13i)));
+                                                                                                            let _e2727 = local_270;
+                                                                                                            if (_e2727 == 31u) {
+                                                                                                                let _e2737 = local_271;
+                                                                                                                phi_2427_ = (2139095040u | (_e2737 << bitcast<u32>(13i)));
                                                                                                             } else {
-                                                                                                                let _e2726 = local_270;
-                                                                                                                let _e2730 = local_271;
-                                                                                                                phi_2427_ = (((_e2726 + 112u) << bitcast<u32>(23i)) | (_e2730 << bitcast<u32>(13i)));
+                                                                                                                let _e2729 = local_270;
+                                                                                                                let _e2733 = local_271;
+                                                                                                                phi_2427_ = (((_e2729 + 112u) << bitcast<u32>(23i)) | (_e2733 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2739 = phi_2427_;
-                                                                                                            let _e2741 = local_324;
-                                                                                                            phi_2430_ = (_e2741 * bitcast<f32>(_e2739));
+                                                                                                            let _e2742 = phi_2427_;
+                                                                                                            let _e2744 = local_324;
+                                                                                                            phi_2430_ = (_e2744 * bitcast<f32>(_e2742));
                                                                                                         }
-                                                                                                        let _e2749 = phi_2430_;
-                                                                                                        let _e2750 = local_263;
-                                                                                                        let _e2751 = local_247;
-                                                                                                        let _e2753 = local_156;
-                                                                                                        let _e2755 = local_247;
-                                                                                                        let _e2757 = local_266;
-                                                                                                        let _e2758 = local_250;
-                                                                                                        let _e2760 = local_156;
-                                                                                                        let _e2762 = local_250;
-                                                                                                        let _e2764 = local_269;
-                                                                                                        let _e2765 = local_253;
-                                                                                                        let _e2767 = local_156;
-                                                                                                        let _e2769 = local_253;
-                                                                                                        let _e2771 = local_256;
-                                                                                                        let _e2773 = local_156;
-                                                                                                        let _e2775 = local_256;
-                                                                                                        let _e2777 = local_236;
-                                                                                                        let _e2779 = local_155;
-                                                                                                        let _e2781 = local_236;
-                                                                                                        let _e2783 = local_237;
-                                                                                                        let _e2785 = local_155;
-                                                                                                        let _e2787 = local_237;
-                                                                                                        let _e2789 = local_238;
-                                                                                                        let _e2791 = local_155;
-                                                                                                        let _e2793 = local_238;
-                                                                                                        let _e2795 = local_239;
-                                                                                                        let _e2797 = local_155;
-                                                                                                        let _e2799 = local_239;
-                                                                                                        let _e2801 = local_148;
-                                                                                                        let _e2803 = local_148;
-                                                                                                        let _e2805 = local_148;
-                                                                                                        let _e2807 = local_148;
-                                                                                                        let _e2809 = local_145;
+                                                                                                        let _e2752 = phi_2430_;
+                                                                                                        let _e2753 = local_263;
+                                                                                                        let _e2754 = local_247;
+                                                                                                        let _e2756 = local_156;
+                                                                                                        let _e2758 = local_247;
+                                                                                                        let _e2760 = local_266;
+                                                                                                        let _e2761 = local_250;
+                                                                                                        let _e2763 = local_156;
+                                                                                                        let _e2765 = local_250;
+                                                                                                        let _e2767 = local_269;
+                                                                                                        let _e2768 = local_253;
+                                                                                                        let _e2770 = local_156;
+                                                                                                        let _e2772 = local_253;
+                                                                                                        let _e2774 = local_256;
+                                                                                                        let _e2776 = local_156;
+                                                                                                        let _e2778 = local_256;
+                                                                                                        let _e2780 = local_236;
+                                                                                                        let _e2782 = local_155;
+                                                                                                        let _e2784 = local_236;
+                                                                                                        let _e2786 = local_237;
+                                                                                                        let _e2788 = local_155;
+                                                                                                        let _e2790 = local_237;
+                                                                                                        let _e2792 = local_238;
+                                                                                                        let _e2794 = local_155;
+                                                                                                        let _e2796 = local_238;
+                                                                                                        let _e2798 = local_239;
+                                                                                                        let _e2800 = local_155;
+                                                                                                        let _e2802 = local_239;
+                                                                                                        let _e2804 = local_148;
+                                                                                                        let _e2806 = local_148;
+                                                                                                        let _e2808 = local_148;
+                                                                                                        let _e2810 = local_148;
                                                                                                         let _e2812 = local_145;
                                                                                                         let _e2815 = local_145;
                                                                                                         let _e2818 = local_145;
-                                                                                                        let _e2822 = local_144;
-                                                                                                        phi_1449_ = (_e2822 + 1u);
-                                                                                                        phi_1452_ = type_5((_e2809.member + ((_e2781 + (((_e2755 + ((_e2750 - _e2751) * _e2753)) - _e2777) * _e2779)) * _e2801)), (_e2812.member_1 + ((_e2787 + (((_e2762 + ((_e2757 - _e2758) * _e2760)) - _e2783) * _e2785)) * _e2803)), (_e2815.member_2 + ((_e2793 + (((_e2769 + ((_e2764 - _e2765) * _e2767)) - _e2789) * _e2791)) * _e2805)), (_e2818.member_3 + ((_e2799 + (((_e2775 + ((_e2749 - _e2771) * _e2773)) - _e2795) * _e2797)) * _e2807)));
+                                                                                                        let _e2821 = local_145;
+                                                                                                        let _e2825 = local_144;
+                                                                                                        phi_1449_ = (_e2825 + 1u);
+                                                                                                        phi_1452_ = type_5((_e2812.member + ((_e2784 + (((_e2758 + ((_e2753 - _e2754) * _e2756)) - _e2780) * _e2782)) * _e2804)), (_e2815.member_1 + ((_e2790 + (((_e2765 + ((_e2760 - _e2761) * _e2763)) - _e2786) * _e2788)) * _e2806)), (_e2818.member_2 + ((_e2796 + (((_e2772 + ((_e2767 - _e2768) * _e2770)) - _e2792) * _e2794)) * _e2808)), (_e2821.member_3 + ((_e2802 + (((_e2778 + ((_e2752 - _e2774) * _e2776)) - _e2798) * _e2800)) * _e2810)));
                                                                                                     } else {
                                                                                                         phi_1449_ = u32();
                                                                                                         phi_1452_ = type_5();
                                                                                                     }
-                                                                                                    let _e2825 = phi_1449_;
-                                                                                                    let _e2827 = phi_1452_;
+                                                                                                    let _e2828 = phi_1449_;
+                                                                                                    let _e2830 = phi_1452_;
                                                                                                     continue;
                                                                                                     continuing {
-                                                                                                        let _e2828 = local_146;
-                                                                                                        phi_1448_ = _e2825;
-                                                                                                        phi_1451_ = _e2827;
-                                                                                                        phi_3210_ = _e1703;
-                                                                                                        break if !(_e2828);
+                                                                                                        let _e2831 = local_146;
+                                                                                                        phi_1448_ = _e2828;
+                                                                                                        phi_1451_ = _e2830;
+                                                                                                        phi_3210_ = _e1704;
+                                                                                                        break if !(_e2831);
                                                                                                     }
                                                                                                 }
-                                                                                                let _e2831 = phi_3210_;
-                                                                                                phi_3316_ = _e2831;
-                                                                                                if _e2831 {
+                                                                                                let _e2834 = phi_3210_;
+                                                                                                phi_3316_ = _e2834;
+                                                                                                if _e2834 {
                                                                                                     break;
                                                                                                 }
-                                                                                                let _e2832 = local_142;
-                                                                                                phi_3317_ = _e2831;
-                                                                                                phi_1420_ = (_e2832 + 1u);
-                                                                                                let _e3130 = local_331;
-                                                                                                phi_1423_ = _e3130;
+                                                                                                let _e2835 = local_142;
+                                                                                                phi_3317_ = _e2834;
+                                                                                                phi_1420_ = (_e2835 + 1u);
+                                                                                                let _e3133 = local_331;
+                                                                                                phi_1423_ = _e3133;
                                                                                             } else {
-                                                                                                phi_3317_ = _e1703;
+                                                                                                phi_3317_ = _e1704;
                                                                                                 phi_1420_ = u32();
                                                                                                 phi_1423_ = type_5();
                                                                                             }
-                                                                                            let _e2835 = phi_3317_;
-                                                                                            let _e2837 = phi_1420_;
-                                                                                            let _e2839 = phi_1423_;
+                                                                                            let _e2838 = phi_3317_;
+                                                                                            let _e2840 = phi_1420_;
+                                                                                            let _e2842 = phi_1423_;
                                                                                             continue;
                                                                                             continuing {
-                                                                                                let _e2840 = local_143;
-                                                                                                phi_3256_ = _e2835;
-                                                                                                phi_1419_ = _e2837;
-                                                                                                phi_1422_ = _e2839;
-                                                                                                phi_3316_ = _e2835;
-                                                                                                break if !(_e2840);
+                                                                                                let _e2843 = local_143;
+                                                                                                phi_3256_ = _e2838;
+                                                                                                phi_1419_ = _e2840;
+                                                                                                phi_1422_ = _e2842;
+                                                                                                phi_3316_ = _e2838;
+                                                                                                break if !(_e2843);
                                                                                             }
                                                                                         }
-                                                                                        let _e2843 = phi_3316_;
-                                                                                        phi_3318_ = _e2843;
-                                                                                        if _e2843 {
+                                                                                        let _e2846 = phi_3316_;
+                                                                                        phi_3318_ = _e2846;
+                                                                                        if _e2846 {
                                                                                             break;
                                                                                         }
-                                                                                        let _e2844 = local_139;
-                                                                                        phi_3319_ = _e2843;
-                                                                                        phi_1403_ = (_e2844 + 1u);
-                                                                                        let _e3136 = local_332;
-                                                                                        phi_1406_ = _e3136;
+                                                                                        let _e2847 = local_139;
+                                                                                        phi_3319_ = _e2846;
+                                                                                        phi_1403_ = (_e2847 + 1u);
+                                                                                        let _e3139 = local_332;
+                                                                                        phi_1406_ = _e3139;
                                                                                     } else {
-                                                                                        phi_3319_ = _e1695;
+                                                                                        phi_3319_ = _e1696;
                                                                                         phi_1403_ = u32();
                                                                                         phi_1406_ = type_5();
                                                                                     }
-                                                                                    let _e2847 = phi_3319_;
-                                                                                    let _e2849 = phi_1403_;
-                                                                                    let _e2851 = phi_1406_;
+                                                                                    let _e2850 = phi_3319_;
+                                                                                    let _e2852 = phi_1403_;
+                                                                                    let _e2854 = phi_1406_;
                                                                                     continue;
                                                                                     continuing {
-                                                                                        let _e2852 = local_141;
-                                                                                        phi_3257_ = _e2847;
-                                                                                        phi_1402_ = _e2849;
-                                                                                        phi_1405_ = _e2851;
-                                                                                        phi_3318_ = _e2847;
-                                                                                        break if !(_e2852);
+                                                                                        let _e2855 = local_141;
+                                                                                        phi_3257_ = _e2850;
+                                                                                        phi_1402_ = _e2852;
+                                                                                        phi_1405_ = _e2854;
+                                                                                        phi_3318_ = _e2850;
+                                                                                        break if !(_e2855);
                                                                                     }
                                                                                 }
-                                                                                let _e2855 = phi_3318_;
-                                                                                phi_3320_ = _e2855;
-                                                                                if _e2855 {
+                                                                                let _e2858 = phi_3318_;
+                                                                                phi_3320_ = _e2858;
+                                                                                if _e2858 {
                                                                                     break;
                                                                                 }
-                                                                                let _e2856 = local_140;
-                                                                                let _e2858 = local_140;
-                                                                                let _e2860 = local_140;
-                                                                                let _e2862 = local_140;
-                                                                                phi_3341_ = _e2855;
-                                                                                let _e3141 = local_333;
-                                                                                phi_2483_ = _e3141;
+                                                                                let _e2859 = local_140;
+                                                                                let _e2861 = local_140;
+                                                                                let _e2863 = local_140;
+                                                                                let _e2865 = local_140;
+                                                                                phi_3341_ = _e2858;
+                                                                                let _e3144 = local_333;
+                                                                                phi_2483_ = _e3144;
                                                                             }
-                                                                            let _e2865 = phi_3341_;
-                                                                            let _e2867 = phi_2483_;
-                                                                            phi_3340_ = _e2865;
-                                                                            phi_2484_ = _e2867;
+                                                                            let _e2868 = phi_3341_;
+                                                                            let _e2870 = phi_2483_;
+                                                                            phi_3340_ = _e2868;
+                                                                            phi_2484_ = _e2870;
                                                                             phi_2485_ = _e1513;
                                                                         }
-                                                                        let _e2869 = phi_3340_;
-                                                                        let _e2871 = phi_2484_;
-                                                                        let _e2873 = phi_2485_;
-                                                                        if _e2873 {
+                                                                        let _e2872 = phi_3340_;
+                                                                        let _e2874 = phi_2484_;
+                                                                        let _e2876 = phi_2485_;
+                                                                        if _e2876 {
                                                                             phi_2489_ = type_5(1f, 1f, 1f, 1f);
                                                                         } else {
-                                                                            phi_2489_ = _e2871;
+                                                                            phi_2489_ = _e2874;
                                                                         }
-                                                                        let _e2875 = phi_2489_;
-                                                                        phi_3338_ = _e2869;
-                                                                        phi_2490_ = _e2875;
+                                                                        let _e2878 = phi_2489_;
+                                                                        phi_3338_ = _e2872;
+                                                                        phi_2490_ = _e2878;
                                                                     }
-                                                                    let _e2877 = phi_3338_;
-                                                                    let _e2879 = phi_2490_;
-                                                                    phi_3337_ = _e2877;
-                                                                    phi_2491_ = _e2879;
+                                                                    let _e2880 = phi_3338_;
+                                                                    let _e2882 = phi_2490_;
+                                                                    phi_3337_ = _e2880;
+                                                                    phi_2491_ = _e2882;
                                                                     phi_2492_ = _e1477;
                                                                 }
-                                                                let _e2881 = phi_3337_;
-                                                                let _e2883 = phi_2491_;
-                                                                let _e2885 = phi_2492_;
-                                                                if _e2885 {
+                                                                let _e2884 = phi_3337_;
+                                                                let _e2886 = phi_2491_;
+                                                                let _e2888 = phi_2492_;
+                                                                if _e2888 {
                                                                     phi_2496_ = type_5(1f, 1f, 1f, 1f);
                                                                 } else {
-                                                                    phi_2496_ = _e2883;
+                                                                    phi_2496_ = _e2886;
                                                                 }
-                                                                let _e2887 = phi_2496_;
-                                                                let _e2889 = local_123;
-                                                                let _e2891 = local_110;
-                                                                local_272 = ((_e2889 * _e2887.member_3) * _e2891);
-                                                                let _e2893 = local_84;
-                                                                if ((_e2893 & 4u) == 0u) {
-                                                                    let _e2907 = local_272;
-                                                                    phi_2517_ = (_e2907 > 0f);
+                                                                let _e2890 = phi_2496_;
+                                                                let _e2892 = local_123;
+                                                                let _e2894 = local_110;
+                                                                local_272 = ((_e2892 * _e2890.member_3) * _e2894);
+                                                                let _e2896 = local_84;
+                                                                if ((_e2896 & 4u) == 0u) {
+                                                                    let _e2910 = local_272;
+                                                                    phi_2517_ = (_e2910 > 0f);
                                                                 } else {
-                                                                    let _e2896 = local_82;
-                                                                    let _e2897 = (_e2896 + 7u);
-                                                                    local_273 = _e2897;
-                                                                    let _e2898 = local_3;
-                                                                    if (_e2897 < _e2898) {
+                                                                    let _e2899 = local_82;
+                                                                    let _e2900 = (_e2899 + 7u);
+                                                                    local_273 = _e2900;
+                                                                    let _e2901 = local_3;
+                                                                    if (_e2900 < _e2901) {
                                                                     } else {
                                                                         phi_3320_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e2900 = local_273;
-                                                                    let _e2903 = global_5.member[_e2900];
-                                                                    let _e2905 = local_272;
-                                                                    phi_2517_ = (_e2905 >= bitcast<f32>(_e2903));
+                                                                    let _e2903 = local_273;
+                                                                    let _e2906 = global_5.member[_e2903];
+                                                                    let _e2908 = local_272;
+                                                                    phi_2517_ = (_e2908 >= bitcast<f32>(_e2906));
                                                                 }
-                                                                let _e2910 = phi_2517_;
-                                                                phi_3334_ = _e2881;
-                                                                phi_2518_ = _e2910;
+                                                                let _e2913 = phi_2517_;
+                                                                phi_3334_ = _e2884;
+                                                                phi_2518_ = _e2913;
                                                             }
-                                                            let _e2912 = phi_3334_;
-                                                            let _e2914 = phi_2518_;
-                                                            phi_3333_ = _e2912;
-                                                            phi_2519_ = _e2914;
+                                                            let _e2915 = phi_3334_;
+                                                            let _e2917 = phi_2518_;
+                                                            phi_3333_ = _e2915;
+                                                            phi_2519_ = _e2917;
                                                         } else {
                                                             phi_3333_ = _e434;
                                                             phi_2519_ = bool();
                                                         }
-                                                        let _e2916 = phi_3333_;
-                                                        let _e2918 = phi_2519_;
-                                                        let _e2919 = local_81;
-                                                        phi_3332_ = _e2916;
-                                                        phi_2521_ = _e2918;
-                                                        phi_2522_ = select(true, false, _e2919);
+                                                        let _e2919 = phi_3333_;
+                                                        let _e2921 = phi_2519_;
+                                                        let _e2922 = local_81;
+                                                        phi_3332_ = _e2919;
+                                                        phi_2521_ = _e2921;
+                                                        phi_2522_ = select(true, false, _e2922);
                                                     } else {
                                                         phi_3332_ = _e434;
                                                         phi_2521_ = bool();
                                                         phi_2522_ = true;
                                                     }
-                                                    let _e2922 = phi_3332_;
-                                                    let _e2924 = phi_2521_;
-                                                    let _e2926 = phi_2522_;
-                                                    if select(_e2924, false, _e2926) {
-                                                        let _e2928 = local_13;
-                                                        local_274 = bitcast<u32>(f32((_e2928 + 1u)));
-                                                        let _e2932 = local_79;
-                                                        if _e2932 {
+                                                    let _e2925 = phi_3332_;
+                                                    let _e2927 = phi_2521_;
+                                                    let _e2929 = phi_2522_;
+                                                    if select(_e2927, false, _e2929) {
+                                                        let _e2931 = local_13;
+                                                        local_274 = bitcast<u32>(f32((_e2931 + 1u)));
+                                                        let _e2935 = local_79;
+                                                        if _e2935 {
                                                         } else {
                                                             phi_3320_ = true;
                                                             break;
                                                         }
-                                                        let _e2933 = local_274;
-                                                        global_11.member[_e1103] = _e2933;
-                                                        let _e2934 = local_78;
-                                                        let _e2935 = (_e2934 + 1u);
-                                                        local_275 = _e2935;
-                                                        let _e2936 = local_76;
-                                                        local_276 = bitcast<u32>(_e2936);
-                                                        let _e2938 = local_8;
-                                                        if (_e2935 < _e2938) {
+                                                        let _e2936 = local_274;
+                                                        global_11.member[_e1103] = _e2936;
+                                                        let _e2937 = local_78;
+                                                        let _e2938 = (_e2937 + 1u);
+                                                        local_275 = _e2938;
+                                                        let _e2939 = local_76;
+                                                        local_276 = bitcast<u32>(_e2939);
+                                                        let _e2941 = local_8;
+                                                        if (_e2938 < _e2941) {
                                                         } else {
                                                             phi_3320_ = true;
                                                             break;
                                                         }
-                                                        let _e2940 = local_275;
-                                                        let _e2943 = local_276;
-                                                        global_11.member[_e2940] = _e2943;
-                                                        let _e2944 = local_78;
-                                                        let _e2945 = (_e2944 + 2u);
-                                                        local_277 = _e2945;
-                                                        let _e2946 = local_74;
-                                                        local_278 = bitcast<u32>(_e2946);
-                                                        let _e2948 = local_8;
-                                                        if (_e2945 < _e2948) {
+                                                        let _e2943 = local_275;
+                                                        let _e2946 = local_276;
+                                                        global_11.member[_e2943] = _e2946;
+                                                        let _e2947 = local_78;
+                                                        let _e2948 = (_e2947 + 2u);
+                                                        local_277 = _e2948;
+                                                        let _e2949 = local_74;
+                                                        local_278 = bitcast<u32>(_e2949);
+                                                        let _e2951 = local_8;
+                                                        if (_e2948 < _e2951) {
                                                         } else {
                                                             phi_3320_ = true;
                                                             break;
                                                         }
-                                                        let _e2950 = local_277;
-                                                        let _e2953 = local_278;
-                                                        global_11.member[_e2950] = _e2953;
-                                                        let _e2954 = local_78;
-                                                        let _e2955 = (_e2954 + 3u);
-                                                        local_279 = _e2955;
-                                                        let _e2956 = local_75;
-                                                        local_280 = bitcast<u32>(_e2956);
-                                                        let _e2958 = local_8;
-                                                        if (_e2955 < _e2958) {
+                                                        let _e2953 = local_277;
+                                                        let _e2956 = local_278;
+                                                        global_11.member[_e2953] = _e2956;
+                                                        let _e2957 = local_78;
+                                                        let _e2958 = (_e2957 + 3u);
+                                                        local_279 = _e2958;
+                                                        let _e2959 = local_75;
+                                                        local_280 = bitcast<u32>(_e2959);
+                                                        let _e2961 = local_8;
+                                                        if (_e2958 < _e2961) {
                                                         } else {
                                                             phi_3320_ = true;
                                                             break;
                                                         }
-                                                        let _e2960 = local_279;
-                                                        let _e2963 = local_280;
-                                                        global_11.member[_e2960] = _e2963;
+                                                        let _e2963 = local_279;
+                                                        let _e2966 = local_280;
+                                                        global_11.member[_e2963] = _e2966;
                                                     }
-                                                    phi_3329_ = _e2922;
+                                                    phi_3329_ = _e2925;
                                                 } else {
                                                     phi_3329_ = _e434;
                                                 }
-                                                let _e2965 = phi_3329_;
-                                                phi_3328_ = _e2965;
+                                                let _e2968 = phi_3329_;
+                                                phi_3328_ = _e2968;
                                             }
-                                            let _e2967 = phi_3328_;
-                                            phi_3327_ = _e2967;
+                                            let _e2970 = phi_3328_;
+                                            phi_3327_ = _e2970;
                                         }
-                                        let _e2969 = phi_3327_;
-                                        phi_3326_ = _e2969;
+                                        let _e2972 = phi_3327_;
+                                        phi_3326_ = _e2972;
                                     }
-                                    let _e2971 = phi_3326_;
+                                    let _e2974 = phi_3326_;
                                     storageBarrier();
                                     workgroupBarrier();
-                                    phi_3325_ = _e2971;
+                                    phi_3325_ = _e2974;
                                 } else {
                                     phi_3325_ = _e434;
                                 }
-                                let _e2973 = phi_3325_;
-                                phi_3324_ = _e2973;
+                                let _e2976 = phi_3325_;
+                                phi_3324_ = _e2976;
                             } else {
                                 phi_3324_ = _e434;
                             }
-                            let _e2975 = phi_3324_;
-                            phi_3323_ = _e2975;
+                            let _e2978 = phi_3324_;
+                            phi_3323_ = _e2978;
                         } else {
                             phi_3323_ = _e434;
                         }
-                        let _e2977 = phi_3323_;
-                        phi_3322_ = _e2977;
+                        let _e2980 = phi_3323_;
+                        phi_3322_ = _e2980;
                     } else {
                         phi_3322_ = _e434;
                     }
-                    let _e2979 = phi_3322_;
-                    let _e2980 = local_13;
-                    phi_3321_ = _e2979;
-                    phi_184_ = (_e2980 + 1u);
+                    let _e2982 = phi_3322_;
+                    let _e2983 = local_13;
+                    phi_3321_ = _e2982;
+                    phi_184_ = (_e2983 + 1u);
                 } else {
                     phi_3321_ = _e434;
                     phi_184_ = u32();
                 }
-                let _e2983 = phi_3321_;
-                let _e2985 = phi_184_;
+                let _e2986 = phi_3321_;
+                let _e2988 = phi_184_;
                 continue;
                 continuing {
-                    let _e2986 = local_14;
-                    phi_3190_ = _e2983;
-                    phi_183_ = _e2985;
-                    phi_3320_ = _e2983;
-                    break if !(_e2986);
+                    let _e2989 = local_14;
+                    phi_3190_ = _e2986;
+                    phi_183_ = _e2988;
+                    phi_3320_ = _e2986;
+                    break if !(_e2989);
                 }
             }
-            let _e2989 = phi_3320_;
-            if _e2989 {
+            let _e2992 = phi_3320_;
+            if _e2992 {
                 break;
             }
             break;

@@ -610,260 +610,260 @@ fn function_() {
                                                     local_59 = ((((_e545 / _e544) + 1f) * 0.5f) * _e549);
                                                     let _e551 = local_54;
                                                     local_60 = _e551[0];
-                                                    if (_e551[0] != _e551[0]) {
+                                                    if !((_e551[0] == _e551[0])) {
                                                         phi_924_ = true;
                                                     } else {
-                                                        let _e554 = local_57;
-                                                        let _e555 = local_60;
-                                                        phi_924_ = (_e554 <= _e555);
+                                                        let _e555 = local_57;
+                                                        let _e556 = local_60;
+                                                        phi_924_ = (_e555 <= _e556);
                                                     }
-                                                    let _e558 = phi_924_;
-                                                    let _e559 = local_57;
-                                                    let _e560 = local_60;
-                                                    local_83 = select(_e560, _e559, _e558);
-                                                    let _e562 = local_54;
-                                                    local_61 = _e562[1];
-                                                    if (_e562[1] != _e562[1]) {
+                                                    let _e559 = phi_924_;
+                                                    let _e560 = local_57;
+                                                    let _e561 = local_60;
+                                                    local_83 = select(_e561, _e560, _e559);
+                                                    let _e563 = local_54;
+                                                    local_61 = _e563[1];
+                                                    if !((_e563[1] == _e563[1])) {
                                                         phi_939_ = true;
                                                     } else {
-                                                        let _e565 = local_59;
-                                                        let _e566 = local_61;
-                                                        phi_939_ = (_e565 <= _e566);
+                                                        let _e567 = local_59;
+                                                        let _e568 = local_61;
+                                                        phi_939_ = (_e567 <= _e568);
                                                     }
-                                                    let _e569 = phi_939_;
-                                                    let _e570 = local_59;
-                                                    let _e571 = local_61;
-                                                    let _e573 = local_83;
-                                                    let _e575 = local_53;
-                                                    local_62 = _e575[0];
-                                                    if (_e575[0] != _e575[0]) {
+                                                    let _e571 = phi_939_;
+                                                    let _e572 = local_59;
+                                                    let _e573 = local_61;
+                                                    let _e575 = local_83;
+                                                    let _e577 = local_53;
+                                                    local_62 = _e577[0];
+                                                    if !((_e577[0] == _e577[0])) {
                                                         phi_954_ = true;
                                                     } else {
-                                                        let _e578 = local_57;
-                                                        let _e579 = local_62;
-                                                        phi_954_ = (_e578 >= _e579);
+                                                        let _e581 = local_57;
+                                                        let _e582 = local_62;
+                                                        phi_954_ = (_e581 >= _e582);
                                                     }
-                                                    let _e582 = phi_954_;
-                                                    let _e583 = local_57;
-                                                    let _e584 = local_62;
-                                                    local_84 = select(_e584, _e583, _e582);
-                                                    let _e586 = local_53;
-                                                    local_63 = _e586[1];
-                                                    if (_e586[1] != _e586[1]) {
+                                                    let _e585 = phi_954_;
+                                                    let _e586 = local_57;
+                                                    let _e587 = local_62;
+                                                    local_84 = select(_e587, _e586, _e585);
+                                                    let _e589 = local_53;
+                                                    local_63 = _e589[1];
+                                                    if !((_e589[1] == _e589[1])) {
                                                         phi_969_ = true;
                                                     } else {
-                                                        let _e589 = local_59;
-                                                        let _e590 = local_63;
-                                                        phi_969_ = (_e589 >= _e590);
+                                                        let _e593 = local_59;
+                                                        let _e594 = local_63;
+                                                        phi_969_ = (_e593 >= _e594);
                                                     }
-                                                    let _e593 = phi_969_;
-                                                    let _e594 = local_59;
-                                                    let _e595 = local_63;
-                                                    let _e597 = local_84;
-                                                    let _e599 = local_52;
-                                                    phi_688_ = (_e599 + 1u);
-                                                    phi_691_ = array<f32, 2>(_e597, select(_e595, _e594, _e593));
-                                                    phi_693_ = array<f32, 2>(_e573, select(_e571, _e570, _e569));
+                                                    let _e597 = phi_969_;
+                                                    let _e598 = local_59;
+                                                    let _e599 = local_63;
+                                                    let _e601 = local_84;
+                                                    let _e603 = local_52;
+                                                    phi_688_ = (_e603 + 1u);
+                                                    phi_691_ = array<f32, 2>(_e601, select(_e599, _e598, _e597));
+                                                    phi_693_ = array<f32, 2>(_e575, select(_e573, _e572, _e571));
                                                 } else {
                                                     phi_688_ = u32();
                                                     phi_691_ = array<f32, 2>();
                                                     phi_693_ = array<f32, 2>();
                                                 }
-                                                let _e602 = phi_688_;
-                                                let _e604 = phi_691_;
-                                                let _e606 = phi_693_;
+                                                let _e606 = phi_688_;
+                                                let _e608 = phi_691_;
+                                                let _e610 = phi_693_;
                                                 continue;
                                                 continuing {
-                                                    let _e607 = local_55;
-                                                    phi_687_ = _e602;
-                                                    phi_690_ = _e604;
-                                                    phi_692_ = _e606;
+                                                    let _e611 = local_55;
+                                                    phi_687_ = _e606;
+                                                    phi_690_ = _e608;
+                                                    phi_692_ = _e610;
                                                     phi_1102_ = _e154;
-                                                    break if !(_e607);
+                                                    break if !(_e611);
                                                 }
                                             }
-                                            let _e610 = phi_1102_;
-                                            phi_1147_ = _e610;
-                                            if _e610 {
+                                            let _e614 = phi_1102_;
+                                            phi_1147_ = _e614;
+                                            if _e614 {
                                                 break;
                                             }
-                                            let _e611 = local_53;
-                                            local_64 = _e611[0];
-                                            if (_e611[0] >= 0.5f) {
-                                                let _e614 = local_53;
-                                                local_65 = _e614[1];
-                                                if (_e614[1] >= 0.5f) {
-                                                    let _e617 = local_54;
-                                                    local_66 = _e617[0];
-                                                    let _e619 = local_50;
-                                                    if (_e617[0] <= (_e619 - 0.5f)) {
-                                                        let _e622 = local_54;
-                                                        local_67 = _e622[1];
-                                                        let _e624 = local_51;
-                                                        let _e626 = (_e622[1] <= (_e624 - 0.5f));
-                                                        local_68 = _e626;
-                                                        if _e626 {
-                                                            let _e627 = local_66;
-                                                            let _e629 = ceil((_e627 - 0.5f));
-                                                            local_78 = _e629;
-                                                            if (_e629 != _e629) {
+                                            let _e615 = local_53;
+                                            local_64 = _e615[0];
+                                            if (_e615[0] >= 0.5f) {
+                                                let _e618 = local_53;
+                                                local_65 = _e618[1];
+                                                if (_e618[1] >= 0.5f) {
+                                                    let _e621 = local_54;
+                                                    local_66 = _e621[0];
+                                                    let _e623 = local_50;
+                                                    if (_e621[0] <= (_e623 - 0.5f)) {
+                                                        let _e626 = local_54;
+                                                        local_67 = _e626[1];
+                                                        let _e628 = local_51;
+                                                        let _e630 = (_e626[1] <= (_e628 - 0.5f));
+                                                        local_68 = _e630;
+                                                        if _e630 {
+                                                            let _e631 = local_66;
+                                                            let _e633 = ceil((_e631 - 0.5f));
+                                                            local_78 = _e633;
+                                                            if !((_e633 == _e633)) {
                                                                 phi_996_ = true;
                                                             } else {
-                                                                let _e631 = local_78;
-                                                                phi_996_ = (0f >= _e631);
+                                                                let _e636 = local_78;
+                                                                phi_996_ = (0f >= _e636);
                                                             }
-                                                            let _e634 = phi_996_;
-                                                            let _e635 = local_78;
-                                                            let _e636 = select(_e635, 0f, _e634);
-                                                            local_69 = (select(select(u32(_e636), 0u, (_e636 < 0f)), 4294967295u, (_e636 > 4294967000f)) / 16u);
-                                                            let _e643 = local_67;
-                                                            let _e645 = ceil((_e643 - 0.5f));
-                                                            local_79 = _e645;
-                                                            if (_e645 != _e645) {
+                                                            let _e639 = phi_996_;
+                                                            let _e640 = local_78;
+                                                            let _e641 = select(_e640, 0f, _e639);
+                                                            local_69 = (select(select(u32(_e641), 0u, !((_e641 >= 0f))), 4294967295u, (_e641 > 4294967000f)) / 16u);
+                                                            let _e649 = local_67;
+                                                            let _e651 = ceil((_e649 - 0.5f));
+                                                            local_79 = _e651;
+                                                            if !((_e651 == _e651)) {
                                                                 phi_1023_ = true;
                                                             } else {
-                                                                let _e647 = local_79;
-                                                                phi_1023_ = (0f >= _e647);
+                                                                let _e654 = local_79;
+                                                                phi_1023_ = (0f >= _e654);
                                                             }
-                                                            let _e650 = phi_1023_;
-                                                            let _e651 = local_79;
-                                                            let _e652 = select(_e651, 0f, _e650);
-                                                            local_70 = (select(select(u32(_e652), 0u, (_e652 < 0f)), 4294967295u, (_e652 > 4294967000f)) / 16u);
-                                                            let _e659 = local_64;
-                                                            let _e661 = floor((_e659 - 0.5f));
-                                                            local_80 = _e661;
-                                                            if (_e661 != _e661) {
+                                                            let _e657 = phi_1023_;
+                                                            let _e658 = local_79;
+                                                            let _e659 = select(_e658, 0f, _e657);
+                                                            local_70 = (select(select(u32(_e659), 0u, !((_e659 >= 0f))), 4294967295u, (_e659 > 4294967000f)) / 16u);
+                                                            let _e667 = local_64;
+                                                            let _e669 = floor((_e667 - 0.5f));
+                                                            local_80 = _e669;
+                                                            if !((_e669 == _e669)) {
                                                                 phi_1056_ = true;
                                                             } else {
-                                                                let _e663 = local_80;
-                                                                phi_1056_ = (0f >= _e663);
+                                                                let _e672 = local_80;
+                                                                phi_1056_ = (0f >= _e672);
                                                             }
-                                                            let _e666 = phi_1056_;
-                                                            let _e667 = local_80;
-                                                            let _e668 = select(_e667, 0f, _e666);
-                                                            let _e673 = select(select(u32(_e668), 0u, (_e668 < 0f)), 4294967295u, (_e668 > 4294967000f));
-                                                            let _e674 = local_41;
-                                                            let _e675 = (_e674 - 1u);
-                                                            local_71 = (select(_e673, _e675, (_e675 < _e673)) / 16u);
-                                                            let _e679 = local_65;
-                                                            let _e681 = floor((_e679 - 0.5f));
-                                                            local_81 = _e681;
-                                                            if (_e681 != _e681) {
+                                                            let _e675 = phi_1056_;
+                                                            let _e676 = local_80;
+                                                            let _e677 = select(_e676, 0f, _e675);
+                                                            let _e683 = select(select(u32(_e677), 0u, !((_e677 >= 0f))), 4294967295u, (_e677 > 4294967000f));
+                                                            let _e684 = local_41;
+                                                            let _e685 = (_e684 - 1u);
+                                                            local_71 = (select(_e683, _e685, (_e685 < _e683)) / 16u);
+                                                            let _e689 = local_65;
+                                                            let _e691 = floor((_e689 - 0.5f));
+                                                            local_81 = _e691;
+                                                            if !((_e691 == _e691)) {
                                                                 phi_1089_ = true;
                                                             } else {
-                                                                let _e683 = local_81;
-                                                                phi_1089_ = (0f >= _e683);
+                                                                let _e694 = local_81;
+                                                                phi_1089_ = (0f >= _e694);
                                                             }
-                                                            let _e686 = phi_1089_;
-                                                            let _e687 = local_81;
-                                                            let _e688 = select(_e687, 0f, _e686);
-                                                            let _e693 = select(select(u32(_e688), 0u, (_e688 < 0f)), 4294967295u, (_e688 > 4294967000f));
-                                                            let _e694 = local_44;
-                                                            let _e695 = (_e694 - 1u);
-                                                            let _e699 = local_69;
-                                                            let _e700 = local_70;
-                                                            let _e701 = local_71;
-                                                            phi_790_ = array<u32, 4>(_e699, _e700, _e701, (select(_e693, _e695, (_e695 < _e693)) / 16u));
+                                                            let _e697 = phi_1089_;
+                                                            let _e698 = local_81;
+                                                            let _e699 = select(_e698, 0f, _e697);
+                                                            let _e705 = select(select(u32(_e699), 0u, !((_e699 >= 0f))), 4294967295u, (_e699 > 4294967000f));
+                                                            let _e706 = local_44;
+                                                            let _e707 = (_e706 - 1u);
+                                                            let _e711 = local_69;
+                                                            let _e712 = local_70;
+                                                            let _e713 = local_71;
+                                                            phi_790_ = array<u32, 4>(_e711, _e712, _e713, (select(_e705, _e707, (_e707 < _e705)) / 16u));
                                                         } else {
                                                             phi_790_ = array<u32, 4>();
                                                         }
-                                                        let _e704 = phi_790_;
-                                                        let _e705 = local_68;
-                                                        phi_792_ = _e704;
-                                                        phi_793_ = select(true, false, _e705);
+                                                        let _e716 = phi_790_;
+                                                        let _e717 = local_68;
+                                                        phi_792_ = _e716;
+                                                        phi_793_ = select(true, false, _e717);
                                                     } else {
                                                         phi_792_ = array<u32, 4>();
                                                         phi_793_ = true;
                                                     }
-                                                    let _e708 = phi_792_;
-                                                    let _e710 = phi_793_;
-                                                    phi_794_ = _e708;
-                                                    phi_795_ = _e710;
+                                                    let _e720 = phi_792_;
+                                                    let _e722 = phi_793_;
+                                                    phi_794_ = _e720;
+                                                    phi_795_ = _e722;
                                                 } else {
                                                     phi_794_ = array<u32, 4>();
                                                     phi_795_ = true;
                                                 }
-                                                let _e712 = phi_794_;
-                                                let _e714 = phi_795_;
-                                                phi_796_ = _e712;
-                                                phi_797_ = _e714;
+                                                let _e724 = phi_794_;
+                                                let _e726 = phi_795_;
+                                                phi_796_ = _e724;
+                                                phi_797_ = _e726;
                                             } else {
                                                 phi_796_ = array<u32, 4>();
                                                 phi_797_ = true;
                                             }
-                                            let _e716 = phi_796_;
-                                            let _e718 = phi_797_;
-                                            if _e718 {
+                                            let _e728 = phi_796_;
+                                            let _e730 = phi_797_;
+                                            if _e730 {
                                                 phi_802_ = array<u32, 4>(1u, 1u, 0u, 0u);
                                             } else {
                                                 phi_802_ = array<u32, 4>();
                                             }
-                                            let _e720 = phi_802_;
-                                            phi_1131_ = _e610;
-                                            phi_803_ = _e720;
-                                            phi_804_ = _e716;
-                                            phi_805_ = _e718;
+                                            let _e732 = phi_802_;
+                                            phi_1131_ = _e614;
+                                            phi_803_ = _e732;
+                                            phi_804_ = _e728;
+                                            phi_805_ = _e730;
                                         }
-                                        let _e722 = phi_1131_;
-                                        let _e724 = phi_803_;
-                                        let _e726 = phi_804_;
-                                        let _e728 = phi_805_;
-                                        phi_1130_ = _e722;
-                                        phi_806_ = _e724;
-                                        phi_807_ = _e726;
-                                        phi_809_ = _e728;
+                                        let _e734 = phi_1131_;
+                                        let _e736 = phi_803_;
+                                        let _e738 = phi_804_;
+                                        let _e740 = phi_805_;
+                                        phi_1130_ = _e734;
+                                        phi_806_ = _e736;
+                                        phi_807_ = _e738;
+                                        phi_809_ = _e740;
                                     }
-                                    let _e730 = phi_1130_;
-                                    let _e732 = phi_806_;
-                                    let _e734 = phi_807_;
-                                    let _e736 = phi_809_;
-                                    let _e737 = local_48;
-                                    let _e738 = local_49;
-                                    phi_1129_ = _e730;
-                                    phi_810_ = _e732;
-                                    phi_811_ = _e734;
-                                    phi_812_ = select(_e738, true, _e737);
-                                    phi_813_ = _e736;
+                                    let _e742 = phi_1130_;
+                                    let _e744 = phi_806_;
+                                    let _e746 = phi_807_;
+                                    let _e748 = phi_809_;
+                                    let _e749 = local_48;
+                                    let _e750 = local_49;
+                                    phi_1129_ = _e742;
+                                    phi_810_ = _e744;
+                                    phi_811_ = _e746;
+                                    phi_812_ = select(_e750, true, _e749);
+                                    phi_813_ = _e748;
                                 }
-                                let _e741 = phi_1129_;
-                                let _e743 = phi_810_;
-                                let _e745 = phi_811_;
-                                let _e747 = phi_812_;
-                                let _e749 = phi_813_;
-                                local_72 = _e747;
-                                local_73 = _e749;
-                                if _e747 {
-                                    let _e750 = local_43;
-                                    let _e752 = local_46;
-                                    phi_820_ = array<u32, 4>(0u, 0u, (_e750 - 1u), (_e752 - 1u));
+                                let _e753 = phi_1129_;
+                                let _e755 = phi_810_;
+                                let _e757 = phi_811_;
+                                let _e759 = phi_812_;
+                                let _e761 = phi_813_;
+                                local_72 = _e759;
+                                local_73 = _e761;
+                                if _e759 {
+                                    let _e762 = local_43;
+                                    let _e764 = local_46;
+                                    phi_820_ = array<u32, 4>(0u, 0u, (_e762 - 1u), (_e764 - 1u));
                                 } else {
-                                    phi_820_ = _e743;
+                                    phi_820_ = _e755;
                                 }
-                                let _e756 = phi_820_;
-                                let _e757 = local_72;
-                                let _e758 = local_73;
-                                phi_1127_ = _e741;
-                                phi_822_ = _e756;
-                                phi_823_ = _e745;
-                                phi_824_ = select(_e758, true, _e757);
+                                let _e768 = phi_820_;
+                                let _e769 = local_72;
+                                let _e770 = local_73;
+                                phi_1127_ = _e753;
+                                phi_822_ = _e768;
+                                phi_823_ = _e757;
+                                phi_824_ = select(_e770, true, _e769);
                             } else {
                                 phi_1127_ = _e154;
                                 phi_822_ = _e504;
                                 phi_823_ = array<u32, 4>();
                                 phi_824_ = true;
                             }
-                            let _e761 = phi_1127_;
-                            let _e763 = phi_822_;
-                            let _e765 = phi_823_;
-                            let _e767 = phi_824_;
-                            if _e767 {
-                                phi_828_ = _e763;
+                            let _e773 = phi_1127_;
+                            let _e775 = phi_822_;
+                            let _e777 = phi_823_;
+                            let _e779 = phi_824_;
+                            if _e779 {
+                                phi_828_ = _e775;
                             } else {
-                                phi_828_ = _e765;
+                                phi_828_ = _e777;
                             }
-                            let _e769 = phi_828_;
-                            local_86 = array<u32, 4>(_e769[0], _e769[1], _e769[2], _e769[3]);
-                            phi_1125_ = _e761;
+                            let _e781 = phi_828_;
+                            local_86 = array<u32, 4>(_e781[0], _e781[1], _e781[2], _e781[3]);
+                            phi_1125_ = _e773;
                         } else {
                             local_86[0u] = 1u;
                             local_86[1u] = 1u;
@@ -871,84 +871,84 @@ fn function_() {
                             local_86[3u] = 0u;
                             phi_1125_ = _e154;
                         }
-                        let _e776 = phi_1125_;
+                        let _e788 = phi_1125_;
                         phi_839_ = 0u;
                         loop {
-                            let _e778 = phi_839_;
-                            local_74 = _e778;
-                            let _e779 = local_74;
-                            let _e780 = (_e779 < 4u);
-                            local_75 = _e780;
-                            if _e780 {
-                                let _e781 = local_10;
-                                let _e783 = local_74;
-                                local_76 = ((4u * _e781) + _e783);
-                                let _e785 = local_75;
-                                if _e785 {
+                            let _e790 = phi_839_;
+                            local_74 = _e790;
+                            let _e791 = local_74;
+                            let _e792 = (_e791 < 4u);
+                            local_75 = _e792;
+                            if _e792 {
+                                let _e793 = local_10;
+                                let _e795 = local_74;
+                                local_76 = ((4u * _e793) + _e795);
+                                let _e797 = local_75;
+                                if _e797 {
                                 } else {
                                     phi_1122_ = true;
                                     break;
                                 }
-                                let _e786 = local_74;
-                                let _e788 = local_86[_e786];
-                                local_77 = _e788;
-                                let _e789 = local_76;
-                                let _e790 = local_4;
-                                if (_e789 < _e790) {
+                                let _e798 = local_74;
+                                let _e800 = local_86[_e798];
+                                local_77 = _e800;
+                                let _e801 = local_76;
+                                let _e802 = local_4;
+                                if (_e801 < _e802) {
                                 } else {
                                     phi_1122_ = true;
                                     break;
                                 }
-                                let _e792 = local_76;
-                                let _e795 = local_77;
-                                global_7.member[_e792] = _e795;
-                                let _e796 = local_74;
-                                phi_840_ = (_e796 + 1u);
+                                let _e804 = local_76;
+                                let _e807 = local_77;
+                                global_7.member[_e804] = _e807;
+                                let _e808 = local_74;
+                                phi_840_ = (_e808 + 1u);
                             } else {
                                 phi_840_ = u32();
                             }
-                            let _e799 = phi_840_;
+                            let _e811 = phi_840_;
                             continue;
                             continuing {
-                                let _e800 = local_75;
-                                phi_839_ = _e799;
-                                phi_1122_ = _e776;
-                                break if !(_e800);
+                                let _e812 = local_75;
+                                phi_839_ = _e811;
+                                phi_1122_ = _e788;
+                                break if !(_e812);
                             }
                         }
-                        let _e803 = phi_1122_;
-                        phi_1147_ = _e803;
-                        if _e803 {
+                        let _e815 = phi_1122_;
+                        phi_1147_ = _e815;
+                        if _e815 {
                             break;
                         }
-                        phi_1149_ = _e803;
+                        phi_1149_ = _e815;
                     } else {
                         phi_1149_ = _e154;
                     }
-                    let _e805 = phi_1149_;
+                    let _e817 = phi_1149_;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e806 = local_8;
-                    let _e807 = local_7;
-                    phi_1148_ = _e805;
-                    phi_175_ = (_e806 + _e807);
+                    let _e818 = local_8;
+                    let _e819 = local_7;
+                    phi_1148_ = _e817;
+                    phi_175_ = (_e818 + _e819);
                 } else {
                     phi_1148_ = _e154;
                     phi_175_ = u32();
                 }
-                let _e810 = phi_1148_;
-                let _e812 = phi_175_;
+                let _e822 = phi_1148_;
+                let _e824 = phi_175_;
                 continue;
                 continuing {
-                    let _e813 = local_9;
-                    phi_1119_ = _e810;
-                    phi_174_ = _e812;
-                    phi_1147_ = _e810;
-                    break if !(_e813);
+                    let _e825 = local_9;
+                    phi_1119_ = _e822;
+                    phi_174_ = _e824;
+                    phi_1147_ = _e822;
+                    break if !(_e825);
                 }
             }
-            let _e816 = phi_1147_;
-            if _e816 {
+            let _e828 = phi_1147_;
+            if _e828 {
                 break;
             }
             break;

@@ -1057,4894 +1057,4894 @@ fn function_() {
                         let _e755 = local_14;
                         let _e758 = global_4.member[_e755];
                         let _e759 = bitcast<f32>(_e758);
-                        let _e764 = select(select(u32(_e759), 0u, (_e759 < 0f)), 4294967295u, (_e759 > 4294967000f));
-                        local_15 = _e764;
-                        let _e765 = (_e764 > 0u);
-                        local_16 = _e765;
-                        if _e765 {
-                            let _e793 = local_14;
-                            let _e794 = (_e793 + 2u);
-                            local_17 = _e794;
-                            let _e795 = local_1;
-                            if (_e794 < _e795) {
+                        let _e765 = select(select(u32(_e759), 0u, !((_e759 >= 0f))), 4294967295u, (_e759 > 4294967000f));
+                        local_15 = _e765;
+                        let _e766 = (_e765 > 0u);
+                        local_16 = _e766;
+                        if _e766 {
+                            let _e794 = local_14;
+                            let _e795 = (_e794 + 2u);
+                            local_17 = _e795;
+                            let _e796 = local_1;
+                            if (_e795 < _e796) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e797 = local_17;
-                            let _e800 = global_4.member[_e797];
-                            local_18 = bitcast<f32>(_e800);
-                            let _e802 = local_14;
-                            let _e803 = (_e802 + 3u);
-                            local_19 = _e803;
-                            let _e804 = local_1;
-                            if (_e803 < _e804) {
+                            let _e798 = local_17;
+                            let _e801 = global_4.member[_e798];
+                            local_18 = bitcast<f32>(_e801);
+                            let _e803 = local_14;
+                            let _e804 = (_e803 + 3u);
+                            local_19 = _e804;
+                            let _e805 = local_1;
+                            if (_e804 < _e805) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e806 = local_19;
-                            let _e809 = global_4.member[_e806];
-                            local_20 = bitcast<f32>(_e809);
-                            let _e811 = local_14;
-                            let _e812 = (_e811 + 1u);
-                            local_21 = _e812;
-                            let _e813 = local_1;
-                            if (_e812 < _e813) {
+                            let _e807 = local_19;
+                            let _e810 = global_4.member[_e807];
+                            local_20 = bitcast<f32>(_e810);
+                            let _e812 = local_14;
+                            let _e813 = (_e812 + 1u);
+                            local_21 = _e813;
+                            let _e814 = local_1;
+                            if (_e813 < _e814) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e815 = local_21;
-                            let _e818 = global_4.member[_e815];
-                            let _e819 = bitcast<f32>(_e818);
-                            let _e822 = global_3.member.member_4;
-                            local_22 = ((2f * _e822) * _e819);
-                            let _e827 = global_3.member.member_1;
-                            local_23 = _e827;
-                            let _e830 = global_3.member.member_8;
-                            local_24 = _e830;
-                            let _e833 = global_3.member.member_7;
-                            local_25 = _e833;
-                            let _e834 = local_15;
-                            let _e836 = ((_e834 - 1u) * 4u);
-                            local_26 = _e836;
-                            let _e837 = local_3;
-                            if (_e836 < _e837) {
+                            let _e816 = local_21;
+                            let _e819 = global_4.member[_e816];
+                            let _e820 = bitcast<f32>(_e819);
+                            let _e823 = global_3.member.member_4;
+                            local_22 = ((2f * _e823) * _e820);
+                            let _e828 = global_3.member.member_1;
+                            local_23 = _e828;
+                            let _e831 = global_3.member.member_8;
+                            local_24 = _e831;
+                            let _e834 = global_3.member.member_7;
+                            local_25 = _e834;
+                            let _e835 = local_15;
+                            let _e837 = ((_e835 - 1u) * 4u);
+                            local_26 = _e837;
+                            let _e838 = local_3;
+                            if (_e837 < _e838) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e839 = local_26;
-                            let _e842 = global_6.member[_e839];
-                            local_27 = _e842;
-                            let _e843 = local_26;
-                            let _e844 = (_e843 + 1u);
-                            local_28 = _e844;
-                            let _e845 = local_3;
-                            if (_e844 < _e845) {
+                            let _e840 = local_26;
+                            let _e843 = global_6.member[_e840];
+                            local_27 = _e843;
+                            let _e844 = local_26;
+                            let _e845 = (_e844 + 1u);
+                            local_28 = _e845;
+                            let _e846 = local_3;
+                            if (_e845 < _e846) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e847 = local_28;
-                            let _e850 = global_6.member[_e847];
-                            local_29 = _e850;
-                            let _e851 = local_26;
-                            let _e852 = (_e851 + 2u);
-                            local_30 = _e852;
-                            let _e853 = local_3;
-                            if (_e852 < _e853) {
+                            let _e848 = local_28;
+                            let _e851 = global_6.member[_e848];
+                            local_29 = _e851;
+                            let _e852 = local_26;
+                            let _e853 = (_e852 + 2u);
+                            local_30 = _e853;
+                            let _e854 = local_3;
+                            if (_e853 < _e854) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e855 = local_30;
-                            let _e858 = global_6.member[_e855];
-                            local_31 = _e858;
-                            let _e859 = local_26;
-                            let _e860 = (_e859 + 3u);
-                            local_32 = _e860;
-                            let _e861 = local_3;
-                            if (_e860 < _e861) {
+                            let _e856 = local_30;
+                            let _e859 = global_6.member[_e856];
+                            local_31 = _e859;
+                            let _e860 = local_26;
+                            let _e861 = (_e860 + 3u);
+                            local_32 = _e861;
+                            let _e862 = local_3;
+                            if (_e861 < _e862) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e863 = local_32;
-                            let _e866 = global_6.member[_e863];
-                            let _e867 = local_27;
-                            let _e868 = local_29;
-                            let _e869 = local_31;
-                            let _e870 = array<u32, 4>(_e867, _e868, _e869, _e866);
-                            local_33 = _e870;
-                            local_614 = _e870;
-                            let _e871 = local_18;
-                            let _e873 = local_20;
-                            let _e874 = ((1f - _e871) - _e873);
-                            local_34 = _e874;
-                            let _e876 = local_18;
-                            local_615[0u] = _e876;
-                            let _e878 = local_20;
-                            local_615[1u] = _e878;
-                            local_615[2u] = _e874;
-                            let _e881 = local_614[0u];
-                            let _e882 = (_e881 * 10u);
-                            local_35 = _e882;
-                            let _e883 = local_2;
-                            if (_e882 < _e883) {
+                            let _e864 = local_32;
+                            let _e867 = global_6.member[_e864];
+                            let _e868 = local_27;
+                            let _e869 = local_29;
+                            let _e870 = local_31;
+                            let _e871 = array<u32, 4>(_e868, _e869, _e870, _e867);
+                            local_33 = _e871;
+                            local_614 = _e871;
+                            let _e872 = local_18;
+                            let _e874 = local_20;
+                            let _e875 = ((1f - _e872) - _e874);
+                            local_34 = _e875;
+                            let _e877 = local_18;
+                            local_615[0u] = _e877;
+                            let _e879 = local_20;
+                            local_615[1u] = _e879;
+                            local_615[2u] = _e875;
+                            let _e882 = local_614[0u];
+                            let _e883 = (_e882 * 10u);
+                            local_35 = _e883;
+                            let _e884 = local_2;
+                            if (_e883 < _e884) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e885 = local_35;
-                            let _e888 = global_5.member[_e885];
-                            local_36 = bitcast<f32>(_e888);
-                            let _e890 = local_35;
-                            let _e891 = (_e890 + 1u);
-                            local_37 = _e891;
-                            let _e892 = local_2;
-                            if (_e891 < _e892) {
+                            let _e886 = local_35;
+                            let _e889 = global_5.member[_e886];
+                            local_36 = bitcast<f32>(_e889);
+                            let _e891 = local_35;
+                            let _e892 = (_e891 + 1u);
+                            local_37 = _e892;
+                            let _e893 = local_2;
+                            if (_e892 < _e893) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e894 = local_37;
-                            let _e897 = global_5.member[_e894];
-                            local_38 = bitcast<f32>(_e897);
-                            let _e899 = local_35;
-                            let _e900 = (_e899 + 2u);
-                            local_39 = _e900;
-                            let _e901 = local_2;
-                            if (_e900 < _e901) {
+                            let _e895 = local_37;
+                            let _e898 = global_5.member[_e895];
+                            local_38 = bitcast<f32>(_e898);
+                            let _e900 = local_35;
+                            let _e901 = (_e900 + 2u);
+                            local_39 = _e901;
+                            let _e902 = local_2;
+                            if (_e901 < _e902) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e903 = local_39;
-                            let _e906 = global_5.member[_e903];
-                            local_40 = bitcast<f32>(_e906);
-                            let _e909 = local_614[1u];
-                            let _e910 = (_e909 * 10u);
-                            local_41 = _e910;
-                            let _e911 = local_2;
-                            if (_e910 < _e911) {
+                            let _e904 = local_39;
+                            let _e907 = global_5.member[_e904];
+                            local_40 = bitcast<f32>(_e907);
+                            let _e910 = local_614[1u];
+                            let _e911 = (_e910 * 10u);
+                            local_41 = _e911;
+                            let _e912 = local_2;
+                            if (_e911 < _e912) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e913 = local_41;
-                            let _e916 = global_5.member[_e913];
-                            local_42 = bitcast<f32>(_e916);
-                            let _e918 = local_41;
-                            let _e919 = (_e918 + 1u);
-                            local_43 = _e919;
-                            let _e920 = local_2;
-                            if (_e919 < _e920) {
+                            let _e914 = local_41;
+                            let _e917 = global_5.member[_e914];
+                            local_42 = bitcast<f32>(_e917);
+                            let _e919 = local_41;
+                            let _e920 = (_e919 + 1u);
+                            local_43 = _e920;
+                            let _e921 = local_2;
+                            if (_e920 < _e921) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e922 = local_43;
-                            let _e925 = global_5.member[_e922];
-                            local_44 = bitcast<f32>(_e925);
-                            let _e927 = local_41;
-                            let _e928 = (_e927 + 2u);
-                            local_45 = _e928;
-                            let _e929 = local_2;
-                            if (_e928 < _e929) {
+                            let _e923 = local_43;
+                            let _e926 = global_5.member[_e923];
+                            local_44 = bitcast<f32>(_e926);
+                            let _e928 = local_41;
+                            let _e929 = (_e928 + 2u);
+                            local_45 = _e929;
+                            let _e930 = local_2;
+                            if (_e929 < _e930) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e931 = local_45;
-                            let _e934 = global_5.member[_e931];
-                            local_46 = bitcast<f32>(_e934);
-                            let _e937 = local_614[2u];
-                            let _e938 = (_e937 * 10u);
-                            local_47 = _e938;
-                            let _e939 = local_2;
-                            if (_e938 < _e939) {
+                            let _e932 = local_45;
+                            let _e935 = global_5.member[_e932];
+                            local_46 = bitcast<f32>(_e935);
+                            let _e938 = local_614[2u];
+                            let _e939 = (_e938 * 10u);
+                            local_47 = _e939;
+                            let _e940 = local_2;
+                            if (_e939 < _e940) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e941 = local_47;
-                            let _e944 = global_5.member[_e941];
-                            local_48 = bitcast<f32>(_e944);
-                            let _e946 = local_47;
-                            let _e947 = (_e946 + 1u);
-                            local_49 = _e947;
-                            let _e948 = local_2;
-                            if (_e947 < _e948) {
+                            let _e942 = local_47;
+                            let _e945 = global_5.member[_e942];
+                            local_48 = bitcast<f32>(_e945);
+                            let _e947 = local_47;
+                            let _e948 = (_e947 + 1u);
+                            local_49 = _e948;
+                            let _e949 = local_2;
+                            if (_e948 < _e949) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e950 = local_49;
-                            let _e953 = global_5.member[_e950];
-                            local_50 = bitcast<f32>(_e953);
-                            let _e955 = local_47;
-                            let _e956 = (_e955 + 2u);
-                            local_51 = _e956;
-                            let _e957 = local_2;
-                            if (_e956 < _e957) {
+                            let _e951 = local_49;
+                            let _e954 = global_5.member[_e951];
+                            local_50 = bitcast<f32>(_e954);
+                            let _e956 = local_47;
+                            let _e957 = (_e956 + 2u);
+                            local_51 = _e957;
+                            let _e958 = local_2;
+                            if (_e957 < _e958) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e959 = local_51;
-                            let _e962 = global_5.member[_e959];
-                            let _e965 = local_36;
-                            let _e966 = local_38;
-                            let _e967 = local_40;
-                            local_616[0u] = array<f32, 3>(_e965, _e966, _e967);
-                            let _e970 = local_42;
-                            let _e971 = local_44;
-                            let _e972 = local_46;
-                            local_616[1u] = array<f32, 3>(_e970, _e971, _e972);
-                            let _e975 = local_48;
-                            let _e976 = local_50;
-                            local_616[2u] = array<f32, 3>(_e975, _e976, bitcast<f32>(_e962));
+                            let _e960 = local_51;
+                            let _e963 = global_5.member[_e960];
+                            let _e966 = local_36;
+                            let _e967 = local_38;
+                            let _e968 = local_40;
+                            local_616[0u] = array<f32, 3>(_e966, _e967, _e968);
+                            let _e971 = local_42;
+                            let _e972 = local_44;
+                            let _e973 = local_46;
+                            local_616[1u] = array<f32, 3>(_e971, _e972, _e973);
+                            let _e976 = local_48;
+                            let _e977 = local_50;
+                            local_616[2u] = array<f32, 3>(_e976, _e977, bitcast<f32>(_e963));
                             local_617 = array<f32, 3>(0f, 0f, 0f);
                             local_618 = array<f32, 3>(0f, 0f, 0f);
                             phi_5693_ = _e740;
                             phi_633_ = 0u;
                             loop {
-                                let _e979 = phi_5693_;
-                                let _e981 = phi_633_;
-                                local_52 = _e981;
-                                let _e982 = local_52;
-                                let _e983 = (_e982 < 3u);
-                                local_53 = _e983;
-                                if _e983 {
-                                    let _e984 = local_52;
-                                    if (_e984 < 4u) {
+                                let _e980 = phi_5693_;
+                                let _e982 = phi_633_;
+                                local_52 = _e982;
+                                let _e983 = local_52;
+                                let _e984 = (_e983 < 3u);
+                                local_53 = _e984;
+                                if _e984 {
+                                    let _e985 = local_52;
+                                    if (_e985 < 4u) {
                                     } else {
                                         phi_5695_ = true;
                                         break;
                                     }
-                                    let _e986 = local_52;
-                                    let _e988 = local_614[_e986];
-                                    local_54 = (_e988 * 10u);
+                                    let _e987 = local_52;
+                                    let _e989 = local_614[_e987];
+                                    local_54 = (_e989 * 10u);
                                     phi_651_ = 0u;
                                     loop {
-                                        let _e991 = phi_651_;
-                                        local_55 = _e991;
-                                        let _e992 = local_55;
-                                        let _e993 = (_e992 < 3u);
-                                        local_56 = _e993;
-                                        if _e993 {
-                                            let _e994 = local_53;
-                                            if _e994 {
+                                        let _e992 = phi_651_;
+                                        local_55 = _e992;
+                                        let _e993 = local_55;
+                                        let _e994 = (_e993 < 3u);
+                                        local_56 = _e994;
+                                        if _e994 {
+                                            let _e995 = local_53;
+                                            if _e995 {
                                             } else {
                                                 phi_5690_ = true;
                                                 break;
                                             }
-                                            let _e995 = local_52;
-                                            let _e997 = local_615[_e995];
-                                            local_57 = _e997;
-                                            let _e998 = local_53;
-                                            if _e998 {
-                                            } else {
-                                                phi_5690_ = true;
-                                                break;
-                                            }
-                                            let _e999 = local_56;
+                                            let _e996 = local_52;
+                                            let _e998 = local_615[_e996];
+                                            local_57 = _e998;
+                                            let _e999 = local_53;
                                             if _e999 {
                                             } else {
                                                 phi_5690_ = true;
                                                 break;
                                             }
-                                            let _e1000 = local_52;
-                                            let _e1001 = local_55;
-                                            let _e1004 = local_616[_e1000][_e1001];
-                                            let _e1005 = local_57;
-                                            local_58 = (_e1005 * _e1004);
-                                            let _e1007 = local_56;
-                                            if _e1007 {
+                                            let _e1000 = local_56;
+                                            if _e1000 {
                                             } else {
                                                 phi_5690_ = true;
                                                 break;
                                             }
-                                            let _e1008 = local_55;
-                                            let _e1010 = local_617[_e1008];
-                                            let _e1011 = local_58;
-                                            local_617[_e1008] = (_e1010 + _e1011);
-                                            let _e1013 = local_53;
-                                            if _e1013 {
+                                            let _e1001 = local_52;
+                                            let _e1002 = local_55;
+                                            let _e1005 = local_616[_e1001][_e1002];
+                                            let _e1006 = local_57;
+                                            local_58 = (_e1006 * _e1005);
+                                            let _e1008 = local_56;
+                                            if _e1008 {
                                             } else {
                                                 phi_5690_ = true;
                                                 break;
                                             }
-                                            let _e1014 = local_615[_e995];
-                                            local_59 = _e1014;
-                                            let _e1015 = local_54;
-                                            let _e1017 = local_55;
-                                            let _e1018 = ((_e1015 + 4u) + _e1017);
-                                            local_60 = _e1018;
-                                            let _e1019 = local_2;
-                                            if (_e1018 < _e1019) {
+                                            let _e1009 = local_55;
+                                            let _e1011 = local_617[_e1009];
+                                            let _e1012 = local_58;
+                                            local_617[_e1009] = (_e1011 + _e1012);
+                                            let _e1014 = local_53;
+                                            if _e1014 {
                                             } else {
                                                 phi_5690_ = true;
                                                 break;
                                             }
-                                            let _e1021 = local_60;
-                                            let _e1024 = global_5.member[_e1021];
-                                            let _e1026 = local_59;
-                                            local_61 = (_e1026 * bitcast<f32>(_e1024));
-                                            let _e1028 = local_56;
-                                            if _e1028 {
+                                            let _e1015 = local_615[_e996];
+                                            local_59 = _e1015;
+                                            let _e1016 = local_54;
+                                            let _e1018 = local_55;
+                                            let _e1019 = ((_e1016 + 4u) + _e1018);
+                                            local_60 = _e1019;
+                                            let _e1020 = local_2;
+                                            if (_e1019 < _e1020) {
                                             } else {
                                                 phi_5690_ = true;
                                                 break;
                                             }
-                                            let _e1029 = local_55;
-                                            let _e1031 = local_618[_e1029];
-                                            let _e1032 = local_61;
-                                            local_618[_e1029] = (_e1031 + _e1032);
-                                            let _e1034 = local_55;
-                                            phi_652_ = (_e1034 + 1u);
+                                            let _e1022 = local_60;
+                                            let _e1025 = global_5.member[_e1022];
+                                            let _e1027 = local_59;
+                                            local_61 = (_e1027 * bitcast<f32>(_e1025));
+                                            let _e1029 = local_56;
+                                            if _e1029 {
+                                            } else {
+                                                phi_5690_ = true;
+                                                break;
+                                            }
+                                            let _e1030 = local_55;
+                                            let _e1032 = local_618[_e1030];
+                                            let _e1033 = local_61;
+                                            local_618[_e1030] = (_e1032 + _e1033);
+                                            let _e1035 = local_55;
+                                            phi_652_ = (_e1035 + 1u);
                                         } else {
                                             phi_652_ = u32();
                                         }
-                                        let _e1037 = phi_652_;
+                                        let _e1038 = phi_652_;
                                         continue;
                                         continuing {
-                                            let _e1038 = local_56;
-                                            phi_651_ = _e1037;
-                                            phi_5690_ = _e979;
-                                            break if !(_e1038);
+                                            let _e1039 = local_56;
+                                            phi_651_ = _e1038;
+                                            phi_5690_ = _e980;
+                                            break if !(_e1039);
                                         }
                                     }
-                                    let _e1041 = phi_5690_;
-                                    phi_5695_ = _e1041;
-                                    if _e1041 {
+                                    let _e1042 = phi_5690_;
+                                    phi_5695_ = _e1042;
+                                    if _e1042 {
                                         break;
                                     }
-                                    let _e1042 = local_52;
-                                    phi_5696_ = _e1041;
-                                    phi_634_ = (_e1042 + 1u);
+                                    let _e1043 = local_52;
+                                    phi_5696_ = _e1042;
+                                    phi_634_ = (_e1043 + 1u);
                                 } else {
-                                    phi_5696_ = _e979;
+                                    phi_5696_ = _e980;
                                     phi_634_ = u32();
                                 }
-                                let _e1045 = phi_5696_;
-                                let _e1047 = phi_634_;
+                                let _e1046 = phi_5696_;
+                                let _e1048 = phi_634_;
                                 continue;
                                 continuing {
-                                    let _e1048 = local_53;
-                                    phi_5693_ = _e1045;
-                                    phi_633_ = _e1047;
-                                    phi_5695_ = _e1045;
-                                    break if !(_e1048);
+                                    let _e1049 = local_53;
+                                    phi_5693_ = _e1046;
+                                    phi_633_ = _e1048;
+                                    phi_5695_ = _e1046;
+                                    break if !(_e1049);
                                 }
                             }
-                            let _e1051 = phi_5695_;
-                            phi_5975_ = _e1051;
-                            if _e1051 {
+                            let _e1052 = phi_5695_;
+                            phi_5975_ = _e1052;
+                            if _e1052 {
                                 break;
                             }
-                            let _e1052 = local_616[1u];
-                            let _e1056 = local_616[0u];
-                            let _e1060 = (_e1052[0] - _e1056[0]);
-                            let _e1061 = (_e1052[1] - _e1056[1]);
-                            let _e1062 = (_e1052[2] - _e1056[2]);
-                            let _e1063 = local_616[2u];
-                            let _e1067 = local_616[0u];
-                            let _e1071 = (_e1063[0] - _e1067[0]);
-                            let _e1072 = (_e1063[1] - _e1067[1]);
-                            let _e1073 = (_e1063[2] - _e1067[2]);
-                            let _e1076 = ((_e1061 * _e1073) - (_e1062 * _e1072));
-                            local_62 = _e1076;
-                            let _e1079 = ((_e1062 * _e1071) - (_e1060 * _e1073));
-                            local_63 = _e1079;
-                            let _e1082 = ((_e1060 * _e1072) - (_e1061 * _e1071));
-                            local_64 = _e1082;
-                            let _e1084 = local_618;
-                            if ((((_e1084[0] * _e1084[0]) + (_e1084[1] * _e1084[1])) + (_e1084[2] * _e1084[2])) > 0f) {
-                                let _e1119 = local_618;
-                                local_65 = _e1119[0];
-                                local_66 = _e1119[1];
-                                local_67 = _e1119[2];
-                                let _e1129 = sqrt((((_e1119[0] * _e1119[0]) + (_e1119[1] * _e1119[1])) + (_e1119[2] * _e1119[2])));
-                                local_502 = _e1129;
-                                if (_e1129 > 0f) {
-                                    let _e1131 = local_65;
-                                    let _e1132 = local_502;
-                                    let _e1134 = local_66;
-                                    let _e1135 = local_502;
-                                    let _e1137 = local_67;
-                                    let _e1138 = local_502;
-                                    phi_5160_ = array<f32, 3>((_e1131 / _e1132), (_e1134 / _e1135), (_e1137 / _e1138));
+                            let _e1053 = local_616[1u];
+                            let _e1057 = local_616[0u];
+                            let _e1061 = (_e1053[0] - _e1057[0]);
+                            let _e1062 = (_e1053[1] - _e1057[1]);
+                            let _e1063 = (_e1053[2] - _e1057[2]);
+                            let _e1064 = local_616[2u];
+                            let _e1068 = local_616[0u];
+                            let _e1072 = (_e1064[0] - _e1068[0]);
+                            let _e1073 = (_e1064[1] - _e1068[1]);
+                            let _e1074 = (_e1064[2] - _e1068[2]);
+                            let _e1077 = ((_e1062 * _e1074) - (_e1063 * _e1073));
+                            local_62 = _e1077;
+                            let _e1080 = ((_e1063 * _e1072) - (_e1061 * _e1074));
+                            local_63 = _e1080;
+                            let _e1083 = ((_e1061 * _e1073) - (_e1062 * _e1072));
+                            local_64 = _e1083;
+                            let _e1085 = local_618;
+                            if ((((_e1085[0] * _e1085[0]) + (_e1085[1] * _e1085[1])) + (_e1085[2] * _e1085[2])) > 0f) {
+                                let _e1120 = local_618;
+                                local_65 = _e1120[0];
+                                local_66 = _e1120[1];
+                                local_67 = _e1120[2];
+                                let _e1130 = sqrt((((_e1120[0] * _e1120[0]) + (_e1120[1] * _e1120[1])) + (_e1120[2] * _e1120[2])));
+                                local_502 = _e1130;
+                                if (_e1130 > 0f) {
+                                    let _e1132 = local_65;
+                                    let _e1133 = local_502;
+                                    let _e1135 = local_66;
+                                    let _e1136 = local_502;
+                                    let _e1138 = local_67;
+                                    let _e1139 = local_502;
+                                    phi_5160_ = array<f32, 3>((_e1132 / _e1133), (_e1135 / _e1136), (_e1138 / _e1139));
                                 } else {
-                                    phi_5160_ = array<f32, 3>(_e1119[0], _e1119[1], _e1119[2]);
+                                    phi_5160_ = array<f32, 3>(_e1120[0], _e1120[1], _e1120[2]);
                                 }
-                                let _e1142 = phi_5160_;
-                                phi_813_ = _e1142;
+                                let _e1143 = phi_5160_;
+                                phi_813_ = _e1143;
                             } else {
-                                let _e1094 = local_62;
                                 let _e1095 = local_62;
-                                let _e1097 = local_63;
+                                let _e1096 = local_62;
                                 let _e1098 = local_63;
-                                let _e1101 = local_64;
+                                let _e1099 = local_63;
                                 let _e1102 = local_64;
-                                let _e1105 = sqrt((((_e1094 * _e1095) + (_e1097 * _e1098)) + (_e1101 * _e1102)));
-                                local_503 = _e1105;
-                                if (_e1105 > 0f) {
-                                    let _e1107 = local_62;
-                                    let _e1108 = local_503;
-                                    let _e1110 = local_63;
-                                    let _e1111 = local_503;
-                                    let _e1113 = local_64;
-                                    let _e1114 = local_503;
-                                    phi_5186_ = array<f32, 3>((_e1107 / _e1108), (_e1110 / _e1111), (_e1113 / _e1114));
+                                let _e1103 = local_64;
+                                let _e1106 = sqrt((((_e1095 * _e1096) + (_e1098 * _e1099)) + (_e1102 * _e1103)));
+                                local_503 = _e1106;
+                                if (_e1106 > 0f) {
+                                    let _e1108 = local_62;
+                                    let _e1109 = local_503;
+                                    let _e1111 = local_63;
+                                    let _e1112 = local_503;
+                                    let _e1114 = local_64;
+                                    let _e1115 = local_503;
+                                    phi_5186_ = array<f32, 3>((_e1108 / _e1109), (_e1111 / _e1112), (_e1114 / _e1115));
                                 } else {
-                                    phi_5186_ = array<f32, 3>(_e1076, _e1079, _e1082);
+                                    phi_5186_ = array<f32, 3>(_e1077, _e1080, _e1083);
                                 }
-                                let _e1118 = phi_5186_;
-                                phi_813_ = _e1118;
+                                let _e1119 = phi_5186_;
+                                phi_813_ = _e1119;
                             }
-                            let _e1144 = phi_813_;
-                            local_68 = _e1144;
-                            let _e1145 = local_617;
-                            let _e1149 = local_23;
-                            local_69 = _e1149[0];
-                            let _e1152 = local_23;
-                            local_70 = _e1152[1];
-                            let _e1155 = local_23;
-                            local_71 = _e1155[2];
-                            let _e1158 = local_62;
-                            let _e1160 = local_63;
-                            let _e1163 = local_64;
-                            if ((((_e1158 * (_e1145[0] - _e1149[0])) + (_e1160 * (_e1145[1] - _e1152[1]))) + (_e1163 * (_e1145[2] - _e1155[2]))) > 0f) {
-                                let _e1167 = local_68;
-                                let _e1170 = local_68;
-                                let _e1173 = local_68;
-                                phi_844_ = array<f32, 3>(-(_e1167[0]), -(_e1170[1]), -(_e1173[2]));
+                            let _e1145 = phi_813_;
+                            local_68 = _e1145;
+                            let _e1146 = local_617;
+                            let _e1150 = local_23;
+                            local_69 = _e1150[0];
+                            let _e1153 = local_23;
+                            local_70 = _e1153[1];
+                            let _e1156 = local_23;
+                            local_71 = _e1156[2];
+                            let _e1159 = local_62;
+                            let _e1161 = local_63;
+                            let _e1164 = local_64;
+                            if ((((_e1159 * (_e1146[0] - _e1150[0])) + (_e1161 * (_e1146[1] - _e1153[1]))) + (_e1164 * (_e1146[2] - _e1156[2]))) > 0f) {
+                                let _e1168 = local_68;
+                                let _e1171 = local_68;
+                                let _e1174 = local_68;
+                                phi_844_ = array<f32, 3>(-(_e1168[0]), -(_e1171[1]), -(_e1174[2]));
                             } else {
-                                phi_844_ = _e1144;
+                                phi_844_ = _e1145;
                             }
-                            let _e1178 = phi_844_;
-                            local_72 = _e1178;
-                            let _e1179 = local_33;
-                            local_612 = _e1179;
-                            let _e1181 = local_18;
-                            local_613[0u] = _e1181;
-                            let _e1183 = local_20;
-                            local_613[1u] = _e1183;
-                            let _e1185 = local_34;
-                            local_613[2u] = _e1185;
+                            let _e1179 = phi_844_;
+                            local_72 = _e1179;
+                            let _e1180 = local_33;
+                            local_612 = _e1180;
+                            let _e1182 = local_18;
+                            local_613[0u] = _e1182;
+                            let _e1184 = local_20;
+                            local_613[1u] = _e1184;
+                            let _e1186 = local_34;
+                            local_613[2u] = _e1186;
                             phi_862_ = 0u;
                             phi_865_ = 0f;
                             phi_867_ = 0f;
                             loop {
-                                let _e1187 = phi_862_;
-                                let _e1189 = phi_865_;
-                                let _e1191 = phi_867_;
-                                local_73 = _e1187;
-                                local_74 = _e1189;
-                                local_75 = _e1191;
-                                let _e1192 = local_73;
-                                let _e1193 = (_e1192 < 3u);
-                                local_76 = _e1193;
-                                if _e1193 {
-                                    let _e1194 = local_73;
-                                    if (_e1194 < 4u) {
+                                let _e1188 = phi_862_;
+                                let _e1190 = phi_865_;
+                                let _e1192 = phi_867_;
+                                local_73 = _e1188;
+                                local_74 = _e1190;
+                                local_75 = _e1192;
+                                let _e1193 = local_73;
+                                let _e1194 = (_e1193 < 3u);
+                                local_76 = _e1194;
+                                if _e1194 {
+                                    let _e1195 = local_73;
+                                    if (_e1195 < 4u) {
                                     } else {
                                         phi_5697_ = true;
                                         break;
                                     }
-                                    let _e1196 = local_73;
-                                    let _e1198 = local_612[_e1196];
-                                    local_77 = (_e1198 * 10u);
-                                    let _e1200 = local_76;
-                                    if _e1200 {
+                                    let _e1197 = local_73;
+                                    let _e1199 = local_612[_e1197];
+                                    local_77 = (_e1199 * 10u);
+                                    let _e1201 = local_76;
+                                    if _e1201 {
                                     } else {
                                         phi_5697_ = true;
                                         break;
                                     }
-                                    let _e1201 = local_73;
-                                    let _e1203 = local_613[_e1201];
-                                    local_78 = _e1203;
-                                    let _e1204 = local_77;
-                                    let _e1205 = (_e1204 + 3u);
-                                    local_79 = _e1205;
-                                    let _e1206 = local_2;
-                                    if (_e1205 < _e1206) {
+                                    let _e1202 = local_73;
+                                    let _e1204 = local_613[_e1202];
+                                    local_78 = _e1204;
+                                    let _e1205 = local_77;
+                                    let _e1206 = (_e1205 + 3u);
+                                    local_79 = _e1206;
+                                    let _e1207 = local_2;
+                                    if (_e1206 < _e1207) {
                                     } else {
                                         phi_5697_ = true;
                                         break;
                                     }
-                                    let _e1208 = local_79;
-                                    let _e1211 = global_5.member[_e1208];
-                                    let _e1213 = local_78;
-                                    let _e1215 = local_75;
-                                    let _e1217 = local_76;
-                                    if _e1217 {
+                                    let _e1209 = local_79;
+                                    let _e1212 = global_5.member[_e1209];
+                                    let _e1214 = local_78;
+                                    let _e1216 = local_75;
+                                    let _e1218 = local_76;
+                                    if _e1218 {
                                     } else {
                                         phi_5697_ = true;
                                         break;
                                     }
-                                    let _e1218 = local_613[_e1201];
-                                    local_80 = _e1218;
-                                    let _e1219 = local_77;
-                                    let _e1220 = (_e1219 + 7u);
-                                    local_81 = _e1220;
-                                    let _e1221 = local_2;
-                                    if (_e1220 < _e1221) {
+                                    let _e1219 = local_613[_e1202];
+                                    local_80 = _e1219;
+                                    let _e1220 = local_77;
+                                    let _e1221 = (_e1220 + 7u);
+                                    local_81 = _e1221;
+                                    let _e1222 = local_2;
+                                    if (_e1221 < _e1222) {
                                     } else {
                                         phi_5697_ = true;
                                         break;
                                     }
-                                    let _e1223 = local_81;
-                                    let _e1226 = global_5.member[_e1223];
-                                    let _e1228 = local_80;
-                                    let _e1230 = local_74;
-                                    let _e1232 = local_73;
-                                    phi_863_ = (_e1232 + 1u);
-                                    phi_866_ = (_e1230 + (_e1228 * bitcast<f32>(_e1226)));
-                                    phi_868_ = (_e1215 + (_e1213 * bitcast<f32>(_e1211)));
+                                    let _e1224 = local_81;
+                                    let _e1227 = global_5.member[_e1224];
+                                    let _e1229 = local_80;
+                                    let _e1231 = local_74;
+                                    let _e1233 = local_73;
+                                    phi_863_ = (_e1233 + 1u);
+                                    phi_866_ = (_e1231 + (_e1229 * bitcast<f32>(_e1227)));
+                                    phi_868_ = (_e1216 + (_e1214 * bitcast<f32>(_e1212)));
                                 } else {
                                     phi_863_ = u32();
                                     phi_866_ = f32();
                                     phi_868_ = f32();
                                 }
-                                let _e1235 = phi_863_;
-                                let _e1237 = phi_866_;
-                                let _e1239 = phi_868_;
+                                let _e1236 = phi_863_;
+                                let _e1238 = phi_866_;
+                                let _e1240 = phi_868_;
                                 continue;
                                 continuing {
-                                    let _e1240 = local_76;
-                                    phi_862_ = _e1235;
-                                    phi_865_ = _e1237;
-                                    phi_867_ = _e1239;
-                                    phi_5697_ = _e1051;
-                                    break if !(_e1240);
+                                    let _e1241 = local_76;
+                                    phi_862_ = _e1236;
+                                    phi_865_ = _e1238;
+                                    phi_867_ = _e1240;
+                                    phi_5697_ = _e1052;
+                                    break if !(_e1241);
                                 }
                             }
-                            let _e1243 = phi_5697_;
-                            phi_5975_ = _e1243;
-                            if _e1243 {
+                            let _e1244 = phi_5697_;
+                            phi_5975_ = _e1244;
+                            if _e1244 {
                                 break;
                             }
-                            let _e1245 = local_614[3u];
-                            let _e1246 = (_e1245 * 16u);
-                            local_82 = _e1246;
-                            let _e1247 = (_e1246 + 8u);
-                            local_83 = _e1247;
-                            let _e1248 = local_4;
-                            if (_e1247 < _e1248) {
+                            let _e1246 = local_614[3u];
+                            let _e1247 = (_e1246 * 16u);
+                            local_82 = _e1247;
+                            let _e1248 = (_e1247 + 8u);
+                            local_83 = _e1248;
+                            let _e1249 = local_4;
+                            if (_e1248 < _e1249) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e1250 = local_83;
-                            let _e1253 = global_7.member[_e1250];
-                            local_84 = _e1253;
-                            let _e1254 = local_82;
-                            let _e1255 = (_e1254 + 9u);
-                            local_85 = _e1255;
-                            let _e1256 = local_4;
-                            if (_e1255 < _e1256) {
+                            let _e1251 = local_83;
+                            let _e1254 = global_7.member[_e1251];
+                            local_84 = _e1254;
+                            let _e1255 = local_82;
+                            let _e1256 = (_e1255 + 9u);
+                            local_85 = _e1256;
+                            let _e1257 = local_4;
+                            if (_e1256 < _e1257) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e1258 = local_85;
-                            let _e1261 = global_7.member[_e1258];
-                            local_86 = _e1261;
-                            let _e1262 = local_84;
-                            let _e1263 = local_25;
-                            if (_e1262 < _e1263) {
+                            let _e1259 = local_85;
+                            let _e1262 = global_7.member[_e1259];
+                            local_86 = _e1262;
+                            let _e1263 = local_84;
+                            let _e1264 = local_25;
+                            if (_e1263 < _e1264) {
                                 phi_979_ = true;
                             } else {
-                                let _e1265 = local_86;
-                                let _e1266 = local_25;
-                                phi_979_ = (_e1265 < _e1266);
+                                let _e1266 = local_86;
+                                let _e1267 = local_25;
+                                phi_979_ = (_e1266 < _e1267);
                             }
-                            let _e1269 = phi_979_;
-                            if _e1269 {
-                                let _e1270 = local_27;
-                                let _e1271 = (_e1270 * 10u);
-                                local_87 = _e1271;
-                                let _e1272 = (_e1271 + 3u);
-                                local_88 = _e1272;
-                                let _e1273 = local_2;
-                                if (_e1272 < _e1273) {
+                            let _e1270 = phi_979_;
+                            if _e1270 {
+                                let _e1271 = local_27;
+                                let _e1272 = (_e1271 * 10u);
+                                local_87 = _e1272;
+                                let _e1273 = (_e1272 + 3u);
+                                local_88 = _e1273;
+                                let _e1274 = local_2;
+                                if (_e1273 < _e1274) {
                                 } else {
                                     phi_5975_ = true;
                                     break;
                                 }
-                                let _e1275 = local_88;
-                                let _e1278 = global_5.member[_e1275];
-                                local_89 = bitcast<f32>(_e1278);
-                                let _e1280 = local_87;
-                                let _e1281 = (_e1280 + 7u);
-                                local_90 = _e1281;
-                                let _e1282 = local_2;
-                                if (_e1281 < _e1282) {
+                                let _e1276 = local_88;
+                                let _e1279 = global_5.member[_e1276];
+                                local_89 = bitcast<f32>(_e1279);
+                                let _e1281 = local_87;
+                                let _e1282 = (_e1281 + 7u);
+                                local_90 = _e1282;
+                                let _e1283 = local_2;
+                                if (_e1282 < _e1283) {
                                 } else {
                                     phi_5975_ = true;
                                     break;
                                 }
-                                let _e1284 = local_90;
-                                let _e1287 = global_5.member[_e1284];
-                                local_91 = bitcast<f32>(_e1287);
-                                let _e1289 = local_29;
-                                let _e1290 = (_e1289 * 10u);
-                                local_92 = _e1290;
-                                let _e1291 = (_e1290 + 3u);
-                                local_93 = _e1291;
-                                let _e1292 = local_2;
-                                if (_e1291 < _e1292) {
+                                let _e1285 = local_90;
+                                let _e1288 = global_5.member[_e1285];
+                                local_91 = bitcast<f32>(_e1288);
+                                let _e1290 = local_29;
+                                let _e1291 = (_e1290 * 10u);
+                                local_92 = _e1291;
+                                let _e1292 = (_e1291 + 3u);
+                                local_93 = _e1292;
+                                let _e1293 = local_2;
+                                if (_e1292 < _e1293) {
                                 } else {
                                     phi_5975_ = true;
                                     break;
                                 }
-                                let _e1294 = local_93;
-                                let _e1297 = global_5.member[_e1294];
-                                local_94 = bitcast<f32>(_e1297);
-                                let _e1299 = local_92;
-                                let _e1300 = (_e1299 + 7u);
-                                local_95 = _e1300;
-                                let _e1301 = local_2;
-                                if (_e1300 < _e1301) {
+                                let _e1295 = local_93;
+                                let _e1298 = global_5.member[_e1295];
+                                local_94 = bitcast<f32>(_e1298);
+                                let _e1300 = local_92;
+                                let _e1301 = (_e1300 + 7u);
+                                local_95 = _e1301;
+                                let _e1302 = local_2;
+                                if (_e1301 < _e1302) {
                                 } else {
                                     phi_5975_ = true;
                                     break;
                                 }
-                                let _e1303 = local_95;
-                                let _e1306 = global_5.member[_e1303];
-                                local_96 = bitcast<f32>(_e1306);
-                                let _e1308 = local_31;
-                                let _e1309 = (_e1308 * 10u);
-                                local_97 = _e1309;
-                                let _e1310 = (_e1309 + 3u);
-                                local_98 = _e1310;
-                                let _e1311 = local_2;
-                                if (_e1310 < _e1311) {
+                                let _e1304 = local_95;
+                                let _e1307 = global_5.member[_e1304];
+                                local_96 = bitcast<f32>(_e1307);
+                                let _e1309 = local_31;
+                                let _e1310 = (_e1309 * 10u);
+                                local_97 = _e1310;
+                                let _e1311 = (_e1310 + 3u);
+                                local_98 = _e1311;
+                                let _e1312 = local_2;
+                                if (_e1311 < _e1312) {
                                 } else {
                                     phi_5975_ = true;
                                     break;
                                 }
-                                let _e1313 = local_98;
-                                let _e1316 = global_5.member[_e1313];
-                                local_99 = bitcast<f32>(_e1316);
-                                let _e1318 = local_97;
-                                let _e1319 = (_e1318 + 7u);
-                                local_100 = _e1319;
-                                let _e1320 = local_2;
-                                if (_e1319 < _e1320) {
+                                let _e1314 = local_98;
+                                let _e1317 = global_5.member[_e1314];
+                                local_99 = bitcast<f32>(_e1317);
+                                let _e1319 = local_97;
+                                let _e1320 = (_e1319 + 7u);
+                                local_100 = _e1320;
+                                let _e1321 = local_2;
+                                if (_e1320 < _e1321) {
                                 } else {
                                     phi_5975_ = true;
                                     break;
                                 }
-                                let _e1322 = local_100;
-                                let _e1325 = global_5.member[_e1322];
-                                local_101 = bitcast<f32>(_e1325);
-                                let _e1327 = local_617;
-                                let _e1331 = local_616;
-                                let _e1344 = local_69;
-                                local_504 = (_e1327[0] - _e1344);
-                                let _e1346 = local_70;
-                                local_505 = (_e1327[1] - _e1346);
-                                let _e1348 = local_71;
-                                local_506 = (_e1327[2] - _e1348);
-                                let _e1350 = (_e1331[1][0] - _e1331[0][0]);
-                                local_507 = _e1350;
-                                let _e1351 = (_e1331[1][1] - _e1331[0][1]);
-                                local_508 = _e1351;
-                                let _e1352 = (_e1331[1][2] - _e1331[0][2]);
-                                local_509 = _e1352;
-                                let _e1353 = (_e1331[2][0] - _e1331[0][0]);
-                                local_510 = _e1353;
-                                let _e1354 = (_e1331[2][1] - _e1331[0][1]);
-                                local_511 = _e1354;
-                                let _e1355 = (_e1331[2][2] - _e1331[0][2]);
-                                local_512 = _e1355;
-                                local_513 = ((_e1351 * _e1355) - (_e1352 * _e1354));
-                                local_514 = ((_e1352 * _e1353) - (_e1350 * _e1355));
-                                local_515 = ((_e1350 * _e1354) - (_e1351 * _e1353));
-                                let _e1369 = (((_e1350 * _e1350) + (_e1351 * _e1351)) + (_e1352 * _e1352));
-                                local_516 = _e1369;
-                                let _e1374 = (((_e1350 * _e1353) + (_e1351 * _e1354)) + (_e1352 * _e1355));
-                                local_517 = _e1374;
-                                let _e1379 = (((_e1353 * _e1353) + (_e1354 * _e1354)) + (_e1355 * _e1355));
-                                local_518 = _e1379;
-                                let _e1382 = ((_e1369 * _e1379) - (_e1374 * _e1374));
-                                local_519 = _e1382;
-                                if (_e1382 > 0f) {
-                                    let _e1384 = local_22;
-                                    let _e1385 = (_e1384 > 0f);
-                                    local_520 = _e1385;
-                                    if _e1385 {
-                                        let _e1386 = local_24;
-                                        let _e1388 = local_24;
-                                        let _e1390 = local_24;
-                                        let _e1392 = (2f * _e1390[2]);
-                                        let _e1393 = (_e1388[1] * -2f);
-                                        let _e1400 = local_24;
-                                        local_525 = (1f + ((_e1388[1] * _e1393) - (_e1390[2] * _e1392)));
-                                        local_526 = ((_e1400[3] * _e1392) + -((_e1386[0] * _e1393)));
-                                        local_527 = ((_e1400[3] * _e1393) + (_e1386[0] * _e1392));
-                                        let _e1407 = (_e1390[2] * -2f);
-                                        let _e1408 = (2f * _e1386[0]);
-                                        local_528 = ((_e1400[3] * _e1407) + (_e1388[1] * _e1408));
-                                        local_529 = (1f + ((_e1390[2] * _e1407) - (_e1386[0] * _e1408)));
-                                        local_530 = ((_e1400[3] * _e1408) + -((_e1388[1] * _e1407)));
-                                        let _e1420 = local_504;
-                                        let _e1421 = local_513;
-                                        let _e1423 = local_505;
-                                        let _e1424 = local_514;
-                                        let _e1427 = local_506;
-                                        let _e1428 = local_515;
-                                        let _e1430 = (((_e1420 * _e1421) + (_e1423 * _e1424)) + (_e1427 * _e1428));
-                                        local_521 = _e1430;
-                                        let _e1431 = local_504;
+                                let _e1323 = local_100;
+                                let _e1326 = global_5.member[_e1323];
+                                local_101 = bitcast<f32>(_e1326);
+                                let _e1328 = local_617;
+                                let _e1332 = local_616;
+                                let _e1345 = local_69;
+                                local_504 = (_e1328[0] - _e1345);
+                                let _e1347 = local_70;
+                                local_505 = (_e1328[1] - _e1347);
+                                let _e1349 = local_71;
+                                local_506 = (_e1328[2] - _e1349);
+                                let _e1351 = (_e1332[1][0] - _e1332[0][0]);
+                                local_507 = _e1351;
+                                let _e1352 = (_e1332[1][1] - _e1332[0][1]);
+                                local_508 = _e1352;
+                                let _e1353 = (_e1332[1][2] - _e1332[0][2]);
+                                local_509 = _e1353;
+                                let _e1354 = (_e1332[2][0] - _e1332[0][0]);
+                                local_510 = _e1354;
+                                let _e1355 = (_e1332[2][1] - _e1332[0][1]);
+                                local_511 = _e1355;
+                                let _e1356 = (_e1332[2][2] - _e1332[0][2]);
+                                local_512 = _e1356;
+                                local_513 = ((_e1352 * _e1356) - (_e1353 * _e1355));
+                                local_514 = ((_e1353 * _e1354) - (_e1351 * _e1356));
+                                local_515 = ((_e1351 * _e1355) - (_e1352 * _e1354));
+                                let _e1370 = (((_e1351 * _e1351) + (_e1352 * _e1352)) + (_e1353 * _e1353));
+                                local_516 = _e1370;
+                                let _e1375 = (((_e1351 * _e1354) + (_e1352 * _e1355)) + (_e1353 * _e1356));
+                                local_517 = _e1375;
+                                let _e1380 = (((_e1354 * _e1354) + (_e1355 * _e1355)) + (_e1356 * _e1356));
+                                local_518 = _e1380;
+                                let _e1383 = ((_e1370 * _e1380) - (_e1375 * _e1375));
+                                local_519 = _e1383;
+                                if (_e1383 > 0f) {
+                                    let _e1385 = local_22;
+                                    let _e1386 = (_e1385 > 0f);
+                                    local_520 = _e1386;
+                                    if _e1386 {
+                                        let _e1387 = local_24;
+                                        let _e1389 = local_24;
+                                        let _e1391 = local_24;
+                                        let _e1393 = (2f * _e1391[2]);
+                                        let _e1394 = (_e1389[1] * -2f);
+                                        let _e1401 = local_24;
+                                        local_525 = (1f + ((_e1389[1] * _e1394) - (_e1391[2] * _e1393)));
+                                        local_526 = ((_e1401[3] * _e1393) + -((_e1387[0] * _e1394)));
+                                        local_527 = ((_e1401[3] * _e1394) + (_e1387[0] * _e1393));
+                                        let _e1408 = (_e1391[2] * -2f);
+                                        let _e1409 = (2f * _e1387[0]);
+                                        local_528 = ((_e1401[3] * _e1408) + (_e1389[1] * _e1409));
+                                        local_529 = (1f + ((_e1391[2] * _e1408) - (_e1387[0] * _e1409)));
+                                        local_530 = ((_e1401[3] * _e1409) + -((_e1389[1] * _e1408)));
+                                        let _e1421 = local_504;
+                                        let _e1422 = local_513;
+                                        let _e1424 = local_505;
+                                        let _e1425 = local_514;
+                                        let _e1428 = local_506;
+                                        let _e1429 = local_515;
+                                        let _e1431 = (((_e1421 * _e1422) + (_e1424 * _e1425)) + (_e1428 * _e1429));
+                                        local_521 = _e1431;
                                         let _e1432 = local_504;
-                                        let _e1434 = local_505;
+                                        let _e1433 = local_504;
                                         let _e1435 = local_505;
-                                        let _e1438 = local_506;
+                                        let _e1436 = local_505;
                                         let _e1439 = local_506;
-                                        let _e1442 = local_513;
+                                        let _e1440 = local_506;
                                         let _e1443 = local_513;
-                                        let _e1445 = local_514;
+                                        let _e1444 = local_513;
                                         let _e1446 = local_514;
-                                        let _e1449 = local_515;
+                                        let _e1447 = local_514;
                                         let _e1450 = local_515;
-                                        let _e1454 = sqrt(((((_e1431 * _e1432) + (_e1434 * _e1435)) + (_e1438 * _e1439)) * (((_e1442 * _e1443) + (_e1445 * _e1446)) + (_e1449 * _e1450))));
-                                        local_522 = _e1454;
-                                        let _e1455 = (0.001f * _e1454);
-                                        local_523 = _e1455;
-                                        let _e1456 = (_e1430 < 0f);
-                                        local_524 = _e1456;
-                                        if _e1456 {
-                                            let _e1457 = local_521;
-                                            phi_5279_ = -(_e1457);
+                                        let _e1451 = local_515;
+                                        let _e1455 = sqrt(((((_e1432 * _e1433) + (_e1435 * _e1436)) + (_e1439 * _e1440)) * (((_e1443 * _e1444) + (_e1446 * _e1447)) + (_e1450 * _e1451))));
+                                        local_522 = _e1455;
+                                        let _e1456 = (0.001f * _e1455);
+                                        local_523 = _e1456;
+                                        let _e1457 = (_e1431 < 0f);
+                                        local_524 = _e1457;
+                                        if _e1457 {
+                                            let _e1458 = local_521;
+                                            phi_5279_ = -(_e1458);
                                         } else {
-                                            phi_5279_ = _e1430;
+                                            phi_5279_ = _e1431;
                                         }
-                                        let _e1460 = phi_5279_;
-                                        let _e1461 = local_523;
-                                        if (_e1460 >= _e1461) {
-                                            phi_5290_ = _e1430;
+                                        let _e1461 = phi_5279_;
+                                        let _e1462 = local_523;
+                                        if (_e1461 >= _e1462) {
+                                            phi_5290_ = _e1431;
                                         } else {
-                                            let _e1463 = local_524;
-                                            if _e1463 {
-                                                let _e1464 = local_522;
-                                                phi_5288_ = (_e1464 * -0.001f);
+                                            let _e1464 = local_524;
+                                            if _e1464 {
+                                                let _e1465 = local_522;
+                                                phi_5288_ = (_e1465 * -0.001f);
                                             } else {
-                                                phi_5288_ = _e1455;
+                                                phi_5288_ = _e1456;
                                             }
-                                            let _e1467 = phi_5288_;
-                                            phi_5290_ = _e1467;
+                                            let _e1468 = phi_5288_;
+                                            phi_5290_ = _e1468;
                                         }
-                                        let _e1469 = phi_5290_;
-                                        let _e1470 = local_94;
-                                        let _e1471 = local_89;
-                                        let _e1472 = (_e1470 - _e1471);
-                                        let _e1473 = local_96;
-                                        let _e1474 = local_91;
-                                        let _e1475 = (_e1473 - _e1474);
-                                        let _e1476 = local_99;
-                                        let _e1477 = local_89;
-                                        let _e1478 = (_e1476 - _e1477);
-                                        let _e1479 = local_101;
-                                        let _e1480 = local_91;
-                                        let _e1481 = (_e1479 - _e1480);
-                                        let _e1482 = local_525;
-                                        let _e1483 = local_513;
-                                        let _e1485 = local_526;
-                                        let _e1486 = local_514;
-                                        let _e1489 = local_527;
-                                        let _e1490 = local_515;
-                                        let _e1493 = ((((_e1482 * _e1483) + (_e1485 * _e1486)) + (_e1489 * _e1490)) / _e1469);
-                                        let _e1494 = local_504;
-                                        let _e1496 = local_525;
-                                        let _e1498 = local_22;
-                                        let _e1499 = (_e1498 * (_e1496 - (_e1494 * _e1493)));
-                                        let _e1500 = local_505;
-                                        let _e1502 = local_526;
-                                        let _e1504 = local_22;
-                                        let _e1505 = (_e1504 * (_e1502 - (_e1500 * _e1493)));
-                                        let _e1506 = local_506;
-                                        let _e1508 = local_527;
-                                        let _e1510 = local_22;
-                                        let _e1511 = (_e1510 * (_e1508 - (_e1506 * _e1493)));
-                                        let _e1512 = local_507;
-                                        let _e1514 = local_508;
-                                        let _e1517 = local_509;
-                                        let _e1519 = (((_e1499 * _e1512) + (_e1505 * _e1514)) + (_e1511 * _e1517));
-                                        let _e1520 = local_510;
-                                        let _e1522 = local_511;
-                                        let _e1525 = local_512;
-                                        let _e1527 = (((_e1499 * _e1520) + (_e1505 * _e1522)) + (_e1511 * _e1525));
-                                        let _e1528 = local_518;
-                                        let _e1530 = local_517;
-                                        let _e1533 = local_519;
-                                        let _e1534 = (((_e1519 * _e1528) - (_e1527 * _e1530)) / _e1533);
-                                        let _e1535 = local_516;
-                                        let _e1537 = local_517;
-                                        let _e1540 = local_519;
-                                        let _e1541 = (((_e1527 * _e1535) - (_e1519 * _e1537)) / _e1540);
-                                        let _e1548 = local_528;
-                                        let _e1549 = local_513;
-                                        let _e1551 = local_529;
-                                        let _e1552 = local_514;
-                                        let _e1555 = local_530;
-                                        let _e1556 = local_515;
-                                        let _e1559 = ((((_e1548 * _e1549) + (_e1551 * _e1552)) + (_e1555 * _e1556)) / _e1469);
-                                        let _e1560 = local_504;
-                                        let _e1562 = local_528;
-                                        let _e1564 = local_22;
-                                        let _e1565 = (_e1564 * (_e1562 - (_e1560 * _e1559)));
-                                        let _e1566 = local_505;
-                                        let _e1568 = local_529;
-                                        let _e1570 = local_22;
-                                        let _e1571 = (_e1570 * (_e1568 - (_e1566 * _e1559)));
-                                        let _e1572 = local_506;
-                                        let _e1574 = local_530;
-                                        let _e1576 = local_22;
-                                        let _e1577 = (_e1576 * (_e1574 - (_e1572 * _e1559)));
-                                        let _e1578 = local_507;
-                                        let _e1580 = local_508;
-                                        let _e1583 = local_509;
-                                        let _e1585 = (((_e1565 * _e1578) + (_e1571 * _e1580)) + (_e1577 * _e1583));
-                                        let _e1586 = local_510;
-                                        let _e1588 = local_511;
-                                        let _e1591 = local_512;
-                                        let _e1593 = (((_e1565 * _e1586) + (_e1571 * _e1588)) + (_e1577 * _e1591));
-                                        let _e1594 = local_518;
-                                        let _e1596 = local_517;
-                                        let _e1599 = local_519;
-                                        let _e1600 = (((_e1585 * _e1594) - (_e1593 * _e1596)) / _e1599);
-                                        let _e1601 = local_516;
-                                        let _e1603 = local_517;
-                                        let _e1606 = local_519;
-                                        let _e1607 = (((_e1593 * _e1601) - (_e1585 * _e1603)) / _e1606);
-                                        phi_5396_ = type_5(((_e1534 * _e1472) + (_e1541 * _e1478)), ((_e1534 * _e1475) + (_e1541 * _e1481)), ((_e1600 * _e1472) + (_e1607 * _e1478)), ((_e1600 * _e1475) + (_e1607 * _e1481)));
+                                        let _e1470 = phi_5290_;
+                                        let _e1471 = local_94;
+                                        let _e1472 = local_89;
+                                        let _e1473 = (_e1471 - _e1472);
+                                        let _e1474 = local_96;
+                                        let _e1475 = local_91;
+                                        let _e1476 = (_e1474 - _e1475);
+                                        let _e1477 = local_99;
+                                        let _e1478 = local_89;
+                                        let _e1479 = (_e1477 - _e1478);
+                                        let _e1480 = local_101;
+                                        let _e1481 = local_91;
+                                        let _e1482 = (_e1480 - _e1481);
+                                        let _e1483 = local_525;
+                                        let _e1484 = local_513;
+                                        let _e1486 = local_526;
+                                        let _e1487 = local_514;
+                                        let _e1490 = local_527;
+                                        let _e1491 = local_515;
+                                        let _e1494 = ((((_e1483 * _e1484) + (_e1486 * _e1487)) + (_e1490 * _e1491)) / _e1470);
+                                        let _e1495 = local_504;
+                                        let _e1497 = local_525;
+                                        let _e1499 = local_22;
+                                        let _e1500 = (_e1499 * (_e1497 - (_e1495 * _e1494)));
+                                        let _e1501 = local_505;
+                                        let _e1503 = local_526;
+                                        let _e1505 = local_22;
+                                        let _e1506 = (_e1505 * (_e1503 - (_e1501 * _e1494)));
+                                        let _e1507 = local_506;
+                                        let _e1509 = local_527;
+                                        let _e1511 = local_22;
+                                        let _e1512 = (_e1511 * (_e1509 - (_e1507 * _e1494)));
+                                        let _e1513 = local_507;
+                                        let _e1515 = local_508;
+                                        let _e1518 = local_509;
+                                        let _e1520 = (((_e1500 * _e1513) + (_e1506 * _e1515)) + (_e1512 * _e1518));
+                                        let _e1521 = local_510;
+                                        let _e1523 = local_511;
+                                        let _e1526 = local_512;
+                                        let _e1528 = (((_e1500 * _e1521) + (_e1506 * _e1523)) + (_e1512 * _e1526));
+                                        let _e1529 = local_518;
+                                        let _e1531 = local_517;
+                                        let _e1534 = local_519;
+                                        let _e1535 = (((_e1520 * _e1529) - (_e1528 * _e1531)) / _e1534);
+                                        let _e1536 = local_516;
+                                        let _e1538 = local_517;
+                                        let _e1541 = local_519;
+                                        let _e1542 = (((_e1528 * _e1536) - (_e1520 * _e1538)) / _e1541);
+                                        let _e1549 = local_528;
+                                        let _e1550 = local_513;
+                                        let _e1552 = local_529;
+                                        let _e1553 = local_514;
+                                        let _e1556 = local_530;
+                                        let _e1557 = local_515;
+                                        let _e1560 = ((((_e1549 * _e1550) + (_e1552 * _e1553)) + (_e1556 * _e1557)) / _e1470);
+                                        let _e1561 = local_504;
+                                        let _e1563 = local_528;
+                                        let _e1565 = local_22;
+                                        let _e1566 = (_e1565 * (_e1563 - (_e1561 * _e1560)));
+                                        let _e1567 = local_505;
+                                        let _e1569 = local_529;
+                                        let _e1571 = local_22;
+                                        let _e1572 = (_e1571 * (_e1569 - (_e1567 * _e1560)));
+                                        let _e1573 = local_506;
+                                        let _e1575 = local_530;
+                                        let _e1577 = local_22;
+                                        let _e1578 = (_e1577 * (_e1575 - (_e1573 * _e1560)));
+                                        let _e1579 = local_507;
+                                        let _e1581 = local_508;
+                                        let _e1584 = local_509;
+                                        let _e1586 = (((_e1566 * _e1579) + (_e1572 * _e1581)) + (_e1578 * _e1584));
+                                        let _e1587 = local_510;
+                                        let _e1589 = local_511;
+                                        let _e1592 = local_512;
+                                        let _e1594 = (((_e1566 * _e1587) + (_e1572 * _e1589)) + (_e1578 * _e1592));
+                                        let _e1595 = local_518;
+                                        let _e1597 = local_517;
+                                        let _e1600 = local_519;
+                                        let _e1601 = (((_e1586 * _e1595) - (_e1594 * _e1597)) / _e1600);
+                                        let _e1602 = local_516;
+                                        let _e1604 = local_517;
+                                        let _e1607 = local_519;
+                                        let _e1608 = (((_e1594 * _e1602) - (_e1586 * _e1604)) / _e1607);
+                                        phi_5396_ = type_5(((_e1535 * _e1473) + (_e1542 * _e1479)), ((_e1535 * _e1476) + (_e1542 * _e1482)), ((_e1601 * _e1473) + (_e1608 * _e1479)), ((_e1601 * _e1476) + (_e1608 * _e1482)));
                                     } else {
                                         phi_5396_ = type_5();
                                     }
-                                    let _e1616 = phi_5396_;
-                                    let _e1617 = local_520;
-                                    phi_5400_ = _e1616;
-                                    phi_5401_ = select(true, false, _e1617);
+                                    let _e1617 = phi_5396_;
+                                    let _e1618 = local_520;
+                                    phi_5400_ = _e1617;
+                                    phi_5401_ = select(true, false, _e1618);
                                 } else {
                                     phi_5400_ = type_5();
                                     phi_5401_ = true;
                                 }
-                                let _e1620 = phi_5400_;
-                                let _e1622 = phi_5401_;
-                                if _e1622 {
+                                let _e1621 = phi_5400_;
+                                let _e1623 = phi_5401_;
+                                if _e1623 {
                                     phi_5405_ = type_5(0f, 0f, 0f, 0f);
                                 } else {
-                                    phi_5405_ = _e1620;
+                                    phi_5405_ = _e1621;
                                 }
-                                let _e1624 = phi_5405_;
-                                phi_1129_ = _e1624;
+                                let _e1625 = phi_5405_;
+                                phi_1129_ = _e1625;
                             } else {
                                 phi_1129_ = type_5(0f, 0f, 0f, 0f);
                             }
-                            let _e1626 = phi_1129_;
-                            local_102 = _e1626;
-                            let _e1627 = local_84;
-                            if (_e1627 == 4294967295u) {
-                                phi_5891_ = _e1243;
+                            let _e1627 = phi_1129_;
+                            local_102 = _e1627;
+                            let _e1628 = local_84;
+                            if (_e1628 == 4294967295u) {
+                                phi_5891_ = _e1244;
                                 phi_2597_ = type_5();
                                 phi_2598_ = true;
                             } else {
-                                let _e1629 = local_84;
-                                let _e1630 = local_25;
-                                let _e1631 = (_e1629 >= _e1630);
-                                if _e1631 {
-                                    phi_5892_ = _e1243;
+                                let _e1630 = local_84;
+                                let _e1631 = local_25;
+                                let _e1632 = (_e1630 >= _e1631);
+                                if _e1632 {
+                                    phi_5892_ = _e1244;
                                     phi_2596_ = type_5();
                                 } else {
-                                    let _e1632 = local_84;
-                                    let _e1633 = (_e1632 * 4u);
-                                    local_103 = _e1633;
-                                    let _e1634 = local_5;
-                                    if (_e1633 < _e1634) {
+                                    let _e1633 = local_84;
+                                    let _e1634 = (_e1633 * 4u);
+                                    local_103 = _e1634;
+                                    let _e1635 = local_5;
+                                    if (_e1634 < _e1635) {
                                     } else {
                                         phi_5975_ = true;
                                         break;
                                     }
-                                    let _e1636 = local_103;
-                                    let _e1639 = global_8.member[_e1636];
-                                    local_104 = _e1639;
-                                    let _e1640 = local_103;
-                                    let _e1641 = (_e1640 + 1u);
-                                    local_105 = _e1641;
-                                    let _e1642 = local_5;
-                                    if (_e1641 < _e1642) {
+                                    let _e1637 = local_103;
+                                    let _e1640 = global_8.member[_e1637];
+                                    local_104 = _e1640;
+                                    let _e1641 = local_103;
+                                    let _e1642 = (_e1641 + 1u);
+                                    local_105 = _e1642;
+                                    let _e1643 = local_5;
+                                    if (_e1642 < _e1643) {
                                     } else {
                                         phi_5975_ = true;
                                         break;
                                     }
-                                    let _e1644 = local_105;
-                                    let _e1647 = global_8.member[_e1644];
-                                    local_106 = _e1647;
-                                    let _e1648 = local_103;
-                                    let _e1649 = (_e1648 + 2u);
-                                    local_107 = _e1649;
-                                    let _e1650 = local_5;
-                                    if (_e1649 < _e1650) {
+                                    let _e1645 = local_105;
+                                    let _e1648 = global_8.member[_e1645];
+                                    local_106 = _e1648;
+                                    let _e1649 = local_103;
+                                    let _e1650 = (_e1649 + 2u);
+                                    local_107 = _e1650;
+                                    let _e1651 = local_5;
+                                    if (_e1650 < _e1651) {
                                     } else {
                                         phi_5975_ = true;
                                         break;
                                     }
-                                    let _e1652 = local_107;
-                                    let _e1655 = global_8.member[_e1652];
-                                    local_108 = _e1655;
-                                    let _e1656 = local_103;
-                                    let _e1657 = (_e1656 + 3u);
-                                    local_109 = _e1657;
-                                    let _e1658 = local_5;
-                                    if (_e1657 < _e1658) {
+                                    let _e1653 = local_107;
+                                    let _e1656 = global_8.member[_e1653];
+                                    local_108 = _e1656;
+                                    let _e1657 = local_103;
+                                    let _e1658 = (_e1657 + 3u);
+                                    local_109 = _e1658;
+                                    let _e1659 = local_5;
+                                    if (_e1658 < _e1659) {
                                     } else {
                                         phi_5975_ = true;
                                         break;
                                     }
-                                    let _e1660 = local_109;
-                                    let _e1663 = global_8.member[_e1660];
-                                    local_110 = _e1663;
-                                    let _e1664 = local_106;
-                                    if (_e1664 == 0u) {
-                                        phi_5894_ = _e1243;
+                                    let _e1661 = local_109;
+                                    let _e1664 = global_8.member[_e1661];
+                                    local_110 = _e1664;
+                                    let _e1665 = local_106;
+                                    if (_e1665 == 0u) {
+                                        phi_5894_ = _e1244;
                                         phi_2590_ = type_5();
                                         phi_2591_ = true;
                                     } else {
-                                        let _e1666 = local_108;
-                                        let _e1667 = (_e1666 == 0u);
-                                        if _e1667 {
-                                            phi_5895_ = _e1243;
+                                        let _e1667 = local_108;
+                                        let _e1668 = (_e1667 == 0u);
+                                        if _e1668 {
+                                            phi_5895_ = _e1244;
                                             phi_2589_ = type_5();
                                         } else {
-                                            let _e1668 = local_110;
-                                            let _e1671 = ((_e1668 >> bitcast<u32>(8u)) & 31u);
-                                            local_559 = select(_e1671, 1u, (_e1671 == 0u));
-                                            let _e1674 = local_110;
-                                            let _e1678 = local_110;
-                                            let _e1682 = local_104;
-                                            let _e1683 = local_106;
-                                            let _e1684 = local_108;
-                                            let _e1685 = type_22(_e1682, _e1683, _e1684, ((_e1674 >> bitcast<u32>(1u)) & 3u), ((_e1678 >> bitcast<u32>(3u)) & 3u));
-                                            let _e1686 = local_106;
-                                            let _e1687 = f32(_e1686);
-                                            local_111 = _e1687;
-                                            let _e1688 = local_75;
-                                            if ((bitcast<u32>((_e1688 * _e1687)) & 2139095040u) != 2139095040u) {
-                                                let _e1693 = local_108;
-                                                let _e1695 = local_74;
-                                                phi_1239_ = select(true, false, ((bitcast<u32>((_e1695 * f32(_e1693))) & 2139095040u) != 2139095040u));
+                                            let _e1669 = local_110;
+                                            let _e1672 = ((_e1669 >> bitcast<u32>(8u)) & 31u);
+                                            local_559 = select(_e1672, 1u, (_e1672 == 0u));
+                                            let _e1675 = local_110;
+                                            let _e1679 = local_110;
+                                            let _e1683 = local_104;
+                                            let _e1684 = local_106;
+                                            let _e1685 = local_108;
+                                            let _e1686 = type_22(_e1683, _e1684, _e1685, ((_e1675 >> bitcast<u32>(1u)) & 3u), ((_e1679 >> bitcast<u32>(3u)) & 3u));
+                                            let _e1687 = local_106;
+                                            let _e1688 = f32(_e1687);
+                                            local_111 = _e1688;
+                                            let _e1689 = local_75;
+                                            if ((bitcast<u32>((_e1689 * _e1688)) & 2139095040u) != 2139095040u) {
+                                                let _e1694 = local_108;
+                                                let _e1696 = local_74;
+                                                phi_1239_ = select(true, false, ((bitcast<u32>((_e1696 * f32(_e1694))) & 2139095040u) != 2139095040u));
                                             } else {
                                                 phi_1239_ = true;
                                             }
-                                            let _e1702 = phi_1239_;
-                                            let _e1703 = local_74;
-                                            local_560 = select(_e1703, 0f, _e1702);
-                                            let _e1705 = local_75;
-                                            local_561 = select(_e1705, 0f, _e1702);
-                                            let _e1707 = local_102;
-                                            local_112 = _e1707.member;
-                                            let _e1709 = local_111;
-                                            let _e1710 = (_e1707.member * _e1709);
-                                            let _e1711 = local_102;
-                                            local_113 = _e1711.member_1;
-                                            let _e1713 = local_108;
-                                            let _e1714 = f32(_e1713);
-                                            let _e1715 = (_e1711.member_1 * _e1714);
-                                            let _e1716 = local_102;
-                                            local_114 = _e1716.member_2;
-                                            let _e1718 = local_111;
-                                            let _e1719 = (_e1716.member_2 * _e1718);
-                                            let _e1720 = local_102;
-                                            local_115 = _e1720.member_3;
-                                            let _e1722 = (_e1720.member_3 * _e1714);
-                                            let _e1726 = sqrt(((_e1710 * _e1710) + (_e1715 * _e1715)));
-                                            local_116 = _e1726;
-                                            let _e1730 = sqrt(((_e1719 * _e1719) + (_e1722 * _e1722)));
-                                            local_117 = _e1730;
-                                            let _e1732 = select(_e1730, _e1726, (_e1726 > _e1730));
-                                            local_562 = _e1732;
-                                            if (_e1732 > 1f) {
-                                                let _e1734 = local_562;
-                                                phi_1278_ = !(((bitcast<u32>(_e1734) & 2139095040u) != 2139095040u));
+                                            let _e1703 = phi_1239_;
+                                            let _e1704 = local_74;
+                                            local_560 = select(_e1704, 0f, _e1703);
+                                            let _e1706 = local_75;
+                                            local_561 = select(_e1706, 0f, _e1703);
+                                            let _e1708 = local_102;
+                                            local_112 = _e1708.member;
+                                            let _e1710 = local_111;
+                                            let _e1711 = (_e1708.member * _e1710);
+                                            let _e1712 = local_102;
+                                            local_113 = _e1712.member_1;
+                                            let _e1714 = local_108;
+                                            let _e1715 = f32(_e1714);
+                                            let _e1716 = (_e1712.member_1 * _e1715);
+                                            let _e1717 = local_102;
+                                            local_114 = _e1717.member_2;
+                                            let _e1719 = local_111;
+                                            let _e1720 = (_e1717.member_2 * _e1719);
+                                            let _e1721 = local_102;
+                                            local_115 = _e1721.member_3;
+                                            let _e1723 = (_e1721.member_3 * _e1715);
+                                            let _e1727 = sqrt(((_e1711 * _e1711) + (_e1716 * _e1716)));
+                                            local_116 = _e1727;
+                                            let _e1731 = sqrt(((_e1720 * _e1720) + (_e1723 * _e1723)));
+                                            local_117 = _e1731;
+                                            let _e1733 = select(_e1731, _e1727, (_e1727 > _e1731));
+                                            local_562 = _e1733;
+                                            if (_e1733 > 1f) {
+                                                let _e1735 = local_562;
+                                                phi_1278_ = !(((bitcast<u32>(_e1735) & 2139095040u) != 2139095040u));
                                             } else {
                                                 phi_1278_ = true;
                                             }
-                                            let _e1740 = phi_1278_;
-                                            local_118 = _e1740;
-                                            if _e1740 {
+                                            let _e1741 = phi_1278_;
+                                            local_118 = _e1741;
+                                            if _e1741 {
                                                 phi_1374_ = 1u;
                                                 phi_1375_ = 1u;
                                             } else {
-                                                let _e1741 = local_116;
-                                                let _e1742 = local_117;
-                                                if (_e1741 >= _e1742) {
-                                                    let _e1780 = local_117;
-                                                    let _e1782 = local_117;
-                                                    let _e1784 = ceil(select(8f, _e1782, (_e1780 < 8f)));
-                                                    local_119 = _e1784;
-                                                    if (_e1784 < 1f) {
+                                                let _e1742 = local_116;
+                                                let _e1743 = local_117;
+                                                if (_e1742 >= _e1743) {
+                                                    let _e1783 = local_117;
+                                                    let _e1785 = local_117;
+                                                    let _e1787 = ceil(select(8f, _e1785, (_e1783 < 8f)));
+                                                    local_119 = _e1787;
+                                                    if (_e1787 < 1f) {
                                                         phi_1304_ = 1u;
                                                     } else {
-                                                        let _e1786 = local_119;
-                                                        let _e1788 = local_119;
-                                                        let _e1790 = local_119;
-                                                        phi_1304_ = select(select(u32(_e1786), 0u, (_e1788 < 0f)), 4294967295u, (_e1790 > 4294967000f));
+                                                        let _e1789 = local_119;
+                                                        let _e1791 = local_119;
+                                                        let _e1794 = local_119;
+                                                        phi_1304_ = select(select(u32(_e1789), 0u, !((_e1791 >= 0f))), 4294967295u, (_e1794 > 4294967000f));
                                                     }
-                                                    let _e1795 = phi_1304_;
-                                                    local_120 = _e1795;
-                                                    if (_e1795 == 0u) {
+                                                    let _e1799 = phi_1304_;
+                                                    local_120 = _e1799;
+                                                    if (_e1799 == 0u) {
                                                         phi_5975_ = true;
                                                         break;
                                                     }
-                                                    let _e1797 = local_120;
-                                                    let _e1799 = f32((64u / _e1797));
-                                                    let _e1800 = local_116;
-                                                    let _e1802 = local_116;
-                                                    let _e1804 = ceil(select(_e1799, _e1802, (_e1800 < _e1799)));
-                                                    local_121 = _e1804;
-                                                    if (_e1804 < 1f) {
+                                                    let _e1801 = local_120;
+                                                    let _e1803 = f32((64u / _e1801));
+                                                    let _e1804 = local_116;
+                                                    let _e1806 = local_116;
+                                                    let _e1808 = ceil(select(_e1803, _e1806, (_e1804 < _e1803)));
+                                                    local_121 = _e1808;
+                                                    if (_e1808 < 1f) {
                                                         phi_1328_ = 1u;
                                                     } else {
-                                                        let _e1806 = local_121;
-                                                        let _e1808 = local_121;
                                                         let _e1810 = local_121;
-                                                        phi_1328_ = select(select(u32(_e1806), 0u, (_e1808 < 0f)), 4294967295u, (_e1810 > 4294967000f));
+                                                        let _e1812 = local_121;
+                                                        let _e1815 = local_121;
+                                                        phi_1328_ = select(select(u32(_e1810), 0u, !((_e1812 >= 0f))), 4294967295u, (_e1815 > 4294967000f));
                                                     }
-                                                    let _e1815 = phi_1328_;
-                                                    phi_1372_ = _e1795;
-                                                    phi_1373_ = _e1815;
+                                                    let _e1820 = phi_1328_;
+                                                    phi_1372_ = _e1799;
+                                                    phi_1373_ = _e1820;
                                                 } else {
-                                                    let _e1744 = local_116;
-                                                    let _e1746 = local_116;
-                                                    let _e1748 = ceil(select(8f, _e1746, (_e1744 < 8f)));
-                                                    local_122 = _e1748;
-                                                    if (_e1748 < 1f) {
+                                                    let _e1745 = local_116;
+                                                    let _e1747 = local_116;
+                                                    let _e1749 = ceil(select(8f, _e1747, (_e1745 < 8f)));
+                                                    local_122 = _e1749;
+                                                    if (_e1749 < 1f) {
                                                         phi_1347_ = 1u;
                                                     } else {
-                                                        let _e1750 = local_122;
-                                                        let _e1752 = local_122;
-                                                        let _e1754 = local_122;
-                                                        phi_1347_ = select(select(u32(_e1750), 0u, (_e1752 < 0f)), 4294967295u, (_e1754 > 4294967000f));
+                                                        let _e1751 = local_122;
+                                                        let _e1753 = local_122;
+                                                        let _e1756 = local_122;
+                                                        phi_1347_ = select(select(u32(_e1751), 0u, !((_e1753 >= 0f))), 4294967295u, (_e1756 > 4294967000f));
                                                     }
-                                                    let _e1759 = phi_1347_;
-                                                    local_123 = _e1759;
-                                                    if (_e1759 == 0u) {
+                                                    let _e1761 = phi_1347_;
+                                                    local_123 = _e1761;
+                                                    if (_e1761 == 0u) {
                                                         phi_5975_ = true;
                                                         break;
                                                     }
-                                                    let _e1761 = local_123;
-                                                    let _e1763 = f32((64u / _e1761));
-                                                    let _e1764 = local_117;
+                                                    let _e1763 = local_123;
+                                                    let _e1765 = f32((64u / _e1763));
                                                     let _e1766 = local_117;
-                                                    let _e1768 = ceil(select(_e1763, _e1766, (_e1764 < _e1763)));
-                                                    local_124 = _e1768;
-                                                    if (_e1768 < 1f) {
+                                                    let _e1768 = local_117;
+                                                    let _e1770 = ceil(select(_e1765, _e1768, (_e1766 < _e1765)));
+                                                    local_124 = _e1770;
+                                                    if (_e1770 < 1f) {
                                                         phi_1371_ = 1u;
                                                     } else {
-                                                        let _e1770 = local_124;
                                                         let _e1772 = local_124;
                                                         let _e1774 = local_124;
-                                                        phi_1371_ = select(select(u32(_e1770), 0u, (_e1772 < 0f)), 4294967295u, (_e1774 > 4294967000f));
+                                                        let _e1777 = local_124;
+                                                        phi_1371_ = select(select(u32(_e1772), 0u, !((_e1774 >= 0f))), 4294967295u, (_e1777 > 4294967000f));
                                                     }
-                                                    let _e1779 = phi_1371_;
-                                                    phi_1372_ = _e1779;
-                                                    phi_1373_ = _e1759;
+                                                    let _e1782 = phi_1371_;
+                                                    phi_1372_ = _e1782;
+                                                    phi_1373_ = _e1761;
                                                 }
-                                                let _e1817 = phi_1372_;
-                                                let _e1819 = phi_1373_;
-                                                phi_1374_ = _e1817;
-                                                phi_1375_ = _e1819;
+                                                let _e1822 = phi_1372_;
+                                                let _e1824 = phi_1373_;
+                                                phi_1374_ = _e1822;
+                                                phi_1375_ = _e1824;
                                             }
-                                            let _e1821 = phi_1374_;
-                                            let _e1823 = phi_1375_;
-                                            local_125 = _e1821;
-                                            local_126 = _e1823;
-                                            let _e1824 = local_118;
-                                            if _e1824 {
+                                            let _e1826 = phi_1374_;
+                                            let _e1828 = phi_1375_;
+                                            local_125 = _e1826;
+                                            local_126 = _e1828;
+                                            let _e1829 = local_118;
+                                            if _e1829 {
                                                 phi_1388_ = 1f;
                                             } else {
-                                                let _e1825 = local_126;
-                                                let _e1827 = local_116;
-                                                let _e1828 = (_e1827 / f32(_e1825));
-                                                let _e1829 = local_125;
-                                                let _e1831 = local_117;
-                                                let _e1832 = (_e1831 / f32(_e1829));
-                                                phi_1388_ = select(_e1832, _e1828, (_e1828 > _e1832));
+                                                let _e1830 = local_126;
+                                                let _e1832 = local_116;
+                                                let _e1833 = (_e1832 / f32(_e1830));
+                                                let _e1834 = local_125;
+                                                let _e1836 = local_117;
+                                                let _e1837 = (_e1836 / f32(_e1834));
+                                                phi_1388_ = select(_e1837, _e1833, (_e1833 > _e1837));
                                             }
-                                            let _e1836 = phi_1388_;
-                                            local_127 = _e1836;
-                                            if (_e1836 > 1f) {
-                                                let _e1838 = local_127;
-                                                let _e1839 = bitcast<u32>(_e1838);
-                                                let _e1848 = (bitcast<f32>(((_e1839 & 8388607u) | 1065353216u)) - 1f);
-                                                phi_1409_ = (f32((bitcast<i32>(((_e1839 >> bitcast<u32>(23i)) & 255u)) - 127i)) + (_e1848 * (1.4208645f + (_e1848 * (-0.5772506f + (_e1848 * 0.1563861f))))));
+                                            let _e1841 = phi_1388_;
+                                            local_127 = _e1841;
+                                            if (_e1841 > 1f) {
+                                                let _e1843 = local_127;
+                                                let _e1844 = bitcast<u32>(_e1843);
+                                                let _e1853 = (bitcast<f32>(((_e1844 & 8388607u) | 1065353216u)) - 1f);
+                                                phi_1409_ = (f32((bitcast<i32>(((_e1844 >> bitcast<u32>(23i)) & 255u)) - 127i)) + (_e1853 * (1.4208645f + (_e1853 * (-0.5772506f + (_e1853 * 0.1563861f))))));
                                             } else {
                                                 phi_1409_ = 0f;
                                             }
-                                            let _e1857 = phi_1409_;
-                                            local_128 = _e1857;
-                                            let _e1858 = local_559;
-                                            let _e1859 = (_e1858 - 1u);
-                                            local_129 = _e1859;
-                                            let _e1860 = floor(_e1857);
-                                            let _e1865 = select(select(u32(_e1860), 0u, (_e1860 < 0f)), 4294967295u, (_e1860 > 4294967000f));
-                                            local_130 = _e1865;
-                                            let _e1866 = (_e1865 >= _e1859);
-                                            local_131 = _e1866;
-                                            if _e1866 {
+                                            let _e1862 = phi_1409_;
+                                            local_128 = _e1862;
+                                            let _e1863 = local_559;
+                                            let _e1864 = (_e1863 - 1u);
+                                            local_129 = _e1864;
+                                            let _e1865 = floor(_e1862);
+                                            let _e1871 = select(select(u32(_e1865), 0u, !((_e1865 >= 0f))), 4294967295u, (_e1865 > 4294967000f));
+                                            local_130 = _e1871;
+                                            let _e1872 = (_e1871 >= _e1864);
+                                            local_131 = _e1872;
+                                            if _e1872 {
                                                 phi_1425_ = 0f;
                                             } else {
-                                                let _e1867 = local_130;
-                                                let _e1869 = local_128;
-                                                phi_1425_ = (_e1869 - f32(_e1867));
+                                                let _e1873 = local_130;
+                                                let _e1875 = local_128;
+                                                phi_1425_ = (_e1875 - f32(_e1873));
                                             }
-                                            let _e1872 = phi_1425_;
-                                            local_132 = _e1872;
-                                            let _e1873 = local_131;
-                                            let _e1874 = local_129;
-                                            let _e1875 = local_130;
-                                            local_563 = select(_e1875, _e1874, _e1873);
-                                            local_564 = select(1u, 2u, (_e1872 > 0f));
+                                            let _e1878 = phi_1425_;
+                                            local_132 = _e1878;
+                                            let _e1879 = local_131;
+                                            let _e1880 = local_129;
+                                            let _e1881 = local_130;
+                                            local_563 = select(_e1881, _e1880, _e1879);
+                                            local_564 = select(1u, 2u, (_e1878 > 0f));
                                             phi_5506_ = 0u;
-                                            phi_5507_ = _e1685;
+                                            phi_5507_ = _e1686;
                                             loop {
-                                                let _e1880 = phi_5506_;
-                                                let _e1882 = phi_5507_;
-                                                local_531 = _e1880;
-                                                local_532 = _e1882;
-                                                local_624 = _e1882;
-                                                let _e1883 = local_531;
-                                                let _e1884 = local_563;
-                                                let _e1885 = (_e1883 < _e1884);
-                                                local_533 = _e1885;
-                                                if _e1885 {
-                                                    let _e1886 = local_532;
-                                                    local_534 = _e1886.member_1;
-                                                    let _e1888 = local_532;
-                                                    local_535 = _e1888.member_2;
-                                                    let _e1891 = local_532;
+                                                let _e1886 = phi_5506_;
+                                                let _e1888 = phi_5507_;
+                                                local_531 = _e1886;
+                                                local_532 = _e1888;
+                                                local_624 = _e1888;
+                                                let _e1889 = local_531;
+                                                let _e1890 = local_563;
+                                                let _e1891 = (_e1889 < _e1890);
+                                                local_533 = _e1891;
+                                                if _e1891 {
+                                                    let _e1892 = local_532;
+                                                    local_534 = _e1892.member_1;
                                                     let _e1894 = local_532;
-                                                    local_536 = type_22((_e1891.member + (_e1886.member_1 * _e1888.member_2)), _e1894.member_1, _e1894.member_2, _e1894.member_3, _e1894.member_4);
-                                                    if (_e1886.member_1 > 1u) {
-                                                        let _e1902 = local_534;
-                                                        phi_5524_ = (_e1902 >> bitcast<u32>(1i));
+                                                    local_535 = _e1894.member_2;
+                                                    let _e1897 = local_532;
+                                                    let _e1900 = local_532;
+                                                    local_536 = type_22((_e1897.member + (_e1892.member_1 * _e1894.member_2)), _e1900.member_1, _e1900.member_2, _e1900.member_3, _e1900.member_4);
+                                                    if (_e1892.member_1 > 1u) {
+                                                        let _e1908 = local_534;
+                                                        phi_5524_ = (_e1908 >> bitcast<u32>(1i));
                                                     } else {
                                                         phi_5524_ = 1u;
                                                     }
-                                                    let _e1906 = phi_5524_;
-                                                    let _e1907 = local_536;
-                                                    local_537 = type_22(_e1907.member, _e1906, _e1907.member_2, _e1907.member_3, _e1907.member_4);
-                                                    let _e1914 = local_535;
-                                                    if (_e1914 > 1u) {
-                                                        let _e1916 = local_535;
-                                                        phi_5533_ = (_e1916 >> bitcast<u32>(1i));
+                                                    let _e1912 = phi_5524_;
+                                                    let _e1913 = local_536;
+                                                    local_537 = type_22(_e1913.member, _e1912, _e1913.member_2, _e1913.member_3, _e1913.member_4);
+                                                    let _e1920 = local_535;
+                                                    if (_e1920 > 1u) {
+                                                        let _e1922 = local_535;
+                                                        phi_5533_ = (_e1922 >> bitcast<u32>(1i));
                                                     } else {
                                                         phi_5533_ = 1u;
                                                     }
-                                                    let _e1920 = phi_5533_;
-                                                    let _e1921 = local_537;
-                                                    let _e1928 = local_531;
-                                                    phi_5538_ = (_e1928 + 1u);
-                                                    phi_5539_ = type_22(_e1921.member, _e1921.member_1, _e1920, _e1921.member_3, _e1921.member_4);
+                                                    let _e1926 = phi_5533_;
+                                                    let _e1927 = local_537;
+                                                    let _e1934 = local_531;
+                                                    phi_5538_ = (_e1934 + 1u);
+                                                    phi_5539_ = type_22(_e1927.member, _e1927.member_1, _e1926, _e1927.member_3, _e1927.member_4);
                                                 } else {
                                                     phi_5538_ = u32();
                                                     phi_5539_ = type_22();
                                                 }
-                                                let _e1931 = phi_5538_;
-                                                let _e1933 = phi_5539_;
+                                                let _e1937 = phi_5538_;
+                                                let _e1939 = phi_5539_;
                                                 continue;
                                                 continuing {
-                                                    let _e1934 = local_533;
-                                                    phi_5506_ = _e1931;
-                                                    phi_5507_ = _e1933;
-                                                    break if !(_e1934);
+                                                    let _e1940 = local_533;
+                                                    phi_5506_ = _e1937;
+                                                    phi_5507_ = _e1939;
+                                                    break if !(_e1940);
                                                 }
                                             }
-                                            let _e1936 = local_563;
-                                            let _e1937 = local_564;
-                                            local_133 = ((_e1936 + _e1937) - 1u);
+                                            let _e1942 = local_563;
+                                            let _e1943 = local_564;
+                                            local_133 = ((_e1942 + _e1943) - 1u);
                                             phi_5545_ = 0u;
-                                            phi_5546_ = _e1685;
+                                            phi_5546_ = _e1686;
                                             loop {
-                                                let _e1941 = phi_5545_;
-                                                let _e1943 = phi_5546_;
-                                                local_538 = _e1941;
-                                                local_539 = _e1943;
-                                                local_625 = _e1943;
-                                                let _e1944 = local_538;
-                                                let _e1945 = local_133;
-                                                let _e1946 = (_e1944 < _e1945);
-                                                local_540 = _e1946;
-                                                if _e1946 {
-                                                    let _e1947 = local_539;
-                                                    local_541 = _e1947.member_1;
-                                                    let _e1949 = local_539;
-                                                    local_542 = _e1949.member_2;
-                                                    let _e1952 = local_539;
+                                                let _e1947 = phi_5545_;
+                                                let _e1949 = phi_5546_;
+                                                local_538 = _e1947;
+                                                local_539 = _e1949;
+                                                local_625 = _e1949;
+                                                let _e1950 = local_538;
+                                                let _e1951 = local_133;
+                                                let _e1952 = (_e1950 < _e1951);
+                                                local_540 = _e1952;
+                                                if _e1952 {
+                                                    let _e1953 = local_539;
+                                                    local_541 = _e1953.member_1;
                                                     let _e1955 = local_539;
-                                                    local_543 = type_22((_e1952.member + (_e1947.member_1 * _e1949.member_2)), _e1955.member_1, _e1955.member_2, _e1955.member_3, _e1955.member_4);
-                                                    if (_e1947.member_1 > 1u) {
-                                                        let _e1963 = local_541;
-                                                        phi_5563_ = (_e1963 >> bitcast<u32>(1i));
+                                                    local_542 = _e1955.member_2;
+                                                    let _e1958 = local_539;
+                                                    let _e1961 = local_539;
+                                                    local_543 = type_22((_e1958.member + (_e1953.member_1 * _e1955.member_2)), _e1961.member_1, _e1961.member_2, _e1961.member_3, _e1961.member_4);
+                                                    if (_e1953.member_1 > 1u) {
+                                                        let _e1969 = local_541;
+                                                        phi_5563_ = (_e1969 >> bitcast<u32>(1i));
                                                     } else {
                                                         phi_5563_ = 1u;
                                                     }
-                                                    let _e1967 = phi_5563_;
-                                                    let _e1968 = local_543;
-                                                    local_544 = type_22(_e1968.member, _e1967, _e1968.member_2, _e1968.member_3, _e1968.member_4);
-                                                    let _e1975 = local_542;
-                                                    if (_e1975 > 1u) {
-                                                        let _e1977 = local_542;
-                                                        phi_5572_ = (_e1977 >> bitcast<u32>(1i));
+                                                    let _e1973 = phi_5563_;
+                                                    let _e1974 = local_543;
+                                                    local_544 = type_22(_e1974.member, _e1973, _e1974.member_2, _e1974.member_3, _e1974.member_4);
+                                                    let _e1981 = local_542;
+                                                    if (_e1981 > 1u) {
+                                                        let _e1983 = local_542;
+                                                        phi_5572_ = (_e1983 >> bitcast<u32>(1i));
                                                     } else {
                                                         phi_5572_ = 1u;
                                                     }
-                                                    let _e1981 = phi_5572_;
-                                                    let _e1982 = local_544;
-                                                    let _e1989 = local_538;
-                                                    phi_5577_ = (_e1989 + 1u);
-                                                    phi_5578_ = type_22(_e1982.member, _e1982.member_1, _e1981, _e1982.member_3, _e1982.member_4);
+                                                    let _e1987 = phi_5572_;
+                                                    let _e1988 = local_544;
+                                                    let _e1995 = local_538;
+                                                    phi_5577_ = (_e1995 + 1u);
+                                                    phi_5578_ = type_22(_e1988.member, _e1988.member_1, _e1987, _e1988.member_3, _e1988.member_4);
                                                 } else {
                                                     phi_5577_ = u32();
                                                     phi_5578_ = type_22();
                                                 }
-                                                let _e1992 = phi_5577_;
-                                                let _e1994 = phi_5578_;
+                                                let _e1998 = phi_5577_;
+                                                let _e2000 = phi_5578_;
                                                 continue;
                                                 continuing {
-                                                    let _e1995 = local_540;
-                                                    phi_5545_ = _e1992;
-                                                    phi_5546_ = _e1994;
-                                                    break if !(_e1995);
+                                                    let _e2001 = local_540;
+                                                    phi_5545_ = _e1998;
+                                                    phi_5546_ = _e2000;
+                                                    break if !(_e2001);
                                                 }
                                             }
-                                            let _e1997 = local_118;
-                                            if _e1997 {
-                                                let _e1998 = local_110;
-                                                phi_1441_ = ((_e1998 & 1u) != 0u);
+                                            let _e2003 = local_118;
+                                            if _e2003 {
+                                                let _e2004 = local_110;
+                                                phi_1441_ = ((_e2004 & 1u) != 0u);
                                             } else {
                                                 phi_1441_ = false;
                                             }
-                                            let _e2002 = phi_1441_;
-                                            local_134 = _e2002;
-                                            phi_5751_ = _e1243;
+                                            let _e2008 = phi_1441_;
+                                            local_134 = _e2008;
+                                            phi_5751_ = _e1244;
                                             phi_1444_ = 0u;
                                             phi_1447_ = type_5(0f, 0f, 0f, 0f);
                                             loop {
-                                                let _e2004 = phi_5751_;
-                                                let _e2006 = phi_1444_;
-                                                let _e2008 = phi_1447_;
-                                                local_135 = _e2006;
-                                                local_136 = _e2008;
-                                                let _e2009 = local_135;
-                                                let _e2010 = local_126;
-                                                let _e2011 = (_e2009 < _e2010);
-                                                local_137 = _e2011;
-                                                if _e2011 {
-                                                    let _e2012 = local_135;
-                                                    let _e2015 = local_126;
-                                                    local_138 = (((f32(_e2012) + 0.5f) / f32(_e2015)) - 0.5f);
-                                                    phi_5750_ = _e2004;
+                                                let _e2010 = phi_5751_;
+                                                let _e2012 = phi_1444_;
+                                                let _e2014 = phi_1447_;
+                                                local_135 = _e2012;
+                                                local_136 = _e2014;
+                                                let _e2015 = local_135;
+                                                let _e2016 = local_126;
+                                                let _e2017 = (_e2015 < _e2016);
+                                                local_137 = _e2017;
+                                                if _e2017 {
+                                                    let _e2018 = local_135;
+                                                    let _e2021 = local_126;
+                                                    local_138 = (((f32(_e2018) + 0.5f) / f32(_e2021)) - 0.5f);
+                                                    phi_5750_ = _e2010;
                                                     phi_1461_ = 0u;
-                                                    phi_1464_ = _e2008;
+                                                    phi_1464_ = _e2014;
                                                     loop {
-                                                        let _e2020 = phi_5750_;
-                                                        let _e2022 = phi_1461_;
-                                                        let _e2024 = phi_1464_;
-                                                        local_139 = _e2022;
-                                                        local_627 = _e2024;
-                                                        let _e2025 = local_139;
-                                                        let _e2026 = local_125;
-                                                        let _e2027 = (_e2025 < _e2026);
-                                                        local_140 = _e2027;
-                                                        if _e2027 {
-                                                            let _e2028 = local_139;
-                                                            let _e2031 = local_125;
-                                                            let _e2034 = (((f32(_e2028) + 0.5f) / f32(_e2031)) - 0.5f);
-                                                            let _e2035 = local_138;
-                                                            let _e2036 = local_112;
-                                                            let _e2038 = local_561;
-                                                            let _e2040 = local_114;
-                                                            local_141 = ((_e2038 + (_e2035 * _e2036)) + (_e2034 * _e2040));
-                                                            let _e2043 = local_138;
-                                                            let _e2044 = local_113;
-                                                            let _e2046 = local_560;
-                                                            let _e2048 = local_115;
-                                                            local_142 = ((_e2046 + (_e2043 * _e2044)) + (_e2034 * _e2048));
+                                                        let _e2026 = phi_5750_;
+                                                        let _e2028 = phi_1461_;
+                                                        let _e2030 = phi_1464_;
+                                                        local_139 = _e2028;
+                                                        local_627 = _e2030;
+                                                        let _e2031 = local_139;
+                                                        let _e2032 = local_125;
+                                                        let _e2033 = (_e2031 < _e2032);
+                                                        local_140 = _e2033;
+                                                        if _e2033 {
+                                                            let _e2034 = local_139;
+                                                            let _e2037 = local_125;
+                                                            let _e2040 = (((f32(_e2034) + 0.5f) / f32(_e2037)) - 0.5f);
+                                                            let _e2041 = local_138;
+                                                            let _e2042 = local_112;
+                                                            let _e2044 = local_561;
+                                                            let _e2046 = local_114;
+                                                            local_141 = ((_e2044 + (_e2041 * _e2042)) + (_e2040 * _e2046));
+                                                            let _e2049 = local_138;
+                                                            let _e2050 = local_113;
+                                                            let _e2052 = local_560;
+                                                            let _e2054 = local_115;
+                                                            local_142 = ((_e2052 + (_e2049 * _e2050)) + (_e2040 * _e2054));
                                                             phi_1490_ = 0u;
-                                                            phi_1493_ = _e2024;
+                                                            phi_1493_ = _e2030;
                                                             loop {
-                                                                let _e2052 = phi_1490_;
-                                                                let _e2054 = phi_1493_;
-                                                                local_143 = _e2052;
-                                                                local_144 = _e2054;
-                                                                local_626 = _e2054;
-                                                                let _e2055 = local_143;
-                                                                let _e2056 = local_564;
-                                                                let _e2057 = (_e2055 < _e2056);
-                                                                local_145 = _e2057;
-                                                                if _e2057 {
-                                                                    let _e2058 = local_143;
-                                                                    if (_e2058 == 0u) {
-                                                                        let _e2060 = local_132;
-                                                                        let _e5504 = local_624;
-                                                                        phi_1506_ = _e5504;
-                                                                        phi_1507_ = (1f - _e2060);
+                                                                let _e2058 = phi_1490_;
+                                                                let _e2060 = phi_1493_;
+                                                                local_143 = _e2058;
+                                                                local_144 = _e2060;
+                                                                local_626 = _e2060;
+                                                                let _e2061 = local_143;
+                                                                let _e2062 = local_564;
+                                                                let _e2063 = (_e2061 < _e2062);
+                                                                local_145 = _e2063;
+                                                                if _e2063 {
+                                                                    let _e2064 = local_143;
+                                                                    if (_e2064 == 0u) {
+                                                                        let _e2066 = local_132;
+                                                                        let _e5520 = local_624;
+                                                                        phi_1506_ = _e5520;
+                                                                        phi_1507_ = (1f - _e2066);
                                                                     } else {
-                                                                        let _e5506 = local_625;
-                                                                        phi_1506_ = _e5506;
-                                                                        phi_1507_ = _e1872;
+                                                                        let _e5522 = local_625;
+                                                                        phi_1506_ = _e5522;
+                                                                        phi_1507_ = _e1878;
                                                                     }
-                                                                    let _e2063 = phi_1506_;
-                                                                    let _e2065 = phi_1507_;
-                                                                    local_146 = _e2063;
-                                                                    local_147 = _e2065;
-                                                                    let _e2066 = local_134;
-                                                                    let _e2067 = select(0.5f, 0f, _e2066);
-                                                                    local_148 = _e2063.member_1;
-                                                                    let _e2070 = local_141;
-                                                                    let _e2072 = ((_e2070 * f32(_e2063.member_1)) - _e2067);
-                                                                    local_149 = _e2072;
-                                                                    local_150 = _e2063.member_2;
-                                                                    let _e2075 = local_142;
-                                                                    let _e2077 = ((_e2075 * f32(_e2063.member_2)) - _e2067);
-                                                                    local_151 = _e2077;
-                                                                    local_152 = floor(_e2072);
-                                                                    local_153 = floor(_e2077);
-                                                                    let _e2080 = local_134;
-                                                                    if _e2080 {
+                                                                    let _e2069 = phi_1506_;
+                                                                    let _e2071 = phi_1507_;
+                                                                    local_146 = _e2069;
+                                                                    local_147 = _e2071;
+                                                                    let _e2072 = local_134;
+                                                                    let _e2073 = select(0.5f, 0f, _e2072);
+                                                                    local_148 = _e2069.member_1;
+                                                                    let _e2076 = local_141;
+                                                                    let _e2078 = ((_e2076 * f32(_e2069.member_1)) - _e2073);
+                                                                    local_149 = _e2078;
+                                                                    local_150 = _e2069.member_2;
+                                                                    let _e2081 = local_142;
+                                                                    let _e2083 = ((_e2081 * f32(_e2069.member_2)) - _e2073);
+                                                                    local_151 = _e2083;
+                                                                    local_152 = floor(_e2078);
+                                                                    local_153 = floor(_e2083);
+                                                                    let _e2086 = local_134;
+                                                                    if _e2086 {
                                                                         phi_1527_ = 0f;
                                                                         phi_1528_ = 0f;
                                                                     } else {
-                                                                        let _e2081 = local_149;
-                                                                        let _e2082 = local_152;
-                                                                        let _e2084 = local_151;
-                                                                        let _e2085 = local_153;
-                                                                        phi_1527_ = (_e2084 - _e2085);
-                                                                        phi_1528_ = (_e2081 - _e2082);
+                                                                        let _e2087 = local_149;
+                                                                        let _e2088 = local_152;
+                                                                        let _e2090 = local_151;
+                                                                        let _e2091 = local_153;
+                                                                        phi_1527_ = (_e2090 - _e2091);
+                                                                        phi_1528_ = (_e2087 - _e2088);
                                                                     }
-                                                                    let _e2088 = phi_1527_;
-                                                                    let _e2090 = phi_1528_;
-                                                                    local_154 = _e2088;
-                                                                    local_155 = _e2090;
-                                                                    let _e2091 = local_152;
-                                                                    let _e2093 = local_152;
-                                                                    let _e2095 = local_152;
+                                                                    let _e2094 = phi_1527_;
+                                                                    let _e2096 = phi_1528_;
+                                                                    local_154 = _e2094;
+                                                                    local_155 = _e2096;
+                                                                    let _e2097 = local_152;
                                                                     let _e2099 = local_152;
-                                                                    let _e2100 = local_152;
-                                                                    let _e2102 = select(0i, select(select(i32(_e2091), i32(-2147483648), (_e2093 < -2147483600f)), 2147483647i, (_e2095 > 2147483500f)), (_e2099 == _e2100));
-                                                                    local_156 = _e2102;
-                                                                    let _e2103 = local_153;
-                                                                    let _e2105 = local_153;
-                                                                    let _e2107 = local_153;
-                                                                    let _e2111 = local_153;
+                                                                    let _e2102 = local_152;
+                                                                    let _e2106 = local_152;
+                                                                    let _e2107 = local_152;
+                                                                    let _e2109 = select(0i, select(select(i32(_e2097), i32(-2147483648), !((_e2099 >= -2147483600f))), 2147483647i, (_e2102 > 2147483500f)), (_e2106 == _e2107));
+                                                                    local_156 = _e2109;
+                                                                    let _e2110 = local_153;
                                                                     let _e2112 = local_153;
-                                                                    let _e2114 = select(0i, select(select(i32(_e2103), i32(-2147483648), (_e2105 < -2147483600f)), 2147483647i, (_e2107 > 2147483500f)), (_e2111 == _e2112));
-                                                                    local_157 = _e2114;
-                                                                    let _e2115 = local_146;
-                                                                    local_158 = _e2115.member_3;
-                                                                    let _e2117 = local_148;
-                                                                    local_159 = bitcast<i32>(_e2117);
-                                                                    let _e2119 = (_e2115.member_3 == 1u);
-                                                                    local_160 = _e2119;
-                                                                    if _e2119 {
-                                                                        let _e2173 = local_156;
-                                                                        if (_e2173 < 0i) {
+                                                                    let _e2115 = local_153;
+                                                                    let _e2119 = local_153;
+                                                                    let _e2120 = local_153;
+                                                                    let _e2122 = select(0i, select(select(i32(_e2110), i32(-2147483648), !((_e2112 >= -2147483600f))), 2147483647i, (_e2115 > 2147483500f)), (_e2119 == _e2120));
+                                                                    local_157 = _e2122;
+                                                                    let _e2123 = local_146;
+                                                                    local_158 = _e2123.member_3;
+                                                                    let _e2125 = local_148;
+                                                                    local_159 = bitcast<i32>(_e2125);
+                                                                    let _e2127 = (_e2123.member_3 == 1u);
+                                                                    local_160 = _e2127;
+                                                                    if _e2127 {
+                                                                        let _e2181 = local_156;
+                                                                        if (_e2181 < 0i) {
                                                                             phi_1564_ = 0i;
                                                                         } else {
-                                                                            let _e2175 = local_156;
-                                                                            let _e2176 = local_159;
-                                                                            if (_e2175 >= _e2176) {
-                                                                                let _e2178 = local_159;
-                                                                                phi_1563_ = (_e2178 - 1i);
+                                                                            let _e2183 = local_156;
+                                                                            let _e2184 = local_159;
+                                                                            if (_e2183 >= _e2184) {
+                                                                                let _e2186 = local_159;
+                                                                                phi_1563_ = (_e2186 - 1i);
                                                                             } else {
-                                                                                phi_1563_ = _e2102;
+                                                                                phi_1563_ = _e2109;
                                                                             }
-                                                                            let _e2181 = phi_1563_;
-                                                                            phi_1564_ = _e2181;
+                                                                            let _e2189 = phi_1563_;
+                                                                            phi_1564_ = _e2189;
                                                                         }
-                                                                        let _e2183 = phi_1564_;
-                                                                        phi_1624_ = _e2183;
+                                                                        let _e2191 = phi_1564_;
+                                                                        phi_1624_ = _e2191;
                                                                     } else {
-                                                                        let _e2120 = local_158;
-                                                                        if (_e2120 == 2u) {
-                                                                            let _e2142 = local_159;
-                                                                            let _e2143 = (2i * _e2142);
-                                                                            local_161 = _e2143;
-                                                                            let _e2144 = (_e2143 == 0i);
-                                                                            local_162 = _e2144;
-                                                                            if _e2144 {
+                                                                        let _e2128 = local_158;
+                                                                        if (_e2128 == 2u) {
+                                                                            let _e2150 = local_159;
+                                                                            let _e2151 = (2i * _e2150);
+                                                                            local_161 = _e2151;
+                                                                            let _e2152 = (_e2151 == 0i);
+                                                                            local_162 = _e2152;
+                                                                            if _e2152 {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2145 = local_161;
-                                                                            let _e2146 = (_e2145 == -1i);
-                                                                            local_163 = _e2146;
-                                                                            let _e2147 = local_156;
-                                                                            if (_e2146 && (_e2147 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2150 = local_156;
-                                                                            let _e2151 = local_161;
                                                                             let _e2153 = local_161;
-                                                                            local_164 = ((_e2150 % _e2151) + _e2153);
-                                                                            let _e2155 = local_162;
-                                                                            if _e2155 {
+                                                                            let _e2154 = (_e2153 == -1i);
+                                                                            local_163 = _e2154;
+                                                                            let _e2155 = local_156;
+                                                                            if (_e2154 && (_e2155 == i32(-2147483648))) {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2156 = local_164;
-                                                                            let _e2158 = local_163;
-                                                                            if (_e2158 && (_e2156 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2160 = local_164;
+                                                                            let _e2158 = local_156;
+                                                                            let _e2159 = local_161;
                                                                             let _e2161 = local_161;
-                                                                            let _e2162 = (_e2160 % _e2161);
-                                                                            local_165 = _e2162;
-                                                                            let _e2163 = local_159;
-                                                                            if (_e2162 < _e2163) {
-                                                                                phi_1599_ = _e2162;
+                                                                            local_164 = ((_e2158 % _e2159) + _e2161);
+                                                                            let _e2163 = local_162;
+                                                                            if _e2163 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2164 = local_164;
+                                                                            let _e2166 = local_163;
+                                                                            if (_e2166 && (_e2164 == i32(-2147483648))) {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2168 = local_164;
+                                                                            let _e2169 = local_161;
+                                                                            let _e2170 = (_e2168 % _e2169);
+                                                                            local_165 = _e2170;
+                                                                            let _e2171 = local_159;
+                                                                            if (_e2170 < _e2171) {
+                                                                                phi_1599_ = _e2170;
                                                                             } else {
-                                                                                let _e2165 = local_161;
-                                                                                let _e2167 = local_165;
-                                                                                phi_1599_ = ((_e2165 - 1i) - _e2167);
+                                                                                let _e2173 = local_161;
+                                                                                let _e2175 = local_165;
+                                                                                phi_1599_ = ((_e2173 - 1i) - _e2175);
                                                                             }
-                                                                            let _e2170 = phi_1599_;
-                                                                            phi_1623_ = _e2170;
+                                                                            let _e2178 = phi_1599_;
+                                                                            phi_1623_ = _e2178;
                                                                         } else {
-                                                                            let _e2122 = local_159;
-                                                                            let _e2123 = (_e2122 == 0i);
-                                                                            local_166 = _e2123;
-                                                                            if _e2123 {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2124 = local_159;
-                                                                            let _e2125 = (_e2124 == -1i);
-                                                                            local_167 = _e2125;
-                                                                            let _e2126 = local_156;
-                                                                            if (_e2125 && (_e2126 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2129 = local_156;
                                                                             let _e2130 = local_159;
+                                                                            let _e2131 = (_e2130 == 0i);
+                                                                            local_166 = _e2131;
+                                                                            if _e2131 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
                                                                             let _e2132 = local_159;
-                                                                            local_168 = ((_e2129 % _e2130) + _e2132);
-                                                                            let _e2134 = local_166;
-                                                                            if _e2134 {
+                                                                            let _e2133 = (_e2132 == -1i);
+                                                                            local_167 = _e2133;
+                                                                            let _e2134 = local_156;
+                                                                            if (_e2133 && (_e2134 == i32(-2147483648))) {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2135 = local_168;
-                                                                            let _e2137 = local_167;
-                                                                            if (_e2137 && (_e2135 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2139 = local_168;
+                                                                            let _e2137 = local_156;
+                                                                            let _e2138 = local_159;
                                                                             let _e2140 = local_159;
-                                                                            phi_1623_ = (_e2139 % _e2140);
+                                                                            local_168 = ((_e2137 % _e2138) + _e2140);
+                                                                            let _e2142 = local_166;
+                                                                            if _e2142 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2143 = local_168;
+                                                                            let _e2145 = local_167;
+                                                                            if (_e2145 && (_e2143 == i32(-2147483648))) {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2147 = local_168;
+                                                                            let _e2148 = local_159;
+                                                                            phi_1623_ = (_e2147 % _e2148);
                                                                         }
-                                                                        let _e2172 = phi_1623_;
-                                                                        phi_1624_ = _e2172;
+                                                                        let _e2180 = phi_1623_;
+                                                                        phi_1624_ = _e2180;
                                                                     }
-                                                                    let _e2185 = phi_1624_;
-                                                                    local_169 = bitcast<u32>(_e2185);
-                                                                    let _e2187 = local_156;
-                                                                    let _e2188 = (_e2187 + 1i);
-                                                                    local_170 = _e2188;
-                                                                    let _e2189 = local_160;
-                                                                    if _e2189 {
-                                                                        let _e2243 = local_170;
-                                                                        if (_e2243 < 0i) {
+                                                                    let _e2193 = phi_1624_;
+                                                                    local_169 = bitcast<u32>(_e2193);
+                                                                    let _e2195 = local_156;
+                                                                    let _e2196 = (_e2195 + 1i);
+                                                                    local_170 = _e2196;
+                                                                    let _e2197 = local_160;
+                                                                    if _e2197 {
+                                                                        let _e2251 = local_170;
+                                                                        if (_e2251 < 0i) {
                                                                             phi_1644_ = 0i;
                                                                         } else {
-                                                                            let _e2245 = local_170;
-                                                                            let _e2246 = local_159;
-                                                                            if (_e2245 >= _e2246) {
-                                                                                let _e2248 = local_159;
-                                                                                phi_1643_ = (_e2248 - 1i);
+                                                                            let _e2253 = local_170;
+                                                                            let _e2254 = local_159;
+                                                                            if (_e2253 >= _e2254) {
+                                                                                let _e2256 = local_159;
+                                                                                phi_1643_ = (_e2256 - 1i);
                                                                             } else {
-                                                                                phi_1643_ = _e2188;
+                                                                                phi_1643_ = _e2196;
                                                                             }
-                                                                            let _e2251 = phi_1643_;
-                                                                            phi_1644_ = _e2251;
+                                                                            let _e2259 = phi_1643_;
+                                                                            phi_1644_ = _e2259;
                                                                         }
-                                                                        let _e2253 = phi_1644_;
-                                                                        phi_1704_ = _e2253;
+                                                                        let _e2261 = phi_1644_;
+                                                                        phi_1704_ = _e2261;
                                                                     } else {
-                                                                        let _e2190 = local_158;
-                                                                        if (_e2190 == 2u) {
-                                                                            let _e2212 = local_159;
-                                                                            let _e2213 = (2i * _e2212);
-                                                                            local_171 = _e2213;
-                                                                            let _e2214 = (_e2213 == 0i);
-                                                                            local_172 = _e2214;
-                                                                            if _e2214 {
+                                                                        let _e2198 = local_158;
+                                                                        if (_e2198 == 2u) {
+                                                                            let _e2220 = local_159;
+                                                                            let _e2221 = (2i * _e2220);
+                                                                            local_171 = _e2221;
+                                                                            let _e2222 = (_e2221 == 0i);
+                                                                            local_172 = _e2222;
+                                                                            if _e2222 {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2215 = local_171;
-                                                                            let _e2216 = (_e2215 == -1i);
-                                                                            local_173 = _e2216;
-                                                                            let _e2217 = local_170;
-                                                                            if (_e2216 && (_e2217 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2220 = local_170;
-                                                                            let _e2221 = local_171;
                                                                             let _e2223 = local_171;
-                                                                            local_174 = ((_e2220 % _e2221) + _e2223);
-                                                                            let _e2225 = local_172;
-                                                                            if _e2225 {
+                                                                            let _e2224 = (_e2223 == -1i);
+                                                                            local_173 = _e2224;
+                                                                            let _e2225 = local_170;
+                                                                            if (_e2224 && (_e2225 == i32(-2147483648))) {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2226 = local_174;
-                                                                            let _e2228 = local_173;
-                                                                            if (_e2228 && (_e2226 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2230 = local_174;
+                                                                            let _e2228 = local_170;
+                                                                            let _e2229 = local_171;
                                                                             let _e2231 = local_171;
-                                                                            let _e2232 = (_e2230 % _e2231);
-                                                                            local_175 = _e2232;
-                                                                            let _e2233 = local_159;
-                                                                            if (_e2232 < _e2233) {
-                                                                                phi_1679_ = _e2232;
+                                                                            local_174 = ((_e2228 % _e2229) + _e2231);
+                                                                            let _e2233 = local_172;
+                                                                            if _e2233 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2234 = local_174;
+                                                                            let _e2236 = local_173;
+                                                                            if (_e2236 && (_e2234 == i32(-2147483648))) {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2238 = local_174;
+                                                                            let _e2239 = local_171;
+                                                                            let _e2240 = (_e2238 % _e2239);
+                                                                            local_175 = _e2240;
+                                                                            let _e2241 = local_159;
+                                                                            if (_e2240 < _e2241) {
+                                                                                phi_1679_ = _e2240;
                                                                             } else {
-                                                                                let _e2235 = local_171;
-                                                                                let _e2237 = local_175;
-                                                                                phi_1679_ = ((_e2235 - 1i) - _e2237);
+                                                                                let _e2243 = local_171;
+                                                                                let _e2245 = local_175;
+                                                                                phi_1679_ = ((_e2243 - 1i) - _e2245);
                                                                             }
-                                                                            let _e2240 = phi_1679_;
-                                                                            phi_1703_ = _e2240;
+                                                                            let _e2248 = phi_1679_;
+                                                                            phi_1703_ = _e2248;
                                                                         } else {
-                                                                            let _e2192 = local_159;
-                                                                            let _e2193 = (_e2192 == 0i);
-                                                                            local_176 = _e2193;
-                                                                            if _e2193 {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2194 = local_159;
-                                                                            let _e2195 = (_e2194 == -1i);
-                                                                            local_177 = _e2195;
-                                                                            let _e2196 = local_170;
-                                                                            if (_e2195 && (_e2196 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2199 = local_170;
                                                                             let _e2200 = local_159;
+                                                                            let _e2201 = (_e2200 == 0i);
+                                                                            local_176 = _e2201;
+                                                                            if _e2201 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
                                                                             let _e2202 = local_159;
-                                                                            local_178 = ((_e2199 % _e2200) + _e2202);
-                                                                            let _e2204 = local_176;
-                                                                            if _e2204 {
+                                                                            let _e2203 = (_e2202 == -1i);
+                                                                            local_177 = _e2203;
+                                                                            let _e2204 = local_170;
+                                                                            if (_e2203 && (_e2204 == i32(-2147483648))) {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2205 = local_178;
-                                                                            let _e2207 = local_177;
-                                                                            if (_e2207 && (_e2205 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2209 = local_178;
+                                                                            let _e2207 = local_170;
+                                                                            let _e2208 = local_159;
                                                                             let _e2210 = local_159;
-                                                                            phi_1703_ = (_e2209 % _e2210);
+                                                                            local_178 = ((_e2207 % _e2208) + _e2210);
+                                                                            let _e2212 = local_176;
+                                                                            if _e2212 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2213 = local_178;
+                                                                            let _e2215 = local_177;
+                                                                            if (_e2215 && (_e2213 == i32(-2147483648))) {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2217 = local_178;
+                                                                            let _e2218 = local_159;
+                                                                            phi_1703_ = (_e2217 % _e2218);
                                                                         }
-                                                                        let _e2242 = phi_1703_;
-                                                                        phi_1704_ = _e2242;
+                                                                        let _e2250 = phi_1703_;
+                                                                        phi_1704_ = _e2250;
                                                                     }
-                                                                    let _e2255 = phi_1704_;
-                                                                    local_179 = bitcast<u32>(_e2255);
-                                                                    let _e2257 = local_146;
-                                                                    local_180 = _e2257.member_4;
-                                                                    let _e2259 = local_150;
-                                                                    local_181 = bitcast<i32>(_e2259);
-                                                                    let _e2261 = (_e2257.member_4 == 1u);
-                                                                    local_182 = _e2261;
-                                                                    if _e2261 {
-                                                                        let _e2315 = local_157;
-                                                                        if (_e2315 < 0i) {
+                                                                    let _e2263 = phi_1704_;
+                                                                    local_179 = bitcast<u32>(_e2263);
+                                                                    let _e2265 = local_146;
+                                                                    local_180 = _e2265.member_4;
+                                                                    let _e2267 = local_150;
+                                                                    local_181 = bitcast<i32>(_e2267);
+                                                                    let _e2269 = (_e2265.member_4 == 1u);
+                                                                    local_182 = _e2269;
+                                                                    if _e2269 {
+                                                                        let _e2323 = local_157;
+                                                                        if (_e2323 < 0i) {
                                                                             phi_1723_ = 0i;
                                                                         } else {
-                                                                            let _e2317 = local_157;
-                                                                            let _e2318 = local_181;
-                                                                            if (_e2317 >= _e2318) {
-                                                                                let _e2320 = local_181;
-                                                                                phi_1722_ = (_e2320 - 1i);
+                                                                            let _e2325 = local_157;
+                                                                            let _e2326 = local_181;
+                                                                            if (_e2325 >= _e2326) {
+                                                                                let _e2328 = local_181;
+                                                                                phi_1722_ = (_e2328 - 1i);
                                                                             } else {
-                                                                                phi_1722_ = _e2114;
+                                                                                phi_1722_ = _e2122;
                                                                             }
-                                                                            let _e2323 = phi_1722_;
-                                                                            phi_1723_ = _e2323;
+                                                                            let _e2331 = phi_1722_;
+                                                                            phi_1723_ = _e2331;
                                                                         }
-                                                                        let _e2325 = phi_1723_;
-                                                                        phi_1783_ = _e2325;
+                                                                        let _e2333 = phi_1723_;
+                                                                        phi_1783_ = _e2333;
                                                                     } else {
-                                                                        let _e2262 = local_180;
-                                                                        if (_e2262 == 2u) {
-                                                                            let _e2284 = local_181;
-                                                                            let _e2285 = (2i * _e2284);
-                                                                            local_183 = _e2285;
-                                                                            let _e2286 = (_e2285 == 0i);
-                                                                            local_184 = _e2286;
-                                                                            if _e2286 {
+                                                                        let _e2270 = local_180;
+                                                                        if (_e2270 == 2u) {
+                                                                            let _e2292 = local_181;
+                                                                            let _e2293 = (2i * _e2292);
+                                                                            local_183 = _e2293;
+                                                                            let _e2294 = (_e2293 == 0i);
+                                                                            local_184 = _e2294;
+                                                                            if _e2294 {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2287 = local_183;
-                                                                            let _e2288 = (_e2287 == -1i);
-                                                                            local_185 = _e2288;
-                                                                            let _e2289 = local_157;
-                                                                            if (_e2288 && (_e2289 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2292 = local_157;
-                                                                            let _e2293 = local_183;
                                                                             let _e2295 = local_183;
-                                                                            local_186 = ((_e2292 % _e2293) + _e2295);
-                                                                            let _e2297 = local_184;
-                                                                            if _e2297 {
+                                                                            let _e2296 = (_e2295 == -1i);
+                                                                            local_185 = _e2296;
+                                                                            let _e2297 = local_157;
+                                                                            if (_e2296 && (_e2297 == i32(-2147483648))) {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2298 = local_186;
-                                                                            let _e2300 = local_185;
-                                                                            if (_e2300 && (_e2298 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2302 = local_186;
+                                                                            let _e2300 = local_157;
+                                                                            let _e2301 = local_183;
                                                                             let _e2303 = local_183;
-                                                                            let _e2304 = (_e2302 % _e2303);
-                                                                            local_187 = _e2304;
-                                                                            let _e2305 = local_181;
-                                                                            if (_e2304 < _e2305) {
-                                                                                phi_1758_ = _e2304;
+                                                                            local_186 = ((_e2300 % _e2301) + _e2303);
+                                                                            let _e2305 = local_184;
+                                                                            if _e2305 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2306 = local_186;
+                                                                            let _e2308 = local_185;
+                                                                            if (_e2308 && (_e2306 == i32(-2147483648))) {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2310 = local_186;
+                                                                            let _e2311 = local_183;
+                                                                            let _e2312 = (_e2310 % _e2311);
+                                                                            local_187 = _e2312;
+                                                                            let _e2313 = local_181;
+                                                                            if (_e2312 < _e2313) {
+                                                                                phi_1758_ = _e2312;
                                                                             } else {
-                                                                                let _e2307 = local_183;
-                                                                                let _e2309 = local_187;
-                                                                                phi_1758_ = ((_e2307 - 1i) - _e2309);
+                                                                                let _e2315 = local_183;
+                                                                                let _e2317 = local_187;
+                                                                                phi_1758_ = ((_e2315 - 1i) - _e2317);
                                                                             }
-                                                                            let _e2312 = phi_1758_;
-                                                                            phi_1782_ = _e2312;
+                                                                            let _e2320 = phi_1758_;
+                                                                            phi_1782_ = _e2320;
                                                                         } else {
-                                                                            let _e2264 = local_181;
-                                                                            let _e2265 = (_e2264 == 0i);
-                                                                            local_188 = _e2265;
-                                                                            if _e2265 {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2266 = local_181;
-                                                                            let _e2267 = (_e2266 == -1i);
-                                                                            local_189 = _e2267;
-                                                                            let _e2268 = local_157;
-                                                                            if (_e2267 && (_e2268 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2271 = local_157;
                                                                             let _e2272 = local_181;
+                                                                            let _e2273 = (_e2272 == 0i);
+                                                                            local_188 = _e2273;
+                                                                            if _e2273 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
                                                                             let _e2274 = local_181;
-                                                                            local_190 = ((_e2271 % _e2272) + _e2274);
-                                                                            let _e2276 = local_188;
-                                                                            if _e2276 {
+                                                                            let _e2275 = (_e2274 == -1i);
+                                                                            local_189 = _e2275;
+                                                                            let _e2276 = local_157;
+                                                                            if (_e2275 && (_e2276 == i32(-2147483648))) {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2277 = local_190;
-                                                                            let _e2279 = local_189;
-                                                                            if (_e2279 && (_e2277 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2281 = local_190;
+                                                                            let _e2279 = local_157;
+                                                                            let _e2280 = local_181;
                                                                             let _e2282 = local_181;
-                                                                            phi_1782_ = (_e2281 % _e2282);
+                                                                            local_190 = ((_e2279 % _e2280) + _e2282);
+                                                                            let _e2284 = local_188;
+                                                                            if _e2284 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2285 = local_190;
+                                                                            let _e2287 = local_189;
+                                                                            if (_e2287 && (_e2285 == i32(-2147483648))) {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2289 = local_190;
+                                                                            let _e2290 = local_181;
+                                                                            phi_1782_ = (_e2289 % _e2290);
                                                                         }
-                                                                        let _e2314 = phi_1782_;
-                                                                        phi_1783_ = _e2314;
+                                                                        let _e2322 = phi_1782_;
+                                                                        phi_1783_ = _e2322;
                                                                     }
-                                                                    let _e2327 = phi_1783_;
-                                                                    local_191 = bitcast<u32>(_e2327);
-                                                                    let _e2329 = local_157;
-                                                                    let _e2330 = (_e2329 + 1i);
-                                                                    local_192 = _e2330;
-                                                                    let _e2331 = local_182;
-                                                                    if _e2331 {
-                                                                        let _e2385 = local_192;
-                                                                        if (_e2385 < 0i) {
+                                                                    let _e2335 = phi_1783_;
+                                                                    local_191 = bitcast<u32>(_e2335);
+                                                                    let _e2337 = local_157;
+                                                                    let _e2338 = (_e2337 + 1i);
+                                                                    local_192 = _e2338;
+                                                                    let _e2339 = local_182;
+                                                                    if _e2339 {
+                                                                        let _e2393 = local_192;
+                                                                        if (_e2393 < 0i) {
                                                                             phi_1803_ = 0i;
                                                                         } else {
-                                                                            let _e2387 = local_192;
-                                                                            let _e2388 = local_181;
-                                                                            if (_e2387 >= _e2388) {
-                                                                                let _e2390 = local_181;
-                                                                                phi_1802_ = (_e2390 - 1i);
+                                                                            let _e2395 = local_192;
+                                                                            let _e2396 = local_181;
+                                                                            if (_e2395 >= _e2396) {
+                                                                                let _e2398 = local_181;
+                                                                                phi_1802_ = (_e2398 - 1i);
                                                                             } else {
-                                                                                phi_1802_ = _e2330;
+                                                                                phi_1802_ = _e2338;
                                                                             }
-                                                                            let _e2393 = phi_1802_;
-                                                                            phi_1803_ = _e2393;
+                                                                            let _e2401 = phi_1802_;
+                                                                            phi_1803_ = _e2401;
                                                                         }
-                                                                        let _e2395 = phi_1803_;
-                                                                        phi_1863_ = _e2395;
+                                                                        let _e2403 = phi_1803_;
+                                                                        phi_1863_ = _e2403;
                                                                     } else {
-                                                                        let _e2332 = local_180;
-                                                                        if (_e2332 == 2u) {
-                                                                            let _e2354 = local_181;
-                                                                            let _e2355 = (2i * _e2354);
-                                                                            local_193 = _e2355;
-                                                                            let _e2356 = (_e2355 == 0i);
-                                                                            local_194 = _e2356;
-                                                                            if _e2356 {
+                                                                        let _e2340 = local_180;
+                                                                        if (_e2340 == 2u) {
+                                                                            let _e2362 = local_181;
+                                                                            let _e2363 = (2i * _e2362);
+                                                                            local_193 = _e2363;
+                                                                            let _e2364 = (_e2363 == 0i);
+                                                                            local_194 = _e2364;
+                                                                            if _e2364 {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2357 = local_193;
-                                                                            let _e2358 = (_e2357 == -1i);
-                                                                            local_195 = _e2358;
-                                                                            let _e2359 = local_192;
-                                                                            if (_e2358 && (_e2359 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2362 = local_192;
-                                                                            let _e2363 = local_193;
                                                                             let _e2365 = local_193;
-                                                                            local_196 = ((_e2362 % _e2363) + _e2365);
-                                                                            let _e2367 = local_194;
-                                                                            if _e2367 {
+                                                                            let _e2366 = (_e2365 == -1i);
+                                                                            local_195 = _e2366;
+                                                                            let _e2367 = local_192;
+                                                                            if (_e2366 && (_e2367 == i32(-2147483648))) {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2368 = local_196;
-                                                                            let _e2370 = local_195;
-                                                                            if (_e2370 && (_e2368 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2372 = local_196;
+                                                                            let _e2370 = local_192;
+                                                                            let _e2371 = local_193;
                                                                             let _e2373 = local_193;
-                                                                            let _e2374 = (_e2372 % _e2373);
-                                                                            local_197 = _e2374;
-                                                                            let _e2375 = local_181;
-                                                                            if (_e2374 < _e2375) {
-                                                                                phi_1838_ = _e2374;
+                                                                            local_196 = ((_e2370 % _e2371) + _e2373);
+                                                                            let _e2375 = local_194;
+                                                                            if _e2375 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2376 = local_196;
+                                                                            let _e2378 = local_195;
+                                                                            if (_e2378 && (_e2376 == i32(-2147483648))) {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2380 = local_196;
+                                                                            let _e2381 = local_193;
+                                                                            let _e2382 = (_e2380 % _e2381);
+                                                                            local_197 = _e2382;
+                                                                            let _e2383 = local_181;
+                                                                            if (_e2382 < _e2383) {
+                                                                                phi_1838_ = _e2382;
                                                                             } else {
-                                                                                let _e2377 = local_193;
-                                                                                let _e2379 = local_197;
-                                                                                phi_1838_ = ((_e2377 - 1i) - _e2379);
+                                                                                let _e2385 = local_193;
+                                                                                let _e2387 = local_197;
+                                                                                phi_1838_ = ((_e2385 - 1i) - _e2387);
                                                                             }
-                                                                            let _e2382 = phi_1838_;
-                                                                            phi_1862_ = _e2382;
+                                                                            let _e2390 = phi_1838_;
+                                                                            phi_1862_ = _e2390;
                                                                         } else {
-                                                                            let _e2334 = local_181;
-                                                                            let _e2335 = (_e2334 == 0i);
-                                                                            local_198 = _e2335;
-                                                                            if _e2335 {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2336 = local_181;
-                                                                            let _e2337 = (_e2336 == -1i);
-                                                                            local_199 = _e2337;
-                                                                            let _e2338 = local_192;
-                                                                            if (_e2337 && (_e2338 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2341 = local_192;
                                                                             let _e2342 = local_181;
+                                                                            let _e2343 = (_e2342 == 0i);
+                                                                            local_198 = _e2343;
+                                                                            if _e2343 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
                                                                             let _e2344 = local_181;
-                                                                            local_200 = ((_e2341 % _e2342) + _e2344);
-                                                                            let _e2346 = local_198;
-                                                                            if _e2346 {
+                                                                            let _e2345 = (_e2344 == -1i);
+                                                                            local_199 = _e2345;
+                                                                            let _e2346 = local_192;
+                                                                            if (_e2345 && (_e2346 == i32(-2147483648))) {
                                                                                 phi_5704_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e2347 = local_200;
-                                                                            let _e2349 = local_199;
-                                                                            if (_e2349 && (_e2347 == i32(-2147483648))) {
-                                                                                phi_5704_ = true;
-                                                                                break;
-                                                                            }
-                                                                            let _e2351 = local_200;
+                                                                            let _e2349 = local_192;
+                                                                            let _e2350 = local_181;
                                                                             let _e2352 = local_181;
-                                                                            phi_1862_ = (_e2351 % _e2352);
+                                                                            local_200 = ((_e2349 % _e2350) + _e2352);
+                                                                            let _e2354 = local_198;
+                                                                            if _e2354 {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2355 = local_200;
+                                                                            let _e2357 = local_199;
+                                                                            if (_e2357 && (_e2355 == i32(-2147483648))) {
+                                                                                phi_5704_ = true;
+                                                                                break;
+                                                                            }
+                                                                            let _e2359 = local_200;
+                                                                            let _e2360 = local_181;
+                                                                            phi_1862_ = (_e2359 % _e2360);
                                                                         }
-                                                                        let _e2384 = phi_1862_;
-                                                                        phi_1863_ = _e2384;
+                                                                        let _e2392 = phi_1862_;
+                                                                        phi_1863_ = _e2392;
                                                                     }
-                                                                    let _e2397 = phi_1863_;
-                                                                    local_201 = bitcast<u32>(_e2397);
-                                                                    let _e2399 = local_146;
-                                                                    local_202 = _e2399.member;
-                                                                    let _e2401 = local_191;
-                                                                    let _e2402 = local_148;
-                                                                    let _e2404 = (_e2399.member + (_e2401 * _e2402));
-                                                                    local_203 = _e2404;
-                                                                    let _e2405 = local_169;
-                                                                    let _e2407 = ((_e2404 + _e2405) * 2u);
-                                                                    local_204 = _e2407;
-                                                                    let _e2408 = local_6;
-                                                                    if (_e2407 < _e2408) {
-                                                                    } else {
-                                                                        phi_5704_ = true;
-                                                                        break;
-                                                                    }
-                                                                    let _e2410 = local_204;
-                                                                    let _e2413 = global_9.member[_e2410];
-                                                                    local_205 = _e2413;
-                                                                    let _e2414 = local_204;
-                                                                    let _e2415 = (_e2414 + 1u);
-                                                                    local_206 = _e2415;
+                                                                    let _e2405 = phi_1863_;
+                                                                    local_201 = bitcast<u32>(_e2405);
+                                                                    let _e2407 = local_146;
+                                                                    local_202 = _e2407.member;
+                                                                    let _e2409 = local_191;
+                                                                    let _e2410 = local_148;
+                                                                    let _e2412 = (_e2407.member + (_e2409 * _e2410));
+                                                                    local_203 = _e2412;
+                                                                    let _e2413 = local_169;
+                                                                    let _e2415 = ((_e2412 + _e2413) * 2u);
+                                                                    local_204 = _e2415;
                                                                     let _e2416 = local_6;
                                                                     if (_e2415 < _e2416) {
                                                                     } else {
                                                                         phi_5704_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e2418 = local_206;
+                                                                    let _e2418 = local_204;
                                                                     let _e2421 = global_9.member[_e2418];
-                                                                    local_207 = _e2421;
-                                                                    let _e2422 = local_205;
-                                                                    let _e2423 = (_e2422 & 65535u);
-                                                                    local_565 = select(-1f, 1f, ((_e2423 & 32768u) == 0u));
-                                                                    let _e2429 = ((_e2423 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_208 = _e2429;
-                                                                    local_209 = (_e2423 & 1023u);
-                                                                    if (_e2429 == 0u) {
-                                                                        let _e2451 = local_209;
-                                                                        let _e2453 = local_565;
-                                                                        phi_1933_ = ((_e2453 * f32(_e2451)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2432 = local_208;
-                                                                        if (_e2432 == 31u) {
-                                                                            let _e2442 = local_209;
-                                                                            phi_1930_ = (2139095040u | (_e2442 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2434 = local_208;
-                                                                            let _e2438 = local_209;
-                                                                            phi_1930_ = (((_e2434 + 112u) << bitcast<u32>(23i)) | (_e2438 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2447 = phi_1930_;
-                                                                        let _e2449 = local_565;
-                                                                        phi_1933_ = (_e2449 * bitcast<f32>(_e2447));
-                                                                    }
-                                                                    let _e2457 = phi_1933_;
-                                                                    local_210 = _e2457;
-                                                                    let _e2458 = local_205;
-                                                                    let _e2460 = (_e2458 >> bitcast<u32>(16i));
-                                                                    local_566 = select(-1f, 1f, ((_e2460 & 32768u) == 0u));
-                                                                    let _e2466 = ((_e2460 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_211 = _e2466;
-                                                                    local_212 = (_e2460 & 1023u);
-                                                                    if (_e2466 == 0u) {
-                                                                        let _e2488 = local_212;
-                                                                        let _e2490 = local_566;
-                                                                        phi_1965_ = ((_e2490 * f32(_e2488)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2469 = local_211;
-                                                                        if (_e2469 == 31u) {
-                                                                            let _e2479 = local_212;
-                                                                            phi_1962_ = (2139095040u | (_e2479 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2471 = local_211;
-                                                                            let _e2475 = local_212;
-                                                                            phi_1962_ = (((_e2471 + 112u) << bitcast<u32>(23i)) | (_e2475 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2484 = phi_1962_;
-                                                                        let _e2486 = local_566;
-                                                                        phi_1965_ = (_e2486 * bitcast<f32>(_e2484));
-                                                                    }
-                                                                    let _e2494 = phi_1965_;
-                                                                    local_213 = _e2494;
-                                                                    let _e2495 = local_207;
-                                                                    let _e2496 = (_e2495 & 65535u);
-                                                                    local_567 = select(-1f, 1f, ((_e2496 & 32768u) == 0u));
-                                                                    let _e2502 = ((_e2496 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_214 = _e2502;
-                                                                    local_215 = (_e2496 & 1023u);
-                                                                    if (_e2502 == 0u) {
-                                                                        let _e2524 = local_215;
-                                                                        let _e2526 = local_567;
-                                                                        phi_1997_ = ((_e2526 * f32(_e2524)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2505 = local_214;
-                                                                        if (_e2505 == 31u) {
-                                                                            let _e2515 = local_215;
-                                                                            phi_1994_ = (2139095040u | (_e2515 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2507 = local_214;
-                                                                            let _e2511 = local_215;
-                                                                            phi_1994_ = (((_e2507 + 112u) << bitcast<u32>(23i)) | (_e2511 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2520 = phi_1994_;
-                                                                        let _e2522 = local_567;
-                                                                        phi_1997_ = (_e2522 * bitcast<f32>(_e2520));
-                                                                    }
-                                                                    let _e2530 = phi_1997_;
-                                                                    local_216 = _e2530;
-                                                                    let _e2531 = local_207;
-                                                                    let _e2533 = (_e2531 >> bitcast<u32>(16i));
-                                                                    local_568 = select(-1f, 1f, ((_e2533 & 32768u) == 0u));
-                                                                    let _e2539 = ((_e2533 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_217 = _e2539;
-                                                                    local_218 = (_e2533 & 1023u);
-                                                                    if (_e2539 == 0u) {
-                                                                        let _e2561 = local_218;
-                                                                        let _e2563 = local_568;
-                                                                        phi_2029_ = ((_e2563 * f32(_e2561)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2542 = local_217;
-                                                                        if (_e2542 == 31u) {
-                                                                            let _e2552 = local_218;
-                                                                            phi_2026_ = (2139095040u | (_e2552 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2544 = local_217;
-                                                                            let _e2548 = local_218;
-                                                                            phi_2026_ = (((_e2544 + 112u) << bitcast<u32>(23i)) | (_e2548 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2557 = phi_2026_;
-                                                                        let _e2559 = local_568;
-                                                                        phi_2029_ = (_e2559 * bitcast<f32>(_e2557));
-                                                                    }
-                                                                    let _e2567 = phi_2029_;
-                                                                    local_219 = _e2567;
-                                                                    let _e2568 = local_203;
-                                                                    let _e2569 = local_179;
-                                                                    let _e2571 = ((_e2568 + _e2569) * 2u);
-                                                                    local_220 = _e2571;
-                                                                    let _e2572 = local_6;
-                                                                    if (_e2571 < _e2572) {
+                                                                    local_205 = _e2421;
+                                                                    let _e2422 = local_204;
+                                                                    let _e2423 = (_e2422 + 1u);
+                                                                    local_206 = _e2423;
+                                                                    let _e2424 = local_6;
+                                                                    if (_e2423 < _e2424) {
                                                                     } else {
                                                                         phi_5704_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e2574 = local_220;
-                                                                    let _e2577 = global_9.member[_e2574];
-                                                                    local_221 = _e2577;
-                                                                    let _e2578 = local_220;
-                                                                    let _e2579 = (_e2578 + 1u);
-                                                                    local_222 = _e2579;
+                                                                    let _e2426 = local_206;
+                                                                    let _e2429 = global_9.member[_e2426];
+                                                                    local_207 = _e2429;
+                                                                    let _e2430 = local_205;
+                                                                    let _e2431 = (_e2430 & 65535u);
+                                                                    local_565 = select(-1f, 1f, ((_e2431 & 32768u) == 0u));
+                                                                    let _e2437 = ((_e2431 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_208 = _e2437;
+                                                                    local_209 = (_e2431 & 1023u);
+                                                                    if (_e2437 == 0u) {
+                                                                        let _e2459 = local_209;
+                                                                        let _e2461 = local_565;
+                                                                        phi_1933_ = ((_e2461 * f32(_e2459)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2440 = local_208;
+                                                                        if (_e2440 == 31u) {
+                                                                            let _e2450 = local_209;
+                                                                            phi_1930_ = (2139095040u | (_e2450 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2442 = local_208;
+                                                                            let _e2446 = local_209;
+                                                                            phi_1930_ = (((_e2442 + 112u) << bitcast<u32>(23i)) | (_e2446 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2455 = phi_1930_;
+                                                                        let _e2457 = local_565;
+                                                                        phi_1933_ = (_e2457 * bitcast<f32>(_e2455));
+                                                                    }
+                                                                    let _e2465 = phi_1933_;
+                                                                    local_210 = _e2465;
+                                                                    let _e2466 = local_205;
+                                                                    let _e2468 = (_e2466 >> bitcast<u32>(16i));
+                                                                    local_566 = select(-1f, 1f, ((_e2468 & 32768u) == 0u));
+                                                                    let _e2474 = ((_e2468 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_211 = _e2474;
+                                                                    local_212 = (_e2468 & 1023u);
+                                                                    if (_e2474 == 0u) {
+                                                                        let _e2496 = local_212;
+                                                                        let _e2498 = local_566;
+                                                                        phi_1965_ = ((_e2498 * f32(_e2496)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2477 = local_211;
+                                                                        if (_e2477 == 31u) {
+                                                                            let _e2487 = local_212;
+                                                                            phi_1962_ = (2139095040u | (_e2487 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2479 = local_211;
+                                                                            let _e2483 = local_212;
+                                                                            phi_1962_ = (((_e2479 + 112u) << bitcast<u32>(23i)) | (_e2483 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2492 = phi_1962_;
+                                                                        let _e2494 = local_566;
+                                                                        phi_1965_ = (_e2494 * bitcast<f32>(_e2492));
+                                                                    }
+                                                                    let _e2502 = phi_1965_;
+                                                                    local_213 = _e2502;
+                                                                    let _e2503 = local_207;
+                                                                    let _e2504 = (_e2503 & 65535u);
+                                                                    local_567 = select(-1f, 1f, ((_e2504 & 32768u) == 0u));
+                                                                    let _e2510 = ((_e2504 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_214 = _e2510;
+                                                                    local_215 = (_e2504 & 1023u);
+                                                                    if (_e2510 == 0u) {
+                                                                        let _e2532 = local_215;
+                                                                        let _e2534 = local_567;
+                                                                        phi_1997_ = ((_e2534 * f32(_e2532)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2513 = local_214;
+                                                                        if (_e2513 == 31u) {
+                                                                            let _e2523 = local_215;
+                                                                            phi_1994_ = (2139095040u | (_e2523 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2515 = local_214;
+                                                                            let _e2519 = local_215;
+                                                                            phi_1994_ = (((_e2515 + 112u) << bitcast<u32>(23i)) | (_e2519 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2528 = phi_1994_;
+                                                                        let _e2530 = local_567;
+                                                                        phi_1997_ = (_e2530 * bitcast<f32>(_e2528));
+                                                                    }
+                                                                    let _e2538 = phi_1997_;
+                                                                    local_216 = _e2538;
+                                                                    let _e2539 = local_207;
+                                                                    let _e2541 = (_e2539 >> bitcast<u32>(16i));
+                                                                    local_568 = select(-1f, 1f, ((_e2541 & 32768u) == 0u));
+                                                                    let _e2547 = ((_e2541 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_217 = _e2547;
+                                                                    local_218 = (_e2541 & 1023u);
+                                                                    if (_e2547 == 0u) {
+                                                                        let _e2569 = local_218;
+                                                                        let _e2571 = local_568;
+                                                                        phi_2029_ = ((_e2571 * f32(_e2569)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2550 = local_217;
+                                                                        if (_e2550 == 31u) {
+                                                                            let _e2560 = local_218;
+                                                                            phi_2026_ = (2139095040u | (_e2560 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2552 = local_217;
+                                                                            let _e2556 = local_218;
+                                                                            phi_2026_ = (((_e2552 + 112u) << bitcast<u32>(23i)) | (_e2556 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2565 = phi_2026_;
+                                                                        let _e2567 = local_568;
+                                                                        phi_2029_ = (_e2567 * bitcast<f32>(_e2565));
+                                                                    }
+                                                                    let _e2575 = phi_2029_;
+                                                                    local_219 = _e2575;
+                                                                    let _e2576 = local_203;
+                                                                    let _e2577 = local_179;
+                                                                    let _e2579 = ((_e2576 + _e2577) * 2u);
+                                                                    local_220 = _e2579;
                                                                     let _e2580 = local_6;
                                                                     if (_e2579 < _e2580) {
                                                                     } else {
                                                                         phi_5704_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e2582 = local_222;
+                                                                    let _e2582 = local_220;
                                                                     let _e2585 = global_9.member[_e2582];
-                                                                    local_223 = _e2585;
-                                                                    let _e2586 = local_221;
-                                                                    let _e2587 = (_e2586 & 65535u);
-                                                                    local_569 = select(-1f, 1f, ((_e2587 & 32768u) == 0u));
-                                                                    let _e2593 = ((_e2587 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_224 = _e2593;
-                                                                    local_225 = (_e2587 & 1023u);
-                                                                    if (_e2593 == 0u) {
-                                                                        let _e2615 = local_225;
-                                                                        let _e2617 = local_569;
-                                                                        phi_2098_ = ((_e2617 * f32(_e2615)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2596 = local_224;
-                                                                        if (_e2596 == 31u) {
-                                                                            let _e2606 = local_225;
-                                                                            phi_2095_ = (2139095040u | (_e2606 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2598 = local_224;
-                                                                            let _e2602 = local_225;
-                                                                            phi_2095_ = (((_e2598 + 112u) << bitcast<u32>(23i)) | (_e2602 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2611 = phi_2095_;
-                                                                        let _e2613 = local_569;
-                                                                        phi_2098_ = (_e2613 * bitcast<f32>(_e2611));
-                                                                    }
-                                                                    let _e2621 = phi_2098_;
-                                                                    local_226 = _e2621;
-                                                                    let _e2622 = local_221;
-                                                                    let _e2624 = (_e2622 >> bitcast<u32>(16i));
-                                                                    local_570 = select(-1f, 1f, ((_e2624 & 32768u) == 0u));
-                                                                    let _e2630 = ((_e2624 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_227 = _e2630;
-                                                                    local_228 = (_e2624 & 1023u);
-                                                                    if (_e2630 == 0u) {
-                                                                        let _e2652 = local_228;
-                                                                        let _e2654 = local_570;
-                                                                        phi_2130_ = ((_e2654 * f32(_e2652)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2633 = local_227;
-                                                                        if (_e2633 == 31u) {
-                                                                            let _e2643 = local_228;
-                                                                            phi_2127_ = (2139095040u | (_e2643 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2635 = local_227;
-                                                                            let _e2639 = local_228;
-                                                                            phi_2127_ = (((_e2635 + 112u) << bitcast<u32>(23i)) | (_e2639 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2648 = phi_2127_;
-                                                                        let _e2650 = local_570;
-                                                                        phi_2130_ = (_e2650 * bitcast<f32>(_e2648));
-                                                                    }
-                                                                    let _e2658 = phi_2130_;
-                                                                    local_229 = _e2658;
-                                                                    let _e2659 = local_223;
-                                                                    let _e2660 = (_e2659 & 65535u);
-                                                                    local_571 = select(-1f, 1f, ((_e2660 & 32768u) == 0u));
-                                                                    let _e2666 = ((_e2660 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_230 = _e2666;
-                                                                    local_231 = (_e2660 & 1023u);
-                                                                    if (_e2666 == 0u) {
-                                                                        let _e2688 = local_231;
-                                                                        let _e2690 = local_571;
-                                                                        phi_2162_ = ((_e2690 * f32(_e2688)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2669 = local_230;
-                                                                        if (_e2669 == 31u) {
-                                                                            let _e2679 = local_231;
-                                                                            phi_2159_ = (2139095040u | (_e2679 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2671 = local_230;
-                                                                            let _e2675 = local_231;
-                                                                            phi_2159_ = (((_e2671 + 112u) << bitcast<u32>(23i)) | (_e2675 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2684 = phi_2159_;
-                                                                        let _e2686 = local_571;
-                                                                        phi_2162_ = (_e2686 * bitcast<f32>(_e2684));
-                                                                    }
-                                                                    let _e2694 = phi_2162_;
-                                                                    local_232 = _e2694;
-                                                                    let _e2695 = local_223;
-                                                                    let _e2697 = (_e2695 >> bitcast<u32>(16i));
-                                                                    local_572 = select(-1f, 1f, ((_e2697 & 32768u) == 0u));
-                                                                    let _e2703 = ((_e2697 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_233 = _e2703;
-                                                                    local_234 = (_e2697 & 1023u);
-                                                                    if (_e2703 == 0u) {
-                                                                        let _e2725 = local_234;
-                                                                        let _e2727 = local_572;
-                                                                        phi_2194_ = ((_e2727 * f32(_e2725)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2706 = local_233;
-                                                                        if (_e2706 == 31u) {
-                                                                            let _e2716 = local_234;
-                                                                            phi_2191_ = (2139095040u | (_e2716 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2708 = local_233;
-                                                                            let _e2712 = local_234;
-                                                                            phi_2191_ = (((_e2708 + 112u) << bitcast<u32>(23i)) | (_e2712 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2721 = phi_2191_;
-                                                                        let _e2723 = local_572;
-                                                                        phi_2194_ = (_e2723 * bitcast<f32>(_e2721));
-                                                                    }
-                                                                    let _e2731 = phi_2194_;
-                                                                    let _e2732 = local_226;
-                                                                    let _e2733 = local_210;
-                                                                    let _e2735 = local_155;
-                                                                    let _e2737 = local_210;
-                                                                    local_235 = (_e2737 + ((_e2732 - _e2733) * _e2735));
-                                                                    let _e2739 = local_229;
-                                                                    let _e2740 = local_213;
-                                                                    let _e2742 = local_155;
-                                                                    let _e2744 = local_213;
-                                                                    local_236 = (_e2744 + ((_e2739 - _e2740) * _e2742));
-                                                                    let _e2746 = local_232;
-                                                                    let _e2747 = local_216;
-                                                                    let _e2749 = local_155;
-                                                                    let _e2751 = local_216;
-                                                                    local_237 = (_e2751 + ((_e2746 - _e2747) * _e2749));
-                                                                    let _e2753 = local_219;
-                                                                    let _e2755 = local_155;
-                                                                    let _e2757 = local_219;
-                                                                    local_238 = (_e2757 + ((_e2731 - _e2753) * _e2755));
-                                                                    let _e2759 = local_201;
-                                                                    let _e2760 = local_148;
-                                                                    let _e2762 = local_202;
-                                                                    let _e2763 = (_e2762 + (_e2759 * _e2760));
-                                                                    local_239 = _e2763;
-                                                                    let _e2764 = local_169;
-                                                                    let _e2766 = ((_e2763 + _e2764) * 2u);
-                                                                    local_240 = _e2766;
-                                                                    let _e2767 = local_6;
-                                                                    if (_e2766 < _e2767) {
+                                                                    local_221 = _e2585;
+                                                                    let _e2586 = local_220;
+                                                                    let _e2587 = (_e2586 + 1u);
+                                                                    local_222 = _e2587;
+                                                                    let _e2588 = local_6;
+                                                                    if (_e2587 < _e2588) {
                                                                     } else {
                                                                         phi_5704_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e2769 = local_240;
-                                                                    let _e2772 = global_9.member[_e2769];
-                                                                    local_241 = _e2772;
-                                                                    let _e2773 = local_240;
-                                                                    let _e2774 = (_e2773 + 1u);
-                                                                    local_242 = _e2774;
+                                                                    let _e2590 = local_222;
+                                                                    let _e2593 = global_9.member[_e2590];
+                                                                    local_223 = _e2593;
+                                                                    let _e2594 = local_221;
+                                                                    let _e2595 = (_e2594 & 65535u);
+                                                                    local_569 = select(-1f, 1f, ((_e2595 & 32768u) == 0u));
+                                                                    let _e2601 = ((_e2595 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_224 = _e2601;
+                                                                    local_225 = (_e2595 & 1023u);
+                                                                    if (_e2601 == 0u) {
+                                                                        let _e2623 = local_225;
+                                                                        let _e2625 = local_569;
+                                                                        phi_2098_ = ((_e2625 * f32(_e2623)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2604 = local_224;
+                                                                        if (_e2604 == 31u) {
+                                                                            let _e2614 = local_225;
+                                                                            phi_2095_ = (2139095040u | (_e2614 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2606 = local_224;
+                                                                            let _e2610 = local_225;
+                                                                            phi_2095_ = (((_e2606 + 112u) << bitcast<u32>(23i)) | (_e2610 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2619 = phi_2095_;
+                                                                        let _e2621 = local_569;
+                                                                        phi_2098_ = (_e2621 * bitcast<f32>(_e2619));
+                                                                    }
+                                                                    let _e2629 = phi_2098_;
+                                                                    local_226 = _e2629;
+                                                                    let _e2630 = local_221;
+                                                                    let _e2632 = (_e2630 >> bitcast<u32>(16i));
+                                                                    local_570 = select(-1f, 1f, ((_e2632 & 32768u) == 0u));
+                                                                    let _e2638 = ((_e2632 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_227 = _e2638;
+                                                                    local_228 = (_e2632 & 1023u);
+                                                                    if (_e2638 == 0u) {
+                                                                        let _e2660 = local_228;
+                                                                        let _e2662 = local_570;
+                                                                        phi_2130_ = ((_e2662 * f32(_e2660)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2641 = local_227;
+                                                                        if (_e2641 == 31u) {
+                                                                            let _e2651 = local_228;
+                                                                            phi_2127_ = (2139095040u | (_e2651 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2643 = local_227;
+                                                                            let _e2647 = local_228;
+                                                                            phi_2127_ = (((_e2643 + 112u) << bitcast<u32>(23i)) | (_e2647 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2656 = phi_2127_;
+                                                                        let _e2658 = local_570;
+                                                                        phi_2130_ = (_e2658 * bitcast<f32>(_e2656));
+                                                                    }
+                                                                    let _e2666 = phi_2130_;
+                                                                    local_229 = _e2666;
+                                                                    let _e2667 = local_223;
+                                                                    let _e2668 = (_e2667 & 65535u);
+                                                                    local_571 = select(-1f, 1f, ((_e2668 & 32768u) == 0u));
+                                                                    let _e2674 = ((_e2668 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_230 = _e2674;
+                                                                    local_231 = (_e2668 & 1023u);
+                                                                    if (_e2674 == 0u) {
+                                                                        let _e2696 = local_231;
+                                                                        let _e2698 = local_571;
+                                                                        phi_2162_ = ((_e2698 * f32(_e2696)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2677 = local_230;
+                                                                        if (_e2677 == 31u) {
+                                                                            let _e2687 = local_231;
+                                                                            phi_2159_ = (2139095040u | (_e2687 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2679 = local_230;
+                                                                            let _e2683 = local_231;
+                                                                            phi_2159_ = (((_e2679 + 112u) << bitcast<u32>(23i)) | (_e2683 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2692 = phi_2159_;
+                                                                        let _e2694 = local_571;
+                                                                        phi_2162_ = (_e2694 * bitcast<f32>(_e2692));
+                                                                    }
+                                                                    let _e2702 = phi_2162_;
+                                                                    local_232 = _e2702;
+                                                                    let _e2703 = local_223;
+                                                                    let _e2705 = (_e2703 >> bitcast<u32>(16i));
+                                                                    local_572 = select(-1f, 1f, ((_e2705 & 32768u) == 0u));
+                                                                    let _e2711 = ((_e2705 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_233 = _e2711;
+                                                                    local_234 = (_e2705 & 1023u);
+                                                                    if (_e2711 == 0u) {
+                                                                        let _e2733 = local_234;
+                                                                        let _e2735 = local_572;
+                                                                        phi_2194_ = ((_e2735 * f32(_e2733)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2714 = local_233;
+                                                                        if (_e2714 == 31u) {
+                                                                            let _e2724 = local_234;
+                                                                            phi_2191_ = (2139095040u | (_e2724 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2716 = local_233;
+                                                                            let _e2720 = local_234;
+                                                                            phi_2191_ = (((_e2716 + 112u) << bitcast<u32>(23i)) | (_e2720 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2729 = phi_2191_;
+                                                                        let _e2731 = local_572;
+                                                                        phi_2194_ = (_e2731 * bitcast<f32>(_e2729));
+                                                                    }
+                                                                    let _e2739 = phi_2194_;
+                                                                    let _e2740 = local_226;
+                                                                    let _e2741 = local_210;
+                                                                    let _e2743 = local_155;
+                                                                    let _e2745 = local_210;
+                                                                    local_235 = (_e2745 + ((_e2740 - _e2741) * _e2743));
+                                                                    let _e2747 = local_229;
+                                                                    let _e2748 = local_213;
+                                                                    let _e2750 = local_155;
+                                                                    let _e2752 = local_213;
+                                                                    local_236 = (_e2752 + ((_e2747 - _e2748) * _e2750));
+                                                                    let _e2754 = local_232;
+                                                                    let _e2755 = local_216;
+                                                                    let _e2757 = local_155;
+                                                                    let _e2759 = local_216;
+                                                                    local_237 = (_e2759 + ((_e2754 - _e2755) * _e2757));
+                                                                    let _e2761 = local_219;
+                                                                    let _e2763 = local_155;
+                                                                    let _e2765 = local_219;
+                                                                    local_238 = (_e2765 + ((_e2739 - _e2761) * _e2763));
+                                                                    let _e2767 = local_201;
+                                                                    let _e2768 = local_148;
+                                                                    let _e2770 = local_202;
+                                                                    let _e2771 = (_e2770 + (_e2767 * _e2768));
+                                                                    local_239 = _e2771;
+                                                                    let _e2772 = local_169;
+                                                                    let _e2774 = ((_e2771 + _e2772) * 2u);
+                                                                    local_240 = _e2774;
                                                                     let _e2775 = local_6;
                                                                     if (_e2774 < _e2775) {
                                                                     } else {
                                                                         phi_5704_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e2777 = local_242;
+                                                                    let _e2777 = local_240;
                                                                     let _e2780 = global_9.member[_e2777];
-                                                                    local_243 = _e2780;
-                                                                    let _e2781 = local_241;
-                                                                    let _e2782 = (_e2781 & 65535u);
-                                                                    local_573 = select(-1f, 1f, ((_e2782 & 32768u) == 0u));
-                                                                    let _e2788 = ((_e2782 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_244 = _e2788;
-                                                                    local_245 = (_e2782 & 1023u);
-                                                                    if (_e2788 == 0u) {
-                                                                        let _e2810 = local_245;
-                                                                        let _e2812 = local_573;
-                                                                        phi_2275_ = ((_e2812 * f32(_e2810)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2791 = local_244;
-                                                                        if (_e2791 == 31u) {
-                                                                            let _e2801 = local_245;
-                                                                            phi_2272_ = (2139095040u | (_e2801 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2793 = local_244;
-                                                                            let _e2797 = local_245;
-                                                                            phi_2272_ = (((_e2793 + 112u) << bitcast<u32>(23i)) | (_e2797 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2806 = phi_2272_;
-                                                                        let _e2808 = local_573;
-                                                                        phi_2275_ = (_e2808 * bitcast<f32>(_e2806));
-                                                                    }
-                                                                    let _e2816 = phi_2275_;
-                                                                    local_246 = _e2816;
-                                                                    let _e2817 = local_241;
-                                                                    let _e2819 = (_e2817 >> bitcast<u32>(16i));
-                                                                    local_574 = select(-1f, 1f, ((_e2819 & 32768u) == 0u));
-                                                                    let _e2825 = ((_e2819 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_247 = _e2825;
-                                                                    local_248 = (_e2819 & 1023u);
-                                                                    if (_e2825 == 0u) {
-                                                                        let _e2847 = local_248;
-                                                                        let _e2849 = local_574;
-                                                                        phi_2307_ = ((_e2849 * f32(_e2847)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2828 = local_247;
-                                                                        if (_e2828 == 31u) {
-                                                                            let _e2838 = local_248;
-                                                                            phi_2304_ = (2139095040u | (_e2838 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2830 = local_247;
-                                                                            let _e2834 = local_248;
-                                                                            phi_2304_ = (((_e2830 + 112u) << bitcast<u32>(23i)) | (_e2834 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2843 = phi_2304_;
-                                                                        let _e2845 = local_574;
-                                                                        phi_2307_ = (_e2845 * bitcast<f32>(_e2843));
-                                                                    }
-                                                                    let _e2853 = phi_2307_;
-                                                                    local_249 = _e2853;
-                                                                    let _e2854 = local_243;
-                                                                    let _e2855 = (_e2854 & 65535u);
-                                                                    local_575 = select(-1f, 1f, ((_e2855 & 32768u) == 0u));
-                                                                    let _e2861 = ((_e2855 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_250 = _e2861;
-                                                                    local_251 = (_e2855 & 1023u);
-                                                                    if (_e2861 == 0u) {
-                                                                        let _e2883 = local_251;
-                                                                        let _e2885 = local_575;
-                                                                        phi_2339_ = ((_e2885 * f32(_e2883)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2864 = local_250;
-                                                                        if (_e2864 == 31u) {
-                                                                            let _e2874 = local_251;
-                                                                            phi_2336_ = (2139095040u | (_e2874 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2866 = local_250;
-                                                                            let _e2870 = local_251;
-                                                                            phi_2336_ = (((_e2866 + 112u) << bitcast<u32>(23i)) | (_e2870 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2879 = phi_2336_;
-                                                                        let _e2881 = local_575;
-                                                                        phi_2339_ = (_e2881 * bitcast<f32>(_e2879));
-                                                                    }
-                                                                    let _e2889 = phi_2339_;
-                                                                    local_252 = _e2889;
-                                                                    let _e2890 = local_243;
-                                                                    let _e2892 = (_e2890 >> bitcast<u32>(16i));
-                                                                    local_576 = select(-1f, 1f, ((_e2892 & 32768u) == 0u));
-                                                                    let _e2898 = ((_e2892 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_253 = _e2898;
-                                                                    local_254 = (_e2892 & 1023u);
-                                                                    if (_e2898 == 0u) {
-                                                                        let _e2920 = local_254;
-                                                                        let _e2922 = local_576;
-                                                                        phi_2371_ = ((_e2922 * f32(_e2920)) * 0.000000059604645f);
-                                                                    } else {
-                                                                        let _e2901 = local_253;
-                                                                        if (_e2901 == 31u) {
-                                                                            let _e2911 = local_254;
-                                                                            phi_2368_ = (2139095040u | (_e2911 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2903 = local_253;
-                                                                            let _e2907 = local_254;
-                                                                            phi_2368_ = (((_e2903 + 112u) << bitcast<u32>(23i)) | (_e2907 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2916 = phi_2368_;
-                                                                        let _e2918 = local_576;
-                                                                        phi_2371_ = (_e2918 * bitcast<f32>(_e2916));
-                                                                    }
-                                                                    let _e2926 = phi_2371_;
-                                                                    local_255 = _e2926;
-                                                                    let _e2927 = local_239;
-                                                                    let _e2928 = local_179;
-                                                                    let _e2930 = ((_e2927 + _e2928) * 2u);
-                                                                    local_256 = _e2930;
-                                                                    let _e2931 = local_6;
-                                                                    if (_e2930 < _e2931) {
+                                                                    local_241 = _e2780;
+                                                                    let _e2781 = local_240;
+                                                                    let _e2782 = (_e2781 + 1u);
+                                                                    local_242 = _e2782;
+                                                                    let _e2783 = local_6;
+                                                                    if (_e2782 < _e2783) {
                                                                     } else {
                                                                         phi_5704_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e2933 = local_256;
-                                                                    let _e2936 = global_9.member[_e2933];
-                                                                    local_257 = _e2936;
-                                                                    let _e2937 = local_256;
-                                                                    let _e2938 = (_e2937 + 1u);
-                                                                    local_258 = _e2938;
+                                                                    let _e2785 = local_242;
+                                                                    let _e2788 = global_9.member[_e2785];
+                                                                    local_243 = _e2788;
+                                                                    let _e2789 = local_241;
+                                                                    let _e2790 = (_e2789 & 65535u);
+                                                                    local_573 = select(-1f, 1f, ((_e2790 & 32768u) == 0u));
+                                                                    let _e2796 = ((_e2790 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_244 = _e2796;
+                                                                    local_245 = (_e2790 & 1023u);
+                                                                    if (_e2796 == 0u) {
+                                                                        let _e2818 = local_245;
+                                                                        let _e2820 = local_573;
+                                                                        phi_2275_ = ((_e2820 * f32(_e2818)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2799 = local_244;
+                                                                        if (_e2799 == 31u) {
+                                                                            let _e2809 = local_245;
+                                                                            phi_2272_ = (2139095040u | (_e2809 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2801 = local_244;
+                                                                            let _e2805 = local_245;
+                                                                            phi_2272_ = (((_e2801 + 112u) << bitcast<u32>(23i)) | (_e2805 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2814 = phi_2272_;
+                                                                        let _e2816 = local_573;
+                                                                        phi_2275_ = (_e2816 * bitcast<f32>(_e2814));
+                                                                    }
+                                                                    let _e2824 = phi_2275_;
+                                                                    local_246 = _e2824;
+                                                                    let _e2825 = local_241;
+                                                                    let _e2827 = (_e2825 >> bitcast<u32>(16i));
+                                                                    local_574 = select(-1f, 1f, ((_e2827 & 32768u) == 0u));
+                                                                    let _e2833 = ((_e2827 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_247 = _e2833;
+                                                                    local_248 = (_e2827 & 1023u);
+                                                                    if (_e2833 == 0u) {
+                                                                        let _e2855 = local_248;
+                                                                        let _e2857 = local_574;
+                                                                        phi_2307_ = ((_e2857 * f32(_e2855)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2836 = local_247;
+                                                                        if (_e2836 == 31u) {
+                                                                            let _e2846 = local_248;
+                                                                            phi_2304_ = (2139095040u | (_e2846 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2838 = local_247;
+                                                                            let _e2842 = local_248;
+                                                                            phi_2304_ = (((_e2838 + 112u) << bitcast<u32>(23i)) | (_e2842 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2851 = phi_2304_;
+                                                                        let _e2853 = local_574;
+                                                                        phi_2307_ = (_e2853 * bitcast<f32>(_e2851));
+                                                                    }
+                                                                    let _e2861 = phi_2307_;
+                                                                    local_249 = _e2861;
+                                                                    let _e2862 = local_243;
+                                                                    let _e2863 = (_e2862 & 65535u);
+                                                                    local_575 = select(-1f, 1f, ((_e2863 & 32768u) == 0u));
+                                                                    let _e2869 = ((_e2863 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_250 = _e2869;
+                                                                    local_251 = (_e2863 & 1023u);
+                                                                    if (_e2869 == 0u) {
+                                                                        let _e2891 = local_251;
+                                                                        let _e2893 = local_575;
+                                                                        phi_2339_ = ((_e2893 * f32(_e2891)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2872 = local_250;
+                                                                        if (_e2872 == 31u) {
+                                                                            let _e2882 = local_251;
+                                                                            phi_2336_ = (2139095040u | (_e2882 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2874 = local_250;
+                                                                            let _e2878 = local_251;
+                                                                            phi_2336_ = (((_e2874 + 112u) << bitcast<u32>(23i)) | (_e2878 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2887 = phi_2336_;
+                                                                        let _e2889 = local_575;
+                                                                        phi_2339_ = (_e2889 * bitcast<f32>(_e2887));
+                                                                    }
+                                                                    let _e2897 = phi_2339_;
+                                                                    local_252 = _e2897;
+                                                                    let _e2898 = local_243;
+                                                                    let _e2900 = (_e2898 >> bitcast<u32>(16i));
+                                                                    local_576 = select(-1f, 1f, ((_e2900 & 32768u) == 0u));
+                                                                    let _e2906 = ((_e2900 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_253 = _e2906;
+                                                                    local_254 = (_e2900 & 1023u);
+                                                                    if (_e2906 == 0u) {
+                                                                        let _e2928 = local_254;
+                                                                        let _e2930 = local_576;
+                                                                        phi_2371_ = ((_e2930 * f32(_e2928)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e2909 = local_253;
+                                                                        if (_e2909 == 31u) {
+                                                                            let _e2919 = local_254;
+                                                                            phi_2368_ = (2139095040u | (_e2919 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e2911 = local_253;
+                                                                            let _e2915 = local_254;
+                                                                            phi_2368_ = (((_e2911 + 112u) << bitcast<u32>(23i)) | (_e2915 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e2924 = phi_2368_;
+                                                                        let _e2926 = local_576;
+                                                                        phi_2371_ = (_e2926 * bitcast<f32>(_e2924));
+                                                                    }
+                                                                    let _e2934 = phi_2371_;
+                                                                    local_255 = _e2934;
+                                                                    let _e2935 = local_239;
+                                                                    let _e2936 = local_179;
+                                                                    let _e2938 = ((_e2935 + _e2936) * 2u);
+                                                                    local_256 = _e2938;
                                                                     let _e2939 = local_6;
                                                                     if (_e2938 < _e2939) {
                                                                     } else {
                                                                         phi_5704_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e2941 = local_258;
+                                                                    let _e2941 = local_256;
                                                                     let _e2944 = global_9.member[_e2941];
-                                                                    local_259 = _e2944;
-                                                                    let _e2945 = local_257;
-                                                                    let _e2946 = (_e2945 & 65535u);
-                                                                    local_577 = select(-1f, 1f, ((_e2946 & 32768u) == 0u));
-                                                                    let _e2952 = ((_e2946 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_260 = _e2952;
-                                                                    local_261 = (_e2946 & 1023u);
-                                                                    if (_e2952 == 0u) {
-                                                                        let _e2974 = local_261;
-                                                                        let _e2976 = local_577;
-                                                                        phi_2440_ = ((_e2976 * f32(_e2974)) * 0.000000059604645f);
+                                                                    local_257 = _e2944;
+                                                                    let _e2945 = local_256;
+                                                                    let _e2946 = (_e2945 + 1u);
+                                                                    local_258 = _e2946;
+                                                                    let _e2947 = local_6;
+                                                                    if (_e2946 < _e2947) {
                                                                     } else {
-                                                                        let _e2955 = local_260;
-                                                                        if (_e2955 == 31u) {
-                                                                            let _e2965 = local_261;
-                                                                            phi_2437_ = (2139095040u | (_e2965 << bitcast<u32>(13i)));
-                                                                        } else {
-                                                                            let _e2957 = local_260;
-                                                                            let _e2961 = local_261;
-                                                                            phi_2437_ = (((_e2957 + 112u) << bitcast<u32>(23i)) | (_e2961 << bitcast<u32>(13i)));
-                                                                        }
-                                                                        let _e2970 = phi_2437_;
-                                                                        let _e2972 = local_577;
-                                                                        phi_2440_ = (_e2972 * bitcast<f32>(_e2970));
+                                                                        phi_5704_ = true;
+                                                                        break;
                                                                     }
-                                                                    let _e2980 = phi_2440_;
-                                                                    local_262 = _e2980;
-                                                                    let _e2981 = local_257;
-                                                                    let _e2983 = (_e2981 >> bitcast<u32>(16i));
-                                                                    local_578 = select(-1f, 1f, ((_e2983 & 32768u) == 0u));
-                                                                    let _e2989 = ((_e2983 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_263 = _e2989;
-                                                                    local_264 = (_e2983 & 1023u);
-                                                                    if (_e2989 == 0u) {
-                                                                        let _e3011 = local_264;
-                                                                        let _e3013 = local_578;
-                                                                        phi_2472_ = ((_e3013 * f32(_e3011)) * 0.000000059604645f);
+                                                                    let _e2949 = local_258;
+                                                                    let _e2952 = global_9.member[_e2949];
+                                                                    local_259 = _e2952;
+                                                                    let _e2953 = local_257;
+                                                                    let _e2954 = (_e2953 & 65535u);
+                                                                    local_577 = select(-1f, 1f, ((_e2954 & 32768u) == 0u));
+                                                                    let _e2960 = ((_e2954 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_260 = _e2960;
+                                                                    local_261 = (_e2954 & 1023u);
+                                                                    if (_e2960 == 0u) {
+                                                                        let _e2982 = local_261;
+                                                                        let _e2984 = local_577;
+                                                                        phi_2440_ = ((_e2984 * f32(_e2982)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e2992 = local_263;
-                                                                        if (_e2992 == 31u) {
-                                                                            let _e3002 = local_264;
-                                                                            phi_2469_ = (2139095040u | (_e3002 << bitcast<u32>(13i)));
+                                                                        let _e2963 = local_260;
+                                                                        if (_e2963 == 31u) {
+                                                                            let _e2973 = local_261;
+                                                                            phi_2437_ = (2139095040u | (_e2973 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e2994 = local_263;
-                                                                            let _e2998 = local_264;
-                                                                            phi_2469_ = (((_e2994 + 112u) << bitcast<u32>(23i)) | (_e2998 << bitcast<u32>(13i)));
+                                                                            let _e2965 = local_260;
+                                                                            let _e2969 = local_261;
+                                                                            phi_2437_ = (((_e2965 + 112u) << bitcast<u32>(23i)) | (_e2969 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e3007 = phi_2469_;
-                                                                        let _e3009 = local_578;
-                                                                        phi_2472_ = (_e3009 * bitcast<f32>(_e3007));
+                                                                        let _e2978 = phi_2437_;
+                                                                        let _e2980 = local_577;
+                                                                        phi_2440_ = (_e2980 * bitcast<f32>(_e2978));
                                                                     }
-                                                                    let _e3017 = phi_2472_;
-                                                                    local_265 = _e3017;
-                                                                    let _e3018 = local_259;
-                                                                    let _e3019 = (_e3018 & 65535u);
-                                                                    local_579 = select(-1f, 1f, ((_e3019 & 32768u) == 0u));
-                                                                    let _e3025 = ((_e3019 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_266 = _e3025;
-                                                                    local_267 = (_e3019 & 1023u);
-                                                                    if (_e3025 == 0u) {
-                                                                        let _e3047 = local_267;
-                                                                        let _e3049 = local_579;
-                                                                        phi_2504_ = ((_e3049 * f32(_e3047)) * 0.000000059604645f);
+                                                                    let _e2988 = phi_2440_;
+                                                                    local_262 = _e2988;
+                                                                    let _e2989 = local_257;
+                                                                    let _e2991 = (_e2989 >> bitcast<u32>(16i));
+                                                                    local_578 = select(-1f, 1f, ((_e2991 & 32768u) == 0u));
+                                                                    let _e2997 = ((_e2991 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_263 = _e2997;
+                                                                    local_264 = (_e2991 & 1023u);
+                                                                    if (_e2997 == 0u) {
+                                                                        let _e3019 = local_264;
+                                                                        let _e3021 = local_578;
+                                                                        phi_2472_ = ((_e3021 * f32(_e3019)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e3028 = local_266;
-                                                                        if (_e3028 == 31u) {
-                                                                            let _e3038 = local_267;
-                                                                            phi_2501_ = (2139095040u | (_e3038 << bitcast<u32>(13i)));
+                                                                        let _e3000 = local_263;
+                                                                        if (_e3000 == 31u) {
+                                                                            let _e3010 = local_264;
+                                                                            phi_2469_ = (2139095040u | (_e3010 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e3030 = local_266;
-                                                                            let _e3034 = local_267;
-                                                                            phi_2501_ = (((_e3030 + 112u) << bitcast<u32>(23i)) | (_e3034 << bitcast<u32>(13i)));
+                                                                            let _e3002 = local_263;
+                                                                            let _e3006 = local_264;
+                                                                            phi_2469_ = (((_e3002 + 112u) << bitcast<u32>(23i)) | (_e3006 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e3043 = phi_2501_;
-                                                                        let _e3045 = local_579;
-                                                                        phi_2504_ = (_e3045 * bitcast<f32>(_e3043));
+                                                                        let _e3015 = phi_2469_;
+                                                                        let _e3017 = local_578;
+                                                                        phi_2472_ = (_e3017 * bitcast<f32>(_e3015));
                                                                     }
-                                                                    let _e3053 = phi_2504_;
-                                                                    local_268 = _e3053;
-                                                                    let _e3054 = local_259;
-                                                                    let _e3056 = (_e3054 >> bitcast<u32>(16i));
-                                                                    local_580 = select(-1f, 1f, ((_e3056 & 32768u) == 0u));
-                                                                    let _e3062 = ((_e3056 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_269 = _e3062;
-                                                                    local_270 = (_e3056 & 1023u);
-                                                                    if (_e3062 == 0u) {
-                                                                        let _e3084 = local_270;
-                                                                        let _e3086 = local_580;
-                                                                        phi_2536_ = ((_e3086 * f32(_e3084)) * 0.000000059604645f);
+                                                                    let _e3025 = phi_2472_;
+                                                                    local_265 = _e3025;
+                                                                    let _e3026 = local_259;
+                                                                    let _e3027 = (_e3026 & 65535u);
+                                                                    local_579 = select(-1f, 1f, ((_e3027 & 32768u) == 0u));
+                                                                    let _e3033 = ((_e3027 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_266 = _e3033;
+                                                                    local_267 = (_e3027 & 1023u);
+                                                                    if (_e3033 == 0u) {
+                                                                        let _e3055 = local_267;
+                                                                        let _e3057 = local_579;
+                                                                        phi_2504_ = ((_e3057 * f32(_e3055)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e3065 = local_269;
-                                                                        if (_e3065 == 31u) {
-                                                                            let _e3075 = local_270;
-                                                                            phi_2533_ = (2139095040u | (_e3075 << bitcast<u32>(13i)));
+                                                                        let _e3036 = local_266;
+                                                                        if (_e3036 == 31u) {
+                                                                            let _e3046 = local_267;
+                                                                            phi_2501_ = (2139095040u | (_e3046 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e3067 = local_269;
-                                                                            let _e3071 = local_270;
-                                                                            phi_2533_ = (((_e3067 + 112u) << bitcast<u32>(23i)) | (_e3071 << bitcast<u32>(13i)));
+                                                                            let _e3038 = local_266;
+                                                                            let _e3042 = local_267;
+                                                                            phi_2501_ = (((_e3038 + 112u) << bitcast<u32>(23i)) | (_e3042 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e3080 = phi_2533_;
-                                                                        let _e3082 = local_580;
-                                                                        phi_2536_ = (_e3082 * bitcast<f32>(_e3080));
+                                                                        let _e3051 = phi_2501_;
+                                                                        let _e3053 = local_579;
+                                                                        phi_2504_ = (_e3053 * bitcast<f32>(_e3051));
                                                                     }
-                                                                    let _e3090 = phi_2536_;
-                                                                    let _e3091 = local_262;
-                                                                    let _e3092 = local_246;
-                                                                    let _e3094 = local_155;
-                                                                    let _e3096 = local_246;
-                                                                    let _e3098 = local_265;
-                                                                    let _e3099 = local_249;
-                                                                    let _e3101 = local_155;
-                                                                    let _e3103 = local_249;
-                                                                    let _e3105 = local_268;
-                                                                    let _e3106 = local_252;
-                                                                    let _e3108 = local_155;
-                                                                    let _e3110 = local_252;
-                                                                    let _e3112 = local_255;
-                                                                    let _e3114 = local_155;
-                                                                    let _e3116 = local_255;
-                                                                    let _e3118 = local_235;
-                                                                    let _e3120 = local_154;
-                                                                    let _e3122 = local_235;
-                                                                    let _e3124 = local_236;
-                                                                    let _e3126 = local_154;
-                                                                    let _e3128 = local_236;
-                                                                    let _e3130 = local_237;
-                                                                    let _e3132 = local_154;
-                                                                    let _e3134 = local_237;
-                                                                    let _e3136 = local_238;
-                                                                    let _e3138 = local_154;
-                                                                    let _e3140 = local_238;
-                                                                    let _e3142 = local_147;
-                                                                    let _e3144 = local_147;
-                                                                    let _e3146 = local_147;
-                                                                    let _e3148 = local_147;
-                                                                    let _e3150 = local_144;
-                                                                    let _e3153 = local_144;
-                                                                    let _e3156 = local_144;
-                                                                    let _e3159 = local_144;
-                                                                    let _e3163 = local_143;
-                                                                    phi_1491_ = (_e3163 + 1u);
-                                                                    phi_1494_ = type_5((_e3150.member + ((_e3122 + (((_e3096 + ((_e3091 - _e3092) * _e3094)) - _e3118) * _e3120)) * _e3142)), (_e3153.member_1 + ((_e3128 + (((_e3103 + ((_e3098 - _e3099) * _e3101)) - _e3124) * _e3126)) * _e3144)), (_e3156.member_2 + ((_e3134 + (((_e3110 + ((_e3105 - _e3106) * _e3108)) - _e3130) * _e3132)) * _e3146)), (_e3159.member_3 + ((_e3140 + (((_e3116 + ((_e3090 - _e3112) * _e3114)) - _e3136) * _e3138)) * _e3148)));
+                                                                    let _e3061 = phi_2504_;
+                                                                    local_268 = _e3061;
+                                                                    let _e3062 = local_259;
+                                                                    let _e3064 = (_e3062 >> bitcast<u32>(16i));
+                                                                    local_580 = select(-1f, 1f, ((_e3064 & 32768u) == 0u));
+                                                                    let _e3070 = ((_e3064 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_269 = _e3070;
+                                                                    local_270 = (_e3064 & 1023u);
+                                                                    if (_e3070 == 0u) {
+                                                                        let _e3092 = local_270;
+                                                                        let _e3094 = local_580;
+                                                                        phi_2536_ = ((_e3094 * f32(_e3092)) * 0.000000059604645f);
+                                                                    } else {
+                                                                        let _e3073 = local_269;
+                                                                        if (_e3073 == 31u) {
+                                                                            let _e3083 = local_270;
+                                                                            phi_2533_ = (2139095040u | (_e3083 << bitcast<u32>(13i)));
+                                                                        } else {
+                                                                            let _e3075 = local_269;
+                                                                            let _e3079 = local_270;
+                                                                            phi_2533_ = (((_e3075 + 112u) << bitcast<u32>(23i)) | (_e3079 << bitcast<u32>(13i)));
+                                                                        }
+                                                                        let _e3088 = phi_2533_;
+                                                                        let _e3090 = local_580;
+                                                                        phi_2536_ = (_e3090 * bitcast<f32>(_e3088));
+                                                                    }
+                                                                    let _e3098 = phi_2536_;
+                                                                    let _e3099 = local_262;
+                                                                    let _e3100 = local_246;
+                                                                    let _e3102 = local_155;
+                                                                    let _e3104 = local_246;
+                                                                    let _e3106 = local_265;
+                                                                    let _e3107 = local_249;
+                                                                    let _e3109 = local_155;
+                                                                    let _e3111 = local_249;
+                                                                    let _e3113 = local_268;
+                                                                    let _e3114 = local_252;
+                                                                    let _e3116 = local_155;
+                                                                    let _e3118 = local_252;
+                                                                    let _e3120 = local_255;
+                                                                    let _e3122 = local_155;
+                                                                    let _e3124 = local_255;
+                                                                    let _e3126 = local_235;
+                                                                    let _e3128 = local_154;
+                                                                    let _e3130 = local_235;
+                                                                    let _e3132 = local_236;
+                                                                    let _e3134 = local_154;
+                                                                    let _e3136 = local_236;
+                                                                    let _e3138 = local_237;
+                                                                    let _e3140 = local_154;
+                                                                    let _e3142 = local_237;
+                                                                    let _e3144 = local_238;
+                                                                    let _e3146 = local_154;
+                                                                    let _e3148 = local_238;
+                                                                    let _e3150 = local_147;
+                                                                    let _e3152 = local_147;
+                                                                    let _e3154 = local_147;
+                                                                    let _e3156 = local_147;
+                                                                    let _e3158 = local_144;
+                                                                    let _e3161 = local_144;
+                                                                    let _e3164 = local_144;
+                                                                    let _e3167 = local_144;
+                                                                    let _e3171 = local_143;
+                                                                    phi_1491_ = (_e3171 + 1u);
+                                                                    phi_1494_ = type_5((_e3158.member + ((_e3130 + (((_e3104 + ((_e3099 - _e3100) * _e3102)) - _e3126) * _e3128)) * _e3150)), (_e3161.member_1 + ((_e3136 + (((_e3111 + ((_e3106 - _e3107) * _e3109)) - _e3132) * _e3134)) * _e3152)), (_e3164.member_2 + ((_e3142 + (((_e3118 + ((_e3113 - _e3114) * _e3116)) - _e3138) * _e3140)) * _e3154)), (_e3167.member_3 + ((_e3148 + (((_e3124 + ((_e3098 - _e3120) * _e3122)) - _e3144) * _e3146)) * _e3156)));
                                                                 } else {
                                                                     phi_1491_ = u32();
                                                                     phi_1494_ = type_5();
                                                                 }
-                                                                let _e3166 = phi_1491_;
-                                                                let _e3168 = phi_1494_;
+                                                                let _e3174 = phi_1491_;
+                                                                let _e3176 = phi_1494_;
                                                                 continue;
                                                                 continuing {
-                                                                    let _e3169 = local_145;
-                                                                    phi_1490_ = _e3166;
-                                                                    phi_1493_ = _e3168;
-                                                                    phi_5704_ = _e2020;
-                                                                    break if !(_e3169);
+                                                                    let _e3177 = local_145;
+                                                                    phi_1490_ = _e3174;
+                                                                    phi_1493_ = _e3176;
+                                                                    phi_5704_ = _e2026;
+                                                                    break if !(_e3177);
                                                                 }
                                                             }
-                                                            let _e3172 = phi_5704_;
-                                                            phi_5818_ = _e3172;
-                                                            if _e3172 {
+                                                            let _e3180 = phi_5704_;
+                                                            phi_5818_ = _e3180;
+                                                            if _e3180 {
                                                                 break;
                                                             }
-                                                            let _e3173 = local_139;
-                                                            phi_5819_ = _e3172;
-                                                            phi_1462_ = (_e3173 + 1u);
-                                                            let _e5569 = local_626;
-                                                            phi_1465_ = _e5569;
+                                                            let _e3181 = local_139;
+                                                            phi_5819_ = _e3180;
+                                                            phi_1462_ = (_e3181 + 1u);
+                                                            let _e5585 = local_626;
+                                                            phi_1465_ = _e5585;
                                                         } else {
-                                                            phi_5819_ = _e2020;
+                                                            phi_5819_ = _e2026;
                                                             phi_1462_ = u32();
                                                             phi_1465_ = type_5();
                                                         }
-                                                        let _e3176 = phi_5819_;
-                                                        let _e3178 = phi_1462_;
-                                                        let _e3180 = phi_1465_;
+                                                        let _e3184 = phi_5819_;
+                                                        let _e3186 = phi_1462_;
+                                                        let _e3188 = phi_1465_;
                                                         continue;
                                                         continuing {
-                                                            let _e3181 = local_140;
-                                                            phi_5750_ = _e3176;
-                                                            phi_1461_ = _e3178;
-                                                            phi_1464_ = _e3180;
-                                                            phi_5818_ = _e3176;
-                                                            break if !(_e3181);
+                                                            let _e3189 = local_140;
+                                                            phi_5750_ = _e3184;
+                                                            phi_1461_ = _e3186;
+                                                            phi_1464_ = _e3188;
+                                                            phi_5818_ = _e3184;
+                                                            break if !(_e3189);
                                                         }
                                                     }
-                                                    let _e3184 = phi_5818_;
-                                                    phi_5820_ = _e3184;
-                                                    if _e3184 {
+                                                    let _e3192 = phi_5818_;
+                                                    phi_5820_ = _e3192;
+                                                    if _e3192 {
                                                         break;
                                                     }
-                                                    let _e3185 = local_135;
-                                                    phi_5821_ = _e3184;
-                                                    phi_1445_ = (_e3185 + 1u);
-                                                    let _e5575 = local_627;
-                                                    phi_1448_ = _e5575;
+                                                    let _e3193 = local_135;
+                                                    phi_5821_ = _e3192;
+                                                    phi_1445_ = (_e3193 + 1u);
+                                                    let _e5591 = local_627;
+                                                    phi_1448_ = _e5591;
                                                 } else {
-                                                    phi_5821_ = _e2004;
+                                                    phi_5821_ = _e2010;
                                                     phi_1445_ = u32();
                                                     phi_1448_ = type_5();
                                                 }
-                                                let _e3188 = phi_5821_;
-                                                let _e3190 = phi_1445_;
-                                                let _e3192 = phi_1448_;
+                                                let _e3196 = phi_5821_;
+                                                let _e3198 = phi_1445_;
+                                                let _e3200 = phi_1448_;
                                                 continue;
                                                 continuing {
-                                                    let _e3193 = local_137;
-                                                    phi_5751_ = _e3188;
-                                                    phi_1444_ = _e3190;
-                                                    phi_1447_ = _e3192;
-                                                    phi_5820_ = _e3188;
-                                                    break if !(_e3193);
+                                                    let _e3201 = local_137;
+                                                    phi_5751_ = _e3196;
+                                                    phi_1444_ = _e3198;
+                                                    phi_1447_ = _e3200;
+                                                    phi_5820_ = _e3196;
+                                                    break if !(_e3201);
                                                 }
                                             }
-                                            let _e3196 = phi_5820_;
-                                            phi_5975_ = _e3196;
-                                            if _e3196 {
+                                            let _e3204 = phi_5820_;
+                                            phi_5975_ = _e3204;
+                                            if _e3204 {
                                                 break;
                                             }
-                                            let _e3197 = local_126;
-                                            let _e3198 = local_125;
-                                            let _e3201 = (1f / f32((_e3197 * _e3198)));
-                                            let _e3202 = local_136;
-                                            let _e3205 = local_136;
-                                            let _e3208 = local_136;
-                                            let _e3211 = local_136;
-                                            phi_5895_ = _e3196;
-                                            phi_2589_ = type_5((_e3202.member * _e3201), (_e3205.member_1 * _e3201), (_e3208.member_2 * _e3201), (_e3211.member_3 * _e3201));
+                                            let _e3205 = local_126;
+                                            let _e3206 = local_125;
+                                            let _e3209 = (1f / f32((_e3205 * _e3206)));
+                                            let _e3210 = local_136;
+                                            let _e3213 = local_136;
+                                            let _e3216 = local_136;
+                                            let _e3219 = local_136;
+                                            phi_5895_ = _e3204;
+                                            phi_2589_ = type_5((_e3210.member * _e3209), (_e3213.member_1 * _e3209), (_e3216.member_2 * _e3209), (_e3219.member_3 * _e3209));
                                         }
-                                        let _e3216 = phi_5895_;
-                                        let _e3218 = phi_2589_;
-                                        phi_5894_ = _e3216;
-                                        phi_2590_ = _e3218;
-                                        phi_2591_ = _e1667;
+                                        let _e3224 = phi_5895_;
+                                        let _e3226 = phi_2589_;
+                                        phi_5894_ = _e3224;
+                                        phi_2590_ = _e3226;
+                                        phi_2591_ = _e1668;
                                     }
-                                    let _e3220 = phi_5894_;
-                                    let _e3222 = phi_2590_;
-                                    let _e3224 = phi_2591_;
-                                    if _e3224 {
+                                    let _e3228 = phi_5894_;
+                                    let _e3230 = phi_2590_;
+                                    let _e3232 = phi_2591_;
+                                    if _e3232 {
                                         phi_2595_ = type_5(1f, 1f, 1f, 1f);
                                     } else {
-                                        phi_2595_ = _e3222;
+                                        phi_2595_ = _e3230;
                                     }
-                                    let _e3226 = phi_2595_;
-                                    phi_5892_ = _e3220;
-                                    phi_2596_ = _e3226;
+                                    let _e3234 = phi_2595_;
+                                    phi_5892_ = _e3228;
+                                    phi_2596_ = _e3234;
                                 }
-                                let _e3228 = phi_5892_;
-                                let _e3230 = phi_2596_;
-                                phi_5891_ = _e3228;
-                                phi_2597_ = _e3230;
-                                phi_2598_ = _e1631;
+                                let _e3236 = phi_5892_;
+                                let _e3238 = phi_2596_;
+                                phi_5891_ = _e3236;
+                                phi_2597_ = _e3238;
+                                phi_2598_ = _e1632;
                             }
-                            let _e3232 = phi_5891_;
-                            let _e3234 = phi_2597_;
-                            let _e3236 = phi_2598_;
-                            if _e3236 {
+                            let _e3240 = phi_5891_;
+                            let _e3242 = phi_2597_;
+                            let _e3244 = phi_2598_;
+                            if _e3244 {
                                 phi_2602_ = type_5(1f, 1f, 1f, 1f);
                             } else {
-                                phi_2602_ = _e3234;
+                                phi_2602_ = _e3242;
                             }
-                            let _e3238 = phi_2602_;
-                            local_619 = array<f32, 4>(_e3238.member, _e3238.member_1, _e3238.member_2, _e3238.member_3);
-                            let _e3244 = local_86;
-                            if (_e3244 == 4294967295u) {
-                                phi_5950_ = _e3232;
+                            let _e3246 = phi_2602_;
+                            local_619 = array<f32, 4>(_e3246.member, _e3246.member_1, _e3246.member_2, _e3246.member_3);
+                            let _e3252 = local_86;
+                            if (_e3252 == 4294967295u) {
+                                phi_5950_ = _e3240;
                                 phi_4080_ = type_5();
                                 phi_4081_ = true;
                             } else {
-                                let _e3246 = local_86;
-                                let _e3247 = local_25;
-                                let _e3248 = (_e3246 >= _e3247);
-                                if _e3248 {
-                                    phi_5951_ = _e3232;
+                                let _e3254 = local_86;
+                                let _e3255 = local_25;
+                                let _e3256 = (_e3254 >= _e3255);
+                                if _e3256 {
+                                    phi_5951_ = _e3240;
                                     phi_4079_ = type_5();
                                 } else {
-                                    let _e3249 = local_86;
-                                    let _e3250 = (_e3249 * 4u);
-                                    local_271 = _e3250;
-                                    let _e3251 = local_5;
-                                    if (_e3250 < _e3251) {
-                                    } else {
-                                        phi_5975_ = true;
-                                        break;
-                                    }
-                                    let _e3253 = local_271;
-                                    let _e3256 = global_8.member[_e3253];
-                                    local_272 = _e3256;
-                                    let _e3257 = local_271;
-                                    let _e3258 = (_e3257 + 1u);
-                                    local_273 = _e3258;
+                                    let _e3257 = local_86;
+                                    let _e3258 = (_e3257 * 4u);
+                                    local_271 = _e3258;
                                     let _e3259 = local_5;
                                     if (_e3258 < _e3259) {
                                     } else {
                                         phi_5975_ = true;
                                         break;
                                     }
-                                    let _e3261 = local_273;
+                                    let _e3261 = local_271;
                                     let _e3264 = global_8.member[_e3261];
-                                    local_274 = _e3264;
+                                    local_272 = _e3264;
                                     let _e3265 = local_271;
-                                    let _e3266 = (_e3265 + 2u);
-                                    local_275 = _e3266;
+                                    let _e3266 = (_e3265 + 1u);
+                                    local_273 = _e3266;
                                     let _e3267 = local_5;
                                     if (_e3266 < _e3267) {
                                     } else {
                                         phi_5975_ = true;
                                         break;
                                     }
-                                    let _e3269 = local_275;
+                                    let _e3269 = local_273;
                                     let _e3272 = global_8.member[_e3269];
-                                    local_276 = _e3272;
+                                    local_274 = _e3272;
                                     let _e3273 = local_271;
-                                    let _e3274 = (_e3273 + 3u);
-                                    local_277 = _e3274;
+                                    let _e3274 = (_e3273 + 2u);
+                                    local_275 = _e3274;
                                     let _e3275 = local_5;
                                     if (_e3274 < _e3275) {
                                     } else {
                                         phi_5975_ = true;
                                         break;
                                     }
-                                    let _e3277 = local_277;
+                                    let _e3277 = local_275;
                                     let _e3280 = global_8.member[_e3277];
-                                    local_278 = _e3280;
-                                    let _e3281 = local_274;
-                                    if (_e3281 == 0u) {
-                                        phi_5953_ = _e3232;
+                                    local_276 = _e3280;
+                                    let _e3281 = local_271;
+                                    let _e3282 = (_e3281 + 3u);
+                                    local_277 = _e3282;
+                                    let _e3283 = local_5;
+                                    if (_e3282 < _e3283) {
+                                    } else {
+                                        phi_5975_ = true;
+                                        break;
+                                    }
+                                    let _e3285 = local_277;
+                                    let _e3288 = global_8.member[_e3285];
+                                    local_278 = _e3288;
+                                    let _e3289 = local_274;
+                                    if (_e3289 == 0u) {
+                                        phi_5953_ = _e3240;
                                         phi_4073_ = type_5();
                                         phi_4074_ = true;
                                     } else {
-                                        let _e3283 = local_276;
-                                        let _e3284 = (_e3283 == 0u);
-                                        if _e3284 {
-                                            phi_5954_ = _e3232;
+                                        let _e3291 = local_276;
+                                        let _e3292 = (_e3291 == 0u);
+                                        if _e3292 {
+                                            phi_5954_ = _e3240;
                                             phi_4072_ = type_5();
                                         } else {
-                                            let _e3285 = local_278;
-                                            let _e3288 = ((_e3285 >> bitcast<u32>(8u)) & 31u);
-                                            local_581 = select(_e3288, 1u, (_e3288 == 0u));
-                                            let _e3291 = local_278;
-                                            let _e3295 = local_278;
-                                            let _e3299 = local_272;
-                                            let _e3300 = local_274;
-                                            let _e3301 = local_276;
-                                            let _e3302 = type_22(_e3299, _e3300, _e3301, ((_e3291 >> bitcast<u32>(1u)) & 3u), ((_e3295 >> bitcast<u32>(3u)) & 3u));
-                                            let _e3303 = local_274;
-                                            let _e3304 = f32(_e3303);
-                                            local_279 = _e3304;
-                                            let _e3305 = local_75;
-                                            if ((bitcast<u32>((_e3305 * _e3304)) & 2139095040u) != 2139095040u) {
-                                                let _e3310 = local_276;
-                                                let _e3312 = local_74;
-                                                phi_2722_ = select(true, false, ((bitcast<u32>((_e3312 * f32(_e3310))) & 2139095040u) != 2139095040u));
+                                            let _e3293 = local_278;
+                                            let _e3296 = ((_e3293 >> bitcast<u32>(8u)) & 31u);
+                                            local_581 = select(_e3296, 1u, (_e3296 == 0u));
+                                            let _e3299 = local_278;
+                                            let _e3303 = local_278;
+                                            let _e3307 = local_272;
+                                            let _e3308 = local_274;
+                                            let _e3309 = local_276;
+                                            let _e3310 = type_22(_e3307, _e3308, _e3309, ((_e3299 >> bitcast<u32>(1u)) & 3u), ((_e3303 >> bitcast<u32>(3u)) & 3u));
+                                            let _e3311 = local_274;
+                                            let _e3312 = f32(_e3311);
+                                            local_279 = _e3312;
+                                            let _e3313 = local_75;
+                                            if ((bitcast<u32>((_e3313 * _e3312)) & 2139095040u) != 2139095040u) {
+                                                let _e3318 = local_276;
+                                                let _e3320 = local_74;
+                                                phi_2722_ = select(true, false, ((bitcast<u32>((_e3320 * f32(_e3318))) & 2139095040u) != 2139095040u));
                                             } else {
                                                 phi_2722_ = true;
                                             }
-                                            let _e3319 = phi_2722_;
-                                            let _e3320 = local_74;
-                                            local_582 = select(_e3320, 0f, _e3319);
-                                            let _e3322 = local_75;
-                                            local_583 = select(_e3322, 0f, _e3319);
-                                            let _e3324 = local_102;
-                                            local_280 = _e3324.member;
-                                            let _e3326 = local_279;
-                                            let _e3327 = (_e3324.member * _e3326);
-                                            let _e3328 = local_102;
-                                            local_281 = _e3328.member_1;
-                                            let _e3330 = local_276;
-                                            let _e3331 = f32(_e3330);
-                                            let _e3332 = (_e3328.member_1 * _e3331);
-                                            let _e3333 = local_102;
-                                            local_282 = _e3333.member_2;
-                                            let _e3335 = local_279;
-                                            let _e3336 = (_e3333.member_2 * _e3335);
-                                            let _e3337 = local_102;
-                                            local_283 = _e3337.member_3;
-                                            let _e3339 = (_e3337.member_3 * _e3331);
-                                            let _e3343 = sqrt(((_e3327 * _e3327) + (_e3332 * _e3332)));
-                                            local_284 = _e3343;
-                                            let _e3347 = sqrt(((_e3336 * _e3336) + (_e3339 * _e3339)));
-                                            local_285 = _e3347;
-                                            let _e3349 = select(_e3347, _e3343, (_e3343 > _e3347));
-                                            local_584 = _e3349;
-                                            if (_e3349 > 1f) {
-                                                let _e3351 = local_584;
-                                                phi_2761_ = !(((bitcast<u32>(_e3351) & 2139095040u) != 2139095040u));
+                                            let _e3327 = phi_2722_;
+                                            let _e3328 = local_74;
+                                            local_582 = select(_e3328, 0f, _e3327);
+                                            let _e3330 = local_75;
+                                            local_583 = select(_e3330, 0f, _e3327);
+                                            let _e3332 = local_102;
+                                            local_280 = _e3332.member;
+                                            let _e3334 = local_279;
+                                            let _e3335 = (_e3332.member * _e3334);
+                                            let _e3336 = local_102;
+                                            local_281 = _e3336.member_1;
+                                            let _e3338 = local_276;
+                                            let _e3339 = f32(_e3338);
+                                            let _e3340 = (_e3336.member_1 * _e3339);
+                                            let _e3341 = local_102;
+                                            local_282 = _e3341.member_2;
+                                            let _e3343 = local_279;
+                                            let _e3344 = (_e3341.member_2 * _e3343);
+                                            let _e3345 = local_102;
+                                            local_283 = _e3345.member_3;
+                                            let _e3347 = (_e3345.member_3 * _e3339);
+                                            let _e3351 = sqrt(((_e3335 * _e3335) + (_e3340 * _e3340)));
+                                            local_284 = _e3351;
+                                            let _e3355 = sqrt(((_e3344 * _e3344) + (_e3347 * _e3347)));
+                                            local_285 = _e3355;
+                                            let _e3357 = select(_e3355, _e3351, (_e3351 > _e3355));
+                                            local_584 = _e3357;
+                                            if (_e3357 > 1f) {
+                                                let _e3359 = local_584;
+                                                phi_2761_ = !(((bitcast<u32>(_e3359) & 2139095040u) != 2139095040u));
                                             } else {
                                                 phi_2761_ = true;
                                             }
-                                            let _e3357 = phi_2761_;
-                                            local_286 = _e3357;
-                                            if _e3357 {
+                                            let _e3365 = phi_2761_;
+                                            local_286 = _e3365;
+                                            if _e3365 {
                                                 phi_2857_ = 1u;
                                                 phi_2858_ = 1u;
                                             } else {
-                                                let _e3358 = local_284;
-                                                let _e3359 = local_285;
-                                                if (_e3358 >= _e3359) {
-                                                    let _e3397 = local_285;
-                                                    let _e3399 = local_285;
-                                                    let _e3401 = ceil(select(8f, _e3399, (_e3397 < 8f)));
-                                                    local_287 = _e3401;
-                                                    if (_e3401 < 1f) {
+                                                let _e3366 = local_284;
+                                                let _e3367 = local_285;
+                                                if (_e3366 >= _e3367) {
+                                                    let _e3407 = local_285;
+                                                    let _e3409 = local_285;
+                                                    let _e3411 = ceil(select(8f, _e3409, (_e3407 < 8f)));
+                                                    local_287 = _e3411;
+                                                    if (_e3411 < 1f) {
                                                         phi_2787_ = 1u;
                                                     } else {
-                                                        let _e3403 = local_287;
-                                                        let _e3405 = local_287;
-                                                        let _e3407 = local_287;
-                                                        phi_2787_ = select(select(u32(_e3403), 0u, (_e3405 < 0f)), 4294967295u, (_e3407 > 4294967000f));
+                                                        let _e3413 = local_287;
+                                                        let _e3415 = local_287;
+                                                        let _e3418 = local_287;
+                                                        phi_2787_ = select(select(u32(_e3413), 0u, !((_e3415 >= 0f))), 4294967295u, (_e3418 > 4294967000f));
                                                     }
-                                                    let _e3412 = phi_2787_;
-                                                    local_288 = _e3412;
-                                                    if (_e3412 == 0u) {
+                                                    let _e3423 = phi_2787_;
+                                                    local_288 = _e3423;
+                                                    if (_e3423 == 0u) {
                                                         phi_5975_ = true;
                                                         break;
                                                     }
-                                                    let _e3414 = local_288;
-                                                    let _e3416 = f32((64u / _e3414));
-                                                    let _e3417 = local_284;
-                                                    let _e3419 = local_284;
-                                                    let _e3421 = ceil(select(_e3416, _e3419, (_e3417 < _e3416)));
-                                                    local_289 = _e3421;
-                                                    if (_e3421 < 1f) {
+                                                    let _e3425 = local_288;
+                                                    let _e3427 = f32((64u / _e3425));
+                                                    let _e3428 = local_284;
+                                                    let _e3430 = local_284;
+                                                    let _e3432 = ceil(select(_e3427, _e3430, (_e3428 < _e3427)));
+                                                    local_289 = _e3432;
+                                                    if (_e3432 < 1f) {
                                                         phi_2811_ = 1u;
                                                     } else {
-                                                        let _e3423 = local_289;
-                                                        let _e3425 = local_289;
-                                                        let _e3427 = local_289;
-                                                        phi_2811_ = select(select(u32(_e3423), 0u, (_e3425 < 0f)), 4294967295u, (_e3427 > 4294967000f));
+                                                        let _e3434 = local_289;
+                                                        let _e3436 = local_289;
+                                                        let _e3439 = local_289;
+                                                        phi_2811_ = select(select(u32(_e3434), 0u, !((_e3436 >= 0f))), 4294967295u, (_e3439 > 4294967000f));
                                                     }
-                                                    let _e3432 = phi_2811_;
-                                                    phi_2855_ = _e3412;
-                                                    phi_2856_ = _e3432;
+                                                    let _e3444 = phi_2811_;
+                                                    phi_2855_ = _e3423;
+                                                    phi_2856_ = _e3444;
                                                 } else {
-                                                    let _e3361 = local_284;
-                                                    let _e3363 = local_284;
-                                                    let _e3365 = ceil(select(8f, _e3363, (_e3361 < 8f)));
-                                                    local_290 = _e3365;
-                                                    if (_e3365 < 1f) {
+                                                    let _e3369 = local_284;
+                                                    let _e3371 = local_284;
+                                                    let _e3373 = ceil(select(8f, _e3371, (_e3369 < 8f)));
+                                                    local_290 = _e3373;
+                                                    if (_e3373 < 1f) {
                                                         phi_2830_ = 1u;
                                                     } else {
-                                                        let _e3367 = local_290;
-                                                        let _e3369 = local_290;
-                                                        let _e3371 = local_290;
-                                                        phi_2830_ = select(select(u32(_e3367), 0u, (_e3369 < 0f)), 4294967295u, (_e3371 > 4294967000f));
+                                                        let _e3375 = local_290;
+                                                        let _e3377 = local_290;
+                                                        let _e3380 = local_290;
+                                                        phi_2830_ = select(select(u32(_e3375), 0u, !((_e3377 >= 0f))), 4294967295u, (_e3380 > 4294967000f));
                                                     }
-                                                    let _e3376 = phi_2830_;
-                                                    local_291 = _e3376;
-                                                    if (_e3376 == 0u) {
+                                                    let _e3385 = phi_2830_;
+                                                    local_291 = _e3385;
+                                                    if (_e3385 == 0u) {
                                                         phi_5975_ = true;
                                                         break;
                                                     }
-                                                    let _e3378 = local_291;
-                                                    let _e3380 = f32((64u / _e3378));
-                                                    let _e3381 = local_285;
-                                                    let _e3383 = local_285;
-                                                    let _e3385 = ceil(select(_e3380, _e3383, (_e3381 < _e3380)));
-                                                    local_292 = _e3385;
-                                                    if (_e3385 < 1f) {
+                                                    let _e3387 = local_291;
+                                                    let _e3389 = f32((64u / _e3387));
+                                                    let _e3390 = local_285;
+                                                    let _e3392 = local_285;
+                                                    let _e3394 = ceil(select(_e3389, _e3392, (_e3390 < _e3389)));
+                                                    local_292 = _e3394;
+                                                    if (_e3394 < 1f) {
                                                         phi_2854_ = 1u;
                                                     } else {
-                                                        let _e3387 = local_292;
-                                                        let _e3389 = local_292;
-                                                        let _e3391 = local_292;
-                                                        phi_2854_ = select(select(u32(_e3387), 0u, (_e3389 < 0f)), 4294967295u, (_e3391 > 4294967000f));
+                                                        let _e3396 = local_292;
+                                                        let _e3398 = local_292;
+                                                        let _e3401 = local_292;
+                                                        phi_2854_ = select(select(u32(_e3396), 0u, !((_e3398 >= 0f))), 4294967295u, (_e3401 > 4294967000f));
                                                     }
-                                                    let _e3396 = phi_2854_;
-                                                    phi_2855_ = _e3396;
-                                                    phi_2856_ = _e3376;
+                                                    let _e3406 = phi_2854_;
+                                                    phi_2855_ = _e3406;
+                                                    phi_2856_ = _e3385;
                                                 }
-                                                let _e3434 = phi_2855_;
-                                                let _e3436 = phi_2856_;
-                                                phi_2857_ = _e3434;
-                                                phi_2858_ = _e3436;
+                                                let _e3446 = phi_2855_;
+                                                let _e3448 = phi_2856_;
+                                                phi_2857_ = _e3446;
+                                                phi_2858_ = _e3448;
                                             }
-                                            let _e3438 = phi_2857_;
-                                            let _e3440 = phi_2858_;
-                                            local_293 = _e3438;
-                                            local_294 = _e3440;
-                                            let _e3441 = local_286;
-                                            if _e3441 {
+                                            let _e3450 = phi_2857_;
+                                            let _e3452 = phi_2858_;
+                                            local_293 = _e3450;
+                                            local_294 = _e3452;
+                                            let _e3453 = local_286;
+                                            if _e3453 {
                                                 phi_2871_ = 1f;
                                             } else {
-                                                let _e3442 = local_294;
-                                                let _e3444 = local_284;
-                                                let _e3445 = (_e3444 / f32(_e3442));
-                                                let _e3446 = local_293;
-                                                let _e3448 = local_285;
-                                                let _e3449 = (_e3448 / f32(_e3446));
-                                                phi_2871_ = select(_e3449, _e3445, (_e3445 > _e3449));
+                                                let _e3454 = local_294;
+                                                let _e3456 = local_284;
+                                                let _e3457 = (_e3456 / f32(_e3454));
+                                                let _e3458 = local_293;
+                                                let _e3460 = local_285;
+                                                let _e3461 = (_e3460 / f32(_e3458));
+                                                phi_2871_ = select(_e3461, _e3457, (_e3457 > _e3461));
                                             }
-                                            let _e3453 = phi_2871_;
-                                            local_295 = _e3453;
-                                            if (_e3453 > 1f) {
-                                                let _e3455 = local_295;
-                                                let _e3456 = bitcast<u32>(_e3455);
-                                                let _e3465 = (bitcast<f32>(((_e3456 & 8388607u) | 1065353216u)) - 1f);
-                                                phi_2892_ = (f32((bitcast<i32>(((_e3456 >> bitcast<u32>(23i)) & 255u)) - 127i)) + (_e3465 * (1.4208645f + (_e3465 * (-0.5772506f + (_e3465 * 0.1563861f))))));
+                                            let _e3465 = phi_2871_;
+                                            local_295 = _e3465;
+                                            if (_e3465 > 1f) {
+                                                let _e3467 = local_295;
+                                                let _e3468 = bitcast<u32>(_e3467);
+                                                let _e3477 = (bitcast<f32>(((_e3468 & 8388607u) | 1065353216u)) - 1f);
+                                                phi_2892_ = (f32((bitcast<i32>(((_e3468 >> bitcast<u32>(23i)) & 255u)) - 127i)) + (_e3477 * (1.4208645f + (_e3477 * (-0.5772506f + (_e3477 * 0.1563861f))))));
                                             } else {
                                                 phi_2892_ = 0f;
                                             }
-                                            let _e3474 = phi_2892_;
-                                            local_296 = _e3474;
-                                            let _e3475 = local_581;
-                                            let _e3476 = (_e3475 - 1u);
-                                            local_297 = _e3476;
-                                            let _e3477 = floor(_e3474);
-                                            let _e3482 = select(select(u32(_e3477), 0u, (_e3477 < 0f)), 4294967295u, (_e3477 > 4294967000f));
-                                            local_298 = _e3482;
-                                            let _e3483 = (_e3482 >= _e3476);
-                                            local_299 = _e3483;
-                                            if _e3483 {
+                                            let _e3486 = phi_2892_;
+                                            local_296 = _e3486;
+                                            let _e3487 = local_581;
+                                            let _e3488 = (_e3487 - 1u);
+                                            local_297 = _e3488;
+                                            let _e3489 = floor(_e3486);
+                                            let _e3495 = select(select(u32(_e3489), 0u, !((_e3489 >= 0f))), 4294967295u, (_e3489 > 4294967000f));
+                                            local_298 = _e3495;
+                                            let _e3496 = (_e3495 >= _e3488);
+                                            local_299 = _e3496;
+                                            if _e3496 {
                                                 phi_2908_ = 0f;
                                             } else {
-                                                let _e3484 = local_298;
-                                                let _e3486 = local_296;
-                                                phi_2908_ = (_e3486 - f32(_e3484));
+                                                let _e3497 = local_298;
+                                                let _e3499 = local_296;
+                                                phi_2908_ = (_e3499 - f32(_e3497));
                                             }
-                                            let _e3489 = phi_2908_;
-                                            local_300 = _e3489;
-                                            let _e3490 = local_299;
-                                            let _e3491 = local_297;
-                                            let _e3492 = local_298;
-                                            local_585 = select(_e3492, _e3491, _e3490);
-                                            local_586 = select(1u, 2u, (_e3489 > 0f));
+                                            let _e3502 = phi_2908_;
+                                            local_300 = _e3502;
+                                            let _e3503 = local_299;
+                                            let _e3504 = local_297;
+                                            let _e3505 = local_298;
+                                            local_585 = select(_e3505, _e3504, _e3503);
+                                            local_586 = select(1u, 2u, (_e3502 > 0f));
                                             phi_5584_ = 0u;
-                                            phi_5585_ = _e3302;
+                                            phi_5585_ = _e3310;
                                             loop {
-                                                let _e3497 = phi_5584_;
-                                                let _e3499 = phi_5585_;
-                                                local_545 = _e3497;
-                                                local_546 = _e3499;
-                                                local_628 = _e3499;
-                                                let _e3500 = local_545;
-                                                let _e3501 = local_585;
-                                                let _e3502 = (_e3500 < _e3501);
-                                                local_547 = _e3502;
-                                                if _e3502 {
-                                                    let _e3503 = local_546;
-                                                    local_548 = _e3503.member_1;
-                                                    let _e3505 = local_546;
-                                                    local_549 = _e3505.member_2;
-                                                    let _e3508 = local_546;
-                                                    let _e3511 = local_546;
-                                                    local_550 = type_22((_e3508.member + (_e3503.member_1 * _e3505.member_2)), _e3511.member_1, _e3511.member_2, _e3511.member_3, _e3511.member_4);
-                                                    if (_e3503.member_1 > 1u) {
-                                                        let _e3519 = local_548;
-                                                        phi_5602_ = (_e3519 >> bitcast<u32>(1i));
+                                                let _e3510 = phi_5584_;
+                                                let _e3512 = phi_5585_;
+                                                local_545 = _e3510;
+                                                local_546 = _e3512;
+                                                local_628 = _e3512;
+                                                let _e3513 = local_545;
+                                                let _e3514 = local_585;
+                                                let _e3515 = (_e3513 < _e3514);
+                                                local_547 = _e3515;
+                                                if _e3515 {
+                                                    let _e3516 = local_546;
+                                                    local_548 = _e3516.member_1;
+                                                    let _e3518 = local_546;
+                                                    local_549 = _e3518.member_2;
+                                                    let _e3521 = local_546;
+                                                    let _e3524 = local_546;
+                                                    local_550 = type_22((_e3521.member + (_e3516.member_1 * _e3518.member_2)), _e3524.member_1, _e3524.member_2, _e3524.member_3, _e3524.member_4);
+                                                    if (_e3516.member_1 > 1u) {
+                                                        let _e3532 = local_548;
+                                                        phi_5602_ = (_e3532 >> bitcast<u32>(1i));
                                                     } else {
                                                         phi_5602_ = 1u;
                                                     }
-                                                    let _e3523 = phi_5602_;
-                                                    let _e3524 = local_550;
-                                                    local_551 = type_22(_e3524.member, _e3523, _e3524.member_2, _e3524.member_3, _e3524.member_4);
-                                                    let _e3531 = local_549;
-                                                    if (_e3531 > 1u) {
-                                                        let _e3533 = local_549;
-                                                        phi_5611_ = (_e3533 >> bitcast<u32>(1i));
+                                                    let _e3536 = phi_5602_;
+                                                    let _e3537 = local_550;
+                                                    local_551 = type_22(_e3537.member, _e3536, _e3537.member_2, _e3537.member_3, _e3537.member_4);
+                                                    let _e3544 = local_549;
+                                                    if (_e3544 > 1u) {
+                                                        let _e3546 = local_549;
+                                                        phi_5611_ = (_e3546 >> bitcast<u32>(1i));
                                                     } else {
                                                         phi_5611_ = 1u;
                                                     }
-                                                    let _e3537 = phi_5611_;
-                                                    let _e3538 = local_551;
-                                                    let _e3545 = local_545;
-                                                    phi_5616_ = (_e3545 + 1u);
-                                                    phi_5617_ = type_22(_e3538.member, _e3538.member_1, _e3537, _e3538.member_3, _e3538.member_4);
+                                                    let _e3550 = phi_5611_;
+                                                    let _e3551 = local_551;
+                                                    let _e3558 = local_545;
+                                                    phi_5616_ = (_e3558 + 1u);
+                                                    phi_5617_ = type_22(_e3551.member, _e3551.member_1, _e3550, _e3551.member_3, _e3551.member_4);
                                                 } else {
                                                     phi_5616_ = u32();
                                                     phi_5617_ = type_22();
                                                 }
-                                                let _e3548 = phi_5616_;
-                                                let _e3550 = phi_5617_;
+                                                let _e3561 = phi_5616_;
+                                                let _e3563 = phi_5617_;
                                                 continue;
                                                 continuing {
-                                                    let _e3551 = local_547;
-                                                    phi_5584_ = _e3548;
-                                                    phi_5585_ = _e3550;
-                                                    break if !(_e3551);
+                                                    let _e3564 = local_547;
+                                                    phi_5584_ = _e3561;
+                                                    phi_5585_ = _e3563;
+                                                    break if !(_e3564);
                                                 }
                                             }
-                                            let _e3553 = local_585;
-                                            let _e3554 = local_586;
-                                            local_301 = ((_e3553 + _e3554) - 1u);
+                                            let _e3566 = local_585;
+                                            let _e3567 = local_586;
+                                            local_301 = ((_e3566 + _e3567) - 1u);
                                             phi_5623_ = 0u;
-                                            phi_5624_ = _e3302;
+                                            phi_5624_ = _e3310;
                                             loop {
-                                                let _e3558 = phi_5623_;
-                                                let _e3560 = phi_5624_;
-                                                local_552 = _e3558;
-                                                local_553 = _e3560;
-                                                local_629 = _e3560;
-                                                let _e3561 = local_552;
-                                                let _e3562 = local_301;
-                                                let _e3563 = (_e3561 < _e3562);
-                                                local_554 = _e3563;
-                                                if _e3563 {
-                                                    let _e3564 = local_553;
-                                                    local_555 = _e3564.member_1;
-                                                    let _e3566 = local_553;
-                                                    local_556 = _e3566.member_2;
-                                                    let _e3569 = local_553;
-                                                    let _e3572 = local_553;
-                                                    local_557 = type_22((_e3569.member + (_e3564.member_1 * _e3566.member_2)), _e3572.member_1, _e3572.member_2, _e3572.member_3, _e3572.member_4);
-                                                    if (_e3564.member_1 > 1u) {
-                                                        let _e3580 = local_555;
-                                                        phi_5641_ = (_e3580 >> bitcast<u32>(1i));
+                                                let _e3571 = phi_5623_;
+                                                let _e3573 = phi_5624_;
+                                                local_552 = _e3571;
+                                                local_553 = _e3573;
+                                                local_629 = _e3573;
+                                                let _e3574 = local_552;
+                                                let _e3575 = local_301;
+                                                let _e3576 = (_e3574 < _e3575);
+                                                local_554 = _e3576;
+                                                if _e3576 {
+                                                    let _e3577 = local_553;
+                                                    local_555 = _e3577.member_1;
+                                                    let _e3579 = local_553;
+                                                    local_556 = _e3579.member_2;
+                                                    let _e3582 = local_553;
+                                                    let _e3585 = local_553;
+                                                    local_557 = type_22((_e3582.member + (_e3577.member_1 * _e3579.member_2)), _e3585.member_1, _e3585.member_2, _e3585.member_3, _e3585.member_4);
+                                                    if (_e3577.member_1 > 1u) {
+                                                        let _e3593 = local_555;
+                                                        phi_5641_ = (_e3593 >> bitcast<u32>(1i));
                                                     } else {
                                                         phi_5641_ = 1u;
                                                     }
-                                                    let _e3584 = phi_5641_;
-                                                    let _e3585 = local_557;
-                                                    local_558 = type_22(_e3585.member, _e3584, _e3585.member_2, _e3585.member_3, _e3585.member_4);
-                                                    let _e3592 = local_556;
-                                                    if (_e3592 > 1u) {
-                                                        let _e3594 = local_556;
-                                                        phi_5650_ = (_e3594 >> bitcast<u32>(1i));
+                                                    let _e3597 = phi_5641_;
+                                                    let _e3598 = local_557;
+                                                    local_558 = type_22(_e3598.member, _e3597, _e3598.member_2, _e3598.member_3, _e3598.member_4);
+                                                    let _e3605 = local_556;
+                                                    if (_e3605 > 1u) {
+                                                        let _e3607 = local_556;
+                                                        phi_5650_ = (_e3607 >> bitcast<u32>(1i));
                                                     } else {
                                                         phi_5650_ = 1u;
                                                     }
-                                                    let _e3598 = phi_5650_;
-                                                    let _e3599 = local_558;
-                                                    let _e3606 = local_552;
-                                                    phi_5655_ = (_e3606 + 1u);
-                                                    phi_5656_ = type_22(_e3599.member, _e3599.member_1, _e3598, _e3599.member_3, _e3599.member_4);
+                                                    let _e3611 = phi_5650_;
+                                                    let _e3612 = local_558;
+                                                    let _e3619 = local_552;
+                                                    phi_5655_ = (_e3619 + 1u);
+                                                    phi_5656_ = type_22(_e3612.member, _e3612.member_1, _e3611, _e3612.member_3, _e3612.member_4);
                                                 } else {
                                                     phi_5655_ = u32();
                                                     phi_5656_ = type_22();
                                                 }
-                                                let _e3609 = phi_5655_;
-                                                let _e3611 = phi_5656_;
+                                                let _e3622 = phi_5655_;
+                                                let _e3624 = phi_5656_;
                                                 continue;
                                                 continuing {
-                                                    let _e3612 = local_554;
-                                                    phi_5623_ = _e3609;
-                                                    phi_5624_ = _e3611;
-                                                    break if !(_e3612);
+                                                    let _e3625 = local_554;
+                                                    phi_5623_ = _e3622;
+                                                    phi_5624_ = _e3624;
+                                                    break if !(_e3625);
                                                 }
                                             }
-                                            let _e3614 = local_286;
-                                            if _e3614 {
-                                                let _e3615 = local_278;
-                                                phi_2924_ = ((_e3615 & 1u) != 0u);
+                                            let _e3627 = local_286;
+                                            if _e3627 {
+                                                let _e3628 = local_278;
+                                                phi_2924_ = ((_e3628 & 1u) != 0u);
                                             } else {
                                                 phi_2924_ = false;
                                             }
-                                            let _e3619 = phi_2924_;
-                                            local_302 = _e3619;
-                                            phi_5869_ = _e3232;
+                                            let _e3632 = phi_2924_;
+                                            local_302 = _e3632;
+                                            phi_5869_ = _e3240;
                                             phi_2927_ = 0u;
                                             phi_2930_ = type_5(0f, 0f, 0f, 0f);
                                             loop {
-                                                let _e3621 = phi_5869_;
-                                                let _e3623 = phi_2927_;
-                                                let _e3625 = phi_2930_;
-                                                local_303 = _e3623;
-                                                local_304 = _e3625;
-                                                let _e3626 = local_303;
-                                                let _e3627 = local_294;
-                                                let _e3628 = (_e3626 < _e3627);
-                                                local_305 = _e3628;
-                                                if _e3628 {
-                                                    let _e3629 = local_303;
-                                                    let _e3632 = local_294;
-                                                    local_306 = (((f32(_e3629) + 0.5f) / f32(_e3632)) - 0.5f);
-                                                    phi_5868_ = _e3621;
+                                                let _e3634 = phi_5869_;
+                                                let _e3636 = phi_2927_;
+                                                let _e3638 = phi_2930_;
+                                                local_303 = _e3636;
+                                                local_304 = _e3638;
+                                                let _e3639 = local_303;
+                                                let _e3640 = local_294;
+                                                let _e3641 = (_e3639 < _e3640);
+                                                local_305 = _e3641;
+                                                if _e3641 {
+                                                    let _e3642 = local_303;
+                                                    let _e3645 = local_294;
+                                                    local_306 = (((f32(_e3642) + 0.5f) / f32(_e3645)) - 0.5f);
+                                                    phi_5868_ = _e3634;
                                                     phi_2944_ = 0u;
-                                                    phi_2947_ = _e3625;
+                                                    phi_2947_ = _e3638;
                                                     loop {
-                                                        let _e3637 = phi_5868_;
-                                                        let _e3639 = phi_2944_;
-                                                        let _e3641 = phi_2947_;
-                                                        local_307 = _e3639;
-                                                        local_631 = _e3641;
-                                                        let _e3642 = local_307;
-                                                        let _e3643 = local_293;
-                                                        let _e3644 = (_e3642 < _e3643);
-                                                        local_308 = _e3644;
-                                                        if _e3644 {
-                                                            let _e3645 = local_307;
-                                                            let _e3648 = local_293;
-                                                            let _e3651 = (((f32(_e3645) + 0.5f) / f32(_e3648)) - 0.5f);
-                                                            let _e3652 = local_306;
-                                                            let _e3653 = local_280;
-                                                            let _e3655 = local_583;
-                                                            let _e3657 = local_282;
-                                                            local_309 = ((_e3655 + (_e3652 * _e3653)) + (_e3651 * _e3657));
-                                                            let _e3660 = local_306;
-                                                            let _e3661 = local_281;
-                                                            let _e3663 = local_582;
-                                                            let _e3665 = local_283;
-                                                            local_310 = ((_e3663 + (_e3660 * _e3661)) + (_e3651 * _e3665));
+                                                        let _e3650 = phi_5868_;
+                                                        let _e3652 = phi_2944_;
+                                                        let _e3654 = phi_2947_;
+                                                        local_307 = _e3652;
+                                                        local_631 = _e3654;
+                                                        let _e3655 = local_307;
+                                                        let _e3656 = local_293;
+                                                        let _e3657 = (_e3655 < _e3656);
+                                                        local_308 = _e3657;
+                                                        if _e3657 {
+                                                            let _e3658 = local_307;
+                                                            let _e3661 = local_293;
+                                                            let _e3664 = (((f32(_e3658) + 0.5f) / f32(_e3661)) - 0.5f);
+                                                            let _e3665 = local_306;
+                                                            let _e3666 = local_280;
+                                                            let _e3668 = local_583;
+                                                            let _e3670 = local_282;
+                                                            local_309 = ((_e3668 + (_e3665 * _e3666)) + (_e3664 * _e3670));
+                                                            let _e3673 = local_306;
+                                                            let _e3674 = local_281;
+                                                            let _e3676 = local_582;
+                                                            let _e3678 = local_283;
+                                                            local_310 = ((_e3676 + (_e3673 * _e3674)) + (_e3664 * _e3678));
                                                             phi_2973_ = 0u;
-                                                            phi_2976_ = _e3641;
+                                                            phi_2976_ = _e3654;
                                                             loop {
-                                                                let _e3669 = phi_2973_;
-                                                                let _e3671 = phi_2976_;
-                                                                local_311 = _e3669;
-                                                                local_312 = _e3671;
-                                                                local_630 = _e3671;
-                                                                let _e3672 = local_311;
-                                                                let _e3673 = local_586;
-                                                                let _e3674 = (_e3672 < _e3673);
-                                                                local_313 = _e3674;
-                                                                if _e3674 {
-                                                                    let _e3675 = local_311;
-                                                                    if (_e3675 == 0u) {
-                                                                        let _e3677 = local_300;
-                                                                        let _e5625 = local_628;
-                                                                        phi_2989_ = _e5625;
-                                                                        phi_2990_ = (1f - _e3677);
+                                                                let _e3682 = phi_2973_;
+                                                                let _e3684 = phi_2976_;
+                                                                local_311 = _e3682;
+                                                                local_312 = _e3684;
+                                                                local_630 = _e3684;
+                                                                let _e3685 = local_311;
+                                                                let _e3686 = local_586;
+                                                                let _e3687 = (_e3685 < _e3686);
+                                                                local_313 = _e3687;
+                                                                if _e3687 {
+                                                                    let _e3688 = local_311;
+                                                                    if (_e3688 == 0u) {
+                                                                        let _e3690 = local_300;
+                                                                        let _e5641 = local_628;
+                                                                        phi_2989_ = _e5641;
+                                                                        phi_2990_ = (1f - _e3690);
                                                                     } else {
-                                                                        let _e5627 = local_629;
-                                                                        phi_2989_ = _e5627;
-                                                                        phi_2990_ = _e3489;
+                                                                        let _e5643 = local_629;
+                                                                        phi_2989_ = _e5643;
+                                                                        phi_2990_ = _e3502;
                                                                     }
-                                                                    let _e3680 = phi_2989_;
-                                                                    let _e3682 = phi_2990_;
-                                                                    local_314 = _e3680;
-                                                                    local_315 = _e3682;
-                                                                    let _e3683 = local_302;
-                                                                    let _e3684 = select(0.5f, 0f, _e3683);
-                                                                    local_316 = _e3680.member_1;
-                                                                    let _e3687 = local_309;
-                                                                    let _e3689 = ((_e3687 * f32(_e3680.member_1)) - _e3684);
-                                                                    local_317 = _e3689;
-                                                                    local_318 = _e3680.member_2;
-                                                                    let _e3692 = local_310;
-                                                                    let _e3694 = ((_e3692 * f32(_e3680.member_2)) - _e3684);
-                                                                    local_319 = _e3694;
-                                                                    local_320 = floor(_e3689);
-                                                                    local_321 = floor(_e3694);
-                                                                    let _e3697 = local_302;
-                                                                    if _e3697 {
+                                                                    let _e3693 = phi_2989_;
+                                                                    let _e3695 = phi_2990_;
+                                                                    local_314 = _e3693;
+                                                                    local_315 = _e3695;
+                                                                    let _e3696 = local_302;
+                                                                    let _e3697 = select(0.5f, 0f, _e3696);
+                                                                    local_316 = _e3693.member_1;
+                                                                    let _e3700 = local_309;
+                                                                    let _e3702 = ((_e3700 * f32(_e3693.member_1)) - _e3697);
+                                                                    local_317 = _e3702;
+                                                                    local_318 = _e3693.member_2;
+                                                                    let _e3705 = local_310;
+                                                                    let _e3707 = ((_e3705 * f32(_e3693.member_2)) - _e3697);
+                                                                    local_319 = _e3707;
+                                                                    local_320 = floor(_e3702);
+                                                                    local_321 = floor(_e3707);
+                                                                    let _e3710 = local_302;
+                                                                    if _e3710 {
                                                                         phi_3010_ = 0f;
                                                                         phi_3011_ = 0f;
                                                                     } else {
-                                                                        let _e3698 = local_317;
-                                                                        let _e3699 = local_320;
-                                                                        let _e3701 = local_319;
-                                                                        let _e3702 = local_321;
-                                                                        phi_3010_ = (_e3701 - _e3702);
-                                                                        phi_3011_ = (_e3698 - _e3699);
+                                                                        let _e3711 = local_317;
+                                                                        let _e3712 = local_320;
+                                                                        let _e3714 = local_319;
+                                                                        let _e3715 = local_321;
+                                                                        phi_3010_ = (_e3714 - _e3715);
+                                                                        phi_3011_ = (_e3711 - _e3712);
                                                                     }
-                                                                    let _e3705 = phi_3010_;
-                                                                    let _e3707 = phi_3011_;
-                                                                    local_322 = _e3705;
-                                                                    local_323 = _e3707;
-                                                                    let _e3708 = local_320;
-                                                                    let _e3710 = local_320;
-                                                                    let _e3712 = local_320;
-                                                                    let _e3716 = local_320;
-                                                                    let _e3717 = local_320;
-                                                                    let _e3719 = select(0i, select(select(i32(_e3708), i32(-2147483648), (_e3710 < -2147483600f)), 2147483647i, (_e3712 > 2147483500f)), (_e3716 == _e3717));
-                                                                    local_324 = _e3719;
-                                                                    let _e3720 = local_321;
-                                                                    let _e3722 = local_321;
-                                                                    let _e3724 = local_321;
-                                                                    let _e3728 = local_321;
-                                                                    let _e3729 = local_321;
-                                                                    let _e3731 = select(0i, select(select(i32(_e3720), i32(-2147483648), (_e3722 < -2147483600f)), 2147483647i, (_e3724 > 2147483500f)), (_e3728 == _e3729));
-                                                                    local_325 = _e3731;
-                                                                    let _e3732 = local_314;
-                                                                    local_326 = _e3732.member_3;
-                                                                    let _e3734 = local_316;
-                                                                    local_327 = bitcast<i32>(_e3734);
-                                                                    let _e3736 = (_e3732.member_3 == 1u);
-                                                                    local_328 = _e3736;
-                                                                    if _e3736 {
-                                                                        let _e3790 = local_324;
-                                                                        if (_e3790 < 0i) {
+                                                                    let _e3718 = phi_3010_;
+                                                                    let _e3720 = phi_3011_;
+                                                                    local_322 = _e3718;
+                                                                    local_323 = _e3720;
+                                                                    let _e3721 = local_320;
+                                                                    let _e3723 = local_320;
+                                                                    let _e3726 = local_320;
+                                                                    let _e3730 = local_320;
+                                                                    let _e3731 = local_320;
+                                                                    let _e3733 = select(0i, select(select(i32(_e3721), i32(-2147483648), !((_e3723 >= -2147483600f))), 2147483647i, (_e3726 > 2147483500f)), (_e3730 == _e3731));
+                                                                    local_324 = _e3733;
+                                                                    let _e3734 = local_321;
+                                                                    let _e3736 = local_321;
+                                                                    let _e3739 = local_321;
+                                                                    let _e3743 = local_321;
+                                                                    let _e3744 = local_321;
+                                                                    let _e3746 = select(0i, select(select(i32(_e3734), i32(-2147483648), !((_e3736 >= -2147483600f))), 2147483647i, (_e3739 > 2147483500f)), (_e3743 == _e3744));
+                                                                    local_325 = _e3746;
+                                                                    let _e3747 = local_314;
+                                                                    local_326 = _e3747.member_3;
+                                                                    let _e3749 = local_316;
+                                                                    local_327 = bitcast<i32>(_e3749);
+                                                                    let _e3751 = (_e3747.member_3 == 1u);
+                                                                    local_328 = _e3751;
+                                                                    if _e3751 {
+                                                                        let _e3805 = local_324;
+                                                                        if (_e3805 < 0i) {
                                                                             phi_3047_ = 0i;
                                                                         } else {
-                                                                            let _e3792 = local_324;
-                                                                            let _e3793 = local_327;
-                                                                            if (_e3792 >= _e3793) {
-                                                                                let _e3795 = local_327;
-                                                                                phi_3046_ = (_e3795 - 1i);
+                                                                            let _e3807 = local_324;
+                                                                            let _e3808 = local_327;
+                                                                            if (_e3807 >= _e3808) {
+                                                                                let _e3810 = local_327;
+                                                                                phi_3046_ = (_e3810 - 1i);
                                                                             } else {
-                                                                                phi_3046_ = _e3719;
+                                                                                phi_3046_ = _e3733;
                                                                             }
-                                                                            let _e3798 = phi_3046_;
-                                                                            phi_3047_ = _e3798;
+                                                                            let _e3813 = phi_3046_;
+                                                                            phi_3047_ = _e3813;
                                                                         }
-                                                                        let _e3800 = phi_3047_;
-                                                                        phi_3107_ = _e3800;
+                                                                        let _e3815 = phi_3047_;
+                                                                        phi_3107_ = _e3815;
                                                                     } else {
-                                                                        let _e3737 = local_326;
-                                                                        if (_e3737 == 2u) {
-                                                                            let _e3759 = local_327;
-                                                                            let _e3760 = (2i * _e3759);
-                                                                            local_329 = _e3760;
-                                                                            let _e3761 = (_e3760 == 0i);
-                                                                            local_330 = _e3761;
-                                                                            if _e3761 {
+                                                                        let _e3752 = local_326;
+                                                                        if (_e3752 == 2u) {
+                                                                            let _e3774 = local_327;
+                                                                            let _e3775 = (2i * _e3774);
+                                                                            local_329 = _e3775;
+                                                                            let _e3776 = (_e3775 == 0i);
+                                                                            local_330 = _e3776;
+                                                                            if _e3776 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3762 = local_329;
-                                                                            let _e3763 = (_e3762 == -1i);
-                                                                            local_331 = _e3763;
-                                                                            let _e3764 = local_324;
-                                                                            if (_e3763 && (_e3764 == i32(-2147483648))) {
+                                                                            let _e3777 = local_329;
+                                                                            let _e3778 = (_e3777 == -1i);
+                                                                            local_331 = _e3778;
+                                                                            let _e3779 = local_324;
+                                                                            if (_e3778 && (_e3779 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3767 = local_324;
-                                                                            let _e3768 = local_329;
-                                                                            let _e3770 = local_329;
-                                                                            local_332 = ((_e3767 % _e3768) + _e3770);
-                                                                            let _e3772 = local_330;
-                                                                            if _e3772 {
+                                                                            let _e3782 = local_324;
+                                                                            let _e3783 = local_329;
+                                                                            let _e3785 = local_329;
+                                                                            local_332 = ((_e3782 % _e3783) + _e3785);
+                                                                            let _e3787 = local_330;
+                                                                            if _e3787 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3773 = local_332;
-                                                                            let _e3775 = local_331;
-                                                                            if (_e3775 && (_e3773 == i32(-2147483648))) {
+                                                                            let _e3788 = local_332;
+                                                                            let _e3790 = local_331;
+                                                                            if (_e3790 && (_e3788 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3777 = local_332;
-                                                                            let _e3778 = local_329;
-                                                                            let _e3779 = (_e3777 % _e3778);
-                                                                            local_333 = _e3779;
-                                                                            let _e3780 = local_327;
-                                                                            if (_e3779 < _e3780) {
-                                                                                phi_3082_ = _e3779;
+                                                                            let _e3792 = local_332;
+                                                                            let _e3793 = local_329;
+                                                                            let _e3794 = (_e3792 % _e3793);
+                                                                            local_333 = _e3794;
+                                                                            let _e3795 = local_327;
+                                                                            if (_e3794 < _e3795) {
+                                                                                phi_3082_ = _e3794;
                                                                             } else {
-                                                                                let _e3782 = local_329;
-                                                                                let _e3784 = local_333;
-                                                                                phi_3082_ = ((_e3782 - 1i) - _e3784);
+                                                                                let _e3797 = local_329;
+                                                                                let _e3799 = local_333;
+                                                                                phi_3082_ = ((_e3797 - 1i) - _e3799);
                                                                             }
-                                                                            let _e3787 = phi_3082_;
-                                                                            phi_3106_ = _e3787;
+                                                                            let _e3802 = phi_3082_;
+                                                                            phi_3106_ = _e3802;
                                                                         } else {
-                                                                            let _e3739 = local_327;
-                                                                            let _e3740 = (_e3739 == 0i);
-                                                                            local_334 = _e3740;
-                                                                            if _e3740 {
+                                                                            let _e3754 = local_327;
+                                                                            let _e3755 = (_e3754 == 0i);
+                                                                            local_334 = _e3755;
+                                                                            if _e3755 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3741 = local_327;
-                                                                            let _e3742 = (_e3741 == -1i);
-                                                                            local_335 = _e3742;
-                                                                            let _e3743 = local_324;
-                                                                            if (_e3742 && (_e3743 == i32(-2147483648))) {
+                                                                            let _e3756 = local_327;
+                                                                            let _e3757 = (_e3756 == -1i);
+                                                                            local_335 = _e3757;
+                                                                            let _e3758 = local_324;
+                                                                            if (_e3757 && (_e3758 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3746 = local_324;
-                                                                            let _e3747 = local_327;
-                                                                            let _e3749 = local_327;
-                                                                            local_336 = ((_e3746 % _e3747) + _e3749);
-                                                                            let _e3751 = local_334;
-                                                                            if _e3751 {
+                                                                            let _e3761 = local_324;
+                                                                            let _e3762 = local_327;
+                                                                            let _e3764 = local_327;
+                                                                            local_336 = ((_e3761 % _e3762) + _e3764);
+                                                                            let _e3766 = local_334;
+                                                                            if _e3766 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3752 = local_336;
-                                                                            let _e3754 = local_335;
-                                                                            if (_e3754 && (_e3752 == i32(-2147483648))) {
+                                                                            let _e3767 = local_336;
+                                                                            let _e3769 = local_335;
+                                                                            if (_e3769 && (_e3767 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3756 = local_336;
-                                                                            let _e3757 = local_327;
-                                                                            phi_3106_ = (_e3756 % _e3757);
+                                                                            let _e3771 = local_336;
+                                                                            let _e3772 = local_327;
+                                                                            phi_3106_ = (_e3771 % _e3772);
                                                                         }
-                                                                        let _e3789 = phi_3106_;
-                                                                        phi_3107_ = _e3789;
+                                                                        let _e3804 = phi_3106_;
+                                                                        phi_3107_ = _e3804;
                                                                     }
-                                                                    let _e3802 = phi_3107_;
-                                                                    local_337 = bitcast<u32>(_e3802);
-                                                                    let _e3804 = local_324;
-                                                                    let _e3805 = (_e3804 + 1i);
-                                                                    local_338 = _e3805;
-                                                                    let _e3806 = local_328;
-                                                                    if _e3806 {
-                                                                        let _e3860 = local_338;
-                                                                        if (_e3860 < 0i) {
+                                                                    let _e3817 = phi_3107_;
+                                                                    local_337 = bitcast<u32>(_e3817);
+                                                                    let _e3819 = local_324;
+                                                                    let _e3820 = (_e3819 + 1i);
+                                                                    local_338 = _e3820;
+                                                                    let _e3821 = local_328;
+                                                                    if _e3821 {
+                                                                        let _e3875 = local_338;
+                                                                        if (_e3875 < 0i) {
                                                                             phi_3127_ = 0i;
                                                                         } else {
-                                                                            let _e3862 = local_338;
-                                                                            let _e3863 = local_327;
-                                                                            if (_e3862 >= _e3863) {
-                                                                                let _e3865 = local_327;
-                                                                                phi_3126_ = (_e3865 - 1i);
+                                                                            let _e3877 = local_338;
+                                                                            let _e3878 = local_327;
+                                                                            if (_e3877 >= _e3878) {
+                                                                                let _e3880 = local_327;
+                                                                                phi_3126_ = (_e3880 - 1i);
                                                                             } else {
-                                                                                phi_3126_ = _e3805;
+                                                                                phi_3126_ = _e3820;
                                                                             }
-                                                                            let _e3868 = phi_3126_;
-                                                                            phi_3127_ = _e3868;
+                                                                            let _e3883 = phi_3126_;
+                                                                            phi_3127_ = _e3883;
                                                                         }
-                                                                        let _e3870 = phi_3127_;
-                                                                        phi_3187_ = _e3870;
+                                                                        let _e3885 = phi_3127_;
+                                                                        phi_3187_ = _e3885;
                                                                     } else {
-                                                                        let _e3807 = local_326;
-                                                                        if (_e3807 == 2u) {
-                                                                            let _e3829 = local_327;
-                                                                            let _e3830 = (2i * _e3829);
-                                                                            local_339 = _e3830;
-                                                                            let _e3831 = (_e3830 == 0i);
-                                                                            local_340 = _e3831;
-                                                                            if _e3831 {
+                                                                        let _e3822 = local_326;
+                                                                        if (_e3822 == 2u) {
+                                                                            let _e3844 = local_327;
+                                                                            let _e3845 = (2i * _e3844);
+                                                                            local_339 = _e3845;
+                                                                            let _e3846 = (_e3845 == 0i);
+                                                                            local_340 = _e3846;
+                                                                            if _e3846 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3832 = local_339;
-                                                                            let _e3833 = (_e3832 == -1i);
-                                                                            local_341 = _e3833;
-                                                                            let _e3834 = local_338;
-                                                                            if (_e3833 && (_e3834 == i32(-2147483648))) {
+                                                                            let _e3847 = local_339;
+                                                                            let _e3848 = (_e3847 == -1i);
+                                                                            local_341 = _e3848;
+                                                                            let _e3849 = local_338;
+                                                                            if (_e3848 && (_e3849 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3837 = local_338;
-                                                                            let _e3838 = local_339;
-                                                                            let _e3840 = local_339;
-                                                                            local_342 = ((_e3837 % _e3838) + _e3840);
-                                                                            let _e3842 = local_340;
-                                                                            if _e3842 {
+                                                                            let _e3852 = local_338;
+                                                                            let _e3853 = local_339;
+                                                                            let _e3855 = local_339;
+                                                                            local_342 = ((_e3852 % _e3853) + _e3855);
+                                                                            let _e3857 = local_340;
+                                                                            if _e3857 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3843 = local_342;
-                                                                            let _e3845 = local_341;
-                                                                            if (_e3845 && (_e3843 == i32(-2147483648))) {
+                                                                            let _e3858 = local_342;
+                                                                            let _e3860 = local_341;
+                                                                            if (_e3860 && (_e3858 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3847 = local_342;
-                                                                            let _e3848 = local_339;
-                                                                            let _e3849 = (_e3847 % _e3848);
-                                                                            local_343 = _e3849;
-                                                                            let _e3850 = local_327;
-                                                                            if (_e3849 < _e3850) {
-                                                                                phi_3162_ = _e3849;
+                                                                            let _e3862 = local_342;
+                                                                            let _e3863 = local_339;
+                                                                            let _e3864 = (_e3862 % _e3863);
+                                                                            local_343 = _e3864;
+                                                                            let _e3865 = local_327;
+                                                                            if (_e3864 < _e3865) {
+                                                                                phi_3162_ = _e3864;
                                                                             } else {
-                                                                                let _e3852 = local_339;
-                                                                                let _e3854 = local_343;
-                                                                                phi_3162_ = ((_e3852 - 1i) - _e3854);
+                                                                                let _e3867 = local_339;
+                                                                                let _e3869 = local_343;
+                                                                                phi_3162_ = ((_e3867 - 1i) - _e3869);
                                                                             }
-                                                                            let _e3857 = phi_3162_;
-                                                                            phi_3186_ = _e3857;
+                                                                            let _e3872 = phi_3162_;
+                                                                            phi_3186_ = _e3872;
                                                                         } else {
-                                                                            let _e3809 = local_327;
-                                                                            let _e3810 = (_e3809 == 0i);
-                                                                            local_344 = _e3810;
-                                                                            if _e3810 {
+                                                                            let _e3824 = local_327;
+                                                                            let _e3825 = (_e3824 == 0i);
+                                                                            local_344 = _e3825;
+                                                                            if _e3825 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3811 = local_327;
-                                                                            let _e3812 = (_e3811 == -1i);
-                                                                            local_345 = _e3812;
-                                                                            let _e3813 = local_338;
-                                                                            if (_e3812 && (_e3813 == i32(-2147483648))) {
+                                                                            let _e3826 = local_327;
+                                                                            let _e3827 = (_e3826 == -1i);
+                                                                            local_345 = _e3827;
+                                                                            let _e3828 = local_338;
+                                                                            if (_e3827 && (_e3828 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3816 = local_338;
-                                                                            let _e3817 = local_327;
-                                                                            let _e3819 = local_327;
-                                                                            local_346 = ((_e3816 % _e3817) + _e3819);
-                                                                            let _e3821 = local_344;
-                                                                            if _e3821 {
+                                                                            let _e3831 = local_338;
+                                                                            let _e3832 = local_327;
+                                                                            let _e3834 = local_327;
+                                                                            local_346 = ((_e3831 % _e3832) + _e3834);
+                                                                            let _e3836 = local_344;
+                                                                            if _e3836 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3822 = local_346;
-                                                                            let _e3824 = local_345;
-                                                                            if (_e3824 && (_e3822 == i32(-2147483648))) {
+                                                                            let _e3837 = local_346;
+                                                                            let _e3839 = local_345;
+                                                                            if (_e3839 && (_e3837 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3826 = local_346;
-                                                                            let _e3827 = local_327;
-                                                                            phi_3186_ = (_e3826 % _e3827);
+                                                                            let _e3841 = local_346;
+                                                                            let _e3842 = local_327;
+                                                                            phi_3186_ = (_e3841 % _e3842);
                                                                         }
-                                                                        let _e3859 = phi_3186_;
-                                                                        phi_3187_ = _e3859;
+                                                                        let _e3874 = phi_3186_;
+                                                                        phi_3187_ = _e3874;
                                                                     }
-                                                                    let _e3872 = phi_3187_;
-                                                                    local_347 = bitcast<u32>(_e3872);
-                                                                    let _e3874 = local_314;
-                                                                    local_348 = _e3874.member_4;
-                                                                    let _e3876 = local_318;
-                                                                    local_349 = bitcast<i32>(_e3876);
-                                                                    let _e3878 = (_e3874.member_4 == 1u);
-                                                                    local_350 = _e3878;
-                                                                    if _e3878 {
-                                                                        let _e3932 = local_325;
-                                                                        if (_e3932 < 0i) {
+                                                                    let _e3887 = phi_3187_;
+                                                                    local_347 = bitcast<u32>(_e3887);
+                                                                    let _e3889 = local_314;
+                                                                    local_348 = _e3889.member_4;
+                                                                    let _e3891 = local_318;
+                                                                    local_349 = bitcast<i32>(_e3891);
+                                                                    let _e3893 = (_e3889.member_4 == 1u);
+                                                                    local_350 = _e3893;
+                                                                    if _e3893 {
+                                                                        let _e3947 = local_325;
+                                                                        if (_e3947 < 0i) {
                                                                             phi_3206_ = 0i;
                                                                         } else {
-                                                                            let _e3934 = local_325;
-                                                                            let _e3935 = local_349;
-                                                                            if (_e3934 >= _e3935) {
-                                                                                let _e3937 = local_349;
-                                                                                phi_3205_ = (_e3937 - 1i);
+                                                                            let _e3949 = local_325;
+                                                                            let _e3950 = local_349;
+                                                                            if (_e3949 >= _e3950) {
+                                                                                let _e3952 = local_349;
+                                                                                phi_3205_ = (_e3952 - 1i);
                                                                             } else {
-                                                                                phi_3205_ = _e3731;
+                                                                                phi_3205_ = _e3746;
                                                                             }
-                                                                            let _e3940 = phi_3205_;
-                                                                            phi_3206_ = _e3940;
+                                                                            let _e3955 = phi_3205_;
+                                                                            phi_3206_ = _e3955;
                                                                         }
-                                                                        let _e3942 = phi_3206_;
-                                                                        phi_3266_ = _e3942;
+                                                                        let _e3957 = phi_3206_;
+                                                                        phi_3266_ = _e3957;
                                                                     } else {
-                                                                        let _e3879 = local_348;
-                                                                        if (_e3879 == 2u) {
-                                                                            let _e3901 = local_349;
-                                                                            let _e3902 = (2i * _e3901);
-                                                                            local_351 = _e3902;
-                                                                            let _e3903 = (_e3902 == 0i);
-                                                                            local_352 = _e3903;
-                                                                            if _e3903 {
+                                                                        let _e3894 = local_348;
+                                                                        if (_e3894 == 2u) {
+                                                                            let _e3916 = local_349;
+                                                                            let _e3917 = (2i * _e3916);
+                                                                            local_351 = _e3917;
+                                                                            let _e3918 = (_e3917 == 0i);
+                                                                            local_352 = _e3918;
+                                                                            if _e3918 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3904 = local_351;
-                                                                            let _e3905 = (_e3904 == -1i);
-                                                                            local_353 = _e3905;
-                                                                            let _e3906 = local_325;
-                                                                            if (_e3905 && (_e3906 == i32(-2147483648))) {
+                                                                            let _e3919 = local_351;
+                                                                            let _e3920 = (_e3919 == -1i);
+                                                                            local_353 = _e3920;
+                                                                            let _e3921 = local_325;
+                                                                            if (_e3920 && (_e3921 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3909 = local_325;
-                                                                            let _e3910 = local_351;
-                                                                            let _e3912 = local_351;
-                                                                            local_354 = ((_e3909 % _e3910) + _e3912);
-                                                                            let _e3914 = local_352;
-                                                                            if _e3914 {
+                                                                            let _e3924 = local_325;
+                                                                            let _e3925 = local_351;
+                                                                            let _e3927 = local_351;
+                                                                            local_354 = ((_e3924 % _e3925) + _e3927);
+                                                                            let _e3929 = local_352;
+                                                                            if _e3929 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3915 = local_354;
-                                                                            let _e3917 = local_353;
-                                                                            if (_e3917 && (_e3915 == i32(-2147483648))) {
+                                                                            let _e3930 = local_354;
+                                                                            let _e3932 = local_353;
+                                                                            if (_e3932 && (_e3930 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3919 = local_354;
-                                                                            let _e3920 = local_351;
-                                                                            let _e3921 = (_e3919 % _e3920);
-                                                                            local_355 = _e3921;
-                                                                            let _e3922 = local_349;
-                                                                            if (_e3921 < _e3922) {
-                                                                                phi_3241_ = _e3921;
+                                                                            let _e3934 = local_354;
+                                                                            let _e3935 = local_351;
+                                                                            let _e3936 = (_e3934 % _e3935);
+                                                                            local_355 = _e3936;
+                                                                            let _e3937 = local_349;
+                                                                            if (_e3936 < _e3937) {
+                                                                                phi_3241_ = _e3936;
                                                                             } else {
-                                                                                let _e3924 = local_351;
-                                                                                let _e3926 = local_355;
-                                                                                phi_3241_ = ((_e3924 - 1i) - _e3926);
+                                                                                let _e3939 = local_351;
+                                                                                let _e3941 = local_355;
+                                                                                phi_3241_ = ((_e3939 - 1i) - _e3941);
                                                                             }
-                                                                            let _e3929 = phi_3241_;
-                                                                            phi_3265_ = _e3929;
+                                                                            let _e3944 = phi_3241_;
+                                                                            phi_3265_ = _e3944;
                                                                         } else {
-                                                                            let _e3881 = local_349;
-                                                                            let _e3882 = (_e3881 == 0i);
-                                                                            local_356 = _e3882;
-                                                                            if _e3882 {
+                                                                            let _e3896 = local_349;
+                                                                            let _e3897 = (_e3896 == 0i);
+                                                                            local_356 = _e3897;
+                                                                            if _e3897 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3883 = local_349;
-                                                                            let _e3884 = (_e3883 == -1i);
-                                                                            local_357 = _e3884;
-                                                                            let _e3885 = local_325;
-                                                                            if (_e3884 && (_e3885 == i32(-2147483648))) {
+                                                                            let _e3898 = local_349;
+                                                                            let _e3899 = (_e3898 == -1i);
+                                                                            local_357 = _e3899;
+                                                                            let _e3900 = local_325;
+                                                                            if (_e3899 && (_e3900 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3888 = local_325;
-                                                                            let _e3889 = local_349;
-                                                                            let _e3891 = local_349;
-                                                                            local_358 = ((_e3888 % _e3889) + _e3891);
-                                                                            let _e3893 = local_356;
-                                                                            if _e3893 {
+                                                                            let _e3903 = local_325;
+                                                                            let _e3904 = local_349;
+                                                                            let _e3906 = local_349;
+                                                                            local_358 = ((_e3903 % _e3904) + _e3906);
+                                                                            let _e3908 = local_356;
+                                                                            if _e3908 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3894 = local_358;
-                                                                            let _e3896 = local_357;
-                                                                            if (_e3896 && (_e3894 == i32(-2147483648))) {
+                                                                            let _e3909 = local_358;
+                                                                            let _e3911 = local_357;
+                                                                            if (_e3911 && (_e3909 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3898 = local_358;
-                                                                            let _e3899 = local_349;
-                                                                            phi_3265_ = (_e3898 % _e3899);
+                                                                            let _e3913 = local_358;
+                                                                            let _e3914 = local_349;
+                                                                            phi_3265_ = (_e3913 % _e3914);
                                                                         }
-                                                                        let _e3931 = phi_3265_;
-                                                                        phi_3266_ = _e3931;
+                                                                        let _e3946 = phi_3265_;
+                                                                        phi_3266_ = _e3946;
                                                                     }
-                                                                    let _e3944 = phi_3266_;
-                                                                    local_359 = bitcast<u32>(_e3944);
-                                                                    let _e3946 = local_325;
-                                                                    let _e3947 = (_e3946 + 1i);
-                                                                    local_360 = _e3947;
-                                                                    let _e3948 = local_350;
-                                                                    if _e3948 {
-                                                                        let _e4002 = local_360;
-                                                                        if (_e4002 < 0i) {
+                                                                    let _e3959 = phi_3266_;
+                                                                    local_359 = bitcast<u32>(_e3959);
+                                                                    let _e3961 = local_325;
+                                                                    let _e3962 = (_e3961 + 1i);
+                                                                    local_360 = _e3962;
+                                                                    let _e3963 = local_350;
+                                                                    if _e3963 {
+                                                                        let _e4017 = local_360;
+                                                                        if (_e4017 < 0i) {
                                                                             phi_3286_ = 0i;
                                                                         } else {
-                                                                            let _e4004 = local_360;
-                                                                            let _e4005 = local_349;
-                                                                            if (_e4004 >= _e4005) {
-                                                                                let _e4007 = local_349;
-                                                                                phi_3285_ = (_e4007 - 1i);
+                                                                            let _e4019 = local_360;
+                                                                            let _e4020 = local_349;
+                                                                            if (_e4019 >= _e4020) {
+                                                                                let _e4022 = local_349;
+                                                                                phi_3285_ = (_e4022 - 1i);
                                                                             } else {
-                                                                                phi_3285_ = _e3947;
+                                                                                phi_3285_ = _e3962;
                                                                             }
-                                                                            let _e4010 = phi_3285_;
-                                                                            phi_3286_ = _e4010;
+                                                                            let _e4025 = phi_3285_;
+                                                                            phi_3286_ = _e4025;
                                                                         }
-                                                                        let _e4012 = phi_3286_;
-                                                                        phi_3346_ = _e4012;
+                                                                        let _e4027 = phi_3286_;
+                                                                        phi_3346_ = _e4027;
                                                                     } else {
-                                                                        let _e3949 = local_348;
-                                                                        if (_e3949 == 2u) {
-                                                                            let _e3971 = local_349;
-                                                                            let _e3972 = (2i * _e3971);
-                                                                            local_361 = _e3972;
-                                                                            let _e3973 = (_e3972 == 0i);
-                                                                            local_362 = _e3973;
-                                                                            if _e3973 {
+                                                                        let _e3964 = local_348;
+                                                                        if (_e3964 == 2u) {
+                                                                            let _e3986 = local_349;
+                                                                            let _e3987 = (2i * _e3986);
+                                                                            local_361 = _e3987;
+                                                                            let _e3988 = (_e3987 == 0i);
+                                                                            local_362 = _e3988;
+                                                                            if _e3988 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3974 = local_361;
-                                                                            let _e3975 = (_e3974 == -1i);
-                                                                            local_363 = _e3975;
-                                                                            let _e3976 = local_360;
-                                                                            if (_e3975 && (_e3976 == i32(-2147483648))) {
+                                                                            let _e3989 = local_361;
+                                                                            let _e3990 = (_e3989 == -1i);
+                                                                            local_363 = _e3990;
+                                                                            let _e3991 = local_360;
+                                                                            if (_e3990 && (_e3991 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3979 = local_360;
-                                                                            let _e3980 = local_361;
-                                                                            let _e3982 = local_361;
-                                                                            local_364 = ((_e3979 % _e3980) + _e3982);
-                                                                            let _e3984 = local_362;
-                                                                            if _e3984 {
+                                                                            let _e3994 = local_360;
+                                                                            let _e3995 = local_361;
+                                                                            let _e3997 = local_361;
+                                                                            local_364 = ((_e3994 % _e3995) + _e3997);
+                                                                            let _e3999 = local_362;
+                                                                            if _e3999 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3985 = local_364;
-                                                                            let _e3987 = local_363;
-                                                                            if (_e3987 && (_e3985 == i32(-2147483648))) {
+                                                                            let _e4000 = local_364;
+                                                                            let _e4002 = local_363;
+                                                                            if (_e4002 && (_e4000 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3989 = local_364;
-                                                                            let _e3990 = local_361;
-                                                                            let _e3991 = (_e3989 % _e3990);
-                                                                            local_365 = _e3991;
-                                                                            let _e3992 = local_349;
-                                                                            if (_e3991 < _e3992) {
-                                                                                phi_3321_ = _e3991;
+                                                                            let _e4004 = local_364;
+                                                                            let _e4005 = local_361;
+                                                                            let _e4006 = (_e4004 % _e4005);
+                                                                            local_365 = _e4006;
+                                                                            let _e4007 = local_349;
+                                                                            if (_e4006 < _e4007) {
+                                                                                phi_3321_ = _e4006;
                                                                             } else {
-                                                                                let _e3994 = local_361;
-                                                                                let _e3996 = local_365;
-                                                                                phi_3321_ = ((_e3994 - 1i) - _e3996);
+                                                                                let _e4009 = local_361;
+                                                                                let _e4011 = local_365;
+                                                                                phi_3321_ = ((_e4009 - 1i) - _e4011);
                                                                             }
-                                                                            let _e3999 = phi_3321_;
-                                                                            phi_3345_ = _e3999;
+                                                                            let _e4014 = phi_3321_;
+                                                                            phi_3345_ = _e4014;
                                                                         } else {
-                                                                            let _e3951 = local_349;
-                                                                            let _e3952 = (_e3951 == 0i);
-                                                                            local_366 = _e3952;
-                                                                            if _e3952 {
+                                                                            let _e3966 = local_349;
+                                                                            let _e3967 = (_e3966 == 0i);
+                                                                            local_366 = _e3967;
+                                                                            if _e3967 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3953 = local_349;
-                                                                            let _e3954 = (_e3953 == -1i);
-                                                                            local_367 = _e3954;
-                                                                            let _e3955 = local_360;
-                                                                            if (_e3954 && (_e3955 == i32(-2147483648))) {
+                                                                            let _e3968 = local_349;
+                                                                            let _e3969 = (_e3968 == -1i);
+                                                                            local_367 = _e3969;
+                                                                            let _e3970 = local_360;
+                                                                            if (_e3969 && (_e3970 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3958 = local_360;
-                                                                            let _e3959 = local_349;
-                                                                            let _e3961 = local_349;
-                                                                            local_368 = ((_e3958 % _e3959) + _e3961);
-                                                                            let _e3963 = local_366;
-                                                                            if _e3963 {
+                                                                            let _e3973 = local_360;
+                                                                            let _e3974 = local_349;
+                                                                            let _e3976 = local_349;
+                                                                            local_368 = ((_e3973 % _e3974) + _e3976);
+                                                                            let _e3978 = local_366;
+                                                                            if _e3978 {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3964 = local_368;
-                                                                            let _e3966 = local_367;
-                                                                            if (_e3966 && (_e3964 == i32(-2147483648))) {
+                                                                            let _e3979 = local_368;
+                                                                            let _e3981 = local_367;
+                                                                            if (_e3981 && (_e3979 == i32(-2147483648))) {
                                                                                 phi_5822_ = true;
                                                                                 break;
                                                                             }
-                                                                            let _e3968 = local_368;
-                                                                            let _e3969 = local_349;
-                                                                            phi_3345_ = (_e3968 % _e3969);
+                                                                            let _e3983 = local_368;
+                                                                            let _e3984 = local_349;
+                                                                            phi_3345_ = (_e3983 % _e3984);
                                                                         }
-                                                                        let _e4001 = phi_3345_;
-                                                                        phi_3346_ = _e4001;
+                                                                        let _e4016 = phi_3345_;
+                                                                        phi_3346_ = _e4016;
                                                                     }
-                                                                    let _e4014 = phi_3346_;
-                                                                    local_369 = bitcast<u32>(_e4014);
-                                                                    let _e4016 = local_314;
-                                                                    local_370 = _e4016.member;
-                                                                    let _e4018 = local_359;
-                                                                    let _e4019 = local_316;
-                                                                    let _e4021 = (_e4016.member + (_e4018 * _e4019));
-                                                                    local_371 = _e4021;
-                                                                    let _e4022 = local_337;
-                                                                    let _e4024 = ((_e4021 + _e4022) * 2u);
-                                                                    local_372 = _e4024;
-                                                                    let _e4025 = local_6;
-                                                                    if (_e4024 < _e4025) {
+                                                                    let _e4029 = phi_3346_;
+                                                                    local_369 = bitcast<u32>(_e4029);
+                                                                    let _e4031 = local_314;
+                                                                    local_370 = _e4031.member;
+                                                                    let _e4033 = local_359;
+                                                                    let _e4034 = local_316;
+                                                                    let _e4036 = (_e4031.member + (_e4033 * _e4034));
+                                                                    local_371 = _e4036;
+                                                                    let _e4037 = local_337;
+                                                                    let _e4039 = ((_e4036 + _e4037) * 2u);
+                                                                    local_372 = _e4039;
+                                                                    let _e4040 = local_6;
+                                                                    if (_e4039 < _e4040) {
                                                                     } else {
                                                                         phi_5822_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e4027 = local_372;
-                                                                    let _e4030 = global_9.member[_e4027];
-                                                                    local_373 = _e4030;
-                                                                    let _e4031 = local_372;
-                                                                    let _e4032 = (_e4031 + 1u);
-                                                                    local_374 = _e4032;
-                                                                    let _e4033 = local_6;
-                                                                    if (_e4032 < _e4033) {
+                                                                    let _e4042 = local_372;
+                                                                    let _e4045 = global_9.member[_e4042];
+                                                                    local_373 = _e4045;
+                                                                    let _e4046 = local_372;
+                                                                    let _e4047 = (_e4046 + 1u);
+                                                                    local_374 = _e4047;
+                                                                    let _e4048 = local_6;
+                                                                    if (_e4047 < _e4048) {
                                                                     } else {
                                                                         phi_5822_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e4035 = local_374;
-                                                                    let _e4038 = global_9.member[_e4035];
-                                                                    local_375 = _e4038;
-                                                                    let _e4039 = local_373;
-                                                                    let _e4040 = (_e4039 & 65535u);
-                                                                    local_587 = select(-1f, 1f, ((_e4040 & 32768u) == 0u));
-                                                                    let _e4046 = ((_e4040 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_376 = _e4046;
-                                                                    local_377 = (_e4040 & 1023u);
-                                                                    if (_e4046 == 0u) {
-                                                                        let _e4068 = local_377;
-                                                                        let _e4070 = local_587;
-                                                                        phi_3416_ = ((_e4070 * f32(_e4068)) * 0.000000059604645f);
+                                                                    let _e4050 = local_374;
+                                                                    let _e4053 = global_9.member[_e4050];
+                                                                    local_375 = _e4053;
+                                                                    let _e4054 = local_373;
+                                                                    let _e4055 = (_e4054 & 65535u);
+                                                                    local_587 = select(-1f, 1f, ((_e4055 & 32768u) == 0u));
+                                                                    let _e4061 = ((_e4055 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_376 = _e4061;
+                                                                    local_377 = (_e4055 & 1023u);
+                                                                    if (_e4061 == 0u) {
+                                                                        let _e4083 = local_377;
+                                                                        let _e4085 = local_587;
+                                                                        phi_3416_ = ((_e4085 * f32(_e4083)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4049 = local_376;
-                                                                        if (_e4049 == 31u) {
-                                                                            let _e4059 = local_377;
-                                                                            phi_3413_ = (2139095040u | (_e4059 << bitcast<u32>(13i)));
+                                                                        let _e4064 = local_376;
+                                                                        if (_e4064 == 31u) {
+                                                                            let _e4074 = local_377;
+                                                                            phi_3413_ = (2139095040u | (_e4074 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4051 = local_376;
-                                                                            let _e4055 = local_377;
-                                                                            phi_3413_ = (((_e4051 + 112u) << bitcast<u32>(23i)) | (_e4055 << bitcast<u32>(13i)));
+                                                                            let _e4066 = local_376;
+                                                                            let _e4070 = local_377;
+                                                                            phi_3413_ = (((_e4066 + 112u) << bitcast<u32>(23i)) | (_e4070 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4064 = phi_3413_;
-                                                                        let _e4066 = local_587;
-                                                                        phi_3416_ = (_e4066 * bitcast<f32>(_e4064));
+                                                                        let _e4079 = phi_3413_;
+                                                                        let _e4081 = local_587;
+                                                                        phi_3416_ = (_e4081 * bitcast<f32>(_e4079));
                                                                     }
-                                                                    let _e4074 = phi_3416_;
-                                                                    local_378 = _e4074;
-                                                                    let _e4075 = local_373;
-                                                                    let _e4077 = (_e4075 >> bitcast<u32>(16i));
-                                                                    local_588 = select(-1f, 1f, ((_e4077 & 32768u) == 0u));
-                                                                    let _e4083 = ((_e4077 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_379 = _e4083;
-                                                                    local_380 = (_e4077 & 1023u);
-                                                                    if (_e4083 == 0u) {
-                                                                        let _e4105 = local_380;
-                                                                        let _e4107 = local_588;
-                                                                        phi_3448_ = ((_e4107 * f32(_e4105)) * 0.000000059604645f);
+                                                                    let _e4089 = phi_3416_;
+                                                                    local_378 = _e4089;
+                                                                    let _e4090 = local_373;
+                                                                    let _e4092 = (_e4090 >> bitcast<u32>(16i));
+                                                                    local_588 = select(-1f, 1f, ((_e4092 & 32768u) == 0u));
+                                                                    let _e4098 = ((_e4092 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_379 = _e4098;
+                                                                    local_380 = (_e4092 & 1023u);
+                                                                    if (_e4098 == 0u) {
+                                                                        let _e4120 = local_380;
+                                                                        let _e4122 = local_588;
+                                                                        phi_3448_ = ((_e4122 * f32(_e4120)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4086 = local_379;
-                                                                        if (_e4086 == 31u) {
-                                                                            let _e4096 = local_380;
-                                                                            phi_3445_ = (2139095040u | (_e4096 << bitcast<u32>(13i)));
+                                                                        let _e4101 = local_379;
+                                                                        if (_e4101 == 31u) {
+                                                                            let _e4111 = local_380;
+                                                                            phi_3445_ = (2139095040u | (_e4111 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4088 = local_379;
-                                                                            let _e4092 = local_380;
-                                                                            phi_3445_ = (((_e4088 + 112u) << bitcast<u32>(23i)) | (_e4092 << bitcast<u32>(13i)));
+                                                                            let _e4103 = local_379;
+                                                                            let _e4107 = local_380;
+                                                                            phi_3445_ = (((_e4103 + 112u) << bitcast<u32>(23i)) | (_e4107 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4101 = phi_3445_;
-                                                                        let _e4103 = local_588;
-                                                                        phi_3448_ = (_e4103 * bitcast<f32>(_e4101));
+                                                                        let _e4116 = phi_3445_;
+                                                                        let _e4118 = local_588;
+                                                                        phi_3448_ = (_e4118 * bitcast<f32>(_e4116));
                                                                     }
-                                                                    let _e4111 = phi_3448_;
-                                                                    local_381 = _e4111;
-                                                                    let _e4112 = local_375;
-                                                                    let _e4113 = (_e4112 & 65535u);
-                                                                    local_589 = select(-1f, 1f, ((_e4113 & 32768u) == 0u));
-                                                                    let _e4119 = ((_e4113 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_382 = _e4119;
-                                                                    local_383 = (_e4113 & 1023u);
-                                                                    if (_e4119 == 0u) {
-                                                                        let _e4141 = local_383;
-                                                                        let _e4143 = local_589;
-                                                                        phi_3480_ = ((_e4143 * f32(_e4141)) * 0.000000059604645f);
+                                                                    let _e4126 = phi_3448_;
+                                                                    local_381 = _e4126;
+                                                                    let _e4127 = local_375;
+                                                                    let _e4128 = (_e4127 & 65535u);
+                                                                    local_589 = select(-1f, 1f, ((_e4128 & 32768u) == 0u));
+                                                                    let _e4134 = ((_e4128 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_382 = _e4134;
+                                                                    local_383 = (_e4128 & 1023u);
+                                                                    if (_e4134 == 0u) {
+                                                                        let _e4156 = local_383;
+                                                                        let _e4158 = local_589;
+                                                                        phi_3480_ = ((_e4158 * f32(_e4156)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4122 = local_382;
-                                                                        if (_e4122 == 31u) {
-                                                                            let _e4132 = local_383;
-                                                                            phi_3477_ = (2139095040u | (_e4132 << bitcast<u32>(13i)));
+                                                                        let _e4137 = local_382;
+                                                                        if (_e4137 == 31u) {
+                                                                            let _e4147 = local_383;
+                                                                            phi_3477_ = (2139095040u | (_e4147 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4124 = local_382;
-                                                                            let _e4128 = local_383;
-                                                                            phi_3477_ = (((_e4124 + 112u) << bitcast<u32>(23i)) | (_e4128 << bitcast<u32>(13i)));
+                                                                            let _e4139 = local_382;
+                                                                            let _e4143 = local_383;
+                                                                            phi_3477_ = (((_e4139 + 112u) << bitcast<u32>(23i)) | (_e4143 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4137 = phi_3477_;
-                                                                        let _e4139 = local_589;
-                                                                        phi_3480_ = (_e4139 * bitcast<f32>(_e4137));
+                                                                        let _e4152 = phi_3477_;
+                                                                        let _e4154 = local_589;
+                                                                        phi_3480_ = (_e4154 * bitcast<f32>(_e4152));
                                                                     }
-                                                                    let _e4147 = phi_3480_;
-                                                                    local_384 = _e4147;
-                                                                    let _e4148 = local_375;
-                                                                    let _e4150 = (_e4148 >> bitcast<u32>(16i));
-                                                                    local_590 = select(-1f, 1f, ((_e4150 & 32768u) == 0u));
-                                                                    let _e4156 = ((_e4150 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_385 = _e4156;
-                                                                    local_386 = (_e4150 & 1023u);
-                                                                    if (_e4156 == 0u) {
-                                                                        let _e4178 = local_386;
-                                                                        let _e4180 = local_590;
-                                                                        phi_3512_ = ((_e4180 * f32(_e4178)) * 0.000000059604645f);
+                                                                    let _e4162 = phi_3480_;
+                                                                    local_384 = _e4162;
+                                                                    let _e4163 = local_375;
+                                                                    let _e4165 = (_e4163 >> bitcast<u32>(16i));
+                                                                    local_590 = select(-1f, 1f, ((_e4165 & 32768u) == 0u));
+                                                                    let _e4171 = ((_e4165 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_385 = _e4171;
+                                                                    local_386 = (_e4165 & 1023u);
+                                                                    if (_e4171 == 0u) {
+                                                                        let _e4193 = local_386;
+                                                                        let _e4195 = local_590;
+                                                                        phi_3512_ = ((_e4195 * f32(_e4193)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4159 = local_385;
-                                                                        if (_e4159 == 31u) {
-                                                                            let _e4169 = local_386;
-                                                                            phi_3509_ = (2139095040u | (_e4169 << bitcast<u32>(13i)));
+                                                                        let _e4174 = local_385;
+                                                                        if (_e4174 == 31u) {
+                                                                            let _e4184 = local_386;
+                                                                            phi_3509_ = (2139095040u | (_e4184 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4161 = local_385;
-                                                                            let _e4165 = local_386;
-                                                                            phi_3509_ = (((_e4161 + 112u) << bitcast<u32>(23i)) | (_e4165 << bitcast<u32>(13i)));
+                                                                            let _e4176 = local_385;
+                                                                            let _e4180 = local_386;
+                                                                            phi_3509_ = (((_e4176 + 112u) << bitcast<u32>(23i)) | (_e4180 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4174 = phi_3509_;
-                                                                        let _e4176 = local_590;
-                                                                        phi_3512_ = (_e4176 * bitcast<f32>(_e4174));
+                                                                        let _e4189 = phi_3509_;
+                                                                        let _e4191 = local_590;
+                                                                        phi_3512_ = (_e4191 * bitcast<f32>(_e4189));
                                                                     }
-                                                                    let _e4184 = phi_3512_;
-                                                                    local_387 = _e4184;
-                                                                    let _e4185 = local_371;
-                                                                    let _e4186 = local_347;
-                                                                    let _e4188 = ((_e4185 + _e4186) * 2u);
-                                                                    local_388 = _e4188;
-                                                                    let _e4189 = local_6;
-                                                                    if (_e4188 < _e4189) {
+                                                                    let _e4199 = phi_3512_;
+                                                                    local_387 = _e4199;
+                                                                    let _e4200 = local_371;
+                                                                    let _e4201 = local_347;
+                                                                    let _e4203 = ((_e4200 + _e4201) * 2u);
+                                                                    local_388 = _e4203;
+                                                                    let _e4204 = local_6;
+                                                                    if (_e4203 < _e4204) {
                                                                     } else {
                                                                         phi_5822_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e4191 = local_388;
-                                                                    let _e4194 = global_9.member[_e4191];
-                                                                    local_389 = _e4194;
-                                                                    let _e4195 = local_388;
-                                                                    let _e4196 = (_e4195 + 1u);
-                                                                    local_390 = _e4196;
-                                                                    let _e4197 = local_6;
-                                                                    if (_e4196 < _e4197) {
+                                                                    let _e4206 = local_388;
+                                                                    let _e4209 = global_9.member[_e4206];
+                                                                    local_389 = _e4209;
+                                                                    let _e4210 = local_388;
+                                                                    let _e4211 = (_e4210 + 1u);
+                                                                    local_390 = _e4211;
+                                                                    let _e4212 = local_6;
+                                                                    if (_e4211 < _e4212) {
                                                                     } else {
                                                                         phi_5822_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e4199 = local_390;
-                                                                    let _e4202 = global_9.member[_e4199];
-                                                                    local_391 = _e4202;
-                                                                    let _e4203 = local_389;
-                                                                    let _e4204 = (_e4203 & 65535u);
-                                                                    local_591 = select(-1f, 1f, ((_e4204 & 32768u) == 0u));
-                                                                    let _e4210 = ((_e4204 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_392 = _e4210;
-                                                                    local_393 = (_e4204 & 1023u);
-                                                                    if (_e4210 == 0u) {
-                                                                        let _e4232 = local_393;
-                                                                        let _e4234 = local_591;
-                                                                        phi_3581_ = ((_e4234 * f32(_e4232)) * 0.000000059604645f);
+                                                                    let _e4214 = local_390;
+                                                                    let _e4217 = global_9.member[_e4214];
+                                                                    local_391 = _e4217;
+                                                                    let _e4218 = local_389;
+                                                                    let _e4219 = (_e4218 & 65535u);
+                                                                    local_591 = select(-1f, 1f, ((_e4219 & 32768u) == 0u));
+                                                                    let _e4225 = ((_e4219 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_392 = _e4225;
+                                                                    local_393 = (_e4219 & 1023u);
+                                                                    if (_e4225 == 0u) {
+                                                                        let _e4247 = local_393;
+                                                                        let _e4249 = local_591;
+                                                                        phi_3581_ = ((_e4249 * f32(_e4247)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4213 = local_392;
-                                                                        if (_e4213 == 31u) {
-                                                                            let _e4223 = local_393;
-                                                                            phi_3578_ = (2139095040u | (_e4223 << bitcast<u32>(13i)));
+                                                                        let _e4228 = local_392;
+                                                                        if (_e4228 == 31u) {
+                                                                            let _e4238 = local_393;
+                                                                            phi_3578_ = (2139095040u | (_e4238 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4215 = local_392;
-                                                                            let _e4219 = local_393;
-                                                                            phi_3578_ = (((_e4215 + 112u) << bitcast<u32>(23i)) | (_e4219 << bitcast<u32>(13i)));
+                                                                            let _e4230 = local_392;
+                                                                            let _e4234 = local_393;
+                                                                            phi_3578_ = (((_e4230 + 112u) << bitcast<u32>(23i)) | (_e4234 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4228 = phi_3578_;
-                                                                        let _e4230 = local_591;
-                                                                        phi_3581_ = (_e4230 * bitcast<f32>(_e4228));
+                                                                        let _e4243 = phi_3578_;
+                                                                        let _e4245 = local_591;
+                                                                        phi_3581_ = (_e4245 * bitcast<f32>(_e4243));
                                                                     }
-                                                                    let _e4238 = phi_3581_;
-                                                                    local_394 = _e4238;
-                                                                    let _e4239 = local_389;
-                                                                    let _e4241 = (_e4239 >> bitcast<u32>(16i));
-                                                                    local_592 = select(-1f, 1f, ((_e4241 & 32768u) == 0u));
-                                                                    let _e4247 = ((_e4241 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_395 = _e4247;
-                                                                    local_396 = (_e4241 & 1023u);
-                                                                    if (_e4247 == 0u) {
-                                                                        let _e4269 = local_396;
-                                                                        let _e4271 = local_592;
-                                                                        phi_3613_ = ((_e4271 * f32(_e4269)) * 0.000000059604645f);
+                                                                    let _e4253 = phi_3581_;
+                                                                    local_394 = _e4253;
+                                                                    let _e4254 = local_389;
+                                                                    let _e4256 = (_e4254 >> bitcast<u32>(16i));
+                                                                    local_592 = select(-1f, 1f, ((_e4256 & 32768u) == 0u));
+                                                                    let _e4262 = ((_e4256 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_395 = _e4262;
+                                                                    local_396 = (_e4256 & 1023u);
+                                                                    if (_e4262 == 0u) {
+                                                                        let _e4284 = local_396;
+                                                                        let _e4286 = local_592;
+                                                                        phi_3613_ = ((_e4286 * f32(_e4284)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4250 = local_395;
-                                                                        if (_e4250 == 31u) {
-                                                                            let _e4260 = local_396;
-                                                                            phi_3610_ = (2139095040u | (_e4260 << bitcast<u32>(13i)));
+                                                                        let _e4265 = local_395;
+                                                                        if (_e4265 == 31u) {
+                                                                            let _e4275 = local_396;
+                                                                            phi_3610_ = (2139095040u | (_e4275 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4252 = local_395;
-                                                                            let _e4256 = local_396;
-                                                                            phi_3610_ = (((_e4252 + 112u) << bitcast<u32>(23i)) | (_e4256 << bitcast<u32>(13i)));
+                                                                            let _e4267 = local_395;
+                                                                            let _e4271 = local_396;
+                                                                            phi_3610_ = (((_e4267 + 112u) << bitcast<u32>(23i)) | (_e4271 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4265 = phi_3610_;
-                                                                        let _e4267 = local_592;
-                                                                        phi_3613_ = (_e4267 * bitcast<f32>(_e4265));
+                                                                        let _e4280 = phi_3610_;
+                                                                        let _e4282 = local_592;
+                                                                        phi_3613_ = (_e4282 * bitcast<f32>(_e4280));
                                                                     }
-                                                                    let _e4275 = phi_3613_;
-                                                                    local_397 = _e4275;
-                                                                    let _e4276 = local_391;
-                                                                    let _e4277 = (_e4276 & 65535u);
-                                                                    local_593 = select(-1f, 1f, ((_e4277 & 32768u) == 0u));
-                                                                    let _e4283 = ((_e4277 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_398 = _e4283;
-                                                                    local_399 = (_e4277 & 1023u);
-                                                                    if (_e4283 == 0u) {
-                                                                        let _e4305 = local_399;
-                                                                        let _e4307 = local_593;
-                                                                        phi_3645_ = ((_e4307 * f32(_e4305)) * 0.000000059604645f);
+                                                                    let _e4290 = phi_3613_;
+                                                                    local_397 = _e4290;
+                                                                    let _e4291 = local_391;
+                                                                    let _e4292 = (_e4291 & 65535u);
+                                                                    local_593 = select(-1f, 1f, ((_e4292 & 32768u) == 0u));
+                                                                    let _e4298 = ((_e4292 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_398 = _e4298;
+                                                                    local_399 = (_e4292 & 1023u);
+                                                                    if (_e4298 == 0u) {
+                                                                        let _e4320 = local_399;
+                                                                        let _e4322 = local_593;
+                                                                        phi_3645_ = ((_e4322 * f32(_e4320)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4286 = local_398;
-                                                                        if (_e4286 == 31u) {
-                                                                            let _e4296 = local_399;
-                                                                            phi_3642_ = (2139095040u | (_e4296 << bitcast<u32>(13i)));
+                                                                        let _e4301 = local_398;
+                                                                        if (_e4301 == 31u) {
+                                                                            let _e4311 = local_399;
+                                                                            phi_3642_ = (2139095040u | (_e4311 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4288 = local_398;
-                                                                            let _e4292 = local_399;
-                                                                            phi_3642_ = (((_e4288 + 112u) << bitcast<u32>(23i)) | (_e4292 << bitcast<u32>(13i)));
+                                                                            let _e4303 = local_398;
+                                                                            let _e4307 = local_399;
+                                                                            phi_3642_ = (((_e4303 + 112u) << bitcast<u32>(23i)) | (_e4307 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4301 = phi_3642_;
-                                                                        let _e4303 = local_593;
-                                                                        phi_3645_ = (_e4303 * bitcast<f32>(_e4301));
+                                                                        let _e4316 = phi_3642_;
+                                                                        let _e4318 = local_593;
+                                                                        phi_3645_ = (_e4318 * bitcast<f32>(_e4316));
                                                                     }
-                                                                    let _e4311 = phi_3645_;
-                                                                    local_400 = _e4311;
-                                                                    let _e4312 = local_391;
-                                                                    let _e4314 = (_e4312 >> bitcast<u32>(16i));
-                                                                    local_594 = select(-1f, 1f, ((_e4314 & 32768u) == 0u));
-                                                                    let _e4320 = ((_e4314 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_401 = _e4320;
-                                                                    local_402 = (_e4314 & 1023u);
-                                                                    if (_e4320 == 0u) {
-                                                                        let _e4342 = local_402;
-                                                                        let _e4344 = local_594;
-                                                                        phi_3677_ = ((_e4344 * f32(_e4342)) * 0.000000059604645f);
+                                                                    let _e4326 = phi_3645_;
+                                                                    local_400 = _e4326;
+                                                                    let _e4327 = local_391;
+                                                                    let _e4329 = (_e4327 >> bitcast<u32>(16i));
+                                                                    local_594 = select(-1f, 1f, ((_e4329 & 32768u) == 0u));
+                                                                    let _e4335 = ((_e4329 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_401 = _e4335;
+                                                                    local_402 = (_e4329 & 1023u);
+                                                                    if (_e4335 == 0u) {
+                                                                        let _e4357 = local_402;
+                                                                        let _e4359 = local_594;
+                                                                        phi_3677_ = ((_e4359 * f32(_e4357)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4323 = local_401;
-                                                                        if (_e4323 == 31u) {
-                                                                            let _e4333 = local_402;
-                                                                            phi_3674_ = (2139095040u | (_e4333 << bitcast<u32>(13i)));
+                                                                        let _e4338 = local_401;
+                                                                        if (_e4338 == 31u) {
+                                                                            let _e4348 = local_402;
+                                                                            phi_3674_ = (2139095040u | (_e4348 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4325 = local_401;
-                                                                            let _e4329 = local_402;
-                                                                            phi_3674_ = (((_e4325 + 112u) << bitcast<u32>(23i)) | (_e4329 << bitcast<u32>(13i)));
+                                                                            let _e4340 = local_401;
+                                                                            let _e4344 = local_402;
+                                                                            phi_3674_ = (((_e4340 + 112u) << bitcast<u32>(23i)) | (_e4344 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4338 = phi_3674_;
-                                                                        let _e4340 = local_594;
-                                                                        phi_3677_ = (_e4340 * bitcast<f32>(_e4338));
+                                                                        let _e4353 = phi_3674_;
+                                                                        let _e4355 = local_594;
+                                                                        phi_3677_ = (_e4355 * bitcast<f32>(_e4353));
                                                                     }
-                                                                    let _e4348 = phi_3677_;
-                                                                    let _e4349 = local_394;
-                                                                    let _e4350 = local_378;
-                                                                    let _e4352 = local_323;
-                                                                    let _e4354 = local_378;
-                                                                    local_403 = (_e4354 + ((_e4349 - _e4350) * _e4352));
-                                                                    let _e4356 = local_397;
-                                                                    let _e4357 = local_381;
-                                                                    let _e4359 = local_323;
-                                                                    let _e4361 = local_381;
-                                                                    local_404 = (_e4361 + ((_e4356 - _e4357) * _e4359));
-                                                                    let _e4363 = local_400;
-                                                                    let _e4364 = local_384;
-                                                                    let _e4366 = local_323;
-                                                                    let _e4368 = local_384;
-                                                                    local_405 = (_e4368 + ((_e4363 - _e4364) * _e4366));
-                                                                    let _e4370 = local_387;
-                                                                    let _e4372 = local_323;
-                                                                    let _e4374 = local_387;
-                                                                    local_406 = (_e4374 + ((_e4348 - _e4370) * _e4372));
-                                                                    let _e4376 = local_369;
-                                                                    let _e4377 = local_316;
-                                                                    let _e4379 = local_370;
-                                                                    let _e4380 = (_e4379 + (_e4376 * _e4377));
-                                                                    local_407 = _e4380;
-                                                                    let _e4381 = local_337;
-                                                                    let _e4383 = ((_e4380 + _e4381) * 2u);
-                                                                    local_408 = _e4383;
-                                                                    let _e4384 = local_6;
-                                                                    if (_e4383 < _e4384) {
+                                                                    let _e4363 = phi_3677_;
+                                                                    let _e4364 = local_394;
+                                                                    let _e4365 = local_378;
+                                                                    let _e4367 = local_323;
+                                                                    let _e4369 = local_378;
+                                                                    local_403 = (_e4369 + ((_e4364 - _e4365) * _e4367));
+                                                                    let _e4371 = local_397;
+                                                                    let _e4372 = local_381;
+                                                                    let _e4374 = local_323;
+                                                                    let _e4376 = local_381;
+                                                                    local_404 = (_e4376 + ((_e4371 - _e4372) * _e4374));
+                                                                    let _e4378 = local_400;
+                                                                    let _e4379 = local_384;
+                                                                    let _e4381 = local_323;
+                                                                    let _e4383 = local_384;
+                                                                    local_405 = (_e4383 + ((_e4378 - _e4379) * _e4381));
+                                                                    let _e4385 = local_387;
+                                                                    let _e4387 = local_323;
+                                                                    let _e4389 = local_387;
+                                                                    local_406 = (_e4389 + ((_e4363 - _e4385) * _e4387));
+                                                                    let _e4391 = local_369;
+                                                                    let _e4392 = local_316;
+                                                                    let _e4394 = local_370;
+                                                                    let _e4395 = (_e4394 + (_e4391 * _e4392));
+                                                                    local_407 = _e4395;
+                                                                    let _e4396 = local_337;
+                                                                    let _e4398 = ((_e4395 + _e4396) * 2u);
+                                                                    local_408 = _e4398;
+                                                                    let _e4399 = local_6;
+                                                                    if (_e4398 < _e4399) {
                                                                     } else {
                                                                         phi_5822_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e4386 = local_408;
-                                                                    let _e4389 = global_9.member[_e4386];
-                                                                    local_409 = _e4389;
-                                                                    let _e4390 = local_408;
-                                                                    let _e4391 = (_e4390 + 1u);
-                                                                    local_410 = _e4391;
-                                                                    let _e4392 = local_6;
-                                                                    if (_e4391 < _e4392) {
+                                                                    let _e4401 = local_408;
+                                                                    let _e4404 = global_9.member[_e4401];
+                                                                    local_409 = _e4404;
+                                                                    let _e4405 = local_408;
+                                                                    let _e4406 = (_e4405 + 1u);
+                                                                    local_410 = _e4406;
+                                                                    let _e4407 = local_6;
+                                                                    if (_e4406 < _e4407) {
                                                                     } else {
                                                                         phi_5822_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e4394 = local_410;
-                                                                    let _e4397 = global_9.member[_e4394];
-                                                                    local_411 = _e4397;
-                                                                    let _e4398 = local_409;
-                                                                    let _e4399 = (_e4398 & 65535u);
-                                                                    local_595 = select(-1f, 1f, ((_e4399 & 32768u) == 0u));
-                                                                    let _e4405 = ((_e4399 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_412 = _e4405;
-                                                                    local_413 = (_e4399 & 1023u);
-                                                                    if (_e4405 == 0u) {
-                                                                        let _e4427 = local_413;
-                                                                        let _e4429 = local_595;
-                                                                        phi_3758_ = ((_e4429 * f32(_e4427)) * 0.000000059604645f);
+                                                                    let _e4409 = local_410;
+                                                                    let _e4412 = global_9.member[_e4409];
+                                                                    local_411 = _e4412;
+                                                                    let _e4413 = local_409;
+                                                                    let _e4414 = (_e4413 & 65535u);
+                                                                    local_595 = select(-1f, 1f, ((_e4414 & 32768u) == 0u));
+                                                                    let _e4420 = ((_e4414 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_412 = _e4420;
+                                                                    local_413 = (_e4414 & 1023u);
+                                                                    if (_e4420 == 0u) {
+                                                                        let _e4442 = local_413;
+                                                                        let _e4444 = local_595;
+                                                                        phi_3758_ = ((_e4444 * f32(_e4442)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4408 = local_412;
-                                                                        if (_e4408 == 31u) {
-                                                                            let _e4418 = local_413;
-                                                                            phi_3755_ = (2139095040u | (_e4418 << bitcast<u32>(13i)));
+                                                                        let _e4423 = local_412;
+                                                                        if (_e4423 == 31u) {
+                                                                            let _e4433 = local_413;
+                                                                            phi_3755_ = (2139095040u | (_e4433 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4410 = local_412;
-                                                                            let _e4414 = local_413;
-                                                                            phi_3755_ = (((_e4410 + 112u) << bitcast<u32>(23i)) | (_e4414 << bitcast<u32>(13i)));
+                                                                            let _e4425 = local_412;
+                                                                            let _e4429 = local_413;
+                                                                            phi_3755_ = (((_e4425 + 112u) << bitcast<u32>(23i)) | (_e4429 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4423 = phi_3755_;
-                                                                        let _e4425 = local_595;
-                                                                        phi_3758_ = (_e4425 * bitcast<f32>(_e4423));
+                                                                        let _e4438 = phi_3755_;
+                                                                        let _e4440 = local_595;
+                                                                        phi_3758_ = (_e4440 * bitcast<f32>(_e4438));
                                                                     }
-                                                                    let _e4433 = phi_3758_;
-                                                                    local_414 = _e4433;
-                                                                    let _e4434 = local_409;
-                                                                    let _e4436 = (_e4434 >> bitcast<u32>(16i));
-                                                                    local_596 = select(-1f, 1f, ((_e4436 & 32768u) == 0u));
-                                                                    let _e4442 = ((_e4436 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_415 = _e4442;
-                                                                    local_416 = (_e4436 & 1023u);
-                                                                    if (_e4442 == 0u) {
-                                                                        let _e4464 = local_416;
-                                                                        let _e4466 = local_596;
-                                                                        phi_3790_ = ((_e4466 * f32(_e4464)) * 0.000000059604645f);
+                                                                    let _e4448 = phi_3758_;
+                                                                    local_414 = _e4448;
+                                                                    let _e4449 = local_409;
+                                                                    let _e4451 = (_e4449 >> bitcast<u32>(16i));
+                                                                    local_596 = select(-1f, 1f, ((_e4451 & 32768u) == 0u));
+                                                                    let _e4457 = ((_e4451 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_415 = _e4457;
+                                                                    local_416 = (_e4451 & 1023u);
+                                                                    if (_e4457 == 0u) {
+                                                                        let _e4479 = local_416;
+                                                                        let _e4481 = local_596;
+                                                                        phi_3790_ = ((_e4481 * f32(_e4479)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4445 = local_415;
-                                                                        if (_e4445 == 31u) {
-                                                                            let _e4455 = local_416;
-                                                                            phi_3787_ = (2139095040u | (_e4455 << bitcast<u32>(13i)));
+                                                                        let _e4460 = local_415;
+                                                                        if (_e4460 == 31u) {
+                                                                            let _e4470 = local_416;
+                                                                            phi_3787_ = (2139095040u | (_e4470 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4447 = local_415;
-                                                                            let _e4451 = local_416;
-                                                                            phi_3787_ = (((_e4447 + 112u) << bitcast<u32>(23i)) | (_e4451 << bitcast<u32>(13i)));
+                                                                            let _e4462 = local_415;
+                                                                            let _e4466 = local_416;
+                                                                            phi_3787_ = (((_e4462 + 112u) << bitcast<u32>(23i)) | (_e4466 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4460 = phi_3787_;
-                                                                        let _e4462 = local_596;
-                                                                        phi_3790_ = (_e4462 * bitcast<f32>(_e4460));
+                                                                        let _e4475 = phi_3787_;
+                                                                        let _e4477 = local_596;
+                                                                        phi_3790_ = (_e4477 * bitcast<f32>(_e4475));
                                                                     }
-                                                                    let _e4470 = phi_3790_;
-                                                                    local_417 = _e4470;
-                                                                    let _e4471 = local_411;
-                                                                    let _e4472 = (_e4471 & 65535u);
-                                                                    local_597 = select(-1f, 1f, ((_e4472 & 32768u) == 0u));
-                                                                    let _e4478 = ((_e4472 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_418 = _e4478;
-                                                                    local_419 = (_e4472 & 1023u);
-                                                                    if (_e4478 == 0u) {
-                                                                        let _e4500 = local_419;
-                                                                        let _e4502 = local_597;
-                                                                        phi_3822_ = ((_e4502 * f32(_e4500)) * 0.000000059604645f);
+                                                                    let _e4485 = phi_3790_;
+                                                                    local_417 = _e4485;
+                                                                    let _e4486 = local_411;
+                                                                    let _e4487 = (_e4486 & 65535u);
+                                                                    local_597 = select(-1f, 1f, ((_e4487 & 32768u) == 0u));
+                                                                    let _e4493 = ((_e4487 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_418 = _e4493;
+                                                                    local_419 = (_e4487 & 1023u);
+                                                                    if (_e4493 == 0u) {
+                                                                        let _e4515 = local_419;
+                                                                        let _e4517 = local_597;
+                                                                        phi_3822_ = ((_e4517 * f32(_e4515)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4481 = local_418;
-                                                                        if (_e4481 == 31u) {
-                                                                            let _e4491 = local_419;
-                                                                            phi_3819_ = (2139095040u | (_e4491 << bitcast<u32>(13i)));
+                                                                        let _e4496 = local_418;
+                                                                        if (_e4496 == 31u) {
+                                                                            let _e4506 = local_419;
+                                                                            phi_3819_ = (2139095040u | (_e4506 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4483 = local_418;
-                                                                            let _e4487 = local_419;
-                                                                            phi_3819_ = (((_e4483 + 112u) << bitcast<u32>(23i)) | (_e4487 << bitcast<u32>(13i)));
+                                                                            let _e4498 = local_418;
+                                                                            let _e4502 = local_419;
+                                                                            phi_3819_ = (((_e4498 + 112u) << bitcast<u32>(23i)) | (_e4502 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4496 = phi_3819_;
-                                                                        let _e4498 = local_597;
-                                                                        phi_3822_ = (_e4498 * bitcast<f32>(_e4496));
+                                                                        let _e4511 = phi_3819_;
+                                                                        let _e4513 = local_597;
+                                                                        phi_3822_ = (_e4513 * bitcast<f32>(_e4511));
                                                                     }
-                                                                    let _e4506 = phi_3822_;
-                                                                    local_420 = _e4506;
-                                                                    let _e4507 = local_411;
-                                                                    let _e4509 = (_e4507 >> bitcast<u32>(16i));
-                                                                    local_598 = select(-1f, 1f, ((_e4509 & 32768u) == 0u));
-                                                                    let _e4515 = ((_e4509 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_421 = _e4515;
-                                                                    local_422 = (_e4509 & 1023u);
-                                                                    if (_e4515 == 0u) {
-                                                                        let _e4537 = local_422;
-                                                                        let _e4539 = local_598;
-                                                                        phi_3854_ = ((_e4539 * f32(_e4537)) * 0.000000059604645f);
+                                                                    let _e4521 = phi_3822_;
+                                                                    local_420 = _e4521;
+                                                                    let _e4522 = local_411;
+                                                                    let _e4524 = (_e4522 >> bitcast<u32>(16i));
+                                                                    local_598 = select(-1f, 1f, ((_e4524 & 32768u) == 0u));
+                                                                    let _e4530 = ((_e4524 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_421 = _e4530;
+                                                                    local_422 = (_e4524 & 1023u);
+                                                                    if (_e4530 == 0u) {
+                                                                        let _e4552 = local_422;
+                                                                        let _e4554 = local_598;
+                                                                        phi_3854_ = ((_e4554 * f32(_e4552)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4518 = local_421;
-                                                                        if (_e4518 == 31u) {
-                                                                            let _e4528 = local_422;
-                                                                            phi_3851_ = (2139095040u | (_e4528 << bitcast<u32>(13i)));
+                                                                        let _e4533 = local_421;
+                                                                        if (_e4533 == 31u) {
+                                                                            let _e4543 = local_422;
+                                                                            phi_3851_ = (2139095040u | (_e4543 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4520 = local_421;
-                                                                            let _e4524 = local_422;
-                                                                            phi_3851_ = (((_e4520 + 112u) << bitcast<u32>(23i)) | (_e4524 << bitcast<u32>(13i)));
+                                                                            let _e4535 = local_421;
+                                                                            let _e4539 = local_422;
+                                                                            phi_3851_ = (((_e4535 + 112u) << bitcast<u32>(23i)) | (_e4539 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4533 = phi_3851_;
-                                                                        let _e4535 = local_598;
-                                                                        phi_3854_ = (_e4535 * bitcast<f32>(_e4533));
+                                                                        let _e4548 = phi_3851_;
+                                                                        let _e4550 = local_598;
+                                                                        phi_3854_ = (_e4550 * bitcast<f32>(_e4548));
                                                                     }
-                                                                    let _e4543 = phi_3854_;
-                                                                    local_423 = _e4543;
-                                                                    let _e4544 = local_407;
-                                                                    let _e4545 = local_347;
-                                                                    let _e4547 = ((_e4544 + _e4545) * 2u);
-                                                                    local_424 = _e4547;
-                                                                    let _e4548 = local_6;
-                                                                    if (_e4547 < _e4548) {
+                                                                    let _e4558 = phi_3854_;
+                                                                    local_423 = _e4558;
+                                                                    let _e4559 = local_407;
+                                                                    let _e4560 = local_347;
+                                                                    let _e4562 = ((_e4559 + _e4560) * 2u);
+                                                                    local_424 = _e4562;
+                                                                    let _e4563 = local_6;
+                                                                    if (_e4562 < _e4563) {
                                                                     } else {
                                                                         phi_5822_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e4550 = local_424;
-                                                                    let _e4553 = global_9.member[_e4550];
-                                                                    local_425 = _e4553;
-                                                                    let _e4554 = local_424;
-                                                                    let _e4555 = (_e4554 + 1u);
-                                                                    local_426 = _e4555;
-                                                                    let _e4556 = local_6;
-                                                                    if (_e4555 < _e4556) {
+                                                                    let _e4565 = local_424;
+                                                                    let _e4568 = global_9.member[_e4565];
+                                                                    local_425 = _e4568;
+                                                                    let _e4569 = local_424;
+                                                                    let _e4570 = (_e4569 + 1u);
+                                                                    local_426 = _e4570;
+                                                                    let _e4571 = local_6;
+                                                                    if (_e4570 < _e4571) {
                                                                     } else {
                                                                         phi_5822_ = true;
                                                                         break;
                                                                     }
-                                                                    let _e4558 = local_426;
-                                                                    let _e4561 = global_9.member[_e4558];
-                                                                    local_427 = _e4561;
-                                                                    let _e4562 = local_425;
-                                                                    let _e4563 = (_e4562 & 65535u);
-                                                                    local_599 = select(-1f, 1f, ((_e4563 & 32768u) == 0u));
-                                                                    let _e4569 = ((_e4563 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_428 = _e4569;
-                                                                    local_429 = (_e4563 & 1023u);
-                                                                    if (_e4569 == 0u) {
-                                                                        let _e4591 = local_429;
-                                                                        let _e4593 = local_599;
-                                                                        phi_3923_ = ((_e4593 * f32(_e4591)) * 0.000000059604645f);
+                                                                    let _e4573 = local_426;
+                                                                    let _e4576 = global_9.member[_e4573];
+                                                                    local_427 = _e4576;
+                                                                    let _e4577 = local_425;
+                                                                    let _e4578 = (_e4577 & 65535u);
+                                                                    local_599 = select(-1f, 1f, ((_e4578 & 32768u) == 0u));
+                                                                    let _e4584 = ((_e4578 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_428 = _e4584;
+                                                                    local_429 = (_e4578 & 1023u);
+                                                                    if (_e4584 == 0u) {
+                                                                        let _e4606 = local_429;
+                                                                        let _e4608 = local_599;
+                                                                        phi_3923_ = ((_e4608 * f32(_e4606)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4572 = local_428;
-                                                                        if (_e4572 == 31u) {
-                                                                            let _e4582 = local_429;
-                                                                            phi_3920_ = (2139095040u | (_e4582 << bitcast<u32>(13i)));
+                                                                        let _e4587 = local_428;
+                                                                        if (_e4587 == 31u) {
+                                                                            let _e4597 = local_429;
+                                                                            phi_3920_ = (2139095040u | (_e4597 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4574 = local_428;
-                                                                            let _e4578 = local_429;
-                                                                            phi_3920_ = (((_e4574 + 112u) << bitcast<u32>(23i)) | (_e4578 << bitcast<u32>(13i)));
+                                                                            let _e4589 = local_428;
+                                                                            let _e4593 = local_429;
+                                                                            phi_3920_ = (((_e4589 + 112u) << bitcast<u32>(23i)) | (_e4593 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4587 = phi_3920_;
-                                                                        let _e4589 = local_599;
-                                                                        phi_3923_ = (_e4589 * bitcast<f32>(_e4587));
+                                                                        let _e4602 = phi_3920_;
+                                                                        let _e4604 = local_599;
+                                                                        phi_3923_ = (_e4604 * bitcast<f32>(_e4602));
                                                                     }
-                                                                    let _e4597 = phi_3923_;
-                                                                    local_430 = _e4597;
-                                                                    let _e4598 = local_425;
-                                                                    let _e4600 = (_e4598 >> bitcast<u32>(16i));
-                                                                    local_600 = select(-1f, 1f, ((_e4600 & 32768u) == 0u));
-                                                                    let _e4606 = ((_e4600 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_431 = _e4606;
-                                                                    local_432 = (_e4600 & 1023u);
-                                                                    if (_e4606 == 0u) {
-                                                                        let _e4628 = local_432;
-                                                                        let _e4630 = local_600;
-                                                                        phi_3955_ = ((_e4630 * f32(_e4628)) * 0.000000059604645f);
+                                                                    let _e4612 = phi_3923_;
+                                                                    local_430 = _e4612;
+                                                                    let _e4613 = local_425;
+                                                                    let _e4615 = (_e4613 >> bitcast<u32>(16i));
+                                                                    local_600 = select(-1f, 1f, ((_e4615 & 32768u) == 0u));
+                                                                    let _e4621 = ((_e4615 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_431 = _e4621;
+                                                                    local_432 = (_e4615 & 1023u);
+                                                                    if (_e4621 == 0u) {
+                                                                        let _e4643 = local_432;
+                                                                        let _e4645 = local_600;
+                                                                        phi_3955_ = ((_e4645 * f32(_e4643)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4609 = local_431;
-                                                                        if (_e4609 == 31u) {
-                                                                            let _e4619 = local_432;
-                                                                            phi_3952_ = (2139095040u | (_e4619 << bitcast<u32>(13i)));
+                                                                        let _e4624 = local_431;
+                                                                        if (_e4624 == 31u) {
+                                                                            let _e4634 = local_432;
+                                                                            phi_3952_ = (2139095040u | (_e4634 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4611 = local_431;
-                                                                            let _e4615 = local_432;
-                                                                            phi_3952_ = (((_e4611 + 112u) << bitcast<u32>(23i)) | (_e4615 << bitcast<u32>(13i)));
+                                                                            let _e4626 = local_431;
+                                                                            let _e4630 = local_432;
+                                                                            phi_3952_ = (((_e4626 + 112u) << bitcast<u32>(23i)) | (_e4630 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4624 = phi_3952_;
-                                                                        let _e4626 = local_600;
-                                                                        phi_3955_ = (_e4626 * bitcast<f32>(_e4624));
+                                                                        let _e4639 = phi_3952_;
+                                                                        let _e4641 = local_600;
+                                                                        phi_3955_ = (_e4641 * bitcast<f32>(_e4639));
                                                                     }
-                                                                    let _e4634 = phi_3955_;
-                                                                    local_433 = _e4634;
-                                                                    let _e4635 = local_427;
-                                                                    let _e4636 = (_e4635 & 65535u);
-                                                                    local_601 = select(-1f, 1f, ((_e4636 & 32768u) == 0u));
-                                                                    let _e4642 = ((_e4636 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_434 = _e4642;
-                                                                    local_435 = (_e4636 & 1023u);
-                                                                    if (_e4642 == 0u) {
-                                                                        let _e4664 = local_435;
-                                                                        let _e4666 = local_601;
-                                                                        phi_3987_ = ((_e4666 * f32(_e4664)) * 0.000000059604645f);
+                                                                    let _e4649 = phi_3955_;
+                                                                    local_433 = _e4649;
+                                                                    let _e4650 = local_427;
+                                                                    let _e4651 = (_e4650 & 65535u);
+                                                                    local_601 = select(-1f, 1f, ((_e4651 & 32768u) == 0u));
+                                                                    let _e4657 = ((_e4651 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_434 = _e4657;
+                                                                    local_435 = (_e4651 & 1023u);
+                                                                    if (_e4657 == 0u) {
+                                                                        let _e4679 = local_435;
+                                                                        let _e4681 = local_601;
+                                                                        phi_3987_ = ((_e4681 * f32(_e4679)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4645 = local_434;
-                                                                        if (_e4645 == 31u) {
-                                                                            let _e4655 = local_435;
-                                                                            phi_3984_ = (2139095040u | (_e4655 << bitcast<u32>(13i)));
+                                                                        let _e4660 = local_434;
+                                                                        if (_e4660 == 31u) {
+                                                                            let _e4670 = local_435;
+                                                                            phi_3984_ = (2139095040u | (_e4670 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4647 = local_434;
-                                                                            let _e4651 = local_435;
-                                                                            phi_3984_ = (((_e4647 + 112u) << bitcast<u32>(23i)) | (_e4651 << bitcast<u32>(13i)));
+                                                                            let _e4662 = local_434;
+                                                                            let _e4666 = local_435;
+                                                                            phi_3984_ = (((_e4662 + 112u) << bitcast<u32>(23i)) | (_e4666 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4660 = phi_3984_;
-                                                                        let _e4662 = local_601;
-                                                                        phi_3987_ = (_e4662 * bitcast<f32>(_e4660));
+                                                                        let _e4675 = phi_3984_;
+                                                                        let _e4677 = local_601;
+                                                                        phi_3987_ = (_e4677 * bitcast<f32>(_e4675));
                                                                     }
-                                                                    let _e4670 = phi_3987_;
-                                                                    local_436 = _e4670;
-                                                                    let _e4671 = local_427;
-                                                                    let _e4673 = (_e4671 >> bitcast<u32>(16i));
-                                                                    local_602 = select(-1f, 1f, ((_e4673 & 32768u) == 0u));
-                                                                    let _e4679 = ((_e4673 >> bitcast<u32>(10i)) & 31u);
-                                                                    local_437 = _e4679;
-                                                                    local_438 = (_e4673 & 1023u);
-                                                                    if (_e4679 == 0u) {
-                                                                        let _e4701 = local_438;
-                                                                        let _e4703 = local_602;
-                                                                        phi_4019_ = ((_e4703 * f32(_e4701)) * 0.000000059604645f);
+                                                                    let _e4685 = phi_3987_;
+                                                                    local_436 = _e4685;
+                                                                    let _e4686 = local_427;
+                                                                    let _e4688 = (_e4686 >> bitcast<u32>(16i));
+                                                                    local_602 = select(-1f, 1f, ((_e4688 & 32768u) == 0u));
+                                                                    let _e4694 = ((_e4688 >> bitcast<u32>(10i)) & 31u);
+                                                                    local_437 = _e4694;
+                                                                    local_438 = (_e4688 & 1023u);
+                                                                    if (_e4694 == 0u) {
+                                                                        let _e4716 = local_438;
+                                                                        let _e4718 = local_602;
+                                                                        phi_4019_ = ((_e4718 * f32(_e4716)) * 0.000000059604645f);
                                                                     } else {
-                                                                        let _e4682 = local_437;
-                                                                        if (_e4682 == 31u) {
-                                                                            let _e4692 = local_438;
-                                                                            phi_4016_ = (2139095040u | (_e4692 << bitcast<u32>(13i)));
+                                                                        let _e4697 = local_437;
+                                                                        if (_e4697 == 31u) {
+                                                                            let _e4707 = local_438;
+                                                                            phi_4016_ = (2139095040u | (_e4707 << bitcast<u32>(13i)));
                                                                         } else {
-                                                                            let _e4684 = local_437;
-                                                                            let _e4688 = local_438;
-                                                                            phi_4016_ = (((_e4684 + 112u) << bitcast<u32>(23i)) | (_e4688 << bitcast<u32>(13i)));
+                                                                            let _e4699 = local_437;
+                                                                            let _e4703 = local_438;
+                                                                            phi_4016_ = (((_e4699 + 112u) << bitcast<u32>(23i)) | (_e4703 << bitcast<u32>(13i)));
                                                                         }
-                                                                        let _e4697 = phi_4016_;
-                                                                        let _e4699 = local_602;
-                                                                        phi_4019_ = (_e4699 * bitcast<f32>(_e4697));
+                                                                        let _e4712 = phi_4016_;
+                                                                        let _e4714 = local_602;
+                                                                        phi_4019_ = (_e4714 * bitcast<f32>(_e4712));
                                                                     }
-                                                                    let _e4707 = phi_4019_;
-                                                                    let _e4708 = local_430;
-                                                                    let _e4709 = local_414;
-                                                                    let _e4711 = local_323;
-                                                                    let _e4713 = local_414;
-                                                                    let _e4715 = local_433;
-                                                                    let _e4716 = local_417;
-                                                                    let _e4718 = local_323;
-                                                                    let _e4720 = local_417;
-                                                                    let _e4722 = local_436;
-                                                                    let _e4723 = local_420;
-                                                                    let _e4725 = local_323;
-                                                                    let _e4727 = local_420;
-                                                                    let _e4729 = local_423;
-                                                                    let _e4731 = local_323;
-                                                                    let _e4733 = local_423;
-                                                                    let _e4735 = local_403;
-                                                                    let _e4737 = local_322;
-                                                                    let _e4739 = local_403;
-                                                                    let _e4741 = local_404;
-                                                                    let _e4743 = local_322;
-                                                                    let _e4745 = local_404;
-                                                                    let _e4747 = local_405;
-                                                                    let _e4749 = local_322;
-                                                                    let _e4751 = local_405;
-                                                                    let _e4753 = local_406;
-                                                                    let _e4755 = local_322;
-                                                                    let _e4757 = local_406;
-                                                                    let _e4759 = local_315;
-                                                                    let _e4761 = local_315;
-                                                                    let _e4763 = local_315;
-                                                                    let _e4765 = local_315;
-                                                                    let _e4767 = local_312;
-                                                                    let _e4770 = local_312;
-                                                                    let _e4773 = local_312;
-                                                                    let _e4776 = local_312;
-                                                                    let _e4780 = local_311;
-                                                                    phi_2974_ = (_e4780 + 1u);
-                                                                    phi_2977_ = type_5((_e4767.member + ((_e4739 + (((_e4713 + ((_e4708 - _e4709) * _e4711)) - _e4735) * _e4737)) * _e4759)), (_e4770.member_1 + ((_e4745 + (((_e4720 + ((_e4715 - _e4716) * _e4718)) - _e4741) * _e4743)) * _e4761)), (_e4773.member_2 + ((_e4751 + (((_e4727 + ((_e4722 - _e4723) * _e4725)) - _e4747) * _e4749)) * _e4763)), (_e4776.member_3 + ((_e4757 + (((_e4733 + ((_e4707 - _e4729) * _e4731)) - _e4753) * _e4755)) * _e4765)));
+                                                                    let _e4722 = phi_4019_;
+                                                                    let _e4723 = local_430;
+                                                                    let _e4724 = local_414;
+                                                                    let _e4726 = local_323;
+                                                                    let _e4728 = local_414;
+                                                                    let _e4730 = local_433;
+                                                                    let _e4731 = local_417;
+                                                                    let _e4733 = local_323;
+                                                                    let _e4735 = local_417;
+                                                                    let _e4737 = local_436;
+                                                                    let _e4738 = local_420;
+                                                                    let _e4740 = local_323;
+                                                                    let _e4742 = local_420;
+                                                                    let _e4744 = local_423;
+                                                                    let _e4746 = local_323;
+                                                                    let _e4748 = local_423;
+                                                                    let _e4750 = local_403;
+                                                                    let _e4752 = local_322;
+                                                                    let _e4754 = local_403;
+                                                                    let _e4756 = local_404;
+                                                                    let _e4758 = local_322;
+                                                                    let _e4760 = local_404;
+                                                                    let _e4762 = local_405;
+                                                                    let _e4764 = local_322;
+                                                                    let _e4766 = local_405;
+                                                                    let _e4768 = local_406;
+                                                                    let _e4770 = local_322;
+                                                                    let _e4772 = local_406;
+                                                                    let _e4774 = local_315;
+                                                                    let _e4776 = local_315;
+                                                                    let _e4778 = local_315;
+                                                                    let _e4780 = local_315;
+                                                                    let _e4782 = local_312;
+                                                                    let _e4785 = local_312;
+                                                                    let _e4788 = local_312;
+                                                                    let _e4791 = local_312;
+                                                                    let _e4795 = local_311;
+                                                                    phi_2974_ = (_e4795 + 1u);
+                                                                    phi_2977_ = type_5((_e4782.member + ((_e4754 + (((_e4728 + ((_e4723 - _e4724) * _e4726)) - _e4750) * _e4752)) * _e4774)), (_e4785.member_1 + ((_e4760 + (((_e4735 + ((_e4730 - _e4731) * _e4733)) - _e4756) * _e4758)) * _e4776)), (_e4788.member_2 + ((_e4766 + (((_e4742 + ((_e4737 - _e4738) * _e4740)) - _e4762) * _e4764)) * _e4778)), (_e4791.member_3 + ((_e4772 + (((_e4748 + ((_e4722 - _e4744) * _e4746)) - _e4768) * _e4770)) * _e4780)));
                                                                 } else {
                                                                     phi_2974_ = u32();
                                                                     phi_2977_ = type_5();
                                                                 }
-                                                                let _e4783 = phi_2974_;
-                                                                let _e4785 = phi_2977_;
+                                                                let _e4798 = phi_2974_;
+                                                                let _e4800 = phi_2977_;
                                                                 continue;
                                                                 continuing {
-                                                                    let _e4786 = local_313;
-                                                                    phi_2973_ = _e4783;
-                                                                    phi_2976_ = _e4785;
-                                                                    phi_5822_ = _e3637;
-                                                                    break if !(_e4786);
+                                                                    let _e4801 = local_313;
+                                                                    phi_2973_ = _e4798;
+                                                                    phi_2976_ = _e4800;
+                                                                    phi_5822_ = _e3650;
+                                                                    break if !(_e4801);
                                                                 }
                                                             }
-                                                            let _e4789 = phi_5822_;
-                                                            phi_5934_ = _e4789;
-                                                            if _e4789 {
+                                                            let _e4804 = phi_5822_;
+                                                            phi_5934_ = _e4804;
+                                                            if _e4804 {
                                                                 break;
                                                             }
-                                                            let _e4790 = local_307;
-                                                            phi_5935_ = _e4789;
-                                                            phi_2945_ = (_e4790 + 1u);
-                                                            let _e5690 = local_630;
-                                                            phi_2948_ = _e5690;
+                                                            let _e4805 = local_307;
+                                                            phi_5935_ = _e4804;
+                                                            phi_2945_ = (_e4805 + 1u);
+                                                            let _e5706 = local_630;
+                                                            phi_2948_ = _e5706;
                                                         } else {
-                                                            phi_5935_ = _e3637;
+                                                            phi_5935_ = _e3650;
                                                             phi_2945_ = u32();
                                                             phi_2948_ = type_5();
                                                         }
-                                                        let _e4793 = phi_5935_;
-                                                        let _e4795 = phi_2945_;
-                                                        let _e4797 = phi_2948_;
+                                                        let _e4808 = phi_5935_;
+                                                        let _e4810 = phi_2945_;
+                                                        let _e4812 = phi_2948_;
                                                         continue;
                                                         continuing {
-                                                            let _e4798 = local_308;
-                                                            phi_5868_ = _e4793;
-                                                            phi_2944_ = _e4795;
-                                                            phi_2947_ = _e4797;
-                                                            phi_5934_ = _e4793;
-                                                            break if !(_e4798);
+                                                            let _e4813 = local_308;
+                                                            phi_5868_ = _e4808;
+                                                            phi_2944_ = _e4810;
+                                                            phi_2947_ = _e4812;
+                                                            phi_5934_ = _e4808;
+                                                            break if !(_e4813);
                                                         }
                                                     }
-                                                    let _e4801 = phi_5934_;
-                                                    phi_5936_ = _e4801;
-                                                    if _e4801 {
+                                                    let _e4816 = phi_5934_;
+                                                    phi_5936_ = _e4816;
+                                                    if _e4816 {
                                                         break;
                                                     }
-                                                    let _e4802 = local_303;
-                                                    phi_5937_ = _e4801;
-                                                    phi_2928_ = (_e4802 + 1u);
-                                                    let _e5696 = local_631;
-                                                    phi_2931_ = _e5696;
+                                                    let _e4817 = local_303;
+                                                    phi_5937_ = _e4816;
+                                                    phi_2928_ = (_e4817 + 1u);
+                                                    let _e5712 = local_631;
+                                                    phi_2931_ = _e5712;
                                                 } else {
-                                                    phi_5937_ = _e3621;
+                                                    phi_5937_ = _e3634;
                                                     phi_2928_ = u32();
                                                     phi_2931_ = type_5();
                                                 }
-                                                let _e4805 = phi_5937_;
-                                                let _e4807 = phi_2928_;
-                                                let _e4809 = phi_2931_;
+                                                let _e4820 = phi_5937_;
+                                                let _e4822 = phi_2928_;
+                                                let _e4824 = phi_2931_;
                                                 continue;
                                                 continuing {
-                                                    let _e4810 = local_305;
-                                                    phi_5869_ = _e4805;
-                                                    phi_2927_ = _e4807;
-                                                    phi_2930_ = _e4809;
-                                                    phi_5936_ = _e4805;
-                                                    break if !(_e4810);
+                                                    let _e4825 = local_305;
+                                                    phi_5869_ = _e4820;
+                                                    phi_2927_ = _e4822;
+                                                    phi_2930_ = _e4824;
+                                                    phi_5936_ = _e4820;
+                                                    break if !(_e4825);
                                                 }
                                             }
-                                            let _e4813 = phi_5936_;
-                                            phi_5975_ = _e4813;
-                                            if _e4813 {
+                                            let _e4828 = phi_5936_;
+                                            phi_5975_ = _e4828;
+                                            if _e4828 {
                                                 break;
                                             }
-                                            let _e4814 = local_294;
-                                            let _e4815 = local_293;
-                                            let _e4818 = (1f / f32((_e4814 * _e4815)));
-                                            let _e4819 = local_304;
-                                            let _e4822 = local_304;
-                                            let _e4825 = local_304;
-                                            let _e4828 = local_304;
-                                            phi_5954_ = _e4813;
-                                            phi_4072_ = type_5((_e4819.member * _e4818), (_e4822.member_1 * _e4818), (_e4825.member_2 * _e4818), (_e4828.member_3 * _e4818));
+                                            let _e4829 = local_294;
+                                            let _e4830 = local_293;
+                                            let _e4833 = (1f / f32((_e4829 * _e4830)));
+                                            let _e4834 = local_304;
+                                            let _e4837 = local_304;
+                                            let _e4840 = local_304;
+                                            let _e4843 = local_304;
+                                            phi_5954_ = _e4828;
+                                            phi_4072_ = type_5((_e4834.member * _e4833), (_e4837.member_1 * _e4833), (_e4840.member_2 * _e4833), (_e4843.member_3 * _e4833));
                                         }
-                                        let _e4833 = phi_5954_;
-                                        let _e4835 = phi_4072_;
-                                        phi_5953_ = _e4833;
-                                        phi_4073_ = _e4835;
-                                        phi_4074_ = _e3284;
+                                        let _e4848 = phi_5954_;
+                                        let _e4850 = phi_4072_;
+                                        phi_5953_ = _e4848;
+                                        phi_4073_ = _e4850;
+                                        phi_4074_ = _e3292;
                                     }
-                                    let _e4837 = phi_5953_;
-                                    let _e4839 = phi_4073_;
-                                    let _e4841 = phi_4074_;
-                                    if _e4841 {
+                                    let _e4852 = phi_5953_;
+                                    let _e4854 = phi_4073_;
+                                    let _e4856 = phi_4074_;
+                                    if _e4856 {
                                         phi_4078_ = type_5(1f, 1f, 1f, 1f);
                                     } else {
-                                        phi_4078_ = _e4839;
+                                        phi_4078_ = _e4854;
                                     }
-                                    let _e4843 = phi_4078_;
-                                    phi_5951_ = _e4837;
-                                    phi_4079_ = _e4843;
+                                    let _e4858 = phi_4078_;
+                                    phi_5951_ = _e4852;
+                                    phi_4079_ = _e4858;
                                 }
-                                let _e4845 = phi_5951_;
-                                let _e4847 = phi_4079_;
-                                phi_5950_ = _e4845;
-                                phi_4080_ = _e4847;
-                                phi_4081_ = _e3248;
+                                let _e4860 = phi_5951_;
+                                let _e4862 = phi_4079_;
+                                phi_5950_ = _e4860;
+                                phi_4080_ = _e4862;
+                                phi_4081_ = _e3256;
                             }
-                            let _e4849 = phi_5950_;
-                            let _e4851 = phi_4080_;
-                            let _e4853 = phi_4081_;
-                            if _e4853 {
+                            let _e4864 = phi_5950_;
+                            let _e4866 = phi_4080_;
+                            let _e4868 = phi_4081_;
+                            if _e4868 {
                                 phi_4085_ = type_5(1f, 1f, 1f, 1f);
                             } else {
-                                phi_4085_ = _e4851;
+                                phi_4085_ = _e4866;
                             }
-                            let _e4855 = phi_4085_;
-                            local_620 = array<f32, 4>(_e4855.member, _e4855.member_1, _e4855.member_2, _e4855.member_3);
-                            let _e4861 = local_33;
-                            local_610 = _e4861;
-                            let _e4863 = local_18;
-                            local_611[0u] = _e4863;
-                            let _e4865 = local_20;
-                            local_611[1u] = _e4865;
-                            let _e4867 = local_34;
-                            local_611[2u] = _e4867;
+                            let _e4870 = phi_4085_;
+                            local_620 = array<f32, 4>(_e4870.member, _e4870.member_1, _e4870.member_2, _e4870.member_3);
+                            let _e4876 = local_33;
+                            local_610 = _e4876;
+                            let _e4878 = local_18;
+                            local_611[0u] = _e4878;
+                            let _e4880 = local_20;
+                            local_611[1u] = _e4880;
+                            let _e4882 = local_34;
+                            local_611[2u] = _e4882;
                             phi_4113_ = 0u;
                             phi_4116_ = array<f32, 4>(0f, 0f, 0f, 0f);
                             loop {
-                                let _e4869 = phi_4113_;
-                                let _e4871 = phi_4116_;
-                                local_439 = _e4869;
-                                local_440 = _e4871;
-                                let _e4872 = local_439;
-                                let _e4873 = (_e4872 < 3u);
-                                local_441 = _e4873;
-                                if _e4873 {
-                                    let _e4874 = local_439;
-                                    if (_e4874 < 4u) {
+                                let _e4884 = phi_4113_;
+                                let _e4886 = phi_4116_;
+                                local_439 = _e4884;
+                                local_440 = _e4886;
+                                let _e4887 = local_439;
+                                let _e4888 = (_e4887 < 3u);
+                                local_441 = _e4888;
+                                if _e4888 {
+                                    let _e4889 = local_439;
+                                    if (_e4889 < 4u) {
                                     } else {
                                         phi_5938_ = true;
                                         break;
                                     }
-                                    let _e4876 = local_439;
-                                    let _e4878 = local_610[_e4876];
-                                    let _e4879 = (_e4878 * 10u);
-                                    local_442 = _e4879;
-                                    let _e4880 = (_e4879 + 8u);
-                                    local_443 = _e4880;
-                                    let _e4881 = local_2;
-                                    if (_e4880 < _e4881) {
+                                    let _e4891 = local_439;
+                                    let _e4893 = local_610[_e4891];
+                                    let _e4894 = (_e4893 * 10u);
+                                    local_442 = _e4894;
+                                    let _e4895 = (_e4894 + 8u);
+                                    local_443 = _e4895;
+                                    let _e4896 = local_2;
+                                    if (_e4895 < _e4896) {
                                     } else {
                                         phi_5938_ = true;
                                         break;
                                     }
-                                    let _e4883 = local_443;
-                                    let _e4886 = global_5.member[_e4883];
-                                    local_444 = _e4886;
-                                    let _e4887 = local_442;
-                                    let _e4888 = (_e4887 + 9u);
-                                    local_445 = _e4888;
-                                    let _e4889 = local_2;
-                                    if (_e4888 < _e4889) {
+                                    let _e4898 = local_443;
+                                    let _e4901 = global_5.member[_e4898];
+                                    local_444 = _e4901;
+                                    let _e4902 = local_442;
+                                    let _e4903 = (_e4902 + 9u);
+                                    local_445 = _e4903;
+                                    let _e4904 = local_2;
+                                    if (_e4903 < _e4904) {
                                     } else {
                                         phi_5938_ = true;
                                         break;
                                     }
-                                    let _e4891 = local_445;
-                                    let _e4894 = global_5.member[_e4891];
-                                    local_446 = _e4894;
-                                    let _e4895 = local_441;
-                                    if _e4895 {
+                                    let _e4906 = local_445;
+                                    let _e4909 = global_5.member[_e4906];
+                                    local_446 = _e4909;
+                                    let _e4910 = local_441;
+                                    if _e4910 {
                                     } else {
                                         phi_5938_ = true;
                                         break;
                                     }
-                                    let _e4896 = local_439;
-                                    let _e4898 = local_611[_e4896];
-                                    local_447 = _e4898;
-                                    let _e4899 = local_444;
-                                    let _e4900 = (_e4899 & 65535u);
-                                    local_603 = select(-1f, 1f, ((_e4900 & 32768u) == 0u));
-                                    let _e4906 = ((_e4900 >> bitcast<u32>(10i)) & 31u);
-                                    local_448 = _e4906;
-                                    local_449 = (_e4900 & 1023u);
-                                    if (_e4906 == 0u) {
-                                        let _e4928 = local_449;
-                                        let _e4930 = local_603;
-                                        phi_4202_ = ((_e4930 * f32(_e4928)) * 0.000000059604645f);
+                                    let _e4911 = local_439;
+                                    let _e4913 = local_611[_e4911];
+                                    local_447 = _e4913;
+                                    let _e4914 = local_444;
+                                    let _e4915 = (_e4914 & 65535u);
+                                    local_603 = select(-1f, 1f, ((_e4915 & 32768u) == 0u));
+                                    let _e4921 = ((_e4915 >> bitcast<u32>(10i)) & 31u);
+                                    local_448 = _e4921;
+                                    local_449 = (_e4915 & 1023u);
+                                    if (_e4921 == 0u) {
+                                        let _e4943 = local_449;
+                                        let _e4945 = local_603;
+                                        phi_4202_ = ((_e4945 * f32(_e4943)) * 0.000000059604645f);
                                     } else {
-                                        let _e4909 = local_448;
-                                        if (_e4909 == 31u) {
-                                            let _e4919 = local_449;
-                                            phi_4199_ = (2139095040u | (_e4919 << bitcast<u32>(13i)));
+                                        let _e4924 = local_448;
+                                        if (_e4924 == 31u) {
+                                            let _e4934 = local_449;
+                                            phi_4199_ = (2139095040u | (_e4934 << bitcast<u32>(13i)));
                                         } else {
-                                            let _e4911 = local_448;
-                                            let _e4915 = local_449;
-                                            phi_4199_ = (((_e4911 + 112u) << bitcast<u32>(23i)) | (_e4915 << bitcast<u32>(13i)));
+                                            let _e4926 = local_448;
+                                            let _e4930 = local_449;
+                                            phi_4199_ = (((_e4926 + 112u) << bitcast<u32>(23i)) | (_e4930 << bitcast<u32>(13i)));
                                         }
-                                        let _e4924 = phi_4199_;
-                                        let _e4926 = local_603;
-                                        phi_4202_ = (_e4926 * bitcast<f32>(_e4924));
+                                        let _e4939 = phi_4199_;
+                                        let _e4941 = local_603;
+                                        phi_4202_ = (_e4941 * bitcast<f32>(_e4939));
                                     }
-                                    let _e4934 = phi_4202_;
-                                    let _e4935 = local_447;
-                                    let _e4937 = local_440;
-                                    local_450 = (_e4937[0] + (_e4935 * _e4934));
-                                    let _e4940 = local_441;
-                                    if _e4940 {
+                                    let _e4949 = phi_4202_;
+                                    let _e4950 = local_447;
+                                    let _e4952 = local_440;
+                                    local_450 = (_e4952[0] + (_e4950 * _e4949));
+                                    let _e4955 = local_441;
+                                    if _e4955 {
                                     } else {
                                         phi_5938_ = true;
                                         break;
                                     }
-                                    let _e4941 = local_611[_e4896];
-                                    local_451 = _e4941;
-                                    let _e4942 = local_444;
-                                    let _e4944 = (_e4942 >> bitcast<u32>(16i));
-                                    local_604 = select(-1f, 1f, ((_e4944 & 32768u) == 0u));
-                                    let _e4950 = ((_e4944 >> bitcast<u32>(10i)) & 31u);
-                                    local_452 = _e4950;
-                                    local_453 = (_e4944 & 1023u);
-                                    if (_e4950 == 0u) {
-                                        let _e4972 = local_453;
-                                        let _e4974 = local_604;
-                                        phi_4245_ = ((_e4974 * f32(_e4972)) * 0.000000059604645f);
+                                    let _e4956 = local_611[_e4911];
+                                    local_451 = _e4956;
+                                    let _e4957 = local_444;
+                                    let _e4959 = (_e4957 >> bitcast<u32>(16i));
+                                    local_604 = select(-1f, 1f, ((_e4959 & 32768u) == 0u));
+                                    let _e4965 = ((_e4959 >> bitcast<u32>(10i)) & 31u);
+                                    local_452 = _e4965;
+                                    local_453 = (_e4959 & 1023u);
+                                    if (_e4965 == 0u) {
+                                        let _e4987 = local_453;
+                                        let _e4989 = local_604;
+                                        phi_4245_ = ((_e4989 * f32(_e4987)) * 0.000000059604645f);
                                     } else {
-                                        let _e4953 = local_452;
-                                        if (_e4953 == 31u) {
-                                            let _e4963 = local_453;
-                                            phi_4242_ = (2139095040u | (_e4963 << bitcast<u32>(13i)));
+                                        let _e4968 = local_452;
+                                        if (_e4968 == 31u) {
+                                            let _e4978 = local_453;
+                                            phi_4242_ = (2139095040u | (_e4978 << bitcast<u32>(13i)));
                                         } else {
-                                            let _e4955 = local_452;
-                                            let _e4959 = local_453;
-                                            phi_4242_ = (((_e4955 + 112u) << bitcast<u32>(23i)) | (_e4959 << bitcast<u32>(13i)));
+                                            let _e4970 = local_452;
+                                            let _e4974 = local_453;
+                                            phi_4242_ = (((_e4970 + 112u) << bitcast<u32>(23i)) | (_e4974 << bitcast<u32>(13i)));
                                         }
-                                        let _e4968 = phi_4242_;
-                                        let _e4970 = local_604;
-                                        phi_4245_ = (_e4970 * bitcast<f32>(_e4968));
+                                        let _e4983 = phi_4242_;
+                                        let _e4985 = local_604;
+                                        phi_4245_ = (_e4985 * bitcast<f32>(_e4983));
                                     }
-                                    let _e4978 = phi_4245_;
-                                    let _e4979 = local_451;
-                                    let _e4981 = local_440;
-                                    local_454 = (_e4981[1] + (_e4979 * _e4978));
-                                    let _e4984 = local_441;
-                                    if _e4984 {
+                                    let _e4993 = phi_4245_;
+                                    let _e4994 = local_451;
+                                    let _e4996 = local_440;
+                                    local_454 = (_e4996[1] + (_e4994 * _e4993));
+                                    let _e4999 = local_441;
+                                    if _e4999 {
                                     } else {
                                         phi_5938_ = true;
                                         break;
                                     }
-                                    let _e4985 = local_611[_e4896];
-                                    local_455 = _e4985;
-                                    let _e4986 = local_446;
-                                    let _e4987 = (_e4986 & 65535u);
-                                    local_605 = select(-1f, 1f, ((_e4987 & 32768u) == 0u));
-                                    let _e4993 = ((_e4987 >> bitcast<u32>(10i)) & 31u);
-                                    local_456 = _e4993;
-                                    local_457 = (_e4987 & 1023u);
-                                    if (_e4993 == 0u) {
-                                        let _e5015 = local_457;
-                                        let _e5017 = local_605;
-                                        phi_4288_ = ((_e5017 * f32(_e5015)) * 0.000000059604645f);
+                                    let _e5000 = local_611[_e4911];
+                                    local_455 = _e5000;
+                                    let _e5001 = local_446;
+                                    let _e5002 = (_e5001 & 65535u);
+                                    local_605 = select(-1f, 1f, ((_e5002 & 32768u) == 0u));
+                                    let _e5008 = ((_e5002 >> bitcast<u32>(10i)) & 31u);
+                                    local_456 = _e5008;
+                                    local_457 = (_e5002 & 1023u);
+                                    if (_e5008 == 0u) {
+                                        let _e5030 = local_457;
+                                        let _e5032 = local_605;
+                                        phi_4288_ = ((_e5032 * f32(_e5030)) * 0.000000059604645f);
                                     } else {
-                                        let _e4996 = local_456;
-                                        if (_e4996 == 31u) {
-                                            let _e5006 = local_457;
-                                            phi_4285_ = (2139095040u | (_e5006 << bitcast<u32>(13i)));
+                                        let _e5011 = local_456;
+                                        if (_e5011 == 31u) {
+                                            let _e5021 = local_457;
+                                            phi_4285_ = (2139095040u | (_e5021 << bitcast<u32>(13i)));
                                         } else {
-                                            let _e4998 = local_456;
-                                            let _e5002 = local_457;
-                                            phi_4285_ = (((_e4998 + 112u) << bitcast<u32>(23i)) | (_e5002 << bitcast<u32>(13i)));
+                                            let _e5013 = local_456;
+                                            let _e5017 = local_457;
+                                            phi_4285_ = (((_e5013 + 112u) << bitcast<u32>(23i)) | (_e5017 << bitcast<u32>(13i)));
                                         }
-                                        let _e5011 = phi_4285_;
-                                        let _e5013 = local_605;
-                                        phi_4288_ = (_e5013 * bitcast<f32>(_e5011));
+                                        let _e5026 = phi_4285_;
+                                        let _e5028 = local_605;
+                                        phi_4288_ = (_e5028 * bitcast<f32>(_e5026));
                                     }
-                                    let _e5021 = phi_4288_;
-                                    let _e5022 = local_455;
-                                    let _e5024 = local_440;
-                                    local_458 = (_e5024[2] + (_e5022 * _e5021));
-                                    let _e5027 = local_441;
-                                    if _e5027 {
+                                    let _e5036 = phi_4288_;
+                                    let _e5037 = local_455;
+                                    let _e5039 = local_440;
+                                    local_458 = (_e5039[2] + (_e5037 * _e5036));
+                                    let _e5042 = local_441;
+                                    if _e5042 {
                                     } else {
                                         phi_5938_ = true;
                                         break;
                                     }
-                                    let _e5028 = local_611[_e4896];
-                                    local_459 = _e5028;
-                                    let _e5029 = local_446;
-                                    let _e5031 = (_e5029 >> bitcast<u32>(16i));
-                                    local_606 = select(-1f, 1f, ((_e5031 & 32768u) == 0u));
-                                    let _e5037 = ((_e5031 >> bitcast<u32>(10i)) & 31u);
-                                    local_460 = _e5037;
-                                    local_461 = (_e5031 & 1023u);
-                                    if (_e5037 == 0u) {
-                                        let _e5059 = local_461;
-                                        let _e5061 = local_606;
-                                        phi_4331_ = ((_e5061 * f32(_e5059)) * 0.000000059604645f);
+                                    let _e5043 = local_611[_e4911];
+                                    local_459 = _e5043;
+                                    let _e5044 = local_446;
+                                    let _e5046 = (_e5044 >> bitcast<u32>(16i));
+                                    local_606 = select(-1f, 1f, ((_e5046 & 32768u) == 0u));
+                                    let _e5052 = ((_e5046 >> bitcast<u32>(10i)) & 31u);
+                                    local_460 = _e5052;
+                                    local_461 = (_e5046 & 1023u);
+                                    if (_e5052 == 0u) {
+                                        let _e5074 = local_461;
+                                        let _e5076 = local_606;
+                                        phi_4331_ = ((_e5076 * f32(_e5074)) * 0.000000059604645f);
                                     } else {
-                                        let _e5040 = local_460;
-                                        if (_e5040 == 31u) {
-                                            let _e5050 = local_461;
-                                            phi_4328_ = (2139095040u | (_e5050 << bitcast<u32>(13i)));
+                                        let _e5055 = local_460;
+                                        if (_e5055 == 31u) {
+                                            let _e5065 = local_461;
+                                            phi_4328_ = (2139095040u | (_e5065 << bitcast<u32>(13i)));
                                         } else {
-                                            let _e5042 = local_460;
-                                            let _e5046 = local_461;
-                                            phi_4328_ = (((_e5042 + 112u) << bitcast<u32>(23i)) | (_e5046 << bitcast<u32>(13i)));
+                                            let _e5057 = local_460;
+                                            let _e5061 = local_461;
+                                            phi_4328_ = (((_e5057 + 112u) << bitcast<u32>(23i)) | (_e5061 << bitcast<u32>(13i)));
                                         }
-                                        let _e5055 = phi_4328_;
-                                        let _e5057 = local_606;
-                                        phi_4331_ = (_e5057 * bitcast<f32>(_e5055));
+                                        let _e5070 = phi_4328_;
+                                        let _e5072 = local_606;
+                                        phi_4331_ = (_e5072 * bitcast<f32>(_e5070));
                                     }
-                                    let _e5065 = phi_4331_;
-                                    let _e5066 = local_459;
-                                    let _e5068 = local_440;
-                                    let _e5071 = local_450;
-                                    let _e5072 = local_454;
-                                    let _e5073 = local_458;
-                                    let _e5075 = local_439;
-                                    phi_4114_ = (_e5075 + 1u);
-                                    phi_4117_ = array<f32, 4>(_e5071, _e5072, _e5073, (_e5068[3] + (_e5066 * _e5065)));
+                                    let _e5080 = phi_4331_;
+                                    let _e5081 = local_459;
+                                    let _e5083 = local_440;
+                                    let _e5086 = local_450;
+                                    let _e5087 = local_454;
+                                    let _e5088 = local_458;
+                                    let _e5090 = local_439;
+                                    phi_4114_ = (_e5090 + 1u);
+                                    phi_4117_ = array<f32, 4>(_e5086, _e5087, _e5088, (_e5083[3] + (_e5081 * _e5080)));
                                 } else {
                                     phi_4114_ = u32();
                                     phi_4117_ = array<f32, 4>();
                                 }
-                                let _e5078 = phi_4114_;
-                                let _e5080 = phi_4117_;
+                                let _e5093 = phi_4114_;
+                                let _e5095 = phi_4117_;
                                 continue;
                                 continuing {
-                                    let _e5081 = local_441;
-                                    phi_4113_ = _e5078;
-                                    phi_4116_ = _e5080;
-                                    phi_5938_ = _e4849;
-                                    break if !(_e5081);
+                                    let _e5096 = local_441;
+                                    phi_4113_ = _e5093;
+                                    phi_4116_ = _e5095;
+                                    phi_5938_ = _e4864;
+                                    break if !(_e5096);
                                 }
                             }
-                            let _e5084 = phi_5938_;
-                            phi_5975_ = _e5084;
-                            if _e5084 {
+                            let _e5099 = phi_5938_;
+                            phi_5975_ = _e5099;
+                            if _e5099 {
                                 break;
                             }
-                            let _e5085 = local_440;
-                            let _e5087 = local_440;
-                            let _e5089 = local_440;
-                            let _e5091 = local_440;
-                            local_621 = array<f32, 4>(_e5085[0], _e5087[1], _e5089[2], _e5091[3]);
-                            let _e5094 = local_82;
-                            let _e5095 = (_e5094 + 10u);
-                            local_462 = _e5095;
-                            let _e5096 = local_4;
-                            if (_e5095 < _e5096) {
+                            let _e5100 = local_440;
+                            let _e5102 = local_440;
+                            let _e5104 = local_440;
+                            let _e5106 = local_440;
+                            local_621 = array<f32, 4>(_e5100[0], _e5102[1], _e5104[2], _e5106[3]);
+                            let _e5109 = local_82;
+                            let _e5110 = (_e5109 + 10u);
+                            local_462 = _e5110;
+                            let _e5111 = local_4;
+                            if (_e5110 < _e5111) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e5098 = local_462;
-                            let _e5101 = global_7.member[_e5098];
-                            local_463 = _e5101;
-                            let _e5105 = global_3.member.member.member;
-                            let _e5106 = local_72;
-                            let _e5110 = local_72;
-                            let _e5115 = local_72;
-                            let _e5119 = (((_e5106[0] * _e5105[0]) + (_e5110[1] * _e5105[1])) + (_e5115[2] * _e5105[2]));
-                            local_464 = _e5119;
-                            if (_e5119 != _e5119) {
+                            let _e5113 = local_462;
+                            let _e5116 = global_7.member[_e5113];
+                            local_463 = _e5116;
+                            let _e5120 = global_3.member.member.member;
+                            let _e5121 = local_72;
+                            let _e5125 = local_72;
+                            let _e5130 = local_72;
+                            let _e5134 = (((_e5121[0] * _e5120[0]) + (_e5125[1] * _e5120[1])) + (_e5130[2] * _e5120[2]));
+                            local_464 = _e5134;
+                            if !((_e5134 == _e5134)) {
                                 phi_5669_ = true;
                             } else {
-                                let _e5121 = local_464;
-                                phi_5669_ = (0f >= _e5121);
+                                let _e5137 = local_464;
+                                phi_5669_ = (0f >= _e5137);
                             }
-                            let _e5124 = phi_5669_;
-                            let _e5125 = local_464;
-                            local_607 = select(_e5125, 0f, _e5124);
+                            let _e5140 = phi_5669_;
+                            let _e5141 = local_464;
+                            local_607 = select(_e5141, 0f, _e5140);
                             local_622 = array<f32, 3>(0f, 0f, 0f);
                             phi_4373_ = 0u;
                             loop {
-                                let _e5128 = phi_4373_;
-                                local_465 = _e5128;
-                                let _e5129 = local_465;
-                                let _e5130 = (_e5129 < 3u);
-                                local_466 = _e5130;
-                                if _e5130 {
-                                    let _e5131 = local_82;
-                                    let _e5132 = local_465;
-                                    let _e5133 = (_e5131 + _e5132);
-                                    local_467 = _e5133;
-                                    let _e5134 = local_4;
-                                    if (_e5133 < _e5134) {
+                                let _e5144 = phi_4373_;
+                                local_465 = _e5144;
+                                let _e5145 = local_465;
+                                let _e5146 = (_e5145 < 3u);
+                                local_466 = _e5146;
+                                if _e5146 {
+                                    let _e5147 = local_82;
+                                    let _e5148 = local_465;
+                                    let _e5149 = (_e5147 + _e5148);
+                                    local_467 = _e5149;
+                                    let _e5150 = local_4;
+                                    if (_e5149 < _e5150) {
                                     } else {
                                         phi_5959_ = true;
                                         break;
                                     }
-                                    let _e5136 = local_467;
-                                    let _e5139 = global_7.member[_e5136];
-                                    local_468 = bitcast<f32>(_e5139);
-                                    let _e5141 = local_465;
-                                    let _e5142 = (_e5141 < 4u);
-                                    local_469 = _e5142;
-                                    if _e5142 {
+                                    let _e5152 = local_467;
+                                    let _e5155 = global_7.member[_e5152];
+                                    local_468 = bitcast<f32>(_e5155);
+                                    let _e5157 = local_465;
+                                    let _e5158 = (_e5157 < 4u);
+                                    local_469 = _e5158;
+                                    if _e5158 {
                                     } else {
                                         phi_5959_ = true;
                                         break;
                                     }
-                                    let _e5143 = local_465;
-                                    let _e5145 = local_619[_e5143];
-                                    let _e5146 = local_468;
-                                    local_470 = (_e5146 * _e5145);
-                                    let _e5148 = local_469;
-                                    if _e5148 {
+                                    let _e5159 = local_465;
+                                    let _e5161 = local_619[_e5159];
+                                    let _e5162 = local_468;
+                                    local_470 = (_e5162 * _e5161);
+                                    let _e5164 = local_469;
+                                    if _e5164 {
                                     } else {
                                         phi_5959_ = true;
                                         break;
                                     }
-                                    let _e5149 = local_465;
-                                    let _e5151 = local_621[_e5149];
-                                    let _e5152 = local_470;
-                                    let _e5153 = (_e5152 * _e5151);
-                                    local_471 = _e5153;
-                                    let _e5154 = local_463;
-                                    if ((_e5154 & 1u) == 0u) {
-                                        let _e5157 = local_466;
-                                        if _e5157 {
+                                    let _e5165 = local_465;
+                                    let _e5167 = local_621[_e5165];
+                                    let _e5168 = local_470;
+                                    let _e5169 = (_e5168 * _e5167);
+                                    local_471 = _e5169;
+                                    let _e5170 = local_463;
+                                    if ((_e5170 & 1u) == 0u) {
+                                        let _e5173 = local_466;
+                                        if _e5173 {
                                         } else {
                                             phi_5959_ = true;
                                             break;
                                         }
-                                        let _e5158 = local_465;
-                                        let _e5163 = global_3.member.member.member_4[_e5158];
-                                        local_472 = _e5163;
-                                        let _e5164 = local_466;
-                                        if _e5164 {
+                                        let _e5174 = local_465;
+                                        let _e5179 = global_3.member.member.member_4[_e5174];
+                                        local_472 = _e5179;
+                                        let _e5180 = local_466;
+                                        if _e5180 {
                                         } else {
                                             phi_5959_ = true;
                                             break;
                                         }
-                                        let _e5165 = local_465;
-                                        let _e5170 = global_3.member.member.member_2[_e5165];
-                                        let _e5171 = local_607;
-                                        let _e5173 = local_472;
-                                        let _e5175 = local_471;
-                                        phi_4439_ = (_e5175 * (_e5173 + (_e5170 * _e5171)));
+                                        let _e5181 = local_465;
+                                        let _e5186 = global_3.member.member.member_2[_e5181];
+                                        let _e5187 = local_607;
+                                        let _e5189 = local_472;
+                                        let _e5191 = local_471;
+                                        phi_4439_ = (_e5191 * (_e5189 + (_e5186 * _e5187)));
                                     } else {
-                                        phi_4439_ = _e5153;
+                                        phi_4439_ = _e5169;
                                     }
-                                    let _e5178 = phi_4439_;
-                                    local_473 = _e5178;
-                                    let _e5179 = local_82;
-                                    let _e5181 = local_465;
-                                    let _e5182 = ((_e5179 + 4u) + _e5181);
-                                    local_474 = _e5182;
-                                    let _e5183 = local_4;
-                                    if (_e5182 < _e5183) {
-                                    } else {
-                                        phi_5959_ = true;
-                                        break;
-                                    }
-                                    let _e5185 = local_474;
-                                    let _e5188 = global_7.member[_e5185];
-                                    local_475 = bitcast<f32>(_e5188);
-                                    let _e5190 = local_469;
-                                    if _e5190 {
-                                    } else {
-                                        phi_5959_ = true;
-                                        break;
-                                    }
-                                    let _e5191 = local_465;
-                                    let _e5193 = local_620[_e5191];
-                                    let _e5194 = local_475;
-                                    local_476 = (_e5194 * _e5193);
-                                    let _e5196 = local_466;
-                                    if _e5196 {
-                                    } else {
-                                        phi_5959_ = true;
-                                        break;
-                                    }
+                                    let _e5194 = phi_4439_;
+                                    local_473 = _e5194;
+                                    let _e5195 = local_82;
                                     let _e5197 = local_465;
-                                    let _e5199 = local_473;
-                                    let _e5200 = local_476;
-                                    local_622[_e5197] = (_e5199 + _e5200);
-                                    let _e5202 = local_465;
-                                    phi_4374_ = (_e5202 + 1u);
+                                    let _e5198 = ((_e5195 + 4u) + _e5197);
+                                    local_474 = _e5198;
+                                    let _e5199 = local_4;
+                                    if (_e5198 < _e5199) {
+                                    } else {
+                                        phi_5959_ = true;
+                                        break;
+                                    }
+                                    let _e5201 = local_474;
+                                    let _e5204 = global_7.member[_e5201];
+                                    local_475 = bitcast<f32>(_e5204);
+                                    let _e5206 = local_469;
+                                    if _e5206 {
+                                    } else {
+                                        phi_5959_ = true;
+                                        break;
+                                    }
+                                    let _e5207 = local_465;
+                                    let _e5209 = local_620[_e5207];
+                                    let _e5210 = local_475;
+                                    local_476 = (_e5210 * _e5209);
+                                    let _e5212 = local_466;
+                                    if _e5212 {
+                                    } else {
+                                        phi_5959_ = true;
+                                        break;
+                                    }
+                                    let _e5213 = local_465;
+                                    let _e5215 = local_473;
+                                    let _e5216 = local_476;
+                                    local_622[_e5213] = (_e5215 + _e5216);
+                                    let _e5218 = local_465;
+                                    phi_4374_ = (_e5218 + 1u);
                                 } else {
                                     phi_4374_ = u32();
                                 }
-                                let _e5205 = phi_4374_;
+                                let _e5221 = phi_4374_;
                                 continue;
                                 continuing {
-                                    let _e5206 = local_466;
-                                    phi_4373_ = _e5205;
-                                    phi_5959_ = _e5084;
-                                    break if !(_e5206);
+                                    let _e5222 = local_466;
+                                    phi_4373_ = _e5221;
+                                    phi_5959_ = _e5099;
+                                    break if !(_e5222);
                                 }
                             }
-                            let _e5209 = phi_5959_;
-                            phi_5975_ = _e5209;
-                            if _e5209 {
+                            let _e5225 = phi_5959_;
+                            phi_5975_ = _e5225;
+                            if _e5225 {
                                 break;
                             }
-                            let _e5210 = local_463;
-                            if ((_e5210 & 8u) == 0u) {
+                            let _e5226 = local_463;
+                            if ((_e5226 & 8u) == 0u) {
                                 phi_4516_ = 1f;
                             } else {
-                                let _e5213 = local_82;
-                                let _e5214 = (_e5213 + 3u);
-                                local_477 = _e5214;
-                                let _e5215 = local_4;
-                                if (_e5214 < _e5215) {
+                                let _e5229 = local_82;
+                                let _e5230 = (_e5229 + 3u);
+                                local_477 = _e5230;
+                                let _e5231 = local_4;
+                                if (_e5230 < _e5231) {
                                 } else {
                                     phi_5975_ = true;
                                     break;
                                 }
-                                let _e5217 = local_477;
-                                let _e5220 = global_7.member[_e5217];
-                                let _e5223 = local_619[3u];
-                                let _e5226 = local_621[3u];
-                                let _e5227 = ((bitcast<f32>(_e5220) * _e5223) * _e5226);
-                                let _e5229 = select(_e5227, 0f, (_e5227 < 0f));
-                                phi_4516_ = select(_e5229, 1f, (_e5229 > 1f));
+                                let _e5233 = local_477;
+                                let _e5236 = global_7.member[_e5233];
+                                let _e5239 = local_619[3u];
+                                let _e5242 = local_621[3u];
+                                let _e5243 = ((bitcast<f32>(_e5236) * _e5239) * _e5242);
+                                let _e5245 = select(_e5243, 0f, (_e5243 < 0f));
+                                phi_4516_ = select(_e5245, 1f, (_e5245 > 1f));
                             }
-                            let _e5233 = phi_4516_;
-                            let _e5234 = local_622;
-                            local_623 = _e5234;
-                            phi_5968_ = _e5209;
-                            phi_4565_ = _e5233;
-                            phi_4566_ = _e819;
+                            let _e5249 = phi_4516_;
+                            let _e5250 = local_622;
+                            local_623 = _e5250;
+                            phi_5968_ = _e5225;
+                            phi_4565_ = _e5249;
+                            phi_4566_ = _e820;
                         } else {
-                            let _e768 = global_3.member.member_2;
-                            if (_e768 == 1u) {
+                            let _e769 = global_3.member.member_2;
+                            if (_e769 == 1u) {
                                 phi_4554_ = true;
                             } else {
-                                let _e770 = local_13;
-                                let _e771 = local_8;
-                                if (_e770 < _e771) {
+                                let _e771 = local_13;
+                                let _e772 = local_8;
+                                if (_e771 < _e772) {
                                 } else {
                                     phi_5975_ = true;
                                     break;
                                 }
-                                let _e773 = local_13;
-                                let _e776 = global_11.member[_e773];
-                                let _e780 = ((bitcast<u32>(bitcast<f32>(_e776)) & 2139095040u) != 2139095040u);
-                                if _e780 {
+                                let _e774 = local_13;
+                                let _e777 = global_11.member[_e774];
+                                let _e781 = ((bitcast<u32>(bitcast<f32>(_e777)) & 2139095040u) != 2139095040u);
+                                if _e781 {
                                 } else {
                                     local_623 = array<f32, 3>(0f, 0f, 0f);
                                 }
-                                phi_4554_ = _e780;
+                                phi_4554_ = _e781;
                             }
-                            let _e782 = phi_4554_;
-                            local_478 = _e782;
-                            if _e782 {
-                                let _e786 = global_3.member.member.member_6;
-                                local_623 = array<f32, 3>(_e786[0], _e786[1], _e786[2]);
+                            let _e783 = phi_4554_;
+                            local_478 = _e783;
+                            if _e783 {
+                                let _e787 = global_3.member.member.member_6;
+                                local_623 = array<f32, 3>(_e787[0], _e787[1], _e787[2]);
                             }
-                            let _e791 = local_478;
+                            let _e792 = local_478;
                             phi_5968_ = _e740;
-                            phi_4565_ = select(0f, 1f, _e791);
+                            phi_4565_ = select(0f, 1f, _e792);
                             phi_4566_ = _e707;
                         }
-                        let _e5236 = phi_5968_;
-                        let _e5238 = phi_4565_;
-                        let _e5240 = phi_4566_;
-                        local_479 = _e5238;
-                        local_480 = _e5240;
-                        let _e5243 = global_3.member.member_2;
-                        if (_e5243 == 1u) {
+                        let _e5252 = phi_5968_;
+                        let _e5254 = phi_4565_;
+                        let _e5256 = phi_4566_;
+                        local_479 = _e5254;
+                        local_480 = _e5256;
+                        let _e5259 = global_3.member.member_2;
+                        if (_e5259 == 1u) {
                             phi_4574_ = 0u;
                             loop {
-                                let _e5389 = phi_4574_;
-                                local_481 = _e5389;
-                                let _e5390 = local_481;
-                                let _e5391 = (_e5390 < 3u);
-                                local_482 = _e5391;
-                                if _e5391 {
-                                    let _e5392 = local_13;
-                                    let _e5394 = local_481;
-                                    let _e5395 = ((3u * _e5392) + _e5394);
-                                    local_483 = _e5395;
-                                    let _e5396 = local_7;
-                                    let _e5397 = (_e5395 < _e5396);
-                                    local_484 = _e5397;
-                                    if _e5397 {
+                                let _e5405 = phi_4574_;
+                                local_481 = _e5405;
+                                let _e5406 = local_481;
+                                let _e5407 = (_e5406 < 3u);
+                                local_482 = _e5407;
+                                if _e5407 {
+                                    let _e5408 = local_13;
+                                    let _e5410 = local_481;
+                                    let _e5411 = ((3u * _e5408) + _e5410);
+                                    local_483 = _e5411;
+                                    let _e5412 = local_7;
+                                    let _e5413 = (_e5411 < _e5412);
+                                    local_484 = _e5413;
+                                    if _e5413 {
                                     } else {
                                         phi_5965_ = true;
                                         break;
                                     }
-                                    let _e5398 = local_483;
-                                    let _e5401 = global_10.member[_e5398];
-                                    local_485 = bitcast<f32>(_e5401);
-                                    let _e5403 = local_482;
-                                    if _e5403 {
+                                    let _e5414 = local_483;
+                                    let _e5417 = global_10.member[_e5414];
+                                    local_485 = bitcast<f32>(_e5417);
+                                    let _e5419 = local_482;
+                                    if _e5419 {
                                     } else {
                                         phi_5965_ = true;
                                         break;
                                     }
-                                    let _e5404 = local_481;
-                                    let _e5406 = local_623[_e5404];
-                                    let _e5407 = local_479;
-                                    let _e5409 = local_485;
-                                    local_486 = bitcast<u32>((_e5409 + (_e5407 * _e5406)));
-                                    let _e5412 = local_484;
-                                    if _e5412 {
+                                    let _e5420 = local_481;
+                                    let _e5422 = local_623[_e5420];
+                                    let _e5423 = local_479;
+                                    let _e5425 = local_485;
+                                    local_486 = bitcast<u32>((_e5425 + (_e5423 * _e5422)));
+                                    let _e5428 = local_484;
+                                    if _e5428 {
                                     } else {
                                         phi_5965_ = true;
                                         break;
                                     }
-                                    let _e5413 = local_486;
-                                    global_10.member[_e5398] = _e5413;
-                                    let _e5414 = local_481;
-                                    phi_4575_ = (_e5414 + 1u);
+                                    let _e5429 = local_486;
+                                    global_10.member[_e5414] = _e5429;
+                                    let _e5430 = local_481;
+                                    phi_4575_ = (_e5430 + 1u);
                                 } else {
                                     phi_4575_ = u32();
                                 }
-                                let _e5417 = phi_4575_;
+                                let _e5433 = phi_4575_;
                                 continue;
                                 continuing {
-                                    let _e5418 = local_482;
-                                    phi_4574_ = _e5417;
-                                    phi_5965_ = _e5236;
-                                    break if !(_e5418);
+                                    let _e5434 = local_482;
+                                    phi_4574_ = _e5433;
+                                    phi_5965_ = _e5252;
+                                    break if !(_e5434);
                                 }
                             }
-                            let _e5421 = phi_5965_;
-                            phi_5975_ = _e5421;
-                            if _e5421 {
+                            let _e5437 = phi_5965_;
+                            phi_5975_ = _e5437;
+                            if _e5437 {
                                 break;
                             }
-                            phi_5978_ = _e5421;
+                            phi_5978_ = _e5437;
                         } else {
-                            let _e5245 = local_13;
-                            let _e5246 = (_e5245 * 5u);
-                            local_487 = _e5246;
-                            let _e5248 = local_623[0u];
-                            local_488 = bitcast<u32>(_e5248);
-                            let _e5250 = local_7;
-                            if (_e5246 < _e5250) {
+                            let _e5261 = local_13;
+                            let _e5262 = (_e5261 * 5u);
+                            local_487 = _e5262;
+                            let _e5264 = local_623[0u];
+                            local_488 = bitcast<u32>(_e5264);
+                            let _e5266 = local_7;
+                            if (_e5262 < _e5266) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e5252 = local_487;
-                            let _e5255 = local_488;
-                            global_10.member[_e5252] = _e5255;
-                            let _e5256 = local_487;
-                            let _e5257 = (_e5256 + 1u);
-                            local_489 = _e5257;
-                            let _e5259 = local_623[1u];
-                            local_490 = bitcast<u32>(_e5259);
-                            let _e5261 = local_7;
-                            if (_e5257 < _e5261) {
+                            let _e5268 = local_487;
+                            let _e5271 = local_488;
+                            global_10.member[_e5268] = _e5271;
+                            let _e5272 = local_487;
+                            let _e5273 = (_e5272 + 1u);
+                            local_489 = _e5273;
+                            let _e5275 = local_623[1u];
+                            local_490 = bitcast<u32>(_e5275);
+                            let _e5277 = local_7;
+                            if (_e5273 < _e5277) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e5263 = local_489;
-                            let _e5266 = local_490;
-                            global_10.member[_e5263] = _e5266;
-                            let _e5267 = local_487;
-                            let _e5268 = (_e5267 + 2u);
-                            local_491 = _e5268;
-                            let _e5270 = local_623[2u];
-                            local_492 = bitcast<u32>(_e5270);
-                            let _e5272 = local_7;
-                            if (_e5268 < _e5272) {
+                            let _e5279 = local_489;
+                            let _e5282 = local_490;
+                            global_10.member[_e5279] = _e5282;
+                            let _e5283 = local_487;
+                            let _e5284 = (_e5283 + 2u);
+                            local_491 = _e5284;
+                            let _e5286 = local_623[2u];
+                            local_492 = bitcast<u32>(_e5286);
+                            let _e5288 = local_7;
+                            if (_e5284 < _e5288) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e5274 = local_491;
-                            let _e5277 = local_492;
-                            global_10.member[_e5274] = _e5277;
-                            let _e5278 = local_487;
-                            let _e5279 = (_e5278 + 3u);
-                            local_493 = _e5279;
-                            let _e5280 = local_479;
-                            local_494 = bitcast<u32>(_e5280);
-                            let _e5282 = local_7;
-                            if (_e5279 < _e5282) {
+                            let _e5290 = local_491;
+                            let _e5293 = local_492;
+                            global_10.member[_e5290] = _e5293;
+                            let _e5294 = local_487;
+                            let _e5295 = (_e5294 + 3u);
+                            local_493 = _e5295;
+                            let _e5296 = local_479;
+                            local_494 = bitcast<u32>(_e5296);
+                            let _e5298 = local_7;
+                            if (_e5295 < _e5298) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e5284 = local_493;
-                            let _e5287 = local_494;
-                            global_10.member[_e5284] = _e5287;
-                            let _e5288 = local_487;
-                            let _e5289 = (_e5288 + 4u);
-                            local_495 = _e5289;
-                            let _e5290 = local_480;
-                            local_496 = bitcast<u32>(_e5290);
-                            let _e5292 = local_7;
-                            if (_e5289 < _e5292) {
+                            let _e5300 = local_493;
+                            let _e5303 = local_494;
+                            global_10.member[_e5300] = _e5303;
+                            let _e5304 = local_487;
+                            let _e5305 = (_e5304 + 4u);
+                            local_495 = _e5305;
+                            let _e5306 = local_480;
+                            local_496 = bitcast<u32>(_e5306);
+                            let _e5308 = local_7;
+                            if (_e5305 < _e5308) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e5294 = local_495;
-                            let _e5297 = local_496;
-                            global_10.member[_e5294] = _e5297;
-                            let _e5300 = global_3.member.member_4;
-                            local_497 = _e5300;
-                            let _e5301 = local_16;
-                            if _e5301 {
-                                let _e5302 = local_479;
-                                if (_e5302 < 1f) {
-                                    phi_4788_ = _e5240;
+                            let _e5310 = local_495;
+                            let _e5313 = local_496;
+                            global_10.member[_e5310] = _e5313;
+                            let _e5316 = global_3.member.member_4;
+                            local_497 = _e5316;
+                            let _e5317 = local_16;
+                            if _e5317 {
+                                let _e5318 = local_479;
+                                if (_e5318 < 1f) {
+                                    phi_4788_ = _e5256;
                                 } else {
-                                    let _e5304 = local_480;
-                                    let _e5305 = local_497;
-                                    local_498 = (_e5304 * _e5305);
-                                    let _e5307 = local_496;
-                                    if (_e5307 == 0u) {
+                                    let _e5320 = local_480;
+                                    let _e5321 = local_497;
+                                    local_498 = (_e5320 * _e5321);
+                                    let _e5323 = local_496;
+                                    if (_e5323 == 0u) {
                                         phi_4729_ = false;
                                     } else {
-                                        let _e5309 = local_496;
-                                        phi_4729_ = (_e5309 <= 2139095040u);
+                                        let _e5325 = local_496;
+                                        phi_4729_ = (_e5325 <= 2139095040u);
                                     }
-                                    let _e5312 = phi_4729_;
-                                    if _e5312 {
-                                        let _e5313 = local_498;
-                                        if (_e5313 >= 0f) {
-                                            let _e5315 = local_498;
-                                            let _e5318 = ((bitcast<u32>(_e5315) & 2147483647u) > 2139095040u);
-                                            if _e5318 {
+                                    let _e5328 = phi_4729_;
+                                    if _e5328 {
+                                        let _e5329 = local_498;
+                                        if (_e5329 >= 0f) {
+                                            let _e5331 = local_498;
+                                            let _e5334 = ((bitcast<u32>(_e5331) & 2147483647u) > 2139095040u);
+                                            if _e5334 {
                                                 phi_4760_ = f32();
                                                 phi_4761_ = f32();
                                                 phi_4762_ = false;
                                             } else {
-                                                let _e5319 = local_498;
-                                                let _e5320 = (_e5319 == 0f);
-                                                local_499 = _e5320;
-                                                if _e5320 {
+                                                let _e5335 = local_498;
+                                                let _e5336 = (_e5335 == 0f);
+                                                local_499 = _e5336;
+                                                if _e5336 {
                                                     phi_4758_ = f32();
                                                     phi_4759_ = true;
                                                 } else {
-                                                    let _e5324 = global_3.member.member_3.member_1;
-                                                    local_500 = _e5324;
-                                                    let _e5325 = local_498;
-                                                    let _e5326 = (_e5325 >= _e5324);
-                                                    if _e5326 {
+                                                    let _e5340 = global_3.member.member_3.member_1;
+                                                    local_500 = _e5340;
+                                                    let _e5341 = local_498;
+                                                    let _e5342 = (_e5341 >= _e5340);
+                                                    if _e5342 {
                                                         phi_4756_ = f32();
                                                     } else {
-                                                        let _e5327 = local_498;
-                                                        let _e5328 = local_480;
-                                                        let _e5330 = local_500;
-                                                        let _e5331 = local_498;
-                                                        phi_4756_ = ((_e5327 * _e5328) / (_e5330 - _e5331));
+                                                        let _e5343 = local_498;
+                                                        let _e5344 = local_480;
+                                                        let _e5346 = local_500;
+                                                        let _e5347 = local_498;
+                                                        phi_4756_ = ((_e5343 * _e5344) / (_e5346 - _e5347));
                                                     }
-                                                    let _e5335 = phi_4756_;
-                                                    phi_4758_ = _e5335;
-                                                    phi_4759_ = _e5326;
+                                                    let _e5351 = phi_4756_;
+                                                    phi_4758_ = _e5351;
+                                                    phi_4759_ = _e5342;
                                                 }
-                                                let _e5337 = phi_4758_;
-                                                let _e5339 = phi_4759_;
-                                                let _e5340 = local_499;
-                                                let _e5341 = local_609;
-                                                phi_4760_ = select(_e5341, 0f, _e5340);
-                                                phi_4761_ = _e5337;
-                                                phi_4762_ = _e5339;
+                                                let _e5353 = phi_4758_;
+                                                let _e5355 = phi_4759_;
+                                                let _e5356 = local_499;
+                                                let _e5357 = local_609;
+                                                phi_4760_ = select(_e5357, 0f, _e5356);
+                                                phi_4761_ = _e5353;
+                                                phi_4762_ = _e5355;
                                             }
-                                            let _e5344 = phi_4760_;
-                                            let _e5346 = phi_4761_;
-                                            let _e5348 = phi_4762_;
-                                            phi_4763_ = _e5344;
-                                            phi_4764_ = _e5346;
-                                            phi_4765_ = _e5318;
-                                            phi_4766_ = _e5348;
+                                            let _e5360 = phi_4760_;
+                                            let _e5362 = phi_4761_;
+                                            let _e5364 = phi_4762_;
+                                            phi_4763_ = _e5360;
+                                            phi_4764_ = _e5362;
+                                            phi_4765_ = _e5334;
+                                            phi_4766_ = _e5364;
                                         } else {
                                             phi_4763_ = f32();
                                             phi_4764_ = f32();
                                             phi_4765_ = true;
                                             phi_4766_ = false;
                                         }
-                                        let _e5350 = phi_4763_;
-                                        let _e5352 = phi_4764_;
-                                        let _e5354 = phi_4765_;
-                                        let _e5356 = phi_4766_;
-                                        phi_4767_ = _e5350;
-                                        phi_4768_ = _e5352;
-                                        phi_4769_ = _e5354;
-                                        phi_4770_ = _e5356;
+                                        let _e5366 = phi_4763_;
+                                        let _e5368 = phi_4764_;
+                                        let _e5370 = phi_4765_;
+                                        let _e5372 = phi_4766_;
+                                        phi_4767_ = _e5366;
+                                        phi_4768_ = _e5368;
+                                        phi_4769_ = _e5370;
+                                        phi_4770_ = _e5372;
                                     } else {
                                         phi_4767_ = f32();
                                         phi_4768_ = f32();
                                         phi_4769_ = true;
                                         phi_4770_ = false;
                                     }
-                                    let _e5358 = phi_4767_;
-                                    let _e5360 = phi_4768_;
-                                    let _e5362 = phi_4769_;
-                                    let _e5364 = phi_4770_;
-                                    let _e5365 = local_608;
-                                    let _e5369 = local_480;
-                                    let _e5370 = (_e5369 + select(_e5360, select(_e5358, _e5365, _e5362), select(_e5364, true, _e5362)));
-                                    let _e5374 = local_609;
-                                    phi_4788_ = select(_e5374, _e5370, ((bitcast<u32>(_e5370) & 2139095040u) != 2139095040u));
+                                    let _e5374 = phi_4767_;
+                                    let _e5376 = phi_4768_;
+                                    let _e5378 = phi_4769_;
+                                    let _e5380 = phi_4770_;
+                                    let _e5381 = local_608;
+                                    let _e5385 = local_480;
+                                    let _e5386 = (_e5385 + select(_e5376, select(_e5374, _e5381, _e5378), select(_e5380, true, _e5378)));
+                                    let _e5390 = local_609;
+                                    phi_4788_ = select(_e5390, _e5386, ((bitcast<u32>(_e5386) & 2139095040u) != 2139095040u));
                                 }
-                                let _e5377 = phi_4788_;
-                                phi_4789_ = _e5377;
+                                let _e5393 = phi_4788_;
+                                phi_4789_ = _e5393;
                             } else {
                                 phi_4789_ = _e707;
                             }
-                            let _e5379 = phi_4789_;
-                            local_501 = bitcast<u32>(_e5379);
-                            let _e5381 = local_13;
-                            let _e5382 = local_8;
-                            if (_e5381 < _e5382) {
+                            let _e5395 = phi_4789_;
+                            local_501 = bitcast<u32>(_e5395);
+                            let _e5397 = local_13;
+                            let _e5398 = local_8;
+                            if (_e5397 < _e5398) {
                             } else {
                                 phi_5975_ = true;
                                 break;
                             }
-                            let _e5384 = local_13;
-                            let _e5387 = local_501;
-                            global_11.member[_e5384] = _e5387;
-                            phi_5978_ = _e5236;
+                            let _e5400 = local_13;
+                            let _e5403 = local_501;
+                            global_11.member[_e5400] = _e5403;
+                            phi_5978_ = _e5252;
                         }
-                        let _e5423 = phi_5978_;
-                        phi_5977_ = _e5423;
+                        let _e5439 = phi_5978_;
+                        phi_5977_ = _e5439;
                     } else {
                         phi_5977_ = _e740;
                     }
-                    let _e5425 = phi_5977_;
+                    let _e5441 = phi_5977_;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e5426 = local_11;
-                    let _e5427 = local_10;
-                    phi_5976_ = _e5425;
-                    phi_275_ = (_e5426 + _e5427);
+                    let _e5442 = local_11;
+                    let _e5443 = local_10;
+                    phi_5976_ = _e5441;
+                    phi_275_ = (_e5442 + _e5443);
                 } else {
                     phi_5976_ = _e740;
                     phi_275_ = u32();
                 }
-                let _e5430 = phi_5976_;
-                let _e5432 = phi_275_;
+                let _e5446 = phi_5976_;
+                let _e5448 = phi_275_;
                 continue;
                 continuing {
-                    let _e5433 = local_12;
-                    phi_5694_ = _e5430;
-                    phi_274_ = _e5432;
-                    phi_5975_ = _e5430;
-                    break if !(_e5433);
+                    let _e5449 = local_12;
+                    phi_5694_ = _e5446;
+                    phi_274_ = _e5448;
+                    phi_5975_ = _e5446;
+                    break if !(_e5449);
                 }
             }
-            let _e5436 = phi_5975_;
-            if _e5436 {
+            let _e5452 = phi_5975_;
+            if _e5452 {
                 break;
             }
             break;

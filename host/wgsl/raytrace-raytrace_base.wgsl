@@ -463,119 +463,119 @@ fn function_() {
                                     local_35 = _e376.member_1.member_1;
                                     let _e379 = local_12;
                                     let _e380 = local_12;
-                                    if (_e379 != _e380) {
+                                    if !((_e379 == _e380)) {
                                         phi_580_ = true;
                                     } else {
-                                        let _e382 = local_35;
-                                        let _e383 = local_12;
-                                        phi_580_ = (_e382 <= _e383);
+                                        let _e383 = local_35;
+                                        let _e384 = local_12;
+                                        phi_580_ = (_e383 <= _e384);
                                     }
-                                    let _e386 = phi_580_;
-                                    let _e387 = local_35;
-                                    let _e388 = local_12;
-                                    let _e390 = local_11;
+                                    let _e387 = phi_580_;
+                                    let _e388 = local_35;
+                                    let _e389 = local_12;
                                     let _e391 = local_11;
-                                    if (_e390 != _e391) {
+                                    let _e392 = local_11;
+                                    if !((_e391 == _e392)) {
                                         phi_595_ = true;
                                     } else {
-                                        let _e393 = local_35;
-                                        let _e394 = local_11;
-                                        phi_595_ = (_e393 >= _e394);
+                                        let _e395 = local_35;
+                                        let _e396 = local_11;
+                                        phi_595_ = (_e395 >= _e396);
                                     }
-                                    let _e397 = phi_595_;
-                                    let _e398 = local_35;
-                                    let _e399 = local_11;
-                                    phi_524_ = select(_e399, _e398, _e397);
-                                    phi_525_ = select(_e388, _e387, _e386);
+                                    let _e399 = phi_595_;
+                                    let _e400 = local_35;
+                                    let _e401 = local_11;
+                                    phi_524_ = select(_e401, _e400, _e399);
+                                    phi_525_ = select(_e389, _e388, _e387);
                                 } else {
                                     phi_524_ = _e161;
                                     phi_525_ = _e163;
                                 }
-                                let _e402 = phi_524_;
-                                let _e404 = phi_525_;
-                                let _e405 = local_10;
-                                phi_223_ = (_e405 + 1u);
-                                phi_226_ = _e402;
-                                phi_228_ = _e404;
+                                let _e404 = phi_524_;
+                                let _e406 = phi_525_;
+                                let _e407 = local_10;
+                                phi_223_ = (_e407 + 1u);
+                                phi_226_ = _e404;
+                                phi_228_ = _e406;
                             } else {
                                 phi_223_ = u32();
                                 phi_226_ = f32();
                                 phi_228_ = f32();
                             }
-                            let _e408 = phi_223_;
-                            let _e410 = phi_226_;
-                            let _e412 = phi_228_;
+                            let _e410 = phi_223_;
+                            let _e412 = phi_226_;
+                            let _e414 = phi_228_;
                             continue;
                             continuing {
-                                let _e413 = local_13;
-                                phi_222_ = _e408;
-                                phi_225_ = _e410;
-                                phi_227_ = _e412;
+                                let _e415 = local_13;
+                                phi_222_ = _e410;
+                                phi_225_ = _e412;
+                                phi_227_ = _e414;
                                 phi_606_ = _e108;
-                                break if !(_e413);
+                                break if !(_e415);
                             }
                         }
-                        let _e416 = phi_606_;
-                        phi_648_ = _e416;
-                        if _e416 {
+                        let _e418 = phi_606_;
+                        phi_648_ = _e418;
+                        if _e418 {
                             break;
                         }
-                        let _e417 = local_8;
-                        let _e418 = (2u * _e417);
-                        local_36 = _e418;
-                        let _e419 = local_12;
-                        local_37 = bitcast<u32>(_e419);
-                        let _e421 = local_3;
-                        if (_e418 < _e421) {
+                        let _e419 = local_8;
+                        let _e420 = (2u * _e419);
+                        local_36 = _e420;
+                        let _e421 = local_12;
+                        local_37 = bitcast<u32>(_e421);
+                        let _e423 = local_3;
+                        if (_e420 < _e423) {
                         } else {
                             phi_648_ = true;
                             break;
                         }
-                        let _e423 = local_36;
-                        let _e426 = local_37;
-                        global_6.member[_e423] = _e426;
-                        let _e427 = local_36;
-                        let _e428 = (_e427 + 1u);
-                        local_38 = _e428;
-                        let _e429 = local_11;
-                        local_39 = bitcast<u32>(_e429);
-                        let _e431 = local_3;
-                        if (_e428 < _e431) {
+                        let _e425 = local_36;
+                        let _e428 = local_37;
+                        global_6.member[_e425] = _e428;
+                        let _e429 = local_36;
+                        let _e430 = (_e429 + 1u);
+                        local_38 = _e430;
+                        let _e431 = local_11;
+                        local_39 = bitcast<u32>(_e431);
+                        let _e433 = local_3;
+                        if (_e430 < _e433) {
                         } else {
                             phi_648_ = true;
                             break;
                         }
-                        let _e433 = local_38;
-                        let _e436 = local_39;
-                        global_6.member[_e433] = _e436;
-                        phi_650_ = _e416;
+                        let _e435 = local_38;
+                        let _e438 = local_39;
+                        global_6.member[_e435] = _e438;
+                        phi_650_ = _e418;
                     } else {
                         phi_650_ = _e108;
                     }
-                    let _e438 = phi_650_;
+                    let _e440 = phi_650_;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e439 = local_6;
-                    let _e440 = local_5;
-                    phi_649_ = _e438;
-                    phi_145_ = (_e439 + _e440);
+                    let _e441 = local_6;
+                    let _e442 = local_5;
+                    phi_649_ = _e440;
+                    phi_145_ = (_e441 + _e442);
                 } else {
                     phi_649_ = _e108;
                     phi_145_ = u32();
                 }
-                let _e443 = phi_649_;
-                let _e445 = phi_145_;
+                let _e445 = phi_649_;
+                let _e447 = phi_145_;
                 continue;
                 continuing {
-                    let _e446 = local_7;
-                    phi_646_ = _e443;
-                    phi_144_ = _e445;
-                    phi_648_ = _e443;
-                    break if !(_e446);
+                    let _e448 = local_7;
+                    phi_646_ = _e445;
+                    phi_144_ = _e447;
+                    phi_648_ = _e445;
+                    break if !(_e448);
                 }
             }
-            let _e449 = phi_648_;
-            if _e449 {
+            let _e451 = phi_648_;
+            if _e451 {
                 break;
             }
             break;

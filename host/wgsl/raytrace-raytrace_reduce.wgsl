@@ -319,140 +319,140 @@ fn function_() {
                                         local_37 = bitcast<f32>(_e226);
                                         let _e228 = local_32;
                                         let _e229 = local_32;
-                                        if (_e228 != _e229) {
+                                        if !((_e228 == _e229)) {
                                             phi_377_ = true;
                                         } else {
-                                            let _e231 = local_37;
-                                            let _e232 = local_32;
-                                            phi_377_ = (_e231 <= _e232);
+                                            let _e232 = local_37;
+                                            let _e233 = local_32;
+                                            phi_377_ = (_e232 <= _e233);
                                         }
-                                        let _e235 = phi_377_;
-                                        let _e236 = local_37;
-                                        let _e237 = local_32;
-                                        let _e239 = local_36;
-                                        let _e240 = (_e239 + 1u);
-                                        local_38 = _e240;
-                                        let _e241 = local_1;
-                                        if (_e240 < _e241) {
+                                        let _e236 = phi_377_;
+                                        let _e237 = local_37;
+                                        let _e238 = local_32;
+                                        let _e240 = local_36;
+                                        let _e241 = (_e240 + 1u);
+                                        local_38 = _e241;
+                                        let _e242 = local_1;
+                                        if (_e241 < _e242) {
                                         } else {
                                             phi_399_ = true;
                                             break;
                                         }
-                                        let _e243 = local_38;
-                                        let _e246 = global_4.member[_e243];
-                                        local_39 = bitcast<f32>(_e246);
-                                        let _e248 = local_31;
+                                        let _e244 = local_38;
+                                        let _e247 = global_4.member[_e244];
+                                        local_39 = bitcast<f32>(_e247);
                                         let _e249 = local_31;
-                                        if (_e248 != _e249) {
+                                        let _e250 = local_31;
+                                        if !((_e249 == _e250)) {
                                             phi_392_ = true;
                                         } else {
-                                            let _e251 = local_39;
-                                            let _e252 = local_31;
-                                            phi_392_ = (_e251 >= _e252);
+                                            let _e253 = local_39;
+                                            let _e254 = local_31;
+                                            phi_392_ = (_e253 >= _e254);
                                         }
-                                        let _e255 = phi_392_;
-                                        let _e256 = local_39;
-                                        let _e257 = local_31;
-                                        phi_314_ = select(_e257, _e256, _e255);
-                                        phi_315_ = select(_e237, _e236, _e235);
+                                        let _e257 = phi_392_;
+                                        let _e258 = local_39;
+                                        let _e259 = local_31;
+                                        phi_314_ = select(_e259, _e258, _e257);
+                                        phi_315_ = select(_e238, _e237, _e236);
                                     } else {
                                         phi_314_ = _e193;
                                         phi_315_ = _e195;
                                     }
-                                    let _e260 = phi_314_;
-                                    let _e262 = phi_315_;
-                                    phi_316_ = _e260;
-                                    phi_317_ = _e262;
+                                    let _e262 = phi_314_;
+                                    let _e264 = phi_315_;
+                                    phi_316_ = _e262;
+                                    phi_317_ = _e264;
                                 } else {
                                     phi_316_ = _e193;
                                     phi_317_ = _e195;
                                 }
-                                let _e264 = phi_316_;
-                                let _e266 = phi_317_;
-                                let _e267 = local_30;
-                                phi_244_ = (_e267 + 1u);
-                                phi_247_ = _e264;
-                                phi_249_ = _e266;
+                                let _e266 = phi_316_;
+                                let _e268 = phi_317_;
+                                let _e269 = local_30;
+                                phi_244_ = (_e269 + 1u);
+                                phi_247_ = _e266;
+                                phi_249_ = _e268;
                             } else {
                                 phi_244_ = u32();
                                 phi_247_ = f32();
                                 phi_249_ = f32();
                             }
-                            let _e270 = phi_244_;
-                            let _e272 = phi_247_;
-                            let _e274 = phi_249_;
+                            let _e272 = phi_244_;
+                            let _e274 = phi_247_;
+                            let _e276 = phi_249_;
                             continue;
                             continuing {
-                                let _e275 = local_33;
-                                phi_243_ = _e270;
-                                phi_246_ = _e272;
-                                phi_248_ = _e274;
+                                let _e277 = local_33;
+                                phi_243_ = _e272;
+                                phi_246_ = _e274;
+                                phi_248_ = _e276;
                                 phi_399_ = _e170;
-                                break if !(_e275);
+                                break if !(_e277);
                             }
                         }
-                        let _e278 = phi_399_;
-                        phi_413_ = _e278;
-                        if _e278 {
+                        let _e280 = phi_399_;
+                        phi_413_ = _e280;
+                        if _e280 {
                             break;
                         }
-                        let _e279 = local_20;
-                        let _e280 = local_26;
-                        let _e282 = (2u * (_e279 + _e280));
-                        local_40 = _e282;
-                        let _e283 = local_32;
-                        local_41 = bitcast<u32>(_e283);
-                        let _e285 = local_1;
-                        if (_e282 < _e285) {
+                        let _e281 = local_20;
+                        let _e282 = local_26;
+                        let _e284 = (2u * (_e281 + _e282));
+                        local_40 = _e284;
+                        let _e285 = local_32;
+                        local_41 = bitcast<u32>(_e285);
+                        let _e287 = local_1;
+                        if (_e284 < _e287) {
                         } else {
                             phi_413_ = true;
                             break;
                         }
-                        let _e287 = local_40;
-                        let _e290 = local_41;
-                        global_4.member[_e287] = _e290;
-                        let _e291 = local_40;
-                        let _e292 = (_e291 + 1u);
-                        local_42 = _e292;
-                        let _e293 = local_31;
-                        local_43 = bitcast<u32>(_e293);
-                        let _e295 = local_1;
-                        if (_e292 < _e295) {
+                        let _e289 = local_40;
+                        let _e292 = local_41;
+                        global_4.member[_e289] = _e292;
+                        let _e293 = local_40;
+                        let _e294 = (_e293 + 1u);
+                        local_42 = _e294;
+                        let _e295 = local_31;
+                        local_43 = bitcast<u32>(_e295);
+                        let _e297 = local_1;
+                        if (_e294 < _e297) {
                         } else {
                             phi_413_ = true;
                             break;
                         }
-                        let _e297 = local_42;
-                        let _e300 = local_43;
-                        global_4.member[_e297] = _e300;
-                        phi_415_ = _e278;
+                        let _e299 = local_42;
+                        let _e302 = local_43;
+                        global_4.member[_e299] = _e302;
+                        phi_415_ = _e280;
                     } else {
                         phi_415_ = _e170;
                     }
-                    let _e302 = phi_415_;
+                    let _e304 = phi_415_;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e303 = local_24;
-                    let _e304 = local_23;
-                    phi_414_ = _e302;
-                    phi_216_ = (_e303 + _e304);
+                    let _e305 = local_24;
+                    let _e306 = local_23;
+                    phi_414_ = _e304;
+                    phi_216_ = (_e305 + _e306);
                 } else {
                     phi_414_ = _e170;
                     phi_216_ = u32();
                 }
-                let _e307 = phi_414_;
-                let _e309 = phi_216_;
+                let _e309 = phi_414_;
+                let _e311 = phi_216_;
                 continue;
                 continuing {
-                    let _e310 = local_25;
-                    phi_408_ = _e307;
-                    phi_215_ = _e309;
-                    phi_413_ = _e307;
-                    break if !(_e310);
+                    let _e312 = local_25;
+                    phi_408_ = _e309;
+                    phi_215_ = _e311;
+                    phi_413_ = _e309;
+                    break if !(_e312);
                 }
             }
-            let _e313 = phi_413_;
-            if _e313 {
+            let _e315 = phi_413_;
+            if _e315 {
                 break;
             }
             break;

@@ -558,131 +558,131 @@ fn function_() {
                                                 } else {
                                                     let _e459 = local_34;
                                                     let _e461 = ((_e459 * 16777215f) + 0.5f);
-                                                    phi_541_ = select(select(u32(_e461), 0u, (_e461 < 0f)), 4294967295u, (_e461 > 4294967000f));
+                                                    phi_541_ = select(select(u32(_e461), 0u, !((_e461 >= 0f))), 4294967295u, (_e461 > 4294967000f));
                                                 }
-                                                let _e468 = phi_541_;
-                                                phi_542_ = _e468;
+                                                let _e469 = phi_541_;
+                                                phi_542_ = _e469;
                                             } else {
                                                 phi_542_ = 0u;
                                             }
-                                            let _e470 = phi_542_;
-                                            local_37 = _e470;
-                                            let _e471 = local_24;
-                                            if (_e471 == 2u) {
-                                                let _e473 = local_22;
-                                                if _e473 {
-                                                    let _e474 = local_37;
-                                                    let _e475 = local_36;
-                                                    let _e477 = local_37;
-                                                    let _e478 = local_36;
-                                                    let _e479 = select(_e478, _e477, (_e474 < _e475));
-                                                    local_40 = _e479;
-                                                    if (_e479 < 2u) {
+                                            let _e471 = phi_542_;
+                                            local_37 = _e471;
+                                            let _e472 = local_24;
+                                            if (_e472 == 2u) {
+                                                let _e474 = local_22;
+                                                if _e474 {
+                                                    let _e475 = local_37;
+                                                    let _e476 = local_36;
+                                                    let _e478 = local_37;
+                                                    let _e479 = local_36;
+                                                    let _e480 = select(_e479, _e478, (_e475 < _e476));
+                                                    local_40 = _e480;
+                                                    if (_e480 < 2u) {
                                                         phi_564_ = 0f;
                                                     } else {
-                                                        let _e481 = local_40;
-                                                        phi_564_ = (f32((_e481 - 1u)) * 0.00000005960465f);
+                                                        let _e482 = local_40;
+                                                        phi_564_ = (f32((_e482 - 1u)) * 0.00000005960465f);
                                                     }
-                                                    let _e486 = phi_564_;
-                                                    phi_570_ = _e486;
+                                                    let _e487 = phi_564_;
+                                                    phi_570_ = _e487;
                                                 } else {
-                                                    let _e487 = local_34;
-                                                    let _e488 = local_23;
-                                                    let _e490 = local_34;
-                                                    let _e491 = local_23;
-                                                    phi_570_ = select(_e491, _e490, (_e487 < _e488));
+                                                    let _e488 = local_34;
+                                                    let _e489 = local_23;
+                                                    let _e491 = local_34;
+                                                    let _e492 = local_23;
+                                                    phi_570_ = select(_e492, _e491, (_e488 < _e489));
                                                 }
-                                                let _e494 = phi_570_;
-                                                local_38 = _e494;
-                                                if (_e494 > 0f) {
-                                                    let _e496 = local_38;
-                                                    phi_576_ = -(_e496);
+                                                let _e495 = phi_570_;
+                                                local_38 = _e495;
+                                                if (_e495 > 0f) {
+                                                    let _e497 = local_38;
+                                                    phi_576_ = -(_e497);
                                                 } else {
                                                     phi_576_ = _e84;
                                                 }
-                                                let _e499 = phi_576_;
-                                                phi_594_ = _e499;
+                                                let _e500 = phi_576_;
+                                                phi_594_ = _e500;
                                             } else {
-                                                let _e500 = local_22;
-                                                if _e500 {
-                                                    let _e501 = local_37;
-                                                    let _e502 = local_36;
-                                                    let _e504 = local_37;
-                                                    let _e505 = local_36;
-                                                    phi_593_ = (f32((select(_e505, _e504, (_e501 > _e502)) + 1u)) * 0.00000005960465f);
+                                                let _e501 = local_22;
+                                                if _e501 {
+                                                    let _e502 = local_37;
+                                                    let _e503 = local_36;
+                                                    let _e505 = local_37;
+                                                    let _e506 = local_36;
+                                                    phi_593_ = (f32((select(_e506, _e505, (_e502 > _e503)) + 1u)) * 0.00000005960465f);
                                                 } else {
-                                                    let _e510 = local_34;
-                                                    let _e511 = local_23;
-                                                    let _e513 = local_34;
-                                                    let _e514 = local_23;
-                                                    phi_593_ = select(_e514, _e513, (_e510 > _e511));
+                                                    let _e511 = local_34;
+                                                    let _e512 = local_23;
+                                                    let _e514 = local_34;
+                                                    let _e515 = local_23;
+                                                    phi_593_ = select(_e515, _e514, (_e511 > _e512));
                                                 }
-                                                let _e517 = phi_593_;
-                                                phi_594_ = _e517;
+                                                let _e518 = phi_593_;
+                                                phi_594_ = _e518;
                                             }
-                                            let _e519 = phi_594_;
-                                            phi_595_ = _e519;
+                                            let _e520 = phi_594_;
+                                            phi_595_ = _e520;
                                         } else {
                                             phi_595_ = f32();
                                         }
-                                        let _e521 = phi_595_;
-                                        let _e522 = local_35;
-                                        phi_597_ = _e521;
-                                        phi_598_ = select(true, false, _e522);
+                                        let _e522 = phi_595_;
+                                        let _e523 = local_35;
+                                        phi_597_ = _e522;
+                                        phi_598_ = select(true, false, _e523);
                                     } else {
                                         phi_597_ = f32();
                                         phi_598_ = true;
                                     }
-                                    let _e525 = phi_597_;
-                                    let _e527 = phi_598_;
-                                    phi_599_ = _e525;
-                                    phi_600_ = _e527;
+                                    let _e526 = phi_597_;
+                                    let _e528 = phi_598_;
+                                    phi_599_ = _e526;
+                                    phi_600_ = _e528;
                                 } else {
                                     phi_599_ = f32();
                                     phi_600_ = true;
                                 }
-                                let _e529 = phi_599_;
-                                let _e531 = phi_600_;
-                                let _e532 = local_42;
-                                phi_605_ = select(_e529, _e532, _e531);
+                                let _e530 = phi_599_;
+                                let _e532 = phi_600_;
+                                let _e533 = local_42;
+                                phi_605_ = select(_e530, _e533, _e532);
                             } else {
                                 phi_605_ = _e84;
                             }
-                            let _e535 = phi_605_;
-                            phi_606_ = _e535;
+                            let _e536 = phi_605_;
+                            phi_606_ = _e536;
                         }
-                        let _e537 = phi_606_;
-                        local_39 = bitcast<u32>(_e537);
-                        let _e539 = local_9;
-                        let _e540 = local_4;
-                        if (_e539 < _e540) {
+                        let _e538 = phi_606_;
+                        local_39 = bitcast<u32>(_e538);
+                        let _e540 = local_9;
+                        let _e541 = local_4;
+                        if (_e540 < _e541) {
                         } else {
                             phi_659_ = true;
                             break;
                         }
-                        let _e542 = local_9;
-                        let _e545 = local_39;
-                        global_7.member[_e542] = _e545;
+                        let _e543 = local_9;
+                        let _e546 = local_39;
+                        global_7.member[_e543] = _e546;
                     }
                     storageBarrier();
                     workgroupBarrier();
-                    let _e546 = local_7;
-                    let _e547 = local_6;
-                    phi_106_ = (_e546 + _e547);
+                    let _e547 = local_7;
+                    let _e548 = local_6;
+                    phi_106_ = (_e547 + _e548);
                 } else {
                     phi_106_ = u32();
                 }
-                let _e550 = phi_106_;
+                let _e551 = phi_106_;
                 continue;
                 continuing {
-                    let _e551 = local_8;
-                    phi_105_ = _e550;
+                    let _e552 = local_8;
+                    phi_105_ = _e551;
                     phi_659_ = false;
-                    break if !(_e551);
+                    break if !(_e552);
                 }
             }
-            let _e554 = phi_659_;
-            if _e554 {
+            let _e555 = phi_659_;
+            if _e555 {
                 break;
             }
             break;

@@ -1085,1836 +1085,1836 @@ fn function_() {
                                     if (_e997 < _e998) {
                                         let _e1000 = local_75;
                                         let _e1002 = local_75;
-                                        let _e1004 = local_75;
-                                        phi_1447_ = select(select(u32(_e1000), 0u, (_e1002 < 0f)), 4294967295u, (_e1004 > 4294967000f));
+                                        let _e1005 = local_75;
+                                        phi_1447_ = select(select(u32(_e1000), 0u, !((_e1002 >= 0f))), 4294967295u, (_e1005 > 4294967000f));
                                     } else {
                                         phi_1447_ = _e986;
                                     }
-                                    let _e1009 = phi_1447_;
-                                    phi_1448_ = _e1009;
+                                    let _e1010 = phi_1447_;
+                                    phi_1448_ = _e1010;
                                 }
-                                let _e1011 = phi_1448_;
-                                local_76 = _e1011;
+                                let _e1012 = phi_1448_;
+                                local_76 = _e1012;
                                 phi_3954_ = false;
                                 phi_1450_ = _e963;
                                 phi_1453_ = 1u;
                                 loop {
-                                    let _e1013 = phi_3954_;
-                                    let _e1015 = phi_1450_;
-                                    let _e1017 = phi_1453_;
-                                    local_77 = _e1017;
-                                    local_250 = _e1015;
-                                    let _e1018 = local_77;
-                                    let _e1019 = local_76;
-                                    let _e1020 = (_e1018 <= _e1019);
-                                    local_78 = _e1020;
-                                    if _e1020 {
-                                        phi_1462_ = _e1015;
+                                    let _e1014 = phi_3954_;
+                                    let _e1016 = phi_1450_;
+                                    let _e1018 = phi_1453_;
+                                    local_77 = _e1018;
+                                    local_250 = _e1016;
+                                    let _e1019 = local_77;
+                                    let _e1020 = local_76;
+                                    let _e1021 = (_e1019 <= _e1020);
+                                    local_78 = _e1021;
+                                    if _e1021 {
+                                        phi_1462_ = _e1016;
                                         phi_1465_ = 0u;
                                         loop {
-                                            let _e1022 = phi_1462_;
-                                            let _e1024 = phi_1465_;
-                                            local_79 = _e1022;
-                                            local_80 = _e1024;
-                                            local_249 = _e1022;
-                                            let _e1025 = local_77;
-                                            let _e1027 = local_80;
-                                            let _e1028 = (_e1027 < (6u * _e1025));
-                                            local_81 = _e1028;
-                                            if _e1028 {
-                                                let _e1029 = local_77;
-                                                let _e1030 = (_e1029 == 0u);
-                                                local_82 = _e1030;
-                                                if _e1030 {
+                                            let _e1023 = phi_1462_;
+                                            let _e1025 = phi_1465_;
+                                            local_79 = _e1023;
+                                            local_80 = _e1025;
+                                            local_249 = _e1023;
+                                            let _e1026 = local_77;
+                                            let _e1028 = local_80;
+                                            let _e1029 = (_e1028 < (6u * _e1026));
+                                            local_81 = _e1029;
+                                            if _e1029 {
+                                                let _e1030 = local_77;
+                                                let _e1031 = (_e1030 == 0u);
+                                                local_82 = _e1031;
+                                                if _e1031 {
                                                     phi_3944_ = true;
                                                     break;
                                                 }
-                                                let _e1031 = local_80;
-                                                let _e1032 = local_77;
-                                                local_83 = (_e1031 / _e1032);
-                                                let _e1034 = local_82;
-                                                if _e1034 {
+                                                let _e1032 = local_80;
+                                                let _e1033 = local_77;
+                                                local_83 = (_e1032 / _e1033);
+                                                let _e1035 = local_82;
+                                                if _e1035 {
                                                     phi_3944_ = true;
                                                     break;
                                                 }
-                                                let _e1035 = local_80;
-                                                let _e1036 = local_77;
-                                                local_84 = f32((_e1035 % _e1036));
-                                                let _e1039 = local_83;
-                                                if (_e1039 == 0u) {
+                                                let _e1036 = local_80;
+                                                let _e1037 = local_77;
+                                                local_84 = f32((_e1036 % _e1037));
+                                                let _e1040 = local_83;
+                                                if (_e1040 == 0u) {
                                                     phi_1517_ = array<f32, 2>(1f, 0f);
                                                 } else {
-                                                    let _e1041 = local_83;
-                                                    if (_e1041 == 1u) {
+                                                    let _e1042 = local_83;
+                                                    if (_e1042 == 1u) {
                                                         phi_1516_ = array<f32, 2>(0.5f, 0.8660254f);
                                                     } else {
-                                                        let _e1043 = local_83;
-                                                        if (_e1043 == 2u) {
+                                                        let _e1044 = local_83;
+                                                        if (_e1044 == 2u) {
                                                             phi_1515_ = array<f32, 2>(-0.5f, 0.8660254f);
                                                         } else {
-                                                            let _e1045 = local_83;
-                                                            if (_e1045 == 3u) {
+                                                            let _e1046 = local_83;
+                                                            if (_e1046 == 3u) {
                                                                 phi_1514_ = array<f32, 2>(-1f, 0f);
                                                             } else {
-                                                                let _e1047 = local_83;
-                                                                if (_e1047 == 4u) {
+                                                                let _e1048 = local_83;
+                                                                if (_e1048 == 4u) {
                                                                     phi_1513_ = array<f32, 2>(-0.5f, -0.8660254f);
                                                                 } else {
                                                                     phi_1513_ = array<f32, 2>(0.5f, -0.8660254f);
                                                                 }
-                                                                let _e1050 = phi_1513_;
-                                                                phi_1514_ = _e1050;
+                                                                let _e1051 = phi_1513_;
+                                                                phi_1514_ = _e1051;
                                                             }
-                                                            let _e1052 = phi_1514_;
-                                                            phi_1515_ = _e1052;
+                                                            let _e1053 = phi_1514_;
+                                                            phi_1515_ = _e1053;
                                                         }
-                                                        let _e1054 = phi_1515_;
-                                                        phi_1516_ = _e1054;
+                                                        let _e1055 = phi_1515_;
+                                                        phi_1516_ = _e1055;
                                                     }
-                                                    let _e1056 = phi_1516_;
-                                                    phi_1517_ = _e1056;
+                                                    let _e1057 = phi_1516_;
+                                                    phi_1517_ = _e1057;
                                                 }
-                                                let _e1058 = phi_1517_;
-                                                local_85 = _e1058;
-                                                let _e1059 = local_83;
-                                                let _e1061 = ((_e1059 + 1u) % 6u);
-                                                local_86 = _e1061;
-                                                if (_e1061 == 0u) {
+                                                let _e1059 = phi_1517_;
+                                                local_85 = _e1059;
+                                                let _e1060 = local_83;
+                                                let _e1062 = ((_e1060 + 1u) % 6u);
+                                                local_86 = _e1062;
+                                                if (_e1062 == 0u) {
                                                     phi_1552_ = array<f32, 2>(1f, 0f);
                                                 } else {
-                                                    let _e1063 = local_86;
-                                                    if (_e1063 == 1u) {
+                                                    let _e1064 = local_86;
+                                                    if (_e1064 == 1u) {
                                                         phi_1551_ = array<f32, 2>(0.5f, 0.8660254f);
                                                     } else {
-                                                        let _e1065 = local_86;
-                                                        if (_e1065 == 2u) {
+                                                        let _e1066 = local_86;
+                                                        if (_e1066 == 2u) {
                                                             phi_1550_ = array<f32, 2>(-0.5f, 0.8660254f);
                                                         } else {
-                                                            let _e1067 = local_86;
-                                                            if (_e1067 == 3u) {
+                                                            let _e1068 = local_86;
+                                                            if (_e1068 == 3u) {
                                                                 phi_1549_ = array<f32, 2>(-1f, 0f);
                                                             } else {
-                                                                let _e1069 = local_86;
-                                                                if (_e1069 == 4u) {
+                                                                let _e1070 = local_86;
+                                                                if (_e1070 == 4u) {
                                                                     phi_1548_ = array<f32, 2>(-0.5f, -0.8660254f);
                                                                 } else {
                                                                     phi_1548_ = array<f32, 2>(0.5f, -0.8660254f);
                                                                 }
-                                                                let _e1072 = phi_1548_;
-                                                                phi_1549_ = _e1072;
+                                                                let _e1073 = phi_1548_;
+                                                                phi_1549_ = _e1073;
                                                             }
-                                                            let _e1074 = phi_1549_;
-                                                            phi_1550_ = _e1074;
+                                                            let _e1075 = phi_1549_;
+                                                            phi_1550_ = _e1075;
                                                         }
-                                                        let _e1076 = phi_1550_;
-                                                        phi_1551_ = _e1076;
+                                                        let _e1077 = phi_1550_;
+                                                        phi_1551_ = _e1077;
                                                     }
-                                                    let _e1078 = phi_1551_;
-                                                    phi_1552_ = _e1078;
+                                                    let _e1079 = phi_1551_;
+                                                    phi_1552_ = _e1079;
                                                 }
-                                                let _e1080 = phi_1552_;
-                                                let _e1081 = local_77;
-                                                let _e1082 = f32(_e1081);
-                                                let _e1083 = local_85;
-                                                let _e1088 = local_84;
-                                                let _e1091 = local_85;
-                                                let _e1096 = local_84;
-                                                let _e1099 = local_239;
-                                                let _e1100 = (((_e1083[0] * _e1082) + ((_e1080[0] - _e1083[0]) * _e1088)) * _e1099);
-                                                let _e1101 = local_239;
-                                                let _e1102 = (((_e1091[1] * _e1082) + ((_e1080[1] - _e1091[1]) * _e1096)) * _e1101);
-                                                let _e1103 = local_12;
-                                                let _e1107 = floor(((f32(_e1103) + 0.5f) + _e1100));
-                                                let _e1108 = local_13;
-                                                let _e1112 = floor(((f32(_e1108) + 0.5f) + _e1102));
-                                                let _e1114 = select(0f, _e1107, (_e1107 > 0f));
-                                                let _e1115 = local_72;
-                                                let _e1117 = f32((_e1115 - 1u));
-                                                let _e1119 = select(_e1117, _e1114, (_e1114 < _e1117));
-                                                let _e1126 = select(0f, _e1112, (_e1112 > 0f));
-                                                let _e1127 = local_73;
-                                                let _e1129 = f32((_e1127 - 1u));
-                                                let _e1131 = select(_e1129, _e1126, (_e1126 < _e1129));
-                                                let _e1137 = local_72;
-                                                let _e1140 = (9u * ((select(select(u32(_e1131), 0u, (_e1131 < 0f)), 4294967295u, (_e1131 > 4294967000f)) * _e1137) + select(select(u32(_e1119), 0u, (_e1119 < 0f)), 4294967295u, (_e1119 > 4294967000f))));
-                                                local_87 = _e1140;
-                                                local_88 = sqrt(((_e1100 * _e1100) + (_e1102 * _e1102)));
-                                                let _e1145 = (_e1140 + 8u);
-                                                local_89 = _e1145;
-                                                let _e1146 = local_1;
-                                                if (_e1145 < _e1146) {
+                                                let _e1081 = phi_1552_;
+                                                let _e1082 = local_77;
+                                                let _e1083 = f32(_e1082);
+                                                let _e1084 = local_85;
+                                                let _e1089 = local_84;
+                                                let _e1092 = local_85;
+                                                let _e1097 = local_84;
+                                                let _e1100 = local_239;
+                                                let _e1101 = (((_e1084[0] * _e1083) + ((_e1081[0] - _e1084[0]) * _e1089)) * _e1100);
+                                                let _e1102 = local_239;
+                                                let _e1103 = (((_e1092[1] * _e1083) + ((_e1081[1] - _e1092[1]) * _e1097)) * _e1102);
+                                                let _e1104 = local_12;
+                                                let _e1108 = floor(((f32(_e1104) + 0.5f) + _e1101));
+                                                let _e1109 = local_13;
+                                                let _e1113 = floor(((f32(_e1109) + 0.5f) + _e1103));
+                                                let _e1115 = select(0f, _e1108, (_e1108 > 0f));
+                                                let _e1116 = local_72;
+                                                let _e1118 = f32((_e1116 - 1u));
+                                                let _e1120 = select(_e1118, _e1115, (_e1115 < _e1118));
+                                                let _e1128 = select(0f, _e1113, (_e1113 > 0f));
+                                                let _e1129 = local_73;
+                                                let _e1131 = f32((_e1129 - 1u));
+                                                let _e1133 = select(_e1131, _e1128, (_e1128 < _e1131));
+                                                let _e1140 = local_72;
+                                                let _e1143 = (9u * ((select(select(u32(_e1133), 0u, !((_e1133 >= 0f))), 4294967295u, (_e1133 > 4294967000f)) * _e1140) + select(select(u32(_e1120), 0u, !((_e1120 >= 0f))), 4294967295u, (_e1120 > 4294967000f))));
+                                                local_87 = _e1143;
+                                                local_88 = sqrt(((_e1101 * _e1101) + (_e1103 * _e1103)));
+                                                let _e1148 = (_e1143 + 8u);
+                                                local_89 = _e1148;
+                                                let _e1149 = local_1;
+                                                if (_e1148 < _e1149) {
                                                 } else {
                                                     phi_3944_ = true;
                                                     break;
                                                 }
-                                                let _e1148 = local_89;
-                                                let _e1151 = global_3.member[_e1148];
-                                                let _e1152 = bitcast<f32>(_e1151);
-                                                local_90 = _e1152;
-                                                if ((bitcast<u32>(_e1152) & 2147483647u) > 2139095040u) {
-                                                    phi_2164_ = _e1022;
+                                                let _e1151 = local_89;
+                                                let _e1154 = global_3.member[_e1151];
+                                                let _e1155 = bitcast<f32>(_e1154);
+                                                local_90 = _e1155;
+                                                if ((bitcast<u32>(_e1155) & 2147483647u) > 2139095040u) {
+                                                    phi_2164_ = _e1023;
                                                 } else {
-                                                    let _e1156 = local_87;
-                                                    let _e1157 = (_e1156 + 3u);
-                                                    local_91 = _e1157;
-                                                    let _e1158 = local_1;
-                                                    if (_e1157 < _e1158) {
+                                                    let _e1159 = local_87;
+                                                    let _e1160 = (_e1159 + 3u);
+                                                    local_91 = _e1160;
+                                                    let _e1161 = local_1;
+                                                    if (_e1160 < _e1161) {
                                                     } else {
                                                         phi_3944_ = true;
                                                         break;
                                                     }
-                                                    let _e1160 = local_91;
-                                                    let _e1163 = global_3.member[_e1160];
-                                                    let _e1164 = bitcast<f32>(_e1163);
-                                                    local_92 = _e1164;
-                                                    if (_e1164 > 0f) {
-                                                        let _e1166 = local_87;
-                                                        let _e1167 = local_1;
-                                                        if (_e1166 < _e1167) {
-                                                        } else {
-                                                            phi_3944_ = true;
-                                                            break;
-                                                        }
+                                                    let _e1163 = local_91;
+                                                    let _e1166 = global_3.member[_e1163];
+                                                    let _e1167 = bitcast<f32>(_e1166);
+                                                    local_92 = _e1167;
+                                                    if (_e1167 > 0f) {
                                                         let _e1169 = local_87;
-                                                        let _e1172 = global_3.member[_e1169];
-                                                        local_93 = bitcast<f32>(_e1172);
-                                                        let _e1174 = local_87;
-                                                        let _e1175 = (_e1174 + 1u);
-                                                        local_94 = _e1175;
-                                                        let _e1176 = local_1;
-                                                        if (_e1175 < _e1176) {
+                                                        let _e1170 = local_1;
+                                                        if (_e1169 < _e1170) {
                                                         } else {
                                                             phi_3944_ = true;
                                                             break;
                                                         }
-                                                        let _e1178 = local_94;
-                                                        let _e1181 = global_3.member[_e1178];
-                                                        local_95 = bitcast<f32>(_e1181);
-                                                        let _e1183 = local_87;
-                                                        let _e1184 = (_e1183 + 2u);
-                                                        local_96 = _e1184;
-                                                        let _e1185 = local_1;
-                                                        if (_e1184 < _e1185) {
+                                                        let _e1172 = local_87;
+                                                        let _e1175 = global_3.member[_e1172];
+                                                        local_93 = bitcast<f32>(_e1175);
+                                                        let _e1177 = local_87;
+                                                        let _e1178 = (_e1177 + 1u);
+                                                        local_94 = _e1178;
+                                                        let _e1179 = local_1;
+                                                        if (_e1178 < _e1179) {
                                                         } else {
                                                             phi_3944_ = true;
                                                             break;
                                                         }
-                                                        let _e1187 = local_96;
-                                                        let _e1190 = global_3.member[_e1187];
-                                                        local_97 = bitcast<f32>(_e1190);
-                                                        let _e1192 = local_87;
-                                                        let _e1193 = (_e1192 + 7u);
-                                                        local_98 = _e1193;
-                                                        let _e1194 = local_1;
-                                                        if (_e1193 < _e1194) {
+                                                        let _e1181 = local_94;
+                                                        let _e1184 = global_3.member[_e1181];
+                                                        local_95 = bitcast<f32>(_e1184);
+                                                        let _e1186 = local_87;
+                                                        let _e1187 = (_e1186 + 2u);
+                                                        local_96 = _e1187;
+                                                        let _e1188 = local_1;
+                                                        if (_e1187 < _e1188) {
                                                         } else {
                                                             phi_3944_ = true;
                                                             break;
                                                         }
-                                                        let _e1196 = local_98;
-                                                        let _e1199 = global_3.member[_e1196];
-                                                        let _e1200 = bitcast<f32>(_e1199);
-                                                        local_99 = _e1200;
-                                                        local_100 = -(_e1200);
-                                                        let _e1202 = (-0.5f - _e1200);
-                                                        let _e1204 = select(0f, _e1202, (_e1202 > 0f));
-                                                        let _e1206 = select(1f, _e1204, (_e1204 < 1f));
-                                                        local_240 = _e1206;
-                                                        let _e1208 = local_92;
-                                                        let _e1209 = (_e1208 * (1f - _e1206));
-                                                        local_101 = _e1209;
-                                                        if (_e1209 <= 0f) {
-                                                            phi_1840_ = _e1022;
+                                                        let _e1190 = local_96;
+                                                        let _e1193 = global_3.member[_e1190];
+                                                        local_97 = bitcast<f32>(_e1193);
+                                                        let _e1195 = local_87;
+                                                        let _e1196 = (_e1195 + 7u);
+                                                        local_98 = _e1196;
+                                                        let _e1197 = local_1;
+                                                        if (_e1196 < _e1197) {
                                                         } else {
-                                                            let _e1211 = local_234;
-                                                            let _e1213 = local_234;
-                                                            local_241 = select(0f, _e1213, (_e1211 > 0f));
-                                                            let _e1215 = local_99;
+                                                            phi_3944_ = true;
+                                                            break;
+                                                        }
+                                                        let _e1199 = local_98;
+                                                        let _e1202 = global_3.member[_e1199];
+                                                        let _e1203 = bitcast<f32>(_e1202);
+                                                        local_99 = _e1203;
+                                                        local_100 = -(_e1203);
+                                                        let _e1205 = (-0.5f - _e1203);
+                                                        let _e1207 = select(0f, _e1205, (_e1205 > 0f));
+                                                        let _e1209 = select(1f, _e1207, (_e1207 < 1f));
+                                                        local_240 = _e1209;
+                                                        let _e1211 = local_92;
+                                                        let _e1212 = (_e1211 * (1f - _e1209));
+                                                        local_101 = _e1212;
+                                                        if (_e1212 <= 0f) {
+                                                            phi_1840_ = _e1023;
+                                                        } else {
+                                                            let _e1214 = local_234;
                                                             let _e1216 = local_234;
-                                                            let _e1217 = (_e1215 > _e1216);
-                                                            local_102 = _e1217;
-                                                            if _e1217 {
-                                                                let _e1223 = local_99;
-                                                                let _e1225 = local_100;
+                                                            local_241 = select(0f, _e1216, (_e1214 > 0f));
+                                                            let _e1218 = local_99;
+                                                            let _e1219 = local_234;
+                                                            let _e1220 = (_e1218 > _e1219);
+                                                            local_102 = _e1220;
+                                                            if _e1220 {
                                                                 let _e1226 = local_99;
-                                                                let _e1227 = select(_e1226, _e1225, (_e1223 < 0f));
-                                                                let _e1228 = local_241;
-                                                                let _e1230 = local_241;
-                                                                phi_1739_ = select(_e1230, _e1227, (_e1227 < _e1228));
+                                                                let _e1228 = local_100;
+                                                                let _e1229 = local_99;
+                                                                let _e1230 = select(_e1229, _e1228, (_e1226 < 0f));
+                                                                let _e1231 = local_241;
+                                                                let _e1233 = local_241;
+                                                                phi_1739_ = select(_e1233, _e1230, (_e1230 < _e1231));
                                                             } else {
-                                                                let _e1218 = local_99;
-                                                                let _e1220 = local_100;
                                                                 let _e1221 = local_99;
-                                                                phi_1739_ = select(_e1221, _e1220, (_e1218 < 0f));
+                                                                let _e1223 = local_100;
+                                                                let _e1224 = local_99;
+                                                                phi_1739_ = select(_e1224, _e1223, (_e1221 < 0f));
                                                             }
-                                                            let _e1233 = phi_1739_;
-                                                            local_103 = _e1233;
-                                                            let _e1234 = local_88;
-                                                            if (_e1234 == 0f) {
+                                                            let _e1236 = phi_1739_;
+                                                            local_103 = _e1236;
+                                                            let _e1237 = local_88;
+                                                            if (_e1237 == 0f) {
                                                                 phi_1757_ = 1f;
                                                             } else {
-                                                                let _e1236 = local_103;
-                                                                let _e1237 = local_88;
-                                                                let _e1239 = local_239;
-                                                                let _e1241 = ((_e1236 - _e1237) + (0.5f * _e1239));
-                                                                let _e1243 = select(0f, _e1241, (_e1241 > 0f));
-                                                                phi_1757_ = select(1f, _e1243, (_e1243 < 1f));
+                                                                let _e1239 = local_103;
+                                                                let _e1240 = local_88;
+                                                                let _e1242 = local_239;
+                                                                let _e1244 = ((_e1239 - _e1240) + (0.5f * _e1242));
+                                                                let _e1246 = select(0f, _e1244, (_e1244 > 0f));
+                                                                phi_1757_ = select(1f, _e1246, (_e1246 < 1f));
                                                             }
-                                                            let _e1247 = phi_1757_;
-                                                            let _e1248 = local_101;
-                                                            let _e1250 = local_103;
-                                                            let _e1251 = local_103;
-                                                            let _e1252 = (_e1250 * _e1251);
-                                                            let _e1255 = ((_e1248 * _e1247) / select(0.25f, _e1252, (_e1252 > 0.25f)));
-                                                            let _e1256 = local_79;
-                                                            let _e1259 = local_93;
-                                                            let _e1262 = local_79;
-                                                            let _e1265 = local_95;
-                                                            let _e1268 = local_79;
-                                                            let _e1271 = local_97;
-                                                            let _e1275 = local_79;
-                                                            let _e1282 = type_16(array<f32, 3>((_e1256.member[0] + (_e1255 * _e1259)), (_e1262.member[1] + (_e1255 * _e1265)), (_e1268.member[2] + (_e1255 * _e1271))), _e1275.member_1, _e1275.member_2, _e1275.member_3, _e1275.member_4, _e1275.member_5);
-                                                            let _e1283 = local_79;
-                                                            let _e1292 = type_16(_e1282.member, (_e1283.member_1 + _e1255), _e1282.member_2, _e1282.member_3, _e1282.member_4, _e1282.member_5);
-                                                            local_104 = _e1292;
-                                                            let _e1293 = local_102;
-                                                            if _e1293 {
-                                                                let _e1294 = local_235;
-                                                                if (_e1294 > 0f) {
-                                                                    let _e1296 = local_30;
-                                                                    let _e1297 = local_88;
-                                                                    let _e1299 = local_239;
-                                                                    let _e1301 = ((_e1296 - _e1297) + (0.5f * _e1299));
-                                                                    let _e1303 = select(0f, _e1301, (_e1301 > 0f));
-                                                                    let _e1306 = local_101;
-                                                                    let _e1308 = local_30;
-                                                                    let _e1309 = local_30;
-                                                                    let _e1310 = (_e1308 * _e1309);
-                                                                    let _e1313 = ((_e1306 * select(1f, _e1303, (_e1303 < 1f))) / select(0.25f, _e1310, (_e1310 > 0.25f)));
-                                                                    let _e1314 = local_79;
-                                                                    let _e1317 = local_93;
-                                                                    let _e1320 = local_79;
-                                                                    let _e1323 = local_95;
-                                                                    let _e1326 = local_79;
-                                                                    let _e1329 = local_97;
-                                                                    let _e1333 = local_104;
-                                                                    let _e1340 = type_16(_e1333.member, _e1333.member_1, array<f32, 3>((_e1314.member_2[0] + (_e1313 * _e1317)), (_e1320.member_2[1] + (_e1313 * _e1323)), (_e1326.member_2[2] + (_e1313 * _e1329))), _e1333.member_3, _e1333.member_4, _e1333.member_5);
-                                                                    let _e1341 = local_79;
-                                                                    phi_1838_ = type_16(_e1340.member, _e1340.member_1, _e1340.member_2, (_e1341.member_3 + _e1313), _e1340.member_4, _e1340.member_5);
+                                                            let _e1250 = phi_1757_;
+                                                            let _e1251 = local_101;
+                                                            let _e1253 = local_103;
+                                                            let _e1254 = local_103;
+                                                            let _e1255 = (_e1253 * _e1254);
+                                                            let _e1258 = ((_e1251 * _e1250) / select(0.25f, _e1255, (_e1255 > 0.25f)));
+                                                            let _e1259 = local_79;
+                                                            let _e1262 = local_93;
+                                                            let _e1265 = local_79;
+                                                            let _e1268 = local_95;
+                                                            let _e1271 = local_79;
+                                                            let _e1274 = local_97;
+                                                            let _e1278 = local_79;
+                                                            let _e1285 = type_16(array<f32, 3>((_e1259.member[0] + (_e1258 * _e1262)), (_e1265.member[1] + (_e1258 * _e1268)), (_e1271.member[2] + (_e1258 * _e1274))), _e1278.member_1, _e1278.member_2, _e1278.member_3, _e1278.member_4, _e1278.member_5);
+                                                            let _e1286 = local_79;
+                                                            let _e1295 = type_16(_e1285.member, (_e1286.member_1 + _e1258), _e1285.member_2, _e1285.member_3, _e1285.member_4, _e1285.member_5);
+                                                            local_104 = _e1295;
+                                                            let _e1296 = local_102;
+                                                            if _e1296 {
+                                                                let _e1297 = local_235;
+                                                                if (_e1297 > 0f) {
+                                                                    let _e1299 = local_30;
+                                                                    let _e1300 = local_88;
+                                                                    let _e1302 = local_239;
+                                                                    let _e1304 = ((_e1299 - _e1300) + (0.5f * _e1302));
+                                                                    let _e1306 = select(0f, _e1304, (_e1304 > 0f));
+                                                                    let _e1309 = local_101;
+                                                                    let _e1311 = local_30;
+                                                                    let _e1312 = local_30;
+                                                                    let _e1313 = (_e1311 * _e1312);
+                                                                    let _e1316 = ((_e1309 * select(1f, _e1306, (_e1306 < 1f))) / select(0.25f, _e1313, (_e1313 > 0.25f)));
+                                                                    let _e1317 = local_79;
+                                                                    let _e1320 = local_93;
+                                                                    let _e1323 = local_79;
+                                                                    let _e1326 = local_95;
+                                                                    let _e1329 = local_79;
+                                                                    let _e1332 = local_97;
+                                                                    let _e1336 = local_104;
+                                                                    let _e1343 = type_16(_e1336.member, _e1336.member_1, array<f32, 3>((_e1317.member_2[0] + (_e1316 * _e1320)), (_e1323.member_2[1] + (_e1316 * _e1326)), (_e1329.member_2[2] + (_e1316 * _e1332))), _e1336.member_3, _e1336.member_4, _e1336.member_5);
+                                                                    let _e1344 = local_79;
+                                                                    phi_1838_ = type_16(_e1343.member, _e1343.member_1, _e1343.member_2, (_e1344.member_3 + _e1316), _e1343.member_4, _e1343.member_5);
                                                                 } else {
-                                                                    phi_1838_ = _e1292;
+                                                                    phi_1838_ = _e1295;
                                                                 }
-                                                                let _e1352 = phi_1838_;
-                                                                phi_1839_ = _e1352;
+                                                                let _e1355 = phi_1838_;
+                                                                phi_1839_ = _e1355;
                                                             } else {
-                                                                phi_1839_ = _e1292;
+                                                                phi_1839_ = _e1295;
                                                             }
-                                                            let _e1354 = phi_1839_;
-                                                            phi_1840_ = _e1354;
+                                                            let _e1357 = phi_1839_;
+                                                            phi_1840_ = _e1357;
                                                         }
-                                                        let _e1356 = phi_1840_;
-                                                        local_105 = _e1356;
-                                                        let _e1357 = local_92;
-                                                        let _e1358 = local_240;
-                                                        let _e1359 = (_e1357 * _e1358);
-                                                        local_106 = _e1359;
-                                                        if (_e1359 <= 0f) {
-                                                            phi_1906_ = _e1356;
+                                                        let _e1359 = phi_1840_;
+                                                        local_105 = _e1359;
+                                                        let _e1360 = local_92;
+                                                        let _e1361 = local_240;
+                                                        let _e1362 = (_e1360 * _e1361);
+                                                        local_106 = _e1362;
+                                                        if (_e1362 <= 0f) {
+                                                            phi_1906_ = _e1359;
                                                         } else {
-                                                            let _e1361 = local_239;
-                                                            let _e1363 = local_239;
-                                                            let _e1365 = local_99;
-                                                            let _e1367 = local_100;
-                                                            let _e1369 = (((0.8660254f * _e1361) * _e1363) / ((_e1365 * -3.1415927f) * _e1367));
-                                                            let _e1372 = local_100;
-                                                            let _e1373 = local_88;
-                                                            let _e1375 = local_239;
-                                                            let _e1377 = ((_e1372 - _e1373) + (0.5f * _e1375));
-                                                            let _e1379 = select(0f, _e1377, (_e1377 > 0f));
-                                                            let _e1382 = local_106;
-                                                            let _e1384 = ((_e1382 * select(1f, _e1379, (_e1379 < 1f))) * select(1f, _e1369, (_e1369 < 1f)));
-                                                            let _e1385 = local_105;
-                                                            let _e1388 = local_93;
-                                                            let _e1391 = local_105;
-                                                            let _e1394 = local_95;
-                                                            let _e1397 = local_105;
-                                                            let _e1400 = local_97;
-                                                            let _e1404 = local_105;
-                                                            let _e1411 = type_16(_e1404.member, _e1404.member_1, _e1404.member_2, _e1404.member_3, array<f32, 3>((_e1385.member_4[0] + (_e1384 * _e1388)), (_e1391.member_4[1] + (_e1384 * _e1394)), (_e1397.member_4[2] + (_e1384 * _e1400))), _e1404.member_5);
-                                                            let _e1412 = local_105;
-                                                            phi_1906_ = type_16(_e1411.member, _e1411.member_1, _e1411.member_2, _e1411.member_3, _e1411.member_4, (_e1412.member_5 + _e1384));
+                                                            let _e1364 = local_239;
+                                                            let _e1366 = local_239;
+                                                            let _e1368 = local_99;
+                                                            let _e1370 = local_100;
+                                                            let _e1372 = (((0.8660254f * _e1364) * _e1366) / ((_e1368 * -3.1415927f) * _e1370));
+                                                            let _e1375 = local_100;
+                                                            let _e1376 = local_88;
+                                                            let _e1378 = local_239;
+                                                            let _e1380 = ((_e1375 - _e1376) + (0.5f * _e1378));
+                                                            let _e1382 = select(0f, _e1380, (_e1380 > 0f));
+                                                            let _e1385 = local_106;
+                                                            let _e1387 = ((_e1385 * select(1f, _e1382, (_e1382 < 1f))) * select(1f, _e1372, (_e1372 < 1f)));
+                                                            let _e1388 = local_105;
+                                                            let _e1391 = local_93;
+                                                            let _e1394 = local_105;
+                                                            let _e1397 = local_95;
+                                                            let _e1400 = local_105;
+                                                            let _e1403 = local_97;
+                                                            let _e1407 = local_105;
+                                                            let _e1414 = type_16(_e1407.member, _e1407.member_1, _e1407.member_2, _e1407.member_3, array<f32, 3>((_e1388.member_4[0] + (_e1387 * _e1391)), (_e1394.member_4[1] + (_e1387 * _e1397)), (_e1400.member_4[2] + (_e1387 * _e1403))), _e1407.member_5);
+                                                            let _e1415 = local_105;
+                                                            phi_1906_ = type_16(_e1414.member, _e1414.member_1, _e1414.member_2, _e1414.member_3, _e1414.member_4, (_e1415.member_5 + _e1387));
                                                         }
-                                                        let _e1423 = phi_1906_;
-                                                        phi_1908_ = _e1423;
+                                                        let _e1426 = phi_1906_;
+                                                        phi_1908_ = _e1426;
                                                     } else {
-                                                        phi_1908_ = _e1022;
+                                                        phi_1908_ = _e1023;
                                                     }
-                                                    let _e1425 = phi_1908_;
-                                                    local_107 = _e1425;
-                                                    let _e1426 = local_92;
-                                                    if (_e1426 < 1f) {
-                                                        let _e1428 = local_87;
-                                                        let _e1429 = (_e1428 + 4u);
-                                                        local_108 = _e1429;
-                                                        let _e1430 = local_1;
-                                                        if (_e1429 < _e1430) {
+                                                    let _e1428 = phi_1908_;
+                                                    local_107 = _e1428;
+                                                    let _e1429 = local_92;
+                                                    if (_e1429 < 1f) {
+                                                        let _e1431 = local_87;
+                                                        let _e1432 = (_e1431 + 4u);
+                                                        local_108 = _e1432;
+                                                        let _e1433 = local_1;
+                                                        if (_e1432 < _e1433) {
                                                         } else {
                                                             phi_3944_ = true;
                                                             break;
                                                         }
-                                                        let _e1432 = local_108;
-                                                        let _e1435 = global_3.member[_e1432];
-                                                        local_109 = bitcast<f32>(_e1435);
-                                                        let _e1437 = local_87;
-                                                        let _e1438 = (_e1437 + 5u);
-                                                        local_110 = _e1438;
-                                                        let _e1439 = local_1;
-                                                        if (_e1438 < _e1439) {
+                                                        let _e1435 = local_108;
+                                                        let _e1438 = global_3.member[_e1435];
+                                                        local_109 = bitcast<f32>(_e1438);
+                                                        let _e1440 = local_87;
+                                                        let _e1441 = (_e1440 + 5u);
+                                                        local_110 = _e1441;
+                                                        let _e1442 = local_1;
+                                                        if (_e1441 < _e1442) {
                                                         } else {
                                                             phi_3944_ = true;
                                                             break;
                                                         }
-                                                        let _e1441 = local_110;
-                                                        let _e1444 = global_3.member[_e1441];
-                                                        local_111 = bitcast<f32>(_e1444);
-                                                        let _e1446 = local_87;
-                                                        let _e1447 = (_e1446 + 6u);
-                                                        local_112 = _e1447;
-                                                        let _e1448 = local_1;
-                                                        if (_e1447 < _e1448) {
+                                                        let _e1444 = local_110;
+                                                        let _e1447 = global_3.member[_e1444];
+                                                        local_111 = bitcast<f32>(_e1447);
+                                                        let _e1449 = local_87;
+                                                        let _e1450 = (_e1449 + 6u);
+                                                        local_112 = _e1450;
+                                                        let _e1451 = local_1;
+                                                        if (_e1450 < _e1451) {
                                                         } else {
                                                             phi_3944_ = true;
                                                             break;
                                                         }
-                                                        let _e1450 = local_112;
-                                                        let _e1453 = global_3.member[_e1450];
-                                                        local_113 = bitcast<f32>(_e1453);
-                                                        let _e1455 = local_92;
-                                                        let _e1456 = (1f - _e1455);
-                                                        local_114 = _e1456;
-                                                        let _e1457 = local_90;
-                                                        local_115 = -(_e1457);
-                                                        let _e1459 = local_90;
-                                                        let _e1460 = (-0.5f - _e1459);
-                                                        let _e1462 = select(0f, _e1460, (_e1460 > 0f));
-                                                        let _e1464 = select(1f, _e1462, (_e1462 < 1f));
-                                                        local_242 = _e1464;
-                                                        let _e1466 = (_e1456 * (1f - _e1464));
-                                                        local_116 = _e1466;
-                                                        if (_e1466 <= 0f) {
-                                                            phi_2094_ = _e1425;
+                                                        let _e1453 = local_112;
+                                                        let _e1456 = global_3.member[_e1453];
+                                                        local_113 = bitcast<f32>(_e1456);
+                                                        let _e1458 = local_92;
+                                                        let _e1459 = (1f - _e1458);
+                                                        local_114 = _e1459;
+                                                        let _e1460 = local_90;
+                                                        local_115 = -(_e1460);
+                                                        let _e1462 = local_90;
+                                                        let _e1463 = (-0.5f - _e1462);
+                                                        let _e1465 = select(0f, _e1463, (_e1463 > 0f));
+                                                        let _e1467 = select(1f, _e1465, (_e1465 < 1f));
+                                                        local_242 = _e1467;
+                                                        let _e1469 = (_e1459 * (1f - _e1467));
+                                                        local_116 = _e1469;
+                                                        if (_e1469 <= 0f) {
+                                                            phi_2094_ = _e1428;
                                                         } else {
-                                                            let _e1468 = local_234;
-                                                            let _e1470 = local_234;
-                                                            local_243 = select(0f, _e1470, (_e1468 > 0f));
-                                                            let _e1472 = local_90;
+                                                            let _e1471 = local_234;
                                                             let _e1473 = local_234;
-                                                            let _e1474 = (_e1472 > _e1473);
-                                                            local_117 = _e1474;
-                                                            if _e1474 {
-                                                                let _e1480 = local_90;
-                                                                let _e1482 = local_115;
+                                                            local_243 = select(0f, _e1473, (_e1471 > 0f));
+                                                            let _e1475 = local_90;
+                                                            let _e1476 = local_234;
+                                                            let _e1477 = (_e1475 > _e1476);
+                                                            local_117 = _e1477;
+                                                            if _e1477 {
                                                                 let _e1483 = local_90;
-                                                                let _e1484 = select(_e1483, _e1482, (_e1480 < 0f));
-                                                                let _e1485 = local_243;
-                                                                let _e1487 = local_243;
-                                                                phi_1993_ = select(_e1487, _e1484, (_e1484 < _e1485));
+                                                                let _e1485 = local_115;
+                                                                let _e1486 = local_90;
+                                                                let _e1487 = select(_e1486, _e1485, (_e1483 < 0f));
+                                                                let _e1488 = local_243;
+                                                                let _e1490 = local_243;
+                                                                phi_1993_ = select(_e1490, _e1487, (_e1487 < _e1488));
                                                             } else {
-                                                                let _e1475 = local_90;
-                                                                let _e1477 = local_115;
                                                                 let _e1478 = local_90;
-                                                                phi_1993_ = select(_e1478, _e1477, (_e1475 < 0f));
+                                                                let _e1480 = local_115;
+                                                                let _e1481 = local_90;
+                                                                phi_1993_ = select(_e1481, _e1480, (_e1478 < 0f));
                                                             }
-                                                            let _e1490 = phi_1993_;
-                                                            local_118 = _e1490;
-                                                            let _e1491 = local_88;
-                                                            if (_e1491 == 0f) {
+                                                            let _e1493 = phi_1993_;
+                                                            local_118 = _e1493;
+                                                            let _e1494 = local_88;
+                                                            if (_e1494 == 0f) {
                                                                 phi_2011_ = 1f;
                                                             } else {
-                                                                let _e1493 = local_118;
-                                                                let _e1494 = local_88;
-                                                                let _e1496 = local_239;
-                                                                let _e1498 = ((_e1493 - _e1494) + (0.5f * _e1496));
-                                                                let _e1500 = select(0f, _e1498, (_e1498 > 0f));
-                                                                phi_2011_ = select(1f, _e1500, (_e1500 < 1f));
+                                                                let _e1496 = local_118;
+                                                                let _e1497 = local_88;
+                                                                let _e1499 = local_239;
+                                                                let _e1501 = ((_e1496 - _e1497) + (0.5f * _e1499));
+                                                                let _e1503 = select(0f, _e1501, (_e1501 > 0f));
+                                                                phi_2011_ = select(1f, _e1503, (_e1503 < 1f));
                                                             }
-                                                            let _e1504 = phi_2011_;
-                                                            let _e1505 = local_116;
-                                                            let _e1507 = local_118;
-                                                            let _e1508 = local_118;
-                                                            let _e1509 = (_e1507 * _e1508);
-                                                            let _e1512 = ((_e1505 * _e1504) / select(0.25f, _e1509, (_e1509 > 0.25f)));
-                                                            let _e1513 = local_107;
-                                                            let _e1516 = local_109;
-                                                            let _e1519 = local_107;
-                                                            let _e1522 = local_111;
-                                                            let _e1525 = local_107;
-                                                            let _e1528 = local_113;
-                                                            let _e1532 = local_107;
-                                                            let _e1539 = type_16(array<f32, 3>((_e1513.member[0] + (_e1512 * _e1516)), (_e1519.member[1] + (_e1512 * _e1522)), (_e1525.member[2] + (_e1512 * _e1528))), _e1532.member_1, _e1532.member_2, _e1532.member_3, _e1532.member_4, _e1532.member_5);
-                                                            let _e1540 = local_107;
-                                                            let _e1549 = type_16(_e1539.member, (_e1540.member_1 + _e1512), _e1539.member_2, _e1539.member_3, _e1539.member_4, _e1539.member_5);
-                                                            local_119 = _e1549;
-                                                            let _e1550 = local_117;
-                                                            if _e1550 {
-                                                                let _e1551 = local_235;
-                                                                if (_e1551 > 0f) {
-                                                                    let _e1553 = local_30;
-                                                                    let _e1554 = local_88;
-                                                                    let _e1556 = local_239;
-                                                                    let _e1558 = ((_e1553 - _e1554) + (0.5f * _e1556));
-                                                                    let _e1560 = select(0f, _e1558, (_e1558 > 0f));
-                                                                    let _e1563 = local_116;
-                                                                    let _e1565 = local_30;
-                                                                    let _e1566 = local_30;
-                                                                    let _e1567 = (_e1565 * _e1566);
-                                                                    let _e1570 = ((_e1563 * select(1f, _e1560, (_e1560 < 1f))) / select(0.25f, _e1567, (_e1567 > 0.25f)));
-                                                                    let _e1571 = local_107;
-                                                                    let _e1574 = local_109;
-                                                                    let _e1577 = local_107;
-                                                                    let _e1580 = local_111;
-                                                                    let _e1583 = local_107;
-                                                                    let _e1586 = local_113;
-                                                                    let _e1590 = local_119;
-                                                                    let _e1597 = type_16(_e1590.member, _e1590.member_1, array<f32, 3>((_e1571.member_2[0] + (_e1570 * _e1574)), (_e1577.member_2[1] + (_e1570 * _e1580)), (_e1583.member_2[2] + (_e1570 * _e1586))), _e1590.member_3, _e1590.member_4, _e1590.member_5);
-                                                                    let _e1598 = local_107;
-                                                                    phi_2092_ = type_16(_e1597.member, _e1597.member_1, _e1597.member_2, (_e1598.member_3 + _e1570), _e1597.member_4, _e1597.member_5);
+                                                            let _e1507 = phi_2011_;
+                                                            let _e1508 = local_116;
+                                                            let _e1510 = local_118;
+                                                            let _e1511 = local_118;
+                                                            let _e1512 = (_e1510 * _e1511);
+                                                            let _e1515 = ((_e1508 * _e1507) / select(0.25f, _e1512, (_e1512 > 0.25f)));
+                                                            let _e1516 = local_107;
+                                                            let _e1519 = local_109;
+                                                            let _e1522 = local_107;
+                                                            let _e1525 = local_111;
+                                                            let _e1528 = local_107;
+                                                            let _e1531 = local_113;
+                                                            let _e1535 = local_107;
+                                                            let _e1542 = type_16(array<f32, 3>((_e1516.member[0] + (_e1515 * _e1519)), (_e1522.member[1] + (_e1515 * _e1525)), (_e1528.member[2] + (_e1515 * _e1531))), _e1535.member_1, _e1535.member_2, _e1535.member_3, _e1535.member_4, _e1535.member_5);
+                                                            let _e1543 = local_107;
+                                                            let _e1552 = type_16(_e1542.member, (_e1543.member_1 + _e1515), _e1542.member_2, _e1542.member_3, _e1542.member_4, _e1542.member_5);
+                                                            local_119 = _e1552;
+                                                            let _e1553 = local_117;
+                                                            if _e1553 {
+                                                                let _e1554 = local_235;
+                                                                if (_e1554 > 0f) {
+                                                                    let _e1556 = local_30;
+                                                                    let _e1557 = local_88;
+                                                                    let _e1559 = local_239;
+                                                                    let _e1561 = ((_e1556 - _e1557) + (0.5f * _e1559));
+                                                                    let _e1563 = select(0f, _e1561, (_e1561 > 0f));
+                                                                    let _e1566 = local_116;
+                                                                    let _e1568 = local_30;
+                                                                    let _e1569 = local_30;
+                                                                    let _e1570 = (_e1568 * _e1569);
+                                                                    let _e1573 = ((_e1566 * select(1f, _e1563, (_e1563 < 1f))) / select(0.25f, _e1570, (_e1570 > 0.25f)));
+                                                                    let _e1574 = local_107;
+                                                                    let _e1577 = local_109;
+                                                                    let _e1580 = local_107;
+                                                                    let _e1583 = local_111;
+                                                                    let _e1586 = local_107;
+                                                                    let _e1589 = local_113;
+                                                                    let _e1593 = local_119;
+                                                                    let _e1600 = type_16(_e1593.member, _e1593.member_1, array<f32, 3>((_e1574.member_2[0] + (_e1573 * _e1577)), (_e1580.member_2[1] + (_e1573 * _e1583)), (_e1586.member_2[2] + (_e1573 * _e1589))), _e1593.member_3, _e1593.member_4, _e1593.member_5);
+                                                                    let _e1601 = local_107;
+                                                                    phi_2092_ = type_16(_e1600.member, _e1600.member_1, _e1600.member_2, (_e1601.member_3 + _e1573), _e1600.member_4, _e1600.member_5);
                                                                 } else {
-                                                                    phi_2092_ = _e1549;
+                                                                    phi_2092_ = _e1552;
                                                                 }
-                                                                let _e1609 = phi_2092_;
-                                                                phi_2093_ = _e1609;
+                                                                let _e1612 = phi_2092_;
+                                                                phi_2093_ = _e1612;
                                                             } else {
-                                                                phi_2093_ = _e1549;
+                                                                phi_2093_ = _e1552;
                                                             }
-                                                            let _e1611 = phi_2093_;
-                                                            phi_2094_ = _e1611;
+                                                            let _e1614 = phi_2093_;
+                                                            phi_2094_ = _e1614;
                                                         }
-                                                        let _e1613 = phi_2094_;
-                                                        local_120 = _e1613;
-                                                        let _e1614 = local_114;
-                                                        let _e1615 = local_242;
-                                                        let _e1616 = (_e1614 * _e1615);
-                                                        local_121 = _e1616;
-                                                        if (_e1616 <= 0f) {
-                                                            phi_2161_ = _e1613;
+                                                        let _e1616 = phi_2094_;
+                                                        local_120 = _e1616;
+                                                        let _e1617 = local_114;
+                                                        let _e1618 = local_242;
+                                                        let _e1619 = (_e1617 * _e1618);
+                                                        local_121 = _e1619;
+                                                        if (_e1619 <= 0f) {
+                                                            phi_2161_ = _e1616;
                                                         } else {
-                                                            let _e1618 = local_239;
-                                                            let _e1620 = local_239;
-                                                            let _e1622 = local_90;
-                                                            let _e1624 = local_115;
-                                                            let _e1626 = (((0.8660254f * _e1618) * _e1620) / ((_e1622 * -3.1415927f) * _e1624));
-                                                            let _e1629 = local_115;
-                                                            let _e1630 = local_88;
-                                                            let _e1632 = local_239;
-                                                            let _e1634 = ((_e1629 - _e1630) + (0.5f * _e1632));
-                                                            let _e1636 = select(0f, _e1634, (_e1634 > 0f));
-                                                            let _e1639 = local_121;
-                                                            let _e1641 = ((_e1639 * select(1f, _e1636, (_e1636 < 1f))) * select(1f, _e1626, (_e1626 < 1f)));
-                                                            let _e1642 = local_120;
-                                                            let _e1645 = local_109;
-                                                            let _e1648 = local_120;
-                                                            let _e1651 = local_111;
-                                                            let _e1654 = local_120;
-                                                            let _e1657 = local_113;
-                                                            let _e1661 = local_120;
-                                                            let _e1668 = type_16(_e1661.member, _e1661.member_1, _e1661.member_2, _e1661.member_3, array<f32, 3>((_e1642.member_4[0] + (_e1641 * _e1645)), (_e1648.member_4[1] + (_e1641 * _e1651)), (_e1654.member_4[2] + (_e1641 * _e1657))), _e1661.member_5);
-                                                            let _e1669 = local_120;
-                                                            phi_2161_ = type_16(_e1668.member, _e1668.member_1, _e1668.member_2, _e1668.member_3, _e1668.member_4, (_e1669.member_5 + _e1641));
+                                                            let _e1621 = local_239;
+                                                            let _e1623 = local_239;
+                                                            let _e1625 = local_90;
+                                                            let _e1627 = local_115;
+                                                            let _e1629 = (((0.8660254f * _e1621) * _e1623) / ((_e1625 * -3.1415927f) * _e1627));
+                                                            let _e1632 = local_115;
+                                                            let _e1633 = local_88;
+                                                            let _e1635 = local_239;
+                                                            let _e1637 = ((_e1632 - _e1633) + (0.5f * _e1635));
+                                                            let _e1639 = select(0f, _e1637, (_e1637 > 0f));
+                                                            let _e1642 = local_121;
+                                                            let _e1644 = ((_e1642 * select(1f, _e1639, (_e1639 < 1f))) * select(1f, _e1629, (_e1629 < 1f)));
+                                                            let _e1645 = local_120;
+                                                            let _e1648 = local_109;
+                                                            let _e1651 = local_120;
+                                                            let _e1654 = local_111;
+                                                            let _e1657 = local_120;
+                                                            let _e1660 = local_113;
+                                                            let _e1664 = local_120;
+                                                            let _e1671 = type_16(_e1664.member, _e1664.member_1, _e1664.member_2, _e1664.member_3, array<f32, 3>((_e1645.member_4[0] + (_e1644 * _e1648)), (_e1651.member_4[1] + (_e1644 * _e1654)), (_e1657.member_4[2] + (_e1644 * _e1660))), _e1664.member_5);
+                                                            let _e1672 = local_120;
+                                                            phi_2161_ = type_16(_e1671.member, _e1671.member_1, _e1671.member_2, _e1671.member_3, _e1671.member_4, (_e1672.member_5 + _e1644));
                                                         }
-                                                        let _e1680 = phi_2161_;
-                                                        phi_2163_ = _e1680;
+                                                        let _e1683 = phi_2161_;
+                                                        phi_2163_ = _e1683;
                                                     } else {
-                                                        phi_2163_ = _e1425;
+                                                        phi_2163_ = _e1428;
                                                     }
-                                                    let _e1682 = phi_2163_;
-                                                    phi_2164_ = _e1682;
+                                                    let _e1685 = phi_2163_;
+                                                    phi_2164_ = _e1685;
                                                 }
-                                                let _e1684 = phi_2164_;
-                                                let _e1685 = local_80;
-                                                phi_1463_ = _e1684;
-                                                phi_1466_ = (_e1685 + 1u);
+                                                let _e1687 = phi_2164_;
+                                                let _e1688 = local_80;
+                                                phi_1463_ = _e1687;
+                                                phi_1466_ = (_e1688 + 1u);
                                             } else {
                                                 phi_1463_ = type_16();
                                                 phi_1466_ = u32();
                                             }
-                                            let _e1688 = phi_1463_;
-                                            let _e1690 = phi_1466_;
+                                            let _e1691 = phi_1463_;
+                                            let _e1693 = phi_1466_;
                                             continue;
                                             continuing {
-                                                let _e1691 = local_81;
-                                                phi_1462_ = _e1688;
-                                                phi_1465_ = _e1690;
-                                                phi_3944_ = _e1013;
-                                                break if !(_e1691);
+                                                let _e1694 = local_81;
+                                                phi_1462_ = _e1691;
+                                                phi_1465_ = _e1693;
+                                                phi_3944_ = _e1014;
+                                                break if !(_e1694);
                                             }
                                         }
-                                        let _e1694 = phi_3944_;
-                                        phi_4151_ = _e1694;
-                                        if _e1694 {
+                                        let _e1697 = phi_3944_;
+                                        phi_4151_ = _e1697;
+                                        if _e1697 {
                                             break;
                                         }
-                                        let _e1695 = local_77;
-                                        phi_4152_ = _e1694;
-                                        let _e3004 = local_249;
-                                        phi_1451_ = _e3004;
-                                        phi_1454_ = (_e1695 + 1u);
+                                        let _e1698 = local_77;
+                                        phi_4152_ = _e1697;
+                                        let _e3013 = local_249;
+                                        phi_1451_ = _e3013;
+                                        phi_1454_ = (_e1698 + 1u);
                                     } else {
-                                        phi_4152_ = _e1013;
+                                        phi_4152_ = _e1014;
                                         phi_1451_ = type_16();
                                         phi_1454_ = u32();
                                     }
-                                    let _e1698 = phi_4152_;
-                                    let _e1700 = phi_1451_;
-                                    let _e1702 = phi_1454_;
+                                    let _e1701 = phi_4152_;
+                                    let _e1703 = phi_1451_;
+                                    let _e1705 = phi_1454_;
                                     continue;
                                     continuing {
-                                        let _e1703 = local_78;
-                                        phi_3954_ = _e1698;
-                                        phi_1450_ = _e1700;
-                                        phi_1453_ = _e1702;
-                                        phi_4151_ = _e1698;
-                                        break if !(_e1703);
+                                        let _e1706 = local_78;
+                                        phi_3954_ = _e1701;
+                                        phi_1450_ = _e1703;
+                                        phi_1453_ = _e1705;
+                                        phi_4151_ = _e1701;
+                                        break if !(_e1706);
                                     }
                                 }
-                                let _e1706 = phi_4151_;
-                                if _e1706 {
+                                let _e1709 = phi_4151_;
+                                if _e1709 {
                                     break;
                                 }
-                                phi_4171_ = _e1706;
-                                let _e3010 = local_250;
-                                phi_2167_ = _e3010;
+                                phi_4171_ = _e1709;
+                                let _e3019 = local_250;
+                                phi_2167_ = _e3019;
                             } else {
                                 phi_4171_ = false;
                                 phi_2167_ = type_16();
                             }
-                            let _e1708 = phi_4171_;
-                            let _e1710 = phi_2167_;
-                            let _e1711 = local_71;
-                            phi_4170_ = _e1708;
-                            phi_2169_ = _e1710;
-                            phi_2170_ = select(true, false, _e1711);
+                            let _e1711 = phi_4171_;
+                            let _e1713 = phi_2167_;
+                            let _e1714 = local_71;
+                            phi_4170_ = _e1711;
+                            phi_2169_ = _e1713;
+                            phi_2170_ = select(true, false, _e1714);
                         } else {
                             phi_4170_ = false;
                             phi_2169_ = type_16();
                             phi_2170_ = true;
                         }
-                        let _e1714 = phi_4170_;
-                        let _e1716 = phi_2169_;
-                        let _e1718 = phi_2170_;
-                        phi_4169_ = _e1714;
-                        phi_2171_ = _e1716;
-                        phi_2172_ = _e1718;
+                        let _e1717 = phi_4170_;
+                        let _e1719 = phi_2169_;
+                        let _e1721 = phi_2170_;
+                        phi_4169_ = _e1717;
+                        phi_2171_ = _e1719;
+                        phi_2172_ = _e1721;
                     } else {
                         phi_4169_ = false;
                         phi_2171_ = type_16();
                         phi_2172_ = true;
                     }
-                    let _e1720 = phi_4169_;
-                    let _e1722 = phi_2171_;
-                    let _e1724 = phi_2172_;
-                    if _e1724 {
-                        let _e1725 = local_69;
-                        if _e1725 {
-                            let _e1726 = local_7;
-                            if _e1726 {
-                                let _e1727 = local_6;
-                                phi_2196_ = (_e1727 + 1u);
+                    let _e1723 = phi_4169_;
+                    let _e1725 = phi_2171_;
+                    let _e1727 = phi_2172_;
+                    if _e1727 {
+                        let _e1728 = local_69;
+                        if _e1728 {
+                            let _e1729 = local_7;
+                            if _e1729 {
+                                let _e1730 = local_6;
+                                phi_2196_ = (_e1730 + 1u);
                             } else {
                                 phi_2196_ = _e305;
                             }
-                            let _e1730 = phi_2196_;
-                            local_122 = _e1730;
-                            let _e1731 = local_10;
-                            if _e1731 {
-                                let _e1732 = local_9;
-                                phi_2214_ = (_e1732 + 1u);
+                            let _e1733 = phi_2196_;
+                            local_122 = _e1733;
+                            let _e1734 = local_10;
+                            if _e1734 {
+                                let _e1735 = local_9;
+                                phi_2214_ = (_e1735 + 1u);
                             } else {
                                 phi_2214_ = _e315;
                             }
-                            let _e1735 = phi_2214_;
-                            local_123 = _e1735;
-                            let _e1738 = global_2.member.member_2;
-                            let _e1740 = select(_e1738, 1u, (_e1738 == 0u));
-                            let _e1741 = f32(_e1740);
-                            local_124 = _e1741;
-                            let _e1742 = local_30;
-                            let _e1743 = (_e1742 / _e1741);
-                            let _e1745 = select(1f, _e1743, (_e1743 > 1f));
-                            local_244 = _e1745;
-                            let _e1746 = local_30;
-                            let _e1749 = ceil(((_e1746 / _e1745) + 0.5f));
-                            local_125 = _e1749;
-                            if (_e1749 < 1f) {
+                            let _e1738 = phi_2214_;
+                            local_123 = _e1738;
+                            let _e1741 = global_2.member.member_2;
+                            let _e1743 = select(_e1741, 1u, (_e1741 == 0u));
+                            let _e1744 = f32(_e1743);
+                            local_124 = _e1744;
+                            let _e1745 = local_30;
+                            let _e1746 = (_e1745 / _e1744);
+                            let _e1748 = select(1f, _e1746, (_e1746 > 1f));
+                            local_244 = _e1748;
+                            let _e1749 = local_30;
+                            let _e1752 = ceil(((_e1749 / _e1748) + 0.5f));
+                            local_125 = _e1752;
+                            if (_e1752 < 1f) {
                                 phi_2251_ = 1u;
                             } else {
-                                let _e1751 = local_125;
-                                let _e1752 = local_124;
-                                if (_e1751 < _e1752) {
-                                    let _e1754 = local_125;
-                                    let _e1756 = local_125;
-                                    let _e1758 = local_125;
-                                    phi_2250_ = select(select(u32(_e1754), 0u, (_e1756 < 0f)), 4294967295u, (_e1758 > 4294967000f));
+                                let _e1754 = local_125;
+                                let _e1755 = local_124;
+                                if (_e1754 < _e1755) {
+                                    let _e1757 = local_125;
+                                    let _e1759 = local_125;
+                                    let _e1762 = local_125;
+                                    phi_2250_ = select(select(u32(_e1757), 0u, !((_e1759 >= 0f))), 4294967295u, (_e1762 > 4294967000f));
                                 } else {
-                                    phi_2250_ = _e1740;
+                                    phi_2250_ = _e1743;
                                 }
-                                let _e1763 = phi_2250_;
-                                phi_2251_ = _e1763;
+                                let _e1767 = phi_2250_;
+                                phi_2251_ = _e1767;
                             }
-                            let _e1765 = phi_2251_;
-                            local_126 = _e1765;
-                            phi_4163_ = _e1720;
+                            let _e1769 = phi_2251_;
+                            local_126 = _e1769;
+                            phi_4163_ = _e1723;
                             phi_2253_ = _e963;
                             phi_2256_ = 1u;
                             loop {
-                                let _e1767 = phi_4163_;
-                                let _e1769 = phi_2253_;
-                                let _e1771 = phi_2256_;
-                                local_127 = _e1771;
-                                local_252 = _e1769;
-                                let _e1772 = local_127;
-                                let _e1773 = local_126;
-                                let _e1774 = (_e1772 <= _e1773);
-                                local_128 = _e1774;
-                                if _e1774 {
-                                    phi_2265_ = _e1769;
+                                let _e1771 = phi_4163_;
+                                let _e1773 = phi_2253_;
+                                let _e1775 = phi_2256_;
+                                local_127 = _e1775;
+                                local_252 = _e1773;
+                                let _e1776 = local_127;
+                                let _e1777 = local_126;
+                                let _e1778 = (_e1776 <= _e1777);
+                                local_128 = _e1778;
+                                if _e1778 {
+                                    phi_2265_ = _e1773;
                                     phi_2268_ = 0u;
                                     loop {
-                                        let _e1776 = phi_2265_;
-                                        let _e1778 = phi_2268_;
-                                        local_129 = _e1776;
-                                        local_130 = _e1778;
-                                        local_251 = _e1776;
-                                        let _e1779 = local_127;
-                                        let _e1781 = local_130;
-                                        let _e1782 = (_e1781 < (6u * _e1779));
-                                        local_131 = _e1782;
-                                        if _e1782 {
-                                            let _e1783 = local_127;
-                                            let _e1784 = (_e1783 == 0u);
-                                            local_132 = _e1784;
-                                            if _e1784 {
-                                                phi_4153_ = true;
-                                                break;
-                                            }
-                                            let _e1785 = local_130;
-                                            let _e1786 = local_127;
-                                            local_133 = (_e1785 / _e1786);
-                                            let _e1788 = local_132;
+                                        let _e1780 = phi_2265_;
+                                        let _e1782 = phi_2268_;
+                                        local_129 = _e1780;
+                                        local_130 = _e1782;
+                                        local_251 = _e1780;
+                                        let _e1783 = local_127;
+                                        let _e1785 = local_130;
+                                        let _e1786 = (_e1785 < (6u * _e1783));
+                                        local_131 = _e1786;
+                                        if _e1786 {
+                                            let _e1787 = local_127;
+                                            let _e1788 = (_e1787 == 0u);
+                                            local_132 = _e1788;
                                             if _e1788 {
                                                 phi_4153_ = true;
                                                 break;
                                             }
                                             let _e1789 = local_130;
                                             let _e1790 = local_127;
-                                            local_134 = f32((_e1789 % _e1790));
-                                            let _e1793 = local_133;
-                                            if (_e1793 == 0u) {
+                                            local_133 = (_e1789 / _e1790);
+                                            let _e1792 = local_132;
+                                            if _e1792 {
+                                                phi_4153_ = true;
+                                                break;
+                                            }
+                                            let _e1793 = local_130;
+                                            let _e1794 = local_127;
+                                            local_134 = f32((_e1793 % _e1794));
+                                            let _e1797 = local_133;
+                                            if (_e1797 == 0u) {
                                                 phi_2320_ = array<f32, 2>(1f, 0f);
                                             } else {
-                                                let _e1795 = local_133;
-                                                if (_e1795 == 1u) {
+                                                let _e1799 = local_133;
+                                                if (_e1799 == 1u) {
                                                     phi_2319_ = array<f32, 2>(0.5f, 0.8660254f);
                                                 } else {
-                                                    let _e1797 = local_133;
-                                                    if (_e1797 == 2u) {
+                                                    let _e1801 = local_133;
+                                                    if (_e1801 == 2u) {
                                                         phi_2318_ = array<f32, 2>(-0.5f, 0.8660254f);
                                                     } else {
-                                                        let _e1799 = local_133;
-                                                        if (_e1799 == 3u) {
+                                                        let _e1803 = local_133;
+                                                        if (_e1803 == 3u) {
                                                             phi_2317_ = array<f32, 2>(-1f, 0f);
                                                         } else {
-                                                            let _e1801 = local_133;
-                                                            if (_e1801 == 4u) {
+                                                            let _e1805 = local_133;
+                                                            if (_e1805 == 4u) {
                                                                 phi_2316_ = array<f32, 2>(-0.5f, -0.8660254f);
                                                             } else {
                                                                 phi_2316_ = array<f32, 2>(0.5f, -0.8660254f);
                                                             }
-                                                            let _e1804 = phi_2316_;
-                                                            phi_2317_ = _e1804;
+                                                            let _e1808 = phi_2316_;
+                                                            phi_2317_ = _e1808;
                                                         }
-                                                        let _e1806 = phi_2317_;
-                                                        phi_2318_ = _e1806;
+                                                        let _e1810 = phi_2317_;
+                                                        phi_2318_ = _e1810;
                                                     }
-                                                    let _e1808 = phi_2318_;
-                                                    phi_2319_ = _e1808;
+                                                    let _e1812 = phi_2318_;
+                                                    phi_2319_ = _e1812;
                                                 }
-                                                let _e1810 = phi_2319_;
-                                                phi_2320_ = _e1810;
+                                                let _e1814 = phi_2319_;
+                                                phi_2320_ = _e1814;
                                             }
-                                            let _e1812 = phi_2320_;
-                                            local_135 = _e1812;
-                                            let _e1813 = local_133;
-                                            let _e1815 = ((_e1813 + 1u) % 6u);
-                                            local_136 = _e1815;
-                                            if (_e1815 == 0u) {
+                                            let _e1816 = phi_2320_;
+                                            local_135 = _e1816;
+                                            let _e1817 = local_133;
+                                            let _e1819 = ((_e1817 + 1u) % 6u);
+                                            local_136 = _e1819;
+                                            if (_e1819 == 0u) {
                                                 phi_2355_ = array<f32, 2>(1f, 0f);
                                             } else {
-                                                let _e1817 = local_136;
-                                                if (_e1817 == 1u) {
+                                                let _e1821 = local_136;
+                                                if (_e1821 == 1u) {
                                                     phi_2354_ = array<f32, 2>(0.5f, 0.8660254f);
                                                 } else {
-                                                    let _e1819 = local_136;
-                                                    if (_e1819 == 2u) {
+                                                    let _e1823 = local_136;
+                                                    if (_e1823 == 2u) {
                                                         phi_2353_ = array<f32, 2>(-0.5f, 0.8660254f);
                                                     } else {
-                                                        let _e1821 = local_136;
-                                                        if (_e1821 == 3u) {
+                                                        let _e1825 = local_136;
+                                                        if (_e1825 == 3u) {
                                                             phi_2352_ = array<f32, 2>(-1f, 0f);
                                                         } else {
-                                                            let _e1823 = local_136;
-                                                            if (_e1823 == 4u) {
+                                                            let _e1827 = local_136;
+                                                            if (_e1827 == 4u) {
                                                                 phi_2351_ = array<f32, 2>(-0.5f, -0.8660254f);
                                                             } else {
                                                                 phi_2351_ = array<f32, 2>(0.5f, -0.8660254f);
                                                             }
-                                                            let _e1826 = phi_2351_;
-                                                            phi_2352_ = _e1826;
+                                                            let _e1830 = phi_2351_;
+                                                            phi_2352_ = _e1830;
                                                         }
-                                                        let _e1828 = phi_2352_;
-                                                        phi_2353_ = _e1828;
+                                                        let _e1832 = phi_2352_;
+                                                        phi_2353_ = _e1832;
                                                     }
-                                                    let _e1830 = phi_2353_;
-                                                    phi_2354_ = _e1830;
+                                                    let _e1834 = phi_2353_;
+                                                    phi_2354_ = _e1834;
                                                 }
-                                                let _e1832 = phi_2354_;
-                                                phi_2355_ = _e1832;
+                                                let _e1836 = phi_2354_;
+                                                phi_2355_ = _e1836;
                                             }
-                                            let _e1834 = phi_2355_;
-                                            let _e1835 = local_127;
-                                            let _e1836 = f32(_e1835);
-                                            let _e1837 = local_135;
-                                            let _e1842 = local_134;
-                                            let _e1845 = local_135;
-                                            let _e1850 = local_134;
-                                            let _e1853 = local_244;
-                                            let _e1854 = (((_e1837[0] * _e1836) + ((_e1834[0] - _e1837[0]) * _e1842)) * _e1853);
-                                            let _e1855 = local_244;
-                                            let _e1856 = (((_e1845[1] * _e1836) + ((_e1834[1] - _e1845[1]) * _e1850)) * _e1855);
-                                            let _e1857 = local_12;
-                                            let _e1861 = floor(((f32(_e1857) + 0.5f) + _e1854));
-                                            let _e1862 = local_13;
-                                            let _e1866 = floor(((f32(_e1862) + 0.5f) + _e1856));
-                                            let _e1868 = select(0f, _e1861, (_e1861 > 0f));
-                                            let _e1869 = local_122;
-                                            let _e1871 = f32((_e1869 - 1u));
-                                            let _e1873 = select(_e1871, _e1868, (_e1868 < _e1871));
-                                            let _e1880 = select(0f, _e1866, (_e1866 > 0f));
-                                            let _e1881 = local_123;
-                                            let _e1883 = f32((_e1881 - 1u));
-                                            let _e1885 = select(_e1883, _e1880, (_e1880 < _e1883));
-                                            let _e1891 = local_122;
-                                            let _e1894 = (9u * ((select(select(u32(_e1885), 0u, (_e1885 < 0f)), 4294967295u, (_e1885 > 4294967000f)) * _e1891) + select(select(u32(_e1873), 0u, (_e1873 < 0f)), 4294967295u, (_e1873 > 4294967000f))));
-                                            local_137 = _e1894;
-                                            local_138 = sqrt(((_e1854 * _e1854) + (_e1856 * _e1856)));
-                                            let _e1899 = (_e1894 + 8u);
-                                            local_139 = _e1899;
-                                            let _e1900 = local_1;
-                                            if (_e1899 < _e1900) {
+                                            let _e1838 = phi_2355_;
+                                            let _e1839 = local_127;
+                                            let _e1840 = f32(_e1839);
+                                            let _e1841 = local_135;
+                                            let _e1846 = local_134;
+                                            let _e1849 = local_135;
+                                            let _e1854 = local_134;
+                                            let _e1857 = local_244;
+                                            let _e1858 = (((_e1841[0] * _e1840) + ((_e1838[0] - _e1841[0]) * _e1846)) * _e1857);
+                                            let _e1859 = local_244;
+                                            let _e1860 = (((_e1849[1] * _e1840) + ((_e1838[1] - _e1849[1]) * _e1854)) * _e1859);
+                                            let _e1861 = local_12;
+                                            let _e1865 = floor(((f32(_e1861) + 0.5f) + _e1858));
+                                            let _e1866 = local_13;
+                                            let _e1870 = floor(((f32(_e1866) + 0.5f) + _e1860));
+                                            let _e1872 = select(0f, _e1865, (_e1865 > 0f));
+                                            let _e1873 = local_122;
+                                            let _e1875 = f32((_e1873 - 1u));
+                                            let _e1877 = select(_e1875, _e1872, (_e1872 < _e1875));
+                                            let _e1885 = select(0f, _e1870, (_e1870 > 0f));
+                                            let _e1886 = local_123;
+                                            let _e1888 = f32((_e1886 - 1u));
+                                            let _e1890 = select(_e1888, _e1885, (_e1885 < _e1888));
+                                            let _e1897 = local_122;
+                                            let _e1900 = (9u * ((select(select(u32(_e1890), 0u, !((_e1890 >= 0f))), 4294967295u, (_e1890 > 4294967000f)) * _e1897) + select(select(u32(_e1877), 0u, !((_e1877 >= 0f))), 4294967295u, (_e1877 > 4294967000f))));
+                                            local_137 = _e1900;
+                                            local_138 = sqrt(((_e1858 * _e1858) + (_e1860 * _e1860)));
+                                            let _e1905 = (_e1900 + 8u);
+                                            local_139 = _e1905;
+                                            let _e1906 = local_1;
+                                            if (_e1905 < _e1906) {
                                             } else {
                                                 phi_4153_ = true;
                                                 break;
                                             }
-                                            let _e1902 = local_139;
-                                            let _e1905 = global_3.member[_e1902];
-                                            let _e1906 = bitcast<f32>(_e1905);
-                                            local_140 = _e1906;
-                                            if ((bitcast<u32>(_e1906) & 2147483647u) > 2139095040u) {
-                                                phi_2967_ = _e1776;
+                                            let _e1908 = local_139;
+                                            let _e1911 = global_3.member[_e1908];
+                                            let _e1912 = bitcast<f32>(_e1911);
+                                            local_140 = _e1912;
+                                            if ((bitcast<u32>(_e1912) & 2147483647u) > 2139095040u) {
+                                                phi_2967_ = _e1780;
                                             } else {
-                                                let _e1910 = local_137;
-                                                let _e1911 = (_e1910 + 3u);
-                                                local_141 = _e1911;
-                                                let _e1912 = local_1;
-                                                if (_e1911 < _e1912) {
+                                                let _e1916 = local_137;
+                                                let _e1917 = (_e1916 + 3u);
+                                                local_141 = _e1917;
+                                                let _e1918 = local_1;
+                                                if (_e1917 < _e1918) {
                                                 } else {
                                                     phi_4153_ = true;
                                                     break;
                                                 }
-                                                let _e1914 = local_141;
-                                                let _e1917 = global_3.member[_e1914];
-                                                let _e1918 = bitcast<f32>(_e1917);
-                                                local_142 = _e1918;
-                                                if (_e1918 > 0f) {
-                                                    let _e1920 = local_137;
-                                                    let _e1921 = local_1;
-                                                    if (_e1920 < _e1921) {
+                                                let _e1920 = local_141;
+                                                let _e1923 = global_3.member[_e1920];
+                                                let _e1924 = bitcast<f32>(_e1923);
+                                                local_142 = _e1924;
+                                                if (_e1924 > 0f) {
+                                                    let _e1926 = local_137;
+                                                    let _e1927 = local_1;
+                                                    if (_e1926 < _e1927) {
                                                     } else {
                                                         phi_4153_ = true;
                                                         break;
                                                     }
-                                                    let _e1923 = local_137;
-                                                    let _e1926 = global_3.member[_e1923];
-                                                    local_143 = bitcast<f32>(_e1926);
-                                                    let _e1928 = local_137;
-                                                    let _e1929 = (_e1928 + 1u);
-                                                    local_144 = _e1929;
-                                                    let _e1930 = local_1;
-                                                    if (_e1929 < _e1930) {
+                                                    let _e1929 = local_137;
+                                                    let _e1932 = global_3.member[_e1929];
+                                                    local_143 = bitcast<f32>(_e1932);
+                                                    let _e1934 = local_137;
+                                                    let _e1935 = (_e1934 + 1u);
+                                                    local_144 = _e1935;
+                                                    let _e1936 = local_1;
+                                                    if (_e1935 < _e1936) {
                                                     } else {
                                                         phi_4153_ = true;
                                                         break;
                                                     }
-                                                    let _e1932 = local_144;
-                                                    let _e1935 = global_3.member[_e1932];
-                                                    local_145 = bitcast<f32>(_e1935);
-                                                    let _e1937 = local_137;
-                                                    let _e1938 = (_e1937 + 2u);
-                                                    local_146 = _e1938;
-                                                    let _e1939 = local_1;
-                                                    if (_e1938 < _e1939) {
+                                                    let _e1938 = local_144;
+                                                    let _e1941 = global_3.member[_e1938];
+                                                    local_145 = bitcast<f32>(_e1941);
+                                                    let _e1943 = local_137;
+                                                    let _e1944 = (_e1943 + 2u);
+                                                    local_146 = _e1944;
+                                                    let _e1945 = local_1;
+                                                    if (_e1944 < _e1945) {
                                                     } else {
                                                         phi_4153_ = true;
                                                         break;
                                                     }
-                                                    let _e1941 = local_146;
-                                                    let _e1944 = global_3.member[_e1941];
-                                                    local_147 = bitcast<f32>(_e1944);
-                                                    let _e1946 = local_137;
-                                                    let _e1947 = (_e1946 + 7u);
-                                                    local_148 = _e1947;
-                                                    let _e1948 = local_1;
-                                                    if (_e1947 < _e1948) {
+                                                    let _e1947 = local_146;
+                                                    let _e1950 = global_3.member[_e1947];
+                                                    local_147 = bitcast<f32>(_e1950);
+                                                    let _e1952 = local_137;
+                                                    let _e1953 = (_e1952 + 7u);
+                                                    local_148 = _e1953;
+                                                    let _e1954 = local_1;
+                                                    if (_e1953 < _e1954) {
                                                     } else {
                                                         phi_4153_ = true;
                                                         break;
                                                     }
-                                                    let _e1950 = local_148;
-                                                    let _e1953 = global_3.member[_e1950];
-                                                    let _e1954 = bitcast<f32>(_e1953);
-                                                    local_149 = _e1954;
-                                                    local_150 = -(_e1954);
-                                                    let _e1956 = (-0.5f - _e1954);
-                                                    let _e1958 = select(0f, _e1956, (_e1956 > 0f));
-                                                    let _e1962 = local_142;
-                                                    let _e1963 = (_e1962 * (1f - select(1f, _e1958, (_e1958 < 1f))));
-                                                    local_151 = _e1963;
-                                                    if (_e1963 <= 0f) {
-                                                        phi_2643_ = _e1776;
+                                                    let _e1956 = local_148;
+                                                    let _e1959 = global_3.member[_e1956];
+                                                    let _e1960 = bitcast<f32>(_e1959);
+                                                    local_149 = _e1960;
+                                                    local_150 = -(_e1960);
+                                                    let _e1962 = (-0.5f - _e1960);
+                                                    let _e1964 = select(0f, _e1962, (_e1962 > 0f));
+                                                    let _e1968 = local_142;
+                                                    let _e1969 = (_e1968 * (1f - select(1f, _e1964, (_e1964 < 1f))));
+                                                    local_151 = _e1969;
+                                                    if (_e1969 <= 0f) {
+                                                        phi_2643_ = _e1780;
                                                     } else {
-                                                        let _e1965 = local_234;
-                                                        let _e1967 = local_234;
-                                                        local_245 = select(0f, _e1967, (_e1965 > 0f));
-                                                        let _e1969 = local_149;
-                                                        let _e1970 = local_234;
-                                                        let _e1971 = (_e1969 > _e1970);
-                                                        local_152 = _e1971;
-                                                        if _e1971 {
-                                                            let _e1977 = local_149;
-                                                            let _e1979 = local_150;
-                                                            let _e1980 = local_149;
-                                                            let _e1981 = select(_e1980, _e1979, (_e1977 < 0f));
-                                                            let _e1982 = local_245;
-                                                            let _e1984 = local_245;
-                                                            phi_2542_ = select(_e1984, _e1981, (_e1981 < _e1982));
+                                                        let _e1971 = local_234;
+                                                        let _e1973 = local_234;
+                                                        local_245 = select(0f, _e1973, (_e1971 > 0f));
+                                                        let _e1975 = local_149;
+                                                        let _e1976 = local_234;
+                                                        let _e1977 = (_e1975 > _e1976);
+                                                        local_152 = _e1977;
+                                                        if _e1977 {
+                                                            let _e1983 = local_149;
+                                                            let _e1985 = local_150;
+                                                            let _e1986 = local_149;
+                                                            let _e1987 = select(_e1986, _e1985, (_e1983 < 0f));
+                                                            let _e1988 = local_245;
+                                                            let _e1990 = local_245;
+                                                            phi_2542_ = select(_e1990, _e1987, (_e1987 < _e1988));
                                                         } else {
-                                                            let _e1972 = local_149;
-                                                            let _e1974 = local_150;
-                                                            let _e1975 = local_149;
-                                                            phi_2542_ = select(_e1975, _e1974, (_e1972 < 0f));
+                                                            let _e1978 = local_149;
+                                                            let _e1980 = local_150;
+                                                            let _e1981 = local_149;
+                                                            phi_2542_ = select(_e1981, _e1980, (_e1978 < 0f));
                                                         }
-                                                        let _e1987 = phi_2542_;
-                                                        local_153 = _e1987;
-                                                        let _e1988 = local_138;
-                                                        if (_e1988 == 0f) {
+                                                        let _e1993 = phi_2542_;
+                                                        local_153 = _e1993;
+                                                        let _e1994 = local_138;
+                                                        if (_e1994 == 0f) {
                                                             phi_2560_ = 1f;
                                                         } else {
-                                                            let _e1990 = local_153;
-                                                            let _e1991 = local_138;
-                                                            let _e1993 = local_244;
-                                                            let _e1995 = ((_e1990 - _e1991) + (0.5f * _e1993));
-                                                            let _e1997 = select(0f, _e1995, (_e1995 > 0f));
-                                                            phi_2560_ = select(1f, _e1997, (_e1997 < 1f));
+                                                            let _e1996 = local_153;
+                                                            let _e1997 = local_138;
+                                                            let _e1999 = local_244;
+                                                            let _e2001 = ((_e1996 - _e1997) + (0.5f * _e1999));
+                                                            let _e2003 = select(0f, _e2001, (_e2001 > 0f));
+                                                            phi_2560_ = select(1f, _e2003, (_e2003 < 1f));
                                                         }
-                                                        let _e2001 = phi_2560_;
-                                                        let _e2002 = local_151;
-                                                        let _e2004 = local_153;
-                                                        let _e2005 = local_153;
-                                                        let _e2006 = (_e2004 * _e2005);
-                                                        let _e2009 = ((_e2002 * _e2001) / select(0.25f, _e2006, (_e2006 > 0.25f)));
-                                                        let _e2010 = local_129;
-                                                        let _e2013 = local_143;
+                                                        let _e2007 = phi_2560_;
+                                                        let _e2008 = local_151;
+                                                        let _e2010 = local_153;
+                                                        let _e2011 = local_153;
+                                                        let _e2012 = (_e2010 * _e2011);
+                                                        let _e2015 = ((_e2008 * _e2007) / select(0.25f, _e2012, (_e2012 > 0.25f)));
                                                         let _e2016 = local_129;
-                                                        let _e2019 = local_145;
+                                                        let _e2019 = local_143;
                                                         let _e2022 = local_129;
-                                                        let _e2025 = local_147;
-                                                        let _e2029 = local_129;
-                                                        let _e2036 = type_16(array<f32, 3>((_e2010.member[0] + (_e2009 * _e2013)), (_e2016.member[1] + (_e2009 * _e2019)), (_e2022.member[2] + (_e2009 * _e2025))), _e2029.member_1, _e2029.member_2, _e2029.member_3, _e2029.member_4, _e2029.member_5);
-                                                        let _e2037 = local_129;
-                                                        let _e2046 = type_16(_e2036.member, (_e2037.member_1 + _e2009), _e2036.member_2, _e2036.member_3, _e2036.member_4, _e2036.member_5);
-                                                        local_154 = _e2046;
-                                                        let _e2047 = local_152;
-                                                        if _e2047 {
-                                                            let _e2048 = local_235;
-                                                            if (_e2048 > 0f) {
-                                                                let _e2050 = local_30;
-                                                                let _e2051 = local_138;
-                                                                let _e2053 = local_244;
-                                                                let _e2055 = ((_e2050 - _e2051) + (0.5f * _e2053));
-                                                                let _e2057 = select(0f, _e2055, (_e2055 > 0f));
-                                                                let _e2060 = local_151;
-                                                                let _e2062 = local_30;
-                                                                let _e2063 = local_30;
-                                                                let _e2064 = (_e2062 * _e2063);
-                                                                let _e2067 = ((_e2060 * select(1f, _e2057, (_e2057 < 1f))) / select(0.25f, _e2064, (_e2064 > 0.25f)));
-                                                                let _e2068 = local_129;
-                                                                let _e2071 = local_143;
+                                                        let _e2025 = local_145;
+                                                        let _e2028 = local_129;
+                                                        let _e2031 = local_147;
+                                                        let _e2035 = local_129;
+                                                        let _e2042 = type_16(array<f32, 3>((_e2016.member[0] + (_e2015 * _e2019)), (_e2022.member[1] + (_e2015 * _e2025)), (_e2028.member[2] + (_e2015 * _e2031))), _e2035.member_1, _e2035.member_2, _e2035.member_3, _e2035.member_4, _e2035.member_5);
+                                                        let _e2043 = local_129;
+                                                        let _e2052 = type_16(_e2042.member, (_e2043.member_1 + _e2015), _e2042.member_2, _e2042.member_3, _e2042.member_4, _e2042.member_5);
+                                                        local_154 = _e2052;
+                                                        let _e2053 = local_152;
+                                                        if _e2053 {
+                                                            let _e2054 = local_235;
+                                                            if (_e2054 > 0f) {
+                                                                let _e2056 = local_30;
+                                                                let _e2057 = local_138;
+                                                                let _e2059 = local_244;
+                                                                let _e2061 = ((_e2056 - _e2057) + (0.5f * _e2059));
+                                                                let _e2063 = select(0f, _e2061, (_e2061 > 0f));
+                                                                let _e2066 = local_151;
+                                                                let _e2068 = local_30;
+                                                                let _e2069 = local_30;
+                                                                let _e2070 = (_e2068 * _e2069);
+                                                                let _e2073 = ((_e2066 * select(1f, _e2063, (_e2063 < 1f))) / select(0.25f, _e2070, (_e2070 > 0.25f)));
                                                                 let _e2074 = local_129;
-                                                                let _e2077 = local_145;
+                                                                let _e2077 = local_143;
                                                                 let _e2080 = local_129;
-                                                                let _e2083 = local_147;
-                                                                let _e2087 = local_154;
-                                                                let _e2094 = type_16(_e2087.member, _e2087.member_1, array<f32, 3>((_e2068.member_2[0] + (_e2067 * _e2071)), (_e2074.member_2[1] + (_e2067 * _e2077)), (_e2080.member_2[2] + (_e2067 * _e2083))), _e2087.member_3, _e2087.member_4, _e2087.member_5);
-                                                                let _e2095 = local_129;
-                                                                phi_2641_ = type_16(_e2094.member, _e2094.member_1, _e2094.member_2, (_e2095.member_3 + _e2067), _e2094.member_4, _e2094.member_5);
+                                                                let _e2083 = local_145;
+                                                                let _e2086 = local_129;
+                                                                let _e2089 = local_147;
+                                                                let _e2093 = local_154;
+                                                                let _e2100 = type_16(_e2093.member, _e2093.member_1, array<f32, 3>((_e2074.member_2[0] + (_e2073 * _e2077)), (_e2080.member_2[1] + (_e2073 * _e2083)), (_e2086.member_2[2] + (_e2073 * _e2089))), _e2093.member_3, _e2093.member_4, _e2093.member_5);
+                                                                let _e2101 = local_129;
+                                                                phi_2641_ = type_16(_e2100.member, _e2100.member_1, _e2100.member_2, (_e2101.member_3 + _e2073), _e2100.member_4, _e2100.member_5);
                                                             } else {
-                                                                phi_2641_ = _e2046;
+                                                                phi_2641_ = _e2052;
                                                             }
-                                                            let _e2106 = phi_2641_;
-                                                            phi_2642_ = _e2106;
+                                                            let _e2112 = phi_2641_;
+                                                            phi_2642_ = _e2112;
                                                         } else {
-                                                            phi_2642_ = _e2046;
+                                                            phi_2642_ = _e2052;
                                                         }
-                                                        let _e2108 = phi_2642_;
-                                                        phi_2643_ = _e2108;
+                                                        let _e2114 = phi_2642_;
+                                                        phi_2643_ = _e2114;
                                                     }
-                                                    let _e2110 = phi_2643_;
-                                                    phi_2711_ = _e2110;
+                                                    let _e2116 = phi_2643_;
+                                                    phi_2711_ = _e2116;
                                                 } else {
-                                                    phi_2711_ = _e1776;
+                                                    phi_2711_ = _e1780;
                                                 }
-                                                let _e2112 = phi_2711_;
-                                                local_155 = _e2112;
-                                                let _e2113 = local_142;
-                                                if (_e2113 < 1f) {
-                                                    let _e2115 = local_137;
-                                                    let _e2116 = (_e2115 + 4u);
-                                                    local_156 = _e2116;
-                                                    let _e2117 = local_1;
-                                                    if (_e2116 < _e2117) {
+                                                let _e2118 = phi_2711_;
+                                                local_155 = _e2118;
+                                                let _e2119 = local_142;
+                                                if (_e2119 < 1f) {
+                                                    let _e2121 = local_137;
+                                                    let _e2122 = (_e2121 + 4u);
+                                                    local_156 = _e2122;
+                                                    let _e2123 = local_1;
+                                                    if (_e2122 < _e2123) {
                                                     } else {
                                                         phi_4153_ = true;
                                                         break;
                                                     }
-                                                    let _e2119 = local_156;
-                                                    let _e2122 = global_3.member[_e2119];
-                                                    local_157 = bitcast<f32>(_e2122);
-                                                    let _e2124 = local_137;
-                                                    let _e2125 = (_e2124 + 5u);
-                                                    local_158 = _e2125;
-                                                    let _e2126 = local_1;
-                                                    if (_e2125 < _e2126) {
+                                                    let _e2125 = local_156;
+                                                    let _e2128 = global_3.member[_e2125];
+                                                    local_157 = bitcast<f32>(_e2128);
+                                                    let _e2130 = local_137;
+                                                    let _e2131 = (_e2130 + 5u);
+                                                    local_158 = _e2131;
+                                                    let _e2132 = local_1;
+                                                    if (_e2131 < _e2132) {
                                                     } else {
                                                         phi_4153_ = true;
                                                         break;
                                                     }
-                                                    let _e2128 = local_158;
-                                                    let _e2131 = global_3.member[_e2128];
-                                                    local_159 = bitcast<f32>(_e2131);
-                                                    let _e2133 = local_137;
-                                                    let _e2134 = (_e2133 + 6u);
-                                                    local_160 = _e2134;
-                                                    let _e2135 = local_1;
-                                                    if (_e2134 < _e2135) {
+                                                    let _e2134 = local_158;
+                                                    let _e2137 = global_3.member[_e2134];
+                                                    local_159 = bitcast<f32>(_e2137);
+                                                    let _e2139 = local_137;
+                                                    let _e2140 = (_e2139 + 6u);
+                                                    local_160 = _e2140;
+                                                    let _e2141 = local_1;
+                                                    if (_e2140 < _e2141) {
                                                     } else {
                                                         phi_4153_ = true;
                                                         break;
                                                     }
-                                                    let _e2137 = local_160;
-                                                    let _e2140 = global_3.member[_e2137];
-                                                    local_161 = bitcast<f32>(_e2140);
-                                                    let _e2142 = local_142;
-                                                    let _e2144 = local_140;
-                                                    local_162 = -(_e2144);
-                                                    let _e2146 = local_140;
-                                                    let _e2147 = (-0.5f - _e2146);
-                                                    let _e2149 = select(0f, _e2147, (_e2147 > 0f));
-                                                    let _e2153 = ((1f - _e2142) * (1f - select(1f, _e2149, (_e2149 < 1f))));
-                                                    local_163 = _e2153;
-                                                    if (_e2153 <= 0f) {
-                                                        phi_2897_ = _e2112;
+                                                    let _e2143 = local_160;
+                                                    let _e2146 = global_3.member[_e2143];
+                                                    local_161 = bitcast<f32>(_e2146);
+                                                    let _e2148 = local_142;
+                                                    let _e2150 = local_140;
+                                                    local_162 = -(_e2150);
+                                                    let _e2152 = local_140;
+                                                    let _e2153 = (-0.5f - _e2152);
+                                                    let _e2155 = select(0f, _e2153, (_e2153 > 0f));
+                                                    let _e2159 = ((1f - _e2148) * (1f - select(1f, _e2155, (_e2155 < 1f))));
+                                                    local_163 = _e2159;
+                                                    if (_e2159 <= 0f) {
+                                                        phi_2897_ = _e2118;
                                                     } else {
-                                                        let _e2155 = local_234;
-                                                        let _e2157 = local_234;
-                                                        local_246 = select(0f, _e2157, (_e2155 > 0f));
-                                                        let _e2159 = local_140;
-                                                        let _e2160 = local_234;
-                                                        let _e2161 = (_e2159 > _e2160);
-                                                        local_164 = _e2161;
-                                                        if _e2161 {
-                                                            let _e2167 = local_140;
-                                                            let _e2169 = local_162;
-                                                            let _e2170 = local_140;
-                                                            let _e2171 = select(_e2170, _e2169, (_e2167 < 0f));
-                                                            let _e2172 = local_246;
-                                                            let _e2174 = local_246;
-                                                            phi_2796_ = select(_e2174, _e2171, (_e2171 < _e2172));
+                                                        let _e2161 = local_234;
+                                                        let _e2163 = local_234;
+                                                        local_246 = select(0f, _e2163, (_e2161 > 0f));
+                                                        let _e2165 = local_140;
+                                                        let _e2166 = local_234;
+                                                        let _e2167 = (_e2165 > _e2166);
+                                                        local_164 = _e2167;
+                                                        if _e2167 {
+                                                            let _e2173 = local_140;
+                                                            let _e2175 = local_162;
+                                                            let _e2176 = local_140;
+                                                            let _e2177 = select(_e2176, _e2175, (_e2173 < 0f));
+                                                            let _e2178 = local_246;
+                                                            let _e2180 = local_246;
+                                                            phi_2796_ = select(_e2180, _e2177, (_e2177 < _e2178));
                                                         } else {
-                                                            let _e2162 = local_140;
-                                                            let _e2164 = local_162;
-                                                            let _e2165 = local_140;
-                                                            phi_2796_ = select(_e2165, _e2164, (_e2162 < 0f));
+                                                            let _e2168 = local_140;
+                                                            let _e2170 = local_162;
+                                                            let _e2171 = local_140;
+                                                            phi_2796_ = select(_e2171, _e2170, (_e2168 < 0f));
                                                         }
-                                                        let _e2177 = phi_2796_;
-                                                        local_165 = _e2177;
-                                                        let _e2178 = local_138;
-                                                        if (_e2178 == 0f) {
+                                                        let _e2183 = phi_2796_;
+                                                        local_165 = _e2183;
+                                                        let _e2184 = local_138;
+                                                        if (_e2184 == 0f) {
                                                             phi_2814_ = 1f;
                                                         } else {
-                                                            let _e2180 = local_165;
-                                                            let _e2181 = local_138;
-                                                            let _e2183 = local_244;
-                                                            let _e2185 = ((_e2180 - _e2181) + (0.5f * _e2183));
-                                                            let _e2187 = select(0f, _e2185, (_e2185 > 0f));
-                                                            phi_2814_ = select(1f, _e2187, (_e2187 < 1f));
+                                                            let _e2186 = local_165;
+                                                            let _e2187 = local_138;
+                                                            let _e2189 = local_244;
+                                                            let _e2191 = ((_e2186 - _e2187) + (0.5f * _e2189));
+                                                            let _e2193 = select(0f, _e2191, (_e2191 > 0f));
+                                                            phi_2814_ = select(1f, _e2193, (_e2193 < 1f));
                                                         }
-                                                        let _e2191 = phi_2814_;
-                                                        let _e2192 = local_163;
-                                                        let _e2194 = local_165;
-                                                        let _e2195 = local_165;
-                                                        let _e2196 = (_e2194 * _e2195);
-                                                        let _e2199 = ((_e2192 * _e2191) / select(0.25f, _e2196, (_e2196 > 0.25f)));
-                                                        let _e2200 = local_155;
-                                                        let _e2203 = local_157;
+                                                        let _e2197 = phi_2814_;
+                                                        let _e2198 = local_163;
+                                                        let _e2200 = local_165;
+                                                        let _e2201 = local_165;
+                                                        let _e2202 = (_e2200 * _e2201);
+                                                        let _e2205 = ((_e2198 * _e2197) / select(0.25f, _e2202, (_e2202 > 0.25f)));
                                                         let _e2206 = local_155;
-                                                        let _e2209 = local_159;
+                                                        let _e2209 = local_157;
                                                         let _e2212 = local_155;
-                                                        let _e2215 = local_161;
-                                                        let _e2219 = local_155;
-                                                        let _e2226 = type_16(array<f32, 3>((_e2200.member[0] + (_e2199 * _e2203)), (_e2206.member[1] + (_e2199 * _e2209)), (_e2212.member[2] + (_e2199 * _e2215))), _e2219.member_1, _e2219.member_2, _e2219.member_3, _e2219.member_4, _e2219.member_5);
-                                                        let _e2227 = local_155;
-                                                        let _e2236 = type_16(_e2226.member, (_e2227.member_1 + _e2199), _e2226.member_2, _e2226.member_3, _e2226.member_4, _e2226.member_5);
-                                                        local_166 = _e2236;
-                                                        let _e2237 = local_164;
-                                                        if _e2237 {
-                                                            let _e2238 = local_235;
-                                                            if (_e2238 > 0f) {
-                                                                let _e2240 = local_30;
-                                                                let _e2241 = local_138;
-                                                                let _e2243 = local_244;
-                                                                let _e2245 = ((_e2240 - _e2241) + (0.5f * _e2243));
-                                                                let _e2247 = select(0f, _e2245, (_e2245 > 0f));
-                                                                let _e2250 = local_163;
-                                                                let _e2252 = local_30;
-                                                                let _e2253 = local_30;
-                                                                let _e2254 = (_e2252 * _e2253);
-                                                                let _e2257 = ((_e2250 * select(1f, _e2247, (_e2247 < 1f))) / select(0.25f, _e2254, (_e2254 > 0.25f)));
-                                                                let _e2258 = local_155;
-                                                                let _e2261 = local_157;
+                                                        let _e2215 = local_159;
+                                                        let _e2218 = local_155;
+                                                        let _e2221 = local_161;
+                                                        let _e2225 = local_155;
+                                                        let _e2232 = type_16(array<f32, 3>((_e2206.member[0] + (_e2205 * _e2209)), (_e2212.member[1] + (_e2205 * _e2215)), (_e2218.member[2] + (_e2205 * _e2221))), _e2225.member_1, _e2225.member_2, _e2225.member_3, _e2225.member_4, _e2225.member_5);
+                                                        let _e2233 = local_155;
+                                                        let _e2242 = type_16(_e2232.member, (_e2233.member_1 + _e2205), _e2232.member_2, _e2232.member_3, _e2232.member_4, _e2232.member_5);
+                                                        local_166 = _e2242;
+                                                        let _e2243 = local_164;
+                                                        if _e2243 {
+                                                            let _e2244 = local_235;
+                                                            if (_e2244 > 0f) {
+                                                                let _e2246 = local_30;
+                                                                let _e2247 = local_138;
+                                                                let _e2249 = local_244;
+                                                                let _e2251 = ((_e2246 - _e2247) + (0.5f * _e2249));
+                                                                let _e2253 = select(0f, _e2251, (_e2251 > 0f));
+                                                                let _e2256 = local_163;
+                                                                let _e2258 = local_30;
+                                                                let _e2259 = local_30;
+                                                                let _e2260 = (_e2258 * _e2259);
+                                                                let _e2263 = ((_e2256 * select(1f, _e2253, (_e2253 < 1f))) / select(0.25f, _e2260, (_e2260 > 0.25f)));
                                                                 let _e2264 = local_155;
-                                                                let _e2267 = local_159;
+                                                                let _e2267 = local_157;
                                                                 let _e2270 = local_155;
-                                                                let _e2273 = local_161;
-                                                                let _e2277 = local_166;
-                                                                let _e2284 = type_16(_e2277.member, _e2277.member_1, array<f32, 3>((_e2258.member_2[0] + (_e2257 * _e2261)), (_e2264.member_2[1] + (_e2257 * _e2267)), (_e2270.member_2[2] + (_e2257 * _e2273))), _e2277.member_3, _e2277.member_4, _e2277.member_5);
-                                                                let _e2285 = local_155;
-                                                                phi_2895_ = type_16(_e2284.member, _e2284.member_1, _e2284.member_2, (_e2285.member_3 + _e2257), _e2284.member_4, _e2284.member_5);
+                                                                let _e2273 = local_159;
+                                                                let _e2276 = local_155;
+                                                                let _e2279 = local_161;
+                                                                let _e2283 = local_166;
+                                                                let _e2290 = type_16(_e2283.member, _e2283.member_1, array<f32, 3>((_e2264.member_2[0] + (_e2263 * _e2267)), (_e2270.member_2[1] + (_e2263 * _e2273)), (_e2276.member_2[2] + (_e2263 * _e2279))), _e2283.member_3, _e2283.member_4, _e2283.member_5);
+                                                                let _e2291 = local_155;
+                                                                phi_2895_ = type_16(_e2290.member, _e2290.member_1, _e2290.member_2, (_e2291.member_3 + _e2263), _e2290.member_4, _e2290.member_5);
                                                             } else {
-                                                                phi_2895_ = _e2236;
+                                                                phi_2895_ = _e2242;
                                                             }
-                                                            let _e2296 = phi_2895_;
-                                                            phi_2896_ = _e2296;
+                                                            let _e2302 = phi_2895_;
+                                                            phi_2896_ = _e2302;
                                                         } else {
-                                                            phi_2896_ = _e2236;
+                                                            phi_2896_ = _e2242;
                                                         }
-                                                        let _e2298 = phi_2896_;
-                                                        phi_2897_ = _e2298;
+                                                        let _e2304 = phi_2896_;
+                                                        phi_2897_ = _e2304;
                                                     }
-                                                    let _e2300 = phi_2897_;
-                                                    phi_2966_ = _e2300;
+                                                    let _e2306 = phi_2897_;
+                                                    phi_2966_ = _e2306;
                                                 } else {
-                                                    phi_2966_ = _e2112;
+                                                    phi_2966_ = _e2118;
                                                 }
-                                                let _e2302 = phi_2966_;
-                                                phi_2967_ = _e2302;
+                                                let _e2308 = phi_2966_;
+                                                phi_2967_ = _e2308;
                                             }
-                                            let _e2304 = phi_2967_;
-                                            let _e2305 = local_130;
-                                            phi_2266_ = _e2304;
-                                            phi_2269_ = (_e2305 + 1u);
+                                            let _e2310 = phi_2967_;
+                                            let _e2311 = local_130;
+                                            phi_2266_ = _e2310;
+                                            phi_2269_ = (_e2311 + 1u);
                                         } else {
                                             phi_2266_ = type_16();
                                             phi_2269_ = u32();
                                         }
-                                        let _e2308 = phi_2266_;
-                                        let _e2310 = phi_2269_;
+                                        let _e2314 = phi_2266_;
+                                        let _e2316 = phi_2269_;
                                         continue;
                                         continuing {
-                                            let _e2311 = local_131;
-                                            phi_2265_ = _e2308;
-                                            phi_2268_ = _e2310;
-                                            phi_4153_ = _e1767;
-                                            break if !(_e2311);
+                                            let _e2317 = local_131;
+                                            phi_2265_ = _e2314;
+                                            phi_2268_ = _e2316;
+                                            phi_4153_ = _e1771;
+                                            break if !(_e2317);
                                         }
                                     }
-                                    let _e2314 = phi_4153_;
-                                    phi_4237_ = _e2314;
-                                    if _e2314 {
+                                    let _e2320 = phi_4153_;
+                                    phi_4237_ = _e2320;
+                                    if _e2320 {
                                         break;
                                     }
-                                    let _e2315 = local_127;
-                                    phi_4238_ = _e2314;
-                                    let _e3055 = local_251;
-                                    phi_2254_ = _e3055;
-                                    phi_2257_ = (_e2315 + 1u);
+                                    let _e2321 = local_127;
+                                    phi_4238_ = _e2320;
+                                    let _e3064 = local_251;
+                                    phi_2254_ = _e3064;
+                                    phi_2257_ = (_e2321 + 1u);
                                 } else {
-                                    phi_4238_ = _e1767;
+                                    phi_4238_ = _e1771;
                                     phi_2254_ = type_16();
                                     phi_2257_ = u32();
                                 }
-                                let _e2318 = phi_4238_;
-                                let _e2320 = phi_2254_;
-                                let _e2322 = phi_2257_;
+                                let _e2324 = phi_4238_;
+                                let _e2326 = phi_2254_;
+                                let _e2328 = phi_2257_;
                                 continue;
                                 continuing {
-                                    let _e2323 = local_128;
-                                    phi_4163_ = _e2318;
-                                    phi_2253_ = _e2320;
-                                    phi_2256_ = _e2322;
-                                    phi_4237_ = _e2318;
-                                    break if !(_e2323);
+                                    let _e2329 = local_128;
+                                    phi_4163_ = _e2324;
+                                    phi_2253_ = _e2326;
+                                    phi_2256_ = _e2328;
+                                    phi_4237_ = _e2324;
+                                    break if !(_e2329);
                                 }
                             }
-                            let _e2326 = phi_4237_;
-                            if _e2326 {
+                            let _e2332 = phi_4237_;
+                            if _e2332 {
                                 break;
                             }
-                            phi_4255_ = _e2326;
-                            let _e3061 = local_252;
-                            phi_2970_ = _e3061;
+                            phi_4255_ = _e2332;
+                            let _e3070 = local_252;
+                            phi_2970_ = _e3070;
                         } else {
-                            phi_4255_ = _e1720;
+                            phi_4255_ = _e1723;
                             phi_2970_ = _e963;
                         }
-                        let _e2328 = phi_4255_;
-                        let _e2330 = phi_2970_;
-                        let _e2331 = local_70;
-                        if _e2331 {
-                            let _e2332 = local_7;
-                            if _e2332 {
-                                let _e2333 = local_6;
-                                phi_2991_ = (_e2333 + 1u);
+                        let _e2334 = phi_4255_;
+                        let _e2336 = phi_2970_;
+                        let _e2337 = local_70;
+                        if _e2337 {
+                            let _e2338 = local_7;
+                            if _e2338 {
+                                let _e2339 = local_6;
+                                phi_2991_ = (_e2339 + 1u);
                             } else {
                                 phi_2991_ = _e305;
                             }
-                            let _e2336 = phi_2991_;
-                            local_167 = _e2336;
-                            let _e2337 = local_10;
-                            if _e2337 {
-                                let _e2338 = local_9;
-                                phi_3009_ = (_e2338 + 1u);
+                            let _e2342 = phi_2991_;
+                            local_167 = _e2342;
+                            let _e2343 = local_10;
+                            if _e2343 {
+                                let _e2344 = local_9;
+                                phi_3009_ = (_e2344 + 1u);
                             } else {
                                 phi_3009_ = _e315;
                             }
-                            let _e2341 = phi_3009_;
-                            local_168 = _e2341;
-                            let _e2344 = global_2.member.member_2;
-                            let _e2346 = select(_e2344, 1u, (_e2344 == 0u));
-                            let _e2347 = f32(_e2346);
-                            local_169 = _e2347;
-                            let _e2348 = local_28;
-                            let _e2349 = (_e2348 / _e2347);
-                            let _e2351 = select(1f, _e2349, (_e2349 > 1f));
-                            local_247 = _e2351;
-                            let _e2352 = local_28;
-                            let _e2355 = ceil(((_e2352 / _e2351) + 0.5f));
-                            local_170 = _e2355;
-                            if (_e2355 < 1f) {
+                            let _e2347 = phi_3009_;
+                            local_168 = _e2347;
+                            let _e2350 = global_2.member.member_2;
+                            let _e2352 = select(_e2350, 1u, (_e2350 == 0u));
+                            let _e2353 = f32(_e2352);
+                            local_169 = _e2353;
+                            let _e2354 = local_28;
+                            let _e2355 = (_e2354 / _e2353);
+                            let _e2357 = select(1f, _e2355, (_e2355 > 1f));
+                            local_247 = _e2357;
+                            let _e2358 = local_28;
+                            let _e2361 = ceil(((_e2358 / _e2357) + 0.5f));
+                            local_170 = _e2361;
+                            if (_e2361 < 1f) {
                                 phi_3046_ = 1u;
                             } else {
-                                let _e2357 = local_170;
-                                let _e2358 = local_169;
-                                if (_e2357 < _e2358) {
-                                    let _e2360 = local_170;
-                                    let _e2362 = local_170;
-                                    let _e2364 = local_170;
-                                    phi_3045_ = select(select(u32(_e2360), 0u, (_e2362 < 0f)), 4294967295u, (_e2364 > 4294967000f));
+                                let _e2363 = local_170;
+                                let _e2364 = local_169;
+                                if (_e2363 < _e2364) {
+                                    let _e2366 = local_170;
+                                    let _e2368 = local_170;
+                                    let _e2371 = local_170;
+                                    phi_3045_ = select(select(u32(_e2366), 0u, !((_e2368 >= 0f))), 4294967295u, (_e2371 > 4294967000f));
                                 } else {
-                                    phi_3045_ = _e2346;
+                                    phi_3045_ = _e2352;
                                 }
-                                let _e2369 = phi_3045_;
-                                phi_3046_ = _e2369;
+                                let _e2376 = phi_3045_;
+                                phi_3046_ = _e2376;
                             }
-                            let _e2371 = phi_3046_;
-                            local_171 = _e2371;
-                            phi_4249_ = _e2328;
-                            phi_3048_ = _e2330;
+                            let _e2378 = phi_3046_;
+                            local_171 = _e2378;
+                            phi_4249_ = _e2334;
+                            phi_3048_ = _e2336;
                             phi_3051_ = 1u;
                             loop {
-                                let _e2373 = phi_4249_;
-                                let _e2375 = phi_3048_;
-                                let _e2377 = phi_3051_;
-                                local_172 = _e2377;
-                                local_254 = _e2375;
-                                let _e2378 = local_172;
-                                let _e2379 = local_171;
-                                let _e2380 = (_e2378 <= _e2379);
-                                local_173 = _e2380;
-                                if _e2380 {
-                                    phi_3060_ = _e2375;
+                                let _e2380 = phi_4249_;
+                                let _e2382 = phi_3048_;
+                                let _e2384 = phi_3051_;
+                                local_172 = _e2384;
+                                local_254 = _e2382;
+                                let _e2385 = local_172;
+                                let _e2386 = local_171;
+                                let _e2387 = (_e2385 <= _e2386);
+                                local_173 = _e2387;
+                                if _e2387 {
+                                    phi_3060_ = _e2382;
                                     phi_3063_ = 0u;
                                     loop {
-                                        let _e2382 = phi_3060_;
-                                        let _e2384 = phi_3063_;
-                                        local_174 = _e2382;
-                                        local_175 = _e2384;
-                                        local_253 = _e2382;
-                                        let _e2385 = local_172;
-                                        let _e2387 = local_175;
-                                        let _e2388 = (_e2387 < (6u * _e2385));
-                                        local_176 = _e2388;
-                                        if _e2388 {
-                                            let _e2389 = local_172;
-                                            let _e2390 = (_e2389 == 0u);
-                                            local_177 = _e2390;
-                                            if _e2390 {
-                                                phi_4239_ = true;
-                                                break;
-                                            }
-                                            let _e2391 = local_175;
-                                            let _e2392 = local_172;
-                                            local_178 = (_e2391 / _e2392);
-                                            let _e2394 = local_177;
-                                            if _e2394 {
-                                                phi_4239_ = true;
-                                                break;
-                                            }
-                                            let _e2395 = local_175;
+                                        let _e2389 = phi_3060_;
+                                        let _e2391 = phi_3063_;
+                                        local_174 = _e2389;
+                                        local_175 = _e2391;
+                                        local_253 = _e2389;
+                                        let _e2392 = local_172;
+                                        let _e2394 = local_175;
+                                        let _e2395 = (_e2394 < (6u * _e2392));
+                                        local_176 = _e2395;
+                                        if _e2395 {
                                             let _e2396 = local_172;
-                                            local_179 = f32((_e2395 % _e2396));
-                                            let _e2399 = local_178;
-                                            if (_e2399 == 0u) {
+                                            let _e2397 = (_e2396 == 0u);
+                                            local_177 = _e2397;
+                                            if _e2397 {
+                                                phi_4239_ = true;
+                                                break;
+                                            }
+                                            let _e2398 = local_175;
+                                            let _e2399 = local_172;
+                                            local_178 = (_e2398 / _e2399);
+                                            let _e2401 = local_177;
+                                            if _e2401 {
+                                                phi_4239_ = true;
+                                                break;
+                                            }
+                                            let _e2402 = local_175;
+                                            let _e2403 = local_172;
+                                            local_179 = f32((_e2402 % _e2403));
+                                            let _e2406 = local_178;
+                                            if (_e2406 == 0u) {
                                                 phi_3115_ = array<f32, 2>(1f, 0f);
                                             } else {
-                                                let _e2401 = local_178;
-                                                if (_e2401 == 1u) {
+                                                let _e2408 = local_178;
+                                                if (_e2408 == 1u) {
                                                     phi_3114_ = array<f32, 2>(0.5f, 0.8660254f);
                                                 } else {
-                                                    let _e2403 = local_178;
-                                                    if (_e2403 == 2u) {
+                                                    let _e2410 = local_178;
+                                                    if (_e2410 == 2u) {
                                                         phi_3113_ = array<f32, 2>(-0.5f, 0.8660254f);
                                                     } else {
-                                                        let _e2405 = local_178;
-                                                        if (_e2405 == 3u) {
+                                                        let _e2412 = local_178;
+                                                        if (_e2412 == 3u) {
                                                             phi_3112_ = array<f32, 2>(-1f, 0f);
                                                         } else {
-                                                            let _e2407 = local_178;
-                                                            if (_e2407 == 4u) {
+                                                            let _e2414 = local_178;
+                                                            if (_e2414 == 4u) {
                                                                 phi_3111_ = array<f32, 2>(-0.5f, -0.8660254f);
                                                             } else {
                                                                 phi_3111_ = array<f32, 2>(0.5f, -0.8660254f);
                                                             }
-                                                            let _e2410 = phi_3111_;
-                                                            phi_3112_ = _e2410;
+                                                            let _e2417 = phi_3111_;
+                                                            phi_3112_ = _e2417;
                                                         }
-                                                        let _e2412 = phi_3112_;
-                                                        phi_3113_ = _e2412;
+                                                        let _e2419 = phi_3112_;
+                                                        phi_3113_ = _e2419;
                                                     }
-                                                    let _e2414 = phi_3113_;
-                                                    phi_3114_ = _e2414;
+                                                    let _e2421 = phi_3113_;
+                                                    phi_3114_ = _e2421;
                                                 }
-                                                let _e2416 = phi_3114_;
-                                                phi_3115_ = _e2416;
+                                                let _e2423 = phi_3114_;
+                                                phi_3115_ = _e2423;
                                             }
-                                            let _e2418 = phi_3115_;
-                                            local_180 = _e2418;
-                                            let _e2419 = local_178;
-                                            let _e2421 = ((_e2419 + 1u) % 6u);
-                                            local_181 = _e2421;
-                                            if (_e2421 == 0u) {
+                                            let _e2425 = phi_3115_;
+                                            local_180 = _e2425;
+                                            let _e2426 = local_178;
+                                            let _e2428 = ((_e2426 + 1u) % 6u);
+                                            local_181 = _e2428;
+                                            if (_e2428 == 0u) {
                                                 phi_3150_ = array<f32, 2>(1f, 0f);
                                             } else {
-                                                let _e2423 = local_181;
-                                                if (_e2423 == 1u) {
+                                                let _e2430 = local_181;
+                                                if (_e2430 == 1u) {
                                                     phi_3149_ = array<f32, 2>(0.5f, 0.8660254f);
                                                 } else {
-                                                    let _e2425 = local_181;
-                                                    if (_e2425 == 2u) {
+                                                    let _e2432 = local_181;
+                                                    if (_e2432 == 2u) {
                                                         phi_3148_ = array<f32, 2>(-0.5f, 0.8660254f);
                                                     } else {
-                                                        let _e2427 = local_181;
-                                                        if (_e2427 == 3u) {
+                                                        let _e2434 = local_181;
+                                                        if (_e2434 == 3u) {
                                                             phi_3147_ = array<f32, 2>(-1f, 0f);
                                                         } else {
-                                                            let _e2429 = local_181;
-                                                            if (_e2429 == 4u) {
+                                                            let _e2436 = local_181;
+                                                            if (_e2436 == 4u) {
                                                                 phi_3146_ = array<f32, 2>(-0.5f, -0.8660254f);
                                                             } else {
                                                                 phi_3146_ = array<f32, 2>(0.5f, -0.8660254f);
                                                             }
-                                                            let _e2432 = phi_3146_;
-                                                            phi_3147_ = _e2432;
+                                                            let _e2439 = phi_3146_;
+                                                            phi_3147_ = _e2439;
                                                         }
-                                                        let _e2434 = phi_3147_;
-                                                        phi_3148_ = _e2434;
+                                                        let _e2441 = phi_3147_;
+                                                        phi_3148_ = _e2441;
                                                     }
-                                                    let _e2436 = phi_3148_;
-                                                    phi_3149_ = _e2436;
+                                                    let _e2443 = phi_3148_;
+                                                    phi_3149_ = _e2443;
                                                 }
-                                                let _e2438 = phi_3149_;
-                                                phi_3150_ = _e2438;
+                                                let _e2445 = phi_3149_;
+                                                phi_3150_ = _e2445;
                                             }
-                                            let _e2440 = phi_3150_;
-                                            let _e2441 = local_172;
-                                            let _e2442 = f32(_e2441);
-                                            let _e2443 = local_180;
-                                            let _e2448 = local_179;
-                                            let _e2451 = local_180;
-                                            let _e2456 = local_179;
-                                            let _e2459 = local_247;
-                                            let _e2460 = (((_e2443[0] * _e2442) + ((_e2440[0] - _e2443[0]) * _e2448)) * _e2459);
-                                            let _e2461 = local_247;
-                                            let _e2462 = (((_e2451[1] * _e2442) + ((_e2440[1] - _e2451[1]) * _e2456)) * _e2461);
-                                            let _e2463 = local_12;
-                                            let _e2467 = floor(((f32(_e2463) + 0.5f) + _e2460));
-                                            let _e2468 = local_13;
-                                            let _e2472 = floor(((f32(_e2468) + 0.5f) + _e2462));
-                                            let _e2474 = select(0f, _e2467, (_e2467 > 0f));
-                                            let _e2475 = local_167;
-                                            let _e2477 = f32((_e2475 - 1u));
-                                            let _e2479 = select(_e2477, _e2474, (_e2474 < _e2477));
-                                            let _e2486 = select(0f, _e2472, (_e2472 > 0f));
-                                            let _e2487 = local_168;
-                                            let _e2489 = f32((_e2487 - 1u));
-                                            let _e2491 = select(_e2489, _e2486, (_e2486 < _e2489));
-                                            let _e2497 = local_167;
-                                            let _e2500 = (9u * ((select(select(u32(_e2491), 0u, (_e2491 < 0f)), 4294967295u, (_e2491 > 4294967000f)) * _e2497) + select(select(u32(_e2479), 0u, (_e2479 < 0f)), 4294967295u, (_e2479 > 4294967000f))));
-                                            local_182 = _e2500;
-                                            local_183 = sqrt(((_e2460 * _e2460) + (_e2462 * _e2462)));
-                                            let _e2505 = (_e2500 + 8u);
-                                            local_184 = _e2505;
-                                            let _e2506 = local_1;
-                                            if (_e2505 < _e2506) {
+                                            let _e2447 = phi_3150_;
+                                            let _e2448 = local_172;
+                                            let _e2449 = f32(_e2448);
+                                            let _e2450 = local_180;
+                                            let _e2455 = local_179;
+                                            let _e2458 = local_180;
+                                            let _e2463 = local_179;
+                                            let _e2466 = local_247;
+                                            let _e2467 = (((_e2450[0] * _e2449) + ((_e2447[0] - _e2450[0]) * _e2455)) * _e2466);
+                                            let _e2468 = local_247;
+                                            let _e2469 = (((_e2458[1] * _e2449) + ((_e2447[1] - _e2458[1]) * _e2463)) * _e2468);
+                                            let _e2470 = local_12;
+                                            let _e2474 = floor(((f32(_e2470) + 0.5f) + _e2467));
+                                            let _e2475 = local_13;
+                                            let _e2479 = floor(((f32(_e2475) + 0.5f) + _e2469));
+                                            let _e2481 = select(0f, _e2474, (_e2474 > 0f));
+                                            let _e2482 = local_167;
+                                            let _e2484 = f32((_e2482 - 1u));
+                                            let _e2486 = select(_e2484, _e2481, (_e2481 < _e2484));
+                                            let _e2494 = select(0f, _e2479, (_e2479 > 0f));
+                                            let _e2495 = local_168;
+                                            let _e2497 = f32((_e2495 - 1u));
+                                            let _e2499 = select(_e2497, _e2494, (_e2494 < _e2497));
+                                            let _e2506 = local_167;
+                                            let _e2509 = (9u * ((select(select(u32(_e2499), 0u, !((_e2499 >= 0f))), 4294967295u, (_e2499 > 4294967000f)) * _e2506) + select(select(u32(_e2486), 0u, !((_e2486 >= 0f))), 4294967295u, (_e2486 > 4294967000f))));
+                                            local_182 = _e2509;
+                                            local_183 = sqrt(((_e2467 * _e2467) + (_e2469 * _e2469)));
+                                            let _e2514 = (_e2509 + 8u);
+                                            local_184 = _e2514;
+                                            let _e2515 = local_1;
+                                            if (_e2514 < _e2515) {
                                             } else {
                                                 phi_4239_ = true;
                                                 break;
                                             }
-                                            let _e2508 = local_184;
-                                            let _e2511 = global_3.member[_e2508];
-                                            let _e2512 = bitcast<f32>(_e2511);
-                                            local_185 = _e2512;
-                                            if ((bitcast<u32>(_e2512) & 2147483647u) > 2139095040u) {
-                                                phi_3762_ = _e2382;
+                                            let _e2517 = local_184;
+                                            let _e2520 = global_3.member[_e2517];
+                                            let _e2521 = bitcast<f32>(_e2520);
+                                            local_185 = _e2521;
+                                            if ((bitcast<u32>(_e2521) & 2147483647u) > 2139095040u) {
+                                                phi_3762_ = _e2389;
                                             } else {
-                                                let _e2516 = local_182;
-                                                let _e2517 = (_e2516 + 3u);
-                                                local_186 = _e2517;
-                                                let _e2518 = local_1;
-                                                if (_e2517 < _e2518) {
+                                                let _e2525 = local_182;
+                                                let _e2526 = (_e2525 + 3u);
+                                                local_186 = _e2526;
+                                                let _e2527 = local_1;
+                                                if (_e2526 < _e2527) {
                                                 } else {
                                                     phi_4239_ = true;
                                                     break;
                                                 }
-                                                let _e2520 = local_186;
-                                                let _e2523 = global_3.member[_e2520];
-                                                let _e2524 = bitcast<f32>(_e2523);
-                                                local_187 = _e2524;
-                                                if (_e2524 > 0f) {
-                                                    let _e2526 = local_182;
-                                                    let _e2527 = local_1;
-                                                    if (_e2526 < _e2527) {
-                                                    } else {
-                                                        phi_4239_ = true;
-                                                        break;
-                                                    }
-                                                    let _e2529 = local_182;
-                                                    let _e2532 = global_3.member[_e2529];
-                                                    local_188 = bitcast<f32>(_e2532);
-                                                    let _e2534 = local_182;
-                                                    let _e2535 = (_e2534 + 1u);
-                                                    local_189 = _e2535;
+                                                let _e2529 = local_186;
+                                                let _e2532 = global_3.member[_e2529];
+                                                let _e2533 = bitcast<f32>(_e2532);
+                                                local_187 = _e2533;
+                                                if (_e2533 > 0f) {
+                                                    let _e2535 = local_182;
                                                     let _e2536 = local_1;
                                                     if (_e2535 < _e2536) {
                                                     } else {
                                                         phi_4239_ = true;
                                                         break;
                                                     }
-                                                    let _e2538 = local_189;
+                                                    let _e2538 = local_182;
                                                     let _e2541 = global_3.member[_e2538];
-                                                    local_190 = bitcast<f32>(_e2541);
+                                                    local_188 = bitcast<f32>(_e2541);
                                                     let _e2543 = local_182;
-                                                    let _e2544 = (_e2543 + 2u);
-                                                    local_191 = _e2544;
+                                                    let _e2544 = (_e2543 + 1u);
+                                                    local_189 = _e2544;
                                                     let _e2545 = local_1;
                                                     if (_e2544 < _e2545) {
                                                     } else {
                                                         phi_4239_ = true;
                                                         break;
                                                     }
-                                                    let _e2547 = local_191;
+                                                    let _e2547 = local_189;
                                                     let _e2550 = global_3.member[_e2547];
-                                                    local_192 = bitcast<f32>(_e2550);
+                                                    local_190 = bitcast<f32>(_e2550);
                                                     let _e2552 = local_182;
-                                                    let _e2553 = (_e2552 + 7u);
-                                                    local_193 = _e2553;
+                                                    let _e2553 = (_e2552 + 2u);
+                                                    local_191 = _e2553;
                                                     let _e2554 = local_1;
                                                     if (_e2553 < _e2554) {
                                                     } else {
                                                         phi_4239_ = true;
                                                         break;
                                                     }
-                                                    let _e2556 = local_193;
+                                                    let _e2556 = local_191;
                                                     let _e2559 = global_3.member[_e2556];
-                                                    let _e2560 = bitcast<f32>(_e2559);
-                                                    local_194 = _e2560;
-                                                    local_195 = -(_e2560);
-                                                    let _e2562 = (-0.5f - _e2560);
-                                                    let _e2564 = select(0f, _e2562, (_e2562 > 0f));
-                                                    let _e2567 = local_187;
-                                                    let _e2568 = (_e2567 * select(1f, _e2564, (_e2564 < 1f)));
-                                                    local_196 = _e2568;
-                                                    if (_e2568 <= 0f) {
-                                                        phi_3504_ = _e2382;
-                                                    } else {
-                                                        let _e2570 = local_247;
-                                                        let _e2572 = local_247;
-                                                        let _e2574 = local_194;
-                                                        let _e2576 = local_195;
-                                                        let _e2578 = (((0.8660254f * _e2570) * _e2572) / ((_e2574 * -3.1415927f) * _e2576));
-                                                        let _e2581 = local_195;
-                                                        let _e2582 = local_183;
-                                                        let _e2584 = local_247;
-                                                        let _e2586 = ((_e2581 - _e2582) + (0.5f * _e2584));
-                                                        let _e2588 = select(0f, _e2586, (_e2586 > 0f));
-                                                        let _e2591 = local_196;
-                                                        let _e2593 = ((_e2591 * select(1f, _e2588, (_e2588 < 1f))) * select(1f, _e2578, (_e2578 < 1f)));
-                                                        let _e2594 = local_174;
-                                                        let _e2597 = local_188;
-                                                        let _e2600 = local_174;
-                                                        let _e2603 = local_190;
-                                                        let _e2606 = local_174;
-                                                        let _e2609 = local_192;
-                                                        let _e2613 = local_174;
-                                                        let _e2620 = type_16(_e2613.member, _e2613.member_1, _e2613.member_2, _e2613.member_3, array<f32, 3>((_e2594.member_4[0] + (_e2593 * _e2597)), (_e2600.member_4[1] + (_e2593 * _e2603)), (_e2606.member_4[2] + (_e2593 * _e2609))), _e2613.member_5);
-                                                        let _e2621 = local_174;
-                                                        phi_3504_ = type_16(_e2620.member, _e2620.member_1, _e2620.member_2, _e2620.member_3, _e2620.member_4, (_e2621.member_5 + _e2593));
-                                                    }
-                                                    let _e2632 = phi_3504_;
-                                                    phi_3506_ = _e2632;
-                                                } else {
-                                                    phi_3506_ = _e2382;
-                                                }
-                                                let _e2634 = phi_3506_;
-                                                local_197 = _e2634;
-                                                let _e2635 = local_187;
-                                                if (_e2635 < 1f) {
-                                                    let _e2637 = local_182;
-                                                    let _e2638 = (_e2637 + 4u);
-                                                    local_198 = _e2638;
-                                                    let _e2639 = local_1;
-                                                    if (_e2638 < _e2639) {
+                                                    local_192 = bitcast<f32>(_e2559);
+                                                    let _e2561 = local_182;
+                                                    let _e2562 = (_e2561 + 7u);
+                                                    local_193 = _e2562;
+                                                    let _e2563 = local_1;
+                                                    if (_e2562 < _e2563) {
                                                     } else {
                                                         phi_4239_ = true;
                                                         break;
                                                     }
-                                                    let _e2641 = local_198;
-                                                    let _e2644 = global_3.member[_e2641];
-                                                    local_199 = bitcast<f32>(_e2644);
+                                                    let _e2565 = local_193;
+                                                    let _e2568 = global_3.member[_e2565];
+                                                    let _e2569 = bitcast<f32>(_e2568);
+                                                    local_194 = _e2569;
+                                                    local_195 = -(_e2569);
+                                                    let _e2571 = (-0.5f - _e2569);
+                                                    let _e2573 = select(0f, _e2571, (_e2571 > 0f));
+                                                    let _e2576 = local_187;
+                                                    let _e2577 = (_e2576 * select(1f, _e2573, (_e2573 < 1f)));
+                                                    local_196 = _e2577;
+                                                    if (_e2577 <= 0f) {
+                                                        phi_3504_ = _e2389;
+                                                    } else {
+                                                        let _e2579 = local_247;
+                                                        let _e2581 = local_247;
+                                                        let _e2583 = local_194;
+                                                        let _e2585 = local_195;
+                                                        let _e2587 = (((0.8660254f * _e2579) * _e2581) / ((_e2583 * -3.1415927f) * _e2585));
+                                                        let _e2590 = local_195;
+                                                        let _e2591 = local_183;
+                                                        let _e2593 = local_247;
+                                                        let _e2595 = ((_e2590 - _e2591) + (0.5f * _e2593));
+                                                        let _e2597 = select(0f, _e2595, (_e2595 > 0f));
+                                                        let _e2600 = local_196;
+                                                        let _e2602 = ((_e2600 * select(1f, _e2597, (_e2597 < 1f))) * select(1f, _e2587, (_e2587 < 1f)));
+                                                        let _e2603 = local_174;
+                                                        let _e2606 = local_188;
+                                                        let _e2609 = local_174;
+                                                        let _e2612 = local_190;
+                                                        let _e2615 = local_174;
+                                                        let _e2618 = local_192;
+                                                        let _e2622 = local_174;
+                                                        let _e2629 = type_16(_e2622.member, _e2622.member_1, _e2622.member_2, _e2622.member_3, array<f32, 3>((_e2603.member_4[0] + (_e2602 * _e2606)), (_e2609.member_4[1] + (_e2602 * _e2612)), (_e2615.member_4[2] + (_e2602 * _e2618))), _e2622.member_5);
+                                                        let _e2630 = local_174;
+                                                        phi_3504_ = type_16(_e2629.member, _e2629.member_1, _e2629.member_2, _e2629.member_3, _e2629.member_4, (_e2630.member_5 + _e2602));
+                                                    }
+                                                    let _e2641 = phi_3504_;
+                                                    phi_3506_ = _e2641;
+                                                } else {
+                                                    phi_3506_ = _e2389;
+                                                }
+                                                let _e2643 = phi_3506_;
+                                                local_197 = _e2643;
+                                                let _e2644 = local_187;
+                                                if (_e2644 < 1f) {
                                                     let _e2646 = local_182;
-                                                    let _e2647 = (_e2646 + 5u);
-                                                    local_200 = _e2647;
+                                                    let _e2647 = (_e2646 + 4u);
+                                                    local_198 = _e2647;
                                                     let _e2648 = local_1;
                                                     if (_e2647 < _e2648) {
                                                     } else {
                                                         phi_4239_ = true;
                                                         break;
                                                     }
-                                                    let _e2650 = local_200;
+                                                    let _e2650 = local_198;
                                                     let _e2653 = global_3.member[_e2650];
-                                                    local_201 = bitcast<f32>(_e2653);
+                                                    local_199 = bitcast<f32>(_e2653);
                                                     let _e2655 = local_182;
-                                                    let _e2656 = (_e2655 + 6u);
-                                                    local_202 = _e2656;
+                                                    let _e2656 = (_e2655 + 5u);
+                                                    local_200 = _e2656;
                                                     let _e2657 = local_1;
                                                     if (_e2656 < _e2657) {
                                                     } else {
                                                         phi_4239_ = true;
                                                         break;
                                                     }
-                                                    let _e2659 = local_202;
+                                                    let _e2659 = local_200;
                                                     let _e2662 = global_3.member[_e2659];
-                                                    local_203 = bitcast<f32>(_e2662);
-                                                    let _e2664 = local_187;
-                                                    let _e2666 = local_185;
-                                                    local_204 = -(_e2666);
-                                                    let _e2668 = local_185;
-                                                    let _e2669 = (-0.5f - _e2668);
-                                                    let _e2671 = select(0f, _e2669, (_e2669 > 0f));
-                                                    let _e2674 = ((1f - _e2664) * select(1f, _e2671, (_e2671 < 1f)));
-                                                    local_205 = _e2674;
-                                                    if (_e2674 <= 0f) {
-                                                        phi_3759_ = _e2634;
+                                                    local_201 = bitcast<f32>(_e2662);
+                                                    let _e2664 = local_182;
+                                                    let _e2665 = (_e2664 + 6u);
+                                                    local_202 = _e2665;
+                                                    let _e2666 = local_1;
+                                                    if (_e2665 < _e2666) {
                                                     } else {
-                                                        let _e2676 = local_247;
-                                                        let _e2678 = local_247;
-                                                        let _e2680 = local_185;
-                                                        let _e2682 = local_204;
-                                                        let _e2684 = (((0.8660254f * _e2676) * _e2678) / ((_e2680 * -3.1415927f) * _e2682));
-                                                        let _e2687 = local_204;
-                                                        let _e2688 = local_183;
-                                                        let _e2690 = local_247;
-                                                        let _e2692 = ((_e2687 - _e2688) + (0.5f * _e2690));
-                                                        let _e2694 = select(0f, _e2692, (_e2692 > 0f));
-                                                        let _e2697 = local_205;
-                                                        let _e2699 = ((_e2697 * select(1f, _e2694, (_e2694 < 1f))) * select(1f, _e2684, (_e2684 < 1f)));
-                                                        let _e2700 = local_197;
-                                                        let _e2703 = local_199;
-                                                        let _e2706 = local_197;
-                                                        let _e2709 = local_201;
-                                                        let _e2712 = local_197;
-                                                        let _e2715 = local_203;
-                                                        let _e2719 = local_197;
-                                                        let _e2726 = type_16(_e2719.member, _e2719.member_1, _e2719.member_2, _e2719.member_3, array<f32, 3>((_e2700.member_4[0] + (_e2699 * _e2703)), (_e2706.member_4[1] + (_e2699 * _e2709)), (_e2712.member_4[2] + (_e2699 * _e2715))), _e2719.member_5);
-                                                        let _e2727 = local_197;
-                                                        phi_3759_ = type_16(_e2726.member, _e2726.member_1, _e2726.member_2, _e2726.member_3, _e2726.member_4, (_e2727.member_5 + _e2699));
+                                                        phi_4239_ = true;
+                                                        break;
                                                     }
-                                                    let _e2738 = phi_3759_;
-                                                    phi_3761_ = _e2738;
+                                                    let _e2668 = local_202;
+                                                    let _e2671 = global_3.member[_e2668];
+                                                    local_203 = bitcast<f32>(_e2671);
+                                                    let _e2673 = local_187;
+                                                    let _e2675 = local_185;
+                                                    local_204 = -(_e2675);
+                                                    let _e2677 = local_185;
+                                                    let _e2678 = (-0.5f - _e2677);
+                                                    let _e2680 = select(0f, _e2678, (_e2678 > 0f));
+                                                    let _e2683 = ((1f - _e2673) * select(1f, _e2680, (_e2680 < 1f)));
+                                                    local_205 = _e2683;
+                                                    if (_e2683 <= 0f) {
+                                                        phi_3759_ = _e2643;
+                                                    } else {
+                                                        let _e2685 = local_247;
+                                                        let _e2687 = local_247;
+                                                        let _e2689 = local_185;
+                                                        let _e2691 = local_204;
+                                                        let _e2693 = (((0.8660254f * _e2685) * _e2687) / ((_e2689 * -3.1415927f) * _e2691));
+                                                        let _e2696 = local_204;
+                                                        let _e2697 = local_183;
+                                                        let _e2699 = local_247;
+                                                        let _e2701 = ((_e2696 - _e2697) + (0.5f * _e2699));
+                                                        let _e2703 = select(0f, _e2701, (_e2701 > 0f));
+                                                        let _e2706 = local_205;
+                                                        let _e2708 = ((_e2706 * select(1f, _e2703, (_e2703 < 1f))) * select(1f, _e2693, (_e2693 < 1f)));
+                                                        let _e2709 = local_197;
+                                                        let _e2712 = local_199;
+                                                        let _e2715 = local_197;
+                                                        let _e2718 = local_201;
+                                                        let _e2721 = local_197;
+                                                        let _e2724 = local_203;
+                                                        let _e2728 = local_197;
+                                                        let _e2735 = type_16(_e2728.member, _e2728.member_1, _e2728.member_2, _e2728.member_3, array<f32, 3>((_e2709.member_4[0] + (_e2708 * _e2712)), (_e2715.member_4[1] + (_e2708 * _e2718)), (_e2721.member_4[2] + (_e2708 * _e2724))), _e2728.member_5);
+                                                        let _e2736 = local_197;
+                                                        phi_3759_ = type_16(_e2735.member, _e2735.member_1, _e2735.member_2, _e2735.member_3, _e2735.member_4, (_e2736.member_5 + _e2708));
+                                                    }
+                                                    let _e2747 = phi_3759_;
+                                                    phi_3761_ = _e2747;
                                                 } else {
-                                                    phi_3761_ = _e2634;
+                                                    phi_3761_ = _e2643;
                                                 }
-                                                let _e2740 = phi_3761_;
-                                                phi_3762_ = _e2740;
+                                                let _e2749 = phi_3761_;
+                                                phi_3762_ = _e2749;
                                             }
-                                            let _e2742 = phi_3762_;
-                                            let _e2743 = local_175;
-                                            phi_3061_ = _e2742;
-                                            phi_3064_ = (_e2743 + 1u);
+                                            let _e2751 = phi_3762_;
+                                            let _e2752 = local_175;
+                                            phi_3061_ = _e2751;
+                                            phi_3064_ = (_e2752 + 1u);
                                         } else {
                                             phi_3061_ = type_16();
                                             phi_3064_ = u32();
                                         }
-                                        let _e2746 = phi_3061_;
-                                        let _e2748 = phi_3064_;
+                                        let _e2755 = phi_3061_;
+                                        let _e2757 = phi_3064_;
                                         continue;
                                         continuing {
-                                            let _e2749 = local_176;
-                                            phi_3060_ = _e2746;
-                                            phi_3063_ = _e2748;
-                                            phi_4239_ = _e2373;
-                                            break if !(_e2749);
+                                            let _e2758 = local_176;
+                                            phi_3060_ = _e2755;
+                                            phi_3063_ = _e2757;
+                                            phi_4239_ = _e2380;
+                                            break if !(_e2758);
                                         }
                                     }
-                                    let _e2752 = phi_4239_;
-                                    phi_4321_ = _e2752;
-                                    if _e2752 {
+                                    let _e2761 = phi_4239_;
+                                    phi_4321_ = _e2761;
+                                    if _e2761 {
                                         break;
                                     }
-                                    let _e2753 = local_172;
-                                    phi_4322_ = _e2752;
-                                    let _e3092 = local_253;
-                                    phi_3049_ = _e3092;
-                                    phi_3052_ = (_e2753 + 1u);
+                                    let _e2762 = local_172;
+                                    phi_4322_ = _e2761;
+                                    let _e3101 = local_253;
+                                    phi_3049_ = _e3101;
+                                    phi_3052_ = (_e2762 + 1u);
                                 } else {
-                                    phi_4322_ = _e2373;
+                                    phi_4322_ = _e2380;
                                     phi_3049_ = type_16();
                                     phi_3052_ = u32();
                                 }
-                                let _e2756 = phi_4322_;
-                                let _e2758 = phi_3049_;
-                                let _e2760 = phi_3052_;
+                                let _e2765 = phi_4322_;
+                                let _e2767 = phi_3049_;
+                                let _e2769 = phi_3052_;
                                 continue;
                                 continuing {
-                                    let _e2761 = local_173;
-                                    phi_4249_ = _e2756;
-                                    phi_3048_ = _e2758;
-                                    phi_3051_ = _e2760;
-                                    phi_4321_ = _e2756;
-                                    break if !(_e2761);
+                                    let _e2770 = local_173;
+                                    phi_4249_ = _e2765;
+                                    phi_3048_ = _e2767;
+                                    phi_3051_ = _e2769;
+                                    phi_4321_ = _e2765;
+                                    break if !(_e2770);
                                 }
                             }
-                            let _e2764 = phi_4321_;
-                            if _e2764 {
+                            let _e2773 = phi_4321_;
+                            if _e2773 {
                                 break;
                             }
-                            let _e3097 = local_254;
-                            phi_3765_ = _e3097;
+                            let _e3106 = local_254;
+                            phi_3765_ = _e3106;
                         } else {
-                            phi_3765_ = _e2330;
+                            phi_3765_ = _e2336;
                         }
-                        let _e2766 = phi_3765_;
-                        phi_3766_ = _e2766;
+                        let _e2775 = phi_3765_;
+                        phi_3766_ = _e2775;
                     } else {
-                        phi_3766_ = _e1722;
+                        phi_3766_ = _e1725;
                     }
-                    let _e2768 = phi_3766_;
-                    local_206 = _e2768;
-                    let _e2769 = local_14;
-                    local_207 = (8u * _e2769);
-                    local_208 = _e2768.member_1;
-                    let _e2772 = (_e2768.member_1 > 0f);
-                    local_209 = _e2772;
-                    if _e2772 {
-                        let _e2773 = local_208;
-                        let _e2774 = (1f / _e2773);
-                        let _e2775 = local_206;
-                        let _e2779 = local_206;
-                        let _e2783 = local_206;
-                        phi_3784_ = array<f32, 3>((_e2775.member[0] * _e2774), (_e2779.member[1] * _e2774), (_e2783.member[2] * _e2774));
+                    let _e2777 = phi_3766_;
+                    local_206 = _e2777;
+                    let _e2778 = local_14;
+                    local_207 = (8u * _e2778);
+                    local_208 = _e2777.member_1;
+                    let _e2781 = (_e2777.member_1 > 0f);
+                    local_209 = _e2781;
+                    if _e2781 {
+                        let _e2782 = local_208;
+                        let _e2783 = (1f / _e2782);
+                        let _e2784 = local_206;
+                        let _e2788 = local_206;
+                        let _e2792 = local_206;
+                        phi_3784_ = array<f32, 3>((_e2784.member[0] * _e2783), (_e2788.member[1] * _e2783), (_e2792.member[2] * _e2783));
                     } else {
                         phi_3784_ = array<f32, 3>(0f, 0f, 0f);
                     }
-                    let _e2789 = phi_3784_;
-                    local_210 = _e2789;
-                    let _e2790 = local_206;
-                    local_211 = _e2790.member_3;
-                    if (_e2790.member_3 > 0f) {
-                        let _e2798 = local_211;
-                        let _e2799 = (1f / _e2798);
-                        let _e2800 = local_206;
-                        local_212 = (_e2800.member_2[0] * _e2799);
-                        let _e2804 = local_206;
-                        local_213 = (_e2804.member_2[1] * _e2799);
-                        let _e2808 = local_206;
-                        local_214 = (_e2808.member_2[2] * _e2799);
-                        let _e2812 = local_209;
-                        if _e2812 {
+                    let _e2798 = phi_3784_;
+                    local_210 = _e2798;
+                    let _e2799 = local_206;
+                    local_211 = _e2799.member_3;
+                    if (_e2799.member_3 > 0f) {
+                        let _e2807 = local_211;
+                        let _e2808 = (1f / _e2807);
+                        let _e2809 = local_206;
+                        local_212 = (_e2809.member_2[0] * _e2808);
+                        let _e2813 = local_206;
+                        local_213 = (_e2813.member_2[1] * _e2808);
+                        let _e2817 = local_206;
+                        local_214 = (_e2817.member_2[2] * _e2808);
+                        let _e2821 = local_209;
+                        if _e2821 {
                             phi_3816_ = _e416;
                         } else {
                             phi_3816_ = 1f;
                         }
-                        let _e2814 = phi_3816_;
-                        let _e2815 = local_210;
-                        let _e2817 = local_212;
-                        let _e2821 = local_210;
-                        let _e2823 = local_213;
-                        let _e2827 = local_210;
-                        let _e2829 = local_214;
+                        let _e2823 = phi_3816_;
+                        let _e2824 = local_210;
+                        let _e2826 = local_212;
+                        let _e2830 = local_210;
+                        let _e2832 = local_213;
+                        let _e2836 = local_210;
+                        let _e2838 = local_214;
                         phi_3840_ = 1f;
-                        phi_3841_ = array<f32, 3>((_e2815[0] + (_e2814 * (_e2817 - _e2815[0]))), (_e2821[1] + (_e2814 * (_e2823 - _e2821[1]))), (_e2827[2] + (_e2814 * (_e2829 - _e2827[2]))));
+                        phi_3841_ = array<f32, 3>((_e2824[0] + (_e2823 * (_e2826 - _e2824[0]))), (_e2830[1] + (_e2823 * (_e2832 - _e2830[1]))), (_e2836[2] + (_e2823 * (_e2838 - _e2836[2]))));
                     } else {
-                        let _e2793 = local_209;
-                        if _e2793 {
-                            phi_3839_ = _e2789;
+                        let _e2802 = local_209;
+                        if _e2802 {
+                            phi_3839_ = _e2798;
                         } else {
                             phi_3839_ = array<f32, 3>(0f, 0f, 0f);
                         }
-                        let _e2795 = phi_3839_;
-                        let _e2796 = local_209;
-                        phi_3840_ = select(0f, 1f, _e2796);
-                        phi_3841_ = _e2795;
+                        let _e2804 = phi_3839_;
+                        let _e2805 = local_209;
+                        phi_3840_ = select(0f, 1f, _e2805);
+                        phi_3841_ = _e2804;
                     }
-                    let _e2835 = phi_3840_;
-                    let _e2837 = phi_3841_;
-                    local_215 = _e2835;
-                    local_216 = _e2837;
-                    let _e2838 = local_206;
-                    local_217 = _e2838.member_5;
-                    local_248 = select(1f, _e2838.member_5, (_e2838.member_5 < 1f));
-                    if (_e2838.member_5 > 0f) {
-                        let _e2843 = local_248;
-                        let _e2844 = local_217;
-                        phi_3855_ = (_e2843 / _e2844);
+                    let _e2844 = phi_3840_;
+                    let _e2846 = phi_3841_;
+                    local_215 = _e2844;
+                    local_216 = _e2846;
+                    let _e2847 = local_206;
+                    local_217 = _e2847.member_5;
+                    local_248 = select(1f, _e2847.member_5, (_e2847.member_5 < 1f));
+                    if (_e2847.member_5 > 0f) {
+                        let _e2852 = local_248;
+                        let _e2853 = local_217;
+                        phi_3855_ = (_e2852 / _e2853);
                     } else {
                         phi_3855_ = 0f;
                     }
-                    let _e2847 = phi_3855_;
-                    local_218 = _e2847;
-                    let _e2848 = local_216;
-                    local_219 = bitcast<u32>(_e2848[0]);
-                    let _e2851 = local_207;
-                    let _e2852 = local_3;
-                    if (_e2851 < _e2852) {
+                    let _e2856 = phi_3855_;
+                    local_218 = _e2856;
+                    let _e2857 = local_216;
+                    local_219 = bitcast<u32>(_e2857[0]);
+                    let _e2860 = local_207;
+                    let _e2861 = local_3;
+                    if (_e2860 < _e2861) {
                     } else {
                         break;
                     }
-                    let _e2854 = local_207;
-                    let _e2857 = local_219;
-                    global_5.member[_e2854] = _e2857;
-                    let _e2858 = local_207;
-                    let _e2859 = (_e2858 + 1u);
-                    local_220 = _e2859;
-                    let _e2860 = local_216;
-                    local_221 = bitcast<u32>(_e2860[1]);
-                    let _e2863 = local_3;
-                    if (_e2859 < _e2863) {
+                    let _e2863 = local_207;
+                    let _e2866 = local_219;
+                    global_5.member[_e2863] = _e2866;
+                    let _e2867 = local_207;
+                    let _e2868 = (_e2867 + 1u);
+                    local_220 = _e2868;
+                    let _e2869 = local_216;
+                    local_221 = bitcast<u32>(_e2869[1]);
+                    let _e2872 = local_3;
+                    if (_e2868 < _e2872) {
                     } else {
                         break;
                     }
-                    let _e2865 = local_220;
-                    let _e2868 = local_221;
-                    global_5.member[_e2865] = _e2868;
-                    let _e2869 = local_207;
-                    let _e2870 = (_e2869 + 2u);
-                    local_222 = _e2870;
-                    let _e2871 = local_216;
-                    local_223 = bitcast<u32>(_e2871[2]);
-                    let _e2874 = local_3;
-                    if (_e2870 < _e2874) {
+                    let _e2874 = local_220;
+                    let _e2877 = local_221;
+                    global_5.member[_e2874] = _e2877;
+                    let _e2878 = local_207;
+                    let _e2879 = (_e2878 + 2u);
+                    local_222 = _e2879;
+                    let _e2880 = local_216;
+                    local_223 = bitcast<u32>(_e2880[2]);
+                    let _e2883 = local_3;
+                    if (_e2879 < _e2883) {
                     } else {
                         break;
                     }
-                    let _e2876 = local_222;
-                    let _e2879 = local_223;
-                    global_5.member[_e2876] = _e2879;
-                    let _e2880 = local_207;
-                    let _e2881 = (_e2880 + 3u);
-                    local_224 = _e2881;
-                    let _e2882 = local_215;
-                    local_225 = bitcast<u32>(_e2882);
-                    let _e2884 = local_3;
-                    if (_e2881 < _e2884) {
+                    let _e2885 = local_222;
+                    let _e2888 = local_223;
+                    global_5.member[_e2885] = _e2888;
+                    let _e2889 = local_207;
+                    let _e2890 = (_e2889 + 3u);
+                    local_224 = _e2890;
+                    let _e2891 = local_215;
+                    local_225 = bitcast<u32>(_e2891);
+                    let _e2893 = local_3;
+                    if (_e2890 < _e2893) {
                     } else {
                         break;
                     }
-                    let _e2886 = local_224;
-                    let _e2889 = local_225;
-                    global_5.member[_e2886] = _e2889;
-                    let _e2890 = local_207;
-                    let _e2891 = (_e2890 + 4u);
-                    local_226 = _e2891;
-                    let _e2892 = local_206;
-                    let _e2895 = local_218;
-                    local_227 = bitcast<u32>((_e2892.member_4[0] * _e2895));
-                    let _e2898 = local_3;
-                    if (_e2891 < _e2898) {
+                    let _e2895 = local_224;
+                    let _e2898 = local_225;
+                    global_5.member[_e2895] = _e2898;
+                    let _e2899 = local_207;
+                    let _e2900 = (_e2899 + 4u);
+                    local_226 = _e2900;
+                    let _e2901 = local_206;
+                    let _e2904 = local_218;
+                    local_227 = bitcast<u32>((_e2901.member_4[0] * _e2904));
+                    let _e2907 = local_3;
+                    if (_e2900 < _e2907) {
                     } else {
                         break;
                     }
-                    let _e2900 = local_226;
-                    let _e2903 = local_227;
-                    global_5.member[_e2900] = _e2903;
-                    let _e2904 = local_207;
-                    let _e2905 = (_e2904 + 5u);
-                    local_228 = _e2905;
-                    let _e2906 = local_206;
-                    let _e2909 = local_218;
-                    local_229 = bitcast<u32>((_e2906.member_4[1] * _e2909));
-                    let _e2912 = local_3;
-                    if (_e2905 < _e2912) {
+                    let _e2909 = local_226;
+                    let _e2912 = local_227;
+                    global_5.member[_e2909] = _e2912;
+                    let _e2913 = local_207;
+                    let _e2914 = (_e2913 + 5u);
+                    local_228 = _e2914;
+                    let _e2915 = local_206;
+                    let _e2918 = local_218;
+                    local_229 = bitcast<u32>((_e2915.member_4[1] * _e2918));
+                    let _e2921 = local_3;
+                    if (_e2914 < _e2921) {
                     } else {
                         break;
                     }
-                    let _e2914 = local_228;
-                    let _e2917 = local_229;
-                    global_5.member[_e2914] = _e2917;
-                    let _e2918 = local_207;
-                    let _e2919 = (_e2918 + 6u);
-                    local_230 = _e2919;
-                    let _e2920 = local_206;
-                    let _e2923 = local_218;
-                    local_231 = bitcast<u32>((_e2920.member_4[2] * _e2923));
-                    let _e2926 = local_3;
-                    if (_e2919 < _e2926) {
+                    let _e2923 = local_228;
+                    let _e2926 = local_229;
+                    global_5.member[_e2923] = _e2926;
+                    let _e2927 = local_207;
+                    let _e2928 = (_e2927 + 6u);
+                    local_230 = _e2928;
+                    let _e2929 = local_206;
+                    let _e2932 = local_218;
+                    local_231 = bitcast<u32>((_e2929.member_4[2] * _e2932));
+                    let _e2935 = local_3;
+                    if (_e2928 < _e2935) {
                     } else {
                         break;
                     }
-                    let _e2928 = local_230;
-                    let _e2931 = local_231;
-                    global_5.member[_e2928] = _e2931;
-                    let _e2932 = local_207;
-                    let _e2933 = (_e2932 + 7u);
-                    local_232 = _e2933;
-                    let _e2934 = local_248;
-                    local_233 = bitcast<u32>(_e2934);
-                    let _e2936 = local_3;
-                    if (_e2933 < _e2936) {
+                    let _e2937 = local_230;
+                    let _e2940 = local_231;
+                    global_5.member[_e2937] = _e2940;
+                    let _e2941 = local_207;
+                    let _e2942 = (_e2941 + 7u);
+                    local_232 = _e2942;
+                    let _e2943 = local_248;
+                    local_233 = bitcast<u32>(_e2943);
+                    let _e2945 = local_3;
+                    if (_e2942 < _e2945) {
                     } else {
                         break;
                     }
-                    let _e2938 = local_232;
-                    let _e2941 = local_233;
-                    global_5.member[_e2938] = _e2941;
+                    let _e2947 = local_232;
+                    let _e2950 = local_233;
+                    global_5.member[_e2947] = _e2950;
                 }
             }
             storageBarrier();

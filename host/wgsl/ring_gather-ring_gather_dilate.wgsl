@@ -377,50 +377,50 @@ fn function_() {
                                                                 let _e290 = local_40;
                                                                 let _e292 = local_40;
                                                                 let _e293 = select(_e289, _e292, (_e290 > _e289));
-                                                                let _e299 = (select(select(u32(_e293), 0u, (_e293 < 0f)), 4294967295u, (_e293 > 4294967000f)) + 1u);
-                                                                let _e300 = local_28;
-                                                                let _e302 = local_28;
-                                                                phi_420_ = select(_e302, _e299, (_e299 > _e300));
+                                                                let _e300 = (select(select(u32(_e293), 0u, !((_e293 >= 0f))), 4294967295u, (_e293 > 4294967000f)) + 1u);
+                                                                let _e301 = local_28;
+                                                                let _e303 = local_28;
+                                                                phi_420_ = select(_e303, _e300, (_e300 > _e301));
                                                             } else {
                                                                 phi_420_ = _e182;
                                                             }
-                                                            let _e305 = phi_420_;
-                                                            phi_421_ = _e305;
+                                                            let _e306 = phi_420_;
+                                                            phi_421_ = _e306;
                                                         } else {
                                                             phi_421_ = _e182;
                                                         }
-                                                        let _e307 = phi_421_;
-                                                        phi_422_ = _e307;
+                                                        let _e308 = phi_421_;
+                                                        phi_422_ = _e308;
                                                         phi_423_ = select(_e253, _e256, (_e254 > _e253));
                                                     } else {
                                                         phi_422_ = _e182;
                                                         phi_423_ = _e184;
                                                     }
-                                                    let _e309 = phi_422_;
-                                                    let _e311 = phi_423_;
-                                                    phi_424_ = _e309;
-                                                    phi_425_ = _e311;
+                                                    let _e310 = phi_422_;
+                                                    let _e312 = phi_423_;
+                                                    phi_424_ = _e310;
+                                                    phi_425_ = _e312;
                                                 } else {
                                                     phi_424_ = _e182;
                                                     phi_425_ = _e184;
                                                 }
-                                                let _e313 = phi_424_;
-                                                let _e315 = phi_425_;
-                                                let _e316 = local_27;
-                                                phi_427_ = (_e316 + 1i);
-                                                phi_428_ = _e313;
-                                                phi_429_ = _e315;
+                                                let _e314 = phi_424_;
+                                                let _e316 = phi_425_;
+                                                let _e317 = local_27;
+                                                phi_427_ = (_e317 + 1i);
+                                                phi_428_ = _e314;
+                                                phi_429_ = _e316;
                                             } else {
                                                 phi_427_ = i32();
                                                 phi_428_ = u32();
                                                 phi_429_ = f32();
                                             }
-                                            let _e319 = phi_427_;
-                                            let _e321 = phi_428_;
-                                            let _e323 = phi_429_;
-                                            phi_431_ = _e319;
-                                            phi_432_ = _e321;
-                                            phi_433_ = _e323;
+                                            let _e320 = phi_427_;
+                                            let _e322 = phi_428_;
+                                            let _e324 = phi_429_;
+                                            phi_431_ = _e320;
+                                            phi_432_ = _e322;
+                                            phi_433_ = _e324;
                                             phi_434_ = _e193;
                                         } else {
                                             phi_431_ = i32();
@@ -428,127 +428,127 @@ fn function_() {
                                             phi_433_ = f32();
                                             phi_434_ = false;
                                         }
-                                        let _e325 = phi_431_;
-                                        let _e327 = phi_432_;
-                                        let _e329 = phi_433_;
-                                        let _e331 = phi_434_;
-                                        phi_236_ = _e325;
-                                        phi_239_ = _e327;
-                                        phi_241_ = _e329;
-                                        phi_436_ = _e331;
+                                        let _e326 = phi_431_;
+                                        let _e328 = phi_432_;
+                                        let _e330 = phi_433_;
+                                        let _e332 = phi_434_;
+                                        phi_236_ = _e326;
+                                        phi_239_ = _e328;
+                                        phi_241_ = _e330;
+                                        phi_436_ = _e332;
                                     } else {
                                         phi_236_ = i32();
                                         phi_239_ = u32();
                                         phi_241_ = f32();
                                         phi_436_ = false;
                                     }
-                                    let _e333 = phi_236_;
-                                    let _e335 = phi_239_;
-                                    let _e337 = phi_241_;
-                                    let _e339 = phi_436_;
-                                    local_41 = _e339;
+                                    let _e334 = phi_236_;
+                                    let _e336 = phi_239_;
+                                    let _e338 = phi_241_;
+                                    let _e340 = phi_436_;
+                                    local_41 = _e340;
                                     continue;
                                     continuing {
-                                        let _e340 = local_41;
-                                        phi_235_ = _e333;
-                                        phi_238_ = _e335;
-                                        phi_240_ = _e337;
+                                        let _e341 = local_41;
+                                        phi_235_ = _e334;
+                                        phi_238_ = _e336;
+                                        phi_240_ = _e338;
                                         phi_499_ = _e166;
-                                        break if !(_e340);
+                                        break if !(_e341);
                                     }
                                 }
-                                let _e343 = phi_499_;
-                                phi_526_ = _e343;
-                                if _e343 {
+                                let _e344 = phi_499_;
+                                phi_526_ = _e344;
+                                if _e344 {
                                     break;
                                 }
-                                let _e344 = local_22;
-                                phi_527_ = _e343;
-                                phi_218_ = (_e344 + 1i);
-                                let _e429 = local_45;
-                                phi_221_ = _e429;
-                                let _e432 = local_46;
-                                phi_223_ = _e432;
+                                let _e345 = local_22;
+                                phi_527_ = _e344;
+                                phi_218_ = (_e345 + 1i);
+                                let _e430 = local_45;
+                                phi_221_ = _e430;
+                                let _e433 = local_46;
+                                phi_223_ = _e433;
                             } else {
                                 phi_527_ = _e166;
                                 phi_218_ = i32();
                                 phi_221_ = u32();
                                 phi_223_ = f32();
                             }
-                            let _e347 = phi_527_;
-                            let _e349 = phi_218_;
-                            let _e351 = phi_221_;
-                            let _e353 = phi_223_;
+                            let _e348 = phi_527_;
+                            let _e350 = phi_218_;
+                            let _e352 = phi_221_;
+                            let _e354 = phi_223_;
                             continue;
                             continuing {
-                                let _e354 = local_25;
-                                phi_519_ = _e347;
-                                phi_217_ = _e349;
-                                phi_220_ = _e351;
-                                phi_222_ = _e353;
-                                phi_526_ = _e347;
-                                break if !(_e354);
+                                let _e355 = local_25;
+                                phi_519_ = _e348;
+                                phi_217_ = _e350;
+                                phi_220_ = _e352;
+                                phi_222_ = _e354;
+                                phi_526_ = _e348;
+                                break if !(_e355);
                             }
                         }
-                        let _e357 = phi_526_;
-                        phi_528_ = _e357;
-                        if _e357 {
+                        let _e358 = phi_526_;
+                        phi_528_ = _e358;
+                        if _e358 {
                             break;
                         }
-                        let _e358 = local_18;
-                        let _e359 = (2u * _e358);
-                        local_42 = _e359;
-                        let _e360 = local_24;
-                        local_43 = bitcast<u32>(_e360);
-                        let _e362 = local_3;
-                        if (_e359 < _e362) {
+                        let _e359 = local_18;
+                        let _e360 = (2u * _e359);
+                        local_42 = _e360;
+                        let _e361 = local_24;
+                        local_43 = bitcast<u32>(_e361);
+                        let _e363 = local_3;
+                        if (_e360 < _e363) {
                         } else {
                             phi_528_ = true;
                             break;
                         }
-                        let _e364 = local_42;
-                        let _e367 = local_43;
-                        global_6.member[_e364] = _e367;
-                        let _e368 = local_42;
-                        let _e369 = (_e368 + 1u);
-                        local_44 = _e369;
-                        let _e370 = local_3;
-                        if (_e369 < _e370) {
+                        let _e365 = local_42;
+                        let _e368 = local_43;
+                        global_6.member[_e365] = _e368;
+                        let _e369 = local_42;
+                        let _e370 = (_e369 + 1u);
+                        local_44 = _e370;
+                        let _e371 = local_3;
+                        if (_e370 < _e371) {
                         } else {
                             phi_528_ = true;
                             break;
                         }
-                        let _e372 = local_44;
-                        let _e375 = local_23;
-                        global_6.member[_e372] = _e375;
-                        phi_530_ = _e357;
+                        let _e373 = local_44;
+                        let _e376 = local_23;
+                        global_6.member[_e373] = _e376;
+                        phi_530_ = _e358;
                     } else {
                         phi_530_ = _e141;
                     }
-                    let _e377 = phi_530_;
+                    let _e378 = phi_530_;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e378 = local_16;
-                    let _e379 = local_15;
-                    phi_529_ = _e377;
-                    phi_186_ = (_e378 + _e379);
+                    let _e379 = local_16;
+                    let _e380 = local_15;
+                    phi_529_ = _e378;
+                    phi_186_ = (_e379 + _e380);
                 } else {
                     phi_529_ = _e141;
                     phi_186_ = u32();
                 }
-                let _e382 = phi_529_;
-                let _e384 = phi_186_;
+                let _e383 = phi_529_;
+                let _e385 = phi_186_;
                 continue;
                 continuing {
-                    let _e385 = local_17;
-                    phi_520_ = _e382;
-                    phi_185_ = _e384;
-                    phi_528_ = _e382;
-                    break if !(_e385);
+                    let _e386 = local_17;
+                    phi_520_ = _e383;
+                    phi_185_ = _e385;
+                    phi_528_ = _e383;
+                    break if !(_e386);
                 }
             }
-            let _e388 = phi_528_;
-            if _e388 {
+            let _e389 = phi_528_;
+            if _e389 {
                 break;
             }
             break;

@@ -708,469 +708,469 @@ fn function_() {
                                         let _e620 = (_e616 - _e619);
                                         let _e624 = sqrt(((_e618 * _e618) + (_e620 * _e620)));
                                         local_66 = _e624;
-                                        let _e630 = local_9;
-                                        local_67 = ((select(select(u32(_e616), 0u, (_e616 < 0f)), 4294967295u, (_e616 > 4294967000f)) * _e630) + select(select(u32(_e604), 0u, (_e604 < 0f)), 4294967295u, (_e604 > 4294967000f)));
-                                        let _e638 = (_e624 == 0f);
-                                        local_68 = _e638;
-                                        if _e638 {
+                                        let _e631 = local_9;
+                                        local_67 = ((select(select(u32(_e616), 0u, !((_e616 >= 0f))), 4294967295u, (_e616 > 4294967000f)) * _e631) + select(select(u32(_e604), 0u, !((_e604 >= 0f))), 4294967295u, (_e604 > 4294967000f)));
+                                        let _e640 = (_e624 == 0f);
+                                        local_68 = _e640;
+                                        if _e640 {
                                             phi_785_ = 1f;
                                         } else {
-                                            let _e639 = local_12;
-                                            let _e640 = local_66;
-                                            let _e642 = ((_e639 - _e640) + 0.5f);
-                                            let _e644 = select(0f, _e642, (_e642 > 0f));
-                                            phi_785_ = select(1f, _e644, (_e644 < 1f));
+                                            let _e641 = local_12;
+                                            let _e642 = local_66;
+                                            let _e644 = ((_e641 - _e642) + 0.5f);
+                                            let _e646 = select(0f, _e644, (_e644 > 0f));
+                                            phi_785_ = select(1f, _e646, (_e646 < 1f));
                                         }
-                                        let _e648 = phi_785_;
-                                        let _e649 = local_33;
-                                        let _e651 = local_61;
-                                        let _e653 = (_e651.member_4 + (_e649 * _e648));
-                                        local_69 = _e653;
-                                        let _e654 = local_61;
-                                        let _e660 = type_16(_e654.member, _e654.member_1, _e654.member_2, _e654.member_3, _e653);
-                                        let _e661 = local_67;
-                                        let _e662 = local_3;
-                                        if (_e661 < _e662) {
+                                        let _e650 = phi_785_;
+                                        let _e651 = local_33;
+                                        let _e653 = local_61;
+                                        let _e655 = (_e653.member_4 + (_e651 * _e650));
+                                        local_69 = _e655;
+                                        let _e656 = local_61;
+                                        let _e662 = type_16(_e656.member, _e656.member_1, _e656.member_2, _e656.member_3, _e655);
+                                        let _e663 = local_67;
+                                        let _e664 = local_3;
+                                        if (_e663 < _e664) {
                                         } else {
                                             phi_1228_ = true;
                                             break;
                                         }
-                                        let _e664 = local_67;
-                                        let _e667 = global_5.member[_e664];
-                                        let _e668 = bitcast<f32>(_e667);
-                                        local_70 = _e668;
-                                        if ((bitcast<u32>(_e668) & 2147483647u) > 2139095040u) {
-                                            phi_1065_ = _e660;
+                                        let _e666 = local_67;
+                                        let _e669 = global_5.member[_e666];
+                                        let _e670 = bitcast<f32>(_e669);
+                                        local_70 = _e670;
+                                        if ((bitcast<u32>(_e670) & 2147483647u) > 2139095040u) {
+                                            phi_1065_ = _e662;
                                         } else {
-                                            let _e672 = local_67;
-                                            let _e673 = local_2;
-                                            if (_e672 < _e673) {
+                                            let _e674 = local_67;
+                                            let _e675 = local_2;
+                                            if (_e674 < _e675) {
                                             } else {
                                                 phi_1228_ = true;
                                                 break;
                                             }
-                                            let _e675 = local_67;
-                                            let _e678 = global_3.member[_e675];
-                                            local_71 = bitcast<f32>(_e678);
-                                            let _e680 = local_70;
-                                            if (_e680 < 0f) {
-                                                let _e682 = local_70;
-                                                phi_817_ = -(_e682);
+                                            let _e677 = local_67;
+                                            let _e680 = global_3.member[_e677];
+                                            local_71 = bitcast<f32>(_e680);
+                                            let _e682 = local_70;
+                                            if (_e682 < 0f) {
+                                                let _e684 = local_70;
+                                                phi_817_ = -(_e684);
                                             } else {
-                                                phi_817_ = _e668;
+                                                phi_817_ = _e670;
                                             }
-                                            let _e685 = phi_817_;
-                                            local_72 = _e685;
-                                            let _e686 = local_21;
-                                            if _e686 {
+                                            let _e687 = phi_817_;
+                                            local_72 = _e687;
+                                            let _e688 = local_21;
+                                            if _e688 {
                                                 phi_843_ = f32();
                                                 phi_844_ = true;
                                             } else {
-                                                let _e687 = local_71;
-                                                let _e689 = local_32;
-                                                let _e691 = (bitcast<u32>(_e687) > bitcast<u32>(_e689));
-                                                local_73 = _e691;
-                                                if _e691 {
-                                                    let _e692 = local_20;
-                                                    if (_e692 >= 0f) {
-                                                        let _e696 = local_72;
-                                                        let _e697 = local_20;
-                                                        let _e699 = local_72;
-                                                        let _e700 = local_20;
-                                                        phi_840_ = select(_e700, _e699, (_e696 < _e697));
+                                                let _e689 = local_71;
+                                                let _e691 = local_32;
+                                                let _e693 = (bitcast<u32>(_e689) > bitcast<u32>(_e691));
+                                                local_73 = _e693;
+                                                if _e693 {
+                                                    let _e694 = local_20;
+                                                    if (_e694 >= 0f) {
+                                                        let _e698 = local_72;
+                                                        let _e699 = local_20;
+                                                        let _e701 = local_72;
+                                                        let _e702 = local_20;
+                                                        phi_840_ = select(_e702, _e701, (_e698 < _e699));
                                                     } else {
-                                                        let _e694 = local_20;
-                                                        phi_840_ = -(_e694);
+                                                        let _e696 = local_20;
+                                                        phi_840_ = -(_e696);
                                                     }
-                                                    let _e703 = phi_840_;
-                                                    phi_841_ = _e703;
+                                                    let _e705 = phi_840_;
+                                                    phi_841_ = _e705;
                                                 } else {
                                                     phi_841_ = f32();
                                                 }
-                                                let _e705 = phi_841_;
-                                                let _e706 = local_73;
-                                                phi_843_ = _e705;
-                                                phi_844_ = select(true, false, _e706);
+                                                let _e707 = phi_841_;
+                                                let _e708 = local_73;
+                                                phi_843_ = _e707;
+                                                phi_844_ = select(true, false, _e708);
                                             }
-                                            let _e709 = phi_843_;
-                                            let _e711 = phi_844_;
-                                            let _e712 = local_72;
-                                            local_101 = select(_e709, _e712, _e711);
-                                            let _e714 = local_68;
-                                            if _e714 {
+                                            let _e711 = phi_843_;
+                                            let _e713 = phi_844_;
+                                            let _e714 = local_72;
+                                            local_101 = select(_e711, _e714, _e713);
+                                            let _e716 = local_68;
+                                            if _e716 {
                                                 phi_865_ = 1f;
                                             } else {
-                                                let _e715 = local_101;
-                                                let _e716 = local_66;
-                                                let _e718 = ((_e715 - _e716) + 0.5f);
-                                                let _e720 = select(0f, _e718, (_e718 > 0f));
-                                                phi_865_ = select(1f, _e720, (_e720 < 1f));
+                                                let _e717 = local_101;
+                                                let _e718 = local_66;
+                                                let _e720 = ((_e717 - _e718) + 0.5f);
+                                                let _e722 = select(0f, _e720, (_e720 > 0f));
+                                                phi_865_ = select(1f, _e722, (_e722 < 1f));
                                             }
-                                            let _e724 = phi_865_;
-                                            let _e725 = local_72;
+                                            let _e726 = phi_865_;
                                             let _e727 = local_72;
-                                            let _e728 = select(0.5f, _e727, (_e725 > 0.5f));
-                                            let _e732 = (_e724 * (1f / ((3.1415927f * _e728) * _e728)));
-                                            local_74 = _e732;
-                                            if (_e732 > 0f) {
-                                                let _e734 = local_67;
-                                                let _e735 = (3u * _e734);
-                                                local_75 = _e735;
-                                                let _e736 = local_1;
-                                                if (_e735 < _e736) {
+                                            let _e729 = local_72;
+                                            let _e730 = select(0.5f, _e729, (_e727 > 0.5f));
+                                            let _e734 = (_e726 * (1f / ((3.1415927f * _e730) * _e730)));
+                                            local_74 = _e734;
+                                            if (_e734 > 0f) {
+                                                let _e736 = local_67;
+                                                let _e737 = (3u * _e736);
+                                                local_75 = _e737;
+                                                let _e738 = local_1;
+                                                if (_e737 < _e738) {
                                                 } else {
                                                     phi_1228_ = true;
                                                     break;
                                                 }
-                                                let _e738 = local_75;
-                                                let _e741 = global_4.member[_e738];
-                                                local_76 = bitcast<f32>(_e741);
-                                                let _e743 = local_75;
-                                                let _e744 = (_e743 + 1u);
-                                                local_77 = _e744;
-                                                let _e745 = local_1;
-                                                if (_e744 < _e745) {
+                                                let _e740 = local_75;
+                                                let _e743 = global_4.member[_e740];
+                                                local_76 = bitcast<f32>(_e743);
+                                                let _e745 = local_75;
+                                                let _e746 = (_e745 + 1u);
+                                                local_77 = _e746;
+                                                let _e747 = local_1;
+                                                if (_e746 < _e747) {
                                                 } else {
                                                     phi_1228_ = true;
                                                     break;
                                                 }
-                                                let _e747 = local_77;
-                                                let _e750 = global_4.member[_e747];
-                                                local_78 = bitcast<f32>(_e750);
-                                                let _e752 = local_75;
-                                                let _e753 = (_e752 + 2u);
-                                                local_79 = _e753;
-                                                let _e754 = local_1;
-                                                if (_e753 < _e754) {
+                                                let _e749 = local_77;
+                                                let _e752 = global_4.member[_e749];
+                                                local_78 = bitcast<f32>(_e752);
+                                                let _e754 = local_75;
+                                                let _e755 = (_e754 + 2u);
+                                                local_79 = _e755;
+                                                let _e756 = local_1;
+                                                if (_e755 < _e756) {
                                                 } else {
                                                     phi_1228_ = true;
                                                     break;
                                                 }
-                                                let _e756 = local_79;
-                                                let _e759 = global_4.member[_e756];
-                                                local_80 = bitcast<f32>(_e759);
-                                                let _e761 = local_76;
-                                                if (_e761 > 1267650600000000000000000000000f) {
-                                                    let _e763 = local_76;
-                                                    phi_917_ = select(true, false, (_e763 <= 340282350000000000000000000000000000000f));
+                                                let _e758 = local_79;
+                                                let _e761 = global_4.member[_e758];
+                                                local_80 = bitcast<f32>(_e761);
+                                                let _e763 = local_76;
+                                                if (_e763 > 1267650600000000000000000000000f) {
+                                                    let _e765 = local_76;
+                                                    phi_917_ = select(true, false, (_e765 <= 340282350000000000000000000000000000000f));
                                                 } else {
                                                     phi_917_ = true;
                                                 }
-                                                let _e767 = phi_917_;
-                                                if _e767 {
-                                                    let _e768 = local_76;
-                                                    if (_e768 < 0.000000000000000000000000000000000000011754944f) {
-                                                        let _e770 = local_76;
-                                                        phi_931_ = select(true, false, (_e770 >= -340282350000000000000000000000000000000f));
+                                                let _e769 = phi_917_;
+                                                if _e769 {
+                                                    let _e770 = local_76;
+                                                    if (_e770 < 0.000000000000000000000000000000000000011754944f) {
+                                                        let _e772 = local_76;
+                                                        phi_931_ = select(true, false, (_e772 >= -340282350000000000000000000000000000000f));
                                                     } else {
                                                         phi_931_ = true;
                                                     }
-                                                    let _e774 = phi_931_;
-                                                    let _e775 = local_76;
-                                                    phi_936_ = select(0f, _e775, _e774);
+                                                    let _e776 = phi_931_;
+                                                    let _e777 = local_76;
+                                                    phi_936_ = select(0f, _e777, _e776);
                                                 } else {
                                                     phi_936_ = 1267650600000000000000000000000f;
                                                 }
-                                                let _e778 = phi_936_;
-                                                local_81 = _e778;
-                                                let _e779 = local_78;
-                                                if (_e779 > 1267650600000000000000000000000f) {
-                                                    let _e781 = local_78;
-                                                    phi_946_ = select(true, false, (_e781 <= 340282350000000000000000000000000000000f));
+                                                let _e780 = phi_936_;
+                                                local_81 = _e780;
+                                                let _e781 = local_78;
+                                                if (_e781 > 1267650600000000000000000000000f) {
+                                                    let _e783 = local_78;
+                                                    phi_946_ = select(true, false, (_e783 <= 340282350000000000000000000000000000000f));
                                                 } else {
                                                     phi_946_ = true;
                                                 }
-                                                let _e785 = phi_946_;
-                                                if _e785 {
-                                                    let _e786 = local_78;
-                                                    if (_e786 < 0.000000000000000000000000000000000000011754944f) {
-                                                        let _e788 = local_78;
-                                                        phi_960_ = select(true, false, (_e788 >= -340282350000000000000000000000000000000f));
+                                                let _e787 = phi_946_;
+                                                if _e787 {
+                                                    let _e788 = local_78;
+                                                    if (_e788 < 0.000000000000000000000000000000000000011754944f) {
+                                                        let _e790 = local_78;
+                                                        phi_960_ = select(true, false, (_e790 >= -340282350000000000000000000000000000000f));
                                                     } else {
                                                         phi_960_ = true;
                                                     }
-                                                    let _e792 = phi_960_;
-                                                    let _e793 = local_78;
-                                                    phi_965_ = select(0f, _e793, _e792);
+                                                    let _e794 = phi_960_;
+                                                    let _e795 = local_78;
+                                                    phi_965_ = select(0f, _e795, _e794);
                                                 } else {
                                                     phi_965_ = 1267650600000000000000000000000f;
                                                 }
-                                                let _e796 = phi_965_;
-                                                local_82 = _e796;
-                                                let _e797 = local_80;
-                                                if (_e797 > 1267650600000000000000000000000f) {
-                                                    let _e799 = local_80;
-                                                    phi_975_ = select(true, false, (_e799 <= 340282350000000000000000000000000000000f));
+                                                let _e798 = phi_965_;
+                                                local_82 = _e798;
+                                                let _e799 = local_80;
+                                                if (_e799 > 1267650600000000000000000000000f) {
+                                                    let _e801 = local_80;
+                                                    phi_975_ = select(true, false, (_e801 <= 340282350000000000000000000000000000000f));
                                                 } else {
                                                     phi_975_ = true;
                                                 }
-                                                let _e803 = phi_975_;
-                                                if _e803 {
-                                                    let _e804 = local_80;
-                                                    if (_e804 < 0.000000000000000000000000000000000000011754944f) {
-                                                        let _e806 = local_80;
-                                                        phi_989_ = select(true, false, (_e806 >= -340282350000000000000000000000000000000f));
+                                                let _e805 = phi_975_;
+                                                if _e805 {
+                                                    let _e806 = local_80;
+                                                    if (_e806 < 0.000000000000000000000000000000000000011754944f) {
+                                                        let _e808 = local_80;
+                                                        phi_989_ = select(true, false, (_e808 >= -340282350000000000000000000000000000000f));
                                                     } else {
                                                         phi_989_ = true;
                                                     }
-                                                    let _e810 = phi_989_;
-                                                    let _e811 = local_80;
-                                                    phi_994_ = select(0f, _e811, _e810);
+                                                    let _e812 = phi_989_;
+                                                    let _e813 = local_80;
+                                                    phi_994_ = select(0f, _e813, _e812);
                                                 } else {
                                                     phi_994_ = 1267650600000000000000000000000f;
                                                 }
-                                                let _e814 = phi_994_;
-                                                local_83 = _e814;
-                                                let _e815 = local_71;
-                                                let _e816 = bitcast<u32>(_e815);
-                                                local_84 = _e816;
-                                                let _e817 = local_14;
-                                                if (_e816 <= bitcast<u32>(_e817)) {
+                                                let _e816 = phi_994_;
+                                                local_83 = _e816;
+                                                let _e817 = local_71;
+                                                let _e818 = bitcast<u32>(_e817);
+                                                local_84 = _e818;
+                                                let _e819 = local_14;
+                                                if (_e818 <= bitcast<u32>(_e819)) {
                                                     phi_1024_ = 0f;
                                                 } else {
-                                                    let _e820 = local_84;
-                                                    if (_e820 == 2139095040u) {
+                                                    let _e822 = local_84;
+                                                    if (_e822 == 2139095040u) {
                                                         phi_1023_ = 1f;
                                                     } else {
-                                                        let _e822 = local_71;
-                                                        let _e823 = local_14;
+                                                        let _e824 = local_71;
                                                         let _e825 = local_14;
-                                                        let _e827 = ((_e822 - _e823) / (0.05f * _e825));
-                                                        let _e829 = select(0f, _e827, (_e827 > 0f));
-                                                        let _e831 = select(1f, _e829, (_e829 < 1f));
-                                                        phi_1023_ = ((_e831 * _e831) * (3f - (2f * _e831)));
+                                                        let _e827 = local_14;
+                                                        let _e829 = ((_e824 - _e825) / (0.05f * _e827));
+                                                        let _e831 = select(0f, _e829, (_e829 > 0f));
+                                                        let _e833 = select(1f, _e831, (_e831 < 1f));
+                                                        phi_1023_ = ((_e833 * _e833) * (3f - (2f * _e833)));
                                                     }
-                                                    let _e837 = phi_1023_;
-                                                    phi_1024_ = _e837;
+                                                    let _e839 = phi_1023_;
+                                                    phi_1024_ = _e839;
                                                 }
-                                                let _e839 = phi_1024_;
-                                                let _e841 = local_74;
-                                                let _e842 = (_e841 * (1f - _e839));
+                                                let _e841 = phi_1024_;
                                                 let _e843 = local_74;
-                                                let _e844 = (_e843 * _e839);
-                                                let _e845 = local_31;
-                                                let _e847 = local_81;
-                                                let _e848 = (_e847 - _e845[0]);
-                                                let _e849 = local_31;
-                                                let _e851 = local_82;
-                                                let _e852 = (_e851 - _e849[1]);
-                                                let _e853 = local_31;
-                                                let _e855 = local_83;
-                                                let _e856 = (_e855 - _e853[2]);
-                                                let _e857 = local_61;
-                                                let _e862 = local_61;
-                                                let _e867 = local_61;
-                                                let _e873 = local_61;
-                                                let _e876 = local_61;
-                                                let _e881 = local_61;
-                                                let _e886 = local_61;
-                                                let _e892 = local_61;
-                                                let _e895 = local_69;
-                                                phi_1064_ = type_16(array<f32, 3>((_e857.member[0] + (_e842 * _e848)), (_e862.member[1] + (_e842 * _e852)), (_e867.member[2] + (_e842 * _e856))), (_e873.member_1 + _e842), array<f32, 3>((_e876.member_2[0] + (_e844 * _e848)), (_e881.member_2[1] + (_e844 * _e852)), (_e886.member_2[2] + (_e844 * _e856))), (_e892.member_3 + _e844), _e895);
+                                                let _e844 = (_e843 * (1f - _e841));
+                                                let _e845 = local_74;
+                                                let _e846 = (_e845 * _e841);
+                                                let _e847 = local_31;
+                                                let _e849 = local_81;
+                                                let _e850 = (_e849 - _e847[0]);
+                                                let _e851 = local_31;
+                                                let _e853 = local_82;
+                                                let _e854 = (_e853 - _e851[1]);
+                                                let _e855 = local_31;
+                                                let _e857 = local_83;
+                                                let _e858 = (_e857 - _e855[2]);
+                                                let _e859 = local_61;
+                                                let _e864 = local_61;
+                                                let _e869 = local_61;
+                                                let _e875 = local_61;
+                                                let _e878 = local_61;
+                                                let _e883 = local_61;
+                                                let _e888 = local_61;
+                                                let _e894 = local_61;
+                                                let _e897 = local_69;
+                                                phi_1064_ = type_16(array<f32, 3>((_e859.member[0] + (_e844 * _e850)), (_e864.member[1] + (_e844 * _e854)), (_e869.member[2] + (_e844 * _e858))), (_e875.member_1 + _e844), array<f32, 3>((_e878.member_2[0] + (_e846 * _e850)), (_e883.member_2[1] + (_e846 * _e854)), (_e888.member_2[2] + (_e846 * _e858))), (_e894.member_3 + _e846), _e897);
                                             } else {
-                                                phi_1064_ = _e660;
+                                                phi_1064_ = _e662;
                                             }
-                                            let _e898 = phi_1064_;
-                                            phi_1065_ = _e898;
+                                            let _e900 = phi_1064_;
+                                            phi_1065_ = _e900;
                                         }
-                                        let _e900 = phi_1065_;
-                                        let _e901 = local_64;
-                                        let _e902 = local_58;
-                                        let _e904 = local_63;
-                                        let _e905 = local_59;
-                                        let _e908 = local_64;
-                                        let _e909 = local_59;
-                                        let _e911 = local_63;
-                                        let _e912 = local_58;
-                                        let _e915 = local_62;
-                                        phi_694_ = _e900;
-                                        phi_697_ = (_e915 + 1u);
-                                        phi_699_ = ((_e908 * _e909) + (_e911 * _e912));
-                                        phi_701_ = ((_e901 * _e902) - (_e904 * _e905));
+                                        let _e902 = phi_1065_;
+                                        let _e903 = local_64;
+                                        let _e904 = local_58;
+                                        let _e906 = local_63;
+                                        let _e907 = local_59;
+                                        let _e910 = local_64;
+                                        let _e911 = local_59;
+                                        let _e913 = local_63;
+                                        let _e914 = local_58;
+                                        let _e917 = local_62;
+                                        phi_694_ = _e902;
+                                        phi_697_ = (_e917 + 1u);
+                                        phi_699_ = ((_e910 * _e911) + (_e913 * _e914));
+                                        phi_701_ = ((_e903 * _e904) - (_e906 * _e907));
                                     } else {
                                         phi_694_ = type_16();
                                         phi_697_ = u32();
                                         phi_699_ = f32();
                                         phi_701_ = f32();
                                     }
-                                    let _e918 = phi_694_;
-                                    let _e920 = phi_697_;
-                                    let _e922 = phi_699_;
-                                    let _e924 = phi_701_;
+                                    let _e920 = phi_694_;
+                                    let _e922 = phi_697_;
+                                    let _e924 = phi_699_;
+                                    let _e926 = phi_701_;
                                     continue;
                                     continuing {
-                                        let _e925 = local_65;
-                                        phi_693_ = _e918;
-                                        phi_696_ = _e920;
-                                        phi_698_ = _e922;
-                                        phi_700_ = _e924;
+                                        let _e927 = local_65;
+                                        phi_693_ = _e920;
+                                        phi_696_ = _e922;
+                                        phi_698_ = _e924;
+                                        phi_700_ = _e926;
                                         phi_1228_ = _e537;
-                                        break if !(_e925);
+                                        break if !(_e927);
                                     }
                                 }
-                                let _e928 = phi_1228_;
-                                phi_1334_ = _e928;
-                                if _e928 {
+                                let _e930 = phi_1228_;
+                                phi_1334_ = _e930;
+                                if _e930 {
                                     break;
                                 }
-                                let _e929 = local_55;
-                                phi_1335_ = _e928;
-                                let _e1153 = local_103;
-                                phi_641_ = _e1153;
-                                phi_644_ = (_e929 + 1u);
+                                let _e931 = local_55;
+                                phi_1335_ = _e930;
+                                let _e1155 = local_103;
+                                phi_641_ = _e1155;
+                                phi_644_ = (_e931 + 1u);
                             } else {
                                 phi_1335_ = _e537;
                                 phi_641_ = type_16();
                                 phi_644_ = u32();
                             }
-                            let _e932 = phi_1335_;
-                            let _e934 = phi_641_;
-                            let _e936 = phi_644_;
+                            let _e934 = phi_1335_;
+                            let _e936 = phi_641_;
+                            let _e938 = phi_644_;
                             continue;
                             continuing {
-                                let _e937 = local_56;
-                                phi_1238_ = _e932;
-                                phi_640_ = _e934;
-                                phi_643_ = _e936;
-                                phi_1334_ = _e932;
-                                break if !(_e937);
+                                let _e939 = local_56;
+                                phi_1238_ = _e934;
+                                phi_640_ = _e936;
+                                phi_643_ = _e938;
+                                phi_1334_ = _e934;
+                                break if !(_e939);
                             }
                         }
-                        let _e940 = phi_1334_;
-                        if _e940 {
+                        let _e942 = phi_1334_;
+                        if _e942 {
                             break;
                         }
-                        let _e941 = local_54;
-                        local_85 = _e941.member;
                         let _e943 = local_54;
-                        local_86 = _e943.member_1;
-                        if (_e943.member_1 > 0f) {
-                            let _e946 = local_86;
-                            let _e947 = (1f / _e946);
-                            let _e948 = local_31;
-                            let _e950 = local_85;
-                            let _e954 = local_31;
-                            let _e956 = local_85;
-                            let _e960 = local_31;
-                            let _e962 = local_85;
-                            phi_1094_ = array<f32, 3>((_e948[0] + (_e950[0] * _e947)), (_e954[1] + (_e956[1] * _e947)), (_e960[2] + (_e962[2] * _e947)));
+                        local_85 = _e943.member;
+                        let _e945 = local_54;
+                        local_86 = _e945.member_1;
+                        if (_e945.member_1 > 0f) {
+                            let _e948 = local_86;
+                            let _e949 = (1f / _e948);
+                            let _e950 = local_31;
+                            let _e952 = local_85;
+                            let _e956 = local_31;
+                            let _e958 = local_85;
+                            let _e962 = local_31;
+                            let _e964 = local_85;
+                            phi_1094_ = array<f32, 3>((_e950[0] + (_e952[0] * _e949)), (_e956[1] + (_e958[1] * _e949)), (_e962[2] + (_e964[2] * _e949)));
                         } else {
                             phi_1094_ = _e312;
                         }
-                        let _e968 = phi_1094_;
-                        local_87 = _e968;
-                        let _e969 = local_54;
-                        local_88 = _e969.member_2;
+                        let _e970 = phi_1094_;
+                        local_87 = _e970;
                         let _e971 = local_54;
-                        local_89 = _e971.member_3;
-                        if (_e971.member_3 > 0f) {
-                            let _e974 = local_89;
-                            let _e975 = (1f / _e974);
-                            let _e976 = local_31;
-                            let _e978 = local_88;
-                            let _e982 = local_31;
-                            let _e984 = local_88;
-                            let _e988 = local_31;
-                            let _e990 = local_88;
-                            phi_1115_ = array<f32, 3>((_e976[0] + (_e978[0] * _e975)), (_e982[1] + (_e984[1] * _e975)), (_e988[2] + (_e990[2] * _e975)));
+                        local_88 = _e971.member_2;
+                        let _e973 = local_54;
+                        local_89 = _e973.member_3;
+                        if (_e973.member_3 > 0f) {
+                            let _e976 = local_89;
+                            let _e977 = (1f / _e976);
+                            let _e978 = local_31;
+                            let _e980 = local_88;
+                            let _e984 = local_31;
+                            let _e986 = local_88;
+                            let _e990 = local_31;
+                            let _e992 = local_88;
+                            phi_1115_ = array<f32, 3>((_e978[0] + (_e980[0] * _e977)), (_e984[1] + (_e986[1] * _e977)), (_e990[2] + (_e992[2] * _e977)));
                         } else {
                             phi_1115_ = _e312;
                         }
-                        let _e996 = phi_1115_;
-                        local_90 = _e996;
-                        let _e997 = local_54;
-                        let _e999 = (1f / _e997.member_4);
-                        let _e1000 = local_86;
-                        let _e1001 = (_e1000 * _e999);
-                        let _e1003 = select(0f, _e1001, (_e1001 > 0f));
-                        let _e1005 = select(1f, _e1003, (_e1003 < 1f));
-                        let _e1006 = (1f - _e1005);
-                        let _e1007 = local_89;
-                        let _e1008 = (_e1007 * _e999);
-                        let _e1010 = select(_e1008, _e1006, (_e1006 < _e1008));
-                        local_102 = _e1010;
-                        let _e1011 = (_e1005 + _e1010);
-                        local_91 = _e1011;
-                        if (_e1011 > 0f) {
-                            let _e1013 = local_102;
-                            let _e1014 = local_91;
-                            let _e1015 = (_e1013 / _e1014);
-                            local_92 = _e1015;
-                            let _e1016 = (_e1015 >= 1f);
-                            if _e1016 {
+                        let _e998 = phi_1115_;
+                        local_90 = _e998;
+                        let _e999 = local_54;
+                        let _e1001 = (1f / _e999.member_4);
+                        let _e1002 = local_86;
+                        let _e1003 = (_e1002 * _e1001);
+                        let _e1005 = select(0f, _e1003, (_e1003 > 0f));
+                        let _e1007 = select(1f, _e1005, (_e1005 < 1f));
+                        let _e1008 = (1f - _e1007);
+                        let _e1009 = local_89;
+                        let _e1010 = (_e1009 * _e1001);
+                        let _e1012 = select(_e1010, _e1008, (_e1008 < _e1010));
+                        local_102 = _e1012;
+                        let _e1013 = (_e1007 + _e1012);
+                        local_91 = _e1013;
+                        if (_e1013 > 0f) {
+                            let _e1015 = local_102;
+                            let _e1016 = local_91;
+                            let _e1017 = (_e1015 / _e1016);
+                            local_92 = _e1017;
+                            let _e1018 = (_e1017 >= 1f);
+                            if _e1018 {
                                 phi_1167_ = array<f32, 3>();
                             } else {
-                                let _e1017 = local_87;
-                                let _e1019 = local_90;
-                                let _e1022 = local_92;
-                                let _e1025 = local_87;
-                                let _e1027 = local_90;
-                                let _e1030 = local_92;
-                                let _e1033 = local_87;
-                                let _e1035 = local_90;
-                                let _e1038 = local_92;
-                                phi_1167_ = array<f32, 3>((_e1017[0] + (_e1022 * (_e1019[0] - _e1017[0]))), (_e1025[1] + (_e1030 * (_e1027[1] - _e1025[1]))), (_e1033[2] + (_e1038 * (_e1035[2] - _e1033[2]))));
+                                let _e1019 = local_87;
+                                let _e1021 = local_90;
+                                let _e1024 = local_92;
+                                let _e1027 = local_87;
+                                let _e1029 = local_90;
+                                let _e1032 = local_92;
+                                let _e1035 = local_87;
+                                let _e1037 = local_90;
+                                let _e1040 = local_92;
+                                phi_1167_ = array<f32, 3>((_e1019[0] + (_e1024 * (_e1021[0] - _e1019[0]))), (_e1027[1] + (_e1032 * (_e1029[1] - _e1027[1]))), (_e1035[2] + (_e1040 * (_e1037[2] - _e1035[2]))));
                             }
-                            let _e1043 = phi_1167_;
-                            phi_1168_ = _e996;
-                            phi_1169_ = _e1043;
-                            phi_1170_ = _e1016;
+                            let _e1045 = phi_1167_;
+                            phi_1168_ = _e998;
+                            phi_1169_ = _e1045;
+                            phi_1170_ = _e1018;
                         } else {
-                            phi_1168_ = _e968;
+                            phi_1168_ = _e970;
                             phi_1169_ = array<f32, 3>();
                             phi_1170_ = true;
                         }
-                        let _e1045 = phi_1168_;
-                        let _e1047 = phi_1169_;
-                        let _e1049 = phi_1170_;
-                        if _e1049 {
-                            phi_1174_ = _e1045;
-                        } else {
+                        let _e1047 = phi_1168_;
+                        let _e1049 = phi_1169_;
+                        let _e1051 = phi_1170_;
+                        if _e1051 {
                             phi_1174_ = _e1047;
+                        } else {
+                            phi_1174_ = _e1049;
                         }
-                        let _e1051 = phi_1174_;
-                        phi_1175_ = _e1051;
+                        let _e1053 = phi_1174_;
+                        phi_1175_ = _e1053;
                     }
-                    let _e1053 = phi_1175_;
-                    local_93 = _e1053;
-                    let _e1054 = local_18;
-                    let _e1055 = (3u * _e1054);
-                    local_94 = _e1055;
-                    local_95 = bitcast<u32>(select(0f, _e1053[0], (_e1053[0] > 0f)));
-                    let _e1060 = local_5;
-                    if (_e1055 < _e1060) {
+                    let _e1055 = phi_1175_;
+                    local_93 = _e1055;
+                    let _e1056 = local_18;
+                    let _e1057 = (3u * _e1056);
+                    local_94 = _e1057;
+                    local_95 = bitcast<u32>(select(0f, _e1055[0], (_e1055[0] > 0f)));
+                    let _e1062 = local_5;
+                    if (_e1057 < _e1062) {
                     } else {
                         break;
                     }
-                    let _e1062 = local_94;
-                    let _e1065 = local_95;
-                    global_7.member[_e1062] = _e1065;
-                    let _e1066 = local_94;
-                    let _e1067 = (_e1066 + 1u);
-                    local_96 = _e1067;
-                    let _e1068 = local_93;
-                    local_97 = bitcast<u32>(select(0f, _e1068[1], (_e1068[1] > 0f)));
-                    let _e1073 = local_5;
-                    if (_e1067 < _e1073) {
+                    let _e1064 = local_94;
+                    let _e1067 = local_95;
+                    global_7.member[_e1064] = _e1067;
+                    let _e1068 = local_94;
+                    let _e1069 = (_e1068 + 1u);
+                    local_96 = _e1069;
+                    let _e1070 = local_93;
+                    local_97 = bitcast<u32>(select(0f, _e1070[1], (_e1070[1] > 0f)));
+                    let _e1075 = local_5;
+                    if (_e1069 < _e1075) {
                     } else {
                         break;
                     }
-                    let _e1075 = local_96;
-                    let _e1078 = local_97;
-                    global_7.member[_e1075] = _e1078;
-                    let _e1079 = local_94;
-                    let _e1080 = (_e1079 + 2u);
-                    local_98 = _e1080;
-                    let _e1081 = local_93;
-                    local_99 = bitcast<u32>(select(0f, _e1081[2], (_e1081[2] > 0f)));
-                    let _e1086 = local_5;
-                    if (_e1080 < _e1086) {
+                    let _e1077 = local_96;
+                    let _e1080 = local_97;
+                    global_7.member[_e1077] = _e1080;
+                    let _e1081 = local_94;
+                    let _e1082 = (_e1081 + 2u);
+                    local_98 = _e1082;
+                    let _e1083 = local_93;
+                    local_99 = bitcast<u32>(select(0f, _e1083[2], (_e1083[2] > 0f)));
+                    let _e1088 = local_5;
+                    if (_e1082 < _e1088) {
                     } else {
                         break;
                     }
-                    let _e1088 = local_98;
-                    let _e1091 = local_99;
-                    global_7.member[_e1088] = _e1091;
+                    let _e1090 = local_98;
+                    let _e1093 = local_99;
+                    global_7.member[_e1090] = _e1093;
                 }
             }
             storageBarrier();

@@ -1680,25 +1680,25 @@ fn function_() {
                                     local_130 = _e1312;
                                     let _e1314 = local_443;
                                     if (_e1314 >= (4f + _e1312)) {
-                                        let _e1833 = local_32;
-                                        if (_e1833 > 0u) {
-                                            let _e1847 = local_130;
-                                            let _e1849 = local_443;
-                                            let _e1850 = (_e1849 - (0.5f * _e1847));
-                                            let _e1851 = local_31;
-                                            phi_987_ = ((_e1851 * _e1850) * _e1850);
+                                        let _e1841 = local_32;
+                                        if (_e1841 > 0u) {
+                                            let _e1855 = local_130;
+                                            let _e1857 = local_443;
+                                            let _e1858 = (_e1857 - (0.5f * _e1855));
+                                            let _e1859 = local_31;
+                                            phi_987_ = ((_e1859 * _e1858) * _e1858);
                                         } else {
-                                            let _e1835 = local_443;
-                                            let _e1836 = local_130;
-                                            let _e1838 = local_443;
-                                            let _e1840 = local_130;
-                                            let _e1841 = local_130;
-                                            let _e1845 = local_31;
-                                            phi_987_ = (_e1845 * (((_e1835 - _e1836) * _e1838) + ((_e1840 * _e1841) * 0.33333334f)));
+                                            let _e1843 = local_443;
+                                            let _e1844 = local_130;
+                                            let _e1846 = local_443;
+                                            let _e1848 = local_130;
+                                            let _e1849 = local_130;
+                                            let _e1853 = local_31;
+                                            phi_987_ = (_e1853 * (((_e1843 - _e1844) * _e1846) + ((_e1848 * _e1849) * 0.33333334f)));
                                         }
-                                        let _e1855 = phi_987_;
+                                        let _e1863 = phi_987_;
                                         phi_4829_ = _e1011;
-                                        phi_1510_ = _e1855;
+                                        phi_1510_ = _e1863;
                                     } else {
                                         let _e1316 = local_122;
                                         let _e1317 = local_443;
@@ -1757,15 +1757,15 @@ fn function_() {
                                                         }
                                                         let _e1370 = phi_1043_;
                                                         if _e1370 {
-                                                            let _e1770 = local_443;
-                                                            let _e1771 = local_130;
-                                                            let _e1772 = (_e1770 - _e1771);
-                                                            let _e1775 = local_139;
-                                                            let _e1778 = local_139;
-                                                            let _e1780 = local_443;
-                                                            let _e1782 = local_130;
-                                                            let _e1784 = ((_e1780 - sqrt(_e1778)) * (1f / _e1782));
-                                                            phi_1488_ = select(select(0f, select(1f, _e1784, (_e1784 < 1f)), (0f < _e1784)), 1f, ((0f < _e1772) && (_e1775 <= (_e1772 * _e1772))));
+                                                            let _e1778 = local_443;
+                                                            let _e1779 = local_130;
+                                                            let _e1780 = (_e1778 - _e1779);
+                                                            let _e1783 = local_139;
+                                                            let _e1786 = local_139;
+                                                            let _e1788 = local_443;
+                                                            let _e1790 = local_130;
+                                                            let _e1792 = ((_e1788 - sqrt(_e1786)) * (1f / _e1790));
+                                                            phi_1488_ = select(select(0f, select(1f, _e1792, (_e1792 < 1f)), (0f < _e1792)), 1f, ((0f < _e1780) && (_e1783 <= (_e1780 * _e1780))));
                                                         } else {
                                                             let _e1371 = local_140;
                                                             if _e1371 {
@@ -1776,15 +1776,15 @@ fn function_() {
                                                             }
                                                             let _e1375 = phi_1079_;
                                                             if _e1375 {
-                                                                let _e1748 = local_443;
-                                                                let _e1749 = local_130;
-                                                                let _e1750 = (_e1748 - _e1749);
-                                                                let _e1753 = local_139;
-                                                                let _e1756 = local_139;
-                                                                let _e1758 = local_443;
-                                                                let _e1760 = local_130;
-                                                                let _e1762 = ((_e1758 - sqrt(_e1756)) * (1f / _e1760));
-                                                                phi_1487_ = select(select(0f, select(1f, _e1762, (_e1762 < 1f)), (0f < _e1762)), 1f, ((0f < _e1750) && (_e1753 <= (_e1750 * _e1750))));
+                                                                let _e1756 = local_443;
+                                                                let _e1757 = local_130;
+                                                                let _e1758 = (_e1756 - _e1757);
+                                                                let _e1761 = local_139;
+                                                                let _e1764 = local_139;
+                                                                let _e1766 = local_443;
+                                                                let _e1768 = local_130;
+                                                                let _e1770 = ((_e1766 - sqrt(_e1764)) * (1f / _e1768));
+                                                                phi_1487_ = select(select(0f, select(1f, _e1770, (_e1770 < 1f)), (0f < _e1770)), 1f, ((0f < _e1758) && (_e1761 <= (_e1758 * _e1758))));
                                                             } else {
                                                                 let _e1376 = local_444;
                                                                 let _e1377 = local_138;
@@ -1855,266 +1855,266 @@ fn function_() {
                                                                                                     } else {
                                                                                                         let _e1512 = local_149;
                                                                                                         let _e1514 = local_149;
-                                                                                                        let _e1516 = local_149;
-                                                                                                        let _e1520 = local_32;
-                                                                                                        let _e1522 = local_148;
-                                                                                                        let _e1524 = local_148;
-                                                                                                        let _e1526 = local_148;
-                                                                                                        let _e1530 = ((select(select(u32(_e1512), 0u, (_e1514 < 0f)), 4294967295u, (_e1516 > 4294967000f)) * _e1520) + select(select(u32(_e1522), 0u, (_e1524 < 0f)), 4294967295u, (_e1526 > 4294967000f)));
-                                                                                                        local_153 = _e1530;
-                                                                                                        let _e1531 = local_8;
-                                                                                                        if (_e1530 < _e1531) {
+                                                                                                        let _e1517 = local_149;
+                                                                                                        let _e1521 = local_32;
+                                                                                                        let _e1523 = local_148;
+                                                                                                        let _e1525 = local_148;
+                                                                                                        let _e1528 = local_148;
+                                                                                                        let _e1532 = ((select(select(u32(_e1512), 0u, !((_e1514 >= 0f))), 4294967295u, (_e1517 > 4294967000f)) * _e1521) + select(select(u32(_e1523), 0u, !((_e1525 >= 0f))), 4294967295u, (_e1528 > 4294967000f)));
+                                                                                                        local_153 = _e1532;
+                                                                                                        let _e1533 = local_8;
+                                                                                                        if (_e1532 < _e1533) {
                                                                                                         } else {
                                                                                                             phi_4744_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e1533 = local_153;
-                                                                                                        let _e1536 = global_10.member[_e1533];
-                                                                                                        phi_1195_ = bitcast<f32>(_e1536);
+                                                                                                        let _e1535 = local_153;
+                                                                                                        let _e1538 = global_10.member[_e1535];
+                                                                                                        phi_1195_ = bitcast<f32>(_e1538);
                                                                                                     }
-                                                                                                    let _e1539 = phi_1195_;
-                                                                                                    phi_1196_ = _e1539;
+                                                                                                    let _e1541 = phi_1195_;
+                                                                                                    phi_1196_ = _e1541;
                                                                                                     phi_1197_ = _e1511;
                                                                                                 }
-                                                                                                let _e1541 = phi_1196_;
-                                                                                                let _e1543 = phi_1197_;
-                                                                                                phi_1198_ = _e1541;
-                                                                                                phi_1199_ = _e1543;
+                                                                                                let _e1543 = phi_1196_;
+                                                                                                let _e1545 = phi_1197_;
+                                                                                                phi_1198_ = _e1543;
+                                                                                                phi_1199_ = _e1545;
                                                                                             }
-                                                                                            let _e1545 = phi_1198_;
-                                                                                            let _e1547 = phi_1199_;
-                                                                                            phi_1200_ = _e1545;
-                                                                                            phi_1201_ = _e1547;
+                                                                                            let _e1547 = phi_1198_;
+                                                                                            let _e1549 = phi_1199_;
+                                                                                            phi_1200_ = _e1547;
+                                                                                            phi_1201_ = _e1549;
                                                                                         }
-                                                                                        let _e1549 = phi_1200_;
-                                                                                        let _e1551 = phi_1201_;
-                                                                                        let _e1553 = local_150;
-                                                                                        let _e1554 = (1f - _e1553);
-                                                                                        local_154 = _e1554;
-                                                                                        local_155 = (select(_e1549, 0f, _e1551) * _e1554);
-                                                                                        let _e1556 = local_148;
-                                                                                        let _e1557 = (_e1556 + 1f);
-                                                                                        local_156 = _e1557;
-                                                                                        let _e1558 = (_e1557 < 0f);
-                                                                                        local_157 = _e1558;
-                                                                                        if _e1558 {
+                                                                                        let _e1551 = phi_1200_;
+                                                                                        let _e1553 = phi_1201_;
+                                                                                        let _e1555 = local_150;
+                                                                                        let _e1556 = (1f - _e1555);
+                                                                                        local_154 = _e1556;
+                                                                                        local_155 = (select(_e1551, 0f, _e1553) * _e1556);
+                                                                                        let _e1558 = local_148;
+                                                                                        let _e1559 = (_e1558 + 1f);
+                                                                                        local_156 = _e1559;
+                                                                                        let _e1560 = (_e1559 < 0f);
+                                                                                        local_157 = _e1560;
+                                                                                        if _e1560 {
                                                                                             phi_1256_ = f32();
                                                                                             phi_1257_ = true;
                                                                                         } else {
-                                                                                            let _e1559 = local_149;
-                                                                                            if (_e1559 < 0f) {
+                                                                                            let _e1561 = local_149;
+                                                                                            if (_e1561 < 0f) {
                                                                                                 phi_1254_ = f32();
                                                                                                 phi_1255_ = true;
                                                                                             } else {
-                                                                                                let _e1561 = local_156;
-                                                                                                let _e1562 = local_144;
-                                                                                                if (_e1561 >= _e1562) {
+                                                                                                let _e1563 = local_156;
+                                                                                                let _e1564 = local_144;
+                                                                                                if (_e1563 >= _e1564) {
                                                                                                     phi_1252_ = f32();
                                                                                                     phi_1253_ = true;
                                                                                                 } else {
-                                                                                                    let _e1564 = local_149;
-                                                                                                    let _e1565 = local_144;
-                                                                                                    let _e1566 = (_e1564 >= _e1565);
-                                                                                                    if _e1566 {
+                                                                                                    let _e1566 = local_149;
+                                                                                                    let _e1567 = local_144;
+                                                                                                    let _e1568 = (_e1566 >= _e1567);
+                                                                                                    if _e1568 {
                                                                                                         phi_1251_ = f32();
                                                                                                     } else {
-                                                                                                        let _e1567 = local_149;
                                                                                                         let _e1569 = local_149;
                                                                                                         let _e1571 = local_149;
-                                                                                                        let _e1575 = local_32;
-                                                                                                        let _e1577 = local_156;
-                                                                                                        let _e1579 = local_156;
-                                                                                                        let _e1581 = local_156;
-                                                                                                        let _e1585 = ((select(select(u32(_e1567), 0u, (_e1569 < 0f)), 4294967295u, (_e1571 > 4294967000f)) * _e1575) + select(select(u32(_e1577), 0u, (_e1579 < 0f)), 4294967295u, (_e1581 > 4294967000f)));
-                                                                                                        local_158 = _e1585;
-                                                                                                        let _e1586 = local_8;
-                                                                                                        if (_e1585 < _e1586) {
+                                                                                                        let _e1574 = local_149;
+                                                                                                        let _e1578 = local_32;
+                                                                                                        let _e1580 = local_156;
+                                                                                                        let _e1582 = local_156;
+                                                                                                        let _e1585 = local_156;
+                                                                                                        let _e1589 = ((select(select(u32(_e1569), 0u, !((_e1571 >= 0f))), 4294967295u, (_e1574 > 4294967000f)) * _e1578) + select(select(u32(_e1580), 0u, !((_e1582 >= 0f))), 4294967295u, (_e1585 > 4294967000f)));
+                                                                                                        local_158 = _e1589;
+                                                                                                        let _e1590 = local_8;
+                                                                                                        if (_e1589 < _e1590) {
                                                                                                         } else {
                                                                                                             phi_4744_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e1588 = local_158;
-                                                                                                        let _e1591 = global_10.member[_e1588];
-                                                                                                        phi_1251_ = bitcast<f32>(_e1591);
+                                                                                                        let _e1592 = local_158;
+                                                                                                        let _e1595 = global_10.member[_e1592];
+                                                                                                        phi_1251_ = bitcast<f32>(_e1595);
                                                                                                     }
-                                                                                                    let _e1594 = phi_1251_;
-                                                                                                    phi_1252_ = _e1594;
-                                                                                                    phi_1253_ = _e1566;
+                                                                                                    let _e1598 = phi_1251_;
+                                                                                                    phi_1252_ = _e1598;
+                                                                                                    phi_1253_ = _e1568;
                                                                                                 }
-                                                                                                let _e1596 = phi_1252_;
-                                                                                                let _e1598 = phi_1253_;
-                                                                                                phi_1254_ = _e1596;
-                                                                                                phi_1255_ = _e1598;
+                                                                                                let _e1600 = phi_1252_;
+                                                                                                let _e1602 = phi_1253_;
+                                                                                                phi_1254_ = _e1600;
+                                                                                                phi_1255_ = _e1602;
                                                                                             }
-                                                                                            let _e1600 = phi_1254_;
-                                                                                            let _e1602 = phi_1255_;
-                                                                                            phi_1256_ = _e1600;
-                                                                                            phi_1257_ = _e1602;
+                                                                                            let _e1604 = phi_1254_;
+                                                                                            let _e1606 = phi_1255_;
+                                                                                            phi_1256_ = _e1604;
+                                                                                            phi_1257_ = _e1606;
                                                                                         }
-                                                                                        let _e1604 = phi_1256_;
-                                                                                        let _e1606 = phi_1257_;
-                                                                                        let _e1608 = local_150;
-                                                                                        let _e1610 = local_155;
-                                                                                        local_159 = (_e1610 + (select(_e1604, 0f, _e1606) * _e1608));
-                                                                                        let _e1612 = local_149;
-                                                                                        local_160 = (_e1612 + 1f);
-                                                                                        let _e1614 = local_152;
-                                                                                        if _e1614 {
+                                                                                        let _e1608 = phi_1256_;
+                                                                                        let _e1610 = phi_1257_;
+                                                                                        let _e1612 = local_150;
+                                                                                        let _e1614 = local_155;
+                                                                                        local_159 = (_e1614 + (select(_e1608, 0f, _e1610) * _e1612));
+                                                                                        let _e1616 = local_149;
+                                                                                        local_160 = (_e1616 + 1f);
+                                                                                        let _e1618 = local_152;
+                                                                                        if _e1618 {
                                                                                             phi_1312_ = f32();
                                                                                             phi_1313_ = true;
                                                                                         } else {
-                                                                                            let _e1615 = local_160;
-                                                                                            if (_e1615 < 0f) {
+                                                                                            let _e1619 = local_160;
+                                                                                            if (_e1619 < 0f) {
                                                                                                 phi_1310_ = f32();
                                                                                                 phi_1311_ = true;
                                                                                             } else {
-                                                                                                let _e1617 = local_148;
-                                                                                                let _e1618 = local_144;
-                                                                                                if (_e1617 >= _e1618) {
+                                                                                                let _e1621 = local_148;
+                                                                                                let _e1622 = local_144;
+                                                                                                if (_e1621 >= _e1622) {
                                                                                                     phi_1308_ = f32();
                                                                                                     phi_1309_ = true;
                                                                                                 } else {
-                                                                                                    let _e1620 = local_160;
-                                                                                                    let _e1621 = local_144;
-                                                                                                    let _e1622 = (_e1620 >= _e1621);
-                                                                                                    if _e1622 {
+                                                                                                    let _e1624 = local_160;
+                                                                                                    let _e1625 = local_144;
+                                                                                                    let _e1626 = (_e1624 >= _e1625);
+                                                                                                    if _e1626 {
                                                                                                         phi_1307_ = f32();
                                                                                                     } else {
-                                                                                                        let _e1623 = local_160;
-                                                                                                        let _e1625 = local_160;
                                                                                                         let _e1627 = local_160;
-                                                                                                        let _e1631 = local_32;
-                                                                                                        let _e1633 = local_148;
-                                                                                                        let _e1635 = local_148;
-                                                                                                        let _e1637 = local_148;
-                                                                                                        let _e1641 = ((select(select(u32(_e1623), 0u, (_e1625 < 0f)), 4294967295u, (_e1627 > 4294967000f)) * _e1631) + select(select(u32(_e1633), 0u, (_e1635 < 0f)), 4294967295u, (_e1637 > 4294967000f)));
-                                                                                                        local_161 = _e1641;
-                                                                                                        let _e1642 = local_8;
-                                                                                                        if (_e1641 < _e1642) {
+                                                                                                        let _e1629 = local_160;
+                                                                                                        let _e1632 = local_160;
+                                                                                                        let _e1636 = local_32;
+                                                                                                        let _e1638 = local_148;
+                                                                                                        let _e1640 = local_148;
+                                                                                                        let _e1643 = local_148;
+                                                                                                        let _e1647 = ((select(select(u32(_e1627), 0u, !((_e1629 >= 0f))), 4294967295u, (_e1632 > 4294967000f)) * _e1636) + select(select(u32(_e1638), 0u, !((_e1640 >= 0f))), 4294967295u, (_e1643 > 4294967000f)));
+                                                                                                        local_161 = _e1647;
+                                                                                                        let _e1648 = local_8;
+                                                                                                        if (_e1647 < _e1648) {
                                                                                                         } else {
                                                                                                             phi_4744_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e1644 = local_161;
-                                                                                                        let _e1647 = global_10.member[_e1644];
-                                                                                                        phi_1307_ = bitcast<f32>(_e1647);
+                                                                                                        let _e1650 = local_161;
+                                                                                                        let _e1653 = global_10.member[_e1650];
+                                                                                                        phi_1307_ = bitcast<f32>(_e1653);
                                                                                                     }
-                                                                                                    let _e1650 = phi_1307_;
-                                                                                                    phi_1308_ = _e1650;
-                                                                                                    phi_1309_ = _e1622;
+                                                                                                    let _e1656 = phi_1307_;
+                                                                                                    phi_1308_ = _e1656;
+                                                                                                    phi_1309_ = _e1626;
                                                                                                 }
-                                                                                                let _e1652 = phi_1308_;
-                                                                                                let _e1654 = phi_1309_;
-                                                                                                phi_1310_ = _e1652;
-                                                                                                phi_1311_ = _e1654;
+                                                                                                let _e1658 = phi_1308_;
+                                                                                                let _e1660 = phi_1309_;
+                                                                                                phi_1310_ = _e1658;
+                                                                                                phi_1311_ = _e1660;
                                                                                             }
-                                                                                            let _e1656 = phi_1310_;
-                                                                                            let _e1658 = phi_1311_;
-                                                                                            phi_1312_ = _e1656;
-                                                                                            phi_1313_ = _e1658;
+                                                                                            let _e1662 = phi_1310_;
+                                                                                            let _e1664 = phi_1311_;
+                                                                                            phi_1312_ = _e1662;
+                                                                                            phi_1313_ = _e1664;
                                                                                         }
-                                                                                        let _e1660 = phi_1312_;
-                                                                                        let _e1662 = phi_1313_;
-                                                                                        let _e1664 = local_154;
-                                                                                        local_162 = (select(_e1660, 0f, _e1662) * _e1664);
-                                                                                        let _e1666 = local_157;
-                                                                                        if _e1666 {
+                                                                                        let _e1666 = phi_1312_;
+                                                                                        let _e1668 = phi_1313_;
+                                                                                        let _e1670 = local_154;
+                                                                                        local_162 = (select(_e1666, 0f, _e1668) * _e1670);
+                                                                                        let _e1672 = local_157;
+                                                                                        if _e1672 {
                                                                                             phi_1369_ = f32();
                                                                                             phi_1370_ = true;
                                                                                         } else {
-                                                                                            let _e1667 = local_160;
-                                                                                            if (_e1667 < 0f) {
+                                                                                            let _e1673 = local_160;
+                                                                                            if (_e1673 < 0f) {
                                                                                                 phi_1367_ = f32();
                                                                                                 phi_1368_ = true;
                                                                                             } else {
-                                                                                                let _e1669 = local_156;
-                                                                                                let _e1670 = local_144;
-                                                                                                if (_e1669 >= _e1670) {
+                                                                                                let _e1675 = local_156;
+                                                                                                let _e1676 = local_144;
+                                                                                                if (_e1675 >= _e1676) {
                                                                                                     phi_1365_ = f32();
                                                                                                     phi_1366_ = true;
                                                                                                 } else {
-                                                                                                    let _e1672 = local_160;
-                                                                                                    let _e1673 = local_144;
-                                                                                                    let _e1674 = (_e1672 >= _e1673);
-                                                                                                    if _e1674 {
+                                                                                                    let _e1678 = local_160;
+                                                                                                    let _e1679 = local_144;
+                                                                                                    let _e1680 = (_e1678 >= _e1679);
+                                                                                                    if _e1680 {
                                                                                                         phi_1364_ = f32();
                                                                                                     } else {
-                                                                                                        let _e1675 = local_160;
-                                                                                                        let _e1677 = local_160;
-                                                                                                        let _e1679 = local_160;
-                                                                                                        let _e1683 = local_32;
-                                                                                                        let _e1685 = local_156;
-                                                                                                        let _e1687 = local_156;
-                                                                                                        let _e1689 = local_156;
-                                                                                                        let _e1693 = ((select(select(u32(_e1675), 0u, (_e1677 < 0f)), 4294967295u, (_e1679 > 4294967000f)) * _e1683) + select(select(u32(_e1685), 0u, (_e1687 < 0f)), 4294967295u, (_e1689 > 4294967000f)));
-                                                                                                        local_163 = _e1693;
-                                                                                                        let _e1694 = local_8;
-                                                                                                        if (_e1693 < _e1694) {
+                                                                                                        let _e1681 = local_160;
+                                                                                                        let _e1683 = local_160;
+                                                                                                        let _e1686 = local_160;
+                                                                                                        let _e1690 = local_32;
+                                                                                                        let _e1692 = local_156;
+                                                                                                        let _e1694 = local_156;
+                                                                                                        let _e1697 = local_156;
+                                                                                                        let _e1701 = ((select(select(u32(_e1681), 0u, !((_e1683 >= 0f))), 4294967295u, (_e1686 > 4294967000f)) * _e1690) + select(select(u32(_e1692), 0u, !((_e1694 >= 0f))), 4294967295u, (_e1697 > 4294967000f)));
+                                                                                                        local_163 = _e1701;
+                                                                                                        let _e1702 = local_8;
+                                                                                                        if (_e1701 < _e1702) {
                                                                                                         } else {
                                                                                                             phi_4744_ = true;
                                                                                                             break;
                                                                                                         }
-                                                                                                        let _e1696 = local_163;
-                                                                                                        let _e1699 = global_10.member[_e1696];
-                                                                                                        phi_1364_ = bitcast<f32>(_e1699);
+                                                                                                        let _e1704 = local_163;
+                                                                                                        let _e1707 = global_10.member[_e1704];
+                                                                                                        phi_1364_ = bitcast<f32>(_e1707);
                                                                                                     }
-                                                                                                    let _e1702 = phi_1364_;
-                                                                                                    phi_1365_ = _e1702;
-                                                                                                    phi_1366_ = _e1674;
+                                                                                                    let _e1710 = phi_1364_;
+                                                                                                    phi_1365_ = _e1710;
+                                                                                                    phi_1366_ = _e1680;
                                                                                                 }
-                                                                                                let _e1704 = phi_1365_;
-                                                                                                let _e1706 = phi_1366_;
-                                                                                                phi_1367_ = _e1704;
-                                                                                                phi_1368_ = _e1706;
+                                                                                                let _e1712 = phi_1365_;
+                                                                                                let _e1714 = phi_1366_;
+                                                                                                phi_1367_ = _e1712;
+                                                                                                phi_1368_ = _e1714;
                                                                                             }
-                                                                                            let _e1708 = phi_1367_;
-                                                                                            let _e1710 = phi_1368_;
-                                                                                            phi_1369_ = _e1708;
-                                                                                            phi_1370_ = _e1710;
+                                                                                            let _e1716 = phi_1367_;
+                                                                                            let _e1718 = phi_1368_;
+                                                                                            phi_1369_ = _e1716;
+                                                                                            phi_1370_ = _e1718;
                                                                                         }
-                                                                                        let _e1712 = phi_1369_;
-                                                                                        let _e1714 = phi_1370_;
-                                                                                        let _e1716 = local_150;
-                                                                                        let _e1718 = local_162;
-                                                                                        let _e1720 = local_151;
-                                                                                        let _e1722 = local_159;
-                                                                                        let _e1724 = local_151;
-                                                                                        phi_1381_ = ((_e1722 * (1f - _e1720)) + ((_e1718 + (select(_e1712, 0f, _e1714) * _e1716)) * _e1724));
+                                                                                        let _e1720 = phi_1369_;
+                                                                                        let _e1722 = phi_1370_;
+                                                                                        let _e1724 = local_150;
+                                                                                        let _e1726 = local_162;
+                                                                                        let _e1728 = local_151;
+                                                                                        let _e1730 = local_159;
+                                                                                        let _e1732 = local_151;
+                                                                                        phi_1381_ = ((_e1730 * (1f - _e1728)) + ((_e1726 + (select(_e1720, 0f, _e1722) * _e1724)) * _e1732));
                                                                                     } else {
                                                                                         phi_1381_ = f32();
                                                                                     }
-                                                                                    let _e1728 = phi_1381_;
-                                                                                    let _e1729 = local_147;
-                                                                                    phi_1383_ = _e1728;
-                                                                                    phi_1384_ = select(true, false, _e1729);
+                                                                                    let _e1736 = phi_1381_;
+                                                                                    let _e1737 = local_147;
+                                                                                    phi_1383_ = _e1736;
+                                                                                    phi_1384_ = select(true, false, _e1737);
                                                                                 } else {
                                                                                     phi_1383_ = f32();
                                                                                     phi_1384_ = true;
                                                                                 }
-                                                                                let _e1732 = phi_1383_;
-                                                                                let _e1734 = phi_1384_;
-                                                                                phi_1385_ = _e1732;
-                                                                                phi_1386_ = _e1734;
+                                                                                let _e1740 = phi_1383_;
+                                                                                let _e1742 = phi_1384_;
+                                                                                phi_1385_ = _e1740;
+                                                                                phi_1386_ = _e1742;
                                                                             } else {
                                                                                 phi_1385_ = f32();
                                                                                 phi_1386_ = true;
                                                                             }
-                                                                            let _e1736 = phi_1385_;
-                                                                            let _e1738 = phi_1386_;
-                                                                            phi_1387_ = _e1736;
-                                                                            phi_1388_ = _e1738;
+                                                                            let _e1744 = phi_1385_;
+                                                                            let _e1746 = phi_1386_;
+                                                                            phi_1387_ = _e1744;
+                                                                            phi_1388_ = _e1746;
                                                                         } else {
                                                                             phi_1387_ = f32();
                                                                             phi_1388_ = true;
                                                                         }
-                                                                        let _e1740 = phi_1387_;
-                                                                        let _e1742 = phi_1388_;
-                                                                        phi_1393_ = select(_e1740, 0f, _e1742);
+                                                                        let _e1748 = phi_1387_;
+                                                                        let _e1750 = phi_1388_;
+                                                                        phi_1393_ = select(_e1748, 0f, _e1750);
                                                                     } else {
                                                                         phi_1393_ = 0f;
                                                                     }
-                                                                    let _e1745 = phi_1393_;
-                                                                    phi_1486_ = _e1745;
+                                                                    let _e1753 = phi_1393_;
+                                                                    phi_1486_ = _e1753;
                                                                 } else {
                                                                     let _e1384 = local_141;
                                                                     let _e1385 = local_141;
@@ -2192,498 +2192,482 @@ fn function_() {
                                                                     let _e1460 = ((_e1457 - _e1456) / _e1459);
                                                                     phi_1486_ = select(0f, select(1f, _e1460, (_e1460 < 1f)), (0f < _e1460));
                                                                 }
-                                                                let _e1747 = phi_1486_;
-                                                                phi_1487_ = _e1747;
+                                                                let _e1755 = phi_1486_;
+                                                                phi_1487_ = _e1755;
                                                             }
-                                                            let _e1769 = phi_1487_;
-                                                            phi_1488_ = _e1769;
+                                                            let _e1777 = phi_1487_;
+                                                            phi_1488_ = _e1777;
                                                         }
-                                                        let _e1791 = phi_1488_;
-                                                        let _e1792 = local_137;
-                                                        local_445 = select(0f, _e1791, _e1792);
+                                                        let _e1799 = phi_1488_;
+                                                        let _e1800 = local_137;
+                                                        local_445 = select(0f, _e1799, _e1800);
                                                         phi_1494_ = 0u;
                                                         phi_1497_ = _e1352;
                                                         loop {
-                                                            let _e1795 = phi_1494_;
-                                                            let _e1797 = phi_1497_;
-                                                            local_169 = _e1795;
-                                                            local_170 = _e1797;
-                                                            local_458 = _e1797;
-                                                            let _e1798 = local_169;
-                                                            let _e1799 = (_e1798 < 1u);
-                                                            local_171 = _e1799;
-                                                            if _e1799 {
-                                                                let _e1800 = local_170;
-                                                                let _e1801 = local_445;
-                                                                let _e1803 = local_169;
-                                                                phi_1495_ = (_e1803 + 1u);
-                                                                phi_1498_ = (_e1800 + _e1801);
+                                                            let _e1803 = phi_1494_;
+                                                            let _e1805 = phi_1497_;
+                                                            local_169 = _e1803;
+                                                            local_170 = _e1805;
+                                                            local_458 = _e1805;
+                                                            let _e1806 = local_169;
+                                                            let _e1807 = (_e1806 < 1u);
+                                                            local_171 = _e1807;
+                                                            if _e1807 {
+                                                                let _e1808 = local_170;
+                                                                let _e1809 = local_445;
+                                                                let _e1811 = local_169;
+                                                                phi_1495_ = (_e1811 + 1u);
+                                                                phi_1498_ = (_e1808 + _e1809);
                                                             } else {
                                                                 phi_1495_ = u32();
                                                                 phi_1498_ = f32();
                                                             }
-                                                            let _e1806 = phi_1495_;
-                                                            let _e1808 = phi_1498_;
+                                                            let _e1814 = phi_1495_;
+                                                            let _e1816 = phi_1498_;
                                                             continue;
                                                             continuing {
-                                                                let _e1809 = local_171;
-                                                                phi_1494_ = _e1806;
-                                                                phi_1497_ = _e1808;
-                                                                break if !(_e1809);
+                                                                let _e1817 = local_171;
+                                                                phi_1494_ = _e1814;
+                                                                phi_1497_ = _e1816;
+                                                                break if !(_e1817);
                                                             }
                                                         }
-                                                        let _e1811 = local_136;
-                                                        phi_1017_ = (_e1811 + 1f);
-                                                        let _e4215 = local_458;
-                                                        phi_1020_ = _e4215;
+                                                        let _e1819 = local_136;
+                                                        phi_1017_ = (_e1819 + 1f);
+                                                        let _e4234 = local_458;
+                                                        phi_1020_ = _e4234;
                                                     } else {
                                                         phi_1017_ = f32();
                                                         phi_1020_ = f32();
                                                     }
-                                                    let _e1814 = phi_1017_;
-                                                    let _e1816 = phi_1020_;
+                                                    let _e1822 = phi_1017_;
+                                                    let _e1824 = phi_1020_;
                                                     continue;
                                                     continuing {
-                                                        let _e1817 = local_137;
-                                                        phi_1016_ = _e1814;
-                                                        phi_1019_ = _e1816;
+                                                        let _e1825 = local_137;
+                                                        phi_1016_ = _e1822;
+                                                        phi_1019_ = _e1824;
                                                         phi_4744_ = _e1337;
-                                                        break if !(_e1817);
+                                                        break if !(_e1825);
                                                     }
                                                 }
-                                                let _e1820 = phi_4744_;
-                                                phi_4811_ = _e1820;
-                                                if _e1820 {
+                                                let _e1828 = phi_4744_;
+                                                phi_4811_ = _e1828;
+                                                if _e1828 {
                                                     break;
                                                 }
-                                                let _e1821 = local_133;
-                                                phi_4812_ = _e1820;
-                                                phi_1003_ = (_e1821 + 1f);
-                                                let _e4221 = local_459;
-                                                phi_1006_ = _e4221;
+                                                let _e1829 = local_133;
+                                                phi_4812_ = _e1828;
+                                                phi_1003_ = (_e1829 + 1f);
+                                                let _e4240 = local_459;
+                                                phi_1006_ = _e4240;
                                             } else {
                                                 phi_4812_ = _e1337;
                                                 phi_1003_ = f32();
                                                 phi_1006_ = f32();
                                             }
-                                            let _e1824 = phi_4812_;
-                                            let _e1826 = phi_1003_;
-                                            let _e1828 = phi_1006_;
+                                            let _e1832 = phi_4812_;
+                                            let _e1834 = phi_1003_;
+                                            let _e1836 = phi_1006_;
                                             continue;
                                             continuing {
-                                                let _e1829 = local_134;
-                                                phi_4755_ = _e1824;
-                                                phi_1002_ = _e1826;
-                                                phi_1005_ = _e1828;
-                                                phi_4811_ = _e1824;
-                                                break if !(_e1829);
+                                                let _e1837 = local_134;
+                                                phi_4755_ = _e1832;
+                                                phi_1002_ = _e1834;
+                                                phi_1005_ = _e1836;
+                                                phi_4811_ = _e1832;
+                                                break if !(_e1837);
                                             }
                                         }
-                                        let _e1832 = phi_4811_;
-                                        phi_5055_ = _e1832;
-                                        if _e1832 {
+                                        let _e1840 = phi_4811_;
+                                        phi_5055_ = _e1840;
+                                        if _e1840 {
                                             break;
                                         }
-                                        phi_4829_ = _e1832;
-                                        let _e4227 = local_460;
-                                        phi_1510_ = _e4227;
+                                        phi_4829_ = _e1840;
+                                        let _e4246 = local_460;
+                                        phi_1510_ = _e4246;
                                     }
-                                    let _e1857 = phi_4829_;
-                                    let _e1859 = phi_1510_;
-                                    let _e1860 = local_129;
-                                    phi_4828_ = _e1857;
-                                    phi_1512_ = (_e1860 / _e1859);
+                                    let _e1865 = phi_4829_;
+                                    let _e1867 = phi_1510_;
+                                    let _e1868 = local_129;
+                                    phi_4828_ = _e1865;
+                                    phi_1512_ = (_e1868 / _e1867);
                                 }
-                                let _e1863 = phi_4828_;
-                                let _e1865 = phi_1512_;
-                                local_172 = _e1865;
+                                let _e1871 = phi_4828_;
+                                let _e1873 = phi_1512_;
+                                local_172 = _e1873;
                                 phi_1514_ = 0u;
                                 loop {
-                                    let _e1867 = phi_1514_;
-                                    local_173 = _e1867;
-                                    let _e1868 = local_173;
-                                    let _e1869 = local_44;
-                                    if (_e1868 < _e1869) {
-                                        let _e1871 = local_173;
-                                        let _e1872 = (_e1871 + 1u);
-                                        let _e1874 = local_16;
-                                        let _e1879 = local_443;
-                                        let _e1880 = (_e1879 >= f32((2u * (_e1874 << bitcast<u32>((_e1872 & 31u))))));
-                                        phi_1515_ = select(u32(), _e1872, _e1880);
-                                        phi_1536_ = _e1880;
+                                    let _e1875 = phi_1514_;
+                                    local_173 = _e1875;
+                                    let _e1876 = local_173;
+                                    let _e1877 = local_44;
+                                    if (_e1876 < _e1877) {
+                                        let _e1879 = local_173;
+                                        let _e1880 = (_e1879 + 1u);
+                                        let _e1882 = local_16;
+                                        let _e1887 = local_443;
+                                        let _e1888 = (_e1887 >= f32((2u * (_e1882 << bitcast<u32>((_e1880 & 31u))))));
+                                        phi_1515_ = select(u32(), _e1880, _e1888);
+                                        phi_1536_ = _e1888;
                                     } else {
                                         phi_1515_ = u32();
                                         phi_1536_ = false;
                                     }
-                                    let _e1883 = phi_1515_;
-                                    let _e1885 = phi_1536_;
-                                    local_174 = _e1885;
+                                    let _e1891 = phi_1515_;
+                                    let _e1893 = phi_1536_;
+                                    local_174 = _e1893;
                                     continue;
                                     continuing {
-                                        let _e1886 = local_174;
-                                        phi_1514_ = _e1883;
-                                        break if !(_e1886);
+                                        let _e1894 = local_174;
+                                        phi_1514_ = _e1891;
+                                        break if !(_e1894);
                                     }
                                 }
-                                let _e1888 = local_173;
-                                let _e1894 = local_172;
-                                local_175 = bitcast<u32>((_e1894 * f32((1u << bitcast<u32>(((2u * _e1888) & 31u))))));
-                                let _e1897 = local;
-                                let _e1898 = (2304u + _e1897);
-                                local_176 = _e1898;
-                                if (_e1898 < 5888u) {
+                                let _e1896 = local_173;
+                                let _e1902 = local_172;
+                                local_175 = bitcast<u32>((_e1902 * f32((1u << bitcast<u32>(((2u * _e1896) & 31u))))));
+                                let _e1905 = local;
+                                let _e1906 = (2304u + _e1905);
+                                local_176 = _e1906;
+                                if (_e1906 < 5888u) {
                                 } else {
                                     phi_5055_ = true;
                                     break;
                                 }
-                                let _e1900 = local_176;
-                                let _e1902 = local_175;
-                                global_11[_e1900] = _e1902;
-                                let _e1903 = local;
-                                let _e1904 = (5632u + _e1903);
-                                local_177 = _e1904;
-                                if (_e1904 < 5888u) {
+                                let _e1908 = local_176;
+                                let _e1910 = local_175;
+                                global_11[_e1908] = _e1910;
+                                let _e1911 = local;
+                                let _e1912 = (5632u + _e1911);
+                                local_177 = _e1912;
+                                if (_e1912 < 5888u) {
                                 } else {
                                     phi_5055_ = true;
                                     break;
                                 }
-                                let _e1906 = local_177;
-                                let _e1908 = local_114;
-                                global_11[_e1906] = _e1908;
-                                let _e1909 = local_113;
-                                local_178 = bitcast<u32>(f32((1u << bitcast<u32>((_e1909.member_4 & 31u)))));
-                                let _e1916 = local;
-                                let _e1917 = (3584u + _e1916);
-                                local_179 = _e1917;
-                                if (_e1917 < 5888u) {
-                                } else {
-                                    phi_5055_ = true;
-                                    break;
-                                }
-                                let _e1919 = local_179;
-                                let _e1921 = local_178;
-                                global_11[_e1919] = _e1921;
-                                let _e1922 = local_444;
-                                local_180 = bitcast<u32>(_e1922);
+                                let _e1914 = local_177;
+                                let _e1916 = local_114;
+                                global_11[_e1914] = _e1916;
+                                let _e1917 = local_113;
+                                local_178 = bitcast<u32>(f32((1u << bitcast<u32>((_e1917.member_4 & 31u)))));
                                 let _e1924 = local;
-                                let _e1925 = (3840u + _e1924);
-                                local_181 = _e1925;
+                                let _e1925 = (3584u + _e1924);
+                                local_179 = _e1925;
                                 if (_e1925 < 5888u) {
                                 } else {
                                     phi_5055_ = true;
                                     break;
                                 }
-                                let _e1927 = local_181;
-                                let _e1929 = local_180;
+                                let _e1927 = local_179;
+                                let _e1929 = local_178;
                                 global_11[_e1927] = _e1929;
-                                let _e1930 = local_113;
-                                local_182 = bitcast<u32>(_e1930.member_2);
-                                let _e1933 = local;
-                                let _e1934 = (4096u + _e1933);
-                                local_183 = _e1934;
-                                if (_e1934 < 5888u) {
+                                let _e1930 = local_444;
+                                local_180 = bitcast<u32>(_e1930);
+                                let _e1932 = local;
+                                let _e1933 = (3840u + _e1932);
+                                local_181 = _e1933;
+                                if (_e1933 < 5888u) {
                                 } else {
                                     phi_5055_ = true;
                                     break;
                                 }
-                                let _e1936 = local_183;
-                                let _e1938 = local_182;
-                                global_11[_e1936] = _e1938;
-                                let _e1939 = local_113;
-                                local_184 = bitcast<u32>(_e1939.member_1[0]);
-                                let _e1943 = local;
-                                let _e1944 = (2560u + _e1943);
-                                local_185 = _e1944;
-                                if (_e1944 < 5888u) {
+                                let _e1935 = local_181;
+                                let _e1937 = local_180;
+                                global_11[_e1935] = _e1937;
+                                let _e1938 = local_113;
+                                local_182 = bitcast<u32>(_e1938.member_2);
+                                let _e1941 = local;
+                                let _e1942 = (4096u + _e1941);
+                                local_183 = _e1942;
+                                if (_e1942 < 5888u) {
                                 } else {
                                     phi_5055_ = true;
                                     break;
                                 }
-                                let _e1946 = local_185;
-                                let _e1948 = local_184;
-                                global_11[_e1946] = _e1948;
-                                let _e1949 = local_113;
-                                local_186 = bitcast<u32>(_e1949.member_1[1]);
-                                let _e1953 = local;
-                                let _e1954 = (2816u + _e1953);
-                                local_187 = _e1954;
-                                if (_e1954 < 5888u) {
+                                let _e1944 = local_183;
+                                let _e1946 = local_182;
+                                global_11[_e1944] = _e1946;
+                                let _e1947 = local_113;
+                                local_184 = bitcast<u32>(_e1947.member_1[0]);
+                                let _e1951 = local;
+                                let _e1952 = (2560u + _e1951);
+                                local_185 = _e1952;
+                                if (_e1952 < 5888u) {
                                 } else {
                                     phi_5055_ = true;
                                     break;
                                 }
-                                let _e1956 = local_187;
-                                let _e1958 = local_186;
-                                global_11[_e1956] = _e1958;
-                                let _e1959 = local_113;
-                                local_188 = bitcast<u32>(_e1959.member_1[2]);
-                                let _e1963 = local;
-                                let _e1964 = (3072u + _e1963);
-                                local_189 = _e1964;
-                                if (_e1964 < 5888u) {
+                                let _e1954 = local_185;
+                                let _e1956 = local_184;
+                                global_11[_e1954] = _e1956;
+                                let _e1957 = local_113;
+                                local_186 = bitcast<u32>(_e1957.member_1[1]);
+                                let _e1961 = local;
+                                let _e1962 = (2816u + _e1961);
+                                local_187 = _e1962;
+                                if (_e1962 < 5888u) {
                                 } else {
                                     phi_5055_ = true;
                                     break;
                                 }
-                                let _e1966 = local_189;
-                                let _e1968 = local_188;
-                                global_11[_e1966] = _e1968;
-                                let _e1969 = local;
-                                let _e1970 = (3328u + _e1969);
-                                local_190 = _e1970;
-                                if (_e1970 < 5888u) {
+                                let _e1964 = local_187;
+                                let _e1966 = local_186;
+                                global_11[_e1964] = _e1966;
+                                let _e1967 = local_113;
+                                local_188 = bitcast<u32>(_e1967.member_1[2]);
+                                let _e1971 = local;
+                                let _e1972 = (3072u + _e1971);
+                                local_189 = _e1972;
+                                if (_e1972 < 5888u) {
                                 } else {
                                     phi_5055_ = true;
                                     break;
                                 }
-                                let _e1972 = local_190;
-                                let _e1974 = local_118;
-                                global_11[_e1972] = _e1974;
-                                phi_4824_ = _e1863;
+                                let _e1974 = local_189;
+                                let _e1976 = local_188;
+                                global_11[_e1974] = _e1976;
+                                let _e1977 = local;
+                                let _e1978 = (3328u + _e1977);
+                                local_190 = _e1978;
+                                if (_e1978 < 5888u) {
+                                } else {
+                                    phi_5055_ = true;
+                                    break;
+                                }
+                                let _e1980 = local_190;
+                                let _e1982 = local_118;
+                                global_11[_e1980] = _e1982;
+                                phi_4824_ = _e1871;
                             } else {
                                 phi_4824_ = _e1011;
                             }
-                            let _e1976 = phi_4824_;
+                            let _e1984 = phi_4824_;
                             storageBarrier();
                             workgroupBarrier();
-                            let _e1977 = local_48;
-                            let _e1978 = local_80;
-                            let _e1979 = (_e1977 - _e1978);
-                            let _e1981 = select(256u, _e1979, (_e1979 < 256u));
-                            local_446 = _e1981;
+                            let _e1985 = local_48;
+                            let _e1986 = local_80;
+                            let _e1987 = (_e1985 - _e1986);
+                            let _e1989 = select(256u, _e1987, (_e1987 < 256u));
+                            local_446 = _e1989;
                             local_457[0u] = false;
                             phi_1641_ = 0u;
                             loop {
-                                let _e1984 = phi_1641_;
-                                local_191 = _e1984;
-                                let _e1985 = local_191;
-                                let _e1986 = (_e1985 < 1u);
-                                local_192 = _e1986;
-                                if _e1986 {
-                                    let _e1987 = local;
-                                    let _e1988 = local_191;
-                                    local_193 = (_e1987 + _e1988);
-                                    let _e1990 = local_33;
-                                    if _e1990 {
+                                let _e1992 = phi_1641_;
+                                local_191 = _e1992;
+                                let _e1993 = local_191;
+                                let _e1994 = (_e1993 < 1u);
+                                local_192 = _e1994;
+                                if _e1994 {
+                                    let _e1995 = local;
+                                    let _e1996 = local_191;
+                                    local_193 = (_e1995 + _e1996);
+                                    let _e1998 = local_33;
+                                    if _e1998 {
                                         phi_4813_ = true;
                                         break;
                                     }
-                                    let _e1991 = local_193;
-                                    let _e1992 = local_441;
-                                    let _e1994 = local_40;
-                                    local_194 = (_e1994 + (_e1991 % _e1992));
-                                    let _e1996 = local_33;
-                                    if _e1996 {
+                                    let _e1999 = local_193;
+                                    let _e2000 = local_441;
+                                    let _e2002 = local_40;
+                                    local_194 = (_e2002 + (_e1999 % _e2000));
+                                    let _e2004 = local_33;
+                                    if _e2004 {
                                         phi_4813_ = true;
                                         break;
                                     }
-                                    let _e1997 = local_193;
-                                    let _e1998 = local_441;
-                                    let _e2000 = local_42;
-                                    local_195 = (_e2000 + (_e1997 / _e1998));
-                                    let _e2002 = local_193;
-                                    let _e2003 = local_66;
-                                    if (_e2002 < _e2003) {
-                                        let _e2005 = local_194;
-                                        let _e2006 = local_13;
-                                        let _e2007 = (_e2005 < _e2006);
-                                        local_196 = _e2007;
-                                        if _e2007 {
-                                            let _e2008 = local_195;
-                                            let _e2009 = local_14;
-                                            phi_1707_ = (_e2008 < _e2009);
+                                    let _e2005 = local_193;
+                                    let _e2006 = local_441;
+                                    let _e2008 = local_42;
+                                    local_195 = (_e2008 + (_e2005 / _e2006));
+                                    let _e2010 = local_193;
+                                    let _e2011 = local_66;
+                                    if (_e2010 < _e2011) {
+                                        let _e2013 = local_194;
+                                        let _e2014 = local_13;
+                                        let _e2015 = (_e2013 < _e2014);
+                                        local_196 = _e2015;
+                                        if _e2015 {
+                                            let _e2016 = local_195;
+                                            let _e2017 = local_14;
+                                            phi_1707_ = (_e2016 < _e2017);
                                         } else {
                                             phi_1707_ = bool();
                                         }
-                                        let _e2012 = phi_1707_;
-                                        let _e2013 = local_196;
-                                        phi_1709_ = _e2012;
-                                        phi_1710_ = select(true, false, _e2013);
+                                        let _e2020 = phi_1707_;
+                                        let _e2021 = local_196;
+                                        phi_1709_ = _e2020;
+                                        phi_1710_ = select(true, false, _e2021);
                                     } else {
                                         phi_1709_ = bool();
                                         phi_1710_ = true;
                                     }
-                                    let _e2016 = phi_1709_;
-                                    let _e2018 = phi_1710_;
-                                    local_447 = select(_e2016, false, _e2018);
-                                    let _e2020 = local_192;
-                                    if _e2020 {
+                                    let _e2024 = phi_1709_;
+                                    let _e2026 = phi_1710_;
+                                    local_447 = select(_e2024, false, _e2026);
+                                    let _e2028 = local_192;
+                                    if _e2028 {
                                     } else {
                                         phi_4813_ = true;
                                         break;
                                     }
-                                    let _e2021 = local_191;
-                                    let _e2023 = local_447;
-                                    local_457[_e2021] = _e2023;
-                                    let _e2024 = local_191;
-                                    phi_1642_ = (_e2024 + 1u);
+                                    let _e2029 = local_191;
+                                    let _e2031 = local_447;
+                                    local_457[_e2029] = _e2031;
+                                    let _e2032 = local_191;
+                                    phi_1642_ = (_e2032 + 1u);
                                 } else {
                                     phi_1642_ = u32();
                                 }
-                                let _e2027 = phi_1642_;
+                                let _e2035 = phi_1642_;
                                 continue;
                                 continuing {
-                                    let _e2028 = local_192;
-                                    phi_1641_ = _e2027;
-                                    phi_4813_ = _e1976;
-                                    break if !(_e2028);
+                                    let _e2036 = local_192;
+                                    phi_1641_ = _e2035;
+                                    phi_4813_ = _e1984;
+                                    break if !(_e2036);
                                 }
                             }
-                            let _e2031 = phi_4813_;
-                            phi_5055_ = _e2031;
-                            if _e2031 {
-                                break;
-                            }
-                            let _e2032 = local_457[0u];
-                            local_454[0u] = _e2032;
-                            let _e2034 = local_33;
-                            if _e2034 {
-                                phi_5055_ = true;
-                                break;
-                            }
-                            let _e2035 = local_33;
-                            if _e2035 {
-                                phi_5055_ = true;
-                                break;
-                            }
-                            let _e2036 = local_64;
-                            local_197 = (f32(_e2036) + 0.5f);
-                            let _e2039 = local_33;
+                            let _e2039 = phi_4813_;
+                            phi_5055_ = _e2039;
                             if _e2039 {
+                                break;
+                            }
+                            let _e2040 = local_457[0u];
+                            local_454[0u] = _e2040;
+                            let _e2042 = local_33;
+                            if _e2042 {
                                 phi_5055_ = true;
                                 break;
                             }
-                            let _e2040 = local_33;
-                            if _e2040 {
+                            let _e2043 = local_33;
+                            if _e2043 {
                                 phi_5055_ = true;
                                 break;
                             }
-                            let _e2041 = local_65;
-                            local_198 = (f32(_e2041) + 0.5f);
-                            let _e2044 = local;
-                            let _e2045 = (768u + _e2044);
-                            local_199 = _e2045;
-                            if (_e2045 < 5888u) {
+                            let _e2044 = local_64;
+                            local_197 = (f32(_e2044) + 0.5f);
+                            let _e2047 = local_33;
+                            if _e2047 {
+                                phi_5055_ = true;
+                                break;
+                            }
+                            let _e2048 = local_33;
+                            if _e2048 {
+                                phi_5055_ = true;
+                                break;
+                            }
+                            let _e2049 = local_65;
+                            local_198 = (f32(_e2049) + 0.5f);
+                            let _e2052 = local;
+                            let _e2053 = (768u + _e2052);
+                            local_199 = _e2053;
+                            if (_e2053 < 5888u) {
                             } else {
                                 phi_5055_ = true;
                                 break;
                             }
-                            let _e2047 = local_199;
-                            let _e2049 = global_11[_e2047];
-                            let _e2050 = bitcast<f32>(_e2049);
-                            local_200 = _e2050;
-                            let _e2051 = local;
-                            if (_e2051 < 5888u) {
+                            let _e2055 = local_199;
+                            let _e2057 = global_11[_e2055];
+                            let _e2058 = bitcast<f32>(_e2057);
+                            local_200 = _e2058;
+                            let _e2059 = local;
+                            if (_e2059 < 5888u) {
                             } else {
                                 phi_5055_ = true;
                                 break;
                             }
-                            let _e2053 = local;
-                            let _e2055 = global_11[_e2053];
-                            local_201 = bitcast<f32>(_e2055);
-                            let _e2057 = local;
-                            let _e2058 = (256u + _e2057);
-                            local_202 = _e2058;
-                            if (_e2058 < 5888u) {
+                            let _e2061 = local;
+                            let _e2063 = global_11[_e2061];
+                            local_201 = bitcast<f32>(_e2063);
+                            let _e2065 = local;
+                            let _e2066 = (256u + _e2065);
+                            local_202 = _e2066;
+                            if (_e2066 < 5888u) {
                             } else {
                                 phi_5055_ = true;
                                 break;
                             }
-                            let _e2060 = local_202;
-                            let _e2062 = global_11[_e2060];
-                            local_203 = bitcast<f32>(_e2062);
-                            let _e2064 = local;
-                            let _e2065 = (512u + _e2064);
-                            local_204 = _e2065;
-                            if (_e2065 < 5888u) {
+                            let _e2068 = local_202;
+                            let _e2070 = global_11[_e2068];
+                            local_203 = bitcast<f32>(_e2070);
+                            let _e2072 = local;
+                            let _e2073 = (512u + _e2072);
+                            local_204 = _e2073;
+                            if (_e2073 < 5888u) {
                             } else {
                                 phi_5055_ = true;
                                 break;
                             }
-                            let _e2067 = local_204;
-                            let _e2069 = global_11[_e2067];
-                            let _e2071 = local_201;
-                            let _e2072 = local_203;
-                            let _e2074 = local_73;
-                            if (_e2074 < 5888u) {
+                            let _e2075 = local_204;
+                            let _e2077 = global_11[_e2075];
+                            let _e2079 = local_201;
+                            let _e2080 = local_203;
+                            let _e2082 = local_73;
+                            if (_e2082 < 5888u) {
                             } else {
                                 phi_5055_ = true;
                                 break;
                             }
-                            let _e2076 = local_73;
-                            let _e2078 = global_11[_e2076];
-                            local_205 = bitcast<f32>(_e2078);
-                            let _e2080 = local;
-                            let _e2081 = (_e2080 + 4864u);
-                            local_206 = _e2081;
-                            if (_e2081 < 5888u) {
+                            let _e2084 = local_73;
+                            let _e2086 = global_11[_e2084];
+                            local_205 = bitcast<f32>(_e2086);
+                            let _e2088 = local;
+                            let _e2089 = (_e2088 + 4864u);
+                            local_206 = _e2089;
+                            if (_e2089 < 5888u) {
                             } else {
                                 phi_5055_ = true;
                                 break;
                             }
-                            let _e2083 = local_206;
-                            let _e2085 = global_11[_e2083];
-                            local_207 = bitcast<f32>(_e2085);
-                            let _e2087 = local;
-                            let _e2088 = (_e2087 + 5120u);
-                            local_208 = _e2088;
-                            if (_e2088 < 5888u) {
+                            let _e2091 = local_206;
+                            let _e2093 = global_11[_e2091];
+                            local_207 = bitcast<f32>(_e2093);
+                            let _e2095 = local;
+                            let _e2096 = (_e2095 + 5120u);
+                            local_208 = _e2096;
+                            if (_e2096 < 5888u) {
                             } else {
                                 phi_5055_ = true;
                                 break;
                             }
-                            let _e2090 = local_208;
-                            let _e2092 = global_11[_e2090];
-                            local_209 = bitcast<f32>(_e2092);
-                            let _e2094 = local;
-                            let _e2095 = (_e2094 + 5376u);
-                            local_210 = _e2095;
-                            let _e2096 = (_e2095 < 5888u);
-                            local_211 = _e2096;
-                            if _e2096 {
+                            let _e2098 = local_208;
+                            let _e2100 = global_11[_e2098];
+                            local_209 = bitcast<f32>(_e2100);
+                            let _e2102 = local;
+                            let _e2103 = (_e2102 + 5376u);
+                            local_210 = _e2103;
+                            let _e2104 = (_e2103 < 5888u);
+                            local_211 = _e2104;
+                            if _e2104 {
                             } else {
                                 phi_5055_ = true;
                                 break;
                             }
-                            let _e2097 = local_210;
-                            let _e2099 = global_11[_e2097];
-                            local_212 = ((_e2099 & 1u) != 0u);
-                            let _e2102 = local_211;
-                            if _e2102 {
+                            let _e2105 = local_210;
+                            let _e2107 = global_11[_e2105];
+                            local_212 = ((_e2107 & 1u) != 0u);
+                            let _e2110 = local_211;
+                            if _e2110 {
                             } else {
                                 phi_5055_ = true;
                                 break;
                             }
-                            let _e2103 = global_11[_e2097];
-                            let _e2106 = local_205;
-                            let _e2107 = local_207;
-                            let _e2108 = local_209;
-                            let _e2109 = local_212;
+                            let _e2111 = global_11[_e2105];
+                            let _e2114 = local_205;
+                            let _e2115 = local_207;
+                            let _e2116 = local_209;
+                            let _e2117 = local_212;
                             local_453[0u] = false;
                             phi_1941_ = 0u;
                             loop {
-                                let _e2113 = phi_1941_;
-                                local_213 = _e2113;
-                                let _e2114 = local_213;
-                                let _e2115 = (_e2114 < 1u);
-                                local_214 = _e2115;
-                                if _e2115 {
-                                    let _e2116 = local_214;
-                                    if _e2116 {
-                                    } else {
-                                        phi_4831_ = true;
-                                        break;
-                                    }
-                                    let _e2117 = local_213;
-                                    let _e2119 = local_454[_e2117];
-                                    if _e2119 {
-                                        let _e2120 = local_200;
-                                        phi_1962_ = (_e2120 < 0.99902344f);
-                                    } else {
-                                        phi_1962_ = false;
-                                    }
-                                    let _e2123 = phi_1962_;
-                                    local_215 = _e2123;
+                                let _e2121 = phi_1941_;
+                                local_213 = _e2121;
+                                let _e2122 = local_213;
+                                let _e2123 = (_e2122 < 1u);
+                                local_214 = _e2123;
+                                if _e2123 {
                                     let _e2124 = local_214;
                                     if _e2124 {
                                     } else {
@@ -2691,1370 +2675,1386 @@ fn function_() {
                                         break;
                                     }
                                     let _e2125 = local_213;
-                                    let _e2127 = local_215;
-                                    local_453[_e2125] = _e2127;
-                                    let _e2128 = local_213;
-                                    phi_1942_ = (_e2128 + 1u);
+                                    let _e2127 = local_454[_e2125];
+                                    if _e2127 {
+                                        let _e2128 = local_200;
+                                        phi_1962_ = (_e2128 < 0.99902344f);
+                                    } else {
+                                        phi_1962_ = false;
+                                    }
+                                    let _e2131 = phi_1962_;
+                                    local_215 = _e2131;
+                                    let _e2132 = local_214;
+                                    if _e2132 {
+                                    } else {
+                                        phi_4831_ = true;
+                                        break;
+                                    }
+                                    let _e2133 = local_213;
+                                    let _e2135 = local_215;
+                                    local_453[_e2133] = _e2135;
+                                    let _e2136 = local_213;
+                                    phi_1942_ = (_e2136 + 1u);
                                 } else {
                                     phi_1942_ = u32();
                                 }
-                                let _e2131 = phi_1942_;
+                                let _e2139 = phi_1942_;
                                 continue;
                                 continuing {
-                                    let _e2132 = local_214;
-                                    phi_1941_ = _e2131;
-                                    phi_4831_ = _e2031;
-                                    break if !(_e2132);
+                                    let _e2140 = local_214;
+                                    phi_1941_ = _e2139;
+                                    phi_4831_ = _e2039;
+                                    break if !(_e2140);
                                 }
                             }
-                            let _e2135 = phi_4831_;
-                            phi_5055_ = _e2135;
-                            if _e2135 {
+                            let _e2143 = phi_4831_;
+                            phi_5055_ = _e2143;
+                            if _e2143 {
                                 break;
                             }
-                            let _e2136 = local_453[0u];
-                            local_455[0u] = _e2136;
+                            let _e2144 = local_453[0u];
+                            local_455[0u] = _e2144;
                             local_452[0u] = 0u;
-                            phi_4843_ = _e2135;
+                            phi_4843_ = _e2143;
                             phi_1975_ = 0u;
                             loop {
-                                let _e2140 = phi_4843_;
-                                let _e2142 = phi_1975_;
-                                local_216 = _e2142;
-                                let _e2143 = local_216;
-                                let _e2144 = (_e2143 < 1u);
-                                local_217 = _e2144;
-                                if _e2144 {
-                                    let _e2145 = local_217;
-                                    if _e2145 {
+                                let _e2148 = phi_4843_;
+                                let _e2150 = phi_1975_;
+                                local_216 = _e2150;
+                                let _e2151 = local_216;
+                                let _e2152 = (_e2151 < 1u);
+                                local_217 = _e2152;
+                                if _e2152 {
+                                    let _e2153 = local_217;
+                                    if _e2153 {
                                     } else {
                                         phi_4844_ = true;
                                         break;
                                     }
-                                    let _e2146 = local_216;
-                                    let _e2148 = local_455[_e2146];
-                                    if _e2148 {
-                                        let _e2149 = local;
-                                        let _e2150 = local_216;
-                                        let _e2152 = (1024u + (_e2149 + _e2150));
-                                        local_218 = _e2152;
-                                        if (_e2152 < 5888u) {
+                                    let _e2154 = local_216;
+                                    let _e2156 = local_455[_e2154];
+                                    if _e2156 {
+                                        let _e2157 = local;
+                                        let _e2158 = local_216;
+                                        let _e2160 = (1024u + (_e2157 + _e2158));
+                                        local_218 = _e2160;
+                                        if (_e2160 < 5888u) {
                                         } else {
                                             phi_4844_ = true;
                                             break;
                                         }
-                                        let _e2154 = local_218;
-                                        let _e2156 = global_11[_e2154];
-                                        local_219 = bitcast<f32>(_e2156);
+                                        let _e2162 = local_218;
+                                        let _e2164 = global_11[_e2162];
+                                        local_219 = bitcast<f32>(_e2164);
                                         phi_2005_ = 0u;
-                                        phi_2008_ = _e1981;
+                                        phi_2008_ = _e1989;
                                         loop {
-                                            let _e2159 = phi_2005_;
-                                            let _e2161 = phi_2008_;
-                                            local_220 = _e2159;
-                                            local_221 = _e2161;
-                                            local_461 = _e2159;
-                                            let _e2162 = local_220;
-                                            let _e2163 = local_221;
-                                            let _e2164 = (_e2162 < _e2163);
-                                            local_222 = _e2164;
-                                            if _e2164 {
-                                                let _e2165 = local_220;
-                                                let _e2166 = local_221;
-                                                let _e2168 = ((_e2165 + _e2166) / 2u);
-                                                local_223 = _e2168;
-                                                let _e2169 = (3328u + _e2168);
-                                                local_224 = _e2169;
-                                                if (_e2169 < 5888u) {
+                                            let _e2167 = phi_2005_;
+                                            let _e2169 = phi_2008_;
+                                            local_220 = _e2167;
+                                            local_221 = _e2169;
+                                            local_461 = _e2167;
+                                            let _e2170 = local_220;
+                                            let _e2171 = local_221;
+                                            let _e2172 = (_e2170 < _e2171);
+                                            local_222 = _e2172;
+                                            if _e2172 {
+                                                let _e2173 = local_220;
+                                                let _e2174 = local_221;
+                                                let _e2176 = ((_e2173 + _e2174) / 2u);
+                                                local_223 = _e2176;
+                                                let _e2177 = (3328u + _e2176);
+                                                local_224 = _e2177;
+                                                if (_e2177 < 5888u) {
                                                 } else {
                                                     phi_4839_ = true;
                                                     break;
                                                 }
-                                                let _e2171 = local_224;
-                                                let _e2173 = global_11[_e2171];
-                                                let _e2175 = local_219;
-                                                let _e2176 = (bitcast<f32>(_e2173) >= _e2175);
-                                                local_225 = _e2176;
-                                                if _e2176 {
-                                                    phi_2032_ = _e2159;
+                                                let _e2179 = local_224;
+                                                let _e2181 = global_11[_e2179];
+                                                let _e2183 = local_219;
+                                                let _e2184 = (bitcast<f32>(_e2181) >= _e2183);
+                                                local_225 = _e2184;
+                                                if _e2184 {
+                                                    phi_2032_ = _e2167;
                                                 } else {
-                                                    let _e2177 = local_223;
-                                                    phi_2032_ = (_e2177 + 1u);
+                                                    let _e2185 = local_223;
+                                                    phi_2032_ = (_e2185 + 1u);
                                                 }
-                                                let _e2180 = phi_2032_;
-                                                let _e2181 = local_225;
-                                                let _e2182 = local_223;
-                                                let _e2183 = local_221;
-                                                phi_2006_ = _e2180;
-                                                phi_2009_ = select(_e2183, _e2182, _e2181);
+                                                let _e2188 = phi_2032_;
+                                                let _e2189 = local_225;
+                                                let _e2190 = local_223;
+                                                let _e2191 = local_221;
+                                                phi_2006_ = _e2188;
+                                                phi_2009_ = select(_e2191, _e2190, _e2189);
                                             } else {
                                                 phi_2006_ = u32();
                                                 phi_2009_ = u32();
                                             }
-                                            let _e2186 = phi_2006_;
-                                            let _e2188 = phi_2009_;
+                                            let _e2194 = phi_2006_;
+                                            let _e2196 = phi_2009_;
                                             continue;
                                             continuing {
-                                                let _e2189 = local_222;
-                                                phi_2005_ = _e2186;
-                                                phi_2008_ = _e2188;
-                                                phi_4839_ = _e2140;
-                                                break if !(_e2189);
+                                                let _e2197 = local_222;
+                                                phi_2005_ = _e2194;
+                                                phi_2008_ = _e2196;
+                                                phi_4839_ = _e2148;
+                                                break if !(_e2197);
                                             }
                                         }
-                                        let _e2192 = phi_4839_;
-                                        phi_4844_ = _e2192;
-                                        if _e2192 {
+                                        let _e2200 = phi_4839_;
+                                        phi_4844_ = _e2200;
+                                        if _e2200 {
                                             break;
                                         }
-                                        phi_4846_ = _e2192;
-                                        let _e4255 = local_461;
-                                        phi_2034_ = _e4255;
+                                        phi_4846_ = _e2200;
+                                        let _e4274 = local_461;
+                                        phi_2034_ = _e4274;
                                     } else {
-                                        phi_4846_ = _e2140;
+                                        phi_4846_ = _e2148;
                                         phi_2034_ = 0u;
                                     }
-                                    let _e2194 = phi_4846_;
-                                    let _e2196 = phi_2034_;
-                                    local_226 = _e2196;
-                                    let _e2197 = local_217;
-                                    if _e2197 {
+                                    let _e2202 = phi_4846_;
+                                    let _e2204 = phi_2034_;
+                                    local_226 = _e2204;
+                                    let _e2205 = local_217;
+                                    if _e2205 {
                                     } else {
                                         phi_4844_ = true;
                                         break;
                                     }
-                                    let _e2198 = local_216;
-                                    let _e2200 = local_226;
-                                    local_452[_e2198] = _e2200;
-                                    let _e2201 = local_216;
-                                    phi_4845_ = _e2194;
-                                    phi_1976_ = (_e2201 + 1u);
+                                    let _e2206 = local_216;
+                                    let _e2208 = local_226;
+                                    local_452[_e2206] = _e2208;
+                                    let _e2209 = local_216;
+                                    phi_4845_ = _e2202;
+                                    phi_1976_ = (_e2209 + 1u);
                                 } else {
-                                    phi_4845_ = _e2140;
+                                    phi_4845_ = _e2148;
                                     phi_1976_ = u32();
                                 }
-                                let _e2204 = phi_4845_;
-                                let _e2206 = phi_1976_;
+                                let _e2212 = phi_4845_;
+                                let _e2214 = phi_1976_;
                                 continue;
                                 continuing {
-                                    let _e2207 = local_217;
-                                    phi_4843_ = _e2204;
-                                    phi_1975_ = _e2206;
-                                    phi_4844_ = _e2204;
-                                    break if !(_e2207);
+                                    let _e2215 = local_217;
+                                    phi_4843_ = _e2212;
+                                    phi_1975_ = _e2214;
+                                    phi_4844_ = _e2212;
+                                    break if !(_e2215);
                                 }
                             }
-                            let _e2210 = phi_4844_;
-                            phi_5055_ = _e2210;
-                            if _e2210 {
+                            let _e2218 = phi_4844_;
+                            phi_5055_ = _e2218;
+                            if _e2218 {
                                 break;
                             }
-                            let _e2211 = local_452[0u];
-                            local_456[0u] = _e2211;
-                            let _e2213 = local_456[0u];
-                            let _e2214 = f32(_e2213);
-                            let _e2215 = local_20;
-                            local_227 = ((_e2215 >> bitcast<u32>(8u)) & 7u);
-                            phi_4852_ = _e2210;
-                            phi_2065_ = _e2050;
-                            phi_2068_ = type_31(_e2106, _e2107, _e2108, _e2109, ((_e2103 & 2u) != 0u));
+                            let _e2219 = local_452[0u];
+                            local_456[0u] = _e2219;
+                            let _e2221 = local_456[0u];
+                            let _e2222 = f32(_e2221);
+                            let _e2223 = local_20;
+                            local_227 = ((_e2223 >> bitcast<u32>(8u)) & 7u);
+                            phi_4852_ = _e2218;
+                            phi_2065_ = _e2058;
+                            phi_2068_ = type_31(_e2114, _e2115, _e2116, _e2117, ((_e2111 & 2u) != 0u));
                             phi_2070_ = 0u;
-                            phi_2072_ = select(select(u32(_e2214), 0u, (_e2214 < 0f)), 4294967295u, (_e2214 > 4294967000f));
-                            phi_2074_ = _e2214;
+                            phi_2072_ = select(select(u32(_e2222), 0u, !((_e2222 >= 0f))), 4294967295u, (_e2222 > 4294967000f));
+                            phi_2074_ = _e2222;
                             phi_2076_ = 0f;
                             phi_2078_ = false;
-                            phi_2080_ = array<f32, 3>(_e2071, _e2072, bitcast<f32>(_e2069));
+                            phi_2080_ = array<f32, 3>(_e2079, _e2080, bitcast<f32>(_e2077));
                             loop {
-                                let _e2225 = phi_4852_;
-                                let _e2227 = phi_2065_;
-                                let _e2229 = phi_2068_;
-                                let _e2231 = phi_2070_;
-                                let _e2233 = phi_2072_;
-                                let _e2235 = phi_2074_;
-                                let _e2237 = phi_2076_;
-                                let _e2239 = phi_2078_;
-                                let _e2241 = phi_2080_;
-                                local_228 = _e2227;
-                                local_229 = _e2229;
-                                local_230 = _e2231;
-                                local_231 = _e2233;
-                                local_232 = _e2235;
-                                local_233 = _e2237;
-                                local_234 = _e2239;
-                                local_235 = _e2241;
-                                let _e2242 = local_230;
-                                let _e2243 = local_231;
-                                let _e2244 = (_e2242 < _e2243);
-                                local_236 = _e2244;
-                                if _e2244 {
-                                    let _e2245 = local_230;
-                                    let _e2246 = (1536u + _e2245);
-                                    local_237 = _e2246;
-                                    if (_e2246 < 5888u) {
+                                let _e2234 = phi_4852_;
+                                let _e2236 = phi_2065_;
+                                let _e2238 = phi_2068_;
+                                let _e2240 = phi_2070_;
+                                let _e2242 = phi_2072_;
+                                let _e2244 = phi_2074_;
+                                let _e2246 = phi_2076_;
+                                let _e2248 = phi_2078_;
+                                let _e2250 = phi_2080_;
+                                local_228 = _e2236;
+                                local_229 = _e2238;
+                                local_230 = _e2240;
+                                local_231 = _e2242;
+                                local_232 = _e2244;
+                                local_233 = _e2246;
+                                local_234 = _e2248;
+                                local_235 = _e2250;
+                                let _e2251 = local_230;
+                                let _e2252 = local_231;
+                                let _e2253 = (_e2251 < _e2252);
+                                local_236 = _e2253;
+                                if _e2253 {
+                                    let _e2254 = local_230;
+                                    let _e2255 = (1536u + _e2254);
+                                    local_237 = _e2255;
+                                    if (_e2255 < 5888u) {
                                     } else {
                                         phi_4953_ = true;
                                         break;
                                     }
-                                    let _e2248 = local_237;
-                                    let _e2250 = global_11[_e2248];
-                                    local_238 = bitcast<f32>(_e2250);
-                                    let _e2252 = local_230;
-                                    let _e2253 = (1792u + _e2252);
-                                    local_239 = _e2253;
-                                    if (_e2253 < 5888u) {
+                                    let _e2257 = local_237;
+                                    let _e2259 = global_11[_e2257];
+                                    local_238 = bitcast<f32>(_e2259);
+                                    let _e2261 = local_230;
+                                    let _e2262 = (1792u + _e2261);
+                                    local_239 = _e2262;
+                                    if (_e2262 < 5888u) {
                                     } else {
                                         phi_4953_ = true;
                                         break;
                                     }
-                                    let _e2255 = local_239;
-                                    let _e2257 = global_11[_e2255];
-                                    local_240 = bitcast<f32>(_e2257);
-                                    let _e2259 = local_230;
-                                    let _e2260 = (2048u + _e2259);
-                                    local_241 = _e2260;
-                                    if (_e2260 < 5888u) {
+                                    let _e2264 = local_239;
+                                    let _e2266 = global_11[_e2264];
+                                    local_240 = bitcast<f32>(_e2266);
+                                    let _e2268 = local_230;
+                                    let _e2269 = (2048u + _e2268);
+                                    local_241 = _e2269;
+                                    if (_e2269 < 5888u) {
                                     } else {
                                         phi_4953_ = true;
                                         break;
                                     }
-                                    let _e2262 = local_241;
-                                    let _e2264 = global_11[_e2262];
-                                    let _e2265 = bitcast<f32>(_e2264);
-                                    local_242 = _e2265;
-                                    let _e2266 = local_197;
-                                    let _e2267 = local_238;
-                                    let _e2268 = (_e2266 - _e2267);
-                                    local_243 = _e2268;
-                                    let _e2269 = local_198;
-                                    let _e2270 = local_240;
-                                    let _e2271 = (_e2269 - _e2270);
-                                    local_244 = _e2271;
-                                    let _e2274 = ((_e2268 * _e2268) + (_e2271 * _e2271));
-                                    local_245 = _e2274;
-                                    let _e2277 = local_230;
-                                    let _e2279 = local_232;
-                                    let _e2281 = ((_e2274 < (_e2265 * _e2265)) && (f32(_e2277) < _e2279));
-                                    local_246 = _e2281;
-                                    if _e2281 {
-                                        let _e2282 = local_230;
-                                        let _e2283 = (5632u + _e2282);
-                                        local_247 = _e2283;
-                                        if (_e2283 < 5888u) {
+                                    let _e2271 = local_241;
+                                    let _e2273 = global_11[_e2271];
+                                    let _e2274 = bitcast<f32>(_e2273);
+                                    local_242 = _e2274;
+                                    let _e2275 = local_197;
+                                    let _e2276 = local_238;
+                                    let _e2277 = (_e2275 - _e2276);
+                                    local_243 = _e2277;
+                                    let _e2278 = local_198;
+                                    let _e2279 = local_240;
+                                    let _e2280 = (_e2278 - _e2279);
+                                    local_244 = _e2280;
+                                    let _e2283 = ((_e2277 * _e2277) + (_e2280 * _e2280));
+                                    local_245 = _e2283;
+                                    let _e2286 = local_230;
+                                    let _e2288 = local_232;
+                                    let _e2290 = ((_e2283 < (_e2274 * _e2274)) && (f32(_e2286) < _e2288));
+                                    local_246 = _e2290;
+                                    if _e2290 {
+                                        let _e2291 = local_230;
+                                        let _e2292 = (5632u + _e2291);
+                                        local_247 = _e2292;
+                                        if (_e2292 < 5888u) {
                                         } else {
                                             phi_4953_ = true;
                                             break;
                                         }
-                                        let _e2285 = local_247;
-                                        let _e2287 = global_11[_e2285];
-                                        local_248 = _e2287;
-                                        let _e2288 = local_230;
-                                        let _e2289 = (3584u + _e2288);
-                                        local_249 = _e2289;
-                                        if (_e2289 < 5888u) {
+                                        let _e2294 = local_247;
+                                        let _e2296 = global_11[_e2294];
+                                        local_248 = _e2296;
+                                        let _e2297 = local_230;
+                                        let _e2298 = (3584u + _e2297);
+                                        local_249 = _e2298;
+                                        if (_e2298 < 5888u) {
                                         } else {
                                             phi_4953_ = true;
                                             break;
                                         }
-                                        let _e2291 = local_249;
-                                        let _e2293 = global_11[_e2291];
-                                        local_250 = bitcast<f32>(_e2293);
-                                        let _e2295 = local_248;
-                                        if (_e2295 != 0u) {
-                                            let _e2731 = local_242;
-                                            let _e2732 = (_e2731 - 1.4142135f);
-                                            local_251 = _e2732;
-                                            let _e2733 = local_242;
-                                            let _e2734 = (_e2733 - 2.828427f);
-                                            let _e2737 = local_245;
-                                            let _e2739 = ((_e2734 > 0f) && (_e2737 <= (_e2734 * _e2734)));
-                                            local_252 = _e2739;
-                                            let _e2741 = ((3.1415927f * _e2732) * _e2732);
-                                            local_253 = _e2741;
-                                            let _e2742 = (1f / _e2741);
-                                            local_254 = _e2742;
-                                            let _e2744 = local_246;
-                                            let _e2745 = (_e2744 && !(_e2739));
-                                            local_255 = _e2745;
-                                            if _e2745 {
-                                                let _e2746 = local_227;
-                                                let _e2747 = local_227;
-                                                local_256 = (_e2746 * _e2747);
+                                        let _e2300 = local_249;
+                                        let _e2302 = global_11[_e2300];
+                                        local_250 = bitcast<f32>(_e2302);
+                                        let _e2304 = local_248;
+                                        if (_e2304 != 0u) {
+                                            let _e2748 = local_242;
+                                            let _e2749 = (_e2748 - 1.4142135f);
+                                            local_251 = _e2749;
+                                            let _e2750 = local_242;
+                                            let _e2751 = (_e2750 - 2.828427f);
+                                            let _e2754 = local_245;
+                                            let _e2756 = ((_e2751 > 0f) && (_e2754 <= (_e2751 * _e2751)));
+                                            local_252 = _e2756;
+                                            let _e2758 = ((3.1415927f * _e2749) * _e2749);
+                                            local_253 = _e2758;
+                                            let _e2759 = (1f / _e2758);
+                                            local_254 = _e2759;
+                                            let _e2761 = local_246;
+                                            let _e2762 = (_e2761 && !(_e2756));
+                                            local_255 = _e2762;
+                                            if _e2762 {
+                                                let _e2763 = local_227;
+                                                let _e2764 = local_227;
+                                                local_256 = (_e2763 * _e2764);
                                                 phi_2168_ = 0u;
                                                 phi_2171_ = 0f;
                                                 phi_2173_ = 0u;
                                                 loop {
-                                                    let _e2750 = phi_2168_;
-                                                    let _e2752 = phi_2171_;
-                                                    let _e2754 = phi_2173_;
-                                                    local_257 = _e2750;
-                                                    local_258 = _e2752;
-                                                    local_259 = _e2754;
-                                                    let _e2755 = local_257;
-                                                    let _e2756 = local_256;
-                                                    if (_e2755 < _e2756) {
-                                                        let _e2758 = local_257;
-                                                        let _e2759 = (_e2758 < 16u);
-                                                        if _e2759 {
-                                                            let _e2760 = local_257;
-                                                            let _e2764 = local_248;
-                                                            if ((_e2764 & (1u << bitcast<u32>((_e2760 & 31u)))) == 0u) {
-                                                                phi_3011_ = _e2752;
-                                                                phi_3012_ = _e2754;
+                                                    let _e2767 = phi_2168_;
+                                                    let _e2769 = phi_2171_;
+                                                    let _e2771 = phi_2173_;
+                                                    local_257 = _e2767;
+                                                    local_258 = _e2769;
+                                                    local_259 = _e2771;
+                                                    let _e2772 = local_257;
+                                                    let _e2773 = local_256;
+                                                    if (_e2772 < _e2773) {
+                                                        let _e2775 = local_257;
+                                                        let _e2776 = (_e2775 < 16u);
+                                                        if _e2776 {
+                                                            let _e2777 = local_257;
+                                                            let _e2781 = local_248;
+                                                            if ((_e2781 & (1u << bitcast<u32>((_e2777 & 31u)))) == 0u) {
+                                                                phi_3011_ = _e2769;
+                                                                phi_3012_ = _e2771;
                                                             } else {
-                                                                let _e2767 = local_227;
-                                                                local_260 = f32(_e2767);
-                                                                let _e2769 = local_227;
-                                                                let _e2770 = (_e2769 == 0u);
-                                                                local_261 = _e2770;
-                                                                if _e2770 {
+                                                                let _e2784 = local_227;
+                                                                local_260 = f32(_e2784);
+                                                                let _e2786 = local_227;
+                                                                let _e2787 = (_e2786 == 0u);
+                                                                local_261 = _e2787;
+                                                                if _e2787 {
                                                                     phi_4847_ = true;
                                                                     break;
                                                                 }
-                                                                let _e2771 = local_257;
-                                                                let _e2772 = local_227;
-                                                                let _e2776 = local_260;
-                                                                local_262 = ((f32((_e2771 % _e2772)) + 0.5f) / _e2776);
-                                                                let _e2778 = local_261;
-                                                                if _e2778 {
+                                                                let _e2788 = local_257;
+                                                                let _e2789 = local_227;
+                                                                let _e2793 = local_260;
+                                                                local_262 = ((f32((_e2788 % _e2789)) + 0.5f) / _e2793);
+                                                                let _e2795 = local_261;
+                                                                if _e2795 {
                                                                     phi_4847_ = true;
                                                                     break;
                                                                 }
-                                                                let _e2779 = local_257;
-                                                                let _e2780 = local_227;
-                                                                let _e2784 = local_260;
-                                                                let _e2786 = local_243;
-                                                                let _e2787 = local_262;
-                                                                let _e2788 = (_e2786 - _e2787);
-                                                                local_263 = _e2788;
-                                                                let _e2789 = local_244;
-                                                                let _e2790 = (_e2789 - ((f32((_e2779 / _e2780)) + 0.5f) / _e2784));
-                                                                local_264 = _e2790;
-                                                                local_265 = (_e2788 + 1f);
-                                                                local_266 = (_e2790 + 1f);
-                                                                let _e2793 = local_251;
-                                                                if (_e2793 >= 0.0001f) {
-                                                                    let _e2807 = local_263;
-                                                                    let _e2809 = local_265;
-                                                                    let _e2811 = local_263;
-                                                                    let _e2814 = local_263;
-                                                                    let _e2815 = select(select(0f, (-1f - _e2811), (_e2809 < 0f)), _e2814, (0f < _e2807));
-                                                                    let _e2816 = local_264;
-                                                                    let _e2818 = local_266;
-                                                                    let _e2820 = local_264;
-                                                                    let _e2821 = (-1f - _e2820);
-                                                                    local_267 = _e2821;
-                                                                    let _e2823 = local_264;
-                                                                    let _e2824 = select(select(0f, _e2821, (_e2818 < 0f)), _e2823, (0f < _e2816));
-                                                                    let _e2825 = local_251;
-                                                                    let _e2826 = local_251;
-                                                                    let _e2827 = (_e2825 * _e2826);
-                                                                    local_268 = _e2827;
-                                                                    let _e2831 = (_e2827 <= ((_e2815 * _e2815) + (_e2824 * _e2824)));
-                                                                    local_269 = _e2831;
-                                                                    let _e2832 = local_263;
-                                                                    let _e2833 = -(_e2832);
-                                                                    let _e2834 = local_265;
-                                                                    let _e2836 = local_265;
-                                                                    let _e2837 = select(_e2836, _e2833, (_e2834 < _e2833));
-                                                                    let _e2838 = local_264;
-                                                                    let _e2839 = -(_e2838);
-                                                                    local_270 = _e2839;
-                                                                    let _e2840 = local_266;
-                                                                    let _e2842 = local_266;
-                                                                    let _e2843 = select(_e2842, _e2839, (_e2840 < _e2839));
-                                                                    let _e2847 = (((_e2837 * _e2837) + (_e2843 * _e2843)) <= _e2827);
-                                                                    local_271 = _e2847;
-                                                                    let _e2849 = local_255;
-                                                                    if ((_e2849 && !(_e2831)) && !(_e2847)) {
-                                                                        let _e2853 = local_251;
-                                                                        if (_e2853 > 0f) {
-                                                                            let _e2855 = local_264;
-                                                                            let _e2856 = (0f <= _e2855);
-                                                                            let _e2858 = local_266;
-                                                                            let _e2860 = (!(_e2856) && (_e2858 <= 0f));
-                                                                            let _e2861 = local_270;
-                                                                            let _e2862 = local_266;
-                                                                            let _e2863 = select(_e2862, _e2861, _e2860);
-                                                                            let _e2864 = local_267;
-                                                                            let _e2865 = local_270;
-                                                                            let _e2867 = local_264;
-                                                                            let _e2868 = select(select(_e2865, _e2864, _e2860), _e2867, _e2856);
-                                                                            let _e2872 = local_268;
-                                                                            let _e2873 = (_e2872 - (_e2863 * _e2863));
-                                                                            let _e2876 = select(0f, sqrt(_e2873), (0f < _e2873));
-                                                                            let _e2877 = local_263;
-                                                                            let _e2879 = -(_e2876);
-                                                                            let _e2880 = local_263;
-                                                                            let _e2882 = local_263;
-                                                                            let _e2884 = select(select(_e2882, _e2879, (_e2880 < _e2879)), _e2876, (_e2876 < _e2877));
-                                                                            let _e2885 = local_265;
-                                                                            let _e2887 = local_265;
-                                                                            let _e2889 = local_265;
-                                                                            let _e2891 = select(select(_e2889, _e2879, (_e2887 < _e2879)), _e2876, (_e2876 < _e2885));
-                                                                            let _e2892 = local_251;
-                                                                            let _e2893 = local_263;
-                                                                            let _e2895 = local_242;
-                                                                            let _e2896 = (1.4142135f - _e2895);
+                                                                let _e2796 = local_257;
+                                                                let _e2797 = local_227;
+                                                                let _e2801 = local_260;
+                                                                let _e2803 = local_243;
+                                                                let _e2804 = local_262;
+                                                                let _e2805 = (_e2803 - _e2804);
+                                                                local_263 = _e2805;
+                                                                let _e2806 = local_244;
+                                                                let _e2807 = (_e2806 - ((f32((_e2796 / _e2797)) + 0.5f) / _e2801));
+                                                                local_264 = _e2807;
+                                                                local_265 = (_e2805 + 1f);
+                                                                local_266 = (_e2807 + 1f);
+                                                                let _e2810 = local_251;
+                                                                if (_e2810 >= 0.0001f) {
+                                                                    let _e2824 = local_263;
+                                                                    let _e2826 = local_265;
+                                                                    let _e2828 = local_263;
+                                                                    let _e2831 = local_263;
+                                                                    let _e2832 = select(select(0f, (-1f - _e2828), (_e2826 < 0f)), _e2831, (0f < _e2824));
+                                                                    let _e2833 = local_264;
+                                                                    let _e2835 = local_266;
+                                                                    let _e2837 = local_264;
+                                                                    let _e2838 = (-1f - _e2837);
+                                                                    local_267 = _e2838;
+                                                                    let _e2840 = local_264;
+                                                                    let _e2841 = select(select(0f, _e2838, (_e2835 < 0f)), _e2840, (0f < _e2833));
+                                                                    let _e2842 = local_251;
+                                                                    let _e2843 = local_251;
+                                                                    let _e2844 = (_e2842 * _e2843);
+                                                                    local_268 = _e2844;
+                                                                    let _e2848 = (_e2844 <= ((_e2832 * _e2832) + (_e2841 * _e2841)));
+                                                                    local_269 = _e2848;
+                                                                    let _e2849 = local_263;
+                                                                    let _e2850 = -(_e2849);
+                                                                    let _e2851 = local_265;
+                                                                    let _e2853 = local_265;
+                                                                    let _e2854 = select(_e2853, _e2850, (_e2851 < _e2850));
+                                                                    let _e2855 = local_264;
+                                                                    let _e2856 = -(_e2855);
+                                                                    local_270 = _e2856;
+                                                                    let _e2857 = local_266;
+                                                                    let _e2859 = local_266;
+                                                                    let _e2860 = select(_e2859, _e2856, (_e2857 < _e2856));
+                                                                    let _e2864 = (((_e2854 * _e2854) + (_e2860 * _e2860)) <= _e2844);
+                                                                    local_271 = _e2864;
+                                                                    let _e2866 = local_255;
+                                                                    if ((_e2866 && !(_e2848)) && !(_e2864)) {
+                                                                        let _e2870 = local_251;
+                                                                        if (_e2870 > 0f) {
+                                                                            let _e2872 = local_264;
+                                                                            let _e2873 = (0f <= _e2872);
+                                                                            let _e2875 = local_266;
+                                                                            let _e2877 = (!(_e2873) && (_e2875 <= 0f));
+                                                                            let _e2878 = local_270;
+                                                                            let _e2879 = local_266;
+                                                                            let _e2880 = select(_e2879, _e2878, _e2877);
+                                                                            let _e2881 = local_267;
+                                                                            let _e2882 = local_270;
+                                                                            let _e2884 = local_264;
+                                                                            let _e2885 = select(select(_e2882, _e2881, _e2877), _e2884, _e2873);
+                                                                            let _e2889 = local_268;
+                                                                            let _e2890 = (_e2889 - (_e2880 * _e2880));
+                                                                            let _e2893 = select(0f, sqrt(_e2890), (0f < _e2890));
+                                                                            let _e2894 = local_263;
+                                                                            let _e2896 = -(_e2893);
                                                                             let _e2897 = local_263;
                                                                             let _e2899 = local_263;
-                                                                            let _e2901 = local_251;
-                                                                            let _e2902 = select(select(_e2899, _e2896, (_e2897 < _e2896)), _e2901, (_e2892 < _e2893));
-                                                                            let _e2903 = local_251;
+                                                                            let _e2901 = select(select(_e2899, _e2896, (_e2897 < _e2896)), _e2893, (_e2893 < _e2894));
+                                                                            let _e2902 = local_265;
                                                                             let _e2904 = local_265;
                                                                             let _e2906 = local_265;
-                                                                            let _e2908 = local_265;
-                                                                            let _e2910 = local_251;
-                                                                            let _e2911 = select(select(_e2908, _e2896, (_e2906 < _e2896)), _e2910, (_e2903 < _e2904));
-                                                                            let _e2915 = local_268;
-                                                                            let _e2916 = (_e2915 - (_e2911 * _e2911));
+                                                                            let _e2908 = select(select(_e2906, _e2896, (_e2904 < _e2896)), _e2893, (_e2893 < _e2902));
+                                                                            let _e2909 = local_251;
+                                                                            let _e2910 = local_263;
+                                                                            let _e2912 = local_242;
+                                                                            let _e2913 = (1.4142135f - _e2912);
+                                                                            let _e2914 = local_263;
+                                                                            let _e2916 = local_263;
+                                                                            let _e2918 = local_251;
+                                                                            let _e2919 = select(select(_e2916, _e2913, (_e2914 < _e2913)), _e2918, (_e2909 < _e2910));
                                                                             let _e2920 = local_251;
-                                                                            let _e2921 = (_e2911 / _e2920);
-                                                                            let _e2925 = select(select(_e2921, -1f, (_e2921 < -1f)), 1f, (1f < _e2921));
-                                                                            let _e2927 = (_e2925 < 0f);
-                                                                            let _e2929 = select(_e2925, -(_e2925), _e2927);
-                                                                            let _e2931 = select(_e2929, 1f, (1f < _e2929));
-                                                                            let _e2932 = (_e2931 <= 0.5f);
-                                                                            let _e2936 = select(sqrt((0.5f * (1f - _e2931))), _e2931, _e2932);
-                                                                            let _e2937 = (_e2936 * _e2936);
-                                                                            let _e2948 = (_e2936 + ((_e2936 * _e2937) * (0.1666673f + (_e2937 * (0.07496333f + (_e2937 * (0.04533125f + (_e2937 * (0.024905317f + (_e2937 * 0.04087546f))))))))));
-                                                                            let _e2951 = select((1.5707964f - (2f * _e2948)), _e2948, _e2932);
-                                                                            let _e2954 = local_268;
-                                                                            let _e2959 = local_268;
-                                                                            let _e2960 = (_e2959 - (_e2902 * _e2902));
-                                                                            let _e2964 = local_251;
-                                                                            let _e2965 = (_e2902 / _e2964);
-                                                                            let _e2969 = select(select(_e2965, -1f, (_e2965 < -1f)), 1f, (1f < _e2965));
-                                                                            let _e2971 = (_e2969 < 0f);
-                                                                            let _e2973 = select(_e2969, -(_e2969), _e2971);
-                                                                            let _e2975 = select(_e2973, 1f, (1f < _e2973));
-                                                                            let _e2976 = (_e2975 <= 0.5f);
-                                                                            let _e2980 = select(sqrt((0.5f * (1f - _e2975))), _e2975, _e2976);
-                                                                            let _e2981 = (_e2980 * _e2980);
-                                                                            let _e2992 = (_e2980 + ((_e2980 * _e2981) * (0.1666673f + (_e2981 * (0.07496333f + (_e2981 * (0.04533125f + (_e2981 * (0.024905317f + (_e2981 * 0.04087546f))))))))));
-                                                                            let _e2995 = select((1.5707964f - (2f * _e2992)), _e2992, _e2976);
-                                                                            let _e2998 = local_268;
-                                                                            let _e3002 = ((0.5f * ((_e2911 * select(0f, sqrt(_e2916), (0f < _e2916))) + (_e2954 * select(_e2951, -(_e2951), _e2927)))) - (0.5f * ((_e2902 * select(0f, sqrt(_e2960), (0f < _e2960))) + (_e2998 * select(_e2995, -(_e2995), _e2971)))));
-                                                                            let _e3005 = local_268;
-                                                                            let _e3006 = (_e3005 - (_e2891 * _e2891));
-                                                                            let _e3010 = local_251;
-                                                                            let _e3011 = (_e2891 / _e3010);
-                                                                            let _e3015 = select(select(_e3011, -1f, (_e3011 < -1f)), 1f, (1f < _e3011));
-                                                                            let _e3017 = (_e3015 < 0f);
-                                                                            let _e3019 = select(_e3015, -(_e3015), _e3017);
-                                                                            let _e3021 = select(_e3019, 1f, (1f < _e3019));
-                                                                            let _e3022 = (_e3021 <= 0.5f);
-                                                                            let _e3026 = select(sqrt((0.5f * (1f - _e3021))), _e3021, _e3022);
-                                                                            let _e3027 = (_e3026 * _e3026);
-                                                                            let _e3038 = (_e3026 + ((_e3026 * _e3027) * (0.1666673f + (_e3027 * (0.07496333f + (_e3027 * (0.04533125f + (_e3027 * (0.024905317f + (_e3027 * 0.04087546f))))))))));
-                                                                            let _e3041 = select((1.5707964f - (2f * _e3038)), _e3038, _e3022);
-                                                                            let _e3044 = local_268;
-                                                                            let _e3049 = local_268;
-                                                                            let _e3050 = (_e3049 - (_e2884 * _e2884));
-                                                                            let _e3054 = local_251;
-                                                                            let _e3055 = (_e2884 / _e3054);
-                                                                            let _e3059 = select(select(_e3055, -1f, (_e3055 < -1f)), 1f, (1f < _e3055));
-                                                                            let _e3061 = (_e3059 < 0f);
-                                                                            let _e3063 = select(_e3059, -(_e3059), _e3061);
-                                                                            let _e3065 = select(_e3063, 1f, (1f < _e3063));
-                                                                            let _e3066 = (_e3065 <= 0.5f);
-                                                                            let _e3070 = select(sqrt((0.5f * (1f - _e3065))), _e3065, _e3066);
-                                                                            let _e3071 = (_e3070 * _e3070);
-                                                                            let _e3082 = (_e3070 + ((_e3070 * _e3071) * (0.1666673f + (_e3071 * (0.07496333f + (_e3071 * (0.04533125f + (_e3071 * (0.024905317f + (_e3071 * 0.04087546f))))))))));
-                                                                            let _e3085 = select((1.5707964f - (2f * _e3082)), _e3082, _e3066);
-                                                                            let _e3088 = local_268;
-                                                                            let _e3095 = local_268;
-                                                                            let _e3096 = (_e3095 - (_e2868 * _e2868));
-                                                                            let _e3099 = select(0f, sqrt(_e3096), (0f < _e3096));
-                                                                            let _e3100 = local_263;
-                                                                            let _e3102 = -(_e3099);
-                                                                            let _e3103 = local_263;
-                                                                            let _e3105 = local_263;
-                                                                            let _e3107 = select(select(_e3105, _e3102, (_e3103 < _e3102)), _e3099, (_e3099 < _e3100));
-                                                                            let _e3108 = local_265;
-                                                                            let _e3110 = local_265;
-                                                                            let _e3112 = local_265;
-                                                                            let _e3114 = select(select(_e3112, _e3102, (_e3110 < _e3102)), _e3099, (_e3099 < _e3108));
-                                                                            let _e3119 = local_268;
-                                                                            let _e3120 = (_e3119 - (_e3114 * _e3114));
-                                                                            let _e3124 = local_251;
-                                                                            let _e3125 = (_e3114 / _e3124);
-                                                                            let _e3129 = select(select(_e3125, -1f, (_e3125 < -1f)), 1f, (1f < _e3125));
-                                                                            let _e3131 = (_e3129 < 0f);
-                                                                            let _e3133 = select(_e3129, -(_e3129), _e3131);
-                                                                            let _e3135 = select(_e3133, 1f, (1f < _e3133));
-                                                                            let _e3136 = (_e3135 <= 0.5f);
-                                                                            let _e3140 = select(sqrt((0.5f * (1f - _e3135))), _e3135, _e3136);
-                                                                            let _e3141 = (_e3140 * _e3140);
-                                                                            let _e3152 = (_e3140 + ((_e3140 * _e3141) * (0.1666673f + (_e3141 * (0.07496333f + (_e3141 * (0.04533125f + (_e3141 * (0.024905317f + (_e3141 * 0.04087546f))))))))));
-                                                                            let _e3155 = select((1.5707964f - (2f * _e3152)), _e3152, _e3136);
-                                                                            let _e3158 = local_268;
-                                                                            let _e3163 = local_268;
-                                                                            let _e3164 = (_e3163 - (_e3107 * _e3107));
-                                                                            let _e3168 = local_251;
-                                                                            let _e3169 = (_e3107 / _e3168);
-                                                                            let _e3173 = select(select(_e3169, -1f, (_e3169 < -1f)), 1f, (1f < _e3169));
-                                                                            let _e3175 = (_e3173 < 0f);
-                                                                            let _e3177 = select(_e3173, -(_e3173), _e3175);
-                                                                            let _e3179 = select(_e3177, 1f, (1f < _e3177));
-                                                                            let _e3180 = (_e3179 <= 0.5f);
-                                                                            let _e3184 = select(sqrt((0.5f * (1f - _e3179))), _e3179, _e3180);
-                                                                            let _e3185 = (_e3184 * _e3184);
-                                                                            let _e3196 = (_e3184 + ((_e3184 * _e3185) * (0.1666673f + (_e3185 * (0.07496333f + (_e3185 * (0.04533125f + (_e3185 * (0.024905317f + (_e3185 * 0.04087546f))))))))));
-                                                                            let _e3199 = select((1.5707964f - (2f * _e3196)), _e3196, _e3180);
-                                                                            let _e3202 = local_268;
-                                                                            let _e3209 = ((((_e2863 * (_e2891 - _e2884)) + _e3002) - ((0.5f * ((_e2891 * select(0f, sqrt(_e3006), (0f < _e3006))) + (_e3044 * select(_e3041, -(_e3041), _e3017)))) - (0.5f * ((_e2884 * select(0f, sqrt(_e3050), (0f < _e3050))) + (_e3088 * select(_e3085, -(_e3085), _e3061)))))) + (select(1f, -1f, (_e2856 || _e2860)) * (((_e2868 * (_e3114 - _e3107)) + _e3002) - ((0.5f * ((_e3114 * select(0f, sqrt(_e3120), (0f < _e3120))) + (_e3158 * select(_e3155, -(_e3155), _e3131)))) - (0.5f * ((_e3107 * select(0f, sqrt(_e3164), (0f < _e3164))) + (_e3202 * select(_e3199, -(_e3199), _e3175))))))));
-                                                                            let _e3210 = local_265;
-                                                                            let _e3211 = local_263;
-                                                                            let _e3213 = local_266;
-                                                                            let _e3214 = local_264;
-                                                                            let _e3216 = ((_e3210 - _e3211) * (_e3213 - _e3214));
-                                                                            phi_2984_ = select(select(0f, _e3209, (0f < _e3209)), _e3216, (_e3216 < _e3209));
+                                                                            let _e2921 = local_265;
+                                                                            let _e2923 = local_265;
+                                                                            let _e2925 = local_265;
+                                                                            let _e2927 = local_251;
+                                                                            let _e2928 = select(select(_e2925, _e2913, (_e2923 < _e2913)), _e2927, (_e2920 < _e2921));
+                                                                            let _e2932 = local_268;
+                                                                            let _e2933 = (_e2932 - (_e2928 * _e2928));
+                                                                            let _e2937 = local_251;
+                                                                            let _e2938 = (_e2928 / _e2937);
+                                                                            let _e2942 = select(select(_e2938, -1f, (_e2938 < -1f)), 1f, (1f < _e2938));
+                                                                            let _e2944 = (_e2942 < 0f);
+                                                                            let _e2946 = select(_e2942, -(_e2942), _e2944);
+                                                                            let _e2948 = select(_e2946, 1f, (1f < _e2946));
+                                                                            let _e2949 = (_e2948 <= 0.5f);
+                                                                            let _e2953 = select(sqrt((0.5f * (1f - _e2948))), _e2948, _e2949);
+                                                                            let _e2954 = (_e2953 * _e2953);
+                                                                            let _e2965 = (_e2953 + ((_e2953 * _e2954) * (0.1666673f + (_e2954 * (0.07496333f + (_e2954 * (0.04533125f + (_e2954 * (0.024905317f + (_e2954 * 0.04087546f))))))))));
+                                                                            let _e2968 = select((1.5707964f - (2f * _e2965)), _e2965, _e2949);
+                                                                            let _e2971 = local_268;
+                                                                            let _e2976 = local_268;
+                                                                            let _e2977 = (_e2976 - (_e2919 * _e2919));
+                                                                            let _e2981 = local_251;
+                                                                            let _e2982 = (_e2919 / _e2981);
+                                                                            let _e2986 = select(select(_e2982, -1f, (_e2982 < -1f)), 1f, (1f < _e2982));
+                                                                            let _e2988 = (_e2986 < 0f);
+                                                                            let _e2990 = select(_e2986, -(_e2986), _e2988);
+                                                                            let _e2992 = select(_e2990, 1f, (1f < _e2990));
+                                                                            let _e2993 = (_e2992 <= 0.5f);
+                                                                            let _e2997 = select(sqrt((0.5f * (1f - _e2992))), _e2992, _e2993);
+                                                                            let _e2998 = (_e2997 * _e2997);
+                                                                            let _e3009 = (_e2997 + ((_e2997 * _e2998) * (0.1666673f + (_e2998 * (0.07496333f + (_e2998 * (0.04533125f + (_e2998 * (0.024905317f + (_e2998 * 0.04087546f))))))))));
+                                                                            let _e3012 = select((1.5707964f - (2f * _e3009)), _e3009, _e2993);
+                                                                            let _e3015 = local_268;
+                                                                            let _e3019 = ((0.5f * ((_e2928 * select(0f, sqrt(_e2933), (0f < _e2933))) + (_e2971 * select(_e2968, -(_e2968), _e2944)))) - (0.5f * ((_e2919 * select(0f, sqrt(_e2977), (0f < _e2977))) + (_e3015 * select(_e3012, -(_e3012), _e2988)))));
+                                                                            let _e3022 = local_268;
+                                                                            let _e3023 = (_e3022 - (_e2908 * _e2908));
+                                                                            let _e3027 = local_251;
+                                                                            let _e3028 = (_e2908 / _e3027);
+                                                                            let _e3032 = select(select(_e3028, -1f, (_e3028 < -1f)), 1f, (1f < _e3028));
+                                                                            let _e3034 = (_e3032 < 0f);
+                                                                            let _e3036 = select(_e3032, -(_e3032), _e3034);
+                                                                            let _e3038 = select(_e3036, 1f, (1f < _e3036));
+                                                                            let _e3039 = (_e3038 <= 0.5f);
+                                                                            let _e3043 = select(sqrt((0.5f * (1f - _e3038))), _e3038, _e3039);
+                                                                            let _e3044 = (_e3043 * _e3043);
+                                                                            let _e3055 = (_e3043 + ((_e3043 * _e3044) * (0.1666673f + (_e3044 * (0.07496333f + (_e3044 * (0.04533125f + (_e3044 * (0.024905317f + (_e3044 * 0.04087546f))))))))));
+                                                                            let _e3058 = select((1.5707964f - (2f * _e3055)), _e3055, _e3039);
+                                                                            let _e3061 = local_268;
+                                                                            let _e3066 = local_268;
+                                                                            let _e3067 = (_e3066 - (_e2901 * _e2901));
+                                                                            let _e3071 = local_251;
+                                                                            let _e3072 = (_e2901 / _e3071);
+                                                                            let _e3076 = select(select(_e3072, -1f, (_e3072 < -1f)), 1f, (1f < _e3072));
+                                                                            let _e3078 = (_e3076 < 0f);
+                                                                            let _e3080 = select(_e3076, -(_e3076), _e3078);
+                                                                            let _e3082 = select(_e3080, 1f, (1f < _e3080));
+                                                                            let _e3083 = (_e3082 <= 0.5f);
+                                                                            let _e3087 = select(sqrt((0.5f * (1f - _e3082))), _e3082, _e3083);
+                                                                            let _e3088 = (_e3087 * _e3087);
+                                                                            let _e3099 = (_e3087 + ((_e3087 * _e3088) * (0.1666673f + (_e3088 * (0.07496333f + (_e3088 * (0.04533125f + (_e3088 * (0.024905317f + (_e3088 * 0.04087546f))))))))));
+                                                                            let _e3102 = select((1.5707964f - (2f * _e3099)), _e3099, _e3083);
+                                                                            let _e3105 = local_268;
+                                                                            let _e3112 = local_268;
+                                                                            let _e3113 = (_e3112 - (_e2885 * _e2885));
+                                                                            let _e3116 = select(0f, sqrt(_e3113), (0f < _e3113));
+                                                                            let _e3117 = local_263;
+                                                                            let _e3119 = -(_e3116);
+                                                                            let _e3120 = local_263;
+                                                                            let _e3122 = local_263;
+                                                                            let _e3124 = select(select(_e3122, _e3119, (_e3120 < _e3119)), _e3116, (_e3116 < _e3117));
+                                                                            let _e3125 = local_265;
+                                                                            let _e3127 = local_265;
+                                                                            let _e3129 = local_265;
+                                                                            let _e3131 = select(select(_e3129, _e3119, (_e3127 < _e3119)), _e3116, (_e3116 < _e3125));
+                                                                            let _e3136 = local_268;
+                                                                            let _e3137 = (_e3136 - (_e3131 * _e3131));
+                                                                            let _e3141 = local_251;
+                                                                            let _e3142 = (_e3131 / _e3141);
+                                                                            let _e3146 = select(select(_e3142, -1f, (_e3142 < -1f)), 1f, (1f < _e3142));
+                                                                            let _e3148 = (_e3146 < 0f);
+                                                                            let _e3150 = select(_e3146, -(_e3146), _e3148);
+                                                                            let _e3152 = select(_e3150, 1f, (1f < _e3150));
+                                                                            let _e3153 = (_e3152 <= 0.5f);
+                                                                            let _e3157 = select(sqrt((0.5f * (1f - _e3152))), _e3152, _e3153);
+                                                                            let _e3158 = (_e3157 * _e3157);
+                                                                            let _e3169 = (_e3157 + ((_e3157 * _e3158) * (0.1666673f + (_e3158 * (0.07496333f + (_e3158 * (0.04533125f + (_e3158 * (0.024905317f + (_e3158 * 0.04087546f))))))))));
+                                                                            let _e3172 = select((1.5707964f - (2f * _e3169)), _e3169, _e3153);
+                                                                            let _e3175 = local_268;
+                                                                            let _e3180 = local_268;
+                                                                            let _e3181 = (_e3180 - (_e3124 * _e3124));
+                                                                            let _e3185 = local_251;
+                                                                            let _e3186 = (_e3124 / _e3185);
+                                                                            let _e3190 = select(select(_e3186, -1f, (_e3186 < -1f)), 1f, (1f < _e3186));
+                                                                            let _e3192 = (_e3190 < 0f);
+                                                                            let _e3194 = select(_e3190, -(_e3190), _e3192);
+                                                                            let _e3196 = select(_e3194, 1f, (1f < _e3194));
+                                                                            let _e3197 = (_e3196 <= 0.5f);
+                                                                            let _e3201 = select(sqrt((0.5f * (1f - _e3196))), _e3196, _e3197);
+                                                                            let _e3202 = (_e3201 * _e3201);
+                                                                            let _e3213 = (_e3201 + ((_e3201 * _e3202) * (0.1666673f + (_e3202 * (0.07496333f + (_e3202 * (0.04533125f + (_e3202 * (0.024905317f + (_e3202 * 0.04087546f))))))))));
+                                                                            let _e3216 = select((1.5707964f - (2f * _e3213)), _e3213, _e3197);
+                                                                            let _e3219 = local_268;
+                                                                            let _e3226 = ((((_e2880 * (_e2908 - _e2901)) + _e3019) - ((0.5f * ((_e2908 * select(0f, sqrt(_e3023), (0f < _e3023))) + (_e3061 * select(_e3058, -(_e3058), _e3034)))) - (0.5f * ((_e2901 * select(0f, sqrt(_e3067), (0f < _e3067))) + (_e3105 * select(_e3102, -(_e3102), _e3078)))))) + (select(1f, -1f, (_e2873 || _e2877)) * (((_e2885 * (_e3131 - _e3124)) + _e3019) - ((0.5f * ((_e3131 * select(0f, sqrt(_e3137), (0f < _e3137))) + (_e3175 * select(_e3172, -(_e3172), _e3148)))) - (0.5f * ((_e3124 * select(0f, sqrt(_e3181), (0f < _e3181))) + (_e3219 * select(_e3216, -(_e3216), _e3192))))))));
+                                                                            let _e3227 = local_265;
+                                                                            let _e3228 = local_263;
+                                                                            let _e3230 = local_266;
+                                                                            let _e3231 = local_264;
+                                                                            let _e3233 = ((_e3227 - _e3228) * (_e3230 - _e3231));
+                                                                            phi_2984_ = select(select(0f, _e3226, (0f < _e3226)), _e3233, (_e3233 < _e3226));
                                                                         } else {
                                                                             phi_2984_ = 0f;
                                                                         }
-                                                                        let _e3222 = phi_2984_;
-                                                                        let _e3223 = local_271;
-                                                                        phi_2989_ = select(_e3222, 1f, _e3223);
+                                                                        let _e3239 = phi_2984_;
+                                                                        let _e3240 = local_271;
+                                                                        phi_2989_ = select(_e3239, 1f, _e3240);
                                                                     } else {
                                                                         phi_2989_ = 1f;
                                                                     }
-                                                                    let _e3226 = phi_2989_;
-                                                                    let _e3227 = local_253;
-                                                                    let _e3229 = local_269;
-                                                                    phi_3008_ = select((_e3226 / _e3227), 0f, _e3229);
+                                                                    let _e3243 = phi_2989_;
+                                                                    let _e3244 = local_253;
+                                                                    let _e3246 = local_269;
+                                                                    phi_3008_ = select((_e3243 / _e3244), 0f, _e3246);
                                                                 } else {
-                                                                    let _e2795 = local_263;
-                                                                    let _e2797 = local_265;
-                                                                    let _e2800 = local_264;
-                                                                    let _e2803 = local_266;
-                                                                    phi_3008_ = select(0f, 1f, ((((_e2795 <= 0f) && (0f < _e2797)) && (_e2800 <= 0f)) && (0f < _e2803)));
+                                                                    let _e2812 = local_263;
+                                                                    let _e2814 = local_265;
+                                                                    let _e2817 = local_264;
+                                                                    let _e2820 = local_266;
+                                                                    phi_3008_ = select(0f, 1f, ((((_e2812 <= 0f) && (0f < _e2814)) && (_e2817 <= 0f)) && (0f < _e2820)));
                                                                 }
-                                                                let _e3232 = phi_3008_;
-                                                                let _e3233 = local_258;
-                                                                let _e3235 = local_259;
-                                                                phi_3011_ = (_e3233 + _e3232);
-                                                                phi_3012_ = (_e3235 + 1u);
+                                                                let _e3249 = phi_3008_;
+                                                                let _e3250 = local_258;
+                                                                let _e3252 = local_259;
+                                                                phi_3011_ = (_e3250 + _e3249);
+                                                                phi_3012_ = (_e3252 + 1u);
                                                             }
-                                                            let _e3238 = phi_3011_;
-                                                            let _e3240 = phi_3012_;
-                                                            let _e3241 = local_257;
-                                                            phi_3014_ = (_e3241 + 1u);
-                                                            phi_3015_ = _e3238;
-                                                            phi_3016_ = _e3240;
+                                                            let _e3255 = phi_3011_;
+                                                            let _e3257 = phi_3012_;
+                                                            let _e3258 = local_257;
+                                                            phi_3014_ = (_e3258 + 1u);
+                                                            phi_3015_ = _e3255;
+                                                            phi_3016_ = _e3257;
                                                         } else {
                                                             phi_3014_ = u32();
                                                             phi_3015_ = f32();
                                                             phi_3016_ = u32();
                                                         }
-                                                        let _e3244 = phi_3014_;
-                                                        let _e3246 = phi_3015_;
-                                                        let _e3248 = phi_3016_;
-                                                        phi_2169_ = _e3244;
-                                                        phi_2172_ = _e3246;
-                                                        phi_2174_ = _e3248;
-                                                        phi_3017_ = _e2759;
+                                                        let _e3261 = phi_3014_;
+                                                        let _e3263 = phi_3015_;
+                                                        let _e3265 = phi_3016_;
+                                                        phi_2169_ = _e3261;
+                                                        phi_2172_ = _e3263;
+                                                        phi_2174_ = _e3265;
+                                                        phi_3017_ = _e2776;
                                                     } else {
                                                         phi_2169_ = u32();
                                                         phi_2172_ = f32();
                                                         phi_2174_ = u32();
                                                         phi_3017_ = false;
                                                     }
-                                                    let _e3250 = phi_2169_;
-                                                    let _e3252 = phi_2172_;
-                                                    let _e3254 = phi_2174_;
-                                                    let _e3256 = phi_3017_;
-                                                    local_272 = _e3256;
+                                                    let _e3267 = phi_2169_;
+                                                    let _e3269 = phi_2172_;
+                                                    let _e3271 = phi_2174_;
+                                                    let _e3273 = phi_3017_;
+                                                    local_272 = _e3273;
                                                     continue;
                                                     continuing {
-                                                        let _e3257 = local_272;
-                                                        phi_2168_ = _e3250;
-                                                        phi_2171_ = _e3252;
-                                                        phi_2173_ = _e3254;
-                                                        phi_4847_ = _e2225;
-                                                        break if !(_e3257);
+                                                        let _e3274 = local_272;
+                                                        phi_2168_ = _e3267;
+                                                        phi_2171_ = _e3269;
+                                                        phi_2173_ = _e3271;
+                                                        phi_4847_ = _e2234;
+                                                        break if !(_e3274);
                                                     }
                                                 }
-                                                let _e3260 = phi_4847_;
-                                                phi_4953_ = _e3260;
-                                                if _e3260 {
+                                                let _e3277 = phi_4847_;
+                                                phi_4953_ = _e3277;
+                                                if _e3277 {
                                                     break;
                                                 }
-                                                let _e3261 = local_259;
-                                                if (_e3261 == 0u) {
+                                                let _e3278 = local_259;
+                                                if (_e3278 == 0u) {
                                                     phi_3028_ = 0f;
                                                 } else {
-                                                    let _e3263 = local_259;
-                                                    let _e3265 = local_258;
-                                                    phi_3028_ = (_e3265 / f32(_e3263));
+                                                    let _e3280 = local_259;
+                                                    let _e3282 = local_258;
+                                                    phi_3028_ = (_e3282 / f32(_e3280));
                                                 }
-                                                let _e3268 = phi_3028_;
-                                                let _e3269 = local_252;
-                                                let _e3270 = local_254;
-                                                phi_4975_ = _e3260;
-                                                phi_3033_ = select(_e3268, _e3270, _e3269);
+                                                let _e3285 = phi_3028_;
+                                                let _e3286 = local_252;
+                                                let _e3287 = local_254;
+                                                phi_4975_ = _e3277;
+                                                phi_3033_ = select(_e3285, _e3287, _e3286);
                                             } else {
-                                                phi_4975_ = _e2225;
-                                                phi_3033_ = _e2742;
+                                                phi_4975_ = _e2234;
+                                                phi_3033_ = _e2759;
                                             }
-                                            let _e3273 = phi_4975_;
-                                            let _e3275 = phi_3033_;
-                                            phi_4974_ = _e3273;
-                                            phi_3500_ = _e3275;
+                                            let _e3290 = phi_4975_;
+                                            let _e3292 = phi_3033_;
+                                            phi_4974_ = _e3290;
+                                            phi_3500_ = _e3292;
                                         } else {
-                                            let _e2297 = local_25;
-                                            let _e2298 = (_e2297 == 0u);
-                                            local_273 = _e2298;
-                                            if _e2298 {
-                                                let _e2299 = local_32;
-                                                phi_3044_ = (_e2299 == 0u);
+                                            let _e2306 = local_25;
+                                            let _e2307 = (_e2306 == 0u);
+                                            local_273 = _e2307;
+                                            if _e2307 {
+                                                let _e2308 = local_32;
+                                                phi_3044_ = (_e2308 == 0u);
                                             } else {
                                                 phi_3044_ = false;
                                             }
-                                            let _e2302 = phi_3044_;
-                                            if _e2302 {
-                                                let _e2709 = local_242;
-                                                let _e2710 = local_250;
-                                                let _e2711 = (_e2709 - _e2710);
-                                                let _e2714 = local_245;
-                                                let _e2717 = local_245;
-                                                let _e2719 = local_242;
-                                                let _e2721 = local_250;
-                                                let _e2723 = ((_e2719 - sqrt(_e2717)) * (1f / _e2721));
-                                                phi_3499_ = select(select(0f, select(1f, _e2723, (_e2723 < 1f)), (0f < _e2723)), 1f, ((0f < _e2711) && (_e2714 <= (_e2711 * _e2711))));
+                                            let _e2311 = phi_3044_;
+                                            if _e2311 {
+                                                let _e2726 = local_242;
+                                                let _e2727 = local_250;
+                                                let _e2728 = (_e2726 - _e2727);
+                                                let _e2731 = local_245;
+                                                let _e2734 = local_245;
+                                                let _e2736 = local_242;
+                                                let _e2738 = local_250;
+                                                let _e2740 = ((_e2736 - sqrt(_e2734)) * (1f / _e2738));
+                                                phi_3499_ = select(select(0f, select(1f, _e2740, (_e2740 < 1f)), (0f < _e2740)), 1f, ((0f < _e2728) && (_e2731 <= (_e2728 * _e2728))));
                                             } else {
-                                                let _e2303 = local_230;
-                                                let _e2304 = (3840u + _e2303);
-                                                local_274 = _e2304;
-                                                if (_e2304 < 5888u) {
+                                                let _e2312 = local_230;
+                                                let _e2313 = (3840u + _e2312);
+                                                local_274 = _e2313;
+                                                if (_e2313 < 5888u) {
                                                 } else {
                                                     phi_4953_ = true;
                                                     break;
                                                 }
-                                                let _e2306 = local_274;
-                                                let _e2308 = global_11[_e2306];
-                                                local_275 = bitcast<f32>(_e2308);
-                                                let _e2310 = local_273;
-                                                if _e2310 {
-                                                    let _e2311 = local_32;
-                                                    phi_3090_ = (_e2311 == 0u);
+                                                let _e2315 = local_274;
+                                                let _e2317 = global_11[_e2315];
+                                                local_275 = bitcast<f32>(_e2317);
+                                                let _e2319 = local_273;
+                                                if _e2319 {
+                                                    let _e2320 = local_32;
+                                                    phi_3090_ = (_e2320 == 0u);
                                                 } else {
                                                     phi_3090_ = false;
                                                 }
-                                                let _e2314 = phi_3090_;
-                                                if _e2314 {
-                                                    let _e2687 = local_242;
-                                                    let _e2688 = local_250;
-                                                    let _e2689 = (_e2687 - _e2688);
-                                                    let _e2692 = local_245;
-                                                    let _e2695 = local_245;
-                                                    let _e2697 = local_242;
-                                                    let _e2699 = local_250;
-                                                    let _e2701 = ((_e2697 - sqrt(_e2695)) * (1f / _e2699));
-                                                    phi_3498_ = select(select(0f, select(1f, _e2701, (_e2701 < 1f)), (0f < _e2701)), 1f, ((0f < _e2689) && (_e2692 <= (_e2689 * _e2689))));
+                                                let _e2323 = phi_3090_;
+                                                if _e2323 {
+                                                    let _e2704 = local_242;
+                                                    let _e2705 = local_250;
+                                                    let _e2706 = (_e2704 - _e2705);
+                                                    let _e2709 = local_245;
+                                                    let _e2712 = local_245;
+                                                    let _e2714 = local_242;
+                                                    let _e2716 = local_250;
+                                                    let _e2718 = ((_e2714 - sqrt(_e2712)) * (1f / _e2716));
+                                                    phi_3498_ = select(select(0f, select(1f, _e2718, (_e2718 < 1f)), (0f < _e2718)), 1f, ((0f < _e2706) && (_e2709 <= (_e2706 * _e2706))));
                                                 } else {
-                                                    let _e2315 = local_275;
-                                                    let _e2316 = local_243;
-                                                    local_276 = (_e2315 * _e2316);
-                                                    let _e2318 = local_275;
-                                                    let _e2319 = local_244;
-                                                    local_277 = (_e2318 * _e2319);
-                                                    let _e2321 = local_32;
-                                                    if (_e2321 > 0u) {
-                                                        let _e2404 = local_250;
-                                                        let _e2406 = local_242;
-                                                        let _e2407 = (_e2406 - (0.5f * _e2404));
-                                                        local_278 = _e2407;
-                                                        if (_e2407 > 0f) {
-                                                            let _e2409 = local_276;
-                                                            let _e2410 = local_278;
-                                                            let _e2412 = local_277;
-                                                            let _e2413 = local_278;
-                                                            let _e2415 = local_32;
-                                                            let _e2416 = f32(_e2415);
-                                                            local_279 = _e2416;
-                                                            let _e2420 = (((((_e2409 / _e2410) + 1f) * 0.5f) * _e2416) - 0.5f);
-                                                            local_280 = _e2420;
-                                                            local_281 = (((((_e2412 / _e2413) + 1f) * 0.5f) * _e2416) - 0.5f);
-                                                            if (_e2420 > -1f) {
-                                                                let _e2426 = local_281;
-                                                                if (_e2426 > -1f) {
-                                                                    let _e2428 = local_280;
-                                                                    let _e2429 = local_279;
-                                                                    if (_e2428 < _e2429) {
-                                                                        let _e2431 = local_281;
-                                                                        let _e2432 = local_279;
-                                                                        let _e2433 = (_e2431 < _e2432);
-                                                                        local_282 = _e2433;
-                                                                        if _e2433 {
-                                                                            let _e2434 = local_280;
-                                                                            let _e2435 = floor(_e2434);
-                                                                            local_283 = _e2435;
-                                                                            let _e2436 = local_281;
-                                                                            let _e2437 = floor(_e2436);
-                                                                            local_284 = _e2437;
-                                                                            let _e2438 = local_280;
-                                                                            local_285 = (_e2438 - _e2435);
-                                                                            let _e2440 = local_281;
-                                                                            local_286 = (_e2440 - _e2437);
-                                                                            let _e2442 = (_e2435 < 0f);
-                                                                            local_287 = _e2442;
-                                                                            if _e2442 {
+                                                    let _e2324 = local_275;
+                                                    let _e2325 = local_243;
+                                                    local_276 = (_e2324 * _e2325);
+                                                    let _e2327 = local_275;
+                                                    let _e2328 = local_244;
+                                                    local_277 = (_e2327 * _e2328);
+                                                    let _e2330 = local_32;
+                                                    if (_e2330 > 0u) {
+                                                        let _e2413 = local_250;
+                                                        let _e2415 = local_242;
+                                                        let _e2416 = (_e2415 - (0.5f * _e2413));
+                                                        local_278 = _e2416;
+                                                        if (_e2416 > 0f) {
+                                                            let _e2418 = local_276;
+                                                            let _e2419 = local_278;
+                                                            let _e2421 = local_277;
+                                                            let _e2422 = local_278;
+                                                            let _e2424 = local_32;
+                                                            let _e2425 = f32(_e2424);
+                                                            local_279 = _e2425;
+                                                            let _e2429 = (((((_e2418 / _e2419) + 1f) * 0.5f) * _e2425) - 0.5f);
+                                                            local_280 = _e2429;
+                                                            local_281 = (((((_e2421 / _e2422) + 1f) * 0.5f) * _e2425) - 0.5f);
+                                                            if (_e2429 > -1f) {
+                                                                let _e2435 = local_281;
+                                                                if (_e2435 > -1f) {
+                                                                    let _e2437 = local_280;
+                                                                    let _e2438 = local_279;
+                                                                    if (_e2437 < _e2438) {
+                                                                        let _e2440 = local_281;
+                                                                        let _e2441 = local_279;
+                                                                        let _e2442 = (_e2440 < _e2441);
+                                                                        local_282 = _e2442;
+                                                                        if _e2442 {
+                                                                            let _e2443 = local_280;
+                                                                            let _e2444 = floor(_e2443);
+                                                                            local_283 = _e2444;
+                                                                            let _e2445 = local_281;
+                                                                            let _e2446 = floor(_e2445);
+                                                                            local_284 = _e2446;
+                                                                            let _e2447 = local_280;
+                                                                            local_285 = (_e2447 - _e2444);
+                                                                            let _e2449 = local_281;
+                                                                            local_286 = (_e2449 - _e2446);
+                                                                            let _e2451 = (_e2444 < 0f);
+                                                                            local_287 = _e2451;
+                                                                            if _e2451 {
                                                                                 phi_3211_ = f32();
                                                                                 phi_3212_ = true;
                                                                             } else {
-                                                                                let _e2443 = local_284;
-                                                                                if (_e2443 < 0f) {
+                                                                                let _e2452 = local_284;
+                                                                                if (_e2452 < 0f) {
                                                                                     phi_3209_ = f32();
                                                                                     phi_3210_ = true;
                                                                                 } else {
-                                                                                    let _e2445 = local_283;
-                                                                                    let _e2446 = local_279;
-                                                                                    if (_e2445 >= _e2446) {
+                                                                                    let _e2454 = local_283;
+                                                                                    let _e2455 = local_279;
+                                                                                    if (_e2454 >= _e2455) {
                                                                                         phi_3207_ = f32();
                                                                                         phi_3208_ = true;
                                                                                     } else {
-                                                                                        let _e2448 = local_284;
-                                                                                        let _e2449 = local_279;
-                                                                                        let _e2450 = (_e2448 >= _e2449);
-                                                                                        if _e2450 {
+                                                                                        let _e2457 = local_284;
+                                                                                        let _e2458 = local_279;
+                                                                                        let _e2459 = (_e2457 >= _e2458);
+                                                                                        if _e2459 {
                                                                                             phi_3206_ = f32();
                                                                                         } else {
-                                                                                            let _e2451 = local_284;
-                                                                                            let _e2453 = local_284;
-                                                                                            let _e2455 = local_284;
-                                                                                            let _e2459 = local_32;
-                                                                                            let _e2461 = local_283;
-                                                                                            let _e2463 = local_283;
-                                                                                            let _e2465 = local_283;
-                                                                                            let _e2469 = ((select(select(u32(_e2451), 0u, (_e2453 < 0f)), 4294967295u, (_e2455 > 4294967000f)) * _e2459) + select(select(u32(_e2461), 0u, (_e2463 < 0f)), 4294967295u, (_e2465 > 4294967000f)));
-                                                                                            local_288 = _e2469;
-                                                                                            let _e2470 = local_8;
-                                                                                            if (_e2469 < _e2470) {
+                                                                                            let _e2460 = local_284;
+                                                                                            let _e2462 = local_284;
+                                                                                            let _e2465 = local_284;
+                                                                                            let _e2469 = local_32;
+                                                                                            let _e2471 = local_283;
+                                                                                            let _e2473 = local_283;
+                                                                                            let _e2476 = local_283;
+                                                                                            let _e2480 = ((select(select(u32(_e2460), 0u, !((_e2462 >= 0f))), 4294967295u, (_e2465 > 4294967000f)) * _e2469) + select(select(u32(_e2471), 0u, !((_e2473 >= 0f))), 4294967295u, (_e2476 > 4294967000f)));
+                                                                                            local_288 = _e2480;
+                                                                                            let _e2481 = local_8;
+                                                                                            if (_e2480 < _e2481) {
                                                                                             } else {
                                                                                                 phi_4953_ = true;
                                                                                                 break;
                                                                                             }
-                                                                                            let _e2472 = local_288;
-                                                                                            let _e2475 = global_10.member[_e2472];
-                                                                                            phi_3206_ = bitcast<f32>(_e2475);
+                                                                                            let _e2483 = local_288;
+                                                                                            let _e2486 = global_10.member[_e2483];
+                                                                                            phi_3206_ = bitcast<f32>(_e2486);
                                                                                         }
-                                                                                        let _e2478 = phi_3206_;
-                                                                                        phi_3207_ = _e2478;
-                                                                                        phi_3208_ = _e2450;
+                                                                                        let _e2489 = phi_3206_;
+                                                                                        phi_3207_ = _e2489;
+                                                                                        phi_3208_ = _e2459;
                                                                                     }
-                                                                                    let _e2480 = phi_3207_;
-                                                                                    let _e2482 = phi_3208_;
-                                                                                    phi_3209_ = _e2480;
-                                                                                    phi_3210_ = _e2482;
+                                                                                    let _e2491 = phi_3207_;
+                                                                                    let _e2493 = phi_3208_;
+                                                                                    phi_3209_ = _e2491;
+                                                                                    phi_3210_ = _e2493;
                                                                                 }
-                                                                                let _e2484 = phi_3209_;
-                                                                                let _e2486 = phi_3210_;
-                                                                                phi_3211_ = _e2484;
-                                                                                phi_3212_ = _e2486;
+                                                                                let _e2495 = phi_3209_;
+                                                                                let _e2497 = phi_3210_;
+                                                                                phi_3211_ = _e2495;
+                                                                                phi_3212_ = _e2497;
                                                                             }
-                                                                            let _e2488 = phi_3211_;
-                                                                            let _e2490 = phi_3212_;
-                                                                            let _e2492 = local_285;
-                                                                            let _e2493 = (1f - _e2492);
-                                                                            local_289 = _e2493;
-                                                                            local_290 = (select(_e2488, 0f, _e2490) * _e2493);
-                                                                            let _e2495 = local_283;
-                                                                            let _e2496 = (_e2495 + 1f);
-                                                                            local_291 = _e2496;
-                                                                            let _e2497 = (_e2496 < 0f);
-                                                                            local_292 = _e2497;
-                                                                            if _e2497 {
+                                                                            let _e2499 = phi_3211_;
+                                                                            let _e2501 = phi_3212_;
+                                                                            let _e2503 = local_285;
+                                                                            let _e2504 = (1f - _e2503);
+                                                                            local_289 = _e2504;
+                                                                            local_290 = (select(_e2499, 0f, _e2501) * _e2504);
+                                                                            let _e2506 = local_283;
+                                                                            let _e2507 = (_e2506 + 1f);
+                                                                            local_291 = _e2507;
+                                                                            let _e2508 = (_e2507 < 0f);
+                                                                            local_292 = _e2508;
+                                                                            if _e2508 {
                                                                                 phi_3267_ = f32();
                                                                                 phi_3268_ = true;
                                                                             } else {
-                                                                                let _e2498 = local_284;
-                                                                                if (_e2498 < 0f) {
+                                                                                let _e2509 = local_284;
+                                                                                if (_e2509 < 0f) {
                                                                                     phi_3265_ = f32();
                                                                                     phi_3266_ = true;
                                                                                 } else {
-                                                                                    let _e2500 = local_291;
-                                                                                    let _e2501 = local_279;
-                                                                                    if (_e2500 >= _e2501) {
+                                                                                    let _e2511 = local_291;
+                                                                                    let _e2512 = local_279;
+                                                                                    if (_e2511 >= _e2512) {
                                                                                         phi_3263_ = f32();
                                                                                         phi_3264_ = true;
                                                                                     } else {
-                                                                                        let _e2503 = local_284;
-                                                                                        let _e2504 = local_279;
-                                                                                        let _e2505 = (_e2503 >= _e2504);
-                                                                                        if _e2505 {
+                                                                                        let _e2514 = local_284;
+                                                                                        let _e2515 = local_279;
+                                                                                        let _e2516 = (_e2514 >= _e2515);
+                                                                                        if _e2516 {
                                                                                             phi_3262_ = f32();
                                                                                         } else {
-                                                                                            let _e2506 = local_284;
-                                                                                            let _e2508 = local_284;
-                                                                                            let _e2510 = local_284;
-                                                                                            let _e2514 = local_32;
-                                                                                            let _e2516 = local_291;
-                                                                                            let _e2518 = local_291;
-                                                                                            let _e2520 = local_291;
-                                                                                            let _e2524 = ((select(select(u32(_e2506), 0u, (_e2508 < 0f)), 4294967295u, (_e2510 > 4294967000f)) * _e2514) + select(select(u32(_e2516), 0u, (_e2518 < 0f)), 4294967295u, (_e2520 > 4294967000f)));
-                                                                                            local_293 = _e2524;
-                                                                                            let _e2525 = local_8;
-                                                                                            if (_e2524 < _e2525) {
+                                                                                            let _e2517 = local_284;
+                                                                                            let _e2519 = local_284;
+                                                                                            let _e2522 = local_284;
+                                                                                            let _e2526 = local_32;
+                                                                                            let _e2528 = local_291;
+                                                                                            let _e2530 = local_291;
+                                                                                            let _e2533 = local_291;
+                                                                                            let _e2537 = ((select(select(u32(_e2517), 0u, !((_e2519 >= 0f))), 4294967295u, (_e2522 > 4294967000f)) * _e2526) + select(select(u32(_e2528), 0u, !((_e2530 >= 0f))), 4294967295u, (_e2533 > 4294967000f)));
+                                                                                            local_293 = _e2537;
+                                                                                            let _e2538 = local_8;
+                                                                                            if (_e2537 < _e2538) {
                                                                                             } else {
                                                                                                 phi_4953_ = true;
                                                                                                 break;
                                                                                             }
-                                                                                            let _e2527 = local_293;
-                                                                                            let _e2530 = global_10.member[_e2527];
-                                                                                            phi_3262_ = bitcast<f32>(_e2530);
+                                                                                            let _e2540 = local_293;
+                                                                                            let _e2543 = global_10.member[_e2540];
+                                                                                            phi_3262_ = bitcast<f32>(_e2543);
                                                                                         }
-                                                                                        let _e2533 = phi_3262_;
-                                                                                        phi_3263_ = _e2533;
-                                                                                        phi_3264_ = _e2505;
+                                                                                        let _e2546 = phi_3262_;
+                                                                                        phi_3263_ = _e2546;
+                                                                                        phi_3264_ = _e2516;
                                                                                     }
-                                                                                    let _e2535 = phi_3263_;
-                                                                                    let _e2537 = phi_3264_;
-                                                                                    phi_3265_ = _e2535;
-                                                                                    phi_3266_ = _e2537;
+                                                                                    let _e2548 = phi_3263_;
+                                                                                    let _e2550 = phi_3264_;
+                                                                                    phi_3265_ = _e2548;
+                                                                                    phi_3266_ = _e2550;
                                                                                 }
-                                                                                let _e2539 = phi_3265_;
-                                                                                let _e2541 = phi_3266_;
-                                                                                phi_3267_ = _e2539;
-                                                                                phi_3268_ = _e2541;
+                                                                                let _e2552 = phi_3265_;
+                                                                                let _e2554 = phi_3266_;
+                                                                                phi_3267_ = _e2552;
+                                                                                phi_3268_ = _e2554;
                                                                             }
-                                                                            let _e2543 = phi_3267_;
-                                                                            let _e2545 = phi_3268_;
-                                                                            let _e2547 = local_285;
-                                                                            let _e2549 = local_290;
-                                                                            local_294 = (_e2549 + (select(_e2543, 0f, _e2545) * _e2547));
-                                                                            let _e2551 = local_284;
-                                                                            local_295 = (_e2551 + 1f);
-                                                                            let _e2553 = local_287;
-                                                                            if _e2553 {
+                                                                            let _e2556 = phi_3267_;
+                                                                            let _e2558 = phi_3268_;
+                                                                            let _e2560 = local_285;
+                                                                            let _e2562 = local_290;
+                                                                            local_294 = (_e2562 + (select(_e2556, 0f, _e2558) * _e2560));
+                                                                            let _e2564 = local_284;
+                                                                            local_295 = (_e2564 + 1f);
+                                                                            let _e2566 = local_287;
+                                                                            if _e2566 {
                                                                                 phi_3323_ = f32();
                                                                                 phi_3324_ = true;
                                                                             } else {
-                                                                                let _e2554 = local_295;
-                                                                                if (_e2554 < 0f) {
+                                                                                let _e2567 = local_295;
+                                                                                if (_e2567 < 0f) {
                                                                                     phi_3321_ = f32();
                                                                                     phi_3322_ = true;
                                                                                 } else {
-                                                                                    let _e2556 = local_283;
-                                                                                    let _e2557 = local_279;
-                                                                                    if (_e2556 >= _e2557) {
+                                                                                    let _e2569 = local_283;
+                                                                                    let _e2570 = local_279;
+                                                                                    if (_e2569 >= _e2570) {
                                                                                         phi_3319_ = f32();
                                                                                         phi_3320_ = true;
                                                                                     } else {
-                                                                                        let _e2559 = local_295;
-                                                                                        let _e2560 = local_279;
-                                                                                        let _e2561 = (_e2559 >= _e2560);
-                                                                                        if _e2561 {
+                                                                                        let _e2572 = local_295;
+                                                                                        let _e2573 = local_279;
+                                                                                        let _e2574 = (_e2572 >= _e2573);
+                                                                                        if _e2574 {
                                                                                             phi_3318_ = f32();
                                                                                         } else {
-                                                                                            let _e2562 = local_295;
-                                                                                            let _e2564 = local_295;
-                                                                                            let _e2566 = local_295;
-                                                                                            let _e2570 = local_32;
-                                                                                            let _e2572 = local_283;
-                                                                                            let _e2574 = local_283;
-                                                                                            let _e2576 = local_283;
-                                                                                            let _e2580 = ((select(select(u32(_e2562), 0u, (_e2564 < 0f)), 4294967295u, (_e2566 > 4294967000f)) * _e2570) + select(select(u32(_e2572), 0u, (_e2574 < 0f)), 4294967295u, (_e2576 > 4294967000f)));
-                                                                                            local_296 = _e2580;
-                                                                                            let _e2581 = local_8;
-                                                                                            if (_e2580 < _e2581) {
+                                                                                            let _e2575 = local_295;
+                                                                                            let _e2577 = local_295;
+                                                                                            let _e2580 = local_295;
+                                                                                            let _e2584 = local_32;
+                                                                                            let _e2586 = local_283;
+                                                                                            let _e2588 = local_283;
+                                                                                            let _e2591 = local_283;
+                                                                                            let _e2595 = ((select(select(u32(_e2575), 0u, !((_e2577 >= 0f))), 4294967295u, (_e2580 > 4294967000f)) * _e2584) + select(select(u32(_e2586), 0u, !((_e2588 >= 0f))), 4294967295u, (_e2591 > 4294967000f)));
+                                                                                            local_296 = _e2595;
+                                                                                            let _e2596 = local_8;
+                                                                                            if (_e2595 < _e2596) {
                                                                                             } else {
                                                                                                 phi_4953_ = true;
                                                                                                 break;
                                                                                             }
-                                                                                            let _e2583 = local_296;
-                                                                                            let _e2586 = global_10.member[_e2583];
-                                                                                            phi_3318_ = bitcast<f32>(_e2586);
+                                                                                            let _e2598 = local_296;
+                                                                                            let _e2601 = global_10.member[_e2598];
+                                                                                            phi_3318_ = bitcast<f32>(_e2601);
                                                                                         }
-                                                                                        let _e2589 = phi_3318_;
-                                                                                        phi_3319_ = _e2589;
-                                                                                        phi_3320_ = _e2561;
+                                                                                        let _e2604 = phi_3318_;
+                                                                                        phi_3319_ = _e2604;
+                                                                                        phi_3320_ = _e2574;
                                                                                     }
-                                                                                    let _e2591 = phi_3319_;
-                                                                                    let _e2593 = phi_3320_;
-                                                                                    phi_3321_ = _e2591;
-                                                                                    phi_3322_ = _e2593;
+                                                                                    let _e2606 = phi_3319_;
+                                                                                    let _e2608 = phi_3320_;
+                                                                                    phi_3321_ = _e2606;
+                                                                                    phi_3322_ = _e2608;
                                                                                 }
-                                                                                let _e2595 = phi_3321_;
-                                                                                let _e2597 = phi_3322_;
-                                                                                phi_3323_ = _e2595;
-                                                                                phi_3324_ = _e2597;
+                                                                                let _e2610 = phi_3321_;
+                                                                                let _e2612 = phi_3322_;
+                                                                                phi_3323_ = _e2610;
+                                                                                phi_3324_ = _e2612;
                                                                             }
-                                                                            let _e2599 = phi_3323_;
-                                                                            let _e2601 = phi_3324_;
-                                                                            let _e2603 = local_289;
-                                                                            local_297 = (select(_e2599, 0f, _e2601) * _e2603);
-                                                                            let _e2605 = local_292;
-                                                                            if _e2605 {
+                                                                            let _e2614 = phi_3323_;
+                                                                            let _e2616 = phi_3324_;
+                                                                            let _e2618 = local_289;
+                                                                            local_297 = (select(_e2614, 0f, _e2616) * _e2618);
+                                                                            let _e2620 = local_292;
+                                                                            if _e2620 {
                                                                                 phi_3380_ = f32();
                                                                                 phi_3381_ = true;
                                                                             } else {
-                                                                                let _e2606 = local_295;
-                                                                                if (_e2606 < 0f) {
+                                                                                let _e2621 = local_295;
+                                                                                if (_e2621 < 0f) {
                                                                                     phi_3378_ = f32();
                                                                                     phi_3379_ = true;
                                                                                 } else {
-                                                                                    let _e2608 = local_291;
-                                                                                    let _e2609 = local_279;
-                                                                                    if (_e2608 >= _e2609) {
+                                                                                    let _e2623 = local_291;
+                                                                                    let _e2624 = local_279;
+                                                                                    if (_e2623 >= _e2624) {
                                                                                         phi_3376_ = f32();
                                                                                         phi_3377_ = true;
                                                                                     } else {
-                                                                                        let _e2611 = local_295;
-                                                                                        let _e2612 = local_279;
-                                                                                        let _e2613 = (_e2611 >= _e2612);
-                                                                                        if _e2613 {
+                                                                                        let _e2626 = local_295;
+                                                                                        let _e2627 = local_279;
+                                                                                        let _e2628 = (_e2626 >= _e2627);
+                                                                                        if _e2628 {
                                                                                             phi_3375_ = f32();
                                                                                         } else {
-                                                                                            let _e2614 = local_295;
-                                                                                            let _e2616 = local_295;
-                                                                                            let _e2618 = local_295;
-                                                                                            let _e2622 = local_32;
-                                                                                            let _e2624 = local_291;
-                                                                                            let _e2626 = local_291;
-                                                                                            let _e2628 = local_291;
-                                                                                            let _e2632 = ((select(select(u32(_e2614), 0u, (_e2616 < 0f)), 4294967295u, (_e2618 > 4294967000f)) * _e2622) + select(select(u32(_e2624), 0u, (_e2626 < 0f)), 4294967295u, (_e2628 > 4294967000f)));
-                                                                                            local_298 = _e2632;
-                                                                                            let _e2633 = local_8;
-                                                                                            if (_e2632 < _e2633) {
+                                                                                            let _e2629 = local_295;
+                                                                                            let _e2631 = local_295;
+                                                                                            let _e2634 = local_295;
+                                                                                            let _e2638 = local_32;
+                                                                                            let _e2640 = local_291;
+                                                                                            let _e2642 = local_291;
+                                                                                            let _e2645 = local_291;
+                                                                                            let _e2649 = ((select(select(u32(_e2629), 0u, !((_e2631 >= 0f))), 4294967295u, (_e2634 > 4294967000f)) * _e2638) + select(select(u32(_e2640), 0u, !((_e2642 >= 0f))), 4294967295u, (_e2645 > 4294967000f)));
+                                                                                            local_298 = _e2649;
+                                                                                            let _e2650 = local_8;
+                                                                                            if (_e2649 < _e2650) {
                                                                                             } else {
                                                                                                 phi_4953_ = true;
                                                                                                 break;
                                                                                             }
-                                                                                            let _e2635 = local_298;
-                                                                                            let _e2638 = global_10.member[_e2635];
-                                                                                            phi_3375_ = bitcast<f32>(_e2638);
+                                                                                            let _e2652 = local_298;
+                                                                                            let _e2655 = global_10.member[_e2652];
+                                                                                            phi_3375_ = bitcast<f32>(_e2655);
                                                                                         }
-                                                                                        let _e2641 = phi_3375_;
-                                                                                        phi_3376_ = _e2641;
-                                                                                        phi_3377_ = _e2613;
+                                                                                        let _e2658 = phi_3375_;
+                                                                                        phi_3376_ = _e2658;
+                                                                                        phi_3377_ = _e2628;
                                                                                     }
-                                                                                    let _e2643 = phi_3376_;
-                                                                                    let _e2645 = phi_3377_;
-                                                                                    phi_3378_ = _e2643;
-                                                                                    phi_3379_ = _e2645;
+                                                                                    let _e2660 = phi_3376_;
+                                                                                    let _e2662 = phi_3377_;
+                                                                                    phi_3378_ = _e2660;
+                                                                                    phi_3379_ = _e2662;
                                                                                 }
-                                                                                let _e2647 = phi_3378_;
-                                                                                let _e2649 = phi_3379_;
-                                                                                phi_3380_ = _e2647;
-                                                                                phi_3381_ = _e2649;
+                                                                                let _e2664 = phi_3378_;
+                                                                                let _e2666 = phi_3379_;
+                                                                                phi_3380_ = _e2664;
+                                                                                phi_3381_ = _e2666;
                                                                             }
-                                                                            let _e2651 = phi_3380_;
-                                                                            let _e2653 = phi_3381_;
-                                                                            let _e2655 = local_285;
-                                                                            let _e2657 = local_297;
-                                                                            let _e2659 = local_286;
-                                                                            let _e2661 = local_294;
-                                                                            let _e2663 = local_286;
-                                                                            phi_3392_ = ((_e2661 * (1f - _e2659)) + ((_e2657 + (select(_e2651, 0f, _e2653) * _e2655)) * _e2663));
+                                                                            let _e2668 = phi_3380_;
+                                                                            let _e2670 = phi_3381_;
+                                                                            let _e2672 = local_285;
+                                                                            let _e2674 = local_297;
+                                                                            let _e2676 = local_286;
+                                                                            let _e2678 = local_294;
+                                                                            let _e2680 = local_286;
+                                                                            phi_3392_ = ((_e2678 * (1f - _e2676)) + ((_e2674 + (select(_e2668, 0f, _e2670) * _e2672)) * _e2680));
                                                                         } else {
                                                                             phi_3392_ = f32();
                                                                         }
-                                                                        let _e2667 = phi_3392_;
-                                                                        let _e2668 = local_282;
-                                                                        phi_3394_ = _e2667;
-                                                                        phi_3395_ = select(true, false, _e2668);
+                                                                        let _e2684 = phi_3392_;
+                                                                        let _e2685 = local_282;
+                                                                        phi_3394_ = _e2684;
+                                                                        phi_3395_ = select(true, false, _e2685);
                                                                     } else {
                                                                         phi_3394_ = f32();
                                                                         phi_3395_ = true;
                                                                     }
-                                                                    let _e2671 = phi_3394_;
-                                                                    let _e2673 = phi_3395_;
-                                                                    phi_3396_ = _e2671;
-                                                                    phi_3397_ = _e2673;
+                                                                    let _e2688 = phi_3394_;
+                                                                    let _e2690 = phi_3395_;
+                                                                    phi_3396_ = _e2688;
+                                                                    phi_3397_ = _e2690;
                                                                 } else {
                                                                     phi_3396_ = f32();
                                                                     phi_3397_ = true;
                                                                 }
-                                                                let _e2675 = phi_3396_;
-                                                                let _e2677 = phi_3397_;
-                                                                phi_3398_ = _e2675;
-                                                                phi_3399_ = _e2677;
+                                                                let _e2692 = phi_3396_;
+                                                                let _e2694 = phi_3397_;
+                                                                phi_3398_ = _e2692;
+                                                                phi_3399_ = _e2694;
                                                             } else {
                                                                 phi_3398_ = f32();
                                                                 phi_3399_ = true;
                                                             }
-                                                            let _e2679 = phi_3398_;
-                                                            let _e2681 = phi_3399_;
-                                                            phi_3404_ = select(_e2679, 0f, _e2681);
+                                                            let _e2696 = phi_3398_;
+                                                            let _e2698 = phi_3399_;
+                                                            phi_3404_ = select(_e2696, 0f, _e2698);
                                                         } else {
                                                             phi_3404_ = 0f;
                                                         }
-                                                        let _e2684 = phi_3404_;
-                                                        phi_3497_ = _e2684;
+                                                        let _e2701 = phi_3404_;
+                                                        phi_3497_ = _e2701;
                                                     } else {
-                                                        let _e2323 = local_276;
-                                                        let _e2324 = local_276;
-                                                        let _e2326 = local_277;
-                                                        let _e2327 = local_277;
-                                                        let _e2330 = sqrt(((_e2323 * _e2324) + (_e2326 * _e2327)));
-                                                        local_299 = _e2330;
-                                                        let _e2331 = local_273;
-                                                        if _e2331 {
-                                                            phi_3484_ = _e2330;
+                                                        let _e2332 = local_276;
+                                                        let _e2333 = local_276;
+                                                        let _e2335 = local_277;
+                                                        let _e2336 = local_277;
+                                                        let _e2339 = sqrt(((_e2332 * _e2333) + (_e2335 * _e2336)));
+                                                        local_299 = _e2339;
+                                                        let _e2340 = local_273;
+                                                        if _e2340 {
+                                                            phi_3484_ = _e2339;
                                                         } else {
-                                                            let _e2332 = local_27;
-                                                            let _e2334 = local_276;
-                                                            let _e2336 = local_27;
-                                                            let _e2338 = local_277;
+                                                            let _e2341 = local_27;
+                                                            let _e2343 = local_276;
+                                                            let _e2345 = local_27;
+                                                            let _e2347 = local_277;
                                                             phi_3426_ = 1u;
-                                                            phi_3429_ = ((_e2334 * _e2332[0]) + (_e2338 * _e2336[1]));
+                                                            phi_3429_ = ((_e2343 * _e2341[0]) + (_e2347 * _e2345[1]));
                                                             phi_3431_ = _e614.member_16.member_2;
                                                             loop {
-                                                                let _e2342 = phi_3426_;
-                                                                let _e2344 = phi_3429_;
-                                                                let _e2346 = phi_3431_;
-                                                                local_300 = _e2342;
-                                                                local_301 = _e2344;
-                                                                local_302 = _e2346;
-                                                                let _e2347 = local_300;
-                                                                let _e2348 = local_25;
-                                                                let _e2349 = (_e2347 < _e2348);
-                                                                local_303 = _e2349;
-                                                                if _e2349 {
-                                                                    let _e2350 = local_302;
-                                                                    let _e2352 = local_28;
-                                                                    let _e2354 = local_302;
-                                                                    let _e2356 = local_29;
-                                                                    let _e2358 = ((_e2350[0] * _e2352) - (_e2354[1] * _e2356));
-                                                                    let _e2359 = local_29;
+                                                                let _e2351 = phi_3426_;
+                                                                let _e2353 = phi_3429_;
+                                                                let _e2355 = phi_3431_;
+                                                                local_300 = _e2351;
+                                                                local_301 = _e2353;
+                                                                local_302 = _e2355;
+                                                                let _e2356 = local_300;
+                                                                let _e2357 = local_25;
+                                                                let _e2358 = (_e2356 < _e2357);
+                                                                local_303 = _e2358;
+                                                                if _e2358 {
+                                                                    let _e2359 = local_302;
                                                                     let _e2361 = local_28;
-                                                                    let _e2363 = ((_e2350[0] * _e2359) + (_e2354[1] * _e2361));
-                                                                    let _e2365 = local_276;
-                                                                    let _e2367 = local_277;
-                                                                    let _e2369 = ((_e2365 * _e2358) + (_e2367 * _e2363));
-                                                                    let _e2370 = local_301;
-                                                                    let _e2372 = local_301;
-                                                                    let _e2374 = local_300;
-                                                                    phi_3427_ = (_e2374 + 1u);
-                                                                    phi_3430_ = select(_e2372, _e2369, (_e2369 > _e2370));
-                                                                    phi_3432_ = array<f32, 2>(_e2358, _e2363);
+                                                                    let _e2363 = local_302;
+                                                                    let _e2365 = local_29;
+                                                                    let _e2367 = ((_e2359[0] * _e2361) - (_e2363[1] * _e2365));
+                                                                    let _e2368 = local_29;
+                                                                    let _e2370 = local_28;
+                                                                    let _e2372 = ((_e2359[0] * _e2368) + (_e2363[1] * _e2370));
+                                                                    let _e2374 = local_276;
+                                                                    let _e2376 = local_277;
+                                                                    let _e2378 = ((_e2374 * _e2367) + (_e2376 * _e2372));
+                                                                    let _e2379 = local_301;
+                                                                    let _e2381 = local_301;
+                                                                    let _e2383 = local_300;
+                                                                    phi_3427_ = (_e2383 + 1u);
+                                                                    phi_3430_ = select(_e2381, _e2378, (_e2378 > _e2379));
+                                                                    phi_3432_ = array<f32, 2>(_e2367, _e2372);
                                                                 } else {
                                                                     phi_3427_ = u32();
                                                                     phi_3430_ = f32();
                                                                     phi_3432_ = array<f32, 2>();
                                                                 }
-                                                                let _e2377 = phi_3427_;
-                                                                let _e2379 = phi_3430_;
-                                                                let _e2381 = phi_3432_;
+                                                                let _e2386 = phi_3427_;
+                                                                let _e2388 = phi_3430_;
+                                                                let _e2390 = phi_3432_;
                                                                 continue;
                                                                 continuing {
-                                                                    let _e2382 = local_303;
-                                                                    phi_3426_ = _e2377;
-                                                                    phi_3429_ = _e2379;
-                                                                    phi_3431_ = _e2381;
-                                                                    break if !(_e2382);
+                                                                    let _e2391 = local_303;
+                                                                    phi_3426_ = _e2386;
+                                                                    phi_3429_ = _e2388;
+                                                                    phi_3431_ = _e2390;
+                                                                    break if !(_e2391);
                                                                 }
                                                             }
-                                                            let _e2384 = local_26;
-                                                            let _e2386 = local_301;
-                                                            let _e2388 = local_30;
-                                                            let _e2390 = local_26;
-                                                            let _e2391 = local_299;
-                                                            phi_3484_ = ((((1f - _e2384) * _e2386) * _e2388) + (_e2390 * _e2391));
+                                                            let _e2393 = local_26;
+                                                            let _e2395 = local_301;
+                                                            let _e2397 = local_30;
+                                                            let _e2399 = local_26;
+                                                            let _e2400 = local_299;
+                                                            phi_3484_ = ((((1f - _e2393) * _e2395) * _e2397) + (_e2399 * _e2400));
                                                         }
-                                                        let _e2395 = phi_3484_;
-                                                        let _e2396 = local_242;
-                                                        let _e2398 = local_250;
-                                                        let _e2399 = ((_e2396 - _e2395) / _e2398);
-                                                        phi_3497_ = select(0f, select(1f, _e2399, (_e2399 < 1f)), (0f < _e2399));
+                                                        let _e2404 = phi_3484_;
+                                                        let _e2405 = local_242;
+                                                        let _e2407 = local_250;
+                                                        let _e2408 = ((_e2405 - _e2404) / _e2407);
+                                                        phi_3497_ = select(0f, select(1f, _e2408, (_e2408 < 1f)), (0f < _e2408));
                                                     }
-                                                    let _e2686 = phi_3497_;
-                                                    phi_3498_ = _e2686;
+                                                    let _e2703 = phi_3497_;
+                                                    phi_3498_ = _e2703;
                                                 }
-                                                let _e2708 = phi_3498_;
-                                                phi_3499_ = _e2708;
+                                                let _e2725 = phi_3498_;
+                                                phi_3499_ = _e2725;
                                             }
-                                            let _e2730 = phi_3499_;
-                                            phi_4974_ = _e2225;
-                                            phi_3500_ = _e2730;
+                                            let _e2747 = phi_3499_;
+                                            phi_4974_ = _e2234;
+                                            phi_3500_ = _e2747;
                                         }
-                                        let _e3277 = phi_4974_;
-                                        let _e3279 = phi_3500_;
-                                        local_304 = _e3279;
-                                        let _e3280 = local_230;
-                                        let _e3281 = (2304u + _e3280);
-                                        local_305 = _e3281;
-                                        if (_e3281 < 5888u) {
-                                        } else {
-                                            phi_4953_ = true;
-                                            break;
-                                        }
-                                        let _e3283 = local_305;
-                                        let _e3285 = global_11[_e3283];
-                                        let _e3287 = local_304;
-                                        local_306 = (bitcast<f32>(_e3285) * _e3287);
-                                        let _e3289 = local_230;
-                                        let _e3290 = (4096u + _e3289);
-                                        local_307 = _e3290;
-                                        if (_e3290 < 5888u) {
-                                        } else {
-                                            phi_4953_ = true;
-                                            break;
-                                        }
-                                        let _e3292 = local_307;
-                                        let _e3294 = global_11[_e3292];
-                                        local_308 = bitcast<f32>(_e3294);
-                                        let _e3296 = local_80;
+                                        let _e3294 = phi_4974_;
+                                        let _e3296 = phi_3500_;
+                                        local_304 = _e3296;
                                         let _e3297 = local_230;
-                                        let _e3299 = local_60;
-                                        if ((_e3296 + _e3297) < _e3299) {
-                                            let _e3322 = local_230;
-                                            let _e3323 = (3328u + _e3322);
-                                            local_309 = _e3323;
-                                            if (_e3323 < 5888u) {
+                                        let _e3298 = (2304u + _e3297);
+                                        local_305 = _e3298;
+                                        if (_e3298 < 5888u) {
+                                        } else {
+                                            phi_4953_ = true;
+                                            break;
+                                        }
+                                        let _e3300 = local_305;
+                                        let _e3302 = global_11[_e3300];
+                                        let _e3304 = local_304;
+                                        local_306 = (bitcast<f32>(_e3302) * _e3304);
+                                        let _e3306 = local_230;
+                                        let _e3307 = (4096u + _e3306);
+                                        local_307 = _e3307;
+                                        if (_e3307 < 5888u) {
+                                        } else {
+                                            phi_4953_ = true;
+                                            break;
+                                        }
+                                        let _e3309 = local_307;
+                                        let _e3311 = global_11[_e3309];
+                                        local_308 = bitcast<f32>(_e3311);
+                                        let _e3313 = local_80;
+                                        let _e3314 = local_230;
+                                        let _e3316 = local_60;
+                                        if ((_e3313 + _e3314) < _e3316) {
+                                            let _e3339 = local_230;
+                                            let _e3340 = (3328u + _e3339);
+                                            local_309 = _e3340;
+                                            if (_e3340 < 5888u) {
                                             } else {
                                                 phi_4953_ = true;
                                                 break;
                                             }
-                                            let _e3325 = local_309;
-                                            let _e3327 = global_11[_e3325];
-                                            let _e3328 = bitcast<f32>(_e3327);
-                                            local_310 = _e3328;
-                                            let _e3329 = local_228;
-                                            let _e3330 = (1f - _e3329);
-                                            local_311 = _e3330;
-                                            let _e3331 = local_229;
-                                            local_312 = _e3331.member;
-                                            let _e3336 = local_229;
-                                            local_313 = _e3336.member_1;
-                                            let _e3338 = local_306;
-                                            let _e3342 = (!((_e3328 <= (_e3331.member * 1.05f))) || (1f < (_e3336.member_1 + (0.5f * _e3338))));
-                                            let _e3343 = local_229;
-                                            local_314 = _e3343.member_3;
-                                            let _e3346 = local_229;
-                                            local_315 = _e3346.member_4;
-                                            let _e3349 = !(_e3342);
-                                            local_316 = ((_e3342 && !(_e3343.member_3)) || (_e3349 && _e3346.member_4));
-                                            local_317 = (_e3349 && _e3343.member_3);
+                                            let _e3342 = local_309;
+                                            let _e3344 = global_11[_e3342];
+                                            let _e3345 = bitcast<f32>(_e3344);
+                                            local_310 = _e3345;
+                                            let _e3346 = local_228;
+                                            let _e3347 = (1f - _e3346);
+                                            local_311 = _e3347;
+                                            let _e3348 = local_229;
+                                            local_312 = _e3348.member;
                                             let _e3353 = local_229;
-                                            local_318 = _e3353.member_2;
-                                            local_448 = select(_e3353.member_2, _e3330, _e3342);
-                                            let _e3357 = local_306;
-                                            local_319 = (select(_e3336.member_1, 0f, _e3342) + _e3357);
-                                            let _e3359 = local_308;
-                                            let _e3360 = (_e3359 < 1f);
-                                            local_320 = _e3360;
-                                            if _e3360 {
-                                                let _e3381 = local_316;
-                                                let _e3382 = local_448;
-                                                let _e3384 = local_306;
-                                                let _e3385 = (_e3384 * select(1f, _e3382, _e3381));
-                                                local_321 = _e3385;
-                                                let _e3386 = local_308;
-                                                let _e3387 = (_e3385 * _e3386);
-                                                local_322 = _e3387;
-                                                let _e3388 = local_311;
-                                                local_323 = (_e3387 < _e3388);
-                                                let _e3390 = local_308;
-                                                if (_e3390 == 1f) {
-                                                    phi_3581_ = _e3330;
+                                            local_313 = _e3353.member_1;
+                                            let _e3355 = local_306;
+                                            let _e3359 = (!((_e3345 <= (_e3348.member * 1.05f))) || (1f < (_e3353.member_1 + (0.5f * _e3355))));
+                                            let _e3360 = local_229;
+                                            local_314 = _e3360.member_3;
+                                            let _e3363 = local_229;
+                                            local_315 = _e3363.member_4;
+                                            let _e3366 = !(_e3359);
+                                            local_316 = ((_e3359 && !(_e3360.member_3)) || (_e3366 && _e3363.member_4));
+                                            local_317 = (_e3366 && _e3360.member_3);
+                                            let _e3370 = local_229;
+                                            local_318 = _e3370.member_2;
+                                            local_448 = select(_e3370.member_2, _e3347, _e3359);
+                                            let _e3374 = local_306;
+                                            local_319 = (select(_e3353.member_1, 0f, _e3359) + _e3374);
+                                            let _e3376 = local_308;
+                                            let _e3377 = (_e3376 < 1f);
+                                            local_320 = _e3377;
+                                            if _e3377 {
+                                                let _e3398 = local_316;
+                                                let _e3399 = local_448;
+                                                let _e3401 = local_306;
+                                                let _e3402 = (_e3401 * select(1f, _e3399, _e3398));
+                                                local_321 = _e3402;
+                                                let _e3403 = local_308;
+                                                let _e3404 = (_e3402 * _e3403);
+                                                local_322 = _e3404;
+                                                let _e3405 = local_311;
+                                                local_323 = (_e3404 < _e3405);
+                                                let _e3407 = local_308;
+                                                if (_e3407 == 1f) {
+                                                    phi_3581_ = _e3347;
                                                 } else {
-                                                    let _e3392 = local_311;
-                                                    let _e3393 = local_308;
-                                                    phi_3581_ = (_e3392 / _e3393);
+                                                    let _e3409 = local_311;
+                                                    let _e3410 = local_308;
+                                                    phi_3581_ = (_e3409 / _e3410);
                                                 }
-                                                let _e3396 = phi_3581_;
-                                                let _e3397 = local_323;
-                                                let _e3398 = local_321;
-                                                let _e3400 = local_323;
-                                                let _e3401 = local_322;
-                                                let _e3402 = local_311;
-                                                phi_3609_ = type_18(select(_e3396, _e3398, _e3397), select(_e3402, _e3401, _e3400));
+                                                let _e3413 = phi_3581_;
+                                                let _e3414 = local_323;
+                                                let _e3415 = local_321;
+                                                let _e3417 = local_323;
+                                                let _e3418 = local_322;
+                                                let _e3419 = local_311;
+                                                phi_3609_ = type_18(select(_e3413, _e3415, _e3414), select(_e3419, _e3418, _e3417));
                                             } else {
-                                                let _e3361 = local_306;
-                                                let _e3362 = local_308;
-                                                let _e3363 = (_e3361 * _e3362);
-                                                local_324 = _e3363;
-                                                let _e3364 = local_311;
-                                                local_325 = (_e3363 < _e3364);
-                                                let _e3366 = local_308;
-                                                if (_e3366 == 1f) {
-                                                    phi_3598_ = _e3330;
+                                                let _e3378 = local_306;
+                                                let _e3379 = local_308;
+                                                let _e3380 = (_e3378 * _e3379);
+                                                local_324 = _e3380;
+                                                let _e3381 = local_311;
+                                                local_325 = (_e3380 < _e3381);
+                                                let _e3383 = local_308;
+                                                if (_e3383 == 1f) {
+                                                    phi_3598_ = _e3347;
                                                 } else {
-                                                    let _e3368 = local_311;
-                                                    let _e3369 = local_308;
-                                                    phi_3598_ = (_e3368 / _e3369);
+                                                    let _e3385 = local_311;
+                                                    let _e3386 = local_308;
+                                                    phi_3598_ = (_e3385 / _e3386);
                                                 }
-                                                let _e3372 = phi_3598_;
-                                                let _e3373 = local_325;
-                                                let _e3374 = local_306;
-                                                let _e3376 = local_325;
-                                                let _e3377 = local_324;
-                                                let _e3378 = local_311;
-                                                phi_3609_ = type_18(select(_e3372, _e3374, _e3373), select(_e3378, _e3377, _e3376));
+                                                let _e3389 = phi_3598_;
+                                                let _e3390 = local_325;
+                                                let _e3391 = local_306;
+                                                let _e3393 = local_325;
+                                                let _e3394 = local_324;
+                                                let _e3395 = local_311;
+                                                phi_3609_ = type_18(select(_e3389, _e3391, _e3390), select(_e3395, _e3394, _e3393));
                                             }
-                                            let _e3406 = phi_3609_;
-                                            let _e3407 = local_320;
-                                            let _e3408 = local_317;
-                                            let _e3410 = local_246;
-                                            let _e3411 = local_310;
-                                            let _e3412 = local_312;
-                                            let _e3414 = local_246;
-                                            let _e3415 = local_319;
-                                            let _e3416 = local_313;
-                                            let _e3418 = local_246;
-                                            let _e3419 = local_448;
-                                            let _e3420 = local_318;
-                                            let _e3422 = local_246;
-                                            let _e3424 = local_246;
-                                            let _e3425 = !(_e3424);
-                                            let _e3426 = local_314;
-                                            let _e3429 = local_246;
-                                            let _e3430 = local_316;
-                                            let _e3432 = local_315;
-                                            phi_3661_ = type_31(select(_e3412, _e3411, _e3410), select(_e3416, _e3415, _e3414), select(_e3420, _e3419, _e3418), ((_e3422 && select(true, _e3408, _e3407)) || (_e3425 && _e3426)), ((_e3429 && _e3430) || (_e3425 && _e3432)));
-                                            phi_3662_ = _e3406;
+                                            let _e3423 = phi_3609_;
+                                            let _e3424 = local_320;
+                                            let _e3425 = local_317;
+                                            let _e3427 = local_246;
+                                            let _e3428 = local_310;
+                                            let _e3429 = local_312;
+                                            let _e3431 = local_246;
+                                            let _e3432 = local_319;
+                                            let _e3433 = local_313;
+                                            let _e3435 = local_246;
+                                            let _e3436 = local_448;
+                                            let _e3437 = local_318;
+                                            let _e3439 = local_246;
+                                            let _e3441 = local_246;
+                                            let _e3442 = !(_e3441);
+                                            let _e3443 = local_314;
+                                            let _e3446 = local_246;
+                                            let _e3447 = local_316;
+                                            let _e3449 = local_315;
+                                            phi_3661_ = type_31(select(_e3429, _e3428, _e3427), select(_e3433, _e3432, _e3431), select(_e3437, _e3436, _e3435), ((_e3439 && select(true, _e3425, _e3424)) || (_e3442 && _e3443)), ((_e3446 && _e3447) || (_e3442 && _e3449)));
+                                            phi_3662_ = _e3423;
                                         } else {
-                                            let _e3301 = local_228;
-                                            let _e3302 = (1f - _e3301);
-                                            local_326 = _e3302;
-                                            let _e3303 = local_306;
-                                            let _e3304 = local_308;
-                                            let _e3305 = (_e3303 * _e3304);
-                                            local_327 = _e3305;
-                                            local_328 = (_e3305 < _e3302);
-                                            let _e3307 = local_308;
-                                            if (_e3307 == 1f) {
-                                                phi_3651_ = _e3302;
+                                            let _e3318 = local_228;
+                                            let _e3319 = (1f - _e3318);
+                                            local_326 = _e3319;
+                                            let _e3320 = local_306;
+                                            let _e3321 = local_308;
+                                            let _e3322 = (_e3320 * _e3321);
+                                            local_327 = _e3322;
+                                            local_328 = (_e3322 < _e3319);
+                                            let _e3324 = local_308;
+                                            if (_e3324 == 1f) {
+                                                phi_3651_ = _e3319;
                                             } else {
-                                                let _e3309 = local_326;
-                                                let _e3310 = local_308;
-                                                phi_3651_ = (_e3309 / _e3310);
+                                                let _e3326 = local_326;
+                                                let _e3327 = local_308;
+                                                phi_3651_ = (_e3326 / _e3327);
                                             }
-                                            let _e3313 = phi_3651_;
-                                            let _e3314 = local_328;
-                                            let _e3315 = local_306;
-                                            let _e3317 = local_328;
-                                            let _e3318 = local_327;
-                                            let _e3319 = local_326;
-                                            phi_3661_ = _e2229;
-                                            phi_3662_ = type_18(select(_e3313, _e3315, _e3314), select(_e3319, _e3318, _e3317));
+                                            let _e3330 = phi_3651_;
+                                            let _e3331 = local_328;
+                                            let _e3332 = local_306;
+                                            let _e3334 = local_328;
+                                            let _e3335 = local_327;
+                                            let _e3336 = local_326;
+                                            phi_3661_ = _e2238;
+                                            phi_3662_ = type_18(select(_e3330, _e3332, _e3331), select(_e3336, _e3335, _e3334));
                                         }
-                                        let _e3437 = phi_3661_;
-                                        let _e3439 = phi_3662_;
-                                        local_329 = _e3439.member;
-                                        local_330 = _e3439.member_1;
-                                        let _e3442 = local_235;
-                                        local_331 = _e3442[0];
-                                        let _e3444 = local_230;
-                                        let _e3445 = (2560u + _e3444);
-                                        local_332 = _e3445;
-                                        if (_e3445 < 5888u) {
+                                        let _e3454 = phi_3661_;
+                                        let _e3456 = phi_3662_;
+                                        local_329 = _e3456.member;
+                                        local_330 = _e3456.member_1;
+                                        let _e3459 = local_235;
+                                        local_331 = _e3459[0];
+                                        let _e3461 = local_230;
+                                        let _e3462 = (2560u + _e3461);
+                                        local_332 = _e3462;
+                                        if (_e3462 < 5888u) {
                                         } else {
                                             phi_4953_ = true;
                                             break;
                                         }
-                                        let _e3447 = local_332;
-                                        let _e3449 = global_11[_e3447];
-                                        let _e3451 = local_329;
-                                        let _e3453 = local_331;
-                                        let _e3455 = local_246;
-                                        let _e3456 = local_331;
-                                        local_449 = select(_e3456, (_e3453 + (_e3451 * bitcast<f32>(_e3449))), _e3455);
-                                        let _e3458 = local_235;
-                                        local_333 = _e3458[1];
-                                        let _e3460 = local_230;
-                                        let _e3461 = (2816u + _e3460);
-                                        local_334 = _e3461;
-                                        if (_e3461 < 5888u) {
+                                        let _e3464 = local_332;
+                                        let _e3466 = global_11[_e3464];
+                                        let _e3468 = local_329;
+                                        let _e3470 = local_331;
+                                        let _e3472 = local_246;
+                                        let _e3473 = local_331;
+                                        local_449 = select(_e3473, (_e3470 + (_e3468 * bitcast<f32>(_e3466))), _e3472);
+                                        let _e3475 = local_235;
+                                        local_333 = _e3475[1];
+                                        let _e3477 = local_230;
+                                        let _e3478 = (2816u + _e3477);
+                                        local_334 = _e3478;
+                                        if (_e3478 < 5888u) {
                                         } else {
                                             phi_4953_ = true;
                                             break;
                                         }
-                                        let _e3463 = local_334;
-                                        let _e3465 = global_11[_e3463];
-                                        let _e3467 = local_329;
-                                        let _e3469 = local_333;
-                                        let _e3471 = local_246;
-                                        let _e3472 = local_333;
-                                        local_450 = select(_e3472, (_e3469 + (_e3467 * bitcast<f32>(_e3465))), _e3471);
-                                        let _e3474 = local_235;
-                                        local_335 = _e3474[2];
-                                        let _e3476 = local_230;
-                                        let _e3477 = (3072u + _e3476);
-                                        local_336 = _e3477;
-                                        if (_e3477 < 5888u) {
+                                        let _e3480 = local_334;
+                                        let _e3482 = global_11[_e3480];
+                                        let _e3484 = local_329;
+                                        let _e3486 = local_333;
+                                        let _e3488 = local_246;
+                                        let _e3489 = local_333;
+                                        local_450 = select(_e3489, (_e3486 + (_e3484 * bitcast<f32>(_e3482))), _e3488);
+                                        let _e3491 = local_235;
+                                        local_335 = _e3491[2];
+                                        let _e3493 = local_230;
+                                        let _e3494 = (3072u + _e3493);
+                                        local_336 = _e3494;
+                                        if (_e3494 < 5888u) {
                                         } else {
                                             phi_4953_ = true;
                                             break;
                                         }
-                                        let _e3479 = local_336;
-                                        let _e3481 = global_11[_e3479];
-                                        let _e3483 = local_329;
-                                        let _e3485 = local_335;
-                                        let _e3487 = local_246;
-                                        let _e3488 = local_335;
-                                        let _e3490 = local_449;
-                                        let _e3491 = local_450;
-                                        let _e3493 = local_228;
-                                        let _e3494 = local_330;
-                                        let _e3496 = local_246;
-                                        let _e3497 = local_228;
-                                        let _e3498 = select(_e3497, (_e3493 + _e3494), _e3496);
-                                        let _e3501 = local_246;
-                                        let _e3502 = (_e3501 && !((_e3498 < 0.99902344f)));
-                                        local_337 = _e3502;
-                                        if _e3502 {
-                                            let _e3503 = local_234;
-                                            let _e3504 = local_337;
-                                            let _e3506 = local_230;
-                                            let _e3509 = local_337;
-                                            let _e3510 = local_233;
-                                            let _e3512 = local_337;
-                                            let _e3513 = local_232;
-                                            let _e3514 = select(_e3513, 0f, _e3512);
-                                            phi_3747_ = select(select(u32(_e3514), 0u, (_e3514 < 0f)), 4294967295u, (_e3514 > 4294967000f));
-                                            phi_3748_ = _e3514;
-                                            phi_3749_ = select(_e3510, f32((_e3506 + 1u)), _e3509);
-                                            phi_3750_ = (_e3503 || _e3504);
+                                        let _e3496 = local_336;
+                                        let _e3498 = global_11[_e3496];
+                                        let _e3500 = local_329;
+                                        let _e3502 = local_335;
+                                        let _e3504 = local_246;
+                                        let _e3505 = local_335;
+                                        let _e3507 = local_449;
+                                        let _e3508 = local_450;
+                                        let _e3510 = local_228;
+                                        let _e3511 = local_330;
+                                        let _e3513 = local_246;
+                                        let _e3514 = local_228;
+                                        let _e3515 = select(_e3514, (_e3510 + _e3511), _e3513);
+                                        let _e3518 = local_246;
+                                        let _e3519 = (_e3518 && !((_e3515 < 0.99902344f)));
+                                        local_337 = _e3519;
+                                        if _e3519 {
+                                            let _e3520 = local_234;
+                                            let _e3521 = local_337;
+                                            let _e3523 = local_230;
+                                            let _e3526 = local_337;
+                                            let _e3527 = local_233;
+                                            let _e3529 = local_337;
+                                            let _e3530 = local_232;
+                                            let _e3531 = select(_e3530, 0f, _e3529);
+                                            phi_3747_ = select(select(u32(_e3531), 0u, !((_e3531 >= 0f))), 4294967295u, (_e3531 > 4294967000f));
+                                            phi_3748_ = _e3531;
+                                            phi_3749_ = select(_e3527, f32((_e3523 + 1u)), _e3526);
+                                            phi_3750_ = (_e3520 || _e3521);
                                         } else {
-                                            phi_3747_ = _e2233;
-                                            phi_3748_ = _e2235;
-                                            phi_3749_ = _e2237;
-                                            phi_3750_ = _e2239;
+                                            phi_3747_ = _e2242;
+                                            phi_3748_ = _e2244;
+                                            phi_3749_ = _e2246;
+                                            phi_3750_ = _e2248;
                                         }
-                                        let _e3521 = phi_3747_;
-                                        let _e3523 = phi_3748_;
-                                        let _e3525 = phi_3749_;
-                                        let _e3527 = phi_3750_;
-                                        phi_4955_ = _e3277;
-                                        phi_3751_ = _e3498;
-                                        phi_3752_ = _e3437;
-                                        phi_3753_ = _e3521;
-                                        phi_3754_ = _e3523;
-                                        phi_3755_ = _e3525;
-                                        phi_3756_ = _e3527;
-                                        phi_3757_ = array<f32, 3>(_e3490, _e3491, select(_e3488, (_e3485 + (_e3483 * bitcast<f32>(_e3481))), _e3487));
+                                        let _e3539 = phi_3747_;
+                                        let _e3541 = phi_3748_;
+                                        let _e3543 = phi_3749_;
+                                        let _e3545 = phi_3750_;
+                                        phi_4955_ = _e3294;
+                                        phi_3751_ = _e3515;
+                                        phi_3752_ = _e3454;
+                                        phi_3753_ = _e3539;
+                                        phi_3754_ = _e3541;
+                                        phi_3755_ = _e3543;
+                                        phi_3756_ = _e3545;
+                                        phi_3757_ = array<f32, 3>(_e3507, _e3508, select(_e3505, (_e3502 + (_e3500 * bitcast<f32>(_e3498))), _e3504));
                                     } else {
-                                        phi_4955_ = _e2225;
-                                        phi_3751_ = _e2227;
-                                        phi_3752_ = _e2229;
-                                        phi_3753_ = _e2233;
-                                        phi_3754_ = _e2235;
-                                        phi_3755_ = _e2237;
-                                        phi_3756_ = _e2239;
-                                        phi_3757_ = _e2241;
+                                        phi_4955_ = _e2234;
+                                        phi_3751_ = _e2236;
+                                        phi_3752_ = _e2238;
+                                        phi_3753_ = _e2242;
+                                        phi_3754_ = _e2244;
+                                        phi_3755_ = _e2246;
+                                        phi_3756_ = _e2248;
+                                        phi_3757_ = _e2250;
                                     }
-                                    let _e3529 = phi_4955_;
-                                    let _e3531 = phi_3751_;
-                                    let _e3533 = phi_3752_;
-                                    let _e3535 = phi_3753_;
-                                    let _e3537 = phi_3754_;
-                                    let _e3539 = phi_3755_;
-                                    let _e3541 = phi_3756_;
-                                    let _e3543 = phi_3757_;
-                                    let _e3544 = local_230;
-                                    phi_4954_ = _e3529;
-                                    phi_2066_ = _e3531;
-                                    phi_2069_ = _e3533;
-                                    phi_2071_ = (_e3544 + 1u);
-                                    phi_2073_ = _e3535;
-                                    phi_2075_ = _e3537;
-                                    phi_2077_ = _e3539;
-                                    phi_2079_ = _e3541;
-                                    phi_2081_ = _e3543;
+                                    let _e3547 = phi_4955_;
+                                    let _e3549 = phi_3751_;
+                                    let _e3551 = phi_3752_;
+                                    let _e3553 = phi_3753_;
+                                    let _e3555 = phi_3754_;
+                                    let _e3557 = phi_3755_;
+                                    let _e3559 = phi_3756_;
+                                    let _e3561 = phi_3757_;
+                                    let _e3562 = local_230;
+                                    phi_4954_ = _e3547;
+                                    phi_2066_ = _e3549;
+                                    phi_2069_ = _e3551;
+                                    phi_2071_ = (_e3562 + 1u);
+                                    phi_2073_ = _e3553;
+                                    phi_2075_ = _e3555;
+                                    phi_2077_ = _e3557;
+                                    phi_2079_ = _e3559;
+                                    phi_2081_ = _e3561;
                                 } else {
-                                    phi_4954_ = _e2225;
+                                    phi_4954_ = _e2234;
                                     phi_2066_ = f32();
                                     phi_2069_ = type_31();
                                     phi_2071_ = u32();
@@ -4064,784 +4064,784 @@ fn function_() {
                                     phi_2079_ = bool();
                                     phi_2081_ = array<f32, 3>();
                                 }
-                                let _e3547 = phi_4954_;
-                                let _e3549 = phi_2066_;
-                                let _e3551 = phi_2069_;
-                                let _e3553 = phi_2071_;
-                                let _e3555 = phi_2073_;
-                                let _e3557 = phi_2075_;
-                                let _e3559 = phi_2077_;
-                                let _e3561 = phi_2079_;
-                                let _e3563 = phi_2081_;
+                                let _e3565 = phi_4954_;
+                                let _e3567 = phi_2066_;
+                                let _e3569 = phi_2069_;
+                                let _e3571 = phi_2071_;
+                                let _e3573 = phi_2073_;
+                                let _e3575 = phi_2075_;
+                                let _e3577 = phi_2077_;
+                                let _e3579 = phi_2079_;
+                                let _e3581 = phi_2081_;
                                 continue;
                                 continuing {
-                                    let _e3564 = local_236;
-                                    phi_4852_ = _e3547;
-                                    phi_2065_ = _e3549;
-                                    phi_2068_ = _e3551;
-                                    phi_2070_ = _e3553;
-                                    phi_2072_ = _e3555;
-                                    phi_2074_ = _e3557;
-                                    phi_2076_ = _e3559;
-                                    phi_2078_ = _e3561;
-                                    phi_2080_ = _e3563;
-                                    phi_4953_ = _e3547;
-                                    break if !(_e3564);
+                                    let _e3582 = local_236;
+                                    phi_4852_ = _e3565;
+                                    phi_2065_ = _e3567;
+                                    phi_2068_ = _e3569;
+                                    phi_2070_ = _e3571;
+                                    phi_2072_ = _e3573;
+                                    phi_2074_ = _e3575;
+                                    phi_2076_ = _e3577;
+                                    phi_2078_ = _e3579;
+                                    phi_2080_ = _e3581;
+                                    phi_4953_ = _e3565;
+                                    break if !(_e3582);
                                 }
                             }
-                            let _e3567 = phi_4953_;
-                            phi_5055_ = _e3567;
-                            if _e3567 {
+                            let _e3585 = phi_4953_;
+                            phi_5055_ = _e3585;
+                            if _e3585 {
                                 break;
                             }
-                            let _e3568 = local_235;
-                            local_338 = _e3568[0];
+                            let _e3586 = local_235;
+                            local_338 = _e3586[0];
                             phi_3761_ = 0u;
                             loop {
-                                let _e3571 = phi_3761_;
-                                local_339 = _e3571;
-                                let _e3572 = local_339;
-                                let _e3573 = (_e3572 < 1u);
-                                local_340 = _e3573;
-                                if _e3573 {
-                                    let _e3574 = local;
-                                    let _e3575 = local_339;
-                                    let _e3576 = (_e3574 + _e3575);
-                                    local_341 = _e3576;
-                                    let _e3577 = local_338;
-                                    local_342 = bitcast<u32>(_e3577);
-                                    if (_e3576 < 5888u) {
+                                let _e3589 = phi_3761_;
+                                local_339 = _e3589;
+                                let _e3590 = local_339;
+                                let _e3591 = (_e3590 < 1u);
+                                local_340 = _e3591;
+                                if _e3591 {
+                                    let _e3592 = local;
+                                    let _e3593 = local_339;
+                                    let _e3594 = (_e3592 + _e3593);
+                                    local_341 = _e3594;
+                                    let _e3595 = local_338;
+                                    local_342 = bitcast<u32>(_e3595);
+                                    if (_e3594 < 5888u) {
                                     } else {
                                         phi_5027_ = true;
                                         break;
                                     }
-                                    let _e3580 = local_341;
-                                    let _e3582 = local_342;
-                                    global_11[_e3580] = _e3582;
-                                    let _e3583 = local_339;
-                                    phi_3762_ = (_e3583 + 1u);
+                                    let _e3598 = local_341;
+                                    let _e3600 = local_342;
+                                    global_11[_e3598] = _e3600;
+                                    let _e3601 = local_339;
+                                    phi_3762_ = (_e3601 + 1u);
                                 } else {
                                     phi_3762_ = u32();
                                 }
-                                let _e3586 = phi_3762_;
+                                let _e3604 = phi_3762_;
                                 continue;
                                 continuing {
-                                    let _e3587 = local_340;
-                                    phi_3761_ = _e3586;
-                                    phi_5027_ = _e3567;
-                                    break if !(_e3587);
+                                    let _e3605 = local_340;
+                                    phi_3761_ = _e3604;
+                                    phi_5027_ = _e3585;
+                                    break if !(_e3605);
                                 }
                             }
-                            let _e3590 = phi_5027_;
-                            phi_5055_ = _e3590;
-                            if _e3590 {
+                            let _e3608 = phi_5027_;
+                            phi_5055_ = _e3608;
+                            if _e3608 {
                                 break;
                             }
-                            let _e3591 = local_235;
-                            local_343 = _e3591[1];
+                            let _e3609 = local_235;
+                            local_343 = _e3609[1];
                             phi_3782_ = 0u;
                             loop {
-                                let _e3594 = phi_3782_;
-                                local_344 = _e3594;
-                                let _e3595 = local_344;
-                                let _e3596 = (_e3595 < 1u);
-                                local_345 = _e3596;
-                                if _e3596 {
-                                    let _e3597 = local;
-                                    let _e3598 = local_344;
-                                    let _e3600 = local_343;
-                                    local_346 = bitcast<u32>(_e3600);
-                                    let _e3602 = (256u + (_e3597 + _e3598));
-                                    local_347 = _e3602;
-                                    if (_e3602 < 5888u) {
+                                let _e3612 = phi_3782_;
+                                local_344 = _e3612;
+                                let _e3613 = local_344;
+                                let _e3614 = (_e3613 < 1u);
+                                local_345 = _e3614;
+                                if _e3614 {
+                                    let _e3615 = local;
+                                    let _e3616 = local_344;
+                                    let _e3618 = local_343;
+                                    local_346 = bitcast<u32>(_e3618);
+                                    let _e3620 = (256u + (_e3615 + _e3616));
+                                    local_347 = _e3620;
+                                    if (_e3620 < 5888u) {
                                     } else {
                                         phi_5030_ = true;
                                         break;
                                     }
-                                    let _e3604 = local_347;
-                                    let _e3606 = local_346;
-                                    global_11[_e3604] = _e3606;
-                                    let _e3607 = local_344;
-                                    phi_3783_ = (_e3607 + 1u);
+                                    let _e3622 = local_347;
+                                    let _e3624 = local_346;
+                                    global_11[_e3622] = _e3624;
+                                    let _e3625 = local_344;
+                                    phi_3783_ = (_e3625 + 1u);
                                 } else {
                                     phi_3783_ = u32();
                                 }
-                                let _e3610 = phi_3783_;
+                                let _e3628 = phi_3783_;
                                 continue;
                                 continuing {
-                                    let _e3611 = local_345;
-                                    phi_3782_ = _e3610;
-                                    phi_5030_ = _e3590;
-                                    break if !(_e3611);
+                                    let _e3629 = local_345;
+                                    phi_3782_ = _e3628;
+                                    phi_5030_ = _e3608;
+                                    break if !(_e3629);
                                 }
                             }
-                            let _e3614 = phi_5030_;
-                            phi_5055_ = _e3614;
-                            if _e3614 {
+                            let _e3632 = phi_5030_;
+                            phi_5055_ = _e3632;
+                            if _e3632 {
                                 break;
                             }
-                            let _e3615 = local_235;
-                            local_348 = _e3615[2];
+                            let _e3633 = local_235;
+                            local_348 = _e3633[2];
                             phi_3803_ = 0u;
                             loop {
-                                let _e3618 = phi_3803_;
-                                local_349 = _e3618;
-                                let _e3619 = local_349;
-                                let _e3620 = (_e3619 < 1u);
-                                local_350 = _e3620;
-                                if _e3620 {
-                                    let _e3621 = local;
-                                    let _e3622 = local_349;
-                                    let _e3624 = local_348;
-                                    local_351 = bitcast<u32>(_e3624);
-                                    let _e3626 = (512u + (_e3621 + _e3622));
-                                    local_352 = _e3626;
-                                    if (_e3626 < 5888u) {
+                                let _e3636 = phi_3803_;
+                                local_349 = _e3636;
+                                let _e3637 = local_349;
+                                let _e3638 = (_e3637 < 1u);
+                                local_350 = _e3638;
+                                if _e3638 {
+                                    let _e3639 = local;
+                                    let _e3640 = local_349;
+                                    let _e3642 = local_348;
+                                    local_351 = bitcast<u32>(_e3642);
+                                    let _e3644 = (512u + (_e3639 + _e3640));
+                                    local_352 = _e3644;
+                                    if (_e3644 < 5888u) {
                                     } else {
                                         phi_5033_ = true;
                                         break;
                                     }
-                                    let _e3628 = local_352;
-                                    let _e3630 = local_351;
-                                    global_11[_e3628] = _e3630;
-                                    let _e3631 = local_349;
-                                    phi_3804_ = (_e3631 + 1u);
+                                    let _e3646 = local_352;
+                                    let _e3648 = local_351;
+                                    global_11[_e3646] = _e3648;
+                                    let _e3649 = local_349;
+                                    phi_3804_ = (_e3649 + 1u);
                                 } else {
                                     phi_3804_ = u32();
                                 }
-                                let _e3634 = phi_3804_;
+                                let _e3652 = phi_3804_;
                                 continue;
                                 continuing {
-                                    let _e3635 = local_350;
-                                    phi_3803_ = _e3634;
-                                    phi_5033_ = _e3614;
-                                    break if !(_e3635);
+                                    let _e3653 = local_350;
+                                    phi_3803_ = _e3652;
+                                    phi_5033_ = _e3632;
+                                    break if !(_e3653);
                                 }
                             }
-                            let _e3638 = phi_5033_;
-                            phi_5055_ = _e3638;
-                            if _e3638 {
+                            let _e3656 = phi_5033_;
+                            phi_5055_ = _e3656;
+                            if _e3656 {
                                 break;
                             }
                             phi_3823_ = 0u;
                             loop {
-                                let _e3640 = phi_3823_;
-                                local_353 = _e3640;
-                                let _e3641 = local_353;
-                                let _e3642 = (_e3641 < 1u);
-                                local_354 = _e3642;
-                                if _e3642 {
-                                    let _e3643 = local;
-                                    let _e3644 = local_353;
-                                    let _e3646 = local_228;
-                                    local_355 = bitcast<u32>(_e3646);
-                                    let _e3648 = (768u + (_e3643 + _e3644));
-                                    local_356 = _e3648;
-                                    if (_e3648 < 5888u) {
+                                let _e3658 = phi_3823_;
+                                local_353 = _e3658;
+                                let _e3659 = local_353;
+                                let _e3660 = (_e3659 < 1u);
+                                local_354 = _e3660;
+                                if _e3660 {
+                                    let _e3661 = local;
+                                    let _e3662 = local_353;
+                                    let _e3664 = local_228;
+                                    local_355 = bitcast<u32>(_e3664);
+                                    let _e3666 = (768u + (_e3661 + _e3662));
+                                    local_356 = _e3666;
+                                    if (_e3666 < 5888u) {
                                     } else {
                                         phi_5036_ = true;
                                         break;
                                     }
-                                    let _e3650 = local_356;
-                                    let _e3652 = local_355;
-                                    global_11[_e3650] = _e3652;
-                                    let _e3653 = local_353;
-                                    phi_3824_ = (_e3653 + 1u);
+                                    let _e3668 = local_356;
+                                    let _e3670 = local_355;
+                                    global_11[_e3668] = _e3670;
+                                    let _e3671 = local_353;
+                                    phi_3824_ = (_e3671 + 1u);
                                 } else {
                                     phi_3824_ = u32();
                                 }
-                                let _e3656 = phi_3824_;
+                                let _e3674 = phi_3824_;
                                 continue;
                                 continuing {
-                                    let _e3657 = local_354;
-                                    phi_3823_ = _e3656;
-                                    phi_5036_ = _e3638;
-                                    break if !(_e3657);
+                                    let _e3675 = local_354;
+                                    phi_3823_ = _e3674;
+                                    phi_5036_ = _e3656;
+                                    break if !(_e3675);
                                 }
                             }
-                            let _e3660 = phi_5036_;
-                            phi_5055_ = _e3660;
-                            if _e3660 {
+                            let _e3678 = phi_5036_;
+                            phi_5055_ = _e3678;
+                            if _e3678 {
                                 break;
                             }
                             phi_3844_ = 0u;
                             loop {
-                                let _e3662 = phi_3844_;
-                                local_357 = _e3662;
-                                let _e3663 = local_357;
-                                let _e3664 = (_e3663 < 1u);
-                                local_358 = _e3664;
-                                if _e3664 {
-                                    let _e3665 = local_229;
-                                    local_359 = bitcast<u32>(_e3665.member);
-                                    let _e3668 = local_73;
-                                    let _e3669 = local_357;
-                                    let _e3670 = (_e3668 + _e3669);
-                                    local_360 = _e3670;
-                                    if (_e3670 < 5888u) {
+                                let _e3680 = phi_3844_;
+                                local_357 = _e3680;
+                                let _e3681 = local_357;
+                                let _e3682 = (_e3681 < 1u);
+                                local_358 = _e3682;
+                                if _e3682 {
+                                    let _e3683 = local_229;
+                                    local_359 = bitcast<u32>(_e3683.member);
+                                    let _e3686 = local_73;
+                                    let _e3687 = local_357;
+                                    let _e3688 = (_e3686 + _e3687);
+                                    local_360 = _e3688;
+                                    if (_e3688 < 5888u) {
                                     } else {
                                         phi_5039_ = true;
                                         break;
                                     }
-                                    let _e3672 = local_360;
-                                    let _e3674 = local_359;
-                                    global_11[_e3672] = _e3674;
-                                    let _e3675 = local_229;
-                                    local_361 = bitcast<u32>(_e3675.member_1);
-                                    let _e3678 = local_206;
-                                    let _e3679 = local_357;
-                                    let _e3680 = (_e3678 + _e3679);
-                                    local_362 = _e3680;
-                                    if (_e3680 < 5888u) {
+                                    let _e3690 = local_360;
+                                    let _e3692 = local_359;
+                                    global_11[_e3690] = _e3692;
+                                    let _e3693 = local_229;
+                                    local_361 = bitcast<u32>(_e3693.member_1);
+                                    let _e3696 = local_206;
+                                    let _e3697 = local_357;
+                                    let _e3698 = (_e3696 + _e3697);
+                                    local_362 = _e3698;
+                                    if (_e3698 < 5888u) {
                                     } else {
                                         phi_5039_ = true;
                                         break;
                                     }
-                                    let _e3682 = local_362;
-                                    let _e3684 = local_361;
-                                    global_11[_e3682] = _e3684;
-                                    let _e3685 = local_229;
-                                    local_363 = bitcast<u32>(_e3685.member_2);
-                                    let _e3688 = local_208;
-                                    let _e3689 = local_357;
-                                    let _e3690 = (_e3688 + _e3689);
-                                    local_364 = _e3690;
-                                    if (_e3690 < 5888u) {
+                                    let _e3700 = local_362;
+                                    let _e3702 = local_361;
+                                    global_11[_e3700] = _e3702;
+                                    let _e3703 = local_229;
+                                    local_363 = bitcast<u32>(_e3703.member_2);
+                                    let _e3706 = local_208;
+                                    let _e3707 = local_357;
+                                    let _e3708 = (_e3706 + _e3707);
+                                    local_364 = _e3708;
+                                    if (_e3708 < 5888u) {
                                     } else {
                                         phi_5039_ = true;
                                         break;
                                     }
-                                    let _e3692 = local_364;
-                                    let _e3694 = local_363;
-                                    global_11[_e3692] = _e3694;
-                                    let _e3695 = local_229;
-                                    local_365 = select(0u, 1u, _e3695.member_3);
-                                    let _e3698 = local_229;
-                                    local_366 = (select(0u, 1u, _e3698.member_4) << bitcast<u32>(1i));
-                                    let _e3703 = local_210;
-                                    let _e3704 = local_357;
-                                    let _e3705 = (_e3703 + _e3704);
-                                    local_367 = _e3705;
-                                    if (_e3705 < 5888u) {
+                                    let _e3710 = local_364;
+                                    let _e3712 = local_363;
+                                    global_11[_e3710] = _e3712;
+                                    let _e3713 = local_229;
+                                    local_365 = select(0u, 1u, _e3713.member_3);
+                                    let _e3716 = local_229;
+                                    local_366 = (select(0u, 1u, _e3716.member_4) << bitcast<u32>(1i));
+                                    let _e3721 = local_210;
+                                    let _e3722 = local_357;
+                                    let _e3723 = (_e3721 + _e3722);
+                                    local_367 = _e3723;
+                                    if (_e3723 < 5888u) {
                                     } else {
                                         phi_5039_ = true;
                                         break;
                                     }
-                                    let _e3707 = local_367;
-                                    let _e3709 = local_365;
-                                    let _e3710 = local_366;
-                                    global_11[_e3707] = (_e3709 | _e3710);
-                                    let _e3712 = local_357;
-                                    phi_3845_ = (_e3712 + 1u);
+                                    let _e3725 = local_367;
+                                    let _e3727 = local_365;
+                                    let _e3728 = local_366;
+                                    global_11[_e3725] = (_e3727 | _e3728);
+                                    let _e3730 = local_357;
+                                    phi_3845_ = (_e3730 + 1u);
                                 } else {
                                     phi_3845_ = u32();
                                 }
-                                let _e3715 = phi_3845_;
+                                let _e3733 = phi_3845_;
                                 continue;
                                 continuing {
-                                    let _e3716 = local_358;
-                                    phi_3844_ = _e3715;
-                                    phi_5039_ = _e3660;
-                                    break if !(_e3716);
+                                    let _e3734 = local_358;
+                                    phi_3844_ = _e3733;
+                                    phi_5039_ = _e3678;
+                                    break if !(_e3734);
                                 }
                             }
-                            let _e3719 = phi_5039_;
-                            phi_5055_ = _e3719;
-                            if _e3719 {
+                            let _e3737 = phi_5039_;
+                            phi_5055_ = _e3737;
+                            if _e3737 {
                                 break;
                             }
                             phi_3900_ = 0u;
                             loop {
-                                let _e3721 = phi_3900_;
-                                local_368 = _e3721;
-                                let _e3722 = local_368;
-                                let _e3723 = (_e3722 < 1u);
-                                local_369 = _e3723;
-                                if _e3723 {
-                                    let _e3724 = local;
-                                    let _e3725 = local_368;
-                                    local_370 = (_e3724 + _e3725);
-                                    let _e3727 = local_234;
-                                    if _e3727 {
-                                        let _e3751 = local_233;
-                                        let _e3753 = local_233;
-                                        let _e3755 = local_233;
+                                let _e3739 = phi_3900_;
+                                local_368 = _e3739;
+                                let _e3740 = local_368;
+                                let _e3741 = (_e3740 < 1u);
+                                local_369 = _e3741;
+                                if _e3741 {
+                                    let _e3742 = local;
+                                    let _e3743 = local_368;
+                                    local_370 = (_e3742 + _e3743);
+                                    let _e3745 = local_234;
+                                    if _e3745 {
+                                        let _e3769 = local_233;
+                                        let _e3771 = local_233;
+                                        let _e3774 = local_233;
                                         phi_3960_ = false;
-                                        phi_3961_ = select(select(u32(_e3751), 0u, (_e3753 < 0f)), 4294967295u, (_e3755 > 4294967000f));
+                                        phi_3961_ = select(select(u32(_e3769), 0u, !((_e3771 >= 0f))), 4294967295u, (_e3774 > 4294967000f));
                                     } else {
-                                        let _e3728 = local_369;
-                                        if _e3728 {
+                                        let _e3746 = local_369;
+                                        if _e3746 {
                                         } else {
                                             phi_5042_ = true;
                                             break;
                                         }
-                                        let _e3729 = local_368;
-                                        let _e3731 = local_455[_e3729];
-                                        if _e3731 {
-                                            let _e3732 = local_369;
-                                            if _e3732 {
+                                        let _e3747 = local_368;
+                                        let _e3749 = local_455[_e3747];
+                                        if _e3749 {
+                                            let _e3750 = local_369;
+                                            if _e3750 {
                                             } else {
                                                 phi_5042_ = true;
                                                 break;
                                             }
-                                            let _e3733 = local_368;
-                                            let _e3735 = local_456[_e3733];
-                                            let _e3736 = local_446;
-                                            if (_e3735 < _e3736) {
-                                                let _e3738 = local_369;
-                                                if _e3738 {
+                                            let _e3751 = local_368;
+                                            let _e3753 = local_456[_e3751];
+                                            let _e3754 = local_446;
+                                            if (_e3753 < _e3754) {
+                                                let _e3756 = local_369;
+                                                if _e3756 {
                                                 } else {
                                                     phi_5042_ = true;
                                                     break;
                                                 }
-                                                let _e3739 = local_456[_e3733];
-                                                phi_3949_ = (_e3739 + 1u);
+                                                let _e3757 = local_456[_e3751];
+                                                phi_3949_ = (_e3757 + 1u);
                                             } else {
-                                                phi_3949_ = _e1981;
+                                                phi_3949_ = _e1989;
                                             }
-                                            let _e3742 = phi_3949_;
-                                            let _e3743 = local_369;
-                                            if _e3743 {
+                                            let _e3760 = phi_3949_;
+                                            let _e3761 = local_369;
+                                            if _e3761 {
                                             } else {
                                                 phi_5042_ = true;
                                                 break;
                                             }
-                                            let _e3744 = local_456[_e3733];
-                                            let _e3745 = local_446;
-                                            phi_3958_ = (_e3744 == _e3745);
-                                            phi_3959_ = _e3742;
+                                            let _e3762 = local_456[_e3751];
+                                            let _e3763 = local_446;
+                                            phi_3958_ = (_e3762 == _e3763);
+                                            phi_3959_ = _e3760;
                                         } else {
                                             phi_3958_ = false;
                                             phi_3959_ = 0u;
                                         }
-                                        let _e3748 = phi_3958_;
-                                        let _e3750 = phi_3959_;
-                                        phi_3960_ = _e3748;
-                                        phi_3961_ = _e3750;
+                                        let _e3766 = phi_3958_;
+                                        let _e3768 = phi_3959_;
+                                        phi_3960_ = _e3766;
+                                        phi_3961_ = _e3768;
                                     }
-                                    let _e3760 = phi_3960_;
-                                    let _e3762 = phi_3961_;
-                                    local_371 = _e3760;
-                                    local_372 = _e3762;
-                                    let _e3763 = local_369;
-                                    if _e3763 {
+                                    let _e3779 = phi_3960_;
+                                    let _e3781 = phi_3961_;
+                                    local_371 = _e3779;
+                                    local_372 = _e3781;
+                                    let _e3782 = local_369;
+                                    if _e3782 {
                                     } else {
                                         phi_5042_ = true;
                                         break;
                                     }
-                                    let _e3764 = local_368;
-                                    let _e3766 = local_454[_e3764];
-                                    if _e3766 {
-                                        let _e3767 = local_370;
-                                        let _e3768 = (1280u + _e3767);
-                                        local_373 = _e3768;
-                                        if (_e3768 < 5888u) {
+                                    let _e3783 = local_368;
+                                    let _e3785 = local_454[_e3783];
+                                    if _e3785 {
+                                        let _e3786 = local_370;
+                                        let _e3787 = (1280u + _e3786);
+                                        local_373 = _e3787;
+                                        if (_e3787 < 5888u) {
                                         } else {
                                             phi_5042_ = true;
                                             break;
                                         }
-                                        let _e3770 = local_373;
-                                        let _e3772 = global_11[_e3770];
-                                        let _e3773 = local_372;
-                                        global_11[_e3770] = (_e3772 + _e3773);
+                                        let _e3789 = local_373;
+                                        let _e3791 = global_11[_e3789];
+                                        let _e3792 = local_372;
+                                        global_11[_e3789] = (_e3791 + _e3792);
                                     }
-                                    let _e3775 = local_370;
-                                    let _e3776 = (4352u + _e3775);
-                                    local_374 = _e3776;
-                                    if (_e3776 < 5888u) {
+                                    let _e3794 = local_370;
+                                    let _e3795 = (4352u + _e3794);
+                                    local_374 = _e3795;
+                                    if (_e3795 < 5888u) {
                                     } else {
                                         phi_5042_ = true;
                                         break;
                                     }
-                                    let _e3778 = local_374;
-                                    let _e3780 = local_371;
-                                    global_11[_e3778] = select(0u, 1u, _e3780);
-                                    let _e3782 = local_368;
-                                    phi_3901_ = (_e3782 + 1u);
+                                    let _e3797 = local_374;
+                                    let _e3799 = local_371;
+                                    global_11[_e3797] = select(0u, 1u, _e3799);
+                                    let _e3801 = local_368;
+                                    phi_3901_ = (_e3801 + 1u);
                                 } else {
                                     phi_3901_ = u32();
                                 }
-                                let _e3785 = phi_3901_;
+                                let _e3804 = phi_3901_;
                                 continue;
                                 continuing {
-                                    let _e3786 = local_369;
-                                    phi_3900_ = _e3785;
-                                    phi_5042_ = _e3719;
-                                    break if !(_e3786);
+                                    let _e3805 = local_369;
+                                    phi_3900_ = _e3804;
+                                    phi_5042_ = _e3737;
+                                    break if !(_e3805);
                                 }
                             }
-                            let _e3789 = phi_5042_;
-                            phi_5055_ = _e3789;
-                            if _e3789 {
+                            let _e3808 = phi_5042_;
+                            phi_5055_ = _e3808;
+                            if _e3808 {
                                 break;
                             }
                             storageBarrier();
                             workgroupBarrier();
                             phi_3994_ = 128u;
                             loop {
-                                let _e3791 = phi_3994_;
-                                local_375 = _e3791;
-                                let _e3792 = local_375;
-                                let _e3793 = (_e3792 > 0u);
-                                local_376 = _e3793;
-                                if _e3793 {
-                                    let _e3794 = local;
-                                    let _e3795 = local_375;
-                                    if (_e3794 < _e3795) {
-                                        let _e3797 = local_55;
-                                        if _e3797 {
+                                let _e3810 = phi_3994_;
+                                local_375 = _e3810;
+                                let _e3811 = local_375;
+                                let _e3812 = (_e3811 > 0u);
+                                local_376 = _e3812;
+                                if _e3812 {
+                                    let _e3813 = local;
+                                    let _e3814 = local_375;
+                                    if (_e3813 < _e3814) {
+                                        let _e3816 = local_55;
+                                        if _e3816 {
                                         } else {
                                             phi_5049_ = true;
                                             break;
                                         }
-                                        let _e3798 = global_11[_e850];
-                                        local_377 = _e3798;
-                                        let _e3799 = local_54;
-                                        let _e3800 = local_375;
-                                        let _e3801 = (_e3799 + _e3800);
-                                        local_378 = _e3801;
-                                        if (_e3801 < 5888u) {
+                                        let _e3817 = global_11[_e850];
+                                        local_377 = _e3817;
+                                        let _e3818 = local_54;
+                                        let _e3819 = local_375;
+                                        let _e3820 = (_e3818 + _e3819);
+                                        local_378 = _e3820;
+                                        if (_e3820 < 5888u) {
                                         } else {
                                             phi_5049_ = true;
                                             break;
                                         }
-                                        let _e3803 = local_378;
-                                        let _e3805 = global_11[_e3803];
-                                        let _e3806 = local_377;
-                                        let _e3808 = local_377;
-                                        local_451 = select(_e3805, _e3808, (_e3806 > _e3805));
-                                        let _e3810 = local_55;
-                                        if _e3810 {
+                                        let _e3822 = local_378;
+                                        let _e3824 = global_11[_e3822];
+                                        let _e3825 = local_377;
+                                        let _e3827 = local_377;
+                                        local_451 = select(_e3824, _e3827, (_e3825 > _e3824));
+                                        let _e3829 = local_55;
+                                        if _e3829 {
                                         } else {
                                             phi_5049_ = true;
                                             break;
                                         }
-                                        let _e3811 = local_451;
-                                        global_11[_e850] = _e3811;
+                                        let _e3830 = local_451;
+                                        global_11[_e850] = _e3830;
                                     }
                                     storageBarrier();
                                     workgroupBarrier();
-                                    let _e3812 = local_375;
-                                    phi_3995_ = (_e3812 / 2u);
+                                    let _e3831 = local_375;
+                                    phi_3995_ = (_e3831 / 2u);
                                 } else {
                                     phi_3995_ = u32();
                                 }
-                                let _e3815 = phi_3995_;
+                                let _e3834 = phi_3995_;
                                 continue;
                                 continuing {
-                                    let _e3816 = local_376;
-                                    phi_3994_ = _e3815;
-                                    phi_5049_ = _e3789;
-                                    break if !(_e3816);
+                                    let _e3835 = local_376;
+                                    phi_3994_ = _e3834;
+                                    phi_5049_ = _e3808;
+                                    break if !(_e3835);
                                 }
                             }
-                            let _e3819 = phi_5049_;
-                            phi_5055_ = _e3819;
-                            if _e3819 {
+                            let _e3838 = phi_5049_;
+                            phi_5055_ = _e3838;
+                            if _e3838 {
                                 break;
                             }
-                            let _e3820 = global_11[4352u];
+                            let _e3839 = global_11[4352u];
                             storageBarrier();
                             workgroupBarrier();
-                            let _e3821 = local_80;
-                            phi_5057_ = _e3819;
-                            phi_4039_ = (_e3821 + 256u);
-                            phi_4040_ = _e3820;
+                            let _e3840 = local_80;
+                            phi_5057_ = _e3838;
+                            phi_4039_ = (_e3840 + 256u);
+                            phi_4040_ = _e3839;
                         }
-                        let _e3824 = phi_5057_;
-                        let _e3826 = phi_4039_;
-                        let _e3828 = phi_4040_;
-                        let _e3829 = local_82;
-                        phi_5056_ = _e3824;
-                        phi_636_ = _e3826;
-                        phi_639_ = _e3828;
-                        phi_4042_ = select(true, false, _e3829);
+                        let _e3843 = phi_5057_;
+                        let _e3845 = phi_4039_;
+                        let _e3847 = phi_4040_;
+                        let _e3848 = local_82;
+                        phi_5056_ = _e3843;
+                        phi_636_ = _e3845;
+                        phi_639_ = _e3847;
+                        phi_4042_ = select(true, false, _e3848);
                     } else {
                         phi_5056_ = _e1011;
                         phi_636_ = u32();
                         phi_639_ = u32();
                         phi_4042_ = false;
                     }
-                    let _e3832 = phi_5056_;
-                    let _e3834 = phi_636_;
-                    let _e3836 = phi_639_;
-                    let _e3838 = phi_4042_;
-                    local_379 = _e3838;
+                    let _e3851 = phi_5056_;
+                    let _e3853 = phi_636_;
+                    let _e3855 = phi_639_;
+                    let _e3857 = phi_4042_;
+                    local_379 = _e3857;
                     continue;
                     continuing {
-                        let _e3839 = local_379;
-                        phi_4765_ = _e3832;
-                        phi_635_ = _e3834;
-                        phi_638_ = _e3836;
-                        phi_5055_ = _e3832;
-                        break if !(_e3839);
+                        let _e3858 = local_379;
+                        phi_4765_ = _e3851;
+                        phi_635_ = _e3853;
+                        phi_638_ = _e3855;
+                        phi_5055_ = _e3851;
+                        break if !(_e3858);
                     }
                 }
-                let _e3842 = phi_5055_;
-                if _e3842 {
+                let _e3861 = phi_5055_;
+                if _e3861 {
                     break;
                 }
-                let _e3843 = local_33;
-                if _e3843 {
+                let _e3862 = local_33;
+                if _e3862 {
                     break;
                 }
-                let _e3844 = local_33;
-                if _e3844 {
+                let _e3863 = local_33;
+                if _e3863 {
                     break;
                 }
-                let _e3845 = local_67;
-                if _e3845 {
-                    let _e3846 = local_64;
-                    let _e3847 = local_13;
-                    let _e3848 = (_e3846 < _e3847);
-                    local_380 = _e3848;
-                    if _e3848 {
-                        let _e3849 = local_65;
-                        let _e3850 = local_14;
-                        phi_4103_ = (_e3849 < _e3850);
+                let _e3864 = local_67;
+                if _e3864 {
+                    let _e3865 = local_64;
+                    let _e3866 = local_13;
+                    let _e3867 = (_e3865 < _e3866);
+                    local_380 = _e3867;
+                    if _e3867 {
+                        let _e3868 = local_65;
+                        let _e3869 = local_14;
+                        phi_4103_ = (_e3868 < _e3869);
                     } else {
                         phi_4103_ = bool();
                     }
-                    let _e3853 = phi_4103_;
-                    let _e3854 = local_380;
-                    phi_4105_ = _e3853;
-                    phi_4106_ = select(true, false, _e3854);
+                    let _e3872 = phi_4103_;
+                    let _e3873 = local_380;
+                    phi_4105_ = _e3872;
+                    phi_4106_ = select(true, false, _e3873);
                 } else {
                     phi_4105_ = bool();
                     phi_4106_ = true;
                 }
-                let _e3857 = phi_4105_;
-                let _e3859 = phi_4106_;
-                if select(_e3857, false, _e3859) {
-                    let _e3861 = local_65;
-                    let _e3862 = local_13;
-                    let _e3864 = local_64;
-                    let _e3865 = ((_e3861 * _e3862) + _e3864);
-                    local_381 = _e3865;
-                    let _e3866 = (4u * _e3865);
-                    local_382 = _e3866;
-                    let _e3867 = local_1;
-                    if (_e3866 < _e3867) {
+                let _e3876 = phi_4105_;
+                let _e3878 = phi_4106_;
+                if select(_e3876, false, _e3878) {
+                    let _e3880 = local_65;
+                    let _e3881 = local_13;
+                    let _e3883 = local_64;
+                    let _e3884 = ((_e3880 * _e3881) + _e3883);
+                    local_381 = _e3884;
+                    let _e3885 = (4u * _e3884);
+                    local_382 = _e3885;
+                    let _e3886 = local_1;
+                    if (_e3885 < _e3886) {
                     } else {
                         break;
                     }
-                    let _e3869 = local_382;
-                    let _e3872 = global_4.member[_e3869];
-                    local_383 = bitcast<f32>(_e3872);
-                    let _e3874 = local_382;
-                    let _e3875 = (_e3874 + 1u);
-                    local_384 = _e3875;
-                    let _e3876 = local_1;
-                    if (_e3875 < _e3876) {
+                    let _e3888 = local_382;
+                    let _e3891 = global_4.member[_e3888];
+                    local_383 = bitcast<f32>(_e3891);
+                    let _e3893 = local_382;
+                    let _e3894 = (_e3893 + 1u);
+                    local_384 = _e3894;
+                    let _e3895 = local_1;
+                    if (_e3894 < _e3895) {
                     } else {
                         break;
                     }
-                    let _e3878 = local_384;
-                    let _e3881 = global_4.member[_e3878];
-                    local_385 = bitcast<f32>(_e3881);
-                    let _e3883 = local_382;
-                    let _e3884 = (_e3883 + 2u);
-                    local_386 = _e3884;
-                    let _e3885 = local_1;
-                    if (_e3884 < _e3885) {
+                    let _e3897 = local_384;
+                    let _e3900 = global_4.member[_e3897];
+                    local_385 = bitcast<f32>(_e3900);
+                    let _e3902 = local_382;
+                    let _e3903 = (_e3902 + 2u);
+                    local_386 = _e3903;
+                    let _e3904 = local_1;
+                    if (_e3903 < _e3904) {
                     } else {
                         break;
                     }
-                    let _e3887 = local_386;
-                    let _e3890 = global_4.member[_e3887];
-                    local_387 = bitcast<f32>(_e3890);
-                    let _e3892 = local_382;
-                    let _e3893 = (_e3892 + 3u);
-                    local_388 = _e3893;
-                    let _e3894 = local_1;
-                    if (_e3893 < _e3894) {
+                    let _e3906 = local_386;
+                    let _e3909 = global_4.member[_e3906];
+                    local_387 = bitcast<f32>(_e3909);
+                    let _e3911 = local_382;
+                    let _e3912 = (_e3911 + 3u);
+                    local_388 = _e3912;
+                    let _e3913 = local_1;
+                    if (_e3912 < _e3913) {
                     } else {
                         break;
                     }
-                    let _e3896 = local_388;
-                    let _e3899 = global_4.member[_e3896];
-                    local_389 = bitcast<f32>(_e3899);
-                    let _e3901 = local;
-                    let _e3902 = (768u + _e3901);
-                    local_390 = _e3902;
-                    let _e3903 = (_e3902 < 5888u);
-                    local_391 = _e3903;
-                    if _e3903 {
+                    let _e3915 = local_388;
+                    let _e3918 = global_4.member[_e3915];
+                    local_389 = bitcast<f32>(_e3918);
+                    let _e3920 = local;
+                    let _e3921 = (768u + _e3920);
+                    local_390 = _e3921;
+                    let _e3922 = (_e3921 < 5888u);
+                    local_391 = _e3922;
+                    if _e3922 {
                     } else {
                         break;
                     }
-                    let _e3904 = local_390;
-                    let _e3906 = global_11[_e3904];
-                    local_392 = (1f - bitcast<f32>(_e3906));
-                    let _e3909 = local_389;
-                    if ((bitcast<u32>(_e3909) & 2147483647u) > 2139095040u) {
+                    let _e3923 = local_390;
+                    let _e3925 = global_11[_e3923];
+                    local_392 = (1f - bitcast<f32>(_e3925));
+                    let _e3928 = local_389;
+                    if ((bitcast<u32>(_e3928) & 2147483647u) > 2139095040u) {
                     } else {
-                        let _e3913 = local_392;
-                        if (_e3913 > 0f) {
-                            let _e3915 = local;
-                            let _e3916 = (_e3915 < 5888u);
-                            local_393 = _e3916;
-                            if _e3916 {
+                        let _e3932 = local_392;
+                        if (_e3932 > 0f) {
+                            let _e3934 = local;
+                            let _e3935 = (_e3934 < 5888u);
+                            local_393 = _e3935;
+                            if _e3935 {
                             } else {
                                 break;
                             }
-                            let _e3917 = local;
-                            let _e3919 = global_11[_e3917];
-                            let _e3921 = local_392;
-                            let _e3922 = local_383;
-                            local_394 = bitcast<u32>((bitcast<f32>(_e3919) + (_e3921 * _e3922)));
-                            let _e3926 = local_393;
-                            if _e3926 {
+                            let _e3936 = local;
+                            let _e3938 = global_11[_e3936];
+                            let _e3940 = local_392;
+                            let _e3941 = local_383;
+                            local_394 = bitcast<u32>((bitcast<f32>(_e3938) + (_e3940 * _e3941)));
+                            let _e3945 = local_393;
+                            if _e3945 {
                             } else {
                                 break;
                             }
-                            let _e3927 = local_394;
-                            global_11[_e3917] = _e3927;
-                            let _e3928 = local;
-                            let _e3929 = (256u + _e3928);
-                            local_395 = _e3929;
-                            let _e3930 = (_e3929 < 5888u);
-                            local_396 = _e3930;
-                            if _e3930 {
+                            let _e3946 = local_394;
+                            global_11[_e3936] = _e3946;
+                            let _e3947 = local;
+                            let _e3948 = (256u + _e3947);
+                            local_395 = _e3948;
+                            let _e3949 = (_e3948 < 5888u);
+                            local_396 = _e3949;
+                            if _e3949 {
                             } else {
                                 break;
                             }
-                            let _e3931 = local_395;
-                            let _e3933 = global_11[_e3931];
-                            let _e3935 = local_392;
-                            let _e3936 = local_385;
-                            local_397 = bitcast<u32>((bitcast<f32>(_e3933) + (_e3935 * _e3936)));
-                            let _e3940 = local_396;
-                            if _e3940 {
+                            let _e3950 = local_395;
+                            let _e3952 = global_11[_e3950];
+                            let _e3954 = local_392;
+                            let _e3955 = local_385;
+                            local_397 = bitcast<u32>((bitcast<f32>(_e3952) + (_e3954 * _e3955)));
+                            let _e3959 = local_396;
+                            if _e3959 {
                             } else {
                                 break;
                             }
-                            let _e3941 = local_397;
-                            global_11[_e3931] = _e3941;
-                            let _e3942 = local;
-                            let _e3943 = (512u + _e3942);
-                            local_398 = _e3943;
-                            let _e3944 = (_e3943 < 5888u);
-                            local_399 = _e3944;
-                            if _e3944 {
+                            let _e3960 = local_397;
+                            global_11[_e3950] = _e3960;
+                            let _e3961 = local;
+                            let _e3962 = (512u + _e3961);
+                            local_398 = _e3962;
+                            let _e3963 = (_e3962 < 5888u);
+                            local_399 = _e3963;
+                            if _e3963 {
                             } else {
                                 break;
                             }
-                            let _e3945 = local_398;
-                            let _e3947 = global_11[_e3945];
-                            let _e3949 = local_392;
-                            let _e3950 = local_387;
-                            local_400 = bitcast<u32>((bitcast<f32>(_e3947) + (_e3949 * _e3950)));
-                            let _e3954 = local_399;
-                            if _e3954 {
+                            let _e3964 = local_398;
+                            let _e3966 = global_11[_e3964];
+                            let _e3968 = local_392;
+                            let _e3969 = local_387;
+                            local_400 = bitcast<u32>((bitcast<f32>(_e3966) + (_e3968 * _e3969)));
+                            let _e3973 = local_399;
+                            if _e3973 {
                             } else {
                                 break;
                             }
-                            let _e3955 = local_400;
-                            global_11[_e3945] = _e3955;
-                            let _e3956 = local_391;
-                            if _e3956 {
+                            let _e3974 = local_400;
+                            global_11[_e3964] = _e3974;
+                            let _e3975 = local_391;
+                            if _e3975 {
                             } else {
                                 break;
                             }
-                            let _e3957 = global_11[_e3904];
-                            let _e3959 = local_392;
-                            local_401 = bitcast<u32>((bitcast<f32>(_e3957) + _e3959));
-                            let _e3962 = local_391;
-                            if _e3962 {
+                            let _e3976 = global_11[_e3923];
+                            let _e3978 = local_392;
+                            local_401 = bitcast<u32>((bitcast<f32>(_e3976) + _e3978));
+                            let _e3981 = local_391;
+                            if _e3981 {
                             } else {
                                 break;
                             }
-                            let _e3963 = local_401;
-                            global_11[_e3904] = _e3963;
+                            let _e3982 = local_401;
+                            global_11[_e3923] = _e3982;
                         }
                     }
-                    let _e3964 = local_391;
-                    if _e3964 {
+                    let _e3983 = local_391;
+                    if _e3983 {
                     } else {
                         break;
                     }
-                    let _e3965 = global_11[_e3904];
-                    let _e3966 = bitcast<f32>(_e3965);
-                    local_402 = _e3966;
-                    if (_e3966 > 0.000001f) {
-                        let _e3968 = local_402;
-                        phi_4263_ = (1f / _e3968);
+                    let _e3984 = global_11[_e3923];
+                    let _e3985 = bitcast<f32>(_e3984);
+                    local_402 = _e3985;
+                    if (_e3985 > 0.000001f) {
+                        let _e3987 = local_402;
+                        phi_4263_ = (1f / _e3987);
                     } else {
                         phi_4263_ = 0f;
                     }
-                    let _e3971 = phi_4263_;
-                    local_403 = _e3971;
-                    let _e3972 = local;
-                    if (_e3972 < 5888u) {
+                    let _e3990 = phi_4263_;
+                    local_403 = _e3990;
+                    let _e3991 = local;
+                    if (_e3991 < 5888u) {
                     } else {
                         break;
                     }
-                    let _e3974 = local;
-                    let _e3976 = global_11[_e3974];
-                    let _e3978 = local_403;
-                    local_404 = (bitcast<f32>(_e3976) * _e3978);
-                    let _e3980 = local;
-                    let _e3981 = (256u + _e3980);
-                    local_405 = _e3981;
-                    if (_e3981 < 5888u) {
+                    let _e3993 = local;
+                    let _e3995 = global_11[_e3993];
+                    let _e3997 = local_403;
+                    local_404 = (bitcast<f32>(_e3995) * _e3997);
+                    let _e3999 = local;
+                    let _e4000 = (256u + _e3999);
+                    local_405 = _e4000;
+                    if (_e4000 < 5888u) {
                     } else {
                         break;
                     }
-                    let _e3983 = local_405;
-                    let _e3985 = global_11[_e3983];
-                    let _e3987 = local_403;
-                    local_406 = (bitcast<f32>(_e3985) * _e3987);
-                    let _e3989 = local;
-                    let _e3990 = (512u + _e3989);
-                    local_407 = _e3990;
-                    if (_e3990 < 5888u) {
+                    let _e4002 = local_405;
+                    let _e4004 = global_11[_e4002];
+                    let _e4006 = local_403;
+                    local_406 = (bitcast<f32>(_e4004) * _e4006);
+                    let _e4008 = local;
+                    let _e4009 = (512u + _e4008);
+                    local_407 = _e4009;
+                    if (_e4009 < 5888u) {
                     } else {
                         break;
                     }
-                    let _e3992 = local_407;
-                    let _e3994 = global_11[_e3992];
-                    let _e3996 = local_403;
-                    local_408 = (bitcast<f32>(_e3994) * _e3996);
-                    let _e3998 = local_381;
-                    let _e3999 = (3u * _e3998);
-                    local_409 = _e3999;
-                    let _e4000 = local_404;
-                    local_410 = bitcast<u32>(_e4000);
-                    let _e4002 = local_6;
-                    if (_e3999 < _e4002) {
+                    let _e4011 = local_407;
+                    let _e4013 = global_11[_e4011];
+                    let _e4015 = local_403;
+                    local_408 = (bitcast<f32>(_e4013) * _e4015);
+                    let _e4017 = local_381;
+                    let _e4018 = (3u * _e4017);
+                    local_409 = _e4018;
+                    let _e4019 = local_404;
+                    local_410 = bitcast<u32>(_e4019);
+                    let _e4021 = local_6;
+                    if (_e4018 < _e4021) {
                     } else {
                         break;
                     }
-                    let _e4004 = local_409;
-                    let _e4007 = local_410;
-                    global_2.member[_e4004] = _e4007;
-                    let _e4008 = local_409;
-                    let _e4009 = (_e4008 + 1u);
-                    local_411 = _e4009;
-                    let _e4010 = local_406;
-                    local_412 = bitcast<u32>(_e4010);
-                    let _e4012 = local_6;
-                    if (_e4009 < _e4012) {
+                    let _e4023 = local_409;
+                    let _e4026 = local_410;
+                    global_2.member[_e4023] = _e4026;
+                    let _e4027 = local_409;
+                    let _e4028 = (_e4027 + 1u);
+                    local_411 = _e4028;
+                    let _e4029 = local_406;
+                    local_412 = bitcast<u32>(_e4029);
+                    let _e4031 = local_6;
+                    if (_e4028 < _e4031) {
                     } else {
                         break;
                     }
-                    let _e4014 = local_411;
-                    let _e4017 = local_412;
-                    global_2.member[_e4014] = _e4017;
-                    let _e4018 = local_409;
-                    let _e4019 = (_e4018 + 2u);
-                    local_413 = _e4019;
-                    let _e4020 = local_408;
-                    local_414 = bitcast<u32>(_e4020);
-                    let _e4022 = local_6;
-                    if (_e4019 < _e4022) {
+                    let _e4033 = local_411;
+                    let _e4036 = local_412;
+                    global_2.member[_e4033] = _e4036;
+                    let _e4037 = local_409;
+                    let _e4038 = (_e4037 + 2u);
+                    local_413 = _e4038;
+                    let _e4039 = local_408;
+                    local_414 = bitcast<u32>(_e4039);
+                    let _e4041 = local_6;
+                    if (_e4038 < _e4041) {
                     } else {
                         break;
                     }
-                    let _e4024 = local_413;
-                    let _e4027 = local_414;
-                    global_2.member[_e4024] = _e4027;
+                    let _e4043 = local_413;
+                    let _e4046 = local_414;
+                    global_2.member[_e4043] = _e4046;
                 }
                 storageBarrier();
                 workgroupBarrier();
@@ -4849,136 +4849,136 @@ fn function_() {
                 phi_4331_ = 0u;
                 phi_4333_ = 0u;
                 loop {
-                    let _e4029 = phi_4328_;
-                    let _e4031 = phi_4331_;
-                    let _e4033 = phi_4333_;
-                    local_415 = _e4029;
-                    local_416 = _e4031;
-                    local_417 = _e4033;
-                    let _e4034 = local;
-                    let _e4036 = local_415;
-                    let _e4037 = (_e4036 < (_e4034 + 1u));
-                    local_418 = _e4037;
-                    if _e4037 {
-                        let _e4038 = local_415;
-                        let _e4039 = (1280u + _e4038);
-                        local_419 = _e4039;
-                        if (_e4039 < 5888u) {
+                    let _e4048 = phi_4328_;
+                    let _e4050 = phi_4331_;
+                    let _e4052 = phi_4333_;
+                    local_415 = _e4048;
+                    local_416 = _e4050;
+                    local_417 = _e4052;
+                    let _e4053 = local;
+                    let _e4055 = local_415;
+                    let _e4056 = (_e4055 < (_e4053 + 1u));
+                    local_418 = _e4056;
+                    if _e4056 {
+                        let _e4057 = local_415;
+                        let _e4058 = (1280u + _e4057);
+                        local_419 = _e4058;
+                        if (_e4058 < 5888u) {
                         } else {
                             phi_5058_ = true;
                             break;
                         }
-                        let _e4041 = local_419;
-                        let _e4043 = global_11[_e4041];
-                        local_420 = _e4043;
-                        let _e4044 = local_33;
-                        if _e4044 {
+                        let _e4060 = local_419;
+                        let _e4062 = global_11[_e4060];
+                        local_420 = _e4062;
+                        let _e4063 = local_33;
+                        if _e4063 {
                             phi_5058_ = true;
                             break;
                         }
-                        let _e4045 = local_415;
-                        let _e4046 = local_441;
-                        let _e4048 = local_40;
-                        local_421 = (_e4048 + (_e4045 % _e4046));
-                        let _e4050 = local_33;
-                        if _e4050 {
+                        let _e4064 = local_415;
+                        let _e4065 = local_441;
+                        let _e4067 = local_40;
+                        local_421 = (_e4067 + (_e4064 % _e4065));
+                        let _e4069 = local_33;
+                        if _e4069 {
                             phi_5058_ = true;
                             break;
                         }
-                        let _e4051 = local_415;
-                        let _e4052 = local_441;
-                        let _e4054 = local_42;
-                        local_422 = (_e4054 + (_e4051 / _e4052));
-                        let _e4056 = local_415;
-                        let _e4057 = local_66;
-                        if (_e4056 < _e4057) {
-                            let _e4059 = local_421;
-                            let _e4060 = local_13;
-                            let _e4061 = (_e4059 < _e4060);
-                            local_423 = _e4061;
-                            if _e4061 {
-                                let _e4062 = local_422;
-                                let _e4063 = local_14;
-                                phi_4406_ = (_e4062 < _e4063);
+                        let _e4070 = local_415;
+                        let _e4071 = local_441;
+                        let _e4073 = local_42;
+                        local_422 = (_e4073 + (_e4070 / _e4071));
+                        let _e4075 = local_415;
+                        let _e4076 = local_66;
+                        if (_e4075 < _e4076) {
+                            let _e4078 = local_421;
+                            let _e4079 = local_13;
+                            let _e4080 = (_e4078 < _e4079);
+                            local_423 = _e4080;
+                            if _e4080 {
+                                let _e4081 = local_422;
+                                let _e4082 = local_14;
+                                phi_4406_ = (_e4081 < _e4082);
                             } else {
                                 phi_4406_ = bool();
                             }
-                            let _e4066 = phi_4406_;
-                            let _e4067 = local_423;
-                            phi_4408_ = _e4066;
-                            phi_4409_ = select(true, false, _e4067);
+                            let _e4085 = phi_4406_;
+                            let _e4086 = local_423;
+                            phi_4408_ = _e4085;
+                            phi_4409_ = select(true, false, _e4086);
                         } else {
                             phi_4408_ = bool();
                             phi_4409_ = true;
                         }
-                        let _e4070 = phi_4408_;
-                        let _e4072 = phi_4409_;
-                        if select(_e4070, false, _e4072) {
-                            let _e4074 = local_420;
-                            let _e4075 = local_48;
-                            if (_e4074 < _e4075) {
-                                let _e4077 = local_417;
-                                let _e4079 = local_48;
-                                let _e4080 = local_420;
-                                let _e4082 = local_416;
-                                phi_4424_ = (_e4082 + (_e4079 - _e4080));
-                                phi_4425_ = (_e4077 + 1u);
+                        let _e4089 = phi_4408_;
+                        let _e4091 = phi_4409_;
+                        if select(_e4089, false, _e4091) {
+                            let _e4093 = local_420;
+                            let _e4094 = local_48;
+                            if (_e4093 < _e4094) {
+                                let _e4096 = local_417;
+                                let _e4098 = local_48;
+                                let _e4099 = local_420;
+                                let _e4101 = local_416;
+                                phi_4424_ = (_e4101 + (_e4098 - _e4099));
+                                phi_4425_ = (_e4096 + 1u);
                             } else {
-                                phi_4424_ = _e4031;
-                                phi_4425_ = _e4033;
+                                phi_4424_ = _e4050;
+                                phi_4425_ = _e4052;
                             }
-                            let _e4085 = phi_4424_;
-                            let _e4087 = phi_4425_;
-                            phi_4426_ = _e4085;
-                            phi_4427_ = _e4087;
+                            let _e4104 = phi_4424_;
+                            let _e4106 = phi_4425_;
+                            phi_4426_ = _e4104;
+                            phi_4427_ = _e4106;
                         } else {
-                            phi_4426_ = _e4031;
-                            phi_4427_ = _e4033;
+                            phi_4426_ = _e4050;
+                            phi_4427_ = _e4052;
                         }
-                        let _e4089 = phi_4426_;
-                        let _e4091 = phi_4427_;
-                        let _e4092 = local_415;
-                        phi_4329_ = (_e4092 + 1u);
-                        phi_4332_ = _e4089;
-                        phi_4334_ = _e4091;
+                        let _e4108 = phi_4426_;
+                        let _e4110 = phi_4427_;
+                        let _e4111 = local_415;
+                        phi_4329_ = (_e4111 + 1u);
+                        phi_4332_ = _e4108;
+                        phi_4334_ = _e4110;
                     } else {
                         phi_4329_ = u32();
                         phi_4332_ = u32();
                         phi_4334_ = u32();
                     }
-                    let _e4095 = phi_4329_;
-                    let _e4097 = phi_4332_;
-                    let _e4099 = phi_4334_;
+                    let _e4114 = phi_4329_;
+                    let _e4116 = phi_4332_;
+                    let _e4118 = phi_4334_;
                     continue;
                     continuing {
-                        let _e4100 = local_418;
-                        phi_4328_ = _e4095;
-                        phi_4331_ = _e4097;
-                        phi_4333_ = _e4099;
-                        phi_5058_ = _e3842;
-                        break if !(_e4100);
+                        let _e4119 = local_418;
+                        phi_4328_ = _e4114;
+                        phi_4331_ = _e4116;
+                        phi_4333_ = _e4118;
+                        phi_5058_ = _e3861;
+                        break if !(_e4119);
                     }
                 }
-                let _e4103 = phi_5058_;
-                if _e4103 {
+                let _e4122 = phi_5058_;
+                if _e4122 {
                     break;
                 }
-                let _e4104 = local_417;
-                if (_e4104 > 0u) {
-                    let _e4106 = local_7;
-                    if (9u < _e4106) {
+                let _e4123 = local_417;
+                if (_e4123 > 0u) {
+                    let _e4125 = local_7;
+                    if (9u < _e4125) {
                     } else {
                         break;
                     }
-                    let _e4110 = local_417;
-                    let _e4111 = atomicAdd((&global_9.member[9u]), _e4110);
-                    let _e4112 = local_7;
-                    if (10u < _e4112) {
+                    let _e4129 = local_417;
+                    let _e4130 = atomicAdd((&global_9.member[9u]), _e4129);
+                    let _e4131 = local_7;
+                    if (10u < _e4131) {
                     } else {
                         break;
                     }
-                    let _e4116 = local_416;
-                    let _e4117 = atomicAdd((&global_9.member[10u]), _e4116);
+                    let _e4135 = local_416;
+                    let _e4136 = atomicAdd((&global_9.member[10u]), _e4135);
                 }
                 storageBarrier();
                 workgroupBarrier();

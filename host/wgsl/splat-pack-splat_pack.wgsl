@@ -1567,8 +1567,8 @@ fn function_() {
                                 let _e1748 = select(true, false, _e1747);
                                 local_189 = _e1748;
                                 if _e1748 {
-                                    let _e2487 = local_193;
-                                    phi_1345_ = _e2487;
+                                    let _e2489 = local_193;
+                                    phi_1345_ = _e2489;
                                 } else {
                                     phi_1345_ = _e1746;
                                 }
@@ -1739,647 +1739,647 @@ fn function_() {
                                                         let _e1877 = local_130;
                                                         let _e1879 = local_133;
                                                         let _e1881 = local_133;
-                                                        let _e1883 = local_133;
-                                                        local_192[_e1877] = select(select(u32(_e1879), 0u, (_e1881 < 0f)), 4294967295u, (_e1883 > 4294967000f));
-                                                        let _e1887 = local_132;
-                                                        if _e1887 {
+                                                        let _e1884 = local_133;
+                                                        local_192[_e1877] = select(select(u32(_e1879), 0u, !((_e1881 >= 0f))), 4294967295u, (_e1884 > 4294967000f));
+                                                        let _e1888 = local_132;
+                                                        if _e1888 {
                                                         } else {
                                                             phi_2443_ = true;
                                                             break;
                                                         }
-                                                        let _e1888 = local_192[_e1877];
-                                                        let _e1889 = local_131;
-                                                        if (_e1888 > _e1889) {
-                                                            let _e1891 = local_132;
-                                                            if _e1891 {
+                                                        let _e1889 = local_192[_e1877];
+                                                        let _e1890 = local_131;
+                                                        if (_e1889 > _e1890) {
+                                                            let _e1892 = local_132;
+                                                            if _e1892 {
                                                             } else {
                                                                 phi_2443_ = true;
                                                                 break;
                                                             }
-                                                            let _e1892 = local_192[_e1877];
-                                                            phi_1561_ = _e1892;
+                                                            let _e1893 = local_192[_e1877];
+                                                            phi_1561_ = _e1893;
                                                         } else {
                                                             phi_1561_ = _e1866;
                                                         }
-                                                        let _e1894 = phi_1561_;
-                                                        let _e1895 = local_130;
-                                                        phi_1511_ = (_e1895 + 1u);
-                                                        phi_1514_ = _e1894;
+                                                        let _e1895 = phi_1561_;
+                                                        let _e1896 = local_130;
+                                                        phi_1511_ = (_e1896 + 1u);
+                                                        phi_1514_ = _e1895;
                                                     } else {
                                                         phi_1511_ = u32();
                                                         phi_1514_ = u32();
                                                     }
-                                                    let _e1898 = phi_1511_;
-                                                    let _e1900 = phi_1514_;
+                                                    let _e1899 = phi_1511_;
+                                                    let _e1901 = phi_1514_;
                                                     continue;
                                                     continuing {
-                                                        let _e1901 = local_132;
-                                                        phi_1510_ = _e1898;
-                                                        phi_1513_ = _e1900;
+                                                        let _e1902 = local_132;
+                                                        phi_1510_ = _e1899;
+                                                        phi_1513_ = _e1901;
                                                         phi_2443_ = _e1850;
-                                                        break if !(_e1901);
+                                                        break if !(_e1902);
                                                     }
                                                 }
-                                                let _e1904 = phi_2443_;
-                                                phi_2471_ = _e1904;
-                                                if _e1904 {
+                                                let _e1905 = phi_2443_;
+                                                phi_2471_ = _e1905;
+                                                if _e1905 {
                                                     break;
                                                 }
-                                                let _e1905 = local_131;
-                                                let _e1906 = (_e1905 <= 16383u);
-                                                local_134 = _e1906;
-                                                if _e1906 {
+                                                let _e1906 = local_131;
+                                                let _e1907 = (_e1906 <= 16383u);
+                                                local_134 = _e1907;
+                                                if _e1907 {
                                                     phi_1569_ = i32();
                                                     phi_1570_ = i32();
                                                 } else {
-                                                    let _e1907 = local_128;
-                                                    let _e1909 = local_127;
-                                                    phi_1569_ = (_e1909 + 1i);
-                                                    phi_1570_ = (_e1907 + 1i);
+                                                    let _e1908 = local_128;
+                                                    let _e1910 = local_127;
+                                                    phi_1569_ = (_e1910 + 1i);
+                                                    phi_1570_ = (_e1908 + 1i);
                                                 }
-                                                let _e1912 = phi_1569_;
-                                                let _e1914 = phi_1570_;
-                                                let _e1915 = local_134;
-                                                phi_2472_ = _e1904;
-                                                phi_1494_ = _e1912;
-                                                phi_1497_ = _e1914;
-                                                phi_1572_ = select(true, false, _e1915);
+                                                let _e1913 = phi_1569_;
+                                                let _e1915 = phi_1570_;
+                                                let _e1916 = local_134;
+                                                phi_2472_ = _e1905;
+                                                phi_1494_ = _e1913;
+                                                phi_1497_ = _e1915;
+                                                phi_1572_ = select(true, false, _e1916);
                                             } else {
                                                 phi_2472_ = _e1850;
                                                 phi_1494_ = i32();
                                                 phi_1497_ = i32();
                                                 phi_1572_ = false;
                                             }
-                                            let _e1918 = phi_2472_;
-                                            let _e1920 = phi_1494_;
-                                            let _e1922 = phi_1497_;
-                                            let _e1924 = phi_1572_;
-                                            local_135 = _e1924;
+                                            let _e1919 = phi_2472_;
+                                            let _e1921 = phi_1494_;
+                                            let _e1923 = phi_1497_;
+                                            let _e1925 = phi_1572_;
+                                            local_135 = _e1925;
                                             continue;
                                             continuing {
-                                                let _e1925 = local_135;
-                                                phi_2447_ = _e1918;
-                                                phi_1493_ = _e1920;
-                                                phi_1496_ = _e1922;
-                                                phi_2471_ = _e1918;
-                                                break if !(_e1925);
+                                                let _e1926 = local_135;
+                                                phi_2447_ = _e1919;
+                                                phi_1493_ = _e1921;
+                                                phi_1496_ = _e1923;
+                                                phi_2471_ = _e1919;
+                                                break if !(_e1926);
                                             }
                                         }
-                                        let _e1928 = phi_2471_;
-                                        phi_2474_ = _e1928;
+                                        let _e1929 = phi_2471_;
+                                        phi_2474_ = _e1929;
                                         phi_2255_ = type_28();
-                                        if _e1928 {
+                                        if _e1929 {
                                             break;
                                         }
-                                        let _e1929 = local_128;
-                                        let _e1932 = local_192;
-                                        phi_2488_ = _e1928;
-                                        phi_1586_ = type_29(array<u32, 3>(_e1932[0], _e1932[1], _e1932[2]), bitcast<u32>((_e1929 + 127i)));
+                                        let _e1930 = local_128;
+                                        let _e1933 = local_192;
+                                        phi_2488_ = _e1929;
+                                        phi_1586_ = type_29(array<u32, 3>(_e1933[0], _e1933[1], _e1933[2]), bitcast<u32>((_e1930 + 127i)));
                                     } else {
                                         phi_2488_ = _e1754;
                                         phi_1586_ = type_29(array<u32, 3>(0u, 0u, 0u), 0u);
                                     }
-                                    let _e1939 = phi_2488_;
-                                    let _e1941 = phi_1586_;
-                                    local_136 = _e1941.member_1;
-                                    let _e1949 = local_40;
-                                    local_137 = _e1949.member_12.member_4;
-                                    local_138 = ((_e1941.member[0] | (_e1941.member[1] << bitcast<u32>(14u))) | ((_e1949.member_12.member_4 & 3u) << bitcast<u32>(28i)));
-                                    local_139 = _e1941.member[2];
-                                    let _e1957 = local_40;
-                                    local_140 = _e1957.member_12.member_2;
-                                    if (_e1957.member_12.member_2 > 1f) {
+                                    let _e1940 = phi_2488_;
+                                    let _e1942 = phi_1586_;
+                                    local_136 = _e1942.member_1;
+                                    let _e1950 = local_40;
+                                    local_137 = _e1950.member_12.member_4;
+                                    local_138 = ((_e1942.member[0] | (_e1942.member[1] << bitcast<u32>(14u))) | ((_e1950.member_12.member_4 & 3u) << bitcast<u32>(28i)));
+                                    local_139 = _e1942.member[2];
+                                    let _e1958 = local_40;
+                                    local_140 = _e1958.member_12.member_2;
+                                    if (_e1958.member_12.member_2 > 1f) {
                                         phi_1608_ = 1f;
                                     } else {
-                                        let _e1961 = local_140;
-                                        let _e1963 = local_140;
-                                        phi_1608_ = select(0f, _e1963, (_e1961 > 0f));
+                                        let _e1962 = local_140;
+                                        let _e1964 = local_140;
+                                        phi_1608_ = select(0f, _e1964, (_e1962 > 0f));
                                     }
-                                    let _e1966 = phi_1608_;
-                                    let _e1968 = ((_e1966 * 1023f) + 0.5f);
-                                    let _e1976 = local_139;
-                                    let _e1978 = local_136;
-                                    local_141 = ((_e1976 | (select(select(u32(_e1968), 0u, (_e1968 < 0f)), 4294967295u, (_e1968 > 4294967000f)) << bitcast<u32>(14u))) | (_e1978 << bitcast<u32>(24i)));
-                                    let _e1982 = local_40;
-                                    local_142 = _e1982.member_12.member_3;
-                                    local_143 = bitcast<u32>(_e1982.member_12.member_3);
-                                    let _e1986 = local_40;
-                                    let _e1991 = local_40;
-                                    local_144 = ((_e1986.member_12.member[0] & 65535u) | (_e1991.member_12.member[1] << bitcast<u32>(16i)));
-                                    let _e1998 = local_119;
-                                    let _e1999 = (4u * _e1998);
-                                    local_145 = _e1999;
-                                    let _e2000 = local_5;
-                                    if (_e1999 < _e2000) {
+                                    let _e1967 = phi_1608_;
+                                    let _e1969 = ((_e1967 * 1023f) + 0.5f);
+                                    let _e1978 = local_139;
+                                    let _e1980 = local_136;
+                                    local_141 = ((_e1978 | (select(select(u32(_e1969), 0u, !((_e1969 >= 0f))), 4294967295u, (_e1969 > 4294967000f)) << bitcast<u32>(14u))) | (_e1980 << bitcast<u32>(24i)));
+                                    let _e1984 = local_40;
+                                    local_142 = _e1984.member_12.member_3;
+                                    local_143 = bitcast<u32>(_e1984.member_12.member_3);
+                                    let _e1988 = local_40;
+                                    let _e1993 = local_40;
+                                    local_144 = ((_e1988.member_12.member[0] & 65535u) | (_e1993.member_12.member[1] << bitcast<u32>(16i)));
+                                    let _e2000 = local_119;
+                                    let _e2001 = (4u * _e2000);
+                                    local_145 = _e2001;
+                                    let _e2002 = local_5;
+                                    if (_e2001 < _e2002) {
                                     } else {
                                         phi_2474_ = true;
                                         phi_2255_ = type_28();
                                         break;
                                     }
-                                    let _e2002 = local_145;
-                                    let _e2005 = local_138;
-                                    atomicStore((&global_8.member[_e2002]), _e2005);
-                                    let _e2006 = local_145;
-                                    let _e2007 = (_e2006 + 1u);
-                                    local_146 = _e2007;
-                                    let _e2008 = local_5;
-                                    if (_e2007 < _e2008) {
+                                    let _e2004 = local_145;
+                                    let _e2007 = local_138;
+                                    atomicStore((&global_8.member[_e2004]), _e2007);
+                                    let _e2008 = local_145;
+                                    let _e2009 = (_e2008 + 1u);
+                                    local_146 = _e2009;
+                                    let _e2010 = local_5;
+                                    if (_e2009 < _e2010) {
                                     } else {
                                         phi_2474_ = true;
                                         phi_2255_ = type_28();
                                         break;
                                     }
-                                    let _e2010 = local_146;
-                                    let _e2013 = local_141;
-                                    atomicStore((&global_8.member[_e2010]), _e2013);
-                                    let _e2014 = local_145;
-                                    let _e2015 = (_e2014 + 2u);
-                                    local_147 = _e2015;
-                                    let _e2016 = local_5;
-                                    if (_e2015 < _e2016) {
+                                    let _e2012 = local_146;
+                                    let _e2015 = local_141;
+                                    atomicStore((&global_8.member[_e2012]), _e2015);
+                                    let _e2016 = local_145;
+                                    let _e2017 = (_e2016 + 2u);
+                                    local_147 = _e2017;
+                                    let _e2018 = local_5;
+                                    if (_e2017 < _e2018) {
                                     } else {
                                         phi_2474_ = true;
                                         phi_2255_ = type_28();
                                         break;
                                     }
-                                    let _e2018 = local_147;
-                                    let _e2021 = local_143;
-                                    atomicStore((&global_8.member[_e2018]), _e2021);
-                                    let _e2022 = local_145;
-                                    let _e2023 = (_e2022 + 3u);
-                                    local_148 = _e2023;
-                                    let _e2024 = local_5;
-                                    if (_e2023 < _e2024) {
+                                    let _e2020 = local_147;
+                                    let _e2023 = local_143;
+                                    atomicStore((&global_8.member[_e2020]), _e2023);
+                                    let _e2024 = local_145;
+                                    let _e2025 = (_e2024 + 3u);
+                                    local_148 = _e2025;
+                                    let _e2026 = local_5;
+                                    if (_e2025 < _e2026) {
                                     } else {
                                         phi_2474_ = true;
                                         phi_2255_ = type_28();
                                         break;
                                     }
-                                    let _e2026 = local_148;
-                                    let _e2029 = local_144;
-                                    atomicStore((&global_8.member[_e2026]), _e2029);
-                                    let _e2030 = local_18;
-                                    let _e2033 = ((_e2030 >> bitcast<u32>(8u)) & 7u);
-                                    local_149 = _e2033;
-                                    if (_e2033 > 0u) {
-                                        let _e2035 = local_40;
-                                        local_150 = _e2035.member_12.member_5;
-                                        if (_e2035.member_12.member_5 != 0u) {
-                                            let _e2039 = local_149;
-                                            let _e2040 = local_149;
-                                            let _e2041 = (_e2039 * _e2040);
-                                            local_151 = _e2041;
-                                            if (_e2041 <= 1u) {
+                                    let _e2028 = local_148;
+                                    let _e2031 = local_144;
+                                    atomicStore((&global_8.member[_e2028]), _e2031);
+                                    let _e2032 = local_18;
+                                    let _e2035 = ((_e2032 >> bitcast<u32>(8u)) & 7u);
+                                    local_149 = _e2035;
+                                    if (_e2035 > 0u) {
+                                        let _e2037 = local_40;
+                                        local_150 = _e2037.member_12.member_5;
+                                        if (_e2037.member_12.member_5 != 0u) {
+                                            let _e2041 = local_149;
+                                            let _e2042 = local_149;
+                                            let _e2043 = (_e2041 * _e2042);
+                                            local_151 = _e2043;
+                                            if (_e2043 <= 1u) {
                                                 phi_1713_ = 1u;
                                             } else {
-                                                let _e2043 = local_151;
-                                                phi_1713_ = select(16u, 4u, (_e2043 <= 4u));
+                                                let _e2045 = local_151;
+                                                phi_1713_ = select(16u, 4u, (_e2045 <= 4u));
                                             }
-                                            let _e2047 = phi_1713_;
-                                            local_152 = _e2047;
-                                            if (_e2047 == 0u) {
+                                            let _e2049 = phi_1713_;
+                                            local_152 = _e2049;
+                                            if (_e2049 == 0u) {
                                                 phi_2474_ = true;
                                                 phi_2255_ = type_28();
                                                 break;
                                             }
-                                            let _e2049 = local_152;
-                                            local_153 = (32u / _e2049);
                                             let _e2051 = local_152;
-                                            if (_e2051 >= 32u) {
+                                            local_153 = (32u / _e2051);
+                                            let _e2053 = local_152;
+                                            if (_e2053 >= 32u) {
                                                 phi_1726_ = 4294967295u;
                                             } else {
-                                                let _e2053 = local_152;
-                                                phi_1726_ = ((1u << bitcast<u32>((_e2053 & 31u))) - 1u);
+                                                let _e2055 = local_152;
+                                                phi_1726_ = ((1u << bitcast<u32>((_e2055 & 31u))) - 1u);
                                             }
-                                            let _e2059 = phi_1726_;
-                                            local_154 = _e2059;
-                                            let _e2060 = local_16;
-                                            let _e2061 = local_17;
-                                            let _e2063 = local_15;
+                                            let _e2061 = phi_1726_;
+                                            local_154 = _e2061;
+                                            let _e2062 = local_16;
+                                            let _e2063 = local_17;
                                             let _e2065 = local_15;
-                                            let _e2067 = local_12;
-                                            local_155 = (4u * ((((_e2060 * _e2061) * _e2063) * _e2065) * _e2067));
-                                            let _e2070 = local_153;
-                                            let _e2071 = (_e2070 == 0u);
-                                            local_156 = _e2071;
-                                            if _e2071 {
+                                            let _e2067 = local_15;
+                                            let _e2069 = local_12;
+                                            local_155 = (4u * ((((_e2062 * _e2063) * _e2065) * _e2067) * _e2069));
+                                            let _e2072 = local_153;
+                                            let _e2073 = (_e2072 == 0u);
+                                            local_156 = _e2073;
+                                            if _e2073 {
                                                 phi_2474_ = true;
                                                 phi_2255_ = type_28();
                                                 break;
                                             }
-                                            let _e2072 = local_119;
-                                            let _e2073 = local_153;
-                                            let _e2075 = local_155;
-                                            local_157 = (_e2075 + (_e2072 / _e2073));
-                                            let _e2077 = local_156;
-                                            if _e2077 {
+                                            let _e2074 = local_119;
+                                            let _e2075 = local_153;
+                                            let _e2077 = local_155;
+                                            local_157 = (_e2077 + (_e2074 / _e2075));
+                                            let _e2079 = local_156;
+                                            if _e2079 {
                                                 phi_2474_ = true;
                                                 phi_2255_ = type_28();
                                                 break;
                                             }
-                                            let _e2078 = local_119;
-                                            let _e2079 = local_153;
-                                            let _e2081 = local_152;
-                                            let _e2083 = local_150;
-                                            let _e2084 = local_154;
-                                            local_158 = ((_e2083 & _e2084) << bitcast<u32>((((_e2078 % _e2079) * _e2081) & 31u)));
-                                            let _e2089 = local_157;
-                                            let _e2090 = local_5;
-                                            if (_e2089 < _e2090) {
+                                            let _e2080 = local_119;
+                                            let _e2081 = local_153;
+                                            let _e2083 = local_152;
+                                            let _e2085 = local_150;
+                                            let _e2086 = local_154;
+                                            local_158 = ((_e2085 & _e2086) << bitcast<u32>((((_e2080 % _e2081) * _e2083) & 31u)));
+                                            let _e2091 = local_157;
+                                            let _e2092 = local_5;
+                                            if (_e2091 < _e2092) {
                                             } else {
                                                 phi_2474_ = true;
                                                 phi_2255_ = type_28();
                                                 break;
                                             }
-                                            let _e2092 = local_157;
-                                            let _e2095 = local_158;
-                                            let _e2096 = atomicAdd((&global_8.member[_e2092]), _e2095);
+                                            let _e2094 = local_157;
+                                            let _e2097 = local_158;
+                                            let _e2098 = atomicAdd((&global_8.member[_e2094]), _e2097);
                                         }
                                     }
-                                    let _e2097 = local_40;
-                                    if (_e2097.member_12.member_5 != 0u) {
+                                    let _e2099 = local_40;
+                                    if (_e2099.member_12.member_5 != 0u) {
                                         phi_1786_ = 1.4142135f;
                                     } else {
-                                        let _e2101 = local_137;
-                                        phi_1786_ = (0.5f * f32((1u << bitcast<u32>((_e2101 & 31u)))));
+                                        let _e2103 = local_137;
+                                        phi_1786_ = (0.5f * f32((1u << bitcast<u32>((_e2103 & 31u)))));
                                     }
-                                    let _e2108 = phi_1786_;
-                                    local_159 = _e2108;
-                                    let _e2109 = local_143;
-                                    if (_e2109 == 2139095040u) {
-                                        let _e2144 = local_20;
-                                        let _e2146 = local_19;
-                                        let _e2148 = local_21;
-                                        let _e2149 = local_19;
-                                        let _e2152 = local_22;
-                                        phi_1852_ = (0.5f * ((((2f * _e2144) * _e2146) / (_e2148 - _e2149)) * _e2152));
+                                    let _e2110 = phi_1786_;
+                                    local_159 = _e2110;
+                                    let _e2111 = local_143;
+                                    if (_e2111 == 2139095040u) {
+                                        let _e2146 = local_20;
+                                        let _e2148 = local_19;
+                                        let _e2150 = local_21;
+                                        let _e2151 = local_19;
+                                        let _e2154 = local_22;
+                                        phi_1852_ = (0.5f * ((((2f * _e2146) * _e2148) / (_e2150 - _e2151)) * _e2154));
                                     } else {
-                                        let _e2111 = local_143;
-                                        if (_e2111 == 0u) {
+                                        let _e2113 = local_143;
+                                        if (_e2113 == 0u) {
                                             phi_1815_ = false;
                                         } else {
-                                            let _e2113 = local_143;
-                                            phi_1815_ = (_e2113 <= 2139095040u);
+                                            let _e2115 = local_143;
+                                            phi_1815_ = (_e2115 <= 2139095040u);
                                         }
-                                        let _e2116 = phi_1815_;
-                                        if _e2116 {
-                                            let _e2117 = local_20;
-                                            let _e2119 = local_19;
-                                            let _e2121 = local_21;
-                                            let _e2122 = local_19;
-                                            let _e2125 = local_22;
-                                            let _e2126 = ((((2f * _e2117) * _e2119) / (_e2121 - _e2122)) * _e2125);
-                                            local_160 = _e2126;
-                                            if (_e2126 == 0f) {
+                                        let _e2118 = phi_1815_;
+                                        if _e2118 {
+                                            let _e2119 = local_20;
+                                            let _e2121 = local_19;
+                                            let _e2123 = local_21;
+                                            let _e2124 = local_19;
+                                            let _e2127 = local_22;
+                                            let _e2128 = ((((2f * _e2119) * _e2121) / (_e2123 - _e2124)) * _e2127);
+                                            local_160 = _e2128;
+                                            if (_e2128 == 0f) {
                                                 phi_1843_ = 0f;
                                             } else {
-                                                let _e2128 = local_21;
-                                                let _e2129 = local_142;
-                                                let _e2132 = local_160;
-                                                phi_1843_ = (_e2132 * (1f - (_e2128 / _e2129)));
+                                                let _e2130 = local_21;
+                                                let _e2131 = local_142;
+                                                let _e2134 = local_160;
+                                                phi_1843_ = (_e2134 * (1f - (_e2130 / _e2131)));
                                             }
-                                            let _e2135 = phi_1843_;
-                                            phi_1844_ = _e2135;
+                                            let _e2137 = phi_1843_;
+                                            phi_1844_ = _e2137;
                                         } else {
                                             phi_1844_ = _e273;
                                         }
-                                        let _e2137 = phi_1844_;
-                                        local_161 = _e2137;
-                                        if (_e2137 < 0f) {
-                                            let _e2139 = local_161;
-                                            phi_1850_ = -(_e2139);
+                                        let _e2139 = phi_1844_;
+                                        local_161 = _e2139;
+                                        if (_e2139 < 0f) {
+                                            let _e2141 = local_161;
+                                            phi_1850_ = -(_e2141);
                                         } else {
-                                            phi_1850_ = _e2137;
+                                            phi_1850_ = _e2139;
                                         }
-                                        let _e2142 = phi_1850_;
-                                        phi_1852_ = (0.5f * _e2142);
+                                        let _e2144 = phi_1850_;
+                                        phi_1852_ = (0.5f * _e2144);
                                     }
-                                    let _e2156 = phi_1852_;
-                                    let _e2161 = local_159;
-                                    let _e2162 = (select(_e2156, 0f, ((bitcast<u32>(_e2156) & 2147483647u) > 2139095040u)) + _e2161);
-                                    let _e2163 = local_10;
+                                    let _e2158 = phi_1852_;
+                                    let _e2163 = local_159;
+                                    let _e2164 = (select(_e2158, 0f, ((bitcast<u32>(_e2158) & 2147483647u) > 2139095040u)) + _e2163);
                                     let _e2165 = local_10;
                                     let _e2167 = local_10;
-                                    let _e2168 = select(_e2167, _e2162, (_e2162 < _e2165));
-                                    let _e2170 = select(0.5f, _e2168, (_e2168 > 0.5f));
-                                    let _e2171 = local_41;
+                                    let _e2169 = local_10;
+                                    let _e2170 = select(_e2169, _e2164, (_e2164 < _e2167));
+                                    let _e2172 = select(0.5f, _e2170, (_e2170 > 0.5f));
                                     let _e2173 = local_41;
-                                    let _e2176 = local_42;
-                                    phi_2476_ = _e1939;
-                                    phi_1879_ = select(_e2173, _e2170, (_e2170 > _e2171));
-                                    phi_1880_ = (_e2176 + select(0u, 1u, (_e2162 > _e2163)));
+                                    let _e2175 = local_41;
+                                    let _e2178 = local_42;
+                                    phi_2476_ = _e1940;
+                                    phi_1879_ = select(_e2175, _e2172, (_e2172 > _e2173));
+                                    phi_1880_ = (_e2178 + select(0u, 1u, (_e2164 > _e2165)));
                                 } else {
                                     phi_2476_ = _e1754;
                                     phi_1879_ = _e417;
                                     phi_1880_ = _e419;
                                 }
-                                let _e2179 = phi_2476_;
-                                let _e2181 = phi_1879_;
-                                let _e2183 = phi_1880_;
-                                let _e2184 = local_43;
-                                phi_2475_ = _e2179;
-                                phi_404_ = _e2181;
-                                phi_406_ = _e2183;
-                                phi_408_ = (_e2184 + 1u);
+                                let _e2181 = phi_2476_;
+                                let _e2183 = phi_1879_;
+                                let _e2185 = phi_1880_;
+                                let _e2186 = local_43;
+                                phi_2475_ = _e2181;
+                                phi_404_ = _e2183;
+                                phi_406_ = _e2185;
+                                phi_408_ = (_e2186 + 1u);
                             } else {
                                 phi_2475_ = _e1754;
                                 phi_404_ = f32();
                                 phi_406_ = u32();
                                 phi_408_ = u32();
                             }
-                            let _e2187 = phi_2475_;
-                            let _e2189 = phi_404_;
-                            let _e2191 = phi_406_;
-                            let _e2193 = phi_408_;
+                            let _e2189 = phi_2475_;
+                            let _e2191 = phi_404_;
+                            let _e2193 = phi_406_;
+                            let _e2195 = phi_408_;
                             continue;
                             continuing {
-                                let _e2194 = local_118;
-                                phi_2427_ = _e2187;
+                                let _e2196 = local_118;
+                                phi_2427_ = _e2189;
                                 phi_400_ = _e1756;
-                                phi_403_ = _e2189;
-                                phi_405_ = _e2191;
-                                phi_407_ = _e2193;
-                                phi_2474_ = _e2187;
+                                phi_403_ = _e2191;
+                                phi_405_ = _e2193;
+                                phi_407_ = _e2195;
+                                phi_2474_ = _e2189;
                                 phi_2255_ = _e1756;
-                                break if !(_e2194);
+                                break if !(_e2196);
                             }
                         }
-                        let _e2197 = phi_2474_;
-                        let _e2199 = phi_2255_;
-                        local_185 = _e2199;
-                        phi_2495_ = _e2197;
-                        if _e2197 {
+                        let _e2199 = phi_2474_;
+                        let _e2201 = phi_2255_;
+                        local_185 = _e2201;
+                        phi_2495_ = _e2199;
+                        if _e2199 {
                             break;
                         }
-                        let _e2200 = local_185;
-                        local_162 = _e2200.member_5;
-                        let _e2202 = (_e2200.member_5 == 1u);
-                        local_163 = _e2202;
-                        if _e2202 {
+                        let _e2202 = local_185;
+                        local_162 = _e2202.member_5;
+                        let _e2204 = (_e2202.member_5 == 1u);
+                        local_163 = _e2204;
+                        if _e2204 {
                             phi_1889_ = true;
                         } else {
-                            let _e2203 = local_162;
-                            phi_1889_ = (_e2203 == 2u);
+                            let _e2205 = local_162;
+                            phi_1889_ = (_e2205 == 2u);
                         }
-                        let _e2206 = phi_1889_;
-                        if _e2206 {
-                            let _e2235 = local_185;
-                            local_164 = _e2235.member.member;
-                            let _e2238 = local_185;
-                            local_165 = _e2238.member_6;
-                            let _e2240 = local_27;
-                            let _e2241 = (4u * _e2240);
-                            local_166 = _e2241;
-                            local_167 = bitcast<u32>(_e2235.member.member[0]);
-                            let _e2244 = local_4;
-                            if (_e2241 < _e2244) {
+                        let _e2208 = phi_1889_;
+                        if _e2208 {
+                            let _e2237 = local_185;
+                            local_164 = _e2237.member.member;
+                            let _e2240 = local_185;
+                            local_165 = _e2240.member_6;
+                            let _e2242 = local_27;
+                            let _e2243 = (4u * _e2242);
+                            local_166 = _e2243;
+                            local_167 = bitcast<u32>(_e2237.member.member[0]);
+                            let _e2246 = local_4;
+                            if (_e2243 < _e2246) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2246 = local_166;
-                            let _e2249 = local_167;
-                            global_7.member[_e2246] = _e2249;
-                            let _e2250 = local_166;
-                            let _e2251 = (_e2250 + 1u);
-                            local_168 = _e2251;
-                            let _e2252 = local_164;
-                            local_169 = bitcast<u32>(_e2252[1]);
-                            let _e2255 = local_4;
-                            if (_e2251 < _e2255) {
+                            let _e2248 = local_166;
+                            let _e2251 = local_167;
+                            global_7.member[_e2248] = _e2251;
+                            let _e2252 = local_166;
+                            let _e2253 = (_e2252 + 1u);
+                            local_168 = _e2253;
+                            let _e2254 = local_164;
+                            local_169 = bitcast<u32>(_e2254[1]);
+                            let _e2257 = local_4;
+                            if (_e2253 < _e2257) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2257 = local_168;
-                            let _e2260 = local_169;
-                            global_7.member[_e2257] = _e2260;
-                            let _e2261 = local_166;
-                            let _e2262 = (_e2261 + 2u);
-                            local_170 = _e2262;
-                            let _e2263 = local_164;
-                            local_171 = bitcast<u32>(_e2263[2]);
-                            let _e2266 = local_4;
-                            if (_e2262 < _e2266) {
+                            let _e2259 = local_168;
+                            let _e2262 = local_169;
+                            global_7.member[_e2259] = _e2262;
+                            let _e2263 = local_166;
+                            let _e2264 = (_e2263 + 2u);
+                            local_170 = _e2264;
+                            let _e2265 = local_164;
+                            local_171 = bitcast<u32>(_e2265[2]);
+                            let _e2268 = local_4;
+                            if (_e2264 < _e2268) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2268 = local_170;
-                            let _e2271 = local_171;
-                            global_7.member[_e2268] = _e2271;
-                            let _e2272 = local_166;
-                            let _e2273 = (_e2272 + 3u);
-                            local_172 = _e2273;
-                            let _e2274 = local_165;
-                            local_173 = bitcast<u32>(_e2274);
-                            let _e2276 = local_4;
-                            if (_e2273 < _e2276) {
+                            let _e2270 = local_170;
+                            let _e2273 = local_171;
+                            global_7.member[_e2270] = _e2273;
+                            let _e2274 = local_166;
+                            let _e2275 = (_e2274 + 3u);
+                            local_172 = _e2275;
+                            let _e2276 = local_165;
+                            local_173 = bitcast<u32>(_e2276);
+                            let _e2278 = local_4;
+                            if (_e2275 < _e2278) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2278 = local_172;
-                            let _e2281 = local_173;
-                            global_7.member[_e2278] = _e2281;
+                            let _e2280 = local_172;
+                            let _e2283 = local_173;
+                            global_7.member[_e2280] = _e2283;
                         } else {
-                            let _e2207 = local_27;
-                            let _e2208 = (4u * _e2207);
-                            local_174 = _e2208;
-                            let _e2209 = local_4;
-                            if (_e2208 < _e2209) {
+                            let _e2209 = local_27;
+                            let _e2210 = (4u * _e2209);
+                            local_174 = _e2210;
+                            let _e2211 = local_4;
+                            if (_e2210 < _e2211) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2211 = local_174;
-                            global_7.member[_e2211] = 0u;
-                            let _e2214 = local_174;
-                            let _e2215 = (_e2214 + 1u);
-                            local_175 = _e2215;
-                            let _e2216 = local_4;
-                            if (_e2215 < _e2216) {
+                            let _e2213 = local_174;
+                            global_7.member[_e2213] = 0u;
+                            let _e2216 = local_174;
+                            let _e2217 = (_e2216 + 1u);
+                            local_175 = _e2217;
+                            let _e2218 = local_4;
+                            if (_e2217 < _e2218) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2218 = local_175;
-                            global_7.member[_e2218] = 0u;
-                            let _e2221 = local_174;
-                            let _e2222 = (_e2221 + 2u);
-                            local_176 = _e2222;
-                            let _e2223 = local_4;
-                            if (_e2222 < _e2223) {
+                            let _e2220 = local_175;
+                            global_7.member[_e2220] = 0u;
+                            let _e2223 = local_174;
+                            let _e2224 = (_e2223 + 2u);
+                            local_176 = _e2224;
+                            let _e2225 = local_4;
+                            if (_e2224 < _e2225) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2225 = local_176;
-                            global_7.member[_e2225] = 0u;
-                            let _e2228 = local_174;
-                            let _e2229 = (_e2228 + 3u);
-                            local_177 = _e2229;
-                            let _e2230 = local_4;
-                            if (_e2229 < _e2230) {
+                            let _e2227 = local_176;
+                            global_7.member[_e2227] = 0u;
+                            let _e2230 = local_174;
+                            let _e2231 = (_e2230 + 3u);
+                            local_177 = _e2231;
+                            let _e2232 = local_4;
+                            if (_e2231 < _e2232) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2232 = local_177;
-                            global_7.member[_e2232] = 2143289344u;
+                            let _e2234 = local_177;
+                            global_7.member[_e2234] = 2143289344u;
                         }
-                        let _e2282 = local_13;
-                        if (_e2282 == 1u) {
-                            let _e2284 = local_27;
-                            let _e2285 = local_3;
-                            if (_e2284 < _e2285) {
+                        let _e2284 = local_13;
+                        if (_e2284 == 1u) {
+                            let _e2286 = local_27;
+                            let _e2287 = local_3;
+                            if (_e2286 < _e2287) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2287 = local_27;
-                            let _e2290 = local_43;
-                            global_6.member[_e2287] = _e2290;
-                            let _e2291 = local_23;
-                            let _e2292 = local_27;
-                            let _e2293 = (_e2291 + _e2292);
-                            local_178 = _e2293;
-                            let _e2294 = local_41;
-                            local_179 = bitcast<u32>(_e2294);
-                            let _e2296 = local_3;
-                            if (_e2293 < _e2296) {
+                            let _e2289 = local_27;
+                            let _e2292 = local_43;
+                            global_6.member[_e2289] = _e2292;
+                            let _e2293 = local_23;
+                            let _e2294 = local_27;
+                            let _e2295 = (_e2293 + _e2294);
+                            local_178 = _e2295;
+                            let _e2296 = local_41;
+                            local_179 = bitcast<u32>(_e2296);
+                            let _e2298 = local_3;
+                            if (_e2295 < _e2298) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2298 = local_178;
-                            let _e2301 = local_179;
-                            global_6.member[_e2298] = _e2301;
-                            let _e2302 = local_42;
-                            if (_e2302 > 0u) {
-                                let _e2304 = local_6;
-                                if (6u < _e2304) {
+                            let _e2300 = local_178;
+                            let _e2303 = local_179;
+                            global_6.member[_e2300] = _e2303;
+                            let _e2304 = local_42;
+                            if (_e2304 > 0u) {
+                                let _e2306 = local_6;
+                                if (6u < _e2306) {
                                 } else {
                                     phi_2495_ = true;
                                     break;
                                 }
-                                let _e2308 = local_42;
-                                let _e2309 = atomicAdd((&global_9.member[6u]), _e2308);
+                                let _e2310 = local_42;
+                                let _e2311 = atomicAdd((&global_9.member[6u]), _e2310);
                             }
                         }
-                        let _e2310 = local_185;
-                        if (_e2310.member_2 == 0u) {
-                            let _e2313 = local_6;
-                            if (2u < _e2313) {
+                        let _e2312 = local_185;
+                        if (_e2312.member_2 == 0u) {
+                            let _e2315 = local_6;
+                            if (2u < _e2315) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2317 = atomicAdd((&global_9.member[2u]), 1u);
+                            let _e2319 = atomicAdd((&global_9.member[2u]), 1u);
                         }
-                        let _e2318 = local_163;
-                        if _e2318 {
+                        let _e2320 = local_163;
+                        if _e2320 {
                             phi_2112_ = true;
                         } else {
-                            let _e2319 = local_162;
-                            phi_2112_ = (_e2319 == 2u);
+                            let _e2321 = local_162;
+                            phi_2112_ = (_e2321 == 2u);
                         }
-                        let _e2322 = phi_2112_;
-                        if _e2322 {
-                            let _e2323 = local_6;
-                            if (11u < _e2323) {
+                        let _e2324 = phi_2112_;
+                        if _e2324 {
+                            let _e2325 = local_6;
+                            if (11u < _e2325) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2327 = atomicAdd((&global_9.member[11u]), 1u);
+                            let _e2329 = atomicAdd((&global_9.member[11u]), 1u);
                         }
-                        let _e2328 = local_185;
-                        if (_e2328.member_17 > 0u) {
-                            let _e2331 = local_6;
-                            if (21u < _e2331) {
+                        let _e2330 = local_185;
+                        if (_e2330.member_17 > 0u) {
+                            let _e2333 = local_6;
+                            if (21u < _e2333) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2335 = atomicAdd((&global_9.member[21u]), 1u);
+                            let _e2337 = atomicAdd((&global_9.member[21u]), 1u);
                         }
-                        let _e2336 = local_185;
-                        local_180 = _e2336.member_16;
-                        if (_e2336.member_16 > 0u) {
-                            let _e2339 = local_6;
-                            if (12u < _e2339) {
+                        let _e2338 = local_185;
+                        local_180 = _e2338.member_16;
+                        if (_e2338.member_16 > 0u) {
+                            let _e2341 = local_6;
+                            if (12u < _e2341) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2343 = local_180;
-                            let _e2344 = atomicAdd((&global_9.member[12u]), _e2343);
+                            let _e2345 = local_180;
+                            let _e2346 = atomicAdd((&global_9.member[12u]), _e2345);
                         }
-                        let _e2345 = local_185;
-                        local_181 = _e2345.member_13;
-                        if (_e2345.member_13 > 0u) {
-                            let _e2348 = local_6;
-                            if (0u < _e2348) {
+                        let _e2347 = local_185;
+                        local_181 = _e2347.member_13;
+                        if (_e2347.member_13 > 0u) {
+                            let _e2350 = local_6;
+                            if (0u < _e2350) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2352 = local_181;
-                            let _e2353 = atomicAdd((&global_9.member[0u]), _e2352);
+                            let _e2354 = local_181;
+                            let _e2355 = atomicAdd((&global_9.member[0u]), _e2354);
                         }
-                        let _e2354 = local_185;
-                        local_182 = _e2354.member_14;
-                        if (_e2354.member_14 > 0u) {
-                            let _e2357 = local_6;
-                            if (1u < _e2357) {
+                        let _e2356 = local_185;
+                        local_182 = _e2356.member_14;
+                        if (_e2356.member_14 > 0u) {
+                            let _e2359 = local_6;
+                            if (1u < _e2359) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2361 = local_182;
-                            let _e2362 = atomicAdd((&global_9.member[1u]), _e2361);
+                            let _e2363 = local_182;
+                            let _e2364 = atomicAdd((&global_9.member[1u]), _e2363);
                         }
-                        let _e2363 = local_185;
-                        local_183 = _e2363.member_15;
-                        if (_e2363.member_15 > 0u) {
-                            let _e2366 = local_6;
-                            if (20u < _e2366) {
+                        let _e2365 = local_185;
+                        local_183 = _e2365.member_15;
+                        if (_e2365.member_15 > 0u) {
+                            let _e2368 = local_6;
+                            if (20u < _e2368) {
                             } else {
                                 phi_2495_ = true;
                                 break;
                             }
-                            let _e2370 = local_183;
-                            let _e2371 = atomicAdd((&global_9.member[20u]), _e2370);
+                            let _e2372 = local_183;
+                            let _e2373 = atomicAdd((&global_9.member[20u]), _e2372);
                         }
-                        phi_2497_ = _e2197;
+                        phi_2497_ = _e2199;
                     } else {
                         phi_2497_ = _e334;
                     }
-                    let _e2373 = phi_2497_;
+                    let _e2375 = phi_2497_;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e2374 = local_25;
-                    let _e2375 = local_24;
-                    phi_2496_ = _e2373;
-                    phi_271_ = (_e2374 + _e2375);
+                    let _e2376 = local_25;
+                    let _e2377 = local_24;
+                    phi_2496_ = _e2375;
+                    phi_271_ = (_e2376 + _e2377);
                 } else {
                     phi_2496_ = _e334;
                     phi_271_ = u32();
                 }
-                let _e2378 = phi_2496_;
-                let _e2380 = phi_271_;
+                let _e2380 = phi_2496_;
+                let _e2382 = phi_271_;
                 continue;
                 continuing {
-                    let _e2381 = local_26;
-                    phi_2430_ = _e2378;
-                    phi_270_ = _e2380;
-                    phi_2495_ = _e2378;
-                    break if !(_e2381);
+                    let _e2383 = local_26;
+                    phi_2430_ = _e2380;
+                    phi_270_ = _e2382;
+                    phi_2495_ = _e2380;
+                    break if !(_e2383);
                 }
             }
-            let _e2384 = phi_2495_;
-            if _e2384 {
+            let _e2386 = phi_2495_;
+            if _e2386 {
                 break;
             }
             break;

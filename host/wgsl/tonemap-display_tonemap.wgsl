@@ -145,128 +145,128 @@ fn function_() {
                                     if (_e120 > 0f) {
                                         let _e122 = local_12;
                                         let _e123 = local_12;
-                                        if (_e122 != _e123) {
+                                        if !((_e122 == _e123)) {
                                             phi_278_ = true;
                                         } else {
-                                            let _e125 = local_12;
-                                            phi_278_ = (65504f <= _e125);
+                                            let _e126 = local_12;
+                                            phi_278_ = (65504f <= _e126);
                                         }
-                                        let _e128 = phi_278_;
-                                        let _e129 = local_12;
-                                        let _e130 = select(_e129, 65504f, _e128);
-                                        let _e138 = ((_e130 * ((2.51f * _e130) + 0.03f)) / ((_e130 * ((2.43f * _e130) + 0.59f)) + 0.14f));
-                                        local_13 = _e138;
-                                        if (_e138 < 0f) {
+                                        let _e129 = phi_278_;
+                                        let _e130 = local_12;
+                                        let _e131 = select(_e130, 65504f, _e129);
+                                        let _e139 = ((_e131 * ((2.51f * _e131) + 0.03f)) / ((_e131 * ((2.43f * _e131) + 0.59f)) + 0.14f));
+                                        local_13 = _e139;
+                                        if (_e139 < 0f) {
                                             phi_199_ = 0f;
                                         } else {
-                                            let _e140 = local_13;
-                                            let _e142 = local_13;
-                                            phi_199_ = select(_e142, 1f, (_e140 > 1f));
+                                            let _e141 = local_13;
+                                            let _e143 = local_13;
+                                            phi_199_ = select(_e143, 1f, (_e141 > 1f));
                                         }
-                                        let _e145 = phi_199_;
-                                        phi_200_ = _e145;
+                                        let _e146 = phi_199_;
+                                        phi_200_ = _e146;
                                     } else {
                                         phi_200_ = 0f;
                                     }
-                                    let _e147 = phi_200_;
-                                    local_14 = _e147;
-                                    if (_e147 > 0f) {
-                                        let _e149 = local_14;
-                                        if (_e149 >= 1f) {
+                                    let _e148 = phi_200_;
+                                    local_14 = _e148;
+                                    if (_e148 > 0f) {
+                                        let _e150 = local_14;
+                                        if (_e150 >= 1f) {
                                             phi_219_ = 1f;
                                         } else {
-                                            let _e151 = local_14;
-                                            if (_e151 <= 0.0031308f) {
-                                                let _e153 = local_14;
-                                                phi_218_ = (12.92f * _e153);
+                                            let _e152 = local_14;
+                                            if (_e152 <= 0.0031308f) {
+                                                let _e154 = local_14;
+                                                phi_218_ = (12.92f * _e154);
                                             } else {
-                                                let _e155 = local_14;
-                                                phi_218_ = ((1.055f * pow(_e155, 0.41666666f)) - 0.055f);
+                                                let _e156 = local_14;
+                                                phi_218_ = ((1.055f * pow(_e156, 0.41666666f)) - 0.055f);
                                             }
-                                            let _e160 = phi_218_;
-                                            phi_219_ = _e160;
+                                            let _e161 = phi_218_;
+                                            phi_219_ = _e161;
                                         }
-                                        let _e162 = phi_219_;
-                                        phi_220_ = _e162;
+                                        let _e163 = phi_219_;
+                                        phi_220_ = _e163;
                                     } else {
                                         phi_220_ = 0f;
                                     }
-                                    let _e164 = phi_220_;
-                                    phi_221_ = _e164;
+                                    let _e165 = phi_220_;
+                                    phi_221_ = _e165;
                                 }
-                                let _e166 = phi_221_;
-                                let _e167 = local_7;
-                                let _e169 = local_8;
-                                let _e170 = ((4u * _e167) + _e169);
-                                local_15 = _e170;
-                                local_16 = bitcast<u32>(_e166);
-                                let _e172 = local_2;
-                                if (_e170 < _e172) {
+                                let _e167 = phi_221_;
+                                let _e168 = local_7;
+                                let _e170 = local_8;
+                                let _e171 = ((4u * _e168) + _e170);
+                                local_15 = _e171;
+                                local_16 = bitcast<u32>(_e167);
+                                let _e173 = local_2;
+                                if (_e171 < _e173) {
                                 } else {
                                     phi_287_ = true;
                                     break;
                                 }
-                                let _e174 = local_15;
-                                let _e177 = local_16;
-                                global_5.member[_e174] = _e177;
-                                let _e178 = local_8;
-                                phi_122_ = (_e178 + 1u);
+                                let _e175 = local_15;
+                                let _e178 = local_16;
+                                global_5.member[_e175] = _e178;
+                                let _e179 = local_8;
+                                phi_122_ = (_e179 + 1u);
                             } else {
                                 phi_122_ = u32();
                             }
-                            let _e181 = phi_122_;
+                            let _e182 = phi_122_;
                             continue;
                             continuing {
-                                let _e182 = local_9;
-                                phi_121_ = _e181;
+                                let _e183 = local_9;
+                                phi_121_ = _e182;
                                 phi_287_ = _e68;
-                                break if !(_e182);
+                                break if !(_e183);
                             }
                         }
-                        let _e185 = phi_287_;
-                        phi_303_ = _e185;
-                        if _e185 {
+                        let _e186 = phi_287_;
+                        phi_303_ = _e186;
+                        if _e186 {
                             break;
                         }
-                        let _e186 = local_7;
-                        let _e188 = ((4u * _e186) + 3u);
-                        local_17 = _e188;
-                        let _e189 = local_2;
-                        if (_e188 < _e189) {
+                        let _e187 = local_7;
+                        let _e189 = ((4u * _e187) + 3u);
+                        local_17 = _e189;
+                        let _e190 = local_2;
+                        if (_e189 < _e190) {
                         } else {
                             phi_303_ = true;
                             break;
                         }
-                        let _e191 = local_17;
-                        global_5.member[_e191] = 1065353216u;
-                        phi_305_ = _e185;
+                        let _e192 = local_17;
+                        global_5.member[_e192] = 1065353216u;
+                        phi_305_ = _e186;
                     } else {
                         phi_305_ = _e68;
                     }
-                    let _e195 = phi_305_;
+                    let _e196 = phi_305_;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e196 = local_5;
-                    let _e197 = local_4;
-                    phi_304_ = _e195;
-                    phi_106_ = (_e196 + _e197);
+                    let _e197 = local_5;
+                    let _e198 = local_4;
+                    phi_304_ = _e196;
+                    phi_106_ = (_e197 + _e198);
                 } else {
                     phi_304_ = _e68;
                     phi_106_ = u32();
                 }
-                let _e200 = phi_304_;
-                let _e202 = phi_106_;
+                let _e201 = phi_304_;
+                let _e203 = phi_106_;
                 continue;
                 continuing {
-                    let _e203 = local_6;
-                    phi_293_ = _e200;
-                    phi_105_ = _e202;
-                    phi_303_ = _e200;
-                    break if !(_e203);
+                    let _e204 = local_6;
+                    phi_293_ = _e201;
+                    phi_105_ = _e203;
+                    phi_303_ = _e201;
+                    break if !(_e204);
                 }
             }
-            let _e206 = phi_303_;
-            if _e206 {
+            let _e207 = phi_303_;
+            if _e207 {
                 break;
             }
             break;

@@ -1,7 +1,8 @@
 //! The kernels' SPIR-V translated to WGSL by naga, for wgpu (Vulkan, Metal, DX12, GL, WebGPU).
 //!
-//! Two SPIR-V passes first make each module one naga can take without changing what it computes
-//! ([`non_finite`], [`cross_block`]); then naga parses it, validates it, and writes WGSL. The entry
+//! Three SPIR-V passes first make each module one naga takes, and translates without changing what
+//! it computes ([`non_finite`], [`ordered_comparisons`], [`cross_block`]); then naga parses it,
+//! validates it, and writes WGSL. The entry
 //! point is named after the kernel function alone (`splat::bin::splat_bin` → `splat_bin`; naga
 //! appends `_` to a name ending in a digit): one module holds one entry point, and WGSL has no
 //! paths.
@@ -12,12 +13,15 @@ use rspirv::binary::Assemble;
 mod cross_block;
 #[path = "non_finite.rs"]
 mod non_finite;
+#[path = "ordered_comparisons.rs"]
+mod ordered_comparisons;
 
 /// WGSL for the module of one entry point.
 pub fn translate(entry: &str, spirv: &[u8]) -> Result<String, String> {
     let words: Vec<u32> = spirv.as_chunks::<4>().0.iter().map(|w| u32::from_le_bytes(*w)).collect();
     let mut module = rspirv::dr::load_words(&words).map_err(|e| format!("{entry}: cannot load the SPIR-V: {e}"))?;
     non_finite::make_non_finite_constants_runtime(&mut module).map_err(|e| format!("{entry}: {e}"))?;
+    ordered_comparisons::order_float_comparisons(&mut module);
     cross_block::spill_cross_block_values(&mut module).map_err(|e| format!("{entry}: {e}"))?;
     let bytes: Vec<u8> = module.assemble().iter().flat_map(|w| w.to_le_bytes()).collect();
 

@@ -27,6 +27,8 @@ pub mod vulkan;
 #[cfg(feature = "wgpu")]
 pub mod wgpu;
 
+#[cfg(feature = "wgpu")]
+pub use self::wgpu::{WgpuBackend, WgpuOptions};
 pub use access::{Access, Hazards, Resource};
 pub use cpu::CpuBackend;
 #[cfg(feature = "vulkan")]
@@ -35,8 +37,6 @@ pub(crate) use image::format_names;
 pub use image::{ImageFormat, ImageRef};
 pub use retire::RetireQueue;
 pub use run::RunKernel;
-#[cfg(feature = "wgpu")]
-pub use self::wgpu::{WgpuBackend, WgpuOptions};
 #[cfg(feature = "vulkan")]
 pub use vulkan::{DRAWS_ENV, DrawPath, External, PipelineStatistic, RawDevice, RawOptions, RequiredFeatures, VulkanBackend, VulkanOptions};
 

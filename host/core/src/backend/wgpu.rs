@@ -29,7 +29,10 @@ pub struct WgpuOptions {
 
 impl Default for WgpuOptions {
     fn default() -> Self {
-        WgpuOptions { backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::all()), power_preference: wgpu::PowerPreference::HighPerformance }
+        WgpuOptions {
+            backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::all()),
+            power_preference: wgpu::PowerPreference::HighPerformance,
+        }
     }
 }
 
@@ -72,13 +75,19 @@ pub struct WgpuBackend {
 impl WgpuBackend {
     /// A device of the first adapter wgpu offers for `options`.
     pub fn new(options: &WgpuOptions) -> Result<Self> {
-        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor { backends: options.backends, ..wgpu::InstanceDescriptor::new_without_display_handle() });
+        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+            backends: options.backends,
+            ..wgpu::InstanceDescriptor::new_without_display_handle()
+        });
         let adapter_options = wgpu::RequestAdapterOptions { power_preference: options.power_preference, ..Default::default() };
         let adapter = pollster::block_on(instance.request_adapter(&adapter_options))
             .map_err(|e| Error::NoDevice(format!("wgpu offers no adapter for {:?}: {e}", options.backends)))?;
         let info = adapter.get_info();
         if !adapter.features().contains(wgpu::Features::IMMEDIATES) {
-            return Err(Error::NoDevice(format!("{} ({:?}) has no immediates (push constants), which every kernel reads", info.name, info.backend)));
+            return Err(Error::NoDevice(format!(
+                "{} ({:?}) has no immediates (push constants), which every kernel reads",
+                info.name, info.backend
+            )));
         }
         let descriptor = wgpu::DeviceDescriptor {
             label: Some("dof"),
@@ -201,13 +210,17 @@ impl WgpuBackend {
                 count: None,
             })
             .collect();
-        let layout = self.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(kernel.entry), entries: &entries });
+        let layout =
+            self.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(kernel.entry), entries: &entries });
         let pipeline_layout = self.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some(kernel.entry),
             bind_group_layouts: &[Some(&layout)],
             immediate_size: kernel.push_bytes.next_multiple_of(4),
         });
-        let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(kernel.entry), source: wgpu::ShaderSource::Wgsl(source.into()) });
+        let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(kernel.entry),
+            source: wgpu::ShaderSource::Wgsl(source.into()),
+        });
         let pipeline = self.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
             label: Some(kernel.entry),
             layout: Some(&pipeline_layout),
@@ -238,7 +251,8 @@ impl WgpuBackend {
         let pipeline = self.pipeline(kernel)?.pipeline.clone();
         let entries: Vec<wgpu::BindGroupEntry> =
             bound.iter().enumerate().map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() }).collect();
-        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout: &layout, entries: &entries });
+        let bind_group =
+            self.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout: &layout, entries: &entries });
         let immediates: Vec<u8> = bytemuck::cast_slice(push).iter().copied().take(kernel.push_bytes.next_multiple_of(4) as usize).collect();
         let encoder = self.encoder();
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(label), timestamp_writes: None });
@@ -296,7 +310,11 @@ impl Backend for WgpuBackend {
         self.release_finished()?;
         let bytes = words.max(1) * 4;
         if bytes > self.limits.max_buffer_bytes {
-            return Err(Error::TooLarge { what: format!("buffer `{label}` on {}", self.info.name), size: bytes, limit: self.limits.max_buffer_bytes });
+            return Err(Error::TooLarge {
+                what: format!("buffer `{label}` on {}", self.info.name),
+                size: bytes,
+                limit: self.limits.max_buffer_bytes,
+            });
         }
         self.counters.check_budget(self.budget, bytes, label)?;
         // wgpu zeroes new buffers.

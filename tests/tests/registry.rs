@@ -12,7 +12,7 @@ use dof::layers::LayeredImage;
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::one_shot::one_shot;
 use dof::stress::{noise_with_sky, test_lens};
-use dof_tests::{assert_clean, vulkan};
+use dof_tests::{assert_clean, vulkan, wgpu};
 
 fn create(b: &mut dyn Backend, m: &MethodInfo, extent: Extent) -> Box<dyn DofContext> {
     (m.create)(b, &ContextDesc::new(extent, MethodOptions::default())).unwrap_or_else(|e| panic!("{}: {e}", m.name))
@@ -102,6 +102,13 @@ fn every_registered_method_records_resizes_and_matches_the_one_shot_path_on_vulk
     let Some(mut vk) = vulkan() else { return };
     frames_resizes_and_one_shot(&mut vk);
     assert_clean(&mut vk);
+}
+
+#[test]
+fn every_registered_method_records_resizes_and_matches_the_one_shot_path_on_wgpu() {
+    let Some(mut g) = wgpu() else { return };
+    frames_resizes_and_one_shot(&mut g);
+    assert!(g.take_diagnostics().is_empty());
 }
 
 /// Every method's frame as a value: made once, checked, then encoded. Encoded, it gives the image

@@ -1,8 +1,10 @@
 //! The wgpu backend (on wgpu's Vulkan backend, lavapipe in CI) against the CPU backend: the
 //! backend's own commands, the sort and scan, and every method of the registry.
 
-use dof::backend::{Backend, CpuBackend};
-use dof::frame::{METHODS, MethodOptions};
+use dof::CoreError;
+use dof::backend::{Backend, CpuBackend, WgpuBackend};
+use dof::frame::{ContextDesc, CountBuffer, Extent, Frame, METHODS, MethodOptions, Reads, RgbBuffer, SlotBuffer};
+use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::one_shot::one_shot;
 use dof::methods::splat::{Merge, SplatOptions, splat_with_stages};
 use dof::ops::scan::exclusive_scan;
@@ -109,4 +111,78 @@ fn splatting_stages_match_the_cpu() {
             }
         }
     }
+}
+
+/// A renderer's device, made as a renderer makes it: wgpu's Vulkan backend, with immediates.
+fn callers_device() -> Option<(wgpu::Device, wgpu::Queue, wgpu::AdapterInfo)> {
+    wgpu()?;
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends: wgpu::Backends::VULKAN,
+        ..wgpu::InstanceDescriptor::new_without_display_handle()
+    });
+    let adapter = pollster::block_on(instance.request_adapter(&Default::default())).expect("an adapter");
+    let descriptor =
+        wgpu::DeviceDescriptor { required_features: wgpu::Features::IMMEDIATES, required_limits: adapter.limits(), ..Default::default() };
+    let (device, queue) = pollster::block_on(adapter.request_device(&descriptor)).expect("a device");
+    Some((device, queue, adapter.get_info()))
+}
+
+/// Every method recorded by a renderer into its own command encoder, on its own device and its own
+/// buffers: the frame makes, submits, uploads and reads back nothing; outside the encoder it is
+/// refused; the image is the CPU's within float rounding.
+#[test]
+fn a_renderer_records_every_method_into_its_own_encoder() {
+    let Some((device, queue, info)) = callers_device() else { return };
+    let mut backend = WgpuBackend::from_device(device.clone(), queue.clone(), info);
+    let mut cpu = CpuBackend::with_shared_bytes(backend.limits().max_shared_bytes);
+    let (w, h) = (40, 24);
+    let lens = test_lens(0.02);
+    for m in METHODS {
+        let full = noise_with_sky(w, h, 3);
+        let image = if m.reads == Reads::FrontLayer { full.front_layer() } else { full };
+        // The renderer's buffers, filled by its own queue.
+        let callers = |words: usize, data: &[u32]| {
+            let usage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::COPY_SRC;
+            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("renderer's"),
+                size: 4 * words as u64,
+                usage,
+                mapped_at_creation: false,
+            });
+            let bytes: Vec<u8> = data.iter().flat_map(|w| w.to_le_bytes()).collect();
+            queue.write_buffer(&buffer, 0, &bytes);
+            buffer
+        };
+        let slots = slot_words(&image);
+        let pixels = (w * h) as usize;
+        let bufs = [callers(slots.len(), &slots), callers(pixels, &image.counts), callers(3 * pixels, &[])];
+        let [s, c, o] = bufs.each_ref().map(|b| backend.import_buffer(b, "renderer's").unwrap());
+        let frame = Frame::layers(w, h, image.max_layers, lens, SlotBuffer::current(s), CountBuffer(c), RgbBuffer(o));
+        let mut ctx = (m.create)(&mut backend, &ContextDesc::new(Extent::new(w, h, 3), MethodOptions::default())).unwrap();
+        assert!(matches!(ctx.record(&mut backend, &frame), Err(CoreError::RecordingState(_))), "{}: a frame outside the encoder", m.name);
+
+        let before = backend.counters();
+        let mut encoder = device.create_command_encoder(&Default::default());
+        {
+            let mut recording = backend.record_into(&mut encoder).unwrap();
+            ctx.record(&mut *recording, &frame).unwrap_or_else(|e| panic!("{}: {e}", m.name));
+            assert!(matches!(recording.submit(), Err(CoreError::RecordingState(_))), "{}: a submission inside", m.name);
+        }
+        let spent = backend.counters().since(&before);
+        assert_eq!((spent.allocations, spent.submissions, spent.uploads, spent.readbacks), (0, 0, 0, 0), "{}", m.name);
+        assert!(spent.dispatches > 0, "{}: recorded into the encoder", m.name);
+        queue.submit([encoder.finish()]);
+
+        let got = read_rgb(&mut backend, o, w, h).unwrap();
+        let want = one_shot(&mut cpu, m, &MethodOptions::default(), &image, &lens).unwrap();
+        for (p, q) in got.data.iter().zip(&want.image.data) {
+            for k in 0..3 {
+                assert!((p[k] - q[k]).abs() <= 1e-5 * q[k].abs().max(1e-2), "{}: {p:?} against the CPU's {q:?}", m.name);
+            }
+        }
+        ctx.destroy(&mut backend);
+        [s, c, o].into_iter().for_each(|id| backend.destroy_buffer(id));
+    }
+    assert_eq!(backend.counters().device_bytes, 0, "every context freed, the renderer's buffers never counted");
+    assert!(backend.take_diagnostics().is_empty());
 }

@@ -7,7 +7,11 @@
 //! - `fill` with zero is the encoder's clear; another value runs the `fill_words` kernel;
 //! - nothing is timed: every command's time, and every span's, is NaN;
 //! - wgpu's barriers are its own, so `barriers` in the counters stays 0;
-//! - no images: a frame's input and output are buffers.
+//! - no images: a frame's input and output are buffers (the caller's own through
+//!   [`WgpuBackend::import_buffer`]).
+//!
+//! A renderer on its own device ([`WgpuBackend::from_device`]) records frames into its own command
+//! encoder ([`WgpuBackend::record_into`], in `external.rs`): nothing is made, submitted or read back.
 //!
 //! wgpu reports a misuse it catches through its error handler, not the call: the backend gathers
 //! those messages and fails the next `submit`, `read_buffer` or `write_buffer` with them.
@@ -18,6 +22,9 @@ use dof_shaders::KernelDesc;
 use dof_shaders::fill::{FILL, FillParams, THREADS as FILL_THREADS};
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
+
+mod external;
+pub use external::WgpuRecording;
 
 /// What device a [`WgpuBackend`] asks wgpu for.
 #[derive(Clone, Debug)]
@@ -39,6 +46,8 @@ impl Default for WgpuOptions {
 struct WgpuBuffer {
     buffer: wgpu::Buffer,
     words: u64,
+    /// The caller's ([`WgpuBackend::import_buffer`]): forgotten, not counted.
+    imported: bool,
 }
 
 /// How many workgroups a dispatch runs.
@@ -61,8 +70,13 @@ pub struct WgpuBackend {
     queue: wgpu::Queue,
     buffers: Vec<Option<WgpuBuffer>>,
     pipelines: HashMap<&'static str, Pipeline>,
-    /// Commands recorded since the last submission.
+    /// Commands recorded since the last submission; during [`WgpuBackend::record_into`], the
+    /// caller's encoder.
     encoder: Option<wgpu::CommandEncoder>,
+    /// Recording into the caller's encoder.
+    external: bool,
+    /// The device is the caller's ([`WgpuBackend::from_device`]): frames go into its encoder.
+    callers_device: bool,
     /// The labels and kernels of the recorded commands (their times, NaN, at `submit`).
     recorded: Vec<(String, &'static str)>,
     /// What wgpu's error handler reported since the last check.
@@ -97,11 +111,13 @@ impl WgpuBackend {
         };
         let (device, queue) = pollster::block_on(adapter.request_device(&descriptor))
             .map_err(|e| Error::NoDevice(format!("{} ({:?}) refuses a device: {e}", info.name, info.backend)))?;
-        Ok(Self::from_device(device, queue, info))
+        let mut backend = Self::from_device(device, queue, info);
+        backend.callers_device = false;
+        Ok(backend)
     }
 
     /// A backend on a device the caller made (with [`wgpu::Features::IMMEDIATES`]); `info` is its
-    /// adapter's.
+    /// adapter's. Frames on it are recorded into the caller's encoder ([`WgpuBackend::record_into`]).
     pub fn from_device(device: wgpu::Device, queue: wgpu::Queue, info: wgpu::AdapterInfo) -> Self {
         let errors = Arc::new(Mutex::new(Vec::new()));
         let sink = errors.clone();
@@ -128,6 +144,8 @@ impl WgpuBackend {
             buffers: Vec::new(),
             pipelines: HashMap::new(),
             encoder: None,
+            external: false,
+            callers_device: true,
             recorded: Vec::new(),
             errors,
             counters: BackendCounters::default(),
@@ -142,6 +160,15 @@ impl WgpuBackend {
 
     pub fn queue(&self) -> &wgpu::Queue {
         &self.queue
+    }
+
+    fn insert(&mut self, buffer: WgpuBuffer) -> BufferId {
+        let slot = self.buffers.iter().position(Option::is_none).unwrap_or(self.buffers.len());
+        if slot == self.buffers.len() {
+            self.buffers.push(None);
+        }
+        self.buffers[slot] = Some(buffer);
+        BufferId(slot as u32)
     }
 
     fn buffer(&self, id: BufferId) -> Result<&WgpuBuffer> {
@@ -170,8 +197,19 @@ impl WgpuBackend {
         self.encoder.get_or_insert_with(|| self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("dof") }))
     }
 
+    /// An error for `what`, which submits or allocates, while recording into the caller's encoder.
+    fn refuse_external(&self, what: &str) -> Result<()> {
+        if self.external {
+            return Err(Error::RecordingState(format!(
+                "{what} is not allowed while recording into the caller's command encoder (record_into): it would submit or allocate"
+            )));
+        }
+        Ok(())
+    }
+
     /// Submits what is recorded and waits for it.
     fn flush(&mut self) -> Result<()> {
+        self.refuse_external("a submission")?;
         if let Some(encoder) = self.encoder.take() {
             self.queue.submit([encoder.finish()]);
             self.counters.submissions += 1;
@@ -307,6 +345,7 @@ impl Backend for WgpuBackend {
     }
 
     fn create_buffer(&mut self, words: u64, label: &str) -> Result<BufferId> {
+        self.refuse_external(&format!("creating buffer `{label}`"))?;
         self.release_finished()?;
         let bytes = words.max(1) * 4;
         if bytes > self.limits.max_buffer_bytes {
@@ -325,18 +364,14 @@ impl Backend for WgpuBackend {
             mapped_at_creation: false,
         });
         self.check_errors()?;
-        let slot = self.buffers.iter().position(Option::is_none).unwrap_or(self.buffers.len());
-        if slot == self.buffers.len() {
-            self.buffers.push(None);
-        }
-        self.buffers[slot] = Some(WgpuBuffer { buffer, words: bytes / 4 });
         self.counters.add_buffer(bytes);
-        Ok(BufferId(slot as u32))
+        Ok(self.insert(WgpuBuffer { buffer, words: bytes / 4, imported: false }))
     }
 
     fn destroy_buffer(&mut self, buffer: BufferId) {
         if let Some(slot) = self.buffers.get_mut(buffer.0 as usize)
             && let Some(b) = slot.take()
+            && !b.imported
         {
             self.counters.remove_buffer(b.words * 4);
         }
@@ -357,6 +392,7 @@ impl Backend for WgpuBackend {
 
     fn read_buffer(&mut self, buffer: BufferId, offset_words: u64, words: u64) -> Result<Vec<u32>> {
         self.check_range(buffer, offset_words, words)?;
+        self.refuse_external("read_buffer")?;
         if words == 0 {
             self.counters.readbacks += 1;
             return Ok(Vec::new());
@@ -433,10 +469,21 @@ impl Backend for WgpuBackend {
     }
 
     fn submit(&mut self) -> Result<Vec<CommandTime>> {
+        self.refuse_external("submit")?;
         self.release_finished()?;
         let recorded = std::mem::take(&mut self.recorded);
         self.flush()?;
         Ok(recorded.into_iter().map(|(label, kernel)| CommandTime { label, kernel, ms: f64::NAN }).collect())
+    }
+
+    fn check_frame_recording(&self) -> Result<()> {
+        if self.callers_device && !self.external {
+            return Err(Error::RecordingState(
+                "a frame on a backend wrapping the caller's wgpu device must be recorded into the caller's encoder: call record_into first"
+                    .into(),
+            ));
+        }
+        Ok(())
     }
 
     fn counters(&self) -> BackendCounters {

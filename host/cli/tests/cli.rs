@@ -39,6 +39,29 @@ fn renders_a_builtin_scene_to_exr_and_png() {
     assert_fails_with(&["render", "--scene", out.to_str().unwrap(), "--method", "reference"], "needs the scene's geometry");
 }
 
+/// `--backend wgpu` (wgpu's Vulkan over lavapipe here) renders what the CPU renders.
+#[test]
+fn renders_on_wgpu_as_on_the_cpu() {
+    let render = |backend: &str| {
+        let out = temp(&format!("fence-{backend}.exr"));
+        let args = ["render", "--scene", "fence", "--method", "multilayer", "--merge", "4x4", "--width", "96", "--height", "54"];
+        let o = Command::new(env!("CARGO_BIN_EXE_dof"))
+            .args(args)
+            .args(["--backend", backend, "--out", out.to_str().unwrap()])
+            .env("WGPU_BACKEND", "vulkan")
+            .output()
+            .expect("the dof binary runs");
+        assert!(o.status.success(), "--backend {backend}: {}", String::from_utf8_lossy(&o.stderr));
+        dof::io::read_rgb_exr(&out).unwrap().0
+    };
+    let (on_wgpu, on_cpu) = (render("wgpu"), render("cpu"));
+    for (p, q) in on_wgpu.data.iter().zip(&on_cpu.data) {
+        for c in 0..3 {
+            assert!((p[c] - q[c]).abs() <= 1e-5 * q[c].abs().max(1e-2), "{p:?} on wgpu, {q:?} on the CPU");
+        }
+    }
+}
+
 #[test]
 fn bad_scenes_are_reported() {
     assert_fails_with(&["render", "--scene", "nope"], "unknown built-in scene");

@@ -75,6 +75,9 @@ impl Method {
 pub enum BackendArg {
     Cpu,
     Vulkan,
+    /// The kernels as WGSL on the device wgpu chooses (`WGPU_BACKEND`: vulkan, metal, dx12, gl).
+    #[cfg(feature = "wgpu")]
+    Wgpu,
 }
 
 #[derive(clap::Args)]
@@ -747,6 +750,8 @@ pub(super) fn backend(choice: BackendArg) -> anyhow::Result<Box<dyn dof::backend
     let choice = match choice {
         BackendArg::Cpu => super::BackendChoice::Cpu,
         BackendArg::Vulkan => super::BackendChoice::Vulkan,
+        #[cfg(feature = "wgpu")]
+        BackendArg::Wgpu => return Ok(Box::new(dof::backend::WgpuBackend::new(&Default::default())?)),
     };
     super::backends(choice, false)?.pop().context("no backend")
 }

@@ -76,6 +76,8 @@ pub fn run(args: &SoakArgs) -> anyhow::Result<()> {
     let mut backend: Box<dyn Backend> = match args.backend {
         BackendArg::Cpu => Box::new(CpuBackend::new()),
         BackendArg::Vulkan => Box::new(VulkanBackend::new(&VulkanOptions { validation, ..Default::default() })?),
+        #[cfg(feature = "wgpu")]
+        BackendArg::Wgpu => Box::new(dof::backend::WgpuBackend::new(&Default::default())?),
     };
     let b = backend.as_mut();
     let max = args.max_size;

@@ -186,3 +186,25 @@ fn a_renderer_records_every_method_into_its_own_encoder() {
     assert_eq!(backend.counters().device_bytes, 0, "every context freed, the renderer's buffers never counted");
     assert!(backend.take_diagnostics().is_empty());
 }
+
+/// Dispatches and spans carry GPU times where the device has timestamps (lavapipe has); a clear,
+/// which has no pass to time, is NaN.
+#[test]
+fn dispatches_and_spans_are_timed() {
+    let Some(mut g) = wgpu() else { return };
+    let a = g.create_buffer(1 << 20, "a").unwrap();
+    g.begin_span("both").unwrap();
+    g.fill(a, 0, 1 << 20, 3, "threes").unwrap();
+    g.fill(a, 0, 1 << 19, 0, "zeros").unwrap();
+    g.fill(a, 0, 1 << 20, 5, "fives").unwrap();
+    g.end_span().unwrap();
+    let times = g.submit().unwrap();
+    let ms: Vec<f64> = times.iter().map(|t| t.ms).collect();
+    assert_eq!(times.iter().map(|t| t.label.as_str()).collect::<Vec<_>>(), ["threes", "zeros", "fives"]);
+    assert!(ms[0] >= 0.0 && ms[2] >= 0.0 && ms[1].is_nan(), "{ms:?}");
+    let spans = g.take_span_times();
+    assert!(spans.len() == 1 && spans[0].ms >= ms[0].max(ms[2]), "{spans:?} over {ms:?}");
+    assert!(g.submit().unwrap().is_empty() && g.take_span_times().is_empty());
+    assert!(g.begin_span("open").is_ok() && g.submit().is_err(), "a span left open");
+    g.destroy_buffer(a);
+}

@@ -37,8 +37,8 @@ impl WgpuBackend {
         let stand_in = self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("dof stand-in") });
         self.encoder = Some(std::mem::replace(encoder, stand_in));
         self.external = true;
-        let recorded_before = self.recorded.len();
-        Ok(WgpuRecording { backend: self, callers: encoder, recorded_before })
+        let commands_before = self.commands.len();
+        Ok(WgpuRecording { backend: self, callers: encoder, commands_before })
     }
 }
 
@@ -47,8 +47,8 @@ impl WgpuBackend {
 pub struct WgpuRecording<'a> {
     backend: &'a mut WgpuBackend,
     callers: &'a mut wgpu::CommandEncoder,
-    /// The backend's own recorded commands before this recording (the caller's are not its to time).
-    recorded_before: usize,
+    /// The backend's own commands before this recording (the caller's are not its to time).
+    commands_before: usize,
 }
 
 impl std::ops::Deref for WgpuRecording<'_> {
@@ -70,6 +70,6 @@ impl Drop for WgpuRecording<'_> {
             *self.callers = encoder;
         }
         self.backend.external = false;
-        self.backend.recorded.truncate(self.recorded_before);
+        self.backend.commands.truncate(self.commands_before);
     }
 }

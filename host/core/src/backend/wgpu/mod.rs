@@ -5,7 +5,8 @@
 //! immediates; indirect dispatches; draws through their compute fallbacks. Each dispatch is a
 //! compute pass of its own, and wgpu places the barriers between them. What it does differently:
 //! - `fill` with zero is the encoder's clear; another value runs the `fill_words` kernel;
-//! - nothing is timed: every command's time, and every span's, is NaN;
+//! - a dispatch is timed by timestamps around its pass where wgpu has them (`timing.rs`); a clear,
+//!   and anything recorded into a caller's encoder, is not (NaN);
 //! - wgpu's barriers are its own, so `barriers` in the counters stays 0;
 //! - no images: a frame's input and output are buffers (the caller's own through
 //!   [`WgpuBackend::import_buffer`]).
@@ -24,7 +25,9 @@ use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
 mod external;
+mod timing;
 pub use external::WgpuRecording;
+use timing::{Command, Timestamps};
 
 /// What device a [`WgpuBackend`] asks wgpu for.
 #[derive(Clone, Debug)]
@@ -77,8 +80,15 @@ pub struct WgpuBackend {
     external: bool,
     /// The device is the caller's ([`WgpuBackend::from_device`]): frames go into its encoder.
     callers_device: bool,
-    /// The labels and kernels of the recorded commands (their times, NaN, at `submit`).
-    recorded: Vec<(String, &'static str)>,
+    /// The commands of the backend's own encoder since the last `submit`, and their timestamps.
+    commands: Vec<Command>,
+    timestamps: Option<Timestamps>,
+    /// Spans since the last `submit` (label, first command, end; end `usize::MAX` while open),
+    /// in opening order; the open ones' indices there, innermost last; and the times of the spans
+    /// of past submissions.
+    spans: Vec<(String, usize, usize)>,
+    open_spans: Vec<usize>,
+    span_times: Vec<CommandTime>,
     /// What wgpu's error handler reported since the last check.
     errors: Arc<Mutex<Vec<String>>>,
     counters: BackendCounters,
@@ -105,7 +115,7 @@ impl WgpuBackend {
         }
         let descriptor = wgpu::DeviceDescriptor {
             label: Some("dof"),
-            required_features: wgpu::Features::IMMEDIATES,
+            required_features: wgpu::Features::IMMEDIATES | (adapter.features() & wgpu::Features::TIMESTAMP_QUERY),
             required_limits: adapter.limits(),
             ..Default::default()
         };
@@ -118,6 +128,7 @@ impl WgpuBackend {
 
     /// A backend on a device the caller made (with [`wgpu::Features::IMMEDIATES`]); `info` is its
     /// adapter's. Frames on it are recorded into the caller's encoder ([`WgpuBackend::record_into`]).
+    /// The backend's own submissions are timed where the device has [`wgpu::Features::TIMESTAMP_QUERY`].
     pub fn from_device(device: wgpu::Device, queue: wgpu::Queue, info: wgpu::AdapterInfo) -> Self {
         let errors = Arc::new(Mutex::new(Vec::new()));
         let sink = errors.clone();
@@ -135,6 +146,7 @@ impl WgpuBackend {
             max_buffer_bytes: l.max_buffer_size.min(l.max_storage_buffer_binding_size),
             serial_invocations: false,
         };
+        let timestamps = Timestamps::new(&device, &queue);
         WgpuBackend {
             id: BackendId::fresh(),
             limits,
@@ -146,7 +158,11 @@ impl WgpuBackend {
             encoder: None,
             external: false,
             callers_device: true,
-            recorded: Vec::new(),
+            commands: Vec::new(),
+            timestamps,
+            spans: Vec::new(),
+            open_spans: Vec::new(),
+            span_times: Vec::new(),
             errors,
             counters: BackendCounters::default(),
             budget: None,
@@ -194,7 +210,8 @@ impl WgpuBackend {
     }
 
     fn encoder(&mut self) -> &mut wgpu::CommandEncoder {
-        self.encoder.get_or_insert_with(|| self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("dof") }))
+        let device = &self.device;
+        self.encoder.get_or_insert_with(|| device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("dof") }))
     }
 
     /// An error for `what`, which submits or allocates, while recording into the caller's encoder.
@@ -207,22 +224,22 @@ impl WgpuBackend {
         Ok(())
     }
 
-    /// Submits what is recorded and waits for it.
+    /// Submits what is recorded and waits for it (and for its timestamps).
     fn flush(&mut self) -> Result<()> {
         self.refuse_external("a submission")?;
-        if let Some(encoder) = self.encoder.take() {
+        if let Some(mut encoder) = self.encoder.take() {
+            if let Some(timestamps) = &self.timestamps {
+                timestamps.resolve(&mut encoder);
+            }
             self.queue.submit([encoder.finish()]);
             self.counters.submissions += 1;
-            self.wait()?;
+            wait(&self.device)?;
+            if let Some(timestamps) = self.timestamps.as_mut() {
+                let device = &self.device;
+                timestamps.read(&mut self.commands, || wait(device))?;
+            }
         }
         self.check_errors()
-    }
-
-    fn wait(&self) -> Result<()> {
-        self.device
-            .poll(wgpu::PollType::Wait { submission_index: None, timeout: None })
-            .map(|_| ())
-            .map_err(|e| Error::Device(format!("waiting for the device: {e}")))
     }
 
     fn pipeline(&mut self, kernel: &'static KernelDesc) -> Result<&Pipeline> {
@@ -292,8 +309,12 @@ impl WgpuBackend {
         let bind_group =
             self.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout: &layout, entries: &entries });
         let immediates: Vec<u8> = bytemuck::cast_slice(push).iter().copied().take(kernel.push_bytes.next_multiple_of(4) as usize).collect();
-        let encoder = self.encoder();
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(label), timestamp_writes: None });
+        let mut command = Command::new(label, kernel.entry);
+        let device = &self.device;
+        let encoder =
+            self.encoder.get_or_insert_with(|| device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("dof") }));
+        let timestamp_writes = if self.external { None } else { self.timestamps.as_mut().and_then(|t| t.pass_writes(&mut command)) };
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(label), timestamp_writes });
         pass.set_pipeline(&pipeline);
         pass.set_bind_group(0, &bind_group, &[]);
         if !immediates.is_empty() {
@@ -307,7 +328,7 @@ impl WgpuBackend {
         drop(pass);
         self.counters.commands += 1;
         self.counters.dispatches += 1;
-        self.recorded.push((label.to_string(), kernel.entry));
+        self.commands.push(command);
         Ok(())
     }
 }
@@ -413,7 +434,7 @@ impl Backend for WgpuBackend {
                 *slot = Some(result);
             }
         });
-        self.wait()?;
+        wait(&self.device)?;
         let outcome = mapped.lock().map_err(|_| Error::Device("the readback's state is poisoned".into()))?.take();
         match outcome {
             Some(Ok(())) => {}
@@ -441,7 +462,7 @@ impl Backend for WgpuBackend {
         let target = self.buffer(buffer)?.buffer.clone();
         self.encoder().clear_buffer(&target, offset_words * 4, Some(words * 4));
         self.counters.commands += 1;
-        self.recorded.push((label.to_string(), "fill"));
+        self.commands.push(Command::new(label, "fill"));
         Ok(())
     }
 
@@ -470,10 +491,36 @@ impl Backend for WgpuBackend {
 
     fn submit(&mut self) -> Result<Vec<CommandTime>> {
         self.refuse_external("submit")?;
+        if !self.open_spans.is_empty() {
+            return Err(Error::RecordingState(format!("submit with {} span(s) still open", self.open_spans.len())));
+        }
         self.release_finished()?;
-        let recorded = std::mem::take(&mut self.recorded);
         self.flush()?;
-        Ok(recorded.into_iter().map(|(label, kernel)| CommandTime { label, kernel, ms: f64::NAN }).collect())
+        let (times, spans) = timing::times(&self.commands, &self.spans);
+        self.commands.clear();
+        self.spans.clear();
+        self.span_times.extend(spans);
+        Ok(times)
+    }
+
+    fn begin_span(&mut self, label: &str) -> Result<()> {
+        self.refuse_external("a span")?;
+        self.open_spans.push(self.spans.len());
+        self.spans.push((label.to_string(), self.commands.len(), usize::MAX));
+        Ok(())
+    }
+
+    fn end_span(&mut self) -> Result<()> {
+        let open = self.open_spans.pop().ok_or_else(|| Error::RecordingState("end_span without an open span".into()))?;
+        let end = self.commands.len();
+        if let Some(span) = self.spans.get_mut(open) {
+            span.2 = end;
+        }
+        Ok(())
+    }
+
+    fn take_span_times(&mut self) -> Vec<CommandTime> {
+        std::mem::take(&mut self.span_times)
     }
 
     fn check_frame_recording(&self) -> Result<()> {
@@ -508,4 +555,12 @@ impl Backend for WgpuBackend {
     fn take_diagnostics(&mut self) -> Vec<String> {
         self.errors.lock().map(|mut e| std::mem::take(&mut *e)).unwrap_or_default()
     }
+}
+
+/// Waits until the device has run everything submitted.
+fn wait(device: &wgpu::Device) -> Result<()> {
+    device
+        .poll(wgpu::PollType::Wait { submission_index: None, timeout: None })
+        .map(|_| ())
+        .map_err(|e| Error::Device(format!("waiting for the device: {e}")))
 }

@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use dof::backend::Backend;
+use dof::backend::{Backend, WgpuBackend, WgpuOptions};
 use dof::frame::{Kind, METHODS, MethodInfo, MethodOptions, Value};
 use dof::io::SanitizeCounts;
 use dof::layers::{Fragment, LayeredImage, RgbImage};
@@ -199,7 +199,8 @@ fn make_backend(name: &str) -> PyResult<Box<dyn Backend>> {
     match name {
         "cpu" => Ok(Box::new(CpuBackend::new())),
         "vulkan" => Ok(Box::new(VulkanBackend::new(&VulkanOptions::default()).map_err(py_err)?)),
-        _ => Err(value_error(format!("unknown backend '{name}': use 'cpu' or 'vulkan'"))),
+        "wgpu" => Ok(Box::new(WgpuBackend::new(&WgpuOptions::default()).map_err(py_err)?)),
+        _ => Err(value_error(format!("unknown backend '{name}': use 'cpu', 'vulkan' or 'wgpu'"))),
     }
 }
 
@@ -232,7 +233,8 @@ fn to_rgb_array(image: &RgbImage) -> PyResult<Array3<f32>> {
 /// length (it only matters for the millimetre values).
 ///
 /// `method` is a name from `methods()` (default "multilayer", multi-layer tiled splatting);
-/// `backend` is "cpu" (default) or "vulkan". `options` are the method's options, as `methods()`
+/// `backend` is "cpu" (default), "vulkan", or "wgpu" (the kernels as WGSL on the device wgpu
+/// chooses; `WGPU_BACKEND` narrows it). `options` are the method's options, as `methods()`
 /// lists them with their units and bounds, named as the CLI's flags: tile, merge ("none", "2x2",
 /// "4x4"), max_coc (a CoC diameter in pixels), aperture (shape), rings, lum_threshold, sprites,
 /// spp (or samples), no_cascade, layers_per_doubling. As in the CLI, the image's edge pixels are extended outwards

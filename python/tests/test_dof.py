@@ -56,6 +56,16 @@ def test_cpu_and_vulkan_agree():
     np.testing.assert_allclose(cpu, vk, atol=2e-3, rtol=2e-3)
 
 
+@pytest.mark.parametrize("method", ["multilayer", "gather"])
+def test_cpu_and_wgpu_agree(method):
+    if os.environ.get("DOF_SKIP_WGPU") == "1":
+        pytest.skip("DOF_SKIP_WGPU=1")
+    rgb, depth = scene()
+    cpu = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5, method=method, backend="cpu")
+    gpu = dof.blur(rgb, depth, focus=4.0, aperture_radius=0.5, method=method, backend="wgpu")
+    np.testing.assert_allclose(cpu, gpu, atol=1e-5, rtol=1e-5)
+
+
 @pytest.mark.parametrize("backend", BACKENDS)
 @pytest.mark.parametrize("aperture_radius", [0.0, 1e-4])
 def test_in_focus_is_identity(backend, aperture_radius):

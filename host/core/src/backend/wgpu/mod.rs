@@ -32,7 +32,8 @@ use timing::{Command, Timestamps};
 /// What device a [`WgpuBackend`] asks wgpu for.
 #[derive(Clone, Debug)]
 pub struct WgpuOptions {
-    /// The APIs wgpu may use; by default those `WGPU_BACKEND` names, or all.
+    /// The APIs wgpu may use; by default those `WGPU_BACKEND` names, or the primary ones (Vulkan,
+    /// Metal, DX12; GL only when named).
     pub backends: wgpu::Backends,
     pub power_preference: wgpu::PowerPreference,
 }
@@ -40,7 +41,7 @@ pub struct WgpuOptions {
 impl Default for WgpuOptions {
     fn default() -> Self {
         WgpuOptions {
-            backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::all()),
+            backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::PRIMARY),
             power_preference: wgpu::PowerPreference::HighPerformance,
         }
     }

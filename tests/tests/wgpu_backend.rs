@@ -2,7 +2,7 @@
 //! backend's own commands, the sort and scan, and every method of the registry.
 
 use dof::CoreError;
-use dof::backend::{Backend, CpuBackend, WgpuBackend};
+use dof::backend::{Backend, CpuBackend, RunKernel, WgpuBackend};
 use dof::frame::{ContextDesc, CountBuffer, Extent, Frame, METHODS, MethodOptions, Reads, RgbBuffer, SlotBuffer};
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::one_shot::one_shot;
@@ -11,6 +11,7 @@ use dof::ops::scan::exclusive_scan;
 use dof::ops::sort::sort_on_with;
 use dof::stress::{noise_with_sky, test_lens};
 use dof::workload::{lists_with, random_key};
+use dof_shaders::tonemap::{DisplayParams, MODE_LINEAR, MODE_TONEMAP, display_tonemap};
 use dof_tests::wgpu;
 use rand::SeedableRng;
 use rand_pcg::Pcg64;
@@ -207,4 +208,63 @@ fn dispatches_and_spans_are_timed() {
     assert!(g.submit().unwrap().is_empty() && g.take_span_times().is_empty());
     assert!(g.begin_span("open").is_ok() && g.submit().is_err(), "a span left open");
     g.destroy_buffer(a);
+}
+
+/// Input the numerical contract rejects or clamps (NaN and infinite colours, alphas and depths,
+/// negative and huge colours) goes through every method on wgpu as on the CPU.
+#[test]
+fn non_finite_input_is_handled_as_on_the_cpu() {
+    let Some(mut g) = wgpu() else { return };
+    let mut cpu = CpuBackend::with_shared_bytes(g.limits().max_shared_bytes);
+    let mut image = noise_with_sky(40, 24, 3);
+    let bad = [f32::NAN, f32::INFINITY, -f32::INFINITY, -1.0, 3e38, 0.0, -0.0, f32::MIN_POSITIVE / 8.0];
+    for (i, f) in image.fragments.iter_mut().enumerate().filter(|(i, _)| i % 7 == 3) {
+        let v = bad[(i / 7) % bad.len()];
+        match (i / 7) % 3 {
+            0 => f.color[i % 3] = v,
+            1 => f.alpha = v,
+            _ => f.depth = v,
+        }
+    }
+    let lens = test_lens(0.02);
+    for m in METHODS {
+        let on_gpu = one_shot(&mut g, m, &MethodOptions::default(), &image, &lens).unwrap_or_else(|e| panic!("{} on wgpu: {e}", m.name));
+        let on_cpu =
+            one_shot(&mut cpu, m, &MethodOptions::default(), &image, &lens).unwrap_or_else(|e| panic!("{} on the CPU: {e}", m.name));
+        for (p, q) in on_gpu.image.data.iter().zip(&on_cpu.image.data) {
+            for c in 0..3 {
+                assert!(p[c].is_finite() && p[c] >= 0.0, "{}: {p:?}", m.name);
+                assert!((p[c] - q[c]).abs() <= 1e-5 * q[c].abs().max(1e-2), "{}: {p:?} on wgpu, {q:?} on the CPU", m.name);
+            }
+        }
+    }
+}
+
+/// The display kernel on wgpu gives the CPU's 0 and 1 for NaN, infinities, negatives and zeros,
+/// with any exposure; elsewhere the sRGB curve's `powf` may differ in the last bit.
+#[test]
+fn the_display_kernel_handles_non_finite_values_as_on_the_cpu() {
+    let Some(mut g) = wgpu() else { return };
+    let values = [0.0, 1e-6, 0.18, 1.0, 7.3, 1e5, f32::NAN, -f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -0.5, -0.0];
+    let words: Vec<u32> = values.iter().flat_map(|&v| [v, v * 0.5, -v].map(f32::to_bits)).collect();
+    let n = values.len() as u32;
+    let run = |b: &mut dyn Backend| {
+        let rgb = b.create_buffer(words.len() as u64, "rgb").unwrap();
+        let rgba = b.create_buffer(4 * n as u64, "rgba").unwrap();
+        b.write_buffer(rgb, 0, &words).unwrap();
+        let mut out = Vec::new();
+        for (mode, exposure) in [(MODE_TONEMAP, 1.0), (MODE_TONEMAP, f32::NAN), (MODE_LINEAR, 1.0)] {
+            b.run(display_tonemap::Bindings { rgb, rgba }, [1, 1, 1], &DisplayParams { width: n, height: 1, mode, exposure }, "display")
+                .unwrap();
+            b.submit().unwrap();
+            out.extend(b.read_buffer(rgba, 0, 4 * n as u64).unwrap());
+        }
+        out
+    };
+    let (on_gpu, on_cpu) = (run(&mut g), run(&mut CpuBackend::new()));
+    for (i, (&a, &b)) in on_gpu.iter().zip(&on_cpu).enumerate() {
+        let (x, y) = (f32::from_bits(a), f32::from_bits(b));
+        let edge = y == 0.0 || y == 1.0;
+        assert!(if edge { a == b } else { (x - y).abs() <= 1e-6 * y }, "word {i}: {x} on wgpu, {y} on the CPU");
+    }
 }

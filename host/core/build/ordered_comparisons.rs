@@ -2,12 +2,14 @@
 //! ones whose NaN semantics WGSL, Metal, HLSL and naga's SPIR-V all share (false when an operand
 //! is NaN).
 //!
-//! rust-gpu emits unordered comparisons (`FUnordLessThan`: true when an operand is NaN) for the
-//! kernels' `!(x > 0.0)`, the numerical contract's test that rejects NaN. naga's SPIR-V front end
-//! reads an unordered comparison as the ordered one, which turns that test around for NaN, and
-//! `!=` is ordered in naga's SPIR-V output but unordered in Metal and HLSL. So each unordered
-//! comparison becomes the negation of its ordered complement (`FUnordLessThan(a, b)` is
-//! `!(a >= b)`), and `FOrdNotEqual(a, b)` becomes `a < b || a > b`.
+//! rust-gpu's SPIR-V holds unordered comparisons, true when an operand is NaN: `x != x` (Rust's
+//! `is_nan`) is `FUnordNotEqual`, and the optimiser writes some negated comparisons as unordered
+//! ones. naga's SPIR-V front end reads each as its ordered counterpart, so `is_nan` would be false
+//! for NaN; and `!=` is ordered in naga's SPIR-V output but unordered in Metal and HLSL. So each
+//! unordered comparison becomes the negation of its ordered complement (`FUnordLessThan(a, b)` is
+//! `!(a >= b)`), and `FOrdNotEqual(a, b)` becomes `a < b || a > b`. The kernels test NaN by bits
+//! where it matters (`lens::is_finite`), so no result in the suites depends on this pass today; it
+//! keeps the translation exact for the ones that will.
 
 use rspirv::dr::{Instruction, Module, Operand};
 use rspirv::spirv::{Op, Word};

@@ -47,9 +47,15 @@ impl RunTimes {
     }
 
     /// Each stage's mean time per run over all runs (a time the queue could not stamp counts 0).
+    /// The mean of each stage's finite times over the runs; NaN for a stage never timed (a clear on
+    /// the wgpu backend, a queue without timestamps).
     pub fn mean_stages(&self) -> BTreeMap<String, f64> {
         let runs = self.totals.len().max(1) as f64;
-        self.stages.iter().map(|(k, v)| (k.clone(), v.iter().filter(|t| t.is_finite()).sum::<f64>() / runs)).collect()
+        let mean = |v: &Vec<f64>| {
+            let timed: Vec<f64> = v.iter().copied().filter(|t| t.is_finite()).collect();
+            if timed.is_empty() { f64::NAN } else { timed.iter().sum::<f64>() / runs }
+        };
+        self.stages.iter().map(|(k, v)| (k.clone(), mean(v))).collect()
     }
 }
 
@@ -85,8 +91,22 @@ impl Warmup {
 
 #[cfg(test)]
 mod tests {
-    use super::Warmup;
+    use super::{RunTimes, Warmup};
+    use crate::backend::CommandTime;
     use std::time::{Duration, Instant};
+
+    /// A stage never timed is NaN ("not timed"), not 0; a stage timed in some runs is the mean of
+    /// its times over all runs.
+    #[test]
+    fn stages_never_timed_are_nan() {
+        let time = |label: &str, ms: f64| CommandTime { label: label.into(), kernel: "k", ms };
+        let mut runs = RunTimes::default();
+        runs.add(&[time("clear", f64::NAN), time("sort", 2.0), time("sort", 1.0)]);
+        runs.add(&[time("clear", f64::NAN), time("sort", f64::NAN)]);
+        let stages = runs.mean_stages();
+        assert!(stages["clear"].is_nan());
+        assert_eq!(stages["sort"], 1.5);
+    }
 
     /// Runs a warm-up of frames that each take `frame_ms`; returns the frames run and the time.
     fn warm(frames: u32, ms: f64, frame_ms: u64) -> (u32, f64) {

@@ -270,7 +270,11 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         );
     }
     for (stage, ms) in &measured.stages {
-        println!("  {stage:<22} {ms:>9.3} ms");
+        if ms.is_nan() {
+            println!("  {stage:<22} not timed");
+        } else {
+            println!("  {stage:<22} {ms:>9.3} ms");
+        }
     }
     println!(
         "device memory: context {:.1} MB, backend peak {:.1} MB; lists {} entries in a pool of {} (grown {} time(s) in the warm-up), {} overflowing tiles",
@@ -345,7 +349,7 @@ impl Spread {
 /// sort, apply; the peel's stages apart), as `dof eval` groups them.
 fn table1(method: &str, stages: &BTreeMap<String, f64>) -> BTreeMap<&'static str, f64> {
     let mut columns: BTreeMap<&'static str, f64> = ["merge", "splat", "sort", "apply"].into_iter().map(|c| (c, 0.0)).collect();
-    for (label, ms) in stages {
+    for (label, ms) in stages.iter().filter(|(_, ms)| !ms.is_nan()) {
         let column = if label.starts_with("peel/") { "peel" } else { dof::eval::report::table_column(method, label) };
         *columns.entry(column).or_default() += ms;
     }
@@ -373,7 +377,7 @@ impl Measured {
         report: &ContextReport,
     ) -> Self {
         let figure = |name: &str| report.figure(name).unwrap_or(0.0) as u64;
-        let peel_ms = stages.iter().filter(|(l, _)| l.starts_with("peel/")).map(|(_, ms)| ms).sum();
+        let peel_ms = stages.iter().filter(|(l, ms)| l.starts_with("peel/") && !ms.is_nan()).map(|(_, ms)| ms).sum();
         Measured {
             counters,
             record_ms,
@@ -431,7 +435,7 @@ fn framed(
         write_exr(&t.last.image, out)?;
     }
     let stages = t.runs.mean_stages();
-    let gpu_ms = stages.values().sum();
+    let gpu_ms = stages.values().filter(|ms| !ms.is_nan()).sum();
     let mut m = Measured::new(t.counters, t.record_ms, gpu_ms, stages, device_bytes, &t.last.report);
     m.grown = t.grown;
     m.warmed = t.warmed;

@@ -57,8 +57,8 @@ struct WgpuBuffer {
 /// How many workgroups a dispatch runs.
 enum Groups {
     Direct([u32; 3]),
-    /// Read on the device from `args[offset .. offset + 3]` (words).
-    Indirect(BufferId, u64),
+    /// Read on the device from this buffer, at this byte offset.
+    Indirect(wgpu::Buffer, u64),
 }
 
 struct Pipeline {
@@ -299,12 +299,10 @@ impl WgpuBackend {
         label: &str,
     ) -> Result<()> {
         let bound: Vec<wgpu::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.buffer.clone())).collect::<Result<_>>()?;
-        let indirect = match groups {
-            Groups::Indirect(args, offset) => Some((self.buffer(args)?.buffer.clone(), offset * 4)),
-            Groups::Direct(_) => None,
+        let (layout, pipeline) = {
+            let p = self.pipeline(kernel)?;
+            (p.layout.clone(), p.pipeline.clone())
         };
-        let layout = self.pipeline(kernel)?.layout.clone();
-        let pipeline = self.pipeline(kernel)?.pipeline.clone();
         let entries: Vec<wgpu::BindGroupEntry> =
             bound.iter().enumerate().map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() }).collect();
         let bind_group =
@@ -321,10 +319,9 @@ impl WgpuBackend {
         if !immediates.is_empty() {
             pass.set_immediates(0, &immediates);
         }
-        match (groups, indirect) {
-            (Groups::Direct([x, y, z]), _) => pass.dispatch_workgroups(x, y, z),
-            (Groups::Indirect(..), Some((args, offset))) => pass.dispatch_workgroups_indirect(&args, offset),
-            (Groups::Indirect(..), None) => {}
+        match groups {
+            Groups::Direct([x, y, z]) => pass.dispatch_workgroups(x, y, z),
+            Groups::Indirect(args, offset) => pass.dispatch_workgroups_indirect(&args, offset),
         }
         drop(pass);
         self.counters.commands += 1;
@@ -487,7 +484,8 @@ impl Backend for WgpuBackend {
     ) -> Result<()> {
         check_dispatch(&self.limits, kernel, None, buffers.len(), push.len())?;
         self.check_range(args, args_offset_words, 3)?;
-        self.record_dispatch(kernel, Groups::Indirect(args, args_offset_words), buffers, push, label)
+        let args = self.buffer(args)?.buffer.clone();
+        self.record_dispatch(kernel, Groups::Indirect(args, args_offset_words * 4), buffers, push, label)
     }
 
     fn submit(&mut self) -> Result<Vec<CommandTime>> {

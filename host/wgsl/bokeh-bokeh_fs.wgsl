@@ -9,7 +9,7 @@ struct type_4 {
     member: array<u32>,
 }
 
-struct type_11 {
+struct type_12 {
     member: u32,
     member_1: f32,
     member_2: array<f32, 2>,
@@ -19,7 +19,7 @@ struct type_11 {
     member_6: u32,
 }
 
-struct type_12 {
+struct type_13 {
     member: u32,
     member_1: u32,
     member_2: u32,
@@ -29,16 +29,16 @@ struct type_12 {
     member_6: f32,
     member_7: f32,
     member_8: type_2,
-    member_9: type_11,
+    member_9: type_12,
 }
 
-struct type_13 {
-    member: type_12,
+struct type_14 {
+    member: type_13,
 }
 
 @group(0) @binding(1) 
 var<storage> global: type_4;
-var<immediate> global_1: type_13;
+var<immediate> global_1: type_14;
 var<private> global_2: vec2<f32>;
 var<private> global_3: vec4<f32>;
 var<private> global_4: vec2<f32>;

@@ -9,7 +9,7 @@ struct type_5 {
     member: array<u32>,
 }
 
-struct type_18 {
+struct type_19 {
     member: u32,
     member_1: u32,
     member_2: u32,
@@ -140,7 +140,7 @@ fn function_() {
     var local_82: u32;
     var local_83: type_3;
     var local_84: bool;
-    var local_85: type_18;
+    var local_85: type_19;
     var local_86: f32;
     var local_87: u32;
     var local_88: f32;
@@ -268,19 +268,19 @@ fn function_() {
     var local_210: f32;
     var local_211: u32;
     var local_212: u32;
-    var local_213: type_18;
+    var local_213: type_19;
     var local_214: bool;
     var local_215: u32;
     var local_216: u32;
-    var local_217: type_18;
-    var local_218: type_18;
+    var local_217: type_19;
+    var local_218: type_19;
     var local_219: u32;
-    var local_220: type_18;
+    var local_220: type_19;
     var local_221: bool;
     var local_222: u32;
     var local_223: u32;
-    var local_224: type_18;
-    var local_225: type_18;
+    var local_224: type_19;
+    var local_225: type_19;
     var local_226: f32;
     var local_227: f32;
     var local_228: f32;
@@ -334,17 +334,17 @@ fn function_() {
     var phi_665_: bool;
     var phi_851_: f32;
     var phi_2021_: u32;
-    var phi_2022_: type_18;
+    var phi_2022_: type_19;
     var phi_2039_: u32;
     var phi_2048_: u32;
     var phi_2053_: u32;
-    var phi_2054_: type_18;
+    var phi_2054_: type_19;
     var phi_2060_: u32;
-    var phi_2061_: type_18;
+    var phi_2061_: type_19;
     var phi_2078_: u32;
     var phi_2087_: u32;
     var phi_2092_: u32;
-    var phi_2093_: type_18;
+    var phi_2093_: type_19;
     var phi_2164_: bool;
     var phi_870_: u32;
     var phi_873_: type_3;
@@ -353,7 +353,7 @@ fn function_() {
     var phi_890_: type_3;
     var phi_916_: u32;
     var phi_919_: type_3;
-    var phi_932_: type_18;
+    var phi_932_: type_19;
     var phi_933_: f32;
     var phi_953_: f32;
     var phi_954_: f32;
@@ -433,8 +433,8 @@ fn function_() {
     var phi_1987_: bool;
     var phi_1989_: bool;
     var phi_1990_: bool;
-    var local_255: type_18;
-    var local_256: type_18;
+    var local_255: type_19;
+    var local_256: type_19;
     var local_257: type_3;
     var local_258: type_3;
     var local_259: type_3;
@@ -965,7 +965,7 @@ fn function_() {
                                         let _e789 = local_64;
                                         let _e790 = local_66;
                                         let _e791 = local_68;
-                                        let _e792 = type_18(_e789, _e790, _e791, ((_e781 >> bitcast<u32>(1u)) & 3u), ((_e785 >> bitcast<u32>(3u)) & 3u));
+                                        let _e792 = type_19(_e789, _e790, _e791, ((_e781 >> bitcast<u32>(1u)) & 3u), ((_e785 >> bitcast<u32>(3u)) & 3u));
                                         let _e793 = local_66;
                                         let _e795 = local_51;
                                         if ((bitcast<u32>((_e795 * f32(_e793))) & 2139095040u) != 2139095040u) {
@@ -1022,7 +1022,7 @@ fn function_() {
                                                 local_216 = _e844.member_2;
                                                 let _e847 = local_213;
                                                 let _e850 = local_213;
-                                                local_217 = type_18((_e847.member + (_e842.member_1 * _e844.member_2)), _e850.member_1, _e850.member_2, _e850.member_3, _e850.member_4);
+                                                local_217 = type_19((_e847.member + (_e842.member_1 * _e844.member_2)), _e850.member_1, _e850.member_2, _e850.member_3, _e850.member_4);
                                                 if (_e842.member_1 > 1u) {
                                                     let _e858 = local_215;
                                                     phi_2039_ = (_e858 >> bitcast<u32>(1i));
@@ -1031,7 +1031,7 @@ fn function_() {
                                                 }
                                                 let _e862 = phi_2039_;
                                                 let _e863 = local_217;
-                                                local_218 = type_18(_e863.member, _e862, _e863.member_2, _e863.member_3, _e863.member_4);
+                                                local_218 = type_19(_e863.member, _e862, _e863.member_2, _e863.member_3, _e863.member_4);
                                                 let _e870 = local_216;
                                                 if (_e870 > 1u) {
                                                     let _e872 = local_216;
@@ -1043,10 +1043,10 @@ fn function_() {
                                                 let _e877 = local_218;
                                                 let _e884 = local_212;
                                                 phi_2053_ = (_e884 + 1u);
-                                                phi_2054_ = type_18(_e877.member, _e877.member_1, _e876, _e877.member_3, _e877.member_4);
+                                                phi_2054_ = type_19(_e877.member, _e877.member_1, _e876, _e877.member_3, _e877.member_4);
                                             } else {
                                                 phi_2053_ = u32();
-                                                phi_2054_ = type_18();
+                                                phi_2054_ = type_19();
                                             }
                                             let _e887 = phi_2053_;
                                             let _e889 = phi_2054_;
@@ -1080,7 +1080,7 @@ fn function_() {
                                                 local_223 = _e905.member_2;
                                                 let _e908 = local_220;
                                                 let _e911 = local_220;
-                                                local_224 = type_18((_e908.member + (_e903.member_1 * _e905.member_2)), _e911.member_1, _e911.member_2, _e911.member_3, _e911.member_4);
+                                                local_224 = type_19((_e908.member + (_e903.member_1 * _e905.member_2)), _e911.member_1, _e911.member_2, _e911.member_3, _e911.member_4);
                                                 if (_e903.member_1 > 1u) {
                                                     let _e919 = local_222;
                                                     phi_2078_ = (_e919 >> bitcast<u32>(1i));
@@ -1089,7 +1089,7 @@ fn function_() {
                                                 }
                                                 let _e923 = phi_2078_;
                                                 let _e924 = local_224;
-                                                local_225 = type_18(_e924.member, _e923, _e924.member_2, _e924.member_3, _e924.member_4);
+                                                local_225 = type_19(_e924.member, _e923, _e924.member_2, _e924.member_3, _e924.member_4);
                                                 let _e931 = local_223;
                                                 if (_e931 > 1u) {
                                                     let _e933 = local_223;
@@ -1101,10 +1101,10 @@ fn function_() {
                                                 let _e938 = local_225;
                                                 let _e945 = local_219;
                                                 phi_2092_ = (_e945 + 1u);
-                                                phi_2093_ = type_18(_e938.member, _e938.member_1, _e937, _e938.member_3, _e938.member_4);
+                                                phi_2093_ = type_19(_e938.member, _e938.member_1, _e937, _e938.member_3, _e938.member_4);
                                             } else {
                                                 phi_2092_ = u32();
-                                                phi_2093_ = type_18();
+                                                phi_2093_ = type_19();
                                             }
                                             let _e948 = phi_2092_;
                                             let _e950 = phi_2093_;

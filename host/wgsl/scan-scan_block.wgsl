@@ -2,21 +2,21 @@ struct type_5 {
     member: array<u32>,
 }
 
-struct type_13 {
+struct type_11 {
     member: u32,
     member_1: u32,
     member_2: u32,
 }
 
-struct type_14 {
-    member: type_13,
+struct type_12 {
+    member: type_11,
 }
 
 var<private> global: u32;
 var<private> global_1: vec3<u32>;
 var<private> global_2: vec3<u32>;
 var<workgroup> global_3: array<u32, 512>;
-var<immediate> global_4: type_14;
+var<immediate> global_4: type_12;
 @group(0) @binding(0) 
 var<storage, read_write> global_5: type_5;
 @group(0) @binding(1) 

@@ -41,6 +41,21 @@ pub fn wgpu() -> Option<WgpuBackend> {
     }
 }
 
+/// A renderer's wgpu device, made as a renderer makes it: wgpu's Vulkan backend, with the
+/// immediates the kernels need. `None` where [`wgpu`] skips.
+pub fn wgpu_device() -> Option<(wgpu::Device, wgpu::Queue, wgpu::AdapterInfo)> {
+    wgpu()?;
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends: wgpu::Backends::VULKAN,
+        ..wgpu::InstanceDescriptor::new_without_display_handle()
+    });
+    let adapter = pollster::block_on(instance.request_adapter(&Default::default())).expect("an adapter");
+    let descriptor =
+        wgpu::DeviceDescriptor { required_features: wgpu::Features::IMMEDIATES, required_limits: adapter.limits(), ..Default::default() };
+    let (device, queue) = pollster::block_on(adapter.request_device(&descriptor)).expect("a device");
+    Some((device, queue, adapter.get_info()))
+}
+
 /// Fails if the validation layer reported anything.
 pub fn assert_clean(vk: &mut VulkanBackend) {
     let messages = vk.take_validation_messages();

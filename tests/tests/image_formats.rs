@@ -14,7 +14,9 @@
 //!
 //! On Vulkan the images are a renderer's own (`dof_tests::renderer`), left by its passes in their
 //! attachment layouts, and the frames are recorded into its command buffer; the validation layer
-//! must stay silent. Formats the device cannot copy from are reported and refused by name.
+//! must stay silent. Formats the device cannot copy from are reported and refused by name. On wgpu
+//! they are a renderer's textures (the D24 formats as `Depth24PlusStencil8` and `Depth24Plus`,
+//! every depth written by a pass), the frames recorded into its encoder.
 
 use dof::backend::vulkan::ash::vk;
 use dof::backend::{Backend, BufferId, CpuBackend, ImageFormat, ImageRef, RawOptions, VulkanBackend};
@@ -543,4 +545,300 @@ fn image_input_cost_at_720p_on_vulkan() {
     vk.destroy_buffer(out);
     drop(vk);
     assert_no_messages(r.finish(), "in the measurement");
+}
+
+/// A wgpu texture of `format` for an [`ImageFormat`] of the cases (the D24 formats as wgpu's
+/// `Depth24Plus` ones, which read back as f32 depths).
+fn wgpu_format(format: ImageFormat) -> wgpu::TextureFormat {
+    match format {
+        ImageFormat::Rgba32Float => wgpu::TextureFormat::Rgba32Float,
+        ImageFormat::Rgba16Float => wgpu::TextureFormat::Rgba16Float,
+        ImageFormat::B10G11R11Ufloat => wgpu::TextureFormat::Rg11b10Ufloat,
+        ImageFormat::R32Float => wgpu::TextureFormat::R32Float,
+        ImageFormat::D32Float => wgpu::TextureFormat::Depth32Float,
+        ImageFormat::D24UnormS8Uint => wgpu::TextureFormat::Depth24PlusStencil8,
+        ImageFormat::X8D24UnormPack32 => wgpu::TextureFormat::Depth24Plus,
+    }
+}
+
+/// Writes `depths` (row after row, `width` a row) into a depth texture the way a renderer's pass
+/// does: a full-screen triangle whose fragments write them as their depth (wgpu copies nothing into
+/// a depth texture). The test's own scaffolding, not a kernel of the project's.
+fn render_depth(device: &wgpu::Device, queue: &wgpu::Queue, texture: &wgpu::Texture, depths: &[f32], width: u32) {
+    let source = format!(
+        "@group(0) @binding(0) var<storage, read> depths: array<f32>;
+         @vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {{
+             let uv = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
+             return vec4<f32>(uv * 2.0 - 1.0, 0.5, 1.0);
+         }}
+         @fragment fn fs(@builtin(position) at: vec4<f32>) -> @builtin(frag_depth) f32 {{
+             return depths[u32(at.y) * {width}u + u32(at.x)];
+         }}"
+    );
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor { label: None, source: wgpu::ShaderSource::Wgsl(source.into()) });
+    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("depth writer"),
+        layout: None,
+        vertex: wgpu::VertexState { module: &module, entry_point: Some("vs"), compilation_options: Default::default(), buffers: &[] },
+        primitive: Default::default(),
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: texture.format(),
+            depth_write_enabled: Some(true),
+            depth_compare: Some(wgpu::CompareFunction::Always),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState {
+            module: &module,
+            entry_point: Some("fs"),
+            compilation_options: Default::default(),
+            targets: &[],
+        }),
+        multiview_mask: None,
+        cache: None,
+    });
+    let bytes: Vec<u8> = depths.iter().flat_map(|d| d.to_le_bytes()).collect();
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: bytes.len() as u64,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    queue.write_buffer(&buffer, 0, &bytes);
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &[wgpu::BindGroupEntry { binding: 0, resource: buffer.as_entire_binding() }],
+    });
+    let view = texture.create_view(&Default::default());
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("depth prepass"),
+            color_attachments: &[],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &view,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(0.0), store: wgpu::StoreOp::Store }),
+                stencil_ops: texture
+                    .format()
+                    .has_stencil_aspect()
+                    .then_some(wgpu::Operations { load: wgpu::LoadOp::Clear(0xa5), store: wgpu::StoreOp::Store }),
+            }),
+            ..Default::default()
+        });
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &bind_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+    queue.submit([encoder.finish()]);
+}
+
+/// The renderer's textures of `case`, filled: colour by an upload, depth by a pass (an R32F one by
+/// an upload). Returns them with their D32-read depths' intended values (f32 depth-buffer values).
+fn wgpu_textures(device: &wgpu::Device, queue: &wgpu::Queue, case: &Case) -> (wgpu::Texture, wgpu::Texture) {
+    let (color_texels, depth_texels) = texels(case);
+    let [iw, ih] = case.image;
+    let size = wgpu::Extent3d { width: iw, height: ih, depth_or_array_layers: 1 };
+    let texture = |format: ImageFormat, usage: wgpu::TextureUsages| {
+        device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("renderer's"),
+            size,
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: wgpu_format(format),
+            usage,
+            view_formats: &[],
+        })
+    };
+    let upload = |t: &wgpu::Texture, texels: &[u32], words: u64| {
+        let bytes: Vec<u8> = texels.iter().flat_map(|w| w.to_le_bytes()).collect();
+        let layout = wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some((4 * words * iw as u64) as u32), rows_per_image: None };
+        queue.write_texture(t.as_image_copy(), &bytes, layout, size);
+    };
+    let color = texture(case.color, wgpu::TextureUsages::COPY_SRC | wgpu::TextureUsages::COPY_DST | wgpu::TextureUsages::TEXTURE_BINDING);
+    upload(&color, &color_texels, case.color.words_per_pixel());
+    let depth = if case.depth.is_depth() {
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC | wgpu::TextureUsages::TEXTURE_BINDING;
+        let depth = texture(case.depth, usage);
+        let values: Vec<f32> = depth_texels
+            .iter()
+            .map(|&w| if case.depth.is_unorm24() { (w & 0xff_ffff) as f32 / 16_777_215.0 } else { f32::from_bits(w) })
+            .collect();
+        render_depth(device, queue, &depth, &values, iw);
+        depth
+    } else {
+        let depth = texture(case.depth, wgpu::TextureUsages::COPY_SRC | wgpu::TextureUsages::COPY_DST);
+        upload(&depth, &depth_texels, 1);
+        depth
+    };
+    (color, depth)
+}
+
+/// Every case through wgpu: the renderer's own textures (colour uploaded, depth written by a pass,
+/// rows not a multiple of 256 bytes copied row by row, the two `Depth24Plus` formats read by a
+/// kernel), each frame recorded into the renderer's own encoder with nothing made, submitted or
+/// read back. The depths read back are the intended ones (an f32 depth bit for bit, a 24-bit one
+/// within its step), and the frame equals the CPU backend's from stand-in images holding the same
+/// words, within 1e-4 relative; one frame also writes the renderer's RGBA16F texture, equal to the
+/// CPU's image within a unit in the last place of a half.
+#[test]
+fn depth_and_colour_formats_on_wgpu_textures_give_the_cpus_frame() {
+    let Some((device, queue, info)) = dof_tests::wgpu_device() else { return };
+    let mut g = dof::backend::WgpuBackend::from_device(device.clone(), queue.clone(), info);
+    let mut cpu = CpuBackend::new();
+    let mut ctx = context(&mut g);
+    let mut cpu_ctx = context(&mut cpu);
+    let pixels = (W * H) as u64;
+    let (out, depth_read, cpu_out) = (
+        g.create_buffer(3 * pixels, "out").unwrap(),
+        g.create_buffer(pixels, "depth").unwrap(),
+        cpu.create_buffer(3 * pixels, "out").unwrap(),
+    );
+    let out_texture = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("renderer's output"),
+        size: wgpu::Extent3d { width: W, height: H, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba16Float,
+        usage: wgpu::TextureUsages::COPY_DST | wgpu::TextureUsages::COPY_SRC,
+        view_formats: &[],
+    });
+    let out_image = g.import_texture(&out_texture).unwrap();
+    for (n, case) in cases().into_iter().enumerate() {
+        let (color_texture, depth_texture) = wgpu_textures(&device, &queue, &case);
+        let (color, depth) = (g.import_texture(&color_texture).unwrap(), g.import_texture(&depth_texture).unwrap());
+        let expected_depth = if case.depth.is_depth() { ImageFormat::D32Float } else { case.depth };
+        assert_eq!((color.format, depth.format), (case.color, expected_depth), "{case:?}");
+
+        // The depth as the frame reads it, against the value the pass wrote.
+        g.copy_image_to_buffer(depth.top_left(W, H), depth_read, 0, "depth").unwrap();
+        let read = g.read_buffer(depth_read, 0, pixels).unwrap();
+        let (_, depth_texels) = texels(&case);
+        for (i, &word) in read.iter().enumerate() {
+            let t = depth_texels[(i as u32 / W * case.image[0] + i as u32 % W) as usize];
+            if case.depth.is_unorm24() {
+                let want = (t & 0xff_ffff) as f32 / 16_777_215.0;
+                let got = f32::from_bits(word);
+                assert!((got - want).abs() <= 1.0 / 16_777_215.0, "{case:?} texel {i}: depth {got}, written {want}");
+            } else {
+                assert_eq!(word, t, "{case:?} texel {i}: an f32 depth is read bit for bit");
+            }
+        }
+
+        // The frame, recorded into the renderer's encoder.
+        let output = if n == 0 { FrameOutput::Image(out_image) } else { FrameOutput::Buffer(RgbBuffer(out)) };
+        let input = FrameInput::Images { color, depth, encoding: case.encoding };
+        let frame_on = |output| Frame { output, ..frame(input, out) };
+        let before = g.counters();
+        let mut encoder = device.create_command_encoder(&Default::default());
+        {
+            let mut recording = g.record_into(&mut encoder).unwrap();
+            ctx.record(&mut *recording, &frame_on(output)).unwrap_or_else(|e| panic!("{case:?}: {e}"));
+        }
+        let spent = g.counters().since(&before);
+        assert_eq!((spent.allocations, spent.submissions, spent.uploads, spent.readbacks), (0, 0, 0, 0), "{case:?}");
+        queue.submit([encoder.finish()]);
+
+        // The CPU's frame from stand-ins holding the words the frame read.
+        let (color_texels, _) = texels(&case);
+        let cpu_color = cpu.create_image(case.color, case.image).unwrap();
+        cpu.write_image(&cpu_color, &color_texels).unwrap();
+        let cpu_depth = cpu.create_image(expected_depth, [W, H]).unwrap();
+        cpu.write_image(&cpu_depth, &read).unwrap();
+        let cpu_frame = Frame {
+            output: FrameOutput::Buffer(RgbBuffer(cpu_out)),
+            ..frame(FrameInput::Images { color: cpu_color, depth: cpu_depth, encoding: case.encoding }, cpu_out)
+        };
+        cpu_ctx.record(&mut cpu, &cpu_frame).unwrap();
+        cpu.submit().unwrap();
+        let want = floats(&cpu.read_buffer(cpu_out, 0, 3 * pixels).unwrap());
+        assert!(want.iter().all(|v| v.is_finite()) && want.iter().any(|&v| v > 0.0), "{case:?}: an empty frame");
+        if n == 0 {
+            let words = g_texture_words(&mut g, &out_image);
+            let halves = g.read_buffer(words, 0, 2 * pixels).unwrap();
+            g.destroy_buffer(words);
+            for (i, w) in want.chunks(3).enumerate() {
+                let got = [f16_to_f32(halves[2 * i] & 0xffff), f16_to_f32(halves[2 * i] >> 16), f16_to_f32(halves[2 * i + 1] & 0xffff)];
+                for k in 0..3 {
+                    assert!(
+                        (got[k] - w[k]).abs() <= w[k].abs() * 2f32.powi(-10),
+                        "{case:?} pixel {i}: {got:?} in the texture, the CPU's {w:?}"
+                    );
+                }
+                assert_eq!(halves[2 * i + 1] >> 16, f32_to_f16(1.0), "alpha 1");
+            }
+        } else {
+            let got = floats(&g.read_buffer(out, 0, 3 * pixels).unwrap());
+            let worst = got.iter().zip(&want).map(|(x, y)| (x - y).abs() / y.abs().max(1.0)).fold(0.0f32, f32::max);
+            assert!(worst <= 1e-4, "{case:?}: the wgpu frame differs from the CPU's by {worst} (relative)");
+        }
+        g.forget_texture(&color);
+        g.forget_texture(&depth);
+        cpu.destroy_image(&cpu_color);
+        cpu.destroy_image(&cpu_depth);
+    }
+    assert!(g.take_diagnostics().is_empty());
+    ctx.destroy(&mut g);
+    cpu_ctx.destroy(&mut cpu);
+}
+
+/// The words of an imported texture, copied into a new buffer of the backend.
+fn g_texture_words(g: &mut dof::backend::WgpuBackend, image: &ImageRef) -> BufferId {
+    let buffer = g.create_buffer(image.words(), "texture words").unwrap();
+    g.copy_image_to_buffer(*image, buffer, 0, "texture words").unwrap();
+    buffer
+}
+
+/// Textures a frame cannot take are refused by name before anything is recorded: a format it
+/// does not read, a multisampled texture, one without the usage its copy needs, a depth texture as
+/// the output.
+#[test]
+fn wgpu_textures_a_frame_cannot_take_are_refused_by_name() {
+    let Some((device, queue, info)) = dof_tests::wgpu_device() else { return };
+    let mut g = dof::backend::WgpuBackend::from_device(device.clone(), queue, info);
+    let texture = |format, usage, samples| {
+        device.create_texture(&wgpu::TextureDescriptor {
+            label: None,
+            size: wgpu::Extent3d { width: W, height: H, depth_or_array_layers: 1 },
+            mip_level_count: 1,
+            sample_count: samples,
+            dimension: wgpu::TextureDimension::D2,
+            format,
+            usage,
+            view_formats: &[],
+        })
+    };
+    let attachment = wgpu::TextureUsages::RENDER_ATTACHMENT;
+    let e = g.import_texture(&texture(wgpu::TextureFormat::Bgra8Unorm, attachment, 1)).unwrap_err().to_string();
+    assert!(e.contains("Bgra8Unorm") && e.contains("Depth24PlusStencil8") && e.contains("Rgba16Float"), "{e}");
+    let e = g.import_texture(&texture(wgpu::TextureFormat::Rgba16Float, attachment, 4)).unwrap_err().to_string();
+    assert!(e.contains("4 samples"), "{e}");
+    let mut ctx = context(&mut g);
+    let out = g.create_buffer(3 * (W * H) as u64, "out").unwrap();
+    let no_copy = g.import_texture(&texture(wgpu::TextureFormat::Rgba16Float, attachment, 1)).unwrap();
+    let depth24 =
+        g.import_texture(&texture(wgpu::TextureFormat::Depth24Plus, attachment | wgpu::TextureUsages::TEXTURE_BINDING, 1)).unwrap();
+    let copyable = g.import_texture(&texture(wgpu::TextureFormat::Rgba16Float, wgpu::TextureUsages::COPY_SRC, 1)).unwrap();
+    let no_binding = g.import_texture(&texture(wgpu::TextureFormat::Depth32Float, attachment, 1)).unwrap();
+    let reversed = DepthEncoding::Reversed { near: NEAR, far: FAR };
+    let mut refused = |input, output| {
+        let before = g.counters();
+        let mut encoder = device.create_command_encoder(&Default::default());
+        let mut recording = g.record_into(&mut encoder).unwrap();
+        let e = ctx.record(&mut *recording, &Frame { output, ..frame(input, out) }).unwrap_err().to_string();
+        drop(recording);
+        assert_eq!(g.counters().since(&before).commands, 0, "refused before any command: {e}");
+        e
+    };
+    let e = refused(FrameInput::Images { color: no_copy, depth: depth24, encoding: reversed }, FrameOutput::Buffer(RgbBuffer(out)));
+    assert!(e.contains("COPY_SRC"), "{e}");
+    let e = refused(FrameInput::Images { color: copyable, depth: no_binding, encoding: reversed }, FrameOutput::Buffer(RgbBuffer(out)));
+    assert!(e.contains("TEXTURE_BINDING") && e.contains("Depth32Float"), "{e}");
+    let e = refused(FrameInput::Images { color: copyable, depth: depth24, encoding: reversed }, FrameOutput::Image(depth24));
+    assert!(e.contains("output") && e.contains("D32_SFLOAT"), "{e}");
+    assert!(g.take_diagnostics().is_empty());
+    ctx.destroy(&mut g);
 }

@@ -12,7 +12,7 @@ use dof::ops::sort::sort_on_with;
 use dof::stress::{noise_with_sky, test_lens};
 use dof::workload::{lists_with, random_key};
 use dof_shaders::tonemap::{DisplayParams, MODE_LINEAR, MODE_TONEMAP, display_tonemap};
-use dof_tests::wgpu;
+use dof_tests::{wgpu, wgpu_device};
 use rand::SeedableRng;
 use rand_pcg::Pcg64;
 
@@ -114,26 +114,12 @@ fn splatting_stages_match_the_cpu() {
     }
 }
 
-/// A renderer's device, made as a renderer makes it: wgpu's Vulkan backend, with immediates.
-fn callers_device() -> Option<(wgpu::Device, wgpu::Queue, wgpu::AdapterInfo)> {
-    wgpu()?;
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
-        backends: wgpu::Backends::VULKAN,
-        ..wgpu::InstanceDescriptor::new_without_display_handle()
-    });
-    let adapter = pollster::block_on(instance.request_adapter(&Default::default())).expect("an adapter");
-    let descriptor =
-        wgpu::DeviceDescriptor { required_features: wgpu::Features::IMMEDIATES, required_limits: adapter.limits(), ..Default::default() };
-    let (device, queue) = pollster::block_on(adapter.request_device(&descriptor)).expect("a device");
-    Some((device, queue, adapter.get_info()))
-}
-
 /// Every method recorded by a renderer into its own command encoder, on its own device and its own
 /// buffers: the frame makes, submits, uploads and reads back nothing; outside the encoder it is
 /// refused; the image is the CPU's within float rounding.
 #[test]
 fn a_renderer_records_every_method_into_its_own_encoder() {
-    let Some((device, queue, info)) = callers_device() else { return };
+    let Some((device, queue, info)) = wgpu_device() else { return };
     let mut backend = WgpuBackend::from_device(device.clone(), queue.clone(), info);
     let mut cpu = CpuBackend::with_shared_bytes(backend.limits().max_shared_bytes);
     let (w, h) = (40, 24);

@@ -94,19 +94,7 @@ impl CpuBackend {
             self.images.push(None);
         }
         self.images[slot] = Some(CpuImage { format, extent, texels: vec![0; words as usize] });
-        Ok(ImageRef {
-            handle: slot as u64 + 1,
-            format,
-            extent,
-            #[cfg(feature = "vulkan")]
-            layout: ash::vk::ImageLayout::GENERAL,
-            #[cfg(feature = "vulkan")]
-            stage: ash::vk::PipelineStageFlags::empty(),
-            #[cfg(feature = "vulkan")]
-            access: ash::vk::AccessFlags::empty(),
-            #[cfg(feature = "vulkan")]
-            final_layout: ash::vk::ImageLayout::GENERAL,
-        })
+        Ok(ImageRef::in_table(slot as u64 + 1, format, extent))
     }
 
     /// Writes every texel of a stand-in image, packed as its copies pack them (row after row).

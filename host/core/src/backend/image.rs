@@ -204,6 +204,25 @@ impl ImageRef {
         })
     }
 
+    /// An image another backend keeps in a table of its own (the CPU backend's stand-ins, the wgpu
+    /// backend's textures), by `handle` there; its Vulkan state says GENERAL and nothing to wait for
+    /// (those backends have no layouts).
+    pub(crate) fn in_table(handle: u64, format: ImageFormat, extent: [u32; 2]) -> Self {
+        ImageRef {
+            handle,
+            format,
+            extent,
+            #[cfg(feature = "vulkan")]
+            layout: ash::vk::ImageLayout::GENERAL,
+            #[cfg(feature = "vulkan")]
+            stage: ash::vk::PipelineStageFlags::empty(),
+            #[cfg(feature = "vulkan")]
+            access: ash::vk::AccessFlags::empty(),
+            #[cfg(feature = "vulkan")]
+            final_layout: ash::vk::ImageLayout::GENERAL,
+        }
+    }
+
     /// The raw Vulkan handle.
     pub fn handle(&self) -> u64 {
         self.handle

@@ -8,8 +8,9 @@
 //! - a dispatch is timed by timestamps around its pass where wgpu has them (`timing.rs`); a clear,
 //!   and anything recorded into a caller's encoder, is not (NaN);
 //! - wgpu's barriers are its own, so `barriers` in the counters stays 0;
-//! - no images: a frame's input and output are buffers (the caller's own through
-//!   [`WgpuBackend::import_buffer`]).
+//! - images are the caller's textures ([`WgpuBackend::import_texture`], in `textures.rs`), copied
+//!   row by row where a row is not a multiple of wgpu's 256-byte pitch; depth is read by a kernel,
+//!   since wgpu copies none out of `Depth24Plus` and only whole textures out of the others.
 //!
 //! A renderer on its own device ([`WgpuBackend::from_device`]) records frames into its own command
 //! encoder ([`WgpuBackend::record_into`], in `external.rs`): nothing is made, submitted or read back.
@@ -17,7 +18,7 @@
 //! wgpu reports a misuse it catches through its error handler, not the call: the backend gathers
 //! those messages and fails the next `submit`, `read_buffer` or `write_buffer` with them.
 
-use super::{Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, Limits, RetireQueue, check_dispatch};
+use super::{Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageRef, Limits, RetireQueue, check_dispatch};
 use crate::error::{Error, Result};
 use dof_shaders::KernelDesc;
 use dof_shaders::fill::{FILL, FillParams, THREADS as FILL_THREADS};
@@ -25,6 +26,7 @@ use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
 mod external;
+mod textures;
 mod timing;
 pub use external::WgpuRecording;
 use timing::{Command, Timestamps};
@@ -74,6 +76,10 @@ pub struct WgpuBackend {
     queue: wgpu::Queue,
     buffers: Vec<Option<WgpuBuffer>>,
     pipelines: HashMap<&'static str, Pipeline>,
+    /// The caller's textures ([`WgpuBackend::import_texture`]), by image handle − 1.
+    textures: Vec<Option<textures::WgpuTexture>>,
+    /// The `texture_read` kernel's pipeline, made when a texture needing it is imported.
+    depth_read: Option<wgpu::ComputePipeline>,
     /// Commands recorded since the last submission; during [`WgpuBackend::record_into`], the
     /// caller's encoder.
     encoder: Option<wgpu::CommandEncoder>,
@@ -156,6 +162,8 @@ impl WgpuBackend {
             queue,
             buffers: Vec::new(),
             pipelines: HashMap::new(),
+            textures: Vec::new(),
+            depth_read: None,
             encoder: None,
             external: false,
             callers_device: true,
@@ -486,6 +494,18 @@ impl Backend for WgpuBackend {
         self.check_range(args, args_offset_words, 3)?;
         let args = self.buffer(args)?.buffer.clone();
         self.record_dispatch(kernel, Groups::Indirect(args, args_offset_words * 4), buffers, push, label)
+    }
+
+    fn copy_image_to_buffer(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, label: &str) -> Result<()> {
+        self.copy_texture(image, buffer, offset_words, false, label)
+    }
+
+    fn copy_buffer_to_image(&mut self, buffer: BufferId, offset_words: u64, image: ImageRef, label: &str) -> Result<()> {
+        self.copy_texture(image, buffer, offset_words, true, label)
+    }
+
+    fn check_image_copy(&self, image: &ImageRef, into_image: bool) -> Result<()> {
+        self.check_texture_copy(image, into_image)
     }
 
     fn submit(&mut self) -> Result<Vec<CommandTime>> {

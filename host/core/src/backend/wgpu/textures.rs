@@ -1,0 +1,282 @@
+//! A renderer's textures as a frame's input and output: imported once, then copied to and from
+//! buffers as the frame API's images are on Vulkan. Depth is read by a kernel (`texture_read`), as
+//! f32 depths: wgpu copies no depth out of `Depth24Plus` or `Depth24PlusStencil8`, and copies one
+//! out of the others only for the whole texture.
+
+use super::WgpuBackend;
+use super::timing::Command;
+use crate::backend::{BufferId, ImageFormat, ImageRef};
+use crate::error::{Error, Result};
+use dof_shaders::texture_read::{DEPTH_TEXTURE_WORDS, THREADS, TextureReadParams};
+
+/// How a texture's texels reach a buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Read {
+    /// A texture-to-buffer copy of this aspect.
+    Copy(wgpu::TextureAspect),
+    /// The `texture_read` kernel, through a view of the depth aspect.
+    DepthKernel,
+}
+
+pub(super) struct WgpuTexture {
+    texture: wgpu::Texture,
+    read: Read,
+    /// The view the depth kernel binds, made at import.
+    depth_view: Option<wgpu::TextureView>,
+}
+
+/// The texture formats a frame takes, as the [`ImageFormat`] their texels have in a buffer, and how
+/// they get there.
+fn buffer_format(format: wgpu::TextureFormat) -> Option<(ImageFormat, Read)> {
+    use wgpu::TextureAspect::All;
+    use wgpu::TextureFormat as T;
+    Some(match format {
+        T::Rgba32Float => (ImageFormat::Rgba32Float, Read::Copy(All)),
+        T::Rgba16Float => (ImageFormat::Rgba16Float, Read::Copy(All)),
+        // The same bits as Vulkan's B10G11R11_UFLOAT_PACK32: red in the low 11.
+        T::Rg11b10Ufloat => (ImageFormat::B10G11R11Ufloat, Read::Copy(All)),
+        T::R32Float => (ImageFormat::R32Float, Read::Copy(All)),
+        T::Depth32Float | T::Depth32FloatStencil8 | T::Depth24Plus | T::Depth24PlusStencil8 => (ImageFormat::D32Float, Read::DepthKernel),
+        _ => return None,
+    })
+}
+
+const FORMATS: &str = "Rgba32Float, Rgba16Float, Rg11b10Ufloat, R32Float, Depth32Float, Depth32FloatStencil8, Depth24Plus, \
+                       Depth24PlusStencil8";
+
+impl WgpuBackend {
+    /// Makes the caller's 2D `texture` an image a frame reads or writes ([`crate::FrameInput::Images`],
+    /// [`crate::FrameOutput::Image`]). Its [`ImageRef`]'s format is the layout its texels take in a
+    /// buffer: its own, except that every depth format reads as `D32Float` (f32 depths, read by a
+    /// kernel). Mip level 0 and array layer 0 are used. A colour texture read needs COPY_SRC
+    /// usage, a depth texture TEXTURE_BINDING, an output COPY_DST; wgpu orders the frame's access
+    /// after the caller's earlier commands. The backend keeps a reference until
+    /// [`WgpuBackend::forget_texture`].
+    pub fn import_texture(&mut self, texture: &wgpu::Texture) -> Result<ImageRef> {
+        let format = texture.format();
+        let Some((image_format, read)) = buffer_format(format) else {
+            return Err(Error::InvalidArgument(format!("a frame takes no {format:?} texture; the formats are {FORMATS}")));
+        };
+        if texture.dimension() != wgpu::TextureDimension::D2 || texture.sample_count() != 1 {
+            return Err(Error::InvalidArgument(format!(
+                "a frame takes single-sampled 2D textures, not a {:?} one with {} samples (resolve it first)",
+                texture.dimension(),
+                texture.sample_count()
+            )));
+        }
+        let depth_view = (read == Read::DepthKernel).then(|| {
+            texture.create_view(&wgpu::TextureViewDescriptor {
+                label: Some("dof depth"),
+                dimension: Some(wgpu::TextureViewDimension::D2),
+                aspect: wgpu::TextureAspect::DepthOnly,
+                base_mip_level: 0,
+                mip_level_count: Some(1),
+                base_array_layer: 0,
+                array_layer_count: Some(1),
+                ..Default::default()
+            })
+        });
+        if read == Read::DepthKernel {
+            // Made now, so that no frame makes it.
+            self.depth_read_pipeline()?;
+        }
+        self.check_errors()?;
+        let slot = self.textures.iter().position(Option::is_none).unwrap_or(self.textures.len());
+        if slot == self.textures.len() {
+            self.textures.push(None);
+        }
+        self.textures[slot] = Some(WgpuTexture { texture: texture.clone(), read, depth_view });
+        let size = texture.size();
+        Ok(ImageRef::in_table(slot as u64 + 1, image_format, [size.width, size.height]))
+    }
+
+    /// Drops the backend's reference to an imported texture; its `ImageRef` is then refused.
+    pub fn forget_texture(&mut self, image: &ImageRef) {
+        if let Some(slot) = (image.handle as usize).checked_sub(1).and_then(|i| self.textures.get_mut(i)) {
+            *slot = None;
+        }
+    }
+
+    fn texture(&self, image: &ImageRef) -> Result<&WgpuTexture> {
+        let found = (image.handle as usize).checked_sub(1).and_then(|i| self.textures.get(i)).and_then(Option::as_ref);
+        let texture = found.ok_or_else(|| {
+            Error::InvalidArgument(format!("unknown image {} (the wgpu backend's images come from import_texture)", image.handle))
+        })?;
+        match buffer_format(texture.texture.format()) {
+            Some((format, _)) if format == image.format => Ok(texture),
+            _ => Err(Error::InvalidArgument(format!(
+                "image {} is a {:?} texture, described as {}",
+                image.handle,
+                texture.texture.format(),
+                image.format
+            ))),
+        }
+    }
+
+    /// The checks of a copy (`into_image`: into the texture) made before anything is recorded.
+    pub(super) fn check_texture_copy(&self, image: &ImageRef, into_image: bool) -> Result<()> {
+        let what = if into_image { "copy_buffer_to_image" } else { "copy_image_to_buffer" };
+        image.check_copy(into_image, what)?;
+        let texture = self.texture(image)?;
+        let size = texture.texture.size();
+        if image.extent[0] > size.width || image.extent[1] > size.height {
+            return Err(Error::InvalidArgument(format!(
+                "{what}: {}x{} texels of a {}x{} texture",
+                image.extent[0], image.extent[1], size.width, size.height
+            )));
+        }
+        let (needed, usage) = match (into_image, texture.read) {
+            (true, Read::DepthKernel) => {
+                return Err(Error::InvalidArgument(format!("{what}: a frame writes no depth texture")));
+            }
+            (true, _) => (wgpu::TextureUsages::COPY_DST, "COPY_DST"),
+            (false, Read::DepthKernel) => (wgpu::TextureUsages::TEXTURE_BINDING, "TEXTURE_BINDING"),
+            (false, _) => (wgpu::TextureUsages::COPY_SRC, "COPY_SRC"),
+        };
+        if !texture.texture.usage().contains(needed) {
+            return Err(Error::InvalidArgument(format!(
+                "{what}: the {:?} texture needs {usage} usage (it has {:?})",
+                texture.texture.format(),
+                texture.texture.usage()
+            )));
+        }
+        Ok(())
+    }
+
+    /// Records a copy between the top-left `image.extent` of a texture and `buffer[offset_words..]`,
+    /// rows unpadded: one copy where a row is a multiple of 256 bytes (wgpu's row pitch), else one
+    /// a row.
+    pub(super) fn copy_texture(
+        &mut self,
+        image: ImageRef,
+        buffer: BufferId,
+        offset_words: u64,
+        into_image: bool,
+        label: &str,
+    ) -> Result<()> {
+        self.check_texture_copy(&image, into_image)?;
+        self.check_range(buffer, offset_words, image.words())?;
+        let texture = self.texture(&image)?;
+        let (texture, read, depth_view) = (texture.texture.clone(), texture.read, texture.depth_view.clone());
+        let target = self.buffer(buffer)?.buffer.clone();
+        let [width, height] = image.extent;
+        let aspect = match (read, depth_view) {
+            (Read::Copy(aspect), _) => aspect,
+            (Read::DepthKernel, Some(view)) => return self.read_depth(&view, buffer, offset_words, image.extent, label),
+            (Read::DepthKernel, None) => return Err(Error::Device("a depth texture imported without its view".into())),
+        };
+        let row_bytes = image.format.words_per_pixel() * 4 * width as u64;
+        let rows: Vec<(u32, u32)> =
+            if height == 1 || row_bytes.is_multiple_of(256) { vec![(0, height)] } else { (0..height).map(|y| (y, 1)).collect() };
+        let encoder = self.encoder();
+        for &(y, count) in &rows {
+            let texel = wgpu::TexelCopyTextureInfo { texture: &texture, mip_level: 0, origin: wgpu::Origin3d { x: 0, y, z: 0 }, aspect };
+            let layout = wgpu::TexelCopyBufferLayout {
+                offset: offset_words * 4 + y as u64 * row_bytes,
+                bytes_per_row: (count > 1).then_some(row_bytes as u32),
+                rows_per_image: None,
+            };
+            let texels = wgpu::TexelCopyBufferInfo { buffer: &target, layout };
+            let size = wgpu::Extent3d { width, height: count, depth_or_array_layers: 1 };
+            if into_image {
+                encoder.copy_buffer_to_texture(texels, texel, size)
+            } else {
+                encoder.copy_texture_to_buffer(texel, texels, size)
+            }
+        }
+        let what = if into_image { "copy_buffer_to_image" } else { "copy_image_to_buffer" };
+        self.counters.commands += rows.len() as u64;
+        self.commands.extend(rows.iter().map(|_| Command::new(label, what)));
+        Ok(())
+    }
+
+    /// Records the `texture_read` kernel: the depths of the top-left `extent` as f32 words.
+    fn read_depth(&mut self, view: &wgpu::TextureView, buffer: BufferId, offset_words: u64, extent: [u32; 2], label: &str) -> Result<()> {
+        let offset_words = u32::try_from(offset_words)
+            .map_err(|_| Error::InvalidArgument(format!("`{label}`: a depth read at word {offset_words}, past 2^32")))?;
+        let params = TextureReadParams { width: extent[0], height: extent[1], offset_words };
+        let texels = extent[0] as u64 * extent[1] as u64;
+        let groups = texels.div_ceil(THREADS as u64).clamp(1, self.limits.max_workgroup_count[0] as u64) as u32;
+        let target = self.buffer(buffer)?.buffer.clone();
+        let pipeline = self.depth_read_pipeline()?;
+        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some(label),
+            layout: &pipeline.get_bind_group_layout(0),
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(view) },
+                wgpu::BindGroupEntry { binding: 1, resource: target.as_entire_binding() },
+            ],
+        });
+        let mut command = Command::new(label, DEPTH_TEXTURE_WORDS);
+        let external = self.external;
+        let timestamp_writes = if external { None } else { self.timestamps.as_mut().and_then(|t| t.pass_writes(&mut command)) };
+        let device = &self.device;
+        let encoder =
+            self.encoder.get_or_insert_with(|| device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("dof") }));
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(label), timestamp_writes });
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &bind_group, &[]);
+        pass.set_immediates(0, bytemuck::bytes_of(&params));
+        pass.dispatch_workgroups(groups, 1, 1);
+        drop(pass);
+        self.counters.commands += 1;
+        self.counters.dispatches += 1;
+        self.commands.push(command);
+        Ok(())
+    }
+
+    /// The `texture_read` kernel's pipeline, made on first use: a depth texture and a storage
+    /// buffer, its parameters as immediates.
+    fn depth_read_pipeline(&mut self) -> Result<wgpu::ComputePipeline> {
+        if let Some(pipeline) = &self.depth_read {
+            return Ok(pipeline.clone());
+        }
+        let source = crate::shaders::wgsl_module(DEPTH_TEXTURE_WORDS)
+            .ok_or_else(|| Error::InvalidArgument(format!("kernel {DEPTH_TEXTURE_WORDS} has no WGSL module (host/wgsl/)")))?;
+        let layout = self.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some(DEPTH_TEXTURE_WORDS),
+            entries: &[
+                wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::COMPUTE,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Depth,
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1,
+                    visibility: wgpu::ShaderStages::COMPUTE,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Storage { read_only: false },
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
+                    count: None,
+                },
+            ],
+        });
+        let pipeline_layout = self.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(DEPTH_TEXTURE_WORDS),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: std::mem::size_of::<TextureReadParams>() as u32,
+        });
+        let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(DEPTH_TEXTURE_WORDS),
+            source: wgpu::ShaderSource::Wgsl(source.into()),
+        });
+        let pipeline = self.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(DEPTH_TEXTURE_WORDS),
+            layout: Some(&pipeline_layout),
+            module: &module,
+            entry_point: None,
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        self.check_errors().map_err(|e| Error::Device(format!("the pipeline of {DEPTH_TEXTURE_WORDS}: {e}")))?;
+        self.depth_read = Some(pipeline.clone());
+        Ok(pipeline)
+    }
+}

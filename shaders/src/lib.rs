@@ -73,3 +73,10 @@ pub fn all_kernels() -> impl Iterator<Item = &'static KernelDesc> {
 pub fn all_draws() -> [&'static DrawDesc; 2] {
     [&bokeh::BOKEH_DRAW, &raster::draw::RASTER_DRAW]
 }
+
+/// The entry points of kernels that read textures (modules of their own, run by the wgpu backend
+/// alone, with no CPU body).
+#[cfg(not(target_arch = "spirv"))]
+pub fn all_texture_kernels() -> [&'static str; 1] {
+    [texture_read::DEPTH_TEXTURE_WORDS]
+}

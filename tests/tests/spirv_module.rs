@@ -79,6 +79,7 @@ fn every_kernel_the_host_names_has_its_own_module() {
     for draw in dof_shaders::all_draws() {
         declared.extend([draw.vertex.to_string(), draw.fragment.to_string()]);
     }
+    declared.extend(dof_shaders::all_texture_kernels().map(String::from));
     let embedded: BTreeSet<String> = dof::shaders::MODULES.iter().map(|(e, _)| e.to_string()).collect();
     assert_eq!(embedded, declared, "embedded modules vs kernels declared to the host");
     for entry in &declared {

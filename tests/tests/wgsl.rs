@@ -1,7 +1,7 @@
 //! The kernels in WGSL (`host/wgsl/`, translated by naga from `host/spirv/` whenever the kernels
 //! are rebuilt): one module per SPIR-V module, from the same kernel sources, each one that naga
 //! parses as WGSL, validates, and writes as MSL (Metal), HLSL (DX12) and SPIR-V (Vulkan), the
-//! languages wgpu hands to drivers.
+//! languages wgpu hands to drivers. Also the WGSL peel test renderers copy from the docs.
 
 use dof::shaders::{MODULES, SOURCE_HASH};
 use naga::valid::{Capabilities, ValidationFlags, Validator};
@@ -80,4 +80,19 @@ fn every_kernel_translates_to_msl_hlsl_and_spirv() {
         }
     }
     assert!(failures.is_empty(), "{} of {} kernels fail:\n{}", failures.len(), modules.len(), failures.join("\n"));
+}
+
+/// The WGSL peel test of docs/integration.md (`<!-- wgsl: peel_keep -->`) is the one the wgpu
+/// example host's shader holds, verbatim, and that shader is valid WGSL.
+#[test]
+fn the_documented_wgsl_peel_test_is_the_example_hosts_and_validates() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+    let doc = std::fs::read_to_string(format!("{root}/docs/integration.md")).expect("docs/integration.md");
+    let after = doc.split_once("<!-- wgsl: peel_keep -->").expect("the peel_keep WGSL snippet").1;
+    let snippet = after.split_once("```wgsl\n").and_then(|(_, rest)| rest.split_once("```")).expect("a wgsl block").0;
+    assert!(snippet.contains("fn dof_peel_keep"), "{snippet}");
+    let shader = std::fs::read_to_string(format!("{root}/host/examples/wgpu_host/peel.wgsl")).expect("the example's shader");
+    assert!(shader.contains(snippet), "host/examples/wgpu_host/peel.wgsl does not hold the doc's snippet verbatim");
+    let module = naga::front::wgsl::parse_str(&shader).unwrap_or_else(|e| panic!("{}", e.emit_to_string(&shader)));
+    Validator::new(ValidationFlags::all(), capabilities()).validate(&module).unwrap_or_else(|e| panic!("{e:?}"));
 }

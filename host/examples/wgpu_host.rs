@@ -1,0 +1,527 @@
+//! An example renderer on wgpu that adds multi-layer depth of field to its own frames through the
+//! public frame API: it draws its scene, peels it with its own passes, and blurs the layers, all
+//! in its own command encoder. A template for a wgpu renderer (Bevy's included) to copy from.
+//!
+//! What the renderer does, and what it hands the library:
+//! 1. It makes its own wgpu device (any API wgpu offers: `WGPU_BACKEND` picks one) with
+//!    `Features::IMMEDIATES`, which the kernels need, and wraps it with
+//!    `WgpuBackend::from_device`.
+//! 2. Its own objects: a render pipeline whose WGSL (`wgpu_host/peel.wgsl`) discards a fragment
+//!    unless the library's peel test (`dof_peel_keep`) keeps it against the bound the library
+//!    writes; an RGBA16F colour and a `Depth32Float` depth attachment; the bound and the indirect
+//!    draw command in storage buffers of its own, imported with `import_buffer`; an RGBA32F texture
+//!    the result goes to. The textures become the library's images with `import_texture`.
+//! 3. `RendererPeel` and a `SplatContext` are made once (every allocation happens here).
+//! 4. Per frame, one command encoder of its own, one submission: the library's `begin`, then for
+//!    each layer its own render pass (drawn indirectly from the command the library wrote) and the
+//!    library's `append` of the attachments, then `finish` and the depth of field into the output
+//!    texture, each library call inside `record_into`. The camera orbits the focus point 2 degrees
+//!    a frame. Inside a frame the library allocates, submits, uploads and reads back nothing:
+//!    checked on its counters.
+//! 5. Each frame is compared with the same `SplatContext` on the library's CPU backend, run from
+//!    the slots the peel wrote (read back after the frame, for the check alone), and the last one
+//!    is written as EXR and PNG.
+//!
+//! `cargo run -p dof --features wgpu-host --example wgpu_host -- [--width W --height H]
+//! [--frames N] [--out DIR]`; it exits non-zero when a check fails.
+
+use anyhow::{Context, Result, bail, ensure};
+use dof::frame::Extent;
+use dof::io::{write_exr, write_png_preview};
+use dof::layers::RgbImage;
+use dof::scene::{LayerOptions, ThinLens};
+use dof_core::backend::{Backend, BackendCounters, BufferId, CpuBackend, ImageRef, WgpuBackend};
+use dof_core::frame::{
+    DepthEncoding, DofContext, Frame, FrameInput, FrameOutput, Merge, RendererPeel, RendererPeelDesc, RgbBuffer, SplatContext,
+    SplatContextDesc, SplatOptions,
+};
+use dof_shaders::slot::SLOT_WORDS;
+use glam::{Mat4, Vec3};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+const USAGE: &str = "usage: wgpu_host [--width W] [--height H] [--frames N] [--out DIR]";
+const COLOUR: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+const DEPTH: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+const OUTPUT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
+
+struct Args {
+    width: u32,
+    height: u32,
+    frames: u32,
+    out: PathBuf,
+}
+
+fn parse_args() -> Result<Args> {
+    let mut args = Args { width: 320, height: 180, frames: 3, out: "out/wgpu_host".into() };
+    let mut it = std::env::args().skip(1);
+    while let Some(arg) = it.next() {
+        let mut value = || it.next().with_context(|| format!("{arg} needs a value\n{USAGE}"));
+        match arg.as_str() {
+            "--width" => args.width = value()?.parse()?,
+            "--height" => args.height = value()?.parse()?,
+            "--frames" => args.frames = value()?.parse()?,
+            "--out" => args.out = value()?.into(),
+            "-h" | "--help" => {
+                println!("{USAGE}");
+                std::process::exit(0);
+            }
+            _ => bail!("unknown argument `{arg}`\n{USAGE}"),
+        }
+    }
+    ensure!(args.width > 0 && args.height > 0 && args.frames > 0, "width, height and frames must be positive");
+    Ok(args)
+}
+
+// ---------------------------------------------------------------------------------------------
+// The renderer's own wgpu objects. Nothing here is specific to the library, except the feature
+// its device asks for and the peel test in its fragment shader.
+// ---------------------------------------------------------------------------------------------
+
+/// A vertex: position, then colour and coverage.
+type Vertex = [f32; 7];
+
+/// The peeled scene: a far wall, a half-covering pane in focus and a near bar.
+fn scene() -> Vec<Vertex> {
+    let quad = |x0: f32, y0: f32, x1: f32, y1: f32, z: f32, c: [f32; 4]| {
+        let v = |x: f32, y: f32| [x, y, z, c[0], c[1], c[2], c[3]];
+        [v(x0, y0), v(x1, y0), v(x1, y1), v(x0, y0), v(x1, y1), v(x0, y1)]
+    };
+    [
+        quad(-6.0, -3.0, 6.0, 3.0, -8.0, [0.2, 0.4, 0.8, 1.0]),
+        quad(-1.0, -0.8, 0.6, 0.5, -3.0, [0.9, 0.3, 0.2, 0.5]),
+        quad(-0.35, -1.2, -0.1, 1.2, -1.3, [0.8, 0.7, 0.1, 1.0]),
+    ]
+    .concat()
+}
+
+/// The renderer: its device, its peel pass and attachments, its output texture.
+struct Renderer {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    info: wgpu::AdapterInfo,
+    extent: [u32; 2],
+    pipeline: wgpu::RenderPipeline,
+    bind_group: wgpu::BindGroup,
+    vertices: wgpu::Buffer,
+    vertex_count: u32,
+    /// The library writes them: one bound a pixel, and the indirect draw command (5 words).
+    bound: wgpu::Buffer,
+    draw: wgpu::Buffer,
+    colour: wgpu::Texture,
+    depth: wgpu::Texture,
+    views: [wgpu::TextureView; 2],
+    output: wgpu::Texture,
+    readback: wgpu::Buffer,
+}
+
+impl Renderer {
+    fn new(extent: [u32; 2]) -> Result<Renderer> {
+        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+            backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::PRIMARY),
+            ..wgpu::InstanceDescriptor::new_without_display_handle()
+        });
+        let adapter = pollster::block_on(instance.request_adapter(&Default::default())).context("wgpu offers no adapter")?;
+        let info = adapter.get_info();
+        ensure!(
+            adapter.features().contains(wgpu::Features::IMMEDIATES),
+            "{} has no immediates, which the library's kernels read",
+            info.name
+        );
+        let descriptor = wgpu::DeviceDescriptor {
+            label: Some("renderer"),
+            required_features: wgpu::Features::IMMEDIATES | (adapter.features() & wgpu::Features::TIMESTAMP_QUERY),
+            required_limits: adapter.limits(),
+            ..Default::default()
+        };
+        let (device, queue) = pollster::block_on(adapter.request_device(&descriptor))?;
+
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("peel"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("wgpu_host/peel.wgsl").into()),
+        });
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("peel"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Storage { read_only: true },
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            }],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("peel"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: PUSH_BYTES,
+        });
+        let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4];
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("peel"),
+            layout: Some(&pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("vs"),
+                compilation_options: Default::default(),
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: size_of::<Vertex>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &attributes,
+                })],
+            },
+            primitive: Default::default(),
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: DEPTH,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &module,
+                entry_point: Some("fs"),
+                compilation_options: Default::default(),
+                targets: &[Some(COLOUR.into())],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+
+        let pixels = extent[0] as u64 * extent[1] as u64;
+        let buffer = |label, size, usage| {
+            device.create_buffer(&wgpu::BufferDescriptor { label: Some(label), size, usage, mapped_at_creation: false })
+        };
+        use wgpu::BufferUsages as B;
+        // The library fills and writes them (storage, copies); we read them (fragment, indirect).
+        let bound = buffer("bound", 4 * pixels, B::STORAGE | B::COPY_DST | B::COPY_SRC);
+        let draw = buffer("draw", 20, B::STORAGE | B::COPY_DST | B::COPY_SRC | B::INDIRECT);
+        let triangles = scene();
+        let vertices = buffer("vertices", (size_of::<Vertex>() * triangles.len()) as u64, B::VERTEX | B::COPY_DST);
+        queue.write_buffer(&vertices, 0, bytemuck::cast_slice(&triangles));
+        let readback = buffer("readback", 16 * pixels, B::MAP_READ | B::COPY_DST);
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("peel"),
+            layout: &layout,
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: bound.as_entire_binding() }],
+        });
+
+        let texture = |label, format, usage| {
+            device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size: wgpu::Extent3d { width: extent[0], height: extent[1], depth_or_array_layers: 1 },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage,
+                view_formats: &[],
+            })
+        };
+        use wgpu::TextureUsages as T;
+        // The library copies colour out (COPY_SRC) and reads depth in a kernel (TEXTURE_BINDING).
+        let colour = texture("colour", COLOUR, T::RENDER_ATTACHMENT | T::COPY_SRC);
+        let depth = texture("depth", DEPTH, T::RENDER_ATTACHMENT | T::TEXTURE_BINDING);
+        let output = texture("output", OUTPUT, T::COPY_DST | T::COPY_SRC);
+        let views = [colour.create_view(&Default::default()), depth.create_view(&Default::default())];
+        Ok(Renderer {
+            device,
+            queue,
+            info,
+            extent,
+            pipeline,
+            bind_group,
+            vertices,
+            vertex_count: triangles.len() as u32,
+            bound,
+            draw,
+            colour,
+            depth,
+            views,
+            output,
+            readback,
+        })
+    }
+
+    /// Records one peel pass: cleared attachments (the background, the far plane), then the
+    /// triangles beyond the bound, drawn with the command the library wrote.
+    fn peel_pass(&self, encoder: &mut wgpu::CommandEncoder, view_proj: Mat4, background: [f32; 3]) {
+        let clear = wgpu::Color { r: background[0] as f64, g: background[1] as f64, b: background[2] as f64, a: 1.0 };
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("peel pass"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &self.views[0],
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &self.views[1],
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+                stencil_ops: None,
+            }),
+            ..Default::default()
+        });
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &self.bind_group, &[]);
+        pass.set_vertex_buffer(0, self.vertices.slice(..));
+        pass.set_immediates(0, &push_bytes(view_proj, self.extent[0]));
+        pass.draw_indirect(&self.draw, 0);
+    }
+
+    /// The output texture's texels, copied by our own pass after the frame and read once it ran.
+    fn read_output(&self, encoder: &mut wgpu::CommandEncoder) {
+        let layout = wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(16 * self.extent[0]), rows_per_image: None };
+        let size = wgpu::Extent3d { width: self.extent[0], height: self.extent[1], depth_or_array_layers: 1 };
+        encoder.copy_texture_to_buffer(self.output.as_image_copy(), wgpu::TexelCopyBufferInfo { buffer: &self.readback, layout }, size);
+    }
+
+    fn output_image(&self) -> Result<RgbImage> {
+        let slice = self.readback.slice(..);
+        slice.map_async(wgpu::MapMode::Read, |_| {});
+        self.device.poll(wgpu::PollType::Wait { submission_index: None, timeout: None })?;
+        let view = slice.get_mapped_range().map_err(|e| anyhow::anyhow!("reading the output back: {e}"))?;
+        let rgba: &[f32] = bytemuck::cast_slice(&view);
+        let data = rgba.as_chunks::<4>().0.iter().map(|p| [p[0], p[1], p[2]]).collect();
+        drop(view);
+        self.readback.unmap();
+        Ok(RgbImage { width: self.extent[0], height: self.extent[1], data })
+    }
+}
+
+/// wgpu's clip space from view space (looking down −z): y up, depth 0 at the near plane and 1 at
+/// the far plane (the library's `DepthEncoding::Standard`).
+fn projection(yfov: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
+    let t = 1.0 / (yfov / 2.0).tan();
+    let (a, b) = (far / (near - far), near * far / (near - far));
+    Mat4::from_cols_array(&[t / aspect, 0.0, 0.0, 0.0, 0.0, t, 0.0, 0.0, 0.0, 0.0, a, -1.0, 0.0, 0.0, b, 0.0])
+}
+
+/// View space of a camera at `eye` looking at `target`, +y up.
+fn look_at(eye: Vec3, target: Vec3) -> Mat4 {
+    let f = (target - eye).normalize();
+    let (s, u) = (f.cross(Vec3::Y).normalize(), f.cross(Vec3::Y).normalize().cross(f));
+    Mat4::from_cols_array(&[s.x, u.x, -f.x, 0.0, s.y, u.y, -f.y, 0.0, s.z, u.z, -f.z, 0.0, -s.dot(eye), -u.dot(eye), f.dot(eye), 1.0])
+}
+
+/// The immediates of both stages: the view-projection matrix (column-major) and the width, padded
+/// to the struct's 16-byte alignment.
+const PUSH_BYTES: u32 = 80;
+
+fn push_bytes(view_proj: Mat4, width: u32) -> Vec<u8> {
+    let mut bytes: Vec<u8> = bytemuck::cast_slice(&view_proj.to_cols_array()).to_vec();
+    bytes.extend(width.to_le_bytes());
+    bytes.resize(PUSH_BYTES as usize, 0);
+    bytes
+}
+
+// ---------------------------------------------------------------------------------------------
+// The frames.
+// ---------------------------------------------------------------------------------------------
+
+/// What the library did in one frame, and what the frame shows.
+struct FrameResult {
+    image: RgbImage,
+    counters: BackendCounters,
+    record_ms: f64,
+}
+
+/// One frame in one encoder of ours: the peel passes, each appended by the library, then the depth
+/// of field into our output texture, then our copy of it; one submission.
+#[allow(clippy::too_many_arguments)]
+fn run_frame(
+    r: &Renderer,
+    backend: &mut WgpuBackend,
+    peel: &mut RendererPeel,
+    ctx: &mut SplatContext,
+    images: (ImageRef, ImageRef, ImageRef),
+    lens: ThinLens,
+    view_proj: Mat4,
+    background: [f32; 3],
+) -> Result<FrameResult> {
+    let (colour, depth, output) = images;
+    let before = backend.counters();
+    let start = Instant::now();
+    let mut encoder = r.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
+    // Each library call inside a recording into our encoder (`record_into`, ended when it drops),
+    // our render passes between them.
+    peel.begin(&mut *backend.record_into(&mut encoder)?, &lens)?;
+    for k in 0..peel.layers() {
+        r.peel_pass(&mut encoder, view_proj, background);
+        peel.append(&mut *backend.record_into(&mut encoder)?, k, colour, depth)?;
+    }
+    {
+        let mut recording = backend.record_into(&mut encoder)?;
+        peel.finish(&mut *recording)?;
+        let frame = peel.frame(lens, FrameOutput::Image(output));
+        ctx.record(&mut *recording, &frame)?;
+    }
+    let record_ms = start.elapsed().as_secs_f64() * 1e3;
+    r.read_output(&mut encoder);
+    r.queue.submit([encoder.finish()]);
+    let counters = backend.counters().since(&before);
+    let diagnostics = backend.take_diagnostics();
+    ensure!(diagnostics.is_empty(), "wgpu reported: {}", diagnostics.join("\n"));
+    Ok(FrameResult { image: r.output_image()?, counters, record_ms })
+}
+
+/// The check: the same context on the library's CPU backend, from the slots the peel wrote.
+struct CpuCheck {
+    cpu: CpuBackend,
+    ctx: SplatContext,
+    slots: BufferId,
+    counts: BufferId,
+    out: BufferId,
+    extent: [u32; 2],
+}
+
+impl CpuCheck {
+    fn new(shared_bytes: u32, desc: &SplatContextDesc) -> Result<Self> {
+        // The device's workgroup memory, so that both plan the same sort.
+        let mut cpu = CpuBackend::with_shared_bytes(shared_bytes);
+        let pixels = desc.max_width as u64 * desc.max_height as u64;
+        let ctx = SplatContext::new(&mut cpu, desc)?;
+        let slots = cpu.create_buffer(SLOT_WORDS as u64 * pixels * desc.max_layers as u64, "check/slots")?;
+        let counts = cpu.create_buffer(pixels, "check/counts")?;
+        let out = cpu.create_buffer(3 * pixels, "check/out")?;
+        Ok(CpuCheck { cpu, ctx, slots, counts, out, extent: [desc.max_width, desc.max_height] })
+    }
+
+    /// The image of the peel's last frame (its slots read back from the device) through `lens`.
+    fn run(&mut self, backend: &mut WgpuBackend, peel: &RendererPeel, lens: ThinLens) -> Result<RgbImage> {
+        let [w, h] = self.extent;
+        let frame = peel.frame(lens, FrameOutput::Buffer(RgbBuffer(self.out)));
+        let FrameInput::Layers { fragments, counts, layers, .. } = frame.input else { bail!("a peel's frame reads layers") };
+        let pixels = w as u64 * h as u64;
+        let slots = backend.read_buffer(fragments.0, 0, SLOT_WORDS as u64 * pixels * layers as u64)?;
+        self.cpu.write_buffer(self.slots, 0, &slots)?;
+        self.cpu.write_buffer(self.counts, 0, &backend.read_buffer(counts.0, 0, pixels)?)?;
+        let input = FrameInput::Layers {
+            fragments: dof_core::frame::SlotBuffer::current(self.slots),
+            counts: dof_core::frame::CountBuffer(self.counts),
+            layers,
+            footprint_side: 0,
+        };
+        self.ctx.record(&mut self.cpu, &Frame { input, ..frame })?;
+        self.cpu.submit()?;
+        let words = self.cpu.read_buffer(self.out, 0, 3 * pixels)?;
+        let data = words.as_chunks::<3>().0.iter().map(|c| c.map(f32::from_bits)).collect();
+        Ok(RgbImage { width: w, height: h, data })
+    }
+}
+
+/// The largest difference per channel from the CPU check's image, and whether each stays within
+/// 1e-3 of the channel's largest reference value.
+fn compare(got: &RgbImage, want: &RgbImage) -> ([f32; 3], bool) {
+    let mut diff = [0f32; 3];
+    let mut peak = [0f32; 3];
+    let mut finite = true;
+    for (g, w) in got.data.iter().zip(&want.data) {
+        for c in 0..3 {
+            finite &= g[c].is_finite() == w[c].is_finite();
+            diff[c] = diff[c].max((g[c] - w[c]).abs());
+            peak[c] = peak[c].max(w[c].abs());
+        }
+    }
+    (diff, finite && (0..3).all(|c| diff[c] <= 1e-3 * peak[c].max(1e-3)))
+}
+
+fn main() -> Result<ExitCode> {
+    let args = parse_args()?;
+    let (w, h) = (args.width, args.height);
+    let mut failures: Vec<String> = Vec::new();
+
+    let r = Renderer::new([w, h])?;
+    let mut backend = WgpuBackend::from_device(r.device.clone(), r.queue.clone(), r.info.clone());
+    println!("backend: {} ({})", backend.device_name(), backend.driver());
+    let bound = backend.import_buffer(&r.bound, "peel/bound")?;
+    let draw = backend.import_buffer(&r.draw, "peel/draw")?;
+    let images = (backend.import_texture(&r.colour)?, backend.import_texture(&r.depth)?, backend.import_texture(&r.output)?);
+
+    // The library's objects, made once: the peel (standard depth, as `perspective_rh` writes it)
+    // and the depth of field.
+    let (yfov, near, far) = (50f32.to_radians(), 0.1, 100.0);
+    let peel_options = LayerOptions { max_layers: 4, ..LayerOptions::default() };
+    let encoding = DepthEncoding::Standard { near, far };
+    let peel_desc = RendererPeelDesc::new(&peel_options, w, h, encoding, (yfov / 2.0).tan(), r.vertex_count);
+    let mut peel = RendererPeel::new(&mut backend, &peel_desc, bound, Some(draw))?;
+    let splat_options = SplatOptions { merge: Merge::X4, ..SplatOptions::default() };
+    let mut desc = SplatContextDesc::new(Extent::new(w, h, peel_options.max_layers), splat_options.clone());
+    desc.image_io = true;
+    let mut ctx = SplatContext::new(&mut backend, &desc)?;
+    // Creating them recorded the zeroing of their buffers; running it now leaves nothing for the
+    // first frame to submit.
+    backend.submit()?;
+    println!("peel and context: {:.1} MiB of device memory", (peel.device_bytes() + ctx.device_bytes()) as f64 / (1 << 20) as f64);
+    let mut check = CpuCheck::new(
+        backend.limits().max_shared_bytes,
+        &SplatContextDesc::new(Extent::new(w, h, peel_options.max_layers), splat_options),
+    )?;
+
+    let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.02, focus_distance: 3.0, pixels_per_unit: h as f32 / 0.024 };
+    let target = Vec3::new(0.0, 0.0, -3.0);
+    let projection = projection(yfov, w as f32 / h as f32, near, far);
+    let background = [0.5, 0.7, 1.0];
+    let mut last = None;
+    for i in 0..args.frames {
+        let angle = (2.0 * i as f32).to_radians();
+        let eye = target + 3.0 * Vec3::new(angle.sin(), 0.0, angle.cos());
+        let view = look_at(eye, target);
+        let frame = run_frame(&r, &mut backend, &mut peel, &mut ctx, images, lens, projection * view, background)?;
+        let c = frame.counters;
+        println!(
+            "frame {i} (orbit {:.0} deg): recorded in {:.2} ms; the library's {} commands: {} allocations, {} submissions, {} readbacks, {} uploads",
+            angle.to_degrees(),
+            frame.record_ms,
+            c.commands,
+            c.allocations,
+            c.submissions,
+            c.readbacks,
+            c.uploads
+        );
+        if (c.allocations, c.submissions, c.readbacks, c.uploads) != (0, 0, 0, 0) {
+            failures.push(format!("frame {i}: the library allocated, submitted or transferred: {c:?}"));
+        }
+        let want = check.run(&mut backend, &peel, lens)?;
+        let (diff, ok) = compare(&frame.image, &want);
+        println!(
+            "  vs the same context on the CPU backend: largest difference per channel {diff:?}{}",
+            if ok { "" } else { ": TOO LARGE" }
+        );
+        if !ok {
+            failures.push(format!("frame {i} differs from the CPU backend by {diff:?}"));
+        }
+        last = Some(frame.image);
+    }
+    let report = peel.report(&mut backend)?;
+    println!("peel: {} passes recorded, {} drawn, {} found a surface", report.recorded, report.drawn, report.with_surface);
+    if report.with_surface < 3 {
+        failures.push(format!("the peel found surfaces in {} passes, want 3 (bar, pane, wall)", report.with_surface));
+    }
+
+    std::fs::create_dir_all(&args.out)?;
+    if let Some(image) = last {
+        let path = args.out.join("peeled");
+        write_exr(path.with_extension("exr"), &image, &[])?;
+        write_png_preview(path.with_extension("png"), &image, 1.0)?;
+        println!("wrote {} and .png", path.with_extension("exr").display());
+    }
+
+    // Teardown: the library's objects; our buffers and textures are only forgotten by it.
+    peel.destroy(&mut backend);
+    ctx.destroy(&mut backend);
+    for id in [bound, draw] {
+        backend.destroy_buffer(id);
+    }
+    if failures.is_empty() {
+        println!("ok");
+        Ok(ExitCode::SUCCESS)
+    } else {
+        eprintln!("FAILED:\n  {}", failures.join("\n  "));
+        Ok(ExitCode::FAILURE)
+    }
+}

@@ -45,13 +45,12 @@ use dof::layers::LayeredImage;
 use dof::scene::{Focus, GuardBand, LayerOptions, LensSettings, ThinLens, Vec3, builtin, raycast_layers};
 use dof_core::backend::vulkan::ash::vk::{AccessFlags as Access, ImageLayout as Layout};
 use dof_core::backend::vulkan::ash::{self, vk};
-use dof_core::backend::{Backend, BackendCounters, BufferId, CommandTime, CpuBackend, ImageRef, RawDevice, RawOptions, VulkanBackend};
+use dof_core::backend::{Backend, BackendCounters, CommandTime, ImageRef, RawDevice, RawOptions, VulkanBackend};
 use dof_core::frame::{
     CountBuffer, DepthEncoding, DofContext, Frame, FrameInput, FrameOutput, Merge, RendererPeel, RendererPeelDesc, RgbBuffer, SlotBuffer,
     SplatContext, SplatContextDesc, SplatOptions,
 };
 use dof_shaders::slot::SLOT_WORDS;
-use dof_shaders::tonemap::tonemap_channel;
 use glam::Mat4;
 use std::ffi::{CStr, c_char, c_void};
 use std::path::PathBuf;
@@ -59,8 +58,11 @@ use std::process::ExitCode;
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
+#[path = "common/check.rs"]
+mod check;
 #[path = "ash_host/peel.rs"]
 mod peel;
+use check::{CpuCheck, Rgb, compare, write_image};
 
 const USAGE: &str = "usage: ash_host [--validation] [--width W] [--height H] [--frames N] [--out DIR] [--device NAME]";
 
@@ -537,95 +539,6 @@ fn peel_scene() -> Vec<peel::Vertex> {
     .concat()
 }
 
-/// A result image: RGB, row-major.
-struct Rgb {
-    width: u32,
-    height: u32,
-    data: Vec<[f32; 3]>,
-}
-
-/// The check every frame is compared with: the same context on the library's CPU backend, run from
-/// the same slot words (the CPU backend runs the very kernels the device does).
-struct CpuCheck {
-    cpu: CpuBackend,
-    ctx: SplatContext,
-    slots: BufferId,
-    counts: BufferId,
-    out: BufferId,
-    extent: [u32; 2],
-}
-
-impl CpuCheck {
-    fn new(shared_bytes: u32, desc: &SplatContextDesc) -> Result<Self> {
-        // The device's workgroup memory, so that both plan the same sort.
-        let mut cpu = CpuBackend::with_shared_bytes(shared_bytes);
-        let pixels = desc.max_width as u64 * desc.max_height as u64;
-        let ctx = SplatContext::new(&mut cpu, desc)?;
-        let slots = cpu.create_buffer(SLOT_WORDS as u64 * pixels * desc.max_layers as u64, "check/slots")?;
-        let counts = cpu.create_buffer(pixels, "check/counts")?;
-        let out = cpu.create_buffer(3 * pixels, "check/out")?;
-        Ok(CpuCheck { cpu, ctx, slots, counts, out, extent: [desc.max_width, desc.max_height] })
-    }
-
-    /// The image of `image` (a multi-layer image, or its front layer) through `lens`.
-    fn run(&mut self, image: &LayeredImage, lens: ThinLens) -> Result<Rgb> {
-        let [w, h] = self.extent;
-        let words: Vec<u32> = image.fragments.iter().flat_map(|f| f.slot().words()).collect();
-        self.cpu.write_buffer(self.slots, 0, &words)?;
-        self.cpu.write_buffer(self.counts, 0, &image.counts)?;
-        let (slots, counts, out) = (SlotBuffer::current(self.slots), CountBuffer(self.counts), RgbBuffer(self.out));
-        self.ctx.record(&mut self.cpu, &Frame::layers(w, h, image.max_layers, lens, slots, counts, out))?;
-        self.cpu.submit()?;
-        let overflow = self.ctx.report(&mut self.cpu)?.overflow_tiles;
-        ensure!(overflow == 0, "the CPU check's list pool overflowed in {overflow} tiles");
-        let words = self.cpu.read_buffer(self.out, 0, 3 * w as u64 * h as u64)?;
-        let data = words.as_chunks::<3>().0.iter().map(|c| c.map(f32::from_bits)).collect();
-        Ok(Rgb { width: w, height: h, data })
-    }
-
-    fn destroy(mut self) {
-        self.ctx.destroy(&mut self.cpu);
-        for id in [self.slots, self.counts, self.out] {
-            self.cpu.destroy_buffer(id);
-        }
-    }
-}
-
-/// Writes `image` as an EXR (32-bit float RGB) and a PNG preview (the library's tone map,
-/// `dof_shaders::tonemap::tonemap_channel`, as the `dof` command's previews).
-fn write_image(path: &std::path::Path, image: &Rgb) -> Result<()> {
-    let w = image.width as usize;
-    exr::prelude::write_rgb_file(path.with_extension("exr"), w, image.height as usize, |x, y| {
-        let c = image.data[y * w + x];
-        (c[0], c[1], c[2])
-    })
-    .with_context(|| format!("writing {}", path.with_extension("exr").display()))?;
-    let bytes: Vec<u8> = image.data.iter().flat_map(|c| c.map(|v| (tonemap_channel(v, 1.0) * 255.0).round() as u8)).collect();
-    let file =
-        std::fs::File::create(path.with_extension("png")).with_context(|| format!("creating {}", path.with_extension("png").display()))?;
-    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), image.width, image.height);
-    encoder.set_color(png::ColorType::Rgb);
-    encoder.set_depth(png::BitDepth::Eight);
-    encoder.write_header()?.write_image_data(&bytes)?;
-    Ok(())
-}
-
-/// Compares with the CPU check's image: the largest difference per channel, and whether each
-/// stays within 1e-3 of the channel's largest reference value.
-fn compare(got: &Rgb, want: &Rgb) -> ([f32; 3], bool) {
-    let mut diff = [0f32; 3];
-    let mut peak = [0f32; 3];
-    let mut finite = true;
-    for (g, w) in got.data.iter().zip(&want.data) {
-        for c in 0..3 {
-            finite &= g[c].is_finite() == w[c].is_finite();
-            diff[c] = diff[c].max((g[c] - w[c]).abs());
-            peak[c] = peak[c].max(w[c].abs());
-        }
-    }
-    (diff, finite && (0..3).all(|c| diff[c] <= 1e-3 * peak[c].max(1e-3)))
-}
-
 fn times_summary(times: &[CommandTime]) -> String {
     let total: f64 = times.iter().map(|t| t.ms).sum();
     let mut by_label: Vec<(String, f64)> = Vec::new();
@@ -807,7 +720,9 @@ fn main() -> Result<ExitCode> {
         if (c.allocations, c.submissions, c.readbacks, c.uploads) != (0, 0, 0, 0) {
             failures.push(format!("frame {i}: the library allocated, submitted or transferred: {c:?}"));
         }
-        let want = check.run(if multi { &layers } else { &front }, lens)?;
+        let image = if multi { &layers } else { &front };
+        let slots: Vec<u32> = image.fragments.iter().flat_map(|f| f.slot().words()).collect();
+        let want = check.run(&slots, &image.counts, image.max_layers, lens)?;
         let (diff, ok) = compare(&frame.image, &want);
         println!(
             "  vs the same context on the CPU backend: largest difference per channel {diff:?}{}",

@@ -27,19 +27,20 @@
 
 use anyhow::{Context, Result, bail, ensure};
 use dof::frame::Extent;
-use dof::io::{write_exr, write_png_preview};
-use dof::layers::RgbImage;
 use dof::scene::{LayerOptions, ThinLens};
-use dof_core::backend::{Backend, BackendCounters, BufferId, CpuBackend, ImageRef, WgpuBackend};
+use dof_core::backend::{Backend, BackendCounters, ImageRef, WgpuBackend};
 use dof_core::frame::{
-    DepthEncoding, DofContext, Frame, FrameInput, FrameOutput, Merge, RendererPeel, RendererPeelDesc, RgbBuffer, SplatContext,
-    SplatContextDesc, SplatOptions,
+    DepthEncoding, DofContext, FrameInput, FrameOutput, Merge, RendererPeel, RendererPeelDesc, SplatContext, SplatContextDesc, SplatOptions,
 };
 use dof_shaders::slot::SLOT_WORDS;
 use glam::{Mat4, Vec3};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
+
+#[path = "common/check.rs"]
+mod check;
+use check::{CpuCheck, Rgb, compare, write_image};
 
 const USAGE: &str = "usage: wgpu_host [--width W] [--height H] [--frames N] [--out DIR]";
 const COLOUR: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
@@ -280,7 +281,7 @@ impl Renderer {
         encoder.copy_texture_to_buffer(self.output.as_image_copy(), wgpu::TexelCopyBufferInfo { buffer: &self.readback, layout }, size);
     }
 
-    fn output_image(&self) -> Result<RgbImage> {
+    fn output_image(&self) -> Result<Rgb> {
         let slice = self.readback.slice(..);
         slice.map_async(wgpu::MapMode::Read, |_| {});
         self.device.poll(wgpu::PollType::Wait { submission_index: None, timeout: None })?;
@@ -289,7 +290,7 @@ impl Renderer {
         let data = rgba.as_chunks::<4>().0.iter().map(|p| [p[0], p[1], p[2]]).collect();
         drop(view);
         self.readback.unmap();
-        Ok(RgbImage { width: self.extent[0], height: self.extent[1], data })
+        Ok(Rgb { width: self.extent[0], height: self.extent[1], data })
     }
 }
 
@@ -325,7 +326,7 @@ fn push_bytes(view_proj: Mat4, width: u32) -> Vec<u8> {
 
 /// What the library did in one frame, and what the frame shows.
 struct FrameResult {
-    image: RgbImage,
+    image: Rgb,
     counters: BackendCounters,
     record_ms: f64,
 }
@@ -369,65 +370,15 @@ fn run_frame(
     Ok(FrameResult { image: r.output_image()?, counters, record_ms })
 }
 
-/// The check: the same context on the library's CPU backend, from the slots the peel wrote.
-struct CpuCheck {
-    cpu: CpuBackend,
-    ctx: SplatContext,
-    slots: BufferId,
-    counts: BufferId,
-    out: BufferId,
-    extent: [u32; 2],
-}
-
-impl CpuCheck {
-    fn new(shared_bytes: u32, desc: &SplatContextDesc) -> Result<Self> {
-        // The device's workgroup memory, so that both plan the same sort.
-        let mut cpu = CpuBackend::with_shared_bytes(shared_bytes);
-        let pixels = desc.max_width as u64 * desc.max_height as u64;
-        let ctx = SplatContext::new(&mut cpu, desc)?;
-        let slots = cpu.create_buffer(SLOT_WORDS as u64 * pixels * desc.max_layers as u64, "check/slots")?;
-        let counts = cpu.create_buffer(pixels, "check/counts")?;
-        let out = cpu.create_buffer(3 * pixels, "check/out")?;
-        Ok(CpuCheck { cpu, ctx, slots, counts, out, extent: [desc.max_width, desc.max_height] })
-    }
-
-    /// The image of the peel's last frame (its slots read back from the device) through `lens`.
-    fn run(&mut self, backend: &mut WgpuBackend, peel: &RendererPeel, lens: ThinLens) -> Result<RgbImage> {
-        let [w, h] = self.extent;
-        let frame = peel.frame(lens, FrameOutput::Buffer(RgbBuffer(self.out)));
-        let FrameInput::Layers { fragments, counts, layers, .. } = frame.input else { bail!("a peel's frame reads layers") };
-        let pixels = w as u64 * h as u64;
-        let slots = backend.read_buffer(fragments.0, 0, SLOT_WORDS as u64 * pixels * layers as u64)?;
-        self.cpu.write_buffer(self.slots, 0, &slots)?;
-        self.cpu.write_buffer(self.counts, 0, &backend.read_buffer(counts.0, 0, pixels)?)?;
-        let input = FrameInput::Layers {
-            fragments: dof_core::frame::SlotBuffer::current(self.slots),
-            counts: dof_core::frame::CountBuffer(self.counts),
-            layers,
-            footprint_side: 0,
-        };
-        self.ctx.record(&mut self.cpu, &Frame { input, ..frame })?;
-        self.cpu.submit()?;
-        let words = self.cpu.read_buffer(self.out, 0, 3 * pixels)?;
-        let data = words.as_chunks::<3>().0.iter().map(|c| c.map(f32::from_bits)).collect();
-        Ok(RgbImage { width: w, height: h, data })
-    }
-}
-
-/// The largest difference per channel from the CPU check's image, and whether each stays within
-/// 1e-3 of the channel's largest reference value.
-fn compare(got: &RgbImage, want: &RgbImage) -> ([f32; 3], bool) {
-    let mut diff = [0f32; 3];
-    let mut peak = [0f32; 3];
-    let mut finite = true;
-    for (g, w) in got.data.iter().zip(&want.data) {
-        for c in 0..3 {
-            finite &= g[c].is_finite() == w[c].is_finite();
-            diff[c] = diff[c].max((g[c] - w[c]).abs());
-            peak[c] = peak[c].max(w[c].abs());
-        }
-    }
-    (diff, finite && (0..3).all(|c| diff[c] <= 1e-3 * peak[c].max(1e-3)))
+/// The check's image of the peel's last frame: its slots, read back from the device (outside the
+/// frames, for the check alone), through the same context on the CPU backend.
+fn check_peel(check: &mut CpuCheck, backend: &mut WgpuBackend, peel: &RendererPeel, lens: ThinLens, output: ImageRef) -> Result<Rgb> {
+    let frame = peel.frame(lens, FrameOutput::Image(output));
+    let FrameInput::Layers { fragments, counts, layers, .. } = frame.input else { bail!("a peel's frame reads layers") };
+    let pixels = frame.width as u64 * frame.height as u64;
+    let slots = backend.read_buffer(fragments.0, 0, SLOT_WORDS as u64 * pixels * layers as u64)?;
+    let counts = backend.read_buffer(counts.0, 0, pixels)?;
+    check.run(&slots, &counts, layers, lens)
 }
 
 fn main() -> Result<ExitCode> {
@@ -486,7 +437,7 @@ fn main() -> Result<ExitCode> {
         if (c.allocations, c.submissions, c.readbacks, c.uploads) != (0, 0, 0, 0) {
             failures.push(format!("frame {i}: the library allocated, submitted or transferred: {c:?}"));
         }
-        let want = check.run(&mut backend, &peel, lens)?;
+        let want = check_peel(&mut check, &mut backend, &peel, lens, images.2)?;
         let (diff, ok) = compare(&frame.image, &want);
         println!(
             "  vs the same context on the CPU backend: largest difference per channel {diff:?}{}",
@@ -506,12 +457,12 @@ fn main() -> Result<ExitCode> {
     std::fs::create_dir_all(&args.out)?;
     if let Some(image) = last {
         let path = args.out.join("peeled");
-        write_exr(path.with_extension("exr"), &image, &[])?;
-        write_png_preview(path.with_extension("png"), &image, 1.0)?;
+        write_image(&path, &image)?;
         println!("wrote {} and .png", path.with_extension("exr").display());
     }
 
     // Teardown: the library's objects; our buffers and textures are only forgotten by it.
+    check.destroy();
     peel.destroy(&mut backend);
     ctx.destroy(&mut backend);
     for id in [bound, draw] {

@@ -1,0 +1,98 @@
+//! What both example hosts (`ash_host`, `wgpu_host`) check their frames with and write them as:
+//! the same `SplatContext` on the library's CPU backend, run from the same slot words (the CPU
+//! backend runs the very kernels the device does), and EXR and PNG files.
+
+use anyhow::{Context, Result, ensure};
+use dof_core::ThinLens;
+use dof_core::backend::{Backend, BufferId, CpuBackend};
+use dof_core::frame::{CountBuffer, DofContext, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
+use dof_shaders::slot::SLOT_WORDS;
+use dof_shaders::tonemap::tonemap_channel;
+
+/// A result image: RGB, row-major.
+pub struct Rgb {
+    pub width: u32,
+    pub height: u32,
+    pub data: Vec<[f32; 3]>,
+}
+
+/// The check every frame is compared with: the same context on the library's CPU backend, run from
+/// the same slot words (the CPU backend runs the very kernels the device does).
+pub struct CpuCheck {
+    cpu: CpuBackend,
+    ctx: SplatContext,
+    slots: BufferId,
+    counts: BufferId,
+    out: BufferId,
+    extent: [u32; 2],
+}
+
+impl CpuCheck {
+    pub fn new(shared_bytes: u32, desc: &SplatContextDesc) -> Result<Self> {
+        // The device's workgroup memory, so that both plan the same sort.
+        let mut cpu = CpuBackend::with_shared_bytes(shared_bytes);
+        let pixels = desc.max_width as u64 * desc.max_height as u64;
+        let ctx = SplatContext::new(&mut cpu, desc)?;
+        let slots = cpu.create_buffer(SLOT_WORDS as u64 * pixels * desc.max_layers as u64, "check/slots")?;
+        let counts = cpu.create_buffer(pixels, "check/counts")?;
+        let out = cpu.create_buffer(3 * pixels, "check/out")?;
+        Ok(CpuCheck { cpu, ctx, slots, counts, out, extent: [desc.max_width, desc.max_height] })
+    }
+
+    /// The image of `layers` slots a pixel (`slots`, with their `counts`) through `lens`.
+    pub fn run(&mut self, slots: &[u32], counts: &[u32], layers: u32, lens: ThinLens) -> Result<Rgb> {
+        let [w, h] = self.extent;
+        self.cpu.write_buffer(self.slots, 0, slots)?;
+        self.cpu.write_buffer(self.counts, 0, counts)?;
+        let (slots, counts, out) = (SlotBuffer::current(self.slots), CountBuffer(self.counts), RgbBuffer(self.out));
+        self.ctx.record(&mut self.cpu, &Frame::layers(w, h, layers, lens, slots, counts, out))?;
+        self.cpu.submit()?;
+        let overflow = self.ctx.report(&mut self.cpu)?.overflow_tiles;
+        ensure!(overflow == 0, "the CPU check's list pool overflowed in {overflow} tiles");
+        let words = self.cpu.read_buffer(self.out, 0, 3 * w as u64 * h as u64)?;
+        let data = words.as_chunks::<3>().0.iter().map(|c| c.map(f32::from_bits)).collect();
+        Ok(Rgb { width: w, height: h, data })
+    }
+
+    pub fn destroy(mut self) {
+        self.ctx.destroy(&mut self.cpu);
+        for id in [self.slots, self.counts, self.out] {
+            self.cpu.destroy_buffer(id);
+        }
+    }
+}
+
+/// Writes `image` as an EXR (32-bit float RGB) and a PNG preview (the library's tone map,
+/// `dof_shaders::tonemap::tonemap_channel`, as the `dof` command's previews).
+pub fn write_image(path: &std::path::Path, image: &Rgb) -> Result<()> {
+    let w = image.width as usize;
+    exr::prelude::write_rgb_file(path.with_extension("exr"), w, image.height as usize, |x, y| {
+        let c = image.data[y * w + x];
+        (c[0], c[1], c[2])
+    })
+    .with_context(|| format!("writing {}", path.with_extension("exr").display()))?;
+    let bytes: Vec<u8> = image.data.iter().flat_map(|c| c.map(|v| (tonemap_channel(v, 1.0) * 255.0).round() as u8)).collect();
+    let file =
+        std::fs::File::create(path.with_extension("png")).with_context(|| format!("creating {}", path.with_extension("png").display()))?;
+    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), image.width, image.height);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.write_header()?.write_image_data(&bytes)?;
+    Ok(())
+}
+
+/// Compares with the CPU check's image: the largest difference per channel, and whether each
+/// stays within 1e-3 of the channel's largest reference value.
+pub fn compare(got: &Rgb, want: &Rgb) -> ([f32; 3], bool) {
+    let mut diff = [0f32; 3];
+    let mut peak = [0f32; 3];
+    let mut finite = true;
+    for (g, w) in got.data.iter().zip(&want.data) {
+        for c in 0..3 {
+            finite &= g[c].is_finite() == w[c].is_finite();
+            diff[c] = diff[c].max((g[c] - w[c]).abs());
+            peak[c] = peak[c].max(w[c].abs());
+        }
+    }
+    (diff, finite && (0..3).all(|c| diff[c] <= 1e-3 * peak[c].max(1e-3)))
+}

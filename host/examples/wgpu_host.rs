@@ -18,17 +18,19 @@
 //!    texture, each library call inside `record_into`. The camera orbits the focus point 2 degrees
 //!    a frame. Inside a frame the library allocates, submits, uploads and reads back nothing:
 //!    checked on its counters.
-//! 5. Each frame is compared with the same `SplatContext` on the library's CPU backend, run from
+//! 5. With `--window`, each frame is shown in a winit window as it is made: our own pass tone-maps
+//!    the output texture into the window's image, in the same encoder.
+//! 6. Each frame is compared with the same `SplatContext` on the library's CPU backend, run from
 //!    the slots the peel wrote (read back after the frame, for the check alone), and the last one
 //!    is written as EXR and PNG.
 //!
-//! `cargo run -p dof --features wgpu-host --example wgpu_host -- [--width W --height H]
-//! [--frames N] [--out DIR]`; it exits non-zero when a check fails.
+//! `cargo run --example wgpu_host -- [--width W --height H] [--frames N] [--out DIR] [--window]`
+//! (`--window --frames 0`: until the window is closed); it exits non-zero when a check fails.
 
 use anyhow::{Context, Result, bail, ensure};
 use dof::frame::Extent;
 use dof::scene::{LayerOptions, ThinLens};
-use dof_core::backend::{Backend, BackendCounters, ImageRef, WgpuBackend};
+use dof_core::backend::{Backend, BackendCounters, BufferId, ImageRef, WgpuBackend};
 use dof_core::frame::{
     DepthEncoding, DofContext, FrameInput, FrameOutput, Merge, RendererPeel, RendererPeelDesc, SplatContext, SplatContextDesc, SplatOptions,
 };
@@ -42,7 +44,7 @@ use std::time::Instant;
 mod check;
 use check::{CpuCheck, Rgb, compare, write_image};
 
-const USAGE: &str = "usage: wgpu_host [--width W] [--height H] [--frames N] [--out DIR]";
+const USAGE: &str = "usage: wgpu_host [--width W] [--height H] [--frames N] [--out DIR] [--window]";
 const COLOUR: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
 const DEPTH: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 const OUTPUT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
@@ -52,10 +54,12 @@ struct Args {
     height: u32,
     frames: u32,
     out: PathBuf,
+    /// Show the frames in a window (winit) as they are made.
+    window: bool,
 }
 
 fn parse_args() -> Result<Args> {
-    let mut args = Args { width: 320, height: 180, frames: 3, out: "out/wgpu_host".into() };
+    let mut args = Args { width: 320, height: 180, frames: 3, out: "out/wgpu_host".into(), window: false };
     let mut it = std::env::args().skip(1);
     while let Some(arg) = it.next() {
         let mut value = || it.next().with_context(|| format!("{arg} needs a value\n{USAGE}"));
@@ -64,6 +68,7 @@ fn parse_args() -> Result<Args> {
             "--height" => args.height = value()?.parse()?,
             "--frames" => args.frames = value()?.parse()?,
             "--out" => args.out = value()?.into(),
+            "--window" => args.window = true,
             "-h" | "--help" => {
                 println!("{USAGE}");
                 std::process::exit(0);
@@ -71,7 +76,8 @@ fn parse_args() -> Result<Args> {
             _ => bail!("unknown argument `{arg}`\n{USAGE}"),
         }
     }
-    ensure!(args.width > 0 && args.height > 0 && args.frames > 0, "width, height and frames must be positive");
+    ensure!(args.width > 0 && args.height > 0, "width and height must be positive");
+    ensure!(args.frames > 0 || args.window, "frames must be positive (0, until the window is closed, needs --window)");
     Ok(args)
 }
 
@@ -99,6 +105,7 @@ fn scene() -> Vec<Vertex> {
 
 /// The renderer: its device, its peel pass and attachments, its output texture.
 struct Renderer {
+    adapter: wgpu::Adapter,
     device: wgpu::Device,
     queue: wgpu::Queue,
     info: wgpu::AdapterInfo,
@@ -117,13 +124,19 @@ struct Renderer {
     readback: wgpu::Buffer,
 }
 
+/// The APIs `WGPU_BACKEND` names, or the primary ones.
+fn instance() -> wgpu::Instance {
+    wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::PRIMARY),
+        ..wgpu::InstanceDescriptor::new_without_display_handle()
+    })
+}
+
 impl Renderer {
-    fn new(extent: [u32; 2]) -> Result<Renderer> {
-        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
-            backends: wgpu::Backends::from_env().unwrap_or(wgpu::Backends::PRIMARY),
-            ..wgpu::InstanceDescriptor::new_without_display_handle()
-        });
-        let adapter = pollster::block_on(instance.request_adapter(&Default::default())).context("wgpu offers no adapter")?;
+    /// The renderer on an adapter of `instance` (one that can present to `surface`, when given).
+    fn new(instance: &wgpu::Instance, surface: Option<&wgpu::Surface<'static>>, extent: [u32; 2]) -> Result<Renderer> {
+        let options = wgpu::RequestAdapterOptions { compatible_surface: surface, ..Default::default() };
+        let adapter = pollster::block_on(instance.request_adapter(&options)).context("wgpu offers no adapter")?;
         let info = adapter.get_info();
         ensure!(
             adapter.features().contains(wgpu::Features::IMMEDIATES),
@@ -227,9 +240,11 @@ impl Renderer {
         // The library copies colour out (COPY_SRC) and reads depth in a kernel (TEXTURE_BINDING).
         let colour = texture("colour", COLOUR, T::RENDER_ATTACHMENT | T::COPY_SRC);
         let depth = texture("depth", DEPTH, T::RENDER_ATTACHMENT | T::TEXTURE_BINDING);
-        let output = texture("output", OUTPUT, T::COPY_DST | T::COPY_SRC);
+        // The library copies the result in; we copy it out, and sample it when showing it.
+        let output = texture("output", OUTPUT, T::COPY_DST | T::COPY_SRC | T::TEXTURE_BINDING);
         let views = [colour.create_view(&Default::default()), depth.create_view(&Default::default())];
         Ok(Renderer {
+            adapter,
             device,
             queue,
             info,
@@ -246,6 +261,11 @@ impl Renderer {
             output,
             readback,
         })
+    }
+
+    /// The formats the adapter can present to `surface` in, preferred first.
+    fn surface_formats(&self, surface: &wgpu::Surface) -> Vec<wgpu::TextureFormat> {
+        surface.get_capabilities(&self.adapter).formats
     }
 
     /// Records one peel pass: cleared attachments (the background, the far plane), then the
@@ -332,7 +352,8 @@ struct FrameResult {
 }
 
 /// One frame in one encoder of ours: the peel passes, each appended by the library, then the depth
-/// of field into our output texture, then our copy of it; one submission.
+/// of field into our output texture, then (with a window) our pass showing it, and our copy of it;
+/// one submission.
 #[allow(clippy::too_many_arguments)]
 fn run_frame(
     r: &Renderer,
@@ -342,8 +363,9 @@ fn run_frame(
     images: (ImageRef, ImageRef, ImageRef),
     lens: ThinLens,
     view_proj: Mat4,
-    background: [f32; 3],
+    window: Option<(&Blit, &wgpu::TextureView)>,
 ) -> Result<FrameResult> {
+    let background = [0.5, 0.7, 1.0];
     let (colour, depth, output) = images;
     let before = backend.counters();
     let start = Instant::now();
@@ -362,6 +384,9 @@ fn run_frame(
         ctx.record(&mut *recording, &frame)?;
     }
     let record_ms = start.elapsed().as_secs_f64() * 1e3;
+    if let Some((blit, target)) = window {
+        blit.record(&mut encoder, target);
+    }
     r.read_output(&mut encoder);
     r.queue.submit([encoder.finish()]);
     let counters = backend.counters().since(&before);
@@ -381,48 +406,62 @@ fn check_peel(check: &mut CpuCheck, backend: &mut WgpuBackend, peel: &RendererPe
     check.run(&slots, &counts, layers, lens)
 }
 
-fn main() -> Result<ExitCode> {
-    let args = parse_args()?;
-    let (w, h) = (args.width, args.height);
-    let mut failures: Vec<String> = Vec::new();
+/// The renderer with the library's objects, frame after frame.
+struct Session {
+    r: Renderer,
+    backend: WgpuBackend,
+    peel: RendererPeel,
+    ctx: SplatContext,
+    check: CpuCheck,
+    images: (ImageRef, ImageRef, ImageRef),
+    buffers: [BufferId; 2],
+    lens: ThinLens,
+    projection: Mat4,
+    frames: u32,
+    failures: Vec<String>,
+    last: Option<Rgb>,
+}
 
-    let r = Renderer::new([w, h])?;
-    let mut backend = WgpuBackend::from_device(r.device.clone(), r.queue.clone(), r.info.clone());
-    println!("backend: {} ({})", backend.device_name(), backend.driver());
-    let bound = backend.import_buffer(&r.bound, "peel/bound")?;
-    let draw = backend.import_buffer(&r.draw, "peel/draw")?;
-    let images = (backend.import_texture(&r.colour)?, backend.import_texture(&r.depth)?, backend.import_texture(&r.output)?);
+impl Session {
+    fn new(r: Renderer) -> Result<Session> {
+        let [w, h] = r.extent;
+        let mut backend = WgpuBackend::from_device(r.device.clone(), r.queue.clone(), r.info.clone());
+        println!("backend: {} ({})", backend.device_name(), backend.driver());
+        let buffers = [backend.import_buffer(&r.bound, "peel/bound")?, backend.import_buffer(&r.draw, "peel/draw")?];
+        let images = (backend.import_texture(&r.colour)?, backend.import_texture(&r.depth)?, backend.import_texture(&r.output)?);
 
-    // The library's objects, made once: the peel (standard depth, as `perspective_rh` writes it)
-    // and the depth of field.
-    let (yfov, near, far) = (50f32.to_radians(), 0.1, 100.0);
-    let peel_options = LayerOptions { max_layers: 4, ..LayerOptions::default() };
-    let encoding = DepthEncoding::Standard { near, far };
-    let peel_desc = RendererPeelDesc::new(&peel_options, w, h, encoding, (yfov / 2.0).tan(), r.vertex_count);
-    let mut peel = RendererPeel::new(&mut backend, &peel_desc, bound, Some(draw))?;
-    let splat_options = SplatOptions { merge: Merge::X4, ..SplatOptions::default() };
-    let mut desc = SplatContextDesc::new(Extent::new(w, h, peel_options.max_layers), splat_options.clone());
-    desc.image_io = true;
-    let mut ctx = SplatContext::new(&mut backend, &desc)?;
-    // Creating them recorded the zeroing of their buffers; running it now leaves nothing for the
-    // first frame to submit.
-    backend.submit()?;
-    println!("peel and context: {:.1} MiB of device memory", (peel.device_bytes() + ctx.device_bytes()) as f64 / (1 << 20) as f64);
-    let mut check = CpuCheck::new(
-        backend.limits().max_shared_bytes,
-        &SplatContextDesc::new(Extent::new(w, h, peel_options.max_layers), splat_options),
-    )?;
+        // The library's objects, made once: the peel (standard depth, as `projection` writes it)
+        // and the depth of field.
+        let (yfov, near, far) = (50f32.to_radians(), 0.1, 100.0);
+        let peel_options = LayerOptions { max_layers: 4, ..LayerOptions::default() };
+        let encoding = DepthEncoding::Standard { near, far };
+        let peel_desc = RendererPeelDesc::new(&peel_options, w, h, encoding, (yfov / 2.0).tan(), r.vertex_count);
+        let peel = RendererPeel::new(&mut backend, &peel_desc, buffers[0], Some(buffers[1]))?;
+        let splat_options = SplatOptions { merge: Merge::X4, ..SplatOptions::default() };
+        let extent = Extent::new(w, h, peel_options.max_layers);
+        let mut desc = SplatContextDesc::new(extent, splat_options.clone());
+        desc.image_io = true;
+        let ctx = SplatContext::new(&mut backend, &desc)?;
+        // Creating them recorded the zeroing of their buffers; running it now leaves nothing for
+        // the first frame to submit.
+        backend.submit()?;
+        println!("peel and context: {:.1} MiB of device memory", (peel.device_bytes() + ctx.device_bytes()) as f64 / (1 << 20) as f64);
+        let check = CpuCheck::new(backend.limits().max_shared_bytes, &SplatContextDesc::new(extent, splat_options))?;
+        let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.02, focus_distance: 3.0, pixels_per_unit: h as f32 / 0.024 };
+        let projection = projection(yfov, w as f32 / h as f32, near, far);
+        Ok(Session { r, backend, peel, ctx, check, images, buffers, lens, projection, frames: 0, failures: Vec::new(), last: None })
+    }
 
-    let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.02, focus_distance: 3.0, pixels_per_unit: h as f32 / 0.024 };
-    let target = Vec3::new(0.0, 0.0, -3.0);
-    let projection = projection(yfov, w as f32 / h as f32, near, far);
-    let background = [0.5, 0.7, 1.0];
-    let mut last = None;
-    for i in 0..args.frames {
+    /// The next frame, the camera orbiting the focus point 2 degrees a frame, shown in `window`
+    /// when given; checked against the CPU backend.
+    fn frame(&mut self, window: Option<(&Blit, &wgpu::TextureView)>) -> Result<()> {
+        let i = self.frames;
+        self.frames += 1;
         let angle = (2.0 * i as f32).to_radians();
+        let target = Vec3::new(0.0, 0.0, -3.0);
         let eye = target + 3.0 * Vec3::new(angle.sin(), 0.0, angle.cos());
-        let view = look_at(eye, target);
-        let frame = run_frame(&r, &mut backend, &mut peel, &mut ctx, images, lens, projection * view, background)?;
+        let view_proj = self.projection * look_at(eye, target);
+        let frame = run_frame(&self.r, &mut self.backend, &mut self.peel, &mut self.ctx, self.images, self.lens, view_proj, window)?;
         let c = frame.counters;
         println!(
             "frame {i} (orbit {:.0} deg): recorded in {:.2} ms; the library's {} commands: {} allocations, {} submissions, {} readbacks, {} uploads",
@@ -435,44 +474,230 @@ fn main() -> Result<ExitCode> {
             c.uploads
         );
         if (c.allocations, c.submissions, c.readbacks, c.uploads) != (0, 0, 0, 0) {
-            failures.push(format!("frame {i}: the library allocated, submitted or transferred: {c:?}"));
+            self.failures.push(format!("frame {i}: the library allocated, submitted or transferred: {c:?}"));
         }
-        let want = check_peel(&mut check, &mut backend, &peel, lens, images.2)?;
+        let want = check_peel(&mut self.check, &mut self.backend, &self.peel, self.lens, self.images.2)?;
         let (diff, ok) = compare(&frame.image, &want);
         println!(
             "  vs the same context on the CPU backend: largest difference per channel {diff:?}{}",
             if ok { "" } else { ": TOO LARGE" }
         );
         if !ok {
-            failures.push(format!("frame {i} differs from the CPU backend by {diff:?}"));
+            self.failures.push(format!("frame {i} differs from the CPU backend by {diff:?}"));
         }
-        last = Some(frame.image);
-    }
-    let report = peel.report(&mut backend)?;
-    println!("peel: {} passes recorded, {} drawn, {} found a surface", report.recorded, report.drawn, report.with_surface);
-    if report.with_surface < 3 {
-        failures.push(format!("the peel found surfaces in {} passes, want 3 (bar, pane, wall)", report.with_surface));
+        self.last = Some(frame.image);
+        Ok(())
     }
 
-    std::fs::create_dir_all(&args.out)?;
-    if let Some(image) = last {
-        let path = args.out.join("peeled");
-        write_image(&path, &image)?;
-        println!("wrote {} and .png", path.with_extension("exr").display());
+    /// The peel's report and the last image written; the library's objects destroyed.
+    fn finish(mut self, out: &std::path::Path) -> Result<ExitCode> {
+        let report = self.peel.report(&mut self.backend)?;
+        println!("peel: {} passes recorded, {} drawn, {} found a surface", report.recorded, report.drawn, report.with_surface);
+        if report.with_surface < 3 {
+            self.failures.push(format!("the peel found surfaces in {} passes, want 3 (bar, pane, wall)", report.with_surface));
+        }
+        std::fs::create_dir_all(out)?;
+        if let Some(image) = &self.last {
+            let path = out.join("peeled");
+            write_image(&path, image)?;
+            println!("wrote {} and .png", path.with_extension("exr").display());
+        }
+        // Teardown: the library's objects; our buffers and textures are only forgotten by it.
+        self.check.destroy();
+        self.peel.destroy(&mut self.backend);
+        self.ctx.destroy(&mut self.backend);
+        for id in self.buffers {
+            self.backend.destroy_buffer(id);
+        }
+        if self.failures.is_empty() {
+            println!("ok");
+            Ok(ExitCode::SUCCESS)
+        } else {
+            eprintln!("FAILED:\n  {}", self.failures.join("\n  "));
+            Ok(ExitCode::FAILURE)
+        }
+    }
+}
+
+fn main() -> Result<ExitCode> {
+    let args = parse_args()?;
+    if args.window {
+        return window::run(args);
+    }
+    let instance = instance();
+    let mut session = Session::new(Renderer::new(&instance, None, [args.width, args.height])?)?;
+    for _ in 0..args.frames {
+        session.frame(None)?;
+    }
+    session.finish(&args.out)
+}
+
+/// Our pass that shows the output texture in a window: a full-screen triangle loading its texels,
+/// through a plain x / (1 + x) curve of our own, into the surface's format.
+struct Blit {
+    pipeline: wgpu::RenderPipeline,
+    bind_group: wgpu::BindGroup,
+}
+
+impl Blit {
+    fn new(r: &Renderer, format: wgpu::TextureFormat) -> Blit {
+        let module = r.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("blit"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("wgpu_host/blit.wgsl").into()),
+        });
+        let pipeline = r.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("blit"),
+            layout: None,
+            vertex: wgpu::VertexState { module: &module, entry_point: Some("vs"), compilation_options: Default::default(), buffers: &[] },
+            primitive: Default::default(),
+            depth_stencil: None,
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &module,
+                entry_point: Some("fs"),
+                compilation_options: Default::default(),
+                targets: &[Some(format.into())],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        let view = r.output.create_view(&Default::default());
+        let bind_group = r.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("blit"),
+            layout: &pipeline.get_bind_group_layout(0),
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&view) }],
+        });
+        Blit { pipeline, bind_group }
     }
 
-    // Teardown: the library's objects; our buffers and textures are only forgotten by it.
-    check.destroy();
-    peel.destroy(&mut backend);
-    ctx.destroy(&mut backend);
-    for id in [bound, draw] {
-        backend.destroy_buffer(id);
+    fn record(&self, encoder: &mut wgpu::CommandEncoder, target: &wgpu::TextureView) {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("blit"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: target,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::BLACK), store: wgpu::StoreOp::Store },
+            })],
+            ..Default::default()
+        });
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &self.bind_group, &[]);
+        pass.draw(0..3, 0..1);
     }
-    if failures.is_empty() {
-        println!("ok");
-        Ok(ExitCode::SUCCESS)
-    } else {
-        eprintln!("FAILED:\n  {}", failures.join("\n  "));
-        Ok(ExitCode::FAILURE)
+}
+
+/// The frames in a window (winit): each presented as it is made, until `--frames` were shown (or,
+/// with `--frames 0`, until the window is closed).
+mod window {
+    use super::{Args, Blit, Renderer, Session, instance};
+    use anyhow::Result;
+    use std::process::ExitCode;
+    use std::sync::Arc;
+    use winit::application::ApplicationHandler;
+    use winit::event::WindowEvent;
+    use winit::event_loop::{ActiveEventLoop, EventLoop};
+    use winit::window::{Window, WindowId};
+
+    struct Shown {
+        window: Arc<Window>,
+        surface: wgpu::Surface<'static>,
+        blit: Blit,
+        session: Session,
+    }
+
+    struct App {
+        args: Args,
+        shown: Option<Shown>,
+        outcome: Option<Result<ExitCode>>,
+    }
+
+    impl App {
+        fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<Shown> {
+            let size = winit::dpi::PhysicalSize::new(self.args.width, self.args.height);
+            let attributes = Window::default_attributes().with_title("dof: wgpu_host").with_inner_size(size).with_resizable(false);
+            let window = Arc::new(event_loop.create_window(attributes)?);
+            let instance = instance();
+            let surface = instance.create_surface(window.clone())?;
+            let r = Renderer::new(&instance, Some(&surface), [self.args.width, self.args.height])?;
+            let formats = r.surface_formats(&surface);
+            let format = formats.iter().copied().find(wgpu::TextureFormat::is_srgb).or(formats.first().copied());
+            let format = format.ok_or_else(|| anyhow::anyhow!("the window's surface offers no format"))?;
+            let config = wgpu::SurfaceConfiguration {
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+                format,
+                width: self.args.width,
+                height: self.args.height,
+                present_mode: wgpu::PresentMode::Fifo,
+                desired_maximum_frame_latency: 2,
+                alpha_mode: wgpu::CompositeAlphaMode::Auto,
+                view_formats: vec![],
+                color_space: wgpu::SurfaceColorSpace::Auto,
+            };
+            surface.configure(&r.device, &config);
+            let blit = Blit::new(&r, format);
+            Ok(Shown { window, surface, blit, session: Session::new(r)? })
+        }
+
+        fn redraw(&mut self, event_loop: &ActiveEventLoop) -> Result<()> {
+            let Some(shown) = self.shown.as_mut() else { return Ok(()) };
+            let frame = match shown.surface.get_current_texture() {
+                wgpu::CurrentSurfaceTexture::Success(frame) | wgpu::CurrentSurfaceTexture::Suboptimal(frame) => frame,
+                other => anyhow::bail!("the window's next image: {other:?}"),
+            };
+            let view = frame.texture.create_view(&Default::default());
+            shown.session.frame(Some((&shown.blit, &view)))?;
+            shown.window.pre_present_notify();
+            shown.session.r.queue.present(frame);
+            if self.args.frames > 0 && shown.session.frames >= self.args.frames {
+                event_loop.exit();
+            } else {
+                shown.window.request_redraw();
+            }
+            Ok(())
+        }
+
+        fn fail(&mut self, event_loop: &ActiveEventLoop, e: anyhow::Error) {
+            self.outcome = Some(Err(e));
+            event_loop.exit();
+        }
+    }
+
+    impl ApplicationHandler for App {
+        fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+            if self.shown.is_none() {
+                match self.open(event_loop) {
+                    Ok(shown) => {
+                        shown.window.request_redraw();
+                        self.shown = Some(shown);
+                    }
+                    Err(e) => self.fail(event_loop, e),
+                }
+            }
+        }
+
+        fn window_event(&mut self, event_loop: &ActiveEventLoop, _: WindowId, event: WindowEvent) {
+            match event {
+                WindowEvent::CloseRequested => event_loop.exit(),
+                WindowEvent::RedrawRequested => {
+                    if let Err(e) = self.redraw(event_loop) {
+                        self.fail(event_loop, e);
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    pub fn run(args: Args) -> Result<ExitCode> {
+        let event_loop = EventLoop::new()?;
+        let mut app = App { args, shown: None, outcome: None };
+        event_loop.run_app(&mut app)?;
+        if let Some(outcome) = app.outcome.take() {
+            return outcome;
+        }
+        let shown = app.shown.take().ok_or_else(|| anyhow::anyhow!("the window never opened"))?;
+        println!("{} frames shown in the window", shown.session.frames);
+        shown.session.finish(&app.args.out)
     }
 }

@@ -1,0 +1,236 @@
+//! Order-correct depth of field for Bevy cameras: single-layer tiled splatting (Selgrad, Franke,
+//! Stamminger 2016) of the camera's HDR colour and depth, as the `dof` command's `tiled` method
+//! runs it, through `dof-core`'s wgpu backend on Bevy's own device, recorded into Bevy's own
+//! command encoder.
+//!
+//! ```no_run
+//! use bevy::prelude::*;
+//! use bevy_dof::{LensBlur, LensBlurPlugin};
+//!
+//! fn setup(mut commands: Commands) {
+//!     commands.spawn((Camera3d::default(), LensBlur::default()));
+//! }
+//!
+//! App::new().add_plugins((DefaultPlugins, LensBlurPlugin)).add_systems(Startup, setup).run();
+//! ```
+//!
+//! What the plugin does, per camera with a [`LensBlur`]:
+//! - it gives the camera what the library reads: an HDR (RGBA16F) main texture that can be copied
+//!   from and into, and a depth texture the library's kernel can bind;
+//! - in the render world it keeps one `SplatContext` per camera, made again only when the view's
+//!   size changes (the only allocation);
+//! - each frame, after the main passes and before tone mapping, it records the frame into Bevy's
+//!   command encoder: the main texture and the main pass's depth attachment in (Bevy's
+//!   reversed, infinite-far depth), the blurred image out into the other main texture, which the
+//!   later passes then read. Nothing is submitted, uploaded or read back.
+//!
+//! Errors (a device without immediates, a view too large for a buffer) are logged once a camera,
+//! and the camera's image is left as it was.
+
+use bevy::core_pipeline::tonemapping::tonemapping;
+use bevy::core_pipeline::{Core3d, Core3dSystems};
+use bevy::prelude::*;
+use bevy::render::camera::ExtractedCamera;
+use bevy::render::extract_component::{ExtractComponent, ExtractComponentPlugin};
+use bevy::render::render_resource::TextureUsages;
+use bevy::render::renderer::{RenderAdapterInfo, RenderContext, RenderDevice, RenderQueue, ViewQuery};
+use bevy::render::view::{ExtractedView, ViewDepthStencilTexture, ViewTarget};
+use bevy::render::{Render, RenderApp};
+use dof_core::ThinLens;
+use dof_core::backend::{Backend, WgpuBackend};
+use dof_core::frame::{DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput, SplatContext, SplatContextDesc, SplatOptions};
+use dof_core::lens::{Aperture, CameraLens, yfov_from_projection};
+use std::collections::HashMap;
+use std::sync::Mutex;
+
+/// A camera's lens, as Bevy's own `DepthOfField` describes it, in the scene's units (metres in
+/// Bevy's convention). The focal length follows from the camera's field of view and the sensor:
+/// `f = sensor_height / (2·tan(yfov/2))`; the circle of confusion is then that of a thin lens of
+/// that focal length and f-number focused at `focal_distance` (`dof_core::lens`).
+#[derive(Component, Clone, Copy, Debug, PartialEq, ExtractComponent)]
+#[extract_app(RenderApp)]
+#[require(Camera3d, Msaa::Off, bevy::camera::Hdr)]
+pub struct LensBlur {
+    /// Distance to the plane in focus, along the view direction.
+    pub focal_distance: f32,
+    /// The f-number: the aperture's diameter is the focal length over it.
+    pub aperture_f_stops: f32,
+    /// Height of the sensor (a full-frame sensor is 0.024 tall).
+    pub sensor_height: f32,
+}
+
+impl Default for LensBlur {
+    /// f/2.8 on a full-frame sensor, focused at 3 m.
+    fn default() -> Self {
+        LensBlur { focal_distance: 3.0, aperture_f_stops: 2.8, sensor_height: 0.024 }
+    }
+}
+
+impl LensBlur {
+    /// The library's thin lens for a view of `projection` (Bevy's `clip_from_view`), `height`
+    /// pixels high.
+    pub fn thin_lens(&self, projection: Mat4, height: u32) -> dof_core::Result<ThinLens> {
+        let yfov = yfov_from_projection(&projection.to_cols_array_2d())?;
+        let focal_length = self.sensor_height / (2.0 * (0.5 * yfov).tan());
+        CameraLens {
+            focal_length,
+            aperture: Aperture::FNumber(self.aperture_f_stops),
+            focus_distance: self.focal_distance,
+            yfov,
+            height_px: height,
+        }
+        .thin_lens()
+    }
+}
+
+/// Adds [`LensBlur`] to Bevy's 3D cameras.
+pub struct LensBlurPlugin;
+
+impl Plugin for LensBlurPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_plugins(ExtractComponentPlugin::<LensBlur>::default()).add_systems(PostUpdate, configure_cameras);
+        let Some(render_app) = app.get_sub_app_mut(RenderApp) else {
+            return;
+        };
+        render_app
+            .init_resource::<LensBlurState>()
+            .add_systems(Render, forget_removed_views)
+            .add_systems(Core3d, lens_blur.in_set(Core3dSystems::PostProcess).before(tonemapping));
+    }
+}
+
+/// What the library reads: a single-sampled depth texture its kernel binds, and a main texture it
+/// can copy from and into.
+fn configure_cameras(mut cameras: Query<(&mut Camera3d, &mut Msaa, &mut bevy::camera::CameraMainTextureUsages), Changed<LensBlur>>) {
+    for (mut camera_3d, mut msaa, mut usages) in &mut cameras {
+        camera_3d.depth_texture_usages.0 |= TextureUsages::TEXTURE_BINDING.bits();
+        usages.0 |= TextureUsages::COPY_SRC | TextureUsages::COPY_DST;
+        if *msaa != Msaa::Off {
+            log::info!("bevy_dof: multisampling turned off on a camera with LensBlur (its depth is read one sample a pixel)");
+            *msaa = Msaa::Off;
+        }
+    }
+}
+
+/// The render world's side: the backend on Bevy's device, and a context per camera.
+#[derive(Resource, Default)]
+struct LensBlurState {
+    inner: Mutex<Inner>,
+}
+
+#[derive(Default)]
+struct Inner {
+    backend: Option<WgpuBackend>,
+    views: HashMap<Entity, View>,
+    /// Cameras whose error was logged.
+    failed: Vec<Entity>,
+}
+
+/// One camera's context, for views up to `extent`.
+struct View {
+    ctx: SplatContext,
+    extent: [u32; 2],
+}
+
+fn forget_removed_views(state: Res<LensBlurState>, views: Query<Entity, With<LensBlur>>) {
+    let Ok(mut inner) = state.inner.lock() else { return };
+    let Inner { backend, views: contexts, .. } = &mut *inner;
+    if let Some(backend) = backend.as_mut() {
+        contexts.retain(|entity, _| views.contains(*entity));
+        let _ = backend.release_finished();
+    }
+}
+
+/// The depth of field of one view, recorded into Bevy's command encoder.
+#[allow(clippy::too_many_arguments)]
+fn lens_blur(
+    view: ViewQuery<(Entity, &ExtractedCamera, &ExtractedView, &ViewTarget, &ViewDepthStencilTexture, &LensBlur)>,
+    state: Res<LensBlurState>,
+    device: Res<RenderDevice>,
+    queue: Res<RenderQueue>,
+    adapter: Res<RenderAdapterInfo>,
+    mut ctx: RenderContext,
+) {
+    let (entity, camera, extracted, target, depth, lens) = view.into_inner();
+    let Ok(mut inner) = state.inner.lock() else { return };
+    let result = record(&mut inner, entity, camera, extracted, target, depth, lens, &device, &queue, &adapter, &mut ctx);
+    if let Err(e) = result
+        && !inner.failed.contains(&entity)
+    {
+        log::error!("bevy_dof: camera {entity}: {e}; its image is left unblurred");
+        inner.failed.push(entity);
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn record(
+    inner: &mut Inner,
+    entity: Entity,
+    camera: &ExtractedCamera,
+    extracted: &ExtractedView,
+    target: &ViewTarget,
+    depth: &ViewDepthStencilTexture,
+    lens: &LensBlur,
+    device: &RenderDevice,
+    queue: &RenderQueue,
+    adapter: &RenderAdapterInfo,
+    ctx: &mut RenderContext,
+) -> Result<(), String> {
+    let Some(size) = camera.physical_viewport_size else { return Ok(()) };
+    let (width, height) = (size.x, size.y);
+    if width == 0 || height == 0 {
+        return Ok(());
+    }
+    let encoding = depth_encoding(extracted.clip_from_view)?;
+    let backend = match &mut inner.backend {
+        Some(backend) => backend,
+        none => none.insert(WgpuBackend::from_device(device.wgpu_device().clone(), (**queue).clone(), (**adapter).clone())),
+    };
+    // A context for the view, made again when it grows or shrinks.
+    if inner.views.get(&entity).is_none_or(|v| v.extent != [width, height]) {
+        inner.views.remove(&entity);
+        let mut desc = SplatContextDesc::new(Extent::new(width, height, 1), SplatOptions::default());
+        desc.image_io = true;
+        let splat = SplatContext::new(backend, &desc).map_err(|e| e.to_string())?;
+        // Its buffers' zeroing, run now: the frames submit nothing.
+        backend.submit().map_err(|e| e.to_string())?;
+        inner.views.insert(entity, View { ctx: splat, extent: [width, height] });
+    }
+    let view = inner.views.get_mut(&entity).ok_or("no context")?;
+
+    let post = target.post_process_write();
+    let import = |backend: &mut WgpuBackend, texture: &bevy::render::render_resource::Texture| backend.import_texture(texture);
+    let color = import(backend, post.source_texture).map_err(|e| e.to_string())?;
+    let depth_image = import(backend, depth.texture()).map_err(|e| e.to_string())?;
+    let output = import(backend, post.destination_texture).map_err(|e| e.to_string())?;
+    let frame = Frame {
+        width,
+        height,
+        lens: lens.thin_lens(extracted.clip_from_view, height).map_err(|e| e.to_string())?,
+        input: FrameInput::Images { color, depth: depth_image, encoding },
+        output: FrameOutput::Image(output),
+    };
+    let recorded = (|| -> dof_core::Result<()> {
+        let mut recording = backend.record_into(ctx.command_encoder())?;
+        view.ctx.record(&mut *recording, &frame)
+    })();
+    for image in [color, depth_image, output] {
+        backend.forget_texture(&image);
+    }
+    recorded.map_err(|e| e.to_string())
+}
+
+/// The library's reading of Bevy's depth: reversed Z, the far plane at infinity or finite.
+fn depth_encoding(clip_from_view: Mat4) -> Result<DepthEncoding, String> {
+    if clip_from_view.w_axis.w == 1.0 {
+        return Err("an orthographic camera has no depth of field here".into());
+    }
+    // Reversed perspective: z_clip = a·z + b, w_clip = −z, so a = near / (far − near) and
+    // b = near·far / (far − near); a = 0 for an infinite far plane.
+    let (a, b) = (clip_from_view.z_axis.z, clip_from_view.w_axis.z);
+    let (near, far) = if a == 0.0 { (b, f32::INFINITY) } else { (b / (1.0 + a), b / a) };
+    if !(near > 0.0 && far > near) {
+        return Err(format!("a projection the library does not read (near {near}, far {far}): it reads reversed-Z perspective"));
+    }
+    Ok(DepthEncoding::Reversed { near, far })
+}

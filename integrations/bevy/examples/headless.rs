@@ -30,8 +30,11 @@ const HEIGHT: u32 = 320;
 /// Frames rendered before the images are read.
 const WARM_UP: u32 = 8;
 
-/// The panels: width, height, centre, linear colour (unlit), facing the camera.
-const PANELS: [(f32, f32, Vec3, (f32, f32, f32)); 3] = [
+/// A panel facing the camera: width, height, centre, linear colour (unlit).
+type Panel = (f32, f32, Vec3, (f32, f32, f32));
+
+/// The scene's panels.
+const PANELS: [Panel; 3] = [
     (12.0, 6.0, Vec3::new(0.0, 0.0, -8.0), (0.2, 0.4, 0.8)),
     (1.6, 1.3, Vec3::new(-0.2, -0.15, -3.0), (0.9, 0.3, 0.2)),
     (0.25, 2.4, Vec3::new(-0.225, 0.0, -1.3), (0.8, 0.7, 0.1)),

@@ -62,7 +62,7 @@ use std::time::Instant;
 mod check;
 #[path = "ash_host/peel.rs"]
 mod peel;
-use check::{CpuCheck, Rgb, compare, write_image};
+use check::{CpuCheck, Rgb, compare, peel_scene, write_image};
 
 const USAGE: &str = "usage: ash_host [--validation] [--width W] [--height H] [--frames N] [--out DIR] [--device NAME]";
 
@@ -522,21 +522,6 @@ fn look_at(eye: Vec3, target: Vec3) -> Mat4 {
     let s = f.cross(Vec3::Y).normalize();
     let u = s.cross(f);
     Mat4::from_cols_array(&[s.x, u.x, -f.x, 0.0, s.y, u.y, -f.y, 0.0, s.z, u.z, -f.z, 0.0, -s.dot(eye), -u.dot(eye), f.dot(eye), 1.0])
-}
-
-/// The peeled scene: a far wall, a half-covering pane in focus and a near bar, as coloured
-/// triangles (position, then colour and coverage).
-fn peel_scene() -> Vec<peel::Vertex> {
-    let quad = |x0: f32, y0: f32, x1: f32, y1: f32, z: f32, c: [f32; 4]| {
-        let v = |x: f32, y: f32| [x, y, z, c[0], c[1], c[2], c[3]];
-        [v(x0, y0), v(x1, y0), v(x1, y1), v(x0, y0), v(x1, y1), v(x0, y1)]
-    };
-    [
-        quad(-6.0, -3.0, 6.0, 3.0, -8.0, [0.2, 0.4, 0.8, 1.0]),
-        quad(-1.0, -0.8, 0.6, 0.5, -3.0, [0.9, 0.3, 0.2, 0.5]),
-        quad(-0.35, -1.2, -0.1, 1.2, -1.3, [0.8, 0.7, 0.1, 1.0]),
-    ]
-    .concat()
 }
 
 fn times_summary(times: &[CommandTime]) -> String {

@@ -42,7 +42,7 @@ use std::time::Instant;
 
 #[path = "common/check.rs"]
 mod check;
-use check::{CpuCheck, Rgb, compare, write_image};
+use check::{CpuCheck, Rgb, Vertex, compare, peel_scene, write_image};
 
 const USAGE: &str = "usage: wgpu_host [--width W] [--height H] [--frames N] [--out DIR] [--window]";
 const COLOUR: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
@@ -85,23 +85,6 @@ fn parse_args() -> Result<Args> {
 // The renderer's own wgpu objects. Nothing here is specific to the library, except the feature
 // its device asks for and the peel test in its fragment shader.
 // ---------------------------------------------------------------------------------------------
-
-/// A vertex: position, then colour and coverage.
-type Vertex = [f32; 7];
-
-/// The peeled scene: a far wall, a half-covering pane in focus and a near bar.
-fn scene() -> Vec<Vertex> {
-    let quad = |x0: f32, y0: f32, x1: f32, y1: f32, z: f32, c: [f32; 4]| {
-        let v = |x: f32, y: f32| [x, y, z, c[0], c[1], c[2], c[3]];
-        [v(x0, y0), v(x1, y0), v(x1, y1), v(x0, y0), v(x1, y1), v(x0, y1)]
-    };
-    [
-        quad(-6.0, -3.0, 6.0, 3.0, -8.0, [0.2, 0.4, 0.8, 1.0]),
-        quad(-1.0, -0.8, 0.6, 0.5, -3.0, [0.9, 0.3, 0.2, 0.5]),
-        quad(-0.35, -1.2, -0.1, 1.2, -1.3, [0.8, 0.7, 0.1, 1.0]),
-    ]
-    .concat()
-}
 
 /// The renderer: its device, its peel pass and attachments, its output texture.
 struct Renderer {
@@ -214,7 +197,7 @@ impl Renderer {
         // The library fills and writes them (storage, copies); we read them (fragment, indirect).
         let bound = buffer("bound", 4 * pixels, B::STORAGE | B::COPY_DST | B::COPY_SRC);
         let draw = buffer("draw", 20, B::STORAGE | B::COPY_DST | B::COPY_SRC | B::INDIRECT);
-        let triangles = scene();
+        let triangles = peel_scene();
         let vertices = buffer("vertices", (size_of::<Vertex>() * triangles.len()) as u64, B::VERTEX | B::COPY_DST);
         queue.write_buffer(&vertices, 0, bytemuck::cast_slice(&triangles));
         let readback = buffer("readback", 16 * pixels, B::MAP_READ | B::COPY_DST);

@@ -1,6 +1,7 @@
-//! What both example hosts (`ash_host`, `wgpu_host`) check their frames with and write them as:
-//! the same `SplatContext` on the library's CPU backend, run from the same slot words (the CPU
-//! backend runs the very kernels the device does), and EXR and PNG files.
+//! What both example hosts (`ash_host`, `wgpu_host`) share: the scene they peel with their own
+//! passes, the check of their frames (the same `SplatContext` on the library's CPU backend, run
+//! from the same slot words: the CPU backend runs the very kernels the device does), and the EXR
+//! and PNG files they write.
 
 use anyhow::{Context, Result, ensure};
 use dof_core::ThinLens;
@@ -95,4 +96,22 @@ pub fn compare(got: &Rgb, want: &Rgb) -> ([f32; 3], bool) {
         }
     }
     (diff, finite && (0..3).all(|c| diff[c] <= 1e-3 * peak[c].max(1e-3)))
+}
+
+/// A vertex of the peeled scene: position, then colour and coverage.
+pub type Vertex = [f32; 7];
+
+/// The peeled scene: a far wall, a half-covering pane in focus and a near bar, as coloured
+/// triangles.
+pub fn peel_scene() -> Vec<Vertex> {
+    let quad = |x0: f32, y0: f32, x1: f32, y1: f32, z: f32, c: [f32; 4]| {
+        let v = |x: f32, y: f32| [x, y, z, c[0], c[1], c[2], c[3]];
+        [v(x0, y0), v(x1, y0), v(x1, y1), v(x0, y0), v(x1, y1), v(x0, y1)]
+    };
+    [
+        quad(-6.0, -3.0, 6.0, 3.0, -8.0, [0.2, 0.4, 0.8, 1.0]),
+        quad(-1.0, -0.8, 0.6, 0.5, -3.0, [0.9, 0.3, 0.2, 0.5]),
+        quad(-0.35, -1.2, -0.1, 1.2, -1.3, [0.8, 0.7, 0.1, 1.0]),
+    ]
+    .concat()
 }

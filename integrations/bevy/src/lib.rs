@@ -37,7 +37,7 @@ use bevy::render::renderer::{RenderAdapterInfo, RenderContext, RenderDevice, Ren
 use bevy::render::view::{ExtractedView, ViewDepthStencilTexture, ViewTarget};
 use bevy::render::{Render, RenderApp};
 use dof_core::ThinLens;
-use dof_core::backend::{Backend, WgpuBackend};
+use dof_core::backend::{Backend, ImageRef, WgpuBackend};
 use dof_core::frame::{DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput, SplatContext, SplatContextDesc, SplatOptions};
 use dof_core::lens::{Aperture, CameraLens, yfov_from_projection};
 use std::collections::HashMap;
@@ -130,13 +130,48 @@ struct Inner {
 struct View {
     ctx: SplatContext,
     extent: [u32; 2],
+    /// The textures its last frame used, imported once: Bevy keeps a view's textures across
+    /// frames (its two main textures swap roles each frame) and makes new ones on a resize.
+    imported: Vec<(wgpu::Texture, ImageRef)>,
+}
+
+impl View {
+    /// The images of `textures` (imported on first use); the textures no longer used are
+    /// forgotten, so that the backend does not keep them alive.
+    fn images<const N: usize>(&mut self, backend: &mut WgpuBackend, textures: [&wgpu::Texture; N]) -> dof_core::Result<[ImageRef; N]> {
+        let mut kept = Vec::with_capacity(N);
+        for texture in textures {
+            let image = match self.imported.iter().position(|(t, _)| t == texture) {
+                Some(at) => self.imported.swap_remove(at).1,
+                None => backend.import_texture(texture)?,
+            };
+            kept.push((texture.clone(), image));
+        }
+        for (_, stale) in std::mem::replace(&mut self.imported, kept) {
+            backend.forget_texture(&stale);
+        }
+        Ok(std::array::from_fn(|i| self.imported[i].1))
+    }
+
+    /// Drops the view: its textures forgotten by the backend, its context freed once the device is
+    /// done with it.
+    fn forget(self, backend: &mut WgpuBackend) {
+        for (_, image) in &self.imported {
+            backend.forget_texture(image);
+        }
+    }
 }
 
 fn forget_removed_views(state: Res<LensBlurState>, views: Query<Entity, With<LensBlur>>) {
     let Ok(mut inner) = state.inner.lock() else { return };
     let Inner { backend, views: contexts, .. } = &mut *inner;
     if let Some(backend) = backend.as_mut() {
-        contexts.retain(|entity, _| views.contains(*entity));
+        let gone: Vec<Entity> = contexts.keys().copied().filter(|entity| !views.contains(*entity)).collect();
+        for entity in gone {
+            if let Some(view) = contexts.remove(&entity) {
+                view.forget(backend);
+            }
+        }
         let _ = backend.release_finished();
     }
 }
@@ -188,21 +223,21 @@ fn record(
     };
     // A context for the view, made again when it grows or shrinks.
     if inner.views.get(&entity).is_none_or(|v| v.extent != [width, height]) {
-        inner.views.remove(&entity);
+        if let Some(old) = inner.views.remove(&entity) {
+            old.forget(backend);
+        }
         let mut desc = SplatContextDesc::new(Extent::new(width, height, 1), SplatOptions::default());
         desc.image_io = true;
         let splat = SplatContext::new(backend, &desc).map_err(|e| e.to_string())?;
         // Its buffers' zeroing, run now: the frames submit nothing.
         backend.submit().map_err(|e| e.to_string())?;
-        inner.views.insert(entity, View { ctx: splat, extent: [width, height] });
+        inner.views.insert(entity, View { ctx: splat, extent: [width, height], imported: Vec::new() });
     }
     let view = inner.views.get_mut(&entity).ok_or("no context")?;
 
     let post = target.post_process_write();
-    let import = |backend: &mut WgpuBackend, texture: &bevy::render::render_resource::Texture| backend.import_texture(texture);
-    let color = import(backend, post.source_texture).map_err(|e| e.to_string())?;
-    let depth_image = import(backend, depth.texture()).map_err(|e| e.to_string())?;
-    let output = import(backend, post.destination_texture).map_err(|e| e.to_string())?;
+    let [color, depth_image, output] =
+        view.images(backend, [post.source_texture, depth.texture(), post.destination_texture]).map_err(|e| e.to_string())?;
     let frame = Frame {
         width,
         height,
@@ -210,14 +245,8 @@ fn record(
         input: FrameInput::Images { color, depth: depth_image, encoding },
         output: FrameOutput::Image(output),
     };
-    let recorded = (|| -> dof_core::Result<()> {
-        let mut recording = backend.record_into(ctx.command_encoder())?;
-        view.ctx.record(&mut *recording, &frame)
-    })();
-    for image in [color, depth_image, output] {
-        backend.forget_texture(&image);
-    }
-    recorded.map_err(|e| e.to_string())
+    let mut recording = backend.record_into(ctx.command_encoder()).map_err(|e| e.to_string())?;
+    view.ctx.record(&mut *recording, &frame).map_err(|e| e.to_string())
 }
 
 /// The library's reading of Bevy's depth: reversed Z, the far plane at infinity or finite.

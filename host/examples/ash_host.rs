@@ -51,18 +51,17 @@ use dof_core::frame::{
     SplatContext, SplatContextDesc, SplatOptions,
 };
 use dof_shaders::slot::SLOT_WORDS;
-use glam::Mat4;
 use std::ffi::{CStr, c_char, c_void};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
-#[path = "common/check.rs"]
-mod check;
 #[path = "ash_host/peel.rs"]
 mod peel;
-use check::{CpuCheck, Rgb, compare, peel_scene, write_image};
+#[path = "common/shared.rs"]
+mod shared;
+use shared::{CpuCheck, Rgb, compare, look_at, peel_scene, projection, write_image};
 
 const USAGE: &str = "usage: ash_host [--validation] [--width W] [--height H] [--frames N] [--out DIR] [--device NAME]";
 
@@ -508,22 +507,6 @@ fn run_frame(
     Ok(FrameResult { image: Rgb { width: extent[0], height: extent[1], data }, counters, times, record_ms })
 }
 
-/// Vulkan clip space from view space (looking down −z): y down, depth 0 at the near plane and 1 at
-/// the far plane (the library's `DepthEncoding::Standard`).
-fn projection(yfov: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
-    let t = 1.0 / (yfov / 2.0).tan();
-    let (a, b) = (far / (near - far), near * far / (near - far));
-    Mat4::from_cols_array(&[t / aspect, 0.0, 0.0, 0.0, 0.0, -t, 0.0, 0.0, 0.0, 0.0, a, -1.0, 0.0, 0.0, b, 0.0])
-}
-
-/// View space of a camera at `eye` looking at `target`, +y up.
-fn look_at(eye: Vec3, target: Vec3) -> Mat4 {
-    let f = (target - eye).normalize();
-    let s = f.cross(Vec3::Y).normalize();
-    let u = s.cross(f);
-    Mat4::from_cols_array(&[s.x, u.x, -f.x, 0.0, s.y, u.y, -f.y, 0.0, s.z, u.z, -f.z, 0.0, -s.dot(eye), -u.dot(eye), f.dot(eye), 1.0])
-}
-
 fn times_summary(times: &[CommandTime]) -> String {
     let total: f64 = times.iter().map(|t| t.ms).sum();
     let mut by_label: Vec<(String, f64)> = Vec::new();
@@ -737,7 +720,7 @@ fn main() -> Result<ExitCode> {
     for i in 0..args.frames {
         let angle = (2.0 * i as f32).to_radians();
         let eye = target + 3.0 * Vec3::new(angle.sin(), 0.0, angle.cos());
-        let view_proj = (projection(yfov, w as f32 / h as f32, near, far) * look_at(eye, target)).to_cols_array();
+        let view_proj = (projection(yfov, w as f32 / h as f32, near, far, true) * look_at(eye, target)).to_cols_array();
         let input = renderer_peel.frame(lens, FrameOutput::Buffer(RgbBuffer(bound_id))).input;
         let peeling = Peeling { peel: &mut renderer_peel, pass: &pass, view_proj, background };
         let frame = run_frame(&r, &mut backend, &mut ctx, &output, lens, input, Some(peeling))?;

@@ -40,9 +40,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-#[path = "common/check.rs"]
-mod check;
-use check::{CpuCheck, Rgb, Vertex, compare, peel_scene, write_image};
+#[path = "common/shared.rs"]
+mod shared;
+use shared::{CpuCheck, Rgb, Vertex, compare, look_at, peel_scene, projection, write_image};
 
 const USAGE: &str = "usage: wgpu_host [--width W] [--height H] [--frames N] [--out DIR] [--window]";
 const COLOUR: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
@@ -297,21 +297,6 @@ impl Renderer {
     }
 }
 
-/// wgpu's clip space from view space (looking down −z): y up, depth 0 at the near plane and 1 at
-/// the far plane (the library's `DepthEncoding::Standard`).
-fn projection(yfov: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
-    let t = 1.0 / (yfov / 2.0).tan();
-    let (a, b) = (far / (near - far), near * far / (near - far));
-    Mat4::from_cols_array(&[t / aspect, 0.0, 0.0, 0.0, 0.0, t, 0.0, 0.0, 0.0, 0.0, a, -1.0, 0.0, 0.0, b, 0.0])
-}
-
-/// View space of a camera at `eye` looking at `target`, +y up.
-fn look_at(eye: Vec3, target: Vec3) -> Mat4 {
-    let f = (target - eye).normalize();
-    let (s, u) = (f.cross(Vec3::Y).normalize(), f.cross(Vec3::Y).normalize().cross(f));
-    Mat4::from_cols_array(&[s.x, u.x, -f.x, 0.0, s.y, u.y, -f.y, 0.0, s.z, u.z, -f.z, 0.0, -s.dot(eye), -u.dot(eye), f.dot(eye), 1.0])
-}
-
 /// The immediates of both stages: the view-projection matrix (column-major) and the width, padded
 /// to the struct's 16-byte alignment.
 const PUSH_BYTES: u32 = 80;
@@ -431,7 +416,7 @@ impl Session {
         println!("peel and context: {:.1} MiB of device memory", (peel.device_bytes() + ctx.device_bytes()) as f64 / (1 << 20) as f64);
         let check = CpuCheck::new(backend.limits().max_shared_bytes, &SplatContextDesc::new(extent, splat_options))?;
         let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.02, focus_distance: 3.0, pixels_per_unit: h as f32 / 0.024 };
-        let projection = projection(yfov, w as f32 / h as f32, near, far);
+        let projection = projection(yfov, w as f32 / h as f32, near, far, false);
         Ok(Session { r, backend, peel, ctx, check, images, buffers, lens, projection, frames: 0, failures: Vec::new(), last: None })
     }
 

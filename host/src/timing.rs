@@ -46,9 +46,8 @@ impl RunTimes {
         self.stages.iter().map(|(k, v)| (k.clone(), median(v.clone()))).collect()
     }
 
-    /// Each stage's mean time per run over all runs (a time the queue could not stamp counts 0).
-    /// The mean of each stage's finite times over the runs; NaN for a stage never timed (a clear on
-    /// the wgpu backend, a queue without timestamps).
+    /// Each stage's mean time per run over all runs (a time the queue could not stamp counts 0);
+    /// NaN for a stage never timed at all (a clear on the wgpu backend, a queue without timestamps).
     pub fn mean_stages(&self) -> BTreeMap<String, f64> {
         let runs = self.totals.len().max(1) as f64;
         let mean = |v: &Vec<f64>| {

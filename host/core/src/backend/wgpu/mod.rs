@@ -63,6 +63,7 @@ enum Groups {
     Indirect(wgpu::Buffer, u64),
 }
 
+#[derive(Clone)]
 struct Pipeline {
     pipeline: wgpu::ComputePipeline,
     layout: wgpu::BindGroupLayout,
@@ -78,8 +79,8 @@ pub struct WgpuBackend {
     pipelines: HashMap<&'static str, Pipeline>,
     /// The caller's textures ([`WgpuBackend::import_texture`]), by image handle − 1.
     textures: Vec<Option<textures::WgpuTexture>>,
-    /// The `texture_read` kernel's pipeline, made when a texture needing it is imported.
-    depth_read: Option<wgpu::ComputePipeline>,
+    /// The `texture_read` kernel's pipeline, made when a depth texture is imported.
+    depth_read: Option<Pipeline>,
     /// Commands recorded since the last submission; during [`WgpuBackend::record_into`], the
     /// caller's encoder.
     encoder: Option<wgpu::CommandEncoder>,
@@ -260,40 +261,34 @@ impl WgpuBackend {
     }
 
     fn create_pipeline(&self, kernel: &'static KernelDesc) -> Result<Pipeline> {
-        let source = crate::shaders::wgsl_module(kernel.entry)
-            .ok_or_else(|| Error::InvalidArgument(format!("kernel {} has no WGSL module (host/wgsl/)", kernel.entry)))?;
-        let entries: Vec<wgpu::BindGroupLayoutEntry> = (0..kernel.bindings)
-            .map(|binding| wgpu::BindGroupLayoutEntry {
-                binding,
-                visibility: wgpu::ShaderStages::COMPUTE,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Storage { read_only: kernel.read_only & (1 << binding) != 0 },
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            })
-            .collect();
-        let layout =
-            self.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(kernel.entry), entries: &entries });
+        let entries: Vec<wgpu::BindGroupLayoutEntry> =
+            (0..kernel.bindings).map(|binding| storage_binding(binding, kernel.read_only & (1 << binding) != 0)).collect();
+        self.compute_pipeline(kernel.entry, &entries, kernel.push_bytes)
+    }
+
+    /// The compute pipeline of the WGSL module of `entry`, one bind group of `entries`, and
+    /// `push_bytes` of immediates.
+    fn compute_pipeline(&self, entry: &'static str, entries: &[wgpu::BindGroupLayoutEntry], push_bytes: u32) -> Result<Pipeline> {
+        let source = crate::shaders::wgsl_module(entry)
+            .ok_or_else(|| Error::InvalidArgument(format!("kernel {entry} has no WGSL module (host/wgsl/)")))?;
+        let layout = self.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(entry), entries });
         let pipeline_layout = self.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some(kernel.entry),
+            label: Some(entry),
             bind_group_layouts: &[Some(&layout)],
-            immediate_size: kernel.push_bytes.next_multiple_of(4),
+            immediate_size: push_bytes.next_multiple_of(4),
         });
-        let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some(kernel.entry),
-            source: wgpu::ShaderSource::Wgsl(source.into()),
-        });
+        let module = self
+            .device
+            .create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(entry), source: wgpu::ShaderSource::Wgsl(source.into()) });
         let pipeline = self.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some(kernel.entry),
+            label: Some(entry),
             layout: Some(&pipeline_layout),
             module: &module,
             entry_point: None,
             compilation_options: Default::default(),
             cache: None,
         });
-        self.check_errors().map_err(|e| Error::Device(format!("the pipeline of {}: {e}", kernel.entry)))?;
+        self.check_errors().map_err(|e| Error::Device(format!("the pipeline of {entry}: {e}")))?;
         Ok(Pipeline { pipeline, layout })
     }
 
@@ -316,16 +311,31 @@ impl WgpuBackend {
         let bind_group =
             self.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout: &layout, entries: &entries });
         let immediates: Vec<u8> = bytemuck::cast_slice(push).iter().copied().take(kernel.push_bytes.next_multiple_of(4) as usize).collect();
-        let mut command = Command::new(label, kernel.entry);
+        self.record_pass(kernel.entry, &pipeline, &bind_group, &immediates, groups, label);
+        Ok(())
+    }
+
+    /// Records a compute pass of its own running `pipeline` (the kernel `entry`) on `bind_group`,
+    /// timed where the backend's own encoder has timestamps, and counts it.
+    fn record_pass(
+        &mut self,
+        entry: &'static str,
+        pipeline: &wgpu::ComputePipeline,
+        bind_group: &wgpu::BindGroup,
+        immediates: &[u8],
+        groups: Groups,
+        label: &str,
+    ) {
+        let mut command = Command::new(label, entry);
         let device = &self.device;
         let encoder =
             self.encoder.get_or_insert_with(|| device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("dof") }));
         let timestamp_writes = if self.external { None } else { self.timestamps.as_mut().and_then(|t| t.pass_writes(&mut command)) };
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(label), timestamp_writes });
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &bind_group, &[]);
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, bind_group, &[]);
         if !immediates.is_empty() {
-            pass.set_immediates(0, &immediates);
+            pass.set_immediates(0, immediates);
         }
         match groups {
             Groups::Direct([x, y, z]) => pass.dispatch_workgroups(x, y, z),
@@ -335,7 +345,20 @@ impl WgpuBackend {
         self.counters.commands += 1;
         self.counters.dispatches += 1;
         self.commands.push(command);
-        Ok(())
+    }
+}
+
+/// A compute stage's storage buffer at `binding`.
+fn storage_binding(binding: u32, read_only: bool) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::COMPUTE,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Storage { read_only },
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
     }
 }
 

@@ -3,40 +3,30 @@
 //! f32 depths: wgpu copies no depth out of `Depth24Plus` or `Depth24PlusStencil8`, and copies one
 //! out of the others only for the whole texture.
 
-use super::WgpuBackend;
 use super::timing::Command;
+use super::{Groups, Pipeline, WgpuBackend, storage_binding};
 use crate::backend::{BufferId, ImageFormat, ImageRef};
 use crate::error::{Error, Result};
 use dof_shaders::texture_read::{DEPTH_TEXTURE_WORDS, THREADS, TextureReadParams};
 
-/// How a texture's texels reach a buffer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Read {
-    /// A texture-to-buffer copy of this aspect.
-    Copy(wgpu::TextureAspect),
-    /// The `texture_read` kernel, through a view of the depth aspect.
-    DepthKernel,
-}
-
 pub(super) struct WgpuTexture {
     texture: wgpu::Texture,
-    read: Read,
-    /// The view the depth kernel binds, made at import.
+    /// A depth texture's depth aspect, as the `texture_read` kernel binds it (made at import);
+    /// `None` for a colour texture, which is copied.
     depth_view: Option<wgpu::TextureView>,
 }
 
-/// The texture formats a frame takes, as the [`ImageFormat`] their texels have in a buffer, and how
-/// they get there.
-fn buffer_format(format: wgpu::TextureFormat) -> Option<(ImageFormat, Read)> {
-    use wgpu::TextureAspect::All;
+/// The texture formats a frame takes, as the [`ImageFormat`] their texels have in a buffer.
+fn buffer_format(format: wgpu::TextureFormat) -> Option<ImageFormat> {
     use wgpu::TextureFormat as T;
     Some(match format {
-        T::Rgba32Float => (ImageFormat::Rgba32Float, Read::Copy(All)),
-        T::Rgba16Float => (ImageFormat::Rgba16Float, Read::Copy(All)),
+        T::Rgba32Float => ImageFormat::Rgba32Float,
+        T::Rgba16Float => ImageFormat::Rgba16Float,
         // The same bits as Vulkan's B10G11R11_UFLOAT_PACK32: red in the low 11.
-        T::Rg11b10Ufloat => (ImageFormat::B10G11R11Ufloat, Read::Copy(All)),
-        T::R32Float => (ImageFormat::R32Float, Read::Copy(All)),
-        T::Depth32Float | T::Depth32FloatStencil8 | T::Depth24Plus | T::Depth24PlusStencil8 => (ImageFormat::D32Float, Read::DepthKernel),
+        T::Rg11b10Ufloat => ImageFormat::B10G11R11Ufloat,
+        T::R32Float => ImageFormat::R32Float,
+        // Read by the kernel as f32 depths.
+        T::Depth32Float | T::Depth32FloatStencil8 | T::Depth24Plus | T::Depth24PlusStencil8 => ImageFormat::D32Float,
         _ => return None,
     })
 }
@@ -54,7 +44,7 @@ impl WgpuBackend {
     /// [`WgpuBackend::forget_texture`].
     pub fn import_texture(&mut self, texture: &wgpu::Texture) -> Result<ImageRef> {
         let format = texture.format();
-        let Some((image_format, read)) = buffer_format(format) else {
+        let Some(image_format) = buffer_format(format) else {
             return Err(Error::InvalidArgument(format!("a frame takes no {format:?} texture; the formats are {FORMATS}")));
         };
         if texture.dimension() != wgpu::TextureDimension::D2 || texture.sample_count() != 1 {
@@ -64,7 +54,7 @@ impl WgpuBackend {
                 texture.sample_count()
             )));
         }
-        let depth_view = (read == Read::DepthKernel).then(|| {
+        let depth_view = format.is_depth_stencil_format().then(|| {
             texture.create_view(&wgpu::TextureViewDescriptor {
                 label: Some("dof depth"),
                 dimension: Some(wgpu::TextureViewDimension::D2),
@@ -76,7 +66,7 @@ impl WgpuBackend {
                 ..Default::default()
             })
         });
-        if read == Read::DepthKernel {
+        if depth_view.is_some() {
             // Made now, so that no frame makes it.
             self.depth_read_pipeline()?;
         }
@@ -85,7 +75,7 @@ impl WgpuBackend {
         if slot == self.textures.len() {
             self.textures.push(None);
         }
-        self.textures[slot] = Some(WgpuTexture { texture: texture.clone(), read, depth_view });
+        self.textures[slot] = Some(WgpuTexture { texture: texture.clone(), depth_view });
         let size = texture.size();
         Ok(ImageRef::in_table(slot as u64 + 1, image_format, [size.width, size.height]))
     }
@@ -103,7 +93,7 @@ impl WgpuBackend {
             Error::InvalidArgument(format!("unknown image {} (the wgpu backend's images come from import_texture)", image.handle))
         })?;
         match buffer_format(texture.texture.format()) {
-            Some((format, _)) if format == image.format => Ok(texture),
+            Some(format) if format == image.format => Ok(texture),
             _ => Err(Error::InvalidArgument(format!(
                 "image {} is a {:?} texture, described as {}",
                 image.handle,
@@ -125,13 +115,11 @@ impl WgpuBackend {
                 image.extent[0], image.extent[1], size.width, size.height
             )));
         }
-        let (needed, usage) = match (into_image, texture.read) {
-            (true, Read::DepthKernel) => {
-                return Err(Error::InvalidArgument(format!("{what}: a frame writes no depth texture")));
-            }
-            (true, _) => (wgpu::TextureUsages::COPY_DST, "COPY_DST"),
-            (false, Read::DepthKernel) => (wgpu::TextureUsages::TEXTURE_BINDING, "TEXTURE_BINDING"),
-            (false, _) => (wgpu::TextureUsages::COPY_SRC, "COPY_SRC"),
+        let (needed, usage) = match (into_image, texture.depth_view.is_some()) {
+            (true, true) => return Err(Error::InvalidArgument(format!("{what}: a frame writes no depth texture"))),
+            (true, false) => (wgpu::TextureUsages::COPY_DST, "COPY_DST"),
+            (false, true) => (wgpu::TextureUsages::TEXTURE_BINDING, "TEXTURE_BINDING"),
+            (false, false) => (wgpu::TextureUsages::COPY_SRC, "COPY_SRC"),
         };
         if !texture.texture.usage().contains(needed) {
             return Err(Error::InvalidArgument(format!(
@@ -157,14 +145,13 @@ impl WgpuBackend {
         self.check_texture_copy(&image, into_image)?;
         self.check_range(buffer, offset_words, image.words())?;
         let texture = self.texture(&image)?;
-        let (texture, read, depth_view) = (texture.texture.clone(), texture.read, texture.depth_view.clone());
+        let (texture, depth_view) = (texture.texture.clone(), texture.depth_view.clone());
+        if let Some(view) = depth_view {
+            return self.read_depth(&view, buffer, offset_words, image.extent, label);
+        }
         let target = self.buffer(buffer)?.buffer.clone();
         let [width, height] = image.extent;
-        let aspect = match (read, depth_view) {
-            (Read::Copy(aspect), _) => aspect,
-            (Read::DepthKernel, Some(view)) => return self.read_depth(&view, buffer, offset_words, image.extent, label),
-            (Read::DepthKernel, None) => return Err(Error::Device("a depth texture imported without its view".into())),
-        };
+        let aspect = wgpu::TextureAspect::All;
         let row_bytes = image.format.words_per_pixel() * 4 * width as u64;
         let rows: Vec<(u32, u32)> =
             if height == 1 || row_bytes.is_multiple_of(256) { vec![(0, height)] } else { (0..height).map(|y| (y, 1)).collect() };
@@ -198,84 +185,37 @@ impl WgpuBackend {
         let texels = extent[0] as u64 * extent[1] as u64;
         let groups = texels.div_ceil(THREADS as u64).clamp(1, self.limits.max_workgroup_count[0] as u64) as u32;
         let target = self.buffer(buffer)?.buffer.clone();
-        let pipeline = self.depth_read_pipeline()?;
+        let Pipeline { pipeline, layout } = self.depth_read_pipeline()?;
         let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some(label),
-            layout: &pipeline.get_bind_group_layout(0),
+            layout: &layout,
             entries: &[
                 wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(view) },
                 wgpu::BindGroupEntry { binding: 1, resource: target.as_entire_binding() },
             ],
         });
-        let mut command = Command::new(label, DEPTH_TEXTURE_WORDS);
-        let external = self.external;
-        let timestamp_writes = if external { None } else { self.timestamps.as_mut().and_then(|t| t.pass_writes(&mut command)) };
-        let device = &self.device;
-        let encoder =
-            self.encoder.get_or_insert_with(|| device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("dof") }));
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(label), timestamp_writes });
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &bind_group, &[]);
-        pass.set_immediates(0, bytemuck::bytes_of(&params));
-        pass.dispatch_workgroups(groups, 1, 1);
-        drop(pass);
-        self.counters.commands += 1;
-        self.counters.dispatches += 1;
-        self.commands.push(command);
+        self.record_pass(DEPTH_TEXTURE_WORDS, &pipeline, &bind_group, bytemuck::bytes_of(&params), Groups::Direct([groups, 1, 1]), label);
         Ok(())
     }
 
     /// The `texture_read` kernel's pipeline, made on first use: a depth texture and a storage
     /// buffer, its parameters as immediates.
-    fn depth_read_pipeline(&mut self) -> Result<wgpu::ComputePipeline> {
+    fn depth_read_pipeline(&mut self) -> Result<Pipeline> {
         if let Some(pipeline) = &self.depth_read {
             return Ok(pipeline.clone());
         }
-        let source = crate::shaders::wgsl_module(DEPTH_TEXTURE_WORDS)
-            .ok_or_else(|| Error::InvalidArgument(format!("kernel {DEPTH_TEXTURE_WORDS} has no WGSL module (host/wgsl/)")))?;
-        let layout = self.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some(DEPTH_TEXTURE_WORDS),
-            entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: wgpu::ShaderStages::COMPUTE,
-                    ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Depth,
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                    count: None,
-                },
-                wgpu::BindGroupLayoutEntry {
-                    binding: 1,
-                    visibility: wgpu::ShaderStages::COMPUTE,
-                    ty: wgpu::BindingType::Buffer {
-                        ty: wgpu::BufferBindingType::Storage { read_only: false },
-                        has_dynamic_offset: false,
-                        min_binding_size: None,
-                    },
-                    count: None,
-                },
-            ],
-        });
-        let pipeline_layout = self.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some(DEPTH_TEXTURE_WORDS),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: std::mem::size_of::<TextureReadParams>() as u32,
-        });
-        let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some(DEPTH_TEXTURE_WORDS),
-            source: wgpu::ShaderSource::Wgsl(source.into()),
-        });
-        let pipeline = self.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some(DEPTH_TEXTURE_WORDS),
-            layout: Some(&pipeline_layout),
-            module: &module,
-            entry_point: None,
-            compilation_options: Default::default(),
-            cache: None,
-        });
-        self.check_errors().map_err(|e| Error::Device(format!("the pipeline of {DEPTH_TEXTURE_WORDS}: {e}")))?;
+        let depth = wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Texture {
+                sample_type: wgpu::TextureSampleType::Depth,
+                view_dimension: wgpu::TextureViewDimension::D2,
+                multisampled: false,
+            },
+            count: None,
+        };
+        let push_bytes = std::mem::size_of::<TextureReadParams>() as u32;
+        let pipeline = self.compute_pipeline(DEPTH_TEXTURE_WORDS, &[depth, storage_binding(1, false)], push_bytes)?;
         self.depth_read = Some(pipeline.clone());
         Ok(pipeline)
     }

@@ -1,5 +1,5 @@
 //! What both example hosts (`ash_host`, `wgpu_host`) share: the scene they peel with their own
-//! passes, the check of their frames (the same `SplatContext` on the library's CPU backend, run
+//! passes and its camera, the check of their frames (the same `SplatContext` on the library's CPU backend, run
 //! from the same slot words: the CPU backend runs the very kernels the device does), and the EXR
 //! and PNG files they write.
 
@@ -9,6 +9,7 @@ use dof_core::backend::{Backend, BufferId, CpuBackend};
 use dof_core::frame::{CountBuffer, DofContext, Frame, RgbBuffer, SlotBuffer, SplatContext, SplatContextDesc};
 use dof_shaders::slot::SLOT_WORDS;
 use dof_shaders::tonemap::tonemap_channel;
+use glam::{Mat4, Vec3};
 
 /// A result image: RGB, row-major.
 pub struct Rgb {
@@ -114,4 +115,22 @@ pub fn peel_scene() -> Vec<Vertex> {
         quad(-0.35, -1.2, -0.1, 1.2, -1.3, [0.8, 0.7, 0.1, 1.0]),
     ]
     .concat()
+}
+
+/// Clip space from view space (looking down −z), depth 0 at the near plane and 1 at the far plane
+/// (the library's `DepthEncoding::Standard`); y down as Vulkan's clip space has it, or up as
+/// wgpu's.
+pub fn projection(yfov: f32, aspect: f32, near: f32, far: f32, y_down: bool) -> Mat4 {
+    let t = 1.0 / (yfov / 2.0).tan();
+    let ty = if y_down { -t } else { t };
+    let (a, b) = (far / (near - far), near * far / (near - far));
+    Mat4::from_cols_array(&[t / aspect, 0.0, 0.0, 0.0, 0.0, ty, 0.0, 0.0, 0.0, 0.0, a, -1.0, 0.0, 0.0, b, 0.0])
+}
+
+/// View space of a camera at `eye` looking at `target`, +y up.
+pub fn look_at(eye: Vec3, target: Vec3) -> Mat4 {
+    let f = (target - eye).normalize();
+    let s = f.cross(Vec3::Y).normalize();
+    let u = s.cross(f);
+    Mat4::from_cols_array(&[s.x, u.x, -f.x, 0.0, s.y, u.y, -f.y, 0.0, s.z, u.z, -f.z, 0.0, -s.dot(eye), -u.dot(eye), f.dot(eye), 1.0])
 }

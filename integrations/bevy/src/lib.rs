@@ -177,7 +177,6 @@ fn forget_removed_views(state: Res<LensBlurState>, views: Query<Entity, With<Len
 }
 
 /// The depth of field of one view, recorded into Bevy's command encoder.
-#[allow(clippy::too_many_arguments)]
 fn lens_blur(
     view: ViewQuery<(Entity, &ExtractedCamera, &ExtractedView, &ViewTarget, &ViewDepthStencilTexture, &LensBlur)>,
     state: Res<LensBlurState>,

@@ -20,7 +20,8 @@ struct type_14 {
     member_7: u32,
     member_8: u32,
     member_9: u32,
-    member_10: array<u32, 3>,
+    member_10: u32,
+    member_11: array<u32, 2>,
 }
 
 struct type_15 {

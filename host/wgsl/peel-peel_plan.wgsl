@@ -20,7 +20,8 @@ struct type_14 {
     member_7: u32,
     member_8: u32,
     member_9: u32,
-    member_10: array<u32, 3>,
+    member_10: u32,
+    member_11: array<u32, 2>,
 }
 
 struct type_15 {
@@ -103,7 +104,7 @@ fn function_() {
                         let _e73 = global_3.member.member_4;
                         local_9 = _e73;
                         if (_e73 > 0u) {
-                            let _e77 = global_3.member.member_3;
+                            let _e77 = global_3.member.member_10;
                             let _e78 = local_9;
                             let _e80 = ((_e77 + _e78) - 1u);
                             local_10 = _e80;
@@ -117,7 +118,7 @@ fn function_() {
                             let _e86 = local_8;
                             global_6.member[_e83] = _e86;
                         }
-                        let _e89 = global_3.member.member_3;
+                        let _e89 = global_3.member.member_10;
                         let _e90 = local_9;
                         if (_e90 < _e89) {
                             let _e92 = local_8;

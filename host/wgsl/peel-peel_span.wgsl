@@ -20,7 +20,8 @@ struct type_14 {
     member_7: u32,
     member_8: u32,
     member_9: u32,
-    member_10: array<u32, 3>,
+    member_10: u32,
+    member_11: array<u32, 2>,
 }
 
 struct type_15 {
@@ -62,192 +63,192 @@ fn function_() {
     var local_20: u32;
     var local_21: u32;
     var local_22: i32;
-    var phi_229_: bool;
-    var phi_91_: u32;
+    var phi_228_: bool;
+    var phi_90_: u32;
+    var phi_143_: i32;
+    var phi_146_: i32;
+    var phi_188_: i32;
     var phi_144_: i32;
     var phi_147_: i32;
-    var phi_189_: i32;
-    var phi_145_: i32;
-    var phi_148_: i32;
-    var phi_222_: bool;
-    var phi_232_: bool;
+    var phi_221_: bool;
     var phi_231_: bool;
-    var phi_92_: u32;
     var phi_230_: bool;
+    var phi_91_: u32;
+    var phi_229_: bool;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e44 = global;
-            local = _e44;
-            let _e45 = global_1;
-            let _e46 = global_2;
+            let _e43 = global;
+            local = _e43;
+            let _e44 = global_1;
+            let _e45 = global_2;
             local_1 = arrayLength((&global_5.member));
             local_2 = arrayLength((&global_6.member));
-            local_3 = _e45.x;
-            local_4 = _e46.x;
-            let _e57 = global_3.member.member_1;
-            local_5 = _e57;
-            let _e60 = global_3.member.member_2;
-            local_6 = _e60;
+            local_3 = _e44.x;
+            local_4 = _e45.x;
+            let _e56 = global_3.member.member_1;
+            local_5 = _e56;
+            let _e59 = global_3.member.member_2;
+            local_6 = _e59;
             if (0u < arrayLength((&global_4.member))) {
             } else {
                 break;
             }
-            let _e64 = global_4.member[0u];
-            local_7 = (bitcast<i32>(_e64) - 1i);
-            let _e67 = local_5;
-            let _e68 = local_6;
-            local_8 = (_e67 * _e68);
-            let _e70 = local_4;
-            local_9 = (_e70 * 256u);
-            let _e72 = local_3;
-            phi_229_ = false;
-            phi_91_ = (_e72 * 256u);
+            let _e63 = global_4.member[0u];
+            local_7 = (bitcast<i32>(_e63) - 1i);
+            let _e66 = local_5;
+            let _e67 = local_6;
+            local_8 = (_e66 * _e67);
+            let _e69 = local_4;
+            local_9 = (_e69 * 256u);
+            let _e71 = local_3;
+            phi_228_ = false;
+            phi_90_ = (_e71 * 256u);
             loop {
-                let _e75 = phi_229_;
-                let _e77 = phi_91_;
-                local_10 = _e77;
-                let _e78 = local_10;
-                let _e79 = local_8;
-                let _e80 = (_e78 < _e79);
-                local_11 = _e80;
-                if _e80 {
-                    let _e81 = local_10;
-                    let _e82 = local;
-                    let _e83 = (_e81 + _e82);
-                    local_12 = _e83;
-                    let _e84 = local_8;
-                    if (_e83 < _e84) {
-                        let _e86 = local_5;
-                        let _e87 = (_e86 == 0u);
-                        local_13 = _e87;
-                        if _e87 {
-                            phi_230_ = true;
+                let _e74 = phi_228_;
+                let _e76 = phi_90_;
+                local_10 = _e76;
+                let _e77 = local_10;
+                let _e78 = local_8;
+                let _e79 = (_e77 < _e78);
+                local_11 = _e79;
+                if _e79 {
+                    let _e80 = local_10;
+                    let _e81 = local;
+                    let _e82 = (_e80 + _e81);
+                    local_12 = _e82;
+                    let _e83 = local_8;
+                    if (_e82 < _e83) {
+                        let _e85 = local_5;
+                        let _e86 = (_e85 == 0u);
+                        local_13 = _e86;
+                        if _e86 {
+                            phi_229_ = true;
                             break;
                         }
-                        let _e88 = local_12;
-                        let _e89 = local_5;
-                        local_14 = bitcast<i32>((_e88 % _e89));
-                        let _e92 = local_13;
-                        if _e92 {
-                            phi_230_ = true;
+                        let _e87 = local_12;
+                        let _e88 = local_5;
+                        local_14 = bitcast<i32>((_e87 % _e88));
+                        let _e91 = local_13;
+                        if _e91 {
+                            phi_229_ = true;
                             break;
                         }
-                        let _e93 = local_12;
-                        let _e94 = local_5;
-                        local_15 = (_e93 / _e94);
-                        let _e96 = local_14;
-                        let _e97 = local_7;
-                        let _e98 = (_e96 - _e97);
-                        let _e101 = local_14;
-                        let _e102 = local_7;
-                        let _e103 = (_e101 + _e102);
-                        let _e104 = local_5;
-                        let _e106 = (bitcast<i32>(_e104) - 1i);
-                        local_22 = select(_e106, _e103, (_e103 < _e106));
-                        phi_144_ = -1i;
-                        phi_147_ = select(0i, _e98, (_e98 > 0i));
+                        let _e92 = local_12;
+                        let _e93 = local_5;
+                        local_15 = (_e92 / _e93);
+                        let _e95 = local_14;
+                        let _e96 = local_7;
+                        let _e97 = (_e95 - _e96);
+                        let _e100 = local_14;
+                        let _e101 = local_7;
+                        let _e102 = (_e100 + _e101);
+                        let _e103 = local_5;
+                        let _e105 = (bitcast<i32>(_e103) - 1i);
+                        local_22 = select(_e105, _e102, (_e102 < _e105));
+                        phi_143_ = -1i;
+                        phi_146_ = select(0i, _e97, (_e97 > 0i));
                         loop {
-                            let _e110 = phi_144_;
-                            let _e112 = phi_147_;
-                            local_16 = _e110;
-                            local_17 = _e112;
-                            let _e113 = local_17;
-                            let _e114 = local_22;
-                            let _e115 = (_e113 <= _e114);
-                            local_18 = _e115;
-                            if _e115 {
-                                let _e116 = local_15;
-                                let _e117 = local_5;
-                                let _e119 = local_17;
-                                let _e121 = ((_e116 * _e117) + bitcast<u32>(_e119));
-                                local_19 = _e121;
-                                let _e122 = local_1;
-                                if (_e121 < _e122) {
+                            let _e109 = phi_143_;
+                            let _e111 = phi_146_;
+                            local_16 = _e109;
+                            local_17 = _e111;
+                            let _e112 = local_17;
+                            let _e113 = local_22;
+                            let _e114 = (_e112 <= _e113);
+                            local_18 = _e114;
+                            if _e114 {
+                                let _e115 = local_15;
+                                let _e116 = local_5;
+                                let _e118 = local_17;
+                                let _e120 = ((_e115 * _e116) + bitcast<u32>(_e118));
+                                local_19 = _e120;
+                                let _e121 = local_1;
+                                if (_e120 < _e121) {
                                 } else {
-                                    phi_222_ = true;
+                                    phi_221_ = true;
                                     break;
                                 }
-                                let _e124 = local_19;
-                                let _e127 = global_5.member[_e124];
-                                local_20 = _e127;
-                                if (_e127 > 0u) {
-                                    let _e129 = local_17;
-                                    let _e130 = local_14;
-                                    let _e131 = (_e129 - _e130);
-                                    let _e132 = local_20;
-                                    let _e134 = (bitcast<i32>(_e132) - 1i);
-                                    let _e137 = ((_e134 * _e134) - (_e131 * _e131));
-                                    let _e138 = local_16;
-                                    let _e140 = local_16;
-                                    phi_189_ = select(_e137, _e140, (_e137 < _e138));
+                                let _e123 = local_19;
+                                let _e126 = global_5.member[_e123];
+                                local_20 = _e126;
+                                if (_e126 > 0u) {
+                                    let _e128 = local_17;
+                                    let _e129 = local_14;
+                                    let _e130 = (_e128 - _e129);
+                                    let _e131 = local_20;
+                                    let _e133 = (bitcast<i32>(_e131) - 1i);
+                                    let _e136 = ((_e133 * _e133) - (_e130 * _e130));
+                                    let _e137 = local_16;
+                                    let _e139 = local_16;
+                                    phi_188_ = select(_e136, _e139, (_e136 < _e137));
                                 } else {
-                                    phi_189_ = _e110;
+                                    phi_188_ = _e109;
                                 }
-                                let _e143 = phi_189_;
-                                let _e144 = local_17;
-                                phi_145_ = _e143;
-                                phi_148_ = (_e144 + 1i);
+                                let _e142 = phi_188_;
+                                let _e143 = local_17;
+                                phi_144_ = _e142;
+                                phi_147_ = (_e143 + 1i);
                             } else {
-                                phi_145_ = i32();
-                                phi_148_ = i32();
+                                phi_144_ = i32();
+                                phi_147_ = i32();
                             }
-                            let _e147 = phi_145_;
-                            let _e149 = phi_148_;
+                            let _e146 = phi_144_;
+                            let _e148 = phi_147_;
                             continue;
                             continuing {
-                                let _e150 = local_18;
-                                phi_144_ = _e147;
-                                phi_147_ = _e149;
-                                phi_222_ = _e75;
-                                break if !(_e150);
+                                let _e149 = local_18;
+                                phi_143_ = _e146;
+                                phi_146_ = _e148;
+                                phi_221_ = _e74;
+                                break if !(_e149);
                             }
                         }
-                        let _e153 = phi_222_;
-                        phi_230_ = _e153;
-                        if _e153 {
+                        let _e152 = phi_221_;
+                        phi_229_ = _e152;
+                        if _e152 {
                             break;
                         }
-                        let _e154 = local_16;
-                        local_21 = bitcast<u32>((_e154 + 1i));
-                        let _e157 = local_12;
-                        let _e158 = local_2;
-                        if (_e157 < _e158) {
+                        let _e153 = local_16;
+                        local_21 = bitcast<u32>((_e153 + 1i));
+                        let _e156 = local_12;
+                        let _e157 = local_2;
+                        if (_e156 < _e157) {
                         } else {
-                            phi_230_ = true;
+                            phi_229_ = true;
                             break;
                         }
-                        let _e160 = local_12;
-                        let _e163 = local_21;
-                        global_6.member[_e160] = _e163;
-                        phi_232_ = _e153;
+                        let _e159 = local_12;
+                        let _e162 = local_21;
+                        global_6.member[_e159] = _e162;
+                        phi_231_ = _e152;
                     } else {
-                        phi_232_ = _e75;
+                        phi_231_ = _e74;
                     }
-                    let _e165 = phi_232_;
+                    let _e164 = phi_231_;
                     storageBarrier();
                     workgroupBarrier();
-                    let _e166 = local_10;
-                    let _e167 = local_9;
-                    phi_231_ = _e165;
-                    phi_92_ = (_e166 + _e167);
+                    let _e165 = local_10;
+                    let _e166 = local_9;
+                    phi_230_ = _e164;
+                    phi_91_ = (_e165 + _e166);
                 } else {
-                    phi_231_ = _e75;
-                    phi_92_ = u32();
+                    phi_230_ = _e74;
+                    phi_91_ = u32();
                 }
-                let _e170 = phi_231_;
-                let _e172 = phi_92_;
+                let _e169 = phi_230_;
+                let _e171 = phi_91_;
                 continue;
                 continuing {
-                    let _e173 = local_11;
-                    phi_229_ = _e170;
-                    phi_91_ = _e172;
-                    phi_230_ = _e170;
-                    break if !(_e173);
+                    let _e172 = local_11;
+                    phi_228_ = _e169;
+                    phi_90_ = _e171;
+                    phi_229_ = _e169;
+                    break if !(_e172);
                 }
             }
-            let _e176 = phi_230_;
-            if _e176 {
+            let _e175 = phi_229_;
+            if _e175 {
                 break;
             }
             break;

@@ -9,7 +9,7 @@ struct type_7 {
     member: array<u32>,
 }
 
-struct type_15 {
+struct type_16 {
     member: array<f32, 3>,
     member_1: f32,
     member_2: f32,
@@ -35,7 +35,7 @@ struct type_19 {
 
 struct type_21 {
     member: u32,
-    member_1: type_15,
+    member_1: type_16,
 }
 
 var<private> global: u32;
@@ -437,7 +437,7 @@ fn function_() {
                                         let _e355 = phi_503_;
                                         let _e356 = local_33;
                                         let _e357 = local_29;
-                                        phi_506_ = type_21(1u, type_15(_e356, _e357, _e355));
+                                        phi_506_ = type_21(1u, type_16(_e356, _e357, _e355));
                                     } else {
                                         phi_506_ = type_21();
                                     }

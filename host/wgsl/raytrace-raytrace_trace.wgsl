@@ -14,13 +14,13 @@ struct type_14 {
     member_1: f32,
 }
 
-struct type_16 {
+struct type_17 {
     member: array<f32, 3>,
     member_1: f32,
     member_2: f32,
 }
 
-struct type_17 {
+struct type_18 {
     member: u32,
     member_1: array<f32, 3>,
 }
@@ -50,7 +50,7 @@ struct type_22 {
 
 struct type_24 {
     member: u32,
-    member_1: type_16,
+    member_1: type_17,
 }
 
 struct type_25 {
@@ -210,7 +210,7 @@ fn function_() {
     var local_125: bool;
     var local_126: bool;
     var local_127: u32;
-    var local_128: type_17;
+    var local_128: type_18;
     var local_129: u32;
     var local_130: bool;
     var local_131: u32;
@@ -602,7 +602,7 @@ fn function_() {
     var phi_1236_: type_25;
     var phi_1249_: type_25;
     var phi_1261_: type_25;
-    var phi_1335_: type_17;
+    var phi_1335_: type_18;
     var phi_1338_: u32;
     var phi_1419_: bool;
     var phi_1420_: bool;
@@ -628,10 +628,10 @@ fn function_() {
     var phi_1580_: bool;
     var phi_1585_: type_24;
     var phi_1606_: bool;
-    var phi_1611_: type_17;
-    var phi_1612_: type_17;
-    var phi_1613_: type_17;
-    var phi_1336_: type_17;
+    var phi_1611_: type_18;
+    var phi_1612_: type_18;
+    var phi_1613_: type_18;
+    var phi_1336_: type_18;
     var phi_1339_: u32;
     var phi_2115_: bool;
     var phi_1638_: bool;
@@ -1632,7 +1632,7 @@ fn function_() {
                                                                                         let _e1001 = phi_823_;
                                                                                         let _e1002 = local_104;
                                                                                         let _e1003 = local_100;
-                                                                                        phi_826_ = type_24(1u, type_16(_e1002, _e1003, _e1001));
+                                                                                        phi_826_ = type_24(1u, type_17(_e1002, _e1003, _e1001));
                                                                                     } else {
                                                                                         phi_826_ = type_24();
                                                                                     }
@@ -2689,7 +2689,7 @@ fn function_() {
                                 let _e1847 = global_5.member.member_2;
                                 local_127 = _e1847;
                                 local_222 = select(_e1844, _e1847, (_e1847 < _e1844));
-                                phi_1335_ = type_17(0u, type_17().member_1);
+                                phi_1335_ = type_18(0u, type_18().member_1);
                                 phi_1338_ = 0u;
                                 loop {
                                     let _e1851 = phi_1335_;
@@ -2920,7 +2920,7 @@ fn function_() {
                                                 let _e2025 = phi_1574_;
                                                 let _e2026 = local_148;
                                                 let _e2027 = local_144;
-                                                phi_1577_ = type_24(1u, type_16(_e2026, _e2027, _e2025));
+                                                phi_1577_ = type_24(1u, type_17(_e2026, _e2027, _e2025));
                                             } else {
                                                 phi_1577_ = type_24();
                                             }
@@ -2959,7 +2959,7 @@ fn function_() {
                                                 let _e2061 = phi_1606_;
                                                 if _e2061 {
                                                     let _e2062 = local_150;
-                                                    phi_1611_ = type_17(1u, _e2062);
+                                                    phi_1611_ = type_18(1u, _e2062);
                                                 } else {
                                                     phi_1611_ = _e1851;
                                                 }
@@ -2978,7 +2978,7 @@ fn function_() {
                                         phi_1336_ = _e2069;
                                         phi_1339_ = (_e2070 + 1u);
                                     } else {
-                                        phi_1336_ = type_17();
+                                        phi_1336_ = type_18();
                                         phi_1339_ = u32();
                                     }
                                     let _e2073 = phi_1336_;

@@ -9,7 +9,7 @@ struct type_7 {
     member: array<u32>,
 }
 
-struct type_16 {
+struct type_17 {
     member: u32,
     member_1: f32,
     member_2: array<f32, 2>,
@@ -41,7 +41,7 @@ struct type_19 {
     member_13: f32,
     member_14: f32,
     member_15: type_5,
-    member_16: type_16,
+    member_16: type_17,
     member_17: u32,
     member_18: u32,
 }

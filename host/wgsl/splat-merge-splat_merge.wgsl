@@ -9,18 +9,18 @@ struct type_7 {
     member: array<u32>,
 }
 
-struct type_18 {
+struct type_19 {
     member: array<f32, 3>,
     member_1: f32,
     member_2: f32,
 }
 
-struct type_19 {
+struct type_20 {
     member: u32,
     member_1: u32,
 }
 
-struct type_20 {
+struct type_21 {
     member: u32,
     member_1: f32,
     member_2: array<f32, 2>,
@@ -47,7 +47,7 @@ struct type_22 {
     member_13: f32,
     member_14: f32,
     member_15: type_5,
-    member_16: type_20,
+    member_16: type_21,
     member_17: u32,
     member_18: u32,
 }
@@ -186,7 +186,7 @@ fn function_() {
     var local_58: u32;
     var local_59: f32;
     var local_60: u32;
-    var local_61: type_18;
+    var local_61: type_19;
     var local_62: array<f32, 3>;
     var local_63: f32;
     var local_64: f32;
@@ -240,7 +240,7 @@ fn function_() {
     var local_112: u32;
     var local_113: f32;
     var local_114: u32;
-    var local_115: type_19;
+    var local_115: type_20;
     var local_116: bool;
     var local_117: u32;
     var local_118: u32;
@@ -346,7 +346,7 @@ fn function_() {
     var local_218: u32;
     var local_219: f32;
     var local_220: u32;
-    var local_221: type_18;
+    var local_221: type_19;
     var local_222: array<f32, 3>;
     var local_223: f32;
     var local_224: f32;
@@ -397,7 +397,7 @@ fn function_() {
     var local_269: bool;
     var local_270: u32;
     var local_271: bool;
-    var local_272: type_19;
+    var local_272: type_20;
     var local_273: u32;
     var local_274: u32;
     var local_275: bool;
@@ -413,7 +413,7 @@ fn function_() {
     var local_285: u32;
     var local_286: f32;
     var local_287: u32;
-    var local_288: type_18;
+    var local_288: type_19;
     var local_289: array<f32, 3>;
     var local_290: f32;
     var local_291: f32;
@@ -480,7 +480,7 @@ fn function_() {
     var local_352: u32;
     var local_353: f32;
     var local_354: u32;
-    var local_355: type_18;
+    var local_355: type_19;
     var local_356: array<f32, 3>;
     var local_357: f32;
     var local_358: f32;
@@ -575,7 +575,7 @@ fn function_() {
     var local_447: f32;
     var local_448: f32;
     var local_449: f32;
-    var local_450: type_19;
+    var local_450: type_20;
     var local_451: u32;
     var local_452: u32;
     var local_453: bool;
@@ -600,7 +600,7 @@ fn function_() {
     var local_472: u32;
     var local_473: f32;
     var local_474: u32;
-    var local_475: type_18;
+    var local_475: type_19;
     var local_476: array<f32, 3>;
     var local_477: f32;
     var local_478: f32;
@@ -757,7 +757,7 @@ fn function_() {
     var local_629: u32;
     var local_630: f32;
     var local_631: u32;
-    var local_632: type_18;
+    var local_632: type_19;
     var local_633: array<f32, 3>;
     var local_634: f32;
     var local_635: f32;
@@ -808,7 +808,7 @@ fn function_() {
     var local_680: bool;
     var local_681: u32;
     var local_682: bool;
-    var local_683: type_19;
+    var local_683: type_20;
     var local_684: u32;
     var local_685: u32;
     var local_686: bool;
@@ -824,7 +824,7 @@ fn function_() {
     var local_696: u32;
     var local_697: f32;
     var local_698: u32;
-    var local_699: type_18;
+    var local_699: type_19;
     var local_700: array<f32, 3>;
     var local_701: f32;
     var local_702: f32;
@@ -891,7 +891,7 @@ fn function_() {
     var local_763: u32;
     var local_764: f32;
     var local_765: u32;
-    var local_766: type_18;
+    var local_766: type_19;
     var local_767: array<f32, 3>;
     var local_768: f32;
     var local_769: f32;
@@ -981,7 +981,7 @@ fn function_() {
     var local_853: u32;
     var local_854: f32;
     var local_855: u32;
-    var local_856: type_19;
+    var local_856: type_20;
     var local_857: u32;
     var local_858: u32;
     var local_859: u32;
@@ -1074,7 +1074,7 @@ fn function_() {
     var local_946: f32;
     var local_947: u32;
     var local_948: bool;
-    var local_949: type_19;
+    var local_949: type_20;
     var local_950: bool;
     var local_951: u32;
     var local_952: u32;
@@ -1184,7 +1184,7 @@ fn function_() {
     var local_1056: u32;
     var local_1057: f32;
     var local_1058: u32;
-    var local_1059: type_18;
+    var local_1059: type_19;
     var local_1060: array<f32, 3>;
     var local_1061: f32;
     var local_1062: f32;
@@ -1234,7 +1234,7 @@ fn function_() {
     var local_1106: bool;
     var local_1107: u32;
     var local_1108: bool;
-    var local_1109: type_19;
+    var local_1109: type_20;
     var local_1110: u32;
     var local_1111: u32;
     var local_1112: bool;
@@ -1250,7 +1250,7 @@ fn function_() {
     var local_1122: u32;
     var local_1123: f32;
     var local_1124: u32;
-    var local_1125: type_18;
+    var local_1125: type_19;
     var local_1126: array<f32, 3>;
     var local_1127: f32;
     var local_1128: f32;
@@ -1316,7 +1316,7 @@ fn function_() {
     var local_1188: u32;
     var local_1189: f32;
     var local_1190: u32;
-    var local_1191: type_18;
+    var local_1191: type_19;
     var local_1192: array<f32, 3>;
     var local_1193: f32;
     var local_1194: f32;
@@ -1545,7 +1545,7 @@ fn function_() {
     var local_1417: u32;
     var local_1418: f32;
     var local_1419: u32;
-    var local_1420: type_18;
+    var local_1420: type_19;
     var local_1421: array<f32, 3>;
     var local_1422: f32;
     var local_1423: f32;
@@ -1595,7 +1595,7 @@ fn function_() {
     var local_1467: bool;
     var local_1468: u32;
     var local_1469: bool;
-    var local_1470: type_19;
+    var local_1470: type_20;
     var local_1471: u32;
     var local_1472: u32;
     var local_1473: bool;
@@ -1611,7 +1611,7 @@ fn function_() {
     var local_1483: u32;
     var local_1484: f32;
     var local_1485: u32;
-    var local_1486: type_18;
+    var local_1486: type_19;
     var local_1487: array<f32, 3>;
     var local_1488: f32;
     var local_1489: f32;
@@ -1677,7 +1677,7 @@ fn function_() {
     var local_1549: u32;
     var local_1550: f32;
     var local_1551: u32;
-    var local_1552: type_18;
+    var local_1552: type_19;
     var local_1553: array<f32, 3>;
     var local_1554: f32;
     var local_1555: f32;
@@ -1936,13 +1936,13 @@ fn function_() {
     var phi_27196_: bool;
     var phi_337_: u32;
     var phi_27195_: bool;
-    var phi_7550_: type_19;
+    var phi_7550_: type_20;
     var phi_7553_: u32;
     var phi_7555_: u32;
     var phi_27216_: u32;
     var phi_27194_: bool;
     var phi_7797_: u32;
-    var phi_8079_: type_18;
+    var phi_8079_: type_19;
     var phi_8113_: bool;
     var phi_8114_: bool;
     var phi_8116_: bool;
@@ -2174,9 +2174,9 @@ fn function_() {
     var phi_10720_: bool;
     var phi_10721_: bool;
     var phi_27525_: bool;
-    var phi_10733_: type_19;
+    var phi_10733_: type_20;
     var phi_10736_: u32;
-    var phi_10890_: type_18;
+    var phi_10890_: type_19;
     var phi_10924_: bool;
     var phi_10925_: bool;
     var phi_10927_: bool;
@@ -2248,8 +2248,8 @@ fn function_() {
     var phi_27645_: bool;
     var phi_11816_: bool;
     var phi_27643_: bool;
-    var phi_11834_: type_19;
-    var phi_12010_: type_18;
+    var phi_11834_: type_20;
+    var phi_12010_: type_19;
     var phi_12044_: bool;
     var phi_12045_: bool;
     var phi_12047_: bool;
@@ -2321,26 +2321,26 @@ fn function_() {
     var phi_27665_: bool;
     var phi_12936_: bool;
     var phi_27663_: bool;
-    var phi_12956_: type_19;
+    var phi_12956_: type_20;
     var phi_27662_: bool;
-    var phi_12958_: type_19;
+    var phi_12958_: type_20;
     var phi_12959_: bool;
     var phi_27661_: bool;
-    var phi_11835_: type_19;
+    var phi_11835_: type_20;
     var phi_12961_: bool;
     var phi_27660_: bool;
     var phi_27669_: bool;
-    var phi_10734_: type_19;
+    var phi_10734_: type_20;
     var phi_10737_: u32;
     var phi_27668_: bool;
     var phi_27767_: bool;
-    var phi_12967_: type_19;
+    var phi_12967_: type_20;
     var phi_12968_: type_26;
     var phi_27766_: bool;
-    var phi_12970_: type_19;
+    var phi_12970_: type_20;
     var phi_12971_: type_26;
     var phi_12972_: bool;
-    var phi_13122_: type_18;
+    var phi_13122_: type_19;
     var phi_13156_: bool;
     var phi_13157_: bool;
     var phi_13159_: bool;
@@ -2412,7 +2412,7 @@ fn function_() {
     var phi_27807_: bool;
     var phi_14048_: bool;
     var phi_27805_: bool;
-    var phi_14086_: type_19;
+    var phi_14086_: type_20;
     var phi_14087_: type_26;
     var phi_14099_: bool;
     var phi_14113_: bool;
@@ -2447,10 +2447,10 @@ fn function_() {
     var phi_14380_: array<f32, 3>;
     var phi_14391_: f32;
     var phi_27815_: bool;
-    var phi_14423_: type_19;
+    var phi_14423_: type_20;
     var phi_14424_: u32;
     var phi_27814_: bool;
-    var phi_7551_: type_19;
+    var phi_7551_: type_20;
     var phi_7554_: u32;
     var phi_7556_: u32;
     var phi_27813_: bool;
@@ -2458,7 +2458,7 @@ fn function_() {
     var phi_14427_: u32;
     var phi_14430_: f32;
     var phi_14432_: u32;
-    var phi_14434_: type_19;
+    var phi_14434_: type_20;
     var phi_14436_: u32;
     var phi_14441_: u32;
     var phi_14444_: u32;
@@ -2611,11 +2611,11 @@ fn function_() {
     var phi_15749_: bool;
     var phi_15750_: bool;
     var phi_27938_: bool;
-    var phi_15762_: type_19;
+    var phi_15762_: type_20;
     var phi_15765_: u32;
     var phi_15767_: u32;
     var phi_27937_: bool;
-    var phi_15776_: type_19;
+    var phi_15776_: type_20;
     var phi_15779_: bool;
     var phi_15780_: u32;
     var phi_15809_: bool;
@@ -2771,9 +2771,9 @@ fn function_() {
     var phi_17061_: bool;
     var phi_17062_: bool;
     var phi_28130_: bool;
-    var phi_17074_: type_19;
+    var phi_17074_: type_20;
     var phi_17077_: u32;
-    var phi_17231_: type_18;
+    var phi_17231_: type_19;
     var phi_17265_: bool;
     var phi_17266_: bool;
     var phi_17268_: bool;
@@ -2845,8 +2845,8 @@ fn function_() {
     var phi_28250_: bool;
     var phi_18157_: bool;
     var phi_28248_: bool;
-    var phi_18175_: type_19;
-    var phi_18351_: type_18;
+    var phi_18175_: type_20;
+    var phi_18351_: type_19;
     var phi_18385_: bool;
     var phi_18386_: bool;
     var phi_18388_: bool;
@@ -2918,26 +2918,26 @@ fn function_() {
     var phi_28270_: bool;
     var phi_19277_: bool;
     var phi_28268_: bool;
-    var phi_19297_: type_19;
+    var phi_19297_: type_20;
     var phi_28267_: bool;
-    var phi_19299_: type_19;
+    var phi_19299_: type_20;
     var phi_19300_: bool;
     var phi_28266_: bool;
-    var phi_18176_: type_19;
+    var phi_18176_: type_20;
     var phi_19302_: bool;
     var phi_28265_: bool;
     var phi_28274_: bool;
-    var phi_17075_: type_19;
+    var phi_17075_: type_20;
     var phi_17078_: u32;
     var phi_28273_: bool;
     var phi_28372_: bool;
-    var phi_19308_: type_19;
+    var phi_19308_: type_20;
     var phi_19309_: type_26;
     var phi_28371_: bool;
-    var phi_19311_: type_19;
+    var phi_19311_: type_20;
     var phi_19312_: type_26;
     var phi_19313_: bool;
-    var phi_19463_: type_18;
+    var phi_19463_: type_19;
     var phi_19497_: bool;
     var phi_19498_: bool;
     var phi_19500_: bool;
@@ -3009,7 +3009,7 @@ fn function_() {
     var phi_28412_: bool;
     var phi_20389_: bool;
     var phi_28410_: bool;
-    var phi_20427_: type_19;
+    var phi_20427_: type_20;
     var phi_20428_: type_26;
     var phi_20440_: bool;
     var phi_20454_: bool;
@@ -3044,18 +3044,18 @@ fn function_() {
     var phi_20721_: array<f32, 3>;
     var phi_20732_: f32;
     var phi_28421_: bool;
-    var phi_20755_: type_19;
+    var phi_20755_: type_20;
     var phi_20756_: u32;
     var phi_28420_: bool;
-    var phi_20757_: type_19;
+    var phi_20757_: type_20;
     var phi_20758_: u32;
     var phi_28419_: bool;
-    var phi_15777_: type_19;
+    var phi_15777_: type_20;
     var phi_15781_: u32;
     var phi_20759_: bool;
     var phi_28418_: bool;
     var phi_28428_: bool;
-    var phi_15763_: type_19;
+    var phi_15763_: type_20;
     var phi_15766_: u32;
     var phi_15768_: u32;
     var phi_28427_: bool;
@@ -3063,13 +3063,13 @@ fn function_() {
     var phi_20764_: u32;
     var phi_20765_: f32;
     var phi_20766_: u32;
-    var phi_20767_: type_19;
+    var phi_20767_: type_20;
     var phi_20768_: u32;
     var phi_28454_: bool;
     var phi_20770_: u32;
     var phi_20771_: f32;
     var phi_20772_: u32;
-    var phi_20773_: type_19;
+    var phi_20773_: type_20;
     var phi_20774_: u32;
     var phi_20775_: bool;
     var phi_20802_: bool;
@@ -3261,9 +3261,9 @@ fn function_() {
     var phi_22562_: bool;
     var phi_22563_: bool;
     var phi_28666_: bool;
-    var phi_22575_: type_19;
+    var phi_22575_: type_20;
     var phi_22578_: u32;
-    var phi_22732_: type_18;
+    var phi_22732_: type_19;
     var phi_22766_: bool;
     var phi_22767_: bool;
     var phi_22769_: bool;
@@ -3335,8 +3335,8 @@ fn function_() {
     var phi_28786_: bool;
     var phi_23658_: bool;
     var phi_28784_: bool;
-    var phi_23676_: type_19;
-    var phi_23852_: type_18;
+    var phi_23676_: type_20;
+    var phi_23852_: type_19;
     var phi_23886_: bool;
     var phi_23887_: bool;
     var phi_23889_: bool;
@@ -3408,26 +3408,26 @@ fn function_() {
     var phi_28806_: bool;
     var phi_24778_: bool;
     var phi_28804_: bool;
-    var phi_24798_: type_19;
+    var phi_24798_: type_20;
     var phi_28803_: bool;
-    var phi_24800_: type_19;
+    var phi_24800_: type_20;
     var phi_24801_: bool;
     var phi_28802_: bool;
-    var phi_23677_: type_19;
+    var phi_23677_: type_20;
     var phi_24803_: bool;
     var phi_28801_: bool;
     var phi_28810_: bool;
-    var phi_22576_: type_19;
+    var phi_22576_: type_20;
     var phi_22579_: u32;
     var phi_28809_: bool;
     var phi_28908_: bool;
-    var phi_24809_: type_19;
+    var phi_24809_: type_20;
     var phi_24810_: type_26;
     var phi_28907_: bool;
-    var phi_24812_: type_19;
+    var phi_24812_: type_20;
     var phi_24813_: type_26;
     var phi_24814_: bool;
-    var phi_24964_: type_18;
+    var phi_24964_: type_19;
     var phi_24998_: bool;
     var phi_24999_: bool;
     var phi_25001_: bool;
@@ -3499,7 +3499,7 @@ fn function_() {
     var phi_28948_: bool;
     var phi_25890_: bool;
     var phi_28946_: bool;
-    var phi_25928_: type_19;
+    var phi_25928_: type_20;
     var phi_25929_: type_26;
     var phi_25941_: bool;
     var phi_25955_: bool;
@@ -3534,25 +3534,25 @@ fn function_() {
     var phi_26222_: array<f32, 3>;
     var phi_26233_: f32;
     var phi_28957_: bool;
-    var phi_26256_: type_19;
+    var phi_26256_: type_20;
     var phi_26257_: u32;
     var phi_28956_: bool;
     var phi_26258_: u32;
     var phi_26259_: f32;
     var phi_26260_: u32;
-    var phi_26261_: type_19;
+    var phi_26261_: type_20;
     var phi_26262_: u32;
     var phi_28955_: bool;
     var phi_14428_: u32;
     var phi_14431_: f32;
     var phi_14433_: u32;
-    var phi_14435_: type_19;
+    var phi_14435_: type_20;
     var phi_14437_: u32;
     var phi_28954_: bool;
     var phi_29081_: u32;
     var phi_29061_: bool;
     var phi_670_: u32;
-    var phi_952_: type_18;
+    var phi_952_: type_19;
     var phi_986_: bool;
     var phi_987_: bool;
     var phi_989_: bool;
@@ -3638,7 +3638,7 @@ fn function_() {
     var phi_2350_: u32;
     var phi_2353_: f32;
     var phi_2355_: u32;
-    var phi_2357_: type_19;
+    var phi_2357_: type_20;
     var phi_29228_: bool;
     var phi_2434_: u32;
     var phi_2437_: u32;
@@ -3791,9 +3791,9 @@ fn function_() {
     var phi_3588_: bool;
     var phi_29420_: u32;
     var phi_29393_: bool;
-    var phi_3600_: type_19;
+    var phi_3600_: type_20;
     var phi_3603_: u32;
-    var phi_3757_: type_18;
+    var phi_3757_: type_19;
     var phi_3791_: bool;
     var phi_3792_: bool;
     var phi_3794_: bool;
@@ -3867,8 +3867,8 @@ fn function_() {
     var phi_29629_: u32;
     var phi_29726_: bool;
     var phi_29628_: u32;
-    var phi_4701_: type_19;
-    var phi_4877_: type_18;
+    var phi_4701_: type_20;
+    var phi_4877_: type_19;
     var phi_4911_: bool;
     var phi_4912_: bool;
     var phi_4914_: bool;
@@ -3942,33 +3942,33 @@ fn function_() {
     var phi_29986_: u32;
     var phi_29985_: u32;
     var phi_29857_: bool;
-    var phi_5823_: type_19;
+    var phi_5823_: type_20;
     var phi_29984_: u32;
     var phi_29856_: bool;
-    var phi_5825_: type_19;
+    var phi_5825_: type_20;
     var phi_5826_: bool;
     var phi_29983_: u32;
     var phi_29855_: bool;
-    var phi_4702_: type_19;
+    var phi_4702_: type_20;
     var phi_5828_: bool;
     var phi_29982_: u32;
     var phi_29854_: bool;
     var phi_29987_: u32;
     var phi_29863_: bool;
-    var phi_3601_: type_19;
+    var phi_3601_: type_20;
     var phi_3604_: u32;
     var phi_29981_: u32;
     var phi_29862_: bool;
     var phi_29980_: u32;
     var phi_29961_: bool;
-    var phi_5834_: type_19;
+    var phi_5834_: type_20;
     var phi_5835_: type_26;
     var phi_29979_: u32;
     var phi_29960_: bool;
-    var phi_5837_: type_19;
+    var phi_5837_: type_20;
     var phi_5838_: type_26;
     var phi_5839_: bool;
-    var phi_5989_: type_18;
+    var phi_5989_: type_19;
     var phi_6023_: bool;
     var phi_6024_: bool;
     var phi_6026_: bool;
@@ -4042,7 +4042,7 @@ fn function_() {
     var phi_30192_: u32;
     var phi_30191_: u32;
     var phi_30119_: bool;
-    var phi_6953_: type_19;
+    var phi_6953_: type_20;
     var phi_6954_: type_26;
     var phi_6967_: bool;
     var phi_6981_: bool;
@@ -4087,39 +4087,39 @@ fn function_() {
     var phi_2351_: u32;
     var phi_2354_: f32;
     var phi_2356_: u32;
-    var phi_2358_: type_19;
+    var phi_2358_: type_20;
     var phi_30127_: bool;
     var phi_30153_: bool;
     var phi_26267_: u32;
     var phi_26268_: f32;
     var phi_26269_: u32;
-    var phi_26270_: type_19;
+    var phi_26270_: type_20;
     var phi_30149_: bool;
     var phi_30148_: bool;
     var phi_338_: u32;
     var phi_30147_: bool;
-    var local_1808: type_19;
-    var local_1809: type_19;
-    var local_1810: type_19;
+    var local_1808: type_20;
+    var local_1809: type_20;
+    var local_1810: type_20;
     var local_1811: u32;
-    var local_1812: type_19;
-    var local_1813: type_19;
-    var local_1814: type_19;
+    var local_1812: type_20;
+    var local_1813: type_20;
+    var local_1814: type_20;
     var local_1815: u32;
-    var local_1816: type_19;
+    var local_1816: type_20;
     var local_1817: u32;
-    var local_1818: type_19;
-    var local_1819: type_19;
-    var local_1820: type_19;
-    var local_1821: type_19;
+    var local_1818: type_20;
+    var local_1819: type_20;
+    var local_1820: type_20;
+    var local_1821: type_20;
     var local_1822: u32;
     var local_1823: u32;
     var local_1824: f32;
     var local_1825: f32;
     var local_1826: u32;
     var local_1827: u32;
-    var local_1828: type_19;
-    var local_1829: type_19;
+    var local_1828: type_20;
+    var local_1829: type_20;
 
     let _e1901 = global_9;
     let _e1902 = bitcast<f32>(_e1901);
@@ -4131,7 +4131,7 @@ fn function_() {
     let _e1906 = array<type_32, 4>(_e1905, _e1905, _e1905, _e1905);
     local_1767 = _e1906;
     local_1768 = type_34(_e1906, 0u, 0u, 0u);
-    let _e1908 = type_18(array<f32, 3>(0f, 0f, 0f), _e1904, 1f);
+    let _e1908 = type_19(array<f32, 3>(0f, 0f, 0f), _e1904, 1f);
     switch bitcast<i32>(0u) {
         default: {
             let _e1910 = global;
@@ -4476,7 +4476,7 @@ fn function_() {
                                                             let _e19119 = global_6.member[_e19116];
                                                             let _e19121 = local_57;
                                                             let _e19122 = local_59;
-                                                            phi_952_ = type_18(_e19121, _e19122, bitcast<f32>(_e19119));
+                                                            phi_952_ = type_19(_e19121, _e19122, bitcast<f32>(_e19119));
                                                         }
                                                         let _e19125 = phi_952_;
                                                         local_61 = _e19125;
@@ -5378,7 +5378,7 @@ fn function_() {
                             phi_2350_ = 0u;
                             phi_2353_ = 0f;
                             phi_2355_ = 0u;
-                            phi_2357_ = type_19(0u, 0u);
+                            phi_2357_ = type_20(0u, 0u);
                             loop {
                                 let _e19985 = phi_29229_;
                                 let _e19987 = phi_29201_;
@@ -5404,7 +5404,7 @@ fn function_() {
                                     phi_2351_ = u32();
                                     phi_2354_ = f32();
                                     phi_2356_ = u32();
-                                    phi_2358_ = type_19();
+                                    phi_2358_ = type_20();
                                 } else {
                                     local_1805[0u] = type_26(array<u32, 2>(1u, 1u), array<f32, 3>(0f, 0f, 0f), 1f, 0f, 0u, 0u);
                                     local_1805[1u] = type_26(array<u32, 2>(1u, 1u), array<f32, 3>(0f, 0f, 0f), 1f, 0f, 0u, 0u);
@@ -6732,7 +6732,7 @@ fn function_() {
                                             local_204 = (_e21034 + select(_e21025, select(_e21023, _e21030, _e21027), select(_e21029, true, _e21027)));
                                             phi_29420_ = _e19987;
                                             phi_29393_ = _e20924;
-                                            phi_3600_ = type_19((_e20948.member + 1u), _e20951.member_1);
+                                            phi_3600_ = type_20((_e20948.member + 1u), _e20951.member_1);
                                             phi_3603_ = 0u;
                                             loop {
                                                 let _e21037 = phi_29420_;
@@ -6863,7 +6863,7 @@ fn function_() {
                                                                     let _e21138 = global_6.member[_e21135];
                                                                     let _e21140 = local_217;
                                                                     let _e21141 = local_219;
-                                                                    phi_3757_ = type_18(_e21140, _e21141, bitcast<f32>(_e21138));
+                                                                    phi_3757_ = type_19(_e21140, _e21141, bitcast<f32>(_e21138));
                                                                 }
                                                                 let _e21144 = phi_3757_;
                                                                 local_221 = _e21144;
@@ -7857,7 +7857,7 @@ fn function_() {
                                                                                     let _e22087 = global_6.member[_e22084];
                                                                                     let _e22089 = local_284;
                                                                                     let _e22090 = local_286;
-                                                                                    phi_4877_ = type_18(_e22089, _e22090, bitcast<f32>(_e22087));
+                                                                                    phi_4877_ = type_19(_e22089, _e22090, bitcast<f32>(_e22087));
                                                                                 }
                                                                                 let _e22093 = phi_4877_;
                                                                                 local_288 = _e22093;
@@ -8706,11 +8706,11 @@ fn function_() {
                                                                     let _e22916 = local_272;
                                                                     phi_29985_ = _e22912;
                                                                     phi_29857_ = _e22901;
-                                                                    phi_5823_ = type_19(_e22916.member, (_e22913.member_1 + 1u));
+                                                                    phi_5823_ = type_20(_e22916.member, (_e22913.member_1 + 1u));
                                                                 } else {
                                                                     phi_29985_ = _e21979;
                                                                     phi_29857_ = _e21977;
-                                                                    phi_5823_ = type_19();
+                                                                    phi_5823_ = type_20();
                                                                 }
                                                                 let _e22921 = phi_29985_;
                                                                 let _e22923 = phi_29857_;
@@ -8722,7 +8722,7 @@ fn function_() {
                                                             } else {
                                                                 phi_29984_ = _e21979;
                                                                 phi_29856_ = _e21977;
-                                                                phi_5825_ = type_19();
+                                                                phi_5825_ = type_20();
                                                                 phi_5826_ = false;
                                                             }
                                                             let _e22927 = phi_29984_;
@@ -8736,7 +8736,7 @@ fn function_() {
                                                         } else {
                                                             phi_29983_ = _e21979;
                                                             phi_29855_ = _e21977;
-                                                            phi_4702_ = type_19();
+                                                            phi_4702_ = type_20();
                                                             phi_5828_ = false;
                                                         }
                                                         let _e22935 = phi_29983_;
@@ -8771,7 +8771,7 @@ fn function_() {
                                                 } else {
                                                     phi_29987_ = _e21037;
                                                     phi_29863_ = _e21039;
-                                                    phi_3601_ = type_19();
+                                                    phi_3601_ = type_20();
                                                     phi_3604_ = u32();
                                                 }
                                                 let _e22951 = phi_29987_;
@@ -8804,7 +8804,7 @@ fn function_() {
                                         } else {
                                             phi_29980_ = _e19987;
                                             phi_29961_ = _e20732;
-                                            phi_5834_ = type_19();
+                                            phi_5834_ = type_20();
                                             phi_5835_ = type_26();
                                         }
                                         let _e22965 = phi_29980_;
@@ -8820,7 +8820,7 @@ fn function_() {
                                     } else {
                                         phi_29979_ = _e19987;
                                         phi_29960_ = _e20382;
-                                        phi_5837_ = type_19();
+                                        phi_5837_ = type_20();
                                         phi_5838_ = type_26();
                                         phi_5839_ = true;
                                     }
@@ -8947,7 +8947,7 @@ fn function_() {
                                                         let _e23077 = global_6.member[_e23074];
                                                         let _e23079 = local_351;
                                                         let _e23080 = local_353;
-                                                        phi_5989_ = type_18(_e23079, _e23080, bitcast<f32>(_e23077));
+                                                        phi_5989_ = type_19(_e23079, _e23080, bitcast<f32>(_e23077));
                                                     }
                                                     let _e23083 = phi_5989_;
                                                     local_355 = _e23083;
@@ -10338,7 +10338,7 @@ fn function_() {
                             local_1807[2u] = type_26(array<u32, 2>(1u, 1u), array<f32, 3>(0f, 0f, 0f), 1f, 0f, 0u, 0u);
                             local_1807[3u] = type_26(array<u32, 2>(1u, 1u), array<f32, 3>(0f, 0f, 0f), 1f, 0f, 0u, 0u);
                             phi_27195_ = _e1972;
-                            phi_7550_ = type_19(0u, 0u);
+                            phi_7550_ = type_20(0u, 0u);
                             phi_7553_ = 0u;
                             phi_7555_ = 0u;
                             loop {
@@ -10537,7 +10537,7 @@ fn function_() {
                                                                     let _e2213 = global_6.member[_e2210];
                                                                     let _e2215 = local_471;
                                                                     let _e2216 = local_473;
-                                                                    phi_8079_ = type_18(_e2215, _e2216, bitcast<f32>(_e2213));
+                                                                    phi_8079_ = type_19(_e2215, _e2216, bitcast<f32>(_e2213));
                                                                 }
                                                                 let _e2219 = phi_8079_;
                                                                 local_475 = _e2219;
@@ -12804,7 +12804,7 @@ fn function_() {
                                                 let _e4158 = local_609;
                                                 local_615 = (_e4158 + select(_e4149, select(_e4147, _e4154, _e4151), select(_e4153, true, _e4151)));
                                                 phi_27525_ = _e4048;
-                                                phi_10733_ = type_19((_e4072.member + 1u), _e4075.member_1);
+                                                phi_10733_ = type_20((_e4072.member + 1u), _e4075.member_1);
                                                 phi_10736_ = 0u;
                                                 loop {
                                                     let _e4161 = phi_27525_;
@@ -12935,7 +12935,7 @@ fn function_() {
                                                                         let _e4281 = global_6.member[_e4278];
                                                                         let _e4283 = local_628;
                                                                         let _e4284 = local_630;
-                                                                        phi_10890_ = type_18(_e4283, _e4284, bitcast<f32>(_e4281));
+                                                                        phi_10890_ = type_19(_e4283, _e4284, bitcast<f32>(_e4281));
                                                                     }
                                                                     let _e4287 = phi_10890_;
                                                                     local_632 = _e4287;
@@ -13978,7 +13978,7 @@ fn function_() {
                                                                                         let _e5397 = global_6.member[_e5394];
                                                                                         let _e5399 = local_695;
                                                                                         let _e5400 = local_697;
-                                                                                        phi_12010_ = type_18(_e5399, _e5400, bitcast<f32>(_e5397));
+                                                                                        phi_12010_ = type_19(_e5399, _e5400, bitcast<f32>(_e5397));
                                                                                     }
                                                                                     let _e5403 = phi_12010_;
                                                                                     local_699 = _e5403;
@@ -14873,10 +14873,10 @@ fn function_() {
                                                                         let _e6365 = local_683;
                                                                         let _e6368 = local_683;
                                                                         phi_27663_ = _e6355;
-                                                                        phi_12956_ = type_19(_e6368.member, (_e6365.member_1 + 1u));
+                                                                        phi_12956_ = type_20(_e6368.member, (_e6365.member_1 + 1u));
                                                                     } else {
                                                                         phi_27663_ = _e5268;
-                                                                        phi_12956_ = type_19();
+                                                                        phi_12956_ = type_20();
                                                                     }
                                                                     let _e6373 = phi_27663_;
                                                                     let _e6375 = phi_12956_;
@@ -14885,7 +14885,7 @@ fn function_() {
                                                                     phi_12959_ = _e5295;
                                                                 } else {
                                                                     phi_27662_ = _e5268;
-                                                                    phi_12958_ = type_19();
+                                                                    phi_12958_ = type_20();
                                                                     phi_12959_ = false;
                                                                 }
                                                                 let _e6377 = phi_27662_;
@@ -14896,7 +14896,7 @@ fn function_() {
                                                                 phi_12961_ = _e6381;
                                                             } else {
                                                                 phi_27661_ = _e5268;
-                                                                phi_11835_ = type_19();
+                                                                phi_11835_ = type_20();
                                                                 phi_12961_ = false;
                                                             }
                                                             let _e6383 = phi_27661_;
@@ -14924,7 +14924,7 @@ fn function_() {
                                                         phi_10737_ = (_e6392 + 1u);
                                                     } else {
                                                         phi_27669_ = _e4161;
-                                                        phi_10734_ = type_19();
+                                                        phi_10734_ = type_20();
                                                         phi_10737_ = u32();
                                                     }
                                                     let _e6395 = phi_27669_;
@@ -14951,7 +14951,7 @@ fn function_() {
                                                 phi_12968_ = type_26(array<u32, 2>(((_e4062 * 4u) + 2u), ((_e4065 * 4u) + 2u)), _e4069, _e4070, _e4057, (_e4060 + 1u), 0u);
                                             } else {
                                                 phi_27767_ = _e3848;
-                                                phi_12967_ = type_19();
+                                                phi_12967_ = type_20();
                                                 phi_12968_ = type_26();
                                             }
                                             let _e6405 = phi_27767_;
@@ -14964,7 +14964,7 @@ fn function_() {
                                             phi_12972_ = select(true, false, _e6410);
                                         } else {
                                             phi_27766_ = _e3498;
-                                            phi_12970_ = type_19();
+                                            phi_12970_ = type_20();
                                             phi_12971_ = type_26();
                                             phi_12972_ = true;
                                         }
@@ -15094,7 +15094,7 @@ fn function_() {
                                                             let _e6534 = global_6.member[_e6531];
                                                             let _e6536 = local_762;
                                                             let _e6537 = local_764;
-                                                            phi_13122_ = type_18(_e6536, _e6537, bitcast<f32>(_e6534));
+                                                            phi_13122_ = type_19(_e6536, _e6537, bitcast<f32>(_e6534));
                                                         }
                                                         let _e6540 = phi_13122_;
                                                         local_766 = _e6540;
@@ -16354,7 +16354,7 @@ fn function_() {
                                     phi_7556_ = _e7858;
                                 } else {
                                     phi_27814_ = _e2051;
-                                    phi_7551_ = type_19();
+                                    phi_7551_ = type_20();
                                     phi_7554_ = u32();
                                     phi_7556_ = u32();
                                 }
@@ -16490,7 +16490,7 @@ fn function_() {
                                     phi_14428_ = u32();
                                     phi_14431_ = f32();
                                     phi_14433_ = u32();
-                                    phi_14435_ = type_19();
+                                    phi_14435_ = type_20();
                                     phi_14437_ = u32();
                                 } else {
                                     let _e7940 = local_860;
@@ -17772,7 +17772,7 @@ fn function_() {
                                             let _e8924 = local_906;
                                             local_946 = (_e8924 + select(_e8915, select(_e8913, _e8920, _e8917), select(_e8919, true, _e8917)));
                                             phi_27938_ = _e8678;
-                                            phi_15762_ = type_19((_e8839.member + 1u), _e8842.member_1);
+                                            phi_15762_ = type_20((_e8839.member + 1u), _e8842.member_1);
                                             phi_15765_ = 0u;
                                             phi_15767_ = _e7884;
                                             loop {
@@ -17807,7 +17807,7 @@ fn function_() {
                                                         let _e8948 = local_951;
                                                         if ((_e8948 & _e8947) == 0u) {
                                                             phi_28419_ = _e8937;
-                                                            phi_15777_ = type_19();
+                                                            phi_15777_ = type_20();
                                                             phi_15781_ = u32();
                                                             phi_20759_ = false;
                                                         } else {
@@ -17840,7 +17840,7 @@ fn function_() {
                                                                 let _e8969 = (_e8967.member_1 + select(0u, 1u, !(_e8964)));
                                                                 local_953 = _e8969;
                                                                 let _e8970 = local_949;
-                                                                let _e8973 = type_19(_e8970.member, _e8969);
+                                                                let _e8973 = type_20(_e8970.member, _e8969);
                                                                 let _e8974 = local_948;
                                                                 if _e8974 {
                                                                 } else {
@@ -19189,7 +19189,7 @@ fn function_() {
                                                                             let _e10022 = local_1037;
                                                                             local_1042 = (_e10022 + select(_e10013, select(_e10011, _e10018, _e10015), select(_e10017, true, _e10015)));
                                                                             phi_28130_ = _e9924;
-                                                                            phi_17074_ = type_19((_e9948.member + 1u), _e9951);
+                                                                            phi_17074_ = type_20((_e9948.member + 1u), _e9951);
                                                                             phi_17077_ = 0u;
                                                                             loop {
                                                                                 let _e10025 = phi_28130_;
@@ -19320,7 +19320,7 @@ fn function_() {
                                                                                                     let _e10145 = global_6.member[_e10142];
                                                                                                     let _e10147 = local_1055;
                                                                                                     let _e10148 = local_1057;
-                                                                                                    phi_17231_ = type_18(_e10147, _e10148, bitcast<f32>(_e10145));
+                                                                                                    phi_17231_ = type_19(_e10147, _e10148, bitcast<f32>(_e10145));
                                                                                                 }
                                                                                                 let _e10151 = phi_17231_;
                                                                                                 local_1059 = _e10151;
@@ -20361,7 +20361,7 @@ fn function_() {
                                                                                                                     let _e11258 = global_6.member[_e11255];
                                                                                                                     let _e11260 = local_1121;
                                                                                                                     let _e11261 = local_1123;
-                                                                                                                    phi_18351_ = type_18(_e11260, _e11261, bitcast<f32>(_e11258));
+                                                                                                                    phi_18351_ = type_19(_e11260, _e11261, bitcast<f32>(_e11258));
                                                                                                                 }
                                                                                                                 let _e11264 = phi_18351_;
                                                                                                                 local_1125 = _e11264;
@@ -21254,10 +21254,10 @@ fn function_() {
                                                                                                     let _e12223 = local_1109;
                                                                                                     let _e12226 = local_1109;
                                                                                                     phi_28268_ = _e12213;
-                                                                                                    phi_19297_ = type_19(_e12226.member, (_e12223.member_1 + 1u));
+                                                                                                    phi_19297_ = type_20(_e12226.member, (_e12223.member_1 + 1u));
                                                                                                 } else {
                                                                                                     phi_28268_ = _e11129;
-                                                                                                    phi_19297_ = type_19();
+                                                                                                    phi_19297_ = type_20();
                                                                                                 }
                                                                                                 let _e12231 = phi_28268_;
                                                                                                 let _e12233 = phi_19297_;
@@ -21266,7 +21266,7 @@ fn function_() {
                                                                                                 phi_19300_ = _e11156;
                                                                                             } else {
                                                                                                 phi_28267_ = _e11129;
-                                                                                                phi_19299_ = type_19();
+                                                                                                phi_19299_ = type_20();
                                                                                                 phi_19300_ = false;
                                                                                             }
                                                                                             let _e12235 = phi_28267_;
@@ -21277,7 +21277,7 @@ fn function_() {
                                                                                             phi_19302_ = _e12239;
                                                                                         } else {
                                                                                             phi_28266_ = _e11129;
-                                                                                            phi_18176_ = type_19();
+                                                                                            phi_18176_ = type_20();
                                                                                             phi_19302_ = false;
                                                                                         }
                                                                                         let _e12241 = phi_28266_;
@@ -21305,7 +21305,7 @@ fn function_() {
                                                                                     phi_17078_ = (_e12250 + 1u);
                                                                                 } else {
                                                                                     phi_28274_ = _e10025;
-                                                                                    phi_17075_ = type_19();
+                                                                                    phi_17075_ = type_20();
                                                                                     phi_17078_ = u32();
                                                                                 }
                                                                                 let _e12253 = phi_28274_;
@@ -21332,7 +21332,7 @@ fn function_() {
                                                                             phi_19309_ = type_26(array<u32, 2>(((_e9938 * 4u) + 2u), ((_e9941 * 4u) + 2u)), _e9945, _e9946, _e9933, (_e9936 + 1u), 0u);
                                                                         } else {
                                                                             phi_28372_ = _e9732;
-                                                                            phi_19308_ = type_19();
+                                                                            phi_19308_ = type_20();
                                                                             phi_19309_ = type_26();
                                                                         }
                                                                         let _e12263 = phi_28372_;
@@ -21345,7 +21345,7 @@ fn function_() {
                                                                         phi_19313_ = select(true, false, _e12268);
                                                                     } else {
                                                                         phi_28371_ = _e9388;
-                                                                        phi_19311_ = type_19();
+                                                                        phi_19311_ = type_20();
                                                                         phi_19312_ = type_26();
                                                                         phi_19313_ = true;
                                                                     }
@@ -21475,7 +21475,7 @@ fn function_() {
                                                                                         let _e12392 = global_6.member[_e12389];
                                                                                         let _e12394 = local_1187;
                                                                                         let _e12395 = local_1189;
-                                                                                        phi_19463_ = type_18(_e12394, _e12395, bitcast<f32>(_e12392));
+                                                                                        phi_19463_ = type_19(_e12394, _e12395, bitcast<f32>(_e12392));
                                                                                     }
                                                                                     let _e12398 = phi_19463_;
                                                                                     local_1191 = _e12398;
@@ -22708,7 +22708,7 @@ fn function_() {
                                                                 phi_20758_ = _e13698;
                                                             } else {
                                                                 phi_28420_ = _e8937;
-                                                                phi_20757_ = type_19();
+                                                                phi_20757_ = type_20();
                                                                 phi_20758_ = u32();
                                                             }
                                                             let _e13700 = phi_28420_;
@@ -22749,7 +22749,7 @@ fn function_() {
                                                     phi_15768_ = _e25590;
                                                 } else {
                                                     phi_28428_ = _e8927;
-                                                    phi_15763_ = type_19();
+                                                    phi_15763_ = type_20();
                                                     phi_15766_ = u32();
                                                     phi_15768_ = u32();
                                                 }
@@ -22786,7 +22786,7 @@ fn function_() {
                                             phi_20764_ = u32();
                                             phi_20765_ = f32();
                                             phi_20766_ = u32();
-                                            phi_20767_ = type_19();
+                                            phi_20767_ = type_20();
                                             phi_20768_ = u32();
                                         }
                                         let _e13732 = phi_28455_;
@@ -22808,7 +22808,7 @@ fn function_() {
                                         phi_20770_ = u32();
                                         phi_20771_ = f32();
                                         phi_20772_ = u32();
-                                        phi_20773_ = type_19();
+                                        phi_20773_ = type_20();
                                         phi_20774_ = u32();
                                         phi_20775_ = true;
                                     }
@@ -24659,7 +24659,7 @@ fn function_() {
                                                     let _e15263 = local_1397;
                                                     local_1403 = (_e15263 + select(_e15254, select(_e15252, _e15259, _e15256), select(_e15258, true, _e15256)));
                                                     phi_28666_ = _e15153;
-                                                    phi_22575_ = type_19((_e15177.member + 1u), _e15180.member_1);
+                                                    phi_22575_ = type_20((_e15177.member + 1u), _e15180.member_1);
                                                     phi_22578_ = 0u;
                                                     loop {
                                                         let _e15266 = phi_28666_;
@@ -24790,7 +24790,7 @@ fn function_() {
                                                                             let _e15386 = global_6.member[_e15383];
                                                                             let _e15388 = local_1416;
                                                                             let _e15389 = local_1418;
-                                                                            phi_22732_ = type_18(_e15388, _e15389, bitcast<f32>(_e15386));
+                                                                            phi_22732_ = type_19(_e15388, _e15389, bitcast<f32>(_e15386));
                                                                         }
                                                                         let _e15392 = phi_22732_;
                                                                         local_1420 = _e15392;
@@ -25831,7 +25831,7 @@ fn function_() {
                                                                                             let _e16499 = global_6.member[_e16496];
                                                                                             let _e16501 = local_1482;
                                                                                             let _e16502 = local_1484;
-                                                                                            phi_23852_ = type_18(_e16501, _e16502, bitcast<f32>(_e16499));
+                                                                                            phi_23852_ = type_19(_e16501, _e16502, bitcast<f32>(_e16499));
                                                                                         }
                                                                                         let _e16505 = phi_23852_;
                                                                                         local_1486 = _e16505;
@@ -26724,10 +26724,10 @@ fn function_() {
                                                                             let _e17464 = local_1470;
                                                                             let _e17467 = local_1470;
                                                                             phi_28804_ = _e17454;
-                                                                            phi_24798_ = type_19(_e17467.member, (_e17464.member_1 + 1u));
+                                                                            phi_24798_ = type_20(_e17467.member, (_e17464.member_1 + 1u));
                                                                         } else {
                                                                             phi_28804_ = _e16370;
-                                                                            phi_24798_ = type_19();
+                                                                            phi_24798_ = type_20();
                                                                         }
                                                                         let _e17472 = phi_28804_;
                                                                         let _e17474 = phi_24798_;
@@ -26736,7 +26736,7 @@ fn function_() {
                                                                         phi_24801_ = _e16397;
                                                                     } else {
                                                                         phi_28803_ = _e16370;
-                                                                        phi_24800_ = type_19();
+                                                                        phi_24800_ = type_20();
                                                                         phi_24801_ = false;
                                                                     }
                                                                     let _e17476 = phi_28803_;
@@ -26747,7 +26747,7 @@ fn function_() {
                                                                     phi_24803_ = _e17480;
                                                                 } else {
                                                                     phi_28802_ = _e16370;
-                                                                    phi_23677_ = type_19();
+                                                                    phi_23677_ = type_20();
                                                                     phi_24803_ = false;
                                                                 }
                                                                 let _e17482 = phi_28802_;
@@ -26775,7 +26775,7 @@ fn function_() {
                                                             phi_22579_ = (_e17491 + 1u);
                                                         } else {
                                                             phi_28810_ = _e15266;
-                                                            phi_22576_ = type_19();
+                                                            phi_22576_ = type_20();
                                                             phi_22579_ = u32();
                                                         }
                                                         let _e17494 = phi_28810_;
@@ -26802,7 +26802,7 @@ fn function_() {
                                                     phi_24810_ = type_26(array<u32, 2>(((_e15167 * 4u) + 2u), ((_e15170 * 4u) + 2u)), _e15174, _e15175, _e15162, (_e15165 + 1u), 0u);
                                                 } else {
                                                     phi_28908_ = _e14953;
-                                                    phi_24809_ = type_19();
+                                                    phi_24809_ = type_20();
                                                     phi_24810_ = type_26();
                                                 }
                                                 let _e17504 = phi_28908_;
@@ -26815,7 +26815,7 @@ fn function_() {
                                                 phi_24814_ = select(true, false, _e17509);
                                             } else {
                                                 phi_28907_ = _e14605;
-                                                phi_24812_ = type_19();
+                                                phi_24812_ = type_20();
                                                 phi_24813_ = type_26();
                                                 phi_24814_ = true;
                                             }
@@ -26945,7 +26945,7 @@ fn function_() {
                                                                 let _e17633 = global_6.member[_e17630];
                                                                 let _e17635 = local_1548;
                                                                 let _e17636 = local_1550;
-                                                                phi_24964_ = type_18(_e17635, _e17636, bitcast<f32>(_e17633));
+                                                                phi_24964_ = type_19(_e17635, _e17636, bitcast<f32>(_e17633));
                                                             }
                                                             let _e17639 = phi_24964_;
                                                             local_1552 = _e17639;

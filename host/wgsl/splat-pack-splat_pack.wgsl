@@ -14,13 +14,13 @@ struct type_17 {
     member_1: f32,
 }
 
-struct type_19 {
+struct type_20 {
     member: array<f32, 3>,
     member_1: f32,
     member_2: f32,
 }
 
-struct type_20 {
+struct type_21 {
     member: u32,
     member_1: f32,
     member_2: array<f32, 2>,
@@ -47,7 +47,7 @@ struct type_22 {
     member_13: f32,
     member_14: f32,
     member_15: type_5,
-    member_16: type_20,
+    member_16: type_21,
     member_17: u32,
     member_18: u32,
 }
@@ -175,7 +175,7 @@ fn function_() {
     var local_57: u32;
     var local_58: f32;
     var local_59: u32;
-    var local_60: type_19;
+    var local_60: type_20;
     var local_61: u32;
     var local_62: type_28;
     var local_63: array<f32, 3>;
@@ -316,7 +316,7 @@ fn function_() {
     var phi_405_: u32;
     var phi_407_: u32;
     var phi_433_: type_28;
-    var phi_544_: type_19;
+    var phi_544_: type_20;
     var phi_577_: bool;
     var phi_578_: bool;
     var phi_580_: bool;
@@ -686,7 +686,7 @@ fn function_() {
                                         local_50 = _e484.member_2;
                                         let _e486 = local_49;
                                         if (_e486 >= _e484.member_2) {
-                                            phi_544_ = type_19(array<f32, 3>(0f, 0f, 0f), bitcast<f32>(_e274), 1f);
+                                            phi_544_ = type_20(array<f32, 3>(0f, 0f, 0f), bitcast<f32>(_e274), 1f);
                                         } else {
                                             let _e488 = local_48;
                                             let _e490 = local_12;
@@ -763,7 +763,7 @@ fn function_() {
                                             let _e539 = global_5.member[_e536];
                                             let _e541 = local_56;
                                             let _e542 = local_58;
-                                            phi_544_ = type_19(_e541, _e542, bitcast<f32>(_e539));
+                                            phi_544_ = type_20(_e541, _e542, bitcast<f32>(_e539));
                                         }
                                         let _e545 = phi_544_;
                                         local_60 = _e545;

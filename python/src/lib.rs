@@ -205,8 +205,21 @@ fn make_backend(name: &str) -> PyResult<Box<dyn Backend>> {
 }
 
 fn to_rgb_array(image: &RgbImage) -> PyResult<Array3<f32>> {
-    let (w, h) = (image.width as usize, image.height as usize);
-    Array3::from_shape_vec((h, w, 3), image.data.iter().flatten().copied().collect()).map_err(shape_error)
+    cropped_array(image, 0)
+}
+
+/// `image` without `margin` pixels on every side as an (H, W, 3) array; a `MemoryError` where the
+/// machine cannot hold it.
+fn cropped_array(image: &RgbImage, margin: u32) -> PyResult<Array3<f32>> {
+    let (w, h) = (image.width.saturating_sub(2 * margin) as usize, image.height.saturating_sub(2 * margin) as usize);
+    let mut data = Vec::new();
+    data.try_reserve_exact(3 * w * h)
+        .map_err(|_| PyMemoryError::new_err(format!("out of host memory: the {w}x{h} result needs {} bytes", 12 * w * h)))?;
+    let (m, row) = (margin as usize, image.width as usize);
+    for y in m..m + h {
+        data.extend(image.data[y * row + m..y * row + m + w].iter().flatten());
+    }
+    Array3::from_shape_vec((h, w, 3), data).map_err(shape_error)
 }
 
 /// Blurs an image with depth of field and returns the result as a (H, W, 3) float32 array.
@@ -308,14 +321,14 @@ fn blur<'py>(
         metres_per_unit,
     )?;
     let backend = backend.to_string();
-    let result = py.detach(move || -> PyResult<RgbImage> {
+    let result = py.detach(move || -> PyResult<(RgbImage, u32)> {
         let mut b = make_backend(&backend)?;
         let margin = edge_margin(&layers, &lens);
         let padded = layers.extend_edges(margin).map_err(py_err)?;
         let out = one_shot(b.as_mut(), info, &options, &padded, &lens).map_err(py_err)?;
-        Ok(out.image.crop(margin))
+        Ok((out.image, margin))
     })?;
-    Ok(to_rgb_array(&result)?.into_pyarray(py))
+    Ok(cropped_array(&result.0, result.1)?.into_pyarray(py))
 }
 
 /// An array of whole numbers from 0 to `max` (sample counts, footprint masks), checked value by

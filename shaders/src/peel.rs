@@ -8,8 +8,9 @@
 //!   surface, and clears the found flag;
 //! - `peel_append` (one invocation per pixel) after each pass: the pass's shaded layer becomes the
 //!   pixel's next slot where [`slot_kept`] says so (the frame API's `FrameInput::Layers` layout,
-//!   [`crate::slot`]: colour premultiplied by the layer's alpha, depth, alpha), and a kept surface
-//!   sets the found flag;
+//!   [`crate::slot`]: colour premultiplied by the layer's alpha, depth, alpha), or is composited
+//!   behind a full pixel's translucent last slot ([`target_slot`]); a kept surface sets the found
+//!   flag where the pixel can take more ([`takes_more`]);
 //! - after the last pass the disocclusion buffer (§4.3, two-pass variant: built from the finished
 //!   front layer): `peel_edges` gives every pixel of a depth discontinuity its tag radius
 //!   ([`pair_radius`]), `peel_span` and `peel_mask` find the pixels within that radius of an edge
@@ -46,9 +47,9 @@ pub struct PeelParams {
     /// The peeled image (frame and guard band), pixels.
     pub width: u32,
     pub height: u32,
-    /// Slots a pixel (the most passes).
+    /// Slots a pixel.
     pub layers: u32,
-    /// The pass `peel_plan` plans (`layers`: the call after the last pass) and `peel_append` appends.
+    /// The pass `peel_plan` plans (`passes`: the call after the last pass) and `peel_append` appends.
     pub pass: u32,
     /// Relative depth difference between 4-neighbours that counts as a discontinuity.
     pub edge_depth_ratio: f32,
@@ -59,7 +60,10 @@ pub struct PeelParams {
     /// A useful pass's shading and append workgroups.
     pub shade_groups: u32,
     pub append_groups: u32,
-    pub _pad: [u32; 3],
+    /// Passes a frame (at least `layers`): those past `layers` composite a translucent stack deeper
+    /// than the slots into the last slot ([`target_slot`]).
+    pub passes: u32,
+    pub _pad: [u32; 2],
 }
 
 const _: () = assert!(core::mem::size_of::<PeelParams>() <= 128);
@@ -162,6 +166,43 @@ pub fn margin_of(radius: f32) -> u32 {
 #[inline]
 pub fn slot_kept(alpha: f32, depth: f32) -> bool {
     is_surface(depth) || alpha > 0.0
+}
+
+/// The slot a pass's fragment goes to in a pixel with `n` of its `layers` slots used, the last of
+/// coverage `last_alpha`: the next slot while there is one; once they are full, the last one, which
+/// takes the fragment behind it ([`behind`]) for as long as it still lets light through; else none
+/// (`layers`). So a translucent stack deeper than the slots keeps its light and what it lets
+/// through, as the ray caster keeps it.
+#[inline]
+pub fn target_slot(n: u32, layers: u32, last_alpha: f32) -> u32 {
+    if n < layers {
+        n
+    } else if n > 0 && !is_opaque(last_alpha) {
+        n - 1
+    } else {
+        layers
+    }
+}
+
+/// Whether a pixel whose slot `target` (of `layers`) just took a surface, leaving it of coverage
+/// `alpha`, can take more from a later pass: a slot is free, or the last one still lets light
+/// through. A pass after which no pixel can is not drawn, so an opaque scene draws no translucent
+/// pass.
+#[inline]
+pub fn takes_more(target: u32, layers: u32, alpha: f32) -> bool {
+    target + 1 < layers || !is_opaque(alpha)
+}
+
+/// A full pixel's translucent last slot with `fragment` (premultiplied, lying behind it)
+/// composited "over": the slot keeps its depth, and becomes exactly opaque with an opaque fragment
+/// (so nothing more is composited into it).
+#[inline]
+pub fn behind(last: Slot, fragment: Slot) -> Slot {
+    let mut s = slot::over(last, fragment);
+    if is_opaque(fragment.alpha) {
+        s.alpha = 1.0;
+    }
+    s
 }
 
 /// The reach the next pass tests against behind a pixel of a shaded layer (Franke et al. 2018,
@@ -281,9 +322,9 @@ pub fn plan_pass<G: Group, M: Mem>(g: &mut G, p: &PeelParams, mut found: M, mut 
     for_each_item(g, 1, |_| {
         let f = found.load(0);
         if p.pass > 0 {
-            passes.store(p.layers + p.pass - 1, f);
+            passes.store(p.passes + p.pass - 1, f);
         }
-        if p.pass < p.layers {
+        if p.pass < p.passes {
             let go = f != 0;
             let pick = |v: u32| if go { v } else { 0 };
             let words = [pick(p.draw_vertices), 1, 0, 0, pick(p.shade_groups), 1, 1, 0, pick(p.append_groups), 1, 1, 0];
@@ -307,14 +348,25 @@ pub fn append_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &PeelParams, layer: 
             return;
         }
         let n = counts.load(i);
-        if n < p.layers {
-            // The shaded layer's colour is straight; the slot's is premultiplied (an opaque layer's
-            // bits unchanged: c · 1 = c).
-            let rgb = [f32::from_bits(layer.load(o)), f32::from_bits(layer.load(o + 1)), f32::from_bits(layer.load(o + 2))];
-            slot::store(&mut fragments, i * p.layers + n, Slot { color: slot::premultiply(rgb, alpha), depth, alpha });
-            counts.store(i, n + 1);
+        // The last slot's coverage matters only once the slots are full.
+        let last = if n >= p.layers && n > 0 { slot::alpha_of(&fragments, i * p.layers + n - 1) } else { 0.0 };
+        let target = target_slot(n, p.layers, last);
+        if target == p.layers {
+            return;
         }
-        if is_surface(depth) && found.load(0) == 0 {
+        // The shaded layer's colour is straight; the slot's is premultiplied (an opaque layer's
+        // bits unchanged: c · 1 = c).
+        let rgb = [f32::from_bits(layer.load(o)), f32::from_bits(layer.load(o + 1)), f32::from_bits(layer.load(o + 2))];
+        let fragment = Slot { color: slot::premultiply(rgb, alpha), depth, alpha };
+        let at = i * p.layers + target;
+        let kept = if target == n {
+            counts.store(i, n + 1);
+            fragment
+        } else {
+            behind(slot::load(&fragments, at), fragment)
+        };
+        slot::store(&mut fragments, at, kept);
+        if is_surface(depth) && takes_more(target, p.layers, kept.alpha) && found.load(0) == 0 {
             found.atomic_max(0, 1);
         }
     });

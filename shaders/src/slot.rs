@@ -72,6 +72,12 @@ pub fn depth_of(m: &impl Load, index: u32) -> f32 {
     f32::from_bits(m.load(SLOT_WORDS * index + DEPTH_WORD))
 }
 
+/// The alpha of slot `index`, without reading the rest.
+#[inline]
+pub fn alpha_of(m: &impl Load, index: u32) -> f32 {
+    f32::from_bits(m.load(SLOT_WORDS * index + ALPHA_WORD))
+}
+
 /// Writes slot `index`.
 #[inline]
 pub fn store<M: Mem>(m: &mut M, index: u32, s: Slot) {

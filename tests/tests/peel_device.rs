@@ -149,8 +149,9 @@ fn assert_same_as_host(b: &mut dyn Backend, mesh: &MeshScene, camera: &Camera, l
     assert_eq!(diff, None, "first differing slot word (of {})", want_words.len());
     assert_eq!(mask, host.image.mask, "the disocclusion buffer");
     let report = ctx.peel_report(b).unwrap();
-    assert_eq!(report.recorded, options.max_layers);
-    assert_eq!(report.drawn, host.passes.min(options.max_layers), "passes drawn, as the host ran them");
+    let recorded = options.max_layers + options.translucent_passes;
+    assert_eq!(report.recorded, recorded);
+    assert_eq!(report.drawn, host.passes.min(recorded), "passes drawn, as the host ran them");
     ctx.destroy(b);
 }
 
@@ -194,6 +195,56 @@ fn translucent_layers_on(b: &mut dyn Backend) {
         let n = frame.counts[p] as usize;
         assert!(frame.fragments[p * l..p * l + n.saturating_sub(1)].iter().all(|f| f.alpha < 1.0), "pixel {p}");
     }
+}
+
+/// Twelve red panes of alpha 0.1 before a white wall, peeled into 4 slots: with 9 translucent
+/// passes the last slot takes the other eight panes and the wall, in order, as the ray caster would
+/// (the light of 12 panes and the wall they let through: green 0.9^12); with none, black shows
+/// through the fourth pane (green 0), and the pixel is counted. The device keeps the host's slots.
+fn deep_translucent_stack_on(b: &mut dyn Backend) {
+    let mut m = MeshScene::default();
+    m.materials.push(MeshMaterial { base: [1.0, 1.0, 1.0, 1.0], flags: UNLIT, ..MeshMaterial::default() });
+    m.materials.push(MeshMaterial {
+        base: [1.0, 0.0, 0.0, 0.1],
+        flags: UNLIT | dof_shaders::raster::mesh::ALPHA_BLEND,
+        ..MeshMaterial::default()
+    });
+    quad(&mut m, Vec3::new(-9.0, -9.0, -10.0), Vec3::new(18.0, 0.0, 0.0), Vec3::new(0.0, 18.0, 0.0), 0);
+    for k in 0..12 {
+        quad(&mut m, Vec3::new(-1.0, -1.0, -2.0 - 0.4 * k as f32), Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 2.0, 0.0), 1);
+    }
+    let camera = Camera::look_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0), 40f32.to_radians(), 48, 32);
+    let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.01, focus_distance: 6.0, pixels_per_unit: 32.0 / 0.024 };
+    let near = default_near(lens.focus_distance);
+    let peel = |b: &mut dyn Backend, passes: u32| {
+        let opts = LayerOptions { translucent_passes: passes, ..options(GuardBand::Off, 4, false) };
+        assert_same_as_host(b, &m, &camera, &lens, &opts);
+        peel_layers(b, &m.raster(), &camera, &lens, near, &opts).unwrap()
+    };
+    let centre = |l: &dof::layers::LayeredImage| {
+        let p = l.pixel_index(24, 16);
+        (dof_shaders::slot::flatten(l.counts[p], |k| l.fragments[p * 4 + k as usize].slot()).0, l.full_and_translucent())
+    };
+    let (whole, cut) = (peel(b, 9), peel(b, 0));
+    let ((rgb, deep), (cut_rgb, cut_deep)) = (centre(&whole.image.layers), centre(&cut.image.layers));
+    let through = 0.9f32.powi(12);
+    assert!((rgb[0] - 1.0).abs() < 1e-5 && (rgb[1] - through).abs() < 1e-5, "{rgb:?} against [1, {through}, {through}]");
+    assert_eq!(deep, 0, "no pixel ends translucent");
+    assert!((cut_rgb[0] - (1.0 - 0.9f32.powi(4))).abs() < 1e-5 && cut_rgb[1] == 0.0, "{cut_rgb:?}");
+    assert!(cut_deep > 0, "the cut stacks are counted");
+    assert_eq!((whole.passes, cut.passes), (13, 4), "passes run: 12 panes and the wall; then the 4 slots");
+}
+
+#[test]
+fn a_deep_translucent_stack_keeps_its_light_on_the_cpu() {
+    deep_translucent_stack_on(&mut CpuBackend::new());
+}
+
+#[test]
+fn a_deep_translucent_stack_keeps_its_light_on_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    deep_translucent_stack_on(&mut vk);
+    assert_clean(&mut vk);
 }
 
 #[test]
@@ -271,12 +322,12 @@ fn orbiting_frames_on(b: &mut dyn Backend) {
         dof.record(b, &peel.frame(lens, FrameOutput::Buffer(RgbBuffer(out)))).unwrap();
         let times = b.submit().unwrap();
         // Every pass is recorded, the ones that draw nothing too (one shading dispatch each).
-        assert_eq!(times.iter().filter(|t| t.label == "peel/shade").count(), layers as usize, "passes recorded");
+        assert_eq!(times.iter().filter(|t| t.label == "peel/shade").count(), desc.passes().unwrap() as usize, "passes recorded");
     }
     let c = b.counters().since(&before);
     assert_eq!((c.allocations, c.uploads, c.readbacks, c.submissions), (0, 0, 0, frames), "per frame: {c:?}");
     let report = peel.peel_report(b).unwrap();
-    assert_eq!(report.recorded, layers);
+    assert_eq!(report.recorded, layers + desc.translucent_passes);
     assert!(report.with_surface >= 2, "{report:?}");
     let image = b.read_buffer(out, 0, 3 * w as u64 * h as u64).unwrap();
     assert!(image.iter().all(|&v| f32::from_bits(v).is_finite()) && image.iter().any(|&v| f32::from_bits(v) > 0.0));
@@ -314,10 +365,11 @@ fn extra_passes_find_nothing_on(b: &mut dyn Backend) {
     let mut ctx = MeshPeelContext::new(b, &m.raster(), &camera, &lens, &MeshPeelDesc::new(&opts, near)).unwrap();
     device_peel(b, &mut ctx, &camera, &lens);
     let report = ctx.peel_report(b).unwrap();
-    assert_eq!((report.recorded, report.with_surface), (layers, 2), "{report:?}");
+    let recorded = layers + opts.translucent_passes;
+    assert_eq!((report.recorded, report.with_surface), (recorded, 2), "{report:?}");
     assert_eq!(report.drawn, 3, "the pass after the last surface draws, the rest do not: {report:?}");
     let figures = ctx.report(b).unwrap().figures();
-    assert_eq!(figures["peel_passes_recorded"], layers as f64);
+    assert_eq!(figures["peel_passes_recorded"], recorded as f64);
     ctx.destroy(b);
 }
 

@@ -352,7 +352,7 @@ fn a_translucent_stack_deeper_than_the_layers_is_counted() {
         m.facing(0.0, 0.0, 2.0 + 0.5 * k as f32, 1.0, pane);
     }
     let peel = |layers: u32| {
-        let options = LayerOptions { max_layers: layers, ..all_layers() };
+        let options = LayerOptions { max_layers: layers, translucent_passes: 0, ..all_layers() };
         peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.5, 10.0), 0.01, &options).unwrap().image.layers
     };
     let shallow = peel(4);

@@ -69,7 +69,7 @@ fn an_orbiting_frame_reports_one_submission_and_no_transfers() {
         "\"uploads_per_frame\":0.0",
         "\"readbacks_per_frame\":0.0",
         "\"submits_per_frame\":1.0",
-        "\"peel_passes_per_frame\":4.0",
+        "\"peel_passes_per_frame\":8.0", // 4 layers and 4 translucent passes, recorded
         "\"path\":\"frame-api+device-peel\"",
     ] {
         assert!(json.contains(field), "{field} in {json}");

@@ -1443,6 +1443,44 @@ fn an_image_beyond_the_machines_memory_is_an_error() {
     assert!(o.status.code() == Some(1) && stderr.contains("out of host memory"), "{:?}: {stderr}", o.status);
 }
 
+/// An EXR with many passes costs the memory of the channels read, not of every channel: RGB, Z and
+/// 32 more passes at 4096x4096 (2.4 GB of samples, 270 MB of them used) render under an
+/// address-space limit that decoding every channel would exceed.
+#[test]
+fn only_the_channels_read_are_decoded() {
+    let (w, h) = (4096u32, 4096u32);
+    let image = dof::layers::RgbImage { width: w, height: h, data: vec![[0.25, 0.5, 0.75]; (w * h) as usize] };
+    let depth = vec![4.0f32; (w * h) as usize];
+    let zeros = vec![0.0f32; (w * h) as usize];
+    let names: Vec<String> = (0..32).map(|k| format!("aov{k:02}.Y")).collect();
+    let mut planes: Vec<(&str, &[f32])> = vec![("Z", &depth)];
+    planes.extend(names.iter().map(|n| (n.as_str(), zeros.as_slice())));
+    let input = temp("passes.exr");
+    dof::io::write_exr_with(&input, &image, &planes, &Default::default()).unwrap();
+    let run = |limit_kb: u64, method: &str| {
+        let cmd = format!(
+            "ulimit -v {limit_kb} && exec {} render --scene {} --method {method} --focus 4 --f-number 2 --out {}",
+            env!("CARGO_BIN_EXE_dof"),
+            input.display(),
+            temp(&format!("passes-{method}.exr")).display()
+        );
+        Command::new("bash").args(["-c", &cmd]).output().expect("bash runs")
+    };
+    let o = run(LIMIT_KB, "pinhole");
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{:?}: {stderr}", o.status);
+    assert!(stderr.contains("channels not used: aov00.Y"), "the passes not read are named: {stderr}");
+    // A frame whose input, context and output would not fit is refused before it is uploaded,
+    // where the allocations that follow would abort.
+    let o = run(2_500_000, "gather");
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.code() == Some(1) && stderr.contains("out of host memory: a 4096x4096 frame"), "{:?}: {stderr}", o.status);
+}
+
+/// The address space `only_the_channels_read_are_decoded` renders in: the binary, its threads and
+/// the image read with the channels it uses, but not every channel of the file.
+const LIMIT_KB: u64 = 1_800_000;
+
 /// A deep EXR written by OpenEXR's own library (`tools/make_deep_fixtures.py`).
 fn deep_fixture(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../tests/data/deep").join(name)

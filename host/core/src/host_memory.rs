@@ -11,9 +11,22 @@ fn meminfo_bytes(key: &str) -> Option<u64> {
     kib.checked_mul(1024)
 }
 
-/// The memory free for new allocations now (`MemAvailable`).
+/// The memory free for new allocations now: the machine's (`MemAvailable`), or less where the
+/// process's address space is limited (`ulimit -v`: the limit less what the process has mapped).
 pub fn available() -> Option<u64> {
-    meminfo_bytes("MemAvailable")
+    let free = meminfo_bytes("MemAvailable")?;
+    Some(address_space_left().map_or(free, |left| free.min(left)))
+}
+
+/// What the address-space limit (`RLIMIT_AS`, from `/proc/self/limits`) leaves beyond what the
+/// process has mapped (`VmSize`); `None` where there is no limit.
+fn address_space_left() -> Option<u64> {
+    let limits = std::fs::read_to_string("/proc/self/limits").ok()?;
+    let line = limits.lines().find(|l| l.starts_with("Max address space"))?;
+    let limit: u64 = line.trim_start_matches("Max address space").split_whitespace().next()?.parse().ok()?;
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let mapped_kib: u64 = status.lines().find(|l| l.starts_with("VmSize:"))?.split_whitespace().nth(1)?.parse().ok()?;
+    Some(limit.saturating_sub(mapped_kib.saturating_mul(1024)))
 }
 
 /// All the memory the machine has, RAM and swap: no allocation larger can ever be backed. It is

@@ -1,11 +1,13 @@
 //! EXR input: RGB+Z and multi-layer files to a [`LayeredImage`], RGB files to an [`RgbImage`].
 
-use std::borrow::Cow;
 use std::fmt;
 use std::fs::File;
 use std::io::{BufReader, Read, Seek, SeekFrom};
 use std::path::Path;
 
+use ::exr::block::reader::ChunksReader;
+use ::exr::meta::attribute::SampleType;
+use ::exr::meta::header::Header;
 use ::exr::prelude::*;
 use rayon::prelude::*;
 
@@ -136,27 +138,30 @@ impl fmt::Display for InputReport {
 /// written.
 pub fn read_layered_exr(path: impl AsRef<Path>) -> Result<(LayeredImage, InputReport)> {
     let path = path.as_ref();
-    let file = ExrFile::open(path)?;
+    let mut file = ExrFile::open(path)?;
     let (layout, groups) = select_layers(path, &file)?;
     // An RGB+Z image's single layer is the whole pixel (see `SanitizeCounts::sole_fragment`).
     let sole = layout == ExrLayout::RgbZ;
     let (width, height, origin) = file.size_of(path, &groups)?;
+    let slots = width as u128 * height as u128 * groups.len() as u128;
+    let used: Vec<usize> = groups.iter().flat_map(|g| g.used()).collect();
+    let planes = file.decode(path, &used, slots * (std::mem::size_of::<Fragment>() as u128 + 4))?;
     let mut image = LayeredImage::new(width, height, groups.len() as u32)?;
     let mut report = file.report(layout, width, height, &groups);
     report.window = super::ExrWindow { origin, display: file.display };
 
     struct Planes<'a> {
-        rgb: [Cow<'a, [f32]>; 3],
-        alpha: Option<Cow<'a, [f32]>>,
-        depth: Cow<'a, [f32]>,
+        rgb: [&'a [f32]; 3],
+        alpha: Option<&'a [f32]>,
+        depth: &'a [f32],
     }
-    let mut planes = Vec::with_capacity(groups.len());
+    let plane = |i: Option<usize>| i.and_then(|i| planes[i].as_deref());
+    let mut layer_planes = Vec::with_capacity(groups.len());
     for g in &groups {
-        let get = |i: Option<usize>| i.map(|i| file.samples(path, i)).transpose();
-        let (Some(r), Some(gr), Some(b), Some(depth)) = (get(g.r)?, get(g.g)?, get(g.b)?, get(g.depth)?) else {
+        let (Some(r), Some(gr), Some(b), Some(depth)) = (plane(g.r), plane(g.g), plane(g.b), plane(g.depth)) else {
             return Err(Error::invalid(format!("internal: layer `{}` selected without its channels", g.name)));
         };
-        planes.push(Planes { rgb: [r, gr, b], alpha: get(g.a)?, depth });
+        layer_planes.push(Planes { rgb: [r, gr, b], alpha: plane(g.a), depth });
     }
 
     let w = width as usize;
@@ -172,9 +177,9 @@ pub fn read_layered_exr(path: impl AsRef<Path>) -> Result<(LayeredImage, InputRe
             for x in 0..w {
                 let p = y * w + x;
                 pixel.clear();
-                for plane in &planes {
+                for plane in &layer_planes {
                     let rgb = [plane.rgb[0][p], plane.rgb[1][p], plane.rgb[2][p]];
-                    let alpha = plane.alpha.as_ref().map_or(1.0, |a| a[p]);
+                    let alpha = plane.alpha.map_or(1.0, |a| a[p]);
                     let depth = plane.depth[p];
                     let fragment = if sole { counts.sole_fragment(rgb, alpha, depth) } else { counts.fragment(rgb, alpha, depth) };
                     if let Some(f) = fragment {
@@ -202,7 +207,7 @@ pub fn read_layered_exr(path: impl AsRef<Path>) -> Result<(LayeredImage, InputRe
 /// Colour samples follow the NaN/Inf policy and are counted in the report.
 pub fn read_rgb_exr(path: impl AsRef<Path>) -> Result<(RgbImage, InputReport)> {
     let path = path.as_ref();
-    let file = ExrFile::open(path)?;
+    let mut file = ExrFile::open(path)?;
     let groups = group_channels(&file.names);
     let root = match groups.iter().find(|g| g.name.is_empty()) {
         Some(root) if root.has_rgb() => root.clone(),
@@ -222,9 +227,11 @@ pub fn read_rgb_exr(path: impl AsRef<Path>) -> Result<(RgbImage, InputReport)> {
     let mut report = file.report(ExrLayout::Rgb, width, height, &groups);
     report.window = super::ExrWindow { origin, display: file.display };
     let g = &groups[0];
-    let mut planes = Vec::with_capacity(3);
-    for i in [g.r, g.g, g.b].into_iter().flatten() {
-        planes.push(file.samples(path, i)?);
+    let colour = [g.r, g.g, g.b].into_iter().flatten().collect::<Vec<_>>();
+    let decoded = file.decode(path, &colour, width as u128 * height as u128 * 12)?;
+    let planes: Vec<&[f32]> = colour.iter().filter_map(|&i| decoded[i].as_deref()).collect();
+    if planes.len() != 3 {
+        return Err(Error::invalid(format!("internal: {} read without its colour channels", path.display())));
     }
     let mut image = RgbImage::new(width, height);
     report.counts = image
@@ -259,9 +266,12 @@ pub(super) fn open_regular(path: &Path) -> Result<File> {
     File::open(path).map_err(|e| fs_error("open", path, &e))
 }
 
-/// A decoded EXR: every part, every channel, with full names (`part.channel` in multi-part files).
+/// An EXR's headers and the channels they declare, by full name (`part.channel` in multi-part
+/// files). Pixels are decoded on request, and only for the channels asked for
+/// ([`Self::decode`]): a file with dozens of passes costs the memory of the few read.
 struct ExrFile {
-    parts: Vec<Layer<AnyChannels<FlatSamples>>>,
+    file: File,
+    headers: Vec<Header>,
     /// The display window, `[x_min, y_min, x_max, y_max]`.
     display: [i32; 4],
     /// Full channel names, in the order of `index`.
@@ -271,14 +281,17 @@ struct ExrFile {
 }
 
 impl ExrFile {
+    /// Opens `path` and reads its headers, refusing before any pixel is decoded: what is not a
+    /// regular EXR file, an empty data window, sizes beyond the limits on EXR input, a header that
+    /// announces far more pixel data than the file could hold, deep parts and zero sizes.
     fn open(path: &Path) -> Result<ExrFile> {
         let mut file = open_regular(path)?;
         let file_len = file.metadata().map(|m| m.len()).unwrap_or(0);
         let mut magic = Vec::with_capacity(8);
         (&mut file).take(8).read_to_end(&mut magic).map_err(|e| fs_error("read", path, &e))?;
         check_magic(path, &magic)?;
-        // The headers first, for clear errors before any pixel is decoded. The exr crate swaps the
-        // corners of an inverted (empty) data window, so that case is looked for in the raw header.
+        // The exr crate swaps the corners of an inverted (empty) data window, so that case is looked
+        // for in the raw header.
         file.seek(SeekFrom::Start(0)).map_err(|e| fs_error("read", path, &e))?;
         if let Some((part, [x0, y0, x1, y1])) = empty_data_window(&mut BufReader::new(&mut file)) {
             return Err(Error::invalid(format!(
@@ -287,71 +300,54 @@ impl ExrFile {
                 path.display()
             )));
         }
-        let image = guarded(path, || {
+        let meta = guarded(path, || {
             file.seek(SeekFrom::Start(0)).map_err(|e| fs_error("read", path, &e))?;
-            let meta = MetaData::read_from_buffered(BufReader::new(&mut file), false).map_err(|e| exr_error(path, e))?;
-            let slots = check_declared_size(path, &meta)?;
-            let mut announced: u128 = 0;
-            for header in &meta.headers {
-                announced += header.layer_size.area() as u128 * header.channels.bytes_per_pixel as u128;
-            }
-            if announced > MAX_EXPANSION * file_len as u128 + EXPANSION_SLACK {
+            MetaData::read_from_buffered(BufReader::new(&mut file), false).map_err(|e| exr_error(path, e))
+        })?;
+        check_declared_size(path, &meta)?;
+        let announced: u128 = meta.headers.iter().map(|h| h.layer_size.area() as u128 * h.channels.bytes_per_pixel as u128).sum();
+        if announced > MAX_EXPANSION * file_len as u128 + EXPANSION_SLACK {
+            return Err(Error::invalid(format!(
+                "{} is corrupt: its header announces {} MiB of pixel data in a file of {file_len} bytes \
+                 (more than {MAX_EXPANSION} times its size); re-export it",
+                path.display(),
+                announced >> 20
+            )));
+        }
+        for (i, header) in meta.headers.iter().enumerate() {
+            let part = header.own_attributes.layer_name.as_ref().map_or(format!("part {i}"), |n| format!("part `{n}`"));
+            if header.deep {
                 return Err(Error::invalid(format!(
-                    "{} is corrupt: its header announces {} MiB of pixel data in a file of {file_len} bytes \
-                     (more than {MAX_EXPANSION} times its size); re-export it",
-                    path.display(),
-                    announced >> 20
+                    "{}: {part} holds deep data, which the flat reader does not read: read it with `read_deep_exr` \
+                     (`dof render` and the Python binding's `read_deep_exr` read deep files)",
+                    path.display()
                 )));
             }
-            // Decoding holds every channel of every part, and the layered image its slots.
-            let image_bytes = slots as u128 * (std::mem::size_of::<crate::layers::Fragment>() as u128 + 4);
-            let what = format!("decoding {} (every channel of every part, then the layered image)", path.display());
-            crate::memory::check_fits(&what, announced + image_bytes, crate::memory::available())?;
-            for (i, header) in meta.headers.iter().enumerate() {
-                let part = header.own_attributes.layer_name.as_ref().map_or(format!("part {i}"), |n| format!("part `{n}`"));
-                if header.deep {
-                    return Err(Error::invalid(format!(
-                        "{}: {part} holds deep data, which the flat reader does not read: read it with `read_deep_exr` \
-                         (`dof render` and the Python binding's `read_deep_exr` read deep files)",
-                        path.display()
-                    )));
-                }
-                if header.layer_size.x() == 0 || header.layer_size.y() == 0 {
-                    return Err(Error::invalid(format!(
-                        "{}: {part} has a zero size ({}x{}): there are no pixels to read",
-                        path.display(),
-                        header.layer_size.x(),
-                        header.layer_size.y()
-                    )));
-                }
+            if header.layer_size.x() == 0 || header.layer_size.y() == 0 {
+                return Err(Error::invalid(format!(
+                    "{}: {part} has a zero size ({}x{}): there are no pixels to read",
+                    path.display(),
+                    header.layer_size.x(),
+                    header.layer_size.y()
+                )));
             }
-            file.seek(SeekFrom::Start(0)).map_err(|e| fs_error("read", path, &e))?;
-            read()
-                .no_deep_data()
-                .largest_resolution_level()
-                .all_channels()
-                .all_layers()
-                .all_attributes()
-                .non_parallel()
-                .from_unbuffered(&mut file)
-                .map_err(|e| exr_error(path, e))
-        })?;
-        let d = image.attributes.display_window;
+        }
+        let headers = meta.headers.into_vec();
+        let d = headers.first().map(|h| h.shared_attributes.display_window).unwrap_or_default();
         let display = [d.position.x(), d.position.y(), d.max().x(), d.max().y()];
-        let parts: Vec<_> = image.layer_data.into_iter().collect();
-        let multi_part = parts.len() > 1;
+        let multi_part = headers.len() > 1;
         let mut names = Vec::new();
         let mut index = Vec::new();
-        for (p, part) in parts.iter().enumerate() {
-            for (c, channel) in part.channel_data.list.iter().enumerate() {
-                names.push(full_channel_name(multi_part, p, part.attributes.layer_name.as_ref(), &channel.name));
+        for (p, header) in headers.iter().enumerate() {
+            for (c, channel) in header.channels.list.iter().enumerate() {
+                names.push(full_channel_name(multi_part, p, header.own_attributes.layer_name.as_ref(), &channel.name));
                 index.push((p, c));
             }
         }
         if names.is_empty() {
             return Err(Error::invalid(format!("{} has no channels", path.display())));
         }
-        Ok(ExrFile { parts, display, names, index })
+        Ok(ExrFile { file, headers, display, names, index })
     }
 
     /// The size shared by every used channel of `groups`; errors on a zero size, different data
@@ -361,8 +357,8 @@ impl ExrFile {
         for g in groups {
             for i in g.used() {
                 let (p, c) = self.index[i];
-                let part = &self.parts[p];
-                let channel = &part.channel_data.list[c];
+                let header = &self.headers[p];
+                let channel = &header.channels.list[c];
                 if channel.sampling != Vec2(1, 1) {
                     return Err(Error::invalid(format!(
                         "{}: channel `{}` is subsampled ({}x{}); only full-resolution channels are supported: \
@@ -373,7 +369,7 @@ impl ExrFile {
                         channel.sampling.y()
                     )));
                 }
-                let (size, position) = (part.size, part.attributes.layer_position);
+                let (size, position) = (header.layer_size, header.own_attributes.layer_position);
                 match first {
                     None => first = Some((&self.names[i], size, position)),
                     Some((name, s, pos)) if s != size || pos != position => {
@@ -415,27 +411,82 @@ impl ExrFile {
         ))
     }
 
-    /// The samples of channel `i` as `f32` (borrowed when stored as `f32`).
-    fn samples(&self, path: &Path, i: usize) -> Result<Cow<'_, [f32]>> {
-        let (p, c) = self.index[i];
-        let part = &self.parts[p];
-        let expected = part.size.area();
-        let samples: Cow<'_, [f32]> = match &part.channel_data.list[c].sample_data {
-            FlatSamples::F32(v) => Cow::Borrowed(v),
-            FlatSamples::F16(v) => Cow::Owned(v.iter().map(|h| h.to_f32()).collect()),
-            FlatSamples::U32(v) => Cow::Owned(v.iter().map(|&u| u as f32).collect()),
-        };
-        if samples.len() != expected {
-            return Err(Error::invalid(format!(
-                "{}: channel `{}` holds {} samples, expected {}x{} = {expected}; the file is corrupt",
-                path.display(),
-                self.names[i],
-                samples.len(),
-                part.size.x(),
-                part.size.y()
-            )));
+    /// Decodes the channels `used` (indices into [`Self::names`], full-resolution channels of one
+    /// data window: [`Self::size_of`] checked them) as `f32` planes, row by row; `None` for every
+    /// other channel. Blocks are decoded one at a time on this thread, and only those of the parts
+    /// and the resolution level read. Refused first where the planes and `then_bytes` (what the
+    /// caller builds from them) need more memory than the machine has free.
+    fn decode(&mut self, path: &Path, used: &[usize], then_bytes: u128) -> Result<Vec<Option<Vec<f32>>>> {
+        let area = |i: usize| self.headers[self.index[i].0].layer_size.area();
+        let planes_bytes: u128 = used.iter().map(|&i| area(i) as u128 * 4).sum();
+        let what = format!("decoding {} ({} of its {} channels, then the image)", path.display(), used.len(), self.names.len());
+        crate::memory::check_fits(&what, planes_bytes + then_bytes, crate::memory::available())?;
+        // Where each (part, channel) goes: its plane, or nowhere.
+        let mut slot_of: Vec<Vec<Option<usize>>> = self.headers.iter().map(|h| vec![None; h.channels.list.len()]).collect();
+        let mut planes: Vec<Option<Vec<f32>>> = vec![None; self.names.len()];
+        for &i in used {
+            let (p, c) = self.index[i];
+            slot_of[p][c] = Some(i);
+            planes[i] = Some(dof_core::error::filled(area(i), 0.0f32, "an EXR channel")?);
         }
-        Ok(samples)
+        let mut written = vec![0usize; self.names.len()];
+        let (headers, names, file) = (&self.headers, &self.names, &mut self.file);
+        guarded(path, || {
+            file.seek(SeekFrom::Start(0)).map_err(|e| fs_error("read", path, &e))?;
+            let reader = ::exr::block::read(BufReader::new(&mut *file), false).map_err(|e| exr_error(path, e))?;
+            let wanted = |layer: usize| slot_of[layer].iter().any(Option::is_some);
+            let chunks = reader
+                .filter_chunks(false, |_, _, block| block.level == Vec2(0, 0) && wanted(block.layer))
+                .map_err(|e| exr_error(path, e))?;
+            let corrupt = |name: &str| {
+                Error::invalid(format!("{}: channel `{name}` has lines outside its data window; the file is corrupt", path.display()))
+            };
+            for block in chunks.sequential_decompressor(false) {
+                let block = block.map_err(|e| exr_error(path, e))?;
+                let header = &headers[block.index.layer];
+                let width = header.layer_size.x();
+                for line in block.lines(&header.channels) {
+                    let at = line.location;
+                    let Some(i) = slot_of[at.layer][at.channel] else { continue };
+                    let Some(plane) = planes[i].as_mut() else { continue };
+                    let start = at.position.y() * width + at.position.x();
+                    let Some(row) = plane.get_mut(start..start + at.sample_count).filter(|_| at.position.x() + at.sample_count <= width)
+                    else {
+                        return Err(corrupt(&names[i]));
+                    };
+                    match header.channels.list[at.channel].sample_type {
+                        SampleType::F32 => line.read_samples_into_slice(row).map_err(|e| exr_error(path, e))?,
+                        SampleType::F16 => {
+                            for (out, v) in row.iter_mut().zip(line.read_samples::<f16>()) {
+                                *out = v.map_err(|e| exr_error(path, e))?.to_f32();
+                            }
+                        }
+                        SampleType::U32 => {
+                            for (out, v) in row.iter_mut().zip(line.read_samples::<u32>()) {
+                                *out = v.map_err(|e| exr_error(path, e))? as f32;
+                            }
+                        }
+                    }
+                    written[i] += at.sample_count;
+                }
+            }
+            Ok(())
+        })?;
+        for &i in used {
+            if written[i] != area(i) {
+                let size = self.headers[self.index[i].0].layer_size;
+                return Err(Error::invalid(format!(
+                    "{}: channel `{}` holds {} samples, expected {}x{} = {}; the file is corrupt",
+                    path.display(),
+                    self.names[i],
+                    written[i],
+                    size.x(),
+                    size.y(),
+                    area(i)
+                )));
+            }
+        }
+        Ok(planes)
     }
 
     fn report(&self, layout: ExrLayout, width: u32, height: u32, groups: &[Group]) -> InputReport {

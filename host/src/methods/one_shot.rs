@@ -236,6 +236,31 @@ impl Runner {
         Ok(TimedFrames { last, runs, spans_ms, record_ms, counters, warmed, grown })
     }
 
+    /// Refuses, before the first frame, a frame whose host memory is more than the machine has free
+    /// ([`crate::memory::available`]): the input's words on their way up, the output's on their way
+    /// back and its image, and, on the CPU backend, the buffers themselves (reserved, not yet
+    /// touched, so not yet counted as used).
+    pub fn check_host_memory(&self, backend: &dyn Backend) -> Result<()> {
+        let pixels = self.extent.width as u64 * self.extent.height as u64;
+        let mut bytes = 4 * self.input_words as u128 + 2 * 12 * pixels as u128;
+        if backend.kind() == crate::backend::BackendKind::Cpu {
+            bytes += self.buffer_bytes() as u128;
+        }
+        match crate::memory::available() {
+            Some(free) if bytes > free as u128 => Err(Error::HostMemory {
+                what: format!(
+                    "a {}x{} frame of {} layer(s) (its input, context and output; {} MiB free)",
+                    self.extent.width,
+                    self.extent.height,
+                    self.extent.layers,
+                    free >> 20
+                ),
+                bytes: bytes.min(u64::MAX as u128) as u64,
+            }),
+            _ => Ok(()),
+        }
+    }
+
     /// Device bytes of the context alone.
     pub fn device_bytes(&self) -> u64 {
         self.ctx.device_bytes()
@@ -259,6 +284,10 @@ pub fn one_shot(
     crate::lens::check(lens)?;
     let input = method_input(method, image);
     let mut runner = Runner::new(backend, method, options, &input)?;
+    if let Err(e) = runner.check_host_memory(backend) {
+        runner.destroy(backend);
+        return Err(e);
+    }
     let ran = runner.frame(backend, &input, lens);
     runner.destroy(backend);
     ran

@@ -6,7 +6,11 @@
 //!    opaque fragment, so everything within it is skipped (the umbra threshold as the minimum
 //!    separation of layers), and infinity where the pass found nothing. Where a pass first finds
 //!    nothing the pixel's ray escapes: its next layer is the background, at infinite depth.
-//! 2. Passes stop after `max_layers`, or as soon as a pass finds no surface anywhere.
+//! 2. Once a pixel's `max_layers` slots are full, and as long as its last slot lets light through,
+//!    later passes composite what they find behind it into that slot (a translucent stack deeper
+//!    than the slots keeps its light, as the ray caster keeps it). Passes stop after `max_layers +
+//!    translucent_passes`, or as soon as no pixel can take what a next pass would find (every slot
+//!    full and the last opaque, or no surface found).
 //! 3. The image covers the frame and its guard band ([`crate::scene::guard_band`]), drawn through
 //!    the overscanned camera.
 //! 4. The disocclusion buffer from the front layer ([`apply_disocclusion`]): pixels outside it keep
@@ -25,7 +29,7 @@ use crate::layers::{Fragment, LayeredImage};
 use crate::scene::guard_band::auto_margin_mesh;
 use crate::scene::{Camera, CameraFrame, LayerOptions, SceneLayers, apply_disocclusion, check_subsamples, resolve_subsamples};
 use dof_shaders::lens::ThinLens;
-use dof_shaders::peel::{is_surface, slot_kept};
+use dof_shaders::peel::{behind, is_surface, slot_kept, takes_more, target_slot};
 use dof_shaders::raster::draw::{RASTER_DRAW, VIS_WORDS};
 use dof_shaders::raster::project::RasterParams;
 use dof_shaders::raster::shade::{LAYER, LAYER_WORDS, RASTER_SHADE, ShadeParams, raster_shade};
@@ -50,6 +54,20 @@ pub(crate) fn check_view(camera: &Camera, lens: &ThinLens, near: f32) -> Result<
         )));
     }
     Ok(frame)
+}
+
+/// Most peeling passes a frame (slots and translucent passes together): each is a draw of the
+/// whole mesh where a pixel still needs it.
+pub const MAX_PASSES: u32 = 1024;
+
+/// Passes a frame for `max_layers` slots and `translucent_passes` more
+/// (`LayerOptions::translucent_passes`), refused beyond [`MAX_PASSES`].
+pub(crate) fn peel_passes(max_layers: u32, translucent_passes: u32) -> Result<u32> {
+    max_layers.checked_add(translucent_passes).filter(|&p| p <= MAX_PASSES).ok_or_else(|| {
+        Error::invalid(format!(
+            "{max_layers} layers and {translucent_passes} translucent passes make more than {MAX_PASSES} peeling passes a frame"
+        ))
+    })
 }
 
 /// The shading pass's constants for a view.
@@ -197,7 +215,9 @@ pub fn peel_layers(
         let shade = shade_params(scene, &mesh, &frame, lens, &view, LAYER);
         let mut times = Vec::new();
         let mut passes = 0;
-        for k in 0..options.max_layers {
+        let layers = options.max_layers as usize;
+        let most = peel_passes(options.max_layers, options.translucent_passes)?;
+        for k in 0..most {
             pass.draw(backend, &mesh, &view, &frame, lens, near, k > 0, &format!("peel/draw {k}"))?;
             pass.shade(backend, &mesh, &shade, layer, &format!("peel/shade {k}"))?;
             times.extend(backend.submit()?);
@@ -207,14 +227,27 @@ pub fn peel_layers(
             for (p, w) in words.as_chunks::<{ LAYER_WORDS as usize }>().0.iter().enumerate() {
                 let (alpha, depth) = (f32::from_bits(w[3]), f32::from_bits(w[4]));
                 // The device peel's rules (`dof_shaders::peel`), so both keep the same slots.
-                if slot_kept(alpha, depth) {
-                    // Each pass keeps fragments strictly beyond the last, so layers arrive in order.
-                    let slot = p * options.max_layers as usize + full.counts[p] as usize;
-                    let rgb = [0, 1, 2].map(|j| f32::from_bits(w[j]));
-                    full.fragments[slot] = Fragment { color: dof_shaders::slot::premultiply(rgb, alpha), alpha, depth };
-                    full.counts[p] += 1;
-                    found |= is_surface(depth);
+                if !slot_kept(alpha, depth) {
+                    continue;
                 }
+                // Each pass keeps fragments strictly beyond the last, so layers arrive in order.
+                let n = full.counts[p];
+                let last = if n > 0 { full.fragments[p * layers + n as usize - 1].alpha } else { 0.0 };
+                let target = target_slot(n, options.max_layers, last);
+                if target == options.max_layers {
+                    continue;
+                }
+                let rgb = [0, 1, 2].map(|j| f32::from_bits(w[j]));
+                let fragment = Fragment { color: dof_shaders::slot::premultiply(rgb, alpha), alpha, depth };
+                let slot = &mut full.fragments[p * layers + target as usize];
+                if target == n {
+                    *slot = fragment;
+                    full.counts[p] += 1;
+                } else {
+                    let s = behind(slot.slot(), fragment.slot());
+                    *slot = Fragment { color: s.color, alpha: s.alpha, depth: s.depth };
+                }
+                found |= is_surface(depth) && takes_more(target, options.max_layers, slot.alpha);
             }
             if !found {
                 break;

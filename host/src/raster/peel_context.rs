@@ -7,12 +7,12 @@
 //! at creation (a margin in pixels, or [`GuardBand::Auto`] resolved once from the creation view),
 //! so the draw keeps one size whatever the camera does later; a view that would need a wider band
 //! gets this one, and the band each frame's view needs is computed on the device and reported
-//! (`PeelReport::band_needed`, `band_exceeded_frames`). Per frame: the camera and lens through push constants only, `max_layers` passes
-//! always recorded (the ones past the last useful pass draw nothing, decided on the device), the
+//! (`PeelReport::band_needed`, `band_exceeded_frames`). Per frame: the camera and lens through push constants only,
+//! `max_layers + translucent_passes` passes always recorded (the ones past the last useful pass draw nothing, decided on the device), the
 //! disocclusion buffer applied on the device. No allocation, upload, readback or submission.
 
 use super::mesh::{DeviceMesh, RasterScene};
-use super::peel::{Pass, check_view, sub_sample_camera};
+use super::peel::{Pass, check_view, peel_passes, sub_sample_camera};
 use super::view::View;
 use crate::backend::{Backend, BackendKind, push_words};
 use crate::error::{Error, Result};
@@ -32,8 +32,12 @@ use dof_shaders::resolve::grid_side;
 /// What a mesh peel context is made for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MeshPeelDesc {
-    /// Slots a pixel, and passes recorded every frame (>= 1).
+    /// Slots a pixel (>= 1).
     pub max_layers: u32,
+    /// Passes past `max_layers` for translucent stacks deeper than the slots
+    /// (`LayerOptions::translucent_passes`): `max_layers + translucent_passes` passes are recorded
+    /// every frame.
+    pub translucent_passes: u32,
     /// The near plane (scene units, `0 < near < focus distance`).
     pub near: f32,
     /// The margin beyond the frame, fixed at creation (`Auto`: from the creation view).
@@ -53,11 +57,17 @@ pub struct MeshPeelDesc {
 }
 
 impl MeshPeelDesc {
+    /// Passes a frame: the slots, then those for translucent stacks deeper than them.
+    pub fn passes(&self) -> Result<u32> {
+        peel_passes(self.max_layers, self.translucent_passes)
+    }
+
     /// The description matching the host path's options (the umbra threshold is always on for
     /// meshes, as in [`super::peel_layers`]).
     pub fn new(options: &LayerOptions, near: f32) -> Self {
         MeshPeelDesc {
             max_layers: options.max_layers,
+            translucent_passes: options.translucent_passes,
             near,
             guard_band: options.guard_band,
             edge_depth_ratio: options.edge_depth_ratio,
@@ -99,6 +109,7 @@ impl MeshPeelContext {
                 desc.max_layers, desc.edge_depth_ratio
             )));
         }
+        let passes = desc.passes()?;
         scene.validate()?;
         check_subsamples(desc.subsamples)?;
         let side = grid_side(desc.subsamples);
@@ -114,8 +125,9 @@ impl MeshPeelContext {
         let made = (|| {
             // Resolved slots carry each fragment's footprint in its pixel's sub-sample grid.
             let footprint_side = if side > 1 && desc.footprints { side } else { 0 };
-            let slots = PeelSlots::new(backend, &mut owned, w, h, desc.max_layers, footprint_side)?;
-            let fine = if side > 1 { PeelSlots::new(backend, &mut owned, fw, fh, desc.max_layers, 0)? } else { slots };
+            let fine = PeelSlots::new(backend, &mut owned, fw, fh, desc.max_layers, passes, 0)?;
+            let slots =
+                if side > 1 { PeelSlots::new(backend, &mut owned, w, h, desc.max_layers, desc.max_layers, footprint_side)? } else { fine };
             let bounds = owned.make(backend, 4 * scene.triangles.len() as u64, "peel/bounds")?;
             let vis = owned.make(backend, VIS_WORDS as u64 * pixels, "peel/vis")?;
             Ok((slots, fine, Pass { args: fine.args, reach: fine.reach, bounds, vis }))
@@ -175,7 +187,7 @@ impl MeshPeelContext {
         [self.slots.width, self.slots.height]
     }
 
-    /// Slots a pixel (passes recorded a frame).
+    /// Slots a pixel.
     pub fn layers(&self) -> u32 {
         self.desc.max_layers
     }
@@ -248,13 +260,13 @@ impl MeshPeelContext {
         });
         let vertices = 3 * mesh.triangles;
         slots.begin(backend)?;
-        for k in 0..self.desc.max_layers {
+        for k in 0..slots.passes {
             slots.plan(backend, k, vertices)?;
             pass.draw(backend, mesh, &view, &frame, lens, self.desc.near, k > 0, "peel/draw")?;
             pass.shade_words(backend, mesh, &shade, slots.layer, Some(slots.shade_args()), "peel/shade")?;
             slots.append(backend, k)?;
         }
-        slots.plan(backend, self.desc.max_layers, vertices)?;
+        slots.plan(backend, slots.passes, vertices)?;
         if self.side > 1 {
             self.slots.resolve_from(backend, slots, self.side, self.desc.edge_depth_ratio)?;
         }

@@ -259,9 +259,10 @@ fn cast_ray(
     n as u32
 }
 
-/// `back` behind `front` ([`dof_shaders::slot::over`]), at `front`'s depth.
+/// `back` behind a full pixel's translucent last slot `front` ([`dof_shaders::peel::behind`], the
+/// device peel's rule), at `front`'s depth.
 fn over(front: Fragment, back: Fragment) -> Fragment {
-    let s = dof_shaders::slot::over(front.slot(), back.slot());
+    let s = dof_shaders::peel::behind(front.slot(), back.slot());
     Fragment { color: s.color, alpha: s.alpha, depth: s.depth }
 }
 

@@ -155,6 +155,11 @@ pub struct RenderArgs {
     /// Fragments per pixel in the multi-layer image (built-in and glTF scenes; 1 to 64).
     #[arg(long, default_value_t = DEFAULT_LAYERS)]
     layers: u32,
+    /// glTF scenes: peeling passes past --layers that composite a translucent stack deeper than the
+    /// layers into each pixel's last one, in depth order (0 to 1024; a pass no pixel needs draws
+    /// nothing). Built-in scenes keep every surface of such a stack without a bound.
+    #[arg(long, default_value_t = LayerOptions::default().translucent_passes)]
+    translucent_passes: u32,
     /// Sub-samples a pixel of the multi-layer image (built-in and glTF scenes): 1 (point-sampled:
     /// the pixel centre's ray or peel), 4, 9 or 16 (a stratified grid, resolved by depth clusters
     /// into fragments of partial coverage; see docs/scenes-and-references.md).
@@ -227,6 +232,7 @@ impl RenderArgs {
     pub(crate) fn layer_options(&self, guard_band: GuardBand) -> LayerOptions {
         LayerOptions {
             max_layers: self.layers,
+            translucent_passes: self.translucent_passes,
             guard_band,
             subsamples: self.subsamples,
             footprints: !self.no_footprints,
@@ -916,9 +922,9 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let deep_stacks = peeled.image.layers.full_and_translucent();
     if deep_stacks > 0 {
         eprintln!(
-            "note: {deep_stacks} pixel(s) fill all {} layers with translucent surfaces and still let light through: what lies \
-             behind them is left out (black); raise --layers",
-            options.max_layers
+            "note: {deep_stacks} pixel(s) fill all {} layers with translucent surfaces and still let light through after {} \
+             passes: what lies behind them is left out (black); raise --translucent-passes (or --layers)",
+            options.max_layers, peeled.passes
         );
     }
     match args.method {

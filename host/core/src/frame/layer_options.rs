@@ -11,6 +11,12 @@ use dof_shaders::peel::MAX_GUARD_BAND;
 pub struct LayerOptions {
     /// Fragments kept per pixel at most (L), `>= 1`. Default 4.
     pub max_layers: u32,
+    /// Depth peeling only: passes past `max_layers` that composite a translucent stack deeper than
+    /// the slots into a pixel's last slot, in depth order (`dof_shaders::peel::target_slot`; the
+    /// analytic scenes' ray caster does this without a bound). A pass no pixel needs draws nothing
+    /// (decided on the device). Default 4: a stack of up to `max_layers + 4` surfaces keeps all its
+    /// light; behind a deeper one black shows through, and `SceneLayers` counts such pixels.
+    pub translucent_passes: u32,
     /// Thin layers by the umbra threshold (default on). Off: consecutive hits are all kept.
     pub umbra_threshold: bool,
     /// Keep more than the front fragment only inside the disocclusion buffer (default on). The
@@ -38,6 +44,7 @@ impl Default for LayerOptions {
     fn default() -> Self {
         LayerOptions {
             max_layers: 4,
+            translucent_passes: 4,
             umbra_threshold: true,
             disocclusion: true,
             edge_depth_ratio: 0.05,

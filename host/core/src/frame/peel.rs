@@ -37,6 +37,9 @@ pub struct PeelSlots {
     pub width: u32,
     pub height: u32,
     pub layers: u32,
+    /// Passes a frame: `layers`, then those that composite a translucent stack deeper than the
+    /// slots into its last slot (`dof_shaders::peel::target_slot`).
+    pub passes: u32,
     /// `layers` slots a pixel ([`SLOT_WORDS`] words: premultiplied r, g, b, depth, alpha; the frame
     /// API's layer input), front to back; then, with `footprint_side` above 0, a footprint a slot
     /// (`dof_shaders::footprint`; the frame API's `FrameInput::Layers::footprint_side`).
@@ -53,8 +56,9 @@ pub struct PeelSlots {
     /// The disocclusion buffer, one word a pixel (1: inside).
     pub mask: BufferId,
     found: BufferId,
-    /// `2 · layers` words: whether pass `k` was drawn, then whether it found a surface.
-    passes: BufferId,
+    /// `2 · passes` words: whether pass `k` was drawn, then whether it kept a surface where the
+    /// pixel can take more (`dof_shaders::peel::takes_more`).
+    passes_run: BufferId,
     edge: BufferId,
     widest: BufferId,
     span: BufferId,
@@ -66,11 +70,12 @@ pub struct PeelSlots {
 /// What a frame's peel did, from the device.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct PeelReport {
-    /// Passes recorded (the context's most layers).
+    /// Passes recorded (the slots a pixel, then the passes for translucent stacks deeper than them).
     pub recorded: u32,
-    /// Passes that drew (the earlier pass found a surface).
+    /// Passes that drew (the earlier pass kept a surface where a pixel can take more).
     pub drawn: u32,
-    /// Passes that found a surface somewhere.
+    /// Passes that kept a surface somewhere where the pixel can take more (the last slot's pass,
+    /// where it fills every pixel with an opaque surface, counts as finding none).
     pub with_surface: u32,
     /// The guard band (pixels) the last frame's view needed (`scene::guard_band`'s rule, computed
     /// on the device), where the image has the band fixed at creation.
@@ -110,9 +115,21 @@ super::context::report_details!(PeelFrameReport, |r| vec![
 ]);
 
 impl PeelSlots {
-    /// Makes the buffers (into `owned`), refusing an empty image or slots beyond one buffer; with a
+    /// Makes the buffers (into `owned`) for `layers` slots a pixel filled by `passes` passes a frame
+    /// (at least `layers`), refusing an empty image or slots beyond one buffer; with a
     /// `footprint_side` above 0 the slots carry footprints (written by [`Self::resolve_from`]).
-    pub fn new(backend: &mut dyn Backend, owned: &mut Owned, width: u32, height: u32, layers: u32, footprint_side: u32) -> Result<Self> {
+    pub fn new(
+        backend: &mut dyn Backend,
+        owned: &mut Owned,
+        width: u32,
+        height: u32,
+        layers: u32,
+        passes: u32,
+        footprint_side: u32,
+    ) -> Result<Self> {
+        if passes < layers {
+            return Err(Error::InvalidArgument(format!("a peel of {layers} slots a pixel needs at least {layers} passes, got {passes}")));
+        }
         let pixels = super::io::context_pixels(backend, "peel", width, height, layers)?;
         if width > i32::MAX as u32 / 2 || height > i32::MAX as u32 / 2 {
             return Err(Error::TooLarge {
@@ -125,6 +142,7 @@ impl PeelSlots {
             width,
             height,
             layers,
+            passes,
             footprint_side,
             fragments: owned.make(backend, (SLOT_WORDS as u64 + (footprint_side > 0) as u64) * pixels * layers as u64, "peel/fragments")?,
             counts: owned.make(backend, pixels, "peel/counts")?,
@@ -133,7 +151,7 @@ impl PeelSlots {
             layer: owned.make(backend, LAYER_WORDS as u64 * pixels, "peel/layer")?,
             mask: owned.make(backend, pixels, "peel/mask")?,
             found: owned.make(backend, 1, "peel/found")?,
-            passes: owned.make(backend, 2 * layers as u64, "peel/passes")?,
+            passes_run: owned.make(backend, 2 * passes as u64, "peel/passes")?,
             edge: owned.make(backend, pixels, "peel/edge")?,
             widest: owned.make(backend, 1, "peel/widest")?,
             span: owned.make(backend, pixels, "peel/span")?,
@@ -157,7 +175,8 @@ impl PeelSlots {
             draw_vertices,
             shade_groups: groups_for(&RASTER_SHADE, self.pixels())[0],
             append_groups: groups_for(&PEEL_APPEND, self.pixels())[0],
-            _pad: [0; 3],
+            passes: self.passes,
+            _pad: [0; 2],
         }
     }
 
@@ -175,15 +194,15 @@ impl PeelSlots {
         backend.fill(self.widest, 0, 1, 0, "peel/begin")
     }
 
-    /// Plans pass `pass` (`layers`: after the last) for a drawer whose useful pass draws
+    /// Plans pass `pass` (`passes`: after the last) for a drawer whose useful pass draws
     /// `draw_vertices` vertices.
     pub fn plan(&self, backend: &mut dyn Backend, pass: u32, draw_vertices: u32) -> Result<()> {
         let params = self.params(pass, draw_vertices, ThinLens::default(), 0.0, false);
-        backend.run(peel_plan::Bindings { found: self.found, args: self.args, passes: self.passes }, [1, 1, 1], &params, "peel/plan")
+        backend.run(peel_plan::Bindings { found: self.found, args: self.args, passes: self.passes_run }, [1, 1, 1], &params, "peel/plan")
     }
 
-    /// Appends pass `pass`'s shaded layer ([`Self::layer`]) into the slots (indirect: nothing when
-    /// the pass was not drawn).
+    /// Appends pass `pass`'s shaded layer ([`Self::layer`]) into the slots, or behind a full
+    /// pixel's translucent last slot (indirect: nothing when the pass was not drawn).
     pub fn append(&self, backend: &mut dyn Backend, pass: u32) -> Result<()> {
         let params = self.params(pass, 0, ThinLens::default(), 0.0, false);
         let bound = peel_append::Bindings { layer: self.layer, fragments: self.fragments, counts: self.counts, found: self.found };
@@ -193,7 +212,7 @@ impl PeelSlots {
     /// Ends a frame: the disocclusion buffer from the front slots and `lens`, applied when
     /// `disocclusion` is on (unused slots reset either way).
     pub fn finish(&self, backend: &mut dyn Backend, lens: ThinLens, edge_depth_ratio: f32, disocclusion: bool) -> Result<()> {
-        let params = self.params(self.layers, 0, lens, edge_depth_ratio, disocclusion);
+        let params = self.params(self.passes, 0, lens, edge_depth_ratio, disocclusion);
         let groups = groups_for(&PEEL_EDGES, self.pixels());
         let edges = peel_edges::Bindings { fragments: self.fragments, counts: self.counts, edge: self.edge, widest: self.widest };
         backend.run(edges, groups, &params, "peel/mask")?;
@@ -241,12 +260,12 @@ impl PeelSlots {
 
     /// What the last frame's passes did (reads the device: once the frame completed).
     pub fn report(&self, backend: &mut dyn Backend) -> Result<PeelReport> {
-        let words = backend.read_buffer(self.passes, 0, 2 * self.layers as u64)?;
+        let words = backend.read_buffer(self.passes_run, 0, 2 * self.passes as u64)?;
         let band = backend.read_buffer(self.band, 0, 3)?;
-        let (drawn, found) = words.split_at(self.layers as usize);
+        let (drawn, found) = words.split_at(self.passes as usize);
         let count = |w: &[u32]| w.iter().filter(|&&v| v != 0).count() as u32;
         Ok(PeelReport {
-            recorded: self.layers,
+            recorded: self.passes,
             drawn: count(drawn),
             with_surface: count(found),
             band_needed: band[1],

@@ -145,7 +145,7 @@ impl RendererPeel {
         }
         let mut owned = Owned::default();
         let made = (|| {
-            let slots = PeelSlots::new(backend, &mut owned, d.width, d.height, d.max_layers, 0)?;
+            let slots = PeelSlots::new(backend, &mut owned, d.width, d.height, d.max_layers, d.max_layers, 0)?;
             let color = owned.make(backend, d.color_format.words_per_pixel() * pixels, "renderer-peel/color")?;
             let depth = owned.make(backend, pixels, "renderer-peel/depth")?;
             Ok((slots, color, depth))

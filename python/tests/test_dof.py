@@ -423,3 +423,45 @@ def test_same_as_the_cli(tmp_path, method, flags, lens):
     got = dof.blur(rgb, depth, focus=4.0, method=method, **lens)
     assert np.abs(got - rgb).max() > 0.05  # the comparison is of a real blur
     np.testing.assert_array_equal(got, expected)
+
+
+def run_limited(code, limit_bytes):
+    """Runs `code` in a fresh interpreter whose address space is limited to `limit_bytes`
+    (`ulimit -v`): returns (exit code, stdout + stderr). A negative code is the signal that ended it."""
+    import subprocess
+    import sys
+
+    prelude = f"import resource\nresource.setrlimit(resource.RLIMIT_AS, ({limit_bytes}, {limit_bytes}))\n"
+    r = subprocess.run([sys.executable, "-c", prelude + code], capture_output=True, text=True, timeout=600)
+    return r.returncode, r.stdout + r.stderr
+
+
+MEMORY_ERROR = """
+import numpy as np, dof
+try:
+    {call}
+    print("finished")
+except MemoryError as e:
+    print("MemoryError:", e)
+"""
+
+
+@pytest.mark.parametrize(
+    "call,limit_gib",
+    [
+        # An 8192x8192 gather, the image and depth broadcast (no memory of their own): its layers,
+        # their padded copy and the context fit in 8 GiB of address space, the words up and back
+        # (3 GB more) do not, and the frame is refused before its upload, not part way.
+        (
+            "dof.blur(np.broadcast_to(np.float32(0.5), (8192, 8192, 3)), np.broadcast_to(np.float32(2.0), (8192, 8192)),"
+            " focus=4.0, f_number=2.0, method='gather')",
+            8,
+        ),
+        # A 65536x65536 image to write: 48 GiB to copy.
+        ("dof.write_exr('/nonexistent-dir/x.exr', np.broadcast_to(np.float32(0.5), (65536, 65536, 3)))", 4),
+    ],
+)
+def test_sizes_beyond_the_memory_raise_memory_error(call, limit_gib):
+    """Work larger than the memory it may use raises MemoryError; the interpreter lives on."""
+    code, out = run_limited(MEMORY_ERROR.format(call=call), limit_gib << 30)
+    assert code == 0 and "MemoryError: out of host memory" in out, f"exit {code}: {out[-2000:]}"

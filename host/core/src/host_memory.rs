@@ -14,7 +14,14 @@ fn meminfo_bytes(key: &str) -> Option<u64> {
 /// The memory free for new allocations now: the machine's (`MemAvailable`), or less where the
 /// process's address space is limited (`ulimit -v`: the limit less what the process has mapped).
 pub fn available() -> Option<u64> {
-    let free = meminfo_bytes("MemAvailable")?;
+    available_beside(0)
+}
+
+/// [`available`] where the process has `reserved` bytes allocated but not yet touched (zeroed
+/// buffers the kernel has not backed yet): they will take that much of the machine's free memory,
+/// while the address-space limit counts them already.
+pub fn available_beside(reserved: u64) -> Option<u64> {
+    let free = meminfo_bytes("MemAvailable")?.saturating_sub(reserved);
     Some(address_space_left().map_or(free, |left| free.min(left)))
 }
 

@@ -236,20 +236,18 @@ impl Runner {
         Ok(TimedFrames { last, runs, spans_ms, record_ms, counters, warmed, grown })
     }
 
-    /// Refuses, before the first frame, a frame whose host memory is more than the machine has free
-    /// ([`crate::memory::available`]): the input's words on their way up, the output's on their way
-    /// back and its image, and, on the CPU backend, the buffers themselves (reserved, not yet
-    /// touched, so not yet counted as used).
+    /// Refuses, before the first frame, a frame whose host memory is more than the machine has free:
+    /// the input's words on their way up, the output's on their way back and its image; on the CPU
+    /// backend the buffers themselves are host memory, reserved but not yet touched
+    /// ([`dof_core::host_memory::available_beside`]).
     pub fn check_host_memory(&self, backend: &dyn Backend) -> Result<()> {
         let pixels = self.extent.width as u64 * self.extent.height as u64;
-        let mut bytes = 4 * self.input_words as u128 + 2 * 12 * pixels as u128;
-        if backend.kind() == crate::backend::BackendKind::Cpu {
-            bytes += self.buffer_bytes() as u128;
-        }
-        match crate::memory::available() {
+        let bytes = 4 * self.input_words as u128 + 2 * 12 * pixels as u128;
+        let reserved = if backend.kind() == crate::backend::BackendKind::Cpu { self.buffer_bytes() } else { 0 };
+        match dof_core::host_memory::available_beside(reserved) {
             Some(free) if bytes > free as u128 => Err(Error::HostMemory {
                 what: format!(
-                    "a {}x{} frame of {} layer(s) (its input, context and output; {} MiB free)",
+                    "a {}x{} frame of {} layer(s) (its input and output on their way; {} MiB free)",
                     self.extent.width,
                     self.extent.height,
                     self.extent.layers,

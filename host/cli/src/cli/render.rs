@@ -156,8 +156,8 @@ pub struct RenderArgs {
     #[arg(long, default_value_t = DEFAULT_LAYERS)]
     layers: u32,
     /// glTF scenes: peeling passes past --layers that composite a translucent stack deeper than the
-    /// layers into each pixel's last one, in depth order (0 to 1024; a pass no pixel needs draws
-    /// nothing). Built-in scenes keep every surface of such a stack without a bound.
+    /// layers into each pixel's last one, in depth order (at most 1024 passes with --layers; a
+    /// pass no pixel needs draws nothing). Built-in scenes keep such a stack whole without them.
     #[arg(long, default_value_t = LayerOptions::default().translucent_passes)]
     translucent_passes: u32,
     /// Sub-samples a pixel of the multi-layer image (built-in and glTF scenes): 1 (point-sampled:

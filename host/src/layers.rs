@@ -42,6 +42,17 @@ impl RgbImage {
     }
 }
 
+/// `items` in a new vector with room for `extra` more, or `HostMemory` where the machine cannot
+/// hold it.
+fn copy_of<T: Copy>(items: &[T], extra: usize, what: &str) -> Result<Vec<T>> {
+    let n = items.len().saturating_add(extra);
+    let mut v = Vec::new();
+    v.try_reserve_exact(n)
+        .map_err(|_| CoreError::HostMemory { what: what.to_string(), bytes: (n as u64).saturating_mul(std::mem::size_of::<T>() as u64) })?;
+    v.extend_from_slice(items);
+    Ok(v)
+}
+
 /// A per-pixel plane (depth, mask) without `margin` pixels on every side of a `width`-wide image.
 pub fn crop_plane<T: Copy>(plane: &[T], width: u32, margin: u32) -> Vec<T> {
     let height = plane.len() / width.max(1) as usize;
@@ -185,6 +196,24 @@ impl LayeredImage {
             (image.data[p], depth[p]) = self.flattened(p);
         }
         (image, depth)
+    }
+
+    /// The depth of every pixel's front, as [`Self::front`] gives it, without the flattened colour;
+    /// `HostMemory` where the machine cannot hold it.
+    pub fn front_depths(&self) -> Result<Vec<f32>> {
+        let mut depths = copy_of(&[], self.counts.len(), "the front depths")?;
+        depths.extend((0..self.counts.len()).map(|p| self.flattened(p).1));
+        Ok(depths)
+    }
+
+    /// A copy, or `HostMemory` where the machine cannot hold one (`clone` would abort).
+    pub fn try_clone(&self) -> Result<LayeredImage> {
+        Ok(LayeredImage {
+            counts: copy_of(&self.counts, 0, "a layered image's counts")?,
+            fragments: copy_of(&self.fragments, 0, "a layered image's fragments")?,
+            footprints: copy_of(&self.footprints, 0, "a layered image's footprints")?,
+            ..*self
+        })
     }
 
     /// Pixel `p` flattened, as in [`Self::front`].

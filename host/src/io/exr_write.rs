@@ -110,6 +110,10 @@ pub fn write_exr_with(path: impl AsRef<Path>, image: &RgbImage, extra: &[(&str, 
         }
     }
 
+    // The channels are copied into the encoder's planes, and the file is encoded in memory: about
+    // twice the samples, refused up front rather than aborted part way.
+    let samples = pixels as u128 * (3 + extra.len() as u128) * 4;
+    crate::memory::check_fits(&format!("writing {}", path.display()), 2 * samples, crate::memory::available())?;
     let colour = |k: usize| -> FlatSamples {
         match options.precision {
             ExrPrecision::Float => FlatSamples::F32(image.data.iter().map(|c| c[k]).collect()),

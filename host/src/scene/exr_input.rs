@@ -77,7 +77,7 @@ impl ExrInput {
     /// and its report.
     pub fn layers(&self, camera: &Camera, lens: &ThinLens, options: &LayerOptions) -> Result<(LayeredImage, Option<DeepLayersReport>)> {
         match self {
-            ExrInput::Flat { layers, .. } => Ok((layers.clone(), None)),
+            ExrInput::Flat { layers, .. } => Ok((layers.try_clone()?, None)),
             ExrInput::Deep { image, .. } => {
                 let (layers, report) = image.layers(&camera.frame()?, lens, options)?;
                 Ok((layers, Some(report)))

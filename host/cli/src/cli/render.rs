@@ -695,7 +695,7 @@ pub(crate) fn edge_margin(layers: &LayeredImage, lens: &ThinLens) -> u32 {
 /// Returns the frame's image and its front layer's depth.
 fn blur(args: &RenderArgs, layers: &LayeredImage, lens: &ThinLens, margin: u32) -> anyhow::Result<(RgbImage, Vec<f32>)> {
     let mut b = backend(args.backend)?;
-    let (_, depth) = layers.front();
+    let depth = layers.front_depths()?;
     let Method::Frame(method) = args.method else { bail!("{} is not a blurring method", args.method.name()) };
     let out = one_shot(b.as_mut(), method, &method_options(args)?, layers, lens)?;
     let ms: f64 = out.stages.iter().map(|t| t.ms).sum();

@@ -190,3 +190,61 @@ fn the_frame_api_checks_footprints() {
     assert!(ctx.record(&mut b, &frame).is_err());
     ctx.destroy(&mut b);
 }
+
+/// A floor receding from the eye, seen at a 2x2 grid of sub-samples: each pixel's upper sub-samples
+/// see a part of it 6% farther than its lower ones, so the pixel resolves into two clusters side
+/// by side (`dof_shaders::resolve`): the near half (blue) at alpha 1/2, and the far half (red) at
+/// alpha 1, the composite's sense (all the light its own sub-samples let through). A black sky lies
+/// behind, hidden. The frame's pixels all show half red and half blue; their depths interleave
+/// from row to row, 12% apart.
+fn receding_floor(w: u32, h: u32) -> LayeredImage {
+    let mut img = LayeredImage::new(w, h, 3).unwrap();
+    img.footprints = vec![footprint::WHOLE; img.fragments.len()];
+    img.footprint_side = 2;
+    let depth = |y: f32| 3.0 * 1.12f32.powf(2.0 * (h as f32 - y));
+    for y in 0..h {
+        for x in 0..w {
+            let p = img.pixel_index(x, y);
+            img.push(x, y, Fragment { color: [0.0, 0.0, 0.5], alpha: 0.5, depth: depth(y as f32 + 0.75) }).unwrap();
+            img.footprints[3 * p] = 0b1100;
+            img.push(x, y, Fragment { color: [1.0, 0.0, 0.0], alpha: 1.0, depth: depth(y as f32 + 0.25) }).unwrap();
+            img.footprints[3 * p + 1] = 0b0011;
+            img.push(x, y, Fragment { color: [0.0; 3], alpha: 1.0, depth: f32::INFINITY }).unwrap();
+        }
+    }
+    img
+}
+
+/// The floor blurs to what its pixels show, half red and half blue, away from the frame's edge
+/// (where the light from beyond it is missing and the sky fills in), within the 2% a destination's
+/// summed disc shares stray from 1 on the lattice. Spending each cluster's composite alpha of the
+/// coverage budget instead lets the far half count twice (red 2/3, blue 1/3); and a partial
+/// footprint's alpha taken for a pane's, seen through the nearer rows, lets the sky darken it.
+fn side_by_side_halves(b: &mut dyn Backend) {
+    let (w, h) = (24, 48);
+    let img = receding_floor(w, h);
+    let l = test_lens(0.03);
+    let edge = l.coc_radius_px(f32::INFINITY).ceil() as u32 + 1;
+    assert!(l.coc_radius_px(3.0) > 1.5 && 2 * edge < w);
+    for merge in [Merge::None, Merge::X4] {
+        let out = splat(b, &img, &l, &SplatOptions { merge, ..Default::default() }).unwrap();
+        for y in edge..h - edge {
+            for x in edge..w - edge {
+                let p = out.image.data[(y * w + x) as usize];
+                assert!((p[0] - 0.5).abs() < 2e-2 && p[1] == 0.0 && (p[2] - 0.5).abs() < 2e-2, "{merge:?}, pixel ({x}, {y}): {p:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn side_by_side_halves_of_a_pixel_blur_to_their_share_cpu() {
+    side_by_side_halves(&mut CpuBackend::new());
+}
+
+#[test]
+fn side_by_side_halves_of_a_pixel_blur_to_their_share_vulkan() {
+    let Some(mut vk) = vulkan() else { return };
+    side_by_side_halves(&mut vk);
+    assert_clean(&mut vk);
+}

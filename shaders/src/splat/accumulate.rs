@@ -5,7 +5,9 @@
 //! Blending. A fragment standing for `footprint` pixels gives a pixel centre the share
 //! `w = footprint · weight / Σ weight` of its disc (see [`weight`] and [`weight_sum`]): it spreads
 //! exactly its own energy. Its alpha `α` scales that coverage: it adds `w` times its premultiplied
-//! colour and spends `w·α` of the pixel ([`surfaces::take`]). Front to back, each fragment takes at most the
+//! colour and spends `w·α` of the pixel ([`surfaces::take`]). (A fragment beside its pixel's
+//! nearer ones spends the share of the pixel it covers, not the composite's alpha:
+//! [`super::pack::budget_share`].) Front to back, each fragment takes at most the
 //! coverage its nearer fragments left (`min(w·α, 1 − used)`): coverage is a budget the near field
 //! spends first. A translucent fragment (or one of alpha 0, light that hides nothing) leaves the
 //! rest of its share to what lies behind it. Unlike per-fragment
@@ -301,7 +303,7 @@ pub fn accumulate_pass<G: Group, R: Load, M: Mem>(
                     let w = Px::splat(get(sh, CH_A, k)) * weight;
                     let alpha = get(sh, CH_O, k);
                     let (f, a) = if start + k < translucent_end {
-                        surfaces.take(hit, w, alpha, get(sh, CH_Z, k), used)
+                        surfaces.take(hit, w, alpha, fp != footprint::WHOLE, get(sh, CH_Z, k), used)
                     } else {
                         surfaces::take(w, alpha, Px::splat(1.0) - used)
                     };

@@ -76,6 +76,34 @@ fn store_sharp<M: Mem>(sharp: &mut M, pixel: u32, c: [f32; 3], z: f32) {
     sharp.store(b + 3, z.to_bits());
 }
 
+/// The premultiplied colour and alpha with which a slot of colour `c`, alpha `a` and footprint `fp`
+/// spends the coverage budget of the accumulation, behind slots of its pixel that let `through` of
+/// the light pass and cover the sub-samples `covered`.
+///
+/// A slot's alpha is the composite's: the share of the light still open that it takes
+/// ([`crate::resolve`]). The budget adds coverage instead, and that differs where a pixel's surfaces
+/// lie side by side: a floor's near half at alpha 1/2 and its far half beside it at alpha 1 would
+/// spend 3/2 of a pixel between them, and the far half, of rows farther up, would win the lists'
+/// depth order over the near halves of the rows below. A footprint tells the two cases apart. Where
+/// the slot's sub-samples `open` lie beside the nearer slots (none of theirs), the light it shows,
+/// `through · a`, comes from there; spread evenly over its footprint, it covers `through · a · |fp| /
+/// |open|` of the pixel, which is what it spends (at most `a`, with its colour scaled alike). A slot
+/// wholly behind nearer ones (no open sub-sample: a wall behind an edge) keeps its alpha, filling
+/// what the near field leaves as the budget assumes; so do slots without a footprint.
+#[inline]
+pub fn budget_share(c: [f32; 3], a: f32, through: f32, fp: u32, covered: u32) -> ([f32; 3], f32) {
+    let open = fp & !covered;
+    if fp == footprint::WHOLE || open == 0 {
+        return (c, a);
+    }
+    let share = through * a * fp.count_ones() as f32 / open.count_ones() as f32;
+    if !(share < a) {
+        return (c, a);
+    }
+    let k = share / a;
+    ([c[0] * k, c[1] * k, c[2] * k], share)
+}
+
 /// The state of a pixel's sharp front while its slots are read: none yet.
 const NO_SHARP: u32 = 0;
 /// In-focus slots are being composited into it (each in-focus slot right behind the last).
@@ -108,6 +136,8 @@ pub struct PixelFragments {
     /// The light all valid slots let through so far, and how many there were.
     through: f32,
     valid: u32,
+    /// The sub-samples the valid slots so far cover ([`crate::footprint`]; all for a slot without one).
+    covered: u32,
     /// List fragments yielded so far.
     kept: u32,
     /// 1 while a fragment waits behind the chain fragment just yielded (in `held`).
@@ -137,6 +167,7 @@ impl PixelFragments {
         front_z: f32::NAN,
         through: 1.0,
         valid: 0,
+        covered: 0,
         kept: 0,
         waiting: 0,
         held: NO_FRAGMENT,
@@ -178,11 +209,14 @@ impl PixelFragments {
                 self.clamped += is_clamped(c) as u32;
                 let c = clamp_color(c);
                 self.valid += 1;
+                let fp = if self.k > self.n { footprint::WHOLE } else { input_footprint(layers, p, self.pixel, self.k - 1) };
+                let (spent_c, spent_a) = budget_share(c, a, self.through, fp, self.covered);
+                self.covered |= if fp == footprint::WHOLE { u32::MAX } else { fp };
                 self.through *= 1.0 - a;
-                let f = Fragment::at_pixel(x, y, c, z).with_alpha(a);
-                // In focus as without a footprint: a sharp front stays in its pixel.
+                let f = Fragment::at_pixel(x, y, spent_c, z).with_alpha(spent_a).with_footprint(fp);
+                // In focus as without a footprint: a sharp front stays in its pixel, and keeps the
+                // slot's own colour and alpha.
                 let in_focus = f.radius(&p.lens, p.max_radius) <= 1.0;
-                let f = if self.k > self.n { f } else { f.with_footprint(input_footprint(layers, p, self.pixel, self.k - 1)) };
                 if in_focus && self.state == NO_SHARP {
                     self.front.add(c, a);
                     self.front_z = z;
@@ -319,6 +353,28 @@ mod tests {
     use crate::exec::CpuMem;
     use crate::lens::ThinLens;
     use core::sync::atomic::AtomicU32;
+
+    /// Four surfaces side by side, a sub-sample of a 2x2 grid each, at the composite's alphas 1/4,
+    /// 1/3, 1/2 and 1: each spends a quarter of the pixel, with a quarter of its colour. Behind
+    /// nearer slots, or without a footprint, a slot keeps its alpha.
+    #[test]
+    fn surfaces_side_by_side_spend_the_share_of_the_pixel_they_cover() {
+        let (mut through, mut covered) = (1.0f32, 0u32);
+        for k in 0..4 {
+            let a = 1.0 / (4 - k) as f32;
+            let (c, spent) = budget_share([a, 2.0 * a, 0.0], a, through, 1 << k, covered);
+            assert!((spent - 0.25).abs() < 1e-6 && (c[0] - 0.25).abs() < 1e-6 && (c[1] - 0.5).abs() < 1e-6, "{k}: {c:?} {spent}");
+            through *= 1.0 - a;
+            covered |= 1 << k;
+        }
+        // A wall behind an edge covering two sub-samples: it shows in the other two, and is whole.
+        assert_eq!(budget_share([0.3; 3], 1.0, 0.5, 0b1111, 0b0011), ([0.3; 3], 1.0));
+        // Wholly behind the nearer slots, or without a footprint.
+        assert_eq!(budget_share([0.3; 3], 1.0, 0.5, 0b0011, 0b0011), ([0.3; 3], 1.0));
+        assert_eq!(budget_share([0.3; 3], 1.0, 0.5, footprint::WHOLE, 0b0011), ([0.3; 3], 1.0));
+        // Beside a translucent slot's sub-samples: no more than its own alpha.
+        assert_eq!(budget_share([0.3; 3], 0.6, 1.0, 0b0011, 0b1100), ([0.3; 3], 0.6));
+    }
 
     /// A 1x1 frame with room for `layers` slots; depth 2 is in focus, 5 and the sky are blurred.
     fn params(layers: u32) -> SplatParams {

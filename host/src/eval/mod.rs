@@ -22,7 +22,7 @@ use crate::backend::Backend;
 use crate::error::{Error, Result};
 use crate::layers::RgbImage;
 use crate::metrics::compare;
-use crate::raster::{AccumulateOptions, accumulate, peel_layers};
+use crate::raster::{AccumulateOptions, DeviceMesh, accumulate_with, peel_layers_with};
 use crate::scene::{
     AutoOptions, LayerOptions, ReferenceOptions, SceneLayers, builtin, load_gltf, raycast_layers, reference, reference_auto,
 };
@@ -235,16 +235,14 @@ fn prepare_gltf(path: &str, options: &EvalOptions, backend: &mut dyn Backend) ->
     let lens = settings.thin_lens(&camera)?;
     let raster = mesh.raster();
     let layer_options = LayerOptions { subsamples: options.subsamples, footprints: options.footprints, ..LayerOptions::default() };
-    let ml = peel_layers(backend, &raster, &camera, &lens, near, &layer_options)?.image;
     let samples = if options.quick { 64 } else { 256 };
-    let acc = accumulate(
-        backend,
-        &raster,
-        &camera,
-        &lens,
-        near,
-        &AccumulateOptions { samples, progress: options.progress, ..Default::default() },
-    )?;
+    let acc_options = AccumulateOptions { samples, progress: options.progress, ..Default::default() };
+    // One upload for both (the textures' mip chains are built once).
+    let on_device = DeviceMesh::upload(backend, &raster)?;
+    let both = peel_layers_with(backend, &raster, &on_device, &camera, &lens, near, &layer_options)
+        .and_then(|peeled| Ok((peeled.image, accumulate_with(backend, &raster, &on_device, &camera, &lens, near, &acc_options)?)));
+    on_device.destroy(backend);
+    let (ml, acc) = both?;
     let stem = std::path::Path::new(path).file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
     let name = format!("{stem}-gltf");
     Ok(Prepared {

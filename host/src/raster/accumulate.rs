@@ -76,6 +76,23 @@ pub fn accumulate(
     near: f32,
     options: &AccumulateOptions,
 ) -> Result<Accumulated> {
+    let mesh = DeviceMesh::upload(backend, scene)?;
+    let result = accumulate_with(backend, scene, &mesh, camera, lens, near, options);
+    mesh.destroy(backend);
+    result
+}
+
+/// [`accumulate`] with `scene` already on the device as `mesh` (which it leaves there; see
+/// [`super::peel_layers_with`]).
+pub fn accumulate_with(
+    backend: &mut dyn Backend,
+    scene: &RasterScene,
+    mesh: &DeviceMesh,
+    camera: &Camera,
+    lens: &ThinLens,
+    near: f32,
+    options: &AccumulateOptions,
+) -> Result<Accumulated> {
     let frame = check_view(camera, lens, near)?;
     if options.samples == 0 || options.samples > crate::scene::MAX_SPP {
         return Err(Error::invalid(format!(
@@ -87,29 +104,27 @@ pub fn accumulate(
     frame.check_size("accumulation buffer", 3)?;
     let pixels = frame.width as u64 * frame.height as u64;
     let views = views(options.samples, lens.aperture_radius, options.seed);
-    let mesh = DeviceMesh::upload(backend, scene)?;
     let template = "accumulation buffer [{elapsed_precise}] {wide_bar} {pos}/{len} renders (eta {eta})";
     let bar = Progress::new(options.progress, views.len() as u64, template, "");
     let blended = scene.materials.iter().any(|m| m.flags & ALPHA_BLEND != 0);
     if blended {
-        let result = accumulate_blended(backend, scene, &mesh, &frame, lens, near, &views, bar.as_ref());
-        mesh.destroy(backend);
+        let result = accumulate_blended(backend, scene, mesh, &frame, lens, near, &views, bar.as_ref());
         if let Some(bar) = bar {
             bar.finish_and_clear();
         }
         let (image, times) = result?;
         return Ok(Accumulated { image, samples: options.samples, times });
     }
-    let mut sizes = Pass::sizes(&mesh, pixels, 1).to_vec();
+    let mut sizes = Pass::sizes(mesh, pixels, 1).to_vec();
     sizes.push((3 * pixels, "accum/sum"));
     let result = with_buffers(backend, &sizes, |backend, b| {
-        let pass = Pass::new(backend, &mesh, b, 1)?;
+        let pass = Pass::new(backend, mesh, b, 1)?;
         let sum = b[4];
         backend.fill(sum, 0, 3 * pixels, 0, "accum/sum")?;
         let mut times = Vec::new();
         for (i, view) in views.iter().enumerate() {
-            pass.draw(backend, &mesh, view, &frame, lens, near, false, "accum/draw")?;
-            pass.shade(backend, &mesh, &shade_params(scene, &mesh, &frame, lens, view, ACCUMULATE), sum, "accum/shade")?;
+            pass.draw(backend, mesh, view, &frame, lens, near, false, "accum/draw")?;
+            pass.shade(backend, mesh, &shade_params(scene, mesh, &frame, lens, view, ACCUMULATE), sum, "accum/shade")?;
             if (i + 1) % options.batch.max(1) as usize == 0 || i + 1 == views.len() {
                 times.extend(backend.submit()?);
                 if let Some(bar) = &bar {
@@ -122,7 +137,6 @@ pub fn accumulate(
         image.data.iter_mut().flatten().for_each(|c| *c /= n);
         Ok((image, times))
     });
-    mesh.destroy(backend);
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }

@@ -20,8 +20,8 @@ pub mod peel;
 pub mod peel_context;
 pub mod view;
 
-pub use accumulate::{AccumulateOptions, Accumulated, accumulate};
+pub use accumulate::{AccumulateOptions, Accumulated, accumulate, accumulate_with};
 pub use mesh::{DeviceMesh, RasterScene};
-pub use peel::{Peeled, peel_layers};
+pub use peel::{Peeled, peel_layers, peel_layers_with};
 pub use peel_context::{MeshPeelContext, MeshPeelDesc};
 pub use view::{View, default_near};

@@ -187,6 +187,25 @@ pub fn peel_layers(
     near: f32,
     options: &LayerOptions,
 ) -> Result<Peeled> {
+    let mesh = DeviceMesh::upload(backend, scene)?;
+    let result = peel_layers_with(backend, scene, &mesh, camera, lens, near, options);
+    mesh.destroy(backend);
+    result
+}
+
+/// [`peel_layers`] with `scene` already on the device as `mesh` (which it leaves there): a caller
+/// that also renders its accumulation buffer ([`super::accumulate_with`]) uploads it, and builds
+/// its textures' mip chains, once.
+#[allow(clippy::too_many_arguments)]
+pub fn peel_layers_with(
+    backend: &mut dyn Backend,
+    scene: &RasterScene,
+    mesh: &DeviceMesh,
+    camera: &Camera,
+    lens: &ThinLens,
+    near: f32,
+    options: &LayerOptions,
+) -> Result<Peeled> {
     check_view(camera, lens, near)?;
     let margin = options.guard_band.resolve(|| Ok(auto_margin_mesh(scene.triangle_positions(), camera, lens, near)?))?;
     check_subsamples(options.subsamples)?;
@@ -205,21 +224,20 @@ pub fn peel_layers(
     frame.check_size("multi-layer image", options.max_layers as u64)?;
     let mut full = LayeredImage::new(frame.width, frame.height, options.max_layers)?;
     let pixels = frame.width as u64 * frame.height as u64;
-    let mesh = DeviceMesh::upload(backend, scene)?;
-    let mut sizes = Pass::sizes(&mesh, pixels, pixels).to_vec();
+    let mut sizes = Pass::sizes(mesh, pixels, pixels).to_vec();
     sizes.push((LAYER_WORDS as u64 * pixels, "peel/layer"));
     let result = with_buffers(backend, &sizes, |backend, b| {
-        let pass = Pass::new(backend, &mesh, b, pixels)?;
+        let pass = Pass::new(backend, mesh, b, pixels)?;
         let layer = b[4];
         let view = View::default();
-        let shade = shade_params(scene, &mesh, &frame, lens, &view, LAYER);
+        let shade = shade_params(scene, mesh, &frame, lens, &view, LAYER);
         let mut times = Vec::new();
         let mut passes = 0;
         let layers = options.max_layers as usize;
         let most = peel_passes(options.max_layers, options.translucent_passes)?;
         for k in 0..most {
-            pass.draw(backend, &mesh, &view, &frame, lens, near, k > 0, &format!("peel/draw {k}"))?;
-            pass.shade(backend, &mesh, &shade, layer, &format!("peel/shade {k}"))?;
+            pass.draw(backend, mesh, &view, &frame, lens, near, k > 0, &format!("peel/draw {k}"))?;
+            pass.shade(backend, mesh, &shade, layer, &format!("peel/shade {k}"))?;
             times.extend(backend.submit()?);
             passes += 1;
             let words = backend.read_buffer(layer, 0, LAYER_WORDS as u64 * pixels)?;
@@ -255,7 +273,6 @@ pub fn peel_layers(
         }
         Ok((passes, times))
     });
-    mesh.destroy(backend);
     let (passes, times) = result?;
     let full = if side > 1 { resolve_subsamples(&full, side, options.max_layers, options.edge_depth_ratio)? } else { full };
     let full = if options.footprints { full } else { full.without_footprints() };

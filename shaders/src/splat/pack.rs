@@ -213,10 +213,10 @@ impl PixelFragments {
                 let (spent_c, spent_a) = budget_share(c, a, self.through, fp, self.covered);
                 self.covered |= if fp == footprint::WHOLE { u32::MAX } else { fp };
                 self.through *= 1.0 - a;
-                let f = Fragment::at_pixel(x, y, spent_c, z).with_alpha(spent_a).with_footprint(fp);
                 // In focus as without a footprint: a sharp front stays in its pixel, and keeps the
                 // slot's own colour and alpha.
-                let in_focus = f.radius(&p.lens, p.max_radius) <= 1.0;
+                let in_focus = Fragment::at_pixel(x, y, c, z).radius(&p.lens, p.max_radius) <= 1.0;
+                let f = Fragment::at_pixel(x, y, spent_c, z).with_alpha(spent_a).with_footprint(fp);
                 if in_focus && self.state == NO_SHARP {
                     self.front.add(c, a);
                     self.front_z = z;

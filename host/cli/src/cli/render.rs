@@ -8,7 +8,7 @@ use dof::layers::RgbImage;
 use dof::layers::{LayeredImage, crop_plane};
 use dof::methods::one_shot::one_shot;
 use dof::methods::splat::Merge;
-use dof::raster::{AccumulateOptions, accumulate, default_near, peel_layers};
+use dof::raster::{AccumulateOptions, DeviceMesh, accumulate_with, default_near, peel_layers_with};
 use dof::scene::ExrInput;
 use dof::scene::{
     self, Aperture, AutoOptions, Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, MeshScene, ReferenceOptions,
@@ -916,33 +916,35 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let mut b = backend(args.backend)?;
     let raster = mesh.raster();
     let options = args.layer_options(args.guard_band);
-    let peeled = peel_layers(b.as_mut(), &raster, &camera, &lens, near, &options)?;
-    let ms: f64 = peeled.times.iter().map(|t| t.ms).sum();
-    println!("depth peeling on {}: {} passes, {ms:.2} ms", b.device_name(), peeled.passes);
-    let deep_stacks = peeled.image.layers.full_and_translucent();
-    if deep_stacks > 0 {
-        eprintln!(
-            "note: {deep_stacks} pixel(s) fill all {} layers with translucent surfaces and still let light through after {} \
-             passes: what lies behind them is left out (black); raise --translucent-passes (or --layers)",
-            options.max_layers, peeled.passes
-        );
-    }
-    match args.method {
-        Method::Pinhole => write_with_planes(args, out, &peeled.image.front().0, &peeled.image, &lens),
-        Method::Reference => {
-            let samples = args.samples.unwrap_or(256);
-            let acc = accumulate(
-                b.as_mut(),
-                &raster,
-                &camera,
-                &lens,
-                near,
-                &AccumulateOptions { samples, progress: true, ..Default::default() },
-            )?;
-            let ms: f64 = acc.times.iter().map(|t| t.ms).sum();
-            println!("accumulation buffer on {}: {samples} renders, {ms:.2} ms", b.device_name());
-            write_with_planes(args, out, &acc.image, &peeled.image, &lens)
+    // The peel and the accumulation buffer share one upload (the textures' mip chains are built once).
+    let on_device = DeviceMesh::upload(b.as_mut(), &raster)?;
+    let result = (|| -> anyhow::Result<_> {
+        let peeled = peel_layers_with(b.as_mut(), &raster, &on_device, &camera, &lens, near, &options)?;
+        let ms: f64 = peeled.times.iter().map(|t| t.ms).sum();
+        println!("depth peeling on {}: {} passes, {ms:.2} ms", b.device_name(), peeled.passes);
+        let deep_stacks = peeled.image.layers.full_and_translucent();
+        if deep_stacks > 0 {
+            eprintln!(
+                "note: {deep_stacks} pixel(s) fill all {} layers with translucent surfaces and still let light through after {} \
+                 passes: what lies behind them is left out (black); raise --translucent-passes (or --layers)",
+                options.max_layers, peeled.passes
+            );
         }
+        if args.method != Method::Reference {
+            return Ok((peeled, None));
+        }
+        let samples = args.samples.unwrap_or(256);
+        let acc_options = AccumulateOptions { samples, progress: true, ..Default::default() };
+        let acc = accumulate_with(b.as_mut(), &raster, &on_device, &camera, &lens, near, &acc_options)?;
+        let ms: f64 = acc.times.iter().map(|t| t.ms).sum();
+        println!("accumulation buffer on {}: {samples} renders, {ms:.2} ms", b.device_name());
+        Ok((peeled, Some(acc.image)))
+    })();
+    on_device.destroy(b.as_mut());
+    let (peeled, reference) = result?;
+    match (args.method, reference) {
+        (_, Some(reference)) => write_with_planes(args, out, &reference, &peeled.image, &lens),
+        (Method::Pinhole, None) => write_with_planes(args, out, &peeled.image.front().0, &peeled.image, &lens),
         _ => render_layers(args, out, &peeled.image, &lens),
     }
 }

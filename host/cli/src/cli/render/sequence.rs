@@ -19,6 +19,7 @@
 //! their frame's lens.
 
 use super::*;
+use dof::raster::{accumulate, peel_layers};
 use dof::io::GifPreview;
 use dof::methods::one_shot::{Runner, method_input};
 use dof::scene::guard_band::{auto_margin, auto_margin_mesh};

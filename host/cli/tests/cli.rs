@@ -1724,3 +1724,25 @@ fn huge_gltf_coordinates_shade_right_or_are_refused() {
         "beyond ±1e12 units",
     );
 }
+
+/// `--translucent-passes` is refused where it would do nothing, and its bound before the scene is read.
+#[test]
+fn translucent_passes_apply_to_peeled_scenes_only() {
+    assert_fails_with(&["render", "--scene", "fence", "--translucent-passes", "8"], "applies to glTF scenes");
+    // A file that does not exist: the bound is refused before it is opened.
+    assert_fails_with(&["render", "--scene", "/nonexistent/model.glb", "--translucent-passes", "1021"], "more than 1024 peeling passes");
+    let scene = glb("simple", "simple-passes.glb");
+    let out = temp("passes.exr");
+    let o = dof(&[
+        "render",
+        "--scene",
+        scene.to_str().unwrap(),
+        "--method",
+        "pinhole",
+        "--translucent-passes",
+        "0",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}

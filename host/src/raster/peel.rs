@@ -62,7 +62,7 @@ pub const MAX_PASSES: u32 = 1024;
 
 /// Passes a frame for `max_layers` slots and `translucent_passes` more
 /// (`LayerOptions::translucent_passes`), refused beyond [`MAX_PASSES`].
-pub(crate) fn peel_passes(max_layers: u32, translucent_passes: u32) -> Result<u32> {
+pub fn peel_passes(max_layers: u32, translucent_passes: u32) -> Result<u32> {
     max_layers.checked_add(translucent_passes).filter(|&p| p <= MAX_PASSES).ok_or_else(|| {
         Error::invalid(format!(
             "{max_layers} layers and {translucent_passes} translucent passes make more than {MAX_PASSES} peeling passes a frame"

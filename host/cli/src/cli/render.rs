@@ -8,7 +8,7 @@ use dof::layers::RgbImage;
 use dof::layers::{LayeredImage, crop_plane};
 use dof::methods::one_shot::one_shot;
 use dof::methods::splat::Merge;
-use dof::raster::{AccumulateOptions, DeviceMesh, accumulate_with, default_near, peel_layers_with};
+use dof::raster::{AccumulateOptions, DeviceMesh, accumulate_with, default_near, peel_layers_with, peel_passes};
 use dof::scene::ExrInput;
 use dof::scene::{
     self, Aperture, AutoOptions, Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, MeshScene, ReferenceOptions,
@@ -157,7 +157,8 @@ pub struct RenderArgs {
     layers: u32,
     /// glTF scenes: peeling passes past --layers that composite a translucent stack deeper than the
     /// layers into each pixel's last one, in depth order (at most 1024 passes with --layers; a
-    /// pass no pixel needs draws nothing). Built-in scenes keep such a stack whole without them.
+    /// pass no pixel needs draws nothing). Refused for other inputs: built-in scenes keep such a
+    /// stack whole without them.
     #[arg(long, default_value_t = LayerOptions::default().translucent_passes)]
     translucent_passes: u32,
     /// Sub-samples a pixel of the multi-layer image (built-in and glTF scenes): 1 (point-sampled:
@@ -293,7 +294,19 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
             bail!("--frames: deep EXR files given together are one frame; a sequence is named by one pattern");
         }
     }
-    if args.scene().to_ascii_lowercase().ends_with(".exr") {
+    let lower = args.scene().to_ascii_lowercase();
+    let translucent_passes = args.translucent_passes != LayerOptions::default().translucent_passes;
+    if lower.ends_with(".gltf") || lower.ends_with(".glb") {
+        // Refused before the scene is loaded.
+        peel_passes(args.layers, args.translucent_passes)?;
+    } else if translucent_passes {
+        bail!(
+            "--translucent-passes applies to glTF scenes, whose layers are peeled; {} is not one (a built-in scene keeps a \
+             translucent stack whole without it, an EXR brings its own layers)",
+            args.scene()
+        );
+    }
+    if lower.ends_with(".exr") {
         // The layer budget applies to deep input, whose layers are made here.
         let first = match sequence::plan(args)? {
             Some(plan) => plan.files.get(plan.selected.start).cloned(),

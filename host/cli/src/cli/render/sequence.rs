@@ -19,9 +19,9 @@
 //! their frame's lens.
 
 use super::*;
-use dof::raster::{accumulate, peel_layers};
 use dof::io::GifPreview;
 use dof::methods::one_shot::{Runner, method_input};
+use dof::raster::{accumulate, peel_layers};
 use dof::scene::guard_band::{auto_margin, auto_margin_mesh};
 
 /// Most frames of a sequence.

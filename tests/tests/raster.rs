@@ -535,3 +535,39 @@ fn vertex_colours_multiply_the_base_colour() {
         assert!((front.alpha - rgba[3]).abs() < 1e-3 && (front.depth - 2.0).abs() < 1e-3, "{front:?}");
     }
 }
+
+/// `LayerOptions::texture_probes` bounds the probes a minified lookup takes: on a noisy texture
+/// running to the horizon, one probe (a trilinear lookup), 16 and the default 64 give three
+/// different images, 64 the default's; outside 1 to 64 the peel is refused.
+#[test]
+fn the_texture_probe_budget_is_honoured() {
+    let one_sample = LayerOptions { subsamples: 1, ..all_layers() };
+    let n = 512;
+    let noise = (0..n * n)
+        .map(|i: u32| {
+            let v = (dof::stress::hash(i) % 1000) as f32 / 1000.0;
+            [v, v, v, 1.0]
+        })
+        .collect();
+    let mut m =
+        MeshScene { texels: noise, textures: vec![TextureInfo { offset: 0, width: n, height: n, sampler: 0 }], ..MeshScene::default() };
+    let mat = m.material(MeshMaterial { base_texture: 0, flags: UNLIT | DOUBLE_SIDED, ..unlit([1.0; 3]) });
+    m.quad(Vec3::new(-4.0, -1.0, -1.5), Vec3::new(8.0, 0.0, 0.0), Vec3::new(0.0, 0.0, -30.0), mat);
+    let front = |probes: u32| {
+        let options = LayerOptions { texture_probes: probes, ..one_sample };
+        let out = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &options).unwrap();
+        out.image.layers.front().0.data
+    };
+    let (one, sixteen, full) = (front(1), front(16), front(64));
+    assert!(one != sixteen && sixteen != full && one != full);
+    let default = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &one_sample).unwrap();
+    assert!(default.image.layers.front().0.data == full);
+    for probes in [0, 65] {
+        let options = LayerOptions { texture_probes: probes, ..one_sample };
+        let Err(e) = peel_layers(&mut CpuBackend::new(), &m.raster(), &camera(), &lens(0.0, 5.0), 0.01, &options) else {
+            panic!("{probes} probes accepted")
+        };
+        let e = e.to_string();
+        assert!(e.contains("probes"), "{e}");
+    }
+}

@@ -1746,3 +1746,12 @@ fn translucent_passes_apply_to_peeled_scenes_only() {
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }
+
+/// `--texture-probes` is bounded, and refused where no texture is filtered.
+#[test]
+fn texture_probes_are_bounded_and_apply_to_gltf_only() {
+    assert_fails_with(&["render", "--scene", "fence", "--texture-probes", "8"], "applies to glTF scenes");
+    for n in ["0", "65"] {
+        assert_fails_with(&["render", "--scene", "/nonexistent/model.glb", "--texture-probes", n], "1 to 64 probes");
+    }
+}

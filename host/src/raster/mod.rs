@@ -22,6 +22,6 @@ pub mod view;
 
 pub use accumulate::{AccumulateOptions, Accumulated, accumulate, accumulate_with};
 pub use mesh::{DeviceMesh, RasterScene};
-pub use peel::{MAX_PASSES, Peeled, peel_layers, peel_layers_with, peel_passes};
+pub use peel::{MAX_PASSES, Peeled, check_texture_probes, peel_layers, peel_layers_with, peel_passes};
 pub use peel_context::{MeshPeelContext, MeshPeelDesc};
 pub use view::{View, default_near};

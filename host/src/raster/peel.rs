@@ -32,7 +32,8 @@ use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::{behind, is_surface, slot_kept, takes_more, target_slot};
 use dof_shaders::raster::draw::{RASTER_DRAW, VIS_WORDS};
 use dof_shaders::raster::project::RasterParams;
-use dof_shaders::raster::shade::{LAYER, LAYER_WORDS, RASTER_SHADE, ShadeParams, raster_shade};
+use dof_shaders::raster::shade::{LAYER, LAYER_WORDS, RASTER_SHADE, ShadeParams, mode_word, raster_shade};
+use dof_shaders::raster::texture::MAX_PROBES;
 use dof_shaders::resolve::grid_side;
 
 /// The peeled image and what it cost.
@@ -68,6 +69,15 @@ pub fn peel_passes(max_layers: u32, translucent_passes: u32) -> Result<u32> {
             "{max_layers} layers and {translucent_passes} translucent passes make more than {MAX_PASSES} peeling passes a frame"
         ))
     })
+}
+
+/// Refuses a texture probe budget outside 1 ..= [`MAX_PROBES`] (`LayerOptions::texture_probes`).
+pub fn check_texture_probes(probes: u32) -> Result<()> {
+    if (1..=MAX_PROBES).contains(&probes) {
+        Ok(())
+    } else {
+        Err(Error::invalid(format!("a texture lookup takes 1 to {MAX_PROBES} probes, got {probes}")))
+    }
 }
 
 /// The shading pass's constants for a view.
@@ -215,6 +225,7 @@ pub fn peel_layers_with(
     let coarse = camera.overscan(margin).frame()?;
     let fine_camera = sub_sample_camera(camera, side);
     let frame = fine_camera.overscan(margin * side).frame()?;
+    check_texture_probes(options.texture_probes)?;
     if options.max_layers == 0 || !(options.edge_depth_ratio >= 0.0) {
         return Err(Error::invalid(format!(
             "need at least one layer and a non-negative edge ratio, got {} and {}",
@@ -230,7 +241,7 @@ pub fn peel_layers_with(
         let pass = Pass::new(backend, mesh, b, pixels)?;
         let layer = b[4];
         let view = View::default();
-        let shade = shade_params(scene, mesh, &frame, lens, &view, LAYER);
+        let shade = shade_params(scene, mesh, &frame, lens, &view, mode_word(LAYER, options.texture_probes));
         let mut times = Vec::new();
         let mut passes = 0;
         let layers = options.max_layers as usize;

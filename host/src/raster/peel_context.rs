@@ -26,7 +26,7 @@ use dof_shaders::lens::ThinLens;
 use dof_shaders::peel::BandParams;
 use dof_shaders::raster::draw::{RASTER_DRAW, RASTER_FALLBACK, RASTER_SETUP, VIS_WORDS};
 use dof_shaders::raster::mesh::Light;
-use dof_shaders::raster::shade::{LAYER, RASTER_SHADE, ShadeParams};
+use dof_shaders::raster::shade::{LAYER, RASTER_SHADE, ShadeParams, mode_word};
 use dof_shaders::resolve::grid_side;
 
 /// What a mesh peel context is made for.
@@ -54,6 +54,8 @@ pub struct MeshPeelDesc {
     /// With sub-samples, the resolved slots carry each fragment's footprint
     /// (`LayerOptions::footprints`; [`MeshPeelContext::footprint_side`]).
     pub footprints: bool,
+    /// The most probes a minified texture lookup takes (`LayerOptions::texture_probes`).
+    pub texture_probes: u32,
 }
 
 impl MeshPeelDesc {
@@ -73,6 +75,7 @@ impl MeshPeelDesc {
             edge_depth_ratio: options.edge_depth_ratio,
             disocclusion: options.disocclusion,
             subsamples: options.subsamples,
+            texture_probes: options.texture_probes,
             footprints: options.footprints,
         }
     }
@@ -112,6 +115,7 @@ impl MeshPeelContext {
         let passes = desc.passes()?;
         scene.validate()?;
         check_subsamples(desc.subsamples)?;
+        super::peel::check_texture_probes(desc.texture_probes)?;
         let side = grid_side(desc.subsamples);
         let margin = desc.guard_band.resolve(|| Ok(auto_margin_mesh(scene.triangle_positions(), camera, lens, desc.near)?))?;
         let frame = camera.overscan(margin).frame()?;
@@ -250,7 +254,7 @@ impl MeshPeelContext {
         let shade = push_words(&ShadeParams {
             light: self.light,
             eye: view.eye(&frame).to_array(),
-            mode: LAYER,
+            mode: mode_word(LAYER, self.desc.texture_probes),
             lens: *lens,
             footprint_per_depth: frame.tan_half_fov / frame.height as f32,
             width: frame.width,

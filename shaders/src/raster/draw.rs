@@ -69,7 +69,7 @@ pub fn coverage(
 ) -> f32 {
     let at = material * MATERIAL_WORDS;
     let base_texture = materials.load(at + 8);
-    load_f32(materials, at + 3) * sample(textures, texels, p.textures, base_texture, uv.0, uv.1, UvFootprint::POINT)[3] * vertex_alpha
+    load_f32(materials, at + 3) * sample(textures, texels, p.textures, base_texture, uv.0, uv.1, UvFootprint::POINT, 1)[3] * vertex_alpha
 }
 
 /// Whether a fragment of triangle `t` at planar depth `depth` is kept (module docs).

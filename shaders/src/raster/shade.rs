@@ -15,17 +15,36 @@
 use super::draw::{VIS_WORDS, interpolate_color, interpolate_uv};
 use super::mesh::{ALPHA_BLEND, Light, MATERIAL_WORDS, UNLIT, VERTEX_WORDS};
 use super::project::{cross, dot, sub, triangle, vertex_position};
-use super::texture::{UvFootprint, load_f32, sample};
+use super::texture::{MAX_PROBES, UvFootprint, load_f32, sample};
 use crate::exec::{Group, Load, Mem};
 use crate::lens::ThinLens;
 use crate::math::{absf, sqrt};
 use crate::peel::{background_seen, next_reach};
 use crate::wg::for_each_item;
 
-/// [`ShadeParams::mode`]: write layer `(r, g, b, alpha, depth)` and the next reach.
+/// [`ShadeParams::mode`]'s pass: write layer `(r, g, b, alpha, depth)` and the next reach.
 pub const LAYER: u32 = 0;
-/// Add `alpha · (r, g, b)` into the accumulation buffer (3 words a pixel).
+/// [`ShadeParams::mode`]'s pass: add `alpha · (r, g, b)` into the accumulation buffer (3 words a pixel).
 pub const ACCUMULATE: u32 = 1;
+/// The bits of [`ShadeParams::mode`] that hold the pass.
+const PASS_MASK: u32 = 0xff;
+/// Where [`ShadeParams::mode`] holds the most probes a minified texture lookup takes (8 bits; 0:
+/// [`MAX_PROBES`], the box filter in full).
+const PROBES_SHIFT: u32 = 8;
+
+/// The `mode` word of a `pass` ([`LAYER`] or [`ACCUMULATE`]) whose minified texture lookups take
+/// at most `probes` probes (clamped to 1 ..= [`MAX_PROBES`]; 1: one trilinear lookup at the level
+/// of the footprint's longer side, a GPU's isotropic filter).
+pub fn mode_word(pass: u32, probes: u32) -> u32 {
+    let probes = if probes < 1 {
+        1
+    } else if probes > MAX_PROBES {
+        MAX_PROBES
+    } else {
+        probes
+    };
+    (pass & PASS_MASK) | probes << PROBES_SHIFT
+}
 /// Words a pixel of a layer.
 pub const LAYER_WORDS: u32 = 5;
 
@@ -35,6 +54,7 @@ pub struct ShadeParams {
     pub light: Light,
     /// The eye the pass saw from (normals are turned to face it).
     pub eye: [f32; 3],
+    /// The pass and the texture probe budget ([`mode_word`]).
     pub mode: u32,
     pub lens: ThinLens,
     /// Pixel footprint radius per unit of depth (`tan(yfov/2) / height`).
@@ -48,6 +68,21 @@ pub struct ShadeParams {
 }
 
 const _: () = assert!(core::mem::size_of::<ShadeParams>() <= 128);
+
+impl ShadeParams {
+    /// The pass: [`LAYER`] or [`ACCUMULATE`].
+    #[inline]
+    pub fn pass(&self) -> u32 {
+        self.mode & PASS_MASK
+    }
+
+    /// The most probes a minified texture lookup takes.
+    #[inline]
+    pub fn probes(&self) -> u32 {
+        let n = self.mode >> PROBES_SHIFT & PASS_MASK;
+        if n == 0 || n > MAX_PROBES { MAX_PROBES } else { n }
+    }
+}
 
 fn normalize(v: [f32; 3]) -> [f32; 3] {
     let l = sqrt(dot(v, v));
@@ -109,13 +144,15 @@ fn corner_uvs(vertices: &impl Load, tri: [u32; 4]) -> [(f32, f32); 3] {
 
 /// Radiance and coverage of triangle `t` at barycentrics `(b0, b1)` seen from `eye`, its textures
 /// filtered over the pixel's square, `pixel_width` across at its depth, its sides along the
-/// image's axes (`camera`, the camera's orientation; width 0: read at their finest level).
+/// image's axes (`camera`, the camera's orientation; width 0: read at their finest level) with at
+/// most `probes` probes a lookup.
 #[allow(clippy::too_many_arguments)]
 pub fn shade_point(
     light: &Light,
     eye: [f32; 3],
     camera: [f32; 4],
     texture_count: u32,
+    probes: u32,
     t: u32,
     b0: f32,
     b1: f32,
@@ -156,8 +193,8 @@ pub fn shade_point(
     } else {
         UvFootprint::POINT
     };
-    let base_tex = sample(textures, texels, texture_count, base_index, uv.0, uv.1, footprint);
-    let emit_tex = sample(textures, texels, texture_count, emit_index, uv.0, uv.1, footprint);
+    let base_tex = sample(textures, texels, texture_count, base_index, uv.0, uv.1, footprint, probes);
+    let emit_tex = sample(textures, texels, texture_count, emit_index, uv.0, uv.1, footprint, probes);
     let vertex = interpolate_color(vertices, tri, b0, b1);
     let flags = materials.load(at + 10);
     let lambert = dot(n, light.direction).max(0.0);
@@ -200,6 +237,7 @@ pub fn shade_pass<G: Group, R: Load, M: Mem>(
                 p.eye,
                 p.camera,
                 p.textures,
+                p.probes(),
                 id - 1,
                 b0,
                 b1,
@@ -211,12 +249,12 @@ pub fn shade_pass<G: Group, R: Load, M: Mem>(
                 &texels,
             );
             (rgb, alpha, depth)
-        } else if p.mode == ACCUMULATE || background_seen(f32::from_bits(reach.load(pi))) {
+        } else if p.pass() == ACCUMULATE || background_seen(f32::from_bits(reach.load(pi))) {
             (p.light.background, 1.0, f32::INFINITY)
         } else {
             ([0.0; 3], 0.0, f32::INFINITY)
         };
-        if p.mode == ACCUMULATE {
+        if p.pass() == ACCUMULATE {
             let mut j = 0usize;
             while j < 3 {
                 let i = 3 * pi + j as u32;

@@ -173,9 +173,10 @@ impl Level {
     }
 }
 
-/// Texture `index` at `(u, v)` (glTF UVs: origin at the top left) filtered over `footprint`;
-/// white for [`NO_TEXTURE`] or an index past the table, so a factor times a missing texture is
-/// the factor.
+/// Texture `index` at `(u, v)` (glTF UVs: origin at the top left) filtered over `footprint` with
+/// at most `probes` probes (at most [`MAX_PROBES`]); white for [`NO_TEXTURE`] or an index past the
+/// table, so a factor times a missing texture is the factor.
+#[allow(clippy::too_many_arguments)]
 pub fn sample(
     textures: &impl Load,
     texels: &impl Load,
@@ -184,12 +185,14 @@ pub fn sample(
     u: f32,
     v: f32,
     footprint: UvFootprint,
+    probes: u32,
 ) -> [f32; 4] {
-    let c = filtered(textures, texels, texture_count, index, u, v, footprint);
+    let c = filtered(textures, texels, texture_count, index, u, v, footprint, probes);
     [c.r, c.g, c.b, c.a]
 }
 
-fn filtered(textures: &impl Load, texels: &impl Load, texture_count: u32, index: u32, u: f32, v: f32, f: UvFootprint) -> Rgba {
+#[allow(clippy::too_many_arguments)]
+fn filtered(textures: &impl Load, texels: &impl Load, texture_count: u32, index: u32, u: f32, v: f32, f: UvFootprint, probes: u32) -> Rgba {
     if index == NO_TEXTURE || index >= texture_count {
         return Rgba::WHITE;
     }
@@ -212,14 +215,20 @@ fn filtered(textures: &impl Load, texels: &impl Load, texture_count: u32, index:
     // Magnified (or no footprint): one read of the finest level, as the sampler says. Minified:
     // about a probe a texel along each side, within the budgets, at the level the spacing fits.
     let magnified = !(longest > 1.0) || !crate::lens::is_finite(longest);
+    // A budget below the full one keeps the probes' square shape: at most √most across.
+    let most = if probes < MAX_PROBES { probes } else { MAX_PROBES };
+    let mut across = 1;
+    while across < MAX_PROBES_ACROSS && (across + 1) * (across + 1) <= most {
+        across += 1;
+    }
     let (na, nb) = if magnified {
         (1, 1)
     } else if la >= lb {
-        let nb = probes_along(lb, MAX_PROBES_ACROSS);
-        (probes_along(la, MAX_PROBES / nb), nb)
+        let nb = probes_along(lb, across);
+        (probes_along(la, most / nb), nb)
     } else {
-        let na = probes_along(la, MAX_PROBES_ACROSS);
-        (na, probes_along(lb, MAX_PROBES / na))
+        let na = probes_along(la, across);
+        (na, probes_along(lb, most / na))
     };
     let spacing = if magnified { 1.0 } else { maxf(la / na as f32, lb / nb as f32) };
     let lod = if spacing > 1.0 { log2_level(spacing) } else { 0.0 };

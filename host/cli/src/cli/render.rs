@@ -8,7 +8,7 @@ use dof::layers::RgbImage;
 use dof::layers::{LayeredImage, crop_plane};
 use dof::methods::one_shot::one_shot;
 use dof::methods::splat::Merge;
-use dof::raster::{AccumulateOptions, DeviceMesh, accumulate_with, default_near, peel_layers_with, peel_passes};
+use dof::raster::{AccumulateOptions, DeviceMesh, accumulate_with, check_texture_probes, default_near, peel_layers_with, peel_passes};
 use dof::scene::ExrInput;
 use dof::scene::{
     self, Aperture, AutoOptions, Camera, Focus, GuardBand, LayerOptions, LensSettings, MAX_GUARD_BAND, MeshScene, ReferenceOptions,
@@ -161,6 +161,11 @@ pub struct RenderArgs {
     /// stack whole without them.
     #[arg(long, default_value_t = LayerOptions::default().translucent_passes)]
     translucent_passes: u32,
+    /// glTF scenes: the most probes a minified texture lookup takes, 1 to 64 (64: the box filter
+    /// over the pixel's footprint; 1: one trilinear lookup, a GPU's isotropic filter, which blurs
+    /// up to twice as wide). The reference always filters in full.
+    #[arg(long, default_value_t = LayerOptions::default().texture_probes)]
+    texture_probes: u32,
     /// Sub-samples a pixel of the multi-layer image (built-in and glTF scenes): 1 (point-sampled:
     /// the pixel centre's ray or peel), 4, 9 or 16 (a stratified grid, resolved by depth clusters
     /// into fragments of partial coverage; see docs/scenes-and-references.md).
@@ -237,6 +242,7 @@ impl RenderArgs {
             guard_band,
             subsamples: self.subsamples,
             footprints: !self.no_footprints,
+            texture_probes: self.texture_probes,
             ..Default::default()
         }
     }
@@ -296,9 +302,13 @@ fn check_before_work(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     }
     let lower = args.scene().to_ascii_lowercase();
     let translucent_passes = args.translucent_passes != LayerOptions::default().translucent_passes;
+    let texture_probes = args.texture_probes != LayerOptions::default().texture_probes;
     if lower.ends_with(".gltf") || lower.ends_with(".glb") {
         // Refused before the scene is loaded.
         peel_passes(args.layers, args.translucent_passes)?;
+        check_texture_probes(args.texture_probes)?;
+    } else if texture_probes {
+        bail!("--texture-probes applies to glTF scenes, whose textures are filtered here; {} is not one", args.scene());
     } else if translucent_passes {
         bail!(
             "--translucent-passes applies to glTF scenes, whose layers are peeled; {} is not one (a built-in scene keeps a \

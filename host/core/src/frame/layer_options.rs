@@ -38,6 +38,11 @@ pub struct LayerOptions {
     /// fragment stands for its whole pixel (4 bytes a slot less; what the methods other than
     /// splatting read either way).
     pub footprints: bool,
+    /// Meshes only: the most probes a minified texture lookup takes (1 to 64; default 64, the box
+    /// filter over the pixel's footprint; 1: one trilinear lookup, a GPU's isotropic filter, which
+    /// blurs up to twice as wide). A viewer trades texture accuracy for shading time here; the
+    /// accumulation buffer always filters in full.
+    pub texture_probes: u32,
 }
 
 impl Default for LayerOptions {
@@ -51,6 +56,7 @@ impl Default for LayerOptions {
             guard_band: GuardBand::Auto,
             subsamples: 1,
             footprints: true,
+            texture_probes: dof_shaders::raster::texture::MAX_PROBES,
         }
     }
 }

@@ -237,12 +237,10 @@ fn prepare_gltf(path: &str, options: &EvalOptions, backend: &mut dyn Backend) ->
     let layer_options = LayerOptions { subsamples: options.subsamples, footprints: options.footprints, ..LayerOptions::default() };
     let samples = if options.quick { 64 } else { 256 };
     let acc_options = AccumulateOptions { samples, progress: options.progress, ..Default::default() };
-    // One upload for both (the textures' mip chains are built once).
-    let on_device = DeviceMesh::upload(backend, &raster)?;
-    let both = peel_layers_with(backend, &raster, &on_device, &camera, &lens, near, &layer_options)
-        .and_then(|peeled| Ok((peeled.image, accumulate_with(backend, &raster, &on_device, &camera, &lens, near, &acc_options)?)));
-    on_device.destroy(backend);
-    let (ml, acc) = both?;
+    let (ml, acc) = DeviceMesh::scoped(backend, &raster, |backend, mesh| {
+        let peeled = peel_layers_with(backend, &raster, mesh, &camera, &lens, near, &layer_options)?;
+        Ok((peeled.image, accumulate_with(backend, &raster, mesh, &camera, &lens, near, &acc_options)?))
+    })?;
     let stem = std::path::Path::new(path).file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
     let name = format!("{stem}-gltf");
     Ok(Prepared {

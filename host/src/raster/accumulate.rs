@@ -76,14 +76,11 @@ pub fn accumulate(
     near: f32,
     options: &AccumulateOptions,
 ) -> Result<Accumulated> {
-    let mesh = DeviceMesh::upload(backend, scene)?;
-    let result = accumulate_with(backend, scene, &mesh, camera, lens, near, options);
-    mesh.destroy(backend);
-    result
+    DeviceMesh::scoped(backend, scene, |backend, mesh| accumulate_with(backend, scene, mesh, camera, lens, near, options))
 }
 
-/// [`accumulate`] with `scene` already on the device as `mesh` (which it leaves there; see
-/// [`super::peel_layers_with`]).
+/// [`accumulate`] with `scene` already on the device as `mesh`, which it leaves there
+/// ([`DeviceMesh::scoped`]).
 pub fn accumulate_with(
     backend: &mut dyn Backend,
     scene: &RasterScene,

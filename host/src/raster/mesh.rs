@@ -176,6 +176,20 @@ impl DeviceMesh {
         })
     }
 
+    /// Runs `f` with `scene` uploaded ([`DeviceMesh::upload`]), and frees it after, whatever `f`
+    /// returned: one upload for several passes over a scene (a peel and its accumulation buffer
+    /// build the textures' mip chains once).
+    pub fn scoped<T>(
+        backend: &mut dyn Backend,
+        scene: &RasterScene,
+        f: impl FnOnce(&mut dyn Backend, &DeviceMesh) -> Result<T>,
+    ) -> Result<T> {
+        let mesh = DeviceMesh::upload(backend, scene)?;
+        let result = f(backend, &mesh);
+        mesh.destroy(backend);
+        result
+    }
+
     pub fn destroy(self, backend: &mut dyn Backend) {
         for b in self.buffers {
             backend.destroy_buffer(b);

@@ -197,15 +197,11 @@ pub fn peel_layers(
     near: f32,
     options: &LayerOptions,
 ) -> Result<Peeled> {
-    let mesh = DeviceMesh::upload(backend, scene)?;
-    let result = peel_layers_with(backend, scene, &mesh, camera, lens, near, options);
-    mesh.destroy(backend);
-    result
+    DeviceMesh::scoped(backend, scene, |backend, mesh| peel_layers_with(backend, scene, mesh, camera, lens, near, options))
 }
 
-/// [`peel_layers`] with `scene` already on the device as `mesh` (which it leaves there): a caller
-/// that also renders its accumulation buffer ([`super::accumulate_with`]) uploads it, and builds
-/// its textures' mip chains, once.
+/// [`peel_layers`] with `scene` already on the device as `mesh`, which it leaves there
+/// ([`DeviceMesh::scoped`]).
 #[allow(clippy::too_many_arguments)]
 pub fn peel_layers_with(
     backend: &mut dyn Backend,

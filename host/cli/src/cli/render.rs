@@ -939,10 +939,9 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
     let mut b = backend(args.backend)?;
     let raster = mesh.raster();
     let options = args.layer_options(args.guard_band);
-    // The peel and the accumulation buffer share one upload (the textures' mip chains are built once).
-    let on_device = DeviceMesh::upload(b.as_mut(), &raster)?;
-    let result = (|| -> anyhow::Result<_> {
-        let peeled = peel_layers_with(b.as_mut(), &raster, &on_device, &camera, &lens, near, &options)?;
+    // The peel and the accumulation buffer share one upload.
+    let (peeled, reference) = DeviceMesh::scoped(b.as_mut(), &raster, |b, mesh| {
+        let peeled = peel_layers_with(b, &raster, mesh, &camera, &lens, near, &options)?;
         let ms: f64 = peeled.times.iter().map(|t| t.ms).sum();
         println!("depth peeling on {}: {} passes, {ms:.2} ms", b.device_name(), peeled.passes);
         let deep_stacks = peeled.image.layers.full_and_translucent();
@@ -958,13 +957,11 @@ fn render_gltf(args: &RenderArgs, out: &Path) -> anyhow::Result<()> {
         }
         let samples = args.samples.unwrap_or(256);
         let acc_options = AccumulateOptions { samples, progress: true, ..Default::default() };
-        let acc = accumulate_with(b.as_mut(), &raster, &on_device, &camera, &lens, near, &acc_options)?;
+        let acc = accumulate_with(b, &raster, mesh, &camera, &lens, near, &acc_options)?;
         let ms: f64 = acc.times.iter().map(|t| t.ms).sum();
         println!("accumulation buffer on {}: {samples} renders, {ms:.2} ms", b.device_name());
         Ok((peeled, Some(acc.image)))
-    })();
-    on_device.destroy(b.as_mut());
-    let (peeled, reference) = result?;
+    })?;
     match (args.method, reference) {
         (_, Some(reference)) => write_with_planes(args, out, &reference, &peeled.image, &lens),
         (Method::Pinhole, None) => write_with_planes(args, out, &peeled.image.front().0, &peeled.image, &lens),

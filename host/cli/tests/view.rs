@@ -285,6 +285,7 @@ fn the_viewer_refuses_bad_input_clearly() {
         (vec!["--screenshot", "x.png"], "--screenshot needs --frames"),
         (vec!["--script", "method=nosuch"], "the methods are multilayer, tiled, gather, ring-gather, bokeh"),
         (vec!["--blades", "2"], "--blades must be 0"),
+        (vec!["--texture-probes", "0"], "1 to 64 probes"),
         (vec!["--width", "100000"], "--width must lie between"),
         (vec!["--scene", "x.exr", "--f-number", "NaN"], "--f-number must be a positive finite number"),
         (vec!["--screenshot", "x.jpg", "--frames", "1"], "--screenshot must name a .png file"),

@@ -752,7 +752,12 @@ impl App<'_> {
                     }
                     let start = Instant::now();
                     let near = near.unwrap_or_else(|| default_near(lens.focus_distance));
-                    let options = LayerOptions { max_layers: LAYERS, guard_band: GuardBand::Auto, ..Default::default() };
+                    let options = LayerOptions {
+                        max_layers: LAYERS,
+                        guard_band: GuardBand::Auto,
+                        texture_probes: self.args.texture_probes,
+                        ..Default::default()
+                    };
                     let ctx = MeshPeelContext::new(backend, &mesh.raster(), &self.camera, lens, &MeshPeelDesc::new(&options, near))?;
                     self.stats.layers_ms = start.elapsed().as_secs_f64() * 1e3;
                     self.stats.device_peel = Some(ctx.margin());

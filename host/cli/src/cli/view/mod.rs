@@ -64,6 +64,10 @@ pub struct ViewArgs {
     /// Sample rings of the ring gather at half resolution (1 to 8; 5 is what engines ship).
     #[arg(long, default_value_t = dof::methods::ring_gather::DEFAULT_RINGS)]
     pub rings: u32,
+    /// glTF scenes: the most probes a minified texture lookup takes, 1 to 64 (64: the box filter
+    /// over the pixel's footprint; fewer shade faster and filter less exactly).
+    #[arg(long, default_value_t = dof::frame::LayerOptions::default().texture_probes)]
+    pub texture_probes: u32,
     /// Render this many frames, then exit (with --screenshot: after writing the last one).
     #[arg(long)]
     pub frames: Option<u32>,
@@ -138,6 +142,7 @@ fn check(args: &ViewArgs) -> Result<()> {
     if args.frames == Some(0) {
         bail!("--frames must be at least 1");
     }
+    dof::raster::check_texture_probes(args.texture_probes)?;
     if let Some(path) = &args.screenshot {
         if args.frames.is_none() {
             bail!("--screenshot needs --frames N (the screenshot is of the last of N frames)");

@@ -1731,8 +1731,8 @@ fn translucent_passes_apply_to_peeled_scenes_only() {
     assert_fails_with(&["render", "--scene", "fence", "--translucent-passes", "8"], "applies to glTF scenes");
     // A file that does not exist: the bound is refused before it is opened.
     assert_fails_with(&["render", "--scene", "/nonexistent/model.glb", "--translucent-passes", "1021"], "more than 1024 peeling passes");
-    let scene = glb("simple", "simple-passes.glb");
-    let out = temp("passes.exr");
+    let scene = glb("simple", "translucent-passes.glb");
+    let out = temp("translucent-passes-out.exr");
     let o = dof(&[
         "render",
         "--scene",

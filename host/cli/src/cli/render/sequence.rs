@@ -21,7 +21,7 @@
 use super::*;
 use dof::io::GifPreview;
 use dof::methods::one_shot::{Runner, method_input};
-use dof::raster::{accumulate, peel_layers};
+use dof::raster::{accumulate_with, peel_layers_with};
 use dof::scene::guard_band::{auto_margin, auto_margin_mesh};
 
 /// Most frames of a sequence.
@@ -284,6 +284,12 @@ pub(super) fn render_sequence(
     let options = args.layer_options(GuardBand::Pixels(margin));
     let method_options = method_options(args)?;
     let mut runner: Option<Runner> = None;
+    // A mesh is uploaded once for the shot (its textures' mip chains built once), for the peels and
+    // the accumulation buffers of every frame.
+    let on_device = match &source {
+        Source::Gltf { mesh, .. } => Some(DeviceMesh::upload(b.as_mut(), &mesh.raster())?),
+        _ => None,
+    };
     // The preview of the whole shot, encoded frame by frame as they come (one frame in memory).
     let gif_path = out.with_extension("gif");
     let mut preview: Option<GifPreview> = None;
@@ -294,7 +300,10 @@ pub(super) fn render_sequence(
             let mut window = None;
             let layered = match &source {
                 Source::Builtin(s) => raycast_layers(s, camera, lens, &options)?,
-                Source::Gltf { mesh, near } => peel_layers(b.as_mut(), &mesh.raster(), camera, lens, *near, &options)?.image,
+                Source::Gltf { mesh, near } => {
+                    let on_device = on_device.as_ref().context("the uploaded mesh")?;
+                    peel_layers_with(b.as_mut(), &mesh.raster(), on_device, camera, lens, *near, &options)?.image
+                }
                 Source::Exr(files) => {
                     let (frame, at) = read_exr_frame(args, &files[i], None, &shots[i], false)?;
                     window = Some(at);
@@ -321,7 +330,8 @@ pub(super) fn render_sequence(
                     Source::Gltf { mesh, near } => {
                         let samples = args.samples.unwrap_or(256);
                         let opts = AccumulateOptions { samples, ..Default::default() };
-                        accumulate(b.as_mut(), &mesh.raster(), camera, lens, *near, &opts)?.image
+                        let on_device = on_device.as_ref().context("the uploaded mesh")?;
+                        accumulate_with(b.as_mut(), &mesh.raster(), on_device, camera, lens, *near, &opts)?.image
                     }
                 },
                 Method::Frame(method) => {
@@ -376,6 +386,9 @@ pub(super) fn render_sequence(
         }
         Ok(())
     })();
+    if let Some(mesh) = on_device {
+        mesh.destroy(b.as_mut());
+    }
     if let Some(r) = runner {
         if rendered.is_ok() {
             println!("context made once for {} frames: {} allocations in the frames after the first", r.frames, r.later_allocations);

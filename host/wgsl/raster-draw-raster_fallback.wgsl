@@ -404,17 +404,17 @@ fn function_() {
     var local_326: array<f32, 3>;
     var local_327: array<u32, 4>;
     var local_328: array<f32, 3>;
-    var phi_3219_: bool;
+    var phi_3190_: bool;
     var phi_183_: u32;
-    var phi_2929_: type_29;
-    var phi_2931_: bool;
-    var phi_2932_: type_29;
-    var phi_2933_: bool;
-    var phi_2935_: bool;
-    var phi_2936_: type_29;
-    var phi_2937_: bool;
-    var phi_2938_: bool;
-    var phi_3065_: type_29;
+    var phi_2900_: type_29;
+    var phi_2902_: bool;
+    var phi_2903_: type_29;
+    var phi_2904_: bool;
+    var phi_2906_: bool;
+    var phi_2907_: type_29;
+    var phi_2908_: bool;
+    var phi_2909_: bool;
+    var phi_3036_: type_29;
     var phi_684_: type_30;
     var phi_685_: type_30;
     var phi_686_: bool;
@@ -447,134 +447,134 @@ fn function_() {
     var phi_1024_: f32;
     var phi_823_: u32;
     var phi_826_: array<f32, 4>;
-    var phi_3198_: bool;
+    var phi_3169_: bool;
     var phi_1042_: u32;
     var phi_1045_: f32;
     var phi_1047_: f32;
     var phi_1043_: u32;
     var phi_1046_: f32;
     var phi_1048_: f32;
-    var phi_3236_: bool;
+    var phi_3207_: bool;
     var phi_1197_: bool;
-    var phi_1412_: f32;
-    var phi_3070_: u32;
-    var phi_3071_: type_22;
-    var phi_3088_: u32;
-    var phi_3097_: u32;
-    var phi_3102_: u32;
-    var phi_3103_: type_22;
-    var phi_3109_: u32;
-    var phi_3110_: type_22;
-    var phi_3127_: u32;
-    var phi_3136_: u32;
-    var phi_3141_: u32;
-    var phi_3142_: type_22;
-    var phi_3286_: bool;
-    var phi_1431_: u32;
-    var phi_1434_: type_5;
-    var phi_3285_: bool;
+    var phi_1383_: f32;
+    var phi_3041_: u32;
+    var phi_3042_: type_22;
+    var phi_3059_: u32;
+    var phi_3068_: u32;
+    var phi_3073_: u32;
+    var phi_3074_: type_22;
+    var phi_3080_: u32;
+    var phi_3081_: type_22;
+    var phi_3098_: u32;
+    var phi_3107_: u32;
+    var phi_3112_: u32;
+    var phi_3113_: type_22;
+    var phi_3257_: bool;
+    var phi_1402_: u32;
+    var phi_1405_: type_5;
+    var phi_3256_: bool;
+    var phi_1419_: u32;
+    var phi_1422_: type_5;
     var phi_1448_: u32;
     var phi_1451_: type_5;
-    var phi_1477_: u32;
-    var phi_1480_: type_5;
-    var phi_1493_: type_22;
-    var phi_1494_: f32;
-    var phi_1514_: f32;
-    var phi_1515_: f32;
-    var phi_1586_: i32;
-    var phi_1610_: i32;
-    var phi_1550_: i32;
-    var phi_1551_: i32;
-    var phi_1611_: i32;
-    var phi_1666_: i32;
-    var phi_1690_: i32;
-    var phi_1630_: i32;
-    var phi_1631_: i32;
-    var phi_1691_: i32;
-    var phi_1745_: i32;
-    var phi_1769_: i32;
-    var phi_1709_: i32;
-    var phi_1710_: i32;
-    var phi_1770_: i32;
-    var phi_1825_: i32;
-    var phi_1849_: i32;
-    var phi_1789_: i32;
-    var phi_1790_: i32;
-    var phi_1850_: i32;
-    var phi_1901_: u32;
-    var phi_1904_: f32;
-    var phi_1933_: u32;
-    var phi_1936_: f32;
-    var phi_1965_: u32;
-    var phi_1968_: f32;
-    var phi_1997_: u32;
-    var phi_2000_: f32;
-    var phi_2050_: u32;
-    var phi_2053_: f32;
-    var phi_2082_: u32;
-    var phi_2085_: f32;
-    var phi_2114_: u32;
-    var phi_2117_: f32;
-    var phi_2146_: u32;
-    var phi_2149_: f32;
-    var phi_2211_: u32;
-    var phi_2214_: f32;
-    var phi_2243_: u32;
-    var phi_2246_: f32;
-    var phi_2275_: u32;
-    var phi_2278_: f32;
-    var phi_2307_: u32;
-    var phi_2310_: f32;
-    var phi_2360_: u32;
-    var phi_2363_: f32;
-    var phi_2392_: u32;
-    var phi_2395_: f32;
-    var phi_2424_: u32;
-    var phi_2427_: f32;
-    var phi_2456_: u32;
-    var phi_2459_: f32;
-    var phi_1478_: u32;
-    var phi_1481_: type_5;
-    var phi_3239_: bool;
-    var phi_3350_: bool;
+    var phi_1464_: type_22;
+    var phi_1465_: f32;
+    var phi_1485_: f32;
+    var phi_1486_: f32;
+    var phi_1557_: i32;
+    var phi_1581_: i32;
+    var phi_1521_: i32;
+    var phi_1522_: i32;
+    var phi_1582_: i32;
+    var phi_1637_: i32;
+    var phi_1661_: i32;
+    var phi_1601_: i32;
+    var phi_1602_: i32;
+    var phi_1662_: i32;
+    var phi_1716_: i32;
+    var phi_1740_: i32;
+    var phi_1680_: i32;
+    var phi_1681_: i32;
+    var phi_1741_: i32;
+    var phi_1796_: i32;
+    var phi_1820_: i32;
+    var phi_1760_: i32;
+    var phi_1761_: i32;
+    var phi_1821_: i32;
+    var phi_1872_: u32;
+    var phi_1875_: f32;
+    var phi_1904_: u32;
+    var phi_1907_: f32;
+    var phi_1936_: u32;
+    var phi_1939_: f32;
+    var phi_1968_: u32;
+    var phi_1971_: f32;
+    var phi_2021_: u32;
+    var phi_2024_: f32;
+    var phi_2053_: u32;
+    var phi_2056_: f32;
+    var phi_2085_: u32;
+    var phi_2088_: f32;
+    var phi_2117_: u32;
+    var phi_2120_: f32;
+    var phi_2182_: u32;
+    var phi_2185_: f32;
+    var phi_2214_: u32;
+    var phi_2217_: f32;
+    var phi_2246_: u32;
+    var phi_2249_: f32;
+    var phi_2278_: u32;
+    var phi_2281_: f32;
+    var phi_2331_: u32;
+    var phi_2334_: f32;
+    var phi_2363_: u32;
+    var phi_2366_: f32;
+    var phi_2395_: u32;
+    var phi_2398_: f32;
+    var phi_2427_: u32;
+    var phi_2430_: f32;
     var phi_1449_: u32;
     var phi_1452_: type_5;
-    var phi_3349_: bool;
-    var phi_3352_: bool;
-    var phi_1432_: u32;
-    var phi_1435_: type_5;
-    var phi_3351_: bool;
-    var phi_3374_: bool;
-    var phi_2512_: type_5;
-    var phi_3373_: bool;
-    var phi_2513_: type_5;
-    var phi_2514_: bool;
-    var phi_2518_: type_5;
-    var phi_3371_: bool;
-    var phi_2519_: type_5;
-    var phi_3370_: bool;
-    var phi_2520_: type_5;
+    var phi_3210_: bool;
+    var phi_3317_: bool;
+    var phi_1420_: u32;
+    var phi_1423_: type_5;
+    var phi_3316_: bool;
+    var phi_3319_: bool;
+    var phi_1403_: u32;
+    var phi_1406_: type_5;
+    var phi_3318_: bool;
+    var phi_3341_: bool;
+    var phi_2483_: type_5;
+    var phi_3340_: bool;
+    var phi_2484_: type_5;
+    var phi_2485_: bool;
+    var phi_2489_: type_5;
+    var phi_3338_: bool;
+    var phi_2490_: type_5;
+    var phi_3337_: bool;
+    var phi_2491_: type_5;
+    var phi_2492_: bool;
+    var phi_2496_: type_5;
+    var phi_2517_: bool;
+    var phi_3334_: bool;
+    var phi_2518_: bool;
+    var phi_3333_: bool;
+    var phi_2519_: bool;
+    var phi_3332_: bool;
     var phi_2521_: bool;
-    var phi_2525_: type_5;
-    var phi_2546_: bool;
-    var phi_3367_: bool;
-    var phi_2547_: bool;
-    var phi_3366_: bool;
-    var phi_2548_: bool;
-    var phi_3365_: bool;
-    var phi_2550_: bool;
-    var phi_2551_: bool;
-    var phi_3362_: bool;
-    var phi_3361_: bool;
-    var phi_3360_: bool;
-    var phi_3359_: bool;
-    var phi_3358_: bool;
-    var phi_3357_: bool;
-    var phi_3356_: bool;
-    var phi_3355_: bool;
-    var phi_3354_: bool;
+    var phi_2522_: bool;
+    var phi_3329_: bool;
+    var phi_3328_: bool;
+    var phi_3327_: bool;
+    var phi_3326_: bool;
+    var phi_3325_: bool;
+    var phi_3324_: bool;
+    var phi_3323_: bool;
+    var phi_3322_: bool;
+    var phi_3321_: bool;
     var phi_184_: u32;
-    var phi_3353_: bool;
+    var phi_3320_: bool;
     var local_329: type_22;
     var local_330: type_22;
     var local_331: type_5;
@@ -606,10 +606,10 @@ fn function_() {
             let _e427 = (_e426 / 3u);
             let _e430 = global_4.member.member_7;
             local_297 = select(_e430, _e427, (_e427 < _e430));
-            phi_3219_ = false;
+            phi_3190_ = false;
             phi_183_ = 0u;
             loop {
-                let _e434 = phi_3219_;
+                let _e434 = phi_3190_;
                 let _e436 = phi_183_;
                 local_13 = _e436;
                 let _e437 = local_13;
@@ -623,7 +623,7 @@ fn function_() {
                     let _e442 = local_7;
                     if (_e441 < _e442) {
                     } else {
-                        phi_3353_ = true;
+                        phi_3320_ = true;
                         break;
                     }
                     let _e444 = local_15;
@@ -636,7 +636,7 @@ fn function_() {
                         let _e452 = local_7;
                         if (_e451 < _e452) {
                         } else {
-                            phi_3353_ = true;
+                            phi_3320_ = true;
                             break;
                         }
                         let _e454 = local_16;
@@ -649,7 +649,7 @@ fn function_() {
                             let _e462 = local_7;
                             if (_e461 < _e462) {
                             } else {
-                                phi_3353_ = true;
+                                phi_3320_ = true;
                                 break;
                             }
                             let _e464 = local_17;
@@ -662,7 +662,7 @@ fn function_() {
                                 let _e472 = local_7;
                                 if (_e471 < _e472) {
                                 } else {
-                                    phi_3353_ = true;
+                                    phi_3320_ = true;
                                     break;
                                 }
                                 let _e474 = local_18;
@@ -677,7 +677,7 @@ fn function_() {
                                     local_20 = _e483;
                                     if _e483 {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e484 = local_19;
@@ -691,7 +691,7 @@ fn function_() {
                                     local_23 = _e491;
                                     if _e491 {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e492 = local_22;
@@ -705,7 +705,7 @@ fn function_() {
                                     local_26 = _e499;
                                     if _e499 {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e500 = local_25;
@@ -719,7 +719,7 @@ fn function_() {
                                     local_29 = _e507;
                                     if _e507 {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e508 = local_28;
@@ -731,7 +731,7 @@ fn function_() {
                                     let _e514 = local_1;
                                     if (_e513 < _e514) {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e516 = local_31;
@@ -743,7 +743,7 @@ fn function_() {
                                     let _e523 = local_1;
                                     if (_e522 < _e523) {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e525 = local_33;
@@ -755,7 +755,7 @@ fn function_() {
                                     let _e532 = local_1;
                                     if (_e531 < _e532) {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e534 = local_35;
@@ -767,7 +767,7 @@ fn function_() {
                                     let _e541 = local_1;
                                     if (_e540 < _e541) {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e543 = local_37;
@@ -779,7 +779,7 @@ fn function_() {
                                     let _e550 = local_1;
                                     if (_e549 < _e550) {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e552 = local_39;
@@ -791,7 +791,7 @@ fn function_() {
                                     let _e559 = local_1;
                                     if (_e558 < _e559) {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e561 = local_41;
@@ -803,7 +803,7 @@ fn function_() {
                                     let _e568 = local_1;
                                     if (_e567 < _e568) {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e570 = local_43;
@@ -815,7 +815,7 @@ fn function_() {
                                     let _e577 = local_1;
                                     if (_e576 < _e577) {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e579 = local_45;
@@ -827,7 +827,7 @@ fn function_() {
                                     let _e586 = local_1;
                                     if (_e585 < _e586) {
                                     } else {
-                                        phi_3353_ = true;
+                                        phi_3320_ = true;
                                         break;
                                     }
                                     let _e588 = local_47;
@@ -860,7 +860,7 @@ fn function_() {
                                         let _e628 = local_3;
                                         if (((_e625 * 16u) + 10u) < _e628) {
                                         } else {
-                                            phi_3353_ = true;
+                                            phi_3320_ = true;
                                             break;
                                         }
                                     }
@@ -907,25 +907,25 @@ fn function_() {
                                     let _e734 = global_4.member.member_4;
                                     local_58 = _e734;
                                     if (_e677 < _e734) {
-                                        phi_2935_ = bool();
-                                        phi_2936_ = type_29();
-                                        phi_2937_ = true;
-                                        phi_2938_ = false;
+                                        phi_2906_ = bool();
+                                        phi_2907_ = type_29();
+                                        phi_2908_ = true;
+                                        phi_2909_ = false;
                                     } else {
                                         let _e736 = local_54;
                                         let _e737 = local_58;
                                         let _e738 = (_e736 < _e737);
                                         if _e738 {
-                                            phi_2931_ = bool();
-                                            phi_2932_ = type_29();
-                                            phi_2933_ = false;
+                                            phi_2902_ = bool();
+                                            phi_2903_ = type_29();
+                                            phi_2904_ = false;
                                         } else {
                                             let _e739 = local_57;
                                             let _e740 = local_58;
                                             let _e741 = (_e739 < _e740);
                                             local_281 = _e741;
                                             if _e741 {
-                                                phi_2929_ = type_29();
+                                                phi_2900_ = type_29();
                                             } else {
                                                 let _e742 = local_51;
                                                 let _e743 = (1f / _e742);
@@ -946,25 +946,25 @@ fn function_() {
                                                 let _e765 = ((_e758 * _e747) - _e750);
                                                 let _e766 = ((_e760 * _e747) - _e752);
                                                 let _e771 = local_281;
-                                                phi_2929_ = type_29(array<array<f32, 3>, 3>(array<f32, 3>(0f, 0f, 0f), array<f32, 3>(0f, 0f, 0f), array<f32, 3>(0f, 0f, 0f)), 0f, array<f32, 2>(_e750, _e752), array<f32, 2>(_e762, _e763), array<f32, 2>(_e765, _e766), ((_e762 * _e766) - (_e763 * _e765)), array<f32, 3>(_e743, _e745, _e747), _e771);
+                                                phi_2900_ = type_29(array<array<f32, 3>, 3>(array<f32, 3>(0f, 0f, 0f), array<f32, 3>(0f, 0f, 0f), array<f32, 3>(0f, 0f, 0f)), 0f, array<f32, 2>(_e750, _e752), array<f32, 2>(_e762, _e763), array<f32, 2>(_e765, _e766), ((_e762 * _e766) - (_e763 * _e765)), array<f32, 3>(_e743, _e745, _e747), _e771);
                                             }
-                                            let _e774 = phi_2929_;
-                                            phi_2931_ = _e741;
-                                            phi_2932_ = _e774;
-                                            phi_2933_ = _e741;
+                                            let _e774 = phi_2900_;
+                                            phi_2902_ = _e741;
+                                            phi_2903_ = _e774;
+                                            phi_2904_ = _e741;
                                         }
-                                        let _e776 = phi_2931_;
-                                        let _e778 = phi_2932_;
-                                        let _e780 = phi_2933_;
-                                        phi_2935_ = _e776;
-                                        phi_2936_ = _e778;
-                                        phi_2937_ = _e738;
-                                        phi_2938_ = _e780;
+                                        let _e776 = phi_2902_;
+                                        let _e778 = phi_2903_;
+                                        let _e780 = phi_2904_;
+                                        phi_2906_ = _e776;
+                                        phi_2907_ = _e778;
+                                        phi_2908_ = _e738;
+                                        phi_2909_ = _e780;
                                     }
-                                    let _e782 = phi_2935_;
-                                    let _e784 = phi_2936_;
-                                    let _e786 = phi_2937_;
-                                    let _e788 = phi_2938_;
+                                    let _e782 = phi_2906_;
+                                    let _e784 = phi_2907_;
+                                    let _e786 = phi_2908_;
+                                    let _e788 = phi_2909_;
                                     local_298 = select(_e782, true, _e786);
                                     if select(_e788, true, _e786) {
                                         let _e791 = local_53;
@@ -1010,11 +1010,11 @@ fn function_() {
                                         let _e859 = local_50;
                                         let _e862 = local_51;
                                         let _e866 = local_298;
-                                        phi_3065_ = type_29(array<array<f32, 3>, 3>(array<f32, 3>(_e797, _e804, _e811), array<f32, 3>(((_e813 * _e814) - (_e816 * _e817)), ((_e820 * _e821) - (_e823 * _e824)), ((_e827 * _e828) - (_e830 * _e831))), array<f32, 3>(((_e835 * _e836) - (_e838 * _e839)), ((_e842 * _e843) - (_e845 * _e846)), ((_e849 * _e850) - (_e852 * _e853)))), (((_e857 * _e797) + (_e859 * _e804)) + (_e862 * _e811)), array<f32, 2>(0f, 0f), array<f32, 2>(0f, 0f), array<f32, 2>(0f, 0f), 0f, array<f32, 3>(0f, 0f, 0f), _e866);
+                                        phi_3036_ = type_29(array<array<f32, 3>, 3>(array<f32, 3>(_e797, _e804, _e811), array<f32, 3>(((_e813 * _e814) - (_e816 * _e817)), ((_e820 * _e821) - (_e823 * _e824)), ((_e827 * _e828) - (_e830 * _e831))), array<f32, 3>(((_e835 * _e836) - (_e838 * _e839)), ((_e842 * _e843) - (_e845 * _e846)), ((_e849 * _e850) - (_e852 * _e853)))), (((_e857 * _e797) + (_e859 * _e804)) + (_e862 * _e811)), array<f32, 2>(0f, 0f), array<f32, 2>(0f, 0f), array<f32, 2>(0f, 0f), 0f, array<f32, 3>(0f, 0f, 0f), _e866);
                                     } else {
-                                        phi_3065_ = _e784;
+                                        phi_3036_ = _e784;
                                     }
-                                    let _e869 = phi_3065_;
+                                    let _e869 = phi_3036_;
                                     local_282 = _e869;
                                     let _e870 = local;
                                     let _e872 = local_11;
@@ -1026,13 +1026,13 @@ fn function_() {
                                     let _e880 = global_4.member.member_5;
                                     local_61 = _e880;
                                     if (_e873 >= _e880) {
-                                        phi_3359_ = _e434;
+                                        phi_3326_ = _e434;
                                     } else {
                                         let _e884 = global_4.member.member_6;
                                         local_62 = _e884;
                                         let _e885 = local_60;
                                         if (_e885 >= _e884) {
-                                            phi_3360_ = _e434;
+                                            phi_3327_ = _e434;
                                         } else {
                                             let _e887 = local_59;
                                             let _e891 = local_61;
@@ -1207,7 +1207,7 @@ fn function_() {
                                             local_75 = _e1090.member_1;
                                             local_76 = _e1090.member_2;
                                             if (_e1090.member_2 <= 0f) {
-                                                phi_3361_ = _e434;
+                                                phi_3328_ = _e434;
                                             } else {
                                                 let _e1095 = local_60;
                                                 let _e1096 = local_61;
@@ -1221,7 +1221,7 @@ fn function_() {
                                                 local_79 = _e1102;
                                                 if _e1102 {
                                                 } else {
-                                                    phi_3353_ = true;
+                                                    phi_3320_ = true;
                                                     break;
                                                 }
                                                 let _e1103 = local_78;
@@ -1235,7 +1235,7 @@ fn function_() {
                                                     let _e1110 = local_8;
                                                     if (_e1109 < _e1110) {
                                                     } else {
-                                                        phi_3353_ = true;
+                                                        phi_3320_ = true;
                                                         break;
                                                     }
                                                     let _e1112 = local_80;
@@ -1256,7 +1256,7 @@ fn function_() {
                                                             let _e1129 = local_6;
                                                             if (_e1128 < _e1129) {
                                                             } else {
-                                                                phi_3353_ = true;
+                                                                phi_3320_ = true;
                                                                 break;
                                                             }
                                                             let _e1131 = local_77;
@@ -1270,25 +1270,25 @@ fn function_() {
                                                             let _e1140 = local_20;
                                                             if _e1140 {
                                                             } else {
-                                                                phi_3353_ = true;
+                                                                phi_3320_ = true;
                                                                 break;
                                                             }
                                                             let _e1141 = local_23;
                                                             if _e1141 {
                                                             } else {
-                                                                phi_3353_ = true;
+                                                                phi_3320_ = true;
                                                                 break;
                                                             }
                                                             let _e1142 = local_26;
                                                             if _e1142 {
                                                             } else {
-                                                                phi_3353_ = true;
+                                                                phi_3320_ = true;
                                                                 break;
                                                             }
                                                             let _e1143 = local_29;
                                                             if _e1143 {
                                                             } else {
-                                                                phi_3353_ = true;
+                                                                phi_3320_ = true;
                                                                 break;
                                                             }
                                                             let _e1144 = local_30;
@@ -1299,15 +1299,15 @@ fn function_() {
                                                             let _e1147 = local_3;
                                                             if (_e1146 < _e1147) {
                                                             } else {
-                                                                phi_3353_ = true;
+                                                                phi_3320_ = true;
                                                                 break;
                                                             }
                                                             let _e1149 = local_83;
                                                             let _e1152 = global_5.member[_e1149];
                                                             local_84 = _e1152;
                                                             if ((_e1152 & 12u) == 0u) {
-                                                                phi_3367_ = _e434;
-                                                                phi_2547_ = true;
+                                                                phi_3334_ = _e434;
+                                                                phi_2518_ = true;
                                                             } else {
                                                                 let _e1155 = local_21;
                                                                 let _e1156 = local_24;
@@ -1339,7 +1339,7 @@ fn function_() {
                                                                         let _e1175 = local_87;
                                                                         if (_e1175 < 4u) {
                                                                         } else {
-                                                                            phi_3198_ = true;
+                                                                            phi_3169_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1177 = local_87;
@@ -1351,7 +1351,7 @@ fn function_() {
                                                                         let _e1182 = local_1;
                                                                         if (_e1181 < _e1182) {
                                                                         } else {
-                                                                            phi_3198_ = true;
+                                                                            phi_3169_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1184 = local_91;
@@ -1363,7 +1363,7 @@ fn function_() {
                                                                         let _e1190 = local_1;
                                                                         if (_e1189 < _e1190) {
                                                                         } else {
-                                                                            phi_3198_ = true;
+                                                                            phi_3169_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1192 = local_93;
@@ -1372,7 +1372,7 @@ fn function_() {
                                                                         let _e1196 = local_89;
                                                                         if _e1196 {
                                                                         } else {
-                                                                            phi_3198_ = true;
+                                                                            phi_3169_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1197 = local_87;
@@ -1409,7 +1409,7 @@ fn function_() {
                                                                         let _e1241 = local_89;
                                                                         if _e1241 {
                                                                         } else {
-                                                                            phi_3198_ = true;
+                                                                            phi_3169_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1242 = local_328[_e1197];
@@ -1445,7 +1445,7 @@ fn function_() {
                                                                         let _e1285 = local_89;
                                                                         if _e1285 {
                                                                         } else {
-                                                                            phi_3198_ = true;
+                                                                            phi_3169_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1286 = local_328[_e1197];
@@ -1481,7 +1481,7 @@ fn function_() {
                                                                         let _e1328 = local_89;
                                                                         if _e1328 {
                                                                         } else {
-                                                                            phi_3198_ = true;
+                                                                            phi_3169_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1329 = local_328[_e1197];
@@ -1530,12 +1530,12 @@ fn function_() {
                                                                         let _e1382 = local_89;
                                                                         phi_822_ = _e1379;
                                                                         phi_825_ = _e1381;
-                                                                        phi_3198_ = _e434;
+                                                                        phi_3169_ = _e434;
                                                                         break if !(_e1382);
                                                                     }
                                                                 }
-                                                                let _e1385 = phi_3198_;
-                                                                phi_3353_ = _e1385;
+                                                                let _e1385 = phi_3169_;
+                                                                phi_3320_ = _e1385;
                                                                 if _e1385 {
                                                                     break;
                                                                 }
@@ -1566,7 +1566,7 @@ fn function_() {
                                                                         let _e1403 = local_111;
                                                                         if (_e1403 < 4u) {
                                                                         } else {
-                                                                            phi_3236_ = true;
+                                                                            phi_3207_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1405 = local_111;
@@ -1575,7 +1575,7 @@ fn function_() {
                                                                         let _e1409 = local_114;
                                                                         if _e1409 {
                                                                         } else {
-                                                                            phi_3236_ = true;
+                                                                            phi_3207_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1410 = local_111;
@@ -1587,7 +1587,7 @@ fn function_() {
                                                                         let _e1415 = local_1;
                                                                         if (_e1414 < _e1415) {
                                                                         } else {
-                                                                            phi_3236_ = true;
+                                                                            phi_3207_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1417 = local_117;
@@ -1597,7 +1597,7 @@ fn function_() {
                                                                         let _e1426 = local_114;
                                                                         if _e1426 {
                                                                         } else {
-                                                                            phi_3236_ = true;
+                                                                            phi_3207_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1427 = local_326[_e1410];
@@ -1608,7 +1608,7 @@ fn function_() {
                                                                         let _e1430 = local_1;
                                                                         if (_e1429 < _e1430) {
                                                                         } else {
-                                                                            phi_3236_ = true;
+                                                                            phi_3207_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1432 = local_119;
@@ -1633,12 +1633,12 @@ fn function_() {
                                                                         phi_1042_ = _e1444;
                                                                         phi_1045_ = _e1446;
                                                                         phi_1047_ = _e1448;
-                                                                        phi_3236_ = _e1385;
+                                                                        phi_3207_ = _e1385;
                                                                         break if !(_e1449);
                                                                     }
                                                                 }
-                                                                let _e1452 = phi_3236_;
-                                                                phi_3353_ = _e1452;
+                                                                let _e1452 = phi_3207_;
+                                                                phi_3320_ = _e1452;
                                                                 if _e1452 {
                                                                     break;
                                                                 }
@@ -1648,7 +1648,7 @@ fn function_() {
                                                                 let _e1455 = local_3;
                                                                 if (_e1454 < _e1455) {
                                                                 } else {
-                                                                    phi_3353_ = true;
+                                                                    phi_3320_ = true;
                                                                     break;
                                                                 }
                                                                 let _e1457 = local_120;
@@ -1660,7 +1660,7 @@ fn function_() {
                                                                 let _e1463 = local_3;
                                                                 if (_e1462 < _e1463) {
                                                                 } else {
-                                                                    phi_3353_ = true;
+                                                                    phi_3320_ = true;
                                                                     break;
                                                                 }
                                                                 let _e1465 = local_122;
@@ -1670,16 +1670,16 @@ fn function_() {
                                                                 local_124 = _e1472;
                                                                 let _e1473 = local_121;
                                                                 if (_e1473 == 4294967295u) {
-                                                                    phi_3370_ = _e1452;
-                                                                    phi_2520_ = type_5();
-                                                                    phi_2521_ = true;
+                                                                    phi_3337_ = _e1452;
+                                                                    phi_2491_ = type_5();
+                                                                    phi_2492_ = true;
                                                                 } else {
                                                                     let _e1475 = local_121;
                                                                     let _e1476 = local_124;
                                                                     let _e1477 = (_e1475 >= _e1476);
                                                                     if _e1477 {
-                                                                        phi_3371_ = _e1452;
-                                                                        phi_2519_ = type_5();
+                                                                        phi_3338_ = _e1452;
+                                                                        phi_2490_ = type_5();
                                                                     } else {
                                                                         let _e1478 = local_121;
                                                                         let _e1479 = (_e1478 * 4u);
@@ -1687,7 +1687,7 @@ fn function_() {
                                                                         let _e1480 = local_4;
                                                                         if (_e1479 < _e1480) {
                                                                         } else {
-                                                                            phi_3353_ = true;
+                                                                            phi_3320_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1482 = local_125;
@@ -1699,7 +1699,7 @@ fn function_() {
                                                                         let _e1488 = local_4;
                                                                         if (_e1487 < _e1488) {
                                                                         } else {
-                                                                            phi_3353_ = true;
+                                                                            phi_3320_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1490 = local_127;
@@ -1711,7 +1711,7 @@ fn function_() {
                                                                         let _e1496 = local_4;
                                                                         if (_e1495 < _e1496) {
                                                                         } else {
-                                                                            phi_3353_ = true;
+                                                                            phi_3320_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1498 = local_129;
@@ -1723,7 +1723,7 @@ fn function_() {
                                                                         let _e1504 = local_4;
                                                                         if (_e1503 < _e1504) {
                                                                         } else {
-                                                                            phi_3353_ = true;
+                                                                            phi_3320_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1506 = local_131;
@@ -1731,15 +1731,15 @@ fn function_() {
                                                                         local_132 = _e1509;
                                                                         let _e1510 = local_128;
                                                                         if (_e1510 == 0u) {
-                                                                            phi_3373_ = _e1452;
-                                                                            phi_2513_ = type_5();
-                                                                            phi_2514_ = true;
+                                                                            phi_3340_ = _e1452;
+                                                                            phi_2484_ = type_5();
+                                                                            phi_2485_ = true;
                                                                         } else {
                                                                             let _e1512 = local_130;
                                                                             let _e1513 = (_e1512 == 0u);
                                                                             if _e1513 {
-                                                                                phi_3374_ = _e1452;
-                                                                                phi_2512_ = type_5();
+                                                                                phi_3341_ = _e1452;
+                                                                                phi_2483_ = type_5();
                                                                             } else {
                                                                                 let _e1514 = local_132;
                                                                                 let _e1517 = ((_e1514 >> bitcast<u32>(8u)) & 31u);
@@ -1775,23 +1775,23 @@ fn function_() {
                                                                                 let _e1562 = (_e1561 >= _e1554);
                                                                                 local_135 = _e1562;
                                                                                 if _e1562 {
-                                                                                    phi_1412_ = 0f;
+                                                                                    phi_1383_ = 0f;
                                                                                 } else {
                                                                                     let _e1563 = local_134;
-                                                                                    phi_1412_ = -(f32(_e1563));
+                                                                                    phi_1383_ = -(f32(_e1563));
                                                                                 }
-                                                                                let _e1567 = phi_1412_;
+                                                                                let _e1567 = phi_1383_;
                                                                                 local_136 = _e1567;
                                                                                 let _e1568 = local_135;
                                                                                 let _e1569 = local_133;
                                                                                 let _e1570 = local_134;
                                                                                 local_307 = select(_e1570, _e1569, _e1568);
                                                                                 local_308 = select(1u, 2u, (_e1567 > 0f));
-                                                                                phi_3070_ = 0u;
-                                                                                phi_3071_ = _e1531;
+                                                                                phi_3041_ = 0u;
+                                                                                phi_3042_ = _e1531;
                                                                                 loop {
-                                                                                    let _e1575 = phi_3070_;
-                                                                                    let _e1577 = phi_3071_;
+                                                                                    let _e1575 = phi_3041_;
+                                                                                    let _e1577 = phi_3042_;
                                                                                     local_283 = _e1575;
                                                                                     local_284 = _e1577;
                                                                                     local_329 = _e1577;
@@ -1809,47 +1809,47 @@ fn function_() {
                                                                                         local_288 = type_22((_e1586.member + (_e1581.member_1 * _e1583.member_2)), _e1589.member_1, _e1589.member_2, _e1589.member_3, _e1589.member_4);
                                                                                         if (_e1581.member_1 > 1u) {
                                                                                             let _e1597 = local_286;
-                                                                                            phi_3088_ = (_e1597 >> bitcast<u32>(1i));
+                                                                                            phi_3059_ = (_e1597 >> bitcast<u32>(1i));
                                                                                         } else {
-                                                                                            phi_3088_ = 1u;
+                                                                                            phi_3059_ = 1u;
                                                                                         }
-                                                                                        let _e1601 = phi_3088_;
+                                                                                        let _e1601 = phi_3059_;
                                                                                         let _e1602 = local_288;
                                                                                         local_289 = type_22(_e1602.member, _e1601, _e1602.member_2, _e1602.member_3, _e1602.member_4);
                                                                                         let _e1609 = local_287;
                                                                                         if (_e1609 > 1u) {
                                                                                             let _e1611 = local_287;
-                                                                                            phi_3097_ = (_e1611 >> bitcast<u32>(1i));
+                                                                                            phi_3068_ = (_e1611 >> bitcast<u32>(1i));
                                                                                         } else {
-                                                                                            phi_3097_ = 1u;
+                                                                                            phi_3068_ = 1u;
                                                                                         }
-                                                                                        let _e1615 = phi_3097_;
+                                                                                        let _e1615 = phi_3068_;
                                                                                         let _e1616 = local_289;
                                                                                         let _e1623 = local_283;
-                                                                                        phi_3102_ = (_e1623 + 1u);
-                                                                                        phi_3103_ = type_22(_e1616.member, _e1616.member_1, _e1615, _e1616.member_3, _e1616.member_4);
+                                                                                        phi_3073_ = (_e1623 + 1u);
+                                                                                        phi_3074_ = type_22(_e1616.member, _e1616.member_1, _e1615, _e1616.member_3, _e1616.member_4);
                                                                                     } else {
-                                                                                        phi_3102_ = u32();
-                                                                                        phi_3103_ = type_22();
+                                                                                        phi_3073_ = u32();
+                                                                                        phi_3074_ = type_22();
                                                                                     }
-                                                                                    let _e1626 = phi_3102_;
-                                                                                    let _e1628 = phi_3103_;
+                                                                                    let _e1626 = phi_3073_;
+                                                                                    let _e1628 = phi_3074_;
                                                                                     continue;
                                                                                     continuing {
                                                                                         let _e1629 = local_285;
-                                                                                        phi_3070_ = _e1626;
-                                                                                        phi_3071_ = _e1628;
+                                                                                        phi_3041_ = _e1626;
+                                                                                        phi_3042_ = _e1628;
                                                                                         break if !(_e1629);
                                                                                     }
                                                                                 }
                                                                                 let _e1631 = local_307;
                                                                                 let _e1632 = local_308;
                                                                                 local_137 = ((_e1631 + _e1632) - 1u);
-                                                                                phi_3109_ = 0u;
-                                                                                phi_3110_ = _e1531;
+                                                                                phi_3080_ = 0u;
+                                                                                phi_3081_ = _e1531;
                                                                                 loop {
-                                                                                    let _e1636 = phi_3109_;
-                                                                                    let _e1638 = phi_3110_;
+                                                                                    let _e1636 = phi_3080_;
+                                                                                    let _e1638 = phi_3081_;
                                                                                     local_290 = _e1636;
                                                                                     local_291 = _e1638;
                                                                                     local_330 = _e1638;
@@ -1867,48 +1867,48 @@ fn function_() {
                                                                                         local_295 = type_22((_e1647.member + (_e1642.member_1 * _e1644.member_2)), _e1650.member_1, _e1650.member_2, _e1650.member_3, _e1650.member_4);
                                                                                         if (_e1642.member_1 > 1u) {
                                                                                             let _e1658 = local_293;
-                                                                                            phi_3127_ = (_e1658 >> bitcast<u32>(1i));
+                                                                                            phi_3098_ = (_e1658 >> bitcast<u32>(1i));
                                                                                         } else {
-                                                                                            phi_3127_ = 1u;
+                                                                                            phi_3098_ = 1u;
                                                                                         }
-                                                                                        let _e1662 = phi_3127_;
+                                                                                        let _e1662 = phi_3098_;
                                                                                         let _e1663 = local_295;
                                                                                         local_296 = type_22(_e1663.member, _e1662, _e1663.member_2, _e1663.member_3, _e1663.member_4);
                                                                                         let _e1670 = local_294;
                                                                                         if (_e1670 > 1u) {
                                                                                             let _e1672 = local_294;
-                                                                                            phi_3136_ = (_e1672 >> bitcast<u32>(1i));
+                                                                                            phi_3107_ = (_e1672 >> bitcast<u32>(1i));
                                                                                         } else {
-                                                                                            phi_3136_ = 1u;
+                                                                                            phi_3107_ = 1u;
                                                                                         }
-                                                                                        let _e1676 = phi_3136_;
+                                                                                        let _e1676 = phi_3107_;
                                                                                         let _e1677 = local_296;
                                                                                         let _e1684 = local_290;
-                                                                                        phi_3141_ = (_e1684 + 1u);
-                                                                                        phi_3142_ = type_22(_e1677.member, _e1677.member_1, _e1676, _e1677.member_3, _e1677.member_4);
+                                                                                        phi_3112_ = (_e1684 + 1u);
+                                                                                        phi_3113_ = type_22(_e1677.member, _e1677.member_1, _e1676, _e1677.member_3, _e1677.member_4);
                                                                                     } else {
-                                                                                        phi_3141_ = u32();
-                                                                                        phi_3142_ = type_22();
+                                                                                        phi_3112_ = u32();
+                                                                                        phi_3113_ = type_22();
                                                                                     }
-                                                                                    let _e1687 = phi_3141_;
-                                                                                    let _e1689 = phi_3142_;
+                                                                                    let _e1687 = phi_3112_;
+                                                                                    let _e1689 = phi_3113_;
                                                                                     continue;
                                                                                     continuing {
                                                                                         let _e1690 = local_292;
-                                                                                        phi_3109_ = _e1687;
-                                                                                        phi_3110_ = _e1689;
+                                                                                        phi_3080_ = _e1687;
+                                                                                        phi_3081_ = _e1689;
                                                                                         break if !(_e1690);
                                                                                     }
                                                                                 }
                                                                                 let _e1692 = local_132;
                                                                                 local_138 = ((_e1692 & 1u) != 0u);
-                                                                                phi_3286_ = _e1452;
-                                                                                phi_1431_ = 0u;
-                                                                                phi_1434_ = type_5(0f, 0f, 0f, 0f);
+                                                                                phi_3257_ = _e1452;
+                                                                                phi_1402_ = 0u;
+                                                                                phi_1405_ = type_5(0f, 0f, 0f, 0f);
                                                                                 loop {
-                                                                                    let _e1696 = phi_3286_;
-                                                                                    let _e1698 = phi_1431_;
-                                                                                    let _e1700 = phi_1434_;
+                                                                                    let _e1696 = phi_3257_;
+                                                                                    let _e1698 = phi_1402_;
+                                                                                    let _e1700 = phi_1405_;
                                                                                     local_139 = _e1698;
                                                                                     local_140 = _e1700;
                                                                                     local_333 = _e1700;
@@ -1916,24 +1916,24 @@ fn function_() {
                                                                                     let _e1702 = (_e1701 < 1u);
                                                                                     local_141 = _e1702;
                                                                                     if _e1702 {
-                                                                                        phi_3285_ = _e1696;
-                                                                                        phi_1448_ = 0u;
-                                                                                        phi_1451_ = _e1700;
+                                                                                        phi_3256_ = _e1696;
+                                                                                        phi_1419_ = 0u;
+                                                                                        phi_1422_ = _e1700;
                                                                                         loop {
-                                                                                            let _e1704 = phi_3285_;
-                                                                                            let _e1706 = phi_1448_;
-                                                                                            let _e1708 = phi_1451_;
+                                                                                            let _e1704 = phi_3256_;
+                                                                                            let _e1706 = phi_1419_;
+                                                                                            let _e1708 = phi_1422_;
                                                                                             local_142 = _e1706;
                                                                                             local_332 = _e1708;
                                                                                             let _e1709 = local_142;
                                                                                             let _e1710 = (_e1709 < 1u);
                                                                                             local_143 = _e1710;
                                                                                             if _e1710 {
-                                                                                                phi_1477_ = 0u;
-                                                                                                phi_1480_ = _e1708;
+                                                                                                phi_1448_ = 0u;
+                                                                                                phi_1451_ = _e1708;
                                                                                                 loop {
-                                                                                                    let _e1712 = phi_1477_;
-                                                                                                    let _e1714 = phi_1480_;
+                                                                                                    let _e1712 = phi_1448_;
+                                                                                                    let _e1714 = phi_1451_;
                                                                                                     local_144 = _e1712;
                                                                                                     local_145 = _e1714;
                                                                                                     local_331 = _e1714;
@@ -1946,15 +1946,15 @@ fn function_() {
                                                                                                         if (_e1718 == 0u) {
                                                                                                             let _e1720 = local_136;
                                                                                                             let _e3068 = local_329;
-                                                                                                            phi_1493_ = _e3068;
-                                                                                                            phi_1494_ = (1f - _e1720);
+                                                                                                            phi_1464_ = _e3068;
+                                                                                                            phi_1465_ = (1f - _e1720);
                                                                                                         } else {
                                                                                                             let _e3070 = local_330;
-                                                                                                            phi_1493_ = _e3070;
-                                                                                                            phi_1494_ = _e1567;
+                                                                                                            phi_1464_ = _e3070;
+                                                                                                            phi_1465_ = _e1567;
                                                                                                         }
-                                                                                                        let _e1723 = phi_1493_;
-                                                                                                        let _e1725 = phi_1494_;
+                                                                                                        let _e1723 = phi_1464_;
+                                                                                                        let _e1725 = phi_1465_;
                                                                                                         local_147 = _e1723;
                                                                                                         local_148 = _e1725;
                                                                                                         let _e1726 = local_138;
@@ -1971,18 +1971,18 @@ fn function_() {
                                                                                                         local_154 = floor(_e1737);
                                                                                                         let _e1740 = local_138;
                                                                                                         if _e1740 {
-                                                                                                            phi_1514_ = 0f;
-                                                                                                            phi_1515_ = 0f;
+                                                                                                            phi_1485_ = 0f;
+                                                                                                            phi_1486_ = 0f;
                                                                                                         } else {
                                                                                                             let _e1741 = local_150;
                                                                                                             let _e1742 = local_153;
                                                                                                             let _e1744 = local_152;
                                                                                                             let _e1745 = local_154;
-                                                                                                            phi_1514_ = (_e1744 - _e1745);
-                                                                                                            phi_1515_ = (_e1741 - _e1742);
+                                                                                                            phi_1485_ = (_e1744 - _e1745);
+                                                                                                            phi_1486_ = (_e1741 - _e1742);
                                                                                                         }
-                                                                                                        let _e1748 = phi_1514_;
-                                                                                                        let _e1750 = phi_1515_;
+                                                                                                        let _e1748 = phi_1485_;
+                                                                                                        let _e1750 = phi_1486_;
                                                                                                         local_155 = _e1748;
                                                                                                         local_156 = _e1750;
                                                                                                         let _e1751 = local_153;
@@ -2008,21 +2008,21 @@ fn function_() {
                                                                                                         if _e1781 {
                                                                                                             let _e1835 = local_157;
                                                                                                             if (_e1835 < 0i) {
-                                                                                                                phi_1551_ = 0i;
+                                                                                                                phi_1522_ = 0i;
                                                                                                             } else {
                                                                                                                 let _e1837 = local_157;
                                                                                                                 let _e1838 = local_160;
                                                                                                                 if (_e1837 >= _e1838) {
                                                                                                                     let _e1840 = local_160;
-                                                                                                                    phi_1550_ = (_e1840 - 1i);
+                                                                                                                    phi_1521_ = (_e1840 - 1i);
                                                                                                                 } else {
-                                                                                                                    phi_1550_ = _e1763;
+                                                                                                                    phi_1521_ = _e1763;
                                                                                                                 }
-                                                                                                                let _e1843 = phi_1550_;
-                                                                                                                phi_1551_ = _e1843;
+                                                                                                                let _e1843 = phi_1521_;
+                                                                                                                phi_1522_ = _e1843;
                                                                                                             }
-                                                                                                            let _e1845 = phi_1551_;
-                                                                                                            phi_1611_ = _e1845;
+                                                                                                            let _e1845 = phi_1522_;
+                                                                                                            phi_1582_ = _e1845;
                                                                                                         } else {
                                                                                                             let _e1782 = local_159;
                                                                                                             if (_e1782 == 2u) {
@@ -2032,7 +2032,7 @@ fn function_() {
                                                                                                                 let _e1806 = (_e1805 == 0i);
                                                                                                                 local_163 = _e1806;
                                                                                                                 if _e1806 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1807 = local_162;
@@ -2040,7 +2040,7 @@ fn function_() {
                                                                                                                 local_164 = _e1808;
                                                                                                                 let _e1809 = local_157;
                                                                                                                 if (_e1808 && (_e1809 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1812 = local_157;
@@ -2049,13 +2049,13 @@ fn function_() {
                                                                                                                 local_165 = ((_e1812 % _e1813) + _e1815);
                                                                                                                 let _e1817 = local_163;
                                                                                                                 if _e1817 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1818 = local_165;
                                                                                                                 let _e1820 = local_164;
                                                                                                                 if (_e1820 && (_e1818 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1822 = local_165;
@@ -2064,20 +2064,20 @@ fn function_() {
                                                                                                                 local_166 = _e1824;
                                                                                                                 let _e1825 = local_160;
                                                                                                                 if (_e1824 < _e1825) {
-                                                                                                                    phi_1586_ = _e1824;
+                                                                                                                    phi_1557_ = _e1824;
                                                                                                                 } else {
                                                                                                                     let _e1827 = local_162;
                                                                                                                     let _e1829 = local_166;
-                                                                                                                    phi_1586_ = ((_e1827 - 1i) - _e1829);
+                                                                                                                    phi_1557_ = ((_e1827 - 1i) - _e1829);
                                                                                                                 }
-                                                                                                                let _e1832 = phi_1586_;
-                                                                                                                phi_1610_ = _e1832;
+                                                                                                                let _e1832 = phi_1557_;
+                                                                                                                phi_1581_ = _e1832;
                                                                                                             } else {
                                                                                                                 let _e1784 = local_160;
                                                                                                                 let _e1785 = (_e1784 == 0i);
                                                                                                                 local_167 = _e1785;
                                                                                                                 if _e1785 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1786 = local_160;
@@ -2085,7 +2085,7 @@ fn function_() {
                                                                                                                 local_168 = _e1787;
                                                                                                                 let _e1788 = local_157;
                                                                                                                 if (_e1787 && (_e1788 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1791 = local_157;
@@ -2094,23 +2094,23 @@ fn function_() {
                                                                                                                 local_169 = ((_e1791 % _e1792) + _e1794);
                                                                                                                 let _e1796 = local_167;
                                                                                                                 if _e1796 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1797 = local_169;
                                                                                                                 let _e1799 = local_168;
                                                                                                                 if (_e1799 && (_e1797 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1801 = local_169;
                                                                                                                 let _e1802 = local_160;
-                                                                                                                phi_1610_ = (_e1801 % _e1802);
+                                                                                                                phi_1581_ = (_e1801 % _e1802);
                                                                                                             }
-                                                                                                            let _e1834 = phi_1610_;
-                                                                                                            phi_1611_ = _e1834;
+                                                                                                            let _e1834 = phi_1581_;
+                                                                                                            phi_1582_ = _e1834;
                                                                                                         }
-                                                                                                        let _e1847 = phi_1611_;
+                                                                                                        let _e1847 = phi_1582_;
                                                                                                         local_170 = bitcast<u32>(_e1847);
                                                                                                         let _e1849 = local_157;
                                                                                                         let _e1850 = (_e1849 + 1i);
@@ -2119,21 +2119,21 @@ fn function_() {
                                                                                                         if _e1851 {
                                                                                                             let _e1905 = local_171;
                                                                                                             if (_e1905 < 0i) {
-                                                                                                                phi_1631_ = 0i;
+                                                                                                                phi_1602_ = 0i;
                                                                                                             } else {
                                                                                                                 let _e1907 = local_171;
                                                                                                                 let _e1908 = local_160;
                                                                                                                 if (_e1907 >= _e1908) {
                                                                                                                     let _e1910 = local_160;
-                                                                                                                    phi_1630_ = (_e1910 - 1i);
+                                                                                                                    phi_1601_ = (_e1910 - 1i);
                                                                                                                 } else {
-                                                                                                                    phi_1630_ = _e1850;
+                                                                                                                    phi_1601_ = _e1850;
                                                                                                                 }
-                                                                                                                let _e1913 = phi_1630_;
-                                                                                                                phi_1631_ = _e1913;
+                                                                                                                let _e1913 = phi_1601_;
+                                                                                                                phi_1602_ = _e1913;
                                                                                                             }
-                                                                                                            let _e1915 = phi_1631_;
-                                                                                                            phi_1691_ = _e1915;
+                                                                                                            let _e1915 = phi_1602_;
+                                                                                                            phi_1662_ = _e1915;
                                                                                                         } else {
                                                                                                             let _e1852 = local_159;
                                                                                                             if (_e1852 == 2u) {
@@ -2143,7 +2143,7 @@ fn function_() {
                                                                                                                 let _e1876 = (_e1875 == 0i);
                                                                                                                 local_173 = _e1876;
                                                                                                                 if _e1876 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1877 = local_172;
@@ -2151,7 +2151,7 @@ fn function_() {
                                                                                                                 local_174 = _e1878;
                                                                                                                 let _e1879 = local_171;
                                                                                                                 if (_e1878 && (_e1879 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1882 = local_171;
@@ -2160,13 +2160,13 @@ fn function_() {
                                                                                                                 local_175 = ((_e1882 % _e1883) + _e1885);
                                                                                                                 let _e1887 = local_173;
                                                                                                                 if _e1887 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1888 = local_175;
                                                                                                                 let _e1890 = local_174;
                                                                                                                 if (_e1890 && (_e1888 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1892 = local_175;
@@ -2175,20 +2175,20 @@ fn function_() {
                                                                                                                 local_176 = _e1894;
                                                                                                                 let _e1895 = local_160;
                                                                                                                 if (_e1894 < _e1895) {
-                                                                                                                    phi_1666_ = _e1894;
+                                                                                                                    phi_1637_ = _e1894;
                                                                                                                 } else {
                                                                                                                     let _e1897 = local_172;
                                                                                                                     let _e1899 = local_176;
-                                                                                                                    phi_1666_ = ((_e1897 - 1i) - _e1899);
+                                                                                                                    phi_1637_ = ((_e1897 - 1i) - _e1899);
                                                                                                                 }
-                                                                                                                let _e1902 = phi_1666_;
-                                                                                                                phi_1690_ = _e1902;
+                                                                                                                let _e1902 = phi_1637_;
+                                                                                                                phi_1661_ = _e1902;
                                                                                                             } else {
                                                                                                                 let _e1854 = local_160;
                                                                                                                 let _e1855 = (_e1854 == 0i);
                                                                                                                 local_177 = _e1855;
                                                                                                                 if _e1855 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1856 = local_160;
@@ -2196,7 +2196,7 @@ fn function_() {
                                                                                                                 local_178 = _e1857;
                                                                                                                 let _e1858 = local_171;
                                                                                                                 if (_e1857 && (_e1858 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1861 = local_171;
@@ -2205,23 +2205,23 @@ fn function_() {
                                                                                                                 local_179 = ((_e1861 % _e1862) + _e1864);
                                                                                                                 let _e1866 = local_177;
                                                                                                                 if _e1866 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1867 = local_179;
                                                                                                                 let _e1869 = local_178;
                                                                                                                 if (_e1869 && (_e1867 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1871 = local_179;
                                                                                                                 let _e1872 = local_160;
-                                                                                                                phi_1690_ = (_e1871 % _e1872);
+                                                                                                                phi_1661_ = (_e1871 % _e1872);
                                                                                                             }
-                                                                                                            let _e1904 = phi_1690_;
-                                                                                                            phi_1691_ = _e1904;
+                                                                                                            let _e1904 = phi_1661_;
+                                                                                                            phi_1662_ = _e1904;
                                                                                                         }
-                                                                                                        let _e1917 = phi_1691_;
+                                                                                                        let _e1917 = phi_1662_;
                                                                                                         local_180 = bitcast<u32>(_e1917);
                                                                                                         let _e1919 = local_147;
                                                                                                         local_181 = _e1919.member_4;
@@ -2232,21 +2232,21 @@ fn function_() {
                                                                                                         if _e1923 {
                                                                                                             let _e1977 = local_158;
                                                                                                             if (_e1977 < 0i) {
-                                                                                                                phi_1710_ = 0i;
+                                                                                                                phi_1681_ = 0i;
                                                                                                             } else {
                                                                                                                 let _e1979 = local_158;
                                                                                                                 let _e1980 = local_182;
                                                                                                                 if (_e1979 >= _e1980) {
                                                                                                                     let _e1982 = local_182;
-                                                                                                                    phi_1709_ = (_e1982 - 1i);
+                                                                                                                    phi_1680_ = (_e1982 - 1i);
                                                                                                                 } else {
-                                                                                                                    phi_1709_ = _e1776;
+                                                                                                                    phi_1680_ = _e1776;
                                                                                                                 }
-                                                                                                                let _e1985 = phi_1709_;
-                                                                                                                phi_1710_ = _e1985;
+                                                                                                                let _e1985 = phi_1680_;
+                                                                                                                phi_1681_ = _e1985;
                                                                                                             }
-                                                                                                            let _e1987 = phi_1710_;
-                                                                                                            phi_1770_ = _e1987;
+                                                                                                            let _e1987 = phi_1681_;
+                                                                                                            phi_1741_ = _e1987;
                                                                                                         } else {
                                                                                                             let _e1924 = local_181;
                                                                                                             if (_e1924 == 2u) {
@@ -2256,7 +2256,7 @@ fn function_() {
                                                                                                                 let _e1948 = (_e1947 == 0i);
                                                                                                                 local_185 = _e1948;
                                                                                                                 if _e1948 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1949 = local_184;
@@ -2264,7 +2264,7 @@ fn function_() {
                                                                                                                 local_186 = _e1950;
                                                                                                                 let _e1951 = local_158;
                                                                                                                 if (_e1950 && (_e1951 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1954 = local_158;
@@ -2273,13 +2273,13 @@ fn function_() {
                                                                                                                 local_187 = ((_e1954 % _e1955) + _e1957);
                                                                                                                 let _e1959 = local_185;
                                                                                                                 if _e1959 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1960 = local_187;
                                                                                                                 let _e1962 = local_186;
                                                                                                                 if (_e1962 && (_e1960 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1964 = local_187;
@@ -2288,20 +2288,20 @@ fn function_() {
                                                                                                                 local_188 = _e1966;
                                                                                                                 let _e1967 = local_182;
                                                                                                                 if (_e1966 < _e1967) {
-                                                                                                                    phi_1745_ = _e1966;
+                                                                                                                    phi_1716_ = _e1966;
                                                                                                                 } else {
                                                                                                                     let _e1969 = local_184;
                                                                                                                     let _e1971 = local_188;
-                                                                                                                    phi_1745_ = ((_e1969 - 1i) - _e1971);
+                                                                                                                    phi_1716_ = ((_e1969 - 1i) - _e1971);
                                                                                                                 }
-                                                                                                                let _e1974 = phi_1745_;
-                                                                                                                phi_1769_ = _e1974;
+                                                                                                                let _e1974 = phi_1716_;
+                                                                                                                phi_1740_ = _e1974;
                                                                                                             } else {
                                                                                                                 let _e1926 = local_182;
                                                                                                                 let _e1927 = (_e1926 == 0i);
                                                                                                                 local_189 = _e1927;
                                                                                                                 if _e1927 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1928 = local_182;
@@ -2309,7 +2309,7 @@ fn function_() {
                                                                                                                 local_190 = _e1929;
                                                                                                                 let _e1930 = local_158;
                                                                                                                 if (_e1929 && (_e1930 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1933 = local_158;
@@ -2318,23 +2318,23 @@ fn function_() {
                                                                                                                 local_191 = ((_e1933 % _e1934) + _e1936);
                                                                                                                 let _e1938 = local_189;
                                                                                                                 if _e1938 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1939 = local_191;
                                                                                                                 let _e1941 = local_190;
                                                                                                                 if (_e1941 && (_e1939 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1943 = local_191;
                                                                                                                 let _e1944 = local_182;
-                                                                                                                phi_1769_ = (_e1943 % _e1944);
+                                                                                                                phi_1740_ = (_e1943 % _e1944);
                                                                                                             }
-                                                                                                            let _e1976 = phi_1769_;
-                                                                                                            phi_1770_ = _e1976;
+                                                                                                            let _e1976 = phi_1740_;
+                                                                                                            phi_1741_ = _e1976;
                                                                                                         }
-                                                                                                        let _e1989 = phi_1770_;
+                                                                                                        let _e1989 = phi_1741_;
                                                                                                         local_192 = bitcast<u32>(_e1989);
                                                                                                         let _e1991 = local_158;
                                                                                                         let _e1992 = (_e1991 + 1i);
@@ -2343,21 +2343,21 @@ fn function_() {
                                                                                                         if _e1993 {
                                                                                                             let _e2047 = local_193;
                                                                                                             if (_e2047 < 0i) {
-                                                                                                                phi_1790_ = 0i;
+                                                                                                                phi_1761_ = 0i;
                                                                                                             } else {
                                                                                                                 let _e2049 = local_193;
                                                                                                                 let _e2050 = local_182;
                                                                                                                 if (_e2049 >= _e2050) {
                                                                                                                     let _e2052 = local_182;
-                                                                                                                    phi_1789_ = (_e2052 - 1i);
+                                                                                                                    phi_1760_ = (_e2052 - 1i);
                                                                                                                 } else {
-                                                                                                                    phi_1789_ = _e1992;
+                                                                                                                    phi_1760_ = _e1992;
                                                                                                                 }
-                                                                                                                let _e2055 = phi_1789_;
-                                                                                                                phi_1790_ = _e2055;
+                                                                                                                let _e2055 = phi_1760_;
+                                                                                                                phi_1761_ = _e2055;
                                                                                                             }
-                                                                                                            let _e2057 = phi_1790_;
-                                                                                                            phi_1850_ = _e2057;
+                                                                                                            let _e2057 = phi_1761_;
+                                                                                                            phi_1821_ = _e2057;
                                                                                                         } else {
                                                                                                             let _e1994 = local_181;
                                                                                                             if (_e1994 == 2u) {
@@ -2367,7 +2367,7 @@ fn function_() {
                                                                                                                 let _e2018 = (_e2017 == 0i);
                                                                                                                 local_195 = _e2018;
                                                                                                                 if _e2018 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e2019 = local_194;
@@ -2375,7 +2375,7 @@ fn function_() {
                                                                                                                 local_196 = _e2020;
                                                                                                                 let _e2021 = local_193;
                                                                                                                 if (_e2020 && (_e2021 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e2024 = local_193;
@@ -2384,13 +2384,13 @@ fn function_() {
                                                                                                                 local_197 = ((_e2024 % _e2025) + _e2027);
                                                                                                                 let _e2029 = local_195;
                                                                                                                 if _e2029 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e2030 = local_197;
                                                                                                                 let _e2032 = local_196;
                                                                                                                 if (_e2032 && (_e2030 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e2034 = local_197;
@@ -2399,20 +2399,20 @@ fn function_() {
                                                                                                                 local_198 = _e2036;
                                                                                                                 let _e2037 = local_182;
                                                                                                                 if (_e2036 < _e2037) {
-                                                                                                                    phi_1825_ = _e2036;
+                                                                                                                    phi_1796_ = _e2036;
                                                                                                                 } else {
                                                                                                                     let _e2039 = local_194;
                                                                                                                     let _e2041 = local_198;
-                                                                                                                    phi_1825_ = ((_e2039 - 1i) - _e2041);
+                                                                                                                    phi_1796_ = ((_e2039 - 1i) - _e2041);
                                                                                                                 }
-                                                                                                                let _e2044 = phi_1825_;
-                                                                                                                phi_1849_ = _e2044;
+                                                                                                                let _e2044 = phi_1796_;
+                                                                                                                phi_1820_ = _e2044;
                                                                                                             } else {
                                                                                                                 let _e1996 = local_182;
                                                                                                                 let _e1997 = (_e1996 == 0i);
                                                                                                                 local_199 = _e1997;
                                                                                                                 if _e1997 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e1998 = local_182;
@@ -2420,7 +2420,7 @@ fn function_() {
                                                                                                                 local_200 = _e1999;
                                                                                                                 let _e2000 = local_193;
                                                                                                                 if (_e1999 && (_e2000 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e2003 = local_193;
@@ -2429,23 +2429,23 @@ fn function_() {
                                                                                                                 local_201 = ((_e2003 % _e2004) + _e2006);
                                                                                                                 let _e2008 = local_199;
                                                                                                                 if _e2008 {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e2009 = local_201;
                                                                                                                 let _e2011 = local_200;
                                                                                                                 if (_e2011 && (_e2009 == i32(-2147483648))) {
-                                                                                                                    phi_3239_ = true;
+                                                                                                                    phi_3210_ = true;
                                                                                                                     break;
                                                                                                                 }
                                                                                                                 let _e2013 = local_201;
                                                                                                                 let _e2014 = local_182;
-                                                                                                                phi_1849_ = (_e2013 % _e2014);
+                                                                                                                phi_1820_ = (_e2013 % _e2014);
                                                                                                             }
-                                                                                                            let _e2046 = phi_1849_;
-                                                                                                            phi_1850_ = _e2046;
+                                                                                                            let _e2046 = phi_1820_;
+                                                                                                            phi_1821_ = _e2046;
                                                                                                         }
-                                                                                                        let _e2059 = phi_1850_;
+                                                                                                        let _e2059 = phi_1821_;
                                                                                                         local_202 = bitcast<u32>(_e2059);
                                                                                                         let _e2061 = local_147;
                                                                                                         local_203 = _e2061.member;
@@ -2459,7 +2459,7 @@ fn function_() {
                                                                                                         let _e2070 = local_5;
                                                                                                         if (_e2069 < _e2070) {
                                                                                                         } else {
-                                                                                                            phi_3239_ = true;
+                                                                                                            phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e2072 = local_205;
@@ -2471,7 +2471,7 @@ fn function_() {
                                                                                                         let _e2078 = local_5;
                                                                                                         if (_e2077 < _e2078) {
                                                                                                         } else {
-                                                                                                            phi_3239_ = true;
+                                                                                                            phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e2080 = local_207;
@@ -2486,22 +2486,22 @@ fn function_() {
                                                                                                         if (_e2091 == 0u) {
                                                                                                             let _e2113 = local_210;
                                                                                                             let _e2115 = local_309;
-                                                                                                            phi_1904_ = ((_e2115 * f32(_e2113)) * 0.000000059604645f);
+                                                                                                            phi_1875_ = ((_e2115 * f32(_e2113)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2094 = local_209;
                                                                                                             if (_e2094 == 31u) {
                                                                                                                 let _e2104 = local_210;
-                                                                                                                phi_1901_ = (2139095040u | (_e2104 << bitcast<u32>(13i)));
+                                                                                                                phi_1872_ = (2139095040u | (_e2104 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2096 = local_209;
                                                                                                                 let _e2100 = local_210;
-                                                                                                                phi_1901_ = (((_e2096 + 112u) << bitcast<u32>(23i)) | (_e2100 << bitcast<u32>(13i)));
+                                                                                                                phi_1872_ = (((_e2096 + 112u) << bitcast<u32>(23i)) | (_e2100 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2109 = phi_1901_;
+                                                                                                            let _e2109 = phi_1872_;
                                                                                                             let _e2111 = local_309;
-                                                                                                            phi_1904_ = (_e2111 * bitcast<f32>(_e2109));
+                                                                                                            phi_1875_ = (_e2111 * bitcast<f32>(_e2109));
                                                                                                         }
-                                                                                                        let _e2119 = phi_1904_;
+                                                                                                        let _e2119 = phi_1875_;
                                                                                                         local_211 = _e2119;
                                                                                                         let _e2120 = local_206;
                                                                                                         let _e2122 = (_e2120 >> bitcast<u32>(16i));
@@ -2512,22 +2512,22 @@ fn function_() {
                                                                                                         if (_e2128 == 0u) {
                                                                                                             let _e2150 = local_213;
                                                                                                             let _e2152 = local_310;
-                                                                                                            phi_1936_ = ((_e2152 * f32(_e2150)) * 0.000000059604645f);
+                                                                                                            phi_1907_ = ((_e2152 * f32(_e2150)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2131 = local_212;
                                                                                                             if (_e2131 == 31u) {
                                                                                                                 let _e2141 = local_213;
-                                                                                                                phi_1933_ = (2139095040u | (_e2141 << bitcast<u32>(13i)));
+                                                                                                                phi_1904_ = (2139095040u | (_e2141 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2133 = local_212;
                                                                                                                 let _e2137 = local_213;
-                                                                                                                phi_1933_ = (((_e2133 + 112u) << bitcast<u32>(23i)) | (_e2137 << bitcast<u32>(13i)));
+                                                                                                                phi_1904_ = (((_e2133 + 112u) << bitcast<u32>(23i)) | (_e2137 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2146 = phi_1933_;
+                                                                                                            let _e2146 = phi_1904_;
                                                                                                             let _e2148 = local_310;
-                                                                                                            phi_1936_ = (_e2148 * bitcast<f32>(_e2146));
+                                                                                                            phi_1907_ = (_e2148 * bitcast<f32>(_e2146));
                                                                                                         }
-                                                                                                        let _e2156 = phi_1936_;
+                                                                                                        let _e2156 = phi_1907_;
                                                                                                         local_214 = _e2156;
                                                                                                         let _e2157 = local_208;
                                                                                                         let _e2158 = (_e2157 & 65535u);
@@ -2538,22 +2538,22 @@ fn function_() {
                                                                                                         if (_e2164 == 0u) {
                                                                                                             let _e2186 = local_216;
                                                                                                             let _e2188 = local_311;
-                                                                                                            phi_1968_ = ((_e2188 * f32(_e2186)) * 0.000000059604645f);
+                                                                                                            phi_1939_ = ((_e2188 * f32(_e2186)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2167 = local_215;
                                                                                                             if (_e2167 == 31u) {
                                                                                                                 let _e2177 = local_216;
-                                                                                                                phi_1965_ = (2139095040u | (_e2177 << bitcast<u32>(13i)));
+                                                                                                                phi_1936_ = (2139095040u | (_e2177 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2169 = local_215;
                                                                                                                 let _e2173 = local_216;
-                                                                                                                phi_1965_ = (((_e2169 + 112u) << bitcast<u32>(23i)) | (_e2173 << bitcast<u32>(13i)));
+                                                                                                                phi_1936_ = (((_e2169 + 112u) << bitcast<u32>(23i)) | (_e2173 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2182 = phi_1965_;
+                                                                                                            let _e2182 = phi_1936_;
                                                                                                             let _e2184 = local_311;
-                                                                                                            phi_1968_ = (_e2184 * bitcast<f32>(_e2182));
+                                                                                                            phi_1939_ = (_e2184 * bitcast<f32>(_e2182));
                                                                                                         }
-                                                                                                        let _e2192 = phi_1968_;
+                                                                                                        let _e2192 = phi_1939_;
                                                                                                         local_217 = _e2192;
                                                                                                         let _e2193 = local_208;
                                                                                                         let _e2195 = (_e2193 >> bitcast<u32>(16i));
@@ -2564,22 +2564,22 @@ fn function_() {
                                                                                                         if (_e2201 == 0u) {
                                                                                                             let _e2223 = local_219;
                                                                                                             let _e2225 = local_312;
-                                                                                                            phi_2000_ = ((_e2225 * f32(_e2223)) * 0.000000059604645f);
+                                                                                                            phi_1971_ = ((_e2225 * f32(_e2223)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2204 = local_218;
                                                                                                             if (_e2204 == 31u) {
                                                                                                                 let _e2214 = local_219;
-                                                                                                                phi_1997_ = (2139095040u | (_e2214 << bitcast<u32>(13i)));
+                                                                                                                phi_1968_ = (2139095040u | (_e2214 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2206 = local_218;
                                                                                                                 let _e2210 = local_219;
-                                                                                                                phi_1997_ = (((_e2206 + 112u) << bitcast<u32>(23i)) | (_e2210 << bitcast<u32>(13i)));
+                                                                                                                phi_1968_ = (((_e2206 + 112u) << bitcast<u32>(23i)) | (_e2210 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2219 = phi_1997_;
+                                                                                                            let _e2219 = phi_1968_;
                                                                                                             let _e2221 = local_312;
-                                                                                                            phi_2000_ = (_e2221 * bitcast<f32>(_e2219));
+                                                                                                            phi_1971_ = (_e2221 * bitcast<f32>(_e2219));
                                                                                                         }
-                                                                                                        let _e2229 = phi_2000_;
+                                                                                                        let _e2229 = phi_1971_;
                                                                                                         local_220 = _e2229;
                                                                                                         let _e2230 = local_204;
                                                                                                         let _e2231 = local_180;
@@ -2588,7 +2588,7 @@ fn function_() {
                                                                                                         let _e2234 = local_5;
                                                                                                         if (_e2233 < _e2234) {
                                                                                                         } else {
-                                                                                                            phi_3239_ = true;
+                                                                                                            phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e2236 = local_221;
@@ -2600,7 +2600,7 @@ fn function_() {
                                                                                                         let _e2242 = local_5;
                                                                                                         if (_e2241 < _e2242) {
                                                                                                         } else {
-                                                                                                            phi_3239_ = true;
+                                                                                                            phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e2244 = local_223;
@@ -2615,22 +2615,22 @@ fn function_() {
                                                                                                         if (_e2255 == 0u) {
                                                                                                             let _e2277 = local_226;
                                                                                                             let _e2279 = local_313;
-                                                                                                            phi_2053_ = ((_e2279 * f32(_e2277)) * 0.000000059604645f);
+                                                                                                            phi_2024_ = ((_e2279 * f32(_e2277)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2258 = local_225;
                                                                                                             if (_e2258 == 31u) {
                                                                                                                 let _e2268 = local_226;
-                                                                                                                phi_2050_ = (2139095040u | (_e2268 << bitcast<u32>(13i)));
+                                                                                                                phi_2021_ = (2139095040u | (_e2268 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2260 = local_225;
                                                                                                                 let _e2264 = local_226;
-                                                                                                                phi_2050_ = (((_e2260 + 112u) << bitcast<u32>(23i)) | (_e2264 << bitcast<u32>(13i)));
+                                                                                                                phi_2021_ = (((_e2260 + 112u) << bitcast<u32>(23i)) | (_e2264 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2273 = phi_2050_;
+                                                                                                            let _e2273 = phi_2021_;
                                                                                                             let _e2275 = local_313;
-                                                                                                            phi_2053_ = (_e2275 * bitcast<f32>(_e2273));
+                                                                                                            phi_2024_ = (_e2275 * bitcast<f32>(_e2273));
                                                                                                         }
-                                                                                                        let _e2283 = phi_2053_;
+                                                                                                        let _e2283 = phi_2024_;
                                                                                                         local_227 = _e2283;
                                                                                                         let _e2284 = local_222;
                                                                                                         let _e2286 = (_e2284 >> bitcast<u32>(16i));
@@ -2641,22 +2641,22 @@ fn function_() {
                                                                                                         if (_e2292 == 0u) {
                                                                                                             let _e2314 = local_229;
                                                                                                             let _e2316 = local_314;
-                                                                                                            phi_2085_ = ((_e2316 * f32(_e2314)) * 0.000000059604645f);
+                                                                                                            phi_2056_ = ((_e2316 * f32(_e2314)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2295 = local_228;
                                                                                                             if (_e2295 == 31u) {
                                                                                                                 let _e2305 = local_229;
-                                                                                                                phi_2082_ = (2139095040u | (_e2305 << bitcast<u32>(13i)));
+                                                                                                                phi_2053_ = (2139095040u | (_e2305 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2297 = local_228;
                                                                                                                 let _e2301 = local_229;
-                                                                                                                phi_2082_ = (((_e2297 + 112u) << bitcast<u32>(23i)) | (_e2301 << bitcast<u32>(13i)));
+                                                                                                                phi_2053_ = (((_e2297 + 112u) << bitcast<u32>(23i)) | (_e2301 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2310 = phi_2082_;
+                                                                                                            let _e2310 = phi_2053_;
                                                                                                             let _e2312 = local_314;
-                                                                                                            phi_2085_ = (_e2312 * bitcast<f32>(_e2310));
+                                                                                                            phi_2056_ = (_e2312 * bitcast<f32>(_e2310));
                                                                                                         }
-                                                                                                        let _e2320 = phi_2085_;
+                                                                                                        let _e2320 = phi_2056_;
                                                                                                         local_230 = _e2320;
                                                                                                         let _e2321 = local_224;
                                                                                                         let _e2322 = (_e2321 & 65535u);
@@ -2667,22 +2667,22 @@ fn function_() {
                                                                                                         if (_e2328 == 0u) {
                                                                                                             let _e2350 = local_232;
                                                                                                             let _e2352 = local_315;
-                                                                                                            phi_2117_ = ((_e2352 * f32(_e2350)) * 0.000000059604645f);
+                                                                                                            phi_2088_ = ((_e2352 * f32(_e2350)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2331 = local_231;
                                                                                                             if (_e2331 == 31u) {
                                                                                                                 let _e2341 = local_232;
-                                                                                                                phi_2114_ = (2139095040u | (_e2341 << bitcast<u32>(13i)));
+                                                                                                                phi_2085_ = (2139095040u | (_e2341 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2333 = local_231;
                                                                                                                 let _e2337 = local_232;
-                                                                                                                phi_2114_ = (((_e2333 + 112u) << bitcast<u32>(23i)) | (_e2337 << bitcast<u32>(13i)));
+                                                                                                                phi_2085_ = (((_e2333 + 112u) << bitcast<u32>(23i)) | (_e2337 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2346 = phi_2114_;
+                                                                                                            let _e2346 = phi_2085_;
                                                                                                             let _e2348 = local_315;
-                                                                                                            phi_2117_ = (_e2348 * bitcast<f32>(_e2346));
+                                                                                                            phi_2088_ = (_e2348 * bitcast<f32>(_e2346));
                                                                                                         }
-                                                                                                        let _e2356 = phi_2117_;
+                                                                                                        let _e2356 = phi_2088_;
                                                                                                         local_233 = _e2356;
                                                                                                         let _e2357 = local_224;
                                                                                                         let _e2359 = (_e2357 >> bitcast<u32>(16i));
@@ -2693,22 +2693,22 @@ fn function_() {
                                                                                                         if (_e2365 == 0u) {
                                                                                                             let _e2387 = local_235;
                                                                                                             let _e2389 = local_316;
-                                                                                                            phi_2149_ = ((_e2389 * f32(_e2387)) * 0.000000059604645f);
+                                                                                                            phi_2120_ = ((_e2389 * f32(_e2387)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2368 = local_234;
                                                                                                             if (_e2368 == 31u) {
                                                                                                                 let _e2378 = local_235;
-                                                                                                                phi_2146_ = (2139095040u | (_e2378 << bitcast<u32>(13i)));
+                                                                                                                phi_2117_ = (2139095040u | (_e2378 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2370 = local_234;
                                                                                                                 let _e2374 = local_235;
-                                                                                                                phi_2146_ = (((_e2370 + 112u) << bitcast<u32>(23i)) | (_e2374 << bitcast<u32>(13i)));
+                                                                                                                phi_2117_ = (((_e2370 + 112u) << bitcast<u32>(23i)) | (_e2374 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2383 = phi_2146_;
+                                                                                                            let _e2383 = phi_2117_;
                                                                                                             let _e2385 = local_316;
-                                                                                                            phi_2149_ = (_e2385 * bitcast<f32>(_e2383));
+                                                                                                            phi_2120_ = (_e2385 * bitcast<f32>(_e2383));
                                                                                                         }
-                                                                                                        let _e2393 = phi_2149_;
+                                                                                                        let _e2393 = phi_2120_;
                                                                                                         let _e2394 = local_227;
                                                                                                         let _e2395 = local_211;
                                                                                                         let _e2397 = local_156;
@@ -2739,7 +2739,7 @@ fn function_() {
                                                                                                         let _e2429 = local_5;
                                                                                                         if (_e2428 < _e2429) {
                                                                                                         } else {
-                                                                                                            phi_3239_ = true;
+                                                                                                            phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e2431 = local_241;
@@ -2751,7 +2751,7 @@ fn function_() {
                                                                                                         let _e2437 = local_5;
                                                                                                         if (_e2436 < _e2437) {
                                                                                                         } else {
-                                                                                                            phi_3239_ = true;
+                                                                                                            phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e2439 = local_243;
@@ -2766,22 +2766,22 @@ fn function_() {
                                                                                                         if (_e2450 == 0u) {
                                                                                                             let _e2472 = local_246;
                                                                                                             let _e2474 = local_317;
-                                                                                                            phi_2214_ = ((_e2474 * f32(_e2472)) * 0.000000059604645f);
+                                                                                                            phi_2185_ = ((_e2474 * f32(_e2472)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2453 = local_245;
                                                                                                             if (_e2453 == 31u) {
                                                                                                                 let _e2463 = local_246;
-                                                                                                                phi_2211_ = (2139095040u | (_e2463 << bitcast<u32>(13i)));
+                                                                                                                phi_2182_ = (2139095040u | (_e2463 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2455 = local_245;
                                                                                                                 let _e2459 = local_246;
-                                                                                                                phi_2211_ = (((_e2455 + 112u) << bitcast<u32>(23i)) | (_e2459 << bitcast<u32>(13i)));
+                                                                                                                phi_2182_ = (((_e2455 + 112u) << bitcast<u32>(23i)) | (_e2459 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2468 = phi_2211_;
+                                                                                                            let _e2468 = phi_2182_;
                                                                                                             let _e2470 = local_317;
-                                                                                                            phi_2214_ = (_e2470 * bitcast<f32>(_e2468));
+                                                                                                            phi_2185_ = (_e2470 * bitcast<f32>(_e2468));
                                                                                                         }
-                                                                                                        let _e2478 = phi_2214_;
+                                                                                                        let _e2478 = phi_2185_;
                                                                                                         local_247 = _e2478;
                                                                                                         let _e2479 = local_242;
                                                                                                         let _e2481 = (_e2479 >> bitcast<u32>(16i));
@@ -2792,22 +2792,22 @@ fn function_() {
                                                                                                         if (_e2487 == 0u) {
                                                                                                             let _e2509 = local_249;
                                                                                                             let _e2511 = local_318;
-                                                                                                            phi_2246_ = ((_e2511 * f32(_e2509)) * 0.000000059604645f);
+                                                                                                            phi_2217_ = ((_e2511 * f32(_e2509)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2490 = local_248;
                                                                                                             if (_e2490 == 31u) {
                                                                                                                 let _e2500 = local_249;
-                                                                                                                phi_2243_ = (2139095040u | (_e2500 << bitcast<u32>(13i)));
+                                                                                                                phi_2214_ = (2139095040u | (_e2500 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2492 = local_248;
                                                                                                                 let _e2496 = local_249;
-                                                                                                                phi_2243_ = (((_e2492 + 112u) << bitcast<u32>(23i)) | (_e2496 << bitcast<u32>(13i)));
+                                                                                                                phi_2214_ = (((_e2492 + 112u) << bitcast<u32>(23i)) | (_e2496 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2505 = phi_2243_;
+                                                                                                            let _e2505 = phi_2214_;
                                                                                                             let _e2507 = local_318;
-                                                                                                            phi_2246_ = (_e2507 * bitcast<f32>(_e2505));
+                                                                                                            phi_2217_ = (_e2507 * bitcast<f32>(_e2505));
                                                                                                         }
-                                                                                                        let _e2515 = phi_2246_;
+                                                                                                        let _e2515 = phi_2217_;
                                                                                                         local_250 = _e2515;
                                                                                                         let _e2516 = local_244;
                                                                                                         let _e2517 = (_e2516 & 65535u);
@@ -2818,22 +2818,22 @@ fn function_() {
                                                                                                         if (_e2523 == 0u) {
                                                                                                             let _e2545 = local_252;
                                                                                                             let _e2547 = local_319;
-                                                                                                            phi_2278_ = ((_e2547 * f32(_e2545)) * 0.000000059604645f);
+                                                                                                            phi_2249_ = ((_e2547 * f32(_e2545)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2526 = local_251;
                                                                                                             if (_e2526 == 31u) {
                                                                                                                 let _e2536 = local_252;
-                                                                                                                phi_2275_ = (2139095040u | (_e2536 << bitcast<u32>(13i)));
+                                                                                                                phi_2246_ = (2139095040u | (_e2536 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2528 = local_251;
                                                                                                                 let _e2532 = local_252;
-                                                                                                                phi_2275_ = (((_e2528 + 112u) << bitcast<u32>(23i)) | (_e2532 << bitcast<u32>(13i)));
+                                                                                                                phi_2246_ = (((_e2528 + 112u) << bitcast<u32>(23i)) | (_e2532 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2541 = phi_2275_;
+                                                                                                            let _e2541 = phi_2246_;
                                                                                                             let _e2543 = local_319;
-                                                                                                            phi_2278_ = (_e2543 * bitcast<f32>(_e2541));
+                                                                                                            phi_2249_ = (_e2543 * bitcast<f32>(_e2541));
                                                                                                         }
-                                                                                                        let _e2551 = phi_2278_;
+                                                                                                        let _e2551 = phi_2249_;
                                                                                                         local_253 = _e2551;
                                                                                                         let _e2552 = local_244;
                                                                                                         let _e2554 = (_e2552 >> bitcast<u32>(16i));
@@ -2844,22 +2844,22 @@ fn function_() {
                                                                                                         if (_e2560 == 0u) {
                                                                                                             let _e2582 = local_255;
                                                                                                             let _e2584 = local_320;
-                                                                                                            phi_2310_ = ((_e2584 * f32(_e2582)) * 0.000000059604645f);
+                                                                                                            phi_2281_ = ((_e2584 * f32(_e2582)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2563 = local_254;
                                                                                                             if (_e2563 == 31u) {
                                                                                                                 let _e2573 = local_255;
-                                                                                                                phi_2307_ = (2139095040u | (_e2573 << bitcast<u32>(13i)));
+                                                                                                                phi_2278_ = (2139095040u | (_e2573 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2565 = local_254;
                                                                                                                 let _e2569 = local_255;
-                                                                                                                phi_2307_ = (((_e2565 + 112u) << bitcast<u32>(23i)) | (_e2569 << bitcast<u32>(13i)));
+                                                                                                                phi_2278_ = (((_e2565 + 112u) << bitcast<u32>(23i)) | (_e2569 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2578 = phi_2307_;
+                                                                                                            let _e2578 = phi_2278_;
                                                                                                             let _e2580 = local_320;
-                                                                                                            phi_2310_ = (_e2580 * bitcast<f32>(_e2578));
+                                                                                                            phi_2281_ = (_e2580 * bitcast<f32>(_e2578));
                                                                                                         }
-                                                                                                        let _e2588 = phi_2310_;
+                                                                                                        let _e2588 = phi_2281_;
                                                                                                         local_256 = _e2588;
                                                                                                         let _e2589 = local_240;
                                                                                                         let _e2590 = local_180;
@@ -2868,7 +2868,7 @@ fn function_() {
                                                                                                         let _e2593 = local_5;
                                                                                                         if (_e2592 < _e2593) {
                                                                                                         } else {
-                                                                                                            phi_3239_ = true;
+                                                                                                            phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e2595 = local_257;
@@ -2880,7 +2880,7 @@ fn function_() {
                                                                                                         let _e2601 = local_5;
                                                                                                         if (_e2600 < _e2601) {
                                                                                                         } else {
-                                                                                                            phi_3239_ = true;
+                                                                                                            phi_3210_ = true;
                                                                                                             break;
                                                                                                         }
                                                                                                         let _e2603 = local_259;
@@ -2895,22 +2895,22 @@ fn function_() {
                                                                                                         if (_e2614 == 0u) {
                                                                                                             let _e2636 = local_262;
                                                                                                             let _e2638 = local_321;
-                                                                                                            phi_2363_ = ((_e2638 * f32(_e2636)) * 0.000000059604645f);
+                                                                                                            phi_2334_ = ((_e2638 * f32(_e2636)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2617 = local_261;
                                                                                                             if (_e2617 == 31u) {
                                                                                                                 let _e2627 = local_262;
-                                                                                                                phi_2360_ = (2139095040u | (_e2627 << bitcast<u32>(13i)));
+                                                                                                                phi_2331_ = (2139095040u | (_e2627 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2619 = local_261;
                                                                                                                 let _e2623 = local_262;
-                                                                                                                phi_2360_ = (((_e2619 + 112u) << bitcast<u32>(23i)) | (_e2623 << bitcast<u32>(13i)));
+                                                                                                                phi_2331_ = (((_e2619 + 112u) << bitcast<u32>(23i)) | (_e2623 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2632 = phi_2360_;
+                                                                                                            let _e2632 = phi_2331_;
                                                                                                             let _e2634 = local_321;
-                                                                                                            phi_2363_ = (_e2634 * bitcast<f32>(_e2632));
+                                                                                                            phi_2334_ = (_e2634 * bitcast<f32>(_e2632));
                                                                                                         }
-                                                                                                        let _e2642 = phi_2363_;
+                                                                                                        let _e2642 = phi_2334_;
                                                                                                         local_263 = _e2642;
                                                                                                         let _e2643 = local_258;
                                                                                                         let _e2645 = (_e2643 >> bitcast<u32>(16i));
@@ -2921,22 +2921,22 @@ fn function_() {
                                                                                                         if (_e2651 == 0u) {
                                                                                                             let _e2673 = local_265;
                                                                                                             let _e2675 = local_322;
-                                                                                                            phi_2395_ = ((_e2675 * f32(_e2673)) * 0.000000059604645f);
+                                                                                                            phi_2366_ = ((_e2675 * f32(_e2673)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2654 = local_264;
                                                                                                             if (_e2654 == 31u) {
                                                                                                                 let _e2664 = local_265;
-                                                                                                                phi_2392_ = (2139095040u | (_e2664 << bitcast<u32>(13i)));
+                                                                                                                phi_2363_ = (2139095040u | (_e2664 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2656 = local_264;
                                                                                                                 let _e2660 = local_265;
-                                                                                                                phi_2392_ = (((_e2656 + 112u) << bitcast<u32>(23i)) | (_e2660 << bitcast<u32>(13i)));
+                                                                                                                phi_2363_ = (((_e2656 + 112u) << bitcast<u32>(23i)) | (_e2660 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2669 = phi_2392_;
+                                                                                                            let _e2669 = phi_2363_;
                                                                                                             let _e2671 = local_322;
-                                                                                                            phi_2395_ = (_e2671 * bitcast<f32>(_e2669));
+                                                                                                            phi_2366_ = (_e2671 * bitcast<f32>(_e2669));
                                                                                                         }
-                                                                                                        let _e2679 = phi_2395_;
+                                                                                                        let _e2679 = phi_2366_;
                                                                                                         local_266 = _e2679;
                                                                                                         let _e2680 = local_260;
                                                                                                         let _e2681 = (_e2680 & 65535u);
@@ -2947,22 +2947,22 @@ fn function_() {
                                                                                                         if (_e2687 == 0u) {
                                                                                                             let _e2709 = local_268;
                                                                                                             let _e2711 = local_323;
-                                                                                                            phi_2427_ = ((_e2711 * f32(_e2709)) * 0.000000059604645f);
+                                                                                                            phi_2398_ = ((_e2711 * f32(_e2709)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2690 = local_267;
                                                                                                             if (_e2690 == 31u) {
                                                                                                                 let _e2700 = local_268;
-                                                                                                                phi_2424_ = (2139095040u | (_e2700 << bitcast<u32>(13i)));
+                                                                                                                phi_2395_ = (2139095040u | (_e2700 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2692 = local_267;
                                                                                                                 let _e2696 = local_268;
-                                                                                                                phi_2424_ = (((_e2692 + 112u) << bitcast<u32>(23i)) | (_e2696 << bitcast<u32>(13i)));
+                                                                                                                phi_2395_ = (((_e2692 + 112u) << bitcast<u32>(23i)) | (_e2696 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2705 = phi_2424_;
+                                                                                                            let _e2705 = phi_2395_;
                                                                                                             let _e2707 = local_323;
-                                                                                                            phi_2427_ = (_e2707 * bitcast<f32>(_e2705));
+                                                                                                            phi_2398_ = (_e2707 * bitcast<f32>(_e2705));
                                                                                                         }
-                                                                                                        let _e2715 = phi_2427_;
+                                                                                                        let _e2715 = phi_2398_;
                                                                                                         local_269 = _e2715;
                                                                                                         let _e2716 = local_260;
                                                                                                         let _e2718 = (_e2716 >> bitcast<u32>(16i));
@@ -2973,22 +2973,22 @@ fn function_() {
                                                                                                         if (_e2724 == 0u) {
                                                                                                             let _e2746 = local_271;
                                                                                                             let _e2748 = local_324;
-                                                                                                            phi_2459_ = ((_e2748 * f32(_e2746)) * 0.000000059604645f);
+                                                                                                            phi_2430_ = ((_e2748 * f32(_e2746)) * 0.000000059604645f);
                                                                                                         } else {
                                                                                                             let _e2727 = local_270;
                                                                                                             if (_e2727 == 31u) {
                                                                                                                 let _e2737 = local_271;
-                                                                                                                phi_2456_ = (2139095040u | (_e2737 << bitcast<u32>(13i)));
+                                                                                                                phi_2427_ = (2139095040u | (_e2737 << bitcast<u32>(13i)));
                                                                                                             } else {
                                                                                                                 let _e2729 = local_270;
                                                                                                                 let _e2733 = local_271;
-                                                                                                                phi_2456_ = (((_e2729 + 112u) << bitcast<u32>(23i)) | (_e2733 << bitcast<u32>(13i)));
+                                                                                                                phi_2427_ = (((_e2729 + 112u) << bitcast<u32>(23i)) | (_e2733 << bitcast<u32>(13i)));
                                                                                                             }
-                                                                                                            let _e2742 = phi_2456_;
+                                                                                                            let _e2742 = phi_2427_;
                                                                                                             let _e2744 = local_324;
-                                                                                                            phi_2459_ = (_e2744 * bitcast<f32>(_e2742));
+                                                                                                            phi_2430_ = (_e2744 * bitcast<f32>(_e2742));
                                                                                                         }
-                                                                                                        let _e2752 = phi_2459_;
+                                                                                                        let _e2752 = phi_2430_;
                                                                                                         let _e2753 = local_263;
                                                                                                         let _e2754 = local_247;
                                                                                                         let _e2756 = local_156;
@@ -3025,81 +3025,81 @@ fn function_() {
                                                                                                         let _e2818 = local_145;
                                                                                                         let _e2821 = local_145;
                                                                                                         let _e2825 = local_144;
-                                                                                                        phi_1478_ = (_e2825 + 1u);
-                                                                                                        phi_1481_ = type_5((_e2812.member + ((_e2784 + (((_e2758 + ((_e2753 - _e2754) * _e2756)) - _e2780) * _e2782)) * _e2804)), (_e2815.member_1 + ((_e2790 + (((_e2765 + ((_e2760 - _e2761) * _e2763)) - _e2786) * _e2788)) * _e2806)), (_e2818.member_2 + ((_e2796 + (((_e2772 + ((_e2767 - _e2768) * _e2770)) - _e2792) * _e2794)) * _e2808)), (_e2821.member_3 + ((_e2802 + (((_e2778 + ((_e2752 - _e2774) * _e2776)) - _e2798) * _e2800)) * _e2810)));
+                                                                                                        phi_1449_ = (_e2825 + 1u);
+                                                                                                        phi_1452_ = type_5((_e2812.member + ((_e2784 + (((_e2758 + ((_e2753 - _e2754) * _e2756)) - _e2780) * _e2782)) * _e2804)), (_e2815.member_1 + ((_e2790 + (((_e2765 + ((_e2760 - _e2761) * _e2763)) - _e2786) * _e2788)) * _e2806)), (_e2818.member_2 + ((_e2796 + (((_e2772 + ((_e2767 - _e2768) * _e2770)) - _e2792) * _e2794)) * _e2808)), (_e2821.member_3 + ((_e2802 + (((_e2778 + ((_e2752 - _e2774) * _e2776)) - _e2798) * _e2800)) * _e2810)));
                                                                                                     } else {
-                                                                                                        phi_1478_ = u32();
-                                                                                                        phi_1481_ = type_5();
+                                                                                                        phi_1449_ = u32();
+                                                                                                        phi_1452_ = type_5();
                                                                                                     }
-                                                                                                    let _e2828 = phi_1478_;
-                                                                                                    let _e2830 = phi_1481_;
+                                                                                                    let _e2828 = phi_1449_;
+                                                                                                    let _e2830 = phi_1452_;
                                                                                                     continue;
                                                                                                     continuing {
                                                                                                         let _e2831 = local_146;
-                                                                                                        phi_1477_ = _e2828;
-                                                                                                        phi_1480_ = _e2830;
-                                                                                                        phi_3239_ = _e1704;
+                                                                                                        phi_1448_ = _e2828;
+                                                                                                        phi_1451_ = _e2830;
+                                                                                                        phi_3210_ = _e1704;
                                                                                                         break if !(_e2831);
                                                                                                     }
                                                                                                 }
-                                                                                                let _e2834 = phi_3239_;
-                                                                                                phi_3349_ = _e2834;
+                                                                                                let _e2834 = phi_3210_;
+                                                                                                phi_3316_ = _e2834;
                                                                                                 if _e2834 {
                                                                                                     break;
                                                                                                 }
                                                                                                 let _e2835 = local_142;
-                                                                                                phi_3350_ = _e2834;
-                                                                                                phi_1449_ = (_e2835 + 1u);
+                                                                                                phi_3317_ = _e2834;
+                                                                                                phi_1420_ = (_e2835 + 1u);
                                                                                                 let _e3133 = local_331;
-                                                                                                phi_1452_ = _e3133;
+                                                                                                phi_1423_ = _e3133;
                                                                                             } else {
-                                                                                                phi_3350_ = _e1704;
-                                                                                                phi_1449_ = u32();
-                                                                                                phi_1452_ = type_5();
+                                                                                                phi_3317_ = _e1704;
+                                                                                                phi_1420_ = u32();
+                                                                                                phi_1423_ = type_5();
                                                                                             }
-                                                                                            let _e2838 = phi_3350_;
-                                                                                            let _e2840 = phi_1449_;
-                                                                                            let _e2842 = phi_1452_;
+                                                                                            let _e2838 = phi_3317_;
+                                                                                            let _e2840 = phi_1420_;
+                                                                                            let _e2842 = phi_1423_;
                                                                                             continue;
                                                                                             continuing {
                                                                                                 let _e2843 = local_143;
-                                                                                                phi_3285_ = _e2838;
-                                                                                                phi_1448_ = _e2840;
-                                                                                                phi_1451_ = _e2842;
-                                                                                                phi_3349_ = _e2838;
+                                                                                                phi_3256_ = _e2838;
+                                                                                                phi_1419_ = _e2840;
+                                                                                                phi_1422_ = _e2842;
+                                                                                                phi_3316_ = _e2838;
                                                                                                 break if !(_e2843);
                                                                                             }
                                                                                         }
-                                                                                        let _e2846 = phi_3349_;
-                                                                                        phi_3351_ = _e2846;
+                                                                                        let _e2846 = phi_3316_;
+                                                                                        phi_3318_ = _e2846;
                                                                                         if _e2846 {
                                                                                             break;
                                                                                         }
                                                                                         let _e2847 = local_139;
-                                                                                        phi_3352_ = _e2846;
-                                                                                        phi_1432_ = (_e2847 + 1u);
+                                                                                        phi_3319_ = _e2846;
+                                                                                        phi_1403_ = (_e2847 + 1u);
                                                                                         let _e3139 = local_332;
-                                                                                        phi_1435_ = _e3139;
+                                                                                        phi_1406_ = _e3139;
                                                                                     } else {
-                                                                                        phi_3352_ = _e1696;
-                                                                                        phi_1432_ = u32();
-                                                                                        phi_1435_ = type_5();
+                                                                                        phi_3319_ = _e1696;
+                                                                                        phi_1403_ = u32();
+                                                                                        phi_1406_ = type_5();
                                                                                     }
-                                                                                    let _e2850 = phi_3352_;
-                                                                                    let _e2852 = phi_1432_;
-                                                                                    let _e2854 = phi_1435_;
+                                                                                    let _e2850 = phi_3319_;
+                                                                                    let _e2852 = phi_1403_;
+                                                                                    let _e2854 = phi_1406_;
                                                                                     continue;
                                                                                     continuing {
                                                                                         let _e2855 = local_141;
-                                                                                        phi_3286_ = _e2850;
-                                                                                        phi_1431_ = _e2852;
-                                                                                        phi_1434_ = _e2854;
-                                                                                        phi_3351_ = _e2850;
+                                                                                        phi_3257_ = _e2850;
+                                                                                        phi_1402_ = _e2852;
+                                                                                        phi_1405_ = _e2854;
+                                                                                        phi_3318_ = _e2850;
                                                                                         break if !(_e2855);
                                                                                     }
                                                                                 }
-                                                                                let _e2858 = phi_3351_;
-                                                                                phi_3353_ = _e2858;
+                                                                                let _e2858 = phi_3318_;
+                                                                                phi_3320_ = _e2858;
                                                                                 if _e2858 {
                                                                                     break;
                                                                                 }
@@ -3107,50 +3107,50 @@ fn function_() {
                                                                                 let _e2861 = local_140;
                                                                                 let _e2863 = local_140;
                                                                                 let _e2865 = local_140;
-                                                                                phi_3374_ = _e2858;
+                                                                                phi_3341_ = _e2858;
                                                                                 let _e3144 = local_333;
-                                                                                phi_2512_ = _e3144;
+                                                                                phi_2483_ = _e3144;
                                                                             }
-                                                                            let _e2868 = phi_3374_;
-                                                                            let _e2870 = phi_2512_;
-                                                                            phi_3373_ = _e2868;
-                                                                            phi_2513_ = _e2870;
-                                                                            phi_2514_ = _e1513;
+                                                                            let _e2868 = phi_3341_;
+                                                                            let _e2870 = phi_2483_;
+                                                                            phi_3340_ = _e2868;
+                                                                            phi_2484_ = _e2870;
+                                                                            phi_2485_ = _e1513;
                                                                         }
-                                                                        let _e2872 = phi_3373_;
-                                                                        let _e2874 = phi_2513_;
-                                                                        let _e2876 = phi_2514_;
+                                                                        let _e2872 = phi_3340_;
+                                                                        let _e2874 = phi_2484_;
+                                                                        let _e2876 = phi_2485_;
                                                                         if _e2876 {
-                                                                            phi_2518_ = type_5(1f, 1f, 1f, 1f);
+                                                                            phi_2489_ = type_5(1f, 1f, 1f, 1f);
                                                                         } else {
-                                                                            phi_2518_ = _e2874;
+                                                                            phi_2489_ = _e2874;
                                                                         }
-                                                                        let _e2878 = phi_2518_;
-                                                                        phi_3371_ = _e2872;
-                                                                        phi_2519_ = _e2878;
+                                                                        let _e2878 = phi_2489_;
+                                                                        phi_3338_ = _e2872;
+                                                                        phi_2490_ = _e2878;
                                                                     }
-                                                                    let _e2880 = phi_3371_;
-                                                                    let _e2882 = phi_2519_;
-                                                                    phi_3370_ = _e2880;
-                                                                    phi_2520_ = _e2882;
-                                                                    phi_2521_ = _e1477;
+                                                                    let _e2880 = phi_3338_;
+                                                                    let _e2882 = phi_2490_;
+                                                                    phi_3337_ = _e2880;
+                                                                    phi_2491_ = _e2882;
+                                                                    phi_2492_ = _e1477;
                                                                 }
-                                                                let _e2884 = phi_3370_;
-                                                                let _e2886 = phi_2520_;
-                                                                let _e2888 = phi_2521_;
+                                                                let _e2884 = phi_3337_;
+                                                                let _e2886 = phi_2491_;
+                                                                let _e2888 = phi_2492_;
                                                                 if _e2888 {
-                                                                    phi_2525_ = type_5(1f, 1f, 1f, 1f);
+                                                                    phi_2496_ = type_5(1f, 1f, 1f, 1f);
                                                                 } else {
-                                                                    phi_2525_ = _e2886;
+                                                                    phi_2496_ = _e2886;
                                                                 }
-                                                                let _e2890 = phi_2525_;
+                                                                let _e2890 = phi_2496_;
                                                                 let _e2892 = local_123;
                                                                 let _e2894 = local_110;
                                                                 local_272 = ((_e2892 * _e2890.member_3) * _e2894);
                                                                 let _e2896 = local_84;
                                                                 if ((_e2896 & 4u) == 0u) {
                                                                     let _e2910 = local_272;
-                                                                    phi_2546_ = (_e2910 > 0f);
+                                                                    phi_2517_ = (_e2910 > 0f);
                                                                 } else {
                                                                     let _e2899 = local_82;
                                                                     let _e2900 = (_e2899 + 7u);
@@ -3158,47 +3158,47 @@ fn function_() {
                                                                     let _e2901 = local_3;
                                                                     if (_e2900 < _e2901) {
                                                                     } else {
-                                                                        phi_3353_ = true;
+                                                                        phi_3320_ = true;
                                                                         break;
                                                                     }
                                                                     let _e2903 = local_273;
                                                                     let _e2906 = global_5.member[_e2903];
                                                                     let _e2908 = local_272;
-                                                                    phi_2546_ = (_e2908 >= bitcast<f32>(_e2906));
+                                                                    phi_2517_ = (_e2908 >= bitcast<f32>(_e2906));
                                                                 }
-                                                                let _e2913 = phi_2546_;
-                                                                phi_3367_ = _e2884;
-                                                                phi_2547_ = _e2913;
+                                                                let _e2913 = phi_2517_;
+                                                                phi_3334_ = _e2884;
+                                                                phi_2518_ = _e2913;
                                                             }
-                                                            let _e2915 = phi_3367_;
-                                                            let _e2917 = phi_2547_;
-                                                            phi_3366_ = _e2915;
-                                                            phi_2548_ = _e2917;
+                                                            let _e2915 = phi_3334_;
+                                                            let _e2917 = phi_2518_;
+                                                            phi_3333_ = _e2915;
+                                                            phi_2519_ = _e2917;
                                                         } else {
-                                                            phi_3366_ = _e434;
-                                                            phi_2548_ = bool();
+                                                            phi_3333_ = _e434;
+                                                            phi_2519_ = bool();
                                                         }
-                                                        let _e2919 = phi_3366_;
-                                                        let _e2921 = phi_2548_;
+                                                        let _e2919 = phi_3333_;
+                                                        let _e2921 = phi_2519_;
                                                         let _e2922 = local_81;
-                                                        phi_3365_ = _e2919;
-                                                        phi_2550_ = _e2921;
-                                                        phi_2551_ = select(true, false, _e2922);
+                                                        phi_3332_ = _e2919;
+                                                        phi_2521_ = _e2921;
+                                                        phi_2522_ = select(true, false, _e2922);
                                                     } else {
-                                                        phi_3365_ = _e434;
-                                                        phi_2550_ = bool();
-                                                        phi_2551_ = true;
+                                                        phi_3332_ = _e434;
+                                                        phi_2521_ = bool();
+                                                        phi_2522_ = true;
                                                     }
-                                                    let _e2925 = phi_3365_;
-                                                    let _e2927 = phi_2550_;
-                                                    let _e2929 = phi_2551_;
+                                                    let _e2925 = phi_3332_;
+                                                    let _e2927 = phi_2521_;
+                                                    let _e2929 = phi_2522_;
                                                     if select(_e2927, false, _e2929) {
                                                         let _e2931 = local_13;
                                                         local_274 = bitcast<u32>(f32((_e2931 + 1u)));
                                                         let _e2935 = local_79;
                                                         if _e2935 {
                                                         } else {
-                                                            phi_3353_ = true;
+                                                            phi_3320_ = true;
                                                             break;
                                                         }
                                                         let _e2936 = local_274;
@@ -3211,7 +3211,7 @@ fn function_() {
                                                         let _e2941 = local_8;
                                                         if (_e2938 < _e2941) {
                                                         } else {
-                                                            phi_3353_ = true;
+                                                            phi_3320_ = true;
                                                             break;
                                                         }
                                                         let _e2943 = local_275;
@@ -3225,7 +3225,7 @@ fn function_() {
                                                         let _e2951 = local_8;
                                                         if (_e2948 < _e2951) {
                                                         } else {
-                                                            phi_3353_ = true;
+                                                            phi_3320_ = true;
                                                             break;
                                                         }
                                                         let _e2953 = local_277;
@@ -3239,68 +3239,68 @@ fn function_() {
                                                         let _e2961 = local_8;
                                                         if (_e2958 < _e2961) {
                                                         } else {
-                                                            phi_3353_ = true;
+                                                            phi_3320_ = true;
                                                             break;
                                                         }
                                                         let _e2963 = local_279;
                                                         let _e2966 = local_280;
                                                         global_11.member[_e2963] = _e2966;
                                                     }
-                                                    phi_3362_ = _e2925;
+                                                    phi_3329_ = _e2925;
                                                 } else {
-                                                    phi_3362_ = _e434;
+                                                    phi_3329_ = _e434;
                                                 }
-                                                let _e2968 = phi_3362_;
-                                                phi_3361_ = _e2968;
+                                                let _e2968 = phi_3329_;
+                                                phi_3328_ = _e2968;
                                             }
-                                            let _e2970 = phi_3361_;
-                                            phi_3360_ = _e2970;
+                                            let _e2970 = phi_3328_;
+                                            phi_3327_ = _e2970;
                                         }
-                                        let _e2972 = phi_3360_;
-                                        phi_3359_ = _e2972;
+                                        let _e2972 = phi_3327_;
+                                        phi_3326_ = _e2972;
                                     }
-                                    let _e2974 = phi_3359_;
+                                    let _e2974 = phi_3326_;
                                     storageBarrier();
                                     workgroupBarrier();
-                                    phi_3358_ = _e2974;
+                                    phi_3325_ = _e2974;
                                 } else {
-                                    phi_3358_ = _e434;
+                                    phi_3325_ = _e434;
                                 }
-                                let _e2976 = phi_3358_;
-                                phi_3357_ = _e2976;
+                                let _e2976 = phi_3325_;
+                                phi_3324_ = _e2976;
                             } else {
-                                phi_3357_ = _e434;
+                                phi_3324_ = _e434;
                             }
-                            let _e2978 = phi_3357_;
-                            phi_3356_ = _e2978;
+                            let _e2978 = phi_3324_;
+                            phi_3323_ = _e2978;
                         } else {
-                            phi_3356_ = _e434;
+                            phi_3323_ = _e434;
                         }
-                        let _e2980 = phi_3356_;
-                        phi_3355_ = _e2980;
+                        let _e2980 = phi_3323_;
+                        phi_3322_ = _e2980;
                     } else {
-                        phi_3355_ = _e434;
+                        phi_3322_ = _e434;
                     }
-                    let _e2982 = phi_3355_;
+                    let _e2982 = phi_3322_;
                     let _e2983 = local_13;
-                    phi_3354_ = _e2982;
+                    phi_3321_ = _e2982;
                     phi_184_ = (_e2983 + 1u);
                 } else {
-                    phi_3354_ = _e434;
+                    phi_3321_ = _e434;
                     phi_184_ = u32();
                 }
-                let _e2986 = phi_3354_;
+                let _e2986 = phi_3321_;
                 let _e2988 = phi_184_;
                 continue;
                 continuing {
                     let _e2989 = local_14;
-                    phi_3219_ = _e2986;
+                    phi_3190_ = _e2986;
                     phi_183_ = _e2988;
-                    phi_3353_ = _e2986;
+                    phi_3320_ = _e2986;
                     break if !(_e2989);
                 }
             }
-            let _e2992 = phi_3353_;
+            let _e2992 = phi_3320_;
             if _e2992 {
                 break;
             }

@@ -323,116 +323,116 @@ fn function_() {
     var phi_492_: f32;
     var phi_291_: u32;
     var phi_294_: array<f32, 4>;
-    var phi_2127_: bool;
+    var phi_2098_: bool;
     var phi_510_: u32;
     var phi_513_: f32;
     var phi_515_: f32;
     var phi_511_: u32;
     var phi_514_: f32;
     var phi_516_: f32;
-    var phi_2143_: bool;
+    var phi_2114_: bool;
     var phi_665_: bool;
-    var phi_880_: f32;
-    var phi_2050_: u32;
-    var phi_2051_: type_19;
-    var phi_2068_: u32;
-    var phi_2077_: u32;
-    var phi_2082_: u32;
-    var phi_2083_: type_19;
-    var phi_2089_: u32;
-    var phi_2090_: type_19;
-    var phi_2107_: u32;
-    var phi_2116_: u32;
-    var phi_2121_: u32;
-    var phi_2122_: type_19;
-    var phi_2193_: bool;
-    var phi_899_: u32;
-    var phi_902_: type_3;
-    var phi_2192_: bool;
+    var phi_851_: f32;
+    var phi_2021_: u32;
+    var phi_2022_: type_19;
+    var phi_2039_: u32;
+    var phi_2048_: u32;
+    var phi_2053_: u32;
+    var phi_2054_: type_19;
+    var phi_2060_: u32;
+    var phi_2061_: type_19;
+    var phi_2078_: u32;
+    var phi_2087_: u32;
+    var phi_2092_: u32;
+    var phi_2093_: type_19;
+    var phi_2164_: bool;
+    var phi_870_: u32;
+    var phi_873_: type_3;
+    var phi_2163_: bool;
+    var phi_887_: u32;
+    var phi_890_: type_3;
     var phi_916_: u32;
     var phi_919_: type_3;
-    var phi_945_: u32;
-    var phi_948_: type_3;
-    var phi_961_: type_19;
-    var phi_962_: f32;
-    var phi_982_: f32;
-    var phi_983_: f32;
-    var phi_1054_: i32;
-    var phi_1078_: i32;
-    var phi_1018_: i32;
-    var phi_1019_: i32;
-    var phi_1079_: i32;
-    var phi_1134_: i32;
-    var phi_1158_: i32;
-    var phi_1098_: i32;
-    var phi_1099_: i32;
-    var phi_1159_: i32;
-    var phi_1213_: i32;
-    var phi_1237_: i32;
-    var phi_1177_: i32;
-    var phi_1178_: i32;
-    var phi_1238_: i32;
-    var phi_1293_: i32;
-    var phi_1317_: i32;
-    var phi_1257_: i32;
-    var phi_1258_: i32;
-    var phi_1318_: i32;
-    var phi_1369_: u32;
-    var phi_1372_: f32;
-    var phi_1401_: u32;
-    var phi_1404_: f32;
-    var phi_1433_: u32;
-    var phi_1436_: f32;
-    var phi_1465_: u32;
-    var phi_1468_: f32;
-    var phi_1518_: u32;
-    var phi_1521_: f32;
-    var phi_1550_: u32;
-    var phi_1553_: f32;
-    var phi_1582_: u32;
-    var phi_1585_: f32;
-    var phi_1614_: u32;
-    var phi_1617_: f32;
-    var phi_1679_: u32;
-    var phi_1682_: f32;
-    var phi_1711_: u32;
-    var phi_1714_: f32;
-    var phi_1743_: u32;
-    var phi_1746_: f32;
-    var phi_1775_: u32;
-    var phi_1778_: f32;
-    var phi_1828_: u32;
-    var phi_1831_: f32;
-    var phi_1860_: u32;
-    var phi_1863_: f32;
-    var phi_1892_: u32;
-    var phi_1895_: f32;
-    var phi_1924_: u32;
-    var phi_1927_: f32;
-    var phi_946_: u32;
-    var phi_949_: type_3;
-    var phi_2146_: bool;
-    var phi_2257_: bool;
+    var phi_932_: type_19;
+    var phi_933_: f32;
+    var phi_953_: f32;
+    var phi_954_: f32;
+    var phi_1025_: i32;
+    var phi_1049_: i32;
+    var phi_989_: i32;
+    var phi_990_: i32;
+    var phi_1050_: i32;
+    var phi_1105_: i32;
+    var phi_1129_: i32;
+    var phi_1069_: i32;
+    var phi_1070_: i32;
+    var phi_1130_: i32;
+    var phi_1184_: i32;
+    var phi_1208_: i32;
+    var phi_1148_: i32;
+    var phi_1149_: i32;
+    var phi_1209_: i32;
+    var phi_1264_: i32;
+    var phi_1288_: i32;
+    var phi_1228_: i32;
+    var phi_1229_: i32;
+    var phi_1289_: i32;
+    var phi_1340_: u32;
+    var phi_1343_: f32;
+    var phi_1372_: u32;
+    var phi_1375_: f32;
+    var phi_1404_: u32;
+    var phi_1407_: f32;
+    var phi_1436_: u32;
+    var phi_1439_: f32;
+    var phi_1489_: u32;
+    var phi_1492_: f32;
+    var phi_1521_: u32;
+    var phi_1524_: f32;
+    var phi_1553_: u32;
+    var phi_1556_: f32;
+    var phi_1585_: u32;
+    var phi_1588_: f32;
+    var phi_1650_: u32;
+    var phi_1653_: f32;
+    var phi_1682_: u32;
+    var phi_1685_: f32;
+    var phi_1714_: u32;
+    var phi_1717_: f32;
+    var phi_1746_: u32;
+    var phi_1749_: f32;
+    var phi_1799_: u32;
+    var phi_1802_: f32;
+    var phi_1831_: u32;
+    var phi_1834_: f32;
+    var phi_1863_: u32;
+    var phi_1866_: f32;
+    var phi_1895_: u32;
+    var phi_1898_: f32;
     var phi_917_: u32;
     var phi_920_: type_3;
-    var phi_2256_: bool;
-    var phi_2259_: bool;
-    var phi_900_: u32;
-    var phi_903_: type_3;
-    var phi_2258_: bool;
-    var phi_1980_: type_3;
-    var phi_1981_: type_3;
-    var phi_1982_: bool;
-    var phi_1986_: type_3;
-    var phi_1987_: type_3;
-    var phi_1988_: type_3;
+    var phi_2117_: bool;
+    var phi_2224_: bool;
+    var phi_888_: u32;
+    var phi_891_: type_3;
+    var phi_2223_: bool;
+    var phi_2226_: bool;
+    var phi_871_: u32;
+    var phi_874_: type_3;
+    var phi_2225_: bool;
+    var phi_1951_: type_3;
+    var phi_1952_: type_3;
+    var phi_1953_: bool;
+    var phi_1957_: type_3;
+    var phi_1958_: type_3;
+    var phi_1959_: type_3;
+    var phi_1960_: bool;
+    var phi_1964_: type_3;
+    var phi_1985_: bool;
+    var phi_1986_: bool;
+    var phi_1987_: bool;
     var phi_1989_: bool;
-    var phi_1993_: type_3;
-    var phi_2014_: bool;
-    var phi_2015_: bool;
-    var phi_2016_: bool;
-    var phi_2018_: bool;
-    var phi_2019_: bool;
+    var phi_1990_: bool;
     var local_255: type_19;
     var local_256: type_19;
     var local_257: type_3;
@@ -535,7 +535,7 @@ fn function_() {
                     let _e413 = global_3.member[_e410];
                     local_22 = _e413;
                     if ((_e413 & 12u) == 0u) {
-                        phi_2015_ = true;
+                        phi_1986_ = true;
                     } else {
                         let _e416 = local_13;
                         let _e417 = local_15;
@@ -567,7 +567,7 @@ fn function_() {
                                 let _e436 = local_25;
                                 if (_e436 < 4u) {
                                 } else {
-                                    phi_2127_ = true;
+                                    phi_2098_ = true;
                                     break;
                                 }
                                 let _e438 = local_25;
@@ -579,7 +579,7 @@ fn function_() {
                                 let _e443 = local;
                                 if (_e442 < _e443) {
                                 } else {
-                                    phi_2127_ = true;
+                                    phi_2098_ = true;
                                     break;
                                 }
                                 let _e445 = local_29;
@@ -591,7 +591,7 @@ fn function_() {
                                 let _e451 = local;
                                 if (_e450 < _e451) {
                                 } else {
-                                    phi_2127_ = true;
+                                    phi_2098_ = true;
                                     break;
                                 }
                                 let _e453 = local_31;
@@ -600,7 +600,7 @@ fn function_() {
                                 let _e457 = local_27;
                                 if _e457 {
                                 } else {
-                                    phi_2127_ = true;
+                                    phi_2098_ = true;
                                     break;
                                 }
                                 let _e458 = local_25;
@@ -637,7 +637,7 @@ fn function_() {
                                 let _e502 = local_27;
                                 if _e502 {
                                 } else {
-                                    phi_2127_ = true;
+                                    phi_2098_ = true;
                                     break;
                                 }
                                 let _e503 = local_254[_e458];
@@ -673,7 +673,7 @@ fn function_() {
                                 let _e546 = local_27;
                                 if _e546 {
                                 } else {
-                                    phi_2127_ = true;
+                                    phi_2098_ = true;
                                     break;
                                 }
                                 let _e547 = local_254[_e458];
@@ -709,7 +709,7 @@ fn function_() {
                                 let _e589 = local_27;
                                 if _e589 {
                                 } else {
-                                    phi_2127_ = true;
+                                    phi_2098_ = true;
                                     break;
                                 }
                                 let _e590 = local_254[_e458];
@@ -758,11 +758,11 @@ fn function_() {
                                 let _e643 = local_27;
                                 phi_290_ = _e640;
                                 phi_293_ = _e642;
-                                phi_2127_ = false;
+                                phi_2098_ = false;
                                 break if !(_e643);
                             }
                         }
-                        let _e646 = phi_2127_;
+                        let _e646 = phi_2098_;
                         if _e646 {
                             break;
                         }
@@ -793,7 +793,7 @@ fn function_() {
                                 let _e664 = local_49;
                                 if (_e664 < 4u) {
                                 } else {
-                                    phi_2143_ = true;
+                                    phi_2114_ = true;
                                     break;
                                 }
                                 let _e666 = local_49;
@@ -802,7 +802,7 @@ fn function_() {
                                 let _e670 = local_52;
                                 if _e670 {
                                 } else {
-                                    phi_2143_ = true;
+                                    phi_2114_ = true;
                                     break;
                                 }
                                 let _e671 = local_49;
@@ -814,7 +814,7 @@ fn function_() {
                                 let _e676 = local;
                                 if (_e675 < _e676) {
                                 } else {
-                                    phi_2143_ = true;
+                                    phi_2114_ = true;
                                     break;
                                 }
                                 let _e678 = local_55;
@@ -824,7 +824,7 @@ fn function_() {
                                 let _e687 = local_52;
                                 if _e687 {
                                 } else {
-                                    phi_2143_ = true;
+                                    phi_2114_ = true;
                                     break;
                                 }
                                 let _e688 = local_252[_e671];
@@ -835,7 +835,7 @@ fn function_() {
                                 let _e691 = local;
                                 if (_e690 < _e691) {
                                 } else {
-                                    phi_2143_ = true;
+                                    phi_2114_ = true;
                                     break;
                                 }
                                 let _e693 = local_57;
@@ -860,11 +860,11 @@ fn function_() {
                                 phi_510_ = _e705;
                                 phi_513_ = _e707;
                                 phi_515_ = _e709;
-                                phi_2143_ = _e646;
+                                phi_2114_ = _e646;
                                 break if !(_e710);
                             }
                         }
-                        let _e713 = phi_2143_;
+                        let _e713 = phi_2114_;
                         if _e713 {
                             break;
                         }
@@ -894,14 +894,14 @@ fn function_() {
                         local_62 = _e733;
                         let _e734 = local_59;
                         if (_e734 == 4294967295u) {
-                            phi_1988_ = type_3();
-                            phi_1989_ = true;
+                            phi_1959_ = type_3();
+                            phi_1960_ = true;
                         } else {
                             let _e736 = local_59;
                             let _e737 = local_62;
                             let _e738 = (_e736 >= _e737);
                             if _e738 {
-                                phi_1987_ = type_3();
+                                phi_1958_ = type_3();
                             } else {
                                 let _e739 = local_59;
                                 let _e740 = (_e739 * 4u);
@@ -949,13 +949,13 @@ fn function_() {
                                 local_70 = _e770;
                                 let _e771 = local_66;
                                 if (_e771 == 0u) {
-                                    phi_1981_ = type_3();
-                                    phi_1982_ = true;
+                                    phi_1952_ = type_3();
+                                    phi_1953_ = true;
                                 } else {
                                     let _e773 = local_68;
                                     let _e774 = (_e773 == 0u);
                                     if _e774 {
-                                        phi_1980_ = type_3();
+                                        phi_1951_ = type_3();
                                     } else {
                                         let _e775 = local_70;
                                         let _e778 = ((_e775 >> bitcast<u32>(8u)) & 31u);
@@ -991,23 +991,23 @@ fn function_() {
                                         let _e823 = (_e822 >= _e815);
                                         local_73 = _e823;
                                         if _e823 {
-                                            phi_880_ = 0f;
+                                            phi_851_ = 0f;
                                         } else {
                                             let _e824 = local_72;
-                                            phi_880_ = -(f32(_e824));
+                                            phi_851_ = -(f32(_e824));
                                         }
-                                        let _e828 = phi_880_;
+                                        let _e828 = phi_851_;
                                         local_74 = _e828;
                                         let _e829 = local_73;
                                         let _e830 = local_71;
                                         let _e831 = local_72;
                                         local_233 = select(_e831, _e830, _e829);
                                         local_234 = select(1u, 2u, (_e828 > 0f));
-                                        phi_2050_ = 0u;
-                                        phi_2051_ = _e792;
+                                        phi_2021_ = 0u;
+                                        phi_2022_ = _e792;
                                         loop {
-                                            let _e836 = phi_2050_;
-                                            let _e838 = phi_2051_;
+                                            let _e836 = phi_2021_;
+                                            let _e838 = phi_2022_;
                                             local_212 = _e836;
                                             local_213 = _e838;
                                             local_255 = _e838;
@@ -1025,47 +1025,47 @@ fn function_() {
                                                 local_217 = type_19((_e847.member + (_e842.member_1 * _e844.member_2)), _e850.member_1, _e850.member_2, _e850.member_3, _e850.member_4);
                                                 if (_e842.member_1 > 1u) {
                                                     let _e858 = local_215;
-                                                    phi_2068_ = (_e858 >> bitcast<u32>(1i));
+                                                    phi_2039_ = (_e858 >> bitcast<u32>(1i));
                                                 } else {
-                                                    phi_2068_ = 1u;
+                                                    phi_2039_ = 1u;
                                                 }
-                                                let _e862 = phi_2068_;
+                                                let _e862 = phi_2039_;
                                                 let _e863 = local_217;
                                                 local_218 = type_19(_e863.member, _e862, _e863.member_2, _e863.member_3, _e863.member_4);
                                                 let _e870 = local_216;
                                                 if (_e870 > 1u) {
                                                     let _e872 = local_216;
-                                                    phi_2077_ = (_e872 >> bitcast<u32>(1i));
+                                                    phi_2048_ = (_e872 >> bitcast<u32>(1i));
                                                 } else {
-                                                    phi_2077_ = 1u;
+                                                    phi_2048_ = 1u;
                                                 }
-                                                let _e876 = phi_2077_;
+                                                let _e876 = phi_2048_;
                                                 let _e877 = local_218;
                                                 let _e884 = local_212;
-                                                phi_2082_ = (_e884 + 1u);
-                                                phi_2083_ = type_19(_e877.member, _e877.member_1, _e876, _e877.member_3, _e877.member_4);
+                                                phi_2053_ = (_e884 + 1u);
+                                                phi_2054_ = type_19(_e877.member, _e877.member_1, _e876, _e877.member_3, _e877.member_4);
                                             } else {
-                                                phi_2082_ = u32();
-                                                phi_2083_ = type_19();
+                                                phi_2053_ = u32();
+                                                phi_2054_ = type_19();
                                             }
-                                            let _e887 = phi_2082_;
-                                            let _e889 = phi_2083_;
+                                            let _e887 = phi_2053_;
+                                            let _e889 = phi_2054_;
                                             continue;
                                             continuing {
                                                 let _e890 = local_214;
-                                                phi_2050_ = _e887;
-                                                phi_2051_ = _e889;
+                                                phi_2021_ = _e887;
+                                                phi_2022_ = _e889;
                                                 break if !(_e890);
                                             }
                                         }
                                         let _e892 = local_233;
                                         let _e893 = local_234;
                                         local_75 = ((_e892 + _e893) - 1u);
-                                        phi_2089_ = 0u;
-                                        phi_2090_ = _e792;
+                                        phi_2060_ = 0u;
+                                        phi_2061_ = _e792;
                                         loop {
-                                            let _e897 = phi_2089_;
-                                            let _e899 = phi_2090_;
+                                            let _e897 = phi_2060_;
+                                            let _e899 = phi_2061_;
                                             local_219 = _e897;
                                             local_220 = _e899;
                                             local_256 = _e899;
@@ -1083,48 +1083,48 @@ fn function_() {
                                                 local_224 = type_19((_e908.member + (_e903.member_1 * _e905.member_2)), _e911.member_1, _e911.member_2, _e911.member_3, _e911.member_4);
                                                 if (_e903.member_1 > 1u) {
                                                     let _e919 = local_222;
-                                                    phi_2107_ = (_e919 >> bitcast<u32>(1i));
+                                                    phi_2078_ = (_e919 >> bitcast<u32>(1i));
                                                 } else {
-                                                    phi_2107_ = 1u;
+                                                    phi_2078_ = 1u;
                                                 }
-                                                let _e923 = phi_2107_;
+                                                let _e923 = phi_2078_;
                                                 let _e924 = local_224;
                                                 local_225 = type_19(_e924.member, _e923, _e924.member_2, _e924.member_3, _e924.member_4);
                                                 let _e931 = local_223;
                                                 if (_e931 > 1u) {
                                                     let _e933 = local_223;
-                                                    phi_2116_ = (_e933 >> bitcast<u32>(1i));
+                                                    phi_2087_ = (_e933 >> bitcast<u32>(1i));
                                                 } else {
-                                                    phi_2116_ = 1u;
+                                                    phi_2087_ = 1u;
                                                 }
-                                                let _e937 = phi_2116_;
+                                                let _e937 = phi_2087_;
                                                 let _e938 = local_225;
                                                 let _e945 = local_219;
-                                                phi_2121_ = (_e945 + 1u);
-                                                phi_2122_ = type_19(_e938.member, _e938.member_1, _e937, _e938.member_3, _e938.member_4);
+                                                phi_2092_ = (_e945 + 1u);
+                                                phi_2093_ = type_19(_e938.member, _e938.member_1, _e937, _e938.member_3, _e938.member_4);
                                             } else {
-                                                phi_2121_ = u32();
-                                                phi_2122_ = type_19();
+                                                phi_2092_ = u32();
+                                                phi_2093_ = type_19();
                                             }
-                                            let _e948 = phi_2121_;
-                                            let _e950 = phi_2122_;
+                                            let _e948 = phi_2092_;
+                                            let _e950 = phi_2093_;
                                             continue;
                                             continuing {
                                                 let _e951 = local_221;
-                                                phi_2089_ = _e948;
-                                                phi_2090_ = _e950;
+                                                phi_2060_ = _e948;
+                                                phi_2061_ = _e950;
                                                 break if !(_e951);
                                             }
                                         }
                                         let _e953 = local_70;
                                         local_76 = ((_e953 & 1u) != 0u);
-                                        phi_2193_ = _e713;
-                                        phi_899_ = 0u;
-                                        phi_902_ = type_3(0f, 0f, 0f, 0f);
+                                        phi_2164_ = _e713;
+                                        phi_870_ = 0u;
+                                        phi_873_ = type_3(0f, 0f, 0f, 0f);
                                         loop {
-                                            let _e957 = phi_2193_;
-                                            let _e959 = phi_899_;
-                                            let _e961 = phi_902_;
+                                            let _e957 = phi_2164_;
+                                            let _e959 = phi_870_;
+                                            let _e961 = phi_873_;
                                             local_77 = _e959;
                                             local_78 = _e961;
                                             local_259 = _e961;
@@ -1132,24 +1132,24 @@ fn function_() {
                                             let _e963 = (_e962 < 1u);
                                             local_79 = _e963;
                                             if _e963 {
-                                                phi_2192_ = _e957;
-                                                phi_916_ = 0u;
-                                                phi_919_ = _e961;
+                                                phi_2163_ = _e957;
+                                                phi_887_ = 0u;
+                                                phi_890_ = _e961;
                                                 loop {
-                                                    let _e965 = phi_2192_;
-                                                    let _e967 = phi_916_;
-                                                    let _e969 = phi_919_;
+                                                    let _e965 = phi_2163_;
+                                                    let _e967 = phi_887_;
+                                                    let _e969 = phi_890_;
                                                     local_80 = _e967;
                                                     local_258 = _e969;
                                                     let _e970 = local_80;
                                                     let _e971 = (_e970 < 1u);
                                                     local_81 = _e971;
                                                     if _e971 {
-                                                        phi_945_ = 0u;
-                                                        phi_948_ = _e969;
+                                                        phi_916_ = 0u;
+                                                        phi_919_ = _e969;
                                                         loop {
-                                                            let _e973 = phi_945_;
-                                                            let _e975 = phi_948_;
+                                                            let _e973 = phi_916_;
+                                                            let _e975 = phi_919_;
                                                             local_82 = _e973;
                                                             local_83 = _e975;
                                                             local_257 = _e975;
@@ -1162,15 +1162,15 @@ fn function_() {
                                                                 if (_e979 == 0u) {
                                                                     let _e981 = local_74;
                                                                     let _e2230 = local_255;
-                                                                    phi_961_ = _e2230;
-                                                                    phi_962_ = (1f - _e981);
+                                                                    phi_932_ = _e2230;
+                                                                    phi_933_ = (1f - _e981);
                                                                 } else {
                                                                     let _e2232 = local_256;
-                                                                    phi_961_ = _e2232;
-                                                                    phi_962_ = _e828;
+                                                                    phi_932_ = _e2232;
+                                                                    phi_933_ = _e828;
                                                                 }
-                                                                let _e984 = phi_961_;
-                                                                let _e986 = phi_962_;
+                                                                let _e984 = phi_932_;
+                                                                let _e986 = phi_933_;
                                                                 local_85 = _e984;
                                                                 local_86 = _e986;
                                                                 let _e987 = local_76;
@@ -1187,18 +1187,18 @@ fn function_() {
                                                                 local_92 = floor(_e998);
                                                                 let _e1001 = local_76;
                                                                 if _e1001 {
-                                                                    phi_982_ = 0f;
-                                                                    phi_983_ = 0f;
+                                                                    phi_953_ = 0f;
+                                                                    phi_954_ = 0f;
                                                                 } else {
                                                                     let _e1002 = local_88;
                                                                     let _e1003 = local_91;
                                                                     let _e1005 = local_90;
                                                                     let _e1006 = local_92;
-                                                                    phi_982_ = (_e1005 - _e1006);
-                                                                    phi_983_ = (_e1002 - _e1003);
+                                                                    phi_953_ = (_e1005 - _e1006);
+                                                                    phi_954_ = (_e1002 - _e1003);
                                                                 }
-                                                                let _e1009 = phi_982_;
-                                                                let _e1011 = phi_983_;
+                                                                let _e1009 = phi_953_;
+                                                                let _e1011 = phi_954_;
                                                                 local_93 = _e1009;
                                                                 local_94 = _e1011;
                                                                 let _e1012 = local_91;
@@ -1224,21 +1224,21 @@ fn function_() {
                                                                 if _e1042 {
                                                                     let _e1096 = local_95;
                                                                     if (_e1096 < 0i) {
-                                                                        phi_1019_ = 0i;
+                                                                        phi_990_ = 0i;
                                                                     } else {
                                                                         let _e1098 = local_95;
                                                                         let _e1099 = local_98;
                                                                         if (_e1098 >= _e1099) {
                                                                             let _e1101 = local_98;
-                                                                            phi_1018_ = (_e1101 - 1i);
+                                                                            phi_989_ = (_e1101 - 1i);
                                                                         } else {
-                                                                            phi_1018_ = _e1024;
+                                                                            phi_989_ = _e1024;
                                                                         }
-                                                                        let _e1104 = phi_1018_;
-                                                                        phi_1019_ = _e1104;
+                                                                        let _e1104 = phi_989_;
+                                                                        phi_990_ = _e1104;
                                                                     }
-                                                                    let _e1106 = phi_1019_;
-                                                                    phi_1079_ = _e1106;
+                                                                    let _e1106 = phi_990_;
+                                                                    phi_1050_ = _e1106;
                                                                 } else {
                                                                     let _e1043 = local_97;
                                                                     if (_e1043 == 2u) {
@@ -1248,7 +1248,7 @@ fn function_() {
                                                                         let _e1067 = (_e1066 == 0i);
                                                                         local_101 = _e1067;
                                                                         if _e1067 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1068 = local_100;
@@ -1256,7 +1256,7 @@ fn function_() {
                                                                         local_102 = _e1069;
                                                                         let _e1070 = local_95;
                                                                         if (_e1069 && (_e1070 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1073 = local_95;
@@ -1265,13 +1265,13 @@ fn function_() {
                                                                         local_103 = ((_e1073 % _e1074) + _e1076);
                                                                         let _e1078 = local_101;
                                                                         if _e1078 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1079 = local_103;
                                                                         let _e1081 = local_102;
                                                                         if (_e1081 && (_e1079 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1083 = local_103;
@@ -1280,20 +1280,20 @@ fn function_() {
                                                                         local_104 = _e1085;
                                                                         let _e1086 = local_98;
                                                                         if (_e1085 < _e1086) {
-                                                                            phi_1054_ = _e1085;
+                                                                            phi_1025_ = _e1085;
                                                                         } else {
                                                                             let _e1088 = local_100;
                                                                             let _e1090 = local_104;
-                                                                            phi_1054_ = ((_e1088 - 1i) - _e1090);
+                                                                            phi_1025_ = ((_e1088 - 1i) - _e1090);
                                                                         }
-                                                                        let _e1093 = phi_1054_;
-                                                                        phi_1078_ = _e1093;
+                                                                        let _e1093 = phi_1025_;
+                                                                        phi_1049_ = _e1093;
                                                                     } else {
                                                                         let _e1045 = local_98;
                                                                         let _e1046 = (_e1045 == 0i);
                                                                         local_105 = _e1046;
                                                                         if _e1046 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1047 = local_98;
@@ -1301,7 +1301,7 @@ fn function_() {
                                                                         local_106 = _e1048;
                                                                         let _e1049 = local_95;
                                                                         if (_e1048 && (_e1049 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1052 = local_95;
@@ -1310,23 +1310,23 @@ fn function_() {
                                                                         local_107 = ((_e1052 % _e1053) + _e1055);
                                                                         let _e1057 = local_105;
                                                                         if _e1057 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1058 = local_107;
                                                                         let _e1060 = local_106;
                                                                         if (_e1060 && (_e1058 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1062 = local_107;
                                                                         let _e1063 = local_98;
-                                                                        phi_1078_ = (_e1062 % _e1063);
+                                                                        phi_1049_ = (_e1062 % _e1063);
                                                                     }
-                                                                    let _e1095 = phi_1078_;
-                                                                    phi_1079_ = _e1095;
+                                                                    let _e1095 = phi_1049_;
+                                                                    phi_1050_ = _e1095;
                                                                 }
-                                                                let _e1108 = phi_1079_;
+                                                                let _e1108 = phi_1050_;
                                                                 local_108 = bitcast<u32>(_e1108);
                                                                 let _e1110 = local_95;
                                                                 let _e1111 = (_e1110 + 1i);
@@ -1335,21 +1335,21 @@ fn function_() {
                                                                 if _e1112 {
                                                                     let _e1166 = local_109;
                                                                     if (_e1166 < 0i) {
-                                                                        phi_1099_ = 0i;
+                                                                        phi_1070_ = 0i;
                                                                     } else {
                                                                         let _e1168 = local_109;
                                                                         let _e1169 = local_98;
                                                                         if (_e1168 >= _e1169) {
                                                                             let _e1171 = local_98;
-                                                                            phi_1098_ = (_e1171 - 1i);
+                                                                            phi_1069_ = (_e1171 - 1i);
                                                                         } else {
-                                                                            phi_1098_ = _e1111;
+                                                                            phi_1069_ = _e1111;
                                                                         }
-                                                                        let _e1174 = phi_1098_;
-                                                                        phi_1099_ = _e1174;
+                                                                        let _e1174 = phi_1069_;
+                                                                        phi_1070_ = _e1174;
                                                                     }
-                                                                    let _e1176 = phi_1099_;
-                                                                    phi_1159_ = _e1176;
+                                                                    let _e1176 = phi_1070_;
+                                                                    phi_1130_ = _e1176;
                                                                 } else {
                                                                     let _e1113 = local_97;
                                                                     if (_e1113 == 2u) {
@@ -1359,7 +1359,7 @@ fn function_() {
                                                                         let _e1137 = (_e1136 == 0i);
                                                                         local_111 = _e1137;
                                                                         if _e1137 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1138 = local_110;
@@ -1367,7 +1367,7 @@ fn function_() {
                                                                         local_112 = _e1139;
                                                                         let _e1140 = local_109;
                                                                         if (_e1139 && (_e1140 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1143 = local_109;
@@ -1376,13 +1376,13 @@ fn function_() {
                                                                         local_113 = ((_e1143 % _e1144) + _e1146);
                                                                         let _e1148 = local_111;
                                                                         if _e1148 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1149 = local_113;
                                                                         let _e1151 = local_112;
                                                                         if (_e1151 && (_e1149 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1153 = local_113;
@@ -1391,20 +1391,20 @@ fn function_() {
                                                                         local_114 = _e1155;
                                                                         let _e1156 = local_98;
                                                                         if (_e1155 < _e1156) {
-                                                                            phi_1134_ = _e1155;
+                                                                            phi_1105_ = _e1155;
                                                                         } else {
                                                                             let _e1158 = local_110;
                                                                             let _e1160 = local_114;
-                                                                            phi_1134_ = ((_e1158 - 1i) - _e1160);
+                                                                            phi_1105_ = ((_e1158 - 1i) - _e1160);
                                                                         }
-                                                                        let _e1163 = phi_1134_;
-                                                                        phi_1158_ = _e1163;
+                                                                        let _e1163 = phi_1105_;
+                                                                        phi_1129_ = _e1163;
                                                                     } else {
                                                                         let _e1115 = local_98;
                                                                         let _e1116 = (_e1115 == 0i);
                                                                         local_115 = _e1116;
                                                                         if _e1116 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1117 = local_98;
@@ -1412,7 +1412,7 @@ fn function_() {
                                                                         local_116 = _e1118;
                                                                         let _e1119 = local_109;
                                                                         if (_e1118 && (_e1119 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1122 = local_109;
@@ -1421,23 +1421,23 @@ fn function_() {
                                                                         local_117 = ((_e1122 % _e1123) + _e1125);
                                                                         let _e1127 = local_115;
                                                                         if _e1127 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1128 = local_117;
                                                                         let _e1130 = local_116;
                                                                         if (_e1130 && (_e1128 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1132 = local_117;
                                                                         let _e1133 = local_98;
-                                                                        phi_1158_ = (_e1132 % _e1133);
+                                                                        phi_1129_ = (_e1132 % _e1133);
                                                                     }
-                                                                    let _e1165 = phi_1158_;
-                                                                    phi_1159_ = _e1165;
+                                                                    let _e1165 = phi_1129_;
+                                                                    phi_1130_ = _e1165;
                                                                 }
-                                                                let _e1178 = phi_1159_;
+                                                                let _e1178 = phi_1130_;
                                                                 local_118 = bitcast<u32>(_e1178);
                                                                 let _e1180 = local_85;
                                                                 local_119 = _e1180.member_4;
@@ -1448,21 +1448,21 @@ fn function_() {
                                                                 if _e1184 {
                                                                     let _e1238 = local_96;
                                                                     if (_e1238 < 0i) {
-                                                                        phi_1178_ = 0i;
+                                                                        phi_1149_ = 0i;
                                                                     } else {
                                                                         let _e1240 = local_96;
                                                                         let _e1241 = local_120;
                                                                         if (_e1240 >= _e1241) {
                                                                             let _e1243 = local_120;
-                                                                            phi_1177_ = (_e1243 - 1i);
+                                                                            phi_1148_ = (_e1243 - 1i);
                                                                         } else {
-                                                                            phi_1177_ = _e1037;
+                                                                            phi_1148_ = _e1037;
                                                                         }
-                                                                        let _e1246 = phi_1177_;
-                                                                        phi_1178_ = _e1246;
+                                                                        let _e1246 = phi_1148_;
+                                                                        phi_1149_ = _e1246;
                                                                     }
-                                                                    let _e1248 = phi_1178_;
-                                                                    phi_1238_ = _e1248;
+                                                                    let _e1248 = phi_1149_;
+                                                                    phi_1209_ = _e1248;
                                                                 } else {
                                                                     let _e1185 = local_119;
                                                                     if (_e1185 == 2u) {
@@ -1472,7 +1472,7 @@ fn function_() {
                                                                         let _e1209 = (_e1208 == 0i);
                                                                         local_123 = _e1209;
                                                                         if _e1209 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1210 = local_122;
@@ -1480,7 +1480,7 @@ fn function_() {
                                                                         local_124 = _e1211;
                                                                         let _e1212 = local_96;
                                                                         if (_e1211 && (_e1212 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1215 = local_96;
@@ -1489,13 +1489,13 @@ fn function_() {
                                                                         local_125 = ((_e1215 % _e1216) + _e1218);
                                                                         let _e1220 = local_123;
                                                                         if _e1220 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1221 = local_125;
                                                                         let _e1223 = local_124;
                                                                         if (_e1223 && (_e1221 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1225 = local_125;
@@ -1504,20 +1504,20 @@ fn function_() {
                                                                         local_126 = _e1227;
                                                                         let _e1228 = local_120;
                                                                         if (_e1227 < _e1228) {
-                                                                            phi_1213_ = _e1227;
+                                                                            phi_1184_ = _e1227;
                                                                         } else {
                                                                             let _e1230 = local_122;
                                                                             let _e1232 = local_126;
-                                                                            phi_1213_ = ((_e1230 - 1i) - _e1232);
+                                                                            phi_1184_ = ((_e1230 - 1i) - _e1232);
                                                                         }
-                                                                        let _e1235 = phi_1213_;
-                                                                        phi_1237_ = _e1235;
+                                                                        let _e1235 = phi_1184_;
+                                                                        phi_1208_ = _e1235;
                                                                     } else {
                                                                         let _e1187 = local_120;
                                                                         let _e1188 = (_e1187 == 0i);
                                                                         local_127 = _e1188;
                                                                         if _e1188 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1189 = local_120;
@@ -1525,7 +1525,7 @@ fn function_() {
                                                                         local_128 = _e1190;
                                                                         let _e1191 = local_96;
                                                                         if (_e1190 && (_e1191 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1194 = local_96;
@@ -1534,23 +1534,23 @@ fn function_() {
                                                                         local_129 = ((_e1194 % _e1195) + _e1197);
                                                                         let _e1199 = local_127;
                                                                         if _e1199 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1200 = local_129;
                                                                         let _e1202 = local_128;
                                                                         if (_e1202 && (_e1200 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1204 = local_129;
                                                                         let _e1205 = local_120;
-                                                                        phi_1237_ = (_e1204 % _e1205);
+                                                                        phi_1208_ = (_e1204 % _e1205);
                                                                     }
-                                                                    let _e1237 = phi_1237_;
-                                                                    phi_1238_ = _e1237;
+                                                                    let _e1237 = phi_1208_;
+                                                                    phi_1209_ = _e1237;
                                                                 }
-                                                                let _e1250 = phi_1238_;
+                                                                let _e1250 = phi_1209_;
                                                                 local_130 = bitcast<u32>(_e1250);
                                                                 let _e1252 = local_96;
                                                                 let _e1253 = (_e1252 + 1i);
@@ -1559,21 +1559,21 @@ fn function_() {
                                                                 if _e1254 {
                                                                     let _e1308 = local_131;
                                                                     if (_e1308 < 0i) {
-                                                                        phi_1258_ = 0i;
+                                                                        phi_1229_ = 0i;
                                                                     } else {
                                                                         let _e1310 = local_131;
                                                                         let _e1311 = local_120;
                                                                         if (_e1310 >= _e1311) {
                                                                             let _e1313 = local_120;
-                                                                            phi_1257_ = (_e1313 - 1i);
+                                                                            phi_1228_ = (_e1313 - 1i);
                                                                         } else {
-                                                                            phi_1257_ = _e1253;
+                                                                            phi_1228_ = _e1253;
                                                                         }
-                                                                        let _e1316 = phi_1257_;
-                                                                        phi_1258_ = _e1316;
+                                                                        let _e1316 = phi_1228_;
+                                                                        phi_1229_ = _e1316;
                                                                     }
-                                                                    let _e1318 = phi_1258_;
-                                                                    phi_1318_ = _e1318;
+                                                                    let _e1318 = phi_1229_;
+                                                                    phi_1289_ = _e1318;
                                                                 } else {
                                                                     let _e1255 = local_119;
                                                                     if (_e1255 == 2u) {
@@ -1583,7 +1583,7 @@ fn function_() {
                                                                         let _e1279 = (_e1278 == 0i);
                                                                         local_133 = _e1279;
                                                                         if _e1279 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1280 = local_132;
@@ -1591,7 +1591,7 @@ fn function_() {
                                                                         local_134 = _e1281;
                                                                         let _e1282 = local_131;
                                                                         if (_e1281 && (_e1282 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1285 = local_131;
@@ -1600,13 +1600,13 @@ fn function_() {
                                                                         local_135 = ((_e1285 % _e1286) + _e1288);
                                                                         let _e1290 = local_133;
                                                                         if _e1290 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1291 = local_135;
                                                                         let _e1293 = local_134;
                                                                         if (_e1293 && (_e1291 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1295 = local_135;
@@ -1615,20 +1615,20 @@ fn function_() {
                                                                         local_136 = _e1297;
                                                                         let _e1298 = local_120;
                                                                         if (_e1297 < _e1298) {
-                                                                            phi_1293_ = _e1297;
+                                                                            phi_1264_ = _e1297;
                                                                         } else {
                                                                             let _e1300 = local_132;
                                                                             let _e1302 = local_136;
-                                                                            phi_1293_ = ((_e1300 - 1i) - _e1302);
+                                                                            phi_1264_ = ((_e1300 - 1i) - _e1302);
                                                                         }
-                                                                        let _e1305 = phi_1293_;
-                                                                        phi_1317_ = _e1305;
+                                                                        let _e1305 = phi_1264_;
+                                                                        phi_1288_ = _e1305;
                                                                     } else {
                                                                         let _e1257 = local_120;
                                                                         let _e1258 = (_e1257 == 0i);
                                                                         local_137 = _e1258;
                                                                         if _e1258 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1259 = local_120;
@@ -1636,7 +1636,7 @@ fn function_() {
                                                                         local_138 = _e1260;
                                                                         let _e1261 = local_131;
                                                                         if (_e1260 && (_e1261 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1264 = local_131;
@@ -1645,23 +1645,23 @@ fn function_() {
                                                                         local_139 = ((_e1264 % _e1265) + _e1267);
                                                                         let _e1269 = local_137;
                                                                         if _e1269 {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1270 = local_139;
                                                                         let _e1272 = local_138;
                                                                         if (_e1272 && (_e1270 == i32(-2147483648))) {
-                                                                            phi_2146_ = true;
+                                                                            phi_2117_ = true;
                                                                             break;
                                                                         }
                                                                         let _e1274 = local_139;
                                                                         let _e1275 = local_120;
-                                                                        phi_1317_ = (_e1274 % _e1275);
+                                                                        phi_1288_ = (_e1274 % _e1275);
                                                                     }
-                                                                    let _e1307 = phi_1317_;
-                                                                    phi_1318_ = _e1307;
+                                                                    let _e1307 = phi_1288_;
+                                                                    phi_1289_ = _e1307;
                                                                 }
-                                                                let _e1320 = phi_1318_;
+                                                                let _e1320 = phi_1289_;
                                                                 local_140 = bitcast<u32>(_e1320);
                                                                 let _e1322 = local_85;
                                                                 local_141 = _e1322.member;
@@ -1675,7 +1675,7 @@ fn function_() {
                                                                 let _e1331 = local_4;
                                                                 if (_e1330 < _e1331) {
                                                                 } else {
-                                                                    phi_2146_ = true;
+                                                                    phi_2117_ = true;
                                                                     break;
                                                                 }
                                                                 let _e1333 = local_143;
@@ -1687,7 +1687,7 @@ fn function_() {
                                                                 let _e1339 = local_4;
                                                                 if (_e1338 < _e1339) {
                                                                 } else {
-                                                                    phi_2146_ = true;
+                                                                    phi_2117_ = true;
                                                                     break;
                                                                 }
                                                                 let _e1341 = local_145;
@@ -1702,22 +1702,22 @@ fn function_() {
                                                                 if (_e1352 == 0u) {
                                                                     let _e1374 = local_148;
                                                                     let _e1376 = local_235;
-                                                                    phi_1372_ = ((_e1376 * f32(_e1374)) * 0.000000059604645f);
+                                                                    phi_1343_ = ((_e1376 * f32(_e1374)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1355 = local_147;
                                                                     if (_e1355 == 31u) {
                                                                         let _e1365 = local_148;
-                                                                        phi_1369_ = (2139095040u | (_e1365 << bitcast<u32>(13i)));
+                                                                        phi_1340_ = (2139095040u | (_e1365 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1357 = local_147;
                                                                         let _e1361 = local_148;
-                                                                        phi_1369_ = (((_e1357 + 112u) << bitcast<u32>(23i)) | (_e1361 << bitcast<u32>(13i)));
+                                                                        phi_1340_ = (((_e1357 + 112u) << bitcast<u32>(23i)) | (_e1361 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1370 = phi_1369_;
+                                                                    let _e1370 = phi_1340_;
                                                                     let _e1372 = local_235;
-                                                                    phi_1372_ = (_e1372 * bitcast<f32>(_e1370));
+                                                                    phi_1343_ = (_e1372 * bitcast<f32>(_e1370));
                                                                 }
-                                                                let _e1380 = phi_1372_;
+                                                                let _e1380 = phi_1343_;
                                                                 local_149 = _e1380;
                                                                 let _e1381 = local_144;
                                                                 let _e1383 = (_e1381 >> bitcast<u32>(16i));
@@ -1728,22 +1728,22 @@ fn function_() {
                                                                 if (_e1389 == 0u) {
                                                                     let _e1411 = local_151;
                                                                     let _e1413 = local_236;
-                                                                    phi_1404_ = ((_e1413 * f32(_e1411)) * 0.000000059604645f);
+                                                                    phi_1375_ = ((_e1413 * f32(_e1411)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1392 = local_150;
                                                                     if (_e1392 == 31u) {
                                                                         let _e1402 = local_151;
-                                                                        phi_1401_ = (2139095040u | (_e1402 << bitcast<u32>(13i)));
+                                                                        phi_1372_ = (2139095040u | (_e1402 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1394 = local_150;
                                                                         let _e1398 = local_151;
-                                                                        phi_1401_ = (((_e1394 + 112u) << bitcast<u32>(23i)) | (_e1398 << bitcast<u32>(13i)));
+                                                                        phi_1372_ = (((_e1394 + 112u) << bitcast<u32>(23i)) | (_e1398 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1407 = phi_1401_;
+                                                                    let _e1407 = phi_1372_;
                                                                     let _e1409 = local_236;
-                                                                    phi_1404_ = (_e1409 * bitcast<f32>(_e1407));
+                                                                    phi_1375_ = (_e1409 * bitcast<f32>(_e1407));
                                                                 }
-                                                                let _e1417 = phi_1404_;
+                                                                let _e1417 = phi_1375_;
                                                                 local_152 = _e1417;
                                                                 let _e1418 = local_146;
                                                                 let _e1419 = (_e1418 & 65535u);
@@ -1754,22 +1754,22 @@ fn function_() {
                                                                 if (_e1425 == 0u) {
                                                                     let _e1447 = local_154;
                                                                     let _e1449 = local_237;
-                                                                    phi_1436_ = ((_e1449 * f32(_e1447)) * 0.000000059604645f);
+                                                                    phi_1407_ = ((_e1449 * f32(_e1447)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1428 = local_153;
                                                                     if (_e1428 == 31u) {
                                                                         let _e1438 = local_154;
-                                                                        phi_1433_ = (2139095040u | (_e1438 << bitcast<u32>(13i)));
+                                                                        phi_1404_ = (2139095040u | (_e1438 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1430 = local_153;
                                                                         let _e1434 = local_154;
-                                                                        phi_1433_ = (((_e1430 + 112u) << bitcast<u32>(23i)) | (_e1434 << bitcast<u32>(13i)));
+                                                                        phi_1404_ = (((_e1430 + 112u) << bitcast<u32>(23i)) | (_e1434 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1443 = phi_1433_;
+                                                                    let _e1443 = phi_1404_;
                                                                     let _e1445 = local_237;
-                                                                    phi_1436_ = (_e1445 * bitcast<f32>(_e1443));
+                                                                    phi_1407_ = (_e1445 * bitcast<f32>(_e1443));
                                                                 }
-                                                                let _e1453 = phi_1436_;
+                                                                let _e1453 = phi_1407_;
                                                                 local_155 = _e1453;
                                                                 let _e1454 = local_146;
                                                                 let _e1456 = (_e1454 >> bitcast<u32>(16i));
@@ -1780,22 +1780,22 @@ fn function_() {
                                                                 if (_e1462 == 0u) {
                                                                     let _e1484 = local_157;
                                                                     let _e1486 = local_238;
-                                                                    phi_1468_ = ((_e1486 * f32(_e1484)) * 0.000000059604645f);
+                                                                    phi_1439_ = ((_e1486 * f32(_e1484)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1465 = local_156;
                                                                     if (_e1465 == 31u) {
                                                                         let _e1475 = local_157;
-                                                                        phi_1465_ = (2139095040u | (_e1475 << bitcast<u32>(13i)));
+                                                                        phi_1436_ = (2139095040u | (_e1475 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1467 = local_156;
                                                                         let _e1471 = local_157;
-                                                                        phi_1465_ = (((_e1467 + 112u) << bitcast<u32>(23i)) | (_e1471 << bitcast<u32>(13i)));
+                                                                        phi_1436_ = (((_e1467 + 112u) << bitcast<u32>(23i)) | (_e1471 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1480 = phi_1465_;
+                                                                    let _e1480 = phi_1436_;
                                                                     let _e1482 = local_238;
-                                                                    phi_1468_ = (_e1482 * bitcast<f32>(_e1480));
+                                                                    phi_1439_ = (_e1482 * bitcast<f32>(_e1480));
                                                                 }
-                                                                let _e1490 = phi_1468_;
+                                                                let _e1490 = phi_1439_;
                                                                 local_158 = _e1490;
                                                                 let _e1491 = local_142;
                                                                 let _e1492 = local_118;
@@ -1804,7 +1804,7 @@ fn function_() {
                                                                 let _e1495 = local_4;
                                                                 if (_e1494 < _e1495) {
                                                                 } else {
-                                                                    phi_2146_ = true;
+                                                                    phi_2117_ = true;
                                                                     break;
                                                                 }
                                                                 let _e1497 = local_159;
@@ -1816,7 +1816,7 @@ fn function_() {
                                                                 let _e1503 = local_4;
                                                                 if (_e1502 < _e1503) {
                                                                 } else {
-                                                                    phi_2146_ = true;
+                                                                    phi_2117_ = true;
                                                                     break;
                                                                 }
                                                                 let _e1505 = local_161;
@@ -1831,22 +1831,22 @@ fn function_() {
                                                                 if (_e1516 == 0u) {
                                                                     let _e1538 = local_164;
                                                                     let _e1540 = local_239;
-                                                                    phi_1521_ = ((_e1540 * f32(_e1538)) * 0.000000059604645f);
+                                                                    phi_1492_ = ((_e1540 * f32(_e1538)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1519 = local_163;
                                                                     if (_e1519 == 31u) {
                                                                         let _e1529 = local_164;
-                                                                        phi_1518_ = (2139095040u | (_e1529 << bitcast<u32>(13i)));
+                                                                        phi_1489_ = (2139095040u | (_e1529 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1521 = local_163;
                                                                         let _e1525 = local_164;
-                                                                        phi_1518_ = (((_e1521 + 112u) << bitcast<u32>(23i)) | (_e1525 << bitcast<u32>(13i)));
+                                                                        phi_1489_ = (((_e1521 + 112u) << bitcast<u32>(23i)) | (_e1525 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1534 = phi_1518_;
+                                                                    let _e1534 = phi_1489_;
                                                                     let _e1536 = local_239;
-                                                                    phi_1521_ = (_e1536 * bitcast<f32>(_e1534));
+                                                                    phi_1492_ = (_e1536 * bitcast<f32>(_e1534));
                                                                 }
-                                                                let _e1544 = phi_1521_;
+                                                                let _e1544 = phi_1492_;
                                                                 local_165 = _e1544;
                                                                 let _e1545 = local_160;
                                                                 let _e1547 = (_e1545 >> bitcast<u32>(16i));
@@ -1857,22 +1857,22 @@ fn function_() {
                                                                 if (_e1553 == 0u) {
                                                                     let _e1575 = local_167;
                                                                     let _e1577 = local_240;
-                                                                    phi_1553_ = ((_e1577 * f32(_e1575)) * 0.000000059604645f);
+                                                                    phi_1524_ = ((_e1577 * f32(_e1575)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1556 = local_166;
                                                                     if (_e1556 == 31u) {
                                                                         let _e1566 = local_167;
-                                                                        phi_1550_ = (2139095040u | (_e1566 << bitcast<u32>(13i)));
+                                                                        phi_1521_ = (2139095040u | (_e1566 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1558 = local_166;
                                                                         let _e1562 = local_167;
-                                                                        phi_1550_ = (((_e1558 + 112u) << bitcast<u32>(23i)) | (_e1562 << bitcast<u32>(13i)));
+                                                                        phi_1521_ = (((_e1558 + 112u) << bitcast<u32>(23i)) | (_e1562 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1571 = phi_1550_;
+                                                                    let _e1571 = phi_1521_;
                                                                     let _e1573 = local_240;
-                                                                    phi_1553_ = (_e1573 * bitcast<f32>(_e1571));
+                                                                    phi_1524_ = (_e1573 * bitcast<f32>(_e1571));
                                                                 }
-                                                                let _e1581 = phi_1553_;
+                                                                let _e1581 = phi_1524_;
                                                                 local_168 = _e1581;
                                                                 let _e1582 = local_162;
                                                                 let _e1583 = (_e1582 & 65535u);
@@ -1883,22 +1883,22 @@ fn function_() {
                                                                 if (_e1589 == 0u) {
                                                                     let _e1611 = local_170;
                                                                     let _e1613 = local_241;
-                                                                    phi_1585_ = ((_e1613 * f32(_e1611)) * 0.000000059604645f);
+                                                                    phi_1556_ = ((_e1613 * f32(_e1611)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1592 = local_169;
                                                                     if (_e1592 == 31u) {
                                                                         let _e1602 = local_170;
-                                                                        phi_1582_ = (2139095040u | (_e1602 << bitcast<u32>(13i)));
+                                                                        phi_1553_ = (2139095040u | (_e1602 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1594 = local_169;
                                                                         let _e1598 = local_170;
-                                                                        phi_1582_ = (((_e1594 + 112u) << bitcast<u32>(23i)) | (_e1598 << bitcast<u32>(13i)));
+                                                                        phi_1553_ = (((_e1594 + 112u) << bitcast<u32>(23i)) | (_e1598 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1607 = phi_1582_;
+                                                                    let _e1607 = phi_1553_;
                                                                     let _e1609 = local_241;
-                                                                    phi_1585_ = (_e1609 * bitcast<f32>(_e1607));
+                                                                    phi_1556_ = (_e1609 * bitcast<f32>(_e1607));
                                                                 }
-                                                                let _e1617 = phi_1585_;
+                                                                let _e1617 = phi_1556_;
                                                                 local_171 = _e1617;
                                                                 let _e1618 = local_162;
                                                                 let _e1620 = (_e1618 >> bitcast<u32>(16i));
@@ -1909,22 +1909,22 @@ fn function_() {
                                                                 if (_e1626 == 0u) {
                                                                     let _e1648 = local_173;
                                                                     let _e1650 = local_242;
-                                                                    phi_1617_ = ((_e1650 * f32(_e1648)) * 0.000000059604645f);
+                                                                    phi_1588_ = ((_e1650 * f32(_e1648)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1629 = local_172;
                                                                     if (_e1629 == 31u) {
                                                                         let _e1639 = local_173;
-                                                                        phi_1614_ = (2139095040u | (_e1639 << bitcast<u32>(13i)));
+                                                                        phi_1585_ = (2139095040u | (_e1639 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1631 = local_172;
                                                                         let _e1635 = local_173;
-                                                                        phi_1614_ = (((_e1631 + 112u) << bitcast<u32>(23i)) | (_e1635 << bitcast<u32>(13i)));
+                                                                        phi_1585_ = (((_e1631 + 112u) << bitcast<u32>(23i)) | (_e1635 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1644 = phi_1614_;
+                                                                    let _e1644 = phi_1585_;
                                                                     let _e1646 = local_242;
-                                                                    phi_1617_ = (_e1646 * bitcast<f32>(_e1644));
+                                                                    phi_1588_ = (_e1646 * bitcast<f32>(_e1644));
                                                                 }
-                                                                let _e1654 = phi_1617_;
+                                                                let _e1654 = phi_1588_;
                                                                 let _e1655 = local_165;
                                                                 let _e1656 = local_149;
                                                                 let _e1658 = local_94;
@@ -1955,7 +1955,7 @@ fn function_() {
                                                                 let _e1690 = local_4;
                                                                 if (_e1689 < _e1690) {
                                                                 } else {
-                                                                    phi_2146_ = true;
+                                                                    phi_2117_ = true;
                                                                     break;
                                                                 }
                                                                 let _e1692 = local_179;
@@ -1967,7 +1967,7 @@ fn function_() {
                                                                 let _e1698 = local_4;
                                                                 if (_e1697 < _e1698) {
                                                                 } else {
-                                                                    phi_2146_ = true;
+                                                                    phi_2117_ = true;
                                                                     break;
                                                                 }
                                                                 let _e1700 = local_181;
@@ -1982,22 +1982,22 @@ fn function_() {
                                                                 if (_e1711 == 0u) {
                                                                     let _e1733 = local_184;
                                                                     let _e1735 = local_243;
-                                                                    phi_1682_ = ((_e1735 * f32(_e1733)) * 0.000000059604645f);
+                                                                    phi_1653_ = ((_e1735 * f32(_e1733)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1714 = local_183;
                                                                     if (_e1714 == 31u) {
                                                                         let _e1724 = local_184;
-                                                                        phi_1679_ = (2139095040u | (_e1724 << bitcast<u32>(13i)));
+                                                                        phi_1650_ = (2139095040u | (_e1724 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1716 = local_183;
                                                                         let _e1720 = local_184;
-                                                                        phi_1679_ = (((_e1716 + 112u) << bitcast<u32>(23i)) | (_e1720 << bitcast<u32>(13i)));
+                                                                        phi_1650_ = (((_e1716 + 112u) << bitcast<u32>(23i)) | (_e1720 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1729 = phi_1679_;
+                                                                    let _e1729 = phi_1650_;
                                                                     let _e1731 = local_243;
-                                                                    phi_1682_ = (_e1731 * bitcast<f32>(_e1729));
+                                                                    phi_1653_ = (_e1731 * bitcast<f32>(_e1729));
                                                                 }
-                                                                let _e1739 = phi_1682_;
+                                                                let _e1739 = phi_1653_;
                                                                 local_185 = _e1739;
                                                                 let _e1740 = local_180;
                                                                 let _e1742 = (_e1740 >> bitcast<u32>(16i));
@@ -2008,22 +2008,22 @@ fn function_() {
                                                                 if (_e1748 == 0u) {
                                                                     let _e1770 = local_187;
                                                                     let _e1772 = local_244;
-                                                                    phi_1714_ = ((_e1772 * f32(_e1770)) * 0.000000059604645f);
+                                                                    phi_1685_ = ((_e1772 * f32(_e1770)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1751 = local_186;
                                                                     if (_e1751 == 31u) {
                                                                         let _e1761 = local_187;
-                                                                        phi_1711_ = (2139095040u | (_e1761 << bitcast<u32>(13i)));
+                                                                        phi_1682_ = (2139095040u | (_e1761 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1753 = local_186;
                                                                         let _e1757 = local_187;
-                                                                        phi_1711_ = (((_e1753 + 112u) << bitcast<u32>(23i)) | (_e1757 << bitcast<u32>(13i)));
+                                                                        phi_1682_ = (((_e1753 + 112u) << bitcast<u32>(23i)) | (_e1757 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1766 = phi_1711_;
+                                                                    let _e1766 = phi_1682_;
                                                                     let _e1768 = local_244;
-                                                                    phi_1714_ = (_e1768 * bitcast<f32>(_e1766));
+                                                                    phi_1685_ = (_e1768 * bitcast<f32>(_e1766));
                                                                 }
-                                                                let _e1776 = phi_1714_;
+                                                                let _e1776 = phi_1685_;
                                                                 local_188 = _e1776;
                                                                 let _e1777 = local_182;
                                                                 let _e1778 = (_e1777 & 65535u);
@@ -2034,22 +2034,22 @@ fn function_() {
                                                                 if (_e1784 == 0u) {
                                                                     let _e1806 = local_190;
                                                                     let _e1808 = local_245;
-                                                                    phi_1746_ = ((_e1808 * f32(_e1806)) * 0.000000059604645f);
+                                                                    phi_1717_ = ((_e1808 * f32(_e1806)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1787 = local_189;
                                                                     if (_e1787 == 31u) {
                                                                         let _e1797 = local_190;
-                                                                        phi_1743_ = (2139095040u | (_e1797 << bitcast<u32>(13i)));
+                                                                        phi_1714_ = (2139095040u | (_e1797 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1789 = local_189;
                                                                         let _e1793 = local_190;
-                                                                        phi_1743_ = (((_e1789 + 112u) << bitcast<u32>(23i)) | (_e1793 << bitcast<u32>(13i)));
+                                                                        phi_1714_ = (((_e1789 + 112u) << bitcast<u32>(23i)) | (_e1793 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1802 = phi_1743_;
+                                                                    let _e1802 = phi_1714_;
                                                                     let _e1804 = local_245;
-                                                                    phi_1746_ = (_e1804 * bitcast<f32>(_e1802));
+                                                                    phi_1717_ = (_e1804 * bitcast<f32>(_e1802));
                                                                 }
-                                                                let _e1812 = phi_1746_;
+                                                                let _e1812 = phi_1717_;
                                                                 local_191 = _e1812;
                                                                 let _e1813 = local_182;
                                                                 let _e1815 = (_e1813 >> bitcast<u32>(16i));
@@ -2060,22 +2060,22 @@ fn function_() {
                                                                 if (_e1821 == 0u) {
                                                                     let _e1843 = local_193;
                                                                     let _e1845 = local_246;
-                                                                    phi_1778_ = ((_e1845 * f32(_e1843)) * 0.000000059604645f);
+                                                                    phi_1749_ = ((_e1845 * f32(_e1843)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1824 = local_192;
                                                                     if (_e1824 == 31u) {
                                                                         let _e1834 = local_193;
-                                                                        phi_1775_ = (2139095040u | (_e1834 << bitcast<u32>(13i)));
+                                                                        phi_1746_ = (2139095040u | (_e1834 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1826 = local_192;
                                                                         let _e1830 = local_193;
-                                                                        phi_1775_ = (((_e1826 + 112u) << bitcast<u32>(23i)) | (_e1830 << bitcast<u32>(13i)));
+                                                                        phi_1746_ = (((_e1826 + 112u) << bitcast<u32>(23i)) | (_e1830 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1839 = phi_1775_;
+                                                                    let _e1839 = phi_1746_;
                                                                     let _e1841 = local_246;
-                                                                    phi_1778_ = (_e1841 * bitcast<f32>(_e1839));
+                                                                    phi_1749_ = (_e1841 * bitcast<f32>(_e1839));
                                                                 }
-                                                                let _e1849 = phi_1778_;
+                                                                let _e1849 = phi_1749_;
                                                                 local_194 = _e1849;
                                                                 let _e1850 = local_178;
                                                                 let _e1851 = local_118;
@@ -2084,7 +2084,7 @@ fn function_() {
                                                                 let _e1854 = local_4;
                                                                 if (_e1853 < _e1854) {
                                                                 } else {
-                                                                    phi_2146_ = true;
+                                                                    phi_2117_ = true;
                                                                     break;
                                                                 }
                                                                 let _e1856 = local_195;
@@ -2096,7 +2096,7 @@ fn function_() {
                                                                 let _e1862 = local_4;
                                                                 if (_e1861 < _e1862) {
                                                                 } else {
-                                                                    phi_2146_ = true;
+                                                                    phi_2117_ = true;
                                                                     break;
                                                                 }
                                                                 let _e1864 = local_197;
@@ -2111,22 +2111,22 @@ fn function_() {
                                                                 if (_e1875 == 0u) {
                                                                     let _e1897 = local_200;
                                                                     let _e1899 = local_247;
-                                                                    phi_1831_ = ((_e1899 * f32(_e1897)) * 0.000000059604645f);
+                                                                    phi_1802_ = ((_e1899 * f32(_e1897)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1878 = local_199;
                                                                     if (_e1878 == 31u) {
                                                                         let _e1888 = local_200;
-                                                                        phi_1828_ = (2139095040u | (_e1888 << bitcast<u32>(13i)));
+                                                                        phi_1799_ = (2139095040u | (_e1888 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1880 = local_199;
                                                                         let _e1884 = local_200;
-                                                                        phi_1828_ = (((_e1880 + 112u) << bitcast<u32>(23i)) | (_e1884 << bitcast<u32>(13i)));
+                                                                        phi_1799_ = (((_e1880 + 112u) << bitcast<u32>(23i)) | (_e1884 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1893 = phi_1828_;
+                                                                    let _e1893 = phi_1799_;
                                                                     let _e1895 = local_247;
-                                                                    phi_1831_ = (_e1895 * bitcast<f32>(_e1893));
+                                                                    phi_1802_ = (_e1895 * bitcast<f32>(_e1893));
                                                                 }
-                                                                let _e1903 = phi_1831_;
+                                                                let _e1903 = phi_1802_;
                                                                 local_201 = _e1903;
                                                                 let _e1904 = local_196;
                                                                 let _e1906 = (_e1904 >> bitcast<u32>(16i));
@@ -2137,22 +2137,22 @@ fn function_() {
                                                                 if (_e1912 == 0u) {
                                                                     let _e1934 = local_203;
                                                                     let _e1936 = local_248;
-                                                                    phi_1863_ = ((_e1936 * f32(_e1934)) * 0.000000059604645f);
+                                                                    phi_1834_ = ((_e1936 * f32(_e1934)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1915 = local_202;
                                                                     if (_e1915 == 31u) {
                                                                         let _e1925 = local_203;
-                                                                        phi_1860_ = (2139095040u | (_e1925 << bitcast<u32>(13i)));
+                                                                        phi_1831_ = (2139095040u | (_e1925 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1917 = local_202;
                                                                         let _e1921 = local_203;
-                                                                        phi_1860_ = (((_e1917 + 112u) << bitcast<u32>(23i)) | (_e1921 << bitcast<u32>(13i)));
+                                                                        phi_1831_ = (((_e1917 + 112u) << bitcast<u32>(23i)) | (_e1921 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1930 = phi_1860_;
+                                                                    let _e1930 = phi_1831_;
                                                                     let _e1932 = local_248;
-                                                                    phi_1863_ = (_e1932 * bitcast<f32>(_e1930));
+                                                                    phi_1834_ = (_e1932 * bitcast<f32>(_e1930));
                                                                 }
-                                                                let _e1940 = phi_1863_;
+                                                                let _e1940 = phi_1834_;
                                                                 local_204 = _e1940;
                                                                 let _e1941 = local_198;
                                                                 let _e1942 = (_e1941 & 65535u);
@@ -2163,22 +2163,22 @@ fn function_() {
                                                                 if (_e1948 == 0u) {
                                                                     let _e1970 = local_206;
                                                                     let _e1972 = local_249;
-                                                                    phi_1895_ = ((_e1972 * f32(_e1970)) * 0.000000059604645f);
+                                                                    phi_1866_ = ((_e1972 * f32(_e1970)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1951 = local_205;
                                                                     if (_e1951 == 31u) {
                                                                         let _e1961 = local_206;
-                                                                        phi_1892_ = (2139095040u | (_e1961 << bitcast<u32>(13i)));
+                                                                        phi_1863_ = (2139095040u | (_e1961 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1953 = local_205;
                                                                         let _e1957 = local_206;
-                                                                        phi_1892_ = (((_e1953 + 112u) << bitcast<u32>(23i)) | (_e1957 << bitcast<u32>(13i)));
+                                                                        phi_1863_ = (((_e1953 + 112u) << bitcast<u32>(23i)) | (_e1957 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e1966 = phi_1892_;
+                                                                    let _e1966 = phi_1863_;
                                                                     let _e1968 = local_249;
-                                                                    phi_1895_ = (_e1968 * bitcast<f32>(_e1966));
+                                                                    phi_1866_ = (_e1968 * bitcast<f32>(_e1966));
                                                                 }
-                                                                let _e1976 = phi_1895_;
+                                                                let _e1976 = phi_1866_;
                                                                 local_207 = _e1976;
                                                                 let _e1977 = local_198;
                                                                 let _e1979 = (_e1977 >> bitcast<u32>(16i));
@@ -2189,22 +2189,22 @@ fn function_() {
                                                                 if (_e1985 == 0u) {
                                                                     let _e2007 = local_209;
                                                                     let _e2009 = local_250;
-                                                                    phi_1927_ = ((_e2009 * f32(_e2007)) * 0.000000059604645f);
+                                                                    phi_1898_ = ((_e2009 * f32(_e2007)) * 0.000000059604645f);
                                                                 } else {
                                                                     let _e1988 = local_208;
                                                                     if (_e1988 == 31u) {
                                                                         let _e1998 = local_209;
-                                                                        phi_1924_ = (2139095040u | (_e1998 << bitcast<u32>(13i)));
+                                                                        phi_1895_ = (2139095040u | (_e1998 << bitcast<u32>(13i)));
                                                                     } else {
                                                                         let _e1990 = local_208;
                                                                         let _e1994 = local_209;
-                                                                        phi_1924_ = (((_e1990 + 112u) << bitcast<u32>(23i)) | (_e1994 << bitcast<u32>(13i)));
+                                                                        phi_1895_ = (((_e1990 + 112u) << bitcast<u32>(23i)) | (_e1994 << bitcast<u32>(13i)));
                                                                     }
-                                                                    let _e2003 = phi_1924_;
+                                                                    let _e2003 = phi_1895_;
                                                                     let _e2005 = local_250;
-                                                                    phi_1927_ = (_e2005 * bitcast<f32>(_e2003));
+                                                                    phi_1898_ = (_e2005 * bitcast<f32>(_e2003));
                                                                 }
-                                                                let _e2013 = phi_1927_;
+                                                                let _e2013 = phi_1898_;
                                                                 let _e2014 = local_201;
                                                                 let _e2015 = local_185;
                                                                 let _e2017 = local_94;
@@ -2241,80 +2241,80 @@ fn function_() {
                                                                 let _e2079 = local_83;
                                                                 let _e2082 = local_83;
                                                                 let _e2086 = local_82;
-                                                                phi_946_ = (_e2086 + 1u);
-                                                                phi_949_ = type_3((_e2073.member + ((_e2045 + (((_e2019 + ((_e2014 - _e2015) * _e2017)) - _e2041) * _e2043)) * _e2065)), (_e2076.member_1 + ((_e2051 + (((_e2026 + ((_e2021 - _e2022) * _e2024)) - _e2047) * _e2049)) * _e2067)), (_e2079.member_2 + ((_e2057 + (((_e2033 + ((_e2028 - _e2029) * _e2031)) - _e2053) * _e2055)) * _e2069)), (_e2082.member_3 + ((_e2063 + (((_e2039 + ((_e2013 - _e2035) * _e2037)) - _e2059) * _e2061)) * _e2071)));
+                                                                phi_917_ = (_e2086 + 1u);
+                                                                phi_920_ = type_3((_e2073.member + ((_e2045 + (((_e2019 + ((_e2014 - _e2015) * _e2017)) - _e2041) * _e2043)) * _e2065)), (_e2076.member_1 + ((_e2051 + (((_e2026 + ((_e2021 - _e2022) * _e2024)) - _e2047) * _e2049)) * _e2067)), (_e2079.member_2 + ((_e2057 + (((_e2033 + ((_e2028 - _e2029) * _e2031)) - _e2053) * _e2055)) * _e2069)), (_e2082.member_3 + ((_e2063 + (((_e2039 + ((_e2013 - _e2035) * _e2037)) - _e2059) * _e2061)) * _e2071)));
                                                             } else {
-                                                                phi_946_ = u32();
-                                                                phi_949_ = type_3();
+                                                                phi_917_ = u32();
+                                                                phi_920_ = type_3();
                                                             }
-                                                            let _e2089 = phi_946_;
-                                                            let _e2091 = phi_949_;
+                                                            let _e2089 = phi_917_;
+                                                            let _e2091 = phi_920_;
                                                             continue;
                                                             continuing {
                                                                 let _e2092 = local_84;
-                                                                phi_945_ = _e2089;
-                                                                phi_948_ = _e2091;
-                                                                phi_2146_ = _e965;
+                                                                phi_916_ = _e2089;
+                                                                phi_919_ = _e2091;
+                                                                phi_2117_ = _e965;
                                                                 break if !(_e2092);
                                                             }
                                                         }
-                                                        let _e2095 = phi_2146_;
-                                                        phi_2256_ = _e2095;
+                                                        let _e2095 = phi_2117_;
+                                                        phi_2223_ = _e2095;
                                                         if _e2095 {
                                                             break;
                                                         }
                                                         let _e2096 = local_80;
-                                                        phi_2257_ = _e2095;
-                                                        phi_917_ = (_e2096 + 1u);
+                                                        phi_2224_ = _e2095;
+                                                        phi_888_ = (_e2096 + 1u);
                                                         let _e2295 = local_257;
-                                                        phi_920_ = _e2295;
+                                                        phi_891_ = _e2295;
                                                     } else {
-                                                        phi_2257_ = _e965;
-                                                        phi_917_ = u32();
-                                                        phi_920_ = type_3();
+                                                        phi_2224_ = _e965;
+                                                        phi_888_ = u32();
+                                                        phi_891_ = type_3();
                                                     }
-                                                    let _e2099 = phi_2257_;
-                                                    let _e2101 = phi_917_;
-                                                    let _e2103 = phi_920_;
+                                                    let _e2099 = phi_2224_;
+                                                    let _e2101 = phi_888_;
+                                                    let _e2103 = phi_891_;
                                                     continue;
                                                     continuing {
                                                         let _e2104 = local_81;
-                                                        phi_2192_ = _e2099;
-                                                        phi_916_ = _e2101;
-                                                        phi_919_ = _e2103;
-                                                        phi_2256_ = _e2099;
+                                                        phi_2163_ = _e2099;
+                                                        phi_887_ = _e2101;
+                                                        phi_890_ = _e2103;
+                                                        phi_2223_ = _e2099;
                                                         break if !(_e2104);
                                                     }
                                                 }
-                                                let _e2107 = phi_2256_;
-                                                phi_2258_ = _e2107;
+                                                let _e2107 = phi_2223_;
+                                                phi_2225_ = _e2107;
                                                 if _e2107 {
                                                     break;
                                                 }
                                                 let _e2108 = local_77;
-                                                phi_2259_ = _e2107;
-                                                phi_900_ = (_e2108 + 1u);
+                                                phi_2226_ = _e2107;
+                                                phi_871_ = (_e2108 + 1u);
                                                 let _e2301 = local_258;
-                                                phi_903_ = _e2301;
+                                                phi_874_ = _e2301;
                                             } else {
-                                                phi_2259_ = _e957;
-                                                phi_900_ = u32();
-                                                phi_903_ = type_3();
+                                                phi_2226_ = _e957;
+                                                phi_871_ = u32();
+                                                phi_874_ = type_3();
                                             }
-                                            let _e2111 = phi_2259_;
-                                            let _e2113 = phi_900_;
-                                            let _e2115 = phi_903_;
+                                            let _e2111 = phi_2226_;
+                                            let _e2113 = phi_871_;
+                                            let _e2115 = phi_874_;
                                             continue;
                                             continuing {
                                                 let _e2116 = local_79;
-                                                phi_2193_ = _e2111;
-                                                phi_899_ = _e2113;
-                                                phi_902_ = _e2115;
-                                                phi_2258_ = _e2111;
+                                                phi_2164_ = _e2111;
+                                                phi_870_ = _e2113;
+                                                phi_873_ = _e2115;
+                                                phi_2225_ = _e2111;
                                                 break if !(_e2116);
                                             }
                                         }
-                                        let _e2119 = phi_2258_;
+                                        let _e2119 = phi_2225_;
                                         if _e2119 {
                                             break;
                                         }
@@ -2323,41 +2323,41 @@ fn function_() {
                                         let _e2124 = local_78;
                                         let _e2126 = local_78;
                                         let _e2305 = local_259;
-                                        phi_1980_ = _e2305;
+                                        phi_1951_ = _e2305;
                                     }
-                                    let _e2129 = phi_1980_;
-                                    phi_1981_ = _e2129;
-                                    phi_1982_ = _e774;
+                                    let _e2129 = phi_1951_;
+                                    phi_1952_ = _e2129;
+                                    phi_1953_ = _e774;
                                 }
-                                let _e2131 = phi_1981_;
-                                let _e2133 = phi_1982_;
+                                let _e2131 = phi_1952_;
+                                let _e2133 = phi_1953_;
                                 if _e2133 {
-                                    phi_1986_ = type_3(1f, 1f, 1f, 1f);
+                                    phi_1957_ = type_3(1f, 1f, 1f, 1f);
                                 } else {
-                                    phi_1986_ = _e2131;
+                                    phi_1957_ = _e2131;
                                 }
-                                let _e2135 = phi_1986_;
-                                phi_1987_ = _e2135;
+                                let _e2135 = phi_1957_;
+                                phi_1958_ = _e2135;
                             }
-                            let _e2137 = phi_1987_;
-                            phi_1988_ = _e2137;
-                            phi_1989_ = _e738;
+                            let _e2137 = phi_1958_;
+                            phi_1959_ = _e2137;
+                            phi_1960_ = _e738;
                         }
-                        let _e2139 = phi_1988_;
-                        let _e2141 = phi_1989_;
+                        let _e2139 = phi_1959_;
+                        let _e2141 = phi_1960_;
                         if _e2141 {
-                            phi_1993_ = type_3(1f, 1f, 1f, 1f);
+                            phi_1964_ = type_3(1f, 1f, 1f, 1f);
                         } else {
-                            phi_1993_ = _e2139;
+                            phi_1964_ = _e2139;
                         }
-                        let _e2143 = phi_1993_;
+                        let _e2143 = phi_1964_;
                         let _e2145 = local_61;
                         let _e2147 = local_48;
                         local_210 = ((_e2145 * _e2143.member_3) * _e2147);
                         let _e2149 = local_22;
                         if ((_e2149 & 4u) == 0u) {
                             let _e2163 = local_210;
-                            phi_2014_ = (_e2163 > 0f);
+                            phi_1985_ = (_e2163 > 0f);
                         } else {
                             let _e2152 = local_20;
                             let _e2153 = (_e2152 + 7u);
@@ -2370,26 +2370,26 @@ fn function_() {
                             let _e2156 = local_211;
                             let _e2159 = global_3.member[_e2156];
                             let _e2161 = local_210;
-                            phi_2014_ = (_e2161 >= bitcast<f32>(_e2159));
+                            phi_1985_ = (_e2161 >= bitcast<f32>(_e2159));
                         }
-                        let _e2166 = phi_2014_;
-                        phi_2015_ = _e2166;
+                        let _e2166 = phi_1985_;
+                        phi_1986_ = _e2166;
                     }
-                    let _e2168 = phi_2015_;
-                    phi_2016_ = _e2168;
+                    let _e2168 = phi_1986_;
+                    phi_1987_ = _e2168;
                 } else {
-                    phi_2016_ = bool();
+                    phi_1987_ = bool();
                 }
-                let _e2170 = phi_2016_;
+                let _e2170 = phi_1987_;
                 let _e2171 = local_11;
-                phi_2018_ = _e2170;
-                phi_2019_ = select(true, false, _e2171);
+                phi_1989_ = _e2170;
+                phi_1990_ = select(true, false, _e2171);
             } else {
-                phi_2018_ = bool();
-                phi_2019_ = true;
+                phi_1989_ = bool();
+                phi_1990_ = true;
             }
-            let _e2174 = phi_2018_;
-            let _e2176 = phi_2019_;
+            let _e2174 = phi_1989_;
+            let _e2176 = phi_1990_;
             if select(_e2174, false, _e2176) {
             } else {
                 discard;

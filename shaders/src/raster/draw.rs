@@ -13,7 +13,7 @@
 
 use super::mesh::{ALPHA_BLEND, ALPHA_MASK, MATERIAL_WORDS, VERTEX_WORDS};
 use super::project::{RasterParams, clip, cover, edges, fetch, pixel_ndc, triangle};
-use super::texture::{UvFootprint, half_to_f32, load_f32, sample};
+use super::texture::{Probes, UvFootprint, half_to_f32, load_f32, sample};
 use crate::exec::{Group, Load, Mem};
 use crate::math::{ceil, floor};
 use crate::wg::for_each_item;
@@ -69,7 +69,9 @@ pub fn coverage(
 ) -> f32 {
     let at = material * MATERIAL_WORDS;
     let base_texture = materials.load(at + 8);
-    load_f32(materials, at + 3) * sample(textures, texels, p.textures, base_texture, uv.0, uv.1, UvFootprint::POINT, 1)[3] * vertex_alpha
+    load_f32(materials, at + 3)
+        * sample(textures, texels, p.textures, base_texture, uv.0, uv.1, UvFootprint::POINT, Probes::FULL)[3]
+        * vertex_alpha
 }
 
 /// Whether a fragment of triangle `t` at planar depth `depth` is kept (module docs).

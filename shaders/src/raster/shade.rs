@@ -15,7 +15,7 @@
 use super::draw::{VIS_WORDS, interpolate_color, interpolate_uv};
 use super::mesh::{ALPHA_BLEND, Light, MATERIAL_WORDS, UNLIT, VERTEX_WORDS};
 use super::project::{cross, dot, sub, triangle, vertex_position};
-use super::texture::{MAX_PROBES, UvFootprint, load_f32, sample};
+use super::texture::{Probes, UvFootprint, load_f32, sample};
 use crate::exec::{Group, Load, Mem};
 use crate::lens::ThinLens;
 use crate::math::{absf, sqrt};
@@ -28,22 +28,13 @@ pub const LAYER: u32 = 0;
 pub const ACCUMULATE: u32 = 1;
 /// The bits of [`ShadeParams::mode`] that hold the pass.
 const PASS_MASK: u32 = 0xff;
-/// Where [`ShadeParams::mode`] holds the most probes a minified texture lookup takes (8 bits; 0:
-/// [`MAX_PROBES`], the box filter in full).
+/// Where [`ShadeParams::mode`] holds its [`Probes`] ([`Probes::word`]; 0: [`Probes::FULL`]).
 const PROBES_SHIFT: u32 = 8;
 
 /// The `mode` word of a `pass` ([`LAYER`] or [`ACCUMULATE`]) whose minified texture lookups take
-/// at most `probes` probes (clamped to 1 ..= [`MAX_PROBES`]; 1: one trilinear lookup at the level
-/// of the footprint's longer side, a GPU's isotropic filter).
+/// at most `probes` probes ([`Probes::at_most`]).
 pub fn mode_word(pass: u32, probes: u32) -> u32 {
-    let probes = if probes < 1 {
-        1
-    } else if probes > MAX_PROBES {
-        MAX_PROBES
-    } else {
-        probes
-    };
-    (pass & PASS_MASK) | probes << PROBES_SHIFT
+    (pass & PASS_MASK) | Probes::at_most(probes).word() << PROBES_SHIFT
 }
 /// Words a pixel of a layer.
 pub const LAYER_WORDS: u32 = 5;
@@ -76,11 +67,10 @@ impl ShadeParams {
         self.mode & PASS_MASK
     }
 
-    /// The most probes a minified texture lookup takes.
+    /// The probes a minified texture lookup takes.
     #[inline]
-    pub fn probes(&self) -> u32 {
-        let n = self.mode >> PROBES_SHIFT & PASS_MASK;
-        if n == 0 || n > MAX_PROBES { MAX_PROBES } else { n }
+    pub fn probes(&self) -> Probes {
+        Probes::from_word(self.mode >> PROBES_SHIFT)
     }
 }
 
@@ -152,7 +142,7 @@ pub fn shade_point(
     eye: [f32; 3],
     camera: [f32; 4],
     texture_count: u32,
-    probes: u32,
+    probes: Probes,
     t: u32,
     b0: f32,
     b1: f32,

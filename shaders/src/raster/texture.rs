@@ -173,8 +173,52 @@ impl Level {
     }
 }
 
-/// Texture `index` at `(u, v)` (glTF UVs: origin at the top left) filtered over `footprint` with
-/// at most `probes` probes (at most [`MAX_PROBES`]); white for [`NO_TEXTURE`] or an index past the
+/// How many probes a minified lookup may take: at most `most` in all and `across` along the
+/// footprint's shorter side. Made once for a pass ([`Probes::at_most`], on the host), so the lookup
+/// itself has no loop to size its grid.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Probes {
+    pub most: u32,
+    pub across: u32,
+}
+
+impl Probes {
+    /// The box filter in full: [`MAX_PROBES`], [`MAX_PROBES_ACROSS`] across.
+    pub const FULL: Probes = Probes { most: MAX_PROBES, across: MAX_PROBES_ACROSS };
+
+    /// At most `n` probes (clamped to 1 ..= [`MAX_PROBES`]; 1: one trilinear lookup at the level of
+    /// the footprint's longer side, a GPU's isotropic filter), at most `√n` across so that a
+    /// smaller budget keeps the probes' grid square.
+    pub fn at_most(n: u32) -> Probes {
+        let most = if n < 1 {
+            1
+        } else if n > MAX_PROBES {
+            MAX_PROBES
+        } else {
+            n
+        };
+        let mut across = 1;
+        while across < MAX_PROBES_ACROSS && (across + 1) * (across + 1) <= most {
+            across += 1;
+        }
+        Probes { most, across }
+    }
+
+    /// The budget in 12 bits: `most` (7 bits), then `across` (4 bits).
+    pub fn word(self) -> u32 {
+        self.most | self.across << 7
+    }
+
+    /// The budget of [`Probes::word`]'s bits; [`Probes::FULL`] for 0 or a word out of range.
+    #[inline]
+    pub fn from_word(w: u32) -> Probes {
+        let (most, across) = (w & 0x7f, w >> 7 & 0xf);
+        if most == 0 || most > MAX_PROBES || across == 0 || across > MAX_PROBES_ACROSS { Probes::FULL } else { Probes { most, across } }
+    }
+}
+
+/// Texture `index` at `(u, v)` (glTF UVs: origin at the top left) filtered over `footprint` within
+/// the budget `probes`; white for [`NO_TEXTURE`] or an index past the
 /// table, so a factor times a missing texture is the factor.
 #[allow(clippy::too_many_arguments)]
 pub fn sample(
@@ -185,14 +229,23 @@ pub fn sample(
     u: f32,
     v: f32,
     footprint: UvFootprint,
-    probes: u32,
+    probes: Probes,
 ) -> [f32; 4] {
     let c = filtered(textures, texels, texture_count, index, u, v, footprint, probes);
     [c.r, c.g, c.b, c.a]
 }
 
 #[allow(clippy::too_many_arguments)]
-fn filtered(textures: &impl Load, texels: &impl Load, texture_count: u32, index: u32, u: f32, v: f32, f: UvFootprint, probes: u32) -> Rgba {
+fn filtered(
+    textures: &impl Load,
+    texels: &impl Load,
+    texture_count: u32,
+    index: u32,
+    u: f32,
+    v: f32,
+    f: UvFootprint,
+    probes: Probes,
+) -> Rgba {
     if index == NO_TEXTURE || index >= texture_count {
         return Rgba::WHITE;
     }
@@ -215,12 +268,7 @@ fn filtered(textures: &impl Load, texels: &impl Load, texture_count: u32, index:
     // Magnified (or no footprint): one read of the finest level, as the sampler says. Minified:
     // about a probe a texel along each side, within the budgets, at the level the spacing fits.
     let magnified = !(longest > 1.0) || !crate::lens::is_finite(longest);
-    // A budget below the full one keeps the probes' square shape: at most √most across.
-    let most = if probes < MAX_PROBES { probes } else { MAX_PROBES };
-    let mut across = 1;
-    while across < MAX_PROBES_ACROSS && (across + 1) * (across + 1) <= most {
-        across += 1;
-    }
+    let Probes { most, across } = probes;
     let (na, nb) = if magnified {
         (1, 1)
     } else if la >= lb {
@@ -271,6 +319,23 @@ fn probes_along(length: f32, most: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A budget survives the push constant's word, keeps its grid square, and an unset word is the
+    /// full box filter.
+    #[test]
+    fn probe_budgets_round_trip_and_stay_square() {
+        for n in 0..=70 {
+            let p = Probes::at_most(n);
+            assert_eq!(Probes::from_word(p.word()), p, "{n}");
+            assert!(
+                p.across * p.across <= p.most && (p.across == MAX_PROBES_ACROSS || (p.across + 1) * (p.across + 1) > p.most),
+                "{n}: {p:?}"
+            );
+        }
+        assert_eq!(Probes::at_most(16), Probes { most: 16, across: 4 });
+        assert_eq!(Probes::at_most(1000), Probes::FULL);
+        assert_eq!(Probes::from_word(0), Probes::FULL);
+    }
 
     #[test]
     fn halves_decode_exactly() {

@@ -1,5 +1,5 @@
 //! What only tests use (feature `testing`, off by default; the workspace's tests crate turns it
-//! on): which of a splatting context's buffers hold each stage's data, and the ray tracer's
+//! on): a splatting context's last frame parameters and the buffers its recording does not list, and the ray tracer's
 //! recording for the one-shot oracle that the suites compare its context with. A renderer's build
 //! does not see any of it.
 
@@ -10,9 +10,9 @@ use dof_shaders::raytrace::{TraceParams, raytrace_trace};
 
 pub use crate::frame::splat::StageBuffers;
 
-/// The context's buffers of each stage, for comparing backends stage by stage. A later stage may
-/// reuse an earlier one's buffer (the cells' buffer holds the unsorted keys, the offsets' the
-/// sorted values): read each as its stage leaves it, by encoding the frame's recording in parts.
+/// What comparing backends stage by stage needs besides the recording's transients (which a later
+/// stage's transient may share a buffer with: read each as its last command leaves it, by encoding
+/// the frame's recording in parts).
 pub fn stage_buffers(ctx: &SplatContext) -> StageBuffers {
     ctx.stage_buffers()
 }

@@ -52,6 +52,7 @@ pub mod renderer_peel;
 pub mod ring_gather;
 pub mod scatter_gather;
 pub mod splat;
+mod transient;
 
 pub use bokeh::{BokehContext, BokehContextDesc, BokehOptions, BokehReport};
 pub use context::{ContextReport, DofContext, Extent, ReportDetails};
@@ -62,7 +63,7 @@ pub use layer_options::{GuardBand, LayerOptions};
 pub use layered::{LayeredContext, LayeredContextDesc, LayeredOptions, LayeredPlanReport, LayeredReport};
 pub use options::{Kind, MethodOption, MethodOptions, OptionSpec, Value};
 pub use raytrace::{RaytraceContext, RaytraceContextDesc, RaytraceOptions, RaytraceReport};
-pub use recording::{Command, Groups, Recording};
+pub use recording::{Command, Groups, Recording, TransientUse};
 pub use registry::{Column, ContextDesc, METHODS, MethodInfo, Reach, Reads, Scale, Stage, Sweep, Tolerances, VulkanTolerance};
 pub use renderer_peel::{RendererPeel, RendererPeelDesc};
 pub use ring_gather::{RingGatherContext, RingGatherContextDesc, RingGatherOptions, RingGatherReport};

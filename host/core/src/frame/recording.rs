@@ -104,6 +104,26 @@ impl Command {
         }
     }
 
+    /// Calls `f` on every buffer the command names (its bindings, indirect arguments, target).
+    pub(crate) fn for_each_buffer(&mut self, mut f: impl FnMut(&mut BufferId)) {
+        match self {
+            Command::Fill { buffer, .. } | Command::CopyImageToBuffer { buffer, .. } | Command::CopyBufferToImage { buffer, .. } => {
+                f(buffer)
+            }
+            Command::Dispatch { groups, buffers, .. } => {
+                if let Groups::Indirect { args, .. } = groups {
+                    f(args);
+                }
+                buffers.iter_mut().for_each(f);
+            }
+            Command::Draw { args, buffers, target, .. } => {
+                f(args);
+                f(target);
+                buffers.iter_mut().for_each(f);
+            }
+        }
+    }
+
     /// Records the command alone into `backend` (a render graph that schedules the frame's commands
     /// itself encodes each where it goes, in an order that keeps every dependency, and puts its own
     /// barriers between them).
@@ -129,18 +149,46 @@ impl Command {
     }
 }
 
+/// One transient buffer's use in a recorded frame ([`Recording::transients`]): the buffer it lives
+/// in (shared with the transients whose uses it does not overlap) and the first and last commands
+/// that use it. What its buffer holds outside those commands belongs to the buffer's other
+/// transients, so a render graph may also alias the buffer with its own resources there.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TransientUse {
+    /// The context's name for it (`splat/keys`, ...).
+    pub label: String,
+    pub buffer: BufferId,
+    /// Its size; its buffer may be larger.
+    pub words: u64,
+    /// Indices into [`Recording::commands`], inclusive.
+    pub first: usize,
+    pub last: usize,
+}
+
 /// One frame's commands, checked, in the order they run. Made by a context's
 /// [`recording`](super::DofContext::recording), for the backend that made the context.
 #[derive(Clone, Debug)]
 pub struct Recording {
     backend: BackendId,
     commands: Vec<Command>,
+    transients: Vec<TransientUse>,
 }
 
 impl Recording {
+    pub(crate) fn new(backend: BackendId, commands: Vec<Command>, transients: Vec<TransientUse>) -> Self {
+        Recording { backend, commands, transients }
+    }
+
     /// The commands, in order: each sees every write of the ones before it.
     pub fn commands(&self) -> &[Command] {
         &self.commands
+    }
+
+    /// The context's buffers that hold nothing between frames, with the commands that first and
+    /// last use each in this frame ([`super::transient`]): several share one buffer where their
+    /// uses do not overlap. Empty for a context that places none by lifetime.
+    pub fn transients(&self) -> &[TransientUse] {
+        &self.transients
     }
 
     /// The backend the recording is for (the one that made its context).
@@ -190,9 +238,28 @@ pub(crate) fn capture<C>(
     f: &Frame,
     commands: fn(&mut C, &mut dyn Backend, &Frame) -> Result<()>,
 ) -> Result<Recording> {
-    let mut capture = Capture { inner: backend, commands: Vec::new() };
+    let commands = capture_over(ctx, backend, None, f, commands)?;
+    Ok(Recording::new(backend.id(), commands, Vec::new()))
+}
+
+/// Stand-ins for buffers no backend holds yet, by their sizes (a context's transients before
+/// placement, [`super::transient`]).
+pub(crate) trait StandIns {
+    /// The words of stand-in `id`, or `None` for a backend's buffer.
+    fn words(&self, id: BufferId) -> Option<u64>;
+}
+
+/// The commands of a frame, checked, over the backend's buffers and `stand_ins` (left in place).
+pub(crate) fn capture_over<C>(
+    ctx: &mut C,
+    backend: &dyn Backend,
+    stand_ins: Option<&dyn StandIns>,
+    f: &Frame,
+    commands: fn(&mut C, &mut dyn Backend, &Frame) -> Result<()>,
+) -> Result<Vec<Command>> {
+    let mut capture = Capture { inner: backend, stand_ins, commands: Vec::new() };
     commands(ctx, &mut capture, f)?;
-    Ok(Recording { backend: backend.id(), commands: capture.commands })
+    Ok(capture.commands)
 }
 
 /// A backend that checks the commands recorded into it against a real backend's buffers, limits
@@ -200,12 +267,14 @@ pub(crate) fn capture<C>(
 /// recording commands is refused: a frame does not allocate, transfer, time or submit.
 struct Capture<'a> {
     inner: &'a dyn Backend,
+    /// Buffers checked at their declared sizes.
+    stand_ins: Option<&'a dyn StandIns>,
     commands: Vec<Command>,
 }
 
 impl Capture<'_> {
     fn range(&self, buffer: BufferId, offset: u64, words: u64) -> Result<()> {
-        let have = self.inner.buffer_words(buffer)?;
+        let have = self.buffer_words(buffer)?;
         match offset.checked_add(words) {
             Some(end) if end <= have => Ok(()),
             _ => Err(Error::InvalidArgument(format!("range {offset}..{offset}+{words} outside buffer {} of {have} words", buffer.0))),
@@ -213,7 +282,7 @@ impl Capture<'_> {
     }
 
     fn buffers(&self, buffers: &[BufferId]) -> Result<()> {
-        buffers.iter().try_for_each(|&b| self.inner.buffer_words(b).map(drop))
+        buffers.iter().try_for_each(|&b| self.buffer_words(b).map(drop))
     }
 
     fn refused(&self, what: &str) -> Error {
@@ -245,7 +314,10 @@ impl Backend for Capture<'_> {
     }
     fn destroy_buffer(&mut self, _buffer: BufferId) {}
     fn buffer_words(&self, buffer: BufferId) -> Result<u64> {
-        self.inner.buffer_words(buffer)
+        match self.stand_ins.and_then(|t| t.words(buffer)) {
+            Some(words) => Ok(words),
+            None => self.inner.buffer_words(buffer),
+        }
     }
     fn write_buffer(&mut self, _buffer: BufferId, _offset_words: u64, _data: &[u32]) -> Result<()> {
         Err(self.refused("write_buffer"))

@@ -9,7 +9,8 @@ use super::io::{
     Frame, ImageIo, Owned, check_frame, clamped_summary, context_pixels, output_buffer, ready, record_clamp_count, record_front,
     record_input, record_output,
 };
-use super::recording::{Recording, capture};
+use super::recording::Recording;
+use super::transient::{self, Transients};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 use dof_shaders::ring_gather::{
@@ -89,7 +90,8 @@ impl RingGatherContextDesc {
     }
 }
 
-/// The buffers one frame's passes read and write.
+/// The buffers one frame's passes read and write: transients, placed by their lifetimes
+/// ([`super::transient`]).
 struct Passes {
     /// The front layer: 3 words a pixel, and its depth.
     color: BufferId,
@@ -119,6 +121,7 @@ pub struct RingGatherContext {
     stats: Vec<BufferId>,
     io: Option<ImageIo>,
     owned: Owned,
+    transients: Transients,
 }
 
 impl RingGatherContext {
@@ -130,23 +133,28 @@ impl RingGatherContext {
         let tiles = shape.tiles_x() as u64 * shape.tiles_y() as u64;
         let in_flight = InFlight::new(desc.frames_in_flight)?;
         let mut owned = Owned::default();
+        let mut t = Transients::default();
+        let passes = Passes {
+            color: t.declare(3 * pixels, "ring-gather/color"),
+            depth: t.declare(pixels, "ring-gather/depth"),
+            fine: t.declare(3 * pixels, "ring-gather/fine"),
+            half: t.declare(HALF_WORDS as u64 * half, "ring-gather/half"),
+            tiles: t.declare(tiles, "ring-gather/tiles"),
+            dilated: t.declare(DILATED_WORDS as u64 * tiles, "ring-gather/dilated"),
+            bright: t.declare(BRIGHT_TILE_WORDS as u64 * tiles, "ring-gather/bright"),
+            fields: t.declare(FIELD_WORDS as u64 * half, "ring-gather/fields"),
+        };
         let made = (|| {
-            let passes = Passes {
-                color: owned.make(backend, 3 * pixels, "ring-gather/color")?,
-                depth: owned.make(backend, pixels, "ring-gather/depth")?,
-                fine: owned.make(backend, 3 * pixels, "ring-gather/fine")?,
-                half: owned.make(backend, HALF_WORDS as u64 * half, "ring-gather/half")?,
-                tiles: owned.make(backend, tiles, "ring-gather/tiles")?,
-                dilated: owned.make(backend, DILATED_WORDS as u64 * tiles, "ring-gather/dilated")?,
-                bright: owned.make(backend, BRIGHT_TILE_WORDS as u64 * tiles, "ring-gather/bright")?,
-                fields: owned.make(backend, FIELD_WORDS as u64 * half, "ring-gather/fields")?,
-            };
             let stats = per_frame(&mut owned, backend, desc.frames_in_flight, 2, "ring-gather/stats")?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
-            Ok((passes, stats, io))
+            Ok((stats, io))
         })();
-        let ((passes, stats, io), owned) = owned.or_free(backend, made)?;
-        let ctx = RingGatherContext { desc: desc.clone(), passes, in_flight, stats, io, owned };
+        let ((stats, io), owned) = owned.or_free(backend, made)?;
+        let mut ctx = RingGatherContext { desc: desc.clone(), passes, in_flight, stats, io, owned, transients: t };
+        if let Err(e) = transient::place(&mut ctx, backend, desc.extent(), 0, |c| (&mut c.transients, &mut c.owned), Self::commands) {
+            ctx.destroy(backend);
+            return Err(e);
+        }
         let mut kernels = dof_shaders::ring_gather::KERNELS.to_vec();
         kernels.extend(dof_shaders::frame_io::KERNELS);
         kernels.extend(dof_shaders::radiance::KERNELS);
@@ -177,12 +185,12 @@ impl RingGatherContext {
     /// gather over rings and the composite with the highlights' discs.
     pub fn recording(&mut self, backend: &dyn Backend, f: &Frame) -> Result<Recording> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
-        let recording = capture(self, backend, f, Self::commands)?;
+        let recording = transient::capture_with_transients(self, backend, f, |c| &mut c.transients, Self::commands)?;
         self.in_flight.recorded(self.desc.options);
         Ok(recording)
     }
 
-    /// The frame's commands (captured, and checked, by [`capture`]).
+    /// The frame's commands (captured, and checked, by [`transient::capture_with_transients`]).
     fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
         let slots = record_input(backend, f, self.io.as_ref())?;

@@ -6,8 +6,6 @@
 //! lists overflow the default pool, this path runs it again with a pool as large as the frame
 //! wanted, so its result is always whole.
 
-#[cfg(feature = "testing")]
-use crate::backend::BufferId;
 use crate::backend::{Backend, CommandTime, with_buffers};
 use crate::frame::splat::{SplatContext, SplatContextDesc};
 use crate::frame::splat::{SplatOptions, SplatReport};
@@ -133,28 +131,21 @@ fn record_frame(
     if !keep_stages {
         return ctx.record(backend, frame).map(|_| (None, Vec::new()));
     }
-    let s = dof_core::testing::stage_buffers(ctx);
     let recording = ctx.recording(backend, frame)?;
     let commands = recording.commands();
     let mut times = Vec::new();
-    // Encodes the commands from `from` up to the first of `stage` (a label, or a prefix ending in
-    // `/`), submits them, and returns where that stage starts.
-    let mut run_to = |backend: &mut dyn Backend, from: usize, stage: &str| -> Result<usize> {
-        let starts = |label: &str| label == stage || (stage.ends_with('/') && label.starts_with(stage));
-        let at = commands[from..].iter().position(|c| starts(c.label())).map(|i| from + i);
-        let at = at.ok_or_else(|| Error::InvalidArgument(format!("the splatting frame has no stage `{stage}`")))?;
-        commands[from..at].iter().try_for_each(|c| c.encode(backend))?;
+    // Each transient is read as the last command that uses it leaves it: a later stage's
+    // transient may share its buffer.
+    let mut uses: Vec<_> = recording.transients().iter().collect();
+    uses.sort_by_key(|u| u.last);
+    let mut reads = StageReads::new();
+    let mut at = 0;
+    for u in uses {
+        commands[at..=u.last].iter().try_for_each(|c| c.encode(backend))?;
         times.extend(backend.submit()?);
-        Ok(at)
-    };
-    let whole = |backend: &mut dyn Backend, id: BufferId| backend.read_buffer(id, 0, backend.buffer_words(id)?);
-    // A buffer a later stage reuses is read before that stage: the cells (where binning writes
-    // the keys) before binning, the offsets (where the sort writes the sorted values) and the
-    // binned lists before the sort; the rest once the frame is done.
-    let at = run_to(backend, 0, "splat/bin")?;
-    let cells = whole(backend, s.cells)?;
-    let at = run_to(backend, at, "sort/")?;
-    let reads = StageReads { cells, offsets: whole(backend, s.offsets)?, keys: whole(backend, s.keys)?, values: whole(backend, s.values)? };
+        reads.insert(u.label.clone(), backend.read_buffer(u.buffer, 0, u.words)?);
+        at = u.last + 1;
+    }
     commands[at..].iter().try_for_each(|c| c.encode(backend))?;
     Ok((Some(reads), times))
 }
@@ -169,44 +160,45 @@ fn record_frame(
     ctx.record(backend, frame).map(|_| (None, Vec::new()))
 }
 
-/// The buffers a later stage reuses, as their own stage left them.
+/// Each transient of the frame, by label, as the last command that uses it left it.
 #[cfg(feature = "testing")]
-struct StageReads {
-    /// The cells' counts, then their widest radii (before binning writes the keys there).
-    cells: Vec<u32>,
-    /// The cells' offsets in their tiles (before the sort writes the sorted values there).
-    offsets: Vec<u32>,
-    /// The binned lists, before the sort.
-    keys: Vec<u32>,
-    values: Vec<u32>,
-}
+type StageReads = std::collections::HashMap<String, Vec<u32>>;
 
 #[cfg(feature = "testing")]
 fn intermediates(backend: &mut dyn Backend, ctx: &SplatContext, report: &SplatReport, stages: StageReads) -> Result<Intermediates> {
     let s = dof_core::testing::stage_buffers(ctx);
     let p = s.params.ok_or_else(|| Error::InvalidArgument("the splatting context has recorded no frame".into()))?;
-    // Before binning, the cells' buffer holds the frame's cells' counts, then their widest radii.
+    let mut stages = stages;
+    let mut take =
+        |label: &str| stages.remove(label).ok_or_else(|| Error::InvalidArgument(format!("the frame has no transient `{label}`")));
+    // The cells' counts, then their widest radii; their offsets, then the radii again.
     let n = (p.cells_x * p.cells_y) as usize;
-    let StageReads { cells: mut counts, mut offsets, keys, values } = stages;
+    let (mut counts, mut offsets) = (take("splat/cells")?, take("splat/offsets")?);
     counts.truncate(n);
     offsets.truncate(n);
-    let tiles = report.tiles as u64;
-    let tile_count = backend.read_buffer(s.tile_count, 0, tiles)?;
+    let tiles = report.tiles as usize;
+    let mut tile_count = take("splat/tile-count")?;
+    tile_count.truncate(tiles);
+    let (keys, values) = (take("splat/keys")?, take("splat/values")?);
     // The dense array with each cell region's unused tail left out (what lies there is whatever
     // the buffer held), then the footprint fields, which the frame clears.
-    let all = backend.read_buffer(s.dense, 0, backend.buffer_words(s.dense)?)?;
+    let all = take("splat/dense")?;
     let mut regions: Vec<(u32, u32)> = (0..counts.len() as u32).map(|c| (p.cell_region(c), counts[c as usize])).collect();
     regions.sort_unstable();
     let words = FRAGMENT_WORDS as usize;
     let mut dense: Vec<u32> = regions.iter().flat_map(|&(at, n)| &all[words * at as usize..words * (at + n) as usize]).copied().collect();
     dense.extend_from_slice(&all[words * p.dense_slots() as usize..]);
     let cells = vec![(counts, offsets)];
-    let segments = backend.read_buffer(s.segments, 0, 2 * tiles)?;
+    let segments = backend.read_buffer(s.segments, 0, 2 * tiles as u64)?;
     let pick = |all: &[u32]| -> Vec<u32> {
         segments.as_chunks::<2>().0.iter().flat_map(|s| all[s[0] as usize..(s[0] + s[1]) as usize].iter().copied()).collect()
     };
     let binned = (pick(&keys), pick(&values));
-    let mut whole = |id| backend.read_buffer(id, 0, backend.buffer_words(id)?);
-    let sorted = (pick(&whole(s.keys_sorted)?), pick(&whole(s.values_sorted)?));
+    // The sorted keys are a transient unless they go to the sort's scratch.
+    let keys_sorted = match take("splat/keys-sorted") {
+        Ok(keys) => keys,
+        Err(_) => backend.read_buffer(s.keys_sorted, 0, backend.buffer_words(s.keys_sorted)?)?,
+    };
+    let sorted = (pick(&keys_sorted), pick(&take("splat/values-sorted")?));
     Ok(Intermediates { cells, tile_count, dense, list_lengths: segments.as_chunks::<2>().0.iter().map(|s| s[1]).collect(), binned, sorted })
 }

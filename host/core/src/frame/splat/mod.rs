@@ -4,7 +4,8 @@
 use super::context::{ContextReport, Described, DofContext, Extent};
 use super::in_flight::{InFlight, per_frame};
 use super::io::{Frame, ImageIo, Owned, check_frame, output_buffer, record_input, record_output};
-use super::recording::{Recording, capture};
+use super::recording::Recording;
+use super::transient::{self, Transients};
 use crate::backend::{Backend, BufferId, RunKernel, groups_for};
 use crate::error::{Error, Result};
 mod options;
@@ -88,15 +89,15 @@ impl SplatContextDesc {
     }
 }
 
-/// The context's own buffers.
+/// The context's own buffers: the statistics, segments and aperture mask are the backend's; every
+/// other is a stand-in for a transient (`Transients`), given its buffer as each frame is recorded.
 struct Buffers {
     stats: BufferId,
     sharp: BufferId,
     /// Per cell of the frame (a pixel, or a merged 2x2 or 4x4 block): its fragment count, then its
-    /// widest radius; then the unsorted list keys.
+    /// widest radius.
     cells: BufferId,
-    /// Per cell, its offset in its tile, then its widest radius again, for binning (which writes its
-    /// keys over `cells`); then the sorted list values (in `values_sorted`).
+    /// Per cell, its offset in its tile, then its widest radius again, for binning.
     offsets: BufferId,
     tile_count: BufferId,
     tile_radius: BufferId,
@@ -124,6 +125,8 @@ pub struct SplatContext {
     list_entries: u64,
     max_list: u32,
     owned: Owned,
+    /// The buffers of `b` a frame uses only within itself, placed by their lifetimes.
+    transients: Transients,
     bytes: u64,
     b: Buffers,
     sort: SegmentedSort,
@@ -215,49 +218,43 @@ impl SplatContext {
         // The sorted keys are written and never read by a later stage: where the sort has a key
         // scratch for its long lists, they share it (see `SegmentedSort::scratch_keys`).
         let sorted_keys_in_scratch = sort.scratch_keys();
+        // What a frame uses only within itself is placed by lifetime once the context exists
+        // (`Self::place_transients`); the rest is kept from frame to frame, or read back.
+        let mut t = Transients::default();
         let mut owned = Owned::default();
         let built = (|| {
-            // Fragments are stored once, in the dense array (worst case: every slot blurred and
-            // nothing merged); no level of merging is stored (`dof_shaders::splat::merge`).
             let (_, _, fx, fy) = cells(w, h, layers, merge_steps);
             let cell_words = 2 * fx as u64 * fy as u64;
-            // Nothing reads the cells' counts and radii after the tile counts: the unsorted list
-            // keys that binning writes go there (the buffer grows to the pool if need be).
-            let cells_buf = owned.make(backend, cell_words.max(list_entries), "splat/cell-counts, keys")?;
+            // Fragments are stored once, in the dense array (worst case: every slot blurred and
+            // nothing merged); no level of merging is stored (`dof_shaders::splat::merge`).
             let footprint_words = match desc.options.footprint_side {
                 0 => 0,
                 side => footprint_words(slots as u32, side) as u64,
             };
-            let dense_words = 4 * slots + footprint_words;
-            let dense = owned.make(backend, dense_words, "splat/dense")?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             let mask_words = desc.options.aperture.mask_words();
             let stats = per_frame(&mut owned, backend, desc.frames_in_flight, stats::WORDS as u64, "splat/stats")?;
             let segments = per_frame(&mut owned, backend, desc.frames_in_flight, 2 * tiles, "splat/segments")?;
-            // The cells' offsets are read by binning and by nothing after it: the sorted list values
-            // go there (the buffer grows to the cells if need be).
-            let values_sorted = owned.make(backend, list_entries.max(cell_words), "splat/cell-offsets, values-sorted")?;
-            let offsets = values_sorted;
             let b = Buffers {
                 stats: stats[0],
-                sharp: owned.make(backend, 4 * pixels, "splat/sharp")?,
-                cells: cells_buf,
-                offsets,
-                tile_count: owned.make(backend, tiles, "splat/tile-count")?,
-                tile_radius: owned.make(backend, tiles, "splat/tile-radius")?,
-                copy: owned.make(backend, tiles, "splat/copy")?,
-                thin_counts: owned.make(backend, tiles * LEVELS as u64, "splat/thin-counts")?,
-                bin_cache: owned.make(backend, tiles * THREADS as u64, "splat/bin-cache")?,
+                sharp: t.declare(4 * pixels, "splat/sharp"),
+                cells: t.declare(cell_words, "splat/cells"),
+                offsets: t.declare(cell_words, "splat/offsets"),
+                tile_count: t.declare(tiles, "splat/tile-count"),
+                tile_radius: t.declare(tiles, "splat/tile-radius"),
+                copy: t.declare(tiles, "splat/copy"),
+                thin_counts: t.declare(tiles * LEVELS as u64, "splat/thin-counts"),
+                bin_cache: t.declare(tiles * THREADS as u64, "splat/bin-cache"),
                 segments: segments[0],
-                dense,
+                dense: t.declare(4 * slots + footprint_words, "splat/dense"),
                 mask: owned.make(backend, mask_words.len() as u64, "splat/aperture-mask")?,
-                keys: cells_buf,
-                values: owned.make(backend, list_entries, "splat/values")?,
+                keys: t.declare(list_entries, "splat/keys"),
+                values: t.declare(list_entries, "splat/values"),
                 keys_sorted: match sorted_keys_in_scratch {
                     Some(scratch) => scratch,
-                    None => owned.make(backend, list_entries, "splat/keys-sorted")?,
+                    None => t.declare(list_entries, "splat/keys-sorted"),
                 },
-                values_sorted,
+                values_sorted: t.declare(list_entries, "splat/values-sorted"),
                 io,
             };
             backend.write_buffer(b.mask, 0, &mask_words)?;
@@ -270,21 +267,21 @@ impl SplatContext {
                 return Err(e);
             }
         };
-        let bytes = owned.bytes() + sort.bytes();
         owned.adopt(&sort.buffers());
         let mut kernels: Vec<&'static KernelDesc> = dof_shaders::splat::KERNELS.to_vec();
         kernels.extend(sort.kernels());
         if desc.image_io {
             kernels.extend(dof_shaders::frame_io::KERNELS);
         }
-        let ctx = SplatContext {
+        let mut ctx = SplatContext {
             desc: desc.clone(),
             radius_cap,
             merge_steps,
             list_entries,
             max_list,
             owned,
-            bytes,
+            transients: t,
+            bytes: 0,
             b,
             sort,
             reports,
@@ -293,6 +290,15 @@ impl SplatContext {
             llvmpipe: backend.driver().contains("llvmpipe"),
             serial: backend.limits().serial_invocations,
         };
+        // Placed from a frame of the largest extent, with every optional stage.
+        let max = ctx.desc.extent();
+        if let Err(e) =
+            transient::place(&mut ctx, backend, max, desc.options.footprint_side, |c| (&mut c.transients, &mut c.owned), Self::commands)
+        {
+            ctx.destroy(backend);
+            return Err(e);
+        }
+        ctx.bytes = ctx.owned.bytes() + ctx.sort.bytes();
         super::io::ready(backend, ctx, &kernels, &[], Self::destroy)
     }
 
@@ -399,7 +405,7 @@ impl SplatContext {
         let slot = self.in_flight.next();
         (self.b.stats, self.b.segments) = self.reports[slot];
         self.sort.use_slot(slot);
-        let recording = capture(self, backend, f, Self::commands)?;
+        let recording = transient::capture_with_transients(self, backend, f, |c| &mut c.transients, Self::commands)?;
         self.in_flight.recorded(*f);
         Ok(recording)
     }
@@ -531,39 +537,27 @@ impl SplatContext {
         })
     }
 
-    /// The context's buffers of each stage, for tests that compare backends stage by stage.
+    /// What tests that compare backends stage by stage need besides the recording's transients.
     #[cfg(feature = "testing")]
     pub(crate) fn stage_buffers(&self) -> StageBuffers {
-        let b = &self.b;
         StageBuffers {
             params: self.in_flight.slot(0).ok().map(|(_, f)| self.params(&f, self.merge_steps)),
-            cells: b.cells,
-            offsets: b.offsets,
-            tile_count: b.tile_count,
-            dense: b.dense,
-            segments: b.segments,
-            keys: b.keys,
-            values: b.values,
-            keys_sorted: b.keys_sorted,
-            values_sorted: b.values_sorted,
+            segments: self.b.segments,
+            keys_sorted: self.transients.buffer(self.b.keys_sorted),
         }
     }
 }
 
-/// A splatting context's buffers of each stage (`crate::testing::stage_buffers`).
+/// A splatting context's buffers that the last frame's recording does not list among its
+/// transients (`crate::testing::stage_buffers`).
 #[cfg(feature = "testing")]
 pub struct StageBuffers {
     /// The last recorded frame's kernel parameters (where its cells' regions lie), if one was.
     pub params: Option<SplatParams>,
-    pub cells: BufferId,
-    pub offsets: BufferId,
-    pub tile_count: BufferId,
-    pub dense: BufferId,
+    /// The lists' offsets and lengths.
     pub segments: BufferId,
-    pub keys: BufferId,
-    pub values: BufferId,
+    /// Where the sorted keys go: a transient (`splat/keys-sorted`), or the sort's key scratch.
     pub keys_sorted: BufferId,
-    pub values_sorted: BufferId,
 }
 
 impl DofContext for SplatContext {

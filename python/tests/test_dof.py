@@ -336,8 +336,7 @@ def test_methods_lists_the_registry():
     # Each method's options with their kinds, bounds, units and defaults, as blur checks them.
     gather = next(m for m in dof.methods() if m["name"] == "gather")
     assert gather["options"] == [{"key": "max_coc", "kind": "count", "min": 1, "max": 96, "unit": "px, CoC diameter",
-                                  "default": "what the scene needs, up to the largest",
-                                  "help": "largest CoC diameter the method honours"}]
+                                  "default": "the largest", "help": "largest CoC diameter the method honours"}]
     multilayer = next(m for m in dof.methods() if m["name"] == "multilayer")
     merge = next(o for o in multilayer["options"] if o["key"] == "merge")
     assert merge["kind"] == "choice" and merge["choices"] == ["none", "2x2", "4x4"] and merge["default"] == "none"

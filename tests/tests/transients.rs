@@ -8,9 +8,7 @@
 //! - at least three methods (the two splatting methods, the ring gather) place transients together.
 
 use dof::backend::{Backend, CpuBackend, Resource};
-use dof::frame::{
-    ContextDesc, CountBuffer, Extent, Frame, METHODS, MethodOptions, Reads, Recording, RgbBuffer, SlotBuffer, TransientUse,
-};
+use dof::frame::{ContextDesc, CountBuffer, Extent, Frame, METHODS, MethodOptions, Reads, Recording, RgbBuffer, SlotBuffer, TransientUse};
 use dof::methods::buffers::{SLOT_WORDS, slot_words};
 use dof::stress::{noise_with_sky, test_lens};
 

@@ -61,7 +61,7 @@ pub use in_flight::MAX_FRAMES_IN_FLIGHT;
 pub use io::{CountBuffer, DepthEncoding, Frame, FrameInput, FrameOutput, RgbBuffer, SLOT_WORDS, SlotBuffer, SlotLayout};
 pub use layer_options::{GuardBand, LayerOptions};
 pub use layered::{LayeredContext, LayeredContextDesc, LayeredOptions, LayeredPlanReport, LayeredReport};
-pub use options::{Kind, MethodOption, MethodOptions, OptionSpec, Value};
+pub use options::{Kind, MethodOption, MethodOptions, OptionSpec, Setting, Value};
 pub use raytrace::{RaytraceContext, RaytraceContextDesc, RaytraceOptions, RaytraceReport};
 pub use recording::{Command, Groups, Recording, TransientUse};
 pub use registry::{Column, ContextDesc, METHODS, MethodInfo, Reach, Reads, Scale, Stage, Sweep, Tolerances, VulkanTolerance};

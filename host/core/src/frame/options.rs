@@ -8,7 +8,7 @@
 use super::bokeh::BokehOptions;
 use super::layered::LayeredOptions;
 use super::raytrace::{MAX_SPP, RaytraceOptions};
-use super::ring_gather::{MAX_SAMPLE_RINGS, RingGatherOptions};
+use super::ring_gather::RingGatherOptions;
 use super::scatter_gather::ScatterGatherOptions;
 use super::splat::{Merge, SplatOptions};
 use crate::aperture::parse_aperture;
@@ -124,8 +124,10 @@ pub enum Kind {
     Aperture,
 }
 
-/// One option as a method takes it.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// One option as a method takes it: its bounds, its default and where its value goes in that
+/// method's options (an option several methods take, such as the CoC cap, has each one's own
+/// bounds, default and unit).
+#[derive(Clone, Copy, Debug)]
 pub struct OptionSpec {
     pub option: MethodOption,
     pub kind: Kind,
@@ -136,6 +138,8 @@ pub struct OptionSpec {
     pub default: &'static str,
     /// One line for help texts.
     pub help: &'static str,
+    /// Writes a checked value into the method's own part of [`MethodOptions`].
+    pub apply: fn(&mut MethodOptions, &Setting) -> Result<()>,
 }
 
 /// A value given for an option, before its kind and bounds are checked.
@@ -182,20 +186,54 @@ impl std::fmt::Display for Value {
     }
 }
 
-/// A checked value: what [`MethodOptions`] is made from.
+/// A value checked against its option's kind and bounds: what [`OptionSpec::apply`] writes.
 #[derive(Clone, Debug, PartialEq)]
-enum Checked {
+pub enum Setting {
     Count(u32),
     Number(f32),
     Flag(bool),
     Text(String),
 }
 
+impl Setting {
+    fn wrong(&self, kind: &str) -> Error {
+        Error::InvalidArgument(format!("{kind} wanted, got {self:?}"))
+    }
+
+    pub fn count(&self) -> Result<u32> {
+        match self {
+            Setting::Count(v) => Ok(*v),
+            _ => Err(self.wrong("a whole number")),
+        }
+    }
+
+    pub fn number(&self) -> Result<f32> {
+        match self {
+            Setting::Number(v) => Ok(*v),
+            _ => Err(self.wrong("a number")),
+        }
+    }
+
+    pub fn flag(&self) -> Result<bool> {
+        match self {
+            Setting::Flag(v) => Ok(*v),
+            _ => Err(self.wrong("true or false")),
+        }
+    }
+
+    pub fn text(&self) -> Result<&str> {
+        match self {
+            Setting::Text(v) => Ok(v),
+            _ => Err(self.wrong("a name")),
+        }
+    }
+}
+
 impl OptionSpec {
     /// `value` if it is of this option's kind and within its bounds; the error names the method,
     /// the option, its unit and its bounds.
     /// `key` is the option as the caller named it (`--max-coc`, `max_coc`).
-    fn check(&self, method: &str, key: &str, value: &Value) -> Result<Checked> {
+    fn check(&self, method: &str, key: &str, value: &Value) -> Result<Setting> {
         let bad = |what: String| Err(Error::InvalidArgument(format!("option {key} of {method} {what}, got {value}")));
         let unit = if self.unit.is_empty() { String::new() } else { format!(" ({})", self.unit) };
         // A number bounded above only by the largest float is said as "at least".
@@ -203,7 +241,7 @@ impl OptionSpec {
             |min: f32, max: f32| if max == f32::MAX { format!("finite and at least {min}") } else { format!("between {min} and {max}") };
         match (self.kind, value) {
             (Kind::Count { min, max }, Value::Int(v)) => match u32::try_from(*v) {
-                Ok(v) if (min..=max).contains(&v) => Ok(Checked::Count(v)),
+                Ok(v) if (min..=max).contains(&v) => Ok(Setting::Count(v)),
                 _ => bad(format!("must lie between {min} and {max}{unit}")),
             },
             (Kind::Count { min, max }, Value::Text(s)) => match s.trim().parse::<i64>() {
@@ -215,7 +253,7 @@ impl OptionSpec {
             (Kind::Number { min, max }, Value::Number(v)) => {
                 let f = *v as f32;
                 if f.is_finite() && (min..=max).contains(&f) {
-                    Ok(Checked::Number(f))
+                    Ok(Setting::Number(f))
                 } else {
                     bad(format!("must be {}{unit}", range(min, max)))
                 }
@@ -225,52 +263,17 @@ impl OptionSpec {
                 Err(_) => bad(format!("is a number {}{unit}", range(min, max))),
             },
             (Kind::Number { min, max }, _) => bad(format!("is a number {}{unit}", range(min, max))),
-            (Kind::Flag, Value::Flag(v)) => Ok(Checked::Flag(*v)),
-            (Kind::Flag, Value::Text(s)) if s == "true" || s == "false" => Ok(Checked::Flag(s == "true")),
+            (Kind::Flag, Value::Flag(v)) => Ok(Setting::Flag(*v)),
+            (Kind::Flag, Value::Text(s)) if s == "true" || s == "false" => Ok(Setting::Flag(s == "true")),
             (Kind::Flag, _) => bad("is true or false".into()),
-            (Kind::Choice(names), Value::Text(s)) if names.contains(&s.as_str()) => Ok(Checked::Text(s.clone())),
+            (Kind::Choice(names), Value::Text(s)) if names.contains(&s.as_str()) => Ok(Setting::Text(s.clone())),
             (Kind::Choice(names), _) => bad(format!("is one of {}", names.join(", "))),
             (Kind::Aperture, Value::Text(s)) => {
                 parse_aperture(s)?;
-                Ok(Checked::Text(s.clone()))
+                Ok(Setting::Text(s.clone()))
             }
             (Kind::Aperture, _) => bad("is an aperture: circle, blades:N[:ROT[:CURV]], star:N[:ROT[:INNER]] or a PNG".into()),
         }
-    }
-}
-
-impl MethodOptions {
-    /// Sets `option` in every method's options that has it (each context reads its own). The
-    /// CoC cap is a diameter in pixels here and each method's own unit in its options: the
-    /// splatting methods' radius cap is half of it, the gathers' whole-pixel radius half of it
-    /// rounded up, layered DoF's largest layer CoC is the diameter.
-    fn set(&mut self, option: MethodOption, value: Checked) -> Result<()> {
-        match (option, value) {
-            (MethodOption::Tile, Checked::Count(tile)) => self.splat.tile = tile,
-            (MethodOption::Merge, Checked::Text(s)) => self.splat.merge = s.parse::<Merge>().map_err(Error::InvalidArgument)?,
-            (MethodOption::MaxCoc, Checked::Count(d)) => {
-                self.splat.max_radius = Some(d as f32 / 2.0);
-                self.gather_max_radius = Some(d.div_ceil(2));
-                self.ring_gather.max_radius = d.div_ceil(2);
-                self.layered.max_coc = d as f32;
-                self.scatter_gather.max_radius = d.div_ceil(2);
-            }
-            (MethodOption::Aperture, Checked::Text(s)) => {
-                let shape = parse_aperture(&s)?;
-                self.splat.aperture = shape.clone();
-                self.bokeh.aperture = shape;
-            }
-            (MethodOption::Rings, Checked::Count(n)) => self.ring_gather.rings = n,
-            (MethodOption::LumThreshold, Checked::Number(l)) => self.bokeh.lum_threshold = l,
-            (MethodOption::Sprites, Checked::Count(n)) => self.bokeh.capacity = n,
-            (MethodOption::Samples, Checked::Count(n)) => self.raytrace.spp = n,
-            (MethodOption::NoCascade, Checked::Flag(f)) => self.layered.cascaded = !f,
-            (MethodOption::LayersPerDoubling, Checked::Count(n)) => self.layered.layers_per_doubling = n,
-            (option, value) => {
-                return Err(Error::InvalidArgument(format!("{}: a value of the wrong kind ({value:?})", option.key())));
-            }
-        }
-        Ok(())
     }
 }
 
@@ -296,7 +299,7 @@ pub(super) fn method_options<K: AsRef<str>>(
                 method.name
             )));
         };
-        options.set(option, spec.check(method.name, key, &value)?)?;
+        (spec.apply)(&mut options, &spec.check(method.name, key, &value)?)?;
     }
     Ok(options)
 }
@@ -312,7 +315,8 @@ pub fn parse_pairs(text: &str) -> Vec<(String, Value)> {
         .collect()
 }
 
-/// The specs the entries share. The CoC cap's bounds differ by method ([`max_coc`]).
+/// The options' specs. Those of one method are constants; those several methods take are made
+/// per method, with its bounds, default and the part of [`MethodOptions`] it reads.
 pub mod spec {
     use super::*;
 
@@ -322,6 +326,10 @@ pub mod spec {
         unit: "px, tile edge: 16, 24 or 32",
         default: "16",
         help: "tile edge of the splatting grid",
+        apply: |o, v| {
+            o.splat.tile = v.count()?;
+            Ok(())
+        },
     };
     pub const MERGE: OptionSpec = OptionSpec {
         option: MethodOption::Merge,
@@ -329,20 +337,10 @@ pub mod spec {
         unit: "",
         default: "none",
         help: "fragment merging before tiling",
-    };
-    pub const APERTURE: OptionSpec = OptionSpec {
-        option: MethodOption::Aperture,
-        kind: Kind::Aperture,
-        unit: "",
-        default: "circle",
-        help: "aperture shape: circle, blades:N[:ROT[:CURV]], star:N[:ROT[:INNER]] or a PNG mask",
-    };
-    pub const RINGS: OptionSpec = OptionSpec {
-        option: MethodOption::Rings,
-        kind: Kind::Count { min: 1, max: MAX_SAMPLE_RINGS },
-        unit: "rings",
-        default: "5",
-        help: "sample rings at half resolution",
+        apply: |o, v| {
+            o.splat.merge = v.text()?.parse::<Merge>().map_err(Error::InvalidArgument)?;
+            Ok(())
+        },
     };
     pub const LUM_THRESHOLD: OptionSpec = OptionSpec {
         option: MethodOption::LumThreshold,
@@ -350,6 +348,10 @@ pub mod spec {
         unit: "luminance",
         default: "1",
         help: "luminance above its neighbours that makes a pixel a sprite",
+        apply: |o, v| {
+            o.bokeh.lum_threshold = v.number()?;
+            Ok(())
+        },
     };
     pub const SPRITES: OptionSpec = OptionSpec {
         option: MethodOption::Sprites,
@@ -357,6 +359,10 @@ pub mod spec {
         unit: "sprites",
         default: "4096",
         help: "sprite capacity a frame",
+        apply: |o, v| {
+            o.bokeh.capacity = v.count()?;
+            Ok(())
+        },
     };
     pub const SAMPLES: OptionSpec = OptionSpec {
         option: MethodOption::Samples,
@@ -364,6 +370,10 @@ pub mod spec {
         unit: "rays per pixel",
         default: "16",
         help: "rays traced a pixel",
+        apply: |o, v| {
+            o.raytrace.spp = v.count()?;
+            Ok(())
+        },
     };
     pub const NO_CASCADE: OptionSpec = OptionSpec {
         option: MethodOption::NoCascade,
@@ -371,6 +381,10 @@ pub mod spec {
         unit: "",
         default: "false",
         help: "one blur a layer instead of the cascade",
+        apply: |o, v| {
+            o.layered.cascaded = !v.flag()?;
+            Ok(())
+        },
     };
     pub const LAYERS_PER_DOUBLING: OptionSpec = OptionSpec {
         option: MethodOption::LayersPerDoubling,
@@ -378,16 +392,44 @@ pub mod spec {
         unit: "layers per doubling of the CoC",
         default: "2",
         help: "depth layers per doubling of the CoC",
+        apply: |o, v| {
+            o.layered.layers_per_doubling = v.count()?;
+            Ok(())
+        },
     };
 
-    /// The CoC cap of a method honouring diameters from `min` to `max` px.
-    pub const fn max_coc(min: u32, max: u32) -> OptionSpec {
+    /// The CoC cap of a method honouring diameters from `min` to `max` px, `default` when not
+    /// given (a number, or the method's choice in words); `apply` writes it in the method's unit.
+    pub const fn max_coc(min: u32, max: u32, default: &'static str, apply: fn(&mut MethodOptions, &Setting) -> Result<()>) -> OptionSpec {
         OptionSpec {
             option: MethodOption::MaxCoc,
             kind: Kind::Count { min, max },
             unit: "px, CoC diameter",
-            default: "what the scene needs, up to the largest",
+            default,
             help: "largest CoC diameter the method honours",
+            apply,
         }
+    }
+
+    /// The aperture's shape, for a method that shapes its blur by it.
+    pub const fn aperture(apply: fn(&mut MethodOptions, &Setting) -> Result<()>) -> OptionSpec {
+        OptionSpec {
+            option: MethodOption::Aperture,
+            kind: Kind::Aperture,
+            unit: "",
+            default: "circle",
+            help: "aperture shape: circle, blades:N[:ROT[:CURV]], star:N[:ROT[:INNER]] or a PNG mask",
+            apply,
+        }
+    }
+
+    /// Sample rings of a gather, 1 to `max`, `default` when not given.
+    pub const fn rings(
+        max: u32,
+        default: &'static str,
+        help: &'static str,
+        apply: fn(&mut MethodOptions, &Setting) -> Result<()>,
+    ) -> OptionSpec {
+        OptionSpec { option: MethodOption::Rings, kind: Kind::Count { min: 1, max }, unit: "rings", default, help, apply }
     }
 }

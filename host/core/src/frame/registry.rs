@@ -15,6 +15,7 @@ use super::raytrace::{RaytraceContext, RaytraceContextDesc};
 use super::ring_gather::{DEFAULT_RINGS, MAX_SAMPLE_RINGS, RingGatherContext, RingGatherContextDesc};
 use super::scatter_gather::{ScatterGatherContext, ScatterGatherContextDesc};
 use super::splat::{SplatContext, SplatContextDesc};
+use crate::aperture::parse_aperture;
 use crate::backend::Backend;
 use crate::error::{Error, Result};
 
@@ -257,7 +258,19 @@ const SPLAT_STAGES: &[Stage] = &[
 
 /// The splatting methods' options: the CoC cap reaches 6 rings of the largest tiles (radius 192
 /// px); a cap beyond the chosen tile's reach is refused by the context.
-const SPLAT_OPTIONS: &[OptionSpec] = &[spec::TILE, spec::MERGE, spec::max_coc(1, 384), spec::APERTURE];
+const SPLAT_OPTIONS: &[OptionSpec] = &[
+    spec::TILE,
+    spec::MERGE,
+    // The radius cap, in px.
+    spec::max_coc(1, 384, "what the scene needs, up to the largest", |o, v| {
+        o.splat.max_radius = Some(v.count()? as f32 / 2.0);
+        Ok(())
+    }),
+    spec::aperture(|o, v| {
+        o.splat.aperture = parse_aperture(v.text()?)?;
+        Ok(())
+    }),
+];
 
 /// The methods of the frame API, in the order reports list them.
 pub static METHODS: &[MethodInfo] = &[
@@ -304,7 +317,11 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "Riguer, Tatarchuk, Isidoro 2003",
         reads: Reads::FrontLayer,
         knob: None,
-        options: &[spec::max_coc(1, 2 * super::gather::MAX_RADIUS)],
+        // A whole-pixel radius, rounded up.
+        options: &[spec::max_coc(1, 2 * super::gather::MAX_RADIUS, "the largest", |o, v| {
+            o.gather_max_radius = Some(v.count()?.div_ceil(2));
+            Ok(())
+        })],
         stages: &[stage("gather", Column::Apply)],
         // Its knob is the largest CoC honoured: radius 1, 4 and its largest, 48 px.
         sweep: Sweep { points: &["max_coc=2", "max_coc=8", "max_coc=96"], full: &[0, 1, 2], quick: &[0, 1], timed: Some(2) },
@@ -327,7 +344,16 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "after AMD FidelityFX DoF, Unreal Engine's Diaphragm DoF and Jimenez 2014",
         reads: Reads::FrontLayer,
         knob: Some(Knob { name: "rings", min: 1, max: MAX_SAMPLE_RINGS, default: DEFAULT_RINGS }),
-        options: &[spec::max_coc(1, 2 * super::ring_gather::MAX_RADIUS), spec::RINGS],
+        options: &[
+            spec::max_coc(1, 2 * super::ring_gather::MAX_RADIUS, "128", |o, v| {
+                o.ring_gather.max_radius = v.count()?.div_ceil(2);
+                Ok(())
+            }),
+            spec::rings(super::ring_gather::MAX_SAMPLE_RINGS, "5", "sample rings at half resolution", |o, v| {
+                o.ring_gather.rings = v.count()?;
+                Ok(())
+            }),
+        ],
         stages: &[stage("ring-gather", Column::Apply)],
         // The ring count, timed at its default, what engines ship.
         sweep: Sweep {
@@ -354,7 +380,14 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "de Rousiers 2012; Pettineo 2012",
         reads: Reads::FrontLayer,
         knob: None,
-        options: &[spec::APERTURE, spec::LUM_THRESHOLD, spec::SPRITES],
+        options: &[
+            spec::aperture(|o, v| {
+                o.bokeh.aperture = parse_aperture(v.text()?)?;
+                Ok(())
+            }),
+            spec::LUM_THRESHOLD,
+            spec::SPRITES,
+        ],
         // Detection prepares the input, the sprites' compaction is a list's scan, the gather under
         // them and their draw make the image.
         stages: &[
@@ -406,7 +439,15 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "Schedl, Wimmer 2012",
         reads: Reads::AllLayers,
         knob: None,
-        options: &[spec::max_coc(2, 1024), spec::NO_CASCADE, spec::LAYERS_PER_DOUBLING],
+        // The largest layer's CoC is the diameter itself.
+        options: &[
+            spec::max_coc(2, 1024, "256", |o, v| {
+                o.layered.max_coc = v.count()? as f32;
+                Ok(())
+            }),
+            spec::NO_CASCADE,
+            spec::LAYERS_PER_DOUBLING,
+        ],
         stages: &[stage("layered/matte", Column::Merge), stage("layered/", Column::Apply)],
         // Cascaded or one blur per layer, at two layers per doubling of the CoC. One layer per
         // doubling costs about as much on these scenes and loses up to 1.3 dB (`columns`); left
@@ -434,7 +475,16 @@ pub static METHODS: &[MethodInfo] = &[
         paper: "Jimenez 2014",
         reads: Reads::FrontLayer,
         knob: None,
-        options: &[spec::max_coc(1, 2 * super::scatter_gather::MAX_RADIUS)],
+        options: &[
+            spec::max_coc(1, 2 * super::scatter_gather::MAX_RADIUS, "64", |o, v| {
+                o.scatter_gather.max_radius = v.count()?.div_ceil(2);
+                Ok(())
+            }),
+            spec::rings(super::scatter_gather::MAX_RINGS, "3", "sample rings around the pixel", |o, v| {
+                o.scatter_gather.rings = v.count()?;
+                Ok(())
+            }),
+        ],
         stages: &[stage("scatter-gather", Column::Apply)],
         // Its default cap (radius 32 px) and the ring gather's (64 px), where its 49 samples thin.
         sweep: Sweep { points: &["max_coc=64", "max_coc=128"], full: &[0, 1], quick: &[0], timed: Some(0) },

@@ -72,7 +72,9 @@ impl MethodSettings {
     fn options(&self) -> Result<MethodOptions> {
         let m = self.method.0;
         let aperture = (!self.aperture.is_empty()).then(|| ("aperture", Value::from(self.aperture.as_str())));
-        let given = [("tile", Value::from(self.tile)), ("merge", Value::from(self.merge.name())), ("rings", Value::from(self.rings))];
+        // The rings are the ring gather's knob, set on its context after creation; the other gathers
+        // keep their own ring counts.
+        let given = [("tile", Value::from(self.tile)), ("merge", Value::from(self.merge.name()))];
         let taken = given.into_iter().chain(aperture).filter(|(key, _)| MethodOption::from_key(key).is_some_and(|o| m.takes(o)));
         Ok(m.method_options(taken)?)
     }

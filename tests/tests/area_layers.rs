@@ -344,7 +344,7 @@ fn device_peel_equals_host_on(b: &mut dyn Backend) {
     let c = b.counters().since(&before);
     assert_eq!((c.allocations, c.uploads, c.readbacks), (0, 0, 0), "per frame: {c:?}");
     assert_eq!(times.iter().filter(|t| t.label == "peel/resolve").count(), 1, "the resolve ran on the device");
-    let s = *ctx.slots();
+    let s = ctx.slots().clone();
     let pixels = s.width as u64 * s.height as u64;
     assert_eq!(s.footprint_side, host.image.layers.footprint_side);
     let fragments = b.read_buffer(s.fragments, 0, (SLOT_WORDS as u64 + 1) * pixels * s.layers as u64).unwrap();

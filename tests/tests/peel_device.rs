@@ -119,7 +119,7 @@ fn masked_railing_gltf(w: u32, h: u32) -> (MeshScene, Camera, ThinLens) {
 fn device_peel(b: &mut dyn Backend, ctx: &mut MeshPeelContext, camera: &Camera, lens: &ThinLens) -> (Vec<u32>, Vec<u32>, Vec<bool>) {
     ctx.record(b, camera, lens).unwrap();
     b.submit().unwrap();
-    let s = *ctx.slots();
+    let s = ctx.slots().clone();
     let pixels = s.width as u64 * s.height as u64;
     let fragments = b.read_buffer(s.fragments, 0, dof::methods::buffers::SLOT_WORDS as u64 * pixels * s.layers as u64).unwrap();
     let counts = b.read_buffer(s.counts, 0, pixels).unwrap();

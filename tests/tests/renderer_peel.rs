@@ -13,11 +13,14 @@
 //!   these depths are below 1e-5 relative);
 //! - counts and the disocclusion buffer are equal.
 //!
+//! Frames in flight: two frames of different scenes through one peel each keep their own report.
+//!
 //! And the D24 case does not peel a surface again: a half-covering quad (whose reach is its own
 //! depth, no umbra) gives exactly two slots, itself and the background.
 
 use dof::backend::vulkan::ash::vk;
 use dof::backend::{Backend, BufferId, CpuBackend, ImageFormat, ImageRef, RawOptions, VulkanBackend};
+use dof::frame::peel::{PeelFrameReport, PeelReport};
 use dof::frame::{DepthEncoding, RendererPeel, RendererPeelDesc};
 use dof::raster::{MeshPeelContext, MeshPeelDesc};
 use dof::scene::{Camera, GuardBand, LayerOptions, MeshScene, Vec3};
@@ -242,13 +245,40 @@ fn renderer_peel(
     format: ImageFormat,
     bound: BufferId,
 ) -> (Vec<f32>, Vec<u32>, Vec<u32>) {
+    let mut peel = make_peel(a, s, options, encoding, format, bound, 1);
+    peel_frame(a, &mut peel, s, encoding, format, bound);
+    let got = read_slots(a.backend(), peel.slots());
+    let report = peel.report(a.backend()).unwrap();
+    assert_eq!(report.recorded, options.max_layers);
+    assert!(report.with_surface >= 1 && report.drawn >= report.with_surface, "{report:?}");
+    peel.destroy(a.backend());
+    got
+}
+
+fn make_peel(
+    a: &mut dyn Attachments,
+    s: &Scene,
+    options: &LayerOptions,
+    encoding: DepthEncoding,
+    format: ImageFormat,
+    bound: BufferId,
+    frames_in_flight: u32,
+) -> RendererPeel {
     let frame = s.camera.frame().unwrap();
-    let (w, h) = (frame.width, frame.height);
-    let mut desc = RendererPeelDesc::new(options, w, h, encoding, frame.tan_half_fov, 6);
-    desc.depth_format = format;
-    let mut peel = RendererPeel::new(a.backend(), &desc, bound, None).unwrap();
+    let desc = RendererPeelDesc {
+        depth_format: format,
+        frames_in_flight,
+        ..RendererPeelDesc::new(options, frame.width, frame.height, encoding, frame.tan_half_fov, 6)
+    };
+    RendererPeel::new(a.backend(), &desc, bound, None).unwrap()
+}
+
+/// One frame of `s` through `peel`: begin, every pass drawn by the test's renderer against the
+/// bound and appended, finish.
+fn peel_frame(a: &mut dyn Attachments, peel: &mut RendererPeel, s: &Scene, encoding: DepthEncoding, format: ImageFormat, bound: BufferId) {
+    let [w, h] = peel.size();
     a.record(&mut |b| peel.begin(b, &s.lens).unwrap());
-    for k in 0..options.max_layers {
+    for k in 0..peel.layers() {
         let bounds = a.backend().read_buffer(bound, 0, w as u64 * h as u64).unwrap();
         if k == 0 {
             assert!(bounds.iter().all(|&v| f32::from_bits(v) == f32::NEG_INFINITY), "pass 0 keeps every fragment");
@@ -258,12 +288,39 @@ fn renderer_peel(
         a.record(&mut |b| peel.append(b, k, ci, di).unwrap());
     }
     a.record(&mut |b| peel.finish(b).unwrap());
-    let got = read_slots(a.backend(), peel.slots());
-    let report = peel.report(a.backend()).unwrap();
-    assert_eq!(report.recorded, options.max_layers);
-    assert!(report.with_surface >= 1 && report.drawn >= report.with_surface, "{report:?}");
+}
+
+/// Frames in flight: two frames of different scenes through a peel made for two each report
+/// what the same frame reports alone; a third report back, and a report before any frame, are
+/// refused; a one-frame peel keeps only the last frame's.
+fn reports_of_frames_in_flight(a: &mut dyn Attachments, bound: BufferId) {
+    let scenes = [layered_scene(), pane_scene()];
+    let options = options(4, false);
+    let (encoding, format) = (ENCODINGS[1], ImageFormat::D32Float);
+    let alone: Vec<PeelReport> = scenes
+        .iter()
+        .map(|s| {
+            let mut peel = make_peel(a, s, &options, encoding, format, bound, 1);
+            peel_frame(a, &mut peel, s, encoding, format, bound);
+            let report = peel.report(a.backend()).unwrap();
+            assert!(peel.report_of(a.backend(), 1).is_err(), "a one-frame peel keeps only the last frame's report");
+            peel.destroy(a.backend());
+            report
+        })
+        .collect();
+    assert_ne!(alone[0], alone[1], "the two frames report alike, so the check below could not fail");
+    let mut peel = make_peel(a, &scenes[0], &options, encoding, format, bound, 2);
+    assert_eq!(peel.frames_in_flight(), 2);
+    assert!(peel.report(a.backend()).is_err(), "a report before any frame");
+    for s in &scenes {
+        peel_frame(a, &mut peel, s, encoding, format, bound);
+    }
+    assert_eq!(peel.report_of(a.backend(), 1).unwrap(), alone[0], "the first frame's report");
+    assert_eq!(peel.report_of(a.backend(), 0).unwrap(), alone[1], "the second frame's report");
+    let typed = peel.report_frame(a.backend(), 1).unwrap();
+    assert_eq!(typed.details::<PeelFrameReport>().map(|r| &r.peel), Some(&alone[0]), "the typed report");
+    assert!(peel.report_of(a.backend(), 2).is_err(), "a report beyond the frames in flight");
     peel.destroy(a.backend());
-    got
 }
 
 /// Asserts two peels hold the same slots within the precision of the attachments.
@@ -322,17 +379,21 @@ fn equal_to_mesh_peel(a: &mut dyn Attachments, bound: BufferId) {
 }
 
 #[test]
-fn renderer_peel_equals_the_mesh_peel_on_the_cpu() {
+/// The mesh peel's slots, and each frame in flight's report.
+fn renderer_peel_on_the_cpu() {
     let mut cpu = CpuBackend::new();
     let extent = [72, 40];
     let bound = cpu.create_buffer(72 * 40, "test/bound").unwrap();
     let images =
         [ImageFormat::Rgba16Float, ImageFormat::D32Float, ImageFormat::D24UnormS8Uint].map(|f| cpu.create_image(f, extent).unwrap());
-    equal_to_mesh_peel(&mut CpuAttachments { cpu, images }, bound);
+    let mut a = CpuAttachments { cpu, images };
+    equal_to_mesh_peel(&mut a, bound);
+    reports_of_frames_in_flight(&mut a, bound);
 }
 
 #[test]
-fn renderer_peel_equals_the_mesh_peel_on_vulkan() {
+/// The same on the test's own Vulkan device, with validation.
+fn renderer_peel_on_vulkan() {
     let Some(mut r) = Renderer::new() else { return };
     let extent = [72, 40];
     let images = [ImageFormat::Rgba16Float, ImageFormat::D32Float, ImageFormat::D24UnormS8Uint].map(|f| r.image(f, extent));
@@ -342,6 +403,7 @@ fn renderer_peel_equals_the_mesh_peel_on_vulkan() {
     let bound = vk.create_buffer(72 * 40, "test/bound").unwrap();
     let mut a = VulkanAttachments { r, vk: Some(vk), images, extent, staging };
     equal_to_mesh_peel(&mut a, bound);
+    reports_of_frames_in_flight(&mut a, bound);
     let mut vk = a.vk.take().unwrap();
     dof_tests::assert_clean(&mut vk);
     vk.destroy_buffer(bound);

@@ -570,7 +570,10 @@ fn ring_gather_renders_and_cost_ratios_are_measured() {
         &["render", "--scene", "simple", "--method", "ring-gather", "--rings", "0", "--width", "64", "--height", "36"],
         "between 1 and 8 (rings)",
     );
-    assert_fails_with(&["render", "--scene", "simple", "--method", "gather", "--rings", "3"], "option --rings applies to ring-gather, scatter-gather only");
+    assert_fails_with(
+        &["render", "--scene", "simple", "--method", "gather", "--rings", "3"],
+        "option --rings applies to ring-gather, scatter-gather only",
+    );
 
     let out = temp("ratios");
     let dir = out.to_str().unwrap();

@@ -130,11 +130,16 @@ impl MeshPeelContext {
             // Resolved slots carry each fragment's footprint in its pixel's sub-sample grid.
             let footprint_side = if side > 1 && desc.footprints { side } else { 0 };
             let fine = PeelSlots::new(backend, &mut owned, fw, fh, desc.max_layers, passes, 0)?;
-            let slots =
-                if side > 1 { PeelSlots::new(backend, &mut owned, w, h, desc.max_layers, desc.max_layers, footprint_side)? } else { fine };
+            // Without sub-samples the slots are the fine peel's own (the same buffers).
+            let slots = if side > 1 {
+                PeelSlots::new(backend, &mut owned, w, h, desc.max_layers, desc.max_layers, footprint_side)?
+            } else {
+                fine.clone()
+            };
             let bounds = owned.make(backend, 4 * scene.triangles.len() as u64, "peel/bounds")?;
             let vis = owned.make(backend, VIS_WORDS as u64 * pixels, "peel/vis")?;
-            Ok((slots, fine, Pass { args: fine.args, reach: fine.reach, bounds, vis }))
+            let pass = Pass { args: fine.args, reach: fine.reach, bounds, vis };
+            Ok((slots, fine, pass))
         })();
         let ((slots, fine, pass), owned) = owned.or_free(backend, made)?;
         let mesh = match DeviceMesh::upload(backend, scene) {

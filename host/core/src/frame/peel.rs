@@ -32,7 +32,7 @@ pub const KERNELS: [&dof_shaders::KernelDesc; 8] =
 
 /// The peel's buffers on the device for a `width` x `height` image with `layers` slots a pixel
 /// (owned by the context that made them).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct PeelSlots {
     pub width: u32,
     pub height: u32,
@@ -57,8 +57,10 @@ pub struct PeelSlots {
     pub mask: BufferId,
     found: BufferId,
     /// `2 · passes` words: whether pass `k` was drawn, then whether it kept a surface where the
-    /// pixel can take more (`dof_shaders::peel::takes_more`).
-    passes_run: BufferId,
+    /// pixel can take more (`dof_shaders::peel::takes_more`). One a frame in flight
+    /// ([`Self::with_frames_in_flight`]); frames write `passes_run[slot]`.
+    passes_run: Vec<BufferId>,
+    slot: usize,
     edge: BufferId,
     widest: BufferId,
     span: BufferId,
@@ -151,12 +153,29 @@ impl PeelSlots {
             layer: owned.make(backend, LAYER_WORDS as u64 * pixels, "peel/layer")?,
             mask: owned.make(backend, pixels, "peel/mask")?,
             found: owned.make(backend, 1, "peel/found")?,
-            passes_run: owned.make(backend, 2 * passes as u64, "peel/passes")?,
+            passes_run: vec![owned.make(backend, 2 * passes as u64, "peel/passes")?],
+            slot: 0,
             edge: owned.make(backend, pixels, "peel/edge")?,
             widest: owned.make(backend, 1, "peel/widest")?,
             span: owned.make(backend, pixels, "peel/span")?,
             band: owned.make(backend, 3, "peel/band")?,
         })
+    }
+
+    /// The slots with `frames` copies of what a frame's report reads of its passes (the slots
+    /// themselves, and the guard band, stay single: frames in flight run one after another on one
+    /// queue, and the guard band is the mesh peel's, which keeps one frame).
+    pub fn with_frames_in_flight(mut self, backend: &mut dyn Backend, owned: &mut Owned, frames: u32) -> Result<Self> {
+        let label = |i: u32| format!("peel/passes/frame-{i}");
+        for i in 1..frames {
+            self.passes_run.push(owned.make(backend, 2 * self.passes as u64, &label(i))?);
+        }
+        Ok(self)
+    }
+
+    /// Makes the frames recorded next write report slot `slot` (below the frames in flight).
+    pub fn use_slot(&mut self, slot: usize) {
+        self.slot = slot.min(self.passes_run.len() - 1);
     }
 
     fn pixels(&self) -> u64 {
@@ -198,7 +217,8 @@ impl PeelSlots {
     /// `draw_vertices` vertices.
     pub fn plan(&self, backend: &mut dyn Backend, pass: u32, draw_vertices: u32) -> Result<()> {
         let params = self.params(pass, draw_vertices, ThinLens::default(), 0.0, false);
-        backend.run(peel_plan::Bindings { found: self.found, args: self.args, passes: self.passes_run }, [1, 1, 1], &params, "peel/plan")
+        let passes = self.passes_run[self.slot];
+        backend.run(peel_plan::Bindings { found: self.found, args: self.args, passes }, [1, 1, 1], &params, "peel/plan")
     }
 
     /// Appends pass `pass`'s shaded layer ([`Self::layer`]) into the slots, or behind a full
@@ -260,7 +280,13 @@ impl PeelSlots {
 
     /// What the last frame's passes did (reads the device: once the frame completed).
     pub fn report(&self, backend: &mut dyn Backend) -> Result<PeelReport> {
-        let words = backend.read_buffer(self.passes_run, 0, 2 * self.passes as u64)?;
+        self.report_of(backend, self.slot)
+    }
+
+    /// What the frame that wrote report slot `slot` did (once it completed).
+    pub fn report_of(&self, backend: &mut dyn Backend, slot: usize) -> Result<PeelReport> {
+        let passes = *self.passes_run.get(slot).ok_or_else(|| Error::InvalidArgument(format!("no peel report slot {slot}")))?;
+        let words = backend.read_buffer(passes, 0, 2 * self.passes as u64)?;
         let band = backend.read_buffer(self.band, 0, 3)?;
         let (drawn, found) = words.split_at(self.passes as usize);
         let count = |w: &[u32]| w.iter().filter(|&&v| v != 0).count() as u32;

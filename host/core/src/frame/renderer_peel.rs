@@ -27,6 +27,8 @@
 //!   draws directly instead gets every fragment discarded by the bound.
 
 use super::LayerOptions;
+use super::context::ContextReport;
+use super::in_flight::InFlight;
 use super::io::{CountBuffer, DepthEncoding, Frame, FrameInput, FrameOutput, Owned, SlotBuffer, context_pixels, ready};
 use super::peel::{KERNELS, PeelReport, PeelSlots};
 use crate::backend::{Backend, BufferId, ImageFormat, ImageRef, RunKernel, format_names};
@@ -67,6 +69,9 @@ pub struct RendererPeelDesc {
     pub edge_depth_ratio: f32,
     /// Passes after the first keep nothing outside the disocclusion buffer.
     pub disocclusion: bool,
+    /// Frames in flight (default 1, at most [`super::MAX_FRAMES_IN_FLIGHT`]): copies kept of what
+    /// a frame's report reads, so that each of the last N frames' reports stays readable.
+    pub frames_in_flight: u32,
 }
 
 impl RendererPeelDesc {
@@ -84,6 +89,7 @@ impl RendererPeelDesc {
             draw_count,
             edge_depth_ratio: options.edge_depth_ratio,
             disocclusion: options.disocclusion,
+            frames_in_flight: 1,
         }
     }
 }
@@ -101,6 +107,8 @@ pub struct RendererPeel {
     /// The frame's lens and the next pass to append (`None`: no frame begun).
     lens: ThinLens,
     next: Option<u32>,
+    /// The report slot each finished frame wrote.
+    in_flight: InFlight<()>,
     owned: Owned,
 }
 
@@ -143,15 +151,18 @@ impl RendererPeel {
                 }
             }
         }
+        let in_flight = InFlight::new(d.frames_in_flight)?;
         let mut owned = Owned::default();
         let made = (|| {
             let slots = PeelSlots::new(backend, &mut owned, d.width, d.height, d.max_layers, d.max_layers, 0)?;
+            let slots = slots.with_frames_in_flight(backend, &mut owned, d.frames_in_flight)?;
             let color = owned.make(backend, d.color_format.words_per_pixel() * pixels, "renderer-peel/color")?;
             let depth = owned.make(backend, pixels, "renderer-peel/depth")?;
             Ok((slots, color, depth))
         })();
         let ((slots, color, depth), owned) = owned.or_free(backend, made)?;
-        let ctx = RendererPeel { desc: *d, slots, color, depth, bound, draw, lens: ThinLens::default(), next: None, owned };
+        let lens = ThinLens::default();
+        let ctx = RendererPeel { desc: *d, slots, color, depth, bound, draw, lens, next: None, in_flight, owned };
         let mut kernels = vec![&PEEL_RENDERER_LAYER, &PEEL_RENDERER_BOUND, &PEEL_RENDERER_DRAW];
         kernels.extend(KERNELS);
         ready(backend, ctx, &kernels, &[], Self::destroy)
@@ -231,6 +242,7 @@ impl RendererPeel {
         crate::lens::check(lens)?;
         self.lens = *lens;
         let pixels = self.desc.width as u64 * self.desc.height as u64;
+        self.slots.use_slot(self.in_flight.next());
         self.slots.begin(backend)?;
         backend.fill(self.bound, 0, pixels, KEEP_ALL.to_bits(), "renderer-peel/bound")?;
         self.slots.plan(backend, 0, self.desc.draw_count)?;
@@ -308,13 +320,33 @@ impl RendererPeel {
         }
         self.slots.finish(backend, self.lens, self.desc.edge_depth_ratio, self.desc.disocclusion)?;
         self.next = None;
+        self.in_flight.recorded(());
         Ok(())
     }
 
-    /// What the last frame's passes did (reads the device: once the frame completed). The guard
-    /// band figures are not measured here (the renderer draws its own band): they read 0.
+    /// Frames in flight whose reports the peel keeps.
+    pub fn frames_in_flight(&self) -> u32 {
+        self.in_flight.frames()
+    }
+
+    /// What the last finished frame's passes did (reads the device: once the frame completed). The
+    /// guard band figures are not measured here (the renderer draws its own band): they read 0.
     pub fn report(&self, backend: &mut dyn Backend) -> Result<PeelReport> {
+        self.report_of(backend, 0)
+    }
+
+    /// What the frame finished `frames_ago` frames before the last did (0: the last), once it
+    /// completed; refused where no such frame was finished or a later one took its slot
+    /// (`frames_ago` at least the frames in flight).
+    pub fn report_of(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<PeelReport> {
         self.owned.check(backend)?;
-        self.slots.report(backend)
+        let (slot, ()) = self.in_flight.slot(frames_ago)?;
+        self.slots.report_of(backend, slot)
+    }
+
+    /// [`Self::report_of`] in the shape every context's report has ([`ContextReport`], its
+    /// details a [`super::peel::PeelFrameReport`]).
+    pub fn report_frame(&self, backend: &mut dyn Backend, frames_ago: u32) -> Result<ContextReport> {
+        Ok(self.report_of(backend, frames_ago)?.context_report(0))
     }
 }

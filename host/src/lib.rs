@@ -9,7 +9,7 @@
 //! - [`scene`]: lenses, cameras, analytic scenes and their exact references; glTF (feature `gltf`);
 //! - [`raster`]: triangle meshes rasterised into multi-layer images and accumulation-buffer references;
 //! - [`methods`]: one frame of a host image through any method of the registry (the one-shot path),
-//!   and the host-planned oracles of ray tracing and layered DoF;
+//!   with its options;
 //! - [`io`]: the display transform and the input rules; EXR and PNG in and out (feature `exr`);
 //! - [`metrics`]: PSNR against a reference, full-frame and in the partial-occlusion region; SSIM and
 //!   FLIP with the `eval` feature;

@@ -1,5 +1,6 @@
 //! Helpers shared by the integration suites.
 
+pub mod oracle;
 pub mod renderer;
 
 use dof::backend::{VulkanBackend, VulkanOptions, WgpuBackend, WgpuOptions};

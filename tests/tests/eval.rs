@@ -127,8 +127,9 @@ fn a_gltf_scene_is_measured_against_its_accumulation_buffer() {
 fn the_generic_path_gives_each_methods_own_image() {
     use dof::eval::methods::{EvaluatedMethod, MethodInput, Registered, Setting};
     use dof::layers::RgbImage;
-    use dof::methods::{bokeh, gather, layered, raytrace, ring_gather, splat};
+    use dof::methods::{bokeh, gather, ring_gather, splat};
     use dof::scene::{LayerOptions, builtin, raycast_layers};
+    use dof_tests::oracle::{layered, raytrace};
 
     let scene = builtin("simple").unwrap().with_size(96, 54);
     let lens = scene.lens.thin_lens(&scene.camera).unwrap();

@@ -6,11 +6,12 @@ use dof::backend::{Backend, CpuBackend};
 use dof::frame::{ContextDesc, CountBuffer, Extent, Frame, MethodOptions, RgbBuffer, SlotBuffer, registry};
 use dof::layers::{Fragment, LayeredImage, RgbImage};
 use dof::methods::buffers::slot_words;
-use dof::methods::splat::{Merge, SplatOptions, splat, splat_with_stages};
+use dof::methods::splat::{Merge, SplatOptions, splat};
 use dof::scene::{Camera, GuardBand, LayerOptions, builtin, raycast_layers};
 use dof::stress::test_lens;
 use dof_shaders::footprint;
 use dof_shaders::lens::ThinLens;
+use dof_tests::oracle::splat_stages::splat_with_stages;
 use dof_tests::{assert_clean, vulkan};
 
 const W: u32 = 24;
@@ -136,7 +137,7 @@ fn area_integrated_scenes_on_vulkan_match_the_cpu() {
         let on_vk = splat_with_stages(&mut vk, &layers, &l, &o).unwrap();
         assert_clean(&mut vk);
         let on_cpu = splat_with_stages(&mut CpuBackend::new(), &layers, &l, &o).unwrap();
-        let (a, b) = (on_vk.intermediates.as_ref().unwrap(), on_cpu.intermediates.as_ref().unwrap());
+        let (a, b) = (&on_vk.intermediates, &on_cpu.intermediates);
         assert!(a.dense == b.dense, "dense fragments and footprints ({subsamples} sub-samples)");
         assert!(a.sorted == b.sorted, "sorted lists ({subsamples} sub-samples)");
         for (p, q) in on_vk.image.data.iter().zip(&on_cpu.image.data) {

@@ -4,10 +4,11 @@
 
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::{Fragment, LayeredImage};
-use dof::methods::splat::{Merge, SplatOptions, SplatOutput, splat, splat_with_stages};
+use dof::methods::splat::{Merge, SplatOptions, splat};
 use dof::stress::{hash, test_lens};
 use dof_shaders::keys::sort_key;
 use dof_shaders::radiance::COLOR_MAX;
+use dof_tests::oracle::splat_stages::{Staged, splat_with_stages};
 use dof_tests::{assert_clean, vulkan};
 
 /// A fronto-parallel textured wall at 4 m behind a near wall at 0.8 m that covers the middle third,
@@ -31,8 +32,8 @@ fn walls(w: u32, h: u32) -> LayeredImage {
 
 /// Every sorted list is in strictly increasing `(depth key, dense index)`: the tie key of
 /// `dof_shaders::splat::fragment` (ties in dense order, which follows position and slot).
-fn assert_tie_order(out: &SplatOutput) {
-    let st = out.intermediates.as_ref().unwrap();
+fn assert_tie_order(out: &Staged) {
+    let st = &out.intermediates;
     let (keys, values) = &st.sorted;
     let mut at = 0usize;
     let mut ties = 0;
@@ -68,7 +69,7 @@ fn ties_are_deterministic_on_each_backend() {
             let b = splat_with_stages(backend.as_mut(), &img, &lens, &o).unwrap();
             assert_tie_order(&a);
             assert!(a.image == b.image, "two frames differ on {} ({:?})", backend.kind(), o.merge);
-            assert!(a.intermediates.as_ref().unwrap().sorted == b.intermediates.as_ref().unwrap().sorted);
+            assert!(a.intermediates.sorted == b.intermediates.sorted);
         }
     }
 }
@@ -86,7 +87,7 @@ fn ties_match_between_cpu_and_vulkan() {
         let on_vk = splat_with_stages(&mut vk, &img, &lens, &o).unwrap();
         assert_clean(&mut vk);
         let on_cpu = splat_with_stages(&mut CpuBackend::new(), &img, &lens, &o).unwrap();
-        let (a, b) = (on_vk.intermediates.as_ref().unwrap(), on_cpu.intermediates.as_ref().unwrap());
+        let (a, b) = (&on_vk.intermediates, &on_cpu.intermediates);
         assert!(a.dense == b.dense && a.sorted == b.sorted, "lists differ ({:?})", o.merge);
         assert_eq!(on_vk.report.early_out_pixels, on_cpu.report.early_out_pixels, "early termination ({:?})", o.merge);
         let mut worst = 0.0f32;

@@ -8,11 +8,11 @@ use dof::CoreError;
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::{Fragment, LayeredImage};
 use dof::methods::gather::gather;
-use dof::methods::layered::{LayeredOptions, LayeredOutput, layered, plan};
 use dof::metrics::compare;
 use dof::scene::{LayerOptions, ReferenceOptions, builtin, raycast_layers, reference};
 use dof::stress::{noise_image, test_lens, varied};
 use dof_shaders::lens::ThinLens;
+use dof_tests::oracle::layered::{LayeredOptions, LayeredOutput, layered, plan};
 use dof_tests::{assert_clean, vulkan};
 
 fn run(backend: &mut dyn Backend, img: &LayeredImage, lens: &ThinLens, cascaded: bool) -> LayeredOutput {

@@ -312,7 +312,7 @@ fn check_layers(src: &str, layers: &[&[&str]]) {
 fn core_imports_point_down() {
     check_layers(
         "host/core/src",
-        &[&["error", "extent", "host_memory"], &["backend", "shaders", "lens"], &["ops", "aperture", "sampling"], &["frame"], &["testing"]],
+        &[&["error", "extent", "host_memory"], &["backend", "shaders", "lens"], &["ops", "aperture", "sampling"], &["frame"]],
     );
 }
 

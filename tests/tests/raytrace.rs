@@ -7,11 +7,11 @@ use dof::backend::{Backend, CpuBackend};
 use dof::frame::RaytraceReport;
 use dof::layers::LayeredImage;
 use dof::methods::gather::gather;
-use dof::methods::raytrace::{RaytraceOptions, RaytraceOutput, raytrace};
 use dof::metrics::compare;
 use dof::scene::{LayerOptions, ReferenceOptions, builtin, raycast_layers, reference};
 use dof::stress::{noise_image, noise_with_sky, test_lens};
 use dof_shaders::lens::ThinLens;
+use dof_tests::oracle::raytrace::{RaytraceOptions, RaytraceOutput, raytrace};
 use dof_tests::{assert_clean, vulkan};
 
 fn trace(backend: &mut dyn Backend, img: &LayeredImage, lens: &ThinLens, spp: u32) -> RaytraceOutput {

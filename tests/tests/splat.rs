@@ -4,11 +4,12 @@
 use dof::CoreError;
 use dof::backend::{Backend, CpuBackend};
 use dof::layers::{Fragment, LayeredImage};
-use dof::methods::splat::{Merge, SplatOptions, SplatOutput, splat, splat_with_stages};
+use dof::methods::splat::{Merge, SplatOptions, SplatOutput, splat};
 use dof::stress::{hash, noise_with_sky, test_lens};
 use dof_shaders::half::{f16_to_f32, f32_to_f16};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::splat::MAX_RINGS;
+use dof_tests::oracle::splat_stages::splat_with_stages;
 use dof_tests::{assert_clean, vulkan};
 
 fn lens(aperture_radius: f32) -> ThinLens {
@@ -262,7 +263,7 @@ fn vulkan_matches_cpu_stage_by_stage() {
         let on_vk = splat_with_stages(&mut vk, &img, &lens(aperture), &o).unwrap();
         assert_clean(&mut vk);
         let on_cpu = splat_with_stages(&mut CpuBackend::new(), &img, &lens(aperture), &o).unwrap();
-        let (a, b) = (on_vk.intermediates.as_ref().unwrap(), on_cpu.intermediates.as_ref().unwrap());
+        let (a, b) = (&on_vk.intermediates, &on_cpu.intermediates);
         let what = format!("{merge:?}, tile {tile}");
         for (step, (x, y)) in a.cells.iter().zip(&b.cells).enumerate() {
             assert!(x == y, "cells after step {step} differ ({what})");

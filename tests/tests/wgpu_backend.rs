@@ -6,12 +6,13 @@ use dof::backend::{Backend, CpuBackend, RunKernel, WgpuBackend};
 use dof::frame::{ContextDesc, CountBuffer, Extent, Frame, METHODS, MethodOptions, Reads, RgbBuffer, SlotBuffer};
 use dof::methods::buffers::{read_rgb, slot_words};
 use dof::methods::one_shot::one_shot;
-use dof::methods::splat::{Merge, SplatOptions, splat_with_stages};
+use dof::methods::splat::{Merge, SplatOptions};
 use dof::ops::scan::exclusive_scan;
 use dof::ops::sort::sort_on_with;
 use dof::stress::{noise_with_sky, test_lens};
 use dof::workload::{lists_with, random_key};
 use dof_shaders::tonemap::{DisplayParams, MODE_LINEAR, MODE_TONEMAP, display_tonemap};
+use dof_tests::oracle::splat_stages::splat_with_stages;
 use dof_tests::{wgpu, wgpu_device};
 use rand::SeedableRng;
 use rand_pcg::Pcg64;
@@ -96,7 +97,7 @@ fn splatting_stages_match_the_cpu() {
         let o = SplatOptions { merge, tile, ..Default::default() };
         let on_gpu = splat_with_stages(&mut g, &img, &test_lens(aperture), &o).unwrap();
         let on_cpu = splat_with_stages(&mut CpuBackend::new(), &img, &test_lens(aperture), &o).unwrap();
-        let (a, b) = (on_gpu.intermediates.as_ref().unwrap(), on_cpu.intermediates.as_ref().unwrap());
+        let (a, b) = (&on_gpu.intermediates, &on_cpu.intermediates);
         let what = format!("{merge:?}, tile {tile}");
         for (step, (x, y)) in a.cells.iter().zip(&b.cells).enumerate() {
             assert!(x == y, "cells after step {step} differ ({what})");

@@ -25,8 +25,7 @@
 //! By default this builds on stable Rust from the prebuilt SPIR-V, without rust-gpu. `vulkan` (on
 //! by default) is the Vulkan backend and the caller's Vulkan images: without it the core is the CPU
 //! backend alone and builds no Vulkan crate. `png` reads aperture masks from PNG files; `rebuild-spirv` compiles the kernels to SPIR-V with rust-gpu
-//! (pinned nightly) instead of embedding the prebuilt modules; `testing` adds `testing`, what only
-//! the project's suites use (on inside the workspace, through the tests crate).
+//! (pinned nightly) instead of embedding the prebuilt modules.
 
 pub mod aperture;
 pub mod backend;
@@ -39,8 +38,6 @@ pub mod lens;
 pub mod ops;
 pub mod sampling;
 pub mod shaders;
-#[cfg(feature = "testing")]
-pub mod testing;
 
 pub use error::{Error, Result};
 

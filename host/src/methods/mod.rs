@@ -4,7 +4,6 @@
 pub mod bokeh;
 pub mod buffers;
 pub mod gather;
-pub mod layered;
 pub mod one_shot;
 pub mod raytrace;
 pub mod ring_gather;

@@ -3,8 +3,8 @@
 //!
 //! - **Candidate layers fixed at creation.** Layer CoCs grow geometrically from `first_coc` by
 //!   `2^(1/layers_per_doubling)` on each side of the focus layer up to `max_coc` (the last one
-//!   clamped to it): what the one-shot path (`methods::layered` in the crate `dof` above the core) plans for a frame whose
-//!   blur reaches the cap. Every blur's Gaussian weights are computed then and written once.
+//!   clamped to it): what the suites' host-planned oracle (`dof_tests::oracle::layered`) plans
+//!   for a frame whose blur reaches the cap. Every blur's Gaussian weights are computed then and written once.
 //! - **The plan on the device, per frame.** One workgroup places the anchors from the frame's lens
 //!   (eq. 9); a reduction over every fragment finds the signed-CoC range (capped at `max_coc`,
 //!   the fragments beyond counted) and marks the layers some fragment's matte reaches; one

@@ -103,9 +103,9 @@ pub fn trace_params(
 }
 
 /// Records the hierarchy and the trace of one frame over `b.input` and `b.counts` into `b.out`,
-/// counting missed rays into `b.stats` (cleared first): what the context runs, and the one-shot
-/// oracle above the core through `crate::testing::record_trace`.
-pub(crate) fn record_trace(backend: &mut dyn Backend, params: &TraceParams, b: raytrace_trace::Bindings<BufferId>) -> Result<()> {
+/// counting missed rays into `b.stats` (cleared first): what the context runs, over any buffers
+/// (the one-shot oracle of the suites runs it over its own).
+pub fn record_trace(backend: &mut dyn Backend, params: &TraceParams, b: raytrace_trace::Bindings<BufferId>) -> Result<()> {
     let pixels = params.width as u64 * params.height as u64;
     backend.fill(b.stats, 0, STATS_WORDS as u64, 0, "raytrace/stats")?;
     let base = raytrace_base::Bindings { input: b.input, counts: b.counts, hier: b.hier };

@@ -28,8 +28,19 @@ const FIRST_STAND_IN: u32 = 0xC000_0000;
 struct Declared {
     words: u64,
     label: String,
+    kind: Kind,
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Kind {
+    /// Placed by its lifetime.
+    Placed,
+    /// Kept in a buffer of the context's own choosing, beside what else it holds (the sorted keys
+    /// in the sort's key scratch): listed with the transients, never placed or checked against
+    /// them.
+    In(BufferId),
     /// A caller's buffer stood in for by the planning frame: checked as any size, never placed.
-    caller: bool,
+    Caller,
 }
 
 /// A context's transient buffers: declared, then placed, then resolved frame by frame.
@@ -51,12 +62,18 @@ struct Span {
 impl Transients {
     /// A transient of `words` words: its stand-in id, for the context's buffers until placement.
     pub(crate) fn declare(&mut self, words: u64, label: &str) -> BufferId {
-        self.push(Declared { words: words.max(1), label: label.to_string(), caller: false })
+        self.push(Declared { words: words.max(1), label: label.to_string(), kind: Kind::Placed })
+    }
+
+    /// A transient kept in `buffer`, a buffer of the context's (listed in each frame's recording
+    /// with the others, so a reader finds it by its label, but not placed).
+    pub(crate) fn kept_in(&mut self, buffer: BufferId, words: u64, label: &str) -> BufferId {
+        self.push(Declared { words: words.max(1), label: label.to_string(), kind: Kind::In(buffer) })
     }
 
     /// A stand-in for a caller's buffer in the planning frame, of any size.
     pub(crate) fn caller(&mut self, label: &str) -> BufferId {
-        self.push(Declared { words: u64::MAX / 2, label: label.to_string(), caller: true })
+        self.push(Declared { words: u64::MAX / 2, label: label.to_string(), kind: Kind::Caller })
     }
 
     fn push(&mut self, d: Declared) -> BufferId {
@@ -97,7 +114,7 @@ impl Transients {
     /// of its own.
     pub(crate) fn place(&mut self, backend: &mut dyn Backend, owned: &mut Owned, commands: &[Command]) -> Result<()> {
         let spans = self.spans(commands);
-        let mut order: Vec<usize> = (0..self.declared.len()).filter(|&i| !self.declared[i].caller).collect();
+        let mut order: Vec<usize> = (0..self.declared.len()).filter(|&i| self.declared[i].kind != Kind::Caller).collect();
         for &i in &order {
             if let Some(s) = spans[i]
                 && !s.first_writes
@@ -109,6 +126,8 @@ impl Transients {
                 )));
             }
         }
+        self.placed = self.declared.iter().map(|d| if let Kind::In(buffer) = d.kind { Some(buffer) } else { None }).collect();
+        order.retain(|&i| self.declared[i].kind == Kind::Placed);
         // Largest first, so a buffer's first occupant sets its size and every later one fits.
         order.sort_by_key(|&i| std::cmp::Reverse(self.declared[i].words));
         let mut groups: Vec<Vec<usize>> = Vec::new();
@@ -123,7 +142,6 @@ impl Transients {
                 None => groups.push(vec![i]),
             }
         }
-        self.placed = vec![None; self.declared.len()];
         for g in groups {
             let words = self.declared[g[0]].words;
             let label = g.iter().map(|&i| self.declared[i].label.as_str()).collect::<Vec<_>>().join(", ");

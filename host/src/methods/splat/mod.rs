@@ -10,6 +10,4 @@
 mod run;
 
 pub use crate::frame::splat::{Merge, SplatOptions, SplatPlanReport, SplatReport};
-#[cfg(feature = "testing")]
-pub use run::{Intermediates, splat_with_stages};
 pub use run::{SplatOutput, splat};

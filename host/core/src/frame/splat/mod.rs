@@ -251,7 +251,7 @@ impl SplatContext {
                 keys: t.declare(list_entries, "splat/keys"),
                 values: t.declare(list_entries, "splat/values"),
                 keys_sorted: match sorted_keys_in_scratch {
-                    Some(scratch) => scratch,
+                    Some(scratch) => t.kept_in(scratch, list_entries, "splat/keys-sorted"),
                     None => t.declare(list_entries, "splat/keys-sorted"),
                 },
                 values_sorted: t.declare(list_entries, "splat/values-sorted"),
@@ -328,7 +328,7 @@ impl SplatContext {
     /// every frame in flight are one row).
     pub fn memory_table(&self) -> Vec<(String, u64)> {
         let mut rows = self.owned.table();
-        let sorted_in_scratch = self.sort.scratch_keys() == Some(self.b.keys_sorted);
+        let sorted_in_scratch = self.sort.scratch_keys() == Some(self.transients.buffer(self.b.keys_sorted));
         rows.extend(self.sort.table().into_iter().map(|(label, bytes)| match label.starts_with("sort/scratch") && sorted_in_scratch {
             true => (format!("{label} (the first also splat/keys-sorted)"), bytes),
             false => (label, bytes),
@@ -339,6 +339,13 @@ impl SplatContext {
     /// The list pool's size (entries) and the longest list the sort handles.
     pub fn list_bounds(&self) -> (u64, u32) {
         (self.list_entries, self.max_list)
+    }
+
+    /// The kernels' parameters for frame `f` (every splatting kernel's push constants: the frame's
+    /// grids, and where each cell's fragments lie in the dense array), for a caller that reads
+    /// the frame's transients (`Recording::transients`) or runs the kernels itself.
+    pub fn kernel_params(&self, f: &Frame) -> SplatParams {
+        self.params(f, self.merge_steps)
     }
 
     fn params(&self, f: &Frame, step: u32) -> SplatParams {
@@ -521,6 +528,7 @@ impl SplatContext {
             copy_tiles: c(stats::COPY_TILES),
             list_entries: list_lengths.iter().map(|&n| n as u64).sum(),
             list_lengths,
+            list_offsets: seg.as_chunks::<2>().0.iter().map(|s| s[0]).collect(),
             list_capacity: self.list_entries,
             overflow_tiles: c(stats::OVERFLOW_TILES),
             overflow_entries: c(stats::OVERFLOW_ENTRIES) as u64,
@@ -536,28 +544,6 @@ impl SplatContext {
             plan: Some(plan),
         })
     }
-
-    /// What tests that compare backends stage by stage need besides the recording's transients.
-    #[cfg(feature = "testing")]
-    pub(crate) fn stage_buffers(&self) -> StageBuffers {
-        StageBuffers {
-            params: self.in_flight.slot(0).ok().map(|(_, f)| self.params(&f, self.merge_steps)),
-            segments: self.b.segments,
-            keys_sorted: self.transients.buffer(self.b.keys_sorted),
-        }
-    }
-}
-
-/// A splatting context's buffers that the last frame's recording does not list among its
-/// transients (`crate::testing::stage_buffers`).
-#[cfg(feature = "testing")]
-pub struct StageBuffers {
-    /// The last recorded frame's kernel parameters (where its cells' regions lie), if one was.
-    pub params: Option<SplatParams>,
-    /// The lists' offsets and lengths.
-    pub segments: BufferId,
-    /// Where the sorted keys go: a transient (`splat/keys-sorted`), or the sort's key scratch.
-    pub keys_sorted: BufferId,
 }
 
 impl DofContext for SplatContext {

@@ -36,6 +36,9 @@ pub struct SplatReport {
     pub copy_tiles: u32,
     /// Per tile, the sorted list's length (0 for copied tiles).
     pub list_lengths: Vec<u32>,
+    /// Per tile, where its list starts in the pool (the order tiles placed their lists in is the
+    /// device's).
+    pub list_offsets: Vec<u32>,
     /// Entries the list pool holds, and entries binned.
     pub list_capacity: u64,
     pub list_entries: u64,

@@ -1,7 +1,7 @@
 //! Layered depth of field with matting (Schedl and Wimmer 2012; kernels and the matting rules in
-//! `dof_shaders::layered`), planned per frame on the host: the one-shot function, which allocates,
-//! uploads and reads back per call. The frame API's [`crate::frame::LayeredContext`] plans on the
-//! device over candidate layers fixed at creation; this path stays as its oracle:
+//! `dof_shaders::layered`), planned per frame on the host: the suites' oracle for the frame API's
+//! `dof::frame::LayeredContext`, which plans on the device over candidate layers fixed at
+//! creation. It allocates, uploads and reads back per call:
 //!
 //! - **Layers from the depth range.** A min/max reduction over every fragment's signed CoC (the sky
 //!   at the far limit) gives the blur present on each side of the focus plane. Layer CoCs grow
@@ -19,10 +19,10 @@
 //!   occlusion edges of the layers it is composited with (the "slight alteration" the paper notes).
 //! - **Normalisation**: the composite is divided by its alpha.
 
-use super::buffers::{groups_for, read_rgb, slot_words};
-use crate::backend::{Backend, BufferId, CommandTime, RunKernel, with_buffers};
-use crate::frame::layered::{gaussian, sigma};
-use crate::layers::{LayeredImage, RgbImage};
+use dof::backend::{Backend, BufferId, CommandTime, RunKernel, with_buffers};
+use dof::frame::layered::{gaussian, sigma};
+use dof::layers::{LayeredImage, RgbImage};
+use dof::methods::buffers::{groups_for, read_rgb, slot_words};
 use dof_core::error::{Error, Result};
 use dof_shaders::layered::{
     LAYERED_MATTE, LayeredParams, OVER, SLOT_WORDS, UNDER, layered_blur, layered_composite, layered_matte, layered_resolve, matte_front,
@@ -33,7 +33,7 @@ use dof_shaders::lens::ThinLens;
 /// Blurs narrower than this `σ` (px) are left out: their kernel is almost all centre.
 const MIN_SIGMA: f32 = 0.25;
 
-pub use crate::frame::layered::LayeredOptions;
+pub use dof::frame::layered::LayeredOptions;
 
 /// The per-frame decomposition.
 #[derive(Clone, Debug)]
@@ -66,7 +66,7 @@ impl LayerPlan {
 
 /// Plans the layers of `image` under `lens`.
 pub fn plan(image: &LayeredImage, lens: &ThinLens, options: &LayeredOptions) -> Result<LayerPlan> {
-    crate::lens::check(lens)?;
+    dof::lens::check(lens)?;
     options.check()?;
     if image.width == 0 || image.height == 0 || image.max_layers == 0 {
         return Err(Error::InvalidArgument(format!("layered DoF needs a non-empty image, got {}x{}", image.width, image.height)));

@@ -75,9 +75,16 @@ fn empty_layers_are_skipped() {
     for cascaded in [true, false] {
         let out = run(&mut CpuBackend::new(), &img, &lens, cascaded);
         assert!(out.image.data.iter().flatten().all(|c| c.is_finite()));
-        assert!(out.blurs as usize <= p.used_layers(), "no blur for an empty layer: {} blurs, {} layers used", out.blurs, p.used_layers());
-        let matted = out.times.iter().filter(|t| t.label == "layered/matte").count();
-        assert_eq!(matted, p.used_layers(), "cascaded {cascaded}: one matte per used layer");
+        // One blur a used layer; the cascade's steps run once a used layer lies on their far side.
+        let most = if cascaded { p.cocs.len() } else { p.used_layers() };
+        assert!(
+            out.blurs as usize <= most,
+            "cascaded {cascaded}: {} blurs, {} of {} layers used",
+            out.blurs,
+            p.used_layers(),
+            p.cocs.len()
+        );
+        assert_eq!(out.mattes as usize, p.used_layers(), "cascaded {cascaded}: one matte per used layer");
     }
 }
 
@@ -179,14 +186,14 @@ fn against_the_host_path(got: &dof::layers::RgbImage, host: &dof::layers::RgbIma
     (psnr, max)
 }
 
-/// The tolerance of the device plan against the host's. The two differ where a frame's blur stops
-/// between two candidate layers (the host clamps its outermost layer's CoC to the frame's range,
-/// the device keeps the candidate, up to 2^(1/layers_per_doubling) larger, and mattes the
-/// outermost fragments across the two) and where the cascade's Gaussians are composed step by step
-/// instead of merged over empty layers (each truncated at 3σ). Measured (CPU and Vulkan alike, both
-/// schedules): 44.5 to 65.7 dB, the largest tone-mapped difference 0.044 (a noise image's
-/// outermost near layer), on the scenes of this suite (simple 160x90 and 320x180, railing 160x90)
-/// and the context frames; the bounds leave about 4 dB and 35% of headroom.
+/// The tolerance of the device plan against the host's. Both run one schedule; they differ where a
+/// frame's blur stops between two candidate layers (the host clamps its outermost layer's CoC to
+/// the frame's range, the device keeps the candidate, up to 2^(1/layers_per_doubling) larger,
+/// mattes the outermost fragments across the two, and composes its cascade over other steps).
+/// Measured (CPU and Vulkan alike, both schedules): 44.5 to 65.8 dB, the largest tone-mapped
+/// difference 0.053 (the two depths far apart, cascaded), on the scenes of this suite (simple
+/// 160x90 and 320x180, railing 160x90) and the context frames; the bounds leave about 4 dB and 12%
+/// of headroom.
 const MIN_PSNR_DB: f64 = 40.0;
 const MAX_TONE_DIFFERENCE: f32 = 0.06;
 

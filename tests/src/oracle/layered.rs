@@ -1,7 +1,8 @@
 //! Layered depth of field with matting (Schedl and Wimmer 2012; kernels and the matting rules in
-//! `dof_shaders::layered`), planned per frame on the host: the suites' oracle for the frame API's
-//! `dof::frame::LayeredContext`, which plans on the device over candidate layers fixed at
-//! creation. It allocates, uploads and reads back per call:
+//! `dof_shaders::layered`) with its layers planned per frame on the host: the suites' oracle for
+//! the frame API's `dof::frame::LayeredContext`, which plans on the device over candidate layers
+//! fixed at creation. Both run one schedule (`dof::frame::layered::Schedule`); what differs is the
+//! plan. It allocates, uploads and reads back per call:
 //!
 //! - **Layers from the depth range.** A min/max reduction over every fragment's signed CoC (the sky
 //!   at the far limit) gives the blur present on each side of the focus plane. Layer CoCs grow
@@ -9,29 +10,19 @@
 //!   one clamped to it, at most `max_coc`), so the count follows the scene, not a constant.
 //! - **Anchors by the CoC inverse** (eq. 9): between layers `k` and `k+1` at their mean CoC, `D1`
 //!   in front of the focus layer, `D2` behind it, `+inf` where eq. 8's bound is exceeded.
-//! - **Empty layers are skipped**: a layer no fragment has a non-zero matte for is neither matted,
-//!   blurred nor composited (and its blur is folded into the next one in the cascade).
-//! - **Blur** `σ = |d| / 4` (eq. 10), separable, radius `ceil(3σ)`. Non-cascaded: every layer is
-//!   blurred by its own `σ` and composited back to front. Cascaded (recursive): behind the focus
-//!   the running composite is blurred by `sqrt(σ_k² − σ_{k−1}²)` after layer `k` joins it, from the
-//!   back layer forwards; in front of it, mirrored from the nearest layer backwards; the two are
-//!   joined at the end. Each layer so receives its own `σ` in total, at the price of blurring the
-//!   occlusion edges of the layers it is composited with (the "slight alteration" the paper notes).
-//! - **Normalisation**: the composite is divided by its alpha.
+//! - **Used layers**: those some fragment has a non-zero matte for. The schedule's steps of the
+//!   others do not run: their gates, from these flags, are closed.
 
-use dof::backend::{Backend, BufferId, CommandTime, RunKernel, with_buffers};
-use dof::frame::layered::{gaussian, sigma};
+use dof::backend::{Backend, CommandTime, RunKernel, with_buffers};
+use dof::frame::layered::{Schedule, ScheduleBuffers, Step};
 use dof::layers::{LayeredImage, RgbImage};
-use dof::methods::buffers::{groups_for, read_rgb, slot_words};
+use dof::methods::buffers::{read_rgb, slot_words};
 use dof_core::error::{Error, Result};
 use dof_shaders::layered::{
-    LAYERED_MATTE, LayeredParams, OVER, SLOT_WORDS, UNDER, layered_blur, layered_composite, layered_matte, layered_resolve, matte_front,
-    matte_hidden,
+    ALWAYS, LayeredParams, LayeredPlanParams, PLAN_ANCHORS, PLAN_COCS, PLAN_LAYERS, PLAN_USED, PLAN_WORDS, SLOT_WORDS, layered_plan_end,
+    matte_front, matte_hidden,
 };
 use dof_shaders::lens::ThinLens;
-
-/// Blurs narrower than this `σ` (px) are left out: their kernel is almost all centre.
-const MIN_SIGMA: f32 = 0.25;
 
 pub use dof::frame::layered::LayeredOptions;
 
@@ -139,108 +130,42 @@ pub struct LayeredOutput {
     pub image: RgbImage,
     pub times: Vec<CommandTime>,
     pub plan: LayerPlan,
-    /// Blur passes run (each separable pair counts once) and their widest radius (px).
+    /// Layers matted, and blur passes run (each separable pair counts once) with their widest
+    /// radius (px): the schedule's steps whose gates the plan opened.
+    pub mattes: u32,
     pub blurs: u32,
     pub widest_radius: u32,
     pub buffer_bytes: u64,
 }
 
-#[derive(Clone, Copy, PartialEq)]
-enum Buf {
-    Layer,
-    Far,
-    Near,
-}
-
-enum Op {
-    Matte(usize),
-    Blur(Buf, f32),
-    Composite { layer: Buf, acc: Buf, mode: u32 },
-}
-
-/// The dispatch sequence: non-cascaded, or the two cascades joined.
-fn schedule(plan: &LayerPlan, cascaded: bool) -> Vec<Op> {
-    let mut ops = Vec::new();
-    let s = |k: usize| sigma(plan.cocs[k]);
-    if !cascaded {
-        for k in (0..plan.cocs.len()).rev().filter(|&k| !plan.empty[k]) {
-            ops.push(Op::Matte(k));
-            ops.push(Op::Blur(Buf::Layer, s(k)));
-            ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Far, mode: OVER });
-        }
-        return ops;
-    }
-    // Behind the focus, from the back: join, then blur by the step to the next layer forwards.
-    let (mut pending, mut any) = (0.0f32, false);
-    for k in (plan.focus_layer..plan.cocs.len()).rev() {
-        if !plan.empty[k] {
-            if any && pending > 0.0 {
-                ops.push(Op::Blur(Buf::Far, pending.sqrt()));
-                pending = 0.0;
-            }
-            ops.push(Op::Matte(k));
-            ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Far, mode: OVER });
-            any = true;
-        }
-        if k > plan.focus_layer {
-            pending += s(k).powi(2) - s(k - 1).powi(2);
-        }
-    }
-    // The steps down to the focus layer that no used layer in front took (an empty focus layer).
-    if any && pending > 0.0 {
-        ops.push(Op::Blur(Buf::Far, pending.sqrt()));
-    }
-    // In front, from the nearest: join behind, then blur by the step to the next layer backwards.
-    let (mut pending, mut any_near) = (0.0f32, false);
-    for k in 0..plan.focus_layer {
-        if !plan.empty[k] {
-            if any_near && pending > 0.0 {
-                ops.push(Op::Blur(Buf::Near, pending.sqrt()));
-                pending = 0.0;
-            }
-            ops.push(Op::Matte(k));
-            ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Near, mode: UNDER });
-            any_near = true;
-        }
-        let next = if k + 1 < plan.focus_layer { s(k + 1) } else { 0.0 };
-        pending += s(k).powi(2) - next.powi(2);
-    }
-    if any_near {
-        if pending > 0.0 {
-            ops.push(Op::Blur(Buf::Near, pending.sqrt()));
-        }
-        ops.push(Op::Composite { layer: Buf::Near, acc: Buf::Far, mode: OVER });
-    }
-    ops
-}
-
-/// Renders `image` through `lens` by layered DoF on `backend`.
+/// Renders `image` through `lens` by layered DoF on `backend`: the layers planned here, on the
+/// host, then the schedule the context runs (`dof::frame::layered::Schedule`) over them, its
+/// cascade's gates derived from the used flags by the device plan's own last pass.
 pub fn layered(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &LayeredOptions) -> Result<LayeredOutput> {
     let plan = plan(image, lens, options)?;
+    let layers = plan.cocs.len() as u32;
+    if layers > PLAN_LAYERS {
+        return Err(Error::InvalidArgument(format!("{layers} layers, a plan holds {PLAN_LAYERS}")));
+    }
     let (width, height) = (image.width, image.height);
     let pixels = width as u64 * height as u64;
-    let ops = schedule(&plan, options.cascaded);
-    // Every blur's weights in one buffer.
-    let mut weights: Vec<u32> = Vec::new();
-    let mut blurs: Vec<(u32, u32)> = Vec::new();
-    for op in &ops {
-        if let Op::Blur(_, s) = op
-            && *s >= MIN_SIGMA
-        {
-            let w = gaussian(*s);
-            blurs.push((weights.len() as u32, (w.len() - 1) as u32));
-            weights.extend(w.iter().map(|v| v.to_bits()));
-        }
-    }
+    let schedule = Schedule::new(&plan.cocs, plan.focus_layer, options.cascaded);
+    // The host plan in the device plan's layout: the layers' CoCs, anchors and used flags.
+    let mut plan_words = vec![0u32; PLAN_WORDS as usize];
+    let at = |base: u32, k: usize| (base as usize) + k;
+    plan.cocs.iter().enumerate().for_each(|(k, c)| plan_words[at(PLAN_COCS, k)] = c.to_bits());
+    plan.anchors.iter().enumerate().for_each(|(k, a)| plan_words[at(PLAN_ANCHORS, k)] = a.to_bits());
+    plan.empty.iter().enumerate().for_each(|(k, &e)| plan_words[at(PLAN_USED, k)] = !e as u32);
     let slots = pixels * image.max_layers as u64;
     let sizes = [
         (SLOT_WORDS as u64 * slots, "layered/input"),
         (pixels, "layered/counts"),
+        (PLAN_WORDS as u64, "layered/plan"),
+        (schedule.weights.len().max(1) as u64, "layered/weights"),
         (4 * pixels, "layered/layer"),
         (4 * pixels, "layered/tmp"),
         (4 * pixels, "layered/far"),
         (4 * pixels, "layered/near"),
-        (weights.len().max(1) as u64, "layered/weights"),
         (3 * pixels, "layered/out"),
     ];
     let max_words = backend.limits().max_buffer_bytes / 4;
@@ -249,55 +174,43 @@ pub fn layered(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens,
     }
     let buffer_bytes = 4 * sizes.iter().map(|s| s.0).sum::<u64>();
     let input = slot_words(image);
-    let widest_radius = blurs.iter().map(|b| b.1).max().unwrap_or(0);
-    let blur_count = blurs.len() as u32;
     with_buffers(backend, &sizes, |backend, b| {
-        let [input_buf, counts, layer, tmp, far, near, weights_buf, out] = [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]];
+        let [input_buf, counts, plan_buf, weights, layer, tmp, far, near, out] = [b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], b[8]];
         backend.write_buffer(input_buf, 0, &input)?;
         backend.write_buffer(counts, 0, &image.counts)?;
-        if !weights.is_empty() {
-            backend.write_buffer(weights_buf, 0, &weights)?;
+        backend.write_buffer(plan_buf, 0, &plan_words)?;
+        if !schedule.weights.is_empty() {
+            backend.write_buffer(weights, 0, &schedule.weights)?;
         }
         backend.fill(far, 0, 4 * pixels, 0, "layered/clear")?;
         backend.fill(near, 0, 4 * pixels, 0, "layered/clear")?;
-        let base = LayeredParams { width, height, max_layers: image.max_layers, ..Default::default() };
-        // Every layered kernel runs one item a pixel with the same workgroup size.
-        let groups = groups_for(&LAYERED_MATTE, pixels);
-        let id = |buf: Buf| -> BufferId {
-            match buf {
-                Buf::Layer => layer,
-                Buf::Far => far,
-                Buf::Near => near,
-            }
-        };
-        let mut blur_params = blurs.iter();
-        for op in &ops {
-            match *op {
-                Op::Matte(k) => {
-                    let p = LayeredParams { anchors: plan.anchors_of(k), ..base };
-                    backend.run(layered_matte::Bindings { input: input_buf, counts, layer }, groups, &p, "layered/matte")?;
+        let gates =
+            LayeredPlanParams { width, height, max_layers: image.max_layers, layers, focus: plan.focus_layer as u32, ..Default::default() };
+        backend.run(layered_plan_end::Bindings { plan: plan_buf }, [1, 1, 1], &gates, "layered/plan")?;
+        let base = LayeredParams { width, height, max_layers: image.max_layers, layers, ..Default::default() };
+        let buffers = ScheduleBuffers { input: input_buf, counts, plan: plan_buf, weights, layer, tmp, far, near, out };
+        schedule.record(backend, &base, &buffers)?;
+        let times = backend.submit()?;
+        // What ran: the steps whose gates the plan opened.
+        let words = backend.read_buffer(plan_buf, 0, PLAN_WORDS as u64)?;
+        let open = |gate: u32| gate == ALWAYS || words[gate as usize] != 0;
+        let (mut mattes, mut blurs, mut widest_radius) = (0, 0, 0);
+        for step in &schedule.steps {
+            match *step {
+                Step::Matte(k) if open(PLAN_USED + k) => mattes += 1,
+                Step::Blur { radius, gate, .. } if open(gate) => {
+                    blurs += 1;
+                    widest_radius = widest_radius.max(radius);
                 }
-                Op::Blur(buf, s) if s >= MIN_SIGMA => {
-                    let Some(&(weights_at, radius)) = blur_params.next() else { continue };
-                    let h = LayeredParams { radius, weights_at, mode: 0, ..base };
-                    let v = LayeredParams { mode: 1, ..h };
-                    backend.run(layered_blur::Bindings { src: id(buf), weights: weights_buf, dst: tmp }, groups, &h, "layered/blur")?;
-                    backend.run(layered_blur::Bindings { src: tmp, weights: weights_buf, dst: id(buf) }, groups, &v, "layered/blur")?;
-                }
-                Op::Blur(..) => {}
-                Op::Composite { layer: l, acc, mode } => {
-                    let p = LayeredParams { mode, ..base };
-                    backend.run(layered_composite::Bindings { layer: id(l), acc: id(acc) }, groups, &p, "layered/composite")?;
-                }
+                _ => {}
             }
         }
-        backend.run(layered_resolve::Bindings { acc: far, out }, groups, &base, "layered/composite")?;
-        let times = backend.submit()?;
         Ok(LayeredOutput {
             image: read_rgb(backend, out, width, height)?,
             times,
             plan: plan.clone(),
-            blurs: blur_count,
+            mattes,
+            blurs,
             widest_radius,
             buffer_bytes,
         })

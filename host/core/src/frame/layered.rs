@@ -15,14 +15,14 @@
 //! - **Blur.** Non-cascaded: each used layer by its own `σ = |d|/4`, composited back to front.
 //!   Cascaded: behind the focus the running composite is blurred by the step
 //!   `sqrt(σ_{k+1}² − σ_k²)` before layer `k` joins it, in front mirrored, the two joined at the
-//!   end (the one-shot path merges the steps across empty layers into one Gaussian; here each step
-//!   runs, so the Gaussians are composed).
+//!   end. Every step runs once a used layer lies beyond it, so the Gaussians are composed: their
+//!   weights have variance `σ²` exactly ([`gaussian`]), so the composed variances add up.
 //!
-//! So a frame records a fixed sequence of dispatches: no allocation, upload, readback or host pass
-//! over the image. It differs from the one-shot path's result where the frame's blur stops short of
-//! a candidate layer (the one-shot path clamps its outermost layer's CoC to the frame's range) and
-//! by composing the cascade's Gaussians (each truncated at 3σ) instead of merging them; the
-//! layered suite measures how much.
+//! So a frame records a fixed sequence of dispatches ([`Schedule`]): no allocation, upload,
+//! readback or host pass over the image. The suites' oracle runs the same schedule over layers it
+//! plans on the host from the frame's CoC range; the two differ where the frame's blur stops short
+//! of a candidate layer (the oracle clamps its outermost layer's CoC to the range), and the layered
+//! suite measures how much.
 
 use super::context::{ContextReport, Described, DofContext, Extent, remake};
 use super::in_flight::{InFlight, per_frame};
@@ -101,12 +101,27 @@ pub fn sigma(coc: f32) -> f32 {
     coc.abs() / 4.0
 }
 
-/// Normalised Gaussian weights for `σ`: the centre, then each distance up to `ceil(3σ)`.
+/// Normalised Gaussian weights for `σ`: the centre, then each distance up to `ceil(3σ)`, whose
+/// variance is `σ²`. Samples of a Gaussian of width `σ` have less (a small `σ` much less: at
+/// `σ = 0.5`, 17% less; cut at 3σ, 3% less at any `σ`), so the cascade's steps, each small, would
+/// add up to less blur than their sum: the samples are of the width, solved by bisection, whose
+/// cut and normalised samples have variance `σ²`.
 pub fn gaussian(sigma: f32) -> Vec<f32> {
     let radius = (3.0 * sigma).ceil() as usize;
-    let w: Vec<f32> = (0..=radius).map(|i| (-((i * i) as f32) / (2.0 * sigma * sigma)).exp()).collect();
-    let total = w[0] + 2.0 * w[1..].iter().sum::<f32>();
-    w.iter().map(|v| v / total).collect()
+    let samples = |width: f64| -> Vec<f64> { (0..=radius).map(|i| (-((i * i) as f64) / (2.0 * width * width)).exp()).collect() };
+    let normalised = |w: Vec<f64>| {
+        let total = w[0] + 2.0 * w[1..].iter().sum::<f64>();
+        w.into_iter().map(move |v| v / total)
+    };
+    let variance = |width: f64| normalised(samples(width)).enumerate().map(|(i, v)| 2.0 * (i * i) as f64 * v).sum::<f64>();
+    let target = (sigma as f64).powi(2);
+    // The variance grows with the width, towards the box's `r(r + 1)/3 > σ²` (r >= 3σ).
+    let (mut lo, mut hi) = (0.0f64, 1.0 + 4.0 * sigma as f64);
+    for _ in 0..64 {
+        let mid = 0.5 * (lo + hi);
+        if variance(mid) < target { lo = mid } else { hi = mid }
+    }
+    normalised(samples(0.5 * (lo + hi))).map(|v| v as f32).collect()
 }
 
 /// What a layered context is created for.
@@ -133,65 +148,136 @@ impl LayeredContextDesc {
     }
 }
 
-/// The premultiplied RGBA buffers the passes write.
-#[derive(Clone, Copy, PartialEq)]
-enum Buf {
+/// The premultiplied RGBA buffers a schedule's steps write.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Buf {
+    /// The layer being matted and blurred.
     Layer,
+    /// The composite behind the focus (and, at the end, the whole image).
     Far,
+    /// The composite in front of the focus.
     Near,
 }
 
-/// One step of the fixed schedule; every one is gated by a word of the device plan.
-enum Op {
+/// One step of a [`Schedule`]: it runs where its gate (a word of the plan buffer, see
+/// `dof_shaders::layered::PLAN_USED` and the gates after it) is not 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Step {
+    /// Layer `k` matted into [`Buf::Layer`] with the plan's anchors, gated by its used flag.
     Matte(u32),
+    /// The separable Gaussian of `buf` with the weights at `weights_at`.
     Blur { buf: Buf, weights_at: u32, radius: u32, gate: u32 },
+    /// `layer` over `acc` ([`OVER`]) or `acc` over `layer` ([`UNDER`]), into `acc`.
     Composite { layer: Buf, acc: Buf, mode: u32, gate: u32 },
 }
 
-/// The dispatch sequence over the candidate layers, with every blur's weights.
-fn schedule(cocs: &[f32], focus: usize, cascaded: bool) -> (Vec<Op>, Vec<u32>) {
-    let mut ops = Vec::new();
-    let mut weights = Vec::new();
-    let mut blur = |ops: &mut Vec<Op>, buf: Buf, s: f32, gate: u32| {
-        if s > 0.0 {
-            let w = gaussian(s);
-            ops.push(Op::Blur { buf, weights_at: weights.len() as u32, radius: (w.len() - 1) as u32, gate });
-            weights.extend(w.iter().map(|v| v.to_bits()));
+/// The buffers a [`Schedule`] runs over: the input, the plan (its layers' anchors, used flags and
+/// the cascade's gates), every blur's weights, the four RGBA images and the output.
+#[derive(Clone, Copy, Debug)]
+pub struct ScheduleBuffers {
+    pub input: BufferId,
+    pub counts: BufferId,
+    pub plan: BufferId,
+    pub weights: BufferId,
+    pub layer: BufferId,
+    pub tmp: BufferId,
+    pub far: BufferId,
+    pub near: BufferId,
+    pub out: BufferId,
+}
+
+/// Layered DoF's dispatch sequence over a plan's layers (module docs), every step gated by the
+/// plan: the context runs it over its candidate layers and its device plan; a host check plans
+/// layers of its own into a plan buffer and runs the same schedule over them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Schedule {
+    pub steps: Vec<Step>,
+    /// Every blur's normalised Gaussian weights (f32 bits), where its step's `weights_at` says.
+    pub weights: Vec<u32>,
+}
+
+impl Schedule {
+    /// The schedule over layers of signed CoC diameters `cocs` (px, front to back) whose focus layer
+    /// is `focus`: cascaded, or one blur a layer.
+    pub fn new(cocs: &[f32], focus: usize, cascaded: bool) -> Schedule {
+        let mut steps = Vec::new();
+        let mut weights = Vec::new();
+        let mut blur = |steps: &mut Vec<Step>, buf: Buf, s: f32, gate: u32| {
+            if s > 0.0 {
+                let w = gaussian(s);
+                steps.push(Step::Blur { buf, weights_at: weights.len() as u32, radius: (w.len() - 1) as u32, gate });
+                weights.extend(w.iter().map(|v| v.to_bits()));
+            }
+        };
+        let s = |k: usize| sigma(cocs[k]);
+        let used = |k: usize| PLAN_USED + k as u32;
+        let n = cocs.len();
+        if !cascaded {
+            for k in (0..n).rev() {
+                steps.push(Step::Matte(k as u32));
+                blur(&mut steps, Buf::Layer, s(k), used(k));
+                steps.push(Step::Composite { layer: Buf::Layer, acc: Buf::Far, mode: OVER, gate: used(k) });
+            }
+            return Schedule { steps, weights };
         }
-    };
-    let s = |k: usize| sigma(cocs[k]);
-    let used = |k: usize| PLAN_USED + k as u32;
-    let n = cocs.len();
-    if !cascaded {
-        for k in (0..n).rev() {
-            ops.push(Op::Matte(k as u32));
-            blur(&mut ops, Buf::Layer, s(k), used(k));
-            ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Far, mode: OVER, gate: used(k) });
+        // Behind the focus, from the back: blur by the step to layer k, then join layer k.
+        for k in (focus..n).rev() {
+            if k + 1 < n {
+                blur(&mut steps, Buf::Far, (s(k + 1).powi(2) - s(k).powi(2)).max(0.0).sqrt(), PLAN_FAR_GATE + k as u32);
+            }
+            steps.push(Step::Matte(k as u32));
+            steps.push(Step::Composite { layer: Buf::Layer, acc: Buf::Far, mode: OVER, gate: used(k) });
         }
-        return (ops, weights);
-    }
-    // Behind the focus, from the back: blur by the step to layer k, then join layer k.
-    for k in (focus..n).rev() {
-        if k + 1 < n {
-            blur(&mut ops, Buf::Far, (s(k + 1).powi(2) - s(k).powi(2)).max(0.0).sqrt(), PLAN_FAR_GATE + k as u32);
+        // In front, from the nearest: blur by the step to layer k, then join layer k behind.
+        for k in 0..focus {
+            if k > 0 {
+                blur(&mut steps, Buf::Near, (s(k - 1).powi(2) - s(k).powi(2)).max(0.0).sqrt(), PLAN_NEAR_GATE + k as u32);
+            }
+            steps.push(Step::Matte(k as u32));
+            steps.push(Step::Composite { layer: Buf::Layer, acc: Buf::Near, mode: UNDER, gate: used(k) });
         }
-        ops.push(Op::Matte(k as u32));
-        ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Far, mode: OVER, gate: used(k) });
-    }
-    // In front, from the nearest: blur by the step to layer k, then join layer k behind.
-    for k in 0..focus {
-        if k > 0 {
-            blur(&mut ops, Buf::Near, (s(k - 1).powi(2) - s(k).powi(2)).max(0.0).sqrt(), PLAN_NEAR_GATE + k as u32);
+        if focus > 0 {
+            let gate = PLAN_NEAR_GATE + focus as u32;
+            blur(&mut steps, Buf::Near, s(focus - 1), gate);
+            steps.push(Step::Composite { layer: Buf::Near, acc: Buf::Far, mode: OVER, gate });
         }
-        ops.push(Op::Matte(k as u32));
-        ops.push(Op::Composite { layer: Buf::Layer, acc: Buf::Near, mode: UNDER, gate: used(k) });
+        Schedule { steps, weights }
     }
-    if focus > 0 {
-        let gate = PLAN_NEAR_GATE + focus as u32;
-        blur(&mut ops, Buf::Near, s(focus - 1), gate);
-        ops.push(Op::Composite { layer: Buf::Near, acc: Buf::Far, mode: OVER, gate });
+
+    /// Records the steps over `b` for `base`'s frame (its size, slots a pixel and plan layers; the
+    /// composites cleared before), then the far composite normalised into `b.out`.
+    pub fn record(&self, backend: &mut dyn Backend, base: &LayeredParams, b: &ScheduleBuffers) -> Result<()> {
+        let base = LayeredParams { gate: ALWAYS, ..*base };
+        // Every layered kernel runs one item a pixel with the same workgroup size.
+        let groups = groups_for(&LAYERED_MATTE_AT, base.width as u64 * base.height as u64);
+        let id = |buf: Buf| match buf {
+            Buf::Layer => b.layer,
+            Buf::Far => b.far,
+            Buf::Near => b.near,
+        };
+        for step in &self.steps {
+            match *step {
+                Step::Matte(k) => {
+                    let p = LayeredParams { layer: k, gate: PLAN_USED + k, ..base };
+                    let matte = layered_matte_at::Bindings { input: b.input, counts: b.counts, plan: b.plan, layer: b.layer };
+                    backend.run(matte, groups, &p, "layered/matte")?;
+                }
+                Step::Blur { buf, weights_at, radius, gate } => {
+                    let h = LayeredParams { radius, weights_at, mode: 0, gate, ..base };
+                    let v = LayeredParams { mode: 1, ..h };
+                    let across = layered_blur_gated::Bindings { src: id(buf), weights: b.weights, dst: b.tmp, plan: b.plan };
+                    backend.run(across, groups, &h, "layered/blur")?;
+                    backend.run(layered_blur_gated::Bindings { src: b.tmp, dst: id(buf), ..across }, groups, &v, "layered/blur")?;
+                }
+                Step::Composite { layer, acc, mode, gate } => {
+                    let p = LayeredParams { mode, gate, ..base };
+                    let composite = layered_composite_gated::Bindings { layer: id(layer), acc: id(acc), plan: b.plan };
+                    backend.run(composite, groups, &p, "layered/composite")?;
+                }
+            }
+        }
+        backend.run(layered_resolve::Bindings { acc: b.far, out: b.out }, groups, &base, "layered/composite")
     }
-    (ops, weights)
 }
 
 /// An `f32` from its [`dof_shaders::keys::sort_key`].
@@ -219,7 +305,7 @@ pub struct LayeredContext {
     desc: LayeredContextDesc,
     cocs: Vec<f32>,
     focus: usize,
-    ops: Vec<Op>,
+    schedule: Schedule,
     passes: Passes,
     in_flight: InFlight<()>,
     io: Option<ImageIo>,
@@ -234,7 +320,8 @@ impl LayeredContext {
         if cocs.len() > PLAN_LAYERS as usize {
             return Err(Error::InvalidArgument(format!("{} candidate layers, the device plan holds {PLAN_LAYERS}", cocs.len())));
         }
-        let (ops, weights) = schedule(&cocs, focus, desc.options.cascaded);
+        let schedule = Schedule::new(&cocs, focus, desc.options.cascaded);
+        let weights = &schedule.weights;
         let max_words = backend.limits().max_buffer_bytes / 4;
         if 4 * pixels > max_words {
             return Err(Error::TooLarge { what: "layered/layer (words)".into(), size: 4 * pixels, limit: max_words });
@@ -256,13 +343,13 @@ impl LayeredContext {
                 backend.write_buffer(plan, PLAN_COCS as u64, &coc_words)?;
             }
             if !weights.is_empty() {
-                backend.write_buffer(passes.weights, 0, &weights)?;
+                backend.write_buffer(passes.weights, 0, weights)?;
             }
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
             Ok((passes, io))
         })();
         let ((passes, io), owned) = owned.or_free(backend, made)?;
-        let ctx = LayeredContext { desc: desc.clone(), cocs, focus, ops, passes, in_flight, io, owned };
+        let ctx = LayeredContext { desc: desc.clone(), cocs, focus, schedule, passes, in_flight, io, owned };
         let mut kernels = dof_shaders::layered::KERNELS.to_vec();
         kernels.extend(dof_shaders::frame_io::KERNELS);
         kernels.extend(dof_shaders::radiance::KERNELS);
@@ -321,37 +408,10 @@ impl LayeredContext {
         let reach = layered_plan_reach::Bindings { input, counts, plan: plan_buf };
         backend.run(reach, groups_for(&LAYERED_PLAN_REACH, pixels), &plan, "layered/plan")?;
         backend.run(layered_plan_end::Bindings { plan: plan_buf }, [1, 1, 1], &plan, "layered/plan")?;
-        let base =
-            LayeredParams { width: f.width, height: f.height, max_layers: f.layer_count(), layers, gate: ALWAYS, ..Default::default() };
-        // Every layered kernel runs one item a pixel with the same workgroup size.
-        let groups = groups_for(&LAYERED_MATTE_AT, pixels);
-        let id = |buf: Buf| match buf {
-            Buf::Layer => b.layer,
-            Buf::Far => b.far,
-            Buf::Near => b.near,
-        };
-        for op in &self.ops {
-            match *op {
-                Op::Matte(k) => {
-                    let p = LayeredParams { layer: k, gate: PLAN_USED + k, ..base };
-                    let matte = layered_matte_at::Bindings { input, counts, plan: plan_buf, layer: b.layer };
-                    backend.run(matte, groups, &p, "layered/matte")?;
-                }
-                Op::Blur { buf, weights_at, radius, gate } => {
-                    let h = LayeredParams { radius, weights_at, mode: 0, gate, ..base };
-                    let v = LayeredParams { mode: 1, ..h };
-                    let across = layered_blur_gated::Bindings { src: id(buf), weights: b.weights, dst: b.tmp, plan: plan_buf };
-                    backend.run(across, groups, &h, "layered/blur")?;
-                    backend.run(layered_blur_gated::Bindings { src: b.tmp, dst: id(buf), ..across }, groups, &v, "layered/blur")?;
-                }
-                Op::Composite { layer, acc, mode, gate } => {
-                    let p = LayeredParams { mode, gate, ..base };
-                    let composite = layered_composite_gated::Bindings { layer: id(layer), acc: id(acc), plan: plan_buf };
-                    backend.run(composite, groups, &p, "layered/composite")?;
-                }
-            }
-        }
-        backend.run(layered_resolve::Bindings { acc: b.far, out: output }, groups, &base, "layered/composite")?;
+        let base = LayeredParams { width: f.width, height: f.height, max_layers: f.layer_count(), layers, ..Default::default() };
+        let (layer, tmp, far, near, weights) = (b.layer, b.tmp, b.far, b.near, b.weights);
+        let buffers = ScheduleBuffers { input, counts, plan: plan_buf, weights, layer, tmp, far, near, out: output };
+        self.schedule.record(backend, &base, &buffers)?;
         record_output(backend, f, self.io.as_ref())
     }
 
@@ -445,12 +505,15 @@ mod tests {
     use super::*;
 
     #[test]
-    fn gaussian_weights_sum_to_one() {
-        for s in [0.25f32, 1.0, 7.3, 64.0] {
+    fn gaussian_weights_sum_to_one_with_variance_sigma_squared() {
+        for s in [0.25f32, 0.5, 1.0, 7.3, 64.0] {
             let w = gaussian(s);
             let total = w[0] + 2.0 * w[1..].iter().sum::<f32>();
             assert!((total - 1.0).abs() < 1e-5, "{s}: {total}");
             assert_eq!(w.len(), (3.0 * s).ceil() as usize + 1);
+            let variance: f64 = w.iter().enumerate().map(|(i, &v)| 2.0 * (i * i) as f64 * v as f64).sum();
+            assert!((variance / (s as f64).powi(2) - 1.0).abs() < 1e-4, "{s}: variance {variance}");
+            assert!(w.windows(2).all(|p| p[0] >= p[1]), "{s}: not decreasing");
         }
     }
 

@@ -11,7 +11,8 @@ use super::io::{
     Frame, ImageIo, Owned, check_frame, clamped_summary, output_buffer, ready, record_clamp_count, record_front, record_input,
     record_output,
 };
-use super::recording::{Recording, capture};
+use super::recording::Recording;
+use super::transient::{self, Transients};
 use crate::aperture::ApertureShape;
 use crate::backend::{Backend, BufferId, RunKernel, groups_for, push_words};
 use crate::error::{Error, Result};
@@ -65,6 +66,8 @@ impl BokehContextDesc {
     }
 }
 
+/// The context's buffers: the aperture mask and the per-frame counters are the backend's, the rest
+/// stand-ins for transients (given their buffers as each frame is recorded).
 struct Buffers {
     mask: BufferId,
     slots: BufferId,
@@ -87,6 +90,8 @@ pub struct BokehContext {
     in_flight: InFlight<()>,
     io: Option<ImageIo>,
     scan: ScanScratch,
+    /// The buffers of `b` a frame uses only within itself, placed by their lifetimes.
+    transients: Transients,
     owned: Owned,
 }
 
@@ -116,8 +121,8 @@ impl BokehContext {
         }
         let pixels = w as u64 * h as u64;
         let mask_words = desc.options.aperture.mask_words();
-        let sizes = [
-            (mask_words.len() as u64, "bokeh/aperture-mask"),
+        // What a frame uses only within itself, placed by lifetime once the context exists.
+        let transient = [
             (pixels, "bokeh/slots"),
             (3 * pixels, "bokeh/color"),
             (pixels, "bokeh/depth"),
@@ -127,45 +132,39 @@ impl BokehContext {
             (4 * pixels, "bokeh/sprite-image"),
         ];
         let max_words = backend.limits().max_buffer_bytes / 4;
-        let widest = sizes
+        let widest = transient
             .iter()
-            .map(|s| (s.0, s.1))
+            .copied()
+            .chain([(mask_words.len() as u64, "bokeh/aperture-mask")])
             .chain([(dof_shaders::slot::SLOT_WORDS as u64 * pixels * desc.max_layers as u64, "input slots")])
             .max_by_key(|s| s.0);
         if let Some((words, what)) = widest.filter(|s| s.0 > max_words) {
             return Err(Error::TooLarge { what: format!("{what} (words)"), size: words, limit: max_words });
         }
         let in_flight = InFlight::new(desc.frames_in_flight)?;
+        let mut t = Transients::default();
+        let [slots, color, depth, rest, sprites, blur, sprite_image] = transient.map(|(words, label)| t.declare(words, label));
         let mut owned = Owned::default();
         let made = (|| {
-            let mut ids = sizes.iter().map(|&(words, label)| owned.make(backend, words, label)).collect::<Result<Vec<_>>>()?;
+            let mask = owned.make(backend, mask_words.len() as u64, "bokeh/aperture-mask")?;
+            backend.write_buffer(mask, 0, &mask_words)?;
             let frames = desc.frames_in_flight;
-            ids.extend(per_frame(&mut owned, backend, frames, ARGS_WORDS as u64 + 1, "bokeh/counters")?);
+            let counters = per_frame(&mut owned, backend, frames, ARGS_WORDS as u64 + 1, "bokeh/counters")?;
             // Per frame: the gather's window radius, then the count of clamped input colours.
-            ids.extend(per_frame(&mut owned, backend, frames, 2, "bokeh/gather-radius")?);
+            let radius = per_frame(&mut owned, backend, frames, 2, "bokeh/gather-radius")?;
             let io = if desc.image_io { Some(ImageIo::new(backend, pixels, &mut owned)?) } else { None };
-            backend.write_buffer(ids[0], 0, &mask_words)?;
             // The sprite draw's target for the largest frame, so that no frame makes one.
             backend.reserve_draw_target(&BOKEH_DRAW, [w, h])?;
             let scan = ScanScratch::new(backend, pixels)?;
-            Ok((ids, io, scan))
+            Ok((Buffers { mask, slots, color, depth, rest, sprites, blur, sprite_image, counters, radius }, io, scan))
         })();
-        let ((ids, io, scan), mut owned) = owned.or_free(backend, made)?;
+        let ((b, io, scan), mut owned) = owned.or_free(backend, made)?;
         owned.adopt(scan.buffers());
-        let frames = desc.frames_in_flight as usize;
-        let b = Buffers {
-            mask: ids[0],
-            slots: ids[1],
-            color: ids[2],
-            depth: ids[3],
-            rest: ids[4],
-            sprites: ids[5],
-            blur: ids[6],
-            sprite_image: ids[7],
-            counters: ids[8..8 + frames].to_vec(),
-            radius: ids[8 + frames..].to_vec(),
-        };
-        let ctx = BokehContext { desc: desc.clone(), b, in_flight, io, scan, owned };
+        let mut ctx = BokehContext { desc: desc.clone(), b, in_flight, io, scan, owned, transients: t };
+        if let Err(e) = transient::place(&mut ctx, backend, desc.extent(), 0, |c| (&mut c.transients, &mut c.owned), Self::commands) {
+            ctx.destroy(backend);
+            return Err(e);
+        }
         // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own
         // work (Vulkan still makes its draw target at the first draw of a size).
         let mut kernels: Vec<&'static dof_shaders::KernelDesc> = dof_shaders::bokeh::KERNELS.to_vec();
@@ -187,12 +186,12 @@ impl BokehContext {
 
     pub fn recording(&mut self, backend: &dyn Backend, f: &Frame) -> Result<Recording> {
         check_frame(backend, f, &self.owned, self.desc.extent(), self.io.as_ref())?;
-        let recording = capture(self, backend, f, Self::commands)?;
+        let recording = transient::capture_with_transients(self, backend, f, |c| &mut c.transients, Self::commands)?;
         self.in_flight.recorded(());
         Ok(recording)
     }
 
-    /// The frame's commands (captured, and checked, by [`capture`]).
+    /// The frame's commands (captured, and checked, by [`transient::capture_with_transients`]).
     fn commands(&mut self, backend: &mut dyn Backend, f: &Frame) -> Result<()> {
         let d = &self.desc;
         let b = &self.b;

@@ -1,15 +1,14 @@
 //! One splatting frame with every stage's buffers read back, for comparing backends stage by stage.
 //! The frame runs as `dof::methods::splat::splat` runs it (its pool grown to the frame's lists),
-//! then once more with its recording encoded in parts, each submitted: each transient
+//! then once more with its recording encoded in parts, each submitted (`splat_then`): each transient
 //! (`Recording::transients`) is read as the last command that uses it leaves it, since a later
 //! stage's transient may share its buffer.
 
-use dof::backend::{Backend, CommandTime, with_buffers};
-use dof::frame::splat::{SplatContext, SplatContextDesc, SplatOptions, SplatReport};
-use dof::frame::{CountBuffer, DofContext, Extent, Frame, RgbBuffer, SlotBuffer};
+use dof::backend::{Backend, CommandTime};
+use dof::frame::Frame;
+use dof::frame::splat::{SplatContext, SplatOptions, SplatReport};
 use dof::layers::{LayeredImage, RgbImage};
-use dof::methods::buffers::{read_rgb, slot_words};
-use dof::methods::one_shot::grow_to_fit;
+use dof::methods::splat::splat_then;
 use dof_core::error::{Error, Result};
 use dof_shaders::lens::ThinLens;
 use dof_shaders::splat::SplatParams;
@@ -43,31 +42,12 @@ pub struct Staged {
 
 /// Renders `image` through `lens` by tiled splatting on `backend`, reading every stage's buffers.
 pub fn splat_with_stages(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions) -> Result<Staged> {
-    let (w, h, layers) = (image.width, image.height, image.max_layers);
-    let options = SplatOptions { footprint_side: options.footprint_side.max(image.footprint_grid()), ..options.clone() };
-    let mut ctx = SplatContext::new(backend, &SplatContextDesc::new(Extent::new(w, h, layers), options))?;
-    let pixels = w as u64 * h as u64;
-    let input = slot_words(image);
-    let sizes = [(input.len() as u64, "splat/input"), (pixels, "splat/input-counts"), (3 * pixels, "splat/out")];
-    let result = with_buffers(backend, &sizes, |backend, io| {
-        backend.write_buffer(io[0], 0, &input)?;
-        backend.write_buffer(io[1], 0, &image.counts)?;
-        let frame = Frame::layers(w, h, layers, *lens, SlotBuffer::current(io[0]), CountBuffer(io[1]), RgbBuffer(io[2]))
-            .with_footprints(image.footprint_grid());
-        let mut run_frame = |ctx: &mut dyn DofContext, backend: &mut dyn Backend| -> Result<()> {
-            ctx.record(backend, &frame)?;
-            backend.submit().map(drop)
-        };
-        run_frame(&mut ctx, backend)?;
-        grow_to_fit(&mut ctx, backend, &mut run_frame)?;
-        let (reads, stages) = record_in_parts(backend, &mut ctx, &frame)?;
-        let mut report = ctx.report(backend)?;
-        report.input_fragments = Some(image.counts.iter().map(|&n| n.min(layers) as u64).sum());
-        let intermediates = intermediates(&ctx.kernel_params(&frame), &report, reads)?;
-        Ok(Staged { image: read_rgb(backend, io[2], w, h)?, report, stages, intermediates })
-    });
-    ctx.destroy(backend);
-    result
+    let (out, (reads, stages, params)) = splat_then(backend, image, lens, options, |backend, ctx, frame| {
+        let (reads, stages) = record_in_parts(backend, ctx, frame)?;
+        Ok((reads, stages, ctx.kernel_params(frame)))
+    })?;
+    let intermediates = intermediates(&params, &out.report, reads)?;
+    Ok(Staged { image: out.image, report: out.report, stages, intermediates })
 }
 
 /// Each transient of the frame, by label, as the last command that uses it left it.

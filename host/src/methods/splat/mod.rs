@@ -10,4 +10,4 @@
 mod run;
 
 pub use crate::frame::splat::{Merge, SplatOptions, SplatPlanReport, SplatReport};
-pub use run::{SplatOutput, splat};
+pub use run::{SplatOutput, splat, splat_then};

@@ -25,6 +25,19 @@ pub struct SplatOutput {
 
 /// Renders `image` through `lens` by tiled splatting on `backend`.
 pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, options: &SplatOptions) -> Result<SplatOutput> {
+    splat_then(backend, image, lens, options, |_, _, _| Ok(())).map(|(out, ())| out)
+}
+
+/// [`splat`], then `then` with the backend, the context and the frame once the frame has run,
+/// before the image and the report are read: for a caller that reads the context's buffers or
+/// records the frame again (the suites' stage-by-stage comparison).
+pub fn splat_then<T>(
+    backend: &mut dyn Backend,
+    image: &LayeredImage,
+    lens: &ThinLens,
+    options: &SplatOptions,
+    then: impl FnOnce(&mut dyn Backend, &mut SplatContext, &Frame) -> Result<T>,
+) -> Result<(SplatOutput, T)> {
     crate::lens::check(lens)?;
     crate::frame::splat::check_options(options)?;
     let (w, h, layers) = (image.width, image.height, image.max_layers);
@@ -54,9 +67,10 @@ pub fn splat(backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens, o
         };
         run_frame(&mut ctx, backend)?;
         grow_to_fit(&mut ctx, backend, &mut run_frame)?;
+        let then = then(backend, &mut ctx, &frame)?;
         let mut report = ctx.report(backend)?;
         report.input_fragments = Some(image.counts.iter().map(|&n| n.min(layers) as u64).sum());
-        Ok(SplatOutput { image: read_rgb(backend, io[2], w, h)?, report, stages })
+        Ok((SplatOutput { image: read_rgb(backend, io[2], w, h)?, report, stages }, then))
     });
     ctx.destroy(backend);
     result

@@ -160,11 +160,9 @@ impl BokehContext {
         })();
         let ((b, io, scan), mut owned) = owned.or_free(backend, made)?;
         owned.adopt(scan.buffers());
-        let mut ctx = BokehContext { desc: desc.clone(), b, in_flight, io, scan, owned, transients: t };
-        if let Err(e) = transient::place(&mut ctx, backend, desc.extent(), 0, |c| (&mut c.transients, &mut c.owned), Self::commands) {
-            ctx.destroy(backend);
-            return Err(e);
-        }
+        let ctx = BokehContext { desc: desc.clone(), b, in_flight, io, scan, owned, transients: t };
+        let parts: fn(&mut Self) -> (&mut Transients, &mut Owned) = |c| (&mut c.transients, &mut c.owned);
+        let ctx = transient::placed(ctx, backend, desc.extent(), 0, parts, Self::commands, Self::destroy)?;
         // Pipelines now and the buffers' zeroing submitted now: the first frame records only its own
         // work (Vulkan still makes its draw target at the first draw of a size).
         let mut kernels: Vec<&'static dof_shaders::KernelDesc> = dof_shaders::bokeh::KERNELS.to_vec();

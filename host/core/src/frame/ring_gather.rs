@@ -150,11 +150,9 @@ impl RingGatherContext {
             Ok((stats, io))
         })();
         let ((stats, io), owned) = owned.or_free(backend, made)?;
-        let mut ctx = RingGatherContext { desc: desc.clone(), passes, in_flight, stats, io, owned, transients: t };
-        if let Err(e) = transient::place(&mut ctx, backend, desc.extent(), 0, |c| (&mut c.transients, &mut c.owned), Self::commands) {
-            ctx.destroy(backend);
-            return Err(e);
-        }
+        let ctx = RingGatherContext { desc: desc.clone(), passes, in_flight, stats, io, owned, transients: t };
+        let parts: fn(&mut Self) -> (&mut Transients, &mut Owned) = |c| (&mut c.transients, &mut c.owned);
+        let ctx = transient::placed(ctx, backend, desc.extent(), 0, parts, Self::commands, Self::destroy)?;
         let mut kernels = dof_shaders::ring_gather::KERNELS.to_vec();
         kernels.extend(dof_shaders::frame_io::KERNELS);
         kernels.extend(dof_shaders::radiance::KERNELS);

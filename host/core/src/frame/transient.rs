@@ -192,26 +192,34 @@ impl StandIns for Transients {
 /// The frame's commands of a context (`ctx`'s `commands`, run against a capturing backend).
 pub(crate) type Commands<C> = fn(&mut C, &mut dyn Backend, &Frame) -> Result<()>;
 
-/// Places the transients of a context (reached through `parts`, beside the owner of its buffers):
-/// records a frame of extent `max` with input footprints on a `footprint_side` grid (every
-/// optional stage the context records) over their stand-ins, and makes their buffers from it.
-pub(crate) fn place<C>(
-    ctx: &mut C,
+/// A new context with its transients placed (reached through `parts`, beside the owner of its
+/// buffers): records a frame of extent `max` with input footprints on a `footprint_side` grid
+/// (every optional stage the context records) over their stand-ins, and makes their buffers from
+/// it. Where that fails, the context is destroyed and the error passed on.
+pub(crate) fn placed<C>(
+    mut ctx: C,
     backend: &mut dyn Backend,
     max: Extent,
     footprint_side: u32,
     parts: fn(&mut C) -> (&mut Transients, &mut Owned),
     commands: Commands<C>,
-) -> Result<()> {
-    let mut t = std::mem::take(parts(ctx).0);
+    destroy: impl FnOnce(C, &mut dyn Backend),
+) -> Result<C> {
+    let mut t = std::mem::take(parts(&mut ctx).0);
     let (slots, counts, out) = (t.caller("slots"), t.caller("counts"), t.caller("output"));
     let lens = ThinLens { focal_length: 0.05, aperture_radius: 0.01, focus_distance: 1.0, pixels_per_unit: 1000.0 };
     let frame = Frame::layers(max.width, max.height, max.layers, lens, SlotBuffer::current(slots), CountBuffer(counts), RgbBuffer(out))
         .with_footprints(footprint_side);
-    let planned = capture_over(ctx, backend, Some(&t), &frame, commands);
-    let placed = planned.and_then(|c| t.place(backend, parts(ctx).1, &c));
-    *parts(ctx).0 = t;
-    placed
+    let planned = capture_over(&mut ctx, backend, Some(&t), &frame, commands);
+    let made = planned.and_then(|c| t.place(backend, parts(&mut ctx).1, &c));
+    *parts(&mut ctx).0 = t;
+    match made {
+        Ok(()) => Ok(ctx),
+        Err(e) => {
+            destroy(ctx, backend);
+            Err(e)
+        }
+    }
 }
 
 /// A context's recording of frame `f` with its transients placed: recorded over their stand-ins,

@@ -219,7 +219,7 @@ impl SplatContext {
         // scratch for its long lists, they share it (see `SegmentedSort::scratch_keys`).
         let sorted_keys_in_scratch = sort.scratch_keys();
         // What a frame uses only within itself is placed by lifetime once the context exists
-        // (`Self::place_transients`); the rest is kept from frame to frame, or read back.
+        // (`transient::placed`); the rest is kept from frame to frame, or read back.
         let mut t = Transients::default();
         let mut owned = Owned::default();
         let built = (|| {
@@ -273,7 +273,7 @@ impl SplatContext {
         if desc.image_io {
             kernels.extend(dof_shaders::frame_io::KERNELS);
         }
-        let mut ctx = SplatContext {
+        let ctx = SplatContext {
             desc: desc.clone(),
             radius_cap,
             merge_steps,
@@ -291,13 +291,9 @@ impl SplatContext {
             serial: backend.limits().serial_invocations,
         };
         // Placed from a frame of the largest extent, with every optional stage.
-        let max = ctx.desc.extent();
-        if let Err(e) =
-            transient::place(&mut ctx, backend, max, desc.options.footprint_side, |c| (&mut c.transients, &mut c.owned), Self::commands)
-        {
-            ctx.destroy(backend);
-            return Err(e);
-        }
+        let parts: fn(&mut Self) -> (&mut Transients, &mut Owned) = |c| (&mut c.transients, &mut c.owned);
+        let (max, side) = (desc.extent(), desc.options.footprint_side);
+        let mut ctx = transient::placed(ctx, backend, max, side, parts, Self::commands, Self::destroy)?;
         ctx.bytes = ctx.owned.bytes() + ctx.sort.bytes();
         super::io::ready(backend, ctx, &kernels, &[], Self::destroy)
     }

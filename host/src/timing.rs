@@ -60,7 +60,7 @@ impl RunTimes {
 
 /// How a timing run warms up: at least `frames` untimed frames, and on until `ms` of wall time have
 /// passed (at most [`Warmup::MAX_FRAMES`]): a GPU raises its clocks only after some busy time, and
-/// frames timed before that ran three times slower on an H200.
+/// frames timed before that run several times slower.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Warmup {
     pub frames: u32,

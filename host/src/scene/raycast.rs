@@ -45,11 +45,8 @@ use crate::layers::{Fragment, LayerStats, LayeredImage, RgbImage, crop_plane};
 pub use crate::frame::LayerOptions;
 
 /// Sub-samples a pixel that `dof render`, `dof eval` and `dof bench frame` take by default (see
-/// [`LayerOptions::subsamples`]): 4, chosen by measurement (docs/measurements.md, "Area-integrated
-/// layers": on `columns` at 320x180 it lifts multi-layer splatting from 33.83 to 39.00 dB, above the
-/// 16-spp antialiased pinhole, and on `highlights` it scores best, for twice the device peel's
-/// memory; 16 gains 4 dB more on `columns` for 5 times the memory). The library's
-/// `LayerOptions::default()` keeps 1 (point-sampled).
+/// [`LayerOptions::subsamples`]): 4, where the error against memory turns (docs/measurements.md,
+/// "Area-integrated layers"). The library's `LayerOptions::default()` keeps 1 (point-sampled).
 pub const DEFAULT_SUBSAMPLES: u32 = 4;
 
 /// Errors unless `n` is a sub-sample count the layers take (1, 4, 9 or 16).

@@ -418,8 +418,7 @@ pub static METHODS: &[MethodInfo] = &[
         knob: None,
         options: &[spec::SAMPLES],
         stages: &[stage("raytrace/hierarchy", Column::Merge), stage("raytrace/", Column::Apply)],
-        // Rays per pixel. 64 (another 1.5 dB on `simple`, 5 s a run on lavapipe) is left out to
-        // keep the full evaluation within 20 minutes on lavapipe.
+        // Rays per pixel. 64 is left out to keep the full evaluation short on lavapipe.
         sweep: Sweep { points: &["samples=4", "samples=16", "samples=32"], full: &[1, 2], quick: &[0, 1], timed: None },
         // A ray grazing a pixel corner may go either way: one pixel in 200 may differ.
         tolerances: Tolerances { in_focus: 0.0, energy: 1e-5, vulkan: VulkanTolerance { rel: 1e-5, scale: Scale::Value(1.0), share: 200 } },
@@ -449,9 +448,8 @@ pub static METHODS: &[MethodInfo] = &[
             spec::LAYERS_PER_DOUBLING,
         ],
         stages: &[stage("layered/matte", Column::Merge), stage("layered/", Column::Apply)],
-        // Cascaded or one blur per layer, at two layers per doubling of the CoC. One layer per
-        // doubling costs about as much on these scenes and loses up to 1.3 dB (`columns`); left
-        // out to keep the evaluation within 20 minutes on lavapipe.
+        // Cascaded or one blur per layer, at two layers per doubling of the CoC (one per doubling
+        // costs about as much and loses accuracy; left out to keep the evaluation short).
         sweep: Sweep {
             points: &["layers_per_doubling=2", "no_cascade=true layers_per_doubling=2"],
             full: &[0, 1],

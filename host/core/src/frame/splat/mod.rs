@@ -29,16 +29,14 @@ pub use options::{Merge, SplatOptions, SplatPlanReport};
 pub use report::{LLVMPIPE_SAFE_LIST, SplatReport};
 
 /// Most tile-list entries a context may hold: 2^29, so that each list buffer stays within 2 GiB.
-/// Measured on an NVIDIA H100 (driver 580.159.04): a 3840x2160 unmerged frame whose list buffers
-/// held 584 million entries (2.3 GB each, under the device's 4 GiB limit) came back with almost
-/// every list empty and no error, while at 1920x1080 (63 million entries) its lists were whole.
+/// A GPU with list buffers past 2 GiB (though under its 4 GiB buffer limit) has returned almost
+/// every list empty without an error (docs/limits.md).
 pub const MAX_LIST_ENTRIES: u64 = 1 << 29;
 /// List entries a context holds per pixel of its maximum extent unless told otherwise, and the
 /// least it holds (so that small frames with strong blur, whose lists are long, still fit).
-/// Measured merged 4x4 with 4 layers: the built-in scenes use 0.47 (`simple`) to 0.90 (`railing`)
-/// entries a pixel at 1920x1080, but `fence`, `railing` and `highlights` want more than 1.25 at
-/// 3840x2160 (lists grow with the blur in pixels), so the pool is not cut below 2. Unmerged, every
-/// built-in scene wants more than 2 at 1920x1080 (the one-shot path grows the pool).
+/// Merged 4x4 with 4 layers, every built-in scene fits at 1920x1080 and 3840x2160; lists grow with
+/// the blur in pixels, and a smaller pool overflows at 4K (docs/measurements.md, "Lists, memory
+/// and frames in flight"). Unmerged frames want more (the one-shot path grows the pool).
 pub const DEFAULT_LIST_ENTRIES_PER_PIXEL: u64 = 2;
 pub const MIN_LIST_ENTRIES: u64 = 1 << 20;
 /// The longest list a context sorts unless told otherwise: the largest the device sorts in

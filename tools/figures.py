@@ -1,0 +1,332 @@
+#!/usr/bin/env python3
+"""The current figures of the docs: tables made from what `dof eval` and `dof bench` write.
+
+    python3 tools/figures.py measure [--dof PATH]   run the measurements into docs/figures/data/
+    python3 tools/figures.py write                  rewrite every generated table in docs/
+    python3 tools/figures.py check                  fail where a generated table differs from its data
+
+A generated table sits in a Markdown file between `<!-- figures:NAME -->` and
+`<!-- /figures:NAME -->`; `write` replaces what lies between with `TABLES[NAME]` of the data, and
+`check` (run by CI) fails if any block differs, so no figure in such a block is edited by hand.
+The data is the JSON the commands wrote, kept in docs/figures/data/ (and the GPU runs' logs in
+docs/gpu/), each file naming its machine. `measure` runs on the CPU backend of the machine it
+is run on: its times are no GPU figures. GPU tables come from `tools/gpu_run.sh` logs.
+
+Standard library only.
+"""
+import argparse, glob, json, os, platform, re, shutil, subprocess, sys, tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DATA = os.path.join(ROOT, "docs", "figures", "data")
+# The GPU run the GPU tables come from (`tools/gpu_run.sh`'s output) and the commit it ran.
+GPU_RUN = os.path.join(ROOT, "docs", "gpu", "h200-2026-11-28")
+GPU_RUN_COMMIT = "557bdcc"
+DOCS = ["docs/measurements.md", "docs/methods.md"]
+
+# The evaluation's scenes (all built-in opaque ones) and the point-sampled comparison of
+# docs/methods.md (its per-method tables are point-sampled).
+EVAL_SCENES = "simple,railing,columns,highlights,fence,edges"
+POINT_SCENES = "simple,railing,columns,highlights"
+POINT_METHODS = "layered,gather,multilayer"
+# The evaluation's plots the docs show.
+PLOTS = ["simple-error-vs-time.png", "simple-max-coc.png", "railing-tile-size.png"]
+METHODS = ["multilayer", "tiled", "gather", "ring-gather", "scatter-gather", "bokeh", "raytrace", "layered"]
+
+
+# ---- measuring -------------------------------------------------------------------------------
+
+def run(cmd, **kw):
+    print("+", " ".join(cmd), file=sys.stderr, flush=True)
+    return subprocess.run(cmd, check=True, **kw)
+
+
+def machine():
+    """What the CPU figures ran on."""
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo") as f:
+            cpu = next(l.split(":", 1)[1].strip() for l in f if l.startswith("model name"))
+    except (OSError, StopIteration):
+        pass
+    return {"cpu": cpu, "cores": os.cpu_count()}
+
+
+def commit():
+    try:
+        return subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def save(name, value):
+    with open(os.path.join(DATA, name), "w") as f:
+        json.dump(value, f, indent=1, sort_keys=True)
+        f.write("\n")
+
+
+def measure(dof):
+    os.makedirs(DATA, exist_ok=True)
+    about = {"machine": machine(), "commit": commit(), "dof": dof}
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, extra in [
+            # The plots of the first come into docs/figures/ (PLOTS).
+            ("eval-cpu.json", ["--scenes", EVAL_SCENES]),
+            ("eval-cpu-point.json", ["--scenes", POINT_SCENES, "--methods", POINT_METHODS, "--subsamples", "1", "--coc-sweep", "none", "--no-plots"]),
+        ]:
+            out = os.path.join(tmp, name)
+            run([dof, "eval", "--backend", "cpu", "--runs", "3", "--out", out] + extra)
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)
+            save(name, {"about": about, "command": f"dof eval --backend cpu --runs 3 {' '.join(extra)}", "report": report})
+            for plot in PLOTS if name == "eval-cpu.json" else []:
+                shutil.copy(os.path.join(out, plot), os.path.join(ROOT, "docs", "figures", plot))
+    frame = ["bench", "frame", "--backend", "cpu", "--json"]
+    rows = []
+    for m in METHODS:
+        cmd = [dof] + frame + ["--method", m, "--scene", "railing", "--width", "1920", "--height", "1080", "--frames", "1", "--warmup", "0", "--warmup-ms", "0"]
+        rows.append(json.loads(run(cmd, capture_output=True, text=True).stdout))
+    save("memory-1080p.json", {"about": about, "command": "dof bench frame --backend cpu --scene railing --width 1920 --height 1080 --frames 1", "rows": rows})
+    cmd = [dof] + frame + ["--method", "multilayer", "--merge", "4x4", "--scene", "railing", "--width", "1920", "--height", "1080", "--frames", "5", "--warmup", "1"]
+    bench = json.loads(run(cmd, capture_output=True, text=True).stdout)
+    # The bound's cost of one disc test, measured on the same machine (docs/perf/disc-test-cost.rs).
+    with tempfile.TemporaryDirectory() as tmp:
+        exe = os.path.join(tmp, "disc-test-cost")
+        run(["rustc", "-C", "opt-level=3", "-o", exe, os.path.join(ROOT, "docs", "perf", "disc-test-cost.rs")])
+        line = run([exe], capture_output=True, text=True).stdout
+    ns = float(re.search(r"([0-9.]+) ns a test", line).group(1))
+    save("cpu-frame-1080p.json", {"about": about, "command": " ".join(["dof"] + cmd[1:]), "frame": bench, "ns_per_disc_test": ns, "disc_test_output": line.strip()})
+
+
+# ---- tables ----------------------------------------------------------------------------------
+
+def load(name):
+    with open(os.path.join(DATA, name)) as f:
+        return json.load(f)
+
+
+def provenance(d):
+    m = d["about"]["machine"]
+    return f"`{d['command']}` at commit {d['about']['commit']}, {m['cpu']}, {m['cores']} threads"
+
+
+def db(v):
+    return "inf" if v is None or v == float("inf") else f"{v:.2f}"
+
+
+def records(d, **match):
+    return [r for r in d["report"]["records"] if all(r.get(k) == v for k, v in match.items())]
+
+
+def eval_every_method():
+    """Every method and setting of the evaluation on `simple`: time on the CPU backend and error."""
+    d = load("eval-cpu.json")
+    scene = next(s for s in d["report"]["scenes"] if s["name"] == "simple")
+    lines = [
+        f"`simple` at {scene['width']}x{scene['height']} against its exact reference ({scene['reference_spp']} spp), "
+        f"the partial-occlusion region {100 * scene['occlusion_region_share']:.1f}% of the pixels. Time: the median of "
+        f"{d['report']['runs']} frames' kernel time through one context on the CPU backend (no GPU figure). "
+        f"From {provenance(d)}.",
+        "",
+        "| method | setting | CPU backend (ms) | PSNR full / region (dB) | FLIP full / region |",
+        "|---|---|---|---|---|",
+    ]
+    for r in records(d, scene="simple"):
+        t = "-" if r["backend"] == "host" else f"{r['time_ms']:.1f}"
+        lines.append(f"| {r['method']} | {r['setting']} | {t} | {db(r['psnr_db'])} / {db(r['psnr_masked_db'])} "
+                     f"| {r['flip']:.4f} / {r['flip_masked']:.4f} |")
+    return lines
+
+
+def eval_against_ring_gather():
+    """Multi-layer splatting (merged 4x4) against the ring gather (5 rings), every scene."""
+    d = load("eval-cpu.json")
+    lines = [
+        "Multi-layer splatting merged 4x4 against the ring gather with 5 rings, each scene at its evaluation "
+        f"size, on the CPU backend (no GPU figure). From {provenance(d)}.",
+        "",
+        "| scene | multilayer (ms) | ring gather (ms) | ratio | multilayer PSNR full / region (dB) | ring gather PSNR (dB) |",
+        "|---|---|---|---|---|---|",
+    ]
+    for s in d["report"]["scenes"]:
+        ml = records(d, scene=s["name"], method="multilayer", setting="merge=4x4 tile=16")
+        rg = records(d, scene=s["name"], method="ring-gather", setting="rings=5")
+        if ml and rg:
+            ml, rg = ml[0], rg[0]
+            lines.append(f"| {s['name']} | {ml['time_ms']:.1f} | {rg['time_ms']:.1f} | {ml['time_ms'] / rg['time_ms']:.2f} "
+                         f"| {db(ml['psnr_db'])} / {db(ml['psnr_masked_db'])} | {db(rg['psnr_db'])} / {db(rg['psnr_masked_db'])} |")
+    return lines
+
+
+def layered_point_sampled():
+    """docs/methods.md's layered DoF table: cascaded and not, against gather and multi-layer."""
+    d = load("eval-cpu-point.json")
+    cols = [("layered", "layers_per_doubling=2"), ("layered", "no_cascade=true layers_per_doubling=2"),
+            ("gather", None), ("multilayer", "merge=none tile=16")]
+    lines = [
+        "Point-sampled layers (`--subsamples 1`), each scene at its evaluation size against its exact reference, "
+        f"full frame / region (dB), 2 layers per doubling. From {provenance(d)}.",
+        "",
+        "| scene | cascaded | non-cascaded | gather (its best setting) | multilayer, no merge |",
+        "|---|---|---|---|---|",
+    ]
+    for s in d["report"]["scenes"]:
+        cells = []
+        for method, setting in cols:
+            rs = records(d, scene=s["name"], method=method)
+            rs = [r for r in rs if setting is None or r["setting"] == setting]
+            if not rs:
+                cells.append("-")
+                continue
+            best = max(rs, key=lambda r: r["psnr_masked_db"])
+            cells.append(f"{db(best['psnr_db'])} / {db(best['psnr_masked_db'])}")
+        lines.append(f"| {s['name']} | " + " | ".join(cells) + " |")
+    return lines
+
+
+def memory_1080p():
+    d = load("memory-1080p.json")
+    lines = [
+        "Device bytes of each method's context at 1920x1080 with 4 layers (the registry's default options, "
+        f"one frame in flight, `device_bytes`). From {provenance(d)}; the CPU backend and Vulkan hold the same.",
+        "",
+        "| method | MB |",
+        "|---|---|",
+    ]
+    for r in d["rows"]:
+        lines.append(f"| {r['method']} | {r['device_bytes'] / 1e6:.1f} |")
+    return lines
+
+
+def cpu_frame_1080p():
+    d = load("cpu-frame-1080p.json")
+    f = d["frame"]
+    tests = f["list_entries"] * 256
+    bound_s = tests * d["ns_per_disc_test"] * 1e-9 / d["about"]["machine"]["cores"]
+    t = f["table1_ms"]
+    return [
+        f"`railing` at 1920x1080, multi-layer splatting merged 4x4, on the CPU backend. From {provenance(d)}.",
+        "",
+        "| frame ms (p10-p90) | merge | splat | sort | apply | list entries | disc tests | ns a test | bound (s, all threads) | frame / bound |",
+        "|---|---|---|---|---|---|---|---|---|---|",
+        f"| {f['frame_ms']:.1f} ({f['frame_ms_p10']:.1f}-{f['frame_ms_p90']:.1f}) | {t['merge']:.1f} | {t['splat']:.1f} | {t['sort']:.1f} "
+        f"| {t['apply']:.1f} | {f['list_entries']:,} | {tests / 1e6:.1f} M | {d['ns_per_disc_test']:.3f} | {bound_s:.3f} "
+        f"| {f['frame_ms'] * 1e-3 / bound_s:.2f} |",
+    ]
+
+
+def gpu_frames(path=GPU_RUN):
+    """Every method's frame time at 1920x1080 per scene, from a `tools/gpu_run.sh` log."""
+    runs = {}
+    for p in glob.glob(os.path.join(path, "*.json")):
+        try:
+            with open(p) as f:
+                r = json.load(f)
+        except ValueError:
+            continue
+        if r.get("orbit_deg") is not None or not os.path.basename(p).startswith(("frame-", "span-")):
+            continue
+        key = (r["scene"], r["width"], r["method"], r["merge"] if r["method"] in ("multilayer", "tiled") else "-")
+        # A span-only run's frame time carries no per-command timestamps: it wins where both exist.
+        runs.setdefault(key, {})["span" if r["span_only"] else "staged"] = r
+    return runs
+
+
+def frame_ms(entry):
+    r = entry.get("span") or entry.get("staged")
+    return r["frame_ms"]
+
+
+def device_line(path=GPU_RUN):
+    with open(os.path.join(path, "device.txt")) as f:
+        text = f.read()
+    dev = re.search(r"vulkan device 0: ([^,(]+?)\s*\([^)]*\), (Vulkan [0-9.]+), driver ([^\n]+)", text)
+    kernels = re.search(r"source hash ([0-9a-f]+)", text)
+    return f"{dev.group(1)}, {dev.group(2)}, driver {dev.group(3).strip()}; the release binary of commit {GPU_RUN_COMMIT}, kernels of source hash {kernels.group(1)}"
+
+
+def gpu_1080p():
+    runs = gpu_frames()
+    cols = [("multilayer", "4x4"), ("multilayer", "none"), ("tiled", "4x4"), ("ring-gather", "-"), ("layered", "-"),
+            ("raytrace", "-"), ("bokeh", "-"), ("gather", "-")]
+    lines = [
+        f"Frame time (ms) at 1920x1080, the median of one GPU timestamp pair around each frame's recording, "
+        f"{os.path.relpath(GPU_RUN, os.path.join(ROOT, 'docs'))}/ ({device_line()}).",
+        "",
+        "| scene | " + " | ".join(m if g == "-" else f"{m} {g}" for m, g in cols) + " |",
+        "|---|" + "---|" * len(cols),
+    ]
+    for scene in sorted({k[0] for k in runs}):
+        cells = [f"{frame_ms(runs[(scene, 1920) + c])}" if (scene, 1920) + c in runs else "-" for c in cols]
+        lines.append(f"| {scene} | " + " | ".join(f"{float(c):.2f}" if c != "-" else c for c in cells) + " |")
+    return lines
+
+
+def gpu_stages():
+    runs = gpu_frames()
+    lines = [
+        "Multi-layer splatting merged 4x4 by stage (the columns of Franke et al. 2018, Table 1: per-stage "
+        "means of each command's own timestamp pair), against the ring gather (5 rings); same run.",
+        "",
+        "| scene | size | frame ms | merge | splat | sort | apply | ring gather ms | ratio | MB |",
+        "|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    for scene in sorted({k[0] for k in runs}):
+        for width, height in [(1920, 1080), (3840, 2160)]:
+            ml, rg = runs.get((scene, width, "multilayer", "4x4")), runs.get((scene, width, "ring-gather", "-"))
+            if ml is None or "staged" not in ml:
+                continue
+            t = ml["staged"]["table1_ms"]
+            rg_ms = frame_ms(rg) if rg else None
+            ratio = "-" if rg_ms is None else f"{frame_ms(ml) / rg_ms:.1f}"
+            lines.append(f"| {scene} | {width}x{height} | {frame_ms(ml):.2f} | {t['merge']:.2f} | {t['splat']:.2f} | {t['sort']:.2f} "
+                         f"| {t['apply']:.2f} | {'-' if rg_ms is None else f'{rg_ms:.2f}'} | {ratio} | {ml['staged']['device_bytes'] / 1e6:.1f} |")
+    return lines
+
+
+TABLES = {
+    "every-method": eval_every_method,
+    "against-ring-gather": eval_against_ring_gather,
+    "layered": layered_point_sampled,
+    "memory": memory_1080p,
+    "cpu-frame": cpu_frame_1080p,
+    "gpu-frames": gpu_1080p,
+    "gpu-stages": gpu_stages,
+}
+
+BLOCK = re.compile(r"(<!-- figures:([a-z-]+) -->\n)(.*?)(<!-- /figures:\2 -->)", re.S)
+
+
+def rewritten(text):
+    unknown = [m.group(2) for m in BLOCK.finditer(text) if m.group(2) not in TABLES]
+    if unknown:
+        raise SystemExit(f"unknown generated tables: {', '.join(unknown)} (known: {', '.join(TABLES)})")
+    return BLOCK.sub(lambda m: m.group(1) + "\n".join(TABLES[m.group(2)]()) + "\n" + m.group(4), text)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("action", choices=["measure", "write", "check"])
+    p.add_argument("--dof", default=shutil.which("dof") or os.path.join(ROOT, "target", "release", "dof"))
+    a = p.parse_args()
+    if a.action == "measure":
+        measure(a.dof)
+        return
+    stale = []
+    for doc in DOCS:
+        path = os.path.join(ROOT, doc)
+        with open(path) as f:
+            text = f.read()
+        new = rewritten(text)
+        if new != text:
+            stale.append(doc)
+            if a.action == "write":
+                with open(path, "w") as f:
+                    f.write(new)
+    if a.action == "check" and stale:
+        raise SystemExit(f"generated tables differ from docs/figures/data in {', '.join(stale)}: run `python3 tools/figures.py write`")
+    if a.action == "write":
+        print("rewrote " + (", ".join(stale) if stale else "nothing (every table current)"))
+
+
+if __name__ == "__main__":
+    main()

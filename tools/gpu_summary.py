@@ -62,3 +62,26 @@ for (w, h) in sorted(rows):
         print("|---|---|---|---|---|---|")
         print("\n".join(lines))
         print()
+
+# What bringing a renderer's colour and depth images in costs (`dof bench frame --input images`,
+# per stage), beside the frame it feeds.
+inputs = []
+for path in sorted(glob.glob(os.path.join(out, "images-*.json"))):
+    try:
+        with open(path) as f:
+            r = json.load(f)
+    except ValueError:
+        continue
+    st = r["stage_ms"]
+    copies = st.get("frame/input-color", float("nan")) + st.get("frame/input-depth", float("nan"))
+    convert = st.get("frame/input", float("nan"))
+    inputs.append(f"| {r['scene']} | {r['width']}x{r['height']} | {r['method']} | {copies:.3f} | {convert:.3f} | {r['gpu_ms']:.3f} "
+                  f"| {100 * (copies + convert) / r['gpu_ms']:.1f}% |")
+if inputs:
+    print("## Colour and depth images brought in\n")
+    print("RGBA16F colour and D32 depth copied into the context's buffers and converted to one slot a pixel, "
+          "each frame (per-stage means, each command's own timestamp pair).\n")
+    print("| scene | size | method | copies ms | conversion ms | frame's commands ms | share |")
+    print("|---|---|---|---|---|---|---|")
+    print("\n".join(inputs))
+    print()

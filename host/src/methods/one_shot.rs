@@ -7,14 +7,17 @@
 //! [`Runner::time_frames`] times frames as a renderer runs them: the input uploaded once, frames
 //! back to back after a warm-up, nothing read back until the last.
 
-use crate::backend::{Backend, BackendCounters, BufferId, CommandTime};
+use crate::backend::{Backend, BackendCounters, BufferId, CommandTime, ImageFormat, ImageRef};
 use crate::frame::{
-    ContextDesc, ContextReport, CountBuffer, DofContext, Extent, Frame, MethodInfo, MethodOptions, Reads, RgbBuffer, SlotBuffer,
+    ContextDesc, ContextReport, CountBuffer, DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput, MethodInfo, MethodOptions,
+    Reads, RgbBuffer, SlotBuffer,
 };
 use crate::layers::{LayeredImage, RgbImage};
 use crate::methods::buffers::{input_words, read_rgb, slot_words};
 use crate::timing::{RunTimes, Warmup};
 use dof_core::error::{Error, Result};
+use dof_shaders::frame_io::{DEPTH_REVERSED, FrameIoParams, buffer_depth};
+use dof_shaders::half::f32_to_f16;
 use dof_shaders::lens::ThinLens;
 use std::borrow::Cow;
 
@@ -93,6 +96,29 @@ pub fn method_input<'a>(method: &MethodInfo, image: &'a LayeredImage) -> Cow<'a,
     }
 }
 
+/// Where a runner's frames come from.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum RunnerInput {
+    /// Slot and count buffers of the multi-layer image (`FrameInput::Layers`).
+    #[default]
+    Layers,
+    /// A colour and a depth image, as a renderer hands in its own (`FrameInput::Images`): the
+    /// image flattened ([`LayeredImage::flattened`]) into an RGBA16F colour image and a D32 depth
+    /// image of reversed depth with an infinite far plane, images the backend makes
+    /// ([`Backend::create_image`]). The frame copies them in and converts them each time, so
+    /// its stages `frame/input-color`, `frame/input-depth` and `frame/input` time that path.
+    Images,
+}
+
+/// The stand-in images of a runner fed [`RunnerInput::Images`], and the near plane their depths
+/// are encoded for.
+#[derive(Clone, Copy, Debug)]
+struct ImageInput {
+    color: ImageRef,
+    depth: ImageRef,
+    near: f32,
+}
+
 /// One context of a registry method and the buffers its frames go through, made once for frames
 /// of one size and layer count (a sequence).
 pub struct Runner {
@@ -106,13 +132,27 @@ pub struct Runner {
     /// overflowed and its context grew.
     pub later_allocations: u64,
     pub frames: u32,
+    images: Option<ImageInput>,
 }
 
 impl Runner {
     /// A context of `method` for frames the size and layer count of `image` (already the input
     /// the method reads: see [`method_input`]), and the buffers they go through.
     pub fn new(backend: &mut dyn Backend, method: &MethodInfo, options: &MethodOptions, image: &LayeredImage) -> Result<Self> {
-        let (w, h, layers) = (image.width, image.height, image.max_layers);
+        Self::fed(backend, method, options, image, RunnerInput::Layers)
+    }
+
+    /// As [`Runner::new`], its frames fed as `input` says; with [`RunnerInput::Images`] the
+    /// context takes one layer and image I/O, and the images are made here.
+    pub fn fed(
+        backend: &mut dyn Backend,
+        method: &MethodInfo,
+        options: &MethodOptions,
+        image: &LayeredImage,
+        input: RunnerInput,
+    ) -> Result<Self> {
+        let (w, h) = (image.width, image.height);
+        let layers = if input == RunnerInput::Images { 1 } else { image.max_layers };
         if w == 0 || h == 0 || layers == 0 {
             return Err(Error::InvalidArgument(format!("{} needs a non-empty image, got {w}x{h} with {layers} layers", method.name)));
         }
@@ -121,7 +161,19 @@ impl Runner {
         let mut options = options.clone();
         options.splat.footprint_side = options.splat.footprint_side.max(image.footprint_grid());
         // The context checks the extent (and refuses) before any buffer of the input is made.
-        let ctx = (method.create)(backend, &ContextDesc::new(extent, options))?;
+        let mut desc = ContextDesc::new(extent, options);
+        desc.image_io = input == RunnerInput::Images;
+        let ctx = (method.create)(backend, &desc)?;
+        let images = match input {
+            RunnerInput::Layers => None,
+            RunnerInput::Images => match ImageInput::new(backend, image) {
+                Ok(images) => Some(images),
+                Err(e) => {
+                    ctx.destroy(backend);
+                    return Err(e);
+                }
+            },
+        };
         let pixels = w as u64 * h as u64;
         let sizes = [(input_words(image), "frames/input"), (pixels, "frames/input-counts"), (3 * pixels, "frames/out")];
         let mut io = Vec::new();
@@ -130,13 +182,14 @@ impl Runner {
                 Ok(id) => io.push(id),
                 Err(e) => {
                     io.into_iter().for_each(|id| backend.destroy_buffer(id));
+                    images.iter().for_each(|i| i.destroy(backend));
                     ctx.destroy(backend);
                     return Err(e);
                 }
             }
         }
         let (input_words, footprint_side) = (sizes[0].0, image.footprint_grid());
-        Ok(Runner { ctx, io: [io[0], io[1], io[2]], extent, input_words, footprint_side, later_allocations: 0, frames: 0 })
+        Ok(Runner { ctx, io: [io[0], io[1], io[2]], extent, input_words, footprint_side, later_allocations: 0, frames: 0, images })
     }
 
     /// Device bytes of the context, the input and the output.
@@ -150,13 +203,22 @@ impl Runner {
     fn upload(&self, backend: &mut dyn Backend, image: &LayeredImage, lens: &ThinLens) -> Result<Frame> {
         let e = self.extent;
         let side = image.footprint_grid();
+        crate::lens::check(lens)?;
+        if let Some(images) = &self.images {
+            if (image.width, image.height) != (e.width, e.height) {
+                return Err(Error::InvalidArgument(format!(
+                    "a frame of {}x{} differs from the {}x{} its runner was made for",
+                    image.width, image.height, e.width, e.height
+                )));
+            }
+            return images.frame(backend, image, *lens, RgbBuffer(self.io[2]));
+        }
         if (image.width, image.height, image.max_layers, side) != (e.width, e.height, e.layers, self.footprint_side) {
             return Err(Error::InvalidArgument(format!(
                 "a frame of {}x{} with {} layers differs from the {}x{} with {} its runner was made for",
                 image.width, image.height, image.max_layers, e.width, e.height, e.layers
             )));
         }
-        crate::lens::check(lens)?;
         backend.write_buffer(self.io[0], 0, &slot_words(image))?;
         backend.write_buffer(self.io[1], 0, &image.counts)?;
         let frame = Frame::layers(
@@ -267,6 +329,53 @@ impl Runner {
     pub fn destroy(self, backend: &mut dyn Backend) {
         self.ctx.destroy(backend);
         self.io.into_iter().for_each(|id| backend.destroy_buffer(id));
+        self.images.iter().for_each(|i| i.destroy(backend));
+    }
+}
+
+impl ImageInput {
+    /// The images for frames of `image`'s size, the near plane below its nearest depth.
+    fn new(backend: &mut dyn Backend, image: &LayeredImage) -> Result<Self> {
+        let size = [image.width, image.height];
+        let pixels = image.width as usize * image.height as usize;
+        let nearest = (0..pixels).map(|p| image.flattened(p).1).filter(|z| z.is_finite() && *z > 0.0).fold(f32::INFINITY, f32::min);
+        let near = if nearest.is_finite() { 0.5 * nearest } else { 0.1 };
+        let color = backend.create_image(ImageFormat::Rgba16Float, size)?;
+        match backend.create_image(ImageFormat::D32Float, size) {
+            Ok(depth) => Ok(ImageInput { color, depth, near }),
+            Err(e) => {
+                backend.destroy_image(&color);
+                Err(e)
+            }
+        }
+    }
+
+    /// Writes `image` flattened into the images and returns the frame that reads them.
+    fn frame(&self, backend: &mut dyn Backend, image: &LayeredImage, lens: ThinLens, out: RgbBuffer) -> Result<Frame> {
+        let encoding = DepthEncoding::Reversed { near: self.near, far: f32::INFINITY };
+        let params = FrameIoParams { depth_encoding: DEPTH_REVERSED, near: self.near, far: f32::INFINITY, ..Default::default() };
+        let pixels = image.width as usize * image.height as usize;
+        let (mut color, mut depth) = (Vec::with_capacity(2 * pixels), Vec::with_capacity(pixels));
+        for p in 0..pixels {
+            let (c, z) = image.flattened(p);
+            color.extend([f32_to_f16(c[0]) | (f32_to_f16(c[1]) << 16), f32_to_f16(c[2]) | (f32_to_f16(1.0) << 16)]);
+            // Nothing at a pixel (infinitely far) is 0 in a reversed depth buffer.
+            depth.push(if z.is_finite() { buffer_depth(&params, z) } else { 0.0 }.to_bits());
+        }
+        backend.write_image(&self.color, &color)?;
+        backend.write_image(&self.depth, &depth)?;
+        Ok(Frame {
+            width: image.width,
+            height: image.height,
+            lens,
+            input: FrameInput::Images { color: self.color, depth: self.depth, encoding },
+            output: FrameOutput::Buffer(out),
+        })
+    }
+
+    fn destroy(&self, backend: &mut dyn Backend) {
+        backend.destroy_image(&self.color);
+        backend.destroy_image(&self.depth);
     }
 }
 

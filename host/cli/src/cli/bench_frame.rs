@@ -17,7 +17,7 @@ use anyhow::Context;
 use dof::backend::{Backend, BackendCounters, BufferId, CommandTime};
 use dof::frame::{ContextDesc, ContextReport, Extent, MethodInfo, MethodOption, MethodOptions, Reads, RgbBuffer, Value};
 use dof::layers::{LayeredImage, RgbImage};
-use dof::methods::one_shot::{self, Runner};
+use dof::methods::one_shot::{self, Runner, RunnerInput};
 use dof::methods::splat::Merge;
 use dof::raster::{MeshPeelContext, MeshPeelDesc, default_near, peel_layers};
 use dof::scene::{self, Aperture, Camera, Focus, GuardBand, LayerOptions, LensSettings, MeshScene, raycast_layers};
@@ -87,10 +87,23 @@ pub struct FrameArgs {
     /// each): splatting then spreads every fragment from its pixel's centre.
     #[arg(long)]
     no_footprints: bool,
+    /// Where the frames come from: `layers`, the multi-layer image in slot buffers, or `images`,
+    /// it flattened into an RGBA16F colour and a D32 (reversed, infinite far plane) depth image
+    /// that the frame copies in and converts every frame, as a renderer's images are (its stages
+    /// `frame/input-color`, `frame/input-depth` and `frame/input` time that; the method then sees
+    /// one layer).
+    #[arg(long, value_enum, default_value_t = InputArg::Layers)]
+    input: InputArg,
     /// Time only the frame's span (one timestamp pair a frame on Vulkan): no command gets a pair
     /// of its own, so the frame time carries none of their cost, and there is no per-stage profile.
     #[arg(long)]
     span_only: bool,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum InputArg {
+    Layers,
+    Images,
 }
 
 /// The largest frame edge `bench frame` takes (that of 4K and beyond; the contexts check the
@@ -130,16 +143,21 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         }
         None => {
             let layered = view.layers(b, args.subsamples, !args.no_footprints)?;
-            let image = match method.reads {
-                Reads::AllLayers => layered,
-                Reads::FrontLayer => layered.front_layer(),
+            let image = match (args.input, method.reads) {
+                (InputArg::Images, _) | (_, Reads::AllLayers) => layered,
+                (_, Reads::FrontLayer) => layered.front_layer(),
             };
             let m = if args.one_shot {
                 one_shot(b, method, &image, &view.lens, &options, warmup, args.frames)?
             } else {
-                framed(b, method, &image, &view.lens, &options, warmup, args.frames, args.out.as_deref())?
+                let input = match args.input {
+                    InputArg::Layers => RunnerInput::Layers,
+                    InputArg::Images => RunnerInput::Images,
+                };
+                framed(b, method, &image, input, &view.lens, &options, warmup, args.frames, args.out.as_deref())?
             };
-            (m, [image.width, image.height], image.max_layers)
+            let layers = if args.input == InputArg::Images { 1 } else { image.max_layers };
+            (m, [image.width, image.height], layers)
         }
     };
     let per_frame = |n: u64| n as f64 / args.frames as f64;
@@ -167,6 +185,10 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         let mut json = serde_json::json!({
             "method": method.name,
             "merge": args.merge.name(),
+            "input": match args.input {
+                InputArg::Layers => "layers",
+                InputArg::Images => "images",
+            },
             "path": if args.one_shot { "one-shot" } else if args.orbit.is_some() { "frame-api+device-peel" } else { "frame-api" },
             "orbit_deg": args.orbit,
             "scene": args.scene,
@@ -227,6 +249,8 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "one-shot path"
         } else if args.orbit.is_some() {
             "frame API, layers peeled on the device every frame"
+        } else if args.input == InputArg::Images {
+            "frame API, colour and depth images copied in every frame"
         } else {
             "frame API"
         }
@@ -420,13 +444,14 @@ fn framed(
     b: &mut dyn Backend,
     method: &MethodInfo,
     image: &LayeredImage,
+    input: RunnerInput,
     lens: &ThinLens,
     options: &MethodOptions,
     warmup: Warmup,
     frames: u32,
     out: Option<&Path>,
 ) -> anyhow::Result<Measured> {
-    let mut runner = Runner::new(b, method, options, image)?;
+    let mut runner = Runner::fed(b, method, options, image, input)?;
     let timed = runner.time_frames(b, image, lens, warmup, frames);
     let device_bytes = runner.device_bytes();
     runner.destroy(b);
@@ -481,6 +506,9 @@ fn check_view_flags(args: &FrameArgs) -> anyhow::Result<()> {
     }
     if let Some(r) = args.aperture_radius.filter(|r| !(r.is_finite() && *r >= 0.0)) {
         anyhow::bail!("--aperture-radius must be a finite number >= 0, got {r}");
+    }
+    if args.input == InputArg::Images && (args.orbit.is_some() || args.one_shot) {
+        anyhow::bail!("--input images feeds the frame API's image inputs; it does not combine with --orbit or --one-shot");
     }
     if args.orbit.is_some() && args.one_shot {
         anyhow::bail!("--orbit peels on the device inside the frame API; it does not combine with --one-shot");

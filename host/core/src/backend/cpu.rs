@@ -31,7 +31,7 @@ pub struct CpuBackend {
     submitted_spans: Vec<CommandTime>,
     counters: BackendCounters,
     budget: Option<u64>,
-    /// The stand-ins for a renderer's images ([`CpuBackend::create_image`]), by handle − 1.
+    /// The stand-ins for a renderer's images ([`Backend::create_image`]), by handle − 1.
     images: Vec<Option<CpuImage>>,
     /// Buffers given back by contexts dropped without `destroy`.
     retire: RetireQueue,
@@ -81,42 +81,9 @@ impl CpuBackend {
         }
     }
 
-    /// A stand-in for a renderer's image of `format` and `extent`, zeroed: what image inputs and
-    /// outputs of the frame API are tested with on the CPU. Its [`ImageRef`] is in GENERAL (the
-    /// CPU backend ignores layouts and stages); it holds no device bytes of the backend's.
-    pub fn create_image(&mut self, format: ImageFormat, extent: [u32; 2]) -> Result<ImageRef> {
-        if extent[0] == 0 || extent[1] == 0 {
-            return Err(Error::InvalidArgument(format!("an empty {}x{} image", extent[0], extent[1])));
-        }
-        let words = format.words_per_pixel() * extent[0] as u64 * extent[1] as u64;
-        let slot = self.images.iter().position(Option::is_none).unwrap_or(self.images.len());
-        if slot == self.images.len() {
-            self.images.push(None);
-        }
-        self.images[slot] = Some(CpuImage { format, extent, texels: vec![0; words as usize] });
-        Ok(ImageRef::in_table(slot as u64 + 1, format, extent))
-    }
-
-    /// Writes every texel of a stand-in image, packed as its copies pack them (row after row).
-    pub fn write_image(&mut self, image: &ImageRef, texels: &[u32]) -> Result<()> {
-        let img = self.image_mut(image)?;
-        if texels.len() != img.texels.len() {
-            return Err(Error::InvalidArgument(format!("the image holds {} words, {} given", img.texels.len(), texels.len())));
-        }
-        img.texels.copy_from_slice(texels);
-        Ok(())
-    }
-
     /// Every texel of a stand-in image.
     pub fn read_image(&self, image: &ImageRef) -> Result<Vec<u32>> {
         Ok(self.image(image)?.texels.clone())
-    }
-
-    /// Forgets a stand-in image.
-    pub fn destroy_image(&mut self, image: &ImageRef) {
-        if self.image(image).is_ok() {
-            self.images[image.handle as usize - 1] = None;
-        }
     }
 
     fn image(&self, image: &ImageRef) -> Result<&CpuImage> {
@@ -330,6 +297,36 @@ impl Backend for CpuBackend {
 
     fn copy_buffer_to_image(&mut self, buffer: BufferId, offset_words: u64, image: ImageRef, label: &str) -> Result<()> {
         self.copy_image(image, buffer, offset_words, true, label)
+    }
+
+    /// Its [`ImageRef`] is in GENERAL (the CPU backend ignores layouts and stages); it holds no
+    /// device bytes of the backend's.
+    fn create_image(&mut self, format: ImageFormat, extent: [u32; 2]) -> Result<ImageRef> {
+        if extent[0] == 0 || extent[1] == 0 {
+            return Err(Error::InvalidArgument(format!("an empty {}x{} image", extent[0], extent[1])));
+        }
+        let words = format.words_per_pixel() * extent[0] as u64 * extent[1] as u64;
+        let slot = self.images.iter().position(Option::is_none).unwrap_or(self.images.len());
+        if slot == self.images.len() {
+            self.images.push(None);
+        }
+        self.images[slot] = Some(CpuImage { format, extent, texels: vec![0; words as usize] });
+        Ok(ImageRef::in_table(slot as u64 + 1, format, extent))
+    }
+
+    fn write_image(&mut self, image: &ImageRef, texels: &[u32]) -> Result<()> {
+        let img = self.image_mut(image)?;
+        if texels.len() != img.texels.len() {
+            return Err(Error::InvalidArgument(format!("the image holds {} words, {} given", img.texels.len(), texels.len())));
+        }
+        img.texels.copy_from_slice(texels);
+        Ok(())
+    }
+
+    fn destroy_image(&mut self, image: &ImageRef) {
+        if self.image(image).is_ok() {
+            self.images[image.handle as usize - 1] = None;
+        }
     }
 
     fn check_image_copy(&self, image: &ImageRef, into_image: bool) -> Result<()> {

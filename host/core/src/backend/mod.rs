@@ -261,6 +261,25 @@ pub trait Backend {
         let _ = (image, buffer, offset_words, label);
         Err(Error::InvalidArgument(format!("the {} backend has no images: copy_buffer_to_image needs images of the backend", self.kind())))
     }
+    /// An image the backend makes and owns, zeroed, in the state the backend's own copies leave it
+    /// in (GENERAL on Vulkan): a stand-in for a renderer's image, so that tests and benchmarks run
+    /// image inputs and outputs without a renderer. Set-up work, not a frame's: on Vulkan it
+    /// submits and waits. Backends without images of their own refuse.
+    fn create_image(&mut self, format: ImageFormat, extent: [u32; 2]) -> Result<ImageRef> {
+        let _ = (format, extent);
+        Err(Error::InvalidArgument(format!("the {} backend makes no images of its own", self.kind())))
+    }
+    /// Writes every texel of an image of [`Backend::create_image`], packed as the copies pack them
+    /// (row after row). Set-up work, as `create_image`.
+    fn write_image(&mut self, image: &ImageRef, texels: &[u32]) -> Result<()> {
+        let _ = (image, texels);
+        Err(Error::InvalidArgument(format!("the {} backend makes no images of its own", self.kind())))
+    }
+    /// Frees an image of [`Backend::create_image`] once the work recorded so far is done; other
+    /// images are left alone.
+    fn destroy_image(&mut self, image: &ImageRef) {
+        let _ = image;
+    }
     /// Whether a copy of `image` (into it where `into_image`) would be recorded: the checks of
     /// [`Backend::copy_image_to_buffer`] and [`Backend::copy_buffer_to_image`] that do not depend on
     /// the buffer, made before a frame records anything. Backends without images refuse.

@@ -19,6 +19,7 @@
 
 mod draw;
 mod external;
+mod images;
 mod instance;
 mod memory;
 mod pipelines;
@@ -27,8 +28,8 @@ mod spirv;
 
 use super::access::{Access, Resource, copy_accesses, dispatch_accesses, draw_accesses};
 use super::{
-    Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageRef, Limits, RetireQueue, check_dispatch, check_draw,
-    draw_fallback,
+    Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageFormat, ImageRef, Limits, RetireQueue, check_dispatch,
+    check_draw, draw_fallback,
 };
 use crate::error::{Error, Result, VkContext};
 use ash::vk;
@@ -76,8 +77,7 @@ pub enum DrawPath {
     Graphics,
     /// Through each draw's compute fallback, the rasteriser the CPU backend runs (the same
     /// slots, bit for bit). Each of its workgroups walks every triangle for its tile, so it suits
-    /// small meshes: on an H200 it peeled `fence` at 1920x1080 in 187 ms a frame against the
-    /// graphics pipeline's 26 ms.
+    /// small meshes (docs/measurements.md has its cost against the graphics pipeline).
     Compute,
 }
 
@@ -212,6 +212,8 @@ pub struct VulkanBackend {
     retire: RetireQueue,
     /// Draws go through the graphics pipeline (else through their compute fallbacks).
     graphics_draws: bool,
+    /// Images of `create_image`, by raw handle.
+    images: HashMap<u64, images::OwnImage>,
 }
 
 fn lock(allocator: &SharedAllocator) -> MutexGuard<'_, Allocator> {
@@ -361,6 +363,7 @@ impl VulkanBackend {
             spare_events: Vec::new(),
             retire: RetireQueue::default(),
             graphics_draws: false,
+            images: HashMap::new(),
         };
         backend.graphics_draws = backend.device.graphics;
         backend.recorder.init(&backend.device, timestamp_bits, backend.info.timestamp_period_ns)?;
@@ -1001,6 +1004,18 @@ impl Backend for VulkanBackend {
         self.record_image_copy(image, buffer, offset_words, true, label)
     }
 
+    fn create_image(&mut self, format: ImageFormat, extent: [u32; 2]) -> Result<ImageRef> {
+        self.make_image(format, extent)
+    }
+
+    fn write_image(&mut self, image: &ImageRef, texels: &[u32]) -> Result<()> {
+        self.fill_image(image, texels)
+    }
+
+    fn destroy_image(&mut self, image: &ImageRef) {
+        self.free_image(image)
+    }
+
     fn submit(&mut self) -> Result<Vec<CommandTime>> {
         self.refuse_external("submit")?;
         self.flush()?;
@@ -1064,6 +1079,9 @@ impl Drop for VulkanBackend {
         if let Some(shared) = self.allocator.take() {
             let mut allocator = lock(&shared);
             self.draws.destroy(&d, &mut allocator);
+            for (_, image) in self.images.drain() {
+                image.destroy(&d, &mut allocator);
+            }
             for (_, b) in self.buffers.drain() {
                 // Imported buffers are the caller's.
                 if let Some(gpu) = b.owned {

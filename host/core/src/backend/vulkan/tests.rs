@@ -280,3 +280,43 @@ fn added_modules_run_and_collisions_are_refused() -> Result<()> {
     assert_eq!(vk.validation_messages(), Vec::<String>::new());
     Ok(())
 }
+
+#[test]
+fn own_images_are_zeroed_written_copied_and_freed_cleanly() -> Result<()> {
+    let Some(mut vk) = backend() else { return Ok(()) };
+    let size = [37, 5];
+    let color = vk.create_image(ImageFormat::Rgba16Float, size)?;
+    let depth = vk.create_image(ImageFormat::D32Float, size)?;
+    let out = vk.create_buffer(color.words() + depth.words(), "out")?;
+    // Made zeroed.
+    vk.copy_image_to_buffer(color, out, 0, "colour")?;
+    vk.submit()?;
+    assert_eq!(vk.read_buffer(out, 0, color.words())?, vec![0; color.words() as usize]);
+    // Written texels come back from the frame's copies, through GENERAL each time.
+    let texels: Vec<u32> = (0..color.words() as u32).map(|i| i.wrapping_mul(2_654_435_761)).collect();
+    let depths: Vec<u32> = (0..depth.words() as u32).map(|i| (0.25 + i as f32 / 1000.0).to_bits()).collect();
+    vk.write_image(&color, &texels)?;
+    vk.write_image(&depth, &depths)?;
+    for _ in 0..2 {
+        vk.copy_image_to_buffer(color, out, 0, "colour")?;
+        vk.copy_image_to_buffer(depth, out, color.words(), "depth")?;
+        vk.submit()?;
+        assert_eq!(vk.read_buffer(out, 0, color.words())?, texels);
+        assert_eq!(vk.read_buffer(out, color.words(), depth.words())?, depths);
+    }
+    // Refused: a wrong texel count, a described size or format unlike the image's, an image not
+    // the backend's, an empty one.
+    assert!(vk.write_image(&color, &texels[1..]).is_err());
+    assert!(vk.write_image(&color.top_left(36, 5), &texels[..36 * 5 * 2]).is_err());
+    assert!(vk.write_image(&ImageRef { format: ImageFormat::Rgba32Float, ..color }, &texels).is_err());
+    assert!(vk.write_image(&ImageRef { handle: 12345, ..color }, &texels).is_err());
+    assert!(vk.create_image(ImageFormat::D32Float, [0, 4]).is_err());
+    vk.destroy_image(&color);
+    vk.destroy_image(&depth);
+    // Gone: writing one again is refused.
+    assert!(vk.write_image(&color, &texels).is_err());
+    vk.destroy_buffer(out);
+    let messages = vk.take_validation_messages();
+    assert!(messages.is_empty(), "validation: {messages:?}");
+    Ok(())
+}

@@ -14,7 +14,7 @@ is run on: its times are no GPU figures. GPU tables come from `tools/gpu_run.sh`
 
 Standard library only.
 """
-import argparse, glob, json, os, platform, re, shutil, subprocess, sys, tempfile
+import argparse, glob, json, os, platform, re, shutil, subprocess, sys, tempfile, textwrap
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DATA = os.path.join(ROOT, "docs", "figures", "data")
@@ -52,8 +52,11 @@ def machine():
 
 
 def commit():
+    """The commit measured, `+changes` where the tree differs from it outside docs/."""
     try:
-        return subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True, check=True).stdout.strip()
+        git = lambda *a: subprocess.run(["git", "-C", ROOT, *a], capture_output=True, text=True, check=True).stdout
+        changed = [l for l in git("status", "--porcelain").splitlines() if not l[3:].startswith("docs/")]
+        return git("rev-parse", "--short", "HEAD").strip() + ("+changes" if changed else "")
     except (OSError, subprocess.CalledProcessError):
         return "unknown"
 
@@ -109,6 +112,11 @@ def provenance(d):
     return f"`{d['command']}` at commit {d['about']['commit']}, {m['cpu']}, {m['cores']} threads"
 
 
+def caption(text):
+    """A table's caption as lines of at most 100 columns."""
+    return textwrap.wrap(text, 100, break_on_hyphens=False) + [""]
+
+
 def db(v):
     return "inf" if v is None or v == float("inf") else f"{v:.2f}"
 
@@ -121,12 +129,12 @@ def eval_every_method():
     """Every method and setting of the evaluation on `simple`: time on the CPU backend and error."""
     d = load("eval-cpu.json")
     scene = next(s for s in d["report"]["scenes"] if s["name"] == "simple")
-    lines = [
+    lines = caption(
         f"`simple` at {scene['width']}x{scene['height']} against its exact reference ({scene['reference_spp']} spp), "
         f"the partial-occlusion region {100 * scene['occlusion_region_share']:.1f}% of the pixels. Time: the median of "
         f"{d['report']['runs']} frames' kernel time through one context on the CPU backend (no GPU figure). "
-        f"From {provenance(d)}.",
-        "",
+        f"From {provenance(d)}."
+    ) + [
         "| method | setting | CPU backend (ms) | PSNR full / region (dB) | FLIP full / region |",
         "|---|---|---|---|---|",
     ]
@@ -140,10 +148,10 @@ def eval_every_method():
 def eval_against_ring_gather():
     """Multi-layer splatting (merged 4x4) against the ring gather (5 rings), every scene."""
     d = load("eval-cpu.json")
-    lines = [
+    lines = caption(
         "Multi-layer splatting merged 4x4 against the ring gather with 5 rings, each scene at its evaluation "
-        f"size, on the CPU backend (no GPU figure). From {provenance(d)}.",
-        "",
+        f"size, on the CPU backend (no GPU figure). From {provenance(d)}."
+    ) + [
         "| scene | multilayer (ms) | ring gather (ms) | ratio | multilayer PSNR full / region (dB) | ring gather PSNR (dB) |",
         "|---|---|---|---|---|---|",
     ]
@@ -162,10 +170,10 @@ def layered_point_sampled():
     d = load("eval-cpu-point.json")
     cols = [("layered", "layers_per_doubling=2"), ("layered", "no_cascade=true layers_per_doubling=2"),
             ("gather", None), ("multilayer", "merge=none tile=16")]
-    lines = [
+    lines = caption(
         "Point-sampled layers (`--subsamples 1`), each scene at its evaluation size against its exact reference, "
-        f"full frame / region (dB), 2 layers per doubling. From {provenance(d)}.",
-        "",
+        f"full frame / region (dB), 2 layers per doubling. From {provenance(d)}."
+    ) + [
         "| scene | cascaded | non-cascaded | gather (its best setting) | multilayer, no merge |",
         "|---|---|---|---|---|",
     ]
@@ -185,10 +193,10 @@ def layered_point_sampled():
 
 def memory_1080p():
     d = load("memory-1080p.json")
-    lines = [
+    lines = caption(
         "Device bytes of each method's context at 1920x1080 with 4 layers (the registry's default options, "
-        f"one frame in flight, `device_bytes`). From {provenance(d)}; the CPU backend and Vulkan hold the same.",
-        "",
+        f"one frame in flight, `device_bytes`). From {provenance(d)}; the CPU backend and Vulkan hold the same."
+    ) + [
         "| method | MB |",
         "|---|---|",
     ]
@@ -203,9 +211,7 @@ def cpu_frame_1080p():
     tests = f["list_entries"] * 256
     bound_s = tests * d["ns_per_disc_test"] * 1e-9 / d["about"]["machine"]["cores"]
     t = f["table1_ms"]
-    return [
-        f"`railing` at 1920x1080, multi-layer splatting merged 4x4, on the CPU backend. From {provenance(d)}.",
-        "",
+    return caption(f"`railing` at 1920x1080, multi-layer splatting merged 4x4, on the CPU backend. From {provenance(d)}.") + [
         "| frame ms (p10-p90) | merge | splat | sort | apply | list entries | disc tests | ns a test | bound (s, all threads) | frame / bound |",
         "|---|---|---|---|---|---|---|---|---|---|",
         f"| {f['frame_ms']:.1f} ({f['frame_ms_p10']:.1f}-{f['frame_ms_p90']:.1f}) | {t['merge']:.1f} | {t['splat']:.1f} | {t['sort']:.1f} "
@@ -248,10 +254,11 @@ def gpu_1080p():
     runs = gpu_frames()
     cols = [("multilayer", "4x4"), ("multilayer", "none"), ("tiled", "4x4"), ("ring-gather", "-"), ("layered", "-"),
             ("raytrace", "-"), ("bokeh", "-"), ("gather", "-")]
-    lines = [
+    run = os.path.relpath(GPU_RUN, os.path.join(ROOT, "docs"))
+    lines = caption(
         f"Frame time (ms) at 1920x1080, the median of one GPU timestamp pair around each frame's recording, "
-        f"{os.path.relpath(GPU_RUN, os.path.join(ROOT, 'docs'))}/ ({device_line()}).",
-        "",
+        f"from [{run}/]({run}/) ({device_line()})."
+    ) + [
         "| scene | " + " | ".join(m if g == "-" else f"{m} {g}" for m, g in cols) + " |",
         "|---|" + "---|" * len(cols),
     ]
@@ -263,10 +270,10 @@ def gpu_1080p():
 
 def gpu_stages():
     runs = gpu_frames()
-    lines = [
+    lines = caption(
         "Multi-layer splatting merged 4x4 by stage (the columns of Franke et al. 2018, Table 1: per-stage "
-        "means of each command's own timestamp pair), against the ring gather (5 rings); same run.",
-        "",
+        "means of each command's own timestamp pair), against the ring gather (5 rings); same run."
+    ) + [
         "| scene | size | frame ms | merge | splat | sort | apply | ring gather ms | ratio | MB |",
         "|---|---|---|---|---|---|---|---|---|---|",
     ]

@@ -17,7 +17,7 @@ use crate::methods::buffers::{input_words, read_rgb, slot_words};
 use crate::timing::{RunTimes, Warmup};
 use dof_core::error::{Error, Result};
 use dof_shaders::frame_io::{DEPTH_REVERSED, FrameIoParams, buffer_depth};
-use dof_shaders::half::f32_to_f16;
+use dof_shaders::half::{HALF_MAX, f32_to_f16};
 use dof_shaders::lens::ThinLens;
 use std::borrow::Cow;
 
@@ -358,7 +358,9 @@ impl ImageInput {
         let (mut color, mut depth) = (Vec::with_capacity(2 * pixels), Vec::with_capacity(pixels));
         for p in 0..pixels {
             let (c, z) = image.flattened(p);
-            color.extend([f32_to_f16(c[0]) | (f32_to_f16(c[1]) << 16), f32_to_f16(c[2]) | (f32_to_f16(1.0) << 16)]);
+            // Emitters brighter than a half float holds saturate, as in a renderer's HDR target.
+            let half = |v: f32| f32_to_f16(v.min(HALF_MAX));
+            color.extend([half(c[0]) | (half(c[1]) << 16), half(c[2]) | (half(1.0) << 16)]);
             // Nothing at a pixel (infinitely far) is 0 in a reversed depth buffer.
             depth.push(if z.is_finite() { buffer_depth(&params, z) } else { 0.0 }.to_bits());
         }

@@ -18,9 +18,8 @@ import argparse, glob, json, os, platform, re, shutil, subprocess, sys, tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DATA = os.path.join(ROOT, "docs", "figures", "data")
-# The GPU run the GPU tables come from (`tools/gpu_run.sh`'s output) and the commit it ran.
+# The GPU run the GPU tables come from (`tools/gpu_run.sh`'s output, its commit in commit.txt).
 GPU_RUN = os.path.join(ROOT, "docs", "gpu", "h200-2026-11-28")
-GPU_RUN_COMMIT = "557bdcc"
 DOCS = ["docs/measurements.md", "docs/methods.md"]
 
 # The evaluation's scenes (all built-in opaque ones) and the point-sampled comparison of
@@ -247,7 +246,12 @@ def device_line(path=GPU_RUN):
         text = f.read()
     dev = re.search(r"vulkan device 0: ([^,(]+?)\s*\([^)]*\), (Vulkan [0-9.]+), driver ([^\n]+)", text)
     kernels = re.search(r"source hash ([0-9a-f]+)", text)
-    return f"{dev.group(1)}, {dev.group(2)}, driver {dev.group(3).strip()}; the release binary of commit {GPU_RUN_COMMIT}, kernels of source hash {kernels.group(1)}"
+    try:
+        with open(os.path.join(path, "commit.txt")) as f:
+            built = f"commit {f.read().strip()}"
+    except OSError:
+        built = "a commit it did not record"
+    return f"{dev.group(1)}, {dev.group(2)}, driver {dev.group(3).strip()}; the release binary of {built}, kernels of source hash {kernels.group(1)}"
 
 
 def gpu_1080p():

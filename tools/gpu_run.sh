@@ -3,7 +3,7 @@
 # each step under its own time limit and none started past a deadline (GPU_RUN_DEADLINE seconds,
 # default 540), so that a run cut short still brings back the rows that matter:
 #
-#   DOF=path/to/release/dof [BASE_DOF=path/to/earlier/dof] bash tools/gpu_run.sh OUT_DIR
+#   DOF=path/to/release/dof [BASE_DOF=path/to/baseline/dof] [DOF_COMMIT=abc1234] bash tools/gpu_run.sh OUT_DIR
 #
 # In order:
 # 1. the device (`dof info`, nvidia-smi; the run ends at once if no NVIDIA device answers) and the
@@ -90,6 +90,8 @@ finish() {
   tar czf "$out/gpu.tgz" -C /tmp gpu
   tail -n 30 "$log"
 }
+# The commit the binary was built from (DOF_COMMIT where the tree travels without git).
+echo "${DOF_COMMIT:-$(git rev-parse --short HEAD 2>/dev/null || echo unknown)}" > "$m/commit.txt"
 nvidia-smi > "$m/nvidia-smi.txt" 2>&1
 "$dof" info > "$m/device.txt" 2>&1
 head -n 4 "$m/device.txt"

@@ -26,7 +26,7 @@ DOCS = ["docs/measurements.md", "docs/methods.md"]
 # docs/methods.md (its per-method tables are point-sampled).
 EVAL_SCENES = "simple,railing,columns,highlights,fence,edges"
 POINT_SCENES = "simple,railing,columns,highlights"
-POINT_METHODS = "layered,gather,multilayer"
+POINT_METHODS = "layered,gather,tiled,multilayer,raytrace"
 # The evaluation's plots the docs show.
 PLOTS = ["simple-error-vs-time.png", "simple-max-coc.png", "railing-tile-size.png"]
 METHODS = ["multilayer", "tiled", "gather", "ring-gather", "scatter-gather", "bokeh", "raytrace", "layered"]
@@ -190,6 +190,63 @@ def layered_point_sampled():
     return lines
 
 
+def point_cell(d, scene, method, setting=None):
+    """`full / region` of a point-sampled record (the best region PSNR of the method's settings
+    without `setting`), or `-`."""
+    rs = [r for r in records(d, scene=scene, method=method) if setting is None or r["setting"] == setting]
+    if not rs:
+        return "-"
+    best = max(rs, key=lambda r: r["psnr_masked_db"])
+    return f"{db(best['psnr_db'])} / {db(best['psnr_masked_db'])}"
+
+
+def splat_quality():
+    """docs/methods.md's tiled splatting table: splatting against the gather, with the lists merging shortens."""
+    d = load("eval-cpu-point.json")
+    lines = caption(
+        "Point-sampled layers (`--subsamples 1`), each scene at its evaluation size against its exact reference, "
+        "full frame / region (dB), 16-pixel tiles; the mean tile list without and with 4x4 merging. "
+        f"From {provenance(d)}."
+    ) + [
+        "| scene | gather (its best setting) | single-layer 4x4 | multi-layer | multi-layer 4x4 | lists (4x4) |",
+        "|---|---|---|---|---|---|",
+    ]
+    for s in d["report"]["scenes"]:
+        n = s["name"]
+        lists = "-"
+        none = records(d, scene=n, method="multilayer", setting="merge=none tile=16")
+        merged = records(d, scene=n, method="multilayer", setting="merge=4x4 tile=16")
+        if none and merged:
+            a, b = none[0]["figures"]["mean_list_length"], merged[0]["figures"]["mean_list_length"]
+            lists = f"{a:.0f} -> {b:.0f} ({a / b:.1f}x)"
+        lines.append(
+            f"| {n} | {point_cell(d, n, 'gather')} | {point_cell(d, n, 'tiled', 'merge=4x4 tile=16')} "
+            f"| {point_cell(d, n, 'multilayer', 'merge=none tile=16')} | {point_cell(d, n, 'multilayer', 'merge=4x4 tile=16')} | {lists} |"
+        )
+    return lines
+
+
+def raytrace_point_sampled():
+    """docs/methods.md's ray tracing table: rays a pixel against multi-layer splatting, with times."""
+    d = load("eval-cpu-point.json")
+    lines = caption(
+        "Point-sampled layers (`--subsamples 1`), each scene at its evaluation size against its exact reference, "
+        "full frame / region (dB), and the CPU backend's time a frame (no GPU figure). "
+        f"From {provenance(d)}."
+    ) + [
+        "| scene | 16 rays a pixel | 32 rays a pixel | multilayer, no merge | multilayer 4x4 |",
+        "|---|---|---|---|---|",
+    ]
+    for s in d["report"]["scenes"]:
+        cells = []
+        for method, setting in [("raytrace", "samples=16"), ("raytrace", "samples=32"),
+                                ("multilayer", "merge=none tile=16"), ("multilayer", "merge=4x4 tile=16")]:
+            r = records(d, scene=s["name"], method=method, setting=setting)
+            cells.append("-" if not r else f"{db(r[0]['psnr_db'])} / {db(r[0]['psnr_masked_db'])}, {r[0]['time_ms']:.0f} ms")
+        lines.append(f"| {s['name']} | " + " | ".join(cells) + " |")
+    return lines
+
+
 def memory_1080p():
     d = load("memory-1080p.json")
     lines = caption(
@@ -298,6 +355,8 @@ TABLES = {
     "every-method": eval_every_method,
     "against-ring-gather": eval_against_ring_gather,
     "layered": layered_point_sampled,
+    "splat-quality": splat_quality,
+    "raytrace": raytrace_point_sampled,
     "memory": memory_1080p,
     "cpu-frame": cpu_frame_1080p,
     "gpu-frames": gpu_1080p,

@@ -60,15 +60,10 @@ def commit():
         return "unknown"
 
 
-def save(name, value):
-    with open(os.path.join(DATA, name), "w") as f:
-        json.dump(value, f, indent=1, sort_keys=True)
-        f.write("\n")
-
-
 def measure(dof):
-    os.makedirs(DATA, exist_ok=True)
+    """Runs every measurement, then writes the data and plots: all of them, or on a failure none."""
     about = {"machine": machine(), "commit": commit(), "dof": dof}
+    data, plots = {}, {}
     with tempfile.TemporaryDirectory() as tmp:
         for name, extra in [
             # The plots of the first come into docs/figures/ (PLOTS).
@@ -78,25 +73,32 @@ def measure(dof):
             out = os.path.join(tmp, name)
             run([dof, "eval", "--backend", "cpu", "--runs", "3", "--out", out] + extra)
             with open(os.path.join(out, "report.json")) as f:
-                report = json.load(f)
-            save(name, {"about": about, "command": f"dof eval --backend cpu --runs 3 {' '.join(extra)}", "report": report})
+                data[name] = {"about": about, "command": f"dof eval --backend cpu --runs 3 {' '.join(extra)}", "report": json.load(f)}
             for plot in PLOTS if name == "eval-cpu.json" else []:
-                shutil.copy(os.path.join(out, plot), os.path.join(ROOT, "docs", "figures", plot))
-    frame = ["bench", "frame", "--backend", "cpu", "--json"]
-    rows = []
-    for m in METHODS:
-        cmd = [dof] + frame + ["--method", m, "--scene", "railing", "--width", "1920", "--height", "1080", "--frames", "1", "--warmup", "0", "--warmup-ms", "0"]
-        rows.append(json.loads(run(cmd, capture_output=True, text=True).stdout))
-    save("memory-1080p.json", {"about": about, "command": "dof bench frame --backend cpu --scene railing --width 1920 --height 1080 --frames 1", "rows": rows})
-    cmd = [dof] + frame + ["--method", "multilayer", "--merge", "4x4", "--scene", "railing", "--width", "1920", "--height", "1080", "--frames", "5", "--warmup", "1"]
-    bench = json.loads(run(cmd, capture_output=True, text=True).stdout)
-    # The bound's cost of one disc test, measured on the same machine (docs/perf/disc-test-cost.rs).
-    with tempfile.TemporaryDirectory() as tmp:
+                with open(os.path.join(out, plot), "rb") as f:
+                    plots[plot] = f.read()
+        frame = ["bench", "frame", "--backend", "cpu", "--json"]
+        rows = []
+        for m in METHODS:
+            cmd = [dof] + frame + ["--method", m, "--scene", "railing", "--width", "1920", "--height", "1080", "--frames", "1", "--warmup", "0", "--warmup-ms", "0"]
+            rows.append(json.loads(run(cmd, capture_output=True, text=True).stdout))
+        data["memory-1080p.json"] = {"about": about, "command": "dof bench frame --backend cpu --scene railing --width 1920 --height 1080 --frames 1", "rows": rows}
+        cmd = [dof] + frame + ["--method", "multilayer", "--merge", "4x4", "--scene", "railing", "--width", "1920", "--height", "1080", "--frames", "5", "--warmup", "1"]
+        bench = json.loads(run(cmd, capture_output=True, text=True).stdout)
+        # The bound's cost of one disc test, measured on the same machine (docs/perf/disc-test-cost.rs).
         exe = os.path.join(tmp, "disc-test-cost")
         run(["rustc", "-C", "opt-level=3", "-o", exe, os.path.join(ROOT, "docs", "perf", "disc-test-cost.rs")])
         line = run([exe], capture_output=True, text=True).stdout
-    ns = float(re.search(r"([0-9.]+) ns a test", line).group(1))
-    save("cpu-frame-1080p.json", {"about": about, "command": " ".join(["dof"] + cmd[1:]), "frame": bench, "ns_per_disc_test": ns, "disc_test_output": line.strip()})
+        ns = float(re.search(r"([0-9.]+) ns a test", line).group(1))
+        data["cpu-frame-1080p.json"] = {"about": about, "command": " ".join(["dof"] + cmd[1:]), "frame": bench, "ns_per_disc_test": ns, "disc_test_output": line.strip()}
+    os.makedirs(DATA, exist_ok=True)
+    for name, value in data.items():
+        with open(os.path.join(DATA, name), "w") as f:
+            json.dump(value, f, indent=1, sort_keys=True)
+            f.write("\n")
+    for plot, png in plots.items():
+        with open(os.path.join(ROOT, "docs", "figures", plot), "wb") as f:
+            f.write(png)
 
 
 # ---- tables ----------------------------------------------------------------------------------
@@ -379,7 +381,10 @@ def main():
     p.add_argument("--dof", default=shutil.which("dof") or os.path.join(ROOT, "target", "release", "dof"))
     a = p.parse_args()
     if a.action == "measure":
-        measure(a.dof)
+        try:
+            measure(a.dof)
+        except (OSError, subprocess.CalledProcessError, ValueError) as e:
+            raise SystemExit(f"measure: {e}; no data or plot was written")
         return
     stale = []
     for doc in DOCS:

@@ -159,7 +159,10 @@ impl Runner {
         let extent = Extent::new(w, h, layers);
         // Splatting holds a word a fragment for the footprints of an area-integrated input.
         let mut options = options.clone();
-        options.splat.footprint_side = options.splat.footprint_side.max(image.footprint_grid());
+        let fed_layers = input == RunnerInput::Layers;
+        if fed_layers {
+            options.splat.footprint_side = options.splat.footprint_side.max(image.footprint_grid());
+        }
         // The context checks the extent (and refuses) before any buffer of the input is made.
         let mut desc = ContextDesc::new(extent, options);
         desc.image_io = input == RunnerInput::Images;
@@ -175,7 +178,9 @@ impl Runner {
             },
         };
         let pixels = w as u64 * h as u64;
-        let sizes = [(input_words(image), "frames/input"), (pixels, "frames/input-counts"), (3 * pixels, "frames/out")];
+        // Fed images, the frame reads no slot or count buffer: one word stands in for each.
+        let (slots, counts) = if fed_layers { (input_words(image), pixels) } else { (1, 1) };
+        let sizes = [(slots, "frames/input"), (counts, "frames/input-counts"), (3 * pixels, "frames/out")];
         let mut io = Vec::new();
         for (words, label) in sizes {
             match backend.create_buffer(words, label) {
@@ -188,14 +193,15 @@ impl Runner {
                 }
             }
         }
-        let (input_words, footprint_side) = (sizes[0].0, image.footprint_grid());
+        let (input_words, footprint_side) = (sizes[0].0, if fed_layers { image.footprint_grid() } else { 0 });
         Ok(Runner { ctx, io: [io[0], io[1], io[2]], extent, input_words, footprint_side, later_allocations: 0, frames: 0, images })
     }
 
     /// Device bytes of the context, the input and the output.
     pub fn buffer_bytes(&self) -> u64 {
         let pixels = self.extent.width as u64 * self.extent.height as u64;
-        self.ctx.device_bytes() + 4 * (self.input_words + pixels + 3 * pixels)
+        let counts = if self.images.is_some() { 1 } else { pixels };
+        self.ctx.device_bytes() + 4 * (self.input_words + counts + 3 * pixels)
     }
 
     /// Uploads `image` (of the runner's size and layer count) and returns the frame that reads it

@@ -179,16 +179,7 @@ def layered_point_sampled():
         "|---|---|---|---|---|",
     ]
     for s in d["report"]["scenes"]:
-        cells = []
-        for method, setting in cols:
-            rs = records(d, scene=s["name"], method=method)
-            rs = [r for r in rs if setting is None or r["setting"] == setting]
-            if not rs:
-                cells.append("-")
-                continue
-            best = max(rs, key=lambda r: r["psnr_masked_db"])
-            cells.append(f"{db(best['psnr_db'])} / {db(best['psnr_masked_db'])}")
-        lines.append(f"| {s['name']} | " + " | ".join(cells) + " |")
+        lines.append(f"| {s['name']} | " + " | ".join(point_cell(d, s["name"], m, setting) for m, setting in cols) + " |")
     return lines
 
 

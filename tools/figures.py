@@ -269,16 +269,24 @@ def cpu_frame_1080p():
     ]
 
 
+def bench_runs(folder, *prefixes):
+    """The `dof bench frame --json` records of `folder` whose file names start with one of
+    `prefixes`, in name order; a run cut short by its time limit leaves an empty file, skipped."""
+    for p in sorted(glob.glob(os.path.join(folder, "*.json"))):
+        if not os.path.basename(p).startswith(prefixes):
+            continue
+        try:
+            with open(p) as f:
+                yield json.load(f)
+        except ValueError:
+            continue
+
+
 def gpu_frames(path=GPU_RUN):
     """Every method's frame time at 1920x1080 per scene, from a `tools/gpu_run.sh` log."""
     runs = {}
-    for p in glob.glob(os.path.join(path, "*.json")):
-        try:
-            with open(p) as f:
-                r = json.load(f)
-        except ValueError:
-            continue
-        if r.get("orbit_deg") is not None or not os.path.basename(p).startswith(("frame-", "span-")):
+    for r in bench_runs(path, "frame-", "span-"):
+        if r.get("orbit_deg") is not None:
             continue
         key = (r["scene"], r["width"], r["method"], r["merge"] if r["method"] in ("multilayer", "tiled") else "-")
         # A span-only run's frame time carries no per-command timestamps: it wins where both exist.
@@ -344,6 +352,30 @@ def gpu_stages():
     return lines
 
 
+def image_input_rows(folder):
+    """Each `dof bench frame --input images` run in `folder` (`images-*.json`, as `tools/gpu_run.sh`
+    names them): scene, size, method, the two copies' ms, the conversion's ms, all commands' ms."""
+    rows = []
+    for r in bench_runs(folder, "images-"):
+        st = r["stage_ms"]
+        copies = st.get("frame/input-color", float("nan")) + st.get("frame/input-depth", float("nan"))
+        rows.append((r["scene"], f"{r['width']}x{r['height']}", r["method"], copies, st.get("frame/input", float("nan")), r["gpu_ms"]))
+    return rows
+
+
+def gpu_image_input():
+    """What bringing a renderer's colour and depth images in costs on the GPU run, where it ran."""
+    rows = image_input_rows(GPU_RUN)
+    if not rows:
+        return caption("The run measured no image input (`dof bench frame --input images`; `tools/gpu_run.sh` measures it).")[:-1]
+    return caption(
+        "An RGBA16F colour and a D32 depth image brought in each frame (`dof bench frame --input images`): "
+        "the two copies and the conversion to one slot a pixel, per-stage means, same run."
+    ) + ["| scene | size | method | copies ms | conversion ms | all commands ms |", "|---|---|---|---|---|---|"] + [
+        f"| {scene} | {size} | {method} | {copies:.3f} | {convert:.3f} | {total:.3f} |" for scene, size, method, copies, convert, total in rows
+    ]
+
+
 TABLES = {
     "every-method": eval_every_method,
     "against-ring-gather": eval_against_ring_gather,
@@ -354,6 +386,7 @@ TABLES = {
     "cpu-frame": cpu_frame_1080p,
     "gpu-frames": gpu_1080p,
     "gpu-stages": gpu_stages,
+    "gpu-image-input": gpu_image_input,
 }
 
 BLOCK = re.compile(r"(<!-- figures:([a-z-]+) -->\n)(.*?)(<!-- /figures:\2 -->)", re.S)

@@ -2,14 +2,10 @@
 """One table per size from the JSON that tools/gpu_measure.sh writes: python3 tools/gpu_summary.py OUT_DIR > OUT_DIR/summary.md
 (standard library only)."""
 import glob, json, os, sys
+from figures import bench_runs, image_input_rows  # tools/figures.py, beside this script
 out = sys.argv[1]
 rows = {}
-for path in sorted(glob.glob(os.path.join(out, "frame-*.json"))):
-    try:
-        with open(path) as f:
-            r = json.load(f)
-    except ValueError:  # a run cut short by its time limit leaves an empty file
-        continue
+for r in bench_runs(out, "frame-"):
     rows.setdefault((r["width"], r["height"]), []).append(r)
 def ms(v):
     return "-" if v is None else f"{v:.3f}"
@@ -65,18 +61,8 @@ for (w, h) in sorted(rows):
 
 # What bringing a renderer's colour and depth images in costs (`dof bench frame --input images`,
 # per stage), beside the frame it feeds.
-inputs = []
-for path in sorted(glob.glob(os.path.join(out, "images-*.json"))):
-    try:
-        with open(path) as f:
-            r = json.load(f)
-    except ValueError:
-        continue
-    st = r["stage_ms"]
-    copies = st.get("frame/input-color", float("nan")) + st.get("frame/input-depth", float("nan"))
-    convert = st.get("frame/input", float("nan"))
-    inputs.append(f"| {r['scene']} | {r['width']}x{r['height']} | {r['method']} | {copies:.3f} | {convert:.3f} | {r['gpu_ms']:.3f} "
-                  f"| {100 * (copies + convert) / r['gpu_ms']:.1f}% |")
+inputs = [f"| {scene} | {size} | {method} | {copies:.3f} | {convert:.3f} | {total:.3f} | {100 * (copies + convert) / total:.1f}% |"
+          for scene, size, method, copies, convert, total in image_input_rows(out)]
 if inputs:
     print("## Colour and depth images brought in\n")
     print("RGBA16F colour and D32 depth copied into the context's buffers and converted to one slot a pixel, "

@@ -325,8 +325,8 @@ def gpu_1080p():
         "|---|" + "---|" * len(cols),
     ]
     for scene in sorted({k[0] for k in runs}):
-        cells = [f"{frame_ms(runs[(scene, 1920) + c])}" if (scene, 1920) + c in runs else "-" for c in cols]
-        lines.append(f"| {scene} | " + " | ".join(f"{float(c):.2f}" if c != "-" else c for c in cells) + " |")
+        cells = [f"{frame_ms(runs[(scene, 1920) + c]):.2f}" if (scene, 1920) + c in runs else "-" for c in cols]
+        lines.append(f"| {scene} | " + " | ".join(cells) + " |")
     return lines
 
 

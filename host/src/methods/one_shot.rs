@@ -110,13 +110,11 @@ pub enum RunnerInput {
     Images,
 }
 
-/// The stand-in images of a runner fed [`RunnerInput::Images`], and the near plane their depths
-/// are encoded for.
+/// The stand-in images of a runner fed [`RunnerInput::Images`].
 #[derive(Clone, Copy, Debug)]
 struct ImageInput {
     color: ImageRef,
     depth: ImageRef,
-    near: f32,
 }
 
 /// One context of a registry method and the buffers its frames go through, made once for frames
@@ -340,15 +338,12 @@ impl Runner {
 }
 
 impl ImageInput {
-    /// The images for frames of `image`'s size, the near plane below its nearest depth.
+    /// The images for frames of `image`'s size.
     fn new(backend: &mut dyn Backend, image: &LayeredImage) -> Result<Self> {
         let size = [image.width, image.height];
-        let pixels = image.width as usize * image.height as usize;
-        let nearest = (0..pixels).map(|p| image.flattened(p).1).filter(|z| z.is_finite() && *z > 0.0).fold(f32::INFINITY, f32::min);
-        let near = if nearest.is_finite() { 0.5 * nearest } else { 0.1 };
         let color = backend.create_image(ImageFormat::Rgba16Float, size)?;
         match backend.create_image(ImageFormat::D32Float, size) {
-            Ok(depth) => Ok(ImageInput { color, depth, near }),
+            Ok(depth) => Ok(ImageInput { color, depth }),
             Err(e) => {
                 backend.destroy_image(&color);
                 Err(e)
@@ -356,14 +351,17 @@ impl ImageInput {
         }
     }
 
-    /// Writes `image` flattened into the images and returns the frame that reads them.
+    /// Writes `image` flattened into the images and returns the frame that reads them. The depths
+    /// are encoded for a near plane at half this image's nearest depth, so none lies before it.
     fn frame(&self, backend: &mut dyn Backend, image: &LayeredImage, lens: ThinLens, out: RgbBuffer) -> Result<Frame> {
-        let encoding = DepthEncoding::Reversed { near: self.near, far: f32::INFINITY };
-        let params = FrameIoParams { depth_encoding: DEPTH_REVERSED, near: self.near, far: f32::INFINITY, ..Default::default() };
         let pixels = image.width as usize * image.height as usize;
+        let flat: Vec<([f32; 3], f32)> = (0..pixels).map(|p| image.flattened(p)).collect();
+        let nearest = flat.iter().map(|f| f.1).filter(|z| z.is_finite() && *z > 0.0).fold(f32::INFINITY, f32::min);
+        let near = if nearest.is_finite() { 0.5 * nearest } else { 0.1 };
+        let encoding = DepthEncoding::Reversed { near, far: f32::INFINITY };
+        let params = FrameIoParams { depth_encoding: DEPTH_REVERSED, near, far: f32::INFINITY, ..Default::default() };
         let (mut color, mut depth) = (Vec::with_capacity(2 * pixels), Vec::with_capacity(pixels));
-        for p in 0..pixels {
-            let (c, z) = image.flattened(p);
+        for &(c, z) in &flat {
             // Emitters brighter than a half float holds saturate, as in a renderer's HDR target.
             let half = |v: f32| f32_to_f16(v.min(HALF_MAX));
             color.extend([half(c[0]) | (half(c[1]) << 16), half(c[2]) | (half(1.0) << 16)]);

@@ -204,9 +204,10 @@ impl ImageRef {
         })
     }
 
-    /// An image another backend keeps in a table of its own (the CPU backend's stand-ins, the wgpu
-    /// backend's textures), by `handle` there; its Vulkan state says GENERAL and nothing to wait for
-    /// (those backends have no layouts).
+    /// An image a backend keeps itself, by `handle`: the CPU backend's stand-ins and the wgpu
+    /// backend's textures by their number in its table (those backends have no layouts), the Vulkan
+    /// backend's own images by their raw handle. Its Vulkan state says GENERAL and nothing to wait
+    /// for, the state the backend's own copies leave an image in.
     pub(crate) fn in_table(handle: u64, format: ImageFormat, extent: [u32; 2]) -> Self {
         ImageRef {
             handle,

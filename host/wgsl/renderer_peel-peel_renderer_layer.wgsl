@@ -60,1455 +60,1914 @@ fn function_() {
     var local_8: bool;
     var local_9: u32;
     var local_10: u32;
-    var local_11: f32;
+    var local_11: u32;
     var local_12: u32;
-    var local_13: bool;
-    var local_14: f32;
-    var local_15: bool;
-    var local_16: f32;
-    var local_17: f32;
-    var local_18: f32;
+    var local_13: u32;
+    var local_14: bool;
+    var local_15: f32;
+    var local_16: u32;
+    var local_17: u32;
+    var local_18: u32;
     var local_19: bool;
-    var local_20: u32;
-    var local_21: u32;
-    var local_22: u32;
+    var local_20: f32;
+    var local_21: f32;
+    var local_22: f32;
     var local_23: u32;
     var local_24: u32;
     var local_25: u32;
     var local_26: u32;
     var local_27: u32;
     var local_28: u32;
-    var local_29: u32;
+    var local_29: f32;
     var local_30: u32;
-    var local_31: u32;
-    var local_32: u32;
-    var local_33: u32;
-    var local_34: u32;
+    var local_31: bool;
+    var local_32: f32;
+    var local_33: bool;
+    var local_34: f32;
     var local_35: f32;
-    var local_36: u32;
-    var local_37: u32;
+    var local_36: f32;
+    var local_37: bool;
     var local_38: u32;
-    var local_39: f32;
+    var local_39: u32;
     var local_40: u32;
-    var local_41: u32;
+    var local_41: f32;
     var local_42: u32;
     var local_43: f32;
     var local_44: u32;
-    var local_45: u32;
+    var local_45: f32;
     var local_46: u32;
-    var local_47: f32;
+    var local_47: u32;
     var local_48: u32;
-    var local_49: f32;
+    var local_49: u32;
     var local_50: u32;
-    var local_51: f32;
+    var local_51: u32;
     var local_52: u32;
-    var local_53: f32;
-    var local_54: u32;
-    var local_55: array<f32, 4>;
+    var local_53: u32;
+    var local_54: f32;
+    var local_55: u32;
     var local_56: u32;
     var local_57: u32;
-    var local_58: u32;
+    var local_58: f32;
     var local_59: u32;
     var local_60: u32;
     var local_61: u32;
-    var local_62: u32;
+    var local_62: f32;
     var local_63: u32;
     var local_64: u32;
     var local_65: u32;
-    var local_66: u32;
+    var local_66: f32;
     var local_67: u32;
     var local_68: u32;
     var local_69: u32;
     var local_70: u32;
-    var local_71: f32;
+    var local_71: u32;
     var local_72: u32;
     var local_73: u32;
-    var local_74: u32;
-    var local_75: f32;
+    var local_74: array<f32, 4>;
+    var local_75: u32;
     var local_76: u32;
     var local_77: u32;
-    var local_78: u32;
-    var local_79: f32;
-    var local_80: u32;
+    var local_78: f32;
+    var local_79: u32;
+    var local_80: f32;
     var local_81: u32;
-    var local_82: u32;
-    var local_83: f32;
+    var local_82: f32;
+    var local_83: u32;
     var local_84: u32;
-    var local_85: f32;
+    var local_85: u32;
     var local_86: u32;
-    var local_87: f32;
+    var local_87: u32;
     var local_88: u32;
-    var local_89: f32;
+    var local_89: u32;
     var local_90: u32;
-    var local_91: bool;
-    var local_92: array<f32, 4>;
-    var local_93: bool;
-    var local_94: bool;
-    var local_95: bool;
-    var local_96: array<f32, 3>;
-    var local_97: f32;
+    var local_91: f32;
+    var local_92: u32;
+    var local_93: u32;
+    var local_94: u32;
+    var local_95: f32;
+    var local_96: u32;
+    var local_97: u32;
     var local_98: u32;
-    var local_99: u32;
+    var local_99: f32;
     var local_100: u32;
     var local_101: u32;
     var local_102: u32;
-    var local_103: u32;
+    var local_103: f32;
     var local_104: u32;
     var local_105: u32;
     var local_106: u32;
     var local_107: u32;
-    var local_108: f32;
-    var local_109: f32;
-    var local_110: bool;
-    var local_111: f32;
-    var local_112: u32;
-    var local_113: f32;
-    var local_114: f32;
-    var local_115: f32;
-    var local_116: f32;
+    var local_108: u32;
+    var local_109: u32;
+    var local_110: u32;
+    var local_111: bool;
+    var local_112: array<f32, 4>;
+    var local_113: bool;
+    var local_114: bool;
+    var local_115: bool;
+    var local_116: array<f32, 3>;
     var local_117: f32;
-    var local_118: f32;
-    var local_119: f32;
-    var local_120: f32;
-    var local_121: f32;
-    var local_122: f32;
-    var local_123: bool;
-    var local_124: f32;
-    var local_125: f32;
-    var local_126: f32;
-    var phi_125_: u32;
-    var phi_166_: f32;
+    var local_118: u32;
+    var local_119: u32;
+    var local_120: u32;
+    var local_121: u32;
+    var local_122: u32;
+    var local_123: u32;
+    var local_124: u32;
+    var local_125: u32;
+    var local_126: u32;
+    var local_127: u32;
+    var local_128: f32;
+    var local_129: f32;
+    var local_130: bool;
+    var local_131: f32;
+    var local_132: u32;
+    var local_133: u32;
+    var local_134: f32;
+    var local_135: f32;
+    var local_136: f32;
+    var local_137: f32;
+    var local_138: f32;
+    var local_139: f32;
+    var local_140: f32;
+    var local_141: f32;
+    var local_142: f32;
+    var local_143: f32;
+    var local_144: f32;
+    var local_145: f32;
+    var local_146: f32;
+    var local_147: f32;
+    var local_148: f32;
+    var local_149: bool;
+    var local_150: f32;
+    var local_151: f32;
+    var local_152: f32;
+    var phi_126_: u32;
+    var phi_194_: f32;
+    var phi_209_: f32;
+    var phi_210_: f32;
     var phi_211_: f32;
     var phi_212_: f32;
-    var phi_232_: f32;
-    var phi_233_: f32;
-    var phi_234_: f32;
+    var phi_213_: bool;
     var phi_235_: f32;
-    var phi_241_: f32;
-    var phi_242_: f32;
-    var phi_244_: f32;
-    var phi_245_: bool;
     var phi_250_: f32;
-    var phi_260_: bool;
-    var phi_322_: f32;
-    var phi_323_: f32;
-    var phi_324_: f32;
-    var phi_325_: f32;
-    var phi_326_: bool;
-    var phi_365_: f32;
-    var phi_366_: f32;
-    var phi_367_: f32;
-    var phi_368_: f32;
-    var phi_369_: bool;
-    var phi_407_: f32;
-    var phi_408_: f32;
-    var phi_409_: f32;
-    var phi_410_: f32;
-    var phi_411_: bool;
-    var phi_473_: f32;
-    var phi_488_: f32;
-    var phi_489_: f32;
-    var phi_490_: f32;
-    var phi_491_: f32;
-    var phi_492_: bool;
-    var phi_514_: f32;
-    var phi_529_: f32;
-    var phi_530_: f32;
-    var phi_531_: f32;
-    var phi_532_: f32;
-    var phi_533_: bool;
+    var phi_251_: f32;
+    var phi_252_: f32;
+    var phi_253_: f32;
+    var phi_254_: bool;
+    var phi_276_: f32;
+    var phi_291_: f32;
+    var phi_292_: f32;
+    var phi_293_: f32;
+    var phi_294_: f32;
+    var phi_295_: bool;
+    var phi_317_: f32;
+    var phi_332_: f32;
+    var phi_333_: f32;
+    var phi_334_: f32;
+    var phi_335_: f32;
+    var phi_336_: bool;
+    var phi_379_: f32;
+    var phi_380_: f32;
+    var phi_381_: f32;
+    var phi_382_: f32;
+    var phi_383_: bool;
+    var phi_422_: f32;
+    var phi_423_: f32;
+    var phi_424_: f32;
+    var phi_425_: f32;
+    var phi_426_: bool;
+    var phi_464_: f32;
+    var phi_465_: f32;
+    var phi_466_: f32;
+    var phi_467_: f32;
+    var phi_468_: bool;
+    var phi_484_: array<f32, 4>;
+    var phi_485_: array<f32, 4>;
+    var phi_486_: array<f32, 4>;
+    var phi_487_: array<f32, 4>;
+    var phi_533_: f32;
+    var phi_534_: f32;
+    var phi_554_: f32;
     var phi_555_: f32;
-    var phi_570_: f32;
-    var phi_571_: f32;
+    var phi_556_: f32;
+    var phi_557_: f32;
+    var phi_563_: f32;
+    var phi_564_: f32;
+    var phi_566_: f32;
+    var phi_567_: bool;
     var phi_572_: f32;
-    var phi_573_: f32;
-    var phi_574_: bool;
-    var phi_596_: f32;
-    var phi_611_: f32;
-    var phi_612_: f32;
-    var phi_613_: f32;
-    var phi_614_: f32;
-    var phi_615_: bool;
-    var phi_694_: array<f32, 4>;
-    var phi_695_: array<f32, 4>;
-    var phi_704_: array<f32, 3>;
-    var phi_705_: f32;
-    var phi_762_: f32;
-    var phi_763_: f32;
-    var phi_764_: f32;
-    var phi_765_: f32;
-    var phi_766_: bool;
-    var phi_805_: f32;
-    var phi_806_: f32;
-    var phi_807_: f32;
-    var phi_808_: f32;
-    var phi_809_: bool;
-    var phi_847_: f32;
-    var phi_848_: f32;
-    var phi_849_: f32;
-    var phi_850_: f32;
-    var phi_851_: bool;
-    var phi_913_: f32;
-    var phi_928_: f32;
-    var phi_929_: f32;
-    var phi_930_: f32;
-    var phi_931_: f32;
-    var phi_932_: bool;
-    var phi_954_: f32;
-    var phi_969_: f32;
-    var phi_970_: f32;
-    var phi_971_: f32;
-    var phi_972_: f32;
-    var phi_973_: bool;
-    var phi_995_: f32;
-    var phi_1010_: f32;
-    var phi_1011_: f32;
-    var phi_1012_: f32;
-    var phi_1013_: f32;
-    var phi_1014_: bool;
-    var phi_1036_: f32;
-    var phi_1051_: f32;
-    var phi_1052_: f32;
-    var phi_1053_: f32;
-    var phi_1054_: f32;
-    var phi_1055_: bool;
-    var phi_1134_: array<f32, 4>;
-    var phi_1135_: array<f32, 4>;
-    var phi_1136_: array<f32, 3>;
-    var phi_1137_: f32;
-    var phi_1138_: bool;
-    var phi_1139_: array<f32, 4>;
-    var phi_1140_: bool;
-    var phi_1141_: bool;
-    var phi_1171_: array<f32, 3>;
-    var phi_1173_: array<f32, 3>;
-    var phi_1174_: f32;
-    var phi_1277_: bool;
-    var phi_1304_: f32;
-    var phi_1306_: f32;
-    var phi_1307_: bool;
-    var phi_1308_: f32;
-    var phi_1309_: f32;
-    var phi_1310_: bool;
-    var phi_1311_: f32;
-    var phi_1312_: f32;
-    var phi_1313_: bool;
-    var phi_1314_: bool;
-    var phi_1315_: f32;
-    var phi_1316_: f32;
-    var phi_1317_: bool;
-    var phi_1318_: bool;
-    var phi_1336_: f32;
-    var phi_1337_: f32;
-    var phi_126_: u32;
-    var phi_1368_: bool;
+    var phi_582_: bool;
+    var phi_603_: u32;
+    var phi_735_: f32;
+    var phi_750_: f32;
+    var phi_751_: f32;
+    var phi_752_: f32;
+    var phi_753_: f32;
+    var phi_754_: bool;
+    var phi_776_: f32;
+    var phi_791_: f32;
+    var phi_792_: f32;
+    var phi_793_: f32;
+    var phi_794_: f32;
+    var phi_795_: bool;
+    var phi_817_: f32;
+    var phi_832_: f32;
+    var phi_833_: f32;
+    var phi_834_: f32;
+    var phi_835_: f32;
+    var phi_836_: bool;
+    var phi_858_: f32;
+    var phi_873_: f32;
+    var phi_874_: f32;
+    var phi_875_: f32;
+    var phi_876_: f32;
+    var phi_877_: bool;
+    var phi_935_: f32;
+    var phi_936_: f32;
+    var phi_937_: f32;
+    var phi_938_: f32;
+    var phi_939_: bool;
+    var phi_978_: f32;
+    var phi_979_: f32;
+    var phi_980_: f32;
+    var phi_981_: f32;
+    var phi_982_: bool;
+    var phi_1020_: f32;
+    var phi_1021_: f32;
+    var phi_1022_: f32;
+    var phi_1023_: f32;
+    var phi_1024_: bool;
+    var phi_1070_: array<f32, 4>;
+    var phi_1071_: array<f32, 4>;
+    var phi_1072_: array<f32, 4>;
+    var phi_1073_: array<f32, 4>;
+    var phi_1082_: array<f32, 3>;
+    var phi_1083_: f32;
+    var phi_1099_: u32;
+    var phi_1231_: f32;
+    var phi_1246_: f32;
+    var phi_1247_: f32;
+    var phi_1248_: f32;
+    var phi_1249_: f32;
+    var phi_1250_: bool;
+    var phi_1272_: f32;
+    var phi_1287_: f32;
+    var phi_1288_: f32;
+    var phi_1289_: f32;
+    var phi_1290_: f32;
+    var phi_1291_: bool;
+    var phi_1313_: f32;
+    var phi_1328_: f32;
+    var phi_1329_: f32;
+    var phi_1330_: f32;
+    var phi_1331_: f32;
+    var phi_1332_: bool;
+    var phi_1354_: f32;
+    var phi_1369_: f32;
+    var phi_1370_: f32;
+    var phi_1371_: f32;
+    var phi_1372_: f32;
+    var phi_1373_: bool;
+    var phi_1431_: f32;
+    var phi_1432_: f32;
+    var phi_1433_: f32;
+    var phi_1434_: f32;
+    var phi_1435_: bool;
+    var phi_1474_: f32;
+    var phi_1475_: f32;
+    var phi_1476_: f32;
+    var phi_1477_: f32;
+    var phi_1478_: bool;
+    var phi_1516_: f32;
+    var phi_1517_: f32;
+    var phi_1518_: f32;
+    var phi_1519_: f32;
+    var phi_1520_: bool;
+    var phi_1566_: array<f32, 4>;
+    var phi_1567_: array<f32, 4>;
+    var phi_1568_: array<f32, 4>;
+    var phi_1569_: array<f32, 4>;
+    var phi_1570_: array<f32, 3>;
+    var phi_1571_: f32;
+    var phi_1572_: bool;
+    var phi_1573_: array<f32, 4>;
+    var phi_1574_: bool;
+    var phi_1575_: bool;
+    var phi_1605_: array<f32, 3>;
+    var phi_1607_: array<f32, 3>;
+    var phi_1608_: f32;
+    var phi_1711_: bool;
+    var phi_1738_: f32;
+    var phi_1740_: f32;
+    var phi_1741_: bool;
+    var phi_1742_: f32;
+    var phi_1743_: f32;
+    var phi_1744_: bool;
+    var phi_1745_: f32;
+    var phi_1746_: f32;
+    var phi_1747_: bool;
+    var phi_1748_: bool;
+    var phi_1749_: f32;
+    var phi_1750_: f32;
+    var phi_1751_: bool;
+    var phi_1752_: bool;
+    var phi_1770_: f32;
+    var phi_1771_: f32;
+    var phi_127_: u32;
+    var phi_1802_: bool;
 
-    let _e181 = global_8;
-    local_125 = bitcast<f32>(_e181);
-    let _e183 = global_9;
-    let _e184 = bitcast<f32>(_e183);
-    local_126 = _e184;
+    let _e207 = global_8;
+    local_151 = bitcast<f32>(_e207);
+    let _e209 = global_9;
+    let _e210 = bitcast<f32>(_e209);
+    local_152 = _e210;
     switch bitcast<i32>(0u) {
         default: {
-            let _e186 = global;
-            local = _e186;
-            let _e187 = global_1;
-            let _e188 = global_2;
+            let _e212 = global;
+            local = _e212;
+            let _e213 = global_1;
+            let _e214 = global_2;
             local_1 = arrayLength((&global_4.member));
             local_2 = arrayLength((&global_3.member));
             local_3 = arrayLength((&global_6.member));
             local_4 = arrayLength((&global_7.member));
-            let _e202 = global_5.member.member.member;
-            let _e206 = global_5.member.member.member_1;
-            local_5 = (_e202 * _e206);
-            local_6 = (_e188.x * 256u);
-            phi_125_ = (_e187.x * 256u);
+            let _e228 = global_5.member.member.member;
+            let _e232 = global_5.member.member.member_1;
+            local_5 = (_e228 * _e232);
+            local_6 = (_e214.x * 256u);
+            phi_126_ = (_e213.x * 256u);
             loop {
-                let _e211 = phi_125_;
-                local_7 = _e211;
-                let _e212 = local_7;
-                let _e213 = local_5;
-                let _e214 = (_e212 < _e213);
-                local_8 = _e214;
-                if _e214 {
-                    let _e215 = local_7;
-                    let _e216 = local;
-                    let _e217 = (_e215 + _e216);
-                    local_9 = _e217;
-                    let _e218 = local_5;
-                    if (_e217 < _e218) {
-                        let _e220 = local_9;
-                        let _e221 = local_2;
-                        if (_e220 < _e221) {
+                let _e237 = phi_126_;
+                local_7 = _e237;
+                let _e238 = local_7;
+                let _e239 = local_5;
+                let _e240 = (_e238 < _e239);
+                local_8 = _e240;
+                if _e240 {
+                    let _e241 = local_7;
+                    let _e242 = local;
+                    let _e243 = (_e241 + _e242);
+                    local_9 = _e243;
+                    let _e244 = local_5;
+                    if (_e243 < _e244) {
+                        let _e246 = local_9;
+                        let _e247 = local_2;
+                        if (_e246 < _e247) {
                         } else {
-                            phi_1368_ = true;
+                            phi_1802_ = true;
                             break;
                         }
-                        let _e223 = local_9;
-                        let _e226 = global_3.member[_e223];
-                        local_10 = _e226;
-                        let _e230 = global_5.member.member.member_7;
-                        if (_e230 == 1u) {
-                            let _e232 = local_10;
-                            phi_166_ = (f32((_e232 & 16777215u)) * 0.00000005960465f);
+                        let _e249 = local_9;
+                        let _e252 = global_3.member[_e249];
+                        local_10 = _e252;
+                        let _e256 = global_5.member.member.member_7;
+                        let _e258 = select(3u, 4u, (_e256 == 1u));
+                        local_133 = _e258;
+                        if (_e258 == 0u) {
+                            let _e260 = local_10;
+                            let _e261 = bitcast<f32>(_e260);
+                            phi_487_ = array<f32, 4>(_e261, _e261, _e261, _e261);
                         } else {
-                            let _e236 = local_10;
-                            phi_166_ = bitcast<f32>(_e236);
-                        }
-                        let _e239 = phi_166_;
-                        local_11 = _e239;
-                        let _e243 = global_5.member.member.member_3;
-                        local_12 = _e243;
-                        if (_e243 == 0u) {
-                            phi_250_ = _e239;
-                        } else {
-                            let _e245 = local_11;
-                            if (_e245 >= 0f) {
-                                let _e247 = local_11;
-                                let _e248 = (_e247 <= 1f);
-                                local_13 = _e248;
-                                if _e248 {
-                                    let _e252 = global_5.member.member.member_5;
-                                    local_14 = _e252;
-                                    let _e253 = local_126;
-                                    local_15 = (_e252 == _e253);
-                                    let _e255 = local_12;
-                                    if (_e255 == 1u) {
-                                        let _e257 = local_15;
-                                        if _e257 {
-                                            let _e261 = global_5.member.member.member_4;
-                                            let _e262 = local_11;
-                                            phi_211_ = (1f - _e262);
-                                            phi_212_ = _e261;
-                                        } else {
-                                            let _e267 = global_5.member.member.member_4;
-                                            let _e268 = local_14;
-                                            let _e270 = local_14;
-                                            let _e272 = local_11;
-                                            let _e274 = local_14;
-                                            phi_211_ = (_e274 - (_e272 * (_e270 - _e267)));
-                                            phi_212_ = (_e267 * _e268);
-                                        }
-                                        let _e277 = phi_211_;
-                                        let _e279 = phi_212_;
-                                        phi_234_ = _e277;
-                                        phi_235_ = _e279;
+                            let _e263 = local_133;
+                            if (_e263 == 1u) {
+                                let _e265 = local_10;
+                                let _e266 = (_e265 & 65535u);
+                                local_11 = ((_e266 & 32768u) << bitcast<u32>(16i));
+                                let _e272 = ((_e266 >> bitcast<u32>(10i)) & 31u);
+                                local_12 = _e272;
+                                local_13 = (_e266 & 1023u);
+                                let _e274 = (_e272 == 0u);
+                                local_14 = _e274;
+                                if _e274 {
+                                    let _e275 = local_13;
+                                    let _e276 = f32(_e275);
+                                    local_15 = _e276;
+                                    let _e278 = local_11;
+                                    if (_e278 == 0u) {
+                                        phi_194_ = (_e276 * 0.000000059604645f);
                                     } else {
                                         let _e280 = local_15;
-                                        if _e280 {
-                                            let _e284 = global_5.member.member.member_4;
-                                            phi_232_ = _e239;
-                                            phi_233_ = _e284;
-                                        } else {
-                                            let _e288 = global_5.member.member.member_4;
-                                            let _e289 = local_14;
-                                            let _e291 = local_14;
-                                            let _e293 = local_11;
-                                            phi_232_ = (_e288 + (_e293 * (_e291 - _e288)));
-                                            phi_233_ = (_e288 * _e289);
-                                        }
-                                        let _e297 = phi_232_;
-                                        let _e299 = phi_233_;
-                                        phi_234_ = _e297;
-                                        phi_235_ = _e299;
+                                        phi_194_ = (_e280 * -0.000000059604645f);
                                     }
-                                    let _e301 = phi_234_;
-                                    let _e303 = phi_235_;
-                                    local_16 = _e301;
-                                    local_17 = _e303;
-                                    if (_e301 <= 0f) {
-                                        phi_241_ = _e184;
+                                    let _e283 = phi_194_;
+                                    phi_211_ = _e283;
+                                    phi_212_ = f32();
+                                    phi_213_ = true;
+                                } else {
+                                    let _e284 = local_12;
+                                    let _e285 = (_e284 == 31u);
+                                    if _e285 {
+                                        let _e286 = local_11;
+                                        let _e288 = local_13;
+                                        phi_209_ = bitcast<f32>(((_e286 | 2139095040u) | (_e288 << bitcast<u32>(13i))));
+                                        phi_210_ = f32();
                                     } else {
-                                        let _e305 = local_17;
-                                        let _e306 = local_16;
-                                        phi_241_ = (_e305 / _e306);
+                                        let _e293 = local_12;
+                                        let _e297 = local_11;
+                                        let _e299 = local_13;
+                                        phi_209_ = f32();
+                                        phi_210_ = bitcast<f32>(((_e297 | ((_e293 + 112u) << bitcast<u32>(23i))) | (_e299 << bitcast<u32>(13i))));
                                     }
-                                    let _e309 = phi_241_;
-                                    phi_242_ = _e309;
-                                } else {
-                                    phi_242_ = f32();
+                                    let _e305 = phi_209_;
+                                    let _e307 = phi_210_;
+                                    phi_211_ = _e305;
+                                    phi_212_ = _e307;
+                                    phi_213_ = _e285;
                                 }
-                                let _e311 = phi_242_;
-                                let _e312 = local_13;
-                                phi_244_ = _e311;
-                                phi_245_ = select(true, false, _e312);
-                            } else {
-                                phi_244_ = f32();
-                                phi_245_ = true;
-                            }
-                            let _e315 = phi_244_;
-                            let _e317 = phi_245_;
-                            let _e318 = local_125;
-                            phi_250_ = select(_e315, _e318, _e317);
-                        }
-                        let _e321 = phi_250_;
-                        local_18 = _e321;
-                        let _e322 = local_12;
-                        if (_e322 == 2u) {
-                            let _e324 = local_11;
-                            phi_260_ = (_e324 > 0f);
-                        } else {
-                            let _e326 = local_11;
-                            phi_260_ = (_e326 < 1f);
-                        }
-                        let _e329 = phi_260_;
-                        if _e329 {
-                            let _e330 = local_18;
-                            let _e333 = ((bitcast<u32>(_e330) & 2139095040u) != 2139095040u);
-                            local_19 = _e333;
-                            let _e337 = global_5.member.member.member_2;
-                            local_20 = _e337;
-                            if (_e337 == 1u) {
-                                let _e339 = local_9;
-                                let _e340 = local_1;
-                                if (_e339 < _e340) {
+                                let _e309 = phi_211_;
+                                let _e311 = phi_212_;
+                                let _e313 = phi_213_;
+                                local_134 = select(_e311, _e309, _e313);
+                                let _e315 = local_10;
+                                let _e317 = (_e315 >> bitcast<u32>(16i));
+                                local_16 = ((_e317 & 32768u) << bitcast<u32>(16i));
+                                let _e323 = ((_e317 >> bitcast<u32>(10i)) & 31u);
+                                local_17 = _e323;
+                                local_18 = (_e317 & 1023u);
+                                let _e325 = (_e323 == 0u);
+                                local_19 = _e325;
+                                if _e325 {
+                                    let _e326 = local_18;
+                                    let _e327 = f32(_e326);
+                                    local_20 = _e327;
+                                    let _e329 = local_16;
+                                    if (_e329 == 0u) {
+                                        phi_235_ = (_e327 * 0.000000059604645f);
+                                    } else {
+                                        let _e331 = local_20;
+                                        phi_235_ = (_e331 * -0.000000059604645f);
+                                    }
+                                    let _e334 = phi_235_;
+                                    phi_252_ = _e334;
+                                    phi_253_ = f32();
+                                    phi_254_ = true;
                                 } else {
-                                    phi_1368_ = true;
+                                    let _e335 = local_17;
+                                    let _e336 = (_e335 == 31u);
+                                    if _e336 {
+                                        let _e337 = local_16;
+                                        let _e339 = local_18;
+                                        phi_250_ = bitcast<f32>(((_e337 | 2139095040u) | (_e339 << bitcast<u32>(13i))));
+                                        phi_251_ = f32();
+                                    } else {
+                                        let _e344 = local_17;
+                                        let _e348 = local_16;
+                                        let _e350 = local_18;
+                                        phi_250_ = f32();
+                                        phi_251_ = bitcast<f32>(((_e348 | ((_e344 + 112u) << bitcast<u32>(23i))) | (_e350 << bitcast<u32>(13i))));
+                                    }
+                                    let _e356 = phi_250_;
+                                    let _e358 = phi_251_;
+                                    phi_252_ = _e356;
+                                    phi_253_ = _e358;
+                                    phi_254_ = _e336;
+                                }
+                                let _e360 = phi_252_;
+                                let _e362 = phi_253_;
+                                let _e364 = phi_254_;
+                                local_135 = select(_e362, _e360, _e364);
+                                let _e366 = local_14;
+                                if _e366 {
+                                    let _e367 = local_13;
+                                    let _e368 = f32(_e367);
+                                    local_21 = _e368;
+                                    let _e370 = local_11;
+                                    if (_e370 == 0u) {
+                                        phi_276_ = (_e368 * 0.000000059604645f);
+                                    } else {
+                                        let _e372 = local_21;
+                                        phi_276_ = (_e372 * -0.000000059604645f);
+                                    }
+                                    let _e375 = phi_276_;
+                                    phi_293_ = _e375;
+                                    phi_294_ = f32();
+                                    phi_295_ = true;
+                                } else {
+                                    let _e376 = local_12;
+                                    let _e377 = (_e376 == 31u);
+                                    if _e377 {
+                                        let _e378 = local_11;
+                                        let _e380 = local_13;
+                                        phi_291_ = bitcast<f32>(((_e378 | 2139095040u) | (_e380 << bitcast<u32>(13i))));
+                                        phi_292_ = f32();
+                                    } else {
+                                        let _e385 = local_12;
+                                        let _e389 = local_11;
+                                        let _e391 = local_13;
+                                        phi_291_ = f32();
+                                        phi_292_ = bitcast<f32>(((_e389 | ((_e385 + 112u) << bitcast<u32>(23i))) | (_e391 << bitcast<u32>(13i))));
+                                    }
+                                    let _e397 = phi_291_;
+                                    let _e399 = phi_292_;
+                                    phi_293_ = _e397;
+                                    phi_294_ = _e399;
+                                    phi_295_ = _e377;
+                                }
+                                let _e401 = phi_293_;
+                                let _e403 = phi_294_;
+                                let _e405 = phi_295_;
+                                local_136 = select(_e403, _e401, _e405);
+                                let _e407 = local_19;
+                                if _e407 {
+                                    let _e408 = local_18;
+                                    let _e409 = f32(_e408);
+                                    local_22 = _e409;
+                                    let _e411 = local_16;
+                                    if (_e411 == 0u) {
+                                        phi_317_ = (_e409 * 0.000000059604645f);
+                                    } else {
+                                        let _e413 = local_22;
+                                        phi_317_ = (_e413 * -0.000000059604645f);
+                                    }
+                                    let _e416 = phi_317_;
+                                    phi_334_ = _e416;
+                                    phi_335_ = f32();
+                                    phi_336_ = true;
+                                } else {
+                                    let _e417 = local_17;
+                                    let _e418 = (_e417 == 31u);
+                                    if _e418 {
+                                        let _e419 = local_16;
+                                        let _e421 = local_18;
+                                        phi_332_ = bitcast<f32>(((_e419 | 2139095040u) | (_e421 << bitcast<u32>(13i))));
+                                        phi_333_ = f32();
+                                    } else {
+                                        let _e426 = local_17;
+                                        let _e430 = local_16;
+                                        let _e432 = local_18;
+                                        phi_332_ = f32();
+                                        phi_333_ = bitcast<f32>(((_e430 | ((_e426 + 112u) << bitcast<u32>(23i))) | (_e432 << bitcast<u32>(13i))));
+                                    }
+                                    let _e438 = phi_332_;
+                                    let _e440 = phi_333_;
+                                    phi_334_ = _e438;
+                                    phi_335_ = _e440;
+                                    phi_336_ = _e418;
+                                }
+                                let _e442 = phi_334_;
+                                let _e444 = phi_335_;
+                                let _e446 = phi_336_;
+                                let _e448 = local_134;
+                                let _e449 = local_135;
+                                let _e450 = local_136;
+                                phi_486_ = array<f32, 4>(_e448, _e449, _e450, select(_e444, _e442, _e446));
+                            } else {
+                                let _e452 = local_133;
+                                if (_e452 == 2u) {
+                                    let _e454 = local_10;
+                                    let _e455 = (_e454 & 2047u);
+                                    let _e458 = ((_e455 >> bitcast<u32>(6u)) & 31u);
+                                    local_23 = _e458;
+                                    local_24 = (_e455 & 63u);
+                                    if (_e458 == 0u) {
+                                        let _e461 = local_24;
+                                        phi_381_ = (f32(_e461) * 0.0000009536743f);
+                                        phi_382_ = f32();
+                                        phi_383_ = true;
+                                    } else {
+                                        let _e464 = local_23;
+                                        let _e465 = (_e464 == 31u);
+                                        if _e465 {
+                                            let _e466 = local_24;
+                                            phi_379_ = bitcast<f32>((2139095040u | (_e466 << bitcast<u32>(17u))));
+                                            phi_380_ = f32();
+                                        } else {
+                                            let _e471 = local_23;
+                                            let _e475 = local_24;
+                                            phi_379_ = f32();
+                                            phi_380_ = bitcast<f32>((((_e471 + 112u) << bitcast<u32>(23i)) | (_e475 << bitcast<u32>(17u))));
+                                        }
+                                        let _e481 = phi_379_;
+                                        let _e483 = phi_380_;
+                                        phi_381_ = _e481;
+                                        phi_382_ = _e483;
+                                        phi_383_ = _e465;
+                                    }
+                                    let _e485 = phi_381_;
+                                    let _e487 = phi_382_;
+                                    let _e489 = phi_383_;
+                                    local_137 = select(_e487, _e485, _e489);
+                                    let _e491 = local_10;
+                                    let _e494 = ((_e491 >> bitcast<u32>(11i)) & 2047u);
+                                    let _e497 = ((_e494 >> bitcast<u32>(6u)) & 31u);
+                                    local_25 = _e497;
+                                    local_26 = (_e494 & 63u);
+                                    if (_e497 == 0u) {
+                                        let _e500 = local_26;
+                                        phi_424_ = (f32(_e500) * 0.0000009536743f);
+                                        phi_425_ = f32();
+                                        phi_426_ = true;
+                                    } else {
+                                        let _e503 = local_25;
+                                        let _e504 = (_e503 == 31u);
+                                        if _e504 {
+                                            let _e505 = local_26;
+                                            phi_422_ = bitcast<f32>((2139095040u | (_e505 << bitcast<u32>(17u))));
+                                            phi_423_ = f32();
+                                        } else {
+                                            let _e510 = local_25;
+                                            let _e514 = local_26;
+                                            phi_422_ = f32();
+                                            phi_423_ = bitcast<f32>((((_e510 + 112u) << bitcast<u32>(23i)) | (_e514 << bitcast<u32>(17u))));
+                                        }
+                                        let _e520 = phi_422_;
+                                        let _e522 = phi_423_;
+                                        phi_424_ = _e520;
+                                        phi_425_ = _e522;
+                                        phi_426_ = _e504;
+                                    }
+                                    let _e524 = phi_424_;
+                                    let _e526 = phi_425_;
+                                    let _e528 = phi_426_;
+                                    local_138 = select(_e526, _e524, _e528);
+                                    let _e530 = local_10;
+                                    let _e532 = (_e530 >> bitcast<u32>(22i));
+                                    let _e535 = ((_e532 >> bitcast<u32>(5u)) & 31u);
+                                    local_27 = _e535;
+                                    local_28 = (_e532 & 31u);
+                                    if (_e535 == 0u) {
+                                        let _e538 = local_28;
+                                        phi_466_ = (f32(_e538) * 0.0000019073486f);
+                                        phi_467_ = f32();
+                                        phi_468_ = true;
+                                    } else {
+                                        let _e541 = local_27;
+                                        let _e542 = (_e541 == 31u);
+                                        if _e542 {
+                                            let _e543 = local_28;
+                                            phi_464_ = bitcast<f32>((2139095040u | (_e543 << bitcast<u32>(18u))));
+                                            phi_465_ = f32();
+                                        } else {
+                                            let _e548 = local_27;
+                                            let _e552 = local_28;
+                                            phi_464_ = f32();
+                                            phi_465_ = bitcast<f32>((((_e548 + 112u) << bitcast<u32>(23i)) | (_e552 << bitcast<u32>(18u))));
+                                        }
+                                        let _e558 = phi_464_;
+                                        let _e560 = phi_465_;
+                                        phi_466_ = _e558;
+                                        phi_467_ = _e560;
+                                        phi_468_ = _e542;
+                                    }
+                                    let _e562 = phi_466_;
+                                    let _e564 = phi_467_;
+                                    let _e566 = phi_468_;
+                                    let _e568 = local_137;
+                                    let _e569 = local_138;
+                                    phi_485_ = array<f32, 4>(_e568, _e569, select(_e564, _e562, _e566), 1f);
+                                } else {
+                                    let _e571 = local_133;
+                                    if (_e571 == 4u) {
+                                        let _e573 = local_10;
+                                        phi_484_ = array<f32, 4>((f32((_e573 & 16777215u)) * 0.00000005960465f), 0f, 0f, 1f);
+                                    } else {
+                                        let _e578 = local_10;
+                                        phi_484_ = array<f32, 4>(bitcast<f32>(_e578), 0f, 0f, 1f);
+                                    }
+                                    let _e582 = phi_484_;
+                                    phi_485_ = _e582;
+                                }
+                                let _e584 = phi_485_;
+                                phi_486_ = _e584;
+                            }
+                            let _e586 = phi_486_;
+                            phi_487_ = _e586;
+                        }
+                        let _e588 = phi_487_;
+                        local_29 = _e588[0];
+                        let _e593 = global_5.member.member.member_3;
+                        local_30 = _e593;
+                        if (_e593 == 0u) {
+                            phi_572_ = _e588[0];
+                        } else {
+                            let _e595 = local_29;
+                            if (_e595 >= 0f) {
+                                let _e597 = local_29;
+                                let _e598 = (_e597 <= 1f);
+                                local_31 = _e598;
+                                if _e598 {
+                                    let _e602 = global_5.member.member.member_5;
+                                    local_32 = _e602;
+                                    let _e603 = local_152;
+                                    local_33 = (_e602 == _e603);
+                                    let _e605 = local_30;
+                                    if (_e605 == 1u) {
+                                        let _e607 = local_33;
+                                        if _e607 {
+                                            let _e611 = global_5.member.member.member_4;
+                                            let _e612 = local_29;
+                                            phi_533_ = (1f - _e612);
+                                            phi_534_ = _e611;
+                                        } else {
+                                            let _e617 = global_5.member.member.member_4;
+                                            let _e618 = local_32;
+                                            let _e620 = local_32;
+                                            let _e622 = local_29;
+                                            let _e624 = local_32;
+                                            phi_533_ = (_e624 - (_e622 * (_e620 - _e617)));
+                                            phi_534_ = (_e617 * _e618);
+                                        }
+                                        let _e627 = phi_533_;
+                                        let _e629 = phi_534_;
+                                        phi_556_ = _e627;
+                                        phi_557_ = _e629;
+                                    } else {
+                                        let _e630 = local_33;
+                                        if _e630 {
+                                            let _e634 = global_5.member.member.member_4;
+                                            phi_554_ = _e588[0];
+                                            phi_555_ = _e634;
+                                        } else {
+                                            let _e638 = global_5.member.member.member_4;
+                                            let _e639 = local_32;
+                                            let _e641 = local_32;
+                                            let _e643 = local_29;
+                                            phi_554_ = (_e638 + (_e643 * (_e641 - _e638)));
+                                            phi_555_ = (_e638 * _e639);
+                                        }
+                                        let _e647 = phi_554_;
+                                        let _e649 = phi_555_;
+                                        phi_556_ = _e647;
+                                        phi_557_ = _e649;
+                                    }
+                                    let _e651 = phi_556_;
+                                    let _e653 = phi_557_;
+                                    local_34 = _e651;
+                                    local_35 = _e653;
+                                    if (_e651 <= 0f) {
+                                        phi_563_ = _e210;
+                                    } else {
+                                        let _e655 = local_35;
+                                        let _e656 = local_34;
+                                        phi_563_ = (_e655 / _e656);
+                                    }
+                                    let _e659 = phi_563_;
+                                    phi_564_ = _e659;
+                                } else {
+                                    phi_564_ = f32();
+                                }
+                                let _e661 = phi_564_;
+                                let _e662 = local_31;
+                                phi_566_ = _e661;
+                                phi_567_ = select(true, false, _e662);
+                            } else {
+                                phi_566_ = f32();
+                                phi_567_ = true;
+                            }
+                            let _e665 = phi_566_;
+                            let _e667 = phi_567_;
+                            let _e668 = local_151;
+                            phi_572_ = select(_e665, _e668, _e667);
+                        }
+                        let _e671 = phi_572_;
+                        local_36 = _e671;
+                        let _e672 = local_30;
+                        if (_e672 == 2u) {
+                            let _e674 = local_29;
+                            phi_582_ = (_e674 > 0f);
+                        } else {
+                            let _e676 = local_29;
+                            phi_582_ = (_e676 < 1f);
+                        }
+                        let _e679 = phi_582_;
+                        if _e679 {
+                            let _e680 = local_36;
+                            let _e683 = ((bitcast<u32>(_e680) & 2139095040u) != 2139095040u);
+                            local_37 = _e683;
+                            let _e687 = global_5.member.member.member_2;
+                            local_38 = _e687;
+                            if (_e687 == 1u) {
+                                phi_603_ = 2u;
+                            } else {
+                                let _e689 = local_38;
+                                phi_603_ = select(0u, 1u, (_e689 == 2u));
+                            }
+                            let _e693 = phi_603_;
+                            local_39 = _e693;
+                            if (_e693 == 0u) {
+                                let _e695 = local_9;
+                                let _e696 = (4u * _e695);
+                                local_40 = _e696;
+                                let _e697 = local_1;
+                                if (_e696 < _e697) {
+                                } else {
+                                    phi_1802_ = true;
                                     break;
                                 }
-                                let _e342 = local_9;
-                                let _e345 = global_4.member[_e342];
-                                local_21 = _e345;
-                                let _e346 = (_e345 & 2047u);
-                                let _e349 = ((_e346 >> bitcast<u32>(6u)) & 31u);
-                                local_22 = _e349;
-                                local_23 = (_e346 & 63u);
-                                if (_e349 == 0u) {
-                                    let _e352 = local_23;
-                                    phi_324_ = (f32(_e352) * 0.0000009536743f);
-                                    phi_325_ = f32();
-                                    phi_326_ = true;
+                                let _e699 = local_40;
+                                let _e702 = global_4.member[_e699];
+                                local_41 = bitcast<f32>(_e702);
+                                let _e704 = local_40;
+                                let _e705 = (_e704 + 1u);
+                                local_42 = _e705;
+                                let _e706 = local_1;
+                                if (_e705 < _e706) {
                                 } else {
-                                    let _e355 = local_22;
-                                    let _e356 = (_e355 == 31u);
-                                    if _e356 {
-                                        let _e357 = local_23;
-                                        phi_322_ = bitcast<f32>((2139095040u | (_e357 << bitcast<u32>(17u))));
-                                        phi_323_ = f32();
-                                    } else {
-                                        let _e362 = local_22;
-                                        let _e366 = local_23;
-                                        phi_322_ = f32();
-                                        phi_323_ = bitcast<f32>((((_e362 + 112u) << bitcast<u32>(23i)) | (_e366 << bitcast<u32>(17u))));
-                                    }
-                                    let _e372 = phi_322_;
-                                    let _e374 = phi_323_;
-                                    phi_324_ = _e372;
-                                    phi_325_ = _e374;
-                                    phi_326_ = _e356;
-                                }
-                                let _e376 = phi_324_;
-                                let _e378 = phi_325_;
-                                let _e380 = phi_326_;
-                                local_113 = select(_e378, _e376, _e380);
-                                let _e382 = local_21;
-                                let _e385 = ((_e382 >> bitcast<u32>(11i)) & 2047u);
-                                let _e388 = ((_e385 >> bitcast<u32>(6u)) & 31u);
-                                local_24 = _e388;
-                                local_25 = (_e385 & 63u);
-                                if (_e388 == 0u) {
-                                    let _e391 = local_25;
-                                    phi_367_ = (f32(_e391) * 0.0000009536743f);
-                                    phi_368_ = f32();
-                                    phi_369_ = true;
-                                } else {
-                                    let _e394 = local_24;
-                                    let _e395 = (_e394 == 31u);
-                                    if _e395 {
-                                        let _e396 = local_25;
-                                        phi_365_ = bitcast<f32>((2139095040u | (_e396 << bitcast<u32>(17u))));
-                                        phi_366_ = f32();
-                                    } else {
-                                        let _e401 = local_24;
-                                        let _e405 = local_25;
-                                        phi_365_ = f32();
-                                        phi_366_ = bitcast<f32>((((_e401 + 112u) << bitcast<u32>(23i)) | (_e405 << bitcast<u32>(17u))));
-                                    }
-                                    let _e411 = phi_365_;
-                                    let _e413 = phi_366_;
-                                    phi_367_ = _e411;
-                                    phi_368_ = _e413;
-                                    phi_369_ = _e395;
-                                }
-                                let _e415 = phi_367_;
-                                let _e417 = phi_368_;
-                                let _e419 = phi_369_;
-                                local_114 = select(_e417, _e415, _e419);
-                                let _e421 = local_21;
-                                let _e423 = (_e421 >> bitcast<u32>(22i));
-                                let _e426 = ((_e423 >> bitcast<u32>(5u)) & 31u);
-                                local_26 = _e426;
-                                local_27 = (_e423 & 31u);
-                                if (_e426 == 0u) {
-                                    let _e429 = local_27;
-                                    phi_409_ = (f32(_e429) * 0.0000019073486f);
-                                    phi_410_ = f32();
-                                    phi_411_ = true;
-                                } else {
-                                    let _e432 = local_26;
-                                    let _e433 = (_e432 == 31u);
-                                    if _e433 {
-                                        let _e434 = local_27;
-                                        phi_407_ = bitcast<f32>((2139095040u | (_e434 << bitcast<u32>(18u))));
-                                        phi_408_ = f32();
-                                    } else {
-                                        let _e439 = local_26;
-                                        let _e443 = local_27;
-                                        phi_407_ = f32();
-                                        phi_408_ = bitcast<f32>((((_e439 + 112u) << bitcast<u32>(23i)) | (_e443 << bitcast<u32>(18u))));
-                                    }
-                                    let _e449 = phi_407_;
-                                    let _e451 = phi_408_;
-                                    phi_409_ = _e449;
-                                    phi_410_ = _e451;
-                                    phi_411_ = _e433;
-                                }
-                                let _e453 = phi_409_;
-                                let _e455 = phi_410_;
-                                let _e457 = phi_411_;
-                                let _e459 = local_113;
-                                let _e460 = local_114;
-                                phi_695_ = array<f32, 4>(_e459, _e460, select(_e455, _e453, _e457), 1f);
-                            } else {
-                                let _e462 = local_20;
-                                if (_e462 == 2u) {
-                                    let _e464 = local_9;
-                                    let _e465 = (2u * _e464);
-                                    local_28 = _e465;
-                                    let _e466 = local_1;
-                                    if (_e465 < _e466) {
-                                    } else {
-                                        phi_1368_ = true;
-                                        break;
-                                    }
-                                    let _e468 = local_28;
-                                    let _e471 = global_4.member[_e468];
-                                    local_29 = _e471;
-                                    let _e472 = local_28;
-                                    let _e473 = (_e472 + 1u);
-                                    local_30 = _e473;
-                                    let _e474 = local_1;
-                                    if (_e473 < _e474) {
-                                    } else {
-                                        phi_1368_ = true;
-                                        break;
-                                    }
-                                    let _e476 = local_30;
-                                    let _e479 = global_4.member[_e476];
-                                    local_31 = _e479;
-                                    let _e480 = local_29;
-                                    let _e481 = (_e480 & 65535u);
-                                    local_32 = ((_e481 & 32768u) << bitcast<u32>(16i));
-                                    let _e487 = ((_e481 >> bitcast<u32>(10i)) & 31u);
-                                    local_33 = _e487;
-                                    local_34 = (_e481 & 1023u);
-                                    if (_e487 == 0u) {
-                                        let _e490 = local_34;
-                                        let _e491 = f32(_e490);
-                                        local_35 = _e491;
-                                        let _e493 = local_32;
-                                        if (_e493 == 0u) {
-                                            phi_473_ = (_e491 * 0.000000059604645f);
-                                        } else {
-                                            let _e495 = local_35;
-                                            phi_473_ = (_e495 * -0.000000059604645f);
-                                        }
-                                        let _e498 = phi_473_;
-                                        phi_490_ = _e498;
-                                        phi_491_ = f32();
-                                        phi_492_ = true;
-                                    } else {
-                                        let _e499 = local_33;
-                                        let _e500 = (_e499 == 31u);
-                                        if _e500 {
-                                            let _e501 = local_32;
-                                            let _e503 = local_34;
-                                            phi_488_ = bitcast<f32>(((_e501 | 2139095040u) | (_e503 << bitcast<u32>(13i))));
-                                            phi_489_ = f32();
-                                        } else {
-                                            let _e508 = local_33;
-                                            let _e512 = local_32;
-                                            let _e514 = local_34;
-                                            phi_488_ = f32();
-                                            phi_489_ = bitcast<f32>(((_e512 | ((_e508 + 112u) << bitcast<u32>(23i))) | (_e514 << bitcast<u32>(13i))));
-                                        }
-                                        let _e520 = phi_488_;
-                                        let _e522 = phi_489_;
-                                        phi_490_ = _e520;
-                                        phi_491_ = _e522;
-                                        phi_492_ = _e500;
-                                    }
-                                    let _e524 = phi_490_;
-                                    let _e526 = phi_491_;
-                                    let _e528 = phi_492_;
-                                    local_115 = select(_e526, _e524, _e528);
-                                    let _e530 = local_29;
-                                    let _e532 = (_e530 >> bitcast<u32>(16i));
-                                    local_36 = ((_e532 & 32768u) << bitcast<u32>(16i));
-                                    let _e538 = ((_e532 >> bitcast<u32>(10i)) & 31u);
-                                    local_37 = _e538;
-                                    local_38 = (_e532 & 1023u);
-                                    if (_e538 == 0u) {
-                                        let _e541 = local_38;
-                                        let _e542 = f32(_e541);
-                                        local_39 = _e542;
-                                        let _e544 = local_36;
-                                        if (_e544 == 0u) {
-                                            phi_514_ = (_e542 * 0.000000059604645f);
-                                        } else {
-                                            let _e546 = local_39;
-                                            phi_514_ = (_e546 * -0.000000059604645f);
-                                        }
-                                        let _e549 = phi_514_;
-                                        phi_531_ = _e549;
-                                        phi_532_ = f32();
-                                        phi_533_ = true;
-                                    } else {
-                                        let _e550 = local_37;
-                                        let _e551 = (_e550 == 31u);
-                                        if _e551 {
-                                            let _e552 = local_36;
-                                            let _e554 = local_38;
-                                            phi_529_ = bitcast<f32>(((_e552 | 2139095040u) | (_e554 << bitcast<u32>(13i))));
-                                            phi_530_ = f32();
-                                        } else {
-                                            let _e559 = local_37;
-                                            let _e563 = local_36;
-                                            let _e565 = local_38;
-                                            phi_529_ = f32();
-                                            phi_530_ = bitcast<f32>(((_e563 | ((_e559 + 112u) << bitcast<u32>(23i))) | (_e565 << bitcast<u32>(13i))));
-                                        }
-                                        let _e571 = phi_529_;
-                                        let _e573 = phi_530_;
-                                        phi_531_ = _e571;
-                                        phi_532_ = _e573;
-                                        phi_533_ = _e551;
-                                    }
-                                    let _e575 = phi_531_;
-                                    let _e577 = phi_532_;
-                                    let _e579 = phi_533_;
-                                    local_116 = select(_e577, _e575, _e579);
-                                    let _e581 = local_31;
-                                    let _e582 = (_e581 & 65535u);
-                                    local_40 = ((_e582 & 32768u) << bitcast<u32>(16i));
-                                    let _e588 = ((_e582 >> bitcast<u32>(10i)) & 31u);
-                                    local_41 = _e588;
-                                    local_42 = (_e582 & 1023u);
-                                    if (_e588 == 0u) {
-                                        let _e591 = local_42;
-                                        let _e592 = f32(_e591);
-                                        local_43 = _e592;
-                                        let _e594 = local_40;
-                                        if (_e594 == 0u) {
-                                            phi_555_ = (_e592 * 0.000000059604645f);
-                                        } else {
-                                            let _e596 = local_43;
-                                            phi_555_ = (_e596 * -0.000000059604645f);
-                                        }
-                                        let _e599 = phi_555_;
-                                        phi_572_ = _e599;
-                                        phi_573_ = f32();
-                                        phi_574_ = true;
-                                    } else {
-                                        let _e600 = local_41;
-                                        let _e601 = (_e600 == 31u);
-                                        if _e601 {
-                                            let _e602 = local_40;
-                                            let _e604 = local_42;
-                                            phi_570_ = bitcast<f32>(((_e602 | 2139095040u) | (_e604 << bitcast<u32>(13i))));
-                                            phi_571_ = f32();
-                                        } else {
-                                            let _e609 = local_41;
-                                            let _e613 = local_40;
-                                            let _e615 = local_42;
-                                            phi_570_ = f32();
-                                            phi_571_ = bitcast<f32>(((_e613 | ((_e609 + 112u) << bitcast<u32>(23i))) | (_e615 << bitcast<u32>(13i))));
-                                        }
-                                        let _e621 = phi_570_;
-                                        let _e623 = phi_571_;
-                                        phi_572_ = _e621;
-                                        phi_573_ = _e623;
-                                        phi_574_ = _e601;
-                                    }
-                                    let _e625 = phi_572_;
-                                    let _e627 = phi_573_;
-                                    let _e629 = phi_574_;
-                                    local_117 = select(_e627, _e625, _e629);
-                                    let _e631 = local_31;
-                                    let _e633 = (_e631 >> bitcast<u32>(16i));
-                                    local_44 = ((_e633 & 32768u) << bitcast<u32>(16i));
-                                    let _e639 = ((_e633 >> bitcast<u32>(10i)) & 31u);
-                                    local_45 = _e639;
-                                    local_46 = (_e633 & 1023u);
-                                    if (_e639 == 0u) {
-                                        let _e642 = local_46;
-                                        let _e643 = f32(_e642);
-                                        local_47 = _e643;
-                                        let _e645 = local_44;
-                                        if (_e645 == 0u) {
-                                            phi_596_ = (_e643 * 0.000000059604645f);
-                                        } else {
-                                            let _e647 = local_47;
-                                            phi_596_ = (_e647 * -0.000000059604645f);
-                                        }
-                                        let _e650 = phi_596_;
-                                        phi_613_ = _e650;
-                                        phi_614_ = f32();
-                                        phi_615_ = true;
-                                    } else {
-                                        let _e651 = local_45;
-                                        let _e652 = (_e651 == 31u);
-                                        if _e652 {
-                                            let _e653 = local_44;
-                                            let _e655 = local_46;
-                                            phi_611_ = bitcast<f32>(((_e653 | 2139095040u) | (_e655 << bitcast<u32>(13i))));
-                                            phi_612_ = f32();
-                                        } else {
-                                            let _e660 = local_45;
-                                            let _e664 = local_44;
-                                            let _e666 = local_46;
-                                            phi_611_ = f32();
-                                            phi_612_ = bitcast<f32>(((_e664 | ((_e660 + 112u) << bitcast<u32>(23i))) | (_e666 << bitcast<u32>(13i))));
-                                        }
-                                        let _e672 = phi_611_;
-                                        let _e674 = phi_612_;
-                                        phi_613_ = _e672;
-                                        phi_614_ = _e674;
-                                        phi_615_ = _e652;
-                                    }
-                                    let _e676 = phi_613_;
-                                    let _e678 = phi_614_;
-                                    let _e680 = phi_615_;
-                                    let _e682 = local_115;
-                                    let _e683 = local_116;
-                                    let _e684 = local_117;
-                                    phi_694_ = array<f32, 4>(_e682, _e683, _e684, select(_e678, _e676, _e680));
-                                } else {
-                                    let _e686 = local_9;
-                                    let _e687 = (4u * _e686);
-                                    local_48 = _e687;
-                                    let _e688 = local_1;
-                                    if (_e687 < _e688) {
-                                    } else {
-                                        phi_1368_ = true;
-                                        break;
-                                    }
-                                    let _e690 = local_48;
-                                    let _e693 = global_4.member[_e690];
-                                    local_49 = bitcast<f32>(_e693);
-                                    let _e695 = local_48;
-                                    let _e696 = (_e695 + 1u);
-                                    local_50 = _e696;
-                                    let _e697 = local_1;
-                                    if (_e696 < _e697) {
-                                    } else {
-                                        phi_1368_ = true;
-                                        break;
-                                    }
-                                    let _e699 = local_50;
-                                    let _e702 = global_4.member[_e699];
-                                    local_51 = bitcast<f32>(_e702);
-                                    let _e704 = local_48;
-                                    let _e705 = (_e704 + 2u);
-                                    local_52 = _e705;
-                                    let _e706 = local_1;
-                                    if (_e705 < _e706) {
-                                    } else {
-                                        phi_1368_ = true;
-                                        break;
-                                    }
-                                    let _e708 = local_52;
-                                    let _e711 = global_4.member[_e708];
-                                    local_53 = bitcast<f32>(_e711);
-                                    let _e713 = local_48;
-                                    let _e714 = (_e713 + 3u);
-                                    local_54 = _e714;
-                                    let _e715 = local_1;
-                                    if (_e714 < _e715) {
-                                    } else {
-                                        phi_1368_ = true;
-                                        break;
-                                    }
-                                    let _e717 = local_54;
-                                    let _e720 = global_4.member[_e717];
-                                    let _e722 = local_49;
-                                    let _e723 = local_51;
-                                    let _e724 = local_53;
-                                    phi_694_ = array<f32, 4>(_e722, _e723, _e724, bitcast<f32>(_e720));
-                                }
-                                let _e727 = phi_694_;
-                                phi_695_ = _e727;
-                            }
-                            let _e729 = phi_695_;
-                            local_55 = _e729;
-                            let _e730 = local_19;
-                            if _e730 {
-                                let _e731 = local_55;
-                                let _e733 = local_55;
-                                let _e735 = local_55;
-                                let _e738 = local_55;
-                                phi_704_ = array<f32, 3>(_e731[0], _e733[1], _e735[2]);
-                                phi_705_ = _e738[3];
-                            } else {
-                                phi_704_ = array<f32, 3>();
-                                phi_705_ = f32();
-                            }
-                            let _e741 = phi_704_;
-                            let _e743 = phi_705_;
-                            let _e744 = local_19;
-                            phi_1136_ = _e741;
-                            phi_1137_ = _e743;
-                            phi_1138_ = _e333;
-                            phi_1139_ = _e729;
-                            phi_1140_ = _e333;
-                            phi_1141_ = select(true, false, _e744);
-                        } else {
-                            let _e749 = global_5.member.member.member_2;
-                            local_56 = _e749;
-                            if (_e749 == 1u) {
-                                let _e751 = local_9;
-                                let _e752 = local_1;
-                                if (_e751 < _e752) {
-                                } else {
-                                    phi_1368_ = true;
+                                    phi_1802_ = true;
                                     break;
                                 }
-                                let _e754 = local_9;
-                                let _e757 = global_4.member[_e754];
-                                local_57 = _e757;
-                                let _e758 = (_e757 & 2047u);
-                                let _e761 = ((_e758 >> bitcast<u32>(6u)) & 31u);
-                                local_58 = _e761;
-                                local_59 = (_e758 & 63u);
-                                if (_e761 == 0u) {
-                                    let _e764 = local_59;
-                                    phi_764_ = (f32(_e764) * 0.0000009536743f);
-                                    phi_765_ = f32();
-                                    phi_766_ = true;
+                                let _e708 = local_42;
+                                let _e711 = global_4.member[_e708];
+                                local_43 = bitcast<f32>(_e711);
+                                let _e713 = local_40;
+                                let _e714 = (_e713 + 2u);
+                                local_44 = _e714;
+                                let _e715 = local_1;
+                                if (_e714 < _e715) {
                                 } else {
-                                    let _e767 = local_58;
-                                    let _e768 = (_e767 == 31u);
-                                    if _e768 {
-                                        let _e769 = local_59;
-                                        phi_762_ = bitcast<f32>((2139095040u | (_e769 << bitcast<u32>(17u))));
-                                        phi_763_ = f32();
-                                    } else {
-                                        let _e774 = local_58;
-                                        let _e778 = local_59;
-                                        phi_762_ = f32();
-                                        phi_763_ = bitcast<f32>((((_e774 + 112u) << bitcast<u32>(23i)) | (_e778 << bitcast<u32>(17u))));
-                                    }
-                                    let _e784 = phi_762_;
-                                    let _e786 = phi_763_;
-                                    phi_764_ = _e784;
-                                    phi_765_ = _e786;
-                                    phi_766_ = _e768;
+                                    phi_1802_ = true;
+                                    break;
                                 }
-                                let _e788 = phi_764_;
-                                let _e790 = phi_765_;
-                                let _e792 = phi_766_;
-                                local_118 = select(_e790, _e788, _e792);
-                                let _e794 = local_57;
-                                let _e797 = ((_e794 >> bitcast<u32>(11i)) & 2047u);
-                                let _e800 = ((_e797 >> bitcast<u32>(6u)) & 31u);
-                                local_60 = _e800;
-                                local_61 = (_e797 & 63u);
-                                if (_e800 == 0u) {
-                                    let _e803 = local_61;
-                                    phi_807_ = (f32(_e803) * 0.0000009536743f);
-                                    phi_808_ = f32();
-                                    phi_809_ = true;
+                                let _e717 = local_44;
+                                let _e720 = global_4.member[_e717];
+                                local_45 = bitcast<f32>(_e720);
+                                let _e722 = local_40;
+                                let _e723 = (_e722 + 3u);
+                                local_46 = _e723;
+                                let _e724 = local_1;
+                                if (_e723 < _e724) {
                                 } else {
-                                    let _e806 = local_60;
-                                    let _e807 = (_e806 == 31u);
-                                    if _e807 {
-                                        let _e808 = local_61;
-                                        phi_805_ = bitcast<f32>((2139095040u | (_e808 << bitcast<u32>(17u))));
-                                        phi_806_ = f32();
-                                    } else {
-                                        let _e813 = local_60;
-                                        let _e817 = local_61;
-                                        phi_805_ = f32();
-                                        phi_806_ = bitcast<f32>((((_e813 + 112u) << bitcast<u32>(23i)) | (_e817 << bitcast<u32>(17u))));
-                                    }
-                                    let _e823 = phi_805_;
-                                    let _e825 = phi_806_;
-                                    phi_807_ = _e823;
-                                    phi_808_ = _e825;
-                                    phi_809_ = _e807;
+                                    phi_1802_ = true;
+                                    break;
                                 }
-                                let _e827 = phi_807_;
-                                let _e829 = phi_808_;
-                                let _e831 = phi_809_;
-                                local_119 = select(_e829, _e827, _e831);
-                                let _e833 = local_57;
-                                let _e835 = (_e833 >> bitcast<u32>(22i));
-                                let _e838 = ((_e835 >> bitcast<u32>(5u)) & 31u);
-                                local_62 = _e838;
-                                local_63 = (_e835 & 31u);
-                                if (_e838 == 0u) {
-                                    let _e841 = local_63;
-                                    phi_849_ = (f32(_e841) * 0.0000019073486f);
-                                    phi_850_ = f32();
-                                    phi_851_ = true;
-                                } else {
-                                    let _e844 = local_62;
-                                    let _e845 = (_e844 == 31u);
-                                    if _e845 {
-                                        let _e846 = local_63;
-                                        phi_847_ = bitcast<f32>((2139095040u | (_e846 << bitcast<u32>(18u))));
-                                        phi_848_ = f32();
-                                    } else {
-                                        let _e851 = local_62;
-                                        let _e855 = local_63;
-                                        phi_847_ = f32();
-                                        phi_848_ = bitcast<f32>((((_e851 + 112u) << bitcast<u32>(23i)) | (_e855 << bitcast<u32>(18u))));
-                                    }
-                                    let _e861 = phi_847_;
-                                    let _e863 = phi_848_;
-                                    phi_849_ = _e861;
-                                    phi_850_ = _e863;
-                                    phi_851_ = _e845;
-                                }
-                                let _e865 = phi_849_;
-                                let _e867 = phi_850_;
-                                let _e869 = phi_851_;
-                                let _e871 = local_118;
-                                let _e872 = local_119;
-                                phi_1135_ = array<f32, 4>(_e871, _e872, select(_e867, _e865, _e869), 1f);
+                                let _e726 = local_46;
+                                let _e729 = global_4.member[_e726];
+                                let _e731 = local_41;
+                                let _e732 = local_43;
+                                let _e733 = local_45;
+                                phi_1073_ = array<f32, 4>(_e731, _e732, _e733, bitcast<f32>(_e729));
                             } else {
-                                let _e874 = local_56;
-                                if (_e874 == 2u) {
-                                    let _e876 = local_9;
-                                    let _e877 = (2u * _e876);
-                                    local_64 = _e877;
-                                    let _e878 = local_1;
-                                    if (_e877 < _e878) {
+                                let _e735 = local_39;
+                                if (_e735 == 1u) {
+                                    let _e737 = local_9;
+                                    let _e738 = (2u * _e737);
+                                    local_47 = _e738;
+                                    let _e739 = local_1;
+                                    if (_e738 < _e739) {
                                     } else {
-                                        phi_1368_ = true;
+                                        phi_1802_ = true;
                                         break;
                                     }
-                                    let _e880 = local_64;
-                                    let _e883 = global_4.member[_e880];
-                                    local_65 = _e883;
-                                    let _e884 = local_64;
-                                    let _e885 = (_e884 + 1u);
-                                    local_66 = _e885;
-                                    let _e886 = local_1;
-                                    if (_e885 < _e886) {
+                                    let _e741 = local_47;
+                                    let _e744 = global_4.member[_e741];
+                                    local_48 = _e744;
+                                    let _e745 = local_47;
+                                    let _e746 = (_e745 + 1u);
+                                    local_49 = _e746;
+                                    let _e747 = local_1;
+                                    if (_e746 < _e747) {
                                     } else {
-                                        phi_1368_ = true;
+                                        phi_1802_ = true;
                                         break;
                                     }
-                                    let _e888 = local_66;
-                                    let _e891 = global_4.member[_e888];
-                                    local_67 = _e891;
-                                    let _e892 = local_65;
-                                    let _e893 = (_e892 & 65535u);
-                                    local_68 = ((_e893 & 32768u) << bitcast<u32>(16i));
-                                    let _e899 = ((_e893 >> bitcast<u32>(10i)) & 31u);
-                                    local_69 = _e899;
-                                    local_70 = (_e893 & 1023u);
-                                    if (_e899 == 0u) {
-                                        let _e902 = local_70;
-                                        let _e903 = f32(_e902);
-                                        local_71 = _e903;
-                                        let _e905 = local_68;
-                                        if (_e905 == 0u) {
-                                            phi_913_ = (_e903 * 0.000000059604645f);
+                                    let _e749 = local_49;
+                                    let _e752 = global_4.member[_e749];
+                                    local_50 = _e752;
+                                    let _e753 = local_48;
+                                    let _e754 = (_e753 & 65535u);
+                                    local_51 = ((_e754 & 32768u) << bitcast<u32>(16i));
+                                    let _e760 = ((_e754 >> bitcast<u32>(10i)) & 31u);
+                                    local_52 = _e760;
+                                    local_53 = (_e754 & 1023u);
+                                    if (_e760 == 0u) {
+                                        let _e763 = local_53;
+                                        let _e764 = f32(_e763);
+                                        local_54 = _e764;
+                                        let _e766 = local_51;
+                                        if (_e766 == 0u) {
+                                            phi_735_ = (_e764 * 0.000000059604645f);
                                         } else {
-                                            let _e907 = local_71;
-                                            phi_913_ = (_e907 * -0.000000059604645f);
+                                            let _e768 = local_54;
+                                            phi_735_ = (_e768 * -0.000000059604645f);
                                         }
-                                        let _e910 = phi_913_;
-                                        phi_930_ = _e910;
-                                        phi_931_ = f32();
-                                        phi_932_ = true;
+                                        let _e771 = phi_735_;
+                                        phi_752_ = _e771;
+                                        phi_753_ = f32();
+                                        phi_754_ = true;
                                     } else {
-                                        let _e911 = local_69;
-                                        let _e912 = (_e911 == 31u);
-                                        if _e912 {
-                                            let _e913 = local_68;
-                                            let _e915 = local_70;
-                                            phi_928_ = bitcast<f32>(((_e913 | 2139095040u) | (_e915 << bitcast<u32>(13i))));
-                                            phi_929_ = f32();
+                                        let _e772 = local_52;
+                                        let _e773 = (_e772 == 31u);
+                                        if _e773 {
+                                            let _e774 = local_51;
+                                            let _e776 = local_53;
+                                            phi_750_ = bitcast<f32>(((_e774 | 2139095040u) | (_e776 << bitcast<u32>(13i))));
+                                            phi_751_ = f32();
                                         } else {
-                                            let _e920 = local_69;
-                                            let _e924 = local_68;
-                                            let _e926 = local_70;
-                                            phi_928_ = f32();
-                                            phi_929_ = bitcast<f32>(((_e924 | ((_e920 + 112u) << bitcast<u32>(23i))) | (_e926 << bitcast<u32>(13i))));
+                                            let _e781 = local_52;
+                                            let _e785 = local_51;
+                                            let _e787 = local_53;
+                                            phi_750_ = f32();
+                                            phi_751_ = bitcast<f32>(((_e785 | ((_e781 + 112u) << bitcast<u32>(23i))) | (_e787 << bitcast<u32>(13i))));
                                         }
-                                        let _e932 = phi_928_;
-                                        let _e934 = phi_929_;
-                                        phi_930_ = _e932;
-                                        phi_931_ = _e934;
-                                        phi_932_ = _e912;
+                                        let _e793 = phi_750_;
+                                        let _e795 = phi_751_;
+                                        phi_752_ = _e793;
+                                        phi_753_ = _e795;
+                                        phi_754_ = _e773;
                                     }
-                                    let _e936 = phi_930_;
-                                    let _e938 = phi_931_;
-                                    let _e940 = phi_932_;
-                                    local_120 = select(_e938, _e936, _e940);
-                                    let _e942 = local_65;
-                                    let _e944 = (_e942 >> bitcast<u32>(16i));
-                                    local_72 = ((_e944 & 32768u) << bitcast<u32>(16i));
-                                    let _e950 = ((_e944 >> bitcast<u32>(10i)) & 31u);
-                                    local_73 = _e950;
-                                    local_74 = (_e944 & 1023u);
-                                    if (_e950 == 0u) {
-                                        let _e953 = local_74;
-                                        let _e954 = f32(_e953);
-                                        local_75 = _e954;
-                                        let _e956 = local_72;
-                                        if (_e956 == 0u) {
-                                            phi_954_ = (_e954 * 0.000000059604645f);
+                                    let _e797 = phi_752_;
+                                    let _e799 = phi_753_;
+                                    let _e801 = phi_754_;
+                                    local_139 = select(_e799, _e797, _e801);
+                                    let _e803 = local_48;
+                                    let _e805 = (_e803 >> bitcast<u32>(16i));
+                                    local_55 = ((_e805 & 32768u) << bitcast<u32>(16i));
+                                    let _e811 = ((_e805 >> bitcast<u32>(10i)) & 31u);
+                                    local_56 = _e811;
+                                    local_57 = (_e805 & 1023u);
+                                    if (_e811 == 0u) {
+                                        let _e814 = local_57;
+                                        let _e815 = f32(_e814);
+                                        local_58 = _e815;
+                                        let _e817 = local_55;
+                                        if (_e817 == 0u) {
+                                            phi_776_ = (_e815 * 0.000000059604645f);
                                         } else {
-                                            let _e958 = local_75;
-                                            phi_954_ = (_e958 * -0.000000059604645f);
+                                            let _e819 = local_58;
+                                            phi_776_ = (_e819 * -0.000000059604645f);
                                         }
-                                        let _e961 = phi_954_;
-                                        phi_971_ = _e961;
-                                        phi_972_ = f32();
-                                        phi_973_ = true;
+                                        let _e822 = phi_776_;
+                                        phi_793_ = _e822;
+                                        phi_794_ = f32();
+                                        phi_795_ = true;
                                     } else {
-                                        let _e962 = local_73;
-                                        let _e963 = (_e962 == 31u);
-                                        if _e963 {
-                                            let _e964 = local_72;
-                                            let _e966 = local_74;
-                                            phi_969_ = bitcast<f32>(((_e964 | 2139095040u) | (_e966 << bitcast<u32>(13i))));
-                                            phi_970_ = f32();
+                                        let _e823 = local_56;
+                                        let _e824 = (_e823 == 31u);
+                                        if _e824 {
+                                            let _e825 = local_55;
+                                            let _e827 = local_57;
+                                            phi_791_ = bitcast<f32>(((_e825 | 2139095040u) | (_e827 << bitcast<u32>(13i))));
+                                            phi_792_ = f32();
                                         } else {
-                                            let _e971 = local_73;
-                                            let _e975 = local_72;
-                                            let _e977 = local_74;
-                                            phi_969_ = f32();
-                                            phi_970_ = bitcast<f32>(((_e975 | ((_e971 + 112u) << bitcast<u32>(23i))) | (_e977 << bitcast<u32>(13i))));
+                                            let _e832 = local_56;
+                                            let _e836 = local_55;
+                                            let _e838 = local_57;
+                                            phi_791_ = f32();
+                                            phi_792_ = bitcast<f32>(((_e836 | ((_e832 + 112u) << bitcast<u32>(23i))) | (_e838 << bitcast<u32>(13i))));
                                         }
-                                        let _e983 = phi_969_;
-                                        let _e985 = phi_970_;
-                                        phi_971_ = _e983;
-                                        phi_972_ = _e985;
-                                        phi_973_ = _e963;
+                                        let _e844 = phi_791_;
+                                        let _e846 = phi_792_;
+                                        phi_793_ = _e844;
+                                        phi_794_ = _e846;
+                                        phi_795_ = _e824;
                                     }
-                                    let _e987 = phi_971_;
-                                    let _e989 = phi_972_;
-                                    let _e991 = phi_973_;
-                                    local_121 = select(_e989, _e987, _e991);
-                                    let _e993 = local_67;
-                                    let _e994 = (_e993 & 65535u);
-                                    local_76 = ((_e994 & 32768u) << bitcast<u32>(16i));
-                                    let _e1000 = ((_e994 >> bitcast<u32>(10i)) & 31u);
-                                    local_77 = _e1000;
-                                    local_78 = (_e994 & 1023u);
-                                    if (_e1000 == 0u) {
-                                        let _e1003 = local_78;
-                                        let _e1004 = f32(_e1003);
-                                        local_79 = _e1004;
-                                        let _e1006 = local_76;
-                                        if (_e1006 == 0u) {
-                                            phi_995_ = (_e1004 * 0.000000059604645f);
+                                    let _e848 = phi_793_;
+                                    let _e850 = phi_794_;
+                                    let _e852 = phi_795_;
+                                    local_140 = select(_e850, _e848, _e852);
+                                    let _e854 = local_50;
+                                    let _e855 = (_e854 & 65535u);
+                                    local_59 = ((_e855 & 32768u) << bitcast<u32>(16i));
+                                    let _e861 = ((_e855 >> bitcast<u32>(10i)) & 31u);
+                                    local_60 = _e861;
+                                    local_61 = (_e855 & 1023u);
+                                    if (_e861 == 0u) {
+                                        let _e864 = local_61;
+                                        let _e865 = f32(_e864);
+                                        local_62 = _e865;
+                                        let _e867 = local_59;
+                                        if (_e867 == 0u) {
+                                            phi_817_ = (_e865 * 0.000000059604645f);
                                         } else {
-                                            let _e1008 = local_79;
-                                            phi_995_ = (_e1008 * -0.000000059604645f);
+                                            let _e869 = local_62;
+                                            phi_817_ = (_e869 * -0.000000059604645f);
                                         }
-                                        let _e1011 = phi_995_;
-                                        phi_1012_ = _e1011;
-                                        phi_1013_ = f32();
-                                        phi_1014_ = true;
+                                        let _e872 = phi_817_;
+                                        phi_834_ = _e872;
+                                        phi_835_ = f32();
+                                        phi_836_ = true;
                                     } else {
-                                        let _e1012 = local_77;
-                                        let _e1013 = (_e1012 == 31u);
-                                        if _e1013 {
-                                            let _e1014 = local_76;
-                                            let _e1016 = local_78;
-                                            phi_1010_ = bitcast<f32>(((_e1014 | 2139095040u) | (_e1016 << bitcast<u32>(13i))));
-                                            phi_1011_ = f32();
+                                        let _e873 = local_60;
+                                        let _e874 = (_e873 == 31u);
+                                        if _e874 {
+                                            let _e875 = local_59;
+                                            let _e877 = local_61;
+                                            phi_832_ = bitcast<f32>(((_e875 | 2139095040u) | (_e877 << bitcast<u32>(13i))));
+                                            phi_833_ = f32();
                                         } else {
-                                            let _e1021 = local_77;
-                                            let _e1025 = local_76;
-                                            let _e1027 = local_78;
-                                            phi_1010_ = f32();
-                                            phi_1011_ = bitcast<f32>(((_e1025 | ((_e1021 + 112u) << bitcast<u32>(23i))) | (_e1027 << bitcast<u32>(13i))));
+                                            let _e882 = local_60;
+                                            let _e886 = local_59;
+                                            let _e888 = local_61;
+                                            phi_832_ = f32();
+                                            phi_833_ = bitcast<f32>(((_e886 | ((_e882 + 112u) << bitcast<u32>(23i))) | (_e888 << bitcast<u32>(13i))));
                                         }
-                                        let _e1033 = phi_1010_;
-                                        let _e1035 = phi_1011_;
-                                        phi_1012_ = _e1033;
-                                        phi_1013_ = _e1035;
-                                        phi_1014_ = _e1013;
+                                        let _e894 = phi_832_;
+                                        let _e896 = phi_833_;
+                                        phi_834_ = _e894;
+                                        phi_835_ = _e896;
+                                        phi_836_ = _e874;
                                     }
-                                    let _e1037 = phi_1012_;
-                                    let _e1039 = phi_1013_;
-                                    let _e1041 = phi_1014_;
-                                    local_122 = select(_e1039, _e1037, _e1041);
-                                    let _e1043 = local_67;
-                                    let _e1045 = (_e1043 >> bitcast<u32>(16i));
-                                    local_80 = ((_e1045 & 32768u) << bitcast<u32>(16i));
-                                    let _e1051 = ((_e1045 >> bitcast<u32>(10i)) & 31u);
-                                    local_81 = _e1051;
-                                    local_82 = (_e1045 & 1023u);
-                                    if (_e1051 == 0u) {
-                                        let _e1054 = local_82;
-                                        let _e1055 = f32(_e1054);
-                                        local_83 = _e1055;
-                                        let _e1057 = local_80;
-                                        if (_e1057 == 0u) {
-                                            phi_1036_ = (_e1055 * 0.000000059604645f);
+                                    let _e898 = phi_834_;
+                                    let _e900 = phi_835_;
+                                    let _e902 = phi_836_;
+                                    local_141 = select(_e900, _e898, _e902);
+                                    let _e904 = local_50;
+                                    let _e906 = (_e904 >> bitcast<u32>(16i));
+                                    local_63 = ((_e906 & 32768u) << bitcast<u32>(16i));
+                                    let _e912 = ((_e906 >> bitcast<u32>(10i)) & 31u);
+                                    local_64 = _e912;
+                                    local_65 = (_e906 & 1023u);
+                                    if (_e912 == 0u) {
+                                        let _e915 = local_65;
+                                        let _e916 = f32(_e915);
+                                        local_66 = _e916;
+                                        let _e918 = local_63;
+                                        if (_e918 == 0u) {
+                                            phi_858_ = (_e916 * 0.000000059604645f);
                                         } else {
-                                            let _e1059 = local_83;
-                                            phi_1036_ = (_e1059 * -0.000000059604645f);
+                                            let _e920 = local_66;
+                                            phi_858_ = (_e920 * -0.000000059604645f);
                                         }
-                                        let _e1062 = phi_1036_;
-                                        phi_1053_ = _e1062;
-                                        phi_1054_ = f32();
-                                        phi_1055_ = true;
+                                        let _e923 = phi_858_;
+                                        phi_875_ = _e923;
+                                        phi_876_ = f32();
+                                        phi_877_ = true;
                                     } else {
-                                        let _e1063 = local_81;
-                                        let _e1064 = (_e1063 == 31u);
-                                        if _e1064 {
-                                            let _e1065 = local_80;
-                                            let _e1067 = local_82;
-                                            phi_1051_ = bitcast<f32>(((_e1065 | 2139095040u) | (_e1067 << bitcast<u32>(13i))));
-                                            phi_1052_ = f32();
+                                        let _e924 = local_64;
+                                        let _e925 = (_e924 == 31u);
+                                        if _e925 {
+                                            let _e926 = local_63;
+                                            let _e928 = local_65;
+                                            phi_873_ = bitcast<f32>(((_e926 | 2139095040u) | (_e928 << bitcast<u32>(13i))));
+                                            phi_874_ = f32();
                                         } else {
-                                            let _e1072 = local_81;
-                                            let _e1076 = local_80;
-                                            let _e1078 = local_82;
-                                            phi_1051_ = f32();
-                                            phi_1052_ = bitcast<f32>(((_e1076 | ((_e1072 + 112u) << bitcast<u32>(23i))) | (_e1078 << bitcast<u32>(13i))));
+                                            let _e933 = local_64;
+                                            let _e937 = local_63;
+                                            let _e939 = local_65;
+                                            phi_873_ = f32();
+                                            phi_874_ = bitcast<f32>(((_e937 | ((_e933 + 112u) << bitcast<u32>(23i))) | (_e939 << bitcast<u32>(13i))));
                                         }
-                                        let _e1084 = phi_1051_;
-                                        let _e1086 = phi_1052_;
-                                        phi_1053_ = _e1084;
-                                        phi_1054_ = _e1086;
-                                        phi_1055_ = _e1064;
+                                        let _e945 = phi_873_;
+                                        let _e947 = phi_874_;
+                                        phi_875_ = _e945;
+                                        phi_876_ = _e947;
+                                        phi_877_ = _e925;
                                     }
-                                    let _e1088 = phi_1053_;
-                                    let _e1090 = phi_1054_;
-                                    let _e1092 = phi_1055_;
-                                    let _e1094 = local_120;
-                                    let _e1095 = local_121;
-                                    let _e1096 = local_122;
-                                    phi_1134_ = array<f32, 4>(_e1094, _e1095, _e1096, select(_e1090, _e1088, _e1092));
+                                    let _e949 = phi_875_;
+                                    let _e951 = phi_876_;
+                                    let _e953 = phi_877_;
+                                    let _e955 = local_139;
+                                    let _e956 = local_140;
+                                    let _e957 = local_141;
+                                    phi_1072_ = array<f32, 4>(_e955, _e956, _e957, select(_e951, _e949, _e953));
                                 } else {
-                                    let _e1098 = local_9;
-                                    let _e1099 = (4u * _e1098);
-                                    local_84 = _e1099;
-                                    let _e1100 = local_1;
-                                    if (_e1099 < _e1100) {
+                                    let _e959 = local_39;
+                                    if (_e959 == 2u) {
+                                        let _e961 = local_9;
+                                        let _e962 = local_1;
+                                        if (_e961 < _e962) {
+                                        } else {
+                                            phi_1802_ = true;
+                                            break;
+                                        }
+                                        let _e964 = local_9;
+                                        let _e967 = global_4.member[_e964];
+                                        local_67 = _e967;
+                                        let _e968 = (_e967 & 2047u);
+                                        let _e971 = ((_e968 >> bitcast<u32>(6u)) & 31u);
+                                        local_68 = _e971;
+                                        local_69 = (_e968 & 63u);
+                                        if (_e971 == 0u) {
+                                            let _e974 = local_69;
+                                            phi_937_ = (f32(_e974) * 0.0000009536743f);
+                                            phi_938_ = f32();
+                                            phi_939_ = true;
+                                        } else {
+                                            let _e977 = local_68;
+                                            let _e978 = (_e977 == 31u);
+                                            if _e978 {
+                                                let _e979 = local_69;
+                                                phi_935_ = bitcast<f32>((2139095040u | (_e979 << bitcast<u32>(17u))));
+                                                phi_936_ = f32();
+                                            } else {
+                                                let _e984 = local_68;
+                                                let _e988 = local_69;
+                                                phi_935_ = f32();
+                                                phi_936_ = bitcast<f32>((((_e984 + 112u) << bitcast<u32>(23i)) | (_e988 << bitcast<u32>(17u))));
+                                            }
+                                            let _e994 = phi_935_;
+                                            let _e996 = phi_936_;
+                                            phi_937_ = _e994;
+                                            phi_938_ = _e996;
+                                            phi_939_ = _e978;
+                                        }
+                                        let _e998 = phi_937_;
+                                        let _e1000 = phi_938_;
+                                        let _e1002 = phi_939_;
+                                        local_142 = select(_e1000, _e998, _e1002);
+                                        let _e1004 = local_67;
+                                        let _e1007 = ((_e1004 >> bitcast<u32>(11i)) & 2047u);
+                                        let _e1010 = ((_e1007 >> bitcast<u32>(6u)) & 31u);
+                                        local_70 = _e1010;
+                                        local_71 = (_e1007 & 63u);
+                                        if (_e1010 == 0u) {
+                                            let _e1013 = local_71;
+                                            phi_980_ = (f32(_e1013) * 0.0000009536743f);
+                                            phi_981_ = f32();
+                                            phi_982_ = true;
+                                        } else {
+                                            let _e1016 = local_70;
+                                            let _e1017 = (_e1016 == 31u);
+                                            if _e1017 {
+                                                let _e1018 = local_71;
+                                                phi_978_ = bitcast<f32>((2139095040u | (_e1018 << bitcast<u32>(17u))));
+                                                phi_979_ = f32();
+                                            } else {
+                                                let _e1023 = local_70;
+                                                let _e1027 = local_71;
+                                                phi_978_ = f32();
+                                                phi_979_ = bitcast<f32>((((_e1023 + 112u) << bitcast<u32>(23i)) | (_e1027 << bitcast<u32>(17u))));
+                                            }
+                                            let _e1033 = phi_978_;
+                                            let _e1035 = phi_979_;
+                                            phi_980_ = _e1033;
+                                            phi_981_ = _e1035;
+                                            phi_982_ = _e1017;
+                                        }
+                                        let _e1037 = phi_980_;
+                                        let _e1039 = phi_981_;
+                                        let _e1041 = phi_982_;
+                                        local_143 = select(_e1039, _e1037, _e1041);
+                                        let _e1043 = local_67;
+                                        let _e1045 = (_e1043 >> bitcast<u32>(22i));
+                                        let _e1048 = ((_e1045 >> bitcast<u32>(5u)) & 31u);
+                                        local_72 = _e1048;
+                                        local_73 = (_e1045 & 31u);
+                                        if (_e1048 == 0u) {
+                                            let _e1051 = local_73;
+                                            phi_1022_ = (f32(_e1051) * 0.0000019073486f);
+                                            phi_1023_ = f32();
+                                            phi_1024_ = true;
+                                        } else {
+                                            let _e1054 = local_72;
+                                            let _e1055 = (_e1054 == 31u);
+                                            if _e1055 {
+                                                let _e1056 = local_73;
+                                                phi_1020_ = bitcast<f32>((2139095040u | (_e1056 << bitcast<u32>(18u))));
+                                                phi_1021_ = f32();
+                                            } else {
+                                                let _e1061 = local_72;
+                                                let _e1065 = local_73;
+                                                phi_1020_ = f32();
+                                                phi_1021_ = bitcast<f32>((((_e1061 + 112u) << bitcast<u32>(23i)) | (_e1065 << bitcast<u32>(18u))));
+                                            }
+                                            let _e1071 = phi_1020_;
+                                            let _e1073 = phi_1021_;
+                                            phi_1022_ = _e1071;
+                                            phi_1023_ = _e1073;
+                                            phi_1024_ = _e1055;
+                                        }
+                                        let _e1075 = phi_1022_;
+                                        let _e1077 = phi_1023_;
+                                        let _e1079 = phi_1024_;
+                                        let _e1081 = local_142;
+                                        let _e1082 = local_143;
+                                        phi_1071_ = array<f32, 4>(_e1081, _e1082, select(_e1077, _e1075, _e1079), 1f);
                                     } else {
-                                        phi_1368_ = true;
-                                        break;
+                                        let _e1084 = local_39;
+                                        if (_e1084 == 4u) {
+                                            let _e1086 = local_9;
+                                            let _e1087 = local_1;
+                                            if (_e1086 < _e1087) {
+                                            } else {
+                                                phi_1802_ = true;
+                                                break;
+                                            }
+                                            let _e1089 = local_9;
+                                            let _e1092 = global_4.member[_e1089];
+                                            phi_1070_ = array<f32, 4>((f32((_e1092 & 16777215u)) * 0.00000005960465f), 0f, 0f, 1f);
+                                        } else {
+                                            let _e1097 = local_9;
+                                            let _e1098 = local_1;
+                                            if (_e1097 < _e1098) {
+                                            } else {
+                                                phi_1802_ = true;
+                                                break;
+                                            }
+                                            let _e1100 = local_9;
+                                            let _e1103 = global_4.member[_e1100];
+                                            phi_1070_ = array<f32, 4>(bitcast<f32>(_e1103), 0f, 0f, 1f);
+                                        }
+                                        let _e1107 = phi_1070_;
+                                        phi_1071_ = _e1107;
                                     }
-                                    let _e1102 = local_84;
-                                    let _e1105 = global_4.member[_e1102];
-                                    local_85 = bitcast<f32>(_e1105);
-                                    let _e1107 = local_84;
-                                    let _e1108 = (_e1107 + 1u);
-                                    local_86 = _e1108;
-                                    let _e1109 = local_1;
-                                    if (_e1108 < _e1109) {
-                                    } else {
-                                        phi_1368_ = true;
-                                        break;
-                                    }
-                                    let _e1111 = local_86;
-                                    let _e1114 = global_4.member[_e1111];
-                                    local_87 = bitcast<f32>(_e1114);
-                                    let _e1116 = local_84;
-                                    let _e1117 = (_e1116 + 2u);
-                                    local_88 = _e1117;
-                                    let _e1118 = local_1;
-                                    if (_e1117 < _e1118) {
-                                    } else {
-                                        phi_1368_ = true;
-                                        break;
-                                    }
-                                    let _e1120 = local_88;
-                                    let _e1123 = global_4.member[_e1120];
-                                    local_89 = bitcast<f32>(_e1123);
-                                    let _e1125 = local_84;
-                                    let _e1126 = (_e1125 + 3u);
-                                    local_90 = _e1126;
-                                    let _e1127 = local_1;
-                                    if (_e1126 < _e1127) {
-                                    } else {
-                                        phi_1368_ = true;
-                                        break;
-                                    }
-                                    let _e1129 = local_90;
-                                    let _e1132 = global_4.member[_e1129];
-                                    let _e1134 = local_85;
-                                    let _e1135 = local_87;
-                                    let _e1136 = local_89;
-                                    phi_1134_ = array<f32, 4>(_e1134, _e1135, _e1136, bitcast<f32>(_e1132));
+                                    let _e1109 = phi_1071_;
+                                    phi_1072_ = _e1109;
                                 }
-                                let _e1139 = phi_1134_;
-                                phi_1135_ = _e1139;
+                                let _e1111 = phi_1072_;
+                                phi_1073_ = _e1111;
                             }
-                            let _e1141 = phi_1135_;
-                            phi_1136_ = array<f32, 3>();
-                            phi_1137_ = f32();
-                            phi_1138_ = bool();
-                            phi_1139_ = _e1141;
-                            phi_1140_ = false;
-                            phi_1141_ = true;
-                        }
-                        let _e1143 = phi_1136_;
-                        let _e1145 = phi_1137_;
-                        let _e1147 = phi_1138_;
-                        let _e1149 = phi_1139_;
-                        let _e1151 = phi_1140_;
-                        let _e1153 = phi_1141_;
-                        local_91 = _e1147;
-                        local_92 = _e1149;
-                        local_93 = _e1151;
-                        local_94 = _e1153;
-                        if _e1153 {
-                            let _e1154 = local_9;
-                            let _e1155 = local_3;
-                            if (_e1154 < _e1155) {
+                            let _e1113 = phi_1073_;
+                            local_74 = _e1113;
+                            let _e1114 = local_37;
+                            if _e1114 {
+                                let _e1115 = local_74;
+                                let _e1117 = local_74;
+                                let _e1119 = local_74;
+                                let _e1122 = local_74;
+                                phi_1082_ = array<f32, 3>(_e1115[0], _e1117[1], _e1119[2]);
+                                phi_1083_ = _e1122[3];
                             } else {
-                                phi_1368_ = true;
+                                phi_1082_ = array<f32, 3>();
+                                phi_1083_ = f32();
+                            }
+                            let _e1125 = phi_1082_;
+                            let _e1127 = phi_1083_;
+                            let _e1128 = local_37;
+                            phi_1570_ = _e1125;
+                            phi_1571_ = _e1127;
+                            phi_1572_ = _e683;
+                            phi_1573_ = _e1113;
+                            phi_1574_ = _e683;
+                            phi_1575_ = select(true, false, _e1128);
+                        } else {
+                            let _e1133 = global_5.member.member.member_2;
+                            local_75 = _e1133;
+                            if (_e1133 == 1u) {
+                                phi_1099_ = 2u;
+                            } else {
+                                let _e1135 = local_75;
+                                phi_1099_ = select(0u, 1u, (_e1135 == 2u));
+                            }
+                            let _e1139 = phi_1099_;
+                            local_76 = _e1139;
+                            if (_e1139 == 0u) {
+                                let _e1141 = local_9;
+                                let _e1142 = (4u * _e1141);
+                                local_77 = _e1142;
+                                let _e1143 = local_1;
+                                if (_e1142 < _e1143) {
+                                } else {
+                                    phi_1802_ = true;
+                                    break;
+                                }
+                                let _e1145 = local_77;
+                                let _e1148 = global_4.member[_e1145];
+                                local_78 = bitcast<f32>(_e1148);
+                                let _e1150 = local_77;
+                                let _e1151 = (_e1150 + 1u);
+                                local_79 = _e1151;
+                                let _e1152 = local_1;
+                                if (_e1151 < _e1152) {
+                                } else {
+                                    phi_1802_ = true;
+                                    break;
+                                }
+                                let _e1154 = local_79;
+                                let _e1157 = global_4.member[_e1154];
+                                local_80 = bitcast<f32>(_e1157);
+                                let _e1159 = local_77;
+                                let _e1160 = (_e1159 + 2u);
+                                local_81 = _e1160;
+                                let _e1161 = local_1;
+                                if (_e1160 < _e1161) {
+                                } else {
+                                    phi_1802_ = true;
+                                    break;
+                                }
+                                let _e1163 = local_81;
+                                let _e1166 = global_4.member[_e1163];
+                                local_82 = bitcast<f32>(_e1166);
+                                let _e1168 = local_77;
+                                let _e1169 = (_e1168 + 3u);
+                                local_83 = _e1169;
+                                let _e1170 = local_1;
+                                if (_e1169 < _e1170) {
+                                } else {
+                                    phi_1802_ = true;
+                                    break;
+                                }
+                                let _e1172 = local_83;
+                                let _e1175 = global_4.member[_e1172];
+                                let _e1177 = local_78;
+                                let _e1178 = local_80;
+                                let _e1179 = local_82;
+                                phi_1569_ = array<f32, 4>(_e1177, _e1178, _e1179, bitcast<f32>(_e1175));
+                            } else {
+                                let _e1181 = local_76;
+                                if (_e1181 == 1u) {
+                                    let _e1183 = local_9;
+                                    let _e1184 = (2u * _e1183);
+                                    local_84 = _e1184;
+                                    let _e1185 = local_1;
+                                    if (_e1184 < _e1185) {
+                                    } else {
+                                        phi_1802_ = true;
+                                        break;
+                                    }
+                                    let _e1187 = local_84;
+                                    let _e1190 = global_4.member[_e1187];
+                                    local_85 = _e1190;
+                                    let _e1191 = local_84;
+                                    let _e1192 = (_e1191 + 1u);
+                                    local_86 = _e1192;
+                                    let _e1193 = local_1;
+                                    if (_e1192 < _e1193) {
+                                    } else {
+                                        phi_1802_ = true;
+                                        break;
+                                    }
+                                    let _e1195 = local_86;
+                                    let _e1198 = global_4.member[_e1195];
+                                    local_87 = _e1198;
+                                    let _e1199 = local_85;
+                                    let _e1200 = (_e1199 & 65535u);
+                                    local_88 = ((_e1200 & 32768u) << bitcast<u32>(16i));
+                                    let _e1206 = ((_e1200 >> bitcast<u32>(10i)) & 31u);
+                                    local_89 = _e1206;
+                                    local_90 = (_e1200 & 1023u);
+                                    if (_e1206 == 0u) {
+                                        let _e1209 = local_90;
+                                        let _e1210 = f32(_e1209);
+                                        local_91 = _e1210;
+                                        let _e1212 = local_88;
+                                        if (_e1212 == 0u) {
+                                            phi_1231_ = (_e1210 * 0.000000059604645f);
+                                        } else {
+                                            let _e1214 = local_91;
+                                            phi_1231_ = (_e1214 * -0.000000059604645f);
+                                        }
+                                        let _e1217 = phi_1231_;
+                                        phi_1248_ = _e1217;
+                                        phi_1249_ = f32();
+                                        phi_1250_ = true;
+                                    } else {
+                                        let _e1218 = local_89;
+                                        let _e1219 = (_e1218 == 31u);
+                                        if _e1219 {
+                                            let _e1220 = local_88;
+                                            let _e1222 = local_90;
+                                            phi_1246_ = bitcast<f32>(((_e1220 | 2139095040u) | (_e1222 << bitcast<u32>(13i))));
+                                            phi_1247_ = f32();
+                                        } else {
+                                            let _e1227 = local_89;
+                                            let _e1231 = local_88;
+                                            let _e1233 = local_90;
+                                            phi_1246_ = f32();
+                                            phi_1247_ = bitcast<f32>(((_e1231 | ((_e1227 + 112u) << bitcast<u32>(23i))) | (_e1233 << bitcast<u32>(13i))));
+                                        }
+                                        let _e1239 = phi_1246_;
+                                        let _e1241 = phi_1247_;
+                                        phi_1248_ = _e1239;
+                                        phi_1249_ = _e1241;
+                                        phi_1250_ = _e1219;
+                                    }
+                                    let _e1243 = phi_1248_;
+                                    let _e1245 = phi_1249_;
+                                    let _e1247 = phi_1250_;
+                                    local_144 = select(_e1245, _e1243, _e1247);
+                                    let _e1249 = local_85;
+                                    let _e1251 = (_e1249 >> bitcast<u32>(16i));
+                                    local_92 = ((_e1251 & 32768u) << bitcast<u32>(16i));
+                                    let _e1257 = ((_e1251 >> bitcast<u32>(10i)) & 31u);
+                                    local_93 = _e1257;
+                                    local_94 = (_e1251 & 1023u);
+                                    if (_e1257 == 0u) {
+                                        let _e1260 = local_94;
+                                        let _e1261 = f32(_e1260);
+                                        local_95 = _e1261;
+                                        let _e1263 = local_92;
+                                        if (_e1263 == 0u) {
+                                            phi_1272_ = (_e1261 * 0.000000059604645f);
+                                        } else {
+                                            let _e1265 = local_95;
+                                            phi_1272_ = (_e1265 * -0.000000059604645f);
+                                        }
+                                        let _e1268 = phi_1272_;
+                                        phi_1289_ = _e1268;
+                                        phi_1290_ = f32();
+                                        phi_1291_ = true;
+                                    } else {
+                                        let _e1269 = local_93;
+                                        let _e1270 = (_e1269 == 31u);
+                                        if _e1270 {
+                                            let _e1271 = local_92;
+                                            let _e1273 = local_94;
+                                            phi_1287_ = bitcast<f32>(((_e1271 | 2139095040u) | (_e1273 << bitcast<u32>(13i))));
+                                            phi_1288_ = f32();
+                                        } else {
+                                            let _e1278 = local_93;
+                                            let _e1282 = local_92;
+                                            let _e1284 = local_94;
+                                            phi_1287_ = f32();
+                                            phi_1288_ = bitcast<f32>(((_e1282 | ((_e1278 + 112u) << bitcast<u32>(23i))) | (_e1284 << bitcast<u32>(13i))));
+                                        }
+                                        let _e1290 = phi_1287_;
+                                        let _e1292 = phi_1288_;
+                                        phi_1289_ = _e1290;
+                                        phi_1290_ = _e1292;
+                                        phi_1291_ = _e1270;
+                                    }
+                                    let _e1294 = phi_1289_;
+                                    let _e1296 = phi_1290_;
+                                    let _e1298 = phi_1291_;
+                                    local_145 = select(_e1296, _e1294, _e1298);
+                                    let _e1300 = local_87;
+                                    let _e1301 = (_e1300 & 65535u);
+                                    local_96 = ((_e1301 & 32768u) << bitcast<u32>(16i));
+                                    let _e1307 = ((_e1301 >> bitcast<u32>(10i)) & 31u);
+                                    local_97 = _e1307;
+                                    local_98 = (_e1301 & 1023u);
+                                    if (_e1307 == 0u) {
+                                        let _e1310 = local_98;
+                                        let _e1311 = f32(_e1310);
+                                        local_99 = _e1311;
+                                        let _e1313 = local_96;
+                                        if (_e1313 == 0u) {
+                                            phi_1313_ = (_e1311 * 0.000000059604645f);
+                                        } else {
+                                            let _e1315 = local_99;
+                                            phi_1313_ = (_e1315 * -0.000000059604645f);
+                                        }
+                                        let _e1318 = phi_1313_;
+                                        phi_1330_ = _e1318;
+                                        phi_1331_ = f32();
+                                        phi_1332_ = true;
+                                    } else {
+                                        let _e1319 = local_97;
+                                        let _e1320 = (_e1319 == 31u);
+                                        if _e1320 {
+                                            let _e1321 = local_96;
+                                            let _e1323 = local_98;
+                                            phi_1328_ = bitcast<f32>(((_e1321 | 2139095040u) | (_e1323 << bitcast<u32>(13i))));
+                                            phi_1329_ = f32();
+                                        } else {
+                                            let _e1328 = local_97;
+                                            let _e1332 = local_96;
+                                            let _e1334 = local_98;
+                                            phi_1328_ = f32();
+                                            phi_1329_ = bitcast<f32>(((_e1332 | ((_e1328 + 112u) << bitcast<u32>(23i))) | (_e1334 << bitcast<u32>(13i))));
+                                        }
+                                        let _e1340 = phi_1328_;
+                                        let _e1342 = phi_1329_;
+                                        phi_1330_ = _e1340;
+                                        phi_1331_ = _e1342;
+                                        phi_1332_ = _e1320;
+                                    }
+                                    let _e1344 = phi_1330_;
+                                    let _e1346 = phi_1331_;
+                                    let _e1348 = phi_1332_;
+                                    local_146 = select(_e1346, _e1344, _e1348);
+                                    let _e1350 = local_87;
+                                    let _e1352 = (_e1350 >> bitcast<u32>(16i));
+                                    local_100 = ((_e1352 & 32768u) << bitcast<u32>(16i));
+                                    let _e1358 = ((_e1352 >> bitcast<u32>(10i)) & 31u);
+                                    local_101 = _e1358;
+                                    local_102 = (_e1352 & 1023u);
+                                    if (_e1358 == 0u) {
+                                        let _e1361 = local_102;
+                                        let _e1362 = f32(_e1361);
+                                        local_103 = _e1362;
+                                        let _e1364 = local_100;
+                                        if (_e1364 == 0u) {
+                                            phi_1354_ = (_e1362 * 0.000000059604645f);
+                                        } else {
+                                            let _e1366 = local_103;
+                                            phi_1354_ = (_e1366 * -0.000000059604645f);
+                                        }
+                                        let _e1369 = phi_1354_;
+                                        phi_1371_ = _e1369;
+                                        phi_1372_ = f32();
+                                        phi_1373_ = true;
+                                    } else {
+                                        let _e1370 = local_101;
+                                        let _e1371 = (_e1370 == 31u);
+                                        if _e1371 {
+                                            let _e1372 = local_100;
+                                            let _e1374 = local_102;
+                                            phi_1369_ = bitcast<f32>(((_e1372 | 2139095040u) | (_e1374 << bitcast<u32>(13i))));
+                                            phi_1370_ = f32();
+                                        } else {
+                                            let _e1379 = local_101;
+                                            let _e1383 = local_100;
+                                            let _e1385 = local_102;
+                                            phi_1369_ = f32();
+                                            phi_1370_ = bitcast<f32>(((_e1383 | ((_e1379 + 112u) << bitcast<u32>(23i))) | (_e1385 << bitcast<u32>(13i))));
+                                        }
+                                        let _e1391 = phi_1369_;
+                                        let _e1393 = phi_1370_;
+                                        phi_1371_ = _e1391;
+                                        phi_1372_ = _e1393;
+                                        phi_1373_ = _e1371;
+                                    }
+                                    let _e1395 = phi_1371_;
+                                    let _e1397 = phi_1372_;
+                                    let _e1399 = phi_1373_;
+                                    let _e1401 = local_144;
+                                    let _e1402 = local_145;
+                                    let _e1403 = local_146;
+                                    phi_1568_ = array<f32, 4>(_e1401, _e1402, _e1403, select(_e1397, _e1395, _e1399));
+                                } else {
+                                    let _e1405 = local_76;
+                                    if (_e1405 == 2u) {
+                                        let _e1407 = local_9;
+                                        let _e1408 = local_1;
+                                        if (_e1407 < _e1408) {
+                                        } else {
+                                            phi_1802_ = true;
+                                            break;
+                                        }
+                                        let _e1410 = local_9;
+                                        let _e1413 = global_4.member[_e1410];
+                                        local_104 = _e1413;
+                                        let _e1414 = (_e1413 & 2047u);
+                                        let _e1417 = ((_e1414 >> bitcast<u32>(6u)) & 31u);
+                                        local_105 = _e1417;
+                                        local_106 = (_e1414 & 63u);
+                                        if (_e1417 == 0u) {
+                                            let _e1420 = local_106;
+                                            phi_1433_ = (f32(_e1420) * 0.0000009536743f);
+                                            phi_1434_ = f32();
+                                            phi_1435_ = true;
+                                        } else {
+                                            let _e1423 = local_105;
+                                            let _e1424 = (_e1423 == 31u);
+                                            if _e1424 {
+                                                let _e1425 = local_106;
+                                                phi_1431_ = bitcast<f32>((2139095040u | (_e1425 << bitcast<u32>(17u))));
+                                                phi_1432_ = f32();
+                                            } else {
+                                                let _e1430 = local_105;
+                                                let _e1434 = local_106;
+                                                phi_1431_ = f32();
+                                                phi_1432_ = bitcast<f32>((((_e1430 + 112u) << bitcast<u32>(23i)) | (_e1434 << bitcast<u32>(17u))));
+                                            }
+                                            let _e1440 = phi_1431_;
+                                            let _e1442 = phi_1432_;
+                                            phi_1433_ = _e1440;
+                                            phi_1434_ = _e1442;
+                                            phi_1435_ = _e1424;
+                                        }
+                                        let _e1444 = phi_1433_;
+                                        let _e1446 = phi_1434_;
+                                        let _e1448 = phi_1435_;
+                                        local_147 = select(_e1446, _e1444, _e1448);
+                                        let _e1450 = local_104;
+                                        let _e1453 = ((_e1450 >> bitcast<u32>(11i)) & 2047u);
+                                        let _e1456 = ((_e1453 >> bitcast<u32>(6u)) & 31u);
+                                        local_107 = _e1456;
+                                        local_108 = (_e1453 & 63u);
+                                        if (_e1456 == 0u) {
+                                            let _e1459 = local_108;
+                                            phi_1476_ = (f32(_e1459) * 0.0000009536743f);
+                                            phi_1477_ = f32();
+                                            phi_1478_ = true;
+                                        } else {
+                                            let _e1462 = local_107;
+                                            let _e1463 = (_e1462 == 31u);
+                                            if _e1463 {
+                                                let _e1464 = local_108;
+                                                phi_1474_ = bitcast<f32>((2139095040u | (_e1464 << bitcast<u32>(17u))));
+                                                phi_1475_ = f32();
+                                            } else {
+                                                let _e1469 = local_107;
+                                                let _e1473 = local_108;
+                                                phi_1474_ = f32();
+                                                phi_1475_ = bitcast<f32>((((_e1469 + 112u) << bitcast<u32>(23i)) | (_e1473 << bitcast<u32>(17u))));
+                                            }
+                                            let _e1479 = phi_1474_;
+                                            let _e1481 = phi_1475_;
+                                            phi_1476_ = _e1479;
+                                            phi_1477_ = _e1481;
+                                            phi_1478_ = _e1463;
+                                        }
+                                        let _e1483 = phi_1476_;
+                                        let _e1485 = phi_1477_;
+                                        let _e1487 = phi_1478_;
+                                        local_148 = select(_e1485, _e1483, _e1487);
+                                        let _e1489 = local_104;
+                                        let _e1491 = (_e1489 >> bitcast<u32>(22i));
+                                        let _e1494 = ((_e1491 >> bitcast<u32>(5u)) & 31u);
+                                        local_109 = _e1494;
+                                        local_110 = (_e1491 & 31u);
+                                        if (_e1494 == 0u) {
+                                            let _e1497 = local_110;
+                                            phi_1518_ = (f32(_e1497) * 0.0000019073486f);
+                                            phi_1519_ = f32();
+                                            phi_1520_ = true;
+                                        } else {
+                                            let _e1500 = local_109;
+                                            let _e1501 = (_e1500 == 31u);
+                                            if _e1501 {
+                                                let _e1502 = local_110;
+                                                phi_1516_ = bitcast<f32>((2139095040u | (_e1502 << bitcast<u32>(18u))));
+                                                phi_1517_ = f32();
+                                            } else {
+                                                let _e1507 = local_109;
+                                                let _e1511 = local_110;
+                                                phi_1516_ = f32();
+                                                phi_1517_ = bitcast<f32>((((_e1507 + 112u) << bitcast<u32>(23i)) | (_e1511 << bitcast<u32>(18u))));
+                                            }
+                                            let _e1517 = phi_1516_;
+                                            let _e1519 = phi_1517_;
+                                            phi_1518_ = _e1517;
+                                            phi_1519_ = _e1519;
+                                            phi_1520_ = _e1501;
+                                        }
+                                        let _e1521 = phi_1518_;
+                                        let _e1523 = phi_1519_;
+                                        let _e1525 = phi_1520_;
+                                        let _e1527 = local_147;
+                                        let _e1528 = local_148;
+                                        phi_1567_ = array<f32, 4>(_e1527, _e1528, select(_e1523, _e1521, _e1525), 1f);
+                                    } else {
+                                        let _e1530 = local_76;
+                                        if (_e1530 == 4u) {
+                                            let _e1532 = local_9;
+                                            let _e1533 = local_1;
+                                            if (_e1532 < _e1533) {
+                                            } else {
+                                                phi_1802_ = true;
+                                                break;
+                                            }
+                                            let _e1535 = local_9;
+                                            let _e1538 = global_4.member[_e1535];
+                                            phi_1566_ = array<f32, 4>((f32((_e1538 & 16777215u)) * 0.00000005960465f), 0f, 0f, 1f);
+                                        } else {
+                                            let _e1543 = local_9;
+                                            let _e1544 = local_1;
+                                            if (_e1543 < _e1544) {
+                                            } else {
+                                                phi_1802_ = true;
+                                                break;
+                                            }
+                                            let _e1546 = local_9;
+                                            let _e1549 = global_4.member[_e1546];
+                                            phi_1566_ = array<f32, 4>(bitcast<f32>(_e1549), 0f, 0f, 1f);
+                                        }
+                                        let _e1553 = phi_1566_;
+                                        phi_1567_ = _e1553;
+                                    }
+                                    let _e1555 = phi_1567_;
+                                    phi_1568_ = _e1555;
+                                }
+                                let _e1557 = phi_1568_;
+                                phi_1569_ = _e1557;
+                            }
+                            let _e1559 = phi_1569_;
+                            phi_1570_ = array<f32, 3>();
+                            phi_1571_ = f32();
+                            phi_1572_ = bool();
+                            phi_1573_ = _e1559;
+                            phi_1574_ = false;
+                            phi_1575_ = true;
+                        }
+                        let _e1561 = phi_1570_;
+                        let _e1563 = phi_1571_;
+                        let _e1565 = phi_1572_;
+                        let _e1567 = phi_1573_;
+                        let _e1569 = phi_1574_;
+                        let _e1571 = phi_1575_;
+                        local_111 = _e1565;
+                        local_112 = _e1567;
+                        local_113 = _e1569;
+                        local_114 = _e1571;
+                        if _e1571 {
+                            let _e1572 = local_9;
+                            let _e1573 = local_3;
+                            if (_e1572 < _e1573) {
+                            } else {
+                                phi_1802_ = true;
                                 break;
                             }
-                            let _e1157 = local_9;
-                            let _e1160 = global_6.member[_e1157];
-                            let _e1164 = ((bitcast<u32>(bitcast<f32>(_e1160)) & 2139095040u) != 2139095040u);
-                            local_95 = _e1164;
-                            if _e1164 {
-                                let _e1165 = local_92;
-                                let _e1167 = local_92;
-                                let _e1169 = local_92;
-                                phi_1171_ = array<f32, 3>(_e1165[0], _e1167[1], _e1169[2]);
+                            let _e1575 = local_9;
+                            let _e1578 = global_6.member[_e1575];
+                            let _e1582 = ((bitcast<u32>(bitcast<f32>(_e1578)) & 2139095040u) != 2139095040u);
+                            local_115 = _e1582;
+                            if _e1582 {
+                                let _e1583 = local_112;
+                                let _e1585 = local_112;
+                                let _e1587 = local_112;
+                                phi_1605_ = array<f32, 3>(_e1583[0], _e1585[1], _e1587[2]);
                             } else {
-                                phi_1171_ = array<f32, 3>(0f, 0f, 0f);
+                                phi_1605_ = array<f32, 3>(0f, 0f, 0f);
                             }
-                            let _e1173 = phi_1171_;
-                            let _e1174 = local_95;
-                            phi_1173_ = _e1173;
-                            phi_1174_ = select(0f, 1f, _e1174);
+                            let _e1591 = phi_1605_;
+                            let _e1592 = local_115;
+                            phi_1607_ = _e1591;
+                            phi_1608_ = select(0f, 1f, _e1592);
                         } else {
-                            phi_1173_ = _e1143;
-                            phi_1174_ = _e1145;
+                            phi_1607_ = _e1561;
+                            phi_1608_ = _e1563;
                         }
-                        let _e1177 = phi_1173_;
-                        let _e1179 = phi_1174_;
-                        local_96 = _e1177;
-                        local_97 = _e1179;
-                        let _e1180 = local_94;
-                        let _e1181 = local_93;
-                        let _e1182 = local_91;
-                        local_123 = select(_e1182, _e1181, _e1180);
-                        let _e1184 = local_94;
-                        let _e1185 = local_126;
-                        let _e1186 = local_18;
-                        let _e1187 = select(_e1186, _e1185, _e1184);
-                        local_124 = _e1187;
-                        let _e1188 = local_9;
-                        let _e1189 = (5u * _e1188);
-                        local_98 = _e1189;
-                        local_99 = bitcast<u32>(_e1177[0]);
-                        let _e1192 = local_4;
-                        if (_e1189 < _e1192) {
+                        let _e1595 = phi_1607_;
+                        let _e1597 = phi_1608_;
+                        local_116 = _e1595;
+                        local_117 = _e1597;
+                        let _e1598 = local_114;
+                        let _e1599 = local_113;
+                        let _e1600 = local_111;
+                        local_149 = select(_e1600, _e1599, _e1598);
+                        let _e1602 = local_114;
+                        let _e1603 = local_152;
+                        let _e1604 = local_36;
+                        let _e1605 = select(_e1604, _e1603, _e1602);
+                        local_150 = _e1605;
+                        let _e1606 = local_9;
+                        let _e1607 = (5u * _e1606);
+                        local_118 = _e1607;
+                        local_119 = bitcast<u32>(_e1595[0]);
+                        let _e1610 = local_4;
+                        if (_e1607 < _e1610) {
                         } else {
-                            phi_1368_ = true;
+                            phi_1802_ = true;
                             break;
                         }
-                        let _e1194 = local_98;
-                        let _e1197 = local_99;
-                        global_7.member[_e1194] = _e1197;
-                        let _e1198 = local_98;
-                        let _e1199 = (_e1198 + 1u);
-                        local_100 = _e1199;
-                        let _e1200 = local_96;
-                        local_101 = bitcast<u32>(_e1200[1]);
-                        let _e1203 = local_4;
-                        if (_e1199 < _e1203) {
+                        let _e1612 = local_118;
+                        let _e1615 = local_119;
+                        global_7.member[_e1612] = _e1615;
+                        let _e1616 = local_118;
+                        let _e1617 = (_e1616 + 1u);
+                        local_120 = _e1617;
+                        let _e1618 = local_116;
+                        local_121 = bitcast<u32>(_e1618[1]);
+                        let _e1621 = local_4;
+                        if (_e1617 < _e1621) {
                         } else {
-                            phi_1368_ = true;
+                            phi_1802_ = true;
                             break;
                         }
-                        let _e1205 = local_100;
-                        let _e1208 = local_101;
-                        global_7.member[_e1205] = _e1208;
-                        let _e1209 = local_98;
-                        let _e1210 = (_e1209 + 2u);
-                        local_102 = _e1210;
-                        let _e1211 = local_96;
-                        local_103 = bitcast<u32>(_e1211[2]);
-                        let _e1214 = local_4;
-                        if (_e1210 < _e1214) {
+                        let _e1623 = local_120;
+                        let _e1626 = local_121;
+                        global_7.member[_e1623] = _e1626;
+                        let _e1627 = local_118;
+                        let _e1628 = (_e1627 + 2u);
+                        local_122 = _e1628;
+                        let _e1629 = local_116;
+                        local_123 = bitcast<u32>(_e1629[2]);
+                        let _e1632 = local_4;
+                        if (_e1628 < _e1632) {
                         } else {
-                            phi_1368_ = true;
+                            phi_1802_ = true;
                             break;
                         }
-                        let _e1216 = local_102;
-                        let _e1219 = local_103;
-                        global_7.member[_e1216] = _e1219;
-                        let _e1220 = local_98;
-                        let _e1221 = (_e1220 + 3u);
-                        local_104 = _e1221;
-                        let _e1222 = local_97;
-                        local_105 = bitcast<u32>(_e1222);
-                        let _e1224 = local_4;
-                        if (_e1221 < _e1224) {
+                        let _e1634 = local_122;
+                        let _e1637 = local_123;
+                        global_7.member[_e1634] = _e1637;
+                        let _e1638 = local_118;
+                        let _e1639 = (_e1638 + 3u);
+                        local_124 = _e1639;
+                        let _e1640 = local_117;
+                        local_125 = bitcast<u32>(_e1640);
+                        let _e1642 = local_4;
+                        if (_e1639 < _e1642) {
                         } else {
-                            phi_1368_ = true;
+                            phi_1802_ = true;
                             break;
                         }
-                        let _e1226 = local_104;
-                        let _e1229 = local_105;
-                        global_7.member[_e1226] = _e1229;
-                        let _e1230 = local_98;
-                        let _e1231 = (_e1230 + 4u);
-                        local_106 = _e1231;
-                        let _e1232 = local_124;
-                        local_107 = bitcast<u32>(_e1232);
-                        let _e1234 = local_4;
-                        if (_e1231 < _e1234) {
+                        let _e1644 = local_124;
+                        let _e1647 = local_125;
+                        global_7.member[_e1644] = _e1647;
+                        let _e1648 = local_118;
+                        let _e1649 = (_e1648 + 4u);
+                        local_126 = _e1649;
+                        let _e1650 = local_150;
+                        local_127 = bitcast<u32>(_e1650);
+                        let _e1652 = local_4;
+                        if (_e1649 < _e1652) {
                         } else {
-                            phi_1368_ = true;
+                            phi_1802_ = true;
                             break;
                         }
-                        let _e1236 = local_106;
-                        let _e1239 = local_107;
-                        global_7.member[_e1236] = _e1239;
-                        let _e1242 = global_5.member.member_2;
-                        local_108 = _e1242;
-                        let _e1243 = local_123;
-                        if _e1243 {
-                            let _e1244 = local_97;
-                            if (_e1244 < 1f) {
-                                phi_1336_ = _e1187;
+                        let _e1654 = local_126;
+                        let _e1657 = local_127;
+                        global_7.member[_e1654] = _e1657;
+                        let _e1660 = global_5.member.member_2;
+                        local_128 = _e1660;
+                        let _e1661 = local_149;
+                        if _e1661 {
+                            let _e1662 = local_117;
+                            if (_e1662 < 1f) {
+                                phi_1770_ = _e1605;
                             } else {
-                                let _e1246 = local_124;
-                                let _e1247 = local_108;
-                                local_109 = (_e1246 * _e1247);
-                                let _e1249 = local_107;
-                                if (_e1249 == 0u) {
-                                    phi_1277_ = false;
+                                let _e1664 = local_150;
+                                let _e1665 = local_128;
+                                local_129 = (_e1664 * _e1665);
+                                let _e1667 = local_127;
+                                if (_e1667 == 0u) {
+                                    phi_1711_ = false;
                                 } else {
-                                    let _e1251 = local_107;
-                                    phi_1277_ = (_e1251 <= 2139095040u);
+                                    let _e1669 = local_127;
+                                    phi_1711_ = (_e1669 <= 2139095040u);
                                 }
-                                let _e1254 = phi_1277_;
-                                if _e1254 {
-                                    let _e1255 = local_109;
-                                    if (_e1255 >= 0f) {
-                                        let _e1257 = local_109;
-                                        let _e1260 = ((bitcast<u32>(_e1257) & 2147483647u) > 2139095040u);
-                                        if _e1260 {
-                                            phi_1308_ = f32();
-                                            phi_1309_ = f32();
-                                            phi_1310_ = false;
+                                let _e1672 = phi_1711_;
+                                if _e1672 {
+                                    let _e1673 = local_129;
+                                    if (_e1673 >= 0f) {
+                                        let _e1675 = local_129;
+                                        let _e1678 = ((bitcast<u32>(_e1675) & 2147483647u) > 2139095040u);
+                                        if _e1678 {
+                                            phi_1742_ = f32();
+                                            phi_1743_ = f32();
+                                            phi_1744_ = false;
                                         } else {
-                                            let _e1261 = local_109;
-                                            let _e1262 = (_e1261 == 0f);
-                                            local_110 = _e1262;
-                                            if _e1262 {
-                                                phi_1306_ = f32();
-                                                phi_1307_ = true;
+                                            let _e1679 = local_129;
+                                            let _e1680 = (_e1679 == 0f);
+                                            local_130 = _e1680;
+                                            if _e1680 {
+                                                phi_1740_ = f32();
+                                                phi_1741_ = true;
                                             } else {
-                                                let _e1266 = global_5.member.member_1.member_1;
-                                                local_111 = _e1266;
-                                                let _e1267 = local_109;
-                                                let _e1268 = (_e1267 >= _e1266);
-                                                if _e1268 {
-                                                    phi_1304_ = f32();
+                                                let _e1684 = global_5.member.member_1.member_1;
+                                                local_131 = _e1684;
+                                                let _e1685 = local_129;
+                                                let _e1686 = (_e1685 >= _e1684);
+                                                if _e1686 {
+                                                    phi_1738_ = f32();
                                                 } else {
-                                                    let _e1269 = local_109;
-                                                    let _e1270 = local_124;
-                                                    let _e1272 = local_111;
-                                                    let _e1273 = local_109;
-                                                    phi_1304_ = ((_e1269 * _e1270) / (_e1272 - _e1273));
+                                                    let _e1687 = local_129;
+                                                    let _e1688 = local_150;
+                                                    let _e1690 = local_131;
+                                                    let _e1691 = local_129;
+                                                    phi_1738_ = ((_e1687 * _e1688) / (_e1690 - _e1691));
                                                 }
-                                                let _e1277 = phi_1304_;
-                                                phi_1306_ = _e1277;
-                                                phi_1307_ = _e1268;
+                                                let _e1695 = phi_1738_;
+                                                phi_1740_ = _e1695;
+                                                phi_1741_ = _e1686;
                                             }
-                                            let _e1279 = phi_1306_;
-                                            let _e1281 = phi_1307_;
-                                            let _e1282 = local_110;
-                                            let _e1283 = local_126;
-                                            phi_1308_ = select(_e1283, 0f, _e1282);
-                                            phi_1309_ = _e1279;
-                                            phi_1310_ = _e1281;
+                                            let _e1697 = phi_1740_;
+                                            let _e1699 = phi_1741_;
+                                            let _e1700 = local_130;
+                                            let _e1701 = local_152;
+                                            phi_1742_ = select(_e1701, 0f, _e1700);
+                                            phi_1743_ = _e1697;
+                                            phi_1744_ = _e1699;
                                         }
-                                        let _e1286 = phi_1308_;
-                                        let _e1288 = phi_1309_;
-                                        let _e1290 = phi_1310_;
-                                        phi_1311_ = _e1286;
-                                        phi_1312_ = _e1288;
-                                        phi_1313_ = _e1260;
-                                        phi_1314_ = _e1290;
+                                        let _e1704 = phi_1742_;
+                                        let _e1706 = phi_1743_;
+                                        let _e1708 = phi_1744_;
+                                        phi_1745_ = _e1704;
+                                        phi_1746_ = _e1706;
+                                        phi_1747_ = _e1678;
+                                        phi_1748_ = _e1708;
                                     } else {
-                                        phi_1311_ = f32();
-                                        phi_1312_ = f32();
-                                        phi_1313_ = true;
-                                        phi_1314_ = false;
+                                        phi_1745_ = f32();
+                                        phi_1746_ = f32();
+                                        phi_1747_ = true;
+                                        phi_1748_ = false;
                                     }
-                                    let _e1292 = phi_1311_;
-                                    let _e1294 = phi_1312_;
-                                    let _e1296 = phi_1313_;
-                                    let _e1298 = phi_1314_;
-                                    phi_1315_ = _e1292;
-                                    phi_1316_ = _e1294;
-                                    phi_1317_ = _e1296;
-                                    phi_1318_ = _e1298;
+                                    let _e1710 = phi_1745_;
+                                    let _e1712 = phi_1746_;
+                                    let _e1714 = phi_1747_;
+                                    let _e1716 = phi_1748_;
+                                    phi_1749_ = _e1710;
+                                    phi_1750_ = _e1712;
+                                    phi_1751_ = _e1714;
+                                    phi_1752_ = _e1716;
                                 } else {
-                                    phi_1315_ = f32();
-                                    phi_1316_ = f32();
-                                    phi_1317_ = true;
-                                    phi_1318_ = false;
+                                    phi_1749_ = f32();
+                                    phi_1750_ = f32();
+                                    phi_1751_ = true;
+                                    phi_1752_ = false;
                                 }
-                                let _e1300 = phi_1315_;
-                                let _e1302 = phi_1316_;
-                                let _e1304 = phi_1317_;
-                                let _e1306 = phi_1318_;
-                                let _e1307 = local_125;
-                                let _e1311 = local_124;
-                                let _e1312 = (_e1311 + select(_e1302, select(_e1300, _e1307, _e1304), select(_e1306, true, _e1304)));
-                                let _e1316 = local_126;
-                                phi_1336_ = select(_e1316, _e1312, ((bitcast<u32>(_e1312) & 2139095040u) != 2139095040u));
+                                let _e1718 = phi_1749_;
+                                let _e1720 = phi_1750_;
+                                let _e1722 = phi_1751_;
+                                let _e1724 = phi_1752_;
+                                let _e1725 = local_151;
+                                let _e1729 = local_150;
+                                let _e1730 = (_e1729 + select(_e1720, select(_e1718, _e1725, _e1722), select(_e1724, true, _e1722)));
+                                let _e1734 = local_152;
+                                phi_1770_ = select(_e1734, _e1730, ((bitcast<u32>(_e1730) & 2139095040u) != 2139095040u));
                             }
-                            let _e1319 = phi_1336_;
-                            phi_1337_ = _e1319;
+                            let _e1737 = phi_1770_;
+                            phi_1771_ = _e1737;
                         } else {
-                            phi_1337_ = _e184;
+                            phi_1771_ = _e210;
                         }
-                        let _e1321 = phi_1337_;
-                        local_112 = bitcast<u32>(_e1321);
-                        let _e1323 = local_9;
-                        let _e1324 = local_3;
-                        if (_e1323 < _e1324) {
+                        let _e1739 = phi_1771_;
+                        local_132 = bitcast<u32>(_e1739);
+                        let _e1741 = local_9;
+                        let _e1742 = local_3;
+                        if (_e1741 < _e1742) {
                         } else {
-                            phi_1368_ = true;
+                            phi_1802_ = true;
                             break;
                         }
-                        let _e1326 = local_9;
-                        let _e1329 = local_112;
-                        global_6.member[_e1326] = _e1329;
+                        let _e1744 = local_9;
+                        let _e1747 = local_132;
+                        global_6.member[_e1744] = _e1747;
                     }
                     storageBarrier();
                     workgroupBarrier();
-                    let _e1330 = local_7;
-                    let _e1331 = local_6;
-                    phi_126_ = (_e1330 + _e1331);
+                    let _e1748 = local_7;
+                    let _e1749 = local_6;
+                    phi_127_ = (_e1748 + _e1749);
                 } else {
-                    phi_126_ = u32();
+                    phi_127_ = u32();
                 }
-                let _e1334 = phi_126_;
+                let _e1752 = phi_127_;
                 continue;
                 continuing {
-                    let _e1335 = local_8;
-                    phi_125_ = _e1334;
-                    phi_1368_ = false;
-                    break if !(_e1335);
+                    let _e1753 = local_8;
+                    phi_126_ = _e1752;
+                    phi_1802_ = false;
+                    break if !(_e1753);
                 }
             }
-            let _e1338 = phi_1368_;
-            if _e1338 {
+            let _e1756 = phi_1802_;
+            if _e1756 {
                 break;
             }
             break;

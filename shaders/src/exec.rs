@@ -24,6 +24,10 @@ pub trait Group {
     /// Runs `f(local_index)` for every invocation, then a workgroup barrier that also makes storage
     /// buffer writes of the workgroup visible to it.
     fn each(&mut self, f: impl FnMut(u32));
+    /// The local ids this code runs as, for barrier-free code that cannot go through a closure
+    /// (one reading sampled images: SPIR-V holds no pointer to an image in a closure's captures):
+    /// the invocation's own id on the GPU, every id on the CPU.
+    fn invocations(&self) -> core::ops::Range<u32>;
 }
 
 /// Read access to a storage buffer of `u32` words: all a kernel's read-only binding offers (on the
@@ -85,6 +89,10 @@ mod cpu {
                 f(lid);
             }
         }
+        #[inline]
+        fn invocations(&self) -> core::ops::Range<u32> {
+            0..self.size
+        }
     }
 
     /// A storage buffer on the CPU backend. Out-of-bounds accesses panic, as rust-gpu's bounds
@@ -138,6 +146,10 @@ mod cpu {
         pub push: &'a [u32],
         /// The kernel's read-only bindings (`KernelDesc::read_only`).
         pub read_only: u32,
+        /// Per binding, for a sampled image (`KernelDesc::images`): its width in texels and its
+        /// packed format ([`crate::texels`]); `buffers` holds its packed texels. Empty for a kernel
+        /// with no images.
+        pub image_layouts: &'a [[u32; 2]],
     }
 
     impl<'a> CpuDispatch<'a> {
@@ -148,6 +160,12 @@ mod cpu {
         #[inline]
         pub fn mem(&self, binding: usize) -> CpuMem<'a> {
             CpuMem { words: self.buffers[binding], writable: self.read_only & (1 << binding) == 0 }
+        }
+        /// A sampled image's texels.
+        #[inline]
+        pub fn texels(&self, binding: usize) -> crate::texels::Packed<CpuMem<'a>> {
+            let [width, format] = self.image_layouts[binding];
+            crate::texels::Packed { words: CpuMem { words: self.buffers[binding], writable: false }, width, format }
         }
     }
 }
@@ -189,6 +207,10 @@ mod gpu {
                 { Scope::Workgroup as u32 },
                 { Semantics::WORKGROUP_MEMORY.bits() | Semantics::UNIFORM_MEMORY.bits() | Semantics::ACQUIRE_RELEASE.bits() },
             >();
+        }
+        #[inline]
+        fn invocations(&self) -> core::ops::Range<u32> {
+            self.local_index..self.local_index + 1
         }
     }
 

@@ -1,13 +1,16 @@
 //! What a renderer hands the frame API, in the layouts the methods read, and back.
 //!
-//! - `frame_from_images` (one invocation per pixel): a colour image (RGBA32F, RGBA16F as half bits,
-//!   or B10G11R11 packed floats) and a depth image copied into buffers become one fragment slot per
+//! - `frame_from_textures` (one invocation per pixel): a colour image and a depth image, sampled in
+//!   place ([`crate::texels`]), become one fragment slot per
 //!   pixel ([`crate::slot`]; alpha 1: a renderer's colour image is what its camera sees, and its
-//!   alpha channel, often a clear value, is not read). The depth word is an f32 (R32F, D32) or a 24-bit unorm in the low bits (D24 through its
-//!   depth aspect; the high 8 bits are undefined and ignored). It is either linear (planar view
+//!   alpha channel, often a clear value, is not read). The depth is either linear (planar view
 //!   depth, as the methods take it) or a depth buffer's value, turned into view depth from the
 //!   projection's near and far planes (standard or reversed Z, a far plane at infinity allowed). Where reversed or infinite projections put nothing (the far plane at
 //!   infinity), the depth is +inf: the background, which every method blends like a surface.
+//! - `frame_from_images`: the same, from images copied into buffers (where a backend cannot sample
+//!   them): colour RGBA32F, RGBA16F as half bits, or B10G11R11 packed floats; the depth word an f32
+//!   (R32F, D32) or a 24-bit unorm in the low bits (D24 through its depth aspect; the high 8 bits
+//!   are undefined and ignored), decoded as a fetch would return them.
 //! - `frame_front` (one invocation per pixel): a multi-layer input flattened to one colour (3 words)
 //!   and one depth (1 word) a pixel: the front-to-back "over" of the pixel's slots over black
 //!   ([`Composite`]; an opaque front slot's colour bit for bit) at the front slot's depth, black at
@@ -16,8 +19,9 @@
 //!   RGBA32F or RGBA16F with alpha 1, ready to copy into the caller's image.
 
 use crate::exec::{Group, Load, Mem};
-use crate::half::{b10g11r11_to_f32, f16_to_f32, f32_to_f16};
+use crate::half::f32_to_f16;
 use crate::slot::{self, Slot};
+use crate::texels::{self, Packed, Texels};
 use crate::wg::for_each_item;
 
 /// `depth_encoding`: planar view depth as it is.
@@ -54,7 +58,7 @@ pub struct FrameIoParams {
 /// The depth-buffer (or linear) value a depth word holds.
 #[inline]
 pub fn depth_value(p: &FrameIoParams, word: u32) -> f32 {
-    if p.depth_format == DEPTH_UNORM24 { (word & 0xff_ffff) as f32 / 16_777_215.0 } else { f32::from_bits(word) }
+    texels::decode(depth_texels(p), &texels::Word(word), 0)[0]
 }
 
 /// View depth from a depth-buffer value `d` (NaN outside `[0, 1]`).
@@ -79,25 +83,58 @@ pub fn view_depth(p: &FrameIoParams, d: f32) -> f32 {
     if den <= 0.0 { f32::INFINITY } else { num / den }
 }
 
+/// The packed format ([`crate::texels`]) of the copied colour image.
 #[inline]
-fn load_rgb(color: &impl Load, p: &FrameIoParams, i: u32) -> [f32; 3] {
+pub fn color_texels(p: &FrameIoParams) -> u32 {
     if p.color_words == 1 {
-        b10g11r11_to_f32(color.load(i))
+        texels::B10G11R11
     } else if p.color_words == 2 {
-        let (rg, ba) = (color.load(2 * i), color.load(2 * i + 1));
-        [f16_to_f32(rg & 0xffff), f16_to_f32(rg >> 16), f16_to_f32(ba & 0xffff)]
+        texels::RGBA16F
     } else {
-        [f32::from_bits(color.load(4 * i)), f32::from_bits(color.load(4 * i + 1)), f32::from_bits(color.load(4 * i + 2))]
+        texels::RGBA32F
     }
 }
 
-pub fn from_images_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &FrameIoParams, color: R, depth: R, mut fragments: M, mut counts: M) {
-    for_each_item(g, p.width * p.height, |i| {
-        let c = load_rgb(&color, p, i);
-        let z = view_depth(p, depth_value(p, depth.load(i)));
-        slot::store(&mut fragments, i, Slot::opaque(c, z));
-        counts.store(i, 1);
-    });
+/// The packed format ([`crate::texels`]) of the copied depth image.
+#[inline]
+pub fn depth_texels(p: &FrameIoParams) -> u32 {
+    if p.depth_format == DEPTH_UNORM24 { texels::D24 } else { texels::R32F }
+}
+
+/// A colour and a depth image as one opaque fragment slot a pixel (the images sampled in place, or
+/// copied: [`from_copies_pass`]). A grid-stride loop over the pixels with no closure: sampled
+/// images cannot be captured by one in SPIR-V.
+pub fn from_images_pass<G: Group, C: Texels, D: Texels, M: Mem>(
+    g: &mut G,
+    p: &FrameIoParams,
+    color: C,
+    depth: D,
+    mut fragments: M,
+    mut counts: M,
+) {
+    let n = p.width * p.height;
+    let stride = g.num_workgroups()[0] * g.size();
+    let lanes = g.invocations();
+    let mut base = g.workgroup_id()[0] * g.size();
+    while base < n {
+        let mut i = base + lanes.start;
+        while i < n && i < base + lanes.end {
+            let (x, y) = (i % p.width, i / p.width);
+            let [r, gr, b, _] = color.texel(x, y);
+            let z = view_depth(p, depth.texel(x, y)[0]);
+            slot::store(&mut fragments, i, Slot::opaque([r, gr, b], z));
+            counts.store(i, 1);
+            i += 1;
+        }
+        base += stride;
+    }
+}
+
+/// [`from_images_pass`] over images copied into buffers.
+pub fn from_copies_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &FrameIoParams, color: R, depth: R, fragments: M, counts: M) {
+    let color = Packed { words: color, width: p.width, format: color_texels(p) };
+    let depth = Packed { words: depth, width: p.width, format: depth_texels(p) };
+    from_images_pass(g, p, color, depth, fragments, counts)
 }
 
 pub fn front_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &FrameIoParams, fragments: R, counts: R, mut color: M, mut depth: M) {
@@ -127,8 +164,12 @@ pub fn to_rgba_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &FrameIoParams, rgb
 }
 
 kernel!(
-    /// A colour and a depth image (copied into buffers) as one fragment slot per pixel.
-    FROM_IMAGES = frame_from_images [256] (FrameIoParams) { read color, read depth, fragments, counts } => from_images_pass
+    /// A colour and a depth image, sampled in place, as one fragment slot per pixel.
+    FROM_TEXTURES = frame_from_textures [256] (FrameIoParams) { texture color, depth_texture depth, fragments, counts } => from_images_pass
+);
+kernel!(
+    /// A colour and a depth image copied into buffers as one fragment slot per pixel.
+    FROM_IMAGES = frame_from_images [256] (FrameIoParams) { read color, read depth, fragments, counts } => from_copies_pass
 );
 kernel!(
     /// The front slot of a multi-layer input as colour and depth.
@@ -140,7 +181,7 @@ kernel!(
 );
 
 #[cfg(not(target_arch = "spirv"))]
-pub const KERNELS: [&crate::KernelDesc; 3] = [&FROM_IMAGES, &FRONT, &TO_RGBA];
+pub const KERNELS: [&crate::KernelDesc; 4] = [&FROM_TEXTURES, &FROM_IMAGES, &FRONT, &TO_RGBA];
 
 /// The depth-buffer value of view depth `z` under `p`'s encoding (the inverse of [`view_depth`]):
 /// `z` itself for linear depth, +inf for `z` beyond the far plane or not finite (nothing a depth

@@ -23,13 +23,19 @@ pub struct KernelDesc {
     pub entry: &'static str,
     /// Invocations per workgroup (one-dimensional for every kernel here).
     pub workgroup_size: u32,
-    /// Storage buffers at bindings `0..bindings` of descriptor set 0.
+    /// Bindings `0..bindings` of descriptor set 0: storage buffers, and the sampled images of
+    /// `images`.
     pub bindings: u32,
     /// The bindings the kernel only reads, as a mask (bit `i`: binding `i`): those its declaration
-    /// marks `read`. They are `NonWritable` in its SPIR-V, and its body can only load them; the CPU
-    /// backend also faults on a write to one, and the Vulkan backend's barriers count them as reads,
-    /// not writes.
+    /// marks `read`, and its sampled images. The buffers are `NonWritable` in its SPIR-V, and its
+    /// body can only load them; the CPU backend also faults on a write to one, and the Vulkan
+    /// backend's barriers count them as reads, not writes.
     pub read_only: u32,
+    /// The bindings that are sampled images, not storage buffers, as a mask: those declared
+    /// `texture` (a colour image) or `depth_texture` (a depth image's depth aspect).
+    pub images: u32,
+    /// Those of `images` declared `depth_texture` (WGSL binds them as `texture_depth_2d`).
+    pub depth_images: u32,
     /// Size of the push constants in bytes.
     pub push_bytes: u32,
     /// Workgroup memory the kernel declares, in bytes (checked against the device limit).
@@ -98,13 +104,13 @@ pub const fn entry_name(path: &'static str) -> &'static str {
     path
 }
 
-/// The mask of the bindings marked `read` (bit `i`: binding `i`).
+/// The mask of the bindings `which` holds (bit `i`: binding `i`).
 #[cfg(not(target_arch = "spirv"))]
-pub const fn read_mask(read: &[bool]) -> u32 {
+pub const fn binding_mask(which: &[bool]) -> u32 {
     let mut mask = 0u32;
     let mut b = 0;
-    while b < read.len() {
-        if read[b] {
+    while b < which.len() {
+        if which[b] {
             mask |= 1 << b;
         }
         b += 1;
@@ -120,8 +126,11 @@ pub const fn read_mask(read: &[bool]) -> u32 {
 /// others are `&mut [u32]`, a [`Mem`](crate::exec::Mem) (`GpuMem`). On the CPU every binding is a
 /// `CpuMem` (both traits), which faults on a write to a `read` binding; `KernelDesc::read_only` is
 /// the mask of the `read` bindings.
-/// The body is called as `body(&mut group, &params, &mut shared, buffers...)`; without `shared`, as
-/// `body(&mut group, &params, buffers...)`, the buffers in declaration order.
+/// A binding marked `texture` or `depth_texture` is a sampled image (a colour image, or a depth
+/// image's depth aspect) and reaches the body as [`Texels`](crate::texels::Texels): fetched on the
+/// GPU, decoded from the CPU backend's packed image on the CPU (`KernelDesc::images`).
+/// The body is called as `body(&mut group, &params, &mut shared, bindings...)`; without `shared`, as
+/// `body(&mut group, &params, bindings...)`, the bindings in declaration order.
 #[macro_export]
 macro_rules! kernel {
     ($(#[$doc:meta])* $desc:ident = $entry:ident [$threads:tt] ($params:ty) shared [u32; $n:expr] { $($bind:tt)* }
@@ -133,35 +142,58 @@ macro_rules! kernel {
         $crate::kernel!(@parse [$(#[$doc])* $desc $entry [$threads] ($params) $body [] [] [] (0)] [] $($bind)*);
     };
 
-    // Reads the binding list into `[read name]` / `[write name]` pairs.
+    // Reads the binding list into `[mode name]` pairs (`read`, `write`, `texture`, `depth_texture`).
     (@parse [$($decl:tt)*] [$($acc:tt)*] read $b:ident $(, $($rest:tt)*)?) => {
         $crate::kernel!(@parse [$($decl)*] [$($acc)* [read $b]] $($($rest)*)?);
+    };
+    (@parse [$($decl:tt)*] [$($acc:tt)*] texture $b:ident $(, $($rest:tt)*)?) => {
+        $crate::kernel!(@parse [$($decl)*] [$($acc)* [texture $b]] $($($rest)*)?);
+    };
+    (@parse [$($decl:tt)*] [$($acc:tt)*] depth_texture $b:ident $(, $($rest:tt)*)?) => {
+        $crate::kernel!(@parse [$($decl)*] [$($acc)* [depth_texture $b]] $($($rest)*)?);
     };
     (@parse [$($decl:tt)*] [$($acc:tt)*] $b:ident $(, $($rest:tt)*)?) => {
         $crate::kernel!(@parse [$($decl)*] [$($acc)* [write $b]] $($($rest)*)?);
     };
     (@parse [$(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*]
         [$($cpu_sh:tt)*] ($n:expr)] [$([$mode:ident $buf:ident])*]) => {
-        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*] [] [0 1 2 3 4 5 6 7 8 9 10 11]
+        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*] [] [] [0 1 2 3 4 5 6 7 8 9 10 11]
             $([$mode $buf])*);
         $crate::kernel!(@cpu $(#[$doc])* $desc $entry [$threads] ($params) ($n) $body [$($cpu_sh)*] $([$mode $buf])*);
     };
 
-    // Accumulates one `#[spirv(storage_buffer)]` parameter per binding, numbered in order: `&[u32]`
-    // for a `read` binding, `&mut [u32]` for the others.
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
+    // Accumulates one entry-point parameter per binding, numbered in order (`#[spirv(storage_buffer)]`
+    // `&[u32]` for a `read` binding, `&mut [u32]` for a written one, a sampled image for a texture),
+    // and the argument the body gets for it.
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
         [$n:tt $($ns:tt)*] [read $b:ident] $($rest:tt)*) => {
         $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
             [$($acc)* #[spirv(descriptor_set = 0, binding = $n, storage_buffer)] $b: &[u32],]
+            [$($arg)* $crate::exec::GpuRead($b),]
             [$($ns)*] $($rest)*);
     };
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
         [$n:tt $($ns:tt)*] [write $b:ident] $($rest:tt)*) => {
         $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
             [$($acc)* #[spirv(descriptor_set = 0, binding = $n, storage_buffer)] $b: &mut [u32],]
+            [$($arg)* $crate::exec::GpuMem($b),]
             [$($ns)*] $($rest)*);
     };
-    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*]
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
+        [$n:tt $($ns:tt)*] [texture $b:ident] $($rest:tt)*) => {
+        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+            [$($acc)* #[spirv(descriptor_set = 0, binding = $n)] $b: &$crate::texels::ColorImage,]
+            [$($arg)* $b,]
+            [$($ns)*] $($rest)*);
+    };
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
+        [$n:tt $($ns:tt)*] [depth_texture $b:ident] $($rest:tt)*) => {
+        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+            [$($acc)* #[spirv(descriptor_set = 0, binding = $n)] $b: &$crate::texels::DepthImage,]
+            [$($arg)* $b,]
+            [$($ns)*] $($rest)*);
+    };
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
         [$($ns:tt)*]) => {
         #[cfg(target_arch = "spirv")]
         #[spirv_std::spirv(compute(threads($threads)))]
@@ -180,22 +212,22 @@ macro_rules! kernel {
                 workgroup_id: workgroup_id.to_array(),
                 num_workgroups: num_workgroups.to_array(),
             };
-            $crate::kernel!(@call $body (&mut group, params, $($sh_arg)*) [] $($acc)*);
+            $body(&mut group, params, $($sh_arg)* $($arg)*)
         }
-    };
-    // Turns the accumulated parameter list back into call arguments wrapped in `GpuRead` / `GpuMem`.
-    (@call $body:ident ($($pre:tt)*) [$($args:tt)*] #[$attr:meta] $b:ident: &[u32], $($rest:tt)*) => {
-        $crate::kernel!(@call $body ($($pre)*) [$($args)* $crate::exec::GpuRead($b),] $($rest)*)
-    };
-    (@call $body:ident ($($pre:tt)*) [$($args:tt)*] #[$attr:meta] $b:ident: &mut [u32], $($rest:tt)*) => {
-        $crate::kernel!(@call $body ($($pre)*) [$($args)* $crate::exec::GpuMem($b),] $($rest)*)
-    };
-    (@call $body:ident ($($pre:tt)*) [$($args:tt)*]) => {
-        $body($($pre)* $($args)*)
     };
 
     (@is_read read) => { true };
+    (@is_read texture) => { true };
+    (@is_read depth_texture) => { true };
     (@is_read write) => { false };
+    (@is_image texture) => { true };
+    (@is_image depth_texture) => { true };
+    (@is_image $mode:ident) => { false };
+    (@is_depth depth_texture) => { true };
+    (@is_depth $mode:ident) => { false };
+    (@cpu_bind texture $d:ident $b:ident) => { $d.texels($b) };
+    (@cpu_bind depth_texture $d:ident $b:ident) => { $d.texels($b) };
+    (@cpu_bind $mode:ident $d:ident $b:ident) => { $d.mem($b) };
 
     (@cpu $(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) ($n:expr) $body:ident
         [$($sh_arg:tt)*] $([$mode:ident $buf:ident])*) => {
@@ -204,7 +236,8 @@ macro_rules! kernel {
         pub mod $entry {
             #[allow(unused_imports)]
             use super::*;
-            /// One storage buffer per field, named as the kernel declares it.
+            /// One binding per field (a storage buffer or a sampled image), named as the kernel
+            /// declares it.
             #[derive(Clone, Copy, Debug, PartialEq)]
             pub struct Bindings<B> {
                 $(pub $buf: B,)*
@@ -224,14 +257,16 @@ macro_rules! kernel {
             fn cpu(d: &$crate::exec::CpuDispatch) {
                 let params: $params = $crate::exec::params(d.push);
                 let mut _binding = 0usize;
-                $(let $buf = d.mem(_binding); _binding += 1;)*
+                $(let $buf = $crate::kernel!(@cpu_bind $mode d _binding); _binding += 1;)*
                 $body(&mut d.group($threads), &params, $($sh_arg)* $($buf),*);
             }
             $crate::kernel::KernelDesc {
                 entry: $crate::kernel::entry_name(concat!(module_path!(), "::", stringify!($entry))),
                 workgroup_size: $threads,
                 bindings: [$(stringify!($buf)),*].len() as u32,
-                read_only: $crate::kernel::read_mask(&[$($crate::kernel!(@is_read $mode)),*]),
+                read_only: $crate::kernel::binding_mask(&[$($crate::kernel!(@is_read $mode)),*]),
+                images: $crate::kernel::binding_mask(&[$($crate::kernel!(@is_image $mode)),*]),
+                depth_images: $crate::kernel::binding_mask(&[$($crate::kernel!(@is_depth $mode)),*]),
                 push_bytes: core::mem::size_of::<$params>() as u32,
                 shared_bytes: 4 * ($n) as u32,
                 cpu,

@@ -37,6 +37,7 @@ pub mod scatter_gather;
 pub mod slot;
 pub mod sort;
 pub mod splat;
+pub mod texels;
 pub mod texture_read;
 pub mod tonemap;
 pub mod wg;

@@ -17,10 +17,10 @@
 //!   last useful pass (`peel_plan` decides).
 
 use crate::exec::{Group, Load, Mem};
-use crate::frame_io::{DEPTH_REVERSED, DEPTH_UNORM24, FrameIoParams, buffer_depth, depth_value, view_depth};
-use crate::half::{b10g11r11_to_f32, f16_to_f32};
+use crate::frame_io::{DEPTH_REVERSED, DEPTH_UNORM24, FrameIoParams, buffer_depth, color_texels, depth_value, view_depth};
 use crate::lens::{ThinLens, is_finite};
 use crate::peel::{background_seen, is_surface, next_reach};
+use crate::texels;
 use crate::wg::for_each_item;
 
 /// The bound of a pass that keeps every fragment (pass 0).
@@ -111,28 +111,12 @@ pub fn drawn(io: &FrameIoParams, d: f32) -> bool {
     if io.depth_encoding == DEPTH_REVERSED { d > 0.0 } else { d < 1.0 }
 }
 
-/// Colour and coverage of pixel `i` of a colour attachment copied into a buffer (coverage 1 for
-/// B10G11R11, which has none).
-#[inline]
-fn load_rgba(color: &impl Load, p: &FrameIoParams, i: u32) -> [f32; 4] {
-    if p.color_words == 1 {
-        let c = b10g11r11_to_f32(color.load(i));
-        [c[0], c[1], c[2], 1.0]
-    } else if p.color_words == 2 {
-        let (rg, ba) = (color.load(2 * i), color.load(2 * i + 1));
-        [f16_to_f32(rg & 0xffff), f16_to_f32(rg >> 16), f16_to_f32(ba & 0xffff), f16_to_f32(ba >> 16)]
-    } else {
-        let f = |k: u32| f32::from_bits(color.load(4 * i + k));
-        [f(0), f(1), f(2), f(3)]
-    }
-}
-
 pub fn layer_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &RendererPeelParams, color: R, depth: R, mut reach: M, mut layer: M) {
     for_each_item(g, p.io.width * p.io.height, |i| {
         let d = depth_value(&p.io, depth.load(i));
         let z = view_depth(&p.io, d);
         let found = drawn(&p.io, d) && is_surface(z);
-        let c = load_rgba(&color, &p.io, i);
+        let c = texels::decode(color_texels(&p.io), &color, i);
         // Where nothing was drawn the attachment holds the renderer's background (its clear or sky):
         // kept once, in the pass that saw the ray escape, as the mesh peel's shading does.
         let (rgb, alpha, depth) = if found {

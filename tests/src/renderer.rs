@@ -74,6 +74,8 @@ pub struct Renderer {
     images: Vec<(vk::Image, vk::DeviceMemory)>,
     /// Render passes, framebuffers and views of the depth passes, destroyed in `finish`.
     passes: Vec<(vk::RenderPass, vk::Framebuffer, vk::ImageView)>,
+    /// Views a frame samples images through, destroyed in `finish`.
+    views: Vec<vk::ImageView>,
 }
 
 impl Renderer {
@@ -166,6 +168,7 @@ impl Renderer {
             fence,
             buffers: Vec::new(),
             images: Vec::new(),
+            views: Vec::new(),
             passes: Vec::new(),
         })
     }
@@ -258,6 +261,21 @@ impl Renderer {
         };
         let usage = vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST | vk::ImageUsageFlags::SAMPLED | attachment;
         self.raw_image(format.vk_format(), extent, usage)
+    }
+
+    /// A view a frame samples `image` through (`ImageDesc::sampled_through`): 2D, mip 0, layer 0,
+    /// the depth aspect alone for a depth format.
+    pub fn sampled_view(&mut self, image: vk::Image, format: ImageFormat) -> vk::ImageView {
+        let aspect = if format.is_depth() { vk::ImageAspectFlags::DEPTH } else { vk::ImageAspectFlags::COLOR };
+        let info = vk::ImageViewCreateInfo::default()
+            .image(image)
+            .view_type(vk::ImageViewType::TYPE_2D)
+            .format(format.vk_format())
+            .subresource_range(vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1));
+        // SAFETY: a live image of this format with SAMPLED usage; destroyed in `finish`.
+        let view = unsafe { self.device.create_image_view(&info, None) }.expect("vkCreateImageView");
+        self.views.push(view);
+        view
     }
 
     /// An optimally tiled, device-local 2D image of any Vulkan format and usage.
@@ -469,6 +487,9 @@ impl Renderer {
                 d.destroy_framebuffer(framebuffer, None);
                 d.destroy_image_view(view, None);
                 d.destroy_render_pass(pass, None);
+            }
+            for &view in &self.views {
+                d.destroy_image_view(view, None);
             }
             for &(image, memory) in &self.images {
                 d.destroy_image(image, None);

@@ -10,11 +10,13 @@
 //!   2^-6 for blue), view depth within z·(z/near)·2^-22 (half a step of a 24-bit unorm and the f32
 //!   arithmetic, through the derivative of the projection; the f32 formats are finer);
 //! - the frame from images equals the frame from buffers holding that decoded input: bit for bit
-//!   on the CPU, within 1e-4 relative on Vulkan (where the device does the decoding's arithmetic).
+//!   on the CPU, within 1e-4 relative on Vulkan (where the device does the decoding's arithmetic);
+//! - on Vulkan, the frame that samples the images in place (through views) equals, bit for bit,
+//!   the frame that copies them first (the device's sampler decodes as the kernel decodes copies).
 //!
 //! On Vulkan the images are a renderer's own (`dof_tests::renderer`), left by its passes in their
 //! attachment layouts, and the frames are recorded into its command buffer; the validation layer
-//! must stay silent. Formats the device cannot copy from are reported and refused by name. On wgpu
+//! must stay silent. The CPU backend's images are always read in place. Formats the device cannot copy from are reported and refused by name. On wgpu
 //! they are a renderer's textures (the D24 formats as `Depth24PlusStencil8` and `Depth24Plus`,
 //! every depth written by a pass), the frames recorded into its encoder.
 
@@ -320,11 +322,14 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
     let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
     let mut ctx = context(&mut vk);
     let [fragments, counts, from_images, from_buffers] = buffers(&mut vk);
-    let mut unsupported = Vec::new();
+    let from_sampled = vk.create_buffer(3 * (W * H) as u64, "from sampled images").unwrap();
+    let (mut unsupported, mut sampled_cases) = (Vec::new(), 0);
     for format in ImageFormat::ALL {
         let f = r.format_features(format.vk_format());
-        let copies = [vk::FormatFeatureFlags::TRANSFER_SRC, vk::FormatFeatureFlags::TRANSFER_DST].map(|t| f.contains(t));
-        eprintln!("{format}: transfer source {}, destination {}", copies[0], copies[1]);
+        let [src, dst, sampled] =
+            [vk::FormatFeatureFlags::TRANSFER_SRC, vk::FormatFeatureFlags::TRANSFER_DST, vk::FormatFeatureFlags::SAMPLED_IMAGE]
+                .map(|t| f.contains(t));
+        eprintln!("{format}: transfer source {src}, destination {dst}, sampled {sampled}");
     }
     for case in cases() {
         let src = vk::FormatFeatureFlags::TRANSFER_SRC;
@@ -361,6 +366,20 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
         };
         let color = describe(color_image, case.color, color_layout, color_stage, color_access);
         let depth = describe(depth_image, case.depth, depth_layout, depth_stage, depth_access);
+        // The same images again, sampled in place through views where the device samples both
+        // formats (else the frame copies them as above).
+        let sampled = |image: vk::Image, format: ImageFormat, layout, stage, access, view| {
+            let desc = ImageRef::describe(image, format.vk_format(), case.image).unwrap().in_layout(layout).after(stage, access);
+            // SAFETY: as above, and the view is a live depth- or colour-aspect view of the image.
+            unsafe { desc.sampled_through(view).build() }
+        };
+        let samples =
+            [case.color, case.depth].iter().all(|f| r.format_features(f.vk_format()).contains(vk::FormatFeatureFlags::SAMPLED_IMAGE));
+        let (color_view, depth_view) = (r.sampled_view(color_image, case.color), r.sampled_view(depth_image, case.depth));
+        let color_in_place = sampled(color_image, case.color, color_layout, color_stage, color_access, color_view);
+        let depth_in_place = sampled(depth_image, case.depth, depth_layout, depth_stage, depth_access, depth_view);
+        assert_eq!(vk.check_image_sample(&color_in_place).is_ok() && vk.check_image_sample(&depth_in_place).is_ok(), samples, "{case:?}");
+        sampled_cases += samples as usize;
         // SAFETY: the renderer's command buffer is recording, outside a render pass.
         unsafe { vk.begin_external(r.cb) }.expect("begin_external");
         let recorded = ctx.record(&mut vk, &frame(FrameInput::Images { color, depth, encoding: case.encoding }, from_images));
@@ -373,6 +392,8 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
             continue;
         }
         recorded.unwrap_or_else(|e| panic!("{case:?}: {e}"));
+        let in_place = FrameInput::Images { color: color_in_place, depth: depth_in_place, encoding: case.encoding };
+        ctx.record(&mut vk, &frame(in_place, from_sampled)).unwrap_or_else(|e| panic!("{case:?} in place: {e}"));
         ctx.record(
             &mut vk,
             &frame(
@@ -385,6 +406,9 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
         r.submit_and_wait();
         let a = floats(&vk.read_buffer(from_images, 0, 3 * (W * H) as u64).unwrap());
         let b = floats(&vk.read_buffer(from_buffers, 0, 3 * (W * H) as u64).unwrap());
+        let c = floats(&vk.read_buffer(from_sampled, 0, 3 * (W * H) as u64).unwrap());
+        let differing = a.iter().zip(&c).filter(|(x, y)| x.to_bits() != y.to_bits()).count();
+        assert_eq!(differing, 0, "{case:?}: the frame sampling the images in place differs from the copied one in {differing} values");
         let worst = a.iter().zip(&b).map(|(x, y)| (x - y).abs() / y.abs().max(1.0)).fold(0.0f32, f32::max);
         assert!(worst <= 1e-4, "{case:?}: the frame from images differs from the frame of its decoded input by {worst} (relative)");
         assert!(a.iter().all(|v| v.is_finite()) && a.iter().any(|&v| v > 0.0), "{case:?}: an empty frame");
@@ -393,8 +417,10 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
     for line in &unsupported {
         eprintln!("not copyable on this device, refused by name: {line}");
     }
+    eprintln!("{sampled_cases} of {} cases sampled in place", cases().len());
+    assert!(sampled_cases > 0, "no case sampled its images in place");
     ctx.destroy(&mut vk);
-    [fragments, counts, from_images, from_buffers].into_iter().for_each(|id| vk.destroy_buffer(id));
+    [fragments, counts, from_images, from_buffers, from_sampled].into_iter().for_each(|id| vk.destroy_buffer(id));
     drop(vk);
     assert_no_messages(r.finish(), "when the renderer destroyed its device");
 }

@@ -2,11 +2,12 @@
 //! the Vulkan backend's barriers and for the accesses a [`Recording`](crate::frame::Recording)
 //! shows a render graph.
 //!
-//! A kernel's `read` bindings (its [`KernelDesc::read_only`] mask) are reads and its others writes;
+//! A kernel's `read` bindings (its [`KernelDesc::read_only`] mask) and sampled images are reads and
+//! its other bindings writes;
 //! an indirect dispatch reads its arguments; a fill writes; a copy reads its source and writes its
 //! destination; a draw reads its storage buffers and its indirect command and writes its target.
 
-use super::BufferId;
+use super::{BufferId, ImageRef};
 use dof_shaders::KernelDesc;
 use std::collections::HashSet;
 use std::hash::Hash;
@@ -35,13 +36,21 @@ impl Access {
     }
 }
 
-/// The accesses of a dispatch of `kernel` bound to `buffers` (binding order), reading its workgroup
-/// counts from `indirect_args` where it is indirect.
-pub(crate) fn dispatch_accesses(kernel: &KernelDesc, buffers: &[BufferId], indirect_args: Option<BufferId>) -> Vec<Access> {
+/// The accesses of a dispatch of `kernel` bound to `buffers` (its storage buffers, binding order)
+/// and sampling `images` (read), reading its workgroup counts from `indirect_args` where it is
+/// indirect.
+pub(crate) fn dispatch_accesses(
+    kernel: &KernelDesc,
+    buffers: &[BufferId],
+    images: &[ImageRef],
+    indirect_args: Option<BufferId>,
+) -> Vec<Access> {
+    let buffer_bindings = (0..kernel.bindings).filter(|b| kernel.images & (1 << b) == 0);
     buffers
         .iter()
-        .enumerate()
-        .map(|(i, &b)| Access { resource: Resource::Buffer(b), writes: kernel.read_only & (1 << i) == 0 })
+        .zip(buffer_bindings)
+        .map(|(&b, binding)| Access { resource: Resource::Buffer(b), writes: kernel.read_only & (1 << binding) == 0 })
+        .chain(images.iter().map(|image| Access { resource: Resource::Image(image.handle), writes: false }))
         .chain(indirect_args.map(Access::read))
         .collect()
 }

@@ -43,7 +43,7 @@ pub struct CpuBackend {
 struct CpuImage {
     format: ImageFormat,
     extent: [u32; 2],
-    texels: Vec<u32>,
+    texels: Box<[AtomicU32]>,
 }
 
 impl Default for CpuBackend {
@@ -83,7 +83,7 @@ impl CpuBackend {
 
     /// Every texel of a stand-in image.
     pub fn read_image(&self, image: &ImageRef) -> Result<Vec<u32>> {
-        Ok(self.image(image)?.texels.clone())
+        Ok(self.image(image)?.texels.iter().map(|t| t.load(Relaxed)).collect())
     }
 
     fn image(&self, image: &ImageRef) -> Result<&CpuImage> {
@@ -110,20 +110,16 @@ impl CpuBackend {
         let per_pixel = image.format.words_per_pixel() as usize;
         let [w, h] = image.extent;
         self.range(buffer, offset_words, image.words()).map_err(|e| Error::InvalidArgument(format!("{what} `{label}`: {e}")))?;
-        // Out of its slot while the buffer is borrowed; put back below.
-        let slot = image.handle as usize - 1;
-        let mut img = self.images[slot].take().ok_or_else(|| Error::InvalidArgument("unknown image".into()))?;
+        let img = self.image(&image)?;
         let range = self.range(buffer, offset_words, image.words())?;
         let row = img.extent[0] as usize * per_pixel;
         let span = w as usize * per_pixel;
         for y in 0..h as usize {
-            let texels = &mut img.texels[y * row..y * row + span];
+            let texels = &img.texels[y * row..y * row + span];
             let words = &range[y * span..(y + 1) * span];
-            for (t, b) in texels.iter_mut().zip(words) {
-                if into_image { *t = b.load(Relaxed) } else { b.store(*t, Relaxed) }
-            }
+            let (from, to) = if into_image { (words, texels) } else { (texels, words) };
+            from.iter().zip(to).for_each(|(f, t)| t.store(f.load(Relaxed), Relaxed));
         }
-        self.images[slot] = Some(img);
         self.counters.commands += 1;
         self.times.push(CommandTime { label: label.to_string(), kernel: what, ms: start.elapsed().as_secs_f64() * 1e3 });
         Ok(())
@@ -141,9 +137,33 @@ impl CpuBackend {
         Ok(&buffer[offset as usize..end as usize])
     }
 
-    fn run(&mut self, kernel: &'static KernelDesc, groups: [u32; 3], buffers: &[BufferId], push: &[u32], label: &str) -> Result<()> {
+    /// Runs `kernel` bound to `buffers` and the sampled `images` (each binding as the kernel
+    /// declares it: a stand-in image's texels stand in its binding, with their layout).
+    fn run(
+        &mut self,
+        kernel: &'static KernelDesc,
+        groups: [u32; 3],
+        buffers: &[BufferId],
+        images: &[ImageRef],
+        push: &[u32],
+        label: &str,
+    ) -> Result<()> {
         let start = Instant::now();
-        let bound: Vec<&[AtomicU32]> = buffers.iter().map(|&b| self.buffer(b)).collect::<Result<_>>()?;
+        let (mut buffers, mut images) = (buffers.iter(), images.iter());
+        let mut bound: Vec<&[AtomicU32]> = Vec::with_capacity(kernel.bindings as usize);
+        let mut image_layouts = Vec::new();
+        for binding in 0..kernel.bindings {
+            if kernel.images & (1 << binding) == 0 {
+                let id = buffers.next().ok_or_else(|| Error::InvalidArgument(format!("kernel {}: a buffer missing", kernel.entry)))?;
+                bound.push(self.buffer(*id)?);
+                continue;
+            }
+            let image = images.next().ok_or_else(|| Error::InvalidArgument(format!("kernel {}: an image missing", kernel.entry)))?;
+            let img = self.image(image)?;
+            image_layouts.resize(binding as usize + 1, [0, 0]);
+            image_layouts[binding as usize] = [img.extent[0], img.format.texels()];
+            bound.push(&img.texels);
+        }
         let total = groups[0] as u64 * groups[1] as u64 * groups[2] as u64;
         let result = catch_unwind(AssertUnwindSafe(|| {
             (0..total).into_par_iter().for_each(|flat| {
@@ -156,6 +176,7 @@ impl CpuBackend {
                     buffers: &bound,
                     push,
                     read_only: kernel.read_only,
+                    image_layouts: &image_layouts,
                 });
             })
         }));
@@ -263,8 +284,8 @@ impl Backend for CpuBackend {
     }
 
     fn dispatch(&mut self, kernel: &'static KernelDesc, groups: [u32; 3], buffers: &[BufferId], push: &[u32], label: &str) -> Result<()> {
-        check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), push.len())?;
-        self.run(kernel, groups, buffers, push, label)?;
+        check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), 0, push.len())?;
+        self.run(kernel, groups, buffers, &[], push, label)?;
         if groups.contains(&0) {
             self.counters.empty_dispatches += 1;
         }
@@ -283,12 +304,36 @@ impl Backend for CpuBackend {
         // Read in place: the device reads its arguments itself, so this is no host readback.
         let a = self.range(args, args_offset_words, 3)?;
         let groups = [a[0].load(Relaxed), a[1].load(Relaxed), a[2].load(Relaxed)];
-        check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), push.len())?;
-        self.run(kernel, groups, buffers, push, label)?;
+        check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), 0, push.len())?;
+        self.run(kernel, groups, buffers, &[], push, label)?;
         if groups.contains(&0) {
             self.counters.empty_dispatches += 1;
         }
         Ok(())
+    }
+
+    fn dispatch_images(
+        &mut self,
+        kernel: &'static KernelDesc,
+        groups: [u32; 3],
+        images: &[ImageRef],
+        buffers: &[BufferId],
+        push: &[u32],
+        label: &str,
+    ) -> Result<()> {
+        check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), images.len(), push.len())?;
+        images.iter().try_for_each(|image| self.check_image_sample(image))?;
+        self.run(kernel, groups, buffers, images, push, label)?;
+        if groups.contains(&0) {
+            self.counters.empty_dispatches += 1;
+        }
+        Ok(())
+    }
+
+    /// Its stand-ins are sampled where they are: every one of them can be.
+    fn check_image_sample(&self, image: &ImageRef) -> Result<()> {
+        image.check_sample("dispatch_images")?;
+        self.check_image_copy(image, false)
     }
 
     fn copy_image_to_buffer(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, label: &str) -> Result<()> {
@@ -306,12 +351,14 @@ impl Backend for CpuBackend {
             return Err(Error::InvalidArgument(format!("an empty {}x{} image", extent[0], extent[1])));
         }
         let words = format.words_per_pixel() * extent[0] as u64 * extent[1] as u64;
+        let texels = zeroed_words(words).ok_or_else(|| Error::HostMemory { what: "a stand-in image".into(), bytes: words * 4 })?;
         let slot = self.images.iter().position(Option::is_none).unwrap_or(self.images.len());
         if slot == self.images.len() {
             self.images.push(None);
         }
-        self.images[slot] = Some(CpuImage { format, extent, texels: vec![0; words as usize] });
-        Ok(ImageRef::in_table(slot as u64 + 1, format, extent))
+        self.images[slot] = Some(CpuImage { format, extent, texels });
+        // Kernels sample it in place: its view is itself.
+        Ok(ImageRef::in_table(slot as u64 + 1, slot as u64 + 1, format, extent))
     }
 
     fn write_image(&mut self, image: &ImageRef, texels: &[u32]) -> Result<()> {
@@ -319,7 +366,7 @@ impl Backend for CpuBackend {
         if texels.len() != img.texels.len() {
             return Err(Error::InvalidArgument(format!("the image holds {} words, {} given", img.texels.len(), texels.len())));
         }
-        img.texels.copy_from_slice(texels);
+        img.texels.iter().zip(texels).for_each(|(t, &v)| t.store(v, Relaxed));
         Ok(())
     }
 

@@ -51,6 +51,18 @@ impl ImageFormat {
         }
     }
 
+    /// How a kernel decodes the format's packed texels (`dof_shaders::texels`).
+    pub fn texels(self) -> u32 {
+        use dof_shaders::texels;
+        match self {
+            ImageFormat::Rgba32Float => texels::RGBA32F,
+            ImageFormat::Rgba16Float => texels::RGBA16F,
+            ImageFormat::B10G11R11Ufloat => texels::B10G11R11,
+            ImageFormat::R32Float | ImageFormat::D32Float => texels::R32F,
+            ImageFormat::D24UnormS8Uint | ImageFormat::X8D24UnormPack32 => texels::D24,
+        }
+    }
+
     /// The Vulkan name of the format (`D32_SFLOAT`).
     pub fn name(self) -> &'static str {
         match self {
@@ -144,6 +156,10 @@ pub struct ImageRef {
     /// The raw handle (`vk::Image::as_raw()`, set by [`ImageRef::vulkan`]), or the CPU backend's
     /// stand-in's number.
     pub(crate) handle: u64,
+    /// A view kernels sample the image through (`vk::ImageView::as_raw()`, set by
+    /// [`ImageDesc::sampled_through`]; the stand-in's number on the CPU backend), or 0: then a frame
+    /// copies the image instead of reading it in place.
+    pub(crate) view: u64,
     pub format: ImageFormat,
     /// Width and height in pixels.
     pub extent: [u32; 2],
@@ -182,7 +198,7 @@ impl ImageRef {
         final_layout: ash::vk::ImageLayout,
     ) -> Self {
         use ash::vk::Handle;
-        ImageRef { handle: image.as_raw(), format, extent, layout, stage, access, final_layout }
+        ImageRef { handle: image.as_raw(), view: 0, format, extent, layout, stage, access, final_layout }
     }
 
     /// Starts describing a caller's Vulkan image of `format` and `extent` (see [`ImageDesc`]):
@@ -201,16 +217,19 @@ impl ImageRef {
             stage: ash::vk::PipelineStageFlags::ALL_COMMANDS,
             access: ash::vk::AccessFlags::MEMORY_WRITE,
             final_layout: None,
+            view: ash::vk::ImageView::null(),
         })
     }
 
     /// An image a backend keeps itself, by `handle`: the CPU backend's stand-ins and the wgpu
     /// backend's textures by their number in its table (those backends have no layouts), the Vulkan
     /// backend's own images by their raw handle. Its Vulkan state says GENERAL and nothing to wait
-    /// for, the state the backend's own copies leave an image in.
-    pub(crate) fn in_table(handle: u64, format: ImageFormat, extent: [u32; 2]) -> Self {
+    /// for, the state the backend's own copies leave an image in. Kernels sample it through `view`
+    /// (0: it is only copied).
+    pub(crate) fn in_table(handle: u64, view: u64, format: ImageFormat, extent: [u32; 2]) -> Self {
         ImageRef {
             handle,
+            view,
             format,
             extent,
             #[cfg(feature = "vulkan")]
@@ -227,6 +246,21 @@ impl ImageRef {
     /// The raw Vulkan handle.
     pub fn handle(&self) -> u64 {
         self.handle
+    }
+
+    /// Whether kernels can read the image in place (it has a view to sample it through); a frame
+    /// copies an image without one.
+    pub fn sampled(&self) -> bool {
+        self.view != 0
+    }
+
+    /// What every backend checks before a kernel samples the image: a non-empty extent, a handle
+    /// and a view, and (on Vulkan) a layout with defined contents and a final layout.
+    pub(crate) fn check_sample(&self, what: &str) -> Result<()> {
+        if self.view == 0 {
+            return Err(Error::InvalidArgument(format!("{what}: the {} image has no view to sample it through", self.format)));
+        }
+        self.check_copy(false, what)
     }
 
     /// Words the image takes in a buffer.
@@ -293,10 +327,19 @@ pub struct ImageDesc {
     stage: ash::vk::PipelineStageFlags,
     access: ash::vk::AccessFlags,
     final_layout: Option<ash::vk::ImageLayout>,
+    view: ash::vk::ImageView,
 }
 
 #[cfg(feature = "vulkan")]
 impl ImageDesc {
+    /// A view of the image the frame's kernels sample it through, reading it in place instead of
+    /// copying it: a 2D view of mip level 0 and array layer 0, of the image's format, and for a
+    /// depth format of its depth aspect alone. The image then needs SAMPLED usage (and no
+    /// TRANSFER_SRC). An image read without a view is copied into the context's buffers first.
+    pub fn sampled_through(self, view: ash::vk::ImageView) -> Self {
+        ImageDesc { view, ..self }
+    }
+
     /// The layout the image is in when the frame's copy runs (UNDEFINED discards its contents:
     /// allowed only for an image the frame writes).
     pub fn in_layout(self, layout: ash::vk::ImageLayout) -> Self {
@@ -319,15 +362,19 @@ impl ImageDesc {
     /// # Safety
     ///
     /// As for [`ImageRef::vulkan`]: a live 2D image of the backend's device with this format and
-    /// at least this extent, the usages the copies need, in the named layout when the frame runs.
+    /// at least this extent, the usages the copies need (SAMPLED where it is sampled through a
+    /// view, which must be a live view of it as [`ImageDesc::sampled_through`] says), in the named
+    /// layout when the frame runs.
     pub unsafe fn build(self) -> ImageRef {
         use ash::vk::ImageLayout;
         let final_layout = self.final_layout.unwrap_or(match self.layout {
             ImageLayout::UNDEFINED | ImageLayout::PREINITIALIZED => ImageLayout::GENERAL,
             other => other,
         });
+        use ash::vk::Handle;
         // SAFETY: the caller's contract, passed on.
-        unsafe { ImageRef::vulkan(self.image, self.format, self.extent, self.layout, self.stage, self.access, final_layout) }
+        let image = unsafe { ImageRef::vulkan(self.image, self.format, self.extent, self.layout, self.stage, self.access, final_layout) };
+        ImageRef { view: self.view.as_raw(), ..image }
     }
 }
 

@@ -248,6 +248,31 @@ pub trait Backend {
     ) -> Result<()> {
         draw_fallback(self, draw, args, buffers, target, size, push, label)
     }
+    /// Records `kernel` reading sampled images in place: `images` bind its image bindings
+    /// ([`KernelDesc::images`]) in order, `buffers` its storage buffers in order; otherwise as
+    /// [`Backend::dispatch`]. Every image must pass [`Backend::check_image_sample`]. On Vulkan the
+    /// images go into a read layout for the dispatch and into their final layouts after it, as a
+    /// copy's do. Backends that sample no images refuse it.
+    fn dispatch_images(
+        &mut self,
+        kernel: &'static KernelDesc,
+        groups: [u32; 3],
+        images: &[ImageRef],
+        buffers: &[BufferId],
+        push: &[u32],
+        label: &str,
+    ) -> Result<()> {
+        let _ = (groups, buffers, push, label);
+        images.iter().try_for_each(|image| self.check_image_sample(image))?;
+        Err(Error::InvalidArgument(format!("the {} backend samples no images: kernel {} needs it", self.kind(), kernel.entry)))
+    }
+    /// Whether a kernel can sample `image` in place ([`Backend::dispatch_images`]): the checks made
+    /// before a frame records anything. A frame copies an image that fails them (one without a
+    /// view, say). Backends that sample no images refuse.
+    fn check_image_sample(&self, image: &ImageRef) -> Result<()> {
+        let _ = image;
+        Err(Error::InvalidArgument(format!("the {} backend samples no images in place", self.kind())))
+    }
     /// Copies the whole of `image` into `buffer[offset_words ..]` (packed as [`ImageFormat`] says);
     /// recorded like `fill`. `offset_words` must be a multiple of the format's words per pixel.
     /// Backends without images refuse it.
@@ -408,17 +433,23 @@ pub(crate) fn check_draw<B: Backend + ?Sized>(
     Ok(())
 }
 
-/// Checks a dispatch against the kernel's declaration and the device limits (both backends call it,
-/// so the CPU backend rejects exactly what Vulkan would).
+/// Checks a dispatch against the kernel's declaration (its buffers and sampled images) and the
+/// device limits (both backends call it, so the CPU backend rejects exactly what Vulkan would).
 pub(crate) fn check_dispatch(
     limits: &Limits,
     kernel: &KernelDesc,
     groups: Option<[u32; 3]>,
     buffers: usize,
+    images: usize,
     push_words: usize,
 ) -> Result<()> {
-    if buffers != kernel.bindings as usize {
-        return Err(Error::InvalidArgument(format!("kernel {} takes {} buffers, {} given", kernel.entry, kernel.bindings, buffers)));
+    let takes_images = kernel.images.count_ones() as usize;
+    let takes_buffers = kernel.bindings as usize - takes_images;
+    if (buffers, images) != (takes_buffers, takes_images) {
+        return Err(Error::InvalidArgument(format!(
+            "kernel {} takes {takes_buffers} buffers and {takes_images} sampled images, {buffers} and {images} given",
+            kernel.entry
+        )));
     }
     if push_words * 4 < kernel.push_bytes as usize {
         return Err(Error::InvalidArgument(format!(

@@ -1,12 +1,12 @@
 //! What a frame reads and writes, for every context: the caller's buffers or images, how a depth
 //! image encodes depth, and the buffers that image inputs and outputs go through on the device.
 
-use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, RetireQueue, RunKernel, groups_for};
+use crate::backend::{Backend, BackendId, BufferId, ImageFormat, ImageRef, RetireQueue, RunKernel, groups_for, push_words};
 use crate::error::{Error, Result};
 use crate::extent::Extent;
 use dof_shaders::frame_io::{
-    DEPTH_F32, DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FROM_IMAGES, FRONT, FrameIoParams, TO_RGBA, frame_from_images,
-    frame_front, frame_to_rgba,
+    DEPTH_F32, DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FROM_IMAGES, FROM_TEXTURES, FRONT, FrameIoParams, TO_RGBA,
+    frame_from_images, frame_front, frame_to_rgba,
 };
 use dof_shaders::lens::ThinLens;
 use dof_shaders::radiance::{COUNT_CLAMPED, ClampCountParams, radiance_count_clamped};
@@ -454,12 +454,19 @@ pub(crate) fn record_input(backend: &mut dyn Backend, f: &Frame, io: Option<&Ima
     match (f.input, io) {
         (FrameInput::Layers { fragments, counts, .. }, _) => Ok((fragments.0, counts.0)),
         (FrameInput::Images { color, depth, encoding }, Some(io)) => {
-            // Copies through the context's buffers: depth formats are rarely storage images, and
-            // the kernels read buffers on both backends (docs/integration.md has the cost).
-            backend.copy_image_to_buffer(color.top_left(f.width, f.height), io.color, 0, "frame/input-color")?;
-            backend.copy_image_to_buffer(depth.top_left(f.width, f.height), io.depth, 0, "frame/input-depth")?;
+            let (color, depth) = (color.top_left(f.width, f.height), depth.top_left(f.width, f.height));
             let params = io_params(f, Some(color.format), Some(depth.format), 1, encoding);
             let groups = groups_for(&FROM_IMAGES, f.width as u64 * f.height as u64);
+            if backend.check_image_sample(&color).is_ok() && backend.check_image_sample(&depth).is_ok() {
+                // Read in place: the kernel samples the caller's images through their views.
+                let bindings = [io.fragments, io.counts];
+                backend.dispatch_images(&FROM_TEXTURES, groups, &[color, depth], &bindings, &push_words(&params), "frame/input")?;
+                return Ok((io.fragments, io.counts));
+            }
+            // Copied through the context's buffers where the backend cannot sample them (no view,
+            // or a format it does not sample; docs/integration.md has the cost).
+            backend.copy_image_to_buffer(color, io.color, 0, "frame/input-color")?;
+            backend.copy_image_to_buffer(depth, io.depth, 0, "frame/input-depth")?;
             let convert = frame_from_images::Bindings { color: io.color, depth: io.depth, fragments: io.fragments, counts: io.counts };
             backend.run(convert, groups, &params, "frame/input")?;
             Ok((io.fragments, io.counts))

@@ -42,8 +42,10 @@ pub enum Groups {
 pub enum Command {
     /// `words` words of `buffer` from `offset_words` set to `value`.
     Fill { buffer: BufferId, offset_words: u64, words: u64, value: u32, label: String },
-    /// A compute kernel over `groups`, bound to `buffers` (binding order), with push constants `push`.
-    Dispatch { kernel: &'static KernelDesc, groups: Groups, buffers: Vec<BufferId>, push: Vec<u32>, label: String },
+    /// A compute kernel over `groups`, bound to `buffers` (its storage buffers in binding order) and
+    /// `images` (the caller's images it samples in place, in binding order; mostly none), with push
+    /// constants `push`.
+    Dispatch { kernel: &'static KernelDesc, groups: Groups, buffers: Vec<BufferId>, images: Vec<ImageRef>, push: Vec<u32>, label: String },
     /// A draw through the graphics pipeline (see [`Backend::draw_indirect`]).
     Draw {
         draw: &'static DrawDesc,
@@ -91,12 +93,12 @@ impl Command {
     pub fn accesses(&self) -> Vec<Access> {
         match self {
             Command::Fill { buffer, .. } => vec![Access::write(*buffer)],
-            Command::Dispatch { kernel, groups, buffers, .. } => {
+            Command::Dispatch { kernel, groups, buffers, images, .. } => {
                 let args = match groups {
                     Groups::Direct(_) => None,
                     Groups::Indirect { args, .. } => Some(*args),
                 };
-                dispatch_accesses(kernel, buffers, args)
+                dispatch_accesses(kernel, buffers, images, args)
             }
             Command::Draw { args, buffers, target, .. } => draw_accesses(buffers, *args, *target),
             Command::CopyImageToBuffer { image, buffer, .. } => copy_accesses(image.handle, *buffer, false).to_vec(),
@@ -130,10 +132,13 @@ impl Command {
     pub fn encode(&self, backend: &mut dyn Backend) -> Result<()> {
         match self {
             Command::Fill { buffer, offset_words, words, value, label } => backend.fill(*buffer, *offset_words, *words, *value, label),
-            Command::Dispatch { kernel, groups: Groups::Direct(groups), buffers, push, label } => {
+            Command::Dispatch { kernel, groups: Groups::Direct(groups), buffers, images, push, label } if images.is_empty() => {
                 backend.dispatch(kernel, *groups, buffers, push, label)
             }
-            Command::Dispatch { kernel, groups: Groups::Indirect { args, offset_words }, buffers, push, label } => {
+            Command::Dispatch { kernel, groups: Groups::Direct(groups), buffers, images, push, label } => {
+                backend.dispatch_images(kernel, *groups, images, buffers, push, label)
+            }
+            Command::Dispatch { kernel, groups: Groups::Indirect { args, offset_words }, buffers, push, label, .. } => {
                 backend.dispatch_indirect(kernel, *args, *offset_words, buffers, push, label)
             }
             Command::Draw { draw, args, buffers, target, size, push, label } => {
@@ -331,11 +336,30 @@ impl Backend for Capture<'_> {
         Ok(())
     }
     fn dispatch(&mut self, kernel: &'static KernelDesc, groups: [u32; 3], buffers: &[BufferId], push: &[u32], label: &str) -> Result<()> {
-        check_dispatch(self.inner.limits(), kernel, Some(groups), buffers.len(), push.len())?;
+        check_dispatch(self.inner.limits(), kernel, Some(groups), buffers.len(), 0, push.len())?;
         self.buffers(buffers)?;
         let (buffers, push, label) = (buffers.to_vec(), push.to_vec(), label.to_string());
-        self.commands.push(Command::Dispatch { kernel, groups: Groups::Direct(groups), buffers, push, label });
+        self.commands.push(Command::Dispatch { kernel, groups: Groups::Direct(groups), buffers, images: Vec::new(), push, label });
         Ok(())
+    }
+    fn dispatch_images(
+        &mut self,
+        kernel: &'static KernelDesc,
+        groups: [u32; 3],
+        images: &[ImageRef],
+        buffers: &[BufferId],
+        push: &[u32],
+        label: &str,
+    ) -> Result<()> {
+        check_dispatch(self.inner.limits(), kernel, Some(groups), buffers.len(), images.len(), push.len())?;
+        images.iter().try_for_each(|image| self.inner.check_image_sample(image))?;
+        self.buffers(buffers)?;
+        let (buffers, images, push, label) = (buffers.to_vec(), images.to_vec(), push.to_vec(), label.to_string());
+        self.commands.push(Command::Dispatch { kernel, groups: Groups::Direct(groups), buffers, images, push, label });
+        Ok(())
+    }
+    fn check_image_sample(&self, image: &ImageRef) -> Result<()> {
+        self.inner.check_image_sample(image)
     }
     fn dispatch_indirect(
         &mut self,
@@ -347,12 +371,12 @@ impl Backend for Capture<'_> {
         label: &str,
     ) -> Result<()> {
         // The group counts are the device's, known only when it runs.
-        check_dispatch(self.inner.limits(), kernel, None, buffers.len(), push.len())?;
+        check_dispatch(self.inner.limits(), kernel, None, buffers.len(), 0, push.len())?;
         self.range(args, args_offset_words, 3)?;
         self.buffers(buffers)?;
         let groups = Groups::Indirect { args, offset_words: args_offset_words };
         let (buffers, push, label) = (buffers.to_vec(), push.to_vec(), label.to_string());
-        self.commands.push(Command::Dispatch { kernel, groups, buffers, push, label });
+        self.commands.push(Command::Dispatch { kernel, groups, buffers, images: Vec::new(), push, label });
         Ok(())
     }
     fn draw_indirect(

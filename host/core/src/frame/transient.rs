@@ -257,7 +257,7 @@ mod tests {
         let kernel = &dof_shaders::sort::CLASSIFY;
         assert_eq!(kernel.read_only & 0b111, 0b001, "the kernel reads its first binding only");
         let buffers = vec![read, write, write];
-        Command::Dispatch { kernel, groups: Groups::Direct([1, 1, 1]), buffers, push: vec![], label: "test".into() }
+        Command::Dispatch { kernel, groups: Groups::Direct([1, 1, 1]), buffers, images: vec![], push: vec![], label: "test".into() }
     }
 
     fn stand_ins(t: &Transients, commands: &[Command]) -> usize {

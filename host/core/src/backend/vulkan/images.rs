@@ -14,6 +14,8 @@ use gpu_allocator::vulkan::{Allocation, AllocationCreateDesc, AllocationScheme, 
 /// One image of [`VulkanBackend::create_image`] and its memory.
 pub(super) struct OwnImage {
     image: vk::Image,
+    /// The view kernels sample it through (its depth aspect for a depth format).
+    view: vk::ImageView,
     allocation: Allocation,
     format: ImageFormat,
     extent: [u32; 2],
@@ -21,8 +23,11 @@ pub(super) struct OwnImage {
 
 impl OwnImage {
     pub fn destroy(self, device: &ash::Device, allocator: &mut Allocator) {
-        // SAFETY: the caller guarantees no pending work uses the image.
-        unsafe { device.destroy_image(self.image, None) };
+        // SAFETY: the caller guarantees no pending work uses the image or its view.
+        unsafe {
+            device.destroy_image_view(self.view, None);
+            device.destroy_image(self.image, None);
+        }
         // Freeing only fails for an allocation the allocator does not know.
         let _ = allocator.free(self.allocation);
     }
@@ -30,8 +35,9 @@ impl OwnImage {
 
 impl VulkanBackend {
     /// A device-local image of `format` and `extent` the backend owns, zeroed, with transfer
-    /// usage (copied from and into, as a renderer's images are): its [`ImageRef`] is in GENERAL with
-    /// nothing to wait for, the state the backend's own copies leave it in. Freed by
+    /// usage (copied from and into, as a renderer's images are), and sampled usage and a view where
+    /// the device samples the format: its [`ImageRef`] is in GENERAL with nothing to wait for, the
+    /// state the backend's own copies leave it in. Freed by
     /// [`Backend::destroy_image`] or with the backend. Refused inside an external recording (it
     /// submits).
     pub(super) fn make_image(&mut self, format: ImageFormat, extent: [u32; 2]) -> Result<ImageRef> {
@@ -45,9 +51,12 @@ impl VulkanBackend {
                 self.info.name
             )));
         }
-        let probe = ImageRef::in_table(u64::MAX, format, extent);
+        let probe = ImageRef::in_table(u64::MAX, u64::MAX, format, extent);
         self.check_image_copy(&probe, true)?;
         self.check_image_copy(&probe, false)?;
+        let sampled = self.check_image_sample(&probe).is_ok();
+        let usage = vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST;
+        let usage = if sampled { usage | vk::ImageUsageFlags::SAMPLED } else { usage };
         let info = vk::ImageCreateInfo::default()
             .image_type(vk::ImageType::TYPE_2D)
             .format(format.vk_format())
@@ -56,7 +65,7 @@ impl VulkanBackend {
             .array_layers(1)
             .samples(vk::SampleCountFlags::TYPE_1)
             .tiling(vk::ImageTiling::OPTIMAL)
-            .usage(vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST)
+            .usage(usage)
             .initial_layout(vk::ImageLayout::UNDEFINED);
         let allocator = self.allocator()?;
         let device = self.device.device.clone();
@@ -79,14 +88,28 @@ impl VulkanBackend {
                     return Err(Error::Allocation(e.to_string()));
                 }
             };
-            if let Err(result) = device.bind_image_memory(image, allocation.memory(), allocation.offset()) {
-                let _ = lock(&allocator).free(allocation);
-                device.destroy_image(image, None);
-                return Err(Error::Vulkan { call: "vkBindImageMemory", result });
+            let view = device.bind_image_memory(image, allocation.memory(), allocation.offset()).vk("vkBindImageMemory").and_then(|()| {
+                if !sampled {
+                    return Ok(vk::ImageView::null());
+                }
+                let range = vk::ImageSubresourceRange::default().aspect_mask(format.copy_aspect()).level_count(1).layer_count(1);
+                let info = vk::ImageViewCreateInfo::default()
+                    .image(image)
+                    .view_type(vk::ImageViewType::TYPE_2D)
+                    .format(format.vk_format())
+                    .subresource_range(range);
+                device.create_image_view(&info, None).vk("vkCreateImageView")
+            });
+            match view {
+                Ok(view) => OwnImage { image, view, allocation, format, extent },
+                Err(e) => {
+                    let _ = lock(&allocator).free(allocation);
+                    device.destroy_image(image, None);
+                    return Err(e);
+                }
             }
-            OwnImage { image, allocation, format, extent }
         };
-        let made = ImageRef::in_table(own.image.as_raw(), format, extent);
+        let made = ImageRef::in_table(own.image.as_raw(), own.view.as_raw(), format, extent);
         self.images.insert(made.handle, own);
         // Its first copy starts from UNDEFINED; every later one from GENERAL.
         let zeros = vec![0; made.words() as usize];

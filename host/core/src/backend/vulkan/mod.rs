@@ -554,16 +554,19 @@ impl VulkanBackend {
         result
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn record_dispatch(
         &mut self,
         kernel: &'static KernelDesc,
         groups: Option<[u32; 3]>,
         indirect: Option<(BufferId, u64)>,
         buffers: &[BufferId],
+        images: &[ImageRef],
         push: &[u32],
         label: &str,
     ) -> Result<()> {
-        check_dispatch(&self.info.limits, kernel, groups, buffers.len(), push.len())?;
+        check_dispatch(&self.info.limits, kernel, groups, buffers.len(), images.len(), push.len())?;
+        images.iter().try_for_each(|image| self.check_image_sample(image))?;
         let bound: Vec<vk::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.handle)).collect::<Result<_>>()?;
         let args = match indirect {
             Some((id, offset)) => Some((self.range(id, offset, 3)?, offset * 4)),
@@ -571,21 +574,39 @@ impl VulkanBackend {
         };
         let pipeline = self.pipelines.get(&self.device.device, kernel)?;
         self.note_used(buffers.iter().copied().chain(indirect.map(|(id, _)| id)));
-        let accessed = self.raw_accesses(&dispatch_accesses(kernel, buffers, indirect.map(|(id, _)| id)))?;
+        let accessed = self.raw_accesses(&dispatch_accesses(kernel, buffers, images, indirect.map(|(id, _)| id)))?;
 
-        let infos = buffer_infos(&bound);
-        let writes = storage_writes(&infos);
+        let buffer_infos = buffer_infos(&bound);
+        let image_infos: Vec<vk::DescriptorImageInfo> = images
+            .iter()
+            .map(|image| {
+                vk::DescriptorImageInfo::default()
+                    .image_view(vk::ImageView::from_raw(image.view))
+                    .image_layout(sampled_layout(image.format))
+            })
+            .collect();
+        let writes = descriptor_writes(kernel.images, &buffer_infos, &image_infos);
+        let (acquire, release) = sampled_barriers(images);
         // Exactly the kernel's push constant bytes (rounded to whole words, as Vulkan requires).
         let push_bytes = kernel.push_bytes.div_ceil(4) as usize * 4;
         let push_data: &[u8] = &bytemuck::cast_slice::<u32, u8>(push)[..push_bytes];
         let push_descriptor = &self.device.push_descriptor;
+        // Images wait for their last accesses: the caller's, and the backend's own copies.
+        let wait_stages = images.iter().fold(vk::PipelineStageFlags::TRANSFER, |stages, image| stages | image.stage);
         self.counters.commands += 1;
         self.counters.dispatches += 1;
+        self.counters.barriers += 2 * (!images.is_empty()) as u64;
 
         self.recorder.record(&self.device, Some((label, kernel.entry)), &accessed, |d, cb| {
             // SAFETY: `cb` is recording; the pipeline, its layout and every bound buffer are alive
-            // until the submission finishes (destroyed buffers are kept until then).
+            // until the submission finishes (destroyed buffers are kept until then); sampled images
+            // and their views are the caller's, live and in their declared layouts
+            // (`ImageDesc::build`'s contract).
             unsafe {
+                if !acquire.is_empty() {
+                    let compute = vk::PipelineStageFlags::COMPUTE_SHADER;
+                    d.cmd_pipeline_barrier(cb, wait_stages, compute, vk::DependencyFlags::empty(), &[], &[], &acquire);
+                }
                 d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::COMPUTE, pipeline.pipeline);
                 if !writes.is_empty() {
                     push_descriptor.cmd_push_descriptor_set(cb, vk::PipelineBindPoint::COMPUTE, pipeline.layout, 0, &writes);
@@ -597,6 +618,10 @@ impl VulkanBackend {
                     (_, Some((buffer, offset))) => d.cmd_dispatch_indirect(cb, buffer, offset),
                     (Some([x, y, z]), None) => d.cmd_dispatch(cb, x, y, z),
                     (None, None) => {}
+                }
+                if !release.is_empty() {
+                    let (compute, all) = (vk::PipelineStageFlags::COMPUTE_SHADER, vk::PipelineStageFlags::ALL_COMMANDS);
+                    d.cmd_pipeline_barrier(cb, compute, all, vk::DependencyFlags::empty(), &[], &[], &release);
                 }
             }
         })
@@ -684,18 +709,59 @@ fn buffer_infos(bound: &[vk::Buffer]) -> Vec<vk::DescriptorBufferInfo> {
     bound.iter().map(|&buffer| vk::DescriptorBufferInfo::default().buffer(buffer).offset(0).range(vk::WHOLE_SIZE)).collect()
 }
 
-/// Push-descriptor writes of storage buffers at bindings `0..` in order.
-fn storage_writes(infos: &[vk::DescriptorBufferInfo]) -> Vec<vk::WriteDescriptorSet<'_>> {
-    infos
-        .iter()
-        .enumerate()
-        .map(|(i, info)| {
-            vk::WriteDescriptorSet::default()
-                .dst_binding(i as u32)
-                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                .buffer_info(std::slice::from_ref(info))
+/// Push-descriptor writes of bindings `0..` in order: the sampled images (the bindings of the mask
+/// `images_at`, as `KernelDesc::images`) from `images`, the storage buffers from `buffers`.
+fn descriptor_writes<'a>(
+    images_at: u32,
+    buffers: &'a [vk::DescriptorBufferInfo],
+    images: &'a [vk::DescriptorImageInfo],
+) -> Vec<vk::WriteDescriptorSet<'a>> {
+    let bindings = (buffers.len() + images.len()) as u32;
+    let (mut buffers, mut images) = (buffers.iter(), images.iter());
+    (0..bindings)
+        .filter_map(|binding| {
+            let write = vk::WriteDescriptorSet::default().dst_binding(binding);
+            if images_at & (1 << binding) != 0 {
+                let info = images.next()?;
+                Some(write.descriptor_type(vk::DescriptorType::SAMPLED_IMAGE).image_info(std::slice::from_ref(info)))
+            } else {
+                let info = buffers.next()?;
+                Some(write.descriptor_type(vk::DescriptorType::STORAGE_BUFFER).buffer_info(std::slice::from_ref(info)))
+            }
         })
         .collect()
+}
+
+/// The layout a kernel samples an image of `format` in.
+fn sampled_layout(format: ImageFormat) -> vk::ImageLayout {
+    if format.is_depth() { vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL } else { vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL }
+}
+
+/// The barriers around a dispatch sampling `images`: from each image's last access (the caller's,
+/// or the backend's own copies) into its sampled layout, and from there into its final layout,
+/// visible to every later access.
+fn sampled_barriers(images: &[ImageRef]) -> (Vec<vk::ImageMemoryBarrier<'static>>, Vec<vk::ImageMemoryBarrier<'static>>) {
+    let barrier = |image: &ImageRef, old, new| {
+        vk::ImageMemoryBarrier::default()
+            .old_layout(old)
+            .new_layout(new)
+            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .image(vk::Image::from_raw(image.handle))
+            .subresource_range(
+                vk::ImageSubresourceRange::default().aspect_mask(image.format.layout_aspects()).level_count(1).layer_count(1),
+            )
+    };
+    let acquire = images.iter().map(|image| {
+        barrier(image, image.layout, sampled_layout(image.format))
+            .src_access_mask(image.access | vk::AccessFlags::TRANSFER_WRITE)
+            .dst_access_mask(vk::AccessFlags::SHADER_READ)
+    });
+    let release = images.iter().map(|image| {
+        barrier(image, sampled_layout(image.format), image.final_layout)
+            .dst_access_mask(vk::AccessFlags::MEMORY_READ | vk::AccessFlags::MEMORY_WRITE)
+    });
+    (acquire.collect(), release.collect())
 }
 
 impl Backend for VulkanBackend {
@@ -906,7 +972,33 @@ impl Backend for VulkanBackend {
     }
 
     fn dispatch(&mut self, kernel: &'static KernelDesc, groups: [u32; 3], buffers: &[BufferId], push: &[u32], label: &str) -> Result<()> {
-        self.record_dispatch(kernel, Some(groups), None, buffers, push, label)
+        self.record_dispatch(kernel, Some(groups), None, buffers, &[], push, label)
+    }
+
+    fn dispatch_images(
+        &mut self,
+        kernel: &'static KernelDesc,
+        groups: [u32; 3],
+        images: &[ImageRef],
+        buffers: &[BufferId],
+        push: &[u32],
+        label: &str,
+    ) -> Result<()> {
+        self.record_dispatch(kernel, Some(groups), None, buffers, images, push, label)
+    }
+
+    fn check_image_sample(&self, image: &ImageRef) -> Result<()> {
+        image.check_sample("dispatch_images")?;
+        // SAFETY: a query on the live instance and the device's physical device.
+        let features = unsafe { self.instance.instance.get_physical_device_format_properties(self.physical, image.format.vk_format()) }
+            .optimal_tiling_features;
+        if !features.contains(vk::FormatFeatureFlags::SAMPLED_IMAGE) {
+            return Err(Error::InvalidArgument(format!(
+                "dispatch_images: {} images cannot be sampled on {} (optimal tiling features {features:?})",
+                image.format, self.info.name
+            )));
+        }
+        Ok(())
     }
 
     fn dispatch_indirect(
@@ -918,7 +1010,7 @@ impl Backend for VulkanBackend {
         push: &[u32],
         label: &str,
     ) -> Result<()> {
-        self.record_dispatch(kernel, None, Some((args, args_offset_words)), buffers, push, label)
+        self.record_dispatch(kernel, None, Some((args, args_offset_words)), buffers, &[], push, label)
     }
 
     fn draw_indirect(
@@ -952,7 +1044,7 @@ impl Backend for VulkanBackend {
         let mut accessed = self.raw_accesses(&draw_accesses(buffers, args, target))?;
         accessed.push((image.as_raw(), true));
         let infos = buffer_infos(&bound);
-        let writes = storage_writes(&infos);
+        let writes = descriptor_writes(0, &infos, &[]);
         let push_bytes = draw.push_bytes.div_ceil(4) as usize * 4;
         let push_data: Vec<u8> = bytemuck::cast_slice::<u32, u8>(push)[..push_bytes].to_vec();
         let push_descriptor = &self.device.push_descriptor;

@@ -261,8 +261,15 @@ impl WgpuBackend {
     }
 
     fn create_pipeline(&self, kernel: &'static KernelDesc) -> Result<Pipeline> {
-        let entries: Vec<wgpu::BindGroupLayoutEntry> =
-            (0..kernel.bindings).map(|binding| storage_binding(binding, kernel.read_only & (1 << binding) != 0)).collect();
+        let entries: Vec<wgpu::BindGroupLayoutEntry> = (0..kernel.bindings)
+            .map(|binding| {
+                if kernel.images & (1 << binding) != 0 {
+                    texture_binding(binding, kernel.depth_images & (1 << binding) != 0)
+                } else {
+                    storage_binding(binding, kernel.read_only & (1 << binding) != 0)
+                }
+            })
+            .collect();
         self.compute_pipeline(kernel.entry, &entries, kernel.push_bytes)
     }
 
@@ -349,6 +356,17 @@ impl WgpuBackend {
 }
 
 /// A compute stage's storage buffer at `binding`.
+/// A sampled 2D texture's layout entry: a depth texture, or a colour one read without filtering.
+fn texture_binding(binding: u32, depth: bool) -> wgpu::BindGroupLayoutEntry {
+    let sample_type = if depth { wgpu::TextureSampleType::Depth } else { wgpu::TextureSampleType::Float { filterable: false } };
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::COMPUTE,
+        ty: wgpu::BindingType::Texture { sample_type, view_dimension: wgpu::TextureViewDimension::D2, multisampled: false },
+        count: None,
+    }
+}
+
 fn storage_binding(binding: u32, read_only: bool) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {
         binding,
@@ -496,7 +514,7 @@ impl Backend for WgpuBackend {
     }
 
     fn dispatch(&mut self, kernel: &'static KernelDesc, groups: [u32; 3], buffers: &[BufferId], push: &[u32], label: &str) -> Result<()> {
-        check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), push.len())?;
+        check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), 0, push.len())?;
         self.record_dispatch(kernel, Groups::Direct(groups), buffers, push, label)?;
         if groups.contains(&0) {
             self.counters.empty_dispatches += 1;
@@ -513,7 +531,7 @@ impl Backend for WgpuBackend {
         push: &[u32],
         label: &str,
     ) -> Result<()> {
-        check_dispatch(&self.limits, kernel, None, buffers.len(), push.len())?;
+        check_dispatch(&self.limits, kernel, None, buffers.len(), 0, push.len())?;
         self.check_range(args, args_offset_words, 3)?;
         let args = self.buffer(args)?.buffer.clone();
         self.record_dispatch(kernel, Groups::Indirect(args, args_offset_words * 4), buffers, push, label)

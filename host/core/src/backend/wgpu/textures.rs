@@ -4,7 +4,7 @@
 //! out of the others only for the whole texture.
 
 use super::timing::Command;
-use super::{Groups, Pipeline, WgpuBackend, storage_binding};
+use super::{Groups, Pipeline, WgpuBackend, storage_binding, texture_binding};
 use crate::backend::{BufferId, ImageFormat, ImageRef};
 use crate::error::{Error, Result};
 use dof_shaders::texture_read::{DEPTH_TEXTURE_WORDS, THREADS, TextureReadParams};
@@ -77,7 +77,7 @@ impl WgpuBackend {
         }
         self.textures[slot] = Some(WgpuTexture { texture: texture.clone(), depth_view });
         let size = texture.size();
-        Ok(ImageRef::in_table(slot as u64 + 1, image_format, [size.width, size.height]))
+        Ok(ImageRef::in_table(slot as u64 + 1, 0, image_format, [size.width, size.height]))
     }
 
     /// Drops the backend's reference to an imported texture; its `ImageRef` is then refused.
@@ -204,16 +204,7 @@ impl WgpuBackend {
         if let Some(pipeline) = &self.depth_read {
             return Ok(pipeline.clone());
         }
-        let depth = wgpu::BindGroupLayoutEntry {
-            binding: 0,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty: wgpu::BindingType::Texture {
-                sample_type: wgpu::TextureSampleType::Depth,
-                view_dimension: wgpu::TextureViewDimension::D2,
-                multisampled: false,
-            },
-            count: None,
-        };
+        let depth = texture_binding(0, true);
         let push_bytes = std::mem::size_of::<TextureReadParams>() as u32;
         let pipeline = self.compute_pipeline(DEPTH_TEXTURE_WORDS, &[depth, storage_binding(1, false)], push_bytes)?;
         self.depth_read = Some(pipeline.clone());

@@ -14,7 +14,7 @@ is run on: its times are no GPU figures. GPU tables come from `tools/gpu_run.sh`
 
 Standard library only.
 """
-import argparse, glob, json, os, platform, re, shutil, subprocess, sys, tempfile, textwrap
+import argparse, glob, json, math, os, platform, re, shutil, subprocess, sys, tempfile, textwrap
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DATA = os.path.join(ROOT, "docs", "figures", "data")
@@ -353,26 +353,36 @@ def gpu_stages():
 
 
 def image_input_rows(folder):
-    """Each `dof bench frame --input images` run in `folder` (`images-*.json`, as `tools/gpu_run.sh`
-    names them): scene, size, method, the two copies' ms, the conversion's ms, all commands' ms."""
+    """Each `dof bench frame --input images|copied-images` run in `folder` (`images-*.json` and
+    `copied-images-*.json`, as `tools/gpu_run.sh` names them): input, scene, size, method, the two
+    copies' ms (NaN read in place), the conversion's ms, all commands' ms."""
     rows = []
-    for r in bench_runs(folder, "images-"):
+    for r in bench_runs(folder, "images-", "copied-images-"):
         st = r["stage_ms"]
         copies = st.get("frame/input-color", float("nan")) + st.get("frame/input-depth", float("nan"))
-        rows.append((r["scene"], f"{r['width']}x{r['height']}", r["method"], copies, st.get("frame/input", float("nan")), r["gpu_ms"]))
+        rows.append((r["input"], r["scene"], f"{r['width']}x{r['height']}", r["method"], copies, st.get("frame/input", float("nan")),
+                     r["gpu_ms"]))
     return rows
+
+
+def ms_cell(ms):
+    """Milliseconds to three places, or a dash where there are none (a stage that did not run)."""
+    return "–" if math.isnan(ms) else f"{ms:.3f}"
 
 
 def gpu_image_input():
     """What bringing a renderer's colour and depth images in costs on the GPU run, where it ran."""
     rows = image_input_rows(GPU_RUN)
     if not rows:
-        return caption("The run measured no image input (`dof bench frame --input images`; `tools/gpu_run.sh` measures it).")[:-1]
+        return caption("The run measured no image input (`dof bench frame --input images` and `--input copied-images`; "
+                       "`tools/gpu_run.sh` measures both).")[:-1]
     return caption(
-        "An RGBA16F colour and a D32 depth image brought in each frame (`dof bench frame --input images`): "
-        "the two copies and the conversion to one slot a pixel, per-stage means, same run."
-    ) + ["| scene | size | method | copies ms | conversion ms | all commands ms |", "|---|---|---|---|---|---|"] + [
-        f"| {scene} | {size} | {method} | {copies:.3f} | {convert:.3f} | {total:.3f} |" for scene, size, method, copies, convert, total in rows
+        "An RGBA16F colour and a D32 depth image brought in each frame, read in place (`dof bench frame --input images`) "
+        "or copied first (`--input copied-images`): the two copies and the conversion to one slot a pixel, per-stage means, "
+        "same run."
+    ) + ["| input | scene | size | method | copies ms | conversion ms | all commands ms |", "|---|---|---|---|---|---|---|"] + [
+        f"| {inp} | {scene} | {size} | {method} | {ms_cell(copies)} | {convert:.3f} | {total:.3f} |"
+        for inp, scene, size, method, copies, convert, total in rows
     ]
 
 

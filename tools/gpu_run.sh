@@ -19,8 +19,9 @@
 #    at 3840x2160;
 # 5. the moving-camera frame: the device peel of `fence` with the camera orbiting 1 degree a
 #    frame, peel and depth of field, span-only and then per stage; the cost of a renderer's
-#    colour and depth images brought in (`dof bench frame --input images`, per stage: the two
-#    copies and the conversion) for the ring gather and tiled 4x4 at 1920x1080;
+#    colour and depth images brought in, read in place (`dof bench frame --input images`) and
+#    copied first (`--input copied-images`: the two copies and the conversion), per stage, for
+#    the ring gather and tiled 4x4 at 1920x1080;
 # 6. per-stage tables: multi-layer 4x4 and the ring gather at 3840x2160, then the ring gather,
 #    unmerged, 2x2, tiled, bokeh, layered and the ray tracer at 1920x1080; `dof bench ratios` at
 #    1920x1080; the exhaustive gather; the rest at 3840x2160.
@@ -73,10 +74,10 @@ no_footprints() { # size: multi-layer 4x4 on `railing` without footprints, besid
     --frames 20 --no-footprints --json > "$m/no-footprints-railing-$1.json" 2> "$m/no-footprints-railing-$1.err" \
     || echo "no-footprints $1 failed: $(tail -n 1 "$m/no-footprints-railing-$1.err")" | tee -a "$log"
 }
-image_input() { # size, method, merge: per stage, fed a colour and a depth image copied in each frame
-  local w=${1%x*} h=${1#*x} name="images-railing-$1-$2-$3"
+image_input() { # size, method, merge, input: per stage, fed a colour and a depth image each frame
+  local w=${1%x*} h=${1#*x} name="$4-railing-$1-$2-$3"
   step 40 "$dof" bench frame --backend vulkan --scene railing --method "$2" --merge "$3" --width "$w" --height "$h" \
-    --frames 20 --input images --json > "$m/$name.json" 2> "$m/$name.err" \
+    --frames 20 --input "$4" --json > "$m/$name.json" 2> "$m/$name.err" \
     || echo "$name failed: $(tail -n 1 "$m/$name.err")" | tee -a "$log"
 }
 ratios() { # time limit, size
@@ -118,8 +119,10 @@ for scene in simple railing fence; do span_only 30 "$s2" "$scene" multilayer 4x4
 orbit "$s1" --span-only
 orbit "$s1"
 orbit "$s2" --span-only
-image_input "$s1" ring-gather none
-image_input "$s1" tiled 4x4
+for input in images copied-images; do
+  image_input "$s1" ring-gather none "$input"
+  image_input "$s1" tiled 4x4 "$input"
+done
 measure 150 --sizes "$s2" --methods multilayer:4x4,ring-gather:none
 measure 150 --sizes "$s1" --methods ring-gather:none,multilayer:none,multilayer:2x2,tiled:4x4,bokeh:none,layered:none,raytrace:none
 orbit "$s2"

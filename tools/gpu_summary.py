@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """One table per size from the JSON that tools/gpu_measure.sh writes: python3 tools/gpu_summary.py OUT_DIR > OUT_DIR/summary.md
 (standard library only)."""
-import glob, json, os, sys
-from figures import bench_runs, image_input_rows  # tools/figures.py, beside this script
+import glob, json, math, os, sys
+from figures import bench_runs, image_input_rows, ms_cell  # tools/figures.py, beside this script
 out = sys.argv[1]
 rows = {}
 for r in bench_runs(out, "frame-"):
@@ -59,15 +59,16 @@ for (w, h) in sorted(rows):
         print("\n".join(lines))
         print()
 
-# What bringing a renderer's colour and depth images in costs (`dof bench frame --input images`,
-# per stage), beside the frame it feeds.
-inputs = [f"| {scene} | {size} | {method} | {copies:.3f} | {convert:.3f} | {total:.3f} | {100 * (copies + convert) / total:.1f}% |"
-          for scene, size, method, copies, convert, total in image_input_rows(out)]
+# What bringing a renderer's colour and depth images in costs (`dof bench frame --input images`
+# and `--input copied-images`, per stage), beside the frame it feeds.
+inputs = [f"| {inp} | {scene} | {size} | {method} | {ms_cell(copies)} | {convert:.3f} | {total:.3f} | "
+          f"{100 * (convert + (0 if math.isnan(copies) else copies)) / total:.1f}% |"
+          for inp, scene, size, method, copies, convert, total in image_input_rows(out)]
 if inputs:
     print("## Colour and depth images brought in\n")
-    print("RGBA16F colour and D32 depth copied into the context's buffers and converted to one slot a pixel, "
-          "each frame (per-stage means, each command's own timestamp pair).\n")
-    print("| scene | size | method | copies ms | conversion ms | frame's commands ms | share |")
-    print("|---|---|---|---|---|---|---|")
+    print("RGBA16F colour and D32 depth read in place, or copied into the context's buffers first, and converted to "
+          "one slot a pixel, each frame (per-stage means, each command's own timestamp pair).\n")
+    print("| input | scene | size | method | copies ms | conversion ms | frame's commands ms | share |")
+    print("|---|---|---|---|---|---|---|---|")
     print("\n".join(inputs))
     print()

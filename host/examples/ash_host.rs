@@ -17,7 +17,8 @@
 //!    the library's recording (`VulkanBackend::record_into`, a guard that ends it), `record`, then
 //!    its own pass after (copying the
 //!    result into a host-visible buffer), one submission with its own fence. Several multi-layer
-//!    frames with a changing focus distance, then one frame from the colour and depth images.
+//!    frames with a changing focus distance, then one frame from the colour and depth images, which
+//!    the library samples in place through the renderer's views (`ImageDesc::sampled_through`).
 //!    Inside a frame the library allocates, submits and reads back nothing: checked on its counters.
 //! 5. Each result is compared with the same `SplatContext` run on the library's CPU backend from
 //!    the same slots (`dof-core` only), and the last multi-layer and the single-layer results are
@@ -155,6 +156,8 @@ struct Renderer {
     fence: vk::Fence,
     buffers: Vec<Buffer>,
     images: Vec<(vk::Image, vk::DeviceMemory)>,
+    /// Views the frame samples our colour and depth images through.
+    views: Vec<vk::ImageView>,
 }
 
 impl Renderer {
@@ -233,8 +236,23 @@ impl Renderer {
                 vk::CommandBufferAllocateInfo::default().command_pool(pool).level(vk::CommandBufferLevel::PRIMARY).command_buffer_count(1);
             let cb = device.allocate_command_buffers(&alloc)?[0];
             let fence = device.create_fence(&vk::FenceCreateInfo::default(), None)?;
-            let (buffers, images) = (Vec::new(), Vec::new());
-            Ok(Renderer { entry, instance, messenger, physical, graphics, device, queue_family, queue, pool, cb, fence, buffers, images })
+            let (buffers, images, views) = (Vec::new(), Vec::new(), Vec::new());
+            Ok(Renderer {
+                entry,
+                instance,
+                messenger,
+                physical,
+                graphics,
+                device,
+                queue_family,
+                queue,
+                pool,
+                cb,
+                fence,
+                buffers,
+                images,
+                views,
+            })
         }
     }
 
@@ -288,6 +306,17 @@ impl Renderer {
             self.images.push((image, memory));
             Ok(image)
         }
+    }
+
+    /// A 2D colour view of mip 0 and layer 0 of `image`, as a renderer keeps for sampling.
+    fn view(&mut self, image: vk::Image, format: vk::Format) -> Result<vk::ImageView> {
+        let range = vk::ImageSubresourceRange::default().aspect_mask(vk::ImageAspectFlags::COLOR).level_count(1).layer_count(1);
+        let info =
+            vk::ImageViewCreateInfo::default().image(image).view_type(vk::ImageViewType::TYPE_2D).format(format).subresource_range(range);
+        // SAFETY: creation on the live device for a live image; destroyed in `destroy`.
+        let view = unsafe { self.device.create_image_view(&info, None)? };
+        self.views.push(view);
+        Ok(view)
     }
 
     /// Begins the command buffer (its last submission has completed: every one is waited for).
@@ -348,6 +377,9 @@ impl Renderer {
             for b in &self.buffers {
                 d.destroy_buffer(b.buffer, None);
                 d.free_memory(b.memory, None);
+            }
+            for &view in &self.views {
+                d.destroy_image_view(view, None);
             }
             for &(image, memory) in &self.images {
                 d.destroy_image(image, None);
@@ -548,6 +580,7 @@ fn main() -> Result<ExitCode> {
     let image_usage = vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST | vk::ImageUsageFlags::SAMPLED;
     let colour_image = r.image(vk::Format::R32G32B32A32_SFLOAT, extent, image_usage)?;
     let depth_image = r.image(vk::Format::R32_SFLOAT, extent, image_usage)?;
+    let (colour_view, depth_view) = (r.view(colour_image, vk::Format::R32G32B32A32_SFLOAT)?, r.view(depth_image, vk::Format::R32_SFLOAT)?);
     let output = Output {
         image: r.image(vk::Format::R32G32B32A32_SFLOAT, extent, image_usage)?,
         readback: r.buffer(16 * pixels, vk::BufferUsageFlags::TRANSFER_DST, true)?,
@@ -661,15 +694,18 @@ fn main() -> Result<ExitCode> {
             )
         } else {
             // Our upload left both images in SHADER_READ_ONLY_OPTIMAL, visible to compute; nothing
-            // has written them since, so there is no write to name. They stay in that layout.
-            // SAFETY: our live RGBA32F and R32F images of this extent with TRANSFER_SRC usage, on the
-            // backend's queue family, in the declared layout; alive until the fence.
-            let image = |image: vk::Image, format: vk::Format| -> dof_core::Result<ImageRef> {
+            // has written them since, so there is no write to name. They stay in that layout. The
+            // frame samples them in place through our views: no copy.
+            // SAFETY: our live RGBA32F and R32F images of this extent with SAMPLED usage, and live
+            // views of them, on the backend's queue family, in the declared layout; alive until the
+            // fence.
+            let image = |image: vk::Image, view: vk::ImageView, format: vk::Format| -> dof_core::Result<ImageRef> {
                 let desc =
                     ImageRef::describe(image, format, extent)?.in_layout(Layout::SHADER_READ_ONLY_OPTIMAL).after(COMPUTE, Access::empty());
-                Ok(unsafe { desc.build() })
+                Ok(unsafe { desc.sampled_through(view).build() })
             };
-            let (color, depth) = (image(colour_image, vk::Format::R32G32B32A32_SFLOAT)?, image(depth_image, vk::Format::R32_SFLOAT)?);
+            let color = image(colour_image, colour_view, vk::Format::R32G32B32A32_SFLOAT)?;
+            let depth = image(depth_image, depth_view, vk::Format::R32_SFLOAT)?;
             let input = FrameInput::Images { color, depth, encoding: DepthEncoding::Linear };
             (default_lens, input, "single-layer")
         };

@@ -161,12 +161,6 @@ mod cpu {
         pub fn mem(&self, binding: usize) -> CpuMem<'a> {
             CpuMem { words: self.buffers[binding], writable: self.read_only & (1 << binding) == 0 }
         }
-        /// A sampled image's texels.
-        #[inline]
-        pub fn texels(&self, binding: usize) -> crate::texels::Packed<CpuMem<'a>> {
-            let [width, format] = self.image_layouts[binding];
-            crate::texels::Packed { words: CpuMem { words: self.buffers[binding], writable: false }, width, format }
-        }
     }
 }
 #[cfg(not(target_arch = "spirv"))]

@@ -86,6 +86,16 @@ impl<L: Load> Texels for Packed<L> {
     }
 }
 
+#[cfg(not(target_arch = "spirv"))]
+impl<'a> crate::exec::CpuDispatch<'a> {
+    /// The texels of the sampled image at `binding`, as the CPU backend binds it.
+    #[inline]
+    pub fn texels(&self, binding: usize) -> Packed<crate::exec::CpuMem<'a>> {
+        let [width, format] = self.image_layouts[binding];
+        Packed { words: crate::exec::CpuMem { words: self.buffers[binding], writable: false }, width, format }
+    }
+}
+
 /// A colour image a kernel samples (WGSL `texture_2d<f32>`).
 #[cfg(target_arch = "spirv")]
 pub type ColorImage = spirv_std::Image!(2D, type=f32, sampled=true, depth=false);

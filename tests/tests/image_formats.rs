@@ -469,110 +469,6 @@ fn a_depth_attachment_described_by_layout_alone_is_waited_for() {
     assert_no_messages(r.finish(), "when the renderer destroyed its device");
 }
 
-/// The share of a 1280x720 multi-layer frame that bringing an RGBA16F colour and a D32 depth image
-/// in takes (the two copies and the conversion kernel), from the frame's own per-command times.
-fn input_share(times: &[dof::backend::CommandTime]) -> (f64, f64) {
-    let input: f64 = times.iter().filter(|t| t.label.starts_with("frame/input")).map(|t| t.ms).sum();
-    let total: f64 = times.iter().map(|t| t.ms).sum();
-    for stage in ["frame/input-color", "frame/input-depth", "frame/input"] {
-        assert!(times.iter().any(|t| t.label == stage && t.ms.is_finite() && t.ms >= 0.0), "{stage} not timed: {times:?}");
-    }
-    (input, total)
-}
-
-const COST: [u32; 2] = [1280, 720];
-
-fn cost_context(b: &mut dyn Backend) -> Box<dyn DofContext> {
-    let mut desc = ContextDesc::new(Extent::new(COST[0], COST[1], 1), MethodOptions::default());
-    desc.image_io = true;
-    (registry::method(METHOD).unwrap().create)(b, &desc).unwrap()
-}
-
-fn cost_texels() -> (Vec<u32>, Vec<u32>) {
-    let pixels = (COST[0] * COST[1]) as usize;
-    let color = (0..pixels).flat_map(|i| [f32_to_f16(0.5 + (i % 7) as f32) | (f32_to_f16(1.0) << 16), f32_to_f16(2.0)]).collect();
-    let depth = (0..pixels).map(|i| (0.005 + 0.2 * (i % 97) as f32 / 97.0).to_bits()).collect();
-    (color, depth)
-}
-
-/// A measurement (run with `--ignored --nocapture`): prints the input's share of the frame.
-#[test]
-#[ignore]
-fn image_input_cost_at_720p_on_the_cpu() {
-    let mut cpu = CpuBackend::new();
-    let mut ctx = cost_context(&mut cpu);
-    let out = cpu.create_buffer(3 * (COST[0] * COST[1]) as u64, "out").unwrap();
-    let (color_texels, depth_texels) = cost_texels();
-    let color = cpu.create_image(ImageFormat::Rgba16Float, COST).unwrap();
-    let depth = cpu.create_image(ImageFormat::D32Float, COST).unwrap();
-    cpu.write_image(&color, &color_texels).unwrap();
-    cpu.write_image(&depth, &depth_texels).unwrap();
-    let f = Frame {
-        width: COST[0],
-        height: COST[1],
-        lens: dof::stress::test_lens(0.01),
-        input: FrameInput::Images { color, depth, encoding: DepthEncoding::Reversed { near: 0.1, far: f32::INFINITY } },
-        output: FrameOutput::Buffer(RgbBuffer(out)),
-    };
-    for run in 0..3 {
-        ctx.record(&mut cpu, &f).unwrap();
-        let (input, total) = input_share(&cpu.submit().unwrap());
-        println!("cpu 1280x720 run {run}: image input {input:.2} ms of {total:.2} ms ({:.1}%)", 100.0 * input / total);
-    }
-    ctx.destroy(&mut cpu);
-}
-
-/// As above on the Vulkan device (lavapipe here), recorded into a renderer's command buffer.
-#[test]
-#[ignore]
-fn image_input_cost_at_720p_on_vulkan() {
-    let Some(mut r) = Renderer::new() else { return };
-    // SAFETY: as in the tests above.
-    let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
-    let mut ctx = cost_context(&mut vk);
-    let out = vk.create_buffer(3 * (COST[0] * COST[1]) as u64, "out").unwrap();
-    let (color_texels, depth_texels) = cost_texels();
-    let (color_image, depth_image) = (r.image(ImageFormat::Rgba16Float, COST), r.image(ImageFormat::D32Float, COST));
-    let (color_staging, depth_staging) = (r.host_buffer(4 * color_texels.len() as u64), r.host_buffer(4 * depth_texels.len() as u64));
-    Renderer::write(&color_staging, &color_texels);
-    Renderer::write(&depth_staging, &depth_texels);
-    let ro = (vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL, vk::PipelineStageFlags::FRAGMENT_SHADER, vk::AccessFlags::SHADER_READ);
-    r.begin();
-    r.upload_image(&color_staging, color_image, ImageFormat::Rgba16Float, COST, ro.0, ro.1, ro.2);
-    r.upload_image(&depth_staging, depth_image, ImageFormat::D32Float, COST, ro.0, ro.1, ro.2);
-    r.submit_and_wait();
-    let describe = |image, format: vk::Format| {
-        // SAFETY: the renderer's live images, with transfer usage, in SHADER_READ_ONLY_OPTIMAL.
-        unsafe { ImageRef::describe(image, format, COST).unwrap().in_layout(ro.0).build() }
-    };
-    let f = Frame {
-        width: COST[0],
-        height: COST[1],
-        lens: dof::stress::test_lens(0.01),
-        input: FrameInput::Images {
-            color: describe(color_image, vk::Format::R16G16B16A16_SFLOAT),
-            depth: describe(depth_image, vk::Format::D32_SFLOAT),
-            encoding: DepthEncoding::Reversed { near: 0.1, far: f32::INFINITY },
-        },
-        output: FrameOutput::Buffer(RgbBuffer(out)),
-    };
-    for run in 0..3 {
-        r.begin();
-        // SAFETY: the renderer's command buffer is recording, outside a render pass.
-        unsafe { vk.begin_external(r.cb) }.unwrap();
-        ctx.record(&mut vk, &f).unwrap();
-        vk.end_external().unwrap();
-        r.submit_and_wait();
-        let times = vk.take_external_times().unwrap().expect("the frame completed");
-        let (input, total) = input_share(&times);
-        println!("{} 1280x720 run {run}: image input {input:.2} ms of {total:.2} ms ({:.1}%)", vk.device_name(), 100.0 * input / total);
-    }
-    ctx.destroy(&mut vk);
-    vk.destroy_buffer(out);
-    drop(vk);
-    assert_no_messages(r.finish(), "in the measurement");
-}
-
 /// A wgpu texture of `format` for an [`ImageFormat`] of the cases (the D24 formats as wgpu's
 /// `Depth24Plus` ones, which read back as f32 depths).
 fn wgpu_format(format: ImageFormat) -> wgpu::TextureFormat {
@@ -702,9 +598,10 @@ fn wgpu_textures(device: &wgpu::Device, queue: &wgpu::Queue, case: &Case) -> (wg
     (color, depth)
 }
 
-/// Every case through wgpu: the renderer's own textures (colour uploaded, depth written by a pass,
-/// rows not a multiple of 256 bytes copied row by row, the two `Depth24Plus` formats read by a
-/// kernel), each frame recorded into the renderer's own encoder with nothing made, submitted or
+/// Every case through wgpu: the renderer's own textures (colour uploaded, depth written by a pass),
+/// sampled in place where both have TEXTURE_BINDING usage (the depth formats' cases), else copied
+/// (the R32F depth's cases, whose textures lack it: rows not a multiple of 256 bytes copied row by
+/// row), each frame recorded into the renderer's own encoder with nothing made, submitted or
 /// read back. The depths read back are the intended ones (an f32 depth bit for bit, a 24-bit one
 /// within its step), and the frame equals the CPU backend's from stand-in images holding the same
 /// words, within 1e-4 relative; one frame also writes the renderer's RGBA16F texture, equal to the

@@ -105,16 +105,22 @@ pub enum RunnerInput {
     /// A colour and a depth image, as a renderer hands in its own (`FrameInput::Images`): the
     /// image flattened ([`LayeredImage::flattened`]) into an RGBA16F colour image and a D32 depth
     /// image of reversed depth with an infinite far plane, images the backend makes
-    /// ([`Backend::create_image`]). The frame copies them in and converts them each time, so
-    /// its stages `frame/input-color`, `frame/input-depth` and `frame/input` time that path.
+    /// ([`Backend::create_image`]). The frame reads them in place where the backend samples them
+    /// (stage `frame/input`).
     Images,
+    /// The same images, described without their views ([`ImageRef::copied`]): the frame copies
+    /// them into its buffers, then converts them (stages `frame/input-color`, `frame/input-depth`
+    /// and `frame/input`).
+    CopiedImages,
 }
 
-/// The stand-in images of a runner fed [`RunnerInput::Images`].
+/// The stand-in images of a runner fed images ([`RunnerInput::Images`], [`RunnerInput::CopiedImages`]).
 #[derive(Clone, Copy, Debug)]
 struct ImageInput {
     color: ImageRef,
     depth: ImageRef,
+    /// Frames describe them without their views.
+    copied: bool,
 }
 
 /// One context of a registry method and the buffers its frames go through, made once for frames
@@ -140,8 +146,8 @@ impl Runner {
         Self::fed(backend, method, options, image, RunnerInput::Layers)
     }
 
-    /// As [`Runner::new`], its frames fed as `input` says; with [`RunnerInput::Images`] the
-    /// context takes one layer and image I/O, and the images are made here.
+    /// As [`Runner::new`], its frames fed as `input` says; fed images, the context takes one layer
+    /// and image I/O, and the images are made here.
     pub fn fed(
         backend: &mut dyn Backend,
         method: &MethodInfo,
@@ -150,24 +156,24 @@ impl Runner {
         input: RunnerInput,
     ) -> Result<Self> {
         let (w, h) = (image.width, image.height);
-        let layers = if input == RunnerInput::Images { 1 } else { image.max_layers };
+        let fed_layers = input == RunnerInput::Layers;
+        let layers = if fed_layers { image.max_layers } else { 1 };
         if w == 0 || h == 0 || layers == 0 {
             return Err(Error::InvalidArgument(format!("{} needs a non-empty image, got {w}x{h} with {layers} layers", method.name)));
         }
         let extent = Extent::new(w, h, layers);
         // Splatting holds a word a fragment for the footprints of an area-integrated input.
         let mut options = options.clone();
-        let fed_layers = input == RunnerInput::Layers;
         if fed_layers {
             options.splat.footprint_side = options.splat.footprint_side.max(image.footprint_grid());
         }
         // The context checks the extent (and refuses) before any buffer of the input is made.
         let mut desc = ContextDesc::new(extent, options);
-        desc.image_io = input == RunnerInput::Images;
+        desc.image_io = !fed_layers;
         let ctx = (method.create)(backend, &desc)?;
         let images = match input {
             RunnerInput::Layers => None,
-            RunnerInput::Images => match ImageInput::new(backend, image) {
+            RunnerInput::Images | RunnerInput::CopiedImages => match ImageInput::new(backend, image, input == RunnerInput::CopiedImages) {
                 Ok(images) => Some(images),
                 Err(e) => {
                     ctx.destroy(backend);
@@ -338,12 +344,13 @@ impl Runner {
 }
 
 impl ImageInput {
-    /// The images for frames of `image`'s size.
-    fn new(backend: &mut dyn Backend, image: &LayeredImage) -> Result<Self> {
+    /// The images for frames of `image`'s size, described to frames without their views where
+    /// `copied`.
+    fn new(backend: &mut dyn Backend, image: &LayeredImage, copied: bool) -> Result<Self> {
         let size = [image.width, image.height];
         let color = backend.create_image(ImageFormat::Rgba16Float, size)?;
         match backend.create_image(ImageFormat::D32Float, size) {
-            Ok(depth) => Ok(ImageInput { color, depth }),
+            Ok(depth) => Ok(ImageInput { color, depth, copied }),
             Err(e) => {
                 backend.destroy_image(&color);
                 Err(e)
@@ -374,7 +381,11 @@ impl ImageInput {
             width: image.width,
             height: image.height,
             lens,
-            input: FrameInput::Images { color: self.color, depth: self.depth, encoding },
+            input: if self.copied {
+                FrameInput::Images { color: self.color.copied(), depth: self.depth.copied(), encoding }
+            } else {
+                FrameInput::Images { color: self.color, depth: self.depth, encoding }
+            },
             output: FrameOutput::Buffer(out),
         })
     }

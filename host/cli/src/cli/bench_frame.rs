@@ -87,11 +87,11 @@ pub struct FrameArgs {
     /// each): splatting then spreads every fragment from its pixel's centre.
     #[arg(long)]
     no_footprints: bool,
-    /// Where the frames come from: `layers`, the multi-layer image in slot buffers, or `images`,
-    /// it flattened into an RGBA16F colour and a D32 (reversed, infinite far plane) depth image
-    /// that the frame copies in and converts every frame, as a renderer's images are (its stages
-    /// `frame/input-color`, `frame/input-depth` and `frame/input` time that; the method then sees
-    /// one layer).
+    /// Where the frames come from: `layers`, the multi-layer image in slot buffers; `images`, it
+    /// flattened into an RGBA16F colour and a D32 (reversed, infinite far plane) depth image that
+    /// the frame reads in place every frame, as a renderer's images are (stage `frame/input`; the
+    /// method then sees one layer); or `copied-images`, the same images copied into the context's
+    /// buffers first (stages `frame/input-color` and `frame/input-depth` too).
     #[arg(long, value_enum, default_value_t = InputArg::Layers)]
     input: InputArg,
     /// Time only the frame's span (one timestamp pair a frame on Vulkan): no command gets a pair
@@ -103,7 +103,10 @@ pub struct FrameArgs {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 enum InputArg {
     Layers,
+    /// Colour and depth images the frame reads in place.
     Images,
+    /// The same images, copied into the context's buffers first.
+    CopiedImages,
 }
 
 /// The largest frame edge `bench frame` takes (that of 4K and beyond; the contexts check the
@@ -144,7 +147,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         None => {
             let layered = view.layers(b, args.subsamples, !args.no_footprints)?;
             let image = match (args.input, method.reads) {
-                (InputArg::Images, _) | (_, Reads::AllLayers) => layered,
+                (InputArg::Images | InputArg::CopiedImages, _) | (_, Reads::AllLayers) => layered,
                 (_, Reads::FrontLayer) => layered.front_layer(),
             };
             let m = if args.one_shot {
@@ -153,10 +156,11 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
                 let input = match args.input {
                     InputArg::Layers => RunnerInput::Layers,
                     InputArg::Images => RunnerInput::Images,
+                    InputArg::CopiedImages => RunnerInput::CopiedImages,
                 };
                 framed(b, method, &image, input, &view.lens, &options, warmup, args.frames, args.out.as_deref())?
             };
-            let layers = if args.input == InputArg::Images { 1 } else { image.max_layers };
+            let layers = if args.input == InputArg::Layers { image.max_layers } else { 1 };
             (m, [image.width, image.height], layers)
         }
     };
@@ -188,6 +192,7 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
             "input": match args.input {
                 InputArg::Layers => "layers",
                 InputArg::Images => "images",
+                InputArg::CopiedImages => "copied-images",
             },
             "path": if args.one_shot { "one-shot" } else if args.orbit.is_some() { "frame-api+device-peel" } else { "frame-api" },
             "orbit_deg": args.orbit,
@@ -250,6 +255,8 @@ pub fn run(args: &FrameArgs) -> anyhow::Result<()> {
         } else if args.orbit.is_some() {
             "frame API, layers peeled on the device every frame"
         } else if args.input == InputArg::Images {
+            "frame API, colour and depth images read in place every frame"
+        } else if args.input == InputArg::CopiedImages {
             "frame API, colour and depth images copied in every frame"
         } else {
             "frame API"
@@ -507,8 +514,8 @@ fn check_view_flags(args: &FrameArgs) -> anyhow::Result<()> {
     if let Some(r) = args.aperture_radius.filter(|r| !(r.is_finite() && *r >= 0.0)) {
         anyhow::bail!("--aperture-radius must be a finite number >= 0, got {r}");
     }
-    if args.input == InputArg::Images && (args.orbit.is_some() || args.one_shot) {
-        anyhow::bail!("--input images feeds the frame API's image inputs; it does not combine with --orbit or --one-shot");
+    if args.input != InputArg::Layers && (args.orbit.is_some() || args.one_shot) {
+        anyhow::bail!("--input images and copied-images feed the frame API's image inputs; they do not combine with --orbit or --one-shot");
     }
     if args.orbit.is_some() && args.one_shot {
         anyhow::bail!("--orbit peels on the device inside the frame API; it does not combine with --one-shot");

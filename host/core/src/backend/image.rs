@@ -248,6 +248,12 @@ impl ImageRef {
         self.handle
     }
 
+    /// The same image without its view: a frame copies it into the context's buffers instead of
+    /// sampling it in place (to measure the copy, or where a view must not be used).
+    pub fn copied(self) -> ImageRef {
+        ImageRef { view: 0, ..self }
+    }
+
     /// Whether kernels can read the image in place (it has a view to sample it through); a frame
     /// copies an image without one.
     pub fn sampled(&self) -> bool {

@@ -299,22 +299,34 @@ impl WgpuBackend {
         Ok(Pipeline { pipeline, layout })
     }
 
-    /// Records one dispatch of `kernel`, direct (`groups`) or indirect (`args` at a word offset).
+    /// Records one dispatch of `kernel`, direct (`groups`) or indirect (`args` at a word offset),
+    /// bound to `buffers` and the textures it samples, `images` (each in binding order).
     fn record_dispatch(
         &mut self,
         kernel: &'static KernelDesc,
         groups: Groups,
         buffers: &[BufferId],
+        images: &[ImageRef],
         push: &[u32],
         label: &str,
     ) -> Result<()> {
         let bound: Vec<wgpu::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.buffer.clone())).collect::<Result<_>>()?;
+        let views: Vec<wgpu::TextureView> = images.iter().map(|image| self.sampled_view(image)).collect::<Result<_>>()?;
         let (layout, pipeline) = {
             let p = self.pipeline(kernel)?;
             (p.layout.clone(), p.pipeline.clone())
         };
-        let entries: Vec<wgpu::BindGroupEntry> =
-            bound.iter().enumerate().map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() }).collect();
+        let (mut bound_iter, mut views_iter) = (bound.iter(), views.iter());
+        let entries: Vec<wgpu::BindGroupEntry> = (0..kernel.bindings)
+            .filter_map(|binding| {
+                let resource = if kernel.images & (1 << binding) != 0 {
+                    wgpu::BindingResource::TextureView(views_iter.next()?)
+                } else {
+                    bound_iter.next()?.as_entire_binding()
+                };
+                Some(wgpu::BindGroupEntry { binding, resource })
+            })
+            .collect();
         let bind_group =
             self.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout: &layout, entries: &entries });
         let immediates: Vec<u8> = bytemuck::cast_slice(push).iter().copied().take(kernel.push_bytes.next_multiple_of(4) as usize).collect();
@@ -515,11 +527,33 @@ impl Backend for WgpuBackend {
 
     fn dispatch(&mut self, kernel: &'static KernelDesc, groups: [u32; 3], buffers: &[BufferId], push: &[u32], label: &str) -> Result<()> {
         check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), 0, push.len())?;
-        self.record_dispatch(kernel, Groups::Direct(groups), buffers, push, label)?;
+        self.record_dispatch(kernel, Groups::Direct(groups), buffers, &[], push, label)?;
         if groups.contains(&0) {
             self.counters.empty_dispatches += 1;
         }
         Ok(())
+    }
+
+    fn dispatch_images(
+        &mut self,
+        kernel: &'static KernelDesc,
+        groups: [u32; 3],
+        images: &[ImageRef],
+        buffers: &[BufferId],
+        push: &[u32],
+        label: &str,
+    ) -> Result<()> {
+        check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), images.len(), push.len())?;
+        images.iter().try_for_each(|image| self.check_texture_sample(image))?;
+        self.record_dispatch(kernel, Groups::Direct(groups), buffers, images, push, label)?;
+        if groups.contains(&0) {
+            self.counters.empty_dispatches += 1;
+        }
+        Ok(())
+    }
+
+    fn check_image_sample(&self, image: &ImageRef) -> Result<()> {
+        self.check_texture_sample(image)
     }
 
     fn dispatch_indirect(
@@ -534,7 +568,7 @@ impl Backend for WgpuBackend {
         check_dispatch(&self.limits, kernel, None, buffers.len(), 0, push.len())?;
         self.check_range(args, args_offset_words, 3)?;
         let args = self.buffer(args)?.buffer.clone();
-        self.record_dispatch(kernel, Groups::Indirect(args, args_offset_words * 4), buffers, push, label)
+        self.record_dispatch(kernel, Groups::Indirect(args, args_offset_words * 4), buffers, &[], push, label)
     }
 
     fn copy_image_to_buffer(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, label: &str) -> Result<()> {

@@ -14,6 +14,10 @@ pub(super) struct WgpuTexture {
     /// A depth texture's depth aspect, as the `texture_read` kernel binds it (made at import);
     /// `None` for a colour texture, which is copied.
     depth_view: Option<wgpu::TextureView>,
+    /// The view kernels sample it through in place (made at import): the depth aspect of a depth
+    /// texture, mip 0 and layer 0 of a colour texture with TEXTURE_BINDING usage; `None` for a
+    /// colour texture without that usage, which a frame copies.
+    sampled_view: Option<wgpu::TextureView>,
 }
 
 /// The texture formats a frame takes, as the [`ImageFormat`] their texels have in a buffer.
@@ -38,8 +42,9 @@ impl WgpuBackend {
     /// Makes the caller's 2D `texture` an image a frame reads or writes ([`crate::FrameInput::Images`],
     /// [`crate::FrameOutput::Image`]). Its [`ImageRef`]'s format is the layout its texels take in a
     /// buffer: its own, except that every depth format reads as `D32Float` (f32 depths, read by a
-    /// kernel). Mip level 0 and array layer 0 are used. A colour texture read needs COPY_SRC
-    /// usage, a depth texture TEXTURE_BINDING, an output COPY_DST; wgpu orders the frame's access
+    /// kernel). Mip level 0 and array layer 0 are used. An input is read in place where it has
+    /// TEXTURE_BINDING usage (a depth texture always needs it); a colour texture without it is
+    /// copied, and needs COPY_SRC. An output needs COPY_DST; wgpu orders the frame's access
     /// after the caller's earlier commands. The backend keeps a reference until
     /// [`WgpuBackend::forget_texture`].
     pub fn import_texture(&mut self, texture: &wgpu::Texture) -> Result<ImageRef> {
@@ -54,18 +59,23 @@ impl WgpuBackend {
                 texture.sample_count()
             )));
         }
-        let depth_view = format.is_depth_stencil_format().then(|| {
+        let view = |aspect| {
             texture.create_view(&wgpu::TextureViewDescriptor {
-                label: Some("dof depth"),
+                label: Some("dof input"),
                 dimension: Some(wgpu::TextureViewDimension::D2),
-                aspect: wgpu::TextureAspect::DepthOnly,
+                aspect,
                 base_mip_level: 0,
                 mip_level_count: Some(1),
                 base_array_layer: 0,
                 array_layer_count: Some(1),
                 ..Default::default()
             })
-        });
+        };
+        let depth_view = format.is_depth_stencil_format().then(|| view(wgpu::TextureAspect::DepthOnly));
+        let sampled_view = match &depth_view {
+            Some(depth) => Some(depth.clone()),
+            None => texture.usage().contains(wgpu::TextureUsages::TEXTURE_BINDING).then(|| view(wgpu::TextureAspect::All)),
+        };
         if depth_view.is_some() {
             // Made now, so that no frame makes it.
             self.depth_read_pipeline()?;
@@ -75,9 +85,10 @@ impl WgpuBackend {
         if slot == self.textures.len() {
             self.textures.push(None);
         }
-        self.textures[slot] = Some(WgpuTexture { texture: texture.clone(), depth_view });
+        let view = if sampled_view.is_some() { slot as u64 + 1 } else { 0 };
+        self.textures[slot] = Some(WgpuTexture { texture: texture.clone(), depth_view, sampled_view });
         let size = texture.size();
-        Ok(ImageRef::in_table(slot as u64 + 1, 0, image_format, [size.width, size.height]))
+        Ok(ImageRef::in_table(slot as u64 + 1, view, image_format, [size.width, size.height]))
     }
 
     /// Drops the backend's reference to an imported texture; its `ImageRef` is then refused.
@@ -101,6 +112,33 @@ impl WgpuBackend {
                 image.format
             ))),
         }
+    }
+
+    /// The checks of sampling a texture in place, made before anything is recorded.
+    pub(super) fn check_texture_sample(&self, image: &ImageRef) -> Result<()> {
+        image.check_sample("dispatch_images")?;
+        let texture = self.texture(image)?;
+        let size = texture.texture.size();
+        if image.extent[0] > size.width || image.extent[1] > size.height {
+            return Err(Error::InvalidArgument(format!(
+                "dispatch_images: {}x{} texels of a {}x{} texture",
+                image.extent[0], image.extent[1], size.width, size.height
+            )));
+        }
+        if texture.sampled_view.is_none() {
+            return Err(Error::InvalidArgument(format!(
+                "dispatch_images: the {:?} texture has no TEXTURE_BINDING usage (it has {:?})",
+                texture.texture.format(),
+                texture.texture.usage()
+            )));
+        }
+        Ok(())
+    }
+
+    /// The view a kernel samples `image` through.
+    pub(super) fn sampled_view(&self, image: &ImageRef) -> Result<wgpu::TextureView> {
+        self.check_texture_sample(image)?;
+        self.texture(image)?.sampled_view.clone().ok_or_else(|| Error::InvalidArgument("a texture without a sampled view".into()))
     }
 
     /// The checks of a copy (`into_image`: into the texture) made before anything is recorded.

@@ -18,7 +18,8 @@
 //!    its own pass after (copying the
 //!    result into a host-visible buffer), one submission with its own fence. Several multi-layer
 //!    frames with a changing focus distance, then one frame from the colour and depth images, which
-//!    the library samples in place through the renderer's views (`ImageDesc::sampled_through`).
+//!    the library samples in place through the renderer's views (`ImageDesc::sampled_through`);
+//!    every result is written in place into the renderer's output image, through its view.
 //!    Inside a frame the library allocates, submits and reads back nothing: checked on its counters.
 //! 5. Each result is compared with the same `SplatContext` run on the library's CPU backend from
 //!    the same slots (`dof-core` only), and the last multi-layer and the single-layer results are
@@ -423,6 +424,8 @@ struct FrameResult {
 /// The renderer's output image and the host-visible buffer it reads the image back through.
 struct Output {
     image: vk::Image,
+    /// The view the library writes the image through, in place.
+    view: vk::ImageView,
     readback: Buffer,
     extent: [u32; 2],
 }
@@ -481,14 +484,17 @@ fn run_frame(
     unsafe { r.device.cmd_clear_color_image(r.cb, output, Layout::TRANSFER_DST_OPTIMAL, &magenta, &range) };
 
     // The output as the library sees it: in TRANSFER_DST_OPTIMAL after our clear (a transfer write,
-    // which the library's copy must wait for and see), to be left in SHADER_READ_ONLY_OPTIMAL, where
-    // a renderer's next pass (tone mapping, UI) would sample it.
-    // SAFETY: our live RGBA32F image of this extent, TRANSFER_DST|TRANSFER_SRC|SAMPLED usage, on the
-    // backend's queue family, in the declared layout when the copy runs; alive until the fence.
+    // which the library's kernel must wait for; a pixel it did not write would keep the magenta),
+    // written in place through our view, to be left in SHADER_READ_ONLY_OPTIMAL, where a
+    // renderer's next pass (tone mapping, UI) would sample it.
+    // SAFETY: our live RGBA32F image of this extent, TRANSFER_DST|TRANSFER_SRC|SAMPLED|STORAGE
+    // usage, and a live view of it, on the backend's queue family, in the declared layout when the
+    // frame runs; alive until the fence.
     let out_ref = ImageRef::describe(output, vk::Format::R32G32B32A32_SFLOAT, extent)?
         .in_layout(Layout::TRANSFER_DST_OPTIMAL)
         .after(TRANSFER, Access::TRANSFER_WRITE)
-        .leave_in(shader_read);
+        .leave_in(shader_read)
+        .sampled_through(out.view);
     let out_ref = unsafe { out_ref.build() };
     let frame = Frame { width: extent[0], height: extent[1], lens, input, output: FrameOutput::Image(out_ref) };
 
@@ -581,8 +587,10 @@ fn main() -> Result<ExitCode> {
     let colour_image = r.image(vk::Format::R32G32B32A32_SFLOAT, extent, image_usage)?;
     let depth_image = r.image(vk::Format::R32_SFLOAT, extent, image_usage)?;
     let (colour_view, depth_view) = (r.view(colour_image, vk::Format::R32G32B32A32_SFLOAT)?, r.view(depth_image, vk::Format::R32_SFLOAT)?);
+    let output_image = r.image(vk::Format::R32G32B32A32_SFLOAT, extent, image_usage | vk::ImageUsageFlags::STORAGE)?;
     let output = Output {
-        image: r.image(vk::Format::R32G32B32A32_SFLOAT, extent, image_usage)?,
+        image: output_image,
+        view: r.view(output_image, vk::Format::R32G32B32A32_SFLOAT)?,
         readback: r.buffer(16 * pixels, vk::BufferUsageFlags::TRANSFER_DST, true)?,
         extent,
     };

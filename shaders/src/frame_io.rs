@@ -15,13 +15,14 @@
 //!   and one depth (1 word) a pixel: the front-to-back "over" of the pixel's slots over black
 //!   ([`Composite`]; an opaque front slot's colour bit for bit) at the front slot's depth, black at
 //!   infinite depth where a pixel has no slot: the input of the single-layer gathering methods.
-//! - `frame_to_rgba` (one invocation per pixel): the methods' RGB result (3 f32 words a pixel) as
-//!   RGBA32F or RGBA16F with alpha 1, ready to copy into the caller's image.
+//! - `frame_to_rgba32f_image`, `frame_to_rgba16f_image` (one invocation per pixel): the methods' RGB
+//!   result (3 f32 words a pixel) written into the caller's RGBA32F or RGBA16F image with alpha 1,
+//!   in place (a storage image).
+//! - `frame_to_rgba`: the same into a buffer, packed as the image's copy takes it.
 
 use crate::exec::{Group, Load, Mem};
-use crate::half::f32_to_f16;
 use crate::slot::{self, Slot};
-use crate::texels::{self, Packed, Texels};
+use crate::texels::{self, Packed, Texels, TexelsMut};
 use crate::wg::for_each_item;
 
 /// `depth_encoding`: planar view depth as it is.
@@ -147,20 +148,27 @@ pub fn front_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &FrameIoParams, fragm
     });
 }
 
-pub fn to_rgba_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &FrameIoParams, rgb: R, mut rgba: M) {
-    for_each_item(g, p.width * p.height, |i| {
-        let c = [rgb.load(3 * i), rgb.load(3 * i + 1), rgb.load(3 * i + 2)];
-        if p.color_words == 2 {
-            let h = |w: u32| f32_to_f16(f32::from_bits(w));
-            rgba.store(2 * i, h(c[0]) | (h(c[1]) << 16));
-            rgba.store(2 * i + 1, h(c[2]) | (f32_to_f16(1.0) << 16));
-        } else {
-            rgba.store(4 * i, c[0]);
-            rgba.store(4 * i + 1, c[1]);
-            rgba.store(4 * i + 2, c[2]);
-            rgba.store(4 * i + 3, 1.0f32.to_bits());
+/// The RGB result as an RGBA image with alpha 1 (written in place, or into a buffer:
+/// [`to_rgba_pass`]). A closure-free grid-stride loop, as [`from_images_pass`].
+pub fn to_image_pass<G: Group, R: Load, T: TexelsMut>(g: &mut G, p: &FrameIoParams, rgb: R, mut out: T) {
+    let n = p.width * p.height;
+    let stride = g.num_workgroups()[0] * g.size();
+    let lanes = g.invocations();
+    let mut base = g.workgroup_id()[0] * g.size();
+    while base < n {
+        let mut i = base + lanes.start;
+        while i < n && i < base + lanes.end {
+            let c = |k: u32| f32::from_bits(rgb.load(3 * i + k));
+            out.set_texel(i % p.width, i / p.width, [c(0), c(1), c(2), 1.0]);
+            i += 1;
         }
-    });
+        base += stride;
+    }
+}
+
+/// [`to_image_pass`] into a buffer the image is then copied from, packed as RGBA32F or RGBA16F.
+pub fn to_rgba_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &FrameIoParams, rgb: R, rgba: M) {
+    to_image_pass(g, p, rgb, Packed { words: rgba, width: p.width, format: color_texels(p) })
 }
 
 kernel!(
@@ -176,12 +184,20 @@ kernel!(
     FRONT = frame_front [256] (FrameIoParams) { read fragments, read counts, color, depth } => front_pass
 );
 kernel!(
-    /// The RGB result as RGBA32F or RGBA16F with alpha 1.
+    /// The RGB result as RGBA32F or RGBA16F with alpha 1, into a buffer.
     TO_RGBA = frame_to_rgba [256] (FrameIoParams) { read rgb, rgba } => to_rgba_pass
+);
+kernel!(
+    /// The RGB result written in place into an RGBA32F image, alpha 1.
+    TO_RGBA32F_IMAGE = frame_to_rgba32f_image [256] (FrameIoParams) { read rgb, rgba32f_image out } => to_image_pass
+);
+kernel!(
+    /// The RGB result written in place into an RGBA16F image, alpha 1.
+    TO_RGBA16F_IMAGE = frame_to_rgba16f_image [256] (FrameIoParams) { read rgb, rgba16f_image out } => to_image_pass
 );
 
 #[cfg(not(target_arch = "spirv"))]
-pub const KERNELS: [&crate::KernelDesc; 4] = [&FROM_TEXTURES, &FROM_IMAGES, &FRONT, &TO_RGBA];
+pub const KERNELS: [&crate::KernelDesc; 6] = [&FROM_TEXTURES, &FROM_IMAGES, &FRONT, &TO_RGBA, &TO_RGBA32F_IMAGE, &TO_RGBA16F_IMAGE];
 
 /// The depth-buffer value of view depth `z` under `p`'s encoding (the inverse of [`view_depth`]):
 /// `z` itself for linear depth, +inf for `z` beyond the far plane or not finite (nothing a depth

@@ -31,11 +31,17 @@ pub struct KernelDesc {
     /// body can only load them; the CPU backend also faults on a write to one, and the Vulkan
     /// backend's barriers count them as reads, not writes.
     pub read_only: u32,
-    /// The bindings that are sampled images, not storage buffers, as a mask: those declared
-    /// `texture` (a colour image) or `depth_texture` (a depth image's depth aspect).
+    /// The bindings that are images, not storage buffers, as a mask: those declared `texture` (a
+    /// colour image) or `depth_texture` (a depth image's depth aspect), sampled, and the storage
+    /// images of `storage_images`.
     pub images: u32,
     /// Those of `images` declared `depth_texture` (WGSL binds them as `texture_depth_2d`).
     pub depth_images: u32,
+    /// Those of `images` the kernel writes, storage images declared `rgba32f_image` or
+    /// `rgba16f_image` (the others it samples).
+    pub storage_images: u32,
+    /// Those of `storage_images` declared `rgba16f_image`.
+    pub half_images: u32,
     /// Size of the push constants in bytes.
     pub push_bytes: u32,
     /// Workgroup memory the kernel declares, in bytes (checked against the device limit).
@@ -128,7 +134,9 @@ pub const fn binding_mask(which: &[bool]) -> u32 {
 /// the mask of the `read` bindings.
 /// A binding marked `texture` or `depth_texture` is a sampled image (a colour image, or a depth
 /// image's depth aspect) and reaches the body as [`Texels`](crate::texels::Texels): fetched on the
-/// GPU, decoded from the CPU backend's packed image on the CPU (`KernelDesc::images`).
+/// GPU, decoded from the CPU backend's packed image on the CPU (`KernelDesc::images`). One marked
+/// `rgba32f_image` or `rgba16f_image` is a storage image the kernel writes, a
+/// [`TexelsMut`](crate::texels::TexelsMut) (`KernelDesc::storage_images`).
 /// The body is called as `body(&mut group, &params, &mut shared, bindings...)`; without `shared`, as
 /// `body(&mut group, &params, bindings...)`, the bindings in declaration order.
 #[macro_export]
@@ -151,6 +159,12 @@ macro_rules! kernel {
     };
     (@parse [$($decl:tt)*] [$($acc:tt)*] depth_texture $b:ident $(, $($rest:tt)*)?) => {
         $crate::kernel!(@parse [$($decl)*] [$($acc)* [depth_texture $b]] $($($rest)*)?);
+    };
+    (@parse [$($decl:tt)*] [$($acc:tt)*] rgba32f_image $b:ident $(, $($rest:tt)*)?) => {
+        $crate::kernel!(@parse [$($decl)*] [$($acc)* [rgba32f_image $b]] $($($rest)*)?);
+    };
+    (@parse [$($decl:tt)*] [$($acc:tt)*] rgba16f_image $b:ident $(, $($rest:tt)*)?) => {
+        $crate::kernel!(@parse [$($decl)*] [$($acc)* [rgba16f_image $b]] $($($rest)*)?);
     };
     (@parse [$($decl:tt)*] [$($acc:tt)*] $b:ident $(, $($rest:tt)*)?) => {
         $crate::kernel!(@parse [$($decl)*] [$($acc)* [write $b]] $($($rest)*)?);
@@ -194,6 +208,20 @@ macro_rules! kernel {
             [$($ns)*] $($rest)*);
     };
     (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
+        [$n:tt $($ns:tt)*] [rgba32f_image $b:ident] $($rest:tt)*) => {
+        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+            [$($acc)* #[spirv(descriptor_set = 0, binding = $n)] $b: &$crate::texels::Rgba32fImage,]
+            [$($arg)* $b,]
+            [$($ns)*] $($rest)*);
+    };
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
+        [$n:tt $($ns:tt)*] [rgba16f_image $b:ident] $($rest:tt)*) => {
+        $crate::kernel!(@gpu [$threads] $entry ($params) $body [$($sh)*] [$($sh_arg)*]
+            [$($acc)* #[spirv(descriptor_set = 0, binding = $n)] $b: &$crate::texels::Rgba16fImage,]
+            [$($arg)* $b,]
+            [$($ns)*] $($rest)*);
+    };
+    (@gpu [$threads:tt] $entry:ident ($params:ty) $body:ident [$($sh:tt)*] [$($sh_arg:tt)*] [$($acc:tt)*] [$($arg:tt)*]
         [$($ns:tt)*]) => {
         #[cfg(target_arch = "spirv")]
         #[spirv_std::spirv(compute(threads($threads)))]
@@ -219,14 +247,23 @@ macro_rules! kernel {
     (@is_read read) => { true };
     (@is_read texture) => { true };
     (@is_read depth_texture) => { true };
-    (@is_read write) => { false };
+    (@is_read $mode:ident) => { false };
     (@is_image texture) => { true };
     (@is_image depth_texture) => { true };
+    (@is_image rgba32f_image) => { true };
+    (@is_image rgba16f_image) => { true };
     (@is_image $mode:ident) => { false };
     (@is_depth depth_texture) => { true };
     (@is_depth $mode:ident) => { false };
+    (@is_storage rgba32f_image) => { true };
+    (@is_storage rgba16f_image) => { true };
+    (@is_storage $mode:ident) => { false };
+    (@is_half rgba16f_image) => { true };
+    (@is_half $mode:ident) => { false };
     (@cpu_bind texture $d:ident $b:ident) => { $d.texels($b) };
     (@cpu_bind depth_texture $d:ident $b:ident) => { $d.texels($b) };
+    (@cpu_bind rgba32f_image $d:ident $b:ident) => { $d.texels_mut($b) };
+    (@cpu_bind rgba16f_image $d:ident $b:ident) => { $d.texels_mut($b) };
     (@cpu_bind $mode:ident $d:ident $b:ident) => { $d.mem($b) };
 
     (@cpu $(#[$doc:meta])* $desc:ident $entry:ident [$threads:tt] ($params:ty) ($n:expr) $body:ident
@@ -267,6 +304,8 @@ macro_rules! kernel {
                 read_only: $crate::kernel::binding_mask(&[$($crate::kernel!(@is_read $mode)),*]),
                 images: $crate::kernel::binding_mask(&[$($crate::kernel!(@is_image $mode)),*]),
                 depth_images: $crate::kernel::binding_mask(&[$($crate::kernel!(@is_depth $mode)),*]),
+                storage_images: $crate::kernel::binding_mask(&[$($crate::kernel!(@is_storage $mode)),*]),
+                half_images: $crate::kernel::binding_mask(&[$($crate::kernel!(@is_half $mode)),*]),
                 push_bytes: core::mem::size_of::<$params>() as u32,
                 shared_bytes: 4 * ($n) as u32,
                 cpu,

@@ -1,15 +1,16 @@
-//! Images a kernel reads in place, texel by texel: a renderer's colour and depth attachments bound
-//! as sampled images on the GPU ([`ColorImage`], [`DepthImage`]; declared `texture` and
-//! `depth_texture` in [`kernel!`](crate::kernel!)), and on the CPU the backend's images, packed
-//! into words as a copy packs them ([`Packed`]).
+//! Images a kernel reads or writes in place, texel by texel: a renderer's colour and depth
+//! attachments bound as sampled images on the GPU ([`ColorImage`], [`DepthImage`]; declared
+//! `texture` and `depth_texture` in [`kernel!`](crate::kernel!)), its output bound as a storage
+//! image (`Rgba32fImage`, `Rgba16fImage`; `rgba32f_image`, `rgba16f_image`), and on the CPU the
+//! backend's images, packed into words as a copy packs them ([`Packed`]).
 //!
 //! A texel is what a sampler's fetch returns: four floats, the format's missing components 0 (alpha
 //! 1). [`decode`] turns packed words into the same values, exactly for every format here: the half
 //! and small floats widen to f32 exactly, and a 24-bit unorm depth is its integer over 2^24 − 1,
 //! rounded once.
 
-use crate::exec::Load;
-use crate::half::{b10g11r11_to_f32, f16_to_f32};
+use crate::exec::{Load, Mem};
+use crate::half::{b10g11r11_to_f32, f16_to_f32, f32_to_f16};
 
 /// Packed formats (`Packed::format`): `R32G32B32A32_SFLOAT`, 4 words a texel.
 pub const RGBA32F: u32 = 0;
@@ -52,6 +53,22 @@ pub fn decode(format: u32, words: &impl Load, i: u32) -> [f32; 4] {
     }
 }
 
+/// Stores texel `i` of `words` in `format` ([`RGBA32F`] or [`RGBA16F`], the formats a kernel
+/// writes), as a storage-image write stores it: f32 bits, or each component rounded to the nearest
+/// half.
+#[inline]
+pub fn encode(format: u32, words: &mut impl Mem, i: u32, v: [f32; 4]) {
+    if format == RGBA16F {
+        words.store(2 * i, f32_to_f16(v[0]) | (f32_to_f16(v[1]) << 16));
+        words.store(2 * i + 1, f32_to_f16(v[2]) | (f32_to_f16(v[3]) << 16));
+    } else {
+        words.store(4 * i, v[0].to_bits());
+        words.store(4 * i + 1, v[1].to_bits());
+        words.store(4 * i + 2, v[2].to_bits());
+        words.store(4 * i + 3, v[3].to_bits());
+    }
+}
+
 /// One word as a one-word buffer (a single texel decoded: `decode(format, &Word(w), 0)`).
 pub struct Word(pub u32);
 
@@ -86,6 +103,19 @@ impl<L: Load> Texels for Packed<L> {
     }
 }
 
+/// A 2D image written texel by texel.
+pub trait TexelsMut {
+    /// Writes the texel at column `x`, row `y` (row 0 at the top), inside the image.
+    fn set_texel(&mut self, x: u32, y: u32, v: [f32; 4]);
+}
+
+impl<M: Mem> TexelsMut for Packed<M> {
+    #[inline]
+    fn set_texel(&mut self, x: u32, y: u32, v: [f32; 4]) {
+        encode(self.format, &mut self.words, y * self.width + x, v)
+    }
+}
+
 #[cfg(not(target_arch = "spirv"))]
 impl<'a> crate::exec::CpuDispatch<'a> {
     /// The texels of the sampled image at `binding`, as the CPU backend binds it.
@@ -93,6 +123,13 @@ impl<'a> crate::exec::CpuDispatch<'a> {
     pub fn texels(&self, binding: usize) -> Packed<crate::exec::CpuMem<'a>> {
         let [width, format] = self.image_layouts[binding];
         Packed { words: crate::exec::CpuMem { words: self.buffers[binding], writable: false }, width, format }
+    }
+
+    /// The texels of the storage image at `binding`, writable.
+    #[inline]
+    pub fn texels_mut(&self, binding: usize) -> Packed<crate::exec::CpuMem<'a>> {
+        let [width, format] = self.image_layouts[binding];
+        Packed { words: crate::exec::CpuMem { words: self.buffers[binding], writable: true }, width, format }
     }
 }
 
@@ -102,6 +139,35 @@ pub type ColorImage = spirv_std::Image!(2D, type=f32, sampled=true, depth=false)
 /// A depth image a kernel samples through its depth aspect (WGSL `texture_depth_2d`).
 #[cfg(target_arch = "spirv")]
 pub type DepthImage = spirv_std::Image!(2D, type=f32, sampled=true, depth=true);
+
+/// An RGBA32F image a kernel writes (WGSL `texture_storage_2d<rgba32float, write>`).
+#[cfg(target_arch = "spirv")]
+pub type Rgba32fImage = spirv_std::Image!(2D, format = rgba32f, sampled = false);
+/// An RGBA16F image a kernel writes (WGSL `texture_storage_2d<rgba16float, write>`).
+#[cfg(target_arch = "spirv")]
+pub type Rgba16fImage = spirv_std::Image!(2D, format = rgba16f, sampled = false);
+
+#[cfg(target_arch = "spirv")]
+impl TexelsMut for &Rgba32fImage {
+    #[inline]
+    fn set_texel(&mut self, x: u32, y: u32, v: [f32; 4]) {
+        // SAFETY: the coordinate lies inside the image (the caller's contract).
+        unsafe { self.write(spirv_std::glam::IVec2::new(x as i32, y as i32), spirv_std::glam::Vec4::from_array(v)) }
+    }
+}
+
+#[cfg(target_arch = "spirv")]
+impl TexelsMut for &Rgba16fImage {
+    #[inline]
+    fn set_texel(&mut self, x: u32, y: u32, v: [f32; 4]) {
+        // Rounded to the nearest half first, as `encode` rounds: a store may round to nearest or
+        // toward zero (Vulkan allows both), and of a value a half holds exactly, both store it.
+        let h = |c: f32| f16_to_f32(f32_to_f16(c));
+        let v = [h(v[0]), h(v[1]), h(v[2]), h(v[3])];
+        // SAFETY: as above.
+        unsafe { self.write(spirv_std::glam::IVec2::new(x as i32, y as i32), spirv_std::glam::Vec4::from_array(v)) }
+    }
+}
 
 // SPIR-V for Vulkan has no struct holding an image or a pointer to one, so the bound images
 // themselves are the texel sources (reached through references).

@@ -425,6 +425,84 @@ fn depth_and_colour_formats_give_the_frame_of_their_decoded_input_on_vulkan() {
     assert_no_messages(r.finish(), "when the renderer destroyed its device");
 }
 
+/// The result written into a renderer's RGBA32F and RGBA16F images in place (storage images,
+/// through views) equals, bit for bit, the result converted into a buffer and copied into them,
+/// and the frame written in place is the frame into a buffer, converted; validation stays silent.
+#[test]
+fn outputs_written_in_place_equal_the_copied_ones_on_vulkan() {
+    let Some(mut r) = Renderer::new() else { return };
+    // SAFETY: as in the tests above: the renderer's handles outlive the backend.
+    let mut vk = unsafe { VulkanBackend::from_raw(r.raw(), &RawOptions::default()) }.expect("from_raw");
+    let mut ctx = context(&mut vk);
+    let [fragments, counts, out, _] = buffers(&mut vk);
+    let case = cases()[0];
+    vk.write_buffer(fragments, 0, &decoded_input(&case)).unwrap();
+    let input = FrameInput::Layers { fragments: SlotBuffer::current(fragments), counts: CountBuffer(counts), layers: 1, footprint_side: 0 };
+    let pixels = (W * H) as usize;
+    let mut in_place_formats = 0;
+    for format in [ImageFormat::Rgba32Float, ImageFormat::Rgba16Float] {
+        use vk::ImageUsageFlags as U;
+        let usage = U::TRANSFER_SRC | U::TRANSFER_DST | U::STORAGE;
+        let images = [r.raw_image(format.vk_format(), [W, H], usage), r.raw_image(format.vk_format(), [W, H], usage)];
+        let view = r.sampled_view(images[0], format);
+        let describe = |image| {
+            ImageRef::describe(image, format.vk_format(), [W, H])
+                .unwrap()
+                .in_layout(vk::ImageLayout::UNDEFINED)
+                .leave_in(vk::ImageLayout::TRANSFER_SRC_OPTIMAL)
+        };
+        // SAFETY: the renderer's live images of this format and extent with storage and transfer
+        // usage, the view a live colour view of the first; their contents are discarded.
+        let (in_place, copied) = unsafe { (describe(images[0]).sampled_through(view).build(), describe(images[1]).build()) };
+        let stores = r.format_features(format.vk_format()).contains(vk::FormatFeatureFlags::STORAGE_IMAGE);
+        assert_eq!(vk.check_image_store(&in_place).is_ok(), stores, "{format}");
+        in_place_formats += stores as usize;
+        let staging = r.host_buffer(4 * 2 * in_place.words());
+        r.begin();
+        // SAFETY: the renderer's command buffer is recording, outside a render pass.
+        unsafe { vk.begin_external(r.cb) }.expect("begin_external");
+        for (image, _) in [(in_place, 0), (copied, 1)] {
+            ctx.record(&mut vk, &Frame { output: FrameOutput::Image(image), ..frame(input, out) })
+                .unwrap_or_else(|e| panic!("{format}: {e}"));
+        }
+        ctx.record(&mut vk, &frame(input, out)).unwrap();
+        vk.end_external().unwrap();
+        for (k, image) in images.into_iter().enumerate() {
+            let region = vk::BufferImageCopy::default()
+                .buffer_offset(4 * k as u64 * in_place.words())
+                .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
+                .image_extent(vk::Extent3D { width: W, height: H, depth: 1 });
+            // SAFETY: recording; the frames left the image in TRANSFER_SRC_OPTIMAL, visible to
+            // every later access; the region lies inside the staging buffer.
+            unsafe { r.device.cmd_copy_image_to_buffer(r.cb, image, vk::ImageLayout::TRANSFER_SRC_OPTIMAL, staging.buffer, &[region]) };
+        }
+        r.submit_and_wait();
+        let words = in_place.words() as usize;
+        let (a, b) = (Renderer::read(&staging, 0, words), Renderer::read(&staging, words, words));
+        let differing = a.iter().zip(&b).filter(|(x, y)| x != y).count();
+        assert_eq!(differing, 0, "{format}: the result written in place differs from the copied one in {differing} words");
+        let rgb = floats(&vk.read_buffer(out, 0, 3 * pixels as u64).unwrap());
+        let half = |v: f32| f16_to_f32(f32_to_f16(v));
+        for (i, c) in rgb.chunks(3).enumerate() {
+            let got = if format == ImageFormat::Rgba16Float {
+                let (rg, ba) = (a[2 * i], a[2 * i + 1]);
+                [f16_to_f32(rg & 0xffff), f16_to_f32(rg >> 16), f16_to_f32(ba & 0xffff), f16_to_f32(ba >> 16)]
+            } else {
+                [0, 1, 2, 3].map(|k| f32::from_bits(a[4 * i + k]))
+            };
+            let want = if format == ImageFormat::Rgba16Float { [half(c[0]), half(c[1]), half(c[2]), 1.0] } else { [c[0], c[1], c[2], 1.0] };
+            assert_eq!(got.map(f32::to_bits), want.map(f32::to_bits), "{format} pixel {i}");
+        }
+        assert_no_messages(r.messages(), &format!("writing {format}"));
+    }
+    eprintln!("{in_place_formats} of 2 output formats written in place");
+    assert!(in_place_formats > 0, "no output format written in place");
+    ctx.destroy(&mut vk);
+    [fragments, counts, out].into_iter().for_each(|id| vk.destroy_buffer(id));
+    drop(vk);
+    assert_no_messages(r.finish(), "when the renderer destroyed its device");
+}
+
 /// A renderer's depth prepass writes the depth attachment and hands it over described by layout
 /// alone (no `.after()`): the frame's copy still waits for that write, by the description's safe
 /// default (any earlier write) and the opening barrier of the library's recording (which covers

@@ -37,7 +37,7 @@ impl Access {
 }
 
 /// The accesses of a dispatch of `kernel` bound to `buffers` (its storage buffers, binding order)
-/// and sampling `images` (read), reading its workgroup counts from `indirect_args` where it is
+/// and `images` (read where it samples them, written where they are storage images), reading its workgroup counts from `indirect_args` where it is
 /// indirect.
 pub(crate) fn dispatch_accesses(
     kernel: &KernelDesc,
@@ -46,11 +46,15 @@ pub(crate) fn dispatch_accesses(
     indirect_args: Option<BufferId>,
 ) -> Vec<Access> {
     let buffer_bindings = (0..kernel.bindings).filter(|b| kernel.images & (1 << b) == 0);
+    let image_bindings = (0..kernel.bindings).filter(|b| kernel.images & (1 << b) != 0);
     buffers
         .iter()
         .zip(buffer_bindings)
         .map(|(&b, binding)| Access { resource: Resource::Buffer(b), writes: kernel.read_only & (1 << binding) == 0 })
-        .chain(images.iter().map(|image| Access { resource: Resource::Image(image.handle), writes: false }))
+        .chain(images.iter().zip(image_bindings).map(|(image, binding)| Access {
+            resource: Resource::Image(image.handle),
+            writes: kernel.storage_images & (1 << binding) != 0,
+        }))
         .chain(indirect_args.map(Access::read))
         .collect()
 }

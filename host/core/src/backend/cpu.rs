@@ -5,7 +5,7 @@
 
 use super::{
     Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageFormat, ImageRef, Limits, RetireQueue, SPAN,
-    check_dispatch,
+    check_dispatch, check_images,
 };
 use crate::error::{Error, Result};
 use dof_shaders::KernelDesc;
@@ -137,8 +137,9 @@ impl CpuBackend {
         Ok(&buffer[offset as usize..end as usize])
     }
 
-    /// Runs `kernel` bound to `buffers` and the sampled `images` (each binding as the kernel
-    /// declares it: a stand-in image's texels stand in its binding, with their layout).
+    /// Runs `kernel` bound to `buffers` and `images` (each binding as the kernel declares it: a
+    /// stand-in image's texels stand in its binding, with their layout, read-only unless the
+    /// kernel writes it).
     fn run(
         &mut self,
         kernel: &'static KernelDesc,
@@ -322,7 +323,7 @@ impl Backend for CpuBackend {
         label: &str,
     ) -> Result<()> {
         check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), images.len(), push.len())?;
-        images.iter().try_for_each(|image| self.check_image_sample(image))?;
+        check_images(self, kernel, images)?;
         self.run(kernel, groups, buffers, images, push, label)?;
         if groups.contains(&0) {
             self.counters.empty_dispatches += 1;
@@ -334,6 +335,12 @@ impl Backend for CpuBackend {
     fn check_image_sample(&self, image: &ImageRef) -> Result<()> {
         image.check_sample("dispatch_images")?;
         self.check_image_copy(image, false)
+    }
+
+    /// Its RGBA32F and RGBA16F stand-ins are written where they are.
+    fn check_image_store(&self, image: &ImageRef) -> Result<()> {
+        image.check_store("dispatch_images")?;
+        self.check_image_copy(image, true)
     }
 
     fn copy_image_to_buffer(&mut self, image: ImageRef, buffer: BufferId, offset_words: u64, label: &str) -> Result<()> {

@@ -260,6 +260,19 @@ impl ImageRef {
         self.view != 0
     }
 
+    /// What every backend checks before a kernel writes the image in place (a storage image): a
+    /// non-empty extent, a handle and a view, a colour format kernels write (RGBA32F or RGBA16F),
+    /// and (on Vulkan) a final layout.
+    pub(crate) fn check_store(&self, what: &str) -> Result<()> {
+        if self.view == 0 {
+            return Err(Error::InvalidArgument(format!("{what}: the {} image has no view to write it through", self.format)));
+        }
+        if !matches!(self.format, ImageFormat::Rgba32Float | ImageFormat::Rgba16Float) {
+            return Err(Error::InvalidArgument(format!("{what}: kernels write RGBA32F and RGBA16F images, not {}", self.format)));
+        }
+        self.check_copy(true, what)
+    }
+
     /// What every backend checks before a kernel samples the image: a non-empty extent, a handle
     /// and a view, and (on Vulkan) a layout with defined contents and a final layout.
     pub(crate) fn check_sample(&self, what: &str) -> Result<()> {
@@ -338,10 +351,11 @@ pub struct ImageDesc {
 
 #[cfg(feature = "vulkan")]
 impl ImageDesc {
-    /// A view of the image the frame's kernels sample it through, reading it in place instead of
+    /// A view of the image the frame's kernels read or write it through in place instead of
     /// copying it: a 2D view of mip level 0 and array layer 0, of the image's format, and for a
-    /// depth format of its depth aspect alone. The image then needs SAMPLED usage (and no
-    /// TRANSFER_SRC). An image read without a view is copied into the context's buffers first.
+    /// depth format of its depth aspect alone. An input then needs SAMPLED usage (and no
+    /// TRANSFER_SRC), an output STORAGE usage (and no TRANSFER_DST). An image without a view is
+    /// copied through the context's buffers.
     pub fn sampled_through(self, view: ash::vk::ImageView) -> Self {
         ImageDesc { view, ..self }
     }

@@ -248,11 +248,12 @@ pub trait Backend {
     ) -> Result<()> {
         draw_fallback(self, draw, args, buffers, target, size, push, label)
     }
-    /// Records `kernel` reading sampled images in place: `images` bind its image bindings
+    /// Records `kernel` reading or writing images in place: `images` bind its image bindings
     /// ([`KernelDesc::images`]) in order, `buffers` its storage buffers in order; otherwise as
-    /// [`Backend::dispatch`]. Every image must pass [`Backend::check_image_sample`]. On Vulkan the
-    /// images go into a read layout for the dispatch and into their final layouts after it, as a
-    /// copy's do. Backends that sample no images refuse it.
+    /// [`Backend::dispatch`]. An image it samples must pass [`Backend::check_image_sample`], one it
+    /// writes ([`KernelDesc::storage_images`]) [`Backend::check_image_store`]. On Vulkan the images
+    /// go into a read layout (GENERAL for a written one) for the dispatch and into their final
+    /// layouts after it, as a copy's do. Backends that bind no images refuse it.
     fn dispatch_images(
         &mut self,
         kernel: &'static KernelDesc,
@@ -263,8 +264,8 @@ pub trait Backend {
         label: &str,
     ) -> Result<()> {
         let _ = (groups, buffers, push, label);
-        images.iter().try_for_each(|image| self.check_image_sample(image))?;
-        Err(Error::InvalidArgument(format!("the {} backend samples no images: kernel {} needs it", self.kind(), kernel.entry)))
+        check_images(self, kernel, images)?;
+        Err(Error::InvalidArgument(format!("the {} backend binds no images: kernel {} needs it", self.kind(), kernel.entry)))
     }
     /// Whether a kernel can sample `image` in place ([`Backend::dispatch_images`]): the checks made
     /// before a frame records anything. A frame copies an image that fails them (one without a
@@ -272,6 +273,13 @@ pub trait Backend {
     fn check_image_sample(&self, image: &ImageRef) -> Result<()> {
         let _ = image;
         Err(Error::InvalidArgument(format!("the {} backend samples no images in place", self.kind())))
+    }
+    /// Whether a kernel can write `image` in place (a storage image, [`Backend::dispatch_images`]):
+    /// the checks made before a frame records anything. A frame copies its result into an image
+    /// that fails them. Backends that write no images in place refuse.
+    fn check_image_store(&self, image: &ImageRef) -> Result<()> {
+        let _ = image;
+        Err(Error::InvalidArgument(format!("the {} backend writes no images in place", self.kind())))
     }
     /// Copies the whole of `image` into `buffer[offset_words ..]` (packed as [`ImageFormat`] says);
     /// recorded like `fill`. `offset_words` must be a multiple of the format's words per pixel.
@@ -485,6 +493,15 @@ pub(crate) fn check_dispatch(
         }
     }
     Ok(())
+}
+
+/// Checks `images` against `kernel`'s image bindings in order: those it writes with
+/// [`Backend::check_image_store`], those it samples with [`Backend::check_image_sample`].
+pub(crate) fn check_images<B: Backend + ?Sized>(backend: &B, kernel: &KernelDesc, images: &[ImageRef]) -> Result<()> {
+    let bindings = (0..kernel.bindings).filter(|b| kernel.images & (1 << b) != 0);
+    images.iter().zip(bindings).try_for_each(|(image, binding)| {
+        if kernel.storage_images & (1 << binding) != 0 { backend.check_image_store(image) } else { backend.check_image_sample(image) }
+    })
 }
 
 /// Creates buffers of the given sizes, runs `f` with them, and destroys them whether `f` succeeded

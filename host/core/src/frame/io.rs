@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 use crate::extent::Extent;
 use dof_shaders::frame_io::{
     DEPTH_F32, DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_STANDARD, DEPTH_UNORM24, FROM_IMAGES, FROM_TEXTURES, FRONT, FrameIoParams, TO_RGBA,
-    frame_from_images, frame_front, frame_to_rgba,
+    TO_RGBA16F_IMAGE, TO_RGBA32F_IMAGE, frame_from_images, frame_front, frame_to_rgba,
 };
 use dof_shaders::lens::ThinLens;
 use dof_shaders::radiance::{COUNT_CLAMPED, ClampCountParams, radiance_count_clamped};
@@ -205,7 +205,7 @@ const OUTPUT_FORMATS: [ImageFormat; 2] = [ImageFormat::Rgba32Float, ImageFormat:
 
 /// Checks what every context checks: a non-empty size within the maximum, a valid lens, buffers
 /// large enough, images at least of the frame's size, of a supported format, that the backend can
-/// copy, sane depth planes. (The commands themselves are checked as they are captured, [`super::recording`].)
+/// read or write in place or else copy, sane depth planes. (The commands themselves are checked as they are captured, [`super::recording`].)
 pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: Extent, io: Option<&ImageIo>) -> Result<()> {
     owned.check(backend)?;
     let layers = f.layer_count();
@@ -235,7 +235,11 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
             buffers.extend([("fragments", fragments.0, per_slot * pixels * layers as u64), ("counts", counts.0, pixels)])
         }
         FrameInput::Images { color, depth, encoding } => {
-            images.extend([("colour", color, COLOR_FORMATS.as_slice(), false), ("depth", depth, DEPTH_FORMATS.as_slice(), false)]);
+            let in_place = inputs_in_place(backend, f, color, depth);
+            images.extend([
+                ("colour", color, COLOR_FORMATS.as_slice(), false, in_place),
+                ("depth", depth, DEPTH_FORMATS.as_slice(), false, in_place),
+            ]);
             if depth.format.is_depth() && encoding == DepthEncoding::Linear {
                 return Err(Error::InvalidArgument(format!(
                     "a {} depth attachment holds depth-buffer values in [0, 1]: give its planes with DepthEncoding::Standard \
@@ -254,7 +258,7 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
     }
     match f.output {
         FrameOutput::Buffer(out) => buffers.push(("output", out.0, 3 * pixels)),
-        FrameOutput::Image(out) => images.push(("output", out, OUTPUT_FORMATS.as_slice(), true)),
+        FrameOutput::Image(out) => images.push(("output", out, OUTPUT_FORMATS.as_slice(), true, output_in_place(backend, f, out))),
     }
     for (what, id, words) in buffers {
         let have = backend.buffer_words(id)?;
@@ -265,7 +269,7 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
     if !images.is_empty() && io.is_none() {
         return Err(Error::InvalidArgument("image inputs and outputs need a context created with `image_io`".into()));
     }
-    for (what, image, formats, into_image) in images {
+    for (what, image, formats, into_image, in_place) in images {
         if !formats.contains(&image.format) {
             return Err(Error::InvalidArgument(format!(
                 "the {what} image is {}; it must be one of {}",
@@ -279,9 +283,22 @@ pub(crate) fn check_frame(backend: &dyn Backend, f: &Frame, owned: &Owned, max: 
                 image.extent[0], image.extent[1], f.width, f.height
             )));
         }
-        backend.check_image_copy(&image.top_left(f.width, f.height), into_image)?;
+        if !in_place {
+            backend.check_image_copy(&image.top_left(f.width, f.height), into_image)?;
+        }
     }
     Ok(())
+}
+
+/// Whether the frame reads its input images in place: the backend samples both (else it copies
+/// both).
+fn inputs_in_place(backend: &dyn Backend, f: &Frame, color: ImageRef, depth: ImageRef) -> bool {
+    [color, depth].iter().all(|image| backend.check_image_sample(&image.top_left(f.width, f.height)).is_ok())
+}
+
+/// Whether the frame writes its output image in place (else it copies its result into it).
+fn output_in_place(backend: &dyn Backend, f: &Frame, image: ImageRef) -> bool {
+    backend.check_image_store(&image.top_left(f.width, f.height)).is_ok()
 }
 
 /// The pixels of a single-layer context's largest frame (`what` names it in errors), refusing an
@@ -457,7 +474,7 @@ pub(crate) fn record_input(backend: &mut dyn Backend, f: &Frame, io: Option<&Ima
             let (color, depth) = (color.top_left(f.width, f.height), depth.top_left(f.width, f.height));
             let params = io_params(f, Some(color.format), Some(depth.format), 1, encoding);
             let groups = groups_for(&FROM_IMAGES, f.width as u64 * f.height as u64);
-            if backend.check_image_sample(&color).is_ok() && backend.check_image_sample(&depth).is_ok() {
+            if inputs_in_place(backend, f, color, depth) {
                 // Read in place: the kernel samples the caller's images through their views.
                 let bindings = [io.fragments, io.counts];
                 backend.dispatch_images(&FROM_TEXTURES, groups, &[color, depth], &bindings, &push_words(&params), "frame/input")?;
@@ -527,13 +544,20 @@ pub(crate) fn output_buffer(f: &Frame, io: Option<&ImageIo>) -> Result<BufferId>
     }
 }
 
-/// Records what brings an RGB result into an image output: the conversion and the copy.
+/// Records what brings an RGB result into an image output: written in place where the backend
+/// writes the image (it has a view), else converted into a buffer and copied.
 pub(crate) fn record_output(backend: &mut dyn Backend, f: &Frame, io: Option<&ImageIo>) -> Result<()> {
     if let (FrameOutput::Image(image), Some(io)) = (f.output, io) {
+        let image = image.top_left(f.width, f.height);
         let params = io_params(f, Some(image.format), None, 1, DepthEncoding::Linear);
         let groups = groups_for(&TO_RGBA, f.width as u64 * f.height as u64);
+        if output_in_place(backend, f, image) {
+            // Written in place: the kernel stores into the caller's image through its view.
+            let kernel = if image.format == ImageFormat::Rgba16Float { &TO_RGBA16F_IMAGE } else { &TO_RGBA32F_IMAGE };
+            return backend.dispatch_images(kernel, groups, &[image], &[io.fragments], &push_words(&params), "frame/output");
+        }
         backend.run(frame_to_rgba::Bindings { rgb: io.fragments, rgba: io.color }, groups, &params, "frame/output")?;
-        backend.copy_buffer_to_image(io.color, 0, image.top_left(f.width, f.height), "frame/output")?;
+        backend.copy_buffer_to_image(io.color, 0, image, "frame/output")?;
     }
     Ok(())
 }

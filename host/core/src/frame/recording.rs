@@ -20,7 +20,7 @@ use super::io::Frame;
 use crate::backend::access::{copy_accesses, dispatch_accesses, draw_accesses};
 use crate::backend::{
     Access, Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, Hazards, ImageRef, Limits, Resource, RetireQueue,
-    check_dispatch, check_draw,
+    check_dispatch, check_draw, check_images,
 };
 use crate::error::{Error, Result};
 use dof_shaders::{DrawDesc, KernelDesc};
@@ -352,7 +352,7 @@ impl Backend for Capture<'_> {
         label: &str,
     ) -> Result<()> {
         check_dispatch(self.inner.limits(), kernel, Some(groups), buffers.len(), images.len(), push.len())?;
-        images.iter().try_for_each(|image| self.inner.check_image_sample(image))?;
+        check_images(self.inner, kernel, images)?;
         self.buffers(buffers)?;
         let (buffers, images, push, label) = (buffers.to_vec(), images.to_vec(), push.to_vec(), label.to_string());
         self.commands.push(Command::Dispatch { kernel, groups: Groups::Direct(groups), buffers, images, push, label });
@@ -360,6 +360,9 @@ impl Backend for Capture<'_> {
     }
     fn check_image_sample(&self, image: &ImageRef) -> Result<()> {
         self.inner.check_image_sample(image)
+    }
+    fn check_image_store(&self, image: &ImageRef) -> Result<()> {
+        self.inner.check_image_store(image)
     }
     fn dispatch_indirect(
         &mut self,

@@ -14,7 +14,7 @@ use gpu_allocator::vulkan::{Allocation, AllocationCreateDesc, AllocationScheme, 
 /// One image of [`VulkanBackend::create_image`] and its memory.
 pub(super) struct OwnImage {
     image: vk::Image,
-    /// The view kernels sample it through (its depth aspect for a depth format).
+    /// The view kernels sample or write it through (its depth aspect for a depth format).
     view: vk::ImageView,
     allocation: Allocation,
     format: ImageFormat,
@@ -35,8 +35,8 @@ impl OwnImage {
 
 impl VulkanBackend {
     /// A device-local image of `format` and `extent` the backend owns, zeroed, with transfer
-    /// usage (copied from and into, as a renderer's images are), and sampled usage and a view where
-    /// the device samples the format: its [`ImageRef`] is in GENERAL with nothing to wait for, the
+    /// usage (copied from and into, as a renderer's images are), and sampled and storage usage and
+    /// a view where the device samples or writes the format in place: its [`ImageRef`] is in GENERAL with nothing to wait for, the
     /// state the backend's own copies leave it in. Freed by
     /// [`Backend::destroy_image`] or with the backend. Refused inside an external recording (it
     /// submits).
@@ -55,8 +55,14 @@ impl VulkanBackend {
         self.check_image_copy(&probe, true)?;
         self.check_image_copy(&probe, false)?;
         let sampled = self.check_image_sample(&probe).is_ok();
-        let usage = vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST;
-        let usage = if sampled { usage | vk::ImageUsageFlags::SAMPLED } else { usage };
+        let stored = self.check_image_store(&probe).is_ok();
+        let mut usage = vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST;
+        if sampled {
+            usage |= vk::ImageUsageFlags::SAMPLED;
+        }
+        if stored {
+            usage |= vk::ImageUsageFlags::STORAGE;
+        }
         let info = vk::ImageCreateInfo::default()
             .image_type(vk::ImageType::TYPE_2D)
             .format(format.vk_format())
@@ -89,7 +95,7 @@ impl VulkanBackend {
                 }
             };
             let view = device.bind_image_memory(image, allocation.memory(), allocation.offset()).vk("vkBindImageMemory").and_then(|()| {
-                if !sampled {
+                if !sampled && !stored {
                     return Ok(vk::ImageView::null());
                 }
                 let range = vk::ImageSubresourceRange::default().aspect_mask(format.copy_aspect()).level_count(1).layer_count(1);

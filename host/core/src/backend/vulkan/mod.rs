@@ -29,7 +29,7 @@ mod spirv;
 use super::access::{Access, Resource, copy_accesses, dispatch_accesses, draw_accesses};
 use super::{
     Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageFormat, ImageRef, Limits, RetireQueue, check_dispatch,
-    check_draw, draw_fallback,
+    check_draw, check_images, draw_fallback,
 };
 use crate::error::{Error, Result, VkContext};
 use ash::vk;
@@ -566,7 +566,7 @@ impl VulkanBackend {
         label: &str,
     ) -> Result<()> {
         check_dispatch(&self.info.limits, kernel, groups, buffers.len(), images.len(), push.len())?;
-        images.iter().try_for_each(|image| self.check_image_sample(image))?;
+        check_images(self, kernel, images)?;
         let bound: Vec<vk::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.handle)).collect::<Result<_>>()?;
         let args = match indirect {
             Some((id, offset)) => Some((self.range(id, offset, 3)?, offset * 4)),
@@ -577,16 +577,20 @@ impl VulkanBackend {
         let accessed = self.raw_accesses(&dispatch_accesses(kernel, buffers, images, indirect.map(|(id, _)| id)))?;
 
         let buffer_infos = buffer_infos(&bound);
-        let image_infos: Vec<vk::DescriptorImageInfo> = images
+        // Each image with whether the kernel writes it (a storage image), in binding order.
+        let image_bindings = (0..kernel.bindings).filter(|b| kernel.images & (1 << b) != 0);
+        let bound_images: Vec<(ImageRef, bool)> =
+            images.iter().zip(image_bindings).map(|(image, b)| (*image, kernel.storage_images & (1 << b) != 0)).collect();
+        let image_infos: Vec<vk::DescriptorImageInfo> = bound_images
             .iter()
-            .map(|image| {
+            .map(|&(image, written)| {
                 vk::DescriptorImageInfo::default()
                     .image_view(vk::ImageView::from_raw(image.view))
-                    .image_layout(sampled_layout(image.format))
+                    .image_layout(bound_layout(image.format, written))
             })
             .collect();
-        let writes = descriptor_writes(kernel.images, &buffer_infos, &image_infos);
-        let (acquire, release) = sampled_barriers(images);
+        let writes = descriptor_writes(kernel.images, kernel.storage_images, &buffer_infos, &image_infos);
+        let (acquire, release) = image_barriers(&bound_images);
         // Exactly the kernel's push constant bytes (rounded to whole words, as Vulkan requires).
         let push_bytes = kernel.push_bytes.div_ceil(4) as usize * 4;
         let push_data: &[u8] = &bytemuck::cast_slice::<u32, u8>(push)[..push_bytes];
@@ -625,6 +629,21 @@ impl VulkanBackend {
                 }
             }
         })
+    }
+
+    /// Refuses `format` where the device's optimally tiled images of it lack `feature` (`what` the
+    /// feature allows, for the error).
+    fn check_format_feature(&self, format: ImageFormat, feature: vk::FormatFeatureFlags, what: &str) -> Result<()> {
+        // SAFETY: a query on the live instance and the device's physical device.
+        let features = unsafe { self.instance.instance.get_physical_device_format_properties(self.physical, format.vk_format()) }
+            .optimal_tiling_features;
+        if !features.contains(feature) {
+            return Err(Error::InvalidArgument(format!(
+                "dispatch_images: {format} images cannot be {what} on {} (optimal tiling features {features:?})",
+                self.info.name
+            )));
+        }
+        Ok(())
     }
 
     /// Records a copy between the whole of `image` and `buffer[offset_words ..]`, with the image's
@@ -709,10 +728,12 @@ fn buffer_infos(bound: &[vk::Buffer]) -> Vec<vk::DescriptorBufferInfo> {
     bound.iter().map(|&buffer| vk::DescriptorBufferInfo::default().buffer(buffer).offset(0).range(vk::WHOLE_SIZE)).collect()
 }
 
-/// Push-descriptor writes of bindings `0..` in order: the sampled images (the bindings of the mask
-/// `images_at`, as `KernelDesc::images`) from `images`, the storage buffers from `buffers`.
+/// Push-descriptor writes of bindings `0..` in order: the images (the bindings of the mask
+/// `images_at`, as `KernelDesc::images`; storage images those of `storage_at`, the others sampled)
+/// from `images`, the storage buffers from `buffers`.
 fn descriptor_writes<'a>(
     images_at: u32,
+    storage_at: u32,
     buffers: &'a [vk::DescriptorBufferInfo],
     images: &'a [vk::DescriptorImageInfo],
 ) -> Vec<vk::WriteDescriptorSet<'a>> {
@@ -723,7 +744,9 @@ fn descriptor_writes<'a>(
             let write = vk::WriteDescriptorSet::default().dst_binding(binding);
             if images_at & (1 << binding) != 0 {
                 let info = images.next()?;
-                Some(write.descriptor_type(vk::DescriptorType::SAMPLED_IMAGE).image_info(std::slice::from_ref(info)))
+                let kind =
+                    if storage_at & (1 << binding) != 0 { vk::DescriptorType::STORAGE_IMAGE } else { vk::DescriptorType::SAMPLED_IMAGE };
+                Some(write.descriptor_type(kind).image_info(std::slice::from_ref(info)))
             } else {
                 let info = buffers.next()?;
                 Some(write.descriptor_type(vk::DescriptorType::STORAGE_BUFFER).buffer_info(std::slice::from_ref(info)))
@@ -732,15 +755,22 @@ fn descriptor_writes<'a>(
         .collect()
 }
 
-/// The layout a kernel samples an image of `format` in.
-fn sampled_layout(format: ImageFormat) -> vk::ImageLayout {
-    if format.is_depth() { vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL } else { vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL }
+/// The layout a kernel binds an image of `format` in: GENERAL where it writes it, else a read-only
+/// layout.
+fn bound_layout(format: ImageFormat, written: bool) -> vk::ImageLayout {
+    if written {
+        vk::ImageLayout::GENERAL
+    } else if format.is_depth() {
+        vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL
+    } else {
+        vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL
+    }
 }
 
-/// The barriers around a dispatch sampling `images`: from each image's last access (the caller's,
-/// or the backend's own copies) into its sampled layout, and from there into its final layout,
-/// visible to every later access.
-fn sampled_barriers(images: &[ImageRef]) -> (Vec<vk::ImageMemoryBarrier<'static>>, Vec<vk::ImageMemoryBarrier<'static>>) {
+/// The barriers around a dispatch binding `images` (each with whether it writes it): from each
+/// image's last access (the caller's, or the backend's own copies) into its bound layout, and from
+/// there into its final layout, the kernel's writes visible to every later access.
+fn image_barriers(images: &[(ImageRef, bool)]) -> (Vec<vk::ImageMemoryBarrier<'static>>, Vec<vk::ImageMemoryBarrier<'static>>) {
     let barrier = |image: &ImageRef, old, new| {
         vk::ImageMemoryBarrier::default()
             .old_layout(old)
@@ -752,13 +782,16 @@ fn sampled_barriers(images: &[ImageRef]) -> (Vec<vk::ImageMemoryBarrier<'static>
                 vk::ImageSubresourceRange::default().aspect_mask(image.format.layout_aspects()).level_count(1).layer_count(1),
             )
     };
-    let acquire = images.iter().map(|image| {
-        barrier(image, image.layout, sampled_layout(image.format))
+    let acquire = images.iter().map(|(image, written)| {
+        let access = if *written { vk::AccessFlags::SHADER_READ | vk::AccessFlags::SHADER_WRITE } else { vk::AccessFlags::SHADER_READ };
+        barrier(image, image.layout, bound_layout(image.format, *written))
             .src_access_mask(image.access | vk::AccessFlags::TRANSFER_WRITE)
-            .dst_access_mask(vk::AccessFlags::SHADER_READ)
+            .dst_access_mask(access)
     });
-    let release = images.iter().map(|image| {
-        barrier(image, sampled_layout(image.format), image.final_layout)
+    let release = images.iter().map(|(image, written)| {
+        let wrote = if *written { vk::AccessFlags::SHADER_WRITE } else { vk::AccessFlags::empty() };
+        barrier(image, bound_layout(image.format, *written), image.final_layout)
+            .src_access_mask(wrote)
             .dst_access_mask(vk::AccessFlags::MEMORY_READ | vk::AccessFlags::MEMORY_WRITE)
     });
     (acquire.collect(), release.collect())
@@ -989,16 +1022,12 @@ impl Backend for VulkanBackend {
 
     fn check_image_sample(&self, image: &ImageRef) -> Result<()> {
         image.check_sample("dispatch_images")?;
-        // SAFETY: a query on the live instance and the device's physical device.
-        let features = unsafe { self.instance.instance.get_physical_device_format_properties(self.physical, image.format.vk_format()) }
-            .optimal_tiling_features;
-        if !features.contains(vk::FormatFeatureFlags::SAMPLED_IMAGE) {
-            return Err(Error::InvalidArgument(format!(
-                "dispatch_images: {} images cannot be sampled on {} (optimal tiling features {features:?})",
-                image.format, self.info.name
-            )));
-        }
-        Ok(())
+        self.check_format_feature(image.format, vk::FormatFeatureFlags::SAMPLED_IMAGE, "sampled")
+    }
+
+    fn check_image_store(&self, image: &ImageRef) -> Result<()> {
+        image.check_store("dispatch_images")?;
+        self.check_format_feature(image.format, vk::FormatFeatureFlags::STORAGE_IMAGE, "written as storage images")
     }
 
     fn dispatch_indirect(
@@ -1044,7 +1073,7 @@ impl Backend for VulkanBackend {
         let mut accessed = self.raw_accesses(&draw_accesses(buffers, args, target))?;
         accessed.push((image.as_raw(), true));
         let infos = buffer_infos(&bound);
-        let writes = descriptor_writes(0, &infos, &[]);
+        let writes = descriptor_writes(0, 0, &infos, &[]);
         let push_bytes = draw.push_bytes.div_ceil(4) as usize * 4;
         let push_data: Vec<u8> = bytemuck::cast_slice::<u32, u8>(push)[..push_bytes].to_vec();
         let push_descriptor = &self.device.push_descriptor;

@@ -1,7 +1,7 @@
 //! One compute pipeline per kernel, created on first use from the kernel's own SPIR-V module: the
 //! project's (embedded, `crate::shaders::MODULES`) or one a caller added with
-//! [`super::VulkanBackend::add_modules`] (its own rust-gpu kernels). Storage buffers and sampled
-//! images are bound with push descriptors, so there are no descriptor pools or sets.
+//! [`super::VulkanBackend::add_modules`] (its own rust-gpu kernels). Storage buffers, sampled
+//! and storage images are bound with push descriptors, so there are no descriptor pools or sets.
 
 use super::spirv;
 use crate::error::{Error, Result, VkContext};
@@ -104,7 +104,9 @@ fn create(device: &ash::Device, kernel: &KernelDesc, words: &[u32], name: &str, 
         .map(|b| {
             vk::DescriptorSetLayoutBinding::default()
                 .binding(b)
-                .descriptor_type(if kernel.images & (1 << b) != 0 {
+                .descriptor_type(if kernel.storage_images & (1 << b) != 0 {
+                    vk::DescriptorType::STORAGE_IMAGE
+                } else if kernel.images & (1 << b) != 0 {
                     vk::DescriptorType::SAMPLED_IMAGE
                 } else {
                     vk::DescriptorType::STORAGE_BUFFER

@@ -18,7 +18,9 @@
 //! wgpu reports a misuse it catches through its error handler, not the call: the backend gathers
 //! those messages and fails the next `submit`, `read_buffer` or `write_buffer` with them.
 
-use super::{Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageRef, Limits, RetireQueue, check_dispatch};
+use super::{
+    Backend, BackendCounters, BackendId, BackendKind, BufferId, CommandTime, ImageRef, Limits, RetireQueue, check_dispatch, check_images,
+};
 use crate::error::{Error, Result};
 use dof_shaders::KernelDesc;
 use dof_shaders::fill::{FILL, FillParams, THREADS as FILL_THREADS};
@@ -544,7 +546,7 @@ impl Backend for WgpuBackend {
         label: &str,
     ) -> Result<()> {
         check_dispatch(&self.limits, kernel, Some(groups), buffers.len(), images.len(), push.len())?;
-        images.iter().try_for_each(|image| self.check_texture_sample(image))?;
+        check_images(self, kernel, images)?;
         self.record_dispatch(kernel, Groups::Direct(groups), buffers, images, push, label)?;
         if groups.contains(&0) {
             self.counters.empty_dispatches += 1;
@@ -640,7 +642,11 @@ impl Backend for WgpuBackend {
     }
 
     fn prepare(&mut self, kernels: &[&'static KernelDesc], draws: &[&'static dof_shaders::DrawDesc]) -> Result<()> {
-        for kernel in kernels.iter().copied().chain(draws.iter().flat_map(|d| [Some(d.fallback), d.fallback_prepass]).flatten()) {
+        // Kernels that write storage images are never run here (this backend writes no image in
+        // place: rust-gpu's storage images translate to read-write WGSL storage textures, which
+        // WebGPU has only for single-channel formats), so they get no pipeline.
+        let kernels = kernels.iter().copied().filter(|k| k.storage_images == 0);
+        for kernel in kernels.chain(draws.iter().flat_map(|d| [Some(d.fallback), d.fallback_prepass]).flatten()) {
             self.pipeline(kernel)?;
         }
         Ok(())

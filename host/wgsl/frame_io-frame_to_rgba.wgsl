@@ -41,41 +41,41 @@ fn function_() {
     var local_11: u32;
     var local_12: bool;
     var local_13: u32;
-    var local_14: bool;
-    var local_15: u32;
+    var local_14: u32;
+    var local_15: f32;
     var local_16: u32;
-    var local_17: u32;
-    var local_18: f32;
-    var local_19: u32;
-    var local_20: f32;
+    var local_17: f32;
+    var local_18: u32;
+    var local_19: f32;
+    var local_20: u32;
     var local_21: u32;
-    var local_22: f32;
+    var local_22: i32;
     var local_23: u32;
-    var local_24: u32;
+    var local_24: i32;
     var local_25: u32;
-    var local_26: i32;
+    var local_26: u32;
     var local_27: u32;
-    var local_28: i32;
+    var local_28: u32;
     var local_29: u32;
     var local_30: u32;
-    var local_31: u32;
+    var local_31: i32;
     var local_32: u32;
-    var local_33: u32;
+    var local_33: i32;
     var local_34: u32;
-    var local_35: i32;
+    var local_35: u32;
     var local_36: u32;
-    var local_37: i32;
+    var local_37: u32;
     var local_38: u32;
     var local_39: u32;
     var local_40: u32;
     var local_41: u32;
-    var local_42: u32;
+    var local_42: i32;
     var local_43: u32;
-    var local_44: u32;
+    var local_44: i32;
     var local_45: u32;
-    var local_46: i32;
+    var local_46: u32;
     var local_47: u32;
-    var local_48: i32;
+    var local_48: u32;
     var local_49: u32;
     var local_50: u32;
     var local_51: u32;
@@ -85,622 +85,601 @@ fn function_() {
     var local_55: u32;
     var local_56: u32;
     var local_57: u32;
-    var local_58: u32;
+    var local_58: bool;
     var local_59: u32;
-    var local_60: u32;
-    var local_61: u32;
-    var local_62: bool;
-    var local_63: u32;
     var phi_92_: u32;
-    var phi_666_: bool;
+    var phi_663_: bool;
     var phi_106_: u32;
     var phi_117_: u32;
-    var phi_258_: bool;
-    var phi_259_: bool;
-    var phi_237_: bool;
-    var phi_238_: bool;
-    var phi_242_: u32;
+    var phi_255_: bool;
+    var phi_256_: bool;
+    var phi_234_: bool;
+    var phi_235_: bool;
+    var phi_239_: u32;
+    var phi_260_: u32;
+    var phi_261_: u32;
+    var phi_262_: u32;
     var phi_263_: u32;
-    var phi_264_: u32;
-    var phi_265_: u32;
-    var phi_266_: u32;
-    var phi_267_: bool;
-    var phi_271_: u32;
-    var phi_272_: u32;
-    var phi_273_: bool;
-    var phi_354_: bool;
-    var phi_355_: bool;
-    var phi_333_: bool;
-    var phi_334_: bool;
-    var phi_338_: u32;
+    var phi_264_: bool;
+    var phi_268_: u32;
+    var phi_269_: u32;
+    var phi_270_: bool;
+    var phi_351_: bool;
+    var phi_352_: bool;
+    var phi_330_: bool;
+    var phi_331_: bool;
+    var phi_335_: u32;
+    var phi_356_: u32;
+    var phi_357_: u32;
+    var phi_358_: u32;
     var phi_359_: u32;
-    var phi_360_: u32;
-    var phi_361_: u32;
-    var phi_362_: u32;
-    var phi_363_: bool;
-    var phi_367_: u32;
-    var phi_368_: u32;
-    var phi_369_: bool;
-    var phi_462_: bool;
-    var phi_463_: bool;
-    var phi_441_: bool;
-    var phi_442_: bool;
-    var phi_446_: u32;
+    var phi_360_: bool;
+    var phi_364_: u32;
+    var phi_365_: u32;
+    var phi_366_: bool;
+    var phi_459_: bool;
+    var phi_460_: bool;
+    var phi_438_: bool;
+    var phi_439_: bool;
+    var phi_443_: u32;
+    var phi_464_: u32;
+    var phi_465_: u32;
+    var phi_466_: u32;
     var phi_467_: u32;
-    var phi_468_: u32;
-    var phi_469_: u32;
-    var phi_470_: u32;
-    var phi_471_: bool;
-    var phi_475_: u32;
-    var phi_476_: u32;
-    var phi_477_: bool;
-    var phi_632_: u32;
+    var phi_468_: bool;
+    var phi_472_: u32;
+    var phi_473_: u32;
+    var phi_474_: bool;
+    var phi_629_: u32;
     var phi_118_: u32;
-    var phi_633_: bool;
-    var phi_649_: bool;
-    var phi_698_: bool;
+    var phi_630_: bool;
+    var phi_646_: bool;
+    var phi_695_: bool;
     var phi_107_: u32;
-    var phi_697_: bool;
+    var phi_694_: bool;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e101 = global;
-            local = _e101;
-            let _e102 = global_1;
-            let _e103 = global_2;
+            let _e97 = global;
+            local = _e97;
+            let _e98 = global_1;
+            let _e99 = global_2;
             local_1 = arrayLength((&global_3.member));
             local_2 = arrayLength((&global_4.member));
-            local_3 = _e102.x;
-            local_4 = _e103.x;
-            let _e113 = global_5.member.member;
-            local_5 = _e113;
-            let _e116 = global_5.member.member_2;
-            local_6 = _e116;
-            if (_e116 == 1u) {
+            local_3 = _e98.x;
+            local_4 = _e99.x;
+            let _e109 = global_5.member.member;
+            local_5 = _e109;
+            let _e112 = global_5.member.member_2;
+            local_6 = _e112;
+            if (_e112 == 1u) {
                 phi_92_ = 2u;
             } else {
-                let _e118 = local_6;
-                phi_92_ = select(0u, 1u, (_e118 == 2u));
+                let _e114 = local_6;
+                phi_92_ = select(0u, 1u, (_e114 == 2u));
             }
-            let _e122 = phi_92_;
-            local_7 = _e122;
-            let _e125 = global_5.member.member_1;
-            let _e126 = local_5;
-            local_8 = (_e126 * _e125);
-            let _e128 = local_4;
-            local_9 = (_e128 * 256u);
-            let _e130 = local;
-            local_10 = (_e130 + 1u);
-            let _e132 = local_3;
-            phi_666_ = false;
-            phi_106_ = (_e132 * 256u);
+            let _e118 = phi_92_;
+            local_7 = _e118;
+            let _e121 = global_5.member.member_1;
+            let _e122 = local_5;
+            local_8 = (_e122 * _e121);
+            let _e124 = local_4;
+            local_9 = (_e124 * 256u);
+            let _e126 = local;
+            local_10 = (_e126 + 1u);
+            let _e128 = local_3;
+            phi_663_ = false;
+            phi_106_ = (_e128 * 256u);
             loop {
-                let _e135 = phi_666_;
-                let _e137 = phi_106_;
-                local_11 = _e137;
-                let _e138 = local_11;
-                let _e139 = local_8;
-                let _e140 = (_e138 < _e139);
-                local_12 = _e140;
-                if _e140 {
-                    let _e141 = local_11;
-                    let _e142 = local;
-                    phi_117_ = (_e141 + _e142);
+                let _e131 = phi_663_;
+                let _e133 = phi_106_;
+                local_11 = _e133;
+                let _e134 = local_11;
+                let _e135 = local_8;
+                let _e136 = (_e134 < _e135);
+                local_12 = _e136;
+                if _e136 {
+                    let _e137 = local_11;
+                    let _e138 = local;
+                    phi_117_ = (_e137 + _e138);
                     loop {
-                        let _e145 = phi_117_;
-                        local_13 = _e145;
-                        let _e146 = local_13;
-                        let _e147 = local_8;
-                        if (_e146 < _e147) {
-                            let _e149 = local_11;
-                            let _e150 = local_10;
-                            let _e152 = local_13;
-                            let _e153 = (_e152 < (_e149 + _e150));
-                            if _e153 {
-                                let _e154 = local_5;
-                                let _e155 = (_e154 == 0u);
-                                local_14 = _e155;
-                                if _e155 {
-                                    phi_649_ = true;
+                        let _e141 = phi_117_;
+                        local_13 = _e141;
+                        let _e142 = local_13;
+                        let _e143 = local_8;
+                        if (_e142 < _e143) {
+                            let _e145 = local_11;
+                            let _e146 = local_10;
+                            let _e148 = local_13;
+                            let _e149 = (_e148 < (_e145 + _e146));
+                            if _e149 {
+                                let _e150 = local_5;
+                                if (_e150 == 0u) {
+                                    phi_646_ = true;
                                     break;
                                 }
-                                let _e156 = local_13;
-                                let _e157 = local_5;
-                                local_15 = (_e156 % _e157);
-                                let _e159 = local_14;
-                                if _e159 {
-                                    phi_649_ = true;
-                                    break;
-                                }
-                                let _e160 = local_13;
-                                let _e161 = local_5;
-                                local_16 = (_e160 / _e161);
-                                let _e163 = local_13;
-                                let _e164 = (3u * _e163);
-                                local_17 = _e164;
-                                let _e165 = local_1;
-                                if (_e164 < _e165) {
+                                let _e152 = local_13;
+                                let _e153 = (3u * _e152);
+                                local_14 = _e153;
+                                let _e154 = local_1;
+                                if (_e153 < _e154) {
                                 } else {
-                                    phi_649_ = true;
+                                    phi_646_ = true;
                                     break;
                                 }
-                                let _e167 = local_17;
-                                let _e170 = global_3.member[_e167];
-                                local_18 = bitcast<f32>(_e170);
-                                let _e172 = local_17;
-                                let _e173 = (_e172 + 1u);
-                                local_19 = _e173;
-                                let _e174 = local_1;
-                                if (_e173 < _e174) {
+                                let _e156 = local_14;
+                                let _e159 = global_3.member[_e156];
+                                local_15 = bitcast<f32>(_e159);
+                                let _e161 = local_14;
+                                let _e162 = (_e161 + 1u);
+                                local_16 = _e162;
+                                let _e163 = local_1;
+                                if (_e162 < _e163) {
                                 } else {
-                                    phi_649_ = true;
+                                    phi_646_ = true;
                                     break;
                                 }
-                                let _e176 = local_19;
-                                let _e179 = global_3.member[_e176];
-                                local_20 = bitcast<f32>(_e179);
-                                let _e181 = local_17;
-                                let _e182 = (_e181 + 2u);
-                                local_21 = _e182;
-                                let _e183 = local_1;
-                                if (_e182 < _e183) {
+                                let _e165 = local_16;
+                                let _e168 = global_3.member[_e165];
+                                local_17 = bitcast<f32>(_e168);
+                                let _e170 = local_14;
+                                let _e171 = (_e170 + 2u);
+                                local_18 = _e171;
+                                let _e172 = local_1;
+                                if (_e171 < _e172) {
                                 } else {
-                                    phi_649_ = true;
+                                    phi_646_ = true;
                                     break;
                                 }
-                                let _e185 = local_21;
-                                let _e188 = global_3.member[_e185];
-                                local_22 = bitcast<f32>(_e188);
-                                let _e190 = local_16;
-                                let _e191 = local_5;
-                                let _e193 = local_15;
-                                local_23 = ((_e190 * _e191) + _e193);
-                                let _e195 = local_7;
-                                if (_e195 == 1u) {
-                                    let _e230 = local_23;
-                                    local_24 = (2u * _e230);
-                                    let _e232 = local_18;
-                                    let _e233 = bitcast<u32>(_e232);
-                                    let _e236 = ((_e233 >> bitcast<u32>(16i)) & 32768u);
-                                    local_25 = _e236;
-                                    let _e240 = bitcast<i32>(((_e233 >> bitcast<u32>(23i)) & 255u));
-                                    local_26 = _e240;
-                                    local_27 = (_e233 & 8388607u);
-                                    if (_e240 == 255i) {
-                                        let _e321 = local_25;
-                                        let _e323 = local_27;
-                                        phi_271_ = ((_e321 | 31744u) | select(512u, 0u, (_e323 == 0u)));
-                                        phi_272_ = u32();
-                                        phi_273_ = true;
+                                let _e174 = local_18;
+                                let _e177 = global_3.member[_e174];
+                                local_19 = bitcast<f32>(_e177);
+                                let _e179 = local_7;
+                                if (_e179 == 1u) {
+                                    let _e214 = local_13;
+                                    local_20 = (2u * _e214);
+                                    let _e216 = local_15;
+                                    let _e217 = bitcast<u32>(_e216);
+                                    let _e220 = ((_e217 >> bitcast<u32>(16i)) & 32768u);
+                                    local_21 = _e220;
+                                    let _e224 = bitcast<i32>(((_e217 >> bitcast<u32>(23i)) & 255u));
+                                    local_22 = _e224;
+                                    local_23 = (_e217 & 8388607u);
+                                    if (_e224 == 255i) {
+                                        let _e305 = local_21;
+                                        let _e307 = local_23;
+                                        phi_268_ = ((_e305 | 31744u) | select(512u, 0u, (_e307 == 0u)));
+                                        phi_269_ = u32();
+                                        phi_270_ = true;
                                     } else {
-                                        let _e243 = local_26;
-                                        let _e244 = (_e243 + -112i);
-                                        local_28 = _e244;
-                                        if (_e244 >= 31i) {
-                                            let _e313 = local_25;
-                                            phi_265_ = (_e313 | 31744u);
-                                            phi_266_ = u32();
-                                            phi_267_ = true;
+                                        let _e227 = local_22;
+                                        let _e228 = (_e227 + -112i);
+                                        local_24 = _e228;
+                                        if (_e228 >= 31i) {
+                                            let _e297 = local_21;
+                                            phi_262_ = (_e297 | 31744u);
+                                            phi_263_ = u32();
+                                            phi_264_ = true;
                                         } else {
-                                            let _e246 = local_28;
-                                            let _e247 = (_e246 <= 0i);
-                                            if _e247 {
-                                                let _e273 = local_28;
-                                                if (_e273 < -10i) {
-                                                    phi_242_ = _e236;
+                                            let _e230 = local_24;
+                                            let _e231 = (_e230 <= 0i);
+                                            if _e231 {
+                                                let _e257 = local_24;
+                                                if (_e257 < -10i) {
+                                                    phi_239_ = _e220;
                                                 } else {
-                                                    let _e275 = local_27;
-                                                    let _e276 = (_e275 | 8388608u);
-                                                    let _e277 = local_26;
-                                                    let _e279 = bitcast<u32>((126i - _e277));
-                                                    let _e280 = (_e279 & 31u);
-                                                    local_29 = (_e276 >> bitcast<u32>(_e280));
-                                                    let _e286 = (_e276 & ((1u << bitcast<u32>(_e280)) - 1u));
-                                                    local_30 = _e286;
-                                                    let _e290 = (1u << bitcast<u32>(((_e279 - 1u) & 31u)));
-                                                    local_31 = _e290;
-                                                    if (_e286 > _e290) {
-                                                        phi_238_ = true;
+                                                    let _e259 = local_23;
+                                                    let _e260 = (_e259 | 8388608u);
+                                                    let _e261 = local_22;
+                                                    let _e263 = bitcast<u32>((126i - _e261));
+                                                    let _e264 = (_e263 & 31u);
+                                                    local_25 = (_e260 >> bitcast<u32>(_e264));
+                                                    let _e270 = (_e260 & ((1u << bitcast<u32>(_e264)) - 1u));
+                                                    local_26 = _e270;
+                                                    let _e274 = (1u << bitcast<u32>(((_e263 - 1u) & 31u)));
+                                                    local_27 = _e274;
+                                                    if (_e270 > _e274) {
+                                                        phi_235_ = true;
                                                     } else {
-                                                        let _e292 = local_30;
-                                                        let _e293 = local_31;
-                                                        if (_e292 == _e293) {
-                                                            let _e295 = local_29;
-                                                            phi_237_ = ((_e295 & 1u) == 1u);
+                                                        let _e276 = local_26;
+                                                        let _e277 = local_27;
+                                                        if (_e276 == _e277) {
+                                                            let _e279 = local_25;
+                                                            phi_234_ = ((_e279 & 1u) == 1u);
                                                         } else {
-                                                            phi_237_ = false;
+                                                            phi_234_ = false;
                                                         }
-                                                        let _e299 = phi_237_;
-                                                        phi_238_ = _e299;
+                                                        let _e283 = phi_234_;
+                                                        phi_235_ = _e283;
                                                     }
-                                                    let _e301 = phi_238_;
-                                                    let _e303 = local_29;
-                                                    let _e305 = local_25;
-                                                    phi_242_ = (_e305 | (_e303 + select(0u, 1u, _e301)));
+                                                    let _e285 = phi_235_;
+                                                    let _e287 = local_25;
+                                                    let _e289 = local_21;
+                                                    phi_239_ = (_e289 | (_e287 + select(0u, 1u, _e285)));
                                                 }
-                                                let _e308 = phi_242_;
-                                                phi_263_ = _e308;
-                                                phi_264_ = u32();
+                                                let _e292 = phi_239_;
+                                                phi_260_ = _e292;
+                                                phi_261_ = u32();
                                             } else {
-                                                let _e248 = local_28;
-                                                let _e252 = local_27;
-                                                local_32 = ((bitcast<u32>(_e248) << bitcast<u32>(10i)) | (_e252 >> bitcast<u32>(13i)));
-                                                let _e256 = local_27;
-                                                let _e257 = (_e256 & 8191u);
-                                                local_33 = _e257;
-                                                if (_e257 > 4096u) {
-                                                    phi_259_ = true;
+                                                let _e232 = local_24;
+                                                let _e236 = local_23;
+                                                local_28 = ((bitcast<u32>(_e232) << bitcast<u32>(10i)) | (_e236 >> bitcast<u32>(13i)));
+                                                let _e240 = local_23;
+                                                let _e241 = (_e240 & 8191u);
+                                                local_29 = _e241;
+                                                if (_e241 > 4096u) {
+                                                    phi_256_ = true;
                                                 } else {
-                                                    let _e259 = local_33;
-                                                    if (_e259 == 4096u) {
-                                                        let _e261 = local_32;
-                                                        phi_258_ = ((_e261 & 1u) == 1u);
+                                                    let _e243 = local_29;
+                                                    if (_e243 == 4096u) {
+                                                        let _e245 = local_28;
+                                                        phi_255_ = ((_e245 & 1u) == 1u);
                                                     } else {
-                                                        phi_258_ = false;
+                                                        phi_255_ = false;
                                                     }
-                                                    let _e265 = phi_258_;
-                                                    phi_259_ = _e265;
+                                                    let _e249 = phi_255_;
+                                                    phi_256_ = _e249;
                                                 }
-                                                let _e267 = phi_259_;
-                                                let _e269 = local_32;
-                                                let _e271 = local_25;
-                                                phi_263_ = u32();
-                                                phi_264_ = (_e271 | (_e269 + select(0u, 1u, _e267)));
+                                                let _e251 = phi_256_;
+                                                let _e253 = local_28;
+                                                let _e255 = local_21;
+                                                phi_260_ = u32();
+                                                phi_261_ = (_e255 | (_e253 + select(0u, 1u, _e251)));
                                             }
-                                            let _e310 = phi_263_;
-                                            let _e312 = phi_264_;
-                                            phi_265_ = _e310;
-                                            phi_266_ = _e312;
-                                            phi_267_ = _e247;
+                                            let _e294 = phi_260_;
+                                            let _e296 = phi_261_;
+                                            phi_262_ = _e294;
+                                            phi_263_ = _e296;
+                                            phi_264_ = _e231;
                                         }
-                                        let _e316 = phi_265_;
-                                        let _e318 = phi_266_;
-                                        let _e320 = phi_267_;
-                                        phi_271_ = _e316;
-                                        phi_272_ = _e318;
-                                        phi_273_ = _e320;
+                                        let _e300 = phi_262_;
+                                        let _e302 = phi_263_;
+                                        let _e304 = phi_264_;
+                                        phi_268_ = _e300;
+                                        phi_269_ = _e302;
+                                        phi_270_ = _e304;
                                     }
-                                    let _e328 = phi_271_;
-                                    let _e330 = phi_272_;
-                                    let _e332 = phi_273_;
-                                    local_63 = select(_e330, _e328, _e332);
-                                    let _e334 = local_20;
-                                    let _e335 = bitcast<u32>(_e334);
-                                    let _e338 = ((_e335 >> bitcast<u32>(16i)) & 32768u);
-                                    local_34 = _e338;
-                                    let _e342 = bitcast<i32>(((_e335 >> bitcast<u32>(23i)) & 255u));
-                                    local_35 = _e342;
-                                    local_36 = (_e335 & 8388607u);
-                                    if (_e342 == 255i) {
-                                        let _e423 = local_34;
-                                        let _e425 = local_36;
-                                        phi_367_ = ((_e423 | 31744u) | select(512u, 0u, (_e425 == 0u)));
-                                        phi_368_ = u32();
-                                        phi_369_ = true;
+                                    let _e312 = phi_268_;
+                                    let _e314 = phi_269_;
+                                    let _e316 = phi_270_;
+                                    local_59 = select(_e314, _e312, _e316);
+                                    let _e318 = local_17;
+                                    let _e319 = bitcast<u32>(_e318);
+                                    let _e322 = ((_e319 >> bitcast<u32>(16i)) & 32768u);
+                                    local_30 = _e322;
+                                    let _e326 = bitcast<i32>(((_e319 >> bitcast<u32>(23i)) & 255u));
+                                    local_31 = _e326;
+                                    local_32 = (_e319 & 8388607u);
+                                    if (_e326 == 255i) {
+                                        let _e407 = local_30;
+                                        let _e409 = local_32;
+                                        phi_364_ = ((_e407 | 31744u) | select(512u, 0u, (_e409 == 0u)));
+                                        phi_365_ = u32();
+                                        phi_366_ = true;
                                     } else {
-                                        let _e345 = local_35;
-                                        let _e346 = (_e345 + -112i);
-                                        local_37 = _e346;
-                                        if (_e346 >= 31i) {
-                                            let _e415 = local_34;
-                                            phi_361_ = (_e415 | 31744u);
-                                            phi_362_ = u32();
-                                            phi_363_ = true;
+                                        let _e329 = local_31;
+                                        let _e330 = (_e329 + -112i);
+                                        local_33 = _e330;
+                                        if (_e330 >= 31i) {
+                                            let _e399 = local_30;
+                                            phi_358_ = (_e399 | 31744u);
+                                            phi_359_ = u32();
+                                            phi_360_ = true;
                                         } else {
-                                            let _e348 = local_37;
-                                            let _e349 = (_e348 <= 0i);
-                                            if _e349 {
-                                                let _e375 = local_37;
-                                                if (_e375 < -10i) {
-                                                    phi_338_ = _e338;
+                                            let _e332 = local_33;
+                                            let _e333 = (_e332 <= 0i);
+                                            if _e333 {
+                                                let _e359 = local_33;
+                                                if (_e359 < -10i) {
+                                                    phi_335_ = _e322;
                                                 } else {
-                                                    let _e377 = local_36;
-                                                    let _e378 = (_e377 | 8388608u);
-                                                    let _e379 = local_35;
-                                                    let _e381 = bitcast<u32>((126i - _e379));
-                                                    let _e382 = (_e381 & 31u);
-                                                    local_38 = (_e378 >> bitcast<u32>(_e382));
-                                                    let _e388 = (_e378 & ((1u << bitcast<u32>(_e382)) - 1u));
-                                                    local_39 = _e388;
-                                                    let _e392 = (1u << bitcast<u32>(((_e381 - 1u) & 31u)));
-                                                    local_40 = _e392;
-                                                    if (_e388 > _e392) {
-                                                        phi_334_ = true;
+                                                    let _e361 = local_32;
+                                                    let _e362 = (_e361 | 8388608u);
+                                                    let _e363 = local_31;
+                                                    let _e365 = bitcast<u32>((126i - _e363));
+                                                    let _e366 = (_e365 & 31u);
+                                                    local_34 = (_e362 >> bitcast<u32>(_e366));
+                                                    let _e372 = (_e362 & ((1u << bitcast<u32>(_e366)) - 1u));
+                                                    local_35 = _e372;
+                                                    let _e376 = (1u << bitcast<u32>(((_e365 - 1u) & 31u)));
+                                                    local_36 = _e376;
+                                                    if (_e372 > _e376) {
+                                                        phi_331_ = true;
                                                     } else {
-                                                        let _e394 = local_39;
-                                                        let _e395 = local_40;
-                                                        if (_e394 == _e395) {
-                                                            let _e397 = local_38;
-                                                            phi_333_ = ((_e397 & 1u) == 1u);
+                                                        let _e378 = local_35;
+                                                        let _e379 = local_36;
+                                                        if (_e378 == _e379) {
+                                                            let _e381 = local_34;
+                                                            phi_330_ = ((_e381 & 1u) == 1u);
                                                         } else {
-                                                            phi_333_ = false;
+                                                            phi_330_ = false;
                                                         }
-                                                        let _e401 = phi_333_;
-                                                        phi_334_ = _e401;
+                                                        let _e385 = phi_330_;
+                                                        phi_331_ = _e385;
                                                     }
-                                                    let _e403 = phi_334_;
-                                                    let _e405 = local_38;
-                                                    let _e407 = local_34;
-                                                    phi_338_ = (_e407 | (_e405 + select(0u, 1u, _e403)));
+                                                    let _e387 = phi_331_;
+                                                    let _e389 = local_34;
+                                                    let _e391 = local_30;
+                                                    phi_335_ = (_e391 | (_e389 + select(0u, 1u, _e387)));
                                                 }
-                                                let _e410 = phi_338_;
-                                                phi_359_ = _e410;
-                                                phi_360_ = u32();
+                                                let _e394 = phi_335_;
+                                                phi_356_ = _e394;
+                                                phi_357_ = u32();
                                             } else {
-                                                let _e350 = local_37;
-                                                let _e354 = local_36;
-                                                local_41 = ((bitcast<u32>(_e350) << bitcast<u32>(10i)) | (_e354 >> bitcast<u32>(13i)));
-                                                let _e358 = local_36;
-                                                let _e359 = (_e358 & 8191u);
-                                                local_42 = _e359;
-                                                if (_e359 > 4096u) {
-                                                    phi_355_ = true;
+                                                let _e334 = local_33;
+                                                let _e338 = local_32;
+                                                local_37 = ((bitcast<u32>(_e334) << bitcast<u32>(10i)) | (_e338 >> bitcast<u32>(13i)));
+                                                let _e342 = local_32;
+                                                let _e343 = (_e342 & 8191u);
+                                                local_38 = _e343;
+                                                if (_e343 > 4096u) {
+                                                    phi_352_ = true;
                                                 } else {
-                                                    let _e361 = local_42;
-                                                    if (_e361 == 4096u) {
-                                                        let _e363 = local_41;
-                                                        phi_354_ = ((_e363 & 1u) == 1u);
+                                                    let _e345 = local_38;
+                                                    if (_e345 == 4096u) {
+                                                        let _e347 = local_37;
+                                                        phi_351_ = ((_e347 & 1u) == 1u);
                                                     } else {
-                                                        phi_354_ = false;
+                                                        phi_351_ = false;
                                                     }
-                                                    let _e367 = phi_354_;
-                                                    phi_355_ = _e367;
+                                                    let _e351 = phi_351_;
+                                                    phi_352_ = _e351;
                                                 }
-                                                let _e369 = phi_355_;
-                                                let _e371 = local_41;
-                                                let _e373 = local_34;
-                                                phi_359_ = u32();
-                                                phi_360_ = (_e373 | (_e371 + select(0u, 1u, _e369)));
+                                                let _e353 = phi_352_;
+                                                let _e355 = local_37;
+                                                let _e357 = local_30;
+                                                phi_356_ = u32();
+                                                phi_357_ = (_e357 | (_e355 + select(0u, 1u, _e353)));
                                             }
-                                            let _e412 = phi_359_;
-                                            let _e414 = phi_360_;
-                                            phi_361_ = _e412;
-                                            phi_362_ = _e414;
-                                            phi_363_ = _e349;
+                                            let _e396 = phi_356_;
+                                            let _e398 = phi_357_;
+                                            phi_358_ = _e396;
+                                            phi_359_ = _e398;
+                                            phi_360_ = _e333;
                                         }
-                                        let _e418 = phi_361_;
-                                        let _e420 = phi_362_;
-                                        let _e422 = phi_363_;
-                                        phi_367_ = _e418;
-                                        phi_368_ = _e420;
-                                        phi_369_ = _e422;
+                                        let _e402 = phi_358_;
+                                        let _e404 = phi_359_;
+                                        let _e406 = phi_360_;
+                                        phi_364_ = _e402;
+                                        phi_365_ = _e404;
+                                        phi_366_ = _e406;
                                     }
-                                    let _e430 = phi_367_;
-                                    let _e432 = phi_368_;
-                                    let _e434 = phi_369_;
-                                    let _e438 = local_63;
-                                    local_43 = (_e438 | (select(_e432, _e430, _e434) << bitcast<u32>(16i)));
-                                    let _e440 = local_24;
-                                    let _e441 = local_2;
-                                    if (_e440 < _e441) {
+                                    let _e414 = phi_364_;
+                                    let _e416 = phi_365_;
+                                    let _e418 = phi_366_;
+                                    let _e422 = local_59;
+                                    local_39 = (_e422 | (select(_e416, _e414, _e418) << bitcast<u32>(16i)));
+                                    let _e424 = local_20;
+                                    let _e425 = local_2;
+                                    if (_e424 < _e425) {
                                     } else {
-                                        phi_649_ = true;
+                                        phi_646_ = true;
                                         break;
                                     }
-                                    let _e443 = local_24;
-                                    let _e445 = local_43;
-                                    global_4.member[_e443] = _e445;
-                                    let _e446 = local_24;
-                                    local_44 = (_e446 + 1u);
-                                    let _e448 = local_22;
-                                    let _e449 = bitcast<u32>(_e448);
-                                    let _e452 = ((_e449 >> bitcast<u32>(16i)) & 32768u);
-                                    local_45 = _e452;
-                                    let _e456 = bitcast<i32>(((_e449 >> bitcast<u32>(23i)) & 255u));
-                                    local_46 = _e456;
-                                    local_47 = (_e449 & 8388607u);
-                                    if (_e456 == 255i) {
-                                        let _e537 = local_45;
-                                        let _e539 = local_47;
-                                        phi_475_ = ((_e537 | 31744u) | select(512u, 0u, (_e539 == 0u)));
-                                        phi_476_ = u32();
-                                        phi_477_ = true;
+                                    let _e427 = local_20;
+                                    let _e429 = local_39;
+                                    global_4.member[_e427] = _e429;
+                                    let _e430 = local_20;
+                                    local_40 = (_e430 + 1u);
+                                    let _e432 = local_19;
+                                    let _e433 = bitcast<u32>(_e432);
+                                    let _e436 = ((_e433 >> bitcast<u32>(16i)) & 32768u);
+                                    local_41 = _e436;
+                                    let _e440 = bitcast<i32>(((_e433 >> bitcast<u32>(23i)) & 255u));
+                                    local_42 = _e440;
+                                    local_43 = (_e433 & 8388607u);
+                                    if (_e440 == 255i) {
+                                        let _e521 = local_41;
+                                        let _e523 = local_43;
+                                        phi_472_ = ((_e521 | 31744u) | select(512u, 0u, (_e523 == 0u)));
+                                        phi_473_ = u32();
+                                        phi_474_ = true;
                                     } else {
-                                        let _e459 = local_46;
-                                        let _e460 = (_e459 + -112i);
-                                        local_48 = _e460;
-                                        if (_e460 >= 31i) {
-                                            let _e529 = local_45;
-                                            phi_469_ = (_e529 | 31744u);
-                                            phi_470_ = u32();
-                                            phi_471_ = true;
+                                        let _e443 = local_42;
+                                        let _e444 = (_e443 + -112i);
+                                        local_44 = _e444;
+                                        if (_e444 >= 31i) {
+                                            let _e513 = local_41;
+                                            phi_466_ = (_e513 | 31744u);
+                                            phi_467_ = u32();
+                                            phi_468_ = true;
                                         } else {
-                                            let _e462 = local_48;
-                                            let _e463 = (_e462 <= 0i);
-                                            if _e463 {
-                                                let _e489 = local_48;
-                                                if (_e489 < -10i) {
-                                                    phi_446_ = _e452;
+                                            let _e446 = local_44;
+                                            let _e447 = (_e446 <= 0i);
+                                            if _e447 {
+                                                let _e473 = local_44;
+                                                if (_e473 < -10i) {
+                                                    phi_443_ = _e436;
                                                 } else {
-                                                    let _e491 = local_47;
-                                                    let _e492 = (_e491 | 8388608u);
-                                                    let _e493 = local_46;
-                                                    let _e495 = bitcast<u32>((126i - _e493));
-                                                    let _e496 = (_e495 & 31u);
-                                                    local_49 = (_e492 >> bitcast<u32>(_e496));
-                                                    let _e502 = (_e492 & ((1u << bitcast<u32>(_e496)) - 1u));
-                                                    local_50 = _e502;
-                                                    let _e506 = (1u << bitcast<u32>(((_e495 - 1u) & 31u)));
-                                                    local_51 = _e506;
-                                                    if (_e502 > _e506) {
-                                                        phi_442_ = true;
+                                                    let _e475 = local_43;
+                                                    let _e476 = (_e475 | 8388608u);
+                                                    let _e477 = local_42;
+                                                    let _e479 = bitcast<u32>((126i - _e477));
+                                                    let _e480 = (_e479 & 31u);
+                                                    local_45 = (_e476 >> bitcast<u32>(_e480));
+                                                    let _e486 = (_e476 & ((1u << bitcast<u32>(_e480)) - 1u));
+                                                    local_46 = _e486;
+                                                    let _e490 = (1u << bitcast<u32>(((_e479 - 1u) & 31u)));
+                                                    local_47 = _e490;
+                                                    if (_e486 > _e490) {
+                                                        phi_439_ = true;
                                                     } else {
-                                                        let _e508 = local_50;
-                                                        let _e509 = local_51;
-                                                        if (_e508 == _e509) {
-                                                            let _e511 = local_49;
-                                                            phi_441_ = ((_e511 & 1u) == 1u);
+                                                        let _e492 = local_46;
+                                                        let _e493 = local_47;
+                                                        if (_e492 == _e493) {
+                                                            let _e495 = local_45;
+                                                            phi_438_ = ((_e495 & 1u) == 1u);
                                                         } else {
-                                                            phi_441_ = false;
+                                                            phi_438_ = false;
                                                         }
-                                                        let _e515 = phi_441_;
-                                                        phi_442_ = _e515;
+                                                        let _e499 = phi_438_;
+                                                        phi_439_ = _e499;
                                                     }
-                                                    let _e517 = phi_442_;
-                                                    let _e519 = local_49;
-                                                    let _e521 = local_45;
-                                                    phi_446_ = (_e521 | (_e519 + select(0u, 1u, _e517)));
+                                                    let _e501 = phi_439_;
+                                                    let _e503 = local_45;
+                                                    let _e505 = local_41;
+                                                    phi_443_ = (_e505 | (_e503 + select(0u, 1u, _e501)));
                                                 }
-                                                let _e524 = phi_446_;
-                                                phi_467_ = _e524;
-                                                phi_468_ = u32();
+                                                let _e508 = phi_443_;
+                                                phi_464_ = _e508;
+                                                phi_465_ = u32();
                                             } else {
-                                                let _e464 = local_48;
-                                                let _e468 = local_47;
-                                                local_52 = ((bitcast<u32>(_e464) << bitcast<u32>(10i)) | (_e468 >> bitcast<u32>(13i)));
-                                                let _e472 = local_47;
-                                                let _e473 = (_e472 & 8191u);
-                                                local_53 = _e473;
-                                                if (_e473 > 4096u) {
-                                                    phi_463_ = true;
+                                                let _e448 = local_44;
+                                                let _e452 = local_43;
+                                                local_48 = ((bitcast<u32>(_e448) << bitcast<u32>(10i)) | (_e452 >> bitcast<u32>(13i)));
+                                                let _e456 = local_43;
+                                                let _e457 = (_e456 & 8191u);
+                                                local_49 = _e457;
+                                                if (_e457 > 4096u) {
+                                                    phi_460_ = true;
                                                 } else {
-                                                    let _e475 = local_53;
-                                                    if (_e475 == 4096u) {
-                                                        let _e477 = local_52;
-                                                        phi_462_ = ((_e477 & 1u) == 1u);
+                                                    let _e459 = local_49;
+                                                    if (_e459 == 4096u) {
+                                                        let _e461 = local_48;
+                                                        phi_459_ = ((_e461 & 1u) == 1u);
                                                     } else {
-                                                        phi_462_ = false;
+                                                        phi_459_ = false;
                                                     }
-                                                    let _e481 = phi_462_;
-                                                    phi_463_ = _e481;
+                                                    let _e465 = phi_459_;
+                                                    phi_460_ = _e465;
                                                 }
-                                                let _e483 = phi_463_;
-                                                let _e485 = local_52;
-                                                let _e487 = local_45;
-                                                phi_467_ = u32();
-                                                phi_468_ = (_e487 | (_e485 + select(0u, 1u, _e483)));
+                                                let _e467 = phi_460_;
+                                                let _e469 = local_48;
+                                                let _e471 = local_41;
+                                                phi_464_ = u32();
+                                                phi_465_ = (_e471 | (_e469 + select(0u, 1u, _e467)));
                                             }
-                                            let _e526 = phi_467_;
-                                            let _e528 = phi_468_;
-                                            phi_469_ = _e526;
-                                            phi_470_ = _e528;
-                                            phi_471_ = _e463;
+                                            let _e510 = phi_464_;
+                                            let _e512 = phi_465_;
+                                            phi_466_ = _e510;
+                                            phi_467_ = _e512;
+                                            phi_468_ = _e447;
                                         }
-                                        let _e532 = phi_469_;
-                                        let _e534 = phi_470_;
-                                        let _e536 = phi_471_;
-                                        phi_475_ = _e532;
-                                        phi_476_ = _e534;
-                                        phi_477_ = _e536;
+                                        let _e516 = phi_466_;
+                                        let _e518 = phi_467_;
+                                        let _e520 = phi_468_;
+                                        phi_472_ = _e516;
+                                        phi_473_ = _e518;
+                                        phi_474_ = _e520;
                                     }
-                                    let _e544 = phi_475_;
-                                    let _e546 = phi_476_;
-                                    let _e548 = phi_477_;
-                                    local_54 = (select(_e546, _e544, _e548) | 1006632960u);
-                                    let _e551 = local_44;
-                                    let _e552 = local_2;
-                                    if (_e551 < _e552) {
+                                    let _e528 = phi_472_;
+                                    let _e530 = phi_473_;
+                                    let _e532 = phi_474_;
+                                    local_50 = (select(_e530, _e528, _e532) | 1006632960u);
+                                    let _e535 = local_40;
+                                    let _e536 = local_2;
+                                    if (_e535 < _e536) {
                                     } else {
-                                        phi_649_ = true;
+                                        phi_646_ = true;
                                         break;
                                     }
-                                    let _e554 = local_44;
-                                    let _e556 = local_54;
-                                    global_4.member[_e554] = _e556;
+                                    let _e538 = local_40;
+                                    let _e540 = local_50;
+                                    global_4.member[_e538] = _e540;
                                 } else {
-                                    let _e197 = local_23;
-                                    let _e198 = (4u * _e197);
-                                    local_55 = _e198;
-                                    let _e199 = local_18;
-                                    local_56 = bitcast<u32>(_e199);
-                                    let _e201 = local_2;
-                                    if (_e198 < _e201) {
+                                    let _e181 = local_13;
+                                    let _e182 = (4u * _e181);
+                                    local_51 = _e182;
+                                    let _e183 = local_15;
+                                    local_52 = bitcast<u32>(_e183);
+                                    let _e185 = local_2;
+                                    if (_e182 < _e185) {
                                     } else {
-                                        phi_649_ = true;
+                                        phi_646_ = true;
                                         break;
                                     }
-                                    let _e203 = local_55;
-                                    let _e205 = local_56;
-                                    global_4.member[_e203] = _e205;
-                                    let _e206 = local_55;
-                                    let _e207 = (_e206 + 1u);
-                                    local_57 = _e207;
-                                    let _e208 = local_20;
-                                    local_58 = bitcast<u32>(_e208);
+                                    let _e187 = local_51;
+                                    let _e189 = local_52;
+                                    global_4.member[_e187] = _e189;
+                                    let _e190 = local_51;
+                                    let _e191 = (_e190 + 1u);
+                                    local_53 = _e191;
+                                    let _e192 = local_17;
+                                    local_54 = bitcast<u32>(_e192);
+                                    let _e194 = local_2;
+                                    if (_e191 < _e194) {
+                                    } else {
+                                        phi_646_ = true;
+                                        break;
+                                    }
+                                    let _e196 = local_53;
+                                    let _e198 = local_54;
+                                    global_4.member[_e196] = _e198;
+                                    let _e199 = local_51;
+                                    let _e200 = (_e199 + 2u);
+                                    local_55 = _e200;
+                                    let _e201 = local_19;
+                                    local_56 = bitcast<u32>(_e201);
+                                    let _e203 = local_2;
+                                    if (_e200 < _e203) {
+                                    } else {
+                                        phi_646_ = true;
+                                        break;
+                                    }
+                                    let _e205 = local_55;
+                                    let _e207 = local_56;
+                                    global_4.member[_e205] = _e207;
+                                    let _e208 = local_51;
+                                    let _e209 = (_e208 + 3u);
+                                    local_57 = _e209;
                                     let _e210 = local_2;
-                                    if (_e207 < _e210) {
+                                    if (_e209 < _e210) {
                                     } else {
-                                        phi_649_ = true;
+                                        phi_646_ = true;
                                         break;
                                     }
                                     let _e212 = local_57;
-                                    let _e214 = local_58;
-                                    global_4.member[_e212] = _e214;
-                                    let _e215 = local_55;
-                                    let _e216 = (_e215 + 2u);
-                                    local_59 = _e216;
-                                    let _e217 = local_22;
-                                    local_60 = bitcast<u32>(_e217);
-                                    let _e219 = local_2;
-                                    if (_e216 < _e219) {
-                                    } else {
-                                        phi_649_ = true;
-                                        break;
-                                    }
-                                    let _e221 = local_59;
-                                    let _e223 = local_60;
-                                    global_4.member[_e221] = _e223;
-                                    let _e224 = local_55;
-                                    let _e225 = (_e224 + 3u);
-                                    local_61 = _e225;
-                                    let _e226 = local_2;
-                                    if (_e225 < _e226) {
-                                    } else {
-                                        phi_649_ = true;
-                                        break;
-                                    }
-                                    let _e228 = local_61;
-                                    global_4.member[_e228] = 1065353216u;
+                                    global_4.member[_e212] = 1065353216u;
                                 }
-                                let _e557 = local_13;
-                                phi_632_ = (_e557 + 1u);
+                                let _e541 = local_13;
+                                phi_629_ = (_e541 + 1u);
                             } else {
-                                phi_632_ = u32();
+                                phi_629_ = u32();
                             }
-                            let _e560 = phi_632_;
-                            phi_118_ = _e560;
-                            phi_633_ = _e153;
+                            let _e544 = phi_629_;
+                            phi_118_ = _e544;
+                            phi_630_ = _e149;
                         } else {
                             phi_118_ = u32();
-                            phi_633_ = false;
+                            phi_630_ = false;
                         }
-                        let _e562 = phi_118_;
-                        let _e564 = phi_633_;
-                        local_62 = _e564;
+                        let _e546 = phi_118_;
+                        let _e548 = phi_630_;
+                        local_58 = _e548;
                         continue;
                         continuing {
-                            let _e565 = local_62;
-                            phi_117_ = _e562;
-                            phi_649_ = _e135;
-                            break if !(_e565);
+                            let _e549 = local_58;
+                            phi_117_ = _e546;
+                            phi_646_ = _e131;
+                            break if !(_e549);
                         }
                     }
-                    let _e568 = phi_649_;
-                    phi_697_ = _e568;
-                    if _e568 {
+                    let _e552 = phi_646_;
+                    phi_694_ = _e552;
+                    if _e552 {
                         break;
                     }
-                    let _e569 = local_11;
-                    let _e570 = local_9;
-                    phi_698_ = _e568;
-                    phi_107_ = (_e569 + _e570);
+                    let _e553 = local_11;
+                    let _e554 = local_9;
+                    phi_695_ = _e552;
+                    phi_107_ = (_e553 + _e554);
                 } else {
-                    phi_698_ = _e135;
+                    phi_695_ = _e131;
                     phi_107_ = u32();
                 }
-                let _e573 = phi_698_;
-                let _e575 = phi_107_;
+                let _e557 = phi_695_;
+                let _e559 = phi_107_;
                 continue;
                 continuing {
-                    let _e576 = local_12;
-                    phi_666_ = _e573;
-                    phi_106_ = _e575;
-                    phi_697_ = _e573;
-                    break if !(_e576);
+                    let _e560 = local_12;
+                    phi_663_ = _e557;
+                    phi_106_ = _e559;
+                    phi_694_ = _e557;
+                    break if !(_e560);
                 }
             }
-            let _e579 = phi_697_;
-            if _e579 {
+            let _e563 = phi_694_;
+            if _e563 {
                 break;
             }
             break;

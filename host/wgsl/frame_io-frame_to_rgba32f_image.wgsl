@@ -36,171 +36,164 @@ fn function_() {
     var local_6: u32;
     var local_7: bool;
     var local_8: u32;
-    var local_9: bool;
+    var local_9: u32;
     var local_10: u32;
     var local_11: u32;
-    var local_12: u32;
-    var local_13: f32;
-    var local_14: u32;
-    var local_15: f32;
-    var local_16: u32;
-    var local_17: bool;
-    var phi_161_: bool;
+    var local_12: f32;
+    var local_13: u32;
+    var local_14: f32;
+    var local_15: u32;
+    var local_16: bool;
+    var phi_158_: bool;
     var phi_65_: u32;
     var phi_76_: u32;
-    var phi_140_: u32;
+    var phi_137_: u32;
     var phi_77_: u32;
-    var phi_141_: bool;
-    var phi_157_: bool;
-    var phi_163_: bool;
+    var phi_138_: bool;
+    var phi_154_: bool;
+    var phi_160_: bool;
     var phi_66_: u32;
-    var phi_162_: bool;
+    var phi_159_: bool;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e34 = global;
-            local = _e34;
-            let _e35 = global_1;
-            let _e36 = global_2;
+            let _e33 = global;
+            local = _e33;
+            let _e34 = global_1;
+            let _e35 = global_2;
             local_1 = arrayLength((&global_3.member));
-            let _e43 = global_4.member.member;
-            local_2 = _e43;
-            let _e46 = global_4.member.member_1;
-            local_3 = (_e43 * _e46);
-            local_4 = (_e36.x * 256u);
-            local_5 = (_e34 + 1u);
-            phi_161_ = false;
-            phi_65_ = (_e35.x * 256u);
+            let _e42 = global_4.member.member;
+            local_2 = _e42;
+            let _e45 = global_4.member.member_1;
+            local_3 = (_e42 * _e45);
+            local_4 = (_e35.x * 256u);
+            local_5 = (_e33 + 1u);
+            phi_158_ = false;
+            phi_65_ = (_e34.x * 256u);
             loop {
-                let _e52 = phi_161_;
-                let _e54 = phi_65_;
-                local_6 = _e54;
-                let _e55 = local_6;
-                let _e56 = local_3;
-                let _e57 = (_e55 < _e56);
-                local_7 = _e57;
-                if _e57 {
-                    let _e58 = local_6;
-                    let _e59 = local;
-                    phi_76_ = (_e58 + _e59);
+                let _e51 = phi_158_;
+                let _e53 = phi_65_;
+                local_6 = _e53;
+                let _e54 = local_6;
+                let _e55 = local_3;
+                let _e56 = (_e54 < _e55);
+                local_7 = _e56;
+                if _e56 {
+                    let _e57 = local_6;
+                    let _e58 = local;
+                    phi_76_ = (_e57 + _e58);
                     loop {
-                        let _e62 = phi_76_;
-                        local_8 = _e62;
-                        let _e63 = local_8;
-                        let _e64 = local_3;
-                        if (_e63 < _e64) {
-                            let _e66 = local_6;
-                            let _e67 = local_5;
-                            let _e69 = local_8;
-                            let _e70 = (_e69 < (_e66 + _e67));
-                            if _e70 {
-                                let _e71 = local_2;
-                                let _e72 = (_e71 == 0u);
-                                local_9 = _e72;
-                                if _e72 {
-                                    phi_157_ = true;
+                        let _e61 = phi_76_;
+                        local_8 = _e61;
+                        let _e62 = local_8;
+                        let _e63 = local_3;
+                        if (_e62 < _e63) {
+                            let _e65 = local_6;
+                            let _e66 = local_5;
+                            let _e68 = local_8;
+                            let _e69 = (_e68 < (_e65 + _e66));
+                            if _e69 {
+                                let _e70 = local_2;
+                                if (_e70 == 0u) {
+                                    phi_154_ = true;
                                     break;
                                 }
-                                let _e73 = local_8;
-                                let _e74 = local_2;
-                                local_10 = (_e73 % _e74);
-                                let _e76 = local_9;
-                                if _e76 {
-                                    phi_157_ = true;
-                                    break;
-                                }
+                                let _e72 = local_8;
+                                let _e73 = local_2;
+                                let _e74 = (_e72 / _e73);
+                                local_9 = _e74;
+                                let _e75 = local_2;
                                 let _e77 = local_8;
-                                let _e78 = local_2;
-                                local_11 = (_e77 / _e78);
-                                let _e80 = local_8;
-                                let _e81 = (3u * _e80);
-                                local_12 = _e81;
-                                let _e82 = local_1;
-                                if (_e81 < _e82) {
+                                local_10 = (_e77 - (_e74 * _e75));
+                                let _e79 = local_8;
+                                let _e80 = (3u * _e79);
+                                local_11 = _e80;
+                                let _e81 = local_1;
+                                if (_e80 < _e81) {
                                 } else {
-                                    phi_157_ = true;
+                                    phi_154_ = true;
                                     break;
                                 }
-                                let _e84 = local_12;
-                                let _e87 = global_3.member[_e84];
-                                local_13 = bitcast<f32>(_e87);
-                                let _e89 = local_12;
-                                let _e90 = (_e89 + 1u);
-                                local_14 = _e90;
-                                let _e91 = local_1;
-                                if (_e90 < _e91) {
+                                let _e83 = local_11;
+                                let _e86 = global_3.member[_e83];
+                                local_12 = bitcast<f32>(_e86);
+                                let _e88 = local_11;
+                                let _e89 = (_e88 + 1u);
+                                local_13 = _e89;
+                                let _e90 = local_1;
+                                if (_e89 < _e90) {
                                 } else {
-                                    phi_157_ = true;
+                                    phi_154_ = true;
                                     break;
                                 }
-                                let _e93 = local_14;
-                                let _e96 = global_3.member[_e93];
-                                local_15 = bitcast<f32>(_e96);
-                                let _e98 = local_12;
-                                let _e99 = (_e98 + 2u);
-                                local_16 = _e99;
-                                let _e100 = local_1;
-                                if (_e99 < _e100) {
+                                let _e92 = local_13;
+                                let _e95 = global_3.member[_e92];
+                                local_14 = bitcast<f32>(_e95);
+                                let _e97 = local_11;
+                                let _e98 = (_e97 + 2u);
+                                local_15 = _e98;
+                                let _e99 = local_1;
+                                if (_e98 < _e99) {
                                 } else {
-                                    phi_157_ = true;
+                                    phi_154_ = true;
                                     break;
                                 }
-                                let _e102 = local_16;
-                                let _e105 = global_3.member[_e102];
-                                let _e107 = local_10;
-                                let _e109 = local_11;
-                                let _e111 = local_13;
-                                let _e112 = local_15;
-                                textureStore(global_5, vec2<i32>(bitcast<i32>(_e107), bitcast<i32>(_e109)), vec4<f32>(_e111, _e112, bitcast<f32>(_e105), 1f));
-                                let _e115 = local_8;
-                                phi_140_ = (_e115 + 1u);
+                                let _e101 = local_15;
+                                let _e104 = global_3.member[_e101];
+                                let _e106 = local_10;
+                                let _e108 = local_9;
+                                let _e110 = local_12;
+                                let _e111 = local_14;
+                                textureStore(global_5, vec2<i32>(bitcast<i32>(_e106), bitcast<i32>(_e108)), vec4<f32>(_e110, _e111, bitcast<f32>(_e104), 1f));
+                                let _e114 = local_8;
+                                phi_137_ = (_e114 + 1u);
                             } else {
-                                phi_140_ = u32();
+                                phi_137_ = u32();
                             }
-                            let _e118 = phi_140_;
-                            phi_77_ = _e118;
-                            phi_141_ = _e70;
+                            let _e117 = phi_137_;
+                            phi_77_ = _e117;
+                            phi_138_ = _e69;
                         } else {
                             phi_77_ = u32();
-                            phi_141_ = false;
+                            phi_138_ = false;
                         }
-                        let _e120 = phi_77_;
-                        let _e122 = phi_141_;
-                        local_17 = _e122;
+                        let _e119 = phi_77_;
+                        let _e121 = phi_138_;
+                        local_16 = _e121;
                         continue;
                         continuing {
-                            let _e123 = local_17;
-                            phi_76_ = _e120;
-                            phi_157_ = _e52;
-                            break if !(_e123);
+                            let _e122 = local_16;
+                            phi_76_ = _e119;
+                            phi_154_ = _e51;
+                            break if !(_e122);
                         }
                     }
-                    let _e126 = phi_157_;
-                    phi_162_ = _e126;
-                    if _e126 {
+                    let _e125 = phi_154_;
+                    phi_159_ = _e125;
+                    if _e125 {
                         break;
                     }
-                    let _e127 = local_6;
-                    let _e128 = local_4;
-                    phi_163_ = _e126;
-                    phi_66_ = (_e127 + _e128);
+                    let _e126 = local_6;
+                    let _e127 = local_4;
+                    phi_160_ = _e125;
+                    phi_66_ = (_e126 + _e127);
                 } else {
-                    phi_163_ = _e52;
+                    phi_160_ = _e51;
                     phi_66_ = u32();
                 }
-                let _e131 = phi_163_;
-                let _e133 = phi_66_;
+                let _e130 = phi_160_;
+                let _e132 = phi_66_;
                 continue;
                 continuing {
-                    let _e134 = local_7;
-                    phi_161_ = _e131;
-                    phi_65_ = _e133;
-                    phi_162_ = _e131;
-                    break if !(_e134);
+                    let _e133 = local_7;
+                    phi_158_ = _e130;
+                    phi_65_ = _e132;
+                    phi_159_ = _e130;
+                    break if !(_e133);
                 }
             }
-            let _e137 = phi_162_;
-            if _e137 {
+            let _e136 = phi_159_;
+            if _e136 {
                 break;
             }
             break;

@@ -60,18 +60,18 @@ fn function_() {
     var local_8: bool;
     var local_9: u32;
     var local_10: u32;
-    var local_11: u32;
+    var local_11: f32;
     var local_12: u32;
-    var local_13: u32;
-    var local_14: bool;
-    var local_15: f32;
-    var local_16: u32;
-    var local_17: u32;
-    var local_18: u32;
+    var local_13: bool;
+    var local_14: f32;
+    var local_15: bool;
+    var local_16: f32;
+    var local_17: f32;
+    var local_18: f32;
     var local_19: bool;
-    var local_20: f32;
-    var local_21: f32;
-    var local_22: f32;
+    var local_20: u32;
+    var local_21: u32;
+    var local_22: u32;
     var local_23: u32;
     var local_24: u32;
     var local_25: u32;
@@ -80,38 +80,38 @@ fn function_() {
     var local_28: u32;
     var local_29: f32;
     var local_30: u32;
-    var local_31: bool;
-    var local_32: f32;
-    var local_33: bool;
-    var local_34: f32;
-    var local_35: f32;
-    var local_36: f32;
-    var local_37: bool;
+    var local_31: u32;
+    var local_32: u32;
+    var local_33: f32;
+    var local_34: u32;
+    var local_35: u32;
+    var local_36: u32;
+    var local_37: f32;
     var local_38: u32;
     var local_39: u32;
     var local_40: u32;
     var local_41: f32;
     var local_42: u32;
-    var local_43: f32;
+    var local_43: u32;
     var local_44: u32;
-    var local_45: f32;
+    var local_45: u32;
     var local_46: u32;
     var local_47: u32;
     var local_48: u32;
     var local_49: u32;
-    var local_50: u32;
+    var local_50: f32;
     var local_51: u32;
-    var local_52: u32;
+    var local_52: f32;
     var local_53: u32;
     var local_54: f32;
     var local_55: u32;
-    var local_56: u32;
+    var local_56: array<f32, 4>;
     var local_57: u32;
-    var local_58: f32;
+    var local_58: u32;
     var local_59: u32;
     var local_60: u32;
     var local_61: u32;
-    var local_62: f32;
+    var local_62: u32;
     var local_63: u32;
     var local_64: u32;
     var local_65: u32;
@@ -119,1855 +119,1416 @@ fn function_() {
     var local_67: u32;
     var local_68: u32;
     var local_69: u32;
-    var local_70: u32;
+    var local_70: f32;
     var local_71: u32;
     var local_72: u32;
     var local_73: u32;
-    var local_74: array<f32, 4>;
+    var local_74: f32;
     var local_75: u32;
     var local_76: u32;
     var local_77: u32;
     var local_78: f32;
     var local_79: u32;
-    var local_80: f32;
+    var local_80: u32;
     var local_81: u32;
-    var local_82: f32;
+    var local_82: u32;
     var local_83: u32;
     var local_84: u32;
     var local_85: u32;
     var local_86: u32;
-    var local_87: u32;
+    var local_87: f32;
     var local_88: u32;
-    var local_89: u32;
+    var local_89: f32;
     var local_90: u32;
     var local_91: f32;
     var local_92: u32;
-    var local_93: u32;
-    var local_94: u32;
-    var local_95: f32;
-    var local_96: u32;
-    var local_97: u32;
-    var local_98: u32;
+    var local_93: bool;
+    var local_94: array<f32, 4>;
+    var local_95: bool;
+    var local_96: bool;
+    var local_97: bool;
+    var local_98: array<f32, 3>;
     var local_99: f32;
     var local_100: u32;
     var local_101: u32;
     var local_102: u32;
-    var local_103: f32;
+    var local_103: u32;
     var local_104: u32;
     var local_105: u32;
     var local_106: u32;
     var local_107: u32;
     var local_108: u32;
     var local_109: u32;
-    var local_110: u32;
-    var local_111: bool;
-    var local_112: array<f32, 4>;
-    var local_113: bool;
-    var local_114: bool;
-    var local_115: bool;
-    var local_116: array<f32, 3>;
+    var local_110: f32;
+    var local_111: f32;
+    var local_112: bool;
+    var local_113: f32;
+    var local_114: u32;
+    var local_115: f32;
+    var local_116: f32;
     var local_117: f32;
-    var local_118: u32;
-    var local_119: u32;
-    var local_120: u32;
-    var local_121: u32;
-    var local_122: u32;
-    var local_123: u32;
-    var local_124: u32;
-    var local_125: u32;
-    var local_126: u32;
-    var local_127: u32;
+    var local_118: f32;
+    var local_119: f32;
+    var local_120: f32;
+    var local_121: f32;
+    var local_122: f32;
+    var local_123: f32;
+    var local_124: f32;
+    var local_125: bool;
+    var local_126: f32;
+    var local_127: f32;
     var local_128: f32;
-    var local_129: f32;
-    var local_130: bool;
-    var local_131: f32;
-    var local_132: u32;
-    var local_133: u32;
-    var local_134: f32;
-    var local_135: f32;
-    var local_136: f32;
-    var local_137: f32;
-    var local_138: f32;
-    var local_139: f32;
-    var local_140: f32;
-    var local_141: f32;
-    var local_142: f32;
-    var local_143: f32;
-    var local_144: f32;
-    var local_145: f32;
-    var local_146: f32;
-    var local_147: f32;
-    var local_148: f32;
-    var local_149: bool;
-    var local_150: f32;
-    var local_151: f32;
-    var local_152: f32;
     var phi_126_: u32;
-    var phi_194_: f32;
-    var phi_209_: f32;
-    var phi_210_: f32;
-    var phi_211_: f32;
-    var phi_212_: f32;
-    var phi_213_: bool;
-    var phi_235_: f32;
+    var phi_172_: f32;
+    var phi_217_: f32;
+    var phi_218_: f32;
+    var phi_238_: f32;
+    var phi_239_: f32;
+    var phi_240_: f32;
+    var phi_241_: f32;
+    var phi_247_: f32;
+    var phi_248_: f32;
     var phi_250_: f32;
-    var phi_251_: f32;
-    var phi_252_: f32;
-    var phi_253_: f32;
-    var phi_254_: bool;
-    var phi_276_: f32;
-    var phi_291_: f32;
-    var phi_292_: f32;
-    var phi_293_: f32;
-    var phi_294_: f32;
-    var phi_295_: bool;
-    var phi_317_: f32;
-    var phi_332_: f32;
-    var phi_333_: f32;
-    var phi_334_: f32;
-    var phi_335_: f32;
-    var phi_336_: bool;
-    var phi_379_: f32;
-    var phi_380_: f32;
-    var phi_381_: f32;
-    var phi_382_: f32;
-    var phi_383_: bool;
-    var phi_422_: f32;
-    var phi_423_: f32;
+    var phi_251_: bool;
+    var phi_256_: f32;
+    var phi_266_: bool;
+    var phi_287_: u32;
+    var phi_342_: f32;
+    var phi_357_: f32;
+    var phi_358_: f32;
+    var phi_359_: f32;
+    var phi_360_: f32;
+    var phi_361_: bool;
+    var phi_383_: f32;
+    var phi_398_: f32;
+    var phi_399_: f32;
+    var phi_400_: f32;
+    var phi_401_: f32;
+    var phi_402_: bool;
     var phi_424_: f32;
-    var phi_425_: f32;
-    var phi_426_: bool;
-    var phi_464_: f32;
+    var phi_439_: f32;
+    var phi_440_: f32;
+    var phi_441_: f32;
+    var phi_442_: f32;
+    var phi_443_: bool;
     var phi_465_: f32;
-    var phi_466_: f32;
-    var phi_467_: f32;
-    var phi_468_: bool;
-    var phi_484_: array<f32, 4>;
-    var phi_485_: array<f32, 4>;
-    var phi_486_: array<f32, 4>;
-    var phi_487_: array<f32, 4>;
-    var phi_533_: f32;
-    var phi_534_: f32;
-    var phi_554_: f32;
-    var phi_555_: f32;
-    var phi_556_: f32;
-    var phi_557_: f32;
-    var phi_563_: f32;
-    var phi_564_: f32;
-    var phi_566_: f32;
-    var phi_567_: bool;
-    var phi_572_: f32;
-    var phi_582_: bool;
-    var phi_603_: u32;
-    var phi_735_: f32;
-    var phi_750_: f32;
-    var phi_751_: f32;
-    var phi_752_: f32;
-    var phi_753_: f32;
-    var phi_754_: bool;
-    var phi_776_: f32;
-    var phi_791_: f32;
+    var phi_480_: f32;
+    var phi_481_: f32;
+    var phi_482_: f32;
+    var phi_483_: f32;
+    var phi_484_: bool;
+    var phi_542_: f32;
+    var phi_543_: f32;
+    var phi_544_: f32;
+    var phi_545_: f32;
+    var phi_546_: bool;
+    var phi_585_: f32;
+    var phi_586_: f32;
+    var phi_587_: f32;
+    var phi_588_: f32;
+    var phi_589_: bool;
+    var phi_627_: f32;
+    var phi_628_: f32;
+    var phi_629_: f32;
+    var phi_630_: f32;
+    var phi_631_: bool;
+    var phi_710_: array<f32, 4>;
+    var phi_711_: array<f32, 4>;
+    var phi_720_: array<f32, 3>;
+    var phi_721_: f32;
+    var phi_737_: u32;
     var phi_792_: f32;
-    var phi_793_: f32;
-    var phi_794_: f32;
-    var phi_795_: bool;
-    var phi_817_: f32;
-    var phi_832_: f32;
+    var phi_807_: f32;
+    var phi_808_: f32;
+    var phi_809_: f32;
+    var phi_810_: f32;
+    var phi_811_: bool;
     var phi_833_: f32;
-    var phi_834_: f32;
-    var phi_835_: f32;
-    var phi_836_: bool;
-    var phi_858_: f32;
-    var phi_873_: f32;
+    var phi_848_: f32;
+    var phi_849_: f32;
+    var phi_850_: f32;
+    var phi_851_: f32;
+    var phi_852_: bool;
     var phi_874_: f32;
-    var phi_875_: f32;
-    var phi_876_: f32;
-    var phi_877_: bool;
-    var phi_935_: f32;
-    var phi_936_: f32;
-    var phi_937_: f32;
-    var phi_938_: f32;
-    var phi_939_: bool;
-    var phi_978_: f32;
-    var phi_979_: f32;
-    var phi_980_: f32;
-    var phi_981_: f32;
-    var phi_982_: bool;
-    var phi_1020_: f32;
-    var phi_1021_: f32;
-    var phi_1022_: f32;
-    var phi_1023_: f32;
-    var phi_1024_: bool;
-    var phi_1070_: array<f32, 4>;
-    var phi_1071_: array<f32, 4>;
-    var phi_1072_: array<f32, 4>;
-    var phi_1073_: array<f32, 4>;
-    var phi_1082_: array<f32, 3>;
-    var phi_1083_: f32;
-    var phi_1099_: u32;
-    var phi_1231_: f32;
-    var phi_1246_: f32;
-    var phi_1247_: f32;
-    var phi_1248_: f32;
-    var phi_1249_: f32;
-    var phi_1250_: bool;
-    var phi_1272_: f32;
-    var phi_1287_: f32;
-    var phi_1288_: f32;
-    var phi_1289_: f32;
-    var phi_1290_: f32;
-    var phi_1291_: bool;
-    var phi_1313_: f32;
-    var phi_1328_: f32;
-    var phi_1329_: f32;
+    var phi_889_: f32;
+    var phi_890_: f32;
+    var phi_891_: f32;
+    var phi_892_: f32;
+    var phi_893_: bool;
+    var phi_915_: f32;
+    var phi_930_: f32;
+    var phi_931_: f32;
+    var phi_932_: f32;
+    var phi_933_: f32;
+    var phi_934_: bool;
+    var phi_992_: f32;
+    var phi_993_: f32;
+    var phi_994_: f32;
+    var phi_995_: f32;
+    var phi_996_: bool;
+    var phi_1035_: f32;
+    var phi_1036_: f32;
+    var phi_1037_: f32;
+    var phi_1038_: f32;
+    var phi_1039_: bool;
+    var phi_1077_: f32;
+    var phi_1078_: f32;
+    var phi_1079_: f32;
+    var phi_1080_: f32;
+    var phi_1081_: bool;
+    var phi_1160_: array<f32, 4>;
+    var phi_1161_: array<f32, 4>;
+    var phi_1162_: array<f32, 3>;
+    var phi_1163_: f32;
+    var phi_1164_: bool;
+    var phi_1165_: array<f32, 4>;
+    var phi_1166_: bool;
+    var phi_1167_: bool;
+    var phi_1197_: array<f32, 3>;
+    var phi_1199_: array<f32, 3>;
+    var phi_1200_: f32;
+    var phi_1303_: bool;
     var phi_1330_: f32;
-    var phi_1331_: f32;
-    var phi_1332_: bool;
-    var phi_1354_: f32;
-    var phi_1369_: f32;
-    var phi_1370_: f32;
-    var phi_1371_: f32;
-    var phi_1372_: f32;
-    var phi_1373_: bool;
-    var phi_1431_: f32;
-    var phi_1432_: f32;
-    var phi_1433_: f32;
-    var phi_1434_: f32;
-    var phi_1435_: bool;
-    var phi_1474_: f32;
-    var phi_1475_: f32;
-    var phi_1476_: f32;
-    var phi_1477_: f32;
-    var phi_1478_: bool;
-    var phi_1516_: f32;
-    var phi_1517_: f32;
-    var phi_1518_: f32;
-    var phi_1519_: f32;
-    var phi_1520_: bool;
-    var phi_1566_: array<f32, 4>;
-    var phi_1567_: array<f32, 4>;
-    var phi_1568_: array<f32, 4>;
-    var phi_1569_: array<f32, 4>;
-    var phi_1570_: array<f32, 3>;
-    var phi_1571_: f32;
-    var phi_1572_: bool;
-    var phi_1573_: array<f32, 4>;
-    var phi_1574_: bool;
-    var phi_1575_: bool;
-    var phi_1605_: array<f32, 3>;
-    var phi_1607_: array<f32, 3>;
-    var phi_1608_: f32;
-    var phi_1711_: bool;
-    var phi_1738_: f32;
-    var phi_1740_: f32;
-    var phi_1741_: bool;
-    var phi_1742_: f32;
-    var phi_1743_: f32;
-    var phi_1744_: bool;
-    var phi_1745_: f32;
-    var phi_1746_: f32;
-    var phi_1747_: bool;
-    var phi_1748_: bool;
-    var phi_1749_: f32;
-    var phi_1750_: f32;
-    var phi_1751_: bool;
-    var phi_1752_: bool;
-    var phi_1770_: f32;
-    var phi_1771_: f32;
+    var phi_1332_: f32;
+    var phi_1333_: bool;
+    var phi_1334_: f32;
+    var phi_1335_: f32;
+    var phi_1336_: bool;
+    var phi_1337_: f32;
+    var phi_1338_: f32;
+    var phi_1339_: bool;
+    var phi_1340_: bool;
+    var phi_1341_: f32;
+    var phi_1342_: f32;
+    var phi_1343_: bool;
+    var phi_1344_: bool;
+    var phi_1362_: f32;
+    var phi_1363_: f32;
     var phi_127_: u32;
-    var phi_1802_: bool;
+    var phi_1394_: bool;
 
-    let _e207 = global_8;
-    local_151 = bitcast<f32>(_e207);
-    let _e209 = global_9;
-    let _e210 = bitcast<f32>(_e209);
-    local_152 = _e210;
+    let _e183 = global_8;
+    local_127 = bitcast<f32>(_e183);
+    let _e185 = global_9;
+    let _e186 = bitcast<f32>(_e185);
+    local_128 = _e186;
     switch bitcast<i32>(0u) {
         default: {
-            let _e212 = global;
-            local = _e212;
-            let _e213 = global_1;
-            let _e214 = global_2;
+            let _e188 = global;
+            local = _e188;
+            let _e189 = global_1;
+            let _e190 = global_2;
             local_1 = arrayLength((&global_4.member));
             local_2 = arrayLength((&global_3.member));
             local_3 = arrayLength((&global_6.member));
             local_4 = arrayLength((&global_7.member));
-            let _e228 = global_5.member.member.member;
-            let _e232 = global_5.member.member.member_1;
-            local_5 = (_e228 * _e232);
-            local_6 = (_e214.x * 256u);
-            phi_126_ = (_e213.x * 256u);
+            let _e204 = global_5.member.member.member;
+            let _e208 = global_5.member.member.member_1;
+            local_5 = (_e204 * _e208);
+            local_6 = (_e190.x * 256u);
+            phi_126_ = (_e189.x * 256u);
             loop {
-                let _e237 = phi_126_;
-                local_7 = _e237;
-                let _e238 = local_7;
-                let _e239 = local_5;
-                let _e240 = (_e238 < _e239);
-                local_8 = _e240;
-                if _e240 {
-                    let _e241 = local_7;
-                    let _e242 = local;
-                    let _e243 = (_e241 + _e242);
-                    local_9 = _e243;
-                    let _e244 = local_5;
-                    if (_e243 < _e244) {
-                        let _e246 = local_9;
-                        let _e247 = local_2;
-                        if (_e246 < _e247) {
+                let _e213 = phi_126_;
+                local_7 = _e213;
+                let _e214 = local_7;
+                let _e215 = local_5;
+                let _e216 = (_e214 < _e215);
+                local_8 = _e216;
+                if _e216 {
+                    let _e217 = local_7;
+                    let _e218 = local;
+                    let _e219 = (_e217 + _e218);
+                    local_9 = _e219;
+                    let _e220 = local_5;
+                    if (_e219 < _e220) {
+                        let _e222 = local_9;
+                        let _e223 = local_2;
+                        if (_e222 < _e223) {
                         } else {
-                            phi_1802_ = true;
+                            phi_1394_ = true;
                             break;
                         }
-                        let _e249 = local_9;
-                        let _e252 = global_3.member[_e249];
-                        local_10 = _e252;
-                        let _e256 = global_5.member.member.member_7;
-                        let _e258 = select(3u, 4u, (_e256 == 1u));
-                        local_133 = _e258;
-                        if (_e258 == 0u) {
-                            let _e260 = local_10;
-                            let _e261 = bitcast<f32>(_e260);
-                            phi_487_ = array<f32, 4>(_e261, _e261, _e261, _e261);
+                        let _e225 = local_9;
+                        let _e228 = global_3.member[_e225];
+                        local_10 = _e228;
+                        let _e232 = global_5.member.member.member_7;
+                        if (select(3u, 4u, (_e232 == 1u)) == 4u) {
+                            let _e236 = local_10;
+                            phi_172_ = (f32((_e236 & 16777215u)) * 0.00000005960465f);
                         } else {
-                            let _e263 = local_133;
-                            if (_e263 == 1u) {
-                                let _e265 = local_10;
-                                let _e266 = (_e265 & 65535u);
-                                local_11 = ((_e266 & 32768u) << bitcast<u32>(16i));
-                                let _e272 = ((_e266 >> bitcast<u32>(10i)) & 31u);
-                                local_12 = _e272;
-                                local_13 = (_e266 & 1023u);
-                                let _e274 = (_e272 == 0u);
-                                local_14 = _e274;
-                                if _e274 {
-                                    let _e275 = local_13;
-                                    let _e276 = f32(_e275);
-                                    local_15 = _e276;
-                                    let _e278 = local_11;
-                                    if (_e278 == 0u) {
-                                        phi_194_ = (_e276 * 0.000000059604645f);
-                                    } else {
-                                        let _e280 = local_15;
-                                        phi_194_ = (_e280 * -0.000000059604645f);
-                                    }
-                                    let _e283 = phi_194_;
-                                    phi_211_ = _e283;
-                                    phi_212_ = f32();
-                                    phi_213_ = true;
-                                } else {
-                                    let _e284 = local_12;
-                                    let _e285 = (_e284 == 31u);
-                                    if _e285 {
-                                        let _e286 = local_11;
-                                        let _e288 = local_13;
-                                        phi_209_ = bitcast<f32>(((_e286 | 2139095040u) | (_e288 << bitcast<u32>(13i))));
-                                        phi_210_ = f32();
-                                    } else {
-                                        let _e293 = local_12;
-                                        let _e297 = local_11;
-                                        let _e299 = local_13;
-                                        phi_209_ = f32();
-                                        phi_210_ = bitcast<f32>(((_e297 | ((_e293 + 112u) << bitcast<u32>(23i))) | (_e299 << bitcast<u32>(13i))));
-                                    }
-                                    let _e305 = phi_209_;
-                                    let _e307 = phi_210_;
-                                    phi_211_ = _e305;
-                                    phi_212_ = _e307;
-                                    phi_213_ = _e285;
-                                }
-                                let _e309 = phi_211_;
-                                let _e311 = phi_212_;
-                                let _e313 = phi_213_;
-                                local_134 = select(_e311, _e309, _e313);
-                                let _e315 = local_10;
-                                let _e317 = (_e315 >> bitcast<u32>(16i));
-                                local_16 = ((_e317 & 32768u) << bitcast<u32>(16i));
-                                let _e323 = ((_e317 >> bitcast<u32>(10i)) & 31u);
-                                local_17 = _e323;
-                                local_18 = (_e317 & 1023u);
-                                let _e325 = (_e323 == 0u);
-                                local_19 = _e325;
-                                if _e325 {
-                                    let _e326 = local_18;
-                                    let _e327 = f32(_e326);
-                                    local_20 = _e327;
-                                    let _e329 = local_16;
-                                    if (_e329 == 0u) {
-                                        phi_235_ = (_e327 * 0.000000059604645f);
-                                    } else {
-                                        let _e331 = local_20;
-                                        phi_235_ = (_e331 * -0.000000059604645f);
-                                    }
-                                    let _e334 = phi_235_;
-                                    phi_252_ = _e334;
-                                    phi_253_ = f32();
-                                    phi_254_ = true;
-                                } else {
-                                    let _e335 = local_17;
-                                    let _e336 = (_e335 == 31u);
-                                    if _e336 {
-                                        let _e337 = local_16;
-                                        let _e339 = local_18;
-                                        phi_250_ = bitcast<f32>(((_e337 | 2139095040u) | (_e339 << bitcast<u32>(13i))));
-                                        phi_251_ = f32();
-                                    } else {
-                                        let _e344 = local_17;
-                                        let _e348 = local_16;
-                                        let _e350 = local_18;
-                                        phi_250_ = f32();
-                                        phi_251_ = bitcast<f32>(((_e348 | ((_e344 + 112u) << bitcast<u32>(23i))) | (_e350 << bitcast<u32>(13i))));
-                                    }
-                                    let _e356 = phi_250_;
-                                    let _e358 = phi_251_;
-                                    phi_252_ = _e356;
-                                    phi_253_ = _e358;
-                                    phi_254_ = _e336;
-                                }
-                                let _e360 = phi_252_;
-                                let _e362 = phi_253_;
-                                let _e364 = phi_254_;
-                                local_135 = select(_e362, _e360, _e364);
-                                let _e366 = local_14;
-                                if _e366 {
-                                    let _e367 = local_13;
-                                    let _e368 = f32(_e367);
-                                    local_21 = _e368;
-                                    let _e370 = local_11;
-                                    if (_e370 == 0u) {
-                                        phi_276_ = (_e368 * 0.000000059604645f);
-                                    } else {
-                                        let _e372 = local_21;
-                                        phi_276_ = (_e372 * -0.000000059604645f);
-                                    }
-                                    let _e375 = phi_276_;
-                                    phi_293_ = _e375;
-                                    phi_294_ = f32();
-                                    phi_295_ = true;
-                                } else {
-                                    let _e376 = local_12;
-                                    let _e377 = (_e376 == 31u);
-                                    if _e377 {
-                                        let _e378 = local_11;
-                                        let _e380 = local_13;
-                                        phi_291_ = bitcast<f32>(((_e378 | 2139095040u) | (_e380 << bitcast<u32>(13i))));
-                                        phi_292_ = f32();
-                                    } else {
-                                        let _e385 = local_12;
-                                        let _e389 = local_11;
-                                        let _e391 = local_13;
-                                        phi_291_ = f32();
-                                        phi_292_ = bitcast<f32>(((_e389 | ((_e385 + 112u) << bitcast<u32>(23i))) | (_e391 << bitcast<u32>(13i))));
-                                    }
-                                    let _e397 = phi_291_;
-                                    let _e399 = phi_292_;
-                                    phi_293_ = _e397;
-                                    phi_294_ = _e399;
-                                    phi_295_ = _e377;
-                                }
-                                let _e401 = phi_293_;
-                                let _e403 = phi_294_;
-                                let _e405 = phi_295_;
-                                local_136 = select(_e403, _e401, _e405);
-                                let _e407 = local_19;
-                                if _e407 {
-                                    let _e408 = local_18;
-                                    let _e409 = f32(_e408);
-                                    local_22 = _e409;
-                                    let _e411 = local_16;
-                                    if (_e411 == 0u) {
-                                        phi_317_ = (_e409 * 0.000000059604645f);
-                                    } else {
-                                        let _e413 = local_22;
-                                        phi_317_ = (_e413 * -0.000000059604645f);
-                                    }
-                                    let _e416 = phi_317_;
-                                    phi_334_ = _e416;
-                                    phi_335_ = f32();
-                                    phi_336_ = true;
-                                } else {
-                                    let _e417 = local_17;
-                                    let _e418 = (_e417 == 31u);
-                                    if _e418 {
-                                        let _e419 = local_16;
-                                        let _e421 = local_18;
-                                        phi_332_ = bitcast<f32>(((_e419 | 2139095040u) | (_e421 << bitcast<u32>(13i))));
-                                        phi_333_ = f32();
-                                    } else {
-                                        let _e426 = local_17;
-                                        let _e430 = local_16;
-                                        let _e432 = local_18;
-                                        phi_332_ = f32();
-                                        phi_333_ = bitcast<f32>(((_e430 | ((_e426 + 112u) << bitcast<u32>(23i))) | (_e432 << bitcast<u32>(13i))));
-                                    }
-                                    let _e438 = phi_332_;
-                                    let _e440 = phi_333_;
-                                    phi_334_ = _e438;
-                                    phi_335_ = _e440;
-                                    phi_336_ = _e418;
-                                }
-                                let _e442 = phi_334_;
-                                let _e444 = phi_335_;
-                                let _e446 = phi_336_;
-                                let _e448 = local_134;
-                                let _e449 = local_135;
-                                let _e450 = local_136;
-                                phi_486_ = array<f32, 4>(_e448, _e449, _e450, select(_e444, _e442, _e446));
-                            } else {
-                                let _e452 = local_133;
-                                if (_e452 == 2u) {
-                                    let _e454 = local_10;
-                                    let _e455 = (_e454 & 2047u);
-                                    let _e458 = ((_e455 >> bitcast<u32>(6u)) & 31u);
-                                    local_23 = _e458;
-                                    local_24 = (_e455 & 63u);
-                                    if (_e458 == 0u) {
-                                        let _e461 = local_24;
-                                        phi_381_ = (f32(_e461) * 0.0000009536743f);
-                                        phi_382_ = f32();
-                                        phi_383_ = true;
-                                    } else {
-                                        let _e464 = local_23;
-                                        let _e465 = (_e464 == 31u);
-                                        if _e465 {
-                                            let _e466 = local_24;
-                                            phi_379_ = bitcast<f32>((2139095040u | (_e466 << bitcast<u32>(17u))));
-                                            phi_380_ = f32();
-                                        } else {
-                                            let _e471 = local_23;
-                                            let _e475 = local_24;
-                                            phi_379_ = f32();
-                                            phi_380_ = bitcast<f32>((((_e471 + 112u) << bitcast<u32>(23i)) | (_e475 << bitcast<u32>(17u))));
-                                        }
-                                        let _e481 = phi_379_;
-                                        let _e483 = phi_380_;
-                                        phi_381_ = _e481;
-                                        phi_382_ = _e483;
-                                        phi_383_ = _e465;
-                                    }
-                                    let _e485 = phi_381_;
-                                    let _e487 = phi_382_;
-                                    let _e489 = phi_383_;
-                                    local_137 = select(_e487, _e485, _e489);
-                                    let _e491 = local_10;
-                                    let _e494 = ((_e491 >> bitcast<u32>(11i)) & 2047u);
-                                    let _e497 = ((_e494 >> bitcast<u32>(6u)) & 31u);
-                                    local_25 = _e497;
-                                    local_26 = (_e494 & 63u);
-                                    if (_e497 == 0u) {
-                                        let _e500 = local_26;
-                                        phi_424_ = (f32(_e500) * 0.0000009536743f);
-                                        phi_425_ = f32();
-                                        phi_426_ = true;
-                                    } else {
-                                        let _e503 = local_25;
-                                        let _e504 = (_e503 == 31u);
-                                        if _e504 {
-                                            let _e505 = local_26;
-                                            phi_422_ = bitcast<f32>((2139095040u | (_e505 << bitcast<u32>(17u))));
-                                            phi_423_ = f32();
-                                        } else {
-                                            let _e510 = local_25;
-                                            let _e514 = local_26;
-                                            phi_422_ = f32();
-                                            phi_423_ = bitcast<f32>((((_e510 + 112u) << bitcast<u32>(23i)) | (_e514 << bitcast<u32>(17u))));
-                                        }
-                                        let _e520 = phi_422_;
-                                        let _e522 = phi_423_;
-                                        phi_424_ = _e520;
-                                        phi_425_ = _e522;
-                                        phi_426_ = _e504;
-                                    }
-                                    let _e524 = phi_424_;
-                                    let _e526 = phi_425_;
-                                    let _e528 = phi_426_;
-                                    local_138 = select(_e526, _e524, _e528);
-                                    let _e530 = local_10;
-                                    let _e532 = (_e530 >> bitcast<u32>(22i));
-                                    let _e535 = ((_e532 >> bitcast<u32>(5u)) & 31u);
-                                    local_27 = _e535;
-                                    local_28 = (_e532 & 31u);
-                                    if (_e535 == 0u) {
-                                        let _e538 = local_28;
-                                        phi_466_ = (f32(_e538) * 0.0000019073486f);
-                                        phi_467_ = f32();
-                                        phi_468_ = true;
-                                    } else {
-                                        let _e541 = local_27;
-                                        let _e542 = (_e541 == 31u);
-                                        if _e542 {
-                                            let _e543 = local_28;
-                                            phi_464_ = bitcast<f32>((2139095040u | (_e543 << bitcast<u32>(18u))));
-                                            phi_465_ = f32();
-                                        } else {
-                                            let _e548 = local_27;
-                                            let _e552 = local_28;
-                                            phi_464_ = f32();
-                                            phi_465_ = bitcast<f32>((((_e548 + 112u) << bitcast<u32>(23i)) | (_e552 << bitcast<u32>(18u))));
-                                        }
-                                        let _e558 = phi_464_;
-                                        let _e560 = phi_465_;
-                                        phi_466_ = _e558;
-                                        phi_467_ = _e560;
-                                        phi_468_ = _e542;
-                                    }
-                                    let _e562 = phi_466_;
-                                    let _e564 = phi_467_;
-                                    let _e566 = phi_468_;
-                                    let _e568 = local_137;
-                                    let _e569 = local_138;
-                                    phi_485_ = array<f32, 4>(_e568, _e569, select(_e564, _e562, _e566), 1f);
-                                } else {
-                                    let _e571 = local_133;
-                                    if (_e571 == 4u) {
-                                        let _e573 = local_10;
-                                        phi_484_ = array<f32, 4>((f32((_e573 & 16777215u)) * 0.00000005960465f), 0f, 0f, 1f);
-                                    } else {
-                                        let _e578 = local_10;
-                                        phi_484_ = array<f32, 4>(bitcast<f32>(_e578), 0f, 0f, 1f);
-                                    }
-                                    let _e582 = phi_484_;
-                                    phi_485_ = _e582;
-                                }
-                                let _e584 = phi_485_;
-                                phi_486_ = _e584;
-                            }
-                            let _e586 = phi_486_;
-                            phi_487_ = _e586;
+                            let _e240 = local_10;
+                            phi_172_ = bitcast<f32>(_e240);
                         }
-                        let _e588 = phi_487_;
-                        local_29 = _e588[0];
-                        let _e593 = global_5.member.member.member_3;
-                        local_30 = _e593;
-                        if (_e593 == 0u) {
-                            phi_572_ = _e588[0];
+                        let _e243 = phi_172_;
+                        local_11 = _e243;
+                        let _e247 = global_5.member.member.member_3;
+                        local_12 = _e247;
+                        if (_e247 == 0u) {
+                            phi_256_ = _e243;
                         } else {
-                            let _e595 = local_29;
-                            if (_e595 >= 0f) {
-                                let _e597 = local_29;
-                                let _e598 = (_e597 <= 1f);
-                                local_31 = _e598;
-                                if _e598 {
-                                    let _e602 = global_5.member.member.member_5;
-                                    local_32 = _e602;
-                                    let _e603 = local_152;
-                                    local_33 = (_e602 == _e603);
-                                    let _e605 = local_30;
-                                    if (_e605 == 1u) {
-                                        let _e607 = local_33;
-                                        if _e607 {
-                                            let _e611 = global_5.member.member.member_4;
-                                            let _e612 = local_29;
-                                            phi_533_ = (1f - _e612);
-                                            phi_534_ = _e611;
+                            let _e249 = local_11;
+                            if (_e249 >= 0f) {
+                                let _e251 = local_11;
+                                let _e252 = (_e251 <= 1f);
+                                local_13 = _e252;
+                                if _e252 {
+                                    let _e256 = global_5.member.member.member_5;
+                                    local_14 = _e256;
+                                    let _e257 = local_128;
+                                    local_15 = (_e256 == _e257);
+                                    let _e259 = local_12;
+                                    if (_e259 == 1u) {
+                                        let _e261 = local_15;
+                                        if _e261 {
+                                            let _e265 = global_5.member.member.member_4;
+                                            let _e266 = local_11;
+                                            phi_217_ = (1f - _e266);
+                                            phi_218_ = _e265;
                                         } else {
-                                            let _e617 = global_5.member.member.member_4;
-                                            let _e618 = local_32;
-                                            let _e620 = local_32;
-                                            let _e622 = local_29;
-                                            let _e624 = local_32;
-                                            phi_533_ = (_e624 - (_e622 * (_e620 - _e617)));
-                                            phi_534_ = (_e617 * _e618);
+                                            let _e271 = global_5.member.member.member_4;
+                                            let _e272 = local_14;
+                                            let _e274 = local_14;
+                                            let _e276 = local_11;
+                                            let _e278 = local_14;
+                                            phi_217_ = (_e278 - (_e276 * (_e274 - _e271)));
+                                            phi_218_ = (_e271 * _e272);
                                         }
-                                        let _e627 = phi_533_;
-                                        let _e629 = phi_534_;
-                                        phi_556_ = _e627;
-                                        phi_557_ = _e629;
+                                        let _e281 = phi_217_;
+                                        let _e283 = phi_218_;
+                                        phi_240_ = _e281;
+                                        phi_241_ = _e283;
                                     } else {
-                                        let _e630 = local_33;
-                                        if _e630 {
-                                            let _e634 = global_5.member.member.member_4;
-                                            phi_554_ = _e588[0];
-                                            phi_555_ = _e634;
+                                        let _e284 = local_15;
+                                        if _e284 {
+                                            let _e288 = global_5.member.member.member_4;
+                                            phi_238_ = _e243;
+                                            phi_239_ = _e288;
                                         } else {
-                                            let _e638 = global_5.member.member.member_4;
-                                            let _e639 = local_32;
-                                            let _e641 = local_32;
-                                            let _e643 = local_29;
-                                            phi_554_ = (_e638 + (_e643 * (_e641 - _e638)));
-                                            phi_555_ = (_e638 * _e639);
+                                            let _e292 = global_5.member.member.member_4;
+                                            let _e293 = local_14;
+                                            let _e295 = local_14;
+                                            let _e297 = local_11;
+                                            phi_238_ = (_e292 + (_e297 * (_e295 - _e292)));
+                                            phi_239_ = (_e292 * _e293);
                                         }
-                                        let _e647 = phi_554_;
-                                        let _e649 = phi_555_;
-                                        phi_556_ = _e647;
-                                        phi_557_ = _e649;
+                                        let _e301 = phi_238_;
+                                        let _e303 = phi_239_;
+                                        phi_240_ = _e301;
+                                        phi_241_ = _e303;
                                     }
-                                    let _e651 = phi_556_;
-                                    let _e653 = phi_557_;
-                                    local_34 = _e651;
-                                    local_35 = _e653;
-                                    if (_e651 <= 0f) {
-                                        phi_563_ = _e210;
+                                    let _e305 = phi_240_;
+                                    let _e307 = phi_241_;
+                                    local_16 = _e305;
+                                    local_17 = _e307;
+                                    if (_e305 <= 0f) {
+                                        phi_247_ = _e186;
                                     } else {
-                                        let _e655 = local_35;
-                                        let _e656 = local_34;
-                                        phi_563_ = (_e655 / _e656);
+                                        let _e309 = local_17;
+                                        let _e310 = local_16;
+                                        phi_247_ = (_e309 / _e310);
                                     }
-                                    let _e659 = phi_563_;
-                                    phi_564_ = _e659;
+                                    let _e313 = phi_247_;
+                                    phi_248_ = _e313;
                                 } else {
-                                    phi_564_ = f32();
+                                    phi_248_ = f32();
                                 }
-                                let _e661 = phi_564_;
-                                let _e662 = local_31;
-                                phi_566_ = _e661;
-                                phi_567_ = select(true, false, _e662);
+                                let _e315 = phi_248_;
+                                let _e316 = local_13;
+                                phi_250_ = _e315;
+                                phi_251_ = select(true, false, _e316);
                             } else {
-                                phi_566_ = f32();
-                                phi_567_ = true;
+                                phi_250_ = f32();
+                                phi_251_ = true;
                             }
-                            let _e665 = phi_566_;
-                            let _e667 = phi_567_;
-                            let _e668 = local_151;
-                            phi_572_ = select(_e665, _e668, _e667);
+                            let _e319 = phi_250_;
+                            let _e321 = phi_251_;
+                            let _e322 = local_127;
+                            phi_256_ = select(_e319, _e322, _e321);
                         }
-                        let _e671 = phi_572_;
-                        local_36 = _e671;
-                        let _e672 = local_30;
-                        if (_e672 == 2u) {
-                            let _e674 = local_29;
-                            phi_582_ = (_e674 > 0f);
+                        let _e325 = phi_256_;
+                        local_18 = _e325;
+                        let _e326 = local_12;
+                        if (_e326 == 2u) {
+                            let _e328 = local_11;
+                            phi_266_ = (_e328 > 0f);
                         } else {
-                            let _e676 = local_29;
-                            phi_582_ = (_e676 < 1f);
+                            let _e330 = local_11;
+                            phi_266_ = (_e330 < 1f);
                         }
-                        let _e679 = phi_582_;
-                        if _e679 {
-                            let _e680 = local_36;
-                            let _e683 = ((bitcast<u32>(_e680) & 2139095040u) != 2139095040u);
-                            local_37 = _e683;
-                            let _e687 = global_5.member.member.member_2;
-                            local_38 = _e687;
-                            if (_e687 == 1u) {
-                                phi_603_ = 2u;
+                        let _e333 = phi_266_;
+                        if _e333 {
+                            let _e334 = local_18;
+                            let _e337 = ((bitcast<u32>(_e334) & 2139095040u) != 2139095040u);
+                            local_19 = _e337;
+                            let _e341 = global_5.member.member.member_2;
+                            local_20 = _e341;
+                            if (_e341 == 1u) {
+                                phi_287_ = 2u;
                             } else {
-                                let _e689 = local_38;
-                                phi_603_ = select(0u, 1u, (_e689 == 2u));
+                                let _e343 = local_20;
+                                phi_287_ = select(0u, 1u, (_e343 == 2u));
                             }
-                            let _e693 = phi_603_;
-                            local_39 = _e693;
-                            if (_e693 == 0u) {
-                                let _e695 = local_9;
-                                let _e696 = (4u * _e695);
-                                local_40 = _e696;
-                                let _e697 = local_1;
-                                if (_e696 < _e697) {
+                            let _e347 = phi_287_;
+                            local_21 = _e347;
+                            if (_e347 == 1u) {
+                                let _e349 = local_9;
+                                let _e350 = (2u * _e349);
+                                local_22 = _e350;
+                                let _e351 = local_1;
+                                if (_e350 < _e351) {
                                 } else {
-                                    phi_1802_ = true;
+                                    phi_1394_ = true;
                                     break;
                                 }
-                                let _e699 = local_40;
-                                let _e702 = global_4.member[_e699];
-                                local_41 = bitcast<f32>(_e702);
-                                let _e704 = local_40;
-                                let _e705 = (_e704 + 1u);
-                                local_42 = _e705;
-                                let _e706 = local_1;
-                                if (_e705 < _e706) {
+                                let _e353 = local_22;
+                                let _e356 = global_4.member[_e353];
+                                local_23 = _e356;
+                                let _e357 = local_22;
+                                let _e358 = (_e357 + 1u);
+                                local_24 = _e358;
+                                let _e359 = local_1;
+                                if (_e358 < _e359) {
                                 } else {
-                                    phi_1802_ = true;
+                                    phi_1394_ = true;
                                     break;
                                 }
-                                let _e708 = local_42;
-                                let _e711 = global_4.member[_e708];
-                                local_43 = bitcast<f32>(_e711);
-                                let _e713 = local_40;
-                                let _e714 = (_e713 + 2u);
-                                local_44 = _e714;
-                                let _e715 = local_1;
-                                if (_e714 < _e715) {
-                                } else {
-                                    phi_1802_ = true;
-                                    break;
-                                }
-                                let _e717 = local_44;
-                                let _e720 = global_4.member[_e717];
-                                local_45 = bitcast<f32>(_e720);
-                                let _e722 = local_40;
-                                let _e723 = (_e722 + 3u);
-                                local_46 = _e723;
-                                let _e724 = local_1;
-                                if (_e723 < _e724) {
-                                } else {
-                                    phi_1802_ = true;
-                                    break;
-                                }
-                                let _e726 = local_46;
-                                let _e729 = global_4.member[_e726];
-                                let _e731 = local_41;
-                                let _e732 = local_43;
-                                let _e733 = local_45;
-                                phi_1073_ = array<f32, 4>(_e731, _e732, _e733, bitcast<f32>(_e729));
-                            } else {
-                                let _e735 = local_39;
-                                if (_e735 == 1u) {
-                                    let _e737 = local_9;
-                                    let _e738 = (2u * _e737);
-                                    local_47 = _e738;
-                                    let _e739 = local_1;
-                                    if (_e738 < _e739) {
+                                let _e361 = local_24;
+                                let _e364 = global_4.member[_e361];
+                                local_25 = _e364;
+                                let _e365 = local_23;
+                                let _e366 = (_e365 & 65535u);
+                                local_26 = ((_e366 & 32768u) << bitcast<u32>(16i));
+                                let _e372 = ((_e366 >> bitcast<u32>(10i)) & 31u);
+                                local_27 = _e372;
+                                local_28 = (_e366 & 1023u);
+                                if (_e372 == 0u) {
+                                    let _e375 = local_28;
+                                    let _e376 = f32(_e375);
+                                    local_29 = _e376;
+                                    let _e378 = local_26;
+                                    if (_e378 == 0u) {
+                                        phi_342_ = (_e376 * 0.000000059604645f);
                                     } else {
-                                        phi_1802_ = true;
+                                        let _e380 = local_29;
+                                        phi_342_ = (_e380 * -0.000000059604645f);
+                                    }
+                                    let _e383 = phi_342_;
+                                    phi_359_ = _e383;
+                                    phi_360_ = f32();
+                                    phi_361_ = true;
+                                } else {
+                                    let _e384 = local_27;
+                                    let _e385 = (_e384 == 31u);
+                                    if _e385 {
+                                        let _e386 = local_26;
+                                        let _e388 = local_28;
+                                        phi_357_ = bitcast<f32>(((_e386 | 2139095040u) | (_e388 << bitcast<u32>(13i))));
+                                        phi_358_ = f32();
+                                    } else {
+                                        let _e393 = local_27;
+                                        let _e397 = local_26;
+                                        let _e399 = local_28;
+                                        phi_357_ = f32();
+                                        phi_358_ = bitcast<f32>(((_e397 | ((_e393 + 112u) << bitcast<u32>(23i))) | (_e399 << bitcast<u32>(13i))));
+                                    }
+                                    let _e405 = phi_357_;
+                                    let _e407 = phi_358_;
+                                    phi_359_ = _e405;
+                                    phi_360_ = _e407;
+                                    phi_361_ = _e385;
+                                }
+                                let _e409 = phi_359_;
+                                let _e411 = phi_360_;
+                                let _e413 = phi_361_;
+                                local_115 = select(_e411, _e409, _e413);
+                                let _e415 = local_23;
+                                let _e417 = (_e415 >> bitcast<u32>(16i));
+                                local_30 = ((_e417 & 32768u) << bitcast<u32>(16i));
+                                let _e423 = ((_e417 >> bitcast<u32>(10i)) & 31u);
+                                local_31 = _e423;
+                                local_32 = (_e417 & 1023u);
+                                if (_e423 == 0u) {
+                                    let _e426 = local_32;
+                                    let _e427 = f32(_e426);
+                                    local_33 = _e427;
+                                    let _e429 = local_30;
+                                    if (_e429 == 0u) {
+                                        phi_383_ = (_e427 * 0.000000059604645f);
+                                    } else {
+                                        let _e431 = local_33;
+                                        phi_383_ = (_e431 * -0.000000059604645f);
+                                    }
+                                    let _e434 = phi_383_;
+                                    phi_400_ = _e434;
+                                    phi_401_ = f32();
+                                    phi_402_ = true;
+                                } else {
+                                    let _e435 = local_31;
+                                    let _e436 = (_e435 == 31u);
+                                    if _e436 {
+                                        let _e437 = local_30;
+                                        let _e439 = local_32;
+                                        phi_398_ = bitcast<f32>(((_e437 | 2139095040u) | (_e439 << bitcast<u32>(13i))));
+                                        phi_399_ = f32();
+                                    } else {
+                                        let _e444 = local_31;
+                                        let _e448 = local_30;
+                                        let _e450 = local_32;
+                                        phi_398_ = f32();
+                                        phi_399_ = bitcast<f32>(((_e448 | ((_e444 + 112u) << bitcast<u32>(23i))) | (_e450 << bitcast<u32>(13i))));
+                                    }
+                                    let _e456 = phi_398_;
+                                    let _e458 = phi_399_;
+                                    phi_400_ = _e456;
+                                    phi_401_ = _e458;
+                                    phi_402_ = _e436;
+                                }
+                                let _e460 = phi_400_;
+                                let _e462 = phi_401_;
+                                let _e464 = phi_402_;
+                                local_116 = select(_e462, _e460, _e464);
+                                let _e466 = local_25;
+                                let _e467 = (_e466 & 65535u);
+                                local_34 = ((_e467 & 32768u) << bitcast<u32>(16i));
+                                let _e473 = ((_e467 >> bitcast<u32>(10i)) & 31u);
+                                local_35 = _e473;
+                                local_36 = (_e467 & 1023u);
+                                if (_e473 == 0u) {
+                                    let _e476 = local_36;
+                                    let _e477 = f32(_e476);
+                                    local_37 = _e477;
+                                    let _e479 = local_34;
+                                    if (_e479 == 0u) {
+                                        phi_424_ = (_e477 * 0.000000059604645f);
+                                    } else {
+                                        let _e481 = local_37;
+                                        phi_424_ = (_e481 * -0.000000059604645f);
+                                    }
+                                    let _e484 = phi_424_;
+                                    phi_441_ = _e484;
+                                    phi_442_ = f32();
+                                    phi_443_ = true;
+                                } else {
+                                    let _e485 = local_35;
+                                    let _e486 = (_e485 == 31u);
+                                    if _e486 {
+                                        let _e487 = local_34;
+                                        let _e489 = local_36;
+                                        phi_439_ = bitcast<f32>(((_e487 | 2139095040u) | (_e489 << bitcast<u32>(13i))));
+                                        phi_440_ = f32();
+                                    } else {
+                                        let _e494 = local_35;
+                                        let _e498 = local_34;
+                                        let _e500 = local_36;
+                                        phi_439_ = f32();
+                                        phi_440_ = bitcast<f32>(((_e498 | ((_e494 + 112u) << bitcast<u32>(23i))) | (_e500 << bitcast<u32>(13i))));
+                                    }
+                                    let _e506 = phi_439_;
+                                    let _e508 = phi_440_;
+                                    phi_441_ = _e506;
+                                    phi_442_ = _e508;
+                                    phi_443_ = _e486;
+                                }
+                                let _e510 = phi_441_;
+                                let _e512 = phi_442_;
+                                let _e514 = phi_443_;
+                                local_117 = select(_e512, _e510, _e514);
+                                let _e516 = local_25;
+                                let _e518 = (_e516 >> bitcast<u32>(16i));
+                                local_38 = ((_e518 & 32768u) << bitcast<u32>(16i));
+                                let _e524 = ((_e518 >> bitcast<u32>(10i)) & 31u);
+                                local_39 = _e524;
+                                local_40 = (_e518 & 1023u);
+                                if (_e524 == 0u) {
+                                    let _e527 = local_40;
+                                    let _e528 = f32(_e527);
+                                    local_41 = _e528;
+                                    let _e530 = local_38;
+                                    if (_e530 == 0u) {
+                                        phi_465_ = (_e528 * 0.000000059604645f);
+                                    } else {
+                                        let _e532 = local_41;
+                                        phi_465_ = (_e532 * -0.000000059604645f);
+                                    }
+                                    let _e535 = phi_465_;
+                                    phi_482_ = _e535;
+                                    phi_483_ = f32();
+                                    phi_484_ = true;
+                                } else {
+                                    let _e536 = local_39;
+                                    let _e537 = (_e536 == 31u);
+                                    if _e537 {
+                                        let _e538 = local_38;
+                                        let _e540 = local_40;
+                                        phi_480_ = bitcast<f32>(((_e538 | 2139095040u) | (_e540 << bitcast<u32>(13i))));
+                                        phi_481_ = f32();
+                                    } else {
+                                        let _e545 = local_39;
+                                        let _e549 = local_38;
+                                        let _e551 = local_40;
+                                        phi_480_ = f32();
+                                        phi_481_ = bitcast<f32>(((_e549 | ((_e545 + 112u) << bitcast<u32>(23i))) | (_e551 << bitcast<u32>(13i))));
+                                    }
+                                    let _e557 = phi_480_;
+                                    let _e559 = phi_481_;
+                                    phi_482_ = _e557;
+                                    phi_483_ = _e559;
+                                    phi_484_ = _e537;
+                                }
+                                let _e561 = phi_482_;
+                                let _e563 = phi_483_;
+                                let _e565 = phi_484_;
+                                let _e567 = local_115;
+                                let _e568 = local_116;
+                                let _e569 = local_117;
+                                phi_711_ = array<f32, 4>(_e567, _e568, _e569, select(_e563, _e561, _e565));
+                            } else {
+                                let _e571 = local_21;
+                                if (_e571 == 2u) {
+                                    let _e573 = local_9;
+                                    let _e574 = local_1;
+                                    if (_e573 < _e574) {
+                                    } else {
+                                        phi_1394_ = true;
                                         break;
                                     }
-                                    let _e741 = local_47;
-                                    let _e744 = global_4.member[_e741];
-                                    local_48 = _e744;
-                                    let _e745 = local_47;
-                                    let _e746 = (_e745 + 1u);
-                                    local_49 = _e746;
-                                    let _e747 = local_1;
-                                    if (_e746 < _e747) {
+                                    let _e576 = local_9;
+                                    let _e579 = global_4.member[_e576];
+                                    local_42 = _e579;
+                                    let _e580 = (_e579 & 2047u);
+                                    let _e583 = ((_e580 >> bitcast<u32>(6u)) & 31u);
+                                    local_43 = _e583;
+                                    local_44 = (_e580 & 63u);
+                                    if (_e583 == 0u) {
+                                        let _e586 = local_44;
+                                        phi_544_ = (f32(_e586) * 0.0000009536743f);
+                                        phi_545_ = f32();
+                                        phi_546_ = true;
                                     } else {
-                                        phi_1802_ = true;
+                                        let _e589 = local_43;
+                                        let _e590 = (_e589 == 31u);
+                                        if _e590 {
+                                            let _e591 = local_44;
+                                            phi_542_ = bitcast<f32>((2139095040u | (_e591 << bitcast<u32>(17u))));
+                                            phi_543_ = f32();
+                                        } else {
+                                            let _e596 = local_43;
+                                            let _e600 = local_44;
+                                            phi_542_ = f32();
+                                            phi_543_ = bitcast<f32>((((_e596 + 112u) << bitcast<u32>(23i)) | (_e600 << bitcast<u32>(17u))));
+                                        }
+                                        let _e606 = phi_542_;
+                                        let _e608 = phi_543_;
+                                        phi_544_ = _e606;
+                                        phi_545_ = _e608;
+                                        phi_546_ = _e590;
+                                    }
+                                    let _e610 = phi_544_;
+                                    let _e612 = phi_545_;
+                                    let _e614 = phi_546_;
+                                    local_118 = select(_e612, _e610, _e614);
+                                    let _e616 = local_42;
+                                    let _e619 = ((_e616 >> bitcast<u32>(11i)) & 2047u);
+                                    let _e622 = ((_e619 >> bitcast<u32>(6u)) & 31u);
+                                    local_45 = _e622;
+                                    local_46 = (_e619 & 63u);
+                                    if (_e622 == 0u) {
+                                        let _e625 = local_46;
+                                        phi_587_ = (f32(_e625) * 0.0000009536743f);
+                                        phi_588_ = f32();
+                                        phi_589_ = true;
+                                    } else {
+                                        let _e628 = local_45;
+                                        let _e629 = (_e628 == 31u);
+                                        if _e629 {
+                                            let _e630 = local_46;
+                                            phi_585_ = bitcast<f32>((2139095040u | (_e630 << bitcast<u32>(17u))));
+                                            phi_586_ = f32();
+                                        } else {
+                                            let _e635 = local_45;
+                                            let _e639 = local_46;
+                                            phi_585_ = f32();
+                                            phi_586_ = bitcast<f32>((((_e635 + 112u) << bitcast<u32>(23i)) | (_e639 << bitcast<u32>(17u))));
+                                        }
+                                        let _e645 = phi_585_;
+                                        let _e647 = phi_586_;
+                                        phi_587_ = _e645;
+                                        phi_588_ = _e647;
+                                        phi_589_ = _e629;
+                                    }
+                                    let _e649 = phi_587_;
+                                    let _e651 = phi_588_;
+                                    let _e653 = phi_589_;
+                                    local_119 = select(_e651, _e649, _e653);
+                                    let _e655 = local_42;
+                                    let _e657 = (_e655 >> bitcast<u32>(22i));
+                                    let _e660 = ((_e657 >> bitcast<u32>(5u)) & 31u);
+                                    local_47 = _e660;
+                                    local_48 = (_e657 & 31u);
+                                    if (_e660 == 0u) {
+                                        let _e663 = local_48;
+                                        phi_629_ = (f32(_e663) * 0.0000019073486f);
+                                        phi_630_ = f32();
+                                        phi_631_ = true;
+                                    } else {
+                                        let _e666 = local_47;
+                                        let _e667 = (_e666 == 31u);
+                                        if _e667 {
+                                            let _e668 = local_48;
+                                            phi_627_ = bitcast<f32>((2139095040u | (_e668 << bitcast<u32>(18u))));
+                                            phi_628_ = f32();
+                                        } else {
+                                            let _e673 = local_47;
+                                            let _e677 = local_48;
+                                            phi_627_ = f32();
+                                            phi_628_ = bitcast<f32>((((_e673 + 112u) << bitcast<u32>(23i)) | (_e677 << bitcast<u32>(18u))));
+                                        }
+                                        let _e683 = phi_627_;
+                                        let _e685 = phi_628_;
+                                        phi_629_ = _e683;
+                                        phi_630_ = _e685;
+                                        phi_631_ = _e667;
+                                    }
+                                    let _e687 = phi_629_;
+                                    let _e689 = phi_630_;
+                                    let _e691 = phi_631_;
+                                    let _e693 = local_118;
+                                    let _e694 = local_119;
+                                    phi_710_ = array<f32, 4>(_e693, _e694, select(_e689, _e687, _e691), 1f);
+                                } else {
+                                    let _e696 = local_9;
+                                    let _e697 = (4u * _e696);
+                                    local_49 = _e697;
+                                    let _e698 = local_1;
+                                    if (_e697 < _e698) {
+                                    } else {
+                                        phi_1394_ = true;
                                         break;
                                     }
-                                    let _e749 = local_49;
-                                    let _e752 = global_4.member[_e749];
-                                    local_50 = _e752;
-                                    let _e753 = local_48;
-                                    let _e754 = (_e753 & 65535u);
-                                    local_51 = ((_e754 & 32768u) << bitcast<u32>(16i));
-                                    let _e760 = ((_e754 >> bitcast<u32>(10i)) & 31u);
-                                    local_52 = _e760;
-                                    local_53 = (_e754 & 1023u);
-                                    if (_e760 == 0u) {
-                                        let _e763 = local_53;
-                                        let _e764 = f32(_e763);
-                                        local_54 = _e764;
-                                        let _e766 = local_51;
-                                        if (_e766 == 0u) {
-                                            phi_735_ = (_e764 * 0.000000059604645f);
-                                        } else {
-                                            let _e768 = local_54;
-                                            phi_735_ = (_e768 * -0.000000059604645f);
-                                        }
-                                        let _e771 = phi_735_;
-                                        phi_752_ = _e771;
-                                        phi_753_ = f32();
-                                        phi_754_ = true;
+                                    let _e700 = local_49;
+                                    let _e703 = global_4.member[_e700];
+                                    local_50 = bitcast<f32>(_e703);
+                                    let _e705 = local_49;
+                                    let _e706 = (_e705 + 1u);
+                                    local_51 = _e706;
+                                    let _e707 = local_1;
+                                    if (_e706 < _e707) {
                                     } else {
-                                        let _e772 = local_52;
-                                        let _e773 = (_e772 == 31u);
-                                        if _e773 {
-                                            let _e774 = local_51;
-                                            let _e776 = local_53;
-                                            phi_750_ = bitcast<f32>(((_e774 | 2139095040u) | (_e776 << bitcast<u32>(13i))));
-                                            phi_751_ = f32();
-                                        } else {
-                                            let _e781 = local_52;
-                                            let _e785 = local_51;
-                                            let _e787 = local_53;
-                                            phi_750_ = f32();
-                                            phi_751_ = bitcast<f32>(((_e785 | ((_e781 + 112u) << bitcast<u32>(23i))) | (_e787 << bitcast<u32>(13i))));
-                                        }
-                                        let _e793 = phi_750_;
-                                        let _e795 = phi_751_;
-                                        phi_752_ = _e793;
-                                        phi_753_ = _e795;
-                                        phi_754_ = _e773;
+                                        phi_1394_ = true;
+                                        break;
                                     }
-                                    let _e797 = phi_752_;
-                                    let _e799 = phi_753_;
-                                    let _e801 = phi_754_;
-                                    local_139 = select(_e799, _e797, _e801);
-                                    let _e803 = local_48;
-                                    let _e805 = (_e803 >> bitcast<u32>(16i));
-                                    local_55 = ((_e805 & 32768u) << bitcast<u32>(16i));
-                                    let _e811 = ((_e805 >> bitcast<u32>(10i)) & 31u);
-                                    local_56 = _e811;
-                                    local_57 = (_e805 & 1023u);
-                                    if (_e811 == 0u) {
-                                        let _e814 = local_57;
-                                        let _e815 = f32(_e814);
-                                        local_58 = _e815;
-                                        let _e817 = local_55;
-                                        if (_e817 == 0u) {
-                                            phi_776_ = (_e815 * 0.000000059604645f);
-                                        } else {
-                                            let _e819 = local_58;
-                                            phi_776_ = (_e819 * -0.000000059604645f);
-                                        }
-                                        let _e822 = phi_776_;
-                                        phi_793_ = _e822;
-                                        phi_794_ = f32();
-                                        phi_795_ = true;
+                                    let _e709 = local_51;
+                                    let _e712 = global_4.member[_e709];
+                                    local_52 = bitcast<f32>(_e712);
+                                    let _e714 = local_49;
+                                    let _e715 = (_e714 + 2u);
+                                    local_53 = _e715;
+                                    let _e716 = local_1;
+                                    if (_e715 < _e716) {
                                     } else {
-                                        let _e823 = local_56;
-                                        let _e824 = (_e823 == 31u);
-                                        if _e824 {
-                                            let _e825 = local_55;
-                                            let _e827 = local_57;
-                                            phi_791_ = bitcast<f32>(((_e825 | 2139095040u) | (_e827 << bitcast<u32>(13i))));
-                                            phi_792_ = f32();
-                                        } else {
-                                            let _e832 = local_56;
-                                            let _e836 = local_55;
-                                            let _e838 = local_57;
-                                            phi_791_ = f32();
-                                            phi_792_ = bitcast<f32>(((_e836 | ((_e832 + 112u) << bitcast<u32>(23i))) | (_e838 << bitcast<u32>(13i))));
-                                        }
-                                        let _e844 = phi_791_;
-                                        let _e846 = phi_792_;
-                                        phi_793_ = _e844;
-                                        phi_794_ = _e846;
-                                        phi_795_ = _e824;
+                                        phi_1394_ = true;
+                                        break;
                                     }
-                                    let _e848 = phi_793_;
-                                    let _e850 = phi_794_;
-                                    let _e852 = phi_795_;
-                                    local_140 = select(_e850, _e848, _e852);
-                                    let _e854 = local_50;
-                                    let _e855 = (_e854 & 65535u);
-                                    local_59 = ((_e855 & 32768u) << bitcast<u32>(16i));
-                                    let _e861 = ((_e855 >> bitcast<u32>(10i)) & 31u);
-                                    local_60 = _e861;
-                                    local_61 = (_e855 & 1023u);
-                                    if (_e861 == 0u) {
-                                        let _e864 = local_61;
-                                        let _e865 = f32(_e864);
-                                        local_62 = _e865;
-                                        let _e867 = local_59;
-                                        if (_e867 == 0u) {
-                                            phi_817_ = (_e865 * 0.000000059604645f);
-                                        } else {
-                                            let _e869 = local_62;
-                                            phi_817_ = (_e869 * -0.000000059604645f);
-                                        }
-                                        let _e872 = phi_817_;
-                                        phi_834_ = _e872;
-                                        phi_835_ = f32();
-                                        phi_836_ = true;
+                                    let _e718 = local_53;
+                                    let _e721 = global_4.member[_e718];
+                                    local_54 = bitcast<f32>(_e721);
+                                    let _e723 = local_49;
+                                    let _e724 = (_e723 + 3u);
+                                    local_55 = _e724;
+                                    let _e725 = local_1;
+                                    if (_e724 < _e725) {
                                     } else {
-                                        let _e873 = local_60;
-                                        let _e874 = (_e873 == 31u);
-                                        if _e874 {
-                                            let _e875 = local_59;
-                                            let _e877 = local_61;
-                                            phi_832_ = bitcast<f32>(((_e875 | 2139095040u) | (_e877 << bitcast<u32>(13i))));
-                                            phi_833_ = f32();
-                                        } else {
-                                            let _e882 = local_60;
-                                            let _e886 = local_59;
-                                            let _e888 = local_61;
-                                            phi_832_ = f32();
-                                            phi_833_ = bitcast<f32>(((_e886 | ((_e882 + 112u) << bitcast<u32>(23i))) | (_e888 << bitcast<u32>(13i))));
-                                        }
-                                        let _e894 = phi_832_;
-                                        let _e896 = phi_833_;
-                                        phi_834_ = _e894;
-                                        phi_835_ = _e896;
-                                        phi_836_ = _e874;
+                                        phi_1394_ = true;
+                                        break;
                                     }
-                                    let _e898 = phi_834_;
-                                    let _e900 = phi_835_;
-                                    let _e902 = phi_836_;
-                                    local_141 = select(_e900, _e898, _e902);
-                                    let _e904 = local_50;
-                                    let _e906 = (_e904 >> bitcast<u32>(16i));
-                                    local_63 = ((_e906 & 32768u) << bitcast<u32>(16i));
-                                    let _e912 = ((_e906 >> bitcast<u32>(10i)) & 31u);
-                                    local_64 = _e912;
-                                    local_65 = (_e906 & 1023u);
-                                    if (_e912 == 0u) {
-                                        let _e915 = local_65;
-                                        let _e916 = f32(_e915);
-                                        local_66 = _e916;
-                                        let _e918 = local_63;
-                                        if (_e918 == 0u) {
-                                            phi_858_ = (_e916 * 0.000000059604645f);
-                                        } else {
-                                            let _e920 = local_66;
-                                            phi_858_ = (_e920 * -0.000000059604645f);
-                                        }
-                                        let _e923 = phi_858_;
-                                        phi_875_ = _e923;
-                                        phi_876_ = f32();
-                                        phi_877_ = true;
-                                    } else {
-                                        let _e924 = local_64;
-                                        let _e925 = (_e924 == 31u);
-                                        if _e925 {
-                                            let _e926 = local_63;
-                                            let _e928 = local_65;
-                                            phi_873_ = bitcast<f32>(((_e926 | 2139095040u) | (_e928 << bitcast<u32>(13i))));
-                                            phi_874_ = f32();
-                                        } else {
-                                            let _e933 = local_64;
-                                            let _e937 = local_63;
-                                            let _e939 = local_65;
-                                            phi_873_ = f32();
-                                            phi_874_ = bitcast<f32>(((_e937 | ((_e933 + 112u) << bitcast<u32>(23i))) | (_e939 << bitcast<u32>(13i))));
-                                        }
-                                        let _e945 = phi_873_;
-                                        let _e947 = phi_874_;
-                                        phi_875_ = _e945;
-                                        phi_876_ = _e947;
-                                        phi_877_ = _e925;
-                                    }
-                                    let _e949 = phi_875_;
-                                    let _e951 = phi_876_;
-                                    let _e953 = phi_877_;
-                                    let _e955 = local_139;
-                                    let _e956 = local_140;
-                                    let _e957 = local_141;
-                                    phi_1072_ = array<f32, 4>(_e955, _e956, _e957, select(_e951, _e949, _e953));
-                                } else {
-                                    let _e959 = local_39;
-                                    if (_e959 == 2u) {
-                                        let _e961 = local_9;
-                                        let _e962 = local_1;
-                                        if (_e961 < _e962) {
-                                        } else {
-                                            phi_1802_ = true;
-                                            break;
-                                        }
-                                        let _e964 = local_9;
-                                        let _e967 = global_4.member[_e964];
-                                        local_67 = _e967;
-                                        let _e968 = (_e967 & 2047u);
-                                        let _e971 = ((_e968 >> bitcast<u32>(6u)) & 31u);
-                                        local_68 = _e971;
-                                        local_69 = (_e968 & 63u);
-                                        if (_e971 == 0u) {
-                                            let _e974 = local_69;
-                                            phi_937_ = (f32(_e974) * 0.0000009536743f);
-                                            phi_938_ = f32();
-                                            phi_939_ = true;
-                                        } else {
-                                            let _e977 = local_68;
-                                            let _e978 = (_e977 == 31u);
-                                            if _e978 {
-                                                let _e979 = local_69;
-                                                phi_935_ = bitcast<f32>((2139095040u | (_e979 << bitcast<u32>(17u))));
-                                                phi_936_ = f32();
-                                            } else {
-                                                let _e984 = local_68;
-                                                let _e988 = local_69;
-                                                phi_935_ = f32();
-                                                phi_936_ = bitcast<f32>((((_e984 + 112u) << bitcast<u32>(23i)) | (_e988 << bitcast<u32>(17u))));
-                                            }
-                                            let _e994 = phi_935_;
-                                            let _e996 = phi_936_;
-                                            phi_937_ = _e994;
-                                            phi_938_ = _e996;
-                                            phi_939_ = _e978;
-                                        }
-                                        let _e998 = phi_937_;
-                                        let _e1000 = phi_938_;
-                                        let _e1002 = phi_939_;
-                                        local_142 = select(_e1000, _e998, _e1002);
-                                        let _e1004 = local_67;
-                                        let _e1007 = ((_e1004 >> bitcast<u32>(11i)) & 2047u);
-                                        let _e1010 = ((_e1007 >> bitcast<u32>(6u)) & 31u);
-                                        local_70 = _e1010;
-                                        local_71 = (_e1007 & 63u);
-                                        if (_e1010 == 0u) {
-                                            let _e1013 = local_71;
-                                            phi_980_ = (f32(_e1013) * 0.0000009536743f);
-                                            phi_981_ = f32();
-                                            phi_982_ = true;
-                                        } else {
-                                            let _e1016 = local_70;
-                                            let _e1017 = (_e1016 == 31u);
-                                            if _e1017 {
-                                                let _e1018 = local_71;
-                                                phi_978_ = bitcast<f32>((2139095040u | (_e1018 << bitcast<u32>(17u))));
-                                                phi_979_ = f32();
-                                            } else {
-                                                let _e1023 = local_70;
-                                                let _e1027 = local_71;
-                                                phi_978_ = f32();
-                                                phi_979_ = bitcast<f32>((((_e1023 + 112u) << bitcast<u32>(23i)) | (_e1027 << bitcast<u32>(17u))));
-                                            }
-                                            let _e1033 = phi_978_;
-                                            let _e1035 = phi_979_;
-                                            phi_980_ = _e1033;
-                                            phi_981_ = _e1035;
-                                            phi_982_ = _e1017;
-                                        }
-                                        let _e1037 = phi_980_;
-                                        let _e1039 = phi_981_;
-                                        let _e1041 = phi_982_;
-                                        local_143 = select(_e1039, _e1037, _e1041);
-                                        let _e1043 = local_67;
-                                        let _e1045 = (_e1043 >> bitcast<u32>(22i));
-                                        let _e1048 = ((_e1045 >> bitcast<u32>(5u)) & 31u);
-                                        local_72 = _e1048;
-                                        local_73 = (_e1045 & 31u);
-                                        if (_e1048 == 0u) {
-                                            let _e1051 = local_73;
-                                            phi_1022_ = (f32(_e1051) * 0.0000019073486f);
-                                            phi_1023_ = f32();
-                                            phi_1024_ = true;
-                                        } else {
-                                            let _e1054 = local_72;
-                                            let _e1055 = (_e1054 == 31u);
-                                            if _e1055 {
-                                                let _e1056 = local_73;
-                                                phi_1020_ = bitcast<f32>((2139095040u | (_e1056 << bitcast<u32>(18u))));
-                                                phi_1021_ = f32();
-                                            } else {
-                                                let _e1061 = local_72;
-                                                let _e1065 = local_73;
-                                                phi_1020_ = f32();
-                                                phi_1021_ = bitcast<f32>((((_e1061 + 112u) << bitcast<u32>(23i)) | (_e1065 << bitcast<u32>(18u))));
-                                            }
-                                            let _e1071 = phi_1020_;
-                                            let _e1073 = phi_1021_;
-                                            phi_1022_ = _e1071;
-                                            phi_1023_ = _e1073;
-                                            phi_1024_ = _e1055;
-                                        }
-                                        let _e1075 = phi_1022_;
-                                        let _e1077 = phi_1023_;
-                                        let _e1079 = phi_1024_;
-                                        let _e1081 = local_142;
-                                        let _e1082 = local_143;
-                                        phi_1071_ = array<f32, 4>(_e1081, _e1082, select(_e1077, _e1075, _e1079), 1f);
-                                    } else {
-                                        let _e1084 = local_39;
-                                        if (_e1084 == 4u) {
-                                            let _e1086 = local_9;
-                                            let _e1087 = local_1;
-                                            if (_e1086 < _e1087) {
-                                            } else {
-                                                phi_1802_ = true;
-                                                break;
-                                            }
-                                            let _e1089 = local_9;
-                                            let _e1092 = global_4.member[_e1089];
-                                            phi_1070_ = array<f32, 4>((f32((_e1092 & 16777215u)) * 0.00000005960465f), 0f, 0f, 1f);
-                                        } else {
-                                            let _e1097 = local_9;
-                                            let _e1098 = local_1;
-                                            if (_e1097 < _e1098) {
-                                            } else {
-                                                phi_1802_ = true;
-                                                break;
-                                            }
-                                            let _e1100 = local_9;
-                                            let _e1103 = global_4.member[_e1100];
-                                            phi_1070_ = array<f32, 4>(bitcast<f32>(_e1103), 0f, 0f, 1f);
-                                        }
-                                        let _e1107 = phi_1070_;
-                                        phi_1071_ = _e1107;
-                                    }
-                                    let _e1109 = phi_1071_;
-                                    phi_1072_ = _e1109;
+                                    let _e727 = local_55;
+                                    let _e730 = global_4.member[_e727];
+                                    let _e732 = local_50;
+                                    let _e733 = local_52;
+                                    let _e734 = local_54;
+                                    phi_710_ = array<f32, 4>(_e732, _e733, _e734, bitcast<f32>(_e730));
                                 }
-                                let _e1111 = phi_1072_;
-                                phi_1073_ = _e1111;
+                                let _e737 = phi_710_;
+                                phi_711_ = _e737;
                             }
-                            let _e1113 = phi_1073_;
-                            local_74 = _e1113;
-                            let _e1114 = local_37;
-                            if _e1114 {
-                                let _e1115 = local_74;
-                                let _e1117 = local_74;
-                                let _e1119 = local_74;
-                                let _e1122 = local_74;
-                                phi_1082_ = array<f32, 3>(_e1115[0], _e1117[1], _e1119[2]);
-                                phi_1083_ = _e1122[3];
+                            let _e739 = phi_711_;
+                            local_56 = _e739;
+                            let _e740 = local_19;
+                            if _e740 {
+                                let _e741 = local_56;
+                                let _e743 = local_56;
+                                let _e745 = local_56;
+                                let _e748 = local_56;
+                                phi_720_ = array<f32, 3>(_e741[0], _e743[1], _e745[2]);
+                                phi_721_ = _e748[3];
                             } else {
-                                phi_1082_ = array<f32, 3>();
-                                phi_1083_ = f32();
+                                phi_720_ = array<f32, 3>();
+                                phi_721_ = f32();
                             }
-                            let _e1125 = phi_1082_;
-                            let _e1127 = phi_1083_;
-                            let _e1128 = local_37;
-                            phi_1570_ = _e1125;
-                            phi_1571_ = _e1127;
-                            phi_1572_ = _e683;
-                            phi_1573_ = _e1113;
-                            phi_1574_ = _e683;
-                            phi_1575_ = select(true, false, _e1128);
+                            let _e751 = phi_720_;
+                            let _e753 = phi_721_;
+                            let _e754 = local_19;
+                            phi_1162_ = _e751;
+                            phi_1163_ = _e753;
+                            phi_1164_ = _e337;
+                            phi_1165_ = _e739;
+                            phi_1166_ = _e337;
+                            phi_1167_ = select(true, false, _e754);
                         } else {
-                            let _e1133 = global_5.member.member.member_2;
-                            local_75 = _e1133;
-                            if (_e1133 == 1u) {
-                                phi_1099_ = 2u;
+                            let _e759 = global_5.member.member.member_2;
+                            local_57 = _e759;
+                            if (_e759 == 1u) {
+                                phi_737_ = 2u;
                             } else {
-                                let _e1135 = local_75;
-                                phi_1099_ = select(0u, 1u, (_e1135 == 2u));
+                                let _e761 = local_57;
+                                phi_737_ = select(0u, 1u, (_e761 == 2u));
                             }
-                            let _e1139 = phi_1099_;
-                            local_76 = _e1139;
-                            if (_e1139 == 0u) {
-                                let _e1141 = local_9;
-                                let _e1142 = (4u * _e1141);
-                                local_77 = _e1142;
-                                let _e1143 = local_1;
-                                if (_e1142 < _e1143) {
+                            let _e765 = phi_737_;
+                            local_58 = _e765;
+                            if (_e765 == 1u) {
+                                let _e767 = local_9;
+                                let _e768 = (2u * _e767);
+                                local_59 = _e768;
+                                let _e769 = local_1;
+                                if (_e768 < _e769) {
                                 } else {
-                                    phi_1802_ = true;
+                                    phi_1394_ = true;
                                     break;
                                 }
-                                let _e1145 = local_77;
-                                let _e1148 = global_4.member[_e1145];
-                                local_78 = bitcast<f32>(_e1148);
-                                let _e1150 = local_77;
-                                let _e1151 = (_e1150 + 1u);
-                                local_79 = _e1151;
-                                let _e1152 = local_1;
-                                if (_e1151 < _e1152) {
+                                let _e771 = local_59;
+                                let _e774 = global_4.member[_e771];
+                                local_60 = _e774;
+                                let _e775 = local_59;
+                                let _e776 = (_e775 + 1u);
+                                local_61 = _e776;
+                                let _e777 = local_1;
+                                if (_e776 < _e777) {
                                 } else {
-                                    phi_1802_ = true;
+                                    phi_1394_ = true;
                                     break;
                                 }
-                                let _e1154 = local_79;
-                                let _e1157 = global_4.member[_e1154];
-                                local_80 = bitcast<f32>(_e1157);
-                                let _e1159 = local_77;
-                                let _e1160 = (_e1159 + 2u);
-                                local_81 = _e1160;
-                                let _e1161 = local_1;
-                                if (_e1160 < _e1161) {
-                                } else {
-                                    phi_1802_ = true;
-                                    break;
-                                }
-                                let _e1163 = local_81;
-                                let _e1166 = global_4.member[_e1163];
-                                local_82 = bitcast<f32>(_e1166);
-                                let _e1168 = local_77;
-                                let _e1169 = (_e1168 + 3u);
-                                local_83 = _e1169;
-                                let _e1170 = local_1;
-                                if (_e1169 < _e1170) {
-                                } else {
-                                    phi_1802_ = true;
-                                    break;
-                                }
-                                let _e1172 = local_83;
-                                let _e1175 = global_4.member[_e1172];
-                                let _e1177 = local_78;
-                                let _e1178 = local_80;
-                                let _e1179 = local_82;
-                                phi_1569_ = array<f32, 4>(_e1177, _e1178, _e1179, bitcast<f32>(_e1175));
-                            } else {
-                                let _e1181 = local_76;
-                                if (_e1181 == 1u) {
-                                    let _e1183 = local_9;
-                                    let _e1184 = (2u * _e1183);
-                                    local_84 = _e1184;
-                                    let _e1185 = local_1;
-                                    if (_e1184 < _e1185) {
+                                let _e779 = local_61;
+                                let _e782 = global_4.member[_e779];
+                                local_62 = _e782;
+                                let _e783 = local_60;
+                                let _e784 = (_e783 & 65535u);
+                                local_63 = ((_e784 & 32768u) << bitcast<u32>(16i));
+                                let _e790 = ((_e784 >> bitcast<u32>(10i)) & 31u);
+                                local_64 = _e790;
+                                local_65 = (_e784 & 1023u);
+                                if (_e790 == 0u) {
+                                    let _e793 = local_65;
+                                    let _e794 = f32(_e793);
+                                    local_66 = _e794;
+                                    let _e796 = local_63;
+                                    if (_e796 == 0u) {
+                                        phi_792_ = (_e794 * 0.000000059604645f);
                                     } else {
-                                        phi_1802_ = true;
+                                        let _e798 = local_66;
+                                        phi_792_ = (_e798 * -0.000000059604645f);
+                                    }
+                                    let _e801 = phi_792_;
+                                    phi_809_ = _e801;
+                                    phi_810_ = f32();
+                                    phi_811_ = true;
+                                } else {
+                                    let _e802 = local_64;
+                                    let _e803 = (_e802 == 31u);
+                                    if _e803 {
+                                        let _e804 = local_63;
+                                        let _e806 = local_65;
+                                        phi_807_ = bitcast<f32>(((_e804 | 2139095040u) | (_e806 << bitcast<u32>(13i))));
+                                        phi_808_ = f32();
+                                    } else {
+                                        let _e811 = local_64;
+                                        let _e815 = local_63;
+                                        let _e817 = local_65;
+                                        phi_807_ = f32();
+                                        phi_808_ = bitcast<f32>(((_e815 | ((_e811 + 112u) << bitcast<u32>(23i))) | (_e817 << bitcast<u32>(13i))));
+                                    }
+                                    let _e823 = phi_807_;
+                                    let _e825 = phi_808_;
+                                    phi_809_ = _e823;
+                                    phi_810_ = _e825;
+                                    phi_811_ = _e803;
+                                }
+                                let _e827 = phi_809_;
+                                let _e829 = phi_810_;
+                                let _e831 = phi_811_;
+                                local_120 = select(_e829, _e827, _e831);
+                                let _e833 = local_60;
+                                let _e835 = (_e833 >> bitcast<u32>(16i));
+                                local_67 = ((_e835 & 32768u) << bitcast<u32>(16i));
+                                let _e841 = ((_e835 >> bitcast<u32>(10i)) & 31u);
+                                local_68 = _e841;
+                                local_69 = (_e835 & 1023u);
+                                if (_e841 == 0u) {
+                                    let _e844 = local_69;
+                                    let _e845 = f32(_e844);
+                                    local_70 = _e845;
+                                    let _e847 = local_67;
+                                    if (_e847 == 0u) {
+                                        phi_833_ = (_e845 * 0.000000059604645f);
+                                    } else {
+                                        let _e849 = local_70;
+                                        phi_833_ = (_e849 * -0.000000059604645f);
+                                    }
+                                    let _e852 = phi_833_;
+                                    phi_850_ = _e852;
+                                    phi_851_ = f32();
+                                    phi_852_ = true;
+                                } else {
+                                    let _e853 = local_68;
+                                    let _e854 = (_e853 == 31u);
+                                    if _e854 {
+                                        let _e855 = local_67;
+                                        let _e857 = local_69;
+                                        phi_848_ = bitcast<f32>(((_e855 | 2139095040u) | (_e857 << bitcast<u32>(13i))));
+                                        phi_849_ = f32();
+                                    } else {
+                                        let _e862 = local_68;
+                                        let _e866 = local_67;
+                                        let _e868 = local_69;
+                                        phi_848_ = f32();
+                                        phi_849_ = bitcast<f32>(((_e866 | ((_e862 + 112u) << bitcast<u32>(23i))) | (_e868 << bitcast<u32>(13i))));
+                                    }
+                                    let _e874 = phi_848_;
+                                    let _e876 = phi_849_;
+                                    phi_850_ = _e874;
+                                    phi_851_ = _e876;
+                                    phi_852_ = _e854;
+                                }
+                                let _e878 = phi_850_;
+                                let _e880 = phi_851_;
+                                let _e882 = phi_852_;
+                                local_121 = select(_e880, _e878, _e882);
+                                let _e884 = local_62;
+                                let _e885 = (_e884 & 65535u);
+                                local_71 = ((_e885 & 32768u) << bitcast<u32>(16i));
+                                let _e891 = ((_e885 >> bitcast<u32>(10i)) & 31u);
+                                local_72 = _e891;
+                                local_73 = (_e885 & 1023u);
+                                if (_e891 == 0u) {
+                                    let _e894 = local_73;
+                                    let _e895 = f32(_e894);
+                                    local_74 = _e895;
+                                    let _e897 = local_71;
+                                    if (_e897 == 0u) {
+                                        phi_874_ = (_e895 * 0.000000059604645f);
+                                    } else {
+                                        let _e899 = local_74;
+                                        phi_874_ = (_e899 * -0.000000059604645f);
+                                    }
+                                    let _e902 = phi_874_;
+                                    phi_891_ = _e902;
+                                    phi_892_ = f32();
+                                    phi_893_ = true;
+                                } else {
+                                    let _e903 = local_72;
+                                    let _e904 = (_e903 == 31u);
+                                    if _e904 {
+                                        let _e905 = local_71;
+                                        let _e907 = local_73;
+                                        phi_889_ = bitcast<f32>(((_e905 | 2139095040u) | (_e907 << bitcast<u32>(13i))));
+                                        phi_890_ = f32();
+                                    } else {
+                                        let _e912 = local_72;
+                                        let _e916 = local_71;
+                                        let _e918 = local_73;
+                                        phi_889_ = f32();
+                                        phi_890_ = bitcast<f32>(((_e916 | ((_e912 + 112u) << bitcast<u32>(23i))) | (_e918 << bitcast<u32>(13i))));
+                                    }
+                                    let _e924 = phi_889_;
+                                    let _e926 = phi_890_;
+                                    phi_891_ = _e924;
+                                    phi_892_ = _e926;
+                                    phi_893_ = _e904;
+                                }
+                                let _e928 = phi_891_;
+                                let _e930 = phi_892_;
+                                let _e932 = phi_893_;
+                                local_122 = select(_e930, _e928, _e932);
+                                let _e934 = local_62;
+                                let _e936 = (_e934 >> bitcast<u32>(16i));
+                                local_75 = ((_e936 & 32768u) << bitcast<u32>(16i));
+                                let _e942 = ((_e936 >> bitcast<u32>(10i)) & 31u);
+                                local_76 = _e942;
+                                local_77 = (_e936 & 1023u);
+                                if (_e942 == 0u) {
+                                    let _e945 = local_77;
+                                    let _e946 = f32(_e945);
+                                    local_78 = _e946;
+                                    let _e948 = local_75;
+                                    if (_e948 == 0u) {
+                                        phi_915_ = (_e946 * 0.000000059604645f);
+                                    } else {
+                                        let _e950 = local_78;
+                                        phi_915_ = (_e950 * -0.000000059604645f);
+                                    }
+                                    let _e953 = phi_915_;
+                                    phi_932_ = _e953;
+                                    phi_933_ = f32();
+                                    phi_934_ = true;
+                                } else {
+                                    let _e954 = local_76;
+                                    let _e955 = (_e954 == 31u);
+                                    if _e955 {
+                                        let _e956 = local_75;
+                                        let _e958 = local_77;
+                                        phi_930_ = bitcast<f32>(((_e956 | 2139095040u) | (_e958 << bitcast<u32>(13i))));
+                                        phi_931_ = f32();
+                                    } else {
+                                        let _e963 = local_76;
+                                        let _e967 = local_75;
+                                        let _e969 = local_77;
+                                        phi_930_ = f32();
+                                        phi_931_ = bitcast<f32>(((_e967 | ((_e963 + 112u) << bitcast<u32>(23i))) | (_e969 << bitcast<u32>(13i))));
+                                    }
+                                    let _e975 = phi_930_;
+                                    let _e977 = phi_931_;
+                                    phi_932_ = _e975;
+                                    phi_933_ = _e977;
+                                    phi_934_ = _e955;
+                                }
+                                let _e979 = phi_932_;
+                                let _e981 = phi_933_;
+                                let _e983 = phi_934_;
+                                let _e985 = local_120;
+                                let _e986 = local_121;
+                                let _e987 = local_122;
+                                phi_1161_ = array<f32, 4>(_e985, _e986, _e987, select(_e981, _e979, _e983));
+                            } else {
+                                let _e989 = local_58;
+                                if (_e989 == 2u) {
+                                    let _e991 = local_9;
+                                    let _e992 = local_1;
+                                    if (_e991 < _e992) {
+                                    } else {
+                                        phi_1394_ = true;
                                         break;
                                     }
-                                    let _e1187 = local_84;
-                                    let _e1190 = global_4.member[_e1187];
-                                    local_85 = _e1190;
-                                    let _e1191 = local_84;
-                                    let _e1192 = (_e1191 + 1u);
-                                    local_86 = _e1192;
-                                    let _e1193 = local_1;
-                                    if (_e1192 < _e1193) {
+                                    let _e994 = local_9;
+                                    let _e997 = global_4.member[_e994];
+                                    local_79 = _e997;
+                                    let _e998 = (_e997 & 2047u);
+                                    let _e1001 = ((_e998 >> bitcast<u32>(6u)) & 31u);
+                                    local_80 = _e1001;
+                                    local_81 = (_e998 & 63u);
+                                    if (_e1001 == 0u) {
+                                        let _e1004 = local_81;
+                                        phi_994_ = (f32(_e1004) * 0.0000009536743f);
+                                        phi_995_ = f32();
+                                        phi_996_ = true;
                                     } else {
-                                        phi_1802_ = true;
+                                        let _e1007 = local_80;
+                                        let _e1008 = (_e1007 == 31u);
+                                        if _e1008 {
+                                            let _e1009 = local_81;
+                                            phi_992_ = bitcast<f32>((2139095040u | (_e1009 << bitcast<u32>(17u))));
+                                            phi_993_ = f32();
+                                        } else {
+                                            let _e1014 = local_80;
+                                            let _e1018 = local_81;
+                                            phi_992_ = f32();
+                                            phi_993_ = bitcast<f32>((((_e1014 + 112u) << bitcast<u32>(23i)) | (_e1018 << bitcast<u32>(17u))));
+                                        }
+                                        let _e1024 = phi_992_;
+                                        let _e1026 = phi_993_;
+                                        phi_994_ = _e1024;
+                                        phi_995_ = _e1026;
+                                        phi_996_ = _e1008;
+                                    }
+                                    let _e1028 = phi_994_;
+                                    let _e1030 = phi_995_;
+                                    let _e1032 = phi_996_;
+                                    local_123 = select(_e1030, _e1028, _e1032);
+                                    let _e1034 = local_79;
+                                    let _e1037 = ((_e1034 >> bitcast<u32>(11i)) & 2047u);
+                                    let _e1040 = ((_e1037 >> bitcast<u32>(6u)) & 31u);
+                                    local_82 = _e1040;
+                                    local_83 = (_e1037 & 63u);
+                                    if (_e1040 == 0u) {
+                                        let _e1043 = local_83;
+                                        phi_1037_ = (f32(_e1043) * 0.0000009536743f);
+                                        phi_1038_ = f32();
+                                        phi_1039_ = true;
+                                    } else {
+                                        let _e1046 = local_82;
+                                        let _e1047 = (_e1046 == 31u);
+                                        if _e1047 {
+                                            let _e1048 = local_83;
+                                            phi_1035_ = bitcast<f32>((2139095040u | (_e1048 << bitcast<u32>(17u))));
+                                            phi_1036_ = f32();
+                                        } else {
+                                            let _e1053 = local_82;
+                                            let _e1057 = local_83;
+                                            phi_1035_ = f32();
+                                            phi_1036_ = bitcast<f32>((((_e1053 + 112u) << bitcast<u32>(23i)) | (_e1057 << bitcast<u32>(17u))));
+                                        }
+                                        let _e1063 = phi_1035_;
+                                        let _e1065 = phi_1036_;
+                                        phi_1037_ = _e1063;
+                                        phi_1038_ = _e1065;
+                                        phi_1039_ = _e1047;
+                                    }
+                                    let _e1067 = phi_1037_;
+                                    let _e1069 = phi_1038_;
+                                    let _e1071 = phi_1039_;
+                                    local_124 = select(_e1069, _e1067, _e1071);
+                                    let _e1073 = local_79;
+                                    let _e1075 = (_e1073 >> bitcast<u32>(22i));
+                                    let _e1078 = ((_e1075 >> bitcast<u32>(5u)) & 31u);
+                                    local_84 = _e1078;
+                                    local_85 = (_e1075 & 31u);
+                                    if (_e1078 == 0u) {
+                                        let _e1081 = local_85;
+                                        phi_1079_ = (f32(_e1081) * 0.0000019073486f);
+                                        phi_1080_ = f32();
+                                        phi_1081_ = true;
+                                    } else {
+                                        let _e1084 = local_84;
+                                        let _e1085 = (_e1084 == 31u);
+                                        if _e1085 {
+                                            let _e1086 = local_85;
+                                            phi_1077_ = bitcast<f32>((2139095040u | (_e1086 << bitcast<u32>(18u))));
+                                            phi_1078_ = f32();
+                                        } else {
+                                            let _e1091 = local_84;
+                                            let _e1095 = local_85;
+                                            phi_1077_ = f32();
+                                            phi_1078_ = bitcast<f32>((((_e1091 + 112u) << bitcast<u32>(23i)) | (_e1095 << bitcast<u32>(18u))));
+                                        }
+                                        let _e1101 = phi_1077_;
+                                        let _e1103 = phi_1078_;
+                                        phi_1079_ = _e1101;
+                                        phi_1080_ = _e1103;
+                                        phi_1081_ = _e1085;
+                                    }
+                                    let _e1105 = phi_1079_;
+                                    let _e1107 = phi_1080_;
+                                    let _e1109 = phi_1081_;
+                                    let _e1111 = local_123;
+                                    let _e1112 = local_124;
+                                    phi_1160_ = array<f32, 4>(_e1111, _e1112, select(_e1107, _e1105, _e1109), 1f);
+                                } else {
+                                    let _e1114 = local_9;
+                                    let _e1115 = (4u * _e1114);
+                                    local_86 = _e1115;
+                                    let _e1116 = local_1;
+                                    if (_e1115 < _e1116) {
+                                    } else {
+                                        phi_1394_ = true;
                                         break;
                                     }
-                                    let _e1195 = local_86;
-                                    let _e1198 = global_4.member[_e1195];
-                                    local_87 = _e1198;
-                                    let _e1199 = local_85;
-                                    let _e1200 = (_e1199 & 65535u);
-                                    local_88 = ((_e1200 & 32768u) << bitcast<u32>(16i));
-                                    let _e1206 = ((_e1200 >> bitcast<u32>(10i)) & 31u);
-                                    local_89 = _e1206;
-                                    local_90 = (_e1200 & 1023u);
-                                    if (_e1206 == 0u) {
-                                        let _e1209 = local_90;
-                                        let _e1210 = f32(_e1209);
-                                        local_91 = _e1210;
-                                        let _e1212 = local_88;
-                                        if (_e1212 == 0u) {
-                                            phi_1231_ = (_e1210 * 0.000000059604645f);
-                                        } else {
-                                            let _e1214 = local_91;
-                                            phi_1231_ = (_e1214 * -0.000000059604645f);
-                                        }
-                                        let _e1217 = phi_1231_;
-                                        phi_1248_ = _e1217;
-                                        phi_1249_ = f32();
-                                        phi_1250_ = true;
+                                    let _e1118 = local_86;
+                                    let _e1121 = global_4.member[_e1118];
+                                    local_87 = bitcast<f32>(_e1121);
+                                    let _e1123 = local_86;
+                                    let _e1124 = (_e1123 + 1u);
+                                    local_88 = _e1124;
+                                    let _e1125 = local_1;
+                                    if (_e1124 < _e1125) {
                                     } else {
-                                        let _e1218 = local_89;
-                                        let _e1219 = (_e1218 == 31u);
-                                        if _e1219 {
-                                            let _e1220 = local_88;
-                                            let _e1222 = local_90;
-                                            phi_1246_ = bitcast<f32>(((_e1220 | 2139095040u) | (_e1222 << bitcast<u32>(13i))));
-                                            phi_1247_ = f32();
-                                        } else {
-                                            let _e1227 = local_89;
-                                            let _e1231 = local_88;
-                                            let _e1233 = local_90;
-                                            phi_1246_ = f32();
-                                            phi_1247_ = bitcast<f32>(((_e1231 | ((_e1227 + 112u) << bitcast<u32>(23i))) | (_e1233 << bitcast<u32>(13i))));
-                                        }
-                                        let _e1239 = phi_1246_;
-                                        let _e1241 = phi_1247_;
-                                        phi_1248_ = _e1239;
-                                        phi_1249_ = _e1241;
-                                        phi_1250_ = _e1219;
+                                        phi_1394_ = true;
+                                        break;
                                     }
-                                    let _e1243 = phi_1248_;
-                                    let _e1245 = phi_1249_;
-                                    let _e1247 = phi_1250_;
-                                    local_144 = select(_e1245, _e1243, _e1247);
-                                    let _e1249 = local_85;
-                                    let _e1251 = (_e1249 >> bitcast<u32>(16i));
-                                    local_92 = ((_e1251 & 32768u) << bitcast<u32>(16i));
-                                    let _e1257 = ((_e1251 >> bitcast<u32>(10i)) & 31u);
-                                    local_93 = _e1257;
-                                    local_94 = (_e1251 & 1023u);
-                                    if (_e1257 == 0u) {
-                                        let _e1260 = local_94;
-                                        let _e1261 = f32(_e1260);
-                                        local_95 = _e1261;
-                                        let _e1263 = local_92;
-                                        if (_e1263 == 0u) {
-                                            phi_1272_ = (_e1261 * 0.000000059604645f);
-                                        } else {
-                                            let _e1265 = local_95;
-                                            phi_1272_ = (_e1265 * -0.000000059604645f);
-                                        }
-                                        let _e1268 = phi_1272_;
-                                        phi_1289_ = _e1268;
-                                        phi_1290_ = f32();
-                                        phi_1291_ = true;
+                                    let _e1127 = local_88;
+                                    let _e1130 = global_4.member[_e1127];
+                                    local_89 = bitcast<f32>(_e1130);
+                                    let _e1132 = local_86;
+                                    let _e1133 = (_e1132 + 2u);
+                                    local_90 = _e1133;
+                                    let _e1134 = local_1;
+                                    if (_e1133 < _e1134) {
                                     } else {
-                                        let _e1269 = local_93;
-                                        let _e1270 = (_e1269 == 31u);
-                                        if _e1270 {
-                                            let _e1271 = local_92;
-                                            let _e1273 = local_94;
-                                            phi_1287_ = bitcast<f32>(((_e1271 | 2139095040u) | (_e1273 << bitcast<u32>(13i))));
-                                            phi_1288_ = f32();
-                                        } else {
-                                            let _e1278 = local_93;
-                                            let _e1282 = local_92;
-                                            let _e1284 = local_94;
-                                            phi_1287_ = f32();
-                                            phi_1288_ = bitcast<f32>(((_e1282 | ((_e1278 + 112u) << bitcast<u32>(23i))) | (_e1284 << bitcast<u32>(13i))));
-                                        }
-                                        let _e1290 = phi_1287_;
-                                        let _e1292 = phi_1288_;
-                                        phi_1289_ = _e1290;
-                                        phi_1290_ = _e1292;
-                                        phi_1291_ = _e1270;
+                                        phi_1394_ = true;
+                                        break;
                                     }
-                                    let _e1294 = phi_1289_;
-                                    let _e1296 = phi_1290_;
-                                    let _e1298 = phi_1291_;
-                                    local_145 = select(_e1296, _e1294, _e1298);
-                                    let _e1300 = local_87;
-                                    let _e1301 = (_e1300 & 65535u);
-                                    local_96 = ((_e1301 & 32768u) << bitcast<u32>(16i));
-                                    let _e1307 = ((_e1301 >> bitcast<u32>(10i)) & 31u);
-                                    local_97 = _e1307;
-                                    local_98 = (_e1301 & 1023u);
-                                    if (_e1307 == 0u) {
-                                        let _e1310 = local_98;
-                                        let _e1311 = f32(_e1310);
-                                        local_99 = _e1311;
-                                        let _e1313 = local_96;
-                                        if (_e1313 == 0u) {
-                                            phi_1313_ = (_e1311 * 0.000000059604645f);
-                                        } else {
-                                            let _e1315 = local_99;
-                                            phi_1313_ = (_e1315 * -0.000000059604645f);
-                                        }
-                                        let _e1318 = phi_1313_;
-                                        phi_1330_ = _e1318;
-                                        phi_1331_ = f32();
-                                        phi_1332_ = true;
+                                    let _e1136 = local_90;
+                                    let _e1139 = global_4.member[_e1136];
+                                    local_91 = bitcast<f32>(_e1139);
+                                    let _e1141 = local_86;
+                                    let _e1142 = (_e1141 + 3u);
+                                    local_92 = _e1142;
+                                    let _e1143 = local_1;
+                                    if (_e1142 < _e1143) {
                                     } else {
-                                        let _e1319 = local_97;
-                                        let _e1320 = (_e1319 == 31u);
-                                        if _e1320 {
-                                            let _e1321 = local_96;
-                                            let _e1323 = local_98;
-                                            phi_1328_ = bitcast<f32>(((_e1321 | 2139095040u) | (_e1323 << bitcast<u32>(13i))));
-                                            phi_1329_ = f32();
-                                        } else {
-                                            let _e1328 = local_97;
-                                            let _e1332 = local_96;
-                                            let _e1334 = local_98;
-                                            phi_1328_ = f32();
-                                            phi_1329_ = bitcast<f32>(((_e1332 | ((_e1328 + 112u) << bitcast<u32>(23i))) | (_e1334 << bitcast<u32>(13i))));
-                                        }
-                                        let _e1340 = phi_1328_;
-                                        let _e1342 = phi_1329_;
-                                        phi_1330_ = _e1340;
-                                        phi_1331_ = _e1342;
-                                        phi_1332_ = _e1320;
+                                        phi_1394_ = true;
+                                        break;
                                     }
-                                    let _e1344 = phi_1330_;
-                                    let _e1346 = phi_1331_;
-                                    let _e1348 = phi_1332_;
-                                    local_146 = select(_e1346, _e1344, _e1348);
-                                    let _e1350 = local_87;
-                                    let _e1352 = (_e1350 >> bitcast<u32>(16i));
-                                    local_100 = ((_e1352 & 32768u) << bitcast<u32>(16i));
-                                    let _e1358 = ((_e1352 >> bitcast<u32>(10i)) & 31u);
-                                    local_101 = _e1358;
-                                    local_102 = (_e1352 & 1023u);
-                                    if (_e1358 == 0u) {
-                                        let _e1361 = local_102;
-                                        let _e1362 = f32(_e1361);
-                                        local_103 = _e1362;
-                                        let _e1364 = local_100;
-                                        if (_e1364 == 0u) {
-                                            phi_1354_ = (_e1362 * 0.000000059604645f);
-                                        } else {
-                                            let _e1366 = local_103;
-                                            phi_1354_ = (_e1366 * -0.000000059604645f);
-                                        }
-                                        let _e1369 = phi_1354_;
-                                        phi_1371_ = _e1369;
-                                        phi_1372_ = f32();
-                                        phi_1373_ = true;
-                                    } else {
-                                        let _e1370 = local_101;
-                                        let _e1371 = (_e1370 == 31u);
-                                        if _e1371 {
-                                            let _e1372 = local_100;
-                                            let _e1374 = local_102;
-                                            phi_1369_ = bitcast<f32>(((_e1372 | 2139095040u) | (_e1374 << bitcast<u32>(13i))));
-                                            phi_1370_ = f32();
-                                        } else {
-                                            let _e1379 = local_101;
-                                            let _e1383 = local_100;
-                                            let _e1385 = local_102;
-                                            phi_1369_ = f32();
-                                            phi_1370_ = bitcast<f32>(((_e1383 | ((_e1379 + 112u) << bitcast<u32>(23i))) | (_e1385 << bitcast<u32>(13i))));
-                                        }
-                                        let _e1391 = phi_1369_;
-                                        let _e1393 = phi_1370_;
-                                        phi_1371_ = _e1391;
-                                        phi_1372_ = _e1393;
-                                        phi_1373_ = _e1371;
-                                    }
-                                    let _e1395 = phi_1371_;
-                                    let _e1397 = phi_1372_;
-                                    let _e1399 = phi_1373_;
-                                    let _e1401 = local_144;
-                                    let _e1402 = local_145;
-                                    let _e1403 = local_146;
-                                    phi_1568_ = array<f32, 4>(_e1401, _e1402, _e1403, select(_e1397, _e1395, _e1399));
-                                } else {
-                                    let _e1405 = local_76;
-                                    if (_e1405 == 2u) {
-                                        let _e1407 = local_9;
-                                        let _e1408 = local_1;
-                                        if (_e1407 < _e1408) {
-                                        } else {
-                                            phi_1802_ = true;
-                                            break;
-                                        }
-                                        let _e1410 = local_9;
-                                        let _e1413 = global_4.member[_e1410];
-                                        local_104 = _e1413;
-                                        let _e1414 = (_e1413 & 2047u);
-                                        let _e1417 = ((_e1414 >> bitcast<u32>(6u)) & 31u);
-                                        local_105 = _e1417;
-                                        local_106 = (_e1414 & 63u);
-                                        if (_e1417 == 0u) {
-                                            let _e1420 = local_106;
-                                            phi_1433_ = (f32(_e1420) * 0.0000009536743f);
-                                            phi_1434_ = f32();
-                                            phi_1435_ = true;
-                                        } else {
-                                            let _e1423 = local_105;
-                                            let _e1424 = (_e1423 == 31u);
-                                            if _e1424 {
-                                                let _e1425 = local_106;
-                                                phi_1431_ = bitcast<f32>((2139095040u | (_e1425 << bitcast<u32>(17u))));
-                                                phi_1432_ = f32();
-                                            } else {
-                                                let _e1430 = local_105;
-                                                let _e1434 = local_106;
-                                                phi_1431_ = f32();
-                                                phi_1432_ = bitcast<f32>((((_e1430 + 112u) << bitcast<u32>(23i)) | (_e1434 << bitcast<u32>(17u))));
-                                            }
-                                            let _e1440 = phi_1431_;
-                                            let _e1442 = phi_1432_;
-                                            phi_1433_ = _e1440;
-                                            phi_1434_ = _e1442;
-                                            phi_1435_ = _e1424;
-                                        }
-                                        let _e1444 = phi_1433_;
-                                        let _e1446 = phi_1434_;
-                                        let _e1448 = phi_1435_;
-                                        local_147 = select(_e1446, _e1444, _e1448);
-                                        let _e1450 = local_104;
-                                        let _e1453 = ((_e1450 >> bitcast<u32>(11i)) & 2047u);
-                                        let _e1456 = ((_e1453 >> bitcast<u32>(6u)) & 31u);
-                                        local_107 = _e1456;
-                                        local_108 = (_e1453 & 63u);
-                                        if (_e1456 == 0u) {
-                                            let _e1459 = local_108;
-                                            phi_1476_ = (f32(_e1459) * 0.0000009536743f);
-                                            phi_1477_ = f32();
-                                            phi_1478_ = true;
-                                        } else {
-                                            let _e1462 = local_107;
-                                            let _e1463 = (_e1462 == 31u);
-                                            if _e1463 {
-                                                let _e1464 = local_108;
-                                                phi_1474_ = bitcast<f32>((2139095040u | (_e1464 << bitcast<u32>(17u))));
-                                                phi_1475_ = f32();
-                                            } else {
-                                                let _e1469 = local_107;
-                                                let _e1473 = local_108;
-                                                phi_1474_ = f32();
-                                                phi_1475_ = bitcast<f32>((((_e1469 + 112u) << bitcast<u32>(23i)) | (_e1473 << bitcast<u32>(17u))));
-                                            }
-                                            let _e1479 = phi_1474_;
-                                            let _e1481 = phi_1475_;
-                                            phi_1476_ = _e1479;
-                                            phi_1477_ = _e1481;
-                                            phi_1478_ = _e1463;
-                                        }
-                                        let _e1483 = phi_1476_;
-                                        let _e1485 = phi_1477_;
-                                        let _e1487 = phi_1478_;
-                                        local_148 = select(_e1485, _e1483, _e1487);
-                                        let _e1489 = local_104;
-                                        let _e1491 = (_e1489 >> bitcast<u32>(22i));
-                                        let _e1494 = ((_e1491 >> bitcast<u32>(5u)) & 31u);
-                                        local_109 = _e1494;
-                                        local_110 = (_e1491 & 31u);
-                                        if (_e1494 == 0u) {
-                                            let _e1497 = local_110;
-                                            phi_1518_ = (f32(_e1497) * 0.0000019073486f);
-                                            phi_1519_ = f32();
-                                            phi_1520_ = true;
-                                        } else {
-                                            let _e1500 = local_109;
-                                            let _e1501 = (_e1500 == 31u);
-                                            if _e1501 {
-                                                let _e1502 = local_110;
-                                                phi_1516_ = bitcast<f32>((2139095040u | (_e1502 << bitcast<u32>(18u))));
-                                                phi_1517_ = f32();
-                                            } else {
-                                                let _e1507 = local_109;
-                                                let _e1511 = local_110;
-                                                phi_1516_ = f32();
-                                                phi_1517_ = bitcast<f32>((((_e1507 + 112u) << bitcast<u32>(23i)) | (_e1511 << bitcast<u32>(18u))));
-                                            }
-                                            let _e1517 = phi_1516_;
-                                            let _e1519 = phi_1517_;
-                                            phi_1518_ = _e1517;
-                                            phi_1519_ = _e1519;
-                                            phi_1520_ = _e1501;
-                                        }
-                                        let _e1521 = phi_1518_;
-                                        let _e1523 = phi_1519_;
-                                        let _e1525 = phi_1520_;
-                                        let _e1527 = local_147;
-                                        let _e1528 = local_148;
-                                        phi_1567_ = array<f32, 4>(_e1527, _e1528, select(_e1523, _e1521, _e1525), 1f);
-                                    } else {
-                                        let _e1530 = local_76;
-                                        if (_e1530 == 4u) {
-                                            let _e1532 = local_9;
-                                            let _e1533 = local_1;
-                                            if (_e1532 < _e1533) {
-                                            } else {
-                                                phi_1802_ = true;
-                                                break;
-                                            }
-                                            let _e1535 = local_9;
-                                            let _e1538 = global_4.member[_e1535];
-                                            phi_1566_ = array<f32, 4>((f32((_e1538 & 16777215u)) * 0.00000005960465f), 0f, 0f, 1f);
-                                        } else {
-                                            let _e1543 = local_9;
-                                            let _e1544 = local_1;
-                                            if (_e1543 < _e1544) {
-                                            } else {
-                                                phi_1802_ = true;
-                                                break;
-                                            }
-                                            let _e1546 = local_9;
-                                            let _e1549 = global_4.member[_e1546];
-                                            phi_1566_ = array<f32, 4>(bitcast<f32>(_e1549), 0f, 0f, 1f);
-                                        }
-                                        let _e1553 = phi_1566_;
-                                        phi_1567_ = _e1553;
-                                    }
-                                    let _e1555 = phi_1567_;
-                                    phi_1568_ = _e1555;
+                                    let _e1145 = local_92;
+                                    let _e1148 = global_4.member[_e1145];
+                                    let _e1150 = local_87;
+                                    let _e1151 = local_89;
+                                    let _e1152 = local_91;
+                                    phi_1160_ = array<f32, 4>(_e1150, _e1151, _e1152, bitcast<f32>(_e1148));
                                 }
-                                let _e1557 = phi_1568_;
-                                phi_1569_ = _e1557;
+                                let _e1155 = phi_1160_;
+                                phi_1161_ = _e1155;
                             }
-                            let _e1559 = phi_1569_;
-                            phi_1570_ = array<f32, 3>();
-                            phi_1571_ = f32();
-                            phi_1572_ = bool();
-                            phi_1573_ = _e1559;
-                            phi_1574_ = false;
-                            phi_1575_ = true;
+                            let _e1157 = phi_1161_;
+                            phi_1162_ = array<f32, 3>();
+                            phi_1163_ = f32();
+                            phi_1164_ = bool();
+                            phi_1165_ = _e1157;
+                            phi_1166_ = false;
+                            phi_1167_ = true;
                         }
-                        let _e1561 = phi_1570_;
-                        let _e1563 = phi_1571_;
-                        let _e1565 = phi_1572_;
-                        let _e1567 = phi_1573_;
-                        let _e1569 = phi_1574_;
-                        let _e1571 = phi_1575_;
-                        local_111 = _e1565;
-                        local_112 = _e1567;
-                        local_113 = _e1569;
-                        local_114 = _e1571;
-                        if _e1571 {
-                            let _e1572 = local_9;
-                            let _e1573 = local_3;
-                            if (_e1572 < _e1573) {
+                        let _e1159 = phi_1162_;
+                        let _e1161 = phi_1163_;
+                        let _e1163 = phi_1164_;
+                        let _e1165 = phi_1165_;
+                        let _e1167 = phi_1166_;
+                        let _e1169 = phi_1167_;
+                        local_93 = _e1163;
+                        local_94 = _e1165;
+                        local_95 = _e1167;
+                        local_96 = _e1169;
+                        if _e1169 {
+                            let _e1170 = local_9;
+                            let _e1171 = local_3;
+                            if (_e1170 < _e1171) {
                             } else {
-                                phi_1802_ = true;
+                                phi_1394_ = true;
                                 break;
                             }
-                            let _e1575 = local_9;
-                            let _e1578 = global_6.member[_e1575];
-                            let _e1582 = ((bitcast<u32>(bitcast<f32>(_e1578)) & 2139095040u) != 2139095040u);
-                            local_115 = _e1582;
-                            if _e1582 {
-                                let _e1583 = local_112;
-                                let _e1585 = local_112;
-                                let _e1587 = local_112;
-                                phi_1605_ = array<f32, 3>(_e1583[0], _e1585[1], _e1587[2]);
+                            let _e1173 = local_9;
+                            let _e1176 = global_6.member[_e1173];
+                            let _e1180 = ((bitcast<u32>(bitcast<f32>(_e1176)) & 2139095040u) != 2139095040u);
+                            local_97 = _e1180;
+                            if _e1180 {
+                                let _e1181 = local_94;
+                                let _e1183 = local_94;
+                                let _e1185 = local_94;
+                                phi_1197_ = array<f32, 3>(_e1181[0], _e1183[1], _e1185[2]);
                             } else {
-                                phi_1605_ = array<f32, 3>(0f, 0f, 0f);
+                                phi_1197_ = array<f32, 3>(0f, 0f, 0f);
                             }
-                            let _e1591 = phi_1605_;
-                            let _e1592 = local_115;
-                            phi_1607_ = _e1591;
-                            phi_1608_ = select(0f, 1f, _e1592);
+                            let _e1189 = phi_1197_;
+                            let _e1190 = local_97;
+                            phi_1199_ = _e1189;
+                            phi_1200_ = select(0f, 1f, _e1190);
                         } else {
-                            phi_1607_ = _e1561;
-                            phi_1608_ = _e1563;
+                            phi_1199_ = _e1159;
+                            phi_1200_ = _e1161;
                         }
-                        let _e1595 = phi_1607_;
-                        let _e1597 = phi_1608_;
-                        local_116 = _e1595;
-                        local_117 = _e1597;
-                        let _e1598 = local_114;
-                        let _e1599 = local_113;
-                        let _e1600 = local_111;
-                        local_149 = select(_e1600, _e1599, _e1598);
-                        let _e1602 = local_114;
-                        let _e1603 = local_152;
-                        let _e1604 = local_36;
-                        let _e1605 = select(_e1604, _e1603, _e1602);
-                        local_150 = _e1605;
-                        let _e1606 = local_9;
-                        let _e1607 = (5u * _e1606);
-                        local_118 = _e1607;
-                        local_119 = bitcast<u32>(_e1595[0]);
-                        let _e1610 = local_4;
-                        if (_e1607 < _e1610) {
+                        let _e1193 = phi_1199_;
+                        let _e1195 = phi_1200_;
+                        local_98 = _e1193;
+                        local_99 = _e1195;
+                        let _e1196 = local_96;
+                        let _e1197 = local_95;
+                        let _e1198 = local_93;
+                        local_125 = select(_e1198, _e1197, _e1196);
+                        let _e1200 = local_96;
+                        let _e1201 = local_128;
+                        let _e1202 = local_18;
+                        let _e1203 = select(_e1202, _e1201, _e1200);
+                        local_126 = _e1203;
+                        let _e1204 = local_9;
+                        let _e1205 = (5u * _e1204);
+                        local_100 = _e1205;
+                        local_101 = bitcast<u32>(_e1193[0]);
+                        let _e1208 = local_4;
+                        if (_e1205 < _e1208) {
                         } else {
-                            phi_1802_ = true;
+                            phi_1394_ = true;
                             break;
                         }
-                        let _e1612 = local_118;
-                        let _e1615 = local_119;
-                        global_7.member[_e1612] = _e1615;
-                        let _e1616 = local_118;
-                        let _e1617 = (_e1616 + 1u);
-                        local_120 = _e1617;
-                        let _e1618 = local_116;
-                        local_121 = bitcast<u32>(_e1618[1]);
-                        let _e1621 = local_4;
-                        if (_e1617 < _e1621) {
+                        let _e1210 = local_100;
+                        let _e1213 = local_101;
+                        global_7.member[_e1210] = _e1213;
+                        let _e1214 = local_100;
+                        let _e1215 = (_e1214 + 1u);
+                        local_102 = _e1215;
+                        let _e1216 = local_98;
+                        local_103 = bitcast<u32>(_e1216[1]);
+                        let _e1219 = local_4;
+                        if (_e1215 < _e1219) {
                         } else {
-                            phi_1802_ = true;
+                            phi_1394_ = true;
                             break;
                         }
-                        let _e1623 = local_120;
-                        let _e1626 = local_121;
-                        global_7.member[_e1623] = _e1626;
-                        let _e1627 = local_118;
-                        let _e1628 = (_e1627 + 2u);
-                        local_122 = _e1628;
-                        let _e1629 = local_116;
-                        local_123 = bitcast<u32>(_e1629[2]);
-                        let _e1632 = local_4;
-                        if (_e1628 < _e1632) {
+                        let _e1221 = local_102;
+                        let _e1224 = local_103;
+                        global_7.member[_e1221] = _e1224;
+                        let _e1225 = local_100;
+                        let _e1226 = (_e1225 + 2u);
+                        local_104 = _e1226;
+                        let _e1227 = local_98;
+                        local_105 = bitcast<u32>(_e1227[2]);
+                        let _e1230 = local_4;
+                        if (_e1226 < _e1230) {
                         } else {
-                            phi_1802_ = true;
+                            phi_1394_ = true;
                             break;
                         }
-                        let _e1634 = local_122;
-                        let _e1637 = local_123;
-                        global_7.member[_e1634] = _e1637;
-                        let _e1638 = local_118;
-                        let _e1639 = (_e1638 + 3u);
-                        local_124 = _e1639;
-                        let _e1640 = local_117;
-                        local_125 = bitcast<u32>(_e1640);
-                        let _e1642 = local_4;
-                        if (_e1639 < _e1642) {
+                        let _e1232 = local_104;
+                        let _e1235 = local_105;
+                        global_7.member[_e1232] = _e1235;
+                        let _e1236 = local_100;
+                        let _e1237 = (_e1236 + 3u);
+                        local_106 = _e1237;
+                        let _e1238 = local_99;
+                        local_107 = bitcast<u32>(_e1238);
+                        let _e1240 = local_4;
+                        if (_e1237 < _e1240) {
                         } else {
-                            phi_1802_ = true;
+                            phi_1394_ = true;
                             break;
                         }
-                        let _e1644 = local_124;
-                        let _e1647 = local_125;
-                        global_7.member[_e1644] = _e1647;
-                        let _e1648 = local_118;
-                        let _e1649 = (_e1648 + 4u);
-                        local_126 = _e1649;
-                        let _e1650 = local_150;
-                        local_127 = bitcast<u32>(_e1650);
-                        let _e1652 = local_4;
-                        if (_e1649 < _e1652) {
+                        let _e1242 = local_106;
+                        let _e1245 = local_107;
+                        global_7.member[_e1242] = _e1245;
+                        let _e1246 = local_100;
+                        let _e1247 = (_e1246 + 4u);
+                        local_108 = _e1247;
+                        let _e1248 = local_126;
+                        local_109 = bitcast<u32>(_e1248);
+                        let _e1250 = local_4;
+                        if (_e1247 < _e1250) {
                         } else {
-                            phi_1802_ = true;
+                            phi_1394_ = true;
                             break;
                         }
-                        let _e1654 = local_126;
-                        let _e1657 = local_127;
-                        global_7.member[_e1654] = _e1657;
-                        let _e1660 = global_5.member.member_2;
-                        local_128 = _e1660;
-                        let _e1661 = local_149;
-                        if _e1661 {
-                            let _e1662 = local_117;
-                            if (_e1662 < 1f) {
-                                phi_1770_ = _e1605;
+                        let _e1252 = local_108;
+                        let _e1255 = local_109;
+                        global_7.member[_e1252] = _e1255;
+                        let _e1258 = global_5.member.member_2;
+                        local_110 = _e1258;
+                        let _e1259 = local_125;
+                        if _e1259 {
+                            let _e1260 = local_99;
+                            if (_e1260 < 1f) {
+                                phi_1362_ = _e1203;
                             } else {
-                                let _e1664 = local_150;
-                                let _e1665 = local_128;
-                                local_129 = (_e1664 * _e1665);
-                                let _e1667 = local_127;
-                                if (_e1667 == 0u) {
-                                    phi_1711_ = false;
+                                let _e1262 = local_126;
+                                let _e1263 = local_110;
+                                local_111 = (_e1262 * _e1263);
+                                let _e1265 = local_109;
+                                if (_e1265 == 0u) {
+                                    phi_1303_ = false;
                                 } else {
-                                    let _e1669 = local_127;
-                                    phi_1711_ = (_e1669 <= 2139095040u);
+                                    let _e1267 = local_109;
+                                    phi_1303_ = (_e1267 <= 2139095040u);
                                 }
-                                let _e1672 = phi_1711_;
-                                if _e1672 {
-                                    let _e1673 = local_129;
-                                    if (_e1673 >= 0f) {
-                                        let _e1675 = local_129;
-                                        let _e1678 = ((bitcast<u32>(_e1675) & 2147483647u) > 2139095040u);
-                                        if _e1678 {
-                                            phi_1742_ = f32();
-                                            phi_1743_ = f32();
-                                            phi_1744_ = false;
+                                let _e1270 = phi_1303_;
+                                if _e1270 {
+                                    let _e1271 = local_111;
+                                    if (_e1271 >= 0f) {
+                                        let _e1273 = local_111;
+                                        let _e1276 = ((bitcast<u32>(_e1273) & 2147483647u) > 2139095040u);
+                                        if _e1276 {
+                                            phi_1334_ = f32();
+                                            phi_1335_ = f32();
+                                            phi_1336_ = false;
                                         } else {
-                                            let _e1679 = local_129;
-                                            let _e1680 = (_e1679 == 0f);
-                                            local_130 = _e1680;
-                                            if _e1680 {
-                                                phi_1740_ = f32();
-                                                phi_1741_ = true;
+                                            let _e1277 = local_111;
+                                            let _e1278 = (_e1277 == 0f);
+                                            local_112 = _e1278;
+                                            if _e1278 {
+                                                phi_1332_ = f32();
+                                                phi_1333_ = true;
                                             } else {
-                                                let _e1684 = global_5.member.member_1.member_1;
-                                                local_131 = _e1684;
-                                                let _e1685 = local_129;
-                                                let _e1686 = (_e1685 >= _e1684);
-                                                if _e1686 {
-                                                    phi_1738_ = f32();
+                                                let _e1282 = global_5.member.member_1.member_1;
+                                                local_113 = _e1282;
+                                                let _e1283 = local_111;
+                                                let _e1284 = (_e1283 >= _e1282);
+                                                if _e1284 {
+                                                    phi_1330_ = f32();
                                                 } else {
-                                                    let _e1687 = local_129;
-                                                    let _e1688 = local_150;
-                                                    let _e1690 = local_131;
-                                                    let _e1691 = local_129;
-                                                    phi_1738_ = ((_e1687 * _e1688) / (_e1690 - _e1691));
+                                                    let _e1285 = local_111;
+                                                    let _e1286 = local_126;
+                                                    let _e1288 = local_113;
+                                                    let _e1289 = local_111;
+                                                    phi_1330_ = ((_e1285 * _e1286) / (_e1288 - _e1289));
                                                 }
-                                                let _e1695 = phi_1738_;
-                                                phi_1740_ = _e1695;
-                                                phi_1741_ = _e1686;
+                                                let _e1293 = phi_1330_;
+                                                phi_1332_ = _e1293;
+                                                phi_1333_ = _e1284;
                                             }
-                                            let _e1697 = phi_1740_;
-                                            let _e1699 = phi_1741_;
-                                            let _e1700 = local_130;
-                                            let _e1701 = local_152;
-                                            phi_1742_ = select(_e1701, 0f, _e1700);
-                                            phi_1743_ = _e1697;
-                                            phi_1744_ = _e1699;
+                                            let _e1295 = phi_1332_;
+                                            let _e1297 = phi_1333_;
+                                            let _e1298 = local_112;
+                                            let _e1299 = local_128;
+                                            phi_1334_ = select(_e1299, 0f, _e1298);
+                                            phi_1335_ = _e1295;
+                                            phi_1336_ = _e1297;
                                         }
-                                        let _e1704 = phi_1742_;
-                                        let _e1706 = phi_1743_;
-                                        let _e1708 = phi_1744_;
-                                        phi_1745_ = _e1704;
-                                        phi_1746_ = _e1706;
-                                        phi_1747_ = _e1678;
-                                        phi_1748_ = _e1708;
+                                        let _e1302 = phi_1334_;
+                                        let _e1304 = phi_1335_;
+                                        let _e1306 = phi_1336_;
+                                        phi_1337_ = _e1302;
+                                        phi_1338_ = _e1304;
+                                        phi_1339_ = _e1276;
+                                        phi_1340_ = _e1306;
                                     } else {
-                                        phi_1745_ = f32();
-                                        phi_1746_ = f32();
-                                        phi_1747_ = true;
-                                        phi_1748_ = false;
+                                        phi_1337_ = f32();
+                                        phi_1338_ = f32();
+                                        phi_1339_ = true;
+                                        phi_1340_ = false;
                                     }
-                                    let _e1710 = phi_1745_;
-                                    let _e1712 = phi_1746_;
-                                    let _e1714 = phi_1747_;
-                                    let _e1716 = phi_1748_;
-                                    phi_1749_ = _e1710;
-                                    phi_1750_ = _e1712;
-                                    phi_1751_ = _e1714;
-                                    phi_1752_ = _e1716;
+                                    let _e1308 = phi_1337_;
+                                    let _e1310 = phi_1338_;
+                                    let _e1312 = phi_1339_;
+                                    let _e1314 = phi_1340_;
+                                    phi_1341_ = _e1308;
+                                    phi_1342_ = _e1310;
+                                    phi_1343_ = _e1312;
+                                    phi_1344_ = _e1314;
                                 } else {
-                                    phi_1749_ = f32();
-                                    phi_1750_ = f32();
-                                    phi_1751_ = true;
-                                    phi_1752_ = false;
+                                    phi_1341_ = f32();
+                                    phi_1342_ = f32();
+                                    phi_1343_ = true;
+                                    phi_1344_ = false;
                                 }
-                                let _e1718 = phi_1749_;
-                                let _e1720 = phi_1750_;
-                                let _e1722 = phi_1751_;
-                                let _e1724 = phi_1752_;
-                                let _e1725 = local_151;
-                                let _e1729 = local_150;
-                                let _e1730 = (_e1729 + select(_e1720, select(_e1718, _e1725, _e1722), select(_e1724, true, _e1722)));
-                                let _e1734 = local_152;
-                                phi_1770_ = select(_e1734, _e1730, ((bitcast<u32>(_e1730) & 2139095040u) != 2139095040u));
+                                let _e1316 = phi_1341_;
+                                let _e1318 = phi_1342_;
+                                let _e1320 = phi_1343_;
+                                let _e1322 = phi_1344_;
+                                let _e1323 = local_127;
+                                let _e1327 = local_126;
+                                let _e1328 = (_e1327 + select(_e1318, select(_e1316, _e1323, _e1320), select(_e1322, true, _e1320)));
+                                let _e1332 = local_128;
+                                phi_1362_ = select(_e1332, _e1328, ((bitcast<u32>(_e1328) & 2139095040u) != 2139095040u));
                             }
-                            let _e1737 = phi_1770_;
-                            phi_1771_ = _e1737;
+                            let _e1335 = phi_1362_;
+                            phi_1363_ = _e1335;
                         } else {
-                            phi_1771_ = _e210;
+                            phi_1363_ = _e186;
                         }
-                        let _e1739 = phi_1771_;
-                        local_132 = bitcast<u32>(_e1739);
-                        let _e1741 = local_9;
-                        let _e1742 = local_3;
-                        if (_e1741 < _e1742) {
+                        let _e1337 = phi_1363_;
+                        local_114 = bitcast<u32>(_e1337);
+                        let _e1339 = local_9;
+                        let _e1340 = local_3;
+                        if (_e1339 < _e1340) {
                         } else {
-                            phi_1802_ = true;
+                            phi_1394_ = true;
                             break;
                         }
-                        let _e1744 = local_9;
-                        let _e1747 = local_132;
-                        global_6.member[_e1744] = _e1747;
+                        let _e1342 = local_9;
+                        let _e1345 = local_114;
+                        global_6.member[_e1342] = _e1345;
                     }
                     storageBarrier();
                     workgroupBarrier();
-                    let _e1748 = local_7;
-                    let _e1749 = local_6;
-                    phi_127_ = (_e1748 + _e1749);
+                    let _e1346 = local_7;
+                    let _e1347 = local_6;
+                    phi_127_ = (_e1346 + _e1347);
                 } else {
                     phi_127_ = u32();
                 }
-                let _e1752 = phi_127_;
+                let _e1350 = phi_127_;
                 continue;
                 continuing {
-                    let _e1753 = local_8;
-                    phi_126_ = _e1752;
-                    phi_1802_ = false;
-                    break if !(_e1753);
+                    let _e1351 = local_8;
+                    phi_126_ = _e1350;
+                    phi_1394_ = false;
+                    break if !(_e1351);
                 }
             }
-            let _e1756 = phi_1802_;
-            if _e1756 {
+            let _e1354 = phi_1394_;
+            if _e1354 {
                 break;
             }
             break;

@@ -22,7 +22,7 @@
 
 use crate::exec::{Group, Load, Mem};
 use crate::slot::{self, Slot};
-use crate::texels::{self, Packed, Texels, TexelsMut};
+use crate::texels::{self, Packed, PackedDepth, Texels, TexelsMut};
 use crate::wg::for_each_item;
 
 /// `depth_encoding`: planar view depth as it is.
@@ -59,7 +59,7 @@ pub struct FrameIoParams {
 /// The depth-buffer (or linear) value a depth word holds.
 #[inline]
 pub fn depth_value(p: &FrameIoParams, word: u32) -> f32 {
-    texels::decode(depth_texels(p), &texels::Word(word), 0)[0]
+    texels::decode_depth(depth_texels(p), word)
 }
 
 /// View depth from a depth-buffer value `d` (NaN outside `[0, 1]`).
@@ -120,7 +120,9 @@ pub fn from_images_pass<G: Group, C: Texels, D: Texels, M: Mem>(
     while base < n {
         let mut i = base + lanes.start;
         while i < n && i < base + lanes.end {
-            let (x, y) = (i % p.width, i / p.width);
+            // One division a pixel: the remainder from the quotient.
+            let y = i / p.width;
+            let x = i - y * p.width;
             let [r, gr, b, _] = color.texel(x, y);
             let z = view_depth(p, depth.texel(x, y)[0]);
             slot::store(&mut fragments, i, Slot::opaque([r, gr, b], z));
@@ -134,7 +136,7 @@ pub fn from_images_pass<G: Group, C: Texels, D: Texels, M: Mem>(
 /// [`from_images_pass`] over images copied into buffers.
 pub fn from_copies_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &FrameIoParams, color: R, depth: R, fragments: M, counts: M) {
     let color = Packed { words: color, width: p.width, format: color_texels(p) };
-    let depth = Packed { words: depth, width: p.width, format: depth_texels(p) };
+    let depth = PackedDepth { words: depth, width: p.width, format: depth_texels(p) };
     from_images_pass(g, p, color, depth, fragments, counts)
 }
 
@@ -159,7 +161,8 @@ pub fn to_image_pass<G: Group, R: Load, T: TexelsMut>(g: &mut G, p: &FrameIoPara
         let mut i = base + lanes.start;
         while i < n && i < base + lanes.end {
             let c = |k: u32| f32::from_bits(rgb.load(3 * i + k));
-            out.set_texel(i % p.width, i / p.width, [c(0), c(1), c(2), 1.0]);
+            let y = i / p.width;
+            out.set_texel(i - y * p.width, y, [c(0), c(1), c(2), 1.0]);
             i += 1;
         }
         base += stride;

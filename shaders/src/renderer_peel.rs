@@ -116,7 +116,7 @@ pub fn layer_pass<G: Group, R: Load, M: Mem>(g: &mut G, p: &RendererPeelParams, 
         let d = depth_value(&p.io, depth.load(i));
         let z = view_depth(&p.io, d);
         let found = drawn(&p.io, d) && is_surface(z);
-        let c = texels::decode(color_texels(&p.io), &color, i);
+        let c = texels::decode_color(color_texels(&p.io), &color, i);
         // Where nothing was drawn the attachment holds the renderer's background (its clear or sky):
         // kept once, in the pass that saw the ray escape, as the mesh peel's shading does.
         let (rgb, alpha, depth) = if found {

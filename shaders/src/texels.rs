@@ -37,20 +37,30 @@ pub fn words_per_texel(format: u32) -> u32 {
 /// Texel `i` of packed `words` in `format`, as a fetch returns it.
 #[inline]
 pub fn decode(format: u32, words: &impl Load, i: u32) -> [f32; 4] {
-    if format == RGBA32F {
-        let w = |k: u32| f32::from_bits(words.load(4 * i + k));
-        [w(0), w(1), w(2), w(3)]
-    } else if format == RGBA16F {
+    if format == R32F || format == D24 { [decode_depth(format, words.load(i)), 0.0, 0.0, 1.0] } else { decode_color(format, words, i) }
+}
+
+/// Colour texel `i` of packed `words` in `format` ([`RGBA32F`], [`RGBA16F`] or [`B10G11R11`]).
+/// Apart from [`decode`], so that a kernel reading only colour carries no depth decoding.
+#[inline]
+pub fn decode_color(format: u32, words: &impl Load, i: u32) -> [f32; 4] {
+    if format == RGBA16F {
         let (rg, ba) = (words.load(2 * i), words.load(2 * i + 1));
         [f16_to_f32(rg & 0xffff), f16_to_f32(rg >> 16), f16_to_f32(ba & 0xffff), f16_to_f32(ba >> 16)]
     } else if format == B10G11R11 {
         let [r, g, b] = b10g11r11_to_f32(words.load(i));
         [r, g, b, 1.0]
-    } else if format == D24 {
-        [(words.load(i) & 0xff_ffff) as f32 / 16_777_215.0, 0.0, 0.0, 1.0]
     } else {
-        [f32::from_bits(words.load(i)), 0.0, 0.0, 1.0]
+        let w = |k: u32| f32::from_bits(words.load(4 * i + k));
+        [w(0), w(1), w(2), w(3)]
     }
+}
+
+/// The depth a depth word in `format` ([`R32F`] or [`D24`]) holds, as a fetch returns it.
+/// Apart from [`decode`], so that a kernel reading only depth carries no colour decoding.
+#[inline]
+pub fn decode_depth(format: u32, word: u32) -> f32 {
+    if format == D24 { (word & 0xff_ffff) as f32 / 16_777_215.0 } else { f32::from_bits(word) }
 }
 
 /// Stores texel `i` of `words` in `format` ([`RGBA32F`] or [`RGBA16F`], the formats a kernel
@@ -66,20 +76,6 @@ pub fn encode(format: u32, words: &mut impl Mem, i: u32, v: [f32; 4]) {
         words.store(4 * i + 1, v[1].to_bits());
         words.store(4 * i + 2, v[2].to_bits());
         words.store(4 * i + 3, v[3].to_bits());
-    }
-}
-
-/// One word as a one-word buffer (a single texel decoded: `decode(format, &Word(w), 0)`).
-pub struct Word(pub u32);
-
-impl Load for Word {
-    #[inline]
-    fn len(&self) -> u32 {
-        1
-    }
-    #[inline]
-    fn load(&self, _: u32) -> u32 {
-        self.0
     }
 }
 
@@ -100,6 +96,21 @@ impl<L: Load> Texels for Packed<L> {
     #[inline]
     fn texel(&self, x: u32, y: u32) -> [f32; 4] {
         decode(self.format, &self.words, y * self.width + x)
+    }
+}
+
+/// A depth image packed into words as [`Packed`] ([`R32F`] or [`D24`]), decoded by
+/// [`decode_depth`] alone.
+pub struct PackedDepth<L> {
+    pub words: L,
+    pub width: u32,
+    pub format: u32,
+}
+
+impl<L: Load> Texels for PackedDepth<L> {
+    #[inline]
+    fn texel(&self, x: u32, y: u32) -> [f32; 4] {
+        [decode_depth(self.format, self.words.load(y * self.width + x)), 0.0, 0.0, 1.0]
     }
 }
 
@@ -219,10 +230,10 @@ mod tests {
         // Halves 1.0 (0x3c00), 2.0 (0x4000), -0.5 (0xb800), 0.25 (0x3400).
         let rgba16 = [0x4000_3c00, 0x3400_b800];
         assert_eq!(decode(RGBA16F, &Words(rgba16), 0), [1.0, 2.0, -0.5, 0.25]);
-        assert_eq!(decode(B10G11R11, &Word(15 << 6), 0), [1.0, 0.0, 0.0, 1.0]);
+        assert_eq!(decode(B10G11R11, &Words([15 << 6]), 0), [1.0, 0.0, 0.0, 1.0]);
         // The high byte of a D24 word is ignored; the largest unorm is 1 exactly.
-        assert_eq!(decode(D24, &Word(0xab00_0000 | 0xff_ffff), 0)[0], 1.0);
-        assert_eq!(decode(D24, &Word(0x80_0000), 0)[0], 8_388_608.0 / 16_777_215.0);
+        assert_eq!(decode(D24, &Words([0xab00_0000 | 0xff_ffff]), 0)[0], 1.0);
+        assert_eq!(decode_depth(D24, 0x80_0000), 8_388_608.0 / 16_777_215.0);
         let depths = [0.25f32.to_bits(), f32::INFINITY.to_bits()];
         let image = Packed { words: Words(depths), width: 1, format: R32F };
         assert_eq!((image.texel(0, 0)[0], image.texel(0, 1)[0]), (0.25, f32::INFINITY));

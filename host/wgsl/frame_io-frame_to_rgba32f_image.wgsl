@@ -24,7 +24,7 @@ var<private> global_2: vec3<u32>;
 var<storage> global_3: type_6;
 var<immediate> global_4: type_15;
 @group(0) @binding(1) 
-var global_5: texture_storage_2d<rgba32float,read_write>;
+var global_5: texture_storage_2d<rgba32float,write>;
 
 fn function_() {
     var local: u32;

@@ -786,6 +786,80 @@ fn depth_and_colour_formats_on_wgpu_textures_give_the_cpus_frame() {
     cpu_ctx.destroy(&mut cpu);
 }
 
+/// The result written into a renderer's RGBA32F and RGBA16F textures in place (write-only storage
+/// textures, where they have STORAGE_BINDING usage) equals, bit for bit, the result converted into
+/// a buffer and copied into textures without that usage, and is the frame into a buffer, converted;
+/// recorded into the renderer's encoder with nothing made, submitted or read back.
+#[test]
+fn outputs_written_in_place_equal_the_copied_ones_on_wgpu() {
+    let Some((device, queue, info)) = dof_tests::wgpu_device() else { return };
+    let mut g = dof::backend::WgpuBackend::from_device(device.clone(), queue.clone(), info);
+    let mut ctx = context(&mut g);
+    let [fragments, counts, out, _] = buffers(&mut g);
+    g.write_buffer(fragments, 0, &decoded_input(&cases()[0])).unwrap();
+    let input = FrameInput::Layers { fragments: SlotBuffer::current(fragments), counts: CountBuffer(counts), layers: 1, footprint_side: 0 };
+    let pixels = (W * H) as usize;
+    for (format, texture_format) in
+        [(ImageFormat::Rgba32Float, wgpu::TextureFormat::Rgba32Float), (ImageFormat::Rgba16Float, wgpu::TextureFormat::Rgba16Float)]
+    {
+        let texture = |storage: bool| {
+            let usage = wgpu::TextureUsages::COPY_SRC | wgpu::TextureUsages::COPY_DST;
+            device.create_texture(&wgpu::TextureDescriptor {
+                label: Some("renderer's output"),
+                size: wgpu::Extent3d { width: W, height: H, depth_or_array_layers: 1 },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: texture_format,
+                usage: if storage { usage | wgpu::TextureUsages::STORAGE_BINDING } else { usage },
+                view_formats: &[],
+            })
+        };
+        let textures = [texture(true), texture(false)];
+        let [in_place, copied] = [0, 1].map(|k| g.import_texture(&textures[k]).unwrap());
+        assert!(g.check_image_store(&in_place).is_ok(), "{format}");
+        let err = g.check_image_store(&copied).unwrap_err().to_string();
+        assert!(err.contains("STORAGE_BINDING"), "{format}: {err}");
+        let before = g.counters();
+        let mut encoder = device.create_command_encoder(&Default::default());
+        {
+            let mut recording = g.record_into(&mut encoder).unwrap();
+            for image in [in_place, copied] {
+                ctx.record(&mut *recording, &Frame { output: FrameOutput::Image(image), ..frame(input, out) })
+                    .unwrap_or_else(|e| panic!("{format}: {e}"));
+            }
+            ctx.record(&mut *recording, &frame(input, out)).unwrap();
+        }
+        let spent = g.counters().since(&before);
+        assert_eq!((spent.allocations, spent.submissions, spent.uploads, spent.readbacks), (0, 0, 0, 0), "{format}");
+        queue.submit([encoder.finish()]);
+        let [a, b] = [in_place, copied].map(|image| {
+            let words = g_texture_words(&mut g, &image);
+            let read = g.read_buffer(words, 0, image.words()).unwrap();
+            g.destroy_buffer(words);
+            read
+        });
+        let differing = a.iter().zip(&b).filter(|(x, y)| x != y).count();
+        assert_eq!(differing, 0, "{format}: the result written in place differs from the copied one in {differing} words");
+        let rgb = floats(&g.read_buffer(out, 0, 3 * pixels as u64).unwrap());
+        let half = |v: f32| f16_to_f32(f32_to_f16(v));
+        for (i, c) in rgb.chunks(3).enumerate() {
+            let got = if format == ImageFormat::Rgba16Float {
+                let (rg, ba) = (a[2 * i], a[2 * i + 1]);
+                [f16_to_f32(rg & 0xffff), f16_to_f32(rg >> 16), f16_to_f32(ba & 0xffff), f16_to_f32(ba >> 16)]
+            } else {
+                [0, 1, 2, 3].map(|k| f32::from_bits(a[4 * i + k]))
+            };
+            let want = if format == ImageFormat::Rgba16Float { [half(c[0]), half(c[1]), half(c[2]), 1.0] } else { [c[0], c[1], c[2], 1.0] };
+            assert_eq!(got.map(f32::to_bits), want.map(f32::to_bits), "{format} pixel {i}");
+        }
+        g.forget_texture(&in_place);
+        g.forget_texture(&copied);
+    }
+    assert!(g.take_diagnostics().is_empty());
+    ctx.destroy(&mut g);
+}
+
 /// The words of an imported texture, copied into a new buffer of the backend.
 fn g_texture_words(g: &mut dof::backend::WgpuBackend, image: &ImageRef) -> BufferId {
     let buffer = g.create_buffer(image.words(), "texture words").unwrap();

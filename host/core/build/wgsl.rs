@@ -1,7 +1,8 @@
 //! The kernels' SPIR-V translated to WGSL by naga, for wgpu (Vulkan, Metal, DX12, GL, WebGPU).
 //!
-//! Three SPIR-V passes first make each module one naga takes, and translates without changing what
-//! it computes ([`non_finite`], [`ordered_comparisons`], [`cross_block`]); then naga parses it,
+//! Four SPIR-V passes first make each module one naga takes, and translates without changing what
+//! it computes ([`non_finite`], [`ordered_comparisons`], [`cross_block`], [`write_only_images`]);
+//! then naga parses it,
 //! validates it, and writes WGSL. The entry
 //! point is named after the kernel function alone (`splat::bin::splat_bin` → `splat_bin`; naga
 //! appends `_` to a name ending in a digit): one module holds one entry point, and WGSL has no
@@ -15,6 +16,8 @@ mod cross_block;
 mod non_finite;
 #[path = "ordered_comparisons.rs"]
 mod ordered_comparisons;
+#[path = "write_only_images.rs"]
+mod write_only_images;
 
 /// WGSL for the module of one entry point.
 pub fn translate(entry: &str, spirv: &[u8]) -> Result<String, String> {
@@ -23,6 +26,7 @@ pub fn translate(entry: &str, spirv: &[u8]) -> Result<String, String> {
     non_finite::make_non_finite_constants_runtime(&mut module).map_err(|e| format!("{entry}: {e}"))?;
     ordered_comparisons::order_float_comparisons(&mut module);
     cross_block::spill_cross_block_values(&mut module).map_err(|e| format!("{entry}: {e}"))?;
+    write_only_images::mark_write_only_images(&mut module);
     let bytes: Vec<u8> = module.assemble().iter().flat_map(|w| w.to_le_bytes()).collect();
 
     let options = naga::front::spv::Options { adjust_coordinate_space: false, strict_capabilities: true, block_ctx_dump_prefix: None };

@@ -265,7 +265,9 @@ impl WgpuBackend {
     fn create_pipeline(&self, kernel: &'static KernelDesc) -> Result<Pipeline> {
         let entries: Vec<wgpu::BindGroupLayoutEntry> = (0..kernel.bindings)
             .map(|binding| {
-                if kernel.images & (1 << binding) != 0 {
+                if kernel.storage_images & (1 << binding) != 0 {
+                    storage_texture_binding(binding, kernel.half_images & (1 << binding) != 0)
+                } else if kernel.images & (1 << binding) != 0 {
                     texture_binding(binding, kernel.depth_images & (1 << binding) != 0)
                 } else {
                     storage_binding(binding, kernel.read_only & (1 << binding) != 0)
@@ -302,7 +304,7 @@ impl WgpuBackend {
     }
 
     /// Records one dispatch of `kernel`, direct (`groups`) or indirect (`args` at a word offset),
-    /// bound to `buffers` and the textures it samples, `images` (each in binding order).
+    /// bound to `buffers` and the textures it samples or writes, `images` (each in binding order).
     fn record_dispatch(
         &mut self,
         kernel: &'static KernelDesc,
@@ -313,7 +315,16 @@ impl WgpuBackend {
         label: &str,
     ) -> Result<()> {
         let bound: Vec<wgpu::Buffer> = buffers.iter().map(|&b| self.buffer(b).map(|b| b.buffer.clone())).collect::<Result<_>>()?;
-        let views: Vec<wgpu::TextureView> = images.iter().map(|image| self.sampled_view(image)).collect::<Result<_>>()?;
+        let image_bindings = (0..kernel.bindings).filter(|b| kernel.images & (1 << b) != 0);
+        let views: Vec<wgpu::TextureView> = images
+            .iter()
+            .zip(image_bindings)
+            .map(
+                |(image, binding)| {
+                    if kernel.storage_images & (1 << binding) != 0 { self.storage_view(image) } else { self.sampled_view(image) }
+                },
+            )
+            .collect::<Result<_>>()?;
         let (layout, pipeline) = {
             let p = self.pipeline(kernel)?;
             (p.layout.clone(), p.pipeline.clone())
@@ -377,6 +388,21 @@ fn texture_binding(binding: u32, depth: bool) -> wgpu::BindGroupLayoutEntry {
         binding,
         visibility: wgpu::ShaderStages::COMPUTE,
         ty: wgpu::BindingType::Texture { sample_type, view_dimension: wgpu::TextureViewDimension::D2, multisampled: false },
+        count: None,
+    }
+}
+
+/// A storage texture a kernel only writes (`write_only_images` made its WGSL `write`).
+fn storage_texture_binding(binding: u32, half: bool) -> wgpu::BindGroupLayoutEntry {
+    let format = if half { wgpu::TextureFormat::Rgba16Float } else { wgpu::TextureFormat::Rgba32Float };
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::COMPUTE,
+        ty: wgpu::BindingType::StorageTexture {
+            access: wgpu::StorageTextureAccess::WriteOnly,
+            format,
+            view_dimension: wgpu::TextureViewDimension::D2,
+        },
         count: None,
     }
 }
@@ -558,6 +584,10 @@ impl Backend for WgpuBackend {
         self.check_texture_sample(image)
     }
 
+    fn check_image_store(&self, image: &ImageRef) -> Result<()> {
+        self.check_texture_store(image)
+    }
+
     fn dispatch_indirect(
         &mut self,
         kernel: &'static KernelDesc,
@@ -642,11 +672,7 @@ impl Backend for WgpuBackend {
     }
 
     fn prepare(&mut self, kernels: &[&'static KernelDesc], draws: &[&'static dof_shaders::DrawDesc]) -> Result<()> {
-        // Kernels that write storage images are never run here (this backend writes no image in
-        // place: rust-gpu's storage images translate to read-write WGSL storage textures, which
-        // WebGPU has only for single-channel formats), so they get no pipeline.
-        let kernels = kernels.iter().copied().filter(|k| k.storage_images == 0);
-        for kernel in kernels.chain(draws.iter().flat_map(|d| [Some(d.fallback), d.fallback_prepass]).flatten()) {
+        for kernel in kernels.iter().copied().chain(draws.iter().flat_map(|d| [Some(d.fallback), d.fallback_prepass]).flatten()) {
             self.pipeline(kernel)?;
         }
         Ok(())

@@ -1,7 +1,8 @@
-//! A renderer's textures as a frame's input and output: imported once, then copied to and from
-//! buffers as the frame API's images are on Vulkan. Depth is read by a kernel (`texture_read`), as
-//! f32 depths: wgpu copies no depth out of `Depth24Plus` or `Depth24PlusStencil8`, and copies one
-//! out of the others only for the whole texture.
+//! A renderer's textures as a frame's input and output: imported once, then sampled and written in
+//! place by kernels where their usage allows, or copied to and from buffers as the frame API's
+//! images are on Vulkan. Depth is read by a kernel (`texture_read`), as f32 depths: wgpu copies no
+//! depth out of `Depth24Plus` or `Depth24PlusStencil8`, and copies one out of the others only for
+//! the whole texture.
 
 use super::timing::Command;
 use super::{Groups, Pipeline, WgpuBackend, storage_binding, texture_binding};
@@ -18,6 +19,10 @@ pub(super) struct WgpuTexture {
     /// texture, mip 0 and layer 0 of a colour texture with TEXTURE_BINDING usage; `None` for a
     /// colour texture without that usage, which a frame copies.
     sampled_view: Option<wgpu::TextureView>,
+    /// The view kernels write it through in place (made at import): mip 0 and layer 0 of an
+    /// RGBA32F or RGBA16F texture with STORAGE_BINDING usage; `None` otherwise (a frame's result
+    /// is then copied in).
+    storage_view: Option<wgpu::TextureView>,
 }
 
 /// The texture formats a frame takes, as the [`ImageFormat`] their texels have in a buffer.
@@ -44,7 +49,8 @@ impl WgpuBackend {
     /// buffer: its own, except that every depth format reads as `D32Float` (f32 depths, read by a
     /// kernel). Mip level 0 and array layer 0 are used. An input is read in place where it has
     /// TEXTURE_BINDING usage (a depth texture always needs it); a colour texture without it is
-    /// copied, and needs COPY_SRC. An output needs COPY_DST; wgpu orders the frame's access
+    /// copied, and needs COPY_SRC. An output is written in place where it has STORAGE_BINDING
+    /// usage, and copied into otherwise, which needs COPY_DST; wgpu orders the frame's access
     /// after the caller's earlier commands. The backend keeps a reference until
     /// [`WgpuBackend::forget_texture`].
     pub fn import_texture(&mut self, texture: &wgpu::Texture) -> Result<ImageRef> {
@@ -76,6 +82,9 @@ impl WgpuBackend {
             Some(depth) => Some(depth.clone()),
             None => texture.usage().contains(wgpu::TextureUsages::TEXTURE_BINDING).then(|| view(wgpu::TextureAspect::All)),
         };
+        let writable = matches!(format, wgpu::TextureFormat::Rgba32Float | wgpu::TextureFormat::Rgba16Float)
+            && texture.usage().contains(wgpu::TextureUsages::STORAGE_BINDING);
+        let storage_view = writable.then(|| view(wgpu::TextureAspect::All));
         if depth_view.is_some() {
             // Made now, so that no frame makes it.
             self.depth_read_pipeline()?;
@@ -85,8 +94,8 @@ impl WgpuBackend {
         if slot == self.textures.len() {
             self.textures.push(None);
         }
-        let view = if sampled_view.is_some() { slot as u64 + 1 } else { 0 };
-        self.textures[slot] = Some(WgpuTexture { texture: texture.clone(), depth_view, sampled_view });
+        let view = if sampled_view.is_some() || storage_view.is_some() { slot as u64 + 1 } else { 0 };
+        self.textures[slot] = Some(WgpuTexture { texture: texture.clone(), depth_view, sampled_view, storage_view });
         let size = texture.size();
         Ok(ImageRef::in_table(slot as u64 + 1, view, image_format, [size.width, size.height]))
     }
@@ -133,6 +142,32 @@ impl WgpuBackend {
             )));
         }
         Ok(())
+    }
+
+    /// The checks of writing a texture in place, made before anything is recorded.
+    pub(super) fn check_texture_store(&self, image: &ImageRef) -> Result<()> {
+        let texture = self.texture(image)?;
+        let size = texture.texture.size();
+        if image.extent[0] > size.width || image.extent[1] > size.height {
+            return Err(Error::InvalidArgument(format!(
+                "dispatch_images: {}x{} texels of a {}x{} texture",
+                image.extent[0], image.extent[1], size.width, size.height
+            )));
+        }
+        if texture.storage_view.is_none() {
+            return Err(Error::InvalidArgument(format!(
+                "dispatch_images: the {:?} texture has no STORAGE_BINDING usage (it has {:?})",
+                texture.texture.format(),
+                texture.texture.usage()
+            )));
+        }
+        image.check_store("dispatch_images")
+    }
+
+    /// The view a kernel writes `image` through.
+    pub(super) fn storage_view(&self, image: &ImageRef) -> Result<wgpu::TextureView> {
+        self.check_texture_store(image)?;
+        self.texture(image)?.storage_view.clone().ok_or_else(|| Error::InvalidArgument("a texture without a storage view".into()))
     }
 
     /// The view a kernel samples `image` through.

@@ -10,7 +10,8 @@
 //!    unless the library's peel test (`dof_peel_keep`) keeps it against the bound the library
 //!    writes; an RGBA16F colour and a `Depth32Float` depth attachment; the bound and the indirect
 //!    draw command in storage buffers of its own, imported with `import_buffer`; an RGBA32F texture
-//!    the result goes to. The textures become the library's images with `import_texture`.
+//!    the result is written into in place (STORAGE_BINDING usage). The textures become the
+//!    library's images with `import_texture`.
 //! 3. `RendererPeel` and a `SplatContext` are made once (every allocation happens here).
 //! 4. Per frame, one command encoder of its own, one submission: the library's `begin`, then for
 //!    each layer its own render pass (drawn indirectly from the command the library wrote) and the
@@ -223,8 +224,9 @@ impl Renderer {
         // The library copies colour out (COPY_SRC) and reads depth in a kernel (TEXTURE_BINDING).
         let colour = texture("colour", COLOUR, T::RENDER_ATTACHMENT | T::COPY_SRC);
         let depth = texture("depth", DEPTH, T::RENDER_ATTACHMENT | T::TEXTURE_BINDING);
-        // The library copies the result in; we copy it out, and sample it when showing it.
-        let output = texture("output", OUTPUT, T::COPY_DST | T::COPY_SRC | T::TEXTURE_BINDING);
+        // The library writes the result in place (a storage texture); we copy it out, and sample
+        // it when showing it.
+        let output = texture("output", OUTPUT, T::STORAGE_BINDING | T::COPY_SRC | T::TEXTURE_BINDING);
         let views = [colour.create_view(&Default::default()), depth.create_view(&Default::default())];
         Ok(Renderer {
             adapter,

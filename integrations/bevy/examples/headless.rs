@@ -1,11 +1,16 @@
-//! The plugin in a headless Bevy app, checked: three cameras see the same scene of unlit panels (a
-//! far wall, a pane at the focus distance, a near bar) into linear RGBA16F images of their own. One
-//! has no depth of field, one a [`LensBlur`] closed down to a pinhole, one a [`LensBlur`] at f/1 on
-//! a 36 mm sensor. After a few frames their images are read back, and the app fails unless:
+//! The plugin in a headless Bevy app, checked: five cameras see the same scene of unlit panels (a
+//! far wall, a pane at the focus distance, a near bar; drawn with the peel material) into linear
+//! RGBA16F images of their own. One has no depth of field; one a [`LensBlur`] closed down to a
+//! pinhole; one a [`LensBlur`] at f/1 on a 36 mm sensor; and the last two the same two lenses with
+//! four layers, peeled by Bevy's passes. After a few frames their images are read back, and the app
+//! fails unless:
 //! - the pinhole through the library equals the camera without it, bit for bit (the library reads
-//!   the HDR image and writes it back exactly when nothing is blurred);
-//! - the blurred image differs from the pinhole where the near bar and the panels' edges are out
-//!   of focus, and equals it in the middle of the pane in focus;
+//!   the HDR image and writes it back exactly when nothing is blurred), and so does the peeled
+//!   pinhole (its front layer, within one RGBA16F step);
+//! - the blurred images differ from the pinhole where the near bar and the panels' edges are out
+//!   of focus, and equal it in the middle of the pane in focus;
+//! - the peeled blur differs from the single-layer one behind the near bar's edges, where the
+//!   peel finds the pane and the wall the bar hides;
 //! - every pixel is finite.
 //!
 //! It writes the images as EXR into `out/`, and the scene and camera as glTF
@@ -20,7 +25,7 @@ use bevy::prelude::*;
 use bevy::render::gpu_readback::{Readback, ReadbackComplete};
 use bevy::render::render_resource::{TextureFormat, TextureUsages};
 use bevy::window::ExitCondition;
-use bevy_dof::{LensBlur, LensBlurPlugin};
+use bevy_dof::{LensBlur, LensBlurPlugin, PeelMaterial, peel_material};
 use dof_core::dof_shaders::half::f16_to_f32;
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
@@ -42,14 +47,15 @@ const PANELS: [Panel; 3] = [
 /// What a ray that hits nothing sees (the cameras' clear colour), linear.
 const BACKGROUND: [f32; 3] = [0.5, 0.7, 1.0];
 
-/// The three cameras, in order.
-const NAMES: [&str; 3] = ["no-dof", "pinhole", "blurred"];
+/// The cameras.
+const NAMES: [&str; CAMERAS] = ["no-dof", "pinhole", "blurred", "peeled-pinhole", "peeled"];
+const CAMERAS: usize = 5;
 
 #[derive(Resource, Clone, Default)]
-struct Captured(Arc<Mutex<[Option<Vec<u8>>; 3]>>);
+struct Captured(Arc<Mutex<[Option<Vec<u8>>; CAMERAS]>>);
 
 #[derive(Resource)]
-struct Targets([Handle<Image>; 3]);
+struct Targets([Handle<Image>; CAMERAS]);
 
 #[derive(Component)]
 struct Capture(usize);
@@ -74,11 +80,11 @@ fn setup(
     mut commands: Commands,
     mut images: ResMut<Assets<Image>>,
     mut meshes: ResMut<Assets<Mesh>>,
-    mut materials: ResMut<Assets<StandardMaterial>>,
+    mut materials: ResMut<Assets<PeelMaterial>>,
 ) {
     let panel = |meshes: &mut Assets<Mesh>, w: f32, h: f32| meshes.add(Rectangle::new(w, h));
-    let unlit = |materials: &mut Assets<StandardMaterial>, r: f32, g: f32, b: f32| {
-        materials.add(StandardMaterial { base_color: Color::linear_rgb(r, g, b), unlit: true, ..default() })
+    let unlit = |materials: &mut Assets<PeelMaterial>, r: f32, g: f32, b: f32| {
+        materials.add(peel_material(StandardMaterial { base_color: Color::linear_rgb(r, g, b), unlit: true, ..default() }))
     };
     for &(w, h, at, colour) in &PANELS {
         commands.spawn((
@@ -87,16 +93,16 @@ fn setup(
             Transform::from_translation(at),
         ));
     }
-    let targets: [Handle<Image>; 3] = std::array::from_fn(|_| {
+    let targets: [Handle<Image>; CAMERAS] = std::array::from_fn(|_| {
         let mut image = Image::new_target_texture(WIDTH, HEIGHT, TextureFormat::Rgba16Float, None);
         image.texture_descriptor.usage |= TextureUsages::COPY_SRC;
         images.add(image)
     });
-    let lenses = [
-        None,
-        Some(LensBlur { aperture_f_stops: f32::INFINITY, ..default() }),
-        Some(LensBlur { aperture_f_stops: 1.0, sensor_height: 0.036, ..default() }),
-    ];
+    let pinhole = LensBlur { aperture_f_stops: f32::INFINITY, ..default() };
+    let blurred = LensBlur { aperture_f_stops: 1.0, sensor_height: 0.036, ..default() };
+    let lenses = [None, Some(pinhole), Some(blurred), Some(LensBlur { layers: 4, ..pinhole }), Some(LensBlur { layers: 4, ..blurred })];
+    // The peeled cameras' pass cameras take the orders just below theirs.
+    let orders = [0, 1, 2, 10, 20];
     for (i, lens) in lenses.into_iter().enumerate() {
         let mut camera = commands.spawn((
             Camera3d::default(),
@@ -105,7 +111,7 @@ fn setup(
             // As the plugin sets on its cameras: the same edges on all three.
             Msaa::Off,
             Camera {
-                order: i as isize,
+                order: orders[i],
                 clear_color: ClearColorConfig::Custom(Color::linear_rgb(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2])),
                 ..default()
             },
@@ -165,27 +171,43 @@ fn check(captured: &Captured) -> AppExit {
         eprintln!("FAILED: writing out/: {e}");
         return AppExit::error();
     }
-    let (none, pinhole, blurred) = (&images[0], &images[1], &images[2]);
+    let [none, pinhole, blurred, peeled_pinhole, peeled] = [0, 1, 2, 3, 4].map(|i| &images[i]);
     let mut failures = Vec::new();
     if !images.iter().flatten().flatten().all(|v| v.is_finite()) {
         failures.push("a pixel is not finite".to_string());
     }
-    let worst = none.iter().zip(pinhole).flat_map(|(a, b)| (0..3).map(move |c| (a[c] - b[c]).abs())).fold(0.0f32, f32::max);
+    let largest = |a: &[[f32; 3]], b: &[[f32; 3]]| a.iter().zip(b).flat_map(|(a, b)| (0..3).map(move |c| (a[c] - b[c]).abs())).fold(0.0f32, f32::max);
+    let worst = largest(none, pinhole);
     println!("pinhole through the library against no depth of field: largest difference {worst}");
     if worst != 0.0 {
         failures.push(format!("the pinhole differs from the camera without depth of field by {worst}"));
     }
-    let changed = |a: &[f32; 3], b: &[f32; 3]| (0..3).any(|c| (a[c] - b[c]).abs() > 0.01 * b[c].abs().max(0.01));
-    let differing = pinhole.iter().zip(blurred).filter(|(a, b)| changed(a, b)).count();
-    println!("pixels the blur changed by more than 1%: {differing} of {}", WIDTH * HEIGHT);
-    if differing < (WIDTH * HEIGHT / 50) as usize {
-        failures.push(format!("the blur changed only {differing} pixels"));
+    // One RGBA16F step of the brightest channel (1.0): 2^-10.
+    let worst = largest(none, peeled_pinhole);
+    println!("peeled pinhole against no depth of field: largest difference {worst}");
+    if worst > 1.0 / 1024.0 {
+        failures.push(format!("the peeled pinhole differs from the camera without depth of field by {worst}"));
     }
-    // The middle of the pane, in focus at 3 m, away from its edges and the bar's blur.
-    let (x, y) = (WIDTH / 2 - 40, HEIGHT / 2 + 20);
-    let at = (y * WIDTH + x) as usize;
-    if changed(&blurred[at], &pinhole[at]) {
-        failures.push(format!("the pane in focus changed at ({x}, {y}): {:?} against {:?}", blurred[at], pinhole[at]));
+    let changed = |a: &[f32; 3], b: &[f32; 3]| (0..3).any(|c| (a[c] - b[c]).abs() > 0.01 * b[c].abs().max(0.01));
+    let count = |a: &[[f32; 3]], b: &[[f32; 3]]| a.iter().zip(b).filter(|(a, b)| changed(a, b)).count();
+    for (name, image) in [("single-layer", blurred), ("peeled", peeled)] {
+        let differing = count(pinhole, image);
+        println!("pixels the {name} blur changed by more than 1%: {differing} of {}", WIDTH * HEIGHT);
+        if differing < (WIDTH * HEIGHT / 50) as usize {
+            failures.push(format!("the {name} blur changed only {differing} pixels"));
+        }
+        // The middle of the pane, in focus at 3 m, away from its edges and the bar's blur.
+        let (x, y) = (WIDTH / 2 - 40, HEIGHT / 2 + 20);
+        let at = (y * WIDTH + x) as usize;
+        if changed(&image[at], &pinhole[at]) {
+            failures.push(format!("the pane in focus changed at ({x}, {y}) in the {name} blur: {:?} against {:?}", image[at], pinhole[at]));
+        }
+    }
+    // What the peel adds: the surfaces behind the near bar, seen through its blurred edges.
+    let differing = count(blurred, peeled);
+    println!("pixels where the peeled blur differs from the single-layer one by more than 1%: {differing}");
+    if differing < (WIDTH * HEIGHT / 200) as usize {
+        failures.push(format!("the peeled blur differs from the single-layer one in only {differing} pixels"));
     }
     if failures.is_empty() {
         println!("ok");

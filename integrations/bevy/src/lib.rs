@@ -1,7 +1,10 @@
-//! Order-correct depth of field for Bevy cameras: single-layer tiled splatting (Selgrad, Franke,
-//! Stamminger 2016) of the camera's HDR colour and depth, as the `dof` command's `tiled` method
-//! runs it, through `dof-core`'s wgpu backend on Bevy's own device, recorded into Bevy's own
-//! command encoder.
+//! Order-correct depth of field for Bevy cameras, through `dof-core`'s wgpu backend on Bevy's own
+//! device, recorded into Bevy's own command encoders:
+//! - by default single-layer tiled splatting (Selgrad, Franke, Stamminger 2016) of the camera's HDR
+//!   colour and depth, as the `dof` command's `tiled` method runs it;
+//! - with [`LensBlur::layers`] above one, multi-layer tiled splatting (Franke et al. 2018) of the
+//!   view depth-peeled by Bevy's own passes, for meshes drawn with a [`PeelMaterial`] (the
+//!   [`peel`] module).
 //!
 //! ```no_run
 //! use bevy::prelude::*;
@@ -27,6 +30,10 @@
 //! Errors (a device without immediates, a view too large for a buffer) are logged once a camera,
 //! and the camera's image is left as it was.
 
+pub mod peel;
+
+pub use peel::{PeelMaterial, PeelTest, peel_material};
+
 use bevy::core_pipeline::tonemapping::tonemapping;
 use bevy::core_pipeline::{Core3d, Core3dSystems};
 use bevy::prelude::*;
@@ -37,6 +44,8 @@ use bevy::render::renderer::{RenderAdapterInfo, RenderContext, RenderDevice, Ren
 use bevy::render::view::{ExtractedView, ViewDepthStencilTexture, ViewTarget};
 use bevy::render::{Render, RenderApp};
 use dof_core::ThinLens;
+use bevy::pbr::MaterialPlugin;
+use bevy::render::sync_world::MainEntity;
 use dof_core::backend::{Backend, ImageRef, WgpuBackend};
 use dof_core::frame::{DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput, SplatContext, SplatContextDesc, SplatOptions};
 use dof_core::lens::{Aperture, CameraLens, yfov_from_projection};
@@ -57,12 +66,15 @@ pub struct LensBlur {
     pub aperture_f_stops: f32,
     /// Height of the sensor (a full-frame sensor is 0.024 tall).
     pub sensor_height: f32,
+    /// Layers a pixel: 1 blurs the camera's own colour and depth; more peels the view into that
+    /// many layers with Bevy's own passes, one draw of the scene a layer ([`peel`]).
+    pub layers: u32,
 }
 
 impl Default for LensBlur {
     /// f/2.8 on a full-frame sensor, focused at 3 m.
     fn default() -> Self {
-        LensBlur { focal_distance: 3.0, aperture_f_stops: 2.8, sensor_height: 0.024 }
+        LensBlur { focal_distance: 3.0, aperture_f_stops: 2.8, sensor_height: 0.024, layers: 1 }
     }
 }
 
@@ -88,14 +100,23 @@ pub struct LensBlurPlugin;
 
 impl Plugin for LensBlurPlugin {
     fn build(&self, app: &mut App) {
-        app.add_plugins(ExtractComponentPlugin::<LensBlur>::default()).add_systems(PostUpdate, configure_cameras);
+        bevy::asset::embedded_asset!(app, "peel.wesl");
+        app.add_plugins((
+            ExtractComponentPlugin::<LensBlur>::default(),
+            ExtractComponentPlugin::<peel::PeelPass>::default(),
+            MaterialPlugin::<PeelMaterial>::default(),
+        ))
+        .add_systems(PostUpdate, (configure_cameras, peel::sync_pass_cameras.after(bevy::camera::CameraUpdateSystems)));
         let Some(render_app) = app.get_sub_app_mut(RenderApp) else {
             return;
         };
-        render_app
-            .init_resource::<LensBlurState>()
-            .add_systems(Render, forget_removed_views)
-            .add_systems(Core3d, lens_blur.in_set(Core3dSystems::PostProcess).before(tonemapping));
+        render_app.init_resource::<LensBlurState>().add_systems(Render, forget_removed_views).add_systems(
+            Core3d,
+            (
+                peel::peel_begin.after(Core3dSystems::Prepass).before(Core3dSystems::MainPass),
+                (peel::peel_append, lens_blur).in_set(Core3dSystems::PostProcess).before(tonemapping),
+            ),
+        );
     }
 }
 
@@ -121,79 +142,118 @@ struct LensBlurState {
 #[derive(Default)]
 struct Inner {
     backend: Option<WgpuBackend>,
+    /// Single-layer cameras (render-world entities).
     views: HashMap<Entity, View>,
+    /// Peeled cameras (main-world entities).
+    peels: HashMap<Entity, peel::Peeled>,
     /// Cameras whose error was logged.
     failed: Vec<Entity>,
 }
 
-/// One camera's context, for views up to `extent`.
-struct View {
-    ctx: SplatContext,
-    extent: [u32; 2],
-    /// The textures its last frame used, imported once: Bevy keeps a view's textures across
-    /// frames (its two main textures swap roles each frame) and makes new ones on a resize.
-    imported: Vec<(wgpu::Texture, ImageRef)>,
+impl Inner {
+    /// Logs `result`'s error once for `camera`.
+    fn report(&mut self, camera: Entity, result: Result<(), String>) {
+        if let Err(e) = result
+            && !self.failed.contains(&camera)
+        {
+            log::error!("bevy_dof: camera {camera}: {e}; its image is left unblurred");
+            self.failed.push(camera);
+        }
+    }
 }
 
-impl View {
+/// The backend on Bevy's device, made on first use.
+fn wgpu_backend<'a>(backend: &'a mut Option<WgpuBackend>, device: &RenderDevice, queue: &RenderQueue, adapter: &RenderAdapterInfo) -> &'a mut WgpuBackend {
+    backend.get_or_insert_with(|| WgpuBackend::from_device(device.wgpu_device().clone(), (**queue).clone(), (**adapter).clone()))
+}
+
+/// Textures imported once and kept while they are used: Bevy keeps a view's textures across
+/// frames (its two main textures swap roles each frame) and makes new ones on a resize.
+#[derive(Default)]
+struct Imported(Vec<(wgpu::Texture, ImageRef)>);
+
+impl Imported {
     /// The images of `textures` (imported on first use); the textures no longer used are
     /// forgotten, so that the backend does not keep them alive.
     fn images<const N: usize>(&mut self, backend: &mut WgpuBackend, textures: [&wgpu::Texture; N]) -> dof_core::Result<[ImageRef; N]> {
         let mut kept = Vec::with_capacity(N);
         for texture in textures {
-            let image = match self.imported.iter().position(|(t, _)| t == texture) {
-                Some(at) => self.imported.swap_remove(at).1,
+            let image = match self.0.iter().position(|(t, _)| t == texture) {
+                Some(at) => self.0.swap_remove(at).1,
                 None => backend.import_texture(texture)?,
             };
             kept.push((texture.clone(), image));
         }
-        for (_, stale) in std::mem::replace(&mut self.imported, kept) {
+        for (_, stale) in std::mem::replace(&mut self.0, kept) {
             backend.forget_texture(&stale);
         }
-        Ok(std::array::from_fn(|i| self.imported[i].1))
+        Ok(std::array::from_fn(|i| self.0[i].1))
     }
 
-    /// Drops the view: its textures forgotten by the backend, its context freed once the device is
-    /// done with it.
     fn forget(self, backend: &mut WgpuBackend) {
-        for (_, image) in &self.imported {
+        for (_, image) in &self.0 {
             backend.forget_texture(image);
         }
     }
 }
 
-fn forget_removed_views(state: Res<LensBlurState>, views: Query<Entity, With<LensBlur>>) {
+/// One single-layer camera's context, for views up to `extent`.
+struct View {
+    ctx: SplatContext,
+    extent: [u32; 2],
+    imported: Imported,
+}
+
+impl View {
+    /// Drops the view: its textures forgotten by the backend, its context's buffers freed once the
+    /// device is done with them.
+    fn forget(self, backend: &mut WgpuBackend) {
+        self.imported.forget(backend);
+        self.ctx.destroy(backend);
+    }
+}
+
+fn forget_removed_views(state: Res<LensBlurState>, views: Query<(Entity, &MainEntity, &LensBlur)>) {
     let Ok(mut inner) = state.inner.lock() else { return };
-    let Inner { backend, views: contexts, .. } = &mut *inner;
+    let Inner { backend, views: contexts, peels, .. } = &mut *inner;
     if let Some(backend) = backend.as_mut() {
-        let gone: Vec<Entity> = contexts.keys().copied().filter(|entity| !views.contains(*entity)).collect();
+        let single: Vec<Entity> = views.iter().filter(|(_, _, lens)| lens.layers <= 1).map(|(e, _, _)| e).collect();
+        let peeled: Vec<Entity> = views.iter().filter(|(_, _, lens)| lens.layers > 1).map(|(_, m, _)| m.id()).collect();
+        let gone: Vec<Entity> = contexts.keys().copied().filter(|entity| !single.contains(entity)).collect();
         for entity in gone {
             if let Some(view) = contexts.remove(&entity) {
                 view.forget(backend);
+            }
+        }
+        let gone: Vec<Entity> = peels.keys().copied().filter(|entity| !peeled.contains(entity)).collect();
+        for entity in gone {
+            if let Some(peel) = peels.remove(&entity) {
+                peel.forget(backend);
             }
         }
         let _ = backend.release_finished();
     }
 }
 
-/// The depth of field of one view, recorded into Bevy's command encoder.
+/// The depth of field of one view, recorded into Bevy's command encoder: from its own colour and
+/// depth, or, for a peeled camera, from the layers of its peel.
+#[allow(clippy::type_complexity)]
 fn lens_blur(
-    view: ViewQuery<(Entity, &ExtractedCamera, &ExtractedView, &ViewTarget, &ViewDepthStencilTexture, &LensBlur)>,
+    view: ViewQuery<(Entity, &MainEntity, &ExtractedCamera, &ExtractedView, &ViewTarget, &ViewDepthStencilTexture, &LensBlur)>,
     state: Res<LensBlurState>,
     device: Res<RenderDevice>,
     queue: Res<RenderQueue>,
     adapter: Res<RenderAdapterInfo>,
     mut ctx: RenderContext,
 ) {
-    let (entity, camera, extracted, target, depth, lens) = view.into_inner();
+    let (entity, main, camera, extracted, target, depth, lens) = view.into_inner();
     let Ok(mut inner) = state.inner.lock() else { return };
-    let result = record(&mut inner, entity, camera, extracted, target, depth, lens, &device, &queue, &adapter, &mut ctx);
-    if let Err(e) = result
-        && !inner.failed.contains(&entity)
-    {
-        log::error!("bevy_dof: camera {entity}: {e}; its image is left unblurred");
-        inner.failed.push(entity);
-    }
+    let result = if lens.layers > 1 {
+        peel::peel_finish(&mut inner, *main, lens, extracted, target, depth, &mut ctx)
+    } else {
+        record(&mut inner, entity, camera, extracted, target, depth, lens, &device, &queue, &adapter, &mut ctx)
+    };
+    inner.report(main.id(), result);
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -216,10 +276,7 @@ fn record(
         return Ok(());
     }
     let encoding = depth_encoding(extracted.clip_from_view)?;
-    let backend = match &mut inner.backend {
-        Some(backend) => backend,
-        none => none.insert(WgpuBackend::from_device(device.wgpu_device().clone(), (**queue).clone(), (**adapter).clone())),
-    };
+    let backend = wgpu_backend(&mut inner.backend, device, queue, adapter);
     // A context for the view, made again when it grows or shrinks.
     if inner.views.get(&entity).is_none_or(|v| v.extent != [width, height]) {
         if let Some(old) = inner.views.remove(&entity) {
@@ -230,13 +287,13 @@ fn record(
         let splat = SplatContext::new(backend, &desc).map_err(|e| e.to_string())?;
         // Its buffers' zeroing, run now: the frames submit nothing.
         backend.submit().map_err(|e| e.to_string())?;
-        inner.views.insert(entity, View { ctx: splat, extent: [width, height], imported: Vec::new() });
+        inner.views.insert(entity, View { ctx: splat, extent: [width, height], imported: Imported::default() });
     }
     let view = inner.views.get_mut(&entity).ok_or("no context")?;
 
     let post = target.post_process_write();
     let [color, depth_image, output] =
-        view.images(backend, [post.source_texture, depth.texture(), post.destination_texture]).map_err(|e| e.to_string())?;
+        view.imported.images(backend, [post.source_texture, depth.texture(), post.destination_texture]).map_err(|e| e.to_string())?;
     let frame = Frame {
         width,
         height,

@@ -156,7 +156,8 @@ fn finish(captured: Res<Captured>, mut exit: MessageWriter<AppExit>, mut frame: 
 fn check(captured: &Captured) -> AppExit {
     let Ok(slots) = captured.0.lock() else { return AppExit::error() };
     let Some(bytes) = slots.iter().cloned().collect::<Option<Vec<Vec<u8>>>>() else {
-        eprintln!("FAILED: not every camera's image was read back");
+        let missing: Vec<&str> = slots.iter().zip(NAMES).filter(|(s, _)| s.is_none()).map(|(_, n)| n).collect();
+        eprintln!("FAILED: not every camera's image was read back (missing: {})", missing.join(", "));
         return AppExit::error();
     };
     // RGBA16F texels (rows of 512 · 8 bytes need no padding) as linear RGB.
@@ -176,7 +177,8 @@ fn check(captured: &Captured) -> AppExit {
     if !images.iter().flatten().flatten().all(|v| v.is_finite()) {
         failures.push("a pixel is not finite".to_string());
     }
-    let largest = |a: &[[f32; 3]], b: &[[f32; 3]]| a.iter().zip(b).flat_map(|(a, b)| (0..3).map(move |c| (a[c] - b[c]).abs())).fold(0.0f32, f32::max);
+    let largest =
+        |a: &[[f32; 3]], b: &[[f32; 3]]| a.iter().zip(b).flat_map(|(a, b)| (0..3).map(move |c| (a[c] - b[c]).abs())).fold(0.0f32, f32::max);
     let worst = largest(none, pinhole);
     println!("pinhole through the library against no depth of field: largest difference {worst}");
     if worst != 0.0 {

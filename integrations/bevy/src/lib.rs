@@ -8,18 +8,22 @@
 //!
 //! ```no_run
 //! use bevy::prelude::*;
-//! use bevy_dof::{LensBlur, LensBlurPlugin};
+//! use bevy_dof::{LensBlur, LensBlurPlugin, PeelMaterial, peel_material};
 //!
-//! fn setup(mut commands: Commands) {
-//!     commands.spawn((Camera3d::default(), LensBlur::default()));
+//! fn setup(mut commands: Commands, mut meshes: ResMut<Assets<Mesh>>, mut materials: ResMut<Assets<PeelMaterial>>) {
+//!     // Four layers a pixel, peeled by Bevy's passes (`LensBlur::default()` blurs one).
+//!     commands.spawn((Camera3d::default(), LensBlur { layers: 4, ..default() }));
+//!     let material = materials.add(peel_material(StandardMaterial { base_color: Color::WHITE, ..default() }));
+//!     commands.spawn((Mesh3d(meshes.add(Cuboid::default())), MeshMaterial3d(material)));
 //! }
 //!
 //! App::new().add_plugins((DefaultPlugins, LensBlurPlugin)).add_systems(Startup, setup).run();
 //! ```
 //!
 //! What the plugin does, per camera with a [`LensBlur`]:
-//! - it gives the camera what the library reads: an HDR (RGBA16F) main texture that can be copied
-//!   from and into, and a depth texture the library's kernel can bind;
+//! - it gives the camera what the library reads and writes: an HDR (RGBA16F) main texture the
+//!   library's kernels sample and write in place (a storage texture) and a peel copies from, and a
+//!   depth texture the library's kernels bind;
 //! - in the render world it keeps one `SplatContext` per camera, made again only when the view's
 //!   size changes (the only allocation);
 //! - each frame, after the main passes and before tone mapping, it records the frame into Bevy's
@@ -36,16 +40,16 @@ pub use peel::{PeelMaterial, PeelTest, peel_material};
 
 use bevy::core_pipeline::tonemapping::tonemapping;
 use bevy::core_pipeline::{Core3d, Core3dSystems};
+use bevy::pbr::MaterialPlugin;
 use bevy::prelude::*;
 use bevy::render::camera::ExtractedCamera;
 use bevy::render::extract_component::{ExtractComponent, ExtractComponentPlugin};
 use bevy::render::render_resource::TextureUsages;
 use bevy::render::renderer::{RenderAdapterInfo, RenderContext, RenderDevice, RenderQueue, ViewQuery};
+use bevy::render::sync_world::MainEntity;
 use bevy::render::view::{ExtractedView, ViewDepthStencilTexture, ViewTarget};
 use bevy::render::{Render, RenderApp};
 use dof_core::ThinLens;
-use bevy::pbr::MaterialPlugin;
-use bevy::render::sync_world::MainEntity;
 use dof_core::backend::{Backend, ImageRef, WgpuBackend};
 use dof_core::frame::{DepthEncoding, DofContext, Extent, Frame, FrameInput, FrameOutput, SplatContext, SplatContextDesc, SplatOptions};
 use dof_core::lens::{Aperture, CameraLens, yfov_from_projection};
@@ -118,14 +122,20 @@ impl Plugin for LensBlurPlugin {
             ),
         );
     }
+
+    fn finish(&self, app: &mut App) {
+        // The bound exists before any peel material is prepared: a material whose buffer is not
+        // there yet gets Bevy's one-byte fallback buffer, which wgpu refuses as a storage binding.
+        peel::insert_bound(app.world_mut(), 4);
+    }
 }
 
-/// What the library reads: a single-sampled depth texture its kernel binds, and a main texture it
-/// can copy from and into.
+/// What the library reads and writes: a single-sampled depth texture its kernels bind, and a main
+/// texture they sample and write in place, and a peel copies from.
 fn configure_cameras(mut cameras: Query<(&mut Camera3d, &mut Msaa, &mut bevy::camera::CameraMainTextureUsages), Changed<LensBlur>>) {
     for (mut camera_3d, mut msaa, mut usages) in &mut cameras {
         camera_3d.depth_texture_usages.0 |= TextureUsages::TEXTURE_BINDING.bits();
-        usages.0 |= TextureUsages::COPY_SRC | TextureUsages::COPY_DST;
+        usages.0 |= TextureUsages::TEXTURE_BINDING | TextureUsages::STORAGE_BINDING | TextureUsages::COPY_SRC;
         if *msaa != Msaa::Off {
             log::info!("bevy_dof: multisampling turned off on a camera with LensBlur (its depth is read one sample a pixel)");
             *msaa = Msaa::Off;
@@ -163,7 +173,12 @@ impl Inner {
 }
 
 /// The backend on Bevy's device, made on first use.
-fn wgpu_backend<'a>(backend: &'a mut Option<WgpuBackend>, device: &RenderDevice, queue: &RenderQueue, adapter: &RenderAdapterInfo) -> &'a mut WgpuBackend {
+fn wgpu_backend<'a>(
+    backend: &'a mut Option<WgpuBackend>,
+    device: &RenderDevice,
+    queue: &RenderQueue,
+    adapter: &RenderAdapterInfo,
+) -> &'a mut WgpuBackend {
     backend.get_or_insert_with(|| WgpuBackend::from_device(device.wgpu_device().clone(), (**queue).clone(), (**adapter).clone()))
 }
 

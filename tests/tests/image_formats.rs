@@ -479,20 +479,8 @@ fn outputs_written_in_place_equal_the_copied_ones_on_vulkan() {
         r.submit_and_wait();
         let words = in_place.words() as usize;
         let (a, b) = (Renderer::read(&staging, 0, words), Renderer::read(&staging, words, words));
-        let differing = a.iter().zip(&b).filter(|(x, y)| x != y).count();
-        assert_eq!(differing, 0, "{format}: the result written in place differs from the copied one in {differing} words");
         let rgb = floats(&vk.read_buffer(out, 0, 3 * pixels as u64).unwrap());
-        let half = |v: f32| f16_to_f32(f32_to_f16(v));
-        for (i, c) in rgb.chunks(3).enumerate() {
-            let got = if format == ImageFormat::Rgba16Float {
-                let (rg, ba) = (a[2 * i], a[2 * i + 1]);
-                [f16_to_f32(rg & 0xffff), f16_to_f32(rg >> 16), f16_to_f32(ba & 0xffff), f16_to_f32(ba >> 16)]
-            } else {
-                [0, 1, 2, 3].map(|k| f32::from_bits(a[4 * i + k]))
-            };
-            let want = if format == ImageFormat::Rgba16Float { [half(c[0]), half(c[1]), half(c[2]), 1.0] } else { [c[0], c[1], c[2], 1.0] };
-            assert_eq!(got.map(f32::to_bits), want.map(f32::to_bits), "{format} pixel {i}");
-        }
+        assert_written_in_place(format, &a, &b, &rgb);
         assert_no_messages(r.messages(), &format!("writing {format}"));
     }
     eprintln!("{in_place_formats} of 2 output formats written in place");
@@ -786,6 +774,24 @@ fn depth_and_colour_formats_on_wgpu_textures_give_the_cpus_frame() {
     cpu_ctx.destroy(&mut cpu);
 }
 
+/// The words of an output image written in place, `a`, equal those of the one copied into, `b`,
+/// and hold the frame's `rgb` (rounded to the nearest half for RGBA16F) with alpha 1.
+fn assert_written_in_place(format: ImageFormat, a: &[u32], b: &[u32], rgb: &[f32]) {
+    let differing = a.iter().zip(b).filter(|(x, y)| x != y).count();
+    assert_eq!(differing, 0, "{format}: the result written in place differs from the copied one in {differing} words");
+    let half = |v: f32| f16_to_f32(f32_to_f16(v));
+    for (i, c) in rgb.chunks(3).enumerate() {
+        let got = if format == ImageFormat::Rgba16Float {
+            let (rg, ba) = (a[2 * i], a[2 * i + 1]);
+            [f16_to_f32(rg & 0xffff), f16_to_f32(rg >> 16), f16_to_f32(ba & 0xffff), f16_to_f32(ba >> 16)]
+        } else {
+            [0, 1, 2, 3].map(|k| f32::from_bits(a[4 * i + k]))
+        };
+        let want = if format == ImageFormat::Rgba16Float { [half(c[0]), half(c[1]), half(c[2]), 1.0] } else { [c[0], c[1], c[2], 1.0] };
+        assert_eq!(got.map(f32::to_bits), want.map(f32::to_bits), "{format} pixel {i}");
+    }
+}
+
 /// The result written into a renderer's RGBA32F and RGBA16F textures in place (write-only storage
 /// textures, where they have STORAGE_BINDING usage) equals, bit for bit, the result converted into
 /// a buffer and copied into textures without that usage, and is the frame into a buffer, converted;
@@ -839,20 +845,8 @@ fn outputs_written_in_place_equal_the_copied_ones_on_wgpu() {
             g.destroy_buffer(words);
             read
         });
-        let differing = a.iter().zip(&b).filter(|(x, y)| x != y).count();
-        assert_eq!(differing, 0, "{format}: the result written in place differs from the copied one in {differing} words");
         let rgb = floats(&g.read_buffer(out, 0, 3 * pixels as u64).unwrap());
-        let half = |v: f32| f16_to_f32(f32_to_f16(v));
-        for (i, c) in rgb.chunks(3).enumerate() {
-            let got = if format == ImageFormat::Rgba16Float {
-                let (rg, ba) = (a[2 * i], a[2 * i + 1]);
-                [f16_to_f32(rg & 0xffff), f16_to_f32(rg >> 16), f16_to_f32(ba & 0xffff), f16_to_f32(ba >> 16)]
-            } else {
-                [0, 1, 2, 3].map(|k| f32::from_bits(a[4 * i + k]))
-            };
-            let want = if format == ImageFormat::Rgba16Float { [half(c[0]), half(c[1]), half(c[2]), 1.0] } else { [c[0], c[1], c[2], 1.0] };
-            assert_eq!(got.map(f32::to_bits), want.map(f32::to_bits), "{format} pixel {i}");
-        }
+        assert_written_in_place(format, &a, &b, &rgb);
         g.forget_texture(&in_place);
         g.forget_texture(&copied);
     }

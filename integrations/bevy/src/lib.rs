@@ -40,6 +40,7 @@ pub use peel::{PeelMaterial, PeelTest, peel_material};
 
 use bevy::core_pipeline::tonemapping::tonemapping;
 use bevy::core_pipeline::{Core3d, Core3dSystems};
+use bevy::ecs::system::SystemParam;
 use bevy::pbr::MaterialPlugin;
 use bevy::prelude::*;
 use bevy::render::camera::ExtractedCamera;
@@ -172,14 +173,19 @@ impl Inner {
     }
 }
 
+/// Bevy's device, queue and adapter, which the backend runs on.
+#[derive(SystemParam)]
+struct BevyDevice<'w> {
+    device: Res<'w, RenderDevice>,
+    queue: Res<'w, RenderQueue>,
+    adapter: Res<'w, RenderAdapterInfo>,
+}
+
 /// The backend on Bevy's device, made on first use.
-fn wgpu_backend<'a>(
-    backend: &'a mut Option<WgpuBackend>,
-    device: &RenderDevice,
-    queue: &RenderQueue,
-    adapter: &RenderAdapterInfo,
-) -> &'a mut WgpuBackend {
-    backend.get_or_insert_with(|| WgpuBackend::from_device(device.wgpu_device().clone(), (**queue).clone(), (**adapter).clone()))
+fn wgpu_backend<'a>(backend: &'a mut Option<WgpuBackend>, bevy: &BevyDevice) -> &'a mut WgpuBackend {
+    backend.get_or_insert_with(|| {
+        WgpuBackend::from_device(bevy.device.wgpu_device().clone(), (**bevy.queue).clone(), (**bevy.adapter).clone())
+    })
 }
 
 /// Textures imported once and kept while they are used: Bevy keeps a view's textures across
@@ -256,9 +262,7 @@ fn forget_removed_views(state: Res<LensBlurState>, views: Query<(Entity, &MainEn
 fn lens_blur(
     view: ViewQuery<(Entity, &MainEntity, &ExtractedCamera, &ExtractedView, &ViewTarget, &ViewDepthStencilTexture, &LensBlur)>,
     state: Res<LensBlurState>,
-    device: Res<RenderDevice>,
-    queue: Res<RenderQueue>,
-    adapter: Res<RenderAdapterInfo>,
+    bevy: BevyDevice,
     mut ctx: RenderContext,
 ) {
     let (entity, main, camera, extracted, target, depth, lens) = view.into_inner();
@@ -266,7 +270,7 @@ fn lens_blur(
     let result = if lens.layers > 1 {
         peel::peel_finish(&mut inner, *main, lens, extracted, target, depth, &mut ctx)
     } else {
-        record(&mut inner, entity, camera, extracted, target, depth, lens, &device, &queue, &adapter, &mut ctx)
+        record(&mut inner, entity, camera, extracted, target, depth, lens, &bevy, &mut ctx)
     };
     inner.report(main.id(), result);
 }
@@ -280,9 +284,7 @@ fn record(
     target: &ViewTarget,
     depth: &ViewDepthStencilTexture,
     lens: &LensBlur,
-    device: &RenderDevice,
-    queue: &RenderQueue,
-    adapter: &RenderAdapterInfo,
+    bevy: &BevyDevice,
     ctx: &mut RenderContext,
 ) -> Result<(), String> {
     let Some(size) = camera.physical_viewport_size else { return Ok(()) };
@@ -291,7 +293,7 @@ fn record(
         return Ok(());
     }
     let encoding = depth_encoding(extracted.clip_from_view)?;
-    let backend = wgpu_backend(&mut inner.backend, device, queue, adapter);
+    let backend = wgpu_backend(&mut inner.backend, bevy);
     // A context for the view, made again when it grows or shrinks.
     if inner.views.get(&entity).is_none_or(|v| v.extent != [width, height]) {
         if let Some(old) = inner.views.remove(&entity) {

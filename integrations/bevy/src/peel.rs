@@ -15,7 +15,7 @@
 //!   depth; after the camera's own main pass, `append` of the last layer, `finish`, the blur into
 //!   the camera's other main texture, and the bound reset to "keep all".
 
-use crate::{Imported, Inner, LensBlur, LensBlurState, depth_encoding, wgpu_backend};
+use crate::{BevyDevice, Imported, Inner, LensBlur, LensBlurState, depth_encoding, wgpu_backend};
 use bevy::asset::uuid_handle;
 use bevy::camera::{CameraMainTextureUsages, Hdr, RenderTarget};
 use bevy::core_pipeline::prepass::{DeferredPrepass, DepthPrepass};
@@ -27,7 +27,7 @@ use bevy::render::camera::ExtractedCamera;
 use bevy::render::extract_component::ExtractComponent;
 use bevy::render::render_asset::RenderAssets;
 use bevy::render::render_resource::{AsBindGroup, TextureFormat, TextureUsages};
-use bevy::render::renderer::{RenderAdapterInfo, RenderContext, RenderDevice, RenderQueue, ViewQuery};
+use bevy::render::renderer::{RenderContext, ViewQuery};
 use bevy::render::storage::{GpuShaderBuffer, ShaderBuffer};
 use bevy::render::sync_world::MainEntity;
 use bevy::render::view::{ExtractedView, ViewDepthStencilTexture, ViewTarget};
@@ -238,9 +238,7 @@ pub(crate) fn peel_begin(
     view: ViewQuery<(&ExtractedCamera, &ExtractedView, &PeelPass)>,
     state: Res<LensBlurState>,
     bounds: Res<RenderAssets<GpuShaderBuffer>>,
-    device: Res<RenderDevice>,
-    queue: Res<RenderQueue>,
-    adapter: Res<RenderAdapterInfo>,
+    bevy: BevyDevice,
     mut ctx: RenderContext,
 ) {
     let (camera, extracted, pass) = view.into_inner();
@@ -249,7 +247,7 @@ pub(crate) fn peel_begin(
     }
     let Ok(mut inner) = state.inner.lock() else { return };
     let Some(bound) = bounds.get(&PEEL_BOUND) else { return };
-    let result = begin(&mut inner, camera, extracted, pass, &bound.buffer, &device, &queue, &adapter, &mut ctx);
+    let result = begin(&mut inner, camera, extracted, pass, &bound.buffer, &bevy, &mut ctx);
     inner.report(pass.owner, result);
 }
 
@@ -260,9 +258,7 @@ fn begin(
     extracted: &ExtractedView,
     pass: &PeelPass,
     bound: &wgpu::Buffer,
-    device: &RenderDevice,
-    queue: &RenderQueue,
-    adapter: &RenderAdapterInfo,
+    bevy: &BevyDevice,
     ctx: &mut RenderContext,
 ) -> Result<(), String> {
     let Some(size) = camera.physical_viewport_size else { return Ok(()) };
@@ -271,7 +267,7 @@ fn begin(
         return Ok(()); // the bound grows with the view's first frames
     }
     let layers = pass.lens.layers;
-    let backend = wgpu_backend(&mut inner.backend, device, queue, adapter);
+    let backend = wgpu_backend(&mut inner.backend, bevy);
     let current = inner.peels.get(&pass.owner).is_some_and(|p| p.size == [width, height] && p.layers == layers && p.bound.0 == *bound);
     if !current {
         if let Some(old) = inner.peels.remove(&pass.owner) {

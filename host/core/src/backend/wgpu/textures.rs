@@ -126,26 +126,18 @@ impl WgpuBackend {
     /// The checks of sampling a texture in place, made before anything is recorded.
     pub(super) fn check_texture_sample(&self, image: &ImageRef) -> Result<()> {
         image.check_sample("dispatch_images")?;
-        let texture = self.texture(image)?;
-        let size = texture.texture.size();
-        if image.extent[0] > size.width || image.extent[1] > size.height {
-            return Err(Error::InvalidArgument(format!(
-                "dispatch_images: {}x{} texels of a {}x{} texture",
-                image.extent[0], image.extent[1], size.width, size.height
-            )));
-        }
-        if texture.sampled_view.is_none() {
-            return Err(Error::InvalidArgument(format!(
-                "dispatch_images: the {:?} texture has no TEXTURE_BINDING usage (it has {:?})",
-                texture.texture.format(),
-                texture.texture.usage()
-            )));
-        }
-        Ok(())
+        self.texture_in_place(image, false).map(drop)
     }
 
     /// The checks of writing a texture in place, made before anything is recorded.
     pub(super) fn check_texture_store(&self, image: &ImageRef) -> Result<()> {
+        self.texture_in_place(image, true)?;
+        image.check_store("dispatch_images")
+    }
+
+    /// `image`'s texture, where its extent fits and it has the view a kernel samples it through
+    /// (or writes it through, `store`).
+    fn texture_in_place(&self, image: &ImageRef, store: bool) -> Result<&WgpuTexture> {
         let texture = self.texture(image)?;
         let size = texture.texture.size();
         if image.extent[0] > size.width || image.extent[1] > size.height {
@@ -154,14 +146,15 @@ impl WgpuBackend {
                 image.extent[0], image.extent[1], size.width, size.height
             )));
         }
-        if texture.storage_view.is_none() {
+        let (view, usage) = if store { (&texture.storage_view, "STORAGE_BINDING") } else { (&texture.sampled_view, "TEXTURE_BINDING") };
+        if view.is_none() {
             return Err(Error::InvalidArgument(format!(
-                "dispatch_images: the {:?} texture has no STORAGE_BINDING usage (it has {:?})",
+                "dispatch_images: the {:?} texture has no {usage} usage (it has {:?})",
                 texture.texture.format(),
                 texture.texture.usage()
             )));
         }
-        image.check_store("dispatch_images")
+        Ok(texture)
     }
 
     /// The view a kernel writes `image` through.

@@ -267,7 +267,11 @@ fn lens_blur(
 ) {
     let (entity, main, camera, extracted, target, depth, lens) = view.into_inner();
     let Ok(mut inner) = state.inner.lock() else { return };
-    let result = if lens.layers > 1 {
+    let result = if camera.viewport.as_ref().is_some_and(|v| v.physical_position != UVec2::ZERO) {
+        // The main textures are the target's size, and the library reads a view from their
+        // top-left corner.
+        Err("a viewport away from the target's top-left corner is not blurred here".into())
+    } else if lens.layers > 1 {
         peel::peel_finish(&mut inner, *main, lens, extracted, target, depth, &mut ctx)
     } else {
         record(&mut inner, entity, camera, extracted, target, depth, lens, &bevy, &mut ctx)

@@ -240,17 +240,11 @@ fn forget_removed_views(state: Res<LensBlurState>, views: Query<(Entity, &MainEn
     if let Some(backend) = backend.as_mut() {
         let single: Vec<Entity> = views.iter().filter(|(_, _, lens)| lens.layers <= 1).map(|(e, _, _)| e).collect();
         let peeled: Vec<Entity> = views.iter().filter(|(_, _, lens)| lens.layers > 1).map(|(_, m, _)| m.id()).collect();
-        let gone: Vec<Entity> = contexts.keys().copied().filter(|entity| !single.contains(entity)).collect();
-        for entity in gone {
-            if let Some(view) = contexts.remove(&entity) {
-                view.forget(backend);
-            }
+        for (_, view) in contexts.extract_if(|entity, _| !single.contains(entity)) {
+            view.forget(backend);
         }
-        let gone: Vec<Entity> = peels.keys().copied().filter(|entity| !peeled.contains(entity)).collect();
-        for entity in gone {
-            if let Some(peel) = peels.remove(&entity) {
-                peel.forget(backend);
-            }
+        for (_, peel) in peels.extract_if(|entity, _| !peeled.contains(entity)) {
+            peel.forget(backend);
         }
         let _ = backend.release_finished();
     }

@@ -92,7 +92,7 @@ pub(crate) struct PeelCameras {
 #[allow(clippy::type_complexity)]
 pub(crate) fn sync_pass_cameras(
     mut commands: Commands,
-    owners: Query<(Entity, &LensBlur, &Camera, &Projection, Option<&PeelCameras>, Has<DepthPrepass>, Has<DeferredPrepass>)>,
+    owners: Query<(Entity, &LensBlur, &Camera, Ref<Projection>, Option<&PeelCameras>, Has<DepthPrepass>, Has<DeferredPrepass>)>,
     mut passes: Query<(&mut Camera, &mut Projection, &mut PeelPass), Without<LensBlur>>,
     unpeeled: Query<(Entity, &PeelCameras), Without<LensBlur>>,
     mut images: ResMut<Assets<Image>>,
@@ -140,7 +140,7 @@ pub(crate) fn sync_pass_cameras(
                             CameraMainTextureUsages(CameraMainTextureUsages::default().0 | TextureUsages::COPY_SRC),
                             Camera { order: order(pass), clear_color, is_active: camera.is_active, ..default() },
                             RenderTarget::Image(target.into()),
-                            projection.clone(),
+                            Projection::clone(&projection),
                             Transform::IDENTITY,
                             PeelPass { owner, pass, lens: *lens },
                             ChildOf(owner),
@@ -159,7 +159,11 @@ pub(crate) fn sync_pass_cameras(
             }
             // Extracted every frame whether changed or not.
             pass_camera.bypass_change_detection().clear_color = clear_color;
-            *pass_projection = projection.clone();
+            // Copied when it changes (a copy marks the pass camera's projection changed, and
+            // Bevy recomputes it).
+            if projection.is_changed() {
+                *pass_projection = Projection::clone(&projection);
+            }
             if pass.lens != *lens {
                 pass.lens = *lens;
             }

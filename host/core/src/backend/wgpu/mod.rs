@@ -8,9 +8,10 @@
 //! - a dispatch is timed by timestamps around its pass where wgpu has them (`timing.rs`); a clear,
 //!   and anything recorded into a caller's encoder, is not (NaN);
 //! - wgpu's barriers are its own, so `barriers` in the counters stays 0;
-//! - images are the caller's textures ([`WgpuBackend::import_texture`], in `textures.rs`), copied
-//!   row by row where a row is not a multiple of wgpu's 256-byte pitch; depth is read by a kernel,
-//!   since wgpu copies none out of `Depth24Plus` and only whole textures out of the others.
+//! - images are the caller's textures ([`WgpuBackend::import_texture`], in `textures.rs`), sampled
+//!   and written in place by kernels where their usage allows, otherwise copied row by row where a
+//!   row is not a multiple of wgpu's 256-byte pitch; depth is read by a kernel, since wgpu copies
+//!   none out of `Depth24Plus` and only whole textures out of the others.
 //!
 //! A renderer on its own device ([`WgpuBackend::from_device`]) records frames into its own command
 //! encoder ([`WgpuBackend::record_into`], in `external.rs`): nothing is made, submitted or read back.
